@@ -1,0 +1,91 @@
+"""The ``rapidmc`` command line: subcommands, exit codes, diagnostics on stderr.
+
+Each subcommand lives in ``rapidmc.commands.<name>`` and offers
+``add_arguments(parser)`` and ``execute(args) -> int``.  This module only
+dispatches and turns errors into diagnostics and exit codes:
+
+* 0 success (program ended normally, all properties hold, files parsed)
+* 1 a property is violated, or the program stopped on an uncaught RAPID error
+* 2 bad input or usage (syntax, static errors, malformed LTL, missing files)
+* 3 no violation found but the search was bounded (UNKNOWN)
+* 4 internal error in rapidmc (a bug: please report it)
+"""
+from __future__ import annotations
+
+import argparse
+import importlib
+import os
+import sys
+import traceback
+from typing import Optional, Sequence
+
+from . import __version__
+from .diagnostics import (EXIT_INPUT_ERROR, EXIT_INTERNAL_ERROR, USAGE,
+                          Diagnostic, UserError, render_all)
+
+SUBCOMMANDS = {
+    "parse": "parse RAPID files and report routines and data, or syntax errors",
+    "run": "execute a RAPID program with the FlexPendant on the console",
+    "check": "model-check a RAPID program against LTL properties",
+    "ltl": "translate an LTL formula to a Büchi automaton (HOA format)",
+}
+
+
+class _ArgumentParser(argparse.ArgumentParser):
+    """argparse that reports usage errors as rapidmc diagnostics (exit 2)."""
+
+    def error(self, message: str) -> None:  # type: ignore[override]
+        raise UserError([Diagnostic(USAGE, f"{message} (see '{self.prog} --help')")])
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = _ArgumentParser(prog="rapidmc", description=__doc__.splitlines()[0])
+    parser.add_argument("--version", action="version", version=f"rapidmc {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_ArgumentParser)
+    for name, help_text in SUBCOMMANDS.items():
+        command = _command_module(name)
+        if command is None:
+            continue
+        sub_parser = sub.add_parser(name, help=help_text, description=help_text)
+        command.add_arguments(sub_parser)
+    return parser
+
+
+def _command_module(name: str):
+    try:
+        return importlib.import_module(f"rapidmc.commands.{name}")
+    except ModuleNotFoundError as exc:
+        if exc.name == f"rapidmc.commands.{name}":
+            return None
+        raise
+
+
+def main(argv: Optional[Sequence[str]] = None) -> int:
+    """Entry point of the console script; returns the exit code."""
+    try:
+        parser = build_parser()
+        args = parser.parse_args(argv)
+        if args.command is None:
+            parser.print_help(sys.stderr)
+            return EXIT_INPUT_ERROR
+        return _command_module(args.command).execute(args)
+    except UserError as exc:
+        sys.stdout.flush()
+        print(render_all(exc.diagnostics), file=sys.stderr)
+        return exc.exit_code
+    except KeyboardInterrupt:
+        print("rapidmc: interrupted", file=sys.stderr)
+        return 130
+    except RecursionError:
+        print("rapidmc: error: nesting too deep to analyse [RMC305]", file=sys.stderr)
+        return EXIT_INPUT_ERROR
+    except Exception as exc:  # an internal bug, not bad input
+        if os.environ.get("RAPIDMC_DEBUG"):
+            traceback.print_exc()
+        print(f"rapidmc: internal error: {type(exc).__name__}: {exc} "
+              "(set RAPIDMC_DEBUG=1 for details; please report this)", file=sys.stderr)
+        return EXIT_INTERNAL_ERROR
+
+
+def console_main() -> None:
+    sys.exit(main())

@@ -1,0 +1,70 @@
+"""RAPID run-time error numbers (errnum constants) and the exception that carries them.
+
+The controller's numeric values of the ERR_* constants are not documented in
+any source we could check, so each gets a unique internal number from 1001
+upwards (in the order below).  Programs compare ERRNO with the constants,
+never with literals, so the choice is invisible to correct programs.  User
+error numbers (RAISE n, BookErrNo) are 1..90.
+"""
+from __future__ import annotations
+
+from typing import Optional
+
+ERROR_NAMES: tuple[str, ...] = (
+    "ERR_DIVZERO", "ERR_OUTOFBND", "ERR_NOTINTVAL", "ERR_NOTPRES", "ERR_NOTEQDIM",
+    "ERR_NOTARR", "ERR_INVDIM", "ERR_ILLDIM", "ERR_STRTOOLNG", "ERR_ILLRAISE",
+    "ERR_EXCRTYMAX", "ERR_FNCNORET", "ERR_ARGVALERR", "ERR_ARGNOTVAR", "ERR_ARGNOTPER",
+    "ERR_ARGDUPCND", "ERR_ARGNAME", "ERR_NEGARG", "ERR_NUM_LIMIT", "ERR_INT_NOTVAL",
+    "ERR_INT_MAXVAL", "ERR_CALC_OVERFLOW", "ERR_CALC_NEG", "ERR_CALC_DIVZERO",
+    "ERR_MAXINTVAL", "ERR_OVERFLOW", "ERR_ALRDYCNT", "ERR_CNTNOTVAR", "ERR_INOMAX",
+    "ERR_UNKINO", "ERR_WAIT_MAXTIME", "ERR_TP_MAXTIME", "ERR_TP_DIBREAK",
+    "ERR_TP_DOBREAK", "ERR_TP_PERSBOOLBREAK", "ERR_TP_NO_CLIENT", "ERR_REFUNKPRC",
+    "ERR_REFUNKFUN", "ERR_REFUNKDAT", "ERR_REFUNKTRP", "ERR_CALLPROC", "ERR_EXECPHR",
+    "ERR_ALIASIO_DEF", "ERR_ALIASIO_TYPE", "ERR_NO_ALIASIO_DEF", "ERR_SIG_NOT_VALID",
+    "ERR_NORUNUNIT", "ERR_AO_LIM", "ERR_GO_LIM", "ERR_FILEOPEN", "ERR_FILNOTFND",
+    "ERR_FILEACC", "ERR_FILEEXIST", "ERR_RCVDATA", "ERR_SOCK_CLOSED", "ERR_SOCK_TIMEOUT",
+    "ERR_COLL_STOP", "ERR_ROBLIMIT", "ERR_OUTSIDE_REACH", "ERR_CONC_MAX", "ERR_PATHDIST",
+    "ERR_STARTMOVE", "ERR_UNLOAD", "ERR_STRTONUM", "ERR_NOTSTRING", "ERR_SYM_ACCESS",
+    "ERR_USE_PROF", "ERR_TASKNAME", "ERR_NO_SGUN", "ERR_INVALID_TYPE", "ERR_ILLQUAT",
+    "ERR_STACK_OVERFLOW",
+)
+
+ERROR_NUMBERS: dict[str, int] = {name: 1001 + i for i, name in enumerate(ERROR_NAMES)}
+ERROR_BY_NUMBER: dict[int, str] = {n: name for name, n in ERROR_NUMBERS.items()}
+
+LONG_JMP_ALL_ERR = -1          # wildcard in ERROR (...) recovery-point lists
+USER_ERROR_RANGE = range(1, 91)
+
+
+def errno_name(number: int) -> str:
+    """The ERR_* name of an error number, or 'user error n'."""
+    name = ERROR_BY_NUMBER.get(number)
+    return name if name else f"user error {number}"
+
+
+class RapidError(Exception):
+    """A recoverable RAPID run-time error, e.g. ``RapidError("ERR_DIVZERO")``.
+
+    Raised by evaluation and by predefined routines; the interpreter turns it
+    into ERRNO and a jump to the routine's ERROR handler.
+    """
+
+    def __init__(self, name_or_number: str | int, detail: str = ""):
+        if isinstance(name_or_number, str):
+            self.errno = ERROR_NUMBERS[name_or_number]
+        else:
+            self.errno = int(name_or_number)
+        self.detail = detail
+        super().__init__(f"{errno_name(self.errno)}: {detail}" if detail else errno_name(self.errno))
+
+    @property
+    def name(self) -> str:
+        return errno_name(self.errno)
+
+
+class FatalRapidError(Exception):
+    """A non-recoverable run-time error (no ERROR handler may catch it)."""
+
+    def __init__(self, message: str, errno: Optional[int] = None):
+        self.errno = errno
+        super().__init__(message)
