@@ -1,0 +1,147 @@
+"""On-the-fly emptiness check of model × Büchi: Couvreur's SCC algorithm, iterative.
+
+The search is one depth-first pass that numbers product states in the
+order it discovers them and keeps, for the strongly connected components
+on the current path, a stack of roots each with an "contains an accepting
+state" bit.  An edge back to a live state merges the components above it;
+if the merged component has an accepting state, it holds an accepting
+cycle and the search stops: the property is violated.  A component whose
+root is popped is complete and its states become dead (never merged
+again).  Every product state is expanded exactly once, and a violation is
+found as soon as the cycle's last edge is seen (unlike nested DFS, which
+may need a second pass).
+
+Memory per stored product state: one dict entry key -> number, one byte
+in ``dead`` and, while live, one slot in ``active`` (``array``).  No
+Python recursion: the DFS path is kept in three parallel lists.
+
+Reference: J.-M. Couvreur, "On-the-fly verification of linear temporal
+logic", FM 1999; the single-acceptance-set form of Geldenhuys & Valmari.
+"""
+from __future__ import annotations
+
+from array import array
+
+from .budget import SearchBudget
+from .lasso import build_lasso
+from .product import Product
+from .result import HOLDS, UNKNOWN, VIOLATED, SearchResult, SearchStats
+
+
+def search_accepting_cycle(product: Product, budget: SearchBudget) -> SearchResult:
+    """HOLDS if no accepting cycle is reachable, VIOLATED with a lasso, or UNKNOWN."""
+    search = _CycleSearch(product, budget)
+    found = search.run()
+    stats = search.stats()
+    stats.seconds = budget.finish()
+    if found is not None:
+        prefix, cycle, closing = build_lasso(product, *found)
+        return SearchResult(VIOLATED, None, prefix, cycle, stats, closing)
+    if budget.reason is not None:
+        return SearchResult(UNKNOWN, budget.reason, stats=stats)
+    return SearchResult(HOLDS, stats=stats)
+
+
+class _CycleSearch:
+    """The state of one Couvreur search (see the module docstring)."""
+
+    def __init__(self, product: Product, budget: SearchBudget):
+        self.product = product
+        self.budget = budget
+        self.number: dict[int, int] = {}      # product key -> discovery number
+        self.dead = bytearray()               # by number: 1 once its component is complete
+        self.active = array("q")              # numbers of live states, discovery order
+        self.roots = array("q")               # numbers of component roots on the path
+        self.root_accepting = bytearray()     # parallel to roots
+        self.transitions = 0
+        self.max_depth = 0
+
+    def stats(self) -> SearchStats:
+        return SearchStats(product_states=len(self.number), model_states=len(self.product.store),
+                           transitions=self.transitions, max_depth=self.max_depth,
+                           deadlocks=len(self.product.store.deadlocked))
+
+    def run(self):
+        """None when no accepting cycle was found; else (DFS path keys, component keys)."""
+        for key in self.product.initial_keys():
+            if key in self.number:
+                continue
+            if not self.budget.may_store(len(self.number)):
+                return None
+            found = self._explore_from(key)
+            if found is not None or self.budget.reason is not None:
+                return found
+        return None
+
+    def _explore_from(self, initial_key: int):
+        # One loop with local names on purpose: this is the hot path of the
+        # checker, and attribute look-ups per edge would cost a third of it.
+        number, dead, active = self.number, self.dead, self.active
+        roots, root_accepting = self.roots, self.root_accepting
+        accepting, width = self.product.accepting, self.product.width
+        successor_keys = self.product.successor_keys
+        budget = self.budget
+        path_keys: list[int] = []
+        path_successors: list[list[int]] = []
+        path_positions: list[int] = []
+
+        def push(key: int) -> None:
+            index = len(dead)
+            number[key] = index
+            dead.append(0)
+            active.append(index)
+            roots.append(index)
+            root_accepting.append(accepting[key % width])
+            successors = successor_keys(key)
+            self.transitions += len(successors)
+            path_keys.append(key)
+            path_successors.append(successors)
+            path_positions.append(0)
+            if len(path_keys) > self.max_depth:
+                self.max_depth = len(path_keys)
+
+        push(initial_key)
+        while path_keys:
+            successors = path_successors[-1]
+            position = path_positions[-1]
+            if position < len(successors):
+                path_positions[-1] = position + 1
+                key = successors[position]
+                index = number.get(key)
+                if index is None:
+                    stored = len(dead)
+                    if not budget.may_store(stored):
+                        return None
+                    if stored >= budget.next_checkpoint and not budget.checkpoint(
+                            stored, self.transitions, len(path_keys)):
+                        return None
+                    push(key)
+                elif not dead[index]:
+                    merged = 0
+                    while roots[-1] > index:
+                        roots.pop()
+                        merged |= root_accepting.pop()
+                    root_accepting[-1] |= merged
+                    if root_accepting[-1]:
+                        return self._violation(path_keys)
+            else:
+                key = path_keys.pop()
+                path_successors.pop()
+                path_positions.pop()
+                index = number[key]
+                if roots[-1] == index:
+                    roots.pop()
+                    root_accepting.pop()
+                    while active and active[-1] >= index:
+                        dead[active.pop()] = 1
+        return None
+
+    def _violation(self, path_keys: list[int]):
+        """The DFS path up to the accepting component's root, and the component's keys."""
+        root = self.roots[-1]
+        depth = len(path_keys)
+        while self.number[path_keys[depth - 1]] > root:
+            depth -= 1
+        component = {key for key, index in self.number.items()
+                     if index >= root and not self.dead[index]}
+        return path_keys[:depth], component

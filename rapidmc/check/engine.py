@@ -1,0 +1,34 @@
+"""One call per property: ``check_property(system, buchi, valuation)``.
+
+``buchi`` is the automaton of the NEGATED property (``rapidmc.ltl.to_buchi``
+of ``!φ``): the property is violated exactly when model × automaton has a
+reachable accepting cycle.
+
+Example::
+
+    result = check_property(system, to_buchi(parse_formula('!(G F "done")')),
+                            valuation, max_states=100_000)
+    result.verdict            # "HOLDS", "VIOLATED" or "UNKNOWN"
+    result.prefix, result.cycle   # the counterexample lasso when VIOLATED
+"""
+from __future__ import annotations
+
+from typing import Optional
+
+from .budget import DEFAULT_MAX_STATES, SearchBudget
+from .emptiness import search_accepting_cycle
+from .model import TransitionSystem, Valuation
+from .product import Product
+from .progress import Progress
+from .result import SearchResult
+from .store import ModelStore
+
+
+def check_property(system: TransitionSystem, buchi, valuation: Valuation, *,
+                   max_states: Optional[int] = DEFAULT_MAX_STATES,
+                   max_seconds: Optional[float] = None,
+                   progress: Optional[Progress] = None) -> SearchResult:
+    """Search model × ``buchi`` for an accepting lasso; see the module docstring."""
+    budget = SearchBudget(max_states, max_seconds, progress)
+    product = Product(ModelStore(system, valuation), buchi)
+    return search_accepting_cycle(product, budget)

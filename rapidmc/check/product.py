@@ -1,0 +1,103 @@
+"""The synchronous product of a model with a Büchi automaton, as integer keys.
+
+A product state (model state id ``s``, automaton state ``q``) is the single
+integer ``key = s * width + q`` where ``width`` is the number of automaton
+states, so the search stores plain ints.
+
+Run semantics (the automaton reads the label of every model state,
+starting with the initial one): the initial product states are ``(s0, q')``
+for each edge ``initial --g--> q'`` with ``s0 |= g``; ``(s, q)`` leads to
+``(s', q')`` for each model successor ``s'`` and each edge ``q --g--> q'``
+with ``s' |= g``.  A product state is accepting when ``q`` is.
+"""
+from __future__ import annotations
+
+from typing import Hashable, Optional
+
+from .result import LassoStep
+from .store import ModelStore
+
+
+class Product:
+    """Model × automaton over a ``ModelStore``; see the module docstring."""
+
+    def __init__(self, store: ModelStore, buchi):
+        self.store = store
+        self.width = max(len(buchi.edges), 1)
+        self.initial_automaton_state = buchi.initial
+        self.edges = [tuple((edge.positive, edge.negative, edge.target) for edge in out)
+                      for out in buchi.edges]
+        self.accepting = bytearray(self.width)
+        for q in buchi.accepting:
+            self.accepting[q] = 1
+
+    def key(self, state_id: int, automaton_state: int) -> int:
+        return state_id * self.width + automaton_state
+
+    def split(self, key: int) -> tuple[int, int]:
+        """(model state id, automaton state) of a product key."""
+        return divmod(key, self.width)
+
+    def is_accepting(self, key: int) -> bool:
+        return bool(self.accepting[key % self.width])
+
+    def targets(self, automaton_state: int, valuation: int) -> list[int]:
+        """Automaton states reached from ``automaton_state`` reading ``valuation``, in edge order."""
+        return [target for positive, negative, target in self.edges[automaton_state]
+                if valuation & positive == positive and not valuation & negative]
+
+    def initial_keys(self) -> list[int]:
+        keys = []
+        for state_id in self.store.initial_ids():
+            valuation = self.store.valuations[state_id]
+            keys.extend(self.key(state_id, q)
+                        for q in self.targets(self.initial_automaton_state, valuation))
+        return list(dict.fromkeys(keys))
+
+    def successor_keys(self, key: int) -> list[int]:
+        """Distinct product successors of ``key`` in deterministic order (the hot path)."""
+        state_id, q = divmod(key, self.width)
+        out = self.edges[q]
+        width = self.width
+        valuations = self.store.valuations
+        keys = []
+        for target_id in self.store.successor_ids(state_id):
+            valuation = valuations[target_id]
+            base = target_id * width
+            for positive, negative, target in out:
+                if valuation & positive == positive and not valuation & negative:
+                    keys.append(base + target)
+        if len(out) > 1:
+            return list(dict.fromkeys(keys))
+        return keys
+
+    def labelled_successor_keys(self, key: int) -> list[tuple[Hashable, int]]:
+        """Every (model label, product successor), for rebuilding paths (slow path)."""
+        state_id, q = divmod(key, self.width)
+        result = []
+        for label, target_id in self.store.labelled_successor_ids(state_id):
+            valuation = self.store.valuations[target_id]
+            result.extend((label, self.key(target_id, target))
+                          for target in self.targets(q, valuation))
+        return result
+
+    def label_between(self, key: int, next_key: int) -> Hashable:
+        """The first model label of a transition from ``key`` to ``next_key``."""
+        for label, successor in self.labelled_successor_keys(key):
+            if successor == next_key:
+                return label
+        raise AssertionError(f"no product transition {key} -> {next_key}")
+
+    def lasso_step(self, key: int, label: Optional[Hashable]) -> LassoStep:
+        state_id, q = divmod(key, self.width)
+        return LassoStep(label, self.store.states[state_id], q)
+
+    def path_steps(self, keys: list[int], first_label: Optional[Hashable]) -> list[LassoStep]:
+        """Lasso steps along consecutive product keys; ``first_label`` leads into ``keys[0]``."""
+        steps = []
+        label = first_label
+        for index, key in enumerate(keys):
+            if index:
+                label = self.label_between(keys[index - 1], key)
+            steps.append(self.lasso_step(key, label))
+        return steps

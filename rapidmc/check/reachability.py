@@ -1,0 +1,120 @@
+"""Breadth-first search for the shortest path to a state satisfying a predicate.
+
+Used for the built-in safety checks ("no uncaught run-time error", "no
+deadlock"): the predicate marks the bad states.  The result is VIOLATED
+with the shortest path (``prefix``, empty ``cycle``) when a bad state is
+reachable, HOLDS when the whole reachable state space was searched
+without finding one, UNKNOWN when a bound stopped the search first.
+
+States without successors are deadlocks; with ``deadlock_is_target`` they
+count as bad states themselves (otherwise they are counted in the
+statistics and the search goes on).
+"""
+from __future__ import annotations
+
+from array import array
+from typing import Callable, Hashable, Optional
+
+from .budget import DEFAULT_MAX_STATES, SearchBudget
+from .model import TransitionSystem
+from .progress import Progress
+from .result import (HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep,
+                     SearchResult, SearchStats)
+
+
+def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], bool], *,
+                   max_states: Optional[int] = DEFAULT_MAX_STATES,
+                   max_seconds: Optional[float] = None,
+                   progress: Optional[Progress] = None,
+                   deadlock_is_target: bool = False) -> SearchResult:
+    """Shortest path to a state where ``predicate`` holds; see the module docstring."""
+    budget = SearchBudget(max_states, max_seconds, progress)
+    search = _BreadthFirst(system, predicate, budget, deadlock_is_target)
+    target = search.run()
+    stats = search.stats()
+    stats.seconds = budget.finish()
+    if target is not None:
+        return SearchResult(VIOLATED, None, search.path_to(target), [], stats)
+    if budget.reason is not None:
+        return SearchResult(UNKNOWN, budget.reason, stats=stats)
+    return SearchResult(HOLDS, stats=stats)
+
+
+class _BreadthFirst:
+    """States by id, each with the id of the state it was first reached from."""
+
+    def __init__(self, system, predicate, budget: SearchBudget, deadlock_is_target: bool):
+        self.system = system
+        self.predicate = predicate
+        self.budget = budget
+        self.deadlock_is_target = deadlock_is_target
+        self.ids: dict[Hashable, int] = {}
+        self.states: list[Hashable] = []
+        self.parent = array("q")          # by id; -1 for initial states
+        self.depth = array("l")
+        self.transitions = 0
+        self.deadlocks = 0
+
+    def stats(self) -> SearchStats:
+        depth = max(self.depth) + 1 if self.depth else 0
+        return SearchStats(product_states=len(self.states), model_states=len(self.states),
+                           transitions=self.transitions, max_depth=depth,
+                           deadlocks=self.deadlocks)
+
+    def _store(self, state: Hashable, parent: int) -> Optional[int]:
+        """The new id, or None when the state is known or the budget is spent."""
+        if state in self.ids:
+            return None
+        stored = len(self.states)
+        if not self.budget.may_store(stored):
+            return None
+        self.ids[state] = stored
+        self.states.append(state)
+        self.parent.append(parent)
+        self.depth.append(self.depth[parent] + 1 if parent >= 0 else 0)
+        if stored >= self.budget.next_checkpoint:
+            self.budget.checkpoint(stored, self.transitions, self.depth[stored])
+        return stored
+
+    def run(self) -> Optional[int]:
+        """The id of the first bad state found, in breadth-first order."""
+        for state in self.system.initial_states():
+            state_id = self._store(state, -1)
+            if state_id is not None and self.predicate(state):
+                return state_id
+        frontier = 0
+        while frontier < len(self.states) and self.budget.reason is None:
+            found = self._expand(frontier)
+            if found is not None:
+                return found
+            frontier += 1
+        return None
+
+    def _expand(self, state_id: int) -> Optional[int]:
+        successors = self.system.successors(self.states[state_id])
+        self.transitions += len(successors)
+        if not successors:
+            self.deadlocks += 1
+            return state_id if self.deadlock_is_target else None
+        for _, successor in successors:
+            new_id = self._store(successor, state_id)
+            if new_id is not None and self.predicate(successor):
+                return new_id
+            if self.budget.reason is not None:
+                return None
+        return None
+
+    def path_to(self, state_id: int) -> list[LassoStep]:
+        """The steps from an initial state to ``state_id`` with their labels."""
+        ids = []
+        while state_id >= 0:
+            ids.append(state_id)
+            state_id = self.parent[state_id]
+        ids.reverse()
+        steps = [LassoStep(None, self.states[ids[0]], NO_AUTOMATON)]
+        for previous, current in zip(ids, ids[1:]):
+            target = self.states[current]
+            label = next(label for label, state in self.system.successors(self.states[previous])
+                         if state == target)
+            steps.append(LassoStep(label, target, NO_AUTOMATON))
+        return steps

@@ -1,0 +1,76 @@
+"""Model states interned into integer ids, with their valuations and successors.
+
+The engine stores each model state once (``states[id]``, ``ids[state]``)
+and works with ids from then on; product bookkeeping is integers only.
+Valuations are computed once per model state.  Successor ids are cached
+for recently expanded states, because the emptiness search expands the
+same model state once per automaton state it is paired with, usually in
+quick succession.
+"""
+from __future__ import annotations
+
+from typing import Hashable, Sequence
+
+from .model import Label, TransitionSystem, Valuation, labelled_successors
+
+SUCCESSOR_CACHE_SIZE = 4096
+
+
+class ModelStore:
+    """Interning of model states: ``intern(state) -> id``; see the module docstring."""
+
+    def __init__(self, system: TransitionSystem, valuation: Valuation):
+        self.system = system
+        self.valuation = valuation
+        self.ids: dict[Hashable, int] = {}
+        self.states: list[Hashable] = []
+        self.valuations: list[int] = []
+        self.deadlocked: set[int] = set()
+        self._successor_cache: dict[int, tuple[int, ...]] = {}
+
+    def __len__(self) -> int:
+        return len(self.states)
+
+    def intern(self, state: Hashable) -> int:
+        """The id of ``state``, storing it (and its valuation) when new."""
+        state_id = self.ids.get(state)
+        if state_id is None:
+            state_id = len(self.states)
+            self.ids[state] = state_id
+            self.states.append(state)
+            self.valuations.append(self.valuation(state))
+        return state_id
+
+    def initial_ids(self) -> list[int]:
+        return _unique([self.intern(state) for state in self.system.initial_states()])
+
+    def successor_ids(self, state_id: int) -> tuple[int, ...]:
+        """Distinct successor ids in model order; a deadlocked state is its own successor."""
+        cache = self._successor_cache
+        cached = cache.get(state_id)
+        if cached is not None:
+            return cached
+        state = self.states[state_id]
+        successors = self.system.successors(state)
+        if not successors:
+            self.deadlocked.add(state_id)
+            result: tuple[int, ...] = (state_id,)
+        else:
+            intern = self.intern
+            result = tuple(_unique([intern(target) for _, target in successors]))
+        if len(cache) >= SUCCESSOR_CACHE_SIZE:
+            del cache[next(iter(cache))]
+        cache[state_id] = result
+        return result
+
+    def labelled_successor_ids(self, state_id: int) -> list[tuple[Label, int]]:
+        """Every (label, successor id) in model order, ``STUTTER`` for a deadlock (slow path)."""
+        transitions: Sequence = labelled_successors(self.system, self.states[state_id])
+        return [(label, self.intern(target)) for label, target in transitions]
+
+
+def _unique(items: list[int]) -> list[int]:
+    """``items`` without repeats, first occurrences kept in order."""
+    if len(items) < 2:
+        return items
+    return list(dict.fromkeys(items))
