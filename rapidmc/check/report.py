@@ -1,0 +1,156 @@
+"""Verdicts and counterexamples as text for people and JSON for scripts.
+
+Text, one line per property and a counterexample under each violation::
+
+    P1: HOLDS (1,234 states, 0.12 s)
+    P2: VIOLATED (56 states, 0.01 s)
+      formula: G "x < 3"
+      counterexample: 2 steps, then a loop of 2 steps
+        step 1  initial state
+            x = 0
+        step 2  main.mod:4  x := x + 1;
+            x = 1  (was 0)
+      -- loop starts here (repeats forever) --
+        ...
+      -- loop closes: back to the state of step 3 --
+    P3: UNKNOWN (state limit 1000000 reached; 1,000,000 states, 30.1 s)
+
+JSON follows the schema in docs/json-output.md (``SCHEMA`` names its version).
+"""
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from typing import Optional, Sequence
+
+from .result import UNKNOWN, VIOLATED, SearchResult, SearchStats
+from .trace import INITIAL, Change, Trace, TraceDescriber, TraceStep, build_trace
+
+SCHEMA = "rapidmc-check/1"
+LOOP_STARTS = "-- loop starts here (repeats forever) --"
+
+
+@dataclass(frozen=True)
+class PropertyResult:
+    """The outcome of checking one named property."""
+
+    name: str
+    formula: str
+    result: SearchResult
+
+
+# --- text ---------------------------------------------------------------------
+
+
+def format_text(results: Sequence[PropertyResult], describer: TraceDescriber) -> str:
+    """Every property's verdict line, with a counterexample under each violation."""
+    lines: list[str] = []
+    for checked in results:
+        lines.append(verdict_line(checked))
+        stats = checked.result.stats
+        if stats.deadlocks:
+            lines.append(f"  note: {stats.deadlocks:,} reachable state(s) without a successor; "
+                         "runs ending there repeat their last state")
+        if checked.result.verdict == VIOLATED:
+            lines.append(f"  formula: {checked.formula}")
+            lines.extend(counterexample_lines(build_trace(checked.result, describer)))
+    return "\n".join(lines) + "\n"
+
+
+def verdict_line(checked: PropertyResult) -> str:
+    """``P3: UNKNOWN (state limit 1000000 reached; 1,000,000 states, 30.1 s)``."""
+    result = checked.result
+    figures = statistics_text(result.stats)
+    if result.verdict == UNKNOWN and result.reason:
+        figures = f"{result.reason}; {figures}"
+    return f"{checked.name}: {result.verdict} ({figures})"
+
+
+def statistics_text(stats: SearchStats) -> str:
+    return f"{stats.product_states:,} states, {seconds_text(stats.seconds)}"
+
+
+def seconds_text(seconds: float) -> str:
+    return f"{seconds:.2f} s" if seconds < 10 else f"{seconds:,.1f} s"
+
+
+def counterexample_lines(trace: Trace) -> list[str]:
+    """The numbered steps of a trace with the loop markers."""
+    count = len(trace.prefix) + len(trace.cycle)
+    if trace.cycle:
+        head = f"  counterexample: {len(trace.prefix)} steps, then a loop of {len(trace.cycle)} steps"
+    else:
+        head = f"  counterexample: {count} steps"
+    lines = [head]
+    for step in trace.prefix:
+        lines.extend(step_lines(step))
+    if trace.cycle:
+        lines.append("  " + LOOP_STARTS)
+        for step in trace.cycle:
+            lines.extend(step_lines(step))
+        lines.extend(step_lines(trace.closing))
+        lines.append(f"  -- loop closes: back to the state of step {trace.loop_start} --")
+    return lines
+
+
+def step_lines(step: TraceStep) -> list[str]:
+    """One step: number, location and source, then inputs, output and changed values."""
+    transition = step.transition
+    if step.kind == INITIAL:
+        head = "initial state"
+    else:
+        location = transition.location
+        head = f"{location}  {transition.source}" if location else transition.source
+    lines = [f"    step {step.index}  {head}".rstrip()]
+    if transition is not None:
+        lines.extend(f"        input: {name} = {value}" for name, value in transition.inputs.items())
+        if transition.output:
+            lines.append(f"        output: {json.dumps(transition.output, ensure_ascii=False)}")
+    lines.extend(f"        {_change_text(change)}" for change in step.changes)
+    return lines
+
+
+def _change_text(change: Change) -> str:
+    if change.new is None:
+        return f"{change.name} (no longer exists; was {change.old})"
+    if change.old is None:
+        return f"{change.name} = {change.new}"
+    return f"{change.name} = {change.new}  (was {change.old})"
+
+
+# --- JSON ---------------------------------------------------------------------
+
+
+def format_json(results: Sequence[PropertyResult], describer: TraceDescriber) -> str:
+    """The JSON document of docs/json-output.md, indented, keys in schema order."""
+    document = {"schema": SCHEMA,
+                "properties": [property_json(checked, describer) for checked in results]}
+    return json.dumps(document, indent=2, ensure_ascii=False) + "\n"
+
+
+def property_json(checked: PropertyResult, describer: TraceDescriber) -> dict:
+    result = checked.result
+    trace = None
+    if result.verdict == VIOLATED:
+        trace = trace_json(build_trace(result, describer))
+    return {"name": checked.name, "formula": checked.formula, "verdict": result.verdict,
+            "reason": result.reason, "stats": result.stats.as_dict(), "trace": trace}
+
+
+def trace_json(trace: Trace) -> dict:
+    return {"prefix": [step_json(step) for step in trace.prefix],
+            "cycle": [step_json(step) for step in trace.cycle],
+            "closing": step_json(trace.closing) if trace.closing else None,
+            "loop_start": trace.loop_start}
+
+
+def step_json(step: TraceStep) -> dict:
+    transition = step.transition
+    location = None
+    if transition is not None and transition.file is not None:
+        location = {"file": transition.file, "line": transition.line}
+    return {"index": step.index, "kind": step.kind, "location": location,
+            "source": transition.source if transition else None,
+            "inputs": dict(transition.inputs) if transition else {},
+            "changes": {change.name: change.new for change in step.changes},
+            "output": transition.output if transition and transition.output else None}

@@ -1,0 +1,124 @@
+"""From a lasso of model states to the steps a robot programmer reads.
+
+The RAPID specifics come from a ``TraceDescriber`` the caller implements:
+what every global data object, signal and robot item looks like in a
+state, and where a transition is in the source, what it chose and wrote.
+This module only compares consecutive states so that each step lists
+only what changed (the first step lists every value once).
+
+Shape of a trace: ``prefix`` steps, then ``cycle`` steps, then ``closing``
+(the transition from the last cycle state back to the state of the first
+cycle step).  Steps are numbered from 1 across all three.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Hashable, Mapping, Optional, Protocol
+
+from .model import STUTTER
+from .result import LassoStep, SearchResult
+
+INITIAL = "initial"
+TRANSITION = "transition"
+STUCK = "stuck"
+STUCK_SOURCE = "(no statement can execute: the program is stuck and stays in this state)"
+
+
+@dataclass(frozen=True)
+class TransitionInfo:
+    """What one model transition did, in source terms."""
+
+    file: Optional[str]
+    line: Optional[int]
+    source: str
+    inputs: Mapping[str, str] = field(default_factory=dict)
+    output: str = ""
+
+    @property
+    def location(self) -> str:
+        """``file:line``, or empty when the transition has no source position."""
+        if self.file is None:
+            return ""
+        return f"{self.file}:{self.line}" if self.line else self.file
+
+
+class TraceDescriber(Protocol):
+    """Printable views of model states and labels, supplied by the caller."""
+
+    def describe_state(self, state: Hashable) -> Mapping[str, str]: ...
+
+    def describe_transition(self, label: Hashable) -> TransitionInfo: ...
+
+
+@dataclass(frozen=True)
+class Change:
+    """A value that differs from the previous step; ``old`` None when it is new, ``new`` None when gone."""
+
+    name: str
+    old: Optional[str]
+    new: Optional[str]
+
+
+@dataclass(frozen=True)
+class TraceStep:
+    """One numbered step: the transition taken (unless initial) and what it changed."""
+
+    index: int
+    kind: str
+    transition: Optional[TransitionInfo]
+    changes: tuple[Change, ...]
+
+
+@dataclass(frozen=True)
+class Trace:
+    prefix: tuple[TraceStep, ...]
+    cycle: tuple[TraceStep, ...]
+    closing: Optional[TraceStep]
+
+    @property
+    def loop_start(self) -> Optional[int]:
+        """The index of the first cycle step, or None for a finite path."""
+        return self.cycle[0].index if self.cycle else None
+
+
+def changes_between(before: Optional[Mapping[str, str]], after: Mapping[str, str]) -> tuple[Change, ...]:
+    """Values of ``after`` that differ from ``before`` (all of them when ``before`` is None)."""
+    before = before or {}
+    changed = [Change(name, before.get(name), value) for name, value in after.items()
+               if before.get(name) != value]
+    changed.extend(Change(name, value, None) for name, value in before.items() if name not in after)
+    return tuple(changed)
+
+
+def build_trace(result: SearchResult, describer: TraceDescriber) -> Trace:
+    """The readable trace of a VIOLATED result's lasso."""
+    views: dict[int, Mapping[str, str]] = {}
+
+    def view(step: LassoStep) -> Mapping[str, str]:
+        key = id(step.state)
+        if key not in views:
+            views[key] = describer.describe_state(step.state)
+        return views[key]
+
+    steps: list[TraceStep] = []
+    previous: Optional[LassoStep] = None
+    for lasso_step in [*result.prefix, *result.cycle]:
+        before = view(previous) if previous is not None else None
+        steps.append(_trace_step(len(steps) + 1, lasso_step.label, before, view(lasso_step), describer))
+        previous = lasso_step
+    closing = None
+    if result.cycle:
+        closing = _trace_step(len(steps) + 1, result.closing_label, view(result.cycle[-1]),
+                              view(result.cycle[0]), describer)
+    split = len(result.prefix)
+    return Trace(tuple(steps[:split]), tuple(steps[split:]), closing)
+
+
+def _trace_step(index: int, label: Optional[Hashable], before: Optional[Mapping[str, str]],
+                after: Mapping[str, str], describer: TraceDescriber) -> TraceStep:
+    changes = changes_between(before, after)
+    if label is None:
+        return TraceStep(index, INITIAL, None, changes)
+    if label is STUTTER:
+        return TraceStep(index, STUCK, TransitionInfo(None, None, STUCK_SOURCE), changes)
+    return TraceStep(index, TRANSITION, describer.describe_transition(label), changes)
