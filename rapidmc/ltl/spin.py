@@ -1,0 +1,151 @@
+"""SPIN as an independent translator: run ``spin -f`` and read its never claim.
+
+``spin -f 'φ'`` prints a never claim accepting exactly the words that
+satisfy φ (the claim is for φ as given; checking a system needs ``!φ``).
+A claim is a Promela process whose labels are states; labels starting with
+``accept`` are accepting.  Options read::
+
+    :: (guard) -> goto LABEL                      edge to LABEL
+    :: atomic { (guard) -> assert(!(guard)) }     edge to an accept-all sink
+    skip  (at the end of the claim)               the state accepts everything
+    false                                         no edge
+
+A claim reads the first valuation in its initial state, like ``Buchi``.
+
+Example::
+
+    >>> claim = '''never {
+    ... accept_init:
+    ... T0_init:
+    ...     do
+    ...     :: (! ((p0))) -> goto T0_init
+    ...     od;
+    ... }'''
+    >>> read_never_claim(claim, ("p",)).edges
+    ((Edge(positive=0, negative=1, target=0),),)
+"""
+from __future__ import annotations
+
+import re
+import subprocess
+from typing import Optional, Sequence
+
+from ..diagnostics import AUTOMATON, error
+from .buchi import Buchi, Edge
+from .guards import cubes
+from .printing import to_spin
+from .syntax import Formula, parse_formula
+
+LABEL = re.compile(r"^([A-Za-z_][A-Za-z0-9_]*):$")
+GOTO = re.compile(r"^::\s*(.*?)\s*->\s*goto\s+([A-Za-z_][A-Za-z0-9_]*)$")
+ASSERT = re.compile(r"^::\s*atomic\s*\{\s*(.*?)\s*->\s*assert\(.*\)\s*\}$")
+ACCEPT_ALL = "<accept all>"
+IGNORED = {"do", "od;", "if", "fi;", "od", "fi", "}"}
+
+
+def read_never_claim(text: str, atoms: Sequence[str]) -> Buchi:
+    """A ``Buchi`` over ``atoms`` from a never claim whose atoms are ``p0``, ``p1`` …"""
+    blocks = _blocks(text)
+    names = list(blocks)
+    if ACCEPT_ALL in _targets(blocks) and ACCEPT_ALL not in blocks:
+        blocks[ACCEPT_ALL] = (True, "skip", [])
+        names.append(ACCEPT_ALL)
+    number = {label: i for i, label in enumerate(names)}
+    for alias, label in _aliases(text).items():
+        number[alias] = number[label]
+    edges, accepting = [], set()
+    for label in names:
+        is_accepting, ending, options = blocks[label]
+        out = []
+        if ending == "skip":
+            out.append(Edge(0, 0, number[label]))
+            is_accepting = True
+        for guard, target in options:
+            if target not in number:
+                raise error(AUTOMATON, f"never claim jumps to unknown label {target!r}")
+            out += [Edge(p, n, number[target]) for p, n in _guard_cubes(guard, atoms)]
+        edges.append(tuple(out))
+        if is_accepting:
+            accepting.add(number[label])
+    if not names:
+        raise error(AUTOMATON, "the never claim has no states")
+    return Buchi(tuple(atoms), 0, frozenset(accepting), tuple(edges))
+
+
+def _guard_cubes(guard: str, atoms: Sequence[str]):
+    def index(name: str) -> int:
+        if not re.fullmatch(r"p\d+", name) or int(name[1:]) >= len(atoms):
+            raise error(AUTOMATON, f"never claim guard uses unknown proposition {name!r}")
+        return int(name[1:])
+    return cubes(parse_formula(guard, file="<never claim>"), index)
+
+
+def _targets(blocks) -> set[str]:
+    return {target for _, _, options in blocks.values() for _, target in options}
+
+
+def _aliases(text: str) -> dict[str, str]:
+    """Labels written directly before another label name the same state."""
+    aliases, pending = {}, []
+    for line in _lines(text):
+        match = LABEL.match(line)
+        if match:
+            pending.append(match.group(1))
+            continue
+        for alias in pending[1:]:
+            aliases[alias] = pending[0]
+        pending = []
+    return aliases
+
+
+def _lines(text: str) -> list[str]:
+    text = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
+    return [line.strip() for line in text.splitlines() if line.strip()]
+
+
+def _blocks(text: str) -> dict[str, tuple[bool, str, list[tuple[str, str]]]]:
+    """Label -> (accepting, ending, [(guard, target label)]), in claim order."""
+    lines = _lines(text)
+    if not lines or not lines[0].startswith("never"):
+        raise error(AUTOMATON, "not a never claim (expected 'never {')")
+    blocks: dict = {}
+    current: Optional[str] = None
+    labels: list[str] = []
+    for line in lines[1:]:
+        match = LABEL.match(line)
+        if match:
+            labels.append(match.group(1))
+            continue
+        if labels:
+            current = labels[0]
+            blocks[current] = (any(l.startswith("accept") for l in labels), "", [])
+            labels = []
+        if line in IGNORED:
+            continue
+        if current is None:
+            raise error(AUTOMATON, f"never claim statement outside a labelled state: {line!r}")
+        accepting, ending, options = blocks[current]
+        goto, assertion = GOTO.match(line), ASSERT.match(line)
+        if goto:
+            options.append((goto.group(1), goto.group(2)))
+        elif assertion:
+            options.append((assertion.group(1), ACCEPT_ALL))
+        elif line.rstrip(";") in ("skip", "false"):
+            blocks[current] = (accepting, line.rstrip(";"), options)
+        else:
+            raise error(AUTOMATON, f"cannot read never claim line {line!r}")
+    return blocks
+
+
+def spin_translate(formula: Formula, atoms: Optional[Sequence[str]] = None,
+                   timeout: float = 10.0, spin: str = "spin") -> Buchi:
+    """Translate with ``spin -f``; raises ``subprocess.TimeoutExpired`` on timeout."""
+    atoms = tuple(atoms) if atoms is not None else None
+    from .syntax import atoms_of
+    atoms = atoms or atoms_of(formula)
+    completed = subprocess.run([spin, "-f", to_spin(formula, atoms)], capture_output=True,
+                               text=True, timeout=timeout, check=False)
+    if completed.returncode != 0 or "never" not in completed.stdout:
+        raise error(AUTOMATON, f"spin failed on {to_spin(formula, atoms)!r}: "
+                               f"{(completed.stderr or completed.stdout).strip()}")
+    return read_never_claim(completed.stdout, atoms)
