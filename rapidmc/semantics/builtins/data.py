@@ -1,0 +1,95 @@
+"""Predefined data of the BASE system module: constants, speeds, zones, tool0 ...
+
+``PREDEFINED_DATA`` maps each canonical name to a ``PredefinedData`` with
+its RAPID type name, storage class and value in rapidmc's representation
+(records as tuples, num values rounded to float32).  Numbers of the
+symbolic constants (OP_*, RUN_*, LT...GT, OpAdd...OpMod) are not documented
+by ABB as far as we found; programs compare with the names, so the values
+only need to be distinct within each type.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from ..values import to_num
+
+CONST, PERS = "CONST", "PERS"
+
+
+@dataclass(frozen=True)
+class PredefinedData:
+    name: str          # spelling as in the manual
+    type_name: str     # RAPID type, lower case
+    storage: str       # CONST or PERS
+    value: object
+
+
+PREDEFINED_DATA: dict[str, PredefinedData] = {}
+
+
+def _define(name: str, type_name: str, value: object, storage: str = CONST) -> None:
+    assert name.upper() not in PREDEFINED_DATA, name
+    PREDEFINED_DATA[name.upper()] = PredefinedData(name, type_name, storage, value)
+
+
+def _nums(*values: float) -> tuple[float, ...]:
+    return tuple(to_num(v) for v in values)
+
+
+# --- numbers and strings --------------------------------------------------------
+_define("pi", "num", to_num(3.1415926))
+_define("WAIT_MAX", "num", to_num(8388608))
+_define("EOF_NUM", "num", to_num(9.998e36))
+_define("stEmpty", "string", "")
+_define("STR_DIGIT", "string", "0123456789")
+# Latin-1 letters in case pairs: A-Z, then À..Ö and Ø..Þ (no ß, no ÿ).
+_define("STR_UPPER", "string", "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
+        + "".join(map(chr, range(0xC0, 0xD7))) + "".join(map(chr, range(0xD8, 0xDF))))
+_define("STR_LOWER", "string", "abcdefghijklmnopqrstuvwxyz"
+        + "".join(map(chr, range(0xE0, 0xF7))) + "".join(map(chr, range(0xF8, 0xFF))))
+_define("STR_WHITE", "string", " ")
+
+# --- signal values (dionum) -------------------------------------------------------
+for _number, _name in enumerate(("low", "high", "edge")):
+    _define(_name, "dionum", float(_number))
+
+# --- StrDigCmp relations (opnum) and StrDigCalc operators (opcalc) ---------------
+for _number, _name in enumerate(("LT", "LTEQ", "EQ", "NOTEQ", "GTEQ", "GT"), start=1):
+    _define(_name, "opnum", float(_number))
+for _number, _name in enumerate(("OpAdd", "OpSub", "OpMult", "OpDiv", "OpMod"), start=1):
+    _define(_name, "opcalc", float(_number))
+
+# --- OpMode / RunMode results (symnum) ---------------------------------------------
+for _number, _name in enumerate(("OP_UNDEF", "OP_AUTO", "OP_MAN_PROG", "OP_MAN_TEST")):
+    _define(_name, "symnum", float(_number))
+for _number, _name in enumerate(("RUN_UNDEF", "RUN_CONT_CYCLE", "RUN_INSTR_FWD",
+                                 "RUN_INSTR_BWD", "RUN_SIM", "RUN_STEP_MOVE")):
+    _define(_name, "symnum", float(_number))
+
+# --- speeddata [v_tcp, v_ori, v_leax, v_reax] --------------------------------------
+SPEEDS = (5, 10, 20, 30, 40, 50, 60, 80, 100, 150, 200, 300, 400, 500, 600, 800, 1000,
+          1500, 2000, 2500, 3000, 4000, 5000, 6000, 7000)
+for _speed in SPEEDS:
+    _define(f"v{_speed}", "speeddata", _nums(_speed, 500, 5000, 1000))
+_define("vmax", "speeddata", _nums(5000, 500, 5000, 1000))  # robot dependent; a typical value
+
+# --- zonedata [finep, pzone_tcp, pzone_ori, pzone_eax, zone_ori, zone_leax, zone_reax]
+ZONES = (1, 5, 10, 15, 20, 30, 40, 50, 60, 80, 100, 150, 200)
+_define("fine", "zonedata", (True,) + _nums(0, 0, 0, 0, 0, 0))
+_define("z0", "zonedata", (False,) + _nums(0.3, 0.3, 0.3, 0.03, 0.3, 0.03))
+_define("z1", "zonedata", (False,) + _nums(1, 1, 1, 0.1, 1, 0.1))
+for _zone in ZONES[1:]:
+    _define(f"z{_zone}", "zonedata",
+            (False,) + _nums(_zone, 1.5 * _zone, 1.5 * _zone, 0.15 * _zone, 1.5 * _zone, 0.15 * _zone))
+
+# --- tool, work object, load ----------------------------------------------------------
+_IDENTITY_POSE = (_nums(0, 0, 0), _nums(1, 0, 0, 0))
+LOAD0 = (to_num(0.001), _nums(0, 0, 0.001), _nums(1, 0, 0, 0)) + _nums(0, 0, 0)
+_define("load0", "loaddata", LOAD0, PERS)
+_define("tool0", "tooldata", (True, _IDENTITY_POSE, LOAD0), PERS)
+_define("wobj0", "wobjdata", (False, True, "", _IDENTITY_POSE, _IDENTITY_POSE), PERS)
+
+
+def lookup_data(key: str) -> PredefinedData | None:
+    """The predefined data object with canonical name ``key``, or None."""
+    return PREDEFINED_DATA.get(key)
