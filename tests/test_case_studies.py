@@ -1,0 +1,310 @@
+"""The case studies under case_studies/: verdicts, exit codes and counterexamples.
+
+Each case runs ``rapidmc check PROGRAM --env PLANT --ltl SPEC`` in-process
+(``rapidmc.cli.main``), as text and as ``--format json``, from the
+repository root so that file names in the output are the ones the READMEs
+show.  ``CASES`` is the table of expected verdicts; the counterexample
+tests read the JSON trace back into the signal values of every step and
+check that the trace really shows the violation and its cause.
+"""
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import os
+import re
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable, Mapping, Sequence
+
+import pytest
+
+from rapidmc.cli import main
+
+ROOT = Path(__file__).resolve().parent.parent
+SORTER = ROOT / "case_studies" / "sorter"
+DOOR = ROOT / "case_studies" / "door"
+
+HOLDS, VIOLATED = "HOLDS", "VIOLATED"
+
+
+@dataclass(frozen=True)
+class Case:
+    """One ``rapidmc check`` run and the verdict expected for each property."""
+
+    program: str
+    env: str
+    spec: str
+    verdicts: Mapping[str, str]
+
+    def argv(self, *extra: str) -> list[str]:
+        return ["check", self.program, "--env", self.env, "--ltl", self.spec, *extra]
+
+    @property
+    def exit_code(self) -> int:
+        return 1 if VIOLATED in self.verdicts.values() else 0
+
+
+def sorter_case(program: str, p1: str, p2: str, p3: str) -> Case:
+    return Case(f"case_studies/sorter/{program}", "case_studies/sorter/plant.mod",
+                "specs/sorter.ltl", {"P1": p1, "P2": p2, "P3": p3})
+
+
+def door_case(program: str, d1: str, d2: str) -> Case:
+    return Case(f"case_studies/door/{program}", "case_studies/door/plant.mod",
+                "specs/door.ltl", {"D1": d1, "D2": d2})
+
+
+CASES = {
+    "sorter_a": sorter_case("sorter_a.mod", HOLDS, HOLDS, HOLDS),
+    "sorter_b": sorter_case("sorter_b.mod", HOLDS, VIOLATED, VIOLATED),
+    "sorter_c": sorter_case("sorter_c.mod", HOLDS, HOLDS, VIOLATED),
+    "door_safe": door_case("door_safe.mod", HOLDS, HOLDS),
+    "door_race": door_case("door_race.mod", VIOLATED, HOLDS),
+}
+
+VIOLATIONS = [(case, name) for case, c in CASES.items()
+              for name, verdict in c.verdicts.items() if verdict == VIOLATED]
+
+
+# --- running the tool ------------------------------------------------------------
+
+
+def run_check(case: Case, capsys, *extra: str) -> tuple[int, str]:
+    """(exit code, stdout) of ``rapidmc check`` on ``case``, run from the repository root."""
+    capsys.readouterr()
+    code = main(case.argv(*extra))
+    return code, capsys.readouterr().out
+
+
+@pytest.fixture
+def at_root(monkeypatch):
+    monkeypatch.chdir(ROOT)
+
+
+@pytest.fixture(scope="module")
+def json_reports() -> dict[str, dict]:
+    """The JSON report of every case, computed once per test module."""
+    reports = {}
+    previous = os.getcwd()
+    os.chdir(ROOT)
+    try:
+        for key, case in CASES.items():
+            out = io.StringIO()
+            with contextlib.redirect_stdout(out):
+                code = main(case.argv("--format", "json"))
+            assert out.getvalue(), f"{key}: rapidmc check printed no report (exit code {code})"
+            reports[key] = json.loads(out.getvalue())
+    finally:
+        os.chdir(previous)
+    return reports
+
+
+def verdicts_in_text(output: str) -> dict[str, str]:
+    """``{name: verdict}`` from the verdict lines ``P1: HOLDS (851 states, 0.12 s)``."""
+    return dict(re.findall(r"^(\w+): (HOLDS|VIOLATED|UNKNOWN) \(", output, re.MULTILINE))
+
+
+def property_report(report: dict, name: str) -> dict:
+    [entry] = [p for p in report["properties"] if p["name"] == name]
+    return entry
+
+
+# --- reading a trace back -------------------------------------------------------------
+
+# The names a trace may use for each physical signal: its own, or the
+# program's data object bound to it with AliasIO.
+SIGNAL_NAMES = {
+    "C_IN": ("C_IN", "c_in"), "C_OUT": ("C_OUT", "c_out"),
+    "S_1": ("S_1", "s1"), "S_2": ("S_2", "s2"), "S_3": ("S_3", "s3"), "S_4": ("S_4", "s4"),
+    "GRIPPER": ("GRIPPER", "do_grip"),
+    "DOOR_CLOSED": ("DOOR_CLOSED", "door_closed"), "DOOR_LOCK": ("DOOR_LOCK", "door_lock"),
+    "ROBOT_MOVED": ("ROBOT_MOVED",),
+}
+
+
+class Valuation:
+    """The values shown for one step of a trace (every change up to that step)."""
+
+    def __init__(self, values: Mapping[str, str]):
+        self.values = dict(values)
+
+    def signal(self, physical: str) -> bool:
+        """Whether ``physical`` reads 1 in this step, found under any name it may be shown by."""
+        wanted = {name.upper() for name in SIGNAL_NAMES[physical]}
+        found = [value for key, value in self.values.items() if _last_identifier(key) in wanted]
+        assert found, f"the trace shows no value of {physical} (names shown: {sorted(self.values)})"
+        return all(str(value).strip() in ("1", "TRUE") for value in found)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Valuation) and self.values == other.values
+
+
+def _last_identifier(key: str) -> str:
+    match = re.search(r"[A-Za-z_][A-Za-z0-9_]*$", key.strip())
+    return match.group(0).upper() if match else key.upper()
+
+
+@dataclass(frozen=True)
+class Lasso:
+    """A counterexample as values per step: ``states[loop:]`` repeats for ever."""
+
+    steps: Sequence[dict]
+    states: Sequence[Valuation]
+    loop: int
+    closing: Valuation
+
+    def after(self, index: int) -> Valuation:
+        """The state that follows ``states[index]`` on the infinite run."""
+        return self.states[index + 1] if index + 1 < len(self.states) else self.states[self.loop]
+
+
+def read_lasso(trace: dict) -> Lasso:
+    """Fold the per-step changes of a JSON trace into the full values of every step."""
+    steps = [*trace["prefix"], *trace["cycle"]]
+    values: dict[str, str] = {}
+    states = []
+    for step in steps:
+        values.update(step["changes"])
+        states.append(Valuation(values))
+    closing = dict(values)
+    closing.update(trace["closing"]["changes"])
+    loop = [step["index"] for step in steps].index(trace["loop_start"])
+    return Lasso(steps, states, loop, Valuation(closing))
+
+
+def response_violated(p: Callable[[Valuation], bool], q: Callable[[Valuation], bool]):
+    """Whether a lasso violates ``G(p -> F q)``: some p-state is never followed by a q-state."""
+    def violated(lasso: Lasso) -> bool:
+        return any(p(state) and not any(q(later) for later in lasso.states[min(i, lasso.loop):])
+                   for i, state in enumerate(lasso.states))
+    return violated
+
+
+def next_violated(p: Callable[[Valuation], bool], q: Callable[[Valuation], bool]):
+    """Whether a lasso violates ``G(p -> X q)``: some p-state is followed by a non-q-state."""
+    def violated(lasso: Lasso) -> bool:
+        return any(p(state) and not q(lasso.after(i)) for i, state in enumerate(lasso.states))
+    return violated
+
+
+def passed(s: Valuation) -> bool:
+    return s.signal("S_1") and s.signal("S_2")
+
+
+# How each property's violation shows on the run (the formulas of specs/*.ltl).
+VIOLATION_SHOWN = {
+    "P1": response_violated(lambda s: not s.signal("C_IN") and passed(s),
+                            lambda s: s.signal("S_3") and not s.signal("S_4")),
+    "P2": response_violated(lambda s: not s.signal("C_IN") and not passed(s),
+                            lambda s: not s.signal("S_3") and s.signal("S_4")),
+    "P3": response_violated(lambda s: s.signal("S_3") != s.signal("S_4"),
+                            lambda s: s.signal("C_OUT")),
+    "D1": next_violated(lambda s: not s.signal("DOOR_CLOSED"),
+                        lambda s: not s.signal("ROBOT_MOVED")),
+}
+
+
+def line_of(path: Path, text: str, occurrence: int = 1) -> int:
+    """The 1-based number of the line holding the ``occurrence``-th ``text`` in ``path``."""
+    hits = [number for number, line in enumerate(path.read_text().splitlines(), 1) if text in line]
+    return hits[occurrence - 1]
+
+
+def step_line(step: dict) -> int | None:
+    return step["location"]["line"] if step["location"] else None
+
+
+# --- verdicts and exit codes ------------------------------------------------------------
+
+
+@pytest.mark.parametrize("key", CASES)
+def test_text_report_gives_the_expected_verdicts_and_exit_code(key, capsys, at_root):
+    case = CASES[key]
+    code, output = run_check(case, capsys)
+    assert verdicts_in_text(output) == case.verdicts
+    assert code == case.exit_code
+
+
+@pytest.mark.parametrize("key", CASES)
+def test_json_report_gives_the_expected_verdicts(key, json_reports):
+    report = json_reports[key]
+    assert {p["name"]: p["verdict"] for p in report["properties"]} == CASES[key].verdicts
+
+
+@pytest.mark.parametrize("key", CASES)
+def test_json_exit_code_matches_the_text_one(key, capsys, at_root):
+    code, _ = run_check(CASES[key], capsys, "--format", "json")
+    assert code == CASES[key].exit_code
+
+
+# --- counterexamples --------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("key, name", VIOLATIONS)
+def test_counterexample_loop_closes_on_its_first_state(key, name, json_reports):
+    """Replaying the printed changes, the closing step returns to the loop's first state."""
+    lasso = read_lasso(property_report(json_reports[key], name)["trace"])
+    assert lasso.closing == lasso.states[lasso.loop]
+
+
+@pytest.mark.parametrize("key, name", VIOLATIONS)
+def test_counterexample_shows_the_violation(key, name, json_reports):
+    lasso = read_lasso(property_report(json_reports[key], name)["trace"])
+    assert VIOLATION_SHOWN[name](lasso)
+
+
+def test_sorter_b_p2_trace_drops_a_rejected_pinion_at_c1(json_reports):
+    """B/P2: a pinion some sensor rejected is carried by the flag_2 branch to C1 and dropped there."""
+    lasso = read_lasso(property_report(json_reports["sorter_b"], "P2")["trace"])
+    program = SORTER / "sorter_b.mod"
+    wrong_move = line_of(program, "MoveJ c1, v, zone, gripper;", occurrence=2)
+    releases = {line_of(program, "SetDO do_grip, 0;"), line_of(program, "Drop;", occurrence=2)}
+    drops = [i for i, state in enumerate(lasso.states)
+             if state.signal("S_3") and (i == 0 or not lasso.states[i - 1].signal("S_3"))]
+    assert drops, "no step sets S_3"
+    drop = drops[0]
+    assert step_line(lasso.steps[drop]) in releases
+    at_drop = lasso.states[drop]
+    assert not passed(at_drop) and not at_drop.signal("S_4")
+    moves = [step_line(step) for step in lasso.steps[:drop] if "MoveJ" in (step["source"] or "")]
+    assert moves[-1] == wrong_move
+
+
+def test_door_race_d1_trace_moves_after_the_door_opened_between_test_and_lock(json_reports):
+    """door_race/D1: the robot's move is taken from a state where the door is open."""
+    lasso = read_lasso(property_report(json_reports["door_race"], "D1")["trace"])
+    program = DOOR / "door_race.mod"
+    moving = [i for i in range(len(lasso.states))
+              if not lasso.states[i].signal("DOOR_CLOSED") and lasso.after(i).signal("ROBOT_MOVED")]
+    assert moves_from_line(lasso, moving[0]) == line_of(program, "MoveJ pick")
+
+
+def moves_from_line(lasso: Lasso, index: int) -> int | None:
+    """The source line of the step taken from ``states[index]``."""
+    following = lasso.steps[index + 1] if index + 1 < len(lasso.steps) else lasso.steps[lasso.loop]
+    return step_line(following)
+
+
+# --- the README shows what the tool prints -------------------------------------------------
+
+SECONDS = re.compile(r"\d[\d,]*\.\d+ s\b")
+
+
+def normalise_times(text: str) -> str:
+    return SECONDS.sub("T s", text)
+
+
+def test_sorter_readme_first_command_is_a_check_with_the_plant():
+    readme = (SORTER / "README.md").read_text()
+    first_block = re.search(r"```\n(.*?)```", readme, re.DOTALL).group(1)
+    command = first_block.strip().splitlines()[0]
+    assert command == "rapidmc check " + " ".join(CASES["sorter_b"].argv()[1:])
+
+
+@pytest.mark.parametrize("key", ["sorter_b", "sorter_c"])
+def test_sorter_readme_shows_the_counterexamples_in_full(key, capsys, at_root):
+    _, output = run_check(CASES[key], capsys)
+    readme = normalise_times((SORTER / "README.md").read_text())
+    assert normalise_times(output) in readme
