@@ -1,4 +1,4 @@
-MODULE module_data_persists_between_calls
+MODULE module_data_persists
   ! Tests: module VAR data keep their value from one routine call to the next
   ! and are shared by all routines of the module.
   VAR num total := 0;

@@ -1,4 +1,4 @@
-MODULE late_binding_computed_name_with_args
+MODULE late_binding_computed_name
   ! Tests: the late-bound name may be a computed string expression, and
   ! arguments follow the closing % as in an ordinary call.
   PROC step1(num v)
