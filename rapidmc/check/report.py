@@ -78,9 +78,10 @@ def counterexample_lines(trace: Trace) -> list[str]:
     """The numbered steps of a trace with the loop markers."""
     count = len(trace.prefix) + len(trace.cycle)
     if trace.cycle:
-        head = f"  counterexample: {len(trace.prefix)} steps, then a loop of {len(trace.cycle)} steps"
+        head = (f"  counterexample: {_steps(len(trace.prefix))}, "
+                f"then a loop of {_steps(len(trace.cycle))}")
     else:
-        head = f"  counterexample: {count} steps"
+        head = f"  counterexample: {_steps(count)}"
     lines = [head]
     for step in trace.prefix:
         lines.extend(step_lines(step))
@@ -91,6 +92,10 @@ def counterexample_lines(trace: Trace) -> list[str]:
         lines.extend(step_lines(trace.closing))
         lines.append(f"  -- loop closes: back to the state of step {trace.loop_start} --")
     return lines
+
+
+def _steps(count: int) -> str:
+    return f"{count} step" if count == 1 else f"{count} steps"
 
 
 def step_lines(step: TraceStep) -> list[str]:

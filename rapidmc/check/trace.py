@@ -15,6 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Hashable, Mapping, Optional, Protocol
 
+from .fold import fold_lasso
 from .model import STUTTER
 from .result import LassoStep, SearchResult
 
@@ -91,7 +92,8 @@ def changes_between(before: Optional[Mapping[str, str]], after: Mapping[str, str
 
 
 def build_trace(result: SearchResult, describer: TraceDescriber) -> Trace:
-    """The readable trace of a VIOLATED result's lasso."""
+    """The readable trace of a VIOLATED result's lasso, folded to its shortest spelling."""
+    prefix, cycle, closing_label = fold_lasso(result.prefix, result.cycle, result.closing_label)
     views: dict[int, Mapping[str, str]] = {}
 
     def view(step: LassoStep) -> Mapping[str, str]:
@@ -102,15 +104,15 @@ def build_trace(result: SearchResult, describer: TraceDescriber) -> Trace:
 
     steps: list[TraceStep] = []
     previous: Optional[LassoStep] = None
-    for lasso_step in [*result.prefix, *result.cycle]:
+    for lasso_step in [*prefix, *cycle]:
         before = view(previous) if previous is not None else None
         steps.append(_trace_step(len(steps) + 1, lasso_step.label, before, view(lasso_step), describer))
         previous = lasso_step
     closing = None
-    if result.cycle:
-        closing = _trace_step(len(steps) + 1, result.closing_label, view(result.cycle[-1]),
-                              view(result.cycle[0]), describer)
-    split = len(result.prefix)
+    if cycle:
+        closing = _trace_step(len(steps) + 1, closing_label, view(cycle[-1]), view(cycle[0]),
+                              describer)
+    split = len(prefix)
     return Trace(tuple(steps[:split]), tuple(steps[split:]), closing)
 
 
