@@ -1,0 +1,36 @@
+"""The RAPID front end: source text to ``rapidmc.ast``.
+
+Example::
+
+    >>> [m.name.text for m in parse_text("MODULE Hello ENDMODULE", "hello.mod")]
+    ['Hello']
+"""
+from __future__ import annotations
+
+from .. import ast
+from ..diagnostics import SourceCache
+from ..source import program_paths, read_source
+from .lower import lower
+from .parser import parse_tree
+
+
+def parse_text(text: str, filename: str) -> tuple[ast.Module, ...]:
+    """The modules in ``text``; syntax errors raise ``UserError``."""
+    SourceCache.remember(filename, text)
+    return lower(parse_tree(text, filename), filename)
+
+
+def parse_file(path: str) -> tuple[ast.Module, ...]:
+    """The modules in the RAPID file at ``path``."""
+    return parse_text(read_source(path), path)
+
+
+def load_program(paths: list[str]) -> ast.Program:
+    """The program made of the given module files (``.pgf`` files expanded)."""
+    modules: list[ast.Module] = []
+    for path in program_paths(list(paths)):
+        modules.extend(parse_file(path))
+    return ast.Program(tuple(modules))
+
+
+__all__ = ["parse_text", "parse_file", "load_program"]

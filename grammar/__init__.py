@@ -1,0 +1,1 @@
+"""The RAPID grammar (rapid.lark), shipped as package data."""

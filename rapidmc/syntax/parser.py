@@ -1,0 +1,114 @@
+"""RAPID text to Lark parse tree; Lark's errors become rapidmc diagnostics.
+
+The LALR parser is built once per process (and Lark caches the built tables
+on disk), from the grammar shipped as ``rapidmc.grammar/rapid.lark``.
+
+Example::
+
+    >>> parse_tree("MODULE m ENDMODULE", "m.mod").data
+    'start'
+"""
+from __future__ import annotations
+
+import functools
+import re
+
+from lark import Lark, Tree
+from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
+
+from ..ast import Span
+from ..diagnostics import (BAD_CHARACTER, BAD_STRING, FILE_EMPTY, PLACEHOLDER,
+                           SYNTAX, UNEXPECTED_EOF, UserError, error)
+from .tokens import describe_expected, describe_token
+
+PLACEHOLDER_MEANINGS = {
+    "TDN": "a type definition", "DDN": "a data declaration", "RDN": "a routine declaration",
+    "PAR": "a parameter", "ALT": "an optional parameter", "DIM": "an array dimension",
+    "SMT": "a statement", "VAR": "a data reference", "EIT": "an ELSEIF clause",
+    "CSE": "a CASE clause", "EXP": "an expression", "ARG": "an argument", "ID": "an identifier",
+}
+_PLACEHOLDER_TEXT = re.compile(r"<(%s)>" % "|".join(PLACEHOLDER_MEANINGS))
+# Text that is not code: whitespace, ! comments and %%% header blocks.
+TOKEN_START_PUNCTUATION = frozenset('{}()[],.=<>+-*/:;\\?|%!"')
+_TOKEN_START_WORD = re.compile(r"[0-9a-zA-Z\xc0-\xd6\xd8-\xf6\xf8-\xff]")
+_NOT_CODE = re.compile(r"%%%(?:.|\n)*?%%%|![^\n]*")
+
+
+@functools.cache
+def rapid_parser() -> Lark:
+    """The LALR parser for RAPID, built on first use."""
+    return Lark.open_from_package(
+        "rapidmc.grammar", "rapid.lark", parser="lalr", lexer="contextual",
+        propagate_positions=True, maybe_placeholders=True, cache=True)
+
+
+def parse_tree(text: str, filename: str) -> Tree:
+    """Parse RAPID source text into a Lark tree, or raise a ``UserError``."""
+    try:
+        return rapid_parser().parse(text)
+    except UnexpectedInput as exc:
+        raise syntax_error(exc, text, filename) from None
+
+
+def has_code(text: str) -> bool:
+    """Whether ``text`` holds anything besides whitespace, comments and headers."""
+    return _NOT_CODE.sub("", text).strip() != ""
+
+
+def syntax_error(exc: UnexpectedInput, text: str, filename: str) -> UserError:
+    """The diagnostic for a Lark parse failure."""
+    if isinstance(exc, UnexpectedToken) and exc.token.type == "$END":
+        return _end_of_file_error(exc, text, filename)
+    placeholder = _PLACEHOLDER_TEXT.match(text, exc.pos_in_stream or 0)
+    if placeholder:
+        return _placeholder_error(placeholder, exc, filename)
+    if isinstance(exc, UnexpectedToken):
+        return _unexpected_token_error(exc, filename)
+    if isinstance(exc, UnexpectedCharacters):
+        return _unexpected_character_error(exc, text, filename)
+    return error(SYNTAX, str(exc), Span(filename, exc.line, exc.column))
+
+
+def _unexpected_token_error(exc: UnexpectedToken, filename: str) -> UserError:
+    token = exc.token
+    span = Span(filename, token.line, token.column, token.end_line, token.end_column)
+    message = f"unexpected {describe_token(token)}; expected one of: {describe_expected(exc.expected)}"
+    return error(SYNTAX, message, span)
+
+
+def _unexpected_character_error(exc: UnexpectedCharacters, text: str,
+                                filename: str) -> UserError:
+    span = Span(filename, exc.line, exc.column, exc.line, exc.column + 1)
+    character = exc.char
+    if character == '"':
+        return error(BAD_STRING, "unterminated string (a string must end on the line it starts)", span)
+    if _starts_a_token(character):
+        message = f"unexpected {character!r}; expected one of: {describe_expected(exc.allowed)}"
+        return error(SYNTAX, message, span)
+    shown = character if character.isprintable() else f"\\x{ord(character):02x}"
+    return error(BAD_CHARACTER, f"character '{shown}' cannot start any RAPID token", span)
+
+
+def _starts_a_token(character: str) -> bool:
+    """Whether some RAPID token can begin with ``character`` (reference 1.3, 1.9)."""
+    return character in TOKEN_START_PUNCTUATION or _TOKEN_START_WORD.match(character) is not None
+
+
+def _placeholder_error(match: re.Match, exc: UnexpectedInput, filename: str) -> UserError:
+    kind = match.group(1)
+    span = Span(filename, exc.line, exc.column, exc.line, exc.column + len(match.group(0)))
+    return error(PLACEHOLDER,
+                 f"placeholder {match.group(0)} ({PLACEHOLDER_MEANINGS[kind]}) cannot be "
+                 "analysed here; complete the program first", span)
+
+
+def _end_of_file_error(exc: UnexpectedToken, text: str, filename: str) -> UserError:
+    if not has_code(text):
+        return error(FILE_EMPTY, "the file holds no module (only comments or white space)",
+                     Span(filename, 1, 1))
+    lines = text.splitlines() or [""]
+    last = len(lines)
+    span = Span(filename, last, len(lines[-1]) + 1)
+    message = f"the file ends too early; expected one of: {describe_expected(exc.expected)}"
+    return error(UNEXPECTED_EOF, message, span)
+
