@@ -1,0 +1,3 @@
+MODULE b_lib
+  VAR num total := 1;
+ENDMODULE

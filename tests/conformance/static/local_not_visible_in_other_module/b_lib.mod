@@ -1,0 +1,3 @@
+MODULE b_lib
+  LOCAL VAR num secret := 42;
+ENDMODULE
