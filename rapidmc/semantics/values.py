@@ -22,7 +22,7 @@ from __future__ import annotations
 import math
 import struct
 from dataclasses import dataclass
-from decimal import ROUND_DOWN, ROUND_HALF_UP, Decimal
+from decimal import ROUND_DOWN, ROUND_HALF_UP, Context, Decimal
 from typing import Callable
 
 from .errors import RapidError
@@ -38,6 +38,8 @@ DNUM_MAX_DECIMALS = 15                # ... of RoundDnum/TruncDnum/DnumToStr
 _FLOAT32 = struct.Struct("f")
 _pack, _unpack = _FLOAT32.pack, _FLOAT32.unpack
 _INFINITY = math.inf
+# Wide enough for every double written out in full plus 15 decimals.
+_DECIMAL_CONTEXT = Context(prec=400)
 
 
 # --------------------------------------------------------------------------
@@ -166,12 +168,15 @@ def shortest_decimal(x: float, single: bool) -> Decimal:
 
 
 def round_decimal(x: float, decimals: int, single: bool, truncate: bool = False) -> float:
-    """``x`` rounded (ties away from zero) or truncated to ``decimals`` places."""
+    """``x`` rounded (ties away from zero) or truncated to ``decimals`` places.
+
+    The result is a double; callers convert it with ``to_num``/``to_dnum``.
+    """
     if x != x or x in (_INFINITY, -_INFINITY):
         return x
     mode = ROUND_DOWN if truncate else ROUND_HALF_UP
     quantum = Decimal(1).scaleb(-decimals)
-    result = float(shortest_decimal(x, single).quantize(quantum, rounding=mode))
+    result = float(shortest_decimal(x, single).quantize(quantum, mode, _DECIMAL_CONTEXT))
     return result + 0.0 if result else 0.0   # never return -0.0
 
 
@@ -255,7 +260,8 @@ def decimals_argument(decimals: float, limit: int) -> int:
 
 
 def _fixed(x: float, decimals: int, single: bool) -> str:
-    rounded = shortest_decimal(x, single).quantize(Decimal(1).scaleb(-decimals), ROUND_HALF_UP)
+    quantum = Decimal(1).scaleb(-decimals)
+    rounded = shortest_decimal(x, single).quantize(quantum, ROUND_HALF_UP, _DECIMAL_CONTEXT)
     text = f"{rounded:f}"
     if "." in text:
         text = text.rstrip("0").rstrip(".")
@@ -267,10 +273,10 @@ def _scientific(x: float, decimals: int, single: bool) -> str:
     value = shortest_decimal(x, single)
     quantum = Decimal(1).scaleb(-decimals)
     exponent = value.adjusted() if value else 0
-    mantissa = value.scaleb(-exponent).quantize(quantum, ROUND_HALF_UP)
+    mantissa = value.scaleb(-exponent).quantize(quantum, ROUND_HALF_UP, _DECIMAL_CONTEXT)
     if abs(mantissa) >= 10:          # 9.99 -> 10.0: renormalise
         exponent += 1
-        mantissa = value.scaleb(-exponent).quantize(quantum, ROUND_HALF_UP)
+        mantissa = value.scaleb(-exponent).quantize(quantum, ROUND_HALF_UP, _DECIMAL_CONTEXT)
     sign = "-" if exponent < 0 else "+"
     return f"{mantissa:f}E{sign}{abs(exponent):02d}"
 

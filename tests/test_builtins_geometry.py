@@ -1,0 +1,109 @@
+"""Geometry builtins, predefined data, and the pos/orient operators."""
+from __future__ import annotations
+
+import math
+
+import pytest
+from hypothesis import given, strategies as st
+
+from rapidmc.semantics.builtins import lookup_function
+from rapidmc.semantics.builtins.data import PREDEFINED_DATA
+from rapidmc.semantics.builtins.geometry_ops import operator_for
+from rapidmc.semantics.errors import RapidError
+from rapidmc.semantics.values import to_num
+
+
+def call(name, *args):
+    return lookup_function(name.upper()).impl(*args)
+
+
+IDENTITY = (1.0, 0.0, 0.0, 0.0)
+CONF, EXTAX = (0.0, 0.0, 0.0, 0.0), (9e9,) * 6
+angle = st.floats(min_value=-179, max_value=179)
+coordinate = st.floats(min_value=-1000, max_value=1000)
+vectors = st.tuples(coordinate, coordinate, coordinate).map(lambda v: tuple(map(to_num, v)))
+
+
+def approx(values, tolerance=1e-3):
+    return pytest.approx(values, abs=tolerance)
+
+
+def test_offs_moves_only_the_position():
+    point = ((100.0, 200.0, 300.0), IDENTITY, CONF, EXTAX)
+    assert call("Offs", point, 1.0, -2.0, 0.5) == ((101.0, 198.0, 300.5), IDENTITY, CONF, EXTAX)
+
+
+def test_reltool_displaces_in_the_tool_frame():
+    # tool rotated 90 degrees about z: tool x points along world y
+    rot = call("OrientZYX", 90.0, 0.0, 0.0)
+    point = ((0.0, 0.0, 0.0), rot, CONF, EXTAX)
+    moved = call("RelTool", point, 10.0, 0.0, 0.0, None, None, None)
+    assert moved[0] == approx((0.0, 10.0, 0.0))
+    turned = call("RelTool", point, 0.0, 0.0, 0.0, None, None, 90.0)
+    assert call("EulerZYX", False, False, True, turned[1]) == approx(180.0)
+
+
+@given(angle, st.floats(min_value=-89, max_value=89), angle)
+def test_orient_zyx_and_euler_zyx_are_inverse(z, y, x):
+    q = call("OrientZYX", z, y, x)
+    assert sum(c * c for c in q) == approx(1.0, 1e-5)
+    assert call("EulerZYX", False, False, True, q) == approx(z, 1e-2)
+    assert call("EulerZYX", False, True, False, q) == approx(y, 1e-2)
+    assert call("EulerZYX", True, False, False, q) == approx(x, 1e-2)
+
+
+def test_euler_zyx_needs_an_axis():
+    with pytest.raises(RapidError):
+        call("EulerZYX", False, False, False, IDENTITY)
+
+
+def test_norient_normalises_and_rejects_zero():
+    assert call("NOrient", (2.0, 0.0, 0.0, 0.0)) == IDENTITY
+    with pytest.raises(RapidError):
+        call("NOrient", (0.0, 0.0, 0.0, 0.0))
+
+
+@given(vectors, angle, angle, vectors)
+def test_pose_inverse_undoes_the_pose(trans, z, x, point):
+    pose = (trans, call("OrientZYX", z, 0.0, x))
+    moved = call("PoseVect", pose, point)
+    back = call("PoseVect", call("PoseInv", pose), moved)
+    assert back == approx(point, 0.1)
+    identity = call("PoseMult", pose, call("PoseInv", pose))
+    assert identity[0] == approx((0.0, 0.0, 0.0), 0.1)
+
+
+@given(vectors, vectors)
+def test_vector_functions_against_python(a, b):
+    assert call("DotProd", a, b) == approx(sum(x * y for x, y in zip(a, b)), 1.0)
+    assert call("VectMagn", a) == approx(math.hypot(*a), 1e-2)
+    assert call("Distance", a, b) == approx(math.dist(a, b), 1e-2)
+    cross = call("CrossProd", a, b)
+    assert call("DotProd", cross, a) == approx(0.0, 1e3)
+
+
+def test_operators_on_pos_and_orient():
+    from rapidmc.semantics import types
+    add, result = operator_for("+", types.POS, types.POS)
+    assert add((1.0, 2.0, 3.0), (1.0, 1.0, 1.0)) == (2.0, 3.0, 4.0) and result is types.POS
+    scale, _ = operator_for("*", types.POS, types.NUM)
+    assert scale((1.0, 2.0, 3.0), 2.0) == (2.0, 4.0, 6.0)
+    cross, _ = operator_for("*", types.POS, types.POS)
+    assert cross((1.0, 0.0, 0.0), (0.0, 1.0, 0.0)) == (0.0, 0.0, 1.0)
+    compose, result = operator_for("*", types.ORIENT, types.ORIENT)
+    assert compose(IDENTITY, IDENTITY) == IDENTITY and result is types.ORIENT
+    assert operator_for("/", types.POS, types.NUM) == (None, None)
+
+
+@pytest.mark.parametrize("name, type_name, value", [
+    ("V100", "speeddata", (100.0, 500.0, 5000.0, 1000.0)),
+    ("FINE", "zonedata", (True, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0)),
+    ("Z10", "zonedata", (False, 10.0, 15.0, 15.0, 1.5, 15.0, 1.5)),
+    ("TOOL0", "tooldata", (True, ((0.0, 0.0, 0.0), IDENTITY),
+                           (to_num(0.001), (0.0, 0.0, to_num(0.001)), IDENTITY, 0.0, 0.0, 0.0))),
+    ("WAIT_MAX", "num", 8388608.0),
+    ("STR_DIGIT", "string", "0123456789"),
+])
+def test_predefined_data(name, type_name, value):
+    data = PREDEFINED_DATA[name]
+    assert (data.type_name, data.value) == (type_name, value)
