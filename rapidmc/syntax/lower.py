@@ -24,9 +24,17 @@ from lark.exceptions import VisitError
 from lark.tree import Meta
 
 from .. import ast
-from ..diagnostics import BAD_NUMBER, BAD_STRING, IDENTIFIER_TOO_LONG, UserError, error
+from ..diagnostics import BAD_NUMBER, BAD_STRING, IDENTIFIER_TOO_LONG, SYNTAX, UserError, error
 
 MAX_IDENTIFIER_LENGTH = 32
+# Reference 1.4.  The contextual lexer reads a reserved word as an identifier
+# where no keyword fits, so the check is made here.
+RESERVED_WORDS = frozenset("""
+    ALIAS AND BACKWARD CASE CONNECT CONST DEFAULT DIV DO ELSE ELSEIF ENDFOR ENDFUNC ENDIF
+    ENDMODULE ENDPROC ENDRECORD ENDTEST ENDTRAP ENDWHILE ERROR EXIT FALSE FOR FROM FUNC GOTO
+    IF INOUT LOCAL MOD MODULE NOSTEPIN NOT NOVIEW OR PERS PROC RAISE READONLY RECORD RETRY
+    RETURN STEP SYSMODULE TASK TEST THEN TO TRAP TRUE TRYNEXT UNDO VAR VIEWONLY WHILE WITH
+    XOR""".split())
 MAX_STRING_LENGTH = 80
 _STRING_ESCAPE = re.compile(r'""|\\\\|\\([0-9a-fA-F]{2})|\\')
 _INTEGER_LITERAL = re.compile(r"[0-9]+|0[xX][0-9a-fA-F]+|0[oO][0-7]+|0[bB][01]+")
@@ -96,7 +104,10 @@ class Lowering(Transformer):
             raise error(IDENTIFIER_TOO_LONG,
                         f"identifier '{token}' has {len(token)} characters; "
                         f"RAPID allows at most {MAX_IDENTIFIER_LENGTH}", span)
-        return ast.Name(str(token), token.upper(), span)
+        key = token.upper()
+        if key in RESERVED_WORDS:
+            raise error(SYNTAX, f"'{token}' is a reserved word and cannot be used as a name", span)
+        return ast.Name(str(token), key, span)
 
     # ---------------------------------------------------------------- modules
 

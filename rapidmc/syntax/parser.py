@@ -72,8 +72,19 @@ def syntax_error(exc: UnexpectedInput, text: str, filename: str) -> UserError:
 def _unexpected_token_error(exc: UnexpectedToken, filename: str) -> UserError:
     token = exc.token
     span = Span(filename, token.line, token.column, token.end_line, token.end_column)
-    message = f"unexpected {describe_token(token)}; expected one of: {describe_expected(exc.expected)}"
+    message = f"unexpected {describe_token(token)}; expected one of: {describe_expected(_acceptable(exc))}"
     return error(SYNTAX, message, span)
+
+
+def _acceptable(exc: UnexpectedToken) -> set[str]:
+    """The terminals the parser could take where it failed.
+
+    Lark's own ``expected`` leaves out keywords when the contextual lexer
+    failed first, so the parser state is asked instead.
+    """
+    if exc.interactive_parser is None:
+        return set(exc.expected)
+    return set(exc.interactive_parser.accepts()) or set(exc.expected)
 
 
 def _unexpected_character_error(exc: UnexpectedCharacters, text: str,
@@ -109,6 +120,6 @@ def _end_of_file_error(exc: UnexpectedToken, text: str, filename: str) -> UserEr
     lines = text.splitlines() or [""]
     last = len(lines)
     span = Span(filename, last, len(lines[-1]) + 1)
-    message = f"the file ends too early; expected one of: {describe_expected(exc.expected)}"
+    message = f"the file ends too early; expected one of: {describe_expected(_acceptable(exc))}"
     return error(UNEXPECTED_EOF, message, span)
 

@@ -1,0 +1,3 @@
+! expect: RMC101 line 2
+PROC main()
+ENDPROC

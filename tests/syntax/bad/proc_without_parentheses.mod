@@ -1,0 +1,5 @@
+! expect: RMC101 line 4
+MODULE m
+  PROC main
+  ENDPROC
+ENDMODULE

@@ -1,0 +1,3 @@
+! expect: RMC101 line 2
+MODULE m (FASTMODULE)
+ENDMODULE
