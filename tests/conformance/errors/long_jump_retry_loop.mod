@@ -2,11 +2,11 @@ MODULE long_jump_retry_loop
   ! Tests: RETRY in an ERROR (LONG_JMP_ALL_ERR) recovery point re-executes
   ! the call statement of that routine (the pattern real controller code uses
   ! to restart a service loop after an error deep inside it).
-  VAR num round := 0;
+  VAR num rounds := 0;
   PROC serve()
-    round := round + 1;
-    TPWrite "round " \Num:=round;
-    IF round < 3 RAISE 20;
+    rounds := rounds + 1;
+    TPWrite "round " \Num:=rounds;
+    IF rounds < 3 RAISE 20;
   ENDPROC
   PROC loop()
     serve;

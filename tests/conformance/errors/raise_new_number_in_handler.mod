@@ -13,5 +13,6 @@ MODULE raise_new_number_in_handler
   ERROR
     IF ERRNO = ERR_SENSOR TPWrite "sensor error";
     IF ERRNO = ERR_DIVZERO TPWrite "division error";
+    RETURN;
   ENDPROC
 ENDMODULE

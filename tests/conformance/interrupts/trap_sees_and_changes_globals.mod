@@ -5,16 +5,16 @@ MODULE trap_sees_and_changes_globals
   VAR intnum ir1;
   VAR num shared := 1;
   PROC main()
-    VAR num local := 5;
+    VAR num mine := 5;
     AliasIO "DO1", do1;
     CONNECT ir1 WITH onRise;
     ISignalDO do1, 1, ir1;
     SetDO do1, 1;
     TPWrite "shared=" \Num:=shared;
-    TPWrite "local=" \Num:=local;
+    TPWrite "mine=" \Num:=mine;
   ENDPROC
   TRAP onRise
-    VAR num local := 99;
-    shared := shared * 10 + local;
+    VAR num mine := 99;
+    shared := shared * 10 + mine;
   ENDTRAP
 ENDMODULE
