@@ -11,7 +11,7 @@ MODULE func_returns_value
     RETURN v > 100;
   ENDFUNC
   FUNC pos middle(pos a, pos b)
-    RETURN 0.5 * (a + b);
+    RETURN [(a.x + b.x) / 2, (a.y + b.y) / 2, (a.z + b.z) / 2];
   ENDFUNC
   PROC main()
     TPWrite "area=" \Num:=area(3, 4);
