@@ -134,20 +134,18 @@ def _tan(kind: NumericKind):
     return lambda angle: kind.convert(tan_degrees(angle))
 
 
-@_both("num ASin(num Value)", "dnum ASinDnum(dnum Value)")
-def _asin(kind: NumericKind):
-    def asin(value: float) -> float:
-        _domain(-1 <= value <= 1, f"ASin of {value} outside [-1, 1]")
-        return kind.convert(math.degrees(math.asin(value)))
-    return asin
+def _arc(inverse, name: str):
+    """Factory for ASin/ACos: argument in [-1, 1], result in degrees."""
+    def make(kind: NumericKind):
+        def arc(value: float) -> float:
+            _domain(-1 <= value <= 1, f"{name} of {value} outside [-1, 1]")
+            return kind.convert(math.degrees(inverse(value)))
+        return arc
+    return make
 
 
-@_both("num ACos(num Value)", "dnum ACosDnum(dnum Value)")
-def _acos(kind: NumericKind):
-    def acos(value: float) -> float:
-        _domain(-1 <= value <= 1, f"ACos of {value} outside [-1, 1]")
-        return kind.convert(math.degrees(math.acos(value)))
-    return acos
+_both("num ASin(num Value)", "dnum ASinDnum(dnum Value)")(_arc(math.asin, "ASin"))
+_both("num ACos(num Value)", "dnum ACosDnum(dnum Value)")(_arc(math.acos, "ACos"))
 
 
 @_both("num ATan(num Value)", "dnum ATanDnum(dnum Value)")
