@@ -13,5 +13,7 @@ MODULE num_fraction_printing
     TPWrite "2/3=" \Num:=x;
     x := 0.125;
     TPWrite "x=" \Num:=x;
+    x := 1.234567;
+    TPWrite "x=" \Num:=x;
   ENDPROC
 ENDMODULE
