@@ -1,0 +1,59 @@
+"""``rapidmc run FILE... [--entry main] [--io NAME=VALUE]``: execute a RAPID program.
+
+FlexPendant text goes to stdout, diagnostics to stderr.  Exit codes: 0 the
+program ended (end of main, EXIT, Stop), 1 uncaught RAPID run-time error
+or deadlock, 2 static error (nothing ran).
+"""
+from __future__ import annotations
+
+import argparse
+import sys
+
+from ..diagnostics import (EXIT_OK, EXIT_RUNTIME_ERROR, USAGE, UserError, error, render)
+from ..run import fault_diagnostic, run_program
+from ..semantics.link import build
+from ..semantics.state import FAILED
+from ..syntax import load_program
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("files", nargs="+", metavar="FILE",
+                        help="RAPID module files (.mod, .modx, .sys, .prg) or .pgf program files")
+    parser.add_argument("--entry", default="main", metavar="NAME",
+                        help="procedure to start from (default: main)")
+    parser.add_argument("--io", action="append", default=[], metavar="NAME=VALUE",
+                        help="value of an input signal for the whole run (repeatable; "
+                             "inputs are 0 otherwise)")
+    parser.add_argument("--max-steps", type=int, default=None, metavar="N",
+                        help="stop with an error after N steps (default: no limit)")
+    parser.add_argument("--trace", action="store_true",
+                        help="print the source position of every step to stderr")
+
+
+def parse_io(assignments: list[str]) -> dict[str, float]:
+    values = {}
+    for text in assignments:
+        name, sep, value = text.partition("=")
+        if not sep or not name.strip():
+            raise error(USAGE, f"--io expects NAME=VALUE, got '{text}'")
+        try:
+            values[name.strip().upper()] = float(value)
+        except ValueError:
+            raise error(USAGE, f"--io {name}: '{value}' is not a number") from None
+    return values
+
+
+def execute(args: argparse.Namespace) -> int:
+    io_values = parse_io(args.io)
+    program = build(load_program(args.files), entry=args.entry,
+                    options={"io_names": tuple(io_values)})
+    unknown = [name for name in io_values if program.signal(name) is None]
+    if unknown:
+        raise error(USAGE, f"--io names unknown signal(s): {', '.join(unknown)}")
+    result = run_program(program, io_values, sys.stdin, sys.stdout, args.max_steps,
+                         sys.stderr if args.trace else None)
+    if result.state.status == FAILED:
+        sys.stdout.flush()
+        print(render(fault_diagnostic(program, result.state)), file=sys.stderr)
+        return EXIT_RUNTIME_ERROR
+    return EXIT_OK

@@ -1,0 +1,131 @@
+"""``rapidmc run``: drive the step function with a deterministic console.
+
+The FlexPendant is the console: TPWrite goes to stdout, TPReadNum/TPReadFK
+read one answer per line from stdin.  Inputs keep the values given with
+``--io``.  Time is virtual: WaitTime advances a clock that drives ITimer
+interrupts and \\MaxTime limits; a wait that nothing can end is reported
+as a deadlock instead of hanging.
+"""
+from __future__ import annotations
+
+import sys
+from dataclasses import dataclass
+from typing import Optional, TextIO
+
+from .diagnostics import (BAD_INPUT_VALUE, INPUT_EXHAUSTED, RUNTIME_ERROR, STEP_LIMIT,
+                          Diagnostic, error, render)
+from .semantics.errors import errno_name
+from .semantics.machine import Machine
+from .semantics.program import Program
+from .semantics.state import ENDED, FAILED, RUNNING, State
+from .semantics.step import Chooser, EnvironmentFault, enqueue, start_state, step
+from .semantics.values import format_num
+
+
+class ConsoleChooser(Chooser):
+    """Run mode: answers come from stdin, time is a virtual clock."""
+
+    def __init__(self, stdin: TextIO):
+        self.stdin = stdin
+
+    def tp_answers(self, kind: str) -> tuple:
+        line = self.stdin.readline()
+        if not line:
+            raise error(INPUT_EXHAUSTED, f"{kind} waits for an answer but standard input has "
+                        "no more lines")
+        text = line.strip()
+        try:
+            value = float(text)
+        except ValueError:
+            raise error(BAD_INPUT_VALUE, f"{kind} needs a number, got {text!r} on standard "
+                        "input") from None
+        if kind == "TPReadFK" and value not in (1, 2, 3, 4, 5):
+            raise error(BAD_INPUT_VALUE, f"TPReadFK answers are function keys 1-5, got {text!r}")
+        return (value,)
+
+    def wait_times_out(self, m: Machine, max_time: float) -> bool:
+        # Inputs do not change in run mode, so a wait that is not met now is
+        # only ended by its time limit.
+        self.advance_time(m, max_time)
+        return True
+
+    def advance_time(self, m: Machine, seconds: float) -> None:
+        m.clock += seconds
+        fire_timers(m)
+
+
+def fire_timers(m: Machine) -> None:
+    table = list(m.interrupts.table)
+    for i, entry in enumerate(table):
+        if entry.active and entry.source and entry.source[0] == "timer":
+            _, period, once = entry.source
+            if entry.due <= m.clock + 1e-9:
+                enqueue(m, entry.number)
+                due = entry.due
+                while due <= m.clock + 1e-9 and period > 0:
+                    due += period
+                table[i] = entry._replace(due=due)
+    m.interrupts = m.interrupts._replace(table=tuple(table))
+
+
+def next_timer(state: State) -> Optional[float]:
+    dues = [e.due for e in state.interrupts.table
+            if e.active and e.source and e.source[0] == "timer"]
+    return min(dues) if dues else None
+
+
+@dataclass
+class RunResult:
+    state: State
+    steps: int
+
+
+def run_program(program: Program, io_values: dict, stdin: TextIO, stdout: TextIO,
+                max_steps: Optional[int] = None, trace: Optional[TextIO] = None) -> RunResult:
+    """Execute ``program`` to its end; FlexPendant output goes to ``stdout``."""
+    chooser = ConsoleChooser(stdin)
+    state = start_state(program, io_values)
+    steps = 0
+    while state.status == RUNNING:
+        transition = step(program, state, chooser)
+        if transition.output:
+            stdout.write(transition.output + "\n")
+            stdout.flush()
+        if trace is not None and transition.span is not None:
+            trace.write(f"{transition.span}\n")
+        if transition.state == state:
+            transition = _wake(program, state, transition)
+        state = transition.state
+        steps += 1
+        if max_steps is not None and steps >= max_steps and state.status == RUNNING:
+            raise error(STEP_LIMIT, f"the program was stopped after {max_steps} steps "
+                        "(--max-steps)")
+    return RunResult(state, steps)
+
+
+def _wake(program: Program, state: State, transition):
+    """A step changed nothing: the program waits. Let virtual time pass, or report a deadlock."""
+    due = next_timer(state)
+    if due is None or state.interrupts.pending or not state.interrupts.enabled:
+        frame = state.frames[-1]
+        span = program.routines[frame.routine].code[frame.pc].span
+        raise error(RUNTIME_ERROR, "deadlock: the program waits for a condition that can never "
+                    "become true (inputs keep their --io values in run mode)", span)
+    m = Machine(program, state, None)
+    m.clock = max(m.clock, due)
+    fire_timers(m)
+    return transition._replace(state=m.to_state())
+
+
+def fault_diagnostic(program: Program, state: State) -> Diagnostic:
+    fault = state.fault
+    routine_index, pc = fault.instruction
+    span = None
+    if routine_index >= 0:
+        span = program.routines[routine_index].code[pc].span
+    name = errno_name(fault.errno)
+    detail = fault.message if fault.message and fault.message != name else ""
+    message = f"uncaught RAPID error {name} (ERRNO {format_num(float(fault.errno))})"
+    if detail:
+        message += f": {detail}"
+    return Diagnostic(RUNTIME_ERROR, message, span)

@@ -1,0 +1,481 @@
+"""Type checking of RAPID expressions and their compilation into closures.
+
+``ExpressionCompiler.value(expr, expected)`` returns a ``Compiled``: a
+function ``fn(machine) -> value`` plus the static type (None when it cannot
+be known statically).  Compiling once into closures, instead of walking the
+AST at every step, is what makes the step function fast.
+
+Calls of user FUNCs cannot run inside one step (a function body takes
+steps), so they are *hoisted*: the statement compiler provides ``hoist``,
+which emits a call instruction before the statement and gives back the
+frame slot where the result will be; the expression just reads that slot.
+"""
+from __future__ import annotations
+
+import operator
+from dataclasses import dataclass
+from typing import Any, Callable, Optional
+
+from .. import ast
+from ..diagnostics import (ARGUMENT, NOT_A_REFERENCE, TYPE_MISMATCH, UNKNOWN_NAME,
+                           UNKNOWN_ROUTINE, PLACEHOLDER, error)
+from . import values
+from .errors import RapidError
+from .machine import ABSENT, GLOBAL
+from .scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, Symbol
+from .types import (BOOL, DNUM, NUM, ORIENT, POS, RECORD, SEMI_VALUE, STRING, AnyType,
+                    ArrayType, RapidType, is_numeric, same_type)
+
+NOT_CONSTANT = object()
+
+
+@dataclass
+class Compiled:
+    """A compiled expression: ``fn(machine)`` computes it; ``type`` is static (or None)."""
+
+    fn: Callable[[Any], Any]
+    type: Optional[AnyType]
+    constant: Any = NOT_CONSTANT
+
+    @property
+    def is_constant(self) -> bool:
+        return self.constant is not NOT_CONSTANT
+
+
+def constant(value: Any, rapid_type: Optional[AnyType]) -> Compiled:
+    return Compiled(lambda m: value, rapid_type, value)
+
+
+def type_name(t: Optional[AnyType]) -> str:
+    return "unknown" if t is None else str(t)
+
+
+def _num_result(fn: Callable, both_num: bool) -> Callable:
+    return fn
+
+
+def _check_index(value: tuple, index: float, span: ast.Span) -> int:
+    if index != index or index != int(index):
+        raise RapidError("ERR_OUTOFBND", f"array index {values.format_num(index)} is not an integer")
+    i = int(index)
+    if not 1 <= i <= len(value):
+        raise RapidError("ERR_OUTOFBND", f"array index {i} outside 1..{len(value)}")
+    return i - 1
+
+
+def read_signal(m, index: int) -> float:
+    if index < 0:
+        raise RapidError("ERR_NO_ALIASIO_DEF", "the signal data is not connected to a signal (AliasIO)")
+    return m.io[index]
+
+
+class ExpressionCompiler:
+    """Compiles expressions in one scope (a routine body, a data initialiser, an atom)."""
+
+    def __init__(self, linker, scope, *, hoist=None, constant_only: bool = False,
+                 routine=None):
+        self.linker = linker
+        self.scope = scope
+        self.hoist = hoist                  # callable(FunctionCall, routine) -> slot, or None
+        self.constant_only = constant_only  # CONST/VAR initialisers: no variables, no calls
+        self.routine = routine
+
+    # ------------------------------------------------------------------ entry
+    def value(self, expr: ast.Expr, expected: Optional[AnyType] = None) -> Compiled:
+        method = getattr(self, "_" + type(expr).__name__)
+        compiled = method(expr, expected)
+        if expected is not None and compiled.type is not None:
+            self.check_assignable(compiled.type, expected, expr.span)
+            compiled = self.convert(compiled, expected)
+        return compiled
+
+    def condition(self, expr: ast.Expr) -> Compiled:
+        compiled = self.value(expr)
+        if compiled.type is not None and compiled.type is not BOOL:
+            raise error(TYPE_MISMATCH, f"condition must be bool, not {type_name(compiled.type)}",
+                        expr.span)
+        return compiled
+
+    def check_assignable(self, actual: AnyType, expected: AnyType, span: ast.Span) -> None:
+        if isinstance(expected, RapidType) and expected.kind == SEMI_VALUE:
+            expected = expected.value_type
+        if not same_type(actual, expected):
+            raise error(TYPE_MISMATCH, f"expected {type_name(expected)}, found {type_name(actual)}",
+                        span)
+
+    @staticmethod
+    def convert(compiled: Compiled, target: AnyType) -> Compiled:
+        """Round to num when a dnum value goes into a num."""
+        if target is NUM and compiled.type is DNUM:
+            fn = compiled.fn
+            if compiled.is_constant:
+                return constant(values.to_num(compiled.constant), NUM)
+            return Compiled(lambda m: values.to_num(fn(m)), NUM)
+        return compiled
+
+    # --------------------------------------------------------------- literals
+    def _NumLiteral(self, expr: ast.NumLiteral, expected) -> Compiled:
+        if expected is DNUM:
+            return constant(values.to_dnum(expr.value), DNUM)
+        try:
+            return constant(values.to_num(expr.value), NUM)
+        except RapidError:
+            return constant(values.to_dnum(expr.value), DNUM)
+
+    def _StringLiteral(self, expr: ast.StringLiteral, expected) -> Compiled:
+        return constant(expr.value, STRING)
+
+    def _BoolLiteral(self, expr: ast.BoolLiteral, expected) -> Compiled:
+        return constant(expr.value, BOOL)
+
+    def _Placeholder(self, expr: ast.Placeholder, expected) -> Compiled:
+        raise error(PLACEHOLDER, f"placeholder <{expr.kind}> cannot be executed", expr.span)
+
+    # ------------------------------------------------------------------ names
+    def lookup(self, name: ast.Name) -> Symbol:
+        symbol = self.scope.lookup(name.key)
+        if symbol is None:
+            symbol = self.linker.system_symbol(name)
+        if symbol is None:
+            raise error(UNKNOWN_NAME, f"unknown name '{name.text}'", name.span)
+        return symbol
+
+    def _NameRef(self, expr: ast.NameRef, expected) -> Compiled:
+        key = expr.name.key
+        if key == "ERRNO" and self.scope.lookup(key) is None:
+            self._no_variables(expr)
+            return Compiled(lambda m: m.errno, NUM)
+        if key == "INTNO" and self.scope.lookup(key) is None:
+            self._no_variables(expr)
+            return Compiled(lambda m: m.intno, NUM)
+        symbol = self.lookup(expr.name)
+        kind = symbol.kind
+        if kind == CONSTANT:
+            return constant(symbol.value, symbol.type)
+        if kind == ROUTINE:
+            raise error(TYPE_MISMATCH, f"'{expr.name.text}' is a routine, not data", expr.span)
+        self._no_variables(expr)
+        slot = symbol.slot
+        rapid_type = symbol.type
+        if kind == SIGNAL:
+            return Compiled(lambda m: m.io[slot], NUM)
+        is_signal = isinstance(rapid_type, RapidType) and rapid_type.kind == SEMI_VALUE
+        if kind == GLOBAL_DATA:
+            if is_signal:
+                return Compiled(lambda m: read_signal(m, m.store[slot]), NUM)
+            return Compiled(lambda m: m.store[slot], rapid_type)
+        # routine data and parameters
+        reader = self._local_reader(symbol, expr.name)
+        if is_signal:
+            return Compiled(lambda m: read_signal(m, reader(m)), NUM)
+        return Compiled(reader, rapid_type)
+
+    def _local_reader(self, symbol: Symbol, name: ast.Name) -> Callable:
+        slot = symbol.slot
+        if symbol.by_reference:
+            if symbol.optional:
+                def read_optional_ref(m):
+                    ref = m.frames[-1].locals[slot]
+                    if ref is ABSENT:
+                        raise RapidError("ERR_NOTPRES", f"optional parameter {name.text} not present")
+                    return m.read_ref(ref)
+                return read_optional_ref
+            return lambda m: m.read_ref(m.frames[-1].locals[slot])
+        if symbol.optional:
+            def read_optional(m):
+                value = m.frames[-1].locals[slot]
+                if value is ABSENT:
+                    raise RapidError("ERR_NOTPRES", f"optional parameter {name.text} not present")
+                return value
+            return read_optional
+        return lambda m: m.frames[-1].locals[slot]
+
+    def _no_variables(self, expr) -> None:
+        if self.constant_only:
+            from ..diagnostics import NOT_CONSTANT as CODE
+            raise error(CODE, "a constant expression is required here "
+                        "(no variables, persistents or function calls)", expr.span)
+
+    # ------------------------------------------------------- index, component
+    def _Index(self, expr: ast.Index, expected) -> Compiled:
+        base = self.value(expr.base)
+        base_type = base.type
+        if base_type is not None and not isinstance(base_type, ArrayType):
+            raise error(TYPE_MISMATCH, f"'{type_name(base_type)}' is not an array", expr.span)
+        if base_type is not None and len(expr.indices) > base_type.rank:
+            raise error(TYPE_MISMATCH, f"too many indices: the array has {base_type.rank} "
+                        f"dimension(s)", expr.span)
+        indices = [self.value(i, NUM) for i in expr.indices]
+        result_type = None
+        if base_type is not None:
+            rest = base_type.dims[len(indices):]
+            result_type = ArrayType(base_type.element, rest) if rest else base_type.element
+        base_fn = base.fn
+        span = expr.span
+        index_fns = [i.fn for i in indices]
+        if len(index_fns) == 1:
+            index_fn = index_fns[0]
+
+            def element(m):
+                array = base_fn(m)
+                return array[_check_index(array, index_fn(m), span)]
+            return Compiled(element, result_type)
+
+        def element_n(m):
+            value = base_fn(m)
+            for fn in index_fns:
+                value = value[_check_index(value, fn(m), span)]
+            return value
+        return Compiled(element_n, result_type)
+
+    def _Component(self, expr: ast.Component, expected) -> Compiled:
+        base = self.value(expr.base)
+        offset, component_type = self.component_offset(base.type, expr.name)
+        base_fn = base.fn
+        if base.is_constant:
+            return constant(base.constant[offset], component_type)
+        return Compiled(lambda m: base_fn(m)[offset], component_type)
+
+    def component_offset(self, record: Optional[AnyType], name: ast.Name):
+        if record is None:
+            raise error(TYPE_MISMATCH, f"cannot tell the type that has component "
+                        f"'{name.text}'", name.span)
+        if not isinstance(record, RapidType) or record.kind != RECORD:
+            raise error(TYPE_MISMATCH, f"'{type_name(record)}' has no component "
+                        f"'{name.text}' (not a record)", name.span)
+        offset = record.component_index(name.key)
+        if offset < 0:
+            names = ", ".join(c.name for c in record.components)
+            raise error(UNKNOWN_NAME, f"record type {record.name} has no component "
+                        f"'{name.text}' (components: {names})", name.span)
+        return offset, record.components[offset].type
+
+    # -------------------------------------------------------------- aggregate
+    def _Aggregate(self, expr: ast.Aggregate, expected) -> Compiled:
+        item_types: list[Optional[AnyType]]
+        if isinstance(expected, ArrayType):
+            if expected.dims[0] is not None and expected.dims[0] != len(expr.items):
+                raise error(TYPE_MISMATCH, f"aggregate has {len(expr.items)} elements, the "
+                            f"array dimension is {expected.dims[0]}", expr.span)
+            inner = ArrayType(expected.element, expected.dims[1:]) if expected.rank > 1 \
+                else expected.element
+            item_types = [inner] * len(expr.items)
+        elif isinstance(expected, RapidType) and expected.kind == RECORD:
+            if len(expected.components) != len(expr.items):
+                raise error(TYPE_MISMATCH, f"aggregate has {len(expr.items)} components, "
+                            f"{expected.name} has {len(expected.components)}", expr.span)
+            item_types = [c.type for c in expected.components]
+        elif expected is None:
+            item_types = [None] * len(expr.items)
+        else:
+            raise error(TYPE_MISMATCH, f"an aggregate cannot be a {type_name(expected)}",
+                        expr.span)
+        items = [self.value(item, t) for item, t in zip(expr.items, item_types)]
+        result_type = expected
+        if all(i.is_constant for i in items):
+            return constant(tuple(i.constant for i in items), result_type)
+        fns = [i.fn for i in items]
+        return Compiled(lambda m: tuple(fn(m) for fn in fns), result_type)
+
+    # ------------------------------------------------------------------ unary
+    def _Unary(self, expr: ast.Unary, expected) -> Compiled:
+        if expr.op == "NOT":
+            operand = self.condition(expr.operand)
+            fn = operand.fn
+            if operand.is_constant:
+                return constant(not operand.constant, BOOL)
+            return Compiled(lambda m: not fn(m), BOOL)
+        operand = self.value(expr.operand, expected if is_numeric(expected) else None)
+        rapid_type = operand.type
+        if rapid_type is not None and not is_numeric(rapid_type) and rapid_type is not POS:
+            raise error(TYPE_MISMATCH, f"unary {expr.op} needs num, dnum or pos, not "
+                        f"{type_name(rapid_type)}", expr.span)
+        if expr.op == "+":
+            return operand
+        fn = operand.fn
+        if rapid_type is POS:
+            return Compiled(lambda m: tuple(-c for c in fn(m)), POS)
+        if operand.is_constant:
+            return constant(-operand.constant, rapid_type)
+        return Compiled(lambda m: -fn(m), rapid_type)
+
+    # ----------------------------------------------------------------- binary
+    def _Binary(self, expr: ast.Binary, expected) -> Compiled:
+        op = expr.op
+        if op in ("AND", "OR", "XOR"):
+            return self._logical(expr)
+        hint = expected if is_numeric(expected) else None
+        left = self.value(expr.left, hint)
+        right = self.value(expr.right, hint if left.type is None else
+                           (left.type if is_numeric(left.type) else None))
+        if op in ("=", "<>"):
+            return self._equality(expr, left, right)
+        if op in ("<", "<=", ">", ">="):
+            return self._ordering(expr, left, right)
+        return self._arithmetic(expr, left, right)
+
+    def _logical(self, expr: ast.Binary) -> Compiled:
+        left = self.condition(expr.left)
+        right = self.condition(expr.right)
+        lf, rf = left.fn, right.fn
+        # RAPID documents no short-circuit: both operands are evaluated.
+        if expr.op == "AND":
+            fn = lambda m: bool(lf(m) & rf(m))  # noqa: E731
+        elif expr.op == "OR":
+            fn = lambda m: bool(lf(m) | rf(m))  # noqa: E731
+        else:
+            fn = lambda m: lf(m) != rf(m)  # noqa: E731
+        return self._fold(fn, BOOL, left, right)
+
+    @staticmethod
+    def _fold(fn: Callable, rapid_type, *operands: Compiled) -> Compiled:
+        if all(o.is_constant for o in operands):
+            try:
+                return constant(fn(None), rapid_type)
+            except RapidError:
+                pass
+        return Compiled(fn, rapid_type)
+
+    def _equality(self, expr, left: Compiled, right: Compiled) -> Compiled:
+        if left.type is not None and right.type is not None:
+            if not same_type(left.type, right.type):
+                raise error(TYPE_MISMATCH, f"cannot compare {type_name(left.type)} with "
+                            f"{type_name(right.type)}", expr.span)
+            if isinstance(left.type, ArrayType):
+                raise error(TYPE_MISMATCH, "arrays cannot be compared with = or <>", expr.span)
+        lf, rf = left.fn, right.fn
+        if expr.op == "=":
+            fn = lambda m: lf(m) == rf(m)  # noqa: E731
+        else:
+            fn = lambda m: lf(m) != rf(m)  # noqa: E731
+        return self._fold(fn, BOOL, left, right)
+
+    def _ordering(self, expr, left: Compiled, right: Compiled) -> Compiled:
+        for side in (left, right):
+            if side.type is not None and not is_numeric(side.type):
+                raise error(TYPE_MISMATCH, f"'{expr.op}' compares num or dnum values, not "
+                            f"{type_name(side.type)}", expr.span)
+        compare = {"<": operator.lt, "<=": operator.le, ">": operator.gt, ">=": operator.ge}[expr.op]
+        lf, rf = left.fn, right.fn
+        return self._fold(lambda m: compare(lf(m), rf(m)), BOOL, left, right)
+
+    def _arithmetic(self, expr, left: Compiled, right: Compiled) -> Compiled:
+        op = expr.op
+        lt, rt = left.type, right.type
+        lf, rf = left.fn, right.fn
+        if lt is STRING or rt is STRING:
+            if op != "+" or not (same_type(lt, STRING) and same_type(rt, STRING)):
+                raise error(TYPE_MISMATCH, f"'{op}' cannot combine {type_name(lt)} and "
+                            f"{type_name(rt)}", expr.span)
+            return self._fold(lambda m: values.concat(lf(m), rf(m)), STRING, left, right)
+        if lt is POS or rt is POS or lt is ORIENT or rt is ORIENT:
+            return self._vector(expr, left, right)
+        for side in (lt, rt):
+            if side is not None and not is_numeric(side):
+                raise error(TYPE_MISMATCH, f"'{op}' needs num or dnum operands, not "
+                            f"{type_name(side)}", expr.span)
+        result_type = DNUM if (lt is DNUM or rt is DNUM) else (NUM if lt is not None or rt is not None else None)
+        round_ = values.to_dnum if result_type is DNUM else values.to_num
+        if op == "+":
+            fn = lambda m: round_(lf(m) + rf(m))  # noqa: E731
+        elif op == "-":
+            fn = lambda m: round_(lf(m) - rf(m))  # noqa: E731
+        elif op == "*":
+            fn = lambda m: round_(lf(m) * rf(m))  # noqa: E731
+        elif op == "/":
+            fn = lambda m: round_(values.divide(lf(m), rf(m)))  # noqa: E731
+        elif op == "DIV":
+            fn = lambda m: values.int_div(lf(m), rf(m))  # noqa: E731
+        elif op == "MOD":
+            fn = lambda m: values.int_mod(lf(m), rf(m))  # noqa: E731
+        else:
+            raise error(TYPE_MISMATCH, f"unknown operator {op}", expr.span)
+        return self._fold(fn, result_type, left, right)
+
+    def _vector(self, expr, left: Compiled, right: Compiled) -> Compiled:
+        from .builtins import geometry_ops
+        fn, result_type = geometry_ops.operator_for(expr.op, left.type, right.type)
+        if fn is None:
+            raise error(TYPE_MISMATCH, f"'{expr.op}' cannot combine {type_name(left.type)} "
+                        f"and {type_name(right.type)}", expr.span)
+        lf, rf = left.fn, right.fn
+        return self._fold(lambda m: fn(lf(m), rf(m)), result_type, left, right)
+
+    # ------------------------------------------------------------------ calls
+    def _FunctionCall(self, expr: ast.FunctionCall, expected) -> Compiled:
+        symbol = self.scope.lookup(expr.name.key)
+        if symbol is not None and symbol.kind == ROUTINE:
+            routine = self.linker.routine_by_index(symbol.slot)
+            if routine.kind != "FUNC":
+                raise error(TYPE_MISMATCH, f"'{expr.name.text}' is a {routine.kind}, not a "
+                            "function", expr.span)
+            self._no_variables(expr)
+            if self.hoist is None:
+                raise error(ARGUMENT, f"user function '{expr.name.text}' cannot be called "
+                            "here (only predefined functions)", expr.span)
+            slot = self.hoist(expr, routine)
+            return Compiled(lambda m: m.frames[-1].locals[slot], routine.return_type)
+        if symbol is not None:
+            raise error(TYPE_MISMATCH, f"'{expr.name.text}' is data, not a function", expr.span)
+        return self.linker.calls.predefined_function(self, expr)
+
+    # ------------------------------------------------------------- references
+    def reference(self, expr: ast.Expr, purpose: str):
+        """Compile a data reference: ``fn(machine) -> (space, index, path)``.
+
+        Returns (fn, type, symbol) where ``symbol`` is the root data object.
+        """
+        if isinstance(expr, ast.NameRef):
+            symbol = self.scope.lookup(expr.name.key)
+            if symbol is None:
+                symbol = self.linker.system_symbol(expr.name)
+            if symbol is None:
+                raise error(UNKNOWN_NAME, f"unknown name '{expr.name.text}'", expr.span)
+            if symbol.kind == GLOBAL_DATA:
+                ref = (GLOBAL, symbol.slot, ())
+                return (lambda m: ref), symbol.type, symbol
+            if symbol.kind == LOCAL_DATA:
+                slot = symbol.slot
+                if symbol.by_reference:
+                    name = expr.name.text
+
+                    def param_ref(m):
+                        ref = m.frames[-1].locals[slot]
+                        if ref is ABSENT:
+                            raise RapidError("ERR_NOTPRES", f"optional parameter {name} not present")
+                        return ref
+                    return param_ref, symbol.type, symbol
+                return (lambda m: (len(m.frames) - 1, slot, ())), symbol.type, symbol
+            raise error(NOT_A_REFERENCE, f"'{expr.name.text}' is not a variable or persistent "
+                        f"and cannot be {purpose}", expr.span)
+        if isinstance(expr, ast.Index):
+            base_fn, base_type, symbol = self.reference(expr.base, purpose)
+            if base_type is not None and not isinstance(base_type, ArrayType):
+                raise error(TYPE_MISMATCH, f"'{type_name(base_type)}' is not an array", expr.span)
+            index_fns = [self.value(i, NUM).fn for i in expr.indices]
+            result_type = None
+            if base_type is not None:
+                rest = base_type.dims[len(index_fns):]
+                result_type = ArrayType(base_type.element, rest) if rest else base_type.element
+            span = expr.span
+
+            def element_ref(m):
+                space, index, path = base_fn(m)
+                value = m.read_ref((space, index, path))
+                offsets = []
+                for fn in index_fns:
+                    offset = _check_index(value, fn(m), span)
+                    offsets.append(offset)
+                    value = value[offset]
+                return (space, index, path + tuple(offsets))
+            return element_ref, result_type, symbol
+        if isinstance(expr, ast.Component):
+            base_fn, base_type, symbol = self.reference(expr.base, purpose)
+            offset, component_type = self.component_offset(base_type, expr.name)
+
+            def component_ref(m):
+                space, index, path = base_fn(m)
+                return (space, index, path + (offset,))
+            return component_ref, component_type, symbol
+        raise error(NOT_A_REFERENCE, f"a variable or persistent is required here ({purpose})",
+                    expr.span)

@@ -1,0 +1,437 @@
+"""Linking: from an ``ast.Program`` to a checked, compiled ``Program``.
+
+The linker does what the controller's program check does before a program
+may run: it resolves types and names across modules, rejects duplicate
+declarations, unknown names, bad calls and assignments to constants, folds
+CONSTs, computes initial values, gives every data object a slot, and
+compiles every routine into instructions.  Any problem is a ``UserError``
+(exit code 2) and nothing runs.
+
+Environment modules (``--env``) are linked into the same program in a
+namespace of their own: their global names never clash with the program's.
+"""
+from __future__ import annotations
+
+from typing import Optional, Sequence
+
+from .. import ast
+from ..diagnostics import (BAD_DECLARATION, DUPLICATE, ENVIRONMENT, NO_ENTRY, NOT_CONSTANT,
+                           TYPE_MISMATCH, UNKNOWN_NAME, UNKNOWN_TYPE, UserError, error)
+from . import program as P
+from .builtins.data import PREDEFINED_DATA
+from .calls import ParameterView, bind
+from .errors import ERROR_NUMBERS, LONG_JMP_ALL_ERR
+from .expressions import ExpressionCompiler
+from .machine import ABSENT
+from .runtime import PredefinedCalls
+from .scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, Scope, Symbol
+from .statements import RoutineCompiler
+from .types import (ANYTYPE, DNUM, NUM, PREDEFINED_ALIASES, PREDEFINED_TYPES, RECORD,
+                    SEMI_VALUE, ArrayType, ComponentType, RapidType, default_value)
+from . import values
+
+MAX_DIMENSION = 100_000
+
+
+class Linker:
+    def __init__(self, options: Optional[dict] = None):
+        self.options = dict(options or {})
+        self.routines: list[P.Routine] = []
+        self.globals: list[P.GlobalData] = []
+        self.signals: list[P.Signal] = []
+        self.signal_by_key: dict[str, P.Signal] = {}
+        self.system = Scope()
+        self.namespaces: dict[int, Scope] = {}
+        self.module_scopes: dict[tuple[int, str], Scope] = {}
+        self.type_tables: dict[int, dict[str, object]] = {}
+        self.calls = PredefinedCalls(self)
+        self._predefined_types()
+
+    # ------------------------------------------------------------------ types
+    def _predefined_types(self) -> None:
+        self.builtin_types: dict[str, RapidType] = dict(PREDEFINED_TYPES)
+        for key, (name, base) in PREDEFINED_ALIASES.items():
+            self.builtin_types[key] = base
+
+    def resolve_type(self, ref: ast.TypeRef, namespace: int, module: str) -> RapidType:
+        key = ref.name.key
+        for table_key in ((namespace, module), namespace):
+            table = self.type_tables.get(table_key, {})
+            if key in table:
+                entry = table[key]
+                if isinstance(entry, RapidType):
+                    return entry
+                return self._build_user_type(entry, namespace, module, key)
+        found = self.builtin_types.get(key)
+        if found is None:
+            raise error(UNKNOWN_TYPE, f"unknown data type '{ref.name.text}'", ref.span)
+        return found
+
+    def _build_user_type(self, definition, namespace, module, key) -> RapidType:
+        table_key = (namespace, module) if definition.local else namespace
+        table = self.type_tables[table_key]
+        if definition is None or table.get(key) == "building":
+            raise error(BAD_DECLARATION, f"type '{key}' is defined in terms of itself",
+                        definition.span)
+        table[key] = "building"
+        if isinstance(definition, ast.AliasDefinition):
+            result = self.resolve_type(definition.base, namespace, module)
+        else:
+            components = []
+            for component in definition.components:
+                component_type = self.resolve_type(component.type, namespace, module)
+                if component_type.kind not in ("atomic", RECORD):
+                    raise error(BAD_DECLARATION, f"record component '{component.name.text}' "
+                                f"must have a value type, not {component_type.name}",
+                                component.span)
+                components.append(ComponentType(component.name.text, component.name.key,
+                                                component_type))
+            result = RapidType(key, definition.name.text, RECORD, tuple(components))
+        table[key] = result
+        return result
+
+    def _collect_types(self, modules: Sequence[ast.Module], namespace: int) -> None:
+        for module in modules:
+            for definition in module.types:
+                key = definition.name.key
+                table_key = (namespace, module.name.key) if definition.local else namespace
+                table = self.type_tables.setdefault(table_key, {})
+                if key in table or key in self.builtin_types and not definition.local:
+                    if key in table:
+                        raise error(DUPLICATE, f"type '{definition.name.text}' is defined twice",
+                                    definition.span)
+                table[key] = definition
+        for module in modules:
+            for definition in module.types:
+                self.resolve_type(ast.TypeRef(definition.name, definition.span), namespace,
+                                  module.name.key)
+
+    def data_type(self, decl, namespace: int, module: str, dims: tuple = ()):
+        base = self.resolve_type(decl.type, namespace, module)
+        if base.key == "SWITCH" or base is ANYTYPE:
+            raise error(BAD_DECLARATION, f"data cannot be declared with type {base.name}",
+                        decl.type.span)
+        if dims:
+            return ArrayType(base, dims)
+        return base
+
+    # ------------------------------------------------------------ the system
+    def system_symbol(self, name: ast.Name) -> Optional[Symbol]:
+        symbol = self.system.lookup(name.key)
+        if symbol is not None:
+            return symbol
+        entry = PREDEFINED_DATA.get(name.key)
+        if entry is not None:
+            rapid_type = self.builtin_types.get(entry.type_name.upper())
+            symbol = Symbol(CONSTANT, entry.name, rapid_type, value=entry.value,
+                            storage=entry.storage)
+            self.system.declare(name.key, symbol)
+            return symbol
+        if name.key in ERROR_NUMBERS:
+            symbol = Symbol(CONSTANT, name.text, NUM, value=float(ERROR_NUMBERS[name.key]),
+                            storage="CONST")
+            self.system.declare(name.key, symbol)
+            return symbol
+        if name.key == "LONG_JMP_ALL_ERR":
+            return Symbol(CONSTANT, name.text, NUM, value=float(LONG_JMP_ALL_ERR), storage="CONST")
+        return None
+
+    # ---------------------------------------------------------------- signals
+    def physical_signal(self, name: str, kind: str, span=None, driven: bool = False) -> P.Signal:
+        key = name.upper()
+        signal = self.signal_by_key.get(key)
+        if signal is None:
+            signal = P.Signal(len(self.signals), name, key, kind, driven, span)
+            self.signals.append(signal)
+            self.signal_by_key[key] = signal
+            self.system.declare(key, Symbol(SIGNAL, name, PREDEFINED_TYPES["SIGNAL" + kind],
+                                            slot=signal.index, storage="SIGNAL"))
+        elif driven:
+            signal.driven = True
+        return signal
+
+    def infer_signal(self, name: ast.Name, signal_type: RapidType) -> Symbol:
+        """An undeclared name used as a signal: a signal of the I/O configuration."""
+        if not self.options.get("infer_signals", True):
+            raise error(UNKNOWN_NAME, f"unknown signal '{name.text}'", name.span)
+        self.physical_signal(name.text, signal_type.signal_kind, name.span)
+        return self.system.lookup(name.key)
+
+    # ------------------------------------------------------------ declarations
+    def link(self, program: ast.Program, environment: Optional[ast.Program],
+             entry: str) -> P.Program:
+        groups = [(P.PROGRAM_NAMESPACE, program.modules)]
+        if environment is not None and environment.modules:
+            groups.append((P.ENVIRONMENT_NAMESPACE, environment.modules))
+        for namespace, modules in groups:
+            self.namespaces[namespace] = Scope(self.system)
+            self._collect_types(modules, namespace)
+        for namespace, modules in groups:
+            self._declare_routines(modules, namespace)
+        for namespace, modules in groups:
+            self._declare_data(modules, namespace)
+        for namespace, modules in groups:
+            self._prepare_routines(namespace)
+        for routine in self.routines:
+            compiler = RoutineCompiler(self, routine, routine.scope)
+            compiler.compile(routine.ast)
+        entry_index = self._entry(entry)
+        linked = P.Program(self.routines, self.globals, self.signals, entry_index,
+                           options=self.options, signal_index=self.signal_by_key)
+        if environment is not None and environment.modules:
+            linked.environment_init = self._environment_routine("INIT", required=False)
+            linked.environment_react = self._environment_routine("REACT", required=True,
+                                                                 span=environment.modules[0].span)
+        linked.scopes = self
+        return linked
+
+    def _declare(self, scope: Scope, key: str, symbol: Symbol, span, what: str) -> None:
+        existing = scope.declare(key, symbol)
+        if existing is not None:
+            where = f" (first declared at {existing.span})" if existing.span else ""
+            raise error(DUPLICATE, f"{what} '{symbol.name}' is declared twice in one "
+                        f"scope{where}", span)
+
+    def _module_scope(self, namespace: int, module: ast.Module) -> Scope:
+        key = (namespace, module.name.key)
+        scope = self.module_scopes.get(key)
+        if scope is None:
+            scope = Scope(self.namespaces[namespace])
+            self.module_scopes[key] = scope
+        return scope
+
+    def _declare_routines(self, modules, namespace: int) -> None:
+        seen_modules = set()
+        for module in modules:
+            if module.name.key in seen_modules:
+                raise error(DUPLICATE, f"module '{module.name.text}' is loaded twice", module.span)
+            seen_modules.add(module.name.key)
+            module_scope = self._module_scope(namespace, module)
+            module_names: dict[str, object] = {}
+            for decl in module.routines:
+                index = len(self.routines)
+                routine = P.Routine(index, decl.name.text, decl.name.key, decl.kind,
+                                    module.name.text, namespace, decl.local, decl.span,
+                                    decl.end_span, ast=decl)
+                routine.module_key = module.name.key
+                self.routines.append(routine)
+                symbol = Symbol(ROUTINE, decl.name.text, None, slot=index, span=decl.span)
+                self._declare_unique(module_names, decl.name, decl.span)
+                self._declare(module_scope if decl.local else self.namespaces[namespace],
+                              decl.name.key, symbol, decl.name.span, "routine")
+
+    def _declare_unique(self, names: dict, name: ast.Name, span) -> None:
+        if name.key in names:
+            raise error(DUPLICATE, f"'{name.text}' is declared twice in this module "
+                        f"(first at {names[name.key]})", span)
+        names[name.key] = span
+
+    def _declare_data(self, modules, namespace: int) -> None:
+        pending = []
+        for module in modules:
+            module_scope = self._module_scope(namespace, module)
+            names = {r.name.key: r.span for r in module.routines}
+            for decl in module.data:
+                self._declare_unique(names, decl.name, decl.span)
+                pending.append((module, module_scope, decl))
+        # CONSTs (and dimensions) may refer to CONSTs declared later: retry until stable
+        while pending:
+            progress = False
+            retry = []
+            first_error = None
+            for module, scope, decl in pending:
+                try:
+                    self._declare_global(module, scope, decl, namespace)
+                    progress = True
+                except UserError as exc:
+                    if exc.diagnostics[0].code is UNKNOWN_NAME:
+                        retry.append((module, scope, decl))
+                        first_error = first_error or exc
+                    else:
+                        raise
+            if not progress:
+                raise first_error
+            pending = retry
+
+    def _dims(self, dims: Sequence[ast.Expr], scope: Scope) -> tuple:
+        result = []
+        compiler = ExpressionCompiler(self, scope, constant_only=True)
+        for dim in dims:
+            value = compiler.value(dim, NUM)
+            size = value.constant
+            if not value.is_constant or size != int(size) or not 1 <= size <= MAX_DIMENSION:
+                raise error(BAD_DECLARATION, "an array dimension must be a positive integer "
+                            "constant", dim.span)
+            result.append(int(size))
+        if len(result) > 3:
+            raise error(BAD_DECLARATION, "arrays have at most 3 dimensions", dims[3].span)
+        return tuple(result)
+
+    def initial_value(self, decl, rapid_type, scope: Scope):
+        if decl.init is None:
+            if decl.storage == "CONST":
+                raise error(BAD_DECLARATION, f"CONST '{decl.name.text}' needs a value", decl.span)
+            return default_value(rapid_type)
+        if isinstance(rapid_type, RapidType) and rapid_type.kind in ("semi-value", "non-value"):
+            raise error(BAD_DECLARATION, f"{rapid_type.name} data cannot have an initial value",
+                        decl.init.span)
+        compiler = ExpressionCompiler(self, scope, constant_only=True)
+        compiled = compiler.value(decl.init, rapid_type)
+        if not compiled.is_constant:
+            raise error(NOT_CONSTANT, "the initial value must be a constant expression",
+                        decl.init.span)
+        return compiled.constant
+
+    def _declare_global(self, module, scope: Scope, decl: ast.DataDeclaration,
+                        namespace: int) -> None:
+        rapid_type = self.data_type(decl, namespace, module.name.key,
+                                    self._dims(decl.dims, scope))
+        value = self.initial_value(decl, rapid_type, scope)
+        target = scope if decl.scope == ast.LOCAL else self.namespaces[namespace]
+        if decl.storage == "CONST":
+            symbol = Symbol(CONSTANT, decl.name.text, rapid_type, value=value, storage="CONST",
+                            span=decl.span)
+            self._declare(target, decl.name.key, symbol, decl.name.span, "data")
+            return
+        is_signal = isinstance(rapid_type, RapidType) and rapid_type.kind == SEMI_VALUE
+        if is_signal and namespace == P.ENVIRONMENT_NAMESPACE:
+            signal = self.physical_signal(decl.name.text, rapid_type.signal_kind, decl.span,
+                                          driven=rapid_type.signal_kind.endswith("I"))
+            value = signal.index
+        if rapid_type.key == "CLOCK":
+            value = (False, 0.0, 0.0)
+        slot = len(self.globals)
+        data = P.GlobalData(slot, decl.name.text, decl.name.key, rapid_type, decl.storage,
+                            module.name.text, namespace, decl.scope == ast.LOCAL, decl.span,
+                            value)
+        self.globals.append(data)
+        symbol = Symbol(GLOBAL_DATA, decl.name.text, rapid_type, slot=slot, storage=decl.storage,
+                        span=decl.span)
+        self._declare(target, decl.name.key, symbol, decl.name.span, "data")
+
+    # --------------------------------------------------------------- routines
+    def _prepare_routines(self, namespace: int) -> None:
+        for routine in self.routines:
+            if routine.namespace != namespace:
+                continue
+            decl: ast.Routine = routine.ast
+            module_scope = self.module_scopes[(namespace, routine.module_key)]
+            scope = Scope(module_scope)
+            routine.scope = scope
+            routine.local_names = []
+            routine.initial = []
+            if decl.kind == "FUNC":
+                routine.return_type = self.resolve_type(decl.return_type, namespace,
+                                                        routine.module_key)
+            parameters = []
+            for param in decl.parameters:
+                param_type = self.resolve_type(param.type, namespace, routine.module_key)
+                if param.array_rank:
+                    param_type = ArrayType(param_type, (None,) * param.array_rank)
+                slot = routine.add_local(param.name.text, ABSENT)
+                parameter = P.Parameter(param.name.text, param.name.key, param_type, param.mode,
+                                        param.optional, param.alternative_group,
+                                        param.array_rank, slot, param.span)
+                parameters.append(parameter)
+                self._declare(scope, param.name.key, Symbol(
+                    LOCAL_DATA, param.name.text, param_type, slot=slot, storage=param.mode,
+                    optional=param.optional, by_reference=param.mode != "IN",
+                    span=param.span), param.name.span, "parameter")
+            routine.parameters = tuple(parameters)
+            for data in decl.data:
+                self._declare_local(routine, scope, data, namespace)
+            if decl.error is not None:
+                routine.handler_numbers = self._handler_numbers(decl.error, scope)
+
+    def _declare_local(self, routine, scope: Scope, decl: ast.DataDeclaration,
+                       namespace: int) -> None:
+        if decl.storage == "PERS":
+            raise error(BAD_DECLARATION, "PERS data cannot be declared inside a routine "
+                        "(declare it at module level)", decl.span)
+        if decl.scope != ast.GLOBAL:
+            raise error(BAD_DECLARATION, f"{decl.scope} is not allowed on routine data",
+                        decl.span)
+        rapid_type = self.data_type(decl, namespace, routine.module_key,
+                                    self._dims(decl.dims, scope))
+        value = self.initial_value(decl, rapid_type, scope)
+        if rapid_type.key == "CLOCK":
+            value = (False, 0.0, 0.0)
+        if decl.storage == "CONST":
+            symbol = Symbol(CONSTANT, decl.name.text, rapid_type, value=value, storage="CONST",
+                            span=decl.span)
+        else:
+            slot = routine.add_local(decl.name.text, value)
+            symbol = Symbol(LOCAL_DATA, decl.name.text, rapid_type, slot=slot, storage="VAR",
+                            span=decl.span)
+        self._declare(scope, decl.name.key, symbol, decl.name.span, "data")
+
+    def _handler_numbers(self, handler: ast.ErrorHandler, scope: Scope) -> Optional[frozenset]:
+        if handler.numbers is None:
+            return None
+        numbers = set()
+        compiler = ExpressionCompiler(self, scope, constant_only=False)
+        for expr in handler.numbers:
+            if isinstance(expr, ast.NameRef) and expr.name.key == "LONG_JMP_ALL_ERR":
+                numbers.add(LONG_JMP_ALL_ERR)
+                continue
+            compiled = compiler.value(expr, NUM)
+            if not compiled.is_constant:
+                raise error(NOT_CONSTANT, "ERROR handler lists need constant error numbers",
+                            expr.span)
+            numbers.add(int(compiled.constant))
+        return frozenset(numbers)
+
+    def routine_by_index(self, index: int) -> P.Routine:
+        return self.routines[index]
+
+    def parameter_views(self, routine: P.Routine) -> list[ParameterView]:
+        views = []
+        for p in routine.parameters:
+            element = p.type.element if isinstance(p.type, ArrayType) else p.type
+            types = () if element is ANYTYPE else (element,)
+            views.append(ParameterView(p.name, p.key, p.mode, p.optional, p.group,
+                                       p.is_switch, types, p.rank))
+        return views
+
+    def bind_user_call(self, compiler, routine: P.Routine, args, span):
+        return bind(compiler, routine.name, self.parameter_views(routine), args, span)
+
+    def procedures_visible(self, routine: P.Routine):
+        for candidate in self.routines:
+            if candidate.kind != "PROC" or candidate.namespace != routine.namespace:
+                continue
+            if candidate.local and candidate.module != routine.module:
+                continue
+            yield candidate
+
+    # ------------------------------------------------------------------ entry
+    def _entry(self, entry: str) -> int:
+        key = entry.upper()
+        symbol = self.namespaces[P.PROGRAM_NAMESPACE].lookup(key)
+        if symbol is None or symbol.kind != ROUTINE:
+            raise error(NO_ENTRY, f"the program has no procedure '{entry}' to start from "
+                        f"(use --entry NAME to choose another)")
+        routine = self.routines[symbol.slot]
+        if routine.kind != "PROC" or routine.parameters:
+            raise error(NO_ENTRY, f"entry routine '{routine.name}' must be a procedure "
+                        "without parameters", routine.span)
+        return routine.index
+
+    def _environment_routine(self, key: str, required: bool, span=None) -> Optional[int]:
+        symbol = self.namespaces[P.ENVIRONMENT_NAMESPACE].lookup(key)
+        if symbol is None or symbol.kind != ROUTINE:
+            if required:
+                raise error(ENVIRONMENT, "an environment model needs a procedure "
+                            f"'{key.lower()}()' that reacts after every program step", span)
+            return None
+        routine = self.routines[symbol.slot]
+        if routine.kind != "PROC" or routine.parameters:
+            raise error(ENVIRONMENT, f"environment routine '{routine.name}' must be a procedure "
+                        "without parameters", routine.span)
+        return routine.index
+
+
+def build(program: ast.Program, entry: str = "main",
+          environment: Optional[ast.Program] = None, options: Optional[dict] = None) -> P.Program:
+    """Link and compile ``program`` (and environment modules); static errors raise UserError."""
+    return Linker(options).link(program, environment, entry)

@@ -1,0 +1,154 @@
+"""The working copy of a state while one step executes.
+
+``step`` never mutates a ``State``: it unpacks it into a ``Machine``, lets one
+instruction update the machine's fields (each update builds new immutable
+values), and packs the result into a new ``State``.  The machine also
+carries the step's effects that are not state: FlexPendant output and the
+choices made (input values, FlexPendant answers).
+
+References (VAR/INOUT/PERS arguments, assignment targets) are triples
+``(space, index, path)``: ``space`` is ``GLOBAL`` for global data or the
+frame depth for routine data, ``index`` the slot, ``path`` the 0-based
+component and element offsets inside the slot's value.
+"""
+from __future__ import annotations
+
+from typing import Any
+
+from .errors import RapidError
+from .state import Fault, Frame, State, RUNNING, FAILED
+
+GLOBAL = -1
+
+
+class Absent:
+    """The value of an optional parameter that was not passed."""
+
+    _instance = None
+
+    def __new__(cls):
+        if cls._instance is None:
+            cls._instance = super().__new__(cls)
+        return cls._instance
+
+    def __repr__(self) -> str:
+        return "ABSENT"
+
+    def __hash__(self) -> int:
+        return 0x5EED
+
+    def __reduce__(self):
+        return (Absent, ())
+
+
+ABSENT = Absent()
+
+
+def replace_at(value: Any, path: tuple, new: Any) -> Any:
+    """``value`` with the part at ``path`` replaced by ``new`` (tuples rebuilt along the path)."""
+    if not path:
+        return new
+    head = path[0]
+    items = list(value)
+    items[head] = replace_at(items[head], path[1:], new)
+    return tuple(items)
+
+
+def read_at(value: Any, path: tuple) -> Any:
+    for offset in path:
+        value = value[offset]
+    return value
+
+
+class ChoiceNeeded(Exception):
+    """Internal: the step reached a choice that the current script does not cover."""
+
+
+class Machine:
+    """Mutable working copy of a ``State`` for the duration of one step."""
+
+    __slots__ = ("program", "frames", "store", "io", "robot", "interrupts", "errno",
+                 "intno", "status", "fault", "clock", "output", "chooser", "choices",
+                 "span", "waiting")
+
+    def __init__(self, program, state: State, chooser):
+        self.program = program
+        self.frames = list(state.frames)
+        self.store = state.store
+        self.io = state.io
+        self.robot = state.robot
+        self.interrupts = state.interrupts
+        self.errno = state.errno
+        self.intno = state.intno
+        self.status = state.status
+        self.fault = state.fault
+        self.clock = state.clock
+        self.output: list[str] = []
+        self.chooser = chooser
+        self.choices: list[tuple] = []
+        self.span = None
+        self.waiting = False
+
+    def to_state(self) -> State:
+        return State(tuple(self.frames), self.store, self.io, self.robot, self.interrupts,
+                     self.errno, self.intno, self.status, self.fault, self.clock)
+
+    # --- choices -------------------------------------------------------------
+    def choose(self, name: str, domain: tuple) -> Any:
+        """Pick a value from ``domain`` (nondeterministic choice, recorded in the label)."""
+        value = self.chooser.choose(name, domain, len(self.choices))
+        self.choices.append((name, value))
+        return value
+
+    # --- frames --------------------------------------------------------------
+    @property
+    def top(self) -> Frame:
+        return self.frames[-1]
+
+    def goto(self, pc: int) -> None:
+        frame = self.frames[-1]
+        self.frames[-1] = Frame(frame.routine, pc, frame.locals, frame.mode, frame.error_pc,
+                                frame.retries, frame.result)
+
+    def local(self, slot: int) -> Any:
+        return self.frames[-1].locals[slot]
+
+    def set_local(self, slot: int, value: Any, depth: int = -1) -> None:
+        frame = self.frames[depth]
+        values = list(frame.locals)
+        values[slot] = value
+        self.frames[depth] = frame._replace(locals=tuple(values))
+
+    # --- references ----------------------------------------------------------
+    def read_ref(self, ref: tuple) -> Any:
+        space, index, path = ref
+        if space == GLOBAL:
+            value = self.store[index]
+        else:
+            value = self.frames[space].locals[index]
+        for offset in path:
+            value = value[offset]
+        return value
+
+    def write_ref(self, ref: tuple, new: Any) -> None:
+        space, index, path = ref
+        if space == GLOBAL:
+            self.store = self.store.set(index, replace_at(self.store[index], path, new) if path else new)
+        else:
+            frame = self.frames[space]
+            values = list(frame.locals)
+            values[index] = replace_at(values[index], path, new) if path else new
+            self.frames[space] = frame._replace(locals=tuple(values))
+
+    # --- ending ---------------------------------------------------------------
+    def fail(self, errno: int, where: tuple, message: str) -> None:
+        self.status = FAILED
+        self.fault = Fault(errno, where, message)
+        self.frames = []
+
+    def check_running(self) -> bool:
+        return self.status == RUNNING
+
+
+def raise_rapid(name: str, detail: str = "") -> None:
+    raise RapidError(name, detail)

@@ -1,0 +1,136 @@
+"""The linked, checked and compiled form of a RAPID program.
+
+``link.build`` turns an ``ast.Program`` into a ``Program``: global data get
+slots in the state's store, routines get instruction lists (``code``), and
+physical I/O signals get indices in the state's ``io`` vector.  A
+``Program`` never changes while the program runs; everything that changes
+is in ``State``.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Callable, Optional
+
+from ..ast import Span
+from .types import AnyType
+from .values import to_num
+
+PROGRAM_NAMESPACE = 0
+ENVIRONMENT_NAMESPACE = 1
+
+
+@dataclass
+class GlobalData:
+    """A module-level VAR or PERS data object (a slot of ``State.store``)."""
+
+    slot: int
+    name: str
+    key: str
+    type: AnyType
+    storage: str                  # VAR or PERS
+    module: str
+    namespace: int
+    local: bool
+    span: Span
+    initial: Any = None           # initial value (computed at link time)
+
+
+@dataclass
+class Parameter:
+    name: str
+    key: str
+    type: AnyType
+    mode: str                     # IN, VAR, INOUT, PERS
+    optional: bool
+    group: Optional[int]
+    rank: int                     # {*} array rank, 0 for scalars
+    slot: int
+    span: Span
+
+    @property
+    def by_reference(self) -> bool:
+        return self.mode != "IN"
+
+    def convert(self, value: Any) -> Any:
+        """An IN argument as the parameter holds it (num arguments rounded to num)."""
+        if getattr(self.type, "key", "") == "NUM" and type(value) is float:
+            return to_num(value)
+        return value
+
+    @property
+    def is_switch(self) -> bool:
+        return getattr(self.type, "key", "") == "SWITCH"
+
+
+@dataclass
+class Routine:
+    index: int
+    name: str
+    key: str
+    kind: str                     # PROC, FUNC, TRAP
+    module: str
+    namespace: int
+    local: bool
+    span: Span
+    end_span: Span
+    return_type: Optional[AnyType] = None
+    parameters: tuple = ()
+    local_names: list = field(default_factory=list)   # display names of local slots
+    local_count: int = 0
+    data_init: list = field(default_factory=list)     # (slot, fn(machine) -> value) for routine data
+    code: list = field(default_factory=list)          # instructions
+    handler_pc: int = -1                              # first instruction of the ERROR handler
+    handler_numbers: Optional[frozenset] = None       # ERROR (n1, ...) list; None = catch all
+    undo_pc: int = -1
+    ast: Any = None
+    initial: list = field(default_factory=list)       # initial value of each local slot
+    initial_locals: tuple = ()                        # frozen copy of ``initial`` used by calls
+
+    def add_local(self, name: str, initial: Any) -> int:
+        """A new frame slot (parameter, routine data, FOR variable or temporary)."""
+        self.local_names.append(name)
+        self.initial.append(initial)
+        self.local_count = len(self.initial)
+        self.initial_locals = tuple(self.initial)
+        return self.local_count - 1
+
+    def new_temporary(self, count: int = 1, name: str = "") -> int:
+        first = self.add_local(name or f"<tmp{self.local_count}>", 0.0)
+        for _ in range(count - 1):
+            self.add_local(f"<{name}:hidden>", 0.0)
+        return first
+
+    def convert_result(self, value: Any) -> Any:
+        if self.return_type is not None and getattr(self.return_type, "key", "") == "NUM":
+            return to_num(value)
+        return value
+
+
+@dataclass
+class Signal:
+    """A physical I/O signal (configured in the controller, named by AliasIO)."""
+
+    index: int
+    name: str
+    key: str
+    kind: str                     # DI, DO, AI, AO, GI, GO
+    driven: bool = False          # an environment module drives it (inputs only)
+    span: Optional[Span] = None
+
+
+@dataclass
+class Program:
+    routines: list[Routine]
+    globals: list[GlobalData]
+    signals: list[Signal]
+    entry: int
+    environment_init: Optional[int] = None
+    environment_react: Optional[int] = None
+    files: tuple = ()
+    options: dict = field(default_factory=dict)
+    signal_index: dict = field(default_factory=dict)       # key -> Signal
+    routine_index: dict = field(default_factory=dict)      # (namespace, key) -> routine index (global)
+    scopes: Any = None                                     # name resolution for atoms
+
+    def signal(self, key: str) -> Optional[Signal]:
+        return self.signal_index.get(key)

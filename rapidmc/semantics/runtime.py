@@ -1,0 +1,146 @@
+"""Calls of predefined routines: binding, static checks, and dispatch.
+
+Pure routines (math, strings, …) are called through their registry
+implementation.  Routines that need the program state (I/O, motion,
+FlexPendant, clocks, interrupts, Present, Dim, ValToStr …) are *special*:
+their registry entry only carries the signature, and a factory in
+``rapidmc.semantics.special_routines`` compiles each call into a closure or
+an instruction.
+"""
+from __future__ import annotations
+
+from typing import Callable
+
+from .. import ast
+from ..diagnostics import ENV_ONLY, TYPE_MISMATCH, UNKNOWN_ROUTINE, error
+from .builtins import registry
+from .calls import REFERENCE, SIGNAL_ARG, VALUE, ParameterView, bind
+from .expressions import Compiled, ExpressionCompiler, constant
+from .instructions import Action, Instruction
+from .machine import ABSENT
+from .program import ENVIRONMENT_NAMESPACE
+from .types import ANYTYPE, ArrayType
+
+
+def plain(value):
+    """What a registry implementation receives for an argument (None when absent)."""
+    return None if value is ABSENT else value
+
+
+class PredefinedCalls:
+    """Compiles calls of predefined functions and procedures for one linker."""
+
+    def __init__(self, linker):
+        self.linker = linker
+        self._views: dict[str, list[ParameterView]] = {}
+
+    # --------------------------------------------------------------- signatures
+    def views(self, entry) -> list[ParameterView]:
+        key = entry.signature.kind + entry.key
+        cached = self._views.get(key)
+        if cached is None:
+            cached = []
+            for spec in entry.signature.parameters:
+                types = tuple(t for t in (self.linker.builtin_types.get(n.upper())
+                                          for n in spec.accepted_types) if t is not None)
+                if types and types[0] is ANYTYPE:
+                    types = ()
+                cached.append(ParameterView(spec.name, spec.key, spec.mode, spec.optional,
+                                            spec.alternative_group, spec.is_switch, types,
+                                            spec.array_rank))
+            self._views[key] = cached
+        return cached
+
+    def return_type(self, entry):
+        name = entry.signature.return_type
+        return self.linker.builtin_types.get(name.upper()) if name else None
+
+    def _check_environment(self, compiler: ExpressionCompiler, name: ast.Name, span) -> None:
+        from . import special_routines
+        if name.key in special_routines.ENVIRONMENT_ONLY:
+            routine = compiler.routine
+            in_environment = routine is not None and routine.namespace == ENVIRONMENT_NAMESPACE
+            if not in_environment:
+                raise error(ENV_ONLY, f"{name.text} is a model-only routine, allowed only in "
+                            "environment modules (--env)", span)
+
+    # ---------------------------------------------------------------- functions
+    def predefined_function(self, compiler: ExpressionCompiler, expr: ast.FunctionCall) -> Compiled:
+        from . import special_routines
+        entry = registry.lookup_function(expr.name.key)
+        if entry is None:
+            if registry.lookup_procedure(expr.name.key) is not None:
+                raise error(TYPE_MISMATCH, f"'{expr.name.text}' is a procedure: call it as a "
+                            "statement, not in an expression", expr.span)
+            raise error(UNKNOWN_ROUTINE, f"unknown function '{expr.name.text}'", expr.span)
+        self._check_environment(compiler, expr.name, expr.span)
+        compiler._no_variables(expr)
+        if entry.special:
+            factory = special_routines.FUNCTIONS.get(entry.key)
+            if factory is None:
+                raise error(UNKNOWN_ROUTINE, f"predefined function {entry.signature.name} is "
+                            "not supported by rapidmc", expr.span)
+            return factory(self, compiler, expr, entry)
+        binders = bind(compiler, entry.signature.name, self.views(entry), expr.args, expr.span)
+        impl = entry.impl
+        fns = [fn for _, fn in binders]
+        return_type = self.return_type(entry)
+        if len(fns) == 1:
+            only = fns[0]
+            return Compiled(lambda m: impl(plain(only(m))), return_type)
+        if len(fns) == 2:
+            first, second = fns
+            return Compiled(lambda m: impl(plain(first(m)), plain(second(m))), return_type)
+        return Compiled(lambda m: impl(*[plain(fn(m)) for fn in fns]), return_type)
+
+    def bind(self, compiler, entry, args, span):
+        return bind(compiler, entry.signature.name, self.views(entry), args, span)
+
+    # --------------------------------------------------------------- procedures
+    def predefined_procedure(self, compiler: ExpressionCompiler, statement: ast.ProcedureCall,
+                             routine_compiler) -> Instruction:
+        from . import special_routines
+        entry = registry.lookup_procedure(statement.name.key)
+        if entry is None:
+            if registry.lookup_function(statement.name.key) is not None:
+                raise error(TYPE_MISMATCH, f"'{statement.name.text}' is a function: use its "
+                            "value in an expression (a function call is not a statement)",
+                            statement.span)
+            raise error(UNKNOWN_ROUTINE, f"unknown procedure '{statement.name.text}'",
+                        statement.span)
+        self._check_environment(compiler, statement.name, statement.span)
+        if entry.special:
+            factory = special_routines.PROCEDURES.get(entry.key)
+            if factory is None:
+                raise error(UNKNOWN_ROUTINE, f"predefined instruction {entry.signature.name} "
+                            "is not supported by rapidmc", statement.span)
+            return factory(self, compiler, statement, entry)
+        binders = bind(compiler, entry.signature.name, self.views(entry), statement.args,
+                       statement.span)
+        return Action(statement.span, self._pure_procedure(entry, binders))
+
+    @staticmethod
+    def _pure_procedure(entry, binders) -> Callable:
+        impl = entry.impl
+        names = [spec.name for spec in entry.signature.parameters]
+        kinds = [kind for kind, _ in binders]
+        fns = [fn for _, fn in binders]
+
+        def call(m):
+            refs = {}
+            args = []
+            for name, kind, fn in zip(names, kinds, fns):
+                value = fn(m)
+                if kind == REFERENCE and value is not ABSENT:
+                    refs[name] = value
+                    value = m.read_ref(value)
+                args.append(plain(value))
+            changes = impl(*args)
+            if changes:
+                for name, new in changes.items():
+                    m.write_ref(refs[name], new)
+        return call
+
+    def connect(self, compiler: ExpressionCompiler, statement: ast.Connect) -> Instruction:
+        from . import special_routines
+        return special_routines.connect(self, compiler, statement)

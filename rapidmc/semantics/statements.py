@@ -1,0 +1,366 @@
+"""Compiling a routine's statements into a flat instruction list.
+
+Structured statements become branches whose targets are ``Label`` objects,
+resolved to instruction indices at the end.  A label placed "here" waits
+for the next emitted instruction; at the end of a block, waiting labels
+fall through to the block's continuation.  So the end of an IF branch or a
+loop body continues directly at the right place: no extra jump steps.
+"""
+from __future__ import annotations
+
+from typing import Optional
+
+from .. import ast
+from ..diagnostics import (ASSIGN_CONST, BAD_CONTROL, DUPLICATE, TYPE_MISMATCH,
+                           UNKNOWN_LABEL, UNKNOWN_ROUTINE, PLACEHOLDER, error)
+from .expressions import ExpressionCompiler
+from .instructions import (Action, Branch, Call, EndRoutine, EndUndo, ExitProgram,
+                           ForInit, ForNext, Instruction, Jump, LateCall, Raise, Retry,
+                           Return, TestDispatch, TryNext)
+from .machine import GLOBAL
+from .scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, Scope, Symbol
+from .types import NUM, SEMI_VALUE, STRING, RapidType
+
+TARGET_FIELDS = ("next", "start", "after", "target_true", "target_false", "target", "exit",
+                 "body", "default")
+
+
+class Label:
+    __slots__ = ("pc", "alias")
+
+    def __init__(self):
+        self.pc = -1
+        self.alias: Optional[Label] = None
+
+    def resolve(self) -> int:
+        label = self
+        while label.pc < 0 and label.alias is not None:
+            label = label.alias
+        return label.pc
+
+
+class RoutineCompiler:
+    """Compiles one routine (body, ERROR and UNDO handlers) into ``routine.code``."""
+
+    def __init__(self, linker, routine, scope: Scope):
+        self.linker = linker
+        self.routine = routine
+        self.scope = scope
+        self.code: list[Instruction] = []
+        self.waiting: list[Label] = []
+        self.labels: dict[str, Label] = {}
+        self.gotos: list[tuple[Jump, ast.Goto]] = []
+        self.section = "body"
+        self.statement_start: Optional[Label] = None
+        self.statement_after: Optional[Label] = None
+
+    # --------------------------------------------------------------- emission
+    def emit(self, instruction: Instruction, next_label: Optional[Label] = None) -> Instruction:
+        """Append ``instruction``; labels waiting for a position resolve to it."""
+        for label in self.waiting:
+            label.pc = len(self.code)
+        self.waiting.clear()
+        instruction.start = self.statement_start
+        instruction.after = self.statement_after
+        self.code.append(instruction)
+        if next_label is None:
+            next_label = Label()
+            self.waiting.append(next_label)
+        instruction.next = next_label
+        return instruction
+
+    def here(self) -> Label:
+        label = Label()
+        self.waiting.append(label)
+        return label
+
+    def end_block(self, follow: Label) -> None:
+        for label in self.waiting:
+            if label is not follow:
+                label.alias = follow
+        self.waiting.clear()
+
+    # ------------------------------------------------------------- compiling
+    def compile(self, decl: ast.Routine) -> None:
+        end = Label()
+        self.block(decl.body, end)
+        self.place(end)
+        self.emit_end(EndRoutine(decl.end_span, decl.kind == "FUNC", decl.name.text))
+        if decl.error is not None:
+            self.section = "error"
+            self.routine.handler_pc = len(self.code)
+            handler_end = Label()
+            self.block(decl.error.body, handler_end)
+            self.place(handler_end)
+            self.emit_end(EndRoutine(decl.error.span, decl.kind == "FUNC", decl.name.text))
+        if decl.undo is not None:
+            self.section = "undo"
+            self.routine.undo_pc = len(self.code)
+            undo_end = Label()
+            self.block(decl.undo, undo_end)
+            self.place(undo_end)
+            self.emit_end(EndUndo(decl.end_span))
+        for jump, goto in self.gotos:
+            label = self.labels.get(goto.label.key)
+            if label is None:
+                raise error(UNKNOWN_LABEL, f"GOTO to unknown label '{goto.label.text}'",
+                            goto.span)
+            jump.target = label
+        self.resolve()
+        self.routine.code = self.code
+
+    def place(self, label: Label) -> None:
+        self.waiting.append(label)
+
+    def emit_end(self, instruction: Instruction) -> None:
+        self.statement_start = self.here()
+        self.statement_after = None
+        self.emit(instruction, next_label=Label())
+
+    def resolve(self) -> None:
+        for instruction in self.code:
+            for field in TARGET_FIELDS:
+                value = getattr(instruction, field, None)
+                if isinstance(value, Label):
+                    setattr(instruction, field, value.resolve())
+            if isinstance(instruction, TestDispatch):
+                instruction.cases = [(fns, t.resolve() if isinstance(t, Label) else t)
+                                     for fns, t in instruction.cases]
+
+    def block(self, statements, follow: Label) -> None:
+        for statement in statements:
+            after = Label()
+            self.statement(statement, after)
+            self.waiting.append(after)
+        self.end_block(follow)
+
+    def statement(self, statement, follow: Label) -> None:
+        saved = (self.statement_start, self.statement_after)
+        self.statement_start = self.here()
+        self.statement_after = follow
+        getattr(self, "_" + type(statement).__name__)(statement, follow)
+        self.statement_start, self.statement_after = saved
+
+    def expressions(self, scope: Optional[Scope] = None) -> ExpressionCompiler:
+        return ExpressionCompiler(self.linker, scope or self.scope, hoist=self.hoist,
+                                  routine=self.routine)
+
+    def hoist(self, call: ast.FunctionCall, callee) -> int:
+        """Emit the call of a user FUNC before the statement; return the result slot."""
+        binders = self.linker.bind_user_call(self.expressions(), callee, call.args, call.span)
+        slot = self.routine.new_temporary()
+        self.emit(Call(call.span, callee, binders, slot))
+        return slot
+
+    # ------------------------------------------------------- simple statements
+    def _Assignment(self, statement: ast.Assignment, follow: Label) -> None:
+        compiler = self.expressions()
+        target = statement.target
+        ref_fn, target_type, symbol = compiler.reference(target, "assigned")
+        root = symbol
+        if root.kind == CONSTANT or root.storage in ("CONST",):
+            raise error(ASSIGN_CONST, f"cannot assign to constant '{root.name}'", target.span)
+        if root.storage == "FOR":
+            raise error(ASSIGN_CONST, f"the FOR loop variable '{root.name}' is read-only",
+                        target.span)
+        if isinstance(target_type, RapidType) and target_type.kind == SEMI_VALUE:
+            raise error(TYPE_MISMATCH, f"a signal cannot be assigned with ':='; use "
+                        f"SetDO/Set/Reset (or AliasIO to bind it)", statement.span)
+        value = compiler.value(statement.value, target_type)
+        value_fn = value.fn
+        if isinstance(target, ast.NameRef) and root.kind == GLOBAL_DATA:
+            slot = root.slot
+
+            def assign_global(m):
+                m.store = m.store.set(slot, value_fn(m))
+            fn = assign_global
+        elif isinstance(target, ast.NameRef) and root.kind == LOCAL_DATA and not root.by_reference:
+            slot = root.slot
+
+            def assign_local(m):
+                frame = m.frames[-1]
+                values_ = list(frame.locals)
+                values_[slot] = value_fn(m)
+                m.frames[-1] = frame._replace(locals=tuple(values_))
+            fn = assign_local
+        else:
+            def assign(m):
+                ref = ref_fn(m)
+                m.write_ref(ref, value_fn(m))
+            fn = assign
+        self.emit(Action(statement.span, fn))
+
+    def _ProcedureCall(self, statement: ast.ProcedureCall, follow: Label) -> None:
+        compiler = self.expressions()
+        symbol = self.scope.lookup(statement.name.key)
+        if symbol is not None and symbol.kind == ROUTINE:
+            callee = self.linker.routine_by_index(symbol.slot)
+            if callee.kind != "PROC":
+                what = "function (call it in an expression)" if callee.kind == "FUNC" else \
+                    "trap routine (traps run on interrupts: use CONNECT)"
+                raise error(TYPE_MISMATCH, f"'{statement.name.text}' is a {what}, not a "
+                            "procedure", statement.span)
+            binders = self.linker.bind_user_call(compiler, callee, statement.args, statement.span)
+            self.emit(Call(statement.span, callee, binders))
+            return
+        if symbol is not None:
+            raise error(TYPE_MISMATCH, f"'{statement.name.text}' is data, not a procedure",
+                        statement.span)
+        instruction = self.linker.calls.predefined_procedure(compiler, statement, self)
+        self.emit(instruction)
+
+    def _LateBindingCall(self, statement: ast.LateBindingCall, follow: Label) -> None:
+        compiler = self.expressions()
+        name = compiler.value(statement.name_expr, STRING)
+        candidates = {}
+        for callee in self.linker.procedures_visible(self.routine):
+            try:
+                binders = self.linker.bind_user_call(compiler, callee, statement.args,
+                                                     statement.span)
+            except Exception:
+                binders = None
+            candidates[callee.key] = (callee, binders)
+        self.emit(LateCall(statement.span, name.fn, candidates))
+
+    def _Goto(self, statement: ast.Goto, follow: Label) -> None:
+        jump = Jump(statement.span)
+        self.gotos.append((jump, statement))
+        self.emit(jump)
+
+    def _Label(self, statement: ast.Label, follow: Label) -> None:
+        if statement.name.key in self.labels:
+            raise error(DUPLICATE, f"label '{statement.name.text}' is declared twice",
+                        statement.span)
+        label = self.here()
+        self.labels[statement.name.key] = label
+
+    def _Return(self, statement: ast.Return, follow: Label) -> None:
+        if self.section == "undo":
+            raise error(BAD_CONTROL, "RETURN is not allowed in an UNDO handler", statement.span)
+        value_fn = None
+        if self.routine.kind == "FUNC":
+            if statement.value is None:
+                raise error(BAD_CONTROL, f"RETURN in function {self.routine.name} needs a value",
+                            statement.span)
+            value_fn = self.expressions().value(statement.value, self.routine.return_type).fn
+        elif statement.value is not None:
+            raise error(BAD_CONTROL, f"RETURN in {self.routine.kind} {self.routine.name} "
+                        "cannot have a value", statement.span)
+        self.emit(Return(statement.span, value_fn))
+
+    def _Raise(self, statement: ast.Raise, follow: Label) -> None:
+        value_fn = None
+        if statement.value is not None:
+            value_fn = self.expressions().value(statement.value, NUM).fn
+        elif self.section != "error":
+            raise error(BAD_CONTROL, "RAISE without an error number is only allowed in an "
+                        "ERROR handler", statement.span)
+        self.emit(Raise(statement.span, value_fn))
+
+    def _Exit(self, statement: ast.Exit, follow: Label) -> None:
+        self.emit(ExitProgram(statement.span))
+
+    def _Retry(self, statement: ast.Retry, follow: Label) -> None:
+        self._handler_only(statement, "RETRY")
+        self.emit(Retry(statement.span))
+
+    def _TryNext(self, statement: ast.TryNext, follow: Label) -> None:
+        self._handler_only(statement, "TRYNEXT")
+        self.emit(TryNext(statement.span))
+
+    def _handler_only(self, statement, word: str) -> None:
+        if self.section != "error":
+            raise error(BAD_CONTROL, f"{word} is only allowed in an ERROR handler",
+                        statement.span)
+
+    def _Connect(self, statement: ast.Connect, follow: Label) -> None:
+        self.emit(self.linker.calls.connect(self.expressions(), statement))
+
+    def _PlaceholderStatement(self, statement, follow: Label) -> None:
+        raise error(PLACEHOLDER, f"placeholder <{statement.kind}> cannot be executed",
+                    statement.span)
+
+    # --------------------------------------------------- compound statements
+    def _If(self, statement: ast.If, follow: Label) -> None:
+        for branch in statement.branches:
+            condition = self.expressions().condition(branch.condition)
+            test = self.emit(Branch(branch.span, condition.fn))
+            body = Label()
+            otherwise = Label()
+            test.target_true = body
+            test.target_false = otherwise
+            self.place(body)
+            self.block(branch.body, follow)
+            self.place(otherwise)
+        if statement.else_body is not None:
+            self.block(statement.else_body, follow)
+        else:
+            self.end_block(follow)
+
+    def _CompactIf(self, statement: ast.CompactIf, follow: Label) -> None:
+        condition = self.expressions().condition(statement.condition)
+        test = self.emit(Branch(statement.span, condition.fn))
+        body = Label()
+        test.target_true = body
+        test.target_false = follow
+        self.place(body)
+        self.statement(statement.statement, follow)
+        self.end_block(follow)
+
+    def _While(self, statement: ast.While, follow: Label) -> None:
+        head = self.here()
+        condition = self.expressions().condition(statement.condition)
+        test = self.emit(Branch(statement.span, condition.fn))
+        body = Label()
+        test.target_true = body
+        test.target_false = follow
+        self.place(body)
+        self.block(statement.body, head)
+
+    def _For(self, statement: ast.For, follow: Label) -> None:
+        compiler = self.expressions()
+        start = compiler.value(statement.start, NUM)
+        stop = compiler.value(statement.stop, NUM)
+        step = compiler.value(statement.step, NUM) if statement.step is not None else None
+        slot = self.routine.new_temporary(3, statement.variable.text)
+        init = self.emit(ForInit(statement.span, slot, start.fn, stop.fn,
+                                 step.fn if step else None))
+        body_scope = self.scope.child()
+        body_scope.declare(statement.variable.key, Symbol(LOCAL_DATA, statement.variable.text,
+                                                          NUM, slot=slot, storage="FOR"))
+        saved = self.scope
+        self.scope = body_scope
+        body = Label()
+        step_label = Label()
+        init.next = body
+        init.exit = follow
+        self.place(body)
+        self.block(statement.body, step_label)
+        self.scope = saved
+        self.place(step_label)
+        next_instruction = ForNext(statement.span, slot)
+        self.emit(next_instruction, next_label=follow)
+        next_instruction.body = body
+        next_instruction.exit = follow
+        self.end_block(follow)
+
+    def _Test(self, statement: ast.Test, follow: Label) -> None:
+        compiler = self.expressions()
+        subject = compiler.value(statement.subject)
+        dispatch = self.emit(TestDispatch(statement.span, subject.fn))
+        bodies = []
+        for case in statement.cases:
+            value_fns = [self.expressions().value(v, subject.type).fn for v in case.values]
+            label = Label()
+            dispatch.cases.append((value_fns, label))
+            bodies.append((label, case.body))
+        default = Label()
+        dispatch.default = default if statement.default is not None else follow
+        for label, body in bodies:
+            self.place(label)
+            self.block(body, follow)
+        if statement.default is not None:
+            self.place(default)
+            self.block(statement.default, follow)
+        else:
+            self.end_block(follow)

@@ -1,0 +1,304 @@
+"""The small-step semantics: initial states and successors of a state.
+
+One transition of the model is:
+
+1. the environment sets the inputs: every free digital input (not driven by
+   an environment module) may take either value (check mode only; in run
+   mode inputs keep the values given with ``--io``);
+2. interrupts: timers may fire, a pending interrupt starts its TRAP;
+3. the program executes ONE instruction (a simple statement, a condition,
+   a routine entry or exit) — or the TRAP entry of step 2;
+4. signal edges ordered with ISignalDI/ISignalDO become pending interrupts;
+5. the environment modules' ``react`` procedure runs to completion.
+
+Nondeterministic choices (input values, FlexPendant answers, AnyBool/AnyNum
+in environment modules, wait timeouts) are made through a *chooser*.
+``successors`` enumerates every combination of choices by re-running the
+(pure, deterministic given the choices) transition with each choice script,
+so the step code stays straight-line.
+"""
+from __future__ import annotations
+
+from typing import Optional
+
+from pyrsistent import pvector
+
+from .errors import RapidError, errno_name
+from .errors_flow import deliver_error
+from .instructions import ReRaise
+from .machine import Machine
+from .program import Program
+from .state import ENDED, FAILED, RUNNING, Frame, Interrupts, State, Transition
+from .types import default_value
+
+ENVIRONMENT_STEP_LIMIT = 100_000
+
+HOME_TARGET = ((0.0, 0.0, 0.0), (1.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0),
+               (9e9, 9e9, 9e9, 9e9, 9e9, 9e9))
+HOME_JOINTS = ((0.0,) * 6, (9e9,) * 6)
+
+
+class Chooser:
+    """Base chooser: how a step resolves nondeterminism and time."""
+
+    check_mode = False
+
+    def choose(self, name: str, domain: tuple, position: int):
+        return domain[0]
+
+    def tp_answers(self, kind: str) -> tuple:
+        raise NotImplementedError
+
+    def wait_times_out(self, m: Machine, max_time: float) -> bool:
+        return False
+
+    def advance_time(self, m: Machine, seconds: float) -> None:
+        pass
+
+    def free_inputs(self, program: Program) -> tuple:
+        return ()
+
+
+class ScriptChooser(Chooser):
+    """Check mode: follows a script of choice indices, records the domain sizes met."""
+
+    check_mode = True
+
+    def __init__(self, script: list, config: "CheckConfig"):
+        self.script = script
+        self.sizes: list[int] = []
+        self.config = config
+
+    def choose(self, name: str, domain: tuple, position: int):
+        self.sizes.append(len(domain))
+        if position < len(self.script):
+            return domain[self.script[position]]
+        return domain[0]
+
+    def tp_answers(self, kind: str) -> tuple:
+        if kind == "TPReadFK":
+            return self.config.fk_answers
+        return self.config.tp_answers
+
+    def wait_times_out(self, m: Machine, max_time: float) -> bool:
+        return m.choose("timeout", (False, True))
+
+    def free_inputs(self, program: Program) -> tuple:
+        return self.config.free_inputs
+
+    def next_script(self) -> Optional[list]:
+        script = list(self.script) + [0] * (len(self.sizes) - len(self.script))
+        for i in range(len(self.sizes) - 1, -1, -1):
+            if script[i] + 1 < self.sizes[i]:
+                return script[:i] + [script[i] + 1]
+        return None
+
+
+class CheckConfig:
+    """Model-checking choices: answer domains and which inputs are free."""
+
+    def __init__(self, program: Program, tp_answers=(1.0, 2.0, 3.0),
+                 fk_answers=(1.0, 2.0, 3.0, 4.0, 5.0), input_domains: Optional[dict] = None):
+        self.tp_answers = tuple(float(a) for a in tp_answers)
+        self.fk_answers = tuple(float(a) for a in fk_answers)
+        domains = input_domains or {}
+        free = []
+        for signal in program.signals:
+            if signal.driven or not signal.kind.endswith("I"):
+                continue
+            if signal.kind == "DI":
+                free.append((signal.index, signal.name, (0.0, 1.0)))
+            elif signal.key in domains:
+                free.append((signal.index, signal.name, tuple(domains[signal.key])))
+        self.free_inputs = tuple(free)
+
+
+# ---------------------------------------------------------------------------
+# Initial states
+# ---------------------------------------------------------------------------
+
+def initial_store(program: Program):
+    return pvector(g.initial for g in program.globals)
+
+
+def start_state(program: Program, io_values: Optional[dict] = None) -> State:
+    """The state after data initialisation, at the entry of main (before environment init)."""
+    io = [0.0] * len(program.signals)
+    for key, value in (io_values or {}).items():
+        signal = program.signal(key)
+        if signal is not None:
+            io[signal.index] = float(value)
+    main = program.routines[program.entry]
+    robot = (HOME_TARGET, _predefined(program, "TOOL0"), _predefined(program, "WOBJ0"),
+             HOME_JOINTS)
+    return State((Frame(main.index, 0, main.initial_locals),), initial_store(program),
+                 pvector(io), robot, Interrupts())
+
+
+def _predefined(program: Program, key: str):
+    from .builtins.data import PREDEFINED_DATA
+    return PREDEFINED_DATA[key].value
+
+
+def initial_states(program: Program, chooser_factory) -> list[State]:
+    """All initial states: the start state after the environment's ``init`` (if any)."""
+    start = start_state(program)
+    if program.environment_init is None:
+        return [start]
+    states = []
+    for _, state, _ in enumerate_choices(lambda chooser: _run_environment(
+            program, start, chooser, program.environment_init), chooser_factory):
+        states.append(state)
+    return list(dict.fromkeys(states))
+
+
+def _run_environment(program: Program, state: State, chooser, routine_index: int):
+    m = Machine(program, state, chooser)
+    run_environment_routine(m, routine_index)
+    return m.choices, m.to_state(), m.output
+
+
+def run_environment_routine(m: Machine, routine_index: int) -> None:
+    """Run an environment procedure to completion inside the current transition."""
+    routine = program_routine = m.program.routines[routine_index]
+    saved_frames = m.frames
+    saved_status = m.status
+    m.frames = [Frame(routine.index, 0, routine.initial_locals)]
+    m.status = RUNNING
+    steps = 0
+    try:
+        while m.frames and m.status == RUNNING:
+            frame = m.frames[-1]
+            instruction = m.program.routines[frame.routine].code[frame.pc]
+            try:
+                instruction.run(m)
+            except RapidError as exc:
+                deliver_error(m, exc.errno, str(exc))
+            except ReRaise as exc:
+                deliver_error(m, exc.errno, errno_name(exc.errno), from_handler=True)
+            if m.waiting:
+                raise EnvironmentFault(f"environment routine {program_routine.name} waits "
+                                       "(waits are not allowed in an environment reaction)")
+            steps += 1
+            if steps > ENVIRONMENT_STEP_LIMIT:
+                raise EnvironmentFault(f"environment routine {program_routine.name} did not "
+                                       f"finish within {ENVIRONMENT_STEP_LIMIT} steps")
+        if m.status == FAILED:
+            fault = m.fault
+            raise EnvironmentFault(f"environment routine {program_routine.name} stopped with "
+                                   f"{errno_name(fault.errno)}: {fault.message}")
+    finally:
+        m.frames = saved_frames
+        m.status = saved_status if m.status != FAILED else saved_status
+
+
+class EnvironmentFault(Exception):
+    """The environment model itself went wrong (a modelling error, reported to the user)."""
+
+
+# ---------------------------------------------------------------------------
+# Transitions
+# ---------------------------------------------------------------------------
+
+def enumerate_choices(run, chooser_factory):
+    """Run ``run(chooser)`` once per combination of choices; yield its results."""
+    script: Optional[list] = []
+    while script is not None:
+        chooser = chooser_factory(script)
+        yield run(chooser)
+        script = chooser.next_script()
+
+
+def successors(program: Program, state: State, config: CheckConfig) -> list[Transition]:
+    """Every transition from ``state`` (check mode), in a deterministic order."""
+    if state.status != RUNNING:
+        return [Transition((), None, state, "")]
+    result = []
+    for transition in enumerate_choices(lambda chooser: step(program, state, chooser),
+                                        lambda script: ScriptChooser(script, config)):
+        result.append(transition)
+    return result
+
+
+def step(program: Program, state: State, chooser: Chooser) -> Transition:
+    """One transition from ``state`` with the choices ``chooser`` makes."""
+    if state.status != RUNNING:
+        return Transition((), None, state, "")
+    m = Machine(program, state, chooser)
+    for index, name, domain in chooser.free_inputs(program):
+        m.io = m.io.set(index, m.choose(name, domain))
+    io_before = state.io
+    if chooser.check_mode and m.interrupts.table:
+        _timers_may_fire(m)
+    span = _execute(m)
+    if m.interrupts.table and m.io != io_before:
+        _signal_edges(m, io_before)
+    if program.environment_react is not None and m.status == RUNNING:
+        io_mid = m.io
+        run_environment_routine(m, program.environment_react)
+        if m.interrupts.table and m.io != io_mid:
+            _signal_edges(m, io_mid)
+    return Transition(tuple(m.choices), span, m.to_state(), "\n".join(m.output))
+
+
+def _execute(m: Machine):
+    """Start a pending TRAP, or execute the instruction at the program counter."""
+    program = m.program
+    interrupts = m.interrupts
+    if interrupts.pending and interrupts.enabled and not _in_trap(m):
+        number = interrupts.pending[0]
+        m.interrupts = interrupts._replace(pending=interrupts.pending[1:])
+        entry = next((e for e in interrupts.table if e.number == number), None)
+        if entry is not None:
+            trap = program.routines[entry.trap]
+            m.intno = float(number)
+            m.frames.append(Frame(trap.index, 0, trap.initial_locals))
+            if entry.source and entry.source[-1] is True and entry.source[0] != "pers":
+                _deactivate(m, number)
+            return trap.span
+    frame = m.frames[-1]
+    instruction = program.routines[frame.routine].code[frame.pc]
+    try:
+        instruction.run(m)
+    except RapidError as exc:
+        deliver_error(m, exc.errno, str(exc))
+    except ReRaise as exc:
+        deliver_error(m, exc.errno, errno_name(exc.errno), from_handler=True)
+    return instruction.span
+
+
+def _in_trap(m: Machine) -> bool:
+    routines = m.program.routines
+    return any(routines[f.routine].kind == "TRAP" for f in m.frames)
+
+
+def _deactivate(m: Machine, number: int) -> None:
+    m.interrupts = m.interrupts._replace(table=tuple(
+        e._replace(active=False) if e.number == number else e for e in m.interrupts.table))
+
+
+def enqueue(m: Machine, number: int) -> None:
+    pending = m.interrupts.pending
+    if number not in pending:
+        m.interrupts = m.interrupts._replace(pending=pending + (number,))
+
+
+def _signal_edges(m: Machine, before) -> None:
+    for entry in m.interrupts.table:
+        source = entry.source
+        if not entry.active or not source or source[0] != "signal":
+            continue
+        _, index, trigger, _ = source
+        old, new = before[index], m.io[index]
+        if old == new:
+            continue
+        if trigger == 2 or (trigger == 1 and new == 1) or (trigger == 0 and new == 0):
+            enqueue(m, entry.number)
+
+
+def _timers_may_fire(m: Machine) -> None:
+    for entry in m.interrupts.table:
+        if entry.active and entry.source and entry.source[0] == "timer" and \
+                entry.number not in m.interrupts.pending:
+            if m.choose(f"timer {entry.number}", (False, True)):
+                enqueue(m, entry.number)

@@ -1,0 +1,203 @@
+"""The RAPID type system: atomic, record, alias, semi-value and non-value types.
+
+Types are interned ``RapidType`` values keyed by canonical name.  Aliases
+resolve to their base type at lookup (RAPID: an alias is equal to its base),
+but keep the alias name for printing.  Array types carry their dimensions.
+
+Example::
+
+    >>> PREDEFINED_TYPES["POS"].components[0].name
+    'x'
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Optional
+
+ATOMIC = "atomic"
+RECORD = "record"
+SEMI_VALUE = "semi-value"     # signals: readable as a value, not assignable
+NON_VALUE = "non-value"       # clock, iodev, ...: only passed by reference
+SWITCH_KIND = "switch"
+ANY_KIND = "anytype"
+
+
+@dataclass(frozen=True, slots=True)
+class ComponentType:
+    name: str            # as written in the definition
+    key: str             # canonical
+    type: "RapidType"
+
+
+@dataclass(frozen=True, slots=True)
+class RapidType:
+    """A RAPID data type.  ``key`` is the canonical name of the base type."""
+
+    key: str
+    name: str
+    kind: str
+    components: tuple[ComponentType, ...] = ()
+    value_type: Optional["RapidType"] = None     # semi-value: the type read from it
+    signal_kind: str = ""                        # DI, DO, AI, AO, GI, GO for signal types
+
+    def component_index(self, key: str) -> int:
+        for i, component in enumerate(self.components):
+            if component.key == key:
+                return i
+        return -1
+
+    @property
+    def is_value(self) -> bool:
+        return self.kind in (ATOMIC, RECORD)
+
+    def __str__(self) -> str:
+        return self.name
+
+
+@dataclass(frozen=True, slots=True)
+class ArrayType:
+    """An array of ``element`` with fixed ``dims`` (or ``None`` per ``*`` dimension)."""
+
+    element: RapidType
+    dims: tuple[Optional[int], ...]
+
+    @property
+    def rank(self) -> int:
+        return len(self.dims)
+
+    @property
+    def key(self) -> str:
+        return f"{self.element.key}{{{','.join('*' if d is None else str(d) for d in self.dims)}}}"
+
+    def __str__(self) -> str:
+        return f"{self.element.name} array{{{','.join('*' if d is None else str(d) for d in self.dims)}}}"
+
+
+AnyType = RapidType | ArrayType
+
+NUM = RapidType("NUM", "num", ATOMIC)
+DNUM = RapidType("DNUM", "dnum", ATOMIC)
+BOOL = RapidType("BOOL", "bool", ATOMIC)
+STRING = RapidType("STRING", "string", ATOMIC)
+SWITCH = RapidType("SWITCH", "switch", SWITCH_KIND)
+ANYTYPE = RapidType("ANYTYPE", "anytype", ANY_KIND)
+
+
+def _record(name: str, *components: tuple[str, RapidType]) -> RapidType:
+    return RapidType(name.upper(), name, RECORD,
+                     tuple(ComponentType(n, n.upper(), t) for n, t in components))
+
+
+def _nums(*names: str) -> tuple[tuple[str, RapidType], ...]:
+    return tuple((n, NUM) for n in names)
+
+
+POS = _record("pos", *_nums("x", "y", "z"))
+ORIENT = _record("orient", *_nums("q1", "q2", "q3", "q4"))
+POSE = _record("pose", ("trans", POS), ("rot", ORIENT))
+CONFDATA = _record("confdata", *_nums("cf1", "cf4", "cf6", "cfx"))
+EXTJOINT = _record("extjoint", *_nums("eax_a", "eax_b", "eax_c", "eax_d", "eax_e", "eax_f"))
+ROBJOINT = _record("robjoint", *_nums("rax_1", "rax_2", "rax_3", "rax_4", "rax_5", "rax_6"))
+ROBTARGET = _record("robtarget", ("trans", POS), ("rot", ORIENT), ("robconf", CONFDATA),
+                    ("extax", EXTJOINT))
+JOINTTARGET = _record("jointtarget", ("robax", ROBJOINT), ("extax", EXTJOINT))
+SPEEDDATA = _record("speeddata", *_nums("v_tcp", "v_ori", "v_leax", "v_reax"))
+ZONEDATA = _record("zonedata", ("finep", BOOL), *_nums("pzone_tcp", "pzone_ori", "pzone_eax",
+                                                       "zone_ori", "zone_leax", "zone_reax"))
+LOADDATA = _record("loaddata", ("mass", NUM), ("cog", POS), ("aom", ORIENT),
+                   *_nums("ix", "iy", "iz"))
+TOOLDATA = _record("tooldata", ("robhold", BOOL), ("tframe", POSE), ("tload", LOADDATA))
+WOBJDATA = _record("wobjdata", ("robhold", BOOL), ("ufprog", BOOL), ("ufmec", STRING),
+                   ("uframe", POSE), ("oframe", POSE))
+INPOSDATA = _record("inposdata", *_nums("position", "speed", "mintime", "maxtime"))
+STOPPOINTDATA = _record("stoppointdata", ("type", NUM), ("progsynch", BOOL),
+                        ("inpos", INPOSDATA), ("stoptime", NUM), ("followtime", NUM),
+                        ("signal", STRING), ("relation", NUM), ("checkvalue", NUM))
+TASKS = _record("tasks", ("taskname", STRING))
+ERRSTR_RECORD = None
+
+
+def _signal(name: str, kind: str) -> RapidType:
+    return RapidType(name.upper(), name, SEMI_VALUE, value_type=NUM, signal_kind=kind)
+
+
+SIGNAL_TYPES = {t.key: t for t in (
+    _signal("signaldi", "DI"), _signal("signaldo", "DO"), _signal("signalai", "AI"),
+    _signal("signalao", "AO"), _signal("signalgi", "GI"), _signal("signalgo", "GO"),
+)}
+
+NON_VALUE_NAMES = (
+    "clock", "iodev", "dir", "socketdev", "rawbytes", "triggdata", "shapedata",
+    "wzstationary", "wztemporary", "mecunit", "taskid", "syncident", "rmqslot",
+    "intnum_obsolete", "restartdata", "corrdescr", "pathrecid", "jointtype",
+)
+NON_VALUE_TYPES = {n.upper(): RapidType(n.upper(), n, NON_VALUE) for n in NON_VALUE_NAMES}
+
+NUM_ALIASES = (
+    "byte", "dionum", "errnum", "intnum", "symnum", "opnum", "opcalc", "errdomain",
+    "errtype", "event_type", "handler_type", "exec_level", "tpnum", "btnres",
+    "icondata", "buttondata", "socketstatus", "identno", "stoppoint", "iounit_state",
+    "listitem_num", "sensorstate", "num_limit", "triggmode", "paridnum", "loadidnum",
+    "errstr_num", "opmode", "runmode",
+)
+STRING_ALIASES = ("stringdig", "errstr")
+
+PREDEFINED_TYPES: dict[str, RapidType] = {t.key: t for t in (
+    NUM, DNUM, BOOL, STRING, SWITCH, ANYTYPE, POS, ORIENT, POSE, CONFDATA, EXTJOINT,
+    ROBJOINT, ROBTARGET, JOINTTARGET, SPEEDDATA, ZONEDATA, LOADDATA, TOOLDATA, WOBJDATA,
+    INPOSDATA, STOPPOINTDATA, TASKS,
+)}
+PREDEFINED_TYPES.update(SIGNAL_TYPES)
+PREDEFINED_TYPES.update(NON_VALUE_TYPES)
+PREDEFINED_ALIASES: dict[str, tuple[str, RapidType]] = {}
+for _name in NUM_ALIASES:
+    PREDEFINED_ALIASES[_name.upper()] = (_name, NUM)
+for _name in STRING_ALIASES:
+    PREDEFINED_ALIASES[_name.upper()] = (_name, STRING)
+
+
+def is_numeric(t: Optional[AnyType]) -> bool:
+    return t is NUM or t is DNUM
+
+
+def same_type(a: Optional[AnyType], b: Optional[AnyType]) -> bool:
+    """Type equality after alias resolution; ``None`` (unknown) is compatible with anything."""
+    if a is None or b is None or a is ANYTYPE or b is ANYTYPE:
+        return True
+    if isinstance(a, ArrayType) or isinstance(b, ArrayType):
+        if not (isinstance(a, ArrayType) and isinstance(b, ArrayType)):
+            return False
+        if a.rank != b.rank or not same_type(a.element, b.element):
+            return False
+        return all(x is None or y is None or x == y for x, y in zip(a.dims, b.dims))
+    if a.key == b.key:
+        return True
+    # num and dnum mix implicitly (widening / narrowing on assignment)
+    return is_numeric(a) and is_numeric(b)
+
+
+def default_value(t: AnyType):
+    """The value of an uninitialised VAR of type ``t`` (0, FALSE, "", component-wise)."""
+    if isinstance(t, ArrayType):
+        return _default_array(t.element, t.dims)
+    if t.kind == RECORD:
+        return tuple(default_value(c.type) for c in t.components)
+    if t is BOOL:
+        return False
+    if t is STRING:
+        return ""
+    if t.kind == NON_VALUE:
+        return None
+    if t.kind == SEMI_VALUE:
+        return -1                       # a signal data object not bound to any signal
+    return 0.0
+
+
+def _default_array(element: RapidType, dims: tuple) -> tuple:
+    if len(dims) == 1:
+        return tuple(default_value(element) for _ in range(dims[0] or 0))
+    return tuple(_default_array(element, dims[1:]) for _ in range(dims[0] or 0))
+
+
+def element_type(t: AnyType) -> AnyType:
+    return t.element if isinstance(t, ArrayType) else t
