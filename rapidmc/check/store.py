@@ -4,8 +4,8 @@ The engine stores each model state once (``states[id]``, ``ids[state]``)
 and works with ids from then on; product bookkeeping is integers only.
 Valuations are computed once per model state.  Successor ids are cached
 for recently expanded states, because the emptiness search expands the
-same model state once per automaton state it is paired with, usually in
-quick succession.
+same model state once per automaton state it is paired with, often in
+quick succession (and the model's step function is the expensive part).
 """
 from __future__ import annotations
 
@@ -13,7 +13,7 @@ from typing import Hashable, Sequence
 
 from .model import Label, TransitionSystem, Valuation, labelled_successors
 
-SUCCESSOR_CACHE_SIZE = 4096
+SUCCESSOR_CACHE_SIZE = 1 << 16
 
 
 class ModelStore:
@@ -59,7 +59,9 @@ class ModelStore:
             intern = self.intern
             result = tuple(_unique([intern(target) for _, target in successors]))
         if len(cache) >= SUCCESSOR_CACHE_SIZE:
-            del cache[next(iter(cache))]
+            # Start afresh rather than evict one by one: deleting the oldest
+            # entry of a dict makes each later next(iter(dict)) slower.
+            cache.clear()
         cache[state_id] = result
         return result
 
