@@ -1,0 +1,36 @@
+"""The grammar ships inside the wheel: build it, install it in a fresh venv, parse there.
+
+Slow-ish (10-40 s): it runs pip, whose isolated build fetches setuptools and
+wheel from the package index; the venv sees the system's lark.
+"""
+from __future__ import annotations
+
+import subprocess
+import sys
+import venv
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+HELLO = ROOT / "case_studies" / "hello" / "hello.mod"
+
+
+def run(*command, cwd) -> str:
+    done = subprocess.run(command, cwd=cwd, capture_output=True, text=True, timeout=180)
+    assert done.returncode == 0, done.stdout + done.stderr
+    return done.stdout
+
+
+def test_wheel_contains_grammar_and_parses_in_fresh_venv(tmp_path):
+    wheels = tmp_path / "wheels"
+    run(sys.executable, "-m", "pip", "wheel", "--no-deps", "-q",
+        "-w", str(wheels), str(ROOT), cwd=tmp_path)
+    (wheel,) = wheels.glob("rapidmc-*.whl")
+    environment = tmp_path / "env"
+    venv.create(environment, system_site_packages=True, with_pip=True)
+    python = str(environment / "bin" / "python")
+    run(python, "-m", "pip", "install", "--no-deps", "--no-index", "-q", str(wheel), cwd=tmp_path)
+    script = ("import rapidmc, sys; from rapidmc.syntax import parse_file; "
+              "print(rapidmc.__file__); m = parse_file(sys.argv[1]); print(m[0].name.text)")
+    location, module_name = run(python, "-c", script, str(HELLO), cwd=tmp_path).split()
+    assert location.startswith(str(environment))
+    assert module_name == "Hello"
