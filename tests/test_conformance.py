@@ -30,6 +30,9 @@ import pytest
 
 CONFORMANCE_ROOT = Path(__file__).parent / "conformance"
 MINIMUM_CASES = 200            # both parts of the suite together
+MINIMUM_CASES_PER_PART = 110
+PART_A_AREAS = ("types", "arrays", "declarations", "expressions", "statements",
+                "routines", "errors", "interrupts", "static")    # the language
 CASE_TIMEOUT_SECONDS = 20      # a hanging interpreter fails one case, not the suite
 STATIC_ERROR_EXIT = 2
 SINGLE_FILE_COMPANIONS = (".out", ".in", ".args", ".exit", ".err")
@@ -170,6 +173,11 @@ def test_program_behaves_as_documented(case: ConformanceCase, capsys, monkeypatc
 def test_suite_has_at_least_200_cases():
     assert len(CASES) >= MINIMUM_CASES, (
         f"{len(CASES)} conformance cases found, the suite needs {MINIMUM_CASES}")
+
+
+def test_language_part_has_at_least_110_cases():
+    language_cases = [case for case in CASES if case.case_id.split("/")[0] in PART_A_AREAS]
+    assert len(language_cases) >= MINIMUM_CASES_PER_PART
 
 
 def _companions_without_program(root: Path) -> list[str]:
