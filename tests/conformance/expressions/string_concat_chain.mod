@@ -8,7 +8,7 @@ MODULE string_concat_chain
     VAR string parts{2} := ["x", "y"];
     VAR tag t := ["z"];
     TPWrite parts{1} + "-" + parts{2} + "-" + t.text;
-    TPWrite "" + "";
+    TPWrite "[" + "" + "" + "]";
     TPWrite "end";
   ENDPROC
 ENDMODULE
