@@ -1,8 +1,9 @@
 """Reading RAPID source files: Latin-1 text, with every failure a diagnostic.
 
 A file is refused (with its own diagnostic code) when it does not exist, is
-a directory, cannot be read, is larger than ``MAX_FILE_BYTES`` (64 MiB, far
-above any real module; 10 MB of code parse in a few seconds), is an
+a directory, cannot be read, is larger than ``MAX_FILE_BYTES`` (8 MiB: well
+above hand-written modules; the parser manages some 5,000-10,000 lines a
+second, so a 10 MB generated path program would take minutes), is an
 encrypted module (first byte 0xF0-0xFF), or is binary (NUL bytes or many
 control characters).  A ``.pgf`` program file is an XML list of
 ``<Module>name.mod</Module>`` entries, relative to the ``.pgf`` itself; it
@@ -22,7 +23,7 @@ from .diagnostics import (FILE_BINARY, FILE_EMPTY, FILE_ENCRYPTED, FILE_IS_DIREC
                           FILE_NOT_FOUND, FILE_TOO_LARGE, FILE_UNREADABLE, PROGRAM_FILE,
                           SourceCache, error)
 
-MAX_FILE_BYTES = 64 * 1024 * 1024
+MAX_FILE_BYTES = 8 * 1024 * 1024
 PROGRAM_FILE_SUFFIX = ".pgf"
 UTF8_BOM = b"\xef\xbb\xbf"
 # Control characters that ordinary text files contain.

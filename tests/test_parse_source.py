@@ -8,7 +8,7 @@ import pytest
 
 from rapidmc.diagnostics import SourceCache, UserError
 from rapidmc.source import MAX_FILE_BYTES, program_paths, read_source
-from rapidmc.syntax import load_program, parse_file
+from rapidmc.syntax import load_program, parse_file, parse_text
 
 MODULE = b"MODULE m\n  PROC main()\n    Stop;\n  ENDPROC\nENDMODULE\n"
 
@@ -56,11 +56,17 @@ def test_unreadable_file(tmp_path):
     assert code_of(lambda: parse_file(path)) == "RMC003"
 
 
-def test_file_over_the_size_limit_is_refused_before_reading(tmp_path):
-    path = tmp_path / "huge.mod"
-    with open(path, "wb") as stream:
-        stream.truncate(MAX_FILE_BYTES + 1)
-    assert code_of(lambda: parse_file(str(path))) == "RMC007"
+def test_ten_megabyte_file_is_refused_at_once(tmp_path):
+    statement = b"    MoveL Offs(p10, 1, 2, 3), v1000, z50, tool0 \\WObj:=wobj0;\n"
+    body = statement * (10_000_000 // len(statement))
+    path = write(tmp_path, "huge.mod", b"MODULE big\nPROC main()\n" + body + b"ENDPROC\nENDMODULE\n")
+    assert os.path.getsize(path) > 10_000_000 > MAX_FILE_BYTES
+    assert code_of(lambda: parse_file(path)) == "RMC007"
+
+
+def test_deep_nesting_is_a_diagnostic_not_a_crash():
+    text = "MODULE m PROC p() x := " + "NOT " * 3000 + "a; ENDPROC ENDMODULE"
+    assert code_of(lambda: parse_text(text, "deep.mod")) == "RMC305"
 
 
 def test_latin1_identifiers_and_strings(tmp_path):

@@ -24,7 +24,8 @@ from lark.exceptions import VisitError
 from lark.tree import Meta
 
 from .. import ast
-from ..diagnostics import BAD_NUMBER, BAD_STRING, IDENTIFIER_TOO_LONG, SYNTAX, UserError, error
+from ..diagnostics import (BAD_NUMBER, BAD_STRING, IDENTIFIER_TOO_LONG, SYNTAX, UNSUPPORTED,
+                           UserError, error)
 
 MAX_IDENTIFIER_LENGTH = 32
 # Reference 1.4.  The contextual lexer reads a reserved word as an identifier
@@ -48,6 +49,9 @@ def lower(tree, filename: str) -> tuple[ast.Module, ...]:
         if isinstance(exc.orig_exc, UserError):
             raise exc.orig_exc from None
         raise
+    except RecursionError:
+        raise error(UNSUPPORTED, f"'{filename}' nests expressions or statements too deeply "
+                    "to analyse") from None
 
 
 def decode_string(token_text: str) -> Optional[str]:
