@@ -89,7 +89,7 @@ def run_program(program: Program, io_values: dict, stdin: TextIO, stdout: TextIO
     while state.status == RUNNING:
         transition = step(program, state, chooser)
         if transition.output:
-            stdout.write(transition.output + "\n")
+            stdout.write(transition.output)
             stdout.flush()
         if trace is not None and transition.span is not None:
             trace.write(f"{transition.span}\n")

@@ -1,7 +1,8 @@
-"""Seeded random LTL formulas and lasso words for the LTL tests (no test functions here)."""
+"""Shared LTL test inputs: seeded random formulas and lassos, pattern data (no tests here)."""
 from __future__ import annotations
 
 import random
+from pathlib import Path
 
 from rapidmc.ltl.syntax import (And, Atom, Equiv, FalseF, Finally, Globally, Implies, Next, Not,
                                 Or, Release, StrongRelease, TrueF, Until, WeakUntil, Xor)
@@ -35,3 +36,21 @@ def random_lasso(rng: random.Random, atoms):
     prefix = [random_letter(rng, atoms) for _ in range(rng.randint(0, 3))]
     cycle = [random_letter(rng, atoms) for _ in range(rng.randint(1, 4))]
     return prefix, cycle
+
+
+DATA = Path(__file__).parent / "ltl"
+
+
+def dwyer_patterns() -> list[tuple[str, str]]:
+    """(name, formula text) pairs from tests/ltl/dwyer_patterns.txt."""
+    pairs = []
+    for line in (DATA / "dwyer_patterns.txt").read_text().splitlines():
+        if line.strip() and not line.startswith("#"):
+            name, text = line.split(":", 1)
+            pairs.append((name.strip(), text.strip()))
+    return pairs
+
+
+def random_formulas(seed: int, count: int, atoms, with_next: bool = True, max_size: int = 7):
+    rng = random.Random(seed)
+    return [random_formula(rng, atoms, rng.randint(1, max_size), with_next) for _ in range(count)]

@@ -7,6 +7,8 @@ answer is forced.
 """
 from __future__ import annotations
 
+import time
+
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -203,3 +205,27 @@ def test_agrees_with_the_reference_checker(model, buchi):
     else:
         graph, _ = reference_product(system, buchi, valuation)
         assert result.stats.product_states == graph.number_of_nodes()
+
+
+def test_time_limit_is_kept_with_a_slow_model():
+    class SlowCounter(Counter):
+        def successors(self, x):
+            time.sleep(0.002)
+            return super().successors(x)
+
+    started = time.monotonic()
+    result = check_property(SlowCounter(10_000), NOT_INFINITELY_OFTEN_P, lambda x: int(x == 0),
+                            max_seconds=0.1)
+    assert result.verdict == "UNKNOWN"
+    assert time.monotonic() - started < 0.5
+
+
+def test_prefix_is_a_shortest_path_into_the_accepting_cycle():
+    # depth-first search reaches 4 the long way 0-1-2-3-4; the counterexample takes 0-4
+    detour = Graph({0: [("a", 1), ("b", 4)], 1: [("c", 2)], 2: [("d", 3)],
+                    3: [("e", 0), ("f", 4)], 4: [("end", 4)]})
+    result = check_property(detour, NOT_ALWAYS_P, lambda x: int(x != 4))
+    assert result.stats.max_depth == 5
+    assert [(step.label, step.state) for step in result.prefix] == [(None, 0)]
+    assert [(step.label, step.state) for step in result.cycle] == [("b", 4)]
+    assert result.closing_label == "end"

@@ -139,8 +139,10 @@ def test_dnum_rounding_matches_decimal_half_up(value, places):
     (-0.0, "0"),
     (0.1, "0.1"),                   # float32 noise beyond 6 digits is not shown
     (123456, "123456"),
-    (1234567, "1.23457E+06"),       # more than 6 digits: exponent form
-    (1e7, "1E+07"),
+    (1234567, "1234567"),           # exact integers of num print in full
+    (8388608, "8388608"),
+    (1234567.5, "1.23457E+06"),     # more than 6 digits otherwise: exponent form
+    (1e7, "1E+07"),                 # beyond num's exact integers
     (9e9, "9E+09"),                 # extjoint "not used"
     (0.0001, "0.0001"),
     (0.00001, "1E-05"),

@@ -35,7 +35,7 @@ def search_accepting_cycle(product: Product, budget: SearchBudget) -> SearchResu
     stats = search.stats()
     stats.seconds = budget.finish()
     if found is not None:
-        prefix, cycle, closing = build_lasso(product, *found)
+        prefix, cycle, closing = build_lasso(product, *found, search.number)
         return SearchResult(VIOLATED, None, prefix, cycle, stats, closing)
     if budget.reason is not None:
         return SearchResult(UNKNOWN, budget.reason, stats=stats)

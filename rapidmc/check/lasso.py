@@ -2,15 +2,17 @@
 
 When the emptiness search finds an accepting cycle it knows the DFS path
 to the component's root and the set of product states in the component.
-The prefix is that DFS path; the cycle is a shortest path inside the
-component from the root to an accepting state and a shortest path back
-(at least one step), both found by breadth-first search.  Labels are
+The prefix is a shortest path through the explored states into the
+component (found by a breadth-first search given a modest budget; the DFS
+path when that runs out); the cycle is a shortest path inside the
+component from the entry state to an accepting state and a shortest path
+back (at least one step), both found by breadth-first search.  Labels are
 recovered by asking the model again, so the search itself stores none.
 """
 from __future__ import annotations
 
 from collections import deque
-from typing import Callable, Collection, Hashable, Iterable, Optional
+from typing import Callable, Collection, Container, Hashable, Iterable, Optional
 
 from .product import Product
 from .result import LassoStep
@@ -18,15 +20,22 @@ from .result import LassoStep
 LabelledKey = tuple[Optional[Hashable], int]
 
 
-def shortest_path(successors: Callable[[int], Iterable[LabelledKey]], source: int,
-                  is_goal: Callable[[int], bool], allowed: Collection[int],
-                  min_steps: int) -> list[LabelledKey]:
-    """A shortest path ``[(None, source), (label, key), …]`` to a goal, staying in ``allowed``."""
-    if min_steps == 0 and is_goal(source):
-        return [(None, source)]
-    parents: dict[int, Optional[LabelledKey]] = {source: None}
-    queue = deque([source])
-    while queue:
+def shortest_path(successors: Callable[[int], Iterable[LabelledKey]], sources: Iterable[int],
+                  is_goal: Callable[[int], bool], allowed: Container[int], min_steps: int,
+                  max_expansions: Optional[int] = None) -> Optional[list[LabelledKey]]:
+    """A shortest path ``[(None, source), (label, key), …]`` to a goal, staying in ``allowed``.
+
+    None when there is none, or none within ``max_expansions`` expanded states.
+    """
+    parents: dict[int, Optional[LabelledKey]] = {}
+    for source in sources:
+        if min_steps == 0 and is_goal(source):
+            return [(None, source)]
+        parents.setdefault(source, None)
+    queue = deque(parents)
+    while queue and (max_expansions is None or max_expansions > 0):
+        if max_expansions is not None:
+            max_expansions -= 1
         key = queue.popleft()
         for label, successor in successors(key):
             if successor not in allowed:
@@ -36,7 +45,7 @@ def shortest_path(successors: Callable[[int], Iterable[LabelledKey]], source: in
             if successor not in parents:
                 parents[successor] = (label, key)
                 queue.append(successor)
-    raise AssertionError("the component has no path to a goal state")
+    return None
 
 
 def _walk_back(parents: dict[int, Optional[LabelledKey]], key: int) -> list[LabelledKey]:
@@ -52,17 +61,37 @@ def _walk_back(parents: dict[int, Optional[LabelledKey]], key: int) -> list[Labe
     return path
 
 
-def build_lasso(product: Product, dfs_path: list[int], component: Collection[int]
-                ) -> tuple[list[LassoStep], list[LassoStep], Hashable]:
-    """(prefix, cycle, closing label) for a component rooted at ``dfs_path[-1]``."""
-    root = dfs_path[-1]
+def build_lasso(product: Product, dfs_path: list[int], component: Collection[int],
+                explored: Container[int]) -> tuple[list[LassoStep], list[LassoStep], Hashable]:
+    """(prefix, cycle, closing label) for a component reached by ``dfs_path``."""
+    entry = _shortest_entry(product, dfs_path, component, explored)
+    root = entry[-1][1]
     successors = product.labelled_successor_keys
-    to_accepting = shortest_path(successors, root, product.is_accepting, component, 0)
-    accepting = to_accepting[-1][1]
-    back = shortest_path(successors, accepting, lambda key: key == root, component, 1)
+    to_accepting = shortest_path(successors, [root], product.is_accepting, component, 0)
+    back = to_accepting and shortest_path(successors, [to_accepting[-1][1]],
+                                          lambda key: key == root, component, 1)
+    if not back:
+        raise AssertionError("the accepting component is not strongly connected")
     loop = to_accepting + back[1:-1]
-    prefix = product.path_steps(dfs_path[:-1], None)
-    entry_label = product.label_between(dfs_path[-2], root) if len(dfs_path) > 1 else None
+    prefix = [product.lasso_step(key, label) for label, key in entry[:-1]]
     cycle = [product.lasso_step(key, label) for label, key in loop]
-    cycle[0].label = entry_label
+    cycle[0].label = entry[-1][0]
     return prefix, cycle, back[-1][0]
+
+
+def _shortest_entry(product: Product, dfs_path: list[int], component: Collection[int],
+                    explored: Container[int]) -> list[LabelledKey]:
+    """A shortest path through explored states into the component, else the DFS path.
+
+    The breadth-first search asks the model again for every state it
+    expands, so it may expand only a few times as many states as the DFS
+    path is long (the DFS path costs one expansion per step to label).
+    """
+    limit = 4 * len(dfs_path) + 1000
+    entry = shortest_path(product.labelled_successor_keys, product.initial_keys(),
+                          component.__contains__, explored, 0, limit)
+    if entry is not None and len(entry) <= len(dfs_path):
+        return entry
+    labels = [None] + [product.label_between(before, after)
+                       for before, after in zip(dfs_path, dfs_path[1:])]
+    return list(zip(labels, dfs_path))

@@ -47,6 +47,8 @@ class Product:
                 if valuation & positive == positive and not valuation & negative]
 
     def initial_keys(self) -> list[int]:
+        if not self.edges:
+            return []
         keys = []
         for state_id in self.store.initial_ids():
             valuation = self.store.valuations[state_id]
@@ -91,13 +93,3 @@ class Product:
     def lasso_step(self, key: int, label: Optional[Hashable]) -> LassoStep:
         state_id, q = divmod(key, self.width)
         return LassoStep(label, self.store.states[state_id], q)
-
-    def path_steps(self, keys: list[int], first_label: Optional[Hashable]) -> list[LassoStep]:
-        """Lasso steps along consecutive product keys; ``first_label`` leads into ``keys[0]``."""
-        steps = []
-        label = first_label
-        for index, key in enumerate(keys):
-            if index:
-                label = self.label_between(keys[index - 1], key)
-            steps.append(self.lasso_step(key, label))
-        return steps

@@ -28,13 +28,14 @@ from __future__ import annotations
 
 import re
 import subprocess
+from dataclasses import dataclass
 from typing import Optional, Sequence
 
 from ..diagnostics import AUTOMATON, error
 from .buchi import Buchi, Edge
 from .guards import cubes
 from .printing import to_spin
-from .syntax import Formula, parse_formula
+from .syntax import Formula, atoms_of, parse_formula
 
 LABEL = re.compile(r"^([A-Za-z_][A-Za-z0-9_]*):$")
 GOTO = re.compile(r"^::\s*(.*?)\s*->\s*goto\s+([A-Za-z_][A-Za-z0-9_]*)$")
@@ -140,12 +141,46 @@ def _blocks(text: str) -> dict[str, tuple[bool, str, list[tuple[str, str]]]]:
 def spin_translate(formula: Formula, atoms: Optional[Sequence[str]] = None,
                    timeout: float = 10.0, spin: str = "spin") -> Buchi:
     """Translate with ``spin -f``; raises ``subprocess.TimeoutExpired`` on timeout."""
-    atoms = tuple(atoms) if atoms is not None else None
-    from .syntax import atoms_of
-    atoms = atoms or atoms_of(formula)
+    atoms = tuple(atoms) if atoms is not None else atoms_of(formula)
     completed = subprocess.run([spin, "-f", to_spin(formula, atoms)], capture_output=True,
                                text=True, timeout=timeout, check=False)
     if completed.returncode != 0 or "never" not in completed.stdout:
         raise error(AUTOMATON, f"spin failed on {to_spin(formula, atoms)!r}: "
                                f"{(completed.stderr or completed.stdout).strip()}")
     return read_never_claim(completed.stdout, atoms)
+
+
+@dataclass(frozen=True)
+class CrossCheck:
+    """The outcome of holding one translation against SPIN's for one formula."""
+
+    formula: Formula
+    agrees: Optional[bool]      # None: SPIN timed out (a skip, counted by callers)
+    our_states: int
+    spin_states: int
+    detail: str = ""
+
+
+def cross_check(formula: Formula, translate_formula, atoms: Sequence[str],
+                timeout: float = 10.0, spin: str = "spin") -> CrossCheck:
+    """Check A(φ) × SPIN(¬φ) and SPIN(φ) × A(¬φ) are both empty.
+
+    ``translate_formula(formula, atoms) -> Buchi`` is the translator under
+    test.  Both products empty means the two translations accept the same
+    words: a word in one but not the other would satisfy φ and ¬φ.
+    """
+    from .lasso import product_is_empty
+    from .syntax import Not
+    ours, ours_negated = translate_formula(formula, atoms), translate_formula(Not(formula), atoms)
+    try:
+        theirs = spin_translate(formula, atoms, timeout, spin)
+        theirs_negated = spin_translate(Not(formula), atoms, timeout, spin)
+    except subprocess.TimeoutExpired:
+        return CrossCheck(formula, None, ours.state_count, 0, "spin timed out")
+    problems = []
+    if not product_is_empty(ours, theirs_negated):
+        problems.append("ours(φ) ∩ spin(¬φ) is not empty")
+    if not product_is_empty(theirs, ours_negated):
+        problems.append("spin(φ) ∩ ours(¬φ) is not empty")
+    return CrossCheck(formula, not problems, ours.state_count, theirs.state_count,
+                      "; ".join(problems))

@@ -38,6 +38,7 @@ class ParameterView:
     is_switch: bool
     types: tuple                    # accepted RapidTypes; () = anytype
     rank: int
+    predefined: bool = False        # a predefined routine's parameter (PERS read by value)
 
 
 def _absent(m):
@@ -124,6 +125,8 @@ def _binder(compiler: ExpressionCompiler, routine_name: str, param: ParameterVie
             compiler, arg, by_reference=param.mode != "IN")
     if signal_type is not None:
         return SIGNAL_ARG, signal_designator(compiler, arg.value, signal_type)
+    if param.mode == "PERS" and param.predefined:
+        return VALUE, _persistent_value(compiler, routine_name, param, arg)
     if param.mode == "IN":
         expected = param.types[0] if len(param.types) == 1 and not param.rank else None
         compiled = compiler.value(arg.value, _value_expectation(expected))
@@ -150,6 +153,25 @@ def _check_types(param: ParameterView, actual: Optional[AnyType], span, routine_
         wanted = " or ".join(str(t) for t in param.types)
         raise error(TYPE_MISMATCH, f"argument {param.name} of {routine_name} must be {wanted}, "
                     f"not {actual}", span)
+
+
+def _persistent_value(compiler, routine_name, param, arg) -> Callable:
+    """A predefined routine's PERS parameter: the value of a persistent (tool0 counts)."""
+    expr = arg.value
+    root = expr
+    while isinstance(root, (ast.Index, ast.Component)):
+        root = root.base
+    if isinstance(root, ast.NameRef):
+        symbol = compiler.scope.lookup(root.name.key) or compiler.linker.system_symbol(root.name)
+        storage = symbol.storage if symbol is not None else ""
+        if symbol is not None and storage not in ("PERS", "INOUT", "REF") and \
+                compiler.linker.options.get("strict_pers", True):
+            raise error(NOT_A_REFERENCE, f"argument {param.name} of {routine_name} must be a "
+                        f"persistent (PERS), not {storage or 'a value'} '{root.name.text}' "
+                        "(the controller requires PERS here)", expr.span)
+    compiled = compiler.value(expr, param.types[0] if len(param.types) == 1 else None)
+    _check_types(param, compiled.type, expr.span, routine_name)
+    return compiled.fn
 
 
 def _reference_binder(compiler, routine_name, param, arg) -> Callable:

@@ -306,8 +306,7 @@ class ExpressionCompiler:
             return self._logical(expr)
         hint = expected if is_numeric(expected) else None
         left = self.value(expr.left, hint)
-        right = self.value(expr.right, hint if left.type is None else
-                           (left.type if is_numeric(left.type) else None))
+        right = self.value(expr.right, hint)
         if op in ("=", "<>"):
             return self._equality(expr, left, right)
         if op in ("<", "<=", ">", ">="):

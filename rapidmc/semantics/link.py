@@ -300,10 +300,23 @@ class Linker:
             value = signal.index
         if rapid_type.key == "CLOCK":
             value = (False, 0.0, 0.0)
+        if decl.storage == "PERS" and decl.scope != ast.LOCAL:
+            shared = target.names.get(decl.name.key)
+            if shared is not None and shared.kind == GLOBAL_DATA and shared.storage == "PERS":
+                # one persistent declared in several modules is one object
+                data = self.globals[shared.slot]
+                if data.type != rapid_type:
+                    raise error(TYPE_MISMATCH, f"persistent '{decl.name.text}' is declared "
+                                f"with another type ({data.type}) elsewhere", decl.span)
+                if decl.init is not None and data.declared_without_value:
+                    data.initial = value
+                    data.declared_without_value = False
+                return
         slot = len(self.globals)
         data = P.GlobalData(slot, decl.name.text, decl.name.key, rapid_type, decl.storage,
                             module.name.text, namespace, decl.scope == ast.LOCAL, decl.span,
                             value)
+        data.declared_without_value = decl.init is None
         self.globals.append(data)
         symbol = Symbol(GLOBAL_DATA, decl.name.text, rapid_type, slot=slot, storage=decl.storage,
                         span=decl.span)

@@ -33,6 +33,7 @@ class GlobalData:
     local: bool
     span: Span
     initial: Any = None           # initial value (computed at link time)
+    declared_without_value: bool = False
 
 
 @dataclass

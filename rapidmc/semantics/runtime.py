@@ -27,6 +27,15 @@ def plain(value):
     return None if value is ABSENT else value
 
 
+def _argument_expression(args, key: str, position: int):
+    """The expression passed for parameter ``key`` (by name, else by position)."""
+    for arg in args:
+        if arg.name is not None and arg.name.key == key:
+            return arg.value
+    positional = [a for a in args if a.kind == ast.REQUIRED and a.name is None]
+    return positional[position].value if position < len(positional) else None
+
+
 class PredefinedCalls:
     """Compiles calls of predefined functions and procedures for one linker."""
 
@@ -47,7 +56,7 @@ class PredefinedCalls:
                     types = ()
                 cached.append(ParameterView(spec.name, spec.key, spec.mode, spec.optional,
                                             spec.alternative_group, spec.is_switch, types,
-                                            spec.array_rank))
+                                            spec.array_rank, predefined=True))
             self._views[key] = cached
         return cached
 
@@ -82,8 +91,8 @@ class PredefinedCalls:
                             "not supported by rapidmc", expr.span)
             return factory(self, compiler, expr, entry)
         binders = bind(compiler, entry.signature.name, self.views(entry), expr.args, expr.span)
-        impl = entry.impl
-        fns = [fn for _, fn in binders]
+        impl = self.implementation(compiler, entry, expr.args)
+        fns = self.argument_functions(entry, binders)
         return_type = self.return_type(entry)
         if len(fns) == 1:
             only = fns[0]
@@ -92,6 +101,33 @@ class PredefinedCalls:
             first, second = fns
             return Compiled(lambda m: impl(plain(first(m)), plain(second(m))), return_type)
         return Compiled(lambda m: impl(*[plain(fn(m)) for fn in fns]), return_type)
+
+    def argument_functions(self, entry, binders) -> list:
+        """Per parameter: fn(m) -> the Python value a registry implementation receives."""
+        fns = []
+        for spec, (_, fn) in zip(entry.signature.parameters, binders):
+            if spec.is_switch:
+                fns.append(lambda m, fn=fn: fn(m) is True)
+            else:
+                fns.append(fn)
+        return fns
+
+    def implementation(self, compiler, entry, args):
+        """The implementation for the static type of the call's first ``anynum`` argument."""
+        for position, spec in enumerate(entry.signature.parameters):
+            if spec.type_name != "anynum":
+                continue
+            expr = _argument_expression(args, spec.key, position)
+            if expr is None:
+                break
+            if spec.by_reference:
+                _, arg_type, _ = compiler.reference(expr, "passed")
+            else:
+                arg_type = compiler.value(expr).type
+            if arg_type is not None and getattr(arg_type, "key", "") == "DNUM":
+                return entry.implementation("dnum")
+            break
+        return entry.impl
 
     def bind(self, compiler, entry, args, span):
         return bind(compiler, entry.signature.name, self.views(entry), args, span)
@@ -117,14 +153,13 @@ class PredefinedCalls:
             return factory(self, compiler, statement, entry)
         binders = bind(compiler, entry.signature.name, self.views(entry), statement.args,
                        statement.span)
-        return Action(statement.span, self._pure_procedure(entry, binders))
+        impl = self.implementation(compiler, entry, statement.args)
+        return Action(statement.span, self._pure_procedure(entry, impl, binders))
 
-    @staticmethod
-    def _pure_procedure(entry, binders) -> Callable:
-        impl = entry.impl
+    def _pure_procedure(self, entry, impl, binders) -> Callable:
         names = [spec.name for spec in entry.signature.parameters]
         kinds = [kind for kind, _ in binders]
-        fns = [fn for _, fn in binders]
+        fns = self.argument_functions(entry, binders)
 
         def call(m):
             refs = {}

@@ -783,6 +783,9 @@ def _exit_cycle(calls, compiler, call, entry):
 
     def restart(m, instruction):
         unwind_all(m)
+        if not m.chooser.check_mode:
+            m.status = ENDED           # a run is one cycle
+            return
         main = m.program.routines[m.program.entry]
         m.frames = [Frame(main.index, 0, main.initial_locals)]
     return ControlAction(call.span, restart)

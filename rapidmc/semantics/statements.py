@@ -156,6 +156,15 @@ class RoutineCompiler:
     def _Assignment(self, statement: ast.Assignment, follow: Label) -> None:
         compiler = self.expressions()
         target = statement.target
+        root_expr = target
+        while isinstance(root_expr, (ast.Index, ast.Component)):
+            root_expr = root_expr.base
+        if isinstance(root_expr, ast.NameRef):
+            root_symbol = self.scope.lookup(root_expr.name.key) or \
+                self.linker.system_symbol(root_expr.name)
+            if root_symbol is not None and root_symbol.kind == CONSTANT:
+                raise error(ASSIGN_CONST, f"cannot assign to constant '{root_expr.name.text}'",
+                            target.span)
         ref_fn, target_type, symbol = compiler.reference(target, "assigned")
         root = symbol
         if root.kind == CONSTANT or root.storage in ("CONST",):
@@ -172,15 +181,17 @@ class RoutineCompiler:
             slot = root.slot
 
             def assign_global(m):
-                m.store = m.store.set(slot, value_fn(m))
+                value = value_fn(m)          # first: a function may change the store
+                m.store = m.store.set(slot, value)
             fn = assign_global
         elif isinstance(target, ast.NameRef) and root.kind == LOCAL_DATA and not root.by_reference:
             slot = root.slot
 
             def assign_local(m):
+                value = value_fn(m)          # first: a function may change the frame
                 frame = m.frames[-1]
                 values_ = list(frame.locals)
-                values_[slot] = value_fn(m)
+                values_[slot] = value
                 m.frames[-1] = frame._replace(locals=tuple(values_))
             fn = assign_local
         else:

@@ -238,7 +238,7 @@ def step(program: Program, state: State, chooser: Chooser) -> Transition:
         run_environment_routine(m, program.environment_react)
         if m.interrupts.table and m.io != io_mid:
             _signal_edges(m, io_mid)
-    return Transition(tuple(m.choices), span, m.to_state(), "\n".join(m.output))
+    return Transition(tuple(m.choices), span, m.to_state(), "".join(line + "\n" for line in m.output))
 
 
 def _execute(m: Machine):

@@ -193,11 +193,16 @@ def _general(x: float, significant: int) -> str:
 
 
 def format_num(x: float) -> str:
-    """A num as ValToStr and TPWrite \\Num print it: six significant digits.
+    """A num as ValToStr and TPWrite \\Num print it.
 
-    >>> format_num(5.0), format_num(to_num(0.1)), format_num(1e7)
-    ('5', '0.1', '1E+07')
+    Integers in num's exact range (|x| <= 8388608) print in full; anything
+    else with six significant digits.
+
+    >>> format_num(5.0), format_num(to_num(0.1)), format_num(3628800.0), format_num(1e7)
+    ('5', '0.1', '3628800', '1E+07')
     """
+    if -NUM_EXACT_INTEGER <= x <= NUM_EXACT_INTEGER and x == int(x):
+        return str(int(x))
     return _general(x, NUM_SIGNIFICANT)
 
 
