@@ -18,7 +18,8 @@ from .semantics.errors import errno_name
 from .semantics.machine import Machine
 from .semantics.program import Program
 from .semantics.state import ENDED, FAILED, RUNNING, State
-from .semantics.step import Chooser, EnvironmentFault, enqueue, start_state, step
+from .semantics.step import Chooser, EnvironmentFault, start_state, step
+from .semantics.timing import advance_to, next_event
 from .semantics.values import format_num
 
 
@@ -50,28 +51,7 @@ class ConsoleChooser(Chooser):
         return True
 
     def advance_time(self, m: Machine, seconds: float) -> None:
-        m.clock += seconds
-        fire_timers(m)
-
-
-def fire_timers(m: Machine) -> None:
-    table = list(m.interrupts.table)
-    for i, entry in enumerate(table):
-        if entry.active and entry.source and entry.source[0] == "timer":
-            _, period, once = entry.source
-            if entry.due <= m.clock + 1e-9:
-                enqueue(m, entry.number)
-                due = entry.due
-                while due <= m.clock + 1e-9 and period > 0:
-                    due += period
-                table[i] = entry._replace(due=due)
-    m.interrupts = m.interrupts._replace(table=tuple(table))
-
-
-def next_timer(state: State) -> Optional[float]:
-    dues = [e.due for e in state.interrupts.table
-            if e.active and e.source and e.source[0] == "timer"]
-    return min(dues) if dues else None
+        advance_to(m, m.clock + seconds)
 
 
 @dataclass
@@ -105,15 +85,14 @@ def run_program(program: Program, io_values: dict, stdin: TextIO, stdout: TextIO
 
 def _wake(program: Program, state: State, transition):
     """A step changed nothing: the program waits. Let virtual time pass, or report a deadlock."""
-    due = next_timer(state)
-    if due is None or state.interrupts.pending or not state.interrupts.enabled:
+    due = next_event(state.interrupts)
+    if due is None or state.interrupts.pending:
         frame = state.frames[-1]
         span = program.routines[frame.routine].code[frame.pc].span
         raise error(RUNTIME_ERROR, "deadlock: the program waits for a condition that can never "
                     "become true (inputs keep their --io values in run mode)", span)
     m = Machine(program, state, None)
-    m.clock = max(m.clock, due)
-    fire_timers(m)
+    advance_to(m, due)
     return transition._replace(state=m.to_state())
 
 

@@ -229,3 +229,16 @@ def test_prefix_is_a_shortest_path_into_the_accepting_cycle():
     assert [(step.label, step.state) for step in result.prefix] == [(None, 0)]
     assert [(step.label, step.state) for step in result.cycle] == [("b", 4)]
     assert result.closing_label == "end"
+
+
+def test_models_may_return_generators_and_deadlock_is_still_seen():
+    class Lazy:
+        def initial_states(self):
+            return iter([0])
+
+        def successors(self, x):
+            return (("go", y) for y in ([x + 1] if x < 3 else []))
+
+    result = check_property(Lazy(), NOT_ALWAYS_P, lambda x: int(x != 3))
+    assert result.verdict == "VIOLATED" and result.stats.deadlocks == 1
+    assert [step.state for step in result.prefix + result.cycle] == [0, 1, 2, 3]

@@ -56,7 +56,12 @@ STUTTER = _Stutter()
 
 def labelled_successors(system: TransitionSystem, state: Hashable) -> Sequence[tuple[Label, Hashable]]:
     """The successors of ``state``; a deadlocked state repeats itself via ``STUTTER``."""
-    successors = system.successors(state)
+    successors = as_sequence(system.successors(state))
     if not successors:
         return ((STUTTER, state),)
     return successors
+
+
+def as_sequence(successors) -> Sequence:
+    """``successors`` as a list or tuple (a model may hand back any iterable)."""
+    return successors if isinstance(successors, (list, tuple)) else tuple(successors)

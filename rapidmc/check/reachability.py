@@ -16,7 +16,7 @@ from array import array
 from typing import Callable, Hashable, Optional
 
 from .budget import DEFAULT_MAX_STATES, SearchBudget
-from .model import TransitionSystem
+from .model import TransitionSystem, as_sequence
 from .progress import Progress
 from .result import (HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep,
                      SearchResult, SearchStats)
@@ -91,7 +91,7 @@ class _BreadthFirst:
         return None
 
     def _expand(self, state_id: int) -> Optional[int]:
-        successors = self.system.successors(self.states[state_id])
+        successors = as_sequence(self.system.successors(self.states[state_id]))
         self.transitions += len(successors)
         if not successors:
             self.deadlocks += 1

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from typing import Hashable, Sequence
 
-from .model import Label, TransitionSystem, Valuation, labelled_successors
+from .model import Label, TransitionSystem, Valuation, as_sequence, labelled_successors
 
 SUCCESSOR_CACHE_SIZE = 1 << 16
 
@@ -51,7 +51,7 @@ class ModelStore:
         if cached is not None:
             return cached
         state = self.states[state_id]
-        successors = self.system.successors(state)
+        successors = as_sequence(self.system.successors(state))
         if not successors:
             self.deadlocked.add(state_id)
             result: tuple[int, ...] = (state_id,)

@@ -95,8 +95,8 @@ class Routine:
         self.initial_locals = tuple(self.initial)
         return self.local_count - 1
 
-    def new_temporary(self, count: int = 1, name: str = "") -> int:
-        first = self.add_local(name or f"<tmp{self.local_count}>", 0.0)
+    def new_temporary(self, count: int = 1, name: str = "", initial: Any = 0.0) -> int:
+        first = self.add_local(name or f"<tmp{self.local_count}>", initial)
         for _ in range(count - 1):
             self.add_local(f"<{name}:hidden>", 0.0)
         return first

@@ -22,6 +22,7 @@ from .instructions import Action, ControlAction, Instruction, Wait, enter_routin
 from .machine import ABSENT, GLOBAL
 from .scope import LOCAL_DATA
 from .state import ENDED, Frame, Interrupt, Interrupts
+from .timing import advance_to, next_event, schedule
 from .types import (BOOL, DNUM, NUM, RECORD, SEMI_VALUE, STRING, ArrayType, RapidType)
 
 FUNCTIONS: dict[str, Callable] = {}
@@ -324,14 +325,47 @@ def _invert(calls, compiler, call, entry):
 
 @procedure("PulseDO")
 def _pulse(calls, compiler, call, entry):
-    # The pulse itself is shorter than a step; only its end value is modelled.
-    def end_value(m, arguments, old):
-        return 0.0 if arguments.value("High")(m) is True else old
-    return _signal_action(calls, compiler, call, entry, end_value)
+    """A pulse of \\PLength seconds (default 0.2): inverted (or high) now, back afterwards."""
+    arguments = Arguments(calls, compiler, call, entry)
+    signal = arguments.fn("Signal")
+    high = arguments.value("High")
+    length = arguments.value("PLength")
+
+    def pulse(m):
+        index = signal(m)
+        old = m.io[index]
+        seconds = length(m)
+        seconds = 0.2 if seconds is ABSENT else seconds
+        if high(m) is True:
+            _write_signal(m, index, 1.0)
+            schedule(m, seconds, index, 0.0)
+        else:
+            _write_signal(m, index, 1.0 - old)
+            schedule(m, seconds, index, old)
+    return Action(call.span, pulse)
 
 
-@procedure("SetDO", "SetDI")
+@procedure("SetDO")
 def _set_do(calls, compiler, call, entry):
+    """SetDO: at once, or after \\SDelay seconds."""
+    arguments = Arguments(calls, compiler, call, entry)
+    signal = arguments.fn("Signal")
+    value = arguments.value("Value")
+    delay = arguments.value("SDelay")
+
+    def set_do(m):
+        index = signal(m)
+        new = _dionum(value(m))
+        seconds = delay(m)
+        if seconds is ABSENT or seconds <= 0:
+            _write_signal(m, index, new)
+        else:
+            schedule(m, seconds, index, new)
+    return Action(call.span, set_do)
+
+
+@procedure("SetDI")
+def _set_di(calls, compiler, call, entry):
     def new_value(m, arguments, old):
         return _dionum(arguments.value("Value")(m))
     return _signal_action(calls, compiler, call, entry, new_value)
@@ -504,14 +538,31 @@ def _tp_read_fk(calls, compiler, call, entry):
 
 @procedure("WaitTime")
 def _wait_time(calls, compiler, call, entry):
+    """One step when model checking; in run mode interrupts are served during the wait."""
     seconds = Arguments(calls, compiler, call, entry).value("Time")
+    deadline_slot = compiler.routine.new_temporary(1, "<WaitTime deadline>", -1.0)
 
-    def wait(m):
-        t = seconds(m)
-        if t < 0:
-            raise RapidError("ERR_ARGVALERR", "WaitTime needs a time >= 0")
-        m.chooser.advance_time(m, t)
-    return Action(call.span, wait)
+    def wait(m, instruction):
+        if m.chooser.check_mode:
+            if seconds(m) < 0:
+                raise RapidError("ERR_ARGVALERR", "WaitTime needs a time >= 0")
+            m.goto(instruction.next)
+            return
+        deadline = m.frames[-1].locals[deadline_slot]
+        if deadline < 0:
+            t = seconds(m)
+            if t < 0:
+                raise RapidError("ERR_ARGVALERR", "WaitTime needs a time >= 0")
+            deadline = m.clock + t
+        due = next_event(m.interrupts)
+        if due is not None and due < deadline - 1e-9:
+            advance_to(m, due)
+            m.set_local(deadline_slot, deadline)
+            return                      # still waiting: a trap may run first
+        advance_to(m, deadline)
+        m.set_local(deadline_slot, -1.0)
+        m.goto(instruction.next)
+    return ControlAction(call.span, wait)
 
 
 def _wait(calls, compiler, call, entry, condition_factory, what: str) -> Instruction:

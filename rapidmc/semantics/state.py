@@ -54,6 +54,7 @@ class Interrupts(NamedTuple):
     table: tuple = ()       # Interrupt entries ordered by number
     pending: tuple = ()     # interrupt numbers waiting for their trap
     enabled: bool = True    # IDisable queues, IEnable delivers
+    scheduled: tuple = ()   # delayed signal changes (due time, signal index, value), in order
 
 
 class Fault(NamedTuple):

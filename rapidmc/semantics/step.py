@@ -29,7 +29,7 @@ from .instructions import ReRaise
 from .machine import Machine
 from .program import Program
 from .state import ENDED, FAILED, RUNNING, Frame, Interrupts, State, Transition
-from .types import default_value
+from .timing import apply_scheduled, enqueue
 
 ENVIRONMENT_STEP_LIMIT = 100_000
 
@@ -227,6 +227,8 @@ def step(program: Program, state: State, chooser: Chooser) -> Transition:
     m = Machine(program, state, chooser)
     for index, name, domain in chooser.free_inputs(program):
         m.io = m.io.set(index, m.choose(name, domain))
+    if chooser.check_mode and m.interrupts.scheduled:
+        apply_scheduled(m)                 # time is abstract: delayed changes happen now
     io_before = state.io
     if chooser.check_mode and m.interrupts.table:
         _timers_may_fire(m)
@@ -275,12 +277,6 @@ def _in_trap(m: Machine) -> bool:
 def _deactivate(m: Machine, number: int) -> None:
     m.interrupts = m.interrupts._replace(table=tuple(
         e._replace(active=False) if e.number == number else e for e in m.interrupts.table))
-
-
-def enqueue(m: Machine, number: int) -> None:
-    pending = m.interrupts.pending
-    if number not in pending:
-        m.interrupts = m.interrupts._replace(pending=pending + (number,))
 
 
 def _signal_edges(m: Machine, before) -> None:
