@@ -20,10 +20,32 @@ GOOD = ROOT / "tests" / "syntax" / "good"
 PROGRAMS = sorted(GOOD.glob("*.mod")) + sorted((ROOT / "case_studies").rglob("*.mod"))
 
 
-@pytest.mark.parametrize("path", [pytest.param(p, id=p.name) for p in PROGRAMS])
+@pytest.mark.parametrize("path", [pytest.param(p, id=str(p.relative_to(ROOT))) for p in PROGRAMS])
 def test_program_parses(path):
     modules = parse_file(str(path))
     assert modules and all(isinstance(m, ast.Module) for m in modules)
+
+
+def assignments(statements):
+    """Every assignment in ``statements``, nested blocks included."""
+    for statement in statements:
+        if isinstance(statement, ast.Assignment):
+            yield statement
+        for block in ("body", "else_body", "default"):
+            yield from assignments(getattr(statement, block, None) or ())
+        for branch in getattr(statement, "branches", ()):
+            yield from assignments(branch.body)
+
+
+@pytest.mark.parametrize("program", ["sorter_a", "sorter_b", "sorter_c"])
+def test_sorter_flag_2_reads_not_over_the_rest_of_the_expression(program):
+    """The paper's property P2 depends on this reading (reference 2.7)."""
+    path = ROOT / "case_studies" / "sorter" / f"{program}.mod"
+    (module,) = parse_file(str(path))
+    flags = [a for r in module.routines for a in assignments(r.body)
+             if isinstance(a.target, ast.NameRef) and a.target.name.key == "FLAG_2"]
+    assert [sexpr(a.value) for a in flags] == [
+        "(AND (= c_in 0) (NOT (AND (= s1 1) (= s2 1))))"]
 
 
 @pytest.fixture(scope="module")
