@@ -874,10 +874,16 @@ def _call_by_var(calls, compiler, call, entry):
 # Model-only routines (environment modules)
 # ===========================================================================
 
+def _where(span) -> str:
+    from pathlib import Path
+    return f"{Path(span.file).name}:{span.line}:{span.column}"
+
+
 @function("AnyBool")
 def _any_bool(calls, compiler, call, entry) -> Compiled:
     Arguments(calls, compiler, call, entry)
-    return Compiled(lambda m: m.choose("AnyBool", (False, True)), BOOL)
+    name = f"AnyBool at {_where(call.span)}"
+    return Compiled(lambda m: m.choose(name, (False, True)), BOOL)
 
 
 @function("AnyNum")
@@ -885,11 +891,12 @@ def _any_num(calls, compiler, call, entry) -> Compiled:
     arguments = Arguments(calls, compiler, call, entry)
     low = arguments.value("Low")
     high = arguments.value("High")
+    name = f"AnyNum at {_where(call.span)}"
 
     def any_num(m):
         lo, hi = low(m), high(m)
         if lo != int(lo) or hi != int(hi) or hi < lo or hi - lo > 1000:
             raise RapidError("ERR_ARGVALERR", "AnyNum needs integer bounds Low <= High "
                              "(at most 1001 values)")
-        return m.choose("AnyNum", tuple(float(v) for v in range(int(lo), int(hi) + 1)))
+        return m.choose(name, tuple(float(v) for v in range(int(lo), int(hi) + 1)))
     return Compiled(any_num, NUM)

@@ -1,0 +1,191 @@
+"""``rapidmc check PROGRAM... --ltl FILE [--env PLANT.mod]``: model-check a RAPID program.
+
+Explores every run of the program for every sequence of inputs (free
+digital inputs, FlexPendant answers, environment choices), on the fly,
+against the Büchi automaton of each property's negation.
+
+Exit codes: 0 every property (and the built-in checks) holds; 1 some
+property is violated or a run-time error / deadlock is reachable; 2 bad
+input or usage; 3 no violation found but some search was bounded (UNKNOWN).
+"""
+from __future__ import annotations
+
+import argparse
+import sys
+from typing import Optional
+
+from .. import ast
+from ..check import (HOLDS, UNKNOWN, VIOLATED, Progress, PropertyResult, check_property,
+                     find_reachable, format_json, format_text)
+from ..diagnostics import (AUTOMATON, DOMAIN, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN,
+                           EXIT_VIOLATED, TRACE_REPLAY, USAGE, UserError, error)
+from ..ltl import BACKENDS, read_hoa, to_buchi, to_text
+from ..ltl.syntax import Not
+from ..model import RapidDescriber, RapidSystem, replay, with_final_loop
+from ..properties import (AtomCompiler, Property, check_unique, parse_property,
+                          read_property_file)
+from ..semantics.link import build
+from ..semantics.step import CheckConfig, EnvironmentFault
+from ..syntax import load_program
+
+DEFAULT_MAX_STATES = 1_000_000
+BUILTIN_RUNTIME = "no_runtime_error"
+BUILTIN_DEADLOCK = "no_deadlock"
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("files", nargs="+", metavar="FILE",
+                        help="RAPID module files of the program (.mod, .sys, .pgf ...)")
+    parser.add_argument("--ltl", action="append", default=[], metavar="FILE",
+                        help="property file: one 'NAME: FORMULA' per line (repeatable)")
+    parser.add_argument("--formula", action="append", default=[], metavar="'NAME: FORMULA'",
+                        help="an inline property (repeatable)")
+    parser.add_argument("--env", action="append", default=[], metavar="FILE",
+                        help="environment (plant) model module in RAPID (repeatable)")
+    parser.add_argument("--entry", default="main", metavar="NAME",
+                        help="procedure to start from (default: main)")
+    parser.add_argument("--max-states", type=int, default=DEFAULT_MAX_STATES, metavar="N",
+                        help=f"bound on stored states per search (default {DEFAULT_MAX_STATES:,})")
+    parser.add_argument("--max-seconds", type=float, default=None, metavar="S",
+                        help="bound on the time of each search")
+    parser.add_argument("--format", choices=("text", "json"), default="text",
+                        help="output format (default: text)")
+    parser.add_argument("--quiet", action="store_true", help="no progress line on stderr")
+    parser.add_argument("--tp-answers", default="1,2,3", metavar="LIST",
+                        help="answers TPReadNum/TPReadDnum may get (default: 1,2,3)")
+    parser.add_argument("--fk-answers", default="1,2,3,4,5", metavar="LIST",
+                        help="function keys TPReadFK may get (default: 1,2,3,4,5)")
+    parser.add_argument("--input-domain", action="append", default=[], metavar="NAME=LIST",
+                        help="finite values a free analog or group input may take, e.g. "
+                             "AI1=0,5,10 (repeatable)")
+    parser.add_argument("--automaton", action="append", default=[], metavar="NAME=FILE.hoa",
+                        help="use this Büchi automaton (HOA) for the NEGATION of property NAME")
+    parser.add_argument("--backend", choices=BACKENDS, default=None,
+                        help="LTL translator (default: spot when installed, else builtin)")
+
+
+def _numbers(text: str, option: str) -> tuple[float, ...]:
+    try:
+        values = tuple(float(v) for v in text.split(",") if v.strip())
+    except ValueError:
+        raise error(USAGE, f"{option} expects numbers separated by commas, got '{text}'") from None
+    if not values:
+        raise error(USAGE, f"{option} needs at least one value")
+    return values
+
+
+def _pairs(items: list[str], option: str) -> dict[str, str]:
+    result = {}
+    for item in items:
+        name, sep, value = item.partition("=")
+        if not sep or not name.strip() or not value.strip():
+            raise error(USAGE, f"{option} expects NAME=VALUE, got '{item}'")
+        result[name.strip()] = value.strip()
+    return result
+
+
+def gather_properties(args) -> list[Property]:
+    properties: list[Property] = []
+    for path in args.ltl:
+        properties.extend(read_property_file(path))
+    for number, text in enumerate(args.formula, start=1):
+        properties.append(parse_property(text, f"<--formula {number}>", 1))
+    check_unique(properties)
+    return properties
+
+
+def execute(args: argparse.Namespace) -> int:
+    properties = gather_properties(args)
+    automata = _pairs(args.automaton, "--automaton")
+    domains = {name.upper(): _numbers(values, "--input-domain")
+               for name, values in _pairs(args.input_domain, "--input-domain").items()}
+    program_ast = load_program(args.files)
+    environment = load_program(args.env) if args.env else None
+    program = build(program_ast, entry=args.entry, environment=environment)
+    config = CheckConfig(program, _numbers(args.tp_answers, "--tp-answers"),
+                         _numbers(args.fk_answers, "--fk-answers"), domains)
+    _check_domains(program, domains)
+    system = RapidSystem(program, config)
+    describer = RapidDescriber(program)
+    atoms = AtomCompiler(program)
+    jobs = [_prepare(prop, atoms, automata, args.backend) for prop in properties]
+    unknown = set(automata) - {p.name for p in properties}
+    if unknown:
+        raise error(USAGE, f"--automaton names no property: {', '.join(sorted(unknown))}")
+    bounds = dict(max_states=args.max_states, max_seconds=args.max_seconds)
+    results = []
+    try:
+        results.append(_builtin(system, BUILTIN_RUNTIME, "no reachable uncaught run-time error",
+                                system.failed, bounds, args.quiet))
+        results.append(_builtin(system, BUILTIN_DEADLOCK, "no reachable state where the program "
+                                "waits forever", system.stuck, bounds, args.quiet))
+        for prop, buchi, valuation in jobs:
+            result = check_property(system, buchi, valuation, progress=_progress(args.quiet),
+                                    **bounds)
+            _replayed(system, result)
+            results.append(PropertyResult(prop.name, prop.text, result))
+    except EnvironmentFault as exc:
+        raise error(ENVIRONMENT, f"environment model: {exc}") from None
+    if args.format == "json":
+        print(format_json(results, describer))
+    else:
+        print(format_text(results, describer))
+    verdicts = [r.result.verdict for r in results]
+    if VIOLATED in verdicts:
+        return EXIT_VIOLATED
+    if UNKNOWN in verdicts:
+        return EXIT_UNKNOWN
+    return EXIT_OK
+
+
+def _progress(quiet: bool) -> Progress:
+    return Progress(sys.stderr, quiet=quiet)
+
+
+def _prepare(prop: Property, atoms: AtomCompiler, automata: dict, backend):
+    """The automaton of the property's negation and the valuation of its atoms."""
+    where = ast.Span(prop.file, prop.line, 1)
+    path = automata.get(prop.name)
+    if path is not None:
+        try:
+            with open(path, encoding="latin-1") as handle:
+                buchi = read_hoa(handle.read(), path)
+        except OSError as exc:
+            raise error(AUTOMATON, f"cannot read automaton file '{path}': {exc.strerror}") from None
+    else:
+        buchi = to_buchi(Not(prop.formula), backend=backend)
+    spans = {atom: where for atom in buchi.atoms}
+    return prop, buchi, atoms.valuation(buchi.atoms, spans)
+
+
+def _builtin(system: RapidSystem, name: str, description: str, predicate, bounds,
+             quiet: bool) -> PropertyResult:
+    result = find_reachable(system, predicate, progress=_progress(quiet), **bounds)
+    if result.verdict == VIOLATED:
+        with_final_loop(system, result)
+        _replayed(system, result)
+    return PropertyResult(name, description, result)
+
+
+def _replayed(system: RapidSystem, result) -> None:
+    if result.verdict != VIOLATED:
+        return
+    try:
+        replay(system, result)
+    except AssertionError as exc:
+        raise RuntimeError(f"internal error: {exc} [{TRACE_REPLAY.code}]") from None
+
+
+def _check_domains(program, domains: dict) -> None:
+    for key in domains:
+        signal = program.signal(key)
+        if signal is None:
+            raise error(USAGE, f"--input-domain names unknown signal '{key}'")
+        if signal.kind not in ("AI", "GI"):
+            raise error(USAGE, f"--input-domain is for analog and group inputs; {signal.name} is "
+                        f"a {signal.kind}")
+    for signal in program.signals:
+        if signal.kind in ("AI", "GI") and not signal.driven and signal.key not in domains:
+            raise error(DOMAIN, f"free {signal.kind} input '{signal.name}' needs a finite set of "
+                        f"values: give --input-domain {signal.name}=v1,v2,... (or drive it from "
+                        "an environment model)", signal.span)

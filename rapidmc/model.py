@@ -1,0 +1,149 @@
+"""A RAPID program (with its environment) as a transition system for the checker.
+
+``RapidSystem`` adapts the semantics (``semantics.step``) to the engine's
+``TransitionSystem`` protocol: states are semantic ``State`` values, labels
+are ``(choices, span, output)``.  ``RapidDescriber`` turns states and
+labels into what a robot programmer reads in a counterexample, and
+``replay`` re-executes a counterexample through the step function before it
+is printed.
+"""
+from __future__ import annotations
+
+from typing import Hashable, Mapping, Optional
+
+from .check import TransitionInfo
+from .check.result import LassoStep, SearchResult
+from .diagnostics import TRACE_REPLAY, SourceCache, error
+from .semantics.program import PROGRAM_NAMESPACE, Program
+from .semantics.special_routines import format_typed, value_kind
+from .semantics.state import ENDED, FAILED, RUNNING, State
+from .semantics.step import CheckConfig, ScriptChooser, initial_states, successors
+from .semantics.values import format_num
+from .semantics.errors import errno_name
+
+
+class RapidSystem:
+    """The program's state graph, explored lazily."""
+
+    def __init__(self, program: Program, config: CheckConfig):
+        self.program = program
+        self.config = config
+        self._stuck_cache: dict[State, bool] = {}
+
+    def initial_states(self) -> list[State]:
+        return initial_states(self.program, lambda script: ScriptChooser(script, self.config))
+
+    def successors(self, state: State) -> list[tuple[Hashable, State]]:
+        return [((t.label, t.span, t.output), t.state)
+                for t in successors(self.program, state, self.config)]
+
+    # built-in safety checks ------------------------------------------------
+    @staticmethod
+    def failed(state: State) -> bool:
+        return state.status == FAILED
+
+    def stuck(self, state: State) -> bool:
+        """The program runs but no step can change anything: it waits forever."""
+        if state.status != RUNNING:
+            return False
+        return all(t.state == state for t in successors(self.program, state, self.config))
+
+
+def _format(value, kind) -> str:
+    try:
+        return format_typed(value, kind)
+    except Exception:
+        return repr(value)
+
+
+class RapidDescriber:
+    """Printable views of states and transitions, in RAPID terms."""
+
+    def __init__(self, program: Program):
+        self.program = program
+        self.globals = [(g.slot, g.name, value_kind(g.type), g.type) for g in program.globals
+                        if g.namespace == PROGRAM_NAMESPACE and
+                        getattr(g.type, "kind", "") not in ("semi-value", "non-value")]
+        self.environment = [(g.slot, g.name, value_kind(g.type)) for g in program.globals
+                            if g.namespace != PROGRAM_NAMESPACE and
+                            getattr(g.type, "kind", "") not in ("semi-value", "non-value")]
+
+    def describe_state(self, state: State) -> Mapping[str, str]:
+        view: dict[str, str] = {}
+        store = state.store
+        for slot, name, kind, _ in self.globals:
+            view[name] = _format(store[slot], kind)
+        for frame in state.frames:
+            routine = self.program.routines[frame.routine]
+            for name, value in zip(routine.local_names, frame.locals):
+                if name.startswith("<"):
+                    continue                       # FOR bounds, temporaries
+                if isinstance(value, tuple) and len(value) == 3 and isinstance(value[0], int) \
+                        and isinstance(value[2], tuple):
+                    continue                       # a reference parameter
+                view[f"{routine.name}.{name}"] = _format(value, "num")
+        for signal in self.program.signals:
+            view[f"signal {signal.name}"] = format_num(state.io[signal.index])
+        view["robot TCP"] = _format(state.robot[0][0], "num")
+        for slot, name, kind in self.environment:
+            view[f"env.{name}"] = _format(store[slot], kind)
+        if state.errno:
+            view["ERRNO"] = errno_name(int(state.errno))
+        if state.status == ENDED:
+            view["program"] = "ended"
+        elif state.status == FAILED:
+            view["program"] = f"stopped: uncaught {errno_name(state.fault.errno)} " \
+                              f"({state.fault.message})"
+        return view
+
+    def describe_transition(self, label) -> TransitionInfo:
+        choices, span, output = label
+        inputs = {name: _choice_text(value) for name, value in choices}
+        if span is None:
+            source = "(program ended: the state repeats)" if not choices else ""
+            return TransitionInfo(None, None, source, inputs, output)
+        text = SourceCache.line(span.file, span.line)
+        source = text.strip() if text is not None else ""
+        return TransitionInfo(span.file, span.line, source, inputs, output)
+
+
+def _choice_text(value) -> str:
+    if value is True:
+        return "TRUE"
+    if value is False:
+        return "FALSE"
+    if isinstance(value, float):
+        return format_num(value)
+    return str(value)
+
+
+def with_final_loop(system: RapidSystem, result: SearchResult) -> SearchResult:
+    """A reachability path ends in a state that repeats forever: make that the cycle."""
+    if result.prefix and not result.cycle:
+        last = result.prefix[-1]
+        transitions = system.successors(last.state)
+        loop = next((label for label, state in transitions if state == last.state), None)
+        result.cycle = [result.prefix.pop()]
+        result.closing_label = loop
+    return result
+
+
+def replay(system: RapidSystem, result: SearchResult) -> None:
+    """Re-execute a counterexample through the step function; a mismatch is an internal error."""
+    steps: list[LassoStep] = result.prefix + result.cycle
+    if not steps:
+        return
+    if steps[0].state not in system.initial_states():
+        raise AssertionError("counterexample does not start in an initial state")
+    for before, after in zip(steps, steps[1:]):
+        _check_step(system, before.state, after.label, after.state)
+    if result.cycle:
+        closing = result.closing_label
+        _check_step(system, steps[-1].state, closing, result.cycle[0].state)
+
+
+def _check_step(system: RapidSystem, before: State, label, after: State) -> None:
+    for candidate_label, candidate in system.successors(before):
+        if candidate == after and (label is None or candidate_label == label):
+            return
+    raise AssertionError(f"counterexample step does not replay (label {label!r})")
