@@ -900,3 +900,8 @@ def _any_num(calls, compiler, call, entry) -> Compiled:
                              "(at most 1001 values)")
         return m.choose(name, tuple(float(v) for v in range(int(lo), int(hi) + 1)))
     return Compiled(any_num, NUM)
+
+
+# Further groups of state-dependent routines register themselves through the
+# decorators above when imported.
+from . import special_io  # noqa: E402,F401  (sockets, files, more I/O)
