@@ -129,9 +129,9 @@ class UserError(Exception):
 
 
 def error(code: ErrorCode, message: str, span: Optional[Span] = None,
-          *notes: str) -> UserError:
+          *notes: str, exit_code: int = EXIT_INPUT_ERROR) -> UserError:
     """Shorthand: ``raise error(UNKNOWN_NAME, "unknown name 'x'", span)``."""
-    return UserError([Diagnostic(code, message, span, notes=tuple(notes))])
+    return UserError([Diagnostic(code, message, span, notes=tuple(notes))], exit_code)
 
 
 class SourceCache:

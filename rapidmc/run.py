@@ -33,7 +33,7 @@ class ConsoleChooser(Chooser):
         line = self.stdin.readline()
         if not line:
             raise error(INPUT_EXHAUSTED, f"{kind} waits for an answer but standard input has "
-                        "no more lines")
+                        "no more lines", exit_code=1)
         text = line.strip()
         try:
             value = float(text)
@@ -73,13 +73,13 @@ def run_program(program: Program, io_values: dict, stdin: TextIO, stdout: TextIO
             stdout.flush()
         if trace is not None and transition.span is not None:
             trace.write(f"{transition.span}\n")
-        if transition.state == state:
+        if transition.state == state:      # nothing changed: a wait or a busy loop
             transition = _wake(program, state, transition)
         state = transition.state
         steps += 1
         if max_steps is not None and steps >= max_steps and state.status == RUNNING:
             raise error(STEP_LIMIT, f"the program was stopped after {max_steps} steps "
-                        "(--max-steps)")
+                        "(--max-steps)", exit_code=1)
     return RunResult(state, steps)
 
 
@@ -90,7 +90,7 @@ def _wake(program: Program, state: State, transition):
         frame = state.frames[-1]
         span = program.routines[frame.routine].code[frame.pc].span
         raise error(RUNTIME_ERROR, "deadlock: the program waits for a condition that can never "
-                    "become true (inputs keep their --io values in run mode)", span)
+                    "become true (inputs keep their --io values in run mode)", span, exit_code=1)
     m = Machine(program, state, None)
     advance_to(m, due)
     return transition._replace(state=m.to_state())

@@ -83,3 +83,4 @@ class Transition(NamedTuple):
     span: object            # rapidmc.ast.Span of the executed statement (None at the end)
     state: State
     output: str = ""
+    waiting: bool = False   # the program is blocked in a wait (nothing else happened)

@@ -227,20 +227,38 @@ def step(program: Program, state: State, chooser: Chooser) -> Transition:
     m = Machine(program, state, chooser)
     for index, name, domain in chooser.free_inputs(program):
         m.io = m.io.set(index, m.choose(name, domain))
-    if chooser.check_mode and m.interrupts.scheduled:
-        apply_scheduled(m)                 # time is abstract: delayed changes happen now
-    io_before = state.io
-    if chooser.check_mode and m.interrupts.table:
-        _timers_may_fire(m)
-    span = _execute(m)
-    if m.interrupts.table and m.io != io_before:
-        _signal_edges(m, io_before)
+    interrupts = state.interrupts
+    if interrupts.table or interrupts.scheduled or interrupts.pending:
+        span = _step_with_interrupts(m, state)
+    else:
+        frame = m.frames[-1]
+        instruction = program.routines[frame.routine].code[frame.pc]
+        span = instruction.span
+        try:
+            instruction.run(m)
+        except RapidError as exc:
+            deliver_error(m, exc.errno, str(exc))
+        except ReRaise as exc:
+            deliver_error(m, exc.errno, errno_name(exc.errno), from_handler=True)
     if program.environment_react is not None and m.status == RUNNING:
         io_mid = m.io
         run_environment_routine(m, program.environment_react)
         if m.interrupts.table and m.io != io_mid:
             _signal_edges(m, io_mid)
-    return Transition(tuple(m.choices), span, m.to_state(), "".join(line + "\n" for line in m.output))
+    output = "".join(line + "\n" for line in m.output) if m.output else ""
+    return Transition(tuple(m.choices), span, m.to_state(), output, m.waiting)
+
+
+def _step_with_interrupts(m: Machine, state: State):
+    if m.chooser.check_mode and m.interrupts.scheduled:
+        apply_scheduled(m)                 # time is abstract: delayed changes happen now
+    io_before = state.io
+    if m.chooser.check_mode and m.interrupts.table:
+        _timers_may_fire(m)
+    span = _execute(m)
+    if m.interrupts.table and m.io != io_before:
+        _signal_edges(m, io_before)
+    return span
 
 
 def _execute(m: Machine):
