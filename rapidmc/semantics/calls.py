@@ -236,6 +236,7 @@ def _signal_type(param: ParameterView) -> Optional[RapidType]:
 def signal_designator(compiler: ExpressionCompiler, expr: ast.Expr,
                       signal_type: RapidType) -> Callable:
     """Compile a signal argument to ``fn(machine) -> physical signal index``."""
+    compiler.note_io_read()
     if isinstance(expr, ast.StringLiteral):
         raise error(TYPE_MISMATCH, "a signal is required here, not a string", expr.span)
     if isinstance(expr, ast.NameRef):

@@ -79,6 +79,11 @@ class ExpressionCompiler:
         self.hoist = hoist                  # callable(FunctionCall, routine) -> slot, or None
         self.constant_only = constant_only  # CONST/VAR initialisers: no variables, no calls
         self.routine = routine
+        self.io_reader = None               # callable noting that the code reads signals
+
+    def note_io_read(self) -> None:
+        if self.io_reader is not None:
+            self.io_reader()
 
     # ------------------------------------------------------------------ entry
     def value(self, expr: ast.Expr, expected: Optional[AnyType] = None) -> Compiled:
@@ -158,8 +163,11 @@ class ExpressionCompiler:
         slot = symbol.slot
         rapid_type = symbol.type
         if kind == SIGNAL:
+            self.note_io_read()
             return Compiled(lambda m: m.io[slot], NUM)
         is_signal = isinstance(rapid_type, RapidType) and rapid_type.kind == SEMI_VALUE
+        if is_signal:
+            self.note_io_read()
         if kind == GLOBAL_DATA:
             if is_signal:
                 return Compiled(lambda m: read_signal(m, m.store[slot]), NUM)

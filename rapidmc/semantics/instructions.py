@@ -22,13 +22,14 @@ from . import values
 
 
 class Instruction:
-    __slots__ = ("span", "next", "start", "after", "text")
+    __slots__ = ("span", "next", "start", "after", "text", "reads_io")
 
     def __init__(self, span):
         self.span = span
         self.next = -1
         self.start = -1
         self.after = -1
+        self.reads_io = False       # may read a signal value (inputs matter to this step)
 
     def run(self, m: Machine) -> None:
         raise NotImplementedError

@@ -183,6 +183,9 @@ class Linker:
             linked.environment_react = self._environment_routine("REACT", required=True,
                                                                  span=environment.modules[0].span)
         linked.scopes = self
+        linked.environment_reads_io = any(
+            instruction.reads_io for routine in self.routines
+            if routine.namespace != P.PROGRAM_NAMESPACE for instruction in routine.code)
         return linked
 
     def _declare(self, scope: Scope, key: str, symbol: Symbol, span, what: str) -> None:

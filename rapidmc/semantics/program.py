@@ -132,6 +132,7 @@ class Program:
     signal_index: dict = field(default_factory=dict)       # key -> Signal
     routine_index: dict = field(default_factory=dict)      # (namespace, key) -> routine index (global)
     scopes: Any = None                                     # name resolution for atoms
+    environment_reads_io: bool = False                     # some environment code reads signals
 
     def signal(self, key: str) -> Optional[Signal]:
         return self.signal_index.get(key)

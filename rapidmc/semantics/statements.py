@@ -53,6 +53,8 @@ class RoutineCompiler:
         self.section = "body"
         self.statement_start: Optional[Label] = None
         self.statement_after: Optional[Label] = None
+        self.statement_reads_io = False
+        self.statement_code: list[Instruction] = []
 
     # --------------------------------------------------------------- emission
     def emit(self, instruction: Instruction, next_label: Optional[Label] = None) -> Instruction:
@@ -63,6 +65,7 @@ class RoutineCompiler:
         instruction.start = self.statement_start
         instruction.after = self.statement_after
         self.code.append(instruction)
+        self.statement_code.append(instruction)
         if next_label is None:
             next_label = Label()
             self.waiting.append(next_label)
@@ -135,15 +138,27 @@ class RoutineCompiler:
         self.end_block(follow)
 
     def statement(self, statement, follow: Label) -> None:
-        saved = (self.statement_start, self.statement_after)
+        saved = (self.statement_start, self.statement_after, self.statement_reads_io,
+                 self.statement_code)
         self.statement_start = self.here()
         self.statement_after = follow
+        self.statement_reads_io = False
+        self.statement_code = []
         getattr(self, "_" + type(statement).__name__)(statement, follow)
-        self.statement_start, self.statement_after = saved
+        if self.statement_reads_io:
+            for instruction in self.statement_code:
+                instruction.reads_io = True
+        (self.statement_start, self.statement_after, self.statement_reads_io,
+         self.statement_code) = saved
+
+    def _note_io_read(self) -> None:
+        self.statement_reads_io = True
 
     def expressions(self, scope: Optional[Scope] = None) -> ExpressionCompiler:
-        return ExpressionCompiler(self.linker, scope or self.scope, hoist=self.hoist,
-                                  routine=self.routine)
+        compiler = ExpressionCompiler(self.linker, scope or self.scope, hoist=self.hoist,
+                                      routine=self.routine)
+        compiler.io_reader = self._note_io_read
+        return compiler
 
     def hoist(self, call: ast.FunctionCall, callee) -> int:
         """Emit the call of a user FUNC before the statement; return the result slot."""

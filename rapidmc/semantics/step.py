@@ -19,6 +19,7 @@ so the step code stays straight-line.
 """
 from __future__ import annotations
 
+import itertools
 from typing import Optional
 
 from pyrsistent import pvector
@@ -64,10 +65,11 @@ class ScriptChooser(Chooser):
 
     check_mode = True
 
-    def __init__(self, script: list, config: "CheckConfig"):
+    def __init__(self, script: list, config: "CheckConfig", inputs: bool = True):
         self.script = script
         self.sizes: list[int] = []
         self.config = config
+        self.inputs = inputs
 
     def choose(self, name: str, domain: tuple, position: int):
         self.sizes.append(len(domain))
@@ -84,7 +86,7 @@ class ScriptChooser(Chooser):
         return m.choose("timeout", (False, True))
 
     def free_inputs(self, program: Program) -> tuple:
-        return self.config.free_inputs
+        return self.config.free_inputs if self.inputs else ()
 
     def next_script(self) -> Optional[list]:
         script = list(self.script) + [0] * (len(self.sizes) - len(self.script))
@@ -111,6 +113,8 @@ class CheckConfig:
             elif signal.key in domains:
                 free.append((signal.index, signal.name, tuple(domains[signal.key])))
         self.free_inputs = tuple(free)
+        # every combination of free input values, in the order the chooser enumerates them
+        self.input_valuations = tuple(itertools.product(*(d for _, _, d in free)))
 
 
 # ---------------------------------------------------------------------------
@@ -213,10 +217,39 @@ def successors(program: Program, state: State, config: CheckConfig) -> list[Tran
     """Every transition from ``state`` (check mode), in a deterministic order."""
     if state.status != RUNNING:
         return [Transition((), None, state, "")]
+    if config.free_inputs and not _inputs_matter(program, state):
+        return _successors_inputs_after(program, state, config)
+    return list(enumerate_choices(lambda chooser: step(program, state, chooser),
+                                  lambda script: ScriptChooser(script, config)))
+
+
+def _inputs_matter(program: Program, state: State) -> bool:
+    """Whether this step's behaviour can depend on the free inputs' new values."""
+    if state.interrupts.table or state.interrupts.pending or program.environment_reads_io:
+        return True
+    frame = state.frames[-1]
+    return program.routines[frame.routine].code[frame.pc].reads_io
+
+
+def _successors_inputs_after(program: Program, state: State,
+                             config: CheckConfig) -> list[Transition]:
+    """The same successors as the general case, for a step that reads no signal.
+
+    The program's behaviour does not depend on the inputs' new values, so the
+    step runs once per other choice and every input valuation is applied to
+    its result, instead of re-running the step for each valuation.
+    """
+    inner = list(enumerate_choices(lambda chooser: step(program, state, chooser),
+                                   lambda script: ScriptChooser(script, config, inputs=False)))
     result = []
-    for transition in enumerate_choices(lambda chooser: step(program, state, chooser),
-                                        lambda script: ScriptChooser(script, config)):
-        result.append(transition)
+    for valuation in config.input_valuations:
+        for transition in inner:
+            io = transition.state.io
+            for (index, _, _), value in zip(config.free_inputs, valuation):
+                io = io.set(index, value)
+            label = tuple((name, value) for (_, name, _), value in
+                          zip(config.free_inputs, valuation)) + transition.label
+            result.append(transition._replace(label=label, state=transition.state._replace(io=io)))
     return result
 
 
