@@ -1,0 +1,198 @@
+"""``rapidmc check`` on the hand-checked cases under tests/check/.
+
+Each folder tests/check/<case>/ is one run of the checker, from inside the
+folder (so file names in the output and in ``args`` are the folder's own):
+
+* ``prog.mod`` — the program (always passed; leave it out to test a missing
+  program file);
+* ``env.mod`` — an environment module, passed with ``--env`` when present;
+* ``props.ltl`` — the properties, passed with ``--ltl`` when present; its
+  comments say how each verdict was derived by hand;
+* ``args`` — extra command-line options (shell quoting; lines starting with ``#``
+  are comments, in every data file);
+* ``expected`` — one ``NAME VERDICT`` line per property, the built-in
+  ``no_runtime_error`` and ``no_deadlock`` included; or, for bad input,
+  ``ERROR RMCnnn [FILE:LINE]``: the diagnostic code (and where it points)
+  expected on stderr;
+* ``exit`` — the exit code; by default 2 for an ERROR case, else 1 if any
+  verdict is VIOLATED, 3 if any is UNKNOWN, 0 otherwise.
+
+A VIOLATED verdict must come with a lasso: a non-empty cycle, and every step
+that names a source line names a real line of prog.mod with its text.
+
+A case whose verdict shows a checker bug carries a file ``xfail`` saying
+what the bug is; it runs as ``xfail(strict=True)``, so it fails loudly once
+the bug is fixed.
+"""
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import re
+import shlex
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Optional
+
+import pytest
+
+from rapidmc.cli import main
+
+CASES_DIR = Path(__file__).resolve().parent / "check"
+VERDICTS = ("HOLDS", "VIOLATED", "UNKNOWN")
+PROGRAM = "prog.mod"
+
+
+@dataclass(frozen=True)
+class ExpectedError:
+    code: str                  # RMC401
+    where: Optional[str]       # "props.ltl:3", or None when the position is not pinned
+
+
+@dataclass(frozen=True)
+class Case:
+    name: str
+    folder: Path
+    verdicts: dict             # property name -> verdict, in file order
+    error: Optional[ExpectedError]
+    extra_args: tuple
+    exit_code: int
+    xfail: Optional[str]
+
+    def argv(self) -> list[str]:
+        argv = ["check", PROGRAM]
+        if (self.folder / "env.mod").exists():
+            argv += ["--env", "env.mod"]
+        if (self.folder / "props.ltl").exists():
+            argv += ["--ltl", "props.ltl"]
+        return argv + ["--format", "json", "--quiet", *self.extra_args]
+
+
+def _data_lines(path: Path) -> list[str]:
+    if not path.exists():
+        return []
+    lines = []
+    for line in path.read_text(encoding="latin-1").splitlines():
+        line = line.strip()
+        if line and not line.startswith("#"):
+            lines.append(line)
+    return lines
+
+
+def _parse_expected(folder: Path) -> tuple[dict, Optional[ExpectedError]]:
+    verdicts: dict[str, str] = {}
+    expected_error = None
+    for line in _data_lines(folder / "expected"):
+        words = line.split()
+        if words[0] == "ERROR":
+            assert len(words) in (2, 3), f"{folder.name}/expected: bad line {line!r}"
+            expected_error = ExpectedError(words[1], words[2] if len(words) == 3 else None)
+            continue
+        assert len(words) == 2 and words[1] in VERDICTS, f"{folder.name}/expected: {line!r}"
+        verdicts[words[0]] = words[1]
+    assert bool(verdicts) != bool(expected_error), \
+        f"{folder.name}/expected: give verdicts or one ERROR line"
+    return verdicts, expected_error
+
+
+def _default_exit(verdicts: dict, expected_error: Optional[ExpectedError]) -> int:
+    if expected_error is not None:
+        return 2
+    if "VIOLATED" in verdicts.values():
+        return 1
+    if "UNKNOWN" in verdicts.values():
+        return 3
+    return 0
+
+
+def load_case(folder: Path) -> Case:
+    verdicts, expected_error = _parse_expected(folder)
+    args: list[str] = []
+    for line in _data_lines(folder / "args"):
+        args.extend(shlex.split(line))
+    exit_lines = _data_lines(folder / "exit")
+    exit_code = int(exit_lines[0]) if exit_lines else _default_exit(verdicts, expected_error)
+    xfail_lines = _data_lines(folder / "xfail")
+    xfail = " ".join(xfail_lines) if (folder / "xfail").exists() else None
+    return Case(folder.name, folder, verdicts, expected_error, tuple(args), exit_code, xfail)
+
+
+def all_cases() -> list:
+    params = []
+    for folder in sorted(p for p in CASES_DIR.iterdir() if p.is_dir()):
+        case = load_case(folder)
+        marks = [pytest.mark.xfail(strict=True, reason=case.xfail)] if case.xfail else []
+        params.append(pytest.param(case, id=case.name, marks=marks))
+    return params
+
+
+def run_check(case: Case, monkeypatch) -> tuple[int, str, str]:
+    monkeypatch.chdir(case.folder)
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        code = main(case.argv())
+    return code, out.getvalue(), err.getvalue()
+
+
+# --- what a result must look like ---------------------------------------------
+
+def assert_real_lasso(name: str, trace: Optional[dict], program_lines: list[str]) -> None:
+    """A violation's trace is a lasso whose located steps are real lines of prog.mod."""
+    assert trace is not None, f"{name}: VIOLATED without a trace"
+    assert trace["cycle"], f"{name}: the trace has an empty cycle (not a lasso)"
+    assert trace["loop_start"] == trace["cycle"][0]["index"]
+    steps = trace["prefix"] + trace["cycle"] + [trace["closing"]]
+    located = [step for step in steps if step is not None and step["location"] is not None]
+    assert located, f"{name}: no step of the trace names a source line"
+    for step in located:
+        location = step["location"]
+        assert Path(location["file"]).name == PROGRAM, f"{name}: step in {location['file']}"
+        line = location["line"]
+        assert 1 <= line <= len(program_lines), f"{name}: line {line} is not in {PROGRAM}"
+        assert step["source"] == program_lines[line - 1].strip(), \
+            f"{name}: step {step['index']} shows {step['source']!r}, line {line} reads " \
+            f"{program_lines[line - 1].strip()!r}"
+
+
+def assert_verdicts(case: Case, stdout: str) -> None:
+    document = json.loads(stdout)
+    got = {entry["name"]: entry["verdict"] for entry in document["properties"]}
+    assert got == case.verdicts
+    program_lines = (case.folder / PROGRAM).read_text(encoding="latin-1").splitlines()
+    for entry in document["properties"]:
+        if entry["verdict"] == "VIOLATED":
+            assert_real_lasso(entry["name"], entry["trace"], program_lines)
+        else:
+            assert entry["trace"] is None
+        if entry["verdict"] == "UNKNOWN":
+            assert entry["reason"], f"{entry['name']}: UNKNOWN without a reason"
+
+
+def assert_diagnostic(expected: ExpectedError, stdout: str, stderr: str) -> None:
+    assert stdout == "", "bad input must not print a report"
+    assert f"[{expected.code}]" in stderr, stderr
+    assert "Traceback" not in stderr, stderr
+    if expected.where is not None:
+        pattern = re.escape(expected.where) + r":\d+: error: .*\[" + expected.code + r"\]"
+        assert re.search(pattern, stderr), f"expected {expected.where}: ... [{expected.code}]\n" \
+                                           f"{stderr}"
+
+
+@pytest.mark.parametrize("case", all_cases())
+def test_check_case(case: Case, monkeypatch) -> None:
+    code, stdout, stderr = run_check(case, monkeypatch)
+    if case.error is not None:
+        assert_diagnostic(case.error, stdout, stderr)
+    else:
+        assert stdout, f"no report; stderr:\n{stderr}"
+        assert_verdicts(case, stdout)
+    assert code == case.exit_code, stderr
+
+
+def test_enough_hand_checked_cases() -> None:
+    """The suite keeps its breadth: 40 verdict cases and the bad-input cases."""
+    cases = [load_case(folder) for folder in CASES_DIR.iterdir() if folder.is_dir()]
+    assert sum(1 for c in cases if c.error is None) >= 40
+    assert {c.error.code for c in cases if c.error} >= {
+        "RMC001", "RMC214", "RMC401", "RMC402", "RMC403", "RMC405", "RMC502", "RMC503"}
