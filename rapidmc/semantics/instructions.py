@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from typing import Any, Callable, Optional
 
-from .errors import RapidError, USER_ERROR_RANGE
+from .errors import ERROR_NUMBERS, RapidError, USER_ERROR_RANGE
 from .machine import ABSENT, Machine
 from .state import ENDED, Frame, IN_HANDLER, IN_UNDO, NORMAL
 from . import values
@@ -310,7 +310,7 @@ class Retry(Instruction):
         frame = m.frames[-1]
         retries = frame.retries + 1
         if retries > m.program.options.get("max_retries", 4):
-            raise ReRaise(1001 + 10)     # ERR_EXCRTYMAX, see errors.ERROR_NAMES
+            raise ReRaise(ERROR_NUMBERS["ERR_EXCRTYMAX"])
         m.frames[-1] = frame._replace(pc=frame.error_pc, mode=NORMAL, retries=retries)
 
 
