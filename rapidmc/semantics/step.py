@@ -115,6 +115,13 @@ class CheckConfig:
         self.free_inputs = tuple(free)
         # every combination of free input values, in the order the chooser enumerates them
         self.input_valuations = tuple(itertools.product(*(d for _, _, d in free)))
+        # per valuation: pvector.mset arguments and the label part naming the values
+        self.input_assignments = tuple(
+            tuple(x for (index, _, _), value in zip(free, valuation) for x in (index, value))
+            for valuation in self.input_valuations)
+        self.input_labels = tuple(
+            tuple((name, value) for (_, name, _), value in zip(free, valuation))
+            for valuation in self.input_valuations)
 
 
 # ---------------------------------------------------------------------------
@@ -242,14 +249,12 @@ def _successors_inputs_after(program: Program, state: State,
     inner = list(enumerate_choices(lambda chooser: step(program, state, chooser),
                                    lambda script: ScriptChooser(script, config, inputs=False)))
     result = []
-    for valuation in config.input_valuations:
-        for transition in inner:
-            io = transition.state.io
-            for (index, _, _), value in zip(config.free_inputs, valuation):
-                io = io.set(index, value)
-            label = tuple((name, value) for (_, name, _), value in
-                          zip(config.free_inputs, valuation)) + transition.label
-            result.append(transition._replace(label=label, state=transition.state._replace(io=io)))
+    append = result.append
+    for assignments, input_label in zip(config.input_assignments, config.input_labels):
+        for label, span, after, output, waiting in inner:
+            fields = list(after)
+            fields[2] = after.io.mset(*assignments)
+            append(Transition(input_label + label, span, State(*fields), output, waiting))
     return result
 
 
