@@ -130,6 +130,7 @@ NON_VALUE_NAMES = (
     "clock", "iodev", "dir", "socketdev", "rawbytes", "triggdata", "shapedata",
     "wzstationary", "wztemporary", "mecunit", "taskid", "syncident", "rmqslot",
     "intnum_obsolete", "restartdata", "corrdescr", "pathrecid", "jointtype",
+    "egmident",
 )
 NON_VALUE_TYPES = {n.upper(): RapidType(n.upper(), n, NON_VALUE) for n in NON_VALUE_NAMES}
 
@@ -139,6 +140,7 @@ NUM_ALIASES = (
     "icondata", "buttondata", "socketstatus", "identno", "stoppoint", "iounit_state",
     "listitem_num", "sensorstate", "num_limit", "triggmode", "paridnum", "loadidnum",
     "errstr_num", "opmode", "runmode",
+    "inttypes", "egmstate", "egmstopmode", "egmframetype",
 )
 STRING_ALIASES = ("stringdig", "errstr")
 
@@ -148,6 +150,8 @@ PREDEFINED_TYPES: dict[str, RapidType] = {t.key: t for t in (
     INPOSDATA, STOPPOINTDATA, TASKS,
 )}
 PREDEFINED_TYPES.update(SIGNAL_TYPES)
+EGM_MINMAX = _record("egm_minmax", *_nums("min", "max"))
+PREDEFINED_TYPES[EGM_MINMAX.key] = EGM_MINMAX
 PREDEFINED_TYPES.update(NON_VALUE_TYPES)
 PREDEFINED_ALIASES: dict[str, tuple[str, RapidType]] = {}
 for _name in NUM_ALIASES:

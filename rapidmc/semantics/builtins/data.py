@@ -90,6 +90,29 @@ _define("tool0", "tooldata", (True, _IDENTITY_POSE, LOAD0), PERS)
 _define("wobj0", "wobjdata", (False, True, "", _IDENTITY_POSE, _IDENTITY_POSE), PERS)
 
 
+# --- sockets, rawbytes, files and EGM (rapidmc.semantics.special_io and friends) -------------
+# socketstatus and egmstate numbers are our choice (programs compare with the names).
+for _number, _name in enumerate(("SOCKET_CREATED", "SOCKET_CONNECTED", "SOCKET_BOUND",
+                                 "SOCKET_LISTENING", "SOCKET_CLOSED"), start=1):
+    _define(_name, "socketstatus", float(_number))
+for _name, _size in (("USINT", 1), ("UINT", 2), ("UDINT", 4), ("ULINT", 8),
+                     ("SINT", -1), ("INT", -2), ("DINT", -4), ("LINT", -8)):
+    _define(_name, "inttypes", float(_size))
+_define("EOF_BIN", "num", -1.0)
+for _name in ("diskhome", "diskram", "disktemp"):
+    _define(_name, "string", {"diskhome": "HOME:", "diskram": "RAMDISK:", "disktemp": "TEMP:"}[_name])
+for _number, _name in enumerate(("EGM_STATE_DISCONNECTED", "EGM_STATE_CONNECTED",
+                                 "EGM_STATE_RUNNING"), start=1):
+    _define(_name, "egmstate", float(_number))
+for _number, _name in enumerate(("EGM_STOP_HOLD", "EGM_STOP_RAMP_DOWN"), start=1):
+    _define(_name, "egmstopmode", float(_number))
+for _number, _name in enumerate(("EGM_FRAME_BASE", "EGM_FRAME_TOOL", "EGM_FRAME_WOBJ",
+                                 "EGM_FRAME_WORLD", "EGM_FRAME_JOINT"), start=1):
+    _define(_name, "egmframetype", float(_number))
+for _number in range(1, 7):
+    _define(f"ROB_{_number}", "mecunit", None)
+
+
 def lookup_data(key: str) -> PredefinedData | None:
     """The predefined data object with canonical name ``key``, or None."""
     return PREDEFINED_DATA.get(key)
