@@ -18,7 +18,7 @@ from .. import ast
 from ..check import (HOLDS, UNKNOWN, VIOLATED, Progress, PropertyResult, check_property,
                      find_reachable, format_json, format_text)
 from ..diagnostics import (AUTOMATON, DOMAIN, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN,
-                           EXIT_VIOLATED, TRACE_REPLAY, USAGE, UserError, error)
+                           EXIT_VIOLATED, TRACE_REPLAY, USAGE, SourceCache, UserError, error)
 from ..ltl import BACKENDS, read_hoa, to_buchi, to_text
 from ..ltl.syntax import Not
 from ..model import RapidDescriber, RapidSystem, replay, with_final_loop
@@ -89,7 +89,9 @@ def gather_properties(args) -> list[Property]:
     for path in args.ltl:
         properties.extend(read_property_file(path))
     for number, text in enumerate(args.formula, start=1):
-        properties.append(parse_property(text, f"<--formula {number}>", 1))
+        name = f"<--formula {number}>"
+        SourceCache.remember(name, text)
+        properties.append(parse_property(text, name, 1))
     check_unique(properties)
     return properties
 
@@ -154,8 +156,20 @@ def _prepare(prop: Property, atoms: AtomCompiler, automata: dict, backend):
             raise error(AUTOMATON, f"cannot read automaton file '{path}': {exc.strerror}") from None
     else:
         buchi = to_buchi(Not(prop.formula), backend=backend)
-    spans = {atom: where for atom in buchi.atoms}
+    spans = {atom: _atom_span(prop, atom) for atom in buchi.atoms}
     return prop, buchi, atoms.valuation(buchi.atoms, spans)
+
+
+def _atom_span(prop: Property, atom: str) -> ast.Span:
+    """Where the atom is written in the property (its column within the line)."""
+    from ..diagnostics import SourceCache as cache
+    line = cache.line(prop.file, prop.line) or prop.text
+    for written in (f'"{atom}"', atom):
+        column = line.find(written)
+        if column >= 0:
+            return ast.Span(prop.file, prop.line, column + 1, prop.line,
+                            column + 1 + len(written))
+    return ast.Span(prop.file, prop.line, 1)
 
 
 def _builtin(system: RapidSystem, name: str, description: str, predicate, bounds,
