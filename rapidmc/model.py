@@ -43,10 +43,25 @@ class RapidSystem:
         return state.status == FAILED
 
     def stuck(self, state: State) -> bool:
-        """The program runs but no step can change anything: it waits forever."""
+        """The program runs but no step can change anything but free inputs: it waits forever.
+
+        Free inputs are chosen before each step, so if some input values let
+        the program go on, the successor with those values differs in more
+        than the inputs.
+        """
         if state.status != RUNNING:
             return False
-        return all(t.state == state for t in successors(self.program, state, self.config))
+        free = [index for index, _, _ in self.config.free_inputs]
+        masked = _without_inputs(state, free)
+        return all(_without_inputs(t.state, free) == masked
+                   for t in successors(self.program, state, self.config))
+
+
+def _without_inputs(state: State, free: list) -> State:
+    if not free:
+        return state
+    io = state.io.mset(*[x for index in free for x in (index, 0.0)])
+    return state._replace(io=io)
 
 
 def _format(value, kind) -> str:

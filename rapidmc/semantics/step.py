@@ -174,6 +174,8 @@ def run_environment_routine(m: Machine, routine_index: int) -> None:
     routine = program_routine = m.program.routines[routine_index]
     saved_frames = m.frames
     saved_status = m.status
+    saved_waiting = m.waiting            # the program's own wait, not the environment's
+    m.waiting = False
     m.frames = [Frame(routine.index, 0, routine.initial_locals)]
     m.status = RUNNING
     steps = 0
@@ -200,7 +202,8 @@ def run_environment_routine(m: Machine, routine_index: int) -> None:
                                    f"{errno_name(fault.errno)}: {fault.message}")
     finally:
         m.frames = saved_frames
-        m.status = saved_status if m.status != FAILED else saved_status
+        m.status = saved_status
+        m.waiting = saved_waiting
 
 
 class EnvironmentFault(Exception):
