@@ -28,14 +28,17 @@ class RapidSystem:
     def __init__(self, program: Program, config: CheckConfig):
         self.program = program
         self.config = config
-        self._stuck_cache: dict[State, bool] = {}
+        # successors computed by ``stuck`` wait here until the search asks for them
+        self._computed: dict[State, list] = {}
 
     def initial_states(self) -> list[State]:
         return initial_states(self.program, lambda script: ScriptChooser(script, self.config))
 
     def successors(self, state: State) -> list[tuple[Hashable, State]]:
-        return [((t.label, t.span, t.output), t.state)
-                for t in successors(self.program, state, self.config)]
+        transitions = self._computed.pop(state, None)
+        if transitions is None:
+            transitions = successors(self.program, state, self.config)
+        return [((t.label, t.span, t.output), t.state) for t in transitions]
 
     # built-in safety checks ------------------------------------------------
     @staticmethod
@@ -53,8 +56,11 @@ class RapidSystem:
             return False
         free = [index for index, _, _ in self.config.free_inputs]
         masked = _without_inputs(state, free)
-        return all(_without_inputs(t.state, free) == masked
-                   for t in successors(self.program, state, self.config))
+        transitions = successors(self.program, state, self.config)
+        stuck = all(_without_inputs(t.state, free) == masked for t in transitions)
+        if not stuck:
+            self._computed[state] = transitions
+        return stuck
 
 
 def _without_inputs(state: State, free: list) -> State:
