@@ -86,6 +86,7 @@ def _parse_expected(folder: Path) -> tuple[dict, Optional[ExpectedError]]:
     for line in _data_lines(folder / "expected"):
         words = line.split()
         if words[0] == "ERROR":
+            words = line.split(maxsplit=2)       # the place may hold spaces: <--formula 2>:1
             assert len(words) in (2, 3), f"{folder.name}/expected: bad line {line!r}"
             expected_error = ExpectedError(words[1], words[2] if len(words) == 3 else None)
             continue
