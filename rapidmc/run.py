@@ -18,7 +18,7 @@ from .semantics.errors import errno_name
 from .semantics.machine import Machine
 from .semantics.program import Program
 from .semantics.state import ENDED, FAILED, RUNNING, State
-from .semantics.step import Chooser, EnvironmentFault, start_state, step
+from .semantics.step import Chooser, EnvironmentFault, execute_step, start_state
 from .semantics.timing import advance_to, next_event
 from .semantics.values import format_num
 
@@ -62,38 +62,49 @@ class RunResult:
 
 def run_program(program: Program, io_values: dict, stdin: TextIO, stdout: TextIO,
                 max_steps: Optional[int] = None, trace: Optional[TextIO] = None) -> RunResult:
-    """Execute ``program`` to its end; FlexPendant output goes to ``stdout``."""
-    chooser = ConsoleChooser(stdin)
-    state = start_state(program, io_values)
+    """Execute ``program`` to its end; FlexPendant output goes to ``stdout``.
+
+    The run keeps one machine and applies the step function's transitions to
+    it one after another (``execute_step``), so no state is packed between
+    steps.
+    """
+    m = Machine(program, start_state(program, io_values), ConsoleChooser(stdin))
+    output = m.output
     steps = 0
-    while state.status == RUNNING:
-        transition = step(program, state, chooser)
-        if transition.output:
-            stdout.write(transition.output)
+    while m.status == RUNNING:
+        frames = m.frames
+        depth, top, store, io = len(frames), frames[-1], m.store, m.io
+        m.waiting = False
+        span = execute_step(m)
+        if output:
+            stdout.write("".join(line + "\n" for line in output))
             stdout.flush()
-        if trace is not None and transition.span is not None:
-            trace.write(f"{transition.span}\n")
-        if transition.state == state:      # nothing changed: a wait or a busy loop
-            transition = _wake(program, state, transition)
-        state = transition.state
+            output.clear()
+        if m.choices:
+            m.choices.clear()
+        if trace is not None and span is not None:
+            trace.write(f"{span}\n")
+        if m.waiting or (m.store is store and m.io is io and len(m.frames) == depth
+                         and m.frames[-1] == top and m.status == RUNNING):
+            _wake(m)                     # nothing changed: a wait or a busy loop
         steps += 1
-        if max_steps is not None and steps >= max_steps and state.status == RUNNING:
+        if max_steps is not None and steps >= max_steps and m.status == RUNNING:
             raise error(STEP_LIMIT, f"the program was stopped after {max_steps} steps "
                         "(--max-steps)", exit_code=1)
-    return RunResult(state, steps)
+    return RunResult(m.to_state(), steps)
 
 
-def _wake(program: Program, state: State, transition):
-    """A step changed nothing: the program waits. Let virtual time pass, or report a deadlock."""
-    due = next_event(state.interrupts)
-    if due is None or state.interrupts.pending:
-        frame = state.frames[-1]
-        span = program.routines[frame.routine].code[frame.pc].span
+def _wake(m: Machine) -> None:
+    """The program makes no progress: let virtual time pass, or report a deadlock."""
+    due = next_event(m.interrupts)
+    if due is None or m.interrupts.pending:
+        if m.interrupts.pending and m.interrupts.enabled:
+            return                       # a trap is about to run
+        frame = m.frames[-1]
+        span = m.program.routines[frame.routine].code[frame.pc].span
         raise error(RUNTIME_ERROR, "deadlock: the program waits for a condition that can never "
                     "become true (inputs keep their --io values in run mode)", span, exit_code=1)
-    m = Machine(program, state, None)
     advance_to(m, due)
-    return transition._replace(state=m.to_state())
 
 
 def fault_diagnostic(program: Program, state: State) -> Diagnostic:

@@ -266,11 +266,24 @@ def step(program: Program, state: State, chooser: Chooser) -> Transition:
     if state.status != RUNNING:
         return Transition((), None, state, "")
     m = Machine(program, state, chooser)
-    for index, name, domain in chooser.free_inputs(program):
+    span = execute_step(m)
+    output = "".join(line + "\n" for line in m.output) if m.output else ""
+    return Transition(tuple(m.choices), span, m.to_state(), output, m.waiting)
+
+
+def execute_step(m: Machine):
+    """Carry out one transition on the machine ``m``; returns the span executed.
+
+    ``step`` wraps this for immutable states; ``rapidmc run`` calls it on one
+    machine for the whole run, so states need not be packed between steps.
+    """
+    program = m.program
+    io_before = m.io
+    for index, name, domain in m.chooser.free_inputs(program):
         m.io = m.io.set(index, m.choose(name, domain))
-    interrupts = state.interrupts
+    interrupts = m.interrupts
     if interrupts.table or interrupts.scheduled or interrupts.pending:
-        span = _step_with_interrupts(m, state)
+        span = _step_with_interrupts(m, io_before)
     else:
         frame = m.frames[-1]
         instruction = program.routines[frame.routine].code[frame.pc]
@@ -286,14 +299,12 @@ def step(program: Program, state: State, chooser: Chooser) -> Transition:
         run_environment_routine(m, program.environment_react)
         if m.interrupts.table and m.io != io_mid:
             _signal_edges(m, io_mid)
-    output = "".join(line + "\n" for line in m.output) if m.output else ""
-    return Transition(tuple(m.choices), span, m.to_state(), output, m.waiting)
+    return span
 
 
-def _step_with_interrupts(m: Machine, state: State):
+def _step_with_interrupts(m: Machine, io_before):
     if m.chooser.check_mode and m.interrupts.scheduled:
         apply_scheduled(m)                 # time is abstract: delayed changes happen now
-    io_before = state.io
     if m.chooser.check_mode and m.interrupts.table:
         _timers_may_fire(m)
     span = _execute(m)
