@@ -13,7 +13,7 @@ from typing import Optional
 from .. import ast
 from ..diagnostics import (ASSIGN_CONST, BAD_CONTROL, DUPLICATE, TYPE_MISMATCH,
                            UNKNOWN_LABEL, UNKNOWN_ROUTINE, PLACEHOLDER, error)
-from .expressions import ExpressionCompiler
+from .expressions import ExpressionCompiler, _check_index as check_index
 from .instructions import (Action, Branch, Call, EndRoutine, EndUndo, ExitProgram,
                            ForInit, ForNext, Instruction, Jump, LateCall, Raise, Retry,
                            Return, TestDispatch, TryNext)
@@ -209,6 +209,18 @@ class RoutineCompiler:
                 values_[slot] = value
                 m.frames[-1] = frame._replace(locals=tuple(values_))
             fn = assign_local
+        elif (isinstance(target, ast.Index) and len(target.indices) == 1 and
+              isinstance(target.base, ast.NameRef) and root.kind == GLOBAL_DATA):
+            slot = root.slot
+            index_fn = compiler.value(target.indices[0], NUM).fn
+            span = target.span
+
+            def assign_element(m):
+                array = m.store[slot]
+                i = check_index(array, index_fn(m), span)
+                value = value_fn(m)
+                m.store = m.store.set(slot, array[:i] + (value,) + array[i + 1:])
+            fn = assign_element
         else:
             def assign(m):
                 ref = ref_fn(m)

@@ -279,8 +279,9 @@ def execute_step(m: Machine):
     """
     program = m.program
     io_before = m.io
-    for index, name, domain in m.chooser.free_inputs(program):
-        m.io = m.io.set(index, m.choose(name, domain))
+    if m.chooser.check_mode:
+        for index, name, domain in m.chooser.free_inputs(program):
+            m.io = m.io.set(index, m.choose(name, domain))
     interrupts = m.interrupts
     if interrupts.table or interrupts.scheduled or interrupts.pending:
         span = _step_with_interrupts(m, io_before)
