@@ -23,22 +23,33 @@ from .semantics.errors import errno_name
 
 
 class RapidSystem:
-    """The program's state graph, explored lazily."""
+    """The program's state graph, explored lazily.
+
+    Successors are remembered (up to ``shared_limit`` states) so that the
+    searches for several properties of one program compute each state's
+    successors once.
+    """
+
+    shared_limit = 200_000
 
     def __init__(self, program: Program, config: CheckConfig):
         self.program = program
         self.config = config
-        # successors computed by ``stuck`` wait here until the search asks for them
-        self._computed: dict[State, list] = {}
+        # successors kept for the next searches (one per property) over the same program
+        self._shared: dict[State, list] = {}
 
     def initial_states(self) -> list[State]:
         return initial_states(self.program, lambda script: ScriptChooser(script, self.config))
 
     def successors(self, state: State) -> list[tuple[Hashable, State]]:
-        transitions = self._computed.pop(state, None)
-        if transitions is None:
-            transitions = successors(self.program, state, self.config)
-        return [((t.label, t.span, t.output), t.state) for t in transitions]
+        cached = self._shared.get(state)
+        if cached is not None:
+            return cached
+        transitions = successors(self.program, state, self.config)
+        result = [((t.label, t.span, t.output), t.state) for t in transitions]
+        if len(self._shared) < self.shared_limit:
+            self._shared[state] = result
+        return result
 
     # built-in safety checks ------------------------------------------------
     @staticmethod
@@ -56,11 +67,8 @@ class RapidSystem:
             return False
         free = [index for index, _, _ in self.config.free_inputs]
         masked = _without_inputs(state, free)
-        transitions = successors(self.program, state, self.config)
-        stuck = all(_without_inputs(t.state, free) == masked for t in transitions)
-        if not stuck:
-            self._computed[state] = transitions
-        return stuck
+        return all(_without_inputs(after, free) == masked
+                   for _, after in self.successors(state))
 
 
 def _without_inputs(state: State, free: list) -> State:
