@@ -9,9 +9,11 @@ from rapidmc.ltl.syntax import (And, Atom, Equiv, FalseF, Finally, Globally, Imp
 
 UNARY = (Not, Next, Globally, Finally)
 BINARY = (And, Or, Implies, Equiv, Xor, Until, WeakUntil, Release, StrongRelease)
+WITHOUT_EQUIVALENCES = tuple(op for op in BINARY if op not in (Equiv, Xor))
 
 
-def random_formula(rng: random.Random, atoms, size: int, with_next: bool = True):
+def random_formula(rng: random.Random, atoms, size: int, with_next: bool = True,
+                   binary=BINARY):
     """A formula with about ``size`` operators over ``atoms``."""
     if size <= 0:
         roll = rng.random()
@@ -22,10 +24,10 @@ def random_formula(rng: random.Random, atoms, size: int, with_next: bool = True)
         return Atom(rng.choice(atoms))
     unary = [op for op in UNARY if with_next or op is not Next]
     if rng.random() < 0.4:
-        return rng.choice(unary)(random_formula(rng, atoms, size - 1, with_next))
+        return rng.choice(unary)(random_formula(rng, atoms, size - 1, with_next, binary))
     left = rng.randint(0, size - 1)
-    return rng.choice(BINARY)(random_formula(rng, atoms, left, with_next),
-                              random_formula(rng, atoms, size - 1 - left, with_next))
+    return rng.choice(binary)(random_formula(rng, atoms, left, with_next, binary),
+                              random_formula(rng, atoms, size - 1 - left, with_next, binary))
 
 
 def random_letter(rng: random.Random, atoms) -> frozenset:
@@ -51,6 +53,8 @@ def dwyer_patterns() -> list[tuple[str, str]]:
     return pairs
 
 
-def random_formulas(seed: int, count: int, atoms, with_next: bool = True, max_size: int = 7):
+def random_formulas(seed: int, count: int, atoms, with_next: bool = True, max_size: int = 7,
+                    binary=BINARY):
     rng = random.Random(seed)
-    return [random_formula(rng, atoms, rng.randint(1, max_size), with_next) for _ in range(count)]
+    return [random_formula(rng, atoms, rng.randint(1, max_size), with_next, binary)
+            for _ in range(count)]

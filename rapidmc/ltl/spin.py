@@ -7,6 +7,7 @@ A claim is a Promela process whose labels are states; labels starting with
 
     :: (guard) -> goto LABEL                      edge to LABEL
     :: atomic { (guard) -> assert(!(guard)) }     edge to an accept-all sink
+    :: false                                      no edge
     skip  (at the end of the claim)               the state accepts everything
     false                                         no edge
 
@@ -40,6 +41,7 @@ from .syntax import Formula, atoms_of, parse_formula
 LABEL = re.compile(r"^([A-Za-z_][A-Za-z0-9_]*):$")
 GOTO = re.compile(r"^::\s*(.*?)\s*->\s*goto\s+([A-Za-z_][A-Za-z0-9_]*)$")
 ASSERT = re.compile(r"^::\s*atomic\s*\{\s*(.*?)\s*->\s*assert\(.*\)\s*\}$")
+DEAD_OPTION = re.compile(r"^::\s*\(*\s*(false|0)\s*\)*\s*;?$")
 ACCEPT_ALL = "<accept all>"
 IGNORED = {"do", "od;", "if", "fi;", "od", "fi", "}"}
 
@@ -131,6 +133,8 @@ def _blocks(text: str) -> dict[str, tuple[bool, str, list[tuple[str, str]]]]:
             options.append((goto.group(1), goto.group(2)))
         elif assertion:
             options.append((assertion.group(1), ACCEPT_ALL))
+        elif DEAD_OPTION.match(line):
+            continue        # an option that can never be taken
         elif line.rstrip(";") in ("skip", "false"):
             blocks[current] = (accepting, line.rstrip(";"), options)
         else:
