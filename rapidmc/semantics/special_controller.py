@@ -47,8 +47,8 @@ SIGNATURES = (
     "ReadCfgData(string InstancePath, string Attribute, VAR anytype CfgData \\num ListNo)",
     "ErrLog(num ErrorId \\switch W | switch I, anytype Argument1, anytype Argument2, "
     "anytype Argument3, anytype Argument4, anytype Argument5)",
-    "WaitSyncTask(\\switch InPos, VAR syncident SyncID, PERS tasks TaskList{*} \\num TimeOut)",
-    "SyncMoveOn(VAR syncident SyncID, PERS tasks TaskList{*} \\num TimeOut)",
+    "WaitSyncTask(\\switch InPos, VAR syncident SyncID, REF tasks TaskList{*} \\num TimeOut)",
+    "SyncMoveOn(VAR syncident SyncID, REF tasks TaskList{*} \\num TimeOut)",
     "SyncMoveOff(VAR syncident SyncID \\num TimeOut)",
     # --- externally guided motion (EGM): a session state, no motion ---------------------------------
     "EGMGetId(VAR egmident EGMid)",

@@ -97,7 +97,7 @@ def _open(calls, compiler, call, entry):
         name = place(m)
         extra = file(m)
         if extra is not ABSENT:
-            name = name.rstrip("/") + ("" if name.endswith(":") else "/") + extra
+            name = name.rstrip("/") + "/" + extra
         mode = next((mode for flag, mode in modes if flag(m) is True), WRITE)
         m.write_ref(ref, (name, mode, "", ""))
     return Action(call.span, open_device)

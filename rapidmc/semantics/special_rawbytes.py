@@ -31,8 +31,8 @@ for _text in SIGNATURES:
 
 def _encoding(call, arguments, value_type):
     """fn(m) -> the byte layout chosen by the format switch (checked at link time)."""
-    given = [key for key in ("Hex1", "IntX", "Float4", "ASCII")
-             if _arg_expr(call, key, -1) is not None]
+    names = {arg.name.key for arg in call.args if arg.name is not None}
+    given = [key for key in ("Hex1", "IntX", "Float4", "ASCII") if key.upper() in names]
     if not given:
         if value_type is STRING and call.name.key == "PACKRAWBYTES":
             return lambda m: ("ascii",)

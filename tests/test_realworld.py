@@ -1,0 +1,206 @@
+"""Real-world program styles (tests/realworld/): parse, run and check them.
+
+The programs are ours, written in the styles surveyed in public RAPID code:
+an open_abb-like socket server, a ROS-Industrial-like motion server, a
+controller backup (.pgf with a SYSMODULE and configured I/O used without
+declarations) and a library of utility FUNCs.  ``RUNS`` pins the console
+output and exit code of ``rapidmc run`` with the given standard input
+(socket messages and file lines come from stdin); ``CHECKS`` pins verdicts
+of ``rapidmc check``.  The last tests model-check with configured socket
+messages, which the CLI does not offer yet.
+"""
+from __future__ import annotations
+
+import contextlib
+import io
+from pathlib import Path
+
+import pytest
+
+from rapidmc.check import find_reachable
+from rapidmc.cli import main
+from rapidmc.model import RapidDescriber, RapidSystem
+from rapidmc.semantics.link import build
+from rapidmc.semantics.step import CheckConfig
+from rapidmc.syntax import load_program
+
+HERE = Path(__file__).resolve().parent / "realworld"
+SERVER = [str(HERE / "socket_server" / "RobotServer.mod")]
+ROS = [str(HERE / "ros_motion" / "ROS_common.sys"), str(HERE / "ros_motion" / "ROS_motionServer.mod")]
+BACKUP = [str(HERE / "backup" / "cell.pgf")]
+LIBRARY = [str(HERE / "library" / "StrUtil.sys"), str(HERE / "library" / "LibDemo.mod")]
+
+
+def cli(argv, stdin: str = "") -> tuple[int, str, str]:
+    out, err = io.StringIO(), io.StringIO()
+    old = __import__("sys").stdin
+    __import__("sys").stdin = io.StringIO(stdin)
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            code = main(argv)
+    finally:
+        __import__("sys").stdin = old
+    return code, out.getvalue(), err.getvalue()
+
+
+@pytest.mark.parametrize("files", [SERVER, ROS, BACKUP, LIBRARY], ids=["server", "ros", "backup",
+                                                                      "library"])
+def test_realworld_programs_parse(files):
+    code, out, err = cli(["parse", *files])
+    assert code == 0, err
+    assert "ok" in out
+
+
+# (name, files, extra options, stdin file or text, exit code, expected stdout lines)
+RUNS = [
+    ("server session: ping, move, position, bad arguments, unknown command, shutdown",
+     SERVER, [], HERE / "socket_server" / "session.in", 0,
+     ["client 127.0.0.1", "[socket] 1 1 pong", "[socket] 2 1", "[socket] 3 1 100", "[socket] 2 0",
+      "[socket] 7 0", "[socket] 0 bye"]),
+    ("server: the client leaves (end of input), the ERROR handler listens again",
+     SERVER, [], HERE / "socket_server" / "dropped.in", 2,
+     ["client 127.0.0.1", "[socket] 1 1 pong", "[socket] 2 1", "client left, listening again"]),
+    ("ROS-style trajectory: start, point, garbage, end; state packed as rawbytes",
+     ROS, [], HERE / "ros_motion" / "session.in", 0,
+     ["[MotionServer] client connected", "[socket] 08 00 00 00 00 00 00 03 00 00 a0 41"]),
+    ("backup: three parts with configured I/O, log lines through a file",
+     BACKUP, ["--io", "diPartPresent=1"], "", 0,
+     ["[file HOME:/cell.log] placed part 1", "[file HOME:/cell.log] placed part 2",
+      "[file HOME:/cell.log] placed part 3", "Cell done, parts: 3"]),
+    ("library: field splitting, StrToVal defaults, padding",
+     LIBRARY, [], "", 0,
+     ["fields: 4", "second: 20", "third empty: TRUE", "fourth: abc", "fifth: []", "total: 28",
+      "clamp: 100", "[  7]"]),
+]
+
+
+@pytest.mark.parametrize("name,files,options,stdin,exit_code,lines", RUNS, ids=[r[0] for r in RUNS])
+def test_realworld_run(name, files, options, stdin, exit_code, lines):
+    text = stdin.read_text() if isinstance(stdin, Path) else stdin
+    code, out, err = cli(["run", *files, *options, "--max-steps", "5000"], text)
+    assert out.splitlines() == lines, err
+    assert code == exit_code, err
+
+
+def test_server_run_ends_for_want_of_clients_with_a_diagnostic():
+    code, out, err = cli(["run", *SERVER, "--max-steps", "5000"],
+                         (HERE / "socket_server" / "dropped.in").read_text())
+    assert "[RMC302]" in err and "SocketAccept" in err
+
+
+# (files, extra options, formula, verdict)
+CHECKS = [
+    (SERVER, [], 'G "nMoves = 0"', "HOLDS"),            # no message decodes to a move by default
+    (ROS, [], 'G "nExecuted = 0"', "HOLDS"),
+    (BACKUP, [], 'G ("goCellState = 2" -> "nPartsTotal = 3")', "HOLDS"),
+    (BACKUP, [], 'F "nPartsTotal = 3"', "VIOLATED"),    # the part sensor may stay off forever
+    (BACKUP, [], 'G "doGripClose = 0"', "VIOLATED"),
+]
+
+
+@pytest.mark.parametrize("files,options,formula,verdict", CHECKS,
+                         ids=[c[2] + " " + c[3] for c in CHECKS])
+def test_realworld_check(files, options, formula, verdict):
+    code, out, err = cli(["check", *files, *options, "--formula", f"p: {formula}",
+                          "--max-states", "20000", "--quiet", "--backend", "builtin"])
+    assert f"p: {verdict}" in out, out + err
+    assert "no_runtime_error: HOLDS" in out
+    assert code == (0 if verdict == "HOLDS" else 1)
+
+
+def _system(files, **domains) -> tuple[RapidSystem, RapidDescriber]:
+    program = build(load_program(files))
+    config = CheckConfig(program)
+    for name, value in domains.items():
+        setattr(config, name, value)
+    return RapidSystem(program, config), RapidDescriber(program)
+
+
+def _reachable(files, condition, **domains) -> bool:
+    system, describer = _system(files, **domains)
+    result = find_reachable(system, lambda s: condition(describer.describe_state(s)),
+                            max_states=20000)
+    return bool(result.prefix)
+
+
+def test_configured_socket_messages_drive_the_server_to_a_move():
+    messages = ("2 5 5 5 #", "0 #")
+    assert _reachable(SERVER, lambda d: d.get("nMoves") == "2", socket_messages=messages)
+    assert not _reachable(SERVER, lambda d: d.get("nMoves") == "1", socket_messages=("1 #",))
+
+
+def test_ros_trajectory_runs_only_after_its_end_message():
+    start, end = "-1 1 0 0 0 0 0", "-3 2 0 0 0 0 0"
+    assert _reachable(ROS, lambda d: d.get("nExecuted") == "2", socket_messages=(start, end))
+    assert not _reachable(ROS, lambda d: d.get("nExecuted") == "1", socket_messages=(start,))
+
+
+def _choice_names(system, steps: int = 40) -> set:
+    """Names of the choices made on the first ``steps`` levels of the state graph."""
+    names, frontier, seen = set(), list(system.initial_states()), set()
+    for _ in range(steps):
+        following = []
+        for state in frontier:
+            for (choices, _, _), successor in system.successors(state):
+                names.update(name for name, _ in choices)
+                if successor not in seen:
+                    seen.add(successor)
+                    following.append(successor)
+        frontier = following
+    return names
+
+
+def test_finite_receive_time_may_run_out_unless_timeouts_are_off():
+    """With \\Time:=5 the ROS server's SocketReceive may time out (ERR_SOCK_TIMEOUT)."""
+    messages = ("-1 1 0 0 0 0 0",)
+    outcome = "SocketReceive outcome at ROS_motionServer.mod:16:7"
+    assert outcome in _choice_names(_system(ROS, socket_messages=messages)[0])
+    quiet = _choice_names(_system(ROS, socket_messages=messages, socket_timeouts=False)[0])
+    assert outcome not in quiet and "SocketReceive at ROS_motionServer.mod:16:7" in quiet
+
+
+def test_wait_max_never_times_out_and_closures_are_opt_in():
+    messages = ("1 #",)
+    names = _choice_names(_system(SERVER, socket_messages=messages)[0])
+    assert not any("outcome" in name for name in names)
+    names = _choice_names(_system(SERVER, socket_messages=messages, socket_closures=True)[0])
+    assert any(name.startswith("SocketReceive outcome") for name in names)
+
+
+# --- rawbytes layouts (rapidmc.semantics.rawbytes) ------------------------------------------
+
+def test_rawbytes_pack_and_unpack_follow_byte_order_and_sizes():
+    from rapidmc.semantics import rawbytes
+    data = rawbytes.pack(b"", 1, 8.0, ("int", 4))
+    data = rawbytes.pack(data, 5, -2.0, ("int", -4), network=True)
+    data = rawbytes.pack(data, 9, 20.0, rawbytes.FLOAT4)
+    assert rawbytes.to_text(data) == "08 00 00 00 ff ff ff fe 00 00 a0 41"
+    assert rawbytes.unpack(data, 5, ("int", -4), network=True) == -2.0
+    assert rawbytes.unpack(data, 5, ("int", 4), network=True) == 4294967294.0
+    assert rawbytes.unpack(data, 9, rawbytes.FLOAT4) == 20.0
+    assert rawbytes.copy(data, 9, b"ab", 3) == b"ab\x00\x00\xa0\x41"
+    assert rawbytes.from_text("0a 1F") == b"\n\x1f" and rawbytes.from_text("hi") == b"hi"
+
+
+# --- known gaps outside special_io (reported; fixes belong to link.py / expressions.py) ---------
+
+def _link_error(tmp_path, text: str) -> str:
+    path = tmp_path / "gap.mod"
+    path.write_text(text)
+    code, out, err = cli(["run", str(path), "--max-steps", "100"])
+    return err if code != 0 else ""
+
+
+@pytest.mark.xfail(strict=True, reason="link.py refuses rawbytes record components; ROS-Industrial "
+                   "ROS_messages.sys declares RECORD ROS_msg with 'rawbytes data;'")
+def test_rawbytes_record_component_links(tmp_path):
+    assert _link_error(tmp_path, "MODULE M\nRECORD msg\n  num kind;\n  rawbytes data;\nENDRECORD\n"
+                       "VAR msg m;\nPROC main()\n  ClearRawBytes m.data;\n"
+                       "  TPWrite \"n\" \\Num:=RawBytesLen(m.data);\nENDPROC\nENDMODULE\n") == ""
+
+
+@pytest.mark.xfail(strict=True, reason="an undeclared name read in an expression before any "
+                   "signal-argument use is not inferred as a configured signal (unknown name)")
+def test_configured_signal_read_before_it_is_set_links(tmp_path):
+    assert _link_error(tmp_path, "MODULE M\nPROC main()\n  IF doLamp = 1 TPWrite \"on\";\n"
+                       "  InvertDO doLamp;\nENDPROC\nENDMODULE\n") == ""
