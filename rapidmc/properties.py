@@ -139,6 +139,7 @@ class AtomCompiler:
     def __init__(self, program: Program):
         self.program = program
         self.linker = program.scopes
+        self.linker.options["infer_signals"] = False    # atoms name only known signals
         from .semantics.program import PROGRAM_NAMESPACE
         scope = Scope(self.linker.namespaces[PROGRAM_NAMESPACE])
         # physical signal names (C_IN, S_1) take precedence over program data names

@@ -1,7 +1,8 @@
 """The grammar ships inside the wheel: build it, install it in a fresh venv, parse there.
 
 Slow-ish (10-40 s): it runs pip, whose isolated build fetches setuptools and
-wheel from the package index; the venv sees the system's lark.
+wheel from the package index; the venv sees this interpreter's lark, pyrsistent
+and networkx through a .pth file.
 """
 from __future__ import annotations
 
@@ -9,6 +10,10 @@ import subprocess
 import sys
 import venv
 from pathlib import Path
+
+import lark
+import networkx
+import pyrsistent
 
 ROOT = Path(__file__).resolve().parent.parent
 HELLO = ROOT / "case_studies" / "hello" / "hello.mod"
@@ -28,6 +33,13 @@ def test_wheel_contains_grammar_and_parses_in_fresh_venv(tmp_path):
     environment = tmp_path / "env"
     venv.create(environment, system_site_packages=True, with_pip=True)
     python = str(environment / "bin" / "python")
+    # The dependencies come from wherever this interpreter has them (a CI venv or
+    # the system), as plain path entries: only the wheel provides rapidmc.
+    site = run(python, "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])",
+               cwd=tmp_path).strip()
+    dependency_dirs = {str(Path(module.__file__).resolve().parent.parent)
+                       for module in (lark, pyrsistent, networkx)}
+    (Path(site) / "rapidmc_test_dependencies.pth").write_text("\n".join(sorted(dependency_dirs)))
     run(python, "-m", "pip", "install", "--no-deps", "--no-index", "-q", str(wheel), cwd=tmp_path)
     script = ("import rapidmc, sys; from rapidmc.syntax import parse_file; "
               "print(rapidmc.__file__); m = parse_file(sys.argv[1]); print(m[0].name.text)")

@@ -265,7 +265,8 @@ def leave_routine(m: Machine, value: Any) -> None:
         values_[frame.result] = routine.convert_result(value)
         caller = caller._replace(locals=tuple(values_))
     call = m.program.routines[caller.routine].code[caller.pc]
-    m.frames[-1] = caller._replace(pc=call.next)
+    m.frames[-1] = caller
+    m.goto(call.next)
 
 
 class EndUndo(Instruction):

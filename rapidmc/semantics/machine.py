@@ -60,6 +60,12 @@ def read_at(value: Any, path: tuple) -> Any:
     return value
 
 
+def statement_completed(program, frame: Frame, pc: int) -> bool:
+    """Whether going to ``pc`` completes the statement that was retried (RETRY counting)."""
+    return frame.mode == 0 and frame.error_pc >= 0 and \
+        pc == program.routines[frame.routine].code[frame.error_pc].after
+
+
 class ChoiceNeeded(Exception):
     """Internal: the step reached a choice that the current script does not cover."""
 
@@ -107,8 +113,11 @@ class Machine:
 
     def goto(self, pc: int) -> None:
         frame = self.frames[-1]
+        retries = frame.retries
+        if retries and statement_completed(self.program, frame, pc):
+            retries = 0
         self.frames[-1] = Frame(frame.routine, pc, frame.locals, frame.mode, frame.error_pc,
-                                frame.retries, frame.result)
+                                retries, frame.result)
 
     def local(self, slot: int) -> Any:
         return self.frames[-1].locals[slot]
