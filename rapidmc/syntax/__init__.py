@@ -13,15 +13,14 @@ import gc
 from .. import ast
 from ..diagnostics import SourceCache
 from ..source import program_paths, read_source
-from .lower import lower
-from .parser import parse_tree
+from .parser import parse_modules
 
 
 def parse_text(text: str, filename: str) -> tuple[ast.Module, ...]:
     """The modules in ``text``; syntax errors raise ``UserError``."""
     SourceCache.remember(filename, text)
     with _garbage_collection_paused():
-        return lower(parse_tree(text, filename), filename)
+        return parse_modules(text, filename)
 
 
 @contextlib.contextmanager

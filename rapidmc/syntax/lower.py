@@ -1,15 +1,22 @@
-"""Lark parse tree to ``rapidmc.ast``: construction only, no meaning.
+"""Grammar rules to ``rapidmc.ast``, while the parser reduces them: construction only.
 
-One method per grammar rule (or rule alias), named like the rule.  Every node
-gets the ``Span`` of the text it came from.  The only checks made here are
-lexical ones the grammar cannot express: string escapes and length, numeric
-range, identifier length.
+One method per grammar rule (or rule alias), named like the rule; it gets
+the rule's children (shaped as Lark's tree builder would shape them, see
+``reductions``) and the raw entries of the parser stack, from which the
+node's ``Span`` is taken: it runs from the first token of the rule's text
+(a parenthesised expression starts at its parenthesis) to the last token
+the parser has shifted.  The only checks made here are lexical ones the
+grammar cannot express: string escapes and length, numeric range,
+identifier length, reserved words read as names.  Their diagnostics wait
+until the parse has succeeded, so a syntax error anywhere in the file is
+reported first, and of several such problems the first in the order of a
+bottom-up walk of the tree wins.
 
 Example::
 
-    >>> from rapidmc.syntax.parser import parse_tree
-    >>> tree = parse_tree("MODULE m PROC main() x := 1 + 2; ENDPROC ENDMODULE", "m.mod")
-    >>> lower(tree, "m.mod")[0].routines[0].body[0].value.op
+    >>> from rapidmc.syntax.parser import parse_modules
+    >>> (module,) = parse_modules("MODULE m PROC main() x := 1 + 2; ENDPROC ENDMODULE", "m.mod")
+    >>> module.routines[0].body[0].value.op
     '+'
 """
 from __future__ import annotations
@@ -19,9 +26,7 @@ import math
 import re
 from typing import Optional
 
-from lark import Token, Transformer, v_args
-from lark.exceptions import VisitError
-from lark.tree import Meta
+from lark import Token
 
 from .. import ast
 from ..diagnostics import (BAD_NUMBER, BAD_STRING, IDENTIFIER_TOO_LONG, SYNTAX, UNSUPPORTED,
@@ -39,19 +44,6 @@ RESERVED_WORDS = frozenset("""
 MAX_STRING_LENGTH = 80
 _STRING_ESCAPE = re.compile(r'""|\\\\|\\([0-9a-fA-F]{2})|\\')
 _INTEGER_LITERAL = re.compile(r"[0-9]+|0[xX][0-9a-fA-F]+|0[oO][0-7]+|0[bB][01]+")
-
-
-def lower(tree, filename: str) -> tuple[ast.Module, ...]:
-    """The modules of a parsed file."""
-    try:
-        return Lowering(filename).transform(tree)
-    except VisitError as exc:
-        if isinstance(exc.orig_exc, UserError):
-            raise exc.orig_exc from None
-        raise
-    except RecursionError:
-        raise error(UNSUPPORTED, f"'{filename}' nests expressions or statements too deeply "
-                    "to analyse") from None
 
 
 def decode_string(token_text: str) -> Optional[str]:
@@ -86,18 +78,54 @@ def number_value(text: str) -> int | float:
     return float(text)
 
 
-@v_args(meta=True)
-class Lowering(Transformer):
-    """The transformer from Lark tree to AST; one instance per file."""
+class Lowering:
+    """The rule methods for one file; ``lexer`` tells the last token shifted."""
 
-    def __init__(self, filename: str):
-        super().__init__(visit_tokens=False)
+    def __init__(self, filename: str, lexer):
         self.filename = filename
+        self.lexer = lexer
+        self.problem: Optional[UserError] = None
+        # Expressions written in parentheses: id -> (line, column) of the parenthesis.
+        self.enclosed_starts: dict[int, tuple[int, int]] = {}
 
     # ---------------------------------------------------------------- helpers
 
-    def span(self, meta: Meta) -> ast.Span:
-        return ast.Span(self.filename, meta.line, meta.column, meta.end_line, meta.end_column)
+    def report(self, problem: UserError) -> None:
+        """Keep the first problem; it is raised once the whole file has parsed."""
+        if self.problem is None:
+            self.problem = problem
+
+    def too_deep(self) -> None:
+        self.report(error(UNSUPPORTED, f"'{self.filename}' nests expressions or statements "
+                          "too deeply to analyse"))
+
+    def enclose(self, node, entries: list) -> None:
+        """``node`` stands for all of ``entries`` (parentheses around it)."""
+        self.enclosed_starts[id(node)] = self.text_start(entries)
+
+    def span(self, entries: list) -> ast.Span:
+        first = entries[0]
+        if type(first) is Token:
+            line, column = first.line, first.column
+        else:
+            line, column = self.text_start(entries)
+        last = self.lexer.previous
+        return ast.Span(self.filename, line, column, last.end_line, last.end_column)
+
+    def text_start(self, entries) -> Optional[tuple[int, int]]:
+        """Where the text of ``entries`` begins (None when they hold no token)."""
+        for entry in entries:
+            if isinstance(entry, Token):
+                return entry.line, entry.column
+            if isinstance(entry, (list, tuple)):
+                found = self.text_start(entry)
+                if found is not None:
+                    return found
+                continue
+            span = getattr(entry, "span", None)
+            if span is not None:
+                return self.enclosed_starts.get(id(entry)) or (span.line, span.column)
+        return None
 
     def token_span(self, token: Token) -> ast.Span:
         return ast.Span(self.filename, token.line, token.column, token.end_line, token.end_column)
@@ -105,103 +133,104 @@ class Lowering(Transformer):
     def name(self, token: Token) -> ast.Name:
         span = self.token_span(token)
         if len(token) > MAX_IDENTIFIER_LENGTH:
-            raise error(IDENTIFIER_TOO_LONG,
-                        f"identifier '{token}' has {len(token)} characters; "
-                        f"RAPID allows at most {MAX_IDENTIFIER_LENGTH}", span)
+            self.report(error(IDENTIFIER_TOO_LONG,
+                              f"identifier '{token}' has {len(token)} characters; "
+                              f"RAPID allows at most {MAX_IDENTIFIER_LENGTH}", span))
         key = token.upper()
         if key in RESERVED_WORDS:
-            raise error(SYNTAX, f"'{token}' is a reserved word and cannot be used as a name", span)
+            self.report(error(SYNTAX, f"'{token}' is a reserved word and cannot be used as a "
+                              "name", span))
         return ast.Name(str(token), key, span)
 
     # ---------------------------------------------------------------- modules
 
-    def start(self, meta, modules):
+    def start(self, modules, entries):
         return tuple(modules)
 
-    def module(self, meta, children):
+    def module(self, children, entries):
         name, attributes, *items, _end = children
         return ast.Module(
             self.name(name), attributes or (),
             tuple(i for i in items if isinstance(i, (ast.RecordDefinition, ast.AliasDefinition))),
             tuple(i for i in items if isinstance(i, ast.DataDeclaration)),
             tuple(i for i in items if isinstance(i, ast.Routine)),
-            self.span(meta))
+            self.span(entries))
 
-    def module_attributes(self, meta, attributes):
+    def module_attributes(self, attributes, entries):
         return tuple(attribute.upper() for attribute in attributes)
 
     # ------------------------------------------------------- type definitions
 
-    def record_definition(self, meta, children):
+    def record_definition(self, children, entries):
         local, name, *components = children
         return ast.RecordDefinition(local is not None, self.name(name), tuple(components),
-                                    self.span(meta))
+                                    self.span(entries))
 
-    def record_component(self, meta, children):
+    def record_component(self, children, entries):
         type_ref, name = children
-        return ast.RecordComponent(type_ref, self.name(name), self.span(meta))
+        return ast.RecordComponent(type_ref, self.name(name), self.span(entries))
 
-    def alias_definition(self, meta, children):
+    def alias_definition(self, children, entries):
         local, base, name = children
-        return ast.AliasDefinition(local is not None, base, self.name(name), self.span(meta))
+        return ast.AliasDefinition(local is not None, base, self.name(name), self.span(entries))
 
-    def type_ref(self, meta, children):
+    def type_ref(self, children, entries):
         (name,) = children
-        return ast.TypeRef(self.name(name), self.span(meta))
+        return ast.TypeRef(self.name(name), self.span(entries))
 
     # ------------------------------------------------------ data declarations
 
-    def data_declaration(self, meta, children):
+    def data_declaration(self, children, entries):
         scope, storage, type_ref, name, dimensions, init = children
         return ast.DataDeclaration(storage.upper(), scope.upper() if scope else ast.GLOBAL,
                                    type_ref, self.name(name), dimensions or (), init,
-                                   self.span(meta))
+                                   self.span(entries))
 
-    def dimensions(self, meta, sizes):
+    def dimensions(self, sizes, entries):
         return tuple(sizes)
 
     # --------------------------------------------------------------- routines
 
-    def procedure(self, meta, children):
+    def procedure(self, children, entries):
         local, name, parameters, (data, body), backward, handler, undo, end = children
         return ast.Routine(ast.PROC, local is not None, self.name(name), None, parameters or (),
-                           data, body, backward, handler, undo, self.span(meta),
+                           data, body, backward, handler, undo, self.span(entries),
                            self.token_span(end))
 
-    def function(self, meta, children):
+    def function(self, children, entries):
         local, return_type, name, parameters, (data, body), handler, undo, end = children
         return ast.Routine(ast.FUNC, local is not None, self.name(name), return_type,
                            parameters or (), data, body, None, handler, undo,
-                           self.span(meta), self.token_span(end))
+                           self.span(entries), self.token_span(end))
 
-    def trap(self, meta, children):
+    def trap(self, children, entries):
         local, name, (data, body), handler, undo, end = children
         return ast.Routine(ast.TRAP, local is not None, self.name(name), None, (), data, body,
-                           None, handler, undo, self.span(meta), self.token_span(end))
+                           None, handler, undo, self.span(entries), self.token_span(end))
 
-    def routine_body(self, meta, items):
+    def routine_body(self, items, entries):
         data = tuple(i for i in items if isinstance(i, ast.DataDeclaration))
         body = tuple(i for i in items if not isinstance(i, ast.DataDeclaration))
         return data, body
 
-    def backward_handler(self, meta, children):
+    def backward_handler(self, children, entries):
         return children[0]
 
-    def undo_handler(self, meta, children):
+    def undo_handler(self, children, entries):
         return children[0]
 
-    def error_handler(self, meta, children):
+    def error_handler(self, children, entries):
         numbers, body = children
-        return ast.ErrorHandler(numbers, body, self.span(meta))
+        return ast.ErrorHandler(numbers, body, self.span(entries))
 
-    def error_numbers(self, meta, numbers):
+    def error_numbers(self, numbers, entries):
         return tuple(numbers)
 
-    def parameters(self, meta, entries):
+    def parameters(self, children, entries):
         """Flatten groups of alternatives, numbering the groups of two or more."""
         result = []
         group = 0
-        for entry in entries:
+        for entry in children:
             if isinstance(entry, ast.Parameter):
                 result.append(entry)
                 continue
@@ -213,164 +242,166 @@ class Lowering(Transformer):
                           for p in entry)
         return tuple(result)
 
-    def alternatives(self, meta, children):
+    def alternatives(self, children, entries):
         _backslash, *parameters = children
         return tuple(parameters)
 
-    def parameter(self, meta, children):
+    def parameter(self, children, entries):
         mode, type_ref, name, rank = children
         return ast.Parameter(mode.upper() if mode else ast.IN, type_ref, self.name(name),
-                             rank or 0, False, None, self.span(meta))
+                             rank or 0, False, None, self.span(entries))
 
-    def conformant_dimensions(self, meta, stars):
+    def conformant_dimensions(self, stars, entries):
         return len(stars)
 
     # ------------------------------------------------------------- statements
 
-    def body(self, meta, statements):
+    def body(self, statements, entries):
         return tuple(statements)
 
-    def assignment(self, meta, children):
+    def assignment(self, children, entries):
         target, value = children
-        return ast.Assignment(target, value, self.span(meta))
+        return ast.Assignment(target, value, self.span(entries))
 
-    def procedure_call(self, meta, children):
+    def procedure_call(self, children, entries):
         name, arguments = children
-        return ast.ProcedureCall(self.name(name), arguments or (), self.span(meta))
+        return ast.ProcedureCall(self.name(name), arguments or (), self.span(entries))
 
-    def late_binding_call(self, meta, children):
+    def late_binding_call(self, children, entries):
         name_expr, arguments = children
-        return ast.LateBindingCall(name_expr, arguments or (), self.span(meta))
+        return ast.LateBindingCall(name_expr, arguments or (), self.span(entries))
 
-    def goto(self, meta, children):
-        return ast.Goto(self.name(children[0]), self.span(meta))
+    def goto(self, children, entries):
+        return ast.Goto(self.name(children[0]), self.span(entries))
 
-    def label(self, meta, children):
-        return ast.Label(self.name(children[0]), self.span(meta))
+    def label(self, children, entries):
+        return ast.Label(self.name(children[0]), self.span(entries))
 
-    def return_statement(self, meta, children):
-        return ast.Return(children[0], self.span(meta))
+    def return_statement(self, children, entries):
+        return ast.Return(children[0], self.span(entries))
 
-    def raise_statement(self, meta, children):
-        return ast.Raise(children[0], self.span(meta))
+    def raise_statement(self, children, entries):
+        return ast.Raise(children[0], self.span(entries))
 
-    def exit(self, meta, children):
-        return ast.Exit(self.span(meta))
+    def exit(self, children, entries):
+        return ast.Exit(self.span(entries))
 
-    def retry(self, meta, children):
-        return ast.Retry(self.span(meta))
+    def retry(self, children, entries):
+        return ast.Retry(self.span(entries))
 
-    def trynext(self, meta, children):
-        return ast.TryNext(self.span(meta))
+    def trynext(self, children, entries):
+        return ast.TryNext(self.span(entries))
 
-    def connect(self, meta, children):
+    def connect(self, children, entries):
         target, trap = children
-        return ast.Connect(target, self.name(trap), self.span(meta))
+        return ast.Connect(target, self.name(trap), self.span(entries))
 
-    def placeholder_statement(self, meta, children):
-        return ast.PlaceholderStatement(children[0][1:-1].upper(), self.span(meta))
+    def placeholder_statement(self, children, entries):
+        return ast.PlaceholderStatement(children[0][1:-1].upper(), self.span(entries))
 
-    def if_statement(self, meta, children):
+    def if_statement(self, children, entries):
         condition, body, *elseifs, else_body = children
-        first = ast.IfBranch(condition, body, self.span(meta))
-        return ast.If((first, *elseifs), else_body, self.span(meta))
+        first = ast.IfBranch(condition, body, self.span(entries))
+        return ast.If((first, *elseifs), else_body, self.span(entries))
 
-    def elseif(self, meta, children):
+    def elseif(self, children, entries):
         condition, body = children
-        return ast.IfBranch(condition, body, self.span(meta))
+        return ast.IfBranch(condition, body, self.span(entries))
 
-    def compact_if(self, meta, children):
+    def compact_if(self, children, entries):
         condition, statement = children
-        return ast.CompactIf(condition, statement, self.span(meta))
+        return ast.CompactIf(condition, statement, self.span(entries))
 
-    def for_statement(self, meta, children):
+    def for_statement(self, children, entries):
         variable, start, stop, step, body = children
-        return ast.For(self.name(variable), start, stop, step, body, self.span(meta))
+        return ast.For(self.name(variable), start, stop, step, body, self.span(entries))
 
-    def while_statement(self, meta, children):
+    def while_statement(self, children, entries):
         condition, body = children
-        return ast.While(condition, body, self.span(meta))
+        return ast.While(condition, body, self.span(entries))
 
-    def test_statement(self, meta, children):
+    def test_statement(self, children, entries):
         subject, *cases, default = children
-        return ast.Test(subject, tuple(cases), default, self.span(meta))
+        return ast.Test(subject, tuple(cases), default, self.span(entries))
 
-    def test_case(self, meta, children):
+    def test_case(self, children, entries):
         *values, body = children
-        return ast.TestCase(tuple(values), body, self.span(meta))
+        return ast.TestCase(tuple(values), body, self.span(entries))
 
     # -------------------------------------------------------------- arguments
 
-    def arguments(self, meta, arguments):
+    def arguments(self, arguments, entries):
         return tuple(arguments)
 
-    def positional_argument(self, meta, children):
-        return ast.Argument(ast.REQUIRED, None, children[0], self.span(meta))
+    def positional_argument(self, children, entries):
+        return ast.Argument(ast.REQUIRED, None, children[0], self.span(entries))
 
-    def named_argument(self, meta, children):
+    def named_argument(self, children, entries):
         name, value = children
-        return ast.Argument(ast.REQUIRED, self.name(name), value, self.span(meta))
+        return ast.Argument(ast.REQUIRED, self.name(name), value, self.span(entries))
 
-    def optional_argument(self, meta, children):
+    def optional_argument(self, children, entries):
         _backslash, name, value = children
         kind = ast.SWITCH if value is None else ast.OPTIONAL
-        return ast.Argument(kind, self.name(name), value, self.span(meta))
+        return ast.Argument(kind, self.name(name), value, self.span(entries))
 
-    def conditional_argument(self, meta, children):
+    def conditional_argument(self, children, entries):
         _backslash, name, source = children
-        return ast.Argument(ast.CONDITIONAL, self.name(name), None, self.span(meta),
+        return ast.Argument(ast.CONDITIONAL, self.name(name), None, self.span(entries),
                             self.name(source))
 
     # ------------------------------------------------------------ expressions
 
-    def binary(self, meta, children):
+    def binary(self, children, entries):
         left, operator, right = children
-        return ast.Binary(operator.upper(), left, right, self.span(meta))
+        return ast.Binary(operator.upper(), left, right, self.span(entries))
 
-    def unary(self, meta, children):
+    def unary(self, children, entries):
         operator, operand = children
-        return ast.Unary(operator.upper(), operand, self.span(meta))
+        return ast.Unary(operator.upper(), operand, self.span(entries))
 
-    def name_ref(self, meta, children):
+    def name_ref(self, children, entries):
         name = self.name(children[0])
         return ast.NameRef(name, name.span)
 
-    def index(self, meta, children):
+    def index(self, children, entries):
         base, *indices = children
-        return ast.Index(base, tuple(indices), self.span(meta))
+        return ast.Index(base, tuple(indices), self.span(entries))
 
-    def component(self, meta, children):
+    def component(self, children, entries):
         base, name = children
-        return ast.Component(base, self.name(name), self.span(meta))
+        return ast.Component(base, self.name(name), self.span(entries))
 
-    def function_call(self, meta, children):
+    def function_call(self, children, entries):
         name, arguments = children
-        return ast.FunctionCall(self.name(name), arguments or (), self.span(meta))
+        return ast.FunctionCall(self.name(name), arguments or (), self.span(entries))
 
-    def aggregate(self, meta, items):
-        return ast.Aggregate(tuple(items), self.span(meta))
+    def aggregate(self, items, entries):
+        return ast.Aggregate(tuple(items), self.span(entries))
 
-    def placeholder(self, meta, children):
-        return ast.Placeholder(children[0][1:-1].upper(), self.span(meta))
+    def placeholder(self, children, entries):
+        return ast.Placeholder(children[0][1:-1].upper(), self.span(entries))
 
-    def boolean(self, meta, children):
-        return ast.BoolLiteral(children[0].upper() == "TRUE", self.span(meta))
+    def boolean(self, children, entries):
+        return ast.BoolLiteral(children[0].upper() == "TRUE", self.span(entries))
 
-    def number(self, meta, children):
+    def number(self, children, entries):
         text = str(children[0])
         value = number_value(text)
+        span = self.span(entries)
         if isinstance(value, float) and math.isinf(value):
-            raise error(BAD_NUMBER, f"numeric literal {text} is out of range", self.span(meta))
-        return ast.NumLiteral(value, text, self.span(meta))
+            self.report(error(BAD_NUMBER, f"numeric literal {text} is out of range", span))
+        return ast.NumLiteral(value, text, span)
 
-    def string(self, meta, children):
+    def string(self, children, entries):
         text = str(children[0])
         value = decode_string(text)
-        span = self.span(meta)
+        span = self.span(entries)
         if value is None:
-            raise error(BAD_STRING, "bad escape in string: a backslash must be followed by "
-                        "another backslash or two hex digits", span)
-        if len(value) > MAX_STRING_LENGTH:
-            raise error(BAD_STRING, f"string of {len(value)} characters; RAPID strings hold "
-                        f"at most {MAX_STRING_LENGTH}", span)
+            self.report(error(BAD_STRING, "bad escape in string: a backslash must be followed "
+                              "by another backslash or two hex digits", span))
+            value = text
+        elif len(value) > MAX_STRING_LENGTH:
+            self.report(error(BAD_STRING, f"string of {len(value)} characters; RAPID strings "
+                              f"hold at most {MAX_STRING_LENGTH}", span))
         return ast.StringLiteral(value, span)

@@ -1,24 +1,33 @@
-"""RAPID text to Lark parse tree; Lark's errors become rapidmc diagnostics.
+"""RAPID text to ``rapidmc.ast`` in one pass; Lark's errors become rapidmc diagnostics.
 
-The LALR parser is built once per process (and Lark caches the built tables
-on disk), from the grammar shipped as ``rapidmc.grammar/rapid.lark``.
+The grammar (``rapidmc.grammar/rapid.lark``) is compiled by Lark once per
+process (Lark caches the LALR tables on disk).  Parsing feeds Lark's LALR
+parser from ``RapidLexer`` and builds AST nodes as rules are reduced
+(``reductions``, ``lower``): no parse tree is built.
 
 Example::
 
-    >>> parse_tree("MODULE m ENDMODULE", "m.mod").data
-    'start'
+    >>> [module.name.text for module in parse_modules("MODULE m ENDMODULE", "m.mod")]
+    ['m']
 """
 from __future__ import annotations
 
 import functools
 import re
 
-from lark import Lark, Tree
+from lark import Lark
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
+from lark.lexer import LexerState, LexerThread, TextSlice
+from lark.parsers.lalr_analysis import Reduce
+from lark.parsers.lalr_parser import _Parser
 
+from .. import ast
 from ..ast import Span
 from ..diagnostics import (BAD_CHARACTER, BAD_STRING, FILE_EMPTY, PLACEHOLDER,
                            SYNTAX, UNEXPECTED_EOF, UserError, error)
+from .lexer import RapidLexer
+from .lower import Lowering
+from .reductions import rule_callbacks
 from .tokens import describe_expected, describe_token
 
 PLACEHOLDER_MEANINGS = {
@@ -32,22 +41,47 @@ _PLACEHOLDER_TEXT = re.compile(r"<(%s)>" % "|".join(PLACEHOLDER_MEANINGS))
 TOKEN_START_PUNCTUATION = frozenset('{}()[],.=<>+-*/:;\\?|%!"')
 _TOKEN_START_WORD = re.compile(r"[0-9a-zA-Z\xc0-\xd6\xd8-\xf6\xf8-\xff]")
 _NOT_CODE = re.compile(r"%%%(?:.|\n)*?%%%|![^\n]*")
+START_RULE = "start"
+# Parser stack entries beyond which a file counts as nested too deeply: the
+# later stages walk the AST recursively.  About 490 nested NOT or unary minus,
+# 160 nested parenthesised sums, 120 nested IF; ordinary code stays below 50.
+MAX_STACK_DEPTH = 500
 
 
 @functools.cache
 def rapid_parser() -> Lark:
-    """The LALR parser for RAPID, built on first use."""
+    """The grammar compiled by Lark (LALR tables and the contextual lexer), built on first use."""
     return Lark.open_from_package(
         "rapidmc.grammar", "rapid.lark", parser="lalr", lexer="contextual",
-        propagate_positions=True, maybe_placeholders=True, cache=True)
+        maybe_placeholders=True, cache=True)
 
 
-def parse_tree(text: str, filename: str) -> Tree:
-    """Parse RAPID source text into a Lark tree, or raise a ``UserError``."""
+@functools.cache
+def _reduced_rules() -> tuple:
+    """The rule objects the parse table reduces by (callbacks are keyed by them)."""
+    table = rapid_parser().parser.parser._parse_table
+    rules = {id(rule): rule for actions in table.states.values()
+             for action, rule in actions.values() if action is Reduce}
+    return tuple(rules.values())
+
+
+def parse_modules(text: str, filename: str) -> tuple[ast.Module, ...]:
+    """The modules in RAPID source text, or a ``UserError``."""
+    lark = rapid_parser()
+    frontend = lark.parser
+    lowering = Lowering(filename, None)
+    lexer = RapidLexer(frontend.lexer_conf.terminals, frozenset(frontend.lexer_conf.ignore),
+                       frontend.lexer, MAX_STACK_DEPTH, lowering.too_deep)
+    lowering.lexer = lexer
+    parser = _Parser(frontend.parser._parse_table, rule_callbacks(_reduced_rules(), lowering))
     try:
-        return rapid_parser().parse(text)
+        modules = parser.parse(LexerThread(lexer, LexerState(TextSlice.cast_from(text))),
+                               START_RULE)
     except UnexpectedInput as exc:
         raise syntax_error(exc, text, filename) from None
+    if lowering.problem is not None:
+        raise lowering.problem
+    return modules
 
 
 def has_code(text: str) -> bool:
