@@ -129,7 +129,7 @@ class RapidDescriber:
         choices, span, output = label
         inputs = {name: _choice_text(value) for name, value in choices}
         if span is None:
-            source = "(program ended: the state repeats)" if not choices else ""
+            source = "(the program has stopped: this state repeats forever)" if not choices else ""
             return TransitionInfo(None, None, source, inputs, output)
         text = SourceCache.line(span.file, span.line)
         source = text.strip() if text is not None else ""

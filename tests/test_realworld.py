@@ -182,7 +182,7 @@ def test_rawbytes_pack_and_unpack_follow_byte_order_and_sizes():
     assert rawbytes.from_text("0a 1F") == b"\n\x1f" and rawbytes.from_text("hi") == b"hi"
 
 
-# --- known gaps outside special_io (reported; fixes belong to link.py / expressions.py) ---------
+# --- gaps found in real code, now closed -------------------------------------------------
 
 def _link_error(tmp_path, text: str) -> str:
     path = tmp_path / "gap.mod"
@@ -191,16 +191,12 @@ def _link_error(tmp_path, text: str) -> str:
     return err if code != 0 else ""
 
 
-@pytest.mark.xfail(strict=True, reason="link.py refuses rawbytes record components; ROS-Industrial "
-                   "ROS_messages.sys declares RECORD ROS_msg with 'rawbytes data;'")
 def test_rawbytes_record_component_links(tmp_path):
     assert _link_error(tmp_path, "MODULE M\nRECORD msg\n  num kind;\n  rawbytes data;\nENDRECORD\n"
                        "VAR msg m;\nPROC main()\n  ClearRawBytes m.data;\n"
                        "  TPWrite \"n\" \\Num:=RawBytesLen(m.data);\nENDPROC\nENDMODULE\n") == ""
 
 
-@pytest.mark.xfail(strict=True, reason="an undeclared name read in an expression before any "
-                   "signal-argument use is not inferred as a configured signal (unknown name)")
 def test_configured_signal_read_before_it_is_set_links(tmp_path):
     assert _link_error(tmp_path, "MODULE M\nPROC main()\n  IF doLamp = 1 TPWrite \"on\";\n"
                        "  InvertDO doLamp;\nENDPROC\nENDMODULE\n") == ""

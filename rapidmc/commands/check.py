@@ -58,6 +58,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--input-domain", action="append", default=[], metavar="NAME=LIST",
                         help="finite values a free analog or group input may take, e.g. "
                              "AI1=0,5,10 (repeatable)")
+    parser.add_argument("--socket-messages", action="append", default=[], metavar="TEXT",
+                        help="a message SocketReceive may deliver (repeatable; default: one "
+                             "empty message)")
+    parser.add_argument("--socket-closures", action="store_true",
+                        help="the peer may close a socket at any receive (ERR_SOCK_CLOSED)")
+    parser.add_argument("--no-socket-timeouts", action="store_true",
+                        help="receives with a finite \\Time never time out")
+    parser.add_argument("--file-lines", action="append", default=[], metavar="TEXT",
+                        help="a line a file or serial read may deliver (repeatable)")
     parser.add_argument("--automaton", action="append", default=[], metavar="NAME=FILE.hoa",
                         help="use this Büchi automaton (HOA) for the NEGATION of property NAME")
     parser.add_argument("--backend", choices=BACKENDS, default=None,
@@ -107,6 +116,12 @@ def execute(args: argparse.Namespace) -> int:
     config = CheckConfig(program, _numbers(args.tp_answers, "--tp-answers"),
                          _numbers(args.fk_answers, "--fk-answers"), domains)
     _check_domains(program, domains)
+    if args.socket_messages:
+        config.socket_messages = tuple(args.socket_messages)
+    config.socket_closures = args.socket_closures
+    config.socket_timeouts = not args.no_socket_timeouts
+    if args.file_lines:
+        config.file_lines = tuple(args.file_lines)
     system = RapidSystem(program, config)
     describer = RapidDescriber(program)
     atoms = AtomCompiler(program)

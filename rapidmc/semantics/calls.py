@@ -169,7 +169,8 @@ def _persistent_value(compiler, routine_name, param, arg) -> Callable:
             raise error(NOT_A_REFERENCE, f"argument {param.name} of {routine_name} must be a "
                         f"persistent (PERS), not {storage or 'a value'} '{root.name.text}' "
                         "(the controller requires PERS here)", expr.span)
-    compiled = compiler.value(expr, param.types[0] if len(param.types) == 1 else None)
+    expected = param.types[0] if len(param.types) == 1 and not param.rank else None
+    compiled = compiler.value(expr, expected)
     _check_types(param, compiled.type, expr.span, routine_name)
     return compiled.fn
 

@@ -17,6 +17,7 @@ from typing import Optional, Sequence
 from .. import ast
 from ..diagnostics import (BAD_DECLARATION, DUPLICATE, ENVIRONMENT, NO_ENTRY, NOT_CONSTANT,
                            TYPE_MISMATCH, UNKNOWN_NAME, UNKNOWN_TYPE, UserError, error)
+from . import configured_signals
 from . import program as P
 from .builtins.data import PREDEFINED_DATA
 from .calls import ParameterView, bind
@@ -80,7 +81,7 @@ class Linker:
             components = []
             for component in definition.components:
                 component_type = self.resolve_type(component.type, namespace, module)
-                if component_type.kind not in ("atomic", RECORD):
+                if component_type.kind not in ("atomic", RECORD, "non-value"):
                     raise error(BAD_DECLARATION, f"record component '{component.name.text}' "
                                 f"must have a value type, not {component_type.name}",
                                 component.span)
@@ -170,6 +171,7 @@ class Linker:
             self._declare_routines(modules, namespace)
         for namespace, modules in groups:
             self._declare_data(modules, namespace)
+        self._configured_signals(program.modules)
         for namespace, modules in groups:
             self._prepare_routines(namespace)
         for routine in self.routines:
@@ -202,6 +204,16 @@ class Linker:
             scope = Scope(self.namespaces[namespace])
             self.module_scopes[key] = scope
         return scope
+
+    def _configured_signals(self, modules) -> None:
+        """Undeclared names the program passes as signals are signals of the I/O configuration."""
+        if not self.options.get("infer_signals", True):
+            return
+        declared = configured_signals.declared_names(modules)
+        for name, kind in configured_signals.signal_uses(modules):
+            if name.key in declared or self.system_symbol(name) is not None:
+                continue
+            self.physical_signal(name.text, kind, name.span)
 
     def _declare_routines(self, modules, namespace: int) -> None:
         seen_modules = set()
