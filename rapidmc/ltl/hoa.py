@@ -83,6 +83,7 @@ class _Transition:
     cubes: tuple
     target: int
     marked: bool
+    line: int
 
 
 @dataclass
@@ -93,6 +94,7 @@ class _Reading:
     starts: list[int] = field(default_factory=list)
     atoms: Optional[tuple[str, ...]] = None
     acceptance: str = ""
+    acceptance_line: int = 0
     marked_states: set[int] = field(default_factory=set)
     transitions: dict[int, list[_Transition]] = field(default_factory=dict)
 
@@ -149,6 +151,7 @@ def _read_header(lines: list[str], reader: _LineReader, reading: _Reading) -> in
                 raise reader.fail(number, f"AP: announces {count} names but lists {len(names)}")
             reading.atoms = tuple(_unquote(n) for n in names)
         elif key == "Acceptance:":
+            reading.acceptance_line = number
             reading.acceptance = " ".join(values).replace(" (", "(").replace("( ", "(")
             reading.acceptance = reading.acceptance.replace(" )", ")")
         elif key == "Alias:":
@@ -226,7 +229,8 @@ def _edge_line(words: list[str], reader: _LineReader, number: int,
         if int(name) >= atom_count:
             raise reader.fail(number, f"label uses AP {name} but only {atom_count} are declared")
         return int(name)
-    return _Transition(cubes(label, index), int(rest[0]), _marks(rest[1:], reader, number))
+    return _Transition(cubes(label, index), int(rest[0]), _marks(rest[1:], reader, number),
+                       number)
 
 
 class _Label:
@@ -245,17 +249,16 @@ class _Label:
         return self.words[self.position] if self.position < len(self.words) else ""
 
     def disjunction(self) -> Formula:
-        formula = self.conjunction()
-        while self.peek() == "|":
-            self.position += 1
-            formula = Or(formula, self.conjunction())
-        return formula
+        return self._chain("|", Or, self.conjunction)
 
     def conjunction(self) -> Formula:
-        formula = self.negation()
-        while self.peek() == "&":
+        return self._chain("&", And, self.negation)
+
+    def _chain(self, symbol: str, node, operand) -> Formula:
+        formula = operand()
+        while self.peek() == symbol:
             self.position += 1
-            formula = And(formula, self.negation())
+            formula = node(formula, operand())
         return formula
 
     def negation(self) -> Formula:
@@ -285,14 +288,15 @@ def _to_buchi(reading: _Reading, reader: _LineReader, last_line: int) -> Buchi:
     for state, out in reading.transitions.items():
         for t in out:
             if not (state < count and t.target < count):
-                raise reader.fail(last_line, f"state {max(state, t.target)} is out of range "
-                                             f"(States: {count})")
+                raise reader.fail(t.line, f"state {max(state, t.target)} is out of range "
+                                          f"(States: {count})")
     if any(s >= count for s in reading.starts):
         raise reader.fail(last_line, f"start state is out of range (States: {count})")
     acceptance = reading.acceptance
     if acceptance not in ("1 Inf(0)", "0 t", "0 f"):
-        raise reader.fail(last_line, f"only Büchi acceptance 'Inf(0)' is supported, "
-                                     f"found {acceptance or 'none'!r}")
+        raise reader.fail(reading.acceptance_line or last_line,
+                          f"only Büchi acceptance 'Inf(0)' is supported, "
+                          f"found {acceptance or 'none'!r}")
     if acceptance != "1 Inf(0)":
         every = acceptance == "0 t"
         return _assemble(reading, count, lambda state: every, lambda t: False)

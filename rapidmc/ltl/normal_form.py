@@ -41,22 +41,17 @@ def negation_normal_form(formula: Formula, positive: bool = True) -> Formula:
     return BINARY_RULES[kind](formula.left, formula.right, positive)
 
 
-def _nnf_pair(left: Formula, right: Formula, positive: bool) -> tuple[Formula, Formula]:
-    return negation_normal_form(left, positive), negation_normal_form(right, positive)
-
-
-def _and(left, right, positive):
-    a, b = _nnf_pair(left, right, positive)
-    return and_(a, b) if positive else or_(a, b)
-
-
-def _or(left, right, positive):
-    a, b = _nnf_pair(left, right, positive)
-    return or_(a, b) if positive else and_(a, b)
+def _dual_pair(when_positive, when_negative):
+    """The NNF rule of a binary operator: build from both operands in NNF."""
+    def rule(left: Formula, right: Formula, positive: bool) -> Formula:
+        a = negation_normal_form(left, positive)
+        b = negation_normal_form(right, positive)
+        return when_positive(a, b) if positive else when_negative(a, b)
+    return rule
 
 
 def _implies(left, right, positive):
-    return _or(Not(left), right, positive)
+    return BINARY_RULES[Or](Not(left), right, positive)
 
 
 def _equiv(left, right, positive):
@@ -72,31 +67,19 @@ def _xor(left, right, positive):
     return _equiv(left, right, not positive)
 
 
-def _until(left, right, positive):
-    a, b = _nnf_pair(left, right, positive)
-    return until(a, b) if positive else release(a, b)
-
-
-def _release(left, right, positive):
-    a, b = _nnf_pair(left, right, positive)
-    return release(a, b) if positive else until(a, b)
-
-
-def _weak_until(left, right, positive):
-    # a W b == b R (a | b);  !(a W b) == !b U (!a & !b)
-    a, b = _nnf_pair(left, right, positive)
-    return release(b, or_(a, b)) if positive else until(b, and_(a, b))
-
-
-def _strong_release(left, right, positive):
-    # a M b == b U (a & b);  !(a M b) == !b R (!a | !b)
-    a, b = _nnf_pair(left, right, positive)
-    return until(b, and_(a, b)) if positive else release(b, or_(a, b))
-
-
-BINARY_RULES = {And: _and, Or: _or, Implies: _implies, Equiv: _equiv, Xor: _xor,
-                Until: _until, Release: _release, WeakUntil: _weak_until,
-                StrongRelease: _strong_release}
+# a W b == b R (a | b), and its negation !b U (!a & !b) (operands arrive negated);
+# a M b == b U (a & b), and its negation !b R (!a | !b).
+BINARY_RULES = {
+    And: _dual_pair(lambda a, b: and_(a, b), lambda a, b: or_(a, b)),
+    Or: _dual_pair(lambda a, b: or_(a, b), lambda a, b: and_(a, b)),
+    Until: _dual_pair(lambda a, b: until(a, b), lambda a, b: release(a, b)),
+    Release: _dual_pair(lambda a, b: release(a, b), lambda a, b: until(a, b)),
+    WeakUntil: _dual_pair(lambda a, b: release(b, or_(a, b)),
+                          lambda a, b: until(b, and_(a, b))),
+    StrongRelease: _dual_pair(lambda a, b: until(b, and_(a, b)),
+                              lambda a, b: release(b, or_(a, b))),
+    Implies: _implies, Equiv: _equiv, Xor: _xor,
+}
 
 
 # --------------------------------------------------------------------------
@@ -108,24 +91,21 @@ def _complementary(a: Formula, b: Formula) -> bool:
     return (type(a) is Not and a.operand == b) or (type(b) is Not and b.operand == a)
 
 
-def and_(a: Formula, b: Formula) -> Formula:
-    if FALSE in (a, b) or _complementary(a, b):
-        return FALSE
-    if a == TRUE or a == b:
-        return b
-    if b == TRUE:
-        return a
-    return And(a, b)
+def _connective(node, neutral: Formula, absorbing: Formula):
+    """A smart ``&`` (or ``|``): folds constants, ``x op x`` and ``x op !x``."""
+    def build(a: Formula, b: Formula) -> Formula:
+        if absorbing in (a, b) or _complementary(a, b):
+            return absorbing
+        if a == neutral or a == b:
+            return b
+        if b == neutral:
+            return a
+        return node(a, b)
+    return build
 
 
-def or_(a: Formula, b: Formula) -> Formula:
-    if TRUE in (a, b) or _complementary(a, b):
-        return TRUE
-    if a == FALSE or a == b:
-        return b
-    if b == FALSE:
-        return a
-    return Or(a, b)
+and_ = _connective(And, TRUE, FALSE)
+or_ = _connective(Or, FALSE, TRUE)
 
 
 def next_(a: Formula) -> Formula:
