@@ -42,6 +42,12 @@ RESERVED_WORDS = frozenset("""
     RETURN STEP SYSMODULE TASK TEST THEN TO TRAP TRUE TRYNEXT UNDO VAR VIEWONLY WHILE WITH
     XOR""".split())
 MAX_STRING_LENGTH = 80
+# Binary operators by precedence level (terminal names in the grammar) for
+# the rules that leave the grouping to the lowering.
+MULTIPLYING = frozenset({"STAR", "SLASH", "DIV", "MOD"})
+COMPARING = frozenset({"RELATION"})
+CONJOINING = frozenset({"AND"})
+DISJOINING = frozenset({"OR", "XOR"})
 _STRING_ESCAPE = re.compile(r'""|\\\\|\\([0-9a-fA-F]{2})|\\')
 _INTEGER_LITERAL = re.compile(r"[0-9]+|0[xX][0-9a-fA-F]+|0[oO][0-7]+|0[bB][01]+")
 
@@ -85,8 +91,8 @@ class Lowering:
         self.filename = filename
         self.lexer = lexer
         self.problem: Optional[UserError] = None
-        # Expressions written in parentheses: id -> (line, column) of the parenthesis.
-        self.enclosed_starts: dict[int, tuple[int, int]] = {}
+        # Expressions written in parentheses: id -> where the parentheses start and end.
+        self.enclosed: dict[int, tuple[int, int, int, int]] = {}
 
     # ---------------------------------------------------------------- helpers
 
@@ -101,7 +107,8 @@ class Lowering:
 
     def enclose(self, node, entries: list) -> None:
         """``node`` stands for all of ``entries`` (parentheses around it)."""
-        self.enclosed_starts[id(node)] = self.text_start(entries)
+        last = self.lexer.previous
+        self.enclosed[id(node)] = (*self.text_start(entries), last.end_line, last.end_column)
 
     def span(self, entries: list) -> ast.Span:
         first = entries[0]
@@ -124,8 +131,19 @@ class Lowering:
                 continue
             span = getattr(entry, "span", None)
             if span is not None:
-                return self.enclosed_starts.get(id(entry)) or (span.line, span.column)
+                enclosed = self.enclosed.get(id(entry))
+                return enclosed[:2] if enclosed else (span.line, span.column)
         return None
+
+    def text_end(self, node) -> tuple[int, int]:
+        """Where the text of an expression ends (after its parentheses, if any)."""
+        enclosed = self.enclosed.get(id(node))
+        return enclosed[2:] if enclosed else (node.span.end_line, node.span.end_column)
+
+    def operation_span(self, first, last) -> ast.Span:
+        """From the start of ``first`` (a token or an expression) to the end of ``last``."""
+        line, column = self.text_start((first,))
+        return ast.Span(self.filename, line, column, *self.text_end(last))
 
     def token_span(self, token: Token) -> ast.Span:
         return ast.Span(self.filename, token.line, token.column, token.end_line, token.end_column)
@@ -352,9 +370,48 @@ class Lowering:
 
     # ------------------------------------------------------------ expressions
 
+    def expression(self, children, entries):
+        """Relations first, then AND, then OR and XOR, each from left to right."""
+        items = [child for child in children if child is not None]
+        if len(items) == 1:
+            return items[0]
+        for operators in COMPARING, CONJOINING, DISJOINING:
+            items = self.grouped(items, operators)
+        return items[0]
+
+    def term(self, children, entries):
+        """Operands joined by * / DIV MOD, from left to right; a sign covers one operand."""
+        items = [child for child in children if child is not None]
+        if len(items) == 1:
+            return items[0]
+        operands = [items[0]]
+        rest = iter(items[1:])
+        for operator in rest:
+            operand = next(rest)
+            if isinstance(operand, Token):
+                operand = self.negated(operand, next(rest))
+            operands += (operator, operand)
+        return self.grouped(operands, MULTIPLYING)[0]
+
     def binary(self, children, entries):
         left, operator, right = children
         return ast.Binary(operator.upper(), left, right, self.span(entries))
+
+    def grouped(self, items: list, operators: frozenset[str]) -> list:
+        """``operand (operator operand)*`` with the given operators applied, left to right."""
+        result = [items[0]]
+        for index in range(1, len(items), 2):
+            operator, operand = items[index], items[index + 1]
+            if operator.type in operators:
+                left = result[-1]
+                result[-1] = ast.Binary(operator.upper(), left, operand,
+                                        self.operation_span(left, operand))
+            else:
+                result += (operator, operand)
+        return result
+
+    def negated(self, sign: Token, operand):
+        return ast.Unary(sign.upper(), operand, self.operation_span(sign, operand))
 
     def unary(self, children, entries):
         operator, operand = children
