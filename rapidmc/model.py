@@ -88,8 +88,11 @@ def _format(value, kind) -> str:
 class RapidDescriber:
     """Printable views of states and transitions, in RAPID terms."""
 
-    def __init__(self, program: Program):
+    def __init__(self, program: Program, config: Optional[CheckConfig] = None):
         self.program = program
+        lazy = config.lazy_inputs if config is not None else {}
+        # inputs chosen when read are not stored: their values show in the step's inputs
+        self.signals = [s for s in program.signals if s.index not in lazy]
         self.globals = [(g.slot, g.name, value_kind(g.type), g.type) for g in program.globals
                         if g.namespace == PROGRAM_NAMESPACE and
                         getattr(g.type, "kind", "") not in ("semi-value", "non-value")]
@@ -111,7 +114,7 @@ class RapidDescriber:
                         and isinstance(value[2], tuple):
                     continue                       # a reference parameter
                 view[f"{routine.name}.{name}"] = _format(value, "num")
-        for signal in self.program.signals:
+        for signal in self.signals:
             view[f"signal {signal.name}"] = format_num(state.io[signal.index])
         view["robot TCP"] = _format(state.robot[0][0], "num")
         for slot, name, kind in self.environment:

@@ -147,9 +147,24 @@ class AtomCompiler:
             scope.names[signal.key] = Symbol(SIGNAL, signal.name, NUM, slot=signal.index,
                                              storage="SIGNAL")
         self.scope = scope
+        self.observed: set[int] = set()       # physical signals the atoms read
+        self.observes_signal_data = False     # an atom reads signal data (binding unknown)
+
+    def _note_signals(self, expr: ast.Expr) -> None:
+        from .semantics.configured_signals import _walk_expression
+        for node in _walk_expression(expr):
+            if isinstance(node, ast.NameRef):
+                symbol = self.scope.lookup(node.name.key)
+                if symbol is None:
+                    continue
+                if symbol.kind == SIGNAL:
+                    self.observed.add(symbol.slot)
+                elif getattr(symbol.type, "kind", "") == "semi-value":
+                    self.observes_signal_data = True
 
     def compile(self, atom: str, where: ast.Span) -> Callable:
         expr = parse_atom_expression(atom, where)
+        self._note_signals(expr)
         try:
             compiled = self._compile(expr)
         except UserError as exc:

@@ -71,8 +71,8 @@ CASES = {
                                              plant="variants/plant_reset_on_arrival.mod"),
     "sorter_a_sensors_forget": sorter_case("sorter_a.mod", 783, HOLDS, VIOLATED, HOLDS,
                                            plant="variants/plant_sensors_forget.mod"),
-    "door_safe": door_case("door_safe.mod", 53, HOLDS, HOLDS),
-    "door_race": door_case("door_race.mod", 65, VIOLATED, HOLDS),
+    "door_safe": door_case("door_safe.mod", 28, HOLDS, HOLDS),
+    "door_race": door_case("door_race.mod", 35, VIOLATED, HOLDS),
 }
 
 VIOLATIONS = [(case, name) for case, c in CASES.items()

@@ -113,9 +113,12 @@ def execute(args: argparse.Namespace) -> int:
     program_ast = load_program(args.files)
     environment = load_program(args.env) if args.env else None
     program = build(program_ast, entry=args.entry, environment=environment)
-    config = CheckConfig(program, _numbers(args.tp_answers, "--tp-answers"),
-                         _numbers(args.fk_answers, "--fk-answers"), domains)
     _check_domains(program, domains)
+    atoms = AtomCompiler(program)
+    jobs = [_prepare(prop, atoms, automata, args.backend) for prop in properties]
+    config = CheckConfig(program, _numbers(args.tp_answers, "--tp-answers"),
+                         _numbers(args.fk_answers, "--fk-answers"), domains,
+                         observed=_observed_inputs(program_ast, atoms))
     if args.socket_messages:
         config.socket_messages = tuple(args.socket_messages)
     config.socket_closures = args.socket_closures
@@ -123,9 +126,7 @@ def execute(args: argparse.Namespace) -> int:
     if args.file_lines:
         config.file_lines = tuple(args.file_lines)
     system = RapidSystem(program, config)
-    describer = RapidDescriber(program)
-    atoms = AtomCompiler(program)
-    jobs = [_prepare(prop, atoms, automata, args.backend) for prop in properties]
+    describer = RapidDescriber(program, config)
     unknown = set(automata) - {p.name for p in properties}
     if unknown:
         raise error(USAGE, f"--automaton names no property: {', '.join(sorted(unknown))}")
@@ -203,6 +204,28 @@ def _replayed(system: RapidSystem, result) -> None:
         replay(system, result)
     except AssertionError as exc:
         raise RuntimeError(f"internal error: {exc} [{TRACE_REPLAY.code}]") from None
+
+
+INTERRUPT_ORDERS = {"ISIGNALDI", "ISIGNALDO", "ISIGNALAI", "ISIGNALAO", "ISIGNALGI", "ISIGNALGO"}
+
+
+def _observed_inputs(program_ast, atoms: AtomCompiler):
+    """The free inputs whose values states must keep (None: all of them).
+
+    Inputs that no atom reads are chosen when the program reads them; an atom
+    that reads signal data (bound at run time) or an interrupt ordered on a
+    signal makes every input observed.
+    """
+    from ..semantics.configured_signals import signal_uses
+    if atoms.observes_signal_data:
+        return None
+    for module in program_ast.modules:
+        for routine in module.routines:
+            from ..semantics.configured_signals import _walk_statements
+            for node in _walk_statements(routine.body):
+                if isinstance(node, ast.ProcedureCall) and node.name.key in INTERRUPT_ORDERS:
+                    return None
+    return set(atoms.observed)
 
 
 def _check_domains(program, domains: dict) -> None:

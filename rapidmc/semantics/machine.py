@@ -16,6 +16,7 @@ from __future__ import annotations
 from typing import Any
 
 from .errors import RapidError
+from .lazy_inputs import stored
 from .state import Fault, Frame, State, RUNNING, FAILED
 
 GLOBAL = -1
@@ -75,7 +76,7 @@ class Machine:
 
     __slots__ = ("program", "frames", "store", "io", "robot", "interrupts", "errno",
                  "intno", "status", "fault", "clock", "output", "chooser", "choices",
-                 "span", "waiting")
+                 "span", "waiting", "lazy_values")
 
     def __init__(self, program, state: State, chooser):
         self.program = program
@@ -94,9 +95,13 @@ class Machine:
         self.choices: list[tuple] = []
         self.span = None
         self.waiting = False
+        self.lazy_values = None          # lazily chosen free inputs of this step (check mode)
 
     def to_state(self) -> State:
-        return State(tuple(self.frames), self.store, self.io, self.robot, self.interrupts,
+        io = self.io
+        if self.lazy_values is not None:
+            io = stored(io)
+        return State(tuple(self.frames), self.store, io, self.robot, self.interrupts,
                      self.errno, self.intno, self.status, self.fault, self.clock)
 
     # --- choices -------------------------------------------------------------

@@ -30,6 +30,7 @@ from .instructions import ReRaise
 from .machine import Machine
 from .program import Program
 from .state import ENDED, FAILED, RUNNING, Frame, Interrupts, State, Transition
+from .lazy_inputs import InputView
 from .timing import apply_scheduled, enqueue
 
 ENVIRONMENT_STEP_LIMIT = 100_000
@@ -100,19 +101,30 @@ class CheckConfig:
     """Model-checking choices: answer domains and which inputs are free."""
 
     def __init__(self, program: Program, tp_answers=(1.0, 2.0, 3.0),
-                 fk_answers=(1.0, 2.0, 3.0, 4.0, 5.0), input_domains: Optional[dict] = None):
+                 fk_answers=(1.0, 2.0, 3.0, 4.0, 5.0), input_domains: Optional[dict] = None,
+                 observed: Optional[set] = None):
+        """``observed``: indices of the free inputs properties look at; the others are
+        chosen when read (see lazy_inputs).  None: every free input is stored."""
         self.tp_answers = tuple(float(a) for a in tp_answers)
         self.fk_answers = tuple(float(a) for a in fk_answers)
         domains = input_domains or {}
         free = []
+        lazy = {}
         for signal in program.signals:
             if signal.driven or not signal.kind.endswith("I"):
                 continue
             if signal.kind == "DI":
-                free.append((signal.index, signal.name, (0.0, 1.0)))
+                domain = (0.0, 1.0)
             elif signal.key in domains:
-                free.append((signal.index, signal.name, tuple(domains[signal.key])))
+                domain = tuple(domains[signal.key])
+            else:
+                continue
+            if observed is None or signal.index in observed:
+                free.append((signal.index, signal.name, domain))
+            else:
+                lazy[signal.index] = (signal.name, domain)
         self.free_inputs = tuple(free)
+        self.lazy_inputs = lazy
         # every combination of free input values, in the order the chooser enumerates them
         self.input_valuations = tuple(itertools.product(*(d for _, _, d in free)))
         # per valuation: pvector.mset arguments and the label part naming the values
@@ -266,6 +278,9 @@ def step(program: Program, state: State, chooser: Chooser) -> Transition:
     if state.status != RUNNING:
         return Transition((), None, state, "")
     m = Machine(program, state, chooser)
+    if chooser.check_mode and chooser.config.lazy_inputs:
+        m.io = InputView(m.io, chooser.config.lazy_inputs, m)
+        m.lazy_values = {}
     span = execute_step(m)
     output = "".join(line + "\n" for line in m.output) if m.output else ""
     return Transition(tuple(m.choices), span, m.to_state(), output, m.waiting)
