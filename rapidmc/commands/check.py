@@ -17,8 +17,10 @@ from typing import Optional
 from .. import ast
 from ..check import (HOLDS, UNKNOWN, VIOLATED, Progress, PropertyResult, check_property,
                      find_reachable, format_json, format_text)
+from ..check.sarif import format_sarif, format_sarif_diagnostics
 from ..diagnostics import (AUTOMATON, DOMAIN, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN,
-                           EXIT_VIOLATED, TRACE_REPLAY, USAGE, SourceCache, UserError, error)
+                           EXIT_VIOLATED, TRACE_REPLAY, USAGE, SourceCache, UserError, error,
+                           render_all)
 from ..ltl import BACKENDS, read_hoa, to_buchi, to_text
 from ..ltl.syntax import Not
 from ..model import RapidDescriber, RapidSystem, replay, with_final_loop
@@ -48,8 +50,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help=f"bound on stored states per search (default {DEFAULT_MAX_STATES:,})")
     parser.add_argument("--max-seconds", type=float, default=None, metavar="S",
                         help="bound on the time of each search")
-    parser.add_argument("--format", choices=("text", "json"), default="text",
-                        help="output format (default: text)")
+    parser.add_argument("--format", choices=("text", "json", "sarif"), default="text",
+                        help="output format (default: text); sarif: SARIF 2.1.0 for CI and "
+                             "code-scanning tools, input errors included")
     parser.add_argument("--quiet", action="store_true", help="no progress line on stderr")
     parser.add_argument("--tp-answers", default="1,2,3", metavar="LIST",
                         help="answers TPReadNum/TPReadDnum may get (default: 1,2,3)")
@@ -106,6 +109,17 @@ def gather_properties(args) -> list[Property]:
 
 
 def execute(args: argparse.Namespace) -> int:
+    if args.format != "sarif":
+        return _check(args)
+    try:
+        return _check(args)
+    except UserError as exc:
+        print(render_all(exc.diagnostics), file=sys.stderr)
+        print(format_sarif_diagnostics(exc.diagnostics, exc.exit_code), end="")
+        return exc.exit_code
+
+
+def _check(args: argparse.Namespace) -> int:
     properties = gather_properties(args)
     automata = _pairs(args.automaton, "--automaton")
     domains = {name.upper(): _numbers(values, "--input-domain")
@@ -144,16 +158,16 @@ def execute(args: argparse.Namespace) -> int:
             results.append(PropertyResult(prop.name, prop.text, result))
     except EnvironmentFault as exc:
         raise error(ENVIRONMENT, f"environment model: {exc}") from None
+    verdicts = [r.result.verdict for r in results]
+    exit_code = EXIT_VIOLATED if VIOLATED in verdicts else (
+        EXIT_UNKNOWN if UNKNOWN in verdicts else EXIT_OK)
     if args.format == "json":
         print(format_json(results, describer))
+    elif args.format == "sarif":
+        print(format_sarif(results, describer, exit_code), end="")
     else:
         print(format_text(results, describer))
-    verdicts = [r.result.verdict for r in results]
-    if VIOLATED in verdicts:
-        return EXIT_VIOLATED
-    if UNKNOWN in verdicts:
-        return EXIT_UNKNOWN
-    return EXIT_OK
+    return exit_code
 
 
 def _progress(quiet: bool) -> Progress:
