@@ -3,9 +3,10 @@
 Lark's contextual lexer scans every token with a pattern made only of the
 terminals the parser state accepts, so a reserved word is read as an
 identifier where no keyword fits.  Doing that per token is slow; this lexer
-scans with one pattern of all terminals (in Lark's order: the first
-alternative that matches wins) and resolves identifiers against the
-keywords with a dictionary.  When the token it finds is one the parser state
+scans with one pattern: the ignored text (white space, comments, headers),
+then one of all terminals (in Lark's order: the first alternative that
+matches wins), and resolves identifiers against the keywords with a
+dictionary.  When the token it finds is one the parser state
 accepts, the contextual lexer would have found the same token (its pattern
 is a sub-list of the same alternatives).  Otherwise -- a keyword used as a
 name, a character no token starts with, an overlap such as ``<`` against
@@ -34,8 +35,7 @@ class RapidLexer(Lexer):
     def __init__(self, terminals: list[TerminalDef], ignore: frozenset[str],
                  contextual: ContextualLexer, max_depth: int, on_too_deep):
         self.keywords = _keywords(terminals)
-        self.pattern = _scanning_pattern(terminals, self.keywords)
-        self.ignore = ignore
+        self.pattern = _scanning_pattern(terminals, self.keywords, ignore)
         self.multiline = frozenset(t.name for t in terminals
                                    if _MAY_HOLD_NEWLINE.search(t.pattern.to_regexp()))
         self.contextual = contextual
@@ -44,46 +44,37 @@ class RapidLexer(Lexer):
         self.previous: Optional[Token] = None
 
     def lex(self, lexer_state: LexerState, parser_state) -> Iterator[Token]:
-        text = lexer_state.text.text
-        end = lexer_state.text.end
+        text, end = lexer_state.text.text, lexer_state.text.end
         counter = lexer_state.line_ctr
         pos, line, line_start = counter.char_pos, counter.line, counter.line_start_pos
-        states = parser_state.parse_conf.states
-        state_stack = parser_state.state_stack
-        keywords, ignore, multiline = self.keywords, self.ignore, self.multiline
-        match = self.pattern.match
+        states, state_stack = parser_state.parse_conf.states, parser_state.state_stack
+        keywords, multiline, match = self.keywords, self.multiline, self.pattern.match
         current = None
-        while pos < end:
-            found = match(text, pos)
-            kind = found.lastgroup if found else None
-            value = found.group() if found else ""
-            if kind == IDENTIFIER:
-                kind = keywords.get(value.upper(), IDENTIFIER)
-            if kind in ignore:
-                stop = found.end()
-                if kind in multiline:
-                    breaks = value.count("\n")
-                    if breaks:
-                        line += breaks
-                        line_start = pos + value.rindex("\n") + 1
-                pos = stop
-                continue
-            if kind in states[state_stack[-1]]:
-                stop = found.end()
-                token = Token(kind, value, pos, line, pos - line_start + 1, line, 0, stop)
-                if kind in multiline and "\n" in value:
-                    line += value.count("\n")
-                    line_start = pos + value.rindex("\n") + 1
-                    token.end_line = line
-                token.end_column = stop - line_start + 1
-                pos = stop
-            else:
+        while True:
+            found = match(text, pos, end)
+            token = None
+            if found is not None:
+                kind = found.lastgroup
+                start, stop = found.span(kind)
+                value = text[start:stop]
+                if kind == IDENTIFIER:
+                    kind = keywords.get(value.upper(), IDENTIFIER)
+                if kind in states[state_stack[-1]] and not (kind in multiline and "\n" in value):
+                    if start != pos:                # skipped white space and comments
+                        breaks = text.count("\n", pos, start)
+                        if breaks:
+                            line += breaks
+                            line_start = text.rindex("\n", pos, start) + 1
+                    column = start - line_start + 1
+                    token = Token(kind, value, start, line, column, line, column + stop - start, stop)
+                    pos = stop
+            if token is None:
                 counter.char_pos, counter.line, counter.line_start_pos = pos, line, line_start
                 counter.column = pos - line_start + 1
                 token = self._contextual_token(lexer_state, parser_state)
+                pos, line, line_start = counter.char_pos, counter.line, counter.line_start_pos
                 if token is None:
                     break
-                pos, line, line_start = counter.char_pos, counter.line, counter.line_start_pos
             if len(state_stack) > self.max_depth:
                 self.on_too_deep()
             lexer_state.last_token = token
@@ -91,8 +82,6 @@ class RapidLexer(Lexer):
             current = token
             yield token
         self.previous = current
-        counter.char_pos, counter.line, counter.line_start_pos = pos, line, line_start
-        counter.column = pos - line_start + 1
 
     def _contextual_token(self, lexer_state: LexerState, parser_state) -> Optional[Token]:
         """The next token as Lark's contextual lexer reads it (None at the end of the text)."""
@@ -112,10 +101,15 @@ def _keywords(terminals: list[TerminalDef]) -> dict[str, str]:
     return keywords
 
 
-def _scanning_pattern(terminals: list[TerminalDef], keywords: dict[str, str]) -> re.Pattern:
-    """One alternation of the terminals, in the order Lark's lexers try them."""
+def _scanning_pattern(terminals: list[TerminalDef], keywords: dict[str, str],
+                      ignore: frozenset[str]) -> re.Pattern:
+    """Ignored text, then one token: an alternation of the terminals in the order
+    Lark's lexers try them (the first alternative that matches wins)."""
     keyword_names = set(keywords.values())
-    scanned = sorted((t for t in terminals if t.name not in keyword_names),
+    ordered = sorted((t for t in terminals if t.name not in keyword_names),
                      key=lambda t: (-t.priority, -t.pattern.max_width, -len(t.pattern.value),
                                     t.name))
-    return re.compile("|".join(f"(?P<{t.name}>{t.pattern.to_regexp()})" for t in scanned))
+    skipped = "|".join(t.pattern.to_regexp() for t in ordered if t.name in ignore)
+    tokens = "|".join(f"(?P<{t.name}>{t.pattern.to_regexp()})"
+                      for t in ordered if t.name not in ignore)
+    return re.compile(f"(?>(?:{skipped})*)(?:{tokens})")
