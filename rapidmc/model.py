@@ -30,7 +30,7 @@ class RapidSystem:
     successors once.
     """
 
-    shared_limit = 200_000
+    shared_limit = 100_000
 
     def __init__(self, program: Program, config: CheckConfig):
         self.program = program
