@@ -39,7 +39,8 @@ class _ArgumentParser(argparse.ArgumentParser):
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = _ArgumentParser(prog="rapidmc", description=__doc__.splitlines()[0])
+    parser = _ArgumentParser(prog="rapidmc", description="rapidmc: an LTL model checker and "
+                             "reference interpreter for ABB RAPID robot programs")
     parser.add_argument("--version", action="version", version=f"rapidmc {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_ArgumentParser)
     for name, help_text in SUBCOMMANDS.items():

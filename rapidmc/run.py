@@ -19,7 +19,7 @@ from .semantics.machine import Machine
 from .semantics.program import Program
 from .semantics.state import ENDED, FAILED, RUNNING, State
 from .semantics.step import Chooser, EnvironmentFault, execute_step, start_state
-from .semantics.timing import advance_to, next_event
+from .semantics.timing import advance_to, next_event, schedule
 from .semantics.values import format_num
 
 
@@ -61,7 +61,8 @@ class RunResult:
 
 
 def run_program(program: Program, io_values: dict, stdin: TextIO, stdout: TextIO,
-                max_steps: Optional[int] = None, trace: Optional[TextIO] = None) -> RunResult:
+                max_steps: Optional[int] = None, trace: Optional[TextIO] = None,
+                input_changes: tuple = ()) -> RunResult:
     """Execute ``program`` to its end; FlexPendant output goes to ``stdout``.
 
     The run keeps one machine and applies the step function's transitions to
@@ -69,6 +70,8 @@ def run_program(program: Program, io_values: dict, stdin: TextIO, stdout: TextIO
     steps.
     """
     m = Machine(program, start_state(program, io_values), ConsoleChooser(stdin))
+    for seconds, index, value in input_changes:
+        schedule(m, seconds, index, value)      # an input script: changes at virtual times
     output = m.output
     steps = 0
     while m.status == RUNNING:

@@ -24,6 +24,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--io", action="append", default=[], metavar="NAME=VALUE",
                         help="value of an input signal for the whole run (repeatable; "
                              "inputs are 0 otherwise)")
+    parser.add_argument("--inputs", metavar="FILE",
+                        help="input script: lines 'SECONDS NAME=VALUE ...' setting inputs at "
+                             "virtual times (time passes in waits: WaitTime, or a wait that only "
+                             "a later input change can end)")
     parser.add_argument("--max-steps", type=int, default=None, metavar="N",
                         help="stop with an error after N steps (default: no limit)")
     parser.add_argument("--trace", action="store_true",
@@ -43,6 +47,38 @@ def parse_io(assignments: list[str]) -> dict[str, float]:
     return values
 
 
+def read_input_script(path: str, program) -> tuple:
+    """``SECONDS NAME=VALUE ...`` lines -> (seconds, signal index, value) in time order."""
+    from pathlib import Path
+    from .. import ast
+    from ..diagnostics import FILE_NOT_FOUND, SourceCache
+    file = Path(path)
+    if not file.is_file():
+        raise error(FILE_NOT_FOUND, f"input script '{path}' does not exist")
+    text = file.read_bytes().decode("latin-1")
+    SourceCache.remember(path, text)
+    changes = []
+    for number, line in enumerate(text.splitlines(), start=1):
+        words = line.split("#", 1)[0].split()
+        if not words:
+            continue
+        where = ast.Span(path, number, 1)
+        try:
+            seconds = float(words[0])
+        except ValueError:
+            raise error(USAGE, f"an input script line starts with a time in seconds, not "
+                        f"'{words[0]}'", where) from None
+        if seconds < 0 or len(words) < 2:
+            raise error(USAGE, "expected 'SECONDS NAME=VALUE ...' with SECONDS >= 0", where)
+        for assignment in parse_io(words[1:]).items():
+            name, value = assignment
+            signal = program.signal(name)
+            if signal is None:
+                raise error(USAGE, f"the input script names unknown signal '{name}'", where)
+            changes.append((seconds, signal.index, value))
+    return tuple(sorted(changes, key=lambda change: change[0]))
+
+
 def execute(args: argparse.Namespace) -> int:
     io_values = parse_io(args.io)
     program = build(load_program(args.files), entry=args.entry,
@@ -50,8 +86,9 @@ def execute(args: argparse.Namespace) -> int:
     unknown = [name for name in io_values if program.signal(name) is None]
     if unknown:
         raise error(USAGE, f"--io names unknown signal(s): {', '.join(unknown)}")
+    changes = read_input_script(args.inputs, program) if args.inputs else ()
     result = run_program(program, io_values, sys.stdin, sys.stdout, args.max_steps,
-                         sys.stderr if args.trace else None)
+                         sys.stderr if args.trace else None, changes)
     if result.state.status == FAILED:
         sys.stdout.flush()
         print(render(fault_diagnostic(program, result.state)), file=sys.stderr)
