@@ -18,7 +18,8 @@ from .semantics.errors import errno_name
 from .semantics.machine import Machine
 from .semantics.program import Program
 from .semantics.state import ENDED, FAILED, RUNNING, State
-from .semantics.step import Chooser, EnvironmentFault, execute_step, start_state
+from .semantics.step import (Chooser, EnvironmentFault, execute_step, signal_edges,
+                             start_state)
 from .semantics.timing import advance_to, next_event, schedule
 from .semantics.values import format_num
 
@@ -107,7 +108,10 @@ def _wake(m: Machine) -> None:
         span = m.program.routines[frame.routine].code[frame.pc].span
         raise error(RUNTIME_ERROR, "deadlock: the program waits for a condition that can never "
                     "become true (inputs keep their --io values in run mode)", span, exit_code=1)
+    before = m.io
     advance_to(m, due)
+    if m.interrupts.table and m.io != before:
+        signal_edges(m, before)          # scripted input changes may order traps
 
 
 def fault_diagnostic(program: Program, state: State) -> Diagnostic:

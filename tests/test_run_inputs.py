@@ -44,3 +44,30 @@ def test_bad_script_lines_are_diagnostics(tmp_path, capsys):
     assert code == 2 and "inputs.txt:1:1" in err and "[RMC601]" in err
     code, _, err = run(tmp_path, capsys, "1 NOPE=1\n")
     assert code == 2 and "unknown signal 'NOPE'" in err
+
+
+TRAP_PROGRAM = """MODULE T
+  VAR signaldi sensor;
+  VAR intnum irq;
+  VAR num hits := 0;
+  PROC main()
+    AliasIO "DI_SENSOR", sensor;
+    CONNECT irq WITH OnSensor;
+    ISignalDI sensor, 1, irq;
+    WaitUntil hits >= 2;
+    TPWrite "hits=" \\Num:=hits;
+  ENDPROC
+  TRAP OnSensor
+    Incr hits;
+  ENDTRAP
+ENDMODULE
+"""
+
+
+def test_scripted_rising_edges_run_the_trap_while_the_program_waits(tmp_path, capsys):
+    program = tmp_path / "trap.mod"
+    program.write_text(TRAP_PROGRAM)
+    inputs = tmp_path / "inputs.txt"
+    inputs.write_text("1 DI_SENSOR=1\n2 DI_SENSOR=0\n3 DI_SENSOR=1\n")
+    assert main(["run", str(program), "--inputs", str(inputs)]) == 0
+    assert capsys.readouterr().out == "hits=2\n"

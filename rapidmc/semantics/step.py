@@ -314,7 +314,7 @@ def execute_step(m: Machine):
         io_mid = m.io
         run_environment_routine(m, program.environment_react)
         if m.interrupts.table and m.io != io_mid:
-            _signal_edges(m, io_mid)
+            signal_edges(m, io_mid)
     return span
 
 
@@ -325,7 +325,7 @@ def _step_with_interrupts(m: Machine, io_before):
         _timers_may_fire(m)
     span = _execute(m)
     if m.interrupts.table and m.io != io_before:
-        _signal_edges(m, io_before)
+        signal_edges(m, io_before)
     return span
 
 
@@ -365,7 +365,7 @@ def _deactivate(m: Machine, number: int) -> None:
         e._replace(active=False) if e.number == number else e for e in m.interrupts.table))
 
 
-def _signal_edges(m: Machine, before) -> None:
+def signal_edges(m: Machine, before) -> None:
     for entry in m.interrupts.table:
         source = entry.source
         if not entry.active or not source or source[0] != "signal":
