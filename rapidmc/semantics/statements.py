@@ -336,24 +336,23 @@ class RoutineCompiler:
             self.end_block(follow)
 
     def _CompactIf(self, statement: ast.CompactIf, follow: Label) -> None:
-        condition = self.expressions().condition(statement.condition)
-        test = self.emit(Branch(statement.span, condition.fn))
-        body = Label()
-        test.target_true = body
-        test.target_false = follow
-        self.place(body)
+        self.branch(statement.condition, statement.span, follow)
         self.statement(statement.statement, follow)
         self.end_block(follow)
 
     def _While(self, statement: ast.While, follow: Label) -> None:
         head = self.here()
-        condition = self.expressions().condition(statement.condition)
-        test = self.emit(Branch(statement.span, condition.fn))
+        self.branch(statement.condition, statement.span, follow)
+        self.block(statement.body, head)
+
+    def branch(self, condition_expr, span, otherwise: Label) -> None:
+        """Emit a condition test; what is emitted next runs when it holds."""
+        condition = self.expressions().condition(condition_expr)
+        test = self.emit(Branch(span, condition.fn))
         body = Label()
         test.target_true = body
-        test.target_false = follow
+        test.target_false = otherwise
         self.place(body)
-        self.block(statement.body, head)
 
     def _For(self, statement: ast.For, follow: Label) -> None:
         compiler = self.expressions()

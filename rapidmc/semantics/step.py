@@ -193,14 +193,7 @@ def run_environment_routine(m: Machine, routine_index: int) -> None:
     steps = 0
     try:
         while m.frames and m.status == RUNNING:
-            frame = m.frames[-1]
-            instruction = m.program.routines[frame.routine].code[frame.pc]
-            try:
-                instruction.run(m)
-            except RapidError as exc:
-                deliver_error(m, exc.errno, str(exc))
-            except ReRaise as exc:
-                deliver_error(m, exc.errno, errno_name(exc.errno), from_handler=True)
+            run_instruction(m)
             if m.waiting:
                 raise EnvironmentFault(f"environment routine {program_routine.name} waits "
                                        "(waits are not allowed in an environment reaction)")
@@ -301,15 +294,7 @@ def execute_step(m: Machine):
     if interrupts.table or interrupts.scheduled or interrupts.pending:
         span = _step_with_interrupts(m, io_before)
     else:
-        frame = m.frames[-1]
-        instruction = program.routines[frame.routine].code[frame.pc]
-        span = instruction.span
-        try:
-            instruction.run(m)
-        except RapidError as exc:
-            deliver_error(m, exc.errno, str(exc))
-        except ReRaise as exc:
-            deliver_error(m, exc.errno, errno_name(exc.errno), from_handler=True)
+        span = run_instruction(m)
     if program.environment_react is not None and m.status == RUNNING:
         io_mid = m.io
         run_environment_routine(m, program.environment_react)
@@ -344,8 +329,13 @@ def _execute(m: Machine):
             if entry.source and entry.source[-1] is True and entry.source[0] != "pers":
                 _deactivate(m, number)
             return trap.span
+    return run_instruction(m)
+
+
+def run_instruction(m: Machine):
+    """Execute the instruction at the program counter; errors go to their handler."""
     frame = m.frames[-1]
-    instruction = program.routines[frame.routine].code[frame.pc]
+    instruction = m.program.routines[frame.routine].code[frame.pc]
     try:
         instruction.run(m)
     except RapidError as exc:
