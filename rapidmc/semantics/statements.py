@@ -321,13 +321,8 @@ class RoutineCompiler:
     # --------------------------------------------------- compound statements
     def _If(self, statement: ast.If, follow: Label) -> None:
         for branch in statement.branches:
-            condition = self.expressions().condition(branch.condition)
-            test = self.emit(Branch(branch.span, condition.fn))
-            body = Label()
             otherwise = Label()
-            test.target_true = body
-            test.target_false = otherwise
-            self.place(body)
+            self.branch(branch.condition, branch.span, otherwise)
             self.block(branch.body, follow)
             self.place(otherwise)
         if statement.else_body is not None:
