@@ -379,10 +379,12 @@ class RoutineCompiler:
     def _Test(self, statement: ast.Test, follow: Label) -> None:
         compiler = self.expressions()
         subject = compiler.value(statement.subject)
+        # CASE values first: a user function call in them is emitted before the dispatch
+        case_values = [[self.expressions().value(v, subject.type).fn for v in case.values]
+                       for case in statement.cases]
         dispatch = self.emit(TestDispatch(statement.span, subject.fn))
         bodies = []
-        for case in statement.cases:
-            value_fns = [self.expressions().value(v, subject.type).fn for v in case.values]
+        for case, value_fns in zip(statement.cases, case_values):
             label = Label()
             dispatch.cases.append((value_fns, label))
             bodies.append((label, case.body))
