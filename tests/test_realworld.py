@@ -29,6 +29,9 @@ SERVER = [str(HERE / "socket_server" / "RobotServer.mod")]
 ROS = [str(HERE / "ros_motion" / "ROS_common.sys"), str(HERE / "ros_motion" / "ROS_motionServer.mod")]
 BACKUP = [str(HERE / "backup" / "cell.pgf")]
 LIBRARY = [str(HERE / "library" / "StrUtil.sys"), str(HERE / "library" / "LibDemo.mod")]
+SURVEY2 = HERE / "survey2"          # one small program per cause found in the round-2 survey
+REGISTERS = [str(SURVEY2 / "user_registers.mod")]
+COMPARED = [str(SURVEY2 / "compared_signals.mod")]
 
 
 def cli(argv, stdin: str = "") -> tuple[int, str, str]:
@@ -71,6 +74,15 @@ RUNS = [
      LIBRARY, [], "", 0,
      ["fields: 4", "second: 20", "third empty: TRUE", "fourth: abc", "fifth: []", "total: 28",
       "clamp: 100", "[  7]"]),
+    ("USER module data: reg1..reg5 and clock1 used without declarations",
+     REGISTERS, [], "4\n", 0,
+     ["Dismiss the last cycle time?", "cycle 2", "answer 4", "count 1"]),
+    ("undeclared names compared with numbers are configured signals (kind from the prefix)",
+     COMPARED, ["--io", "DI_CONV_IN_POS=1", "--io", "giRecipe=7"], "", 0, ["recipe 7"]),
+    ("stoppoint constants inpos, stoptime, fllwtime",
+     [str(SURVEY2 / "stop_points.mod")], [], "", 0, ["follow time"]),
+    ("errnum names of EGM and RMQ handled in ERROR",
+     [str(SURVEY2 / "egm_errors.mod")], [], "", 0, ["timeouts 2"]),
 ]
 
 
@@ -95,6 +107,10 @@ CHECKS = [
     (BACKUP, [], 'G ("goCellState = 2" -> "nPartsTotal = 3")', "HOLDS"),
     (BACKUP, [], 'F "nPartsTotal = 3"', "VIOLATED"),    # the part sensor may stay off forever
     (BACKUP, [], 'G "doGripClose = 0"', "VIOLATED"),
+    (REGISTERS, [], 'G "reg3 <= 1"', "HOLDS"),
+    (COMPARED, ["--input-domain", "giRecipe=0,5"], 'F "nState = 3"', "VIOLATED"),  # sensor stays off
+    (COMPARED, ["--input-domain", "giRecipe=0,5"], 'G ("nState = 3" -> "DO_ENABLE_CONV = 0")',
+     "HOLDS"),
 ]
 
 
@@ -200,3 +216,35 @@ def test_rawbytes_record_component_links(tmp_path):
 def test_configured_signal_read_before_it_is_set_links(tmp_path):
     assert _link_error(tmp_path, "MODULE M\nPROC main()\n  IF doLamp = 1 TPWrite \"on\";\n"
                        "  InvertDO doLamp;\nENDPROC\nENDMODULE\n") == ""
+
+
+def test_signal_kind_follows_the_name_prefix():
+    from rapidmc.semantics.configured_signals import kind_from_prefix
+    cases = {"diPart": "DI", "DI_CONV": "DI", "DI1": "DI", "doLamp": "DO", "GO_CODE": "GO",
+             "aiLevel": "AI", "aoSpeed": "AO", "giRecipe": "GI", "DOOR_CLOSED": "DI",
+             "dial": "DI", "sensor": "DI"}
+    assert {name: kind_from_prefix(name) for name in cases} == cases
+
+
+def test_compared_output_signal_is_an_output(tmp_path):
+    path = tmp_path / "lamp.mod"
+    path.write_text("MODULE M\nPROC main()\n  IF doLamp = 0 TPWrite \"off\";\nENDPROC\nENDMODULE\n")
+    code, out, err = cli(["check", str(path), "--quiet", "--formula", 'p: G "doLamp = 0"'])
+    assert "p: HOLDS" in out, out + err       # nobody sets an output: it stays 0
+
+
+def test_missing_tool_explains_where_tools_live(tmp_path):
+    err = _link_error(tmp_path, "MODULE M\nCONST robtarget p:=[[0,0,0],[1,0,0,0],[0,0,0,0],"
+                      "[9E9,9E9,9E9,9E9,9E9,9E9]];\nPROC main()\n  MoveL p, v100, fine, tGripper;\n"
+                      "ENDPROC\nENDMODULE\n")
+    assert "unknown name 'tGripper'" in err and "'tGripper' would be tooldata" in err
+    assert "CalibData.mod" in err
+
+
+def test_user_module_data_is_not_in_programs_that_do_not_use_it(tmp_path):
+    program = build(load_program([str(SURVEY2 / "stop_points.mod")]))
+    assert not any(data.key.startswith("REG") for data in program.globals)
+    program = build(load_program(REGISTERS))
+    assert sorted(d.key for d in program.globals if d.module == "user") == [
+        "CLOCK1", "REG1", "REG2", "REG3"]
+

@@ -6,10 +6,12 @@ not declared in RAPID.  Before compiling, the linker walks every routine
 and takes each undeclared name passed to a signal parameter of a predefined
 routine (SetDO, WaitDI, DInput, ISignalDI, ...) as a configured signal of
 that parameter's kind; the name can then also be read in expressions, in
-any order.
+any order.  An undeclared name that is only compared with a number
+(``IF diPart = 1``) is a configured signal too (kind from its prefix).
 """
 from __future__ import annotations
 
+import re
 from typing import Iterable, Iterator
 
 from .. import ast
@@ -34,13 +36,50 @@ def declared_names(modules: Iterable[ast.Module]) -> set[str]:
 
 def signal_uses(modules: Iterable[ast.Module]) -> Iterator[tuple[ast.Name, str]]:
     """(name, kind) for each bare name passed to a signal parameter of a predefined routine."""
+    for node in _nodes(modules):
+        yield from _call_uses(node)
+
+
+def compared_names(modules: Iterable[ast.Module]) -> Iterator[tuple[ast.Name, str]]:
+    """(name, kind) for each bare name compared with a number: ``IF diPart = 1 THEN``.
+
+    Controller programs read configured signals by name without ever passing
+    them to an I/O routine.  The kind follows the usual name prefix (di, do,
+    gi, go, ai, ao: ``diPart``, ``DI_PART``, ``DI1``); a name without one is
+    taken as a digital input.  The linker only asks about undeclared names.
+    """
+    for node in _nodes(modules):
+        if isinstance(node, ast.Binary) and node.op in COMPARISONS:
+            for name_side, other in ((node.left, node.right), (node.right, node.left)):
+                if isinstance(name_side, ast.NameRef) and _is_number(other):
+                    yield name_side.name, kind_from_prefix(name_side.name.text)
+
+
+COMPARISONS = ("=", "<>", "<", "<=", ">", ">=")
+_PREFIX = re.compile(r"^(?:(di|do|gi|go|ai|ao)(?=[A-Z_0-9])|(DI|DO|GI|GO|AI|AO)(?=[_0-9]))")
+
+
+def kind_from_prefix(name: str) -> str:
+    """The signal kind a name's prefix suggests: ``doLamp`` -> DO; DI without a prefix."""
+    match = _PREFIX.match(name)
+    if match is None:
+        return "DI"
+    return (match.group(1) or match.group(2)).upper()
+
+
+def _is_number(expr) -> bool:
+    if isinstance(expr, ast.Unary) and expr.op in ("-", "+"):
+        expr = expr.operand
+    return isinstance(expr, ast.NumLiteral)
+
+
+def _nodes(modules: Iterable[ast.Module]) -> Iterator[object]:
     for module in modules:
         for routine in module.routines:
             sections = [routine.body, routine.backward or (), routine.undo or (),
                         routine.error.body if routine.error else ()]
             for statements in sections:
-                for node in _walk_statements(statements):
-                    yield from _call_uses(node)
+                yield from _walk_statements(statements)
 
 
 def _call_uses(node) -> Iterator[tuple[ast.Name, str]]:

@@ -137,12 +137,13 @@ class ExpressionCompiler:
         raise error(PLACEHOLDER, f"placeholder <{expr.kind}> cannot be executed", expr.span)
 
     # ------------------------------------------------------------------ names
-    def lookup(self, name: ast.Name) -> Symbol:
+    def lookup(self, name: ast.Name, expected=None) -> Symbol:
         symbol = self.scope.lookup(name.key)
         if symbol is None:
             symbol = self.linker.system_symbol(name)
         if symbol is None:
-            raise error(UNKNOWN_NAME, f"unknown name '{name.text}'", name.span)
+            raise error(UNKNOWN_NAME, f"unknown name '{name.text}'", name.span,
+                        *_unknown_name_notes(name, expected))
         return symbol
 
     def _NameRef(self, expr: ast.NameRef, expected) -> Compiled:
@@ -153,7 +154,7 @@ class ExpressionCompiler:
         if key == "INTNO" and self.scope.lookup(key) is None:
             self._no_variables(expr)
             return Compiled(lambda m: m.intno, NUM)
-        symbol = self.lookup(expr.name)
+        symbol = self.lookup(expr.name, expected)
         kind = symbol.kind
         if kind == CONSTANT:
             return constant(symbol.value, symbol.type)
@@ -486,3 +487,17 @@ class ExpressionCompiler:
             return component_ref, component_type, symbol
         raise error(NOT_A_REFERENCE, f"a variable or persistent is required here ({purpose})",
                     expr.span)
+
+
+# Data a robot station defines outside the program's main modules (CalibData.mod, a data module).
+STATION_DATA_TYPES = ("TOOLDATA", "WOBJDATA", "ROBTARGET", "JOINTTARGET", "LOADDATA")
+
+
+def _unknown_name_notes(name: ast.Name, expected) -> tuple[str, ...]:
+    """Why a tool, work object or target may be unknown: its module was not given."""
+    if getattr(expected, "key", None) in STATION_DATA_TYPES:
+        return (f"'{name.text}' would be {expected.name}: tools, work objects and targets are often "
+                "declared in another module of the task (CalibData.mod or a data module); "
+                "give that module too",)
+    return ()
+

@@ -122,6 +122,8 @@ class Linker:
         if symbol is not None:
             return symbol
         entry = PREDEFINED_DATA.get(name.key)
+        if entry is not None and entry.storage == "VAR":
+            return self._user_module_variable(entry)
         if entry is not None:
             rapid_type = self.builtin_types.get(entry.type_name.upper())
             symbol = Symbol(CONSTANT, entry.name, rapid_type, value=entry.value,
@@ -136,6 +138,16 @@ class Linker:
         if name.key == "LONG_JMP_ALL_ERR":
             return Symbol(CONSTANT, name.text, NUM, value=float(LONG_JMP_ALL_ERR), storage="CONST")
         return None
+
+    def _user_module_variable(self, entry) -> Symbol:
+        """A variable of the USER system module (reg1..reg5, clock1), given a slot on first use."""
+        rapid_type = self.builtin_types[entry.type_name.upper()]
+        slot = len(self.globals)
+        self.globals.append(P.GlobalData(slot, entry.name, entry.name.upper(), rapid_type, "VAR",
+                                         "user", P.PROGRAM_NAMESPACE, False, None, entry.value))
+        symbol = Symbol(GLOBAL_DATA, entry.name, rapid_type, slot=slot, storage="VAR")
+        self.system.declare(entry.name.upper(), symbol)
+        return symbol
 
     # ---------------------------------------------------------------- signals
     def physical_signal(self, name: str, kind: str, span=None, driven: bool = False) -> P.Signal:
@@ -210,7 +222,9 @@ class Linker:
         if not self.options.get("infer_signals", True):
             return
         declared = configured_signals.declared_names(modules)
-        for name, kind in configured_signals.signal_uses(modules):
+        uses = list(configured_signals.signal_uses(modules))
+        uses += configured_signals.compared_names(modules)     # after the calls: they know the kind
+        for name, kind in uses:
             if name.key in declared or self.system_symbol(name) is not None:
                 continue
             self.physical_signal(name.text, kind, name.span)

@@ -13,14 +13,14 @@ from dataclasses import dataclass
 
 from ..values import to_num
 
-CONST, PERS = "CONST", "PERS"
+CONST, PERS, VAR = "CONST", "PERS", "VAR"
 
 
 @dataclass(frozen=True)
 class PredefinedData:
     name: str          # spelling as in the manual
     type_name: str     # RAPID type, lower case
-    storage: str       # CONST or PERS
+    storage: str       # CONST, PERS, or VAR (a variable of the USER system module)
     value: object
 
 
@@ -88,6 +88,18 @@ LOAD0 = (to_num(0.001), _nums(0, 0, 0.001), _nums(1, 0, 0, 0)) + _nums(0, 0, 0)
 _define("load0", "loaddata", LOAD0, PERS)
 _define("tool0", "tooldata", (True, _IDENTITY_POSE, LOAD0), PERS)
 _define("wobj0", "wobjdata", (False, True, "", _IDENTITY_POSE, _IDENTITY_POSE), PERS)
+
+
+# --- stop points (stoppoint, the type component of stoppointdata) -------------------
+for _number, _name in enumerate(("inpos", "stoptime", "fllwtime"), start=1):
+    _define(_name, "stoppoint", float(_number))
+
+# --- the USER system module every task loads: reg1..reg5 and clock1 ------------------
+# They are variables: the linker gives one a slot the first time the program uses
+# it without declaring it (so programs that never use them keep their state shape).
+for _number in range(1, 6):
+    _define(f"reg{_number}", "num", 0.0, VAR)
+_define("clock1", "clock", (False, 0.0, 0.0), VAR)
 
 
 # --- sockets, rawbytes, files and EGM (rapidmc.semantics.special_io and friends) -------------
