@@ -29,6 +29,20 @@ IDENTIFIER = "NAME"
 _MAY_HOLD_NEWLINE = re.compile(r"\\n|\n|\\s|\[\^|\(\?s")
 
 
+class ScannedToken(Token):
+    """A Lark token built directly (``Token()`` sorts out deprecated keywords first,
+    which costs a third of the time it takes to scan a token)."""
+
+    __slots__ = ()
+
+    def __new__(cls, type, value, start_pos=None, line=None, column=None, end_line=None,
+                end_column=None, end_pos=None):
+        token = str.__new__(cls, value)
+        token.type, token.value, token.start_pos, token.end_pos = type, value, start_pos, end_pos
+        token.line, token.column, token.end_line, token.end_column = line, column, end_line, end_column
+        return token
+
+
 class RapidLexer(Lexer):
     """Tokens for Lark's LALR parser; ``previous`` is the last token shifted."""
 
@@ -66,7 +80,8 @@ class RapidLexer(Lexer):
                             line += breaks
                             line_start = text.rindex("\n", pos, start) + 1
                     column = start - line_start + 1
-                    token = Token(kind, value, start, line, column, line, column + stop - start, stop)
+                    token = ScannedToken(kind, value, start, line, column, line,
+                                         column + stop - start, stop)
                     pos = stop
             if token is None:
                 counter.char_pos, counter.line, counter.line_start_pos = pos, line, line_start

@@ -112,7 +112,7 @@ class Lowering:
 
     def span(self, entries: list) -> ast.Span:
         first = entries[0]
-        if type(first) is Token:
+        if isinstance(first, Token):
             line, column = first.line, first.column
         else:
             line, column = self.text_start(entries)
@@ -372,20 +372,15 @@ class Lowering:
 
     def expression(self, children, entries):
         """Relations first, then AND, then OR and XOR, each from left to right."""
-        items = [child for child in children if child is not None]
-        if len(items) == 1:
-            return items[0]
+        items = children
         for operators in COMPARING, CONJOINING, DISJOINING:
             items = self.grouped(items, operators)
         return items[0]
 
     def term(self, children, entries):
         """Operands joined by * / DIV MOD, from left to right; a sign covers one operand."""
-        items = [child for child in children if child is not None]
-        if len(items) == 1:
-            return items[0]
-        operands = [items[0]]
-        rest = iter(items[1:])
+        operands = [children[0]]
+        rest = iter(children[1:])
         for operator in rest:
             operand = next(rest)
             if isinstance(operand, Token):
