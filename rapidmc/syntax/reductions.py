@@ -17,6 +17,7 @@ Example::
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from typing import Callable, Optional
 
@@ -103,9 +104,14 @@ def rule_callbacks(rules, lowering) -> dict[Rule, Callback]:
     return {rule: _callback(rule, lowering) for rule in rules}
 
 
+@functools.cache
+def _selector(rule: Rule) -> Optional[Callback]:
+    return ChildPlan.of(rule).selector()
+
+
 def _callback(rule: Rule, lowering) -> Callback:
     name = rule.alias or rule.options.template_source or rule.origin.name
-    select = ChildPlan.of(rule).selector()
+    select = _selector(rule)
     if name.startswith("_"):
         return select or _same
     method = getattr(lowering, name, None) or _missing(name)
