@@ -1,15 +1,22 @@
 """Parsing speed: generate a large RAPID module and report lines per second.
 
-Usage: python bench/parse.py [LINES]   (default 100000)
+Usage: python bench/parse.py [LINES] [RUNS]   (default 100000 lines, 3 runs)
 
 The generated code is typical robot code: declarations with multi-line
 aggregates, moves with optional arguments, IF/FOR/WHILE/TEST, assignments
 with arithmetic and logic.  The figure covers the whole front end (lexing,
 LALR parsing, lowering to rapidmc.ast); the one-off parser construction is
-timed separately.
+timed separately.  The module is parsed RUNS times; the median is the figure
+to quote (the machine is shared, single runs vary by 20% and more).
+
+Figures on the project machine (2 cores, loaded), median of 3 runs of
+100,000 lines: 8,100 lines/s with a Lark parse tree lowered by a
+Transformer afterwards; 24,600 lines/s with the one-pass front end (own
+lexer, AST built on reduction, flat expression rules).
 """
 from __future__ import annotations
 
+import statistics
 import sys
 import time
 
@@ -70,17 +77,22 @@ def generated_module(lines: int) -> str:
 
 def main(argv: list[str]) -> int:
     lines = int(argv[1]) if len(argv) > 1 else 100_000
+    runs = int(argv[2]) if len(argv) > 2 else 3
     started = time.perf_counter()
     rapid_parser()
     built = time.perf_counter() - started
     text = generated_module(lines)
     count = text.count("\n")
-    started = time.perf_counter()
-    parse_text(text, "bench.mod")
-    elapsed = time.perf_counter() - started
     print(f"parser construction: {built:.2f} s")
-    print(f"parsed {count} lines ({len(text) / 1e6:.1f} MB) in {elapsed:.2f} s: "
-          f"{count / elapsed:,.0f} lines/s")
+    speeds = []
+    for _ in range(runs):
+        started = time.perf_counter()
+        parse_text(text, "bench.mod")
+        elapsed = time.perf_counter() - started
+        speeds.append(count / elapsed)
+        print(f"parsed {count} lines ({len(text) / 1e6:.1f} MB) in {elapsed:.2f} s: "
+              f"{count / elapsed:,.0f} lines/s")
+    print(f"median of {runs}: {statistics.median(speeds):,.0f} lines/s")
     return 0
 
 
