@@ -73,3 +73,22 @@ def test_end_of_file_points_after_the_last_line():
 def test_placeholder_message_names_what_is_missing():
     diagnostic = first_diagnostic(BAD / "placeholder_declaration.mod")
     assert "<DDN>" in diagnostic.message and "data declaration" in diagnostic.message
+
+
+def message_cases() -> list:
+    path = BAD.parent / "error_messages.txt"
+    result = []
+    for number, line in enumerate(path.read_text("latin-1").splitlines(), 1):
+        if line.strip() and not line.startswith("#"):
+            statement, expected = (part.strip() for part in line.split("=>"))
+            column, message = expected.split(": ", 1)
+            result.append(pytest.param(statement, int(column), message, id=f"line {number}"))
+    return result
+
+
+@pytest.mark.parametrize("statement, column, message", message_cases())
+def test_error_message_names_the_tokens_the_parser_state_accepts(statement, column, message):
+    with pytest.raises(UserError) as failure:
+        parse_text(f"MODULE m\nPROC p()\n{statement}\nENDPROC\nENDMODULE\n", "e.mod")
+    diagnostic = failure.value.diagnostics[0]
+    assert (diagnostic.span.line, diagnostic.span.column, diagnostic.message) == (3, column, message)
