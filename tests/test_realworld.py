@@ -83,6 +83,8 @@ RUNS = [
      [str(SURVEY2 / "stop_points.mod")], [], "", 0, ["follow time"]),
     ("errnum names of EGM and RMQ handled in ERROR",
      [str(SURVEY2 / "egm_errors.mod")], [], "", 0, ["timeouts 2"]),
+    ("a command server links although one command needs CalcJointT",
+     [str(SURVEY2 / "kinematics_server.mod")], [], "0\n", 0, ["command", "ping"]),
 ]
 
 
@@ -247,4 +249,20 @@ def test_user_module_data_is_not_in_programs_that_do_not_use_it(tmp_path):
     program = build(load_program(REGISTERS))
     assert sorted(d.key for d in program.globals if d.module == "user") == [
         "CLOCK1", "REG1", "REG2", "REG3"]
+
+
+def test_kinematics_stop_with_unsupported_only_when_reached():
+    code, out, err = cli(["run", str(SURVEY2 / "kinematics_server.mod")], "12\n")
+    assert code == 2 and "[RMC305]" in err and "CalcJointT needs the robot's kinematic model" in err
+    assert out.splitlines() == ["command"]
+
+
+def test_modules_of_two_tasks_report_the_duplicate_entry_clearly():
+    files = sorted(str(p) for p in (SURVEY2 / "two_tasks").glob("*.mod"))
+    code, out, err = cli(["run", *files])
+    assert code == 2 and "routine 'main' is declared twice" in err
+    assert "every RAPID task has its own entry routine" in err
+    robot_task = str(SURVEY2 / "two_tasks" / "T_ROB1_Main.mod")
+    code, out, err = cli(["run", robot_task])         # the PLC task that sets the flag is absent,
+    assert "[RMC301]" in err and "WaitUntil" in err   # so the robot task alone waits forever
 

@@ -46,6 +46,7 @@ class Linker:
         self.module_scopes: dict[tuple[int, str], Scope] = {}
         self.type_tables: dict[int, dict[str, object]] = {}
         self.calls = PredefinedCalls(self)
+        self.entry_key = "MAIN"
         self._predefined_types()
 
     # ------------------------------------------------------------------ types
@@ -173,6 +174,7 @@ class Linker:
     # ------------------------------------------------------------ declarations
     def link(self, program: ast.Program, environment: Optional[ast.Program],
              entry: str) -> P.Program:
+        self.entry_key = entry.upper()
         groups = [(P.PROGRAM_NAMESPACE, program.modules)]
         if environment is not None and environment.modules:
             groups.append((P.ENVIRONMENT_NAMESPACE, environment.modules))
@@ -206,8 +208,13 @@ class Linker:
         existing = scope.declare(key, symbol)
         if existing is not None:
             where = f" (first declared at {existing.span})" if existing.span else ""
+            notes = ()
+            if what == "routine" and key == self.entry_key:
+                notes = ("every RAPID task has its own entry routine: modules of different tasks "
+                         "(T_ROB1, T_ROB2, ...) cannot be loaded together; give the modules of one "
+                         "task (other tasks' writes to shared PERS data are not modelled)",)
             raise error(DUPLICATE, f"{what} '{symbol.name}' is declared twice in one "
-                        f"scope{where}", span)
+                        f"scope{where}", span, *notes)
 
     def _module_scope(self, namespace: int, module: ast.Module) -> Scope:
         key = (namespace, module.name.key)

@@ -8,6 +8,7 @@ and do nothing.  docs/semantics.md, "Sockets and files", lists them.
 """
 from __future__ import annotations
 
+from ..diagnostics import UNSUPPORTED, error
 from .builtins.registry import special
 from .expressions import Compiled, constant
 from .instructions import Action, ControlAction
@@ -68,6 +69,10 @@ SIGNATURES = (
     "EGMStop(VAR egmident EGMid, egmstopmode Mode \\num RampOutTime)",
     "EGMStreamStart(VAR egmident EGMid \\num SampleRate)",
     "EGMStreamStop(VAR egmident EGMid)",
+    # --- kinematics: needs the robot's geometry, which rapidmc does not have ------------------------
+    "jointtarget CalcJointT(\\switch UseCurWObjPos, robtarget Rob_target, PERS tooldata Tool "
+    "\\PERS wobjdata WObj \\num ConfAngle \\INOUT errnum ErrorNumber)",
+    "robtarget CalcRobT(jointtarget Joint_target, PERS tooldata Tool \\PERS wobjdata WObj)",
 )
 for _text in SIGNATURES:
     special(_text)
@@ -118,6 +123,19 @@ def _get_task_name(calls, compiler, call, entry) -> Compiled:
 
 
 function("AInput", "GInput")(_read_signal)
+
+
+@function("CalcJointT", "CalcRobT")
+def _kinematics(calls, compiler, call, entry) -> Compiled:
+    """Inverse and forward kinematics: the program links; reaching the call stops with RMC305."""
+    Arguments(calls, compiler, call, entry)
+    result = calls.linker.builtin_types["JOINTTARGET" if call.name.key == "CALCJOINTT"
+                                        else "ROBTARGET"]
+
+    def unsupported(m):
+        raise error(UNSUPPORTED, f"{call.name.text} needs the robot's kinematic model, which "
+                    "rapidmc does not have", call.span)
+    return Compiled(unsupported, result)
 
 
 # ===========================================================================

@@ -1,0 +1,6 @@
+MODULE PlcMain
+  PERS bool bPartReady := FALSE;
+  PROC main()
+    bPartReady := TRUE;
+  ENDPROC
+ENDMODULE
