@@ -91,4 +91,5 @@ def test_error_message_names_the_tokens_the_parser_state_accepts(statement, colu
     with pytest.raises(UserError) as failure:
         parse_text(f"MODULE m\nPROC p()\n{statement}\nENDPROC\nENDMODULE\n", "e.mod")
     diagnostic = failure.value.diagnostics[0]
-    assert (diagnostic.span.line, diagnostic.span.column, diagnostic.message) == (3, column, message)
+    span = diagnostic.span
+    assert (span.line, span.column, diagnostic.message) == (3, column, message)

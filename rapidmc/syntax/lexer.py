@@ -39,7 +39,8 @@ class ScannedToken(Token):
                 end_column=None, end_pos=None):
         token = str.__new__(cls, value)
         token.type, token.value, token.start_pos, token.end_pos = type, value, start_pos, end_pos
-        token.line, token.column, token.end_line, token.end_column = line, column, end_line, end_column
+        token.line, token.column = line, column
+        token.end_line, token.end_column = end_line, end_column
         return token
 
 

@@ -91,8 +91,9 @@ class Lowering:
         self.filename = filename
         self.lexer = lexer
         self.problem: Optional[UserError] = None
-        # Expressions written in parentheses: id -> where the parentheses start and end.
-        self.enclosed: dict[int, tuple[int, int, int, int]] = {}
+        # Expressions written in parentheses: id -> where the parentheses start and
+        # end, and the node itself (kept alive so that its id is not reused).
+        self.enclosed: dict[int, tuple] = {}
 
     # ---------------------------------------------------------------- helpers
 
@@ -108,7 +109,7 @@ class Lowering:
     def enclose(self, node, entries: list) -> None:
         """``node`` stands for all of ``entries`` (parentheses around it)."""
         last = self.lexer.previous
-        self.enclosed[id(node)] = (*self.text_start(entries), last.end_line, last.end_column)
+        self.enclosed[id(node)] = (*self.text_start(entries), last.end_line, last.end_column, node)
 
     def span(self, entries: list) -> ast.Span:
         first = entries[0]
@@ -138,7 +139,7 @@ class Lowering:
     def text_end(self, node) -> tuple[int, int]:
         """Where the text of an expression ends (after its parentheses, if any)."""
         enclosed = self.enclosed.get(id(node))
-        return enclosed[2:] if enclosed else (node.span.end_line, node.span.end_column)
+        return enclosed[2:4] if enclosed else (node.span.end_line, node.span.end_column)
 
     def operation_span(self, first, last) -> ast.Span:
         """From the start of ``first`` (a token or an expression) to the end of ``last``."""
