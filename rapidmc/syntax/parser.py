@@ -43,8 +43,8 @@ _TOKEN_START_WORD = re.compile(r"[0-9a-zA-Z\xc0-\xd6\xd8-\xf6\xf8-\xff]")
 _NOT_CODE = re.compile(r"%%%(?:.|\n)*?%%%|![^\n]*")
 START_RULE = "start"
 # Parser stack entries beyond which a file counts as nested too deeply: the
-# later stages walk the AST recursively.  About 490 nested NOT or unary minus,
-# 160 nested parenthesised sums, 120 nested IF; ordinary code stays below 50.
+# later stages walk the AST recursively.  That allows 490 nested NOT, 240
+# nested -( ), 160 nested a + ( or IF; ordinary code stays below 50 entries.
 MAX_STACK_DEPTH = 500
 
 
