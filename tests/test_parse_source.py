@@ -69,6 +69,23 @@ def test_deep_nesting_is_a_diagnostic_not_a_crash():
     assert code_of(lambda: parse_text(text, "deep.mod")) == "RMC305"
 
 
+@pytest.mark.parametrize("opening, middle, closing", [
+    ("IF a THEN ", "x := 1;", "ENDIF "),
+    ("a + (", "a", ")"),
+    ("-(", "a", ")"),
+])
+def test_deep_nesting_of_any_shape_is_a_diagnostic(opening, middle, closing):
+    nested = opening * 600 + middle + closing * 600
+    statement = nested if middle.endswith(";") else f"x := {nested};"
+    text = f"MODULE m PROC p() {statement} ENDPROC ENDMODULE"
+    assert code_of(lambda: parse_text(text, "deep.mod")) == "RMC305"
+
+
+def test_nesting_of_ordinary_depth_parses():
+    text = "MODULE m PROC p() " + "IF a THEN " * 40 + "x := 1;" + "ENDIF " * 40 + "ENDPROC ENDMODULE"
+    assert parse_text(text, "nested.mod")
+
+
 def test_latin1_identifiers_and_strings(tmp_path):
     text = "MODULE Größe\n  VAR string s := \"Grüße ÿ\";\n  VAR num øre := 1;\nENDMODULE\n"
     path = write(tmp_path, "umlaut.mod", text.encode("latin-1"))
