@@ -1,8 +1,9 @@
 """Typed abstract syntax of RAPID programs.
 
-Every node is a frozen dataclass carrying a ``Span``.  The lowering pass
-(``rapidmc.syntax.lower``) builds these from the Lark tree and does nothing
-else; name resolution, typing and execution live in ``rapidmc.semantics``.
+Every node is a frozen dataclass carrying a ``Span``.  The front end
+(``rapidmc.syntax``) builds them while Lark's LALR parser reduces, and does
+nothing else; name resolution, typing and execution live in
+``rapidmc.semantics``.
 
 Identifiers are ``Name`` values: ``text`` keeps the spelling for messages,
 ``key`` is the canonical (upper-cased) form used for every lookup, because

@@ -23,6 +23,7 @@ from ..diagnostics import (AUTOMATON, DOMAIN, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN
                            render_all)
 from ..ltl import BACKENDS, read_hoa, to_buchi, to_text
 from ..ltl.syntax import Not
+from ..backup import add_program_arguments, resolve_program_files
 from ..model import RapidDescriber, RapidSystem, replay, with_final_loop
 from ..properties import (AtomCompiler, Property, check_unique, parse_property,
                           read_property_file)
@@ -37,7 +38,9 @@ BUILTIN_DEADLOCK = "no_deadlock"
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("files", nargs="+", metavar="FILE",
-                        help="RAPID module files of the program (.mod, .sys, .pgf ...)")
+                        help="RAPID module files of the program (.mod, .sys, .pgf ...), or a "
+                             "controller backup folder")
+    add_program_arguments(parser)
     parser.add_argument("--ltl", action="append", default=[], metavar="FILE",
                         help="property file: one 'NAME: FORMULA' per line (repeatable)")
     parser.add_argument("--formula", action="append", default=[], metavar="'NAME: FORMULA'",
@@ -124,9 +127,11 @@ def _check(args: argparse.Namespace) -> int:
     automata = _pairs(args.automaton, "--automaton")
     domains = {name.upper(): _numbers(values, "--input-domain")
                for name, values in _pairs(args.input_domain, "--input-domain").items()}
-    program_ast = load_program(args.files)
+    files, signals = resolve_program_files(args.files, args.task, args.eio)
+    program_ast = load_program(files)
     environment = load_program(args.env) if args.env else None
-    program = build(program_ast, entry=args.entry, environment=environment)
+    program = build(program_ast, entry=args.entry, environment=environment,
+                    options={"configured_signals": signals})
     _check_domains(program, domains)
     atoms = AtomCompiler(program)
     jobs = [_prepare(prop, atoms, automata, args.backend) for prop in properties]

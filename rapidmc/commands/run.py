@@ -11,6 +11,7 @@ import sys
 
 from ..diagnostics import (EXIT_OK, EXIT_RUNTIME_ERROR, USAGE, UserError, error, render)
 from ..run import fault_diagnostic, run_program
+from ..backup import add_program_arguments, resolve_program_files
 from ..semantics.link import build
 from ..semantics.state import FAILED
 from ..syntax import load_program
@@ -18,7 +19,9 @@ from ..syntax import load_program
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("files", nargs="+", metavar="FILE",
-                        help="RAPID module files (.mod, .modx, .sys, .prg) or .pgf program files")
+                        help="RAPID module files (.mod, .modx, .sys, .prg), .pgf program files, "
+                             "or a controller backup folder")
+    add_program_arguments(parser)
     parser.add_argument("--entry", default="main", metavar="NAME",
                         help="procedure to start from (default: main)")
     parser.add_argument("--io", action="append", default=[], metavar="NAME=VALUE",
@@ -81,8 +84,9 @@ def read_input_script(path: str, program) -> tuple:
 
 def execute(args: argparse.Namespace) -> int:
     io_values = parse_io(args.io)
-    program = build(load_program(args.files), entry=args.entry,
-                    options={"io_names": tuple(io_values)})
+    files, signals = resolve_program_files(args.files, args.task, args.eio)
+    program = build(load_program(files), entry=args.entry,
+                    options={"io_names": tuple(io_values), "configured_signals": signals})
     unknown = [name for name in io_values if program.signal(name) is None]
     if unknown:
         raise error(USAGE, f"--io names unknown signal(s): {', '.join(unknown)}")

@@ -245,6 +245,10 @@ def signal_designator(compiler: ExpressionCompiler, expr: ast.Expr,
         if symbol is None:
             symbol = compiler.linker.infer_signal(expr.name, signal_type)
         if symbol.kind == SIGNAL:
+            kind = getattr(symbol.type, "signal_kind", "")
+            if kind and kind != signal_type.signal_kind:
+                raise error(TYPE_MISMATCH, f"'{expr.name.text}' is a {kind} signal, a "
+                            f"{signal_type.name} is required", expr.span)
             index = symbol.slot
             return lambda m: index
         if not (isinstance(symbol.type, RapidType) and symbol.type.kind == SEMI_VALUE):

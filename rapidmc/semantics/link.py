@@ -175,6 +175,8 @@ class Linker:
     def link(self, program: ast.Program, environment: Optional[ast.Program],
              entry: str) -> P.Program:
         self.entry_key = entry.upper()
+        for signal in self.options.get("configured_signals", ()):
+            self.physical_signal(signal.name, signal.kind, signal.span)   # from EIO.cfg
         groups = [(P.PROGRAM_NAMESPACE, program.modules)]
         if environment is not None and environment.modules:
             groups.append((P.ENVIRONMENT_NAMESPACE, environment.modules))

@@ -1,0 +1,115 @@
+"""Controller backups (RAPID/<task>/SYSMOD, PROGMOD, SYSPAR/EIO.cfg) and --eio files."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from rapidmc.backup import read_eio
+from rapidmc.cli import main
+
+EIO = """EIO:CFG_1.0:6:1::
+#
+EIO_DEVICE:
+      -Name "d652" -VendorName "ABB"
+#
+EIO_SIGNAL:
+
+      -Name "partPresent" -SignalType "DI" -Device "d652" -DeviceMap "0"
+
+      -Name "gripClose" -SignalType "DO" -Device "d652"\\
+      -DeviceMap "1"
+
+      -Name "cellState" -SignalType "GO" -Device "d652" -DeviceMap "2-5"
+#
+"""
+
+USER_SYS = """MODULE user(SYSMODULE)
+  PERS tooldata tGripper := [TRUE,[[0,0,100],[1,0,0,0]],[1,[0,0,50],[1,0,0,0],0,0,0]];
+ENDMODULE
+"""
+
+MAIN_MOD = """MODULE MainModule
+  CONST robtarget pPick := [[500,0,200],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  PROC main()
+    IF partPresent = 1 THEN
+      MoveL pPick, v100, fine, tGripper;
+      SetDO gripClose, 1;
+      SetGO cellState, 3;
+      TPWrite "picked";
+    ELSE
+      TPWrite "no part";
+    ENDIF
+  ENDPROC
+ENDMODULE
+"""
+
+
+def make_backup(root: Path, tasks: dict[str, dict[str, str]], eio: str = EIO) -> Path:
+    backup = root / "backup"
+    (backup / "BACKINFO").mkdir(parents=True)
+    (backup / "SYSPAR").mkdir()
+    (backup / "SYSPAR" / "EIO.cfg").write_text(eio)
+    for task, files in tasks.items():
+        for relative, text in files.items():
+            path = backup / "RAPID" / task / relative
+            path.parent.mkdir(parents=True, exist_ok=True)
+            path.write_text(text)
+    return backup
+
+
+def one_task(root: Path) -> Path:
+    return make_backup(root, {"TASK1": {"SYSMOD/user.sys": USER_SYS,
+                                        "PROGMOD/MainModule.mod": MAIN_MOD}})
+
+
+def test_eio_signals_have_their_configured_types(tmp_path):
+    path = tmp_path / "EIO.cfg"
+    path.write_text(EIO)
+    signals = [(s.name, s.kind) for s in read_eio(str(path))]
+    assert signals == [("partPresent", "DI"), ("gripClose", "DO"), ("cellState", "GO")]
+
+
+def test_a_backup_runs_with_its_system_modules_and_configured_signals(tmp_path, capsys):
+    backup = one_task(tmp_path)
+    assert main(["run", str(backup)]) == 0
+    assert capsys.readouterr().out == "no part\n"
+    assert main(["run", str(backup), "--io", "partPresent=1"]) == 0
+    assert capsys.readouterr().out == "picked\n"
+
+
+def test_a_backup_checks(tmp_path, capsys):
+    backup = one_task(tmp_path)
+    code = main(["check", str(backup), "--quiet", "--formula",
+                 'p: G (gripClose -> "AtTarget(pPick)")'])
+    assert code == 0 and "p: HOLDS" in capsys.readouterr().out
+
+
+def test_a_configured_output_cannot_be_waited_on_as_an_input(tmp_path, capsys):
+    wrong = MAIN_MOD.replace('TPWrite "picked";', "WaitDI gripClose, 1;")
+    backup = make_backup(tmp_path, {"TASK1": {"SYSMOD/user.sys": USER_SYS,
+                                              "PROGMOD/MainModule.mod": wrong}})
+    assert main(["run", str(backup)]) == 2
+    assert "[RMC206]" in capsys.readouterr().err
+
+
+def test_several_tasks_need_a_choice_unless_one_has_main(tmp_path, capsys):
+    background = "MODULE Bg\n  PROC bg_main()\n    TPWrite \"bg\";\n  ENDPROC\nENDMODULE\n"
+    backup = make_backup(tmp_path, {"T_ROB1": {"SYSMOD/user.sys": USER_SYS,
+                                               "PROGMOD/MainModule.mod": MAIN_MOD},
+                                    "T_BG": {"PROGMOD/Bg.mod": background}})
+    assert main(["run", str(backup)]) == 0                    # only T_ROB1 has main
+    assert capsys.readouterr().out == "no part\n"
+    assert main(["run", str(backup), "--task", "t_bg", "--entry", "bg_main"]) == 0
+    assert capsys.readouterr().out == "bg\n"
+    assert main(["run", str(backup), "--task", "NOPE"]) == 2
+    assert "no task 'NOPE'" in capsys.readouterr().err
+
+
+def test_eio_option_with_plain_module_files(tmp_path, capsys):
+    (tmp_path / "EIO.cfg").write_text(EIO)
+    (tmp_path / "user.sys").write_text(USER_SYS)
+    (tmp_path / "main.mod").write_text(MAIN_MOD)
+    code = main(["run", str(tmp_path / "user.sys"), str(tmp_path / "main.mod"),
+                 "--eio", str(tmp_path / "EIO.cfg"), "--io", "partPresent=1"])
+    assert code == 0 and capsys.readouterr().out == "picked\n"
