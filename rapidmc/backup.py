@@ -136,23 +136,63 @@ def add_program_arguments(parser) -> None:
     parser.add_argument("--task", metavar="NAME",
                         help="the task to load from a controller backup (default: the only "
                              "task, or the only one with a main procedure)")
+    parser.add_argument("--add-task", action="append", default=[], metavar="FILE[,FILE...]",
+                        help="a further RAPID task, made of these module files (entry: main), "
+                             "running beside the program (repeatable)")
+    parser.add_argument("--all-tasks", action="store_true",
+                        help="with a backup: run every task (the one chosen with --task, or "
+                             "the first, is the main task)")
     parser.add_argument("--eio", metavar="EIO.cfg",
                         help="I/O configuration whose signals the program uses by name "
                              "(a backup's SYSPAR/EIO.cfg is read automatically)")
 
 
-def resolve_program_files(files: list[str], task: Optional[str], eio: Optional[str]):
-    """Module paths (backups expanded) and the configured signals (from --eio or the backup)."""
+@dataclass(frozen=True)
+class ProgramFiles:
+    """What to load: the main task's modules, further tasks, configured signals."""
+
+    modules: list
+    tasks: list                # (task name, module paths)
+    signals: list
+
+
+def resolve_program_files(args) -> ProgramFiles:
+    """The files named on the command line (backups expanded), further tasks and signals."""
+    task = getattr(args, "task", None)
+    eio = getattr(args, "eio", None)
     paths: list[str] = []
+    tasks: list[tuple[str, list[str]]] = []
     eio_paths = [eio] if eio else []
-    for name in files:
+    for name in args.files:
         path = Path(name)
         if is_backup(path):
             modules, backup_eio = expand_backup(path, task)
             paths.extend(modules)
+            if getattr(args, "all_tasks", False):
+                tasks.extend(other_tasks(path, modules))
             if backup_eio and not eio:
                 eio_paths.append(backup_eio)
         else:
             paths.append(name)
+    for number, spec in enumerate(getattr(args, "add_task", []) or [], start=1):
+        files = [f for f in spec.split(",") if f]
+        tasks.append((f"task {number + 1} ({Path(files[0]).stem})" if files else "", files))
     signals = [signal for eio_path in eio_paths for signal in read_eio(eio_path)]
-    return paths, signals
+    return ProgramFiles(paths, tasks, signals)
+
+
+def load_tasks(files: ProgramFiles) -> list:
+    """The further tasks, parsed, for ``semantics.link.build``."""
+    from .semantics.link import Task
+    from .syntax import load_program
+    return [Task(name, load_program(paths)) for name, paths in files.tasks]
+
+
+def other_tasks(path: Path, main_modules: list[str]) -> list[tuple[str, list[str]]]:
+    """The backup's tasks other than the one whose modules are ``main_modules``."""
+    result = []
+    for task in sorted(p for p in (path / "RAPID").iterdir() if p.is_dir()):
+        modules, _ = expand_backup(path, task.name)
+        if modules != main_modules:
+            result.append((task.name, modules))
+    return result

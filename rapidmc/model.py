@@ -14,7 +14,8 @@ from typing import Hashable, Mapping, Optional
 from .check import TransitionInfo
 from .check.result import LassoStep, SearchResult
 from .diagnostics import TRACE_REPLAY, SourceCache, error
-from .semantics.program import PROGRAM_NAMESPACE, Program
+from .semantics.program import (ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE,
+                                PROGRAM_NAMESPACE, Program)
 from .semantics.special_routines import format_typed, value_kind
 from .semantics.state import ENDED, FAILED, RUNNING, State
 from .semantics.step import CheckConfig, ScriptChooser, initial_states, successors
@@ -96,16 +97,24 @@ class RapidDescriber:
         self.globals = [(g.slot, g.name, value_kind(g.type), g.type) for g in program.globals
                         if g.namespace == PROGRAM_NAMESPACE and
                         getattr(g.type, "kind", "") not in ("semi-value", "non-value")]
-        self.environment = [(g.slot, g.name, value_kind(g.type)) for g in program.globals
+        self.environment = [(g.slot, self._qualified(g), value_kind(g.type))
+                            for g in program.globals
                             if g.namespace != PROGRAM_NAMESPACE and
                             getattr(g.type, "kind", "") not in ("semi-value", "non-value")]
+
+    def _qualified(self, data) -> str:
+        """env.name for environment data, <task>.name for data of a further task."""
+        if data.namespace == ENVIRONMENT_NAMESPACE:
+            return f"env.{data.name}"
+        return f"{self.program.task_names[data.namespace - FIRST_TASK_NAMESPACE + 1]}.{data.name}"
 
     def describe_state(self, state: State) -> Mapping[str, str]:
         view: dict[str, str] = {}
         store = state.store
         for slot, name, kind, _ in self.globals:
             view[name] = _format(store[slot], kind)
-        for frame in state.frames:
+        stacks = (state.frames,) + state.tasks
+        for frame in (frame for stack in stacks for frame in stack):
             routine = self.program.routines[frame.routine]
             for name, value in zip(routine.local_names, frame.locals):
                 if name.startswith("<"):
@@ -118,7 +127,7 @@ class RapidDescriber:
             view[f"signal {signal.name}"] = format_num(state.io[signal.index])
         view["robot TCP"] = _format(state.robot[0][0], "num")
         for slot, name, kind in self.environment:
-            view[f"env.{name}"] = _format(store[slot], kind)
+            view[name] = _format(store[slot], kind)
         if state.errno:
             view["ERRNO"] = errno_name(int(state.errno))
         if state.status == ENDED:

@@ -54,6 +54,12 @@ class ConsoleChooser(Chooser):
     def advance_time(self, m: Machine, seconds: float) -> None:
         advance_to(m, m.clock + seconds)
 
+    def choose(self, name: str, domain: tuple, position: int):
+        if name == "task":               # tasks take turns
+            self.turn = getattr(self, "turn", -1) + 1
+            return domain[self.turn % len(domain)]
+        return domain[0]
+
 
 @dataclass
 class RunResult:
@@ -75,9 +81,11 @@ def run_program(program: Program, io_values: dict, stdin: TextIO, stdout: TextIO
         schedule(m, seconds, index, value)      # an input script: changes at virtual times
     output = m.output
     steps = 0
+    idle = 0                             # steps in a row that changed nothing
     while m.status == RUNNING:
         frames = m.frames
-        depth, top, store, io = len(frames), frames[-1], m.store, m.io
+        depth, store, io, tasks = len(frames), m.store, m.io, m.tasks
+        top = frames[-1] if frames else None
         m.waiting = False
         span = execute_step(m)
         if output:
@@ -88,9 +96,15 @@ def run_program(program: Program, io_values: dict, stdin: TextIO, stdout: TextIO
             m.choices.clear()
         if trace is not None and span is not None:
             trace.write(f"{span}\n")
-        if m.waiting or (m.store is store and m.io is io and len(m.frames) == depth
-                         and m.frames[-1] == top and m.status == RUNNING):
-            _wake(m)                     # nothing changed: a wait or a busy loop
+        if m.status == RUNNING and m.store is store and m.io is io and \
+                len(m.frames) == depth and (not depth or m.frames[-1] == top) and \
+                m.tasks == tasks:
+            idle += 1                    # nothing changed: a wait or a busy loop
+            if idle > len(m.tasks):      # ... in every task, one after the other
+                _wake(m)
+                idle = 0
+        else:
+            idle = 0
         steps += 1
         if max_steps is not None and steps >= max_steps and m.status == RUNNING:
             raise error(STEP_LIMIT, f"the program was stopped after {max_steps} steps "
@@ -104,7 +118,7 @@ def _wake(m: Machine) -> None:
     if due is None or m.interrupts.pending:
         if m.interrupts.pending and m.interrupts.enabled:
             return                       # a trap is about to run
-        frame = m.frames[-1]
+        frame = (m.frames or [stack[-1] for stack in m.tasks if stack])[-1]
         span = m.program.routines[frame.routine].code[frame.pc].span
         raise error(RUNTIME_ERROR, "deadlock: the program waits for a condition that can never "
                     "become true (inputs keep their --io values in run mode)", span, exit_code=1)

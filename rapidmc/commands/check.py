@@ -23,7 +23,7 @@ from ..diagnostics import (AUTOMATON, DOMAIN, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN
                            render_all)
 from ..ltl import BACKENDS, read_hoa, to_buchi, to_text
 from ..ltl.syntax import Not
-from ..backup import add_program_arguments, resolve_program_files
+from ..backup import add_program_arguments, load_tasks, resolve_program_files
 from ..model import RapidDescriber, RapidSystem, replay, with_final_loop
 from ..properties import (AtomCompiler, Property, check_unique, parse_property,
                           read_property_file)
@@ -104,7 +104,7 @@ def gather_properties(args) -> list[Property]:
     for path in args.ltl:
         properties.extend(read_property_file(path))
     for number, text in enumerate(args.formula, start=1):
-        name = f"<--formula {number}>"
+        name = f"<formula-{number}>"   # no space: diagnostics open with FILE:LINE:COL
         SourceCache.remember(name, text)
         properties.append(parse_property(text, name, 1))
     check_unique(properties)
@@ -127,11 +127,11 @@ def _check(args: argparse.Namespace) -> int:
     automata = _pairs(args.automaton, "--automaton")
     domains = {name.upper(): _numbers(values, "--input-domain")
                for name, values in _pairs(args.input_domain, "--input-domain").items()}
-    files, signals = resolve_program_files(args.files, args.task, args.eio)
-    program_ast = load_program(files)
+    files = resolve_program_files(args)
+    program_ast = load_program(files.modules)
     environment = load_program(args.env) if args.env else None
     program = build(program_ast, entry=args.entry, environment=environment,
-                    options={"configured_signals": signals})
+                    options={"configured_signals": files.signals}, tasks=load_tasks(files))
     _check_domains(program, domains)
     atoms = AtomCompiler(program)
     jobs = [_prepare(prop, atoms, automata, args.backend) for prop in properties]

@@ -11,7 +11,7 @@ import sys
 
 from ..diagnostics import (EXIT_OK, EXIT_RUNTIME_ERROR, USAGE, UserError, error, render)
 from ..run import fault_diagnostic, run_program
-from ..backup import add_program_arguments, resolve_program_files
+from ..backup import add_program_arguments, load_tasks, resolve_program_files
 from ..semantics.link import build
 from ..semantics.state import FAILED
 from ..syntax import load_program
@@ -84,9 +84,10 @@ def read_input_script(path: str, program) -> tuple:
 
 def execute(args: argparse.Namespace) -> int:
     io_values = parse_io(args.io)
-    files, signals = resolve_program_files(args.files, args.task, args.eio)
-    program = build(load_program(files), entry=args.entry,
-                    options={"io_names": tuple(io_values), "configured_signals": signals})
+    files = resolve_program_files(args)
+    program = build(load_program(files.modules), entry=args.entry,
+                    options={"io_names": tuple(io_values), "configured_signals": files.signals},
+                    tasks=load_tasks(files))
     unknown = [name for name in io_values if program.signal(name) is None]
     if unknown:
         raise error(USAGE, f"--io names unknown signal(s): {', '.join(unknown)}")

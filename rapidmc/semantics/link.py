@@ -12,6 +12,7 @@ namespace of their own: their global names never clash with the program's.
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Optional, Sequence
 
 from .. import ast
@@ -173,13 +174,18 @@ class Linker:
 
     # ------------------------------------------------------------ declarations
     def link(self, program: ast.Program, environment: Optional[ast.Program],
-             entry: str) -> P.Program:
+             entry: str, tasks: Sequence = ()) -> P.Program:
         self.entry_key = entry.upper()
         for signal in self.options.get("configured_signals", ()):
             self.physical_signal(signal.name, signal.kind, signal.span)   # from EIO.cfg
         groups = [(P.PROGRAM_NAMESPACE, program.modules)]
         if environment is not None and environment.modules:
             groups.append((P.ENVIRONMENT_NAMESPACE, environment.modules))
+        task_namespaces = []
+        for number, task in enumerate(tasks):
+            namespace = P.FIRST_TASK_NAMESPACE + number
+            groups.append((namespace, task.program.modules))
+            task_namespaces.append((namespace, task))
         for namespace, modules in groups:
             self.namespaces[namespace] = Scope(self.system)
             self._collect_types(modules, namespace)
@@ -187,7 +193,8 @@ class Linker:
             self._declare_routines(modules, namespace)
         for namespace, modules in groups:
             self._declare_data(modules, namespace)
-        self._configured_signals(program.modules)
+        self._configured_signals([m for namespace, modules in groups
+                                  if namespace != P.ENVIRONMENT_NAMESPACE for m in modules])
         for namespace, modules in groups:
             self._prepare_routines(namespace)
         for routine in self.routines:
@@ -196,6 +203,9 @@ class Linker:
         entry_index = self._entry(entry)
         linked = P.Program(self.routines, self.globals, self.signals, entry_index,
                            options=self.options, signal_index=self.signal_by_key)
+        linked.task_entries = tuple(self._entry(task.entry, namespace, task.name)
+                                    for namespace, task in task_namespaces)
+        linked.task_names = ("main task",) + tuple(task.name for _, task in task_namespaces)
         if environment is not None and environment.modules:
             linked.environment_init = self._environment_routine("INIT", required=False)
             linked.environment_react = self._environment_routine("REACT", required=True,
@@ -203,7 +213,7 @@ class Linker:
         linked.scopes = self
         linked.environment_reads_io = any(
             instruction.reads_io for routine in self.routines
-            if routine.namespace != P.PROGRAM_NAMESPACE for instruction in routine.code)
+            if routine.namespace == P.ENVIRONMENT_NAMESPACE for instruction in routine.code)
         return linked
 
     def _declare(self, scope: Scope, key: str, symbol: Symbol, span, what: str) -> None:
@@ -225,6 +235,19 @@ class Linker:
             scope = Scope(self.namespaces[namespace])
             self.module_scopes[key] = scope
         return scope
+
+    def _persistent_of_other_task(self, key: str, namespace: int) -> Optional[Symbol]:
+        """A global PERS of another task: tasks share their (non-TASK) persistents."""
+        if namespace == P.ENVIRONMENT_NAMESPACE:
+            return None
+        for other, scope in self.namespaces.items():
+            if other in (namespace, P.ENVIRONMENT_NAMESPACE):
+                continue
+            symbol = scope.names.get(key)
+            if symbol is not None and symbol.kind == GLOBAL_DATA and symbol.storage == "PERS" \
+                    and not self.globals[symbol.slot].task_local:
+                return symbol
+        return None
 
     def _configured_signals(self, modules) -> None:
         """Undeclared names the program passes as signals are signals of the I/O configuration."""
@@ -340,6 +363,10 @@ class Linker:
             value = (False, 0.0, 0.0)
         if decl.storage == "PERS" and decl.scope != ast.LOCAL:
             shared = target.names.get(decl.name.key)
+            if shared is None and decl.scope != ast.TASK:
+                shared = self._persistent_of_other_task(decl.name.key, namespace)
+                if shared is not None:
+                    target.declare(decl.name.key, shared)
             if shared is not None and shared.kind == GLOBAL_DATA and shared.storage == "PERS":
                 # one persistent declared in several modules is one object
                 data = self.globals[shared.slot]
@@ -355,6 +382,7 @@ class Linker:
                             module.name.text, namespace, decl.scope == ast.LOCAL, decl.span,
                             value)
         data.declared_without_value = decl.init is None
+        data.task_local = decl.scope == ast.TASK
         self.globals.append(data)
         symbol = Symbol(GLOBAL_DATA, decl.name.text, rapid_type, slot=slot, storage=decl.storage,
                         span=decl.span)
@@ -456,11 +484,13 @@ class Linker:
             yield candidate
 
     # ------------------------------------------------------------------ entry
-    def _entry(self, entry: str) -> int:
+    def _entry(self, entry: str, namespace: int = P.PROGRAM_NAMESPACE,
+               task: str = "") -> int:
         key = entry.upper()
-        symbol = self.namespaces[P.PROGRAM_NAMESPACE].lookup(key)
+        symbol = self.namespaces[namespace].lookup(key)
         if symbol is None or symbol.kind != ROUTINE:
-            raise error(NO_ENTRY, f"the program has no procedure '{entry}' to start from "
+            where = f"task {task}" if task else "the program"
+            raise error(NO_ENTRY, f"{where} has no procedure '{entry}' to start from "
                         f"(use --entry NAME to choose another)")
         routine = self.routines[symbol.slot]
         if routine.kind != "PROC" or routine.parameters:
@@ -482,7 +512,19 @@ class Linker:
         return routine.index
 
 
+@dataclass(frozen=True)
+class Task:
+    """A further RAPID task running beside the main task (its own modules and entry)."""
+
+    name: str
+    program: ast.Program
+    entry: str = "main"
+
+
 def build(program: ast.Program, entry: str = "main",
-          environment: Optional[ast.Program] = None, options: Optional[dict] = None) -> P.Program:
-    """Link and compile ``program`` (and environment modules); static errors raise UserError."""
-    return Linker(options).link(program, environment, entry)
+          environment: Optional[ast.Program] = None, options: Optional[dict] = None,
+          tasks: Sequence[Task] = ()) -> P.Program:
+    """Link and compile ``program`` (and environment modules, and further tasks).
+
+    Static errors raise UserError."""
+    return Linker(options).link(program, environment, entry, tasks)

@@ -76,7 +76,7 @@ class Machine:
 
     __slots__ = ("program", "frames", "store", "io", "robot", "interrupts", "errno",
                  "intno", "status", "fault", "clock", "output", "chooser", "choices",
-                 "span", "waiting", "lazy_values")
+                 "span", "waiting", "lazy_values", "tasks")
 
     def __init__(self, program, state: State, chooser):
         self.program = program
@@ -96,13 +96,14 @@ class Machine:
         self.span = None
         self.waiting = False
         self.lazy_values = None          # lazily chosen free inputs of this step (check mode)
+        self.tasks = state.tasks
 
     def to_state(self) -> State:
         io = self.io
         if self.lazy_values is not None:
             io = stored(io)
         return State(tuple(self.frames), self.store, io, self.robot, self.interrupts,
-                     self.errno, self.intno, self.status, self.fault, self.clock)
+                     self.errno, self.intno, self.status, self.fault, self.clock, self.tasks)
 
     # --- choices -------------------------------------------------------------
     def choose(self, name: str, domain: tuple) -> Any:
@@ -159,6 +160,7 @@ class Machine:
         self.status = FAILED
         self.fault = Fault(errno, where, message)
         self.frames = []
+        self.tasks = ()                  # an uncaught error stops every task
 
     def check_running(self) -> bool:
         return self.status == RUNNING

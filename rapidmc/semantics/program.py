@@ -17,6 +17,7 @@ from .values import to_num
 
 PROGRAM_NAMESPACE = 0
 ENVIRONMENT_NAMESPACE = 1
+FIRST_TASK_NAMESPACE = 2       # further RAPID tasks running beside the main task
 
 
 @dataclass
@@ -34,6 +35,7 @@ class GlobalData:
     span: Span
     initial: Any = None           # initial value (computed at link time)
     declared_without_value: bool = False
+    task_local: bool = False      # TASK PERS: not shared with other tasks
 
 
 @dataclass
@@ -133,6 +135,8 @@ class Program:
     routine_index: dict = field(default_factory=dict)      # (namespace, key) -> routine index (global)
     scopes: Any = None                                     # name resolution for atoms
     environment_reads_io: bool = False                     # some environment code reads signals
+    task_entries: tuple = ()                               # entry routines of further tasks
+    task_names: tuple = ("main task",)                     # one name per task, main task first
 
     def signal(self, key: str) -> Optional[Signal]:
         return self.signal_index.get(key)

@@ -14,7 +14,9 @@ same are equal and hash alike (the model checker stores them in a set):
 * ``status``: RUNNING, ENDED (end of main, EXIT, Stop) or FAILED (uncaught
   error; ``fault`` says which and where);
 * ``clock``: virtual time in seconds (advanced by waits in ``run`` mode only;
-  always 0 when model checking, where time is abstracted away).
+  always 0 when model checking, where time is abstracted away);
+* ``tasks``: the call stacks of further RAPID tasks running beside the main
+  task (whose stack is ``frames``); one task steps at a time.
 
 FlexPendant output is not part of the state: it is an effect of a
 transition, so printing does not make states distinct.
@@ -74,6 +76,7 @@ class State(NamedTuple):
     status: int = RUNNING
     fault: Optional[Fault] = None
     clock: float = 0.0
+    tasks: tuple = ()       # call stacks of further tasks (empty: that task has ended)
 
 
 class Transition(NamedTuple):

@@ -154,8 +154,10 @@ def start_state(program: Program, io_values: Optional[dict] = None) -> State:
     main = program.routines[program.entry]
     robot = (HOME_TARGET, _predefined(program, "TOOL0"), _predefined(program, "WOBJ0"),
              HOME_JOINTS)
+    tasks = tuple((Frame(entry, 0, program.routines[entry].initial_locals),)
+                  for entry in program.task_entries)
     return State((Frame(main.index, 0, main.initial_locals),), initial_store(program),
-                 pvector(io), robot, Interrupts())
+                 pvector(io), robot, Interrupts(), tasks=tasks)
 
 
 def _predefined(program: Program, key: str):
@@ -234,13 +236,31 @@ def successors(program: Program, state: State, config: CheckConfig) -> list[Tran
         return [Transition((), None, state, "")]
     if config.free_inputs and not _inputs_matter(program, state):
         return _successors_inputs_after(program, state, config)
-    return list(enumerate_choices(lambda chooser: step(program, state, chooser),
-                                  lambda script: ScriptChooser(script, config)))
+    transitions = list(enumerate_choices(lambda chooser: step(program, state, chooser),
+                                         lambda script: ScriptChooser(script, config)))
+    if state.tasks:
+        transitions = _no_idle_task_steps(state, transitions)
+    return transitions
+
+
+def _no_idle_task_steps(state: State, transitions: list[Transition]) -> list[Transition]:
+    """Tasks share the controller fairly: a task whose step changes nothing (it waits)
+    does not take the turn from a task that can go on.  If no task can go on, every
+    idle step stays (the program may be deadlocked)."""
+    def task_of(transition):
+        return next((value for name, value in transition.label if name == "task"), None)
+
+    moving = {task_of(t) for t in transitions if t.state != state}
+    if not moving:
+        return transitions
+    return [t for t in transitions
+            if t.state != state or not (moving - {task_of(t)})]
 
 
 def _inputs_matter(program: Program, state: State) -> bool:
     """Whether this step's behaviour can depend on the free inputs' new values."""
-    if state.interrupts.table or state.interrupts.pending or program.environment_reads_io:
+    if state.interrupts.table or state.interrupts.pending or program.environment_reads_io \
+            or state.tasks:
         return True
     frame = state.frames[-1]
     return program.routines[frame.routine].code[frame.pc].reads_io
@@ -290,16 +310,47 @@ def execute_step(m: Machine):
     if m.chooser.check_mode:
         for index, name, domain in m.chooser.free_inputs(program):
             m.io = m.io.set(index, m.choose(name, domain))
-    interrupts = m.interrupts
-    if interrupts.table or interrupts.scheduled or interrupts.pending:
-        span = _step_with_interrupts(m, io_before)
+    if m.tasks:
+        span = _step_some_task(m, io_before)
     else:
-        span = run_instruction(m)
+        span = _step_main_task(m, io_before)
     if program.environment_react is not None and m.status == RUNNING:
         io_mid = m.io
         run_environment_routine(m, program.environment_react)
         if m.interrupts.table and m.io != io_mid:
             signal_edges(m, io_mid)
+    return span
+
+
+def _step_main_task(m: Machine, io_before):
+    interrupts = m.interrupts
+    if interrupts.table or interrupts.scheduled or interrupts.pending:
+        return _step_with_interrupts(m, io_before)
+    return run_instruction(m)
+
+
+def _step_some_task(m: Machine, io_before):
+    """Several tasks: one of those still running takes the step (any one when checking,
+    in turn when running).  Interrupts are served in the main task."""
+    names = m.program.task_names
+    runnable = [i for i, stack in enumerate((m.frames,) + m.tasks) if stack]
+    if len(runnable) == 1:
+        task = runnable[0]
+    else:
+        task = names.index(m.choose("task", tuple(names[i] for i in runnable)))
+    if task == 0:
+        span = _step_main_task(m, io_before)
+    else:
+        main_frames = m.frames
+        m.frames = list(m.tasks[task - 1])
+        span = run_instruction(m)
+        if m.status != FAILED:
+            tasks = list(m.tasks)
+            tasks[task - 1] = tuple(m.frames)
+            m.tasks = tuple(tasks)
+            m.frames = main_frames
+    if m.status == ENDED and (m.frames or any(m.tasks)):
+        m.status = RUNNING               # one task ended; the others go on
     return span
 
 

@@ -1,0 +1,111 @@
+"""Several RAPID tasks: shared (non-TASK) PERS data, one task steps at a time."""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+from rapidmc.cli import main
+
+ROBOT = """MODULE RobotTask
+  PERS bool part_ready := FALSE;
+  PERS num parts := 0;
+  PROC main()
+    WHILE parts < 3 DO
+      WaitUntil part_ready;
+      parts := parts + 1;
+      TPWrite "robot took part " \\Num:=parts;
+      part_ready := FALSE;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+"""
+
+FEEDER = """MODULE Feeder
+  PERS bool part_ready := FALSE;
+  VAR num fed := 0;
+  PROC main()
+    WHILE fed < 3 DO
+      WaitUntil NOT part_ready;
+      fed := fed + 1;
+      part_ready := TRUE;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+"""
+
+COUNTER = """MODULE Counter{n}
+  PERS num count := 0;
+  TASK PERS num mine := 0;
+  PROC main()
+    VAR num copy;
+    FOR i FROM 1 TO 2 DO
+      copy := count;
+      count := copy + 1;
+      mine := mine + 1;
+    ENDFOR
+  ENDPROC
+ENDMODULE
+"""
+
+
+def files(tmp_path: Path, **modules: str) -> dict[str, str]:
+    paths = {}
+    for name, text in modules.items():
+        path = tmp_path / f"{name}.mod"
+        path.write_text(text)
+        paths[name] = str(path)
+    return paths
+
+
+def verdicts(capsys, *argv) -> tuple[int, dict]:
+    code = main(["check", *argv, "--quiet", "--format", "json"])
+    report = json.loads(capsys.readouterr().out)
+    return code, {p["name"]: p["verdict"] for p in report["properties"]}
+
+
+def test_tasks_hand_over_through_a_shared_persistent_when_run(tmp_path, capsys):
+    f = files(tmp_path, robot=ROBOT, feeder=FEEDER)
+    assert main(["run", f["robot"], "--add-task", f["feeder"]]) == 0
+    assert capsys.readouterr().out == "".join(f"robot took part {n}\n" for n in (1, 2, 3))
+
+
+def test_a_waiting_task_does_not_starve_the_other_when_checked(tmp_path, capsys):
+    f = files(tmp_path, robot=ROBOT, feeder=FEEDER)
+    code, result = verdicts(capsys, f["robot"], "--add-task", f["feeder"],
+                            "--formula", 'done: F "parts = 3"',
+                            "--formula", 'bounded: G "parts <= 3"')
+    assert code == 0
+    assert result == {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS",
+                      "done": "HOLDS", "bounded": "HOLDS"}
+
+
+def test_a_lost_update_between_tasks_is_found(tmp_path, capsys):
+    f = files(tmp_path, a=COUNTER.format(n="A"), b=COUNTER.format(n="B"))
+    code, result = verdicts(capsys, f["a"], "--add-task", f["b"],
+                            "--formula", 'all_counted: F G "count = 4"',
+                            "--formula", 'own_count: F G "mine = 2"')
+    assert code == 1
+    assert result["all_counted"] == "VIOLATED"      # both read count before either writes it
+    assert result["own_count"] == "HOLDS"           # TASK PERS: each task has its own
+
+
+def test_tasks_waiting_for_each_other_deadlock(tmp_path, capsys):
+    first = "MODULE First\n  PERS bool a_done := FALSE;\n  PERS bool b_done := FALSE;\n" \
+            "  PROC main()\n    WaitUntil b_done;\n    a_done := TRUE;\n  ENDPROC\nENDMODULE\n"
+    second = "MODULE Second\n  PERS bool a_done := FALSE;\n  PERS bool b_done := FALSE;\n" \
+             "  PROC main()\n    WaitUntil a_done;\n    b_done := TRUE;\n  ENDPROC\nENDMODULE\n"
+    f = files(tmp_path, first=first, second=second)
+    code, result = verdicts(capsys, f["first"], "--add-task", f["second"])
+    assert code == 1 and result["no_deadlock"] == "VIOLATED"
+    assert main(["run", f["first"], "--add-task", f["second"]]) == 1
+    assert "deadlock" in capsys.readouterr().err
+
+
+def test_a_backup_with_all_tasks(tmp_path, capsys):
+    backup = tmp_path / "backup"
+    for task, text in (("T_ROB1", ROBOT), ("T_FEED", FEEDER)):
+        folder = backup / "RAPID" / task / "PROGMOD"
+        folder.mkdir(parents=True)
+        (folder / "Main.mod").write_text(text)
+    assert main(["run", str(backup), "--task", "T_ROB1", "--all-tasks"]) == 0
+    assert capsys.readouterr().out.count("robot took part") == 3
