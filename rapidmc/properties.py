@@ -8,6 +8,8 @@ expressions over the program's global data, evaluated in each state:
 * ``flag_1`` — a bare identifier: a bool data object, or a signal (by its
   physical name such as ``C_IN``, or by the signal data bound to it) whose
   value is 1;
+* ``"main.flag_1"`` — routine data (or a value parameter) of the innermost
+  active call of a routine; false while the routine is not active;
 * location and robot atoms, as functions usable in quoted atoms:
   ``InRoutine("Grip")`` (the innermost active routine), ``AtLine(42)`` or
   ``AtLine("prog.mod", 42)`` (the statement about to execute),
@@ -33,7 +35,7 @@ from .semantics.errors import RapidError
 from .semantics.expressions import Compiled, ExpressionCompiler, constant
 from .semantics.machine import Machine
 from .semantics.program import Program
-from .semantics.scope import SIGNAL, Scope, Symbol
+from .semantics.scope import LOCAL_DATA, ROUTINE, SIGNAL, Scope, Symbol
 from .semantics.state import ENDED, FAILED, State
 from .semantics.types import BOOL, NUM, POS, ROBTARGET, STRING, RapidType
 
@@ -216,6 +218,15 @@ class _AtomExpressions(ExpressionCompiler):
             return factory(self.atoms, expr)
         return super()._FunctionCall(expr, expected)
 
+    def _Component(self, expr: ast.Component, expected) -> Compiled:
+        """``routine.data``: routine data of the innermost active call of that routine."""
+        base = expr.base
+        if isinstance(base, ast.NameRef):
+            symbol = self.scope.lookup(base.name.key)
+            if symbol is not None and symbol.kind == ROUTINE:
+                return _routine_data(self.atoms, symbol.slot, expr)
+        return super()._Component(expr, expected)
+
 
 # --- location and robot atoms ------------------------------------------------
 
@@ -333,6 +344,23 @@ def _at_target(atoms: AtomCompiler, expr) -> Compiled:
         px, py, pz = position(m)
         return (x - px) ** 2 + (y - py) ** 2 + (z - pz) ** 2 <= AT_TARGET_TOLERANCE ** 2
     return Compiled(at_target, BOOL)
+
+
+def _routine_data(atoms: AtomCompiler, routine_index: int, expr: ast.Component) -> Compiled:
+    routine = atoms.program.routines[routine_index]
+    symbol = routine.scope.lookup(expr.name.key) if routine.scope is not None else None
+    if symbol is None or symbol.kind != LOCAL_DATA or symbol.by_reference:
+        raise error(ATOM, f"routine {routine.name} has no routine data or value parameter "
+                    f"'{expr.name.text}'", expr.span)
+    slot = symbol.slot
+    name = f"{routine.name}.{expr.name.text}"
+
+    def read(m):
+        for frame in reversed(m.frames):
+            if frame.routine == routine_index:
+                return frame.locals[slot]
+        raise RapidError("ERR_REFUNKDAT", f"{name}: {routine.name} is not active")
+    return Compiled(read, symbol.type)
 
 
 def _status(status: int):
