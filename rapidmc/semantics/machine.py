@@ -61,6 +61,17 @@ def read_at(value: Any, path: tuple) -> Any:
     return value
 
 
+_new_tuple = tuple.__new__
+
+
+def with_locals(frame: Frame, slot: int, value: Any) -> Frame:
+    """``frame`` with local ``slot`` set to ``value`` (a new frame)."""
+    values = list(frame[2])
+    values[slot] = value
+    return _new_tuple(Frame, (frame[0], frame[1], tuple(values), frame[3], frame[4], frame[5],
+                              frame[6]))
+
+
 def statement_completed(program, frame: Frame, pc: int) -> bool:
     """Whether going to ``pc`` completes the statement that was retried (RETRY counting)."""
     return frame.mode == 0 and frame.error_pc >= 0 and \
@@ -119,20 +130,17 @@ class Machine:
 
     def goto(self, pc: int) -> None:
         frame = self.frames[-1]
-        retries = frame.retries
+        retries = frame[5]
         if retries and statement_completed(self.program, frame, pc):
             retries = 0
-        self.frames[-1] = Frame(frame.routine, pc, frame.locals, frame.mode, frame.error_pc,
-                                retries, frame.result)
+        self.frames[-1] = _new_tuple(Frame, (frame[0], pc, frame[2], frame[3], frame[4],
+                                             retries, frame[6]))
 
     def local(self, slot: int) -> Any:
         return self.frames[-1].locals[slot]
 
     def set_local(self, slot: int, value: Any, depth: int = -1) -> None:
-        frame = self.frames[depth]
-        values = list(frame.locals)
-        values[slot] = value
-        self.frames[depth] = frame._replace(locals=tuple(values))
+        self.frames[depth] = with_locals(self.frames[depth], slot, value)
 
     # --- references ----------------------------------------------------------
     def read_ref(self, ref: tuple) -> Any:
@@ -151,9 +159,8 @@ class Machine:
             self.store = self.store.set(index, replace_at(self.store[index], path, new) if path else new)
         else:
             frame = self.frames[space]
-            values = list(frame.locals)
-            values[index] = replace_at(values[index], path, new) if path else new
-            self.frames[space] = frame._replace(locals=tuple(values))
+            self.frames[space] = with_locals(frame, index, replace_at(frame[2][index], path, new)
+                                             if path else new)
 
     # --- ending ---------------------------------------------------------------
     def fail(self, errno: int, where: tuple, message: str) -> None:

@@ -17,7 +17,7 @@ from .expressions import ExpressionCompiler, _check_index as check_index
 from .instructions import (Action, Branch, Call, EndRoutine, EndUndo, ExitProgram,
                            ForInit, ForNext, Instruction, Jump, LateCall, Raise, Retry,
                            Return, TestDispatch, TryNext)
-from .machine import GLOBAL
+from .machine import GLOBAL, with_locals
 from .scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, Scope, Symbol
 from .types import NUM, SEMI_VALUE, STRING, RapidType
 
@@ -204,10 +204,7 @@ class RoutineCompiler:
 
             def assign_local(m):
                 value = value_fn(m)          # first: a function may change the frame
-                frame = m.frames[-1]
-                values_ = list(frame.locals)
-                values_[slot] = value
-                m.frames[-1] = frame._replace(locals=tuple(values_))
+                m.frames[-1] = with_locals(m.frames[-1], slot, value)
             fn = assign_local
         elif (isinstance(target, ast.Index) and len(target.indices) == 1 and
               isinstance(target.base, ast.NameRef) and root.kind == GLOBAL_DATA):
