@@ -113,9 +113,8 @@ class ExpressionCompiler:
         """Round to num when a dnum value goes into a num."""
         if target is NUM and compiled.type is DNUM:
             fn = compiled.fn
-            if compiled.is_constant:
-                return constant(values.to_num(compiled.constant), NUM)
-            return Compiled(lambda m: values.to_num(fn(m)), NUM)
+            # A constant too large for num fails when it runs (ERR_NUM_LIMIT), not here.
+            return ExpressionCompiler._fold(lambda m: values.to_num(fn(m)), NUM, compiled)
         return compiled
 
     # --------------------------------------------------------------- literals
@@ -294,8 +293,12 @@ class ExpressionCompiler:
             if operand.is_constant:
                 return constant(not operand.constant, BOOL)
             return Compiled(lambda m: not fn(m), BOOL)
-        operand = self.value(expr.operand, expected if is_numeric(expected) else None)
+        operand = self.value(expr.operand,
+                             expected if is_numeric(expected) or expected is POS else None)
         rapid_type = operand.type
+        if rapid_type is None and isinstance(expr.operand, ast.Aggregate):
+            raise error(TYPE_MISMATCH, f"cannot tell the type of the aggregate after unary "
+                        f"{expr.op}", expr.span)
         if rapid_type is not None and not is_numeric(rapid_type) and rapid_type is not POS:
             raise error(TYPE_MISMATCH, f"unary {expr.op} needs num, dnum or pos, not "
                         f"{type_name(rapid_type)}", expr.span)
@@ -303,7 +306,7 @@ class ExpressionCompiler:
             return operand
         fn = operand.fn
         if rapid_type is POS:
-            return Compiled(lambda m: tuple(-c for c in fn(m)), POS)
+            return self._fold(lambda m: tuple(-c for c in fn(m)), POS, operand)
         if operand.is_constant:
             return constant(-operand.constant, rapid_type)
         return Compiled(lambda m: -fn(m), rapid_type)
@@ -378,6 +381,7 @@ class ExpressionCompiler:
             return self._fold(lambda m: values.concat(lf(m), rf(m)), STRING, left, right)
         if lt is POS or rt is POS or lt is ORIENT or rt is ORIENT:
             return self._vector(expr, left, right)
+        self._typed_aggregates(expr)
         for side in (lt, rt):
             if side is not None and not is_numeric(side):
                 raise error(TYPE_MISMATCH, f"'{op}' needs num or dnum operands, not "
@@ -399,6 +403,14 @@ class ExpressionCompiler:
         else:
             raise error(TYPE_MISMATCH, f"unknown operator {op}", expr.span)
         return self._fold(fn, result_type, left, right)
+
+    @staticmethod
+    def _typed_aggregates(expr: ast.Binary) -> None:
+        """An aggregate operand whose type nothing tells (``[1,2,3] + [4,5,6]``) is an error."""
+        for side in (expr.left, expr.right):
+            if isinstance(side, ast.Aggregate):
+                raise error(TYPE_MISMATCH, f"cannot tell the type of the aggregate operand of "
+                            f"'{expr.op}'", side.span)
 
     def _vector(self, expr, left: Compiled, right: Compiled) -> Compiled:
         from .builtins import geometry_ops
