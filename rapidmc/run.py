@@ -8,6 +8,7 @@ as a deadlock instead of hanging.
 """
 from __future__ import annotations
 
+import math
 import sys
 from dataclasses import dataclass
 from typing import Optional, TextIO
@@ -41,6 +42,9 @@ class ConsoleChooser(Chooser):
         except ValueError:
             raise error(BAD_INPUT_VALUE, f"{kind} needs a number, got {text!r} on standard "
                         "input") from None
+        if not math.isfinite(value):
+            raise error(BAD_INPUT_VALUE, f"{kind} needs a finite number, got {text!r} on "
+                        "standard input")
         if kind == "TPReadFK" and value not in (1, 2, 3, 4, 5):
             raise error(BAD_INPUT_VALUE, f"TPReadFK answers are function keys 1-5, got {text!r}")
         return (value,)

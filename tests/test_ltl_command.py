@@ -27,7 +27,7 @@ def test_negate_translates_the_negation(capsys):
 def test_malformed_formula_is_a_diagnostic_with_caret(capsys):
     assert main(["ltl", "G (a | )"]) == EXIT_INPUT_ERROR
     err = capsys.readouterr().err
-    assert err.startswith("<command line>:1:8: error: expected a formula, found ')' [RMC401]")
+    assert err.startswith("<command-line>:1:8: error: expected a formula, found ')' [RMC401]")
     assert "    G (a | )\n           ^" in err
 
 

@@ -11,6 +11,7 @@ input or usage; 3 no violation found but some search was bounded (UNKNOWN).
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 from typing import Optional
 
@@ -30,6 +31,7 @@ from ..properties import (AtomCompiler, Property, check_unique, parse_property,
 from ..semantics.link import build
 from ..semantics.step import CheckConfig, EnvironmentFault
 from ..syntax import load_program
+from .quoting import quoted
 
 DEFAULT_MAX_STATES = 1_000_000
 BUILTIN_RUNTIME = "no_runtime_error"
@@ -83,9 +85,11 @@ def _numbers(text: str, option: str) -> tuple[float, ...]:
     try:
         values = tuple(float(v) for v in text.split(",") if v.strip())
     except ValueError:
-        raise error(USAGE, f"{option} expects numbers separated by commas, got '{text}'") from None
+        raise error(USAGE, f"{option} expects numbers separated by commas, got {quoted(text)}") from None
     if not values:
         raise error(USAGE, f"{option} needs at least one value")
+    if not all(math.isfinite(v) for v in values):
+        raise error(USAGE, f"{option} expects finite numbers, got {quoted(text)}")
     return values
 
 
@@ -94,7 +98,7 @@ def _pairs(items: list[str], option: str) -> dict[str, str]:
     for item in items:
         name, sep, value = item.partition("=")
         if not sep or not name.strip() or not value.strip():
-            raise error(USAGE, f"{option} expects NAME=VALUE, got '{item}'")
+            raise error(USAGE, f"{option} expects NAME=VALUE, got {quoted(item)}")
         result[name.strip()] = value.strip()
     return result
 
@@ -148,7 +152,8 @@ def _check(args: argparse.Namespace) -> int:
     describer = RapidDescriber(program, config)
     unknown = set(automata) - {p.name for p in properties}
     if unknown:
-        raise error(USAGE, f"--automaton names no property: {', '.join(sorted(unknown))}")
+        raise error(USAGE, f"--automaton names no property: "
+                    f"{', '.join(quoted(name) for name in sorted(unknown))}")
     bounds = dict(max_states=args.max_states, max_seconds=args.max_seconds)
     results = []
     try:
@@ -251,7 +256,7 @@ def _check_domains(program, domains: dict) -> None:
     for key in domains:
         signal = program.signal(key)
         if signal is None:
-            raise error(USAGE, f"--input-domain names unknown signal '{key}'")
+            raise error(USAGE, f"--input-domain names unknown signal {quoted(key)}")
         if signal.kind not in ("AI", "GI"):
             raise error(USAGE, f"--input-domain is for analog and group inputs; {signal.name} is "
                         f"a {signal.kind}")

@@ -17,8 +17,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def execute(args: argparse.Namespace) -> int:
-    SourceCache.remember("<command line>", args.formula)
-    formula = parse_formula(args.formula, file="<command line>")
+    SourceCache.remember("<command-line>", args.formula)
+    formula = parse_formula(args.formula, file="<command-line>")
     if args.negate:
         formula = Not(formula)
     automaton = to_buchi(formula, backend=args.backend)

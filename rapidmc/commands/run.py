@@ -7,14 +7,16 @@ or deadlock, 2 static error (nothing ran).
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 
-from ..diagnostics import (EXIT_OK, EXIT_RUNTIME_ERROR, USAGE, UserError, error, render)
+from ..diagnostics import (BAD_INPUT_VALUE, EXIT_OK, EXIT_RUNTIME_ERROR, USAGE, UserError, error, render)
 from ..run import fault_diagnostic, run_program
 from ..backup import add_program_arguments, load_tasks, resolve_program_files
 from ..semantics.link import build
 from ..semantics.state import FAILED
 from ..syntax import load_program
+from .quoting import quoted
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -42,12 +44,33 @@ def parse_io(assignments: list[str]) -> dict[str, float]:
     for text in assignments:
         name, sep, value = text.partition("=")
         if not sep or not name.strip():
-            raise error(USAGE, f"--io expects NAME=VALUE, got '{text}'")
+            raise error(USAGE, f"--io expects NAME=VALUE, got {quoted(text)}")
         try:
-            values[name.strip().upper()] = float(value)
+            number = float(value)
         except ValueError:
-            raise error(USAGE, f"--io {name}: '{value}' is not a number") from None
+            raise error(USAGE, f"--io {quoted(name)}: {quoted(value)} is not a number") from None
+        if not math.isfinite(number):
+            raise error(BAD_INPUT_VALUE, f"--io {quoted(name)}: {quoted(value)} is not a finite "
+                        "number")
+        values[name.strip().upper()] = number
     return values
+
+
+def check_io_values(program, io_values: dict[str, float]) -> None:
+    """Every --io name is a signal, and digital signals get 0 or 1."""
+    unknown = [name for name in io_values if program.signal(name) is None]
+    if unknown:
+        raise error(USAGE, f"--io names unknown signal(s): "
+                    f"{', '.join(quoted(name) for name in unknown)}")
+    for name, value in io_values.items():
+        check_signal_value(program.signal(name), value)
+
+
+def check_signal_value(signal, value: float, where=None) -> None:
+    """A digital signal is 0 or 1."""
+    if signal.kind in ("DI", "DO") and value not in (0, 1):
+        raise error(BAD_INPUT_VALUE, f"{signal.name}: a digital signal is 0 or 1, not "
+                    f"{value:g}", where)
 
 
 def read_input_script(path: str, program) -> tuple:
@@ -70,14 +93,15 @@ def read_input_script(path: str, program) -> tuple:
             seconds = float(words[0])
         except ValueError:
             raise error(USAGE, f"an input script line starts with a time in seconds, not "
-                        f"'{words[0]}'", where) from None
-        if seconds < 0 or len(words) < 2:
+                        f"{quoted(words[0])}", where) from None
+        if not 0 <= seconds < math.inf or len(words) < 2:
             raise error(USAGE, "expected 'SECONDS NAME=VALUE ...' with SECONDS >= 0", where)
         for assignment in parse_io(words[1:]).items():
             name, value = assignment
             signal = program.signal(name)
             if signal is None:
-                raise error(USAGE, f"the input script names unknown signal '{name}'", where)
+                raise error(USAGE, f"the input script names unknown signal {quoted(name)}", where)
+            check_signal_value(signal, value, where)
             changes.append((seconds, signal.index, value))
     return tuple(sorted(changes, key=lambda change: change[0]))
 
@@ -88,9 +112,7 @@ def execute(args: argparse.Namespace) -> int:
     program = build(load_program(files.modules), entry=args.entry,
                     options={"io_names": tuple(io_values), "configured_signals": files.signals},
                     tasks=load_tasks(files))
-    unknown = [name for name in io_values if program.signal(name) is None]
-    if unknown:
-        raise error(USAGE, f"--io names unknown signal(s): {', '.join(unknown)}")
+    check_io_values(program, io_values)
     changes = read_input_script(args.inputs, program) if args.inputs else ()
     result = run_program(program, io_values, sys.stdin, sys.stdout, args.max_steps,
                          sys.stderr if args.trace else None, changes)

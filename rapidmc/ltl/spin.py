@@ -80,7 +80,7 @@ def _guard_cubes(guard: str, atoms: Sequence[str]):
         if not re.fullmatch(r"p\d+", name) or int(name[1:]) >= len(atoms):
             raise error(AUTOMATON, f"never claim guard uses unknown proposition {name!r}")
         return int(name[1:])
-    return cubes(parse_formula(guard, file="<never claim>"), index)
+    return cubes(parse_formula(guard, file="<never-claim>"), index)
 
 
 def _targets(blocks) -> set[str]:
