@@ -1,0 +1,487 @@
+"""A hypothesis strategy for random, mostly well-formed RAPID programs (fuzzing support).
+
+``programs()`` draws a ``Program``: the module text and the names of its global data, so
+a test can also write LTL atoms over them.  Expressions are drawn for a wanted type
+from the names in scope, so most programs pass the static checks and run; some do not
+(a division by zero, an index out of bounds, a wait that never ends), which is what
+the fuzzer wants to see handled.  The generator covers data of many types, records,
+arrays, routines with parameters of every mode, optional and switch parameters, every
+statement and operator, predefined routines, error handlers, interrupts, signals
+(AliasIO and configured names), FlexPendant reads and waits.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from hypothesis import strategies as st
+
+NUM, DNUM, BOOL, STRING, POS, ORIENT, RECORD = "num", "dnum", "bool", "string", "pos", \
+    "orient", "part"
+VALUE_TYPES = (NUM, DNUM, BOOL, STRING, POS, ORIENT, RECORD)
+NUM_LITERALS = ("0", "1", "2", "3", "-1", "0.5", "10", "100", "1E3", "3.4E38", "1E-7",
+                "8388608", "4294967295")
+STRING_LITERALS = ('""', '"a"', '"hello"', '"12.5"', '"TRUE"', '"[1,2,3]"', '"x""y"',
+                   '"\\\\"', '"' + "z" * 80 + '"')
+ARITHMETIC = ("+", "-", "*", "/", "DIV", "MOD")
+RELATIONS = ("<", "<=", "=", ">", ">=", "<>")
+LOGICAL = ("AND", "OR", "XOR")
+ALIAS_NAMES = ('"DI1"', '"di3"', '""', "sigName")
+
+
+@dataclass
+class Scope:
+    """Names usable at one point: readable data by type, writable data by type."""
+
+    readable: dict[str, list[str]] = field(default_factory=dict)
+    writable: dict[str, list[str]] = field(default_factory=dict)
+    optional: list[str] = field(default_factory=list)     # optional parameters (Present)
+    functions: list[str] = field(default_factory=list)    # user FUNC num names, one num arg
+    procedures: list[str] = field(default_factory=list)   # user PROC names (see PROC_CALLS)
+    in_handler: bool = False
+    in_function: bool = False
+    labels: list[str] = field(default_factory=list)
+
+    def add(self, rapid_type: str, name: str, writable: bool = True) -> None:
+        self.readable.setdefault(rapid_type, []).append(name)
+        if writable:
+            self.writable.setdefault(rapid_type, []).append(name)
+
+    def child(self) -> "Scope":
+        return Scope({k: list(v) for k, v in self.readable.items()},
+                     {k: list(v) for k, v in self.writable.items()}, list(self.optional),
+                     list(self.functions), list(self.procedures), self.in_handler,
+                     self.in_function, list(self.labels))
+
+
+@dataclass(frozen=True)
+class Program:
+    """A generated module and what LTL atoms may read."""
+
+    text: str
+    atoms: tuple[str, ...]
+
+
+# ---------------------------------------------------------------- expressions
+
+@st.composite
+def expression(draw, scope: Scope, rapid_type: str, depth: int = 2) -> str:
+    """An expression of ``rapid_type`` (most of the time) over the names in ``scope``."""
+    names = scope.readable.get(rapid_type, [])
+    leaves = [_literal(rapid_type)]
+    if names:
+        leaves.append(st.sampled_from(names))
+    if depth <= 0:
+        return draw(st.one_of(*leaves))
+    builders = {NUM: _num_expression, DNUM: _dnum_expression, BOOL: _bool_expression,
+                STRING: _string_expression, POS: _pos_expression}
+    build = builders.get(rapid_type)
+    if build is None or draw(st.integers(0, 3)) == 0:
+        return draw(st.one_of(*leaves))
+    return draw(build(scope, depth - 1))
+
+
+def _literal(rapid_type: str):
+    num = st.sampled_from(NUM_LITERALS)
+    if rapid_type in (NUM, DNUM):
+        return num
+    if rapid_type == BOOL:
+        return st.sampled_from(("TRUE", "FALSE"))
+    if rapid_type == STRING:
+        return st.sampled_from(STRING_LITERALS)
+    if rapid_type == POS:
+        return st.tuples(num, num, num).map(lambda t: "[" + ", ".join(t) + "]")
+    if rapid_type == ORIENT:
+        return st.sampled_from(("[1, 0, 0, 0]", "[0, 0, 0, 1]", "[0.7071, 0, 0.7071, 0]"))
+    return st.tuples(num, st.sampled_from(("TRUE", "FALSE")), st.sampled_from(STRING_LITERALS)) \
+        .map(lambda t: "[" + ", ".join(t) + "]")
+
+
+@st.composite
+def _num_expression(draw, scope: Scope, depth: int) -> str:
+    sub = lambda t=NUM: expression(scope, t, depth)  # noqa: E731
+    choice = draw(st.integers(0, 11))
+    if choice == 0:
+        return f"({draw(sub())} {draw(st.sampled_from(ARITHMETIC))} {draw(sub())})"
+    if choice == 1:
+        return f"(-({draw(sub())}))"
+    if choice == 2:
+        function = draw(st.sampled_from(("Abs", "Sqrt", "Exp", "Trunc", "Round", "Sin", "ACos")))
+        return f"{function}({draw(sub())})"
+    if choice == 3:
+        return f"Round({draw(sub())}\\Dec:={draw(st.integers(-1, 7))})"
+    if choice == 4:
+        return f"StrLen({draw(sub(STRING))})"
+    if choice == 5:
+        if draw(st.booleans()):
+            return f"arr{{{draw(sub())}}}"
+        return f"grid{{{draw(sub())}, {draw(sub())}}}"
+    if choice == 6:
+        return f"{draw(st.sampled_from(scope.readable[POS]))}.{draw(st.sampled_from('xyz'))}"
+    if choice == 7:
+        return f"{draw(st.sampled_from(('Pow', 'ATan2', 'BitAnd', 'BitLSh', 'BitXOr')))}" \
+               f"({draw(sub())}, {draw(sub())})"
+    if choice == 8 and scope.functions:
+        return f"{draw(st.sampled_from(scope.functions))}({draw(sub())})"
+    if choice == 9:
+        return draw(st.sampled_from(("DInput(diStart)", "DOutput(doLamp)", "DInput(DI1)",
+                                     "DOutput(DO1)", "AInput(AI1)", "GInput(GI1)",
+                                     "ClkRead(clk)", "Dim(arr, 1)", "Dim(grid, 2)", "ERRNO",
+                                     "INTNO", "rec.id", "StrFind(\"abc\", 1, \"b\")",
+                                     "NumToDnum(1)")))
+    if choice == 10:
+        return f"DnumToNum({draw(sub(DNUM))})"
+    return draw(_literal(NUM))
+
+
+@st.composite
+def _dnum_expression(draw, scope: Scope, depth: int) -> str:
+    left, right = draw(expression(scope, DNUM, depth)), draw(expression(scope, DNUM, depth))
+    return draw(st.sampled_from((f"({left} {draw(st.sampled_from(ARITHMETIC))} {right})",
+                                 f"NumToDnum({draw(expression(scope, NUM, depth))})",
+                                 "4294967295")))
+
+
+@st.composite
+def _bool_expression(draw, scope: Scope, depth: int) -> str:
+    choice = draw(st.integers(0, 6))
+    if choice == 0:
+        rapid_type = draw(st.sampled_from((NUM, NUM, STRING, DNUM, BOOL)))
+        relations = RELATIONS if rapid_type in (NUM, DNUM) else ("=", "<>")
+        left, right = (draw(expression(scope, rapid_type, depth)) for _ in range(2))
+        return f"({left} {draw(st.sampled_from(relations))} {right})"
+    if choice == 1:
+        return (f"({draw(expression(scope, BOOL, depth))} {draw(st.sampled_from(LOGICAL))} "
+                f"{draw(expression(scope, BOOL, depth))})")
+    if choice == 2:
+        return f"(NOT {draw(expression(scope, BOOL, depth))})"
+    if choice == 3 and scope.optional:
+        return f"Present({draw(st.sampled_from(scope.optional))})"
+    if choice == 4:
+        return draw(st.sampled_from(("rec.ok", "StrToVal(\"3\", numVar)", "IsPers(numVar)",
+                                     "OpMode() = OP_AUTO", "ValidIO(diStart)")))
+    if choice == 5:
+        return f"({draw(expression(scope, POS, depth))} = {draw(expression(scope, POS, depth))})"
+    return draw(_literal(BOOL))
+
+
+@st.composite
+def _string_expression(draw, scope: Scope, depth: int) -> str:
+    choice = draw(st.integers(0, 5))
+    if choice == 0:
+        return f"{draw(expression(scope, STRING, depth))} + {draw(expression(scope, STRING, depth))}"
+    if choice == 1:
+        return f"NumToStr({draw(expression(scope, NUM, depth))}, {draw(st.integers(-1, 7))})"
+    if choice == 2:
+        rapid_type = draw(st.sampled_from(VALUE_TYPES))
+        return f"ValToStr({draw(expression(scope, rapid_type, depth))})"
+    if choice == 3:
+        return (f"StrPart({draw(expression(scope, STRING, depth))}, "
+                f"{draw(expression(scope, NUM, depth))}, {draw(expression(scope, NUM, depth))})")
+    if choice == 4:
+        return draw(st.sampled_from(("rec.name", "StrMap(\"abc\", \"a\", \"b\")", "CTime()",
+                                     "GetSysInfo(\\SerialNo)",
+                                     "ByteToStr(12)")))
+    return draw(_literal(STRING))
+
+
+@st.composite
+def _pos_expression(draw, scope: Scope, depth: int) -> str:
+    choice = draw(st.integers(0, 3))
+    left = draw(st.sampled_from(scope.readable[POS]))       # aggregates have no type here
+    if choice == 0:
+        return f"({left} {draw(st.sampled_from(('+', '-')))} {draw(st.sampled_from(scope.readable[POS]))})"
+    if choice == 1:
+        return f"({left} * {draw(expression(scope, NUM, depth))})"
+    if choice == 2:
+        return f"(-({left}))"
+    return f"[{draw(expression(scope, NUM, depth))}, 0, {draw(expression(scope, NUM, depth))}]"
+
+
+# ------------------------------------------------------------------ statements
+
+@st.composite
+def statements(draw, scope: Scope, depth: int, count: tuple[int, int] = (1, 6)) -> list[str]:
+    return [draw(statement(scope, depth)) for _ in range(draw(st.integers(*count)))]
+
+
+@st.composite
+def statement(draw, scope: Scope, depth: int) -> str:
+    kinds = ["assign", "assign", "call", "call", "write", "read", "wait", "io", "interrupt",
+             "raise", "misc"]
+    if depth > 0:
+        kinds += ["if", "compact_if", "for", "while", "test"]
+    kind = draw(st.sampled_from(kinds))
+    return draw(STATEMENTS[kind](scope, depth))
+
+
+@st.composite
+def _assign(draw, scope: Scope, depth: int) -> str:
+    rapid_type = draw(st.sampled_from([t for t in scope.writable if scope.writable[t]]))
+    target = draw(st.sampled_from(scope.writable[rapid_type]))
+    return f"{target} := {draw(expression(scope, rapid_type))};"
+
+
+@st.composite
+def _call(draw, scope: Scope, depth: int) -> str:
+    num = lambda: draw(expression(scope, NUM, 1))  # noqa: E731
+    target = draw(st.sampled_from(scope.writable[NUM]))
+    variable = draw(st.sampled_from(("numVar", "arr{2}", "rec.id")))    # VAR, not PERS
+    calls = [f"Incr {target};", f"Decr {target};", f"Add {target}, {num()};",
+             f"Clear {target};", f"numVar := {target};", "ClkStart clk;", "ClkStop clk;",
+             "ClkReset clk;", f"WaitTime {draw(st.sampled_from(('0', '0.1', '1', '-1')))};",
+             f"ErrWrite \\W, \"head\", {draw(expression(scope, STRING, 1))};",
+             "TPErase;", f"BitSet byteVar, {num()};", f"BitClear byteVar, {num()};"]
+    if scope.procedures:
+        calls.extend(draw(st.sampled_from(scope.procedures)).format(
+            num=num(), var=variable, bool=draw(expression(scope, BOOL, 1))) for _ in range(2))
+    calls.append(f"%\"work\" + NumToStr({num()}, 0)% ;" if draw(st.booleans()) else
+                 "CallByVar \"work\", 1;")
+    return draw(st.sampled_from(calls))
+
+
+@st.composite
+def _write(draw, scope: Scope, depth: int) -> str:
+    text = draw(expression(scope, STRING, 1))
+    option = draw(st.sampled_from(("", "\\Num:=", "\\Bool:=", "\\Pos:=", "\\Orient:=",
+                                   "\\Dnum:=")))
+    if not option:
+        return f"TPWrite {text};"
+    rapid_type = {"\\Num:=": NUM, "\\Bool:=": BOOL, "\\Pos:=": POS, "\\Orient:=": ORIENT,
+                  "\\Dnum:=": DNUM}[option]
+    return f"TPWrite {text}{option}{draw(expression(scope, rapid_type, 2))};"
+
+
+@st.composite
+def _read(draw, scope: Scope, depth: int) -> str:
+    target = draw(st.sampled_from(scope.writable[NUM]))
+    return draw(st.sampled_from((
+        f"TPReadNum {target}, \"number?\";",
+        f"TPReadFK {target}, \"key?\", \"A\", \"B\", stEmpty, stEmpty, \"E\";",
+        f"TPReadFK {target}, \"key?\", stEmpty, stEmpty, stEmpty, stEmpty, \"E\""
+        f" \\MaxTime:=1;",
+        "TPReadDnum dnumVar, \"dnum?\";")))
+
+
+@st.composite
+def _wait(draw, scope: Scope, depth: int) -> str:
+    condition = draw(expression(scope, BOOL, 1))
+    limit = draw(st.sampled_from(("", " \\MaxTime:=1", " \\MaxTime:=0.5 \\TimeFlag:=flag")))
+    return draw(st.sampled_from((f"WaitUntil {condition}{limit};",
+                                 f"WaitDI {draw(st.sampled_from(('diStart', 'DI1')))}, "
+                                 f"{draw(st.sampled_from(('0', '1')))}{limit};",
+                                 f"WaitDO doLamp, 1{limit};",
+                                 f"WaitTime {draw(st.sampled_from(('0.1', '2')))};")))
+
+
+@st.composite
+def _io(draw, scope: Scope, depth: int) -> str:
+    output = draw(st.sampled_from(("doLamp", "DO1", "do2")))
+    return draw(st.sampled_from((
+        f"Set {output};", f"Reset {output};",
+        f"SetDO {output}, {draw(st.sampled_from(('0', '1', '2', 'high')))};",
+        f"PulseDO \\PLength:=0.2, {output};", f"InvertDO {output};",
+        f"AliasIO {draw(st.sampled_from(ALIAS_NAMES))}, diStart;",
+        "AliasIO \"DO1\", doLamp;", "AliasIOReset doLamp;",
+        f"SetGO GO1, {draw(expression(scope, NUM, 1))};")))
+
+
+@st.composite
+def _interrupt(draw, scope: Scope, depth: int) -> str:
+    return draw(st.sampled_from((
+        "IDelete ir;", "CONNECT ir WITH onTick;", "ITimer 0.5, ir;", "ITimer \\Single, 1, ir;",
+        "ISignalDI diStart, 1, ir;", "ISignalDI \\Single, DI1, 0, ir;", "ISleep ir;",
+        "IWatch ir;", "IDisable;", "IEnable;", "ISignalDO doLamp, 1, ir;")))
+
+
+@st.composite
+def _raise(draw, scope: Scope, depth: int) -> str:
+    options = ["RAISE ERR_MINE;", "RAISE ERR_DIVZERO;", "RAISE 55;",
+               f"RAISE {draw(expression(scope, NUM, 0))};", "BookErrNo ERR_MINE;",
+               "RETURN;" if not scope.in_function else
+               f"RETURN {draw(expression(scope, NUM, 1))};",
+               "EXIT;", "Stop;", "ExitCycle;"]
+    if scope.in_handler:
+        options += ["RETRY;", "TRYNEXT;", "RAISE;", "SkipWarn;", "ERRNO := 1;"]
+    if scope.labels:
+        options.append(f"GOTO {draw(st.sampled_from(scope.labels))};")
+    return draw(st.sampled_from(options))
+
+
+@st.composite
+def _misc(draw, scope: Scope, depth: int) -> str:
+    return draw(st.sampled_from((
+        f"strVar := StrPart({draw(expression(scope, STRING, 1))}, 1, 2);",
+        f"ok := StrToVal({draw(expression(scope, STRING, 0))}, numVar);",
+        "posVar := Offs(target, 1, 2, 3).trans;", "grid{1, 2} := arr{3};",
+        f"arr{{{draw(expression(scope, NUM, 0))}}} := 1;", "rec.name := \"n\";",
+        f"dnumVar := {draw(expression(scope, DNUM, 1))};", "ori := OrientZYX(90, 0, 0);",
+        "posVar := target.trans;", "target.trans.z := 5;",
+        "ok := IsPers(count);", "level1 := level1 + 1;")))
+
+
+@st.composite
+def _if(draw, scope: Scope, depth: int) -> str:
+    lines = [f"IF {draw(expression(scope, BOOL))} THEN", *draw(statements(scope, depth - 1))]
+    for _ in range(draw(st.integers(0, 2))):
+        lines += [f"ELSEIF {draw(expression(scope, BOOL))} THEN",
+                  *draw(statements(scope, depth - 1))]
+    if draw(st.booleans()):
+        lines += ["ELSE", *draw(statements(scope, depth - 1))]
+    return "\n".join(lines + ["ENDIF"])
+
+
+@st.composite
+def _compact_if(draw, scope: Scope, depth: int) -> str:
+    simple = draw(st.one_of(_assign(scope, 0), _call(scope, 0), _raise(scope, 0),
+                            _write(scope, 0)))
+    return f"IF {draw(expression(scope, BOOL))} {simple}"
+
+
+@st.composite
+def _for(draw, scope: Scope, depth: int) -> str:
+    inner = scope.child()
+    variable = draw(st.sampled_from(("i", "k", "j")))
+    inner.add(NUM, variable, writable=False)
+    step = draw(st.sampled_from(("", " STEP 2", " STEP -1", " STEP 0.5")))
+    return "\n".join([f"FOR {variable} FROM {draw(expression(scope, NUM, 1))} TO "
+                      f"{draw(expression(scope, NUM, 1))}{step} DO",
+                      *draw(statements(inner, depth - 1)), "ENDFOR"])
+
+
+@st.composite
+def _while(draw, scope: Scope, depth: int) -> str:
+    return "\n".join([f"WHILE {draw(expression(scope, BOOL))} DO",
+                      *draw(statements(scope, depth - 1)), "ENDWHILE"])
+
+
+@st.composite
+def _test(draw, scope: Scope, depth: int) -> str:
+    rapid_type = draw(st.sampled_from((NUM, NUM, STRING, BOOL)))
+    lines = [f"TEST {draw(expression(scope, rapid_type, 1))}"]
+    for _ in range(draw(st.integers(0, 3))):
+        values = ", ".join(draw(expression(scope, rapid_type, 0))
+                           for _ in range(draw(st.integers(1, 3))))
+        lines += [f"CASE {values}:", *draw(statements(scope, depth - 1, (0, 3)))]
+    if draw(st.booleans()):
+        lines += ["DEFAULT:", *draw(statements(scope, depth - 1, (0, 3)))]
+    return "\n".join(lines + ["ENDTEST"])
+
+
+STATEMENTS = {"assign": _assign, "call": _call, "write": _write, "read": _read, "wait": _wait,
+              "io": _io, "interrupt": _interrupt, "raise": _raise, "misc": _misc, "if": _if,
+              "compact_if": _compact_if, "for": _for, "while": _while, "test": _test}
+
+
+# -------------------------------------------------------------------- programs
+
+GLOBAL_DATA = (
+    "RECORD part\n  num id;\n  bool ok;\n  string name;\nENDRECORD",
+    "ALIAS num level;",
+    "CONST num N := 3;",
+    "VAR errnum ERR_MINE := -1;",
+    "CONST pos home := [0, 0, 100];",
+    "VAR num numVar := 1;",
+    "PERS num count := 0;",
+    "VAR num arr{N} := [1, 2, 3];",
+    "VAR num grid{2, 3};",
+    "VAR bool ok;",
+    "VAR bool flag := TRUE;",
+    "VAR string strVar := \"s\";",
+    "VAR dnum dnumVar := 2;",
+    "VAR pos posVar := [1, 2, 3];",
+    "VAR orient ori := [1, 0, 0, 0];",
+    "VAR part rec := [1, TRUE, \"r\"];",
+    "VAR level level1 := 2;",
+    "VAR byte byteVar := 3;",
+    "VAR intnum ir;",
+    "VAR clock clk;",
+    "VAR signaldi diStart;",
+    "VAR signaldo doLamp;",
+    "VAR string sigName := \"DI1\";",
+    "VAR robtarget target := [[100, 0, 50], [1, 0, 0, 0], [0, 0, 0, 0],"
+    " [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];",
+)
+GLOBAL_SCOPE = {NUM: ["numVar", "count", "arr{1}", "grid{2, 3}", "rec.id", "level1"],
+                DNUM: ["dnumVar"], BOOL: ["ok", "flag", "rec.ok"], POS: ["posVar"],
+                STRING: ["strVar", "rec.name"], ORIENT: ["ori"],
+                RECORD: ["rec"]}
+#: user procedures and how to call them (filled in with a num, a num variable and a bool)
+PROC_CALLS = ("work1 {num}, {var}, {var};", "work1 {num}, {var}, {var} \\opt:={num};",
+              "work1 {num}, {var}, {var} \\sw \\flagged;", "work2 arr;",
+              "work1 {num}, {num}, {var};", "work1 {bool}, {var}, {var};")
+ATOM_TEMPLATES = ("{bool}", "\"{bool}\"", "\"numVar > {num}\"", "\"DOutput(doLamp) = 1\"",
+                  "\"DOutput(DO1) = 1\"", "\"DInput(DI1) = 0\"", "\"count = {num}\"",
+                  "\"arr{{2}} < {num}\"", "\"rec.ok\"", "unknownAtom", "\"StrLen(strVar) = 1\"")
+
+
+def global_scope() -> Scope:
+    scope = Scope()
+    for rapid_type, names in GLOBAL_SCOPE.items():
+        for name in names:
+            scope.add(rapid_type, name)
+    scope.add(NUM, "N", writable=False)
+    scope.add(POS, "home", writable=False)
+    scope.functions = ["work3"]
+    scope.procedures = list(PROC_CALLS)
+    return scope
+
+
+@st.composite
+def _routine(draw, header: str, footer: str, scope: Scope, handler: bool = True,
+             local_data: tuple[str, ...] = ()) -> str:
+    body = draw(statements(scope, 2))
+    if scope.labels:
+        body.insert(draw(st.integers(0, len(body))), f"{scope.labels[0]}:")
+    lines = [header, *local_data, *body]
+    if handler and draw(st.booleans()):
+        handler_scope = scope.child()
+        handler_scope.in_handler = True
+        errors = draw(st.sampled_from(("", "", " (ERR_DIVZERO, 55)", " (LONG_JMP_ALL_ERR)")))
+        lines += [f"ERROR{errors}", *draw(statements(handler_scope, 1, (1, 3)))]
+    if handler and not scope.in_function and draw(st.integers(0, 4)) == 0:
+        lines += ["UNDO", "count := count + 1;"]
+    return "\n".join(lines + [footer])
+
+
+@st.composite
+def programs(draw) -> Program:
+    """A module with main, two procedures, a function and a trap, over fixed global data."""
+    scope = global_scope()
+    main_scope = scope.child()
+    if draw(st.booleans()):
+        main_scope.labels = ["again"]
+    work1 = scope.child()
+    work1.procedures = []
+    for rapid_type, name in ((NUM, "a"), (NUM, "b"), (NUM, "c"), (NUM, "opt")):
+        work1.add(rapid_type, name, writable=name != "a")
+    work1.optional = ["opt", "sw", "flagged"]
+    work3 = scope.child()
+    work3.in_function = True
+    work3.procedures = []
+    work3.add(NUM, "x")
+    trap = scope.child()
+    trap.procedures = []
+    setup = draw(st.lists(st.sampled_from((
+        "AliasIO \"DI1\", diStart;", "AliasIO \"DO1\", doLamp;", "CONNECT ir WITH onTick;",
+        "ISignalDI diStart, 1, ir;", "ITimer 1, ir;", "AliasIO \"di2\", diStart;",
+        "BookErrNo ERR_MINE;")),
+        max_size=4))
+    routines = [
+        draw(_routine("PROC main()", "ENDPROC", main_scope,
+                      local_data=("VAR num i;", "VAR num k;", *setup))),
+        draw(_routine("PROC work1(num a, VAR num b, INOUT num c \\num opt | switch sw, "
+                      "\\switch flagged)", "ENDPROC", work1)),
+        draw(_routine("PROC work2(num m{*})", "ENDPROC", scope.child(), handler=False)),
+        draw(_routine("FUNC num work3(num x)", "ENDFUNC", work3)),
+        draw(_routine("TRAP onTick", "ENDTRAP", trap)),
+    ]
+    text = "MODULE Fuzz\n" + "\n".join(GLOBAL_DATA + tuple(routines)) + "\nENDMODULE\n"
+    atoms = tuple(draw(st.lists(_atom(scope), min_size=1, max_size=3)))
+    return Program(text, atoms)
+
+
+@st.composite
+def _atom(draw, scope: Scope) -> str:
+    template = draw(st.sampled_from(ATOM_TEMPLATES))
+    return template.format(bool=draw(st.sampled_from(scope.readable[BOOL][:2])),
+                           num=draw(st.sampled_from(("0", "1", "2.5"))))
