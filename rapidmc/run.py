@@ -15,6 +15,7 @@ from typing import Optional, TextIO
 
 from .diagnostics import (BAD_INPUT_VALUE, INPUT_EXHAUSTED, RUNTIME_ERROR, STEP_LIMIT,
                           Diagnostic, error, render)
+from .commands.quoting import one_line
 from .semantics.errors import errno_name
 from .semantics.machine import Machine
 from .semantics.program import Program
@@ -143,4 +144,4 @@ def fault_diagnostic(program: Program, state: State) -> Diagnostic:
     message = f"uncaught RAPID error {name} (ERRNO {format_num(float(fault.errno))})"
     if detail:
         message += f": {detail}"
-    return Diagnostic(RUNTIME_ERROR, message, span)
+    return Diagnostic(RUNTIME_ERROR, one_line(message), span)   # RAPID strings may hold "\0A"

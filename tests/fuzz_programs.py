@@ -21,7 +21,7 @@ VALUE_TYPES = (NUM, DNUM, BOOL, STRING, POS, ORIENT, RECORD)
 NUM_LITERALS = ("0", "1", "2", "3", "-1", "0.5", "10", "100", "1E3", "3.4E38", "1E-7",
                 "8388608", "4294967295")
 STRING_LITERALS = ('""', '"a"', '"hello"', '"12.5"', '"TRUE"', '"[1,2,3]"', '"x""y"',
-                   '"\\\\"', '"' + "z" * 80 + '"')
+                   '"\\\\"', '"' + "z" * 80 + '"', '"line\\0Anext"', '"\\0D\\09\\FF"')
 ARITHMETIC = ("+", "-", "*", "/", "DIV", "MOD")
 RELATIONS = ("<", "<=", "=", ">", ">=", "<>")
 LOGICAL = ("AND", "OR", "XOR")
@@ -234,8 +234,8 @@ def _call(draw, scope: Scope, depth: int) -> str:
     if scope.procedures:
         calls.extend(draw(st.sampled_from(scope.procedures)).format(
             num=num(), var=variable, bool=draw(expression(scope, BOOL, 1))) for _ in range(2))
-    calls.append(f"%\"work\" + NumToStr({num()}, 0)% ;" if draw(st.booleans()) else
-                 "CallByVar \"work\", 1;")
+    calls += [f"%\"work\" + NumToStr({num()}, 0)%;", "CallByVar \"work\", 1;",
+              f"%{draw(expression(scope, STRING, 1))}%;", f"CallByVar strVar, {num()};"]
     return draw(st.sampled_from(calls))
 
 

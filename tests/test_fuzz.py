@@ -145,7 +145,8 @@ def test_hoa_reader_on_mutated_automata_gives_diagnostics_only(seed, count, nois
 
 OPTION_VALUES = ("1", "0", "-1", "1.5", "nan", "inf", "-inf", "1e400", "", ",", "1,,2", "x",
                  "DI1=1", "di1=nan", "di1=", "=1", "di1=1=2", "AI1=0,5", "ai1=nan,inf",
-                 "do1=1", "nothing=1", "é=1", "di1= 1", " ", "1 2", "0x10", "1_000")
+                 "do1=1", "nothing=1", "é=1", "di1= 1", " ", "1 2", "0x10", "1_000", "\n",
+                 "di1=1\n", "a\x1eb", "main\n")
 
 
 @fuzz_settings(150)

@@ -31,7 +31,7 @@ from ..properties import (AtomCompiler, Property, check_unique, parse_property,
 from ..semantics.link import build
 from ..semantics.step import CheckConfig, EnvironmentFault
 from ..syntax import load_program
-from .quoting import quoted
+from .quoting import one_line, quoted, routine_name
 
 DEFAULT_MAX_STATES = 1_000_000
 BUILTIN_RUNTIME = "no_runtime_error"
@@ -49,7 +49,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="an inline property (repeatable)")
     parser.add_argument("--env", action="append", default=[], metavar="FILE",
                         help="environment (plant) model module in RAPID (repeatable)")
-    parser.add_argument("--entry", default="main", metavar="NAME",
+    parser.add_argument("--entry", default="main", metavar="NAME", type=routine_name,
                         help="procedure to start from (default: main)")
     parser.add_argument("--max-states", type=int, default=DEFAULT_MAX_STATES, metavar="N",
                         help=f"bound on stored states per search (default {DEFAULT_MAX_STATES:,})")
@@ -167,7 +167,7 @@ def _check(args: argparse.Namespace) -> int:
             _replayed(system, result)
             results.append(PropertyResult(prop.name, prop.text, result))
     except EnvironmentFault as exc:
-        raise error(ENVIRONMENT, f"environment model: {exc}") from None
+        raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
     verdicts = [r.result.verdict for r in results]
     exit_code = EXIT_VIOLATED if VIOLATED in verdicts else (
         EXIT_UNKNOWN if UNKNOWN in verdicts else EXIT_OK)

@@ -16,7 +16,7 @@ from ..backup import add_program_arguments, load_tasks, resolve_program_files
 from ..semantics.link import build
 from ..semantics.state import FAILED
 from ..syntax import load_program
-from .quoting import quoted
+from .quoting import quoted, routine_name
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -24,7 +24,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="RAPID module files (.mod, .modx, .sys, .prg), .pgf program files, "
                              "or a controller backup folder")
     add_program_arguments(parser)
-    parser.add_argument("--entry", default="main", metavar="NAME",
+    parser.add_argument("--entry", default="main", metavar="NAME", type=routine_name,
                         help="procedure to start from (default: main)")
     parser.add_argument("--io", action="append", default=[], metavar="NAME=VALUE",
                         help="value of an input signal for the whole run (repeatable; "
