@@ -18,7 +18,7 @@ from hypothesis import strategies as st
 NUM, DNUM, BOOL, STRING, POS, ORIENT, RECORD = "num", "dnum", "bool", "string", "pos", \
     "orient", "part"
 VALUE_TYPES = (NUM, DNUM, BOOL, STRING, POS, ORIENT, RECORD)
-NUM_LITERALS = ("0", "1", "2", "3", "-1", "0.5", "10", "100", "1E3", "3.4E38", "1E-7",
+NUM_LITERALS = ("0", "1", "2", "3", "(-1)", "0.5", "10", "100", "1E3", "3.4E38", "1E-7",
                 "8388608", "4294967295")
 STRING_LITERALS = ('""', '"a"', '"hello"', '"12.5"', '"TRUE"', '"[1,2,3]"', '"x""y"',
                    '"\\\\"', '"' + "z" * 80 + '"', '"line\\0Anext"', '"\\0D\\09\\FF"')
@@ -206,7 +206,7 @@ def statements(draw, scope: Scope, depth: int, count: tuple[int, int] = (1, 6)) 
 
 @st.composite
 def statement(draw, scope: Scope, depth: int) -> str:
-    kinds = ["assign", "assign", "call", "call", "write", "read", "wait", "io", "interrupt",
+    kinds = ["predefined", "predefined", "assign", "assign", "call", "call", "write", "read", "wait", "io", "interrupt",
              "raise", "misc"]
     if depth > 0:
         kinds += ["if", "compact_if", "for", "while", "test"]
@@ -367,7 +367,82 @@ def _test(draw, scope: Scope, depth: int) -> str:
     return "\n".join(lines + ["ENDTEST"])
 
 
-STATEMENTS = {"assign": _assign, "call": _call, "write": _write, "read": _read, "wait": _wait,
+# ------------------------------------------------------- predefined routines
+
+#: arguments for parameters whose type the expression generator does not build
+DATA_OF_TYPE = {"robtarget": ("target", "CRobT()", "Offs(target, 1, 2, 3)"),
+                "jointtarget": ("joints", "CJointT()"), "pose": ("frame", "[posVar, ori]"),
+                "speeddata": ("v100", "vmax", "[1, 2, 3, 4]"), "zonedata": ("z10", "fine"),
+                "tooldata": ("tool0",), "wobjdata": ("wobj0",),
+                "loaddata": ("load0", "ld"), "stoppointdata": ("sp",), "taskid": ("tid",),
+                "triggdata": ("trig",), "clock": ("clk",), "errnum": ("ERR_MINE",),
+                "intnum": ("ir",), "signaldi": ("diStart", "DI1"), "signaldo": ("doLamp", "DO1"),
+                "signalao": ("AO1",), "signalgi": ("GI1",), "signalgo": ("GO1",),
+                "opcalc": ("LT", "EQ"), "confdata": ("[0, 0, 0, 0]",)}
+#: parameter types drawn as expressions of one of the generator's types
+EXPRESSION_TYPE = {"num": NUM, "anynum": NUM, "dionum": NUM, "byte": NUM, "symnum": NUM,
+                   "opnum": NUM, "identno": NUM, "dnum": DNUM, "bool": BOOL, "string": STRING,
+                   "stringdig": STRING, "pos": POS, "orient": ORIENT}
+
+
+def _predefined_entries():
+    """Predefined routines whose every parameter the generator can fill, by kind."""
+    from rapidmc.semantics.builtins.registry import all_entries
+    known = set(DATA_OF_TYPE) | set(EXPRESSION_TYPE) | {"anytype", "switch"}
+    usable = [entry.signature for entry in all_entries()
+              if entry.signature.key not in ("PRESENT", "DIM") and all(p.type_name in known and not p.array_rank
+                     for p in entry.signature.parameters)]
+    return sorted(usable, key=lambda signature: signature.key)
+
+
+PREDEFINED = _predefined_entries()
+
+
+@st.composite
+def _argument(draw, scope: Scope, parameter) -> str:
+    type_name = parameter.type_name
+    if type_name == "anytype":
+        type_name = draw(st.sampled_from(("num", "bool", "string", "pos", "robtarget")))
+    rapid_type = EXPRESSION_TYPE.get(type_name)
+    if rapid_type is None:
+        return draw(st.sampled_from(DATA_OF_TYPE[type_name]))
+    if parameter.by_reference:
+        names = scope.writable.get(rapid_type) or scope.readable.get(rapid_type) or ["numVar"]
+        return draw(st.sampled_from(names))
+    return draw(expression(scope, rapid_type, 1))
+
+
+@st.composite
+def _arguments(draw, scope: Scope, signature) -> str:
+    """Required arguments in order (first of each required group), some optional ones."""
+    parts, groups_used = [], set()
+    for parameter in signature.parameters:
+        group = parameter.alternative_group
+        if group is not None and group in groups_used:
+            continue
+        if parameter.optional:
+            if draw(st.integers(0, 2)) != 0:
+                continue
+            value = "" if parameter.is_switch else ":=" + draw(_argument(scope, parameter))
+            parts.append(f" \\{parameter.name}{value}")
+        else:
+            parts.append((", " if parts else "") + draw(_argument(scope, parameter)))
+        if group is not None:
+            groups_used.add(group)
+    return "".join(parts).lstrip(", ")
+
+
+@st.composite
+def _predefined(draw, scope: Scope, depth: int) -> str:
+    """A call of any predefined routine the generator can fill, with random arguments."""
+    signature = draw(st.sampled_from(PREDEFINED))
+    arguments = draw(_arguments(scope, signature))
+    if signature.kind == "function":
+        return f"strVar := ValToStr({signature.name}({arguments}));"
+    return f"{signature.name} {arguments};".replace(" ;", ";")
+
+
+STATEMENTS = {"predefined": _predefined, "assign": _assign, "call": _call, "write": _write, "read": _read, "wait": _wait,
               "io": _io, "interrupt": _interrupt, "raise": _raise, "misc": _misc, "if": _if,
               "compact_if": _compact_if, "for": _for, "while": _while, "test": _test}
 
@@ -398,6 +473,8 @@ GLOBAL_DATA = (
     "VAR signaldi diStart;",
     "VAR signaldo doLamp;",
     "VAR string sigName := \"DI1\";",
+    "VAR pose frame;", "VAR jointtarget joints;", "VAR triggdata trig;", "VAR loaddata ld;",
+    "VAR stoppointdata sp;", "VAR taskid tid;", "VAR tooldata tl;", "VAR wobjdata wo;",
     "VAR robtarget target := [[100, 0, 50], [1, 0, 0, 0], [0, 0, 0, 0],"
     " [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];",
 )
@@ -408,7 +485,7 @@ GLOBAL_SCOPE = {NUM: ["numVar", "count", "arr{1}", "grid{2, 3}", "rec.id", "leve
 #: user procedures and how to call them (filled in with a num, a num variable and a bool)
 PROC_CALLS = ("work1 {num}, {var}, {var};", "work1 {num}, {var}, {var} \\opt:={num};",
               "work1 {num}, {var}, {var} \\sw \\flagged;", "work2 arr;",
-              "work1 {num}, {num}, {var};", "work1 {bool}, {var}, {var};")
+              "work1 {bool}, {var}, {var};")
 ATOM_TEMPLATES = ("{bool}", "\"{bool}\"", "\"numVar > {num}\"", "\"DOutput(doLamp) = 1\"",
                   "\"DOutput(DO1) = 1\"", "\"DInput(DI1) = 0\"", "\"count = {num}\"",
                   "\"arr{{2}} < {num}\"", "\"rec.ok\"", "unknownAtom", "\"StrLen(strVar) = 1\"")
@@ -461,7 +538,9 @@ def programs(draw) -> Program:
     work3.add(NUM, "x")
     trap = scope.child()
     trap.procedures = []
-    setup = draw(st.lists(st.sampled_from((
+    setup = ["AliasIO \"DI1\", diStart;", "AliasIO \"DO1\", doLamp;",
+             "CONNECT ir WITH onTick;"][:draw(st.integers(0, 3))]
+    setup += draw(st.lists(st.sampled_from((
         "AliasIO \"DI1\", diStart;", "AliasIO \"DO1\", doLamp;", "CONNECT ir WITH onTick;",
         "ISignalDI diStart, 1, ir;", "ITimer 1, ir;", "AliasIO \"di2\", diStart;",
         "BookErrNo ERR_MINE;")),

@@ -97,8 +97,13 @@ def test_generated_programs_parse_run_and_check_with_diagnostics_only(program, d
     formula = data.draw(formula_texts(program.atoms))
     assert_acceptable(invoke(["parse", path]))
     assert_acceptable(invoke(RUN + [path], STDIN))
-    assert_acceptable(invoke(CHECK + ["--formula", "p: G F true", "--formula", f"q: {formula}",
-                                      path], STDIN))
+    assert_acceptable(invoke(CHECK + domains(program.text) + [
+        "--formula", "p: G F true", "--formula", f"q: {formula}", path], STDIN))
+
+
+def domains(text: str) -> list[str]:
+    """--input-domain options for the free analog and group inputs the program names."""
+    return [f"--input-domain={name}=0,1" for name in ("AI1", "GI1") if name in text]
 
 
 @fuzz_settings(300)
