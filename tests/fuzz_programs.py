@@ -158,7 +158,7 @@ def _bool_expression(draw, scope: Scope, depth: int) -> str:
         return f"Present({draw(st.sampled_from(scope.optional))})"
     if choice == 4:
         return draw(st.sampled_from(("rec.ok", "StrToVal(\"3\", numVar)", "IsPers(numVar)",
-                                     "OpMode() = OP_AUTO", "ValidIO(diStart)")))
+                                     "(OpMode() = OP_AUTO)", "ValidIO(diStart)")))
     if choice == 5:
         return f"({draw(expression(scope, POS, depth))} = {draw(expression(scope, POS, depth))})"
     return draw(_literal(BOOL))

@@ -116,6 +116,53 @@ def test_mutated_corpus_files_give_diagnostics_only(source, seed, count):
         assert_acceptable(invoke(argv, STDIN))
 
 
+@fuzz_settings(100)
+@given(st.binary(max_size=200), st.sampled_from((".mod", ".sys", ".pgf", ".prg", ".txt")))
+def test_random_bytes_in_a_program_file_give_diagnostics_only(content, suffix):
+    path = WORK / ("bytes" + suffix)
+    path.write_bytes(content)
+    for argv in (["parse", str(path)], RUN + [str(path)]):
+        assert_acceptable(invoke(argv, STDIN))
+
+
+PGF_LINES = ('<?xml version="1.0" encoding="ISO-8859-1" ?>', "<Program>", "</Program>",
+             "<Module>small.mod</Module>", "<Module>missing.mod</Module>", "<Module></Module>",
+             "<Module>../small.mod</Module>", "<Module>small.mod", "<Program", "&amp;", "\x00")
+
+
+@fuzz_settings(100)
+@given(st.lists(st.sampled_from(PGF_LINES), max_size=6))
+def test_program_files_with_random_lines_give_diagnostics_only(lines):
+    small_program()
+    path = write("program.pgf", "\n".join(lines))
+    for argv in (["parse", path], RUN + [path], CHECK + ["--formula", "p: G F done", path]):
+        assert_acceptable(invoke(argv, STDIN))
+
+
+ROOT = Path(__file__).resolve().parent.parent
+CASE_STUDIES = (("case_studies/door/door_race.mod", "case_studies/door/plant.mod", "specs/door.ltl"),
+                ("case_studies/sorter/sorter_b.mod", "case_studies/sorter/plant.mod",
+                 "specs/sorter.ltl"))
+
+
+@fuzz_settings(60)
+@given(st.sampled_from(CASE_STUDIES), st.sampled_from((0, 1, 2)), st.integers(0, 2**32 - 1),
+       st.integers(1, 3))
+def test_case_studies_with_a_mutated_program_plant_or_spec_give_diagnostics_only(
+        case, which, seed, count):
+    """``check PROGRAM --env PLANT --ltl SPEC`` with one of the three files mutated."""
+    names = ("program.mod", "plant.mod", "spec.ltl")
+    paths = []
+    for index, (source, name) in enumerate(zip(case, names)):
+        text = (ROOT / source).read_text(encoding="latin-1")
+        if index == which:
+            text = mutate(text, random.Random(seed), count)
+        paths.append(write(name, text))
+    program, plant, spec = paths
+    assert_acceptable(invoke(["check", "--max-states", "500", "--max-seconds", "5", "--quiet",
+                              program, "--env", plant, "--ltl", spec]))
+
+
 @fuzz_settings(300)
 @given(ltl_noise)
 def test_ltl_command_on_random_text_gives_diagnostics_only(text):

@@ -180,6 +180,9 @@ class RoutineCompiler:
             if root_symbol is not None and root_symbol.kind == CONSTANT:
                 raise error(ASSIGN_CONST, f"cannot assign to constant '{root_expr.name.text}'",
                             target.span)
+            if root_symbol is None and root_expr.name.key in ("ERRNO", "INTNO"):
+                raise error(ASSIGN_CONST, f"{root_expr.name.text} is read-only (set by the "
+                            "system)", target.span)
         ref_fn, target_type, symbol = compiler.reference(target, "assigned")
         root = symbol
         if root.kind == CONSTANT or root.storage in ("CONST",):
