@@ -488,7 +488,9 @@ PROC_CALLS = ("work1 {num}, {var}, {var};", "work1 {num}, {var}, {var} \\opt:={n
               "work1 {bool}, {var}, {var};")
 ATOM_TEMPLATES = ("{bool}", "\"{bool}\"", "\"numVar > {num}\"", "\"DOutput(doLamp) = 1\"",
                   "\"DOutput(DO1) = 1\"", "\"DInput(DI1) = 0\"", "\"count = {num}\"",
-                  "\"arr{{2}} < {num}\"", "\"rec.ok\"", "unknownAtom", "\"StrLen(strVar) = 1\"")
+                  "\"arr{{2}} < {num}\"", "\"rec.ok\"", "unknownAtom",
+                  "\"InRoutine(work1)\"", "\"AtLabel(again)\"", "\"AtLine({num})\"",
+                  "\"Ended() OR Failed()\"", "\"AtTarget(target)\"", "\"InRoutine(onTick)\"", "\"StrLen(strVar) = 1\"")
 
 
 def global_scope() -> Scope:

@@ -91,14 +91,15 @@ ltl_noise = st.one_of(st.lists(st.sampled_from(LTL_TOKENS), max_size=12).map(" "
 # ---------------------------------------------------------------- the tests
 
 @fuzz_settings(120)
-@given(programs(), st.data())
-def test_generated_programs_parse_run_and_check_with_diagnostics_only(program, data):
+@given(programs(), st.data(), st.sampled_from(("text", "text", "json", "sarif")))
+def test_generated_programs_parse_run_and_check_with_diagnostics_only(program, data, style):
     path = write("generated.mod", program.text)
     formula = data.draw(formula_texts(program.atoms))
     assert_acceptable(invoke(["parse", path]))
     assert_acceptable(invoke(RUN + [path], STDIN))
     assert_acceptable(invoke(CHECK + domains(program.text) + [
-        "--formula", "p: G F true", "--formula", f"q: {formula}", path], STDIN))
+        "--format", style, "--formula", "p: G F true", "--formula", f"q: {formula}", path],
+        STDIN))
 
 
 def domains(text: str) -> list[str]:
