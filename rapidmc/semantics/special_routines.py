@@ -23,7 +23,8 @@ from .machine import ABSENT, GLOBAL
 from .scope import LOCAL_DATA
 from .state import ENDED, Frame, Interrupt, Interrupts
 from .timing import advance_to, next_event, schedule
-from .types import (BOOL, DNUM, NUM, RECORD, SEMI_VALUE, STRING, ArrayType, RapidType)
+from .types import (BOOL, DNUM, NON_VALUE, NUM, RECORD, SEMI_VALUE, STRING, ArrayType,
+                    RapidType)
 
 FUNCTIONS: dict[str, Callable] = {}
 PROCEDURES: dict[str, Callable] = {}
@@ -171,6 +172,10 @@ def _str_to_val(calls, compiler, call, entry) -> Compiled:
     ref_fn = arguments.fn("Val")
     target = _arg_expr(call, "Val", 1)
     _, target_type, _ = compiler.reference(target, "written by StrToVal")
+    element = target_type.element if isinstance(target_type, ArrayType) else target_type
+    if isinstance(element, RapidType) and element.kind in (SEMI_VALUE, NON_VALUE):
+        raise error(TYPE_MISMATCH, f"StrToVal writes value data, not {element.name}",
+                    target.span)
 
     def str_to_val(m):
         parsed = parse_literal(text_fn(m), target_type)
