@@ -30,9 +30,3 @@ def test_the_main_job_files_exist():
     files = [word for word in check if not word.startswith("--")]
     assert files and all((ROOT / f).exists() for f in files), files
 
-
-def test_usage_errors_are_one_diagnostic_line_even_with_newlines_in_arguments(capsys):
-    from rapidmc.cli import main
-    assert main(["check", "prog.mod", "--no-such-option", "x\ny"]) == 2
-    err = capsys.readouterr().err.strip()
-    assert len(err.splitlines()) == 1 and err.endswith("[RMC601]") and "x\\ny" in err
