@@ -20,8 +20,8 @@ from .semantics.errors import errno_name
 from .semantics.machine import Machine
 from .semantics.program import Program
 from .semantics.state import ENDED, FAILED, RUNNING, State
-from .semantics.step import (Chooser, EnvironmentFault, execute_step, signal_edges,
-                             start_state)
+from .semantics.step import (Chooser, EnvironmentFault, execute_step, run_instruction,
+                             signal_edges, start_state)
 from .semantics.timing import advance_to, next_event, schedule
 from .semantics.values import format_num
 
@@ -87,12 +87,17 @@ def run_program(program: Program, io_values: dict, stdin: TextIO, stdout: TextIO
     output = m.output
     steps = 0
     idle = 0                             # steps in a row that changed nothing
+    plain = program.environment_react is None and not program.task_entries
     while m.status == RUNNING:
         frames = m.frames
         depth, store, io, tasks = len(frames), m.store, m.io, m.tasks
         top = frames[-1] if frames else None
         m.waiting = False
-        span = execute_step(m)
+        interrupts = m.interrupts
+        if plain and not (interrupts.table or interrupts.scheduled or interrupts.pending):
+            span = run_instruction(m)    # all that execute_step would do here
+        else:
+            span = execute_step(m)
         if output:
             stdout.write("".join(line + "\n" for line in output))
             stdout.flush()
