@@ -19,7 +19,7 @@ from .semantics.program import (ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE,
 from .semantics.special_routines import format_typed, value_kind
 from .semantics.state import ENDED, FAILED, RUNNING, State
 from .semantics.step import CheckConfig, ScriptChooser, initial_states, successors
-from .semantics.values import format_num
+from .semantics.values import format_num, format_value
 from .semantics.errors import errno_name
 
 
@@ -149,13 +149,8 @@ class RapidDescriber:
 
 
 def _choice_text(value) -> str:
-    if value is True:
-        return "TRUE"
-    if value is False:
-        return "FALSE"
-    if isinstance(value, float):
-        return format_num(value)
-    return str(value)
+    """A chosen value as RAPID writes it; names (tasks, outcomes, messages) as they are."""
+    return value if isinstance(value, str) else format_value(value)
 
 
 def with_final_loop(system: RapidSystem, result: SearchResult) -> SearchResult:

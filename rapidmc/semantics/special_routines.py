@@ -522,19 +522,9 @@ def _tp_read(calls, compiler, call, entry, kind: str):
     return Action(call.span, read)
 
 
-@procedure("TPReadNum")
-def _tp_read_num(calls, compiler, call, entry):
-    return _tp_read(calls, compiler, call, entry, "TPReadNum")
-
-
-@procedure("TPReadDnum")
-def _tp_read_dnum(calls, compiler, call, entry):
-    return _tp_read(calls, compiler, call, entry, "TPReadDnum")
-
-
-@procedure("TPReadFK")
-def _tp_read_fk(calls, compiler, call, entry):
-    return _tp_read(calls, compiler, call, entry, "TPReadFK")
+@procedure("TPReadNum", "TPReadDnum", "TPReadFK")
+def _tp_read_any(calls, compiler, call, entry):
+    return _tp_read(calls, compiler, call, entry, entry.signature.name)
 
 
 # ===========================================================================
@@ -644,31 +634,19 @@ def _move(calls, compiler, call, entry, target_key: str, joint: bool = False,
         m.robot = tuple(robot)
         if signal:
             _write_signal(m, signal_fn(m), _dionum(signal_value(m)))
-        m.goto(instruction.next)
         if sync:
             name = proc_name(m)
             callee = candidates.get(name.upper())
             if callee is None:
                 raise RapidError("ERR_REFUNKPRC", f"no procedure named '{name}' without parameters")
-            # the caller continues after the move once the procedure returns
-            frame = m.frames[-1]
-            m.frames[-1] = frame._replace(pc=_previous_pc(m, instruction))
-            enter_routine(m, callee, [])
+            enter_routine(m, callee, [])     # the caller goes on after the move when it returns
+        else:
+            m.goto(instruction.next)
     return ControlAction(call.span, move)
 
 
-def _previous_pc(m, instruction) -> int:
-    code = m.program.routines[m.frames[-1].routine].code
-    return code.index(instruction)
-
-
-@procedure("MoveJ", "MoveL")
-def _move_jl(calls, compiler, call, entry):
-    return _move(calls, compiler, call, entry, "ToPoint")
-
-
-@procedure("MoveC")
-def _move_c(calls, compiler, call, entry):
+@procedure("MoveJ", "MoveL", "MoveC")
+def _move_to_point(calls, compiler, call, entry):
     return _move(calls, compiler, call, entry, "ToPoint")
 
 
