@@ -162,7 +162,7 @@
         step.was[name]]), "nothing changed");
     const output = player.steps.slice(0, player.position + 1)
       .filter((s) => s.output !== null).map((s) => s.output);
-    $("flexpendant").textContent = output.length ? output.join("\n") : "(nothing written yet)";
+    $("flexpendant").textContent = output.length ? output.join("") : "(nothing written yet)";
     $("flexpendant").classList.toggle("empty", !output.length);
   }
 
