@@ -32,8 +32,8 @@ CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 CHROMEDRIVER = shutil.which("chromedriver")
 
 
-def rapidmc(*arguments: str) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "rapidmc", *arguments], cwd=ROOT,
+def rapidmc(*arguments: str, cwd: Path = ROOT) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "rapidmc", *arguments], cwd=cwd,
                           capture_output=True, text=True, timeout=300)
 
 
@@ -355,3 +355,22 @@ def test_without_a_violation_the_page_shows_only_the_table(browser, tmp_path):
     page = Page(browser, path)
     assert not page.find("#counterexample").is_displayed()
     assert page.find("#summary").text == "3 properties: 3 hold, 0 violated, 0 unknown"
+
+
+def test_with_several_tasks_the_stack_shows_the_running_task_first(browser, tmp_path):
+    from test_tasks import COUNTER as TASK_COUNTER
+    require_browser()
+    for name in "ab":
+        (tmp_path / f"{name}.mod").write_text(TASK_COUNTER.format(n=name.upper()))
+    path = tmp_path / "tasks.html"
+    done = rapidmc("check", "a.mod", "--add-task", "b.mod", "--formula",
+                   'all_counted: F G "count = 4"', "--quiet", "--format", "json",
+                   "--html", str(path), cwd=tmp_path)
+    steps = violated(json.loads(done.stdout), "all_counted")
+    in_b = next(s for s in steps if s["location"] and s["location"]["file"] == "b.mod")
+    page = Page(browser, path)
+    page.click(f'#timeline rect.column[data-step="{in_b["index"]}"]')
+    shown = page.shown()
+    assert shown["file"] == "b.mod" and shown["lineText"] == in_b["source"]
+    assert shown["stack"][0] == f"task 2 (b): main  b.mod:{in_b['location']['line']}"
+    assert shown["stack"][1].startswith("main task: main  a.mod:")

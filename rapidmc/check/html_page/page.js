@@ -154,7 +154,7 @@
       (here ? where(here.file, here.line) : "");
     $("step-source").textContent = step.source || "";
     $("step-note").textContent = stepNote(step, trace);
-    showStack(step.stack);
+    showStack(step);
     showValues($("inputs"), Object.entries(step.inputs).map(([name, value]) => [name, value, null]),
       "none");
     showValues($("changes"), Object.entries(step.changes).map(([name, value]) =>
@@ -178,21 +178,49 @@
     return "";
   }
 
-  function innermost(step) {
-    return step.stack.length ? step.stack[step.stack.length - 1] : null;
+  // The stack holds every task's routines (task by task, outermost first); the running one
+  // is the task whose innermost routine is at the step's line (at the start: the first task).
+  function tasks(stack) {
+    const groups = [];
+    for (const frame of stack) {
+      const last = groups[groups.length - 1];
+      if (last && last[0].task === frame.task) last.push(frame);
+      else groups.push([frame]);
+    }
+    return groups;
   }
 
-  function showStack(stack) {
+  function runningTask(step) {
+    const groups = tasks(step.stack);
+    const here = step.location;
+    const found = here && groups.find((group) => {
+      const top = group[group.length - 1];
+      return top.file === here.file && top.line === here.line;
+    });
+    return found || groups[0] || [];
+  }
+
+  function innermost(step) {
+    const group = runningTask(step);
+    return group.length ? group[group.length - 1] : null;
+  }
+
+  function showStack(step) {
     const list = $("call-stack");
     list.textContent = "";
-    for (const frame of stack.slice().reverse()) {
-      const task = frame.task ? frame.task + ": " : "";
-      const item = element("li", null, task + frame.routine + "  " + where(frame.file, frame.line));
-      item.title = "show " + where(frame.file, frame.line);
-      item.addEventListener("click", () => showLine(frame.file, frame.line));
-      list.appendChild(item);
+    const running = runningTask(step);
+    const others = tasks(step.stack).filter((group) => group !== running);
+    for (const group of [running, ...others]) {
+      for (const frame of group.slice().reverse()) {
+        const task = frame.task ? frame.task + ": " : "";
+        const item = element("li", group === running ? null : "other-task",
+          task + frame.routine + "  " + where(frame.file, frame.line));
+        item.title = "show " + where(frame.file, frame.line);
+        item.addEventListener("click", () => showLine(frame.file, frame.line));
+        list.appendChild(item);
+      }
     }
-    if (!stack.length) list.appendChild(element("li", "note", "no active routine"));
+    if (!step.stack.length) list.appendChild(element("li", "note", "no active routine"));
   }
 
   function showValues(table, rows, empty) {
@@ -270,7 +298,7 @@
     const here = step.location || innermost(step);
     if (!here || !files.has(here.file)) return;
     const view = showFile(here.file);
-    for (const frame of step.stack.slice(0, -1)) {
+    for (const frame of runningTask(step).slice(0, -1)) {
       mark(frame.file === here.file ? view.lines[frame.line - 1] : null, "caller");
     }
     const current = view.lines[here.line - 1];
