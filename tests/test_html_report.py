@@ -20,8 +20,11 @@ from pathlib import Path
 
 import pytest
 
+from rapidmc.check import check_property
 from rapidmc.check.html import timeline_rows
-from rapidmc.check.trace import Change, TraceStep
+from rapidmc.check.trace import CallFrame, Change, TraceStep, build_trace
+from test_engine_models import NOT_INFINITELY_OFTEN_P
+from test_report import Cell, CellDescriber
 
 ROOT = Path(__file__).resolve().parent.parent
 SORTER = ["case_studies/sorter/sorter_b.mod", "--env", "case_studies/sorter/plant.mod",
@@ -100,6 +103,23 @@ def test_timeline_values_accumulate_and_leave_gaps_where_an_item_is_gone():
              TraceStep(3, "transition", None, (Change("x", None, "2"),)),
              TraceStep(4, "transition", None, ())]
     assert timeline_rows(steps) == [{"name": "x", "kind": "num", "values": ["1", None, "2", "2"]}]
+
+
+class CellWithStack(CellDescriber):
+    """The toy cell of test_report, whose one routine is at line 11 + pc."""
+
+    def describe_stack(self, state):
+        return (CallFrame("main", "cell.mod", 11 + state[0]),)
+
+
+def test_each_step_carries_the_stack_its_statement_runs_in():
+    result = check_property(Cell(), NOT_INFINITELY_OFTEN_P, lambda state: int(state[1] == 2))
+    trace = build_trace(result, CellWithStack())
+    steps = [*trace.prefix, *trace.cycle, trace.closing]
+    assert steps[0].stack == (CallFrame("main", "cell.mod", 11),)     # where the run starts
+    assert all(step.stack == (CallFrame("main", "cell.mod", step.transition.line),)
+               for step in steps[1:])
+    assert all(step.stack == () for step in build_trace(result, CellDescriber()).prefix)
 
 
 @pytest.mark.parametrize("target, why", [("no-such-folder/report.html", "does not exist"),
