@@ -190,8 +190,7 @@
     return groups;
   }
 
-  function runningTask(step) {
-    const groups = tasks(step.stack);
+  function runningTask(step, groups = tasks(step.stack)) {
     const here = step.location;
     const found = here && groups.find((group) => {
       const top = group[group.length - 1];
@@ -208,8 +207,9 @@
   function showStack(step) {
     const list = $("call-stack");
     list.textContent = "";
-    const running = runningTask(step);
-    const others = tasks(step.stack).filter((group) => group !== running);
+    const groups = tasks(step.stack);
+    const running = runningTask(step, groups);
+    const others = groups.filter((group) => group !== running);
     for (const group of [running, ...others]) {
       for (const frame of group.slice().reverse()) {
         const task = frame.task ? frame.task + ": " : "";
