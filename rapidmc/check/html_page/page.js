@@ -84,6 +84,10 @@
       row.appendChild(element("td", "number", stats.transitions.toLocaleString("en")));
       row.appendChild(element("td", "number", stats.max_depth.toLocaleString("en")));
       row.appendChild(element("td", "number", seconds(stats.seconds)));
+      row.title = "states stored " + stats.product_states + ", program states " +
+        stats.model_states + ", transitions " + stats.transitions + ", deepest path " +
+        stats.max_depth + ", " + stats.states_per_second + " states/s, states without successor " +
+        stats.deadlocks;
       const action = element("td");
       if (property.trace) {
         const button = element("button", "show-trace", "counterexample");
