@@ -100,6 +100,7 @@ STATE_LIMIT = _code("RMC501", "state-limit", "the search reached --max-states or
 DOMAIN = _code("RMC502", "domain", "a nondeterministic input has no finite domain")
 ENVIRONMENT = _code("RMC503", "environment", "the environment model is invalid")
 TRACE_REPLAY = _code("RMC504", "trace-replay", "a counterexample did not replay (internal)")
+HTML_OUTPUT = _code("RMC520", "html-output", "the HTML report file cannot be written")
 
 # --- usage (6xx) --------------------------------------------------------------------
 USAGE = _code("RMC601", "usage", "bad command-line usage")
@@ -149,6 +150,12 @@ class SourceCache:
         if lines is None or not 1 <= line <= len(lines):
             return None
         return lines[line - 1]
+
+    @classmethod
+    def lines(cls, file: str) -> Optional[tuple[str, ...]]:
+        """Every line of a remembered file (None when it was never read)."""
+        lines = cls._lines.get(file)
+        return None if lines is None else tuple(lines)
 
 
 def render(diagnostic: Diagnostic) -> str:

@@ -18,6 +18,7 @@ from typing import Optional
 from .. import ast
 from ..check import (HOLDS, UNKNOWN, VIOLATED, Progress, PropertyResult, check_property,
                      find_reachable, format_json, format_text)
+from ..check.html import check_html_target, write_html
 from ..check.sarif import format_sarif, format_sarif_diagnostics
 from ..diagnostics import (AUTOMATON, DOMAIN, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN,
                            EXIT_VIOLATED, TRACE_REPLAY, USAGE, SourceCache, UserError, error,
@@ -58,6 +59,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--format", choices=("text", "json", "sarif"), default="text",
                         help="output format (default: text); sarif: SARIF 2.1.0 for CI and "
                              "code-scanning tools, input errors included")
+    parser.add_argument("--html", metavar="FILE", default=None,
+                        help="also write a self-contained HTML report: verdicts, and each "
+                             "counterexample as a player with the source and a timeline")
     parser.add_argument("--quiet", action="store_true", help="no progress line on stderr")
     parser.add_argument("--tp-answers", default="1,2,3", metavar="LIST",
                         help="answers TPReadNum/TPReadDnum may get (default: 1,2,3)")
@@ -127,6 +131,8 @@ def execute(args: argparse.Namespace) -> int:
 
 
 def _check(args: argparse.Namespace) -> int:
+    if args.html:
+        check_html_target(args.html)
     properties = gather_properties(args)
     automata = _pairs(args.automaton, "--automaton")
     domains = {name.upper(): _numbers(values, "--input-domain")
@@ -171,6 +177,8 @@ def _check(args: argparse.Namespace) -> int:
     verdicts = [r.result.verdict for r in results]
     exit_code = EXIT_VIOLATED if VIOLATED in verdicts else (
         EXIT_UNKNOWN if UNKNOWN in verdicts else EXIT_OK)
+    if args.html:
+        write_html(args.html, results, describer)
     if args.format == "json":
         print(format_json(results, describer))
     elif args.format == "sarif":
