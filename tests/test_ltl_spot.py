@@ -39,8 +39,8 @@ PATTERN_FAMILIES = [("dac", spot.gen.LTL_DAC_PATTERNS, 55), ("eh", spot.gen.LTL_
                     ("sb", spot.gen.LTL_SB_PATTERNS, 27), ("p", spot.gen.LTL_P_PATTERNS, 20),
                     ("hkrss", spot.gen.LTL_HKRSS_PATTERNS, 55)]
 # Built-in over Spot, total states and total (source, target) edges on RANDOM_SETS.
-MAX_STATE_RATIO = 1.54
-MAX_EDGE_RATIO = 2.18
+MAX_STATE_RATIO = 1.16
+MAX_EDGE_RATIO = 1.27
 COMPLEMENT_LIMIT = 25
 
 

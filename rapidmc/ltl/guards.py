@@ -67,3 +67,22 @@ def _product(left: tuple[Cube, ...], right: tuple[Cube, ...]) -> tuple[Cube, ...
 
 def _unique(items: tuple[Cube, ...]) -> tuple[Cube, ...]:
     return tuple(dict.fromkeys(items))
+
+
+def implies(cube: Cube, other: Cube) -> bool:
+    """Whether ``cube`` implies ``other`` (``other`` has a subset of its literals)."""
+    return other[0] & ~cube[0] == 0 and other[1] & ~cube[1] == 0
+
+
+def covered(cube: Cube, others: tuple[Cube, ...] | list[Cube]) -> bool:
+    """Whether every valuation of ``cube`` satisfies one of ``others`` (Shannon splitting)."""
+    relevant = [o for o in others if conjoin(cube, o) is not None]
+    if not relevant:
+        return False
+    if any(implies(cube, o) for o in relevant):
+        return True
+    fixed = cube[0] | cube[1]
+    free = next((o[0] | o[1]) & ~fixed for o in relevant if (o[0] | o[1]) & ~fixed)
+    bit = free & -free
+    return (covered((cube[0] | bit, cube[1]), relevant)
+            and covered((cube[0], cube[1] | bit), relevant))

@@ -3,9 +3,17 @@
 An NNF formula uses only ``Atom``, ``Not(Atom)``, ``TrueF``, ``FalseF``,
 ``And``, ``Or``, ``Next``, ``Until`` and ``Release``: ``G a`` is
 ``false R a``, ``F a`` is ``true U a``, ``a W b`` is ``b R (a | b)`` and
-``a M b`` is ``b U (a & b)``.  The smart constructors fold constants and a
-few idempotent patterns (``F F a``, ``G G a``, ``a U a``) so that automata
-stay small; every rewrite is an LTL equivalence.
+``a M b`` is ``b U (a & b)``.  The smart constructors fold constants and
+rewrite by LTL equivalences so that automata stay small:
+
+* ``a U a``, ``a R a``; ``F(a U b) = F b``, ``G(a R b) = G b``;
+* ``X a & X b = X(a & b)``, ``X a | X b = X(a | b)``, ``F a | F b = F(a | b)``,
+  ``G a & G b = G(a & b)``;
+* pure eventualities ``e`` (``e = F e``: ``F x``, ``G F x``, ``X e``, …) and
+  purely universal formulas ``u`` (``u = G u``) after Etessami and Holzmann:
+  ``a U e = e``, ``a R u = u``, and ``X s = s`` when ``s`` is both (as
+  ``G F x`` and ``F G x`` are), which suspends such subformulas instead of
+  stepping them through ``X``.
 
 Example::
 
@@ -15,6 +23,8 @@ Example::
     'true U (a & false R !b)'
 """
 from __future__ import annotations
+
+from functools import lru_cache
 
 from .syntax import (And, Atom, Equiv, FalseF, Finally, Formula, Globally, Implies, Next, Not,
                      Or, Release, StrongRelease, TrueF, Until, WeakUntil, Xor)
@@ -104,12 +114,30 @@ def _connective(node, neutral: Formula, absorbing: Formula):
     return build
 
 
-and_ = _connective(And, TRUE, FALSE)
-or_ = _connective(Or, FALSE, TRUE)
+_plain_and = _connective(And, TRUE, FALSE)
+_plain_or = _connective(Or, FALSE, TRUE)
+
+
+def and_(a: Formula, b: Formula) -> Formula:
+    if type(a) is Next and type(b) is Next:
+        return next_(and_(a.operand, b.operand))            # X a & X b == X(a & b)
+    if is_always(a) and is_always(b):
+        return release(FALSE, and_(a.right, b.right))        # G a & G b == G(a & b)
+    return _plain_and(a, b)
+
+
+def or_(a: Formula, b: Formula) -> Formula:
+    if type(a) is Next and type(b) is Next:
+        return next_(or_(a.operand, b.operand))             # X a | X b == X(a | b)
+    if is_eventually(a) and is_eventually(b):
+        return until(TRUE, or_(a.right, b.right))            # F a | F b == F(a | b)
+    return _plain_or(a, b)
 
 
 def next_(a: Formula) -> Formula:
-    return a if a in (TRUE, FALSE) else Next(a)
+    if a in (TRUE, FALSE) or is_eventual(a) and is_universal(a):
+        return a
+    return Next(a)
 
 
 def is_eventually(formula: Formula) -> bool:
@@ -120,17 +148,51 @@ def is_always(formula: Formula) -> bool:
     return type(formula) is Release and formula.left == FALSE
 
 
+@lru_cache(maxsize=4096)
+def is_eventual(formula: Formula) -> bool:
+    """A pure eventuality of NNF: ``formula`` is equivalent to ``F formula``."""
+    kind = type(formula)
+    if kind is TrueF or kind is FalseF:
+        return True
+    if kind in (And, Or):
+        return is_eventual(formula.left) and is_eventual(formula.right)
+    if kind is Next:
+        return is_eventual(formula.operand)
+    if kind is Until:
+        return formula.left == TRUE or is_eventual(formula.right)
+    if kind is Release:
+        return is_eventual(formula.left) and is_eventual(formula.right)
+    return False
+
+
+@lru_cache(maxsize=4096)
+def is_universal(formula: Formula) -> bool:
+    """A purely universal formula of NNF: ``formula`` is equivalent to ``G formula``."""
+    kind = type(formula)
+    if kind is TrueF or kind is FalseF:
+        return True
+    if kind in (And, Or):
+        return is_universal(formula.left) and is_universal(formula.right)
+    if kind is Next:
+        return is_universal(formula.operand)
+    if kind is Release:
+        return formula.left == FALSE or is_universal(formula.right)
+    if kind is Until:
+        return is_universal(formula.left) and is_universal(formula.right)
+    return False
+
+
 def until(a: Formula, b: Formula) -> Formula:
-    if b in (TRUE, FALSE) or a == FALSE or a == b:
-        return b
-    if a == TRUE and (is_eventually(b) or is_always(b) and is_eventually(b.right)):
-        return b        # F F x == F x;  F G F x == G F x
+    if b in (TRUE, FALSE) or a == FALSE or a == b or is_eventual(b):
+        return b        # a U e == e: F F x == F x, F G F x == G F x
+    if a == TRUE and type(b) is Until:
+        return until(TRUE, b.right)                           # F(a U b) == F b
     return Until(a, b)
 
 
 def release(a: Formula, b: Formula) -> Formula:
-    if b in (TRUE, FALSE) or a == TRUE or a == b:
-        return b
-    if a == FALSE and (is_always(b) or is_eventually(b) and is_always(b.right)):
-        return b        # G G x == G x;  G F G x == F G x
+    if b in (TRUE, FALSE) or a == TRUE or a == b or is_universal(b):
+        return b        # a R u == u: G G x == G x, G F G x == F G x
+    if a == FALSE and type(b) is Release:
+        return release(FALSE, b.right)                        # G(a R b) == G b
     return Release(a, b)

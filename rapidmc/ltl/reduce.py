@@ -22,13 +22,14 @@ from __future__ import annotations
 
 from .buchi import Buchi, Edge
 from .graph import is_cyclic, strongly_connected_components
+from .simulation import reduce_by_simulation
 
 
 def simplify(automaton: Buchi) -> Buchi:
     """All reductions, repeated while they shrink the automaton."""
     current = prune(simplify_guards(automaton))
     while True:
-        smaller = renumber(simplify_guards(merge_bisimilar(current)))
+        smaller = prune(simplify_guards(reduce_by_simulation(merge_bisimilar(current))))
         if (smaller.state_count, smaller.edge_count()) == (current.state_count,
                                                            current.edge_count()):
             return smaller

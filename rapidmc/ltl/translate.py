@@ -31,6 +31,7 @@ from dataclasses import dataclass
 from typing import Iterable, Sequence
 
 from .buchi import Buchi, Edge
+from .graph import strongly_connected_components
 from .guards import TRUE_CUBE, Cube, conjoin
 from .normal_form import FALSE, TRUE, negation_normal_form
 from .printing import to_text
@@ -155,20 +156,26 @@ def tableau_automaton(formula: Formula, atoms: Sequence[str]) -> GeneralisedBuch
 
 
 def degeneralise(automaton: GeneralisedBuchi, atoms: Sequence[str],
-                 initial_level: int = 0) -> Buchi:
+                 entry_level: int = 0) -> Buchi:
     """State-based Büchi automaton: states are (tableau state, level) pairs.
 
-    The level the initial state starts on changes no infinite behaviour, so
-    any ``initial_level`` in ``0 .. len(untils)`` gives the same language.
+    A run is accepted by what it does in the strongly connected component
+    it finally stays in, so the level a run has reached when it enters a
+    component changes no accepted word: the initial state and every edge
+    into another component start on ``entry_level`` (any value in
+    ``0 .. len(untils)`` gives the same language), which spares the level
+    copies of transient states.
     """
     rounds = len(automaton.untils)
-    numbers: dict[tuple[int, int], int] = {(0, initial_level): 0}
-    pairs: list[tuple[int, int]] = [(0, initial_level)]
+    component = _components(automaton)
+    numbers: dict[tuple[int, int], int] = {(0, entry_level): 0}
+    pairs: list[tuple[int, int]] = [(0, entry_level)]
     edges: list[tuple[Edge, ...]] = []
     for state, level in pairs:
         outgoing = []
         for cube, target, postponed in automaton.transitions[state]:
-            next_level = 0 if level == rounds else level
+            start = entry_level if component[target] != component[state] else level
+            next_level = 0 if start == rounds else start
             while next_level < rounds and automaton.untils[next_level] not in postponed:
                 next_level += 1
             pair = (target, next_level)
@@ -179,6 +186,15 @@ def degeneralise(automaton: GeneralisedBuchi, atoms: Sequence[str],
         edges.append(tuple(outgoing))
     accepting = frozenset(n for n, (_, level) in enumerate(pairs) if level == rounds)
     return Buchi(tuple(atoms), 0, accepting, tuple(edges))
+
+
+def _components(automaton: GeneralisedBuchi) -> dict[int, int]:
+    """The strongly connected component (a number) of each tableau state."""
+    def successors(state: int) -> list[int]:
+        return [target for _, target, _ in automaton.transitions[state]]
+    return {state: number
+            for number, members in enumerate(strongly_connected_components([0], successors))
+            for state in members}
 
 
 def translate(formula: Formula, atoms: Sequence[str] | None = None) -> Buchi:
