@@ -148,37 +148,32 @@ def is_always(formula: Formula) -> bool:
     return type(formula) is Release and formula.left == FALSE
 
 
-@lru_cache(maxsize=4096)
 def is_eventual(formula: Formula) -> bool:
     """A pure eventuality of NNF: ``formula`` is equivalent to ``F formula``."""
-    kind = type(formula)
-    if kind is TrueF or kind is FalseF:
-        return True
-    if kind in (And, Or):
-        return is_eventual(formula.left) and is_eventual(formula.right)
-    if kind is Next:
-        return is_eventual(formula.operand)
-    if kind is Until:
-        return formula.left == TRUE or is_eventual(formula.right)
-    if kind is Release:
-        return is_eventual(formula.left) and is_eventual(formula.right)
-    return False
+    return _absorbs(formula, Until)
 
 
-@lru_cache(maxsize=4096)
 def is_universal(formula: Formula) -> bool:
     """A purely universal formula of NNF: ``formula`` is equivalent to ``G formula``."""
+    return _absorbs(formula, Release)
+
+
+@lru_cache(maxsize=8192)
+def _absorbs(formula: Formula, operator: type) -> bool:
+    """Whether ``F formula == formula`` (``operator`` Until) or ``G formula == formula`` (Release).
+
+    The two classes are dual: ``F`` is ``true U``, ``G`` is ``false R``.
+    """
+    unit, dual = (TRUE, Release) if operator is Until else (FALSE, Until)
     kind = type(formula)
     if kind is TrueF or kind is FalseF:
         return True
-    if kind in (And, Or):
-        return is_universal(formula.left) and is_universal(formula.right)
     if kind is Next:
-        return is_universal(formula.operand)
-    if kind is Release:
-        return formula.left == FALSE or is_universal(formula.right)
-    if kind is Until:
-        return is_universal(formula.left) and is_universal(formula.right)
+        return _absorbs(formula.operand, operator)
+    if kind is operator:
+        return formula.left == unit or _absorbs(formula.right, operator)
+    if kind in (And, Or, dual):
+        return _absorbs(formula.left, operator) and _absorbs(formula.right, operator)
     return False
 
 
