@@ -1,10 +1,12 @@
-"""Automaton sizes of the built-in translator against SPIN's (``spin -f``).
+"""Automaton sizes of the built-in translator against SPIN's (``spin -f``) and Spot's.
 
     python bench/ltl.py [--count N] [--seed S]
 
 Prints one row per formula set: formulas translated, SPIN timeouts, and
 mean/max states of ours and of SPIN's never claims, plus the time per
-translation of the paper's property.  Every compared pair is also checked
+translation of the paper's property.  Where Spot's Python bindings are
+installed, also the total states and (source, target) edges of ours and of
+Spot's state-based Büchi automata on ``ltl_cases.SPOT_RANDOM_SETS``.  Every compared pair is also checked
 for language equivalence (a disagreement is printed and the exit code is 1).
 """
 from __future__ import annotations
@@ -18,9 +20,11 @@ from statistics import mean
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tests"))
 
-from ltl_cases import WITHOUT_EQUIVALENCES, dwyer_patterns, random_formulas  # noqa: E402
+from ltl_cases import (WITHOUT_EQUIVALENCES, dwyer_patterns, random_formulas,  # noqa: E402
+                       spot_random_formulas)
 from rapidmc.ltl import parse_formula, to_text  # noqa: E402
 from rapidmc.ltl.spin import cross_check  # noqa: E402
+from rapidmc.ltl.spot_backend import from_spot, spot_automaton, spot_available  # noqa: E402
 from rapidmc.ltl.translate import translate  # noqa: E402
 
 PAPER_PROPERTY = "G(!c_in & s1 & s2 -> F(s3 & !s4))"
@@ -69,7 +73,31 @@ def main() -> int:
         translate(formula)
     print(f"paper property {PAPER_PROPERTY}: {translate(formula).state_count} states, "
           f"{(time.perf_counter() - start) * 10:.2f} ms per translation")
+    if spot_available():
+        print(spot_sizes())
     return 0 if ok else 1
+
+
+def spot_sizes() -> str:
+    ours = [0, 0, 0.0]
+    spots = [0, 0, 0.0]
+    count = 0
+    for formula in spot_random_formulas():
+        count += 1
+        start = time.perf_counter()
+        built_in = translate(from_spot(formula))
+        middle = time.perf_counter()
+        reference = spot_automaton(from_spot(formula))
+        end = time.perf_counter()
+        ours[0] += built_in.state_count
+        ours[1] += sum(len({e.target for e in out}) for out in built_in.edges)
+        ours[2] += middle - start
+        spots[0] += reference.num_states()
+        spots[1] += reference.num_edges()
+        spots[2] += end - middle
+    return (f"spot randltl, {count} formulas: built-in {ours[0]} states, {ours[1]} edges, "
+            f"{ours[2]:.1f} s; Spot {spots[0]} states, {spots[1]} edges, {spots[2]:.1f} s; "
+            f"ratio {ours[0] / spots[0]:.3f} states, {ours[1] / spots[1]:.3f} edges")
 
 
 if __name__ == "__main__":

@@ -58,3 +58,17 @@ def random_formulas(seed: int, count: int, atoms, with_next: bool = True, max_si
     rng = random.Random(seed)
     return [random_formula(rng, atoms, rng.randint(1, max_size), with_next, binary)
             for _ in range(count)]
+
+
+# Seeded random formulas from Spot's randltl (all operators, X, W, M, <-> and xor included):
+# (atom count, tree size, seed, how many), about 3,000 in all.
+SPOT_RANDOM_SETS = [(2, 10, 11, 800), (3, 15, 12, 1200), (4, 20, 13, 800), (3, 25, 14, 200)]
+
+
+def spot_random_formulas(sets=SPOT_RANDOM_SETS):
+    """``spot.formula`` values (needs Spot's Python bindings)."""
+    import itertools
+    import spot
+    for atom_count, tree_size, seed, count in sets:
+        generator = spot.randltl(atom_count, seed=seed, tree_size=tree_size, simplify=0)
+        yield from itertools.islice(generator, count)
