@@ -100,6 +100,7 @@ STATE_LIMIT = _code("RMC501", "state-limit", "the search reached --max-states or
 DOMAIN = _code("RMC502", "domain", "a nondeterministic input has no finite domain")
 ENVIRONMENT = _code("RMC503", "environment", "the environment model is invalid")
 TRACE_REPLAY = _code("RMC504", "trace-replay", "a counterexample did not replay (internal)")
+OUTPUT_FILE = _code("RMC506", "output-file", "a report file (--junit, graph -o) cannot be written")
 
 # --- usage (6xx) --------------------------------------------------------------------
 USAGE = _code("RMC601", "usage", "bad command-line usage")

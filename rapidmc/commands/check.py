@@ -13,11 +13,13 @@ from __future__ import annotations
 import argparse
 import math
 import sys
+from pathlib import Path
 from typing import Optional
 
 from .. import ast
 from ..check import (HOLDS, UNKNOWN, VIOLATED, Progress, PropertyResult, check_property,
                      find_reachable, format_json, format_text)
+from ..check.junit import format_junit, format_junit_diagnostics
 from ..check.sarif import format_sarif, format_sarif_diagnostics
 from ..diagnostics import (AUTOMATON, DOMAIN, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN,
                            EXIT_VIOLATED, TRACE_REPLAY, USAGE, SourceCache, UserError, error,
@@ -32,6 +34,7 @@ from ..semantics.link import build
 from ..semantics.step import CheckConfig, EnvironmentFault
 from ..syntax import load_program
 from .quoting import one_line, quoted, routine_name
+from .report_file import write_report
 
 DEFAULT_MAX_STATES = 1_000_000
 BUILTIN_RUNTIME = "no_runtime_error"
@@ -58,6 +61,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--format", choices=("text", "json", "sarif"), default="text",
                         help="output format (default: text); sarif: SARIF 2.1.0 for CI and "
                              "code-scanning tools, input errors included")
+    parser.add_argument("--junit", metavar="FILE", default=None,
+                        help="also write a JUnit XML report to FILE (one test case per property)")
     parser.add_argument("--quiet", action="store_true", help="no progress line on stderr")
     parser.add_argument("--tp-answers", default="1,2,3", metavar="LIST",
                         help="answers TPReadNum/TPReadDnum may get (default: 1,2,3)")
@@ -116,11 +121,14 @@ def gather_properties(args) -> list[Property]:
 
 
 def execute(args: argparse.Namespace) -> int:
-    if args.format != "sarif":
-        return _check(args)
     try:
         return _check(args)
     except UserError as exc:
+        if args.junit:
+            write_report(args.junit, format_junit_diagnostics(exc.diagnostics, *_suite(args)),
+                         "JUnit report")
+        if args.format != "sarif":
+            raise
         print(render_all(exc.diagnostics), file=sys.stderr)
         print(format_sarif_diagnostics(exc.diagnostics, exc.exit_code), end="")
         return exc.exit_code
@@ -177,7 +185,14 @@ def _check(args: argparse.Namespace) -> int:
         print(format_sarif(results, describer, exit_code), end="")
     else:
         print(format_text(results, describer))
+    if args.junit:
+        write_report(args.junit, format_junit(results, describer, *_suite(args)), "JUnit report")
     return exit_code
+
+
+def _suite(args: argparse.Namespace) -> tuple[str, str]:
+    """The JUnit suite name (the program's files) and class name (the first file's stem)."""
+    return " ".join(args.files), Path(args.files[0].rstrip("/\\")).stem or "program"
 
 
 def _progress(quiet: bool) -> Progress:
