@@ -105,6 +105,9 @@ OUTPUT_FILE = _code("RMC506", "output-file", "a report file (--junit, graph -o) 
 # --- usage (6xx) --------------------------------------------------------------------
 USAGE = _code("RMC601", "usage", "bad command-line usage")
 
+# --- warnings (7xx): reported beside the verdicts, never a failure on their own ------
+NEVER_REACHED = _code("RMC701", "never-reached", "a statement no input sequence reaches (after a complete search)")
+
 
 @dataclass(frozen=True)
 class Diagnostic:

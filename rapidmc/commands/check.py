@@ -24,6 +24,7 @@ from ..check.sarif import format_sarif, format_sarif_diagnostics
 from ..diagnostics import (AUTOMATON, DOMAIN, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN,
                            EXIT_VIOLATED, TRACE_REPLAY, USAGE, SourceCache, UserError, error,
                            render_all)
+from ..explored import ExploredFacts
 from ..ltl import BACKENDS, read_hoa, to_buchi, to_text
 from ..ltl.syntax import Not
 from ..backup import add_program_arguments, load_tasks, resolve_program_files
@@ -63,6 +64,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "code-scanning tools, input errors included")
     parser.add_argument("--junit", metavar="FILE", default=None,
                         help="also write a JUnit XML report to FILE (one test case per property)")
+    parser.add_argument("--fail-on-vacuous", action="store_true",
+                        help="exit 1 when a property holds only because its trigger is never true")
     parser.add_argument("--quiet", action="store_true", help="no progress line on stderr")
     parser.add_argument("--tp-answers", default="1,2,3", metavar="LIST",
                         help="answers TPReadNum/TPReadDnum may get (default: 1,2,3)")
@@ -163,28 +166,37 @@ def _check(args: argparse.Namespace) -> int:
         raise error(USAGE, f"--automaton names no property: "
                     f"{', '.join(quoted(name) for name in sorted(unknown))}")
     bounds = dict(max_states=args.max_states, max_seconds=args.max_seconds)
+    facts = ExploredFacts(program, [prop.formula for prop in properties], atoms)
     results = []
     try:
         results.append(_builtin(system, BUILTIN_RUNTIME, "no reachable uncaught run-time error",
-                                system.failed, bounds, args.quiet))
+                                system.failed, bounds, args.quiet, observe=facts))
+        facts.finish(system, results[0].result, progress=_progress(args.quiet), **bounds)
         results.append(_builtin(system, BUILTIN_DEADLOCK, "no reachable state where the program "
                                 "waits forever", system.stuck, bounds, args.quiet))
         for prop, buchi, valuation in jobs:
             result = check_property(system, buchi, valuation, progress=_progress(args.quiet),
                                     **bounds)
             _replayed(system, result)
-            results.append(PropertyResult(prop.name, prop.text, result))
+            vacuous = facts.vacuous(prop.formula) if result.verdict == HOLDS else None
+            results.append(PropertyResult(prop.name, prop.text, result, vacuous))
     except EnvironmentFault as exc:
         raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
     verdicts = [r.result.verdict for r in results]
     exit_code = EXIT_VIOLATED if VIOLATED in verdicts else (
         EXIT_UNKNOWN if UNKNOWN in verdicts else EXIT_OK)
+    if args.fail_on_vacuous and any(r.vacuous for r in results):
+        exit_code = EXIT_VIOLATED
+    warnings = facts.warnings()
     if args.format == "json":
-        print(format_json(results, describer))
+        print(format_json(results, describer, warnings))
     elif args.format == "sarif":
-        print(format_sarif(results, describer, exit_code), end="")
+        print(format_sarif(results, describer, exit_code, warnings), end="")
     else:
         print(format_text(results, describer))
+        sys.stdout.flush()
+        if warnings:
+            print(render_all(warnings), file=sys.stderr)
     if args.junit:
         write_report(args.junit, format_junit(results, describer, *_suite(args)), "JUnit report")
     return exit_code
@@ -228,8 +240,9 @@ def _atom_span(prop: Property, atom: str) -> ast.Span:
 
 
 def _builtin(system: RapidSystem, name: str, description: str, predicate, bounds,
-             quiet: bool) -> PropertyResult:
-    result = find_reachable(system, predicate, progress=_progress(quiet), **bounds)
+             quiet: bool, observe=None) -> PropertyResult:
+    result = find_reachable(system, predicate, progress=_progress(quiet), observe=observe,
+                            **bounds)
     if result.verdict == VIOLATED:
         with_final_loop(system, result)
         _replayed(system, result)

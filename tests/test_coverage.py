@@ -1,0 +1,73 @@
+"""Coverage: after a complete search, statements no input reaches are warnings (RMC701).
+
+Data-driven on tests/check/: a case's ``unreached`` file lists the lines
+expected to be reported (a routine that never runs is reported once, at
+its declaration); every other case must report none.  The case studies pin
+the one dead statement of sorter B, and the three output formats are
+checked to carry the same warnings.
+"""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from rapidmc.cli import main
+from test_check_cases import CASES_DIR, _data_lines, load_case, run_check
+
+ROOT = Path(__file__).resolve().parent.parent
+CASES = sorted(folder.name for folder in CASES_DIR.iterdir()
+               if (folder / "expected").exists() and not (folder / "xfail").exists())
+
+
+@pytest.mark.parametrize("name", CASES)
+def test_unreached_lines_of_every_check_case(name, monkeypatch):
+    case = load_case(CASES_DIR / name)
+    if case.error is not None:
+        return
+    code, stdout, _ = run_check(case, monkeypatch)
+    warnings = json.loads(stdout)["warnings"]
+    assert all(w["code"] == "RMC701" and w["location"]["file"] == "prog.mod" for w in warnings)
+    expected = [int(line) for line in _data_lines(case.folder / "unreached")]
+    assert [w["location"]["line"] for w in warnings] == expected
+    assert code == case.exit_code            # warnings never change the exit code
+
+
+def test_no_warnings_after_a_bounded_search(monkeypatch):
+    """vacuity_bounded_search never runs its last statements within 5 states: no claim."""
+    case = load_case(CASES_DIR / "vacuity_bounded_search")
+    assert json.loads(run_check(case, monkeypatch)[1])["warnings"] == []
+
+
+def sorter(program: str, *extra: str) -> list[str]:
+    return ["check", f"case_studies/sorter/{program}", "--env", "case_studies/sorter/plant.mod",
+            "--ltl", "specs/sorter.ltl", "--quiet", *extra]
+
+
+@pytest.mark.parametrize("program, lines", [
+    ("sorter_a.mod", []),
+    ("sorter_b.mod", [84]),       # SetDO c_out after a defective pinion went to C1: s4 stays 0
+    ("sorter_c.mod", []),
+])
+def test_case_studies(program, lines, monkeypatch, capsys):
+    monkeypatch.chdir(ROOT)
+    main(sorter(program, "--format", "json"))
+    warnings = json.loads(capsys.readouterr().out)["warnings"]
+    assert [w["location"]["line"] for w in warnings] == lines
+
+
+def test_text_sarif_and_json_carry_the_same_warning(monkeypatch, capsys):
+    monkeypatch.chdir(ROOT)
+    main(sorter("sorter_b.mod"))
+    err = capsys.readouterr().err
+    assert "case_studies/sorter/sorter_b.mod:84:21: warning: never reached under any input " \
+           "[RMC701]" in err
+    assert "SetDO c_out, 1;" in err
+    main(sorter("sorter_b.mod", "--format", "sarif"))
+    (run,) = json.loads(capsys.readouterr().out)["runs"]
+    (warning,) = [r for r in run["results"] if r["ruleId"] == "RMC701"]
+    assert warning["level"] == "warning"
+    assert run["tool"]["driver"]["rules"][warning["ruleIndex"]]["id"] == "RMC701"
+    region = warning["locations"][0]["physicalLocation"]["region"]
+    assert (region["startLine"], region["startColumn"]) == (84, 21)
