@@ -14,20 +14,17 @@ from pathlib import Path
 import pytest
 
 from rapidmc.cli import main
-from test_check_cases import CASES_DIR, _data_lines, load_case, run_check
+from test_check_cases import _data_lines, report_of, verdict_cases
 
 ROOT = Path(__file__).resolve().parent.parent
-CASES = sorted(folder.name for folder in CASES_DIR.iterdir()
-               if (folder / "expected").exists() and not (folder / "xfail").exists())
+CASES = {case.name: case for case in verdict_cases()}
 
 
 @pytest.mark.parametrize("name", CASES)
 def test_unreached_lines_of_every_check_case(name, monkeypatch):
-    case = load_case(CASES_DIR / name)
-    if case.error is not None:
-        return
-    code, stdout, _ = run_check(case, monkeypatch)
-    warnings = json.loads(stdout)["warnings"]
+    case = CASES[name]
+    code, document = report_of(case, monkeypatch)
+    warnings = document["warnings"]
     assert all(w["code"] == "RMC701" and w["location"]["file"] == "prog.mod" for w in warnings)
     expected = [int(line) for line in _data_lines(case.folder / "unreached")]
     assert [w["location"]["line"] for w in warnings] == expected
@@ -36,8 +33,7 @@ def test_unreached_lines_of_every_check_case(name, monkeypatch):
 
 def test_no_warnings_after_a_bounded_search(monkeypatch):
     """vacuity_bounded_search never runs its last statements within 5 states: no claim."""
-    case = load_case(CASES_DIR / "vacuity_bounded_search")
-    assert json.loads(run_check(case, monkeypatch)[1])["warnings"] == []
+    assert report_of(CASES["vacuity_bounded_search"], monkeypatch)[1]["warnings"] == []
 
 
 def sorter(program: str, *extra: str) -> list[str]:

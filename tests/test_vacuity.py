@@ -9,7 +9,6 @@ bounded (``vacuity_bounded_search``).
 from __future__ import annotations
 
 import doctest
-import json
 from pathlib import Path
 
 import pytest
@@ -17,11 +16,10 @@ import pytest
 import rapidmc.check.vacuity as vacuity
 from rapidmc.cli import main
 from rapidmc.ltl import parse_formula, to_text
-from test_check_cases import CASES_DIR, _data_lines, load_case, run_check
+from test_check_cases import _data_lines, report_of, verdict_cases
 
 ROOT = Path(__file__).resolve().parent.parent
-CASES = sorted(folder.name for folder in CASES_DIR.iterdir()
-               if (folder / "expected").exists() and not (folder / "xfail").exists())
+CASES = {case.name: case for case in verdict_cases()}
 
 
 def expected_vacuous(folder: Path) -> dict[str, str]:
@@ -30,11 +28,8 @@ def expected_vacuous(folder: Path) -> dict[str, str]:
 
 @pytest.mark.parametrize("name", CASES)
 def test_vacuity_claims_of_every_check_case(name, monkeypatch):
-    case = load_case(CASES_DIR / name)
-    if case.error is not None:
-        return
-    code, stdout, _ = run_check(case, monkeypatch)
-    document = json.loads(stdout)
+    case = CASES[name]
+    code, document = report_of(case, monkeypatch)
     claims = {p["name"]: p["vacuous"] for p in document["properties"] if p["vacuous"]}
     assert claims == expected_vacuous(case.folder)
     for entry in document["properties"]:
@@ -43,7 +38,7 @@ def test_vacuity_claims_of_every_check_case(name, monkeypatch):
 
 
 def test_the_cases_include_a_vacuous_property():
-    assert any(expected_vacuous(CASES_DIR / name) for name in CASES)
+    assert any(expected_vacuous(case.folder) for case in CASES.values())
 
 
 SORTER = ["check", "case_studies/sorter/sorter_a.mod", "--env", "case_studies/sorter/plant.mod",
