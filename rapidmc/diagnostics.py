@@ -101,6 +101,8 @@ DOMAIN = _code("RMC502", "domain", "a nondeterministic input has no finite domai
 ENVIRONMENT = _code("RMC503", "environment", "the environment model is invalid")
 TRACE_REPLAY = _code("RMC504", "trace-replay", "a counterexample did not replay (internal)")
 OUTPUT_FILE = _code("RMC506", "output-file", "a report file (--junit, graph -o) cannot be written")
+TRACE_DIVERGED = _code("RMC507", "trace-diverged", "the program no longer follows a saved counterexample (replay)")
+TRACE_FILE = _code("RMC508", "trace-file", "a trace file is not a usable report of check --format json")
 
 # --- usage (6xx) --------------------------------------------------------------------
 USAGE = _code("RMC601", "usage", "bad command-line usage")

@@ -136,9 +136,10 @@ def _change_text(change: Change) -> str:
 
 
 def format_json(results: Sequence[PropertyResult], describer: TraceDescriber,
-                warnings: Sequence[Diagnostic] = ()) -> str:
+                warnings: Sequence[Diagnostic] = (), command: Optional[Sequence[str]] = None) -> str:
     """The JSON document of docs/json-output.md, indented, keys in schema order."""
     document = {"schema": SCHEMA,
+                "command": list(command) if command is not None else None,
                 "properties": [property_json(checked, describer) for checked in results],
                 "warnings": [warning_json(warning) for warning in warnings]}
     return json.dumps(document, indent=2, ensure_ascii=False) + "\n"

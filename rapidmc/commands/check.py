@@ -150,7 +150,7 @@ def _check(args: argparse.Namespace) -> int:
     results, describer, warnings = report.results, report.describer, report.warnings
     exit_code = report.exit_code(args.fail_on_vacuous)
     if args.format == "json":
-        print(format_json(results, describer, warnings))
+        print(format_json(results, describer, warnings, getattr(args, "command_line", None)))
     elif args.format == "sarif":
         print(format_sarif(results, describer, exit_code, warnings), end="")
     else:
