@@ -29,6 +29,7 @@ SUBCOMMANDS = {
     "check": "model-check a RAPID program against LTL properties",
     "ltl": "translate an LTL formula to a Büchi automaton (HOA format)",
     "replay": "re-execute a counterexample saved by 'check --format json'",
+    "graph": "write the reachable state graph (GraphML, GEXF or DOT)",
 }
 
 

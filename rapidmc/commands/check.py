@@ -30,6 +30,19 @@ DEFAULT_MAX_STATES = 1_000_000
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
+    add_model_arguments(parser)
+    parser.add_argument("--format", choices=("text", "json", "sarif"), default="text",
+                        help="output format (default: text); sarif: SARIF 2.1.0 for CI and "
+                             "code-scanning tools, input errors included")
+    parser.add_argument("--junit", metavar="FILE", default=None,
+                        help="also write a JUnit XML report to FILE (one test case per property)")
+    parser.add_argument("--fail-on-vacuous", action="store_true",
+                        help="exit 1 when a property holds only because its trigger is never true")
+    parser.add_argument("--quiet", action="store_true", help="no progress line on stderr")
+
+
+def add_model_arguments(parser: argparse.ArgumentParser) -> None:
+    """The options that say what to search: program, properties, inputs, bounds (``graph`` too)."""
     parser.add_argument("files", nargs="+", metavar="FILE",
                         help="RAPID module files of the program (.mod, .sys, .pgf ...), or a "
                              "controller backup folder")
@@ -46,14 +59,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help=f"bound on stored states per search (default {DEFAULT_MAX_STATES:,})")
     parser.add_argument("--max-seconds", type=float, default=None, metavar="S",
                         help="bound on the time of each search")
-    parser.add_argument("--format", choices=("text", "json", "sarif"), default="text",
-                        help="output format (default: text); sarif: SARIF 2.1.0 for CI and "
-                             "code-scanning tools, input errors included")
-    parser.add_argument("--junit", metavar="FILE", default=None,
-                        help="also write a JUnit XML report to FILE (one test case per property)")
-    parser.add_argument("--fail-on-vacuous", action="store_true",
-                        help="exit 1 when a property holds only because its trigger is never true")
-    parser.add_argument("--quiet", action="store_true", help="no progress line on stderr")
     parser.add_argument("--tp-answers", default="1,2,3", metavar="LIST",
                         help="answers TPReadNum/TPReadDnum may get (default: 1,2,3)")
     parser.add_argument("--fk-answers", default="1,2,3,4,5", metavar="LIST",
