@@ -103,6 +103,7 @@ TRACE_REPLAY = _code("RMC504", "trace-replay", "a counterexample did not replay 
 OUTPUT_FILE = _code("RMC506", "output-file", "a report file (--junit, graph -o) cannot be written")
 TRACE_DIVERGED = _code("RMC507", "trace-diverged", "the program no longer follows a saved counterexample (replay)")
 TRACE_FILE = _code("RMC508", "trace-file", "a trace file is not a usable report of check --format json")
+HTML_OUTPUT = _code("RMC520", "html-output", "the HTML report file cannot be written")
 
 # --- usage (6xx) --------------------------------------------------------------------
 USAGE = _code("RMC601", "usage", "bad command-line usage")
@@ -155,6 +156,12 @@ class SourceCache:
         if lines is None or not 1 <= line <= len(lines):
             return None
         return lines[line - 1]
+
+    @classmethod
+    def lines(cls, file: str) -> Optional[tuple[str, ...]]:
+        """Every line of a remembered file (None when it was never read)."""
+        lines = cls._lines.get(file)
+        return None if lines is None else tuple(lines)
 
 
 def render(diagnostic: Diagnostic) -> str:

@@ -12,6 +12,7 @@ from __future__ import annotations
 from typing import Hashable, Mapping, Optional
 
 from .check import TransitionInfo
+from .check.trace import CallFrame
 from .check.result import LassoStep, SearchResult
 from .diagnostics import TRACE_REPLAY, SourceCache, error
 from .semantics.program import (ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE,
@@ -137,6 +138,31 @@ class RapidDescriber:
                               f"({state.fault.message})"
         return view
 
+    def describe_stack(self, state: State) -> tuple[CallFrame, ...]:
+        """Every task's active routines, outermost first, each at its next statement."""
+        stacks = (state.frames,) + state.tasks
+        named = len(stacks) > 1
+        frames = []
+        for number, stack in enumerate(stacks):
+            task = self.program.task_names[number] if named else ""
+            for frame in stack:
+                routine = self.program.routines[frame.routine]
+                span = _frame_span(routine, frame.pc)
+                frames.append(CallFrame(routine.name, span.file, span.line, task))
+        return tuple(frames)
+
+    def source_lines(self) -> dict[str, tuple[str, ...]]:
+        """The lines of every source file of the program and its environment, in link order."""
+        spans = [r.span for r in self.program.routines] + \
+                [g.span for g in self.program.globals]
+        files = dict.fromkeys(span.file for span in spans if span is not None and span.file)
+        sources = {}
+        for file in files:
+            lines = SourceCache.lines(file)
+            if lines is not None:
+                sources[file] = lines
+        return sources
+
     def describe_transition(self, label) -> TransitionInfo:
         choices, span, output = label
         inputs = {name: _choice_text(value) for name, value in choices}
@@ -146,6 +172,13 @@ class RapidDescriber:
         text = SourceCache.line(span.file, span.line)
         source = text.strip() if text is not None else ""
         return TransitionInfo(span.file, span.line, source, inputs, output)
+
+
+def _frame_span(routine, pc: int):
+    """Where a frame is: the statement at its program counter (a caller: the call)."""
+    if 0 <= pc < len(routine.code) and routine.code[pc].span is not None:
+        return routine.code[pc].span
+    return routine.end_span or routine.span
 
 
 def _choice_text(value) -> str:

@@ -7,6 +7,8 @@ from pathlib import Path
 
 import pytest
 
+from tool_requirements import require_tool
+
 from ltl_cases import random_formulas, random_lasso
 from rapidmc.diagnostics import AUTOMATON, UserError
 from rapidmc.ltl import parse_formula, read_hoa, to_text, write_hoa
@@ -109,9 +111,9 @@ def test_with_atoms_renumbers_bits():
         assert accepts_lasso(moved, prefix, cycle) == accepts_lasso(automaton, prefix, cycle)
 
 
-@pytest.mark.skipif(not spot_available(), reason="Spot's Python bindings are not installed "
-                                                  "(not on PyPI or Debian)")
 def test_spot_backend_agrees_with_lasso_oracle():
+    require_tool(spot_available(), "RAPIDMC_REQUIRE_SPOT",
+                 "Spot's Python bindings are not installed (../shared/spot/install)")
     rng = random.Random(4)
     atoms = ("a", "b", "c")
     for formula in random_formulas(4, 200, atoms):

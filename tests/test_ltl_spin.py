@@ -7,13 +7,13 @@ Without ``spin`` the tests skip, unless RAPIDMC_REQUIRE_SPIN=1 (CI).
 """
 from __future__ import annotations
 
-import os
 import shutil
 from concurrent.futures import ThreadPoolExecutor
 from statistics import mean
 
 import pytest
 
+from tool_requirements import require_tool
 from ltl_cases import WITHOUT_EQUIVALENCES, dwyer_patterns, random_formulas
 from rapidmc.ltl import parse_formula, to_text
 from rapidmc.ltl.lasso import accepts_lasso
@@ -26,10 +26,8 @@ MAX_SKIPPED_SHARE = 0.05
 
 
 def _require_spin() -> None:
-    if SPIN is None:
-        if os.environ.get("RAPIDMC_REQUIRE_SPIN") == "1":
-            pytest.fail("spin is not installed but RAPIDMC_REQUIRE_SPIN=1")
-        pytest.skip("spin is not installed (Debian package 'spin')")
+    require_tool(SPIN is not None, "RAPIDMC_REQUIRE_SPIN",
+                 "spin is not installed (Debian package 'spin')")
 
 
 @pytest.fixture(autouse=True)

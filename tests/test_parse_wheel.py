@@ -1,4 +1,5 @@
-"""The grammar ships inside the wheel: build it, install it in a fresh venv, parse there.
+"""The grammar (and the HTML report's page) ships inside the wheel: build it, install it in a
+fresh venv, parse there.
 
 Slow-ish (10-40 s): it runs pip, whose isolated build fetches setuptools and
 wheel from the package index; the venv sees this interpreter's lark, pyrsistent
@@ -9,6 +10,7 @@ from __future__ import annotations
 import subprocess
 import sys
 import venv
+import zipfile
 from pathlib import Path
 
 import lark
@@ -30,6 +32,8 @@ def test_wheel_contains_grammar_and_parses_in_fresh_venv(tmp_path):
     run(sys.executable, "-m", "pip", "wheel", "--no-deps", "-q",
         "-w", str(wheels), str(ROOT), cwd=tmp_path)
     (wheel,) = wheels.glob("rapidmc-*.whl")
+    names = zipfile.ZipFile(wheel).namelist()
+    assert {f"rapidmc/check/html_page/page.{kind}" for kind in ("html", "css", "js")} <= set(names)
     environment = tmp_path / "env"
     venv.create(environment, system_site_packages=True, with_pip=True)
     python = str(environment / "bin" / "python")

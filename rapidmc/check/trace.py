@@ -6,13 +6,16 @@ state, and where a transition is in the source, what it chose and wrote.
 This module only compares consecutive states so that each step lists
 only what changed (the first step lists every value once).
 
+A describer may also say where the run is (``describe_stack``): the
+call stack each step's statement executes in, for viewers that show it.
+
 Shape of a trace: ``prefix`` steps, then ``cycle`` steps, then ``closing``
 (the transition from the last cycle state back to the state of the first
 cycle step).  Steps are numbered from 1 across all three.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Hashable, Mapping, Optional, Protocol
 
 from .fold import fold_lasso
@@ -43,8 +46,22 @@ class TransitionInfo:
         return f"{self.file}:{self.line}" if self.line else self.file
 
 
+@dataclass(frozen=True)
+class CallFrame:
+    """One active routine: its name, the line it is at, and its task (empty with one task)."""
+
+    routine: str
+    file: Optional[str]
+    line: Optional[int]
+    task: str = ""
+
+
 class TraceDescriber(Protocol):
-    """Printable views of model states and labels, supplied by the caller."""
+    """Printable views of model states and labels, supplied by the caller.
+
+    Optional: ``describe_stack(state) -> tuple[CallFrame, ...]`` (outermost
+    routine first); without it, steps carry an empty stack.
+    """
 
     def describe_state(self, state: Hashable) -> Mapping[str, str]: ...
 
@@ -62,12 +79,17 @@ class Change:
 
 @dataclass(frozen=True)
 class TraceStep:
-    """One numbered step: the transition taken (unless initial) and what it changed."""
+    """One numbered step: the transition taken (unless initial) and what it changed.
+
+    ``stack``: the call stack the step's statement executes in (the stack of
+    the state before it; for the initial step, of the initial state).
+    """
 
     index: int
     kind: str
     transition: Optional[TransitionInfo]
     changes: tuple[Change, ...]
+    stack: tuple[CallFrame, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -102,16 +124,20 @@ def build_trace(result: SearchResult, describer: TraceDescriber) -> Trace:
             views[key] = describer.describe_state(step.state)
         return views[key]
 
+    describe_stack = getattr(describer, "describe_stack", lambda state: ())
     steps: list[TraceStep] = []
     previous: Optional[LassoStep] = None
     for lasso_step in [*prefix, *cycle]:
         before = view(previous) if previous is not None else None
-        steps.append(_trace_step(len(steps) + 1, lasso_step.label, before, view(lasso_step), describer))
+        step = _trace_step(len(steps) + 1, lasso_step.label, before, view(lasso_step), describer)
+        stack = describe_stack((previous or lasso_step).state)
+        steps.append(replace(step, stack=tuple(stack)))
         previous = lasso_step
     closing = None
     if cycle:
         closing = _trace_step(len(steps) + 1, closing_label, view(cycle[-1]), view(cycle[0]),
                               describer)
+        closing = replace(closing, stack=tuple(describe_stack(cycle[-1].state)))
     split = len(prefix)
     return Trace(tuple(steps[:split]), tuple(steps[split:]), closing)
 

@@ -17,6 +17,7 @@ from pathlib import Path
 
 from .. import api
 from ..check import Progress, format_json, format_text
+from ..check.html import check_html_target, write_html
 from ..check.junit import format_junit, format_junit_diagnostics
 from ..check.sarif import format_sarif, format_sarif_diagnostics
 from ..diagnostics import USAGE, UserError, error, render_all
@@ -34,6 +35,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--format", choices=("text", "json", "sarif"), default="text",
                         help="output format (default: text); sarif: SARIF 2.1.0 for CI and "
                              "code-scanning tools, input errors included")
+    parser.add_argument("--html", metavar="FILE", default=None,
+                        help="also write a self-contained HTML report: verdicts, and each "
+                             "counterexample as a player with the source and a timeline")
     parser.add_argument("--junit", metavar="FILE", default=None,
                         help="also write a JUnit XML report to FILE (one test case per property)")
     parser.add_argument("--fail-on-vacuous", action="store_true",
@@ -151,9 +155,13 @@ def execute(args: argparse.Namespace) -> int:
 
 
 def _check(args: argparse.Namespace) -> int:
+    if args.html:
+        check_html_target(args.html)
     report = api.check(prepare_model(args), progress=lambda: _progress(args.quiet))
     results, describer, warnings = report.results, report.describer, report.warnings
     exit_code = report.exit_code(args.fail_on_vacuous)
+    if args.html:
+        write_html(args.html, results, describer)
     if args.format == "json":
         print(format_json(results, describer, warnings, getattr(args, "command_line", None)))
     elif args.format == "sarif":

@@ -1,9 +1,29 @@
 """Translation with Spot's Python bindings (used when ``import spot`` works).
 
-Spot translates the formula (``spot.translate(f, 'BA', 'small', 'high')``:
-state-based Büchi acceptance, small automaton, high effort); its HOA output
-is read back with ``hoa.read_hoa``, which splits guards into cubes, and the
-atoms are put into the caller's order.
+The formula is handed to Spot as a syntax tree built with Spot's own
+constructors (``to_spot``), never as text: Spot reads ``GRIPPER`` as
+``G RIPPER`` and ``FEED_OK`` as ``F EED_OK``, so printing and re-parsing
+would change the meaning of such atoms.
+
+Spot 2.12.1 needs two precautions, both pinned by ``tests/test_ltl_spot.py``:
+
+* ``translate(f, 'BA')`` returns transition-based acceptance (the Python
+  module drops the state-based option), so ``'sbacc'`` is asked for.
+* ``translate(f, 'BA', 'sbacc', ...)`` is wrong on some formulas (it
+  rejects words of ``XG((a R b) U a) -> X(a | XXb)``).  We therefore let
+  Spot build its default generalised automaton (``translate(f, 'small',
+  'high')``, which has been right on every formula we tried) and turn it
+  into a state-based Büchi automaton with ``postprocess(.., 'BA', 'sbacc',
+  'small', 'high')``; and the result is checked for language equivalence
+  with the formula (``are_equivalent``).  Should that check ever fail, the
+  built-in translator's automaton is used instead: a verdict must not rest
+  on an automaton known to be wrong.
+
+The HOA output is read back with ``hoa.read_hoa`` and the atoms are put
+into the caller's order.
+
+``from_spot`` converts the other way (used by the tests that take Spot's
+random formulas and pattern families as input).
 """
 from __future__ import annotations
 
@@ -11,8 +31,16 @@ from typing import Sequence
 
 from .buchi import Buchi, Edge
 from .hoa import read_hoa
-from .printing import to_text
-from .syntax import Formula
+from .syntax import (And, Atom, Equiv, FalseF, Finally, Formula, Globally, Implies, Next, Not,
+                     Or, Release, StrongRelease, TrueF, Until, WeakUntil, Xor)
+
+SPOT_OPTIONS = ("BA", "sbacc", "small", "high")   # for postprocess
+
+# our node type -> name of Spot's constructor (binary for And/Or: Spot's are n-ary)
+_UNARY = {Not: "Not", Next: "X", Globally: "G", Finally: "F"}
+_BINARY = {Implies: "Implies", Equiv: "Equiv", Xor: "Xor", Until: "U", WeakUntil: "W",
+           Release: "R", StrongRelease: "M"}
+_NARY = {And: "And", Or: "Or"}
 
 
 def spot_available() -> bool:
@@ -23,9 +51,59 @@ def spot_available() -> bool:
     return True
 
 
-def spot_translate(formula: Formula, atoms: Sequence[str]) -> Buchi:
+def to_spot(formula: Formula):
+    """The same formula as a ``spot.formula``, atoms kept whole whatever their spelling."""
     import spot
-    automaton = spot.translate(spot.formula(to_text(formula)), "BA", "small", "high")
+    kind = type(formula)
+    if kind is Atom:
+        return spot.formula.ap(formula.name)
+    if kind is TrueF:
+        return spot.formula.tt()
+    if kind is FalseF:
+        return spot.formula.ff()
+    if kind in _UNARY:
+        return getattr(spot.formula, _UNARY[kind])(to_spot(formula.operand))
+    if kind in _NARY:
+        return getattr(spot.formula, _NARY[kind])([to_spot(formula.left), to_spot(formula.right)])
+    return getattr(spot.formula, _BINARY[kind])(to_spot(formula.left), to_spot(formula.right))
+
+
+def from_spot(formula) -> Formula:
+    """A ``spot.formula`` (LTL operators only) as our syntax tree."""
+    import spot
+    kind = formula.kind()
+    if kind == spot.op_ap:
+        return Atom(formula.ap_name())
+    if kind == spot.op_tt:
+        return TrueF()
+    if kind == spot.op_ff:
+        return FalseF()
+    children = [from_spot(child) for child in formula]
+    for ours, name in (*_UNARY.items(), *_BINARY.items(), *_NARY.items()):
+        if kind == getattr(spot, "op_" + name):
+            if ours in _NARY:
+                result = children[0]
+                for child in children[1:]:
+                    result = ours(result, child)
+                return result
+            return ours(*children)
+    raise ValueError(f"not an LTL formula rapidmc reads: {formula}")
+
+
+def spot_automaton(formula: Formula):
+    """Spot's state-based Büchi automaton for ``formula`` (a ``spot.twa_graph``), unchecked."""
+    import spot
+    generalised = spot.translate(to_spot(formula), "small", "high")
+    return spot.postprocess(generalised, *SPOT_OPTIONS)
+
+
+def spot_translate(formula: Formula, atoms: Sequence[str]) -> Buchi:
+    """Spot's automaton for ``formula``; the built-in one if Spot's fails the equivalence check."""
+    import spot
+    automaton = spot_automaton(formula)
+    if not spot.are_equivalent(automaton, to_spot(formula)):
+        from .translate import translate
+        return translate(formula, atoms)
     return with_atoms(read_hoa(automaton.to_str("hoa"), file="<spot>"), atoms)
 
 
