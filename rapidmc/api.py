@@ -19,12 +19,14 @@ Input errors raise ``rapidmc.diagnostics.UserError`` carrying diagnostics.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from types import SimpleNamespace
 from typing import Callable, Iterable, Mapping, Optional, Sequence
 
 from . import ast
 from .check import (HOLDS, UNKNOWN, VIOLATED, Progress, PropertyResult, check_property,
                     find_reachable)
 from .check.budget import DEFAULT_MAX_STATES
+from .backup import load_tasks, resolve_program_files
 from .check.trace import Trace, build_trace
 from .diagnostics import (AUTOMATON, DOMAIN, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED,
                           TRACE_REPLAY, USAGE, Diagnostic, SourceCache, error)
@@ -40,7 +42,7 @@ from .semantics.step import CheckConfig, EnvironmentFault
 from .syntax import load_program as _parse_files
 from .commands.quoting import one_line, quoted
 
-__all__ = ["CheckOptions", "CheckReport", "Model", "check", "load_program", "prepare",
+__all__ = ["CheckOptions", "CheckReport", "Model", "check", "check_model", "load_program", "prepare",
            "property_from_text", "read_properties", "HOLDS", "VIOLATED", "UNKNOWN"]
 
 BUILTIN_RUNTIME = "no_runtime_error"
@@ -69,11 +71,19 @@ class CheckOptions:
 
 
 def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = "main",
-                 signals: Sequence = (), tasks: Sequence = ()) -> Program:
-    """Parse and link the program's module files (and an environment model's)."""
+                 task: Optional[str] = None, all_tasks: bool = False,
+                 add_tasks: Sequence[str] = (), eio: Optional[str] = None) -> Program:
+    """Parse and link a program: module files or a controller backup folder, as ``check`` takes.
+
+    ``env``: environment model modules; ``task``/``all_tasks``: which tasks of a
+    backup; ``add_tasks``: further tasks, each ``"a.mod,b.mod"``; ``eio``: an
+    I/O configuration whose signals the program uses by name.
+    """
+    files = resolve_program_files(SimpleNamespace(files=list(files), task=task, eio=eio,
+                                                  all_tasks=all_tasks, add_task=list(add_tasks)))
     environment = _parse_files(list(env)) if env else None
-    return build(_parse_files(list(files)), entry=entry, environment=environment,
-                 options={"configured_signals": list(signals)}, tasks=list(tasks))
+    return build(_parse_files(files.modules), entry=entry, environment=environment,
+                 options={"configured_signals": files.signals}, tasks=load_tasks(files))
 
 
 def read_properties(*paths: str) -> list[Property]:
@@ -228,12 +238,15 @@ class CheckReport:
 ProgressFactory = Callable[[], Optional[Progress]]
 
 
-def check(program_or_model, properties: Iterable[Property] = (),
+def check(program: Program, properties: Iterable[Property] = (),
           options: CheckOptions = CheckOptions(),
           progress: ProgressFactory = lambda: None) -> CheckReport:
     """The built-in checks, then every property, each by its own search."""
-    model = program_or_model if isinstance(program_or_model, Model) else \
-        prepare(program_or_model, list(properties), options)
+    return check_model(prepare(program, list(properties), options), progress)
+
+
+def check_model(model: Model, progress: ProgressFactory = lambda: None) -> CheckReport:
+    """``check`` on a prepared model; ``progress()`` gives each search its progress line."""
     system, options = model.system, model.options
     bounds = dict(max_states=options.max_states, max_seconds=options.max_seconds)
     facts = ExploredFacts(model.program, [prop.formula for prop in model.properties], model.atoms)

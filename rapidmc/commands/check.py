@@ -22,7 +22,7 @@ from ..check.junit import format_junit, format_junit_diagnostics
 from ..check.sarif import format_sarif, format_sarif_diagnostics
 from ..diagnostics import USAGE, UserError, error, render_all
 from ..ltl import BACKENDS
-from ..backup import add_program_arguments, load_tasks, resolve_program_files
+from ..backup import add_program_arguments
 from ..properties import Property, check_unique, read_property_file
 from .quoting import quoted, routine_name
 from .report_file import write_report
@@ -134,9 +134,8 @@ def prepare_model(args: argparse.Namespace) -> api.Model:
     """The program and properties named by ``check``'s arguments, ready to search."""
     properties = gather_properties(args)
     options = check_options(args)
-    files = resolve_program_files(args)
-    program = api.load_program(files.modules, args.env, entry=args.entry, signals=files.signals,
-                               tasks=load_tasks(files))
+    program = api.load_program(args.files, args.env, entry=args.entry, task=args.task,
+                               all_tasks=args.all_tasks, add_tasks=args.add_task, eio=args.eio)
     return api.prepare(program, properties, options)
 
 
@@ -157,7 +156,7 @@ def execute(args: argparse.Namespace) -> int:
 def _check(args: argparse.Namespace) -> int:
     if args.html:
         check_html_target(args.html)
-    report = api.check(prepare_model(args), progress=lambda: _progress(args.quiet))
+    report = api.check_model(prepare_model(args), progress=lambda: _progress(args.quiet))
     results, describer, warnings = report.results, report.describer, report.warnings
     exit_code = report.exit_code(args.fail_on_vacuous)
     if args.html:
