@@ -15,6 +15,7 @@ import pytest
 
 from rapidmc.cli import main
 from test_check_cases import _data_lines, report_of, verdict_cases
+from test_html_report import browser  # noqa: F401  (the headless Chromium fixture)
 
 ROOT = Path(__file__).resolve().parent.parent
 CASES = {case.name: case for case in verdict_cases()}
@@ -67,3 +68,29 @@ def test_text_sarif_and_json_carry_the_same_warning(monkeypatch, capsys):
     assert run["tool"]["driver"]["rules"][warning["ruleIndex"]]["id"] == "RMC701"
     region = warning["locations"][0]["physicalLocation"]["region"]
     assert (region["startLine"], region["startColumn"]) == (84, 21)
+
+
+def test_the_html_page_carries_the_unreached_statements(monkeypatch, capsys, tmp_path):
+    monkeypatch.chdir(ROOT)
+    page = tmp_path / "report.html"
+    main(sorter("sorter_b.mod", "--html", str(page)))
+    capsys.readouterr()
+    text = page.read_text()
+    data = json.loads(text.split('id="report-data"', 1)[1].split(">", 1)[1].split("</script>")[0])
+    assert data["unreached"] == [{"file": "case_studies/sorter/sorter_b.mod", "line": 84,
+                                  "message": "never reached under any input"}]
+
+
+def test_the_html_page_shades_the_unreached_line(browser, monkeypatch, capsys, tmp_path):
+    from test_html_report import Page
+    monkeypatch.chdir(ROOT)
+    path = tmp_path / "report.html"
+    main(sorter("sorter_b.mod", "--html", str(path)))
+    capsys.readouterr()
+    page = Page(browser, path)
+    page.click('#file-tabs button[title="case_studies/sorter/sorter_b.mod"]')
+    shaded = browser.execute_script(
+        "return [...document.querySelectorAll('.source .file:not([hidden]) .line.unreached')]"
+        ".map((line) => [Number(line.dataset.line), line.title, "
+        "line.querySelector('.text').textContent.trim()])")
+    assert shaded == [[84, "never reached under any input", "SetDO c_out, 1;"]]

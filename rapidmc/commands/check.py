@@ -160,7 +160,7 @@ def _check(args: argparse.Namespace) -> int:
     results, describer, warnings = report.results, report.describer, report.warnings
     exit_code = report.exit_code(args.fail_on_vacuous)
     if args.html:
-        write_html(args.html, results, describer)
+        write_html(args.html, results, describer, warnings)
     if args.format == "json":
         print(format_json(results, describer, warnings, getattr(args, "command_line", None)))
     elif args.format == "sarif":
