@@ -32,7 +32,9 @@ class ExploredFacts:
         self.program = program
         self.statements = StatementWatch()
         self.triggers = TriggerWatch(formulas)
-        self.valuation = atoms.valuation(self.triggers.atoms, {})
+        # no trigger to watch: no atom to evaluate (evaluating costs a machine per state)
+        self.valuation = atoms.valuation(self.triggers.atoms, {}) if self.triggers.atoms \
+            else _no_atoms
         self.complete = False
 
     def __call__(self, state: Hashable, successors: Sequence[tuple[Hashable, Hashable]]) -> None:
@@ -64,6 +66,10 @@ class ExploredFacts:
             return None
         trigger = self.triggers.never_true(formula)
         return to_text(trigger) if trigger is not None else None
+
+
+def _no_atoms(state: Hashable) -> int:
+    return 0
 
 
 def _nothing(state: Hashable) -> bool:
