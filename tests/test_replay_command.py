@@ -127,3 +127,15 @@ def test_a_property_without_counterexample_is_named(monkeypatch, capsys, tmp_pat
     assert code == 2 and "property 'P1' is HOLDS" in err
     code, _, err = replay(capsys, str(tmp_path / "trace.json"), "--property", "P9")
     assert code == 2 and "has no property 'P9'" in err
+
+
+def test_replay_from_another_directory_says_where_to_run_it(monkeypatch, capsys, tmp_path):
+    monkeypatch.chdir(ROOT)
+    save_report(capsys, ["check", *STUDIES["door_race"], "--quiet", "--format", "json"],
+                tmp_path / "trace.json")
+    monkeypatch.chdir(tmp_path)
+    code, _, err = replay(capsys, "trace.json")
+    assert code == 2 and "[RMC001]" in err
+    assert "note: the program is rebuilt from the check command recorded in 'trace.json' " \
+           "(check case_studies/door/door_race.mod" in err
+    assert "run replay from the directory check ran in" in err

@@ -15,11 +15,12 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+from dataclasses import replace
 from typing import Optional
 
 from ..check.report import step_lines
 from ..check.trace import INITIAL, Change, TraceStep, TransitionInfo
-from ..diagnostics import EXIT_OK, TRACE_DIVERGED, TRACE_FILE, SourceCache, error
+from ..diagnostics import EXIT_OK, TRACE_DIVERGED, TRACE_FILE, SourceCache, UserError, error
 from ..trace_replay import ReplayedStep, SavedStep, SavedTrace, TraceDiverged, follow
 from .. import ast
 from .quoting import one_line, quoted
@@ -95,7 +96,13 @@ def _model(document: dict, path: str):
             and all(isinstance(word, str) for word in command)):
         raise error(TRACE_FILE, f"'{path}' does not record the check command that wrote it "
                     "(reports of rapidmc check --format json do)")
-    return prepare_model(build_parser().parse_args(command))
+    try:
+        return prepare_model(build_parser().parse_args(command))
+    except UserError as exc:
+        note = (f"the program is rebuilt from the check command recorded in '{path}' "
+                f"({' '.join(command)}): run replay from the directory check ran in")
+        raise UserError([replace(d, notes=d.notes + (note,)) for d in exc.diagnostics],
+                        exc.exit_code) from None
 
 
 def _saved_trace(entry: dict, path: str) -> SavedTrace:
