@@ -13,6 +13,7 @@ from pathlib import Path
 
 import pytest
 
+from rapidmc import api
 from rapidmc.cli import main
 from test_check_cases import _data_lines, report_of, verdict_cases
 from test_html_report import browser  # noqa: F401  (the headless Chromium fixture)
@@ -94,3 +95,36 @@ def test_the_html_page_shades_the_unreached_line(browser, monkeypatch, capsys, t
         ".map((line) => [Number(line.dataset.line), line.title, "
         "line.querySelector('.text').textContent.trim()])")
     assert shaded == [[84, "never reached under any input", "SetDO c_out, 1;"]]
+
+
+# --- differential: each warning checked by an independent LTL search ---------------------
+
+PLAIN_CASES = [case for case in CASES.values() if not case.extra_args]
+
+
+@pytest.mark.parametrize("case", PLAIN_CASES, ids=lambda case: case.name)
+def test_an_unreached_statement_is_never_about_to_run(case, monkeypatch):
+    """``G !AtLine(L)`` holds for every reported line and every line of a routine reported
+    as never running (``G !InRoutine(R)`` for the routine itself), and fails for every
+    other statement line of the program."""
+    monkeypatch.chdir(case.folder)
+    env = ["env.mod"] if (case.folder / "env.mod").exists() else []
+    program = api.load_program(["prog.mod"], env=env)
+    report = api.check(program)
+    routines = {r.span.line: r for r in program.routines if r.namespace == 0}
+    reported = {w.span.line for w in report.warnings}
+    dead = set(reported)
+    for line in reported & set(routines):
+        dead |= statement_lines(routines[line])
+    for number, line in enumerate(sorted(set().union(*map(statement_lines, routines.values()),
+                                                    reported)), start=1):
+        routine = routines.get(line)
+        atom = f'"InRoutine(\\"{routine.name}\\")"' if routine else f'"AtLine({line})"'
+        never = api.property_from_text(f"never: G !{atom}", number)
+        verdict = api.check(program, [never]).verdicts["never"]
+        assert (verdict == "HOLDS") == (line in dead), (line, verdict)
+
+
+def statement_lines(routine) -> set[int]:
+    return {i.span.line for i in routine.code if i.span is not None and
+            type(i).__name__ not in ("EndRoutine", "EndUndo")}

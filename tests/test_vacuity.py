@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 
 import rapidmc.check.vacuity as vacuity
+from rapidmc import api
 from rapidmc.cli import main
 from rapidmc.ltl import parse_formula, to_text
 from test_check_cases import _data_lines, report_of, verdict_cases
@@ -77,3 +78,30 @@ def test_triggers_are_the_state_condition_antecedents(formula, expected):
 
 def test_the_module_example_runs():
     assert doctest.testmod(vacuity).failed == 0
+
+
+# --- differential: every claim and every non-claim, checked by an independent search -------
+
+PLAIN_CASES = [case for case in CASES.values()
+               if not case.extra_args and (case.folder / "props.ltl").exists()]
+
+
+@pytest.mark.parametrize("case", PLAIN_CASES, ids=lambda case: case.name)
+def test_a_trigger_is_reported_exactly_when_G_not_trigger_holds(case, monkeypatch):
+    """For each holding property, its first trigger for which the LTL search proves
+    ``G !trigger`` is the one reported as never true (and none when there is none)."""
+    monkeypatch.chdir(case.folder)
+    env = ["env.mod"] if (case.folder / "env.mod").exists() else []
+    program = api.load_program(["prog.mod"], env=env)
+    report = api.check(program, api.read_properties("props.ltl"))
+    for prop in api.read_properties("props.ltl"):
+        checked = report.result(prop.name)
+        if checked.result.verdict != "HOLDS":
+            continue
+        never = None
+        for number, trigger in enumerate(vacuity.triggers(prop.formula), start=1):
+            absent = api.property_from_text(f"absent: G !({to_text(trigger)})", number)
+            if api.check(program, [absent]).verdicts["absent"] == "HOLDS":
+                never = to_text(trigger)
+                break
+        assert checked.vacuous == never, prop.name
