@@ -102,3 +102,13 @@ def test_an_unwritable_report_file_is_a_diagnostic(monkeypatch, capsys, tmp_path
     assert code == 2
     err = capsys.readouterr().err
     assert "cannot write the JUnit report" in err and "[RMC506]" in err
+
+
+def test_vacuity_and_coverage_warnings_are_in_system_out(monkeypatch, capsys, tmp_path):
+    case = load_case(CASES_DIR / "vacuity_trigger_never")
+    suite = junit_report(monkeypatch, capsys, case.folder, case.argv(), tmp_path)
+    outputs = {c.get("name"): c.findtext("system-out") for c in suite.findall("testcase")}
+    assert outputs["served_after_request"] == 'HOLDS vacuously: "request" is never true\n'
+    assert outputs["wraps"] is None
+    assert "prog.mod:12:17: warning: never reached under any input [RMC701]" in \
+        suite.findtext("system-out")

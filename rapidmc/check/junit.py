@@ -6,7 +6,9 @@ per property (the built-in checks included):
 * HOLDS — a passed test case;
 * VIOLATED — a ``<failure>`` whose ``message`` is the formula and whose
   text is the counterexample as ``rapidmc check`` prints it;
-* UNKNOWN — ``<skipped>`` with the reason the search stopped.
+* UNKNOWN — ``<skipped>`` with the reason the search stopped;
+* a property that holds vacuously says so in its ``<system-out>``, and
+  coverage warnings are listed in the suite's ``<system-out>``.
 
 Input errors (syntax, static errors, malformed properties) become one test
 case ``input`` with an ``<error>`` per diagnostic, so that a CI job shows
@@ -20,7 +22,7 @@ import xml.etree.ElementTree as ET
 from typing import Sequence
 
 from ..diagnostics import Diagnostic, render
-from .report import PropertyResult, counterexample_lines
+from .report import PropertyResult, counterexample_lines, vacuity_text
 from .result import UNKNOWN, VIOLATED
 from .trace import TraceDescriber, build_trace
 
@@ -29,11 +31,13 @@ _NOT_XML = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ufffe\uffff]")
 
 
 def format_junit(results: Sequence[PropertyResult], describer: TraceDescriber,
-                 suite_name: str, class_name: str) -> str:
+                 suite_name: str, class_name: str, warnings: Sequence[Diagnostic] = ()) -> str:
     """The JUnit document for the verdicts of one ``check`` run."""
     suite = _suite(suite_name)
     for checked in results:
         _property_case(suite, checked, describer, class_name)
+    if warnings:
+        ET.SubElement(suite, "system-out").text = "\n".join(render(w) for w in warnings) + "\n"
     return _document(suite)
 
 
@@ -69,6 +73,8 @@ def _property_case(suite: ET.Element, checked: PropertyResult, describer: TraceD
         failure = ET.SubElement(case, "failure", message=checked.formula, type=VIOLATED)
         lines = counterexample_lines(build_trace(result, describer))
         failure.text = "\n".join(line[2:] for line in lines) + "\n"
+    if checked.vacuous is not None:
+        ET.SubElement(case, "system-out").text = f"HOLDS {vacuity_text(checked.vacuous)}\n"
 
 
 def _document(suite: ET.Element) -> str:

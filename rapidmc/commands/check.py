@@ -171,7 +171,8 @@ def _check(args: argparse.Namespace) -> int:
         if warnings:
             print(render_all(warnings), file=sys.stderr)
     if args.junit:
-        write_report(args.junit, format_junit(results, describer, *_suite(args)), "JUnit report")
+        write_report(args.junit, format_junit(results, describer, *_suite(args), warnings),
+                     "JUnit report")
     return exit_code
 
 
