@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from typing import Hashable, Iterable, Optional, Sequence
 
-from .check import HOLDS, find_reachable
+from .check import HOLDS, VIOLATED, find_reachable
 from .check.result import SearchResult
 from .check.vacuity import TriggerWatch, to_text
 from .coverage import StatementWatch, unreached
@@ -44,11 +44,12 @@ class ExploredFacts:
     def finish(self, system, search: SearchResult, **bounds) -> None:
         """Mark complete after ``search`` (a search this watched) covered every state.
 
-        A search that stopped early (a run-time error found, a bound reached)
-        is followed by one that looks for nothing and so covers every state
-        unless a bound stops it too.
+        A search that stopped at a run-time error is followed by one that looks
+        for nothing and so covers every state unless a bound stops it; one that
+        a bound stopped leaves the facts incomplete (the same bound would stop
+        another).
         """
-        if search.verdict != HOLDS:
+        if search.verdict == VIOLATED:
             self.statements.executed.clear()
             self.triggers.seen.clear()
             search = find_reachable(system, _nothing, observe=self, **bounds)
