@@ -28,6 +28,8 @@ SUBCOMMANDS = {
     "run": "execute a RAPID program with the FlexPendant on the console",
     "check": "model-check a RAPID program against LTL properties",
     "ltl": "translate an LTL formula to a Büchi automaton (HOA format)",
+    "replay": "re-execute a counterexample saved by 'check --format json'",
+    "graph": "write the reachable state graph (GraphML, GEXF or DOT)",
 }
 
 
@@ -67,6 +69,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     try:
         parser = build_parser()
         args = parser.parse_args(argv)
+        args.command_line = list(sys.argv[1:] if argv is None else argv)   # recorded in reports
         if args.command is None:
             parser.print_help(sys.stderr)
             return EXIT_INPUT_ERROR

@@ -100,10 +100,16 @@ STATE_LIMIT = _code("RMC501", "state-limit", "the search reached --max-states or
 DOMAIN = _code("RMC502", "domain", "a nondeterministic input has no finite domain")
 ENVIRONMENT = _code("RMC503", "environment", "the environment model is invalid")
 TRACE_REPLAY = _code("RMC504", "trace-replay", "a counterexample did not replay (internal)")
+OUTPUT_FILE = _code("RMC506", "output-file", "a report file (--junit, graph -o) cannot be written")
+TRACE_DIVERGED = _code("RMC507", "trace-diverged", "the program no longer follows a saved counterexample (replay)")
+TRACE_FILE = _code("RMC508", "trace-file", "a trace file is not a usable report of check --format json")
 HTML_OUTPUT = _code("RMC520", "html-output", "the HTML report file cannot be written")
 
 # --- usage (6xx) --------------------------------------------------------------------
 USAGE = _code("RMC601", "usage", "bad command-line usage")
+
+# --- warnings (7xx): reported beside the verdicts, never a failure on their own ------
+NEVER_REACHED = _code("RMC701", "never-reached", "a statement no input sequence reaches (after a complete search)")
 
 
 @dataclass(frozen=True)

@@ -29,7 +29,7 @@ from typing import Callable, Optional
 
 from . import ast
 from .diagnostics import (ATOM, DUPLICATE_PROPERTY, FILE_NOT_FOUND, PROPERTY_FILE,
-                          Diagnostic, SourceCache, UserError, error)
+                          UNKNOWN_NAME, Diagnostic, SourceCache, UserError, error)
 from .ltl import Formula, parse_formula, to_text
 from .semantics.errors import RapidError
 from .semantics.expressions import Compiled, ExpressionCompiler, constant
@@ -135,6 +135,31 @@ def _relocate(diagnostic: Diagnostic, where: ast.Span) -> Diagnostic:
     return Diagnostic(ATOM, f"in atom: {diagnostic.message}", span)
 
 
+_OPERATORS_THEN_NAME = re.compile(r"([FGX]+)([A-Za-z_][A-Za-z0-9_]*)")
+
+
+def operators_spelled_out(word: str, is_known: Callable[[str], bool]) -> Optional[str]:
+    """``GFa`` -> ``G F a``: a word that starts with unary operator letters, spaced.
+
+    Among the ways to split off the operator letters (``GFlag``: ``G Flag``
+    or ``G F lag``) the one leaving a known name is preferred, else the
+    longest run of operators.  None when the word does not start that way.
+
+    >>> operators_spelled_out("XXb", lambda name: False)
+    'X X b'
+    >>> operators_spelled_out("GFlag", lambda name: name == "FLAG")
+    'G Flag'
+    """
+    match = _OPERATORS_THEN_NAME.fullmatch(word)
+    if match is None:
+        return None
+    run = match.group(1)
+    splits = [(word[:k], word[k:]) for k in range(len(run), 0, -1)]
+    operators, name = next(((ops, rest) for ops, rest in splits if is_known(rest.upper())),
+                           splits[0])
+    return " ".join([*operators, name])
+
+
 class AtomCompiler:
     """Compiles atoms to ``fn(machine) -> bool`` over a program's global state."""
 
@@ -170,7 +195,8 @@ class AtomCompiler:
         try:
             compiled = self._compile(expr)
         except UserError as exc:
-            raise UserError([Diagnostic(ATOM, f"atom \"{atom}\": {d.message}", where)
+            notes = self._operator_notes(atom, where, exc.diagnostics)
+            raise UserError([Diagnostic(ATOM, f"atom \"{atom}\": {d.message}", where, notes=notes)
                              for d in exc.diagnostics]) from None
         fn = compiled.fn
         if compiled.type is NUM and isinstance(expr, ast.NameRef):
@@ -186,6 +212,18 @@ class AtomCompiler:
             except RapidError:
                 return False
         return safe
+
+    def _operator_notes(self, atom: str, where: ast.Span, diagnostics) -> tuple[str, ...]:
+        """For an unknown bare name like ``GFa``: Spot's reading, spaced (``G F a``)."""
+        line = SourceCache.line(where.file, where.line) or ""
+        written_bare = line[where.column - 1:where.column - 1 + len(atom)] == atom
+        if not written_bare or not any(d.code is UNKNOWN_NAME for d in diagnostics):
+            return ()
+        spaced = operators_spelled_out(atom, lambda name: self.scope.lookup(name) is not None)
+        if spaced is None:
+            return ()
+        return (f"rapidmc reads the word {atom} as one name, while Spot reads it as operators "
+                f"applied to a name; for the operators write '{spaced}' (with spaces)",)
 
     def _compile(self, expr: ast.Expr) -> Compiled:
         return _AtomExpressions(self).value(expr)

@@ -128,6 +128,18 @@ def all_cases() -> list:
     return params
 
 
+def verdict_cases() -> list[Case]:
+    """The cases that expect verdicts (no input error, no known bug), for other test files."""
+    cases = [load_case(folder) for folder in sorted(CASES_DIR.iterdir()) if folder.is_dir()]
+    return [case for case in cases if case.error is None and case.xfail is None]
+
+
+def report_of(case: Case, monkeypatch) -> tuple[int, dict]:
+    """The exit code and the JSON report of a verdict case."""
+    code, stdout, _ = run_check(case, monkeypatch)
+    return code, json.loads(stdout)
+
+
 def run_check(case: Case, monkeypatch) -> tuple[int, str, str]:
     monkeypatch.chdir(case.folder)
     out, err = io.StringIO(), io.StringIO()

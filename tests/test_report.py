@@ -131,11 +131,13 @@ STATS_KEYS = ["product_states", "model_states", "transitions", "max_depth", "sec
 
 def test_json_follows_the_documented_schema():
     document = json.loads(format_json(cell_results(), CellDescriber()))
-    assert list(document) == ["schema", "properties"] and document["schema"] == "rapidmc-check/1"
+    assert list(document) == ["schema", "command", "properties", "warnings"]
+    assert document["schema"] == "rapidmc-check/1" and document["warnings"] == []
     properties = document["properties"]
     assert [p["verdict"] for p in properties] == ["HOLDS", "VIOLATED", "UNKNOWN", "VIOLATED"]
     for entry in properties:
-        assert list(entry) == ["name", "formula", "verdict", "reason", "stats", "trace"]
+        assert list(entry) == ["name", "formula", "verdict", "reason", "stats", "trace",
+                               "vacuous"]
         assert list(entry["stats"]) == STATS_KEYS
         assert (entry["trace"] is None) == (entry["verdict"] != "VIOLATED")
     assert properties[2]["reason"] == "state limit 2 reached"

@@ -28,7 +28,7 @@ from pathlib import Path
 from typing import Mapping, Optional, Sequence
 
 from .. import __version__
-from ..diagnostics import HTML_OUTPUT, SourceCache, error
+from ..diagnostics import HTML_OUTPUT, Diagnostic, SourceCache, error
 from .report import PropertyResult, property_json, step_json
 from .result import VIOLATED
 from .trace import Trace, TraceDescriber, TraceStep, build_trace
@@ -47,9 +47,10 @@ SLOTS = ("<!--rapidmc:title-->", "/*rapidmc:style*/", "<!--rapidmc:data-->", "/*
 # --- the page -----------------------------------------------------------------
 
 
-def write_html(path: str, results: Sequence[PropertyResult], describer: TraceDescriber) -> None:
+def write_html(path: str, results: Sequence[PropertyResult], describer: TraceDescriber,
+               warnings: Sequence[Diagnostic] = ()) -> None:
     """Write the report page to ``path``; a path that cannot be written is a diagnostic."""
-    text = format_html(results, describer)
+    text = format_html(results, describer, warnings)
     try:
         Path(path).write_text(text, encoding="utf-8")
     except OSError as exc:
@@ -69,9 +70,10 @@ def _unwritable(path: str, why: str):
     return error(HTML_OUTPUT, f"cannot write the HTML report '{path}': {why}")
 
 
-def format_html(results: Sequence[PropertyResult], describer: TraceDescriber) -> str:
+def format_html(results: Sequence[PropertyResult], describer: TraceDescriber,
+                warnings: Sequence[Diagnostic] = ()) -> str:
     """The whole page: template with the style, the script and the report data inlined."""
-    data = page_data(results, describer)
+    data = page_data(results, describer, warnings)
     title = "rapidmc check: " + (", ".join(Path(f["name"]).name for f in data["files"]) or
                                  "report")
     values = {SLOTS[0]: markup.escape(title), SLOTS[1]: _asset("page.css"),
@@ -94,8 +96,12 @@ def _script_json(data: dict) -> str:
 # --- the data -----------------------------------------------------------------
 
 
-def page_data(results: Sequence[PropertyResult], describer: TraceDescriber) -> dict:
-    """Everything the page shows, as one JSON-ready dictionary."""
+def page_data(results: Sequence[PropertyResult], describer: TraceDescriber,
+              warnings: Sequence[Diagnostic] = ()) -> dict:
+    """Everything the page shows, as one JSON-ready dictionary.
+
+    ``warnings``: coverage warnings, whose statements the source view shades.
+    """
     properties = []
     located: list[str] = []
     for checked in results:
@@ -105,8 +111,11 @@ def page_data(results: Sequence[PropertyResult], describer: TraceDescriber) -> d
             located.extend(s["location"]["file"] for s in entry["trace"]["steps"]
                            if s["location"])
         properties.append(entry)
+    unreached = [{"file": w.span.file, "line": w.span.line, "message": w.message}
+                 for w in warnings if w.span is not None]
+    located.extend(entry["file"] for entry in unreached)
     return {"tool": f"rapidmc {__version__}", "files": source_files(describer, located),
-            "properties": properties}
+            "properties": properties, "unreached": unreached}
 
 
 def trace_view(trace: Trace) -> dict:

@@ -9,11 +9,16 @@ without finding one, UNKNOWN when a bound stopped the search first.
 States without successors are deadlocks; with ``deadlock_is_target`` they
 count as bad states themselves (otherwise they are counted in the
 statistics and the search goes on).
+
+``observe(state, successors)``, when given, sees every state the search
+expands with its labelled successors: after a HOLDS verdict (a complete
+search) it has seen the whole reachable state graph, which is what
+coverage and vacuity are computed from.
 """
 from __future__ import annotations
 
 from array import array
-from typing import Callable, Hashable, Optional
+from typing import Callable, Hashable, Optional, Sequence
 
 from .budget import DEFAULT_MAX_STATES, SearchBudget
 from .model import TransitionSystem, as_sequence
@@ -21,15 +26,18 @@ from .progress import Progress
 from .result import (HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep,
                      SearchResult, SearchStats)
 
+Observer = Callable[[Hashable, Sequence[tuple[Hashable, Hashable]]], None]
+
 
 def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], bool], *,
                    max_states: Optional[int] = DEFAULT_MAX_STATES,
                    max_seconds: Optional[float] = None,
                    progress: Optional[Progress] = None,
-                   deadlock_is_target: bool = False) -> SearchResult:
+                   deadlock_is_target: bool = False,
+                   observe: Optional[Observer] = None) -> SearchResult:
     """Shortest path to a state where ``predicate`` holds; see the module docstring."""
     budget = SearchBudget(max_states, max_seconds, progress)
-    search = _BreadthFirst(system, predicate, budget, deadlock_is_target)
+    search = _BreadthFirst(system, predicate, budget, deadlock_is_target, observe)
     target = search.run()
     stats = search.stats()
     stats.seconds = budget.finish()
@@ -43,8 +51,10 @@ def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], boo
 class _BreadthFirst:
     """States by id, each with the id of the state it was first reached from."""
 
-    def __init__(self, system, predicate, budget: SearchBudget, deadlock_is_target: bool):
+    def __init__(self, system, predicate, budget: SearchBudget, deadlock_is_target: bool,
+                 observe: Optional[Observer] = None):
         self.system = system
+        self.observe = observe
         self.predicate = predicate
         self.budget = budget
         self.deadlock_is_target = deadlock_is_target
@@ -92,6 +102,8 @@ class _BreadthFirst:
 
     def _expand(self, state_id: int) -> Optional[int]:
         successors = as_sequence(self.system.successors(self.states[state_id]))
+        if self.observe is not None:
+            self.observe(self.states[state_id], successors)
         self.transitions += len(successors)
         if not successors:
             self.deadlocks += 1

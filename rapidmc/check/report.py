@@ -23,6 +23,7 @@ import json
 from dataclasses import dataclass
 from typing import Optional, Sequence
 
+from ..diagnostics import Diagnostic
 from .result import UNKNOWN, VIOLATED, SearchResult, SearchStats
 from .trace import INITIAL, Change, Trace, TraceDescriber, TraceStep, build_trace
 
@@ -37,6 +38,7 @@ class PropertyResult:
     name: str
     formula: str
     result: SearchResult
+    vacuous: Optional[str] = None    # a trigger never true in any reachable state (HOLDS only)
 
 
 # --- text ---------------------------------------------------------------------
@@ -63,7 +65,14 @@ def verdict_line(checked: PropertyResult) -> str:
     figures = statistics_text(result.stats)
     if result.verdict == UNKNOWN and result.reason:
         figures = f"{result.reason}; {figures}"
+    if checked.vacuous is not None:
+        figures = f"{vacuity_text(checked.vacuous)}; {figures}"
     return f"{checked.name}: {result.verdict} ({figures})"
+
+
+def vacuity_text(trigger: str) -> str:
+    """``vacuously: "!C_IN & S_1" is never true``."""
+    return f"vacuously: {json.dumps(trigger, ensure_ascii=False)} is never true"
 
 
 def statistics_text(stats: SearchStats) -> str:
@@ -126,10 +135,13 @@ def _change_text(change: Change) -> str:
 # --- JSON ---------------------------------------------------------------------
 
 
-def format_json(results: Sequence[PropertyResult], describer: TraceDescriber) -> str:
+def format_json(results: Sequence[PropertyResult], describer: TraceDescriber,
+                warnings: Sequence[Diagnostic] = (), command: Optional[Sequence[str]] = None) -> str:
     """The JSON document of docs/json-output.md, indented, keys in schema order."""
     document = {"schema": SCHEMA,
-                "properties": [property_json(checked, describer) for checked in results]}
+                "command": list(command) if command is not None else None,
+                "properties": [property_json(checked, describer) for checked in results],
+                "warnings": [warning_json(warning) for warning in warnings]}
     return json.dumps(document, indent=2, ensure_ascii=False) + "\n"
 
 
@@ -139,7 +151,14 @@ def property_json(checked: PropertyResult, describer: TraceDescriber) -> dict:
     if result.verdict == VIOLATED:
         trace = trace_json(build_trace(result, describer))
     return {"name": checked.name, "formula": checked.formula, "verdict": result.verdict,
-            "reason": result.reason, "stats": result.stats.as_dict(), "trace": trace}
+            "reason": result.reason, "stats": result.stats.as_dict(), "trace": trace,
+            "vacuous": checked.vacuous}
+
+
+def warning_json(warning: Diagnostic) -> dict:
+    span = warning.span
+    location = {"file": span.file, "line": span.line, "column": span.column} if span else None
+    return {"code": warning.code.code, "message": warning.message, "location": location}
 
 
 def trace_json(trace: Trace) -> dict:

@@ -25,7 +25,7 @@ SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 
 
 def format_sarif(results: Sequence[PropertyResult], describer: TraceDescriber,
-                 exit_code: int) -> str:
+                 exit_code: int, warnings: Sequence[Diagnostic] = ()) -> str:
     rules = [_rule(checked.name, checked.formula) for checked in results]
     sarif_results = []
     for index, checked in enumerate(results):
@@ -37,25 +37,31 @@ def format_sarif(results: Sequence[PropertyResult], describer: TraceDescriber,
                 "ruleId": checked.name, "ruleIndex": index, "level": "warning",
                 "message": {"text": f"{checked.name}: UNKNOWN ({result.reason}): no violation "
                                     "found, but the search was bounded"}})
+    _diagnostic_results(warnings, rules, sarif_results)
     return _document(rules, sarif_results, exit_code)
 
 
 def format_sarif_diagnostics(diagnostics: Sequence[Diagnostic], exit_code: int) -> str:
     """Input errors as SARIF results (one rule per diagnostic code)."""
-    codes = sorted({d.code.code for d in diagnostics})
-    rules = []
-    for code in codes:
+    rules: list = []
+    results: list = []
+    _diagnostic_results(diagnostics, rules, results)
+    return _document(rules, results, exit_code)
+
+
+def _diagnostic_results(diagnostics: Sequence[Diagnostic], rules: list, results: list) -> None:
+    """Append a result per diagnostic (level: its severity) and a rule per new code."""
+    for code in sorted({d.code.code for d in diagnostics}):
         entry = next(d.code for d in diagnostics if d.code.code == code)
         rules.append(_rule(code, entry.summary))
-    results = []
+    indices = {rule["id"]: index for index, rule in enumerate(rules)}
     for diagnostic in diagnostics:
-        result = {"ruleId": diagnostic.code.code, "ruleIndex": codes.index(diagnostic.code.code),
-                  "level": "error", "message": {"text": diagnostic.message}}
+        result = {"ruleId": diagnostic.code.code, "ruleIndex": indices[diagnostic.code.code],
+                  "level": diagnostic.severity, "message": {"text": diagnostic.message}}
         if diagnostic.span is not None and diagnostic.span.line > 0:
             result["locations"] = [_location(diagnostic.span.file, diagnostic.span.line,
                                              diagnostic.span.column)]
         results.append(result)
-    return _document(rules, results, exit_code)
 
 
 def _document(rules: list, results: list, exit_code: int) -> str:

@@ -13,33 +13,40 @@ from __future__ import annotations
 import argparse
 import math
 import sys
-from typing import Optional
+from pathlib import Path
 
-from .. import ast
-from ..check import (HOLDS, UNKNOWN, VIOLATED, Progress, PropertyResult, check_property,
-                     find_reachable, format_json, format_text)
+from .. import api
+from ..check import Progress, format_json, format_text
 from ..check.html import check_html_target, write_html
+from ..check.junit import format_junit, format_junit_diagnostics
 from ..check.sarif import format_sarif, format_sarif_diagnostics
-from ..diagnostics import (AUTOMATON, DOMAIN, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN,
-                           EXIT_VIOLATED, TRACE_REPLAY, USAGE, SourceCache, UserError, error,
-                           render_all)
-from ..ltl import BACKENDS, read_hoa, to_buchi, to_text
-from ..ltl.syntax import Not
-from ..backup import add_program_arguments, load_tasks, resolve_program_files
-from ..model import RapidDescriber, RapidSystem, replay, with_final_loop
-from ..properties import (AtomCompiler, Property, check_unique, parse_property,
-                          read_property_file)
-from ..semantics.link import build
-from ..semantics.step import CheckConfig, EnvironmentFault
-from ..syntax import load_program
-from .quoting import one_line, quoted, routine_name
+from ..diagnostics import USAGE, UserError, error, render_all
+from ..ltl import BACKENDS
+from ..backup import add_program_arguments
+from ..properties import Property, check_unique, read_property_file
+from .quoting import quoted, routine_name
+from .report_file import write_report
 
 DEFAULT_MAX_STATES = 1_000_000
-BUILTIN_RUNTIME = "no_runtime_error"
-BUILTIN_DEADLOCK = "no_deadlock"
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
+    add_model_arguments(parser)
+    parser.add_argument("--format", choices=("text", "json", "sarif"), default="text",
+                        help="output format (default: text); sarif: SARIF 2.1.0 for CI and "
+                             "code-scanning tools, input errors included")
+    parser.add_argument("--html", metavar="FILE", default=None,
+                        help="also write a self-contained HTML report: verdicts, and each "
+                             "counterexample as a player with the source and a timeline")
+    parser.add_argument("--junit", metavar="FILE", default=None,
+                        help="also write a JUnit XML report to FILE (one test case per property)")
+    parser.add_argument("--fail-on-vacuous", action="store_true",
+                        help="exit 1 when a property holds only because its trigger is never true")
+    parser.add_argument("--quiet", action="store_true", help="no progress line on stderr")
+
+
+def add_model_arguments(parser: argparse.ArgumentParser) -> None:
+    """The options that say what to search: program, properties, inputs, bounds (``graph`` too)."""
     parser.add_argument("files", nargs="+", metavar="FILE",
                         help="RAPID module files of the program (.mod, .sys, .pgf ...), or a "
                              "controller backup folder")
@@ -56,13 +63,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help=f"bound on stored states per search (default {DEFAULT_MAX_STATES:,})")
     parser.add_argument("--max-seconds", type=float, default=None, metavar="S",
                         help="bound on the time of each search")
-    parser.add_argument("--format", choices=("text", "json", "sarif"), default="text",
-                        help="output format (default: text); sarif: SARIF 2.1.0 for CI and "
-                             "code-scanning tools, input errors included")
-    parser.add_argument("--html", metavar="FILE", default=None,
-                        help="also write a self-contained HTML report: verdicts, and each "
-                             "counterexample as a player with the source and a timeline")
-    parser.add_argument("--quiet", action="store_true", help="no progress line on stderr")
     parser.add_argument("--tp-answers", default="1,2,3", metavar="LIST",
                         help="answers TPReadNum/TPReadDnum may get (default: 1,2,3)")
     parser.add_argument("--fk-answers", default="1,2,3,4,5", metavar="LIST",
@@ -112,19 +112,42 @@ def gather_properties(args) -> list[Property]:
     for path in args.ltl:
         properties.extend(read_property_file(path))
     for number, text in enumerate(args.formula, start=1):
-        name = f"<formula-{number}>"   # no space: diagnostics open with FILE:LINE:COL
-        SourceCache.remember(name, text)
-        properties.append(parse_property(text, name, 1))
+        properties.append(api.property_from_text(text, number))
     check_unique(properties)
     return properties
 
 
+def check_options(args: argparse.Namespace) -> api.CheckOptions:
+    """The options of ``check`` as the API takes them."""
+    return api.CheckOptions(
+        tp_answers=_numbers(args.tp_answers, "--tp-answers"),
+        fk_answers=_numbers(args.fk_answers, "--fk-answers"),
+        input_domains={name.upper(): _numbers(values, "--input-domain")
+                       for name, values in _pairs(args.input_domain, "--input-domain").items()},
+        socket_messages=tuple(args.socket_messages), socket_closures=args.socket_closures,
+        socket_timeouts=not args.no_socket_timeouts, file_lines=tuple(args.file_lines),
+        automata=_pairs(args.automaton, "--automaton"), backend=args.backend,
+        max_states=args.max_states, max_seconds=args.max_seconds)
+
+
+def prepare_model(args: argparse.Namespace) -> api.Model:
+    """The program and properties named by ``check``'s arguments, ready to search."""
+    properties = gather_properties(args)
+    options = check_options(args)
+    program = api.load_program(args.files, args.env, entry=args.entry, task=args.task,
+                               all_tasks=args.all_tasks, add_tasks=args.add_task, eio=args.eio)
+    return api.prepare(program, properties, options)
+
+
 def execute(args: argparse.Namespace) -> int:
-    if args.format != "sarif":
-        return _check(args)
     try:
         return _check(args)
     except UserError as exc:
+        if args.junit:
+            write_report(args.junit, format_junit_diagnostics(exc.diagnostics, *_suite(args)),
+                         "JUnit report")
+        if args.format != "sarif":
+            raise
         print(render_all(exc.diagnostics), file=sys.stderr)
         print(format_sarif_diagnostics(exc.diagnostics, exc.exit_code), end="")
         return exc.exit_code
@@ -133,143 +156,30 @@ def execute(args: argparse.Namespace) -> int:
 def _check(args: argparse.Namespace) -> int:
     if args.html:
         check_html_target(args.html)
-    properties = gather_properties(args)
-    automata = _pairs(args.automaton, "--automaton")
-    domains = {name.upper(): _numbers(values, "--input-domain")
-               for name, values in _pairs(args.input_domain, "--input-domain").items()}
-    files = resolve_program_files(args)
-    program_ast = load_program(files.modules)
-    environment = load_program(args.env) if args.env else None
-    program = build(program_ast, entry=args.entry, environment=environment,
-                    options={"configured_signals": files.signals}, tasks=load_tasks(files))
-    _check_domains(program, domains)
-    atoms = AtomCompiler(program)
-    jobs = [_prepare(prop, atoms, automata, args.backend) for prop in properties]
-    config = CheckConfig(program, _numbers(args.tp_answers, "--tp-answers"),
-                         _numbers(args.fk_answers, "--fk-answers"), domains,
-                         observed=_observed_inputs(program_ast, atoms))
-    if args.socket_messages:
-        config.socket_messages = tuple(args.socket_messages)
-    config.socket_closures = args.socket_closures
-    config.socket_timeouts = not args.no_socket_timeouts
-    if args.file_lines:
-        config.file_lines = tuple(args.file_lines)
-    system = RapidSystem(program, config)
-    describer = RapidDescriber(program, config)
-    unknown = set(automata) - {p.name for p in properties}
-    if unknown:
-        raise error(USAGE, f"--automaton names no property: "
-                    f"{', '.join(quoted(name) for name in sorted(unknown))}")
-    bounds = dict(max_states=args.max_states, max_seconds=args.max_seconds)
-    results = []
-    try:
-        results.append(_builtin(system, BUILTIN_RUNTIME, "no reachable uncaught run-time error",
-                                system.failed, bounds, args.quiet))
-        results.append(_builtin(system, BUILTIN_DEADLOCK, "no reachable state where the program "
-                                "waits forever", system.stuck, bounds, args.quiet))
-        for prop, buchi, valuation in jobs:
-            result = check_property(system, buchi, valuation, progress=_progress(args.quiet),
-                                    **bounds)
-            _replayed(system, result)
-            results.append(PropertyResult(prop.name, prop.text, result))
-    except EnvironmentFault as exc:
-        raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
-    verdicts = [r.result.verdict for r in results]
-    exit_code = EXIT_VIOLATED if VIOLATED in verdicts else (
-        EXIT_UNKNOWN if UNKNOWN in verdicts else EXIT_OK)
+    report = api.check_model(prepare_model(args), progress=lambda: _progress(args.quiet))
+    results, describer, warnings = report.results, report.describer, report.warnings
+    exit_code = report.exit_code(args.fail_on_vacuous)
     if args.html:
-        write_html(args.html, results, describer)
+        write_html(args.html, results, describer, warnings)
     if args.format == "json":
-        print(format_json(results, describer))
+        print(format_json(results, describer, warnings, getattr(args, "command_line", None)))
     elif args.format == "sarif":
-        print(format_sarif(results, describer, exit_code), end="")
+        print(format_sarif(results, describer, exit_code, warnings), end="")
     else:
         print(format_text(results, describer))
+        sys.stdout.flush()
+        if warnings:
+            print(render_all(warnings), file=sys.stderr)
+    if args.junit:
+        write_report(args.junit, format_junit(results, describer, *_suite(args), warnings),
+                     "JUnit report")
     return exit_code
+
+
+def _suite(args: argparse.Namespace) -> tuple[str, str]:
+    """The JUnit suite name (the program's files) and class name (the first file's stem)."""
+    return " ".join(args.files), Path(args.files[0].rstrip("/\\")).stem or "program"
 
 
 def _progress(quiet: bool) -> Progress:
     return Progress(sys.stderr, quiet=quiet)
-
-
-def _prepare(prop: Property, atoms: AtomCompiler, automata: dict, backend):
-    """The automaton of the property's negation and the valuation of its atoms."""
-    where = ast.Span(prop.file, prop.line, 1)
-    path = automata.get(prop.name)
-    if path is not None:
-        try:
-            with open(path, encoding="latin-1") as handle:
-                buchi = read_hoa(handle.read(), path)
-        except OSError as exc:
-            raise error(AUTOMATON, f"cannot read automaton file '{path}': {exc.strerror}") from None
-    else:
-        buchi = to_buchi(Not(prop.formula), backend=backend)
-    spans = {atom: _atom_span(prop, atom) for atom in buchi.atoms}
-    return prop, buchi, atoms.valuation(buchi.atoms, spans)
-
-
-def _atom_span(prop: Property, atom: str) -> ast.Span:
-    """Where the atom is written in the property (its column within the line)."""
-    from ..diagnostics import SourceCache as cache
-    line = cache.line(prop.file, prop.line) or prop.text
-    for written in (f'"{atom}"', atom):
-        column = line.find(written)
-        if column >= 0:
-            return ast.Span(prop.file, prop.line, column + 1, prop.line,
-                            column + 1 + len(written))
-    return ast.Span(prop.file, prop.line, 1)
-
-
-def _builtin(system: RapidSystem, name: str, description: str, predicate, bounds,
-             quiet: bool) -> PropertyResult:
-    result = find_reachable(system, predicate, progress=_progress(quiet), **bounds)
-    if result.verdict == VIOLATED:
-        with_final_loop(system, result)
-        _replayed(system, result)
-    return PropertyResult(name, description, result)
-
-
-def _replayed(system: RapidSystem, result) -> None:
-    if result.verdict != VIOLATED:
-        return
-    try:
-        replay(system, result)
-    except AssertionError as exc:
-        raise RuntimeError(f"internal error: {exc} [{TRACE_REPLAY.code}]") from None
-
-
-INTERRUPT_ORDERS = {"ISIGNALDI", "ISIGNALDO", "ISIGNALAI", "ISIGNALAO", "ISIGNALGI", "ISIGNALGO"}
-
-
-def _observed_inputs(program_ast, atoms: AtomCompiler):
-    """The free inputs whose values states must keep (None: all of them).
-
-    Inputs that no atom reads are chosen when the program reads them; an atom
-    that reads signal data (bound at run time) or an interrupt ordered on a
-    signal makes every input observed.
-    """
-    from ..semantics.configured_signals import signal_uses
-    if atoms.observes_signal_data:
-        return None
-    for module in program_ast.modules:
-        for routine in module.routines:
-            from ..semantics.configured_signals import _walk_statements
-            for node in _walk_statements(routine.body):
-                if isinstance(node, ast.ProcedureCall) and node.name.key in INTERRUPT_ORDERS:
-                    return None
-    return set(atoms.observed)
-
-
-def _check_domains(program, domains: dict) -> None:
-    for key in domains:
-        signal = program.signal(key)
-        if signal is None:
-            raise error(USAGE, f"--input-domain names unknown signal {quoted(key)}")
-        if signal.kind not in ("AI", "GI"):
-            raise error(USAGE, f"--input-domain is for analog and group inputs; {signal.name} is "
-                        f"a {signal.kind}")
-    for signal in program.signals:
-        if signal.kind in ("AI", "GI") and not signal.driven and signal.key not in domains:
-            raise error(DOMAIN, f"free {signal.kind} input '{signal.name}' needs a finite set of "
-                        f"values: give --input-domain {signal.name}=v1,v2,... (or drive it from "
-                        "an environment model)", signal.span)

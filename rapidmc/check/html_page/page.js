@@ -9,6 +9,8 @@
   const ROW = 24;
   const data = JSON.parse(document.getElementById("report-data").textContent);
   const files = new Map(data.files.map((file) => [file.name, file.lines]));
+  // coverage warnings: "file:line" -> message, shaded in the source view
+  const unreached = new Map((data.unreached || []).map((w) => [w.file + ":" + w.line, w.message]));
   const $ = (id) => document.getElementById(id);
 
   const player = {
@@ -276,6 +278,11 @@
     const lines = (files.get(name) || []).map((text, index) => {
       const line = element("div", "line" + (visited.has(index + 1) ? " visited" : ""));
       line.dataset.line = String(index + 1);
+      const dead = unreached.get(name + ":" + (index + 1));
+      if (dead !== undefined) {
+        line.classList.add("unreached");
+        line.title = dead;
+      }
       line.appendChild(element("span", "number", String(index + 1)));
       line.appendChild(element("span", "text", text));
       container.appendChild(line);

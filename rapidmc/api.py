@@ -1,0 +1,285 @@
+"""rapidmc as a Python library: load a RAPID program, state properties, check, read results.
+
+The ``rapidmc check`` command is a thin layer over this module (it turns
+options into ``CheckOptions`` and results into text, JSON, SARIF or JUnit),
+so a test written with it sees exactly what the command line sees.
+
+Example (see docs/api.md)::
+
+    from rapidmc import api
+
+    program = api.load_program(["case_studies/sorter/sorter_b.mod"],
+                               env=["case_studies/sorter/plant.mod"])
+    report = api.check(program, api.read_properties("specs/sorter.ltl"))
+    assert report.verdicts["P1"] == "HOLDS"
+    trace = report.trace("P2")          # the counterexample, step by step
+
+Input errors raise ``rapidmc.diagnostics.UserError`` carrying diagnostics.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from types import SimpleNamespace
+from typing import Callable, Iterable, Mapping, Optional, Sequence
+
+from . import ast
+from .check import (HOLDS, UNKNOWN, VIOLATED, Progress, PropertyResult, check_property,
+                    find_reachable)
+from .check.budget import DEFAULT_MAX_STATES
+from .backup import load_tasks, resolve_program_files
+from .check.trace import Trace, build_trace
+from .diagnostics import (AUTOMATON, DOMAIN, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED,
+                          TRACE_REPLAY, USAGE, Diagnostic, SourceCache, error)
+from .explored import ExploredFacts
+from .ltl import read_hoa, to_buchi
+from .ltl.syntax import Not
+from .model import RapidDescriber, RapidSystem, replay, with_final_loop
+from .properties import AtomCompiler, Property, check_unique, parse_property, read_property_file
+from .semantics.configured_signals import _walk_statements
+from .semantics.link import build
+from .semantics.program import PROGRAM_NAMESPACE, Program
+from .semantics.step import CheckConfig, EnvironmentFault
+from .syntax import load_program as _parse_files
+from .commands.quoting import one_line, quoted
+
+__all__ = ["CheckOptions", "CheckReport", "Model", "check", "check_model", "load_program", "prepare",
+           "property_from_text", "read_properties", "HOLDS", "VIOLATED", "UNKNOWN"]
+
+BUILTIN_RUNTIME = "no_runtime_error"
+BUILTIN_DEADLOCK = "no_deadlock"
+INTERRUPT_ORDERS = {"ISIGNALDI", "ISIGNALDO", "ISIGNALAI", "ISIGNALAO", "ISIGNALGI", "ISIGNALGO"}
+
+
+@dataclass(frozen=True)
+class CheckOptions:
+    """What ``rapidmc check`` takes as options besides files and properties."""
+
+    tp_answers: tuple = (1.0, 2.0, 3.0)
+    fk_answers: tuple = (1.0, 2.0, 3.0, 4.0, 5.0)
+    input_domains: Mapping[str, tuple] = field(default_factory=dict)   # signal -> values
+    socket_messages: tuple = ()            # () keeps the default: one empty message
+    socket_closures: bool = False
+    socket_timeouts: bool = True
+    file_lines: tuple = ()
+    automata: Mapping[str, str] = field(default_factory=dict)   # property -> HOA file of ¬φ
+    backend: Optional[str] = None          # LTL translator: "spot", "builtin", None = best
+    max_states: Optional[int] = DEFAULT_MAX_STATES
+    max_seconds: Optional[float] = None
+
+
+# --- loading -----------------------------------------------------------------------
+
+
+def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = "main",
+                 task: Optional[str] = None, all_tasks: bool = False,
+                 add_tasks: Sequence[str] = (), eio: Optional[str] = None) -> Program:
+    """Parse and link a program: module files or a controller backup folder, as ``check`` takes.
+
+    ``env``: environment model modules; ``task``/``all_tasks``: which tasks of a
+    backup; ``add_tasks``: further tasks, each ``"a.mod,b.mod"``; ``eio``: an
+    I/O configuration whose signals the program uses by name.
+    """
+    files = resolve_program_files(SimpleNamespace(files=list(files), task=task, eio=eio,
+                                                  all_tasks=all_tasks, add_task=list(add_tasks)))
+    environment = _parse_files(list(env)) if env else None
+    return build(_parse_files(files.modules), entry=entry, environment=environment,
+                 options={"configured_signals": files.signals}, tasks=load_tasks(files))
+
+
+def read_properties(*paths: str) -> list[Property]:
+    """The properties of property files (``NAME: FORMULA`` per line)."""
+    properties = [prop for path in paths for prop in read_property_file(path)]
+    check_unique(properties)
+    return properties
+
+
+def property_from_text(text: str, number: int = 1) -> Property:
+    """One property ``NAME: FORMULA``; diagnostics name it ``<formula-NUMBER>``."""
+    name = f"<formula-{number}>"   # no space: diagnostics open with FILE:LINE:COL
+    SourceCache.remember(name, text)
+    return parse_property(text, name, 1)
+
+
+# --- preparing the search -----------------------------------------------------------
+
+
+@dataclass
+class Model:
+    """A program with its properties' automata: the transition system to search."""
+
+    program: Program
+    properties: list[Property]
+    options: CheckOptions
+    atoms: AtomCompiler
+    jobs: list            # (property, automaton of its negation, valuation of its atoms)
+    config: CheckConfig
+    system: RapidSystem
+    describer: RapidDescriber
+
+
+def prepare(program: Program, properties: Sequence[Property],
+            options: CheckOptions = CheckOptions()) -> Model:
+    """Translate the properties and set up the program's transition system."""
+    properties = list(properties)
+    check_unique(properties)
+    domains = {name.upper(): tuple(values) for name, values in options.input_domains.items()}
+    _check_domains(program, domains)
+    atoms = AtomCompiler(program)
+    jobs = [_automaton(prop, atoms, options) for prop in properties]
+    config = CheckConfig(program, options.tp_answers, options.fk_answers, domains,
+                         observed=_observed_inputs(program, atoms))
+    if options.socket_messages:
+        config.socket_messages = tuple(options.socket_messages)
+    config.socket_closures = options.socket_closures
+    config.socket_timeouts = options.socket_timeouts
+    if options.file_lines:
+        config.file_lines = tuple(options.file_lines)
+    unknown = set(options.automata) - {p.name for p in properties}
+    if unknown:
+        raise error(USAGE, f"--automaton names no property: "
+                    f"{', '.join(quoted(name) for name in sorted(unknown))}")
+    return Model(program, properties, options, atoms, jobs, config,
+                 RapidSystem(program, config), RapidDescriber(program, config))
+
+
+def _automaton(prop: Property, atoms: AtomCompiler, options: CheckOptions):
+    """The automaton of the property's negation and the valuation of its atoms."""
+    path = options.automata.get(prop.name)
+    if path is not None:
+        try:
+            with open(path, encoding="latin-1") as handle:
+                buchi = read_hoa(handle.read(), path)
+        except OSError as exc:
+            raise error(AUTOMATON, f"cannot read automaton file '{path}': {exc.strerror}") from None
+    else:
+        buchi = to_buchi(Not(prop.formula), backend=options.backend)
+    spans = {atom: _atom_span(prop, atom) for atom in buchi.atoms}
+    return prop, buchi, atoms.valuation(buchi.atoms, spans)
+
+
+def _atom_span(prop: Property, atom: str) -> ast.Span:
+    """Where the atom is written in the property (its column within the line)."""
+    line = SourceCache.line(prop.file, prop.line) or prop.text
+    for written in (f'"{atom}"', atom):
+        column = line.find(written)
+        if column >= 0:
+            return ast.Span(prop.file, prop.line, column + 1, prop.line,
+                            column + 1 + len(written))
+    return ast.Span(prop.file, prop.line, 1)
+
+
+def _observed_inputs(program: Program, atoms: AtomCompiler):
+    """The free inputs whose values states must keep (None: all of them).
+
+    Inputs that no atom reads are chosen when the program reads them; an atom
+    that reads signal data (bound at run time) or an interrupt ordered on a
+    signal makes every input observed.
+    """
+    if atoms.observes_signal_data:
+        return None
+    for routine in program.routines:
+        if routine.namespace != PROGRAM_NAMESPACE or routine.ast is None:
+            continue
+        for node in _walk_statements(routine.ast.body):
+            if isinstance(node, ast.ProcedureCall) and node.name.key in INTERRUPT_ORDERS:
+                return None
+    return set(atoms.observed)
+
+
+def _check_domains(program: Program, domains: dict) -> None:
+    for key in domains:
+        signal = program.signal(key)
+        if signal is None:
+            raise error(USAGE, f"--input-domain names unknown signal {quoted(key)}")
+        if signal.kind not in ("AI", "GI"):
+            raise error(USAGE, f"--input-domain is for analog and group inputs; {signal.name} is "
+                        f"a {signal.kind}")
+    for signal in program.signals:
+        if signal.kind in ("AI", "GI") and not signal.driven and signal.key not in domains:
+            raise error(DOMAIN, f"free {signal.kind} input '{signal.name}' needs a finite set of "
+                        f"values: give --input-domain {signal.name}=v1,v2,... (or drive it from "
+                        "an environment model)", signal.span)
+
+
+# --- checking -------------------------------------------------------------------------
+
+
+@dataclass
+class CheckReport:
+    """The verdicts of one check, with counterexamples, vacuity and coverage warnings."""
+
+    results: list[PropertyResult]
+    warnings: list[Diagnostic]
+    describer: RapidDescriber
+
+    @property
+    def verdicts(self) -> dict[str, str]:
+        """Property name -> ``"HOLDS"``, ``"VIOLATED"`` or ``"UNKNOWN"``, in check order."""
+        return {r.name: r.result.verdict for r in self.results}
+
+    def result(self, name: str) -> PropertyResult:
+        return next(r for r in self.results if r.name == name)
+
+    def trace(self, name: str) -> Trace:
+        """The counterexample of a violated property, as ``rapidmc check`` prints it."""
+        checked = self.result(name)
+        if checked.result.verdict != VIOLATED:
+            raise ValueError(f"{name} is {checked.result.verdict}: it has no counterexample")
+        return build_trace(checked.result, self.describer)
+
+    def exit_code(self, fail_on_vacuous: bool = False) -> int:
+        """0 all hold, 1 a violation (or a vacuous property when asked), 3 UNKNOWN."""
+        verdicts = self.verdicts.values()
+        if VIOLATED in verdicts or (fail_on_vacuous and any(r.vacuous for r in self.results)):
+            return EXIT_VIOLATED
+        return EXIT_UNKNOWN if UNKNOWN in verdicts else EXIT_OK
+
+
+ProgressFactory = Callable[[], Optional[Progress]]
+
+
+def check(program: Program, properties: Iterable[Property] = (),
+          options: CheckOptions = CheckOptions(),
+          progress: ProgressFactory = lambda: None) -> CheckReport:
+    """The built-in checks, then every property, each by its own search."""
+    return check_model(prepare(program, list(properties), options), progress)
+
+
+def check_model(model: Model, progress: ProgressFactory = lambda: None) -> CheckReport:
+    """``check`` on a prepared model; ``progress()`` gives each search its progress line."""
+    system, options = model.system, model.options
+    bounds = dict(max_states=options.max_states, max_seconds=options.max_seconds)
+    facts = ExploredFacts(model.program, [prop.formula for prop in model.properties], model.atoms)
+    results = []
+    try:
+        results.append(_builtin(system, BUILTIN_RUNTIME, "no reachable uncaught run-time error",
+                                system.failed, bounds, progress(), facts))
+        facts.finish(system, results[0].result, progress=progress(), **bounds)
+        results.append(_builtin(system, BUILTIN_DEADLOCK, "no reachable state where the program "
+                                "waits forever", system.stuck, bounds, progress()))
+        for prop, buchi, valuation in model.jobs:
+            result = check_property(system, buchi, valuation, progress=progress(), **bounds)
+            _replayed(system, result)
+            vacuous = facts.vacuous(prop.formula) if result.verdict == HOLDS else None
+            results.append(PropertyResult(prop.name, prop.text, result, vacuous))
+    except EnvironmentFault as exc:
+        raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
+    return CheckReport(results, facts.warnings(), model.describer)
+
+
+def _builtin(system: RapidSystem, name: str, description: str, predicate, bounds,
+             progress: Optional[Progress], observe=None) -> PropertyResult:
+    result = find_reachable(system, predicate, progress=progress, observe=observe, **bounds)
+    if result.verdict == VIOLATED:
+        with_final_loop(system, result)
+        _replayed(system, result)
+    return PropertyResult(name, description, result)
+
+
+def _replayed(system: RapidSystem, result) -> None:
+    if result.verdict != VIOLATED:
+        return
+    try:
+        replay(system, result)
+    except AssertionError as exc:
+        raise RuntimeError(f"internal error: {exc} [{TRACE_REPLAY.code}]") from None

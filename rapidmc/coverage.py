@@ -1,0 +1,76 @@
+"""Coverage: the statements of a program that no input sequence reaches.
+
+Shown the whole reachable state graph (``StatementWatch`` is an observer
+for ``find_reachable``), the statements executed by some transition are
+known; every other statement of the program — the environment model
+excepted — is dead code under every input the check considered.  A routine
+none of whose statements runs gets one warning at its declaration instead
+of one per line.  Only meaningful after a complete search: the caller
+asks for ``unreached`` only then.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Hashable, Sequence
+
+from .ast import Span
+from .diagnostics import NEVER_REACHED, Diagnostic
+from .semantics.instructions import EndRoutine, EndUndo
+from .semantics.program import ENVIRONMENT_NAMESPACE, Program
+
+NOT_STATEMENTS = (EndRoutine, EndUndo)      # ENDPROC / end of UNDO: not a line to run
+
+
+@dataclass(frozen=True)
+class Unreached:
+    """A statement (or a whole routine) that no reachable transition executes."""
+
+    span: Span
+    routine: str
+    whole_routine: bool
+
+    def diagnostic(self) -> Diagnostic:
+        message = "never reached under any input"
+        if self.whole_routine:
+            message += f" (routine {self.routine} never runs)"
+        return Diagnostic(NEVER_REACHED, message, self.span, severity="warning")
+
+
+class StatementWatch:
+    """Observer of a breadth-first search: the source lines its transitions execute."""
+
+    def __init__(self):
+        self.executed: set[tuple[str, int]] = set()
+
+    def __call__(self, state: Hashable, successors: Sequence[tuple[Hashable, Hashable]]) -> None:
+        for (_, span, _), _ in successors:
+            if span is not None:
+                self.executed.add((span.file, span.line))
+
+
+def unreached(program: Program, executed: set[tuple[str, int]]) -> list[Unreached]:
+    """The program's statements on lines never executed, in source order."""
+    found: list[Unreached] = []
+    for routine in program.routines:
+        if routine.namespace == ENVIRONMENT_NAMESPACE:
+            continue
+        lines = _statement_lines(routine)
+        missed = [span for key, span in lines.items() if key not in executed]
+        if lines and len(missed) == len(lines):
+            found.append(Unreached(routine.span, routine.name, True))
+        else:
+            found.extend(Unreached(span, routine.name, False) for span in missed)
+    return sorted(found, key=lambda u: (u.span.file, u.span.line, u.span.column))
+
+
+def _statement_lines(routine) -> dict[tuple[str, int], Span]:
+    """(file, line) -> the first statement span on that line, for every line with code."""
+    lines: dict[tuple[str, int], Span] = {}
+    for instruction in routine.code:
+        span = instruction.span
+        if span is None or isinstance(instruction, NOT_STATEMENTS):
+            continue
+        key = (span.file, span.line)
+        if key not in lines or span.column < lines[key].column:
+            lines[key] = span
+    return lines

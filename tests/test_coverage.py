@@ -1,0 +1,130 @@
+"""Coverage: after a complete search, statements no input reaches are warnings (RMC701).
+
+Data-driven on tests/check/: a case's ``unreached`` file lists the lines
+expected to be reported (a routine that never runs is reported once, at
+its declaration); every other case must report none.  The case studies pin
+the one dead statement of sorter B, and the three output formats are
+checked to carry the same warnings.
+"""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from rapidmc import api
+from rapidmc.cli import main
+from test_check_cases import _data_lines, report_of, verdict_cases
+from test_html_report import browser  # noqa: F401  (the headless Chromium fixture)
+
+ROOT = Path(__file__).resolve().parent.parent
+CASES = {case.name: case for case in verdict_cases()}
+
+
+@pytest.mark.parametrize("name", CASES)
+def test_unreached_lines_of_every_check_case(name, monkeypatch):
+    case = CASES[name]
+    code, document = report_of(case, monkeypatch)
+    warnings = document["warnings"]
+    assert all(w["code"] == "RMC701" and w["location"]["file"] == "prog.mod" for w in warnings)
+    expected = [int(line) for line in _data_lines(case.folder / "unreached")]
+    assert [w["location"]["line"] for w in warnings] == expected
+    assert code == case.exit_code            # warnings never change the exit code
+
+
+def test_no_warnings_after_a_bounded_search(monkeypatch):
+    """vacuity_bounded_search never runs its last statements within 5 states: no claim."""
+    assert report_of(CASES["vacuity_bounded_search"], monkeypatch)[1]["warnings"] == []
+
+
+def sorter(program: str, *extra: str) -> list[str]:
+    return ["check", f"case_studies/sorter/{program}", "--env", "case_studies/sorter/plant.mod",
+            "--ltl", "specs/sorter.ltl", "--quiet", *extra]
+
+
+@pytest.mark.parametrize("program, lines", [
+    ("sorter_a.mod", []),
+    ("sorter_b.mod", [84]),       # SetDO c_out after a defective pinion went to C1: s4 stays 0
+    ("sorter_c.mod", []),
+])
+def test_case_studies(program, lines, monkeypatch, capsys):
+    monkeypatch.chdir(ROOT)
+    main(sorter(program, "--format", "json"))
+    warnings = json.loads(capsys.readouterr().out)["warnings"]
+    assert [w["location"]["line"] for w in warnings] == lines
+
+
+def test_text_sarif_and_json_carry_the_same_warning(monkeypatch, capsys):
+    monkeypatch.chdir(ROOT)
+    main(sorter("sorter_b.mod"))
+    err = capsys.readouterr().err
+    assert "case_studies/sorter/sorter_b.mod:84:21: warning: never reached under any input " \
+           "[RMC701]" in err
+    assert "SetDO c_out, 1;" in err
+    main(sorter("sorter_b.mod", "--format", "sarif"))
+    (run,) = json.loads(capsys.readouterr().out)["runs"]
+    (warning,) = [r for r in run["results"] if r["ruleId"] == "RMC701"]
+    assert warning["level"] == "warning"
+    assert run["tool"]["driver"]["rules"][warning["ruleIndex"]]["id"] == "RMC701"
+    region = warning["locations"][0]["physicalLocation"]["region"]
+    assert (region["startLine"], region["startColumn"]) == (84, 21)
+
+
+def test_the_html_page_carries_the_unreached_statements(monkeypatch, capsys, tmp_path):
+    monkeypatch.chdir(ROOT)
+    page = tmp_path / "report.html"
+    main(sorter("sorter_b.mod", "--html", str(page)))
+    capsys.readouterr()
+    text = page.read_text()
+    data = json.loads(text.split('id="report-data"', 1)[1].split(">", 1)[1].split("</script>")[0])
+    assert data["unreached"] == [{"file": "case_studies/sorter/sorter_b.mod", "line": 84,
+                                  "message": "never reached under any input"}]
+
+
+def test_the_html_page_shades_the_unreached_line(browser, monkeypatch, capsys, tmp_path):
+    from test_html_report import Page
+    monkeypatch.chdir(ROOT)
+    path = tmp_path / "report.html"
+    main(sorter("sorter_b.mod", "--html", str(path)))
+    capsys.readouterr()
+    page = Page(browser, path)
+    page.click('#file-tabs button[title="case_studies/sorter/sorter_b.mod"]')
+    shaded = browser.execute_script(
+        "return [...document.querySelectorAll('.source .file:not([hidden]) .line.unreached')]"
+        ".map((line) => [Number(line.dataset.line), line.title, "
+        "line.querySelector('.text').textContent.trim()])")
+    assert shaded == [[84, "never reached under any input", "SetDO c_out, 1;"]]
+
+
+# --- differential: each warning checked by an independent LTL search ---------------------
+
+PLAIN_CASES = [case for case in CASES.values() if not case.extra_args]
+
+
+@pytest.mark.parametrize("case", PLAIN_CASES, ids=lambda case: case.name)
+def test_an_unreached_statement_is_never_about_to_run(case, monkeypatch):
+    """``G !AtLine(L)`` holds for every reported line and every line of a routine reported
+    as never running (``G !InRoutine(R)`` for the routine itself), and fails for every
+    other statement line of the program."""
+    monkeypatch.chdir(case.folder)
+    env = ["env.mod"] if (case.folder / "env.mod").exists() else []
+    program = api.load_program(["prog.mod"], env=env)
+    report = api.check(program)
+    routines = {r.span.line: r for r in program.routines if r.namespace == 0}
+    reported = {w.span.line for w in report.warnings}
+    dead = set(reported)
+    for line in reported & set(routines):
+        dead |= statement_lines(routines[line])
+    for number, line in enumerate(sorted(set().union(*map(statement_lines, routines.values()),
+                                                    reported)), start=1):
+        routine = routines.get(line)
+        atom = f'"InRoutine(\\"{routine.name}\\")"' if routine else f'"AtLine({line})"'
+        never = api.property_from_text(f"never: G !{atom}", number)
+        verdict = api.check(program, [never]).verdicts["never"]
+        assert (verdict == "HOLDS") == (line in dead), (line, verdict)
+
+
+def statement_lines(routine) -> set[int]:
+    return {i.span.line for i in routine.code if i.span is not None and
+            type(i).__name__ not in ("EndRoutine", "EndUndo")}
