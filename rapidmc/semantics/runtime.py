@@ -81,7 +81,8 @@ class PredefinedCalls:
             if registry.lookup_procedure(expr.name.key) is not None:
                 raise error(TYPE_MISMATCH, f"'{expr.name.text}' is a procedure: call it as a "
                             "statement, not in an expression", expr.span)
-            raise error(UNKNOWN_ROUTINE, f"unknown function '{expr.name.text}'", expr.span)
+            raise error(UNKNOWN_ROUTINE, f"unknown function '{expr.name.text}'", expr.span,
+                        subject=expr.name.key)
         self._check_environment(compiler, expr.name, expr.span)
         compiler._no_variables(expr)
         if entry.special:
@@ -143,7 +144,7 @@ class PredefinedCalls:
                             "value in an expression (a function call is not a statement)",
                             statement.span)
             raise error(UNKNOWN_ROUTINE, f"unknown procedure '{statement.name.text}'",
-                        statement.span)
+                        statement.span, subject=statement.name.key)
         self._check_environment(compiler, statement.name, statement.span)
         if entry.special:
             factory = special_routines.PROCEDURES.get(entry.key)
