@@ -28,6 +28,7 @@ SUBCOMMANDS = {
     "run": "execute a RAPID program with the FlexPendant on the console",
     "check": "model-check a RAPID program against LTL properties",
     "ltl": "translate an LTL formula to a Büchi automaton (HOA format)",
+    "stubs": "write a module declaring the names the program uses and no module declares",
 }
 
 
