@@ -413,7 +413,7 @@ class ExpressionCompiler:
                             f"'{expr.op}'", side.span)
 
     def _vector(self, expr, left: Compiled, right: Compiled) -> Compiled:
-        from .builtins import geometry_ops
+        from .library import geometry_ops
         fn, result_type = geometry_ops.operator_for(expr.op, left.type, right.type)
         if fn is None:
             raise error(TYPE_MISMATCH, f"'{expr.op}' cannot combine {type_name(left.type)} "

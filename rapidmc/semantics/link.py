@@ -21,7 +21,7 @@ from ..diagnostics import (BAD_DECLARATION, DUPLICATE, ENVIRONMENT, NO_ENTRY, NO
 from ..error_report import ErrorCollector
 from . import configured_signals
 from . import program as P
-from .builtins.data import PREDEFINED_DATA
+from .library.data import PREDEFINED_DATA
 from .calls import ParameterView, bind
 from .errors import ERROR_NUMBERS, LONG_JMP_ALL_ERR
 from .expressions import ExpressionCompiler

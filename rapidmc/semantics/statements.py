@@ -14,7 +14,7 @@ from .. import ast
 from ..diagnostics import (ASSIGN_CONST, BAD_CONTROL, DUPLICATE, TYPE_MISMATCH, UNKNOWN_LABEL,
                            UNKNOWN_NAME, UNKNOWN_ROUTINE, PLACEHOLDER, UserError, error)
 from ..error_report import UNKNOWN_CODES
-from .builtins import registry
+from .library import registry
 from .expressions import ExpressionCompiler, _check_index as check_index
 from .instructions import (Action, Branch, Call, EndRoutine, EndUndo, ExitProgram,
                            ForInit, ForNext, Instruction, Jump, LateCall, Raise, Retry,

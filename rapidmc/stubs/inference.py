@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 from typing import Optional
 
 from .. import ast
-from ..semantics.builtins import registry
+from ..semantics.library import registry
 from ..semantics.configured_signals import COMPARISONS
 from .names import BOOL, NUM, STRING, Declarations, TypeInfo
 

@@ -13,7 +13,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Optional
 
-from ..semantics.builtins.data import PREDEFINED_DATA
+from ..semantics.library.data import PREDEFINED_DATA
 from ..semantics.types import NON_VALUE, PREDEFINED_ALIASES, PREDEFINED_TYPES, SEMI_VALUE
 from .inference import DATA, FUNCTION, PROCEDURE, TRAP, TYPE, Missing
 from .names import Declarations, TypeInfo

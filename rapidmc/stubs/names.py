@@ -12,8 +12,8 @@ from typing import Optional
 
 from .. import ast
 from ..semantics import configured_signals
-from ..semantics.builtins import registry
-from ..semantics.builtins.data import PREDEFINED_DATA
+from ..semantics.library import registry
+from ..semantics.library.data import PREDEFINED_DATA
 from ..semantics.errors import ERROR_NUMBERS
 from ..semantics.types import PREDEFINED_ALIASES, PREDEFINED_TYPES, RECORD
 

@@ -15,16 +15,17 @@ bytes not read yet (``\\ReadNoOfBytes`` reads a stream, not messages).
 """
 from __future__ import annotations
 
-from .. import ast
-from ..diagnostics import INPUT_EXHAUSTED, UNSUPPORTED, error
-from . import rawbytes
-from .builtins.data import PREDEFINED_DATA
-from .builtins.registry import special
-from .errors import RapidError
-from .expressions import Compiled
-from .instructions import Action
-from .special_routines import Arguments, _arg_expr, _where, function, procedure
-from .types import NUM
+from ...diagnostics import INPUT_EXHAUSTED, UNSUPPORTED, error
+from .. import rawbytes
+from ..errors import RapidError
+from ..expressions import Compiled
+from ..instructions import Action
+from ..types import NUM
+from .arguments import Arguments, argument_expression
+from .data import PREDEFINED_DATA
+from .environment_model import where
+from .registry import compiled
+from .signature_parts import TIME
 
 SOCKET_CREATED, SOCKET_CONNECTED, SOCKET_BOUND, SOCKET_LISTENING, SOCKET_CLOSED = \
     1.0, 2.0, 3.0, 4.0, 5.0
@@ -32,24 +33,6 @@ DEFAULT_TIMEOUT = 60.0          # seconds, when \Time is not given (manual)
 WAIT_MAX = float(PREDEFINED_DATA["WAIT_MAX"].value)
 TIMEOUT, CLOSED, RECEIVED = "ERR_SOCK_TIMEOUT", "ERR_SOCK_CLOSED", "received"
 
-_TIME = "\\num Time"
-SIGNATURES = (
-    "SocketCreate(VAR socketdev Socket \\switch UDP)",
-    f"SocketConnect(VAR socketdev Socket, string Address, num Port {_TIME})",
-    "SocketBind(VAR socketdev Socket, string LocalAddress, num LocalPort)",
-    "SocketListen(VAR socketdev Socket)",
-    "SocketAccept(VAR socketdev Socket, VAR socketdev ClientSocket "
-    f"\\VAR string ClientAddress {_TIME})",
-    "SocketSend(VAR socketdev Socket \\string Str | VAR rawbytes RawData | VAR anytype Data "
-    "\\num NoOfBytes)",
-    "SocketReceive(VAR socketdev Socket \\VAR string Str | VAR rawbytes RawData | "
-    f"VAR anytype Data \\num ReadNoOfBytes \\VAR num NoRecBytes {_TIME})",
-    "SocketClose(VAR socketdev Socket)",
-    "socketstatus SocketGetStatus(VAR socketdev Socket)",
-    "num SocketPeek(VAR socketdev Socket)",
-)
-for _text in SIGNATURES:
-    special(_text)
 
 
 # ===========================================================================
@@ -68,7 +51,7 @@ def environment_text(m, kind: str, span, domain: tuple):
     Run mode reads one line of standard input; check mode chooses from ``domain``.
     """
     if m.chooser.check_mode:
-        return m.choose(f"{kind} at {_where(span)}", domain)
+        return m.choose(f"{kind} at {where(span)}", domain)
     stdin = getattr(m.chooser, "stdin", None)
     line = stdin.readline() if stdin is not None else ""
     if not line:
@@ -80,7 +63,7 @@ def may_fail(m, kind: str, span, outcomes: tuple) -> str:
     """Check mode: which of RECEIVED and the failure ``outcomes`` happens (a choice)."""
     if not outcomes or not m.chooser.check_mode:
         return RECEIVED
-    return m.choose(f"{kind} outcome at {_where(span)}", (RECEIVED,) + outcomes)
+    return m.choose(f"{kind} outcome at {where(span)}", (RECEIVED,) + outcomes)
 
 
 def _timeouts(m, seconds) -> tuple:
@@ -120,7 +103,7 @@ def _require(value, wanted: float, what: str) -> None:
 
 
 def _optional(value):
-    from .machine import ABSENT
+    from ..machine import ABSENT
     return None if value is ABSENT else value
 
 
@@ -133,7 +116,7 @@ TRANSITIONS = {
 }
 
 
-@procedure("SocketCreate", "SocketBind", "SocketListen", "SocketClose")
+@compiled("SocketCreate(VAR socketdev Socket \\switch UDP)", "SocketBind(VAR socketdev Socket, string LocalAddress, num LocalPort)", "SocketListen(VAR socketdev Socket)", "SocketClose(VAR socketdev Socket)")
 def _socket_transition(calls, compiler, call, entry):
     """Moves a socket from the state the instruction needs to the one it leaves."""
     socket = Arguments(calls, compiler, call, entry).fn("Socket")
@@ -156,7 +139,7 @@ def _connection(m, call, seconds, failure: str) -> None:
         raise RapidError("ERR_SOCK_TIMEOUT", f"{what}: {failure}")
 
 
-@procedure("SocketConnect")
+@compiled(f"SocketConnect(VAR socketdev Socket, string Address, num Port {TIME})")
 def _socket_connect(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     socket, seconds = arguments.fn("Socket"), arguments.value("Time")
@@ -169,12 +152,13 @@ def _socket_connect(calls, compiler, call, entry):
     return Action(call.span, connect)
 
 
-@procedure("SocketAccept")
+@compiled("SocketAccept(VAR socketdev Socket, VAR socketdev ClientSocket "
+    f"\\VAR string ClientAddress {TIME})")
 def _socket_accept(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     server, client = arguments.fn("Socket"), arguments.fn("ClientSocket")
     address, seconds = arguments.fn("ClientAddress"), arguments.value("Time")
-    has_address = _arg_expr(call, "ClientAddress", -1) is not None
+    has_address = argument_expression(call, "ClientAddress", -1) is not None
 
     def accept(m):
         _require(m.read_ref(server(m)), SOCKET_LISTENING, "SocketAccept")
@@ -185,13 +169,13 @@ def _socket_accept(calls, compiler, call, entry):
     return Action(call.span, accept)
 
 
-@function("SocketGetStatus")
+@compiled("socketstatus SocketGetStatus(VAR socketdev Socket)")
 def _socket_get_status(calls, compiler, call, entry) -> Compiled:
     socket = Arguments(calls, compiler, call, entry).fn("Socket")
     return Compiled(lambda m: status(m.read_ref(socket(m))), NUM)
 
 
-@function("SocketPeek")
+@compiled("num SocketPeek(VAR socketdev Socket)")
 def _socket_peek(calls, compiler, call, entry) -> Compiled:
     socket = Arguments(calls, compiler, call, entry).fn("Socket")
 
@@ -207,19 +191,20 @@ def _socket_peek(calls, compiler, call, entry) -> Compiled:
 # ===========================================================================
 
 def _no_data(call) -> None:
-    if _arg_expr(call, "Data", -1) is not None:
+    if argument_expression(call, "Data", -1) is not None:
         raise error(UNSUPPORTED, f"{call.name.text} \\Data (any data in binary form) is not "
                     "modelled by rapidmc; use \\Str or \\RawData", call.span)
 
 
-@procedure("SocketSend")
+@compiled("SocketSend(VAR socketdev Socket \\string Str | VAR rawbytes RawData | VAR anytype Data "
+    "\\num NoOfBytes)")
 def _socket_send(calls, compiler, call, entry):
     _no_data(call)
     arguments = Arguments(calls, compiler, call, entry)
     socket, text, raw = arguments.fn("Socket"), arguments.value("Str"), arguments.value("RawData")
     count = arguments.value("NoOfBytes")
-    is_raw = _arg_expr(call, "RawData", -1) is not None
-    if not is_raw and _arg_expr(call, "Str", -1) is None:
+    is_raw = argument_expression(call, "RawData", -1) is not None
+    if not is_raw and argument_expression(call, "Str", -1) is None:
         raise error(UNSUPPORTED, "SocketSend needs \\Str or \\RawData", call.span)
 
     def send(m):
@@ -250,16 +235,17 @@ def _receive_message(m, call, seconds) -> str:
     return text
 
 
-@procedure("SocketReceive")
+@compiled("SocketReceive(VAR socketdev Socket \\VAR string Str | VAR rawbytes RawData | "
+    f"VAR anytype Data \\num ReadNoOfBytes \\VAR num NoRecBytes {TIME})")
 def _socket_receive(calls, compiler, call, entry):
     _no_data(call)
     arguments = Arguments(calls, compiler, call, entry)
     socket, text_ref, raw_ref = arguments.fn("Socket"), arguments.fn("Str"), arguments.fn("RawData")
     wanted, received, seconds = (arguments.value("ReadNoOfBytes"), arguments.fn("NoRecBytes"),
                                  arguments.value("Time"))
-    is_raw = _arg_expr(call, "RawData", -1) is not None
-    counts = _arg_expr(call, "NoRecBytes", -1) is not None
-    if not is_raw and _arg_expr(call, "Str", -1) is None:
+    is_raw = argument_expression(call, "RawData", -1) is not None
+    counts = argument_expression(call, "NoRecBytes", -1) is not None
+    if not is_raw and argument_expression(call, "Str", -1) is None:
         raise error(UNSUPPORTED, "SocketReceive needs \\Str or \\RawData", call.span)
 
     def receive(m):
@@ -289,4 +275,3 @@ def _socket_receive(calls, compiler, call, entry):
 
 # Files, serial channels, rawbytes and controller routines register themselves
 # when imported.
-from . import special_files, special_rawbytes, special_controller  # noqa: E402,F401

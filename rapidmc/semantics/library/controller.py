@@ -8,74 +8,21 @@ and do nothing.  docs/semantics.md, "Sockets and files", lists them.
 """
 from __future__ import annotations
 
-from ..diagnostics import UNSUPPORTED, error
-from .builtins.registry import special
-from .expressions import Compiled, constant
-from .instructions import Action, ControlAction
-from .special_routines import (Arguments, _move, _no_op, _read_signal, function, procedure)
-from .types import BOOL, NUM, STRING
+from ...diagnostics import UNSUPPORTED, error
+from ..expressions import Compiled, constant
+from ..instructions import Action, ControlAction
+from ..types import BOOL, NUM, STRING
+from .arguments import Arguments
+from .motion import move
+from .registry import compiled
+from .signals import signal_reader
+from .signature_parts import ACT_TAIL, AXES, JOINTS, RUN_TAIL, TRIGG_TAIL
+from .waits import no_op
 
-_TRIGGERS = ("VAR triggdata Trigg_1 \\VAR triggdata T2 \\VAR triggdata T3 \\VAR triggdata T4 "
-             "\\VAR triggdata T5 \\VAR triggdata T6 \\VAR triggdata T7 \\VAR triggdata T8")
-_TRIGG_TAIL = (f"speeddata Speed \\num T, {_TRIGGERS}, zonedata Zone \\stoppointdata Inpos, "
-               "PERS tooldata Tool \\PERS wobjdata WObj \\PERS loaddata TLoad")
-_JOINTS = " ".join(f"\\egm_minmax J{i}" for i in range(1, 8))
-_AXES = " ".join(f"\\egm_minmax {a}" for a in ("x", "y", "z", "rx", "ry", "rz"))
-_ACT_TAIL = "\\num LpFilter \\num SampleRate \\num MaxPosDeviation \\num MaxSpeedDeviation"
-_RUN_TAIL = "\\num CondTime \\num RampInTime \\num RampOutTime \\num Offset \\num PosCorrGain"
 SYSTEM_INFO = (("SerialNo", "rapidmc-0001"), ("SWVersion", "6.0.0"), ("RobotType", "IRB 120"),
                ("CtrlId", "rapidmc"), ("LanIp", "127.0.0.1"), ("CtrlLang", "en"),
                ("SystemName", "rapidmc"))
 
-SIGNATURES = (
-    "string GetSysInfo(" + " | ".join(f"\\switch {key}" if i == 0 else f"switch {key}"
-                                      for i, (key, _) in enumerate(SYSTEM_INFO)) + ")",
-    "bool RobOS()",
-    "string GetTaskName(\\INOUT num TaskNo | INOUT num MecTaskNo)",
-    "bool IsStopMoveAct(\\switch FromMoveTask | switch FromNonMoveTask)",
-    "num AInput(VAR signalai Signal)",
-    "num GInput(VAR signalgi Signal)",
-    "bool TestAndSet(INOUT bool Object)",
-    "WaitTestAndSet(INOUT bool Object)",
-    # --- trigger moves: the move happens, the trigger events are not modelled ------------------
-    f"TriggL(\\switch Conc, robtarget ToPoint \\identno ID, {_TRIGG_TAIL})",
-    f"TriggJ(\\switch Conc, robtarget ToPoint \\identno ID, {_TRIGG_TAIL})",
-    f"TriggC(\\switch Conc, robtarget CirPoint, robtarget ToPoint \\identno ID, {_TRIGG_TAIL})",
-    # --- motion settings without an effect on the model ---------------------------------------------
-    "SkipWarn()",
-    "ClearPath()",
-    "MotionSup(\\switch On | switch Off \\num TuneValue)",
-    "ReadCfgData(string InstancePath, string Attribute, VAR anytype CfgData \\num ListNo)",
-    "ErrLog(num ErrorId \\switch W | switch I, anytype Argument1, anytype Argument2, "
-    "anytype Argument3, anytype Argument4, anytype Argument5)",
-    "WaitSyncTask(\\switch InPos, VAR syncident SyncID, REF tasks TaskList{*} \\num TimeOut)",
-    "SyncMoveOn(VAR syncident SyncID, REF tasks TaskList{*} \\num TimeOut)",
-    "SyncMoveOff(VAR syncident SyncID \\num TimeOut)",
-    # --- externally guided motion (EGM): a session state, no motion ---------------------------------
-    "EGMGetId(VAR egmident EGMid)",
-    "EGMReset(VAR egmident EGMid)",
-    "egmstate EGMGetState(VAR egmident EGMid)",
-    "EGMSetupUC(mecunit MecUnit, VAR egmident EGMid, string ExtConfigName, string UCDevice "
-    "\\switch Pose | switch Joint | switch PathCorr \\num CommTimeout)",
-    f"EGMActJoint(VAR egmident EGMid \\switch StreamStart \\PERS tooldata Tool \\PERS wobjdata WObj "
-    f"\\PERS loaddata TLoad {_JOINTS} {_ACT_TAIL})",
-    "EGMActPose(VAR egmident EGMid \\switch StreamStart \\PERS tooldata Tool \\PERS wobjdata WObj "
-    "\\PERS loaddata TLoad, pose CorrFrame, egmframetype CorrFrType, pose SensorFrame, "
-    f"egmframetype SensFrType {_AXES} {_ACT_TAIL})",
-    "EGMRunJoint(VAR egmident EGMid, egmstopmode Mode \\switch NoWaitCond "
-    + " ".join(f"\\switch J{i}" for i in range(1, 8)) + f" {_RUN_TAIL})",
-    "EGMRunPose(VAR egmident EGMid, egmstopmode Mode \\switch NoWaitCond "
-    + " ".join(f"\\switch {a}" for a in ("x", "y", "z", "rx", "ry", "rz")) + f" {_RUN_TAIL})",
-    "EGMStop(VAR egmident EGMid, egmstopmode Mode \\num RampOutTime)",
-    "EGMStreamStart(VAR egmident EGMid \\num SampleRate)",
-    "EGMStreamStop(VAR egmident EGMid)",
-    # --- kinematics: needs the robot's geometry, which rapidmc does not have ------------------------
-    "jointtarget CalcJointT(\\switch UseCurWObjPos, robtarget Rob_target, PERS tooldata Tool "
-    "\\PERS wobjdata WObj \\num ConfAngle \\INOUT errnum ErrorNumber)",
-    "robtarget CalcRobT(jointtarget Joint_target, PERS tooldata Tool \\PERS wobjdata WObj)",
-)
-for _text in SIGNATURES:
-    special(_text)
 
 # EGM session states (egmstate); programs compare them with <=, so they are ordered.
 EGM_STATE_DISCONNECTED, EGM_STATE_CONNECTED, EGM_STATE_RUNNING = 1.0, 2.0, 3.0
@@ -85,7 +32,8 @@ EGM_STATE_DISCONNECTED, EGM_STATE_CONNECTED, EGM_STATE_RUNNING = 1.0, 2.0, 3.0
 # System information
 # ===========================================================================
 
-@function("GetSysInfo")
+@compiled("string GetSysInfo(" + " | ".join(f"\\switch {key}" if i == 0 else f"switch {key}"
+                                      for i, (key, _) in enumerate(SYSTEM_INFO)) + ")")
 def _get_sys_info(calls, compiler, call, entry) -> Compiled:
     arguments = Arguments(calls, compiler, call, entry)
     switches = [(arguments.value(key), text) for key, text in SYSTEM_INFO]
@@ -95,20 +43,20 @@ def _get_sys_info(calls, compiler, call, entry) -> Compiled:
     return Compiled(info, STRING)
 
 
-@function("RobOS")
+@compiled("bool RobOS()")
 def _rob_os(calls, compiler, call, entry) -> Compiled:
     """FALSE: rapidmc is a virtual controller, not the robot's operating system."""
     Arguments(calls, compiler, call, entry)
     return constant(False, BOOL)
 
 
-@function("IsStopMoveAct")
+@compiled("bool IsStopMoveAct(\\switch FromMoveTask | switch FromNonMoveTask)")
 def _is_stop_move_act(calls, compiler, call, entry) -> Compiled:
     Arguments(calls, compiler, call, entry)
     return constant(False, BOOL)
 
 
-@function("GetTaskName")
+@compiled("string GetTaskName(\\INOUT num TaskNo | INOUT num MecTaskNo)")
 def _get_task_name(calls, compiler, call, entry) -> Compiled:
     arguments = Arguments(calls, compiler, call, entry)
     numbers = [arguments.fn(key) for key in ("TaskNo", "MecTaskNo")]
@@ -122,10 +70,11 @@ def _get_task_name(calls, compiler, call, entry) -> Compiled:
     return Compiled(task_name, STRING)
 
 
-function("AInput", "GInput")(_read_signal)
+compiled("num AInput(VAR signalai Signal)", "num GInput(VAR signalgi Signal)")(signal_reader)
 
 
-@function("CalcJointT", "CalcRobT")
+@compiled("jointtarget CalcJointT(\\switch UseCurWObjPos, robtarget Rob_target, PERS tooldata Tool "
+    "\\PERS wobjdata WObj \\num ConfAngle \\INOUT errnum ErrorNumber)", "robtarget CalcRobT(jointtarget Joint_target, PERS tooldata Tool \\PERS wobjdata WObj)")
 def _kinematics(calls, compiler, call, entry) -> Compiled:
     """Inverse and forward kinematics: the program links; reaching the call stops with RMC305."""
     Arguments(calls, compiler, call, entry)
@@ -142,7 +91,7 @@ def _kinematics(calls, compiler, call, entry) -> Compiled:
 # Test-and-set locks (one task: the lock is free unless the program holds it)
 # ===========================================================================
 
-@function("TestAndSet")
+@compiled("bool TestAndSet(INOUT bool Object)")
 def _test_and_set(calls, compiler, call, entry) -> Compiled:
     lock = Arguments(calls, compiler, call, entry).fn("Object")
 
@@ -155,7 +104,7 @@ def _test_and_set(calls, compiler, call, entry) -> Compiled:
     return Compiled(test_and_set, BOOL)
 
 
-@procedure("WaitTestAndSet")
+@compiled("WaitTestAndSet(INOUT bool Object)")
 def _wait_test_and_set(calls, compiler, call, entry):
     """Waits while the lock is TRUE (a deadlock in one task), then takes it."""
     lock = Arguments(calls, compiler, call, entry).fn("Object")
@@ -174,14 +123,18 @@ def _wait_test_and_set(calls, compiler, call, entry):
 # Moves with triggers, and motion settings
 # ===========================================================================
 
-@procedure("TriggL", "TriggJ", "TriggC")
+@compiled(f"TriggL(\\switch Conc, robtarget ToPoint \\identno ID, {TRIGG_TAIL})", f"TriggJ(\\switch Conc, robtarget ToPoint \\identno ID, {TRIGG_TAIL})", f"TriggC(\\switch Conc, robtarget CirPoint, robtarget ToPoint \\identno ID, {TRIGG_TAIL})")
 def _trigg_move(calls, compiler, call, entry):
-    return _move(calls, compiler, call, entry, "ToPoint")
+    return move(calls, compiler, call, entry, "ToPoint")
 
 
-procedure("SkipWarn", "ClearPath", "MotionSup", "ReadCfgData", "ErrLog", "WaitSyncTask",
-          "SyncMoveOn", "SyncMoveOff", "EGMActJoint", "EGMActPose", "EGMRunJoint",
-          "EGMRunPose", "EGMStop", "EGMStreamStart", "EGMStreamStop")(_no_op)
+compiled("SkipWarn()", "ClearPath()", "MotionSup(\\switch On | switch Off \\num TuneValue)", "ReadCfgData(string InstancePath, string Attribute, VAR anytype CfgData \\num ListNo)", "ErrLog(num ErrorId \\switch W | switch I, anytype Argument1, anytype Argument2, "
+    "anytype Argument3, anytype Argument4, anytype Argument5)", "WaitSyncTask(\\switch InPos, VAR syncident SyncID, REF tasks TaskList{*} \\num TimeOut)", "SyncMoveOn(VAR syncident SyncID, REF tasks TaskList{*} \\num TimeOut)", "SyncMoveOff(VAR syncident SyncID \\num TimeOut)", f"EGMActJoint(VAR egmident EGMid \\switch StreamStart \\PERS tooldata Tool \\PERS wobjdata WObj "
+    f"\\PERS loaddata TLoad {JOINTS} {ACT_TAIL})", "EGMActPose(VAR egmident EGMid \\switch StreamStart \\PERS tooldata Tool \\PERS wobjdata WObj "
+    "\\PERS loaddata TLoad, pose CorrFrame, egmframetype CorrFrType, pose SensorFrame, "
+    f"egmframetype SensFrType {AXES} {ACT_TAIL})", "EGMRunJoint(VAR egmident EGMid, egmstopmode Mode \\switch NoWaitCond "
+    + " ".join(f"\\switch J{i}" for i in range(1, 8)) + f" {RUN_TAIL})", "EGMRunPose(VAR egmident EGMid, egmstopmode Mode \\switch NoWaitCond "
+    + " ".join(f"\\switch {a}" for a in ("x", "y", "z", "rx", "ry", "rz")) + f" {RUN_TAIL})", "EGMStop(VAR egmident EGMid, egmstopmode Mode \\num RampOutTime)", "EGMStreamStart(VAR egmident EGMid \\num SampleRate)", "EGMStreamStop(VAR egmident EGMid)")(no_op)
 
 
 # ===========================================================================
@@ -193,17 +146,18 @@ def _egm_state(calls, compiler, call, entry, new):
     return Action(call.span, lambda m: m.write_ref(ident(m), new))
 
 
-@procedure("EGMGetId", "EGMReset")
+@compiled("EGMGetId(VAR egmident EGMid)", "EGMReset(VAR egmident EGMid)")
 def _egm_get_id(calls, compiler, call, entry):
     return _egm_state(calls, compiler, call, entry, None)
 
 
-@procedure("EGMSetupUC")
+@compiled("EGMSetupUC(mecunit MecUnit, VAR egmident EGMid, string ExtConfigName, string UCDevice "
+    "\\switch Pose | switch Joint | switch PathCorr \\num CommTimeout)")
 def _egm_setup(calls, compiler, call, entry):
     return _egm_state(calls, compiler, call, entry, EGM_STATE_CONNECTED)
 
 
-@function("EGMGetState")
+@compiled("egmstate EGMGetState(VAR egmident EGMid)")
 def _egm_get_state(calls, compiler, call, entry) -> Compiled:
     ident = Arguments(calls, compiler, call, entry).fn("EGMid")
 

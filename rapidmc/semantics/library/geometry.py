@@ -13,8 +13,18 @@ from ..errors import RapidError
 from ..values import to_num
 from .registry import function
 from .vector_math import (
-    as_orient, as_pos, axis_rotation, orient_normalise, pos_cross, pos_dot, pos_magnitude,
-    quaternion_multiply, quaternion_normalised, quaternion_rotate, vector_add, vector_sub,
+    as_orient,
+    as_pos,
+    axis_rotation,
+    orient_normalise,
+    pos_cross,
+    pos_dot,
+    pos_magnitude,
+    quaternion_multiply,
+    quaternion_normalised,
+    quaternion_rotate,
+    vector_add,
+    vector_sub,
 )
 
 X_AXIS, Y_AXIS, Z_AXIS = 0, 1, 2

@@ -5,28 +5,15 @@ the arguments and reads and writes the variables.
 """
 from __future__ import annotations
 
-from ..diagnostics import ARGUMENT, error
-from . import rawbytes
-from .builtins.registry import special
-from .expressions import Compiled
-from .instructions import Action
-from .machine import ABSENT
-from .special_routines import Arguments, _arg_expr, function, procedure
-from .types import NUM, STRING
-
-_FORMATS = "\\switch Hex1 | num IntX | switch Float4"
-SIGNATURES = (
-    "ClearRawBytes(VAR rawbytes RawData \\num FromIndex)",
-    "num RawBytesLen(VAR rawbytes RawData)",
-    f"PackRawBytes(anytype Value, VAR rawbytes RawData \\switch Network, num StartIndex "
-    f"{_FORMATS} | switch ASCII)",
-    f"UnpackRawBytes(VAR rawbytes RawData \\switch Network, num StartIndex, INOUT anytype Value "
-    f"{_FORMATS} | num ASCII)",
-    "CopyRawBytes(VAR rawbytes FromRawData, num FromIndex, VAR rawbytes ToRawData, "
-    "num ToIndex \\num NoOfBytes)",
-)
-for _text in SIGNATURES:
-    special(_text)
+from ...diagnostics import ARGUMENT, error
+from .. import rawbytes
+from ..expressions import Compiled
+from ..instructions import Action
+from ..machine import ABSENT
+from ..types import NUM, STRING
+from .arguments import Arguments, argument_expression
+from .registry import compiled
+from .signature_parts import FORMATS
 
 
 def _encoding(call, arguments, value_type):
@@ -52,7 +39,7 @@ def _encoding(call, arguments, value_type):
 
 
 def _value_type(compiler, call, key: str, position: int, by_reference: bool):
-    expr = _arg_expr(call, key, position)
+    expr = argument_expression(call, key, position)
     if expr is None:
         return None
     if by_reference:
@@ -60,7 +47,7 @@ def _value_type(compiler, call, key: str, position: int, by_reference: bool):
     return compiler.value(expr).type
 
 
-@procedure("ClearRawBytes")
+@compiled("ClearRawBytes(VAR rawbytes RawData \\num FromIndex)")
 def _clear_raw_bytes(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     ref, start = arguments.fn("RawData"), arguments.value("FromIndex")
@@ -72,13 +59,14 @@ def _clear_raw_bytes(calls, compiler, call, entry):
     return Action(call.span, clear)
 
 
-@function("RawBytesLen")
+@compiled("num RawBytesLen(VAR rawbytes RawData)")
 def _raw_bytes_len(calls, compiler, call, entry) -> Compiled:
     ref = Arguments(calls, compiler, call, entry).fn("RawData")
     return Compiled(lambda m: float(len(rawbytes.as_bytes(m.read_ref(ref(m))))), NUM)
 
 
-@procedure("PackRawBytes")
+@compiled(f"PackRawBytes(anytype Value, VAR rawbytes RawData \\switch Network, num StartIndex "
+    f"{FORMATS} | switch ASCII)")
 def _pack_raw_bytes(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     encoding = _encoding(call, arguments, _value_type(compiler, call, "Value", 0, False))
@@ -92,7 +80,8 @@ def _pack_raw_bytes(calls, compiler, call, entry):
     return Action(call.span, pack)
 
 
-@procedure("UnpackRawBytes")
+@compiled(f"UnpackRawBytes(VAR rawbytes RawData \\switch Network, num StartIndex, INOUT anytype Value "
+    f"{FORMATS} | num ASCII)")
 def _unpack_raw_bytes(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     value_type = _value_type(compiler, call, "Value", 2, True)
@@ -106,7 +95,8 @@ def _unpack_raw_bytes(calls, compiler, call, entry):
     return Action(call.span, unpack)
 
 
-@procedure("CopyRawBytes")
+@compiled("CopyRawBytes(VAR rawbytes FromRawData, num FromIndex, VAR rawbytes ToRawData, "
+    "num ToIndex \\num NoOfBytes)")
 def _copy_raw_bytes(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     source, from_index = arguments.fn("FromRawData"), arguments.value("FromIndex")

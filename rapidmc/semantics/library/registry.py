@@ -35,14 +35,28 @@ Calling convention (what the interpreter does after binding arguments):
   ``dnum_impl``; the interpreter picks ``entry.implementation(type_name)``
   once, at link time, from the static type of that argument (the first
   anynum parameter).  Results are already rounded to the chosen type.
-* ``special`` entries have ``impl=None``: the interpreter implements them
-  itself (they need the program state), but their calls are checked
-  against the same signatures.
+* Routines that read or change the program state (I/O, motion, the
+  FlexPendant, clocks, interrupts ...) have ``impl=None`` and a ``factory``
+  instead, registered with ``@compiled(signature, ...)``: the factory
+  receives each call site once, at link time (already checked against the
+  signature), and returns a compiled closure (functions) or an
+  instruction (procedures)::
+
+      @compiled("Set(VAR signaldo Signal)", "Reset(VAR signaldo Signal)")
+      def set_or_reset(calls, compiler, call, entry): ...
+
+* Every entry says how rapidmc models it (``modelled``): ``EXACT`` (the
+  documented result or effect), ``CHOICE`` (the controller or the world
+  decides: each outcome is a nondeterministic choice), ``ROBOT_STATE``
+  (only the modelled robot position, tool, work object or load change) or
+  ``NO_EFFECT`` (checked against its signature, changes nothing rapidmc
+  observes).  docs/predefined.md lists them (``rapidmc.library_doc``).
 
 Lookups are by canonical (upper-case) name: ``lookup_function("ROUND")``.
 """
 from __future__ import annotations
 
+import importlib
 import re
 from dataclasses import dataclass
 from typing import Callable, Iterator, Optional
@@ -57,6 +71,14 @@ MODES = (VAR, PERS, INOUT, REF)
 ANYTYPE = "anytype"
 ANYNUM = "anynum"
 SWITCH = "switch"
+
+# How a predefined routine is modelled (docs/predefined.md)
+EXACT = "exact"
+CHOICE = "nondeterministic outcomes"
+ROBOT_STATE = "robot state only"
+NO_EFFECT = "no effect"
+NOT_MODELLED = "stops the run: not modelled"
+MODELLED_AS = (EXACT, CHOICE, ROBOT_STATE, NO_EFFECT, NOT_MODELLED)
 
 
 class SignatureSyntaxError(ValueError):
@@ -130,6 +152,9 @@ class RoutineEntry:
     impl: Optional[Callable[..., object]]
     special: bool = False
     dnum_impl: Optional[Callable[..., object]] = None
+    factory: Optional[Callable[..., object]] = None
+    modelled: str = EXACT
+    topic: str = ""                 # the library module that defines it
 
     @property
     def key(self) -> str:
@@ -259,23 +284,31 @@ def parse_signature(text: str) -> Signature:
 
 
 def register(text: str, impl: Optional[Callable[..., object]], special: bool = False,
-             dnum_impl: Optional[Callable[..., object]] = None) -> RoutineEntry:
+             dnum_impl: Optional[Callable[..., object]] = None,
+             factory: Optional[Callable[..., object]] = None, modelled: str = EXACT,
+             topic: str = "") -> RoutineEntry:
     """Add one routine; a second registration of a name is a bug."""
     signature = parse_signature(text)
     if impl is None and not special:
         raise SignatureSyntaxError(f"{signature.name} has no implementation and is not special")
+    if modelled not in MODELLED_AS:
+        raise SignatureSyntaxError(f"{signature.name}: unknown modelling {modelled!r}")
     table = FUNCTIONS if signature.kind == FUNCTION else PROCEDURES
     if signature.key in table:
         raise SignatureSyntaxError(f"{signature.name} registered twice")
-    entry = RoutineEntry(signature, impl, special, dnum_impl)
+    entry = RoutineEntry(signature, impl, special, dnum_impl, factory, modelled, topic)
     table[signature.key] = entry
     return entry
+
+
+def _topic(code: Callable) -> str:
+    return code.__module__.rsplit(".", 1)[-1]
 
 
 def function(text: str) -> Callable[[Callable[..., object]], Callable[..., object]]:
     """Decorator: register a predefined function with signature ``text``."""
     def decorate(impl: Callable[..., object]) -> Callable[..., object]:
-        entry = register(text, impl)
+        entry = register(text, impl, topic=_topic(impl))
         if entry.signature.kind != FUNCTION:
             raise SignatureSyntaxError(f"{text!r} declares no return type")
         return impl
@@ -285,7 +318,7 @@ def function(text: str) -> Callable[[Callable[..., object]], Callable[..., objec
 def procedure(text: str) -> Callable[[Callable[..., object]], Callable[..., object]]:
     """Decorator: register a predefined procedure (instruction) with signature ``text``."""
     def decorate(impl: Callable[..., object]) -> Callable[..., object]:
-        entry = register(text, impl)
+        entry = register(text, impl, topic=_topic(impl))
         if entry.signature.kind != PROCEDURE:
             raise SignatureSyntaxError(f"{text!r} declares a return type")
         return impl
@@ -302,14 +335,23 @@ def numeric(text: str) -> Callable[[Callable[[NumericKind], Callable[..., object
             return lambda name: {"Name": kind.convert(name + 1)}
     """
     def decorate(make: Callable[[NumericKind], Callable[..., object]]) -> object:
-        register(text, make(NUM), dnum_impl=make(DNUM))
+        register(text, make(NUM), dnum_impl=make(DNUM), topic=_topic(make))
         return make
     return decorate
 
 
-def special(text: str) -> RoutineEntry:
-    """Register a routine the interpreter implements itself (signature only)."""
-    return register(text, None, special=True)
+def compiled(*texts: str, modelled: str = EXACT) -> Callable:
+    """Decorator: register routines whose calls ``factory`` compiles (they use the state).
+
+    ``factory(calls, compiler, call, entry)`` returns a ``Compiled`` closure for a
+    function, an ``Instruction`` for a procedure; several signatures may share it.
+    """
+    def decorate(factory: Callable[..., object]) -> Callable[..., object]:
+        for text in texts:
+            register(text, None, special=True, factory=factory, modelled=modelled,
+                     topic=_topic(factory))
+        return factory
+    return decorate
 
 
 _loaded = False
@@ -320,8 +362,9 @@ def _load() -> None:
     global _loaded
     if not _loaded:
         _loaded = True
-        from . import (bits, conversion, geometry, math,  # noqa: F401
-                       numeric_instructions, specials, stringdig, strings)
+        from . import TOPICS
+        for topic in TOPICS:
+            importlib.import_module(f"{__package__}.{topic}")
 
 
 def lookup_function(key: str) -> Optional[RoutineEntry]:

@@ -13,43 +13,24 @@ lines), and written text not ended by a new line yet.
 """
 from __future__ import annotations
 
-from . import rawbytes, values
-from .builtins.data import PREDEFINED_DATA
-from .builtins.registry import special
-from .errors import RapidError
-from .expressions import Compiled
-from .instructions import Action
-from .machine import ABSENT
-from .special_io import configured, environment_text
-from .special_routines import TP_OPTIONS, Arguments, function, procedure
-from .types import NUM, STRING
+from .. import rawbytes, values
+from ..errors import RapidError
+from ..expressions import Compiled
+from ..instructions import Action
+from ..machine import ABSENT
+from ..types import NUM, STRING
+from .arguments import Arguments
+from .data import PREDEFINED_DATA
+from .flexpendant import TP_OPTIONS
+from .registry import compiled
+from .signature_parts import DEVICE, TIME
+from .sockets import configured, environment_text
 
 EOF_TEXT = "EOF"
 EOF_NUM = float(PREDEFINED_DATA["EOF_NUM"].value)
 EOF_BIN = -1.0
 READ, WRITE, APPEND, BINARY = "read", "write", "append", "bin"
 
-_DEVICE = "VAR iodev IODevice"
-_TIME = "\\num Time"
-SIGNATURES = (
-    f"Open(string Object \\string File, {_DEVICE} \\switch Read | switch Write | switch Append "
-    "| switch Bin)",
-    f"Close({_DEVICE})",
-    f"Write({_DEVICE}, string String \\num Num | bool Bool | pos Pos | orient Orient "
-    "| dnum Dnum \\switch NoNewLine)",
-    f"WriteStrBin({_DEVICE}, string Str)",
-    f"WriteBin({_DEVICE}, num Buffer{{*}}, num NChar)",
-    f"WriteRawBytes({_DEVICE}, VAR rawbytes RawData \\num NoOfBytes)",
-    f"ClearIOBuff({_DEVICE})",
-    f"Rewind({_DEVICE})",
-    f"ReadRawBytes({_DEVICE}, VAR rawbytes RawData, num NoOfBytes {_TIME})",
-    f"string ReadStr({_DEVICE} {_TIME} \\switch RemoveCR)",
-    f"num ReadNum({_DEVICE} \\string Delim {_TIME})",
-    f"num ReadBin({_DEVICE} {_TIME})",
-    f"string ReadStrBin({_DEVICE}, num NoOfChars {_TIME})",
-)
-for _text in SIGNATURES:
-    special(_text)
 
 
 def _open_device(m, ref, what: str, writing: bool = False):
@@ -83,7 +64,8 @@ def _writer(calls, compiler, call, entry, text_of):
     return Action(call.span, write)
 
 
-@procedure("Open")
+@compiled(f"Open(string Object \\string File, {DEVICE} \\switch Read | switch Write | switch Append "
+    "| switch Bin)")
 def _open(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     place, file, device = arguments.value("Object"), arguments.value("File"), arguments.fn("IODevice")
@@ -103,7 +85,7 @@ def _open(calls, compiler, call, entry):
     return Action(call.span, open_device)
 
 
-@procedure("Close")
+@compiled(f"Close({DEVICE})")
 def _close(calls, compiler, call, entry):
     device = Arguments(calls, compiler, call, entry).fn("IODevice")
 
@@ -125,12 +107,13 @@ def _write_text(m, arguments) -> str:
     return text if arguments.value("NoNewLine")(m) is True else text + "\n"
 
 
-@procedure("Write")
+@compiled(f"Write({DEVICE}, string String \\num Num | bool Bool | pos Pos | orient Orient "
+    "| dnum Dnum \\switch NoNewLine)")
 def _write(calls, compiler, call, entry):
     return _writer(calls, compiler, call, entry, _write_text)
 
 
-@procedure("WriteStrBin")
+@compiled(f"WriteStrBin({DEVICE}, string Str)")
 def _write_str_bin(calls, compiler, call, entry):
     return _writer(calls, compiler, call, entry, lambda m, a: a.value("Str")(m))
 
@@ -139,7 +122,7 @@ def _byte_text(data) -> str:
     return rawbytes.to_text(bytes(data)) + "\n"
 
 
-@procedure("WriteBin")
+@compiled(f"WriteBin({DEVICE}, num Buffer{{*}}, num NChar)")
 def _write_bin(calls, compiler, call, entry):
     def text_of(m, arguments):
         buffer, count = arguments.value("Buffer")(m), arguments.value("NChar")(m)
@@ -149,7 +132,7 @@ def _write_bin(calls, compiler, call, entry):
     return _writer(calls, compiler, call, entry, text_of)
 
 
-@procedure("WriteRawBytes")
+@compiled(f"WriteRawBytes({DEVICE}, VAR rawbytes RawData \\num NoOfBytes)")
 def _write_raw_bytes(calls, compiler, call, entry):
     def text_of(m, arguments):
         data = rawbytes.as_bytes(arguments.value("RawData")(m))
@@ -158,7 +141,7 @@ def _write_raw_bytes(calls, compiler, call, entry):
     return _writer(calls, compiler, call, entry, text_of)
 
 
-@procedure("ClearIOBuff")
+@compiled(f"ClearIOBuff({DEVICE})")
 def _clear_io_buff(calls, compiler, call, entry):
     device = Arguments(calls, compiler, call, entry).fn("IODevice")
 
@@ -169,7 +152,7 @@ def _clear_io_buff(calls, compiler, call, entry):
     return Action(call.span, clear)
 
 
-@procedure("Rewind")
+@compiled(f"Rewind({DEVICE})")
 def _rewind(calls, compiler, call, entry):
     device = Arguments(calls, compiler, call, entry).fn("IODevice")
     return Action(call.span, lambda m: _open_device(m, device(m), "Rewind"))
@@ -212,7 +195,7 @@ def _characters(m, call, name: str, unread: str, count: int):
     return unread
 
 
-@function("ReadStr")
+@compiled(f"string ReadStr({DEVICE} {TIME} \\switch RemoveCR)")
 def _read_str(calls, compiler, call, entry) -> Compiled:
     def read(m, arguments, name, unread):
         if unread:
@@ -223,7 +206,7 @@ def _read_str(calls, compiler, call, entry) -> Compiled:
     return _reader(calls, compiler, call, entry, read, STRING)
 
 
-@function("ReadNum")
+@compiled(f"num ReadNum({DEVICE} \\string Delim {TIME})")
 def _read_num(calls, compiler, call, entry) -> Compiled:
     def read(m, arguments, name, unread):
         line = unread.partition("\n")[0] if unread else _next_line(m, call, name)
@@ -236,7 +219,7 @@ def _read_num(calls, compiler, call, entry) -> Compiled:
     return _reader(calls, compiler, call, entry, read, NUM)
 
 
-@function("ReadBin")
+@compiled(f"num ReadBin({DEVICE} {TIME})")
 def _read_bin(calls, compiler, call, entry) -> Compiled:
     def read(m, arguments, name, unread):
         unread = _characters(m, call, name, unread, 1)
@@ -246,7 +229,7 @@ def _read_bin(calls, compiler, call, entry) -> Compiled:
     return _reader(calls, compiler, call, entry, read, NUM)
 
 
-@function("ReadStrBin")
+@compiled(f"string ReadStrBin({DEVICE}, num NoOfChars {TIME})")
 def _read_str_bin(calls, compiler, call, entry) -> Compiled:
     def read(m, arguments, name, unread):
         count = arguments.value("NoOfChars")(m)
@@ -259,7 +242,7 @@ def _read_str_bin(calls, compiler, call, entry) -> Compiled:
     return _reader(calls, compiler, call, entry, read, STRING)
 
 
-@procedure("ReadRawBytes")
+@compiled(f"ReadRawBytes({DEVICE}, VAR rawbytes RawData, num NoOfBytes {TIME})")
 def _read_raw_bytes(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     device, target, count = arguments.fn("IODevice"), arguments.fn("RawData"), \

@@ -1,0 +1,48 @@
+"""What the factories of state-reading routines share: bound arguments, robot state parts."""
+from __future__ import annotations
+
+from typing import Callable
+
+from ... import ast
+from ..calls import REFERENCE
+from ..machine import ABSENT
+
+ROBOT_TCP, ROBOT_TOOL, ROBOT_WOBJ, ROBOT_JOINTS = range(4)
+
+
+
+class Arguments:
+    """The bound arguments of one call, by parameter name."""
+
+    def __init__(self, calls, compiler, call, entry):
+        self.binders = calls.bind(compiler, entry, call.args, call.span)
+        self.specs = entry.signature.parameters
+        self.by_key = {spec.key: binder for spec, binder in zip(self.specs, self.binders)}
+
+    def fn(self, key: str) -> Callable:
+        return self.by_key[key.upper()][1]
+
+    def kind(self, key: str) -> str:
+        return self.by_key[key.upper()][0]
+
+    def value(self, key: str) -> Callable:
+        """fn(m) -> value of the argument (ABSENT if not given); reads through references."""
+        kind, fn = self.by_key[key.upper()]
+        if kind == REFERENCE:
+            def deref(m):
+                ref = fn(m)
+                return ABSENT if ref is ABSENT else m.read_ref(ref)
+            return deref
+        return fn
+
+
+def argument_expression(call, key: str, position: int):
+    """The AST expression given for a parameter (by name or position), or None."""
+    positional = [a for a in call.args if a.kind == ast.REQUIRED and a.name is None]
+    for arg in call.args:
+        if arg.name is not None and arg.name.key == key.upper():
+            return arg.value
+    if 0 <= position < len(positional):
+        return positional[position].value
+    return None
+

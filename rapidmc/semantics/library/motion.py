@@ -1,0 +1,79 @@
+"""Motion: the robot state jumps to the programmed target in one step."""
+from __future__ import annotations
+
+from ..errors import RapidError
+from ..instructions import ControlAction, Instruction, enter_routine
+from ..machine import ABSENT
+from .arguments import ROBOT_JOINTS, ROBOT_TCP, ROBOT_TOOL, ROBOT_WOBJ, Arguments
+from .registry import compiled
+from .signals import dionum, write_signal
+from .signature_parts import MOVE_DO_TAIL, MOVE_TAIL
+
+
+def move(calls, compiler, call, entry, target_key: str, joint: bool = False,
+          signal: bool = False, sync: bool = False) -> Instruction:
+    arguments = Arguments(calls, compiler, call, entry)
+    target = arguments.value(target_key)
+    tool = arguments.value("Tool")
+    wobj = arguments.value("WObj")
+    signal_fn = arguments.fn("Signal") if signal else None
+    signal_value = arguments.value("Value") if signal else None
+    proc_name = arguments.value("ProcName") if sync else None
+    candidates = {}
+    if sync:
+        routine = compiler.routine
+        for callee in compiler.linker.procedures_visible(routine):
+            if not callee.parameters:
+                candidates[callee.key] = callee
+
+    def move(m, instruction):
+        robot = list(m.robot)
+        point = target(m)
+        if joint:
+            robot[ROBOT_JOINTS] = point
+        else:
+            robot[ROBOT_TCP] = point
+        robot[ROBOT_TOOL] = tool(m)
+        w = wobj(m)
+        if w is not ABSENT:
+            robot[ROBOT_WOBJ] = w
+        m.robot = tuple(robot)
+        if signal:
+            write_signal(m, signal_fn(m), dionum(signal_value(m)))
+        if sync:
+            name = proc_name(m)
+            callee = candidates.get(name.upper())
+            if callee is None:
+                raise RapidError("ERR_REFUNKPRC", f"no procedure named '{name}' without parameters")
+            enter_routine(m, callee, [])     # the caller goes on after the move when it returns
+        else:
+            m.goto(instruction.next)
+    return ControlAction(call.span, move)
+
+
+@compiled(f"MoveJ(\\switch Conc, robtarget ToPoint \\identno ID, {MOVE_TAIL} \\PERS loaddata TLoad)", f"MoveL(\\switch Conc, robtarget ToPoint \\identno ID, {MOVE_TAIL} \\switch Corr "
+    "\\PERS loaddata TLoad)", f"MoveC(\\switch Conc, robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_TAIL} "
+    "\\switch Corr \\PERS loaddata TLoad)")
+def _move_to_point(calls, compiler, call, entry):
+    return move(calls, compiler, call, entry, "ToPoint")
+
+
+@compiled(f"MoveAbsJ(\\switch Conc, jointtarget ToJointPos \\identno ID \\switch NoEOffs, {MOVE_TAIL} "
+    "\\PERS loaddata TLoad)")
+def _move_abs_j(calls, compiler, call, entry):
+    return move(calls, compiler, call, entry, "ToJointPos", joint=True)
+
+
+@compiled(f"MoveJDO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, VAR signaldo Signal, dionum Value "
+    "\\PERS loaddata TLoad)", f"MoveLDO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, VAR signaldo Signal, dionum Value "
+    "\\PERS loaddata TLoad)", f"MoveCDO(robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, "
+    "VAR signaldo Signal, dionum Value \\PERS loaddata TLoad)")
+def _move_do(calls, compiler, call, entry):
+    return move(calls, compiler, call, entry, "ToPoint", signal=True)
+
+
+@compiled(f"MoveJSync(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, string ProcName \\PERS loaddata TLoad)", f"MoveLSync(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, string ProcName \\PERS loaddata TLoad)", f"MoveCSync(robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, "
+    "string ProcName \\PERS loaddata TLoad)")
+def _move_sync(calls, compiler, call, entry):
+    return move(calls, compiler, call, entry, "ToPoint", sync=True)
+
