@@ -14,7 +14,7 @@ from ..instructions import Action, ControlAction
 from ..types import BOOL, NUM, STRING
 from .arguments import Arguments
 from .motion import move
-from .registry import compiled
+from .registry import FIXED, NO_EFFECT, NOT_MODELLED, ROBOT_STATE, compiled
 from .signals import signal_reader
 from .signature_parts import ACT_TAIL, AXES, JOINTS, RUN_TAIL, TRIGG_TAIL
 from .waits import no_op
@@ -33,7 +33,8 @@ EGM_STATE_DISCONNECTED, EGM_STATE_CONNECTED, EGM_STATE_RUNNING = 1.0, 2.0, 3.0
 # ===========================================================================
 
 @compiled("string GetSysInfo(" + " | ".join(f"\\switch {key}" if i == 0 else f"switch {key}"
-                                      for i, (key, _) in enumerate(SYSTEM_INFO)) + ")")
+              for i, (key, _) in enumerate(SYSTEM_INFO)) + ")",
+          modelled=FIXED)
 def _get_sys_info(calls, compiler, call, entry) -> Compiled:
     arguments = Arguments(calls, compiler, call, entry)
     switches = [(arguments.value(key), text) for key, text in SYSTEM_INFO]
@@ -43,20 +44,23 @@ def _get_sys_info(calls, compiler, call, entry) -> Compiled:
     return Compiled(info, STRING)
 
 
-@compiled("bool RobOS()")
+@compiled("bool RobOS()",
+          modelled=FIXED)
 def _rob_os(calls, compiler, call, entry) -> Compiled:
     """FALSE: rapidmc is a virtual controller, not the robot's operating system."""
     Arguments(calls, compiler, call, entry)
     return constant(False, BOOL)
 
 
-@compiled("bool IsStopMoveAct(\\switch FromMoveTask | switch FromNonMoveTask)")
+@compiled("bool IsStopMoveAct(\\switch FromMoveTask | switch FromNonMoveTask)",
+          modelled=FIXED)
 def _is_stop_move_act(calls, compiler, call, entry) -> Compiled:
     Arguments(calls, compiler, call, entry)
     return constant(False, BOOL)
 
 
-@compiled("string GetTaskName(\\INOUT num TaskNo | INOUT num MecTaskNo)")
+@compiled("string GetTaskName(\\INOUT num TaskNo | INOUT num MecTaskNo)",
+          modelled=FIXED)
 def _get_task_name(calls, compiler, call, entry) -> Compiled:
     arguments = Arguments(calls, compiler, call, entry)
     numbers = [arguments.fn(key) for key in ("TaskNo", "MecTaskNo")]
@@ -70,11 +74,14 @@ def _get_task_name(calls, compiler, call, entry) -> Compiled:
     return Compiled(task_name, STRING)
 
 
-compiled("num AInput(VAR signalai Signal)", "num GInput(VAR signalgi Signal)")(signal_reader)
+compiled("num AInput(VAR signalai Signal)",
+         "num GInput(VAR signalgi Signal)")(signal_reader)
 
 
 @compiled("jointtarget CalcJointT(\\switch UseCurWObjPos, robtarget Rob_target, PERS tooldata Tool "
-    "\\PERS wobjdata WObj \\num ConfAngle \\INOUT errnum ErrorNumber)", "robtarget CalcRobT(jointtarget Joint_target, PERS tooldata Tool \\PERS wobjdata WObj)")
+              "\\PERS wobjdata WObj \\num ConfAngle \\INOUT errnum ErrorNumber)",
+          "robtarget CalcRobT(jointtarget Joint_target, PERS tooldata Tool \\PERS wobjdata WObj)",
+          modelled=NOT_MODELLED)
 def _kinematics(calls, compiler, call, entry) -> Compiled:
     """Inverse and forward kinematics: the program links; reaching the call stops with RMC305."""
     Arguments(calls, compiler, call, entry)
@@ -123,18 +130,36 @@ def _wait_test_and_set(calls, compiler, call, entry):
 # Moves with triggers, and motion settings
 # ===========================================================================
 
-@compiled(f"TriggL(\\switch Conc, robtarget ToPoint \\identno ID, {TRIGG_TAIL})", f"TriggJ(\\switch Conc, robtarget ToPoint \\identno ID, {TRIGG_TAIL})", f"TriggC(\\switch Conc, robtarget CirPoint, robtarget ToPoint \\identno ID, {TRIGG_TAIL})")
+@compiled(f"TriggL(\\switch Conc, robtarget ToPoint \\identno ID, {TRIGG_TAIL})",
+          f"TriggJ(\\switch Conc, robtarget ToPoint \\identno ID, {TRIGG_TAIL})",
+          f"TriggC(\\switch Conc, robtarget CirPoint, robtarget ToPoint \\identno ID, {TRIGG_TAIL})",
+          modelled=ROBOT_STATE)
 def _trigg_move(calls, compiler, call, entry):
     return move(calls, compiler, call, entry, "ToPoint")
 
 
-compiled("SkipWarn()", "ClearPath()", "MotionSup(\\switch On | switch Off \\num TuneValue)", "ReadCfgData(string InstancePath, string Attribute, VAR anytype CfgData \\num ListNo)", "ErrLog(num ErrorId \\switch W | switch I, anytype Argument1, anytype Argument2, "
-    "anytype Argument3, anytype Argument4, anytype Argument5)", "WaitSyncTask(\\switch InPos, VAR syncident SyncID, REF tasks TaskList{*} \\num TimeOut)", "SyncMoveOn(VAR syncident SyncID, REF tasks TaskList{*} \\num TimeOut)", "SyncMoveOff(VAR syncident SyncID \\num TimeOut)", f"EGMActJoint(VAR egmident EGMid \\switch StreamStart \\PERS tooldata Tool \\PERS wobjdata WObj "
-    f"\\PERS loaddata TLoad {JOINTS} {ACT_TAIL})", "EGMActPose(VAR egmident EGMid \\switch StreamStart \\PERS tooldata Tool \\PERS wobjdata WObj "
-    "\\PERS loaddata TLoad, pose CorrFrame, egmframetype CorrFrType, pose SensorFrame, "
-    f"egmframetype SensFrType {AXES} {ACT_TAIL})", "EGMRunJoint(VAR egmident EGMid, egmstopmode Mode \\switch NoWaitCond "
-    + " ".join(f"\\switch J{i}" for i in range(1, 8)) + f" {RUN_TAIL})", "EGMRunPose(VAR egmident EGMid, egmstopmode Mode \\switch NoWaitCond "
-    + " ".join(f"\\switch {a}" for a in ("x", "y", "z", "rx", "ry", "rz")) + f" {RUN_TAIL})", "EGMStop(VAR egmident EGMid, egmstopmode Mode \\num RampOutTime)", "EGMStreamStart(VAR egmident EGMid \\num SampleRate)", "EGMStreamStop(VAR egmident EGMid)")(no_op)
+compiled("SkipWarn()",
+         "ClearPath()",
+         "MotionSup(\\switch On | switch Off \\num TuneValue)",
+         "ReadCfgData(string InstancePath, string Attribute, VAR anytype CfgData \\num ListNo)",
+         "ErrLog(num ErrorId \\switch W | switch I, anytype Argument1, anytype Argument2, "
+             "anytype Argument3, anytype Argument4, anytype Argument5)",
+         "WaitSyncTask(\\switch InPos, VAR syncident SyncID, REF tasks TaskList{*} \\num TimeOut)",
+         "SyncMoveOn(VAR syncident SyncID, REF tasks TaskList{*} \\num TimeOut)",
+         "SyncMoveOff(VAR syncident SyncID \\num TimeOut)",
+         f"EGMActJoint(VAR egmident EGMid \\switch StreamStart \\PERS tooldata Tool \\PERS wobjdata WObj "
+             f"\\PERS loaddata TLoad {JOINTS} {ACT_TAIL})",
+         "EGMActPose(VAR egmident EGMid \\switch StreamStart \\PERS tooldata Tool \\PERS wobjdata WObj "
+             "\\PERS loaddata TLoad, pose CorrFrame, egmframetype CorrFrType, pose SensorFrame, "
+             f"egmframetype SensFrType {AXES} {ACT_TAIL})",
+         "EGMRunJoint(VAR egmident EGMid, egmstopmode Mode \\switch NoWaitCond "
+             + " ".join(f"\\switch J{i}" for i in range(1, 8)) + f" {RUN_TAIL})",
+         "EGMRunPose(VAR egmident EGMid, egmstopmode Mode \\switch NoWaitCond "
+             + " ".join(f"\\switch {a}" for a in ("x", "y", "z", "rx", "ry", "rz")) + f" {RUN_TAIL})",
+         "EGMStop(VAR egmident EGMid, egmstopmode Mode \\num RampOutTime)",
+         "EGMStreamStart(VAR egmident EGMid \\num SampleRate)",
+         "EGMStreamStop(VAR egmident EGMid)",
+         modelled=NO_EFFECT)(no_op)
 
 
 # ===========================================================================
@@ -146,13 +171,14 @@ def _egm_state(calls, compiler, call, entry, new):
     return Action(call.span, lambda m: m.write_ref(ident(m), new))
 
 
-@compiled("EGMGetId(VAR egmident EGMid)", "EGMReset(VAR egmident EGMid)")
+@compiled("EGMGetId(VAR egmident EGMid)",
+          "EGMReset(VAR egmident EGMid)")
 def _egm_get_id(calls, compiler, call, entry):
     return _egm_state(calls, compiler, call, entry, None)
 
 
 @compiled("EGMSetupUC(mecunit MecUnit, VAR egmident EGMid, string ExtConfigName, string UCDevice "
-    "\\switch Pose | switch Joint | switch PathCorr \\num CommTimeout)")
+              "\\switch Pose | switch Joint | switch PathCorr \\num CommTimeout)")
 def _egm_setup(calls, compiler, call, entry):
     return _egm_state(calls, compiler, call, entry, EGM_STATE_CONNECTED)
 

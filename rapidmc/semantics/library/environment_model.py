@@ -5,7 +5,7 @@ from ..errors import RapidError
 from ..expressions import Compiled
 from ..types import BOOL, NUM
 from .arguments import Arguments
-from .registry import compiled
+from .registry import CHOICE, compiled
 
 ENVIRONMENT_ONLY = {"ANYBOOL", "ANYNUM", "SETDI", "SETAI", "SETGI"}
 
@@ -14,14 +14,16 @@ def where(span) -> str:
     return f"{Path(span.file).name}:{span.line}:{span.column}"
 
 
-@compiled("bool AnyBool()")
+@compiled("bool AnyBool()",
+          modelled=CHOICE)
 def _any_bool(calls, compiler, call, entry) -> Compiled:
     Arguments(calls, compiler, call, entry)
     name = f"AnyBool at {where(call.span)}"
     return Compiled(lambda m: m.choose(name, (False, True)), BOOL)
 
 
-@compiled("num AnyNum(num Low, num High)")
+@compiled("num AnyNum(num Low, num High)",
+          modelled=CHOICE)
 def _any_num(calls, compiler, call, entry) -> Compiled:
     arguments = Arguments(calls, compiler, call, entry)
     low = arguments.value("Low")

@@ -22,7 +22,7 @@ from ..types import NUM, STRING
 from .arguments import Arguments
 from .data import PREDEFINED_DATA
 from .flexpendant import TP_OPTIONS
-from .registry import compiled
+from .registry import CHOICE, compiled
 from .signature_parts import DEVICE, TIME
 from .sockets import configured, environment_text
 
@@ -65,7 +65,7 @@ def _writer(calls, compiler, call, entry, text_of):
 
 
 @compiled(f"Open(string Object \\string File, {DEVICE} \\switch Read | switch Write | switch Append "
-    "| switch Bin)")
+              "| switch Bin)")
 def _open(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     place, file, device = arguments.value("Object"), arguments.value("File"), arguments.fn("IODevice")
@@ -108,7 +108,7 @@ def _write_text(m, arguments) -> str:
 
 
 @compiled(f"Write({DEVICE}, string String \\num Num | bool Bool | pos Pos | orient Orient "
-    "| dnum Dnum \\switch NoNewLine)")
+              "| dnum Dnum \\switch NoNewLine)")
 def _write(calls, compiler, call, entry):
     return _writer(calls, compiler, call, entry, _write_text)
 
@@ -195,7 +195,8 @@ def _characters(m, call, name: str, unread: str, count: int):
     return unread
 
 
-@compiled(f"string ReadStr({DEVICE} {TIME} \\switch RemoveCR)")
+@compiled(f"string ReadStr({DEVICE} {TIME} \\switch RemoveCR)",
+          modelled=CHOICE)
 def _read_str(calls, compiler, call, entry) -> Compiled:
     def read(m, arguments, name, unread):
         if unread:
@@ -206,7 +207,8 @@ def _read_str(calls, compiler, call, entry) -> Compiled:
     return _reader(calls, compiler, call, entry, read, STRING)
 
 
-@compiled(f"num ReadNum({DEVICE} \\string Delim {TIME})")
+@compiled(f"num ReadNum({DEVICE} \\string Delim {TIME})",
+          modelled=CHOICE)
 def _read_num(calls, compiler, call, entry) -> Compiled:
     def read(m, arguments, name, unread):
         line = unread.partition("\n")[0] if unread else _next_line(m, call, name)
@@ -219,7 +221,8 @@ def _read_num(calls, compiler, call, entry) -> Compiled:
     return _reader(calls, compiler, call, entry, read, NUM)
 
 
-@compiled(f"num ReadBin({DEVICE} {TIME})")
+@compiled(f"num ReadBin({DEVICE} {TIME})",
+          modelled=CHOICE)
 def _read_bin(calls, compiler, call, entry) -> Compiled:
     def read(m, arguments, name, unread):
         unread = _characters(m, call, name, unread, 1)
@@ -229,7 +232,8 @@ def _read_bin(calls, compiler, call, entry) -> Compiled:
     return _reader(calls, compiler, call, entry, read, NUM)
 
 
-@compiled(f"string ReadStrBin({DEVICE}, num NoOfChars {TIME})")
+@compiled(f"string ReadStrBin({DEVICE}, num NoOfChars {TIME})",
+          modelled=CHOICE)
 def _read_str_bin(calls, compiler, call, entry) -> Compiled:
     def read(m, arguments, name, unread):
         count = arguments.value("NoOfChars")(m)
@@ -242,7 +246,8 @@ def _read_str_bin(calls, compiler, call, entry) -> Compiled:
     return _reader(calls, compiler, call, entry, read, STRING)
 
 
-@compiled(f"ReadRawBytes({DEVICE}, VAR rawbytes RawData, num NoOfBytes {TIME})")
+@compiled(f"ReadRawBytes({DEVICE}, VAR rawbytes RawData, num NoOfBytes {TIME})",
+          modelled=CHOICE)
 def _read_raw_bytes(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     device, target, count = arguments.fn("IODevice"), arguments.fn("RawData"), \

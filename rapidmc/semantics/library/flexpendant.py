@@ -5,7 +5,7 @@ from .. import values
 from ..instructions import Action
 from ..machine import ABSENT
 from .arguments import Arguments
-from .registry import compiled
+from .registry import CHOICE, NO_EFFECT, compiled
 from .signature_parts import TP_BREAKS
 
 TP_OPTIONS = (("NUM", "num"), ("BOOL", "bool"), ("POS", "num"), ("ORIENT", "num"),
@@ -28,14 +28,16 @@ def _tp_write(calls, compiler, call, entry):
     return Action(call.span, write)
 
 
-@compiled("TPErase()")
+@compiled("TPErase()",
+          modelled=NO_EFFECT)
 def _tp_erase(calls, compiler, call, entry):
     Arguments(calls, compiler, call, entry)
     return Action(call.span, lambda m: None)
 
 
 @compiled("ErrWrite(\\switch W | switch I, string Header, string Reason "
-    "\\string RL2 \\string RL3 \\string RL4)")
+              "\\string RL2 \\string RL3 \\string RL4)",
+          modelled=NO_EFFECT)
 def _err_write(calls, compiler, call, entry):
     Arguments(calls, compiler, call, entry)
     return Action(call.span, lambda m: None)
@@ -54,8 +56,11 @@ def _tp_read(calls, compiler, call, entry, kind: str):
     return Action(call.span, read)
 
 
-@compiled(f"TPReadNum(INOUT num TPAnswer, string TPText {TP_BREAKS})", f"TPReadDnum(INOUT dnum TPAnswer, string TPText {TP_BREAKS})", "TPReadFK(INOUT num TPAnswer, string TPText, string TPFK1, string TPFK2, string TPFK3, "
-    f"string TPFK4, string TPFK5 {TP_BREAKS})")
+@compiled(f"TPReadNum(INOUT num TPAnswer, string TPText {TP_BREAKS})",
+          f"TPReadDnum(INOUT dnum TPAnswer, string TPText {TP_BREAKS})",
+          "TPReadFK(INOUT num TPAnswer, string TPText, string TPFK1, string TPFK2, string TPFK3, "
+              f"string TPFK4, string TPFK5 {TP_BREAKS})",
+          modelled=CHOICE)
 def _tp_read_any(calls, compiler, call, entry):
     return _tp_read(calls, compiler, call, entry, entry.signature.name)
 

@@ -53,8 +53,9 @@ def _update_interrupt(m, number: float, change) -> None:
 
 
 @compiled("ISignalDI(\\switch Single | switch SingleSafe, VAR signaldi Signal, dionum TriggValue, "
-    "VAR intnum Interrupt)", "ISignalDO(\\switch Single | switch SingleSafe, VAR signaldo Signal, dionum TriggValue, "
-    "VAR intnum Interrupt)")
+              "VAR intnum Interrupt)",
+          "ISignalDO(\\switch Single | switch SingleSafe, VAR signaldo Signal, dionum TriggValue, "
+              "VAR intnum Interrupt)")
 def _isignal(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     signal = arguments.fn("Signal")
@@ -119,7 +120,8 @@ def _idelete(calls, compiler, call, entry):
     return Action(call.span, delete)
 
 
-@compiled("ISleep(intnum Interrupt)", "IWatch(intnum Interrupt)")
+@compiled("ISleep(intnum Interrupt)",
+          "IWatch(intnum Interrupt)")
 def _isleep(calls, compiler, call, entry):
     interrupt = Arguments(calls, compiler, call, entry).value("Interrupt")
     active = call.name.key == "IWATCH"
@@ -133,7 +135,8 @@ def _isleep(calls, compiler, call, entry):
     return Action(call.span, sleep)
 
 
-@compiled("IEnable()", "IDisable()")
+@compiled("IEnable()",
+          "IDisable()")
 def _ienable(calls, compiler, call, entry):
     Arguments(calls, compiler, call, entry)
     enabled = call.name.key == "IENABLE"

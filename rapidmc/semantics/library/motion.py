@@ -5,7 +5,7 @@ from ..errors import RapidError
 from ..instructions import ControlAction, Instruction, enter_routine
 from ..machine import ABSENT
 from .arguments import ROBOT_JOINTS, ROBOT_TCP, ROBOT_TOOL, ROBOT_WOBJ, Arguments
-from .registry import compiled
+from .registry import ROBOT_STATE, compiled
 from .signals import dionum, write_signal
 from .signature_parts import MOVE_DO_TAIL, MOVE_TAIL
 
@@ -51,29 +51,37 @@ def move(calls, compiler, call, entry, target_key: str, joint: bool = False,
     return ControlAction(call.span, move)
 
 
-@compiled(f"MoveJ(\\switch Conc, robtarget ToPoint \\identno ID, {MOVE_TAIL} \\PERS loaddata TLoad)", f"MoveL(\\switch Conc, robtarget ToPoint \\identno ID, {MOVE_TAIL} \\switch Corr "
-    "\\PERS loaddata TLoad)", f"MoveC(\\switch Conc, robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_TAIL} "
-    "\\switch Corr \\PERS loaddata TLoad)")
+@compiled(f"MoveJ(\\switch Conc, robtarget ToPoint \\identno ID, {MOVE_TAIL} \\PERS loaddata TLoad)",
+          f"MoveL(\\switch Conc, robtarget ToPoint \\identno ID, {MOVE_TAIL} \\switch Corr "
+              "\\PERS loaddata TLoad)",
+          f"MoveC(\\switch Conc, robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_TAIL} "
+              "\\switch Corr \\PERS loaddata TLoad)",
+          modelled=ROBOT_STATE)
 def _move_to_point(calls, compiler, call, entry):
     return move(calls, compiler, call, entry, "ToPoint")
 
 
 @compiled(f"MoveAbsJ(\\switch Conc, jointtarget ToJointPos \\identno ID \\switch NoEOffs, {MOVE_TAIL} "
-    "\\PERS loaddata TLoad)")
+              "\\PERS loaddata TLoad)",
+          modelled=ROBOT_STATE)
 def _move_abs_j(calls, compiler, call, entry):
     return move(calls, compiler, call, entry, "ToJointPos", joint=True)
 
 
 @compiled(f"MoveJDO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, VAR signaldo Signal, dionum Value "
-    "\\PERS loaddata TLoad)", f"MoveLDO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, VAR signaldo Signal, dionum Value "
-    "\\PERS loaddata TLoad)", f"MoveCDO(robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, "
-    "VAR signaldo Signal, dionum Value \\PERS loaddata TLoad)")
+              "\\PERS loaddata TLoad)",
+          f"MoveLDO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, VAR signaldo Signal, dionum Value "
+              "\\PERS loaddata TLoad)",
+          f"MoveCDO(robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, "
+              "VAR signaldo Signal, dionum Value \\PERS loaddata TLoad)")
 def _move_do(calls, compiler, call, entry):
     return move(calls, compiler, call, entry, "ToPoint", signal=True)
 
 
-@compiled(f"MoveJSync(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, string ProcName \\PERS loaddata TLoad)", f"MoveLSync(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, string ProcName \\PERS loaddata TLoad)", f"MoveCSync(robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, "
-    "string ProcName \\PERS loaddata TLoad)")
+@compiled(f"MoveJSync(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, string ProcName \\PERS loaddata TLoad)",
+          f"MoveLSync(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, string ProcName \\PERS loaddata TLoad)",
+          f"MoveCSync(robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, "
+              "string ProcName \\PERS loaddata TLoad)")
 def _move_sync(calls, compiler, call, entry):
     return move(calls, compiler, call, entry, "ToPoint", sync=True)
 

@@ -6,7 +6,6 @@ from .arguments import ROBOT_JOINTS, ROBOT_TCP, ROBOT_TOOL, ROBOT_WOBJ, Argument
 from .registry import compiled
 from .signature_parts import TASK
 
-
 # name -> (part of the robot state, component of it or None for the whole part)
 _PARTS = {"CPOS": (ROBOT_TCP, 0), "CROBT": (ROBOT_TCP, None), "CJOINTT": (ROBOT_JOINTS, None),
           "CTOOL": (ROBOT_TOOL, None), "CWOBJ": (ROBOT_WOBJ, None)}
@@ -14,7 +13,9 @@ _PARTS = {"CPOS": (ROBOT_TCP, 0), "CROBT": (ROBOT_TCP, None), "CJOINTT": (ROBOT_
 
 @compiled("pos CPos(\\PERS tooldata Tool \\PERS wobjdata WObj)",
           f"robtarget CRobT({TASK} \\PERS tooldata Tool \\PERS wobjdata WObj)",
-          f"jointtarget CJointT({TASK})", f"tooldata CTool({TASK})", f"wobjdata CWObj({TASK})")
+          f"jointtarget CJointT({TASK})",
+          f"tooldata CTool({TASK})",
+          f"wobjdata CWObj({TASK})")
 def _robot_part(calls, compiler, call, entry) -> Compiled:
     """The modelled robot's position, joints, tool or work object (as last programmed)."""
     Arguments(calls, compiler, call, entry)

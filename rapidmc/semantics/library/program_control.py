@@ -10,7 +10,8 @@ from .arguments import Arguments
 from .registry import compiled
 
 
-@compiled("Stop(\\switch NoRegain | switch AllMoveTasks)", "Break()")
+@compiled("Stop(\\switch NoRegain | switch AllMoveTasks)",
+          "Break()")
 def _stop(calls, compiler, call, entry):
     Arguments(calls, compiler, call, entry)
 
@@ -61,3 +62,13 @@ def _call_by_var(calls, compiler, call, entry):
         enter_routine(m, callee, [])
     return ControlAction(call.span, call_by_var)
 
+
+
+@compiled("ResetRetryCount()")
+def _reset_retry_count(calls, compiler, call, entry):
+    Arguments(calls, compiler, call, entry)
+
+    def reset(m):
+        frame = m.frames[-1]
+        m.frames[-1] = frame._replace(retries=0)
+    return Action(call.span, reset)

@@ -66,7 +66,7 @@ def _raw_bytes_len(calls, compiler, call, entry) -> Compiled:
 
 
 @compiled(f"PackRawBytes(anytype Value, VAR rawbytes RawData \\switch Network, num StartIndex "
-    f"{FORMATS} | switch ASCII)")
+              f"{FORMATS} | switch ASCII)")
 def _pack_raw_bytes(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     encoding = _encoding(call, arguments, _value_type(compiler, call, "Value", 0, False))
@@ -81,7 +81,7 @@ def _pack_raw_bytes(calls, compiler, call, entry):
 
 
 @compiled(f"UnpackRawBytes(VAR rawbytes RawData \\switch Network, num StartIndex, INOUT anytype Value "
-    f"{FORMATS} | num ASCII)")
+              f"{FORMATS} | num ASCII)")
 def _unpack_raw_bytes(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     value_type = _value_type(compiler, call, "Value", 2, True)
@@ -96,7 +96,7 @@ def _unpack_raw_bytes(calls, compiler, call, entry):
 
 
 @compiled("CopyRawBytes(VAR rawbytes FromRawData, num FromIndex, VAR rawbytes ToRawData, "
-    "num ToIndex \\num NoOfBytes)")
+              "num ToIndex \\num NoOfBytes)")
 def _copy_raw_bytes(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     source, from_index = arguments.fn("FromRawData"), arguments.value("FromIndex")

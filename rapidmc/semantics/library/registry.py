@@ -48,9 +48,11 @@ Calling convention (what the interpreter does after binding arguments):
 * Every entry says how rapidmc models it (``modelled``): ``EXACT`` (the
   documented result or effect), ``CHOICE`` (the controller or the world
   decides: each outcome is a nondeterministic choice), ``ROBOT_STATE``
-  (only the modelled robot position, tool, work object or load change) or
-  ``NO_EFFECT`` (checked against its signature, changes nothing rapidmc
-  observes).  docs/predefined.md lists them (``rapidmc.library_doc``).
+  (only the modelled robot position, tool, work object or load change),
+  ``FIXED`` (a function whose controller-dependent result is one fixed
+  value, e.g. the date), ``NO_EFFECT`` (checked against its signature,
+  changes nothing rapidmc observes) or ``NOT_MODELLED`` (the program loads;
+  reaching the call stops with RMC305).  docs/predefined.md lists them (``rapidmc.library_doc``).
 
 Lookups are by canonical (upper-case) name: ``lookup_function("ROUND")``.
 """
@@ -77,8 +79,9 @@ EXACT = "exact"
 CHOICE = "nondeterministic outcomes"
 ROBOT_STATE = "robot state only"
 NO_EFFECT = "no effect"
+FIXED = "fixed value"
 NOT_MODELLED = "stops the run: not modelled"
-MODELLED_AS = (EXACT, CHOICE, ROBOT_STATE, NO_EFFECT, NOT_MODELLED)
+MODELLED_AS = (EXACT, CHOICE, ROBOT_STATE, FIXED, NO_EFFECT, NOT_MODELLED)
 
 
 class SignatureSyntaxError(ValueError):

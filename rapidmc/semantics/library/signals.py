@@ -14,7 +14,12 @@ from .arguments import Arguments, argument_expression
 from .registry import compiled
 
 
-@compiled("dionum DInput(VAR signaldi Signal)", "dionum DOutput(VAR signaldo Signal)", "num AOutput(VAR signalao Signal)", "num GOutput(VAR signalgo Signal)", "dnum GInputDnum(VAR signalgi Signal)", "dnum GOutputDnum(VAR signalgo Signal)")
+@compiled("dionum DInput(VAR signaldi Signal)",
+          "dionum DOutput(VAR signaldo Signal)",
+          "num AOutput(VAR signalao Signal)",
+          "num GOutput(VAR signalgo Signal)",
+          "dnum GInputDnum(VAR signalgi Signal)",
+          "dnum GOutputDnum(VAR signalgo Signal)")
 def signal_reader(calls, compiler, call, entry) -> Compiled:
     signal = Arguments(calls, compiler, call, entry).fn("Signal")
     result = DNUM if call.name.key.endswith("DNUM") else NUM
@@ -124,7 +129,9 @@ def _set_di(calls, compiler, call, entry):
     return _signal_action(calls, compiler, call, entry, new_value)
 
 
-@compiled("SetAO(VAR signalao Signal, num Value)", "SetAI(VAR signalai Signal, num Value)", "SetGI(VAR signalgi Signal, num Value)")
+@compiled("SetAO(VAR signalao Signal, num Value)",
+          "SetAI(VAR signalai Signal, num Value)",
+          "SetGI(VAR signalgi Signal, num Value)")
 def _set_ao(calls, compiler, call, entry):
     return _signal_action(calls, compiler, call, entry,
                           lambda m, arguments, old: arguments.value("Value")(m))

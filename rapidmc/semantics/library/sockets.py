@@ -24,7 +24,7 @@ from ..types import NUM
 from .arguments import Arguments, argument_expression
 from .data import PREDEFINED_DATA
 from .environment_model import where
-from .registry import compiled
+from .registry import CHOICE, compiled
 from .signature_parts import TIME
 
 SOCKET_CREATED, SOCKET_CONNECTED, SOCKET_BOUND, SOCKET_LISTENING, SOCKET_CLOSED = \
@@ -116,7 +116,10 @@ TRANSITIONS = {
 }
 
 
-@compiled("SocketCreate(VAR socketdev Socket \\switch UDP)", "SocketBind(VAR socketdev Socket, string LocalAddress, num LocalPort)", "SocketListen(VAR socketdev Socket)", "SocketClose(VAR socketdev Socket)")
+@compiled("SocketCreate(VAR socketdev Socket \\switch UDP)",
+          "SocketBind(VAR socketdev Socket, string LocalAddress, num LocalPort)",
+          "SocketListen(VAR socketdev Socket)",
+          "SocketClose(VAR socketdev Socket)")
 def _socket_transition(calls, compiler, call, entry):
     """Moves a socket from the state the instruction needs to the one it leaves."""
     socket = Arguments(calls, compiler, call, entry).fn("Socket")
@@ -139,7 +142,8 @@ def _connection(m, call, seconds, failure: str) -> None:
         raise RapidError("ERR_SOCK_TIMEOUT", f"{what}: {failure}")
 
 
-@compiled(f"SocketConnect(VAR socketdev Socket, string Address, num Port {TIME})")
+@compiled(f"SocketConnect(VAR socketdev Socket, string Address, num Port {TIME})",
+          modelled=CHOICE)
 def _socket_connect(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     socket, seconds = arguments.fn("Socket"), arguments.value("Time")
@@ -153,7 +157,8 @@ def _socket_connect(calls, compiler, call, entry):
 
 
 @compiled("SocketAccept(VAR socketdev Socket, VAR socketdev ClientSocket "
-    f"\\VAR string ClientAddress {TIME})")
+              f"\\VAR string ClientAddress {TIME})",
+          modelled=CHOICE)
 def _socket_accept(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     server, client = arguments.fn("Socket"), arguments.fn("ClientSocket")
@@ -197,7 +202,7 @@ def _no_data(call) -> None:
 
 
 @compiled("SocketSend(VAR socketdev Socket \\string Str | VAR rawbytes RawData | VAR anytype Data "
-    "\\num NoOfBytes)")
+              "\\num NoOfBytes)")
 def _socket_send(calls, compiler, call, entry):
     _no_data(call)
     arguments = Arguments(calls, compiler, call, entry)
@@ -236,7 +241,8 @@ def _receive_message(m, call, seconds) -> str:
 
 
 @compiled("SocketReceive(VAR socketdev Socket \\VAR string Str | VAR rawbytes RawData | "
-    f"VAR anytype Data \\num ReadNoOfBytes \\VAR num NoRecBytes {TIME})")
+              f"VAR anytype Data \\num ReadNoOfBytes \\VAR num NoRecBytes {TIME})",
+          modelled=CHOICE)
 def _socket_receive(calls, compiler, call, entry):
     _no_data(call)
     arguments = Arguments(calls, compiler, call, entry)

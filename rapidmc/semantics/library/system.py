@@ -20,7 +20,7 @@ from ..types import (
     RapidType,
 )
 from .arguments import Arguments, argument_expression
-from .registry import compiled
+from .registry import FIXED, compiled
 
 
 @compiled("bool Present(REF anytype OptPar)")
@@ -113,7 +113,8 @@ def _str_to_val(calls, compiler, call, entry) -> Compiled:
     return Compiled(str_to_val, BOOL)
 
 
-@compiled("bool IsPers(INOUT anytype DatObj)", "bool IsVar(INOUT anytype DatObj)")
+@compiled("bool IsPers(INOUT anytype DatObj)",
+          "bool IsVar(INOUT anytype DatObj)")
 def _is_pers(calls, compiler, call, entry) -> Compiled:
     target = argument_expression(call, "DatObj", 0)
     _, _, symbol = compiler.reference(target, "inspected")
@@ -122,12 +123,14 @@ def _is_pers(calls, compiler, call, entry) -> Compiled:
     return constant(storage == wanted, BOOL)
 
 
-@compiled("symnum OpMode()")
+@compiled("symnum OpMode()",
+          modelled=FIXED)
 def _op_mode(calls, compiler, call, entry) -> Compiled:
     return constant(compiler.linker.system_symbol(ast.Name.of("OP_AUTO")).value, NUM)
 
 
-@compiled("symnum RunMode(\\switch Main)")
+@compiled("symnum RunMode(\\switch Main)",
+          modelled=FIXED)
 def _run_mode(calls, compiler, call, entry) -> Compiled:
     return constant(compiler.linker.system_symbol(ast.Name.of("RUN_CONT_CYCLE")).value, NUM)
 
@@ -138,13 +141,16 @@ def _remaining_retries(calls, compiler, call, entry) -> Compiled:
                                         - m.frames[-1].retries)), NUM)
 
 
-@compiled("string CDate()", "string CTime()")
+@compiled("string CDate()",
+          "string CTime()",
+          modelled=FIXED)
 def _date(calls, compiler, call, entry) -> Compiled:
     text = "2026-01-01" if call.name.key == "CDATE" else "00:00:00"
     return constant(text, STRING)
 
 
-@compiled("num GetTime(\\switch WDay | switch Hour | switch Min | switch Sec)")
+@compiled("num GetTime(\\switch WDay | switch Hour | switch Min | switch Sec)",
+          modelled=FIXED)
 def _get_time(calls, compiler, call, entry) -> Compiled:
     return constant(0.0, NUM)
 

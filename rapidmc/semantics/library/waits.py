@@ -5,7 +5,7 @@ from ..errors import RapidError
 from ..instructions import Action, ControlAction, Instruction, Wait
 from ..timing import advance_to, next_event
 from .arguments import Arguments, argument_expression
-from .registry import compiled
+from .registry import NO_EFFECT, compiled
 
 
 @compiled("WaitTime(\\switch InPos, num Time)")
@@ -49,7 +49,8 @@ def _wait(calls, compiler, call, entry, condition_factory, what: str) -> Instruc
     return Wait(call.span, condition, timeout, flag_ref, what)
 
 
-@compiled("WaitDI(VAR signaldi Signal, dionum Value \\num MaxTime \\VAR bool TimeFlag)", "WaitDO(VAR signaldo Signal, dionum Value \\num MaxTime \\VAR bool TimeFlag)")
+@compiled("WaitDI(VAR signaldi Signal, dionum Value \\num MaxTime \\VAR bool TimeFlag)",
+          "WaitDO(VAR signaldo Signal, dionum Value \\num MaxTime \\VAR bool TimeFlag)")
 def _wait_signal(calls, compiler, call, entry):
     def factory(arguments):
         signal = arguments.fn("Signal")
@@ -65,15 +66,20 @@ def _wait_until(calls, compiler, call, entry):
     return _wait(calls, compiler, call, entry, factory, "WaitUntil condition")
 
 
-@compiled("WaitRob(\\switch InPos | switch ZeroSpeed)", "StopMove(\\switch Quick \\switch AllMotionTasks)", "StartMove(\\switch AllMotionTasks)", "ConfJ(\\switch On | switch Off)", "ConfL(\\switch On | switch Off)", "AccSet(num Acc, num Ramp \\num FinePointRamp)", "VelSet(num Override, num Max)", "SingArea(\\switch Wrist | switch LockAxis4 | switch Off)", "TriggIO(VAR triggdata TriggData, num Distance \\switch Start | switch Time "
-    "\\VAR signaldo DOp | VAR signalgo GOp | VAR signalao AOp | num ProcID, "
-    "num SetValue | dnum SetDvalue \\num DODelay)", "ResetRetryCount()")
+@compiled("WaitRob(\\switch InPos | switch ZeroSpeed)",
+          "StopMove(\\switch Quick \\switch AllMotionTasks)",
+          "StartMove(\\switch AllMotionTasks)",
+          "ConfJ(\\switch On | switch Off)",
+          "ConfL(\\switch On | switch Off)",
+          "AccSet(num Acc, num Ramp \\num FinePointRamp)",
+          "VelSet(num Override, num Max)",
+          "SingArea(\\switch Wrist | switch LockAxis4 | switch Off)",
+          "TriggIO(VAR triggdata TriggData, num Distance \\switch Start | switch Time "
+              "\\VAR signaldo DOp | VAR signalgo GOp | VAR signalao AOp | num ProcID, "
+              "num SetValue | dnum SetDvalue \\num DODelay)",
+          modelled=NO_EFFECT)
 def no_op(calls, compiler, call, entry):
+    """Checked against the signature; nothing rapidmc observes changes."""
     Arguments(calls, compiler, call, entry)
-    if call.name.key == "RESETRETRYCOUNT":
-        def reset(m):
-            frame = m.frames[-1]
-            m.frames[-1] = frame._replace(retries=0)
-        return Action(call.span, reset)
     return Action(call.span, lambda m: None)
 
