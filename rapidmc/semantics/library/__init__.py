@@ -23,6 +23,8 @@ from .registry import (  # noqa: F401
 # The modules that register routines, in the order docs/predefined.md shows them.
 TOPICS = (
     "math", "numeric_instructions", "bits", "strings", "stringdig", "conversion", "geometry",
-    "system", "position", "signals", "clocks", "flexpendant", "waits", "motion", "interrupts",
-    "program_control", "controller", "sockets", "files", "raw_data", "environment_model",
+    "system", "data_access", "position", "signals", "clocks", "flexpendant", "flexpendant_ui",
+    "waits", "motion", "search", "motion_settings", "path_recovery", "world_zones", "conveyor",
+    "interrupts", "program_control", "error_recovery", "controller", "tasks", "sockets", "files",
+    "file_system", "raw_data", "message_queues", "vision", "environment_model",
 )

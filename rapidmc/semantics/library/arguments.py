@@ -5,6 +5,8 @@ from typing import Callable
 
 from ... import ast
 from ..calls import REFERENCE
+from ..expressions import Compiled, constant
+from ..instructions import Action, Instruction
 from ..machine import ABSENT
 
 ROBOT_TCP, ROBOT_TOOL, ROBOT_WOBJ, ROBOT_JOINTS = range(4)
@@ -46,3 +48,18 @@ def argument_expression(call, key: str, position: int):
         return positional[position].value
     return None
 
+
+
+def no_effect(calls, compiler, call, entry) -> Instruction:
+    """Factory of an instruction checked against its signature that changes nothing
+    rapidmc observes (motion tuning, process settings, logs)."""
+    Arguments(calls, compiler, call, entry)
+    return Action(call.span, lambda m: None)
+
+
+def fixed(value) -> Callable:
+    """Factory of a function whose controller-dependent result is the fixed ``value``."""
+    def factory(calls, compiler, call, entry) -> Compiled:
+        Arguments(calls, compiler, call, entry)
+        return constant(value, calls.return_type(entry))
+    return factory

@@ -12,12 +12,11 @@ from ...diagnostics import UNSUPPORTED, error
 from ..expressions import Compiled, constant
 from ..instructions import Action, ControlAction
 from ..types import BOOL, NUM, STRING
-from .arguments import Arguments
-from .motion import move
+from .arguments import Arguments, no_effect
+from .motion import move_robot
 from .registry import FIXED, NO_EFFECT, NOT_MODELLED, ROBOT_STATE, compiled
 from .signals import signal_reader
 from .signature_parts import ACT_TAIL, AXES, JOINTS, RUN_TAIL, TRIGG_TAIL
-from .waits import no_op
 
 SYSTEM_INFO = (("SerialNo", "rapidmc-0001"), ("SWVersion", "6.0.0"), ("RobotType", "IRB 120"),
                ("CtrlId", "rapidmc"), ("LanIp", "127.0.0.1"), ("CtrlLang", "en"),
@@ -135,7 +134,7 @@ def _wait_test_and_set(calls, compiler, call, entry):
           f"TriggC(\\switch Conc, robtarget CirPoint, robtarget ToPoint \\identno ID, {TRIGG_TAIL})",
           modelled=ROBOT_STATE)
 def _trigg_move(calls, compiler, call, entry):
-    return move(calls, compiler, call, entry, "ToPoint")
+    return move_robot(calls, compiler, call, entry, "ToPoint")
 
 
 compiled("SkipWarn()",
@@ -159,7 +158,7 @@ compiled("SkipWarn()",
          "EGMStop(VAR egmident EGMid, egmstopmode Mode \\num RampOutTime)",
          "EGMStreamStart(VAR egmident EGMid \\num SampleRate)",
          "EGMStreamStop(VAR egmident EGMid)",
-         modelled=NO_EFFECT)(no_op)
+         modelled=NO_EFFECT)(no_effect)
 
 
 # ===========================================================================

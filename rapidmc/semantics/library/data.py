@@ -125,6 +125,58 @@ for _number in range(1, 7):
     _define(f"ROB_{_number}", "mecunit", None)
 
 
+# --- FlexPendant dialogs, error reports, events (numbers: our choice, distinct per type) --
+for _number, _name in enumerate(("resUnkwn", "resOK", "resAbort", "resRetry", "resIgnore",
+                                 "resCancel", "resYes", "resNo")):
+    _define(_name, "btnres", float(_number))
+for _number, _name in enumerate(("btnNone", "btnOK", "btnAbrtRtryIgn", "btnOKCancel",
+                                 "btnRetryCancel", "btnYesNo", "btnYesNoCancel"), start=-1):
+    _define(_name, "buttondata", float(_number))
+for _number, _name in enumerate(("iconNone", "iconInfo", "iconWarning", "iconError")):
+    _define(_name, "icondata", float(_number))
+for _number, _name in enumerate(("COMMON_ERR", "OP_STATE", "SYSTEM_ERR", "HARDWARE_ERR",
+                                 "PROGRAM_ERR", "MOTION_ERR", "OPERATOR_ERR", "IO_COM_ERR",
+                                 "USER_DEF_ERR", "OPTION_PROD_ERR", "ARCWELD_ERR", "SPOTWELD_ERR",
+                                 "PAINT_ERR", "PICKWARE_ERR", "PROCESS_ERR", "CFG_ERR")):
+    _define(_name, "errdomain", float(_number))
+for _number, _name in enumerate(("TYPE_ALL", "TYPE_STATE", "TYPE_WARN", "TYPE_ERR")):
+    _define(_name, "errtype", float(_number))
+for _number, _name in enumerate(("EVENT_NONE", "EVENT_POWERON", "EVENT_START", "EVENT_STOP",
+                                 "EVENT_QSTOP", "EVENT_RESTART", "EVENT_RESET", "EVENT_STEP")):
+    _define(_name, "event_type", float(_number))
+for _number, _name in enumerate(("HANDLER_NONE", "HANDLER_BWD", "HANDLER_ERR", "HANDLER_UNDO")):
+    _define(_name, "handler_type", float(_number))
+for _number, _name in enumerate(("LEVEL_NORMAL", "LEVEL_TRAP", "LEVEL_SERVICE")):
+    _define(_name, "exec_level", float(_number))
+for _number, _name in enumerate(("TUNE_DF", "TUNE_KP", "TUNE_KV", "TUNE_TI", "TUNE_FRIC_LEV",
+                                 "TUNE_FRIC_RAMP", "TUNE_DG", "TUNE_DH", "TUNE_DI", "TUNE_DK",
+                                 "TUNE_DL")):
+    _define(_name, "tunetype", float(_number))
+
+
+# --- speeds of external axes only: vrot (rotational, deg/s) and vlin (linear, mm/s) ------
+for _speed in (1, 2, 5, 10, 20, 50, 100):
+    _define(f"vrot{_speed}", "speeddata", _nums(0, 0, 0, _speed))
+for _speed in (10, 20, 50, 100, 200, 500, 1000):
+    _define(f"vlin{_speed}", "speeddata", _nums(0, 0, _speed, 0))
+
+# --- stop point data [type, progsynch, [position, speed, mintime, maxtime], stoptime,
+#     followtime, signal, relation, checkvalue] --------------------------------------------
+_INPOS, _STOPTIME, _FLLWTIME = 1.0, 2.0, 3.0
+for _size in (20, 50, 100):
+    _define(f"inpos{_size}", "stoppointdata",
+            (_INPOS, False, _nums(_size, _size, 0, 2), 0.0, 0.0, "", 0.0, 0.0))
+for _text, _seconds in (("0_5", 0.5), ("1_0", 1.0), ("1_5", 1.5)):
+    _define(f"stoptime{_text}", "stoppointdata",
+            (_STOPTIME, False, _nums(0, 0, 0, 0), _seconds, 0.0, "", 0.0, 0.0))
+    _define(f"fllwtime{_text}", "stoppointdata",
+            (_FLLWTIME, True, _nums(0, 0, 0, 0), 0.0, _seconds, "", 0.0, 0.0))
+
+# --- texts for ErrRaise and ErrLog arguments (errstr) -------------------------------------
+for _name in ("ERRSTR_EMPTY", "ERRSTR_UNUSED", "ERRSTR_TASK", "ERRSTR_CONTEXT"):
+    _define(_name, "errstr", "")
+
+
 def lookup_data(key: str) -> PredefinedData | None:
     """The predefined data object with canonical name ``key``, or None."""
     return PREDEFINED_DATA.get(key)

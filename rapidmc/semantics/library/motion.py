@@ -10,8 +10,19 @@ from .signals import dionum, write_signal
 from .signature_parts import MOVE_DO_TAIL, MOVE_TAIL
 
 
-def move(calls, compiler, call, entry, target_key: str, joint: bool = False,
-          signal: bool = False, sync: bool = False) -> Instruction:
+def arrive(m, point, tool, wobj, joint: bool = False) -> None:
+    """The robot is at ``point`` (a robtarget, or a jointtarget when ``joint``) with ``tool``
+    and, when given, ``wobj``."""
+    robot = list(m.robot)
+    robot[ROBOT_JOINTS if joint else ROBOT_TCP] = point
+    robot[ROBOT_TOOL] = tool
+    if wobj is not ABSENT:
+        robot[ROBOT_WOBJ] = wobj
+    m.robot = tuple(robot)
+
+
+def move_robot(calls, compiler, call, entry, target_key: str, joint: bool = False,
+                signal: bool = False, sync: bool = False) -> Instruction:
     arguments = Arguments(calls, compiler, call, entry)
     target = arguments.value(target_key)
     tool = arguments.value("Tool")
@@ -27,17 +38,7 @@ def move(calls, compiler, call, entry, target_key: str, joint: bool = False,
                 candidates[callee.key] = callee
 
     def move(m, instruction):
-        robot = list(m.robot)
-        point = target(m)
-        if joint:
-            robot[ROBOT_JOINTS] = point
-        else:
-            robot[ROBOT_TCP] = point
-        robot[ROBOT_TOOL] = tool(m)
-        w = wobj(m)
-        if w is not ABSENT:
-            robot[ROBOT_WOBJ] = w
-        m.robot = tuple(robot)
+        arrive(m, target(m), tool(m), wobj(m), joint)
         if signal:
             write_signal(m, signal_fn(m), dionum(signal_value(m)))
         if sync:
@@ -58,14 +59,14 @@ def move(calls, compiler, call, entry, target_key: str, joint: bool = False,
               "\\switch Corr \\PERS loaddata TLoad)",
           modelled=ROBOT_STATE)
 def _move_to_point(calls, compiler, call, entry):
-    return move(calls, compiler, call, entry, "ToPoint")
+    return move_robot(calls, compiler, call, entry, "ToPoint")
 
 
 @compiled(f"MoveAbsJ(\\switch Conc, jointtarget ToJointPos \\identno ID \\switch NoEOffs, {MOVE_TAIL} "
               "\\PERS loaddata TLoad)",
           modelled=ROBOT_STATE)
 def _move_abs_j(calls, compiler, call, entry):
-    return move(calls, compiler, call, entry, "ToJointPos", joint=True)
+    return move_robot(calls, compiler, call, entry, "ToJointPos", joint=True)
 
 
 @compiled(f"MoveJDO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, VAR signaldo Signal, dionum Value "
@@ -75,7 +76,7 @@ def _move_abs_j(calls, compiler, call, entry):
           f"MoveCDO(robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, "
               "VAR signaldo Signal, dionum Value \\PERS loaddata TLoad)")
 def _move_do(calls, compiler, call, entry):
-    return move(calls, compiler, call, entry, "ToPoint", signal=True)
+    return move_robot(calls, compiler, call, entry, "ToPoint", signal=True)
 
 
 @compiled(f"MoveJSync(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, string ProcName \\PERS loaddata TLoad)",
@@ -83,5 +84,20 @@ def _move_do(calls, compiler, call, entry):
           f"MoveCSync(robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, "
               "string ProcName \\PERS loaddata TLoad)")
 def _move_sync(calls, compiler, call, entry):
-    return move(calls, compiler, call, entry, "ToPoint", sync=True)
+    return move_robot(calls, compiler, call, entry, "ToPoint", sync=True)
 
+
+
+@compiled("MoveExtJ(\\switch Conc, jointtarget ToJointPos \\identno ID \\switch UseEOffs, "
+              "speeddata Speed \\num T, zonedata Zone \\stoppointdata Inpos)",
+          modelled=ROBOT_STATE)
+def _move_ext_j(calls, compiler, call, entry):
+    """Only the external axes move: the robot's joints keep their values."""
+    target = Arguments(calls, compiler, call, entry).value("ToJointPos")
+
+    def move(m, instruction):
+        robot = list(m.robot)
+        robot[ROBOT_JOINTS] = (robot[ROBOT_JOINTS][0], target(m)[1])
+        m.robot = tuple(robot)
+        m.goto(instruction.next)
+    return ControlAction(call.span, move)

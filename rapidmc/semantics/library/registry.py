@@ -60,6 +60,7 @@ from __future__ import annotations
 
 import importlib
 import re
+import sys
 from dataclasses import dataclass
 from typing import Callable, Iterator, Optional
 
@@ -347,12 +348,15 @@ def compiled(*texts: str, modelled: str = EXACT) -> Callable:
     """Decorator: register routines whose calls ``factory`` compiles (they use the state).
 
     ``factory(calls, compiler, call, entry)`` returns a ``Compiled`` closure for a
-    function, an ``Instruction`` for a procedure; several signatures may share it.
+    function, an ``Instruction`` for a procedure; several signatures may share it, and
+    a shared factory (``no_effect``, ``fixed(value)``) may come from another module:
+    the topic is the module that registers.
     """
+    topic = sys._getframe(1).f_globals["__name__"].rsplit(".", 1)[-1]
+
     def decorate(factory: Callable[..., object]) -> Callable[..., object]:
         for text in texts:
-            register(text, None, special=True, factory=factory, modelled=modelled,
-                     topic=_topic(factory))
+            register(text, None, special=True, factory=factory, modelled=modelled, topic=topic)
         return factory
     return decorate
 

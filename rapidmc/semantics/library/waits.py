@@ -2,9 +2,9 @@
 from __future__ import annotations
 
 from ..errors import RapidError
-from ..instructions import Action, ControlAction, Instruction, Wait
+from ..instructions import ControlAction, Instruction, Wait
 from ..timing import advance_to, next_event
-from .arguments import Arguments, argument_expression
+from .arguments import Arguments, argument_expression, no_effect
 from .registry import NO_EFFECT, compiled
 
 
@@ -66,7 +66,7 @@ def _wait_until(calls, compiler, call, entry):
     return _wait(calls, compiler, call, entry, factory, "WaitUntil condition")
 
 
-@compiled("WaitRob(\\switch InPos | switch ZeroSpeed)",
+compiled("WaitRob(\\switch InPos | switch ZeroSpeed)",
           "StopMove(\\switch Quick \\switch AllMotionTasks)",
           "StartMove(\\switch AllMotionTasks)",
           "ConfJ(\\switch On | switch Off)",
@@ -77,9 +77,5 @@ def _wait_until(calls, compiler, call, entry):
           "TriggIO(VAR triggdata TriggData, num Distance \\switch Start | switch Time "
               "\\VAR signaldo DOp | VAR signalgo GOp | VAR signalao AOp | num ProcID, "
               "num SetValue | dnum SetDvalue \\num DODelay)",
-          modelled=NO_EFFECT)
-def no_op(calls, compiler, call, entry):
-    """Checked against the signature; nothing rapidmc observes changes."""
-    Arguments(calls, compiler, call, entry)
-    return Action(call.span, lambda m: None)
+          modelled=NO_EFFECT)(no_effect)
 
