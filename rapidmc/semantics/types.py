@@ -142,7 +142,7 @@ NUM_ALIASES = (
     "listitem_num", "sensorstate", "num_limit", "triggmode", "paridnum", "loadidnum",
     "errstr_num", "opmode", "runmode",
     "inttypes", "egmstate", "egmstopmode", "egmframetype",
-    "testsignal", "tunetype", "uishownum", "signalorigin",
+    "testsignal", "tunetype", "uishownum", "signalorigin", "aiotrigg",
 )
 STRING_ALIASES = ("stringdig", "errstr")
 

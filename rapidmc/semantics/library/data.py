@@ -177,6 +177,13 @@ for _name in ("ERRSTR_EMPTY", "ERRSTR_UNUSED", "ERRSTR_TASK", "ERRSTR_CONTEXT"):
     _define(_name, "errstr", "")
 
 
+# --- conditions of ISignalAI/AO (aiotrigg) ------------------------------------------------
+for _number, _name in enumerate(("AIO_ABOVE_HIGH", "AIO_BELOW_HIGH", "AIO_ABOVE_LOW",
+                                 "AIO_BELOW_LOW", "AIO_BETWEEN", "AIO_OUTSIDE", "AIO_ALWAYS"),
+                                start=1):
+    _define(_name, "aiotrigg", float(_number))
+
+
 def lookup_data(key: str) -> PredefinedData | None:
     """The predefined data object with canonical name ``key``, or None."""
     return PREDEFINED_DATA.get(key)

@@ -126,3 +126,10 @@ def cross_prod(vector1: tuple, vector2: tuple) -> tuple:
 @function("num Distance(pos Point1, pos Point2)")
 def distance(point1: tuple, point2: tuple) -> float:
     return pos_magnitude(vector_sub(point1, point2))
+
+
+@function("robtarget ORobT(robtarget OrgPoint \\switch InPDisp | switch InEOffs)")
+def original_robtarget(point, in_pdisp, in_eoffs):
+    """The point without program displacement and external axes offsets: rapidmc models
+    neither (PDispOn, EOffsOn change nothing), so none is active and the point is unchanged."""
+    return point

@@ -22,7 +22,7 @@ def arrive(m, point, tool, wobj, joint: bool = False) -> None:
 
 
 def move_robot(calls, compiler, call, entry, target_key: str, joint: bool = False,
-                signal: bool = False, sync: bool = False) -> Instruction:
+                signal: bool = False, sync: bool = False, checked=dionum) -> Instruction:
     arguments = Arguments(calls, compiler, call, entry)
     target = arguments.value(target_key)
     tool = arguments.value("Tool")
@@ -40,7 +40,7 @@ def move_robot(calls, compiler, call, entry, target_key: str, joint: bool = Fals
     def move(m, instruction):
         arrive(m, target(m), tool(m), wobj(m), joint)
         if signal:
-            write_signal(m, signal_fn(m), dionum(signal_value(m)))
+            write_signal(m, signal_fn(m), checked(signal_value(m)))
         if sync:
             name = proc_name(m)
             callee = candidates.get(name.upper())
@@ -101,3 +101,22 @@ def _move_ext_j(calls, compiler, call, entry):
         m.robot = tuple(robot)
         m.goto(instruction.next)
     return ControlAction(call.span, move)
+
+
+def _analog(value: float) -> float:
+    return float(value)
+
+
+_AO_TAIL = "VAR signalao Signal, num Value \\PERS loaddata TLoad"
+_GO_TAIL = "VAR signalgo Signal, num Value \\PERS loaddata TLoad"
+
+
+@compiled(f"MoveJAO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, {_AO_TAIL})",
+          f"MoveLAO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, {_AO_TAIL})",
+          f"MoveCAO(robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, {_AO_TAIL})",
+          f"MoveJGO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, {_GO_TAIL})",
+          f"MoveLGO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, {_GO_TAIL})",
+          f"MoveCGO(robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, {_GO_TAIL})")
+def _move_analog_or_group(calls, compiler, call, entry):
+    """The move, and the analog or group output set at the target (as MoveLDO does)."""
+    return move_robot(calls, compiler, call, entry, "ToPoint", signal=True, checked=_analog)

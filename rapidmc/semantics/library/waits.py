@@ -3,6 +3,7 @@ from __future__ import annotations
 
 from ..errors import RapidError
 from ..instructions import ControlAction, Instruction, Wait
+from ..machine import ABSENT
 from ..timing import advance_to, next_event
 from .arguments import Arguments, argument_expression, no_effect
 from .registry import NO_EFFECT, compiled
@@ -41,11 +42,12 @@ def _wait(calls, compiler, call, entry, condition_factory, what: str) -> Instruc
     arguments = Arguments(calls, compiler, call, entry)
     condition = condition_factory(arguments)
     max_time = arguments.value("MaxTime")
-    flag = arguments.fn("TimeFlag")
     timeout = None
     if argument_expression(call, "MaxTime", -1) is not None:
         timeout = max_time
-    flag_ref = flag if argument_expression(call, "TimeFlag", -1) is not None else None
+    flag_ref = None
+    if "TIMEFLAG" in arguments.by_key and argument_expression(call, "TimeFlag", -1) is not None:
+        flag_ref = arguments.fn("TimeFlag")
     return Wait(call.span, condition, timeout, flag_ref, what)
 
 
@@ -79,3 +81,38 @@ compiled("WaitRob(\\switch InPos | switch ZeroSpeed)",
               "num SetValue | dnum SetDvalue \\num DODelay)",
           modelled=NO_EFFECT)(no_effect)
 
+
+
+_COMPARISONS = (("LT", lambda a, b: a < b), ("GT", lambda a, b: a > b),
+                ("NOTEQ", lambda a, b: a != b))
+
+
+@compiled("WaitAI(VAR signalai Signal \\switch LT | switch GT, num Value \\num MaxTime "
+              "\\VAR num ValueAtTimeout)",
+          "WaitAO(VAR signalao Signal \\switch LT | switch GT, num Value \\num MaxTime "
+              "\\VAR num ValueAtTimeout)",
+          "WaitGI(VAR signalgi Signal \\switch NOTEQ | switch LT | switch GT, "
+              "num Value | dnum Dvalue \\num MaxTime \\VAR num ValueAtTimeout)",
+          "WaitGO(VAR signalgo Signal \\switch NOTEQ | switch LT | switch GT, "
+              "num Value | dnum Dvalue \\num MaxTime \\VAR num ValueAtTimeout)")
+def _wait_compare(calls, compiler, call, entry):
+    """Waits until the signal equals the value, or is less, greater, different with the
+    switch; at \\MaxTime ERR_WAIT_MAXTIME (\\ValueAtTimeout is not written)."""
+    def factory(arguments):
+        signal = arguments.fn("Signal")
+        value = arguments.value("Value")
+        dvalue = arguments.value("Dvalue") if "DVALUE" in arguments.by_key else None
+        switches = [(arguments.value(key), test) for key, test in _COMPARISONS
+                    if key in arguments.by_key]
+
+        def condition(m):
+            wanted = value(m)
+            if wanted is ABSENT and dvalue is not None:
+                wanted = dvalue(m)
+            actual = m.io[signal(m)]
+            for present, test in switches:
+                if present(m) is True:
+                    return test(actual, wanted)
+            return actual == wanted
+        return condition
+    return _wait(calls, compiler, call, entry, factory, f"{call.name.text} condition")
