@@ -26,5 +26,5 @@ TOPICS = (
     "system", "data_access", "position", "signals", "clocks", "flexpendant", "flexpendant_ui",
     "waits", "motion", "search", "motion_settings", "process_support", "path_recovery", "world_zones", "conveyor",
     "interrupts", "program_control", "error_recovery", "controller", "tasks", "sockets", "files",
-    "file_system", "raw_data", "message_queues", "vision", "environment_model",
+    "file_system", "raw_data", "message_queues", "vision", "smart_gripper", "environment_model",
 )
