@@ -207,7 +207,7 @@ class Inference:
 
     def _declaration_values(self, decl: ast.DataDeclaration) -> None:
         for dim in decl.dims:
-            if isinstance(dim, ast.NameRef) and dim.name.key not in self.local:
+            if isinstance(dim, ast.NameRef) and self.undeclared_data(dim.name):
                 self.note(dim.name, DATA, f"array size of {decl.name.text}").sizes_array = True
             self.expect(dim, NUM, f"array size of {decl.name.text}")
             self.expression(dim)
