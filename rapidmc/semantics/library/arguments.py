@@ -4,6 +4,7 @@ from __future__ import annotations
 from typing import Callable
 
 from ... import ast
+from ...diagnostics import UNSUPPORTED, error
 from ..calls import REFERENCE
 from ..expressions import Compiled, constant
 from ..instructions import Action, Instruction
@@ -62,4 +63,18 @@ def fixed(value) -> Callable:
     def factory(calls, compiler, call, entry) -> Compiled:
         Arguments(calls, compiler, call, entry)
         return constant(value, calls.return_type(entry))
+    return factory
+
+
+def not_modelled(reason: str) -> Callable:
+    """Factory of a routine the program may call but rapidmc cannot model: the program
+    loads; reaching the call stops with RMC305 saying ``reason``."""
+    def factory(calls, compiler, call, entry):
+        Arguments(calls, compiler, call, entry)
+
+        def unsupported(m):
+            raise error(UNSUPPORTED, f"{call.name.text} {reason}", call.span)
+        if entry.signature.return_type:
+            return Compiled(unsupported, calls.return_type(entry))
+        return Action(call.span, unsupported)
     return factory

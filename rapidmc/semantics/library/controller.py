@@ -8,16 +8,16 @@ and do nothing.  docs/semantics.md, "Sockets and files", lists them.
 """
 from __future__ import annotations
 
-from ...diagnostics import UNSUPPORTED, error
 from ..expressions import Compiled, constant
 from ..instructions import Action, ControlAction
 from ..types import BOOL, NUM, STRING
-from .arguments import Arguments, no_effect
+from .arguments import Arguments, no_effect, not_modelled
 from .motion import move_robot
 from .registry import FIXED, NO_EFFECT, NOT_MODELLED, ROBOT_STATE, compiled
 from .signals import signal_reader
 from .signature_parts import ACT_TAIL, AXES, JOINTS, RUN_TAIL, TRIGG_TAIL
 
+KINEMATICS = "needs the robot's kinematic model, which rapidmc does not have"
 SYSTEM_INFO = (("SerialNo", "rapidmc-0001"), ("SWVersion", "6.0.0"), ("RobotType", "IRB 120"),
                ("CtrlId", "rapidmc"), ("LanIp", "127.0.0.1"), ("CtrlLang", "en"),
                ("SystemName", "rapidmc"))
@@ -77,20 +77,10 @@ compiled("num AInput(VAR signalai Signal)",
          "num GInput(VAR signalgi Signal)")(signal_reader)
 
 
-@compiled("jointtarget CalcJointT(\\switch UseCurWObjPos, robtarget Rob_target, PERS tooldata Tool "
-              "\\PERS wobjdata WObj \\num ConfAngle \\INOUT errnum ErrorNumber)",
-          "robtarget CalcRobT(jointtarget Joint_target, PERS tooldata Tool \\PERS wobjdata WObj)",
-          modelled=NOT_MODELLED)
-def _kinematics(calls, compiler, call, entry) -> Compiled:
-    """Inverse and forward kinematics: the program links; reaching the call stops with RMC305."""
-    Arguments(calls, compiler, call, entry)
-    result = calls.linker.builtin_types["JOINTTARGET" if call.name.key == "CALCJOINTT"
-                                        else "ROBTARGET"]
-
-    def unsupported(m):
-        raise error(UNSUPPORTED, f"{call.name.text} needs the robot's kinematic model, which "
-                    "rapidmc does not have", call.span)
-    return Compiled(unsupported, result)
+compiled("jointtarget CalcJointT(\\switch UseCurWObjPos, robtarget Rob_target, PERS tooldata Tool "
+             "\\PERS wobjdata WObj \\num ConfAngle \\INOUT errnum ErrorNumber)",
+         "robtarget CalcRobT(jointtarget Joint_target, PERS tooldata Tool \\PERS wobjdata WObj)",
+         modelled=NOT_MODELLED)(not_modelled(KINEMATICS))
 
 
 # ===========================================================================

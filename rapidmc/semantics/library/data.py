@@ -177,6 +177,13 @@ for _name in ("ERRSTR_EMPTY", "ERRSTR_UNUSED", "ERRSTR_TASK", "ERRSTR_CONTEXT"):
     _define(_name, "errstr", "")
 
 
+# --- FlexPendant windows (tpnum) and I/O unit states (iounit_state) -----------------------
+for _number, _name in enumerate(("TP_LATEST", "TP_PROGRAM", "TP_SCREENVIEWER"), start=1):
+    _define(_name, "tpnum", float(_number))
+for _number, _name in enumerate(("IOUNIT_RUNNING", "IOUNIT_RUNERROR", "IOUNIT_DISABLE",
+                                 "IOUNIT_OTHERERR"), start=1):
+    _define(_name, "iounit_state", float(_number))
+
 # --- conditions of ISignalAI/AO (aiotrigg) ------------------------------------------------
 for _number, _name in enumerate(("AIO_ABOVE_HIGH", "AIO_BELOW_HIGH", "AIO_ABOVE_LOW",
                                  "AIO_BELOW_LOW", "AIO_BETWEEN", "AIO_OUTSIDE", "AIO_ALWAYS"),

@@ -31,7 +31,17 @@ compiled("string GetMecUnitName(mecunit MechUnit)", modelled=FIXED)(fixed("ROB_1
 compiled("string NonMotionMode(\\switch Main)", modelled=FIXED)(fixed("OFF"))
 compiled("string TextGet(num Table, num Index)", "string RobName()",
          modelled=FIXED)(fixed(""))
-compiled("num TextTabGet(string TableName)", modelled=FIXED)(fixed(1.0))
+compiled("num TextTabGet(string TableName)", "num PathLevel()", "num MotionPlannerNo()",
+         modelled=FIXED)(fixed(1.0))
+compiled("num MaxRobReorientSpeed()", modelled=FIXED)(fixed(500.0))
+compiled("num MaxExtLinearSpeed()", modelled=FIXED)(fixed(5000.0))
+compiled("num MaxExtReorientSpeed()", modelled=FIXED)(fixed(1000.0))
+compiled("bool TaskIsActive(string TaskName)", "bool TaskIsExecuting(string TaskName)",
+         modelled=FIXED)(fixed(True))
+compiled("bool IsLeadThrough(\\mecunit MechUnit)", "bool IsBrakeCheckActive()",
+         "bool PFRestart(\\switch Base | switch Irpt)", modelled=FIXED)(fixed(False))
+compiled("iounit_state IOUnitState(string UnitName \\switch Phys | switch Logic)",
+         modelled=FIXED)(fixed(PREDEFINED_DATA["IOUNIT_RUNNING"].value))
 compiled("num ProgMemFree()", modelled=FIXED)(fixed(1_000_000.0))
 compiled("num TestSignRead(num Channel)", modelled=FIXED)(fixed(0.0))
 compiled("event_type EventType(\\switch Cont)", modelled=FIXED)(
@@ -55,6 +65,16 @@ compiled("Load(\\switch Dynamic, string FilePath \\string File \\switch CheckRef
          "WriteCfgData(string InstancePath, string Attribute, anytype CfgData \\num ListNo)",
          "SaveCfgData(string FilePath, string Domain)",
          "SetLeadThrough(\\switch On | switch Off)",
+         "TPShow(tpnum Window)",
+         "SpyStart(string File)",
+         "SpyStop()",
+         "SyncMoveSuspend()",
+         "SyncMoveResume()",
+         "SyncMoveUndo()",
+         "ResetPPMoved()",
+         "ActEventBuffer()",
+         "DeactEventBuffer()",
+         "BrakeCheck()",
          modelled=NO_EFFECT)(no_effect)
 
 
