@@ -32,3 +32,10 @@ def test_buttons_not_shown_are_never_answered(tmp_path):
     properties.write_text('only_shown: G !"nButton = resOK"\nno_third_part: G !"nParts = 3"\n')
     code, out, err = cli(["check", PROGRAM, "--ltl", str(properties)])
     assert "only_shown: HOLDS" in out and "no_third_part: HOLDS" in out, out + err
+
+
+def test_a_not_modelled_routine_loads_and_stops_the_run_where_it_is_reached():
+    program = str(Path(__file__).resolve().parent / "library_outcomes" / "Calibration.mod")
+    code, out, err = cli(["run", program])
+    assert code == 2 and out == "calibrating\n"
+    assert "MToolTCPCalib needs the robot's kinematic model" in err and "[RMC305]" in err
