@@ -99,3 +99,13 @@ def test_library_without_main_lists_the_procedures_to_start_from():
     assert "procedures without parameters to start from with --entry: ResetCell, Service" in err
     code, out, _ = cli(["run", str(HERE / "UtilLib.mod"), "--entry", "Service"])
     assert code == 0
+
+
+def test_statements_inside_a_failed_if_or_while_are_checked_too(tmp_path):
+    path = tmp_path / "nested.mod"
+    path.write_text("MODULE nested\n  PROC main()\n    IF bReady THEN\n      nParts := 1;\n"
+                    "      WHILE bRunning DO\n        sText := 5;\n      ENDWHILE\n    ENDIF\n"
+                    "  ENDPROC\nENDMODULE\n")
+    code, _, err = cli(["run", str(path)])
+    assert code == 2
+    assert [n for _, n, _ in positions(error_lines(err))] == [3, 4, 5, 6]

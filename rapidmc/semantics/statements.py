@@ -147,6 +147,7 @@ class RoutineCompiler:
         """Record a statement's error; an unknown name also brings the statement's other
         unknown names (the compiler stopped at the first)."""
         self.linker.report(failure, statement)
+        self.nested_blocks(statement)
         first = failure.diagnostics[0]
         if first.code not in UNKNOWN_CODES:
             return
@@ -156,6 +157,22 @@ class RoutineCompiler:
                 code = UNKNOWN_NAME if use == "data" else UNKNOWN_ROUTINE
                 self.linker.report(error(code, f"unknown {what} '{name.text}'", name.span,
                                          subject=name.key))
+
+    def nested_blocks(self, statement) -> None:
+        """A compound statement that failed in its own part (an IF condition, a TEST
+        subject): its nested statements are checked all the same, for their errors.
+        (FOR is left out: its loop variable is declared by the statement itself.)"""
+        blocks = []
+        if isinstance(statement, ast.If):
+            blocks = [branch.body for branch in statement.branches] + [statement.else_body or ()]
+        elif isinstance(statement, ast.While):
+            blocks = [statement.body]
+        elif isinstance(statement, ast.Test):
+            blocks = [case.body for case in statement.cases] + [statement.default or ()]
+        elif isinstance(statement, ast.CompactIf):
+            blocks = [(statement.statement,)]
+        for body in blocks:
+            self.block(body, Label())
 
     def knows(self, name: ast.Name, use: str) -> bool:
         """Whether ``name`` means something here (data, a routine, predefined)."""
