@@ -24,7 +24,7 @@ from .registry import (  # noqa: F401
 TOPICS = (
     "math", "numeric_instructions", "bits", "strings", "stringdig", "conversion", "geometry",
     "system", "data_access", "position", "signals", "clocks", "flexpendant", "flexpendant_ui",
-    "waits", "motion", "search", "motion_settings", "process_support", "path_recovery", "world_zones", "conveyor",
+    "waits", "motion", "arc_welding", "search", "motion_settings", "process_support", "path_recovery", "world_zones", "conveyor",
     "interrupts", "program_control", "error_recovery", "controller", "calibration", "tasks", "sockets", "files",
     "file_system", "raw_data", "message_queues", "vision", "smart_gripper", "environment_model",
 )
