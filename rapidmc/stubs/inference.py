@@ -453,14 +453,21 @@ def predefined_parameters(entry) -> list[tuple]:
 def missing_names(modules: tuple[ast.Module, ...]) -> list[Missing]:
     """Every undeclared name the modules use, in order of first use, types inferred."""
     inference = Inference(modules)
+    _settle(inference, count_uses=True)
+    if _types_from_names(inference):        # the last resort; its types reach other names
+        _settle(inference, count_uses=False)
+    return sorted(inference.missing.values(),
+                  key=lambda m: (m.first_use.file, m.first_use.line, m.first_use.column))
+
+
+def _settle(inference: Inference, count_uses: bool) -> None:
+    """Walk the program until the walk learns nothing new (uses counted on the first)."""
     for number in range(MAX_PASSES):
         inference.changed = False
-        inference.counting = number == 0
+        inference.counting = count_uses and number == 0
         inference.walk()
         if not _types_from_components(inference) and not inference.changed:
             break
-    return sorted(inference.missing.values(),
-                  key=lambda m: (m.first_use.file, m.first_use.line, m.first_use.column))
 
 
 def _types_from_components(inference: Inference) -> bool:
@@ -472,4 +479,22 @@ def _types_from_components(inference: Inference) -> bool:
             if candidates:
                 shown = ", ".join("." + c for c in missing.components)
                 changed |= missing.learn(TypeInfo(candidates[0]), f"has components {shown}")
+    return changed
+
+
+# Name prefixes that say the type in controller programs (wobjTable, tool_gun, loadPart);
+# used only when the uses tell nothing, and said so in the written comment.
+NAME_PREFIXES = (("wobj", "wobjdata"), ("tool", "tooldata"), ("load", "loaddata"))
+
+
+def _types_from_names(inference: Inference) -> bool:
+    changed = False
+    for missing in inference.missing.values():
+        if missing.kind != DATA or missing.type is not None:
+            continue
+        for prefix, type_name in NAME_PREFIXES:
+            if missing.name.text.lower().startswith(prefix):
+                changed |= missing.learn(TypeInfo(type_name),
+                                         f"guessed from the name's prefix '{prefix}'")
+                break
     return changed

@@ -134,10 +134,11 @@ for _number, _name in enumerate(("btnNone", "btnOK", "btnAbrtRtryIgn", "btnOKCan
     _define(_name, "buttondata", float(_number))
 for _number, _name in enumerate(("iconNone", "iconInfo", "iconWarning", "iconError")):
     _define(_name, "icondata", float(_number))
+# errdomain numbers as public programs compute with them (ErrID := domain * 10000 + number)
 for _number, _name in enumerate(("COMMON_ERR", "OP_STATE", "SYSTEM_ERR", "HARDWARE_ERR",
                                  "PROGRAM_ERR", "MOTION_ERR", "OPERATOR_ERR", "IO_COM_ERR",
-                                 "USER_DEF_ERR", "OPTION_PROD_ERR", "ARCWELD_ERR", "SPOTWELD_ERR",
-                                 "PAINT_ERR", "PICKWARE_ERR", "PROCESS_ERR", "CFG_ERR")):
+                                 "USER_DEF_ERR", "SAFETY_ERR", "OPTION_PROD_ERR", "PROCESS_ERR",
+                                 "CFG_ERR")):
     _define(_name, "errdomain", float(_number))
 for _number, _name in enumerate(("TYPE_ALL", "TYPE_STATE", "TYPE_WARN", "TYPE_ERR")):
     _define(_name, "errtype", float(_number))

@@ -13,8 +13,8 @@ from ..instructions import Action
 from ..machine import ABSENT, GLOBAL
 from ..scope import CONSTANT, GLOBAL_DATA
 from ..types import same_type
-from .arguments import Arguments, argument_expression
-from .registry import compiled
+from .arguments import Arguments, argument_expression, fixed, no_effect
+from .registry import FIXED, NO_EFFECT, compiled
 
 _WHERE = "string Object \\VAR datapos Block | REF taskid TaskRef | string TaskName"
 
@@ -84,3 +84,13 @@ def _err_raise(calls, compiler, call, entry):
             raise RapidError("ERR_ILLRAISE", f"ErrRaise: '{name(m)}' holds no error number")
         raise RapidError(int(number), f"raised by ErrRaise \"{name(m)}\"")
     return Action(call.span, raise_error)
+
+
+# Searching the program's data by type and name pattern: the search finds nothing (rapidmc
+# keeps no symbol table at run time), so GetNextSym answers FALSE.
+compiled("SetDataSearch(string Type \\string TypeMod \\string Object \\switch PersSym "
+             "\\switch VarSym \\switch ConstSym \\switch InTask | string InMod "
+             "\\string InRout \\switch GlobalSym | switch LocalSym)",
+         modelled=NO_EFFECT)(no_effect)
+compiled("bool GetNextSym(INOUT string Object, VAR datapos Block \\switch Recursive)",
+         modelled=FIXED)(fixed(False))
