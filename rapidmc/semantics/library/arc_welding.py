@@ -6,12 +6,13 @@ modelled.
 """
 from __future__ import annotations
 
+from .arguments import no_effect
 from .motion import move_robot
-from .registry import ROBOT_STATE, compiled
+from .registry import NO_EFFECT, ROBOT_STATE, compiled
 
 _WELD = "seamdata Seam, welddata Weld \\weavedata Weave"
 _TAIL = ("PERS tooldata Tool \\PERS wobjdata WObj \\switch Corr \\PERS anytype Track "
-         "\\string SeamName \\PERS loaddata TLoad")
+         "\\switch PreProcessTracking \\string SeamName \\PERS loaddata TLoad")
 _ON_OFF = "\\switch On \\switch Off"
 _FULL = (f"\\identno ID, speeddata Speed \\num T, {_WELD}, zonedata Zone \\num Z "
          f"\\stoppointdata Inpos, {_TAIL}")
@@ -27,3 +28,6 @@ _ENDS = f"\\identno ID, speeddata Speed, {_WELD}, zonedata Zone, {_TAIL}"
           modelled=ROBOT_STATE)
 def _weld_move(calls, compiler, call, entry):
     return move_robot(calls, compiler, call, entry, "ToPoint")
+
+
+compiled("ArcRefresh()", modelled=NO_EFFECT)(no_effect)

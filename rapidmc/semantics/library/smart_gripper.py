@@ -11,7 +11,7 @@ from .registry import FIXED, NO_EFFECT, compiled
 _GRIP = "\\num holdForce \\num targetPos \\num posAllowance \\switch NoWait"
 
 compiled("Hand_Initialize(\\num maxSpd \\num holdForce \\num phyLimit \\switch Calibrate)",
-         "Hand_Calibrate(\\switch Jog)",
+         "Hand_DoCalibrate(\\switch Jog)",
          f"Hand_GripInward({_GRIP})",
          f"Hand_GripOutward({_GRIP})",
          "Hand_MoveTo(num targetPos \\switch NoWait)",
