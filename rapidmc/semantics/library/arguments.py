@@ -13,7 +13,6 @@ from ..machine import ABSENT
 ROBOT_TCP, ROBOT_TOOL, ROBOT_WOBJ, ROBOT_JOINTS = range(4)
 
 
-
 class Arguments:
     """The bound arguments of one call, by parameter name."""
 
@@ -48,7 +47,6 @@ def argument_expression(call, key: str, position: int):
     if 0 <= position < len(positional):
         return positional[position].value
     return None
-
 
 
 def no_effect(calls, compiler, call, entry) -> Instruction:

@@ -32,7 +32,6 @@ EOF_BIN = -1.0
 READ, WRITE, APPEND, BINARY = "read", "write", "append", "bin"
 
 
-
 def _open_device(m, ref, what: str, writing: bool = False):
     value = m.read_ref(ref)
     if value is None:

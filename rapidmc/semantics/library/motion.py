@@ -87,7 +87,6 @@ def _move_sync(calls, compiler, call, entry):
     return move_robot(calls, compiler, call, entry, "ToPoint", sync=True)
 
 
-
 @compiled("MoveExtJ(\\switch Conc, jointtarget ToJointPos \\identno ID \\switch UseEOffs, "
               "speeddata Speed \\num T, zonedata Zone \\stoppointdata Inpos)",
           modelled=ROBOT_STATE)

@@ -63,7 +63,6 @@ def _call_by_var(calls, compiler, call, entry):
     return ControlAction(call.span, call_by_var)
 
 
-
 @compiled("ResetRetryCount()")
 def _reset_retry_count(calls, compiler, call, entry):
     Arguments(calls, compiler, call, entry)

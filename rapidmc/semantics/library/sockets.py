@@ -34,7 +34,6 @@ WAIT_MAX = float(PREDEFINED_DATA["WAIT_MAX"].value)
 TIMEOUT, CLOSED, RECEIVED = "ERR_SOCK_TIMEOUT", "ERR_SOCK_CLOSED", "received"
 
 
-
 # ===========================================================================
 # The environment: where received text comes from
 # ===========================================================================

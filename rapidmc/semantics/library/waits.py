@@ -82,7 +82,6 @@ compiled("WaitRob(\\switch InPos | switch ZeroSpeed)",
           modelled=NO_EFFECT)(no_effect)
 
 
-
 _COMPARISONS = (("LT", lambda a, b: a < b), ("GT", lambda a, b: a > b),
                 ("NOTEQ", lambda a, b: a != b))
 
