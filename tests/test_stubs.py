@@ -81,3 +81,17 @@ def test_a_misused_predefined_routine_is_not_declared_again(tmp_path):
     code, out, err = cli(["stubs", str(program)])
     assert "PROC Abs" not in out and "FUNC" not in out
     assert code == 2 and "'Abs' is a function" in err
+
+
+def test_stubs_of_a_backup_leave_the_configured_signals_alone(tmp_path):
+    from tests.test_backup import USER_SYS, make_backup
+    main_mod = ("MODULE MainModule\n  PROC main()\n    nState := cellState;\n"
+                "    IF bAuto THEN\n      SetDO gripClose, 1;\n    ENDIF\n  ENDPROC\nENDMODULE\n")
+    backup = make_backup(tmp_path, {"TASK1": {"SYSMOD/user.sys": USER_SYS,
+                                              "PROGMOD/MainModule.mod": main_mod}})
+    output = tmp_path / "Missing.mod"
+    code, out, err = cli(["stubs", str(backup), "-o", str(output)])
+    assert code == 0, err
+    text = output.read_text()
+    assert "PERS num nState := 0;" in text and "PERS bool bAuto := FALSE;" in text
+    assert "cellState" not in text and "gripClose" not in text

@@ -18,6 +18,7 @@ from pathlib import Path
 from .. import ast
 from ..diagnostics import (EXIT_INPUT_ERROR, EXIT_OK, NO_ENTRY, USAGE, UserError, error,
                            render_all)
+from ..backup import resolve_program_files
 from ..semantics.link import build
 from ..source import program_paths
 from ..stubs import Stubs, stub_module
@@ -28,7 +29,12 @@ DEFAULT_MODULE = "Missing"
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("files", nargs="+", metavar="FILE",
-                        help="the program's RAPID module files (.mod, .sys, .pgf ...)")
+                        help="the program's RAPID module files (.mod, .sys, .pgf ...) or a "
+                             "controller backup folder")
+    parser.add_argument("--task", metavar="NAME",
+                        help="the task to take from a controller backup")
+    parser.add_argument("--eio", metavar="EIO.cfg",
+                        help="I/O configuration: its signals are declared there, not missing")
     parser.add_argument("-o", "--output", metavar="FILE",
                         help="write the module here (default: stdout); its name is the file's "
                              "stem")
@@ -44,22 +50,25 @@ def module_name(output, modules) -> str:
 
 
 def execute(args: argparse.Namespace) -> int:
-    paths = program_paths(list(args.files))
+    files = resolve_program_files(args)
+    paths = program_paths(list(files.modules))
     if args.output and any(Path(p).resolve() == Path(args.output).resolve() for p in paths):
         raise error(USAGE, f"the output file '{args.output}' is one of the program's files: "
                     "choose another name (it would be overwritten)")
     program = load_program(paths)
-    stubs = stub_module(program.modules, module_name(args.output, program.modules))
+    signals = tuple(files.signals)
+    stubs = stub_module(program.modules, module_name(args.output, program.modules),
+                        {signal.name.upper() for signal in signals})
     if not stubs.declared and not stubs.undeclared:
         print("nothing to declare: every name the program uses is declared")
-        return _verify(program, None, "")
+        return _verify(program, None, "", signals)
     target = args.output or "<stdout>"
     if args.output:
         Path(args.output).write_text(stubs.text, encoding="latin-1")
     else:
         sys.stdout.write(stubs.text)
     print(summary(target, stubs), file=sys.stderr if not args.output else sys.stdout)
-    return _verify(program, stubs, args.output or "<stubs>")
+    return _verify(program, stubs, args.output or "<stubs>", signals)
 
 
 def summary(target: str, stubs: Stubs) -> str:
@@ -72,13 +81,13 @@ def summary(target: str, stubs: Stubs) -> str:
     return text
 
 
-def _verify(program: ast.Program, stubs, filename: str) -> int:
+def _verify(program: ast.Program, stubs, filename: str, signals: tuple) -> int:
     """Load the program with the stubs as check and run do; report what still fails."""
     modules = program.modules
     if stubs is not None:
         modules = modules + parse_text(stubs.text, filename)
     try:
-        build(ast.Program(modules))
+        build(ast.Program(modules), options={"configured_signals": signals})
     except UserError as failure:
         remaining = [d for d in failure.diagnostics if d.code is not NO_ENTRY]
         if remaining:

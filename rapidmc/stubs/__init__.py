@@ -31,7 +31,10 @@ class Stubs:
     undeclared: tuple[Missing, ...]
 
 
-def stub_module(modules: tuple[ast.Module, ...], module_name: str) -> Stubs:
-    writer = StubWriter(Declarations(modules))
-    text = writer.module(module_name, missing_names(modules))
+def stub_module(modules: tuple[ast.Module, ...], module_name: str,
+                signals: frozenset = frozenset()) -> Stubs:
+    """The module declaring what ``modules`` use and do not declare (``signals``: the
+    canonical names of the I/O configuration's signals, which are declared there)."""
+    writer = StubWriter(Declarations(modules, signals))
+    text = writer.module(module_name, missing_names(modules, signals))
     return Stubs(text, tuple(writer.declared), tuple(writer.undeclared))

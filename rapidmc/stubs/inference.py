@@ -74,8 +74,8 @@ class Missing:
 class Inference:
     """One walk over the program; ``missing`` accumulates across walks."""
 
-    def __init__(self, modules: tuple[ast.Module, ...]):
-        self.names = Declarations(modules)
+    def __init__(self, modules: tuple[ast.Module, ...], signals=frozenset()):
+        self.names = Declarations(modules, signals)
         self.modules = modules
         self.missing: dict[str, Missing] = {}
         self.changed = False
@@ -450,9 +450,10 @@ def predefined_parameters(entry) -> list[tuple]:
     return found
 
 
-def missing_names(modules: tuple[ast.Module, ...]) -> list[Missing]:
-    """Every undeclared name the modules use, in order of first use, types inferred."""
-    inference = Inference(modules)
+def missing_names(modules: tuple[ast.Module, ...], signals=frozenset()) -> list[Missing]:
+    """Every undeclared name the modules use, in order of first use, types inferred
+    (``signals``: names of configured I/O signals, which are not missing)."""
+    inference = Inference(modules, signals)
     _settle(inference, count_uses=True)
     if _types_from_names(inference):        # the last resort; its types reach other names
         _settle(inference, count_uses=False)

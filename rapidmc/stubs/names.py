@@ -47,7 +47,7 @@ def predefined_type_name(key: str) -> Optional[str]:
 class Declarations:
     """The names a program declares: data, routines and types, and the predefined ones."""
 
-    def __init__(self, modules: tuple[ast.Module, ...]):
+    def __init__(self, modules: tuple[ast.Module, ...], signals=frozenset()):
         self.modules = modules
         self.data: dict[str, TypeInfo] = {}
         self.routines: dict[str, ast.Routine] = {}
@@ -66,7 +66,8 @@ class Declarations:
                         (c.name.text, c.type.name.text) for c in definition.components]
                 else:
                     self.aliases[definition.name.key] = definition.base.name.text
-        self.signals = {name.key for name, _ in configured_signals.signal_uses(modules)}
+        self.signals = set(signals)
+        self.signals |= {name.key for name, _ in configured_signals.signal_uses(modules)}
         declared = configured_signals.declared_names(modules)
         self.signals |= {name.key for name, _ in configured_signals.compared_names(modules)
                          if name.key not in declared}
@@ -85,6 +86,8 @@ class Declarations:
             return TypeInfo(predefined.type_name)
         if key in ERROR_NUMBERS or key == "LONG_JMP_ALL_ERR":
             return TypeInfo("errnum")
+        if key in self.signals:
+            return NUM                  # a signal read as a value
         return None
 
     def is_data(self, key: str, local: dict[str, TypeInfo]) -> bool:
