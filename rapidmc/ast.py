@@ -465,3 +465,50 @@ class Program:
     """A task's program: the modules loaded together."""
 
     modules: tuple[Module, ...]
+
+
+def children(node) -> tuple:
+    """The nodes directly inside ``node`` (fields that are nodes or tuples of nodes)."""
+    found = []
+    for slot in getattr(type(node), "__slots__", ()):
+        value = getattr(node, slot, None)
+        if isinstance(value, tuple):
+            found.extend(item for item in value if hasattr(item, "__slots__"))
+        elif hasattr(value, "__slots__") and not isinstance(value, (Span, Name)):
+            found.append(value)
+    return tuple(found)
+
+
+def referenced_names(node) -> frozenset:
+    """The keys of every name ``node`` refers to as data or routine (at any depth)."""
+    keys = set()
+    pending = [node]
+    while pending:
+        current = pending.pop()
+        if isinstance(current, NameRef):
+            keys.add(current.name.key)
+        elif isinstance(current, (FunctionCall, ProcedureCall)):
+            keys.add(current.name.key)
+        pending.extend(children(current))
+    return frozenset(keys)
+
+
+STATEMENT_TYPES = Statement.__args__
+
+
+def names_used(statement) -> list:
+    """``(name, use)`` for each name a statement refers to, in source order, without
+    looking into the statements nested in it; ``use`` is "data", "function" or "procedure"."""
+    found = []
+    pending = [statement]
+    while pending:
+        current = pending.pop()
+        if isinstance(current, NameRef):
+            found.append((current.name, "data"))
+        elif isinstance(current, FunctionCall):
+            found.append((current.name, "function"))
+        elif isinstance(current, ProcedureCall):
+            found.append((current.name, "procedure"))
+        pending.extend(child for child in children(current)
+                       if not isinstance(child, STATEMENT_TYPES))
+    return sorted(found, key=lambda item: (item[0].span.line, item[0].span.column))

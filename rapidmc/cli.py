@@ -30,6 +30,7 @@ SUBCOMMANDS = {
     "ltl": "translate an LTL formula to a Büchi automaton (HOA format)",
     "replay": "re-execute a counterexample saved by 'check --format json'",
     "graph": "write the reachable state graph (GraphML, GEXF or DOT)",
+    "stubs": "write a module declaring the names the program uses and no module declares",
 }
 
 

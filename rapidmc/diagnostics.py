@@ -80,6 +80,7 @@ NO_ENTRY = _code("RMC211", "no-entry", "the entry routine is missing or has para
 UNKNOWN_LABEL = _code("RMC212", "unknown-label", "GOTO to a label that does not exist")
 NOT_CONSTANT = _code("RMC213", "not-constant", "a constant expression is required")
 ENV_ONLY = _code("RMC214", "env-only", "a model-only routine used outside an environment module")
+MORE_ERRORS = _code("RMC215", "more-errors", "further errors left out of the report (it is capped)")
 
 # --- run time (3xx) ------------------------------------------------------------
 RUNTIME_ERROR = _code("RMC301", "runtime-error", "an uncaught RAPID run-time error stopped the program")
@@ -121,6 +122,7 @@ class Diagnostic:
     span: Optional[Span] = None
     severity: str = "error"
     notes: tuple[str, ...] = field(default_factory=tuple)
+    subject: str = ""        # canonical name an unknown-name diagnostic is about
 
 
 class UserError(Exception):
@@ -136,9 +138,10 @@ class UserError(Exception):
 
 
 def error(code: ErrorCode, message: str, span: Optional[Span] = None,
-          *notes: str, exit_code: int = EXIT_INPUT_ERROR) -> UserError:
+          *notes: str, exit_code: int = EXIT_INPUT_ERROR, subject: str = "") -> UserError:
     """Shorthand: ``raise error(UNKNOWN_NAME, "unknown name 'x'", span)``."""
-    return UserError([Diagnostic(code, message, span, notes=tuple(notes))], exit_code)
+    return UserError([Diagnostic(code, message, span, notes=tuple(notes), subject=subject)],
+                     exit_code)
 
 
 class SourceCache:

@@ -17,7 +17,7 @@ from .check.result import LassoStep, SearchResult
 from .diagnostics import TRACE_REPLAY, SourceCache, error
 from .semantics.program import (ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE,
                                 PROGRAM_NAMESPACE, Program)
-from .semantics.special_routines import format_typed, value_kind
+from .semantics.library.system import format_typed, value_kind
 from .semantics.state import ENDED, FAILED, RUNNING, State
 from .semantics.step import CheckConfig, ScriptChooser, initial_states, successors
 from .semantics.values import format_num, format_value

@@ -387,7 +387,7 @@ EXPRESSION_TYPE = {"num": NUM, "anynum": NUM, "dionum": NUM, "byte": NUM, "symnu
 
 def _predefined_entries():
     """Predefined routines whose every parameter the generator can fill, by kind."""
-    from rapidmc.semantics.builtins.registry import all_entries
+    from rapidmc.semantics.library.registry import all_entries
     known = set(DATA_OF_TYPE) | set(EXPRESSION_TYPE) | {"anytype", "switch"}
     usable = [entry.signature for entry in all_entries()
               if entry.signature.key not in ("PRESENT", "DIM") and all(p.type_name in known and not p.array_rank

@@ -6,9 +6,9 @@ import math
 import pytest
 from hypothesis import given, strategies as st
 
-from rapidmc.semantics.builtins import lookup_function
-from rapidmc.semantics.builtins.data import PREDEFINED_DATA
-from rapidmc.semantics.builtins.geometry_ops import operator_for
+from rapidmc.semantics.library import lookup_function
+from rapidmc.semantics.library.data import PREDEFINED_DATA
+from rapidmc.semantics.library.geometry_ops import operator_for
 from rapidmc.semantics.errors import RapidError
 from rapidmc.semantics.values import to_num
 

@@ -7,7 +7,7 @@ from decimal import ROUND_DOWN, ROUND_HALF_UP, Decimal
 import pytest
 from hypothesis import given, strategies as st
 
-from rapidmc.semantics.builtins import lookup_function, lookup_procedure
+from rapidmc.semantics.library import lookup_function, lookup_procedure
 from rapidmc.semantics.errors import RapidError
 from rapidmc.semantics.values import to_num
 

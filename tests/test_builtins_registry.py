@@ -6,8 +6,8 @@ import inspect
 import pytest
 from hypothesis import given, strategies as st
 
-from rapidmc.semantics.builtins import all_entries, lookup_function, lookup_procedure
-from rapidmc.semantics.builtins.registry import (
+from rapidmc.semantics.library import all_entries, lookup_function, lookup_procedure
+from rapidmc.semantics.library.registry import (
     FUNCTION, PROCEDURE, SignatureSyntaxError, parse_signature, register,
 )
 

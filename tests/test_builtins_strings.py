@@ -4,8 +4,8 @@ from __future__ import annotations
 import pytest
 from hypothesis import given, strategies as st
 
-from rapidmc.semantics.builtins import lookup_function
-from rapidmc.semantics.builtins.data import PREDEFINED_DATA
+from rapidmc.semantics.library import lookup_function
+from rapidmc.semantics.library.data import PREDEFINED_DATA
 from rapidmc.semantics.errors import RapidError
 
 

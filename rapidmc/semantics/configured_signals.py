@@ -15,7 +15,7 @@ import re
 from typing import Iterable, Iterator
 
 from .. import ast
-from .builtins import registry
+from .library import registry
 
 SIGNAL_KINDS = {"signaldi": "DI", "signaldo": "DO", "signalai": "AI", "signalao": "AO",
                 "signalgi": "GI", "signalgo": "GO"}

@@ -142,7 +142,7 @@ class ExpressionCompiler:
             symbol = self.linker.system_symbol(name)
         if symbol is None:
             raise error(UNKNOWN_NAME, f"unknown name '{name.text}'", name.span,
-                        *_unknown_name_notes(name, expected))
+                        *_unknown_name_notes(name, expected), subject=name.key)
         return symbol
 
     def _NameRef(self, expr: ast.NameRef, expected) -> Compiled:
@@ -413,7 +413,7 @@ class ExpressionCompiler:
                             f"'{expr.op}'", side.span)
 
     def _vector(self, expr, left: Compiled, right: Compiled) -> Compiled:
-        from .builtins import geometry_ops
+        from .library import geometry_ops
         fn, result_type = geometry_ops.operator_for(expr.op, left.type, right.type)
         if fn is None:
             raise error(TYPE_MISMATCH, f"'{expr.op}' cannot combine {type_name(left.type)} "
@@ -450,7 +450,8 @@ class ExpressionCompiler:
             if symbol is None:
                 symbol = self.linker.system_symbol(expr.name)
             if symbol is None:
-                raise error(UNKNOWN_NAME, f"unknown name '{expr.name.text}'", expr.span)
+                raise error(UNKNOWN_NAME, f"unknown name '{expr.name.text}'", expr.span,
+                            subject=expr.name.key)
             if symbol.kind == GLOBAL_DATA:
                 ref = (GLOBAL, symbol.slot, ())
                 return (lambda m: ref), symbol.type, symbol

@@ -18,9 +18,10 @@ from typing import Optional, Sequence
 from .. import ast
 from ..diagnostics import (BAD_DECLARATION, DUPLICATE, ENVIRONMENT, NO_ENTRY, NOT_CONSTANT,
                            TYPE_MISMATCH, UNKNOWN_NAME, UNKNOWN_TYPE, UserError, error)
+from ..error_report import ErrorCollector
 from . import configured_signals
 from . import program as P
-from .builtins.data import PREDEFINED_DATA
+from .library.data import PREDEFINED_DATA
 from .calls import ParameterView, bind
 from .errors import ERROR_NUMBERS, LONG_JMP_ALL_ERR
 from .expressions import ExpressionCompiler
@@ -48,7 +49,24 @@ class Linker:
         self.type_tables: dict[int, dict[str, object]] = {}
         self.calls = PredefinedCalls(self)
         self.entry_key = "MAIN"
+        self.errors = ErrorCollector()
+        self.failed_names: set[str] = set()     # declarations that failed: uses stay quiet
         self._predefined_types()
+
+    # ------------------------------------------------------------ errors
+    def report(self, failure: UserError, node=None) -> None:
+        """Record a static error and go on, unless it only repeats a failed declaration."""
+        if node is not None and self.failed_names and ast.referenced_names(node) & self.failed_names:
+            return
+        self.errors.add(failure)
+
+    def attempt(self, check, *arguments, node=None):
+        """``check(*arguments)``, recording its static error (then None) and going on."""
+        try:
+            return check(*arguments)
+        except UserError as failure:
+            self.report(failure, node)
+            return None
 
     # ------------------------------------------------------------------ types
     def _predefined_types(self) -> None:
@@ -67,7 +85,8 @@ class Linker:
                 return self._build_user_type(entry, namespace, module, key)
         found = self.builtin_types.get(key)
         if found is None:
-            raise error(UNKNOWN_TYPE, f"unknown data type '{ref.name.text}'", ref.span)
+            raise error(UNKNOWN_TYPE, f"unknown data type '{ref.name.text}'", ref.span,
+                        subject=key)
         return found
 
     def _build_user_type(self, definition, namespace, module, key) -> RapidType:
@@ -99,15 +118,25 @@ class Linker:
                 key = definition.name.key
                 table_key = (namespace, module.name.key) if definition.local else namespace
                 table = self.type_tables.setdefault(table_key, {})
-                if key in table or key in self.builtin_types and not definition.local:
-                    if key in table:
-                        raise error(DUPLICATE, f"type '{definition.name.text}' is defined twice",
-                                    definition.span)
+                if key in table:
+                    self.report(error(DUPLICATE, f"type '{definition.name.text}' is defined "
+                                      "twice", definition.span))
+                    continue
                 table[key] = definition
         for module in modules:
             for definition in module.types:
-                self.resolve_type(ast.TypeRef(definition.name, definition.span), namespace,
-                                  module.name.key)
+                found = self.attempt(self.resolve_type, ast.TypeRef(definition.name,
+                                                                    definition.span),
+                                     namespace, module.name.key)
+                if found is None:
+                    self._failed_type(definition, namespace, module.name.key)
+
+    def _failed_type(self, definition, namespace: int, module: str) -> None:
+        """A type whose definition failed: an empty record, its uses stay quiet."""
+        table_key = (namespace, module) if definition.local else namespace
+        key = definition.name.key
+        self.type_tables[table_key][key] = RapidType(key, definition.name.text, RECORD, ())
+        self.failed_names.add(key)
 
     def data_type(self, decl, namespace: int, module: str, dims: tuple = ()):
         base = self.resolve_type(decl.type, namespace, module)
@@ -168,7 +197,8 @@ class Linker:
     def infer_signal(self, name: ast.Name, signal_type: RapidType) -> Symbol:
         """An undeclared name used as a signal: a signal of the I/O configuration."""
         if not self.options.get("infer_signals", True):
-            raise error(UNKNOWN_NAME, f"unknown signal '{name.text}'", name.span)
+            raise error(UNKNOWN_NAME, f"unknown signal '{name.text}'", name.span,
+                        subject=name.key)
         self.physical_signal(name.text, signal_type.signal_kind, name.span)
         return self.system.lookup(name.key)
 
@@ -199,17 +229,22 @@ class Linker:
             self._prepare_routines(namespace)
         for routine in self.routines:
             compiler = RoutineCompiler(self, routine, routine.scope)
-            compiler.compile(routine.ast)
-        entry_index = self._entry(entry)
+            self.attempt(compiler.compile, routine.ast)
+        entry_index = self.attempt(self._entry, entry)
+        task_entries = tuple(self.attempt(self._entry, task.entry, namespace, task.name)
+                             for namespace, task in task_namespaces)
+        if environment is not None and environment.modules:
+            environment_init = self.attempt(self._environment_routine, "INIT", False)
+            environment_react = self.attempt(self._environment_routine, "REACT", True,
+                                             environment.modules[0].span)
+        self.errors.raise_if_any()
         linked = P.Program(self.routines, self.globals, self.signals, entry_index,
                            options=self.options, signal_index=self.signal_by_key)
-        linked.task_entries = tuple(self._entry(task.entry, namespace, task.name)
-                                    for namespace, task in task_namespaces)
+        linked.task_entries = task_entries
         linked.task_names = ("main task",) + tuple(task.name for _, task in task_namespaces)
         if environment is not None and environment.modules:
-            linked.environment_init = self._environment_routine("INIT", required=False)
-            linked.environment_react = self._environment_routine("REACT", required=True,
-                                                                 span=environment.modules[0].span)
+            linked.environment_init = environment_init
+            linked.environment_react = environment_react
         linked.scopes = self
         linked.environment_reads_io = any(
             instruction.reads_io for routine in self.routines
@@ -265,7 +300,9 @@ class Linker:
         seen_modules = set()
         for module in modules:
             if module.name.key in seen_modules:
-                raise error(DUPLICATE, f"module '{module.name.text}' is loaded twice", module.span)
+                self.report(error(DUPLICATE, f"module '{module.name.text}' is loaded twice",
+                                  module.span))
+                continue
             seen_modules.add(module.name.key)
             module_scope = self._module_scope(namespace, module)
             module_names: dict[str, object] = {}
@@ -277,15 +314,18 @@ class Linker:
                 routine.module_key = module.name.key
                 self.routines.append(routine)
                 symbol = Symbol(ROUTINE, decl.name.text, None, slot=index, span=decl.span)
-                self._declare_unique(module_names, decl.name, decl.span)
-                self._declare(module_scope if decl.local else self.namespaces[namespace],
-                              decl.name.key, symbol, decl.name.span, "routine")
+                if self.attempt(self._declare_unique, module_names, decl.name, decl.span) is None:
+                    continue
+                self.attempt(self._declare, module_scope if decl.local else
+                             self.namespaces[namespace], decl.name.key, symbol, decl.name.span,
+                             "routine")
 
     def _declare_unique(self, names: dict, name: ast.Name, span) -> None:
         if name.key in names:
             raise error(DUPLICATE, f"'{name.text}' is declared twice in this module "
                         f"(first at {names[name.key]})", span)
         names[name.key] = span
+        return True
 
     def _declare_data(self, modules, namespace: int) -> None:
         pending = []
@@ -293,13 +333,13 @@ class Linker:
             module_scope = self._module_scope(namespace, module)
             names = {r.name.key: r.span for r in module.routines}
             for decl in module.data:
-                self._declare_unique(names, decl.name, decl.span)
-                pending.append((module, module_scope, decl))
+                if self.attempt(self._declare_unique, names, decl.name, decl.span):
+                    pending.append((module, module_scope, decl))
         # CONSTs (and dimensions) may refer to CONSTs declared later: retry until stable
         while pending:
             progress = False
             retry = []
-            first_error = None
+            failures = []
             for module, scope, decl in pending:
                 try:
                     self._declare_global(module, scope, decl, namespace)
@@ -307,12 +347,29 @@ class Linker:
                 except UserError as exc:
                     if exc.diagnostics[0].code is UNKNOWN_NAME:
                         retry.append((module, scope, decl))
-                        first_error = first_error or exc
+                        failures.append((exc, module, scope, decl))
                     else:
-                        raise
+                        self._failed_global(exc, module, scope, decl, namespace)
             if not progress:
-                raise first_error
+                for exc, module, scope, decl in failures:
+                    self._failed_global(exc, module, scope, decl, namespace)
+                return
             pending = retry
+
+    def _failed_global(self, failure: UserError, module, scope: Scope, decl,
+                       namespace: int) -> None:
+        """Report a data declaration that failed; its name stays declared, of unknown type."""
+        self.report(failure, decl)
+        target = scope if decl.scope == ast.LOCAL else self.namespaces[namespace]
+        if target.names.get(decl.name.key) is not None:
+            return
+        slot = len(self.globals)
+        self.globals.append(P.GlobalData(slot, decl.name.text, decl.name.key, None, decl.storage,
+                                         module.name.text, namespace, decl.scope == ast.LOCAL,
+                                         decl.span, None))
+        target.declare(decl.name.key, Symbol(GLOBAL_DATA, decl.name.text, None, slot=slot,
+                                             storage=decl.storage, span=decl.span))
+        self.failed_names.add(decl.name.key)
 
     def _dims(self, dims: Sequence[ast.Expr], scope: Scope) -> tuple:
         result = []
@@ -391,36 +448,45 @@ class Linker:
     # --------------------------------------------------------------- routines
     def _prepare_routines(self, namespace: int) -> None:
         for routine in self.routines:
-            if routine.namespace != namespace:
-                continue
-            decl: ast.Routine = routine.ast
-            module_scope = self.module_scopes[(namespace, routine.module_key)]
-            scope = Scope(module_scope)
-            routine.scope = scope
-            routine.local_names = []
-            routine.initial = []
-            if decl.kind == "FUNC":
-                routine.return_type = self.resolve_type(decl.return_type, namespace,
-                                                        routine.module_key)
-            parameters = []
-            for param in decl.parameters:
-                param_type = self.resolve_type(param.type, namespace, routine.module_key)
-                if param.array_rank:
-                    param_type = ArrayType(param_type, (None,) * param.array_rank)
-                slot = routine.add_local(param.name.text, ABSENT)
-                parameter = P.Parameter(param.name.text, param.name.key, param_type, param.mode,
-                                        param.optional, param.alternative_group,
-                                        param.array_rank, slot, param.span)
-                parameters.append(parameter)
-                self._declare(scope, param.name.key, Symbol(
-                    LOCAL_DATA, param.name.text, param_type, slot=slot, storage=param.mode,
-                    optional=param.optional, by_reference=param.mode != "IN",
-                    span=param.span), param.name.span, "parameter")
-            routine.parameters = tuple(parameters)
-            for data in decl.data:
-                self._declare_local(routine, scope, data, namespace)
-            if decl.error is not None:
-                routine.handler_numbers = self._handler_numbers(decl.error, scope)
+            if routine.namespace == namespace:
+                self._prepare_routine(routine, namespace)
+
+    def _prepare_routine(self, routine: P.Routine, namespace: int) -> None:
+        """Scope, parameters and routine data of one routine (errors recorded, not raised)."""
+        decl: ast.Routine = routine.ast
+        module_scope = self.module_scopes[(namespace, routine.module_key)]
+        scope = Scope(module_scope)
+        routine.scope = scope
+        routine.local_names = []
+        routine.initial = []
+        routine.parameters = ()
+        if decl.kind == "FUNC":
+            routine.return_type = self.attempt(self.resolve_type, decl.return_type,
+                                               namespace, routine.module_key)
+        parameters = []
+        for param in decl.parameters:
+            param_type = self.attempt(self.resolve_type, param.type, namespace,
+                                      routine.module_key)
+            if param_type is None:
+                self.failed_names.add(param.name.key)
+            if param.array_rank and param_type is not None:
+                param_type = ArrayType(param_type, (None,) * param.array_rank)
+            slot = routine.add_local(param.name.text, ABSENT)
+            parameter = P.Parameter(param.name.text, param.name.key, param_type, param.mode,
+                                    param.optional, param.alternative_group,
+                                    param.array_rank, slot, param.span)
+            parameters.append(parameter)
+            self.attempt(self._declare, scope, param.name.key, Symbol(
+                LOCAL_DATA, param.name.text, param_type, slot=slot, storage=param.mode,
+                optional=param.optional, by_reference=param.mode != "IN",
+                span=param.span), param.name.span, "parameter")
+        routine.parameters = tuple(parameters)
+        for data in decl.data:
+            if self.attempt(self._declare_local, routine, scope, data, namespace,
+                            node=data) is None:
+                self._failed_local(routine, scope, data)
+        if decl.error is not None:
+            routine.handler_numbers = self.attempt(self._handler_numbers, decl.error, scope)
 
     def _declare_local(self, routine, scope: Scope, decl: ast.DataDeclaration,
                        namespace: int) -> None:
@@ -443,6 +509,15 @@ class Linker:
             symbol = Symbol(LOCAL_DATA, decl.name.text, rapid_type, slot=slot, storage="VAR",
                             span=decl.span)
         self._declare(scope, decl.name.key, symbol, decl.name.span, "data")
+        return symbol
+
+    def _failed_local(self, routine, scope: Scope, decl) -> None:
+        """Routine data whose declaration failed: declared with an unknown type."""
+        if scope.names.get(decl.name.key) is None:
+            slot = routine.add_local(decl.name.text, None)
+            scope.declare(decl.name.key, Symbol(LOCAL_DATA, decl.name.text, None, slot=slot,
+                                                storage="VAR", span=decl.span))
+        self.failed_names.add(decl.name.key)
 
     def _handler_numbers(self, handler: ast.ErrorHandler, scope: Scope) -> Optional[frozenset]:
         if handler.numbers is None:
@@ -467,7 +542,7 @@ class Linker:
         views = []
         for p in routine.parameters:
             element = p.type.element if isinstance(p.type, ArrayType) else p.type
-            types = () if element is ANYTYPE else (element,)
+            types = () if element is ANYTYPE or element is None else (element,)
             views.append(ParameterView(p.name, p.key, p.mode, p.optional, p.group,
                                        p.is_switch, types, p.rank))
         return views
@@ -491,12 +566,22 @@ class Linker:
         if symbol is None or symbol.kind != ROUTINE:
             where = f"task {task}" if task else "the program"
             raise error(NO_ENTRY, f"{where} has no procedure '{entry}' to start from "
-                        f"(use --entry NAME to choose another)")
+                        f"(use --entry NAME to choose another)",
+                        None, *self._entry_candidates_note(namespace))
         routine = self.routines[symbol.slot]
         if routine.kind != "PROC" or routine.parameters:
             raise error(NO_ENTRY, f"entry routine '{routine.name}' must be a procedure "
                         "without parameters", routine.span)
         return routine.index
+
+    def _entry_candidates_note(self, namespace: int) -> tuple[str, ...]:
+        """A library without main: the procedures one could start from, as a note."""
+        names = [r.name for r in self.routines if r.namespace == namespace and r.kind == "PROC"
+                 and not r.local and not r.ast.parameters]
+        if not names:
+            return ("no global procedure without parameters could be the entry either",)
+        shown = ", ".join(names[:20]) + (f", ... ({len(names) - 20} more)" if len(names) > 20 else "")
+        return (f"procedures without parameters to start from with --entry: {shown}",)
 
     def _environment_routine(self, key: str, required: bool, span=None) -> Optional[int]:
         symbol = self.namespaces[P.ENVIRONMENT_NAMESPACE].lookup(key)

@@ -2,10 +2,9 @@
 
 Pure routines (math, strings, …) are called through their registry
 implementation.  Routines that need the program state (I/O, motion,
-FlexPendant, clocks, interrupts, Present, Dim, ValToStr …) are *special*:
-their registry entry only carries the signature, and a factory in
-``rapidmc.semantics.special_routines`` compiles each call into a closure or
-an instruction.
+FlexPendant, clocks, interrupts, Present, Dim, ValToStr …) carry a
+``factory`` in their registry entry (``rapidmc.semantics.library``) that
+compiles each call into a closure or an instruction.
 """
 from __future__ import annotations
 
@@ -13,7 +12,7 @@ from typing import Callable
 
 from .. import ast
 from ..diagnostics import ENV_ONLY, TYPE_MISMATCH, UNKNOWN_ROUTINE, error
-from .builtins import registry
+from .library import registry
 from .calls import REFERENCE, SIGNAL_ARG, VALUE, ParameterView, bind
 from .expressions import Compiled, ExpressionCompiler, constant
 from .instructions import Action, Instruction
@@ -65,8 +64,8 @@ class PredefinedCalls:
         return self.linker.builtin_types.get(name.upper()) if name else None
 
     def _check_environment(self, compiler: ExpressionCompiler, name: ast.Name, span) -> None:
-        from . import special_routines
-        if name.key in special_routines.ENVIRONMENT_ONLY:
+        from .library.environment_model import ENVIRONMENT_ONLY
+        if name.key in ENVIRONMENT_ONLY:
             routine = compiler.routine
             in_environment = routine is not None and routine.namespace == ENVIRONMENT_NAMESPACE
             if not in_environment:
@@ -75,21 +74,17 @@ class PredefinedCalls:
 
     # ---------------------------------------------------------------- functions
     def predefined_function(self, compiler: ExpressionCompiler, expr: ast.FunctionCall) -> Compiled:
-        from . import special_routines
         entry = registry.lookup_function(expr.name.key)
         if entry is None:
             if registry.lookup_procedure(expr.name.key) is not None:
                 raise error(TYPE_MISMATCH, f"'{expr.name.text}' is a procedure: call it as a "
                             "statement, not in an expression", expr.span)
-            raise error(UNKNOWN_ROUTINE, f"unknown function '{expr.name.text}'", expr.span)
+            raise error(UNKNOWN_ROUTINE, f"unknown function '{expr.name.text}'", expr.span,
+                        subject=expr.name.key)
         self._check_environment(compiler, expr.name, expr.span)
         compiler._no_variables(expr)
         if entry.special:
-            factory = special_routines.FUNCTIONS.get(entry.key)
-            if factory is None:
-                raise error(UNKNOWN_ROUTINE, f"predefined function {entry.signature.name} is "
-                            "not supported by rapidmc", expr.span)
-            return factory(self, compiler, expr, entry)
+            return entry.factory(self, compiler, expr, entry)
         binders = bind(compiler, entry.signature.name, self.views(entry), expr.args, expr.span)
         impl = self.implementation(compiler, entry, expr.args)
         fns = self.argument_functions(entry, binders)
@@ -135,7 +130,6 @@ class PredefinedCalls:
     # --------------------------------------------------------------- procedures
     def predefined_procedure(self, compiler: ExpressionCompiler, statement: ast.ProcedureCall,
                              routine_compiler) -> Instruction:
-        from . import special_routines
         entry = registry.lookup_procedure(statement.name.key)
         if entry is None:
             if registry.lookup_function(statement.name.key) is not None:
@@ -143,14 +137,10 @@ class PredefinedCalls:
                             "value in an expression (a function call is not a statement)",
                             statement.span)
             raise error(UNKNOWN_ROUTINE, f"unknown procedure '{statement.name.text}'",
-                        statement.span)
+                        statement.span, subject=statement.name.key)
         self._check_environment(compiler, statement.name, statement.span)
         if entry.special:
-            factory = special_routines.PROCEDURES.get(entry.key)
-            if factory is None:
-                raise error(UNKNOWN_ROUTINE, f"predefined instruction {entry.signature.name} "
-                            "is not supported by rapidmc", statement.span)
-            return factory(self, compiler, statement, entry)
+            return entry.factory(self, compiler, statement, entry)
         binders = bind(compiler, entry.signature.name, self.views(entry), statement.args,
                        statement.span)
         impl = self.implementation(compiler, entry, statement.args)
@@ -177,5 +167,5 @@ class PredefinedCalls:
         return call
 
     def connect(self, compiler: ExpressionCompiler, statement: ast.Connect) -> Instruction:
-        from . import special_routines
-        return special_routines.connect(self, compiler, statement)
+        from .library.interrupts import connect
+        return connect(self, compiler, statement)

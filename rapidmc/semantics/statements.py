@@ -11,8 +11,10 @@ from __future__ import annotations
 from typing import Optional
 
 from .. import ast
-from ..diagnostics import (ASSIGN_CONST, BAD_CONTROL, DUPLICATE, TYPE_MISMATCH,
-                           UNKNOWN_LABEL, UNKNOWN_ROUTINE, PLACEHOLDER, error)
+from ..diagnostics import (ASSIGN_CONST, BAD_CONTROL, DUPLICATE, TYPE_MISMATCH, UNKNOWN_LABEL,
+                           UNKNOWN_NAME, UNKNOWN_ROUTINE, PLACEHOLDER, UserError, error)
+from ..error_report import UNKNOWN_CODES
+from .library import registry
 from .expressions import ExpressionCompiler, _check_index as check_index
 from .instructions import (Action, Branch, Call, EndRoutine, EndUndo, ExitProgram,
                            ForInit, ForNext, Instruction, Jump, LateCall, Raise, Retry,
@@ -106,8 +108,9 @@ class RoutineCompiler:
         for jump, goto in self.gotos:
             label = self.labels.get(goto.label.key)
             if label is None:
-                raise error(UNKNOWN_LABEL, f"GOTO to unknown label '{goto.label.text}'",
-                            goto.span)
+                self.linker.report(error(UNKNOWN_LABEL, f"GOTO to unknown label "
+                                             f"'{goto.label.text}'", goto.span))
+                continue
             jump.target = label
         self.resolve()
         self.routine.code = self.code
@@ -133,9 +136,52 @@ class RoutineCompiler:
     def block(self, statements, follow: Label) -> None:
         for statement in statements:
             after = Label()
-            self.statement(statement, after)
+            try:
+                self.statement(statement, after)
+            except UserError as failure:      # report it with the others; check the rest
+                self.report(failure, statement)
             self.waiting.append(after)
         self.end_block(follow)
+
+    def report(self, failure: UserError, statement) -> None:
+        """Record a statement's error; an unknown name also brings the statement's other
+        unknown names (the compiler stopped at the first)."""
+        self.linker.report(failure, statement)
+        self.nested_blocks(statement)
+        first = failure.diagnostics[0]
+        if first.code not in UNKNOWN_CODES:
+            return
+        for name, use in ast.names_used(statement):
+            if name.key != first.subject and not self.knows(name, use):
+                what = "name" if use == "data" else use
+                code = UNKNOWN_NAME if use == "data" else UNKNOWN_ROUTINE
+                self.linker.report(error(code, f"unknown {what} '{name.text}'", name.span,
+                                         subject=name.key))
+
+    def nested_blocks(self, statement) -> None:
+        """A compound statement that failed in its own part (an IF condition, a TEST
+        subject): its nested statements are checked all the same, for their errors.
+        (FOR is left out: its loop variable is declared by the statement itself.)"""
+        blocks = []
+        if isinstance(statement, ast.If):
+            blocks = [branch.body for branch in statement.branches] + [statement.else_body or ()]
+        elif isinstance(statement, ast.While):
+            blocks = [statement.body]
+        elif isinstance(statement, ast.Test):
+            blocks = [case.body for case in statement.cases] + [statement.default or ()]
+        elif isinstance(statement, ast.CompactIf):
+            blocks = [(statement.statement,)]
+        for body in blocks:
+            self.block(body, Label())
+
+    def knows(self, name: ast.Name, use: str) -> bool:
+        """Whether ``name`` means something here (data, a routine, predefined)."""
+        if self.scope.lookup(name.key) is not None or name.key in ("ERRNO", "INTNO"):
+            return True
+        if use == "data":
+            return self.linker.system_symbol(name) is not None
+        lookup = registry.lookup_function if use == "function" else registry.lookup_procedure
+        return lookup(name.key) is not None
 
     def statement(self, statement, follow: Label) -> None:
         saved = (self.statement_start, self.statement_after, self.statement_reads_io,
@@ -144,12 +190,14 @@ class RoutineCompiler:
         self.statement_after = follow
         self.statement_reads_io = False
         self.statement_code = []
-        getattr(self, "_" + type(statement).__name__)(statement, follow)
-        if self.statement_reads_io:
-            for instruction in self.statement_code:
-                instruction.reads_io = True
-        (self.statement_start, self.statement_after, self.statement_reads_io,
-         self.statement_code) = saved
+        try:
+            getattr(self, "_" + type(statement).__name__)(statement, follow)
+            if self.statement_reads_io:
+                for instruction in self.statement_code:
+                    instruction.reads_io = True
+        finally:
+            (self.statement_start, self.statement_after, self.statement_reads_io,
+             self.statement_code) = saved
 
     def _note_io_read(self) -> None:
         self.statement_reads_io = True

@@ -161,7 +161,7 @@ def start_state(program: Program, io_values: Optional[dict] = None) -> State:
 
 
 def _predefined(program: Program, key: str):
-    from .builtins.data import PREDEFINED_DATA
+    from .library.data import PREDEFINED_DATA
     return PREDEFINED_DATA[key].value
 
 

@@ -130,7 +130,8 @@ NON_VALUE_NAMES = (
     "clock", "iodev", "dir", "socketdev", "rawbytes", "triggdata", "shapedata",
     "wzstationary", "wztemporary", "mecunit", "taskid", "syncident", "rmqslot",
     "intnum_obsolete", "restartdata", "corrdescr", "pathrecid", "jointtype",
-    "egmident",
+    "egmident", "trapdata", "cameradev", "datapos", "itmsrc", "jointgroup", "menudata",
+    "speedlimdata", "rmqmessage", "loadsession",
 )
 NON_VALUE_TYPES = {n.upper(): RapidType(n.upper(), n, NON_VALUE) for n in NON_VALUE_NAMES}
 
@@ -141,6 +142,7 @@ NUM_ALIASES = (
     "listitem_num", "sensorstate", "num_limit", "triggmode", "paridnum", "loadidnum",
     "errstr_num", "opmode", "runmode",
     "inttypes", "egmstate", "egmstopmode", "egmframetype",
+    "testsignal", "tunetype", "uishownum", "signalorigin", "aiotrigg",
 )
 STRING_ALIASES = ("stringdig", "errstr")
 
@@ -151,7 +153,33 @@ PREDEFINED_TYPES: dict[str, RapidType] = {t.key: t for t in (
 )}
 PREDEFINED_TYPES.update(SIGNAL_TYPES)
 EGM_MINMAX = _record("egm_minmax", *_nums("min", "max"))
-PREDEFINED_TYPES[EGM_MINMAX.key] = EGM_MINMAX
+# FlexPendant list items, the sensor interface, RAPID Message Queues, Integrated Vision,
+# program displacement, and the arc welding data of RobotWare Arc (components as in the
+# manuals and in controller backups).
+ARCDATA = _record("arcdata", *_nums("sched", "mode", "voltage", "wirefeed", "control", "current",
+                                    "voltage2", "wirefeed2", "control2"))
+OPTION_RECORDS = (
+    EGM_MINMAX,
+    _record("listitem", ("image", STRING), ("text", STRING)),
+    _record("sensor", *_nums("id", "type", "state")),
+    _record("rmqheader", ("datatype", STRING), *_nums("ndim", "dim1", "dim2", "dim3")),
+    _record("cameratarget", ("name", STRING), ("cframe", POSE),
+            *_nums("val1", "val2", "val3", "val4", "val5"), ("string1", STRING),
+            ("string2", STRING), *_nums("type", "sceneid")),
+    _record("progdisp", ("pdisp", POSE), ("eoffs", EXTJOINT)),
+    ARCDATA,
+    _record("welddata", *_nums("weld_speed", "org_weld_speed"), ("main_arc", ARCDATA),
+            ("org_arc", ARCDATA)),
+    _record("seamdata", *_nums("purge_time", "preflow_time"), ("ign_arc", ARCDATA),
+            *_nums("ign_move_delay", "scrape_start", "heat_speed", "heat_time", "heat_distance"),
+            ("heat_arc", ARCDATA), *_nums("cool_time", "fill_time"), ("fill_arc", ARCDATA),
+            *_nums("bback_time", "rback_time"), ("rback_arc", ARCDATA), ("postflow_time", NUM)),
+    _record("weavedata", *_nums("weave_shape", "weave_type", "weave_length", "weave_width",
+                                "weave_height", "dwell_left", "dwell_center", "dwell_right",
+                                "weave_dir", "weave_tilt", "weave_ori", "weave_bias",
+                                "org_weave_width", "org_weave_height", "org_weave_bias")),
+)
+PREDEFINED_TYPES.update({t.key: t for t in OPTION_RECORDS})
 PREDEFINED_TYPES.update(NON_VALUE_TYPES)
 PREDEFINED_ALIASES: dict[str, tuple[str, RapidType]] = {}
 for _name in NUM_ALIASES:

@@ -11,7 +11,8 @@ import contextlib
 import gc
 
 from .. import ast
-from ..diagnostics import SourceCache
+from ..diagnostics import SourceCache, UserError
+from ..error_report import report
 from ..source import program_paths, read_source
 from .parser import parse_modules
 
@@ -42,10 +43,18 @@ def parse_file(path: str) -> tuple[ast.Module, ...]:
 
 
 def load_program(paths: list[str]) -> ast.Program:
-    """The program made of the given module files (``.pgf`` files expanded)."""
+    """The program made of the given module files (``.pgf`` files expanded).
+
+    The syntax errors of every file are reported together."""
     modules: list[ast.Module] = []
+    problems = []
     for path in program_paths(list(paths)):
-        modules.extend(parse_file(path))
+        try:
+            modules.extend(parse_file(path))
+        except UserError as failure:
+            problems.extend(failure.diagnostics)
+    if problems:
+        raise UserError(report(problems))
     return ast.Program(tuple(modules))
 
 

@@ -25,6 +25,7 @@ from .. import ast
 from ..ast import Span
 from ..diagnostics import (BAD_CHARACTER, BAD_STRING, FILE_EMPTY, PLACEHOLDER,
                            SYNTAX, UNEXPECTED_EOF, UserError, error)
+from . import recovery
 from .lexer import RapidLexer
 from .lower import Lowering
 from .reductions import rule_callbacks
@@ -66,7 +67,38 @@ def _reduced_rules() -> tuple:
 
 
 def parse_modules(text: str, filename: str) -> tuple[ast.Module, ...]:
-    """The modules in RAPID source text, or a ``UserError``."""
+    """The modules in RAPID source text, or a ``UserError`` with every syntax error found.
+
+    After a syntax error inside a statement or declaration, that statement
+    is blanked out and the file parsed again, so that one run reports the
+    errors of the other statements too (``recovery``).
+    """
+    try:
+        return _parse(text, filename)
+    except UnexpectedInput as exc:
+        raise UserError(_all_syntax_errors(text, filename, exc)) from None
+
+
+def _all_syntax_errors(text: str, filename: str, first: UnexpectedInput) -> list:
+    diagnostics = []
+    attempt, failure = text, first
+    while True:
+        diagnostics.extend(syntax_error(failure, attempt, filename).diagnostics)
+        blanked = recovery.without_failed_statement(attempt, failure)
+        if blanked is None or len(diagnostics) >= recovery.MAX_SYNTAX_ERRORS:
+            return diagnostics
+        try:
+            _parse(blanked, filename)
+            return diagnostics
+        except UnexpectedInput as later:
+            if recovery.offset(later) <= recovery.offset(failure):
+                return diagnostics
+            attempt, failure = blanked, later
+        except UserError:            # a lexical problem further on: shown once this is fixed
+            return diagnostics
+
+
+def _parse(text: str, filename: str) -> tuple[ast.Module, ...]:
     lark = rapid_parser()
     frontend = lark.parser
     lowering = Lowering(filename, None)
@@ -74,11 +106,7 @@ def parse_modules(text: str, filename: str) -> tuple[ast.Module, ...]:
                        frontend.lexer, MAX_STACK_DEPTH, lowering.too_deep)
     lowering.lexer = lexer
     parser = _Parser(frontend.parser._parse_table, rule_callbacks(_reduced_rules(), lowering))
-    try:
-        modules = parser.parse(LexerThread(lexer, LexerState(TextSlice.cast_from(text))),
-                               START_RULE)
-    except UnexpectedInput as exc:
-        raise syntax_error(exc, text, filename) from None
+    modules = parser.parse(LexerThread(lexer, LexerState(TextSlice.cast_from(text))), START_RULE)
     if lowering.problem is not None:
         raise lowering.problem
     return modules

@@ -1,0 +1,33 @@
+"""Arc welding (RobotWare Arc): the weld moves ArcL, ArcC and their Start/End forms.
+
+A weld move is a move: the robot state jumps to the target as with MoveL and
+MoveC.  The welding process (arc, wire feed, weaving, seam tracking) is not
+modelled.
+"""
+from __future__ import annotations
+
+from .arguments import no_effect
+from .motion import move_robot
+from .registry import NO_EFFECT, ROBOT_STATE, compiled
+
+_WELD = "seamdata Seam, welddata Weld \\weavedata Weave"
+_TAIL = ("PERS tooldata Tool \\PERS wobjdata WObj \\switch Corr \\PERS anytype Track "
+         "\\switch PreProcessTracking \\string SeamName \\PERS loaddata TLoad")
+_ON_OFF = "\\switch On \\switch Off"
+_FULL = (f"\\identno ID, speeddata Speed \\num T, {_WELD}, zonedata Zone \\num Z "
+         f"\\stoppointdata Inpos, {_TAIL}")
+_ENDS = f"\\identno ID, speeddata Speed, {_WELD}, zonedata Zone, {_TAIL}"
+
+
+@compiled(f"ArcL({_ON_OFF}, robtarget ToPoint {_FULL})",
+          f"ArcC({_ON_OFF}, robtarget CirPoint, robtarget ToPoint {_FULL})",
+          f"ArcLStart(robtarget ToPoint {_ENDS})",
+          f"ArcLEnd(robtarget ToPoint {_ENDS})",
+          f"ArcCStart(robtarget CirPoint, robtarget ToPoint {_ENDS})",
+          f"ArcCEnd(robtarget CirPoint, robtarget ToPoint {_ENDS})",
+          modelled=ROBOT_STATE)
+def _weld_move(calls, compiler, call, entry):
+    return move_robot(calls, compiler, call, entry, "ToPoint")
+
+
+compiled("ArcRefresh()", modelled=NO_EFFECT)(no_effect)

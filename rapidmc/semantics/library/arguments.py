@@ -1,0 +1,78 @@
+"""What the factories of state-reading routines share: bound arguments, robot state parts."""
+from __future__ import annotations
+
+from typing import Callable
+
+from ... import ast
+from ...diagnostics import UNSUPPORTED, error
+from ..calls import REFERENCE
+from ..expressions import Compiled, constant
+from ..instructions import Action, Instruction
+from ..machine import ABSENT
+
+ROBOT_TCP, ROBOT_TOOL, ROBOT_WOBJ, ROBOT_JOINTS = range(4)
+
+
+class Arguments:
+    """The bound arguments of one call, by parameter name."""
+
+    def __init__(self, calls, compiler, call, entry):
+        self.binders = calls.bind(compiler, entry, call.args, call.span)
+        self.specs = entry.signature.parameters
+        self.by_key = {spec.key: binder for spec, binder in zip(self.specs, self.binders)}
+
+    def fn(self, key: str) -> Callable:
+        return self.by_key[key.upper()][1]
+
+    def kind(self, key: str) -> str:
+        return self.by_key[key.upper()][0]
+
+    def value(self, key: str) -> Callable:
+        """fn(m) -> value of the argument (ABSENT if not given); reads through references."""
+        kind, fn = self.by_key[key.upper()]
+        if kind == REFERENCE:
+            def deref(m):
+                ref = fn(m)
+                return ABSENT if ref is ABSENT else m.read_ref(ref)
+            return deref
+        return fn
+
+
+def argument_expression(call, key: str, position: int):
+    """The AST expression given for a parameter (by name or position), or None."""
+    positional = [a for a in call.args if a.kind == ast.REQUIRED and a.name is None]
+    for arg in call.args:
+        if arg.name is not None and arg.name.key == key.upper():
+            return arg.value
+    if 0 <= position < len(positional):
+        return positional[position].value
+    return None
+
+
+def no_effect(calls, compiler, call, entry) -> Instruction:
+    """Factory of an instruction checked against its signature that changes nothing
+    rapidmc observes (motion tuning, process settings, logs)."""
+    Arguments(calls, compiler, call, entry)
+    return Action(call.span, lambda m: None)
+
+
+def fixed(value) -> Callable:
+    """Factory of a function whose controller-dependent result is the fixed ``value``."""
+    def factory(calls, compiler, call, entry) -> Compiled:
+        Arguments(calls, compiler, call, entry)
+        return constant(value, calls.return_type(entry))
+    return factory
+
+
+def not_modelled(reason: str) -> Callable:
+    """Factory of a routine the program may call but rapidmc cannot model: the program
+    loads; reaching the call stops with RMC305 saying ``reason``."""
+    def factory(calls, compiler, call, entry):
+        Arguments(calls, compiler, call, entry)
+
+        def unsupported(m):
+            raise error(UNSUPPORTED, f"{call.name.text} {reason}", call.span)
+        if entry.signature.return_type:
+            return Compiled(unsupported, calls.return_type(entry))
+        return Action(call.span, unsupported)
+    return factory

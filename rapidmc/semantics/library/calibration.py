@@ -1,0 +1,23 @@
+"""Tool and frame calibration from taught robot positions.
+
+Computing a TCP or a frame from joint positions needs the robot's kinematic
+model, which rapidmc does not have: programs with these calls load, and
+reaching one stops the run with RMC305.
+"""
+from __future__ import annotations
+
+from .arguments import not_modelled
+from .controller import KINEMATICS
+from .registry import NOT_MODELLED, compiled
+
+_FOUR = "jointtarget Pos1, jointtarget Pos2, jointtarget Pos3, jointtarget Pos4"
+
+compiled(f"MToolTCPCalib({_FOUR}, INOUT tooldata Tool, VAR num MaxErr, VAR num MeanErr)",
+         "MToolRotCalib(jointtarget RefTip, jointtarget ZPos \\jointtarget XPos, "
+             "INOUT tooldata Tool)",
+         f"SToolTCPCalib({_FOUR}, INOUT tooldata Tool, VAR num MaxErr, VAR num MeanErr)",
+         "pose DefFrame(robtarget NewP1, robtarget NewP2, robtarget NewP3 "
+             "\\switch Origin)",
+         "pose DefDFrame(robtarget OldP1, robtarget OldP2, robtarget OldP3, robtarget NewP1, "
+             "robtarget NewP2, robtarget NewP3)",
+         modelled=NOT_MODELLED)(not_modelled(KINEMATICS))

@@ -1,0 +1,182 @@
+"""Controller routines real programs call around their I/O: system information,
+test-and-set locks, trigger moves, EGM sessions and other motion settings.
+
+Motion is modelled as a jump to the target (see special_routines), so the
+routines that only tune motion (MotionSup, ClearPath, EGM sensor guidance)
+change nothing rapidmc observes: they are checked against their signatures
+and do nothing.  docs/semantics.md, "Sockets and files", lists them.
+"""
+from __future__ import annotations
+
+from ..expressions import Compiled, constant
+from ..instructions import Action, ControlAction
+from ..types import BOOL, NUM, STRING
+from .arguments import Arguments, no_effect, not_modelled
+from .motion import move_robot
+from .registry import FIXED, NO_EFFECT, NOT_MODELLED, ROBOT_STATE, compiled
+from .signals import signal_reader
+from .signature_parts import ACT_TAIL, AXES, JOINTS, RUN_TAIL, TRIGG_TAIL
+
+KINEMATICS = "needs the robot's kinematic model, which rapidmc does not have"
+SYSTEM_INFO = (("SerialNo", "rapidmc-0001"), ("SWVersion", "6.0.0"), ("RobotType", "IRB 120"),
+               ("CtrlId", "rapidmc"), ("LanIp", "127.0.0.1"), ("CtrlLang", "en"),
+               ("SystemName", "rapidmc"))
+
+
+# EGM session states (egmstate); programs compare them with <=, so they are ordered.
+EGM_STATE_DISCONNECTED, EGM_STATE_CONNECTED, EGM_STATE_RUNNING = 1.0, 2.0, 3.0
+
+
+# ===========================================================================
+# System information
+# ===========================================================================
+
+@compiled("string GetSysInfo(" + " | ".join(f"\\switch {key}" if i == 0 else f"switch {key}"
+              for i, (key, _) in enumerate(SYSTEM_INFO)) + ")",
+          modelled=FIXED)
+def _get_sys_info(calls, compiler, call, entry) -> Compiled:
+    arguments = Arguments(calls, compiler, call, entry)
+    switches = [(arguments.value(key), text) for key, text in SYSTEM_INFO]
+
+    def info(m):
+        return next((text for flag, text in switches if flag(m) is True), SYSTEM_INFO[0][1])
+    return Compiled(info, STRING)
+
+
+@compiled("bool RobOS()",
+          modelled=FIXED)
+def _rob_os(calls, compiler, call, entry) -> Compiled:
+    """FALSE: rapidmc is a virtual controller, not the robot's operating system."""
+    Arguments(calls, compiler, call, entry)
+    return constant(False, BOOL)
+
+
+@compiled("bool IsStopMoveAct(\\switch FromMoveTask | switch FromNonMoveTask)",
+          modelled=FIXED)
+def _is_stop_move_act(calls, compiler, call, entry) -> Compiled:
+    Arguments(calls, compiler, call, entry)
+    return constant(False, BOOL)
+
+
+@compiled("string GetTaskName(\\INOUT num TaskNo | INOUT num MecTaskNo)",
+          modelled=FIXED)
+def _get_task_name(calls, compiler, call, entry) -> Compiled:
+    arguments = Arguments(calls, compiler, call, entry)
+    numbers = [arguments.fn(key) for key in ("TaskNo", "MecTaskNo")]
+
+    def task_name(m):
+        for ref in numbers:
+            target = ref(m)
+            if isinstance(target, tuple):
+                m.write_ref(target, 1.0)
+        return "T_ROB1"
+    return Compiled(task_name, STRING)
+
+
+compiled("num AInput(VAR signalai Signal)",
+         "num GInput(VAR signalgi Signal)")(signal_reader)
+
+
+compiled("jointtarget CalcJointT(\\switch UseCurWObjPos, robtarget Rob_target, PERS tooldata Tool "
+             "\\PERS wobjdata WObj \\num ConfAngle \\INOUT errnum ErrorNumber)",
+         "robtarget CalcRobT(jointtarget Joint_target, PERS tooldata Tool \\PERS wobjdata WObj)",
+         modelled=NOT_MODELLED)(not_modelled(KINEMATICS))
+
+
+# ===========================================================================
+# Test-and-set locks (one task: the lock is free unless the program holds it)
+# ===========================================================================
+
+@compiled("bool TestAndSet(INOUT bool Object)")
+def _test_and_set(calls, compiler, call, entry) -> Compiled:
+    lock = Arguments(calls, compiler, call, entry).fn("Object")
+
+    def test_and_set(m):
+        ref = lock(m)
+        if m.read_ref(ref):
+            return False
+        m.write_ref(ref, True)
+        return True
+    return Compiled(test_and_set, BOOL)
+
+
+@compiled("WaitTestAndSet(INOUT bool Object)")
+def _wait_test_and_set(calls, compiler, call, entry):
+    """Waits while the lock is TRUE (a deadlock in one task), then takes it."""
+    lock = Arguments(calls, compiler, call, entry).fn("Object")
+
+    def wait(m, instruction):
+        ref = lock(m)
+        if m.read_ref(ref):
+            m.waiting = True
+            return
+        m.write_ref(ref, True)
+        m.goto(instruction.next)
+    return ControlAction(call.span, wait)
+
+
+# ===========================================================================
+# Moves with triggers, and motion settings
+# ===========================================================================
+
+@compiled(f"TriggL(\\switch Conc, robtarget ToPoint \\identno ID, {TRIGG_TAIL})",
+          f"TriggJ(\\switch Conc, robtarget ToPoint \\identno ID, {TRIGG_TAIL})",
+          f"TriggC(\\switch Conc, robtarget CirPoint, robtarget ToPoint \\identno ID, {TRIGG_TAIL})",
+          modelled=ROBOT_STATE)
+def _trigg_move(calls, compiler, call, entry):
+    return move_robot(calls, compiler, call, entry, "ToPoint")
+
+
+compiled("SkipWarn()",
+         "ClearPath()",
+         "MotionSup(\\switch On | switch Off \\num TuneValue)",
+         "ReadCfgData(string InstancePath, string Attribute, VAR anytype CfgData \\num ListNo)",
+         "ErrLog(num ErrorId \\switch W | switch I, anytype Argument1, anytype Argument2, "
+             "anytype Argument3, anytype Argument4, anytype Argument5)",
+         "WaitSyncTask(\\switch InPos, VAR syncident SyncID, REF tasks TaskList{*} \\num TimeOut)",
+         "SyncMoveOn(VAR syncident SyncID, REF tasks TaskList{*} \\num TimeOut)",
+         "SyncMoveOff(VAR syncident SyncID \\num TimeOut)",
+         f"EGMActJoint(VAR egmident EGMid \\switch StreamStart \\PERS tooldata Tool \\PERS wobjdata WObj "
+             f"\\PERS loaddata TLoad {JOINTS} {ACT_TAIL})",
+         "EGMActPose(VAR egmident EGMid \\switch StreamStart \\PERS tooldata Tool \\PERS wobjdata WObj "
+             "\\PERS loaddata TLoad, pose CorrFrame, egmframetype CorrFrType, pose SensorFrame, "
+             f"egmframetype SensFrType {AXES} {ACT_TAIL})",
+         "EGMRunJoint(VAR egmident EGMid, egmstopmode Mode \\switch NoWaitCond "
+             + " ".join(f"\\switch J{i}" for i in range(1, 8)) + f" {RUN_TAIL})",
+         "EGMRunPose(VAR egmident EGMid, egmstopmode Mode \\switch NoWaitCond "
+             + " ".join(f"\\switch {a}" for a in ("x", "y", "z", "rx", "ry", "rz")) + f" {RUN_TAIL})",
+         "EGMStop(VAR egmident EGMid, egmstopmode Mode \\num RampOutTime)",
+         "EGMStreamStart(VAR egmident EGMid \\num SampleRate)",
+         "EGMStreamStop(VAR egmident EGMid)",
+         modelled=NO_EFFECT)(no_effect)
+
+
+# ===========================================================================
+# EGM sessions: the identity's state follows GetId / SetupUC / Reset
+# ===========================================================================
+
+def _egm_state(calls, compiler, call, entry, new):
+    ident = Arguments(calls, compiler, call, entry).fn("EGMid")
+    return Action(call.span, lambda m: m.write_ref(ident(m), new))
+
+
+@compiled("EGMGetId(VAR egmident EGMid)",
+          "EGMReset(VAR egmident EGMid)")
+def _egm_get_id(calls, compiler, call, entry):
+    return _egm_state(calls, compiler, call, entry, None)
+
+
+@compiled("EGMSetupUC(mecunit MecUnit, VAR egmident EGMid, string ExtConfigName, string UCDevice "
+              "\\switch Pose | switch Joint | switch PathCorr \\num CommTimeout)")
+def _egm_setup(calls, compiler, call, entry):
+    return _egm_state(calls, compiler, call, entry, EGM_STATE_CONNECTED)
+
+
+@compiled("egmstate EGMGetState(VAR egmident EGMid)")
+def _egm_get_state(calls, compiler, call, entry) -> Compiled:
+    ident = Arguments(calls, compiler, call, entry).fn("EGMid")
+
+    def state(m):
+        value = m.read_ref(ident(m))
+        return EGM_STATE_DISCONNECTED if value is None else value
+    return Compiled(state, NUM)

@@ -1,0 +1,96 @@
+"""Data objects reached by name at run time: GetDataVal, SetDataVal, ErrRaise.
+
+The name is looked up where the call is, as the controller does: the
+routine's data, the module's, then the task's global data and the
+predefined ones.  A name that is not data there raises ERR_SYM_ACCESS; data
+of another type than the argument's raises ERR_SYMBOL_TYPE.
+"""
+from __future__ import annotations
+
+from ...diagnostics import ARGUMENT, error
+from ..errors import RapidError
+from ..instructions import Action
+from ..machine import ABSENT, GLOBAL
+from ..scope import CONSTANT, GLOBAL_DATA
+from ..types import same_type
+from .arguments import Arguments, argument_expression, fixed, no_effect
+from .registry import FIXED, NO_EFFECT, compiled
+
+_WHERE = "string Object \\VAR datapos Block | REF taskid TaskRef | string TaskName"
+
+
+def named_data(scope, name: str, wanted_type, what: str):
+    """The global data object or constant ``name`` visible in ``scope``: (symbol, ref or None)."""
+    symbol = scope.lookup(name.upper())
+    if symbol is None or symbol.kind not in (GLOBAL_DATA, CONSTANT):
+        raise RapidError("ERR_SYM_ACCESS", f"{what}: no data object named '{name}' here")
+    if wanted_type is not None and not same_type(symbol.type, wanted_type):
+        raise RapidError("ERR_SYMBOL_TYPE", f"{what}: '{name}' is {symbol.type}, not {wanted_type}")
+    if symbol.kind == CONSTANT:
+        return symbol, None
+    return symbol, (GLOBAL, symbol.slot, ())
+
+
+def _value_reference(compiler, call, what: str):
+    target = argument_expression(call, "Value", 1)
+    if target is None:
+        raise error(ARGUMENT, f"{call.name.text} needs a Value", call.span)
+    return compiler.reference(target, what)
+
+
+@compiled(f"GetDataVal({_WHERE}, VAR anytype Value)")
+def _get_data_val(calls, compiler, call, entry):
+    arguments = Arguments(calls, compiler, call, entry)
+    name = arguments.value("Object")
+    value_ref, value_type, _ = _value_reference(compiler, call, "written by GetDataVal")
+    scope = compiler.scope
+
+    def get(m):
+        symbol, ref = named_data(scope, name(m), value_type, "GetDataVal")
+        m.write_ref(value_ref(m), symbol.value if ref is None else m.read_ref(ref))
+    return Action(call.span, get)
+
+
+@compiled(f"SetDataVal({_WHERE}, anytype Value)")
+def _set_data_val(calls, compiler, call, entry):
+    arguments = Arguments(calls, compiler, call, entry)
+    name, value = arguments.value("Object"), arguments.value("Value")
+    value_type = compiler.value(argument_expression(call, "Value", 1)).type
+    scope = compiler.scope
+
+    def set_value(m):
+        symbol, ref = named_data(scope, name(m), value_type, "SetDataVal")
+        if ref is None:
+            raise RapidError("ERR_SYM_ACCESS", f"SetDataVal: '{symbol.name}' is a constant")
+        m.write_ref(ref, value(m))
+    return Action(call.span, set_value)
+
+
+@compiled("ErrRaise(\\switch W, string ErrorName, num ErrorId, errstr Title, errstr Str1, "
+              "errstr Str2, errstr Str3, errstr Str4 \\errstr Str5)")
+def _err_raise(calls, compiler, call, entry):
+    """Logs and raises the error number held by the errnum data named ErrorName (booked
+    with BookErrNo); with \\W it only logs (the log is not modelled)."""
+    arguments = Arguments(calls, compiler, call, entry)
+    name, warning = arguments.value("ErrorName"), arguments.value("W")
+    scope = compiler.scope
+
+    def raise_error(m):
+        if warning(m) is True:
+            return
+        symbol, ref = named_data(scope, name(m), None, "ErrRaise")
+        number = symbol.value if ref is None else m.read_ref(ref)
+        if number is ABSENT or not number:
+            raise RapidError("ERR_ILLRAISE", f"ErrRaise: '{name(m)}' holds no error number")
+        raise RapidError(int(number), f"raised by ErrRaise \"{name(m)}\"")
+    return Action(call.span, raise_error)
+
+
+# Searching the program's data by type and name pattern: the search finds nothing (rapidmc
+# keeps no symbol table at run time), so GetNextSym answers FALSE.
+compiled("SetDataSearch(string Type \\string TypeMod \\string Object \\switch PersSym "
+             "\\switch VarSym \\switch ConstSym \\switch InTask | string InMod "
+             "\\string InRout \\switch GlobalSym | switch LocalSym)",
+         modelled=NO_EFFECT)(no_effect)
+compiled("bool GetNextSym(INOUT string Object, VAR datapos Block \\switch Recursive)",
+         modelled=FIXED)(fixed(False))

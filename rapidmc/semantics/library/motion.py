@@ -1,0 +1,121 @@
+"""Motion: the robot state jumps to the programmed target in one step."""
+from __future__ import annotations
+
+from ..errors import RapidError
+from ..instructions import ControlAction, Instruction, enter_routine
+from ..machine import ABSENT
+from .arguments import ROBOT_JOINTS, ROBOT_TCP, ROBOT_TOOL, ROBOT_WOBJ, Arguments
+from .registry import ROBOT_STATE, compiled
+from .signals import dionum, write_signal
+from .signature_parts import MOVE_DO_TAIL, MOVE_TAIL
+
+
+def arrive(m, point, tool, wobj, joint: bool = False) -> None:
+    """The robot is at ``point`` (a robtarget, or a jointtarget when ``joint``) with ``tool``
+    and, when given, ``wobj``."""
+    robot = list(m.robot)
+    robot[ROBOT_JOINTS if joint else ROBOT_TCP] = point
+    robot[ROBOT_TOOL] = tool
+    if wobj is not ABSENT:
+        robot[ROBOT_WOBJ] = wobj
+    m.robot = tuple(robot)
+
+
+def move_robot(calls, compiler, call, entry, target_key: str, joint: bool = False,
+                signal: bool = False, sync: bool = False, checked=dionum) -> Instruction:
+    arguments = Arguments(calls, compiler, call, entry)
+    target = arguments.value(target_key)
+    tool = arguments.value("Tool")
+    wobj = arguments.value("WObj")
+    signal_fn = arguments.fn("Signal") if signal else None
+    signal_value = arguments.value("Value") if signal else None
+    proc_name = arguments.value("ProcName") if sync else None
+    candidates = {}
+    if sync:
+        routine = compiler.routine
+        for callee in compiler.linker.procedures_visible(routine):
+            if not callee.parameters:
+                candidates[callee.key] = callee
+
+    def move(m, instruction):
+        arrive(m, target(m), tool(m), wobj(m), joint)
+        if signal:
+            write_signal(m, signal_fn(m), checked(signal_value(m)))
+        if sync:
+            name = proc_name(m)
+            callee = candidates.get(name.upper())
+            if callee is None:
+                raise RapidError("ERR_REFUNKPRC", f"no procedure named '{name}' without parameters")
+            enter_routine(m, callee, [])     # the caller goes on after the move when it returns
+        else:
+            m.goto(instruction.next)
+    return ControlAction(call.span, move)
+
+
+@compiled(f"MoveJ(\\switch Conc, robtarget ToPoint \\identno ID, {MOVE_TAIL} \\PERS loaddata TLoad)",
+          f"MoveL(\\switch Conc, robtarget ToPoint \\identno ID, {MOVE_TAIL} \\switch Corr "
+              "\\PERS loaddata TLoad)",
+          f"MoveC(\\switch Conc, robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_TAIL} "
+              "\\switch Corr \\PERS loaddata TLoad)",
+          modelled=ROBOT_STATE)
+def _move_to_point(calls, compiler, call, entry):
+    return move_robot(calls, compiler, call, entry, "ToPoint")
+
+
+@compiled(f"MoveAbsJ(\\switch Conc, jointtarget ToJointPos \\identno ID \\switch NoEOffs, {MOVE_TAIL} "
+              "\\PERS loaddata TLoad)",
+          modelled=ROBOT_STATE)
+def _move_abs_j(calls, compiler, call, entry):
+    return move_robot(calls, compiler, call, entry, "ToJointPos", joint=True)
+
+
+@compiled(f"MoveJDO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, VAR signaldo Signal, dionum Value "
+              "\\PERS loaddata TLoad)",
+          f"MoveLDO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, VAR signaldo Signal, dionum Value "
+              "\\PERS loaddata TLoad)",
+          f"MoveCDO(robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, "
+              "VAR signaldo Signal, dionum Value \\PERS loaddata TLoad)")
+def _move_do(calls, compiler, call, entry):
+    return move_robot(calls, compiler, call, entry, "ToPoint", signal=True)
+
+
+@compiled(f"MoveJSync(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, string ProcName \\PERS loaddata TLoad)",
+          f"MoveLSync(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, string ProcName \\PERS loaddata TLoad)",
+          f"MoveCSync(robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, "
+              "string ProcName \\PERS loaddata TLoad)")
+def _move_sync(calls, compiler, call, entry):
+    return move_robot(calls, compiler, call, entry, "ToPoint", sync=True)
+
+
+@compiled("MoveExtJ(\\switch Conc, jointtarget ToJointPos \\identno ID \\switch UseEOffs, "
+              "speeddata Speed \\num T, zonedata Zone \\stoppointdata Inpos)",
+          modelled=ROBOT_STATE)
+def _move_ext_j(calls, compiler, call, entry):
+    """Only the external axes move: the robot's joints keep their values."""
+    target = Arguments(calls, compiler, call, entry).value("ToJointPos")
+
+    def move(m, instruction):
+        robot = list(m.robot)
+        robot[ROBOT_JOINTS] = (robot[ROBOT_JOINTS][0], target(m)[1])
+        m.robot = tuple(robot)
+        m.goto(instruction.next)
+    return ControlAction(call.span, move)
+
+
+def _analog(value: float) -> float:
+    return float(value)
+
+
+_AO_TAIL = "VAR signalao Signal, num Value \\PERS loaddata TLoad"
+_GO_TAIL = "VAR signalgo Signal, num Value \\PERS loaddata TLoad"
+
+
+@compiled(f"MoveJAO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, {_AO_TAIL})",
+          f"MoveLAO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, {_AO_TAIL})",
+          f"MoveCAO(robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, {_AO_TAIL})",
+          f"MoveJGO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, {_GO_TAIL})",
+          f"MoveLGO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, {_GO_TAIL})",
+          f"MoveCGO(robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, {_GO_TAIL})")
+def _move_analog_or_group(calls, compiler, call, entry):
+    """The move, and the analog or group output set at the target (as MoveLDO does)."""
+    return move_robot(calls, compiler, call, entry, "ToPoint", signal=True, checked=_analog)

@@ -1,0 +1,54 @@
+"""Process support that acts while the robot moves: triggers, path correction, the sensor
+interface, independent axes, interrupts on analog and group signals, I/O units.
+
+rapidmc follows no path between targets and no external sensor, so these are
+checked against their signatures and change nothing it observes: trigger
+events and correction offsets never happen, an independent axis is always in
+position, an interrupt on an analog or group signal never occurs (ISignalDI/DO
+interrupts are modelled), I/O units are always running.
+"""
+from __future__ import annotations
+
+from .arguments import fixed, no_effect
+from .registry import FIXED, NO_EFFECT, compiled
+
+_SIGNAL_OUT = "\\VAR signaldo DOp | VAR signalgo GOp | VAR signalao AOp | num ProcID"
+_INDEPENDENT = "mecunit MecUnit, num Axis"
+_AIO = ("aiotrigg Condition \\num HighValue \\num LowValue \\num DeltaValue "
+        "\\switch DPos | switch DNeg, VAR intnum Interrupt")
+
+compiled("TriggInt(VAR triggdata TriggData, num Distance \\switch Start | switch Time, "
+             "VAR intnum Interrupt)",
+         f"TriggEquip(VAR triggdata TriggData, num Distance \\switch Start, num EquipLag "
+             f"{_SIGNAL_OUT}, num SetValue | dnum SetDvalue \\switch Inhib \\num InhibSetValue)",
+         "TriggSpeed(VAR triggdata TriggData, num Distance \\switch Start, num ScaleLag, "
+             "VAR signalao AOp, num ScaleValue \\num DipLag \\VAR errnum ErrDO \\switch Inhib)",
+         "TriggDataReset(VAR triggdata TriggData)",
+         "TriggStopProc(VAR restartdata RestartRef \\VAR signaldo DO1 \\VAR signaldo DO2 "
+             "\\VAR signaldo DO3 \\VAR signaldo DO4, VAR signaldo ShadowDO)",
+         "CorrCon(VAR corrdescr Descr)",
+         "CorrWrite(VAR corrdescr Descr, pos Data)",
+         "CorrDiscon(VAR corrdescr Descr)",
+         "CorrClear()",
+         "SiConnect(PERS sensor Sensor \\switch NoStop)",
+         "SiClose(PERS sensor Sensor)",
+         "SiGetCyclic(PERS sensor Sensor, PERS anytype Data, num Rate)",
+         "SiSetCyclic(PERS sensor Sensor, PERS anytype Data, num Rate)",
+         f"IndAMove({_INDEPENDENT} \\num ToAbsPos | jointtarget ToAbsNum, num Speed \\switch Ramp)",
+         f"IndCMove({_INDEPENDENT}, num Speed \\switch Ramp)",
+         f"IndDMove({_INDEPENDENT}, num Delta, num Speed \\switch Ramp)",
+         f"IndRMove({_INDEPENDENT} \\num ToRelPos | jointtarget ToAbsNum \\switch Short "
+             "| switch Fwd | switch Bwd, num Speed \\switch Ramp)",
+         f"ISignalAI(\\switch Single | switch SingleSafe, VAR signalai Signal, {_AIO})",
+         f"ISignalAO(\\switch Single | switch SingleSafe, VAR signalao Signal, {_AIO})",
+         "ISignalGI(\\switch Single | switch SingleSafe, VAR signalgi Signal, VAR intnum Interrupt)",
+         "ISignalGO(\\switch Single | switch SingleSafe, VAR signalgo Signal, VAR intnum Interrupt)",
+         "IOEnable(string UnitName, num MaxTime)",
+         "IODisable(string UnitName, num MaxTime)",
+         "SocketSendTo(VAR socketdev Socket, string RemoteAddress, num RemotePort "
+             "\\string Str | VAR rawbytes RawData | VAR anytype Data \\num NoOfBytes)",
+         modelled=NO_EFFECT)(no_effect)
+compiled(f"bool IndInpos({_INDEPENDENT})",
+         f"bool IndSpeed({_INDEPENDENT} \\switch InSpeed | switch ZeroSpeed)",
+         modelled=FIXED)(fixed(True))
+compiled("pos CorrRead()", modelled=FIXED)(fixed((0.0, 0.0, 0.0)))

@@ -1,0 +1,73 @@
+"""Program control: Stop, ExitCycle, error numbers, late binding."""
+from __future__ import annotations
+
+from .. import values
+from ..errors import RapidError
+from ..errors_flow import unwind_all
+from ..instructions import Action, ControlAction, enter_routine
+from ..state import ENDED, Frame
+from .arguments import Arguments
+from .registry import compiled
+
+
+@compiled("Stop(\\switch NoRegain | switch AllMoveTasks)",
+          "Break()")
+def _stop(calls, compiler, call, entry):
+    Arguments(calls, compiler, call, entry)
+
+    def stop(m, instruction):
+        m.frames = []
+        m.status = ENDED
+    return ControlAction(call.span, stop)
+
+
+@compiled("ExitCycle()")
+def _exit_cycle(calls, compiler, call, entry):
+    Arguments(calls, compiler, call, entry)
+
+    def restart(m, instruction):
+        unwind_all(m)
+        if not m.chooser.check_mode:
+            m.status = ENDED           # a run is one cycle
+            return
+        main = m.program.routines[m.program.entry]
+        m.frames = [Frame(main.index, 0, main.initial_locals)]
+    return ControlAction(call.span, restart)
+
+
+_booked = [91]
+
+
+@compiled("BookErrNo(VAR errnum ErrorName)")
+def _book_err_no(calls, compiler, call, entry):
+    ref = Arguments(calls, compiler, call, entry).fn("ErrorName")
+    number = float(_booked[0])
+    _booked[0] += 1
+    return Action(call.span, lambda m: m.write_ref(ref(m), number))
+
+
+@compiled("CallByVar(string Name, num Number)")
+def _call_by_var(calls, compiler, call, entry):
+    arguments = Arguments(calls, compiler, call, entry)
+    name = arguments.value("Name")
+    number = arguments.value("Number")
+    candidates = {c.key: c for c in compiler.linker.procedures_visible(compiler.routine)
+                  if not c.parameters}
+
+    def call_by_var(m, instruction):
+        full = name(m) + values.num_to_str(number(m), 0)
+        callee = candidates.get(full.upper())
+        if callee is None:
+            raise RapidError("ERR_REFUNKPRC", f"no procedure named '{full}'")
+        enter_routine(m, callee, [])
+    return ControlAction(call.span, call_by_var)
+
+
+@compiled("ResetRetryCount()")
+def _reset_retry_count(calls, compiler, call, entry):
+    Arguments(calls, compiler, call, entry)
+
+    def reset(m):
+        frame = m.frames[-1]
+        m.frames[-1] = frame._replace(retries=0)
+    return Action(call.span, reset)

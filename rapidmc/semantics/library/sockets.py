@@ -1,0 +1,282 @@
+"""Sockets: the controller's TCP/IP client and server instructions.
+
+A socket is part of the environment.  In ``run`` mode a received message
+is one line of standard input (as FlexPendant answers are) and a sent one
+is printed as ``[socket] <text>``; when standard input ends, the peer has
+closed the connection (ERR_SOCK_CLOSED once, then the run stops for want
+of input).  When model checking, a received message is a nondeterministic
+choice among the configured messages, and a finite ``\\Time`` may run out
+(ERR_SOCK_TIMEOUT).  docs/semantics.md, "Sockets and files", has the
+details.
+
+A ``socketdev`` variable holds ``None`` (never created: SOCKET_CLOSED) or a
+pair ``(status, pending)``: the socketstatus number and the received
+bytes not read yet (``\\ReadNoOfBytes`` reads a stream, not messages).
+"""
+from __future__ import annotations
+
+from ...diagnostics import INPUT_EXHAUSTED, UNSUPPORTED, error
+from .. import rawbytes
+from ..errors import RapidError
+from ..expressions import Compiled
+from ..instructions import Action
+from ..types import NUM
+from .arguments import Arguments, argument_expression
+from .data import PREDEFINED_DATA
+from .environment_model import where
+from .registry import CHOICE, compiled
+from .signature_parts import TIME
+
+SOCKET_CREATED, SOCKET_CONNECTED, SOCKET_BOUND, SOCKET_LISTENING, SOCKET_CLOSED = \
+    1.0, 2.0, 3.0, 4.0, 5.0
+DEFAULT_TIMEOUT = 60.0          # seconds, when \Time is not given (manual)
+WAIT_MAX = float(PREDEFINED_DATA["WAIT_MAX"].value)
+TIMEOUT, CLOSED, RECEIVED = "ERR_SOCK_TIMEOUT", "ERR_SOCK_CLOSED", "received"
+
+
+# ===========================================================================
+# The environment: where received text comes from
+# ===========================================================================
+
+def configured(m, name: str, default: tuple) -> tuple:
+    """Check mode: the domain ``m.chooser.config.<name>`` (``default`` when not configured)."""
+    config = getattr(m.chooser, "config", None)
+    return tuple(getattr(config, name, default)) or default
+
+
+def environment_text(m, kind: str, span, domain: tuple):
+    """The next text the environment delivers to ``kind``, or None at end of input.
+
+    Run mode reads one line of standard input; check mode chooses from ``domain``.
+    """
+    if m.chooser.check_mode:
+        return m.choose(f"{kind} at {where(span)}", domain)
+    stdin = getattr(m.chooser, "stdin", None)
+    line = stdin.readline() if stdin is not None else ""
+    if not line:
+        return None
+    return line.rstrip("\r\n")
+
+
+def may_fail(m, kind: str, span, outcomes: tuple) -> str:
+    """Check mode: which of RECEIVED and the failure ``outcomes`` happens (a choice)."""
+    if not outcomes or not m.chooser.check_mode:
+        return RECEIVED
+    return m.choose(f"{kind} outcome at {where(span)}", (RECEIVED,) + outcomes)
+
+
+def _timeouts(m, seconds) -> tuple:
+    """ERR_SOCK_TIMEOUT is possible when the time limit is finite and timeouts are modelled."""
+    limit = DEFAULT_TIMEOUT if seconds is None else seconds
+    config = getattr(m.chooser, "config", None)
+    if limit < WAIT_MAX and getattr(config, "socket_timeouts", True):
+        return (TIMEOUT,)
+    return ()
+
+
+def _closures(m) -> tuple:
+    config = getattr(m.chooser, "config", None)
+    return (CLOSED,) if getattr(config, "socket_closures", False) else ()
+
+
+def _input_ended(m, what: str, span) -> None:
+    """Run mode: after the input ended, no client comes any more."""
+    if not m.chooser.check_mode and getattr(m.chooser, "socket_input_ended", False):
+        raise error(INPUT_EXHAUSTED, f"{what} waits for a client but standard input has no "
+                    "more lines (the last client closed the connection)", span)
+
+
+# ===========================================================================
+# Socket states
+# ===========================================================================
+
+def status(value) -> float:
+    return SOCKET_CLOSED if value is None else value[0]
+
+
+def _require(value, wanted: float, what: str) -> None:
+    if status(value) != wanted:
+        if wanted == SOCKET_CONNECTED:
+            raise RapidError("ERR_SOCK_CLOSED", f"{what}: the socket is not connected")
+        raise RapidError("ERR_SOCK_CLOSED", f"{what}: the socket is in the wrong state")
+
+
+def _optional(value):
+    from ..machine import ABSENT
+    return None if value is ABSENT else value
+
+
+# instruction: (state it needs, or None for any; state it leaves)
+TRANSITIONS = {
+    "SOCKETCREATE": (None, SOCKET_CREATED),
+    "SOCKETBIND": (SOCKET_CREATED, SOCKET_BOUND),
+    "SOCKETLISTEN": (SOCKET_BOUND, SOCKET_LISTENING),
+    "SOCKETCLOSE": (None, SOCKET_CLOSED),
+}
+
+
+@compiled("SocketCreate(VAR socketdev Socket \\switch UDP)",
+          "SocketBind(VAR socketdev Socket, string LocalAddress, num LocalPort)",
+          "SocketListen(VAR socketdev Socket)",
+          "SocketClose(VAR socketdev Socket)")
+def _socket_transition(calls, compiler, call, entry):
+    """Moves a socket from the state the instruction needs to the one it leaves."""
+    socket = Arguments(calls, compiler, call, entry).fn("Socket")
+    wanted, new = TRANSITIONS[call.name.key]
+    name = call.name.text
+
+    def act(m):
+        ref = socket(m)
+        if wanted is not None:
+            _require(m.read_ref(ref), wanted, name)
+        m.write_ref(ref, (new, b""))
+    return Action(call.span, act)
+
+
+def _connection(m, call, seconds, failure: str) -> None:
+    """A connection is made, or (check mode, finite time limit) times out."""
+    what = call.name.text
+    _input_ended(m, what, call.span)
+    if may_fail(m, what, call.span, _timeouts(m, _optional(seconds(m)))) != RECEIVED:
+        raise RapidError("ERR_SOCK_TIMEOUT", f"{what}: {failure}")
+
+
+@compiled(f"SocketConnect(VAR socketdev Socket, string Address, num Port {TIME})",
+          modelled=CHOICE)
+def _socket_connect(calls, compiler, call, entry):
+    arguments = Arguments(calls, compiler, call, entry)
+    socket, seconds = arguments.fn("Socket"), arguments.value("Time")
+
+    def connect(m):
+        ref = socket(m)
+        _require(m.read_ref(ref), SOCKET_CREATED, "SocketConnect")
+        _connection(m, call, seconds, "no answer from the server")
+        m.write_ref(ref, (SOCKET_CONNECTED, b""))
+    return Action(call.span, connect)
+
+
+@compiled("SocketAccept(VAR socketdev Socket, VAR socketdev ClientSocket "
+              f"\\VAR string ClientAddress {TIME})",
+          modelled=CHOICE)
+def _socket_accept(calls, compiler, call, entry):
+    arguments = Arguments(calls, compiler, call, entry)
+    server, client = arguments.fn("Socket"), arguments.fn("ClientSocket")
+    address, seconds = arguments.fn("ClientAddress"), arguments.value("Time")
+    has_address = argument_expression(call, "ClientAddress", -1) is not None
+
+    def accept(m):
+        _require(m.read_ref(server(m)), SOCKET_LISTENING, "SocketAccept")
+        _connection(m, call, seconds, "no client connected in time")
+        m.write_ref(client(m), (SOCKET_CONNECTED, b""))
+        if has_address:
+            m.write_ref(address(m), "127.0.0.1")
+    return Action(call.span, accept)
+
+
+@compiled("socketstatus SocketGetStatus(VAR socketdev Socket)")
+def _socket_get_status(calls, compiler, call, entry) -> Compiled:
+    socket = Arguments(calls, compiler, call, entry).fn("Socket")
+    return Compiled(lambda m: status(m.read_ref(socket(m))), NUM)
+
+
+@compiled("num SocketPeek(VAR socketdev Socket)")
+def _socket_peek(calls, compiler, call, entry) -> Compiled:
+    socket = Arguments(calls, compiler, call, entry).fn("Socket")
+
+    def peek(m):
+        value = m.read_ref(socket(m))
+        _require(value, SOCKET_CONNECTED, "SocketPeek")
+        return float(len(value[1]))
+    return Compiled(peek, NUM)
+
+
+# ===========================================================================
+# Sending and receiving
+# ===========================================================================
+
+def _no_data(call) -> None:
+    if argument_expression(call, "Data", -1) is not None:
+        raise error(UNSUPPORTED, f"{call.name.text} \\Data (any data in binary form) is not "
+                    "modelled by rapidmc; use \\Str or \\RawData", call.span)
+
+
+@compiled("SocketSend(VAR socketdev Socket \\string Str | VAR rawbytes RawData | VAR anytype Data "
+              "\\num NoOfBytes)")
+def _socket_send(calls, compiler, call, entry):
+    _no_data(call)
+    arguments = Arguments(calls, compiler, call, entry)
+    socket, text, raw = arguments.fn("Socket"), arguments.value("Str"), arguments.value("RawData")
+    count = arguments.value("NoOfBytes")
+    is_raw = argument_expression(call, "RawData", -1) is not None
+    if not is_raw and argument_expression(call, "Str", -1) is None:
+        raise error(UNSUPPORTED, "SocketSend needs \\Str or \\RawData", call.span)
+
+    def send(m):
+        _require(m.read_ref(socket(m)), SOCKET_CONNECTED, "SocketSend")
+        limit = _optional(count(m))
+        if is_raw:
+            data = rawbytes.as_bytes(raw(m))
+            shown = rawbytes.to_text(data if limit is None else data[:int(limit)])
+        else:
+            shown = text(m) if limit is None else text(m)[:int(limit)]
+        m.output.append(f"[socket] {shown}")
+    return Action(call.span, send)
+
+
+def _receive_message(m, call, seconds) -> str:
+    """The text of one message from the peer, or a socket error."""
+    outcome = may_fail(m, "SocketReceive", call.span, _timeouts(m, seconds) + _closures(m))
+    if outcome == TIMEOUT:
+        raise RapidError("ERR_SOCK_TIMEOUT", "SocketReceive: no message in time")
+    if outcome == CLOSED:
+        raise RapidError("ERR_SOCK_CLOSED", "SocketReceive: the peer closed the connection")
+    text = environment_text(m, "SocketReceive", call.span,
+                            configured(m, "socket_messages", ("",)))
+    if text is None:
+        m.chooser.socket_input_ended = True
+        raise RapidError("ERR_SOCK_CLOSED", "SocketReceive: the client closed the connection "
+                         "(end of standard input)")
+    return text
+
+
+@compiled("SocketReceive(VAR socketdev Socket \\VAR string Str | VAR rawbytes RawData | "
+              f"VAR anytype Data \\num ReadNoOfBytes \\VAR num NoRecBytes {TIME})",
+          modelled=CHOICE)
+def _socket_receive(calls, compiler, call, entry):
+    _no_data(call)
+    arguments = Arguments(calls, compiler, call, entry)
+    socket, text_ref, raw_ref = arguments.fn("Socket"), arguments.fn("Str"), arguments.fn("RawData")
+    wanted, received, seconds = (arguments.value("ReadNoOfBytes"), arguments.fn("NoRecBytes"),
+                                 arguments.value("Time"))
+    is_raw = argument_expression(call, "RawData", -1) is not None
+    counts = argument_expression(call, "NoRecBytes", -1) is not None
+    if not is_raw and argument_expression(call, "Str", -1) is None:
+        raise error(UNSUPPORTED, "SocketReceive needs \\Str or \\RawData", call.span)
+
+    def receive(m):
+        ref = socket(m)
+        value = m.read_ref(ref)
+        _require(value, SOCKET_CONNECTED, "SocketReceive")
+        pending, limit, time = value[1], _optional(wanted(m)), _optional(seconds(m))
+        if is_raw:
+            while not pending or (limit is not None and len(pending) < limit):
+                more = rawbytes.from_text(_receive_message(m, call, time))
+                if not more:
+                    raise RapidError("ERR_SOCK_TIMEOUT", "SocketReceive: the message was empty")
+                pending += more
+            size = len(pending) if limit is None else int(limit)
+            data, pending = pending[:size], pending[size:]
+            m.write_ref(raw_ref(m), data)
+        else:
+            data = (pending.decode("latin-1") if pending
+                    else _receive_message(m, call, time))[:80]
+            pending = b""
+            m.write_ref(text_ref(m), data)
+        m.write_ref(ref, (SOCKET_CONNECTED, pending))
+        if counts:
+            m.write_ref(received(m), float(len(data)))
+    return Action(call.span, receive)
+
+
+# Files, serial channels, rawbytes and controller routines register themselves
+# when imported.

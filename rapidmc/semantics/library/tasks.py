@@ -1,0 +1,121 @@
+"""The controller, its tasks and mechanical units, as a program sees them: fixed answers
+for one robot task (T_ROB1, ROB_1) running in automatic mode, module loading, text
+tables, test signals.
+
+Loading and saving modules change the program on a controller; rapidmc checks
+the modules it is given (give the loaded modules as files), so Load, UnLoad,
+StartLoad, WaitLoad, Save and EraseModule change nothing it observes.
+"""
+from __future__ import annotations
+
+from ..expressions import Compiled
+from ..instructions import Action
+from .arguments import (
+    ROBOT_TOOL,
+    ROBOT_WOBJ,
+    Arguments,
+    argument_expression,
+    fixed,
+    no_effect,
+)
+from .data import PREDEFINED_DATA
+from .registry import FIXED, NO_EFFECT, ROBOT_STATE, compiled
+
+compiled("bool TaskRunMec()", "bool TaskRunRob()", "bool IsMechUnitActive(mecunit MechUnit)",
+         "bool TextTabFreeToUse(string TableName)",
+         modelled=FIXED)(fixed(True))
+compiled("bool IsSyncMoveOn()", "bool IsStopStateEvent(\\switch PPMoved | switch PPToMain)",
+         "bool PPMovedInManMode()",
+         modelled=FIXED)(fixed(False))
+compiled("string GetMecUnitName(mecunit MechUnit)", modelled=FIXED)(fixed("ROB_1"))
+compiled("string NonMotionMode(\\switch Main)", modelled=FIXED)(fixed("OFF"))
+compiled("string TextGet(num Table, num Index)", "string RobName()",
+         modelled=FIXED)(fixed(""))
+compiled("num TextTabGet(string TableName)", "num PathLevel()", "num MotionPlannerNo()",
+         modelled=FIXED)(fixed(1.0))
+compiled("num MaxRobReorientSpeed()", modelled=FIXED)(fixed(500.0))
+compiled("num MaxExtLinearSpeed()", modelled=FIXED)(fixed(5000.0))
+compiled("num MaxExtReorientSpeed()", modelled=FIXED)(fixed(1000.0))
+compiled("bool TaskIsActive(string TaskName)", "bool TaskIsExecuting(string TaskName)",
+         modelled=FIXED)(fixed(True))
+compiled("bool IsLeadThrough(\\mecunit MechUnit)", "bool IsBrakeCheckActive()",
+         "bool PFRestart(\\switch Base | switch Irpt)", modelled=FIXED)(fixed(False))
+compiled("iounit_state IOUnitState(string UnitName \\switch Phys | switch Logic)",
+         modelled=FIXED)(fixed(PREDEFINED_DATA["IOUNIT_RUNNING"].value))
+compiled("num ProgMemFree()", modelled=FIXED)(fixed(1_000_000.0))
+compiled("num TestSignRead(num Channel)", modelled=FIXED)(fixed(0.0))
+compiled("event_type EventType(\\switch Cont)", modelled=FIXED)(
+    fixed(PREDEFINED_DATA["EVENT_NONE"].value))
+compiled("exec_level ExecLevel()", modelled=FIXED)(fixed(PREDEFINED_DATA["LEVEL_NORMAL"].value))
+compiled("handler_type ExecHandler()", modelled=FIXED)(
+    fixed(PREDEFINED_DATA["HANDLER_NONE"].value))
+
+compiled("Load(\\switch Dynamic, string FilePath \\string File \\switch CheckRef)",
+         "UnLoad(\\switch ErrIfChanged | switch Save, string FilePath \\string File)",
+         "StartLoad(\\switch Dynamic, string FilePath \\string File, VAR loadsession LoadNo)",
+         "WaitLoad(\\string UnloadPath \\string UnloadFile, VAR loadsession LoadNo "
+             "\\switch CheckRef)",
+         "Save(\\string TaskRef | string TaskName, string ModuleName \\string FilePath "
+             "\\string File)",
+         "EraseModule(string ModuleName)",
+         "TextTabInstall(string File)",
+         "TestSignDefine(num Channel, testsignal SignalId, mecunit MechUnit, num Axis, "
+             "num SampleTime)",
+         "TestSignReset()",
+         "WriteCfgData(string InstancePath, string Attribute, anytype CfgData \\num ListNo)",
+         "SaveCfgData(string FilePath, string Domain)",
+         "SetLeadThrough(\\switch On | switch Off)",
+         "TPShow(tpnum Window)",
+         "SpyStart(string File)",
+         "SpyStop()",
+         "SyncMoveSuspend()",
+         "SyncMoveResume()",
+         "SyncMoveUndo()",
+         "ResetPPMoved()",
+         "ActEventBuffer()",
+         "DeactEventBuffer()",
+         "BrakeCheck()",
+         modelled=NO_EFFECT)(no_effect)
+
+
+@compiled("bool ModExist(string ModuleName)")
+def _mod_exist(calls, compiler, call, entry) -> Compiled:
+    """Whether a module of that name is loaded: one of the modules rapidmc was given."""
+    name = Arguments(calls, compiler, call, entry).value("ModuleName")
+    loaded = {module for _, module in compiler.linker.module_scopes}
+    return Compiled(lambda m: name(m).upper() in loaded, calls.return_type(entry))
+
+
+_SYSTEM_DATA = {"TOOLDATA": ROBOT_TOOL, "WOBJDATA": ROBOT_WOBJ}
+
+
+def _system_part(compiler, call, key: str, position: int):
+    """The robot state part a tool or work object argument stands for (None: not modelled)."""
+    expr = argument_expression(call, key, position)
+    found = compiler.value(expr).type if expr is not None else None
+    return _SYSTEM_DATA.get(getattr(found, "key", ""))
+
+
+@compiled("GetSysData(PERS anytype DestObject \\string ObjectName)", modelled=ROBOT_STATE)
+def _get_sys_data(calls, compiler, call, entry):
+    """The current tool or work object (as last programmed) copied to the argument."""
+    Arguments(calls, compiler, call, entry)
+    part = _system_part(compiler, call, "DestObject", 0)
+    if part is None:
+        return Action(call.span, lambda m: None)
+    target, _, _ = compiler.reference(argument_expression(call, "DestObject", 0),
+                                      "written by GetSysData")
+    return Action(call.span, lambda m: m.write_ref(target(m), m.robot[part]))
+
+
+@compiled("SetSysData(anytype SourceObject \\string ObjectName)", modelled=ROBOT_STATE)
+def _set_sys_data(calls, compiler, call, entry):
+    """The argument becomes the current tool or work object."""
+    source = Arguments(calls, compiler, call, entry).value("SourceObject")
+    part = _system_part(compiler, call, "SourceObject", 0)
+
+    def set_data(m):
+        robot = list(m.robot)
+        robot[part] = source(m)
+        m.robot = tuple(robot)
+    return Action(call.span, (lambda m: None) if part is None else set_data)

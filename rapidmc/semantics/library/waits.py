@@ -1,0 +1,117 @@
+"""Waiting: for a time, a signal or a condition."""
+from __future__ import annotations
+
+from ..errors import RapidError
+from ..instructions import ControlAction, Instruction, Wait
+from ..machine import ABSENT
+from ..timing import advance_to, next_event
+from .arguments import Arguments, argument_expression, no_effect
+from .registry import NO_EFFECT, compiled
+
+
+@compiled("WaitTime(\\switch InPos, num Time)")
+def _wait_time(calls, compiler, call, entry):
+    """One step when model checking; in run mode interrupts are served during the wait."""
+    seconds = Arguments(calls, compiler, call, entry).value("Time")
+    deadline_slot = compiler.routine.new_temporary(1, "<WaitTime deadline>", -1.0)
+
+    def wait(m, instruction):
+        if m.chooser.check_mode:
+            if seconds(m) < 0:
+                raise RapidError("ERR_ARGVALERR", "WaitTime needs a time >= 0")
+            m.goto(instruction.next)
+            return
+        deadline = m.frames[-1].locals[deadline_slot]
+        if deadline < 0:
+            t = seconds(m)
+            if t < 0:
+                raise RapidError("ERR_ARGVALERR", "WaitTime needs a time >= 0")
+            deadline = m.clock + t
+        due = next_event(m.interrupts)
+        if due is not None and due < deadline - 1e-9:
+            advance_to(m, due)
+            m.set_local(deadline_slot, deadline)
+            return                      # still waiting: a trap may run first
+        advance_to(m, deadline)
+        m.set_local(deadline_slot, -1.0)
+        m.goto(instruction.next)
+    return ControlAction(call.span, wait)
+
+
+def _wait(calls, compiler, call, entry, condition_factory, what: str) -> Instruction:
+    arguments = Arguments(calls, compiler, call, entry)
+    condition = condition_factory(arguments)
+    max_time = arguments.value("MaxTime")
+    timeout = None
+    if argument_expression(call, "MaxTime", -1) is not None:
+        timeout = max_time
+    flag_ref = None
+    if "TIMEFLAG" in arguments.by_key and argument_expression(call, "TimeFlag", -1) is not None:
+        flag_ref = arguments.fn("TimeFlag")
+    return Wait(call.span, condition, timeout, flag_ref, what)
+
+
+@compiled("WaitDI(VAR signaldi Signal, dionum Value \\num MaxTime \\VAR bool TimeFlag)",
+          "WaitDO(VAR signaldo Signal, dionum Value \\num MaxTime \\VAR bool TimeFlag)")
+def _wait_signal(calls, compiler, call, entry):
+    def factory(arguments):
+        signal = arguments.fn("Signal")
+        value = arguments.value("Value")
+        return lambda m: m.io[signal(m)] == value(m)
+    return _wait(calls, compiler, call, entry, factory, f"{call.name.text} condition")
+
+
+@compiled("WaitUntil(\\switch InPos, bool Cond \\num PollRate \\num MaxTime \\VAR bool TimeFlag)")
+def _wait_until(calls, compiler, call, entry):
+    def factory(arguments):
+        return arguments.value("Cond")
+    return _wait(calls, compiler, call, entry, factory, "WaitUntil condition")
+
+
+compiled("WaitRob(\\switch InPos | switch ZeroSpeed)",
+          "StopMove(\\switch Quick \\switch AllMotionTasks)",
+          "StartMove(\\switch AllMotionTasks)",
+          "ConfJ(\\switch On | switch Off)",
+          "ConfL(\\switch On | switch Off)",
+          "AccSet(num Acc, num Ramp \\num FinePointRamp)",
+          "VelSet(num Override, num Max)",
+          "SingArea(\\switch Wrist | switch LockAxis4 | switch Off)",
+          "TriggIO(VAR triggdata TriggData, num Distance \\switch Start | switch Time "
+              "\\VAR signaldo DOp | VAR signalgo GOp | VAR signalao AOp | num ProcID, "
+              "num SetValue | dnum SetDvalue \\num DODelay)",
+          modelled=NO_EFFECT)(no_effect)
+
+
+_COMPARISONS = (("LT", lambda a, b: a < b), ("GT", lambda a, b: a > b),
+                ("NOTEQ", lambda a, b: a != b))
+
+
+@compiled("WaitAI(VAR signalai Signal \\switch LT | switch GT, num Value \\num MaxTime "
+              "\\VAR num ValueAtTimeout)",
+          "WaitAO(VAR signalao Signal \\switch LT | switch GT, num Value \\num MaxTime "
+              "\\VAR num ValueAtTimeout)",
+          "WaitGI(VAR signalgi Signal \\switch NOTEQ | switch LT | switch GT, "
+              "num Value | dnum Dvalue \\num MaxTime \\VAR num ValueAtTimeout)",
+          "WaitGO(VAR signalgo Signal \\switch NOTEQ | switch LT | switch GT, "
+              "num Value | dnum Dvalue \\num MaxTime \\VAR num ValueAtTimeout)")
+def _wait_compare(calls, compiler, call, entry):
+    """Waits until the signal equals the value, or is less, greater, different with the
+    switch; at \\MaxTime ERR_WAIT_MAXTIME (\\ValueAtTimeout is not written)."""
+    def factory(arguments):
+        signal = arguments.fn("Signal")
+        value = arguments.value("Value")
+        dvalue = arguments.value("Dvalue") if "DVALUE" in arguments.by_key else None
+        switches = [(arguments.value(key), test) for key, test in _COMPARISONS
+                    if key in arguments.by_key]
+
+        def condition(m):
+            wanted = value(m)
+            if wanted is ABSENT and dvalue is not None:
+                wanted = dvalue(m)
+            actual = m.io[signal(m)]
+            for present, test in switches:
+                if present(m) is True:
+                    return test(actual, wanted)
+            return actual == wanted
+        return condition
+    return _wait(calls, compiler, call, entry, factory, f"{call.name.text} condition")

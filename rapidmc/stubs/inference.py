@@ -1,0 +1,501 @@
+"""Names the program uses and nobody declares, with types inferred from their uses.
+
+Each use of an undeclared name is evidence: passed as MoveL's ``ToPoint``
+it is a ``robtarget``; as ``\\Tool:=`` a ``tooldata``; assigned ``3`` a
+``num``; tested by ``IF`` a ``bool``; compared with a string a ``string``.
+A called procedure gets parameters typed from its arguments, a function the
+type its call's context expects.  The walk repeats until nothing new is
+learnt, since one inferred name types the next (``x := y;`` with ``x``
+known later).
+
+Example::
+
+    >>> from rapidmc.syntax import parse_text
+    >>> modules = parse_text("MODULE m PROC main() MoveL p1, v100, fine, tGrip; "
+    ...                      "IF ok THEN n := 3; ENDIF ENDPROC ENDMODULE", "m.mod")
+    >>> [(m.name.text, m.type.name) for m in missing_names(modules)]
+    [('p1', 'robtarget'), ('tGrip', 'tooldata'), ('ok', 'bool'), ('n', 'num')]
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Optional
+
+from .. import ast
+from ..semantics.library import registry
+from ..semantics.configured_signals import COMPARISONS
+from .names import BOOL, NUM, STRING, Declarations, TypeInfo
+
+DATA, PROCEDURE, FUNCTION, TRAP, TYPE = "data", "procedure", "function", "trap", "type"
+ARITHMETIC = ("+", "-", "*", "/")
+LOGICAL = ("AND", "OR", "XOR")
+MAX_PASSES = 6
+
+
+@dataclass
+class Parameter:
+    """A parameter of a missing routine, typed from the arguments of its calls."""
+
+    name: str
+    type: Optional[TypeInfo]
+    optional: bool = False
+    switch: bool = False
+
+
+@dataclass
+class Missing:
+    """One undeclared name: how it is used, and what that says about it."""
+
+    name: ast.Name
+    kind: str
+    first_use: ast.Span
+    use: str                                  # the first use, in words
+    uses: int = 0
+    type: Optional[TypeInfo] = None
+    evidence: str = ""                        # where the type comes from
+    storage: str = "PERS"
+    dims: list[int] = field(default_factory=list)
+    components: list[str] = field(default_factory=list)
+    parameters: list[Parameter] = field(default_factory=list)
+    fields: dict = field(default_factory=dict)          # a missing RECORD: component -> type
+    sizes_array: bool = False                           # used as an array dimension
+    assigned: bool = False
+
+    def learn(self, info: Optional[TypeInfo], evidence: str) -> bool:
+        """Take ``info`` as the type if none is known yet; whether anything changed."""
+        if info is None or self.type is not None or info.name.lower() in ("anytype", "anynum",
+                                                                          "switch"):
+            return False
+        self.type = TypeInfo(info.name, 0)
+        self.evidence = evidence
+        return True
+
+
+class Inference:
+    """One walk over the program; ``missing`` accumulates across walks."""
+
+    def __init__(self, modules: tuple[ast.Module, ...], signals=frozenset()):
+        self.names = Declarations(modules, signals)
+        self.modules = modules
+        self.missing: dict[str, Missing] = {}
+        self.changed = False
+        self.counting = True
+        self.local: dict[str, TypeInfo] = {}
+        self.routine: Optional[ast.Routine] = None
+        self.in_declaration = False           # declaration values and sizes are constant
+
+    # ------------------------------------------------------------ bookkeeping
+    def note(self, name: ast.Name, kind: str, use: str) -> Missing:
+        found = self.missing.get(name.key)
+        if found is None:
+            found = Missing(name, kind, name.span, use)
+            self.missing[name.key] = found
+            self.changed = True
+        if self.counting:
+            found.uses += 1
+        if self.in_declaration and kind == DATA:
+            found.storage = "CONST"
+        return found
+
+    def expect(self, expr, info: Optional[TypeInfo], evidence: str) -> None:
+        """``expr`` should have type ``info``: an undeclared name in it learns so."""
+        if isinstance(expr, ast.NameRef) and self.undeclared_data(expr.name):
+            missing = self.note(expr.name, DATA, evidence)
+            self.changed |= missing.learn(info, evidence)
+        elif isinstance(expr, ast.Index) and isinstance(expr.base, ast.NameRef) \
+                and self.undeclared_data(expr.base.name):
+            missing = self.note(expr.base.name, DATA, evidence)
+            self._array_use(missing, expr)
+            self.changed |= missing.learn(info, evidence)
+        elif isinstance(expr, ast.FunctionCall) and self.undeclared_routine(expr.name, FUNCTION):
+            missing = self.note(expr.name, FUNCTION, evidence)
+            self.changed |= missing.learn(info, f"its value: {evidence}")
+        elif isinstance(expr, ast.Binary) and expr.op in ARITHMETIC and info is not None:
+            for side in (expr.left, expr.right):
+                self.expect(side, info if info.name in ("num", "dnum", "string") else None,
+                            evidence)
+        elif isinstance(expr, ast.Unary) and expr.op in ("-", "+"):
+            self.expect(expr.operand, info, evidence)
+        elif isinstance(expr, ast.Component):
+            self._field(expr, info)
+
+    def _field(self, expr: ast.Component, info: Optional[TypeInfo]) -> None:
+        """A component of data whose type is missing: the RECORD gets that component."""
+        base = self.type_of(expr.base)
+        record = self.missing.get(base.key) if base is not None else None
+        if record is None or record.kind != TYPE:
+            return
+        name = expr.name.text
+        if name not in record.fields or (record.fields[name] is None and info is not None):
+            record.fields[name] = info
+            self.changed = True
+
+    def _array_use(self, missing: Missing, expr: ast.Index) -> None:
+        while len(missing.dims) < len(expr.indices):
+            missing.dims.append(1)
+        for number, index in enumerate(expr.indices):
+            if isinstance(index, ast.NumLiteral) and int(index.value) > missing.dims[number]:
+                missing.dims[number] = int(index.value)
+
+    def undeclared_data(self, name: ast.Name) -> bool:
+        return not self.names.is_data(name.key, self.local) and name.key not in self.names.routines
+
+    def undeclared_routine(self, name: ast.Name, use: str) -> bool:
+        """Neither a routine of that kind nor of the other (a misuse is not a missing name)."""
+        return not (self.names.is_routine(name.key, FUNCTION)
+                    or self.names.is_routine(name.key, PROCEDURE)) and name.key not in self.local
+
+    # ------------------------------------------------------------------ types
+    def type_of(self, expr) -> Optional[TypeInfo]:
+        """The static type of ``expr`` as far as declarations and inferences tell."""
+        if isinstance(expr, ast.NumLiteral):
+            return NUM
+        if isinstance(expr, ast.StringLiteral):
+            return STRING
+        if isinstance(expr, ast.BoolLiteral):
+            return BOOL
+        if isinstance(expr, ast.NameRef):
+            known = self.names.data_type(expr.name.key, self.local)
+            if known is None and expr.name.key in self.missing:
+                known = self.missing[expr.name.key].type
+            return known
+        if isinstance(expr, ast.Index):
+            base = self.type_of(expr.base)
+            return base.element() if base is not None else None
+        if isinstance(expr, ast.Component):
+            base = self.type_of(expr.base)
+            if base is not None and base.key in self.missing:
+                return self.missing[base.key].fields.get(expr.name.text)
+            return self.names.component_type(base.name, expr.name.text) if base else None
+        if isinstance(expr, ast.FunctionCall):
+            return self._call_type(expr)
+        if isinstance(expr, ast.Unary):
+            return BOOL if expr.op == "NOT" else self.type_of(expr.operand)
+        if isinstance(expr, ast.Binary):
+            if expr.op in COMPARISONS or expr.op in LOGICAL:
+                return BOOL
+            if expr.op in ("DIV", "MOD"):
+                return NUM
+            return self.type_of(expr.left) or self.type_of(expr.right)
+        return None
+
+    def _call_type(self, call: ast.FunctionCall) -> Optional[TypeInfo]:
+        routine = self.names.routines.get(call.name.key)
+        if routine is not None and routine.return_type is not None:
+            return TypeInfo(routine.return_type.name.text)
+        entry = registry.lookup_function(call.name.key)
+        if entry is not None and entry.signature.return_type:
+            return TypeInfo(entry.signature.return_type)
+        missing = self.missing.get(call.name.key)
+        return missing.type if missing is not None else None
+
+    # -------------------------------------------------------------- the walk
+    def walk(self) -> None:
+        for module in self.modules:
+            for decl in module.data:
+                self.local = {}
+                self._declaration(decl)
+            for routine in module.routines:
+                self._routine(routine)
+
+    def _declaration(self, decl: ast.DataDeclaration) -> None:
+        if not self.names.is_type(decl.type.name.key):
+            self.note(decl.type.name, TYPE, f"type of {decl.name.text}")
+        self.in_declaration = True
+        self._declaration_values(decl)
+        self.in_declaration = False
+
+    def _declaration_values(self, decl: ast.DataDeclaration) -> None:
+        for dim in decl.dims:
+            if isinstance(dim, ast.NameRef) and self.undeclared_data(dim.name):
+                self.note(dim.name, DATA, f"array size of {decl.name.text}").sizes_array = True
+            self.expect(dim, NUM, f"array size of {decl.name.text}")
+            self.expression(dim)
+        if decl.init is not None:
+            self.expect(decl.init, TypeInfo(decl.type.name.text), f"value of {decl.name.text}")
+            self.expression(decl.init)
+
+    def _routine(self, routine: ast.Routine) -> None:
+        self.routine = routine
+        self.local = {}
+        for param in routine.parameters:
+            self.local[param.name.key] = TypeInfo(param.type.name.text, param.array_rank)
+            if not self.names.is_type(param.type.name.key):
+                self.note(param.type.name, TYPE, f"type of parameter {param.name.text}")
+        for decl in routine.data:
+            self.local[decl.name.key] = TypeInfo(decl.type.name.text, len(decl.dims))
+            self._declaration(decl)
+        if routine.return_type is not None and not self.names.is_type(routine.return_type.name.key):
+            self.note(routine.return_type.name, TYPE, f"return type of {routine.name.text}")
+        sections = [routine.body, routine.backward or (), routine.undo or (),
+                    routine.error.body if routine.error else ()]
+        for statements in sections:
+            self.statements(statements)
+
+    def statements(self, statements) -> None:
+        for statement in statements:
+            method = getattr(self, "_" + type(statement).__name__, None)
+            if method is not None:
+                method(statement)
+
+    # ------------------------------------------------------------ statements
+    def _Assignment(self, statement: ast.Assignment) -> None:
+        target = self.type_of(statement.target)
+        value = self.type_of(statement.value)
+        root = statement.target
+        while isinstance(root, (ast.Index, ast.Component)):
+            root = root.base
+        self.expect(statement.target, value, f"assigned a {value.name}" if value else "assigned")
+        self.expression(statement.target)
+        if isinstance(root, ast.NameRef) and root.name.key in self.missing:
+            self.missing[root.name.key].assigned = True
+        self.expect(statement.value, target, f"assigned to {target.name} data" if target else "")
+        self.expression(statement.value)
+
+    def _ProcedureCall(self, statement: ast.ProcedureCall) -> None:
+        self.call(statement.name, statement.args, PROCEDURE, None)
+
+    def _LateBindingCall(self, statement: ast.LateBindingCall) -> None:
+        self.expect(statement.name_expr, STRING, "procedure name of a late-bound call")
+        self.expression(statement.name_expr)
+        for arg in statement.args:
+            if arg.value is not None:
+                self.expression(arg.value)
+
+    def _Return(self, statement: ast.Return) -> None:
+        if statement.value is not None:
+            routine = self.routine
+            wanted = TypeInfo(routine.return_type.name.text) if routine.return_type else None
+            self.expect(statement.value, wanted, f"returned by {routine.name.text}")
+            self.expression(statement.value)
+
+    def _Raise(self, statement: ast.Raise) -> None:
+        if statement.value is not None:
+            self.expect(statement.value, TypeInfo("errnum"), "raised as an error number")
+            self.expression(statement.value)
+
+    def _Connect(self, statement: ast.Connect) -> None:
+        self.expect(statement.target, TypeInfo("intnum"), "connected to a trap")
+        self.expression(statement.target)
+        if statement.trap.key not in self.names.routines:
+            self.note(statement.trap, TRAP, "trap of a CONNECT")
+
+    def _If(self, statement: ast.If) -> None:
+        for branch in statement.branches:
+            self.condition(branch.condition, "IF")
+            self.statements(branch.body)
+        self.statements(statement.else_body or ())
+
+    def _CompactIf(self, statement: ast.CompactIf) -> None:
+        self.condition(statement.condition, "IF")
+        self.statements((statement.statement,))
+
+    def _While(self, statement: ast.While) -> None:
+        self.condition(statement.condition, "WHILE")
+        self.statements(statement.body)
+
+    def _For(self, statement: ast.For) -> None:
+        for bound in (statement.start, statement.stop, statement.step):
+            if bound is not None:
+                self.expect(bound, NUM, "FOR bound")
+                self.expression(bound)
+        saved = dict(self.local)
+        self.local[statement.variable.key] = NUM
+        self.statements(statement.body)
+        self.local = saved
+
+    def _Test(self, statement: ast.Test) -> None:
+        values = [v for case in statement.cases for v in case.values]
+        subject = self.type_of(statement.subject) or next(
+            (t for t in map(self.type_of, values) if t is not None), None)
+        self.expect(statement.subject, subject, "TEST subject")
+        self.expression(statement.subject)
+        for case in statement.cases:
+            for value in case.values:
+                self.expect(value, subject, "CASE value")
+                self.expression(value)
+            self.statements(case.body)
+        self.statements(statement.default or ())
+
+    def condition(self, expr, keyword: str) -> None:
+        self.expect(expr, BOOL, f"{keyword} condition")
+        self.expression(expr)
+
+    # ----------------------------------------------------------- expressions
+    def expression(self, expr) -> None:
+        """Note every undeclared name in ``expr`` and what its place says about it."""
+        if isinstance(expr, ast.NameRef):
+            if self.undeclared_data(expr.name):
+                self.note(expr.name, DATA, "read")
+        elif isinstance(expr, ast.Index):
+            if isinstance(expr.base, ast.NameRef) and self.undeclared_data(expr.base.name):
+                self._array_use(self.note(expr.base.name, DATA, "indexed"), expr)
+            else:
+                self.expression(expr.base)
+            for index in expr.indices:
+                self.expect(index, NUM, "array index")
+                self.expression(index)
+        elif isinstance(expr, ast.Component):
+            self._component(expr)
+        elif isinstance(expr, ast.FunctionCall):
+            self.call(expr.name, expr.args, FUNCTION, expr)
+        elif isinstance(expr, ast.Unary):
+            if expr.op == "NOT":
+                self.expect(expr.operand, BOOL, "operand of NOT")
+            self.expression(expr.operand)
+        elif isinstance(expr, ast.Binary):
+            self._binary(expr)
+        elif isinstance(expr, ast.Aggregate):
+            for item in expr.items:
+                self.expression(item)
+
+    def _component(self, expr: ast.Component) -> None:
+        root = expr.base
+        if isinstance(root, ast.NameRef) and self.undeclared_data(root.name):
+            missing = self.note(root.name, DATA, f"component .{expr.name.text} read")
+            if expr.name.text not in missing.components:
+                missing.components.append(expr.name.text)
+                self.changed = True
+        else:
+            self._field(expr, None)
+            self.expression(root)
+
+    def _binary(self, expr: ast.Binary) -> None:
+        if expr.op in LOGICAL:
+            self.expect(expr.left, BOOL, f"operand of {expr.op}")
+            self.expect(expr.right, BOOL, f"operand of {expr.op}")
+        elif expr.op in COMPARISONS or expr.op in ARITHMETIC:
+            left, right = self.type_of(expr.left), self.type_of(expr.right)
+            what = "compared with" if expr.op in COMPARISONS else "combined with"
+            if right is not None:
+                self.expect(expr.left, right, f"{what} {right.name}")
+            if left is not None:
+                self.expect(expr.right, left, f"{what} {left.name}")
+        elif expr.op in ("DIV", "MOD"):
+            self.expect(expr.left, NUM, f"operand of {expr.op}")
+            self.expect(expr.right, NUM, f"operand of {expr.op}")
+        self.expression(expr.left)
+        self.expression(expr.right)
+
+    # ----------------------------------------------------------------- calls
+    def call(self, name: ast.Name, args, use: str, expr) -> None:
+        routine = self.names.routines.get(name.key)
+        entry = None if routine is not None else (
+            registry.lookup_function(name.key) if use == FUNCTION
+            else registry.lookup_procedure(name.key))
+        if routine is not None:
+            self._arguments(name, args, user_parameters(routine))
+        elif entry is not None:
+            self._arguments(name, args, predefined_parameters(entry))
+        elif self.undeclared_routine(name, use):
+            missing = self.note(name, use, "called")
+            self._learn_parameters(missing, args)
+        for arg in args:
+            if arg.value is not None:
+                self.expression(arg.value)
+
+    def _arguments(self, name: ast.Name, args, parameters) -> None:
+        """Match arguments to ``(key, name, type, optional)`` parameters; expect their types."""
+        required = [p for p in parameters if not p[3]]
+        position = 0
+        for arg in args:
+            if arg.value is None:
+                continue
+            if arg.kind == ast.REQUIRED and arg.name is None:
+                spec = required[position] if position < len(required) else None
+                position += 1
+            else:
+                spec = next((p for p in parameters if arg.name and p[0] == arg.name.key), None)
+            if spec is not None:
+                self.expect(arg.value, spec[2], f"{name.text} argument {spec[1]}")
+
+    def _learn_parameters(self, missing: Missing, args) -> None:
+        known = {p.name.upper(): p for p in missing.parameters}
+        position = 0
+        for arg in args:
+            if arg.kind == ast.REQUIRED and arg.name is None:
+                position += 1
+                key, text = f"P{position}", f"p{position}"
+            elif arg.name is not None:
+                key, text = arg.name.key, arg.name.text
+            else:
+                continue
+            info = self.type_of(arg.value) if arg.value is not None else None
+            parameter = known.get(key)
+            if parameter is None:
+                parameter = Parameter(text, info, optional=arg.kind != ast.REQUIRED,
+                                      switch=arg.kind == ast.SWITCH)
+                missing.parameters.append(parameter)
+                known[key] = parameter
+                self.changed = True
+            elif parameter.type is None and info is not None:
+                parameter.type = info.element() if info.rank == 0 else info
+                self.changed = True
+
+
+def user_parameters(routine: ast.Routine) -> list[tuple]:
+    return [(p.name.key, p.name.text, TypeInfo(p.type.name.text, p.array_rank), p.optional)
+            for p in routine.parameters]
+
+
+def predefined_parameters(entry) -> list[tuple]:
+    """Parameters of a predefined routine; a group of required alternatives takes one place."""
+    found, groups = [], set()
+    for spec in entry.signature.parameters:
+        optional = spec.optional
+        if not optional and spec.alternative_group is not None:
+            optional = spec.alternative_group in groups
+            groups.add(spec.alternative_group)
+        found.append((spec.key, spec.name, TypeInfo(spec.type_name, spec.array_rank), optional))
+    return found
+
+
+def missing_names(modules: tuple[ast.Module, ...], signals=frozenset()) -> list[Missing]:
+    """Every undeclared name the modules use, in order of first use, types inferred
+    (``signals``: names of configured I/O signals, which are not missing)."""
+    inference = Inference(modules, signals)
+    _settle(inference, count_uses=True)
+    if _types_from_names(inference):        # the last resort; its types reach other names
+        _settle(inference, count_uses=False)
+    return sorted(inference.missing.values(),
+                  key=lambda m: (m.first_use.file, m.first_use.line, m.first_use.column))
+
+
+def _settle(inference: Inference, count_uses: bool) -> None:
+    """Walk the program until the walk learns nothing new (uses counted on the first)."""
+    for number in range(MAX_PASSES):
+        inference.changed = False
+        inference.counting = count_uses and number == 0
+        inference.walk()
+        if not _types_from_components(inference) and not inference.changed:
+            break
+
+
+def _types_from_components(inference: Inference) -> bool:
+    """A record whose components are read: the first record type that has them all."""
+    changed = False
+    for missing in inference.missing.values():
+        if missing.type is None and missing.components:
+            candidates = inference.names.records_with(missing.components)
+            if candidates:
+                shown = ", ".join("." + c for c in missing.components)
+                changed |= missing.learn(TypeInfo(candidates[0]), f"has components {shown}")
+    return changed
+
+
+# Name prefixes that say the type in controller programs (wobjTable, tool_gun, loadPart);
+# used only when the uses tell nothing, and said so in the written comment.
+NAME_PREFIXES = (("wobj", "wobjdata"), ("tool", "tooldata"), ("load", "loaddata"))
+
+
+def _types_from_names(inference: Inference) -> bool:
+    changed = False
+    for missing in inference.missing.values():
+        if missing.kind != DATA or missing.type is not None:
+            continue
+        for prefix, type_name in NAME_PREFIXES:
+            if missing.name.text.lower().startswith(prefix):
+                changed |= missing.learn(TypeInfo(type_name),
+                                         f"guessed from the name's prefix '{prefix}'")
+                break
+    return changed

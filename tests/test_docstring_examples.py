@@ -1,0 +1,16 @@
+"""The examples in the docstrings of the issue-8 modules run and give what they show."""
+from __future__ import annotations
+
+import doctest
+import importlib
+
+import pytest
+
+MODULES = ["rapidmc.error_report", "rapidmc.syntax.recovery", "rapidmc.stubs",
+           "rapidmc.stubs.inference", "rapidmc.library_doc", "rapidmc.semantics.library.registry"]
+
+
+@pytest.mark.parametrize("name", MODULES)
+def test_docstring_examples(name):
+    result = doctest.testmod(importlib.import_module(name))
+    assert result.failed == 0 and result.attempted > 0
