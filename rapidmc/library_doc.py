@@ -15,6 +15,7 @@ Example::
 """
 from __future__ import annotations
 
+import importlib
 import sys
 from collections import Counter
 from pathlib import Path
@@ -57,7 +58,17 @@ def signature_text(signature: Signature) -> str:
 
 
 def _cell(text: str) -> str:
-    return text.replace("\\", "\\\\").replace("|", "\\|")
+    """Table cell text: a pipe would end the cell (GitHub tables take it escaped, also in code)."""
+    return text.replace("|", "\\|")
+
+
+def topic_summary(topic: str) -> list[str]:
+    """The topic module's docstring (what it holds and how it is modelled), as a paragraph."""
+    module = importlib.import_module(f"rapidmc.semantics.library.{topic}")
+    text = (module.__doc__ or "").split("\n\n")
+    paragraphs = [" ".join(part.split()) for part in text if part.strip()]
+    paragraphs = [p for p in paragraphs if not p.startswith(("Example", ">>>"))]
+    return [line for paragraph in paragraphs for line in (paragraph, "")]
 
 
 def routine_sections(entries) -> list[str]:
@@ -66,8 +77,9 @@ def routine_sections(entries) -> list[str]:
         chosen = sorted((e for e in entries if e.topic == topic), key=lambda e: e.key)
         if not chosen:
             continue
-        lines += ["", f"### {topic.replace('_', ' ')}", "", "| name | kind | signature | modelled |",
-                  "|---|---|---|---|"]
+        lines += ["", f"### {topic.replace('_', ' ')}", ""]
+        lines += topic_summary(topic)
+        lines += ["| name | kind | signature | modelled |", "|---|---|---|---|"]
         for entry in chosen:
             kind = "function" if entry.signature.return_type else "instruction"
             lines.append(f"| {entry.signature.name} | {kind} | "
