@@ -26,6 +26,7 @@ from ..ltl import BACKENDS, read_hoa, to_buchi, to_text
 from ..ltl.syntax import Not
 from ..backup import add_program_arguments, load_tasks, resolve_program_files
 from ..model import RapidDescriber, RapidSystem, replay, with_final_loop
+from .. import reduction
 from ..properties import (AtomCompiler, Property, check_unique, parse_property,
                           read_property_file)
 from ..semantics.link import build
@@ -79,6 +80,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="use this Büchi automaton (HOA) for the NEGATION of property NAME")
     parser.add_argument("--backend", choices=BACKENDS, default=None,
                         help="LTL translator (default: spot when installed, else builtin)")
+    reduction.add_arguments(parser)
 
 
 def _numbers(text: str, option: str) -> tuple[float, ...]:
@@ -148,7 +150,11 @@ def _check(args: argparse.Namespace) -> int:
     config.socket_timeouts = not args.no_socket_timeouts
     if args.file_lines:
         config.file_lines = tuple(args.file_lines)
-    system = RapidSystem(program, config)
+    plan = reduction.plan_reductions(
+        program, config, [atom for _, buchi, _ in jobs for atom in buchi.atoms],
+        [None if prop.name in automata else prop.formula for prop in properties],
+        reduction.from_arguments(args))
+    system = RapidSystem(program, config, plan)
     describer = RapidDescriber(program, config)
     unknown = set(automata) - {p.name for p in properties}
     if unknown:

@@ -125,6 +125,9 @@ class CheckConfig:
                 lazy[signal.index] = (signal.name, domain)
         self.free_inputs = tuple(free)
         self.lazy_inputs = lazy
+        # (routine, pc) -> visible, for instructions that join the step before them
+        # (reduction.merging); empty: one instruction per step
+        self.merge_points: dict = {}
         # every combination of free input values, in the order the chooser enumerates them
         self.input_valuations = tuple(itertools.product(*(d for _, _, d in free)))
         # per valuation: pvector.mset arguments and the label part naming the values
@@ -295,8 +298,49 @@ def step(program: Program, state: State, chooser: Chooser) -> Transition:
         m.io = InputView(m.io, chooser.config.lazy_inputs, m)
         m.lazy_values = {}
     span = execute_step(m)
+    if chooser.check_mode and chooser.config.merge_points and m.status == RUNNING:
+        span = _run_merged(m, chooser.config.merge_points, state.frames, span)
     output = "".join(line + "\n" for line in m.output) if m.output else ""
     return Transition(tuple(m.choices), span, m.to_state(), output, m.waiting)
+
+
+MERGED_STEP_LIMIT = 10_000
+
+
+def _run_merged(m: Machine, points: dict, frames_before: tuple, span):
+    """Go on executing merge points (see ``reduction.merging``) within this transition.
+
+    ``points`` maps (routine, pc) to whether the instruction is visible;
+    at most one visible instruction runs per transition (the first one
+    counts as visible unless it is an invisible merge point).  Returns the
+    span of the step, or the tuple of every span executed when more than
+    one instruction ran.  Stops at anything but a merge point, before an
+    instruction executed already in this step, and as soon as the program
+    waits, stops, raises, or has interrupts or tasks.
+    """
+    frame = frames_before[-1] if frames_before else None
+    visited = {(len(frames_before), frame[0], frame[1])} if frame is not None else set()
+    seen_visible = frame is None or points.get((frame[0], frame[1]), True)
+    spans = [span]
+    errno = m.errno
+    while len(spans) < MERGED_STEP_LIMIT:
+        if m.status != RUNNING or m.waiting or m.tasks or m.errno != errno or not m.frames:
+            break
+        interrupts = m.interrupts
+        if interrupts.table or interrupts.pending or interrupts.scheduled:
+            break
+        frame = m.frames[-1]
+        point = (frame[0], frame[1])
+        visible = points.get(point)
+        where = (len(m.frames),) + point
+        if visible is None or frame[3] != 0 or where in visited or (visible and seen_visible):
+            break
+        seen_visible = seen_visible or visible
+        visited.add(where)
+        if m.lazy_values is not None:
+            m.lazy_values = {}               # each instruction reads inputs afresh
+        spans.append(run_instruction(m))
+    return spans[0] if len(spans) == 1 else tuple(spans)
 
 
 def execute_step(m: Machine):
