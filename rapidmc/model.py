@@ -50,6 +50,15 @@ class RapidSystem:
         # successors kept for the next searches (one per property) over the same program
         self._shared: dict[State, list] = {}
 
+    @staticmethod
+    def split_state(state: State) -> tuple:
+        """The parts stored separately (``check.states``): call stacks, data, signals, rest."""
+        return (state[0], state[1], state[2], state[3:])
+
+    @staticmethod
+    def join_state(parts: tuple) -> State:
+        return State(parts[0], parts[1], parts[2], *parts[3])
+
     def unreduced(self) -> "RapidSystem":
         """The same program and configuration without reductions."""
         if not self.plan.active:

@@ -123,7 +123,7 @@ def test_statistics_variant_without_slicing_is_bounded(tmp_path):
     assert verdict == UNKNOWN
 
 
-@pytest.mark.parametrize("flags, states", [((), 259), (("--no-merge",), 451),
+@pytest.mark.parametrize("flags, states", [((), 195), (("--no-merge",), 451),
                                            (("--no-reduce",), 451)])
 def test_merged_steps_store_fewer_states(tmp_path, flags, states):
     formula = 'bounded: G ("c0 < 4" & "c1 < 4" & "c2 < 4")'

@@ -18,6 +18,7 @@ from typing import Callable, Hashable, Optional
 from .budget import DEFAULT_MAX_STATES, SearchBudget
 from .model import TransitionSystem, as_sequence
 from .progress import Progress
+from .states import StateTable
 from .result import (HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep,
                      SearchResult, SearchStats)
 
@@ -48,28 +49,31 @@ class _BreadthFirst:
         self.predicate = predicate
         self.budget = budget
         self.deadlock_is_target = deadlock_is_target
-        self.ids: dict[Hashable, int] = {}
-        self.states: list[Hashable] = []
-        self.parent = array("q")          # by id; -1 for initial states
-        self.depth = array("l")
+        self.states = StateTable(system)
+        self.parent = array("i")          # by id; -1 for initial states
+        self.depth = array("i")
         self.transitions = 0
         self.deadlocks = 0
 
     def stats(self) -> SearchStats:
         depth = max(self.depth) + 1 if self.depth else 0
-        return SearchStats(product_states=len(self.states), model_states=len(self.states),
+        stored = len(self.states)
+        memory = self.states.memory_bytes() + len(self.parent) * self.parent.itemsize + \
+            len(self.depth) * self.depth.itemsize
+        return SearchStats(product_states=stored, model_states=stored,
                            transitions=self.transitions, max_depth=depth,
-                           deadlocks=self.deadlocks)
+                           deadlocks=self.deadlocks,
+                           bytes_per_state=memory / stored if stored else 0.0)
 
     def _store(self, state: Hashable, parent: int) -> Optional[int]:
         """The new id, or None when the state is known or the budget is spent."""
-        if state in self.ids:
+        known, new = self.states.intern(state, add=False)
+        if not new:
             return None
         stored = len(self.states)
         if not self.budget.may_store(stored):
             return None
-        self.ids[state] = stored
-        self.states.append(state)
+        self.states.intern(state)
         self.parent.append(parent)
         self.depth.append(self.depth[parent] + 1 if parent >= 0 else 0)
         if stored >= self.budget.next_checkpoint:

@@ -55,12 +55,17 @@ def merging_allowed(program: Program, formulas: Iterable, atom_keys: set[str],
     return not any(_has_next(formula) for formula in formulas)
 
 
-def merge_points(program: Program, atom_keys: set[str]) -> dict:
-    """(routine index, pc) -> visible, for every instruction that may join the step before.
+INVISIBLE, VISIBLE, LOOP_HEAD = 0, 1, 2
 
-    Visible points (assignments to data an atom names) may join a step that
-    has executed no visible instruction yet; loop heads (targets of a jump
-    backwards) never join, so a merged step never runs around a loop.
+
+def merge_points(program: Program, atom_keys: set[str]) -> dict:
+    """(routine index, pc) -> INVISIBLE, VISIBLE or LOOP_HEAD for instructions that merge.
+
+    INVISIBLE and VISIBLE points may join the step before them; visible
+    ones (assignments to data an atom names) only a step that has executed
+    no visible instruction yet.  Loop heads (targets of a jump backwards)
+    never join, so a merged step never runs around a loop, but an
+    invisible loop head that starts a step does not count as visible.
     """
     points = {}
     for routine in program.routines:
@@ -70,8 +75,14 @@ def merge_points(program: Program, atom_keys: set[str]) -> dict:
         heads = _loop_heads(routine.code)
         for pc, instruction in enumerate(routine.code):
             node = nodes.get(instruction.span)
-            if pc not in heads and _mergeable(instruction, node):
-                points[(routine.index, pc)] = _visible(node, atom_keys)
+            if not _mergeable(instruction, node):
+                continue
+            visible = _visible(node, atom_keys)
+            if pc in heads:
+                if not visible:
+                    points[(routine.index, pc)] = LOOP_HEAD
+            else:
+                points[(routine.index, pc)] = VISIBLE if visible else INVISIBLE
     return points
 
 

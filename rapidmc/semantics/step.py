@@ -310,9 +310,12 @@ MERGED_STEP_LIMIT = 10_000
 def _run_merged(m: Machine, points: dict, frames_before: tuple, span):
     """Go on executing merge points (see ``reduction.merging``) within this transition.
 
-    ``points`` maps (routine, pc) to whether the instruction is visible;
-    at most one visible instruction runs per transition (the first one
-    counts as visible unless it is an invisible merge point).  Returns the
+    ``points`` maps (routine, pc) to 0 (invisible), 1 (visible) or 2
+    (invisible but never joins: a loop head); at most one visible
+    instruction runs per transition (the first one counts as visible
+    unless it is marked 0 or 2), and no
+    instruction that may read a signal joins once a choice was made (each
+    combination of choices re-runs the whole transition).  Returns the
     span of the step, or the tuple of every span executed when more than
     one instruction ran.  Stops at anything but a merge point, before an
     instruction executed already in this step, and as soon as the program
@@ -320,7 +323,7 @@ def _run_merged(m: Machine, points: dict, frames_before: tuple, span):
     """
     frame = frames_before[-1] if frames_before else None
     visited = {(len(frames_before), frame[0], frame[1])} if frame is not None else set()
-    seen_visible = frame is None or points.get((frame[0], frame[1]), True)
+    seen_visible = frame is None or points.get((frame[0], frame[1]), 1) == 1
     spans = [span]
     errno = m.errno
     while len(spans) < MERGED_STEP_LIMIT:
@@ -331,16 +334,22 @@ def _run_merged(m: Machine, points: dict, frames_before: tuple, span):
             break
         frame = m.frames[-1]
         point = (frame[0], frame[1])
-        visible = points.get(point)
+        kind = points.get(point, 2)
         where = (len(m.frames),) + point
-        if visible is None or frame[3] != 0 or where in visited or (visible and seen_visible):
+        if kind == 2 or frame[3] != 0 or where in visited or (kind == 1 and seen_visible):
             break
-        seen_visible = seen_visible or visible
+        if m.choices and _reads_io(m, frame):
+            break                            # one choice point per transition (as in SPIN)
+        seen_visible = seen_visible or kind == 1
         visited.add(where)
         if m.lazy_values is not None:
             m.lazy_values = {}               # each instruction reads inputs afresh
         spans.append(run_instruction(m))
     return spans[0] if len(spans) == 1 else tuple(spans)
+
+
+def _reads_io(m: Machine, frame) -> bool:
+    return m.program.routines[frame[0]].code[frame[1]].reads_io
 
 
 def execute_step(m: Machine):
