@@ -12,6 +12,8 @@ from __future__ import annotations
 import copy
 from typing import Hashable, Mapping, Optional
 
+from pyrsistent import pvector
+
 from .check import TransitionInfo
 from .check.result import LassoStep, SearchResult
 from .diagnostics import TRACE_REPLAY, SourceCache, error
@@ -52,12 +54,15 @@ class RapidSystem:
 
     @staticmethod
     def split_state(state: State) -> tuple:
-        """The parts stored separately (``check.states``): call stacks, data, signals, rest."""
-        return (state[0], state[1], state[2], state[3:])
+        """The parts stored separately (``check.states``): the call stack, global data and
+        signals (as tuples: smaller than persistent vectors), robot, interrupts, and the
+        rest (ERRNO ... further tasks)."""
+        return (state[0], tuple(state[1]), tuple(state[2]), state[3], state[4], state[5:])
 
     @staticmethod
     def join_state(parts: tuple) -> State:
-        return State(parts[0], parts[1], parts[2], *parts[3])
+        return State(parts[0], pvector(parts[1]), pvector(parts[2]), parts[3], parts[4],
+                     *parts[5])
 
     def unreduced(self) -> "RapidSystem":
         """The same program and configuration without reductions."""

@@ -11,7 +11,7 @@ again).  Every product state is expanded exactly once, and a violation is
 found as soon as the cycle's last edge is seen (unlike nested DFS, which
 may need a second pass).
 
-Memory per stored product state: eight bytes in ``number`` (an array
+Memory per stored product state: four bytes in ``number`` (an array
 indexed by product key: model state ids are dense, so product keys are
 too), one byte in ``dead`` and, while live, one slot in ``active``.  No
 Python recursion: the DFS path is kept in three parallel lists.
@@ -28,7 +28,7 @@ from .lasso import build_lasso
 from .product import Product
 from .result import HOLDS, UNKNOWN, VIOLATED, SearchResult, SearchStats
 
-UNSEEN = array("q", [-1])
+UNSEEN = array("i", [-1])
 
 
 def search_accepting_cycle(product: Product, budget: SearchBudget) -> SearchResult:
@@ -51,7 +51,7 @@ class _CycleSearch:
     def __init__(self, product: Product, budget: SearchBudget):
         self.product = product
         self.budget = budget
-        self.number = array("q")              # product key -> discovery number, -1: unseen
+        self.number = array("i")              # product key -> discovery number, -1: unseen
         self.dead = bytearray()               # by number: 1 once its component is complete
         self.active = array("q")              # numbers of live states, discovery order
         self.roots = array("q")               # numbers of component roots on the path

@@ -3,9 +3,11 @@
 A model may split its states into a few components (``split_state`` and
 ``join_state``; a RAPID state: call stacks, global data, signals, the
 rest).  Each distinct component is stored once, in a table of its own,
-and a state becomes the fixed-width tuple of its component ids (SPIN's
-collapse compression): states that share their data but not their
-program counter share the stored data.  The ids of all states lie in one
+and a state becomes the tuple of its component ids (SPIN's collapse
+compression): states that share their data but not their program counter
+share the stored data.  The first ``PRIMARY`` components (a model lists
+the most varying first) keep an id each; the ids of the others, which
+rarely change, are interned once more as one tail id.  The ids of all states lie in one
 ``array`` (``width`` ints per state) and the index from key to state id is
 an open-addressing hash table in another ``array``, so a stored state
 costs a few dozen bytes instead of a Python tuple, a dict entry and an
@@ -23,6 +25,8 @@ from typing import Hashable
 
 EMPTY = -1
 FIRST_CAPACITY = 1 << 10
+IDENTITY_LIMIT = 1 << 10
+PRIMARY = 2          # components with an id per state; the others share one tail id
 
 
 class StateTable:
@@ -36,7 +40,10 @@ class StateTable:
         self._width = 0
         self._components: list[dict] = []
         self._values: list[list] = []
-        self._component_bytes = 0
+        self._identity: list[dict] = []        # per component: id() of a stored part -> its id
+        self._scalars: dict = {}               # one object per distinct float or string
+        self._tails: dict[tuple, int] = {}     # ids of the components after PRIMARY -> tail id
+        self._tail_values: list[tuple] = []
         self._ids = array("i")                 # width component ids per state
         self._slots = array("i", [EMPTY]) * FIRST_CAPACITY
         self._count = 0
@@ -57,16 +64,22 @@ class StateTable:
             self._whole_states.append(state)
             self._count += 1
             return state_id, True
-        key = self._component_ids(self._split(state))
-        return self._find_or_add(key, add)
+        parts = self._component_ids(self._split(state))
+        tail = parts[PRIMARY:]
+        tail_id = self._tails.get(tail)
+        if tail_id is None:
+            tail_id = self._tails[tail] = len(self._tail_values)
+            self._tail_values.append(tail)
+        return self._find_or_add(parts[:PRIMARY] + (tail_id,), add)
 
     def __getitem__(self, state_id: int) -> Hashable:
         if self._split is None:
             return self._whole_states[state_id]
-        width = self._width
-        base = state_id * width
         ids = self._ids
-        return self._join(tuple(self._values[i][ids[base + i]] for i in range(width)))
+        base = state_id * (PRIMARY + 1)
+        parts = tuple(ids[base:base + PRIMARY]) + self._tail_values[ids[base + PRIMARY]]
+        values = self._values
+        return self._join(tuple(values[i][part] for i, part in enumerate(parts)))
 
     # -------------------------------------------------------------- internals
     def _component_ids(self, parts: tuple) -> tuple:
@@ -74,18 +87,34 @@ class StateTable:
             self._width = len(parts)
             self._components = [{} for _ in parts]
             self._values = [[] for _ in parts]
+            self._identity = [{} for _ in parts]
         ids = []
-        for table, values, part in zip(self._components, self._values, parts):
-            part_id = table.get(part)
-            if part_id is None:
-                part_id = table[part] = len(values)
-                values.append(part)
-                self._component_bytes += _size(part)
+        for table, values, identity, part in zip(self._components, self._values, self._identity,
+                                                 parts):
+            # a part passed on unchanged from a stored state is that very object:
+            # found by identity, without hashing its contents
+            part_id = identity.get(id(part), -1)
+            if part_id < 0 or values[part_id] is not part:
+                part_id = table.get(part)
+                if part_id is None:
+                    part = self._shared_scalars(part)
+                    part_id = table[part] = len(values)
+                    values.append(part)
+                    if part_id < IDENTITY_LIMIT:   # parts that rarely change: signals, robot
+                        identity[id(part)] = part_id
             ids.append(part_id)
         return tuple(ids)
 
+    def _shared_scalars(self, part):
+        """A tuple part whose numbers and strings are the objects other parts hold already."""
+        if type(part) is not tuple:
+            return part
+        scalars = self._scalars
+        return tuple(scalars.setdefault(x, x) if type(x) is float or type(x) is str else x
+                     for x in part)
+
     def _find_or_add(self, key: tuple, add: bool) -> tuple[int, bool]:
-        slots, ids, width = self._slots, self._ids, self._width
+        slots, ids, width = self._slots, self._ids, PRIMARY + 1
         mask = len(slots) - 1
         position = hash(key) & mask
         while True:
@@ -109,7 +138,7 @@ class StateTable:
     def _grow(self) -> None:
         slots = array("i", [EMPTY]) * (len(self._slots) * 2)
         mask = len(slots) - 1
-        ids, width = self._ids, self._width
+        ids, width = self._ids, PRIMARY + 1
         for state_id in range(self._count):
             base = state_id * width
             position = hash(tuple(ids[base:base + width])) & mask
@@ -125,10 +154,23 @@ class StateTable:
             return sys.getsizeof(self._whole) + sys.getsizeof(self._whole_states) + \
                 sum(_size(state) for state in self._whole_states)
         tables = sum(sys.getsizeof(t) + sys.getsizeof(v)
-                     for t, v in zip(self._components, self._values))
+                     for t, v in zip(self._components, self._values)) + \
+            sum(sys.getsizeof(i) for i in self._identity) + sys.getsizeof(self._scalars) + \
+            sys.getsizeof(self._tails) + sum(_size(t) for t in self._tail_values) + \
+            sum(sys.getsizeof(x) for x in self._scalars)
+        components = sum(_component_size(value) for values in self._values for value in values)
         return (self._ids.buffer_info()[1] * self._ids.itemsize +
                 self._slots.buffer_info()[1] * self._slots.itemsize +
-                tables + self._component_bytes)
+                tables + components)
+
+
+def _component_size(part) -> int:
+    """Bytes of a stored component; its own numbers and strings are in the shared table."""
+    if type(part) is not tuple:
+        return _size(part)
+    seen: set = set()
+    return sys.getsizeof(part) + sum(_size(x, seen) for x in part
+                                     if type(x) is not float and type(x) is not str)
 
 
 def _size(value, seen: set | None = None) -> int:

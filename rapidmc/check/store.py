@@ -27,7 +27,7 @@ class ModelStore:
         self.system = system
         self.valuation = valuation
         self.states = StateTable(system)
-        self.valuations = array("q")
+        self.valuations = array("I")
         self.deadlocked: set[int] = set()
         self._successor_cache: dict[int, tuple[int, ...]] = {}
 
@@ -41,7 +41,7 @@ class ModelStore:
             valuation = self.valuation(state)
             try:
                 self.valuations.append(valuation)
-            except OverflowError:            # more than 63 atoms: Python ints
+            except OverflowError:            # more than 32 atoms: Python ints
                 self.valuations = list(self.valuations) + [valuation]
         return state_id
 
