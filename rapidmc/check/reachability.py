@@ -18,6 +18,7 @@ from typing import Callable, Hashable, Optional
 from .budget import DEFAULT_MAX_STATES, SearchBudget
 from .model import TransitionSystem, as_sequence
 from .progress import Progress
+from .hashed import hashed_reachable, visited_sets
 from .states import StateTable
 from .result import (HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep,
                      SearchResult, SearchStats)
@@ -27,9 +28,15 @@ def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], boo
                    max_states: Optional[int] = DEFAULT_MAX_STATES,
                    max_seconds: Optional[float] = None,
                    progress: Optional[Progress] = None,
-                   deadlock_is_target: bool = False) -> SearchResult:
-    """Shortest path to a state where ``predicate`` holds; see the module docstring."""
+                   deadlock_is_target: bool = False,
+                   storage: Optional[tuple] = None) -> SearchResult:
+    """Shortest path to a state where ``predicate`` holds; see the module docstring.
+
+    ``storage`` (``check_property``): hashed visited states, depth-first, no shortest path.
+    """
     budget = SearchBudget(max_states, max_seconds, progress)
+    if storage is not None:
+        return hashed_reachable(system, predicate, visited_sets(storage, 1)[0], budget)
     search = _BreadthFirst(system, predicate, budget, deadlock_is_target)
     target = search.run()
     stats = search.stats()

@@ -32,6 +32,7 @@ from ..properties import (AtomCompiler, Property, check_unique, parse_property,
 from ..semantics.link import build
 from ..semantics.step import CheckConfig, EnvironmentFault
 from ..syntax import load_program
+from . import storage_options
 from .quoting import one_line, quoted, routine_name
 
 DEFAULT_MAX_STATES = 1_000_000
@@ -81,6 +82,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--backend", choices=BACKENDS, default=None,
                         help="LTL translator (default: spot when installed, else builtin)")
     reduction.add_arguments(parser)
+    storage_options.add_arguments(parser)
 
 
 def _numbers(text: str, option: str) -> tuple[float, ...]:
@@ -160,7 +162,8 @@ def _check(args: argparse.Namespace) -> int:
     if unknown:
         raise error(USAGE, f"--automaton names no property: "
                     f"{', '.join(quoted(name) for name in sorted(unknown))}")
-    bounds = dict(max_states=args.max_states, max_seconds=args.max_seconds)
+    bounds = dict(max_states=args.max_states, max_seconds=args.max_seconds,
+                  storage=storage_options.storage_from_arguments(args))
     results = []
     try:
         results.append(_builtin(system, BUILTIN_RUNTIME, "no reachable uncaught run-time error",
