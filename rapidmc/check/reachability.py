@@ -74,13 +74,14 @@ class _BreadthFirst:
 
     def _store(self, state: Hashable, parent: int) -> Optional[int]:
         """The new id, or None when the state is known or the budget is spent."""
-        known, new = self.states.intern(state, add=False)
+        stored = len(self.states)
+        room = stored < self.budget.max_states
+        _, new = self.states.intern(state, add=room)
         if not new:
             return None
-        stored = len(self.states)
-        if not self.budget.may_store(stored):
+        if not room:
+            self.budget.may_store(stored)     # sets the reason: the state limit is reached
             return None
-        self.states.intern(state)
         self.parent.append(parent)
         self.depth.append(self.depth[parent] + 1 if parent >= 0 else 0)
         if stored >= self.budget.next_checkpoint:
