@@ -42,6 +42,7 @@ def random_program(seed: int) -> str:
     target := (target + amount) MOD 3;
   ENDPROC
   PROC main()
+    VAR num tmp := 0;
 {aliases}
     WHILE TRUE DO
 {loop}
@@ -71,12 +72,12 @@ def _condition(rng: random.Random) -> str:
         return f"{rng.choice(COUNTERS)} {rng.choice(('<', '=', '>'))} {rng.randint(0, 2)}"
     if choice == 3:
         return f"NOT {rng.choice(FLAGS)} AND {rng.choice(INPUTS)} = 0"
-    return f"scratch > {rng.randint(0, 2)}"
+    return f"{rng.choice(('scratch', 'tmp'))} > {rng.randint(0, 2)}"
 
 
 def _simple(rng: random.Random) -> str:
     counter = rng.choice(COUNTERS)
-    choice = rng.randrange(9)
+    choice = rng.randrange(10)
     if choice == 0:
         return f"{counter} := ({counter} + 1) MOD {rng.randint(2, 3)};"
     if choice == 1:
@@ -93,6 +94,8 @@ def _simple(rng: random.Random) -> str:
         return f"{counter} := 0;"
     if choice == 7:
         return f'lastLog := lastLog + "x";'
+    if choice == 8:
+        return f"tmp := {counter} + 1;"
     return f"{rng.choice(FLAGS)} := NOT {rng.choice(FLAGS)};"
 
 

@@ -221,3 +221,34 @@ ENDMODULE
     expr = parse_text(f"MODULE E\n  PROC p()\n    TPWrite {expression} ;\n  ENDPROC\nENDMODULE\n",
                  "e.mod")[0].routines[0].body[0].args[0].value
     assert Totality(lambda name: routine.scope.lookup(name.key)).total(expr) == total
+
+
+DEAD_LOCAL = """MODULE M
+  VAR num x := 0;
+  PROC main()
+    VAR num t := 0;
+    WHILE TRUE DO
+      t := x + 1;
+      x := t MOD 3;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+"""
+
+
+@pytest.mark.parametrize("flags, states", [(("--no-merge",), 9), (("--no-merge", "--no-dead"), 11),
+                                           ((), 3), (("--no-dead",), 4)])
+def test_dead_values_are_reset(tmp_path, flags, states):
+    # t is written before it is read at the WHILE test: its old value is forgotten there
+    assert states_of(tmp_path, DEAD_LOCAL, 'P: G "x < 3"', *flags) == ("HOLDS", states)
+
+
+def test_liveness_of_a_local_along_the_loop():
+    from rapidmc.reduction.liveness import DeadData
+    program = linked(DEAD_LOCAL)
+    dead = DeadData(program, {"X"})
+    main = program.routines[program.entry]
+    t_slot = main.local_names.index("t")
+    lines = {pc: instruction.span.line for pc, instruction in enumerate(main.code)}
+    dead_at = {lines[pc] for pc, slots in enumerate(dead.locals[main.index]) if t_slot in slots}
+    assert dead_at == {5, 6, 9}          # the WHILE test, t := ..., ENDPROC

@@ -1,8 +1,11 @@
-"""State-space reductions that keep every verdict: sliced data and merged steps.
+"""State-space reductions that keep every verdict: sliced data, dead data, merged steps.
 
 * ``relevance`` / ``totality``: which data can influence anything a check
   observes (cone of influence); the rest is *sliced*.
-* ``projection``: sliced data reset in every stored state.
+* ``liveness``: data that will be written before it is read (*dead*), per
+  program point.
+* ``projection``: sliced data reset in every stored state, dead data where
+  it is dead.
 * ``merging``: instructions that may run in the same transition as the one
   before (statement merging).
 * ``expansion``: a counterexample of the reduced model re-executed on the
@@ -19,6 +22,7 @@ from typing import Iterable, Optional
 
 from ..semantics.program import Program
 from .merging import merge_points, merging_allowed
+from .liveness import DeadData
 from .projection import Projection
 from .relevance import NO_SLICING, Slicing, atom_keys_of, find_slicing
 
@@ -28,16 +32,12 @@ class Reductions:
     """Which reductions a check may use (all by default)."""
 
     slice_data: bool = True
+    dead_data: bool = True
     merge_steps: bool = True
-
-    def describe(self) -> str:
-        names = [name for name, on in (("slice", self.slice_data), ("merge", self.merge_steps))
-                 if on]
-        return "+".join(names) or "none"
 
 
 ALL = Reductions()
-NONE = Reductions(slice_data=False, merge_steps=False)
+NONE = Reductions(slice_data=False, dead_data=False, merge_steps=False)
 
 
 @dataclass(frozen=True)
@@ -68,7 +68,10 @@ def plan_reductions(program: Program, config, atoms: Iterable[str],
     atoms = tuple(atoms)
     keys = atom_keys_of(atoms)
     slicing = find_slicing(program, atoms) if reductions.slice_data else NO_SLICING
-    projection = Projection(program, slicing) if not slicing.empty else None
+    dead = DeadData(program, keys) if reductions.dead_data else None
+    if dead is not None and dead.empty:
+        dead = None
+    projection = Projection(program, slicing, dead) if not slicing.empty or dead else None
     points: dict = {}
     formulas = list(formulas)
     if reductions.merge_steps and None not in formulas and \
@@ -84,6 +87,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                        help="explore the program as written: no sliced data, no merged steps")
     group.add_argument("--no-slice", action="store_true",
                        help="keep data that nothing observable depends on in every state")
+    group.add_argument("--no-dead", action="store_true",
+                       help="keep values that will be written before they are read")
     group.add_argument("--no-merge", action="store_true",
                        help="one transition per instruction (no merged steps)")
 
@@ -92,4 +97,5 @@ def from_arguments(args: argparse.Namespace) -> Reductions:
     if getattr(args, "no_reduce", False):
         return NONE
     return Reductions(slice_data=not getattr(args, "no_slice", False),
+                      dead_data=not getattr(args, "no_dead", False),
                       merge_steps=not getattr(args, "no_merge", False))

@@ -71,7 +71,7 @@ def merge_points(program: Program, atom_keys: set[str]) -> dict:
     for routine in program.routines:
         if routine.ast is None:
             continue
-        nodes = _nodes_by_span(routine.ast)
+        nodes = nodes_by_span(routine.ast)
         heads = _loop_heads(routine.code)
         for pc, instruction in enumerate(routine.code):
             node = nodes.get(instruction.span)
@@ -159,7 +159,7 @@ def _walk(node) -> Iterator:
             yield from _walk(getattr(node, field))
 
 
-def _nodes_by_span(decl: ast.Routine) -> dict:
+def nodes_by_span(decl: ast.Routine) -> dict:
     """Statement-like nodes of a routine by span: the first one wins (outermost)."""
     nodes: dict = {}
     for node in _walk((decl.body, decl.error, decl.undo, decl.backward)):

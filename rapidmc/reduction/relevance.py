@@ -77,10 +77,10 @@ def find_slicing(program: Program, atom_texts: Iterable[str] = ()) -> Slicing:
     sliced_globals = tuple(
         data.slot for data in program.globals
         if ("G", data.slot) not in relevant and data.key not in atom_keys
-        and data.namespace != ENVIRONMENT_NAMESPACE and _is_value(data.type))
+        and data.namespace != ENVIRONMENT_NAMESPACE and is_value(data.type))
     sliced_locals = {}
     for routine in program.routines:
-        slots = tuple(slot for slot in analysis.routine_data(routine)
+        slots = tuple(slot for slot in routine_data(routine)
                       if ("L", routine.index, slot) not in relevant
                       and routine.local_names[slot].upper() not in atom_keys)
         if slots:
@@ -88,10 +88,50 @@ def find_slicing(program: Program, atom_texts: Iterable[str] = ()) -> Slicing:
     return Slicing(sliced_globals, sliced_locals)
 
 
-def _is_value(rapid_type) -> bool:
+def is_value(rapid_type) -> bool:
     if isinstance(rapid_type, ArrayType):
         rapid_type = rapid_type.element
     return isinstance(rapid_type, RapidType) and rapid_type.is_value
+
+
+def routine_data(routine) -> list[int]:
+    """Local slots that may be reset: routine VAR data (not parameters, FOR, temporaries)."""
+    decl: ast.Routine = routine.ast
+    slots = []
+    for data in decl.data:
+        symbol = routine.scope.names.get(data.name.key)
+        if symbol is not None and symbol.kind == LOCAL_DATA and symbol.storage == "VAR" \
+                and is_value(symbol.type):
+            slots.append(symbol.slot)
+    return slots
+
+
+class Resolver:
+    """Data keys of the names written in one routine, resolved as the linker does."""
+
+    def __init__(self, routine):
+        self.routine = routine
+
+    def symbol(self, name: ast.Name) -> Optional[Symbol]:
+        return self.routine.scope.lookup(name.key)
+
+    def key(self, name: ast.Name) -> Optional[Key]:
+        symbol = self.symbol(name)
+        if symbol is None:
+            return None
+        if symbol.kind == GLOBAL_DATA:
+            return ("G", symbol.slot)
+        if symbol.kind == LOCAL_DATA:
+            return ("L", self.routine.index, symbol.slot)
+        return None
+
+    def keys(self, node) -> set:
+        """Every data key ``node`` reads or passes."""
+        return {key for key in map(self.key, _names(node)) if key is not None}
+
+    def by_reference(self, name: ast.Name) -> bool:
+        symbol = self.symbol(name)
+        return symbol is None or symbol.by_reference or symbol.optional
 
 
 class _Analysis:
@@ -110,6 +150,7 @@ class _Analysis:
             if routine.ast is None or getattr(routine, "scope", None) is None:
                 return False
             self.routine = routine
+            self.resolver = Resolver(routine)
             self.totality = Totality(self.symbol)
             decl: ast.Routine = routine.ast
             for data in decl.data:
@@ -137,30 +178,12 @@ class _Analysis:
                     work.append(source)
         return relevant
 
-    def routine_data(self, routine) -> list[int]:
-        """Local slots that may be sliced: routine data (not parameters, FOR, temporaries)."""
-        decl: ast.Routine = routine.ast
-        slots = []
-        for data in decl.data:
-            symbol = routine.scope.names.get(data.name.key)
-            if symbol is not None and symbol.kind == LOCAL_DATA and symbol.storage == "VAR" \
-                    and _is_value(symbol.type):
-                slots.append(symbol.slot)
-        return slots
-
     # -------------------------------------------------------------- names
     def symbol(self, name: ast.Name) -> Optional[Symbol]:
-        return self.routine.scope.lookup(name.key)
+        return self.resolver.symbol(name)
 
     def key(self, name: ast.Name) -> Optional[Key]:
-        symbol = self.symbol(name)
-        if symbol is None:
-            return None
-        if symbol.kind == GLOBAL_DATA:
-            return ("G", symbol.slot)
-        if symbol.kind == LOCAL_DATA:
-            return ("L", self.routine.index, symbol.slot)
-        return None
+        return self.resolver.key(name)
 
     def keys_read(self, node) -> Iterator[Key]:
         for name in _names(node):
