@@ -78,9 +78,10 @@ class RapidSystem:
         return states if project is None else list(dict.fromkeys(map(project, states)))
 
     def successors(self, state: State) -> list[tuple[Hashable, State]]:
-        cached = self._shared.get(state)
-        if cached is not None:
-            return cached
+        if self._shared:                 # (hashing a whole state is not free)
+            cached = self._shared.get(state)
+            if cached is not None:
+                return cached
         transitions = successors(self.program, state, self.config)
         project = self.project
         if project is None:

@@ -27,6 +27,7 @@ EMPTY = -1
 FIRST_CAPACITY = 1 << 10
 IDENTITY_LIMIT = 1 << 10
 PRIMARY = 2          # components with an id per state; the others share one tail id
+                     # (a stored state: 3 ids, see _find_or_add)
 
 
 class StateTable:
@@ -70,7 +71,7 @@ class StateTable:
         if tail_id is None:
             tail_id = self._tails[tail] = len(self._tail_values)
             self._tail_values.append(tail)
-        return self._find_or_add(parts[:PRIMARY] + (tail_id,), add)
+        return self._find_or_add(parts[0], parts[1], tail_id, add)
 
     def __getitem__(self, state_id: int) -> Hashable:
         if self._split is None:
@@ -113,23 +114,26 @@ class StateTable:
         return tuple(scalars.setdefault(x, x) if type(x) is float or type(x) is str else x
                      for x in part)
 
-    def _find_or_add(self, key: tuple, add: bool) -> tuple[int, bool]:
-        slots, ids, width = self._slots, self._ids, PRIMARY + 1
+    def _find_or_add(self, first: int, second: int, tail: int,
+                     add: bool) -> tuple[int, bool]:
+        slots, ids = self._slots, self._ids
         mask = len(slots) - 1
-        position = hash(key) & mask
+        position = hash((first, second, tail)) & mask
         while True:
             state_id = slots[position]
             if state_id == EMPTY:
                 break
-            base = state_id * width
-            if tuple(ids[base:base + width]) == key:
+            base = state_id * 3
+            if ids[base] == first and ids[base + 1] == second and ids[base + 2] == tail:
                 return state_id, False
             position = (position + 1) & mask
         if not add:
             return EMPTY, True
         state_id = self._count
         slots[position] = state_id
-        ids.extend(key)
+        ids.append(first)
+        ids.append(second)
+        ids.append(tail)
         self._count += 1
         if self._count * 2 > len(slots):
             self._grow()
