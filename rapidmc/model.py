@@ -54,15 +54,15 @@ class RapidSystem:
 
     @staticmethod
     def split_state(state: State) -> tuple:
-        """The parts stored separately (``check.states``): the call stack, global data and
-        signals (as tuples: smaller than persistent vectors), robot, interrupts, and the
-        rest (ERRNO ... further tasks)."""
-        return (state[0], tuple(state[1]), tuple(state[2]), state[3], state[4], state[5:])
+        """The parts stored separately (``check.states``): the call stack, global data (as
+        a tuple: smaller than a persistent vector), signals, robot, interrupts, and the rest
+        (ERRNO ... further tasks).  Signals stay a vector: they rarely change, and a vector
+        handed on unchanged is found by identity."""
+        return (state[0], tuple(state[1]), state[2], state[3], state[4], state[5:])
 
     @staticmethod
     def join_state(parts: tuple) -> State:
-        return State(parts[0], pvector(parts[1]), pvector(parts[2]), parts[3], parts[4],
-                     *parts[5])
+        return State(parts[0], pvector(parts[1]), *parts[2:5], *parts[5])
 
     def unreduced(self) -> "RapidSystem":
         """The same program and configuration without reductions."""

@@ -326,19 +326,22 @@ def _run_merged(m: Machine, points: dict, frames_before: tuple, span):
     seen_visible = frame is None or points.get((frame[0], frame[1]), 1) == 1
     spans = [span]
     errno = m.errno
+    routines = m.program.routines
     while len(spans) < MERGED_STEP_LIMIT:
-        if m.status != RUNNING or m.waiting or m.tasks or m.errno != errno or not m.frames:
+        frames = m.frames
+        if m.status != RUNNING or m.waiting or m.tasks or m.errno != errno or not frames:
             break
         interrupts = m.interrupts
         if interrupts.table or interrupts.pending or interrupts.scheduled:
             break
-        frame = m.frames[-1]
-        point = (frame[0], frame[1])
-        kind = points.get(point, 2)
-        where = (len(m.frames),) + point
-        if kind == 2 or frame[3] != 0 or where in visited or (kind == 1 and seen_visible):
+        frame = frames[-1]
+        kind = points.get((frame[0], frame[1]), 2)
+        if kind == 2 or frame[3] != 0 or (kind == 1 and seen_visible):
             break
-        if m.choices and _reads_io(m, frame):
+        where = (len(frames), frame[0], frame[1])
+        if where in visited:
+            break
+        if m.choices and routines[frame[0]].code[frame[1]].reads_io:
             break                            # one choice point per transition (as in SPIN)
         seen_visible = seen_visible or kind == 1
         visited.add(where)
@@ -346,10 +349,6 @@ def _run_merged(m: Machine, points: dict, frames_before: tuple, span):
             m.lazy_values = {}               # each instruction reads inputs afresh
         spans.append(run_instruction(m))
     return spans[0] if len(spans) == 1 else tuple(spans)
-
-
-def _reads_io(m: Machine, frame) -> bool:
-    return m.program.routines[frame[0]].code[frame[1]].reads_io
 
 
 def execute_step(m: Machine):
