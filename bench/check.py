@@ -97,9 +97,10 @@ def measure(program, formula_text: str, reductions: Reductions, max_states: int,
     seconds = time.process_time() - start
     heap = None
     if traced:
+        traced_system = RapidSystem(program, config, plan)
+        traced_system.shared_limit = 0
         tracemalloc.start()
-        check_property(RapidSystem(program, config, plan), buchi, valuation,
-                       max_states=max_states)
+        check_property(traced_system, buchi, valuation, max_states=max_states)
         _, peak = tracemalloc.get_traced_memory()
         tracemalloc.stop()
         heap = peak / max(result.stats.product_states, 1)

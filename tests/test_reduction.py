@@ -15,6 +15,9 @@ from pathlib import Path
 
 import pytest
 
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
 from rapidmc import ast
 from rapidmc.cli import main
 from rapidmc.reduction import plan_reductions
@@ -24,6 +27,7 @@ from rapidmc.semantics.link import build
 from rapidmc.semantics.step import CheckConfig
 from rapidmc.syntax import parse_text
 
+from fuzz_programs import programs
 from reduction_programs import properties, random_program
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -81,6 +85,25 @@ def test_generated_programs_keep_their_verdicts(tmp_path, seed):
     spec.write_text("\n".join(properties(seed)) + "\n")
     argv = [str(program), "--ltl", str(spec), "--max-states", "20000"]
     assert_same_verdicts(check_json(argv), check_json(argv + ["--no-reduce"]))
+
+
+@settings(max_examples=80, derandomize=True, deadline=None, database=None,
+          suppress_health_check=list(HealthCheck))
+@given(programs(), st.randoms(use_true_random=False))
+def test_fuzz_programs_keep_their_verdicts(tmp_path_factory, program, rnd):
+    """The broad generator of tests/fuzz_programs.py: records, arrays, every parameter mode,
+    handlers, interrupts, waits (programs that fail the static checks are skipped)."""
+    path = tmp_path_factory.mktemp("fuzz") / "prog.mod"
+    path.write_text(program.text, encoding="latin-1")
+    argv = [str(path), "--max-states", "3000", "--max-seconds", "10"]
+    if program.atoms:
+        first, second = rnd.choice(program.atoms), rnd.choice(program.atoms)
+        argv += [f'--formula=s: G "{first}"', f'--formula=r: G ("{first}" -> F "{second}")']
+    try:
+        reduced = check_json(argv)
+    except json.JSONDecodeError:
+        return                               # a static error, not a verdict
+    assert_same_verdicts(reduced, check_json(argv + ["--no-reduce"]))
 
 
 @pytest.mark.parametrize("case", CHECK_CASES, ids=lambda path: path.name)

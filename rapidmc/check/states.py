@@ -52,6 +52,15 @@ class StateTable:
     def __len__(self) -> int:
         return self._count
 
+    @property
+    def collapsed(self) -> bool:
+        return self._split is not None
+
+    @property
+    def known_ids(self) -> dict:
+        """state -> id for states kept whole (empty when states are collapsed)."""
+        return self._whole
+
     # --------------------------------------------------------------- lookups
     def intern(self, state: Hashable, add: bool = True) -> tuple[int, bool]:
         """The id of ``state`` and whether it was new (id -1 when new and not ``add``)."""

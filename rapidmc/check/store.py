@@ -27,6 +27,7 @@ class ModelStore:
         self.system = system
         self.valuation = valuation
         self.states = StateTable(system)
+        self._known = None if self.states.collapsed else self.states.known_ids.get
         self.valuations = array("I")
         self.deadlocked: set[int] = set()
         self._successor_cache: dict[int, tuple[int, ...]] = {}
@@ -36,6 +37,10 @@ class ModelStore:
 
     def intern(self, state: Hashable) -> int:
         """The id of ``state``, storing it (and its valuation) when new."""
+        if self._known is not None:         # states kept whole: one dict look-up
+            known = self._known(state)
+            if known is not None:
+                return known
         state_id, new = self.states.intern(state)
         if new:
             valuation = self.valuation(state)
