@@ -99,20 +99,25 @@ class StateTable:
             self._values = [[] for _ in parts]
             self._identity = [{} for _ in parts]
         ids = []
-        for table, values, identity, part in zip(self._components, self._values, self._identity,
-                                                 parts):
-            # a part passed on unchanged from a stored state is that very object:
-            # found by identity, without hashing its contents
-            part_id = identity.get(id(part), -1)
-            if part_id < 0 or values[part_id] is not part:
-                part_id = table.get(part)
-                if part_id is None:
-                    part = self._shared_scalars(part)
-                    part_id = table[part] = len(values)
-                    values.append(part)
-                    if part_id < IDENTITY_LIMIT:   # parts that rarely change: signals, robot
-                        identity[id(part)] = part_id
-            ids.append(part_id)
+        append = ids.append
+        for index, part in enumerate(parts):
+            values = self._values[index]
+            if index >= PRIMARY:
+                # a rarely changing part handed on unchanged from a stored state is
+                # that very object: found by identity, without hashing its contents
+                part_id = self._identity[index].get(id(part), -1)
+                if part_id >= 0 and values[part_id] is part:
+                    append(part_id)
+                    continue
+            table = self._components[index]
+            part_id = table.get(part)
+            if part_id is None:
+                part = self._shared_scalars(part)
+                part_id = table[part] = len(values)
+                values.append(part)
+                if index >= PRIMARY and part_id < IDENTITY_LIMIT:
+                    self._identity[index][id(part)] = part_id
+            append(part_id)
         return tuple(ids)
 
     def _shared_scalars(self, part):
