@@ -55,17 +55,19 @@ def merging_allowed(program: Program, formulas: Iterable, atom_keys: set[str],
     return not any(_has_next(formula) for formula in formulas)
 
 
-INVISIBLE, VISIBLE, LOOP_HEAD = 0, 1, 2
+INVISIBLE, VISIBLE, LOOP_HEAD, NEVER = 0, 1, 2, 3
 
 
 def merge_points(program: Program, atom_keys: set[str]) -> dict:
-    """(routine index, pc) -> INVISIBLE, VISIBLE or LOOP_HEAD for instructions that merge.
+    """Routine index -> bytes with one kind per pc: INVISIBLE, VISIBLE, LOOP_HEAD or NEVER.
 
     INVISIBLE and VISIBLE points may join the step before them; visible
     ones (assignments to data an atom names) only a step that has executed
     no visible instruction yet.  Loop heads (targets of a jump backwards)
-    never join, so a merged step never runs around a loop, but an
-    invisible loop head that starts a step does not count as visible.
+    never join, so a merged step never runs around a loop (within a merged
+    step the program counter only grows), but an invisible loop head that
+    starts a step does not count as visible.  Routines without any point
+    are left out.
     """
     points = {}
     for routine in program.routines:
@@ -73,6 +75,7 @@ def merge_points(program: Program, atom_keys: set[str]) -> dict:
             continue
         nodes = nodes_by_span(routine.ast)
         heads = _loop_heads(routine.code)
+        kinds = bytearray([NEVER]) * len(routine.code)
         for pc, instruction in enumerate(routine.code):
             node = nodes.get(instruction.span)
             if not _mergeable(instruction, node):
@@ -80,9 +83,11 @@ def merge_points(program: Program, atom_keys: set[str]) -> dict:
             visible = _visible(node, atom_keys)
             if pc in heads:
                 if not visible:
-                    points[(routine.index, pc)] = LOOP_HEAD
+                    kinds[pc] = LOOP_HEAD
             else:
-                points[(routine.index, pc)] = VISIBLE if visible else INVISIBLE
+                kinds[pc] = VISIBLE if visible else INVISIBLE
+        if any(kind != NEVER for kind in kinds):
+            points[routine.index] = bytes(kinds)
     return points
 
 

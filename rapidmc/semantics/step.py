@@ -310,41 +310,45 @@ MERGED_STEP_LIMIT = 10_000
 def _run_merged(m: Machine, points: dict, frames_before: tuple, span):
     """Go on executing merge points (see ``reduction.merging``) within this transition.
 
-    ``points`` maps (routine, pc) to 0 (invisible), 1 (visible) or 2
-    (invisible but never joins: a loop head); at most one visible
-    instruction runs per transition (the first one counts as visible
-    unless it is marked 0 or 2), and no
-    instruction that may read a signal joins once a choice was made (each
-    combination of choices re-runs the whole transition).  Returns the
-    span of the step, or the tuple of every span executed when more than
-    one instruction ran.  Stops at anything but a merge point, before an
-    instruction executed already in this step, and as soon as the program
-    waits, stops, raises, or has interrupts or tasks.
+    ``points`` maps a routine index to one kind per pc: 0 invisible, 1
+    visible, 2 invisible loop head (never joins), 3 never joins.  At most
+    one visible instruction runs per transition (the first one counts as
+    visible unless it is of kind 0 or 2), and no instruction that may read
+    a signal joins once a choice was made (each combination of choices
+    re-runs the whole transition).  Loop heads never join, so the program
+    counter only grows while merging.  Returns the span of the step, or
+    the tuple of every span executed when more than one instruction ran.
+    Stops as soon as the program waits, stops, raises, calls or returns,
+    or has interrupts or tasks.
     """
-    frame = frames_before[-1] if frames_before else None
-    visited = {(len(frames_before), frame[0], frame[1])} if frame is not None else set()
-    seen_visible = frame is None or points.get((frame[0], frame[1]), 1) == 1
+    if not frames_before:
+        return span
+    frame = frames_before[-1]
+    kinds = points.get(frame[0])
+    seen_visible = kinds is None or kinds[frame[1]] in (1, 3)
     spans = [span]
     errno = m.errno
+    depth = len(m.frames)                # calls and returns never join: it stays
     routines = m.program.routines
-    while len(spans) < MERGED_STEP_LIMIT:
+    for _ in range(MERGED_STEP_LIMIT):
         frames = m.frames
-        if m.status != RUNNING or m.waiting or m.tasks or m.errno != errno or not frames:
+        if m.status != RUNNING or m.waiting or m.tasks or m.errno != errno or \
+                len(frames) != depth:
             break
         interrupts = m.interrupts
         if interrupts.table or interrupts.pending or interrupts.scheduled:
             break
         frame = frames[-1]
-        kind = points.get((frame[0], frame[1]), 2)
-        if kind == 2 or frame[3] != 0 or (kind == 1 and seen_visible):
+        kinds = points.get(frame[0])
+        if kinds is None:
             break
-        where = (len(frames), frame[0], frame[1])
-        if where in visited:
+        kind = kinds[frame[1]]
+        if kind >= 2 or frame[3] != 0 or (kind == 1 and seen_visible):
             break
         if m.choices and routines[frame[0]].code[frame[1]].reads_io:
             break                            # one choice point per transition (as in SPIN)
-        seen_visible = seen_visible or kind == 1
-        visited.add(where)
+        if kind == 1:
+            seen_visible = True
         if m.lazy_values is not None:
             m.lazy_values = {}               # each instruction reads inputs afresh
         spans.append(run_instruction(m))
