@@ -297,3 +297,27 @@ def test_a_loop_that_changes_only_sliced_data_is_no_deadlock(tmp_path, flags):
     path = tmp_path / "prog.mod"
     path.write_text(BUSY_LOOP)
     assert check_json([str(path), "--formula", 'P: G "x < 6"', *flags])["no_deadlock"] == "HOLDS"
+
+
+FLOW_INTO_ATOM = """MODULE M
+  VAR signaldi in0;
+  VAR bool f := FALSE;
+  VAR bool g := FALSE;
+  PROC main()
+    AliasIO "IN0", in0;
+    WHILE TRUE DO
+      g := f;
+      f := NOT g;
+      WaitDI in0, 1;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+"""
+
+
+@pytest.mark.parametrize("flags", [(), ("--no-reduce",)])
+def test_data_flowing_into_an_atom_is_kept(tmp_path, flags):
+    # f is read only by `g := f` (total): it matters because the atom reads g
+    assert states_of(tmp_path, FLOW_INTO_ATOM, "flag: G (g -> F !g)", *flags)[0] == "VIOLATED"
+    program = linked(FLOW_INTO_ATOM)
+    assert "f" not in global_names(program, find_slicing(program, ["g"]).globals)

@@ -73,6 +73,7 @@ def find_slicing(program: Program, atom_texts: Iterable[str] = ()) -> Slicing:
     if not analysis.run():
         return NO_SLICING
     atom_keys = atom_keys_of(atom_texts)
+    analysis.observe(atom_keys)
     relevant = analysis.closure()
     sliced_globals = tuple(
         data.slot for data in program.globals
@@ -165,6 +166,16 @@ class _Analysis:
                     if not self.statement(statement):
                         return False
         return True
+
+    def observe(self, keys: set[str]) -> None:
+        """Data an atom may name are relevant (and so is everything that flows into them)."""
+        for data in self.program.globals:
+            if data.key in keys:
+                self.relevant.add(("G", data.slot))
+        for routine in self.program.routines:
+            for slot, name in enumerate(routine.local_names):
+                if name.upper() in keys:
+                    self.relevant.add(("L", routine.index, slot))
 
     def closure(self) -> set[Key]:
         """The relevant data: the seeds and everything that flows into them."""
