@@ -1,17 +1,35 @@
-"""Model-checking speed: product states per second and bytes per stored state.
+"""Model-checking benchmark: what each reduction saves, and SPIN on the same model.
 
-Usage: python bench/check.py [N_INPUTS] [LOOP_BOUND]   (defaults 3 and 60)
+Usage: python bench/check.py [--sizes 4,5,6,7] [--modulo 4] [--statistics-sizes 3,4,5]
+                             [--max-states N] [--statistics-max-states N]
+                             [--no-spin] [--no-sorter] [--memory]
 
-Two models:
-* a scalable one: N free digital inputs read in a loop that counts modulo
-  LOOP_BOUND in two nested counters, against the liveness property
-  ``G F "c = 0"`` (HOLDS: explores the whole product);
-* the pinion-sorting cell (programs A, B, C with the plant model) against
-  P1-P3 of specs/sorter.ltl.
+Models:
+* the counters family: N free digital inputs, N counters modulo K; each
+  loop iteration adds 1 to counter i when input i is set; property "every
+  counter stays below K" (holds, so the whole state space is explored);
+* the statistics variant: the same plus what every real cell has, a cycle
+  counter and a log string nothing reads
+  (``nCycles := nCycles + 1; lastLog := "cycle " + NumToStr(nCycles, 0);``);
+* the pinion-sorting cell (case_studies/sorter, program B and plant) against P1-P3.
+
+Each model is checked with every reduction, with each one off, and with
+none (``--no-reduce``); one row per run: verdict, product states,
+transitions, CPU seconds of the search, product states per second and bytes
+per stored state (the engine's own accounting, ``SearchStats``).  With
+``--memory`` a second, traced run measures the Python heap per state too
+(tracemalloc: slow).  When ``spin`` and ``gcc`` are installed, the
+careful Promela model of the counters (inputs chosen where they are read,
+as rapidmc does) is verified with ``spin -a``, ``gcc -O2`` and ``./pan -a``
+and timed beside it.
 """
 from __future__ import annotations
 
-import sys
+import argparse
+import re
+import shutil
+import subprocess
+import tempfile
 import time
 import tracemalloc
 from pathlib import Path
@@ -22,76 +40,152 @@ from rapidmc.ltl import parse_formula, to_buchi
 from rapidmc.ltl.syntax import Not
 from rapidmc.model import RapidSystem
 from rapidmc.properties import AtomCompiler, read_property_file
+from rapidmc.reduction import ALL, NONE, Reductions, plan_reductions
 from rapidmc.semantics.link import build
 from rapidmc.semantics.step import CheckConfig
 from rapidmc.syntax import load_program, parse_text
 
 ROOT = Path(__file__).resolve().parent.parent
+VARIANTS = (("all", ALL), ("no merge", Reductions(merge_steps=False)),
+            ("no dead", Reductions(dead_data=False)), ("no slice", Reductions(slice_data=False)),
+            ("none", NONE))
 
 
-def scalable_program(inputs: int, bound: int) -> str:
-    declarations = "\n".join(f"  VAR signaldi in{i};" for i in range(inputs))
-    aliases = "\n".join(f'    AliasIO "IN{i}", in{i};' for i in range(inputs))
-    reads = " + ".join(f"in{i}" for i in range(inputs)) or "0"
-    return f"""
-MODULE Scalable
-{declarations}
-  VAR num c := 0;
-  VAR num d := 0;
-  PROC main()
-{aliases}
-    WHILE TRUE DO
-      IF ({reads}) > 0 THEN
-        c := (c + 1) MOD {bound};
-        IF c = 0 d := (d + 1) MOD {bound};
-      ELSE
-        d := (d + 1) MOD {bound};
-      ENDIF
-    ENDWHILE
-  ENDPROC
-ENDMODULE
-"""
+def counters_program(inputs: int, modulo: int, statistics: bool = False) -> str:
+    """The counters family in RAPID (``statistics``: with the unread cycle counter and log)."""
+    data = [f"  VAR signaldi in{i};" for i in range(inputs)]
+    data += [f"  VAR num c{i} := 0;" for i in range(inputs)]
+    aliases = [f'    AliasIO "IN{i}", in{i};' for i in range(inputs)]
+    body = [f"      IF in{i} = 1 THEN\n        c{i} := (c{i} + 1) MOD {modulo};\n      ENDIF"
+            for i in range(inputs)]
+    if statistics:
+        data += ["  VAR num nCycles := 0;", '  VAR string lastLog := "";']
+        body += ["      nCycles := nCycles + 1;",
+                 '      lastLog := "cycle " + NumToStr(nCycles, 0);']
+    lines = ["MODULE Counters", *data, "  PROC main()", *aliases, "    WHILE TRUE DO", *body,
+             "    ENDWHILE", "  ENDPROC", "ENDMODULE", ""]
+    return "\n".join(lines)
 
 
-def measure(name: str, program, formula_text: str, formula=None, store_inputs=False) -> None:
+def counters_formula(inputs: int, modulo: int) -> str:
+    return "G (" + " & ".join(f'"c{i} < {modulo}"' for i in range(inputs)) + ")"
+
+
+def counters_promela(inputs: int, modulo: int) -> str:
+    """The Promela model a careful SPIN user writes: each input chosen where it is read."""
+    data = "\n".join(f"byte c{i} = 0;" for i in range(inputs))
+    body = ";\n".join(f"     if :: c{i} = (c{i} + 1) % {modulo} :: skip fi"
+                      for i in range(inputs))
+    bound = " && ".join(f"c{i} < {modulo}" for i in range(inputs))
+    return (f"{data}\nactive proctype main() {{\n  do\n  :: {body.lstrip()}\n  od\n}}\n"
+            f"ltl bounded {{ [] ({bound}) }}\n")
+
+
+def measure(program, formula_text: str, reductions: Reductions, max_states: int,
+            formula=None, traced: bool = False):
+    """(verdict, stats, seconds, heap bytes per state or None) of one property check."""
     formula = formula or parse_formula(formula_text)
     buchi = to_buchi(Not(formula))
     atoms = AtomCompiler(program)
     valuation = atoms.valuation(buchi.atoms, {})
-    # as `rapidmc check` does: inputs no atom reads are chosen when read
-    # (store_inputs: keep every free input in every state instead)
-    config = CheckConfig(program, observed=None if store_inputs else set(atoms.observed))
-    system = RapidSystem(program, config)
-    start = time.perf_counter()
-    result = check_property(system, buchi, valuation, max_states=2_000_000)
-    seconds = time.perf_counter() - start
-    stats = result.stats
-    # memory: a second, traced run of the same search (tracing slows it down)
-    tracemalloc.start()
-    uncached = RapidSystem(program, config)
-    uncached.shared_limit = 0      # the search's own memory, without the cross-property cache
-    check_property(uncached, buchi, valuation, max_states=2_000_000)
-    _, peak = tracemalloc.get_traced_memory()
-    tracemalloc.stop()
-    per_state = peak / max(stats.product_states, 1)
-    print(f"{name:24} {result.verdict:9} {stats.product_states:>8,} product states "
-          f"{stats.model_states:>8,} model states {seconds:6.2f} s "
-          f"{stats.product_states / seconds:>8,.0f} states/s {per_state:>6,.0f} bytes/state")
+    config = CheckConfig(program, observed=set(atoms.observed))
+    plan = plan_reductions(program, config, buchi.atoms, [formula], reductions)
+    system = RapidSystem(program, config, plan)
+    system.shared_limit = 0            # the search's own memory, no cross-property cache
+    start = time.process_time()          # CPU time: the machine may be shared
+    result = check_property(system, buchi, valuation, max_states=max_states)
+    seconds = time.process_time() - start
+    heap = None
+    if traced:
+        traced_system = RapidSystem(program, config, plan)
+        traced_system.shared_limit = 0
+        tracemalloc.start()
+        check_property(traced_system, buchi, valuation, max_states=max_states)
+        _, peak = tracemalloc.get_traced_memory()
+        tracemalloc.stop()
+        heap = peak / max(result.stats.product_states, 1)
+    return result.verdict, result.stats, seconds, heap
+
+
+HEADER = (f"{'model':22} {'reductions':10} {'verdict':8} {'states':>9} {'transitions':>11} "
+          f"{'cpu s':>8} {'states/s':>9} {'B/state':>8}")
+
+
+def row(name: str, variant: str, measured) -> str:
+    verdict, stats, seconds, heap = measured
+    text = (f"{name:22} {variant:10} {verdict:8} {stats.product_states:>9,} "
+            f"{stats.transitions:>11,} {seconds:>8.2f} "
+            f"{stats.product_states / max(seconds, 1e-9):>9,.0f} {stats.bytes_per_state:>8,.0f}")
+    return text + (f"  heap {heap:,.0f} B/state" if heap is not None else "")
+
+
+def spin_row(inputs: int, modulo: int) -> str:
+    """Verify the Promela counters with SPIN; the figures pan prints and the wall times."""
+    with tempfile.TemporaryDirectory() as folder:
+        model = Path(folder) / "counters.pml"
+        model.write_text(counters_promela(inputs, modulo))
+        started = time.perf_counter()
+        subprocess.run(["spin", "-a", model.name], cwd=folder, check=True,
+                       capture_output=True)
+        subprocess.run(["gcc", "-O2", "-o", "pan", "pan.c"], cwd=folder, check=True,
+                       capture_output=True)
+        compiled = time.perf_counter()
+        out = subprocess.run(["./pan", "-a", "-m1000000"], cwd=folder, check=True,
+                             capture_output=True, text=True).stdout
+        finished = time.perf_counter()
+    states = int(re.search(r"(\d+) states, stored", out).group(1))
+    errors = int(re.search(r"errors: (\d+)", out).group(1))
+    elapsed = float(re.search(r"elapsed time ([\d.e+-]+)", out).group(1))
+    vector = re.search(r"State-vector (\d+) byte", out).group(1)
+    verdict = "HOLDS" if errors == 0 else "VIOLATED"
+    return (f"{'counters N=' + str(inputs):22} {'SPIN':10} {verdict:8} {states:>9,} "
+            f"{'':>11} {finished - compiled:>8.2f} {states / max(elapsed, 1e-3):>9,.0f} "
+            f"{vector:>8}  (pan search {elapsed:.2f} s; spin -a + gcc "
+            f"{compiled - started:.2f} s; B/state = SPIN's state vector)")
 
 
 def main() -> None:
-    inputs = int(sys.argv[1]) if len(sys.argv) > 1 else 3
-    bound = int(sys.argv[2]) if len(sys.argv) > 2 else 60
-    program = build(ast.Program(parse_text(scalable_program(inputs, bound), "scalable.mod")))
-    measure(f"scalable N={inputs} M={bound}", program, 'G F "d = 0"')
-    measure(f"  same, inputs stored", program, 'G F "d = 0"', store_inputs=True)
-    properties = read_property_file(str(ROOT / "specs" / "sorter.ltl"))
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--sizes", default="4,5,6,7", help="N of the counters family")
+    parser.add_argument("--statistics-sizes", default="3,4,5",
+                        help="N of the statistics variant")
+    parser.add_argument("--modulo", type=int, default=4, help="K of the counters family")
+    parser.add_argument("--max-states", type=int, default=1_000_000)
+    parser.add_argument("--statistics-max-states", type=int, default=200_000,
+                        help="state bound of the statistics variant (infinite without slicing)")
+    parser.add_argument("--no-spin", action="store_true", help="do not run SPIN")
+    parser.add_argument("--no-sorter", action="store_true", help="skip the sorting cell")
+    parser.add_argument("--memory", action="store_true",
+                        help="also measure the heap per state with tracemalloc (slow)")
+    args = parser.parse_args()
+    spin = not args.no_spin and shutil.which("spin") and shutil.which("gcc")
+    print(HEADER)
+    for inputs in (int(n) for n in args.sizes.split(",")):
+        program = build(ast.Program(parse_text(counters_program(inputs, args.modulo),
+                                               "counters.mod")))
+        for variant, reductions in VARIANTS:
+            measured = measure(program, counters_formula(inputs, args.modulo), reductions,
+                               args.max_states, traced=args.memory)
+            print(row(f"counters N={inputs}", variant, measured), flush=True)
+        if spin:
+            print(spin_row(inputs, args.modulo), flush=True)
+    for inputs in (int(n) for n in args.statistics_sizes.split(",")):
+        program = build(ast.Program(parse_text(counters_program(inputs, args.modulo, True),
+                                               "statistics.mod")))
+        for variant, reductions in VARIANTS:
+            measured = measure(program, counters_formula(inputs, args.modulo), reductions,
+                               args.statistics_max_states, traced=args.memory)
+            print(row(f"statistics N={inputs}", variant, measured), flush=True)
+    if args.no_sorter:
+        return
     plant = load_program([str(ROOT / "case_studies" / "sorter" / "plant.mod")])
-    for letter in "abc":
-        sorter = build(load_program([str(ROOT / "case_studies" / "sorter" / f"sorter_{letter}.mod")]),
-                       environment=plant)
-        for prop in properties:
-            measure(f"sorter {letter.upper()} {prop.name}", sorter, prop.text, prop.formula)
+    sorter = build(load_program([str(ROOT / "case_studies" / "sorter" / "sorter_b.mod")]),
+                   environment=plant)
+    for prop in read_property_file(str(ROOT / "specs" / "sorter.ltl")):
+        for variant, reductions in (VARIANTS[0], VARIANTS[-1]):
+            measured = measure(sorter, prop.text, reductions, args.max_states, prop.formula,
+                               traced=args.memory)
+            print(row(f"sorter B {prop.name}", variant, measured), flush=True)
 
 
 if __name__ == "__main__":

@@ -33,6 +33,7 @@ from .diagnostics import (AUTOMATON, DOMAIN, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN,
 from .explored import ExploredFacts
 from .ltl import read_hoa, to_buchi
 from .ltl.syntax import Not
+from . import reduction
 from .model import RapidDescriber, RapidSystem, replay, with_final_loop
 from .properties import AtomCompiler, Property, check_unique, parse_property, read_property_file
 from .semantics.configured_signals import _walk_statements
@@ -65,6 +66,8 @@ class CheckOptions:
     backend: Optional[str] = None          # LTL translator: "spot", "builtin", None = best
     max_states: Optional[int] = DEFAULT_MAX_STATES
     max_seconds: Optional[float] = None
+    reductions: reduction.Reductions = reduction.ALL   # sliced data, dead data, merged steps
+    storage: Optional[tuple] = None        # None: exact; --compact / --bitstate (never HOLDS)
 
 
 # --- loading -----------------------------------------------------------------------
@@ -115,6 +118,7 @@ class Model:
     config: CheckConfig
     system: RapidSystem
     describer: RapidDescriber
+    plan: reduction.Plan = reduction.NO_PLAN
 
 
 def prepare(program: Program, properties: Sequence[Property],
@@ -138,8 +142,12 @@ def prepare(program: Program, properties: Sequence[Property],
     if unknown:
         raise error(USAGE, f"--automaton names no property: "
                     f"{', '.join(quoted(name) for name in sorted(unknown))}")
+    plan = reduction.plan_reductions(
+        program, config, [atom for _, buchi, _ in jobs for atom in buchi.atoms],
+        [None if prop.name in options.automata else prop.formula for prop in properties],
+        options.reductions)
     return Model(program, properties, options, atoms, jobs, config,
-                 RapidSystem(program, config), RapidDescriber(program, config))
+                 RapidSystem(program, config, plan), RapidDescriber(program, config), plan)
 
 
 def _automaton(prop: Property, atoms: AtomCompiler, options: CheckOptions):
@@ -248,13 +256,20 @@ def check(program: Program, properties: Iterable[Property] = (),
 def check_model(model: Model, progress: ProgressFactory = lambda: None) -> CheckReport:
     """``check`` on a prepared model; ``progress()`` gives each search its progress line."""
     system, options = model.system, model.options
-    bounds = dict(max_states=options.max_states, max_seconds=options.max_seconds)
+    bounds = dict(max_states=options.max_states, max_seconds=options.max_seconds,
+                  storage=options.storage)
     facts = ExploredFacts(model.program, [prop.formula for prop in model.properties], model.atoms)
+    # Merged steps run several lines in one transition: coverage watches an unreduced search.
+    watched = RapidSystem(model.program, model.config) if model.plan.merge_points else None
     results = []
     try:
         results.append(_builtin(system, BUILTIN_RUNTIME, "no reachable uncaught run-time error",
-                                system.failed, bounds, progress(), facts))
-        facts.finish(system, results[0].result, progress=progress(), **bounds)
+                                system.failed, bounds, progress(),
+                                facts if watched is None else None))
+        if watched is None:
+            facts.finish(system, results[0].result, progress=progress(), **bounds)
+        elif options.storage is None:
+            facts.watch(watched, progress=progress(), **bounds)
         results.append(_builtin(system, BUILTIN_DEADLOCK, "no reachable state where the program "
                                 "waits forever", system.stuck, bounds, progress()))
         for prop, buchi, valuation in model.jobs:

@@ -50,9 +50,15 @@ class ExploredFacts:
         another).
         """
         if search.verdict == VIOLATED:
-            self.statements.executed.clear()
-            self.triggers.seen.clear()
-            search = find_reachable(system, _nothing, observe=self, **bounds)
+            self.watch(system, **bounds)
+        else:
+            self.complete = search.verdict == HOLDS
+
+    def watch(self, system, **bounds) -> None:
+        """Watch a search of ``system`` that looks for nothing; complete unless a bound stops it."""
+        self.statements.executed.clear()
+        self.triggers.seen.clear()
+        search = find_reachable(system, _nothing, observe=self, **bounds)
         self.complete = search.verdict == HOLDS
 
     def warnings(self) -> list[Diagnostic]:

@@ -9,7 +9,10 @@ is printed.
 """
 from __future__ import annotations
 
+import copy
 from typing import Hashable, Mapping, Optional
+
+from pyrsistent import pvector
 
 from .check import TransitionInfo
 from .check.trace import CallFrame
@@ -22,6 +25,8 @@ from .semantics.state import ENDED, FAILED, RUNNING, State
 from .semantics.step import CheckConfig, ScriptChooser, initial_states, successors
 from .semantics.values import format_num, format_value
 from .semantics.errors import errno_name
+from .reduction import NO_PLAN, Plan
+from .reduction.expansion import expand_lasso
 
 
 class RapidSystem:
@@ -29,26 +34,61 @@ class RapidSystem:
 
     Successors are remembered (up to ``shared_limit`` states) so that the
     searches for several properties of one program compute each state's
-    successors once.
+    successors once.  A reduction ``plan`` (``rapidmc.reduction``) resets
+    sliced data in every state and merges steps; ``unreduced()`` is the
+    same system without it (for replaying counterexamples in full).
     """
 
     shared_limit = 100_000
 
-    def __init__(self, program: Program, config: CheckConfig):
+    def __init__(self, program: Program, config: CheckConfig, plan: Plan = NO_PLAN):
         self.program = program
+        self.plain_config = config
+        if plan.merge_points != config.merge_points:
+            config = copy.copy(config)
+            config.merge_points = plan.merge_points
         self.config = config
+        self.plan = plan
+        self.project = plan.projection
         # successors kept for the next searches (one per property) over the same program
         self._shared: dict[State, list] = {}
 
+    @staticmethod
+    def split_state(state: State) -> tuple:
+        """The parts stored separately (``check.states``): the call stack, global data (as
+        a tuple: smaller than a persistent vector), signals, robot, interrupts, and the rest
+        (ERRNO ... further tasks).  Signals stay a vector: they rarely change, and a vector
+        handed on unchanged is found by identity."""
+        return (state[0], tuple(state[1]), state[2], state[3], state[4], state[5:])
+
+    @staticmethod
+    def join_state(parts: tuple) -> State:
+        return State(parts[0], pvector(parts[1]), *parts[2:5], *parts[5])
+
+    def unreduced(self) -> "RapidSystem":
+        """The same program and configuration without reductions."""
+        if not self.plan.active:
+            return self
+        config = copy.copy(self.plain_config)
+        config.merge_points = {}
+        return RapidSystem(self.program, config)
+
     def initial_states(self) -> list[State]:
-        return initial_states(self.program, lambda script: ScriptChooser(script, self.config))
+        states = initial_states(self.program, lambda script: ScriptChooser(script, self.config))
+        project = self.project
+        return states if project is None else list(dict.fromkeys(map(project, states)))
 
     def successors(self, state: State) -> list[tuple[Hashable, State]]:
-        cached = self._shared.get(state)
-        if cached is not None:
-            return cached
+        if self._shared:                 # (hashing a whole state is not free)
+            cached = self._shared.get(state)
+            if cached is not None:
+                return cached
         transitions = successors(self.program, state, self.config)
-        result = [((t.label, t.span, t.output), t.state) for t in transitions]
+        project = self.project
+        if project is None:
+            result = [((t.label, t.span, t.output), t.state) for t in transitions]
+        else:
+            result = [((t.label, t.span, t.output), project(t.state)) for t in transitions]
         if len(self._shared) < self.shared_limit:
             self._shared[state] = result
         return result
@@ -69,8 +109,16 @@ class RapidSystem:
             return False
         free = [index for index, _, _ in self.config.free_inputs]
         masked = _without_inputs(state, free)
-        return all(_without_inputs(after, free) == masked
-                   for _, after in self.successors(state))
+        if not all(_without_inputs(after, free) == masked for _, after in self.successors(state)):
+            return False
+        if not self.config.merge_points:
+            return True
+        # A merged step that changes nothing may still run around a loop (a busy wait):
+        # decide on single instructions, as the unmerged semantics does.  (A merged step
+        # that changes something starts with a single step that does.)
+        project = self.project or (lambda s: s)
+        return all(_without_inputs(project(t.state), free) == masked
+                   for t in successors(self.program, state, self.plain_config))
 
 
 def _without_inputs(state: State, free: list) -> State:
@@ -166,6 +214,8 @@ class RapidDescriber:
     def describe_transition(self, label) -> TransitionInfo:
         choices, span, output = label
         inputs = {name: _choice_text(value) for name, value in choices}
+        if isinstance(span, tuple):          # merged steps not expanded: the first one
+            span = span[0]
         if span is None:
             source = "(the program has stopped: this state repeats forever)" if not choices else ""
             return TransitionInfo(None, None, source, inputs, output)
@@ -198,7 +248,11 @@ def with_final_loop(system: RapidSystem, result: SearchResult) -> SearchResult:
 
 
 def replay(system: RapidSystem, result: SearchResult) -> None:
-    """Re-execute a counterexample through the step function; a mismatch is an internal error."""
+    """Re-execute a counterexample through the step function; a mismatch is an internal error.
+
+    A counterexample of a reduced system is then expanded on the unreduced
+    one (``reduction.expansion``): every line executed, every value shown.
+    """
     steps: list[LassoStep] = result.prefix + result.cycle
     if not steps:
         return
@@ -209,6 +263,7 @@ def replay(system: RapidSystem, result: SearchResult) -> None:
     if result.cycle:
         closing = result.closing_label
         _check_step(system, steps[-1].state, closing, result.cycle[0].state)
+    expand_lasso(system, result)
 
 
 def _check_step(system: RapidSystem, before: State, label, after: State) -> None:

@@ -11,8 +11,9 @@ again).  Every product state is expanded exactly once, and a violation is
 found as soon as the cycle's last edge is seen (unlike nested DFS, which
 may need a second pass).
 
-Memory per stored product state: one dict entry key -> number, one byte
-in ``dead`` and, while live, one slot in ``active`` (``array``).  No
+Memory per stored product state: four bytes in ``number`` (an array
+indexed by product key: model state ids are dense, so product keys are
+too), one byte in ``dead`` and, while live, one slot in ``active``.  No
 Python recursion: the DFS path is kept in three parallel lists.
 
 Reference: J.-M. Couvreur, "On-the-fly verification of linear temporal
@@ -27,6 +28,8 @@ from .lasso import build_lasso
 from .product import Product
 from .result import HOLDS, UNKNOWN, VIOLATED, SearchResult, SearchStats
 
+UNSEEN = array("i", [-1])
+
 
 def search_accepting_cycle(product: Product, budget: SearchBudget) -> SearchResult:
     """HOLDS if no accepting cycle is reachable, VIOLATED with a lasso, or UNKNOWN."""
@@ -35,7 +38,7 @@ def search_accepting_cycle(product: Product, budget: SearchBudget) -> SearchResu
     stats = search.stats()
     stats.seconds = budget.finish()
     if found is not None:
-        prefix, cycle, closing = build_lasso(product, *found, search.number)
+        prefix, cycle, closing = build_lasso(product, *found, search.explored())
         return SearchResult(VIOLATED, None, prefix, cycle, stats, closing)
     if budget.reason is not None:
         return SearchResult(UNKNOWN, budget.reason, stats=stats)
@@ -48,7 +51,7 @@ class _CycleSearch:
     def __init__(self, product: Product, budget: SearchBudget):
         self.product = product
         self.budget = budget
-        self.number: dict[int, int] = {}      # product key -> discovery number
+        self.number = array("i")              # product key -> discovery number, -1: unseen
         self.dead = bytearray()               # by number: 1 once its component is complete
         self.active = array("q")              # numbers of live states, discovery order
         self.roots = array("q")               # numbers of component roots on the path
@@ -57,16 +60,27 @@ class _CycleSearch:
         self.max_depth = 0
 
     def stats(self) -> SearchStats:
-        return SearchStats(product_states=len(self.number), model_states=len(self.product.store),
+        stored = len(self.dead)
+        memory = self.product.store.memory_bytes() + sum(
+            len(a) * a.itemsize for a in (self.number, self.active, self.roots)) + len(self.dead)
+        return SearchStats(product_states=stored, model_states=len(self.product.store),
                            transitions=self.transitions, max_depth=self.max_depth,
-                           deadlocks=len(self.product.store.deadlocked))
+                           deadlocks=len(self.product.store.deadlocked),
+                           bytes_per_state=memory / stored if stored else 0.0)
+
+    def explored(self) -> "_Explored":
+        return _Explored(self.number)
+
+    def _number_of(self, key: int) -> int:
+        number = self.number
+        return number[key] if key < len(number) else -1
 
     def run(self):
         """None when no accepting cycle was found; else (DFS path keys, component keys)."""
         for key in self.product.initial_keys():
-            if key in self.number:
+            if self._number_of(key) >= 0:
                 continue
-            if not self.budget.may_store(len(self.number)):
+            if not self.budget.may_store(len(self.dead)):
                 return None
             found = self._explore_from(key)
             if found is not None or self.budget.reason is not None:
@@ -87,6 +101,8 @@ class _CycleSearch:
 
         def push(key: int) -> None:
             index = len(dead)
+            if key >= len(number):
+                number.extend(UNSEEN * (key + 1 - len(number) + len(number) // 2))
             number[key] = index
             dead.append(0)
             active.append(index)
@@ -107,8 +123,8 @@ class _CycleSearch:
             if position < len(successors):
                 path_positions[-1] = position + 1
                 key = successors[position]
-                index = number.get(key)
-                if index is None:
+                index = number[key] if key < len(number) else -1
+                if index < 0:
                     stored = len(dead)
                     if not budget.may_store(stored):
                         return None
@@ -142,6 +158,16 @@ class _CycleSearch:
         depth = len(path_keys)
         while self.number[path_keys[depth - 1]] > root:
             depth -= 1
-        component = {key for key, index in self.number.items()
+        component = {key for key, index in enumerate(self.number)
                      if index >= root and not self.dead[index]}
         return path_keys[:depth], component
+
+
+class _Explored:
+    """``key in explored``: whether the search has stored a product key."""
+
+    def __init__(self, number: array):
+        self.number = number
+
+    def __contains__(self, key: int) -> bool:
+        return key < len(self.number) and self.number[key] >= 0

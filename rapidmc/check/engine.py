@@ -17,6 +17,7 @@ from typing import Optional
 
 from .budget import DEFAULT_MAX_STATES, SearchBudget
 from .emptiness import search_accepting_cycle
+from .hashed import hashed_accepting_cycle, visited_sets
 from .model import TransitionSystem, Valuation
 from .product import Product
 from .progress import Progress
@@ -27,8 +28,16 @@ from .store import ModelStore
 def check_property(system: TransitionSystem, buchi, valuation: Valuation, *,
                    max_states: Optional[int] = DEFAULT_MAX_STATES,
                    max_seconds: Optional[float] = None,
-                   progress: Optional[Progress] = None) -> SearchResult:
-    """Search model × ``buchi`` for an accepting lasso; see the module docstring."""
+                   progress: Optional[Progress] = None,
+                   storage: Optional[tuple] = None) -> SearchResult:
+    """Search model × ``buchi`` for an accepting lasso; see the module docstring.
+
+    ``storage``: None to store every state, else ``(COMPACT,)`` or ``(BITSTATE, bytes)``
+    (``hashed``: visited states remembered by hash; no violation found is UNKNOWN).
+    """
     budget = SearchBudget(max_states, max_seconds, progress)
+    if storage is not None:
+        outer, inner = visited_sets(storage, 2)
+        return hashed_accepting_cycle(system, buchi, valuation, outer, inner, budget)
     product = Product(ModelStore(system, valuation), buchi)
     return search_accepting_cycle(product, budget)

@@ -23,6 +23,8 @@ from typing import Callable, Hashable, Optional, Sequence
 from .budget import DEFAULT_MAX_STATES, SearchBudget
 from .model import TransitionSystem, as_sequence
 from .progress import Progress
+from .hashed import hashed_reachable, visited_sets
+from .states import StateTable
 from .result import (HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep,
                      SearchResult, SearchStats)
 
@@ -34,9 +36,16 @@ def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], boo
                    max_seconds: Optional[float] = None,
                    progress: Optional[Progress] = None,
                    deadlock_is_target: bool = False,
-                   observe: Optional[Observer] = None) -> SearchResult:
-    """Shortest path to a state where ``predicate`` holds; see the module docstring."""
+                   observe: Optional[Observer] = None,
+                   storage: Optional[tuple] = None) -> SearchResult:
+    """Shortest path to a state where ``predicate`` holds; see the module docstring.
+
+    ``storage`` (``check_property``): hashed visited states, depth-first, no
+    shortest path, and nothing observed (``observe`` is for complete searches).
+    """
     budget = SearchBudget(max_states, max_seconds, progress)
+    if storage is not None:
+        return hashed_reachable(system, predicate, visited_sets(storage, 1)[0], budget)
     search = _BreadthFirst(system, predicate, budget, deadlock_is_target, observe)
     target = search.run()
     stats = search.stats()
@@ -58,28 +67,32 @@ class _BreadthFirst:
         self.predicate = predicate
         self.budget = budget
         self.deadlock_is_target = deadlock_is_target
-        self.ids: dict[Hashable, int] = {}
-        self.states: list[Hashable] = []
-        self.parent = array("q")          # by id; -1 for initial states
-        self.depth = array("l")
+        self.states = StateTable(system)
+        self.parent = array("i")          # by id; -1 for initial states
+        self.depth = array("i")
         self.transitions = 0
         self.deadlocks = 0
 
     def stats(self) -> SearchStats:
         depth = max(self.depth) + 1 if self.depth else 0
-        return SearchStats(product_states=len(self.states), model_states=len(self.states),
+        stored = len(self.states)
+        memory = self.states.memory_bytes() + len(self.parent) * self.parent.itemsize + \
+            len(self.depth) * self.depth.itemsize
+        return SearchStats(product_states=stored, model_states=stored,
                            transitions=self.transitions, max_depth=depth,
-                           deadlocks=self.deadlocks)
+                           deadlocks=self.deadlocks,
+                           bytes_per_state=memory / stored if stored else 0.0)
 
     def _store(self, state: Hashable, parent: int) -> Optional[int]:
         """The new id, or None when the state is known or the budget is spent."""
-        if state in self.ids:
-            return None
         stored = len(self.states)
-        if not self.budget.may_store(stored):
+        room = stored < self.budget.max_states
+        _, new = self.states.intern(state, add=room)
+        if not new:
             return None
-        self.ids[state] = stored
-        self.states.append(state)
+        if not room:
+            self.budget.may_store(stored)     # sets the reason: the state limit is reached
+            return None
         self.parent.append(parent)
         self.depth.append(self.depth[parent] + 1 if parent >= 0 else 0)
         if stored >= self.budget.next_checkpoint:
@@ -101,9 +114,10 @@ class _BreadthFirst:
         return None
 
     def _expand(self, state_id: int) -> Optional[int]:
-        successors = as_sequence(self.system.successors(self.states[state_id]))
+        state = self.states[state_id]
+        successors = as_sequence(self.system.successors(state))
         if self.observe is not None:
-            self.observe(self.states[state_id], successors)
+            self.observe(state, successors)
         self.transitions += len(successors)
         if not successors:
             self.deadlocks += 1

@@ -39,6 +39,7 @@ class SearchStats:
     max_depth: int = 0
     seconds: float = 0.0
     deadlocks: int = 0
+    bytes_per_state: float = 0.0     # memory of the stored states and search structures
 
     @property
     def states_per_second(self) -> float:
@@ -53,6 +54,7 @@ class SearchStats:
             "seconds": round(self.seconds, 3),
             "states_per_second": round(self.states_per_second),
             "deadlocks": self.deadlocks,
+            "bytes_per_state": round(self.bytes_per_state),
         }
 
 

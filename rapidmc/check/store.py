@@ -1,7 +1,8 @@
 """Model states interned into integer ids, with their valuations and successors.
 
-The engine stores each model state once (``states[id]``, ``ids[state]``)
-and works with ids from then on; product bookkeeping is integers only.
+The engine stores each model state once (``states[id]``, a ``StateTable``
+that keeps states collapsed into component ids) and works with ids from
+then on; product bookkeeping is integers only.
 Valuations are computed once per model state.  Successor ids are cached
 for recently expanded states, because the emptiness search expands the
 same model state once per automaton state it is paired with, often in
@@ -11,7 +12,10 @@ from __future__ import annotations
 
 from typing import Hashable, Sequence
 
+from array import array
+
 from .model import Label, TransitionSystem, Valuation, as_sequence, labelled_successors
+from .states import StateTable
 
 SUCCESSOR_CACHE_SIZE = 1 << 16
 
@@ -22,9 +26,9 @@ class ModelStore:
     def __init__(self, system: TransitionSystem, valuation: Valuation):
         self.system = system
         self.valuation = valuation
-        self.ids: dict[Hashable, int] = {}
-        self.states: list[Hashable] = []
-        self.valuations: list[int] = []
+        self.states = StateTable(system)
+        self._known = None if self.states.collapsed else self.states.known_ids.get
+        self.valuations = array("I")
         self.deadlocked: set[int] = set()
         self._successor_cache: dict[int, tuple[int, ...]] = {}
 
@@ -33,12 +37,17 @@ class ModelStore:
 
     def intern(self, state: Hashable) -> int:
         """The id of ``state``, storing it (and its valuation) when new."""
-        state_id = self.ids.get(state)
-        if state_id is None:
-            state_id = len(self.states)
-            self.ids[state] = state_id
-            self.states.append(state)
-            self.valuations.append(self.valuation(state))
+        if self._known is not None:         # states kept whole: one dict look-up
+            known = self._known(state)
+            if known is not None:
+                return known
+        state_id, new = self.states.intern(state)
+        if new:
+            valuation = self.valuation(state)
+            try:
+                self.valuations.append(valuation)
+            except OverflowError:            # more than 32 atoms: Python ints
+                self.valuations = list(self.valuations) + [valuation]
         return state_id
 
     def initial_ids(self) -> list[int]:
@@ -64,6 +73,10 @@ class ModelStore:
             cache.clear()
         cache[state_id] = result
         return result
+
+    def memory_bytes(self) -> int:
+        """Bytes of the stored states and their valuations (the successor cache excluded)."""
+        return self.states.memory_bytes() + len(self.valuations) * self.valuations.itemsize
 
     def labelled_successor_ids(self, state_id: int) -> list[tuple[Label, int]]:
         """Every (label, successor id) in model order, ``STUTTER`` for a deadlock (slow path)."""

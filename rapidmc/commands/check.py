@@ -24,6 +24,8 @@ from ..diagnostics import USAGE, UserError, error, render_all
 from ..ltl import BACKENDS
 from ..backup import add_program_arguments
 from ..properties import Property, check_unique, read_property_file
+from .. import reduction
+from . import storage_options
 from .quoting import quoted, routine_name
 from .report_file import write_report
 
@@ -83,6 +85,8 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
                         help="use this Büchi automaton (HOA) for the NEGATION of property NAME")
     parser.add_argument("--backend", choices=BACKENDS, default=None,
                         help="LTL translator (default: spot when installed, else builtin)")
+    reduction.add_arguments(parser)
+    storage_options.add_arguments(parser)
 
 
 def _numbers(text: str, option: str) -> tuple[float, ...]:
@@ -127,7 +131,9 @@ def check_options(args: argparse.Namespace) -> api.CheckOptions:
         socket_messages=tuple(args.socket_messages), socket_closures=args.socket_closures,
         socket_timeouts=not args.no_socket_timeouts, file_lines=tuple(args.file_lines),
         automata=_pairs(args.automaton, "--automaton"), backend=args.backend,
-        max_states=args.max_states, max_seconds=args.max_seconds)
+        max_states=args.max_states, max_seconds=args.max_seconds,
+        reductions=reduction.from_arguments(args),
+        storage=storage_options.storage_from_arguments(args))
 
 
 def prepare_model(args: argparse.Namespace) -> api.Model:

@@ -56,6 +56,7 @@ def execute(args: argparse.Namespace) -> int:
     if writer is None:
         raise error(USAGE, f"-o {quoted(args.output)}: the suffix picks the format; use one of "
                     f"{', '.join(WRITERS)}")
+    args.no_reduce = True        # the graph of the program as written: one edge per instruction
     model = prepare_model(args)
     bounds = dict(max_states=args.max_states, max_seconds=args.max_seconds)
     from ..check import Progress

@@ -97,7 +97,9 @@ def _model(document: dict, path: str):
         raise error(TRACE_FILE, f"'{path}' does not record the check command that wrote it "
                     "(reports of rapidmc check --format json do)")
     try:
-        return prepare_model(build_parser().parse_args(command))
+        args = build_parser().parse_args(command)
+        args.no_reduce = True     # a saved trace lists every instruction: replay them one by one
+        return prepare_model(args)
     except UserError as exc:
         note = (f"the program is rebuilt from the check command recorded in '{path}' "
                 f"({' '.join(command)}): run replay from the directory check ran in")

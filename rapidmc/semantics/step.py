@@ -125,6 +125,9 @@ class CheckConfig:
                 lazy[signal.index] = (signal.name, domain)
         self.free_inputs = tuple(free)
         self.lazy_inputs = lazy
+        # (routine, pc) -> visible, for instructions that join the step before them
+        # (reduction.merging); empty: one instruction per step
+        self.merge_points: dict = {}
         # every combination of free input values, in the order the chooser enumerates them
         self.input_valuations = tuple(itertools.product(*(d for _, _, d in free)))
         # per valuation: pvector.mset arguments and the label part naming the values
@@ -295,8 +298,61 @@ def step(program: Program, state: State, chooser: Chooser) -> Transition:
         m.io = InputView(m.io, chooser.config.lazy_inputs, m)
         m.lazy_values = {}
     span = execute_step(m)
+    if chooser.check_mode and chooser.config.merge_points and m.status == RUNNING:
+        span = _run_merged(m, chooser.config.merge_points, state.frames, span)
     output = "".join(line + "\n" for line in m.output) if m.output else ""
     return Transition(tuple(m.choices), span, m.to_state(), output, m.waiting)
+
+
+MERGED_STEP_LIMIT = 10_000
+
+
+def _run_merged(m: Machine, points: dict, frames_before: tuple, span):
+    """Go on executing merge points (see ``reduction.merging``) within this transition.
+
+    ``points`` maps a routine index to one kind per pc: 0 invisible, 1
+    visible, 2 invisible loop head (never joins), 3 never joins.  At most
+    one visible instruction runs per transition (the first one counts as
+    visible unless it is of kind 0 or 2), and no instruction that may read
+    a signal joins once a choice was made (each combination of choices
+    re-runs the whole transition).  Loop heads never join, so the program
+    counter only grows while merging.  Returns the span of the step, or
+    the tuple of every span executed when more than one instruction ran.
+    Stops as soon as the program waits, stops, raises, calls or returns,
+    or has interrupts or tasks.
+    """
+    if not frames_before:
+        return span
+    frame = frames_before[-1]
+    kinds = points.get(frame[0])
+    seen_visible = kinds is None or kinds[frame[1]] in (1, 3)
+    spans = [span]
+    errno = m.errno
+    depth = len(m.frames)                # calls and returns never join: it stays
+    routines = m.program.routines
+    for _ in range(MERGED_STEP_LIMIT):
+        frames = m.frames
+        if m.status != RUNNING or m.waiting or m.tasks or m.errno != errno or \
+                len(frames) != depth:
+            break
+        interrupts = m.interrupts
+        if interrupts.table or interrupts.pending or interrupts.scheduled:
+            break
+        frame = frames[-1]
+        kinds = points.get(frame[0])
+        if kinds is None:
+            break
+        kind = kinds[frame[1]]
+        if kind >= 2 or frame[3] != 0 or (kind == 1 and seen_visible):
+            break
+        if m.choices and routines[frame[0]].code[frame[1]].reads_io:
+            break                            # one choice point per transition (as in SPIN)
+        if kind == 1:
+            seen_visible = True
+        if m.lazy_values is not None:
+            m.lazy_values = {}               # each instruction reads inputs afresh
+        spans.append(run_instruction(m))
+    return spans[0] if len(spans) == 1 else tuple(spans)
 
 
 def execute_step(m: Machine):

@@ -1,0 +1,209 @@
+"""Interned model states in little memory: collapsed into component ids, in flat arrays.
+
+A model may split its states into a few components (``split_state`` and
+``join_state``; a RAPID state: call stacks, global data, signals, the
+rest).  Each distinct component is stored once, in a table of its own,
+and a state becomes the tuple of its component ids (SPIN's collapse
+compression): states that share their data but not their program counter
+share the stored data.  The first ``PRIMARY`` components (a model lists
+the most varying first) keep an id each; the ids of the others, which
+rarely change, are interned once more as one tail id.  The ids of all states lie in one
+``array`` (``width`` ints per state) and the index from key to state id is
+an open-addressing hash table in another ``array``, so a stored state
+costs a few dozen bytes instead of a Python tuple, a dict entry and an
+int object.  A model without ``split_state`` keeps its states whole in a
+dict.
+
+``memory_bytes()`` adds up what the table holds (arrays, component
+tables and the components themselves, estimated from their Python sizes).
+"""
+from __future__ import annotations
+
+import sys
+from array import array
+from typing import Hashable
+
+EMPTY = -1
+FIRST_CAPACITY = 1 << 10
+IDENTITY_LIMIT = 1 << 10
+PRIMARY = 2          # components with an id per state; the others share one tail id
+                     # (a stored state: 3 ids, see _find_or_add)
+
+
+class StateTable:
+    """``intern(state) -> (id, new)``, ``table[id] -> state``; see the module docstring."""
+
+    def __init__(self, system):
+        self._split = getattr(system, "split_state", None)
+        self._join = getattr(system, "join_state", None)
+        self._whole: dict[Hashable, int] = {}
+        self._whole_states: list[Hashable] = []
+        self._width = 0
+        self._components: list[dict] = []
+        self._values: list[list] = []
+        self._identity: list[dict] = []        # per component: id() of a stored part -> its id
+        self._scalars: dict = {}               # one object per distinct float or string
+        self._tails: dict[tuple, int] = {}     # ids of the components after PRIMARY -> tail id
+        self._tail_values: list[tuple] = []
+        self._ids = array("i")                 # width component ids per state
+        self._slots = array("i", [EMPTY]) * FIRST_CAPACITY
+        self._count = 0
+
+    def __len__(self) -> int:
+        return self._count
+
+    @property
+    def collapsed(self) -> bool:
+        return self._split is not None
+
+    @property
+    def known_ids(self) -> dict:
+        """state -> id for states kept whole (empty when states are collapsed)."""
+        return self._whole
+
+    # --------------------------------------------------------------- lookups
+    def intern(self, state: Hashable, add: bool = True) -> tuple[int, bool]:
+        """The id of ``state`` and whether it was new (id -1 when new and not ``add``)."""
+        if self._split is None:
+            state_id = self._whole.get(state)
+            if state_id is not None:
+                return state_id, False
+            if not add:
+                return EMPTY, True
+            state_id = self._whole[state] = len(self._whole_states)
+            self._whole_states.append(state)
+            self._count += 1
+            return state_id, True
+        parts = self._component_ids(self._split(state))
+        tail = parts[PRIMARY:]
+        tail_id = self._tails.get(tail)
+        if tail_id is None:
+            tail_id = self._tails[tail] = len(self._tail_values)
+            self._tail_values.append(tail)
+        return self._find_or_add(parts[0], parts[1], tail_id, add)
+
+    def __getitem__(self, state_id: int) -> Hashable:
+        if self._split is None:
+            return self._whole_states[state_id]
+        ids = self._ids
+        base = state_id * (PRIMARY + 1)
+        parts = tuple(ids[base:base + PRIMARY]) + self._tail_values[ids[base + PRIMARY]]
+        values = self._values
+        return self._join(tuple(values[i][part] for i, part in enumerate(parts)))
+
+    # -------------------------------------------------------------- internals
+    def _component_ids(self, parts: tuple) -> tuple:
+        if not self._width:
+            self._width = len(parts)
+            self._components = [{} for _ in parts]
+            self._values = [[] for _ in parts]
+            self._identity = [{} for _ in parts]
+        ids = []
+        append = ids.append
+        for index, part in enumerate(parts):
+            values = self._values[index]
+            if index >= PRIMARY:
+                # a rarely changing part handed on unchanged from a stored state is
+                # that very object: found by identity, without hashing its contents
+                part_id = self._identity[index].get(id(part), -1)
+                if part_id >= 0 and values[part_id] is part:
+                    append(part_id)
+                    continue
+            table = self._components[index]
+            part_id = table.get(part)
+            if part_id is None:
+                part = self._shared_scalars(part)
+                part_id = table[part] = len(values)
+                values.append(part)
+                if index >= PRIMARY and part_id < IDENTITY_LIMIT:
+                    self._identity[index][id(part)] = part_id
+            append(part_id)
+        return tuple(ids)
+
+    def _shared_scalars(self, part):
+        """A tuple part whose numbers and strings are the objects other parts hold already."""
+        if type(part) is not tuple:
+            return part
+        scalars = self._scalars
+        return tuple(scalars.setdefault(x, x) if type(x) is float or type(x) is str else x
+                     for x in part)
+
+    def _find_or_add(self, first: int, second: int, tail: int,
+                     add: bool) -> tuple[int, bool]:
+        slots, ids = self._slots, self._ids
+        mask = len(slots) - 1
+        position = hash((first, second, tail)) & mask
+        while True:
+            state_id = slots[position]
+            if state_id == EMPTY:
+                break
+            base = state_id * 3
+            if ids[base] == first and ids[base + 1] == second and ids[base + 2] == tail:
+                return state_id, False
+            position = (position + 1) & mask
+        if not add:
+            return EMPTY, True
+        state_id = self._count
+        slots[position] = state_id
+        ids.append(first)
+        ids.append(second)
+        ids.append(tail)
+        self._count += 1
+        if self._count * 2 > len(slots):
+            self._grow()
+        return state_id, True
+
+    def _grow(self) -> None:
+        slots = array("i", [EMPTY]) * (len(self._slots) * 2)
+        mask = len(slots) - 1
+        ids, width = self._ids, PRIMARY + 1
+        for state_id in range(self._count):
+            base = state_id * width
+            position = hash(tuple(ids[base:base + width])) & mask
+            while slots[position] != EMPTY:
+                position = (position + 1) & mask
+            slots[position] = state_id
+        self._slots = slots
+
+    # ----------------------------------------------------------------- memory
+    def memory_bytes(self) -> int:
+        """Bytes the table holds (components estimated from their Python sizes)."""
+        if self._split is None:
+            return sys.getsizeof(self._whole) + sys.getsizeof(self._whole_states) + \
+                sum(_size(state) for state in self._whole_states)
+        tables = sum(sys.getsizeof(t) + sys.getsizeof(v)
+                     for t, v in zip(self._components, self._values)) + \
+            sum(sys.getsizeof(i) for i in self._identity) + sys.getsizeof(self._scalars) + \
+            sys.getsizeof(self._tails) + sum(_size(t) for t in self._tail_values) + \
+            sum(sys.getsizeof(x) for x in self._scalars)
+        components = sum(_component_size(value) for values in self._values for value in values)
+        return (self._ids.buffer_info()[1] * self._ids.itemsize +
+                self._slots.buffer_info()[1] * self._slots.itemsize +
+                tables + components)
+
+
+def _component_size(part) -> int:
+    """Bytes of a stored component; its own numbers and strings are in the shared table."""
+    if type(part) is not tuple:
+        return _size(part)
+    seen: set = set()
+    return sys.getsizeof(part) + sum(_size(x, seen) for x in part
+                                     if type(x) is not float and type(x) is not str)
+
+
+def _size(value, seen: set | None = None) -> int:
+    """Python bytes of ``value`` and what it holds (shared parts counted once per call)."""
+    seen = set() if seen is None else seen
+    if id(value) in seen:
+        return 0
+    seen.add(id(value))
+    size = sys.getsizeof(value)
+    if isinstance(value, (str, bytes, int, float, bool)) or value is None:
+        return size
+    try:
+        items = list(value) if not isinstance(value, dict) else list(value.items())
+    except TypeError:
+        return size
+    if not isinstance(value, (tuple, list, dict)):
+        size += 8 * len(items)                 # a persistent vector's node slots
+    return size + sum(_size(item, seen) for item in items)

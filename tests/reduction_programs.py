@@ -1,0 +1,115 @@
+"""Small random RAPID programs with finite state spaces, for differential tests of reductions.
+
+``random_program(seed)`` writes a module: a few num counters kept small by
+MOD, bools, free digital inputs, a cycle counter and a log string nothing
+reads, a procedure with an IN and a VAR parameter, and a main loop of
+IF / compact IF / TEST / FOR / WHILE statements, divisions that may fail,
+and WaitDI that may block.  ``properties(seed)`` writes LTL properties over
+its data.  The same seed always gives the same text.
+"""
+from __future__ import annotations
+
+import random
+
+COUNTERS = ("a", "b", "c")
+FLAGS = ("f", "g")
+INPUTS = ("in0", "in1")
+
+
+def random_program(seed: int) -> str:
+    rng = random.Random(seed)
+    body = [_statement(rng, 2) for _ in range(rng.randint(2, 5))]
+    declarations = "\n".join(
+        [f"  VAR signaldi {name};" for name in INPUTS] +
+        [f"  VAR num {name} := 0;" for name in COUNTERS] +
+        [f"  VAR bool {name} := FALSE;" for name in FLAGS] +
+        ["  VAR num nCycles := 0;", '  VAR string lastLog := "";', "  VAR num scratch := 0;",
+         "  VAR bool toggle := FALSE;", "  VAR num shadow := 0;"])
+    # data nothing reads, with finitely many values (an unbounded cycle counter every
+    # fourth program: there only the reduced search can finish)
+    unread = ["toggle := NOT toggle;", "shadow := " + rng.choice(COUNTERS) + " + 1;",
+              'lastLog := "a=" + NumToStr(a, 0);']
+    if seed % 4 == 0:
+        unread += ["nCycles := nCycles + 1;", 'lastLog := "cycle " + NumToStr(nCycles, 0);']
+    body += rng.sample(unread, rng.randint(1, len(unread)))
+    aliases = "\n".join(f'    AliasIO "{name.upper()}", {name};' for name in INPUTS)
+    loop = "\n".join("      " + line for statement in body for line in statement.splitlines())
+    return f"""MODULE Random{seed}
+{declarations}
+  PROC bump(num amount, VAR num target)
+    VAR num calls := 0;
+    calls := calls + 1;
+    target := (target + amount) MOD 3;
+  ENDPROC
+  PROC main()
+    VAR num tmp := 0;
+{aliases}
+    WHILE TRUE DO
+{loop}
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+"""
+
+
+def properties(seed: int) -> list[str]:
+    rng = random.Random(seed * 7 + 1)
+    counter, other = rng.sample(COUNTERS, 2)
+    flag = rng.choice(FLAGS)
+    return [f'safe: G "{counter} < {rng.randint(1, 3)}"',
+            f'live: G F "{other} = 0"',
+            f"flag: G ({flag} -> F !{flag})",
+            f'next: G ("{counter} = 1" -> X "{counter} <> 0")']
+
+
+def _condition(rng: random.Random) -> str:
+    choice = rng.randrange(5)
+    if choice == 0:
+        return f"{rng.choice(INPUTS)} = 1"
+    if choice == 1:
+        return rng.choice(FLAGS)
+    if choice == 2:
+        return f"{rng.choice(COUNTERS)} {rng.choice(('<', '=', '>'))} {rng.randint(0, 2)}"
+    if choice == 3:
+        return f"NOT {rng.choice(FLAGS)} AND {rng.choice(INPUTS)} = 0"
+    return f"{rng.choice(('scratch', 'tmp'))} > {rng.randint(0, 2)}"
+
+
+def _simple(rng: random.Random) -> str:
+    counter = rng.choice(COUNTERS)
+    choice = rng.randrange(10)
+    if choice == 0:
+        return f"{counter} := ({counter} + 1) MOD {rng.randint(2, 3)};"
+    if choice == 1:
+        return f"{rng.choice(FLAGS)} := {_condition(rng)};"
+    if choice == 2:
+        return f"bump {rng.randint(1, 2)}, {counter};"
+    if choice == 3:
+        return f"scratch := {counter} * 2;"
+    if choice == 4:
+        return f"{counter} := 6 DIV ({counter} {rng.choice(('+', '-'))} 1);"
+    if choice == 5:
+        return f"WaitDI {rng.choice(INPUTS)}, 1;"
+    if choice == 6:
+        return f"{counter} := 0;"
+    if choice == 7:
+        return f'lastLog := lastLog + "x";'
+    if choice == 8:
+        return f"tmp := {counter} + 1;"
+    return f"{rng.choice(FLAGS)} := NOT {rng.choice(FLAGS)};"
+
+
+def _statement(rng: random.Random, depth: int) -> str:
+    choice = rng.randrange(6) if depth > 0 else 0
+    if choice <= 1:
+        return _simple(rng)
+    inner = "\n".join("  " + line for _ in range(rng.randint(1, 2))
+                      for line in _statement(rng, depth - 1).splitlines())
+    if choice == 2:
+        return f"IF {_condition(rng)} THEN\n{inner}\nENDIF"
+    if choice == 3:
+        return f"IF {_condition(rng)} {_simple(rng)}"
+    if choice == 4:
+        return f"FOR i FROM 1 TO {rng.randint(1, 2)} DO\n{inner}\nENDFOR"
+    counter = rng.choice(COUNTERS)
+    return f"TEST {counter}\nCASE 0:\n{inner}\nDEFAULT:\n  {_simple(rng)}\nENDTEST"

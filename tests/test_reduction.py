@@ -1,0 +1,323 @@
+"""Reductions (sliced data, merged steps) keep every verdict and shrink the state space.
+
+The differential tests run ``rapidmc check`` in-process with every reduction
+on and with ``--no-reduce`` on generated programs (tests/reduction_programs.py),
+on the data-driven check cases and on the case studies, and compare verdicts
+(where both searches finished).  The other tests pin what the analyses
+decide and what the counterexamples show.
+"""
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+from pathlib import Path
+
+import pytest
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from rapidmc import ast
+from rapidmc.cli import main
+from rapidmc.reduction import plan_reductions
+from rapidmc.reduction.relevance import find_slicing
+from rapidmc.reduction.totality import Totality
+from rapidmc.semantics.link import build
+from rapidmc.semantics.step import CheckConfig
+from rapidmc.syntax import parse_text
+
+from fuzz_programs import programs
+from reduction_programs import properties, random_program
+
+ROOT = Path(__file__).resolve().parent.parent
+CHECK_CASES = sorted(path for path in (ROOT / "tests" / "check").iterdir()
+                     if (path / "prog.mod").exists() and (path / "props.ltl").exists())
+UNKNOWN = "UNKNOWN"
+
+
+def check_json(argv: list[str]) -> dict[str, str]:
+    """Verdict per property of one in-process ``rapidmc check --format json`` run."""
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
+        main(["check", *argv, "--format", "json", "--quiet"])
+    document = json.loads(out.getvalue())
+    return {p["name"]: p["verdict"] for p in document["properties"]}
+
+
+def assert_same_verdicts(reduced: dict[str, str], plain: dict[str, str]) -> None:
+    assert reduced.keys() == plain.keys()
+    for name, verdict in plain.items():
+        if UNKNOWN not in (verdict, reduced[name]):
+            assert reduced[name] == verdict, name
+
+
+def counters(n: int, statistics: bool = False) -> str:
+    inputs = "\n".join(f"  VAR signaldi in{i};\n  VAR num c{i} := 0;" for i in range(n))
+    aliases = "\n".join(f'    AliasIO "IN{i}", in{i};' for i in range(n))
+    body = "\n".join(f"      IF in{i} = 1 c{i} := (c{i} + 1) MOD 4;" for i in range(n))
+    extra = data = ""
+    if statistics:
+        data = '  VAR num nCycles := 0;\n  VAR string lastLog := "";\n'
+        extra = '      nCycles := nCycles + 1;\n      lastLog := "cycle " + NumToStr(nCycles, 0);\n'
+    return (f"MODULE Counters\n{inputs}\n{data}  PROC main()\n{aliases}\n    WHILE TRUE DO\n"
+            f"{body}\n{extra}    ENDWHILE\n  ENDPROC\nENDMODULE\n")
+
+
+def states_of(tmp_path: Path, text: str, formula: str, *flags: str) -> tuple[str, int]:
+    path = tmp_path / "prog.mod"
+    path.write_text(text)
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
+        main(["check", str(path), "--formula", formula, "--format", "json", "--quiet", *flags])
+    checked = json.loads(out.getvalue())["properties"][-1]
+    return checked["verdict"], checked["stats"]["product_states"]
+
+
+# --- differential -------------------------------------------------------------
+
+
+@pytest.mark.parametrize("seed", range(30))
+def test_generated_programs_keep_their_verdicts(tmp_path, seed):
+    program = tmp_path / "prog.mod"
+    program.write_text(random_program(seed))
+    spec = tmp_path / "props.ltl"
+    spec.write_text("\n".join(properties(seed)) + "\n")
+    argv = [str(program), "--ltl", str(spec), "--max-states", "20000"]
+    assert_same_verdicts(check_json(argv), check_json(argv + ["--no-reduce"]))
+
+
+@settings(max_examples=80, derandomize=True, deadline=None, database=None,
+          suppress_health_check=list(HealthCheck))
+@given(programs(), st.randoms(use_true_random=False))
+def test_fuzz_programs_keep_their_verdicts(tmp_path_factory, program, rnd):
+    """The broad generator of tests/fuzz_programs.py: records, arrays, every parameter mode,
+    handlers, interrupts, waits (programs that fail the static checks are skipped)."""
+    path = tmp_path_factory.mktemp("fuzz") / "prog.mod"
+    path.write_text(program.text, encoding="latin-1")
+    argv = [str(path), "--max-states", "3000", "--max-seconds", "10"]
+    if program.atoms:
+        first, second = rnd.choice(program.atoms), rnd.choice(program.atoms)
+        argv += [f'--formula=s: G "{first}"', f'--formula=r: G ("{first}" -> F "{second}")']
+    try:
+        reduced = check_json(argv)
+    except json.JSONDecodeError:
+        return                               # a static error, not a verdict
+    assert_same_verdicts(reduced, check_json(argv + ["--no-reduce"]))
+
+
+@pytest.mark.parametrize("case", CHECK_CASES, ids=lambda path: path.name)
+def test_check_cases_keep_their_verdicts(case):
+    argv = [str(case / "prog.mod"), "--ltl", str(case / "props.ltl")]
+    for extra in ("env.mod", "env"):
+        if (case / extra).is_file():
+            argv += ["--env", str(case / extra)]
+    try:
+        reduced = check_json(argv)
+    except (SystemExit, json.JSONDecodeError):
+        pytest.skip("an input error, not a verdict")
+    assert_same_verdicts(reduced, check_json(argv + ["--no-reduce"]))
+
+
+@pytest.mark.parametrize("program, env, spec", [
+    ("case_studies/sorter/sorter_a.mod", "case_studies/sorter/plant.mod", "specs/sorter.ltl"),
+    ("case_studies/sorter/sorter_b.mod", "case_studies/sorter/plant.mod", "specs/sorter.ltl"),
+    ("case_studies/door/door_race.mod", "case_studies/door/plant.mod", "specs/door.ltl"),
+])
+def test_case_studies_keep_their_verdicts(program, env, spec):
+    argv = [str(ROOT / program), "--env", str(ROOT / env), "--ltl", str(ROOT / spec)]
+    assert_same_verdicts(check_json(argv), check_json(argv + ["--no-reduce"]))
+
+
+# --- what the reductions achieve ---------------------------------------------------
+
+
+def test_statistics_variant_holds_with_as_many_states_as_the_counters(tmp_path):
+    formula = 'bounded: G ("c0 < 4" & "c1 < 4" & "c2 < 4" & "c3 < 4" & "c4 < 4")'
+    plain = states_of(tmp_path, counters(5), formula)
+    with_statistics = states_of(tmp_path, counters(5, statistics=True), formula)
+    assert plain[0] == with_statistics[0] == "HOLDS"
+    assert with_statistics[1] == plain[1]
+
+
+def test_statistics_variant_without_slicing_is_bounded(tmp_path):
+    verdict, _ = states_of(tmp_path, counters(3, statistics=True), 'b: G "c0 < 4"',
+                           "--no-slice", "--max-states", "5000")
+    assert verdict == UNKNOWN
+
+
+@pytest.mark.parametrize("flags, states", [((), 195), (("--no-merge",), 451),
+                                           (("--no-reduce",), 451)])
+def test_merged_steps_store_fewer_states(tmp_path, flags, states):
+    formula = 'bounded: G ("c0 < 4" & "c1 < 4" & "c2 < 4")'
+    assert states_of(tmp_path, counters(3), formula, *flags) == ("HOLDS", states)
+
+
+def test_counterexample_lists_every_line_and_sliced_values(tmp_path):
+    path = tmp_path / "prog.mod"
+    path.write_text(counters(2, statistics=True))
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        main(["check", str(path), "--formula", 'P: G "c1 < 1"', "--quiet"])
+    text = out.getvalue()
+    assert "P: VIOLATED" in text
+    assert 'lastLog = "cycle 1"' in text and "nCycles = 1" in text
+    lines = [int(line.split("prog.mod:")[1].split()[0]) for line in text.splitlines()
+             if "prog.mod:" in line]
+    # in the loop, every statement appears: no line is skipped by a merged step
+    loop = [line for line in lines if line >= 10]
+    assert {10, 11, 12, 13, 14}.issubset(set(loop))
+
+
+# --- the analyses ---------------------------------------------------------------
+
+
+def linked(text: str):
+    return build(ast.Program(parse_text(text, "prog.mod")))
+
+
+def global_names(program, slots) -> set[str]:
+    return {program.globals[slot].name for slot in slots}
+
+
+def test_unread_counter_and_log_are_sliced_counters_are_not():
+    program = linked(counters(2, statistics=True))
+    slicing = find_slicing(program, ["c0 < 4"])
+    assert global_names(program, slicing.globals) == {"nCycles", "lastLog"}
+
+
+def test_data_an_atom_names_is_kept():
+    program = linked(counters(1, statistics=True))
+    slicing = find_slicing(program, ["nCycles > 3"])
+    assert global_names(program, slicing.globals) == {"lastLog"}
+
+
+@pytest.mark.parametrize("statement, sliced", [
+    ("x := x + 1;", True),                          # a num plus a small literal never fails
+    ("x := x * 2;", False),                         # may overflow: ERR_NUM_LIMIT
+    ("x := 1 / x;", False),                         # may divide by zero
+    ('s := "cycle " + NumToStr(x, 0);', True),      # at most 47 characters
+    ('s := s + "x";', False),                       # may exceed 80 characters
+    ("x := y;", True),                              # nothing reads x (y stays: a condition reads it)
+    ("TPWrite NumToStr(x, 0);", False),             # any call observes its arguments
+])
+def test_slicing_of_one_statement(statement, sliced):
+    text = f"""MODULE M
+  VAR num x := 0;
+  VAR num y := 0;
+  VAR string s := "";
+  PROC main()
+    WHILE TRUE DO
+      IF y > 2 y := 0;
+      {statement}
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+"""
+    program = linked(text)
+    names = global_names(program, find_slicing(program).globals)
+    target = "s" if statement.startswith("s :=") else "x"
+    assert (target in names) == sliced
+
+
+def test_properties_given_as_automata_disable_merging():
+    program = linked(counters(1))
+    config = CheckConfig(program, observed=set())
+    plan = plan_reductions(program, config, ["c0 < 4"], [None])
+    assert plan.merge_points == {}          # an automaton given as HOA: X may occur
+
+
+@pytest.mark.parametrize("expression, total", [
+    ("1 + 2", True), ("x + 1", True), ("x + y", False), ("x DIV 2", False),
+    ("NOT b AND b", True), ('"ab" + "cd"', True), ("NumToStr(x, 7)", False),
+])
+def test_totality(expression, total):
+    program = linked(f"""MODULE M
+  VAR num x := 0;
+  VAR num y := 0;
+  VAR bool b := FALSE;
+  PROC main()
+  ENDPROC
+ENDMODULE
+""")
+    routine = program.routines[program.entry]
+    expr = parse_text(f"MODULE E\n  PROC p()\n    TPWrite {expression} ;\n  ENDPROC\nENDMODULE\n",
+                 "e.mod")[0].routines[0].body[0].args[0].value
+    assert Totality(lambda name: routine.scope.lookup(name.key)).total(expr) == total
+
+
+DEAD_LOCAL = """MODULE M
+  VAR num x := 0;
+  PROC main()
+    VAR num t := 0;
+    WHILE TRUE DO
+      t := x + 1;
+      x := t MOD 3;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+"""
+
+
+@pytest.mark.parametrize("flags, states", [(("--no-merge",), 9), (("--no-merge", "--no-dead"), 11),
+                                           ((), 3), (("--no-dead",), 4)])
+def test_dead_values_are_reset(tmp_path, flags, states):
+    # t is written before it is read at the WHILE test: its old value is forgotten there
+    assert states_of(tmp_path, DEAD_LOCAL, 'P: G "x < 3"', *flags) == ("HOLDS", states)
+
+
+def test_liveness_of_a_local_along_the_loop():
+    from rapidmc.reduction.liveness import DeadData
+    program = linked(DEAD_LOCAL)
+    dead = DeadData(program, {"X"})
+    main = program.routines[program.entry]
+    t_slot = main.local_names.index("t")
+    lines = {pc: instruction.span.line for pc, instruction in enumerate(main.code)}
+    dead_at = {lines[pc] for pc, slots in enumerate(dead.locals[main.index]) if t_slot in slots}
+    assert dead_at == {5, 6, 9}          # the WHILE test, t := ..., ENDPROC
+
+
+BUSY_LOOP = """MODULE M
+  VAR num x := 0;
+  VAR bool toggle := FALSE;
+  PROC main()
+    WHILE TRUE DO
+      IF x > 5 x := 0;
+      toggle := NOT toggle;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+"""
+
+
+@pytest.mark.parametrize("flags", [(), ("--no-reduce",)])
+def test_a_loop_that_changes_only_sliced_data_is_no_deadlock(tmp_path, flags):
+    # reduced, every pass of the loop returns to the same stored state; the deadlock
+    # check still sees that single instructions move on
+    path = tmp_path / "prog.mod"
+    path.write_text(BUSY_LOOP)
+    assert check_json([str(path), "--formula", 'P: G "x < 6"', *flags])["no_deadlock"] == "HOLDS"
+
+
+FLOW_INTO_ATOM = """MODULE M
+  VAR signaldi in0;
+  VAR bool f := FALSE;
+  VAR bool g := FALSE;
+  PROC main()
+    AliasIO "IN0", in0;
+    WHILE TRUE DO
+      g := f;
+      f := NOT g;
+      WaitDI in0, 1;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+"""
+
+
+@pytest.mark.parametrize("flags", [(), ("--no-reduce",)])
+def test_data_flowing_into_an_atom_is_kept(tmp_path, flags):
+    # f is read only by `g := f` (total): it matters because the atom reads g
+    assert states_of(tmp_path, FLOW_INTO_ATOM, "flag: G (g -> F !g)", *flags)[0] == "VIOLATED"
+    program = linked(FLOW_INTO_ATOM)
+    assert "f" not in global_names(program, find_slicing(program, ["g"]).globals)
