@@ -40,8 +40,8 @@ class SmallProgram:
 def small_program(rng: random.Random) -> SmallProgram:
     procedures = [f"p{i}" for i in range(1, rng.randint(0, 2) + 1)]
     bodies = [_block(rng, procedures[i + 1:], depth=1) for i in range(len(procedures))]
-    main = _block(rng, procedures, depth=2)
-    if rng.random() < 0.5:
+    main = _block(rng, procedures, depth=2, least=3)
+    if rng.random() < 0.6:
         main = ["WHILE TRUE DO", *_indented(main), "ENDWHILE"]
     lines = ["MODULE Small",
              *(f"  VAR bool {name} := {rng.choice(('TRUE', 'FALSE'))};" for name in BOOLS),
@@ -69,20 +69,20 @@ def _indented(lines: list[str], margin: str = "  ") -> list[str]:
     return [margin + line for line in lines]
 
 
-def _block(rng: random.Random, procedures: list[str], depth: int) -> list[str]:
+def _block(rng: random.Random, procedures: list[str], depth: int, least: int = 1) -> list[str]:
     lines: list[str] = []
-    for _ in range(rng.randint(1, 4)):
+    for _ in range(rng.randint(least, 4)):
         lines += _statement(rng, procedures, depth)
     return lines
 
 
 def _statement(rng: random.Random, procedures: list[str], depth: int) -> list[str]:
-    kinds = ["assign", "assign", "assign", "output", "wait"]
+    kinds = ["assign", "assign", "assign", "assign", "output", "output", "wait"]
     if procedures:
         kinds += ["call", "call"]
     if depth > 0:
         kinds += ["if", "if", "while", "test"]
-    kinds += ["divide"] if rng.random() < 0.15 else []
+    kinds += ["divide"] if rng.random() < 0.1 else []
     kinds += ["exit"] if rng.random() < 0.05 else []
     kind = rng.choice(kinds)
     if kind == "assign":
@@ -90,7 +90,9 @@ def _statement(rng: random.Random, procedures: list[str], depth: int) -> list[st
     if kind == "output":
         return [f"SetDO {OUTPUT}, {rng.randint(0, 1)};"]
     if kind == "wait":
-        return [rng.choice((f"WaitDI {rng.choice(INPUTS)}, 1;", f"WaitUntil {_condition(rng)};"))]
+        if rng.random() < 0.5:
+            return [f"WaitDI {rng.choice(INPUTS)}, 1;"]
+        return [f"WaitUntil {_condition(rng)} OR DInput({rng.choice(INPUTS)}) = 1;"]
     if kind == "call":
         return [f"{rng.choice(procedures)};"]
     if kind == "divide":

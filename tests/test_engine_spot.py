@@ -30,13 +30,15 @@ from typing import Callable, Optional
 
 import pytest
 
+from ltl_cases import random_formulas as our_random_formulas
 from small_programs import small_program
 from spot_kripke import StateGraph, explore, kripke_automaton, lasso_word, run_of
+from test_engine_models import Graph
 from tool_requirements import require_tool
 from rapidmc import ast
 from rapidmc.check import HOLDS, VIOLATED, check_property
 from rapidmc.commands.check import _observed_inputs
-from rapidmc.ltl import BACKENDS, Formula, atoms_of, to_buchi
+from rapidmc.ltl import BACKENDS, Formula, atoms_of, parse_formula, to_buchi
 from rapidmc.ltl.lasso import holds_on_lasso
 from rapidmc.ltl.spot_backend import from_spot, spot_available, to_spot
 from rapidmc.ltl.syntax import Not
@@ -53,9 +55,9 @@ import spot  # noqa: E402  (only after the requirement above)
 
 ROOT = Path(__file__).resolve().parent.parent
 PROGRAM_SEED = 2026
-PROGRAM_COUNT = 60
+PROGRAM_COUNT = 200
 FORMULAS_PER_PROGRAM = 5
-ATOMS_PER_PROGRAM = 3
+ATOMS_PER_PROGRAM = 4
 MAX_STATES = 200_000            # far above every state graph here: no UNKNOWN expected
 CASE_STUDIES = [  # (program, environment, property file)
     ("sorter/sorter_a.mod", "sorter/plant.mod", "sorter.ltl"),
@@ -67,6 +69,9 @@ CASE_STUDIES = [  # (program, environment, property file)
     ("door/door_race.mod", "door/plant.mod", "door.ltl"),
 ]
 RANDOM_FORMULAS_PER_CASE_STUDY = 4
+CHECK_CASES = Path(__file__).resolve().parent / "check"
+TOY_ATOMS = ("p", "r")
+TOY_SEED, TOY_COUNT, FORMULAS_PER_TOY = 7, 100, 4
 
 
 @dataclass
@@ -146,7 +151,10 @@ def _rapidmc_problem(subject, formula, backend, negated, spot_violates, tally) -
         tally.verdicts[result.verdict] += 1
     if result.verdict == HOLDS:
         return "HOLDS, but Spot found a violating run" if spot_violates else None
-    subject.replay(result)
+    try:
+        subject.replay(result)
+    except AssertionError as exc:
+        return f"VIOLATED, but the counterexample does not replay: {exc}"
     ids = tuple([subject.graph.ids[step.state] for step in part]
                 for part in (result.prefix, result.cycle))
     if not subject.graph.is_run(*ids):
@@ -196,6 +204,47 @@ def case_study_subject(program: str, environment: str, spec: str):
     return subject, formulas
 
 
+def hand_checked_cases() -> list[Path]:
+    """The folders of tests/check/ that run with defaults: no options, no bad input."""
+    folders = []
+    for folder in sorted(CHECK_CASES.iterdir()):
+        expected = folder / "expected"
+        if (folder / "props.ltl").exists() and not (folder / "args").exists() and \
+                "ERROR" not in expected.read_text():
+            folders.append(folder)
+    return folders
+
+
+def hand_checked_subject(folder: Path):
+    """A tests/check/ case as a subject over its properties' atoms, and their formulas."""
+    properties = read_property_file(str(folder / "props.ltl"))
+    formulas = [p.formula for p in properties]
+    atoms = dict.fromkeys(a for f in formulas for a in atoms_of(f))
+    environment = folder / "env.mod"
+    subject = rapid_subject(folder.name, load_program([str(folder / "prog.mod")]), atoms,
+                            load_program([str(environment)]) if environment.exists() else None)
+    return subject, formulas
+
+
+def toy_subjects(seed: int, count: int):
+    """Seeded random graphs (``test_engine_models.Graph``) over atoms p and r: deadlocks
+    (states without successors) and several initial states included."""
+    rng = random.Random(seed)
+    for number in range(count):
+        size = rng.randint(1, 6)
+        edges = {n: [(f"t{i}", rng.randrange(size)) for i in range(rng.randint(0, 3))]
+                 for n in range(size)}
+        initial = tuple(dict.fromkeys(rng.randrange(size) for _ in range(rng.randint(1, 2))))
+        bits = [rng.randint(0, 3) for _ in range(size)]
+        yield Subject(f"graph_{number}", Graph(edges, initial), lambda atoms, bits=bits: (
+            lambda state: remapped(bits[state], TOY_ATOMS, atoms)), TOY_ATOMS), edges
+
+
+def remapped(bits: int, source: tuple, target: tuple) -> int:
+    """``bits`` over ``source`` atoms as bits over ``target`` (a subset of ``source``)."""
+    return sum(1 << i for i, atom in enumerate(target) if bits >> source.index(atom) & 1)
+
+
 def assert_agreement(tally: Tally, texts: dict) -> None:
     if tally.rapidmc_wrong:
         name, formula, backend, problem = tally.rapidmc_wrong[0]
@@ -235,3 +284,89 @@ def test_engine_agrees_with_spot_on_case_studies(program, environment, spec):
     print(subject.name, tally.summary(), len(subject.graph.states), "states")
     assert_agreement(tally, {})
     assert not tally.spot_wrong
+
+
+@pytest.mark.parametrize("folder", hand_checked_cases(), ids=lambda folder: folder.name)
+def test_engine_agrees_with_spot_on_hand_checked_cases(folder):
+    subject, formulas = hand_checked_subject(folder)
+    tally = Tally()
+    for formula in formulas:
+        compare(subject, formula, tally)
+    assert_agreement(tally, {})
+    assert not tally.spot_wrong
+
+
+def test_engine_agrees_with_spot_on_graphs_with_deadlocks_and_several_initial_states():
+    tally, texts = Tally(), {}
+    for subject, edges in toy_subjects(TOY_SEED, TOY_COUNT):
+        texts[subject.name] = f"edges {edges}, initial {subject.system.initial}"
+        for formula in our_random_formulas(TOY_SEED + len(texts), FORMULAS_PER_TOY, TOY_ATOMS):
+            compare(subject, formula, tally)
+    print(tally.summary())
+    assert_agreement(tally, texts)
+    assert not tally.spot_wrong
+    assert min(tally.verdicts.values()) >= tally.pairs // 5, tally.verdicts
+    shapes = [(subject.system, edges) for subject, edges in toy_subjects(TOY_SEED, TOY_COUNT)]
+    assert sum(any(not out for out in edges.values()) for _, edges in shapes) >= TOY_COUNT // 4
+    assert sum(len(system.initial) > 1 for system, _ in shapes) >= TOY_COUNT // 4
+
+
+TINY = """MODULE Tiny
+  VAR num x := 0;
+  PROC main()
+    x := 1;
+  ENDPROC
+ENDMODULE
+"""
+
+
+def test_kripke_words_start_at_the_initial_state_and_end_in_a_repeating_final_state():
+    subject = rapid_subject("tiny.mod", ast.Program(parse_text(TINY, "tiny.mod")),
+                            ("x = 0", "x = 1", "Ended()"))
+    # x := 1, then main's ENDPROC, then the ended state for ever
+    assert subject.graph.successors == ((1,), (2,), (2,))
+    assert subject.letters(range(3)) == [{"x = 0"}, {"x = 1"}, {"x = 1", "Ended()"}]
+
+    def spot_holds(text: str) -> bool:
+        negated = spot.translate(spot.formula.Not(to_spot(parse_formula(text))))
+        return run_of(subject.kripke, negated) is None
+    assert spot_holds('"x = 0" & X "x = 1" & X X G "Ended()"')
+    assert not spot_holds('X "x = 0"')
+    assert not spot_holds('G !"Ended()"')
+
+
+def mutant_tally(monkeypatch, mutate) -> Tally:
+    """The comparison over some generated programs with the checker broken by ``mutate``."""
+    mutate(monkeypatch)
+    tally = Tally()
+    for subject, _ in itertools.islice(generated_subjects(), 20):
+        for formula in random_formulas(subject.atoms, PROGRAM_SEED, 3):
+            compare(subject, formula, tally)
+    return tally
+
+
+def test_comparison_catches_a_checker_that_forgets_the_negation(monkeypatch):
+    def forget_negation(patch):
+        patch.setattr(__import__(__name__), "to_buchi",
+                      lambda negated, backend, real=to_buchi: real(negated.operand,
+                                                                   backend=backend))
+    assert mutant_tally(monkeypatch, forget_negation).rapidmc_wrong
+
+
+def test_comparison_catches_a_checker_that_skips_the_initial_state(monkeypatch):
+    class SecondStateFirst:
+        def __init__(self, system):
+            self.system = system
+
+        def initial_states(self):
+            return [after for state in self.system.initial_states()
+                    for _, after in self.system.successors(state)]
+
+        def successors(self, state):
+            return self.system.successors(state)
+
+    def skip_initial_state(patch):
+        patch.setattr(__import__(__name__), "check_property",
+                      lambda system, *args, real=check_property, **kwargs: real(
+                          SecondStateFirst(system), *args, **kwargs))
+    assert mutant_tally(monkeypatch, skip_initial_state).rapidmc_wrong
