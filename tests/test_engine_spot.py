@@ -32,7 +32,6 @@ import pytest
 
 from ltl_cases import random_formulas as our_random_formulas
 from small_programs import small_program
-from spot_kripke import StateGraph, explore, kripke_automaton, lasso_word, run_of
 from test_engine_models import Graph
 from tool_requirements import require_tool
 from rapidmc import ast
@@ -52,6 +51,8 @@ require_tool(spot_available(), "RAPIDMC_REQUIRE_SPOT",
              "Spot's Python bindings are not installed (../shared/spot/install)")
 
 import spot  # noqa: E402  (only after the requirement above)
+from spot_kripke import (StateGraph, explore, kripke_automaton, lasso_word,  # noqa: E402
+                         run_of)
 
 ROOT = Path(__file__).resolve().parent.parent
 PROGRAM_SEED = 2026
