@@ -41,9 +41,9 @@ class StateGraph:
     successors: tuple[tuple[int, ...], ...]
 
     def is_run(self, prefix: Sequence[int], cycle: Sequence[int]) -> bool:
-        """Whether ``prefix cycle^ω`` (state ids) is a run from an initial state."""
+        """Whether ``prefix cycle^ω`` (state ids; -1 for no state) is a run from an initial state."""
         path = list(prefix) + list(cycle)
-        return bool(cycle) and path[0] in self.initial and all(
+        return bool(cycle) and path[0] in self.initial and -1 not in path and all(
             after in self.successors[before]
             for before, after in zip(path, path[1:] + [cycle[0]]))
 

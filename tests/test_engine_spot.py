@@ -126,14 +126,23 @@ class Tally:
                 f"Spot wrong on {len(self.spot_wrong)}: {self.spot_wrong[:3]}")
 
 
+def spot_negation(formula: Formula):
+    """Spot's automaton (its default, transition-based) of the formula's negation."""
+    return spot.translate(spot.formula.Not(to_spot(formula)))
+
+
 def compare(subject: Subject, formula: Formula, tally: Tally) -> None:
     """Check ``formula`` on ``subject`` with both backends and hold the verdicts against Spot."""
-    negated = spot.translate(spot.formula.Not(to_spot(formula)))
+    negated = spot_negation(formula)
     spot_run = run_of(subject.kripke, negated)
-    spot_violates = spot_run is not None and subject.graph.is_run(*spot_run) and \
-        not holds_on_lasso(formula, *map(subject.letters, spot_run))
-    if spot_run is not None and not spot_violates:
-        tally.spot_wrong.append((subject.name, str(formula), "word satisfies the formula"))
+    spot_violates = False
+    if spot_run is not None:
+        if not subject.graph.is_run(*spot_run):
+            tally.spot_wrong.append((subject.name, str(formula), "its run is not a path"))
+        elif holds_on_lasso(formula, *map(subject.letters, spot_run)):
+            tally.spot_wrong.append((subject.name, str(formula), "its word satisfies φ"))
+        else:
+            spot_violates = True
     tally.pairs += 1
     for backend in BACKENDS:
         problem = _rapidmc_problem(subject, formula, backend, negated, spot_violates, tally)
@@ -148,6 +157,8 @@ def _rapidmc_problem(subject, formula, backend, negated, spot_violates, tally) -
                             max_states=MAX_STATES)
     if result.verdict not in (HOLDS, VIOLATED):
         return f"verdict {result.verdict} ({result.reason})"
+    if result.stats.model_states > len(subject.graph.states):
+        return f"{result.stats.model_states} model states, {len(subject.graph.states)} reachable"
     if backend == BACKENDS[0]:
         tally.verdicts[result.verdict] += 1
     if result.verdict == HOLDS:
@@ -156,7 +167,7 @@ def _rapidmc_problem(subject, formula, backend, negated, spot_violates, tally) -
         subject.replay(result)
     except AssertionError as exc:
         return f"VIOLATED, but the counterexample does not replay: {exc}"
-    ids = tuple([subject.graph.ids[step.state] for step in part]
+    ids = tuple([subject.graph.ids.get(step.state, -1) for step in part]
                 for part in (result.prefix, result.cycle))
     if not subject.graph.is_run(*ids):
         return "VIOLATED, but the counterexample is not a run of the state graph"
@@ -170,7 +181,6 @@ def _rapidmc_problem(subject, formula, backend, negated, spot_violates, tally) -
     if not word.intersects(spot.product(subject.kripke, negated)):
         return "Spot rejects the counterexample as a word of Kripke x not-property"
     return None
-
 
 
 # --- the subjects and their formulas ----------------------------------------------------
@@ -371,3 +381,13 @@ def test_comparison_catches_a_checker_that_skips_the_initial_state(monkeypatch):
                       lambda system, *args, real=check_property, **kwargs: real(
                           SecondStateFirst(system), *args, **kwargs))
     assert mutant_tally(monkeypatch, skip_initial_state).rapidmc_wrong
+
+
+def test_comparison_blames_spot_when_spot_is_wrong(monkeypatch):
+    def spot_forgets_the_negation(patch):
+        patch.setattr(__import__(__name__), "spot_negation",
+                      lambda formula: spot.translate(to_spot(formula)))
+    tally = mutant_tally(monkeypatch, spot_forgets_the_negation)
+    assert not tally.rapidmc_wrong
+    reasons = {reason for _, _, reason in tally.spot_wrong}
+    assert reasons == {"its word satisfies φ", "missed rapidmc's violation"}
