@@ -1,21 +1,31 @@
 """Spot as the reference for the engine: the checker's verdicts against Spot's emptiness check.
 
-For seeded random programs (``small_programs``) and the case studies, the
-program's whole reachable state graph is explored with the checker's own
-successor function and atom evaluation (set up as ``rapidmc check`` sets
-them up), exported as a Spot automaton (``spot_kripke``), and intersected
-by Spot with Spot's automaton of the negated property.  For every
-program/formula pair and both LTL backends:
+A *subject* is a model prepared as ``rapidmc check`` prepares it: its
+whole reachable state graph is explored with the checker's own successor
+function and atom evaluation, exported as a Spot automaton
+(``spot_kripke``), and intersected by Spot with Spot's automaton of the
+negated property.  For every subject/formula pair and both LTL backends:
 
 * rapidmc says HOLDS exactly when Spot's product is empty;
 * a VIOLATED verdict comes with a lasso that replays through the step
-  function, that Spot accepts as a word of Kripke × ¬property, and on
-  which the formula is false (``holds_on_lasso``, a third method).
+  function, is a run of the explored graph, is accepted by Spot as a word
+  of Kripke × ¬property, and falsifies the formula (``holds_on_lasso``,
+  a third method).
+
+Subjects: 200 seeded small programs (``small_programs``) with 5
+``spot.randltl`` formulas each; the case studies with their specs (whose
+verdicts and state counts must also be those of ``test_case_studies``)
+and a few random formulas; the hand-checked cases of tests/check/ (their
+expected verdicts too); random graphs with deadlocks and several initial
+states; and, with the engine's caches evicted at every step, bounded
+searches (UNKNOWN allowed, HOLDS and VIOLATED still right).
 
 Where Spot and rapidmc disagree, the third method decides: a word Spot
 finds is read back as a path of the explored graph and the formula is
-evaluated on it.  Spot being wrong is reported, not failed; rapidmc being
-wrong fails.
+evaluated on it.  Spot being wrong is reported (``Tally.spot_wrong``),
+not failed; rapidmc being wrong fails.  Two deliberately broken checkers
+and a deliberately broken Spot show that each side's errors are caught
+and blamed on the right side.
 
 Without Spot the tests skip, unless RAPIDMC_REQUIRE_SPOT=1 (CI).
 """
@@ -32,6 +42,8 @@ import pytest
 
 from ltl_cases import random_formulas as our_random_formulas
 from small_programs import small_program
+from test_case_studies import CASES      # the case studies and their verdicts
+from test_check_cases import load_case
 from test_engine_models import Graph
 from tool_requirements import require_tool
 from rapidmc import ast
@@ -61,15 +73,6 @@ PROGRAM_COUNT = 200
 FORMULAS_PER_PROGRAM = 5
 ATOMS_PER_PROGRAM = 4
 MAX_STATES = 200_000            # far above every state graph here: no UNKNOWN expected
-CASE_STUDIES = [  # (program, environment, property file)
-    ("sorter/sorter_a.mod", "sorter/plant.mod", "sorter.ltl"),
-    ("sorter/sorter_b.mod", "sorter/plant.mod", "sorter.ltl"),
-    ("sorter/sorter_c.mod", "sorter/plant.mod", "sorter.ltl"),
-    ("sorter/sorter_a.mod", "sorter/variants/plant_reset_on_arrival.mod", "sorter.ltl"),
-    ("sorter/sorter_a.mod", "sorter/variants/plant_sensors_forget.mod", "sorter.ltl"),
-    ("door/door_safe.mod", "door/plant.mod", "door.ltl"),
-    ("door/door_race.mod", "door/plant.mod", "door.ltl"),
-]
 RANDOM_FORMULAS_PER_CASE_STUDY = 4
 CHECK_CASES = Path(__file__).resolve().parent / "check"
 TOY_ATOMS = ("p", "r")
@@ -134,11 +137,12 @@ def spot_negation(formula: Formula):
 
 
 def compare(subject: Subject, formula: Formula, tally: Tally,
-            max_states: Optional[int] = None) -> None:
+            max_states: Optional[int] = None) -> dict[str, str]:
     """Check ``formula`` on ``subject`` with both backends and hold the verdicts against Spot.
 
-    With ``max_states`` the search is bounded and may answer UNKNOWN, but
-    its HOLDS and VIOLATED must still be right.
+    Returns the verdict of each backend.  With ``max_states`` the search is
+    bounded and may answer UNKNOWN, but its HOLDS and VIOLATED must still
+    be right.
     """
     negated = spot_negation(formula)
     spot_run = run_of(subject.kripke, negated)
@@ -151,21 +155,23 @@ def compare(subject: Subject, formula: Formula, tally: Tally,
         else:
             spot_violates = True
     tally.pairs += 1
+    verdicts = {}
     for backend in BACKENDS:
-        problem = _rapidmc_problem(subject, formula, backend, negated, spot_violates, tally,
+        buchi = to_buchi(Not(formula), backend=backend)
+        result = check_property(subject.system, buchi, subject.valuation_of(buchi.atoms),
+                                max_states=max_states or MAX_STATES)
+        verdicts[backend] = result.verdict
+        problem = _rapidmc_problem(subject, formula, result, negated, spot_violates, tally,
                                    max_states)
         if problem is not None:
             tally.rapidmc_wrong.append((subject.name, str(formula), backend, problem))
+    tally.verdicts[verdicts[BACKENDS[0]]] += 1
+    return verdicts
 
 
-def _rapidmc_problem(subject, formula, backend, negated, spot_violates, tally,
+def _rapidmc_problem(subject, formula, result, negated, spot_violates, tally,
                      max_states) -> Optional[str]:
-    """What is wrong with rapidmc's answer for one backend (None: nothing)."""
-    buchi = to_buchi(Not(formula), backend=backend)
-    result = check_property(subject.system, buchi, subject.valuation_of(buchi.atoms),
-                            max_states=max_states or MAX_STATES)
-    if backend == BACKENDS[0]:
-        tally.verdicts[result.verdict] += 1
+    """What is wrong with rapidmc's answer ``result`` (None: nothing)."""
     if result.verdict == UNKNOWN:
         return None if max_states is not None else f"UNKNOWN ({result.reason})"
     if result.stats.model_states > len(subject.graph.states):
@@ -213,37 +219,20 @@ def generated_subjects():
             program.text
 
 
-def case_study_subject(program: str, environment: str, spec: str):
-    """The case study as a subject over its spec's atoms, and the spec's formulas."""
-    properties = read_property_file(str(ROOT / "specs" / spec))
-    formulas = [p.formula for p in properties]
-    atoms = dict.fromkeys(a for f in formulas for a in atoms_of(f))
-    subject = rapid_subject(f"{program} with {environment}",
-                            load_program([str(ROOT / "case_studies" / program)]), atoms,
-                            load_program([str(ROOT / "case_studies" / environment)]))
-    return subject, formulas
+def file_subject(program: Path, environment: Optional[Path], property_file: Path):
+    """A program (and environment) file over the atoms of a property file, and its properties."""
+    properties = read_property_file(str(property_file))
+    atoms = dict.fromkeys(a for p in properties for a in atoms_of(p.formula))
+    subject = rapid_subject(program.name, load_program([str(program)]), atoms,
+                            load_program([str(environment)]) if environment else None)
+    return subject, properties
 
 
-def hand_checked_cases() -> list[Path]:
-    """The folders of tests/check/ that run with defaults: no options, no bad input."""
-    folders = []
-    for folder in sorted(CHECK_CASES.iterdir()):
-        expected = folder / "expected"
-        if (folder / "props.ltl").exists() and not (folder / "args").exists() and \
-                "ERROR" not in expected.read_text():
-            folders.append(folder)
-    return folders
-
-
-def hand_checked_subject(folder: Path):
-    """A tests/check/ case as a subject over its properties' atoms, and their formulas."""
-    properties = read_property_file(str(folder / "props.ltl"))
-    formulas = [p.formula for p in properties]
-    atoms = dict.fromkeys(a for f in formulas for a in atoms_of(f))
-    environment = folder / "env.mod"
-    subject = rapid_subject(folder.name, load_program([str(folder / "prog.mod")]), atoms,
-                            load_program([str(environment)]) if environment.exists() else None)
-    return subject, formulas
+def hand_checked_cases() -> list:
+    """The cases of tests/check/ that run with defaults: properties, no options, no bad input."""
+    cases = [load_case(folder) for folder in sorted(CHECK_CASES.iterdir())]
+    return [case for case in cases if (case.folder / "props.ltl").exists() and
+            not case.extra_args and case.error is None and case.xfail is None]
 
 
 def toy_subjects(seed: int, count: int):
@@ -293,28 +282,36 @@ def test_engine_agrees_with_spot_on_generated_programs():
         tally.verdicts
 
 
-@pytest.mark.parametrize("program, environment, spec", CASE_STUDIES,
-                         ids=[f"{p}+{e}" for p, e, _ in CASE_STUDIES])
-def test_engine_agrees_with_spot_on_case_studies(program, environment, spec):
-    subject, formulas = case_study_subject(program, environment, spec)
-    formulas += random_formulas(subject.atoms, len(subject.graph.states),
-                                RANDOM_FORMULAS_PER_CASE_STUDY)
+@pytest.mark.parametrize("key", CASES)
+def test_engine_agrees_with_spot_on_case_studies(key):
+    case = CASES[key]               # program, plant, spec, verdicts, reachable states
+    environment = ROOT / case.env
+    subject, properties = file_subject(ROOT / case.program, environment, ROOT / case.spec)
+    assert len(subject.graph.states) == case.reachable_states
     tally = Tally()
-    for formula in formulas:
+    verdicts = {p.name: compare(subject, p.formula, tally) for p in properties}
+    for formula in random_formulas(subject.atoms, case.reachable_states,
+                                   RANDOM_FORMULAS_PER_CASE_STUDY):
         compare(subject, formula, tally)
-    print(subject.name, tally.summary(), len(subject.graph.states), "states")
+    print(key, tally.summary(), case.reachable_states, "states")
     assert_agreement(tally, {})
     assert not tally.spot_wrong
+    assert verdicts == {name: dict.fromkeys(BACKENDS, verdict)
+                        for name, verdict in case.verdicts.items()}
 
 
-@pytest.mark.parametrize("folder", hand_checked_cases(), ids=lambda folder: folder.name)
-def test_engine_agrees_with_spot_on_hand_checked_cases(folder):
-    subject, formulas = hand_checked_subject(folder)
+@pytest.mark.parametrize("case", hand_checked_cases(), ids=lambda case: case.name)
+def test_engine_agrees_with_spot_on_hand_checked_cases(case):
+    environment = case.folder / "env.mod"
+    subject, properties = file_subject(case.folder / "prog.mod",
+                                       environment if environment.exists() else None,
+                                       case.folder / "props.ltl")
     tally = Tally()
-    for formula in formulas:
-        compare(subject, formula, tally)
+    verdicts = {p.name: compare(subject, p.formula, tally) for p in properties}
     assert_agreement(tally, {})
     assert not tally.spot_wrong
+    assert verdicts == {name: dict.fromkeys(BACKENDS, verdict)
+                        for name, verdict in case.verdicts.items() if name in verdicts}
 
 
 def test_engine_agrees_with_spot_on_graphs_with_deadlocks_and_several_initial_states():
