@@ -4,7 +4,10 @@ A *subject* is a model prepared as ``rapidmc check`` prepares it: its
 whole reachable state graph is explored with the checker's own successor
 function and atom evaluation, exported as a Spot automaton
 (``spot_kripke``), and intersected by Spot with Spot's automaton of the
-negated property.  For every subject/formula pair and both LTL backends:
+negated property.  For every subject/formula pair and each way the checker
+gets the automaton of the negation (both LTL backends, and Spot's
+transition-based Büchi automaton read from HOA, as ``--automaton`` reads
+a user's):
 
 * rapidmc says HOLDS exactly when Spot's product is empty;
 * a VIOLATED verdict comes with a lasso that replays through the step
@@ -50,7 +53,7 @@ from rapidmc import ast
 from rapidmc.check import HOLDS, UNKNOWN, VIOLATED, check_property
 from rapidmc.check import store
 from rapidmc.commands.check import _observed_inputs
-from rapidmc.ltl import BACKENDS, Formula, atoms_of, parse_formula, to_buchi
+from rapidmc.ltl import BACKENDS, Buchi, Formula, atoms_of, parse_formula, read_hoa, to_buchi
 from rapidmc.ltl.lasso import holds_on_lasso
 from rapidmc.ltl.spot_backend import from_spot, spot_available, to_spot
 from rapidmc.ltl.syntax import Not
@@ -72,6 +75,8 @@ PROGRAM_SEED = 2026
 PROGRAM_COUNT = 200
 FORMULAS_PER_PROGRAM = 5
 ATOMS_PER_PROGRAM = 4
+FROM_HOA = "hoa"
+CHECKERS = (*BACKENDS, FROM_HOA)   # how the checker gets the automaton of the negation
 MAX_STATES = 200_000            # far above every state graph here: no UNKNOWN expected
 RANDOM_FORMULAS_PER_CASE_STUDY = 4
 CHECK_CASES = Path(__file__).resolve().parent / "check"
@@ -127,7 +132,7 @@ class Tally:
     def summary(self) -> str:
         counts = ", ".join(f"{n} {verdict}" for verdict, n in self.verdicts.items() if n)
         return (f"{self.pairs} program/formula pairs, {counts} (built-in backend; each pair "
-                f"checked with both); "
+                f"also checked with the Spot backend and Spot's automaton read from HOA); "
                 f"Spot wrong on {len(self.spot_wrong)}: {self.spot_wrong[:3]}")
 
 
@@ -156,17 +161,25 @@ def compare(subject: Subject, formula: Formula, tally: Tally,
             spot_violates = True
     tally.pairs += 1
     verdicts = {}
-    for backend in BACKENDS:
-        buchi = to_buchi(Not(formula), backend=backend)
+    for checker in CHECKERS:
+        buchi = negation_automaton(formula, checker, negated)
         result = check_property(subject.system, buchi, subject.valuation_of(buchi.atoms),
                                 max_states=max_states or MAX_STATES)
-        verdicts[backend] = result.verdict
+        verdicts[checker] = result.verdict
         problem = _rapidmc_problem(subject, formula, result, negated, spot_violates, tally,
                                    max_states)
         if problem is not None:
-            tally.rapidmc_wrong.append((subject.name, str(formula), backend, problem))
-    tally.verdicts[verdicts[BACKENDS[0]]] += 1
+            tally.rapidmc_wrong.append((subject.name, str(formula), checker, problem))
+    tally.verdicts[verdicts[CHECKERS[0]]] += 1
     return verdicts
+
+
+def negation_automaton(formula: Formula, checker: str, negated) -> Buchi:
+    """The automaton the checker searches with: a backend's translation of ¬φ, or (as
+    ``--automaton`` would read it) Spot's transition-based Büchi automaton of ¬φ in HOA."""
+    if checker == FROM_HOA:
+        return read_hoa(spot.degeneralize_tba(negated).to_str("hoa"), "<spot>")
+    return to_buchi(Not(formula), backend=checker)
 
 
 def _rapidmc_problem(subject, formula, result, negated, spot_violates, tally,
@@ -296,7 +309,7 @@ def test_engine_agrees_with_spot_on_case_studies(key):
     print(key, tally.summary(), case.reachable_states, "states")
     assert_agreement(tally, {})
     assert not tally.spot_wrong
-    assert verdicts == {name: dict.fromkeys(BACKENDS, verdict)
+    assert verdicts == {name: dict.fromkeys(CHECKERS, verdict)
                         for name, verdict in case.verdicts.items()}
 
 
@@ -310,7 +323,7 @@ def test_engine_agrees_with_spot_on_hand_checked_cases(case):
     verdicts = {p.name: compare(subject, p.formula, tally) for p in properties}
     assert_agreement(tally, {})
     assert not tally.spot_wrong
-    assert verdicts == {name: dict.fromkeys(BACKENDS, verdict)
+    assert verdicts == {name: dict.fromkeys(CHECKERS, verdict)
                         for name, verdict in case.verdicts.items() if name in verdicts}
 
 
@@ -396,7 +409,8 @@ def test_comparison_blames_spot_when_spot_is_wrong(monkeypatch):
         patch.setattr(__import__(__name__), "spot_negation",
                       lambda formula: spot.translate(to_spot(formula)))
     tally = mutant_tally(monkeypatch, spot_forgets_the_negation)
-    assert not tally.rapidmc_wrong
+    # only the checker that searched with Spot's (broken) automaton went wrong
+    assert {checker for _, _, checker, _ in tally.rapidmc_wrong} == {FROM_HOA}
     reasons = {reason for _, _, reason in tally.spot_wrong}
     assert reasons == {"its word satisfies φ", "missed rapidmc's violation"}
 
