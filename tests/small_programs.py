@@ -7,15 +7,20 @@ one digital output: assignments, IF, WHILE, TEST, calls of up to two
 procedures (each calls only procedures defined after it, so there is no
 recursion), waits, now and then an integer division that fails when its
 divisor is 0, or an EXIT.  ``main`` is either a sequence (the program
-ends) or a ``WHILE TRUE`` loop around one.  The state spaces stay in the
-tens to hundreds of states, so a test can explore them whole.
+ends) or a ``WHILE TRUE`` loop around one.  Some programs come with an
+environment module that drives di2 (set in ``init``, possibly to either
+value, and after every step from a counter, a random choice or the
+program's output).  The state spaces stay in the tens to hundreds of
+states, so a test can explore them whole.
 
-``SmallProgram.atoms`` are the atoms (as ``ltl.Atom`` names) a property may use: bool data, num
-comparisons, the signals the program uses, and location atoms (``Ended()``, ``Failed()``,
-``InRoutine``, ``AtLine`` of a line of the program).
+``SmallProgram.atoms`` are the atoms (as ``ltl.Atom`` names) a property
+may use: bool data, num comparisons, the signals the program uses, and
+location atoms (``Ended()``, ``Failed()``, ``InRoutine``, ``AtLine`` of a
+line of the program).
 
 Example::
 
+    >>> import random
     >>> program = small_program(random.Random(1))
     >>> program.text.startswith("MODULE Small")
     True
@@ -24,10 +29,12 @@ from __future__ import annotations
 
 import random
 from dataclasses import dataclass
+from typing import Optional
 
 BOOLS = ("b", "c")
 NUMS = ("x", "y")
 INPUTS = ("di1", "di2")
+DRIVEN = INPUTS[1]          # the input an environment module may drive
 OUTPUT = "do1"
 
 
@@ -35,6 +42,7 @@ OUTPUT = "do1"
 class SmallProgram:
     text: str
     atoms: tuple[str, ...]
+    environment: Optional[str] = None      # an environment module driving di2, if any
 
 
 def small_program(rng: random.Random) -> SmallProgram:
@@ -50,13 +58,34 @@ def small_program(rng: random.Random) -> SmallProgram:
     for name, body in zip(procedures, bodies):
         lines += [f"  PROC {name}()", *_indented(body, "    "), "  ENDPROC"]
     lines.append("ENDMODULE")
-    return SmallProgram("\n".join(lines) + "\n", _atoms(rng, lines, procedures))
+    text = "\n".join(lines) + "\n"
+    environment = None
+    if DRIVEN in text and rng.random() < 0.4:
+        environment = _environment(rng, reads_output=OUTPUT in text)
+    return SmallProgram(text, _atoms(rng, lines, procedures), environment)
+
+
+def _environment(rng: random.Random, reads_output: bool) -> str:
+    """A module that sets di2 in ``init`` (one or several initial states) and after every
+    step: from a counter of its own, a random choice, or the program's output."""
+    reaction = rng.choice([[f"SetDI {DRIVEN}, AnyNum(0, 1);"],
+                           ["count := (count + 1) MOD 3;", f"SetDI {DRIVEN}, Trunc(count / 2);"]])
+    if reads_output:
+        reaction = [f"IF DOutput({OUTPUT}) = 1 THEN",
+                    f"  SetDI {DRIVEN}, {rng.choice(('0', '1'))};",
+                    "ELSE", *_indented(reaction), "ENDIF"]
+    start = rng.choice(("0", "1", "AnyNum(0, 1)"))
+    lines = ["MODULE SmallEnv", f"  VAR signaldi {DRIVEN};", "  VAR num count := 0;",
+             *([f"  VAR signaldo {OUTPUT};"] if reads_output else []),
+             "  PROC init()", f"    SetDI {DRIVEN}, {start};", "  ENDPROC",
+             "  PROC react()", *_indented(reaction, "    "), "  ENDPROC", "ENDMODULE"]
+    return "\n".join(lines) + "\n"
 
 
 def _atoms(rng: random.Random, lines: list[str], procedures: list[str]) -> tuple[str, ...]:
     statement_lines = [number for number, line in enumerate(lines, start=1)
                        if line.endswith(";") and not line.lstrip().startswith("VAR")]
-    used_signals = [name.upper() for name in (INPUTS[0], OUTPUT)
+    used_signals = [name.upper() for name in (*INPUTS, OUTPUT)
                     if any(name in line for line in lines)]
     atoms = [*BOOLS, "x = 0", "x > 1", "y = 1", *used_signals, "Ended()", "Failed()",
              *(f"InRoutine({name})" for name in procedures)]

@@ -1,4 +1,4 @@
-"""A model's whole state graph as a Spot automaton, to hold the engine against Spot (no tests here).
+"""A model's whole state graph as a Spot automaton, the engine's reference (no tests here).
 
 ``explore(system)`` walks every reachable state of a ``TransitionSystem``
 breadth-first with the model's own ``successors`` (the function the
@@ -10,15 +10,18 @@ initial one).  The automaton has one extra start state ``start`` and one
 state per model state; the edge into model state ``s`` carries the
 valuation of ``s`` (from ``start`` into each initial state, and from each
 state into each of its successors), so a run of the automaton reads the
-valuations of the model states it visits, in order.  Every run is
-accepting (acceptance ``t``).
+valuations of the model states it visits, in order.  (Labelling each
+edge with its *target's* valuation, rather than its source's, needs no
+copy of the initial states' edges when there are several initial states,
+as an environment's ``init`` can make.)  Every run is accepting
+(acceptance ``t``).
 
 Terminal states: a finished RAPID program has a self-loop (its final state
 repeats for ever); a state without successors (a deadlock) is given one
 too, the stutter extension the engine uses (``check.model``).
 
-``run_of(product)`` reads an accepting run of Kripke × automaton back as a
-lasso of model-state ids, so that a third method (``holds_on_lasso``) can
+``run_of(kripke, negated)`` reads an accepting run of Kripke × automaton
+back as a lasso of model-state ids, so that a third method (``holds_on_lasso``) can
 judge a word Spot found.
 """
 from __future__ import annotations
@@ -41,7 +44,7 @@ class StateGraph:
     successors: tuple[tuple[int, ...], ...]
 
     def is_run(self, prefix: Sequence[int], cycle: Sequence[int]) -> bool:
-        """Whether ``prefix cycle^ω`` (state ids; -1 for no state) is a run from an initial state."""
+        """Whether ``prefix cycle^ω`` (state ids, -1: none) is a run from an initial state."""
         path = list(prefix) + list(cycle)
         return bool(cycle) and path[0] in self.initial and -1 not in path and all(
             after in self.successors[before]
@@ -95,7 +98,7 @@ def letter(variables: Sequence[int], bits: int):
 
 
 def lasso_word(kripke, atoms: Sequence[str], prefix: Sequence[int], cycle: Sequence[int]):
-    """The word ``prefix cycle^ω`` of valuations (bit masks over ``atoms``) as a Spot automaton."""
+    """The word ``prefix cycle^ω`` of valuations (bits over ``atoms``) as a Spot automaton."""
     variables = [kripke.register_ap(atom) for atom in atoms]
     word = spot.twa_word(kripke.get_dict())
     for bits in prefix:
@@ -106,7 +109,7 @@ def lasso_word(kripke, atoms: Sequence[str], prefix: Sequence[int], cycle: Seque
 
 
 def run_of(kripke, negated) -> Optional[tuple[list[int], list[int]]]:
-    """An accepting run of ``kripke`` × ``negated`` as model-state ids (prefix, cycle), or None."""
+    """An accepting run of ``kripke`` × ``negated`` as model-state ids (prefix, cycle)."""
     product = spot.product(kripke, negated)
     run = product.accepting_run()
     if run is None:

@@ -228,8 +228,10 @@ def generated_subjects():
         program = small_program(rng)
         atoms = rng.sample(program.atoms, ATOMS_PER_PROGRAM)
         name = f"small_{number}.mod"
-        yield rapid_subject(name, ast.Program(parse_text(program.text, name)), atoms), \
-            program.text
+        environment = program.environment and ast.Program(
+            parse_text(program.environment, f"small_{number}_env.mod"))
+        yield rapid_subject(name, ast.Program(parse_text(program.text, name)), atoms,
+                            environment), program.text + (program.environment or "")
 
 
 def file_subject(program: Path, environment: Optional[Path], property_file: Path):
@@ -279,12 +281,13 @@ def assert_agreement(tally: Tally, texts: dict) -> None:
 
 def test_engine_agrees_with_spot_on_generated_programs():
     started = time.perf_counter()
-    tally, texts, states = Tally(), {}, 0
+    tally, texts, states, several_initial = Tally(), {}, 0, 0
     for subject, text in generated_subjects():
         texts[subject.name] = text
         states += len(subject.graph.states)
-        for number, formula in enumerate(random_formulas(
-                subject.atoms, PROGRAM_SEED + len(texts), FORMULAS_PER_PROGRAM)):
+        several_initial += len(subject.graph.initial) > 1
+        for formula in random_formulas(subject.atoms, PROGRAM_SEED + len(texts),
+                                       FORMULAS_PER_PROGRAM):
             compare(subject, formula, tally)
     print(f"{tally.summary()}; {states} program states; "
           f"{time.perf_counter() - started:.1f} s")
@@ -293,6 +296,7 @@ def test_engine_agrees_with_spot_on_generated_programs():
     # both verdicts well represented, or the comparison would prove little
     assert min(tally.verdicts[HOLDS], tally.verdicts[VIOLATED]) >= tally.pairs // 5, \
         tally.verdicts
+    assert several_initial >= PROGRAM_COUNT // 20     # environments choosing in init
 
 
 @pytest.mark.parametrize("key", CASES)
