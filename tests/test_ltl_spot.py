@@ -15,6 +15,9 @@ from __future__ import annotations
 
 import itertools
 import random
+import resource
+import subprocess
+import sys
 
 import pytest
 
@@ -23,8 +26,9 @@ from tool_requirements import require_tool
 from rapidmc.cli import main
 from rapidmc.ltl import parse_formula, to_buchi, write_hoa
 from rapidmc.ltl.lasso import accepts_lasso, holds_on_lasso
-from rapidmc.ltl.spot_backend import from_spot, spot_automaton, spot_available, to_spot
-from rapidmc.ltl.syntax import atoms_of
+from rapidmc.ltl.spot_backend import (COMPLEMENT_LIMIT, checked_equivalent, from_spot,
+                                     spot_automaton, spot_available, to_spot)
+from rapidmc.ltl.syntax import Not, atoms_of
 from rapidmc.ltl.translate import translate
 
 require_tool(spot_available(), "RAPIDMC_REQUIRE_SPOT",
@@ -175,3 +179,34 @@ def test_disagreement_names_the_wrong_side():
     # and an automaton accepting too little (G b for F b) is caught by the completeness half
     found = disagreement(translate(parse_formula("G b")), spot.formula("F b"))
     assert found is not None and found[1] == "spot"
+
+
+# Spot 2.12.1 runs out of memory complementing this formula's 55-state automaton
+# (found by tests/test_engine_spot.py with bigger random formulas).
+COSTLY_TO_CHECK = 'G!FGF(X("p" <-> X((!"a" -> G"d") xor XG"x")) W "a")'
+
+
+def test_spot_backend_does_not_exhaust_memory_checking_a_large_automaton():
+    # In a child process with 1.5 GB of address space: a regression aborts it
+    # (std::bad_alloc) instead of taking the test run down.
+    script = ("import sys; from rapidmc.ltl import parse_formula, to_buchi; "
+              "from rapidmc.ltl.syntax import Not; "
+              "print(to_buchi(Not(parse_formula(sys.argv[1])), backend='spot').state_count)")
+    limit = lambda: resource.setrlimit(resource.RLIMIT_AS, (1_500_000_000,) * 2)  # noqa: E731
+    outcome = subprocess.run([sys.executable, "-c", script, COSTLY_TO_CHECK], capture_output=True,
+                             text=True, timeout=120, preexec_fn=limit)
+    assert outcome.returncode == 0, outcome.stderr[-500:]
+    # the automaton is too big to complement: the built-in one stands in
+    formula = Not(parse_formula(COSTLY_TO_CHECK))
+    assert int(outcome.stdout) == translate(formula).state_count
+    assert spot_automaton(formula).num_states() > COMPLEMENT_LIMIT
+
+
+@pytest.mark.parametrize("automaton_of, formula, equivalent", [
+    ("G(a -> F b)", "G(a -> F b)", True),
+    ("F b", "G b", False),           # accepts too much
+    ("G b", "F b", False),           # accepts too little
+])
+def test_equivalence_check_catches_both_directions(automaton_of, formula, equivalent):
+    automaton = spot_automaton(parse_formula(automaton_of))
+    assert checked_equivalent(automaton, parse_formula(formula)) is equivalent

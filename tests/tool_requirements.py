@@ -12,4 +12,4 @@ def require_tool(present: bool, variable: str, missing: str) -> None:
         return
     if os.environ.get(variable) == "1":
         pytest.fail(f"{missing}, but {variable}=1")
-    pytest.skip(missing)
+    pytest.skip(missing, allow_module_level=True)   # also called at module level
