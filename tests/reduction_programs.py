@@ -52,14 +52,19 @@ ENDMODULE
 """
 
 
-def properties(seed: int) -> list[str]:
+def properties(seed: int, with_next: bool = True) -> list[str]:
+    """Properties over the program's data; ``with_next`` adds one with X (which turns
+    merged steps off for the whole check)."""
     rng = random.Random(seed * 7 + 1)
     counter, other = rng.sample(COUNTERS, 2)
     flag = rng.choice(FLAGS)
-    return [f'safe: G "{counter} < {rng.randint(1, 3)}"',
-            f'live: G F "{other} = 0"',
-            f"flag: G ({flag} -> F !{flag})",
-            f'next: G ("{counter} = 1" -> X "{counter} <> 0")']
+    result = [f'safe: G "{counter} < {rng.randint(1, 3)}"',
+              f'live: G F "{other} = 0"',
+              f"flag: G ({flag} -> F !{flag})",
+              f'until: G ("{other} = 1" -> ("{other} = 1" U ({flag} | "{counter} = 0")))']
+    if with_next:
+        result.append(f'next: G ("{counter} = 1" -> X "{counter} <> 0")')
+    return result
 
 
 def _condition(rng: random.Random) -> str:

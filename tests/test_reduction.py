@@ -77,12 +77,13 @@ def states_of(tmp_path: Path, text: str, formula: str, *flags: str) -> tuple[str
 # --- differential -------------------------------------------------------------
 
 
-@pytest.mark.parametrize("seed", range(30))
+@pytest.mark.parametrize("seed", range(40))
 def test_generated_programs_keep_their_verdicts(tmp_path, seed):
     program = tmp_path / "prog.mod"
     program.write_text(random_program(seed))
     spec = tmp_path / "props.ltl"
-    spec.write_text("\n".join(properties(seed)) + "\n")
+    # even seeds: X-free properties only, so that steps are merged
+    spec.write_text("\n".join(properties(seed, with_next=seed % 2 == 1)) + "\n")
     argv = [str(program), "--ltl", str(spec), "--max-states", "20000"]
     assert_same_verdicts(check_json(argv), check_json(argv + ["--no-reduce"]))
 
