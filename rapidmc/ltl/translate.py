@@ -54,6 +54,24 @@ class Term:
                 and self.obligations <= other.obligations and self.postponed <= other.postponed)
 
 
+def undominated(terms: list[Term]) -> list[Term]:
+    """``terms`` without those another (different) term dominates, in their order.
+
+    A dominating term is never larger (literals, obligations, postponements
+    counted), so trying the smaller terms first finds every dominator among
+    the terms kept so far.
+    """
+    def size(term: Term) -> int:
+        return (bin(term.cube[0]).count("1") + bin(term.cube[1]).count("1")
+                + len(term.obligations) + len(term.postponed))
+    kept: list[Term] = []
+    for term in sorted(dict.fromkeys(terms), key=size):
+        if not any(other.dominates(term) for other in kept):
+            kept.append(term)
+    survivors = set(kept)
+    return [t for t in dict.fromkeys(terms) if t in survivors]
+
+
 def conjoined_terms(left: Sequence[Term], right: Sequence[Term]) -> list[Term]:
     terms: dict[Term, None] = {}
     for a in left:
@@ -119,12 +137,17 @@ class Tableau:
                                   + conjoined_terms(right, [again])))
 
     def state_terms(self, state: Obligations) -> list[Term]:
-        """The undominated terms of a state (all its formulas at once)."""
+        """The undominated terms of a state (all its formulas at once).
+
+        Dominated terms are dropped after each conjunction, not only at the
+        end: if ``o`` dominates ``t`` then ``o & x`` dominates ``t & x`` for
+        every further term ``x``, so the result is the same and the
+        intermediate products stay small.
+        """
         terms = [Term(TRUE_CUBE, frozenset(), frozenset())]
         for formula in self.ordered(state):
-            terms = conjoined_terms(terms, self.terms(formula))
-        return [t for t in terms if not any(o is not t and o.dominates(t) and o != t
-                                            for o in terms)]
+            terms = undominated(conjoined_terms(terms, self.terms(formula)))
+        return terms
 
 
 @dataclass(frozen=True)
