@@ -18,13 +18,13 @@ Input errors raise ``rapidmc.diagnostics.UserError`` carrying diagnostics.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from types import SimpleNamespace
 from typing import Callable, Iterable, Mapping, Optional, Sequence
 
 from . import ast
-from .check import (HOLDS, UNKNOWN, VIOLATED, Progress, PropertyResult, check_property,
-                    find_reachable)
+from .check import (HOLDS, UNKNOWN, VIOLATED, Progress, PropertyResult, SearchResult,
+                    check_property, find_reachable)
 from .check.budget import DEFAULT_MAX_STATES
 from .backup import load_tasks, resolve_program_files
 from .check.trace import Trace, build_trace
@@ -261,17 +261,16 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
     facts = ExploredFacts(model.program, [prop.formula for prop in model.properties], model.atoms)
     # Merged steps run several lines in one transition: coverage watches an unreduced search.
     watched = RapidSystem(model.program, model.config) if model.plan.merge_points else None
+    stuck = _StuckWatch(system, facts if watched is None else None)
     results = []
     try:
         results.append(_builtin(system, BUILTIN_RUNTIME, "no reachable uncaught run-time error",
-                                system.failed, bounds, progress(),
-                                facts if watched is None else None))
+                                system.failed, bounds, progress(), stuck))
         if watched is None:
             facts.finish(system, results[0].result, progress=progress(), **bounds)
         elif options.storage is None:
             facts.watch(watched, progress=progress(), **bounds)
-        results.append(_builtin(system, BUILTIN_DEADLOCK, "no reachable state where the program "
-                                "waits forever", system.stuck, bounds, progress()))
+        results.append(_deadlock(system, results[0].result, stuck, bounds, progress))
         for prop, buchi, valuation in model.jobs:
             result = check_property(system, buchi, valuation, progress=progress(), **bounds)
             _replayed(system, result)
@@ -280,6 +279,37 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
     except EnvironmentFault as exc:
         raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
     return CheckReport(results, facts.warnings(), model.describer)
+
+
+class _StuckWatch:
+    """Sees the states a search expands (passing them on to ``then``): does one wait forever?"""
+
+    def __init__(self, system: RapidSystem, then=None):
+        self.stuck = system.stuck
+        self.then = then
+        self.seen = False
+
+    def __call__(self, state, successors) -> None:
+        if self.then is not None:
+            self.then(state, successors)
+        if not self.seen and self.stuck(state):
+            self.seen = True
+
+
+def _deadlock(system: RapidSystem, runtime: SearchResult, stuck: _StuckWatch, bounds,
+              progress: ProgressFactory) -> PropertyResult:
+    """The deadlock check: answered by the run-time error search when that one was complete.
+
+    A breadth-first search that ends HOLDS has expanded every reachable state
+    (an exact store, no bound reached), and ``stuck`` looked at each: if none
+    waits forever, neither would a second search find one.  Otherwise a search
+    of its own finds the shortest path to such a state.
+    """
+    description = "no reachable state where the program waits forever"
+    if runtime.verdict == HOLDS and bounds.get("storage") is None and not stuck.seen:
+        answer = SearchResult(HOLDS, stats=replace(runtime.stats, seconds=0.0))
+        return PropertyResult(BUILTIN_DEADLOCK, description, answer)
+    return _builtin(system, BUILTIN_DEADLOCK, description, system.stuck, bounds, progress())
 
 
 def _builtin(system: RapidSystem, name: str, description: str, predicate, bounds,

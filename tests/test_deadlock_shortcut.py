@@ -1,0 +1,54 @@
+"""The deadlock check answered by the complete run-time error search (``api._deadlock``).
+
+When the breadth-first search for run-time errors ends HOLDS it has expanded
+every reachable state, and a watcher asked each whether the program waits
+forever there; only when none does is the deadlock check answered without a
+search of its own.  Pinned against the dedicated search on every check case
+and case study: the same verdict, and the same states when it holds.
+"""
+from __future__ import annotations
+
+import pytest
+
+from test_case_studies import CASES as STUDIES, ROOT
+from test_check_cases import verdict_cases
+from rapidmc import api
+from rapidmc.check import HOLDS, find_reachable
+from rapidmc.cli import build_parser
+from rapidmc.commands.check import prepare_model
+
+
+def _dedicated(model):
+    return find_reachable(model.system, model.system.stuck, max_states=model.options.max_states)
+
+
+def _compare(argv):
+    model = prepare_model(build_parser().parse_args(argv))
+    report = api.check_model(model)
+    shortcut = next(r.result for r in report.results if r.name == "no_deadlock")
+    dedicated = _dedicated(model)
+    assert shortcut.verdict == dedicated.verdict
+    if dedicated.verdict == HOLDS:
+        assert shortcut.stats.model_states == dedicated.stats.model_states
+    return shortcut.verdict
+
+
+@pytest.mark.parametrize("case", verdict_cases(), ids=lambda case: case.folder.name)
+def test_check_cases_get_the_dedicated_search_verdict(case, monkeypatch):
+    monkeypatch.chdir(case.folder)
+    _compare(case.argv())
+
+
+@pytest.mark.parametrize("name", STUDIES)
+def test_case_studies_get_the_dedicated_search_verdict(name, monkeypatch):
+    monkeypatch.chdir(ROOT)
+    _compare(STUDIES[name].argv())
+
+
+def test_a_program_that_waits_forever_still_gets_its_counterexample(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "wait.mod").write_text(
+        "MODULE M\n  PROC main()\n    WaitUntil FALSE;\n  ENDPROC\nENDMODULE\n")
+    model = prepare_model(build_parser().parse_args(["check", "wait.mod"]))
+    deadlock = next(r.result for r in api.check_model(model).results if r.name == "no_deadlock")
+    assert deadlock.verdict == "VIOLATED" and deadlock.prefix + deadlock.cycle
