@@ -31,6 +31,7 @@ from lark import Token
 from .. import ast
 from ..diagnostics import (BAD_NUMBER, BAD_STRING, IDENTIFIER_TOO_LONG, SYNTAX, UNSUPPORTED,
                            UserError, error)
+from .tokens import TOKEN_TYPES
 
 MAX_IDENTIFIER_LENGTH = 32
 # Reference 1.4.  The contextual lexer reads a reserved word as an identifier
@@ -113,7 +114,7 @@ class Lowering:
 
     def span(self, entries: list) -> ast.Span:
         first = entries[0]
-        if isinstance(first, Token):
+        if isinstance(first, TOKEN_TYPES):
             line, column = first.line, first.column
         else:
             line, column = self.text_start(entries)
@@ -123,7 +124,7 @@ class Lowering:
     def text_start(self, entries) -> Optional[tuple[int, int]]:
         """Where the text of ``entries`` begins (None when they hold no token)."""
         for entry in entries:
-            if isinstance(entry, Token):
+            if isinstance(entry, TOKEN_TYPES):
                 return entry.line, entry.column
             if isinstance(entry, (list, tuple)):
                 found = self.text_start(entry)
@@ -151,15 +152,16 @@ class Lowering:
 
     def name(self, token: Token) -> ast.Name:
         span = self.token_span(token)
-        if len(token) > MAX_IDENTIFIER_LENGTH:
+        text = token.value
+        if len(text) > MAX_IDENTIFIER_LENGTH:
             self.report(error(IDENTIFIER_TOO_LONG,
-                              f"identifier '{token}' has {len(token)} characters; "
+                              f"identifier '{text}' has {len(text)} characters; "
                               f"RAPID allows at most {MAX_IDENTIFIER_LENGTH}", span))
-        key = token.upper()
+        key = text.upper()
         if key in RESERVED_WORDS:
-            self.report(error(SYNTAX, f"'{token}' is a reserved word and cannot be used as a "
+            self.report(error(SYNTAX, f"'{text}' is a reserved word and cannot be used as a "
                               "name", span))
-        return ast.Name(str(token), key, span)
+        return ast.Name(text, key, span)
 
     # ---------------------------------------------------------------- modules
 
@@ -176,7 +178,7 @@ class Lowering:
             self.span(entries))
 
     def module_attributes(self, attributes, entries):
-        return tuple(attribute.upper() for attribute in attributes)
+        return tuple(attribute.value.upper() for attribute in attributes)
 
     # ------------------------------------------------------- type definitions
 
@@ -201,7 +203,7 @@ class Lowering:
 
     def data_declaration(self, children, entries):
         scope, storage, type_ref, name, dimensions, init = children
-        return ast.DataDeclaration(storage.upper(), scope.upper() if scope else ast.GLOBAL,
+        return ast.DataDeclaration(storage.value.upper(), scope.value.upper() if scope else ast.GLOBAL,
                                    type_ref, self.name(name), dimensions or (), init,
                                    self.span(entries))
 
@@ -267,7 +269,7 @@ class Lowering:
 
     def parameter(self, children, entries):
         mode, type_ref, name, rank = children
-        return ast.Parameter(mode.upper() if mode else ast.IN, type_ref, self.name(name),
+        return ast.Parameter(mode.value.upper() if mode else ast.IN, type_ref, self.name(name),
                              rank or 0, False, None, self.span(entries))
 
     def conformant_dimensions(self, stars, entries):
@@ -316,7 +318,7 @@ class Lowering:
         return ast.Connect(target, self.name(trap), self.span(entries))
 
     def placeholder_statement(self, children, entries):
-        return ast.PlaceholderStatement(children[0][1:-1].upper(), self.span(entries))
+        return ast.PlaceholderStatement(children[0].value[1:-1].upper(), self.span(entries))
 
     def if_statement(self, children, entries):
         condition, body, *elseifs, else_body = children
@@ -384,14 +386,14 @@ class Lowering:
         rest = iter(children[1:])
         for operator in rest:
             operand = next(rest)
-            if isinstance(operand, Token):
+            if isinstance(operand, TOKEN_TYPES):
                 operand = self.negated(operand, next(rest))
             operands += (operator, operand)
         return self.grouped(operands, MULTIPLYING)[0]
 
     def binary(self, children, entries):
         left, operator, right = children
-        return ast.Binary(operator.upper(), left, right, self.span(entries))
+        return ast.Binary(operator.value.upper(), left, right, self.span(entries))
 
     def grouped(self, items: list, operators: frozenset[str]) -> list:
         """``operand (operator operand)*`` with the given operators applied, left to right."""
@@ -400,18 +402,18 @@ class Lowering:
             operator, operand = items[index], items[index + 1]
             if operator.type in operators:
                 left = result[-1]
-                result[-1] = ast.Binary(operator.upper(), left, operand,
+                result[-1] = ast.Binary(operator.value.upper(), left, operand,
                                         self.operation_span(left, operand))
             else:
                 result += (operator, operand)
         return result
 
     def negated(self, sign: Token, operand):
-        return ast.Unary(sign.upper(), operand, self.operation_span(sign, operand))
+        return ast.Unary(sign.value.upper(), operand, self.operation_span(sign, operand))
 
     def unary(self, children, entries):
         operator, operand = children
-        return ast.Unary(operator.upper(), operand, self.span(entries))
+        return ast.Unary(operator.value.upper(), operand, self.span(entries))
 
     def name_ref(self, children, entries):
         name = self.name(children[0])
@@ -433,13 +435,13 @@ class Lowering:
         return ast.Aggregate(tuple(items), self.span(entries))
 
     def placeholder(self, children, entries):
-        return ast.Placeholder(children[0][1:-1].upper(), self.span(entries))
+        return ast.Placeholder(children[0].value[1:-1].upper(), self.span(entries))
 
     def boolean(self, children, entries):
-        return ast.BoolLiteral(children[0].upper() == "TRUE", self.span(entries))
+        return ast.BoolLiteral(children[0].value.upper() == "TRUE", self.span(entries))
 
     def number(self, children, entries):
-        text = str(children[0])
+        text = children[0].value
         value = number_value(text)
         span = self.span(entries)
         if isinstance(value, float) and math.isinf(value):
@@ -447,7 +449,7 @@ class Lowering:
         return ast.NumLiteral(value, text, span)
 
     def string(self, children, entries):
-        text = str(children[0])
+        text = children[0].value
         value = decode_string(text)
         span = self.span(entries)
         if value is None:
