@@ -64,7 +64,8 @@ def compiled_table(table) -> CompiledTable:
 
 def parse(table, callbacks: dict, tokens: Callable[[object], Iterator], start: str):
     """Run the compiled loop over ``table`` (Lark's), with ``callbacks`` keyed by Lark's
-    rules; ``tokens(parser_state)`` gives the token iterator (``RapidLexer.lex``)."""
+    rules; ``tokens(parser_state)`` gives the token generator (``RapidLexer.lex``), which
+    raises ``EOFError`` after the last token."""
     compiled = compiled_table(table)
     by_reduction = {reduction: callbacks[reduction.rule] for reduction in compiled.reductions}
     return CompiledParser(compiled, by_reduction).parse(TokenThread(tokens), start)
@@ -79,14 +80,6 @@ class TokenThread:
         self.next_token = self.first_token
 
     def first_token(self, parser_state):
-        feed = _fed(self.tokens(parser_state))
-        next(feed)
-        self.next_token = feed.send         # one C call per token
-        return feed.send(parser_state)
-
-
-def _fed(tokens: Iterator):
-    """The tokens, each handed out by ``send``; ``EOFError`` after the last."""
-    yield
-    yield from tokens
-    raise EOFError
+        tokens = self.tokens(parser_state)
+        self.next_token = tokens.send        # one C call per token; the value sent is unused
+        return next(tokens)

@@ -68,7 +68,7 @@ class RapidLexer(Lexer):
         pos, line, line_start = counter.char_pos, counter.line, counter.line_start_pos
         states, state_stack = parser_state.parse_conf.parse_table.states, parser_state.state_stack
         keywords, multiline, match = self.keywords, self.multiline, self.pattern.match
-        make_token = self.token_type
+        make_token, max_depth = self.token_type, self.max_depth
         current = None
         while True:
             found = match(text, pos, end)
@@ -92,17 +92,19 @@ class RapidLexer(Lexer):
             if token is None:
                 counter.char_pos, counter.line, counter.line_start_pos = pos, line, line_start
                 counter.column = pos - line_start + 1
+                lexer_state.last_token = current    # Lark's lexers read it in their errors
                 token = self._contextual_token(lexer_state, parser_state)
                 pos, line, line_start = counter.char_pos, counter.line, counter.line_start_pos
                 if token is None:
                     break
-            if len(state_stack) > self.max_depth:
+            if len(state_stack) > max_depth:
                 self.on_too_deep()
-            lexer_state.last_token = token
             self.previous = current
             current = token
             yield token
-        self.previous = current
+        self.previous = lexer_state.last_token = current
+        if self.token_type is not ScannedToken:
+            raise EOFError                          # the end, as lark_cython's loop is told
 
     def _contextual_token(self, lexer_state: LexerState, parser_state) -> Optional[Token]:
         """The next token as Lark's contextual lexer reads it (None at the end of the text)."""
