@@ -17,11 +17,15 @@ Figures on the project machine (2 cores, loaded), median of 3 runs of
 Transformer afterwards; 24,600 lines/s with the one-pass front end (own
 lexer, AST built on reduction, flat expression rules).
 
-Same process, best of 5 runs of 20,000 lines (garbage collection paused as
-in ``parse_text``): the front end before lark_cython 31,000 lines/s; with
-AST nodes built through their slots 34,300 (Lark's driver) and with
-lark_cython's compiled loop 43,500 lines/s, +40%.  The rest of the time is
-the lexer (about a third) and the lowering callbacks, both Python.
+Same process, best of 8 alternating runs of 20,000 lines through
+``parse_text``: the front end before lark_cython (commit 766b20b) 27,200
+lines/s; now 33,400 with Lark's driver and 42,000 with lark_cython's
+compiled loop, +54%.  The gains: the compiled loop (about +25%), AST nodes
+built through their slots rather than the frozen dataclasses' ``__init__``,
+and no young garbage collection scanning the new AST after the parse.  The
+rest of the time is the lexer (about a third) and the lowering callbacks,
+both Python; cutting the unit chains expression -> sum -> term -> postfix
+would change the parser states whose expected tokens the syntax errors list.
 """
 from __future__ import annotations
 
