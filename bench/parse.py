@@ -26,6 +26,9 @@ and no young garbage collection scanning the new AST after the parse.  The
 rest of the time is the lexer (about a third) and the lowering callbacks,
 both Python; cutting the unit chains expression -> sum -> term -> postfix
 would change the parser states whose expected tokens the syntax errors list.
+lark-rust 0.2.1 was measured too: its compiled loop runs only with its own
+lexer, and fed from this lexer by a Python loop it gave 42,400 lines/s
+against lark_cython's 43,900 in the same process, so it is not used.
 """
 from __future__ import annotations
 
