@@ -27,12 +27,20 @@ def parse_text(text: str, filename: str) -> tuple[ast.Module, ...]:
 @contextlib.contextmanager
 def _garbage_collection_paused():
     """Parsing allocates millions of acyclic objects; the cycle collector's
-    repeated scans of them would double the time for a large file."""
+    repeated scans of them would double the time for a large file.
+
+    Afterwards the new objects join the oldest generation at once (freeze,
+    then unfreeze, moves every tracked object there): left in the youngest,
+    the first collection after parsing would scan the whole AST, and the
+    next generation's collection scan it again.  Nothing is kept from the
+    collector; the full collections see these objects as before."""
     was_enabled = gc.isenabled()
     gc.disable()
     try:
         yield
     finally:
+        gc.freeze()
+        gc.unfreeze()
         if was_enabled:
             gc.enable()
 

@@ -48,7 +48,8 @@ class RapidLexer(Lexer):
     """Tokens for Lark's LALR parser; ``previous`` is the last token shifted."""
 
     def __init__(self, terminals: list[TerminalDef], ignore: frozenset[str],
-                 contextual: ContextualLexer, max_depth: int, on_too_deep):
+                 contextual: ContextualLexer, max_depth: int, on_too_deep,
+                 token_type: type = ScannedToken):
         self.keywords = _keywords(terminals)
         self.pattern = _scanning_pattern(terminals, self.keywords, ignore)
         self.multiline = frozenset(t.name for t in terminals
@@ -57,13 +58,17 @@ class RapidLexer(Lexer):
         self.max_depth = max_depth
         self.on_too_deep = on_too_deep
         self.previous: Optional[Token] = None
+        # The class of the tokens made: ``ScannedToken`` for Lark's parser, lark_cython's
+        # ``Token`` for its parser (``accelerated``); both take the same arguments.
+        self.token_type = token_type
 
     def lex(self, lexer_state: LexerState, parser_state) -> Iterator[Token]:
         text, end = lexer_state.text.text, lexer_state.text.end
         counter = lexer_state.line_ctr
         pos, line, line_start = counter.char_pos, counter.line, counter.line_start_pos
-        states, state_stack = parser_state.parse_conf.states, parser_state.state_stack
+        states, state_stack = parser_state.parse_conf.parse_table.states, parser_state.state_stack
         keywords, multiline, match = self.keywords, self.multiline, self.pattern.match
+        make_token, max_depth = self.token_type, self.max_depth
         current = None
         while True:
             found = match(text, pos, end)
@@ -81,27 +86,33 @@ class RapidLexer(Lexer):
                             line += breaks
                             line_start = text.rindex("\n", pos, start) + 1
                     column = start - line_start + 1
-                    token = ScannedToken(kind, value, start, line, column, line,
-                                         column + stop - start, stop)
+                    token = make_token(kind, value, start, line, column, line,
+                                       column + stop - start, stop)
                     pos = stop
             if token is None:
                 counter.char_pos, counter.line, counter.line_start_pos = pos, line, line_start
                 counter.column = pos - line_start + 1
+                lexer_state.last_token = current    # Lark's lexers read it in their errors
                 token = self._contextual_token(lexer_state, parser_state)
                 pos, line, line_start = counter.char_pos, counter.line, counter.line_start_pos
                 if token is None:
                     break
-            if len(state_stack) > self.max_depth:
+            if len(state_stack) > max_depth:
                 self.on_too_deep()
-            lexer_state.last_token = token
             self.previous = current
             current = token
             yield token
-        self.previous = current
+        self.previous = lexer_state.last_token = current
+        if self.token_type is not ScannedToken:
+            raise EOFError                          # the end, as lark_cython's loop is told
 
     def _contextual_token(self, lexer_state: LexerState, parser_state) -> Optional[Token]:
         """The next token as Lark's contextual lexer reads it (None at the end of the text)."""
-        return next(iter(self.contextual.lex(lexer_state, parser_state)), None)
+        token = next(iter(self.contextual.lex(lexer_state, parser_state)), None)
+        if token is None or self.token_type is ScannedToken:
+            return token
+        return self.token_type(token.type, token.value, token.start_pos, token.line,
+                               token.column, token.end_line, token.end_column, token.end_pos)
 
 
 def _keywords(terminals: list[TerminalDef]) -> dict[str, str]:

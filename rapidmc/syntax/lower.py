@@ -31,6 +31,8 @@ from lark import Token
 from .. import ast
 from ..diagnostics import (BAD_NUMBER, BAD_STRING, IDENTIFIER_TOO_LONG, SYNTAX, UNSUPPORTED,
                            UserError, error)
+from .construct import nodes
+from .tokens import TOKEN_TYPES
 
 MAX_IDENTIFIER_LENGTH = 32
 # Reference 1.4.  The contextual lexer reads a reserved word as an identifier
@@ -113,17 +115,17 @@ class Lowering:
 
     def span(self, entries: list) -> ast.Span:
         first = entries[0]
-        if isinstance(first, Token):
+        if isinstance(first, TOKEN_TYPES):
             line, column = first.line, first.column
         else:
             line, column = self.text_start(entries)
         last = self.lexer.previous
-        return ast.Span(self.filename, line, column, last.end_line, last.end_column)
+        return nodes.Span(self.filename, line, column, last.end_line, last.end_column)
 
     def text_start(self, entries) -> Optional[tuple[int, int]]:
         """Where the text of ``entries`` begins (None when they hold no token)."""
         for entry in entries:
-            if isinstance(entry, Token):
+            if isinstance(entry, TOKEN_TYPES):
                 return entry.line, entry.column
             if isinstance(entry, (list, tuple)):
                 found = self.text_start(entry)
@@ -144,22 +146,23 @@ class Lowering:
     def operation_span(self, first, last) -> ast.Span:
         """From the start of ``first`` (a token or an expression) to the end of ``last``."""
         line, column = self.text_start((first,))
-        return ast.Span(self.filename, line, column, *self.text_end(last))
+        return nodes.Span(self.filename, line, column, *self.text_end(last))
 
     def token_span(self, token: Token) -> ast.Span:
-        return ast.Span(self.filename, token.line, token.column, token.end_line, token.end_column)
+        return nodes.Span(self.filename, token.line, token.column, token.end_line, token.end_column)
 
     def name(self, token: Token) -> ast.Name:
         span = self.token_span(token)
-        if len(token) > MAX_IDENTIFIER_LENGTH:
+        text = token.value
+        if len(text) > MAX_IDENTIFIER_LENGTH:
             self.report(error(IDENTIFIER_TOO_LONG,
-                              f"identifier '{token}' has {len(token)} characters; "
+                              f"identifier '{text}' has {len(text)} characters; "
                               f"RAPID allows at most {MAX_IDENTIFIER_LENGTH}", span))
-        key = token.upper()
+        key = text.upper()
         if key in RESERVED_WORDS:
-            self.report(error(SYNTAX, f"'{token}' is a reserved word and cannot be used as a "
+            self.report(error(SYNTAX, f"'{text}' is a reserved word and cannot be used as a "
                               "name", span))
-        return ast.Name(str(token), key, span)
+        return nodes.Name(text, key, span)
 
     # ---------------------------------------------------------------- modules
 
@@ -168,7 +171,7 @@ class Lowering:
 
     def module(self, children, entries):
         name, attributes, *items, _end = children
-        return ast.Module(
+        return nodes.Module(
             self.name(name), attributes or (),
             tuple(i for i in items if isinstance(i, (ast.RecordDefinition, ast.AliasDefinition))),
             tuple(i for i in items if isinstance(i, ast.DataDeclaration)),
@@ -176,32 +179,32 @@ class Lowering:
             self.span(entries))
 
     def module_attributes(self, attributes, entries):
-        return tuple(attribute.upper() for attribute in attributes)
+        return tuple(attribute.value.upper() for attribute in attributes)
 
     # ------------------------------------------------------- type definitions
 
     def record_definition(self, children, entries):
         local, name, *components = children
-        return ast.RecordDefinition(local is not None, self.name(name), tuple(components),
+        return nodes.RecordDefinition(local is not None, self.name(name), tuple(components),
                                     self.span(entries))
 
     def record_component(self, children, entries):
         type_ref, name = children
-        return ast.RecordComponent(type_ref, self.name(name), self.span(entries))
+        return nodes.RecordComponent(type_ref, self.name(name), self.span(entries))
 
     def alias_definition(self, children, entries):
         local, base, name = children
-        return ast.AliasDefinition(local is not None, base, self.name(name), self.span(entries))
+        return nodes.AliasDefinition(local is not None, base, self.name(name), self.span(entries))
 
     def type_ref(self, children, entries):
         (name,) = children
-        return ast.TypeRef(self.name(name), self.span(entries))
+        return nodes.TypeRef(self.name(name), self.span(entries))
 
     # ------------------------------------------------------ data declarations
 
     def data_declaration(self, children, entries):
         scope, storage, type_ref, name, dimensions, init = children
-        return ast.DataDeclaration(storage.upper(), scope.upper() if scope else ast.GLOBAL,
+        return nodes.DataDeclaration(storage.value.upper(), scope.value.upper() if scope else ast.GLOBAL,
                                    type_ref, self.name(name), dimensions or (), init,
                                    self.span(entries))
 
@@ -212,19 +215,19 @@ class Lowering:
 
     def procedure(self, children, entries):
         local, name, parameters, (data, body), backward, handler, undo, end = children
-        return ast.Routine(ast.PROC, local is not None, self.name(name), None, parameters or (),
+        return nodes.Routine(ast.PROC, local is not None, self.name(name), None, parameters or (),
                            data, body, backward, handler, undo, self.span(entries),
                            self.token_span(end))
 
     def function(self, children, entries):
         local, return_type, name, parameters, (data, body), handler, undo, end = children
-        return ast.Routine(ast.FUNC, local is not None, self.name(name), return_type,
+        return nodes.Routine(ast.FUNC, local is not None, self.name(name), return_type,
                            parameters or (), data, body, None, handler, undo,
                            self.span(entries), self.token_span(end))
 
     def trap(self, children, entries):
         local, name, (data, body), handler, undo, end = children
-        return ast.Routine(ast.TRAP, local is not None, self.name(name), None, (), data, body,
+        return nodes.Routine(ast.TRAP, local is not None, self.name(name), None, (), data, body,
                            None, handler, undo, self.span(entries), self.token_span(end))
 
     def routine_body(self, items, entries):
@@ -240,7 +243,7 @@ class Lowering:
 
     def error_handler(self, children, entries):
         numbers, body = children
-        return ast.ErrorHandler(numbers, body, self.span(entries))
+        return nodes.ErrorHandler(numbers, body, self.span(entries))
 
     def error_numbers(self, numbers, entries):
         return tuple(numbers)
@@ -267,7 +270,7 @@ class Lowering:
 
     def parameter(self, children, entries):
         mode, type_ref, name, rank = children
-        return ast.Parameter(mode.upper() if mode else ast.IN, type_ref, self.name(name),
+        return nodes.Parameter(mode.value.upper() if mode else ast.IN, type_ref, self.name(name),
                              rank or 0, False, None, self.span(entries))
 
     def conformant_dimensions(self, stars, entries):
@@ -280,72 +283,72 @@ class Lowering:
 
     def assignment(self, children, entries):
         target, value = children
-        return ast.Assignment(target, value, self.span(entries))
+        return nodes.Assignment(target, value, self.span(entries))
 
     def procedure_call(self, children, entries):
         name, arguments = children
-        return ast.ProcedureCall(self.name(name), arguments or (), self.span(entries))
+        return nodes.ProcedureCall(self.name(name), arguments or (), self.span(entries))
 
     def late_binding_call(self, children, entries):
         name_expr, arguments = children
-        return ast.LateBindingCall(name_expr, arguments or (), self.span(entries))
+        return nodes.LateBindingCall(name_expr, arguments or (), self.span(entries))
 
     def goto(self, children, entries):
-        return ast.Goto(self.name(children[0]), self.span(entries))
+        return nodes.Goto(self.name(children[0]), self.span(entries))
 
     def label(self, children, entries):
-        return ast.Label(self.name(children[0]), self.span(entries))
+        return nodes.Label(self.name(children[0]), self.span(entries))
 
     def return_statement(self, children, entries):
-        return ast.Return(children[0], self.span(entries))
+        return nodes.Return(children[0], self.span(entries))
 
     def raise_statement(self, children, entries):
-        return ast.Raise(children[0], self.span(entries))
+        return nodes.Raise(children[0], self.span(entries))
 
     def exit(self, children, entries):
-        return ast.Exit(self.span(entries))
+        return nodes.Exit(self.span(entries))
 
     def retry(self, children, entries):
-        return ast.Retry(self.span(entries))
+        return nodes.Retry(self.span(entries))
 
     def trynext(self, children, entries):
-        return ast.TryNext(self.span(entries))
+        return nodes.TryNext(self.span(entries))
 
     def connect(self, children, entries):
         target, trap = children
-        return ast.Connect(target, self.name(trap), self.span(entries))
+        return nodes.Connect(target, self.name(trap), self.span(entries))
 
     def placeholder_statement(self, children, entries):
-        return ast.PlaceholderStatement(children[0][1:-1].upper(), self.span(entries))
+        return nodes.PlaceholderStatement(children[0].value[1:-1].upper(), self.span(entries))
 
     def if_statement(self, children, entries):
         condition, body, *elseifs, else_body = children
-        first = ast.IfBranch(condition, body, self.span(entries))
-        return ast.If((first, *elseifs), else_body, self.span(entries))
+        first = nodes.IfBranch(condition, body, self.span(entries))
+        return nodes.If((first, *elseifs), else_body, self.span(entries))
 
     def elseif(self, children, entries):
         condition, body = children
-        return ast.IfBranch(condition, body, self.span(entries))
+        return nodes.IfBranch(condition, body, self.span(entries))
 
     def compact_if(self, children, entries):
         condition, statement = children
-        return ast.CompactIf(condition, statement, self.span(entries))
+        return nodes.CompactIf(condition, statement, self.span(entries))
 
     def for_statement(self, children, entries):
         variable, start, stop, step, body = children
-        return ast.For(self.name(variable), start, stop, step, body, self.span(entries))
+        return nodes.For(self.name(variable), start, stop, step, body, self.span(entries))
 
     def while_statement(self, children, entries):
         condition, body = children
-        return ast.While(condition, body, self.span(entries))
+        return nodes.While(condition, body, self.span(entries))
 
     def test_statement(self, children, entries):
         subject, *cases, default = children
-        return ast.Test(subject, tuple(cases), default, self.span(entries))
+        return nodes.Test(subject, tuple(cases), default, self.span(entries))
 
     def test_case(self, children, entries):
         *values, body = children
-        return ast.TestCase(tuple(values), body, self.span(entries))
+        return nodes.TestCase(tuple(values), body, self.span(entries))
 
     # -------------------------------------------------------------- arguments
 
@@ -353,20 +356,20 @@ class Lowering:
         return tuple(arguments)
 
     def positional_argument(self, children, entries):
-        return ast.Argument(ast.REQUIRED, None, children[0], self.span(entries))
+        return nodes.Argument(ast.REQUIRED, None, children[0], self.span(entries))
 
     def named_argument(self, children, entries):
         name, value = children
-        return ast.Argument(ast.REQUIRED, self.name(name), value, self.span(entries))
+        return nodes.Argument(ast.REQUIRED, self.name(name), value, self.span(entries))
 
     def optional_argument(self, children, entries):
         _backslash, name, value = children
         kind = ast.SWITCH if value is None else ast.OPTIONAL
-        return ast.Argument(kind, self.name(name), value, self.span(entries))
+        return nodes.Argument(kind, self.name(name), value, self.span(entries))
 
     def conditional_argument(self, children, entries):
         _backslash, name, source = children
-        return ast.Argument(ast.CONDITIONAL, self.name(name), None, self.span(entries),
+        return nodes.Argument(ast.CONDITIONAL, self.name(name), None, self.span(entries),
                             self.name(source))
 
     # ------------------------------------------------------------ expressions
@@ -384,14 +387,14 @@ class Lowering:
         rest = iter(children[1:])
         for operator in rest:
             operand = next(rest)
-            if isinstance(operand, Token):
+            if isinstance(operand, TOKEN_TYPES):
                 operand = self.negated(operand, next(rest))
             operands += (operator, operand)
         return self.grouped(operands, MULTIPLYING)[0]
 
     def binary(self, children, entries):
         left, operator, right = children
-        return ast.Binary(operator.upper(), left, right, self.span(entries))
+        return nodes.Binary(operator.value.upper(), left, right, self.span(entries))
 
     def grouped(self, items: list, operators: frozenset[str]) -> list:
         """``operand (operator operand)*`` with the given operators applied, left to right."""
@@ -400,54 +403,54 @@ class Lowering:
             operator, operand = items[index], items[index + 1]
             if operator.type in operators:
                 left = result[-1]
-                result[-1] = ast.Binary(operator.upper(), left, operand,
+                result[-1] = nodes.Binary(operator.value.upper(), left, operand,
                                         self.operation_span(left, operand))
             else:
                 result += (operator, operand)
         return result
 
     def negated(self, sign: Token, operand):
-        return ast.Unary(sign.upper(), operand, self.operation_span(sign, operand))
+        return nodes.Unary(sign.value.upper(), operand, self.operation_span(sign, operand))
 
     def unary(self, children, entries):
         operator, operand = children
-        return ast.Unary(operator.upper(), operand, self.span(entries))
+        return nodes.Unary(operator.value.upper(), operand, self.span(entries))
 
     def name_ref(self, children, entries):
         name = self.name(children[0])
-        return ast.NameRef(name, name.span)
+        return nodes.NameRef(name, name.span)
 
     def index(self, children, entries):
         base, *indices = children
-        return ast.Index(base, tuple(indices), self.span(entries))
+        return nodes.Index(base, tuple(indices), self.span(entries))
 
     def component(self, children, entries):
         base, name = children
-        return ast.Component(base, self.name(name), self.span(entries))
+        return nodes.Component(base, self.name(name), self.span(entries))
 
     def function_call(self, children, entries):
         name, arguments = children
-        return ast.FunctionCall(self.name(name), arguments or (), self.span(entries))
+        return nodes.FunctionCall(self.name(name), arguments or (), self.span(entries))
 
     def aggregate(self, items, entries):
-        return ast.Aggregate(tuple(items), self.span(entries))
+        return nodes.Aggregate(tuple(items), self.span(entries))
 
     def placeholder(self, children, entries):
-        return ast.Placeholder(children[0][1:-1].upper(), self.span(entries))
+        return nodes.Placeholder(children[0].value[1:-1].upper(), self.span(entries))
 
     def boolean(self, children, entries):
-        return ast.BoolLiteral(children[0].upper() == "TRUE", self.span(entries))
+        return nodes.BoolLiteral(children[0].value.upper() == "TRUE", self.span(entries))
 
     def number(self, children, entries):
-        text = str(children[0])
+        text = children[0].value
         value = number_value(text)
         span = self.span(entries)
         if isinstance(value, float) and math.isinf(value):
             self.report(error(BAD_NUMBER, f"numeric literal {text} is out of range", span))
-        return ast.NumLiteral(value, text, span)
+        return nodes.NumLiteral(value, text, span)
 
     def string(self, children, entries):
-        text = str(children[0])
+        text = children[0].value
         value = decode_string(text)
         span = self.span(entries)
         if value is None:
@@ -457,4 +460,4 @@ class Lowering:
         elif len(value) > MAX_STRING_LENGTH:
             self.report(error(BAD_STRING, f"string of {len(value)} characters; RAPID strings "
                               f"hold at most {MAX_STRING_LENGTH}", span))
-        return ast.StringLiteral(value, span)
+        return nodes.StringLiteral(value, span)

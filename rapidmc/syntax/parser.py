@@ -25,11 +25,11 @@ from .. import ast
 from ..ast import Span
 from ..diagnostics import (BAD_CHARACTER, BAD_STRING, FILE_EMPTY, PLACEHOLDER,
                            SYNTAX, UNEXPECTED_EOF, UserError, error)
-from . import recovery
-from .lexer import RapidLexer
+from . import accelerated, recovery
+from .lexer import RapidLexer, ScannedToken
 from .lower import Lowering
 from .reductions import rule_callbacks
-from .tokens import describe_expected, describe_token
+from .tokens import CompiledToken, describe_expected, describe_token
 
 PLACEHOLDER_MEANINGS = {
     "TDN": "a type definition", "DDN": "a data declaration", "RDN": "a routine declaration",
@@ -72,7 +72,16 @@ def parse_modules(text: str, filename: str) -> tuple[ast.Module, ...]:
     After a syntax error inside a statement or declaration, that statement
     is blanked out and the file parsed again, so that one run reports the
     errors of the other statements too (``recovery``).
+
+    The compiled LALR loop (``accelerated``) parses first when it is
+    installed; a text it fails on is parsed again by Lark's own driver,
+    whose exceptions the diagnostics are made from.
     """
+    if accelerated.AVAILABLE:
+        try:
+            return _parse(text, filename, compiled=True)
+        except (UnexpectedInput, UserError):
+            pass
     try:
         return _parse(text, filename)
     except UnexpectedInput as exc:
@@ -98,15 +107,24 @@ def _all_syntax_errors(text: str, filename: str, first: UnexpectedInput) -> list
             return diagnostics
 
 
-def _parse(text: str, filename: str) -> tuple[ast.Module, ...]:
+def _parse(text: str, filename: str, compiled: bool = False) -> tuple[ast.Module, ...]:
+    """Parse with Lark's driver, or with lark_cython's compiled loop when ``compiled``."""
     lark = rapid_parser()
     frontend = lark.parser
     lowering = Lowering(filename, None)
     lexer = RapidLexer(frontend.lexer_conf.terminals, frozenset(frontend.lexer_conf.ignore),
-                       frontend.lexer, MAX_STACK_DEPTH, lowering.too_deep)
+                       frontend.lexer, MAX_STACK_DEPTH, lowering.too_deep,
+                       CompiledToken if compiled else ScannedToken)
     lowering.lexer = lexer
-    parser = _Parser(frontend.parser._parse_table, rule_callbacks(_reduced_rules(), lowering))
-    modules = parser.parse(LexerThread(lexer, LexerState(TextSlice.cast_from(text))), START_RULE)
+    callbacks = rule_callbacks(_reduced_rules(), lowering)
+    lexer_state = LexerState(TextSlice.cast_from(text))
+    table = frontend.parser._parse_table
+    if compiled:
+        modules = accelerated.parse(table, callbacks,
+                                    lambda parser_state: lexer.lex(lexer_state, parser_state),
+                                    START_RULE)
+    else:
+        modules = _Parser(table, callbacks).parse(LexerThread(lexer, lexer_state), START_RULE)
     if lowering.problem is not None:
         raise lowering.problem
     return modules

@@ -14,6 +14,15 @@ from typing import Iterable
 
 from lark import Token
 
+try:                                    # the compiled LALR loop (``accelerated``), if installed
+    from lark_cython.lark_cython import Token as CompiledToken
+except ImportError:                     # pragma: no cover - lark_cython is a dependency
+    CompiledToken = None
+
+# The classes a token on the parser's value stack can be: Lark's, and lark_cython's
+# (which is not a ``str``: its text is ``.value``, as for Lark's).
+TOKEN_TYPES: tuple[type, ...] = (Token,) if CompiledToken is None else (Token, CompiledToken)
+
 # Terminals whose Lark name says nothing to a RAPID programmer.
 TERMINAL_NAMES = {
     "NAME": "identifier", "NUMBER": "number", "STRING": "string",

@@ -1,0 +1,78 @@
+"""The compiled LALR loop (lark_cython) builds the same AST as Lark's driver, and
+errors are reported from Lark's driver whichever loop ran first."""
+from __future__ import annotations
+
+import dataclasses
+from pathlib import Path
+
+import pytest
+
+from rapidmc.diagnostics import UserError
+from rapidmc.syntax import accelerated, parser
+from rapidmc.syntax.tokens import TOKEN_TYPES
+
+ROOT = Path(__file__).resolve().parent.parent
+PROGRAMS = sorted(path for path in ROOT.glob("**/*.mod")
+                  if ".venv" not in path.parts and "site-packages" not in path.parts)
+
+needs_compiled = pytest.mark.skipif(not accelerated.AVAILABLE, reason="lark_cython not installed")
+
+
+def _outcome(text: str, filename: str, compiled: bool):
+    try:
+        return parser._parse(text, filename, compiled)
+    except UserError as problem:
+        return [str(d) for d in problem.diagnostics]
+    except Exception as failure:            # a Lark syntax error: its kind and position
+        return type(failure).__name__, getattr(failure, "pos_in_stream", None)
+
+
+@needs_compiled
+@pytest.mark.parametrize("path", PROGRAMS, ids=lambda path: str(path.relative_to(ROOT)))
+def test_compiled_loop_builds_the_same_ast_as_lark(path):
+    text = path.read_text(encoding="latin-1")
+    compiled = _outcome(text, path.name, True)
+    assert compiled == _outcome(text, path.name, False)
+    # lark_cython's tokens compare equal to strings: none may end up in the AST
+    assert not _tokens_in(compiled)
+
+
+def _tokens_in(value) -> list:
+    if isinstance(value, TOKEN_TYPES):
+        return [value]
+    if dataclasses.is_dataclass(value):
+        return [t for f in dataclasses.fields(value) for t in _tokens_in(getattr(value, f.name))]
+    if isinstance(value, (tuple, list)):
+        return [t for item in value for t in _tokens_in(item)]
+    return []
+
+
+@needs_compiled
+def test_compiled_loop_is_the_one_used_when_installed(monkeypatch):
+    used = []
+    original = accelerated.parse
+    monkeypatch.setattr(accelerated, "parse", lambda *args: used.append(1) or original(*args))
+    parser.parse_modules("MODULE m\nPROC p()\n  x := 1;\nENDPROC\nENDMODULE\n", "m.mod")
+    assert used == [1]
+
+
+ERRONEOUS = [
+    "MODULE m\nPROC p()\n  x := ;\n  y := 2 +;\nENDPROC\nENDMODULE\n",
+    "MODULE m\nPROC p()\n  x := 1\nENDPROC\nENDMODULE\n",
+    "MODULE m\nPROC p()\n  x := 1 $ 2;\nENDPROC\nENDMODULE\n",
+    "MODULE m\nPROC p()\n  IF := 1;\nENDPROC\nENDMODULE\n",
+    "MODULE m\nPROC p()\n  x := 1;\n",
+    "MODULE m\nVAR num " + "a" * 40 + ";\nENDMODULE\n",
+]
+
+
+@pytest.mark.parametrize("text", ERRONEOUS)
+def test_diagnostics_do_not_depend_on_lark_cython(text, monkeypatch):
+    with pytest.raises(UserError) as compiled_first:
+        parser.parse_modules(text, "m.mod")
+    monkeypatch.setattr(accelerated, "AVAILABLE", False)
+    with pytest.raises(UserError) as lark_only:
+        parser.parse_modules(text, "m.mod")
+    assert [str(d) for d in compiled_first.value.diagnostics] == \
+        [str(d) for d in lark_only.value.diagnostics]
+    assert compiled_first.value.diagnostics
