@@ -83,6 +83,9 @@ class Inference:
         self.local: dict[str, TypeInfo] = {}
         self.routine: Optional[ast.Routine] = None
         self.in_declaration = False           # declaration values and sizes are constant
+        # a missing function whose value is an argument of a missing routine: that
+        # routine and the parameter's key (both untyped until one of them is known)
+        self.feeds: dict[str, tuple[Missing, str]] = {}
 
     # ------------------------------------------------------------ bookkeeping
     def note(self, name: ast.Name, kind: str, use: str) -> Missing:
@@ -192,11 +195,20 @@ class Inference:
     # -------------------------------------------------------------- the walk
     def walk(self) -> None:
         for module in self.modules:
+            for definition in module.types:
+                self._record_components(definition)
             for decl in module.data:
                 self.local = {}
                 self._declaration(decl)
             for routine in module.routines:
                 self._routine(routine)
+
+    def _record_components(self, definition) -> None:
+        """A RECORD of the program whose component has a type no module declares."""
+        for component in getattr(definition, "components", ()):
+            if not self.names.is_type(component.type.name.key):
+                self.note(component.type.name, TYPE,
+                          f"type of component {component.name.text} of {definition.name.text}")
 
     def _declaration(self, decl: ast.DataDeclaration) -> None:
         if not self.names.is_type(decl.type.name.key):
@@ -421,6 +433,11 @@ class Inference:
             else:
                 continue
             info = self.type_of(arg.value) if arg.value is not None else None
+            if info is None and isinstance(arg.value, ast.Aggregate):
+                info = _text_array(self.type_of(item) for item in arg.value.items)
+            if info is None and isinstance(arg.value, ast.FunctionCall) \
+                    and arg.value.name.key in self.missing:
+                self.feeds.setdefault(arg.value.name.key, (missing, key))
             parameter = known.get(key)
             if parameter is None:
                 parameter = Parameter(text, info, optional=arg.kind != ast.REQUIRED,
@@ -431,6 +448,15 @@ class Inference:
             elif parameter.type is None and info is not None:
                 parameter.type = info.element() if info.rank == 0 else info
                 self.changed = True
+
+
+def _text_array(item_types) -> Optional[TypeInfo]:
+    """``["SELECT", "EXIT"]`` as an argument: an array of strings (or of bools); an
+    aggregate of numbers stays unknown (it may as well be a pos or a confdata)."""
+    names = {info.name if info is not None and info.rank == 0 else None for info in item_types}
+    if len(names) == 1 and names <= {"string", "bool"}:
+        return TypeInfo(names.pop(), 1)
+    return None
 
 
 def user_parameters(routine: ast.Routine) -> list[tuple]:
@@ -457,6 +483,7 @@ def missing_names(modules: tuple[ast.Module, ...], signals=frozenset()) -> list[
     _settle(inference, count_uses=True)
     if _types_from_names(inference):        # the last resort; its types reach other names
         _settle(inference, count_uses=False)
+    _types_of_passed_values(inference)
     return sorted(inference.missing.values(),
                   key=lambda m: (m.first_use.file, m.first_use.line, m.first_use.column))
 
@@ -499,3 +526,19 @@ def _types_from_names(inference: Inference) -> bool:
                                          f"guessed from the name's prefix '{prefix}'")
                 break
     return changed
+
+
+def _types_of_passed_values(inference: Inference) -> None:
+    """A missing function whose value only ever goes to an untyped parameter of another
+    missing routine (``MoveRob(GetTarget())``): nothing tells the type, so both take the
+    parameter's assumed ``num`` and the function's comment says so."""
+    for key, (routine, parameter_key) in inference.feeds.items():
+        function = inference.missing.get(key)
+        if function is None or function.type is not None:
+            continue
+        parameter = next((p for number, p in enumerate(routine.parameters, 1)
+                          if p.name.upper() == parameter_key or f"P{number}" == parameter_key),
+                         None)
+        if parameter is not None and parameter.type is None:
+            function.learn(NUM, f"passed to {routine.name.text}, whose parameter type is not "
+                           "known either: num assumed")
