@@ -7,7 +7,9 @@ declare everything it lacks so that the program plus the written module links an
 work: a RECORD for a type used only as a record component, a FUNC returning a record
 the stubs declare (through a local, as no literal exists for it) with an array of
 strings for a caption aggregate, and a function whose value only goes to another
-missing function's parameter.
+missing function's parameter; components of components get record types of their
+own, named after the record and the component, unless a known record (a jointtarget for
+``.robax`` and ``.extax``) has them all.
 """
 from __future__ import annotations
 
@@ -30,6 +32,10 @@ DECLARED = [
       "\\choice initial)", "VAR choice result;"]),
     ("passed_function_value.mod",
      ["FUNC num GetNextGoal()", "FUNC bool TryMove(num p1)"]),
+    ("nested_message.mod",
+     ["RECORD state_msgs", "state_msgs_header header;", "RECORD state_msgs_header",
+      "num sequence;", "RECORD state_msgs_feedback", "jointtarget angles;",
+      "FUNC num ReadGripperWidth()"]),
 ]
 
 
@@ -52,6 +58,7 @@ def test_stubs_make_the_program_reach_a_verdict(name, declarations, tmp_path):
     for declaration in declarations:
         assert declaration in text, text
     assert "could not be inferred" not in text
+    assert "_robax" not in text and "_extax" not in text      # no records for a jointtarget's parts
     code, out, err = cli(["check", program, str(stubs), "--max-states", "20000", "--quiet",
                           "--formula", "p: G true"])
     assert code == 0, out + err
