@@ -63,3 +63,14 @@ def test_stubs_make_the_program_reach_a_verdict(name, declarations, tmp_path):
                           "--formula", "p: G true"])
     assert code == 0, out + err
     assert "no_runtime_error: HOLDS" in out and "p: HOLDS" in out
+
+
+def test_a_record_that_contains_itself_is_a_diagnostic_not_a_crash(tmp_path):
+    # seen while surveying: a component typed with its own record (here through another)
+    program = tmp_path / "nested.mod"
+    program.write_text("MODULE m\n  RECORD part_a\n    part_b inner;\n  ENDRECORD\n"
+                       "  RECORD part_b\n    part_a outer;\n  ENDRECORD\n"
+                       "  VAR part_a x;\n  PROC main()\n  ENDPROC\nENDMODULE\n")
+    code, _, err = cli(["check", str(program), "--quiet"])
+    assert code == 2
+    assert "defined in terms of itself" in err and "internal error" not in err
