@@ -82,6 +82,9 @@ class Linker:
                 entry = table[key]
                 if isinstance(entry, RapidType):
                     return entry
+                if entry == "building":        # reached again while it is being built
+                    raise error(BAD_DECLARATION, f"type '{ref.name.text}' is defined in "
+                                "terms of itself (a record cannot contain itself)", ref.span)
                 return self._build_user_type(entry, namespace, module, key)
         found = self.builtin_types.get(key)
         if found is None:

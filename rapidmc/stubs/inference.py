@@ -83,6 +83,13 @@ class Inference:
         self.local: dict[str, TypeInfo] = {}
         self.routine: Optional[ast.Routine] = None
         self.in_declaration = False           # declaration values and sizes are constant
+        # a missing function whose value is an argument of a missing routine: that
+        # routine and the parameter's key (both untyped until one of them is known)
+        self.feeds: dict[str, tuple[Missing, str]] = {}
+        self.invented: set[str] = set()       # keys of record types named by the stubs
+        # a missing function whose value is assigned to an untyped component of a missing
+        # record: that record and the component's name
+        self.component_feeds: dict[str, tuple[Missing, str]] = {}
 
     # ------------------------------------------------------------ bookkeeping
     def note(self, name: ast.Name, kind: str, use: str) -> Missing:
@@ -121,6 +128,8 @@ class Inference:
 
     def _field(self, expr: ast.Component, info: Optional[TypeInfo]) -> None:
         """A component of data whose type is missing: the RECORD gets that component."""
+        if isinstance(expr.base, ast.Component):
+            self._nested_record(expr.base)
         base = self.type_of(expr.base)
         record = self.missing.get(base.key) if base is not None else None
         if record is None or record.kind != TYPE:
@@ -129,6 +138,33 @@ class Inference:
         if name not in record.fields or (record.fields[name] is None and info is not None):
             record.fields[name] = info
             self.changed = True
+
+    def _nested_record(self, expr: ast.Component) -> None:
+        """``msgs.state.joints``: when ``msgs`` has a missing RECORD type and its component
+        ``state`` has no known type, ``state`` is itself a record, of a type named after
+        both (``<record>_<component>``, said so in its comment)."""
+        if isinstance(expr.base, ast.Component):
+            self._nested_record(expr.base)
+        owner = self.type_of(expr.base)
+        record = self.missing.get(owner.key) if owner is not None else None
+        if record is None or record.kind != TYPE or record.fields.get(expr.name.text):
+            return
+        invented = self._fresh_type_name(f"{record.name.text}_{expr.name.text}",
+                                         expr.name.span)
+        self.note(invented, TYPE, f"type of component {expr.name.text} of "
+                  f"{record.name.text}, which has components itself; name invented")
+        self.invented.add(invented.key)
+        record.fields[expr.name.text] = TypeInfo(invented.text)
+        self.changed = True
+
+    def _fresh_type_name(self, text: str, span) -> ast.Name:
+        """``text`` cut to RAPID's 32 characters, numbered if that is taken."""
+        name, number = ast.Name.of(text[:32], span), 1
+        while self.names.is_type(name.key) or name.key in self.missing:
+            number += 1
+            suffix = f"_{number}"
+            name = ast.Name.of(text[:32 - len(suffix)] + suffix, span)
+        return name
 
     def _array_use(self, missing: Missing, expr: ast.Index) -> None:
         while len(missing.dims) < len(expr.indices):
@@ -192,11 +228,20 @@ class Inference:
     # -------------------------------------------------------------- the walk
     def walk(self) -> None:
         for module in self.modules:
+            for definition in module.types:
+                self._record_components(definition)
             for decl in module.data:
                 self.local = {}
                 self._declaration(decl)
             for routine in module.routines:
                 self._routine(routine)
+
+    def _record_components(self, definition) -> None:
+        """A RECORD of the program whose component has a type no module declares."""
+        for component in getattr(definition, "components", ()):
+            if not self.names.is_type(component.type.name.key):
+                self.note(component.type.name, TYPE,
+                          f"type of component {component.name.text} of {definition.name.text}")
 
     def _declaration(self, decl: ast.DataDeclaration) -> None:
         if not self.names.is_type(decl.type.name.key):
@@ -251,6 +296,13 @@ class Inference:
             self.missing[root.name.key].assigned = True
         self.expect(statement.value, target, f"assigned to {target.name} data" if target else "")
         self.expression(statement.value)
+        if target is None and value is None and isinstance(statement.value, ast.FunctionCall) \
+                and isinstance(statement.target, ast.Component):
+            owner = self.type_of(statement.target.base)
+            record = self.missing.get(owner.key) if owner is not None else None
+            if record is not None and record.kind == TYPE:
+                self.component_feeds.setdefault(statement.value.name.key,
+                                                (record, statement.target.name.text))
 
     def _ProcedureCall(self, statement: ast.ProcedureCall) -> None:
         self.call(statement.name, statement.args, PROCEDURE, None)
@@ -421,6 +473,11 @@ class Inference:
             else:
                 continue
             info = self.type_of(arg.value) if arg.value is not None else None
+            if info is None and isinstance(arg.value, ast.Aggregate):
+                info = _text_array(self.type_of(item) for item in arg.value.items)
+            if info is None and isinstance(arg.value, ast.FunctionCall) \
+                    and arg.value.name.key in self.missing:
+                self.feeds.setdefault(arg.value.name.key, (missing, key))
             parameter = known.get(key)
             if parameter is None:
                 parameter = Parameter(text, info, optional=arg.kind != ast.REQUIRED,
@@ -431,6 +488,15 @@ class Inference:
             elif parameter.type is None and info is not None:
                 parameter.type = info.element() if info.rank == 0 else info
                 self.changed = True
+
+
+def _text_array(item_types) -> Optional[TypeInfo]:
+    """``["SELECT", "EXIT"]`` as an argument: an array of strings (or of bools); an
+    aggregate of numbers stays unknown (it may as well be a pos or a confdata)."""
+    names = {info.name if info is not None and info.rank == 0 else None for info in item_types}
+    if len(names) == 1 and names <= {"string", "bool"}:
+        return TypeInfo(names.pop(), 1)
+    return None
 
 
 def user_parameters(routine: ast.Routine) -> list[tuple]:
@@ -457,6 +523,7 @@ def missing_names(modules: tuple[ast.Module, ...], signals=frozenset()) -> list[
     _settle(inference, count_uses=True)
     if _types_from_names(inference):        # the last resort; its types reach other names
         _settle(inference, count_uses=False)
+    _types_of_passed_values(inference)
     return sorted(inference.missing.values(),
                   key=lambda m: (m.first_use.file, m.first_use.line, m.first_use.column))
 
@@ -472,8 +539,9 @@ def _settle(inference: Inference, count_uses: bool) -> None:
 
 
 def _types_from_components(inference: Inference) -> bool:
-    """A record whose components are read: the first record type that has them all."""
-    changed = False
+    """A record whose components are read: the first record type that has them all
+    (also for a record type the stubs invented: the known type replaces it)."""
+    changed = _known_for_invented(inference)
     for missing in inference.missing.values():
         if missing.type is None and missing.components:
             candidates = inference.names.records_with(missing.components)
@@ -499,3 +567,62 @@ def _types_from_names(inference: Inference) -> bool:
                                          f"guessed from the name's prefix '{prefix}'")
                 break
     return changed
+
+
+def _types_of_passed_values(inference: Inference) -> None:
+    """A missing function whose value only ever goes to an untyped parameter of another
+    missing routine (``MoveRob(GetTarget())``) or to an untyped component of a missing
+    record (``msg.width := GetWidth()``): nothing tells the type, so both take the
+    assumed ``num`` and the function's comment says so."""
+    for key, (routine, parameter_key) in inference.feeds.items():
+        function = inference.missing.get(key)
+        if function is None or function.type is not None:
+            continue
+        parameter = next((p for number, p in enumerate(routine.parameters, 1)
+                          if p.name.upper() == parameter_key or f"P{number}" == parameter_key),
+                         None)
+        if parameter is not None and parameter.type is None:
+            function.learn(NUM, f"passed to {routine.name.text}, whose parameter type is not "
+                           "known either: num assumed")
+    for key, (record, component) in inference.component_feeds.items():
+        function = inference.missing.get(key)
+        if function is not None and function.type is None \
+                and record.fields.get(component) is None:
+            function.learn(NUM, f"assigned to component {component} of {record.name.text}, "
+                           "whose type is not known either: num assumed")
+
+
+def _known_for_invented(inference: Inference) -> bool:
+    """An invented record type whose two or more components a declared or predefined
+    record has all (``.robax``, ``.extax``: a jointtarget): its uses take that type."""
+    changed = False
+    for key in sorted(inference.invented):
+        record = inference.missing.get(key)
+        if record is None or len(record.fields) < 2:     # one name alone says too little
+            continue
+        candidates = inference.names.records_with(list(record.fields))
+        if not candidates:
+            continue
+        del inference.missing[key]
+        inference.invented.discard(key)
+        for owner in inference.missing.values():
+            for component, info in owner.fields.items():
+                if info is not None and info.key == key:
+                    owner.fields[component] = TypeInfo(candidates[0], info.rank)
+        changed = True
+    if changed:
+        _drop_unused_invented(inference)
+    return changed
+
+
+def _drop_unused_invented(inference: Inference) -> None:
+    """Invented record types no component uses any more (they belonged to one replaced)."""
+    while True:
+        used = {info.key for owner in inference.missing.values()
+                for info in owner.fields.values() if info is not None}
+        unused = [key for key in inference.invented if key not in used]
+        if not unused:
+            return
+        for key in unused:
+            inference.missing.pop(key, None)
+            inference.invented.discard(key)

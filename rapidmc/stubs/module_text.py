@@ -175,11 +175,12 @@ class StubWriter:
         if item.type is None:
             return None
         value = self.neutral.literal(item.type.name)
-        if value is None:
-            return None
         parameters, notes = self._parameters(item)
-        return notes + [f"FUNC {item.type.name} {item.name.text}({parameters})",
-                        f"  RETURN {value};", "ENDFUNC"]
+        head = f"FUNC {item.type.name} {item.name.text}({parameters})"
+        if value is None:       # no literal for it (a record the stubs declare): a local
+            return notes + [head, f"  VAR {item.type.name} result;", "  RETURN result;",
+                            "ENDFUNC"]
+        return notes + [head, f"  RETURN {value};", "ENDFUNC"]
 
     def _trap(self, item: Missing) -> list[str]:
         return [f"TRAP {item.name.text}", "ENDTRAP"]
