@@ -111,6 +111,7 @@ compiled("Load(\\switch Dynamic, string FilePath \\string File \\switch CheckRef
          "DeactEventBuffer()",
          "BrakeCheck()",
          "CheckProgRef()",
+         "CancelLoad(VAR loadsession LoadNo)",
          modelled=NO_EFFECT)(no_effect)
 
 
