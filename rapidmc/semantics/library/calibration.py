@@ -15,6 +15,8 @@ _FOUR = "jointtarget Pos1, jointtarget Pos2, jointtarget Pos3, jointtarget Pos4"
 compiled(f"MToolTCPCalib({_FOUR}, INOUT tooldata Tool, VAR num MaxErr, VAR num MeanErr)",
          "MToolRotCalib(jointtarget RefTip, jointtarget ZPos \\jointtarget XPos, "
              "INOUT tooldata Tool)",
+         "SToolRotCalib(jointtarget RefTip, jointtarget ZPos, jointtarget XPos, "
+             "INOUT tooldata Tool)",
          f"SToolTCPCalib({_FOUR}, INOUT tooldata Tool, VAR num MaxErr, VAR num MeanErr)",
          "pose DefFrame(robtarget NewP1, robtarget NewP2, robtarget NewP3 "
              "\\switch Origin)",

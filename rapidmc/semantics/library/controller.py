@@ -43,6 +43,18 @@ def _get_sys_info(calls, compiler, call, entry) -> Compiled:
     return Compiled(info, STRING)
 
 
+@compiled("bool IsSysId(string SystemId)", modelled=FIXED)
+def _is_sys_id(calls, compiler, call, entry) -> Compiled:
+    """Whether SystemId is this controller's serial number (GetSysInfo \\SerialNo)."""
+    system_id = Arguments(calls, compiler, call, entry).value("SystemId")
+    serial = dict(SYSTEM_INFO)["SerialNo"]
+    return Compiled(lambda m: system_id(m) == serial, BOOL)
+
+
+compiled("WarmStart()", modelled=NOT_MODELLED)(
+    not_modelled("restarts the controller, which rapidmc does not model"))
+
+
 @compiled("bool RobOS()",
           modelled=FIXED)
 def _rob_os(calls, compiler, call, entry) -> Compiled:

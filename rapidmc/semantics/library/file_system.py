@@ -4,13 +4,15 @@ rapidmc does not model the controller's disks.  Whether a file exists is the
 world's decision (IsFile: TRUE or FALSE, a nondeterministic choice when model
 checking, FALSE in ``run``); directories read as empty and sizes as 0;
 creating, copying, renaming and removing change nothing rapidmc observes.
+WriteAnyBin changes nothing; ReadAnyBin, which would read data of any type in
+binary form, stops the run (RMC305).
 """
 from __future__ import annotations
 
 from ..expressions import Compiled
-from .arguments import Arguments, fixed, no_effect
+from .arguments import Arguments, fixed, no_effect, not_modelled
 from .environment_model import where
-from .registry import CHOICE, FIXED, NO_EFFECT, compiled
+from .registry import CHOICE, FIXED, NO_EFFECT, NOT_MODELLED, compiled
 
 compiled("MakeDir(string Path)",
          "RemoveDir(string Path)",
@@ -21,6 +23,9 @@ compiled("MakeDir(string Path)",
          "CloseDir(VAR dir Dev)",
          "WriteAnyBin(VAR iodev IODevice, anytype Data)",
          modelled=NO_EFFECT)(no_effect)
+compiled("ReadAnyBin(VAR iodev IODevice, VAR anytype Data \\num Time)",
+         modelled=NOT_MODELLED)(not_modelled("reads data of any type in binary form, which "
+                                             "rapidmc does not model"))
 compiled("bool ReadDir(VAR dir Dev, VAR string FileName)", modelled=FIXED)(fixed(False))
 compiled("num FileSize(string Path)",
          "num FSSize(string Name \\switch Total | switch Free \\switch Kbyte \\switch Mbyte)",

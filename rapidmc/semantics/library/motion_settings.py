@@ -3,8 +3,8 @@ program displacement, external axes offsets, path resolution.
 
 rapidmc models motion as a jump to the programmed target, so these change
 nothing it observes: each is checked against its signature and does nothing.
-The few functions that read the servo or the robot's limits give one fixed,
-typical value.
+The few functions that read the servo, the robot's limits or the axis distance and
+move time counters give one fixed, typical value (the counters read 0).
 """
 from __future__ import annotations
 
@@ -25,6 +25,8 @@ compiled("GripLoad(PERS loaddata Load)",
          "SpeedRefresh(num Override)",
          "TuneServo(mecunit MecUnit, num Axis, num TuneValue \\tunetype Type)",
          "TuneReset()",
+         "DitherAct(\\mecunit MechUnit, num Axis \\num Level)",
+         "DitherDeact()",
          "ActUnit(mecunit MechUnit)",
          "DeactUnit(mecunit MechUnit)",
          "MechUnitLoad(mecunit MechUnit, num AxisNo, PERS loaddata Load)",
@@ -35,6 +37,8 @@ compiled("GripLoad(PERS loaddata Load)",
              "\\PERS wobjdata WObj)",
          "PDispSet(pose DispFrame)",
          "PDispOff()",
+         "ResetAxisDistance(mecunit MechUnit, num AxisNo)",
+         "ResetAxisMoveTime(mecunit MechUnit, num AxisNo)",
          "IndReset(mecunit MecUnit, num Axis \\switch RefPos | switch RefNum | switch Short "
              "| switch Fwd | switch Bwd | switch Old)",
          modelled=NO_EFFECT)(no_effect)
@@ -42,4 +46,6 @@ compiled("GripLoad(PERS loaddata Load)",
 compiled("num MaxRobSpeed()", modelled=FIXED)(fixed(5000.0))
 compiled("num GetMotorTorque(\\mecunit MecUnit, num AxisNo)",
          "num ReadMotor(\\mecunit MecUnit, num Axis)", modelled=FIXED)(fixed(0.0))
+compiled("num GetAxisDistance(mecunit MechUnit, num AxisNo)",
+         "num GetAxisMoveTime(mecunit MechUnit, num AxisNo)", modelled=FIXED)(fixed(0.0))
 compiled("num CSpeedOverride(\\switch CTask)", modelled=FIXED)(fixed(100.0))

@@ -1,7 +1,8 @@
 """Path Recovery and stored paths: StorePath, RestoPath, the PathRec* routines.
 
 rapidmc records no path (motion is a jump to each target), so storing and
-restoring a path, and moving back or forth along a recorded one, change
+restoring a path, moving back or forth along a recorded one, and stepping
+back along the path (StepBwdPath), change
 nothing it observes; PathRecValidBwd/Fwd answer FALSE: there is no recorded
 path to move along.
 """
@@ -18,6 +19,7 @@ compiled("StorePath(\\switch KeepSync)",
          "PathRecMoveFwd(\\pathrecid ID \\switch ToolOffs \\speeddata Speed)",
          "StopMoveReset(\\switch AllMotionTasks)",
          "StartMoveRetry()",
+         "StepBwdPath(num StepLength, num StepTime)",
          modelled=NO_EFFECT)(no_effect)
 
 compiled("bool PathRecValidBwd(\\pathrecid ID)", "bool PathRecValidFwd(\\pathrecid ID)",

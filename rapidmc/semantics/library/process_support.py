@@ -45,6 +45,7 @@ compiled("TriggInt(VAR triggdata TriggData, num Distance \\switch Start | switch
          "ISignalGO(\\switch Single | switch SingleSafe, VAR signalgo Signal, VAR intnum Interrupt)",
          "IOEnable(string UnitName, num MaxTime)",
          "IODisable(string UnitName, num MaxTime)",
+         "IOBusStart(string BusName)",
          "SocketSendTo(VAR socketdev Socket, string RemoteAddress, num RemotePort "
              "\\string Str | VAR rawbytes RawData | VAR anytype Data \\num NoOfBytes)",
          modelled=NO_EFFECT)(no_effect)

@@ -11,7 +11,8 @@ from .registry import compiled
 
 
 @compiled("Stop(\\switch NoRegain | switch AllMoveTasks)",
-          "Break()")
+          "Break()",
+          "SystemStopAction(\\switch Stop | switch StopBlock | switch Halt)")
 def _stop(calls, compiler, call, entry):
     Arguments(calls, compiler, call, entry)
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from ..expressions import Compiled
 from ..instructions import Action
+from ..machine import ABSENT
 from .arguments import (
     ROBOT_TOOL,
     ROBOT_WOBJ,
@@ -32,6 +33,7 @@ compiled("string NonMotionMode(\\switch Main)", modelled=FIXED)(fixed("OFF"))
 compiled("string TextGet(num Table, num Index)", "string RobName()",
          modelled=FIXED)(fixed(""))
 compiled("num TextTabGet(string TableName)", "num PathLevel()", "num MotionPlannerNo()",
+         "num GetModalPayLoadMode()",
          modelled=FIXED)(fixed(1.0))
 compiled("num MaxRobReorientSpeed()", modelled=FIXED)(fixed(500.0))
 compiled("num MaxExtLinearSpeed()", modelled=FIXED)(fixed(5000.0))
@@ -42,6 +44,39 @@ compiled("bool IsLeadThrough(\\mecunit MechUnit)", "bool IsBrakeCheckActive()",
          "bool PFRestart(\\switch Base | switch Irpt)", modelled=FIXED)(fixed(False))
 compiled("iounit_state IOUnitState(string UnitName \\switch Phys | switch Logic)",
          modelled=FIXED)(fixed(PREDEFINED_DATA["IOUNIT_RUNNING"].value))
+# GetNextMechUnit walks the list of mechanical units; rapidmc's controller has one, ROB_1:
+# (optional parameter, value) for list entry 0.
+_ROB_1 = (("MecRef", PREDEFINED_DATA["ROB_1"].value), ("TCPRob", True), ("NoOfAxes", 6.0),
+          ("MecTaskNo", 1.0), ("MotPlanNo", 1.0), ("Active", True), ("DriveModule", 1.0),
+          ("OKToDeact", False))
+
+
+@compiled("bool GetNextMechUnit(INOUT num ListNumber, INOUT string UnitName "
+              "\\VAR mecunit MecRef \\VAR bool TCPRob \\VAR num NoOfAxes \\VAR num MecTaskNo "
+              "\\VAR num MotPlanNo \\VAR bool Active \\VAR num DriveModule \\VAR bool OKToDeact)",
+          modelled=FIXED)
+def _get_next_mech_unit(calls, compiler, call, entry) -> Compiled:
+    """Entry 0 is ROB_1 (TRUE, its name and properties); there is no other entry (FALSE).
+    ListNumber is incremented on every call, as on the controller."""
+    arguments = Arguments(calls, compiler, call, entry)
+    number, name = arguments.fn("ListNumber"), arguments.fn("UnitName")
+    details = [(arguments.fn(key), value) for key, value in _ROB_1]
+
+    def next_unit(m):
+        ref = number(m)
+        index = m.read_ref(ref)
+        m.write_ref(ref, index + 1.0)
+        if index != 0.0:
+            return False
+        m.write_ref(name(m), "ROB_1")
+        for detail, value in details:
+            target = detail(m)
+            if target is not ABSENT:
+                m.write_ref(target, value)
+        return True
+    return Compiled(next_unit, calls.return_type(entry))
+
+
 compiled("num ProgMemFree()", modelled=FIXED)(fixed(1_000_000.0))
 compiled("num TestSignRead(num Channel)", modelled=FIXED)(fixed(0.0))
 compiled("event_type EventType(\\switch Cont)", modelled=FIXED)(
@@ -75,6 +110,8 @@ compiled("Load(\\switch Dynamic, string FilePath \\string File \\switch CheckRef
          "ActEventBuffer()",
          "DeactEventBuffer()",
          "BrakeCheck()",
+         "CheckProgRef()",
+         "CancelLoad(VAR loadsession LoadNo)",
          modelled=NO_EFFECT)(no_effect)
 
 
