@@ -112,3 +112,20 @@ def test_vacuity_and_coverage_warnings_are_in_system_out(monkeypatch, capsys, tm
     assert outputs["wraps"] is None
     assert "prog.mod:12:17: warning: never reached under any input [RMC701]" in \
         suite.findtext("system-out")
+
+
+@pytest.mark.parametrize("argv", [
+    ["check", "case_studies/sorter/sorter_b.mod", "--env", "case_studies/sorter/plant.mod",
+     "--quiet", "--junit", "{missing}/report.xml"],
+    ["graph", "case_studies/sorter/sorter_b.mod", "--env", "case_studies/sorter/plant.mod",
+     "--quiet", "-o", "{missing}/states.graphml"],
+    ["check", "case_studies/sorter/sorter_b.mod", "--env", "case_studies/sorter/plant.mod",
+     "--quiet", "--junit", "{folder}"],
+])
+def test_an_unwritable_report_is_refused_before_the_search(argv, monkeypatch, capsys, tmp_path):
+    monkeypatch.chdir(ROOT)
+    argv = [a.format(missing=tmp_path / "missing", folder=tmp_path) for a in argv]
+    assert main(argv) == 2
+    out, err = capsys.readouterr()
+    assert "[RMC506]" in err
+    assert "HOLDS" not in out and "states:" not in out          # no search ran

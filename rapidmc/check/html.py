@@ -54,19 +54,10 @@ def write_html(path: str, results: Sequence[PropertyResult], describer: TraceDes
     try:
         Path(path).write_text(text, encoding="utf-8")
     except OSError as exc:
-        raise _unwritable(path, exc.strerror or str(exc)) from None
+        raise html_unwritable(path, exc.strerror or str(exc)) from None
 
 
-def check_html_target(path: str) -> None:
-    """Refuse, before any search, a report path that is a folder or lies in no folder."""
-    target = Path(path)
-    if target.is_dir():
-        raise _unwritable(path, "it is a directory")
-    if not target.resolve().parent.is_dir():
-        raise _unwritable(path, "its directory does not exist")
-
-
-def _unwritable(path: str, why: str):
+def html_unwritable(path: str, why: str):
     return error(HTML_OUTPUT, f"cannot write the HTML report '{path}': {why}")
 
 

@@ -17,7 +17,7 @@ from pathlib import Path
 
 from .. import api
 from ..check import Progress, format_json, format_text
-from ..check.html import check_html_target, write_html
+from ..check.html import html_unwritable, write_html
 from ..check.junit import format_junit, format_junit_diagnostics
 from ..check.sarif import format_sarif, format_sarif_diagnostics
 from ..diagnostics import USAGE, UserError, error, render_all
@@ -27,7 +27,7 @@ from ..properties import Property, check_unique, read_property_file
 from .. import reduction
 from . import storage_options
 from .quoting import quoted, routine_name
-from .report_file import write_report
+from .report_file import check_report_target, unwritable_reason, write_report
 
 DEFAULT_MAX_STATES = 1_000_000
 
@@ -160,8 +160,7 @@ def execute(args: argparse.Namespace) -> int:
 
 
 def _check(args: argparse.Namespace) -> int:
-    if args.html:
-        check_html_target(args.html)
+    _refuse_unwritable_targets(args)
     report = api.check_model(prepare_model(args), progress=lambda: _progress(args.quiet))
     results, describer, warnings = report.results, report.describer, report.warnings
     exit_code = report.exit_code(args.fail_on_vacuous)
@@ -180,6 +179,15 @@ def _check(args: argparse.Namespace) -> int:
         write_report(args.junit, format_junit(results, describer, *_suite(args), warnings),
                      "JUnit report")
     return exit_code
+
+
+def _refuse_unwritable_targets(args: argparse.Namespace) -> None:
+    """A report file that cannot be written is an input error before the search, not after it."""
+    reason = unwritable_reason(args.html) if args.html else None
+    if reason is not None:
+        raise html_unwritable(args.html, reason)
+    if args.junit:
+        check_report_target(args.junit, "JUnit report")
 
 
 def _suite(args: argparse.Namespace) -> tuple[str, str]:

@@ -22,7 +22,7 @@ from ..diagnostics import EXIT_OK, EXIT_UNKNOWN, USAGE, error
 from ..state_graph import StateGraph, product_graph, state_graph
 from .check import add_model_arguments, prepare_model
 from .quoting import quoted
-from .report_file import write_report
+from .report_file import check_report_target, write_report
 
 
 def _graphml(graph: nx.MultiDiGraph) -> str:
@@ -56,6 +56,7 @@ def execute(args: argparse.Namespace) -> int:
     if writer is None:
         raise error(USAGE, f"-o {quoted(args.output)}: the suffix picks the format; use one of "
                     f"{', '.join(WRITERS)}")
+    check_report_target(args.output, "graph")
     args.no_reduce = True        # the graph of the program as written: one edge per instruction
     model = prepare_model(args)
     bounds = dict(max_states=args.max_states, max_seconds=args.max_seconds)
