@@ -1,6 +1,6 @@
 """Properties to check: property files, formulas, and atomic propositions over RAPID states.
 
-A property file holds one ``NAME: FORMULA`` per line (``#`` starts a
+A property file holds one ``NAME: FORMULA`` (or a bare ``FORMULA``) per line (``#`` starts a
 comment); formulas use Spot's LTL syntax.  Atoms are RAPID boolean
 expressions over the program's global data, evaluated in each state:
 
@@ -85,13 +85,22 @@ def _strip_comment(line: str) -> str:
 
 
 def parse_property(text: str, file: str = "<formula>", line: int = 1) -> Property:
-    """``NAME: FORMULA`` (from a property file line or a --formula option)."""
+    """``NAME: FORMULA`` or a bare ``FORMULA`` (from a property file line or a --formula option).
+
+    A formula without a name is named by its own text, as written (spaces
+    between words kept as one), so reports still say which property is which.
+    """
     match = _PROPERTY_LINE.match(text)
-    if not match or not match.group(2):
-        raise error(PROPERTY_FILE, "expected 'NAME: FORMULA'",
+    if match and not match.group(2):
+        raise error(PROPERTY_FILE, f"property '{match.group(1)}' has no formula after its colon",
                     ast.Span(file, line, 1, line, len(text) + 1))
-    name, formula_text = match.group(1), match.group(2)
-    column = match.start(2) + 1
+    if match:
+        name, formula_text = match.group(1), match.group(2)
+        column = match.start(2) + 1
+    else:
+        formula_text = text.strip()
+        name = " ".join(formula_text.split())
+        column = len(text) - len(text.lstrip()) + 1
     formula = parse_formula(formula_text, file=file, line=line, column=column)
     return Property(name, formula_text, formula, file, line)
 

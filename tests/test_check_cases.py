@@ -10,7 +10,7 @@ folder (so file names in the output and in ``args`` are the folder's own):
   comments say how each verdict was derived by hand;
 * ``args`` — extra command-line options (shell quoting; lines starting with ``#``
   are comments, in every data file);
-* ``expected`` — one ``NAME VERDICT`` line per property, the built-in
+* ``expected`` — one ``NAME VERDICT`` line per property (a bare formula's name is its text), the built-in
   ``no_runtime_error`` and ``no_deadlock`` included; or, for bad input,
   ``ERROR RMCnnn [FILE:LINE]``: the diagnostic code (and where it points)
   expected on stderr;
@@ -90,8 +90,9 @@ def _parse_expected(folder: Path) -> tuple[dict, Optional[ExpectedError]]:
             assert len(words) in (2, 3), f"{folder.name}/expected: bad line {line!r}"
             expected_error = ExpectedError(words[1], words[2] if len(words) == 3 else None)
             continue
-        assert len(words) == 2 and words[1] in VERDICTS, f"{folder.name}/expected: {line!r}"
-        verdicts[words[0]] = words[1]
+        name, _, verdict = line.rpartition(" ")    # a bare formula's name holds spaces
+        assert name.strip() and verdict in VERDICTS, f"{folder.name}/expected: {line!r}"
+        verdicts[name.strip()] = verdict
     assert bool(verdicts) != bool(expected_error), \
         f"{folder.name}/expected: give verdicts or one ERROR line"
     return verdicts, expected_error

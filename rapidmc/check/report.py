@@ -76,7 +76,8 @@ def vacuity_text(trigger: str) -> str:
 
 
 def statistics_text(stats: SearchStats) -> str:
-    return f"{stats.product_states:,} states, {seconds_text(stats.seconds)}"
+    states = stats.product_states
+    return f"{states:,} {'state' if states == 1 else 'states'}, {seconds_text(stats.seconds)}"
 
 
 def seconds_text(seconds: float) -> str:
