@@ -53,3 +53,16 @@ compiled(f"bool IndInpos({_INDEPENDENT})",
          f"bool IndSpeed({_INDEPENDENT} \\switch InSpeed | switch ZeroSpeed)",
          modelled=FIXED)(fixed(True))
 compiled("pos CorrRead()", modelled=FIXED)(fixed((0.0, 0.0, 0.0)))
+
+
+# --- reference coverage (issue 8, item 1): the rest of the trigger instructions ----------
+# TriggCheckIO's check and TriggRampAO's ramp act during the move; TriggDataCopy copies a
+# trigger definition, which rapidmc does not keep; so a trigger is always valid.
+compiled("TriggCheckIO(VAR triggdata TriggData, num Distance \\switch Start | switch Time, "
+             "VAR anytype Signal, opnum Relation, num CheckValue | dnum CheckDvalue "
+             "\\switch StopMove, VAR intnum Interrupt)",
+         "TriggRampAO(VAR triggdata TriggData, num Distance \\switch Start, num EquipLag, "
+             "VAR signalao AOutput, num SetValue, num RampLength \\switch Time)",
+         "TriggDataCopy(VAR triggdata Source, VAR triggdata Destination)",
+         modelled=NO_EFFECT)(no_effect)
+compiled("bool TriggDataValid(VAR triggdata TriggData)", modelled=FIXED)(fixed(True))

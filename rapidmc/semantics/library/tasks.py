@@ -156,3 +156,7 @@ def _set_sys_data(calls, compiler, call, entry):
         robot[part] = source(m)
         m.robot = tuple(robot)
     return Action(call.span, (lambda m: None) if part is None else set_data)
+
+
+# --- reference coverage (issue 8, item 1) -------------------------------------------------
+compiled("num TasksInSync(INOUT tasks TaskList{*})", modelled=FIXED)(fixed(0.0))
