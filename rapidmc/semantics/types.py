@@ -145,7 +145,7 @@ NUM_ALIASES = (
     "testsignal", "tunetype", "uishownum", "signalorigin", "aiotrigg",
     # reference coverage (issue 8, item 1): I/O bus states, configuration domains, motion
     # process modes, load identification results, conveyor commands
-    "busstate", "cfgdomain", "motionprocessmode", "paridvalidnum", "cnvcmd",
+    "busstate", "cfgdomain", "motionprocessmode", "paridvalidnum", "cnvcmd", "tunegtype",
 )
 STRING_ALIASES = ("stringdig", "errstr")
 

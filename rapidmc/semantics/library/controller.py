@@ -242,3 +242,15 @@ compiled("ProcerrRecovery(\\switch SyncOrgMoveInst | switch SyncLastMoveInst "
              "\\VAR signaldo ProcSignal)",
          modelled=NOT_MODELLED)(not_modelled("raises a process error in the running move, which "
                                              "rapidmc does not model"))
+
+# EGM path correction: the moves go to their targets; the correction changes nothing.
+compiled("EGMMoveL(VAR egmident EGMid, robtarget ToPoint, speeddata Speed \\num T, zonedata Zone, "
+             "PERS tooldata Tool \\PERS wobjdata WObj \\PERS loaddata TLoad)",
+         "EGMMoveC(VAR egmident EGMid, robtarget CirPoint, robtarget ToPoint, speeddata Speed "
+             "\\num T, zonedata Zone, PERS tooldata Tool \\PERS wobjdata WObj \\PERS loaddata TLoad)",
+         modelled=ROBOT_STATE)(_trigg_move)
+compiled("EGMActMove(VAR egmident EGMid, pose SensorFrame \\num SampleRate)",
+         modelled=NO_EFFECT)(no_effect)
+compiled("PackDNHeader(string Service, string Path, VAR rawbytes RawData)",
+         modelled=NOT_MODELLED)(not_modelled("writes a DeviceNet message header, whose layout "
+                                             "rapidmc does not model"))

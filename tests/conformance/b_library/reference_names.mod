@@ -5,7 +5,9 @@ MODULE MainModule
   ! IOBusState reads a running bus; Type names the data type of its argument (of an array:
   ! the element type); TriggLIOs and ArcL1 move the robot to their target; SearchExtJ
   ! without a hit (the signal is 0 in run) raises ERR_WHLSEARCH after moving the external
-  ! axes; a trigger is always valid; no cyclic bool exists; usbdisk1 is a file-system prefix.
+  ! axes; a trigger is always valid; no cyclic bool exists; usbdisk1 is a file-system prefix;
+  ! MirPos mirrors a point in the xy-plane of a frame (the tool's x- and z-axes mirrored, its
+  ! y-axis turned) and EGMMoveL moves to its target.
   PERS robtarget pA := [[500,0,400],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
   PERS robtarget pB := [[600,0,300],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
   CONST jointtarget jExt := [[0,0,0,0,0,0],[250,9E9,9E9,9E9,9E9,9E9]];
@@ -17,6 +19,9 @@ MODULE MainModule
   VAR busstate state;
   VAR string name;
   VAR num counts{3};
+  VAR egmident egm;
+  VAR robtarget pM;
+  PERS wobjdata wMirror := [FALSE,TRUE,"",[[10,0,0],[0.707107,0,0.707107,0]],[[0,0,0],[1,0,0,0]]];
   PERS bool flag := FALSE;
   PROC main()
     Reset doOut;
@@ -35,6 +40,12 @@ MODULE MainModule
     TPWrite "trigger valid " + ValToStr(TriggDataValid(trigg));
     TPWrite "cyclic " + ValToStr(IsCyclicBool(flag)) + " " + NumToStr(GetNumberOfCyclicBool(), 0);
     TPWrite "usb " + usbdisk1;
+    pM := MirPos(pA, wobj0);
+    TPWrite "mirrored in xy " + ValToStr(pM.trans) + " " + ValToStr(pM.rot);
+    pM := MirPos(pA, wMirror \MirY);
+    TPWrite "mirrored at x=10 " + ValToStr(pM.trans) + " " + ValToStr(pM.rot);
+    EGMMoveL egm, pA, v100, fine, tool0;
+    TPWrite "at z=" \Num:=CPos(\Tool:=tool0).z;
     SearchExtJ \Stop, diProbe, jFound, jExt, v100;
     TPWrite "not reached";
   ERROR
