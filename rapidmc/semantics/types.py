@@ -146,6 +146,7 @@ NUM_ALIASES = (
     # reference coverage (issue 8, item 1): I/O bus states, configuration domains, motion
     # process modes, load identification results, conveyor commands
     "busstate", "cfgdomain", "motionprocessmode", "paridvalidnum", "cnvcmd", "tunegtype",
+    "tsp_status",
 )
 STRING_ALIASES = ("stringdig", "errstr")
 

@@ -198,7 +198,8 @@ for _number in range(1, 11):
     _define(f"usbdisk{_number}", "string", f"/bd{_number - 1}:")
 # GetSignalOrigin results (signalorigin), motion process modes (motionprocessmode),
 # trigger modes (triggmode), load identification (paridnum, paridvalidnum, loadidnum),
-# sensor states (sensorstate), configuration domains (cfgdomain); numbers: our choice.
+# sensor states (sensorstate), configuration domains (cfgdomain), bus states (busstate),
+# task selection panel states (tsp_status); numbers: our choice.
 for _names, _type in (
         (("SIGORIG_NONE", "SIGORIG_CFG", "SIGORIG_ALIAS"), "signalorigin"),
         (("OPTIMAL_CYCLE_TIME_MODE", "LOW_SPEED_ACCURACY_MODE", "LOW_SPEED_STIFF_MODE",
@@ -216,7 +217,9 @@ for _names, _type in (
         (("IOBUS_LOG_STATE_STARTED", "IOBUS_LOG_STATE_STOPPED", "IOBUS_PHYS_STATE_ERROR",
           "IOBUS_PHYS_STATE_HALTED", "IOBUS_PHYS_STATE_INIT", "IOBUS_PHYS_STATE_RUNNING",
           "IOBUS_PHYS_STATE_STARTUP", "BUSSTATE_ERROR", "BUSSTATE_HALTED", "BUSSTATE_INIT",
-          "BUSSTATE_RUN", "BUSSTATE_STARTUP"), "busstate")):
+          "BUSSTATE_RUN", "BUSSTATE_STARTUP"), "busstate"),
+        (("TSP_STATUS_NOT_NORMAL_TASK", "TSP_STATUS_DEACT", "TSP_STATUS_DEACT_SERV_ROUT",
+          "TSP_STATUS_ACT"), "tsp_status")):
     for _number, _name in enumerate(_names, start=1):
         _define(_name, _type, float(_number))
 # I/O unit states of RobotWare 6 (logical and physical), after the four of RobotWare 5 above.

@@ -160,3 +160,6 @@ def _set_sys_data(calls, compiler, call, entry):
 
 # --- reference coverage (issue 8, item 1) -------------------------------------------------
 compiled("num TasksInSync(INOUT tasks TaskList{*})", modelled=FIXED)(fixed(0.0))
+# The task selection panel: every task rapidmc runs is a normal task selected in it.
+compiled("tsp_status GetTSPStatus(string TaskName)", modelled=FIXED)(
+    fixed(PREDEFINED_DATA["TSP_STATUS_ACT"].value))
