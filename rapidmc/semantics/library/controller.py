@@ -5,6 +5,10 @@ Motion is modelled as a jump to the target (see special_routines), so the
 routines that only tune motion (MotionSup, ClearPath, EGM sensor guidance)
 change nothing rapidmc observes: they are checked against their signatures
 and do nothing.  docs/semantics.md, "Sockets and files", lists them.
+
+The safety controller answers fixed checksums and version; a cyclic bool (re-evaluated by
+the controller all the time) and load identification (which moves the robot) are not
+modelled: setting one up stops the run, and until then none exists.
 """
 from __future__ import annotations
 

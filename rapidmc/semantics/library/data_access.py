@@ -4,6 +4,9 @@ The name is looked up where the call is, as the controller does: the
 routine's data, the module's, then the task's global data and the
 predefined ones.  A name that is not data there raises ERR_SYM_ACCESS; data
 of another type than the argument's raises ERR_SYMBOL_TYPE.
+
+Type names the data type of its argument, known when the program is linked; ArgName and
+SetAllDataVal, which need the names of data at run time, stop the run (RMC305).
 """
 from __future__ import annotations
 

@@ -6,8 +6,9 @@ is printed as ``[socket] <text>``; when standard input ends, the peer has
 closed the connection (ERR_SOCK_CLOSED once, then the run stops for want
 of input).  When model checking, a received message is a nondeterministic
 choice among the configured messages, and a finite ``\\Time`` may run out
-(ERR_SOCK_TIMEOUT).  docs/semantics.md, "Sockets and files", has the
-details.
+(ERR_SOCK_TIMEOUT).  A UDP datagram (SocketReceiveFrom, on a bound socket)
+comes from the same source; its sender is not modelled.  docs/semantics.md,
+"Sockets and files", has the details.
 
 A ``socketdev`` variable holds ``None`` (never created: SOCKET_CLOSED) or a
 pair ``(status, pending)``: the socketstatus number and the received
