@@ -10,6 +10,7 @@ SetAllDataVal, which need the names of data at run time, stop the run (RMC305).
 """
 from __future__ import annotations
 
+from ... import ast
 from ...diagnostics import ARGUMENT, error
 from ..errors import RapidError
 from ..instructions import Action
@@ -111,10 +112,20 @@ def _type(calls, compiler, call, entry):
     data = argument_expression(call, "Data", 0)
     if data is None:
         raise error(ARGUMENT, "Type takes one data object", call.span)
-    rapid_type = element_type(compiler.value(data).type)
+    rapid_type = element_type(_declared_type(compiler, data))
     if rapid_type is None:
         raise error(ARGUMENT, "Type cannot tell the type of this argument", data.span)
     return constant(rapid_type.name, STRING)
+
+
+def _declared_type(compiler, data):
+    """The declared type of a named data object (a signal's is its signal type, not the value
+    read from it), else the type of the expression's value."""
+    if isinstance(data, ast.NameRef):
+        symbol = compiler.scope.lookup(data.name.key) or compiler.linker.system_symbol(data.name)
+        if symbol is not None and symbol.type is not None:
+            return symbol.type
+    return compiler.value(data).type
 
 
 compiled("string ArgName(anytype Parameter \\VAR errnum ErrorNumber)",

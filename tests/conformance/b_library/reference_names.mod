@@ -34,7 +34,7 @@ MODULE MainModule
     TPWrite "bus " + ValToStr(state = IOBUS_PHYS_STATE_RUNNING);
     IOBusState "Local", state;
     TPWrite "bus " + ValToStr(state = BUSSTATE_RUN);
-    TPWrite Type(pA) + " " + Type(state) + " " + Type(counts) + " " + Type(flag);
+    TPWrite Type(pA) + " " + Type(state) + " " + Type(counts) + " " + Type(flag) + " " + Type(doGripper);
     TriggLIOs pB, v500 \TriggData1:=ios, fine, tool0;
     TPWrite "at x=" \Num:=CPos(\Tool:=tool0).x;
     TPWrite "trigger valid " + ValToStr(TriggDataValid(trigg));
