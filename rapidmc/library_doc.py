@@ -20,6 +20,7 @@ import sys
 from collections import Counter
 from pathlib import Path
 
+from .library_coverage import REFERENCE, coverage
 from .semantics.errors import ERROR_NUMBERS
 from .semantics.library import TOPICS, all_entries
 from .semantics.library.data import PREDEFINED_DATA
@@ -131,6 +132,24 @@ def figures(entries) -> list[str]:
     return lines
 
 
+def coverage_section() -> list[str]:
+    """How many of the reference's names (docs/reference-names.txt) the library has, and
+    which it lacks."""
+    sections = coverage()
+    lines = ["", "## Coverage of the reference", "",
+             f"The names of ABB's RAPID reference listed in `docs/{REFERENCE.name}` (its header "
+             "says which manual and options, and where the list comes from) against the registry "
+             "(`python -m rapidmc.library_coverage`).", "",
+             "| section | in the reference | in the library | missing |", "|---|---|---|---|"]
+    for section in sections:
+        lines.append(f"| {section.name} | {len(section.names)} | {section.covered} | "
+                     f"{len(section.missing)} |")
+    for section in sections:
+        if section.missing:
+            lines += ["", f"Missing {section.name}: {', '.join(section.missing)}."]
+    return lines
+
+
 def document() -> str:
     entries = list(all_entries())
     lines = ["# The predefined library", "",
@@ -144,6 +163,7 @@ def document() -> str:
              "nothing rapidmc observes), **stops the run: not modelled** (the program loads; "
              "reaching the call stops with RMC305).", ""]
     lines += figures(entries)
+    lines += coverage_section()
     lines += ["", "## Routines by topic"]
     lines += routine_sections(entries)
     lines += type_section()

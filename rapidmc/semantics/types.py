@@ -143,6 +143,10 @@ NUM_ALIASES = (
     "errstr_num", "opmode", "runmode",
     "inttypes", "egmstate", "egmstopmode", "egmframetype",
     "testsignal", "tunetype", "uishownum", "signalorigin", "aiotrigg",
+    # reference coverage (issue 8, item 1): I/O bus states, configuration domains, motion
+    # process modes, load identification results, conveyor commands
+    "busstate", "cfgdomain", "motionprocessmode", "paridvalidnum", "cnvcmd", "tunegtype",
+    "tsp_status",
 )
 STRING_ALIASES = ("stringdig", "errstr")
 
@@ -180,6 +184,33 @@ OPTION_RECORDS = (
                                 "org_weave_width", "org_weave_height", "org_weave_bias")),
 )
 PREDEFINED_TYPES.update({t.key: t for t in OPTION_RECORDS})
+
+
+def _trigg_io(name: str, set_value: RapidType) -> RapidType:
+    return _record(name, ("used", BOOL), ("distance", NUM), ("start", BOOL), ("equiptime", NUM),
+                   ("signalname", STRING), ("setvalue", set_value), ("xxx", NUM))
+
+
+# Reference coverage (issue 8, item 1): the components of the motion settings (motsetdata,
+# the type of the system data C_MOTSET, and its parts), the trigger tables of TriggLIOs and
+# TriggJIOs, and the original positions of ORobT/CJointT-style data, as the manual lists them.
+VELDATA = _record("veldata", *_nums("oride", "max"))
+ACCDATA = _record("accdata", *_nums("acc", "ramp", "finepramp"))
+SINGDATA = _record("singdata", ("wrist", BOOL), ("arm", BOOL), ("base", BOOL))
+CONFSUPDATA = _record("confsupdata", ("jsup", BOOL), ("lsup", BOOL), *_nums("ax1", "ax4", "ax6"))
+REFERENCE_RECORDS = (
+    VELDATA, ACCDATA, SINGDATA, CONFSUPDATA,
+    _record("motsetdata", ("vel", VELDATA), ("acc", ACCDATA), ("sing", SINGDATA),
+            ("conf", CONFSUPDATA), ("pathresol", NUM), ("motionsup", BOOL), ("tunevalue", NUM),
+            ("acclim", BOOL), ("accmax", NUM), ("decellim", BOOL), ("decelmax", NUM),
+            ("cirpathreori", NUM), ("worldacclim", BOOL), ("worldaccmax", NUM),
+            ("evtbufferact", BOOL), ("prefetchtime", NUM)),
+    _trigg_io("triggios", NUM), _trigg_io("triggiosdnum", DNUM),
+    _trigg_io("triggstrgo", STRING),
+    RapidType("O_ROBTARGET", "o_robtarget", RECORD, ROBTARGET.components),
+    RapidType("O_JOINTTARGET", "o_jointtarget", RECORD, JOINTTARGET.components),
+)
+PREDEFINED_TYPES.update({t.key: t for t in REFERENCE_RECORDS})
 PREDEFINED_TYPES.update(NON_VALUE_TYPES)
 PREDEFINED_ALIASES: dict[str, tuple[str, RapidType]] = {}
 for _name in NUM_ALIASES:

@@ -31,3 +31,16 @@ def _weld_move(calls, compiler, call, entry):
 
 
 compiled("ArcRefresh()", modelled=NO_EFFECT)(no_effect)
+
+
+# --- reference coverage (issue 8, item 1): the weld moves of robots 1 and 2 (MultiMove) ------
+# ArcL1/ArcL2 ... take the arguments of ArcL ... and move the same way.
+compiled(*(f"{name}{robot}({_ON_OFF}, robtarget ToPoint {_FULL})"
+           for name in ("ArcL",) for robot in (1, 2)),
+         *(f"ArcC{robot}({_ON_OFF}, robtarget CirPoint, robtarget ToPoint {_FULL})"
+           for robot in (1, 2)),
+         *(f"ArcL{robot}{end}(robtarget ToPoint {_ENDS})"
+           for robot in (1, 2) for end in ("Start", "End")),
+         *(f"ArcC{robot}{end}(robtarget CirPoint, robtarget ToPoint {_ENDS})"
+           for robot in (1, 2) for end in ("Start", "End")),
+         modelled=ROBOT_STATE)(_weld_move)

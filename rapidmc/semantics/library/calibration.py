@@ -23,3 +23,14 @@ compiled(f"MToolTCPCalib({_FOUR}, INOUT tooldata Tool, VAR num MaxErr, VAR num M
          "pose DefDFrame(robtarget OldP1, robtarget OldP2, robtarget OldP3, robtarget NewP1, "
              "robtarget NewP2, robtarget NewP3)",
          modelled=NOT_MODELLED)(not_modelled(KINEMATICS))
+
+
+# --- reference coverage (issue 8, item 1): frames fitted to measured targets -------------
+compiled("pose CalcRotAxisFrame(mecunit MechUnit, robtarget TargetList{*}, num TargetsInList, "
+             "VAR num MaxErr, VAR num MeanErr)",
+         "pose CalcRotAxFrameZ(robtarget TargetList{*}, num TargetsInList, "
+             "robtarget PositiveZPoint, VAR num MaxErr, VAR num MeanErr)",
+         "pose DefAccFrame(robtarget TargetListOne{*}, robtarget TargetListTwo{*}, "
+             "num TargetsInList, VAR num MaxErr, VAR num MeanErr)",
+         modelled=NOT_MODELLED)(not_modelled("fits a frame to measured robot positions, which "
+                                             "rapidmc does not model"))

@@ -5,13 +5,18 @@ Motion is modelled as a jump to the target (see special_routines), so the
 routines that only tune motion (MotionSup, ClearPath, EGM sensor guidance)
 change nothing rapidmc observes: they are checked against their signatures
 and do nothing.  docs/semantics.md, "Sockets and files", lists them.
+
+The safety controller answers fixed checksums and version; a cyclic bool (re-evaluated by
+the controller all the time) and load identification (which moves the robot) are not
+modelled: setting one up stops the run, and until then none exists.
 """
 from __future__ import annotations
 
 from ..expressions import Compiled, constant
 from ..instructions import Action, ControlAction
 from ..types import BOOL, NUM, STRING
-from .arguments import Arguments, no_effect, not_modelled
+from .arguments import Arguments, fixed, no_effect, not_modelled
+from .data import PREDEFINED_DATA
 from .motion import move_robot
 from .registry import FIXED, NO_EFFECT, NOT_MODELLED, ROBOT_STATE, compiled
 from .signals import signal_reader
@@ -192,3 +197,64 @@ def _egm_get_state(calls, compiler, call, entry) -> Compiled:
         value = m.read_ref(ident(m))
         return EGM_STATE_DISCONNECTED if value is None else value
     return Compiled(state, NUM)
+
+
+# ===========================================================================
+# Reference coverage (issue 8, item 1)
+# ===========================================================================
+
+# Moves whose triggers come as tables (triggios, triggstrgo, triggiosdnum): a move.
+_IOS = ("speeddata Speed \\num T \\triggios TriggData1{*} \\triggstrgo TriggData2{*} "
+        "\\triggiosdnum TriggData3{*}, zonedata Zone \\stoppointdata Inpos, PERS tooldata Tool "
+        "\\PERS wobjdata WObj")
+compiled(f"TriggLIOs(robtarget ToPoint \\identno ID, {_IOS} \\switch Corr \\PERS loaddata TLoad)",
+         f"TriggJIOs(robtarget ToPoint \\identno ID, {_IOS} \\PERS loaddata TLoad)",
+         modelled=ROBOT_STATE)(_trigg_move)
+
+# The safety controller (SafeMove): its checksums and version are fixed texts.
+compiled("string SafetyControllerGetChecksum()", "string SafetyControllerGetUserChecksum()",
+         modelled=FIXED)(fixed("00000000"))
+compiled("string SafetyControllerGetSWVersion()", modelled=FIXED)(fixed("1.0.0"))
+compiled("num SafetyControllerGetOpModePinCode()", modelled=FIXED)(fixed(0.0))
+compiled("SafetyControllerSyncRequest()",
+         "MotionProcessModeSet(motionprocessmode Mode)",
+         "RemoveCyclicBool(PERS bool Flag)",
+         "RemoveAllCyclicBool()",
+         modelled=NO_EFFECT)(no_effect)
+
+# Cyclic bools: the controller re-evaluates a condition into a flag all the time, which
+# rapidmc does not model; so setting one up stops the run, and until then none exists.
+compiled("SetupCyclicBool(PERS bool Flag, bool Cond \\switch Permanent)",
+         modelled=NOT_MODELLED)(not_modelled("evaluates a condition cyclically, which rapidmc "
+                                             "does not model"))
+compiled("bool IsCyclicBool(PERS bool Flag)", modelled=FIXED)(fixed(False))
+compiled("num GetNumberOfCyclicBool()", modelled=FIXED)(fixed(0.0))
+
+# Load identification moves the robot to measure the load: not modelled; the robot is
+# always valid for it.
+compiled("paridvalidnum ParIdRobValid(paridnum ParIdType \\mecunit MechUnit \\num AxisNo)",
+         modelled=FIXED)(fixed(PREDEFINED_DATA["ROB_LOAD_VAL"].value))
+compiled("bool ParIdPosValid(paridnum ParIdType, robtarget Pos, INOUT num AxValid{*} "
+             "\\num ConfAngle)",
+         modelled=FIXED)(fixed(True))
+compiled("LoadId(paridnum ParIdType, loadidnum LoadIdType, PERS tooldata Tool "
+             "\\PERS loaddata PayLoad \\PERS wobjdata WObj \\num ConfAngle \\switch SlowTest "
+             "\\VAR num Accuracy)",
+         modelled=NOT_MODELLED)(not_modelled("identifies a load by moving the robot, which "
+                                             "rapidmc does not model"))
+compiled("ProcerrRecovery(\\switch SyncOrgMoveInst | switch SyncLastMoveInst "
+             "\\VAR signaldo ProcSignal)",
+         modelled=NOT_MODELLED)(not_modelled("raises a process error in the running move, which "
+                                             "rapidmc does not model"))
+
+# EGM path correction: the moves go to their targets; the correction changes nothing.
+compiled("EGMMoveL(VAR egmident EGMid, robtarget ToPoint, speeddata Speed \\num T, zonedata Zone, "
+             "PERS tooldata Tool \\PERS wobjdata WObj \\PERS loaddata TLoad)",
+         "EGMMoveC(VAR egmident EGMid, robtarget CirPoint, robtarget ToPoint, speeddata Speed "
+             "\\num T, zonedata Zone, PERS tooldata Tool \\PERS wobjdata WObj \\PERS loaddata TLoad)",
+         modelled=ROBOT_STATE)(_trigg_move)
+compiled("EGMActMove(VAR egmident EGMid, pose SensorFrame \\num SampleRate)",
+         modelled=NO_EFFECT)(no_effect)
+compiled("PackDNHeader(string Service, string Path, VAR rawbytes RawData)",
+         modelled=NOT_MODELLED)(not_modelled("writes a DeviceNet message header, whose layout "
+                                             "rapidmc does not model"))

@@ -192,6 +192,49 @@ for _number, _name in enumerate(("AIO_ABOVE_HIGH", "AIO_BELOW_HIGH", "AIO_ABOVE_
     _define(_name, "aiotrigg", float(_number))
 
 
+# --- reference coverage (issue 8, item 1; docs/reference-names.txt) ------------------------
+# USB memories: the file-system prefixes of the manual's usbdisk1 .. usbdisk10.
+for _number in range(1, 11):
+    _define(f"usbdisk{_number}", "string", f"/bd{_number - 1}:")
+# GetSignalOrigin results (signalorigin), motion process modes (motionprocessmode),
+# trigger modes (triggmode), load identification (paridnum, paridvalidnum, loadidnum),
+# sensor states (sensorstate), configuration domains (cfgdomain), bus states (busstate),
+# task selection panel states (tsp_status); numbers: our choice.
+for _names, _type in (
+        (("SIGORIG_NONE", "SIGORIG_CFG", "SIGORIG_ALIAS"), "signalorigin"),
+        (("OPTIMAL_CYCLE_TIME_MODE", "LOW_SPEED_ACCURACY_MODE", "LOW_SPEED_STIFF_MODE",
+          "ACCURACY_MODE", "MPM_USER_MODE_1", "MPM_USER_MODE_2", "MPM_USER_MODE_3",
+          "MPM_USER_MODE_4"), "motionprocessmode"),
+        (("TRIGG_MODE1", "TRIGG_MODE2", "TRIGG_MODE3"), "triggmode"),
+        (("TOOL_LOAD_ID", "PAY_LOAD_ID", "IRBP_K", "IRBP_L", "IRBP_C", "IRBP_C_INDEX", "IRBP_T",
+          "IRBP_R", "IRBP_A", "IRBP_B", "IRBP_D"), "paridnum"),
+        (("ROB_LOAD_VAL", "ROB_NOT_LOAD_VAL", "ROB_LM1_LOAD_VAL"), "paridvalidnum"),
+        (("MASS_KNOWN", "MASS_WITH_AX3"), "loadidnum"),
+        (("STATE_ERROR", "STATE_UNDEFINED", "STATE_CONNECTED", "STATE_OPERATING",
+          "STATE_CLOSED"), "sensorstate"),
+        (("ALL_DOMAINS", "EIO_DOMAIN", "MMC_DOMAIN", "MOC_DOMAIN", "PROC_DOMAIN", "SIO_DOMAIN",
+          "SYS_DOMAIN"), "cfgdomain"),
+        (("IOBUS_LOG_STATE_STARTED", "IOBUS_LOG_STATE_STOPPED", "IOBUS_PHYS_STATE_ERROR",
+          "IOBUS_PHYS_STATE_HALTED", "IOBUS_PHYS_STATE_INIT", "IOBUS_PHYS_STATE_RUNNING",
+          "IOBUS_PHYS_STATE_STARTUP", "BUSSTATE_ERROR", "BUSSTATE_HALTED", "BUSSTATE_INIT",
+          "BUSSTATE_RUN", "BUSSTATE_STARTUP"), "busstate"),
+        (("TSP_STATUS_NOT_NORMAL_TASK", "TSP_STATUS_DEACT", "TSP_STATUS_DEACT_SERV_ROUT",
+          "TSP_STATUS_ACT"), "tsp_status")):
+    for _number, _name in enumerate(_names, start=1):
+        _define(_name, _type, float(_number))
+# I/O unit states of RobotWare 6 (logical and physical), after the four of RobotWare 5 above.
+for _number, _name in enumerate(("IOUNIT_LOG_STATE_DISABLED", "IOUNIT_LOG_STATE_ENABLED",
+                                 "IOUNIT_PHYS_STATE_DEACTIVATED", "IOUNIT_PHYS_STATE_RUNNING",
+                                 "IOUNIT_PHYS_STATE_ERROR", "IOUNIT_PHYS_STATE_UNCONNECTED",
+                                 "IOUNIT_PHYS_STATE_UNCONFIGURED", "IOUNIT_PHYS_STATE_STARTUP",
+                                 "IOUNIT_PHYS_STATE_INIT"), start=5):
+    _define(_name, "iounit_state", float(_number))
+# The application domains of the event log report process errors (domain 11, PROCESS_ERR):
+# they share its number, so ErrId arithmetic gives the documented 11xxxx numbers.
+for _name in ("ARCWELD_ERR", "SPOTWELD_ERR", "PAINT_ERR", "PICKWARE_ERR"):
+    _define(_name, "errdomain", PREDEFINED_DATA["PROCESS_ERR"].value)
+
+
 def lookup_data(key: str) -> PredefinedData | None:
     """The predefined data object with canonical name ``key``, or None."""
     return PREDEFINED_DATA.get(key)

@@ -4,17 +4,22 @@ The name is looked up where the call is, as the controller does: the
 routine's data, the module's, then the task's global data and the
 predefined ones.  A name that is not data there raises ERR_SYM_ACCESS; data
 of another type than the argument's raises ERR_SYMBOL_TYPE.
+
+Type names the data type of its argument, known when the program is linked; ArgName and
+SetAllDataVal, which need the names of data at run time, stop the run (RMC305).
 """
 from __future__ import annotations
 
+from ... import ast
 from ...diagnostics import ARGUMENT, error
 from ..errors import RapidError
 from ..instructions import Action
 from ..machine import ABSENT, GLOBAL
 from ..scope import CONSTANT, GLOBAL_DATA
-from ..types import same_type
-from .arguments import Arguments, argument_expression, fixed, no_effect
-from .registry import FIXED, NO_EFFECT, compiled
+from ..expressions import constant
+from ..types import STRING, element_type, same_type
+from .arguments import Arguments, argument_expression, fixed, no_effect, not_modelled
+from .registry import FIXED, NO_EFFECT, NOT_MODELLED, compiled
 
 _WHERE = "string Object \\VAR datapos Block | REF taskid TaskRef | string TaskName"
 
@@ -94,3 +99,39 @@ compiled("SetDataSearch(string Type \\string TypeMod \\string Object \\switch Pe
          modelled=NO_EFFECT)(no_effect)
 compiled("bool GetNextSym(INOUT string Object, VAR datapos Block \\switch Recursive)",
          modelled=FIXED)(fixed(False))
+
+
+# --- reference coverage (issue 8, item 1) -------------------------------------------------
+
+@compiled("string Type(anytype Data \\switch BaseName)")
+def _type(calls, compiler, call, entry):
+    """The name of the argument's data type, known when the program is linked (of an array:
+    its element type).  rapidmc resolves alias types to their base type, so an alias gives
+    the base type's name with or without \\BaseName."""
+    Arguments(calls, compiler, call, entry)
+    data = argument_expression(call, "Data", 0)
+    if data is None:
+        raise error(ARGUMENT, "Type takes one data object", call.span)
+    rapid_type = element_type(_declared_type(compiler, data))
+    if rapid_type is None:
+        raise error(ARGUMENT, "Type cannot tell the type of this argument", data.span)
+    return constant(rapid_type.name, STRING)
+
+
+def _declared_type(compiler, data):
+    """The declared type of a named data object (a signal's is its signal type, not the value
+    read from it), else the type of the expression's value."""
+    if isinstance(data, ast.NameRef):
+        symbol = compiler.scope.lookup(data.name.key) or compiler.linker.system_symbol(data.name)
+        if symbol is not None and symbol.type is not None:
+            return symbol.type
+    return compiler.value(data).type
+
+
+compiled("string ArgName(anytype Parameter \\VAR errnum ErrorNumber)",
+         modelled=NOT_MODELLED)(not_modelled("names the data given for a parameter, which "
+                                             "rapidmc does not keep at run time"))
+compiled("SetAllDataVal(string Type \\string TypeMod \\string Object \\switch Hidden, "
+             "anytype Value)",
+         modelled=NOT_MODELLED)(not_modelled("sets every data object of a type found by a "
+                                             "pattern, which rapidmc does not model"))

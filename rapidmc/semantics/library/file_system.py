@@ -44,3 +44,11 @@ def _is_file(calls, compiler, call, entry) -> Compiled:
     def exists(m):
         return m.choose(label, (False, True)) if m.chooser.check_mode else False
     return Compiled(exists, calls.return_type(entry))
+
+
+# --- reference coverage (issue 8, item 1): times of files and loaded modules ------------------
+compiled("dnum FileTimeDnum(string Path \\switch ModifyTime | switch AccessTime "
+             "| switch StatCTime)",
+         "num ModTime(string Object \\VAR stringdig StrDig)",
+         "dnum ModTimeDnum(string Object)",
+         modelled=FIXED)(fixed(0.0))

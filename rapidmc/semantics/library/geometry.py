@@ -133,3 +133,34 @@ def original_robtarget(point, in_pdisp, in_eoffs):
     """The point without program displacement and external axes offsets: rapidmc models
     neither (PDispOn, EOffsOn change nothing), so none is active and the point is unchanged."""
     return point
+
+
+# --- reference coverage (issue 8, item 1) -------------------------------------------------
+# Half turns about z, y and x as quaternions: the reflection in the mirror frame's xy-plane,
+# diag(1, 1, -1), is -Rz(180); negating the tool's y-axis (default) is -Ry(180), negating
+# its x-axis (\\MirY) is -Rx(180), and the two signs cancel.
+_HALF_TURN_Z, _HALF_TURN_Y, _HALF_TURN_X = (0.0, 0.0, 0.0, 1.0), (0.0, 0.0, 1.0, 0.0), \
+    (0.0, 1.0, 0.0, 0.0)
+_NO_FRAME = ((0.0, 0.0, 0.0), (1.0, 0.0, 0.0, 0.0))
+
+
+def _object_frame(wobj: tuple) -> tuple:
+    """The object frame of a wobjdata relative to the world: uframe, then oframe."""
+    return pose_mult(wobj[3], wobj[4])
+
+
+@function("robtarget MirPos(robtarget Point, wobjdata MirPlane \\wobjdata WObj \\switch MirY)")
+def mir_pos(point: tuple, mir_plane: tuple, wobj: tuple | None, mir_y: bool) -> tuple:
+    """Point mirrored in the xy-plane of MirPlane's object frame (Point relative to WObj's
+    object frame, or to the world without WObj; the result relative to the same frame).
+    The tool frame is mirrored as regards its x- and z-axes, or its y- and z-axes with
+    \\MirY; the other axis turns so that the frame stays right-handed."""
+    trans, rot, conf, extax = point
+    frame = _NO_FRAME if wobj is None else _object_frame(wobj)
+    to_mirror = pose_mult(pose_inv(_object_frame(mir_plane)), frame)
+    (x, y, z), q = pose_mult(to_mirror, (trans, rot))
+    turned = quaternion_multiply(quaternion_multiply(_HALF_TURN_Z, quaternion_normalised(q)),
+                                 _HALF_TURN_X if mir_y else _HALF_TURN_Y)
+    new_trans, new_rot = pose_mult(pose_inv(to_mirror), ((x, y, -z), as_orient(turned)))
+    leading = next((c for c in new_rot if c != 0), 1.0)      # q and -q: the same rotation
+    return (new_trans, new_rot if leading > 0 else tuple(-c for c in new_rot), conf, extax)

@@ -9,8 +9,8 @@ interrupts are modelled), I/O units are always running.
 """
 from __future__ import annotations
 
-from .arguments import fixed, no_effect
-from .registry import FIXED, NO_EFFECT, compiled
+from .arguments import fixed, no_effect, not_modelled
+from .registry import FIXED, NO_EFFECT, NOT_MODELLED, compiled
 
 _SIGNAL_OUT = "\\VAR signaldo DOp | VAR signalgo GOp | VAR signalao AOp | num ProcID"
 _INDEPENDENT = "mecunit MecUnit, num Axis"
@@ -53,3 +53,43 @@ compiled(f"bool IndInpos({_INDEPENDENT})",
          f"bool IndSpeed({_INDEPENDENT} \\switch InSpeed | switch ZeroSpeed)",
          modelled=FIXED)(fixed(True))
 compiled("pos CorrRead()", modelled=FIXED)(fixed((0.0, 0.0, 0.0)))
+
+
+# --- reference coverage (issue 8, item 1): the rest of the trigger instructions ----------
+# TriggCheckIO's check and TriggRampAO's ramp act during the move; TriggDataCopy copies a
+# trigger definition, which rapidmc does not keep; so a trigger is always valid.
+compiled("TriggCheckIO(VAR triggdata TriggData, num Distance \\switch Start | switch Time, "
+             "VAR anytype Signal, opnum Relation, num CheckValue | dnum CheckDvalue "
+             "\\switch StopMove, VAR intnum Interrupt)",
+         "TriggRampAO(VAR triggdata TriggData, num Distance \\switch Start, num EquipLag, "
+             "VAR signalao AOutput, num SetValue, num RampLength \\switch Time)",
+         "TriggDataCopy(VAR triggdata Source, VAR triggdata Destination)",
+         modelled=NO_EFFECT)(no_effect)
+compiled("bool TriggDataValid(VAR triggdata TriggData)", modelled=FIXED)(fixed(True))
+
+# --- reference coverage (issue 8, item 1): servo tools and the serial sensor interface ------
+_GUN = "string ToolName"
+_SENSOR = "string device"
+compiled(f"STOpen({_GUN} \\switch WaitZeroSpeed \\switch Conc)",
+         f"STClose({_GUN}, num TipForce, num Thickness \\VAR num RetThickness \\switch Conc)",
+         f"STCalib({_GUN} \\switch ToolChg | switch TipChg | switch TipWear \\VAR num RetTipWear "
+             "\\VAR num RetPosAdj \\num PrePos \\switch Conc)",
+         f"STIndGun({_GUN}, num GunPos)",
+         f"STIndGunReset({_GUN})",
+         "STTune(mecunit MecUnit, num TuneValue, tunegtype Type)",
+         "STTuneReset(mecunit MecUnit)",
+         f"WriteVar({_SENSOR}, num VarNo, num VarData \\string TaskName)",
+         f"WriteBlock({_SENSOR}, num BlockNo, string FileName \\string TaskName)",
+         f"ReadBlock({_SENSOR}, num BlockNo, string FileName \\string TaskName)",
+         modelled=NO_EFFECT)(no_effect)
+compiled(f"bool STIsOpen({_GUN})",
+         f"bool STIsClosed({_GUN} \\VAR num RetThickness)",
+         f"bool STIsCalib({_GUN} \\switch sguninit | switch sgunsynch)",
+         f"bool STIsIndGun({_GUN})",
+         f"num STCalcForce({_GUN}, num MotorTorque)",
+         f"num STCalcTorque({_GUN}, num TipForce)",
+         modelled=NOT_MODELLED)(not_modelled("reads the state of a servo tool, which rapidmc "
+                                             "does not model"))
+compiled(f"num ReadVar({_SENSOR}, num VarNo \\string TaskName)",
+         modelled=NOT_MODELLED)(not_modelled("reads a value from a serial sensor, which rapidmc "
+                                             "does not model"))

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from ..errors import RapidError
 from ..instructions import ControlAction
-from .arguments import Arguments
+from .arguments import ROBOT_JOINTS, Arguments
 from .environment_model import where
 from .motion import arrive
 from .registry import CHOICE, compiled
@@ -37,14 +37,46 @@ def _search(calls, compiler, call, entry):
 
     def search(m, instruction):
         point = target(m)
-        if m.chooser.check_mode:
-            hit = m.choose(label, (True, False))
-        else:
-            hit = m.io[signal(m)] == 1
+        hit = _hit(m, label, signal)
         arrive(m, point, tool(m), wobj(m))
-        if not hit:
-            raise RapidError("ERR_WHLSEARCH", f"{call.name.text}: the signal did not change "
-                             "during the search")
-        m.write_ref(search_point(m), point)
+        _miss_or_store(m, call, hit, search_point, point)
+        m.goto(instruction.next)
+    return ControlAction(call.span, search)
+
+
+def _hit(m, label: str, signal) -> bool:
+    """Check mode: hit and miss are both possible; run: a hit when the signal is 1."""
+    if m.chooser.check_mode:
+        return m.choose(label, (True, False))
+    return m.io[signal(m)] == 1
+
+
+def _miss_or_store(m, call, hit: bool, search_point, point) -> None:
+    if not hit:
+        raise RapidError("ERR_WHLSEARCH", f"{call.name.text}: the signal did not change "
+                         "during the search")
+    m.write_ref(search_point(m), point)
+
+
+# --- reference coverage (issue 8, item 1) -------------------------------------------------
+
+@compiled(f"SearchExtJ({_MODE}, INOUT jointtarget SearchJointPos, jointtarget ToJointPos "
+              "\\identno ID \\switch UseEOffs, speeddata Speed \\num T)",
+          modelled=CHOICE)
+def _search_ext_j(calls, compiler, call, entry):
+    """A search with the external axes only: as MoveExtJ, the robot's joints keep their
+    values; a hit stores the target, a miss raises ERR_WHLSEARCH."""
+    arguments = Arguments(calls, compiler, call, entry)
+    signal, search_point = arguments.fn("Signal"), arguments.fn("SearchJointPos")
+    target = arguments.value("ToJointPos")
+    label = f"{call.name.text} hit at {where(call.span)}"
+
+    def search(m, instruction):
+        point = target(m)
+        hit = _hit(m, label, signal)
+        robot = list(m.robot)
+        robot[ROBOT_JOINTS] = (robot[ROBOT_JOINTS][0], point[1])
+        m.robot = tuple(robot)
+        _miss_or_store(m, call, hit, search_point, point)
         m.goto(instruction.next)
     return ControlAction(call.span, search)

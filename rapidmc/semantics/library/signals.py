@@ -11,7 +11,7 @@ from ..machine import ABSENT
 from ..timing import schedule
 from ..types import BOOL, DNUM, NUM, SEMI_VALUE, STRING, RapidType
 from .arguments import Arguments, argument_expression
-from .registry import compiled
+from .registry import FIXED, compiled
 
 
 @compiled("dionum DInput(VAR signaldi Signal)",
@@ -189,3 +189,51 @@ def _alias_io_reset(calls, compiler, call, entry):
     target_ref, _, _ = compiler.reference(target, "reset by AliasIOReset")
     return Action(call.span, lambda m: m.write_ref(target_ref(m), -1))
 
+
+# --- reference coverage (issue 8, item 1) -------------------------------------------------
+
+@compiled("signalorigin GetSignalOrigin(VAR anytype Signal, VAR string SignalName)")
+def _get_signal_origin(calls, compiler, call, entry) -> Compiled:
+    """SIGORIG_CFG for a signal of the I/O configuration, SIGORIG_ALIAS for signal data bound
+    by AliasIO, SIGORIG_NONE for signal data bound to nothing; SignalName gets the name of the
+    configured signal ("" for none)."""
+    from .data import PREDEFINED_DATA
+    origin = {key: PREDEFINED_DATA[f"SIGORIG_{key}"].value for key in ("NONE", "CFG", "ALIAS")}
+    target, name = argument_expression(call, "Signal", 0), argument_expression(call, "SignalName", 1)
+    if target is None or name is None:
+        raise error(ARGUMENT, "GetSignalOrigin takes a signal and a string variable", call.span)
+    name_ref = compiler.reference(name, "set by GetSignalOrigin")[0]
+    if isinstance(target, ast.NameRef):
+        symbol = compiler.scope.lookup(target.name.key) or compiler.linker.system_symbol(target.name)
+        if symbol is not None and symbol.kind == "signal":
+            def configured(m):
+                m.write_ref(name_ref(m), target.name.text)
+                return origin["CFG"]
+            return Compiled(configured, NUM)
+    signal_ref, signal_type, _ = compiler.reference(target, "read by GetSignalOrigin")
+    if not (isinstance(signal_type, RapidType) and signal_type.kind == SEMI_VALUE):
+        raise error(TYPE_MISMATCH, "the first argument of GetSignalOrigin must be signal data",
+                    target.span)
+
+    def bound(m):
+        index = m.read_ref(signal_ref(m))
+        names = [s.name for s in m.program.signal_index.values() if s.index == index]
+        m.write_ref(name_ref(m), names[0] if names else "")
+        return origin["ALIAS"] if names else origin["NONE"]
+    return Compiled(bound, NUM)
+
+
+@compiled("IOBusState(string BusName, VAR busstate State \\switch Phys | switch Logic)",
+          modelled=FIXED)
+def _io_bus_state(calls, compiler, call, entry) -> Instruction:
+    """Every bus is running: IOBUS_PHYS_STATE_RUNNING with \\Phys, IOBUS_LOG_STATE_STARTED
+    with \\Logic, BUSSTATE_RUN (the RobotWare 5 answer) with neither."""
+    from .data import PREDEFINED_DATA
+    arguments = Arguments(calls, compiler, call, entry)
+    state, phys, logic = arguments.fn("State"), arguments.value("Phys"), arguments.value("Logic")
+
+    def read(m):
+        name = ("IOBUS_PHYS_STATE_RUNNING" if phys(m) is True else
+                "IOBUS_LOG_STATE_STARTED" if logic(m) is True else "BUSSTATE_RUN")
+        m.write_ref(state(m), PREDEFINED_DATA[name].value)
+    return Action(call.span, read)

@@ -6,8 +6,9 @@ is printed as ``[socket] <text>``; when standard input ends, the peer has
 closed the connection (ERR_SOCK_CLOSED once, then the run stops for want
 of input).  When model checking, a received message is a nondeterministic
 choice among the configured messages, and a finite ``\\Time`` may run out
-(ERR_SOCK_TIMEOUT).  docs/semantics.md, "Sockets and files", has the
-details.
+(ERR_SOCK_TIMEOUT).  A UDP datagram (SocketReceiveFrom, on a bound socket)
+comes from the same source; its sender is not modelled.  docs/semantics.md,
+"Sockets and files", has the details.
 
 A ``socketdev`` variable holds ``None`` (never created: SOCKET_CLOSED) or a
 pair ``(status, pending)``: the socketstatus number and the received
@@ -280,3 +281,41 @@ def _socket_receive(calls, compiler, call, entry):
 
 # Files, serial channels, rawbytes and controller routines register themselves
 # when imported.
+
+
+# --- reference coverage (issue 8, item 1): UDP datagrams ---------------------------------
+
+@compiled("SocketReceiveFrom(VAR socketdev Socket \\VAR string Str | VAR rawbytes RawData | "
+              "VAR anytype Data \\num ReadNoOfBytes \\VAR num NoRecBytes, VAR string RemoteAddress, "
+              f"VAR num RemotePort {TIME})",
+          modelled=CHOICE)
+def _socket_receive_from(calls, compiler, call, entry):
+    """One datagram on a bound UDP socket, from the same source as SocketReceive's messages
+    (a line of standard input in ``run``, a configured message or a timeout when model
+    checking).  The sender is not modelled: RemoteAddress reads "127.0.0.1" and RemotePort 0."""
+    _no_data(call)
+    arguments = Arguments(calls, compiler, call, entry)
+    socket, text_ref, raw_ref = arguments.fn("Socket"), arguments.fn("Str"), arguments.fn("RawData")
+    wanted, received, seconds = (arguments.value("ReadNoOfBytes"), arguments.fn("NoRecBytes"),
+                                 arguments.value("Time"))
+    address, port = arguments.fn("RemoteAddress"), arguments.fn("RemotePort")
+    is_raw = argument_expression(call, "RawData", -1) is not None
+    counts = argument_expression(call, "NoRecBytes", -1) is not None
+    if not is_raw and argument_expression(call, "Str", -1) is None:
+        raise error(UNSUPPORTED, "SocketReceiveFrom needs \\Str or \\RawData", call.span)
+
+    def receive(m):
+        _require(m.read_ref(socket(m)), SOCKET_BOUND, "SocketReceiveFrom")
+        text, limit = _receive_message(m, call, _optional(seconds(m))), _optional(wanted(m))
+        if is_raw:
+            data = rawbytes.from_text(text)
+            data = data if limit is None else data[:int(limit)]
+            m.write_ref(raw_ref(m), data)
+        else:
+            data = text[:80] if limit is None else text[:min(80, int(limit))]
+            m.write_ref(text_ref(m), data)
+        m.write_ref(address(m), "127.0.0.1")
+        m.write_ref(port(m), 0.0)
+        if counts:
+            m.write_ref(received(m), float(len(data)))
+    return Action(call.span, receive)

@@ -156,3 +156,10 @@ def _set_sys_data(calls, compiler, call, entry):
         robot[part] = source(m)
         m.robot = tuple(robot)
     return Action(call.span, (lambda m: None) if part is None else set_data)
+
+
+# --- reference coverage (issue 8, item 1) -------------------------------------------------
+compiled("num TasksInSync(INOUT tasks TaskList{*})", modelled=FIXED)(fixed(0.0))
+# The task selection panel: every task rapidmc runs is a normal task selected in it.
+compiled("tsp_status GetTSPStatus(string TaskName)", modelled=FIXED)(
+    fixed(PREDEFINED_DATA["TSP_STATUS_ACT"].value))
