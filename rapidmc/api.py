@@ -259,17 +259,17 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
     bounds = dict(max_states=options.max_states, max_seconds=options.max_seconds,
                   storage=options.storage)
     facts = ExploredFacts(model.program, [prop.formula for prop in model.properties], model.atoms)
-    explored = _explored_system(model)
-    watching = explored is not None
-    explored = explored or system
-    stuck = _StuckWatch(explored, facts if watching else None)
+    # Coverage and vacuity watch the run-time error search (merged steps name every line
+    # they run); --compact / --bitstate searches are never complete, so they watch nothing.
+    watching = options.storage is None or not model.plan.merge_points
+    stuck = _StuckWatch(system, facts if watching else None)
     results = []
     try:
-        results.append(_builtin(explored, BUILTIN_RUNTIME, "no reachable uncaught run-time error",
-                                explored.failed, bounds, progress(), stuck))
+        results.append(_builtin(system, BUILTIN_RUNTIME, "no reachable uncaught run-time error",
+                                system.failed, bounds, progress(), stuck))
         if watching:
-            facts.finish(explored, results[0].result, progress=progress(), **bounds)
-        results.append(_deadlock(explored, results[0].result, stuck, bounds, progress))
+            facts.finish(system, results[0].result, progress=progress(), **bounds)
+        results.append(_deadlock(system, results[0].result, stuck, bounds, progress))
         for prop, buchi, valuation in model.jobs:
             result = check_property(system, buchi, valuation, progress=progress(), **bounds)
             _replayed(system, result)
@@ -278,25 +278,6 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
     except EnvironmentFault as exc:
         raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
     return CheckReport(results, facts.warnings(), model.describer)
-
-
-def _explored_system(model: Model) -> Optional[RapidSystem]:
-    """The system whose run-time error search also shows coverage and vacuity (None: none).
-
-    Coverage needs every executed line, and a merged step runs several lines
-    in one transition: with merged steps that search runs one transition per
-    instruction, keeping sliced and dead data (which change no control flow,
-    and atoms keep their data), so it also answers the run-time error check.
-    One search of that system instead of a merged one plus a watched one;
-    the properties are still searched with merged steps.  ``--compact`` and
-    ``--bitstate`` searches are never complete, so they watch nothing.
-    """
-    plan = model.plan
-    if not plan.merge_points:
-        return model.system
-    if model.options.storage is not None:
-        return None
-    return RapidSystem(model.program, model.config, replace(plan, merge_points={}))
 
 
 class _StuckWatch:

@@ -2,7 +2,7 @@
 
 Shown the whole reachable state graph (``StatementWatch`` is an observer
 for ``find_reachable``), the statements executed by some transition are
-known; every other statement of the program — the environment model
+known (a merged step names every instruction it ran); every other statement of the program — the environment model
 excepted — is dead code under every input the check considered.  A routine
 none of whose statements runs gets one warning at its declaration instead
 of one per line.  Only meaningful after a complete search: the caller
@@ -43,9 +43,14 @@ class StatementWatch:
         self.executed: set[tuple[str, int]] = set()
 
     def __call__(self, state: Hashable, successors: Sequence[tuple[Hashable, Hashable]]) -> None:
+        executed = self.executed
         for (_, span, _), _ in successors:
-            if span is not None:
-                self.executed.add((span.file, span.line))
+            if span is None:
+                continue
+            if isinstance(span, tuple):          # a merged step: every instruction it ran
+                executed.update((one.file, one.line) for one in span if one is not None)
+            else:
+                executed.add((span.file, span.line))
 
 
 def unreached(program: Program, executed: set[tuple[str, int]]) -> list[Unreached]:

@@ -19,13 +19,7 @@ from rapidmc.commands.check import prepare_model
 
 
 def _dedicated(model):
-    """The dedicated search over the system the run-time error search explored.
-
-    With merged steps that is the one-instruction-per-transition system (it
-    shows coverage too), so the states compared are that system's.
-    """
-    system = api._explored_system(model) or model.system
-    return find_reachable(system, system.stuck, max_states=model.options.max_states)
+    return find_reachable(model.system, model.system.stuck, max_states=model.options.max_states)
 
 
 def _compare(argv):
