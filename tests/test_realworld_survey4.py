@@ -11,6 +11,9 @@ RAPID code surveyed, one per cause of a program that did not reach a verdict.
 * ``paint_strokes.mod``: the Paint option's PaintL and SetBrush with a spray gun taught in
   a module that is not given: the instructions are known, and ``rapidmc stubs`` declares
   the tool and work object so that the program reaches a verdict.
+* ``glue_bead.mod``: a routine of a library that is not given, called with ``\\WObj:=`` as
+  the motion instructions are: the stubs type the work object passed from the parameter's
+  name (before, its type was not inferred and the stubs did not load).
 """
 from __future__ import annotations
 
@@ -86,3 +89,16 @@ def test_paint_instructions_are_known_and_stubs_supply_the_taught_data(tmp_path)
     found = verdicts(out)
     assert code == 0, out + err
     assert found["no_runtime_error"] == "HOLDS" and found["p"] == "HOLDS"
+
+
+def test_a_work_object_passed_as_wobj_to_a_missing_routine_is_typed(tmp_path):
+    program = HERE / "glue_bead.mod"
+    stubs = tmp_path / "Missing.mod"
+    code, _, err = cli("stubs", program, "-o", stubs)
+    assert code == 0, err
+    text = stubs.read_text(encoding="latin-1")
+    assert "PERS wobjdata woPart" in text
+    assert "PROC BeadL(robtarget p1, speeddata p2, zonedata p3, tooldata p4, \\wobjdata WObj)" in text
+    code, out, err = cli("check", program, stubs, "--quiet", "--formula", 'once: F "beads = 1"')
+    assert code == 0, out + err
+    assert verdicts(out)["once"] == "HOLDS"
