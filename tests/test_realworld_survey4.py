@@ -102,3 +102,21 @@ def test_a_work_object_passed_as_wobj_to_a_missing_routine_is_typed(tmp_path):
     code, out, err = cli("check", program, stubs, "--quiet", "--formula", 'once: F "beads = 1"')
     assert code == 0, out + err
     assert verdicts(out)["once"] == "HOLDS"
+
+
+# the new nondeterministic readings (ClkRead, ReadCfgData) under the default reductions
+# give the verdicts of the unreduced search
+DIFFERENTIAL = [
+    ("cycle_rate.mod", ['never_slow: G "slow_cycles = 0"', 'rate: F "parts_per_hour > 0"']),
+    ("config_lookup.mod", ['never_missing: G "missing = 0"', 'some: F "missing >= 1"']),
+]
+
+
+def test_reductions_keep_the_verdicts_of_the_new_choices():
+    for name, formulas in DIFFERENTIAL:
+        args = ["check", HERE / name, "--quiet"]
+        for formula in formulas:
+            args += ["--formula", formula]
+        reduced = verdicts(cli(*args)[1])
+        plain = verdicts(cli(*args, "--no-reduce")[1])
+        assert reduced == plain and len(reduced) == 4, (name, reduced, plain)
