@@ -29,7 +29,7 @@ from .check.budget import DEFAULT_MAX_STATES
 from .backup import load_tasks, resolve_program_files
 from .check.trace import Trace, build_trace
 from .diagnostics import (AUTOMATON, DOMAIN, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED,
-                          TRACE_REPLAY, USAGE, Diagnostic, SourceCache, error)
+                          TRACE_REPLAY, USAGE, Diagnostic, SourceCache, UserError, error)
 from .explored import ExploredFacts
 from .ltl import read_hoa, to_buchi
 from .ltl.syntax import Not
@@ -202,11 +202,13 @@ def _check_domains(program: Program, domains: dict) -> None:
         if signal.kind not in ("AI", "GI"):
             raise error(USAGE, f"--input-domain is for analog and group inputs; {signal.name} is "
                         f"a {signal.kind}")
-    for signal in program.signals:
-        if signal.kind in ("AI", "GI") and not signal.driven and signal.key not in domains:
-            raise error(DOMAIN, f"free {signal.kind} input '{signal.name}' needs a finite set of "
-                        f"values: give --input-domain {signal.name}=v1,v2,... (or drive it from "
-                        "an environment model)", signal.span)
+    missing = [Diagnostic(DOMAIN, f"free {signal.kind} input '{signal.name}' needs a finite set "
+                          f"of values: give --input-domain {signal.name}=v1,v2,... (or drive it "
+                          "from an environment model)", signal.span)
+               for signal in program.signals
+               if signal.kind in ("AI", "GI") and not signal.driven and signal.key not in domains]
+    if missing:                     # every input that lacks a domain at once, not one per run
+        raise UserError(missing)
 
 
 # --- checking -------------------------------------------------------------------------

@@ -123,6 +123,7 @@ class Diagnostic:
     severity: str = "error"
     notes: tuple[str, ...] = field(default_factory=tuple)
     subject: str = ""        # canonical name an unknown-name diagnostic is about
+    omitted: int = 0         # a capped report's last diagnostic (RMC215): how many it leaves out
 
 
 class UserError(Exception):

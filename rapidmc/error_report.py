@@ -83,7 +83,12 @@ def report(diagnostics: Iterable[Diagnostic], limit: int = MAX_REPORTED) -> list
         return merged
     rest = len(merged) - limit
     return merged[:limit] + [Diagnostic(MORE_ERRORS, f"{rest} more error{'s' * (rest != 1)} "
-                                        f"not shown (the report stops after {limit})")]
+                                        f"not shown (the report stops after {limit})", omitted=rest)]
+
+
+def omitted_count(diagnostics: Iterable[Diagnostic]) -> int:
+    """How many errors a capped report leaves out (0 when it shows them all)."""
+    return sum(d.omitted for d in diagnostics if d.code == MORE_ERRORS)
 
 
 class ErrorCollector:

@@ -184,7 +184,12 @@ def assert_verdicts(case: Case, stdout: str) -> None:
 
 
 def assert_diagnostic(expected: ExpectedError, stdout: str, stderr: str) -> None:
-    assert stdout == "", "bad input must not print a report"
+    # bad input prints no verdicts: the JSON report holds only the errors (or nothing,
+    # for a usage error found before the format is known)
+    if stdout:
+        document = json.loads(stdout)
+        assert document["properties"] == [], "bad input must not print verdicts"
+        assert expected.code in {error["code"] for error in document["errors"]}
     assert f"[{expected.code}]" in stderr, stderr
     assert "Traceback" not in stderr, stderr
     if expected.where is not None:

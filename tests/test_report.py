@@ -131,7 +131,8 @@ STATS_KEYS = ["product_states", "model_states", "transitions", "max_depth", "sec
 
 def test_json_follows_the_documented_schema():
     document = json.loads(format_json(cell_results(), CellDescriber()))
-    assert list(document) == ["schema", "command", "properties", "warnings"]
+    assert list(document) == ["schema", "command", "properties", "warnings", "errors",
+                            "errors_not_shown"]
     assert document["schema"] == "rapidmc-check/1" and document["warnings"] == []
     properties = document["properties"]
     assert [p["verdict"] for p in properties] == ["HOLDS", "VIOLATED", "UNKNOWN", "VIOLATED"]

@@ -23,7 +23,8 @@ import json
 from dataclasses import dataclass
 from typing import Optional, Sequence
 
-from ..diagnostics import Diagnostic
+from ..diagnostics import MORE_ERRORS, Diagnostic
+from ..error_report import omitted_count
 from .result import UNKNOWN, VIOLATED, SearchResult, SearchStats
 from .trace import INITIAL, Change, Trace, TraceDescriber, TraceStep, build_trace
 
@@ -136,14 +137,26 @@ def _change_text(change: Change) -> str:
 # --- JSON ---------------------------------------------------------------------
 
 
-def format_json(results: Sequence[PropertyResult], describer: TraceDescriber,
-                warnings: Sequence[Diagnostic] = (), command: Optional[Sequence[str]] = None) -> str:
-    """The JSON document of docs/json-output.md, indented, keys in schema order."""
+def format_json(results: Sequence[PropertyResult], describer: Optional[TraceDescriber],
+                warnings: Sequence[Diagnostic] = (), command: Optional[Sequence[str]] = None,
+                errors: Sequence[Diagnostic] = ()) -> str:
+    """The JSON document of docs/json-output.md, indented, keys in schema order.
+
+    ``errors`` are the input errors that stopped ``check`` before any search (then
+    ``results`` is empty); a capped report's count of the rest is ``errors_not_shown``.
+    """
     document = {"schema": SCHEMA,
                 "command": list(command) if command is not None else None,
                 "properties": [property_json(checked, describer) for checked in results],
-                "warnings": [warning_json(warning) for warning in warnings]}
+                "warnings": [warning_json(warning) for warning in warnings],
+                "errors": [error_json(e) for e in errors if e.code != MORE_ERRORS],
+                "errors_not_shown": omitted_count(errors)}
     return json.dumps(document, indent=2, ensure_ascii=False) + "\n"
+
+
+def format_json_errors(errors: Sequence[Diagnostic], command: Optional[Sequence[str]]) -> str:
+    """The document of a ``check`` that stopped at input errors: no property, only errors."""
+    return format_json((), None, (), command, errors)
 
 
 def property_json(checked: PropertyResult, describer: TraceDescriber) -> dict:
@@ -160,6 +173,18 @@ def warning_json(warning: Diagnostic) -> dict:
     span = warning.span
     location = {"file": span.file, "line": span.line, "column": span.column} if span else None
     return {"code": warning.code.code, "message": warning.message, "location": location}
+
+
+def error_json(diagnostic: Diagnostic) -> dict:
+    """An input error: code, severity, message, place (null for errors of no file) and notes."""
+    span = diagnostic.span
+    location = None
+    if span is not None and span.line > 0:
+        location = {"file": span.file, "line": span.line, "column": span.column,
+                    "end_line": span.end_line, "end_column": span.end_column}
+    return {"code": diagnostic.code.code, "severity": diagnostic.severity,
+            "message": diagnostic.message, "location": location,
+            "notes": list(diagnostic.notes)}
 
 
 def trace_json(trace: Trace) -> dict:

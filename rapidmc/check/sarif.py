@@ -61,6 +61,8 @@ def _diagnostic_results(diagnostics: Sequence[Diagnostic], rules: list, results:
         if diagnostic.span is not None and diagnostic.span.line > 0:
             result["locations"] = [_location(diagnostic.span.file, diagnostic.span.line,
                                              diagnostic.span.column)]
+        if diagnostic.omitted:          # the last result of a capped report counts the rest
+            result["properties"] = {"errorsNotShown": diagnostic.omitted}
         results.append(result)
 
 

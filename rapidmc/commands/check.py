@@ -17,6 +17,7 @@ from pathlib import Path
 
 from .. import api
 from ..check import Progress, format_json, format_text
+from ..check.report import format_json_errors
 from ..check.html import html_unwritable, write_html
 from ..check.junit import format_junit, format_junit_diagnostics
 from ..check.sarif import format_sarif, format_sarif_diagnostics
@@ -152,10 +153,13 @@ def execute(args: argparse.Namespace) -> int:
         if args.junit:
             write_report(args.junit, format_junit_diagnostics(exc.diagnostics, *_suite(args)),
                          "JUnit report")
-        if args.format != "sarif":
+        if args.format == "text":
             raise
         print(render_all(exc.diagnostics), file=sys.stderr)
-        print(format_sarif_diagnostics(exc.diagnostics, exc.exit_code), end="")
+        if args.format == "json":
+            print(format_json_errors(exc.diagnostics, getattr(args, "command_line", None)), end="")
+        else:
+            print(format_sarif_diagnostics(exc.diagnostics, exc.exit_code), end="")
         return exc.exit_code
 
 

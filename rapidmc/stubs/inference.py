@@ -478,6 +478,10 @@ class Inference:
             if info is None and isinstance(arg.value, ast.FunctionCall) \
                     and arg.value.name.key in self.missing:
                 self.feeds.setdefault(arg.value.name.key, (missing, key))
+            if info is None and arg.value is not None and key in CONVENTIONAL_PARAMETERS:
+                info = TypeInfo(CONVENTIONAL_PARAMETERS[key])
+                self.expect(arg.value, info, f"{missing.name.text} argument \\{text}, named "
+                            "like the motion instructions' parameter")
             parameter = known.get(key)
             if parameter is None:
                 parameter = Parameter(text, info, optional=arg.kind != ast.REQUIRED,
@@ -550,6 +554,10 @@ def _types_from_components(inference: Inference) -> bool:
                 changed |= missing.learn(TypeInfo(candidates[0]), f"has components {shown}")
     return changed
 
+
+# The optional parameters every motion instruction of ABB's and of its options has
+# (``PaintL ... \WObj:=woPanel``): a missing routine called with them takes these types.
+CONVENTIONAL_PARAMETERS = {"WOBJ": "wobjdata", "TOOL": "tooldata", "TLOAD": "loaddata"}
 
 # Name prefixes that say the type in controller programs (wobjTable, tool_gun, loadPart);
 # used only when the uses tell nothing, and said so in the written comment.

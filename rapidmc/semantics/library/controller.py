@@ -12,13 +12,15 @@ modelled: setting one up stops the run, and until then none exists.
 """
 from __future__ import annotations
 
+from ..errors import RapidError
 from ..expressions import Compiled, constant
 from ..instructions import Action, ControlAction
 from ..types import BOOL, NUM, STRING
 from .arguments import Arguments, fixed, no_effect, not_modelled
 from .data import PREDEFINED_DATA
+from .environment_model import where
 from .motion import move_robot
-from .registry import FIXED, NO_EFFECT, NOT_MODELLED, ROBOT_STATE, compiled
+from .registry import CHOICE, FIXED, NO_EFFECT, NOT_MODELLED, ROBOT_STATE, compiled
 from .signals import signal_reader
 from .signature_parts import ACT_TAIL, AXES, JOINTS, RUN_TAIL, TRIGG_TAIL
 
@@ -147,7 +149,6 @@ def _trigg_move(calls, compiler, call, entry):
 compiled("SkipWarn()",
          "ClearPath()",
          "MotionSup(\\switch On | switch Off \\num TuneValue)",
-         "ReadCfgData(string InstancePath, string Attribute, VAR anytype CfgData \\num ListNo)",
          "ErrLog(num ErrorId \\switch W | switch I, anytype Argument1, anytype Argument2, "
              "anytype Argument3, anytype Argument4, anytype Argument5)",
          "WaitSyncTask(\\switch InPos, VAR syncident SyncID, REF tasks TaskList{*} \\num TimeOut)",
@@ -258,3 +259,22 @@ compiled("EGMActMove(VAR egmident EGMid, pose SensorFrame \\num SampleRate)",
 compiled("PackDNHeader(string Service, string Path, VAR rawbytes RawData)",
          modelled=NOT_MODELLED)(not_modelled("writes a DeviceNet message header, whose layout "
                                              "rapidmc does not model"))
+
+
+# --- survey round 4 ---------------------------------------------------------------------------
+
+@compiled("ReadCfgData(string InstancePath, string Attribute, VAR anytype CfgData \\num ListNo)",
+          modelled=CHOICE)
+def _read_cfg_data(calls, compiler, call, entry):
+    """Whether the configuration has the instance and attribute is the controller's: when
+    checking, the read either leaves CfgData as it is (rapidmc has no configuration
+    database to read a value from) or raises ERR_CFG_NOTFND, the error programs handle
+    (ABB's own calibration-position program does); ``run`` leaves CfgData as it is."""
+    Arguments(calls, compiler, call, entry)
+    label = f"ReadCfgData outcome at {where(call.span)}"
+
+    def read(m):
+        if m.chooser.check_mode and m.choose(label, ("found", "ERR_CFG_NOTFND")) != "found":
+            raise RapidError("ERR_CFG_NOTFND", "ReadCfgData: no such instance or attribute in "
+                             "the configuration")
+    return Action(call.span, read)

@@ -4,8 +4,8 @@ from __future__ import annotations
 from ..errors import RapidError
 from ..instructions import ControlAction, Instruction, enter_routine
 from ..machine import ABSENT
-from .arguments import ROBOT_JOINTS, ROBOT_TCP, ROBOT_TOOL, ROBOT_WOBJ, Arguments
-from .registry import ROBOT_STATE, compiled
+from .arguments import ROBOT_JOINTS, ROBOT_TCP, ROBOT_TOOL, ROBOT_WOBJ, Arguments, no_effect
+from .registry import NO_EFFECT, ROBOT_STATE, compiled
 from .signals import dionum, write_signal
 from .signature_parts import MOVE_DO_TAIL, MOVE_TAIL
 
@@ -119,3 +119,21 @@ _GO_TAIL = "VAR signalgo Signal, num Value \\PERS loaddata TLoad"
 def _move_analog_or_group(calls, compiler, call, entry):
     """The move, and the analog or group output set at the target (as MoveLDO does)."""
     return move_robot(calls, compiler, call, entry, "ToPoint", signal=True, checked=_analog)
+
+
+# --- survey round 4: the Paint option (RobotWare Paint, IRB 5500 cells) ----------------------
+# PaintL/PaintC move like MoveL/MoveC (the robot jumps to the target); the paint events
+# along the path and the brush table SetBrush selects are not modelled (SetBrush: no effect).
+
+_PAINT_TAIL = "speeddata Speed \\num T, zonedata Zone, PERS tooldata Tool \\PERS wobjdata WObj"
+
+
+@compiled(f"PaintL(robtarget ToPoint \\identno ID, {_PAINT_TAIL})",
+          f"PaintC(robtarget CirPoint, robtarget ToPoint \\identno ID, {_PAINT_TAIL})",
+          modelled=ROBOT_STATE)
+def _paint_move(calls, compiler, call, entry):
+    return move_robot(calls, compiler, call, entry, "ToPoint")
+
+
+compiled("SetBrush(num BrushNumber \\num X | num Y | num Z)",
+         modelled=NO_EFFECT)(no_effect)

@@ -1,4 +1,9 @@
-"""Data and system functions: Present, Dim, ValToStr, StrToVal, modes, dates."""
+"""Data and system functions: Present, Dim, ValToStr, StrToVal, modes, dates.
+
+The controller's date and time are one fixed moment (FIXED): CDate gives "2026-01-01",
+CTime "00:00:00", GetTime \\WDay 4 (that date is a Thursday; weekdays run from 1, Monday,
+to 7) and \\Hour, \\Min, \\Sec 0. Elapsed times are measured with clocks (ClkRead).
+"""
 from __future__ import annotations
 
 from ... import ast
@@ -141,16 +146,25 @@ def _remaining_retries(calls, compiler, call, entry) -> Compiled:
                                         - m.frames[-1].retries)), NUM)
 
 
+# The one date and time rapidmc's controller has (FIXED): Thursday 2026-01-01, 00:00:00.
+FIXED_DATE, FIXED_TIME, FIXED_WEEKDAY = "2026-01-01", "00:00:00", 4.0
+
+
 @compiled("string CDate()",
           "string CTime()",
           modelled=FIXED)
 def _date(calls, compiler, call, entry) -> Compiled:
-    text = "2026-01-01" if call.name.key == "CDATE" else "00:00:00"
+    text = FIXED_DATE if call.name.key == "CDATE" else FIXED_TIME
     return constant(text, STRING)
 
 
 @compiled("num GetTime(\\switch WDay | switch Hour | switch Min | switch Sec)",
           modelled=FIXED)
 def _get_time(calls, compiler, call, entry) -> Compiled:
-    return constant(0.0, NUM)
+    """The part of the fixed date asked for: \\WDay 1 (Monday) to 7 (Sunday), so 4 (the
+    fixed date is a Thursday; 0 is no weekday, and a program indexing an array by it
+    must not fail); hour, minute and second 0."""
+    Arguments(calls, compiler, call, entry)
+    switches = {arg.name.key for arg in call.args if arg.name is not None}
+    return constant(FIXED_WEEKDAY if "WDAY" in switches else 0.0, NUM)
 
