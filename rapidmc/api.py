@@ -35,6 +35,7 @@ from .ltl import read_hoa, to_buchi
 from .ltl.syntax import Not
 from . import reduction
 from .model import RapidDescriber, RapidSystem, replay, with_final_loop
+from .fixed_readings import fixed_readings
 from .properties import AtomCompiler, Property, check_unique, parse_property, read_property_file
 from .semantics.configured_signals import _walk_statements
 from .semantics.link import build
@@ -279,7 +280,9 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
             results.append(PropertyResult(prop.name, prop.text, result, vacuous))
     except EnvironmentFault as exc:
         raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
-    return CheckReport(results, facts.warnings(), model.describer)
+    warnings = sorted(fixed_readings(model.program) + facts.warnings(),
+                      key=lambda d: (d.span.file, d.span.line, d.span.column))
+    return CheckReport(results, warnings, model.describer)
 
 
 class _StuckWatch:

@@ -111,6 +111,7 @@ USAGE = _code("RMC601", "usage", "bad command-line usage")
 
 # --- warnings (7xx): reported beside the verdicts, never a failure on their own ------
 NEVER_REACHED = _code("RMC701", "never-reached", "a statement no input sequence reaches (after a complete search)")
+FIXED_READING = _code("RMC702", "fixed-reading", "a controller reading the check takes as a fixed or sampled value")
 
 
 @dataclass(frozen=True)

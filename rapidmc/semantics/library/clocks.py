@@ -22,6 +22,7 @@ from .registry import CHOICE, compiled
 RESOLUTION = 0.001
 # what a clock that ran may read when model checking (seconds)
 CHECKED_READINGS = tuple(values.to_num(seconds) for seconds in (RESOLUTION, 1.0, 86400.0))
+SAMPLED_READINGS_TEXT = "0.001 s, 1 s or 86400 s (a clock that ran)"
 
 
 def _clock_action(calls, compiler, call, entry, update) -> Instruction:

@@ -1,0 +1,65 @@
+"""RMC702: the controller readings a check takes as fixed or sampled values are named.
+
+Each case is a main routine body; the expected warnings are (routine as
+written, line of its first call, number of calls).  Readings inside output
+text (TPWrite, ErrWrite) decide nothing and are not reported, nor are user
+routines that happen to share a predefined name.
+"""
+from __future__ import annotations
+
+import json
+import re
+
+import pytest
+
+from rapidmc import ast
+from rapidmc.cli import main
+from rapidmc.fixed_readings import fixed_readings
+from rapidmc.semantics.link import build
+from rapidmc.syntax import parse_text
+
+HEAD = "MODULE Readings\n  VAR num speed := 0;\n  VAR clock cycle;\n  VAR string text;\n  PROC main()\n"
+TAIL = "  ENDPROC\nENDMODULE\n"
+FIRST_LINE = HEAD.count("\n") + 1
+
+
+def warnings_of(body: str, extra: str = "") -> list[tuple[str, int, int]]:
+    text = HEAD + body + TAIL.replace("ENDMODULE", extra + "ENDMODULE")
+    program = build(ast.Program(parse_text(text, "readings.mod")))
+    found = []
+    for diagnostic in fixed_readings(program):
+        assert diagnostic.code.code == "RMC702" and diagnostic.severity == "warning"
+        name = diagnostic.message.split()[0]
+        calls = int(re.search(r"\((\d+) calls?\)", diagnostic.message).group(1))
+        found.append((name, diagnostic.span.line - FIRST_LINE + 1, calls))
+    return found
+
+
+@pytest.mark.parametrize("body, expected", [
+    ("    IF OpMode() = OP_AUTO speed := 100;\n", [("OpMode", 1, 1)]),
+    ("    IF RunMode() = RUN_CONT_CYCLE speed := 1;\n    IF OpMode() = OP_MAN_PROG speed := 2;\n"
+     "    IF RunMode() = RUN_STEP_MOVE speed := 3;\n", [("RunMode", 1, 2), ("OpMode", 2, 1)]),
+    ("    ClkStart cycle;\n    speed := 3600 / ClkRead(cycle);\n", [("ClkRead", 2, 1)]),
+    ('    TPWrite "Started " + CDate() + " " + CTime();\n', []),
+    ('    ErrWrite "Stopped", "at " + CTime();\n', []),
+    ('    text := CDate();\n', [("CDate", 1, 1)]),
+    ("    speed := speed + 1;\n", []),
+])
+def test_fixed_and_sampled_readings(body, expected):
+    assert warnings_of(body) == expected
+
+
+def test_a_user_routine_with_a_predefined_name_is_not_a_reading():
+    user = "  FUNC bool RobOS()\n    RETURN FALSE;\n  ENDFUNC\n"
+    assert warnings_of("    IF RobOS() speed := 1;\n", user) == []
+
+
+def test_the_warning_is_in_the_json_report_beside_the_verdicts(tmp_path, capsys):
+    program = tmp_path / "prog.mod"
+    program.write_text(HEAD + "    IF OpMode() = OP_AUTO THEN\n      speed := 100;\n    ELSE\n"
+                       "      speed := 10;\n    ENDIF\n" + TAIL)
+    code = main(["check", str(program), "--format", "json", "--quiet"])
+    document = json.loads(capsys.readouterr().out)
+    assert code == 0
+    assert [(w["code"], w["location"]["line"]) for w in document["warnings"]] == \
+        [("RMC702", FIRST_LINE), ("RMC701", FIRST_LINE + 3)]
