@@ -63,3 +63,15 @@ def test_the_warning_is_in_the_json_report_beside_the_verdicts(tmp_path, capsys)
     assert code == 0
     assert [(w["code"], w["location"]["line"]) for w in document["warnings"]] == \
         [("RMC702", FIRST_LINE), ("RMC701", FIRST_LINE + 3)]
+
+
+def test_the_html_page_shades_only_unreached_lines_not_readings(tmp_path, capsys):
+    program = tmp_path / "prog.mod"
+    program.write_text(HEAD + "    IF OpMode() = OP_AUTO THEN\n      speed := 100;\n    ELSE\n"
+                       "      speed := 10;\n    ENDIF\n" + TAIL)
+    page = tmp_path / "report.html"
+    main(["check", str(program), "--html", str(page), "--quiet"])
+    capsys.readouterr()
+    text = page.read_text()
+    data = json.loads(text.split('id="report-data"', 1)[1].split(">", 1)[1].split("</script>")[0])
+    assert [entry["line"] for entry in data["unreached"]] == [FIRST_LINE + 3]

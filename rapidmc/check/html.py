@@ -28,7 +28,7 @@ from pathlib import Path
 from typing import Mapping, Optional, Sequence
 
 from .. import __version__
-from ..diagnostics import HTML_OUTPUT, Diagnostic, SourceCache, error
+from ..diagnostics import HTML_OUTPUT, NEVER_REACHED, Diagnostic, SourceCache, error
 from .report import PropertyResult, property_json, step_json
 from .result import VIOLATED
 from .trace import Trace, TraceDescriber, TraceStep, build_trace
@@ -103,7 +103,7 @@ def page_data(results: Sequence[PropertyResult], describer: TraceDescriber,
                            if s["location"])
         properties.append(entry)
     unreached = [{"file": w.span.file, "line": w.span.line, "message": w.message}
-                 for w in warnings if w.span is not None]
+                 for w in warnings if w.span is not None and w.code is NEVER_REACHED]
     located.extend(entry["file"] for entry in unreached)
     return {"tool": f"rapidmc {__version__}", "files": source_files(describer, located),
             "properties": properties, "unreached": unreached}
