@@ -155,3 +155,14 @@ def test_a_name_only_routine_loads_with_any_arguments_and_stops_where_it_is_reac
     assert code == 2 and out == "start\nlibrary handler\n", out + err
     assert "RaiseToUser from the name list of ABB's reference only" in err and "[RMC305]" in err
     assert ":21:7:" in err
+
+
+def test_undeclared_names_in_the_arguments_of_a_name_only_routine_are_reported(tmp_path):
+    program = tmp_path / "Typo.mod"
+    program.write_text("MODULE Typo\n  VAR socketdev sock;\n  PROC main()\n"
+                       "    IndCnvInit sock, nTypo \\Speed:=Foo(3);\n    TPWrite \"never\";\n"
+                       "  ENDPROC\nENDMODULE\n")
+    code, out, err = cli(["run", str(program)])
+    assert code == 2 and out == ""
+    assert "unknown name 'nTypo' [RMC201]" in err and "unknown function 'Foo' [RMC203]" in err
+    assert "RMC305" not in err

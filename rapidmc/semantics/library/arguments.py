@@ -4,7 +4,7 @@ from __future__ import annotations
 from typing import Callable
 
 from ... import ast
-from ...diagnostics import UNSUPPORTED, error
+from ...diagnostics import UNKNOWN_NAME, UNKNOWN_ROUTINE, UNSUPPORTED, UserError, error
 from ..calls import REFERENCE
 from ..expressions import Compiled, constant
 from ..instructions import Action, Instruction
@@ -88,9 +88,22 @@ def unknown_parameters(evidence: str) -> Callable:
     reaching the call stops with RMC305 saying that its parameter list is not known
     (``evidence`` says where the name comes from)."""
     def factory(calls, compiler, call, entry):
+        for arg in call.args:
+            if arg.value is not None:
+                _names_are_declared(compiler, arg.value)
         return _stops(calls, call, entry, f"rapidmc knows {call.name.text} {evidence}; its "
                       "parameters and effect are not modelled")
     return factory
+
+
+def _names_are_declared(compiler, expr) -> None:
+    """Report an undeclared name or routine in an argument of a routine whose parameters are
+    not known; whether the argument fits its (unknown) parameter cannot be checked."""
+    try:
+        compiler.value(expr)
+    except UserError as failure:
+        if any(d.code in (UNKNOWN_NAME, UNKNOWN_ROUTINE) for d in failure.diagnostics):
+            raise
 
 
 # The factory of the names rapidmc knows from docs/reference-names.txt only.
