@@ -149,7 +149,8 @@ def coverage_section() -> list[str]:
                      f"{len(section.name_only)} | {len(section.missing)} |")
     lines += ["", "*By name only*: no manual text or public call showed the routine's parameters, "
               "so it is registered with the signature `(...)`: programs calling it load with any "
-              "arguments (not checked), and reaching the call stops the run with RMC305."]
+              "arguments (not matched to parameters; undeclared names in them are reported), "
+              "and reaching the call stops the run with RMC305."]
     for section in sections:
         if section.name_only:
             lines += ["", f"{section.name.capitalize()} by name only: "

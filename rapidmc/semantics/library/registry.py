@@ -19,8 +19,8 @@ Type names: any RAPID type, ``anytype`` (every type) and ``anynum`` (num
 or dnum).  The comma before a ``\\`` parameter may be left out.  ``(...)``
 declares a routine whose parameter list rapidmc has no evidence for (it
 knows the name from ABB's reference only): calls with any arguments load,
-their arguments are not checked (``Signature.open_parameters``), and the
-entry's factory must not bind them (``arguments.unknown_parameters``).
+their arguments are not matched to parameters (``Signature.open_parameters``),
+and the entry's factory must not bind them (``arguments.unknown_parameters``).
 
 Calling convention (what the interpreter does after binding arguments):
 
