@@ -52,6 +52,8 @@ def signature_text(signature: Signature) -> str:
             parts.append(text)
         previous_group = spec.alternative_group
     head = f"{signature.return_type} {signature.name}" if signature.return_type else signature.name
+    if signature.open_parameters:
+        return f"{head}(...)"
     body = ""
     for part in parts:
         body += (" " if part.startswith("\\") and body else ", " if body else "") + part
@@ -140,11 +142,19 @@ def coverage_section() -> list[str]:
              f"The names of ABB's RAPID reference listed in `docs/{REFERENCE.name}` (its header "
              "says which manual and options, and where the list comes from) against the registry "
              "(`python -m rapidmc.library_coverage`).", "",
-             "| section | in the reference | in the library | missing |", "|---|---|---|---|"]
+             "| section | in the reference | in the library | of them by name only | missing |",
+             "|---|---|---|---|---|"]
     for section in sections:
         lines.append(f"| {section.name} | {len(section.names)} | {section.covered} | "
-                     f"{len(section.missing)} |")
+                     f"{len(section.name_only)} | {len(section.missing)} |")
+    lines += ["", "*By name only*: no manual text or public call showed the routine's parameters, "
+              "so it is registered with the signature `(...)`: programs calling it load with any "
+              "arguments (not matched to parameters; undeclared names in them are reported), "
+              "and reaching the call stops the run with RMC305."]
     for section in sections:
+        if section.name_only:
+            lines += ["", f"{section.name.capitalize()} by name only: "
+                      f"{', '.join(section.name_only)}."]
         if section.missing:
             lines += ["", f"Missing {section.name}: {', '.join(section.missing)}."]
     return lines

@@ -31,3 +31,12 @@ def test_a_name_before_any_section_is_refused(tmp_path):
     reference.write_text("MoveL\n")
     with pytest.raises(ValueError, match="before the first"):
         library_coverage.read_reference(reference)
+
+
+def test_routines_known_by_name_only_are_counted_apart(tmp_path):
+    reference = tmp_path / "names.txt"
+    reference.write_text("[instructions]\nMoveL\nRaiseToUser\nIndCnvInit\n[functions]\nAbs\n")
+    sections = library_coverage.coverage(reference)
+    assert [(s.covered, s.name_only) for s in sections] == [
+        (3, ("RaiseToUser", "IndCnvInit")), (1, ())]
+    assert "by name only, signature (...): 2" in library_coverage.report(sections)

@@ -7,7 +7,10 @@ from pathlib import Path
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from rapidmc.semantics.library import lookup_function, lookup_procedure
+from rapidmc.library_doc import signature_text
+from rapidmc.semantics.library import lookup_function, lookup_procedure, parse_signature
+from rapidmc.semantics.library.registry import SignatureSyntaxError, register
+from rapidmc.semantics.types import PREDEFINED_TYPES
 from rapidmc.semantics.library.geometry import mir_pos
 from rapidmc.semantics.library.vector_math import quaternion_rotate
 from tests.test_realworld import cli
@@ -103,3 +106,63 @@ def test_every_outcome_is_reachable(atom, tmp_path):
     properties.write_text(f"never: G !{atom}\n")
     code, out, err = cli(["check", PROGRAM, "--ltl", str(properties)])
     assert code == 1 and "never: VIOLATED" in out, out + err
+
+
+@pytest.mark.parametrize("lookup, name, shape", [
+    (lookup_procedure, "CSSACT", [("RefFrame", "num", True, 0), ("SoftDir", "css_soft_dir", False, 0),
+                                  ("AllowMove", "switch", True, 0)]),
+    (lookup_procedure, "CSSOFFSETTUNE", [("OffsetDir", "css_offset_dir", False, 0),
+                                         ("ForceOffset", "num", False, 0)]),
+    (lookup_procedure, "PRXSETSYNCALARM", [("MechUnit", "mecunit", False, 0),
+                                           ("Time", "num", False, 0), ("NoPulse", "switch", True, 0)]),
+    (lookup_procedure, "CAMGETPARAMETER", [("ParName", "string", False, 0),
+                                           ("BoolVar", "bool", True, 0)]),
+    (lookup_function, "PRXGETMAXRECORDPOS", [("MechUnit", "mecunit", False, 0)]),
+])
+def test_signatures_of_entries_from_public_evidence(lookup, name, shape):
+    test_signatures_of_reference_entries(lookup, name, shape)
+
+
+def test_camera_parameter_values_are_one_alternative_group():
+    signature = lookup_procedure("CAMSETPARAMETER").signature
+    groups = {signature.parameter(key).alternative_group for key in ("NUMVAL", "BOOLVAL", "STRVAL")}
+    assert len(groups) == 1 and None not in groups
+
+
+def test_an_open_parameter_list_takes_no_declared_parameters():
+    signature = parse_signature("IndCnvInit(...)")
+    assert signature.open_parameters and signature.parameters == ()
+    assert signature_text(signature) == "IndCnvInit(...)"
+    assert not parse_signature("Incr(INOUT anynum Name)").open_parameters
+    with pytest.raises(SignatureSyntaxError):
+        parse_signature("IndCnvInit(..., num Speed)")
+
+
+def test_an_open_parameter_list_needs_a_factory_that_does_not_bind():
+    with pytest.raises(SignatureSyntaxError):
+        register("NotARapidName(...)", lambda: None)
+    assert lookup_procedure("RAISETOUSER").signature.open_parameters
+
+
+def test_the_processing_times_of_cap_have_their_components():
+    assert [c.name for c in PREDEFINED_TYPES["PROC_TIMES"].components] == ["pre", "post1", "post2"]
+    assert len(PREDEFINED_TYPES["SUP_TIMEOUTS"].components) == 5
+
+
+def test_a_name_only_routine_loads_with_any_arguments_and_stops_where_it_is_reached():
+    program = str(Path(__file__).resolve().parent / "library_outcomes" / "RaiseToUser.mod")
+    code, out, err = cli(["run", program])
+    assert code == 2 and out == "start\nlibrary handler\n", out + err
+    assert "RaiseToUser from the name list of ABB's reference only" in err and "[RMC305]" in err
+    assert ":21:7:" in err
+
+
+def test_undeclared_names_in_the_arguments_of_a_name_only_routine_are_reported(tmp_path):
+    program = tmp_path / "Typo.mod"
+    program.write_text("MODULE Typo\n  VAR socketdev sock;\n  PROC main()\n"
+                       "    IndCnvInit sock, nTypo \\Speed:=Foo(3);\n    TPWrite \"never\";\n"
+                       "  ENDPROC\nENDMODULE\n")
+    code, out, err = cli(["run", str(program)])
+    assert code == 2 and out == ""
+    assert "unknown name 'nTypo' [RMC201]" in err and "unknown function 'Foo' [RMC203]" in err
+    assert "RMC305" not in err

@@ -147,6 +147,9 @@ NUM_ALIASES = (
     # process modes, load identification results, conveyor commands
     "busstate", "cfgdomain", "motionprocessmode", "paridvalidnum", "cnvcmd", "tunegtype",
     "tsp_status",
+    # SoftMove directions (css_soft_dir, css_offset_dir: named in a public SoftMove note, and
+    # passed as num by a public program that calls CSSAct)
+    "css_soft_dir", "css_offset_dir",
 )
 STRING_ALIASES = ("stringdig", "errstr")
 
@@ -209,6 +212,15 @@ REFERENCE_RECORDS = (
     _trigg_io("triggstrgo", STRING),
     RapidType("O_ROBTARGET", "o_robtarget", RECORD, ROBTARGET.components),
     RapidType("O_JOINTTARGET", "o_jointtarget", RECORD, JOINTTARGET.components),
+)
+# Reference coverage (issue 8, item 1): the process and supervision times of the Continuous
+# Application Platform; components as the public re-implementation jasky1640/Tenon-IDE
+# declares them (tenon/module/base.t, records processtimes and supervtimeouts, the types of
+# capdata's components proc_times and sup_timeouts).
+REFERENCE_RECORDS += (
+    _record("proc_times", *_nums("pre", "post1", "post2")),
+    _record("sup_timeouts", *_nums("pre_cond", "start_cond", "end_main_cond", "end_post1_cond",
+                                   "end_post2_cond")),
 )
 PREDEFINED_TYPES.update({t.key: t for t in REFERENCE_RECORDS})
 PREDEFINED_TYPES.update(NON_VALUE_TYPES)

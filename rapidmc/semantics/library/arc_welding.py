@@ -6,9 +6,9 @@ modelled.
 """
 from __future__ import annotations
 
-from .arguments import no_effect
+from .arguments import NAME_ONLY, no_effect
 from .motion import move_robot
-from .registry import NO_EFFECT, ROBOT_STATE, compiled
+from .registry import NO_EFFECT, NOT_MODELLED, ROBOT_STATE, compiled
 
 _WELD = "seamdata Seam, welddata Weld \\weavedata Weave"
 _TAIL = ("PERS tooldata Tool \\PERS wobjdata WObj \\switch Corr \\PERS anytype Track "
@@ -44,3 +44,14 @@ compiled(*(f"{name}{robot}({_ON_OFF}, robtarget ToPoint {_FULL})"
          *(f"ArcC{robot}{end}(robtarget CirPoint, robtarget ToPoint {_ENDS})"
            for robot in (1, 2) for end in ("Start", "End")),
          modelled=ROBOT_STATE)(_weld_move)
+
+
+# --- reference coverage (issue 8, item 1): weld error recovery --------------------------------
+# Evidence: a public cladding program calls `RecoveryPosSet;` before its weld and
+# `RecoveryPosReset;` after it, without arguments; ABB's station templates (PartR2S2 ...)
+# name the pair for error handling. They switch the path recorder used by the weld error
+# recovery, which rapidmc does not model: no effect. The recovery menus, the process name
+# and ArcMoveExtJ are known from the name list only.
+compiled("RecoveryPosSet()", "RecoveryPosReset()", modelled=NO_EFFECT)(no_effect)
+compiled("RecoveryMenu(...)", "RecoveryMenuWR(...)", "SetWRProcName(...)", "ArcMoveExtJ(...)",
+         modelled=NOT_MODELLED)(NAME_ONLY)

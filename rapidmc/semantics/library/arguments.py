@@ -4,7 +4,7 @@ from __future__ import annotations
 from typing import Callable
 
 from ... import ast
-from ...diagnostics import UNSUPPORTED, error
+from ...diagnostics import UNKNOWN_NAME, UNKNOWN_ROUTINE, UNSUPPORTED, UserError, error
 from ..calls import REFERENCE
 from ..expressions import Compiled, constant
 from ..instructions import Action, Instruction
@@ -69,10 +69,43 @@ def not_modelled(reason: str) -> Callable:
     loads; reaching the call stops with RMC305 saying ``reason``."""
     def factory(calls, compiler, call, entry):
         Arguments(calls, compiler, call, entry)
-
-        def unsupported(m):
-            raise error(UNSUPPORTED, f"{call.name.text} {reason}", call.span)
-        if entry.signature.return_type:
-            return Compiled(unsupported, calls.return_type(entry))
-        return Action(call.span, unsupported)
+        return _stops(calls, call, entry, f"{call.name.text} {reason}")
     return factory
+
+
+def _stops(calls, call, entry, message: str):
+    """The compiled call (closure or instruction) that stops the run with RMC305."""
+    def unsupported(m):
+        raise error(UNSUPPORTED, message, call.span)
+    if entry.signature.return_type:
+        return Compiled(unsupported, calls.return_type(entry))
+    return Action(call.span, unsupported)
+
+
+def unknown_parameters(evidence: str) -> Callable:
+    """Factory of a routine known from ABB's reference by name only (signature ``(...)``):
+    the program loads whatever arguments it passes, which are neither checked nor evaluated;
+    reaching the call stops with RMC305 saying that its parameter list is not known
+    (``evidence`` says where the name comes from)."""
+    def factory(calls, compiler, call, entry):
+        for arg in call.args:
+            if arg.value is not None:
+                _names_are_declared(compiler, arg.value)
+        return _stops(calls, call, entry, f"rapidmc knows {call.name.text} {evidence}; its "
+                      "parameters and effect are not modelled")
+    return factory
+
+
+def _names_are_declared(compiler, expr) -> None:
+    """Report an undeclared name or routine in an argument of a routine whose parameters are
+    not known; whether the argument fits its (unknown) parameter cannot be checked."""
+    try:
+        compiler.value(expr)
+    except UserError as failure:
+        if any(d.code in (UNKNOWN_NAME, UNKNOWN_ROUTINE) for d in failure.diagnostics):
+            raise
+
+
+# The factory of the names rapidmc knows from docs/reference-names.txt only.
+NAME_ONLY = unknown_parameters("from the name list of ABB's reference only "
+                               "(docs/reference-names.txt)")

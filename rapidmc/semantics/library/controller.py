@@ -16,7 +16,7 @@ from ..errors import RapidError
 from ..expressions import Compiled, constant
 from ..instructions import Action, ControlAction
 from ..types import BOOL, NUM, STRING
-from .arguments import Arguments, fixed, no_effect, not_modelled
+from .arguments import NAME_ONLY, Arguments, fixed, no_effect, not_modelled
 from .data import PREDEFINED_DATA
 from .environment_model import where
 from .motion import move_robot
@@ -278,3 +278,22 @@ def _read_cfg_data(calls, compiler, call, entry):
             raise RapidError("ERR_CFG_NOTFND", "ReadCfgData: no such instance or attribute in "
                              "the configuration")
     return Action(call.span, read)
+
+
+# --- reference coverage (issue 8, item 1): brake check, friction identification ------------
+# Evidence: a public production program calls `CyclicBrakeCheck;` without arguments; the
+# public re-implementation jasky1640/Tenon-IDE declares `fricidinit()` without parameters
+# (tenon/module/base.t). A brake check tests the brakes with the robot standing still, and
+# starting a friction identification records nothing the program reads: no effect.
+compiled("CyclicBrakeCheck()", "FricIdInit()", modelled=NO_EFFECT)(no_effect)
+# From the name list only: the rest of friction identification, joint data and torque
+# margins, hollow wrist and I/O-controlled axes, manual load identification, EGM's analog,
+# group and lead-through setups, group signal information, SCWrite, least-squares tools
+# (FitCircle, Matrix*).
+compiled("FricIdEvaluate(...)", "FricIdSetFricLevels(...)", "GetJointData(...)",
+         "GetTorqueMargin(...)", "ResetTorqueMargin(...)", "HollowWristReset(...)",
+         "IoCtrlAxis_RefSync(...)", "IoCtrlAxis_RefSyncOn(...)", "IoCtrlAxis_RefSyncOff(...)",
+         "ManLoadIdProc(...)", "EGMSetupAI(...)", "EGMSetupAO(...)", "EGMSetupGI(...)",
+         "EGMSetupLTAPP(...)", "GetGroupSignalInfo(...)", "SCWrite(...)", "FitCircle(...)",
+         "MatrixSolve(...)", "MatrixSolveQR(...)", "MatrixSVD(...)",
+         modelled=NOT_MODELLED)(NAME_ONLY)

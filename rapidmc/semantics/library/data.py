@@ -235,6 +235,19 @@ for _name in ("ARCWELD_ERR", "SPOTWELD_ERR", "PAINT_ERR", "PICKWARE_ERR"):
     _define(_name, "errdomain", PREDEFINED_DATA["PROCESS_ERR"].value)
 
 
+# SoftMove (issue 8, item 1): the soft directions CSS_X .. CSS_XYRZ numbered 1 .. 8 and the
+# reference frames CSS_REFFRAME_TOOL 1, CSS_REFFRAME_WOBJ 2, as a public program that calls
+# CSSAct lists them; the force offset directions in the order a public SoftMove note lists
+# them, numbers: our choice.
+for _names, _type in ((("CSS_X", "CSS_Y", "CSS_Z", "CSS_XY", "CSS_XZ", "CSS_YZ", "CSS_XYZ",
+                        "CSS_XYRZ"), "css_soft_dir"),
+                      (("CSS_REFFRAME_TOOL", "CSS_REFFRAME_WOBJ"), "num"),
+                      (("CSS_POSX", "CSS_POSY", "CSS_POSZ", "CSS_NEGX", "CSS_NEGY", "CSS_NEGZ"),
+                       "css_offset_dir")):
+    for _number, _name in enumerate(_names, start=1):
+        _define(_name, _type, float(_number))
+
+
 def lookup_data(key: str) -> PredefinedData | None:
     """The predefined data object with canonical name ``key``, or None."""
     return PREDEFINED_DATA.get(key)

@@ -8,9 +8,9 @@ from __future__ import annotations
 
 from ..instructions import Action
 from ..machine import ABSENT
-from .arguments import Arguments, no_effect
+from .arguments import NAME_ONLY, Arguments, no_effect
 from .data import PREDEFINED_DATA
-from .registry import FIXED, NO_EFFECT, compiled
+from .registry import FIXED, NO_EFFECT, NOT_MODELLED, compiled
 
 compiled("IError(errdomain ErrorDomain \\num ErrorId, errtype ErrorType, VAR intnum Interrupt)",
          "GetTrapData(VAR trapdata TrapEvent)",
@@ -35,3 +35,11 @@ def _read_err_data(calls, compiler, call, entry):
             if target is not ABSENT:
                 m.write_ref(target, value)
     return Action(call.span, read)
+
+
+# --- reference coverage (issue 8, item 1): RaiseToUser -----------------------------------------
+# From the name list only: no text of its manual page and no public RAPID call of it was
+# found, so neither its parameters nor how it hands an error from a NOSTEPIN routine's
+# handler to the user-level routine's handler are modelled; a handler that reaches it stops
+# the run (RMC305) instead of guessing where execution goes on.
+compiled("RaiseToUser(...)", modelled=NOT_MODELLED)(NAME_ONLY)

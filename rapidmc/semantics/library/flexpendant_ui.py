@@ -209,3 +209,14 @@ compiled("UIShow(string AssemblyName, string TypeName \\string InitCmd "
              "\\VAR uishownum InstanceId \\VAR errnum Status \\switch NoCloseBtn)",
          modelled=NO_EFFECT)(no_effect)
 compiled("bool UIClientExist()", modelled=FIXED)(fixed(True))
+
+
+# --- reference coverage (issue 8, item 1): messages that wait for no answer ----------------
+# Evidence: public RAPID code calls `UIMsgWriteAbort;` without arguments (a controller program
+# in the index) and a public tutorial calls `UIMsgWrite "My Header", "Printed with
+# UIMsgWrite...";` with a header and a message; ABB's OmniCore training slides say neither
+# waits for the operator. Optional parameters of the manual are not known here, so calls
+# with more arguments are rejected. Showing or removing the message changes nothing rapidmc
+# observes.
+compiled("UIMsgWrite(string Header, string Message)", "UIMsgWriteAbort()",
+         modelled=NO_EFFECT)(no_effect)

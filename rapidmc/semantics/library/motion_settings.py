@@ -8,8 +8,9 @@ move time counters give one fixed, typical value (the counters read 0).
 """
 from __future__ import annotations
 
-from .arguments import fixed, no_effect
-from .registry import FIXED, NO_EFFECT, compiled
+from .arguments import NAME_ONLY, fixed, no_effect, not_modelled
+from .motion import move_robot
+from .registry import FIXED, NO_EFFECT, NOT_MODELLED, ROBOT_STATE, compiled
 
 compiled("GripLoad(PERS loaddata Load)",
          "WorldAccLim(\\num On | switch Off)",
@@ -49,3 +50,37 @@ compiled("num GetMotorTorque(\\mecunit MecUnit, num AxisNo)",
 compiled("num GetAxisDistance(mecunit MechUnit, num AxisNo)",
          "num GetAxisMoveTime(mecunit MechUnit, num AxisNo)", modelled=FIXED)(fixed(0.0))
 compiled("num CSpeedOverride(\\switch CTask)", modelled=FIXED)(fixed(100.0))
+
+
+# --- reference coverage (issue 8, item 1): SoftMove (Cartesian soft servo) ------------------
+# Evidence: public RAPID programs. A ROS socket server calls
+# `CSSAct \RefFrame:=.. \RefOrient:=[..], dir \StiffnessNonSoftDir:=.. \Stiffness:=.. \AllowMove
+# \Ramp:=..;` (its comment gives the order [\RefFrame] [\RefOrient] SoftDir
+# [\StiffnessNonSoftDir] [\Stiffness] [\AllowMove] [\Ramp]),
+# `CSSOffsetTune \RefFrame:=CSS_REFFRAME_WOBJ, CSS_NEGX, ForceOffset \StiffnessNonSoftDir:=30;`
+# (then prints ForceOffset: it is written), `CSSForceOffsetAct CSS_NEGX, ForceOffset;` and
+# `CSSDeactMoveL target, speed, tool \WObj:=wobj;` (also in a public SoftMove note). Softness
+# and force offsets act on the servo, which rapidmc does not model; CSSDeactMoveL moves like
+# MoveL; CSSOffsetTune measures a force, so it stops the run. CSSDeact and
+# CSSForceOffsetDeact are known from the name list only.
+compiled("CSSAct(\\num RefFrame \\orient RefOrient, css_soft_dir SoftDir "
+             "\\num StiffnessNonSoftDir \\num Stiffness \\switch AllowMove \\num Ramp)",
+         "CSSForceOffsetAct(css_offset_dir ForceOffsetDir, num ForceOffset)",
+         modelled=NO_EFFECT)(no_effect)
+compiled("CSSOffsetTune(\\num RefFrame, css_offset_dir OffsetDir, VAR num ForceOffset "
+             "\\num StiffnessNonSoftDir)",
+         modelled=NOT_MODELLED)(not_modelled("measures a force offset on the servo, which "
+                                             "rapidmc does not model"))
+
+
+@compiled("CSSDeactMoveL(robtarget ToPoint, speeddata Speed, PERS tooldata Tool "
+          "\\PERS wobjdata WObj)", modelled=ROBOT_STATE)
+def _soft_move_end(calls, compiler, call, entry):
+    return move_robot(calls, compiler, call, entry, "ToPoint")
+
+
+# From the name list only: the rest of SoftMove, path length measurement, the elbow's
+# softness.
+compiled("CSSDeact(...)", "CSSForceOffsetDeact(...)", "PathLengthStart(...)",
+         "PathLengthStop(...)", "PathLengthReset(...)", "SoftElbow(...)",
+         modelled=NOT_MODELLED)(NAME_ONLY)

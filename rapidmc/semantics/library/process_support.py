@@ -9,7 +9,7 @@ interrupts are modelled), I/O units are always running.
 """
 from __future__ import annotations
 
-from .arguments import fixed, no_effect, not_modelled
+from .arguments import NAME_ONLY, fixed, no_effect, not_modelled
 from .registry import FIXED, NO_EFFECT, NOT_MODELLED, compiled
 
 _SIGNAL_OUT = "\\VAR signaldo DOp | VAR signalgo GOp | VAR signalao AOp | num ProcID"
@@ -93,3 +93,9 @@ compiled(f"bool STIsOpen({_GUN})",
 compiled(f"num ReadVar({_SENSOR}, num VarNo \\string TaskName)",
          modelled=NOT_MODELLED)(not_modelled("reads a value from a serial sensor, which rapidmc "
                                              "does not model"))
+
+# --- reference coverage (issue 8, item 1): arrays of sensor variables -------------------------
+# From the name list only (no manual text or public call found): ReadVarArr, WriteVarArr and
+# IVarValue, interrupts on a sensor variable.
+compiled("ReadVarArr(...)", "WriteVarArr(...)", "IVarValue(...)",
+         modelled=NOT_MODELLED)(NAME_ONLY)

@@ -16,7 +16,11 @@ Name`` declares a switch, ``\\a | b | c`` is a group of mutually exclusive
 optional parameters and ``a | b`` (without backslash) a group of required
 alternatives of which exactly one must be given (SetGO's ``Value | Dvalue``).
 Type names: any RAPID type, ``anytype`` (every type) and ``anynum`` (num
-or dnum).  The comma before a ``\\`` parameter may be left out.
+or dnum).  The comma before a ``\\`` parameter may be left out.  ``(...)``
+declares a routine whose parameter list rapidmc has no evidence for (it
+knows the name from ABB's reference only): calls with any arguments load,
+their arguments are not matched to parameters (``Signature.open_parameters``),
+and the entry's factory must not bind them (``arguments.unknown_parameters``).
 
 Calling convention (what the interpreter does after binding arguments):
 
@@ -134,6 +138,7 @@ class Signature:
     kind: str                       # FUNCTION or PROCEDURE
     return_type: Optional[str]      # None for procedures
     parameters: tuple[ParameterSpec, ...]
+    open_parameters: bool = False   # ``(...)``: the parameter list is not known
 
     def parameter(self, key: str) -> Optional[ParameterSpec]:
         """The parameter with canonical name ``key``, or None."""
@@ -180,7 +185,8 @@ PROCEDURES: dict[str, RoutineEntry] = {}
 # --------------------------------------------------------------------------
 
 _TOKEN = re.compile(r"\s*(?:(?P<word>[A-Za-z_][A-Za-z0-9_]*)|(?P<array>\{\s*\*(?:\s*,\s*\*)*\s*\})"
-                    r"|(?P<punct>[\\|,()]))")
+                    r"|(?P<punct>[\\|,()]|\.\.\.))")
+OPEN = "..."
 
 
 def _tokens(text: str) -> list[str]:
@@ -228,6 +234,9 @@ class _Parser:
             return_type, name = first.lower(), self.word()
         self.take("(")
         parameters: list[ParameterSpec] = []
+        open_parameters = self.peek() == OPEN
+        if open_parameters:
+            self.take(OPEN)
         while self.peek() != ")":
             if parameters and self.peek() == ",":
                 self.take(",")
@@ -235,8 +244,11 @@ class _Parser:
         self.take(")")
         if self.peek() is not None:
             raise SignatureSyntaxError(f"text after ')' in {self.text!r}")
+        if open_parameters and parameters:
+            raise SignatureSyntaxError(f"'...' stands for the whole parameter list in {self.text!r}")
         kind = PROCEDURE if return_type is None else FUNCTION
-        return Signature(name, name.upper(), kind, return_type, tuple(parameters))
+        return Signature(name, name.upper(), kind, return_type, tuple(parameters),
+                         open_parameters)
 
     def group(self) -> list[ParameterSpec]:
         optional = self.peek() == "\\"
@@ -295,6 +307,8 @@ def register(text: str, impl: Optional[Callable[..., object]], special: bool = F
     signature = parse_signature(text)
     if impl is None and not special:
         raise SignatureSyntaxError(f"{signature.name} has no implementation and is not special")
+    if signature.open_parameters and factory is None:
+        raise SignatureSyntaxError(f"{signature.name}: an open parameter list needs a factory")
     if modelled not in MODELLED_AS:
         raise SignatureSyntaxError(f"{signature.name}: unknown modelling {modelled!r}")
     table = FUNCTIONS if signature.kind == FUNCTION else PROCEDURES

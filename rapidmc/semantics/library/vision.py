@@ -13,9 +13,9 @@ from ..errors import RapidError
 from ..expressions import Compiled
 from ..instructions import Action
 from ..types import PREDEFINED_TYPES, default_value
-from .arguments import Arguments, fixed, no_effect
+from .arguments import NAME_ONLY, Arguments, fixed, no_effect, not_modelled
 from .environment_model import where
-from .registry import CHOICE, FIXED, NO_EFFECT, compiled
+from .registry import CHOICE, FIXED, NO_EFFECT, NOT_MODELLED, compiled
 
 MAX_PARTS = 2
 _CAMERA = "VAR cameradev Camera"
@@ -56,3 +56,19 @@ def _get_result(calls, compiler, call, entry):
             raise RapidError("ERR_CAM_NO_MORE_DATA", "no (more) parts found in the image")
         m.write_ref(target(m), part)
     return Action(call.span, get)
+
+
+# --- reference coverage (issue 8, item 1): named camera parameters ------------------------
+# Evidence: the parameter lists of the public re-implementation jasky1640/Tenon-IDE
+# (tenon/module/base.t): the camera, the parameter's name, and one optional value of type num,
+# bool or string (written as one alternative group here). Setting a parameter changes nothing
+# rapidmc observes; reading one would need the camera's configuration, so it stops the run.
+compiled(f"CamSetParameter({_CAMERA}, string ParName \\num NumVal | bool BoolVal | string StrVal)",
+         modelled=NO_EFFECT)(no_effect)
+compiled(f"CamGetParameter({_CAMERA}, string ParName \\VAR num NumVar | VAR bool BoolVar "
+         "| VAR string StrVar)",
+         modelled=NOT_MODELLED)(not_modelled("reads a parameter of the camera's configuration, "
+                                             "which rapidmc does not model"))
+# From the name list only: AliasCamera. CamGetExposure stays out: the reference lists it as a
+# function, whose result type nothing we found gives (that base module declares a procedure).
+compiled("AliasCamera(...)", modelled=NOT_MODELLED)(NAME_ONLY)
