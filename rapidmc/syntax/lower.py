@@ -81,6 +81,8 @@ def decode_string(token_text: str) -> Optional[str]:
 
 def number_value(text: str) -> int | float:
     """The value of a numeric literal: an exact int for integer literals."""
+    if text.isdecimal() and text.isascii():         # the common case: [0-9]+
+        return int(text)
     if _INTEGER_LITERAL.fullmatch(text):
         return int(text, 0) if text[:2].lower() in ("0x", "0o", "0b") else int(text)
     return float(text)
@@ -152,17 +154,22 @@ class Lowering:
         return nodes.Span(self.filename, token.line, token.column, token.end_line, token.end_column)
 
     def name(self, token: Token) -> ast.Name:
-        span = self.token_span(token)
         text = token.value
+        span = nodes.Span(self.filename, token.line, token.column, token.end_line,
+                          token.end_column)
+        key = text.upper()
+        if len(text) > MAX_IDENTIFIER_LENGTH or key in RESERVED_WORDS:
+            self.report_bad_name(text, key, span)
+        return nodes.Name(text, key, span)
+
+    def report_bad_name(self, text: str, key: str, span: ast.Span) -> None:
         if len(text) > MAX_IDENTIFIER_LENGTH:
             self.report(error(IDENTIFIER_TOO_LONG,
                               f"identifier '{text}' has {len(text)} characters; "
                               f"RAPID allows at most {MAX_IDENTIFIER_LENGTH}", span))
-        key = text.upper()
         if key in RESERVED_WORDS:
             self.report(error(SYNTAX, f"'{text}' is a reserved word and cannot be used as a "
                               "name", span))
-        return nodes.Name(text, key, span)
 
     # ---------------------------------------------------------------- modules
 
@@ -356,7 +363,11 @@ class Lowering:
         return tuple(arguments)
 
     def positional_argument(self, children, entries):
-        return nodes.Argument(ast.REQUIRED, None, children[0], self.span(entries))
+        (value,) = children
+        # The argument's text is the expression's, unless parentheses enclose it: the
+        # expression's span (equal to the one ``span`` would build) serves as it is.
+        span = self.span(entries) if id(value) in self.enclosed else value.span
+        return nodes.Argument(ast.REQUIRED, None, value, span)
 
     def named_argument(self, children, entries):
         name, value = children

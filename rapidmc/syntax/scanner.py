@@ -67,9 +67,8 @@ class Scanner:
         position, line, line_start = 0, 1, 0
         for skipped, value in pieces:
             if skipped:
-                breaks = skipped.count("\n")
-                if breaks:
-                    line += breaks
+                if "\n" in skipped:
+                    line += skipped.count("\n")
                     line_start = position + skipped.rindex("\n") + 1
                 position += len(skipped)
             end = position + len(value)
