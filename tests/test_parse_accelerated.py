@@ -4,6 +4,7 @@ are reported from Lark's driver whichever path ran first."""
 from __future__ import annotations
 
 import dataclasses
+import random
 from pathlib import Path
 
 import pytest
@@ -103,3 +104,55 @@ def test_diagnostics_do_not_depend_on_lark_cython(text, monkeypatch):
     assert [str(d) for d in compiled_first.value.diagnostics] == \
         [str(d) for d in lark_only.value.diagnostics]
     assert compiled_first.value.diagnostics
+
+
+# Texts where the scanner's reading could differ from RapidLexer's: keywords in any case
+# and as names, placeholders against '<', headers, other line breaks and white space,
+# Latin-1 names, characters no token starts with, unterminated strings.
+LEXICAL_CORNERS = [
+    "module m\nproc p()\n  if A < B then x := -1; endif\nendproc\nendmodule\n",
+    "MODULE m\nPROC p()\n  x := a<EXP>;\n  y := a <> b;\nENDPROC\nENDMODULE\n",
+    "MODULE m\nPROC p()\n  <SMT>\n  x := <EXP>;\nENDPROC\nENDMODULE\n",
+    "%%%\n  VERSION:1\n  LANGUAGE:ENGLISH\n%%%\nMODULE m\nENDMODULE\n",
+    "MODULE m\r\nPROC p()\r\n  x := 1;\r\nENDPROC\r\nENDMODULE\r\n",
+    "MODULE m\rPROC p()\r  x := 1;\rENDPROC\rENDMODULE",
+    "MODULE m\n\tPROC p()\f\n\t\tx := 1;  ! done\nENDPROC\nENDMODULE",
+    "MODULE m\nVAR num \xe4rger := 1;\nPROC p() \xe4rger := 2; ENDPROC\nENDMODULE\n",
+    "MODULE m\nPROC p()\n  x := 1\xa0+ 2;\nENDPROC\nENDMODULE\n",
+    "MODULE m\nPROC p()\n  TPWrite \"open;\nENDPROC\nENDMODULE\n",
+    "MODULE m\nPROC p()\n  Step := 1;\n  x := a AND b;\nENDPROC\nENDMODULE\n",
+    "MODULE m\nPROC p()\n  x := 1.5E3 + .5 + 0x1F + 0b101 + 0o17;\nENDPROC\nENDMODULE\n",
+    "MODULE m (SYSMODULE, NOVIEW)\nRECORD r num a; ENDRECORD\nENDMODULE\n",
+    "MODULE m\nPROC p(\\switch s | num n, VAR num v{*})\n  q \\s?s;\nENDPROC\nENDMODULE\n",
+    "MODULE m\nPROC p()\n  x := 1;\n",
+    "",
+    "! only a comment\n",
+]
+
+
+@needs_compiled
+@pytest.mark.parametrize("text", LEXICAL_CORNERS)
+def test_lexical_corners_parse_the_same_on_both_paths(text, monkeypatch):
+    assert_same_parse(text, "m.mod")
+    fast = _reported(text, "m.mod")
+    monkeypatch.setattr(accelerated, "AVAILABLE", False)
+    assert fast == _reported(text, "m.mod")
+
+
+MUTANTS = 150
+
+
+@needs_compiled
+def test_mutated_programs_parse_the_same_on_both_paths():
+    """Random edits of the repository's RAPID files (tokens deleted, swapped, replaced by
+    keywords or literals; lines moved): the fast path gives Lark's AST or fails."""
+    from fuzz_mutations import corpus_files, mutate
+    rng = random.Random(20261125)
+    corpus = corpus_files()
+    accepted = 0
+    for _ in range(MUTANTS):
+        path = rng.choice(corpus)
+        text = mutate(path.read_text(encoding="latin-1"), rng, rng.randint(1, 3))
+        assert_same_parse(text, path.name)
+        accepted += _outcome(text, path.name, False)[0] == "ast"
+    assert accepted > MUTANTS // 10           # some mutants stay programs: both paths build
