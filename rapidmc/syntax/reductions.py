@@ -139,21 +139,29 @@ def rule_callbacks(rules, lowering) -> dict[Rule, Callback]:
     around it (a parenthesised expression), since the enclosing text counts
     for the positions of the rules above.
     """
-    return {rule: _callback(rule, lowering) for rule in rules}
+    return {rule: _callback_maker(rule)(lowering) for rule in rules}
 
 
-def _callback(rule: Rule, lowering) -> Callback:
+@functools.cache
+def _callback_maker(rule: Rule) -> Callable[[object], Callback]:
+    """What a rule's callback is, decided once: a function of the lowering giving it."""
     name = rule.alias or rule.options.template_source or rule.origin.name
     plan = ChildPlan.of(rule)
     if name.startswith("_"):
-        return plan.function(None)
-    method = getattr(lowering, name, None) or _missing(name)
+        reduce = plan.function(None)
+        return lambda lowering: reduce
     if rule.options.expand1 and not rule.alias:
         if plan.is_identity() and plan.size == 1:
-            return _ONLY_ENTRY              # a ?rule passing on its one child
+            return lambda lowering: _ONLY_ENTRY      # a ?rule passing on its one child
         if not plan.is_identity():
-            return _inlining(plan.selector(), method, lowering.enclose)
-    return plan.function(method)
+            select = plan.selector()
+            return lambda lowering: _inlining(select, _method(lowering, name), lowering.enclose)
+    make = _reducer_maker(plan, True)
+    return lambda lowering: make(_method(lowering, name))
+
+
+def _method(lowering, name: str):
+    return getattr(lowering, name, None) or _missing(name)
 
 
 def _inlining(select: Callback, method, enclose) -> Callback:
