@@ -455,7 +455,7 @@ class Lowering:
     def number(self, children, entries):
         text = children[0].value
         value = number_value(text)
-        span = self.span(entries)
+        span = self.token_span(children[0])       # the rule's text is the one token
         if isinstance(value, float) and math.isinf(value):
             self.report(error(BAD_NUMBER, f"numeric literal {text} is out of range", span))
         return nodes.NumLiteral(value, text, span)
