@@ -142,8 +142,9 @@ def stage_times(text: str, runs: int) -> None:
             stream.write(text)
         reading = min(cpu_seconds(lambda: read_source(path)) for _ in range(runs))
     scanner = parser._scanner()
-    tokens = scanner.scan(text, CompiledToken)
-    scanning = min(cpu_seconds(lambda: scanner.scan(text, CompiledToken)) for _ in range(runs))
+    tokens = list(scanner.scan(text, CompiledToken))
+    scanning = min(cpu_seconds(lambda: list(scanner.scan(text, CompiledToken)))
+                   for _ in range(runs))
     table = rapid_parser().parser.parser._parse_table
     ignored = {rule: _ignore for rule in parser._reduced_rules()}
 

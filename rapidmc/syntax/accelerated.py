@@ -18,7 +18,7 @@ lark_cython installed, ``AVAILABLE`` is False and Lark's driver does all.
 from __future__ import annotations
 
 import functools
-from typing import Callable, Iterator
+from typing import Callable, Iterable, Iterator
 
 from lark.parsers.lalr_analysis import Reduce
 
@@ -81,7 +81,7 @@ class TokenFeed:
     ``on_too_deep`` when the parser stack is deeper than ``max_depth`` as a
     token is read."""
 
-    def __init__(self, tokens: list, max_depth: int, on_too_deep: Callable[[], None]):
+    def __init__(self, tokens: Iterable, max_depth: int, on_too_deep: Callable[[], None]):
         self.tokens, self.max_depth, self.on_too_deep = tokens, max_depth, on_too_deep
         self.previous = None
         self.next_token = self.first_token

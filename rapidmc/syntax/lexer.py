@@ -13,6 +13,9 @@ name, a character no token starts with, an overlap such as ``<`` against
 ``<EXP>`` -- the contextual lexer reads that one token, so every token and
 every lexical error is exactly Lark's.
 
+This lexer feeds Lark's own driver, which parses a text the fast path
+(``scanner`` and the compiled loop, see ``parser``) fails on.
+
 The lexer also remembers the last token the parser has shifted: when the
 parser reduces a rule, that token ends the rule's text (see ``lower``).
 """

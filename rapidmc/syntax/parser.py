@@ -1,8 +1,10 @@
 """RAPID text to ``rapidmc.ast`` in one pass; Lark's errors become rapidmc diagnostics.
 
 The grammar (``rapidmc.grammar/rapid.lark``) is compiled by Lark once per
-process (Lark caches the LALR tables on disk).  Parsing feeds Lark's LALR
-parser from ``RapidLexer`` and builds AST nodes as rules are reduced
+process (Lark caches the LALR tables on disk).  Parsing runs the LALR
+tables on tokens -- first lark_cython's compiled loop on the whole text's
+tokens from ``scanner``, and for a text that fails there Lark's own driver
+fed by ``RapidLexer`` -- and builds AST nodes as rules are reduced
 (``reductions``, ``lower``): no parse tree is built.
 
 Example::
