@@ -37,6 +37,7 @@ def assert_same_parse(text: str, filename: str) -> None:
     compiled = _outcome(text, filename, True)
     if lark[0] == "ast":
         assert compiled == lark
+        assert _every_field(compiled) == _every_field(lark)   # names' spans too
         # lark_cython's tokens compare equal to strings: none may end up in the AST
         assert not _tokens_in(compiled)
     else:
@@ -63,6 +64,16 @@ def _reported(text: str, filename: str):
         return parser.parse_modules(text, filename)
     except UserError as problem:
         return [str(d) for d in problem.diagnostics]
+
+
+def _every_field(value):
+    """The value with every field of every node, those equality leaves out included."""
+    if dataclasses.is_dataclass(value):
+        return (type(value).__name__,
+                *(_every_field(getattr(value, f.name)) for f in dataclasses.fields(value)))
+    if isinstance(value, (tuple, list)):
+        return tuple(_every_field(item) for item in value)
+    return value
 
 
 def _tokens_in(value) -> list:
