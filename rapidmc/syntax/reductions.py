@@ -148,7 +148,7 @@ def _callback_maker(rule: Rule) -> Callable[[object], Callback]:
     name = rule.alias or rule.options.template_source or rule.origin.name
     plan = ChildPlan.of(rule)
     if name.startswith("_"):
-        reduce = plan.function(None)
+        reduce = _passing_on(plan) or plan.function(None)
         return lambda lowering: reduce
     if rule.options.expand1 and not rule.alias:
         if plan.is_identity() and plan.size == 1:
@@ -158,6 +158,16 @@ def _callback_maker(rule: Rule) -> Callable[[object], Callback]:
             return lambda lowering: _inlining(select, _method(lowering, name), lowering.enclose)
     make = _reducer_maker(plan, True)
     return lambda lowering: make(_method(lowering, name))
+
+
+def _passing_on(plan: ChildPlan) -> Optional[Callback]:
+    """A built-in function for a ``_rule`` whose children are its stack slice (a copy of
+    it serves) or one spliced entry, or None."""
+    if plan.is_identity():
+        return list
+    if len(plan.kept) == 1 and plan.kept[0][1:] == (True, 0) and not plan.nones_after:
+        return itemgetter(plan.kept[0][0])
+    return None
 
 
 def _method(lowering, name: str):
