@@ -32,6 +32,7 @@ from .. import ast
 from ..diagnostics import (BAD_NUMBER, BAD_STRING, IDENTIFIER_TOO_LONG, SYNTAX, UNSUPPORTED,
                            UserError, error)
 from .construct import nodes
+from .reductions import children_only
 from .tokens import TOKEN_TYPES
 
 MAX_IDENTIFIER_LENGTH = 32
@@ -203,9 +204,10 @@ class Lowering:
         local, base, name = children
         return nodes.AliasDefinition(local is not None, base, self.name(name), self.span(entries))
 
-    def type_ref(self, children, entries):
-        (name,) = children
-        return nodes.TypeRef(self.name(name), self.span(entries))
+    @children_only
+    def type_ref(self, children, entries=None):
+        name = self.name(children[0])
+        return nodes.TypeRef(name, name.span)       # the rule's text is the name
 
     # ------------------------------------------------------ data declarations
 
@@ -427,7 +429,8 @@ class Lowering:
         operator, operand = children
         return nodes.Unary(operator.value.upper(), operand, self.span(entries))
 
-    def name_ref(self, children, entries):
+    @children_only
+    def name_ref(self, children, entries=None):
         name = self.name(children[0])
         return nodes.NameRef(name, name.span)
 
@@ -446,24 +449,33 @@ class Lowering:
     def aggregate(self, items, entries):
         return nodes.Aggregate(tuple(items), self.span(entries))
 
-    def placeholder(self, children, entries):
-        return nodes.Placeholder(children[0].value[1:-1].upper(), self.span(entries))
+    # The literals' rules: the rule's text is the one token.
 
-    def boolean(self, children, entries):
-        return nodes.BoolLiteral(children[0].value.upper() == "TRUE", self.span(entries))
+    @children_only
+    def placeholder(self, children, entries=None):
+        return nodes.Placeholder(children[0].value[1:-1].upper(), self.token_span(children[0]))
 
-    def number(self, children, entries):
-        text = children[0].value
+    @children_only
+    def boolean(self, children, entries=None):
+        return nodes.BoolLiteral(children[0].value.upper() == "TRUE",
+                                 self.token_span(children[0]))
+
+    @children_only
+    def number(self, children, entries=None):
+        token = children[0]
+        text = token.value
         value = number_value(text)
-        span = self.token_span(children[0])       # the rule's text is the one token
+        span = nodes.Span(self.filename, token.line, token.column, token.end_line,
+                          token.end_column)
         if isinstance(value, float) and math.isinf(value):
             self.report(error(BAD_NUMBER, f"numeric literal {text} is out of range", span))
         return nodes.NumLiteral(value, text, span)
 
-    def string(self, children, entries):
+    @children_only
+    def string(self, children, entries=None):
         text = children[0].value
         value = decode_string(text)
-        span = self.span(entries)
+        span = self.token_span(children[0])
         if value is None:
             self.report(error(BAD_STRING, "bad escape in string: a backslash must be followed "
                               "by another backslash or two hex digits", span))

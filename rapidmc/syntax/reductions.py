@@ -157,7 +157,20 @@ def _callback_maker(rule: Rule) -> Callable[[object], Callback]:
             select = plan.selector()
             return lambda lowering: _inlining(select, _method(lowering, name), lowering.enclose)
     make = _reducer_maker(plan, True)
+    if plan.is_identity():
+        return lambda lowering: _direct(_method(lowering, name)) or make(_method(lowering, name))
     return lambda lowering: make(_method(lowering, name))
+
+
+def children_only(method):
+    """Marks a lowering method that reads only the children (``entries`` may be left
+    out): a rule whose stack slice is its children calls it with no function between."""
+    method.children_only = True
+    return method
+
+
+def _direct(method) -> Optional[Callback]:
+    return method if getattr(method, "children_only", False) else None
 
 
 def _passing_on(plan: ChildPlan) -> Optional[Callback]:
