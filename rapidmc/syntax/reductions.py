@@ -156,10 +156,14 @@ def _callback_maker(rule: Rule) -> Callable[[object], Callback]:
         if not plan.is_identity():
             select = plan.selector()
             return lambda lowering: _inlining(select, _method(lowering, name), lowering.enclose)
-    make = _reducer_maker(plan, True)
-    if plan.is_identity():
-        return lambda lowering: _direct(_method(lowering, name)) or make(_method(lowering, name))
-    return lambda lowering: make(_method(lowering, name))
+    make, identity = _reducer_maker(plan, True), plan.is_identity()
+
+    def callback(lowering) -> Callback:
+        method = _method(lowering, name)
+        if identity and getattr(method, "children_only", False):
+            return method           # called with the stack slice, which is the children
+        return make(method)
+    return callback
 
 
 def children_only(method):
@@ -167,10 +171,6 @@ def children_only(method):
     out): a rule whose stack slice is its children calls it with no function between."""
     method.children_only = True
     return method
-
-
-def _direct(method) -> Optional[Callback]:
-    return method if getattr(method, "children_only", False) else None
 
 
 def _passing_on(plan: ChildPlan) -> Optional[Callback]:
