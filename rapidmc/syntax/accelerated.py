@@ -22,6 +22,8 @@ from typing import Callable, Iterable, Iterator
 
 from lark.parsers.lalr_analysis import Reduce
 
+from .shortcuts import with_shortcuts
+
 try:
     from lark_cython.lark_cython import _Parser as CompiledParser
 except ImportError:                     # pragma: no cover - lark_cython is a dependency
@@ -41,9 +43,10 @@ class Reduction:
 
 
 class CompiledTable:
-    """Lark's parse table with each rule replaced by its ``Reduction``."""
+    """Lark's parse table with the reductions of ``pass_through`` rules taken as
+    shortcuts (``shortcuts``) and each rule replaced by its ``Reduction``."""
 
-    def __init__(self, table):
+    def __init__(self, table, pass_through: frozenset = frozenset()):
         reductions: dict[int, Reduction] = {}
 
         def action(entry):
@@ -53,21 +56,25 @@ class CompiledTable:
             if id(argument) not in reductions:
                 reductions[id(argument)] = Reduction(argument)
             return kind, reductions[id(argument)]
+        states = with_shortcuts(table.states, pass_through.__contains__,
+                                table.end_states.values()) if pass_through else table.states
         self.states = {state: {symbol: action(entry) for symbol, entry in actions.items()}
-                       for state, actions in table.states.items()}
+                       for state, actions in states.items()}
         self.start_states, self.end_states = table.start_states, table.end_states
         self.reductions = tuple(reductions.values())
 
 
 @functools.cache
-def compiled_table(table) -> CompiledTable:
-    return CompiledTable(table)
+def compiled_table(table, pass_through: frozenset = frozenset()) -> CompiledTable:
+    return CompiledTable(table, pass_through)
 
 
-def parse(table, callbacks: dict, tokens: "TokenFeed", start: str):
+def parse(table, callbacks: dict, tokens: "TokenFeed", start: str,
+          pass_through: frozenset = frozenset()):
     """Run the compiled loop over ``table`` (Lark's), with ``callbacks`` keyed by Lark's
-    rules, on the tokens of ``tokens``."""
-    compiled = compiled_table(table)
+    rules, on the tokens of ``tokens``; the reductions of the ``pass_through`` rules,
+    whose callbacks give their one entry back, are skipped."""
+    compiled = compiled_table(table, pass_through)
     by_reduction = {reduction: callbacks[reduction.rule] for reduction in compiled.reductions}
     return CompiledParser(compiled, by_reduction).parse(tokens, start)
 

@@ -30,7 +30,7 @@ from ..diagnostics import (BAD_CHARACTER, BAD_STRING, FILE_EMPTY, PLACEHOLDER,
 from . import accelerated, recovery
 from .lexer import RapidLexer
 from .lower import Lowering
-from .reductions import rule_callbacks
+from .reductions import passes_child_on, rule_callbacks
 from .scanner import Scanner
 from .tokens import CompiledToken, describe_expected, describe_token
 
@@ -110,6 +110,12 @@ def _all_syntax_errors(text: str, filename: str, first: UnexpectedInput) -> list
             return diagnostics
 
 
+@functools.cache
+def _pass_through() -> frozenset:
+    """The rules whose reductions the compiled loop skips (``shortcuts``)."""
+    return frozenset(rule for rule in _reduced_rules() if passes_child_on(rule))
+
+
 class NotScanned(Exception):
     """The scanner cannot read the text alone: Lark's driver and ``RapidLexer`` must."""
 
@@ -133,7 +139,7 @@ def _parse(text: str, filename: str, compiled: bool = False) -> tuple[ast.Module
         if tokens is None:
             raise NotScanned(filename)
         lowering.lexer = feed = accelerated.TokenFeed(tokens, MAX_STACK_DEPTH, lowering.too_deep)
-        modules = accelerated.parse(table, callbacks, feed, START_RULE)
+        modules = accelerated.parse(table, callbacks, feed, START_RULE, _pass_through())
     else:
         lowering.lexer = lexer = RapidLexer(
             frontend.lexer_conf.terminals, frozenset(frontend.lexer_conf.ignore),

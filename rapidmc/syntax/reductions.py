@@ -145,14 +145,14 @@ def rule_callbacks(rules, lowering) -> dict[Rule, Callback]:
 @functools.cache
 def _callback_maker(rule: Rule) -> Callable[[object], Callback]:
     """What a rule's callback is, decided once: a function of the lowering giving it."""
-    name = rule.alias or rule.options.template_source or rule.origin.name
+    name = _callback_name(rule)
     plan = ChildPlan.of(rule)
+    if passes_child_on(rule):
+        return lambda lowering: _ONLY_ENTRY
     if name.startswith("_"):
         reduce = _passing_on(plan) or plan.function(None)
         return lambda lowering: reduce
     if rule.options.expand1 and not rule.alias:
-        if plan.is_identity() and plan.size == 1:
-            return lambda lowering: _ONLY_ENTRY      # a ?rule passing on its one child
         if not plan.is_identity():
             select = plan.selector()
             return lambda lowering: _inlining(select, _method(lowering, name), lowering.enclose)
@@ -164,6 +164,23 @@ def _callback_maker(rule: Rule) -> Callable[[object], Callback]:
             return method           # called with the stack slice, which is the children
         return make(method)
     return callback
+
+
+@functools.cache
+def passes_child_on(rule: Rule) -> bool:
+    """Whether the rule's callback gives its one stack entry back unchanged: a ``?rule``
+    with one child (``term: postfix``), or a ``_rule`` of one spliced child.  The
+    compiled loop may skip such reductions (``shortcuts``)."""
+    plan = ChildPlan.of(rule)
+    if plan.size != 1:
+        return False
+    if _callback_name(rule).startswith("_"):
+        return plan.kept == ((0, True, 0),) and not plan.nones_after
+    return bool(rule.options.expand1) and not rule.alias and plan.is_identity()
+
+
+def _callback_name(rule: Rule) -> str:
+    return rule.alias or rule.options.template_source or rule.origin.name
 
 
 def children_only(method):
