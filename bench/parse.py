@@ -134,7 +134,8 @@ def compare_paths(text: str, runs: int) -> None:
 def stage_times(text: str, runs: int) -> None:
     """CPU time of each stage of the fast path, best of ``runs``: reading the file,
     scanning, the compiled LALR loop alone (no-op callbacks), and the whole parse; the
-    AST construction is what the whole parse takes beyond scanning and the loop."""
+    AST construction is what the whole parse takes beyond scanning and the loop (with the
+    shortcuts the fast path takes, see ``rapidmc.syntax.shortcuts``)."""
     count = text.count("\n")
     with tempfile.TemporaryDirectory() as folder:
         path = os.path.join(folder, "bench.mod")
@@ -148,12 +149,14 @@ def stage_times(text: str, runs: int) -> None:
     table = rapid_parser().parser.parser._parse_table
     ignored = {rule: _ignore for rule in parser._reduced_rules()}
 
-    def loop_alone():
+    def loop_alone(pass_through):
         feed = accelerated.TokenFeed(tokens, parser.MAX_STACK_DEPTH, None)
-        accelerated.parse(table, ignored, feed, parser.START_RULE)
-    looping = min(cpu_seconds(loop_alone) for _ in range(runs))
+        accelerated.parse(table, ignored, feed, parser.START_RULE, pass_through)
+    looping = min(cpu_seconds(lambda: loop_alone(parser._pass_through())) for _ in range(runs))
+    unshortened = min(cpu_seconds(lambda: loop_alone(frozenset())) for _ in range(runs))
     whole = min(cpu_seconds(lambda: parse_text(text, "bench.mod")) for _ in range(runs))
     stages = [("reading", reading), ("scanning", scanning), ("LALR loop alone", looping),
+              ("  without shortcuts", unshortened),
               ("AST construction", whole - scanning - looping), ("whole parse", whole)]
     print(f"{count} lines, {len(tokens)} tokens; CPU time, best of {runs}:")
     for name, seconds in stages:
