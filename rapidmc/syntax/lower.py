@@ -364,11 +364,12 @@ class Lowering:
     def arguments(self, arguments, entries):
         return tuple(arguments)
 
-    def positional_argument(self, children, entries):
+    @children_only
+    def positional_argument(self, children, entries=None):
         (value,) = children
         # The argument's text is the expression's, unless parentheses enclose it: the
         # expression's span (equal to the one ``span`` would build) serves as it is.
-        span = self.span(entries) if id(value) in self.enclosed else value.span
+        span = self.span(entries or children) if id(value) in self.enclosed else value.span
         return nodes.Argument(ast.REQUIRED, None, value, span)
 
     def named_argument(self, children, entries):
