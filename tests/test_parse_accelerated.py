@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import dataclasses
 import random
+import sys
 from pathlib import Path
 
 import pytest
@@ -167,3 +168,28 @@ def test_mutated_programs_parse_the_same_on_both_paths():
         assert_same_parse(text, path.name)
         accepted += _outcome(text, path.name, False)[0] == "ast"
     assert accepted > MUTANTS // 10           # some mutants stay programs: both paths build
+
+
+@needs_compiled
+@pytest.mark.parametrize("opening, middle, closing, around", [
+    ("NOT ", "a", "", 490),
+    ("a + (", "a", ")", 160),
+    ("-(", "a", ")", 240),
+    ("IF a THEN ", "x := 1;", "ENDIF ", 165),
+])
+def test_nesting_limit_is_the_same_on_both_paths(opening, middle, closing, around):
+    """The parser stack is as deep with the shortcuts as without: the same depths are
+    refused (the limit lies within the swept range)."""
+    outcomes = set()
+    limit = sys.getrecursionlimit()
+    sys.setrecursionlimit(20_000)           # comparing trees 490 levels deep recurses deeply
+    try:
+        for depth in range(around - 12, around + 12):
+            nested = opening * depth + middle + closing * depth
+            statement = nested if middle.endswith(";") else f"x := {nested};"
+            text = f"MODULE m PROC p() {statement} ENDPROC ENDMODULE"
+            assert_same_parse(text, "deep.mod")
+            outcomes.add(_outcome(text, "deep.mod", False)[0])
+    finally:
+        sys.setrecursionlimit(limit)
+    assert outcomes == {"ast", "diagnostics"}
