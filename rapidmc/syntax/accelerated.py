@@ -1,19 +1,20 @@
 """Lark's LALR loop compiled (``lark_cython``): the fast path of the front end.
 
-``lark_cython`` runs the same LALR table as Lark, with the same callbacks, in
-compiled code.  Two things differ from Lark's driver: the loop asks for one
-token at a time (``next_token(parser_state)``, ``EOFError`` at the end) and
-takes only lark_cython's own ``Token`` class.  The tokens come from
-``scanner``, which reads the whole text at once (``TokenFeed`` hands them
-over).  The rules in the table are replaced by
-``Reduction`` records hashed by identity: Lark's ``Rule`` hashes and
-compares in Python, once per reduction.
+``lark_cython`` runs Lark's LALR table, with the same callbacks, in compiled
+code; the table has the reductions that only pass a child on taken as
+shortcuts (``shortcuts``).  Two things differ from Lark's driver: the loop
+asks for one token at a time (``next_token(parser_state)``, ``EOFError`` at
+the end) and takes only lark_cython's own ``Token`` class.  The tokens come
+from ``scanner``, which reads the whole text at once; ``TokenFeed`` hands
+them over.  The rules in the table are replaced by ``Reduction`` records
+hashed by identity: Lark's ``Rule`` hashes and compares in Python, once per
+reduction.
 
 Only a parse that succeeds is taken from here.  When the text has an error,
 or the scanner cannot read it, ``parser`` parses it again with Lark's own
 driver and ``RapidLexer``, so every exception and every diagnostic is
-exactly the one Lark's driver gives.  Without
-lark_cython installed, ``AVAILABLE`` is False and Lark's driver does all.
+exactly the one Lark's driver gives.  Without lark_cython installed,
+``AVAILABLE`` is False and Lark's driver does all.
 """
 from __future__ import annotations
 

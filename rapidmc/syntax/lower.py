@@ -463,11 +463,9 @@ class Lowering:
 
     @children_only
     def number(self, children, entries=None):
-        token = children[0]
-        text = token.value
+        text = children[0].value
         value = number_value(text)
-        span = nodes.Span(self.filename, token.line, token.column, token.end_line,
-                          token.end_column)
+        span = self.token_span(children[0])
         if isinstance(value, float) and math.isinf(value):
             self.report(error(BAD_NUMBER, f"numeric literal {text} is out of range", span))
         return nodes.NumLiteral(value, text, span)
