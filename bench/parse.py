@@ -1,43 +1,69 @@
 """Parsing speed: generate a large RAPID module and report lines per second.
 
-Usage: python bench/parse.py [LINES] [RUNS]   (default 100000 lines, 3 runs)
+Usage: python bench/parse.py [--stages] [LINES] [RUNS]   (default 100000 lines, 3 runs)
 
 The generated code is typical robot code: declarations with multi-line
 aggregates, moves with optional arguments, IF/FOR/WHILE/TEST, assignments
 with arithmetic and logic.  The figure covers the whole front end (lexing,
 LALR parsing, lowering to rapidmc.ast); the one-off parser construction is
-timed separately.  The module is parsed RUNS times, alternately with
-lark_cython's compiled LALR loop (the default when it is installed) and with
-Lark's own driver, so that both figures come from the same process under the
-same load (the machine is shared, single runs vary by 20% and more); the
-best of the runs is the figure to quote.
+timed separately.  The module is parsed RUNS times, alternately on the fast
+path (the scanner and lark_cython's compiled LALR loop, the default when
+lark_cython is installed) and with Lark's own driver, so that both figures
+come from the same process under the same load; the figures are processor
+time (the machine is shared: wall time varies by 20% and more), and the
+best of the runs is the one to quote.  ``--stages`` times each stage of the
+fast path instead.
 
 Figures on the project machine (2 cores, loaded), median of 3 runs of
 100,000 lines: 8,100 lines/s with a Lark parse tree lowered by a
 Transformer afterwards; 24,600 lines/s with the one-pass front end (own
-lexer, AST built on reduction, flat expression rules).
-
-Same process, best of 8 alternating runs of 20,000 lines through
-``parse_text``: the front end before lark_cython (commit 766b20b) 27,200
-lines/s; now 33,400 with Lark's driver and 42,000 with lark_cython's
-compiled loop, +54%.  The gains: the compiled loop (about +25%), AST nodes
-built through their slots rather than the frozen dataclasses' ``__init__``,
-and no young garbage collection scanning the new AST after the parse.  The
-rest of the time is the lexer (about a third) and the lowering callbacks,
-both Python; cutting the unit chains expression -> sum -> term -> postfix
-would change the parser states whose expected tokens the syntax errors list.
+lexer, AST built on reduction, flat expression rules).  Same process, best
+of 8 runs of 20,000 lines: 27,200 lines/s before lark_cython (commit
+766b20b), 42,000 with its compiled loop fed by the per-token lexer.
 lark-rust 0.2.1 was measured too: its compiled loop runs only with its own
 lexer, and fed from this lexer by a Python loop it gave 42,400 lines/s
 against lark_cython's 43,900 in the same process, so it is not used.
+
+Now (issue 9), best of 5 runs of 20,000 lines, CPU time, the code before
+and after run alternately under the same load: 38,000-42,000 lines/s
+before, 57,000-63,000 after (x1.5); Lark's driver, the path of files with
+errors, 30,000 -> 34,500.  A file of five lines parses in half the time
+(the callbacks are decided once per process).  Stages, best of 5 (before:
+lexing 129 ms, LALR loop 106, AST construction 262, whole 519):
+
+    scanning            92 ms   one findall (39 ms) and a loop counting lines
+    LALR loop alone     67 ms   105 without the shortcuts (shortcuts.py)
+    AST construction   183 ms   of which building the 206,000 nodes: 62 ms
+    whole parse        350 ms   57,000 lines/s
+
+The gains: the scanner (scanner.py) against the per-token lexer; callbacks
+written per rule as straight-line code, built-in functions for rules that
+pass a child on, and lowering methods as the callbacks of one-token rules;
+nodes filled in as unfrozen drafts of the same slots (construct.py, half
+the cost per node); and the shortcut table, which skips the reductions that
+only pass a child on (term: postfix, sum: term, expression: sum: 45% of all
+reductions).
+
+100,000 lines/s is out of reach in this design: the compiled loop alone
+(67 ms), the regular expression alone (39 ms) and building the AST's
+objects alone (62 ms) take 168 ms for 20,000 lines, 120,000 lines/s,
+before any Python runs per token or per rule.  It needs the scanning and
+the AST construction compiled as well (a Cython or Rust front end that
+builds the nodes), or AST nodes cheaper to build than frozen dataclasses.
 """
 from __future__ import annotations
 
+import gc
+import os
 import statistics
 import sys
+import tempfile
 import time
 
-from rapidmc.syntax import accelerated, parse_text
+from rapidmc.source import read_source
+from rapidmc.syntax import accelerated, parse_text, parser
 from rapidmc.syntax.parser import rapid_parser
+from rapidmc.syntax.tokens import CompiledToken
 
 ROUTINE_TEMPLATE = """\
   PROC cycle{n}()
@@ -91,30 +117,91 @@ def generated_module(lines: int) -> str:
     return HEADER + "".join(routines) + "ENDMODULE\n"
 
 
-def main(argv: list[str]) -> int:
-    lines = int(argv[1]) if len(argv) > 1 else 100_000
-    runs = int(argv[2]) if len(argv) > 2 else 3
-    started = time.perf_counter()
-    rapid_parser()
-    built = time.perf_counter() - started
-    text = generated_module(lines)
+def cpu_seconds(action) -> float:
+    """The processor time ``action()`` takes (the machine is shared: wall time varies more),
+    with the cycle collector paused as ``parse_text`` pauses it."""
+    was_enabled = gc.isenabled()
+    gc.disable()
+    try:
+        started = time.process_time()
+        action()
+        return time.process_time() - started
+    finally:
+        if was_enabled:
+            gc.enable()
+        gc.collect()
+
+
+def compare_paths(text: str, runs: int) -> None:
+    """Whole front end, alternately on the fast path and on Lark's driver."""
     count = text.count("\n")
-    print(f"parser construction: {built:.2f} s")
-    loops = {"lark_cython": True, "Lark driver": False} if accelerated.AVAILABLE else {
+    loops = {"fast path": True, "Lark driver": False} if accelerated.AVAILABLE else {
         "Lark driver": False}
     speeds: dict[str, list[float]] = {name: [] for name in loops}
     for _ in range(runs):
         for name, compiled in loops.items():
             accelerated.AVAILABLE = compiled
             started = time.perf_counter()
-            parse_text(text, "bench.mod")
-            elapsed = time.perf_counter() - started
-            speeds[name].append(count / elapsed)
+            cpu = cpu_seconds(lambda: parse_text(text, "bench.mod"))
+            wall = time.perf_counter() - started
+            speeds[name].append(count / cpu)
             print(f"{name:12} parsed {count} lines ({len(text) / 1e6:.1f} MB) in "
-                  f"{elapsed:.2f} s: {count / elapsed:,.0f} lines/s")
+                  f"{cpu:.2f} s CPU ({wall:.2f} s wall): {count / cpu:,.0f} lines/s")
     for name, figures in speeds.items():
-        print(f"{name:12} best of {runs}: {max(figures):,.0f} lines/s, "
+        print(f"{name:12} best of {runs}: {max(figures):,.0f} lines/s (CPU), "
               f"median {statistics.median(figures):,.0f}")
+
+
+def stage_times(text: str, runs: int) -> None:
+    """CPU time of each stage of the fast path, best of ``runs``: reading the file,
+    scanning, the compiled LALR loop alone (no-op callbacks), and the whole parse; the
+    AST construction is what the whole parse takes beyond scanning and the loop (with the
+    shortcuts the fast path takes, see ``rapidmc.syntax.shortcuts``)."""
+    count = text.count("\n")
+    with tempfile.TemporaryDirectory() as folder:
+        path = os.path.join(folder, "bench.mod")
+        with open(path, "w", encoding="latin-1") as stream:
+            stream.write(text)
+        reading = min(cpu_seconds(lambda: read_source(path)) for _ in range(runs))
+    scanner = parser._scanner()
+    tokens = list(scanner.scan(text, CompiledToken))
+    scanning = min(cpu_seconds(lambda: list(scanner.scan(text, CompiledToken)))
+                   for _ in range(runs))
+    table = rapid_parser().parser.parser._parse_table
+    ignored = {rule: _ignore for rule in parser._reduced_rules()}
+
+    def loop_alone(pass_through):
+        feed = accelerated.TokenFeed(tokens, parser.MAX_STACK_DEPTH, None)
+        accelerated.parse(table, ignored, feed, parser.START_RULE, pass_through)
+    looping = min(cpu_seconds(lambda: loop_alone(parser._pass_through())) for _ in range(runs))
+    unshortened = min(cpu_seconds(lambda: loop_alone(frozenset())) for _ in range(runs))
+    whole = min(cpu_seconds(lambda: parse_text(text, "bench.mod")) for _ in range(runs))
+    stages = [("reading", reading), ("scanning", scanning), ("LALR loop alone", looping),
+              ("  without shortcuts", unshortened),
+              ("AST construction", whole - scanning - looping), ("whole parse", whole)]
+    print(f"{count} lines, {len(tokens)} tokens; CPU time, best of {runs}:")
+    for name, seconds in stages:
+        print(f"  {name:17} {seconds * 1000:7.1f} ms  {count / seconds:12,.0f} lines/s")
+
+
+def _ignore(entries):
+    return None
+
+
+def main(argv: list[str]) -> int:
+    stages = "--stages" in argv
+    argv = [argument for argument in argv if argument != "--stages"]
+    lines = int(argv[1]) if len(argv) > 1 else 100_000
+    runs = int(argv[2]) if len(argv) > 2 else 3
+    started = time.perf_counter()
+    rapid_parser()
+    print(f"parser construction: {time.perf_counter() - started:.2f} s")
+    text = generated_module(lines)
+    parse_text(text, "bench.mod")               # warm up (the scanner, the compiled table)
+    if stages:
+        stage_times(text, runs)
+    else:
+        compare_paths(text, runs)
     return 0
 
 

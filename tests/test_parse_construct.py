@@ -5,7 +5,7 @@ import dataclasses
 
 import pytest
 
-from rapidmc.syntax.construct import NODE_CLASSES, constructor, nodes
+from rapidmc.syntax.construct import NODE_CLASSES, _draft_class, constructor, nodes
 
 
 @pytest.mark.parametrize("name", sorted(NODE_CLASSES))
@@ -38,3 +38,12 @@ def test_classes_with_more_than_fields_keep_their_init():
         def __post_init__(self):
             raise ValueError("checked")
     assert constructor(Checked) is Checked
+
+
+@pytest.mark.parametrize("name", sorted(NODE_CLASSES))
+def test_every_node_class_is_filled_in_as_a_draft(name):
+    """The fast path (plain stores into a class of the same layout, then the class
+    assigned) is open to every AST class; the slower slot setters are a fallback."""
+    cls = NODE_CLASSES[name]
+    draft = _draft_class(cls)
+    assert draft is not None and draft.__slots__ == cls.__slots__

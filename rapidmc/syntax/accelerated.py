@@ -1,24 +1,29 @@
 """Lark's LALR loop compiled (``lark_cython``): the fast path of the front end.
 
-``lark_cython`` runs the same LALR table as Lark, with the same callbacks, in
-compiled code.  Two things differ from Lark's driver: the loop asks its
-lexer for one token at a time (``next_token(parser_state)``, ``EOFError``
-at the end) and takes only lark_cython's own ``Token`` class, which
-``RapidLexer`` makes when told to.  The rules in the table are replaced by
-``Reduction`` records hashed by identity: Lark's ``Rule`` hashes and
-compares in Python, once per reduction.
+``lark_cython`` runs Lark's LALR table, with the same callbacks, in compiled
+code; the table has the reductions that only pass a child on taken as
+shortcuts (``shortcuts``).  Two things differ from Lark's driver: the loop
+asks for one token at a time (``next_token(parser_state)``, ``EOFError`` at
+the end) and takes only lark_cython's own ``Token`` class.  The tokens come
+from ``scanner``, which reads the whole text at once; ``TokenFeed`` hands
+them over.  The rules in the table are replaced by ``Reduction`` records
+hashed by identity: Lark's ``Rule`` hashes and compares in Python, once per
+reduction.
 
 Only a parse that succeeds is taken from here.  When the text has an error,
-``parser`` parses it again with Lark's own driver, so every exception and
-every diagnostic is exactly the one Lark's driver gives.  Without
-lark_cython installed, ``AVAILABLE`` is False and Lark's driver does all.
+or the scanner cannot read it, ``parser`` parses it again with Lark's own
+driver and ``RapidLexer``, so every exception and every diagnostic is
+exactly the one Lark's driver gives.  Without lark_cython installed,
+``AVAILABLE`` is False and Lark's driver does all.
 """
 from __future__ import annotations
 
 import functools
-from typing import Callable, Iterator
+from typing import Callable, Iterable, Iterator
 
 from lark.parsers.lalr_analysis import Reduce
+
+from .shortcuts import with_shortcuts
 
 try:
     from lark_cython.lark_cython import _Parser as CompiledParser
@@ -39,9 +44,10 @@ class Reduction:
 
 
 class CompiledTable:
-    """Lark's parse table with each rule replaced by its ``Reduction``."""
+    """Lark's parse table with the reductions of ``pass_through`` rules taken as
+    shortcuts (``shortcuts``) and each rule replaced by its ``Reduction``."""
 
-    def __init__(self, table):
+    def __init__(self, table, pass_through: frozenset = frozenset()):
         reductions: dict[int, Reduction] = {}
 
         def action(entry):
@@ -51,35 +57,55 @@ class CompiledTable:
             if id(argument) not in reductions:
                 reductions[id(argument)] = Reduction(argument)
             return kind, reductions[id(argument)]
+        states = with_shortcuts(table.states, pass_through.__contains__,
+                                table.end_states.values()) if pass_through else table.states
         self.states = {state: {symbol: action(entry) for symbol, entry in actions.items()}
-                       for state, actions in table.states.items()}
+                       for state, actions in states.items()}
         self.start_states, self.end_states = table.start_states, table.end_states
         self.reductions = tuple(reductions.values())
 
 
 @functools.cache
-def compiled_table(table) -> CompiledTable:
-    return CompiledTable(table)
+def compiled_table(table, pass_through: frozenset = frozenset()) -> CompiledTable:
+    return CompiledTable(table, pass_through)
 
 
-def parse(table, callbacks: dict, tokens: Callable[[object], Iterator], start: str):
+def parse(table, callbacks: dict, tokens: "TokenFeed", start: str,
+          pass_through: frozenset = frozenset()):
     """Run the compiled loop over ``table`` (Lark's), with ``callbacks`` keyed by Lark's
-    rules; ``tokens(parser_state)`` gives the token generator (``RapidLexer.lex``), which
-    raises ``EOFError`` after the last token."""
-    compiled = compiled_table(table)
+    rules, on the tokens of ``tokens``; the reductions of the ``pass_through`` rules,
+    whose callbacks give their one entry back, are skipped."""
+    compiled = compiled_table(table, pass_through)
     by_reduction = {reduction: callbacks[reduction.rule] for reduction in compiled.reductions}
-    return CompiledParser(compiled, by_reduction).parse(TokenThread(tokens), start)
+    return CompiledParser(compiled, by_reduction).parse(tokens, start)
 
 
-class TokenThread:
-    """``next_token(parser_state)`` over a token iterator made on the first call
-    (the iterator needs the parser state, which the compiled loop creates)."""
+class TokenFeed:
+    """The tokens of a text as the compiled loop asks for them: ``next_token(parser_state)``,
+    then ``EOFError`` after the last one.
 
-    def __init__(self, tokens: Callable[[object], Iterator]):
-        self.tokens = tokens
+    Like ``RapidLexer`` it tells the last token the parser has shifted
+    (``previous``, which ends the text of the rule being reduced) and calls
+    ``on_too_deep`` when the parser stack is deeper than ``max_depth`` as a
+    token is read."""
+
+    def __init__(self, tokens: Iterable, max_depth: int, on_too_deep: Callable[[], None]):
+        self.tokens, self.max_depth, self.on_too_deep = tokens, max_depth, on_too_deep
+        self.previous = None
         self.next_token = self.first_token
 
     def first_token(self, parser_state):
-        tokens = self.tokens(parser_state)
-        self.next_token = tokens.send        # one C call per token; the value sent is unused
-        return next(tokens)
+        feed = self.feed(parser_state.state_stack)
+        self.next_token = feed.send          # one C call per token; the value sent is unused
+        return next(feed)
+
+    def feed(self, state_stack: list) -> Iterator:
+        max_depth, current = self.max_depth, None
+        for token in self.tokens:
+            if len(state_stack) > max_depth:
+                self.on_too_deep()
+            self.previous = current
+            current = token
+            yield token
+        self.previous = current
+        raise EOFError

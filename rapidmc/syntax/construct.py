@@ -4,8 +4,8 @@ The nodes of ``rapidmc.ast`` are frozen dataclasses with slots: their
 generated ``__init__`` sets each field through ``object.__setattr__``, which
 costs about a microsecond per node, and the front end builds several nodes
 per line.  ``constructor(cls)`` gives a function with the same parameters
-(names, order, defaults) that fills the slots directly through their
-descriptors: the node is the same object an ordinary call would build.
+(names, order, defaults) that fills the slots directly (see ``_draft_class``):
+the node is the same object an ordinary call would build.
 
 Example::
 
@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import dataclasses
 from types import SimpleNamespace
-from typing import Callable
+from typing import Callable, Optional
 
 from .. import ast
 
@@ -29,22 +29,42 @@ def constructor(cls: type) -> Callable:
     if (hasattr(cls, "__post_init__") or "__slots__" not in cls.__dict__
             or any(not f.init or f.default_factory is not dataclasses.MISSING for f in fields)):
         return cls
-    namespace: dict = {"__new": object.__new__, "__cls": cls}
+    draft = _draft_class(cls)
+    namespace: dict = {"__new": object.__new__, "__cls": cls, "__draft": draft}
     parameters, lines = [], []
     for number, field in enumerate(fields):
-        namespace[f"__set{number}"] = cls.__dict__[field.name].__set__
         if field.default is dataclasses.MISSING:
             parameters.append(field.name)
         else:
             namespace[f"__default{number}"] = field.default
             parameters.append(f"{field.name}=__default{number}")
-        lines.append(f"    __set{number}(node, {field.name})")
-    source = (f"def build({', '.join(parameters)}):\n    node = __new(__cls)\n"
-              + "\n".join(lines) + "\n    return node\n")
+        if draft is None:
+            namespace[f"__set{number}"] = cls.__dict__[field.name].__set__
+            lines.append(f"    __set{number}(node, {field.name})")
+        else:
+            lines.append(f"    node.{field.name} = {field.name}")
+    made = "__new(__cls)" if draft is None else "__new(__draft)"
+    finish = "" if draft is None else "    node.__class__ = __cls\n"
+    source = (f"def build({', '.join(parameters)}):\n    node = {made}\n"
+              + "\n".join(lines) + f"\n{finish}    return node\n")
     exec(source, namespace)
     build = namespace["build"]
     build.__qualname__ = build.__name__ = cls.__name__
     return build
+
+
+def _draft_class(cls: type) -> Optional[type]:
+    """A class with the slots of ``cls`` and nothing else, so not frozen: a node is
+    filled in as one of these by plain attribute stores (several times faster than
+    the slots' ``__set__``), then turned into a ``cls`` by assigning its class, which
+    Python allows between classes of the same layout.  None where it does not."""
+    draft = type(f"{cls.__name__}Draft", (), {"__slots__": cls.__dict__["__slots__"],
+                                                 "__module__": __name__})
+    try:
+        object.__new__(draft).__class__ = cls
+    except TypeError:                   # pragma: no cover - another layout, another Python
+        return None
+    return draft
 
 
 def _node_classes() -> dict[str, type]:

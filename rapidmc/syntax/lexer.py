@@ -13,6 +13,9 @@ name, a character no token starts with, an overlap such as ``<`` against
 ``<EXP>`` -- the contextual lexer reads that one token, so every token and
 every lexical error is exactly Lark's.
 
+This lexer feeds Lark's own driver, which parses a text the fast path
+(``scanner`` and the compiled loop, see ``parser``) fails on.
+
 The lexer also remembers the last token the parser has shifted: when the
 parser reduces a rule, that token ends the rule's text (see ``lower``).
 """
@@ -48,9 +51,8 @@ class RapidLexer(Lexer):
     """Tokens for Lark's LALR parser; ``previous`` is the last token shifted."""
 
     def __init__(self, terminals: list[TerminalDef], ignore: frozenset[str],
-                 contextual: ContextualLexer, max_depth: int, on_too_deep,
-                 token_type: type = ScannedToken):
-        self.keywords = _keywords(terminals)
+                 contextual: ContextualLexer, max_depth: int, on_too_deep):
+        self.keywords = keyword_spellings(terminals)
         self.pattern = _scanning_pattern(terminals, self.keywords, ignore)
         self.multiline = frozenset(t.name for t in terminals
                                    if _MAY_HOLD_NEWLINE.search(t.pattern.to_regexp()))
@@ -58,9 +60,6 @@ class RapidLexer(Lexer):
         self.max_depth = max_depth
         self.on_too_deep = on_too_deep
         self.previous: Optional[Token] = None
-        # The class of the tokens made: ``ScannedToken`` for Lark's parser, lark_cython's
-        # ``Token`` for its parser (``accelerated``); both take the same arguments.
-        self.token_type = token_type
 
     def lex(self, lexer_state: LexerState, parser_state) -> Iterator[Token]:
         text, end = lexer_state.text.text, lexer_state.text.end
@@ -68,7 +67,7 @@ class RapidLexer(Lexer):
         pos, line, line_start = counter.char_pos, counter.line, counter.line_start_pos
         states, state_stack = parser_state.parse_conf.parse_table.states, parser_state.state_stack
         keywords, multiline, match = self.keywords, self.multiline, self.pattern.match
-        make_token, max_depth = self.token_type, self.max_depth
+        max_depth = self.max_depth
         current = None
         while True:
             found = match(text, pos, end)
@@ -86,7 +85,7 @@ class RapidLexer(Lexer):
                             line += breaks
                             line_start = text.rindex("\n", pos, start) + 1
                     column = start - line_start + 1
-                    token = make_token(kind, value, start, line, column, line,
+                    token = ScannedToken(kind, value, start, line, column, line,
                                        column + stop - start, stop)
                     pos = stop
             if token is None:
@@ -103,19 +102,13 @@ class RapidLexer(Lexer):
             current = token
             yield token
         self.previous = lexer_state.last_token = current
-        if self.token_type is not ScannedToken:
-            raise EOFError                          # the end, as lark_cython's loop is told
 
     def _contextual_token(self, lexer_state: LexerState, parser_state) -> Optional[Token]:
         """The next token as Lark's contextual lexer reads it (None at the end of the text)."""
-        token = next(iter(self.contextual.lex(lexer_state, parser_state)), None)
-        if token is None or self.token_type is ScannedToken:
-            return token
-        return self.token_type(token.type, token.value, token.start_pos, token.line,
-                               token.column, token.end_line, token.end_column, token.end_pos)
+        return next(iter(self.contextual.lex(lexer_state, parser_state)), None)
 
 
-def _keywords(terminals: list[TerminalDef]) -> dict[str, str]:
+def keyword_spellings(terminals: list[TerminalDef]) -> dict[str, str]:
     """Upper-case spelling -> terminal name, for the keywords an identifier can spell."""
     identifier = next(t for t in terminals if t.name == IDENTIFIER)
     pattern = re.compile(identifier.pattern.to_regexp())
@@ -128,14 +121,19 @@ def _keywords(terminals: list[TerminalDef]) -> dict[str, str]:
     return keywords
 
 
+def ordered_terminals(terminals: list[TerminalDef],
+                      keywords: dict[str, str]) -> list[TerminalDef]:
+    """The terminals other than keywords, in the order Lark's lexers try them."""
+    keyword_names = set(keywords.values())
+    return sorted((t for t in terminals if t.name not in keyword_names),
+                  key=lambda t: (-t.priority, -t.pattern.max_width, -len(t.pattern.value), t.name))
+
+
 def _scanning_pattern(terminals: list[TerminalDef], keywords: dict[str, str],
                       ignore: frozenset[str]) -> re.Pattern:
     """Ignored text, then one token: an alternation of the terminals in the order
     Lark's lexers try them (the first alternative that matches wins)."""
-    keyword_names = set(keywords.values())
-    ordered = sorted((t for t in terminals if t.name not in keyword_names),
-                     key=lambda t: (-t.priority, -t.pattern.max_width, -len(t.pattern.value),
-                                    t.name))
+    ordered = ordered_terminals(terminals, keywords)
     skipped = "|".join(t.pattern.to_regexp() for t in ordered if t.name in ignore)
     tokens = "|".join(f"(?P<{t.name}>{t.pattern.to_regexp()})"
                       for t in ordered if t.name not in ignore)

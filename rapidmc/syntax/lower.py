@@ -32,6 +32,7 @@ from .. import ast
 from ..diagnostics import (BAD_NUMBER, BAD_STRING, IDENTIFIER_TOO_LONG, SYNTAX, UNSUPPORTED,
                            UserError, error)
 from .construct import nodes
+from .reductions import children_only
 from .tokens import TOKEN_TYPES
 
 MAX_IDENTIFIER_LENGTH = 32
@@ -81,6 +82,8 @@ def decode_string(token_text: str) -> Optional[str]:
 
 def number_value(text: str) -> int | float:
     """The value of a numeric literal: an exact int for integer literals."""
+    if text.isdecimal() and text.isascii():         # the common case: [0-9]+
+        return int(text)
     if _INTEGER_LITERAL.fullmatch(text):
         return int(text, 0) if text[:2].lower() in ("0x", "0o", "0b") else int(text)
     return float(text)
@@ -152,17 +155,22 @@ class Lowering:
         return nodes.Span(self.filename, token.line, token.column, token.end_line, token.end_column)
 
     def name(self, token: Token) -> ast.Name:
-        span = self.token_span(token)
         text = token.value
+        span = nodes.Span(self.filename, token.line, token.column, token.end_line,
+                          token.end_column)
+        key = text.upper()
+        if len(text) > MAX_IDENTIFIER_LENGTH or key in RESERVED_WORDS:
+            self.report_bad_name(text, key, span)
+        return nodes.Name(text, key, span)
+
+    def report_bad_name(self, text: str, key: str, span: ast.Span) -> None:
         if len(text) > MAX_IDENTIFIER_LENGTH:
             self.report(error(IDENTIFIER_TOO_LONG,
                               f"identifier '{text}' has {len(text)} characters; "
                               f"RAPID allows at most {MAX_IDENTIFIER_LENGTH}", span))
-        key = text.upper()
         if key in RESERVED_WORDS:
             self.report(error(SYNTAX, f"'{text}' is a reserved word and cannot be used as a "
                               "name", span))
-        return nodes.Name(text, key, span)
 
     # ---------------------------------------------------------------- modules
 
@@ -196,9 +204,10 @@ class Lowering:
         local, base, name = children
         return nodes.AliasDefinition(local is not None, base, self.name(name), self.span(entries))
 
-    def type_ref(self, children, entries):
-        (name,) = children
-        return nodes.TypeRef(self.name(name), self.span(entries))
+    @children_only
+    def type_ref(self, children, entries=None):
+        name = self.name(children[0])
+        return nodes.TypeRef(name, name.span)       # the rule's text is the name
 
     # ------------------------------------------------------ data declarations
 
@@ -355,8 +364,13 @@ class Lowering:
     def arguments(self, arguments, entries):
         return tuple(arguments)
 
-    def positional_argument(self, children, entries):
-        return nodes.Argument(ast.REQUIRED, None, children[0], self.span(entries))
+    @children_only
+    def positional_argument(self, children, entries=None):
+        (value,) = children
+        # The argument's text is the expression's, unless parentheses enclose it: the
+        # expression's span (equal to the one ``span`` would build) serves as it is.
+        span = self.span(entries or children) if id(value) in self.enclosed else value.span
+        return nodes.Argument(ast.REQUIRED, None, value, span)
 
     def named_argument(self, children, entries):
         name, value = children
@@ -416,7 +430,8 @@ class Lowering:
         operator, operand = children
         return nodes.Unary(operator.value.upper(), operand, self.span(entries))
 
-    def name_ref(self, children, entries):
+    @children_only
+    def name_ref(self, children, entries=None):
         name = self.name(children[0])
         return nodes.NameRef(name, name.span)
 
@@ -435,24 +450,31 @@ class Lowering:
     def aggregate(self, items, entries):
         return nodes.Aggregate(tuple(items), self.span(entries))
 
-    def placeholder(self, children, entries):
-        return nodes.Placeholder(children[0].value[1:-1].upper(), self.span(entries))
+    # The literals' rules: the rule's text is the one token.
 
-    def boolean(self, children, entries):
-        return nodes.BoolLiteral(children[0].value.upper() == "TRUE", self.span(entries))
+    @children_only
+    def placeholder(self, children, entries=None):
+        return nodes.Placeholder(children[0].value[1:-1].upper(), self.token_span(children[0]))
 
-    def number(self, children, entries):
+    @children_only
+    def boolean(self, children, entries=None):
+        return nodes.BoolLiteral(children[0].value.upper() == "TRUE",
+                                 self.token_span(children[0]))
+
+    @children_only
+    def number(self, children, entries=None):
         text = children[0].value
         value = number_value(text)
-        span = self.span(entries)
+        span = self.token_span(children[0])
         if isinstance(value, float) and math.isinf(value):
             self.report(error(BAD_NUMBER, f"numeric literal {text} is out of range", span))
         return nodes.NumLiteral(value, text, span)
 
-    def string(self, children, entries):
+    @children_only
+    def string(self, children, entries=None):
         text = children[0].value
         value = decode_string(text)
-        span = self.span(entries)
+        span = self.token_span(children[0])
         if value is None:
             self.report(error(BAD_STRING, "bad escape in string: a backslash must be followed "
                               "by another backslash or two hex digits", span))

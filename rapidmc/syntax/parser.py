@@ -1,8 +1,10 @@
 """RAPID text to ``rapidmc.ast`` in one pass; Lark's errors become rapidmc diagnostics.
 
 The grammar (``rapidmc.grammar/rapid.lark``) is compiled by Lark once per
-process (Lark caches the LALR tables on disk).  Parsing feeds Lark's LALR
-parser from ``RapidLexer`` and builds AST nodes as rules are reduced
+process (Lark caches the LALR tables on disk).  Parsing runs the LALR
+tables on tokens -- first lark_cython's compiled loop on the whole text's
+tokens from ``scanner``, and for a text that fails there Lark's own driver
+fed by ``RapidLexer`` -- and builds AST nodes as rules are reduced
 (``reductions``, ``lower``): no parse tree is built.
 
 Example::
@@ -26,9 +28,10 @@ from ..ast import Span
 from ..diagnostics import (BAD_CHARACTER, BAD_STRING, FILE_EMPTY, PLACEHOLDER,
                            SYNTAX, UNEXPECTED_EOF, UserError, error)
 from . import accelerated, recovery
-from .lexer import RapidLexer, ScannedToken
+from .lexer import RapidLexer
 from .lower import Lowering
-from .reductions import rule_callbacks
+from .reductions import passes_child_on, rule_callbacks
+from .scanner import Scanner
 from .tokens import CompiledToken, describe_expected, describe_token
 
 PLACEHOLDER_MEANINGS = {
@@ -73,14 +76,14 @@ def parse_modules(text: str, filename: str) -> tuple[ast.Module, ...]:
     is blanked out and the file parsed again, so that one run reports the
     errors of the other statements too (``recovery``).
 
-    The compiled LALR loop (``accelerated``) parses first when it is
-    installed; a text it fails on is parsed again by Lark's own driver,
-    whose exceptions the diagnostics are made from.
+    The scanner and the compiled LALR loop (``accelerated``) parse first
+    when lark_cython is installed; a text they fail on is parsed again by
+    Lark's own driver, whose exceptions the diagnostics are made from.
     """
     if accelerated.AVAILABLE:
         try:
             return _parse(text, filename, compiled=True)
-        except (UnexpectedInput, UserError):
+        except (UnexpectedInput, UserError, NotScanned):
             pass
     try:
         return _parse(text, filename)
@@ -107,23 +110,41 @@ def _all_syntax_errors(text: str, filename: str, first: UnexpectedInput) -> list
             return diagnostics
 
 
+@functools.cache
+def _pass_through() -> frozenset:
+    """The rules whose reductions the compiled loop skips (``shortcuts``)."""
+    return frozenset(rule for rule in _reduced_rules() if passes_child_on(rule))
+
+
+class NotScanned(Exception):
+    """The scanner cannot read the text alone: Lark's driver and ``RapidLexer`` must."""
+
+
+@functools.cache
+def _scanner() -> Scanner:
+    lexer_conf = rapid_parser().parser.lexer_conf
+    return Scanner(lexer_conf.terminals, frozenset(lexer_conf.ignore))
+
+
 def _parse(text: str, filename: str, compiled: bool = False) -> tuple[ast.Module, ...]:
-    """Parse with Lark's driver, or with lark_cython's compiled loop when ``compiled``."""
+    """Parse with Lark's driver, or with the scanner and lark_cython's compiled loop when
+    ``compiled`` (``NotScanned`` when the scanner cannot read the text)."""
     lark = rapid_parser()
     frontend = lark.parser
-    lowering = Lowering(filename, None)
-    lexer = RapidLexer(frontend.lexer_conf.terminals, frozenset(frontend.lexer_conf.ignore),
-                       frontend.lexer, MAX_STACK_DEPTH, lowering.too_deep,
-                       CompiledToken if compiled else ScannedToken)
-    lowering.lexer = lexer
-    callbacks = rule_callbacks(_reduced_rules(), lowering)
-    lexer_state = LexerState(TextSlice.cast_from(text))
     table = frontend.parser._parse_table
+    lowering = Lowering(filename, None)
+    callbacks = rule_callbacks(_reduced_rules(), lowering)
     if compiled:
-        modules = accelerated.parse(table, callbacks,
-                                    lambda parser_state: lexer.lex(lexer_state, parser_state),
-                                    START_RULE)
+        tokens = _scanner().scan(text, CompiledToken)
+        if tokens is None:
+            raise NotScanned(filename)
+        lowering.lexer = feed = accelerated.TokenFeed(tokens, MAX_STACK_DEPTH, lowering.too_deep)
+        modules = accelerated.parse(table, callbacks, feed, START_RULE, _pass_through())
     else:
+        lowering.lexer = lexer = RapidLexer(
+            frontend.lexer_conf.terminals, frozenset(frontend.lexer_conf.ignore),
+            frontend.lexer, MAX_STACK_DEPTH, lowering.too_deep)
+        lexer_state = LexerState(TextSlice.cast_from(text))
         modules = _Parser(table, callbacks).parse(LexerThread(lexer, lexer_state), START_RULE)
     if lowering.problem is not None:
         raise lowering.problem

@@ -19,9 +19,13 @@ from __future__ import annotations
 
 import functools
 from dataclasses import dataclass
+from operator import itemgetter
 from typing import Callable, Optional
 
 from lark.grammar import Rule
+
+# The callback of a rule that passes on its only child: the one entry of its stack slice.
+_ONLY_ENTRY = itemgetter(0)
 
 Callback = Callable[[list], object]
 
@@ -55,34 +59,68 @@ class ChildPlan:
                 pending = 0
         return ChildPlan(len(expansion), tuple(kept), pending + nones[len(expansion)])
 
+    def is_identity(self) -> bool:
+        """Whether the stack slice is the children as it stands."""
+        return (not self.nones_after and [(index, False, 0) for index in range(self.size)]
+                == list(self.kept))
+
     def selector(self) -> Optional[Callback]:
         """A function from stack slice to children; None when the slice is the children."""
-        plain = not self.nones_after and not any(splice or nones for _, splice, nones in self.kept)
-        if plain:
-            indices = [index for index, _, _ in self.kept]
-            if indices == list(range(self.size)):
-                return None
-            if len(indices) == 1:
-                (only,) = indices
-                return lambda entries: [entries[only]]
-            return lambda entries: [entries[index] for index in indices]
-        kept, nones_after = self.kept, self.nones_after
+        return None if self.is_identity() else self.function(None)
 
-        def select(entries: list) -> list:
-            children: list = []
-            for index, splice, nones in kept:
-                if nones:
-                    children += [None] * nones
-                if not splice:
-                    children.append(entries[index])
-                elif children:
-                    children += entries[index]
-                else:
-                    children = entries[index]   # a left-recursive list grows in place
-            if nones_after:
-                children += [None] * nones_after
-            return children
-        return select
+    def function(self, method) -> Callback:
+        """A function of the stack slice giving the children, or with ``method`` the
+        result of ``method(children, entries)``."""
+        return _reducer_maker(self, method is not None)(method)
+
+    def reducer_source(self, calls_method: bool) -> str:
+        """The source of ``make(method)``, which gives the function of the stack slice:
+        straight-line code written for this plan, so that nothing loops over the plan
+        once per reduction."""
+        lines = self.children_source() if not self.is_identity() else ["children = entries"]
+        result = "method(children, entries)" if calls_method else "children"
+        body = "\n        ".join(lines)
+        return (f"def make(method):\n    def reduce(entries):\n        {body}\n"
+                f"        return {result}\n    return reduce\n")
+
+    def children_source(self) -> list[str]:
+        """Statements that set ``children`` as Lark's tree builder would (a spliced
+        ``_rule`` list that comes first is extended in place, so that a left-recursive
+        list grows without being copied)."""
+        parts: list[tuple[str, int]] = []          # ("one", index), ("splice", index), ("none", 0)
+        for index, splice, nones in self.kept:
+            parts += [("none", 0)] * nones
+            parts.append(("splice" if splice else "one", index))
+        parts += [("none", 0)] * self.nones_after
+        lines: list[str] = []
+        pending: list[str] = []                    # single children not yet added
+
+        def flush():
+            if not lines:
+                lines.append(f"children = [{', '.join(pending)}]")
+            elif len(pending) == 1:
+                lines.append(f"children.append({pending[0]})")
+            elif pending:
+                lines.append(f"children += [{', '.join(pending)}]")
+            pending.clear()
+        for kind, index in parts:
+            if kind != "splice":
+                pending.append("None" if kind == "none" else f"entries[{index}]")
+            elif not lines and not pending:
+                lines.append(f"children = entries[{index}]")
+            else:
+                flush()
+                lines.append(f"children += entries[{index}]")
+        if pending or not lines:
+            flush()
+        return lines
+
+
+@functools.cache
+def _reducer_maker(plan: ChildPlan, calls_method: bool) -> Callable:
+    namespace: dict = {}
+    exec(plan.reducer_source(calls_method), namespace)
+    return namespace["make"]
 
 
 def _nones_per_gap(empty_indices: list[bool], length: int) -> list[int]:
@@ -101,33 +139,72 @@ def rule_callbacks(rules, lowering) -> dict[Rule, Callback]:
     around it (a parenthesised expression), since the enclosing text counts
     for the positions of the rules above.
     """
-    return {rule: _callback(rule, lowering) for rule in rules}
+    return {rule: _callback_maker(rule)(lowering) for rule in rules}
 
 
 @functools.cache
-def _selector(rule: Rule) -> Optional[Callback]:
-    return ChildPlan.of(rule).selector()
-
-
-def _callback(rule: Rule, lowering) -> Callback:
-    name = rule.alias or rule.options.template_source or rule.origin.name
-    select = _selector(rule)
+def _callback_maker(rule: Rule) -> Callable[[object], Callback]:
+    """What a rule's callback is, decided once: a function of the lowering giving it."""
+    name = _callback_name(rule)
+    plan = ChildPlan.of(rule)
+    if passes_child_on(rule):
+        return lambda lowering: _ONLY_ENTRY
     if name.startswith("_"):
-        return select or _same
-    method = getattr(lowering, name, None) or _missing(name)
+        reduce = _passing_on(plan) or plan.function(None)
+        return lambda lowering: reduce
     if rule.options.expand1 and not rule.alias:
-        return _inlining(select, method, lowering.enclose)
-    if select is None:
-        return lambda entries: method(entries, entries)
-    return lambda entries: method(select(entries), entries)
+        if not plan.is_identity():
+            select = plan.selector()
+            return lambda lowering: _inlining(select, _method(lowering, name), lowering.enclose)
+    make, identity = _reducer_maker(plan, True), plan.is_identity()
+
+    def callback(lowering) -> Callback:
+        method = _method(lowering, name)
+        if identity and getattr(method, "children_only", False):
+            return method           # called with the stack slice, which is the children
+        return make(method)
+    return callback
 
 
-def _inlining(select: Optional[Callback], method, enclose) -> Callback:
-    if select is None:
-        def inline_plain(entries: list):
-            return entries[0] if len(entries) == 1 else method(entries, entries)
-        return inline_plain
+@functools.cache
+def passes_child_on(rule: Rule) -> bool:
+    """Whether the rule's callback gives its one stack entry back unchanged: a ``?rule``
+    with one child (``term: postfix``), or a ``_rule`` of one spliced child.  The
+    compiled loop may skip such reductions (``shortcuts``)."""
+    plan = ChildPlan.of(rule)
+    if plan.size != 1:
+        return False
+    if _callback_name(rule).startswith("_"):
+        return plan.kept == ((0, True, 0),) and not plan.nones_after
+    return bool(rule.options.expand1) and not rule.alias and plan.is_identity()
 
+
+def _callback_name(rule: Rule) -> str:
+    return rule.alias or rule.options.template_source or rule.origin.name
+
+
+def children_only(method):
+    """Marks a lowering method that reads only the children (``entries`` may be left
+    out): a rule whose stack slice is its children calls it with no function between."""
+    method.children_only = True
+    return method
+
+
+def _passing_on(plan: ChildPlan) -> Optional[Callback]:
+    """A built-in function for a ``_rule`` whose children are its stack slice (a copy of
+    it serves) or one spliced entry, or None."""
+    if plan.is_identity():
+        return list
+    if len(plan.kept) == 1 and plan.kept[0][1:] == (True, 0) and not plan.nones_after:
+        return itemgetter(plan.kept[0][0])
+    return None
+
+
+def _method(lowering, name: str):
+    return getattr(lowering, name, None) or _missing(name)
+
+
+def _inlining(select: Callback, method, enclose) -> Callback:
     def inline(entries: list):
         children = select(entries)
         if len(children) != 1:
@@ -137,10 +214,6 @@ def _inlining(select: Optional[Callback], method, enclose) -> Callback:
             enclose(child, entries)
         return child
     return inline
-
-
-def _same(entries: list) -> list:
-    return entries
 
 
 def _missing(name: str):

@@ -1,0 +1,100 @@
+"""The whole text to tokens at once, for the compiled LALR loop (``accelerated``).
+
+``RapidLexer`` reads one token at a time, asking the parser state whether
+it accepts each one.  This scanner reads every token of the text with one
+``findall`` (the regular expression takes most of the time); the Python
+loop that follows only counts lines and columns, and the terminal of each
+*distinct* token text is looked up once.  It does not ask the parser state:
+it reads each word that spells a keyword as that keyword.  The compiled
+loop looks every token up in the parser state, at the very point where
+``RapidLexer`` does, and fails when the state does not take it; the text is
+then parsed again by Lark's driver (``parser``).  So a parse that succeeds
+from these tokens is one in which ``RapidLexer`` reads the same tokens.
+
+The pattern is ``RapidLexer``'s (ignored text, then the terminals in Lark's
+order), with a last alternative that takes any one character: a place no
+token starts from becomes a token of no terminal, which makes ``scan``
+answer None, rather than a place ``findall`` would skip silently.
+
+Example::
+
+    >>> from rapidmc.syntax.parser import rapid_parser
+    >>> lexer_conf = rapid_parser().parser.lexer_conf
+    >>> scanner = Scanner(lexer_conf.terminals, frozenset(lexer_conf.ignore))
+    >>> [(t.type, t.value, t.line, t.column) for t in scanner.scan("x := 1;\\n  ENDIF", Token)]
+    [('NAME', 'x', 1, 1), ('_ASSIGN', ':=', 1, 3), ('NUMBER', '1', 1, 6), ('SEMICOLON', ';', 1, 7), ('_ENDIF', 'ENDIF', 2, 3)]
+    >>> scanner.scan("x := 1 $ 2;", Token) is None
+    True
+"""
+from __future__ import annotations
+
+import re
+from operator import itemgetter
+from typing import Iterator, Optional
+
+from lark import Token
+from lark.lexer import TerminalDef
+
+from .lexer import IDENTIFIER, keyword_spellings, ordered_terminals
+
+_TOKEN = itemgetter(1)
+
+
+class Scanner:
+    """Tokens of a whole text; ``scan`` answers None where ``RapidLexer`` must decide."""
+
+    def __init__(self, terminals: list[TerminalDef], ignore: frozenset[str]):
+        self.keywords = keyword_spellings(terminals)
+        ordered = ordered_terminals(terminals, self.keywords)
+        skipped = "|".join(t.pattern.to_regexp() for t in ordered if t.name in ignore)
+        tokens = [t for t in ordered if t.name not in ignore]
+        alternatives = "|".join(f"(?:{t.pattern.to_regexp()})" for t in tokens)
+        # Two groups: the ignored text, then the token (or one stray character).
+        self.pattern = re.compile(f"((?>(?:{skipped})*))({alternatives}|(?s:.))")
+        assert self.pattern.groups == 2, "a terminal's pattern has a capturing group"
+        self.terminal_of = re.compile(
+            "|".join(f"(?P<{t.name}>{t.pattern.to_regexp()})" for t in tokens)).match
+
+    def scan(self, text: str, make_token: type) -> Optional[Iterator]:
+        """The tokens of ``text`` (made by ``make_token``, called as ``Token`` is), each
+        made as it is asked for; None, before any token, when some text is no token of
+        the grammar."""
+        pieces = self.pattern.findall(text)
+        terminal = self.terminals(set(map(_TOKEN, pieces)))
+        if terminal is None:
+            return None
+        pieces.reverse()        # taken from the end: each piece is freed once its token is made
+        return _tokens(pieces, terminal, make_token)
+
+    def terminals(self, values: set[str]) -> Optional[dict[str, str]]:
+        """Token text -> terminal, or None when a text is no token or spans lines."""
+        terminal = {}
+        for value in values:
+            found = self.terminal_of(value)
+            if found is None or found.end() != len(value) or "\n" in value:
+                return None
+            kind = found.lastgroup
+            if kind == IDENTIFIER:
+                kind = self.keywords.get(value.upper(), IDENTIFIER)
+            terminal[value] = kind
+        return terminal
+
+
+def _tokens(pieces: list[tuple[str, str]], terminal: dict[str, str],
+            make_token: type) -> Iterator:
+    """The tokens of ``pieces`` (ignored text and token text, last piece first), with
+    their lines and columns counted (Lark counts lines at \\n only)."""
+    take = pieces.pop
+    position, line, line_start = 0, 1, 0
+    for _ in range(len(pieces)):
+        skipped, value = take()
+        if skipped:
+            if "\n" in skipped:
+                line += skipped.count("\n")
+                line_start = position + skipped.rindex("\n") + 1
+            position += len(skipped)
+        end = position + len(value)
+        column = position - line_start + 1
+        yield make_token(terminal[value], value, position, line, column, line,
+                         column + end - position, end)
+        position = end
