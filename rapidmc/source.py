@@ -3,8 +3,7 @@
 A file is refused (with its own diagnostic code) when it does not exist, is
 a directory, cannot be read, is larger than ``MAX_FILE_BYTES`` (8 MiB: well
 above hand-written modules, some 150,000 lines; the parser manages some
-25,000 lines a second), is an
-encrypted module (first byte 0xF0-0xFF), or is binary (NUL bytes or many
+60,000 lines a second), is an encrypted module (first byte 0xF0-0xFF), or is binary (NUL bytes or many
 control characters).  A ``.pgf`` program file is an XML list of
 ``<Module>name.mod</Module>`` entries, relative to the ``.pgf`` itself; it
 stands for those modules.
