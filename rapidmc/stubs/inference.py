@@ -109,6 +109,10 @@ class Inference:
         if isinstance(expr, ast.NameRef) and self.undeclared_data(expr.name):
             missing = self.note(expr.name, DATA, evidence)
             self.changed |= missing.learn(info, evidence)
+            if info is not None and info.rank and not missing.dims and missing.type is not None \
+                    and missing.type.key == info.key:     # an array argument (``tasks{*}``)
+                missing.dims = [1] * info.rank
+                self.changed = True
         elif isinstance(expr, ast.Index) and isinstance(expr.base, ast.NameRef) \
                 and self.undeclared_data(expr.base.name):
             missing = self.note(expr.base.name, DATA, evidence)
