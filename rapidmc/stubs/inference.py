@@ -60,6 +60,7 @@ class Missing:
     fields: dict = field(default_factory=dict)          # a missing RECORD: component -> type
     sizes_array: bool = False                           # used as an array dimension
     assigned: bool = False
+    array_argument: bool = False                        # dims from an array parameter
 
     def learn(self, info: Optional[TypeInfo], evidence: str) -> bool:
         """Take ``info`` as the type if none is known yet; whether anything changed."""
@@ -112,6 +113,7 @@ class Inference:
             if info is not None and info.rank and not missing.dims and missing.type is not None \
                     and missing.type.key == info.key:     # an array argument (``tasks{*}``)
                 missing.dims = [1] * info.rank
+                missing.array_argument = True
                 self.changed = True
         elif isinstance(expr, ast.Index) and isinstance(expr.base, ast.NameRef) \
                 and self.undeclared_data(expr.base.name):

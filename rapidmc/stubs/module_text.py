@@ -148,7 +148,8 @@ class StubWriter:
             return None
         if sizes:
             value = array_literal(value, sizes)
-            notes.append(f"size: the largest constant index used, at least {MIN_ARRAY_SIZE}")
+            notes.append(f"an array argument: size {MIN_ARRAY_SIZE} assumed" if item.array_argument
+                         else f"size: the largest constant index used, at least {MIN_ARRAY_SIZE}")
         if item.sizes_array:
             value = str(MIN_ARRAY_SIZE)
             notes.append(f"an array size: {MIN_ARRAY_SIZE} assumed")
