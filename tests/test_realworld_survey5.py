@@ -16,26 +16,12 @@ RAPID code surveyed, one per cause of a program that did not reach a verdict.
 """
 from __future__ import annotations
 
-import contextlib
-import io
 from pathlib import Path
 
-from rapidmc.cli import main
+from tests.test_realworld_survey4 import cli, verdicts
 
 HERE = Path(__file__).resolve().parent / "realworld" / "survey5"
 BACKUP = HERE / "twin_backup"
-
-
-def cli(*argv) -> tuple[int, str, str]:
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = main([str(a) for a in argv])
-    return code, out.getvalue(), err.getvalue()
-
-
-def verdicts(out: str) -> dict[str, str]:
-    return {line.split(":")[0]: line.split(": ")[1].split()[0]
-            for line in out.splitlines() if ": " in line and not line.startswith(" ")}
 
 
 def stubs_for(program: Path, tmp_path: Path) -> tuple[int, str]:
