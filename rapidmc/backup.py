@@ -40,7 +40,7 @@ def is_backup(path: Path) -> bool:
 
 def expand_backup(path: Path, task: Optional[str] = None) -> tuple[list[str], Optional[str]]:
     """The module files of one task of the backup at ``path``, and its EIO.cfg (if any)."""
-    tasks = sorted(p for p in (path / "RAPID").iterdir() if p.is_dir())
+    tasks = _task_folders(path)
     if not tasks:
         raise error(PROGRAM_FILE, f"backup '{path}' has no task folder under RAPID/")
     chosen = _choose_task(path, tasks, task)
@@ -55,6 +55,11 @@ def expand_backup(path: Path, task: Optional[str] = None) -> tuple[list[str], Op
     syspar = _child(path, "SYSPAR")
     eio = _child(syspar, "EIO.cfg") if syspar is not None else None
     return modules, str(eio) if eio is not None else None
+
+
+def _task_folders(path: Path) -> list[Path]:
+    """The task folders under RAPID/, in name order (TASK1, TASK2 ...)."""
+    return sorted(p for p in (path / "RAPID").iterdir() if p.is_dir())
 
 
 def _child(directory: Path, name: str) -> Optional[Path]:
@@ -166,7 +171,10 @@ def resolve_program_files(args) -> ProgramFiles:
     for name in args.files:
         path = Path(name)
         if is_backup(path):
-            modules, backup_eio = expand_backup(path, task)
+            chosen = task
+            if chosen is None and getattr(args, "all_tasks", False):
+                chosen = _task_folders(path)[0].name if _task_folders(path) else None
+            modules, backup_eio = expand_backup(path, chosen)
             paths.extend(modules)
             if getattr(args, "all_tasks", False):
                 tasks.extend(other_tasks(path, modules))
@@ -191,7 +199,7 @@ def load_tasks(files: ProgramFiles) -> list:
 def other_tasks(path: Path, main_modules: list[str]) -> list[tuple[str, list[str]]]:
     """The backup's tasks other than the one whose modules are ``main_modules``."""
     result = []
-    for task in sorted(p for p in (path / "RAPID").iterdir() if p.is_dir()):
+    for task in _task_folders(path):
         modules, _ = expand_backup(path, task.name)
         if modules != main_modules:
             result.append((task.name, modules))

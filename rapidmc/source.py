@@ -1,4 +1,4 @@
-"""Reading RAPID source files: Latin-1 text, with every failure a diagnostic.
+"""Reading RAPID source files: Latin-1 or UTF-8 text, with every failure a diagnostic.
 
 A file is refused (with its own diagnostic code) when it does not exist, is
 a directory, cannot be read, is larger than ``MAX_FILE_BYTES`` (8 MiB: well
@@ -58,7 +58,10 @@ def read_bytes(path: str) -> bytes:
 
 
 def decode_source(data: bytes, path: str) -> str:
-    """Bytes to text (Latin-1; UTF-8 when the file starts with a UTF-8 BOM)."""
+    """Bytes to text: Latin-1 (RobotWare's ISO 8859-1), or UTF-8 when the file starts
+    with a UTF-8 BOM or, without one, is valid UTF-8 with some non-ASCII character
+    (files of RobotWare 7 and of today's editors; Latin-1 text with accented letters
+    is practically never valid UTF-8)."""
     if not data.strip():
         raise error(FILE_EMPTY, f"'{path}' is empty")
     if data[0] >= 0xF0:
@@ -70,6 +73,11 @@ def decode_source(data: bytes, path: str) -> str:
             return data[len(UTF8_BOM):].decode("utf-8")
         except UnicodeDecodeError:
             return data[len(UTF8_BOM):].decode("latin-1")
+    if not data.isascii():
+        try:
+            return data.decode("utf-8")
+        except UnicodeDecodeError:
+            pass
     return data.decode("latin-1")
 
 

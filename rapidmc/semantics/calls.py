@@ -250,6 +250,7 @@ def signal_designator(compiler: ExpressionCompiler, expr: ast.Expr,
                 raise error(TYPE_MISMATCH, f"'{expr.name.text}' is a {kind} signal, a "
                             f"{signal_type.name} is required", expr.span)
             index = symbol.slot
+            compiler.linker.note_signal_named(index)
             return lambda m: index
         if not (isinstance(symbol.type, RapidType) and symbol.type.kind == SEMI_VALUE):
             raise error(TYPE_MISMATCH, f"'{expr.name.text}' is {symbol.type}, not a signal",

@@ -164,6 +164,7 @@ class ExpressionCompiler:
         rapid_type = symbol.type
         if kind == SIGNAL:
             self.note_io_read()
+            self.linker.note_signal_named(slot)
             return Compiled(lambda m: m.io[slot], NUM)
         is_signal = isinstance(rapid_type, RapidType) and rapid_type.kind == SEMI_VALUE
         if is_signal:

@@ -42,6 +42,9 @@ class Linker:
         self.routines: list[P.Routine] = []
         self.globals: list[P.GlobalData] = []
         self.signals: list[P.Signal] = []
+        # signals the code names (read, written, passed, aliased); None once an AliasIO
+        # names one at run time (any signal may then be read)
+        self.named_signals: Optional[set] = set()
         self.signal_by_key: dict[str, P.Signal] = {}
         self.system = Scope()
         self.namespaces: dict[int, Scope] = {}
@@ -184,6 +187,13 @@ class Linker:
         return symbol
 
     # ---------------------------------------------------------------- signals
+    def note_signal_named(self, index: Optional[int]) -> None:
+        """The code names signal ``index`` (None: a signal named only at run time)."""
+        if index is None:
+            self.named_signals = None
+        elif self.named_signals is not None:
+            self.named_signals.add(index)
+
     def physical_signal(self, name: str, kind: str, span=None, driven: bool = False) -> P.Signal:
         key = name.upper()
         signal = self.signal_by_key.get(key)
@@ -243,6 +253,8 @@ class Linker:
         self.errors.raise_if_any()
         linked = P.Program(self.routines, self.globals, self.signals, entry_index,
                            options=self.options, signal_index=self.signal_by_key)
+        linked.named_signals = (None if self.named_signals is None
+                                else frozenset(self.named_signals))
         linked.task_entries = task_entries
         linked.task_names = ("main task",) + tuple(task.name for _, task in task_namespaces)
         if environment is not None and environment.modules:

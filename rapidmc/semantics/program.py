@@ -137,6 +137,8 @@ class Program:
     environment_reads_io: bool = False                     # some environment code reads signals
     task_entries: tuple = ()                               # entry routines of further tasks
     task_names: tuple = ("main task",)                     # one name per task, main task first
+    # indices of the signals the code names; None: unknown (AliasIO of a computed name)
+    named_signals: Optional[frozenset] = None
 
     def signal(self, key: str) -> Optional[Signal]:
         return self.signal_index.get(key)

@@ -60,6 +60,7 @@ class Missing:
     fields: dict = field(default_factory=dict)          # a missing RECORD: component -> type
     sizes_array: bool = False                           # used as an array dimension
     assigned: bool = False
+    array_argument: bool = False                        # dims from an array parameter
 
     def learn(self, info: Optional[TypeInfo], evidence: str) -> bool:
         """Take ``info`` as the type if none is known yet; whether anything changed."""
@@ -109,6 +110,11 @@ class Inference:
         if isinstance(expr, ast.NameRef) and self.undeclared_data(expr.name):
             missing = self.note(expr.name, DATA, evidence)
             self.changed |= missing.learn(info, evidence)
+            if info is not None and info.rank and not missing.dims and missing.type is not None \
+                    and missing.type.key == info.key:     # an array argument (``tasks{*}``)
+                missing.dims = [1] * info.rank
+                missing.array_argument = True
+                self.changed = True
         elif isinstance(expr, ast.Index) and isinstance(expr.base, ast.NameRef) \
                 and self.undeclared_data(expr.base.name):
             missing = self.note(expr.base.name, DATA, evidence)
@@ -403,11 +409,20 @@ class Inference:
 
     def _component(self, expr: ast.Component) -> None:
         root = expr.base
-        if isinstance(root, ast.NameRef) and self.undeclared_data(root.name):
-            missing = self.note(root.name, DATA, f"component .{expr.name.text} read")
+        indexed = isinstance(root, ast.Index) and isinstance(root.base, ast.NameRef) \
+            and self.undeclared_data(root.base.name)
+        if indexed or isinstance(root, ast.NameRef) and self.undeclared_data(root.name):
+            name = root.base.name if indexed else root.name
+            missing = self.note(name, DATA, f"component .{expr.name.text} read")
+            if indexed:                  # ``traj{1}.pos``: an array of records
+                self._array_use(missing, root)
+                for index in root.indices:
+                    self.expect(index, NUM, "array index")
+                    self.expression(index)
             if expr.name.text not in missing.components:
                 missing.components.append(expr.name.text)
                 self.changed = True
+            self._field(expr, None)
         else:
             self._field(expr, None)
             self.expression(root)
@@ -546,13 +561,27 @@ def _types_from_components(inference: Inference) -> bool:
     """A record whose components are read: the first record type that has them all
     (also for a record type the stubs invented: the known type replaces it)."""
     changed = _known_for_invented(inference)
-    for missing in inference.missing.values():
+    for missing in list(inference.missing.values()):
         if missing.type is None and missing.components:
             candidates = inference.names.records_with(missing.components)
+            shown = ", ".join("." + c for c in missing.components)
             if candidates:
-                shown = ", ".join("." + c for c in missing.components)
                 changed |= missing.learn(TypeInfo(candidates[0]), f"has components {shown}")
+            elif missing.kind == DATA and missing.dims:
+                changed |= _invent_element_record(inference, missing, shown)
     return changed
+
+
+def _invent_element_record(inference: Inference, missing: Missing, shown: str) -> bool:
+    """An array whose elements' components are read (``traj{1}.pos``) and that no known
+    record has all of: its elements are a RECORD the stubs declare, named
+    ``<array>_rec``, with the components the uses type (survey round 5)."""
+    invented = inference._fresh_type_name(f"{missing.name.text}_rec", missing.name.span)
+    record = inference.note(invented, TYPE, f"type of the elements of {missing.name.text}, "
+                            f"whose components {shown} no known record has; name invented")
+    record.fields.update({component: None for component in missing.components})
+    inference.invented.add(invented.key)
+    return missing.learn(TypeInfo(invented.text), f"its elements have components {shown}")
 
 
 # The optional parameters every motion instruction of ABB's and of its options has

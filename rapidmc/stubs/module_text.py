@@ -47,8 +47,14 @@ def value_text(value) -> str:
 class Neutral:
     """Neutral literals of RAPID types (predefined and the program's own records)."""
 
-    def __init__(self, names: Declarations):
+    def __init__(self, names: Declarations, records: Optional[dict] = None):
         self.names = names
+        # the RECORDs the stubs declare themselves: key -> [(component, type)]
+        self.records = records or {}
+
+    def components(self, type_name: str) -> Optional[list[tuple[str, str]]]:
+        found = self.names.components(type_name)
+        return found if found is not None else self.records.get(type_name.upper())
 
     def literal(self, type_name: str) -> Optional[str]:
         """A neutral value of the type, or None for non-value types and unknown ones."""
@@ -67,7 +73,7 @@ class Neutral:
             return "[1,0,0,0]"
         if key == "EXTJOINT":
             return "[" + ",".join([number_text(UNUSED_AXIS)] * 6) + "]"
-        components = self.names.components(type_name)
+        components = self.components(type_name)
         if not components:
             return None
         parts = [self.literal(component_type) for _, component_type in components]
@@ -103,6 +109,8 @@ class StubWriter:
         self.undeclared: list[Missing] = []
 
     def module(self, module_name: str, missing: list[Missing]) -> str:
+        self.neutral.records = {item.name.key: record_components(item)
+                                for item in missing if item.kind == TYPE}
         lines = [f"MODULE {module_name}",
                  "  ! Declarations written by 'rapidmc stubs' for the names the program uses "
                  "and no module declares.",
@@ -140,7 +148,8 @@ class StubWriter:
             return None
         if sizes:
             value = array_literal(value, sizes)
-            notes.append(f"size: the largest constant index used, at least {MIN_ARRAY_SIZE}")
+            notes.append(f"an array argument: size {MIN_ARRAY_SIZE} assumed" if item.array_argument
+                         else f"size: the largest constant index used, at least {MIN_ARRAY_SIZE}")
         if item.sizes_array:
             value = str(MIN_ARRAY_SIZE)
             notes.append(f"an array size: {MIN_ARRAY_SIZE} assumed")
@@ -174,7 +183,8 @@ class StubWriter:
     def _function(self, item: Missing) -> Optional[list[str]]:
         if item.type is None:
             return None
-        value = self.neutral.literal(item.type.name)
+        own_record = item.type.key in self.neutral.records
+        value = None if own_record else self.neutral.literal(item.type.name)
         parameters, notes = self._parameters(item)
         head = f"FUNC {item.type.name} {item.name.text}({parameters})"
         if value is None:       # no literal for it (a record the stubs declare): a local
@@ -192,9 +202,15 @@ class StubWriter:
         guessed = [name for name, info in item.fields.items() if info is None]
         notes = [f"! component types not inferred ({', '.join(guessed)}): num assumed"] \
             if guessed else []
-        components = [f"  {(info.name if info else 'num')} {name};"
-                      for name, info in item.fields.items()]
+        components = [f"  {type_name} {name};" for name, type_name in record_components(item)]
         return notes + [f"RECORD {item.name.text}"] + components + ["ENDRECORD"]
+
+
+def record_components(item: Missing) -> list[tuple[str, str]]:
+    """The components a RECORD of the stubs declares (num where the uses tell nothing)."""
+    if not item.fields:
+        return [("value", "num")]
+    return [(name, info.name if info else "num") for name, info in item.fields.items()]
 
 
 def _comment(notes: list[str]) -> str:

@@ -163,7 +163,10 @@ def _alias_io(calls, compiler, call, entry):
     source_value = compiler.value(source)
     if source_value.type is STRING:
         if source_value.is_constant:
-            linker.physical_signal(source_value.constant, kind, source.span)
+            named = linker.physical_signal(source_value.constant, kind, source.span)
+            linker.note_signal_named(named.index)
+        else:
+            linker.note_signal_named(None)
         name_fn = source_value.fn
 
         def source_index(m):

@@ -27,3 +27,8 @@ compiled("Hand_Initialize(\\num maxSpd \\num holdForce \\num phyLimit \\switch C
          modelled=NO_EFFECT)(no_effect)
 compiled("num Hand_GetActualPos()", modelled=FIXED)(fixed(0.0))
 compiled("bool Hand_IsCalibrated()", modelled=FIXED)(fixed(True))
+
+# survey round 5 (docs/realworld-survey.md): the wait for a finished finger move, called
+# after Hand_MoveTo ... \NoWait in YuMi ROS drivers; the move itself is not modelled, so
+# the wait ends at once.
+compiled("Hand_WaitMovingCompleted()", modelled=NO_EFFECT)(no_effect)
