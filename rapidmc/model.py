@@ -86,9 +86,11 @@ class RapidSystem:
         transitions = successors(self.program, state, self.config)
         project = self.project
         if project is None:
-            result = [((t.label, t.span, t.output), t.state) for t in transitions]
+            result = [((label, span, output), after)
+                      for label, span, after, output, _ in transitions]
         else:
-            result = [((t.label, t.span, t.output), project(t.state)) for t in transitions]
+            result = [((label, span, output), project(after))
+                      for label, span, after, output, _ in transitions]
         if len(self._shared) < self.shared_limit:
             self._shared[state] = result
         return result

@@ -65,10 +65,15 @@ class ScriptChooser(Chooser):
         return self.config.free_inputs if self.inputs else ()
 
     def next_script(self) -> Optional[list]:
-        script = list(self.script) + [0] * (len(self.sizes) - len(self.script))
-        for i in range(len(self.sizes) - 1, -1, -1):
-            if script[i] + 1 < self.sizes[i]:
-                return script[:i] + [script[i] + 1]
+        """The next combination: the last choice that has a next value takes it, the
+        choices before it stay, those after it start again (None: every one done)."""
+        script = self.script
+        sizes = self.sizes
+        known = len(script)
+        for i in range(len(sizes) - 1, -1, -1):
+            current = script[i] if i < known else 0
+            if current + 1 < sizes[i]:
+                return script[:i] + [0] * (i - known) + [current + 1]
         return None
 
 

@@ -21,6 +21,7 @@ from .lazy_inputs import InputView
 from .machine import Machine
 from .state import RUNNING, State, Transition
 
+_new_tuple = tuple.__new__
 MERGED_STEP_LIMIT = 10_000
 
 
@@ -38,7 +39,7 @@ def plain_successors(program, state: State, config: CheckConfig) -> list[Transit
     frame = frames[-1]
     instruction = program.routines[frame[0]].code[frame[1]]
     lazy = config.lazy_inputs
-    merging = bool(config.merge_points)
+    table = config.merge_table(program) if config.merge_points else None
     result = []
     script = []
     while script is not None:
@@ -49,10 +50,11 @@ def plain_successors(program, state: State, config: CheckConfig) -> list[Transit
             m.lazy_values = {}
         execute(m, instruction)
         span = instruction.span
-        if merging and m.status == RUNNING:
-            span = run_merged(m, config, frames, span)
+        if table is not None and m.status == RUNNING:
+            span = run_merged(m, table, frames, span)
         output = "".join(line + "\n" for line in m.output) if m.output else ""
-        result.append(Transition(tuple(m.choices), span, m.to_state(), output, m.waiting))
+        result.append(_new_tuple(Transition, (tuple(m.choices), span, m.to_state(), output,
+                                              m.waiting)))
         script = chooser.next_script()
     return result
 
@@ -75,10 +77,11 @@ def execute(m: Machine, instruction) -> None:
         deliver_error(m, exc.errno, errno_name(exc.errno), from_handler=True)
 
 
-def run_merged(m: Machine, config: CheckConfig, frames_before: tuple, span):
+def run_merged(m: Machine, table: dict, frames_before: tuple, span):
     """Go on executing merge points (see ``reduction.merging``) within this transition.
 
-    ``config.merge_points`` maps a routine index to one kind per pc: 0
+    ``table`` (``CheckConfig.merge_table``) gives per routine the merge
+    points' kind per pc (plus 4 where a signal may be read): 0
     invisible, 1 visible, 2 invisible loop head (never joins), 3 never
     joins.  At most one visible instruction runs per transition (the first
     one counts as visible unless it is of kind 0 or 2), and no instruction
@@ -91,7 +94,6 @@ def run_merged(m: Machine, config: CheckConfig, frames_before: tuple, span):
     """
     if not frames_before:
         return span
-    table = config.merge_table(m.program)
     frame = frames_before[-1]
     entry = table.get(frame[0])
     seen_visible = entry is None or entry[0][frame[1]] & 3 in (1, 3)

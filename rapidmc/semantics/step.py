@@ -210,7 +210,7 @@ def step(program: Program, state: State, chooser: Chooser) -> Transition:
         m.lazy_values = {}
     span = execute_step(m)
     if chooser.check_mode and chooser.config.merge_points and m.status == RUNNING:
-        span = run_merged(m, chooser.config, state.frames, span)
+        span = run_merged(m, chooser.config.merge_table(program), state.frames, span)
     output = "".join(line + "\n" for line in m.output) if m.output else ""
     return Transition(tuple(m.choices), span, m.to_state(), output, m.waiting)
 
