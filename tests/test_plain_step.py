@@ -1,12 +1,14 @@
-"""The plain-step driver gives exactly the transitions of the general one.
+"""The plain and fused step drivers give exactly the transitions of the general one.
 
 ``step.successors`` serves plain states (one task, no interrupts, no
-environment reaction, no stored inputs) through ``plain_step`` and every
+environment reaction, no stored inputs) through ``fused_step`` (a routine's
+simple instructions as generated Python) or else ``plain_step``, and every
 other state through ``general_successors``, the general driver (each choice
 script run through ``step``).  These tests explore the reachable states of
 programs the way a check does (the reduction plan's projection and merge
-points, or none) and compare, at every state, both drivers' transitions:
-labels, spans, successor states, output and the waiting flag, in order.
+points, or none) and compare, at every state, each driver's transitions
+with the general one's: labels, spans, successor states, output and the
+waiting flag, in order.
 
 Programs: the counters family of bench/check.py, generated programs
 (tests/reduction_programs.py, tests/fuzz_programs.py), the data-driven
@@ -24,7 +26,9 @@ from hypothesis import HealthCheck, given, settings
 from rapidmc import api
 from rapidmc.diagnostics import UserError
 from rapidmc.reduction import ALL, NONE
-from rapidmc.semantics.plain_step import is_plain
+from rapidmc.semantics.state import RUNNING
+from rapidmc.semantics.fused_step import fused_successors
+from rapidmc.semantics.plain_step import is_plain, plain_successors
 from rapidmc.semantics.step import general_successors, successors
 
 from fuzz_programs import programs
@@ -40,26 +44,31 @@ CASE_STUDIES = [("case_studies/sorter/sorter_b.mod", "case_studies/sorter/plant.
                 ("case_studies/hello/hello.mod", None, None)]
 
 
-def compare_drivers(program, props, reductions, limit: int = STATE_LIMIT) -> int:
-    """Explore up to ``limit`` states as a check would; at each one both drivers must
-    agree.  Returns how many of the states were plain."""
+def compare_drivers(program, props, reductions, limit: int = STATE_LIMIT) -> tuple[int, int]:
+    """Explore up to ``limit`` states as a check would; at each one the drivers must
+    agree.  Returns how many of the states were plain, and how many of those fused."""
     model = api.prepare(program, props, api.CheckOptions(reductions=reductions))
     system = model.system
     config = system.config
     seen = dict.fromkeys(system.initial_states())
     todo = list(seen)
-    plain = 0
+    plain = fused = 0
     while todo and len(seen) < limit:
         state = todo.pop()
-        fast = successors(program, state, config)
         reference = general_successors(program, state, config)
-        assert fast == reference, state
-        plain += is_plain(program, state, config)
+        assert successors(program, state, config) == reference, state
+        if is_plain(program, state, config) and state.status == RUNNING:
+            plain += 1
+            assert plain_successors(program, state, config) == reference, state
+            fast = fused_successors(program, state, config)
+            if fast is not None:
+                fused += 1
+                assert fast == reference, state
         for _, after in system.successors(state):
             if after not in seen:
                 seen[after] = None
                 todo.append(after)
-    return plain
+    return plain, fused
 
 
 def load(tmp_path: Path, text: str, env: str | None = None):
@@ -77,7 +86,8 @@ def formulas(*texts: str) -> list:
 def test_counters_agree(tmp_path, size, reductions):
     bound = " & ".join(f'"c{i} < 4"' for i in range(size))
     program = load(tmp_path, counters(size, statistics=True))
-    assert compare_drivers(program, formulas(f"b: G ({bound})"), reductions) > 0
+    plain, fused = compare_drivers(program, formulas(f"b: G ({bound})"), reductions)
+    assert plain > fused > 0
 
 
 @pytest.mark.parametrize("reductions", [ALL, NONE], ids=["reduced", "plain"])

@@ -65,16 +65,19 @@ class ScriptChooser(Chooser):
         return self.config.free_inputs if self.inputs else ()
 
     def next_script(self) -> Optional[list]:
-        """The next combination: the last choice that has a next value takes it, the
-        choices before it stay, those after it start again (None: every one done)."""
-        script = self.script
-        sizes = self.sizes
-        known = len(script)
-        for i in range(len(sizes) - 1, -1, -1):
-            current = script[i] if i < known else 0
-            if current + 1 < sizes[i]:
-                return script[:i] + [0] * (i - known) + [current + 1]
-        return None
+        return next_script(self.script, self.sizes)
+
+
+def next_script(script: list, sizes: list) -> Optional[list]:
+    """The script after ``script``, whose run met choices of ``sizes`` values: the last
+    choice that has a next value takes it, the choices before it stay, those after it
+    start again (None: every combination done)."""
+    known = len(script)
+    for i in range(len(sizes) - 1, -1, -1):
+        current = script[i] if i < known else 0
+        if current + 1 < sizes[i]:
+            return script[:i] + [0] * (i - known) + [current + 1]
+    return None
 
 
 class CheckConfig:
@@ -109,6 +112,7 @@ class CheckConfig:
         # (reduction.merging); empty: one instruction per step
         self.merge_points: dict = {}
         self._merge_table = None         # (merge_points, program, table): see merge_table
+        self.fused = None                # (merge_points, program, routines): fused_step's
         # every combination of free input values, in the order the chooser enumerates them
         self.input_valuations = tuple(itertools.product(*(d for _, _, d in free)))
         # per valuation: pvector.mset arguments and the label part naming the values

@@ -243,6 +243,7 @@ class RoutineCompiler:
                         f"SetDO/Set/Reset (or AliasIO to bind it)", statement.span)
         value = compiler.value(statement.value, target_type)
         value_fn = value.fn
+        fusion = None
         if isinstance(target, ast.NameRef) and root.kind == GLOBAL_DATA:
             slot = root.slot
 
@@ -250,6 +251,7 @@ class RoutineCompiler:
                 value = value_fn(m)          # first: a function may change the store
                 m.store = m.store.set(slot, value)
             fn = assign_global
+            fusion = ("store", slot, value)
         elif isinstance(target, ast.NameRef) and root.kind == LOCAL_DATA and not root.by_reference:
             slot = root.slot
 
@@ -257,6 +259,7 @@ class RoutineCompiler:
                 value = value_fn(m)          # first: a function may change the frame
                 m.frames[-1] = with_locals(m.frames[-1], slot, value)
             fn = assign_local
+            fusion = ("local", slot, value)
         elif (isinstance(target, ast.Index) and len(target.indices) == 1 and
               isinstance(target.base, ast.NameRef) and root.kind == GLOBAL_DATA):
             slot = root.slot
@@ -274,7 +277,9 @@ class RoutineCompiler:
                 ref = ref_fn(m)
                 m.write_ref(ref, value_fn(m))
             fn = assign
-        self.emit(Action(statement.span, fn))
+        action = self.emit(Action(statement.span, fn))
+        if fusion is not None and value.source is not None:
+            action.fusion = fusion
 
     def _ProcedureCall(self, statement: ast.ProcedureCall, follow: Label) -> None:
         compiler = self.expressions()
@@ -392,6 +397,8 @@ class RoutineCompiler:
         """Emit a condition test; what is emitted next runs when it holds."""
         condition = self.expressions().condition(condition_expr)
         test = self.emit(Branch(span, condition.fn))
+        if condition.source is not None:
+            test.fusion = condition
         body = Label()
         test.target_true = body
         test.target_false = otherwise

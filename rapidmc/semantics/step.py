@@ -29,6 +29,7 @@ from .program import Program
 from .state import ENDED, FAILED, RUNNING, Frame, Interrupts, State, Transition
 from .lazy_inputs import InputView
 from .choosers import Chooser, CheckConfig, ScriptChooser  # noqa: F401 (the step's interface)
+from .fused_step import fused_successors
 from .plain_step import (MERGED_STEP_LIMIT, is_plain, plain_successors,  # noqa: F401
                          run_instruction, run_merged)
 from .timing import apply_scheduled, enqueue
@@ -139,7 +140,8 @@ def successors(program: Program, state: State, config: CheckConfig) -> list[Tran
     if state.status != RUNNING:
         return [Transition((), None, state, "")]
     if is_plain(program, state, config):
-        return plain_successors(program, state, config)
+        fused = fused_successors(program, state, config)
+        return fused if fused is not None else plain_successors(program, state, config)
     return general_successors(program, state, config)
 
 
