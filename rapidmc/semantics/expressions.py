@@ -242,7 +242,7 @@ class ExpressionCompiler:
         if kind == GLOBAL_DATA:
             if is_signal:
                 return Compiled(_bound_signal_reader(slot), NUM,
-                                source=f"_read_bound(cx, store[{slot}])", names={})
+                                source=f"_read(cx, store[{slot}])", names={})
             return Compiled(lambda m: m.store[slot], rapid_type, source=f"store[{slot}]",
                             names={})
         # routine data and parameters

@@ -42,7 +42,10 @@ class Fallback(Exception):
 def _read(cx: list, index: int):
     """A signal's value; a free input chosen where read is chosen once per instruction
     (``cx``: signals, lazy inputs, this instruction's choices, the transition's
-    choices, the script, the domain sizes met; as ``InputView`` and ``ScriptChooser``)."""
+    choices, the script, the domain sizes met; as ``InputView`` and ``ScriptChooser``).
+    Signal data not bound to a signal (a negative index) raises, as ``read_signal``."""
+    if index < 0:
+        read_signal(None, index)
     entry = cx[1].get(index)
     if entry is None:
         return cx[0][index]
@@ -60,13 +63,6 @@ def _read(cx: list, index: int):
     return value
 
 
-def _read_bound(cx: list, index: int):
-    """The signal signal data is bound to (``read_signal``: unbound data raises)."""
-    if index < 0:
-        read_signal(None, index)
-    return _read(cx, index)
-
-
 def _with(items: tuple, slot: int, value) -> tuple:
     return items[:slot] + (value,) + items[slot + 1:]
 
@@ -75,7 +71,7 @@ def _fallback():
     raise Fallback
 
 
-HELPERS = {"_read": _read, "_read_bound": _read_bound, "_with": _with, "_fallback": _fallback,
+HELPERS = {"_read": _read, "_with": _with, "_fallback": _fallback,
            "_to_num": values.to_num, "_to_dnum": values.to_dnum, "_divide": values.divide,
            "_int_div": values.int_div, "_int_mod": values.int_mod, "_concat": values.concat}
 
