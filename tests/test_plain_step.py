@@ -90,6 +90,49 @@ def test_counters_agree(tmp_path, size, reductions):
     assert plain > fused > 0
 
 
+FUSED_FORMS = """MODULE Forms
+  VAR signaldi in0;
+  VAR num n := 0;
+  VAR num k := 3;
+  VAR bool b := FALSE;
+  VAR dnum d := 1;
+  PROC main()
+    VAR num t := 0;
+    AliasIO "IN0", in0;
+    WHILE TRUE DO
+      FOR i FROM 1 TO k STEP 2 DO
+        t := t + i;
+      ENDFOR
+      FOR j FROM 3 TO 1 DO
+        IF in0 = 1 n := (n + j) MOD 5;
+      ENDFOR
+      TEST n
+      CASE 0, 1:
+        b := NOT b XOR in0 = 0;
+      CASE 2:
+        k := 6 DIV (n - 2);
+      DEFAULT:
+        d := d * 2 - 1;
+      ENDTEST
+      IF t > 8 GOTO again;
+      t := -t / 2;
+      again:
+      t := 0;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+"""
+
+
+@pytest.mark.parametrize("reductions", [ALL, NONE], ids=["reduced", "plain"])
+def test_fused_forms_agree(tmp_path, reductions):
+    """FOR (with and without STEP), TEST, compact IF, GOTO, locals, dnum, a division by
+    zero (ERR_DIVZERO: the general step's error handling takes over)."""
+    program = load(tmp_path, FUSED_FORMS)
+    plain, fused = compare_drivers(program, formulas('b: G "n < 5"'), reductions)
+    assert plain > fused > 0
+
+
 @pytest.mark.parametrize("reductions", [ALL, NONE], ids=["reduced", "plain"])
 @pytest.mark.parametrize("seed", range(24))
 def test_generated_programs_agree(tmp_path, seed, reductions):

@@ -26,7 +26,7 @@ from . import values
 from .choosers import CheckConfig, next_script
 from .errors import RapidError
 from .expressions import read_signal
-from .instructions import Action, Branch, Jump
+from .instructions import Action, Branch, ForInit, ForNext, Jump, TestDispatch
 from .state import Frame, State, Transition
 
 _new_tuple = tuple.__new__
@@ -145,18 +145,66 @@ def _block(pc: int, instruction) -> Optional[list[str]]:
         else:
             lines.append(f"locals_ = _with(locals_, {slot}, {value.source})")
         lines.append(f"pc = {instruction.next}")
+    elif kind is ForInit and fusion is not None:
+        lines += _for_init(instruction, fusion)
+    elif kind is ForNext:
+        slot = instruction.slot
+        lines += [f"_value = _to_num(locals_[{slot}] + locals_[{slot + 2}])",
+                  f"_last = locals_[{slot + 1}]",
+                  f"_step = locals_[{slot + 2}]",
+                  f"locals_ = _with(locals_, {slot}, _value)",
+                  f"pc = {instruction.body} if (_value <= _last if _step >= 0 else "
+                  f"_value >= _last) else {instruction.exit}"]
+    elif kind is TestDispatch and fusion is not None:
+        subject, case_values = fusion
+        lines.append(f"_subject = {subject.source}")
+        keyword = "if"
+        for values_, (_, target) in zip(case_values, instruction.cases):
+            for value in values_:
+                lines += [f"{keyword} ({value.source}) == _subject:", f"    pc = {target}"]
+                keyword = "elif"
+        lines += [f"{keyword} True:" if keyword == "if" else "else:",
+                  f"    pc = {instruction.default}"]
     else:
         return None
     lines.append(f"spans.append(_s{pc})")
     return lines
 
 
+def _for_init(instruction, bounds: tuple) -> list[str]:
+    """FOR entry (``ForInit.run``): FROM, TO, STEP once (STEP by direction when not
+    given), the loop variable set, the interval tested."""
+    slot = instruction.slot
+    lines = [f"_first = {bounds[0].source}", f"_last = {bounds[1].source}"]
+    if len(bounds) == 3:
+        lines.append(f"_step = {bounds[2].source}")
+    else:
+        lines.append("_step = -1.0 if _first > _last else 1.0")
+    return lines + [f"locals_ = locals_[:{slot}] + (_first, _last, _step) + "
+                    f"locals_[{slot + 3}:]",
+                    "_low, _high = (_first, _last) if _first <= _last else (_last, _first)",
+                    f"pc = {instruction.next} if _low <= _first <= _high else "
+                    f"{instruction.exit}"]
+
+
 def _names(instruction) -> dict:
+    """The constants the sources of ``instruction`` name."""
     fusion = instruction.fusion
+    kind = type(instruction)
     if fusion is None:
         return {}
-    compiled = fusion if type(instruction) is Branch else fusion[2]
-    return compiled.names
+    if kind is Branch:
+        compiled = [fusion]
+    elif kind is Action:
+        compiled = [fusion[2]]
+    elif kind is ForInit:
+        compiled = list(fusion)
+    else:
+        compiled = [fusion[0], *(value for values_ in fusion[1] for value in values_)]
+    names = {}
+    for item in compiled:
+        names.update(item.names)
+    return names
 
 
 def _dispatch(lines: list, blocks: list, low: int, high: int, indent: str) -> None:

@@ -32,7 +32,8 @@ class Instruction:
         self.reads_io = False       # may read a signal value (inputs matter to this step)
         # what ``fused_step`` needs to run this instruction as Python source, or None:
         # a Branch's condition (a ``Compiled`` with a source), an Action's assignment
-        # ("store" or "local", slot, the value's ``Compiled``)
+        # ("store" or "local", slot, the value's ``Compiled``), a ForInit's FROM, TO
+        # (and STEP), a TestDispatch's subject and CASE values per case
         self.fusion = None
 
     def run(self, m: Machine) -> None:

@@ -412,6 +412,9 @@ class RoutineCompiler:
         slot = self.routine.new_temporary(3, statement.variable.text)
         init = self.emit(ForInit(statement.span, slot, start.fn, stop.fn,
                                  step.fn if step else None))
+        bounds = (start, stop) if step is None else (start, stop, step)
+        if all(bound.source is not None for bound in bounds):
+            init.fusion = bounds
         body_scope = self.scope.child()
         body_scope.declare(statement.variable.key, Symbol(LOCAL_DATA, statement.variable.text,
                                                           NUM, slot=slot, storage="FOR"))
@@ -435,13 +438,15 @@ class RoutineCompiler:
         compiler = self.expressions()
         subject = compiler.value(statement.subject)
         # CASE values first: a user function call in them is emitted before the dispatch
-        case_values = [[self.expressions().value(v, subject.type).fn for v in case.values]
+        case_values = [[self.expressions().value(v, subject.type) for v in case.values]
                        for case in statement.cases]
         dispatch = self.emit(TestDispatch(statement.span, subject.fn))
+        if all(c.source is not None for c in [subject, *(c for cs in case_values for c in cs)]):
+            dispatch.fusion = (subject, case_values)
         bodies = []
-        for case, value_fns in zip(statement.cases, case_values):
+        for case, values in zip(statement.cases, case_values):
             label = Label()
-            dispatch.cases.append((value_fns, label))
+            dispatch.cases.append(([value.fn for value in values], label))
             bodies.append((label, case.body))
         default = Label()
         dispatch.default = default if statement.default is not None else follow
