@@ -29,6 +29,9 @@ from .reduction import NO_PLAN, Plan
 from .reduction.expansion import expand_lasso
 
 
+_new_tuple = tuple.__new__
+
+
 class RapidSystem:
     """The program's state graph, explored lazily.
 
@@ -63,7 +66,7 @@ class RapidSystem:
 
     @staticmethod
     def join_state(parts: tuple) -> State:
-        return State(parts[0], pvector(parts[1]), *parts[2:5], *parts[5])
+        return _new_tuple(State, (parts[0], pvector(parts[1])) + parts[2:5] + parts[5])
 
     def unreduced(self) -> "RapidSystem":
         """The same program and configuration without reductions."""

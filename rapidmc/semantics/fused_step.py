@@ -278,7 +278,7 @@ def fused_successors(program, state: State, config: CheckConfig) -> Optional[lis
             new_state = _new_tuple(State, (below + (new_frame,), new_store) + rest)
             span = spans[0] if len(spans) == 1 else tuple(spans)
             result.append(_new_tuple(Transition, (tuple(choices), span, new_state, "", False)))
-            script = next_script(script, sizes)
+            script = next_script(script, sizes) if sizes else None
     except (RapidError, Fallback):
         return None
     return result
