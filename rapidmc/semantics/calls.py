@@ -16,7 +16,7 @@ from typing import Any, Callable, Optional, Sequence
 from .. import ast
 from ..diagnostics import ARGUMENT, NOT_A_REFERENCE, TYPE_MISMATCH, error
 from .errors import RapidError
-from .expressions import Compiled, ExpressionCompiler, read_signal
+from .expressions import Compiled, ExpressionCompiler, constant, read_signal
 from .machine import ABSENT
 from .scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, SIGNAL
 from .types import ANYTYPE, SEMI_VALUE, AnyType, ArrayType, RapidType, same_type
@@ -50,8 +50,13 @@ def _present(m):
 
 
 def bind(compiler: ExpressionCompiler, routine_name: str, params: Sequence[ParameterView],
-         args: Sequence[ast.Argument], span: ast.Span) -> list[tuple[str, Callable]]:
-    """Check a call and return ``(kind, binder)`` per parameter (kind VALUE/REFERENCE/SIGNAL_ARG)."""
+         args: Sequence[ast.Argument], span: ast.Span,
+         sources: Optional[list] = None) -> list[tuple[str, Callable]]:
+    """Check a call and return ``(kind, binder)`` per parameter (kind VALUE/REFERENCE/SIGNAL_ARG).
+
+    ``sources``, when given, receives per parameter the ``Compiled`` value the binder
+    computes when it has a source (an IN argument, an absent one, a switch given), else
+    None (see ``Compiled.source``)."""
     chosen: dict[int, ast.Argument] = {}
     required = [i for i, p in enumerate(params) if not p.optional]
     groups_seen: dict[int, str] = {}
@@ -85,8 +90,13 @@ def bind(compiler: ExpressionCompiler, routine_name: str, params: Sequence[Param
                 raise error(ARGUMENT, f"missing argument {param.name} in call of {routine_name}",
                             span)
             binders.append((VALUE, _absent))
+            if sources is not None:
+                sources.append(constant(ABSENT, None))
             continue
-        binders.append(_binder(compiler, routine_name, param, arg))
+        kind, binder, compiled = _binder(compiler, routine_name, param, arg)
+        binders.append((kind, binder))
+        if sources is not None:
+            sources.append(compiled)
     return binders
 
 
@@ -108,31 +118,32 @@ def _by_name(params: Sequence[ParameterView], arg: ast.Argument, routine_name: s
 
 
 def _binder(compiler: ExpressionCompiler, routine_name: str, param: ParameterView,
-            arg: ast.Argument) -> tuple[str, Callable]:
+            arg: ast.Argument) -> tuple[str, Callable, Optional[Compiled]]:
+    """(kind, binder, the binder's ``Compiled`` value when it has a source, else None)."""
     if param.is_switch:
         if arg.kind == ast.CONDITIONAL:
-            return VALUE, _conditional(compiler, arg, by_reference=False)
+            return VALUE, _conditional(compiler, arg, by_reference=False), None
         if arg.kind != ast.SWITCH and arg.value is not None:
             raise error(ARGUMENT, f"\\{param.name} is a switch of {routine_name} and takes no "
                         "value", arg.span)
-        return VALUE, _present
+        return VALUE, _present, constant(True, None)
     if arg.kind == ast.SWITCH:
         raise error(ARGUMENT, f"argument \\{param.name} of {routine_name} needs a value "
                     f"(\\{param.name}:=...)", arg.span)
     signal_type = _signal_type(param)
     if arg.kind == ast.CONDITIONAL:
         return (REFERENCE if param.mode != "IN" else VALUE), _conditional(
-            compiler, arg, by_reference=param.mode != "IN")
+            compiler, arg, by_reference=param.mode != "IN"), None
     if signal_type is not None:
-        return SIGNAL_ARG, signal_designator(compiler, arg.value, signal_type)
+        return SIGNAL_ARG, signal_designator(compiler, arg.value, signal_type), None
     if param.mode == "PERS" and param.predefined:
-        return VALUE, _persistent_value(compiler, routine_name, param, arg)
+        return VALUE, _persistent_value(compiler, routine_name, param, arg), None
     if param.mode == "IN":
         expected = param.types[0] if len(param.types) == 1 and not param.rank else None
         compiled = compiler.value(arg.value, _value_expectation(expected))
         _check_types(param, compiled.type, arg.value.span, routine_name)
-        return VALUE, compiled.fn
-    return REFERENCE, _reference_binder(compiler, routine_name, param, arg)
+        return VALUE, compiled.fn, compiled if compiled.source is not None else None
+    return REFERENCE, _reference_binder(compiler, routine_name, param, arg), None
 
 
 def _value_expectation(expected):

@@ -12,6 +12,7 @@ frame slot where the result will be; the expression just reads that slot.
 """
 from __future__ import annotations
 
+import itertools
 import operator
 from dataclasses import dataclass
 from typing import Any, Callable, Optional
@@ -36,14 +37,36 @@ class Compiled:
     fn: Callable[[Any], Any]
     type: Optional[AnyType]
     constant: Any = NOT_CONSTANT
+    # the same computation as a Python expression for fused steps (``fused_step``), over
+    # ``store``, ``locals_`` and the signal reader's context ``cx``; None when not available
+    source: Optional[str] = None
+    names: Optional[dict] = None          # the values the source names (constants)
 
     @property
     def is_constant(self) -> bool:
         return self.constant is not NOT_CONSTANT
 
 
+_CONSTANT_NAMES = itertools.count()
+
+
 def constant(value: Any, rapid_type: Optional[AnyType]) -> Compiled:
-    return Compiled(lambda m: value, rapid_type, value)
+    name = f"_k{next(_CONSTANT_NAMES)}"
+    return Compiled(lambda m: value, rapid_type, value, name, {name: value})
+
+
+def with_source(compiled: Compiled, template: str, *operands: Compiled) -> Compiled:
+    """``compiled`` with the source ``template`` filled with the operands' sources,
+    when every operand has one (``template`` computes what ``compiled.fn`` does, in
+    the same order, with the same helpers: see ``fused_step.HELPERS``)."""
+    if any(operand.source is None for operand in operands):
+        return compiled
+    names = {}
+    for operand in operands:
+        names.update(operand.names)
+    compiled.source = template.format(*(operand.source for operand in operands))
+    compiled.names = names
+    return compiled
 
 
 def type_name(t: Optional[AnyType]) -> str:
@@ -61,6 +84,53 @@ def _check_index(value: tuple, index: float, span: ast.Span) -> int:
     if not 1 <= i <= len(value):
         raise RapidError("ERR_OUTOFBND", f"array index {i} outside 1..{len(value)}")
     return i - 1
+
+
+def _binary(combine: Callable, left: Compiled, right: Compiled) -> Callable:
+    """``fn(m) = combine(left(m), right(m))``; a constant right operand is not called."""
+    lf = left.fn
+    if right.is_constant:
+        value = right.constant
+        return lambda m: combine(lf(m), value)
+    rf = right.fn
+    return lambda m: combine(lf(m), rf(m))
+
+
+# the sources of the operators (``with_source``; ROUND: the arithmetic's rounding)
+COMPARISON_SOURCES = {"=": "({0} == {1})", "<>": "({0} != {1})", "<": "({0} < {1})",
+                      "<=": "({0} <= {1})", ">": "({0} > {1})", ">=": "({0} >= {1})"}
+LOGICAL_SOURCES = {"AND": "bool({0} & {1})", "OR": "bool({0} | {1})", "XOR": "({0} != {1})"}
+ARITHMETIC_SOURCES = {"+": "ROUND({0} + {1})", "-": "ROUND({0} - {1})",
+                      "*": "ROUND({0} * {1})", "/": "ROUND(_divide({0}, {1}))",
+                      "DIV": "_int_div({0}, {1})", "MOD": "_int_mod({0}, {1})"}
+
+# operators with a variable left and a constant right operand that ``_constant_right`` serves
+ARITHMETIC = ("+", "-", "*", "DIV", "MOD")
+
+
+def _constant_right(op: str, lf: Callable, value, round_: Callable) -> Callable:
+    """``lf(m) op value``, rounded as the general arithmetic rounds (the common
+    ``n + 1``, ``n MOD k``: one call less per evaluation)."""
+    if op == "+":
+        return lambda m: round_(lf(m) + value)
+    if op == "-":
+        return lambda m: round_(lf(m) - value)
+    if op == "*":
+        return lambda m: round_(lf(m) * value)
+    if op == "DIV":
+        return lambda m: values.int_div(lf(m), value)
+    return lambda m: values.int_mod(lf(m), value)
+
+
+def _bound_signal_reader(slot: int) -> Callable:
+    """The value of the signal that global signal data in ``slot`` is bound to
+    (``read_signal`` of the slot's value, in one call)."""
+    def read_bound_signal(m):
+        index = m.store[slot]
+        if index < 0:
+            return read_signal(m, index)
+        return m.io[index]
+    return read_bound_signal
 
 
 def read_signal(m, index: int) -> float:
@@ -114,7 +184,8 @@ class ExpressionCompiler:
         if target is NUM and compiled.type is DNUM:
             fn = compiled.fn
             # A constant too large for num fails when it runs (ERR_NUM_LIMIT), not here.
-            return ExpressionCompiler._fold(lambda m: values.to_num(fn(m)), NUM, compiled)
+            return ExpressionCompiler._fold(lambda m: values.to_num(fn(m)), NUM, compiled,
+                                            template="_to_num({0})")
         return compiled
 
     # --------------------------------------------------------------- literals
@@ -165,19 +236,23 @@ class ExpressionCompiler:
         if kind == SIGNAL:
             self.note_io_read()
             self.linker.note_signal_named(slot)
-            return Compiled(lambda m: m.io[slot], NUM)
+            return Compiled(lambda m: m.io[slot], NUM, source=f"_read(cx, {slot})", names={})
         is_signal = isinstance(rapid_type, RapidType) and rapid_type.kind == SEMI_VALUE
         if is_signal:
             self.note_io_read()
         if kind == GLOBAL_DATA:
             if is_signal:
-                return Compiled(lambda m: read_signal(m, m.store[slot]), NUM)
-            return Compiled(lambda m: m.store[slot], rapid_type)
+                return Compiled(_bound_signal_reader(slot), NUM,
+                                source=f"_read(cx, store[{slot}])", names={})
+            return Compiled(lambda m: m.store[slot], rapid_type, source=f"store[{slot}]",
+                            names={})
         # routine data and parameters
         reader = self._local_reader(symbol, expr.name)
         if is_signal:
             return Compiled(lambda m: read_signal(m, reader(m)), NUM)
-        return Compiled(reader, rapid_type)
+        if symbol.by_reference or symbol.optional:
+            return Compiled(reader, rapid_type)
+        return Compiled(reader, rapid_type, source=f"locals_[{slot}]", names={})
 
     def _local_reader(self, symbol: Symbol, name: ast.Name) -> Callable:
         slot = symbol.slot
@@ -293,7 +368,7 @@ class ExpressionCompiler:
             fn = operand.fn
             if operand.is_constant:
                 return constant(not operand.constant, BOOL)
-            return Compiled(lambda m: not fn(m), BOOL)
+            return with_source(Compiled(lambda m: not fn(m), BOOL), "(not {0})", operand)
         operand = self.value(expr.operand,
                              expected if is_numeric(expected) or expected is POS else None)
         rapid_type = operand.type
@@ -310,7 +385,7 @@ class ExpressionCompiler:
             return self._fold(lambda m: tuple(-c for c in fn(m)), POS, operand)
         if operand.is_constant:
             return constant(-operand.constant, rapid_type)
-        return Compiled(lambda m: -fn(m), rapid_type)
+        return with_source(Compiled(lambda m: -fn(m), rapid_type), "(-{0})", operand)
 
     # ----------------------------------------------------------------- binary
     def _Binary(self, expr: ast.Binary, expected) -> Compiled:
@@ -337,16 +412,20 @@ class ExpressionCompiler:
             fn = lambda m: bool(lf(m) | rf(m))  # noqa: E731
         else:
             fn = lambda m: lf(m) != rf(m)  # noqa: E731
-        return self._fold(fn, BOOL, left, right)
+        return self._fold(fn, BOOL, left, right, template=LOGICAL_SOURCES[expr.op])
 
     @staticmethod
-    def _fold(fn: Callable, rapid_type, *operands: Compiled) -> Compiled:
+    def _fold(fn: Callable, rapid_type, *operands: Compiled,
+              template: Optional[str] = None) -> Compiled:
+        """A constant when every operand is one (and it computes), else ``fn``
+        (with the source ``template`` of the operands' sources, see ``with_source``)."""
         if all(o.is_constant for o in operands):
             try:
                 return constant(fn(None), rapid_type)
             except RapidError:
                 pass
-        return Compiled(fn, rapid_type)
+        compiled = Compiled(fn, rapid_type)
+        return compiled if template is None else with_source(compiled, template, *operands)
 
     def _equality(self, expr, left: Compiled, right: Compiled) -> Compiled:
         if left.type is not None and right.type is not None:
@@ -355,12 +434,9 @@ class ExpressionCompiler:
                             f"{type_name(right.type)}", expr.span)
             if isinstance(left.type, ArrayType):
                 raise error(TYPE_MISMATCH, "arrays cannot be compared with = or <>", expr.span)
-        lf, rf = left.fn, right.fn
-        if expr.op == "=":
-            fn = lambda m: lf(m) == rf(m)  # noqa: E731
-        else:
-            fn = lambda m: lf(m) != rf(m)  # noqa: E731
-        return self._fold(fn, BOOL, left, right)
+        compare = operator.eq if expr.op == "=" else operator.ne
+        return self._fold(_binary(compare, left, right), BOOL, left, right,
+                          template=COMPARISON_SOURCES[expr.op])
 
     def _ordering(self, expr, left: Compiled, right: Compiled) -> Compiled:
         for side in (left, right):
@@ -368,8 +444,8 @@ class ExpressionCompiler:
                 raise error(TYPE_MISMATCH, f"'{expr.op}' compares num or dnum values, not "
                             f"{type_name(side.type)}", expr.span)
         compare = {"<": operator.lt, "<=": operator.le, ">": operator.gt, ">=": operator.ge}[expr.op]
-        lf, rf = left.fn, right.fn
-        return self._fold(lambda m: compare(lf(m), rf(m)), BOOL, left, right)
+        return self._fold(_binary(compare, left, right), BOOL, left, right,
+                          template=COMPARISON_SOURCES[expr.op])
 
     def _arithmetic(self, expr, left: Compiled, right: Compiled) -> Compiled:
         op = expr.op
@@ -379,7 +455,8 @@ class ExpressionCompiler:
             if op != "+" or not (same_type(lt, STRING) and same_type(rt, STRING)):
                 raise error(TYPE_MISMATCH, f"'{op}' cannot combine {type_name(lt)} and "
                             f"{type_name(rt)}", expr.span)
-            return self._fold(lambda m: values.concat(lf(m), rf(m)), STRING, left, right)
+            return self._fold(lambda m: values.concat(lf(m), rf(m)), STRING, left, right,
+                              template="_concat({0}, {1})")
         if lt is POS or rt is POS or lt is ORIENT or rt is ORIENT:
             return self._vector(expr, left, right)
         self._typed_aggregates(expr)
@@ -389,7 +466,9 @@ class ExpressionCompiler:
                             f"{type_name(side)}", expr.span)
         result_type = DNUM if (lt is DNUM or rt is DNUM) else (NUM if lt is not None or rt is not None else None)
         round_ = values.to_dnum if result_type is DNUM else values.to_num
-        if op == "+":
+        if right.is_constant and op in ARITHMETIC:
+            fn = _constant_right(op, lf, right.constant, round_)
+        elif op == "+":
             fn = lambda m: round_(lf(m) + rf(m))  # noqa: E731
         elif op == "-":
             fn = lambda m: round_(lf(m) - rf(m))  # noqa: E731
@@ -403,7 +482,9 @@ class ExpressionCompiler:
             fn = lambda m: values.int_mod(lf(m), rf(m))  # noqa: E731
         else:
             raise error(TYPE_MISMATCH, f"unknown operator {op}", expr.span)
-        return self._fold(fn, result_type, left, right)
+        template = ARITHMETIC_SOURCES[op].replace("ROUND", "_to_dnum" if result_type is DNUM
+                                                   else "_to_num")
+        return self._fold(fn, result_type, left, right, template=template)
 
     @staticmethod
     def _typed_aggregates(expr: ast.Binary) -> None:

@@ -22,7 +22,7 @@ from . import values
 
 
 class Instruction:
-    __slots__ = ("span", "next", "start", "after", "text", "reads_io")
+    __slots__ = ("span", "next", "start", "after", "text", "reads_io", "fusion")
 
     def __init__(self, span):
         self.span = span
@@ -30,6 +30,11 @@ class Instruction:
         self.start = -1
         self.after = -1
         self.reads_io = False       # may read a signal value (inputs matter to this step)
+        # what ``fused_step`` needs to run this instruction as Python source, or None:
+        # a Branch's condition (a ``Compiled`` with a source), an Action's assignment
+        # ("store" or "local", slot, the value's ``Compiled``), a ForInit's FROM, TO
+        # (and STEP), a TestDispatch's subject and CASE values per case
+        self.fusion = None
 
     def run(self, m: Machine) -> None:
         raise NotImplementedError

@@ -91,30 +91,23 @@ class Machine:
 
     def __init__(self, program, state: State, chooser):
         self.program = program
-        self.frames = list(state.frames)
-        self.store = state.store
-        self.io = state.io
-        self.robot = state.robot
-        self.interrupts = state.interrupts
-        self.errno = state.errno
-        self.intno = state.intno
-        self.status = state.status
-        self.fault = state.fault
-        self.clock = state.clock
+        (frames, self.store, self.io, self.robot, self.interrupts, self.errno, self.intno,
+         self.status, self.fault, self.clock, self.tasks) = state
+        self.frames = list(frames)
         self.output: list[str] = []
         self.chooser = chooser
         self.choices: list[tuple] = []
         self.span = None
         self.waiting = False
         self.lazy_values = None          # lazily chosen free inputs of this step (check mode)
-        self.tasks = state.tasks
 
     def to_state(self) -> State:
         io = self.io
         if self.lazy_values is not None:
             io = stored(io)
-        return State(tuple(self.frames), self.store, io, self.robot, self.interrupts,
-                     self.errno, self.intno, self.status, self.fault, self.clock, self.tasks)
+        return _new_tuple(State, (tuple(self.frames), self.store, io, self.robot,
+                                  self.interrupts, self.errno, self.intno, self.status,
+                                  self.fault, self.clock, self.tasks))
 
     # --- choices -------------------------------------------------------------
     def choose(self, name: str, domain: tuple) -> Any:

@@ -14,7 +14,7 @@ from .. import ast
 from ..diagnostics import ENV_ONLY, TYPE_MISMATCH, UNKNOWN_ROUTINE, error
 from .library import registry
 from .calls import REFERENCE, SIGNAL_ARG, VALUE, ParameterView, bind
-from .expressions import Compiled, ExpressionCompiler, constant
+from .expressions import Compiled, ExpressionCompiler, constant, with_source
 from .instructions import Action, Instruction
 from .machine import ABSENT
 from .program import ENVIRONMENT_NAMESPACE
@@ -33,6 +33,18 @@ def _argument_expression(args, key: str, position: int):
             return arg.value
     positional = [a for a in args if a.kind == ast.REQUIRED and a.name is None]
     return positional[position].value if position < len(positional) else None
+
+
+def _with_call_source(compiled: Compiled, impl, entry, sources: list) -> Compiled:
+    """``compiled`` (a call of a predefined function) with its source when every argument
+    has one: ``impl(plain(a), ...)``, switches as ``a is True`` (``argument_functions``)."""
+    if any(source is None for source in sources):
+        return compiled
+    arguments = ", ".join(
+        ("{1}({%d} is True)" if spec.is_switch else "{1}({%d})") % (i + 2)
+        for i, spec in enumerate(entry.signature.parameters))
+    return with_source(compiled, "{0}(" + arguments + ")", constant(impl, None),
+                       constant(plain, None), *sources)
 
 
 class PredefinedCalls:
@@ -85,17 +97,21 @@ class PredefinedCalls:
         compiler._no_variables(expr)
         if entry.special:
             return entry.factory(self, compiler, expr, entry)
-        binders = bind(compiler, entry.signature.name, self.views(entry), expr.args, expr.span)
+        sources: list = []
+        binders = bind(compiler, entry.signature.name, self.views(entry), expr.args, expr.span,
+                       sources)
         impl = self.implementation(compiler, entry, expr.args)
         fns = self.argument_functions(entry, binders)
         return_type = self.return_type(entry)
         if len(fns) == 1:
             only = fns[0]
-            return Compiled(lambda m: impl(plain(only(m))), return_type)
-        if len(fns) == 2:
+            compiled = Compiled(lambda m: impl(plain(only(m))), return_type)
+        elif len(fns) == 2:
             first, second = fns
-            return Compiled(lambda m: impl(plain(first(m)), plain(second(m))), return_type)
-        return Compiled(lambda m: impl(*[plain(fn(m)) for fn in fns]), return_type)
+            compiled = Compiled(lambda m: impl(plain(first(m)), plain(second(m))), return_type)
+        else:
+            compiled = Compiled(lambda m: impl(*[plain(fn(m)) for fn in fns]), return_type)
+        return _with_call_source(compiled, impl, entry, sources)
 
     def argument_functions(self, entry, binders) -> list:
         """Per parameter: fn(m) -> the Python value a registry implementation receives."""

@@ -243,6 +243,7 @@ class RoutineCompiler:
                         f"SetDO/Set/Reset (or AliasIO to bind it)", statement.span)
         value = compiler.value(statement.value, target_type)
         value_fn = value.fn
+        fusion = None
         if isinstance(target, ast.NameRef) and root.kind == GLOBAL_DATA:
             slot = root.slot
 
@@ -250,6 +251,7 @@ class RoutineCompiler:
                 value = value_fn(m)          # first: a function may change the store
                 m.store = m.store.set(slot, value)
             fn = assign_global
+            fusion = ("store", slot, value)
         elif isinstance(target, ast.NameRef) and root.kind == LOCAL_DATA and not root.by_reference:
             slot = root.slot
 
@@ -257,6 +259,7 @@ class RoutineCompiler:
                 value = value_fn(m)          # first: a function may change the frame
                 m.frames[-1] = with_locals(m.frames[-1], slot, value)
             fn = assign_local
+            fusion = ("local", slot, value)
         elif (isinstance(target, ast.Index) and len(target.indices) == 1 and
               isinstance(target.base, ast.NameRef) and root.kind == GLOBAL_DATA):
             slot = root.slot
@@ -274,7 +277,9 @@ class RoutineCompiler:
                 ref = ref_fn(m)
                 m.write_ref(ref, value_fn(m))
             fn = assign
-        self.emit(Action(statement.span, fn))
+        action = self.emit(Action(statement.span, fn))
+        if fusion is not None and value.source is not None:
+            action.fusion = fusion
 
     def _ProcedureCall(self, statement: ast.ProcedureCall, follow: Label) -> None:
         compiler = self.expressions()
@@ -392,6 +397,8 @@ class RoutineCompiler:
         """Emit a condition test; what is emitted next runs when it holds."""
         condition = self.expressions().condition(condition_expr)
         test = self.emit(Branch(span, condition.fn))
+        if condition.source is not None:
+            test.fusion = condition
         body = Label()
         test.target_true = body
         test.target_false = otherwise
@@ -405,6 +412,9 @@ class RoutineCompiler:
         slot = self.routine.new_temporary(3, statement.variable.text)
         init = self.emit(ForInit(statement.span, slot, start.fn, stop.fn,
                                  step.fn if step else None))
+        bounds = (start, stop) if step is None else (start, stop, step)
+        if all(bound.source is not None for bound in bounds):
+            init.fusion = bounds
         body_scope = self.scope.child()
         body_scope.declare(statement.variable.key, Symbol(LOCAL_DATA, statement.variable.text,
                                                           NUM, slot=slot, storage="FOR"))
@@ -428,13 +438,15 @@ class RoutineCompiler:
         compiler = self.expressions()
         subject = compiler.value(statement.subject)
         # CASE values first: a user function call in them is emitted before the dispatch
-        case_values = [[self.expressions().value(v, subject.type).fn for v in case.values]
+        case_values = [[self.expressions().value(v, subject.type) for v in case.values]
                        for case in statement.cases]
         dispatch = self.emit(TestDispatch(statement.span, subject.fn))
+        if all(c.source is not None for c in [subject, *(c for cs in case_values for c in cs)]):
+            dispatch.fusion = (subject, case_values)
         bodies = []
-        for case, value_fns in zip(statement.cases, case_values):
+        for case, values in zip(statement.cases, case_values):
             label = Label()
-            dispatch.cases.append((value_fns, label))
+            dispatch.cases.append(([value.fn for value in values], label))
             bodies.append((label, case.body))
         default = Label()
         dispatch.default = default if statement.default is not None else follow

@@ -19,18 +19,19 @@ so the step code stays straight-line.
 """
 from __future__ import annotations
 
-import itertools
 from typing import Optional
 
 from pyrsistent import pvector
 
-from .errors import RapidError, errno_name
-from .errors_flow import deliver_error
-from .instructions import ReRaise
+from .errors import errno_name
 from .machine import Machine
 from .program import Program
 from .state import ENDED, FAILED, RUNNING, Frame, Interrupts, State, Transition
 from .lazy_inputs import InputView
+from .choosers import Chooser, CheckConfig, ScriptChooser  # noqa: F401 (the step's interface)
+from .fused_step import fused_successors
+from .plain_step import (MERGED_STEP_LIMIT, is_plain, plain_successors,  # noqa: F401
+                         run_instruction, run_merged)
 from .timing import apply_scheduled, enqueue
 
 ENVIRONMENT_STEP_LIMIT = 100_000
@@ -38,105 +39,6 @@ ENVIRONMENT_STEP_LIMIT = 100_000
 HOME_TARGET = ((0.0, 0.0, 0.0), (1.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0),
                (9e9, 9e9, 9e9, 9e9, 9e9, 9e9))
 HOME_JOINTS = ((0.0,) * 6, (9e9,) * 6)
-
-
-class Chooser:
-    """Base chooser: how a step resolves nondeterminism and time."""
-
-    check_mode = False
-
-    def choose(self, name: str, domain: tuple, position: int):
-        return domain[0]
-
-    def tp_answers(self, kind: str) -> tuple:
-        raise NotImplementedError
-
-    def wait_times_out(self, m: Machine, max_time: float) -> bool:
-        return False
-
-    def advance_time(self, m: Machine, seconds: float) -> None:
-        pass
-
-    def free_inputs(self, program: Program) -> tuple:
-        return ()
-
-
-class ScriptChooser(Chooser):
-    """Check mode: follows a script of choice indices, records the domain sizes met."""
-
-    check_mode = True
-
-    def __init__(self, script: list, config: "CheckConfig", inputs: bool = True):
-        self.script = script
-        self.sizes: list[int] = []
-        self.config = config
-        self.inputs = inputs
-
-    def choose(self, name: str, domain: tuple, position: int):
-        self.sizes.append(len(domain))
-        if position < len(self.script):
-            return domain[self.script[position]]
-        return domain[0]
-
-    def tp_answers(self, kind: str) -> tuple:
-        if kind == "TPReadFK":
-            return self.config.fk_answers
-        return self.config.tp_answers
-
-    def wait_times_out(self, m: Machine, max_time: float) -> bool:
-        return m.choose("timeout", (False, True))
-
-    def free_inputs(self, program: Program) -> tuple:
-        return self.config.free_inputs if self.inputs else ()
-
-    def next_script(self) -> Optional[list]:
-        script = list(self.script) + [0] * (len(self.sizes) - len(self.script))
-        for i in range(len(self.sizes) - 1, -1, -1):
-            if script[i] + 1 < self.sizes[i]:
-                return script[:i] + [script[i] + 1]
-        return None
-
-
-class CheckConfig:
-    """Model-checking choices: answer domains and which inputs are free."""
-
-    def __init__(self, program: Program, tp_answers=(1.0, 2.0, 3.0),
-                 fk_answers=(1.0, 2.0, 3.0, 4.0, 5.0), input_domains: Optional[dict] = None,
-                 observed: Optional[set] = None):
-        """``observed``: indices of the free inputs properties look at; the others are
-        chosen when read (see lazy_inputs).  None: every free input is stored."""
-        self.tp_answers = tuple(float(a) for a in tp_answers)
-        self.fk_answers = tuple(float(a) for a in fk_answers)
-        domains = input_domains or {}
-        free = []
-        lazy = {}
-        for signal in program.signals:
-            if signal.driven or not signal.kind.endswith("I"):
-                continue
-            if signal.kind == "DI":
-                domain = (0.0, 1.0)
-            elif signal.key in domains:
-                domain = tuple(domains[signal.key])
-            else:
-                continue
-            if observed is None or signal.index in observed:
-                free.append((signal.index, signal.name, domain))
-            else:
-                lazy[signal.index] = (signal.name, domain)
-        self.free_inputs = tuple(free)
-        self.lazy_inputs = lazy
-        # (routine, pc) -> visible, for instructions that join the step before them
-        # (reduction.merging); empty: one instruction per step
-        self.merge_points: dict = {}
-        # every combination of free input values, in the order the chooser enumerates them
-        self.input_valuations = tuple(itertools.product(*(d for _, _, d in free)))
-        # per valuation: pvector.mset arguments and the label part naming the values
-        self.input_assignments = tuple(
-            tuple(x for (index, _, _), value in zip(free, valuation) for x in (index, value))
-            for valuation in self.input_valuations)
-        self.input_labels = tuple(
-            tuple((name, value) for (_, name, _), value in zip(free, valuation))
-            for valuation in self.input_valuations)
 
 
 # ---------------------------------------------------------------------------
@@ -237,6 +139,17 @@ def successors(program: Program, state: State, config: CheckConfig) -> list[Tran
     """Every transition from ``state`` (check mode), in a deterministic order."""
     if state.status != RUNNING:
         return [Transition((), None, state, "")]
+    if is_plain(program, state, config):
+        fused = fused_successors(program, state, config)
+        return fused if fused is not None else plain_successors(program, state, config)
+    return general_successors(program, state, config)
+
+
+def general_successors(program: Program, state: State, config: CheckConfig) -> list[Transition]:
+    """``successors`` through the general driver (every choice script run through ``step``):
+    the reference ``plain_successors`` must agree with."""
+    if state.status != RUNNING:
+        return [Transition((), None, state, "")]
     if config.free_inputs and not _inputs_matter(program, state):
         return _successors_inputs_after(program, state, config)
     transitions = list(enumerate_choices(lambda chooser: step(program, state, chooser),
@@ -299,60 +212,9 @@ def step(program: Program, state: State, chooser: Chooser) -> Transition:
         m.lazy_values = {}
     span = execute_step(m)
     if chooser.check_mode and chooser.config.merge_points and m.status == RUNNING:
-        span = _run_merged(m, chooser.config.merge_points, state.frames, span)
+        span = run_merged(m, chooser.config.merge_table(program), state.frames, span)
     output = "".join(line + "\n" for line in m.output) if m.output else ""
     return Transition(tuple(m.choices), span, m.to_state(), output, m.waiting)
-
-
-MERGED_STEP_LIMIT = 10_000
-
-
-def _run_merged(m: Machine, points: dict, frames_before: tuple, span):
-    """Go on executing merge points (see ``reduction.merging``) within this transition.
-
-    ``points`` maps a routine index to one kind per pc: 0 invisible, 1
-    visible, 2 invisible loop head (never joins), 3 never joins.  At most
-    one visible instruction runs per transition (the first one counts as
-    visible unless it is of kind 0 or 2), and no instruction that may read
-    a signal joins once a choice was made (each combination of choices
-    re-runs the whole transition).  Loop heads never join, so the program
-    counter only grows while merging.  Returns the span of the step, or
-    the tuple of every span executed when more than one instruction ran.
-    Stops as soon as the program waits, stops, raises, calls or returns,
-    or has interrupts or tasks.
-    """
-    if not frames_before:
-        return span
-    frame = frames_before[-1]
-    kinds = points.get(frame[0])
-    seen_visible = kinds is None or kinds[frame[1]] in (1, 3)
-    spans = [span]
-    errno = m.errno
-    depth = len(m.frames)                # calls and returns never join: it stays
-    routines = m.program.routines
-    for _ in range(MERGED_STEP_LIMIT):
-        frames = m.frames
-        if m.status != RUNNING or m.waiting or m.tasks or m.errno != errno or \
-                len(frames) != depth:
-            break
-        interrupts = m.interrupts
-        if interrupts.table or interrupts.pending or interrupts.scheduled:
-            break
-        frame = frames[-1]
-        kinds = points.get(frame[0])
-        if kinds is None:
-            break
-        kind = kinds[frame[1]]
-        if kind >= 2 or frame[3] != 0 or (kind == 1 and seen_visible):
-            break
-        if m.choices and routines[frame[0]].code[frame[1]].reads_io:
-            break                            # one choice point per transition (as in SPIN)
-        if kind == 1:
-            seen_visible = True
-        if m.lazy_values is not None:
-            m.lazy_values = {}               # each instruction reads inputs afresh
-        spans.append(run_instruction(m))
-    return spans[0] if len(spans) == 1 else tuple(spans)
 
 
 def execute_step(m: Machine):
@@ -437,19 +299,6 @@ def _execute(m: Machine):
                 _deactivate(m, number)
             return trap.span
     return run_instruction(m)
-
-
-def run_instruction(m: Machine):
-    """Execute the instruction at the program counter; errors go to their handler."""
-    frame = m.frames[-1]
-    instruction = m.program.routines[frame.routine].code[frame.pc]
-    try:
-        instruction.run(m)
-    except RapidError as exc:
-        deliver_error(m, exc.errno, str(exc))
-    except ReRaise as exc:
-        deliver_error(m, exc.errno, errno_name(exc.errno), from_handler=True)
-    return instruction.span
 
 
 def _in_trap(m: Machine) -> bool:

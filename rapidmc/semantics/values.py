@@ -53,6 +53,8 @@ def to_num(x: float | int) -> float:
     Exact small integers skip the conversion (the interpreter's hot path).
     A result outside the float32 range, or a NaN, raises ERR_NUM_LIMIT.
     """
+    if type(x) is float and x.is_integer() and -NUM_EXACT_INTEGER <= x <= NUM_EXACT_INTEGER:
+        return x                    # exact in single precision (-0.0 stays -0.0)
     if type(x) is int and -NUM_EXACT_INTEGER <= x <= NUM_EXACT_INTEGER:
         return float(x)
     try:
@@ -118,14 +120,20 @@ def _integer_operands(a: float, b: float, operator: str) -> tuple[int, int]:
 
 def int_div(a: float, b: float) -> float:
     """``a DIV b``: integer quotient truncated toward zero (``-7 DIV 2 = -3``)."""
-    dividend, divisor = _integer_operands(a, b, "DIV")
+    if type(a) is float and type(b) is float and a.is_integer() and b.is_integer() and b:
+        dividend, divisor = int(a), int(b)      # the common case, checked as below
+    else:
+        dividend, divisor = _integer_operands(a, b, "DIV")
     quotient = abs(dividend) // abs(divisor)
     return float(quotient if (dividend < 0) == (divisor < 0) else -quotient)
 
 
 def int_mod(a: float, b: float) -> float:
     """``a MOD b``: remainder with the dividend's sign (``-7 MOD 2 = -1``)."""
-    dividend, divisor = _integer_operands(a, b, "MOD")
+    if type(a) is float and type(b) is float and a.is_integer() and b.is_integer() and b:
+        dividend, divisor = int(a), int(b)      # the common case, checked as below
+    else:
+        dividend, divisor = _integer_operands(a, b, "MOD")
     remainder = abs(dividend) % abs(divisor)
     return float(remainder if dividend >= 0 else -remainder)
 

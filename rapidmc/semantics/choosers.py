@@ -1,0 +1,140 @@
+"""Choosers: how a step resolves nondeterminism, and the choices a check allows.
+
+``Chooser`` (run mode: first value, virtual time) and ``ScriptChooser``
+(check mode: follows a script of choice indices and records the domain
+sizes met, so ``next_script`` can enumerate every combination) are handed
+to the step function; ``CheckConfig`` holds what a check lets vary (answer
+domains, free inputs stored or chosen where read, merge points).
+"""
+from __future__ import annotations
+
+import itertools
+from typing import Optional
+
+from .machine import Machine
+from .program import Program
+
+
+class Chooser:
+    """Base chooser: how a step resolves nondeterminism and time."""
+
+    check_mode = False
+
+    def choose(self, name: str, domain: tuple, position: int):
+        return domain[0]
+
+    def tp_answers(self, kind: str) -> tuple:
+        raise NotImplementedError
+
+    def wait_times_out(self, m: Machine, max_time: float) -> bool:
+        return False
+
+    def advance_time(self, m: Machine, seconds: float) -> None:
+        pass
+
+    def free_inputs(self, program: Program) -> tuple:
+        return ()
+
+
+class ScriptChooser(Chooser):
+    """Check mode: follows a script of choice indices, records the domain sizes met."""
+
+    check_mode = True
+
+    def __init__(self, script: list, config: "CheckConfig", inputs: bool = True):
+        self.script = script
+        self.sizes: list[int] = []
+        self.config = config
+        self.inputs = inputs
+
+    def choose(self, name: str, domain: tuple, position: int):
+        self.sizes.append(len(domain))
+        if position < len(self.script):
+            return domain[self.script[position]]
+        return domain[0]
+
+    def tp_answers(self, kind: str) -> tuple:
+        if kind == "TPReadFK":
+            return self.config.fk_answers
+        return self.config.tp_answers
+
+    def wait_times_out(self, m: Machine, max_time: float) -> bool:
+        return m.choose("timeout", (False, True))
+
+    def free_inputs(self, program: Program) -> tuple:
+        return self.config.free_inputs if self.inputs else ()
+
+    def next_script(self) -> Optional[list]:
+        return next_script(self.script, self.sizes)
+
+
+def next_script(script: list, sizes: list) -> Optional[list]:
+    """The script after ``script``, whose run met choices of ``sizes`` values: the last
+    choice that has a next value takes it, the choices before it stay, those after it
+    start again (None: every combination done)."""
+    known = len(script)
+    for i in range(len(sizes) - 1, -1, -1):
+        current = script[i] if i < known else 0
+        if current + 1 < sizes[i]:
+            return script[:i] + [0] * (i - known) + [current + 1]
+    return None
+
+
+class CheckConfig:
+    """Model-checking choices: answer domains and which inputs are free."""
+
+    def __init__(self, program: Program, tp_answers=(1.0, 2.0, 3.0),
+                 fk_answers=(1.0, 2.0, 3.0, 4.0, 5.0), input_domains: Optional[dict] = None,
+                 observed: Optional[set] = None):
+        """``observed``: indices of the free inputs properties look at; the others are
+        chosen when read (see lazy_inputs).  None: every free input is stored."""
+        self.tp_answers = tuple(float(a) for a in tp_answers)
+        self.fk_answers = tuple(float(a) for a in fk_answers)
+        domains = input_domains or {}
+        free = []
+        lazy = {}
+        for signal in program.signals:
+            if signal.driven or not signal.kind.endswith("I"):
+                continue
+            if signal.kind == "DI":
+                domain = (0.0, 1.0)
+            elif signal.key in domains:
+                domain = tuple(domains[signal.key])
+            else:
+                continue
+            if observed is None or signal.index in observed:
+                free.append((signal.index, signal.name, domain))
+            else:
+                lazy[signal.index] = (signal.name, domain)
+        self.free_inputs = tuple(free)
+        self.lazy_inputs = lazy
+        # (routine, pc) -> visible, for instructions that join the step before them
+        # (reduction.merging); empty: one instruction per step
+        self.merge_points: dict = {}
+        self._merge_table = None         # (merge_points, program, table): see merge_table
+        self.fused = None                # (merge_points, program, routines): fused_step's
+        # every combination of free input values, in the order the chooser enumerates them
+        self.input_valuations = tuple(itertools.product(*(d for _, _, d in free)))
+        # per valuation: pvector.mset arguments and the label part naming the values
+        self.input_assignments = tuple(
+            tuple(x for (index, _, _), value in zip(free, valuation) for x in (index, value))
+            for valuation in self.input_valuations)
+        self.input_labels = tuple(
+            tuple((name, value) for (_, name, _), value in zip(free, valuation))
+            for valuation in self.input_valuations)
+
+    def merge_table(self, program: Program) -> dict:
+        """``merge_points`` with what a merged run looks up per pc: routine index ->
+        (kinds, code), where a kind gains 4 when its instruction may read a signal.
+        Derived once per merge points and program (copies of the config that change
+        ``merge_points`` derive their own)."""
+        cached = self._merge_table
+        if cached is not None and cached[0] is self.merge_points and cached[1] is program:
+            return cached[2]
+        table = {}
+        for index, kinds in self.merge_points.items():
+            code = program.routines[index].code
+            table[index] = (bytes(kind | (4 if instruction.reads_io else 0)
+                                  for kind, instruction in zip(kinds, code)), code)
+        self._merge_table = (self.merge_points, program, table)
+        return table

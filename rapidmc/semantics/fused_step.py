@@ -1,0 +1,284 @@
+"""Fused steps: a routine's simple instructions as one generated Python function.
+
+A plain state (``plain_step``) whose step runs only conditions (IF, WHILE,
+compact IF), GOTOs and assignments to data named directly, over
+expressions of constants, data, signals and operators, needs none of the
+step machinery: no ``Machine``, no instruction objects, no closures per
+operator.  ``fused_routine`` turns the routine's code into one function
+that runs such a step (the instruction at the program counter, then the
+merge points ``run_merged`` would join, decided with the same kinds) on
+the state's own data, with the expressions' sources (``Compiled.source``)
+written inline; free inputs chosen where read are chosen by ``_read`` as
+``InputView`` and ``ScriptChooser`` choose them, in the same order.
+
+Anything else bails out before a transition is returned: an instruction
+without a source that would run, a RAPID error (the error handling of the
+general step applies), a frame in a handler or counting RETRYs.  Then
+``fused_successors`` returns None and the plain driver takes the state;
+the generated code only builds new values, so nothing needs undoing.
+tests/test_plain_step.py compares the drivers on whole state graphs.
+"""
+from __future__ import annotations
+
+from typing import Optional
+
+from . import values
+from .choosers import CheckConfig, next_script
+from .errors import RapidError
+from .expressions import read_signal
+from .instructions import Action, Branch, ForInit, ForNext, Jump, TestDispatch
+from .state import Frame, State, Transition
+
+_new_tuple = tuple.__new__
+LEAF_SIZE = 4                 # pcs tested one by one at the leaves of the dispatch
+MAX_CODE = 4000               # longer routines are not fused (the source would be large)
+NEVER_JOINS = 3               # reduction.merging's kind NEVER
+
+
+class Fallback(Exception):
+    """Internal: this step needs the general machinery."""
+
+
+def _read(cx: list, index: int):
+    """A signal's value; a free input chosen where read is chosen once per instruction
+    (``cx``: signals, lazy inputs, this instruction's choices, the transition's
+    choices, the script, the domain sizes met; as ``InputView`` and ``ScriptChooser``).
+    Signal data not bound to a signal (a negative index) raises, as ``read_signal``."""
+    if index < 0:
+        read_signal(None, index)
+    entry = cx[1].get(index)
+    if entry is None:
+        return cx[0][index]
+    chosen = cx[2]
+    value = chosen.get(index)
+    if value is None:
+        name, domain = entry
+        choices = cx[3]
+        script = cx[4]
+        position = len(choices)
+        cx[5].append(len(domain))
+        value = domain[script[position]] if position < len(script) else domain[0]
+        choices.append((name, value))
+        chosen[index] = value
+    return value
+
+
+def _with(items: tuple, slot: int, value) -> tuple:
+    return items[:slot] + (value,) + items[slot + 1:]
+
+
+def _fallback():
+    raise Fallback
+
+
+HELPERS = {"_read": _read, "_with": _with, "_fallback": _fallback,
+           "_to_num": values.to_num, "_to_dnum": values.to_dnum, "_divide": values.divide,
+           "_int_div": values.int_div, "_int_mod": values.int_mod, "_concat": values.concat}
+
+
+class FusedRoutine:
+    """One routine's generated step function and the pcs it can start from."""
+
+    __slots__ = ("run", "starts", "kinds", "first_visible")
+
+    def __init__(self, run, starts: bytes, kinds: bytes, first_visible: bytes):
+        self.run = run                    # run(pc, store, locals_, cx, kinds, seen_visible)
+        self.starts = starts              # 1 where the instruction has a source
+        self.kinds = kinds                # merge kinds per pc (+4: may read a signal)
+        self.first_visible = first_visible  # run_merged's seen_visible for a step starting here
+
+
+def fused_routine(routine, entry: Optional[tuple]) -> Optional[FusedRoutine]:
+    """The fused form of ``routine`` (``entry``: its merge table entry, None when its
+    steps are not merged), or None when no instruction has a source."""
+    code = routine.code
+    blocks = [_block(pc, instruction) for pc, instruction in enumerate(code)]
+    if not any(blocks) or len(code) > MAX_CODE:
+        return None
+    names = dict(HELPERS)
+    for pc, instruction in enumerate(code):
+        names[f"_s{pc}"] = instruction.span
+        if blocks[pc] is not None:
+            names.update(_names(instruction))
+    lines = ["def run(pc, store, locals_, cx, kinds, seen_visible):",
+             "    spans = []",
+             "    choices = cx[3]",
+             "    while True:"]
+    _dispatch(lines, blocks, 0, len(code), "        ")
+    lines += ["        kind = kinds[pc]",
+              "        if kind & 2:",
+              "            break",
+              "        if kind & 1:",
+              "            if seen_visible:",
+              "                break",
+              "            seen_visible = True",
+              "        if kind & 4 and choices:",
+              "            break",
+              "    return pc, store, locals_, spans"]
+    exec(compile("\n".join(lines) + "\n", f"<fused {routine.name}>", "exec"), names)
+    if entry is None:
+        kinds = bytes([NEVER_JOINS]) * len(code)
+        first_visible = bytes([1]) * len(code)
+    else:
+        kinds = entry[0]
+        first_visible = bytes(1 if kind & 3 in (1, 3) else 0 for kind in kinds)
+    starts = bytes(1 if block is not None else 0 for block in blocks)
+    return FusedRoutine(names["run"], starts, kinds, first_visible)
+
+
+def _block(pc: int, instruction) -> Optional[list[str]]:
+    """The statements that execute ``instruction`` (and set the next pc), or None."""
+    kind = type(instruction)
+    fusion = instruction.fusion
+    lines = []
+    if instruction.reads_io:
+        lines.append("cx[2] = {}")               # each instruction reads inputs afresh
+    if kind is Jump:
+        lines.append(f"pc = {instruction.target}")
+    elif kind is Branch and fusion is not None:
+        lines.append(f"pc = {instruction.target_true} if {fusion.source} else "
+                     f"{instruction.target_false}")
+    elif kind is Action and fusion is not None:
+        where, slot, value = fusion
+        if where == "store":
+            lines.append(f"store = store.set({slot}, {value.source})")
+        else:
+            lines.append(f"locals_ = _with(locals_, {slot}, {value.source})")
+        lines.append(f"pc = {instruction.next}")
+    elif kind is ForInit and fusion is not None:
+        lines += _for_init(instruction, fusion)
+    elif kind is ForNext:
+        slot = instruction.slot
+        lines += [f"_value = _to_num(locals_[{slot}] + locals_[{slot + 2}])",
+                  f"_last = locals_[{slot + 1}]",
+                  f"_step = locals_[{slot + 2}]",
+                  f"locals_ = _with(locals_, {slot}, _value)",
+                  f"pc = {instruction.body} if (_value <= _last if _step >= 0 else "
+                  f"_value >= _last) else {instruction.exit}"]
+    elif kind is TestDispatch and fusion is not None:
+        subject, case_values = fusion
+        lines.append(f"_subject = {subject.source}")
+        keyword = "if"
+        for values_, (_, target) in zip(case_values, instruction.cases):
+            for value in values_:
+                lines += [f"{keyword} ({value.source}) == _subject:", f"    pc = {target}"]
+                keyword = "elif"
+        lines += [f"{keyword} True:" if keyword == "if" else "else:",
+                  f"    pc = {instruction.default}"]
+    else:
+        return None
+    lines.append(f"spans.append(_s{pc})")
+    return lines
+
+
+def _for_init(instruction, bounds: tuple) -> list[str]:
+    """FOR entry (``ForInit.run``): FROM, TO, STEP once (STEP by direction when not
+    given), the loop variable set, the interval tested."""
+    slot = instruction.slot
+    lines = [f"_first = {bounds[0].source}", f"_last = {bounds[1].source}"]
+    if len(bounds) == 3:
+        lines.append(f"_step = {bounds[2].source}")
+    else:
+        lines.append("_step = -1.0 if _first > _last else 1.0")
+    return lines + [f"locals_ = locals_[:{slot}] + (_first, _last, _step) + "
+                    f"locals_[{slot + 3}:]",
+                    "_low, _high = (_first, _last) if _first <= _last else (_last, _first)",
+                    f"pc = {instruction.next} if _low <= _first <= _high else "
+                    f"{instruction.exit}"]
+
+
+def _names(instruction) -> dict:
+    """The constants the sources of ``instruction`` name."""
+    fusion = instruction.fusion
+    kind = type(instruction)
+    if fusion is None:
+        return {}
+    if kind is Branch:
+        compiled = [fusion]
+    elif kind is Action:
+        compiled = [fusion[2]]
+    elif kind is ForInit:
+        compiled = list(fusion)
+    else:
+        compiled = [fusion[0], *(value for values_ in fusion[1] for value in values_)]
+    names = {}
+    for item in compiled:
+        names.update(item.names)
+    return names
+
+
+def _dispatch(lines: list, blocks: list, low: int, high: int, indent: str) -> None:
+    """Run the block of ``pc`` (in ``low..high-1``), by halving the range."""
+    if high - low <= LEAF_SIZE:
+        keyword = "if"
+        for pc in range(low, high):
+            lines.append(f"{indent}{keyword} pc == {pc}:")
+            body = blocks[pc] or ["_fallback()"]
+            lines.extend(f"{indent}    {line}" for line in body)
+            keyword = "elif"
+        lines.append(f"{indent}else:")
+        lines.append(f"{indent}    _fallback()")
+        return
+    middle = (low + high) // 2
+    lines.append(f"{indent}if pc < {middle}:")
+    _dispatch(lines, blocks, low, middle, indent + "    ")
+    lines.append(f"{indent}else:")
+    _dispatch(lines, blocks, middle, high, indent + "    ")
+
+
+def _fused(program, config: CheckConfig, routine: int) -> Optional[FusedRoutine]:
+    """The routine's fused form for this configuration's merge points (made when
+    first needed; a copy of the config that changes ``merge_points`` makes its own)."""
+    cached = config.fused
+    if cached is None or cached[0] is not config.merge_points or cached[1] is not program:
+        cached = config.fused = (config.merge_points, program, {})
+    routines = cached[2]
+    try:
+        return routines[routine]
+    except KeyError:
+        entry = config.merge_table(program).get(routine) if config.merge_points else None
+        fused = routines[routine] = fused_routine(program.routines[routine], entry)
+        return fused
+
+
+def fused_successors(program, state: State, config: CheckConfig) -> Optional[list[Transition]]:
+    """The transitions of a plain state (``plain_step.is_plain``) through its routine's
+    fused function, or None when the step needs the general machinery."""
+    frames = state[0]
+    frame = frames[-1]
+    if frame[3] or frame[5]:
+        return None                              # in a handler, or counting RETRYs
+    fused = _fused(program, config, frame[0])
+    if fused is None:
+        return None
+    pc = frame[1]
+    if not fused.starts[pc]:
+        return None
+    run = fused.run
+    kinds = fused.kinds
+    seen_visible = fused.first_visible[pc]
+    io = state[2]
+    lazy = config.lazy_inputs
+    store = state[1]
+    locals_ = frame[2]
+    below = frames[:-1]
+    head = frame[0]
+    tail = frame[3:]
+    rest = state[2:]
+    result = []
+    script = []
+    try:
+        while script is not None:
+            choices = []
+            sizes = []
+            after, new_store, new_locals, spans = run(
+                pc, store, locals_, [io, lazy, None, choices, script, sizes], kinds,
+                seen_visible)
+            new_frame = _new_tuple(Frame, (head, after, new_locals) + tail)
+            new_state = _new_tuple(State, (below + (new_frame,), new_store) + rest)
+            span = spans[0] if len(spans) == 1 else tuple(spans)
+            result.append(_new_tuple(Transition, (tuple(choices), span, new_state, "", False)))
+            script = next_script(script, sizes) if sizes else None
+    except (RapidError, Fallback):
+        return None
+    return result
