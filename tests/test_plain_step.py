@@ -55,20 +55,31 @@ def compare_drivers(program, props, reductions, limit: int = STATE_LIMIT) -> tup
     plain = fused = 0
     while todo and len(seen) < limit:
         state = todo.pop()
-        reference = general_successors(program, state, config)
-        assert_same(successors(program, state, config), reference)
+        reference = outcome(general_successors, program, state, config)
+        assert_same(outcome(successors, program, state, config), reference)
         if is_plain(program, state, config) and state.status == RUNNING:
             plain += 1
-            assert_same(plain_successors(program, state, config), reference)
-            fast = fused_successors(program, state, config)
+            assert_same(outcome(plain_successors, program, state, config), reference)
+            fast = outcome(fused_successors, program, state, config)
             if fast is not None:
                 fused += 1
                 assert_same(fast, reference)
+        if isinstance(reference, str):
+            continue                         # a routine rapidmc does not model stops here
         for _, after in system.successors(state):
             if after not in seen:
                 seen[after] = None
                 todo.append(after)
     return plain, fused
+
+
+def outcome(driver, program, state, config):
+    """The driver's transitions, or the text of the diagnostic that stops the step
+    (reaching a routine known by name only, RMC305): every driver must stop alike."""
+    try:
+        return driver(program, state, config)
+    except UserError as exc:
+        return str(exc)
 
 
 def assert_same(transitions: list, reference: list) -> None:
