@@ -90,6 +90,9 @@ class _CycleSearch:
     def _explore_from(self, initial_key: int):
         # One loop with local names on purpose: this is the hot path of the
         # checker, and attribute look-ups per edge would cost a third of it.
+        # The successors still to try of each state on the path are a list in
+        # reverse order (the next one last, taken with pop); ``number`` is kept
+        # long enough for every key pushed or met as a successor.
         number, dead, active = self.number, self.dead, self.active
         roots, root_accepting = self.roots, self.root_accepting
         accepting, width = self.product.accepting, self.product.width
@@ -97,60 +100,65 @@ class _CycleSearch:
         budget = self.budget
         path_keys: list[int] = []
         path_successors: list[list[int]] = []
-        path_positions: list[int] = []
+        transitions, max_depth = self.transitions, self.max_depth
 
         def push(key: int) -> None:
+            nonlocal transitions, max_depth
             index = len(dead)
-            if key >= len(number):
-                number.extend(UNSEEN * (key + 1 - len(number) + len(number) // 2))
             number[key] = index
             dead.append(0)
             active.append(index)
             roots.append(index)
             root_accepting.append(accepting[key % width])
             successors = successor_keys(key)
-            self.transitions += len(successors)
+            if successors:
+                transitions += len(successors)
+                last = max(successors)
+                if last >= len(number):
+                    number.extend(UNSEEN * (last + 1 - len(number) + len(number) // 2))
+                successors.reverse()
             path_keys.append(key)
             path_successors.append(successors)
-            path_positions.append(0)
-            if len(path_keys) > self.max_depth:
-                self.max_depth = len(path_keys)
+            if len(path_keys) > max_depth:
+                max_depth = len(path_keys)
 
+        if initial_key >= len(number):
+            number.extend(UNSEEN * (initial_key + 1 - len(number) + len(number) // 2))
         push(initial_key)
-        while path_keys:
-            successors = path_successors[-1]
-            position = path_positions[-1]
-            if position < len(successors):
-                path_positions[-1] = position + 1
-                key = successors[position]
-                index = number[key] if key < len(number) else -1
-                if index < 0:
-                    stored = len(dead)
-                    if not budget.may_store(stored):
-                        return None
-                    if stored >= budget.next_checkpoint and not budget.checkpoint(
-                            stored, self.transitions, len(path_keys)):
-                        return None
-                    push(key)
-                elif not dead[index]:
-                    merged = 0
-                    while roots[-1] > index:
+        try:
+            while path_keys:
+                successors = path_successors[-1]
+                if successors:
+                    key = successors.pop()
+                    index = number[key]
+                    if index < 0:
+                        stored = len(dead)
+                        if not budget.may_store(stored):
+                            return None
+                        if stored >= budget.next_checkpoint and not budget.checkpoint(
+                                stored, transitions, len(path_keys)):
+                            return None
+                        push(key)
+                    elif not dead[index]:
+                        merged = 0
+                        while roots[-1] > index:
+                            roots.pop()
+                            merged |= root_accepting.pop()
+                        root_accepting[-1] |= merged
+                        if root_accepting[-1]:
+                            return self._violation(path_keys)
+                else:
+                    key = path_keys.pop()
+                    path_successors.pop()
+                    index = number[key]
+                    if roots[-1] == index:
                         roots.pop()
-                        merged |= root_accepting.pop()
-                    root_accepting[-1] |= merged
-                    if root_accepting[-1]:
-                        return self._violation(path_keys)
-            else:
-                key = path_keys.pop()
-                path_successors.pop()
-                path_positions.pop()
-                index = number[key]
-                if roots[-1] == index:
-                    roots.pop()
-                    root_accepting.pop()
-                    while active and active[-1] >= index:
-                        dead[active.pop()] = 1
-        return None
+                        root_accepting.pop()
+                        while active and active[-1] >= index:
+                            dead[active.pop()] = 1
+            return None
+        finally:
+            self.transitions, self.max_depth = transitions, max_depth
 
     def _violation(self, path_keys: list[int]):
         """The DFS path up to the accepting component's root, and the component's keys."""

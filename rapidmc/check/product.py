@@ -27,6 +27,8 @@ class Product:
         self.initial_automaton_state = buchi.initial
         self.edges = [tuple((edge.positive, edge.negative, edge.target) for edge in out)
                       for out in buchi.edges]
+        # whether two edges out of a state lead to the same state (successors then repeat)
+        self.repeats = [len({target for _, _, target in out}) < len(out) for out in self.edges]
         self.accepting = bytearray(self.width)
         for q in buchi.accepting:
             self.accepting[q] = 1
@@ -58,18 +60,19 @@ class Product:
 
     def successor_keys(self, key: int) -> list[int]:
         """Distinct product successors of ``key`` in deterministic order (the hot path)."""
-        state_id, q = divmod(key, self.width)
-        out = self.edges[q]
         width = self.width
+        state_id, q = divmod(key, width)
+        out = self.edges[q]
+        targets = self.store.successor_ids(state_id)
         valuations = self.store.valuations
         keys = []
-        for target_id in self.store.successor_ids(state_id):
+        for target_id in targets:
             valuation = valuations[target_id]
             base = target_id * width
             for positive, negative, target in out:
                 if valuation & positive == positive and not valuation & negative:
                     keys.append(base + target)
-        if len(out) > 1:
+        if self.repeats[q]:
             return list(dict.fromkeys(keys))
         return keys
 

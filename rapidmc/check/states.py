@@ -27,7 +27,7 @@ EMPTY = -1
 FIRST_CAPACITY = 1 << 10
 IDENTITY_LIMIT = 1 << 10
 PRIMARY = 2          # components with an id per state; the others share one tail id
-                     # (a stored state: 3 ids, see _find_or_add)
+                     # (a stored state: 3 ids, see intern)
 
 
 class StateTable:
@@ -45,6 +45,8 @@ class StateTable:
         self._scalars: dict = {}               # one object per distinct float or string
         self._tails: dict[tuple, int] = {}     # ids of the components after PRIMARY -> tail id
         self._tail_values: list[tuple] = []
+        self._last_tail: tuple | None = None  # the tail parts last looked up, and their id
+        self._last_tail_id = EMPTY
         self._ids = array("i")                 # width component ids per state
         self._slots = array("i", [EMPTY]) * FIRST_CAPACITY
         self._count = 0
@@ -63,8 +65,11 @@ class StateTable:
 
     # --------------------------------------------------------------- lookups
     def intern(self, state: Hashable, add: bool = True) -> tuple[int, bool]:
-        """The id of ``state`` and whether it was new (id -1 when new and not ``add``)."""
-        if self._split is None:
+        """The id of ``state`` and whether it was new (id -1 when new and not ``add``).
+
+        (One function on purpose: it runs twice per explored transition.)"""
+        split = self._split
+        if split is None:
             state_id = self._whole.get(state)
             if state_id is not None:
                 return state_id, False
@@ -74,13 +79,45 @@ class StateTable:
             self._whole_states.append(state)
             self._count += 1
             return state_id, True
-        parts = self._component_ids(self._split(state))
+        parts = split(state)
+        if not self._width:
+            self._start(len(parts))
+        components = self._components
+        first = components[0].get(parts[0])
+        if first is None:
+            first = self._add_component(0, parts[0])
+        second = components[1].get(parts[1])
+        if second is None:
+            second = self._add_component(1, parts[1])
         tail = parts[PRIMARY:]
-        tail_id = self._tails.get(tail)
-        if tail_id is None:
-            tail_id = self._tails[tail] = len(self._tail_values)
-            self._tail_values.append(tail)
-        return self._find_or_add(parts[0], parts[1], tail_id, add)
+        # the rarely changing parts are most often those of the state interned last
+        # (compared element by element: the very same objects compare at once)
+        if tail == self._last_tail:
+            tail_id = self._last_tail_id
+        else:
+            tail_id = self._tail_id(tail)
+        slots, ids = self._slots, self._ids
+        mask = len(slots) - 1
+        position = hash((first, second, tail_id)) & mask
+        while True:
+            state_id = slots[position]
+            if state_id == EMPTY:
+                break
+            base = state_id * 3
+            if ids[base] == first and ids[base + 1] == second and ids[base + 2] == tail_id:
+                return state_id, False
+            position = (position + 1) & mask
+        if not add:
+            return EMPTY, True
+        state_id = self._count
+        slots[position] = state_id
+        ids.append(first)
+        ids.append(second)
+        ids.append(tail_id)
+        self._count += 1
+        if self._count * 2 > len(slots):
+            self._grow()
+        return state_id, True
 
     def __getitem__(self, state_id: int) -> Hashable:
         if self._split is None:
@@ -92,33 +129,41 @@ class StateTable:
         return self._join(tuple(values[i][part] for i, part in enumerate(parts)))
 
     # -------------------------------------------------------------- internals
-    def _component_ids(self, parts: tuple) -> tuple:
-        if not self._width:
-            self._width = len(parts)
-            self._components = [{} for _ in parts]
-            self._values = [[] for _ in parts]
-            self._identity = [{} for _ in parts]
+    def _start(self, width: int) -> None:
+        self._width = width
+        self._components = [{} for _ in range(width)]
+        self._values = [[] for _ in range(width)]
+        self._identity = [{} for _ in range(width)]
+
+    def _add_component(self, index: int, part) -> int:
+        """The id of a component not stored yet (stored now, its scalars shared)."""
+        values = self._values[index]
+        part = self._shared_scalars(part)
+        part_id = self._components[index][part] = len(values)
+        values.append(part)
+        if index >= PRIMARY and part_id < IDENTITY_LIMIT:
+            self._identity[index][id(part)] = part_id
+        return part_id
+
+    def _tail_id(self, tail: tuple) -> int:
+        """The id of the components after PRIMARY, together (remembered as the last tail)."""
         ids = []
-        append = ids.append
-        for index, part in enumerate(parts):
-            values = self._values[index]
-            if index >= PRIMARY:
-                # a rarely changing part handed on unchanged from a stored state is
-                # that very object: found by identity, without hashing its contents
-                part_id = self._identity[index].get(id(part), -1)
-                if part_id >= 0 and values[part_id] is part:
-                    append(part_id)
-                    continue
-            table = self._components[index]
-            part_id = table.get(part)
-            if part_id is None:
-                part = self._shared_scalars(part)
-                part_id = table[part] = len(values)
-                values.append(part)
-                if index >= PRIMARY and part_id < IDENTITY_LIMIT:
-                    self._identity[index][id(part)] = part_id
-            append(part_id)
-        return tuple(ids)
+        for index, part in enumerate(tail, PRIMARY):
+            # a rarely changing part handed on unchanged from a stored state is
+            # that very object: found by identity, without hashing its contents
+            part_id = self._identity[index].get(id(part), -1)
+            if part_id < 0 or self._values[index][part_id] is not part:
+                part_id = self._components[index].get(part)
+                if part_id is None:
+                    part_id = self._add_component(index, part)
+            ids.append(part_id)
+        key = tuple(ids)
+        tail_id = self._tails.get(key)
+        if tail_id is None:
+            tail_id = self._tails[key] = len(self._tail_values)
+            self._tail_values.append(key)
+        self._last_tail, self._last_tail_id = tail, tail_id
+        return tail_id
 
     def _shared_scalars(self, part):
         """A tuple part whose numbers and strings are the objects other parts hold already."""
@@ -127,31 +172,6 @@ class StateTable:
         scalars = self._scalars
         return tuple(scalars.setdefault(x, x) if type(x) is float or type(x) is str else x
                      for x in part)
-
-    def _find_or_add(self, first: int, second: int, tail: int,
-                     add: bool) -> tuple[int, bool]:
-        slots, ids = self._slots, self._ids
-        mask = len(slots) - 1
-        position = hash((first, second, tail)) & mask
-        while True:
-            state_id = slots[position]
-            if state_id == EMPTY:
-                break
-            base = state_id * 3
-            if ids[base] == first and ids[base + 1] == second and ids[base + 2] == tail:
-                return state_id, False
-            position = (position + 1) & mask
-        if not add:
-            return EMPTY, True
-        state_id = self._count
-        slots[position] = state_id
-        ids.append(first)
-        ids.append(second)
-        ids.append(tail)
-        self._count += 1
-        if self._count * 2 > len(slots):
-            self._grow()
-        return state_id, True
 
     def _grow(self) -> None:
         slots = array("i", [EMPTY]) * (len(self._slots) * 2)

@@ -7,6 +7,9 @@ Valuations are computed once per model state.  Successor ids are cached
 for recently expanded states, because the emptiness search expands the
 same model state once per automaton state it is paired with, often in
 quick succession (and the model's step function is the expensive part).
+The states last found new are kept as the model handed them over (up to
+``FRESH_STATES``): the depth-first search expands most of them soon after,
+and then needs not rebuild them from their components.
 """
 from __future__ import annotations
 
@@ -18,6 +21,7 @@ from .model import Label, TransitionSystem, Valuation, as_sequence, labelled_suc
 from .states import StateTable
 
 SUCCESSOR_CACHE_SIZE = 1 << 16
+FRESH_STATES = 1 << 12
 
 
 class ModelStore:
@@ -31,6 +35,7 @@ class ModelStore:
         self.valuations = array("I")
         self.deadlocked: set[int] = set()
         self._successor_cache: dict[int, tuple[int, ...]] = {}
+        self._fresh: dict[int, Hashable] = {}     # id -> new state, not expanded yet
 
     def __len__(self) -> int:
         return len(self.states)
@@ -43,12 +48,20 @@ class ModelStore:
                 return known
         state_id, new = self.states.intern(state)
         if new:
-            valuation = self.valuation(state)
-            try:
-                self.valuations.append(valuation)
-            except OverflowError:            # more than 32 atoms: Python ints
-                self.valuations = list(self.valuations) + [valuation]
+            self._added(state_id, state)
         return state_id
+
+    def _added(self, state_id: int, state: Hashable) -> None:
+        """Book-keeping for a state just stored: its valuation; kept as handed over."""
+        valuation = self.valuation(state)
+        try:
+            self.valuations.append(valuation)
+        except OverflowError:            # more than 32 atoms: Python ints
+            self.valuations = list(self.valuations) + [valuation]
+        fresh = self._fresh
+        if len(fresh) >= FRESH_STATES:
+            fresh.clear()
+        fresh[state_id] = state
 
     def initial_ids(self) -> list[int]:
         return _unique([self.intern(state) for state in self.system.initial_states()])
@@ -59,14 +72,22 @@ class ModelStore:
         cached = cache.get(state_id)
         if cached is not None:
             return cached
-        state = self.states[state_id]
+        state = self._fresh.pop(state_id, None)
+        if state is None:
+            state = self.states[state_id]
         successors = as_sequence(self.system.successors(state))
         if not successors:
             self.deadlocked.add(state_id)
             result: tuple[int, ...] = (state_id,)
         else:
-            intern = self.intern
-            result = tuple(_unique([intern(target) for _, target in successors]))
+            table_intern, added = self.states.intern, self._added
+            ids = []
+            for _, target in successors:
+                target_id, new = table_intern(target)
+                if new:
+                    added(target_id, target)
+                ids.append(target_id)
+            result = tuple(_unique(ids))
         if len(cache) >= SUCCESSOR_CACHE_SIZE:
             # Start afresh rather than evict one by one: deleting the oldest
             # entry of a dict makes each later next(iter(dict)) slower.
@@ -86,6 +107,6 @@ class ModelStore:
 
 def _unique(items: list[int]) -> list[int]:
     """``items`` without repeats, first occurrences kept in order."""
-    if len(items) < 2:
+    if len(items) < 2 or len(items) == 2 and items[0] != items[1]:
         return items
     return list(dict.fromkeys(items))
