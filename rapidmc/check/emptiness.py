@@ -115,7 +115,7 @@ class _CycleSearch:
                 transitions += len(successors)
                 last = max(successors)
                 if last >= len(number):
-                    number.extend(UNSEEN * (last + 1 - len(number) + len(number) // 2))
+                    number.extend(UNSEEN * (last + 1 - len(number) + len(number) // 8))
                 successors.reverse()
             path_keys.append(key)
             path_successors.append(successors)
@@ -123,7 +123,7 @@ class _CycleSearch:
                 max_depth = len(path_keys)
 
         if initial_key >= len(number):
-            number.extend(UNSEEN * (initial_key + 1 - len(number) + len(number) // 2))
+            number.extend(UNSEEN * (initial_key + 1 - len(number) + len(number) // 8))
         push(initial_key)
         try:
             while path_keys:

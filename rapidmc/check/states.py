@@ -5,17 +5,20 @@ A model may split its states into a few components (``split_state`` and
 rest).  Each distinct component is stored once, in a table of its own,
 and a state becomes the tuple of its component ids (SPIN's collapse
 compression): states that share their data but not their program counter
-share the stored data.  The first ``PRIMARY`` components (a model lists
-the most varying first) keep an id each; the ids of the others, which
-rarely change, are interned once more as one tail id.  The ids of all states lie in one
-``array`` (``width`` ints per state) and the index from key to state id is
-an open-addressing hash table in another ``array``, so a stored state
-costs a few dozen bytes instead of a Python tuple, a dict entry and an
-int object.  A model without ``split_state`` keeps its states whole in a
-dict.
+share the stored data.  The ids of the components after the first
+``PRIMARY`` ones, which rarely change, are interned once more as one tail
+id, and the first component's id with the tail id as one head id, so a
+stored state is two ints: its head id and the id of its second component
+(a RAPID state: global data, which varies most).  The ids of all states
+lie in one ``array`` and the index from key to state id is an
+open-addressing hash table in another ``array``, so a stored state costs
+a few dozen bytes instead of a Python tuple, a dict entry and an int
+object.  A model without ``split_state`` keeps its states whole in a dict.
 
 ``memory_bytes()`` adds up what the table holds (arrays, component
-tables and the components themselves, estimated from their Python sizes).
+tables and the components themselves, estimated from their Python sizes;
+objects Python shares anyway, such as small ints, ``None`` and booleans,
+are not counted).
 """
 from __future__ import annotations
 
@@ -26,8 +29,8 @@ from typing import Hashable
 EMPTY = -1
 FIRST_CAPACITY = 1 << 10
 IDENTITY_LIMIT = 1 << 10
-PRIMARY = 2          # components with an id per state; the others share one tail id
-                     # (a stored state: 3 ids, see intern)
+PRIMARY = 2          # components with an id of their own; the others share one tail id
+WIDTH = 2            # ints per stored state: head id (first component and tail), second
 
 
 class StateTable:
@@ -47,7 +50,9 @@ class StateTable:
         self._tail_values: list[tuple] = []
         self._last_tail: tuple | None = None  # the tail parts last looked up, and their id
         self._last_tail_id = EMPTY
-        self._ids = array("i")                 # width component ids per state
+        self._heads: dict[tuple, int] = {}     # (first component id, tail id) -> head id
+        self._head_values: list[tuple] = []
+        self._ids = array("i")                 # WIDTH ids per state
         self._slots = array("i", [EMPTY]) * FIRST_CAPACITY
         self._count = 0
 
@@ -96,24 +101,27 @@ class StateTable:
             tail_id = self._last_tail_id
         else:
             tail_id = self._tail_id(tail)
+        head_key = (first, tail_id)
+        head = self._heads.get(head_key)
+        if head is None:
+            head = self._heads[head_key] = len(self._head_values)
+            self._head_values.append(head_key)
         slots, ids = self._slots, self._ids
         mask = len(slots) - 1
-        position = hash((first, second, tail_id)) & mask
+        position = hash((head, second)) & mask
         while True:
             state_id = slots[position]
             if state_id == EMPTY:
                 break
-            base = state_id * 3
-            if ids[base] == first and ids[base + 1] == second and ids[base + 2] == tail_id:
+            if ids[2 * state_id] == head and ids[2 * state_id + 1] == second:
                 return state_id, False
             position = (position + 1) & mask
         if not add:
             return EMPTY, True
         state_id = self._count
         slots[position] = state_id
-        ids.append(first)
+        ids.append(head)
         ids.append(second)
-        ids.append(tail_id)
         self._count += 1
         if self._count * 2 > len(slots):
             self._grow()
@@ -122,9 +130,8 @@ class StateTable:
     def __getitem__(self, state_id: int) -> Hashable:
         if self._split is None:
             return self._whole_states[state_id]
-        ids = self._ids
-        base = state_id * (PRIMARY + 1)
-        parts = tuple(ids[base:base + PRIMARY]) + self._tail_values[ids[base + PRIMARY]]
+        first, tail_id = self._head_values[self._ids[2 * state_id]]
+        parts = (first, self._ids[2 * state_id + 1]) + self._tail_values[tail_id]
         values = self._values
         return self._join(tuple(values[i][part] for i, part in enumerate(parts)))
 
@@ -176,10 +183,9 @@ class StateTable:
     def _grow(self) -> None:
         slots = array("i", [EMPTY]) * (len(self._slots) * 2)
         mask = len(slots) - 1
-        ids, width = self._ids, PRIMARY + 1
+        ids = self._ids
         for state_id in range(self._count):
-            base = state_id * width
-            position = hash(tuple(ids[base:base + width])) & mask
+            position = hash((ids[2 * state_id], ids[2 * state_id + 1])) & mask
             while slots[position] != EMPTY:
                 position = (position + 1) & mask
             slots[position] = state_id
@@ -195,6 +201,7 @@ class StateTable:
                      for t, v in zip(self._components, self._values)) + \
             sum(sys.getsizeof(i) for i in self._identity) + sys.getsizeof(self._scalars) + \
             sys.getsizeof(self._tails) + sum(_size(t) for t in self._tail_values) + \
+            sys.getsizeof(self._heads) + sum(_size(h) for h in self._head_values) + \
             sum(sys.getsizeof(x) for x in self._scalars)
         components = sum(_component_size(value) for values in self._values for value in values)
         return (self._ids.buffer_info()[1] * self._ids.itemsize +
@@ -213,6 +220,8 @@ def _component_size(part) -> int:
 
 def _size(value, seen: set | None = None) -> int:
     """Python bytes of ``value`` and what it holds (shared parts counted once per call)."""
+    if value is None or type(value) is bool or type(value) is int and -5 <= value <= 256:
+        return 0                               # objects Python keeps once for all uses
     seen = set() if seen is None else seen
     if id(value) in seen:
         return 0

@@ -13,6 +13,7 @@ and then needs not rebuild them from their components.
 """
 from __future__ import annotations
 
+import sys
 from typing import Hashable, Sequence
 
 from array import array
@@ -22,6 +23,7 @@ from .states import StateTable
 
 SUCCESSOR_CACHE_SIZE = 1 << 16
 FRESH_STATES = 1 << 12
+VALUATION_TYPES = ("B", "H", "I", "Q")     # array types for up to 8, 16, 32, 64 atoms
 
 
 class ModelStore:
@@ -32,7 +34,7 @@ class ModelStore:
         self.valuation = valuation
         self.states = StateTable(system)
         self._known = None if self.states.collapsed else self.states.known_ids.get
-        self.valuations = array("I")
+        self.valuations = array(VALUATION_TYPES[0])    # the narrowest that holds them
         self.deadlocked: set[int] = set()
         self._successor_cache: dict[int, tuple[int, ...]] = {}
         self._fresh: dict[int, Hashable] = {}     # id -> new state, not expanded yet
@@ -56,8 +58,8 @@ class ModelStore:
         valuation = self.valuation(state)
         try:
             self.valuations.append(valuation)
-        except OverflowError:            # more than 32 atoms: Python ints
-            self.valuations = list(self.valuations) + [valuation]
+        except OverflowError:
+            self.valuations = _wider(self.valuations, valuation)
         fresh = self._fresh
         if len(fresh) >= FRESH_STATES:
             fresh.clear()
@@ -97,12 +99,27 @@ class ModelStore:
 
     def memory_bytes(self) -> int:
         """Bytes of the stored states and their valuations (the successor cache excluded)."""
-        return self.states.memory_bytes() + len(self.valuations) * self.valuations.itemsize
+        valuations = self.valuations
+        if isinstance(valuations, list):        # an int object and a slot per state
+            return self.states.memory_bytes() + sum(sys.getsizeof(v) + 8 for v in valuations)
+        return self.states.memory_bytes() + len(valuations) * valuations.itemsize
 
     def labelled_successor_ids(self, state_id: int) -> list[tuple[Label, int]]:
         """Every (label, successor id) in model order, ``STUTTER`` for a deadlock (slow path)."""
         transitions: Sequence = labelled_successors(self.system, self.states[state_id])
         return [(label, self.intern(target)) for label, target in transitions]
+
+
+def _wider(valuations, valuation: int):
+    """``valuations`` plus ``valuation`` in the narrowest array type that holds all
+    (Python ints beyond 64 atoms)."""
+    for typecode in VALUATION_TYPES:
+        wider = array(typecode)
+        if valuation < 1 << 8 * wider.itemsize:
+            wider.fromlist(list(valuations))
+            wider.append(valuation)
+            return wider
+    return list(valuations) + [valuation]
 
 
 def _unique(items: list[int]) -> list[int]:
