@@ -5,18 +5,7 @@ import pytest
 
 from rapidmc.check.store import ModelStore
 
-
-class Chain:
-    """States 0..n-1, each leading to the next (the last to itself)."""
-
-    def __init__(self, n: int):
-        self.n = n
-
-    def initial_states(self):
-        return (0,)
-
-    def successors(self, state):
-        return (("next", min(state + 1, self.n - 1)),)
+from test_engine_models import Chain
 
 
 @pytest.mark.parametrize("values", [
