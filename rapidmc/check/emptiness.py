@@ -90,16 +90,20 @@ class _CycleSearch:
     def _explore_from(self, initial_key: int):
         # One loop with local names on purpose: this is the hot path of the
         # checker, and attribute look-ups per edge would cost a third of it.
-        # The successors still to try of each state on the path are a list in
-        # reverse order (the next one last, taken with pop); ``number`` is kept
-        # long enough for every key pushed or met as a successor.
+        # The successors still to try of all states on the path lie on one stack,
+        # ``pending``, each state's in reverse order above those of the state
+        # below it (from ``path_starts``): no list per state, which would live as
+        # long as the state stays on the path and cost Python's garbage collector
+        # a look at each one in every full collection.  ``number`` is kept long
+        # enough for every key pushed or met as a successor.
         number, dead, active = self.number, self.dead, self.active
         roots, root_accepting = self.roots, self.root_accepting
         accepting, width = self.product.accepting, self.product.width
         successor_keys = self.product.successor_keys
         budget = self.budget
         path_keys: list[int] = []
-        path_successors: list[list[int]] = []
+        path_starts: list[int] = []
+        pending: list[int] = []
         transitions, max_depth = self.transitions, self.max_depth
 
         def push(key: int) -> None:
@@ -111,14 +115,15 @@ class _CycleSearch:
             roots.append(index)
             root_accepting.append(accepting[key % width])
             successors = successor_keys(key)
+            path_starts.append(len(pending))
             if successors:
                 transitions += len(successors)
                 last = max(successors)
                 if last >= len(number):
                     number.extend(UNSEEN * (last + 1 - len(number) + len(number) // 8))
                 successors.reverse()
+                pending.extend(successors)
             path_keys.append(key)
-            path_successors.append(successors)
             if len(path_keys) > max_depth:
                 max_depth = len(path_keys)
 
@@ -127,9 +132,8 @@ class _CycleSearch:
         push(initial_key)
         try:
             while path_keys:
-                successors = path_successors[-1]
-                if successors:
-                    key = successors.pop()
+                if len(pending) > path_starts[-1]:
+                    key = pending.pop()
                     index = number[key]
                     if index < 0:
                         stored = len(dead)
@@ -149,7 +153,7 @@ class _CycleSearch:
                             return self._violation(path_keys)
                 else:
                     key = path_keys.pop()
-                    path_successors.pop()
+                    path_starts.pop()
                     index = number[key]
                     if roots[-1] == index:
                         roots.pop()
