@@ -17,6 +17,8 @@ from typing import Hashable, Optional
 from .result import LassoStep
 from .store import ModelStore
 
+MOVES_KEPT = 1 << 12        # remembered valuations per automaton state
+
 
 class Product:
     """Model × automaton over a ``ModelStore``; see the module docstring."""
@@ -27,8 +29,8 @@ class Product:
         self.initial_automaton_state = buchi.initial
         self.edges = [tuple((edge.positive, edge.negative, edge.target) for edge in out)
                       for out in buchi.edges]
-        # whether two edges out of a state lead to the same state (successors then repeat)
-        self.repeats = [len({target for _, _, target in out}) < len(out) for out in self.edges]
+        # per automaton state: valuation -> the distinct targets of the edges it enables
+        self._moves: list[dict[int, tuple[int, ...]]] = [{} for _ in self.edges]
         self.accepting = bytearray(self.width)
         for q in buchi.accepting:
             self.accepting[q] = 1
@@ -48,6 +50,14 @@ class Product:
         return [target for positive, negative, target in self.edges[automaton_state]
                 if valuation & positive == positive and not valuation & negative]
 
+    def moves(self, automaton_state: int, valuation: int) -> tuple[int, ...]:
+        """``targets`` without repeats, remembered per valuation (up to ``MOVES_KEPT``)."""
+        moves = self._moves[automaton_state]
+        if len(moves) >= MOVES_KEPT:
+            moves.clear()
+        found = moves[valuation] = tuple(dict.fromkeys(self.targets(automaton_state, valuation)))
+        return found
+
     def initial_keys(self) -> list[int]:
         if not self.edges:
             return []
@@ -62,18 +72,17 @@ class Product:
         """Distinct product successors of ``key`` in deterministic order (the hot path)."""
         width = self.width
         state_id, q = divmod(key, width)
-        out = self.edges[q]
-        targets = self.store.successor_ids(state_id)
+        known = self._moves[q]
         valuations = self.store.valuations
         keys = []
-        for target_id in targets:
+        for target_id in self.store.successor_ids(state_id):
             valuation = valuations[target_id]
+            targets = known.get(valuation)
+            if targets is None:
+                targets = self.moves(q, valuation)
             base = target_id * width
-            for positive, negative, target in out:
-                if valuation & positive == positive and not valuation & negative:
-                    keys.append(base + target)
-        if self.repeats[q]:
-            return list(dict.fromkeys(keys))
+            for target in targets:
+                keys.append(base + target)
         return keys
 
     def labelled_successor_keys(self, key: int) -> list[tuple[Hashable, int]]:
