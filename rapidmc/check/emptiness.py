@@ -101,6 +101,7 @@ class _CycleSearch:
         accepting, width = self.product.accepting, self.product.width
         successor_keys = self.product.successor_keys
         budget = self.budget
+        max_states = budget.max_states
         path_keys: list[int] = []
         path_starts: list[int] = []
         pending: list[int] = []
@@ -137,7 +138,7 @@ class _CycleSearch:
                     index = number[key]
                     if index < 0:
                         stored = len(dead)
-                        if not budget.may_store(stored):
+                        if stored >= max_states and not budget.may_store(stored):
                             return None
                         if stored >= budget.next_checkpoint and not budget.checkpoint(
                                 stored, transitions, len(path_keys)):
