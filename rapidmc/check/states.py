@@ -48,6 +48,7 @@ class StateTable:
         self._scalars: dict = {}               # one object per distinct float or string
         self._tails: dict[tuple, int] = {}     # ids of the components after PRIMARY -> tail id
         self._tail_values: list[tuple] = []
+        self._tail_parts: list[tuple] = []     # by tail id: the stored parts themselves
         self._last_tail: tuple | None = None  # the tail parts last looked up, and their id
         self._last_tail_id = EMPTY
         self._heads: dict[tuple, int] = {}     # (first component id, tail id) -> head id
@@ -131,9 +132,9 @@ class StateTable:
         if self._split is None:
             return self._whole_states[state_id]
         first, tail_id = self._head_values[self._ids[2 * state_id]]
-        parts = (first, self._ids[2 * state_id + 1]) + self._tail_values[tail_id]
         values = self._values
-        return self._join(tuple(values[i][part] for i, part in enumerate(parts)))
+        return self._join((values[0][first], values[1][self._ids[2 * state_id + 1]]) +
+                          self._tail_parts[tail_id])
 
     # -------------------------------------------------------------- internals
     def _start(self, width: int) -> None:
@@ -169,6 +170,8 @@ class StateTable:
         if tail_id is None:
             tail_id = self._tails[key] = len(self._tail_values)
             self._tail_values.append(key)
+            self._tail_parts.append(tuple(self._values[index][part_id]
+                                          for index, part_id in enumerate(key, PRIMARY)))
         self._last_tail, self._last_tail_id = tail, tail_id
         return tail_id
 
@@ -201,6 +204,7 @@ class StateTable:
                      for t, v in zip(self._components, self._values)) + \
             sum(sys.getsizeof(i) for i in self._identity) + sys.getsizeof(self._scalars) + \
             sys.getsizeof(self._tails) + sum(_size(t) for t in self._tail_values) + \
+            sys.getsizeof(self._tail_parts) + sum(sys.getsizeof(t) for t in self._tail_parts) + \
             sys.getsizeof(self._heads) + sum(_size(h) for h in self._head_values) + \
             sum(sys.getsizeof(x) for x in self._scalars)
         components = sum(_component_size(value) for values in self._values for value in values)

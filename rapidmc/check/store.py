@@ -14,6 +14,7 @@ and then needs not rebuild them from their components.
 from __future__ import annotations
 
 import sys
+from itertools import islice
 from typing import Hashable, Sequence
 
 from array import array
@@ -22,7 +23,7 @@ from .model import Label, TransitionSystem, Valuation, as_sequence, labelled_suc
 from .states import StateTable
 
 SUCCESSOR_CACHE_SIZE = 1 << 16
-FRESH_STATES = 1 << 12
+FRESH_STATES = 1 << 13
 VALUATION_TYPES = ("B", "H", "I", "Q")     # array types for up to 8, 16, 32, 64 atoms
 
 
@@ -61,8 +62,8 @@ class ModelStore:
         except OverflowError:
             self.valuations = _wider(self.valuations, valuation)
         fresh = self._fresh
-        if len(fresh) >= FRESH_STATES:
-            fresh.clear()
+        if len(fresh) >= FRESH_STATES:        # keep the newer half: expanded soonest
+            fresh = self._fresh = dict(islice(fresh.items(), FRESH_STATES // 2, None))
         fresh[state_id] = state
 
     def initial_ids(self) -> list[int]:
