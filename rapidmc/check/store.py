@@ -30,7 +30,8 @@ VALUATION_TYPES = ("B", "H", "I", "Q")     # array types for up to 8, 16, 32, 64
 class ModelStore:
     """Interning of model states: ``intern(state) -> id``; see the module docstring."""
 
-    def __init__(self, system: TransitionSystem, valuation: Valuation):
+    def __init__(self, system: TransitionSystem, valuation: Valuation,
+                 keep_new: int = FRESH_STATES):
         self.system = system
         self.valuation = valuation
         self.states = StateTable(system)
@@ -39,6 +40,7 @@ class ModelStore:
         self.deadlocked: set[int] = set()
         self._successor_cache: dict[int, tuple[int, ...]] = {}
         self._fresh: dict[int, Hashable] = {}     # id -> new state, not expanded yet
+        self._keep_new = keep_new                  # at most that many (0: none)
 
     def __len__(self) -> int:
         return len(self.states)
@@ -61,9 +63,11 @@ class ModelStore:
             self.valuations.append(valuation)
         except OverflowError:
             self.valuations = _wider(self.valuations, valuation)
+        if not self._keep_new:
+            return
         fresh = self._fresh
-        if len(fresh) >= FRESH_STATES:        # keep the newer half: expanded soonest
-            fresh = self._fresh = dict(islice(fresh.items(), FRESH_STATES // 2, None))
+        if len(fresh) >= self._keep_new:      # keep the newer half: expanded soonest
+            fresh = self._fresh = dict(islice(fresh.items(), len(fresh) // 2 + 1, None))
         fresh[state_id] = state
 
     def initial_ids(self) -> list[int]:
