@@ -14,7 +14,8 @@ may need a second pass).
 Memory per stored product state: four bytes in ``number`` (an array
 indexed by product key: model state ids are dense, so product keys are
 too), one byte in ``dead`` and, while live, one slot in ``active``.  No
-Python recursion: the DFS path is kept in three parallel lists.
+Python recursion: the DFS path is a list of keys, and the successors still
+to try of all its states lie on one stack of ints.
 
 Reference: J.-M. Couvreur, "On-the-fly verification of linear temporal
 logic", FM 1999; the single-acceptance-set form of Geldenhuys & Valmari.

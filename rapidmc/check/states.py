@@ -30,7 +30,6 @@ EMPTY = -1
 FIRST_CAPACITY = 1 << 10
 IDENTITY_LIMIT = 1 << 10
 PRIMARY = 2          # components with an id of their own; the others share one tail id
-WIDTH = 2            # ints per stored state: head id (first component and tail), second
 
 
 class StateTable:
@@ -53,7 +52,7 @@ class StateTable:
         self._last_tail_id = EMPTY
         self._heads: dict[tuple, int] = {}     # (first component id, tail id) -> head id
         self._head_values: list[tuple] = []
-        self._ids = array("i")                 # WIDTH ids per state
+        self._ids = array("i")                 # per state: head id, second component id
         self._slots = array("i", [EMPTY]) * FIRST_CAPACITY
         self._count = 0
 
