@@ -35,7 +35,8 @@ from .semantics.errors import RapidError
 from .semantics.expressions import Compiled, ExpressionCompiler, constant
 from .semantics.machine import Machine
 from .semantics.program import Program
-from .semantics.scope import LOCAL_DATA, ROUTINE, SIGNAL, Scope, Symbol
+from .semantics.scope import (CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, Scope,
+                              Symbol)
 from .semantics.state import ENDED, FAILED, State
 from .semantics.types import BOOL, NUM, POS, ROBTARGET, STRING, RapidType
 
@@ -199,6 +200,11 @@ class AtomCompiler:
                     self.observes_signal_data = True
 
     def compile(self, atom: str, where: ast.Span) -> Callable:
+        return self._compile_atom(atom, where)[0]
+
+    def _compile_atom(self, atom: str, where: ast.Span) -> tuple[Callable, bool]:
+        """The atom's ``fn(machine) -> bool`` and whether it reads only global data and
+        signals (``reads_data_only``)."""
         expr = parse_atom_expression(atom, where)
         self._note_signals(expr)
         try:
@@ -220,7 +226,7 @@ class AtomCompiler:
                 return bool(fn(m))
             except RapidError:
                 return False
-        return safe
+        return safe, reads_data_only(expr, self.scope)
 
     def _operator_notes(self, atom: str, where: ast.Span, diagnostics) -> tuple[str, ...]:
         """For an unknown bare name like ``GFa``: Spot's reading, spaced (``G F a``)."""
@@ -237,19 +243,72 @@ class AtomCompiler:
     def _compile(self, expr: ast.Expr) -> Compiled:
         return _AtomExpressions(self).value(expr)
 
-    def valuation(self, atoms: tuple[str, ...], spans: dict) -> Callable[[State], int]:
-        """``fn(state) -> int``: bit i set when atom i holds."""
-        fns = [self.compile(atom, spans.get(atom, ast.Span("<formula>", 1, 1))) for atom in atoms]
+    def valuation(self, atoms: tuple[str, ...], spans: dict,
+                  memo: bool = True) -> Callable[[State], int]:
+        """``fn(state) -> int``: bit i set when atom i holds.
+
+        The atoms that read only global data and signals (most do) are
+        evaluated once per distinct (global data, signals) pair and remembered
+        (``memo``; up to ``VALUATION_MEMO_SIZE`` pairs): states that differ only in
+        their program counter share the bits.  The others are evaluated in every state.
+        """
+        compiled = [self._compile_atom(atom, spans.get(atom, ast.Span("<formula>", 1, 1)))
+                    for atom in atoms]
         program = self.program
+        if not memo:
+            return _evaluator(program, [(1 << i, fn) for i, (fn, _) in enumerate(compiled)])
+        on_data = _evaluator(program, [(1 << i, fn) for i, (fn, data) in enumerate(compiled)
+                                       if data])
+        elsewhere = [(1 << i, fn) for i, (fn, data) in enumerate(compiled) if not data]
+        rest = _evaluator(program, elsewhere) if elsewhere else None
+        remembered: dict = {}
 
         def valuation(state: State) -> int:
-            m = Machine(program, state, None)
-            bits = 0
-            for i, fn in enumerate(fns):
-                if fn(m):
-                    bits |= 1 << i
-            return bits
+            key = (state.store, state.io)
+            bits = remembered.get(key)
+            if bits is None:
+                if len(remembered) >= VALUATION_MEMO_SIZE:
+                    remembered.clear()
+                bits = remembered[key] = on_data(state)
+            return bits if rest is None else bits | rest(state)
         return valuation
+
+
+VALUATION_MEMO_SIZE = 1 << 14
+
+
+def _evaluator(program: Program, atoms: list[tuple[int, Callable]]) -> Callable[[State], int]:
+    """``fn(state) -> int``: the bits of ``atoms`` (bit, fn(machine)) that hold in ``state``."""
+    def evaluate(state: State) -> int:
+        m = Machine(program, state, None)
+        bits = 0
+        for bit, fn in atoms:
+            if fn(m):
+                bits |= bit
+        return bits
+    return evaluate
+
+
+# expression nodes whose value depends on nothing but their operands
+_DATA_NODES = (ast.NumLiteral, ast.StringLiteral, ast.BoolLiteral, ast.Index, ast.Component,
+               ast.Unary, ast.Binary, ast.Aggregate)
+_DATA_SYMBOLS = (GLOBAL_DATA, CONSTANT, SIGNAL)
+
+
+def reads_data_only(expr: ast.Expr, scope: Scope) -> bool:
+    """Whether ``expr`` reads nothing of a state but its global data and signals.
+
+    Conservative: any function call (location and robot atoms, user functions),
+    routine data, ERRNO/INTNO or a name not found makes it False."""
+    from .semantics.configured_signals import _walk_expression
+    for node in _walk_expression(expr):
+        if isinstance(node, ast.NameRef):
+            symbol = scope.lookup(node.name.key)
+            if symbol is None or symbol.kind not in _DATA_SYMBOLS:
+                return False
+        elif not isinstance(node, _DATA_NODES):
+            return False
+    return True
 
 
 class _AtomExpressions(ExpressionCompiler):

@@ -7,13 +7,15 @@ integer comparison per state.  The distance between checkpoints adapts to
 the speed of the model (a RAPID step function may be a thousand times
 slower than a toy model) so that the clock is read about ten times a
 second: often enough for the progress line and the time limit, rarely
-enough to cost nothing.
+enough to cost nothing.  A checkpoint also puts the objects the search has
+kept so far out of the cycle collector's reach (``collector``).
 """
 from __future__ import annotations
 
 import time
 from typing import Optional
 
+from .collector import freeze_survivors
 from .progress import Progress
 
 DEFAULT_MAX_STATES = 1_000_000
@@ -48,6 +50,7 @@ class SearchBudget:
 
     def checkpoint(self, stored: int, transitions: int, depth: int) -> bool:
         """Report progress; False (and ``reason`` set) once the time limit is over."""
+        freeze_survivors()
         now = time.monotonic()
         self._adapt_distance(now - self.last_checkpoint)
         self.last_checkpoint = now

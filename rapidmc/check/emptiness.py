@@ -14,7 +14,8 @@ may need a second pass).
 Memory per stored product state: four bytes in ``number`` (an array
 indexed by product key: model state ids are dense, so product keys are
 too), one byte in ``dead`` and, while live, one slot in ``active``.  No
-Python recursion: the DFS path is kept in three parallel lists.
+Python recursion: the DFS path is a list of keys, and the successors still
+to try of all its states lie on one stack of ints.
 
 Reference: J.-M. Couvreur, "On-the-fly verification of linear temporal
 logic", FM 1999; the single-acceptance-set form of Geldenhuys & Valmari.
@@ -90,67 +91,80 @@ class _CycleSearch:
     def _explore_from(self, initial_key: int):
         # One loop with local names on purpose: this is the hot path of the
         # checker, and attribute look-ups per edge would cost a third of it.
+        # The successors still to try of all states on the path lie on one stack,
+        # ``pending``, each state's in reverse order above those of the state
+        # below it (from ``path_starts``): no list per state, which would live as
+        # long as the state stays on the path and cost Python's garbage collector
+        # a look at each one in every full collection.  ``number`` is kept long
+        # enough for every key pushed or met as a successor.
         number, dead, active = self.number, self.dead, self.active
         roots, root_accepting = self.roots, self.root_accepting
         accepting, width = self.product.accepting, self.product.width
         successor_keys = self.product.successor_keys
         budget = self.budget
+        max_states = budget.max_states
         path_keys: list[int] = []
-        path_successors: list[list[int]] = []
-        path_positions: list[int] = []
+        path_starts: list[int] = []
+        pending: list[int] = []
+        transitions, max_depth = self.transitions, self.max_depth
 
         def push(key: int) -> None:
+            nonlocal transitions, max_depth
             index = len(dead)
-            if key >= len(number):
-                number.extend(UNSEEN * (key + 1 - len(number) + len(number) // 2))
             number[key] = index
             dead.append(0)
             active.append(index)
             roots.append(index)
             root_accepting.append(accepting[key % width])
             successors = successor_keys(key)
-            self.transitions += len(successors)
+            path_starts.append(len(pending))
+            if successors:
+                transitions += len(successors)
+                last = max(successors)
+                if last >= len(number):
+                    number.extend(UNSEEN * (last + 1 - len(number) + len(number) // 8))
+                successors.reverse()
+                pending.extend(successors)
             path_keys.append(key)
-            path_successors.append(successors)
-            path_positions.append(0)
-            if len(path_keys) > self.max_depth:
-                self.max_depth = len(path_keys)
+            if len(path_keys) > max_depth:
+                max_depth = len(path_keys)
 
+        if initial_key >= len(number):
+            number.extend(UNSEEN * (initial_key + 1 - len(number) + len(number) // 8))
         push(initial_key)
-        while path_keys:
-            successors = path_successors[-1]
-            position = path_positions[-1]
-            if position < len(successors):
-                path_positions[-1] = position + 1
-                key = successors[position]
-                index = number[key] if key < len(number) else -1
-                if index < 0:
-                    stored = len(dead)
-                    if not budget.may_store(stored):
-                        return None
-                    if stored >= budget.next_checkpoint and not budget.checkpoint(
-                            stored, self.transitions, len(path_keys)):
-                        return None
-                    push(key)
-                elif not dead[index]:
-                    merged = 0
-                    while roots[-1] > index:
+        try:
+            while path_keys:
+                if len(pending) > path_starts[-1]:
+                    key = pending.pop()
+                    index = number[key]
+                    if index < 0:
+                        stored = len(dead)
+                        if stored >= max_states and not budget.may_store(stored):
+                            return None
+                        if stored >= budget.next_checkpoint and not budget.checkpoint(
+                                stored, transitions, len(path_keys)):
+                            return None
+                        push(key)
+                    elif not dead[index]:
+                        merged = 0
+                        while roots[-1] > index:
+                            roots.pop()
+                            merged |= root_accepting.pop()
+                        root_accepting[-1] |= merged
+                        if root_accepting[-1]:
+                            return self._violation(path_keys)
+                else:
+                    key = path_keys.pop()
+                    path_starts.pop()
+                    index = number[key]
+                    if roots[-1] == index:
                         roots.pop()
-                        merged |= root_accepting.pop()
-                    root_accepting[-1] |= merged
-                    if root_accepting[-1]:
-                        return self._violation(path_keys)
-            else:
-                key = path_keys.pop()
-                path_successors.pop()
-                path_positions.pop()
-                index = number[key]
-                if roots[-1] == index:
-                    roots.pop()
-                    root_accepting.pop()
-                    while active and active[-1] >= index:
-                        dead[active.pop()] = 1
-        return None
+                        root_accepting.pop()
+                        while active and active[-1] >= index:
+                            dead[active.pop()] = 1
+            return None
+        finally:
+            self.transitions, self.max_depth = transitions, max_depth
 
     def _violation(self, path_keys: list[int]):
         """The DFS path up to the accepting component's root, and the component's keys."""

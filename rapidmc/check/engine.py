@@ -16,6 +16,7 @@ from __future__ import annotations
 from typing import Optional
 
 from .budget import DEFAULT_MAX_STATES, SearchBudget
+from .collector import frozen_while_searching
 from .emptiness import search_accepting_cycle
 from .hashed import hashed_accepting_cycle, visited_sets
 from .model import TransitionSystem, Valuation
@@ -36,8 +37,9 @@ def check_property(system: TransitionSystem, buchi, valuation: Valuation, *,
     (``hashed``: visited states remembered by hash; no violation found is UNKNOWN).
     """
     budget = SearchBudget(max_states, max_seconds, progress)
-    if storage is not None:
-        outer, inner = visited_sets(storage, 2)
-        return hashed_accepting_cycle(system, buchi, valuation, outer, inner, budget)
-    product = Product(ModelStore(system, valuation), buchi)
-    return search_accepting_cycle(product, budget)
+    with frozen_while_searching():
+        if storage is not None:
+            outer, inner = visited_sets(storage, 2)
+            return hashed_accepting_cycle(system, buchi, valuation, outer, inner, budget)
+        product = Product(ModelStore(system, valuation), buchi)
+        return search_accepting_cycle(product, budget)

@@ -17,6 +17,8 @@ from typing import Hashable, Optional
 from .result import LassoStep
 from .store import ModelStore
 
+MOVES_KEPT = 1 << 12        # remembered valuations per automaton state
+
 
 class Product:
     """Model × automaton over a ``ModelStore``; see the module docstring."""
@@ -27,6 +29,8 @@ class Product:
         self.initial_automaton_state = buchi.initial
         self.edges = [tuple((edge.positive, edge.negative, edge.target) for edge in out)
                       for out in buchi.edges]
+        # per automaton state: valuation -> the distinct targets of the edges it enables
+        self._moves: list[dict[int, tuple[int, ...]]] = [{} for _ in self.edges]
         self.accepting = bytearray(self.width)
         for q in buchi.accepting:
             self.accepting[q] = 1
@@ -46,6 +50,14 @@ class Product:
         return [target for positive, negative, target in self.edges[automaton_state]
                 if valuation & positive == positive and not valuation & negative]
 
+    def moves(self, automaton_state: int, valuation: int) -> tuple[int, ...]:
+        """``targets`` without repeats, remembered per valuation (up to ``MOVES_KEPT``)."""
+        moves = self._moves[automaton_state]
+        if len(moves) >= MOVES_KEPT:
+            moves.clear()
+        found = moves[valuation] = tuple(dict.fromkeys(self.targets(automaton_state, valuation)))
+        return found
+
     def initial_keys(self) -> list[int]:
         if not self.edges:
             return []
@@ -58,19 +70,19 @@ class Product:
 
     def successor_keys(self, key: int) -> list[int]:
         """Distinct product successors of ``key`` in deterministic order (the hot path)."""
-        state_id, q = divmod(key, self.width)
-        out = self.edges[q]
         width = self.width
+        state_id, q = divmod(key, width)
+        known = self._moves[q]
         valuations = self.store.valuations
         keys = []
         for target_id in self.store.successor_ids(state_id):
             valuation = valuations[target_id]
+            targets = known.get(valuation)
+            if targets is None:
+                targets = self.moves(q, valuation)
             base = target_id * width
-            for positive, negative, target in out:
-                if valuation & positive == positive and not valuation & negative:
-                    keys.append(base + target)
-        if len(out) > 1:
-            return list(dict.fromkeys(keys))
+            for target in targets:
+                keys.append(base + target)
         return keys
 
     def labelled_successor_keys(self, key: int) -> list[tuple[Hashable, int]]:

@@ -21,6 +21,7 @@ from array import array
 from typing import Callable, Hashable, Optional, Sequence
 
 from .budget import DEFAULT_MAX_STATES, SearchBudget
+from .collector import frozen_while_searching
 from .model import TransitionSystem, as_sequence
 from .progress import Progress
 from .hashed import hashed_reachable, visited_sets
@@ -44,10 +45,11 @@ def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], boo
     shortest path, and nothing observed (``observe`` is for complete searches).
     """
     budget = SearchBudget(max_states, max_seconds, progress)
-    if storage is not None:
-        return hashed_reachable(system, predicate, visited_sets(storage, 1)[0], budget)
-    search = _BreadthFirst(system, predicate, budget, deadlock_is_target, observe)
-    target = search.run()
+    with frozen_while_searching():
+        if storage is not None:
+            return hashed_reachable(system, predicate, visited_sets(storage, 1)[0], budget)
+        search = _BreadthFirst(system, predicate, budget, deadlock_is_target, observe)
+        target = search.run()
     stats = search.stats()
     stats.seconds = budget.finish()
     if target is not None:

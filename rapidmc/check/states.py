@@ -5,17 +5,20 @@ A model may split its states into a few components (``split_state`` and
 rest).  Each distinct component is stored once, in a table of its own,
 and a state becomes the tuple of its component ids (SPIN's collapse
 compression): states that share their data but not their program counter
-share the stored data.  The first ``PRIMARY`` components (a model lists
-the most varying first) keep an id each; the ids of the others, which
-rarely change, are interned once more as one tail id.  The ids of all states lie in one
-``array`` (``width`` ints per state) and the index from key to state id is
-an open-addressing hash table in another ``array``, so a stored state
-costs a few dozen bytes instead of a Python tuple, a dict entry and an
-int object.  A model without ``split_state`` keeps its states whole in a
-dict.
+share the stored data.  The ids of the components after the first
+``PRIMARY`` ones, which rarely change, are interned once more as one tail
+id, and the first component's id with the tail id as one head id, so a
+stored state is two ints: its head id and the id of its second component
+(a RAPID state: global data, which varies most).  The ids of all states
+lie in one ``array`` and the index from key to state id is an
+open-addressing hash table in another ``array``, so a stored state costs
+a few dozen bytes instead of a Python tuple, a dict entry and an int
+object.  A model without ``split_state`` keeps its states whole in a dict.
 
 ``memory_bytes()`` adds up what the table holds (arrays, component
-tables and the components themselves, estimated from their Python sizes).
+tables and the components themselves, estimated from their Python sizes;
+objects Python shares anyway, such as small ints, ``None`` and booleans,
+are not counted).
 """
 from __future__ import annotations
 
@@ -26,8 +29,7 @@ from typing import Hashable
 EMPTY = -1
 FIRST_CAPACITY = 1 << 10
 IDENTITY_LIMIT = 1 << 10
-PRIMARY = 2          # components with an id per state; the others share one tail id
-                     # (a stored state: 3 ids, see _find_or_add)
+PRIMARY = 2          # components with an id of their own; the others share one tail id
 
 
 class StateTable:
@@ -45,7 +47,12 @@ class StateTable:
         self._scalars: dict = {}               # one object per distinct float or string
         self._tails: dict[tuple, int] = {}     # ids of the components after PRIMARY -> tail id
         self._tail_values: list[tuple] = []
-        self._ids = array("i")                 # width component ids per state
+        self._tail_parts: list[tuple] = []     # by tail id: the stored parts themselves
+        self._last_tail: tuple | None = None  # the tail parts last looked up, and their id
+        self._last_tail_id = EMPTY
+        self._heads: dict[tuple, int] = {}     # (first component id, tail id) -> head id
+        self._head_values: list[tuple] = []
+        self._ids = array("i")                 # per state: head id, second component id
         self._slots = array("i", [EMPTY]) * FIRST_CAPACITY
         self._count = 0
 
@@ -63,8 +70,11 @@ class StateTable:
 
     # --------------------------------------------------------------- lookups
     def intern(self, state: Hashable, add: bool = True) -> tuple[int, bool]:
-        """The id of ``state`` and whether it was new (id -1 when new and not ``add``)."""
-        if self._split is None:
+        """The id of ``state`` and whether it was new (id -1 when new and not ``add``).
+
+        (One function on purpose: it runs twice per explored transition.)"""
+        split = self._split
+        if split is None:
             state_id = self._whole.get(state)
             if state_id is not None:
                 return state_id, False
@@ -74,51 +84,95 @@ class StateTable:
             self._whole_states.append(state)
             self._count += 1
             return state_id, True
-        parts = self._component_ids(self._split(state))
+        parts = split(state)
+        if not self._width:
+            self._start(len(parts))
+        components = self._components
+        first = components[0].get(parts[0])
+        if first is None:
+            first = self._add_component(0, parts[0])
+        second = components[1].get(parts[1])
+        if second is None:
+            second = self._add_component(1, parts[1])
         tail = parts[PRIMARY:]
-        tail_id = self._tails.get(tail)
-        if tail_id is None:
-            tail_id = self._tails[tail] = len(self._tail_values)
-            self._tail_values.append(tail)
-        return self._find_or_add(parts[0], parts[1], tail_id, add)
+        # the rarely changing parts are most often those of the state interned last
+        # (compared element by element: the very same objects compare at once)
+        if tail == self._last_tail:
+            tail_id = self._last_tail_id
+        else:
+            tail_id = self._tail_id(tail)
+        head_key = (first, tail_id)
+        head = self._heads.get(head_key)
+        if head is None:
+            head = self._heads[head_key] = len(self._head_values)
+            self._head_values.append(head_key)
+        slots, ids = self._slots, self._ids
+        mask = len(slots) - 1
+        position = hash((head, second)) & mask
+        while True:
+            state_id = slots[position]
+            if state_id == EMPTY:
+                break
+            if ids[2 * state_id] == head and ids[2 * state_id + 1] == second:
+                return state_id, False
+            position = (position + 1) & mask
+        if not add:
+            return EMPTY, True
+        state_id = self._count
+        slots[position] = state_id
+        ids.append(head)
+        ids.append(second)
+        self._count += 1
+        if self._count * 2 > len(slots):
+            self._grow()
+        return state_id, True
 
     def __getitem__(self, state_id: int) -> Hashable:
         if self._split is None:
             return self._whole_states[state_id]
-        ids = self._ids
-        base = state_id * (PRIMARY + 1)
-        parts = tuple(ids[base:base + PRIMARY]) + self._tail_values[ids[base + PRIMARY]]
+        first, tail_id = self._head_values[self._ids[2 * state_id]]
         values = self._values
-        return self._join(tuple(values[i][part] for i, part in enumerate(parts)))
+        return self._join((values[0][first], values[1][self._ids[2 * state_id + 1]]) +
+                          self._tail_parts[tail_id])
 
     # -------------------------------------------------------------- internals
-    def _component_ids(self, parts: tuple) -> tuple:
-        if not self._width:
-            self._width = len(parts)
-            self._components = [{} for _ in parts]
-            self._values = [[] for _ in parts]
-            self._identity = [{} for _ in parts]
+    def _start(self, width: int) -> None:
+        self._width = width
+        self._components = [{} for _ in range(width)]
+        self._values = [[] for _ in range(width)]
+        self._identity = [{} for _ in range(width)]
+
+    def _add_component(self, index: int, part) -> int:
+        """The id of a component not stored yet (stored now, its scalars shared)."""
+        values = self._values[index]
+        part = self._shared_scalars(part)
+        part_id = self._components[index][part] = len(values)
+        values.append(part)
+        if index >= PRIMARY and part_id < IDENTITY_LIMIT:
+            self._identity[index][id(part)] = part_id
+        return part_id
+
+    def _tail_id(self, tail: tuple) -> int:
+        """The id of the components after PRIMARY, together (remembered as the last tail)."""
         ids = []
-        append = ids.append
-        for index, part in enumerate(parts):
-            values = self._values[index]
-            if index >= PRIMARY:
-                # a rarely changing part handed on unchanged from a stored state is
-                # that very object: found by identity, without hashing its contents
-                part_id = self._identity[index].get(id(part), -1)
-                if part_id >= 0 and values[part_id] is part:
-                    append(part_id)
-                    continue
-            table = self._components[index]
-            part_id = table.get(part)
-            if part_id is None:
-                part = self._shared_scalars(part)
-                part_id = table[part] = len(values)
-                values.append(part)
-                if index >= PRIMARY and part_id < IDENTITY_LIMIT:
-                    self._identity[index][id(part)] = part_id
-            append(part_id)
-        return tuple(ids)
+        for index, part in enumerate(tail, PRIMARY):
+            # a rarely changing part handed on unchanged from a stored state is
+            # that very object: found by identity, without hashing its contents
+            part_id = self._identity[index].get(id(part), -1)
+            if part_id < 0 or self._values[index][part_id] is not part:
+                part_id = self._components[index].get(part)
+                if part_id is None:
+                    part_id = self._add_component(index, part)
+            ids.append(part_id)
+        key = tuple(ids)
+        tail_id = self._tails.get(key)
+        if tail_id is None:
+            tail_id = self._tails[key] = len(self._tail_values)
+            self._tail_values.append(key)
+            self._tail_parts.append(tuple(self._values[index][part_id]
+                                          for index, part_id in enumerate(key, PRIMARY)))
+        self._last_tail, self._last_tail_id = tail, tail_id
+        return tail_id
 
     def _shared_scalars(self, part):
         """A tuple part whose numbers and strings are the objects other parts hold already."""
@@ -128,38 +182,12 @@ class StateTable:
         return tuple(scalars.setdefault(x, x) if type(x) is float or type(x) is str else x
                      for x in part)
 
-    def _find_or_add(self, first: int, second: int, tail: int,
-                     add: bool) -> tuple[int, bool]:
-        slots, ids = self._slots, self._ids
-        mask = len(slots) - 1
-        position = hash((first, second, tail)) & mask
-        while True:
-            state_id = slots[position]
-            if state_id == EMPTY:
-                break
-            base = state_id * 3
-            if ids[base] == first and ids[base + 1] == second and ids[base + 2] == tail:
-                return state_id, False
-            position = (position + 1) & mask
-        if not add:
-            return EMPTY, True
-        state_id = self._count
-        slots[position] = state_id
-        ids.append(first)
-        ids.append(second)
-        ids.append(tail)
-        self._count += 1
-        if self._count * 2 > len(slots):
-            self._grow()
-        return state_id, True
-
     def _grow(self) -> None:
         slots = array("i", [EMPTY]) * (len(self._slots) * 2)
         mask = len(slots) - 1
-        ids, width = self._ids, PRIMARY + 1
+        ids = self._ids
         for state_id in range(self._count):
-            base = state_id * width
-            position = hash(tuple(ids[base:base + width])) & mask
+            position = hash((ids[2 * state_id], ids[2 * state_id + 1])) & mask
             while slots[position] != EMPTY:
                 position = (position + 1) & mask
             slots[position] = state_id
@@ -175,6 +203,8 @@ class StateTable:
                      for t, v in zip(self._components, self._values)) + \
             sum(sys.getsizeof(i) for i in self._identity) + sys.getsizeof(self._scalars) + \
             sys.getsizeof(self._tails) + sum(_size(t) for t in self._tail_values) + \
+            sys.getsizeof(self._tail_parts) + sum(sys.getsizeof(t) for t in self._tail_parts) + \
+            sys.getsizeof(self._heads) + sum(_size(h) for h in self._head_values) + \
             sum(sys.getsizeof(x) for x in self._scalars)
         components = sum(_component_size(value) for values in self._values for value in values)
         return (self._ids.buffer_info()[1] * self._ids.itemsize +
@@ -193,6 +223,8 @@ def _component_size(part) -> int:
 
 def _size(value, seen: set | None = None) -> int:
     """Python bytes of ``value`` and what it holds (shared parts counted once per call)."""
+    if value is None or type(value) is bool or type(value) is int and -5 <= value <= 256:
+        return 0                               # objects Python keeps once for all uses
     seen = set() if seen is None else seen
     if id(value) in seen:
         return 0

@@ -7,9 +7,14 @@ Valuations are computed once per model state.  Successor ids are cached
 for recently expanded states, because the emptiness search expands the
 same model state once per automaton state it is paired with, often in
 quick succession (and the model's step function is the expensive part).
+The states last found new are kept as the model handed them over (up to
+``FRESH_STATES``): the depth-first search expands most of them soon after,
+and then needs not rebuild them from their components.
 """
 from __future__ import annotations
 
+import sys
+from itertools import islice
 from typing import Hashable, Sequence
 
 from array import array
@@ -18,19 +23,24 @@ from .model import Label, TransitionSystem, Valuation, as_sequence, labelled_suc
 from .states import StateTable
 
 SUCCESSOR_CACHE_SIZE = 1 << 16
+FRESH_STATES = 1 << 13
+VALUATION_TYPES = ("B", "H", "I", "Q")     # array types for up to 8, 16, 32, 64 atoms
 
 
 class ModelStore:
     """Interning of model states: ``intern(state) -> id``; see the module docstring."""
 
-    def __init__(self, system: TransitionSystem, valuation: Valuation):
+    def __init__(self, system: TransitionSystem, valuation: Valuation,
+                 keep_new: int = FRESH_STATES):
         self.system = system
         self.valuation = valuation
         self.states = StateTable(system)
         self._known = None if self.states.collapsed else self.states.known_ids.get
-        self.valuations = array("I")
+        self.valuations = array(VALUATION_TYPES[0])    # the narrowest that holds them
         self.deadlocked: set[int] = set()
         self._successor_cache: dict[int, tuple[int, ...]] = {}
+        self._fresh: dict[int, Hashable] = {}     # id -> new state, not expanded yet
+        self._keep_new = keep_new                  # at most that many (0: none)
 
     def __len__(self) -> int:
         return len(self.states)
@@ -43,12 +53,22 @@ class ModelStore:
                 return known
         state_id, new = self.states.intern(state)
         if new:
-            valuation = self.valuation(state)
-            try:
-                self.valuations.append(valuation)
-            except OverflowError:            # more than 32 atoms: Python ints
-                self.valuations = list(self.valuations) + [valuation]
+            self._added(state_id, state)
         return state_id
+
+    def _added(self, state_id: int, state: Hashable) -> None:
+        """Book-keeping for a state just stored: its valuation; kept as handed over."""
+        valuation = self.valuation(state)
+        try:
+            self.valuations.append(valuation)
+        except OverflowError:
+            self.valuations = _wider(self.valuations, valuation)
+        if not self._keep_new:
+            return
+        fresh = self._fresh
+        if len(fresh) >= self._keep_new:      # keep the newer half: expanded soonest
+            fresh = self._fresh = dict(islice(fresh.items(), len(fresh) // 2 + 1, None))
+        fresh[state_id] = state
 
     def initial_ids(self) -> list[int]:
         return _unique([self.intern(state) for state in self.system.initial_states()])
@@ -59,14 +79,22 @@ class ModelStore:
         cached = cache.get(state_id)
         if cached is not None:
             return cached
-        state = self.states[state_id]
+        state = self._fresh.pop(state_id, None)
+        if state is None:
+            state = self.states[state_id]
         successors = as_sequence(self.system.successors(state))
         if not successors:
             self.deadlocked.add(state_id)
             result: tuple[int, ...] = (state_id,)
         else:
-            intern = self.intern
-            result = tuple(_unique([intern(target) for _, target in successors]))
+            table_intern, added = self.states.intern, self._added
+            ids = []
+            for _, target in successors:
+                target_id, new = table_intern(target)
+                if new:
+                    added(target_id, target)
+                ids.append(target_id)
+            result = tuple(_unique(ids))
         if len(cache) >= SUCCESSOR_CACHE_SIZE:
             # Start afresh rather than evict one by one: deleting the oldest
             # entry of a dict makes each later next(iter(dict)) slower.
@@ -76,7 +104,10 @@ class ModelStore:
 
     def memory_bytes(self) -> int:
         """Bytes of the stored states and their valuations (the successor cache excluded)."""
-        return self.states.memory_bytes() + len(self.valuations) * self.valuations.itemsize
+        valuations = self.valuations
+        if isinstance(valuations, list):        # an int object and a slot per state
+            return self.states.memory_bytes() + sum(sys.getsizeof(v) + 8 for v in valuations)
+        return self.states.memory_bytes() + len(valuations) * valuations.itemsize
 
     def labelled_successor_ids(self, state_id: int) -> list[tuple[Label, int]]:
         """Every (label, successor id) in model order, ``STUTTER`` for a deadlock (slow path)."""
@@ -84,8 +115,20 @@ class ModelStore:
         return [(label, self.intern(target)) for label, target in transitions]
 
 
+def _wider(valuations, valuation: int):
+    """``valuations`` plus ``valuation`` in the narrowest array type that holds all
+    (Python ints beyond 64 atoms)."""
+    for typecode in VALUATION_TYPES:
+        wider = array(typecode)
+        if valuation < 1 << 8 * wider.itemsize:
+            wider.fromlist(list(valuations))
+            wider.append(valuation)
+            return wider
+    return list(valuations) + [valuation]
+
+
 def _unique(items: list[int]) -> list[int]:
     """``items`` without repeats, first occurrences kept in order."""
-    if len(items) < 2:
+    if len(items) < 2 or len(items) == 2 and items[0] != items[1]:
         return items
     return list(dict.fromkeys(items))
