@@ -300,14 +300,14 @@ class _StuckWatch:
     """Sees the states a search expands (passing them on to ``then``): does one wait forever?"""
 
     def __init__(self, system: RapidSystem, then=None):
-        self.stuck = system.stuck
+        self.stuck_among = system.stuck_among
         self.then = then
         self.seen = False
 
     def __call__(self, state, successors) -> None:
         if self.then is not None:
             self.then(state, successors)
-        if not self.seen and self.stuck(state):
+        if not self.seen and self.stuck_among(state, successors):   # (the search's own list)
             self.seen = True
 
 

@@ -116,11 +116,15 @@ class RapidSystem:
         the program go on, the successor with those values differs in more
         than the inputs.
         """
+        return self.stuck_among(state, self.successors(state))
+
+    def stuck_among(self, state: State, successors) -> bool:
+        """``stuck(state)`` given the state's successors (as ``successors`` returns them)."""
         if state.status != RUNNING:
             return False
         free = [index for index, _, _ in self.config.free_inputs]
         masked = _without_inputs(state, free)
-        if not all(_without_inputs(after, free) == masked for _, after in self.successors(state)):
+        if not all(_without_inputs(after, free) == masked for _, after in successors):
             return False
         if not self.config.merge_points:
             return True
