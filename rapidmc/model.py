@@ -10,7 +10,7 @@ is printed.
 from __future__ import annotations
 
 import copy
-from typing import Hashable, Mapping, Optional
+from typing import Hashable, Mapping, Optional, Sequence
 
 from pyrsistent import pvector
 
@@ -118,13 +118,13 @@ class RapidSystem:
         """
         return self.stuck_among(state, self.successors(state))
 
-    def stuck_among(self, state: State, successors) -> bool:
-        """``stuck(state)`` given the state's successors (as ``successors`` returns them)."""
+    def stuck_among(self, state: State, found: Sequence) -> bool:
+        """``stuck(state)`` given ``found``, the state's successors (as ``successors`` gives)."""
         if state.status != RUNNING:
             return False
         free = [index for index, _, _ in self.config.free_inputs]
         masked = _without_inputs(state, free)
-        if not all(_without_inputs(after, free) == masked for _, after in successors):
+        if not all(_without_inputs(after, free) == masked for _, after in found):
             return False
         if not self.config.merge_points:
             return True
