@@ -9,7 +9,8 @@ Two cases allow a default that loses no behaviour:
   ``n <= FULL_RANGE_BITS``, the default is every value: exact.
 * **Only compared with numbers.** When every read of the input in the code
   is one side of a comparison (``= <> < <= > >=``) with a number literal or
-  a CONST num, or a TEST subject whose CASE values are such numbers, the
+  a CONST num, a TEST subject whose CASE values are such numbers, or the
+  signal of ``WaitGI``/``WaitAI`` with such a (whole) number, the
   program sees only the outcomes of those comparisons.  The outcomes depend
   only on where the value lies among the numbers, so one value per place
   covers every outcome: for a group input each number, its integer
@@ -40,6 +41,7 @@ from .commands.quoting import quoted
 FULL_RANGE_BITS = 5           # a group input of at most 5 bits: every value (at most 32)
 MAX_GROUP_BITS = 32           # the widest group input a controller configures
 READERS = {"GINPUT": "GI", "AINPUT": "AI"}   # functions whose value is their signal's
+WAITS = {"WAITGI", "WAITAI"}  # wait until the signal compares with a value as asked
 
 
 @dataclass(frozen=True)
@@ -221,12 +223,27 @@ def compared_numbers(ref: ast.NameRef, parents: tuple, scope) -> Union[set, str]
         if value is None:
             return f"compared ('{parent.op}') with something other than a number literal"
         return {value}
+    if isinstance(parent, ast.Argument) and len(parents) >= 2 \
+            and isinstance(parents[-2], ast.ProcedureCall) and parents[-2].name.key in WAITS:
+        return _waited_for(parents[-2], parent, scope)
     if isinstance(parent, ast.Test) and parent.subject is node:
         values = [number_value(v, scope) for case in parent.cases for v in case.values]
         if any(v is None for v in values):
             return "tested against a CASE value that is not a number literal"
         return set(values)
     return _use_of(parent)
+
+
+def _waited_for(call: ast.ProcedureCall, argument: ast.Argument, scope) -> Union[set, str]:
+    """``WaitGI gi, 3`` (\\NOTEQ, \\LT, \\GT): a comparison of the signal with the value."""
+    positional = [arg for arg in call.args if arg.kind == ast.REQUIRED and arg.name is None]
+    if len(positional) == 2 and positional[0] is argument:
+        value = number_value(positional[1].value, scope)
+        whole = value is not None and value == int(value) and abs(value) < 2 ** 24
+        if value is not None and (whole or call.name.key == "WAITAI"):   # GI: num = dnum
+            return {value}
+        return f"waited for ({call.name.text}) with a value that is not a small whole number"
+    return f"passed to {call.name.text} other than as its signal"
 
 
 def number_value(expr, scope) -> Optional[float]:

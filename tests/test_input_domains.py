@@ -181,8 +181,11 @@ def _statement(rng: random.Random, pool: list) -> str:
     k1, k2 = rng.randrange(4), rng.randrange(4)
     if roll < 0.4:
         return f"IF {_condition(rng, pool)} THEN\n x := {k1};\n ELSE\n x := {k2};\n ENDIF"
-    if roll < 0.7:
+    if roll < 0.65:
         return f"IF x = {k1} AND {_condition(rng, pool)} x := {k2};"
+    if roll < 0.75:
+        switch = rng.choice(["", " \\NOTEQ", " \\LT", " \\GT"])
+        return f"WaitGI gi_b{switch}, {int(rng.choice(pool))};\n x := {k1};"
     cases = rng.sample(pool, 2)
     return (f"TEST GInput(gi_a)\n CASE {cases[0]}:\n x := {k1};\n"
             f" CASE {cases[1]}:\n x := {k2};\n DEFAULT:\n x := 3;\n ENDTEST")
