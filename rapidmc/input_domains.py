@@ -105,7 +105,7 @@ def _default(signal: Signal, width: Optional[int], reads: "ReadCollector",
     other = reads.other_use.get(signal.index)
     if other is not None:
         return Refused(f"{other}; a default needs every read to be compared with number literals "
-                       "(= <> < <= > >=, TEST ... CASE)")
+                       "(= <> < <= > >=, TEST ... CASE, WaitGI/WaitAI)")
     numbers = sorted(reads.numbers.get(signal.index, set()))
     if signal.kind == "GI":
         top = 2 ** (width or MAX_GROUP_BITS) - 1

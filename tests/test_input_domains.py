@@ -232,3 +232,17 @@ def test_the_generated_programs_are_not_trivial(tmp_path):
         verdicts.update((name.split("_")[0], v) for name, v in report.verdicts.items())
     for kind, verdict in itertools.product(["never", "often", "settles"], ["HOLDS", "VIOLATED"]):
         assert (kind, verdict) in verdicts
+
+
+def test_an_alias_with_a_computed_name_leaves_no_default(tmp_path):
+    text = PASSED_ON.replace("    show gi_code;\n", "    AliasIO name, gi_other;\n    IF gi_other = 2 x := 2;\n") \
+        .replace("  VAR num x := 0;\n", "  VAR num x := 0;\n  VAR string name := \"GI_CODE\";\n"
+                 "  VAR signalgi gi_other;\n")
+    assert "prog.mod:9:5 names its signal at run time" in _refusal(tmp_path, text)
+
+
+def test_a_read_used_as_an_index_names_the_first_such_read(tmp_path):
+    text = PASSED_ON.replace("    show gi_code;\n", "    x := table{GInput(gi_code)};\n    x := gi_code + 1;\n") \
+        .replace("  VAR num x := 0;\n", "  VAR num x := 0;\n  VAR num table{3} := [1, 2, 3];\n")
+    note = _refusal(tmp_path, text)
+    assert "prog.mod:8:23 is used as an array index" in note
