@@ -81,6 +81,8 @@ def default_domains(program: Program, signals: Sequence[Signal], atom_reads) -> 
 
     ``atom_reads``: indices of the signals properties read (None: any of them).
     """
+    if not signals:
+        return {}
     widths = {s.name.upper(): s.width for s in program.options.get("configured_signals", ())
               if getattr(s, "width", None)}
     reads = ReadCollector(program)
