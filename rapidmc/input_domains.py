@@ -98,7 +98,9 @@ def _default(signal: Signal, width: Optional[int], reads: "ReadCollector",
     if signal.kind == "GI" and width is not None and width <= FULL_RANGE_BITS:
         return Assumed(signal, tuple(float(v) for v in range(2 ** width)),
                        f"{width}-bit group input from the I/O configuration")
-    if atom_reads is None or signal.index in atom_reads:
+    if atom_reads is None:
+        return Refused("a property's atom reads signal data: any input's value may be observed")
+    if signal.index in atom_reads:
         return Refused(f"a property's atom reads {signal.name}: its value is observed, not "
                        "only compared")
     if reads.computed_alias is not None:
