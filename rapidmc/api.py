@@ -129,11 +129,9 @@ def prepare(program: Program, properties: Sequence[Property],
     """Translate the properties and set up the program's transition system."""
     properties = list(properties)
     check_unique(properties)
-    domains = {name.upper(): tuple(values) for name, values in options.input_domains.items()}
     atoms = AtomCompiler(program)
     jobs = [_automaton(prop, atoms, options) for prop in properties]
-    assumed = _check_domains(program, domains, _read_inputs(program, atoms), atoms)
-    domains.update({a.signal.key: a.values for a in assumed})
+    domains, assumed = free_input_domains(program, atoms, options.input_domains)
     config = CheckConfig(program, options.tp_answers, options.fk_answers, domains,
                          observed=_observed_inputs(program, atoms))
     if options.socket_messages:
@@ -207,6 +205,20 @@ def _read_inputs(program: Program, atoms: AtomCompiler) -> Optional[frozenset]:
     if program.named_signals is None or atoms.observes_signal_data:
         return None
     return program.named_signals | frozenset(atoms.observed)
+
+
+def free_input_domains(program: Program, atoms: AtomCompiler,
+                       explicit: Mapping[str, tuple] = {}) -> tuple[dict, tuple]:
+    """Signal key -> values for the free analog and group inputs (``explicit`` ones as given,
+    the others' defaults from input_domains), and the defaults (``Assumed``) chosen.
+
+    ``atoms`` must have compiled the properties' atoms (it knows the signals they read).
+    Raises RMC502 for an input that needs a domain and has no sound default.
+    """
+    domains = {name.upper(): tuple(values) for name, values in explicit.items()}
+    assumed = _check_domains(program, domains, _read_inputs(program, atoms), atoms)
+    domains.update({a.signal.key: a.values for a in assumed})
+    return domains, assumed
 
 
 def _check_domains(program: Program, domains: dict, read: Optional[frozenset],
