@@ -34,6 +34,7 @@ from .explored import ExploredFacts
 from .ltl import read_hoa, to_buchi
 from .ltl.syntax import Not
 from . import reduction
+from .input_domains import Assumed, default_domains
 from .model import RapidDescriber, RapidSystem, replay, with_final_loop
 from .fixed_readings import fixed_readings
 from .properties import AtomCompiler, Property, check_unique, parse_property, read_property_file
@@ -120,6 +121,7 @@ class Model:
     system: RapidSystem
     describer: RapidDescriber
     plan: reduction.Plan = reduction.NO_PLAN
+    assumed: tuple = ()   # input_domains.Assumed: default domains of free AI/GI inputs
 
 
 def prepare(program: Program, properties: Sequence[Property],
@@ -127,10 +129,9 @@ def prepare(program: Program, properties: Sequence[Property],
     """Translate the properties and set up the program's transition system."""
     properties = list(properties)
     check_unique(properties)
-    domains = {name.upper(): tuple(values) for name, values in options.input_domains.items()}
     atoms = AtomCompiler(program)
     jobs = [_automaton(prop, atoms, options) for prop in properties]
-    _check_domains(program, domains, _read_inputs(program, atoms))
+    domains, assumed = free_input_domains(program, atoms, options.input_domains)
     config = CheckConfig(program, options.tp_answers, options.fk_answers, domains,
                          observed=_observed_inputs(program, atoms))
     if options.socket_messages:
@@ -148,7 +149,8 @@ def prepare(program: Program, properties: Sequence[Property],
         [None if prop.name in options.automata else prop.formula for prop in properties],
         options.reductions)
     return Model(program, properties, options, atoms, jobs, config,
-                 RapidSystem(program, config, plan), RapidDescriber(program, config), plan)
+                 RapidSystem(program, config, plan), RapidDescriber(program, config), plan,
+                 assumed)
 
 
 def _automaton(prop: Property, atoms: AtomCompiler, options: CheckOptions):
@@ -205,7 +207,24 @@ def _read_inputs(program: Program, atoms: AtomCompiler) -> Optional[frozenset]:
     return program.named_signals | frozenset(atoms.observed)
 
 
-def _check_domains(program: Program, domains: dict, read: Optional[frozenset]) -> None:
+def free_input_domains(program: Program, atoms: AtomCompiler,
+                       explicit: Mapping[str, tuple] = {}) -> tuple[dict, tuple]:
+    """Signal key -> values for the free analog and group inputs (``explicit`` ones as given,
+    the others' defaults from input_domains), and the defaults (``Assumed``) chosen.
+
+    ``atoms`` must have compiled the properties' atoms (it knows the signals they read).
+    Raises RMC502 for an input that needs a domain and has no sound default.
+    """
+    domains = {name.upper(): tuple(values) for name, values in explicit.items()}
+    assumed = _check_domains(program, domains, _read_inputs(program, atoms), atoms)
+    domains.update({a.signal.key: a.values for a in assumed})
+    return domains, assumed
+
+
+def _check_domains(program: Program, domains: dict, read: Optional[frozenset],
+                   atoms: AtomCompiler) -> tuple:
+    """The default domains of the free inputs that need one and have no --input-domain
+    (input_domains); RMC502 for those without a sound default, saying why."""
     for key in domains:
         signal = program.signal(key)
         if signal is None:
@@ -213,14 +232,19 @@ def _check_domains(program: Program, domains: dict, read: Optional[frozenset]) -
         if signal.kind not in ("AI", "GI"):
             raise error(USAGE, f"--input-domain is for analog and group inputs; {signal.name} is "
                         f"a {signal.kind}")
+    needed = [signal for signal in program.signals
+              if signal.kind in ("AI", "GI") and not signal.driven and signal.key not in domains
+              and (read is None or signal.index in read)]
+    atom_reads = None if atoms.observes_signal_data else frozenset(atoms.observed)
+    defaults = default_domains(program, needed, atom_reads)
     missing = [Diagnostic(DOMAIN, f"free {signal.kind} input '{signal.name}' needs a finite set "
                           f"of values: give --input-domain {signal.name}=v1,v2,... (or drive it "
-                          "from an environment model)", signal.span)
-               for signal in program.signals
-               if signal.kind in ("AI", "GI") and not signal.driven and signal.key not in domains
-               and (read is None or signal.index in read)]
+                          "from an environment model)", signal.span,
+                          notes=(f"no default: {defaults[signal.key].reason}",))
+               for signal in needed if not isinstance(defaults[signal.key], Assumed)]
     if missing:                     # every input that lacks a domain at once, not one per run
         raise UserError(missing)
+    return tuple(defaults[signal.key] for signal in needed)
 
 
 # --- checking -------------------------------------------------------------------------
@@ -291,8 +315,9 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
             results.append(PropertyResult(prop.name, prop.text, result, vacuous))
     except EnvironmentFault as exc:
         raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
-    warnings = sorted(fixed_readings(model.program) + facts.warnings(),
-                      key=lambda d: (d.span.file, d.span.line, d.span.column))
+    warnings = [assumed.note() for assumed in model.assumed] + sorted(
+        fixed_readings(model.program) + facts.warnings(),
+        key=lambda d: (d.span.file, d.span.line, d.span.column))
     return CheckReport(results, warnings, model.describer)
 
 

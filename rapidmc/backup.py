@@ -32,6 +32,7 @@ class ConfiguredSignal:
     name: str
     kind: str                  # DI, DO, AI, AO, GI, GO
     span: Span
+    width: Optional[int] = None   # bits of a group signal's device map ("0-3": 4)
 
 
 def is_backup(path: Path) -> bool:
@@ -117,8 +118,25 @@ def read_eio(path: str) -> list[ConfiguredSignal]:
                       for m in _ATTRIBUTE.finditer(stripped)}
         name, kind = attributes.get("NAME"), (attributes.get("SIGNALTYPE") or "").upper()
         if name and kind in SIGNAL_KINDS:
-            signals.append(ConfiguredSignal(name, kind, Span(path, number, 1)))
+            mapping = attributes.get("DEVICEMAP") or attributes.get("UNITMAP")
+            signals.append(ConfiguredSignal(name, kind, Span(path, number, 1),
+                                            map_width(mapping)))
     return signals
+
+
+def map_width(mapping: Optional[str]) -> Optional[int]:
+    """The number of bits a device map names: ``"0-3"`` 4, ``"0-3,8"`` 5; None if unreadable."""
+    if not mapping:
+        return None
+    bits: set[int] = set()
+    for part in mapping.split(","):
+        match = re.fullmatch(r"\s*(\d+)\s*(?:-\s*(\d+))?\s*", part)
+        if match is None:
+            return None
+        first = int(match.group(1))
+        last = int(match.group(2)) if match.group(2) is not None else first
+        bits.update(range(min(first, last), max(first, last) + 1))
+    return len(bits)
 
 
 def _logical_lines(text: str):

@@ -99,6 +99,8 @@ DUPLICATE_PROPERTY = _code("RMC405", "duplicate-property", "two properties with 
 # --- model checking (5xx) ---------------------------------------------------------
 STATE_LIMIT = _code("RMC501", "state-limit", "the search reached --max-states or --max-seconds")
 DOMAIN = _code("RMC502", "domain", "a nondeterministic input has no finite domain")
+DOMAIN_ASSUMED = _code("RMC515", "domain-assumed",
+                       "a free input's values were derived (its width, or the numbers it is compared with)")
 ENVIRONMENT = _code("RMC503", "environment", "the environment model is invalid")
 TRACE_REPLAY = _code("RMC504", "trace-replay", "a counterexample did not replay (internal)")
 OUTPUT_FILE = _code("RMC506", "output-file", "a report file (--junit, graph -o) cannot be written")

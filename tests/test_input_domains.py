@@ -1,0 +1,248 @@
+"""Default domains of free group and analog inputs (rapidmc/input_domains.py).
+
+The defaults must lose no behaviour: a differential test checks generated
+programs once with the derived domain and once with every 4-bit value, and
+the verdicts must agree.
+"""
+from __future__ import annotations
+
+import itertools
+import json
+import random
+from pathlib import Path
+
+import pytest
+
+from rapidmc import api
+from rapidmc.backup import map_width, read_eio
+from rapidmc.cli import main
+from rapidmc.diagnostics import UserError
+from rapidmc.input_domains import analog_points, group_points
+from tests.test_backup import make_backup
+
+COMPARE = {"=": lambda a, b: a == b, "<>": lambda a, b: a != b, "<": lambda a, b: a < b,
+           "<=": lambda a, b: a <= b, ">": lambda a, b: a > b, ">=": lambda a, b: a >= b}
+
+
+def _outcomes(x: float, numbers) -> tuple:
+    return tuple(test(x, c) for c in numbers for test in COMPARE.values())
+
+
+@pytest.mark.parametrize("numbers", [(), (0,), (3,), (3, 5), (2.5, 7), (0.5, 1, 14.5),
+                                     (-2, 1), (-0.5,), (9, 10, 11, 30)])
+def test_group_points_meet_every_outcome_of_the_comparisons(numbers):
+    """Every non-negative integer compares with the numbers as one of the points does."""
+    points = group_points(sorted(numbers), 2 ** 32 - 1)
+    assert all(p >= 0 and p == int(p) for p in points)
+    seen = {_outcomes(p, numbers) for p in points}
+    assert {_outcomes(x, numbers) for x in range(0, 64)} == seen
+
+
+def test_group_points_stay_within_the_width():
+    assert group_points([15], 15) == (0.0, 14.0, 15.0)
+
+
+@pytest.mark.parametrize("numbers", [(), (4,), (2.5, 4), (-1, 0, 0.25, 100)])
+def test_analog_points_meet_every_outcome_of_the_comparisons(numbers):
+    points = analog_points(sorted(numbers))
+    grid = [k / 8 for k in range(-200 * 8, 200 * 8)]
+    assert {_outcomes(x, numbers) for x in grid} == {_outcomes(p, numbers) for p in points}
+
+
+@pytest.mark.parametrize("mapping, width", [("0-3", 4), ("16-19", 4), ("3", 1), ("0-3,8", 5),
+                                            ("7-0", 8), ("", None), ("a-b", None)])
+def test_the_width_of_a_device_map(mapping, width):
+    assert map_width(mapping) == width
+
+
+EIO_GROUP = """EIO:CFG_1.0:6:1::
+EIO_SIGNAL:
+      -Name "giRecipe" -SignalType "GI" -Device "d652" -DeviceMap "4-7"
+      -Name "giWide" -SignalType "GI" -Device "d652" -DeviceMap "8-15"
+      -Name "giVirtual" -SignalType "GI"
+"""
+
+RECIPE_MOD = """MODULE MainModule
+  VAR num recipe := 0;
+  PROC main()
+    recipe := GInput(giRecipe);
+    IF GInput(giWide) = 200 recipe := 99;
+  ENDPROC
+ENDMODULE
+"""
+
+
+def test_eio_keeps_the_width_of_group_signals(tmp_path):
+    (tmp_path / "EIO.cfg").write_text(EIO_GROUP)
+    widths = {s.name: s.width for s in read_eio(str(tmp_path / "EIO.cfg"))}
+    assert widths == {"giRecipe": 4, "giWide": 8, "giVirtual": None}
+
+
+def test_a_backups_4_bit_group_input_takes_all_16_values(tmp_path, capsys):
+    backup = make_backup(tmp_path, {"TASK1": {"PROGMOD/MainModule.mod": RECIPE_MOD}}, EIO_GROUP)
+    code = main(["check", str(backup), "--formula", 'G "recipe < 15"', "--format", "json",
+                 "--quiet"])
+    document = json.loads(capsys.readouterr().out)
+    notes = {w["message"] for w in document["warnings"] if w["code"] == "RMC515"}
+    # 4 bits: every value; 8 bits (too many): the numbers it is compared with
+    assert notes == {"giRecipe: values 0..15 (4-bit group input from the I/O configuration)",
+                     "giWide: values 0, 199, 200, 201 (group input only compared with 200)"}
+    assert code == 1                        # recipe 15 is reached
+    assert document["properties"][-1]["verdict"] == "VIOLATED"
+
+
+def _load(tmp_path: Path, text: str):
+    path = tmp_path / "prog.mod"
+    path.write_text(text)
+    return api.load_program([str(path)])
+
+
+PASSED_ON = """MODULE M
+  VAR signalgi gi_code;
+  VAR num x := 0;
+  PROC main()
+    AliasIO "GI_CODE", gi_code;
+    IF gi_code = 1 x := 1;
+    show gi_code;
+  ENDPROC
+  PROC show(VAR signalgi s)
+    x := 2;
+  ENDPROC
+ENDMODULE
+"""
+
+
+def _refusal(tmp_path, text: str, properties=(), **options) -> str:
+    with pytest.raises(UserError) as caught:
+        api.prepare(_load(tmp_path, text), properties, api.CheckOptions(**options))
+    [diagnostic] = caught.value.diagnostics
+    assert diagnostic.code.code == "RMC502"
+    [note] = diagnostic.notes
+    return note
+
+
+def test_an_input_passed_to_a_routine_has_no_default(tmp_path):
+    note = _refusal(tmp_path, PASSED_ON)
+    assert "'gi_code' at " in note and "prog.mod:7:10 is passed as an argument" in note
+
+
+def test_an_input_a_property_reads_has_no_default(tmp_path):
+    text = PASSED_ON.replace("    show gi_code;\n", "")
+    prop = api.property_from_text('p: G "GInput(gi_code) < 3"')
+    assert "a property's atom reads GI_CODE" in _refusal(tmp_path, text, [prop])
+
+
+def test_an_input_compared_with_a_variable_has_no_default(tmp_path):
+    text = PASSED_ON.replace("    show gi_code;\n", "    IF gi_code < x x := 3;\n")
+    assert "compared ('<') with something other than a number literal" in _refusal(tmp_path, text)
+
+
+def test_an_input_compared_with_a_constant_gets_its_neighbours(tmp_path):
+    text = PASSED_ON.replace("    show gi_code;\n", "    IF gi_code >= LIMIT x := 3;\n") \
+        .replace("  VAR num x := 0;\n", "  VAR num x := 0;\n  CONST num LIMIT := 6;\n")
+    model = api.prepare(_load(tmp_path, text), [])
+    [assumed] = model.assumed
+    assert assumed.values == (0.0, 1.0, 2.0, 5.0, 6.0, 7.0)
+
+
+def test_an_explicit_domain_wins(tmp_path):
+    text = PASSED_ON.replace("    show gi_code;\n", "")
+    model = api.prepare(_load(tmp_path, text), [],
+                        api.CheckOptions(input_domains={"GI_CODE": (5.0,)}))
+    assert model.assumed == ()
+    assert model.config.lazy_inputs[0][1] == (5.0,)
+
+
+# --- differential: the derived domain against every 4-bit value -------------------------
+
+NUMBERS = list(range(0, 15)) + [0.5, 2.5, 7.5]    # below 15: the class above them meets 0..15
+OPS = list(COMPARE)
+
+
+def _condition(rng: random.Random, pool: list, depth: int = 0) -> str:
+    roll = rng.random()
+    signal = rng.choice(["gi_a", "GInput(gi_a)", "gi_b"])
+    if roll < 0.25:                     # a range: only values strictly between two numbers
+        low, high = sorted(rng.sample(pool, 2))
+        return f"({signal} > {low} AND {signal} < {high})"
+    if depth < 2 and roll < 0.45:
+        return f"({_condition(rng, pool, depth + 1)} {rng.choice(['AND', 'OR'])} " \
+               f"{_condition(rng, pool, depth + 1)})"
+    if depth < 2 and roll < 0.55:
+        return f"NOT ({_condition(rng, pool, depth + 1)})"
+    number = rng.choice(pool)
+    if rng.random() < 0.5:
+        return f"{signal} {rng.choice(OPS)} {number}"
+    return f"{number} {rng.choice(OPS)} {signal}"
+
+
+def _statement(rng: random.Random, pool: list) -> str:
+    roll = rng.random()
+    k1, k2 = rng.randrange(4), rng.randrange(4)
+    if roll < 0.4:
+        return f"IF {_condition(rng, pool)} THEN\n x := {k1};\n ELSE\n x := {k2};\n ENDIF"
+    if roll < 0.65:
+        return f"IF x = {k1} AND {_condition(rng, pool)} x := {k2};"
+    if roll < 0.75:
+        switch = rng.choice(["", " \\NOTEQ", " \\LT", " \\GT"])
+        return f"WaitGI gi_b{switch}, {int(rng.choice(pool))};\n x := {k1};"
+    cases = rng.sample(pool, 2)
+    return (f"TEST GInput(gi_a)\n CASE {cases[0]}:\n x := {k1};\n"
+            f" CASE {cases[1]}:\n x := {k2};\n DEFAULT:\n x := 3;\n ENDTEST")
+
+
+def generated_program(seed: int) -> str:
+    """A loop of 2-3 statements branching on two group inputs compared with 3 numbers."""
+    rng = random.Random(seed)
+    pool = rng.sample(NUMBERS, 3)
+    body = "\n".join(_statement(rng, pool) for _ in range(rng.randint(2, 3)))
+    return ("MODULE Gen\n  VAR signalgi gi_a;\n  VAR signalgi gi_b;\n  VAR num x := 0;\n"
+            "  PROC main()\n    AliasIO \"GI_A\", gi_a;\n    AliasIO \"GI_B\", gi_b;\n"
+            f"    WHILE TRUE DO\n{body}\n    ENDWHILE\n  ENDPROC\nENDMODULE\n")
+
+
+PROPERTIES = "\n".join(
+    [f"never_{k}: G !\"x = {k}\"" for k in range(4)]
+    + [f"often_{k}: G F \"x = {k}\"" for k in range(4)]
+    + [f"settles_{k}: F G \"x = {k}\"" for k in range(4)]
+    + ["answer: G (\"x = 1\" -> F \"x = 2\")"]) + "\n"
+
+FULL = tuple(float(v) for v in range(16))
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_derived_domains_keep_the_verdicts_of_every_4_bit_value(tmp_path, seed):
+    program_text = generated_program(seed)
+    (tmp_path / "props.ltl").write_text(PROPERTIES)
+    properties = api.read_properties(str(tmp_path / "props.ltl"))
+    derived = api.check(_load(tmp_path, program_text), properties)
+    full = api.check(_load(tmp_path, program_text), properties,
+                     api.CheckOptions(input_domains={"GI_A": FULL, "GI_B": FULL}))
+    assert any(w.code.code == "RMC515" for w in derived.warnings)
+    assert derived.verdicts == full.verdicts, program_text
+
+
+def test_the_generated_programs_are_not_trivial(tmp_path):
+    """Across the differential corpus both verdicts occur for each kind of property."""
+    (tmp_path / "props.ltl").write_text(PROPERTIES)
+    properties = api.read_properties(str(tmp_path / "props.ltl"))
+    verdicts = set()
+    for seed in range(10):
+        report = api.check(_load(tmp_path, generated_program(seed)), properties)
+        verdicts.update((name.split("_")[0], v) for name, v in report.verdicts.items())
+    for kind, verdict in itertools.product(["never", "often", "settles"], ["HOLDS", "VIOLATED"]):
+        assert (kind, verdict) in verdicts
+
+
+def test_an_alias_with_a_computed_name_leaves_no_default(tmp_path):
+    text = PASSED_ON.replace("    show gi_code;\n", "    AliasIO name, gi_other;\n    IF gi_other = 2 x := 2;\n") \
+        .replace("  VAR num x := 0;\n", "  VAR num x := 0;\n  VAR string name := \"GI_CODE\";\n"
+                 "  VAR signalgi gi_other;\n")
+    assert "prog.mod:9:5 names its signal at run time" in _refusal(tmp_path, text)
+
+
+def test_a_read_used_as_an_index_names_the_first_such_read(tmp_path):
+    text = PASSED_ON.replace("    show gi_code;\n", "    x := table{GInput(gi_code)};\n    x := gi_code + 1;\n") \
+        .replace("  VAR num x := 0;\n", "  VAR num x := 0;\n  VAR num table{3} := [1, 2, 3];\n")
+    note = _refusal(tmp_path, text)
+    assert "prog.mod:8:23 is used as an array index" in note
