@@ -139,6 +139,9 @@ LEXICAL_CORNERS = [
     "MODULE m\nPROC p()\n  x := 1;\n",
     "",
     "! only a comment\n",
+    "MODULE m\nENDMODULE\n  ! a comment after the module\n",
+    "MODULE m\nENDMODULE ! c",
+    "MODULE m\nENDMODULE\n\n\n",
 ]
 
 

@@ -25,6 +25,8 @@ Example::
     [('NAME', 'x', 1, 1), ('_ASSIGN', ':=', 1, 3), ('NUMBER', '1', 1, 6), ('SEMICOLON', ';', 1, 7), ('_ENDIF', 'ENDIF', 2, 3)]
     >>> scanner.scan("x := 1 $ 2;", Token) is None
     True
+    >>> [t.value for t in scanner.scan("ENDMODULE\n! the end", Token)]
+    ['ENDMODULE']
 """
 from __future__ import annotations
 
@@ -49,8 +51,9 @@ class Scanner:
         skipped = "|".join(t.pattern.to_regexp() for t in ordered if t.name in ignore)
         tokens = [t for t in ordered if t.name not in ignore]
         alternatives = "|".join(f"(?:{t.pattern.to_regexp()})" for t in tokens)
-        # Two groups: the ignored text, then the token (or one stray character).
-        self.pattern = re.compile(f"((?>(?:{skipped})*))({alternatives}|(?s:.))")
+        # Two groups: the ignored text, then the token (or one stray character, or the end
+        # of the text after ignored text such as a last comment: an empty token, dropped).
+        self.pattern = re.compile(f"((?>(?:{skipped})*))({alternatives}|(?s:.)|\\Z)")
         assert self.pattern.groups == 2, "a terminal's pattern has a capturing group"
         self.terminal_of = re.compile(
             "|".join(f"(?P<{t.name}>{t.pattern.to_regexp()})" for t in tokens)).match
@@ -60,6 +63,8 @@ class Scanner:
         made as it is asked for; None, before any token, when some text is no token of
         the grammar."""
         pieces = self.pattern.findall(text)
+        while pieces and not pieces[-1][1]:
+            pieces.pop()        # the ignored text at the end (and findall's empty last match)
         terminal = self.terminals(set(map(_TOKEN, pieces)))
         if terminal is None:
             return None
