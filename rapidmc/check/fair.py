@@ -29,6 +29,7 @@ from __future__ import annotations
 
 from typing import Hashable, Optional, Protocol
 
+from ..ltl.graph import pop_component
 from .budget import DEFAULT_MAX_STATES, SearchBudget
 from .lasso import LabelledKey, shortest_entry, shortest_path
 from .product import Product
@@ -140,13 +141,7 @@ class _ComponentSearch:
                     low[key] = min(low[key], number[successor])
                 continue
             if low[key] == number[key]:
-                component = []
-                while True:
-                    member = stack.pop()
-                    on_stack.discard(member)
-                    component.append(member)
-                    if member == key:
-                        break
+                component = pop_component(key, stack, on_stack)
                 component.reverse()
                 witnesses = self._fair_witnesses(component, successors)
                 if witnesses is not None:
