@@ -88,24 +88,27 @@ def fair_or_plain_search(system, buchi, valuation, fairness: Optional[TaskFairne
                          progress: Optional[Progress], bounds: dict) -> SearchResult:
     """One property's search: fair to the tasks when ``fairness`` is given.
 
-    --compact / --bitstate searches (``bounds["storage"]``) cannot look for fair
-    cycles; they never answer HOLDS anyway, and a counterexample they find that
-    starves a task is no counterexample under fairness: UNKNOWN.
+    Today's search runs first: fairness only removes runs, so its HOLDS stands,
+    and so does a counterexample whose cycle starves no task (a safety
+    property's, or any the search happens to find fair).  Only a
+    counterexample that starves a task calls for the fair search
+    (``check.fair``).  --compact / --bitstate searches (``bounds["storage"]``)
+    cannot look for fair cycles; they never answer HOLDS anyway, and a
+    counterexample of theirs that starves a task is no answer: UNKNOWN.
     """
-    if fairness is None:
-        return check_property(system, buchi, valuation, progress=progress, **bounds)
-    if bounds.get("storage") is not None:
-        result = check_property(system, buchi, valuation, progress=progress, **bounds)
-        starved = result.verdict == VIOLATED and fairness.unfair_tasks(result.cycle,
-                                                                       result.closing_label)
-        if starved:
-            return SearchResult(UNKNOWN, f"the cycle found starves {', '.join(starved)}; this "
-                                "search cannot look for cycles fair to every task",
-                                stats=result.stats)
+    result = check_property(system, buchi, valuation, progress=progress, **bounds)
+    if fairness is None or result.verdict != VIOLATED:
         return result
+    starved = fairness.unfair_tasks(result.cycle, result.closing_label)
+    if not starved:
+        return result
+    if bounds.get("storage") is not None:
+        return SearchResult(UNKNOWN, f"the cycle found starves {', '.join(starved)}; this "
+                            "search cannot look for cycles fair to every task",
+                            stats=result.stats)
     result = check_fair_property(system, buchi, valuation, fairness, progress=progress,
-                                 max_states=bounds["max_states"],
-                                 max_seconds=bounds["max_seconds"])
+                                 max_states=bounds.get("max_states"),
+                                 max_seconds=bounds.get("max_seconds"))
     if result.verdict == VIOLATED and fairness.unfair_tasks(result.cycle, result.closing_label):
         raise RuntimeError("internal error: the fair search found a cycle that starves a task")
     return result
