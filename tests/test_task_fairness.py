@@ -124,3 +124,52 @@ def test_a_counterexample_that_starves_no_task_is_todays():
         ours, todays = fair.result(name).result, plain.result(name).result
         assert (ours.prefix, ours.cycle, ours.closing_label) == \
             (todays.prefix, todays.cycle, todays.closing_label)
+
+
+# --- the engine's fair search on a toy model (no RAPID) ----------------------------
+
+class TwoParties:
+    """State 0 may stay (party 0) or move to 1 (party 1); 1 goes back to 0 (party 0).
+    Party 1 can go on exactly in state 0.  ``p`` holds in state 1."""
+
+    def initial_states(self):
+        return (0,)
+
+    def successors(self, state):
+        return (("stay", 0), ("move", 1)) if state == 0 else (("back", 0),)
+
+
+class ByLabel:
+    count = 2
+
+    def taken(self, state, label):
+        return 1 if label == "move" else 0
+
+    def excused(self, state):
+        return frozenset({1}) if state == 1 else frozenset()
+
+
+def toy_check(text: str, **bounds):
+    from rapidmc.check.fair import check_fair_property
+    from rapidmc.ltl import parse_formula, to_buchi
+    from rapidmc.ltl.syntax import Not
+    buchi = to_buchi(Not(parse_formula(text)), backend="builtin")
+    return check_fair_property(TwoParties(), buchi, lambda state: int(state == 1 and
+                               "p" in buchi.atoms), ByLabel(), **bounds)
+
+
+@pytest.mark.parametrize("text, verdict, cycle", [
+    ("G F p", HOLDS, None),                   # staying in 0 forever starves party 1
+    ("F G !p", VIOLATED, [0, 1]),             # fair loops pass through 1
+    ("G !p", VIOLATED, [0, 1]),
+])
+def test_the_fair_search_on_a_toy_model(text, verdict, cycle):
+    result = toy_check(text)
+    assert result.verdict == verdict
+    if cycle is not None:
+        assert {step.state for step in result.cycle} == set(cycle)
+
+
+def test_a_bounded_fair_search_is_unknown_not_holds():
+    result = toy_check("G F p", max_states=1)
+    assert result.verdict == UNKNOWN and "state limit 1" in result.reason

@@ -88,7 +88,8 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
                         help="LTL translator (default: spot when installed, else builtin)")
     parser.add_argument("--no-fairness", action="store_true",
                         help="with several tasks: also search runs in which a task that could "
-                             "go on never runs again (default: weak fairness between tasks)")
+                             "go on never runs again (default: weak fairness between tasks; "
+                             "graph draws the same graph either way)")
     reduction.add_arguments(parser)
     storage_options.add_arguments(parser)
 
