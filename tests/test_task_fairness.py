@@ -16,7 +16,10 @@ import pytest
 
 from rapidmc import api
 from rapidmc.check import HOLDS, UNKNOWN, VIOLATED
+from rapidmc.check.fair import check_fair_property
 from rapidmc.cli import main
+from rapidmc.ltl import parse_formula, to_buchi
+from rapidmc.ltl.syntax import Not
 from rapidmc.task_fairness import TaskFairness
 
 CASES = Path(__file__).resolve().parent / "check"
@@ -150,9 +153,6 @@ class ByLabel:
 
 
 def toy_check(text: str, **bounds):
-    from rapidmc.check.fair import check_fair_property
-    from rapidmc.ltl import parse_formula, to_buchi
-    from rapidmc.ltl.syntax import Not
     buchi = to_buchi(Not(parse_formula(text)), backend="builtin")
     return check_fair_property(TwoParties(), buchi, lambda state: int(state == 1 and
                                "p" in buchi.atoms), ByLabel(), **bounds)

@@ -202,11 +202,10 @@ def _assert_fair_counterexample(graph: LabelledGraph, compiler, formula, result,
     assert all(any(target == after for _, target in graph.edges[before])
                for before, after in zip(path, path[1:] + cycle[:1])), where
     assert graph.fair_cycle(cycle), f"unfair cycle: {where}"
-    atoms = sorted({atom for atom in ATOMS})
-    valuation = compiler.valuation(tuple(atoms), {})
+    valuation = compiler.valuation(ATOMS, {})
 
     def letters(ids):
-        return [frozenset(a for i, a in enumerate(atoms)
+        return [frozenset(a for i, a in enumerate(ATOMS)
                           if valuation(graph.states[s]) >> i & 1) for s in ids]
     assert not holds_on_lasso(formula, letters(prefix), letters(cycle)), where
 

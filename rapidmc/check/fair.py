@@ -27,7 +27,7 @@ more than ``emptiness``'s arrays, the price of keeping complete components.
 """
 from __future__ import annotations
 
-from typing import Hashable, Optional, Protocol
+from typing import Callable, Hashable, Optional, Protocol
 
 from ..ltl.graph import pop_component
 from .budget import DEFAULT_MAX_STATES, SearchBudget
@@ -48,8 +48,9 @@ class Fairness(Protocol):
     def excused(self, state: Hashable) -> frozenset: ...
 
 
-EdgeWitness = tuple[int, Hashable, int]        # (key, label, successor key)
-StateWitness = int                             # a key
+EdgeWitness = tuple[int, Hashable, int]        # a step: (key, label, successor key)
+StateWitness = int                             # a state: its key
+Witnesses = dict[int, "EdgeWitness | StateWitness"]    # constraint -> where it is met
 
 
 def search_fair_accepting_cycle(product: Product, fairness: Fairness,
@@ -62,7 +63,8 @@ def search_fair_accepting_cycle(product: Product, fairness: Fairness,
     if found is not None:
         dfs_path, component, witnesses = found
         entry = shortest_entry(product, dfs_path, component, search.number)
-        walk = fair_cycle(product, fairness, entry[-1][1], component, witnesses)
+        walk = fair_cycle(product, fairness.taken, search.excused_at, entry[-1][1], component,
+                          witnesses)
         prefix = [product.lasso_step(key, label) for label, key in entry[:-1]]
         cycle = [product.lasso_step(key, label) for label, key in walk[:-1]]
         cycle[0].label = entry[-1][0]
@@ -161,7 +163,7 @@ class _ComponentSearch:
         if not any(product.is_accepting(key) for key in component):
             return None
         members = set(component)
-        witnesses: dict[int, object] = {}
+        witnesses: Witnesses = {}
         count = self.fairness.count
         for key in component:
             if len(witnesses) == count:
@@ -175,11 +177,12 @@ class _ComponentSearch:
         for key in component:
             if len(witnesses) == count:
                 break
-            for party in self._excused_at(key):
+            for party in self.excused_at(key):
                 witnesses.setdefault(party, key)
         return witnesses if len(witnesses) == count else None
 
-    def _excused_at(self, key: int) -> frozenset:
+    def excused_at(self, key: int) -> frozenset:
+        """The constraints the model state of product key ``key`` fulfils (asked once per state)."""
         state_id = self.product.split(key)[0]
         excused = self._excused.get(state_id)
         if excused is None:
@@ -188,11 +191,12 @@ class _ComponentSearch:
         return excused
 
 
-def fair_cycle(product: Product, fairness: Fairness, root: int, component: set[int],
-               witnesses: dict) -> list[LabelledKey]:
+def fair_cycle(product: Product, taken: Callable, excused_at: Callable[[int], frozenset],
+               root: int, component: set[int], witnesses: Witnesses) -> list[LabelledKey]:
     """A walk ``[(None, root), (label, key), ..., (label, root)]`` of at least one step
     inside the component through an accepting state and every constraint's witness
-    (skipping those the walk already meets)."""
+    (skipping those the walk already meets).  ``taken(state, label)`` and
+    ``excused_at(key)`` are the fairness's, the latter by product key."""
     successors = product.labelled_successor_keys
     walk: list[LabelledKey] = [(None, root)]
 
@@ -202,9 +206,16 @@ def fair_cycle(product: Product, fairness: Fairness, root: int, component: set[i
             raise AssertionError("the fair component is not strongly connected")
         walk.extend(path[1:])
 
+    def met(party: int) -> bool:
+        """Whether the walk so far has a step of ``party`` or a state excusing it."""
+        if any(party in excused_at(key) for _, key in walk):
+            return True
+        return any(taken(product.lasso_step(before, None).state, label) == party
+                   for (_, before), (label, _) in zip(walk, walk[1:]))
+
     go_to(product.is_accepting)
     for party in sorted(witnesses):
-        if _met(product, fairness, walk, party):
+        if met(party):
             continue
         witness = witnesses[party]
         if isinstance(witness, tuple):
@@ -219,15 +230,6 @@ def fair_cycle(product: Product, fairness: Fairness, root: int, component: set[i
         raise AssertionError("the fair component is not strongly connected")
     walk.extend(back[1:])
     return walk
-
-
-def _met(product: Product, fairness: Fairness, walk: list[LabelledKey], party: int) -> bool:
-    """Whether the walk so far has a step of ``party`` or a state excusing it."""
-    states = [product.lasso_step(key, None).state for _, key in walk]
-    if any(party in fairness.excused(state) for state in states):
-        return True
-    return any(fairness.taken(before, label) == party
-               for before, (label, _) in zip(states, walk[1:]))
 
 
 def check_fair_property(system, buchi, valuation, fairness: Fairness, *,
