@@ -10,6 +10,7 @@ from __future__ import annotations
 import contextlib
 import io
 import json
+import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
@@ -173,3 +174,16 @@ def test_the_fair_search_on_a_toy_model(text, verdict, cycle):
 def test_a_bounded_fair_search_is_unknown_not_holds():
     result = toy_check("G F p", max_states=1)
     assert result.verdict == UNKNOWN and "state limit 1" in result.reason
+
+
+def test_the_junit_report_says_fairness_was_assumed(monkeypatch, tmp_path):
+    monkeypatch.chdir(FAIR)
+    report = tmp_path / "junit.xml"
+    with contextlib.redirect_stdout(io.StringIO()):
+        main(["check", "prog.mod", "--add-task", "b.mod", "--ltl", "props.ltl", "--quiet",
+              "--junit", str(report)])
+    cases = {case.get("name"): case for case in ET.parse(report).iter("testcase")}
+    fair = "weak fairness between the tasks main task, task 2 (b)\n"
+    assert cases["seen_again"].findtext("system-out") == f"HOLDS assuming {fair}"
+    assert cases["flag_stays"].findtext("system-out") == f"VIOLATED assuming {fair}"
+    assert cases["no_deadlock"].findtext("system-out") is None
