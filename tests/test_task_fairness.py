@@ -187,3 +187,14 @@ def test_the_junit_report_says_fairness_was_assumed(monkeypatch, tmp_path):
     assert cases["seen_again"].findtext("system-out") == f"HOLDS assuming {fair}"
     assert cases["flag_stays"].findtext("system-out") == f"VIOLATED assuming {fair}"
     assert cases["no_deadlock"].findtext("system-out") is None
+
+
+def test_a_sarif_violation_names_the_tasks_assumed_fair(monkeypatch, capsys):
+    monkeypatch.chdir(FAIR)
+    main(["check", "prog.mod", "--add-task", "b.mod", "--ltl", "props.ltl", "--quiet",
+          "--format", "sarif"])
+    results = json.loads(capsys.readouterr().out)["runs"][0]["results"]
+    violated = {result["ruleId"]: result for result in results if result["level"] == "error"}
+    assert set(violated) == {"flag_stays", "never_seen"}
+    for result in violated.values():
+        assert result["properties"] == {"fairTasks": ["main task", "task 2 (b)"]}
