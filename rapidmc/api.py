@@ -37,6 +37,7 @@ from . import reduction
 from .input_domains import Assumed, default_domains
 from .model import RapidDescriber, RapidSystem, replay, with_final_loop
 from .fixed_readings import fixed_readings
+from .task_fairness import TaskFairness, assumes_fairness, fair_or_plain_search
 from .properties import AtomCompiler, Property, check_unique, parse_property, read_property_file
 from .semantics.configured_signals import _walk_statements
 from .semantics.link import build
@@ -70,6 +71,7 @@ class CheckOptions:
     max_seconds: Optional[float] = None
     reductions: reduction.Reductions = reduction.ALL   # sliced data, dead data, merged steps
     storage: Optional[tuple] = None        # None: exact; --compact / --bitstate (never HOLDS)
+    fairness: bool = True                  # weak fairness between tasks (several tasks only)
 
 
 # --- loading -----------------------------------------------------------------------
@@ -308,11 +310,14 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
         if watching:
             facts.finish(system, results[0].result, progress=progress(), **bounds)
         results.append(_deadlock(system, results[0].result, stuck, bounds, progress))
+        fairness = TaskFairness(system) if assumes_fairness(model) else None
         for prop, buchi, valuation in model.jobs:
-            result = check_property(system, buchi, valuation, progress=progress(), **bounds)
+            result = fair_or_plain_search(system, buchi, valuation, fairness, progress(),
+                                          bounds)
             _replayed(system, result)
             vacuous = facts.vacuous(prop.formula) if result.verdict == HOLDS else None
-            results.append(PropertyResult(prop.name, prop.text, result, vacuous))
+            results.append(PropertyResult(prop.name, prop.text, result, vacuous,
+                                          fairness.names if fairness is not None else ()))
     except EnvironmentFault as exc:
         raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
     warnings = [assumed.note() for assumed in model.assumed] + sorted(

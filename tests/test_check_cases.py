@@ -151,8 +151,9 @@ def run_check(case: Case, monkeypatch) -> tuple[int, str, str]:
 
 # --- what a result must look like ---------------------------------------------
 
-def assert_real_lasso(name: str, trace: Optional[dict], program_lines: list[str]) -> None:
-    """A violation's trace is a lasso whose located steps are real lines of prog.mod."""
+def assert_real_lasso(name: str, trace: Optional[dict], folder: Path) -> None:
+    """A violation's trace is a lasso whose located steps are real lines of the case's
+    files (prog.mod, or a further task's module passed with --add-task)."""
     assert trace is not None, f"{name}: VIOLATED without a trace"
     assert trace["cycle"], f"{name}: the trace has an empty cycle (not a lasso)"
     assert trace["loop_start"] == trace["cycle"][0]["index"]
@@ -161,22 +162,30 @@ def assert_real_lasso(name: str, trace: Optional[dict], program_lines: list[str]
     assert located, f"{name}: no step of the trace names a source line"
     for step in located:
         location = step["location"]
-        assert Path(location["file"]).name == PROGRAM, f"{name}: step in {location['file']}"
+        file = Path(location["file"]).name
+        assert file == PROGRAM or file in _task_files(folder), f"{name}: step in {file}"
+        lines = (folder / file).read_text(encoding="latin-1").splitlines()
         line = location["line"]
-        assert 1 <= line <= len(program_lines), f"{name}: line {line} is not in {PROGRAM}"
-        assert step["source"] == program_lines[line - 1].strip(), \
+        assert 1 <= line <= len(lines), f"{name}: line {line} is not in {file}"
+        assert step["source"] == lines[line - 1].strip(), \
             f"{name}: step {step['index']} shows {step['source']!r}, line {line} reads " \
-            f"{program_lines[line - 1].strip()!r}"
+            f"{lines[line - 1].strip()!r}"
+
+
+def _task_files(folder: Path) -> set[str]:
+    """The module files of further tasks named by the case's ``--add-task`` options."""
+    words = [word for line in _data_lines(folder / "args") for word in shlex.split(line)]
+    return {file for option, value in zip(words, words[1:]) if option == "--add-task"
+            for file in value.split(",")}
 
 
 def assert_verdicts(case: Case, stdout: str) -> None:
     document = json.loads(stdout)
     got = {entry["name"]: entry["verdict"] for entry in document["properties"]}
     assert got == case.verdicts
-    program_lines = (case.folder / PROGRAM).read_text(encoding="latin-1").splitlines()
     for entry in document["properties"]:
         if entry["verdict"] == "VIOLATED":
-            assert_real_lasso(entry["name"], entry["trace"], program_lines)
+            assert_real_lasso(entry["name"], entry["trace"], case.folder)
         else:
             assert entry["trace"] is None
         if entry["verdict"] == "UNKNOWN":

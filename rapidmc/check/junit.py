@@ -7,7 +7,8 @@ per property (the built-in checks included):
 * VIOLATED — a ``<failure>`` whose ``message`` is the formula and whose
   text is the counterexample as ``rapidmc check`` prints it;
 * UNKNOWN — ``<skipped>`` with the reason the search stopped;
-* a property that holds vacuously says so in its ``<system-out>``, and
+* a property that holds vacuously says so in its ``<system-out>``, and so
+  does one checked assuming weak fairness between tasks; and
   coverage warnings are listed in the suite's ``<system-out>``.
 
 Input errors (syntax, static errors, malformed properties) become one test
@@ -22,7 +23,7 @@ import xml.etree.ElementTree as ET
 from typing import Sequence
 
 from ..diagnostics import Diagnostic, render
-from .report import PropertyResult, counterexample_lines, vacuity_text
+from .report import PropertyResult, counterexample_lines, fairness_text, vacuity_text
 from .result import UNKNOWN, VIOLATED
 from .trace import TraceDescriber, build_trace
 
@@ -73,8 +74,13 @@ def _property_case(suite: ET.Element, checked: PropertyResult, describer: TraceD
         failure = ET.SubElement(case, "failure", message=checked.formula, type=VIOLATED)
         lines = counterexample_lines(build_trace(result, describer))
         failure.text = "\n".join(line[2:] for line in lines) + "\n"
+    notes = []
+    if checked.fair_tasks:
+        notes.append(f"{result.verdict} {fairness_text(checked.fair_tasks)}")
     if checked.vacuous is not None:
-        ET.SubElement(case, "system-out").text = f"HOLDS {vacuity_text(checked.vacuous)}\n"
+        notes.append(f"HOLDS {vacuity_text(checked.vacuous)}")
+    if notes:
+        ET.SubElement(case, "system-out").text = "".join(note + "\n" for note in notes)
 
 
 def _document(suite: ET.Element) -> str:

@@ -64,7 +64,7 @@ def _walk_back(parents: dict[int, Optional[LabelledKey]], key: int) -> list[Labe
 def build_lasso(product: Product, dfs_path: list[int], component: Collection[int],
                 explored: Container[int]) -> tuple[list[LassoStep], list[LassoStep], Hashable]:
     """(prefix, cycle, closing label) for a component reached by ``dfs_path``."""
-    entry = _shortest_entry(product, dfs_path, component, explored)
+    entry = shortest_entry(product, dfs_path, component, explored)
     root = entry[-1][1]
     successors = product.labelled_successor_keys
     to_accepting = shortest_path(successors, [root], product.is_accepting, component, 0)
@@ -79,7 +79,7 @@ def build_lasso(product: Product, dfs_path: list[int], component: Collection[int
     return prefix, cycle, back[-1][0]
 
 
-def _shortest_entry(product: Product, dfs_path: list[int], component: Collection[int],
+def shortest_entry(product: Product, dfs_path: list[int], component: Collection[int],
                     explored: Container[int]) -> list[LabelledKey]:
     """A shortest path through explored states into the component, else the DFS path.
 

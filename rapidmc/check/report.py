@@ -40,6 +40,7 @@ class PropertyResult:
     formula: str
     result: SearchResult
     vacuous: Optional[str] = None    # a trigger never true in any reachable state (HOLDS only)
+    fair_tasks: tuple = ()           # the tasks assumed weakly fair in the search (several tasks)
 
 
 # --- text ---------------------------------------------------------------------
@@ -50,6 +51,8 @@ def format_text(results: Sequence[PropertyResult], describer: TraceDescriber) ->
     lines: list[str] = []
     for checked in results:
         lines.append(verdict_line(checked))
+        if checked.fair_tasks:
+            lines.append(f"  {fairness_text(checked.fair_tasks)}")
         stats = checked.result.stats
         if stats.deadlocks:
             lines.append(f"  note: {stats.deadlocks:,} reachable state(s) without a successor; "
@@ -74,6 +77,11 @@ def verdict_line(checked: PropertyResult) -> str:
 def vacuity_text(trigger: str) -> str:
     """``vacuously: "!C_IN & S_1" is never true``."""
     return f"vacuously: {json.dumps(trigger, ensure_ascii=False)} is never true"
+
+
+def fairness_text(tasks: Sequence[str]) -> str:
+    """``assuming weak fairness between the tasks main task, task 2 (feeder)``."""
+    return f"assuming weak fairness between the tasks {', '.join(tasks)}"
 
 
 def statistics_text(stats: SearchStats) -> str:
@@ -166,7 +174,8 @@ def property_json(checked: PropertyResult, describer: TraceDescriber) -> dict:
         trace = trace_json(build_trace(result, describer))
     return {"name": checked.name, "formula": checked.formula, "verdict": result.verdict,
             "reason": result.reason, "stats": result.stats.as_dict(), "trace": trace,
-            "vacuous": checked.vacuous}
+            "vacuous": checked.vacuous,
+            "fair_tasks": list(checked.fair_tasks) if checked.fair_tasks else None}
 
 
 def warning_json(warning: Diagnostic) -> dict:

@@ -99,6 +99,8 @@ def _violation(index: int, checked: PropertyResult, trace: Trace) -> dict:
     }
     if anchor is not None:
         result["locations"] = [_location(anchor.transition.file, anchor.transition.line)]
+    if checked.fair_tasks:            # the counterexample lets every task that can go on run
+        result["properties"] = {"fairTasks": list(checked.fair_tasks)}
     return result
 
 

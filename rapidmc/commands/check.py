@@ -86,6 +86,10 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
                         help="use this Büchi automaton (HOA) for the NEGATION of property NAME")
     parser.add_argument("--backend", choices=BACKENDS, default=None,
                         help="LTL translator (default: spot when installed, else builtin)")
+    parser.add_argument("--no-fairness", action="store_true",
+                        help="with several tasks: also search runs in which a task that could "
+                             "go on never runs again (default: weak fairness between tasks; "
+                             "graph draws the same graph either way)")
     reduction.add_arguments(parser)
     storage_options.add_arguments(parser)
 
@@ -134,7 +138,8 @@ def check_options(args: argparse.Namespace) -> api.CheckOptions:
         automata=_pairs(args.automaton, "--automaton"), backend=args.backend,
         max_states=args.max_states, max_seconds=args.max_seconds,
         reductions=reduction.from_arguments(args),
-        storage=storage_options.storage_from_arguments(args))
+        storage=storage_options.storage_from_arguments(args),
+        fairness=not args.no_fairness)
 
 
 def prepare_model(args: argparse.Namespace) -> api.Model:

@@ -46,7 +46,7 @@ def strongly_connected_components(roots: Iterable[Node],
                     parent = work[-1][0]
                     lowlink[parent] = min(lowlink[parent], lowlink[node])
                 if lowlink[node] == index[node]:
-                    components.append(_pop_component(node, stack, on_stack))
+                    components.append(pop_component(node, stack, on_stack))
     return components
 
 
@@ -56,7 +56,8 @@ def _visit(node, index, lowlink, stack, on_stack) -> None:
     on_stack.add(node)
 
 
-def _pop_component(root, stack, on_stack) -> list:
+def pop_component(root, stack: list, on_stack: set) -> list:
+    """Take the component of ``root`` off the Tarjan stack (its members, last pushed first)."""
     component = []
     while True:
         node = stack.pop()
