@@ -396,3 +396,16 @@ def test_with_several_tasks_the_stack_shows_the_running_task_first(browser, tmp_
     (running, other) = shown["stack"]
     assert running == f"task 2 (b): main  b.mod:{in_b['location']['line']}"
     assert other.startswith("main task: main  a.mod:")
+
+
+def test_with_several_tasks_the_table_says_fairness_was_assumed(browser, tmp_path):
+    require_browser()
+    case = ROOT / "tests" / "check" / "tasks_fairness"
+    path = tmp_path / "fair.html"
+    done = rapidmc("check", str(case / "prog.mod"), "--add-task", str(case / "b.mod"),
+                   "--ltl", str(case / "props.ltl"), "--quiet", "--html", str(path))
+    assert done.returncode == 1, done.stderr           # some of its properties are violated
+    page = Page(browser, path)
+    notes = page.texts("#properties .fairness")
+    assert notes and all(n.startswith("assuming weak fairness between the tasks main task")
+                         for n in notes)

@@ -29,7 +29,7 @@ from typing import Mapping, Optional, Sequence
 
 from .. import __version__
 from ..diagnostics import HTML_OUTPUT, NEVER_REACHED, Diagnostic, SourceCache, error
-from .report import PropertyResult, property_json, step_json
+from .report import PropertyResult, fairness_text, property_json, step_json
 from .result import VIOLATED
 from .trace import Trace, TraceDescriber, TraceStep, build_trace
 
@@ -97,6 +97,8 @@ def page_data(results: Sequence[PropertyResult], describer: TraceDescriber,
     located: list[str] = []
     for checked in results:
         entry = property_json(checked, describer)
+        if checked.fair_tasks:
+            entry["fairness"] = fairness_text(checked.fair_tasks)
         if checked.result.verdict == VIOLATED:
             entry["trace"] = trace_view(build_trace(checked.result, describer))
             located.extend(s["location"]["file"] for s in entry["trace"]["steps"]

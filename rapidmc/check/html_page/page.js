@@ -77,6 +77,7 @@
       const verdict = element("td");
       verdict.appendChild(element("span", "verdict " + property.verdict, property.verdict));
       if (property.reason) verdict.appendChild(element("div", "reason", property.reason));
+      if (property.fairness) verdict.appendChild(element("div", "reason fairness", property.fairness));
       row.appendChild(verdict);
       const formula = element("td");
       formula.appendChild(element("code", null, property.formula));
