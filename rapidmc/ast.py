@@ -16,8 +16,8 @@ Example::
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import Optional, Union
+from dataclasses import dataclass, field, fields, is_dataclass
+from typing import Iterator, Optional, Union
 
 
 @dataclass(frozen=True, slots=True)
@@ -512,3 +512,20 @@ def names_used(statement) -> list:
         pending.extend(child for child in children(current)
                        if not isinstance(child, STATEMENT_TYPES))
     return sorted(found, key=lambda item: (item[0].span.line, item[0].span.column))
+
+
+def walk(node, parents: tuple = ()) -> Iterator[tuple[object, tuple]]:
+    """(node, its ancestors) for every syntax node under ``node`` (itself included), in
+    source order; spans and names are leaves, not nodes."""
+    yield node, parents
+    inner = parents + (node,)
+    for f in fields(node):
+        yield from _walk_value(getattr(node, f.name), inner)
+
+
+def _walk_value(value, parents: tuple) -> Iterator[tuple[object, tuple]]:
+    if isinstance(value, (tuple, list)):
+        for item in value:
+            yield from _walk_value(item, parents)
+    elif is_dataclass(value) and not isinstance(value, (Span, Name, type)):
+        yield from walk(value, parents)

@@ -15,7 +15,6 @@ Calls only inside the text of FlexPendant or log output (``TPWrite``,
 """
 from __future__ import annotations
 
-import dataclasses
 from typing import Iterator
 
 from . import ast
@@ -64,19 +63,10 @@ def _warning(name: ast.Name, count: int) -> Diagnostic:
     return Diagnostic(FIXED_READING, message, name.span, severity="warning")
 
 
-def _readings(node) -> Iterator[ast.Name]:
-    """The names of routines called in ``node``, outside the arguments of output instructions."""
-    if isinstance(node, (tuple, list)):
-        for item in node:
-            yield from _readings(item)
-        return
-    if not dataclasses.is_dataclass(node) or isinstance(node, (ast.Span, ast.Name)):
-        return
-    if isinstance(node, ast.ProcedureCall):
-        if node.name.key in OUTPUT_ONLY:
-            return
-        yield node.name
-    elif isinstance(node, ast.FunctionCall):
-        yield node.name
-    for field in dataclasses.fields(node):
-        yield from _readings(getattr(node, field.name))
+def _readings(routine_ast) -> Iterator[ast.Name]:
+    """The names of routines called in a routine, outside the arguments of output instructions."""
+    for node, parents in ast.walk(routine_ast):
+        if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) and \
+                not any(isinstance(p, ast.ProcedureCall) and p.name.key in OUTPUT_ONLY
+                        for p in (node, *parents)):
+            yield node.name

@@ -27,8 +27,8 @@ explicit ``--input-domain`` always wins.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, fields, is_dataclass
-from typing import Iterator, Optional, Sequence, Union
+from dataclasses import dataclass
+from typing import Optional, Sequence, Union
 
 from . import ast
 from .diagnostics import DOMAIN_ASSUMED, Diagnostic
@@ -167,11 +167,11 @@ class ReadCollector:
     def collect(self) -> None:
         routines = [r for r in self.program.routines if r.ast is not None]
         for routine in routines:                  # AliasIO first: reads may come before
-            for node, _ in _walk(routine.ast, ()):
+            for node, _ in ast.walk(routine.ast):
                 if isinstance(node, ast.ProcedureCall) and node.name.key == "ALIASIO":
                     self._alias(node, routine.scope)
         for routine in routines:
-            for node, parents in _walk(routine.ast, ()):
+            for node, parents in ast.walk(routine.ast):
                 if isinstance(node, ast.NameRef) and not _inside_alias(parents):
                     for index in self._signals_named(node, routine.scope):
                         self._classify(index, node, parents, routine.scope)
@@ -283,24 +283,3 @@ def _use_of(parent) -> str:
 
 def _inside_alias(parents: tuple) -> bool:
     return any(isinstance(p, ast.ProcedureCall) and p.name.key == "ALIASIO" for p in parents)
-
-
-def _walk(node, parents: tuple) -> Iterator[tuple[object, tuple]]:
-    """(node, its ancestors) for every syntax node under ``node`` (itself included)."""
-    yield node, parents
-    inner = parents + (node,)
-    for child in _children(node):
-        yield from _walk(child, inner)
-
-
-def _children(node) -> Iterator[object]:
-    for f in fields(node):
-        yield from _nodes_in(getattr(node, f.name))
-
-
-def _nodes_in(value) -> Iterator[object]:
-    if isinstance(value, (tuple, list)):
-        for item in value:
-            yield from _nodes_in(item)
-    elif is_dataclass(value) and not isinstance(value, (ast.Span, ast.Name, type)):
-        yield value
