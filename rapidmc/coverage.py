@@ -15,6 +15,7 @@ from typing import Hashable, Sequence
 
 from .ast import Span
 from .diagnostics import NEVER_REACHED, Diagnostic
+from .reduction.merging import executed_spans
 from .semantics.instructions import EndRoutine, EndUndo
 from .semantics.program import ENVIRONMENT_NAMESPACE, Program
 
@@ -45,12 +46,8 @@ class StatementWatch:
     def __call__(self, state: Hashable, successors: Sequence[tuple[Hashable, Hashable]]) -> None:
         executed = self.executed
         for (_, span, _), _ in successors:
-            if span is None:
-                continue
-            if isinstance(span, tuple):          # a merged step: every instruction it ran
-                executed.update((one.file, one.line) for one in span if one is not None)
-            else:
-                executed.add((span.file, span.line))
+            executed.update((one.file, one.line) for one in executed_spans(span)
+                            if one is not None)
 
 
 def unreached(program: Program, executed: set[tuple[str, int]]) -> list[Unreached]:

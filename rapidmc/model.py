@@ -28,6 +28,7 @@ from .semantics.values import format_num, format_value
 from .semantics.errors import errno_name
 from .reduction import NO_PLAN, Plan
 from .reduction.expansion import expand_lasso
+from .reduction.merging import executed_spans
 
 
 _new_tuple = tuple.__new__
@@ -229,8 +230,7 @@ class RapidDescriber:
     def describe_transition(self, label) -> TransitionInfo:
         choices, span, output = label
         inputs = {name: _choice_text(value) for name, value in choices}
-        if isinstance(span, tuple):          # merged steps not expanded: the first one
-            span = span[0]
+        span = executed_spans(span)[0]       # merged steps not expanded: the first one
         if span is None:
             source = "(the program has stopped: this state repeats forever)" if not choices else ""
             return TransitionInfo(None, None, source, inputs, output)

@@ -16,6 +16,7 @@ from typing import Callable, Hashable, Optional
 
 from ..check.model import STUTTER
 from ..check.result import LassoStep, SearchResult
+from .merging import executed_spans
 
 Path = list[tuple[Hashable, Hashable]]
 
@@ -58,7 +59,7 @@ def _follow(plain, state, label, target, project: Callable) -> Optional[Path]:
     if label is None or label is STUTTER:
         return [(label, state)]
     choices, span, _ = label
-    spans = list(span) if isinstance(span, tuple) else [span]
+    spans = list(executed_spans(span))
     choices = tuple(choices)
 
     def search(at, depth: int, chosen: tuple) -> Optional[Path]:

@@ -176,3 +176,9 @@ def nodes_by_span(decl: ast.Routine) -> dict:
 
 def _has_next(formula) -> bool:
     return any(isinstance(node, syntax.Next) for node in _walk(formula))
+
+
+def executed_spans(span) -> tuple:
+    """The spans a transition's span stands for: a merged step's span is the tuple of
+    every instruction it ran, in order; any other step's is one span (or None)."""
+    return span if isinstance(span, tuple) else (span,)
