@@ -99,6 +99,11 @@ class Lowering:
         # Expressions written in parentheses: id -> where the parentheses start and
         # end, and the node itself (kept alive so that its id is not reused).
         self.enclosed: dict[int, tuple] = {}
+        # Identifier text -> key, for the identifiers already checked and found good
+        # (a file repeats its few names thousands of times).
+        self.keys: dict[str, str] = {}
+        # Numeric literal text -> value, for the literals already read and in range.
+        self.numbers: dict[str, int | float] = {}
 
     # ---------------------------------------------------------------- helpers
 
@@ -158,10 +163,19 @@ class Lowering:
         text = token.value
         span = nodes.Span(self.filename, token.line, token.column, token.end_line,
                           token.end_column)
+        key = self.keys.get(text)
+        if key is None:
+            key = self.checked_key(text, span)
+        return nodes.Name(text, key, span)
+
+    def checked_key(self, text: str, span: ast.Span) -> str:
+        """The key of an identifier not met before in this file, reported if it is bad."""
         key = text.upper()
         if len(text) > MAX_IDENTIFIER_LENGTH or key in RESERVED_WORDS:
             self.report_bad_name(text, key, span)
-        return nodes.Name(text, key, span)
+        else:
+            self.keys[text] = key
+        return key
 
     def report_bad_name(self, text: str, key: str, span: ast.Span) -> None:
         if len(text) > MAX_IDENTIFIER_LENGTH:
@@ -464,11 +478,21 @@ class Lowering:
     @children_only
     def number(self, children, entries=None):
         text = children[0].value
-        value = number_value(text)
         span = self.token_span(children[0])
+        value = self.numbers.get(text)
+        if value is None:
+            value = self.checked_number(text, span)
+        return nodes.NumLiteral(value, text, span)
+
+    def checked_number(self, text: str, span: ast.Span) -> int | float:
+        """The value of a numeric literal not met before in this file, reported if it is
+        out of range."""
+        value = number_value(text)
         if isinstance(value, float) and math.isinf(value):
             self.report(error(BAD_NUMBER, f"numeric literal {text} is out of range", span))
-        return nodes.NumLiteral(value, text, span)
+        else:
+            self.numbers[text] = value
+        return value
 
     @children_only
     def string(self, children, entries=None):

@@ -138,7 +138,9 @@ def _parse(text: str, filename: str, compiled: bool = False) -> tuple[ast.Module
         tokens = _scanner().scan(text, CompiledToken)
         if tokens is None:
             raise NotScanned(filename)
-        lowering.lexer = feed = accelerated.TokenFeed(tokens, MAX_STACK_DEPTH, lowering.too_deep)
+        lowering.lexer = feed = accelerated.TokenFeed(
+            tokens, MAX_STACK_DEPTH, lowering.too_deep,
+            accelerated.depth_growth(table, _pass_through()))
         modules = accelerated.parse(table, callbacks, feed, START_RULE, _pass_through())
     else:
         lowering.lexer = lexer = RapidLexer(
