@@ -164,15 +164,14 @@ def stage_times(text: str, runs: int) -> None:
             stream.write(text)
         reading = min(cpu_seconds(lambda: read_source(path)) for _ in range(runs))
     scanner = parser._scanner()
-    tokens = scanner.scan(text, CompiledToken)
-    scanning = min(cpu_seconds(lambda: scanner.scan(text, CompiledToken))
+    tokens = list(scanner.scan(text, CompiledToken))
+    scanning = min(cpu_seconds(lambda: list(scanner.scan(text, CompiledToken)))
                    for _ in range(runs))
     table = rapid_parser().parser.parser._parse_table
     ignored = {rule: _ignore for rule in parser._reduced_rules()}
 
     def loop_alone(pass_through):
-        feed = accelerated.TokenFeed(tokens, parser.MAX_STACK_DEPTH, None,
-                                     accelerated.depth_growth(table, pass_through))
+        feed = accelerated.TokenFeed(tokens, parser.MAX_STACK_DEPTH, None)
         accelerated.parse(table, ignored, feed, parser.START_RULE, pass_through)
     looping = min(cpu_seconds(lambda: loop_alone(parser._pass_through())) for _ in range(runs))
     unshortened = min(cpu_seconds(lambda: loop_alone(frozenset())) for _ in range(runs))

@@ -9,7 +9,6 @@ import sys
 from pathlib import Path
 
 import pytest
-from lark.exceptions import UnexpectedInput
 
 from rapidmc.diagnostics import UserError
 from rapidmc.syntax import accelerated, parser
@@ -197,46 +196,3 @@ def test_nesting_limit_is_the_same_on_both_paths(opening, middle, closing, aroun
     finally:
         sys.setrecursionlimit(limit)
     assert outcomes == {"ast", "diagnostics"}
-
-
-class _CheckingFeed:
-    """Tokens one at a time by Python code, recording the stack depth at each read."""
-
-    def __init__(self, tokens):
-        self.tokens, self.depths = iter(tokens), []
-
-    def next_token(self, parser_state):
-        self.depths.append(len(parser_state.state_stack))
-        for token in self.tokens:
-            return token
-        raise EOFError
-
-
-@needs_compiled
-def test_stack_grows_by_at_most_the_depth_growth_between_two_reads():
-    """``TokenFeed`` checks the stack depth only where a slice of tokens begins, relying
-    on ``depth_growth``: measured at every read, on every program and on nested code."""
-    from rapidmc.syntax.tokens import CompiledToken
-    table = parser.rapid_parser().parser.parser._parse_table
-    growth = accelerated.depth_growth(table, parser._pass_through())
-    nested = ["MODULE m PROC p() " + "IF a THEN " * 40 + "ENDIF " * 40 + "ENDPROC ENDMODULE",
-              "MODULE m PROC p() x := " + "NOT " * 60 + "(" * 30 + "a" + ")" * 30
-              + "; ENDPROC ENDMODULE",
-              "MODULE m PROC p() IF a THEN ELSEIF b THEN ELSE ENDIF ENDPROC TRAP t ENDTRAP "
-              "FUNC num f() ERROR UNDO ENDFUNC ENDMODULE"]
-    texts = [path.read_text(encoding="latin-1") for path in PROGRAMS] + nested
-    largest = 0
-    for text in texts:
-        tokens = parser._scanner().scan(text, CompiledToken)
-        if tokens is None:
-            continue
-        feed = _CheckingFeed(tokens)
-        counting_only = {rule: len for rule in parser._reduced_rules()}
-        try:
-            accelerated.parse(table, counting_only, feed, parser.START_RULE,
-                              parser._pass_through())
-        except UnexpectedInput:             # a syntax error: the reads before it count
-            pass
-        steps = [after - before for before, after in zip(feed.depths, feed.depths[1:])]
-        largest = max([largest, *steps])
-    assert 1 < largest <= growth            # empty bodies make some reads grow by two

@@ -111,12 +111,10 @@ def test_rapid_table_skips_two_fifths_of_the_reductions():
         counting = {rule: (lambda entries, callback=callback: calls.append(1) or callback(entries))
                     for rule, callback in parser.rule_callbacks(parser._reduced_rules(),
                                                                 lowering).items()}
-        table = parser.rapid_parser().parser.parser._parse_table
         lowering.lexer = feed = accelerated.TokenFeed(
-            parser._scanner().scan(text, CompiledToken), parser.MAX_STACK_DEPTH, None,
-            accelerated.depth_growth(table, pass_through))
-        results.append(accelerated.parse(table, counting, feed, parser.START_RULE,
-                                         pass_through))
+            parser._scanner().scan(text, CompiledToken), parser.MAX_STACK_DEPTH, None)
+        results.append(accelerated.parse(parser.rapid_parser().parser.parser._parse_table,
+                                         counting, feed, parser.START_RULE, pass_through))
         counts.append(len(calls))
     assert results[0] == results[1]
     assert counts[1] < 0.7 * counts[0]

@@ -19,8 +19,7 @@ exactly the one Lark's driver gives.  Without lark_cython installed,
 from __future__ import annotations
 
 import functools
-import itertools
-from typing import Callable, Iterator
+from typing import Callable, Iterable, Iterator
 
 from lark.parsers.lalr_analysis import Reduce
 
@@ -81,72 +80,32 @@ def parse(table, callbacks: dict, tokens: "TokenFeed", start: str,
     return CompiledParser(compiled, by_reduction).parse(tokens, start)
 
 
-@functools.cache
-def depth_growth(table, pass_through: frozenset = frozenset()) -> int:
-    """How much deeper the parser stack of the compiled loop can be when it asks for a
-    token than when it asked for the one before: one shift, and the reductions by
-    empty rules (``body`` with no statements) it can make in a row on one lookahead.
-    An empty rule pops nothing, so the state it goes to is known from the table alone."""
-    states = compiled_table(table, pass_through).states
-    longest = 0
-    for start, actions in states.items():
-        for symbol in actions:
-            state, in_a_row = start, 0
-            kind, argument = states[state][symbol]
-            while kind is Reduce and not argument.expansion:
-                in_a_row += 1
-                if in_a_row > len(states):
-                    raise ValueError("empty rules reduce in a cycle")  # pragma: no cover
-                state = states[state][argument.origin.name][1]
-                kind, argument = states[state].get(symbol, (None, None))
-            longest = max(longest, in_a_row)
-    return 1 + longest
-
-
 class TokenFeed:
-    """The tokens of a text (a list) as the compiled loop asks for them:
-    ``next_token(parser_state)``, then ``EOFError`` after the last one.
+    """The tokens of a text as the compiled loop asks for them: ``next_token(parser_state)``,
+    then ``EOFError`` after the last one.
 
     Like ``RapidLexer`` it tells the last token the parser has shifted
     (``previous``, which ends the text of the rule being reduced) and calls
     ``on_too_deep`` when the parser stack is deeper than ``max_depth`` as a
-    token is read.
+    token is read."""
 
-    No Python code runs per token: the tokens are handed over by C iterators
-    (``next`` on a chain of slices of one list iterator).  The stack depth is
-    checked where a slice begins; a slice is as long as the stack, growing
-    by at most ``growth`` entries per token (``depth_growth``), cannot pass
-    ``max_depth`` within it, so the checks skipped would all have passed.
-    ``previous`` is found from how many tokens the list iterator has left."""
-
-    def __init__(self, tokens: list, max_depth: int, on_too_deep: Callable[[], None],
-                 growth: int):
+    def __init__(self, tokens: Iterable, max_depth: int, on_too_deep: Callable[[], None]):
         self.tokens, self.max_depth, self.on_too_deep = tokens, max_depth, on_too_deep
-        self.growth = growth
-        self.remaining = iter(tokens)
-        self.finished = False
+        self.previous = None
         self.next_token = self.first_token
 
     def first_token(self, parser_state):
-        self.next_token = functools.partial(
-            next, itertools.chain.from_iterable(self.slices(parser_state.state_stack)))
-        return self.next_token(parser_state)
+        feed = self.feed(parser_state.state_stack)
+        self.next_token = feed.send          # one C call per token; the value sent is unused
+        return next(feed)
 
-    def slices(self, state_stack: list) -> Iterator:
-        remaining, max_depth, growth = self.remaining, self.max_depth, self.growth
-        while remaining.__length_hint__():
-            depth = len(state_stack)
-            if depth > max_depth:
+    def feed(self, state_stack: list) -> Iterator:
+        max_depth, current = self.max_depth, None
+        for token in self.tokens:
+            if len(state_stack) > max_depth:
                 self.on_too_deep()
-            yield itertools.islice(remaining, 1 + max(0, max_depth - depth) // growth)
-        self.finished = True
+            self.previous = current
+            current = token
+            yield token
+        self.previous = current
         raise EOFError
-
-    @property
-    def previous(self):
-        """The token before the one the parser is looking at (the last at the end)."""
-        tokens = self.tokens
-        if self.finished:
-            return tokens[-1] if tokens else None
-        index = len(tokens) - self.remaining.__length_hint__() - 2
-        return tokens[index] if index >= 0 else None

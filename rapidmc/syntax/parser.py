@@ -138,9 +138,7 @@ def _parse(text: str, filename: str, compiled: bool = False) -> tuple[ast.Module
         tokens = _scanner().scan(text, CompiledToken)
         if tokens is None:
             raise NotScanned(filename)
-        lowering.lexer = feed = accelerated.TokenFeed(
-            tokens, MAX_STACK_DEPTH, lowering.too_deep,
-            accelerated.depth_growth(table, _pass_through()))
+        lowering.lexer = feed = accelerated.TokenFeed(tokens, MAX_STACK_DEPTH, lowering.too_deep)
         modules = accelerated.parse(table, callbacks, feed, START_RULE, _pass_through())
     else:
         lowering.lexer = lexer = RapidLexer(

@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import re
 from operator import itemgetter
-from typing import Optional
+from typing import Iterator, Optional
 
 from lark import Token
 from lark.lexer import TerminalDef
@@ -58,15 +58,17 @@ class Scanner:
         self.terminal_of = re.compile(
             "|".join(f"(?P<{t.name}>{t.pattern.to_regexp()})" for t in tokens)).match
 
-    def scan(self, text: str, make_token: type) -> Optional[list]:
-        """The tokens of ``text`` (made by ``make_token``, called as ``Token`` is); None
-        when some text is no token of the grammar."""
+    def scan(self, text: str, make_token: type) -> Optional[Iterator]:
+        """The tokens of ``text`` (made by ``make_token``, called as ``Token`` is), each
+        made as it is asked for; None, before any token, when some text is no token of
+        the grammar."""
         pieces = self.pattern.findall(text)
         while pieces and not pieces[-1][1]:
             pieces.pop()        # the ignored text at the end (and findall's empty last match)
         terminal = self.terminals(set(map(_TOKEN, pieces)))
         if terminal is None:
             return None
+        pieces.reverse()        # taken from the end: each piece is freed once its token is made
         return _tokens(pieces, terminal, make_token)
 
     def terminals(self, values: set[str]) -> Optional[dict[str, str]]:
@@ -84,13 +86,13 @@ class Scanner:
 
 
 def _tokens(pieces: list[tuple[str, str]], terminal: dict[str, str],
-            make_token: type) -> list:
-    """The tokens of ``pieces`` (ignored text and token text), with their lines and
-    columns counted (Lark counts lines at \\n only)."""
-    tokens: list = []
-    append = tokens.append
+            make_token: type) -> Iterator:
+    """The tokens of ``pieces`` (ignored text and token text, last piece first), with
+    their lines and columns counted (Lark counts lines at \\n only)."""
+    take = pieces.pop
     position, line, line_start = 0, 1, 0
-    for skipped, value in pieces:
+    for _ in range(len(pieces)):
+        skipped, value = take()
         if skipped:
             if "\n" in skipped:
                 line += skipped.count("\n")
@@ -98,7 +100,6 @@ def _tokens(pieces: list[tuple[str, str]], terminal: dict[str, str],
             position += len(skipped)
         end = position + len(value)
         column = position - line_start + 1
-        append(make_token(terminal[value], value, position, line, column, line,
-                          column + end - position, end))
+        yield make_token(terminal[value], value, position, line, column, line,
+                         column + end - position, end)
         position = end
-    return tokens
