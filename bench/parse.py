@@ -53,7 +53,9 @@ builds the nodes), or AST nodes cheaper to build than frozen dataclasses.
 """
 from __future__ import annotations
 
+import dataclasses
 import gc
+import itertools
 import os
 import statistics
 import sys
@@ -62,6 +64,7 @@ import time
 
 from rapidmc.source import read_source
 from rapidmc.syntax import accelerated, parse_text, parser
+from rapidmc.syntax.construct import nodes
 from rapidmc.syntax.parser import rapid_parser
 from rapidmc.syntax.tokens import CompiledToken
 
@@ -182,6 +185,46 @@ def stage_times(text: str, runs: int) -> None:
     print(f"{count} lines, {len(tokens)} tokens; CPU time, best of {runs}:")
     for name, seconds in stages:
         print(f"  {name:17} {seconds * 1000:7.1f} ms  {count / seconds:12,.0f} lines/s")
+    floor_times(text, tokens, looping, runs)
+
+
+def floor_times(text: str, tokens: list, looping: float, runs: int) -> None:
+    """What the fast path cannot do without, each measured alone: the scanner's regular
+    expression, making lark_cython's tokens (from their fields, in C), the compiled loop
+    (no-op callbacks) and making the AST's nodes (from their fields, by ``construct``'s
+    builders).  Their sum is the floor of this design, with no Python run per token or
+    per rule beyond the feed and one call per reduction."""
+    count = text.count("\n")
+    pattern = parser._scanner().pattern
+    matching = min(cpu_seconds(lambda: pattern.findall(text)) for _ in range(runs))
+    fields = [(t.type, t.value, t.start_pos, t.line, t.column, t.end_line, t.end_column,
+               t.end_pos) for t in tokens]
+    making = min(cpu_seconds(lambda: list(itertools.starmap(CompiledToken, fields)))
+                 for _ in range(runs))
+    built = _node_fields(parse_text(text, "bench.mod"))
+    building = min(cpu_seconds(lambda: [build(*values) for build, values in built])
+                   for _ in range(runs))
+    floor = [("regular expression", matching), ("token objects", making),
+             ("LALR loop alone", looping), (f"{len(built):,} AST nodes", building)]
+    print("floor of this design (each part alone):")
+    for name, seconds in floor + [("sum", sum(seconds for _, seconds in floor))]:
+        print(f"  {name:17} {seconds * 1000:7.1f} ms  {count / seconds:12,.0f} lines/s")
+
+
+def _node_fields(tree) -> list[tuple]:
+    """(builder, field values) of every distinct node of ``tree``, children first."""
+    found: dict[int, tuple] = {}
+
+    def visit(value):
+        if isinstance(value, (tuple, list)):
+            for item in value:
+                visit(item)
+        elif dataclasses.is_dataclass(value) and id(value) not in found:
+            values = tuple(getattr(value, f.name) for f in dataclasses.fields(value))
+            visit(values)
+            found[id(value)] = (getattr(nodes, type(value).__name__), values)
+    visit(tree)
+    return list(found.values())
 
 
 def _ignore(entries):

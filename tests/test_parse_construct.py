@@ -5,7 +5,7 @@ import dataclasses
 
 import pytest
 
-from rapidmc.syntax.construct import NODE_CLASSES, _draft_class, constructor, nodes
+from rapidmc.syntax.construct import NODE_CLASSES, draft_class, constructor, nodes
 
 
 @pytest.mark.parametrize("name", sorted(NODE_CLASSES))
@@ -45,5 +45,5 @@ def test_every_node_class_is_filled_in_as_a_draft(name):
     """The fast path (plain stores into a class of the same layout, then the class
     assigned) is open to every AST class; the slower slot setters are a fallback."""
     cls = NODE_CLASSES[name]
-    draft = _draft_class(cls)
+    draft = draft_class(cls)
     assert draft is not None and draft.__slots__ == cls.__slots__

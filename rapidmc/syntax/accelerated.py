@@ -48,21 +48,15 @@ class CompiledTable:
     shortcuts (``shortcuts``) and each rule replaced by its ``Reduction``."""
 
     def __init__(self, table, pass_through: frozenset = frozenset()):
-        reductions: dict[int, Reduction] = {}
-
-        def action(entry):
-            kind, argument = entry
-            if kind is not Reduce:
-                return entry
-            if id(argument) not in reductions:
-                reductions[id(argument)] = Reduction(argument)
-            return kind, reductions[id(argument)]
         states = with_shortcuts(table.states, pass_through.__contains__,
                                 table.end_states.values()) if pass_through else table.states
-        self.states = {state: {symbol: action(entry) for symbol, entry in actions.items()}
+        reductions = {id(rule): (Reduce, Reduction(rule)) for actions in states.values()
+                      for kind, rule in actions.values() if kind is Reduce}
+        self.states = {state: {symbol: reductions[id(entry[1])] if entry[0] is Reduce else entry
+                               for symbol, entry in actions.items()}
                        for state, actions in states.items()}
         self.start_states, self.end_states = table.start_states, table.end_states
-        self.reductions = tuple(reductions.values())
+        self.reductions = tuple(reduction for _, reduction in reductions.values())
 
 
 @functools.cache

@@ -31,7 +31,7 @@ from lark import Token
 from .. import ast
 from ..diagnostics import (BAD_NUMBER, BAD_STRING, IDENTIFIER_TOO_LONG, SYNTAX, UNSUPPORTED,
                            UserError, error)
-from .construct import nodes
+from .construct import draft_class, nodes
 from .reductions import children_only
 from .tokens import TOKEN_TYPES
 
@@ -52,6 +52,7 @@ COMPARING = frozenset({"RELATION"})
 CONJOINING = frozenset({"AND"})
 DISJOINING = frozenset({"OR", "XOR"})
 _STRING_ESCAPE = re.compile(r'""|\\\\|\\([0-9a-fA-F]{2})|\\')
+_SpanDraft = draft_class(ast.Span)
 _INTEGER_LITERAL = re.compile(r"[0-9]+|0[xX][0-9a-fA-F]+|0[oO][0-7]+|0[bB][01]+")
 
 
@@ -157,12 +158,17 @@ class Lowering:
         return nodes.Span(self.filename, line, column, *self.text_end(last))
 
     def token_span(self, token: Token) -> ast.Span:
-        return nodes.Span(self.filename, token.line, token.column, token.end_line, token.end_column)
+        """The span of one token (built as ``nodes.Span`` would build it, inline: the
+        front end makes one for every identifier and literal)."""
+        span = _SpanDraft()
+        span.file, span.line, span.column = self.filename, token.line, token.column
+        span.end_line, span.end_column = token.end_line, token.end_column
+        span.__class__ = ast.Span
+        return span
 
     def name(self, token: Token) -> ast.Name:
         text = token.value
-        span = nodes.Span(self.filename, token.line, token.column, token.end_line,
-                          token.end_column)
+        span = self.token_span(token)
         key = self.keys.get(text)
         if key is None:
             key = self.checked_key(text, span)

@@ -47,59 +47,70 @@ def with_shortcuts(states: dict[int, dict], passes_on: Callable[[object], bool],
                    end_states: Iterable[int]) -> dict[int, dict]:
     """``states`` (Lark's: state -> symbol -> (Shift, state) or (Reduce, rule)) with
     the reductions of the rules ``passes_on`` accepts taken as shortcuts."""
+    passing = {id(argument) for actions in states.values() for kind, argument in actions.values()
+               if kind is Reduce and passes_on(argument)}
     starts = {state for state, actions in states.items()
-              if any(kind is Reduce and passes_on(argument) for kind, argument in actions.values())}
+              if any(id(argument) in passing for _, argument in actions.values())}
     ends = frozenset(end_states)
-    # What each state does, gotos as in the original table (a chain is read from these).
-    meaning = dict(states)
+    # What each state does, split into actions on terminals and gotos, as in the
+    # original table (a chain is read from these).
+    meaning = {state: _split(actions) for state, actions in states.items()}
     result = {state: dict(actions) for state, actions in states.items()}
     made: dict[tuple[int, int], Optional[int]] = {}
+    new_state = max(states, default=-1) + 1
     work = sorted(states)
     while work:
         below = work.pop()
-        for symbol, (kind, first) in meaning[below].items():
-            if _is_terminal(symbol) or first not in starts:
+        for symbol, (kind, first) in meaning[below][1].items():
+            if first not in starts:
                 continue
             if (below, first) not in made:
                 made[(below, first)] = shortcut = None
-                actions = _shortcut(meaning, below, first, passes_on, ends)
+                actions = _shortcut(meaning, below, first, passing, ends)
                 if actions is not None:
                     if len(meaning) - len(states) >= MAX_SHORTCUTS:
                         return {state: dict(actions) for state, actions in states.items()}
-                    made[(below, first)] = shortcut = max(meaning) + 1
-                    meaning[shortcut], result[shortcut] = actions, dict(actions)
+                    made[(below, first)] = shortcut = new_state
+                    new_state += 1
+                    meaning[shortcut], result[shortcut] = actions, {**actions[0], **actions[1]}
                     work.append(shortcut)
             if made[(below, first)] is not None:
                 result[below][symbol] = (Shift, made[(below, first)])
     return result
 
 
-def _shortcut(meaning: dict[int, dict], below: int, first: int, passes_on,
-              ends: frozenset[int]) -> Optional[dict]:
+def _split(actions: dict) -> tuple[dict, dict]:
+    """A state's actions on terminals, and its gotos."""
+    on_terminals, gotos = {}, {}
+    for symbol, entry in actions.items():
+        (on_terminals if _is_terminal(symbol) else gotos)[symbol] = entry
+    return on_terminals, gotos
+
+
+def _shortcut(meaning: dict[int, tuple[dict, dict]], below: int, first: int,
+              passing: set[int], ends: frozenset[int]) -> Optional[tuple[dict, dict]]:
     """The actions and gotos of the shortcut state for (``below``, ``first``), or None."""
-    actions, reached = {}, [first]
-    for symbol, entry in meaning[first].items():
-        if not _is_terminal(symbol):
-            continue
+    actions, reached = {}, {first: None}
+    below_gotos = meaning[below][1]
+    for symbol, entry in meaning[first][0].items():
         kind, argument = entry
-        while kind is Reduce and passes_on(argument):
-            goto = meaning[below].get(argument.origin.name)
+        while kind is Reduce and id(argument) in passing:
+            goto = below_gotos.get(argument.origin.name)
             if goto is None or goto[1] in ends:
                 return None
-            reached.append(goto[1])
-            entry = meaning[goto[1]].get(symbol)
+            reached[goto[1]] = None
+            entry = meaning[goto[1]][0].get(symbol)
             if entry is None:
                 break                           # the chain fails on this lookahead
             kind, argument = entry
         if entry is not None:
             actions[symbol] = entry
     gotos: dict = {}
-    for state in dict.fromkeys(reached):
-        for symbol, entry in meaning[state].items():
-            if not _is_terminal(symbol):
-                if gotos.setdefault(symbol, entry) != entry:
-                    return None                 # two continuations: keep the chain
-    return {**actions, **gotos}
+    for state in reached:
+        for symbol, entry in meaning[state][1].items():
+            if gotos.setdefault(symbol, entry) != entry:
+                return None                     # two continuations: keep the chain
+    return actions, gotos
 
 
 def _is_terminal(symbol: str) -> bool:
