@@ -53,6 +53,8 @@ CONJOINING = frozenset({"AND"})
 DISJOINING = frozenset({"OR", "XOR"})
 _STRING_ESCAPE = re.compile(r'""|\\\\|\\([0-9a-fA-F]{2})|\\')
 _SpanDraft = draft_class(ast.Span)
+_NameDraft, _NameRefDraft, _NumLiteralDraft, _ArgumentDraft = (
+    draft_class(c) for c in (ast.Name, ast.NameRef, ast.NumLiteral, ast.Argument))
 _INTEGER_LITERAL = re.compile(r"[0-9]+|0[xX][0-9a-fA-F]+|0[oO][0-7]+|0[bB][01]+")
 
 
@@ -172,7 +174,10 @@ class Lowering:
         key = self.keys.get(text)
         if key is None:
             key = self.checked_key(text, span)
-        return nodes.Name(text, key, span)
+        name = _NameDraft()
+        name.text, name.key, name.span = text, key, span
+        name.__class__ = ast.Name
+        return name
 
     def checked_key(self, text: str, span: ast.Span) -> str:
         """The key of an identifier not met before in this file, reported if it is bad."""
@@ -389,8 +394,11 @@ class Lowering:
         (value,) = children
         # The argument's text is the expression's, unless parentheses enclose it: the
         # expression's span (equal to the one ``span`` would build) serves as it is.
-        span = self.span(entries or children) if id(value) in self.enclosed else value.span
-        return nodes.Argument(ast.REQUIRED, None, value, span)
+        argument = _ArgumentDraft()
+        argument.kind, argument.name, argument.value, argument.source = ast.REQUIRED, None, value, None
+        argument.span = self.span(entries or children) if id(value) in self.enclosed else value.span
+        argument.__class__ = ast.Argument
+        return argument
 
     def named_argument(self, children, entries):
         name, value = children
@@ -453,7 +461,10 @@ class Lowering:
     @children_only
     def name_ref(self, children, entries=None):
         name = self.name(children[0])
-        return nodes.NameRef(name, name.span)
+        reference = _NameRefDraft()
+        reference.name, reference.span = name, name.span
+        reference.__class__ = ast.NameRef
+        return reference
 
     def index(self, children, entries):
         base, *indices = children
@@ -488,7 +499,10 @@ class Lowering:
         value = self.numbers.get(text)
         if value is None:
             value = self.checked_number(text, span)
-        return nodes.NumLiteral(value, text, span)
+        literal = _NumLiteralDraft()
+        literal.value, literal.text, literal.span = value, text, span
+        literal.__class__ = ast.NumLiteral
+        return literal
 
     def checked_number(self, text: str, span: ast.Span) -> int | float:
         """The value of a numeric literal not met before in this file, reported if it is
