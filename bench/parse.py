@@ -12,7 +12,7 @@ lark_cython is installed) and with Lark's own driver, so that both figures
 come from the same process under the same load; the figures are processor
 time (the machine is shared: wall time varies by 20% and more), and the
 best of the runs is the one to quote.  ``--stages`` times each stage of the
-fast path instead.
+fast path instead, and the floor of the design (each irreducible part alone).
 
 Figures on the project machine (2 cores, loaded), median of 3 runs of
 100,000 lines: 8,100 lines/s with a Lark parse tree lowered by a
@@ -44,12 +44,41 @@ the cost per node); and the shortcut table, which skips the reductions that
 only pass a child on (term: postfix, sum: term, expression: sum: 45% of all
 reductions).
 
-100,000 lines/s is out of reach in this design: the compiled loop alone
-(67 ms), the regular expression alone (39 ms) and building the AST's
-objects alone (62 ms) take 168 ms for 20,000 lines, 120,000 lines/s,
-before any Python runs per token or per rule.  It needs the scanning and
-the AST construction compiled as well (a Cython or Rust front end that
-builds the nodes), or AST nodes cheaper to build than frozen dataclasses.
+Second round (issue 9, target 100,000 lines/s), same machine, 20,000 lines,
+best of 3 runs, three rounds with the code before (0b597d9) and after run
+alternately: fast path 60,400-63,300 lines/s before, 67,100-68,600 after
+(+8 to 11%); Lark's driver 32,700-35,900 -> 35,000-37,300.  The gains:
+identifier keys and number values read once per distinct text in a file
+(lower.py), the nodes of the hottest rules (identifier, reference, number,
+positional argument, token span) filled in as drafts inline, the node
+builders calling their draft class instead of ``object.__new__``.  The
+shortcut table is built in 7 ms instead of 13 (the same table), which the
+start-up of every ``rapidmc check`` pays.  Tried and dropped: every token
+made before parsing and handed over by C iterators (15 ms slower: with all
+tokens alive lark_cython's token freelist no longer recycles them); one
+regular expression with the one-character terminals as a class (no
+change); the scanner's loop and the feed as one generator (within noise).
+
+Stages now (``--stages``, best of 5; ``scanning`` drops each token as the
+parser does):
+
+    scanning            72 ms   one findall (44 ms), making the tokens (19 ms)
+    LALR loop alone     66 ms   102 without the shortcuts (shortcuts.py)
+    AST construction   167 ms   of which making the 205,000 nodes: 76-82 ms
+    whole parse        305 ms   65,700 lines/s
+
+100,000 lines/s is out of reach in this design, and ``--stages`` shows why
+(the "floor" lines): the regular expression alone (44 ms), making
+lark_cython's tokens from their fields (19 ms), the compiled loop with no-op
+callbacks (66 ms) and making the AST's 205,000 frozen-dataclass nodes from
+their fields by the cheapest Python known (drafts filled by straight-line
+code, 76-82 ms) take 205-214 ms for 20,000 lines: 94,000-98,000 lines/s
+before any Python runs per token (line counting) or per rule (selecting
+children, spans, names: about 90 ms today).  Reaching the target needs the
+scanning and the node construction compiled (a Cython or Rust front end
+that builds the nodes, against the rule of a pure-Python package), or AST
+nodes cheaper to build than frozen dataclasses (a change of rapidmc.ast
+that every later stage would see).
 """
 from __future__ import annotations
 
@@ -65,7 +94,7 @@ import time
 
 from rapidmc.source import read_source
 from rapidmc.syntax import accelerated, parse_text, parser
-from rapidmc.syntax.construct import nodes
+from rapidmc.syntax.construct import draft_class
 from rapidmc.syntax.parser import rapid_parser
 from rapidmc.syntax.tokens import CompiledToken
 
@@ -205,7 +234,11 @@ def floor_times(text: str, tokens: list, looping: float, runs: int) -> None:
     making = min(cpu_seconds(lambda: list(itertools.starmap(CompiledToken, fields)))
                  for _ in range(runs))
     built = _node_fields(parse_text(text, "bench.mod"))
-    building = min(cpu_seconds(lambda: [build(*values) for build, values in built])
+    by_class: dict[type, list] = collections.defaultdict(list)
+    for cls, values in built:
+        by_class[cls].append(values)
+    fillers = [(_filler(cls), values) for cls, values in by_class.items()]
+    building = min(cpu_seconds(lambda: [fill(values) for fill, values in fillers])
                    for _ in range(runs))
     floor = [("regular expression", matching), ("token objects", making),
              ("LALR loop alone", looping), (f"{len(built):,} AST nodes", building)]
@@ -215,7 +248,7 @@ def floor_times(text: str, tokens: list, looping: float, runs: int) -> None:
 
 
 def _node_fields(tree) -> list[tuple]:
-    """(builder, field values) of every distinct node of ``tree``, children first."""
+    """(class, field values) of every distinct node of ``tree``, children first."""
     found: dict[int, tuple] = {}
 
     def visit(value):
@@ -225,9 +258,23 @@ def _node_fields(tree) -> list[tuple]:
         elif dataclasses.is_dataclass(value) and id(value) not in found:
             values = tuple(getattr(value, f.name) for f in dataclasses.fields(value))
             visit(values)
-            found[id(value)] = (getattr(nodes, type(value).__name__), values)
+            found[id(value)] = (type(value), values)
     visit(tree)
     return list(found.values())
+
+
+def _filler(cls: type):
+    """A function making a ``cls`` node from each tuple of field values, in a loop of
+    straight-line code that fills drafts as the front end's hot paths do (the least
+    Python can spend on a frozen dataclass node)."""
+    names = [f.name for f in dataclasses.fields(cls)]
+    source = (f"def fill(rows):\n    made = []\n    for {', '.join(names)}, in rows:\n"
+              f"        node = draft()\n"
+              + "".join(f"        node.{name} = {name}\n" for name in names)
+              + "        node.__class__ = cls\n        made.append(node)\n    return made\n")
+    namespace = {"draft": draft_class(cls), "cls": cls}
+    exec(source, namespace)
+    return namespace["fill"]
 
 
 def _ignore(entries):
