@@ -52,10 +52,13 @@ COMPARING = frozenset({"RELATION"})
 CONJOINING = frozenset({"AND"})
 DISJOINING = frozenset({"OR", "XOR"})
 _STRING_ESCAPE = re.compile(r'""|\\\\|\\([0-9a-fA-F]{2})|\\')
-_SpanDraft = draft_class(ast.Span)
-_NameDraft, _NameRefDraft, _NumLiteralDraft, _ArgumentDraft = (
-    draft_class(c) for c in (ast.Name, ast.NameRef, ast.NumLiteral, ast.Argument))
 _INTEGER_LITERAL = re.compile(r"[0-9]+|0[xX][0-9a-fA-F]+|0[oO][0-7]+|0[bB][01]+")
+# The nodes the hottest rules make (one or more per identifier and literal) are
+# filled in as drafts right where they are made, without a builder's call
+# (``construct.draft_class``; CPython allows the class assignment that ends a draft).
+_SpanDraft, _NameDraft, _NameRefDraft, _NumLiteralDraft, _ArgumentDraft = DRAFTS = tuple(
+    draft_class(c) for c in (ast.Span, ast.Name, ast.NameRef, ast.NumLiteral, ast.Argument))
+assert None not in DRAFTS, "this Python cannot turn a draft into its node"
 
 
 def decode_string(token_text: str) -> Optional[str]:
@@ -395,7 +398,8 @@ class Lowering:
         # The argument's text is the expression's, unless parentheses enclose it: the
         # expression's span (equal to the one ``span`` would build) serves as it is.
         argument = _ArgumentDraft()
-        argument.kind, argument.name, argument.value, argument.source = ast.REQUIRED, None, value, None
+        argument.kind, argument.name, argument.value = ast.REQUIRED, None, value
+        argument.source = None
         argument.span = self.span(entries or children) if id(value) in self.enclosed else value.span
         argument.__class__ = ast.Argument
         return argument
