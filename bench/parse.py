@@ -45,15 +45,17 @@ only pass a child on (term: postfix, sum: term, expression: sum: 45% of all
 reductions).
 
 Second round (issue 9, target 100,000 lines/s), same machine, 20,000 lines,
-best of 3 runs, three rounds with the code before (0b597d9) and after run
-alternately: fast path 60,400-63,300 lines/s before, 67,100-68,600 after
-(+8 to 11%); Lark's driver 32,700-35,900 -> 35,000-37,300.  The gains:
+best of 3 runs, six rounds (two sessions) with the code before (0b597d9)
+and after run alternately: fast path 60,400-63,900 lines/s before,
+67,000-68,600 after (medians 62,500 -> 67,900, +9%); Lark's driver
+32,700-36,300 -> 35,000-37,300 (medians 35,200 -> 36,700, +4%).  The gains:
 identifier keys and number values read once per distinct text in a file
 (lower.py), the nodes of the hottest rules (identifier, reference, number,
 positional argument, token span) filled in as drafts inline, the node
 builders calling their draft class instead of ``object.__new__``.  The
-shortcut table is built in 7 ms instead of 13 (the same table), which the
-start-up of every ``rapidmc check`` pays.  Tried and dropped: every token
+compiled table with its shortcuts is built in 11 ms instead of 17 (the same
+table), which the start-up of every ``rapidmc check`` pays: importing the
+front end and parsing a five-line file take 119 ms instead of 125.  Tried and dropped: every token
 made before parsing and handed over by C iterators (15 ms slower: with all
 tokens alive lark_cython's token freelist no longer recycles them); one
 regular expression with the one-character terminals as a class (no
