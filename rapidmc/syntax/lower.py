@@ -134,7 +134,11 @@ class Lowering:
         else:
             line, column = self.text_start(entries)
         last = self.lexer.previous
-        return nodes.Span(self.filename, line, column, last.end_line, last.end_column)
+        span = _SpanDraft()
+        span.file, span.line, span.column = self.filename, line, column
+        span.end_line, span.end_column = last.end_line, last.end_column
+        span.__class__ = ast.Span
+        return span
 
     def text_start(self, entries) -> Optional[tuple[int, int]]:
         """Where the text of ``entries`` begins (None when they hold no token)."""
@@ -160,7 +164,11 @@ class Lowering:
     def operation_span(self, first, last) -> ast.Span:
         """From the start of ``first`` (a token or an expression) to the end of ``last``."""
         line, column = self.text_start((first,))
-        return nodes.Span(self.filename, line, column, *self.text_end(last))
+        span = _SpanDraft()
+        span.file, span.line, span.column = self.filename, line, column
+        span.end_line, span.end_column = self.text_end(last)
+        span.__class__ = ast.Span
+        return span
 
     def token_span(self, token: Token) -> ast.Span:
         """The span of one token (built as ``nodes.Span`` would build it, inline: the
