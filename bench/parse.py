@@ -45,10 +45,11 @@ only pass a child on (term: postfix, sum: term, expression: sum: 45% of all
 reductions).
 
 Second round (issue 9, target 100,000 lines/s), same machine, 20,000 lines,
-best of 3 runs, six rounds (two sessions) with the code before (0b597d9)
-and after run alternately: fast path 60,400-63,900 lines/s before,
-67,000-68,600 after (medians 62,500 -> 67,900, +9%); Lark's driver
-32,700-36,300 -> 35,000-37,300 (medians 35,200 -> 36,700, +4%).  The gains:
+the code before (0b597d9) and after run alternately in separate processes:
+eight rounds of the best of 5 parses, median 300 ms before, 282 ms after
+(66,600 -> 70,900 lines/s, +6%; the after code won 7 of 8 rounds); this
+script's figure (best of 3) over nine rounds, 60,400-66,900 lines/s
+before, 65,000-72,100 after; Lark's driver about +4%.  The gains:
 identifier keys and number values read once per distinct text in a file
 (lower.py), the nodes of the hottest rules (identifier, reference, number,
 positional argument, token span) filled in as drafts inline, the node
@@ -61,26 +62,26 @@ tokens alive lark_cython's token freelist no longer recycles them); one
 regular expression with the one-character terminals as a class (no
 change); the scanner's loop and the feed as one generator (within noise).
 
-Stages now (``--stages``, best of 5; ``scanning`` drops each token as the
-parser does):
+Stages now (``--stages``, best of 5 to 7, four runs on the loaded machine;
+``scanning`` drops each token as the parser does):
 
-    scanning            72 ms   one findall (44 ms), making the tokens (19 ms)
-    LALR loop alone     66 ms   102 without the shortcuts (shortcuts.py)
-    AST construction   167 ms   of which making the 205,000 nodes: 76-82 ms
-    whole parse        305 ms   65,700 lines/s
+    scanning           72-79 ms   one findall (44-46 ms), making the tokens (19-21)
+    LALR loop alone    66-70 ms   102-110 without the shortcuts (shortcuts.py)
+    AST construction  149-167 ms  of which making the 205,000 nodes: 76-95
+    whole parse       296-305 ms  66,000-68,000 lines/s
 
 100,000 lines/s is out of reach in this design, and ``--stages`` shows why
-(the "floor" lines): the regular expression alone (44 ms), making
-lark_cython's tokens from their fields (19 ms), the compiled loop with no-op
-callbacks (66 ms) and making the AST's 205,000 frozen-dataclass nodes from
-their fields by the cheapest Python known (drafts filled by straight-line
-code, 76-82 ms) take 205-214 ms for 20,000 lines: 94,000-98,000 lines/s
-before any Python runs per token (line counting) or per rule (selecting
-children, spans, names: about 90 ms today).  Reaching the target needs the
-scanning and the node construction compiled (a Cython or Rust front end
-that builds the nodes, against the rule of a pure-Python package), or AST
-nodes cheaper to build than frozen dataclasses (a change of rapidmc.ast
-that every later stage would see).
+(the "floor" lines): the regular expression alone (44-46 ms), making
+lark_cython's tokens from their fields (19-21 ms), the compiled loop with
+no-op callbacks (66-70 ms) and making the AST's 205,000 frozen-dataclass
+nodes from their fields by the cheapest Python known (drafts filled by
+straight-line code, 76-95 ms) take 205-229 ms for 20,000 lines:
+87,000-98,000 lines/s before any Python runs per token (line counting) or
+per rule (selecting children, spans, names: about 70-90 ms today).
+Reaching the target needs the scanning and the node construction compiled
+(a Cython or Rust front end that builds the nodes, against the rule of a
+pure-Python package), or AST nodes cheaper to build than frozen
+dataclasses (a change of rapidmc.ast that every later stage would see).
 """
 from __future__ import annotations
 
