@@ -14,6 +14,11 @@ statistics and the search goes on).
 expands with its labelled successors: after a HOLDS verdict (a complete
 search) it has seen the whole reachable state graph, which is what
 coverage and vacuity are computed from.
+
+``explored(graph)``, when given, receives that graph after a HOLDS verdict
+of an exact search: every stored state with its successors' ids
+(``graph_store.ExploredGraph``), for the property searches of the same
+system to explore without stepping the model again.
 """
 from __future__ import annotations
 
@@ -24,8 +29,10 @@ from .budget import DEFAULT_MAX_STATES, SearchBudget
 from .collector import frozen_while_searching
 from .model import TransitionSystem, as_sequence
 from .progress import Progress
+from .graph_store import ExploredGraph
 from .hashed import hashed_reachable, visited_sets
 from .states import StateTable
+from .store import unique
 from .result import (HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep,
                      SearchResult, SearchStats)
 
@@ -38,7 +45,8 @@ def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], boo
                    progress: Optional[Progress] = None,
                    deadlock_is_target: bool = False,
                    observe: Optional[Observer] = None,
-                   storage: Optional[tuple] = None) -> SearchResult:
+                   storage: Optional[tuple] = None,
+                   explored: Optional[Callable[[ExploredGraph], None]] = None) -> SearchResult:
     """Shortest path to a state where ``predicate`` holds; see the module docstring.
 
     ``storage`` (``check_property``): hashed visited states, depth-first, no
@@ -48,7 +56,8 @@ def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], boo
     with frozen_while_searching():
         if storage is not None:
             return hashed_reachable(system, predicate, visited_sets(storage, 1)[0], budget)
-        search = _BreadthFirst(system, predicate, budget, deadlock_is_target, observe)
+        search = _BreadthFirst(system, predicate, budget, deadlock_is_target, observe,
+                               record=explored is not None)
         target = search.run()
     stats = search.stats()
     stats.seconds = budget.finish()
@@ -56,6 +65,8 @@ def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], boo
         return SearchResult(VIOLATED, None, search.path_to(target), [], stats)
     if budget.reason is not None:
         return SearchResult(UNKNOWN, budget.reason, stats=stats)
+    if search.graph is not None:
+        explored(search.graph)
     return SearchResult(HOLDS, stats=stats)
 
 
@@ -63,13 +74,14 @@ class _BreadthFirst:
     """States by id, each with the id of the state it was first reached from."""
 
     def __init__(self, system, predicate, budget: SearchBudget, deadlock_is_target: bool,
-                 observe: Optional[Observer] = None):
+                 observe: Optional[Observer] = None, record: bool = False):
         self.system = system
         self.observe = observe
         self.predicate = predicate
         self.budget = budget
         self.deadlock_is_target = deadlock_is_target
         self.states = StateTable(system)
+        self.graph = ExploredGraph(system, self.states) if record else None
         self.parent = array("i")          # by id; -1 for initial states
         self.depth = array("i")
         self.transitions = 0
@@ -85,28 +97,32 @@ class _BreadthFirst:
                            deadlocks=self.deadlocks,
                            bytes_per_state=memory / stored if stored else 0.0)
 
-    def _store(self, state: Hashable, parent: int) -> Optional[int]:
-        """The new id, or None when the state is known or the budget is spent."""
+    def _store(self, state: Hashable, parent: int) -> tuple[int, bool]:
+        """The state's id and whether it is new; id -1 when new and the budget is spent."""
         stored = len(self.states)
         room = stored < self.budget.max_states
-        _, new = self.states.intern(state, add=room)
+        state_id, new = self.states.intern(state, add=room)
         if not new:
-            return None
+            return state_id, False
         if not room:
             self.budget.may_store(stored)     # sets the reason: the state limit is reached
-            return None
+            return -1, True
         self.parent.append(parent)
         self.depth.append(self.depth[parent] + 1 if parent >= 0 else 0)
         if stored >= self.budget.next_checkpoint:
             self.budget.checkpoint(stored, self.transitions, self.depth[stored])
-        return stored
+        return stored, True
 
     def run(self) -> Optional[int]:
         """The id of the first bad state found, in breadth-first order."""
         for state in self.system.initial_states():
-            state_id = self._store(state, -1)
-            if state_id is not None and self.predicate(state):
+            state_id, new = self._store(state, -1)
+            if new and state_id >= 0 and self.predicate(state):
                 return state_id
+            if self.graph is not None and state_id >= 0:
+                self.graph.initial.append(state_id)
+        if self.graph is not None:
+            self.graph.initial = unique(self.graph.initial)
         frontier = 0
         while frontier < len(self.states) and self.budget.reason is None:
             found = self._expand(frontier)
@@ -121,15 +137,21 @@ class _BreadthFirst:
         if self.observe is not None:
             self.observe(state, successors)
         self.transitions += len(successors)
+        ids = [] if self.graph is not None else None
         if not successors:
             self.deadlocks += 1
-            return state_id if self.deadlock_is_target else None
+            if self.deadlock_is_target:
+                return state_id
         for _, successor in successors:
-            new_id = self._store(successor, state_id)
-            if new_id is not None and self.predicate(successor):
+            new_id, new = self._store(successor, state_id)
+            if new and new_id >= 0 and self.predicate(successor):
                 return new_id
             if self.budget.reason is not None:
                 return None
+            if ids is not None:
+                ids.append(new_id)
+        if ids is not None:
+            self.graph.add(state_id, ids)
         return None
 
     def path_to(self, state_id: int) -> list[LassoStep]:
