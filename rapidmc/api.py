@@ -308,7 +308,8 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
     stuck = _StuckWatch(system, facts if watching else None)
     # the whole state graph, kept by whichever complete search explored it first
     graphs: list = []
-    keep = dict(explored=graphs.append) if options.reuse_explored and model.jobs else {}
+    keep = dict(explored=graphs.append, valuations=[valuation for _, _, valuation in model.jobs]) \
+        if options.reuse_explored and model.jobs else {}
     results = []
     try:
         results.append(_builtin(system, BUILTIN_RUNTIME, "no reachable uncaught run-time error",

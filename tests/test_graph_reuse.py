@@ -176,3 +176,15 @@ def test_the_graph_store_counts_the_states_and_the_rows_it_keeps(tmp_path):
     rows = len(graph.starts) * graph.starts.itemsize + len(graph.targets) * graph.targets.itemsize
     assert graph.memory_bytes() >= graph.states.memory_bytes() + rows
     assert store.memory_bytes() >= graph.memory_bytes() + len(graph)    # and valuations
+
+
+def test_valuations_kept_with_the_graph_are_the_states_own(tmp_path):
+    model = model_of(COUNTERS, 'P: G ("c0 < 2" & "c1 < 1")', tmp_path)
+    valuation = model.jobs[0][2]
+    graphs = []
+    find_reachable(model.system, model.system.failed, explored=graphs.append,
+                   valuations=[valuation])
+    graph = graphs[0]
+    kept = GraphStore(graph, valuation).valuations
+    assert list(kept) == [valuation(graph.states[i]) for i in range(len(graph))]
+    assert len(set(kept)) > 1, "the atoms tell states apart"

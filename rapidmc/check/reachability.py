@@ -16,9 +16,10 @@ search) it has seen the whole reachable state graph, which is what
 coverage and vacuity are computed from.
 
 ``explored(graph)``, when given, receives that graph after a HOLDS verdict
-of an exact search: every stored state with its successors' ids
-(``graph_store.ExploredGraph``), for the property searches of the same
-system to explore without stepping the model again.
+of an exact search: every stored state with its successors' ids and the
+values of the functions in ``valuations`` (``graph_store.ExploredGraph``),
+for the property searches of the same system to explore without stepping
+the model again.
 """
 from __future__ import annotations
 
@@ -27,12 +28,12 @@ from typing import Callable, Hashable, Optional, Sequence
 
 from .budget import DEFAULT_MAX_STATES, SearchBudget
 from .collector import frozen_while_searching
-from .model import TransitionSystem, as_sequence
+from .model import TransitionSystem, Valuation, as_sequence
 from .progress import Progress
 from .graph_store import ExploredGraph
 from .hashed import hashed_reachable, visited_sets
 from .states import StateTable
-from .store import unique
+from .store import FRESH_STATES, unique
 from .result import (HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep,
                      SearchResult, SearchStats)
 
@@ -46,7 +47,8 @@ def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], boo
                    deadlock_is_target: bool = False,
                    observe: Optional[Observer] = None,
                    storage: Optional[tuple] = None,
-                   explored: Optional[Callable[[ExploredGraph], None]] = None) -> SearchResult:
+                   explored: Optional[Callable[[ExploredGraph], None]] = None,
+                   valuations: Sequence[Valuation] = ()) -> SearchResult:
     """Shortest path to a state where ``predicate`` holds; see the module docstring.
 
     ``storage`` (``check_property``): hashed visited states, depth-first, no
@@ -57,7 +59,7 @@ def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], boo
         if storage is not None:
             return hashed_reachable(system, predicate, visited_sets(storage, 1)[0], budget)
         search = _BreadthFirst(system, predicate, budget, deadlock_is_target, observe,
-                               record=explored is not None)
+                               record=None if explored is None else valuations)
         target = search.run()
     stats = search.stats()
     stats.seconds = budget.finish()
@@ -74,14 +76,15 @@ class _BreadthFirst:
     """States by id, each with the id of the state it was first reached from."""
 
     def __init__(self, system, predicate, budget: SearchBudget, deadlock_is_target: bool,
-                 observe: Optional[Observer] = None, record: bool = False):
+                 observe: Optional[Observer] = None,
+                 record: Optional[Sequence[Valuation]] = None):
         self.system = system
         self.observe = observe
         self.predicate = predicate
         self.budget = budget
         self.deadlock_is_target = deadlock_is_target
         self.states = StateTable(system)
-        self.graph = ExploredGraph(system, self.states) if record else None
+        self.graph = ExploredGraph(system, self.states, record) if record is not None else None
         self.parent = array("i")          # by id; -1 for initial states
         self.depth = array("i")
         self.transitions = 0
@@ -123,35 +126,54 @@ class _BreadthFirst:
                 self.graph.initial.append(state_id)
         if self.graph is not None:
             self.graph.initial = unique(self.graph.initial)
-        frontier = 0
-        while frontier < len(self.states) and self.budget.reason is None:
-            found = self._expand(frontier)
-            if found is not None:
-                return found
-            frontier += 1
-        return None
+        return self._expand_all()
 
-    def _expand(self, state_id: int) -> Optional[int]:
-        state = self.states[state_id]
-        successors = as_sequence(self.system.successors(state))
-        if self.observe is not None:
-            self.observe(state, successors)
-        self.transitions += len(successors)
-        ids = [] if self.graph is not None else None
-        if not successors:
-            self.deadlocks += 1
-            if self.deadlock_is_target:
-                return state_id
-        for _, successor in successors:
-            new_id, new = self._store(successor, state_id)
-            if new and new_id >= 0 and self.predicate(successor):
-                return new_id
-            if self.budget.reason is not None:
-                return None
-            if ids is not None:
-                ids.append(new_id)
-        if ids is not None:
-            self.graph.add(state_id, ids)
+    def _expand_all(self) -> Optional[int]:
+        """Expand the stored states in id order (the hot path: one loop, local names, the
+        new states kept as the model handed them over, up to ``FRESH_STATES``, so that
+        most are expanded without being rebuilt from the table)."""
+        table, intern = self.states, self.states.intern
+        successors_of, observe, predicate = self.system.successors, self.observe, self.predicate
+        parent, depth, budget = self.parent, self.depth, self.budget
+        max_states = budget.max_states
+        record = self.graph.add if self.graph is not None else None
+        fresh: dict[int, Hashable] = {}
+        stored = len(table)
+        frontier = 0
+        while frontier < stored and budget.reason is None:
+            state = fresh.pop(frontier, None)
+            if state is None:
+                state = table[frontier]
+            successors = as_sequence(successors_of(state))
+            if observe is not None:
+                observe(state, successors)
+            self.transitions += len(successors)
+            if not successors:
+                self.deadlocks += 1
+                if self.deadlock_is_target:
+                    return frontier
+            ids = []
+            for _, successor in successors:
+                successor_id, new = intern(successor, stored < max_states)
+                if new:
+                    if successor_id < 0:
+                        budget.may_store(stored)     # sets the reason: the state limit
+                        return None
+                    parent.append(frontier)
+                    depth.append(depth[frontier] + 1)
+                    stored += 1
+                    if successor_id >= budget.next_checkpoint:
+                        budget.checkpoint(successor_id, self.transitions, depth[successor_id])
+                    if predicate(successor):
+                        return successor_id
+                    if budget.reason is not None:
+                        return None
+                    if len(fresh) < FRESH_STATES:
+                        fresh[successor_id] = successor
+                ids.append(successor_id)
+            if record is not None:
+                record(frontier, state, ids)
+            frontier += 1
         return None
 
     def path_to(self, state_id: int) -> list[LassoStep]:

@@ -105,15 +105,19 @@ class ModelStore:
 
     def memory_bytes(self) -> int:
         """Bytes of the stored states and their valuations (the successor cache excluded)."""
-        valuations = self.valuations
-        if isinstance(valuations, list):        # an int object and a slot per state
-            return self.states.memory_bytes() + sum(sys.getsizeof(v) + 8 for v in valuations)
-        return self.states.memory_bytes() + len(valuations) * valuations.itemsize
+        return self.states.memory_bytes() + valuations_bytes(self.valuations)
 
     def labelled_successor_ids(self, state_id: int) -> list[tuple[Label, int]]:
         """Every (label, successor id) in model order, ``STUTTER`` for a deadlock (slow path)."""
         transitions: Sequence = labelled_successors(self.system, self.states[state_id])
         return [(label, self.intern(target)) for label, target in transitions]
+
+
+def valuations_bytes(valuations) -> int:
+    """Bytes of valuations kept in an array (or, beyond 64 atoms, a list of ints)."""
+    if isinstance(valuations, list):        # an int object and a slot per state
+        return sum(sys.getsizeof(v) + 8 for v in valuations)
+    return len(valuations) * valuations.itemsize
 
 
 def wider(valuations, valuation: int):
