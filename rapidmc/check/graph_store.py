@@ -23,7 +23,7 @@ deadlocks those it expanded.
 from __future__ import annotations
 
 from array import array
-from typing import Hashable, Sequence
+from typing import Hashable, Optional, Sequence
 
 from .model import Label, Valuation, labelled_successors
 from .states import StateTable
@@ -46,13 +46,27 @@ class ExploredGraph:
         # valuation function -> its values by id (narrowest array type that holds them)
         self.valuations: dict[Valuation, object] = {
             valuation: array(VALUATION_TYPES[0]) for valuation in valuations}
+        self._memory: Optional[int] = None
 
     def __len__(self) -> int:
         return len(self.starts) - 1
 
     def add(self, state_id: int, state: Hashable, successor_ids: list[int]) -> None:
         """The row of ``state_id`` (the next id): its successors' ids in model order."""
-        assert state_id == len(self), "rows are added in id order"
+        assert state_id == len(self.deadlocked), "rows are added in id order"
+        if self.valuations:
+            self._evaluate(state)
+        targets = self.targets
+        if successor_ids:
+            targets.extend(unique(successor_ids))
+            self.deadlocked.append(0)
+        else:
+            targets.append(state_id)
+            self.deadlocked.append(1)
+        self.starts.append(len(targets))
+
+    def _evaluate(self, state: Hashable) -> None:
+        """Append each kept valuation of ``state``."""
         for valuation, values in self.valuations.items():
             value = valuation(state)
             try:
@@ -60,16 +74,15 @@ class ExploredGraph:
             except OverflowError:
                 values = self.valuations[valuation] = wider(values, value)
                 values.append(value)
-        if successor_ids:
-            self.targets.extend(unique(successor_ids))
-            self.deadlocked.append(0)
-        else:
-            self.targets.append(state_id)
-            self.deadlocked.append(1)
-        self.starts.append(len(self.targets))
 
     def memory_bytes(self) -> int:
-        """Bytes of the state table, the rows and the valuations."""
+        """Bytes of the state table, the rows and the valuations (measured once: the graph
+        is complete before any search reads it)."""
+        if self._memory is None:
+            self._memory = self._measure()
+        return self._memory
+
+    def _measure(self) -> int:
         return self.states.memory_bytes() + len(self.deadlocked) + sum(
             len(a) * a.itemsize for a in (self.starts, self.targets)) + sum(
             valuations_bytes(values) for values in self.valuations.values())
@@ -78,8 +91,10 @@ class ExploredGraph:
 class GraphStore:
     """An ``ExploredGraph`` with one property's valuations, as ``Product`` uses a ``ModelStore``.
 
-    ``len`` is the number of states reached so far (interned, in ``ModelStore``
-    terms).  Valuations the graph lacks are computed when a state is first reached.
+    ``len`` is the number of states reached (interned, in ``ModelStore`` terms:
+    the initial states and the successors of the states expanded), counted
+    when asked.  Valuations the graph lacks are computed when a state is first
+    reached.
     """
 
     def __init__(self, graph: ExploredGraph, valuation: Valuation):
@@ -88,41 +103,52 @@ class GraphStore:
         self.valuation = valuation
         self.states = graph.states
         known = graph.valuations.get(valuation)
-        self._evaluate = known is None
+        # without kept valuations: by id, 1 once evaluated
+        self._evaluated = bytearray(len(graph)) if known is None else None
         self.valuations = array(VALUATION_TYPES[0], bytes(len(graph))) if known is None \
             else known
-        self.reached = bytearray(len(graph))
-        self.count = 0
+        self.expanded = bytearray(len(graph))
         self.deadlocked: set[int] = set()
 
     def __len__(self) -> int:
-        return self.count
+        graph, expanded = self.graph, self.expanded
+        if expanded.count(0) == 0:           # every state expanded, so every one reached
+            return len(graph)
+        reached = bytearray(len(graph))
+        for state_id in graph.initial:
+            reached[state_id] = 1
+        starts, targets = graph.starts, graph.targets
+        at = expanded.find(1)
+        while at >= 0:
+            for target_id in targets[starts[at]:starts[at + 1]]:
+                reached[target_id] = 1
+            at = expanded.find(1, at + 1)
+        return reached.count(1)
 
     def initial_ids(self) -> list[int]:
-        self._reach(self.graph.initial)
+        self._evaluate(self.graph.initial)
         return list(self.graph.initial)
 
     def successor_ids(self, state_id: int) -> Sequence[int]:
         """Distinct successor ids in model order; a deadlocked state is its own successor."""
         graph = self.graph
         ids = graph.targets[graph.starts[state_id]:graph.starts[state_id + 1]]
+        self.expanded[state_id] = 1
         if graph.deadlocked[state_id]:
             self.deadlocked.add(state_id)
-        reached = self.reached
-        for target_id in ids:
-            if not reached[target_id]:
-                self._reach((target_id,))
+        if self._evaluated is not None:
+            self._evaluate(ids)
         return ids
 
-    def _reach(self, ids: Sequence[int]) -> None:
-        """Mark ``ids`` reached, with their valuations."""
+    def _evaluate(self, ids: Sequence[int]) -> None:
+        """The valuations of ``ids``, unless kept with the graph or computed already."""
+        evaluated = self._evaluated
+        if evaluated is None:
+            return
         for state_id in ids:
-            if self.reached[state_id]:
+            if evaluated[state_id]:
                 continue
-            self.reached[state_id] = 1
-            self.count += 1
-            if not self._evaluate:
-                continue
+            evaluated[state_id] = 1
             valuation = self.valuation(self.states[state_id])
             try:
                 self.valuations[state_id] = valuation
@@ -132,14 +158,16 @@ class GraphStore:
 
     def memory_bytes(self) -> int:
         """Bytes of the graph (states, rows, valuations) and of this search's own."""
-        own = valuations_bytes(self.valuations) if self._evaluate else 0
-        return self.graph.memory_bytes() + own + len(self.reached)
+        own = len(self.expanded)
+        if self._evaluated is not None:
+            own += valuations_bytes(self.valuations) + len(self._evaluated)
+        return self.graph.memory_bytes() + own
 
     def labelled_successor_ids(self, state_id: int) -> list[tuple[Label, int]]:
         """Every (label, successor id) in model order, ``STUTTER`` for a deadlock (slow path)."""
         transitions = labelled_successors(self.system, self.states[state_id])
         ids = [self.states.intern(target, add=False)[0] for _, target in transitions]
         assert min(ids) >= 0, "a successor the explored graph does not hold"
-        self._reach(ids)
+        self._evaluate(ids)
         return [(label, target_id) for (label, _), target_id in zip(transitions, ids)]
 

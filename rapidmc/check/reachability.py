@@ -33,7 +33,7 @@ from .progress import Progress
 from .graph_store import ExploredGraph
 from .hashed import hashed_reachable, visited_sets
 from .states import StateTable
-from .store import FRESH_STATES, unique
+from .store import unique
 from .result import (HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep,
                      SearchResult, SearchStats)
 
@@ -129,21 +129,20 @@ class _BreadthFirst:
         return self._expand_all()
 
     def _expand_all(self) -> Optional[int]:
-        """Expand the stored states in id order (the hot path: one loop, local names, the
-        new states kept as the model handed them over, up to ``FRESH_STATES``, so that
-        most are expanded without being rebuilt from the table)."""
+        """Expand the stored states in id order (the hot path: one loop, local names).
+
+        Each state is rebuilt from the table, not kept as the model handed it over:
+        the rebuilt state's parts are the table's own objects, which the step
+        function's caches recognise, and that saves what the rebuilding costs."""
         table, intern = self.states, self.states.intern
         successors_of, observe, predicate = self.system.successors, self.observe, self.predicate
         parent, depth, budget = self.parent, self.depth, self.budget
         max_states = budget.max_states
         record = self.graph.add if self.graph is not None else None
-        fresh: dict[int, Hashable] = {}
         stored = len(table)
         frontier = 0
         while frontier < stored and budget.reason is None:
-            state = fresh.pop(frontier, None)
-            if state is None:
-                state = table[frontier]
+            state = table[frontier]
             successors = as_sequence(successors_of(state))
             if observe is not None:
                 observe(state, successors)
@@ -168,8 +167,6 @@ class _BreadthFirst:
                         return successor_id
                     if budget.reason is not None:
                         return None
-                    if len(fresh) < FRESH_STATES:
-                        fresh[successor_id] = successor
                 ids.append(successor_id)
             if record is not None:
                 record(frontier, state, ids)
