@@ -16,7 +16,6 @@ import argparse
 import importlib
 import os
 import sys
-import traceback
 from typing import Optional, Sequence
 
 from . import __version__
@@ -99,6 +98,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         return EXIT_INPUT_ERROR
     except Exception as exc:  # an internal bug, not bad input
         if os.environ.get("RAPIDMC_DEBUG"):
+            import traceback
             traceback.print_exc()
         print(f"rapidmc: internal error: {type(exc).__name__}: {exc} "
               "(set RAPIDMC_DEBUG=1 for details; please report this)", file=sys.stderr)
