@@ -46,7 +46,7 @@ class ExploredGraph:
         # valuation function -> its values by id (narrowest array type that holds them)
         self.valuations: dict[Valuation, object] = {
             valuation: array(VALUATION_TYPES[0]) for valuation in valuations}
-        self._memory: Optional[int] = None
+        self.table_bytes: Optional[int] = None     # the state table's, once measured
 
     def __len__(self) -> int:
         return len(self.starts) - 1
@@ -76,14 +76,15 @@ class ExploredGraph:
                 values.append(value)
 
     def memory_bytes(self) -> int:
-        """Bytes of the state table, the rows and the valuations (measured once: the graph
-        is complete before any search reads it)."""
-        if self._memory is None:
-            self._memory = self._measure()
-        return self._memory
+        """Bytes of the state table, the rows and the valuations (the table measured once:
+        it is complete before any search reads it)."""
+        if self.table_bytes is None:
+            self.table_bytes = self.states.memory_bytes()
+        return self.table_bytes + self.rows_bytes()
 
-    def _measure(self) -> int:
-        return self.states.memory_bytes() + len(self.deadlocked) + sum(
+    def rows_bytes(self) -> int:
+        """Bytes of the rows and the valuations."""
+        return len(self.deadlocked) + sum(
             len(a) * a.itemsize for a in (self.starts, self.targets)) + sum(
             valuations_bytes(values) for values in self.valuations.values())
 

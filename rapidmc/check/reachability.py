@@ -93,8 +93,12 @@ class _BreadthFirst:
     def stats(self) -> SearchStats:
         depth = max(self.depth) + 1 if self.depth else 0
         stored = len(self.states)
-        memory = self.states.memory_bytes() + len(self.parent) * self.parent.itemsize + \
+        table = self.states.memory_bytes()
+        memory = table + len(self.parent) * self.parent.itemsize + \
             len(self.depth) * self.depth.itemsize
+        if self.graph is not None:                # the rows kept for the property searches
+            self.graph.table_bytes = table
+            memory += self.graph.rows_bytes()
         return SearchStats(product_states=stored, model_states=stored,
                            transitions=self.transitions, max_depth=depth,
                            deadlocks=self.deadlocks,
