@@ -72,6 +72,9 @@ class CheckOptions:
     reductions: reduction.Reductions = reduction.ALL   # sliced data, dead data, merged steps
     storage: Optional[tuple] = None        # None: exact; --compact / --bitstate (never HOLDS)
     fairness: bool = True                  # weak fairness between tasks (several tasks only)
+    # the property searches walk the state graph the run-time error search explored, when
+    # that search was complete (False: each steps the program again; same answers)
+    reuse_explored: bool = True
 
 
 # --- loading -----------------------------------------------------------------------
@@ -303,17 +306,22 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
     # they run); --compact / --bitstate searches are never complete, so they watch nothing.
     watching = options.storage is None or not model.plan.merge_points
     stuck = _StuckWatch(system, facts if watching else None)
+    # the whole state graph, kept by whichever complete search explored it first
+    graphs: list = []
+    keep = dict(explored=graphs.append, valuations=[valuation for _, _, valuation in model.jobs]) \
+        if options.reuse_explored and model.jobs else {}
     results = []
     try:
         results.append(_builtin(system, BUILTIN_RUNTIME, "no reachable uncaught run-time error",
-                                system.failed, bounds, progress(), stuck))
+                                system.failed, dict(bounds, **keep), progress(), stuck))
         if watching:
-            facts.finish(system, results[0].result, progress=progress(), **bounds)
+            facts.finish(system, results[0].result, progress=progress(), **bounds, **keep)
         results.append(_deadlock(system, results[0].result, stuck, bounds, progress))
         fairness = TaskFairness(system) if assumes_fairness(model) else None
+        searches = dict(bounds, explored=graphs[0]) if graphs else bounds
         for prop, buchi, valuation in model.jobs:
             result = fair_or_plain_search(system, buchi, valuation, fairness, progress(),
-                                          bounds)
+                                          searches)
             _replayed(system, result)
             vacuous = facts.vacuous(prop.formula) if result.verdict == HOLDS else None
             results.append(PropertyResult(prop.name, prop.text, result, vacuous,

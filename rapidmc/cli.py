@@ -16,7 +16,6 @@ import argparse
 import importlib
 import os
 import sys
-import traceback
 from typing import Optional, Sequence
 
 from . import __version__
@@ -42,17 +41,22 @@ class _ArgumentParser(argparse.ArgumentParser):
         raise UserError([Diagnostic(USAGE, f"{one_line(message)} (see '{self.prog} --help')")])
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(command: Optional[str] = None) -> argparse.ArgumentParser:
+    """The parser of every subcommand; with ``command``, only that one's arguments (the
+    others' modules, some slow to import, are not loaded: their parsers take no options)."""
     parser = _ArgumentParser(prog="rapidmc", description="rapidmc: an LTL model checker and "
                              "reference interpreter for ABB RAPID robot programs")
     parser.add_argument("--version", action="version", version=f"rapidmc {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_ArgumentParser)
     for name, help_text in SUBCOMMANDS.items():
-        command = _command_module(name)
-        if command is None:
+        if command is not None and name != command:
+            sub.add_parser(name, help=help_text, description=help_text)
+            continue
+        module = _command_module(name)
+        if module is None:
             continue
         sub_parser = sub.add_parser(name, help=help_text, description=help_text)
-        command.add_arguments(sub_parser)
+        module.add_arguments(sub_parser)
     return parser
 
 
@@ -68,9 +72,11 @@ def _command_module(name: str):
 def main(argv: Optional[Sequence[str]] = None) -> int:
     """Entry point of the console script; returns the exit code."""
     try:
-        parser = build_parser()
-        args = parser.parse_args(argv)
-        args.command_line = list(sys.argv[1:] if argv is None else argv)   # recorded in reports
+        arguments = list(sys.argv[1:] if argv is None else argv)
+        parser = build_parser(arguments[0] if arguments and arguments[0] in SUBCOMMANDS
+                              else None)
+        args = parser.parse_args(arguments)
+        args.command_line = arguments   # recorded in reports
         if args.command is None:
             parser.print_help(sys.stderr)
             return EXIT_INPUT_ERROR
@@ -92,6 +98,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         return EXIT_INPUT_ERROR
     except Exception as exc:  # an internal bug, not bad input
         if os.environ.get("RAPIDMC_DEBUG"):
+            import traceback
             traceback.print_exc()
         print(f"rapidmc: internal error: {type(exc).__name__}: {exc} "
               "(set RAPIDMC_DEBUG=1 for details; please report this)", file=sys.stderr)

@@ -37,17 +37,36 @@ class Unreached:
         return Diagnostic(NEVER_REACHED, message, self.span, severity="warning")
 
 
+SPANS_KEPT = 1 << 12
+
+
 class StatementWatch:
-    """Observer of a breadth-first search: the source lines its transitions execute."""
+    """Observer of a breadth-first search: the source lines its transitions execute.
+
+    A step's spans are mostly the compiled instructions' own objects, met again
+    in state after state: each one recorded is remembered by identity (and kept
+    alive, so that its id names it), up to ``SPANS_KEPT``, and skipped after.
+    """
 
     def __init__(self):
         self.executed: set[tuple[str, int]] = set()
+        self._recorded: dict[int, object] = {}    # id(span) -> span, its line in executed
+
+    def clear(self) -> None:
+        """Forget every line executed (before watching another search)."""
+        self.executed.clear()
+        self._recorded.clear()
 
     def __call__(self, state: Hashable, successors: Sequence[tuple[Hashable, Hashable]]) -> None:
-        executed = self.executed
+        executed, recorded = self.executed, self._recorded
         for (_, span, _), _ in successors:
-            executed.update((one.file, one.line) for one in executed_spans(span)
-                            if one is not None)
+            for one in executed_spans(span):
+                if one is None or id(one) in recorded:
+                    continue
+                executed.add((one.file, one.line))
+                if len(recorded) >= SPANS_KEPT:
+                    recorded.clear()
+                recorded[id(one)] = one
 
 
 def unreached(program: Program, executed: set[tuple[str, int]]) -> list[Unreached]:

@@ -56,7 +56,7 @@ class ExploredFacts:
 
     def watch(self, system, **bounds) -> None:
         """Watch a search of ``system`` that looks for nothing; complete unless a bound stops it."""
-        self.statements.executed.clear()
+        self.statements.clear()
         self.triggers.seen.clear()
         search = find_reachable(system, _nothing, observe=self, **bounds)
         self.complete = search.verdict == HOLDS

@@ -90,13 +90,14 @@ class _CycleSearch:
 
     def _explore_from(self, initial_key: int):
         # One loop with local names on purpose: this is the hot path of the
-        # checker, and attribute look-ups per edge would cost a third of it.
-        # The successors still to try of all states on the path lie on one stack,
-        # ``pending``, each state's in reverse order above those of the state
-        # below it (from ``path_starts``): no list per state, which would live as
-        # long as the state stays on the path and cost Python's garbage collector
-        # a look at each one in every full collection.  ``number`` is kept long
-        # enough for every key pushed or met as a successor.
+        # checker, and attribute look-ups per edge would cost a third of it (and
+        # a nested function for the push would turn every name it shares into a
+        # slower cell variable).  The successors still to try of all states on the
+        # path lie on one stack, ``pending``, each state's in reverse order above
+        # those of the state below it (from ``path_starts``): no list per state,
+        # which would live as long as the state stays on the path and cost
+        # Python's garbage collector a look at each one in every full collection.
+        # ``number`` is kept long enough for every key pushed or met as a successor.
         number, dead, active = self.number, self.dead, self.active
         roots, root_accepting = self.roots, self.root_accepting
         accepting, width = self.product.accepting, self.product.width
@@ -107,36 +108,36 @@ class _CycleSearch:
         path_starts: list[int] = []
         pending: list[int] = []
         transitions, max_depth = self.transitions, self.max_depth
-
-        def push(key: int) -> None:
-            nonlocal transitions, max_depth
-            index = len(dead)
-            number[key] = index
-            dead.append(0)
-            active.append(index)
-            roots.append(index)
-            root_accepting.append(accepting[key % width])
-            successors = successor_keys(key)
-            path_starts.append(len(pending))
-            if successors:
-                transitions += len(successors)
-                last = max(successors)
-                if last >= len(number):
-                    number.extend(UNSEEN * (last + 1 - len(number) + len(number) // 8))
-                successors.reverse()
-                pending.extend(successors)
-            path_keys.append(key)
-            if len(path_keys) > max_depth:
-                max_depth = len(path_keys)
-
         if initial_key >= len(number):
             number.extend(UNSEEN * (initial_key + 1 - len(number) + len(number) // 8))
-        push(initial_key)
+        key = initial_key          # the key to push next (-1: none)
         try:
-            while path_keys:
+            while True:
+                if key >= 0:       # push: number it, put its successors on ``pending``
+                    index = len(dead)
+                    number[key] = index
+                    dead.append(0)
+                    active.append(index)
+                    roots.append(index)
+                    root_accepting.append(accepting[key % width])
+                    successors = successor_keys(key)
+                    path_starts.append(len(pending))
+                    if successors:
+                        transitions += len(successors)
+                        last = max(successors)
+                        if last >= len(number):
+                            number.extend(UNSEEN * (last + 1 - len(number) + len(number) // 8))
+                        successors.reverse()
+                        pending.extend(successors)
+                    path_keys.append(key)
+                    if len(path_keys) > max_depth:
+                        max_depth = len(path_keys)
+                    key = -1
+                elif not path_keys:
+                    return None
                 if len(pending) > path_starts[-1]:
-                    key = pending.pop()
-                    index = number[key]
+                    successor = pending.pop()
+                    index = number[successor]
                     if index < 0:
                         stored = len(dead)
                         if stored >= max_states and not budget.may_store(stored):
@@ -144,7 +145,7 @@ class _CycleSearch:
                         if stored >= budget.next_checkpoint and not budget.checkpoint(
                                 stored, transitions, len(path_keys)):
                             return None
-                        push(key)
+                        key = successor
                     elif not dead[index]:
                         merged = 0
                         while roots[-1] > index:
@@ -154,15 +155,14 @@ class _CycleSearch:
                         if root_accepting[-1]:
                             return self._violation(path_keys)
                 else:
-                    key = path_keys.pop()
+                    popped = path_keys.pop()
                     path_starts.pop()
-                    index = number[key]
+                    index = number[popped]
                     if roots[-1] == index:
                         roots.pop()
                         root_accepting.pop()
                         while active and active[-1] >= index:
                             dead[active.pop()] = 1
-            return None
         finally:
             self.transitions, self.max_depth = transitions, max_depth
 

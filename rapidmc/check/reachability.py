@@ -14,6 +14,12 @@ statistics and the search goes on).
 expands with its labelled successors: after a HOLDS verdict (a complete
 search) it has seen the whole reachable state graph, which is what
 coverage and vacuity are computed from.
+
+``explored(graph)``, when given, receives that graph after a HOLDS verdict
+of an exact search: every stored state with its successors' ids and the
+values of the functions in ``valuations`` (``graph_store.ExploredGraph``),
+for the property searches of the same system to explore without stepping
+the model again.
 """
 from __future__ import annotations
 
@@ -22,10 +28,12 @@ from typing import Callable, Hashable, Optional, Sequence
 
 from .budget import DEFAULT_MAX_STATES, SearchBudget
 from .collector import frozen_while_searching
-from .model import TransitionSystem, as_sequence
+from .model import TransitionSystem, Valuation, as_sequence
 from .progress import Progress
+from .graph_store import ExploredGraph
 from .hashed import hashed_reachable, visited_sets
 from .states import StateTable
+from .store import unique
 from .result import (HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep,
                      SearchResult, SearchStats)
 
@@ -38,7 +46,9 @@ def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], boo
                    progress: Optional[Progress] = None,
                    deadlock_is_target: bool = False,
                    observe: Optional[Observer] = None,
-                   storage: Optional[tuple] = None) -> SearchResult:
+                   storage: Optional[tuple] = None,
+                   explored: Optional[Callable[[ExploredGraph], None]] = None,
+                   valuations: Sequence[Valuation] = ()) -> SearchResult:
     """Shortest path to a state where ``predicate`` holds; see the module docstring.
 
     ``storage`` (``check_property``): hashed visited states, depth-first, no
@@ -48,7 +58,8 @@ def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], boo
     with frozen_while_searching():
         if storage is not None:
             return hashed_reachable(system, predicate, visited_sets(storage, 1)[0], budget)
-        search = _BreadthFirst(system, predicate, budget, deadlock_is_target, observe)
+        search = _BreadthFirst(system, predicate, budget, deadlock_is_target, observe,
+                               record=None if explored is None else valuations)
         target = search.run()
     stats = search.stats()
     stats.seconds = budget.finish()
@@ -56,6 +67,8 @@ def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], boo
         return SearchResult(VIOLATED, None, search.path_to(target), [], stats)
     if budget.reason is not None:
         return SearchResult(UNKNOWN, budget.reason, stats=stats)
+    if search.graph is not None:
+        explored(search.graph)
     return SearchResult(HOLDS, stats=stats)
 
 
@@ -63,13 +76,15 @@ class _BreadthFirst:
     """States by id, each with the id of the state it was first reached from."""
 
     def __init__(self, system, predicate, budget: SearchBudget, deadlock_is_target: bool,
-                 observe: Optional[Observer] = None):
+                 observe: Optional[Observer] = None,
+                 record: Optional[Sequence[Valuation]] = None):
         self.system = system
         self.observe = observe
         self.predicate = predicate
         self.budget = budget
         self.deadlock_is_target = deadlock_is_target
         self.states = StateTable(system)
+        self.graph = ExploredGraph(system, self.states, record) if record is not None else None
         self.parent = array("i")          # by id; -1 for initial states
         self.depth = array("i")
         self.transitions = 0
@@ -78,58 +93,88 @@ class _BreadthFirst:
     def stats(self) -> SearchStats:
         depth = max(self.depth) + 1 if self.depth else 0
         stored = len(self.states)
-        memory = self.states.memory_bytes() + len(self.parent) * self.parent.itemsize + \
+        table = self.states.memory_bytes()
+        memory = table + len(self.parent) * self.parent.itemsize + \
             len(self.depth) * self.depth.itemsize
+        if self.graph is not None:                # the rows kept for the property searches
+            self.graph.table_bytes = table
+            memory += self.graph.rows_bytes()
         return SearchStats(product_states=stored, model_states=stored,
                            transitions=self.transitions, max_depth=depth,
                            deadlocks=self.deadlocks,
                            bytes_per_state=memory / stored if stored else 0.0)
 
-    def _store(self, state: Hashable, parent: int) -> Optional[int]:
-        """The new id, or None when the state is known or the budget is spent."""
+    def _store(self, state: Hashable, parent: int) -> tuple[int, bool]:
+        """The state's id and whether it is new; id -1 when new and the budget is spent."""
         stored = len(self.states)
         room = stored < self.budget.max_states
-        _, new = self.states.intern(state, add=room)
+        state_id, new = self.states.intern(state, add=room)
         if not new:
-            return None
+            return state_id, False
         if not room:
             self.budget.may_store(stored)     # sets the reason: the state limit is reached
-            return None
+            return -1, True
         self.parent.append(parent)
         self.depth.append(self.depth[parent] + 1 if parent >= 0 else 0)
         if stored >= self.budget.next_checkpoint:
             self.budget.checkpoint(stored, self.transitions, self.depth[stored])
-        return stored
+        return stored, True
 
     def run(self) -> Optional[int]:
         """The id of the first bad state found, in breadth-first order."""
         for state in self.system.initial_states():
-            state_id = self._store(state, -1)
-            if state_id is not None and self.predicate(state):
+            state_id, new = self._store(state, -1)
+            if new and state_id >= 0 and self.predicate(state):
                 return state_id
-        frontier = 0
-        while frontier < len(self.states) and self.budget.reason is None:
-            found = self._expand(frontier)
-            if found is not None:
-                return found
-            frontier += 1
-        return None
+            if self.graph is not None and state_id >= 0:
+                self.graph.initial.append(state_id)
+        if self.graph is not None:
+            self.graph.initial = unique(self.graph.initial)
+        return self._expand_all()
 
-    def _expand(self, state_id: int) -> Optional[int]:
-        state = self.states[state_id]
-        successors = as_sequence(self.system.successors(state))
-        if self.observe is not None:
-            self.observe(state, successors)
-        self.transitions += len(successors)
-        if not successors:
-            self.deadlocks += 1
-            return state_id if self.deadlock_is_target else None
-        for _, successor in successors:
-            new_id = self._store(successor, state_id)
-            if new_id is not None and self.predicate(successor):
-                return new_id
-            if self.budget.reason is not None:
-                return None
+    def _expand_all(self) -> Optional[int]:
+        """Expand the stored states in id order (the hot path: one loop, local names).
+
+        Each state is rebuilt from the table, not kept as the model handed it over:
+        the rebuilt state's parts are the table's own objects, which the step
+        function's caches recognise, and that saves what the rebuilding costs."""
+        table, intern = self.states, self.states.intern
+        successors_of, observe, predicate = self.system.successors, self.observe, self.predicate
+        parent, depth, budget = self.parent, self.depth, self.budget
+        max_states = budget.max_states
+        record = self.graph.add if self.graph is not None else None
+        stored = len(table)
+        frontier = 0
+        while frontier < stored and budget.reason is None:
+            state = table[frontier]
+            successors = as_sequence(successors_of(state))
+            if observe is not None:
+                observe(state, successors)
+            self.transitions += len(successors)
+            if not successors:
+                self.deadlocks += 1
+                if self.deadlock_is_target:
+                    return frontier
+            ids = []
+            for _, successor in successors:
+                successor_id, new = intern(successor, stored < max_states)
+                if new:
+                    if successor_id < 0:
+                        budget.may_store(stored)     # sets the reason: the state limit
+                        return None
+                    parent.append(frontier)
+                    depth.append(depth[frontier] + 1)
+                    stored += 1
+                    if successor_id >= budget.next_checkpoint:
+                        budget.checkpoint(successor_id, self.transitions, depth[successor_id])
+                    if predicate(successor):
+                        return successor_id
+                    if budget.reason is not None:
+                        return None
+                ids.append(successor_id)
+            if record is not None:
+                record(frontier, state, ids)
+            frontier += 1
         return None
 
     def path_to(self, state_id: int) -> list[LassoStep]:

@@ -62,7 +62,8 @@ class ModelStore:
         try:
             self.valuations.append(valuation)
         except OverflowError:
-            self.valuations = _wider(self.valuations, valuation)
+            self.valuations = wider(self.valuations, valuation)
+            self.valuations.append(valuation)
         if not self._keep_new:
             return
         fresh = self._fresh
@@ -71,7 +72,7 @@ class ModelStore:
         fresh[state_id] = state
 
     def initial_ids(self) -> list[int]:
-        return _unique([self.intern(state) for state in self.system.initial_states()])
+        return unique([self.intern(state) for state in self.system.initial_states()])
 
     def successor_ids(self, state_id: int) -> tuple[int, ...]:
         """Distinct successor ids in model order; a deadlocked state is its own successor."""
@@ -94,7 +95,7 @@ class ModelStore:
                 if new:
                     added(target_id, target)
                 ids.append(target_id)
-            result = tuple(_unique(ids))
+            result = tuple(unique(ids))
         if len(cache) >= SUCCESSOR_CACHE_SIZE:
             # Start afresh rather than evict one by one: deleting the oldest
             # entry of a dict makes each later next(iter(dict)) slower.
@@ -104,10 +105,7 @@ class ModelStore:
 
     def memory_bytes(self) -> int:
         """Bytes of the stored states and their valuations (the successor cache excluded)."""
-        valuations = self.valuations
-        if isinstance(valuations, list):        # an int object and a slot per state
-            return self.states.memory_bytes() + sum(sys.getsizeof(v) + 8 for v in valuations)
-        return self.states.memory_bytes() + len(valuations) * valuations.itemsize
+        return self.states.memory_bytes() + valuations_bytes(self.valuations)
 
     def labelled_successor_ids(self, state_id: int) -> list[tuple[Label, int]]:
         """Every (label, successor id) in model order, ``STUTTER`` for a deadlock (slow path)."""
@@ -115,19 +113,23 @@ class ModelStore:
         return [(label, self.intern(target)) for label, target in transitions]
 
 
-def _wider(valuations, valuation: int):
-    """``valuations`` plus ``valuation`` in the narrowest array type that holds all
-    (Python ints beyond 64 atoms)."""
+def valuations_bytes(valuations) -> int:
+    """Bytes of valuations kept in an array (or, beyond 64 atoms, a list of ints)."""
+    if isinstance(valuations, list):        # an int object and a slot per state
+        return sum(sys.getsizeof(v) + 8 for v in valuations)
+    return len(valuations) * valuations.itemsize
+
+
+def wider(valuations, valuation: int):
+    """``valuations`` in the narrowest array type that also holds ``valuation`` (a list
+    of Python ints beyond 64 atoms)."""
     for typecode in VALUATION_TYPES:
-        wider = array(typecode)
-        if valuation < 1 << 8 * wider.itemsize:
-            wider.fromlist(list(valuations))
-            wider.append(valuation)
-            return wider
-    return list(valuations) + [valuation]
+        if valuation < 1 << 8 * array(typecode).itemsize:
+            return array(typecode, valuations)
+    return list(valuations)
 
 
-def _unique(items: list[int]) -> list[int]:
+def unique(items: list[int]) -> list[int]:
     """``items`` without repeats, first occurrences kept in order."""
     if len(items) < 2 or len(items) == 2 and items[0] != items[1]:
         return items

@@ -18,9 +18,6 @@ from pathlib import Path
 from .. import api
 from ..check import Progress, format_json, format_text
 from ..check.report import format_json_errors
-from ..check.html import html_unwritable, write_html
-from ..check.junit import format_junit, format_junit_diagnostics
-from ..check.sarif import format_sarif, format_sarif_diagnostics
 from ..diagnostics import USAGE, UserError, error, render_all
 from ..ltl import BACKENDS
 from ..backup import add_program_arguments
@@ -156,6 +153,7 @@ def execute(args: argparse.Namespace) -> int:
         return _check(args)
     except UserError as exc:
         if args.junit:
+            from ..check.junit import format_junit_diagnostics   # (reports load on demand)
             write_report(args.junit, format_junit_diagnostics(exc.diagnostics, *_suite(args)),
                          "JUnit report")
         if args.format == "text":
@@ -164,6 +162,7 @@ def execute(args: argparse.Namespace) -> int:
         if args.format == "json":
             print(format_json_errors(exc.diagnostics, getattr(args, "command_line", None)), end="")
         else:
+            from ..check.sarif import format_sarif_diagnostics
             print(format_sarif_diagnostics(exc.diagnostics, exc.exit_code), end="")
         return exc.exit_code
 
@@ -174,10 +173,12 @@ def _check(args: argparse.Namespace) -> int:
     results, describer, warnings = report.results, report.describer, report.warnings
     exit_code = report.exit_code(args.fail_on_vacuous)
     if args.html:
+        from ..check.html import write_html          # (reports load on demand)
         write_html(args.html, results, describer, warnings)
     if args.format == "json":
         print(format_json(results, describer, warnings, getattr(args, "command_line", None)))
     elif args.format == "sarif":
+        from ..check.sarif import format_sarif
         print(format_sarif(results, describer, exit_code, warnings), end="")
     else:
         print(format_text(results, describer))
@@ -185,6 +186,7 @@ def _check(args: argparse.Namespace) -> int:
         if warnings:
             print(render_all(warnings), file=sys.stderr)
     if args.junit:
+        from ..check.junit import format_junit
         write_report(args.junit, format_junit(results, describer, *_suite(args), warnings),
                      "JUnit report")
     return exit_code
@@ -194,6 +196,7 @@ def _refuse_unwritable_targets(args: argparse.Namespace) -> None:
     """A report file that cannot be written is an input error before the search, not after it."""
     reason = unwritable_reason(args.html) if args.html else None
     if reason is not None:
+        from ..check.html import html_unwritable
         raise html_unwritable(args.html, reason)
     if args.junit:
         check_report_target(args.junit, "JUnit report")

@@ -1,0 +1,66 @@
+"""``rapidmc COMMAND`` loads the modules of that command only.
+
+Start-up is part of every check's time to verdict: the graph command's
+networkx, the run command's console or the stubs writer have no business in
+``rapidmc check``.  Each test runs a fresh interpreter (the test session has
+loaded everything already).
+"""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+PROGRAM = """MODULE Tiny
+  VAR num x := 0;
+  PROC main()
+    x := 1;
+  ENDPROC
+ENDMODULE
+"""
+OTHER_COMMANDS = ["rapidmc.commands.graph", "rapidmc.commands.run", "rapidmc.commands.stubs",
+                  "rapidmc.commands.replay", "rapidmc.commands.parse", "networkx"]
+
+
+def modules_after(argv: list[str], folder: Path) -> tuple[int, set]:
+    """Exit code of ``rapidmc ARGV`` in a fresh interpreter, and the modules it loaded."""
+    script = ("import contextlib, io, json, sys\n"
+              "from rapidmc.cli import main\n"
+              "with contextlib.redirect_stdout(io.StringIO()):\n"
+              f"    code = main({argv!r})\n"
+              "print(json.dumps([code, sorted(sys.modules)]))\n")
+    done = subprocess.run([sys.executable, "-c", script], cwd=folder, capture_output=True,
+                          text=True, check=True)
+    code, modules = json.loads(done.stdout.splitlines()[-1])
+    return code, set(modules)
+
+
+def test_check_loads_no_other_commands_module(tmp_path):
+    (tmp_path / "tiny.mod").write_text(PROGRAM)
+    code, modules = modules_after(["check", "tiny.mod", "--formula", 'P: F "x = 1"',
+                                   "--quiet"], tmp_path)
+    assert code == 0
+    assert "rapidmc.commands.check" in modules
+    assert not modules & set(OTHER_COMMANDS)
+    # the report writers load when asked for
+    assert not modules & {"rapidmc.check.html", "rapidmc.check.junit", "rapidmc.check.sarif"}
+
+
+@pytest.mark.parametrize("report", [["--format", "sarif"], ["--junit", "out.xml"],
+                                    ["--html", "out.html"]], ids=["sarif", "junit", "html"])
+def test_a_report_writer_loads_when_asked_for(report, tmp_path):
+    (tmp_path / "tiny.mod").write_text(PROGRAM)
+    code, _ = modules_after(["check", "tiny.mod", "--formula", 'P: F "x = 1"', "--quiet",
+                             *report], tmp_path)
+    assert code == 0
+    if report[0] != "--format":
+        assert (tmp_path / report[1]).stat().st_size > 0
+
+
+def test_the_command_list_still_names_every_command(tmp_path):
+    from rapidmc.cli import SUBCOMMANDS, build_parser
+    help_text = build_parser("check").format_help()
+    assert all(name in help_text for name in SUBCOMMANDS)
