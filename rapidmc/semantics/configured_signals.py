@@ -7,7 +7,9 @@ and takes each undeclared name passed to a signal parameter of a predefined
 routine (SetDO, WaitDI, DInput, ISignalDI, ...) as a configured signal of
 that parameter's kind; the name can then also be read in expressions, in
 any order.  An undeclared name that is only compared with a number
-(``IF diPart = 1``) is a configured signal too (kind from its prefix).
+(``IF diPart = 1``, ``TEST giRecipe CASE 1:``) is a configured signal too
+(kind from its prefix).  Names passed to a ``mecunit`` parameter are
+mechanical units of the motion configuration (``ActUnit CNV1``).
 """
 from __future__ import annotations
 
@@ -53,6 +55,10 @@ def compared_names(modules: Iterable[ast.Module]) -> Iterator[tuple[ast.Name, st
             for name_side, other in ((node.left, node.right), (node.right, node.left)):
                 if isinstance(name_side, ast.NameRef) and _is_number(other):
                     yield name_side.name, kind_from_prefix(name_side.name.text)
+        elif isinstance(node, ast.Test) and isinstance(node.subject, ast.NameRef) \
+                and node.cases and all(_is_number(v) for case in node.cases for v in case.values):
+            # ``TEST giRecipe CASE 1: ... CASE 2: ...`` compares the name with numbers too
+            yield node.subject.name, kind_from_prefix(node.subject.name.text)
 
 
 COMPARISONS = ("=", "<>", "<", "<=", ">", ">=")
@@ -82,7 +88,29 @@ def _nodes(modules: Iterable[ast.Module]) -> Iterator[object]:
                 yield from _walk_statements(statements)
 
 
+def unit_uses(modules: Iterable[ast.Module]) -> Iterator[ast.Name]:
+    """Each bare name passed to a ``mecunit`` parameter of a predefined routine.
+
+    Mechanical units other than the robots are named in the motion configuration
+    (MOC.cfg): a conveyor ``CNV1`` for ActUnit and WaitWObj, a positioner ``STN1``,
+    YuMi's arms ``ROB_L`` and ``ROB_R`` for EGMSetupUC.  Like signals, programs use
+    them by name without declaring them.
+    """
+    for node in _nodes(modules):
+        for name, type_name in _argument_uses(node):
+            if type_name == "mecunit":
+                yield name
+
+
 def _call_uses(node) -> Iterator[tuple[ast.Name, str]]:
+    for name, type_name in _argument_uses(node):
+        kind = SIGNAL_KINDS.get(type_name)
+        if kind is not None:
+            yield name, kind
+
+
+def _argument_uses(node) -> Iterator[tuple[ast.Name, str]]:
+    """(name, parameter type in lower case) for each bare name argument of a predefined call."""
     if isinstance(node, ast.ProcedureCall):
         entry = registry.lookup_procedure(node.name.key)
     elif isinstance(node, ast.FunctionCall):
@@ -100,11 +128,8 @@ def _call_uses(node) -> Iterator[tuple[ast.Name, str]]:
             position += 1
         else:
             spec = entry.signature.parameter(arg.name.key) if arg.name else None
-        if spec is None or not isinstance(arg.value, ast.NameRef):
-            continue
-        kind = SIGNAL_KINDS.get(spec.type_name.lower())
-        if kind is not None:
-            yield arg.value.name, kind
+        if spec is not None and isinstance(arg.value, ast.NameRef):
+            yield arg.value.name, spec.type_name.lower()
 
 
 def _for_variables(statements) -> Iterator[str]:

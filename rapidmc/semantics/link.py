@@ -310,6 +310,13 @@ class Linker:
             if name.key in declared or self.system_symbol(name) is not None:
                 continue
             self.physical_signal(name.text, kind, name.span)
+        for name in configured_signals.unit_uses(modules):
+            if name.key in declared or self.system_symbol(name) is not None:
+                continue
+            # a mechanical unit of the motion configuration, as the predefined ROB_1
+            self.system.declare(name.key, Symbol(CONSTANT, name.text,
+                                                 self.builtin_types["MECUNIT"], value=None,
+                                                 storage="CONST"))
 
     def _declare_routines(self, modules, namespace: int) -> None:
         seen_modules = set()

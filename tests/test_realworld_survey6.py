@@ -1,0 +1,73 @@
+"""Survey round 6 (docs/realworld-survey.md): programs of ours in the styles of the public
+RAPID code surveyed, one per cause of a program that did not load.
+
+* ``tray_sorter.mod``: a group input read only as the subject of a TEST whose CASEs are
+  numbers (``TEST giRecipe CASE 1:``) is a configured signal, as one compared with ``=``
+  is; a conveyor named only in ActUnit/DeactUnit (``CNV1``) is a mechanical unit of the
+  motion configuration.
+* ``yumi_arm_stream.mod``: YuMi's arm ``ROB_L`` passed to EGMSetupUC is a mechanical unit
+  too.
+* ``pendant_texts.mod``: a missing number used as an array index gets 1 from
+  ``rapidmc stubs`` (0 is outside every RAPID array).
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from tests.test_realworld_survey4 import cli, verdicts
+
+HERE = Path(__file__).resolve().parent / "realworld" / "survey6"
+
+
+def test_a_group_input_read_only_by_test_is_a_configured_signal():
+    program = HERE / "tray_sorter.mod"
+    code, out, err = cli("check", program, "--quiet",
+                         "--formula", 'trays_bounded: G "nInA <= 2 AND nInB <= 2"',
+                         "--formula", 'both_trays: G ("nInA + nInB = 4" -> "doVacuum = 0")')
+    assert code == 0, err
+    assert set(verdicts(out).values()) == {"HOLDS"}
+    # the default domain of an input only compared with numbers names the CASE values
+    assert "giRecipe: values 0..3 (group input only compared with 1, 2) [RMC515]" in err
+
+
+def test_a_test_subject_with_string_cases_is_not_taken_for_a_signal(tmp_path):
+    program = tmp_path / "names.mod"
+    program.write_text("MODULE names\n  PROC main()\n    TEST sMode\n    CASE \"auto\":\n"
+                       "      TPWrite \"a\";\n    ENDTEST\n  ENDPROC\nENDMODULE\n")
+    code, _, err = cli("check", program, "--quiet")
+    assert code == 2 and "unknown name 'sMode' [RMC201]" in err
+
+
+@pytest.mark.parametrize("program", ["tray_sorter.mod", "yumi_arm_stream.mod"])
+def test_mechanical_units_of_the_configuration_need_no_declaration(program, tmp_path):
+    code, out, err = cli("check", HERE / program, "--quiet")
+    assert code == 0, err
+    assert verdicts(out)["no_runtime_error"] == "HOLDS"
+    # and the stubs leave them to the configuration too: nothing is missing
+    code, _, err = cli("stubs", HERE / program, "-o", tmp_path / "Missing.mod")
+    assert "CNV1" not in err and "ROB_L" not in err
+    assert not (tmp_path / "Missing.mod").exists() or "mecunit" not in \
+        (tmp_path / "Missing.mod").read_text()
+
+
+def test_a_declared_mechanical_unit_name_is_not_redeclared(tmp_path):
+    program = tmp_path / "own.mod"
+    program.write_text("MODULE own\n  VAR num CNV1 := 3;\n  PROC main()\n"
+                       "    ActUnit CNV1;\n  ENDPROC\nENDMODULE\n")
+    code, _, err = cli("check", program, "--quiet")
+    assert code == 2 and "CNV1" in err          # a num where a mecunit is required
+
+
+def test_stubs_start_a_missing_array_index_at_the_first_element(tmp_path):
+    program = HERE / "pendant_texts.mod"
+    output = tmp_path / "Missing.mod"
+    code, _, err = cli("stubs", program, "-o", output)
+    assert code == 0, err
+    text = output.read_text()
+    assert "PERS num nLanguage := 1; ! an array index" in text
+    assert "PERS string sTitle{10} :=" in text
+    code, out, err = cli("check", program, output, "--quiet")
+    assert code == 0, err
+    assert verdicts(out)["no_runtime_error"] == "HOLDS"
