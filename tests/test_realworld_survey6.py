@@ -71,3 +71,37 @@ def test_stubs_start_a_missing_array_index_at_the_first_element(tmp_path):
     code, out, err = cli("check", program, output, "--quiet")
     assert code == 0, err
     assert verdicts(out)["no_runtime_error"] == "HOLDS"
+
+
+def test_booked_error_numbers_in_handler_lists_are_caught_by_their_handler():
+    program = HERE / "booked_recovery.mod"
+    code, out, err = cli("check", program, "--quiet",
+                         "--formula", "right_handler: G !bWrongHandler",
+                         "--formula", 'recovers: G ("Ended()" -> "nRecovered + 2 >= nAttempts")',
+                         "--formula", 'ends: F "Ended()"')
+    assert code == 0, err
+    assert set(verdicts(out).values()) == {"HOLDS"}, out
+    # the handler that lists the other booked number never runs
+    assert "booked_recovery.mod:26:5: warning: never reached" in err
+
+
+def test_booked_numbers_are_raisable_and_the_same_in_every_load(tmp_path):
+    program = tmp_path / "book.mod"
+    program.write_text("MODULE book\n  VAR errnum ERR_A := -1;\n  VAR errnum ERR_B := -1;\n"
+                       "  PROC main()\n    BookErrNo ERR_A;\n    BookErrNo ERR_B;\n"
+                       "    TPWrite \"\" \\Num:=ERR_A;\n    TPWrite \"\" \\Num:=ERR_B;\n"
+                       "    RAISE ERR_B;\n  ERROR\n    TPWrite \"caught\" \\Num:=ERRNO;\n"
+                       "  ENDPROC\nENDMODULE\n")
+    runs = [cli("run", program) for _ in range(2)]
+    assert runs[0] == runs[1]                    # no numbering carried over between loads
+    code, out, err = runs[0]
+    assert code == 0, err
+    assert out.split() == ["90", "89", "caught89"]
+
+
+def test_routine_data_in_a_handler_list_is_still_refused(tmp_path):
+    program = tmp_path / "routine_data.mod"
+    program.write_text("MODULE routine_data\n  PROC main()\n    VAR errnum nMine := 5;\n"
+                       "    RAISE 5;\n  ERROR (nMine)\n    TRYNEXT;\n  ENDPROC\nENDMODULE\n")
+    code, _, err = cli("check", program, "--quiet")
+    assert code == 2 and "[RMC213]" in err
