@@ -32,12 +32,19 @@ def test_a_group_input_read_only_by_test_is_a_configured_signal():
     assert "giRecipe: values 0..3 (group input only compared with 1, 2) [RMC515]" in err
 
 
-def test_a_test_subject_with_string_cases_is_not_taken_for_a_signal(tmp_path):
-    program = tmp_path / "names.mod"
-    program.write_text("MODULE names\n  PROC main()\n    TEST sMode\n    CASE \"auto\":\n"
-                       "      TPWrite \"a\";\n    ENDTEST\n  ENDPROC\nENDMODULE\n")
+def refusal(tmp_path, module: str, text: str) -> str:
+    """The errors ``check`` reports for module ``module`` with the body ``text``."""
+    program = tmp_path / f"{module}.mod"
+    program.write_text(f"MODULE {module}\n{text}ENDMODULE\n")
     code, _, err = cli("check", program, "--quiet")
-    assert code == 2 and "unknown name 'sMode' [RMC201]" in err
+    assert code == 2
+    return err
+
+
+def test_a_test_subject_with_string_cases_is_not_taken_for_a_signal(tmp_path):
+    err = refusal(tmp_path, "names", "  PROC main()\n    TEST sMode\n    CASE \"auto\":\n"
+                  "      TPWrite \"a\";\n    ENDTEST\n  ENDPROC\n")
+    assert "unknown name 'sMode' [RMC201]" in err
 
 
 @pytest.mark.parametrize("program", ["tray_sorter.mod", "yumi_arm_stream.mod"])
@@ -53,11 +60,9 @@ def test_mechanical_units_of_the_configuration_need_no_declaration(program, tmp_
 
 
 def test_a_declared_mechanical_unit_name_is_not_redeclared(tmp_path):
-    program = tmp_path / "own.mod"
-    program.write_text("MODULE own\n  VAR num CNV1 := 3;\n  PROC main()\n"
-                       "    ActUnit CNV1;\n  ENDPROC\nENDMODULE\n")
-    code, _, err = cli("check", program, "--quiet")
-    assert code == 2 and "CNV1" in err          # a num where a mecunit is required
+    err = refusal(tmp_path, "own", "  VAR num CNV1 := 3;\n  PROC main()\n"
+                  "    ActUnit CNV1;\n  ENDPROC\n")
+    assert "CNV1" in err                        # a num where a mecunit is required
 
 
 def test_stubs_start_a_missing_array_index_at_the_first_element(tmp_path):
@@ -100,8 +105,6 @@ def test_booked_numbers_are_raisable_and_the_same_in_every_load(tmp_path):
 
 
 def test_routine_data_in_a_handler_list_is_still_refused(tmp_path):
-    program = tmp_path / "routine_data.mod"
-    program.write_text("MODULE routine_data\n  PROC main()\n    VAR errnum nMine := 5;\n"
-                       "    RAISE 5;\n  ERROR (nMine)\n    TRYNEXT;\n  ENDPROC\nENDMODULE\n")
-    code, _, err = cli("check", program, "--quiet")
-    assert code == 2 and "[RMC213]" in err
+    err = refusal(tmp_path, "routine_data", "  PROC main()\n    VAR errnum nMine := 5;\n"
+                  "    RAISE 5;\n  ERROR (nMine)\n    TRYNEXT;\n  ENDPROC\n")
+    assert "[RMC213]" in err
