@@ -108,3 +108,21 @@ def test_routine_data_in_a_handler_list_is_still_refused(tmp_path):
     err = refusal(tmp_path, "routine_data", "  PROC main()\n    VAR errnum nMine := 5;\n"
                   "    RAISE 5;\n  ERROR (nMine)\n    TRYNEXT;\n  ENDPROC\n")
     assert "[RMC213]" in err
+
+
+def test_numbers_of_the_program_compared_with_numbers_are_not_taken_for_signals(tmp_path):
+    program = HERE / "seam_schedule.mod"
+    code, _, err = cli("check", program, "--quiet")
+    # ``nThickness <= 2.9`` and ``TEST nStation CASE 3:`` read numbers of a missing module;
+    # ``partSensor = 1`` (no prefix, equality with 1) is still a digital input
+    assert code == 2
+    assert "unknown name 'nThickness'" in err and "unknown name 'nStation'" in err
+    assert "partSensor" not in err
+    output = tmp_path / "Missing.mod"
+    code, _, err = cli("stubs", program, "-o", output)
+    assert code == 0, err
+    text = output.read_text()
+    assert "PERS num nThickness := 0;" in text and "PERS num nStation := 0;" in text
+    assert "partSensor" not in text
+    code, out, err = cli("check", program, output, "--quiet", "--formula", "no_alarm: G !bAlarm")
+    assert code == 0 and verdicts(out)["no_alarm"] == "HOLDS", err

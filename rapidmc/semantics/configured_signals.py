@@ -6,15 +6,16 @@ not declared in RAPID.  Before compiling, the linker walks every routine
 and takes each undeclared name passed to a signal parameter of a predefined
 routine (SetDO, WaitDI, DInput, ISignalDI, ...) as a configured signal of
 that parameter's kind; the name can then also be read in expressions, in
-any order.  An undeclared name that is only compared with a number
-(``IF diPart = 1``, ``TEST giRecipe CASE 1:``) is a configured signal too
-(kind from its prefix).  Names passed to a ``mecunit`` parameter are
+any order.  An undeclared name compared with a number is a configured signal
+too, of the kind its prefix says (``TEST giRecipe CASE 1:``, ``IF aiLevel > 2.5``);
+without a prefix, only a name tested for equality with 0 or 1 is one (a digital
+input, ``IF sensorPart = 1``).  Names passed to a ``mecunit`` parameter are
 mechanical units of the motion configuration (``ActUnit CNV1``).
 """
 from __future__ import annotations
 
 import re
-from typing import Iterable, Iterator
+from typing import Iterable, Iterator, Optional
 
 from .. import ast
 from .library import registry
@@ -54,11 +55,31 @@ def compared_names(modules: Iterable[ast.Module]) -> Iterator[tuple[ast.Name, st
         if isinstance(node, ast.Binary) and node.op in COMPARISONS:
             for name_side, other in ((node.left, node.right), (node.right, node.left)):
                 if isinstance(name_side, ast.NameRef) and _is_number(other):
-                    yield name_side.name, kind_from_prefix(name_side.name.text)
+                    kind = _compared_kind(name_side.name.text, (other,),
+                                          digital=node.op in ("=", "<>"))
+                    if kind is not None:
+                        yield name_side.name, kind
         elif isinstance(node, ast.Test) and isinstance(node.subject, ast.NameRef) \
                 and node.cases and all(_is_number(v) for case in node.cases for v in case.values):
             # ``TEST giRecipe CASE 1: ... CASE 2: ...`` compares the name with numbers too
-            yield node.subject.name, kind_from_prefix(node.subject.name.text)
+            kind = _compared_kind(node.subject.name.text,
+                                  [v for case in node.cases for v in case.values], digital=True)
+            if kind is not None:
+                yield node.subject.name, kind
+
+
+def _compared_kind(name: str, numbers, digital: bool) -> Optional[str]:
+    """The signal kind of a name compared with ``numbers``, or None when it is no signal.
+
+    A signal prefix decides.  Without one the name is a digital input only when it is
+    tested for equality with 0 or 1: ``nThickness <= 2.9`` or ``TEST nStation CASE 3:``
+    reads a number of the program, which is missing, not an I/O signal.
+    """
+    if _PREFIX.match(name) is not None:
+        return kind_from_prefix(name)
+    if digital and all(_number_value(n) in (0, 1) for n in numbers):
+        return "DI"
+    return None
 
 
 COMPARISONS = ("=", "<>", "<", "<=", ">", ">=")
@@ -77,6 +98,14 @@ def _is_number(expr) -> bool:
     if isinstance(expr, ast.Unary) and expr.op in ("-", "+"):
         expr = expr.operand
     return isinstance(expr, ast.NumLiteral)
+
+
+def _number_value(expr):
+    """The value of a number literal, sign included (``_is_number`` holds)."""
+    if isinstance(expr, ast.Unary):
+        value = _number_value(expr.operand)
+        return -value if expr.op == "-" else value
+    return expr.value
 
 
 def _nodes(modules: Iterable[ast.Module]) -> Iterator[object]:
