@@ -126,3 +126,14 @@ def test_numbers_of_the_program_compared_with_numbers_are_not_taken_for_signals(
     assert "partSensor" not in text
     code, out, err = cli("check", program, output, "--quiet", "--formula", "no_alarm: G !bAlarm")
     assert code == 0 and verdicts(out)["no_alarm"] == "HOLDS", err
+
+
+def test_signal_parameters_can_be_handed_on_and_read():
+    program = HERE / "beam_guard.mod"
+    code, out, err = cli("run", program, "--io", "diLaser=1")
+    assert code == 0, err                       # was an internal error (a signal index
+    code, out, err = cli("check", program, "--quiet",       # read as a reference)
+                         "--formula", 'two_pulses: G ("Ended()" -> "nPulses = 2")',
+                         "--formula", 'clamp_after_beam: G ("doClamp = 1" -> bBeamSteady)')
+    assert code == 0, err
+    assert set(verdicts(out).values()) == {"HOLDS"}
