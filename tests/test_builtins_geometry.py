@@ -107,3 +107,49 @@ def test_operators_on_pos_and_orient():
 def test_predefined_data(name, type_name, value):
     data = PREDEFINED_DATA[name]
     assert (data.type_name, data.value) == (type_name, value)
+
+
+# --- DefFrame (survey round 6): a frame from three taught positions -----------------------
+
+def _target(p):
+    return (tuple(map(float, p)), IDENTITY, CONF, EXTAX)
+
+
+def _local(frame, world_point):
+    """``world_point`` in the coordinates of ``frame`` (PoseVect of the inverse frame)."""
+    return call("PoseVect", call("PoseInv", frame), tuple(map(float, world_point)))
+
+
+@given(vectors, vectors, vectors)
+def test_defframe_puts_the_x_axis_through_p2_and_p3_on_the_positive_y_side(p1, p2, p3):
+    x_len = math.dist(p1, p2)
+    foot = sum((c - a) * (b - a) for a, b, c in zip(p1, p2, p3)) / x_len if x_len > 1 else 0
+    side = math.dist(p3, tuple(a + foot * (b - a) / x_len for a, b in zip(p1, p2))) \
+        if x_len > 1 else 0
+    if x_len < 1 or side < 1:              # nearly the same or collinear points: ERR_FRAME
+        return
+    for origin, expected_x in ((None, 0.0), (2.0, -x_len), (3.0, -foot)):
+        frame = call("DefFrame", _target(p1), _target(p2), _target(p3), origin)
+        assert _local(frame, p1) == approx((expected_x, 0.0, 0.0), 1e-2)     # p1 on the x-axis
+        assert _local(frame, p2) == approx((expected_x + x_len, 0.0, 0.0), 1e-2)
+        local3 = _local(frame, p3)
+        assert local3[1] == pytest.approx(side, abs=1e-2) and local3[2] == approx(0.0, 1e-2)
+
+
+@pytest.mark.parametrize("points, origin, error", [
+    (((0, 0, 0), (0, 0, 0), (0, 100, 0)), None, "ERR_FRAME"),      # NewP1 = NewP2
+    (((0, 0, 0), (100, 0, 0), (300, 0, 0)), None, "ERR_FRAME"),    # all on one line
+    (((0, 0, 0), (100, 0, 0), (0, 100, 0)), 4.0, "ERR_ARGVALERR"),
+])
+def test_defframe_refuses_positions_that_define_no_frame(points, origin, error):
+    with pytest.raises(RapidError) as raised:
+        call("DefFrame", *map(_target, points), origin)
+    assert raised.value.name == error
+
+
+def test_defframe_of_a_public_teach_routine_style_call():
+    # x from (100,0,0) to (300,0,0), the third point at negative y: the frame is turned
+    # half a turn about x, and \Origin:=3 puts the origin under the third point
+    frame = call("DefFrame", _target((100, 0, 0)), _target((300, 0, 0)),
+                 _target((200, -50, 0)), 3.0)
+    assert frame[0] == approx((200.0, 0.0, 0.0)) and frame[1] == approx((0.0, 1.0, 0.0, 0.0))

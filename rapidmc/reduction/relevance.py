@@ -157,6 +157,9 @@ class _Analysis:
             for data in decl.data:
                 for expr in (*data.dims, data.init):
                     self.seed(expr)
+            if decl.error is not None:          # ERROR (booked_errnum, ...) reads its data
+                for expr in decl.error.numbers or ():
+                    self.seed(expr)
             bodies = [decl.body, decl.backward, decl.undo,
                       decl.error.body if decl.error is not None else None]
             for body in bodies:

@@ -269,6 +269,10 @@ def signal_designator(compiler: ExpressionCompiler, expr: ast.Expr,
         if symbol.type.signal_kind != signal_type.signal_kind:
             raise error(TYPE_MISMATCH, f"'{expr.name.text}' is a {symbol.type.name}, a "
                         f"{signal_type.name} is required", expr.span)
+        if symbol.kind == LOCAL_DATA and symbol.by_reference:
+            # a signal parameter of this routine: its caller bound the physical index
+            slot = symbol.slot
+            return lambda m: m.frames[-1].locals[slot]
     ref_fn, _, _ = compiler.reference(expr, "used as a signal")
 
     def bound_index(m):

@@ -6,13 +6,16 @@ not declared in RAPID.  Before compiling, the linker walks every routine
 and takes each undeclared name passed to a signal parameter of a predefined
 routine (SetDO, WaitDI, DInput, ISignalDI, ...) as a configured signal of
 that parameter's kind; the name can then also be read in expressions, in
-any order.  An undeclared name that is only compared with a number
-(``IF diPart = 1``) is a configured signal too (kind from its prefix).
+any order.  An undeclared name compared with a number is a configured signal
+too, of the kind its prefix says (``TEST giRecipe CASE 1:``, ``IF aiLevel > 2.5``);
+without a prefix, only a name tested for equality with 0 or 1 is one (a digital
+input, ``IF sensorPart = 1``).  Names passed to a ``mecunit`` parameter are
+mechanical units of the motion configuration (``ActUnit CNV1``).
 """
 from __future__ import annotations
 
 import re
-from typing import Iterable, Iterator
+from typing import Iterable, Iterator, Optional
 
 from .. import ast
 from .library import registry
@@ -52,7 +55,31 @@ def compared_names(modules: Iterable[ast.Module]) -> Iterator[tuple[ast.Name, st
         if isinstance(node, ast.Binary) and node.op in COMPARISONS:
             for name_side, other in ((node.left, node.right), (node.right, node.left)):
                 if isinstance(name_side, ast.NameRef) and _is_number(other):
-                    yield name_side.name, kind_from_prefix(name_side.name.text)
+                    kind = _compared_kind(name_side.name.text, (other,),
+                                          digital=node.op in ("=", "<>"))
+                    if kind is not None:
+                        yield name_side.name, kind
+        elif isinstance(node, ast.Test) and isinstance(node.subject, ast.NameRef) \
+                and node.cases and all(_is_number(v) for case in node.cases for v in case.values):
+            # ``TEST giRecipe CASE 1: ... CASE 2: ...`` compares the name with numbers too
+            kind = _compared_kind(node.subject.name.text,
+                                  [v for case in node.cases for v in case.values], digital=True)
+            if kind is not None:
+                yield node.subject.name, kind
+
+
+def _compared_kind(name: str, numbers, digital: bool) -> Optional[str]:
+    """The signal kind of a name compared with ``numbers``, or None when it is no signal.
+
+    A signal prefix decides.  Without one the name is a digital input only when it is
+    tested for equality with 0 or 1: ``nThickness <= 2.9`` or ``TEST nStation CASE 3:``
+    reads a number of the program, which is missing, not an I/O signal.
+    """
+    if _PREFIX.match(name) is not None:
+        return kind_from_prefix(name)
+    if digital and all(_number_value(n) in (0, 1) for n in numbers):
+        return "DI"
+    return None
 
 
 COMPARISONS = ("=", "<>", "<", "<=", ">", ">=")
@@ -73,6 +100,14 @@ def _is_number(expr) -> bool:
     return isinstance(expr, ast.NumLiteral)
 
 
+def _number_value(expr):
+    """The value of a number literal, sign included (``_is_number`` holds)."""
+    if isinstance(expr, ast.Unary):
+        value = _number_value(expr.operand)
+        return -value if expr.op == "-" else value
+    return expr.value
+
+
 def _nodes(modules: Iterable[ast.Module]) -> Iterator[object]:
     for module in modules:
         for routine in module.routines:
@@ -82,7 +117,29 @@ def _nodes(modules: Iterable[ast.Module]) -> Iterator[object]:
                 yield from _walk_statements(statements)
 
 
+def unit_uses(modules: Iterable[ast.Module]) -> Iterator[ast.Name]:
+    """Each bare name passed to a ``mecunit`` parameter of a predefined routine.
+
+    Mechanical units other than the robots are named in the motion configuration
+    (MOC.cfg): a conveyor ``CNV1`` for ActUnit and WaitWObj, a positioner ``STN1``,
+    YuMi's arms ``ROB_L`` and ``ROB_R`` for EGMSetupUC.  Like signals, programs use
+    them by name without declaring them.
+    """
+    for node in _nodes(modules):
+        for name, type_name in _argument_uses(node):
+            if type_name == "mecunit":
+                yield name
+
+
 def _call_uses(node) -> Iterator[tuple[ast.Name, str]]:
+    for name, type_name in _argument_uses(node):
+        kind = SIGNAL_KINDS.get(type_name)
+        if kind is not None:
+            yield name, kind
+
+
+def _argument_uses(node) -> Iterator[tuple[ast.Name, str]]:
+    """(name, parameter type in lower case) for each bare name argument of a predefined call."""
     if isinstance(node, ast.ProcedureCall):
         entry = registry.lookup_procedure(node.name.key)
     elif isinstance(node, ast.FunctionCall):
@@ -100,11 +157,8 @@ def _call_uses(node) -> Iterator[tuple[ast.Name, str]]:
             position += 1
         else:
             spec = entry.signature.parameter(arg.name.key) if arg.name else None
-        if spec is None or not isinstance(arg.value, ast.NameRef):
-            continue
-        kind = SIGNAL_KINDS.get(spec.type_name.lower())
-        if kind is not None:
-            yield arg.value.name, kind
+        if spec is not None and isinstance(arg.value, ast.NameRef):
+            yield arg.value.name, spec.type_name.lower()
 
 
 def _for_variables(statements) -> Iterator[str]:

@@ -23,17 +23,19 @@ from .state import Frame, IN_HANDLER, IN_UNDO, NORMAL
 UNDO_STEP_LIMIT = 100_000
 
 
-def _catches(routine, errno: int) -> bool:
+def _catches(m: Machine, routine, errno: int) -> bool:
     if routine.handler_pc < 0:
         return False
-    numbers = routine.handler_numbers
-    return numbers is None or errno in numbers or LONG_JMP_ALL_ERR in numbers
+    return routine.handler_numbers is None or _lists(m, routine, errno)
 
 
-def _lists(routine, errno: int) -> bool:
+def _lists(m: Machine, routine, errno: int) -> bool:
+    """The handler's number list names ``errno``: a constant, LONG_JMP_ALL_ERR, or module
+    data (an errnum booked with BookErrNo) holding it now."""
     numbers = routine.handler_numbers
     return routine.handler_pc >= 0 and numbers is not None and (
-        errno in numbers or LONG_JMP_ALL_ERR in numbers)
+        errno in numbers or LONG_JMP_ALL_ERR in numbers
+        or any(m.store[slot] == errno for slot in routine.handler_slots))
 
 
 def deliver_error(m: Machine, errno: int, message: str, from_handler: bool = False) -> None:
@@ -48,7 +50,7 @@ def deliver_error(m: Machine, errno: int, message: str, from_handler: bool = Fal
     origin = (frames[-1].routine, frames[-1].pc)
     depth = len(frames) - 1
     frame = frames[depth]
-    if not from_handler and frame.mode == NORMAL and _catches(routines[frame.routine], errno):
+    if not from_handler and frame.mode == NORMAL and _catches(m, routines[frame.routine], errno):
         _enter_handler(m, depth)
         return
     callers = []
@@ -57,9 +59,9 @@ def deliver_error(m: Machine, errno: int, message: str, from_handler: bool = Fal
         d -= 1
         callers.append(d)
     open_callers = [d for d in callers if frames[d].mode == NORMAL]
-    target = next((d for d in open_callers if _lists(routines[frames[d].routine], errno)), None)
+    target = next((d for d in open_callers if _lists(m, routines[frames[d].routine], errno)), None)
     if target is None:
-        target = next((d for d in open_callers if _catches(routines[frames[d].routine], errno)),
+        target = next((d for d in open_callers if _catches(m, routines[frames[d].routine], errno)),
                       None)
     if target is None:
         unwind_to(m, 0)

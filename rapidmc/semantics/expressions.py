@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import itertools
 import operator
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Callable, Optional
 
 from .. import ast
@@ -247,9 +247,10 @@ class ExpressionCompiler:
             return Compiled(lambda m: m.store[slot], rapid_type, source=f"store[{slot}]",
                             names={})
         # routine data and parameters
+        if is_signal:    # a signal parameter holds the physical index its caller bound
+            index = self._local_reader(replace(symbol, by_reference=False), expr.name)
+            return Compiled(lambda m: read_signal(m, index(m)), NUM)
         reader = self._local_reader(symbol, expr.name)
-        if is_signal:
-            return Compiled(lambda m: read_signal(m, reader(m)), NUM)
         if symbol.by_reference or symbol.optional:
             return Compiled(reader, rapid_type)
         return Compiled(reader, rapid_type, source=f"locals_[{slot}]", names={})

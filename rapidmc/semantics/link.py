@@ -54,6 +54,7 @@ class Linker:
         self.entry_key = "MAIN"
         self.errors = ErrorCollector()
         self.failed_names: set[str] = set()     # declarations that failed: uses stay quiet
+        self.booked_errors = 0                  # BookErrNo call sites numbered so far
         self._predefined_types()
 
     # ------------------------------------------------------------ errors
@@ -310,6 +311,13 @@ class Linker:
             if name.key in declared or self.system_symbol(name) is not None:
                 continue
             self.physical_signal(name.text, kind, name.span)
+        for name in configured_signals.unit_uses(modules):
+            if name.key in declared or self.system_symbol(name) is not None:
+                continue
+            # a mechanical unit of the motion configuration, as the predefined ROB_1
+            self.system.declare(name.key, Symbol(CONSTANT, name.text,
+                                                 self.builtin_types["MECUNIT"], value=None,
+                                                 storage="CONST"))
 
     def _declare_routines(self, modules, namespace: int) -> None:
         seen_modules = set()
@@ -501,7 +509,8 @@ class Linker:
                             node=data) is None:
                 self._failed_local(routine, scope, data)
         if decl.error is not None:
-            routine.handler_numbers = self.attempt(self._handler_numbers, decl.error, scope)
+            routine.handler_numbers = self.attempt(self._handler_numbers, decl.error, scope,
+                                                   routine)
 
     def _declare_local(self, routine, scope: Scope, decl: ast.DataDeclaration,
                        namespace: int) -> None:
@@ -534,20 +543,28 @@ class Linker:
                                                 storage="VAR", span=decl.span))
         self.failed_names.add(decl.name.key)
 
-    def _handler_numbers(self, handler: ast.ErrorHandler, scope: Scope) -> Optional[frozenset]:
+    def _handler_numbers(self, handler: ast.ErrorHandler, scope: Scope,
+                         routine: P.Routine) -> Optional[frozenset]:
+        """The constant numbers of an ``ERROR (n1, ...)`` list; module data in the list (an
+        errnum booked at run time with BookErrNo) go to ``routine.handler_slots``."""
         if handler.numbers is None:
             return None
-        numbers = set()
+        numbers, slots = set(), []
         compiler = ExpressionCompiler(self, scope, constant_only=False)
         for expr in handler.numbers:
             if isinstance(expr, ast.NameRef) and expr.name.key == "LONG_JMP_ALL_ERR":
                 numbers.add(LONG_JMP_ALL_ERR)
                 continue
             compiled = compiler.value(expr, NUM)
-            if not compiled.is_constant:
-                raise error(NOT_CONSTANT, "ERROR handler lists need constant error numbers",
-                            expr.span)
-            numbers.add(int(compiled.constant))
+            if compiled.is_constant:
+                numbers.add(int(compiled.constant))
+                continue
+            symbol = scope.lookup(expr.name.key) if isinstance(expr, ast.NameRef) else None
+            if symbol is None or symbol.kind != GLOBAL_DATA:
+                raise error(NOT_CONSTANT, "ERROR handler lists need constant error numbers or "
+                            "module data holding one (booked with BookErrNo)", expr.span)
+            slots.append(symbol.slot)
+        routine.handler_slots = tuple(slots)
         return frozenset(numbers)
 
     def routine_by_index(self, index: int) -> P.Routine:

@@ -84,6 +84,7 @@ class Routine:
     code: list = field(default_factory=list)          # instructions
     handler_pc: int = -1                              # first instruction of the ERROR handler
     handler_numbers: Optional[frozenset] = None       # ERROR (n1, ...) list; None = catch all
+    handler_slots: tuple = ()                         # global slots of errnum data in the list
     undo_pc: int = -1
     ast: Any = None
     initial: list = field(default_factory=list)       # initial value of each local slot

@@ -59,6 +59,7 @@ class Missing:
     parameters: list[Parameter] = field(default_factory=list)
     fields: dict = field(default_factory=dict)          # a missing RECORD: component -> type
     sizes_array: bool = False                           # used as an array dimension
+    indexes_array: bool = False                         # used as an array index
     assigned: bool = False
     array_argument: bool = False                        # dims from an array parameter
 
@@ -390,9 +391,7 @@ class Inference:
                 self._array_use(self.note(expr.base.name, DATA, "indexed"), expr)
             else:
                 self.expression(expr.base)
-            for index in expr.indices:
-                self.expect(index, NUM, "array index")
-                self.expression(index)
+            self._indices(expr.indices)
         elif isinstance(expr, ast.Component):
             self._component(expr)
         elif isinstance(expr, ast.FunctionCall):
@@ -407,6 +406,15 @@ class Inference:
             for item in expr.items:
                 self.expression(item)
 
+    def _indices(self, indices) -> None:
+        """Array indices are numbers; a missing name used as one starts at the first element."""
+        for index in indices:
+            self.expect(index, NUM, "array index")
+            found = self.missing.get(index.name.key) if isinstance(index, ast.NameRef) else None
+            if found is not None and found.kind == DATA:
+                found.indexes_array = True
+            self.expression(index)
+
     def _component(self, expr: ast.Component) -> None:
         root = expr.base
         indexed = isinstance(root, ast.Index) and isinstance(root.base, ast.NameRef) \
@@ -416,9 +424,7 @@ class Inference:
             missing = self.note(name, DATA, f"component .{expr.name.text} read")
             if indexed:                  # ``traj{1}.pos``: an array of records
                 self._array_use(missing, root)
-                for index in root.indices:
-                    self.expect(index, NUM, "array index")
-                    self.expression(index)
+                self._indices(root.indices)
             if expr.name.text not in missing.components:
                 missing.components.append(expr.name.text)
                 self.changed = True

@@ -153,6 +153,9 @@ class StubWriter:
         if item.sizes_array:
             value = str(MIN_ARRAY_SIZE)
             notes.append(f"an array size: {MIN_ARRAY_SIZE} assumed")
+        elif item.indexes_array and not sizes and type_name == "num":
+            value = "1"
+            notes.append("an array index: 1, the first element (RAPID arrays start at 1)")
         storage = "CONST" if item.storage == "CONST" and not item.assigned else "PERS"
         return [f"{storage} {type_name} {item.name.text}{dims} := {value};" + _comment(notes)]
 

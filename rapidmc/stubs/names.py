@@ -71,6 +71,7 @@ class Declarations:
         declared = configured_signals.declared_names(modules)
         self.signals |= {name.key for name, _ in configured_signals.compared_names(modules)
                          if name.key not in declared}
+        self.units = {name.key for name in configured_signals.unit_uses(modules)} - declared
 
     # ------------------------------------------------------------------ data
     def data_type(self, key: str, local: dict[str, TypeInfo]) -> Optional[TypeInfo]:
@@ -88,6 +89,8 @@ class Declarations:
             return TypeInfo("errnum")
         if key in self.signals:
             return NUM                  # a signal read as a value
+        if key in self.units:
+            return TypeInfo("mecunit")  # a mechanical unit of the motion configuration
         return None
 
     def is_data(self, key: str, local: dict[str, TypeInfo]) -> bool:

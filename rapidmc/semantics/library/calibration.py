@@ -2,7 +2,8 @@
 
 Computing a TCP or a frame from joint positions needs the robot's kinematic
 model, which rapidmc does not have: programs with these calls load, and
-reaching one stops the run with RMC305.
+reaching one stops the run with RMC305.  (DefFrame, a frame from three
+Cartesian positions, is plain geometry: library/geometry.py.)
 """
 from __future__ import annotations
 
@@ -18,8 +19,6 @@ compiled(f"MToolTCPCalib({_FOUR}, INOUT tooldata Tool, VAR num MaxErr, VAR num M
          "SToolRotCalib(jointtarget RefTip, jointtarget ZPos, jointtarget XPos, "
              "INOUT tooldata Tool)",
          f"SToolTCPCalib({_FOUR}, INOUT tooldata Tool, VAR num MaxErr, VAR num MeanErr)",
-         "pose DefFrame(robtarget NewP1, robtarget NewP2, robtarget NewP3 "
-             "\\switch Origin)",
          "pose DefDFrame(robtarget OldP1, robtarget OldP2, robtarget OldP3, robtarget NewP1, "
              "robtarget NewP2, robtarget NewP3)",
          modelled=NOT_MODELLED)(not_modelled(KINEMATICS))

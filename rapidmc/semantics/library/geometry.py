@@ -1,5 +1,5 @@
 """Geometry functions: Offs, RelTool, OrientZYX, EulerZYX, NOrient, PoseMult,
-PoseInv, PoseVect, VectMagn, DotProd, CrossProd, Distance.
+PoseInv, PoseVect, VectMagn, DotProd, CrossProd, Distance, DefFrame.
 
 Angles are degrees; quaternions are normalised before they rotate anything.
 Records are tuples: pose = (pos, orient), robtarget = (pos, orient,
@@ -20,6 +20,7 @@ from .vector_math import (
     pos_cross,
     pos_dot,
     pos_magnitude,
+    quaternion_from_axes,
     quaternion_multiply,
     quaternion_normalised,
     quaternion_rotate,
@@ -164,3 +165,42 @@ def mir_pos(point: tuple, mir_plane: tuple, wobj: tuple | None, mir_y: bool) -> 
     new_trans, new_rot = pose_mult(pose_inv(to_mirror), ((x, y, -z), as_orient(turned)))
     leading = next((c for c in new_rot if c != 0), 1.0)      # q and -q: the same rotation
     return (new_trans, new_rot if leading > 0 else tuple(-c for c in new_rot), conf, extax)
+
+
+# Survey round 6 (docs/realworld-survey.md): a work object taught with three points
+# (``DefFrame(pX1, pX2, pY1 \Origin:=3)`` in a public teach routine; lib_rob's PSFrame of
+# the ernell utility library).  The frame's x-axis runs from NewP1 towards NewP2, its
+# xy-plane holds NewP3 on the positive y side; \Origin places the origin in NewP1 (1, the
+# default), in NewP2 (2), or on the line NewP1-NewP2 where NewP3 is on the y-axis (3).
+_FRAME_TOLERANCE = 1e-6
+
+
+@function("pose DefFrame(robtarget NewP1, robtarget NewP2, robtarget NewP3 \\num Origin)")
+def def_frame(p1: tuple, p2: tuple, p3: tuple, origin: float | None) -> tuple:
+    """The frame (pose) the three positions define, in their coordinate system; positions
+    too close together or on one line raise ERR_FRAME; an \\Origin other than 1, 2 or 3
+    raises ERR_ARGVALERR (our choice)."""
+    a, b, c = p1[0], p2[0], p3[0]
+    along = vector_sub(b, a)
+    length = math.sqrt(sum(v * v for v in along))
+    if length < _FRAME_TOLERANCE:
+        raise RapidError("ERR_FRAME", "DefFrame: NewP1 and NewP2 are the same position")
+    x = tuple(v / length for v in along)
+    to_third = vector_sub(c, a)
+    foot = sum(u * v for u, v in zip(to_third, x))
+    across = vector_sub(to_third, tuple(foot * v for v in x))
+    width = math.sqrt(sum(v * v for v in across))
+    if width < _FRAME_TOLERANCE:
+        raise RapidError("ERR_FRAME", "DefFrame: the three positions lie on one line")
+    y = tuple(v / width for v in across)
+    z = (x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0])
+    place = 1 if origin is None else origin
+    if place == 1:
+        start = a
+    elif place == 2:
+        start = b
+    elif place == 3:
+        start = vector_add(a, tuple(foot * v for v in x))
+    else:
+        raise RapidError("ERR_ARGVALERR", f"DefFrame: \\Origin must be 1, 2 or 3, not {place}")
+    return (as_pos(start), as_orient(quaternion_from_axes(x, y, z)))

@@ -2,7 +2,8 @@
 from __future__ import annotations
 
 from .. import values
-from ..errors import RapidError
+from ...diagnostics import UNSUPPORTED, error
+from ..errors import USER_ERROR_RANGE, RapidError
 from ..errors_flow import unwind_all
 from ..instructions import Action, ControlAction, enter_routine
 from ..state import ENDED, Frame
@@ -36,14 +37,18 @@ def _exit_cycle(calls, compiler, call, entry):
     return ControlAction(call.span, restart)
 
 
-_booked = [91]
-
-
 @compiled("BookErrNo(VAR errnum ErrorName)")
 def _book_err_no(calls, compiler, call, entry):
+    """Each BookErrNo of the program books its own number from the top of the user range
+    (90, 89, ...), which RAISE accepts; the controller's choice is not documented, and
+    programs only compare ERRNO with the booked data."""
     ref = Arguments(calls, compiler, call, entry).fn("ErrorName")
-    number = float(_booked[0])
-    _booked[0] += 1
+    linker = compiler.linker
+    number = float(USER_ERROR_RANGE[-1] - linker.booked_errors)
+    if number < USER_ERROR_RANGE[0]:
+        raise error(UNSUPPORTED, "more BookErrNo calls than user error numbers (1..90)",
+                    call.span)
+    linker.booked_errors += 1
     return Action(call.span, lambda m: m.write_ref(ref(m), number))
 
 

@@ -117,6 +117,27 @@ def axis_rotation(axis: int, degrees: float) -> Orient:
     return (q[0], q[1], q[2], q[3])
 
 
+def quaternion_from_axes(x: Pos, y: Pos, z: Pos) -> Orient:
+    """Unit quaternion of the rotation whose matrix has the orthonormal columns x, y, z
+    (a right-handed frame), with a non-negative first component."""
+    m = ((x[0], y[0], z[0]), (x[1], y[1], z[1]), (x[2], y[2], z[2]))
+    trace = m[0][0] + m[1][1] + m[2][2]
+    if trace > 0:
+        s = 2 * math.sqrt(1 + trace)
+        q = (s / 4, (m[2][1] - m[1][2]) / s, (m[0][2] - m[2][0]) / s, (m[1][0] - m[0][1]) / s)
+    else:
+        i = max(range(3), key=lambda k: m[k][k])
+        j, k = (i + 1) % 3, (i + 2) % 3
+        s = 2 * math.sqrt(1 + m[i][i] - m[j][j] - m[k][k])
+        v = [0.0, 0.0, 0.0]
+        v[i] = s / 4
+        v[j] = (m[j][i] + m[i][j]) / s
+        v[k] = (m[k][i] + m[i][k]) / s
+        q = ((m[k][j] - m[j][k]) / s, v[0], v[1], v[2])
+    q = quaternion_normalised(q)
+    return q if q[0] >= 0 else tuple(-c for c in q)
+
+
 def orient_multiply(q: Orient, r: Orient) -> Orient:
     return as_orient(quaternion_multiply(q, r))
 
