@@ -6,17 +6,46 @@ reads, a procedure with an IN and a VAR parameter, and a main loop of
 IF / compact IF / TEST / FOR / WHILE statements, divisions that may fail,
 and WaitDI that may block.  ``properties(seed)`` writes LTL properties over
 its data.  The same seed always gives the same text.
+``random_program(seed, numeric_updates=True)`` writes the same program with
+its counter updates spelt as RAPID's numeric instructions (``Incr``,
+``Decr``, ``Clear``, ``Add``) and a few more of them.
 """
 from __future__ import annotations
 
 import random
+import re
 
 COUNTERS = ("a", "b", "c")
 FLAGS = ("f", "g")
 INPUTS = ("in0", "in1")
 
 
-def random_program(seed: int) -> str:
+def random_program(seed: int, numeric_updates: bool = False) -> str:
+    text = _random_program(seed)
+    return _numeric_updates(text, seed) if numeric_updates else text
+
+
+# assignments and the numeric instruction each amounts to
+SPELLINGS = (("nCycles := nCycles + 1;", "Incr nCycles;"), ("a := 0;", "Clear a;"),
+             ("b := 0;", "Clear b;"), ("c := 0;", "Clear c;"))
+
+
+def _numeric_updates(text: str, seed: int) -> str:
+    """``text`` with the numeric instructions: the spellings above, plus bounded updates
+    of a counter an atom may name and of data a condition reads (``Add`` of a sum the
+    slicing cannot prove total, and of a literal)."""
+    for assignment, instruction in SPELLINGS:        # statements, not declarations
+        text = re.sub(r"(?<!num )\b" + re.escape(assignment), instruction, text)
+    rng = random.Random(seed + 1000)
+    counter = rng.choice(COUNTERS)
+    extra = rng.sample([f"IF {counter} > 0 Decr {counter};", f"IF {counter} < 2 Incr {counter};",
+                        f"IF scratch < 3 AND scratch > -3 Add scratch, {counter};",
+                        "IF scratch > 0 Add scratch, -1;"], rng.randint(2, 3))
+    loop_end = "    ENDWHILE\n"
+    return text.replace(loop_end, "".join(f"      {line}\n" for line in extra) + loop_end, 1)
+
+
+def _random_program(seed: int) -> str:
     rng = random.Random(seed)
     body = [_statement(rng, 2) for _ in range(rng.randint(2, 5))]
     declarations = "\n".join(

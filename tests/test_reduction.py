@@ -88,6 +88,17 @@ def test_generated_programs_keep_their_verdicts(tmp_path, seed):
     assert_same_verdicts(check_json(argv), check_json(argv + ["--no-reduce"]))
 
 
+@pytest.mark.parametrize("seed", range(24))
+def test_numeric_instructions_keep_their_verdicts(tmp_path, seed):
+    """Incr, Decr, Clear and Add read as their assignments by slicing and merging."""
+    program = tmp_path / "prog.mod"
+    program.write_text(random_program(seed, numeric_updates=True))
+    spec = tmp_path / "props.ltl"
+    spec.write_text("\n".join(properties(seed, with_next=seed % 3 == 2)) + "\n")
+    argv = [str(program), "--ltl", str(spec), "--max-states", "20000"]
+    assert_same_verdicts(check_json(argv), check_json(argv + ["--no-reduce"]))
+
+
 @settings(max_examples=80, derandomize=True, deadline=None, database=None,
           suppress_health_check=list(HealthCheck))
 @given(programs(), st.randoms(use_true_random=False))
@@ -139,6 +150,15 @@ def test_statistics_variant_holds_with_as_many_states_as_the_counters(tmp_path):
     with_statistics = states_of(tmp_path, counters(5, statistics=True), formula)
     assert plain[0] == with_statistics[0] == "HOLDS"
     assert with_statistics[1] == plain[1]
+
+
+def test_statistics_variant_counting_with_incr_is_as_small(tmp_path):
+    """`Incr nCycles` is sliced and merged as `nCycles := nCycles + 1` is."""
+    formula = 'bounded: G ("c0 < 4" & "c1 < 4" & "c2 < 4")'
+    incr = counters(3, statistics=True).replace("nCycles := nCycles + 1;", "Incr nCycles;")
+    assert "Incr nCycles;" in incr
+    assert states_of(tmp_path, incr, formula) == ("HOLDS", 195)
+    assert states_of(tmp_path, incr, formula, "--no-merge") == ("HOLDS", 579)
 
 
 def test_statistics_variant_without_slicing_is_bounded(tmp_path):
@@ -201,6 +221,14 @@ def test_data_an_atom_names_is_kept():
     ('s := s + "x";', False),                       # may exceed 80 characters
     ("x := y;", True),                              # nothing reads x (y stays: a condition reads it)
     ("TPWrite NumToStr(x, 0);", False),             # any call observes its arguments
+    ("Incr x;", True),                              # x := x + 1
+    ("Decr x;", True),
+    ("Clear x;", True),
+    ("Add x, 3;", True),
+    ("Add x, -3;", True),
+    ("Add x, x;", False),                           # x := x + x may overflow
+    ("Add x, y;", False),
+    ("Incr x; TPWrite NumToStr(x, 0);", False),     # read elsewhere
 ])
 def test_slicing_of_one_statement(statement, sliced):
     text = f"""MODULE M
@@ -219,6 +247,27 @@ ENDMODULE
     names = global_names(program, find_slicing(program).globals)
     target = "s" if statement.startswith("s :=") else "x"
     assert (target in names) == sliced
+
+
+def test_a_user_routine_named_incr_is_a_call():
+    """Only the predefined Incr is read as `x := x + 1`: a program's own PROC Incr may do
+    anything with its argument, so the data it is given stays."""
+    text = """MODULE M
+  VAR num x := 0;
+  PROC Incr(INOUT num n)
+    n := n * 2;
+  ENDPROC
+  PROC main()
+    WHILE TRUE DO
+      Incr x;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+"""
+    program = linked(text)
+    assert "x" not in global_names(program, find_slicing(program).globals)
+    predefined = linked(text.replace("Incr(INOUT num n)", "Double(INOUT num n)"))
+    assert "x" in global_names(predefined, find_slicing(predefined).globals)
 
 
 def test_properties_given_as_automata_disable_merging():

@@ -5,7 +5,8 @@ transition.  Here an instruction is a *merge point* when executing it
 changes nothing a property can observe and gives nobody else a turn:
 
 * it is a condition (IF, WHILE, compact IF, TEST, FOR entry or step), a
-  GOTO or an assignment;
+  GOTO or an assignment (``Incr x``, ``Decr``, ``Clear``, ``Add`` count as
+  theirs, ``numeric_updates``);
 * the expressions it evaluates call no predefined function that acts on
   the controller (I/O, files, clocks: the "special" routines);
 * it is no loop head (so a step never runs around a loop).
@@ -36,6 +37,7 @@ from ..ltl import syntax
 from ..semantics.library import registry
 from ..semantics.instructions import Action, Branch, ForInit, ForNext, Jump, TestDispatch
 from ..semantics.program import Program
+from .numeric_updates import as_assignment, target_root
 
 # where an instruction may continue (``start`` and ``after`` serve RETRY and TRYNEXT,
 # which are never merged)
@@ -74,10 +76,13 @@ def merge_points(program: Program, atom_keys: set[str]) -> dict:
         if routine.ast is None:
             continue
         nodes = nodes_by_span(routine.ast)
+        lookup = routine.scope.lookup if getattr(routine, "scope", None) is not None else None
         heads = _loop_heads(routine.code)
         kinds = bytearray([NEVER]) * len(routine.code)
         for pc, instruction in enumerate(routine.code):
             node = nodes.get(instruction.span)
+            if isinstance(node, ast.ProcedureCall) and lookup is not None:
+                node = as_assignment(node, lookup)      # Incr x: x := x + 1
             if not _mergeable(instruction, node):
                 continue
             visible = _visible(node, atom_keys)
@@ -110,13 +115,7 @@ def _targets(instruction) -> Iterator[int]:
 
 
 def _visible(node, atom_keys: set[str]) -> bool:
-    return isinstance(node, ast.Assignment) and _root(node.target).name.key in atom_keys
-
-
-def _root(target):
-    while isinstance(target, (ast.Index, ast.Component)):
-        target = target.base
-    return target
+    return isinstance(node, ast.Assignment) and target_root(node.target).name.key in atom_keys
 
 
 def _mergeable(instruction, node) -> bool:
@@ -133,7 +132,7 @@ def _mergeable(instruction, node) -> bool:
     if kind is ForInit and isinstance(node, ast.For):
         return all(_quiet(e) for e in (node.start, node.stop, node.step))
     if kind is Action and isinstance(node, ast.Assignment):
-        return isinstance(_root(node.target), ast.NameRef) and _quiet(node.target) and \
+        return isinstance(target_root(node.target), ast.NameRef) and _quiet(node.target) and \
             _quiet(node.value)
     return False
 

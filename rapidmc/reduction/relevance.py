@@ -15,7 +15,8 @@ through other data, something the check observes:
   a change there must stay visible to deadlock detection).
 
 An assignment ``x := e`` whose ``e`` is total only passes influence on:
-the data ``e`` reads are relevant when ``x`` is.  The result is the least
+the data ``e`` reads are relevant when ``x`` is (``Incr x`` and the other
+numeric updates are read as their assignments, ``numeric_updates``).  The result is the least
 set closed under these rules; every other value-typed data object of the
 program and of its tasks (never parameters, FOR variables or temporaries)
 is *sliced*: no relevant computation reads it and no computation that reads
@@ -36,6 +37,7 @@ from .. import ast
 from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
 from ..semantics.scope import GLOBAL_DATA, LOCAL_DATA, Symbol
 from ..semantics.types import ArrayType, RapidType
+from .numeric_updates import as_assignment
 from .totality import Totality
 
 # A data key: ("G", slot) for global data, ("L", routine index, slot) for routine data.
@@ -240,6 +242,9 @@ class _Analysis:
             pass
         elif kind == "ProcedureCall" and statement.name.key in DATA_BY_NAME:
             return False
+        elif kind == "ProcedureCall" and \
+                (update := as_assignment(statement, self.routine.scope.lookup)) is not None:
+            self.assignment(update)                  # Incr x: x := x + 1
         else:                              # calls, RETURN, RAISE, CONNECT, anything else
             self.seed(statement)
         return True
