@@ -27,12 +27,14 @@ from .choosers import CheckConfig, next_script
 from .errors import RapidError
 from .expressions import read_signal
 from .instructions import Action, Branch, ForInit, ForNext, Jump, TestDispatch
-from .state import Frame, State, Transition
+from .plain_step import is_plain
+from .state import RUNNING, Frame, State, Transition
 
 _new_tuple = tuple.__new__
 LEAF_SIZE = 4                 # pcs tested one by one at the leaves of the dispatch
 MAX_CODE = 4000               # longer routines are not fused (the source would be large)
 NEVER_JOINS = 3               # reduction.merging's kind NEVER
+MISSING = object()
 
 
 class Fallback(Exception):
@@ -244,11 +246,38 @@ def _fused(program, config: CheckConfig, routine: int) -> Optional[FusedRoutine]
 def fused_successors(program, state: State, config: CheckConfig) -> Optional[list[Transition]]:
     """The transitions of a plain state (``plain_step.is_plain``) through its routine's
     fused function, or None when the step needs the general machinery."""
+    return _fused_steps(program, state, config, True)
+
+
+def fused_successor_states(program, state: State, config: CheckConfig) -> Optional[list[State]]:
+    """The target states of ``fused_successors``, in its order, without building the
+    transitions (labels, spans) around them; None when it is None."""
+    return _fused_steps(program, state, config, False)
+
+
+def plain_successor_states(program, state: State, config: CheckConfig) -> Optional[list[State]]:
+    """The target states of ``step.successors`` at a running plain state the fused step
+    takes, in order, for a search that needs nothing else (labels are needed only to
+    rebuild a counterexample, which asks ``step.successors``); None at any other state."""
+    if state[7] != RUNNING or not is_plain(program, state, config):
+        return None
+    return _fused_steps(program, state, config, False)
+
+
+def _fused_steps(program, state: State, config: CheckConfig, labelled: bool):
+    """``fused_successors`` (``labelled``) or ``fused_successor_states``: one loop over
+    the choice scripts, each running the routine's fused function once."""
     frames = state[0]
     frame = frames[-1]
     if frame[3] or frame[5]:
         return None                              # in a handler, or counting RETRYs
-    fused = _fused(program, config, frame[0])
+    cached = config.fused
+    if cached is not None and cached[0] is config.merge_points and cached[1] is program:
+        fused = cached[2].get(frame[0], MISSING)
+        if fused is MISSING:
+            fused = _fused(program, config, frame[0])
+    else:
+        fused = _fused(program, config, frame[0])
     if fused is None:
         return None
     pc = frame[1]
@@ -276,9 +305,17 @@ def fused_successors(program, state: State, config: CheckConfig) -> Optional[lis
                 seen_visible)
             new_frame = _new_tuple(Frame, (head, after, new_locals) + tail)
             new_state = _new_tuple(State, (below + (new_frame,), new_store) + rest)
-            span = spans[0] if len(spans) == 1 else tuple(spans)
-            result.append(_new_tuple(Transition, (tuple(choices), span, new_state, "", False)))
-            script = next_script(script, sizes) if sizes else None
+            if labelled:
+                span = spans[0] if len(spans) == 1 else tuple(spans)
+                new_state = _new_tuple(Transition, (tuple(choices), span, new_state, "", False))
+            result.append(new_state)
+            if not sizes:
+                break
+            if len(sizes) == 1:                  # one choice (the usual): its next value
+                following = script[0] + 1 if script else 1
+                script = [following] if following < sizes[0] else None
+            else:
+                script = next_script(script, sizes)
     except (RapidError, Fallback):
         return None
     return result
