@@ -33,6 +33,7 @@ from .state import RUNNING, Frame, State, Transition
 _new_tuple = tuple.__new__
 LEAF_SIZE = 4                 # pcs tested one by one at the leaves of the dispatch
 MAX_CODE = 4000               # longer routines are not fused (the source would be large)
+ENTRY_LINES = 400             # an entry's paths go on in the dispatch loop after that many lines
 NEVER_JOINS = 3               # reduction.merging's kind NEVER
 MISSING = object()
 
@@ -79,15 +80,36 @@ HELPERS = {"_read": _read, "_with": _with, "_fallback": _fallback,
 
 
 class FusedRoutine:
-    """One routine's generated step function and the pcs it can start from."""
+    """One routine's generated step functions and the pcs they can start from.
 
-    __slots__ = ("run", "starts", "kinds", "first_visible")
+    ``run`` executes the block at any pc, then the blocks after it as long as
+    they join the step, one dispatch per block.  ``entry(pc)`` is the same run
+    from one start pc written out along the code's paths (made when first
+    needed): the merge kinds of the blocks that can follow are known, so
+    their tests and the dispatch are settled when the code is written, and
+    only the choices made are tested when it runs.  A path longer than
+    ``ENTRY_LINES`` lines continues in ``run``."""
 
-    def __init__(self, run, starts: bytes, kinds: bytes, first_visible: bytes):
-        self.run = run                    # run(pc, store, locals_, cx, kinds, seen_visible)
+    __slots__ = ("run", "starts", "kinds", "first_visible", "entries", "_blocks", "_code",
+                 "_names", "_name")
+
+    def __init__(self, run, starts: bytes, kinds: bytes, first_visible: bytes,
+                 blocks: list, code: list, names: dict, name: str):
+        self.run = run                    # run(pc, store, locals_, cx, kinds, seen_visible, spans)
         self.starts = starts              # 1 where the instruction has a source
         self.kinds = kinds                # merge kinds per pc (+4: may read a signal)
         self.first_visible = first_visible  # run_merged's seen_visible for a step starting here
+        self.entries: list = [None] * len(code)   # per start pc: enter(store, locals_, cx, spans)
+        self._blocks, self._code, self._names, self._name = blocks, code, names, name
+
+    def entry(self, pc: int):
+        """``enter(store, locals_, cx, spans) -> (pc, store, locals_)``: ``run`` from ``pc``."""
+        lines = ["def enter(store, locals_, cx, spans):", "    choices = cx[3]"]
+        _path(lines, self, pc, bool(self.first_visible[pc]), "    ", [ENTRY_LINES])
+        names = dict(self._names, _run=self.run, _kinds=self.kinds)
+        exec(compile("\n".join(lines) + "\n", f"<fused {self._name} from {pc}>", "exec"), names)
+        enter = self.entries[pc] = names["enter"]
+        return enter
 
 
 def fused_routine(routine, entry: Optional[tuple]) -> Optional[FusedRoutine]:
@@ -102,8 +124,7 @@ def fused_routine(routine, entry: Optional[tuple]) -> Optional[FusedRoutine]:
         names[f"_s{pc}"] = instruction.span
         if blocks[pc] is not None:
             names.update(_names(instruction))
-    lines = ["def run(pc, store, locals_, cx, kinds, seen_visible):",
-             "    spans = []",
+    lines = ["def run(pc, store, locals_, cx, kinds, seen_visible, spans):",
              "    choices = cx[3]",
              "    while True:"]
     _dispatch(lines, blocks, 0, len(code), "        ")
@@ -116,8 +137,9 @@ def fused_routine(routine, entry: Optional[tuple]) -> Optional[FusedRoutine]:
               "            seen_visible = True",
               "        if kind & 4 and choices:",
               "            break",
-              "    return pc, store, locals_, spans"]
-    exec(compile("\n".join(lines) + "\n", f"<fused {routine.name}>", "exec"), names)
+              "    return pc, store, locals_"]
+    namespace = dict(names)
+    exec(compile("\n".join(lines) + "\n", f"<fused {routine.name}>", "exec"), namespace)
     if entry is None:
         kinds = bytes([NEVER_JOINS]) * len(code)
         first_visible = bytes([1]) * len(code)
@@ -125,7 +147,63 @@ def fused_routine(routine, entry: Optional[tuple]) -> Optional[FusedRoutine]:
         kinds = entry[0]
         first_visible = bytes(1 if kind & 3 in (1, 3) else 0 for kind in kinds)
     starts = bytes(1 if block is not None else 0 for block in blocks)
-    return FusedRoutine(names["run"], starts, kinds, first_visible)
+    return FusedRoutine(namespace["run"], starts, kinds, first_visible, blocks, code, names,
+                        routine.name)
+
+
+def _path(lines: list, fused: FusedRoutine, pc: int, seen_visible: bool, indent: str,
+          budget: list) -> None:
+    """The block at ``pc``, then for each pc it may go on to, what ``run`` does there
+    (its tests of the merge kinds settled here: ``seen_visible`` is known)."""
+    budget[0] -= len(fused._blocks[pc])
+    lines.extend(indent + line for line in fused._blocks[pc])
+    targets = _targets(fused._code[pc])
+    if len(targets) == 1:
+        _go_on(lines, fused, targets[0], seen_visible, indent, budget)
+        return
+    for number, target in enumerate(targets):
+        lines.append(f"{indent}{'if' if number == 0 else 'elif'} pc == {target}:")
+        _go_on(lines, fused, target, seen_visible, indent + "    ", budget)
+    lines.append(f"{indent}else:")
+    lines.append(f"{indent}    return _run(pc, store, locals_, cx, _kinds, True, spans)")
+
+
+def _go_on(lines: list, fused: FusedRoutine, pc: int, seen_visible: bool, indent: str,
+           budget: list) -> None:
+    """After a block, at ``pc``: stop, or run the block there (as ``run`` decides)."""
+    kind = fused.kinds[pc]
+    stop = f"{indent}return {pc}, store, locals_"
+    if kind & 2 or kind & 1 and seen_visible:
+        lines.append(stop)
+        return
+    seen_visible = seen_visible or bool(kind & 1)
+    if kind & 4:
+        lines += [f"{indent}if choices:", "    " + stop]
+    if fused._blocks[pc] is None:
+        lines.append(f"{indent}_fallback()")
+    elif budget[0] <= 0:
+        lines.append(f"{indent}return _run({pc}, store, locals_, cx, _kinds, {seen_visible}, "
+                     "spans)")
+    else:
+        _path(lines, fused, pc, seen_visible, indent, budget)
+
+
+def _targets(instruction) -> tuple:
+    """The pcs the block of ``instruction`` may set, distinct, in a fixed order."""
+    kind = type(instruction)
+    if kind is Jump:
+        found = (instruction.target,)
+    elif kind is Branch:
+        found = (instruction.target_true, instruction.target_false)
+    elif kind is Action:
+        found = (instruction.next,)
+    elif kind is ForInit:
+        found = (instruction.next, instruction.exit)
+    elif kind is ForNext:
+        found = (instruction.body, instruction.exit)
+    else:
+        found = tuple(target for _, target in instruction.cases) + (instruction.default,)
+    return tuple(dict.fromkeys(found))
 
 
 def _block(pc: int, instruction) -> Optional[list[str]]:
@@ -283,28 +361,26 @@ def _fused_steps(program, state: State, config: CheckConfig, labelled: bool):
     pc = frame[1]
     if not fused.starts[pc]:
         return None
-    run = fused.run
-    kinds = fused.kinds
-    seen_visible = fused.first_visible[pc]
-    io = state[2]
-    lazy = config.lazy_inputs
-    store = state[1]
-    locals_ = frame[2]
+    enter = fused.entries[pc]
+    if enter is None:
+        enter = fused.entry(pc)
+    routine, _, locals_, _, error_pc, _, receiver = frame
+    _, store, io, robot, interrupts, errno, intno, status, fault, clock, tasks = state
     below = frames[:-1]
-    head = frame[0]
-    tail = frame[3:]
-    rest = state[2:]
+    lazy = config.lazy_inputs
     result = []
     script = []
     try:
         while script is not None:
             choices = []
             sizes = []
-            after, new_store, new_locals, spans = run(
-                pc, store, locals_, [io, lazy, None, choices, script, sizes], kinds,
-                seen_visible)
-            new_frame = _new_tuple(Frame, (head, after, new_locals) + tail)
-            new_state = _new_tuple(State, (below + (new_frame,), new_store) + rest)
+            spans = []
+            after, new_store, new_locals = enter(
+                store, locals_, [io, lazy, None, choices, script, sizes], spans)
+            new_frame = _new_tuple(Frame, (routine, after, new_locals, 0, error_pc, 0, receiver))
+            new_state = _new_tuple(State, (below + (new_frame,) if below else (new_frame,),
+                                           new_store, io, robot, interrupts, errno, intno,
+                                           status, fault, clock, tasks))
             if labelled:
                 span = spans[0] if len(spans) == 1 else tuple(spans)
                 new_state = _new_tuple(Transition, (tuple(choices), span, new_state, "", False))
