@@ -44,9 +44,10 @@ class Fallback(Exception):
 
 def _read(cx: list, index: int):
     """A signal's value; a free input chosen where read is chosen once per instruction
-    (``cx``: signals, lazy inputs, this instruction's choices, the transition's
-    choices, the script, the domain sizes met; as ``InputView`` and ``ScriptChooser``).
-    Signal data not bound to a signal (a negative index) raises, as ``read_signal``."""
+    (``cx``: signals, lazy inputs, this instruction's choices, the domain sizes of the
+    transition's choices, the script, and the transition's choices as (name, value) or
+    None when not wanted; as ``InputView`` and ``ScriptChooser``).  Signal data not
+    bound to a signal (a negative index) raises, as ``read_signal``."""
     if index < 0:
         read_signal(None, index)
     entry = cx[1].get(index)
@@ -56,13 +57,14 @@ def _read(cx: list, index: int):
     value = chosen.get(index)
     if value is None:
         name, domain = entry
-        choices = cx[3]
+        sizes = cx[3]
         script = cx[4]
-        position = len(choices)
-        cx[5].append(len(domain))
+        position = len(sizes)
+        sizes.append(len(domain))
         value = domain[script[position]] if position < len(script) else domain[0]
-        choices.append((name, value))
         chosen[index] = value
+        if cx[5] is not None:
+            cx[5].append((name, value))
     return value
 
 
@@ -104,7 +106,7 @@ class FusedRoutine:
 
     def entry(self, pc: int):
         """``enter(store, locals_, cx, spans) -> (pc, store, locals_)``: ``run`` from ``pc``."""
-        lines = ["def enter(store, locals_, cx, spans):", "    choices = cx[3]"]
+        lines = ["def enter(store, locals_, cx, spans):", "    made = cx[3]"]
         _path(lines, self, pc, bool(self.first_visible[pc]), "    ", [ENTRY_LINES])
         names = dict(self._names, _run=self.run, _kinds=self.kinds)
         exec(compile("\n".join(lines) + "\n", f"<fused {self._name} from {pc}>", "exec"), names)
@@ -125,7 +127,7 @@ def fused_routine(routine, entry: Optional[tuple]) -> Optional[FusedRoutine]:
         if blocks[pc] is not None:
             names.update(_names(instruction))
     lines = ["def run(pc, store, locals_, cx, kinds, seen_visible, spans):",
-             "    choices = cx[3]",
+             "    made = cx[3]",
              "    while True:"]
     _dispatch(lines, blocks, 0, len(code), "        ")
     lines += ["        kind = kinds[pc]",
@@ -135,7 +137,7 @@ def fused_routine(routine, entry: Optional[tuple]) -> Optional[FusedRoutine]:
               "            if seen_visible:",
               "                break",
               "            seen_visible = True",
-              "        if kind & 4 and choices:",
+              "        if kind & 4 and made:",
               "            break",
               "    return pc, store, locals_"]
     namespace = dict(names)
@@ -178,7 +180,7 @@ def _go_on(lines: list, fused: FusedRoutine, pc: int, seen_visible: bool, indent
         return
     seen_visible = seen_visible or bool(kind & 1)
     if kind & 4:
-        lines += [f"{indent}if choices:", "    " + stop]
+        lines += [f"{indent}if made:", "    " + stop]
     if fused._blocks[pc] is None:
         lines.append(f"{indent}_fallback()")
     elif budget[0] <= 0:
@@ -370,13 +372,16 @@ def _fused_steps(program, state: State, config: CheckConfig, labelled: bool):
     lazy = config.lazy_inputs
     result = []
     script = []
+    choices = None
+    spans = []                          # (only read when ``labelled``)
     try:
         while script is not None:
-            choices = []
             sizes = []
-            spans = []
+            if labelled:
+                choices = []
+                spans = []
             after, new_store, new_locals = enter(
-                store, locals_, [io, lazy, None, choices, script, sizes], spans)
+                store, locals_, [io, lazy, None, sizes, script, choices], spans)
             new_frame = _new_tuple(Frame, (routine, after, new_locals, 0, error_pc, 0, receiver))
             new_state = _new_tuple(State, (below + (new_frame,) if below else (new_frame,),
                                            new_store, io, robot, interrupts, errno, intno,
