@@ -35,7 +35,6 @@ LEAF_SIZE = 4                 # pcs tested one by one at the leaves of the dispa
 MAX_CODE = 4000               # longer routines are not fused (the source would be large)
 ENTRY_LINES = 400             # an entry's paths go on in the dispatch loop after that many lines
 NEVER_JOINS = 3               # reduction.merging's kind NEVER
-MISSING = object()
 
 
 class Fallback(Exception):
@@ -90,10 +89,12 @@ class FusedRoutine:
     needed): the merge kinds of the blocks that can follow are known, so
     their tests and the dispatch are settled when the code is written, and
     only the choices made are tested when it runs.  A path longer than
-    ``ENTRY_LINES`` lines continues in ``run``."""
+    ``ENTRY_LINES`` lines continues in ``run``.  Entries come in two kinds:
+    ``labelled`` ones note the spans executed, the others (for a search that
+    needs only the target states) do not."""
 
-    __slots__ = ("run", "starts", "kinds", "first_visible", "entries", "_blocks", "_code",
-                 "_names", "_name")
+    __slots__ = ("run", "starts", "kinds", "first_visible", "entries", "labelled_entries",
+                 "_blocks", "_code", "_names", "_name")
 
     def __init__(self, run, starts: bytes, kinds: bytes, first_visible: bytes,
                  blocks: list, code: list, names: dict, name: str):
@@ -101,16 +102,22 @@ class FusedRoutine:
         self.starts = starts              # 1 where the instruction has a source
         self.kinds = kinds                # merge kinds per pc (+4: may read a signal)
         self.first_visible = first_visible  # run_merged's seen_visible for a step starting here
-        self.entries: list = [None] * len(code)   # per start pc: enter(store, locals_, cx, spans)
+        # per start pc: enter(store, locals_, cx, spans), made when first needed
+        self.entries: list = [None] * len(code)
+        self.labelled_entries: list = [None] * len(code)
         self._blocks, self._code, self._names, self._name = blocks, code, names, name
 
-    def entry(self, pc: int):
-        """``enter(store, locals_, cx, spans) -> (pc, store, locals_)``: ``run`` from ``pc``."""
+    def entry(self, pc: int, labelled: bool):
+        """``enter(store, locals_, cx, spans) -> (pc, store, locals_)``: ``run`` from ``pc``
+        (the spans executed noted in ``spans`` when ``labelled``)."""
         lines = ["def enter(store, locals_, cx, spans):", "    made = cx[3]"]
         _path(lines, self, pc, bool(self.first_visible[pc]), "    ", [ENTRY_LINES])
+        if not labelled:
+            lines = [line for line in lines if not line.lstrip().startswith("spans.append(")]
         names = dict(self._names, _run=self.run, _kinds=self.kinds)
         exec(compile("\n".join(lines) + "\n", f"<fused {self._name} from {pc}>", "exec"), names)
-        enter = self.entries[pc] = names["enter"]
+        entries = self.labelled_entries if labelled else self.entries
+        enter = entries[pc] = names["enter"]
         return enter
 
 
@@ -167,7 +174,7 @@ def _path(lines: list, fused: FusedRoutine, pc: int, seen_visible: bool, indent:
         lines.append(f"{indent}{'if' if number == 0 else 'elif'} pc == {target}:")
         _go_on(lines, fused, target, seen_visible, indent + "    ", budget)
     lines.append(f"{indent}else:")
-    lines.append(f"{indent}    return _run(pc, store, locals_, cx, _kinds, True, spans)")
+    lines.append(f"{indent}    _fallback()")               # (no other pc is set)
 
 
 def _go_on(lines: list, fused: FusedRoutine, pc: int, seen_visible: bool, indent: str,
@@ -351,23 +358,18 @@ def _fused_steps(program, state: State, config: CheckConfig, labelled: bool):
     frame = frames[-1]
     if frame[3] or frame[5]:
         return None                              # in a handler, or counting RETRYs
-    cached = config.fused
-    if cached is not None and cached[0] is config.merge_points and cached[1] is program:
-        fused = cached[2].get(frame[0], MISSING)
-        if fused is MISSING:
-            fused = _fused(program, config, frame[0])
-    else:
-        fused = _fused(program, config, frame[0])
+    fused = _fused(program, config, frame[0])
     if fused is None:
         return None
     pc = frame[1]
     if not fused.starts[pc]:
         return None
-    enter = fused.entries[pc]
+    enter = (fused.labelled_entries if labelled else fused.entries)[pc]
     if enter is None:
-        enter = fused.entry(pc)
-    routine, _, locals_, _, error_pc, _, receiver = frame
-    _, store, io, robot, interrupts, errno, intno, status, fault, clock, tasks = state
+        enter = fused.entry(pc, labelled)
+    routine, locals_, handling = frame[0], frame[2], frame[3:]
+    store, rest = state[1], state[2:]
+    io = state[2]
     below = frames[:-1]
     lazy = config.lazy_inputs
     result = []
@@ -382,10 +384,9 @@ def _fused_steps(program, state: State, config: CheckConfig, labelled: bool):
                 spans = []
             after, new_store, new_locals = enter(
                 store, locals_, [io, lazy, None, sizes, script, choices], spans)
-            new_frame = _new_tuple(Frame, (routine, after, new_locals, 0, error_pc, 0, receiver))
+            new_frame = _new_tuple(Frame, (routine, after, new_locals) + handling)
             new_state = _new_tuple(State, (below + (new_frame,) if below else (new_frame,),
-                                           new_store, io, robot, interrupts, errno, intno,
-                                           status, fault, clock, tasks))
+                                           new_store) + rest)
             if labelled:
                 span = spans[0] if len(spans) == 1 else tuple(spans)
                 new_state = _new_tuple(Transition, (tuple(choices), span, new_state, "", False))
