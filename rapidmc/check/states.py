@@ -185,9 +185,8 @@ class StateTable:
         """A tuple part whose numbers and strings are the objects other parts hold already."""
         if type(part) is not tuple:
             return part
-        scalars = self._scalars
-        return tuple(scalars.setdefault(x, x) if type(x) is float or type(x) is str else x
-                     for x in part)
+        shared = self._scalars.setdefault
+        return tuple([shared(x, x) if type(x) is float or type(x) is str else x for x in part])
 
     def _grow(self) -> None:
         slots = array("i", [EMPTY]) * (len(self._slots) * 2)
