@@ -30,8 +30,9 @@ def fused_valuation(atoms: list[tuple[int, str, dict]],
     names = dict(HELPERS, RapidError=RapidError, _no_lazy=NO_LAZY_INPUTS, _others=others)
     lines = ["def valuation(state):",
              "    store = state[1]",
-             "    cx = [state[2], _no_lazy, {}, [], [], []]",
              "    bits = 0"]
+    if any("cx" in source for _, source, _ in atoms):     # an atom reads a signal
+        lines.insert(2, "    cx = [state[2], _no_lazy, {}, [], [], None]")
     for bit, source, atom_names in atoms:
         names.update(atom_names)
         lines += ["    try:",

@@ -362,10 +362,10 @@ def _fused_steps(program, state: State, config: CheckConfig, labelled: bool):
     if fused is None:
         return None
     pc = frame[1]
-    if not fused.starts[pc]:
-        return None
     enter = (fused.labelled_entries if labelled else fused.entries)[pc]
     if enter is None:
+        if not fused.starts[pc]:
+            return None
         enter = fused.entry(pc, labelled)
     routine, locals_, handling = frame[0], frame[2], frame[3:]
     store, rest = state[1], state[2:]
