@@ -24,6 +24,7 @@ from .semantics.library.system import format_typed, value_kind
 from .semantics.state import ENDED, FAILED, RUNNING, State
 from .semantics.plain_step import is_plain
 from .semantics.step import CheckConfig, ScriptChooser, initial_states, successors
+from .semantics.fused_step import plain_successor_states
 from .semantics.values import format_num, format_value
 from .semantics.errors import errno_name
 from .reduction import NO_PLAN, Plan
@@ -104,6 +105,15 @@ class RapidSystem:
                 not is_plain(self.program, state, self.config):
             self._shared[state] = result
         return result
+
+    def successor_states(self, state: State) -> list[State]:
+        """The states of ``successors(state)``, in order, without their labels: what the
+        search stores (built faster at plain states, ``plain_successor_states``)."""
+        found = plain_successor_states(self.program, state, self.config)
+        if found is None:
+            return [after for _, after in self.successors(state)]
+        project = self.project
+        return found if project is None else [project(after) for after in found]
 
     # built-in safety checks ------------------------------------------------
     @staticmethod

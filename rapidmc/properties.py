@@ -30,6 +30,7 @@ from typing import Callable, Optional
 from . import ast
 from .diagnostics import (ATOM, DUPLICATE_PROPERTY, FILE_NOT_FOUND, PROPERTY_FILE,
                           UNKNOWN_NAME, Diagnostic, SourceCache, UserError, error)
+from .fused_atoms import fused_valuation
 from .ltl import Formula, parse_formula, to_text
 from .semantics.errors import RapidError
 from .semantics.expressions import Compiled, ExpressionCompiler, constant
@@ -202,9 +203,10 @@ class AtomCompiler:
     def compile(self, atom: str, where: ast.Span) -> Callable:
         return self._compile_atom(atom, where)[0]
 
-    def _compile_atom(self, atom: str, where: ast.Span) -> tuple[Callable, bool]:
-        """The atom's ``fn(machine) -> bool`` and whether it reads only global data and
-        signals (``reads_data_only``)."""
+    def _compile_atom(self, atom: str, where: ast.Span) -> tuple[Callable, bool, Optional[tuple]]:
+        """The atom's ``fn(machine) -> bool``, whether it reads only global data and
+        signals (``reads_data_only``), and for such an atom whose expression has a source
+        (``Compiled.source``) its truth as (Python source, names), else None."""
         expr = parse_atom_expression(atom, where)
         self._note_signals(expr)
         try:
@@ -214,9 +216,11 @@ class AtomCompiler:
             raise UserError([Diagnostic(ATOM, f"atom \"{atom}\": {d.message}", where, notes=notes)
                              for d in exc.diagnostics]) from None
         fn = compiled.fn
+        source = compiled.source
         if compiled.type is NUM and isinstance(expr, ast.NameRef):
             number = fn
             fn = lambda m: number(m) == 1  # noqa: E731  (a signal or num named bare: = 1)
+            source = None if source is None else f"({source}) == 1"
         elif compiled.type is not BOOL:
             raise error(ATOM, f"atom \"{atom}\" is {compiled.type or 'of unknown type'}, not bool "
                         "(write a comparison, e.g. \"x = 1\")", where)
@@ -226,7 +230,10 @@ class AtomCompiler:
                 return bool(fn(m))
             except RapidError:
                 return False
-        return safe, reads_data_only(expr, self.scope)
+        data_only = reads_data_only(expr, self.scope)
+        fused = (source, compiled.names or {}) if data_only and source is not None and \
+            "locals_" not in source else None
+        return safe, data_only, fused
 
     def _operator_notes(self, atom: str, where: ast.Span, diagnostics) -> tuple[str, ...]:
         """For an unknown bare name like ``GFa``: Spot's reading, spaced (``G F a``)."""
@@ -247,31 +254,51 @@ class AtomCompiler:
                   memo: bool = True) -> Callable[[State], int]:
         """``fn(state) -> int``: bit i set when atom i holds.
 
-        The atoms that read only global data and signals (most do) are
-        evaluated once per distinct (global data, signals) pair and remembered
-        (``memo``; up to ``VALUATION_MEMO_SIZE`` pairs): states that differ only in
-        their program counter share the bits.  The others are evaluated in every state.
+        The atoms that read only global data and signals (most do) and have a
+        source are evaluated by one generated function (``fused_atoms``), in
+        every state: that costs less than remembering their bits.  The other
+        atoms that read only global data and signals are evaluated once per
+        distinct (global data, signals) pair and remembered (``memo``; up to
+        ``VALUATION_MEMO_SIZE`` pairs): states that differ only in their
+        program counter share the bits.  The rest are evaluated in every state.
         """
         compiled = [self._compile_atom(atom, spans.get(atom, ast.Span("<formula>", 1, 1)))
                     for atom in atoms]
         program = self.program
         if not memo:
-            return _evaluator(program, [(1 << i, fn) for i, (fn, _) in enumerate(compiled)])
-        on_data = _evaluator(program, [(1 << i, fn) for i, (fn, data) in enumerate(compiled)
-                                       if data])
-        elsewhere = [(1 << i, fn) for i, (fn, data) in enumerate(compiled) if not data]
-        rest = _evaluator(program, elsewhere) if elsewhere else None
-        remembered: dict = {}
+            return _evaluator(program, [(1 << i, fn) for i, (fn, _, _) in enumerate(compiled)])
+        fused = [(1 << i, *source) for i, (_, _, source) in enumerate(compiled)
+                 if source is not None]
+        on_data = [(1 << i, fn) for i, (fn, data, source) in enumerate(compiled)
+                   if data and source is None]
+        elsewhere = [(1 << i, fn) for i, (fn, data, _) in enumerate(compiled) if not data]
+        others = _remembered(_evaluator(program, on_data)) if on_data else None
+        if elsewhere:
+            rest = _evaluator(program, elsewhere)
+            others = rest if others is None else _either(others, rest)
+        if not fused:
+            return others or (lambda state: 0)
+        return fused_valuation(fused, others)
 
-        def valuation(state: State) -> int:
-            key = (state.store, state.io)
-            bits = remembered.get(key)
-            if bits is None:
-                if len(remembered) >= VALUATION_MEMO_SIZE:
-                    remembered.clear()
-                bits = remembered[key] = on_data(state)
-            return bits if rest is None else bits | rest(state)
-        return valuation
+
+def _remembered(evaluate: Callable[[State], int]) -> Callable[[State], int]:
+    """``evaluate`` (of atoms reading only global data and signals) remembered per
+    (global data, signals) pair, up to ``VALUATION_MEMO_SIZE`` pairs."""
+    remembered: dict = {}
+
+    def valuation(state: State) -> int:
+        key = (state.store, state.io)
+        bits = remembered.get(key)
+        if bits is None:
+            if len(remembered) >= VALUATION_MEMO_SIZE:
+                remembered.clear()
+            bits = remembered[key] = evaluate(state)
+        return bits
+    return valuation
+
+
+def _either(first: Callable[[State], int], second: Callable[[State], int]):
+    return lambda state: first(state) | second(state)
 
 
 VALUATION_MEMO_SIZE = 1 << 14

@@ -8,7 +8,8 @@ script run through ``step``).  These tests explore the reachable states of
 programs the way a check does (the reduction plan's projection and merge
 points, or none) and compare, at every state, each driver's transitions
 with the general one's: labels, spans, successor states, output and the
-waiting flag, in order.
+waiting flag, in order.  The states the search stores (``successor_states``,
+without labels) must be those of the transitions, in order.
 
 Programs: the counters family of bench/check.py, generated programs
 (tests/reduction_programs.py, tests/fuzz_programs.py), the data-driven
@@ -27,7 +28,7 @@ from rapidmc import api
 from rapidmc.diagnostics import UserError
 from rapidmc.reduction import ALL, NONE
 from rapidmc.semantics.state import RUNNING
-from rapidmc.semantics.fused_step import fused_successors
+from rapidmc.semantics.fused_step import fused_successor_states, fused_successors
 from rapidmc.semantics.plain_step import is_plain, plain_successors
 from rapidmc.semantics.step import general_successors, successors
 
@@ -64,8 +65,12 @@ def compare_drivers(program, props, reductions, limit: int = STATE_LIMIT) -> tup
             if fast is not None:
                 fused += 1
                 assert_same(fast, reference)
+                assert fused_successor_states(program, state, config) == \
+                    [transition.state for transition in fast]
         if isinstance(reference, str):
             continue                         # a routine rapidmc does not model stops here
+        # what the search stores: the same states, without the labels
+        assert system.successor_states(state) == [after for _, after in system.successors(state)]
         for _, after in system.successors(state):
             if after not in seen:
                 seen[after] = None
@@ -164,30 +169,44 @@ def test_generated_programs_agree(tmp_path, seed, reductions):
 def test_fuzz_programs_agree(tmp_path_factory, program):
     """Records, arrays, every parameter mode, handlers, interrupts, waits, FlexPendant
     reads (programs that fail the static checks are skipped)."""
-    folder = tmp_path_factory.mktemp("fuzz")
+    loaded = load_fuzz_program(tmp_path_factory.mktemp("fuzz"), program)
+    for reductions in (ALL, NONE) if loaded else ():
+        compare_drivers(*loaded, reductions, limit=400)
+
+
+def load_fuzz_program(folder: Path, program):
+    """The linked fuzz program and a property per atom it suggests, or None when it
+    fails the static checks (a static error, not a state graph)."""
     try:
         with contextlib.redirect_stderr(io.StringIO()):
             linked = load(folder, program.text)
             props = formulas(*(f"a{n}: G {atom}" for n, atom in enumerate(program.atoms)))
             api.prepare(linked, props)
     except (UserError, SystemExit):
-        return                               # a static error, not a state graph
-    for reductions in (ALL, NONE):
-        compare_drivers(linked, props, reductions, limit=400)
+        return None
+    return linked, props
 
 
-@pytest.mark.parametrize("case", CHECK_CASES, ids=lambda path: path.name)
-def test_check_cases_agree(case):
+def load_check_case(case: Path):
+    """The program and properties of a data-driven check case (skipped when the case
+    is an input error, not a state graph)."""
     env = next((str(case / name) for name in ("env.mod", "env") if (case / name).is_file()),
                None)
     try:
         with contextlib.redirect_stderr(io.StringIO()):
             program = api.load_program([str(case / "prog.mod")], [env] if env else [])
             props = api.read_properties(str(case / "props.ltl"))
-            for reductions in (ALL, NONE):
-                compare_drivers(program, props, reductions)
+            api.prepare(program, props)
     except (UserError, SystemExit):
         pytest.skip("an input error, not a state graph")
+    return program, props
+
+
+@pytest.mark.parametrize("case", CHECK_CASES, ids=lambda path: path.name)
+def test_check_cases_agree(case):
+    program, props = load_check_case(case)
+    for reductions in (ALL, NONE):
+        compare_drivers(program, props, reductions)
 
 
 @pytest.mark.parametrize("program, env, spec", CASE_STUDIES)

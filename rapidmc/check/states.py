@@ -9,11 +9,11 @@ share the stored data.  The ids of the components after the first
 ``PRIMARY`` ones, which rarely change, are interned once more as one tail
 id, and the first component's id with the tail id as one head id, so a
 stored state is two ints: its head id and the id of its second component
-(a RAPID state: global data, which varies most).  The ids of all states
-lie in one ``array`` and the index from key to state id is an
-open-addressing hash table in another ``array``, so a stored state costs
-a few dozen bytes instead of a Python tuple, a dict entry and an int
-object.  A model without ``split_state`` keeps its states whole in a dict.
+(a RAPID state: global data, which varies most), kept as one 64-bit key.
+The keys of all states lie in one ``array`` and the index from key to
+state id is an open-addressing hash table in another ``array``, so a
+stored state costs a few dozen bytes instead of a Python tuple, a dict
+entry and an int object.  A model without ``split_state`` keeps its states whole in a dict.
 
 ``memory_bytes()`` adds up what the table holds (arrays, component
 tables and the components themselves, estimated from their Python sizes;
@@ -30,6 +30,8 @@ EMPTY = -1
 FIRST_CAPACITY = 1 << 10
 IDENTITY_LIMIT = 1 << 10
 PRIMARY = 2          # components with an id of their own; the others share one tail id
+SECOND_BITS = 32     # a state's key: head id << SECOND_BITS | second component id
+SECOND_MASK = (1 << SECOND_BITS) - 1
 
 
 class StateTable:
@@ -40,7 +42,6 @@ class StateTable:
         self._join = getattr(system, "join_state", None)
         self._whole: dict[Hashable, int] = {}
         self._whole_states: list[Hashable] = []
-        self._width = 0
         self._components: list[dict] = []
         self._values: list[list] = []
         self._identity: list[dict] = []        # per component: id() of a stored part -> its id
@@ -48,12 +49,14 @@ class StateTable:
         self._tails: dict[tuple, int] = {}     # ids of the components after PRIMARY -> tail id
         self._tail_values: list[tuple] = []
         self._tail_parts: list[tuple] = []     # by tail id: the stored parts themselves
-        self._last_tail: tuple | None = None  # the tail parts last looked up, and their id
-        self._last_tail_id = EMPTY
-        self._heads: dict[tuple, int] = {}     # (first component id, tail id) -> head id
-        self._head_values: list[tuple] = []
-        self._ids = array("i")                 # per state: head id, second component id
+        self._last_tail: tuple | None = None  # the tail parts last looked up, their id,
+        self._last_tail_id = EMPTY             # and their heads
+        self._last_heads: dict[int, int] = {}
+        self._heads: list[dict[int, int]] = []  # by tail id: first component id -> head id
+        self._head_values: list[tuple] = []    # by head id: (first component id, tail id)
+        self._keys = array("q")                # per state: head id << 32 | second component id
         self._slots = array("i", [EMPTY]) * FIRST_CAPACITY
+        self._mask = FIRST_CAPACITY - 1
         self._count = 0
 
     def __len__(self) -> int:
@@ -85,43 +88,44 @@ class StateTable:
             self._count += 1
             return state_id, True
         parts = split(state)
-        if not self._width:
-            self._start(len(parts))
         components = self._components
-        first = components[0].get(parts[0])
+        if not components:
+            self._start(len(parts))
+            components = self._components
+        part = parts[0]
+        first = components[0].get(part)
         if first is None:
-            first = self._add_component(0, parts[0])
-        second = components[1].get(parts[1])
+            first = self._add_component(0, part)
+        part = parts[1]
+        second = components[1].get(part)
         if second is None:
-            second = self._add_component(1, parts[1])
+            second = self._add_component(1, part)
         tail = parts[PRIMARY:]
         # the rarely changing parts are most often those of the state interned last
         # (compared element by element: the very same objects compare at once)
         if tail == self._last_tail:
-            tail_id = self._last_tail_id
+            heads = self._last_heads
         else:
-            tail_id = self._tail_id(tail)
-        head_key = (first, tail_id)
-        head = self._heads.get(head_key)
+            heads = self._heads[self._tail_id(tail)]
+        head = heads.get(first)
         if head is None:
-            head = self._heads[head_key] = len(self._head_values)
-            self._head_values.append(head_key)
-        slots, ids = self._slots, self._ids
-        mask = len(slots) - 1
+            head = heads[first] = len(self._head_values)
+            self._head_values.append((first, self._last_tail_id))
+        key = head << SECOND_BITS | second
+        slots, keys, mask = self._slots, self._keys, self._mask
         position = hash((head, second)) & mask
         while True:
             state_id = slots[position]
             if state_id == EMPTY:
                 break
-            if ids[2 * state_id] == head and ids[2 * state_id + 1] == second:
+            if keys[state_id] == key:
                 return state_id, False
             position = (position + 1) & mask
         if not add:
             return EMPTY, True
         state_id = self._count
         slots[position] = state_id
-        ids.append(head)
-        ids.append(second)
+        keys.append(key)
         self._count += 1
         if self._count * 2 > len(slots):
             self._grow()
@@ -130,14 +134,14 @@ class StateTable:
     def __getitem__(self, state_id: int) -> Hashable:
         if self._split is None:
             return self._whole_states[state_id]
-        first, tail_id = self._head_values[self._ids[2 * state_id]]
+        key = self._keys[state_id]
+        first, tail_id = self._head_values[key >> SECOND_BITS]
         values = self._values
-        return self._join((values[0][first], values[1][self._ids[2 * state_id + 1]]) +
+        return self._join((values[0][first], values[1][key & SECOND_MASK]) +
                           self._tail_parts[tail_id])
 
     # -------------------------------------------------------------- internals
     def _start(self, width: int) -> None:
-        self._width = width
         self._components = [{} for _ in range(width)]
         self._values = [[] for _ in range(width)]
         self._identity = [{} for _ in range(width)]
@@ -153,7 +157,8 @@ class StateTable:
         return part_id
 
     def _tail_id(self, tail: tuple) -> int:
-        """The id of the components after PRIMARY, together (remembered as the last tail)."""
+        """The id of the components after PRIMARY, together (remembered as the last tail,
+        with its heads)."""
         ids = []
         for index, part in enumerate(tail, PRIMARY):
             # a rarely changing part handed on unchanged from a stored state is
@@ -169,29 +174,29 @@ class StateTable:
         if tail_id is None:
             tail_id = self._tails[key] = len(self._tail_values)
             self._tail_values.append(key)
+            self._heads.append({})
             self._tail_parts.append(tuple(self._values[index][part_id]
                                           for index, part_id in enumerate(key, PRIMARY)))
         self._last_tail, self._last_tail_id = tail, tail_id
+        self._last_heads = self._heads[tail_id]
         return tail_id
 
     def _shared_scalars(self, part):
         """A tuple part whose numbers and strings are the objects other parts hold already."""
         if type(part) is not tuple:
             return part
-        scalars = self._scalars
-        return tuple(scalars.setdefault(x, x) if type(x) is float or type(x) is str else x
-                     for x in part)
+        shared = self._scalars.setdefault
+        return tuple([shared(x, x) if type(x) is float or type(x) is str else x for x in part])
 
     def _grow(self) -> None:
         slots = array("i", [EMPTY]) * (len(self._slots) * 2)
         mask = len(slots) - 1
-        ids = self._ids
-        for state_id in range(self._count):
-            position = hash((ids[2 * state_id], ids[2 * state_id + 1])) & mask
+        for state_id, key in enumerate(self._keys):
+            position = hash((key >> SECOND_BITS, key & SECOND_MASK)) & mask
             while slots[position] != EMPTY:
                 position = (position + 1) & mask
             slots[position] = state_id
-        self._slots = slots
+        self._slots, self._mask = slots, mask
 
     # ----------------------------------------------------------------- memory
     def memory_bytes(self) -> int:
@@ -204,10 +209,11 @@ class StateTable:
             sum(sys.getsizeof(i) for i in self._identity) + sys.getsizeof(self._scalars) + \
             sys.getsizeof(self._tails) + sum(_size(t) for t in self._tail_values) + \
             sys.getsizeof(self._tail_parts) + sum(sys.getsizeof(t) for t in self._tail_parts) + \
-            sys.getsizeof(self._heads) + sum(_size(h) for h in self._head_values) + \
+            sys.getsizeof(self._heads) + sum(sys.getsizeof(h) for h in self._heads) + \
+            sys.getsizeof(self._head_values) + sum(_size(h) for h in self._head_values) + \
             sum(sys.getsizeof(x) for x in self._scalars)
         components = sum(_component_size(value) for values in self._values for value in values)
-        return (self._ids.buffer_info()[1] * self._ids.itemsize +
+        return (self._keys.buffer_info()[1] * self._keys.itemsize +
                 self._slots.buffer_info()[1] * self._slots.itemsize +
                 tables + components)
 

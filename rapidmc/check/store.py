@@ -41,6 +41,9 @@ class ModelStore:
         self._successor_cache: dict[int, tuple[int, ...]] = {}
         self._fresh: dict[int, Hashable] = {}     # id -> new state, not expanded yet
         self._keep_new = keep_new                  # at most that many (0: none)
+        # the target states of a state's transitions (labels are not needed here)
+        self._targets = getattr(system, "successor_states", None) or \
+            (lambda state: [target for _, target in as_sequence(system.successors(state))])
 
     def __len__(self) -> int:
         return len(self.states)
@@ -83,14 +86,14 @@ class ModelStore:
         state = self._fresh.pop(state_id, None)
         if state is None:
             state = self.states[state_id]
-        successors = as_sequence(self.system.successors(state))
+        successors = self._targets(state)
         if not successors:
             self.deadlocked.add(state_id)
             result: tuple[int, ...] = (state_id,)
         else:
             table_intern, added = self.states.intern, self._added
             ids = []
-            for _, target in successors:
+            for target in successors:
                 target_id, new = table_intern(target)
                 if new:
                     added(target_id, target)

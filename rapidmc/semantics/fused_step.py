@@ -27,11 +27,13 @@ from .choosers import CheckConfig, next_script
 from .errors import RapidError
 from .expressions import read_signal
 from .instructions import Action, Branch, ForInit, ForNext, Jump, TestDispatch
-from .state import Frame, State, Transition
+from .plain_step import is_plain
+from .state import RUNNING, Frame, State, Transition
 
 _new_tuple = tuple.__new__
 LEAF_SIZE = 4                 # pcs tested one by one at the leaves of the dispatch
 MAX_CODE = 4000               # longer routines are not fused (the source would be large)
+ENTRY_LINES = 400             # an entry's paths go on in the dispatch loop after that many lines
 NEVER_JOINS = 3               # reduction.merging's kind NEVER
 
 
@@ -41,9 +43,10 @@ class Fallback(Exception):
 
 def _read(cx: list, index: int):
     """A signal's value; a free input chosen where read is chosen once per instruction
-    (``cx``: signals, lazy inputs, this instruction's choices, the transition's
-    choices, the script, the domain sizes met; as ``InputView`` and ``ScriptChooser``).
-    Signal data not bound to a signal (a negative index) raises, as ``read_signal``."""
+    (``cx``: signals, lazy inputs, this instruction's choices, the domain sizes of the
+    transition's choices, the script, and the transition's choices as (name, value) or
+    None when not wanted; as ``InputView`` and ``ScriptChooser``).  Signal data not
+    bound to a signal (a negative index) raises, as ``read_signal``."""
     if index < 0:
         read_signal(None, index)
     entry = cx[1].get(index)
@@ -53,13 +56,14 @@ def _read(cx: list, index: int):
     value = chosen.get(index)
     if value is None:
         name, domain = entry
-        choices = cx[3]
+        sizes = cx[3]
         script = cx[4]
-        position = len(choices)
-        cx[5].append(len(domain))
+        position = len(sizes)
+        sizes.append(len(domain))
         value = domain[script[position]] if position < len(script) else domain[0]
-        choices.append((name, value))
         chosen[index] = value
+        if cx[5] is not None:
+            cx[5].append((name, value))
     return value
 
 
@@ -77,15 +81,44 @@ HELPERS = {"_read": _read, "_with": _with, "_fallback": _fallback,
 
 
 class FusedRoutine:
-    """One routine's generated step function and the pcs it can start from."""
+    """One routine's generated step functions and the pcs they can start from.
 
-    __slots__ = ("run", "starts", "kinds", "first_visible")
+    ``run`` executes the block at any pc, then the blocks after it as long as
+    they join the step, one dispatch per block.  ``entry(pc)`` is the same run
+    from one start pc written out along the code's paths (made when first
+    needed): the merge kinds of the blocks that can follow are known, so
+    their tests and the dispatch are settled when the code is written, and
+    only the choices made are tested when it runs.  A path longer than
+    ``ENTRY_LINES`` lines continues in ``run``.  Entries come in two kinds:
+    ``labelled`` ones note the spans executed, the others (for a search that
+    needs only the target states) do not."""
 
-    def __init__(self, run, starts: bytes, kinds: bytes, first_visible: bytes):
-        self.run = run                    # run(pc, store, locals_, cx, kinds, seen_visible)
+    __slots__ = ("run", "starts", "kinds", "first_visible", "entries", "labelled_entries",
+                 "_blocks", "_code", "_names", "_name")
+
+    def __init__(self, run, starts: bytes, kinds: bytes, first_visible: bytes,
+                 blocks: list, code: list, names: dict, name: str):
+        self.run = run                    # run(pc, store, locals_, cx, kinds, seen_visible, spans)
         self.starts = starts              # 1 where the instruction has a source
         self.kinds = kinds                # merge kinds per pc (+4: may read a signal)
         self.first_visible = first_visible  # run_merged's seen_visible for a step starting here
+        # per start pc: enter(store, locals_, cx, spans), made when first needed
+        self.entries: list = [None] * len(code)
+        self.labelled_entries: list = [None] * len(code)
+        self._blocks, self._code, self._names, self._name = blocks, code, names, name
+
+    def entry(self, pc: int, labelled: bool):
+        """``enter(store, locals_, cx, spans) -> (pc, store, locals_)``: ``run`` from ``pc``
+        (the spans executed noted in ``spans`` when ``labelled``)."""
+        lines = ["def enter(store, locals_, cx, spans):", "    made = cx[3]"]
+        _path(lines, self, pc, bool(self.first_visible[pc]), "    ", [ENTRY_LINES])
+        if not labelled:
+            lines = [line for line in lines if not line.lstrip().startswith("spans.append(")]
+        names = dict(self._names, _run=self.run, _kinds=self.kinds)
+        exec(compile("\n".join(lines) + "\n", f"<fused {self._name} from {pc}>", "exec"), names)
+        entries = self.labelled_entries if labelled else self.entries
+        enter = entries[pc] = names["enter"]
+        return enter
 
 
 def fused_routine(routine, entry: Optional[tuple]) -> Optional[FusedRoutine]:
@@ -100,9 +133,8 @@ def fused_routine(routine, entry: Optional[tuple]) -> Optional[FusedRoutine]:
         names[f"_s{pc}"] = instruction.span
         if blocks[pc] is not None:
             names.update(_names(instruction))
-    lines = ["def run(pc, store, locals_, cx, kinds, seen_visible):",
-             "    spans = []",
-             "    choices = cx[3]",
+    lines = ["def run(pc, store, locals_, cx, kinds, seen_visible, spans):",
+             "    made = cx[3]",
              "    while True:"]
     _dispatch(lines, blocks, 0, len(code), "        ")
     lines += ["        kind = kinds[pc]",
@@ -112,10 +144,11 @@ def fused_routine(routine, entry: Optional[tuple]) -> Optional[FusedRoutine]:
               "            if seen_visible:",
               "                break",
               "            seen_visible = True",
-              "        if kind & 4 and choices:",
+              "        if kind & 4 and made:",
               "            break",
-              "    return pc, store, locals_, spans"]
-    exec(compile("\n".join(lines) + "\n", f"<fused {routine.name}>", "exec"), names)
+              "    return pc, store, locals_"]
+    namespace = dict(names)
+    exec(compile("\n".join(lines) + "\n", f"<fused {routine.name}>", "exec"), namespace)
     if entry is None:
         kinds = bytes([NEVER_JOINS]) * len(code)
         first_visible = bytes([1]) * len(code)
@@ -123,7 +156,63 @@ def fused_routine(routine, entry: Optional[tuple]) -> Optional[FusedRoutine]:
         kinds = entry[0]
         first_visible = bytes(1 if kind & 3 in (1, 3) else 0 for kind in kinds)
     starts = bytes(1 if block is not None else 0 for block in blocks)
-    return FusedRoutine(names["run"], starts, kinds, first_visible)
+    return FusedRoutine(namespace["run"], starts, kinds, first_visible, blocks, code, names,
+                        routine.name)
+
+
+def _path(lines: list, fused: FusedRoutine, pc: int, seen_visible: bool, indent: str,
+          budget: list) -> None:
+    """The block at ``pc``, then for each pc it may go on to, what ``run`` does there
+    (its tests of the merge kinds settled here: ``seen_visible`` is known)."""
+    budget[0] -= len(fused._blocks[pc])
+    lines.extend(indent + line for line in fused._blocks[pc])
+    targets = _targets(fused._code[pc])
+    if len(targets) == 1:
+        _go_on(lines, fused, targets[0], seen_visible, indent, budget)
+        return
+    for number, target in enumerate(targets):
+        lines.append(f"{indent}{'if' if number == 0 else 'elif'} pc == {target}:")
+        _go_on(lines, fused, target, seen_visible, indent + "    ", budget)
+    lines.append(f"{indent}else:")
+    lines.append(f"{indent}    _fallback()")               # (no other pc is set)
+
+
+def _go_on(lines: list, fused: FusedRoutine, pc: int, seen_visible: bool, indent: str,
+           budget: list) -> None:
+    """After a block, at ``pc``: stop, or run the block there (as ``run`` decides)."""
+    kind = fused.kinds[pc]
+    stop = f"{indent}return {pc}, store, locals_"
+    if kind & 2 or kind & 1 and seen_visible:
+        lines.append(stop)
+        return
+    seen_visible = seen_visible or bool(kind & 1)
+    if kind & 4:
+        lines += [f"{indent}if made:", "    " + stop]
+    if fused._blocks[pc] is None:
+        lines.append(f"{indent}_fallback()")
+    elif budget[0] <= 0:
+        lines.append(f"{indent}return _run({pc}, store, locals_, cx, _kinds, {seen_visible}, "
+                     "spans)")
+    else:
+        _path(lines, fused, pc, seen_visible, indent, budget)
+
+
+def _targets(instruction) -> tuple:
+    """The pcs the block of ``instruction`` may set, distinct, in a fixed order."""
+    kind = type(instruction)
+    if kind is Jump:
+        found = (instruction.target,)
+    elif kind is Branch:
+        found = (instruction.target_true, instruction.target_false)
+    elif kind is Action:
+        found = (instruction.next,)
+    elif kind is ForInit:
+        found = (instruction.next, instruction.exit)
+    elif kind is ForNext:
+        found = (instruction.body, instruction.exit)
+    else:
+        found = tuple(target for _, target in instruction.cases) + (instruction.default,)
+    return tuple(dict.fromkeys(found))
 
 
 def _block(pc: int, instruction) -> Optional[list[str]]:
@@ -244,6 +333,27 @@ def _fused(program, config: CheckConfig, routine: int) -> Optional[FusedRoutine]
 def fused_successors(program, state: State, config: CheckConfig) -> Optional[list[Transition]]:
     """The transitions of a plain state (``plain_step.is_plain``) through its routine's
     fused function, or None when the step needs the general machinery."""
+    return _fused_steps(program, state, config, True)
+
+
+def fused_successor_states(program, state: State, config: CheckConfig) -> Optional[list[State]]:
+    """The target states of ``fused_successors``, in its order, without building the
+    transitions (labels, spans) around them; None when it is None."""
+    return _fused_steps(program, state, config, False)
+
+
+def plain_successor_states(program, state: State, config: CheckConfig) -> Optional[list[State]]:
+    """The target states of ``step.successors`` at a running plain state the fused step
+    takes, in order, for a search that needs nothing else (labels are needed only to
+    rebuild a counterexample, which asks ``step.successors``); None at any other state."""
+    if state[7] != RUNNING or not is_plain(program, state, config):
+        return None
+    return _fused_steps(program, state, config, False)
+
+
+def _fused_steps(program, state: State, config: CheckConfig, labelled: bool):
+    """``fused_successors`` (``labelled``) or ``fused_successor_states``: one loop over
+    the choice scripts, each running the routine's fused function once."""
     frames = state[0]
     frame = frames[-1]
     if frame[3] or frame[5]:
@@ -252,33 +362,42 @@ def fused_successors(program, state: State, config: CheckConfig) -> Optional[lis
     if fused is None:
         return None
     pc = frame[1]
-    if not fused.starts[pc]:
-        return None
-    run = fused.run
-    kinds = fused.kinds
-    seen_visible = fused.first_visible[pc]
+    enter = (fused.labelled_entries if labelled else fused.entries)[pc]
+    if enter is None:
+        if not fused.starts[pc]:
+            return None
+        enter = fused.entry(pc, labelled)
+    routine, locals_, handling = frame[0], frame[2], frame[3:]
+    store, rest = state[1], state[2:]
     io = state[2]
-    lazy = config.lazy_inputs
-    store = state[1]
-    locals_ = frame[2]
     below = frames[:-1]
-    head = frame[0]
-    tail = frame[3:]
-    rest = state[2:]
+    lazy = config.lazy_inputs
     result = []
     script = []
+    choices = None
+    spans = []                          # (only read when ``labelled``)
     try:
         while script is not None:
-            choices = []
             sizes = []
-            after, new_store, new_locals, spans = run(
-                pc, store, locals_, [io, lazy, None, choices, script, sizes], kinds,
-                seen_visible)
-            new_frame = _new_tuple(Frame, (head, after, new_locals) + tail)
-            new_state = _new_tuple(State, (below + (new_frame,), new_store) + rest)
-            span = spans[0] if len(spans) == 1 else tuple(spans)
-            result.append(_new_tuple(Transition, (tuple(choices), span, new_state, "", False)))
-            script = next_script(script, sizes) if sizes else None
+            if labelled:
+                choices = []
+                spans = []
+            after, new_store, new_locals = enter(
+                store, locals_, [io, lazy, None, sizes, script, choices], spans)
+            new_frame = _new_tuple(Frame, (routine, after, new_locals) + handling)
+            new_state = _new_tuple(State, (below + (new_frame,) if below else (new_frame,),
+                                           new_store) + rest)
+            if labelled:
+                span = spans[0] if len(spans) == 1 else tuple(spans)
+                new_state = _new_tuple(Transition, (tuple(choices), span, new_state, "", False))
+            result.append(new_state)
+            if not sizes:
+                break
+            if len(sizes) == 1:                  # one choice (the usual): its next value
+                following = script[0] + 1 if script else 1
+                script = [following] if following < sizes[0] else None
+            else:
+                script = next_script(script, sizes)
     except (RapidError, Fallback):
         return None
     return result

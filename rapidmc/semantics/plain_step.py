@@ -27,10 +27,10 @@ MERGED_STEP_LIMIT = 10_000
 
 def is_plain(program, state: State, config: CheckConfig) -> bool:
     """Whether ``plain_successors`` may stand in for the general driver at ``state``."""
-    if state.tasks or config.free_inputs or program.environment_react is not None:
-        return False
-    interrupts = state.interrupts
-    return not (interrupts.table or interrupts.pending or interrupts.scheduled)
+    if state[10] or config.free_inputs or program.environment_react is not None:
+        return False                     # tasks, stored inputs, an environment reaction
+    interrupts = state[4]                # (table, pending, enabled, scheduled)
+    return not (interrupts[0] or interrupts[1] or interrupts[3])
 
 
 def plain_successors(program, state: State, config: CheckConfig) -> list[Transition]:
