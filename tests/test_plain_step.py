@@ -188,8 +188,9 @@ def load_fuzz_program(folder: Path, program):
 
 
 def load_check_case(case: Path):
-    """The program and properties of a data-driven check case (skipped when the case
-    is an input error, not a state graph)."""
+    """The program and properties of a data-driven check case (skipped when it loads only
+    with the options of its ``args`` file, e.g. ``--input-domain``, which this loader
+    does not read)."""
     env = next((str(case / name) for name in ("env.mod", "env") if (case / name).is_file()),
                None)
     try:
@@ -198,7 +199,7 @@ def load_check_case(case: Path):
             props = api.read_properties(str(case / "props.ltl"))
             api.prepare(program, props)
     except (UserError, SystemExit):
-        pytest.skip("an input error, not a state graph")
+        pytest.skip("loads only with the options of its args file")
     return program, props
 
 

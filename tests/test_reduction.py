@@ -29,10 +29,11 @@ from rapidmc.syntax import parse_text
 
 from fuzz_programs import programs
 from reduction_programs import properties, random_program
+from test_check_cases import verdict_cases
 
 ROOT = Path(__file__).resolve().parent.parent
-CHECK_CASES = sorted(path for path in (ROOT / "tests" / "check").iterdir()
-                     if (path / "prog.mod").exists() and (path / "props.ltl").exists())
+# the data-driven cases that expect verdicts (not input errors) and have a property file
+CHECK_CASES = [case.folder for case in verdict_cases() if (case.folder / "props.ltl").is_file()]
 UNKNOWN = "UNKNOWN"
 
 
