@@ -115,6 +115,7 @@ class CheckConfig:
         self._merge_table = None         # (merge_points, program, table): see merge_table
         self.fused = None                # (merge_points, program, routines): fused_step's
         self._unmerged = None            # (merge_points, copy without them): see unmerged
+        self.view_steps = None           # staged_step's remembered steps (ViewSteps)
         # every combination of free input values, in the order the chooser enumerates them
         self.input_valuations = tuple(itertools.product(*(d for _, _, d in free)))
         # per valuation: pvector.mset arguments and the label part naming the values
@@ -134,7 +135,7 @@ class CheckConfig:
         if cached is None or cached[0] is not self.merge_points:
             plain = copy.copy(self)
             plain.merge_points = {}
-            plain._merge_table = plain.fused = plain._unmerged = None
+            plain._merge_table = plain.fused = plain._unmerged = plain.view_steps = None
             cached = self._unmerged = (self.merge_points, plain)
         return cached[1]
 

@@ -55,37 +55,86 @@ def is_staged(program, state: State, config: CheckConfig) -> bool:
 def staged_successors(program, state: State, config: CheckConfig) -> Optional[list]:
     """Every transition from ``state`` (``is_staged``), in the general driver's order;
     None when a transition would go on with a merged run (the general driver's case)."""
-    stacks = (state[0],) + state[10]
+    tasks = state[10]
+    stacks = (state[0],) + tasks
     runnable = [i for i, stack in enumerate(stacks) if stack]
     if not runnable:
         return None
     names = program.task_names
     several = len(runnable) > 1
-    inner = config.unmerged()
+    steps = view_steps(program, config)
     interrupts = state[4]
-    serves_interrupts = bool(interrupts[0] or interrupts[3] or interrupts[1])
+    plan = None
+    if runnable[0] == 0 and (interrupts[0] or interrupts[3] or interrupts[1]):
+        plan = _main_plan(program, state, steps.timer_choices(interrupts))
+    inputs = steps.input_values(state[2])
+    ready = steps.input_values(state[2], interrupts[3]) if plan and interrupts[3] else inputs
     result = []
-    for assignments, input_label in zip(config.input_assignments, config.input_labels):
-        io = state[2].mset(*assignments) if assignments else state[2]
+    for io, ready_io, input_label in zip(inputs, ready, config.input_labels):
         for task in runnable:
             label = input_label + (("task", names[task]),) if several else input_label
-            if task == 0 and serves_interrupts:
-                for timers_label, ready in _timer_choices(io, interrupts):
-                    _main_step(program, state, label + timers_label, ready, inner, result)
-            else:
-                view = _new_tuple(State, (stacks[task], state[1], io) + state[3:10] + ((),))
-                for transition in _instruction_successors(program, view, inner):
-                    result.append(_in_task(state, stacks, task, label, transition))
-    if not state[10] and config.merge_points and _may_merge(result):
+            if plan is not None and task == 0:
+                _main_steps(state, label, ready_io, plan, steps, result)
+                continue
+            view = _new_tuple(State, (stacks[task], state[1], io) + state[3:10] + ((),))
+            for transition in steps(view):
+                result.append(_in_task(state, stacks, task, label, transition))
+    if not tasks and config.merge_points and _may_merge(result):
         return None
-    if state[10]:
+    if tasks:
         result = idle_steps_dropped(state, result)
     return result
 
 
-def _instruction_successors(program, view: State, config: CheckConfig) -> list:
-    fused = fused_successors(program, view, config)
-    return fused if fused is not None else plain_successors(program, view, config)
+class ViewSteps:
+    """What the steps from one state share: the one-task views' transitions (through
+    the plain drivers, without merge points), the signal vector after each input
+    valuation and the timers' combinations."""
+
+    def __init__(self, program, owner: CheckConfig):
+        self.program = program
+        self.owner = owner
+        self.config = owner.unmerged()   # without merge points: one instruction per step
+
+    def __call__(self, view: State) -> list:
+        fused = fused_successors(self.program, view, self.config)
+        return fused if fused is not None else \
+            plain_successors(self.program, view, self.config)
+
+    def input_values(self, io, scheduled: tuple = ()) -> list:
+        """The signal vector after each valuation of the stored free inputs, in the
+        general order, then the delayed signal changes ``scheduled`` (the main task's
+        step with interrupts: time is abstract, they happen now)."""
+        values = []
+        for assignments in self.config.input_assignments:
+            changed = io.mset(*assignments) if assignments else io
+            for _, index, value in scheduled:
+                changed = changed.set(index, value)
+            values.append(changed)
+        return values
+
+    @staticmethod
+    def timer_choices(interrupts: Interrupts) -> list:
+        """(label, interrupts) per combination of timers firing, in the general order
+        (each active timer not pending may fire, False before True), delayed signal
+        changes done."""
+        ready = interrupts._replace(scheduled=()) if interrupts[3] else interrupts
+        found = []
+        if ready[0]:
+            _fire(ready[0], 0, ready[1], (), found)
+        else:
+            found.append(((), ready[1]))
+        return [(label, ready if pending is ready[1] else ready._replace(pending=pending))
+                for label, pending in found]
+
+
+def view_steps(program, config: CheckConfig) -> ViewSteps:
+    """The ``ViewSteps`` of this configuration and program (made when first needed; a
+    copy of the configuration makes its own)."""
+    steps = config.view_steps
+    if steps is None or steps.owner is not config or steps.program is not program:
+        steps = config.view_steps = ViewSteps(program, config)
+    return steps
 
 
 def _in_task(state: State, stacks: tuple, task: int, label: tuple,
@@ -120,23 +169,6 @@ def _may_merge(transitions: list) -> bool:
 # The main task's step with interrupts
 # ---------------------------------------------------------------------------
 
-def _timer_choices(io, interrupts: Interrupts):
-    """(label, (io, interrupts)) per combination of timers firing, in the general order:
-    delayed signal changes happen first (time is abstract), then each active timer not
-    pending may fire (False before True)."""
-    scheduled = interrupts[3]
-    if scheduled:
-        for _, index, value in scheduled:
-            io = io.set(index, value)
-        interrupts = interrupts._replace(scheduled=())
-    if not interrupts[0]:
-        return [((), (io, interrupts))]
-    found = []
-    _fire(interrupts[0], 0, interrupts[1], (), found)
-    return [(label, (io, interrupts._replace(pending=pending) if pending is not interrupts[1]
-                     else interrupts)) for label, pending in found]
-
-
 def _fire(table: tuple, start: int, pending: tuple, label: tuple, found: list) -> None:
     for position in range(start, len(table)):
         entry = table[position]
@@ -149,42 +181,63 @@ def _fire(table: tuple, start: int, pending: tuple, label: tuple, found: list) -
     found.append((label, pending))
 
 
-def _main_step(program, state: State, label: tuple, ready: tuple, config: CheckConfig,
-               result: list) -> None:
-    """The main task's step from the timers' combination ``ready`` (io, interrupts): a
-    pending TRAP starts, or the instruction runs; then signal edges."""
-    io, interrupts = ready
+def _main_plan(program, state: State, choices: list) -> list:
+    """Per combination of timers: (label, interrupts, None) when the instruction runs,
+    or (label, interrupts, (frames, INTNO, span)) when a pending TRAP starts instead."""
     frames = state[0]
-    pending = interrupts[1]
-    if pending and interrupts[2] and not in_trap(program, frames):
-        number = pending[0]
-        interrupts = interrupts._replace(pending=pending[1:])
-        entry = next((e for e in interrupts[0] if e[0] == number), None)
-        if entry is not None:
-            trap = program.routines[entry[1]]
-            source = entry[2]
-            if source and source[-1] is True and source[0] != "pers":
-                interrupts = interrupts._replace(table=deactivated(interrupts[0], number))
-            after = _new_tuple(State, (frames + (Frame(trap.index, 0, trap.initial_locals),),
-                                       state[1], io, state[3], interrupts, state[5],
-                                       float(number)) + state[7:])
-            after = _with_edges(after, state[2])
-            result.append(_new_tuple(Transition, (label, trap.span, after, "", False)))
-            return
-    stacks = (frames,) + state[10]
-    view = _new_tuple(State, (frames, state[1], io, state[3], interrupts) + state[5:10] + ((),))
-    for transition in _instruction_successors(program, view, config):
-        transition = _in_task(state, stacks, 0, label, transition)
-        after = _with_edges(transition[2], state[2])
-        if after is not transition[2]:
-            transition = transition._replace(state=after)
-        result.append(transition)
+    plan = []
+    may_trap = None
+    for label, interrupts in choices:
+        pending = interrupts[1]
+        if pending and interrupts[2]:
+            if may_trap is None:
+                may_trap = not in_trap(program, frames)
+            if may_trap:
+                number = pending[0]
+                interrupts = interrupts._replace(pending=pending[1:])
+                entry = next((e for e in interrupts[0] if e[0] == number), None)
+                if entry is not None:
+                    trap = program.routines[entry[1]]
+                    source = entry[2]
+                    if source and source[-1] is True and source[0] != "pers":
+                        interrupts = interrupts._replace(
+                            table=deactivated(interrupts[0], number))
+                    entered = frames + (Frame(trap.index, 0, trap.initial_locals),)
+                    plan.append((label, interrupts, (entered, float(number), trap.span)))
+                    continue
+        plan.append((label, interrupts, None))
+    return plan
+
+
+def _main_steps(state: State, label: tuple, io, plan: list, steps: ViewSteps,
+                result: list) -> None:
+    """The main task's steps from signal values ``io`` (inputs set, delayed changes
+    done), one per ``plan`` entry: a TRAP starts or the instruction runs; then the
+    signal edges since ``state`` order their interrupts."""
+    before = state[2]
+    stacks = (state[0],) + state[10]
+    for timers_label, interrupts, trap in plan:
+        if trap is not None:
+            entered, number, span = trap
+            after = _new_tuple(State, (entered, state[1], io, state[3], interrupts, state[5],
+                                       number) + state[7:])
+            result.append(_new_tuple(Transition, (label + timers_label, span,
+                                                  _with_edges(after, before), "", False)))
+            continue
+        view = _new_tuple(State, (state[0], state[1], io, state[3], interrupts) +
+                          state[5:10] + ((),))
+        for transition in steps(view):
+            transition = _in_task(state, stacks, 0, label + timers_label, transition)
+            after = _with_edges(transition[2], before)
+            if after is not transition[2]:
+                transition = transition._replace(state=after)
+            result.append(transition)
 
 
 def _with_edges(after: State, before) -> State:
     """``after`` with the interrupts its signal changes since ``before`` order pending."""
     interrupts = after[4]
-    if not interrupts[0] or after[2] == before:
+    if not interrupts[0] or after[2] is before or after[2] == before:
         return after
     signalled = signal_edges_pending(interrupts, before, after[2])
     if signalled is interrupts:
