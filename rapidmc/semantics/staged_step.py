@@ -60,8 +60,6 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
     runnable = [i for i, stack in enumerate(stacks) if stack]
     if not runnable:
         return None
-    names = program.task_names
-    several = len(runnable) > 1
     steps = view_steps(program, config)
     interrupts = state[4]
     plan = None
@@ -69,16 +67,24 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
         plan = _main_plan(program, state, steps.timer_choices(interrupts))
     inputs = steps.input_values(state[2])
     ready = steps.input_values(state[2], interrupts[3]) if plan and interrupts[3] else inputs
+    if len(runnable) > 1:
+        names = program.task_names
+        task_labels = [(("task", names[task]),) for task in runnable]
+    else:
+        task_labels = [()]
+    rest = state[3:10] + ((),)
+    shared: dict = {}
     result = []
+    append = result.append
     for io, ready_io, input_label in zip(inputs, ready, config.input_labels):
-        for task in runnable:
-            label = input_label + (("task", names[task]),) if several else input_label
+        for task, task_label in zip(runnable, task_labels):
+            label = input_label + task_label
             if plan is not None and task == 0:
-                _main_steps(state, label, ready_io, plan, steps, result)
+                _main_steps(state, label, ready_io, plan, steps, shared, result)
                 continue
-            view = _new_tuple(State, (stacks[task], state[1], io) + state[3:10] + ((),))
-            for transition in steps(view):
-                result.append(_in_task(state, stacks, task, label, transition))
+            view = _new_tuple(State, (stacks[task], state[1], io) + rest)
+            for transition in steps(view, task, shared):
+                append(_in_task(state, task, label, transition))
     if not tasks and config.merge_points and _may_merge(result):
         return None
     if tasks:
@@ -87,19 +93,32 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
 
 
 class ViewSteps:
-    """What the steps from one state share: the one-task views' transitions (through
-    the plain drivers, without merge points), the signal vector after each input
-    valuation and the timers' combinations."""
+    """The instruction's transitions from one-task views (through the plain drivers,
+    without merge points), and what the views of one state share: the signal vector
+    after each input valuation, the timers' combinations."""
 
     def __init__(self, program, owner: CheckConfig):
         self.program = program
         self.owner = owner
         self.config = owner.unmerged()   # without merge points: one instruction per step
 
-    def __call__(self, view: State) -> list:
-        fused = fused_successors(self.program, view, self.config)
-        return fused if fused is not None else \
-            plain_successors(self.program, view, self.config)
+    def __call__(self, view: State, task: int, shared: dict) -> list:
+        """The instruction's transitions from ``view``, a view of ``task``.  ``shared``
+        (one dict per state) keeps per task the transitions every other view of that
+        task in the state has too, but for its signals and interrupts (``_shareable``)."""
+        template = shared.get(task)
+        if template is not None:
+            io, interrupts = view[2], view[4]
+            return [_new_tuple(Transition, (t[0], t[1], _new_tuple(
+                State, t[2][:2] + (io, t[2][3], interrupts) + t[2][5:])) + t[3:])
+                for t in template]
+        program = self.program
+        transitions = fused_successors(program, view, self.config)
+        if transitions is None:
+            transitions = plain_successors(program, view, self.config)
+        if task not in shared:
+            shared[task] = _shareable(program, view, transitions)
+        return transitions
 
     def input_values(self, io, scheduled: tuple = ()) -> list:
         """The signal vector after each valuation of the stored free inputs, in the
@@ -128,6 +147,29 @@ class ViewSteps:
                 for label, pending in found]
 
 
+def _shareable(program, view: State, transitions: list) -> Optional[list]:
+    """``transitions`` when the other views of the task in this state have the same but
+    for their own signals and interrupts; else None.
+
+    The views of one task in one state differ only in signal values (the input
+    valuation, delayed changes) and in the pending interrupts (timers that fired, a
+    TRAP that was not found).  An instruction that reads no signal (``reads_io``:
+    the general driver's ``_successors_inputs_after`` relies on it too) and leaves
+    signals and interrupts as they were (the very same objects) has read no pending
+    interrupt either: IDelete and ISleep, which read them, always write a new
+    interrupts value.  Its transitions from any of those views are then the same
+    but for those two parts."""
+    frame = view[0][-1]
+    if program.routines[frame[0]].code[frame[1]].reads_io:
+        return None
+    io, interrupts = view[2], view[4]
+    for transition in transitions:
+        after = transition[2]
+        if after[2] is not io or after[4] is not interrupts:
+            return None
+    return transitions
+
+
 def view_steps(program, config: CheckConfig) -> ViewSteps:
     """The ``ViewSteps`` of this configuration and program (made when first needed; a
     copy of the configuration makes its own)."""
@@ -137,19 +179,22 @@ def view_steps(program, config: CheckConfig) -> ViewSteps:
     return steps
 
 
-def _in_task(state: State, stacks: tuple, task: int, label: tuple,
-             transition: Transition) -> Transition:
-    """The transition of the one-task view ``transition`` as a step of ``task`` in
-    ``state``: its stack back among the others, a task that ended leaving the others
-    running (an uncaught error stops every task: nothing to put back)."""
+def _in_task(state: State, task: int, label: tuple, transition: Transition) -> Transition:
+    """The transition of a one-task view as a step of ``task`` in ``state``: its stack
+    back among the others' (a task that ended leaves the others running; an uncaught
+    error stops every task: nothing to put back), ``label`` before the view's."""
     after = transition[2]
-    if after[7] != FAILED and state[10]:
-        stacks = stacks[:task] + (after[0],) + stacks[task + 1:]
+    tasks = state[10]
+    if tasks and after[7] != FAILED:
+        if task:
+            tasks = tasks[:task - 1] + (after[0],) + tasks[task:]
+            head = (state[0],) + after[1:7]
+        else:
+            head = after[:7]
         status = after[7]
-        if status == ENDED and any(stacks):
+        if status == ENDED and (head[0] or any(tasks)):
             status = RUNNING
-        after = _new_tuple(State, (stacks[0],) + after[1:7] + (status,) + after[8:10] +
-                           (stacks[1:],))
+        after = _new_tuple(State, head + (status,) + after[8:10] + (tasks,))
     return _new_tuple(Transition, (label + transition[0], transition[1], after) +
                       transition[3:])
 
@@ -210,12 +255,11 @@ def _main_plan(program, state: State, choices: list) -> list:
 
 
 def _main_steps(state: State, label: tuple, io, plan: list, steps: ViewSteps,
-                result: list) -> None:
+                shared: dict, result: list) -> None:
     """The main task's steps from signal values ``io`` (inputs set, delayed changes
     done), one per ``plan`` entry: a TRAP starts or the instruction runs; then the
     signal edges since ``state`` order their interrupts."""
     before = state[2]
-    stacks = (state[0],) + state[10]
     for timers_label, interrupts, trap in plan:
         if trap is not None:
             entered, number, span = trap
@@ -226,8 +270,8 @@ def _main_steps(state: State, label: tuple, io, plan: list, steps: ViewSteps,
             continue
         view = _new_tuple(State, (state[0], state[1], io, state[3], interrupts) +
                           state[5:10] + ((),))
-        for transition in steps(view):
-            transition = _in_task(state, stacks, 0, label + timers_label, transition)
+        for transition in steps(view, 0, shared):
+            transition = _in_task(state, 0, label + timers_label, transition)
             after = _with_edges(transition[2], before)
             if after is not transition[2]:
                 transition = transition._replace(state=after)
