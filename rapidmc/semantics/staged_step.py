@@ -72,6 +72,9 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
         task_labels = [(("task", names[task]),) for task in runnable]
     else:
         task_labels = [()]
+    # the task each transition's label names (task_of), when no input label comes first
+    # with that name
+    owners = [] if len(runnable) > 1 and not steps.input_named_task else None
     rest = state[3:10] + ((),)
     shared: dict = {}
     result = []
@@ -81,14 +84,16 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
             label = input_label + task_label
             if plan is not None and task == 0:
                 _main_steps(state, label, ready_io, plan, steps, shared, result)
-                continue
-            view = _new_tuple(State, (stacks[task], state[1], io) + rest)
-            for transition in steps(view, task, shared):
-                append(_in_task(state, task, label, transition))
+            else:
+                view = _new_tuple(State, (stacks[task], state[1], io) + rest)
+                for transition in steps(view, task, shared):
+                    append(_in_task(state, task, label, transition))
+            if owners is not None:
+                owners += [task_label[0][1]] * (len(result) - len(owners))
     if not tasks and config.merge_points and _may_merge(result):
         return None
     if tasks:
-        result = idle_steps_dropped(state, result)
+        result = idle_steps_dropped(state, result, owners)
     return result
 
 
@@ -101,6 +106,7 @@ class ViewSteps:
         self.program = program
         self.owner = owner
         self.config = owner.unmerged()   # without merge points: one instruction per step
+        self.input_named_task = any(name == "task" for _, name, _ in owner.free_inputs)
 
     def __call__(self, view: State, task: int, shared: dict) -> list:
         """The instruction's transitions from ``view``, a view of ``task``.  ``shared``
@@ -323,20 +329,25 @@ def deactivated(table: tuple, number: int) -> tuple:
 # Fairness between tasks
 # ---------------------------------------------------------------------------
 
-def idle_steps_dropped(state: State, transitions: list) -> list:
+def idle_steps_dropped(state: State, transitions: list,
+                       owners: Optional[list] = None) -> list:
     """Tasks share the controller fairly: a task whose step changes nothing (it waits)
     does not take the turn from a task that can go on.  If no task can go on, every
-    idle step stays (the program may be deadlocked)."""
+    idle step stays (the program may be deadlocked).  ``owners``: each transition's
+    ``task_of``, when known."""
+    if owners is None:
+        owners = [task_of(transition) for transition in transitions]
     moving = set()
-    idle = False
-    for transition in transitions:
-        if transition[2] != state:
-            moving.add(task_of(transition))
-        else:
-            idle = True
-    if not moving or not idle:
+    moved = []
+    for transition, owner in zip(transitions, owners):
+        change = transition[2] != state
+        moved.append(change)
+        if change:
+            moving.add(owner)
+    if not moving or all(moved):
         return transitions
-    return [t for t in transitions if t[2] != state or not (moving - {task_of(t)})]
+    return [t for t, owner, change in zip(transitions, owners, moved)
+            if change or not (moving - {owner})]
 
 
 def task_of(transition: Transition):
