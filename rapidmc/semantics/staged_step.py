@@ -67,6 +67,8 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
         plan = _main_plan(program, state, steps.timer_choices(interrupts))
     inputs = steps.input_values(state[2])
     ready = steps.input_values(state[2], interrupts[3]) if plan and interrupts[3] else inputs
+    # a task's views share their transitions (ViewSteps) only when there are several
+    shared = {} if len(inputs) > 1 or (plan is not None and len(plan) > 1) else None
     if len(runnable) > 1:
         names = program.task_names
         task_labels = [(("task", names[task]),) for task in runnable]
@@ -76,7 +78,6 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
     # with that name
     owners = [] if len(runnable) > 1 and not steps.input_named_task else None
     rest = state[3:10] + ((),)
-    shared: dict = {}
     result = []
     append = result.append
     for io, ready_io, input_label in zip(inputs, ready, config.input_labels):
@@ -108,11 +109,12 @@ class ViewSteps:
         self.config = owner.unmerged()   # without merge points: one instruction per step
         self.input_named_task = any(name == "task" for _, name, _ in owner.free_inputs)
 
-    def __call__(self, view: State, task: int, shared: dict) -> list:
+    def __call__(self, view: State, task: int, shared: Optional[dict]) -> list:
         """The instruction's transitions from ``view``, a view of ``task``.  ``shared``
-        (one dict per state) keeps per task the transitions every other view of that
-        task in the state has too, but for its signals and interrupts (``_shareable``)."""
-        template = shared.get(task)
+        (one dict per state, None when each task has one view) keeps per task the
+        transitions every other view of that task in the state has too, but for its
+        signals and interrupts (``_shareable``)."""
+        template = shared.get(task) if shared else None
         if template is not None:
             io, interrupts = view[2], view[4]
             return [_new_tuple(Transition, (t[0], t[1], _new_tuple(
@@ -122,7 +124,7 @@ class ViewSteps:
         transitions = fused_successors(program, view, self.config)
         if transitions is None:
             transitions = plain_successors(program, view, self.config)
-        if task not in shared:
+        if shared is not None and task not in shared:
             shared[task] = _shareable(program, view, transitions)
         return transitions
 
@@ -130,8 +132,11 @@ class ViewSteps:
         """The signal vector after each valuation of the stored free inputs, in the
         general order, then the delayed signal changes ``scheduled`` (the main task's
         step with interrupts: time is abstract, they happen now)."""
+        assignments_each = self.config.input_assignments
+        if not scheduled and len(assignments_each) == 1 and not assignments_each[0]:
+            return [io]                  # no stored inputs, no delayed changes
         values = []
-        for assignments in self.config.input_assignments:
+        for assignments in assignments_each:
             changed = io.mset(*assignments) if assignments else io
             for _, index, value in scheduled:
                 changed = changed.set(index, value)
@@ -261,7 +266,7 @@ def _main_plan(program, state: State, choices: list) -> list:
 
 
 def _main_steps(state: State, label: tuple, io, plan: list, steps: ViewSteps,
-                shared: dict, result: list) -> None:
+                shared: Optional[dict], result: list) -> None:
     """The main task's steps from signal values ``io`` (inputs set, delayed changes
     done), one per ``plan`` entry: a TRAP starts or the instruction runs; then the
     signal edges since ``state`` order their interrupts."""
