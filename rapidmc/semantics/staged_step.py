@@ -69,11 +69,7 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
     ready = steps.input_values(state[2], interrupts[3]) if plan and interrupts[3] else inputs
     # a task's views share their transitions (ViewSteps) only when there are several
     shared = {} if len(inputs) > 1 or (plan is not None and len(plan) > 1) else None
-    if len(runnable) > 1:
-        names = program.task_names
-        task_labels = [(("task", names[task]),) for task in runnable]
-    else:
-        task_labels = [()]
+    task_labels = steps.task_labels(runnable)
     # the task each transition's label names (task_of), when no input label comes first
     # with that name
     owners = [] if len(runnable) > 1 and not steps.input_named_task else None
@@ -82,7 +78,7 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
     append = result.append
     for io, ready_io, input_label in zip(inputs, ready, config.input_labels):
         for task, task_label in zip(runnable, task_labels):
-            label = input_label + task_label
+            label = input_label + task_label if input_label else task_label
             if plan is not None and task == 0:
                 _main_steps(state, label, ready_io, plan, steps, shared, result)
             else:
@@ -108,6 +104,7 @@ class ViewSteps:
         self.owner = owner
         self.config = owner.unmerged()   # without merge points: one instruction per step
         self.input_named_task = any(name == "task" for _, name, _ in owner.free_inputs)
+        self.labels: dict = {}           # runnable tasks -> task_labels
 
     def __call__(self, view: State, task: int, shared: Optional[dict]) -> list:
         """The instruction's transitions from ``view``, a view of ``task``.  ``shared``
@@ -127,6 +124,16 @@ class ViewSteps:
         if shared is not None and task not in shared:
             shared[task] = _shareable(program, view, transitions)
         return transitions
+
+    def task_labels(self, runnable: list) -> tuple:
+        """The label part naming the task per runnable task (none when only one runs)."""
+        key = tuple(runnable)
+        labels = self.labels.get(key)
+        if labels is None:
+            names = self.program.task_names
+            labels = self.labels[key] = tuple((("task", names[task]),) for task in key) \
+                if len(key) > 1 else ((),)
+        return labels
 
     def input_values(self, io, scheduled: tuple = ()) -> list:
         """The signal vector after each valuation of the stored free inputs, in the
