@@ -12,7 +12,7 @@ to go on.
 * A task cannot go on in a state when the program has stopped, the task has
   ended, or each of its steps would change nothing (it waits) — decided as
   the step semantics decides which task takes the turn
-  (``semantics.step._no_idle_task_steps``): on the semantic successors of
+  (``semantics.staged_step.idle_steps_dropped``): on the semantic successors of
   the state, before any reduction's projection.
 """
 from __future__ import annotations

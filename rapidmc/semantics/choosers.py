@@ -8,6 +8,7 @@ domains, free inputs stored or chosen where read, merge points).
 """
 from __future__ import annotations
 
+import copy
 import itertools
 from typing import Optional
 
@@ -113,6 +114,8 @@ class CheckConfig:
         self.merge_points: dict = {}
         self._merge_table = None         # (merge_points, program, table): see merge_table
         self.fused = None                # (merge_points, program, routines): fused_step's
+        self._unmerged = None            # (merge_points, copy without them): see unmerged
+        self.view_steps = None           # staged_step's remembered steps (ViewSteps)
         # every combination of free input values, in the order the chooser enumerates them
         self.input_valuations = tuple(itertools.product(*(d for _, _, d in free)))
         # per valuation: pvector.mset arguments and the label part naming the values
@@ -122,6 +125,19 @@ class CheckConfig:
         self.input_labels = tuple(
             tuple((name, value) for (_, name, _), value in zip(free, valuation))
             for valuation in self.input_valuations)
+
+    def unmerged(self) -> "CheckConfig":
+        """This configuration without merge points (one instruction per step), made once
+        per merge points."""
+        if not self.merge_points:
+            return self
+        cached = self._unmerged
+        if cached is None or cached[0] is not self.merge_points:
+            plain = copy.copy(self)
+            plain.merge_points = {}
+            plain._merge_table = plain.fused = plain._unmerged = plain.view_steps = None
+            cached = self._unmerged = (self.merge_points, plain)
+        return cached[1]
 
     def merge_table(self, program: Program) -> dict:
         """``merge_points`` with what a merged run looks up per pc: routine index ->

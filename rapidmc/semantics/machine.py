@@ -102,9 +102,12 @@ class Machine:
         self.lazy_values = None          # lazily chosen free inputs of this step (check mode)
 
     def to_state(self) -> State:
+        """The state the step leaves (the step is over: no input is chosen any more)."""
         io = self.io
         if self.lazy_values is not None:
-            io = stored(io)
+            # The input view refers back to this machine: without that cycle the
+            # machine, its chooser and lists are freed now, not by the cycle collector.
+            io = self.io = stored(io)
         return _new_tuple(State, (tuple(self.frames), self.store, io, self.robot,
                                   self.interrupts, self.errno, self.intno, self.status,
                                   self.fault, self.clock, self.tasks))

@@ -32,6 +32,8 @@ from .choosers import Chooser, CheckConfig, ScriptChooser  # noqa: F401 (the ste
 from .fused_step import fused_successors
 from .plain_step import (MERGED_STEP_LIMIT, is_plain, plain_successors,  # noqa: F401
                          run_instruction, run_merged)
+from .staged_step import (deactivated, idle_steps_dropped, in_trap, is_staged,
+                          signal_edges_pending, staged_successors)
 from .timing import apply_scheduled, enqueue
 
 ENVIRONMENT_STEP_LIMIT = 100_000
@@ -142,6 +144,10 @@ def successors(program: Program, state: State, config: CheckConfig) -> list[Tran
     if is_plain(program, state, config):
         fused = fused_successors(program, state, config)
         return fused if fused is not None else plain_successors(program, state, config)
+    if is_staged(program, state, config):
+        staged = staged_successors(program, state, config)
+        if staged is not None:
+            return staged
     return general_successors(program, state, config)
 
 
@@ -155,22 +161,8 @@ def general_successors(program: Program, state: State, config: CheckConfig) -> l
     transitions = list(enumerate_choices(lambda chooser: step(program, state, chooser),
                                          lambda script: ScriptChooser(script, config)))
     if state.tasks:
-        transitions = _no_idle_task_steps(state, transitions)
+        transitions = idle_steps_dropped(state, transitions)
     return transitions
-
-
-def _no_idle_task_steps(state: State, transitions: list[Transition]) -> list[Transition]:
-    """Tasks share the controller fairly: a task whose step changes nothing (it waits)
-    does not take the turn from a task that can go on.  If no task can go on, every
-    idle step stays (the program may be deadlocked)."""
-    def task_of(transition):
-        return next((value for name, value in transition.label if name == "task"), None)
-
-    moving = {task_of(t) for t in transitions if t.state != state}
-    if not moving:
-        return transitions
-    return [t for t in transitions
-            if t.state != state or not (moving - {task_of(t)})]
 
 
 def _inputs_matter(program: Program, state: State) -> bool:
@@ -287,7 +279,7 @@ def _execute(m: Machine):
     """Start a pending TRAP, or execute the instruction at the program counter."""
     program = m.program
     interrupts = m.interrupts
-    if interrupts.pending and interrupts.enabled and not _in_trap(m):
+    if interrupts.pending and interrupts.enabled and not in_trap(program, m.frames):
         number = interrupts.pending[0]
         m.interrupts = interrupts._replace(pending=interrupts.pending[1:])
         entry = next((e for e in interrupts.table if e.number == number), None)
@@ -296,32 +288,15 @@ def _execute(m: Machine):
             m.intno = float(number)
             m.frames.append(Frame(trap.index, 0, trap.initial_locals))
             if entry.source and entry.source[-1] is True and entry.source[0] != "pers":
-                _deactivate(m, number)
+                m.interrupts = m.interrupts._replace(
+                    table=deactivated(m.interrupts.table, number))
             return trap.span
     return run_instruction(m)
 
 
-def _in_trap(m: Machine) -> bool:
-    routines = m.program.routines
-    return any(routines[f.routine].kind == "TRAP" for f in m.frames)
-
-
-def _deactivate(m: Machine, number: int) -> None:
-    m.interrupts = m.interrupts._replace(table=tuple(
-        e._replace(active=False) if e.number == number else e for e in m.interrupts.table))
-
-
 def signal_edges(m: Machine, before) -> None:
-    for entry in m.interrupts.table:
-        source = entry.source
-        if not entry.active or not source or source[0] != "signal":
-            continue
-        _, index, trigger, _ = source
-        old, new = before[index], m.io[index]
-        if old == new:
-            continue
-        if trigger == 2 or (trigger == 1 and new == 1) or (trigger == 0 and new == 0):
-            enqueue(m, entry.number)
+    """Signal changes since ``before`` that are an ordered edge queue their interrupt."""
+    m.interrupts = signal_edges_pending(m.interrupts, before, m.io)
 
 
 def _timers_may_fire(m: Machine) -> None:

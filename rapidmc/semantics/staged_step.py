@@ -1,0 +1,370 @@
+"""Staged steps: the successors of a state with several tasks or with interrupts.
+
+The general driver (``step.general_successors``) runs the whole transition
+once per combination of choices, through a ``Machine`` and a ``ScriptChooser``.
+The choices of a transition come in stages, always in this order: the stored
+free inputs' values, the task that steps (when more than one can), the timers
+that fire (main task, interrupts connected), then the choices of the
+instruction itself.  Every choice script is a path in one tree of choices and
+the general driver visits the paths depth first, so the same transitions come
+out, in the same order, when the first stages are enumerated once each (inputs,
+then task, then timers) and under each of their combinations the instruction's
+own choices are enumerated.
+
+``staged_successors`` does that: for each combination it builds the state just
+before the instruction (inputs set, delayed signal changes done, timers
+queued, a pending TRAP entered instead of an instruction), hands a one-task
+view of it to the plain drivers (``fused_step``, else ``plain_step``: the
+instruction and nothing else, as the general step does when there are tasks
+or interrupts: no merged run), and finishes each transition as ``step``
+does: signal edges ordered with ISignalDI become pending interrupts, a task
+that ended leaves the others running.  States with an environment reaction
+are left to the general driver, and so is every state where a transition of
+one task without interrupts could go on with a merged run.
+tests/test_staged_step.py compares both drivers on whole state graphs.
+"""
+from __future__ import annotations
+
+from typing import Optional
+
+from .choosers import CheckConfig
+from .fused_step import fused_successors
+from .plain_step import plain_successors
+from .state import ENDED, FAILED, RUNNING, Frame, Interrupts, State, Transition
+
+_new_tuple = tuple.__new__
+
+
+def is_staged(program, state: State, config: CheckConfig) -> bool:
+    """Whether ``staged_successors`` may stand in for the general driver at ``state``
+    (a running state with tasks or interrupts, no environment reaction)."""
+    if program.environment_react is not None:
+        return False
+    interrupts = state[4]
+    if not (state[10] or interrupts[0] or interrupts[1]):
+        return False
+    lazy = config.lazy_inputs
+    if lazy:                             # an edge on an input chosen where read: not here
+        for entry in interrupts[0]:
+            source = entry[2]
+            if source and source[0] == "signal" and source[1] in lazy:
+                return False
+    return True
+
+
+def staged_successors(program, state: State, config: CheckConfig) -> Optional[list]:
+    """Every transition from ``state`` (``is_staged``), in the general driver's order;
+    None when a transition would go on with a merged run (the general driver's case)."""
+    tasks = state[10]
+    stacks = (state[0],) + tasks
+    runnable = [i for i, stack in enumerate(stacks) if stack]
+    if not runnable:
+        return None
+    steps = view_steps(program, config)
+    interrupts = state[4]
+    plan = None
+    if runnable[0] == 0 and (interrupts[0] or interrupts[3] or interrupts[1]):
+        plan = _main_plan(program, state, steps.timer_choices(interrupts))
+    inputs = steps.input_values(state[2])
+    ready = steps.input_values(state[2], interrupts[3]) if plan and interrupts[3] else inputs
+    # a task's views share their transitions (ViewSteps) only when there are several
+    shared = {} if len(inputs) > 1 or (plan is not None and len(plan) > 1) else None
+    task_labels = steps.task_labels(runnable)
+    # the task each transition's label names (task_of), when no input label comes first
+    # with that name
+    owners = [] if len(runnable) > 1 and not steps.input_named_task else None
+    rest = state[3:10] + ((),)
+    result = []
+    append = result.append
+    for io, ready_io, input_label in zip(inputs, ready, config.input_labels):
+        for task, task_label in zip(runnable, task_labels):
+            label = input_label + task_label if input_label else task_label
+            if plan is not None and task == 0:
+                _main_steps(state, label, ready_io, plan, steps, shared, result)
+            else:
+                view = _new_tuple(State, (stacks[task], state[1], io) + rest)
+                for transition in steps(view, task, shared):
+                    append(_in_task(state, task, label, transition))
+            if owners is not None:
+                owners += [task_label[0][1]] * (len(result) - len(owners))
+    if not tasks and config.merge_points and _may_merge(result):
+        return None
+    if tasks:
+        result = idle_steps_dropped(state, result, owners)
+    return result
+
+
+class ViewSteps:
+    """The instruction's transitions from one-task views (through the plain drivers,
+    without merge points), and what the views of one state share: the signal vector
+    after each input valuation, the timers' combinations."""
+
+    def __init__(self, program, owner: CheckConfig):
+        self.program = program
+        self.owner = owner
+        self.config = owner.unmerged()   # without merge points: one instruction per step
+        self.input_named_task = any(name == "task" for _, name, _ in owner.free_inputs)
+        self.labels: dict = {}           # runnable tasks -> task_labels
+
+    def __call__(self, view: State, task: int, shared: Optional[dict]) -> list:
+        """The instruction's transitions from ``view``, a view of ``task``.  ``shared``
+        (one dict per state, None when each task has one view) keeps per task the
+        transitions every other view of that task in the state has too, but for its
+        signals and interrupts (``_shareable``)."""
+        template = shared.get(task) if shared else None
+        if template is not None:
+            io, interrupts = view[2], view[4]
+            return [_new_tuple(Transition, (t[0], t[1], _new_tuple(
+                State, t[2][:2] + (io, t[2][3], interrupts) + t[2][5:])) + t[3:])
+                for t in template]
+        program = self.program
+        transitions = fused_successors(program, view, self.config)
+        if transitions is None:
+            transitions = plain_successors(program, view, self.config)
+        if shared is not None and task not in shared:
+            shared[task] = _shareable(program, view, transitions)
+        return transitions
+
+    def task_labels(self, runnable: list) -> tuple:
+        """The label part naming the task per runnable task (none when only one runs)."""
+        key = tuple(runnable)
+        labels = self.labels.get(key)
+        if labels is None:
+            names = self.program.task_names
+            labels = self.labels[key] = tuple((("task", names[task]),) for task in key) \
+                if len(key) > 1 else ((),)
+        return labels
+
+    def input_values(self, io, scheduled: tuple = ()) -> list:
+        """The signal vector after each valuation of the stored free inputs, in the
+        general order, then the delayed signal changes ``scheduled`` (the main task's
+        step with interrupts: time is abstract, they happen now)."""
+        assignments_each = self.config.input_assignments
+        if not scheduled and len(assignments_each) == 1 and not assignments_each[0]:
+            return [io]                  # no stored inputs, no delayed changes
+        values = []
+        for assignments in assignments_each:
+            changed = io.mset(*assignments) if assignments else io
+            for _, index, value in scheduled:
+                changed = changed.set(index, value)
+            values.append(changed)
+        return values
+
+    @staticmethod
+    def timer_choices(interrupts: Interrupts) -> list:
+        """(label, interrupts) per combination of timers firing, in the general order
+        (each active timer not pending may fire, False before True), delayed signal
+        changes done."""
+        ready = interrupts._replace(scheduled=()) if interrupts[3] else interrupts
+        found = []
+        if ready[0]:
+            _fire(ready[0], 0, ready[1], (), found)
+        else:
+            found.append(((), ready[1]))
+        return [(label, ready if pending is ready[1] else ready._replace(pending=pending))
+                for label, pending in found]
+
+
+def _shareable(program, view: State, transitions: list) -> Optional[list]:
+    """``transitions`` when the other views of the task in this state have the same but
+    for their own signals and interrupts; else None.
+
+    The views of one task in one state differ only in signal values (the input
+    valuation, delayed changes) and in the pending interrupts (timers that fired, a
+    TRAP that was not found).  An instruction that reads no signal (``reads_io``:
+    the general driver's ``_successors_inputs_after`` relies on it too) and leaves
+    signals and interrupts as they were (the very same objects) has read no pending
+    interrupt either: IDelete and ISleep, which read them, always write a new
+    interrupts value.  Its transitions from any of those views are then the same
+    but for those two parts."""
+    frame = view[0][-1]
+    if program.routines[frame[0]].code[frame[1]].reads_io:
+        return None
+    io, interrupts = view[2], view[4]
+    for transition in transitions:
+        after = transition[2]
+        if after[2] is not io or after[4] is not interrupts:
+            return None
+    return transitions
+
+
+def view_steps(program, config: CheckConfig) -> ViewSteps:
+    """The ``ViewSteps`` of this configuration and program (made when first needed; a
+    copy of the configuration makes its own)."""
+    steps = config.view_steps
+    if steps is None or steps.owner is not config or steps.program is not program:
+        steps = config.view_steps = ViewSteps(program, config)
+    return steps
+
+
+def _in_task(state: State, task: int, label: tuple, transition: Transition) -> Transition:
+    """The transition of a one-task view as a step of ``task`` in ``state``: its stack
+    back among the others' (a task that ended leaves the others running; an uncaught
+    error stops every task: nothing to put back), ``label`` before the view's."""
+    after = transition[2]
+    tasks = state[10]
+    if tasks and after[7] != FAILED:
+        if task:
+            tasks = tasks[:task - 1] + (after[0],) + tasks[task:]
+            head = (state[0],) + after[1:7]
+        else:
+            head = after[:7]
+        status = after[7]
+        if status == ENDED and (head[0] or any(tasks)):
+            status = RUNNING
+        after = _new_tuple(State, head + (status,) + after[8:10] + (tasks,))
+    return _new_tuple(Transition, (label + transition[0], transition[1], after) +
+                      transition[3:])
+
+
+def _may_merge(transitions: list) -> bool:
+    """Whether a transition of a one-task program ends running without interrupts (the
+    general step would go on with its merged run)."""
+    for transition in transitions:
+        after = transition[2]
+        interrupts = after[4]
+        if after[7] == RUNNING and not (interrupts[0] or interrupts[1] or interrupts[3]):
+            return True
+    return False
+
+
+# ---------------------------------------------------------------------------
+# The main task's step with interrupts
+# ---------------------------------------------------------------------------
+
+def _fire(table: tuple, start: int, pending: tuple, label: tuple, found: list) -> None:
+    for position in range(start, len(table)):
+        entry = table[position]
+        source = entry[2]
+        if entry[3] and source and source[0] == "timer" and entry[0] not in pending:
+            name = f"timer {entry[0]}"
+            _fire(table, position + 1, pending, label + ((name, False),), found)
+            _fire(table, position + 1, pending + (entry[0],), label + ((name, True),), found)
+            return
+    found.append((label, pending))
+
+
+def _main_plan(program, state: State, choices: list) -> list:
+    """Per combination of timers: (label, interrupts, None) when the instruction runs,
+    or (label, interrupts, (frames, INTNO, span)) when a pending TRAP starts instead."""
+    frames = state[0]
+    plan = []
+    may_trap = None
+    for label, interrupts in choices:
+        pending = interrupts[1]
+        if pending and interrupts[2]:
+            if may_trap is None:
+                may_trap = not in_trap(program, frames)
+            if may_trap:
+                number = pending[0]
+                interrupts = interrupts._replace(pending=pending[1:])
+                entry = next((e for e in interrupts[0] if e[0] == number), None)
+                if entry is not None:
+                    trap = program.routines[entry[1]]
+                    source = entry[2]
+                    if source and source[-1] is True and source[0] != "pers":
+                        interrupts = interrupts._replace(
+                            table=deactivated(interrupts[0], number))
+                    entered = frames + (Frame(trap.index, 0, trap.initial_locals),)
+                    plan.append((label, interrupts, (entered, float(number), trap.span)))
+                    continue
+        plan.append((label, interrupts, None))
+    return plan
+
+
+def _main_steps(state: State, label: tuple, io, plan: list, steps: ViewSteps,
+                shared: Optional[dict], result: list) -> None:
+    """The main task's steps from signal values ``io`` (inputs set, delayed changes
+    done), one per ``plan`` entry: a TRAP starts or the instruction runs; then the
+    signal edges since ``state`` order their interrupts."""
+    before = state[2]
+    for timers_label, interrupts, trap in plan:
+        if trap is not None:
+            entered, number, span = trap
+            after = _new_tuple(State, (entered, state[1], io, state[3], interrupts, state[5],
+                                       number) + state[7:])
+            result.append(_new_tuple(Transition, (label + timers_label, span,
+                                                  _with_edges(after, before), "", False)))
+            continue
+        view = _new_tuple(State, (state[0], state[1], io, state[3], interrupts) +
+                          state[5:10] + ((),))
+        for transition in steps(view, 0, shared):
+            transition = _in_task(state, 0, label + timers_label, transition)
+            after = _with_edges(transition[2], before)
+            if after is not transition[2]:
+                transition = transition._replace(state=after)
+            result.append(transition)
+
+
+def _with_edges(after: State, before) -> State:
+    """``after`` with the interrupts its signal changes since ``before`` order pending."""
+    interrupts = after[4]
+    if not interrupts[0] or after[2] is before or after[2] == before:
+        return after
+    signalled = signal_edges_pending(interrupts, before, after[2])
+    if signalled is interrupts:
+        return after
+    return after._replace(interrupts=signalled)
+
+
+def signal_edges_pending(interrupts: Interrupts, before, now) -> Interrupts:
+    """``interrupts`` with each active interrupt ordered on a signal whose change from
+    ``before`` to ``now`` is its edge (ISignalDI's trigger: 0 falling, 1 rising,
+    2 both) queued, in table order (an interrupt already pending stays once)."""
+    pending = interrupts[1]
+    for entry in interrupts[0]:
+        source = entry[2]
+        if not entry[3] or not source or source[0] != "signal":
+            continue
+        _, index, trigger, _ = source
+        old, new = before[index], now[index]
+        if old == new:
+            continue
+        if trigger == 2 or (trigger == 1 and new == 1) or (trigger == 0 and new == 0):
+            if entry[0] not in pending:
+                pending = pending + (entry[0],)
+    return interrupts if pending is interrupts[1] else interrupts._replace(pending=pending)
+
+
+def in_trap(program, frames) -> bool:
+    routines = program.routines
+    return any(routines[frame[0]].kind == "TRAP" for frame in frames)
+
+
+def deactivated(table: tuple, number: int) -> tuple:
+    """The interrupt table with interrupt ``number`` asleep (a single-shot one after its
+    first delivery)."""
+    return tuple(e._replace(active=False) if e[0] == number else e for e in table)
+
+
+# ---------------------------------------------------------------------------
+# Fairness between tasks
+# ---------------------------------------------------------------------------
+
+def idle_steps_dropped(state: State, transitions: list,
+                       owners: Optional[list] = None) -> list:
+    """Tasks share the controller fairly: a task whose step changes nothing (it waits)
+    does not take the turn from a task that can go on.  If no task can go on, every
+    idle step stays (the program may be deadlocked).  ``owners``: each transition's
+    ``task_of``, when known."""
+    if owners is None:
+        owners = [task_of(transition) for transition in transitions]
+    moving = set()
+    moved = []
+    for transition, owner in zip(transitions, owners):
+        change = transition[2] != state
+        moved.append(change)
+        if change:
+            moving.add(owner)
+    if not moving or all(moved):
+        return transitions
+    return [t for t, owner, change in zip(transitions, owners, moved)
+            if change or not (moving - {owner})]
+
+
+def task_of(transition: Transition):
+    """The task a transition's label names (None: only one task could step)."""
+    for name, value in transition[0]:
+        if name == "task":
+            return value
+    return None
