@@ -28,11 +28,14 @@ def _exit_cycle(calls, compiler, call, entry):
     Arguments(calls, compiler, call, entry)
 
     def restart(m, instruction):
+        # the task's own entry routine: the bottom of the stack the step runs on (a
+        # further task's step runs on that task's frames)
+        entry = m.frames[0].routine if m.frames else m.program.entry
         unwind_all(m)
         if not m.chooser.check_mode:
             m.status = ENDED           # a run is one cycle
             return
-        main = m.program.routines[m.program.entry]
+        main = m.program.routines[entry]
         m.frames = [Frame(main.index, 0, main.initial_locals)]
     return ControlAction(call.span, restart)
 
