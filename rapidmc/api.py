@@ -335,17 +335,30 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
 
 
 class _StuckWatch:
-    """Sees the states a search expands (passing them on to ``then``): does one wait forever?"""
+    """Sees the states a search expands (passing them on to ``then``): does one wait forever?
 
-    def __init__(self, system: RapidSystem, then=None):
-        self.stuck_among = system.stuck_among
+    It needs no labels itself (a ``reachability.StatesObserver``); ``then`` says whether
+    the search must build them."""
+
+    def __init__(self, system: RapidSystem, then: Optional[ExploredFacts] = None):
+        self.stuck_at = system.stuck_at
         self.then = then
         self.seen = False
+
+    @property
+    def labels_wanted(self) -> bool:
+        return self.then is not None and self.then.labels_wanted
 
     def __call__(self, state, successors) -> None:
         if self.then is not None:
             self.then(state, successors)
-        if not self.seen and self.stuck_among(state, successors):   # (the search's own list)
+        if not self.seen and self.stuck_at(state, [after for _, after in successors]):
+            self.seen = True
+
+    def states(self, state, targets) -> None:
+        if self.then is not None:
+            self.then.states(state, targets)
+        if not self.seen and self.stuck_at(state, targets):   # (the search's own list)
             self.seen = True
 
 

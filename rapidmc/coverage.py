@@ -11,7 +11,7 @@ asks for ``unreached`` only then.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Hashable, Sequence
+from typing import Hashable, Optional, Sequence
 
 from .ast import Span
 from .diagnostics import NEVER_REACHED, Diagnostic
@@ -46,19 +46,29 @@ class StatementWatch:
     A step's spans are mostly the compiled instructions' own objects, met again
     in state after state: each one recorded is remembered by identity (and kept
     alive, so that its id names it), up to ``SPANS_KEPT``, and skipped after.
+
+    Given the ``program``, the watch knows the lines ``unreached`` asks about:
+    once every one of them has run (``saturated``), no further line can change
+    the coverage warnings, and the search may step without labels.
     """
 
-    def __init__(self):
+    def __init__(self, program: Optional[Program] = None):
         self.executed: set[tuple[str, int]] = set()
         self._recorded: dict[int, object] = {}    # id(span) -> span, its line in executed
+        # the lines unreached() reports on (None: not known, never saturated)
+        self._asked = None if program is None else frozenset(
+            key for routine in _watched_routines(program) for key in _statement_lines(routine))
+        self.saturated = self._asked == frozenset()
 
     def clear(self) -> None:
         """Forget every line executed (before watching another search)."""
         self.executed.clear()
         self._recorded.clear()
+        self.saturated = self._asked == frozenset()
 
     def __call__(self, state: Hashable, successors: Sequence[tuple[Hashable, Hashable]]) -> None:
         executed, recorded = self.executed, self._recorded
+        before = len(executed)
         for (_, span, _), _ in successors:
             for one in executed_spans(span):
                 if one is None or id(one) in recorded:
@@ -67,14 +77,14 @@ class StatementWatch:
                 if len(recorded) >= SPANS_KEPT:
                     recorded.clear()
                 recorded[id(one)] = one
+        if len(executed) != before and self._asked is not None:
+            self.saturated = self._asked <= executed
 
 
 def unreached(program: Program, executed: set[tuple[str, int]]) -> list[Unreached]:
     """The program's statements on lines never executed, in source order."""
     found: list[Unreached] = []
-    for routine in program.routines:
-        if routine.namespace == ENVIRONMENT_NAMESPACE:
-            continue
+    for routine in _watched_routines(program):
         lines = _statement_lines(routine)
         missed = [span for key, span in lines.items() if key not in executed]
         if lines and len(missed) == len(lines):
@@ -82,6 +92,12 @@ def unreached(program: Program, executed: set[tuple[str, int]]) -> list[Unreache
         else:
             found.extend(Unreached(span, routine.name, False) for span in missed)
     return sorted(found, key=lambda u: (u.span.file, u.span.line, u.span.column))
+
+
+def _watched_routines(program: Program) -> list:
+    """The routines whose statements coverage reports on: all but the environment's."""
+    return [routine for routine in program.routines
+            if routine.namespace != ENVIRONMENT_NAMESPACE]
 
 
 def _statement_lines(routine) -> dict[tuple[str, int], Span]:

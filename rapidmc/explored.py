@@ -30,7 +30,7 @@ class ExploredFacts:
 
     def __init__(self, program: Program, formulas: Iterable[Formula], atoms: AtomCompiler):
         self.program = program
-        self.statements = StatementWatch()
+        self.statements = StatementWatch(program)
         self.triggers = TriggerWatch(formulas)
         # no trigger to watch: no atom to evaluate (evaluating costs a machine per state)
         self.valuation = atoms.valuation(self.triggers.atoms, {}) if self.triggers.atoms \
@@ -39,6 +39,16 @@ class ExploredFacts:
 
     def __call__(self, state: Hashable, successors: Sequence[tuple[Hashable, Hashable]]) -> None:
         self.statements(state, successors)
+        self.triggers.seen.add(self.valuation(state))
+
+    @property
+    def labels_wanted(self) -> bool:
+        """Whether the next state's labels may still tell something (a line not yet run);
+        once not, the search hands over states only (``states``)."""
+        return not self.statements.saturated
+
+    def states(self, state: Hashable, targets: Sequence[Hashable]) -> None:
+        """``__call__`` once every line has run: only the state's atoms remain to watch."""
         self.triggers.seen.add(self.valuation(state))
 
     def finish(self, system, search: SearchResult, **bounds) -> None:

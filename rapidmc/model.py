@@ -131,11 +131,22 @@ class RapidSystem:
 
     def stuck_among(self, state: State, found: Sequence) -> bool:
         """``stuck(state)`` given ``found``, the state's successors (as ``successors`` gives)."""
+        return self.stuck_at(state, [after for _, after in found])
+
+    def stuck_at(self, state: State, targets: Sequence[State]) -> bool:
+        """``stuck(state)`` given ``targets``, its successor states (``successor_states``)."""
         if state.status != RUNNING:
             return False
+        # a successor whose call stack or data differ is not a state with other inputs:
+        # decided without masking the inputs of every successor (the usual case)
+        frames, store = state[0], state[1]
+        for after in targets:
+            if after[0] is not frames and after[0] != frames or \
+                    after[1] is not store and after[1] != store:
+                return False
         free = [index for index, _, _ in self.config.free_inputs]
         masked = _without_inputs(state, free)
-        if not all(_without_inputs(after, free) == masked for _, after in found):
+        if not all(_without_inputs(after, free) == masked for after in targets):
             return False
         if not self.config.merge_points:
             return True

@@ -13,7 +13,12 @@ statistics and the search goes on).
 ``observe(state, successors)``, when given, sees every state the search
 expands with its labelled successors: after a HOLDS verdict (a complete
 search) it has seen the whole reachable state graph, which is what
-coverage and vacuity are computed from.
+coverage and vacuity are computed from.  An observer that needs labels only
+for a while (``StatesObserver``: coverage once every line has run) says so
+in ``labels_wanted`` before each state; while it is false, the search steps
+without labels (the system's ``successor_states``, the same states in the
+same order) and hands the observer the states (``observe.states``).  Without
+an observer the search never builds labels but for the path it reports.
 
 ``explored(graph)``, when given, receives that graph after a HOLDS verdict
 of an exact search: every stored state with its successors' ids and the
@@ -24,7 +29,7 @@ the model again.
 from __future__ import annotations
 
 from array import array
-from typing import Callable, Hashable, Optional, Sequence
+from typing import Callable, Hashable, Optional, Protocol, Sequence
 
 from .budget import DEFAULT_MAX_STATES, SearchBudget
 from .collector import frozen_while_searching
@@ -38,6 +43,17 @@ from .result import (HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep,
                      SearchResult, SearchStats)
 
 Observer = Callable[[Hashable, Sequence[tuple[Hashable, Hashable]]], None]
+
+
+class StatesObserver(Protocol):
+    """An observer that may do without labels (see the module docstring)."""
+
+    labels_wanted: bool           # read before each state is expanded
+
+    def __call__(self, state: Hashable,
+                 successors: Sequence[tuple[Hashable, Hashable]]) -> None: ...
+
+    def states(self, state: Hashable, targets: Sequence[Hashable]) -> None: ...
 
 
 def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], bool], *,
@@ -140,6 +156,9 @@ class _BreadthFirst:
         function's caches recognise, and that saves what the rebuilding costs."""
         table, intern = self.states, self.states.intern
         successors_of, observe, predicate = self.system.successors, self.observe, self.predicate
+        # without labels: when nobody looks at them, or while the observer does without
+        targets_of = getattr(self.system, "successor_states", None)
+        unlabelled = targets_of is not None and (observe is None or hasattr(observe, "states"))
         parent, depth, budget = self.parent, self.depth, self.budget
         max_states = budget.max_states
         record = self.graph.add if self.graph is not None else None
@@ -147,16 +166,22 @@ class _BreadthFirst:
         frontier = 0
         while frontier < stored and budget.reason is None:
             state = table[frontier]
-            successors = as_sequence(successors_of(state))
-            if observe is not None:
-                observe(state, successors)
+            if unlabelled and (observe is None or not observe.labels_wanted):
+                successors = targets_of(state)
+                if observe is not None:
+                    observe.states(state, successors)
+            else:
+                labelled = as_sequence(successors_of(state))
+                if observe is not None:
+                    observe(state, labelled)
+                successors = [successor for _, successor in labelled]
             self.transitions += len(successors)
             if not successors:
                 self.deadlocks += 1
                 if self.deadlock_is_target:
                     return frontier
             ids = []
-            for _, successor in successors:
+            for successor in successors:
                 successor_id, new = intern(successor, stored < max_states)
                 if new:
                     if successor_id < 0:
