@@ -155,3 +155,27 @@ def test_numeric_routines_pick_the_dnum_variant_by_type():
     entry = lookup_procedure("INCR")
     assert entry.implementation("num")(16777216.0) == {"Name": 16777216.0}   # float32 cannot add 1
     assert entry.implementation("dnum")(16777216.0) == {"Name": 16777217.0}
+
+
+def test_a_signature_is_parsed_when_its_routine_is_first_looked_up(monkeypatch):
+    from rapidmc.semantics.library import registry
+    lookup_function("ABS")                          # loads the registry
+    monkeypatch.setattr(registry, "FUNCTIONS", dict(registry.FUNCTIONS))
+    registry.FUNCTIONS["SIN"] = registry._Declared(
+        "num Sin(num Angle)", lambda angle: 0.0, False, None, None, registry.EXACT, "math")
+    parsed = lookup_function("SIN")
+    assert parsed.signature.name == "Sin" and parsed.signature.parameters[0].name == "Angle"
+    assert registry.FUNCTIONS["SIN"] is parsed      # parsed once, kept
+    # a signature that does not parse is refused when looked up
+    registry.FUNCTIONS["COS"] = registry._Declared(
+        "num Cos(num Angle", lambda angle: 0.0, False, None, None, registry.EXACT, "math")
+    with pytest.raises(SignatureSyntaxError):
+        lookup_function("COS")
+
+
+@pytest.mark.parametrize("text", ["(num a)", "NoSuchP(num a, ..., num b)", "NoSuchQ(num a"])
+def test_register_refuses_a_bad_signature_and_files_nothing(text):
+    from rapidmc.semantics.library import registry
+    with pytest.raises(SignatureSyntaxError):
+        register(text, None, special=True, factory=lambda *args: None)
+    assert not {"NOSUCHP", "NOSUCHQ"} & set(registry.PROCEDURES)

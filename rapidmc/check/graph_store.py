@@ -53,12 +53,11 @@ class ExploredGraph:
 
     def add(self, state_id: int, state: Hashable, successor_ids: list[int]) -> None:
         """The row of ``state_id`` (the next id): its successors' ids in model order."""
-        assert state_id == len(self.deadlocked), "rows are added in id order"
         if self.valuations:
             self._evaluate(state)
         targets = self.targets
         if successor_ids:
-            targets.extend(unique(successor_ids))
+            targets.extend(successor_ids if len(successor_ids) == 1 else unique(successor_ids))
             self.deadlocked.append(0)
         else:
             targets.append(state_id)

@@ -15,10 +15,11 @@ expands with its labelled successors: after a HOLDS verdict (a complete
 search) it has seen the whole reachable state graph, which is what
 coverage and vacuity are computed from.  An observer that needs labels only
 for a while (``StatesObserver``: coverage once every line has run) says so
-in ``labels_wanted`` before each state; while it is false, the search steps
-without labels (the system's ``successor_states``, the same states in the
-same order) and hands the observer the states (``observe.states``).  Without
-an observer the search never builds labels but for the path it reports.
+in ``labels_wanted``, read before each state until it is false: from then on
+the search steps without labels (the system's ``successor_states``, the
+same states in the same order) and hands the observer the states
+(``observe.states``).  Without an observer the search never builds labels
+but for the path it reports.
 
 ``explored(graph)``, when given, receives that graph after a HOLDS verdict
 of an exact search: every stored state with its successors' ids and the
@@ -48,7 +49,7 @@ Observer = Callable[[Hashable, Sequence[tuple[Hashable, Hashable]]], None]
 class StatesObserver(Protocol):
     """An observer that may do without labels (see the module docstring)."""
 
-    labels_wanted: bool           # read before each state is expanded
+    labels_wanted: bool           # read before each state until false (then never again)
 
     def __call__(self, state: Hashable,
                  successors: Sequence[tuple[Hashable, Hashable]]) -> None: ...
@@ -158,7 +159,9 @@ class _BreadthFirst:
         successors_of, observe, predicate = self.system.successors, self.observe, self.predicate
         # without labels: when nobody looks at them, or while the observer does without
         targets_of = getattr(self.system, "successor_states", None)
-        unlabelled = targets_of is not None and (observe is None or hasattr(observe, "states"))
+        unlabelled = targets_of is not None and (observe is None or hasattr(observe, "states")
+                                                 and not observe.labels_wanted)
+        labelled_while = targets_of is not None and hasattr(observe, "states") and not unlabelled
         parent, depth, budget = self.parent, self.depth, self.budget
         max_states = budget.max_states
         record = self.graph.add if self.graph is not None else None
@@ -166,7 +169,7 @@ class _BreadthFirst:
         frontier = 0
         while frontier < stored and budget.reason is None:
             state = table[frontier]
-            if unlabelled and (observe is None or not observe.labels_wanted):
+            if unlabelled:
                 successors = targets_of(state)
                 if observe is not None:
                     observe.states(state, successors)
@@ -174,6 +177,8 @@ class _BreadthFirst:
                 labelled = as_sequence(successors_of(state))
                 if observe is not None:
                     observe(state, labelled)
+                    if labelled_while and not observe.labels_wanted:
+                        unlabelled = True
                 successors = [successor for _, successor in labelled]
             self.transitions += len(successors)
             if not successors:

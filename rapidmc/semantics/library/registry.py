@@ -1,7 +1,9 @@
 """The registry of predefined RAPID routines and their signatures.
 
-Each entry pairs a ``Signature`` (parsed once, at import, from a RAPID-like
-declaration string) with a plain Python implementation::
+Each entry pairs a ``Signature`` (parsed once, from a RAPID-like declaration
+string, when the routine is first looked up: a check looks up the few it
+calls, not the six hundred the library registers) with a plain Python
+implementation::
 
     @function("num Round(num Val \\\\num Dec)")
     def round_num(val, dec): ...
@@ -66,7 +68,7 @@ import importlib
 import re
 import sys
 from dataclasses import dataclass
-from typing import Callable, Iterator, Optional
+from typing import Callable, Iterator, NamedTuple, Optional
 
 from ..values import DNUM, NUM, NumericKind
 
@@ -176,8 +178,9 @@ class RoutineEntry:
         return self.impl
 
 
-FUNCTIONS: dict[str, RoutineEntry] = {}
-PROCEDURES: dict[str, RoutineEntry] = {}
+# canonical name -> entry (a ``_Declared`` until first looked up: see ``_entry``)
+FUNCTIONS: dict[str, "RoutineEntry | _Declared"] = {}
+PROCEDURES: dict[str, "RoutineEntry | _Declared"] = {}
 
 
 # --------------------------------------------------------------------------
@@ -304,19 +307,62 @@ def register(text: str, impl: Optional[Callable[..., object]], special: bool = F
              factory: Optional[Callable[..., object]] = None, modelled: str = EXACT,
              topic: str = "") -> RoutineEntry:
     """Add one routine; a second registration of a name is a bug."""
-    signature = parse_signature(text)
-    if impl is None and not special:
-        raise SignatureSyntaxError(f"{signature.name} has no implementation and is not special")
-    if signature.open_parameters and factory is None:
-        raise SignatureSyntaxError(f"{signature.name}: an open parameter list needs a factory")
-    if modelled not in MODELLED_AS:
-        raise SignatureSyntaxError(f"{signature.name}: unknown modelling {modelled!r}")
-    table = FUNCTIONS if signature.kind == FUNCTION else PROCEDURES
-    if signature.key in table:
-        raise SignatureSyntaxError(f"{signature.name} registered twice")
-    entry = RoutineEntry(signature, impl, special, dnum_impl, factory, modelled, topic)
-    table[signature.key] = entry
-    return entry
+    table, key = _declare(_Declared(text, impl, special, dnum_impl, factory, modelled, topic))
+    try:
+        return _entry(table, key)           # parsed now: a bad signature is refused here
+    except SignatureSyntaxError:
+        del table[key]
+        raise
+
+
+class _Declared(NamedTuple):
+    """A registered routine whose signature is not parsed yet (``register``'s arguments)."""
+
+    text: str
+    impl: Optional[Callable[..., object]]
+    special: bool
+    dnum_impl: Optional[Callable[..., object]]
+    factory: Optional[Callable[..., object]]
+    modelled: str
+    topic: str
+
+
+# what registering needs of a signature before it is parsed: its name, and whether a
+# return type comes first (a function) or the name is followed by "(" (a procedure)
+_HEAD = re.compile(r"\s*([A-Za-z_][A-Za-z0-9_]*)\s*(?:\(|([A-Za-z_][A-Za-z0-9_]*)\s*\()")
+
+
+def _declare(declared: _Declared) -> tuple[dict, str]:
+    """Check what can be checked without parsing the signature and file the routine
+    under its name; the table and the key."""
+    head = _HEAD.match(declared.text)
+    if head is None:
+        parse_signature(declared.text)            # raises the syntax error
+        raise SignatureSyntaxError(f"expected a routine name in {declared.text!r}")
+    name = head.group(2) or head.group(1)
+    if declared.impl is None and not declared.special:
+        raise SignatureSyntaxError(f"{name} has no implementation and is not special")
+    if OPEN in declared.text and declared.factory is None:
+        raise SignatureSyntaxError(f"{name}: an open parameter list needs a factory")
+    if declared.modelled not in MODELLED_AS:
+        raise SignatureSyntaxError(f"{name}: unknown modelling {declared.modelled!r}")
+    table = FUNCTIONS if head.group(2) else PROCEDURES
+    key = name.upper()
+    if key in table:
+        raise SignatureSyntaxError(f"{name} registered twice")
+    table[key] = declared
+    return table, key
+
+
+def _entry(table: dict, key: str) -> Optional[RoutineEntry]:
+    """The entry filed under ``key``, its signature parsed on first use."""
+    found = table.get(key)
+    if type(found) is _Declared:
+        signature = parse_signature(found.text)
+        if signature.key != key or (table is FUNCTIONS) != (signature.kind == FUNCTION):
+            raise SignatureSyntaxError(f"{found.text!r} does not parse as it was filed")
+        found = table[key] = RoutineEntry(signature, *found[1:])
+    return found
 
 
 def _topic(code: Callable) -> str:
@@ -326,8 +372,8 @@ def _topic(code: Callable) -> str:
 def function(text: str) -> Callable[[Callable[..., object]], Callable[..., object]]:
     """Decorator: register a predefined function with signature ``text``."""
     def decorate(impl: Callable[..., object]) -> Callable[..., object]:
-        entry = register(text, impl, topic=_topic(impl))
-        if entry.signature.kind != FUNCTION:
+        table, _ = _declare(_Declared(text, impl, False, None, None, EXACT, _topic(impl)))
+        if table is not FUNCTIONS:
             raise SignatureSyntaxError(f"{text!r} declares no return type")
         return impl
     return decorate
@@ -336,8 +382,8 @@ def function(text: str) -> Callable[[Callable[..., object]], Callable[..., objec
 def procedure(text: str) -> Callable[[Callable[..., object]], Callable[..., object]]:
     """Decorator: register a predefined procedure (instruction) with signature ``text``."""
     def decorate(impl: Callable[..., object]) -> Callable[..., object]:
-        entry = register(text, impl, topic=_topic(impl))
-        if entry.signature.kind != PROCEDURE:
+        table, _ = _declare(_Declared(text, impl, False, None, None, EXACT, _topic(impl)))
+        if table is not PROCEDURES:
             raise SignatureSyntaxError(f"{text!r} declares a return type")
         return impl
     return decorate
@@ -353,7 +399,7 @@ def numeric(text: str) -> Callable[[Callable[[NumericKind], Callable[..., object
             return lambda name: {"Name": kind.convert(name + 1)}
     """
     def decorate(make: Callable[[NumericKind], Callable[..., object]]) -> object:
-        register(text, make(NUM), dnum_impl=make(DNUM), topic=_topic(make))
+        _declare(_Declared(text, make(NUM), False, make(DNUM), None, EXACT, _topic(make)))
         return make
     return decorate
 
@@ -370,7 +416,7 @@ def compiled(*texts: str, modelled: str = EXACT) -> Callable:
 
     def decorate(factory: Callable[..., object]) -> Callable[..., object]:
         for text in texts:
-            register(text, None, special=True, factory=factory, modelled=modelled, topic=topic)
+            _declare(_Declared(text, None, True, None, factory, modelled, topic))
         return factory
     return decorate
 
@@ -392,14 +438,14 @@ def lookup_function(key: str) -> Optional[RoutineEntry]:
     """The predefined function with canonical name ``key``, or None."""
     if not _loaded:
         _load()
-    return FUNCTIONS.get(key)
+    return _entry(FUNCTIONS, key)
 
 
 def lookup_procedure(key: str) -> Optional[RoutineEntry]:
     """The predefined procedure with canonical name ``key``, or None."""
     if not _loaded:
         _load()
-    return PROCEDURES.get(key)
+    return _entry(PROCEDURES, key)
 
 
 def all_entries() -> Iterator[RoutineEntry]:
@@ -407,4 +453,4 @@ def all_entries() -> Iterator[RoutineEntry]:
     _load()
     for table in (FUNCTIONS, PROCEDURES):
         for key in sorted(table):
-            yield table[key]
+            yield _entry(table, key)
