@@ -13,6 +13,7 @@ dispatches and turns errors into diagnostics and exit codes:
 from __future__ import annotations
 
 import argparse
+import gc
 import importlib
 import os
 import sys
@@ -61,12 +62,23 @@ def build_parser(command: Optional[str] = None) -> argparse.ArgumentParser:
 
 
 def _command_module(name: str):
+    """The module of a subcommand, imported with the cycle collector paused: what an
+    import makes (modules, classes, functions) lives as long as the process, so the
+    collector's passes over it at every few hundred objects are work for nothing
+    (``check``: some 50 passes, a few milliseconds of start-up); it is then frozen
+    (``gc.freeze``: out of the collector's reach), not handed back to be scanned."""
+    paused = gc.isenabled()
+    gc.disable()
     try:
         return importlib.import_module(f"rapidmc.commands.{name}")
     except ModuleNotFoundError as exc:
         if exc.name == f"rapidmc.commands.{name}":
             return None
         raise
+    finally:
+        if paused:
+            gc.freeze()
+            gc.enable()
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:

@@ -23,7 +23,7 @@ deadlocks those it expanded.
 from __future__ import annotations
 
 from array import array
-from typing import Hashable, Optional, Sequence
+from typing import Callable, Hashable, Optional, Sequence
 
 from .model import Label, Valuation, labelled_successors
 from .states import StateTable
@@ -53,16 +53,38 @@ class ExploredGraph:
 
     def add(self, state_id: int, state: Hashable, successor_ids: list[int]) -> None:
         """The row of ``state_id`` (the next id): its successors' ids in model order."""
-        if self.valuations:
-            self._evaluate(state)
-        targets = self.targets
-        if successor_ids:
-            targets.extend(successor_ids if len(successor_ids) == 1 else unique(successor_ids))
-            self.deadlocked.append(0)
-        else:
-            targets.append(state_id)
-            self.deadlocked.append(1)
-        self.starts.append(len(targets))
+        assert state_id == len(self.deadlocked), "rows are added in id order"
+        self.adder()(state, successor_ids)
+
+    def adder(self) -> Callable[[Hashable, list[int]], None]:
+        """``add`` for the search's hot loop: ``add(state, successor_ids)`` appends the row of
+        the next id (names bound once; the usual single valuation evaluated inline)."""
+        targets, starts, deadlocked = self.targets, self.starts, self.deadlocked
+        kept = self.valuations
+        evaluate = self._evaluate
+        only = next(iter(kept)) if len(kept) == 1 else None
+        values = kept[only] if only is not None else None
+
+        def add(state: Hashable, successor_ids: list[int]) -> None:
+            nonlocal values
+            if only is not None:
+                value = only(state)
+                try:
+                    values.append(value)
+                except OverflowError:
+                    values = kept[only] = wider(values, value)
+                    values.append(value)
+            elif kept:
+                evaluate(state)
+            if successor_ids:
+                targets.extend(successor_ids if len(successor_ids) == 1
+                               else unique(successor_ids))
+                deadlocked.append(0)
+            else:
+                targets.append(len(deadlocked))
+                deadlocked.append(1)
+            starts.append(len(targets))
+        return add
 
     def _evaluate(self, state: Hashable) -> None:
         """Append each kept valuation of ``state``."""

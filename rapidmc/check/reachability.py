@@ -164,7 +164,7 @@ class _BreadthFirst:
         labelled_while = targets_of is not None and hasattr(observe, "states") and not unlabelled
         parent, depth, budget = self.parent, self.depth, self.budget
         max_states = budget.max_states
-        record = self.graph.add if self.graph is not None else None
+        record = self.graph.adder() if self.graph is not None else None
         stored = len(table)
         frontier = 0
         while frontier < stored and budget.reason is None:
@@ -203,7 +203,7 @@ class _BreadthFirst:
                         return None
                 ids.append(successor_id)
             if record is not None:
-                record(frontier, state, ids)
+                record(state, ids)
             frontier += 1
         return None
 
