@@ -118,4 +118,10 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
 
 
 def console_main() -> None:
-    sys.exit(main())
+    code = main()
+    # The process ends: the collector's last full pass, at interpreter exit, would walk
+    # every object still alive for garbage nobody needs freed (``check`` on the counters,
+    # N=6: some 20 ms, a twentieth of the time to verdict).  Reports are written and
+    # closed by now; standard streams are flushed at exit as always.
+    gc.freeze()
+    sys.exit(code)

@@ -64,3 +64,43 @@ def test_the_command_list_still_names_every_command(tmp_path):
     from rapidmc.cli import SUBCOMMANDS, build_parser
     help_text = build_parser("check").format_help()
     assert all(name in help_text for name in SUBCOMMANDS)
+
+
+def test_check_parses_the_signatures_of_the_routines_it_looks_up_only(tmp_path):
+    (tmp_path / "tiny.mod").write_text(PROGRAM.replace("x := 1;", "x := Abs(-1);"))
+    script = ("import contextlib, io, json\n"
+              "from rapidmc.cli import main\n"
+              "from rapidmc.semantics.library import registry\n"
+              "with contextlib.redirect_stdout(io.StringIO()):\n"
+              "    code = main(['check', 'tiny.mod', '--formula', 'P: F \"x = 1\"', '--quiet'])\n"
+              "parsed = [key for table in (registry.FUNCTIONS, registry.PROCEDURES)\n"
+              "          for key, entry in table.items() if type(entry) is registry.RoutineEntry]\n"
+              "print(json.dumps([code, parsed, len(registry.FUNCTIONS) + len(registry.PROCEDURES)]))\n")
+    done = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, capture_output=True,
+                          text=True, check=True)
+    code, parsed, registered = json.loads(done.stdout.splitlines()[-1])
+    assert code == 0 and "ABS" in parsed
+    assert registered > 500 and len(parsed) < 20
+
+
+def test_the_console_script_writes_everything_and_exits_with_the_code(tmp_path):
+    """``console_main`` freezes the collector before the interpreter exits (its last pass
+    is work for nothing): every report is still complete."""
+    (tmp_path / "tiny.mod").write_text(PROGRAM)
+    done = subprocess.run([sys.executable, "-m", "rapidmc", "check", "tiny.mod", "--formula",
+                           'P: G "x = 0"', "--quiet", "--format", "json", "--junit", "out.xml"],
+                          cwd=tmp_path, capture_output=True, text=True)
+    assert done.returncode == 1
+    assert json.loads(done.stdout)["properties"][-1]["verdict"] == "VIOLATED"
+    assert (tmp_path / "out.xml").read_text().rstrip().endswith("</testsuites>")
+
+
+def test_the_console_script_freezes_the_collector_before_exiting(monkeypatch):
+    import gc
+    from rapidmc import cli
+    frozen = []
+    monkeypatch.setattr(cli, "main", lambda: 3)
+    monkeypatch.setattr(gc, "freeze", lambda: frozen.append(True))
+    with pytest.raises(SystemExit) as exited:
+        cli.console_main()
+    assert exited.value.code == 3 and frozen == [True]
