@@ -144,6 +144,11 @@ class RapidSystem:
             if after[0] is not frames and after[0] != frames or \
                     after[1] is not store and after[1] != store:
                 return False
+        return self._same_but_inputs(state, targets)
+
+    def _same_but_inputs(self, state: State, targets: Sequence[State]) -> bool:
+        """Whether every successor of the running ``state`` is ``state`` with other free
+        inputs (and, with merged steps, every single instruction's too)."""
         free = [index for index, _, _ in self.config.free_inputs]
         masked = _without_inputs(state, free)
         if not all(_without_inputs(after, free) == masked for after in targets):

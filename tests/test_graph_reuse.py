@@ -69,12 +69,19 @@ def report(argv: list[str], monkeypatch, reuse: bool) -> tuple[int, dict]:
     return code, without_measurements(json.loads(out.getvalue()))
 
 
-@pytest.mark.parametrize("case", verdict_cases(), ids=lambda case: case.name)
-def test_check_cases_report_the_same_with_and_without_the_reused_graph(case, monkeypatch):
+def case_arguments(case, monkeypatch) -> list[str]:
+    """A check case's arguments (run from its folder) without the format options that
+    ``report`` adds."""
     monkeypatch.chdir(case.folder)
     argv = case.argv()[1:]
-    at = argv.index("--format")      # without the format options report() adds
+    at = argv.index("--format")
     del argv[at:at + 3]
+    return argv
+
+
+@pytest.mark.parametrize("case", verdict_cases(), ids=lambda case: case.name)
+def test_check_cases_report_the_same_with_and_without_the_reused_graph(case, monkeypatch):
+    argv = case_arguments(case, monkeypatch)
     assert report(argv, monkeypatch, True) == report(argv, monkeypatch, False)
 
 

@@ -19,12 +19,12 @@ from rapidmc import api
 from rapidmc.check import find_reachable
 from rapidmc.coverage import StatementWatch
 from rapidmc.explored import ExploredFacts
-from rapidmc.model import RapidSystem, _without_inputs
+from rapidmc.model import RapidSystem
 from rapidmc.semantics.state import RUNNING
 
 from reduction_programs import properties, random_program
 from test_check_cases import verdict_cases
-from test_graph_reuse import COUNTERS, model_of, report
+from test_graph_reuse import COUNTERS, case_arguments, model_of, report
 
 DEAD_CODE = """MODULE Dead
   VAR num x := 0;
@@ -42,18 +42,7 @@ ENDMODULE
 
 def stuck_by_masking(system: RapidSystem, state, targets) -> bool:
     """``stuck_at`` as it was: every successor's inputs masked and compared."""
-    if state.status != RUNNING:
-        return False
-    free = [index for index, _, _ in system.config.free_inputs]
-    masked = _without_inputs(state, free)
-    if not all(_without_inputs(after, free) == masked for after in targets):
-        return False
-    if not system.config.merge_points:
-        return True
-    from rapidmc.semantics.step import successors
-    project = system.project or (lambda s: s)
-    return all(_without_inputs(project(t.state), free) == masked
-               for t in successors(system.program, state, system.plain_config))
+    return state.status == RUNNING and system._same_but_inputs(state, targets)
 
 
 def labelled_report(argv, monkeypatch):
@@ -66,10 +55,7 @@ def labelled_report(argv, monkeypatch):
 
 @pytest.mark.parametrize("case", verdict_cases(), ids=lambda case: case.name)
 def test_check_cases_report_the_same_with_and_without_labels(case, monkeypatch):
-    monkeypatch.chdir(case.folder)
-    argv = case.argv()[1:]
-    at = argv.index("--format")      # without the format options report() adds
-    del argv[at:at + 3]
+    argv = case_arguments(case, monkeypatch)
     assert report(argv, monkeypatch, True) == labelled_report(argv, monkeypatch)
 
 
