@@ -62,22 +62,26 @@ def build_parser(command: Optional[str] = None) -> argparse.ArgumentParser:
 
 
 def _command_module(name: str):
-    """The module of a subcommand, imported with the cycle collector paused: what an
-    import makes (modules, classes, functions) lives as long as the process, so the
-    collector's passes over it at every few hundred objects are work for nothing
-    (``check``: some 50 passes, a few milliseconds of start-up); it is then frozen
-    (``gc.freeze``: out of the collector's reach), not handed back to be scanned."""
-    paused = gc.isenabled()
-    gc.disable()
+    """The module of a subcommand, imported the first time with the cycle collector
+    paused: what an import makes (modules, classes, functions) lives as long as the
+    process, so the collector's passes over it at every few hundred objects are work for
+    nothing (``check``: some 50 passes, a few milliseconds of start-up).  Afterwards the
+    new objects join the oldest generation at once (freeze, then unfreeze), as parsing's
+    do (``syntax._garbage_collection_paused``): only full collections see them."""
+    module = f"rapidmc.commands.{name}"
+    paused = module not in sys.modules and gc.isenabled()
+    if paused:
+        gc.disable()
     try:
-        return importlib.import_module(f"rapidmc.commands.{name}")
+        return importlib.import_module(module)
     except ModuleNotFoundError as exc:
-        if exc.name == f"rapidmc.commands.{name}":
+        if exc.name == module:
             return None
         raise
     finally:
         if paused:
             gc.freeze()
+            gc.unfreeze()
             gc.enable()
 
 

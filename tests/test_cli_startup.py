@@ -104,3 +104,20 @@ def test_the_console_script_freezes_the_collector_before_exiting(monkeypatch):
     with pytest.raises(SystemExit) as exited:
         cli.console_main()
     assert exited.value.code == 3 and frozen == [True]
+
+
+def test_the_command_module_is_imported_without_collections_and_the_collector_runs_after(
+        tmp_path):
+    (tmp_path / "tiny.mod").write_text(PROGRAM)
+    script = ("import contextlib, gc, io, json\n"
+              "from rapidmc import cli\n"
+              "passes = []\n"
+              "gc.callbacks.append(lambda phase, info: passes.append(phase))\n"
+              "cli._command_module('check')\n"
+              "during = len(passes)\n"
+              "with contextlib.redirect_stdout(io.StringIO()):\n"
+              "    code = cli.main(['check', 'tiny.mod', '--quiet'])\n"
+              "print(json.dumps([code, during, gc.isenabled()]))\n")
+    done = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, capture_output=True,
+                          text=True, check=True)
+    assert json.loads(done.stdout.splitlines()[-1]) == [0, 0, True]
