@@ -59,9 +59,11 @@ class ModelStore:
             self._added(state_id, state)
         return state_id
 
-    def _added(self, state_id: int, state: Hashable) -> None:
-        """Book-keeping for a state just stored: its valuation; kept as handed over."""
-        valuation = self.valuation(state)
+    def _added(self, state_id: int, state: Hashable, valuation: int | None = None) -> None:
+        """Book-keeping for a state just stored: its valuation (computed unless given);
+        kept as handed over."""
+        if valuation is None:
+            valuation = self.valuation(state)
         try:
             self.valuations.append(valuation)
         except OverflowError:
@@ -91,14 +93,29 @@ class ModelStore:
             self.deadlocked.add(state_id)
             result: tuple[int, ...] = (state_id,)
         else:
-            table_intern, added = self.states.intern, self._added
+            # ``_added`` written out for the usual new state (the hot path)
+            table_intern, valuation, valuations = self.states.intern, self.valuation, \
+                self.valuations
+            fresh, keep = self._fresh, self._keep_new
+            limit = 1 << 8 * valuations.itemsize if type(valuations) is array else 0
             ids = []
             for target in successors:
                 target_id, new = table_intern(target)
                 if new:
-                    added(target_id, target)
+                    bits = valuation(target)
+                    if bits < limit and len(fresh) < keep:
+                        valuations.append(bits)
+                        fresh[target_id] = target
+                    else:
+                        self._added(target_id, target, bits)
+                        fresh, valuations = self._fresh, self.valuations
+                        limit = 1 << 8 * valuations.itemsize if type(valuations) is array \
+                            else 0
                 ids.append(target_id)
-            result = tuple(unique(ids))
+            if len(ids) == 1 or len(ids) == 2 and ids[0] != ids[1]:
+                result = tuple(ids)
+            else:
+                result = tuple(dict.fromkeys(ids))
         if len(cache) >= SUCCESSOR_CACHE_SIZE:
             # Start afresh rather than evict one by one: deleting the oldest
             # entry of a dict makes each later next(iter(dict)) slower.

@@ -346,9 +346,60 @@ def plain_successor_states(program, state: State, config: CheckConfig) -> Option
     """The target states of ``step.successors`` at a running plain state the fused step
     takes, in order, for a search that needs nothing else (labels are needed only to
     rebuild a counterexample, which asks ``step.successors``); None at any other state."""
-    if state[7] != RUNNING or not is_plain(program, state, config):
+    if state[7] != RUNNING or state[10] or config.free_inputs or \
+            program.environment_react is not None:
+        return None                      # (``is_plain``, its tests written out: a hot path)
+    interrupts = state[4]
+    if interrupts[0] or interrupts[1] or interrupts[3]:
         return None
-    return _fused_steps(program, state, config, False)
+    frames = state[0]
+    frame = frames[-1]
+    if frame[3] or frame[5]:
+        return None                              # in a handler, or counting RETRYs
+    cached = config.fused
+    if cached is None or cached[0] is not config.merge_points or cached[1] is not program:
+        fused = _fused(program, config, frame[0])
+    else:
+        fused = cached[2].get(frame[0], _fused)
+        if fused is _fused:
+            fused = _fused(program, config, frame[0])
+    if fused is None:
+        return None
+    pc = frame[1]
+    enter = fused.entries[pc]
+    if enter is None:
+        if not fused.starts[pc]:
+            return None
+        enter = fused.entry(pc, False)
+    # ``_fused_steps`` unlabelled, for the usual case of at most one choice per step
+    routine, locals_, handling = frame[0], frame[2], frame[3:]
+    store, rest, io = state[1], state[2:], state[2]
+    below = frames[:-1]
+    lazy = config.lazy_inputs
+    result = []
+    script = []
+    spans: list = []                    # (not read: an entry too long to write out notes them)
+    try:
+        while True:
+            sizes = []
+            after, new_store, new_locals = enter(store, locals_,
+                                                 [io, lazy, None, sizes, script, None], spans)
+            new_frame = _new_tuple(Frame, (routine, after, new_locals) + handling)
+            result.append(_new_tuple(State, ((*below, new_frame) if below else (new_frame,),
+                                             new_store) + rest))
+            if not sizes:
+                return result
+            if len(sizes) == 1:                  # one choice (the usual): its next value
+                following = script[0] + 1 if script else 1
+                if following >= sizes[0]:
+                    return result
+                script = [following]
+            else:
+                script = next_script(script, sizes)
+                if script is None:
+                    return result
+    except (RapidError, Fallback):
+        return None
 
 
 def _fused_steps(program, state: State, config: CheckConfig, labelled: bool):
