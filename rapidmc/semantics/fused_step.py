@@ -27,7 +27,6 @@ from .choosers import CheckConfig, next_script
 from .errors import RapidError
 from .expressions import read_signal
 from .instructions import Action, Branch, ForInit, ForNext, Jump, TestDispatch
-from .plain_step import is_plain
 from .state import RUNNING, Frame, State, Transition
 
 _new_tuple = tuple.__new__
@@ -333,36 +332,54 @@ def _fused(program, config: CheckConfig, routine: int) -> Optional[FusedRoutine]
 def fused_successors(program, state: State, config: CheckConfig) -> Optional[list[Transition]]:
     """The transitions of a plain state (``plain_step.is_plain``) through its routine's
     fused function, or None when the step needs the general machinery."""
-    return _fused_steps(program, state, config, True)
+    frames = state[0]
+    frame = frames[-1]
+    if frame[3] or frame[5]:
+        return None                              # in a handler, or counting RETRYs
+    fused = _fused(program, config, frame[0])
+    if fused is None:
+        return None
+    pc = frame[1]
+    enter = fused.labelled_entries[pc]
+    if enter is None:
+        if not fused.starts[pc]:
+            return None
+        enter = fused.entry(pc, True)
+    routine, locals_, handling = frame[0], frame[2], frame[3:]
+    store, rest = state[1], state[2:]
+    io = state[2]
+    below = frames[:-1]
+    lazy = config.lazy_inputs
+    result = []
+    script = []
+    try:
+        while script is not None:
+            sizes = []
+            choices = []
+            spans = []
+            after, new_store, new_locals = enter(
+                store, locals_, [io, lazy, None, sizes, script, choices], spans)
+            new_frame = _new_tuple(Frame, (routine, after, new_locals) + handling)
+            new_state = _new_tuple(State, (below + (new_frame,) if below else (new_frame,),
+                                           new_store) + rest)
+            span = spans[0] if len(spans) == 1 else tuple(spans)
+            result.append(_new_tuple(Transition, (tuple(choices), span, new_state, "", False)))
+            if not sizes:
+                break
+            script = _next_script(script, sizes)
+    except (RapidError, Fallback):
+        return None
+    return result
 
 
 def fused_successor_states(program, state: State, config: CheckConfig) -> Optional[list[State]]:
     """The target states of ``fused_successors``, in its order, without building the
     transitions (labels, spans) around them; None when it is None."""
-    return _fused_steps(program, state, config, False)
-
-
-def plain_successor_states(program, state: State, config: CheckConfig) -> Optional[list[State]]:
-    """The target states of ``step.successors`` at a running plain state the fused step
-    takes, in order, for a search that needs nothing else (labels are needed only to
-    rebuild a counterexample, which asks ``step.successors``); None at any other state."""
-    if state[7] != RUNNING or state[10] or config.free_inputs or \
-            program.environment_react is not None:
-        return None                      # (``is_plain``, its tests written out: a hot path)
-    interrupts = state[4]
-    if interrupts[0] or interrupts[1] or interrupts[3]:
-        return None
     frames = state[0]
     frame = frames[-1]
     if frame[3] or frame[5]:
         return None                              # in a handler, or counting RETRYs
-    cached = config.fused
-    if cached is None or cached[0] is not config.merge_points or cached[1] is not program:
-        fused = _fused(program, config, frame[0])
-    else:
-        fused = cached[2].get(frame[0], _fused)
-        if fused is _fused:
-            fused = _fused(program, config, frame[0])
+    fused = _fused(program, config, frame[0])
     if fused is None:
         return None
     pc = frame[1]
@@ -371,7 +388,6 @@ def plain_successor_states(program, state: State, config: CheckConfig) -> Option
         if not fused.starts[pc]:
             return None
         enter = fused.entry(pc, False)
-    # ``_fused_steps`` unlabelled, for the usual case of at most one choice per step
     routine, locals_, handling = frame[0], frame[2], frame[3:]
     store, rest, io = state[1], state[2:], state[2]
     below = frames[:-1]
@@ -389,7 +405,7 @@ def plain_successor_states(program, state: State, config: CheckConfig) -> Option
                                              new_store) + rest))
             if not sizes:
                 return result
-            if len(sizes) == 1:                  # one choice (the usual): its next value
+            if len(sizes) == 1:                  # (``_next_script`` written out: a hot path)
                 following = script[0] + 1 if script else 1
                 if following >= sizes[0]:
                     return result
@@ -402,53 +418,22 @@ def plain_successor_states(program, state: State, config: CheckConfig) -> Option
         return None
 
 
-def _fused_steps(program, state: State, config: CheckConfig, labelled: bool):
-    """``fused_successors`` (``labelled``) or ``fused_successor_states``: one loop over
-    the choice scripts, each running the routine's fused function once."""
-    frames = state[0]
-    frame = frames[-1]
-    if frame[3] or frame[5]:
-        return None                              # in a handler, or counting RETRYs
-    fused = _fused(program, config, frame[0])
-    if fused is None:
+def plain_successor_states(program, state: State, config: CheckConfig) -> Optional[list[State]]:
+    """The target states of ``step.successors`` at a running plain state the fused step
+    takes, in order, for a search that needs nothing else (labels are needed only to
+    rebuild a counterexample, which asks ``step.successors``); None at any other state."""
+    if state[7] != RUNNING or state[10] or config.free_inputs or \
+            program.environment_react is not None:
+        return None                      # (``is_plain``, its tests written out: a hot path)
+    interrupts = state[4]
+    if interrupts[0] or interrupts[1] or interrupts[3]:
         return None
-    pc = frame[1]
-    enter = (fused.labelled_entries if labelled else fused.entries)[pc]
-    if enter is None:
-        if not fused.starts[pc]:
-            return None
-        enter = fused.entry(pc, labelled)
-    routine, locals_, handling = frame[0], frame[2], frame[3:]
-    store, rest = state[1], state[2:]
-    io = state[2]
-    below = frames[:-1]
-    lazy = config.lazy_inputs
-    result = []
-    script = []
-    choices = None
-    spans = []                          # (only read when ``labelled``)
-    try:
-        while script is not None:
-            sizes = []
-            if labelled:
-                choices = []
-                spans = []
-            after, new_store, new_locals = enter(
-                store, locals_, [io, lazy, None, sizes, script, choices], spans)
-            new_frame = _new_tuple(Frame, (routine, after, new_locals) + handling)
-            new_state = _new_tuple(State, (below + (new_frame,) if below else (new_frame,),
-                                           new_store) + rest)
-            if labelled:
-                span = spans[0] if len(spans) == 1 else tuple(spans)
-                new_state = _new_tuple(Transition, (tuple(choices), span, new_state, "", False))
-            result.append(new_state)
-            if not sizes:
-                break
-            if len(sizes) == 1:                  # one choice (the usual): its next value
-                following = script[0] + 1 if script else 1
-                script = [following] if following < sizes[0] else None
-            else:
-                script = next_script(script, sizes)
-    except (RapidError, Fallback):
-        return None
-    return result
+    return fused_successor_states(program, state, config)
+
+
+def _next_script(script: list, sizes: list) -> Optional[list]:
+    """The choices of the next transition after ``script`` (None after the last)."""
+    if len(sizes) == 1:                  # one choice (the usual): its next value
+        following = script[0] + 1 if script else 1
+        return [following] if following < sizes[0] else None
+    return next_script(script, sizes)
