@@ -329,26 +329,32 @@ def _fused(program, config: CheckConfig, routine: int) -> Optional[FusedRoutine]
         return fused
 
 
-def fused_successors(program, state: State, config: CheckConfig) -> Optional[list[Transition]]:
-    """The transitions of a plain state (``plain_step.is_plain``) through its routine's
-    fused function, or None when the step needs the general machinery."""
-    frames = state[0]
-    frame = frames[-1]
+def _entry(program, config: CheckConfig, frame: Frame, labelled: bool):
+    """The fused entry that runs a step of ``frame`` (``FusedRoutine.entry``), or None
+    when the step needs the general machinery."""
     if frame[3] or frame[5]:
         return None                              # in a handler, or counting RETRYs
     fused = _fused(program, config, frame[0])
     if fused is None:
         return None
     pc = frame[1]
-    enter = fused.labelled_entries[pc]
+    enter = (fused.labelled_entries if labelled else fused.entries)[pc]
     if enter is None:
         if not fused.starts[pc]:
             return None
-        enter = fused.entry(pc, True)
+        enter = fused.entry(pc, labelled)
+    return enter
+
+
+def fused_successors(program, state: State, config: CheckConfig) -> Optional[list[Transition]]:
+    """The transitions of a plain state (``plain_step.is_plain``) through its routine's
+    fused function, or None when the step needs the general machinery."""
+    below, frame = state[0][:-1], state[0][-1]
+    enter = _entry(program, config, frame, True)
+    if enter is None:
+        return None
     routine, locals_, handling = frame[0], frame[2], frame[3:]
-    store, rest = state[1], state[2:]
-    io = state[2]
-    below = frames[:-1]
+    store, rest, io = state[1], state[2:], state[2]
     lazy = config.lazy_inputs
     result = []
     script = []
@@ -377,17 +383,9 @@ def fused_successor_states(program, state: State, config: CheckConfig) -> Option
     transitions (labels, spans) around them; None when it is None."""
     frames = state[0]
     frame = frames[-1]
-    if frame[3] or frame[5]:
-        return None                              # in a handler, or counting RETRYs
-    fused = _fused(program, config, frame[0])
-    if fused is None:
-        return None
-    pc = frame[1]
-    enter = fused.entries[pc]
+    enter = _entry(program, config, frame, False)
     if enter is None:
-        if not fused.starts[pc]:
-            return None
-        enter = fused.entry(pc, False)
+        return None
     routine, locals_, handling = frame[0], frame[2], frame[3:]
     store, rest, io = state[1], state[2:], state[2]
     below = frames[:-1]
