@@ -1,21 +1,28 @@
 """The search's fast paths change nothing a check reports (differential tests).
 
 A check's fast paths: target states without labels (``successor_states``),
-the fused step's entries, the generated valuation of atoms (``fused_atoms``)
-and states collapsed into component ids (``check.states``).  Each test runs
+the fused step's entries, the generated valuation of atoms (``fused_atoms``),
+states collapsed into component ids (``check.states``), the product's guard
+tables (``Product.tables``, written out in the emptiness search) and the
+successor cache dropped where it does not pay (``ModelStore``).  Each test runs
 every property of generated programs twice, once as the search runs it and
 once with all of those off (labels built and dropped, states kept whole,
-every atom evaluated on a ``Machine``), and compares verdicts, state and
-transition counts and the counterexample lassos.  The fused step's entries
+every atom evaluated on a ``Machine``, automaton edges tested one by one),
+and compares verdicts, state and transition counts and the counterexample
+lassos; the guard tables and the successor cache also alone.  The fused step's entries
 are also run with so small a line budget that they go on in the dispatch
 loop after one block.
 """
 from __future__ import annotations
 
+from unittest import mock
+
 import pytest
 
 from rapidmc import api
-from rapidmc.check import check_property
+from rapidmc.check import check_property, product, store
+from rapidmc.check.budget import SearchBudget
+from rapidmc.check.emptiness import search_accepting_cycle
 from rapidmc.model import RapidSystem
 from rapidmc.reduction import ALL, NONE
 from rapidmc.semantics import fused_step
@@ -40,7 +47,8 @@ def outcomes(model, system, fast: bool) -> list:
     for _, buchi, valuation in model.jobs:
         if not fast:
             valuation = model.atoms.valuation(buchi.atoms, {}, memo=False)
-        result = check_property(system, buchi, valuation, max_states=MAX_STATES)
+        with mock.patch.object(product, "TABLE_LIMIT", product.TABLE_LIMIT if fast else 0):
+            result = check_property(system, buchi, valuation, max_states=MAX_STATES)
         lasso = [(step.label, step.state, step.automaton_state)
                  for step in result.prefix + result.cycle]
         found.append((result.verdict, result.stats.product_states, result.stats.transitions,
@@ -79,3 +87,42 @@ def test_entries_past_their_budget_agree(tmp_path, monkeypatch, reductions):
         plain, fused = compare_drivers(program, formulas('b: G "n < 5"' if text is FUSED_FORMS
                                                          else 'b: G "c0 < 4"'), reductions)
         assert fused > 0
+
+
+def assert_alike_with(program, props, module, **values) -> None:
+    """The checks of ``props`` as the search runs them and with ``module``'s attributes
+    set to ``values``."""
+    model = api.prepare(program, props, api.CheckOptions(reductions=ALL))
+    usual = outcomes(model, model.system, True)
+    with mock.patch.multiple(module, **values):
+        patched = api.prepare(program, props, api.CheckOptions(reductions=ALL))
+        assert outcomes(patched, patched.system, True) == usual
+
+
+@pytest.mark.parametrize("seed", range(0, 16, 3))
+def test_guard_tables_check_alike(tmp_path, seed):
+    """Automaton successors from the guard tables, or each edge's guard tested."""
+    program = load(tmp_path, random_program(seed))
+    assert_alike_with(program, formulas(*properties(seed, with_next=True)), product,
+                      TABLE_LIMIT=0)
+
+
+@pytest.mark.parametrize("seed", range(1, 16, 3))
+def test_successor_cache_reviews_check_alike(tmp_path, seed):
+    """The successor cache dropped and tried again every few expansions, or always kept."""
+    program = load(tmp_path, random_program(seed))
+    assert_alike_with(program, formulas(*properties(seed, with_next=True)), store,
+                      CACHE_TRIAL=2, CACHE_WORTH=1, CACHE_REST=3)
+
+
+def test_successor_cache_dropped_where_it_does_not_pay(tmp_path, monkeypatch):
+    """A safety property that holds pairs each state with one automaton state: no hits."""
+    monkeypatch.setattr(store, "CACHE_TRIAL", 16)
+    program = load(tmp_path, counters(3))
+    model = api.prepare(program, formulas('b: G "c0 < 4"'), api.CheckOptions(reductions=ALL))
+    _, buchi, valuation = model.jobs[0]
+    states = store.ModelStore(model.system, valuation)
+    found = search_accepting_cycle(product.Product(states, buchi),
+                                   SearchBudget(MAX_STATES, None, None))
+    assert found.verdict == "HOLDS"
+    assert len(states) > 16 and not states._caching

@@ -18,6 +18,7 @@ from .result import LassoStep
 from .store import ModelStore
 
 MOVES_KEPT = 1 << 12        # remembered valuations per automaton state
+TABLE_LIMIT = 1 << 12       # a guard table per automaton state up to this many entries
 
 
 class Product:
@@ -34,6 +35,15 @@ class Product:
         self.accepting = bytearray(self.width)
         for q in buchi.accepting:
             self.accepting[q] = 1
+        # the guard tables: per automaton state, indexed by a valuation's bits that some
+        # guard reads (``valuation & read``), the distinct targets (``moves``); None when
+        # the guards read too many bits, to keep the tables small
+        self.read = 0
+        for out in self.edges:
+            for positive, negative, _ in out:
+                self.read |= positive | negative
+        self.tables = None if self.read >= TABLE_LIMIT else \
+            [self._guard_table(q) for q in range(len(self.edges))]
 
     def key(self, state_id: int, automaton_state: int) -> int:
         return state_id * self.width + automaton_state
@@ -58,6 +68,13 @@ class Product:
         found = moves[valuation] = tuple(dict.fromkeys(self.targets(automaton_state, valuation)))
         return found
 
+    def _guard_table(self, automaton_state: int) -> list[tuple[int, ...]]:
+        """``moves(automaton_state, v)`` for every ``v`` up to ``read`` (equal ones shared)."""
+        shared: dict[tuple[int, ...], tuple[int, ...]] = {}
+        return [shared.setdefault(targets, targets) for targets in
+                (tuple(dict.fromkeys(self.targets(automaton_state, valuation)))
+                 for valuation in range(self.read + 1))]
+
     def initial_keys(self) -> list[int]:
         if not self.edges:
             return []
@@ -72,6 +89,15 @@ class Product:
         """Distinct product successors of ``key`` in deterministic order (the hot path)."""
         width = self.width
         state_id, q = divmod(key, width)
+        if self.tables is not None:          # the guard table of ``q``: one index per target
+            table, read = self.tables[q], self.read
+            valuations = self.store.valuations
+            keys = []
+            for target_id in self.store.successor_ids(state_id):
+                base = target_id * width
+                for target in table[valuations[target_id] & read]:
+                    keys.append(base + target)
+            return keys
         known = self._moves[q]
         valuations = self.store.valuations
         keys = []

@@ -7,6 +7,12 @@ Valuations are computed once per model state.  Successor ids are cached
 for recently expanded states, because the emptiness search expands the
 same model state once per automaton state it is paired with, often in
 quick succession (and the model's step function is the expensive part).
+Where few states are paired with more than one automaton state (a safety
+property that holds: each once), the cache costs more than it saves, so
+it is reviewed every ``CACHE_TRIAL`` expansions: with fewer than one hit
+in ``CACHE_WORTH`` it is dropped for ``CACHE_REST`` expansions, then tried
+again.  (The cache changes no result: the ids of a state's successors are
+the same however often they are computed.)
 The states last found new are kept as the model handed them over (up to
 ``FRESH_STATES``): the depth-first search expands most of them soon after,
 and then needs not rebuild them from their components.
@@ -23,6 +29,9 @@ from .model import Label, TransitionSystem, Valuation, as_sequence, labelled_suc
 from .states import StateTable
 
 SUCCESSOR_CACHE_SIZE = 1 << 16
+CACHE_TRIAL = 1 << 12        # expansions with the successor cache, then a review
+CACHE_WORTH = 8              # kept while at least one expansion in this many hits it
+CACHE_REST = 1 << 15         # expansions without it when it did not pay
 FRESH_STATES = 1 << 13
 VALUATION_TYPES = ("B", "H", "I", "Q")     # array types for up to 8, 16, 32, 64 atoms
 
@@ -39,6 +48,10 @@ class ModelStore:
         self.valuations = array(VALUATION_TYPES[0])    # the narrowest that holds them
         self.deadlocked: set[int] = set()
         self._successor_cache: dict[int, tuple[int, ...]] = {}
+        self._caching = True                 # whether successors are cached now
+        self._hits = 0                       # cache hits since the last review
+        self._expansions = 0                 # successors computed
+        self._review_at = CACHE_TRIAL        # ... when the cache is reviewed next
         self._fresh: dict[int, Hashable] = {}     # id -> new state, not expanded yet
         self._keep_new = keep_new                  # at most that many (0: none)
         # the target states of a state's transitions (labels are not needed here)
@@ -59,9 +72,11 @@ class ModelStore:
             self._added(state_id, state)
         return state_id
 
-    def _added(self, state_id: int, state: Hashable) -> None:
-        """Book-keeping for a state just stored: its valuation; kept as handed over."""
-        valuation = self.valuation(state)
+    def _added(self, state_id: int, state: Hashable, valuation: int | None = None) -> None:
+        """Book-keeping for a state just stored: its valuation (computed unless given);
+        kept as handed over."""
+        if valuation is None:
+            valuation = self.valuation(state)
         try:
             self.valuations.append(valuation)
         except OverflowError:
@@ -80,9 +95,11 @@ class ModelStore:
     def successor_ids(self, state_id: int) -> tuple[int, ...]:
         """Distinct successor ids in model order; a deadlocked state is its own successor."""
         cache = self._successor_cache
-        cached = cache.get(state_id)
-        if cached is not None:
-            return cached
+        if self._caching:
+            cached = cache.get(state_id)
+            if cached is not None:
+                self._hits += 1
+                return cached
         state = self._fresh.pop(state_id, None)
         if state is None:
             state = self.states[state_id]
@@ -91,20 +108,52 @@ class ModelStore:
             self.deadlocked.add(state_id)
             result: tuple[int, ...] = (state_id,)
         else:
-            table_intern, added = self.states.intern, self._added
+            # ``_added`` written out for the usual new state (the hot path)
+            table_intern, valuation, valuations = self.states.intern, self.valuation, \
+                self.valuations
+            fresh, keep = self._fresh, self._keep_new
+            limit = 1 << 8 * valuations.itemsize if type(valuations) is array else 0
             ids = []
             for target in successors:
                 target_id, new = table_intern(target)
                 if new:
-                    added(target_id, target)
+                    bits = valuation(target)
+                    if bits < limit and len(fresh) < keep:
+                        valuations.append(bits)
+                        fresh[target_id] = target
+                    else:
+                        self._added(target_id, target, bits)
+                        fresh, valuations = self._fresh, self.valuations
+                        limit = 1 << 8 * valuations.itemsize if type(valuations) is array \
+                            else 0
                 ids.append(target_id)
-            result = tuple(unique(ids))
-        if len(cache) >= SUCCESSOR_CACHE_SIZE:
-            # Start afresh rather than evict one by one: deleting the oldest
-            # entry of a dict makes each later next(iter(dict)) slower.
-            cache.clear()
-        cache[state_id] = result
+            if len(ids) == 1 or len(ids) == 2 and ids[0] != ids[1]:
+                result = tuple(ids)
+            else:
+                result = tuple(dict.fromkeys(ids))
+        if self._caching:
+            if len(cache) >= SUCCESSOR_CACHE_SIZE:
+                # Start afresh rather than evict one by one: deleting the oldest
+                # entry of a dict makes each later next(iter(dict)) slower.
+                cache.clear()
+            cache[state_id] = result
+        self._expansions += 1
+        if self._expansions >= self._review_at:
+            self._review_cache()
         return result
+
+    def _review_cache(self) -> None:
+        """Keep the successor cache, drop it, or try it again (see the module docstring)."""
+        if not self._caching:
+            self._caching, self._hits = True, 0
+            self._review_at = self._expansions + CACHE_TRIAL
+        elif self._hits * CACHE_WORTH < CACHE_TRIAL:
+            self._caching = False
+            self._successor_cache.clear()
+            self._review_at = self._expansions + CACHE_REST
+        else:
+            self._hits = 0
+            self._review_at = self._expansions + CACHE_TRIAL
 
     def memory_bytes(self) -> int:
         """Bytes of the stored states and their valuations (the successor cache excluded)."""

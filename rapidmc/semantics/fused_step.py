@@ -27,7 +27,6 @@ from .choosers import CheckConfig, next_script
 from .errors import RapidError
 from .expressions import read_signal
 from .instructions import Action, Branch, ForInit, ForNext, Jump, TestDispatch
-from .plain_step import is_plain
 from .state import RUNNING, Frame, State, Transition
 
 _new_tuple = tuple.__new__
@@ -330,32 +329,9 @@ def _fused(program, config: CheckConfig, routine: int) -> Optional[FusedRoutine]
         return fused
 
 
-def fused_successors(program, state: State, config: CheckConfig) -> Optional[list[Transition]]:
-    """The transitions of a plain state (``plain_step.is_plain``) through its routine's
-    fused function, or None when the step needs the general machinery."""
-    return _fused_steps(program, state, config, True)
-
-
-def fused_successor_states(program, state: State, config: CheckConfig) -> Optional[list[State]]:
-    """The target states of ``fused_successors``, in its order, without building the
-    transitions (labels, spans) around them; None when it is None."""
-    return _fused_steps(program, state, config, False)
-
-
-def plain_successor_states(program, state: State, config: CheckConfig) -> Optional[list[State]]:
-    """The target states of ``step.successors`` at a running plain state the fused step
-    takes, in order, for a search that needs nothing else (labels are needed only to
-    rebuild a counterexample, which asks ``step.successors``); None at any other state."""
-    if state[7] != RUNNING or not is_plain(program, state, config):
-        return None
-    return _fused_steps(program, state, config, False)
-
-
-def _fused_steps(program, state: State, config: CheckConfig, labelled: bool):
-    """``fused_successors`` (``labelled``) or ``fused_successor_states``: one loop over
-    the choice scripts, each running the routine's fused function once."""
-    frames = state[0]
-    frame = frames[-1]
+def _entry(program, config: CheckConfig, frame: Frame, labelled: bool):
+    """The fused entry that runs a step of ``frame`` (``FusedRoutine.entry``), or None
+    when the step needs the general machinery."""
     if frame[3] or frame[5]:
         return None                              # in a handler, or counting RETRYs
     fused = _fused(program, config, frame[0])
@@ -367,37 +343,95 @@ def _fused_steps(program, state: State, config: CheckConfig, labelled: bool):
         if not fused.starts[pc]:
             return None
         enter = fused.entry(pc, labelled)
+    return enter
+
+
+def fused_successors(program, state: State, config: CheckConfig) -> Optional[list[Transition]]:
+    """The transitions of a plain state (``plain_step.is_plain``) through its routine's
+    fused function, or None when the step needs the general machinery."""
+    below, frame = state[0][:-1], state[0][-1]
+    enter = _entry(program, config, frame, True)
+    if enter is None:
+        return None
     routine, locals_, handling = frame[0], frame[2], frame[3:]
-    store, rest = state[1], state[2:]
-    io = state[2]
-    below = frames[:-1]
+    store, rest, io = state[1], state[2:], state[2]
     lazy = config.lazy_inputs
     result = []
     script = []
-    choices = None
-    spans = []                          # (only read when ``labelled``)
     try:
         while script is not None:
             sizes = []
-            if labelled:
-                choices = []
-                spans = []
+            choices = []
+            spans = []
             after, new_store, new_locals = enter(
                 store, locals_, [io, lazy, None, sizes, script, choices], spans)
             new_frame = _new_tuple(Frame, (routine, after, new_locals) + handling)
             new_state = _new_tuple(State, (below + (new_frame,) if below else (new_frame,),
                                            new_store) + rest)
-            if labelled:
-                span = spans[0] if len(spans) == 1 else tuple(spans)
-                new_state = _new_tuple(Transition, (tuple(choices), span, new_state, "", False))
-            result.append(new_state)
+            span = spans[0] if len(spans) == 1 else tuple(spans)
+            result.append(_new_tuple(Transition, (tuple(choices), span, new_state, "", False)))
             if not sizes:
                 break
-            if len(sizes) == 1:                  # one choice (the usual): its next value
-                following = script[0] + 1 if script else 1
-                script = [following] if following < sizes[0] else None
-            else:
-                script = next_script(script, sizes)
+            script = _next_script(script, sizes)
     except (RapidError, Fallback):
         return None
     return result
+
+
+def fused_successor_states(program, state: State, config: CheckConfig) -> Optional[list[State]]:
+    """The target states of ``fused_successors``, in its order, without building the
+    transitions (labels, spans) around them; None when it is None."""
+    frames = state[0]
+    frame = frames[-1]
+    enter = _entry(program, config, frame, False)
+    if enter is None:
+        return None
+    routine, locals_, handling = frame[0], frame[2], frame[3:]
+    store, rest, io = state[1], state[2:], state[2]
+    below = frames[:-1]
+    lazy = config.lazy_inputs
+    result = []
+    script = []
+    spans: list = []                    # (not read: an entry too long to write out notes them)
+    try:
+        while True:
+            sizes = []
+            after, new_store, new_locals = enter(store, locals_,
+                                                 [io, lazy, None, sizes, script, None], spans)
+            new_frame = _new_tuple(Frame, (routine, after, new_locals) + handling)
+            result.append(_new_tuple(State, ((*below, new_frame) if below else (new_frame,),
+                                             new_store) + rest))
+            if not sizes:
+                return result
+            if len(sizes) == 1:                  # (``_next_script`` written out: a hot path)
+                following = script[0] + 1 if script else 1
+                if following >= sizes[0]:
+                    return result
+                script = [following]
+            else:
+                script = next_script(script, sizes)
+                if script is None:
+                    return result
+    except (RapidError, Fallback):
+        return None
+
+
+def plain_successor_states(program, state: State, config: CheckConfig) -> Optional[list[State]]:
+    """The target states of ``step.successors`` at a running plain state the fused step
+    takes, in order, for a search that needs nothing else (labels are needed only to
+    rebuild a counterexample, which asks ``step.successors``); None at any other state."""
+    if state[7] != RUNNING or state[10] or config.free_inputs or \
+            program.environment_react is not None:
+        return None                      # (``is_plain``, its tests written out: a hot path)
+    interrupts = state[4]
+    if interrupts[0] or interrupts[1] or interrupts[3]:
+        return None
+    return fused_successor_states(program, state, config)
+
+
+def _next_script(script: list, sizes: list) -> Optional[list]:
+    """The choices of the next transition after ``script`` (None after the last)."""
+    if len(sizes) == 1:                  # one choice (the usual): its next value
+        following = script[0] + 1 if script else 1
+        return [following] if following < sizes[0] else None
+    return next_script(script, sizes)
