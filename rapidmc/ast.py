@@ -17,10 +17,51 @@ Example::
 from __future__ import annotations
 
 from dataclasses import dataclass, field, fields, is_dataclass
-from typing import Iterator, Optional, Union
+from operator import attrgetter
+from typing import Callable, Iterator, Optional, Union
+
+# Node class -> the fields ``==`` compares (and ``hash`` hashes), read as one tuple.
+_COMPARED: dict[type, Callable[[object], tuple]] = {}
+_SHOWN: dict[type, tuple[str, ...]] = {}
 
 
-@dataclass(frozen=True, slots=True)
+def node(cls: type) -> type:
+    """A frozen dataclass with slots, whose ``==``, ``hash`` and ``repr`` are those
+    ``dataclass`` would generate for it (same results, same hash values) but shared by
+    every node class: generating them per class was half the cost of importing this
+    module.  ``dataclasses.fields``, ``replace`` and pattern matching see a dataclass."""
+    cls.__eq__, cls.__hash__, cls.__repr__ = _node_eq, _node_hash, _node_repr
+    made = dataclass(frozen=True, slots=True, eq=False, repr=False)(cls)
+    compared = [f.name for f in fields(made) if f.compare]
+    assert compared == [f.name for f in fields(made)
+                        if (f.compare if f.hash is None else f.hash)], "hash differs from =="
+    _COMPARED[made] = attrgetter(*compared) if len(compared) > 1 else _one_tuple(compared[0])
+    _SHOWN[made] = tuple(f.name for f in fields(made) if f.repr)
+    return made
+
+
+def _one_tuple(name: str) -> Callable[[object], tuple]:
+    read = attrgetter(name)
+    return lambda value: (read(value),)
+
+
+def _node_eq(self, other):
+    if other.__class__ is self.__class__:
+        key = _COMPARED[self.__class__]
+        return key(self) == key(other)
+    return NotImplemented
+
+
+def _node_hash(self) -> int:
+    return hash(_COMPARED[self.__class__](self))
+
+
+def _node_repr(self) -> str:
+    shown = ", ".join(f"{name}={getattr(self, name)!r}" for name in _SHOWN[self.__class__])
+    return f"{self.__class__.__qualname__}({shown})"
+
+
+@node
 class Span:
     """A position in a source file (1-based line and column)."""
 
@@ -42,7 +83,7 @@ def canonical(text: str) -> str:
     return text.upper()
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Name:
     """An identifier as written, with its canonical key."""
 
@@ -63,7 +104,7 @@ class Name:
 # --------------------------------------------------------------------------
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class NumLiteral:
     """A numeric literal; ``value`` is an exact int or a float, ``text`` as written."""
 
@@ -72,7 +113,7 @@ class NumLiteral:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class StringLiteral:
     """A string literal with escapes (``""``, ``\\\\``, ``\\hh``) already decoded."""
 
@@ -80,13 +121,13 @@ class StringLiteral:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class BoolLiteral:
     value: bool
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class NameRef:
     """A reference to a data object, parameter, constant or signal by name."""
 
@@ -94,7 +135,7 @@ class NameRef:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Index:
     """Array element ``base{i, j}``."""
 
@@ -103,7 +144,7 @@ class Index:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Component:
     """Record component ``base.name``."""
 
@@ -112,7 +153,7 @@ class Component:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class FunctionCall:
     """``name(args)``: a predefined or user function."""
 
@@ -121,7 +162,7 @@ class FunctionCall:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Unary:
     """``op operand`` where op is ``'-'``, ``'+'`` or ``'NOT'``."""
 
@@ -130,7 +171,7 @@ class Unary:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Binary:
     """``left op right``; op is upper case: ``+ - * / DIV MOD < <= = > >= <> AND OR XOR``."""
 
@@ -140,7 +181,7 @@ class Binary:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Aggregate:
     """``[e1, e2, ...]``: its type comes from the context."""
 
@@ -148,7 +189,7 @@ class Aggregate:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Placeholder:
     """An editor placeholder such as ``<EXP>``; executing one raises ERR_EXECPHR."""
 
@@ -172,7 +213,7 @@ SWITCH = "switch"            # \Name          (no value)
 CONDITIONAL = "conditional"  # \Name?Source
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Argument:
     """One argument.
 
@@ -194,21 +235,21 @@ class Argument:
 # --------------------------------------------------------------------------
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Assignment:
     target: Expr
     value: Expr
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ProcedureCall:
     name: Name
     args: tuple[Argument, ...]
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class LateBindingCall:
     """``%expr% args;``: the string ``expr`` names the procedure at run time."""
 
@@ -217,46 +258,46 @@ class LateBindingCall:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Goto:
     label: Name
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Label:
     name: Name
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Return:
     value: Optional[Expr]
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Raise:
     value: Optional[Expr]
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Exit:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Retry:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class TryNext:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Connect:
     """``CONNECT target WITH trap;``"""
 
@@ -265,14 +306,14 @@ class Connect:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class IfBranch:
     condition: Expr
     body: tuple["Statement", ...]
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class If:
     """IF/ELSEIF/ELSE; ``branches[0]`` is the IF, the rest are ELSEIFs."""
 
@@ -281,7 +322,7 @@ class If:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class CompactIf:
     """``IF cond statement;`` with exactly one simple statement."""
 
@@ -290,7 +331,7 @@ class CompactIf:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class For:
     variable: Name
     start: Expr
@@ -300,21 +341,21 @@ class For:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class While:
     condition: Expr
     body: tuple["Statement", ...]
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class TestCase:
     values: tuple[Expr, ...]
     body: tuple["Statement", ...]
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Test:
     subject: Expr
     cases: tuple[TestCase, ...]
@@ -322,7 +363,7 @@ class Test:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class PlaceholderStatement:
     kind: str
     span: Span
@@ -350,7 +391,7 @@ LOCAL = "LOCAL"
 TASK = "TASK"
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class TypeRef:
     """A data type named in a declaration or parameter."""
 
@@ -358,7 +399,7 @@ class TypeRef:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class DataDeclaration:
     """``[LOCAL|TASK] VAR|PERS|CONST type name[{dims}] [:= init];``
 
@@ -374,7 +415,7 @@ class DataDeclaration:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Parameter:
     """One routine parameter.
 
@@ -394,7 +435,7 @@ class Parameter:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ErrorHandler:
     """``ERROR [(n1, n2)]`` section; ``numbers`` None when no list is given."""
 
@@ -408,7 +449,7 @@ FUNC = "FUNC"
 TRAP = "TRAP"
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Routine:
     kind: str                      # PROC, FUNC or TRAP
     local: bool
@@ -424,14 +465,14 @@ class Routine:
     end_span: Span = NO_SPAN      # position of ENDPROC/ENDFUNC/ENDTRAP
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class RecordComponent:
     type: TypeRef
     name: Name
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class RecordDefinition:
     local: bool
     name: Name
@@ -439,7 +480,7 @@ class RecordDefinition:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class AliasDefinition:
     local: bool
     base: TypeRef
@@ -450,7 +491,7 @@ class AliasDefinition:
 TypeDefinition = Union[RecordDefinition, AliasDefinition]
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Module:
     name: Name
     attributes: tuple[str, ...]    # upper case: SYSMODULE, NOSTEPIN, ...
@@ -460,7 +501,7 @@ class Module:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Program:
     """A task's program: the modules loaded together."""
 
