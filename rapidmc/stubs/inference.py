@@ -142,9 +142,16 @@ class Inference:
         if record is None or record.kind != TYPE:
             return
         name = expr.name.text
-        if name not in record.fields or (record.fields[name] is None and info is not None):
+        if name not in record.fields or info is not None and self._replaces(record.fields[name],
+                                                                            info):
             record.fields[name] = info
             self.changed = True
+
+    def _replaces(self, known: Optional[TypeInfo], info: TypeInfo) -> bool:
+        """A component's type ``info`` from a use takes the place of none, or of a record
+        type the stubs invented only because the component had components of its own
+        (``ee.tool.tframe.rot := ...`` and then ``tGrip := ee.tool``: a tooldata)."""
+        return known is None or known.key in self.invented and info.key not in self.invented
 
     def _nested_record(self, expr: ast.Component) -> None:
         """``msgs.state.joints``: when ``msgs`` has a missing RECORD type and its component
@@ -653,19 +660,20 @@ def _known_for_invented(inference: Inference) -> bool:
                 if info is not None and info.key == key:
                     owner.fields[component] = TypeInfo(candidates[0], info.rank)
         changed = True
-    if changed:
-        _drop_unused_invented(inference)
-    return changed
+    return _drop_unused_invented(inference) or changed
 
 
-def _drop_unused_invented(inference: Inference) -> None:
-    """Invented record types no component uses any more (they belonged to one replaced)."""
+def _drop_unused_invented(inference: Inference) -> bool:
+    """Invented record types no component uses any more (they belonged to one replaced, or
+    a use gave the component a known type); whether any was dropped."""
+    dropped = False
     while True:
         used = {info.key for owner in inference.missing.values()
                 for info in owner.fields.values() if info is not None}
         unused = [key for key in inference.invented if key not in used]
         if not unused:
-            return
+            return dropped
+        dropped = True
         for key in unused:
             inference.missing.pop(key, None)
             inference.invented.discard(key)

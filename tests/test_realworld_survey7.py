@@ -1,0 +1,29 @@
+"""Survey round 7 (docs/realworld-survey.md): programs of ours in the styles of the public
+RAPID code surveyed, one per cause of a program that did not load.
+
+* ``effector_setup.mod``: a component of a record of a module not given is turned through
+  its own components (``ee.grip.tframe.rot := ...``) before it is copied into a tooldata;
+  ``rapidmc stubs`` declares the component a tooldata instead of the records it invented
+  for ``.tframe`` while nothing else was known.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+from tests.test_realworld_survey4 import cli, verdicts
+
+HERE = Path(__file__).resolve().parent / "realworld" / "survey7"
+
+
+def test_a_known_type_from_a_later_use_replaces_invented_component_records(tmp_path):
+    program = HERE / "effector_setup.mod"
+    output = tmp_path / "Missing.mod"
+    code, _, err = cli("stubs", program, "-o", output)
+    assert code == 0, err
+    text = output.read_text()
+    assert "tooldata grip;" in text
+    assert "effector_t_grip" not in text          # no invented record left behind
+    code, out, err = cli("check", program, output, "--quiet",
+                         "--formula", 'turned: G ("Ended()" -> "nTurned = 1")')
+    assert code == 0, err
+    assert set(verdicts(out).values()) == {"HOLDS"}
