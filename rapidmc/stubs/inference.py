@@ -669,7 +669,7 @@ def _drop_unused_invented(inference: Inference) -> bool:
     dropped = False
     while True:
         used = {info.key for owner in inference.missing.values()
-                for info in owner.fields.values() if info is not None}
+                for info in (*owner.fields.values(), owner.type) if info is not None}
         unused = [key for key in inference.invented if key not in used]
         if not unused:
             return dropped
