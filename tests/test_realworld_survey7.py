@@ -27,3 +27,19 @@ def test_a_known_type_from_a_later_use_replaces_invented_component_records(tmp_p
                          "--formula", 'turned: G ("Ended()" -> "nTurned = 1")')
     assert code == 0, err
     assert set(verdicts(out).values()) == {"HOLDS"}
+
+
+def test_missing_types_take_their_shape_from_declared_values(tmp_path):
+    program = HERE / "clamp_library.mod"
+    output = tmp_path / "Missing.mod"
+    code, _, err = cli("stubs", program, "-o", output)
+    assert code == 0, err
+    text = output.read_text()
+    assert "RECORD jawdata\n    string c1;\n    num c2;\n    bool c3;\n    bool c4;\n  ENDRECORD" \
+        in text
+    assert "ALIAS num stationno;" in text
+    assert 'PERS jawdata jawActive := ["",0,FALSE,FALSE];' in text
+    code, out, err = cli("check", program, output, "--quiet",
+                         "--formula", 'station: G ("Ended()" -> "nSelected = 4")')
+    assert code == 0, err
+    assert set(verdicts(out).values()) == {"HOLDS"}

@@ -62,6 +62,7 @@ class Missing:
     indexes_array: bool = False                         # used as an array index
     assigned: bool = False
     array_argument: bool = False                        # dims from an array parameter
+    alias_of: Optional[str] = None                      # a missing type declared with a value
 
     def learn(self, info: Optional[TypeInfo], evidence: str) -> bool:
         """Take ``info`` as the type if none is known yet; whether anything changed."""
@@ -271,8 +272,29 @@ class Inference:
             self.expect(dim, NUM, f"array size of {decl.name.text}")
             self.expression(dim)
         if decl.init is not None:
+            self._type_from_value(decl)
             self.expect(decl.init, TypeInfo(decl.type.name.text), f"value of {decl.name.text}")
             self.expression(decl.init)
+
+    def _type_from_value(self, decl: ast.DataDeclaration) -> None:
+        """A missing type whose data is declared with a value of atomic parts: with an
+        aggregate (``PERS clampdata c := ["seq 1", 2, TRUE]``) a RECORD of components
+        ``c1``, ``c2``, ... of the parts' types; with a single value (``CONST gunnum g :=
+        2``) an ALIAS of its type. Only while no use names a component."""
+        record = self.missing.get(decl.type.name.key)
+        if record is None or record.kind != TYPE or record.fields or record.alias_of \
+                or decl.dims:
+            return
+        if isinstance(decl.init, ast.Aggregate):
+            parts = [self.type_of(item) for item in decl.init.items]
+            if parts and all(part is not None and part.key in ATOMIC for part in parts):
+                record.fields = {f"c{number}": part for number, part in enumerate(parts, 1)}
+                self.changed = True
+        else:
+            value = self.type_of(decl.init)
+            if value is not None and value.key in ATOMIC:
+                record.alias_of = value.name
+                self.changed = True
 
     def _routine(self, routine: ast.Routine) -> None:
         self.routine = routine
@@ -596,6 +618,9 @@ def _invent_element_record(inference: Inference, missing: Missing, shown: str) -
     inference.invented.add(invented.key)
     return missing.learn(TypeInfo(invented.text), f"its elements have components {shown}")
 
+
+# Types whose values a declaration can show by a literal alone.
+ATOMIC = ("NUM", "DNUM", "STRING", "BOOL")
 
 # The optional parameters every motion instruction of ABB's and of its options has
 # (``PaintL ... \WObj:=woPanel``): a missing routine called with them takes these types.
