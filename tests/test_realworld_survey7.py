@@ -5,6 +5,9 @@ RAPID code surveyed, one per cause of a program that did not load.
   its own components (``ee.grip.tframe.rot := ...``) before it is copied into a tooldata;
   ``rapidmc stubs`` declares the component a tooldata instead of the records it invented
   for ``.tframe`` while nothing else was known.
+* ``clamp_library.mod``: types of a module not given take their shape from declared values
+  (an aggregate of atomic parts: a RECORD; one number: an ALIAS of num).
+* ``lap_clocks.mod``: the elements of a clock array start as stopped clocks.
 """
 from __future__ import annotations
 
@@ -41,5 +44,15 @@ def test_missing_types_take_their_shape_from_declared_values(tmp_path):
     assert 'PERS jawdata jawActive := ["",0,FALSE,FALSE];' in text
     code, out, err = cli("check", program, output, "--quiet",
                          "--formula", 'station: G ("Ended()" -> "nSelected = 4")')
+    assert code == 0, err
+    assert set(verdicts(out).values()) == {"HOLDS"}
+
+
+def test_the_elements_of_a_clock_array_start_as_stopped_clocks():
+    program = HERE / "lap_clocks.mod"
+    code, out, err = cli("run", program)
+    assert code == 0, err                      # was an internal error (no value to reset)
+    code, out, err = cli("check", program, "--quiet",
+                         "--formula", 'unused_lap_reads_zero: G ("Ended()" -> "nLapTime = 0")')
     assert code == 0, err
     assert set(verdicts(out).values()) == {"HOLDS"}
