@@ -8,6 +8,8 @@ RAPID code surveyed, one per cause of a program that did not load.
 * ``clamp_library.mod``: types of a module not given take their shape from declared values
   (an aggregate of atomic parts: a RECORD; one number: an ALIAS of num).
 * ``lap_clocks.mod``: the elements of a clock array start as stopped clocks.
+* ``diagnose_codes.mod``: data of a module not given read only by components
+  (``cmdCodes.READ_TIME``) gets a RECORD of the stubs, as arrays of records did.
 """
 from __future__ import annotations
 
@@ -54,5 +56,19 @@ def test_the_elements_of_a_clock_array_start_as_stopped_clocks():
     assert code == 0, err                      # was an internal error (no value to reset)
     code, out, err = cli("check", program, "--quiet",
                          "--formula", 'unused_lap_reads_zero: G ("Ended()" -> "nLapTime = 0")')
+    assert code == 0, err
+    assert set(verdicts(out).values()) == {"HOLDS"}
+
+
+def test_data_read_by_components_gets_a_record_of_the_stubs(tmp_path):
+    program = HERE / "diagnose_codes.mod"
+    output = tmp_path / "Missing.mod"
+    code, _, err = cli("stubs", program, "-o", output)
+    assert code == 0, err                      # cmdCodes was left to the user
+    text = output.read_text()
+    assert "RECORD cmdCodes_rec\n    num READ_TIME;\n    num READ_PART;\n  ENDRECORD" in text
+    assert "PERS cmdCodes_rec cmdCodes := [0,0]; ! type from: has components .READ_TIME" in text
+    code, out, err = cli("check", program, output, "--quiet",
+                         "--formula", 'both: G ("Ended()" -> "nAsked = 2")')
     assert code == 0, err
     assert set(verdicts(out).values()) == {"HOLDS"}

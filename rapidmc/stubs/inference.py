@@ -602,21 +602,23 @@ def _types_from_components(inference: Inference) -> bool:
             shown = ", ".join("." + c for c in missing.components)
             if candidates:
                 changed |= missing.learn(TypeInfo(candidates[0]), f"has components {shown}")
-            elif missing.kind == DATA and missing.dims:
-                changed |= _invent_element_record(inference, missing, shown)
+            elif missing.kind == DATA:
+                changed |= _invent_record(inference, missing, shown)
     return changed
 
 
-def _invent_element_record(inference: Inference, missing: Missing, shown: str) -> bool:
-    """An array whose elements' components are read (``traj{1}.pos``) and that no known
-    record has all of: its elements are a RECORD the stubs declare, named
-    ``<array>_rec``, with the components the uses type (survey round 5)."""
+def _invent_record(inference: Inference, missing: Missing, shown: str) -> bool:
+    """Data (or an array's elements) whose components are read (``traj{1}.pos``,
+    ``cmds.GET_TIME``) and that no known record has all of: a RECORD the stubs declare,
+    named ``<data>_rec``, with the components the uses type (survey rounds 5 and 7)."""
+    whose = "the elements of " if missing.dims else ""
     invented = inference._fresh_type_name(f"{missing.name.text}_rec", missing.name.span)
-    record = inference.note(invented, TYPE, f"type of the elements of {missing.name.text}, "
+    record = inference.note(invented, TYPE, f"type of {whose}{missing.name.text}, "
                             f"whose components {shown} no known record has; name invented")
     record.fields.update({component: None for component in missing.components})
     inference.invented.add(invented.key)
-    return missing.learn(TypeInfo(invented.text), f"its elements have components {shown}")
+    having = "its elements have" if missing.dims else "has"
+    return missing.learn(TypeInfo(invented.text), f"{having} components {shown}")
 
 
 # Types whose values a declaration can show by a literal alone.
