@@ -10,6 +10,8 @@ RAPID code surveyed, one per cause of a program that did not load.
 * ``lap_clocks.mod``: the elements of a clock array start as stopped clocks.
 * ``diagnose_codes.mod``: data of a module not given read only by components
   (``cmdCodes.READ_TIME``) gets a RECORD of the stubs, as arrays of records did.
+* ``sync_release.mod``: a procedure named by a string given to MoveLSync is declared by
+  the stubs when no module declares it.
 """
 from __future__ import annotations
 
@@ -70,5 +72,21 @@ def test_data_read_by_components_gets_a_record_of_the_stubs(tmp_path):
     assert "PERS cmdCodes_rec cmdCodes := [0,0]; ! type from: has components .READ_TIME" in text
     code, out, err = cli("check", program, output, "--quiet",
                          "--formula", 'both: G ("Ended()" -> "nAsked = 2")')
+    assert code == 0, err
+    assert set(verdicts(out).values()) == {"HOLDS"}
+
+
+def test_stubs_declare_a_procedure_named_by_a_sync_move(tmp_path):
+    program = HERE / "sync_release.mod"
+    code, out, _ = cli("check", program, "--quiet")
+    assert code == 1 and "ERR_REFUNKPRC" in out        # the procedure is not in the program
+    output = tmp_path / "Missing.mod"
+    code, _, err = cli("stubs", program, "-o", output)
+    assert code == 0, err
+    text = output.read_text()
+    assert "PROC ReleaseClamp()\n  ENDPROC" in text
+    assert "CountDrop" not in text
+    code, out, err = cli("check", program, output, "--quiet",
+                         "--formula", 'counted: G ("Ended()" -> "nReleased = 1")')
     assert code == 0, err
     assert set(verdicts(out).values()) == {"HOLDS"}

@@ -18,6 +18,7 @@ Example::
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from typing import Optional
 
@@ -510,6 +511,17 @@ class Inference:
                 spec = next((p for p in parameters if arg.name and p[0] == arg.name.key), None)
             if spec is not None:
                 self.expect(arg.value, spec[2], f"{name.text} argument {spec[1]}")
+                if spec[0] == "PROCNAME":
+                    self._named_procedure(name, arg.value)
+
+    def _named_procedure(self, caller: ast.Name, value) -> None:
+        """A procedure named by a string literal (``MoveJSync p, v, z, t, "StartCycle"``):
+        the stubs declare it, without parameters, when no module does."""
+        if not isinstance(value, ast.StringLiteral) or not IDENTIFIER.fullmatch(value.value):
+            return
+        name = ast.Name.of(value.value, value.span)
+        if self.undeclared_routine(name, PROCEDURE) and name.key not in self.names.data:
+            self.note(name, PROCEDURE, f"named by a string given to {caller.text}")
 
     def _learn_parameters(self, missing: Missing, args) -> None:
         known = {p.name.upper(): p for p in missing.parameters}
@@ -620,6 +632,9 @@ def _invent_record(inference: Inference, missing: Missing, shown: str) -> bool:
     having = "its elements have" if missing.dims else "has"
     return missing.learn(TypeInfo(invented.text), f"{having} components {shown}")
 
+
+# A RAPID identifier (a procedure named by a string must be one).
+IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,31}")
 
 # Types whose values a declaration can show by a literal alone.
 ATOMIC = ("NUM", "DNUM", "STRING", "BOOL")
