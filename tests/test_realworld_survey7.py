@@ -22,71 +22,62 @@ from tests.test_realworld_survey4 import cli, verdicts
 HERE = Path(__file__).resolve().parent / "realworld" / "survey7"
 
 
-def test_a_known_type_from_a_later_use_replaces_invented_component_records(tmp_path):
-    program = HERE / "effector_setup.mod"
+def stubs_text(program: Path, tmp_path: Path) -> str:
+    """The module ``rapidmc stubs`` writes for ``program`` (it must succeed)."""
     output = tmp_path / "Missing.mod"
     code, _, err = cli("stubs", program, "-o", output)
     assert code == 0, err
-    text = output.read_text()
+    return output.read_text()
+
+
+def assert_holds(*files, formula: str) -> None:
+    """``check`` of ``files`` with ``formula`` (``name: LTL``): every property holds."""
+    code, out, err = cli("check", *files, "--quiet", "--formula", formula)
+    assert code == 0, err
+    assert set(verdicts(out).values()) == {"HOLDS"}, out
+
+
+def test_a_known_type_from_a_later_use_replaces_invented_component_records(tmp_path):
+    program = HERE / "effector_setup.mod"
+    text = stubs_text(program, tmp_path)
     assert "tooldata grip;" in text
     assert "effector_t_grip" not in text          # no invented record left behind
-    code, out, err = cli("check", program, output, "--quiet",
-                         "--formula", 'turned: G ("Ended()" -> "nTurned = 1")')
-    assert code == 0, err
-    assert set(verdicts(out).values()) == {"HOLDS"}
+    assert_holds(program, tmp_path / "Missing.mod",
+                 formula='turned: G ("Ended()" -> "nTurned = 1")')
 
 
 def test_missing_types_take_their_shape_from_declared_values(tmp_path):
     program = HERE / "clamp_library.mod"
-    output = tmp_path / "Missing.mod"
-    code, _, err = cli("stubs", program, "-o", output)
-    assert code == 0, err
-    text = output.read_text()
+    text = stubs_text(program, tmp_path)
     assert "RECORD jawdata\n    string c1;\n    num c2;\n    bool c3;\n    bool c4;\n  ENDRECORD" \
         in text
     assert "ALIAS num stationno;" in text
     assert 'PERS jawdata jawActive := ["",0,FALSE,FALSE];' in text
-    code, out, err = cli("check", program, output, "--quiet",
-                         "--formula", 'station: G ("Ended()" -> "nSelected = 4")')
-    assert code == 0, err
-    assert set(verdicts(out).values()) == {"HOLDS"}
+    assert_holds(program, tmp_path / "Missing.mod",
+                 formula='station: G ("Ended()" -> "nSelected = 4")')
 
 
 def test_the_elements_of_a_clock_array_start_as_stopped_clocks():
     program = HERE / "lap_clocks.mod"
     code, out, err = cli("run", program)
     assert code == 0, err                      # was an internal error (no value to reset)
-    code, out, err = cli("check", program, "--quiet",
-                         "--formula", 'unused_lap_reads_zero: G ("Ended()" -> "nLapTime = 0")')
-    assert code == 0, err
-    assert set(verdicts(out).values()) == {"HOLDS"}
+    assert_holds(program, formula='unused_lap_reads_zero: G ("Ended()" -> "nLapTime = 0")')
 
 
 def test_data_read_by_components_gets_a_record_of_the_stubs(tmp_path):
     program = HERE / "diagnose_codes.mod"
-    output = tmp_path / "Missing.mod"
-    code, _, err = cli("stubs", program, "-o", output)
-    assert code == 0, err                      # cmdCodes was left to the user
-    text = output.read_text()
+    text = stubs_text(program, tmp_path)       # cmdCodes was left to the user
     assert "RECORD cmdCodes_rec\n    num READ_TIME;\n    num READ_PART;\n  ENDRECORD" in text
     assert "PERS cmdCodes_rec cmdCodes := [0,0]; ! type from: has components .READ_TIME" in text
-    code, out, err = cli("check", program, output, "--quiet",
-                         "--formula", 'both: G ("Ended()" -> "nAsked = 2")')
-    assert code == 0, err
-    assert set(verdicts(out).values()) == {"HOLDS"}
+    assert_holds(program, tmp_path / "Missing.mod", formula='both: G ("Ended()" -> "nAsked = 2")')
 
 
 def test_stubs_declare_a_procedure_named_by_a_sync_move(tmp_path):
     program = HERE / "sync_release.mod"
     code, out, _ = cli("check", program, "--quiet")
     assert code == 1 and "ERR_REFUNKPRC" in out        # the procedure is not in the program
-    output = tmp_path / "Missing.mod"
-    code, _, err = cli("stubs", program, "-o", output)
-    assert code == 0, err
-    text = output.read_text()
+    text = stubs_text(program, tmp_path)
     assert "PROC ReleaseClamp()\n  ENDPROC" in text
     assert "CountDrop" not in text
-    code, out, err = cli("check", program, output, "--quiet",
-                         "--formula", 'counted: G ("Ended()" -> "nReleased = 1")')
-    assert code == 0, err
-    assert set(verdicts(out).values()) == {"HOLDS"}
+    assert_holds(program, tmp_path / "Missing.mod",
+                 formula='counted: G ("Ended()" -> "nReleased = 1")')
