@@ -439,8 +439,6 @@ class Linker:
             signal = self.physical_signal(decl.name.text, rapid_type.signal_kind, decl.span,
                                           driven=rapid_type.signal_kind.endswith("I"))
             value = signal.index
-        if rapid_type.key == "CLOCK":
-            value = (False, 0.0, 0.0)
         if decl.storage == "PERS" and decl.scope != ast.LOCAL:
             shared = target.names.get(decl.name.key)
             if shared is None and decl.scope != ast.TASK:
@@ -523,8 +521,6 @@ class Linker:
         rapid_type = self.data_type(decl, namespace, routine.module_key,
                                     self._dims(decl.dims, scope))
         value = self.initial_value(decl, rapid_type, scope)
-        if rapid_type.key == "CLOCK":
-            value = (False, 0.0, 0.0)
         if decl.storage == "CONST":
             symbol = Symbol(CONSTANT, decl.name.text, rapid_type, value=value, storage="CONST",
                             span=decl.span)

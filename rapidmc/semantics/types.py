@@ -251,10 +251,17 @@ def same_type(a: Optional[AnyType], b: Optional[AnyType]) -> bool:
     return is_numeric(a) and is_numeric(b)
 
 
+# A clock's value (running, started at, accumulated seconds): declared clocks are stopped at 0.
+STOPPED_CLOCK = (False, 0.0, 0.0)
+
+
 def default_value(t: AnyType):
-    """The value of an uninitialised VAR of type ``t`` (0, FALSE, "", component-wise)."""
+    """The value of an uninitialised VAR of type ``t`` (0, FALSE, "", component-wise; a
+    stopped clock, also as the elements of a clock array)."""
     if isinstance(t, ArrayType):
         return _default_array(t.element, t.dims)
+    if t.key == "CLOCK":
+        return STOPPED_CLOCK
     if t.kind == RECORD:
         return tuple(default_value(c.type) for c in t.components)
     if t is BOOL:

@@ -18,6 +18,7 @@ Example::
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from typing import Optional
 
@@ -62,6 +63,7 @@ class Missing:
     indexes_array: bool = False                         # used as an array index
     assigned: bool = False
     array_argument: bool = False                        # dims from an array parameter
+    alias_of: Optional[str] = None                      # a missing type declared with a value
 
     def learn(self, info: Optional[TypeInfo], evidence: str) -> bool:
         """Take ``info`` as the type if none is known yet; whether anything changed."""
@@ -142,9 +144,16 @@ class Inference:
         if record is None or record.kind != TYPE:
             return
         name = expr.name.text
-        if name not in record.fields or (record.fields[name] is None and info is not None):
+        if name not in record.fields or info is not None and self._replaces(record.fields[name],
+                                                                            info):
             record.fields[name] = info
             self.changed = True
+
+    def _replaces(self, known: Optional[TypeInfo], info: TypeInfo) -> bool:
+        """A component's type ``info`` from a use takes the place of none, or of a record
+        type the stubs invented only because the component had components of its own
+        (``ee.tool.tframe.rot := ...`` and then ``tGrip := ee.tool``: a tooldata)."""
+        return known is None or known.key in self.invented and info.key not in self.invented
 
     def _nested_record(self, expr: ast.Component) -> None:
         """``msgs.state.joints``: when ``msgs`` has a missing RECORD type and its component
@@ -264,8 +273,29 @@ class Inference:
             self.expect(dim, NUM, f"array size of {decl.name.text}")
             self.expression(dim)
         if decl.init is not None:
+            self._type_from_value(decl)
             self.expect(decl.init, TypeInfo(decl.type.name.text), f"value of {decl.name.text}")
             self.expression(decl.init)
+
+    def _type_from_value(self, decl: ast.DataDeclaration) -> None:
+        """A missing type whose data is declared with a value of atomic parts: with an
+        aggregate (``PERS clampdata c := ["seq 1", 2, TRUE]``) a RECORD of components
+        ``c1``, ``c2``, ... of the parts' types; with a single value (``CONST gunnum g :=
+        2``) an ALIAS of its type. Only while no use names a component."""
+        record = self.missing.get(decl.type.name.key)
+        if record is None or record.kind != TYPE or record.fields or record.alias_of \
+                or decl.dims:
+            return
+        if isinstance(decl.init, ast.Aggregate):
+            parts = [self.type_of(item) for item in decl.init.items]
+            if parts and all(part is not None and part.key in ATOMIC for part in parts):
+                record.fields = {f"c{number}": part for number, part in enumerate(parts, 1)}
+                self.changed = True
+        else:
+            value = self.type_of(decl.init)
+            if value is not None and value.key in ATOMIC:
+                record.alias_of = value.name
+                self.changed = True
 
     def _routine(self, routine: ast.Routine) -> None:
         self.routine = routine
@@ -481,6 +511,17 @@ class Inference:
                 spec = next((p for p in parameters if arg.name and p[0] == arg.name.key), None)
             if spec is not None:
                 self.expect(arg.value, spec[2], f"{name.text} argument {spec[1]}")
+                if spec[0] == "PROCNAME":
+                    self._named_procedure(name, arg.value)
+
+    def _named_procedure(self, caller: ast.Name, value) -> None:
+        """A procedure named by a string literal (``MoveJSync p, v, z, t, "StartCycle"``):
+        the stubs declare it, without parameters, when no module does."""
+        if not isinstance(value, ast.StringLiteral) or not IDENTIFIER.fullmatch(value.value):
+            return
+        name = ast.Name.of(value.value, value.span)
+        if self.undeclared_routine(name, PROCEDURE) and name.key not in self.names.data:
+            self.note(name, PROCEDURE, f"named by a string given to {caller.text}")
 
     def _learn_parameters(self, missing: Missing, args) -> None:
         known = {p.name.upper(): p for p in missing.parameters}
@@ -573,22 +614,30 @@ def _types_from_components(inference: Inference) -> bool:
             shown = ", ".join("." + c for c in missing.components)
             if candidates:
                 changed |= missing.learn(TypeInfo(candidates[0]), f"has components {shown}")
-            elif missing.kind == DATA and missing.dims:
-                changed |= _invent_element_record(inference, missing, shown)
+            elif missing.kind == DATA:
+                changed |= _invent_record(inference, missing, shown)
     return changed
 
 
-def _invent_element_record(inference: Inference, missing: Missing, shown: str) -> bool:
-    """An array whose elements' components are read (``traj{1}.pos``) and that no known
-    record has all of: its elements are a RECORD the stubs declare, named
-    ``<array>_rec``, with the components the uses type (survey round 5)."""
+def _invent_record(inference: Inference, missing: Missing, shown: str) -> bool:
+    """Data (or an array's elements) whose components are read (``traj{1}.pos``,
+    ``cmds.GET_TIME``) and that no known record has all of: a RECORD the stubs declare,
+    named ``<data>_rec``, with the components the uses type (survey rounds 5 and 7)."""
+    whose = "the elements of " if missing.dims else ""
     invented = inference._fresh_type_name(f"{missing.name.text}_rec", missing.name.span)
-    record = inference.note(invented, TYPE, f"type of the elements of {missing.name.text}, "
+    record = inference.note(invented, TYPE, f"type of {whose}{missing.name.text}, "
                             f"whose components {shown} no known record has; name invented")
     record.fields.update({component: None for component in missing.components})
     inference.invented.add(invented.key)
-    return missing.learn(TypeInfo(invented.text), f"its elements have components {shown}")
+    having = "its elements have" if missing.dims else "has"
+    return missing.learn(TypeInfo(invented.text), f"{having} components {shown}")
 
+
+# A RAPID identifier (a procedure named by a string must be one).
+IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,31}")
+
+# Types whose values a declaration can show by a literal alone.
+ATOMIC = ("NUM", "DNUM", "STRING", "BOOL")
 
 # The optional parameters every motion instruction of ABB's and of its options has
 # (``PaintL ... \WObj:=woPanel``): a missing routine called with them takes these types.
@@ -653,19 +702,20 @@ def _known_for_invented(inference: Inference) -> bool:
                 if info is not None and info.key == key:
                     owner.fields[component] = TypeInfo(candidates[0], info.rank)
         changed = True
-    if changed:
-        _drop_unused_invented(inference)
-    return changed
+    return _drop_unused_invented(inference) or changed
 
 
-def _drop_unused_invented(inference: Inference) -> None:
-    """Invented record types no component uses any more (they belonged to one replaced)."""
+def _drop_unused_invented(inference: Inference) -> bool:
+    """Invented record types no component uses any more (they belonged to one replaced, or
+    a use gave the component a known type); whether any was dropped."""
+    dropped = False
     while True:
         used = {info.key for owner in inference.missing.values()
-                for info in owner.fields.values() if info is not None}
+                for info in (*owner.fields.values(), owner.type) if info is not None}
         unused = [key for key in inference.invented if key not in used]
         if not unused:
-            return
+            return dropped
+        dropped = True
         for key in unused:
             inference.missing.pop(key, None)
             inference.invented.discard(key)

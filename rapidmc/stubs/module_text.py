@@ -51,6 +51,7 @@ class Neutral:
         self.names = names
         # the RECORDs the stubs declare themselves: key -> [(component, type)]
         self.records = records or {}
+        self.aliases: dict[str, str] = {}        # ALIASes the stubs declare: key -> base key
 
     def components(self, type_name: str) -> Optional[list[tuple[str, str]]]:
         found = self.names.components(type_name)
@@ -59,6 +60,7 @@ class Neutral:
     def literal(self, type_name: str) -> Optional[str]:
         """A neutral value of the type, or None for non-value types and unknown ones."""
         key = self.names.base(TypeInfo(type_name)).key
+        key = self.aliases.get(key, key)
         if key in PREDEFINED_ALIASES:
             key = PREDEFINED_ALIASES[key][1].key
         if key in KNOWN_VALUES:
@@ -110,7 +112,9 @@ class StubWriter:
 
     def module(self, module_name: str, missing: list[Missing]) -> str:
         self.neutral.records = {item.name.key: record_components(item)
-                                for item in missing if item.kind == TYPE}
+                                for item in missing if item.kind == TYPE and not item.alias_of}
+        self.neutral.aliases = {item.name.key: item.alias_of.upper()
+                                for item in missing if item.kind == TYPE and item.alias_of}
         lines = [f"MODULE {module_name}",
                  "  ! Declarations written by 'rapidmc stubs' for the names the program uses "
                  "and no module declares.",
@@ -199,6 +203,8 @@ class StubWriter:
         return [f"TRAP {item.name.text}", "ENDTRAP"]
 
     def _type(self, item: Missing) -> list[str]:
+        if item.alias_of:
+            return ["! declared with a value of that type", f"ALIAS {item.alias_of} {item.name.text};"]
         if not item.fields:
             return ["! its components are not known: one num component stands in for them",
                     f"RECORD {item.name.text}", "  num value;", "ENDRECORD"]

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..types import STOPPED_CLOCK
 from ..values import to_num
 
 CONST, PERS, VAR = "CONST", "PERS", "VAR"
@@ -99,7 +100,7 @@ for _number, _name in enumerate(("inpos", "stoptime", "fllwtime"), start=1):
 # it without declaring it (so programs that never use them keep their state shape).
 for _number in range(1, 6):
     _define(f"reg{_number}", "num", 0.0, VAR)
-_define("clock1", "clock", (False, 0.0, 0.0), VAR)
+_define("clock1", "clock", STOPPED_CLOCK, VAR)
 
 
 # --- sockets, rawbytes, files and EGM (rapidmc.semantics.special_io and friends) -------------
