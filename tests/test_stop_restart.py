@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import io
 
+import pytest
+
 from rapidmc.cli import main
 
 PROGRAM = """MODULE S
@@ -78,3 +80,44 @@ def test_run_stays_stopped_from_the_interpreter_api():
         program = build(load_program([str(path)]))
         result = run_program(program, {}, io.StringIO("\n"), io.StringIO())
     assert result.state.status == STOPPED
+
+
+# --- reductions and fast paths keep the verdicts of programs with Stop ------------------
+
+def program_with_stop(seed: int) -> str:
+    """A generated program whose loop may stop (on a free input) before its first
+    statement and, every other seed, after its last."""
+    from reduction_programs import random_program
+    text = random_program(seed)
+    text = text.replace("    WHILE TRUE DO\n", "    WHILE TRUE DO\n      IF in0 = 1 Stop;\n", 1)
+    if seed % 2:
+        text = text.replace("    ENDWHILE\n", "      IF in1 = 1 AND a = 0 Break;\n    ENDWHILE\n", 1)
+    return text
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_programs_with_stop_keep_their_verdicts_when_reduced(tmp_path, seed):
+    from reduction_programs import properties
+    from test_reduction import assert_same_verdicts, check_json
+    program = tmp_path / "prog.mod"
+    program.write_text(program_with_stop(seed))
+    spec = tmp_path / "props.ltl"
+    props = properties(seed, with_next=seed % 2 == 1) + ['stopped: G ("Stopped()" -> F "a = 0")']
+    spec.write_text("\n".join(props) + "\n")
+    argv = [str(program), "--ltl", str(spec), "--max-states", "20000"]
+    reduced = check_json(argv)
+    assert_same_verdicts(reduced, check_json(argv + ["--no-reduce"]))
+    assert reduced["no_runtime_error"] != "UNKNOWN"
+
+
+@pytest.mark.parametrize("reductions", ["reduced", "plain"])
+@pytest.mark.parametrize("seed", range(6))
+def test_programs_with_stop_check_alike_on_the_fast_paths(tmp_path, seed, reductions):
+    from rapidmc.reduction import ALL, NONE
+    from reduction_programs import properties
+    from test_fast_search import assert_same_checks
+    from test_plain_step import formulas, load
+    program = load(tmp_path, program_with_stop(seed))
+    assert_same_checks(program, formulas(*properties(seed, with_next=seed % 2 == 1),
+                                         'stopped: F "Stopped()"'),
+                       ALL if reductions == "reduced" else NONE)
