@@ -42,8 +42,8 @@ from .numeric_updates import as_assignment, target_root
 # where an instruction may continue (``start`` and ``after`` serve RETRY and TRYNEXT,
 # which are never merged)
 JUMP_FIELDS = ("next", "target_true", "target_false", "target", "exit", "body", "default")
-LOCATION_ATOMS = frozenset({"INROUTINE", "ATLINE", "ATLABEL", "ATTARGET", "ENDED", "FAILED", "STOPPED",
-                            "ERRNO", "INTNO"})
+LOCATION_ATOMS = frozenset({"INROUTINE", "ATLINE", "ATLABEL", "ATTARGET", "ENDED", "FAILED",
+                            "STOPPED", "ERRNO", "INTNO"})
 
 
 def merging_allowed(program: Program, formulas: Iterable, atom_keys: set[str],
