@@ -21,9 +21,10 @@ from .diagnostics import TRACE_REPLAY, SourceCache, error
 from .semantics.program import (ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE,
                                 PROGRAM_NAMESPACE, Program)
 from .semantics.library.system import format_typed, value_kind
-from .semantics.state import ENDED, FAILED, RUNNING, State
+from .semantics.state import ENDED, FAILED, RUNNING, STOPPED, State
 from .semantics.plain_step import is_plain
-from .semantics.step import CheckConfig, ScriptChooser, initial_states, successors
+from .semantics.step import (OPERATOR_CHOICE, CheckConfig, ScriptChooser, initial_states,
+                             successors)
 from .semantics.fused_step import plain_successor_states
 from .semantics.values import format_num, format_value
 from .semantics.errors import errno_name
@@ -223,6 +224,8 @@ class RapidDescriber:
             view["ERRNO"] = errno_name(int(state.errno))
         if state.status == ENDED:
             view["program"] = "ended"
+        elif state.status == STOPPED:
+            view["program"] = "stopped by Stop/Break (the operator may restart it)"
         elif state.status == FAILED:
             view["program"] = f"stopped: uncaught {errno_name(state.fault.errno)} " \
                               f"({state.fault.message})"
@@ -258,7 +261,9 @@ class RapidDescriber:
         inputs = {name: _choice_text(value) for name, value in choices}
         span = executed_spans(span)[0]       # merged steps not expanded: the first one
         if span is None:
-            source = "(the program has stopped: this state repeats forever)" if not choices else ""
+            source = "(the program has stopped: this state repeats forever)" if not choices \
+                else "(the program continues after the Stop)" if inputs.get(OPERATOR_CHOICE) \
+                else ""
             return TransitionInfo(None, None, source, inputs, output)
         text = SourceCache.line(span.file, span.line)
         source = text.strip() if text is not None else ""

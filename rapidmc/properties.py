@@ -38,7 +38,7 @@ from .semantics.machine import Machine
 from .semantics.program import Program
 from .semantics.scope import (CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, Scope,
                               Symbol)
-from .semantics.state import ENDED, FAILED, State
+from .semantics.state import ENDED, FAILED, STOPPED, State
 from .semantics.types import BOOL, NUM, POS, ROBTARGET, STRING, RapidType
 
 _PROPERTY_LINE = re.compile(r"^\s*([A-Za-z_][A-Za-z0-9_.-]*)\s*:(?!=)\s*(.*?)\s*$")
@@ -511,4 +511,5 @@ LOCATION_ATOMS = {
     "ATTARGET": _at_target,
     "ENDED": _status(ENDED),
     "FAILED": _status(FAILED),
+    "STOPPED": _status(STOPPED),
 }

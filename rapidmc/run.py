@@ -19,7 +19,7 @@ from .commands.quoting import one_line
 from .semantics.errors import errno_name
 from .semantics.machine import Machine
 from .semantics.program import Program
-from .semantics.state import ENDED, FAILED, RUNNING, State
+from .semantics.state import ENDED, FAILED, RUNNING, STOPPED, State
 from .semantics.step import (Chooser, EnvironmentFault, execute_step, run_instruction,
                              signal_edges, start_state)
 from .semantics.timing import advance_to, next_event, schedule
@@ -74,12 +74,15 @@ class RunResult:
 
 def run_program(program: Program, io_values: dict, stdin: TextIO, stdout: TextIO,
                 max_steps: Optional[int] = None, trace: Optional[TextIO] = None,
-                input_changes: tuple = ()) -> RunResult:
+                input_changes: tuple = (), operator: Optional[TextIO] = None) -> RunResult:
     """Execute ``program`` to its end; FlexPendant output goes to ``stdout``.
 
     The run keeps one machine and applies the step function's transitions to
     it one after another (``execute_step``), so no state is packed between
-    steps.
+    steps.  At a Stop or Break the program pauses: with an ``operator`` stream (stderr)
+    the run asks there and reads one line of ``stdin`` — a line restarts the program at
+    the next instruction, the end of input leaves it stopped and ends the run; without
+    an ``operator`` the run ends at the first Stop.
     """
     m = Machine(program, start_state(program, io_values), ConsoleChooser(stdin))
     for seconds, index, value in input_changes:
@@ -88,7 +91,8 @@ def run_program(program: Program, io_values: dict, stdin: TextIO, stdout: TextIO
     steps = 0
     idle = 0                             # steps in a row that changed nothing
     plain = program.environment_react is None and not program.task_entries
-    while m.status == RUNNING:
+    while m.status == RUNNING or (m.status == STOPPED and operator is not None and
+                                  operator_restarts(m, stdin, operator)):
         frames = m.frames
         depth, store, io, tasks = len(frames), m.store, m.io, m.tasks
         top = frames[-1] if frames else None
@@ -120,6 +124,23 @@ def run_program(program: Program, io_values: dict, stdin: TextIO, stdout: TextIO
             raise error(STEP_LIMIT, f"the program was stopped after {max_steps} steps "
                         "(--max-steps)", exit_code=1)
     return RunResult(m.to_state(), steps)
+
+
+def operator_restarts(m: Machine, stdin: TextIO, operator: TextIO) -> bool:
+    """The program stopped at a Stop or Break: ask on ``operator`` and read one line of
+    ``stdin`` (the operator presses Start); the end of input leaves it stopped."""
+    frame = (m.frames or [stack[-1] for stack in m.tasks if stack] or [None])[-1]
+    where = ""
+    if frame is not None:
+        span = m.program.routines[frame.routine].code[frame.pc].span
+        where = f" before {span.file}:{span.line}" if span is not None else ""
+    operator.write(f"rapidmc: the program is stopped (Stop/Break){where}; press Enter to "
+                   "restart it (end of input: it stays stopped)\n")
+    operator.flush()
+    if not stdin.readline():
+        return False
+    m.status = RUNNING
+    return True
 
 
 def _wake(m: Machine) -> None:

@@ -30,7 +30,7 @@ from .check.budget import DEFAULT_MAX_STATES
 from .check.model import labelled_successors
 from .check.product import Product
 from .check.store import ModelStore
-from .semantics.state import ENDED, FAILED
+from .semantics.state import ENDED, FAILED, STOPPED
 
 SEPARATOR = "; "
 
@@ -161,6 +161,9 @@ class _Views:
             return "ended", ""
         if status == FAILED:
             return "failed", ""
+        if status == STOPPED:
+            location, routine = self._location(frames, None)
+            return f"stopped before {location}", routine
         if not frames:
             return "ended", ""
         routine = self.program.routines[frames[-1].routine]

@@ -1,7 +1,8 @@
 """``rapidmc run FILE... [--entry main] [--io NAME=VALUE]``: execute a RAPID program.
 
 FlexPendant text goes to stdout, diagnostics to stderr.  Exit codes: 0 the
-program ended (end of main, EXIT, Stop), 1 uncaught RAPID run-time error
+program ended (end of main, EXIT) or stays stopped (Stop, Break: the
+operator's restart is a line of stdin, see ``--no-restart``), 1 uncaught RAPID run-time error
 or deadlock, 2 static error (nothing ran).
 """
 from __future__ import annotations
@@ -35,6 +36,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "a later input change can end)")
     parser.add_argument("--max-steps", type=int, default=None, metavar="N",
                         help="stop with an error after N steps (default: no limit)")
+    parser.add_argument("--no-restart", action="store_true",
+                        help="the operator never restarts a program stopped by Stop or Break: "
+                             "the run ends there (by default a line of standard input restarts "
+                             "it at the next instruction; the end of input also ends the run)")
     parser.add_argument("--trace", action="store_true",
                         help="print the source position of every step to stderr")
 
@@ -115,7 +120,8 @@ def execute(args: argparse.Namespace) -> int:
     check_io_values(program, io_values)
     changes = read_input_script(args.inputs, program) if args.inputs else ()
     result = run_program(program, io_values, sys.stdin, sys.stdout, args.max_steps,
-                         sys.stderr if args.trace else None, changes)
+                         sys.stderr if args.trace else None, changes,
+                         None if args.no_restart else sys.stderr)
     if result.state.status == FAILED:
         sys.stdout.flush()
         print(render(fault_diagnostic(program, result.state)), file=sys.stderr)

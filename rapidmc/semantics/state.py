@@ -11,8 +11,9 @@ same are equal and hash alike (the model checker stores them in a set):
 * ``robot``: TCP target, active tool, work object and joint position;
 * ``interrupts``: connected interrupts, pending queue, IEnable/IDisable flag;
 * ``errno`` / ``intno``: the ERRNO and INTNO system variables;
-* ``status``: RUNNING, ENDED (end of main, EXIT, Stop) or FAILED (uncaught
-  error; ``fault`` says which and where);
+* ``status``: RUNNING, ENDED (end of main, EXIT), STOPPED (Stop or Break: the
+  program waits for the operator, who may restart it at the next instruction;
+  the stacks are kept) or FAILED (uncaught error; ``fault`` says which and where);
 * ``clock``: virtual time in seconds (advanced by waits in ``run`` mode only;
   always 0 when model checking, where time is abstracted away);
 * ``tasks``: the call stacks of further RAPID tasks running beside the main
@@ -28,6 +29,7 @@ from typing import NamedTuple, Optional
 RUNNING = 0
 ENDED = 1
 FAILED = 2
+STOPPED = 3         # Stop/Break: paused, the operator may restart it
 
 NORMAL = 0          # frame executes its body
 IN_HANDLER = 1      # frame executes its ERROR handler

@@ -26,7 +26,7 @@ from pyrsistent import pvector
 from .errors import errno_name
 from .machine import Machine
 from .program import Program
-from .state import ENDED, FAILED, RUNNING, Frame, Interrupts, State, Transition
+from .state import ENDED, FAILED, RUNNING, STOPPED, Frame, Interrupts, State, Transition
 from .lazy_inputs import InputView
 from .choosers import Chooser, CheckConfig, ScriptChooser  # noqa: F401 (the step's interface)
 from .fused_step import fused_successors
@@ -137,10 +137,26 @@ def enumerate_choices(run, chooser_factory):
         script = chooser.next_script()
 
 
+# The environment's choice at a program stopped by Stop or Break.
+OPERATOR_CHOICE = "operator"
+OPERATOR_RESTARTS = "restarts the program (Start)"
+
+
+def final_or_stopped(state: State) -> list[Transition]:
+    """The transitions of a state that does not run: an ended or failed program repeats
+    forever; a stopped one may stay stopped for ever (first) or the operator restarts it
+    at the instruction after the Stop (second)."""
+    stay = Transition((), None, state, "")
+    if state.status != STOPPED:
+        return [stay]
+    return [stay, Transition(((OPERATOR_CHOICE, OPERATOR_RESTARTS),), None,
+                             state._replace(status=RUNNING), "")]
+
+
 def successors(program: Program, state: State, config: CheckConfig) -> list[Transition]:
     """Every transition from ``state`` (check mode), in a deterministic order."""
     if state.status != RUNNING:
-        return [Transition((), None, state, "")]
+        return final_or_stopped(state)
     if is_plain(program, state, config):
         fused = fused_successors(program, state, config)
         return fused if fused is not None else plain_successors(program, state, config)
@@ -155,7 +171,7 @@ def general_successors(program: Program, state: State, config: CheckConfig) -> l
     """``successors`` through the general driver (every choice script run through ``step``):
     the reference ``plain_successors`` must agree with."""
     if state.status != RUNNING:
-        return [Transition((), None, state, "")]
+        return final_or_stopped(state)
     if config.free_inputs and not _inputs_matter(program, state):
         return _successors_inputs_after(program, state, config)
     transitions = list(enumerate_choices(lambda chooser: step(program, state, chooser),

@@ -6,15 +6,39 @@ from ...diagnostics import UNSUPPORTED, error
 from ..errors import USER_ERROR_RANGE, RapidError
 from ..errors_flow import unwind_all
 from ..instructions import Action, ControlAction, enter_routine
-from ..state import ENDED, Frame
+from ..state import ENDED, STOPPED, Frame
 from .arguments import Arguments
 from .registry import compiled
 
 
-@compiled("Stop(\\switch NoRegain | switch AllMoveTasks)",
-          "Break()",
-          "SystemStopAction(\\switch Stop | switch StopBlock | switch Halt)")
+# The choice a Stop makes in a program of several tasks (check mode).
+STOP_CHOICE = "Stop"
+STOPS_PROGRAM = "the program stops"
+TASK_STOPS_FOR_GOOD = "this task stops for good, the others go on"
+
+
+@compiled("Stop(\\switch NoRegain | switch AllMoveTasks)", "Break()")
 def _stop(calls, compiler, call, entry):
+    """Stop and Break pause the program; the operator may restart it at the next
+    instruction (docs/semantics.md, "Stop and Break").  With several tasks a check also
+    lets the stopping task stay stopped while the others go on (an over-approximation:
+    which tasks a Stop halts is not modelled)."""
+    Arguments(calls, compiler, call, entry)
+
+    def stop(m, instruction):
+        m.goto(instruction.next)
+        if m.chooser.check_mode and len(m.program.task_names) > 1 and \
+                m.choose(STOP_CHOICE, (STOPS_PROGRAM, TASK_STOPS_FOR_GOOD)) \
+                == TASK_STOPS_FOR_GOOD:
+            m.frames = []
+            m.status = ENDED
+            return
+        m.status = STOPPED
+    return ControlAction(call.span, stop)
+
+
+@compiled("SystemStopAction(\\switch Stop | switch StopBlock | switch Halt)")
+def _system_stop_action(calls, compiler, call, entry):
     Arguments(calls, compiler, call, entry)
 
     def stop(m, instruction):
