@@ -181,6 +181,10 @@ def _format(value, kind) -> str:
 class RapidDescriber:
     """Printable views of states and transitions, in RAPID terms."""
 
+    # the program's status is in a view only while it is not running: a restart after
+    # Stop changes it back to this
+    absent_values = {"program": "running"}
+
     def __init__(self, program: Program, config: Optional[CheckConfig] = None):
         self.program = program
         lazy = config.lazy_inputs if config is not None else {}

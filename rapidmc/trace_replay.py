@@ -110,7 +110,8 @@ def _next(system, describer, state, step: SavedStep):
             continue
         if (info.output or None) != step.output:
             continue
-        changes = {c.name: c.new for c in changes_between(before, describer.describe_state(after))}
+        changes = {c.name: c.new for c in changes_between(before, describer.describe_state(after),
+                                                           getattr(describer, "absent_values", {}))}
         if changes == step.changes:
             return after
     raise TraceDiverged(step, _possible(describer, successors))

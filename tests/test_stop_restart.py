@@ -47,7 +47,20 @@ def test_the_counterexample_shows_the_stop_and_the_operators_restart(tmp_path, c
     assert "program = stopped by Stop/Break (the operator may restart it)" in out
     assert "(the program continues after the Stop)" in out
     assert "input: operator = restarts the program (Start)" in out
+    assert "program = running  (was stopped by Stop/Break (the operator may restart it))" in out
+    assert "no longer exists" not in out
     assert "no_runtime_error: VIOLATED" in out and "no_deadlock: HOLDS" in out
+
+
+def test_replay_shows_the_restart_as_the_program_running_again(tmp_path, capsys, monkeypatch):
+    code, report, _ = _cli(tmp_path, capsys, monkeypatch, ["check", "--format", "json"])
+    assert code == 1
+    saved = tmp_path / "trace.json"
+    saved.write_text(report)
+    assert main(["replay", str(saved)]) == 0
+    err = capsys.readouterr().err
+    assert "(the program continues after the Stop)" in err
+    assert "program = running" in err and "None" not in err
 
 
 def test_run_pauses_at_break_and_a_line_of_stdin_restarts_it(tmp_path, capsys, monkeypatch):

@@ -60,7 +60,8 @@ class TraceDescriber(Protocol):
     """Printable views of model states and labels, supplied by the caller.
 
     Optional: ``describe_stack(state) -> tuple[CallFrame, ...]`` (outermost
-    routine first); without it, steps carry an empty stack.
+    routine first); without it, steps carry an empty stack.  Optional:
+    ``absent_values``, the value of a name while ``describe_state`` leaves it out.
     """
 
     def describe_state(self, state: Hashable) -> Mapping[str, str]: ...
@@ -104,12 +105,18 @@ class Trace:
         return self.cycle[0].index if self.cycle else None
 
 
-def changes_between(before: Optional[Mapping[str, str]], after: Mapping[str, str]) -> tuple[Change, ...]:
-    """Values of ``after`` that differ from ``before`` (all of them when ``before`` is None)."""
+def changes_between(before: Optional[Mapping[str, str]], after: Mapping[str, str],
+                    absent: Mapping[str, str] = {}) -> tuple[Change, ...]:
+    """Values of ``after`` that differ from ``before`` (all of them when ``before`` is None).
+
+    ``absent``: the value a name has when a view leaves it out (a describer's
+    ``absent_values``: the program's status is shown only while it is not running), so
+    a name that leaves the view changes to that value instead of ceasing to exist."""
     before = before or {}
     changed = [Change(name, before.get(name), value) for name, value in after.items()
                if before.get(name) != value]
-    changed.extend(Change(name, value, None) for name, value in before.items() if name not in after)
+    changed.extend(Change(name, value, absent.get(name)) for name, value in before.items()
+                   if name not in after)
     return tuple(changed)
 
 
@@ -144,7 +151,7 @@ def build_trace(result: SearchResult, describer: TraceDescriber) -> Trace:
 
 def _trace_step(index: int, label: Optional[Hashable], before: Optional[Mapping[str, str]],
                 after: Mapping[str, str], describer: TraceDescriber) -> TraceStep:
-    changes = changes_between(before, after)
+    changes = changes_between(before, after, getattr(describer, "absent_values", {}))
     if label is None:
         return TraceStep(index, INITIAL, None, changes)
     if label is STUTTER:
