@@ -55,9 +55,11 @@ class RapidSystem:
     def __init__(self, program: Program, config: CheckConfig, plan: Plan = NO_PLAN):
         self.program = program
         self.plain_config = config
-        if plan.merge_points != config.merge_points:
+        skipped = plan.slicing.total_writes if plan.projection is not None else frozenset()
+        if plan.merge_points != config.merge_points or skipped != config.skipped_writes:
             config = copy.copy(config)
             config.merge_points = plan.merge_points
+            config.skipped_writes = skipped
         self.config = config
         self.plan = plan
         self.project = plan.projection
@@ -109,7 +111,8 @@ class RapidSystem:
 
     def successor_states(self, state: State) -> list[State]:
         """The states of ``successors(state)``, in order, without their labels: what the
-        search stores (built faster at plain states, ``plain_successor_states``)."""
+        search stores (built faster at plain states, ``plain_successor_states``, which
+        skips the writes to sliced data the projection resets anyway)."""
         found = plain_successor_states(self.program, state, self.config)
         if found is None:
             return [after for _, after in self.successors(state)]

@@ -126,3 +126,52 @@ def test_successor_cache_dropped_where_it_does_not_pay(tmp_path, monkeypatch):
                                    SearchBudget(MAX_STATES, None, None))
     assert found.verdict == "HOLDS"
     assert len(states) > 16 and not states._caching
+
+
+# A cycle counter and a log nothing reads (sliced, written with total values: the fused
+# step's unlabelled entries skip those writes), a ratio nothing reads written with a
+# division that fails once ``d`` is 0 (sliced too, but never skipped: the step must fail).
+SLICED_WRITES = """MODULE Logged
+  VAR signaldi in0;
+  VAR num c := 0;
+  VAR num d := 2;
+  VAR num total := 0;
+  VAR num ratio := 0;
+  VAR string log := "";
+  PROC main()
+    AliasIO "IN0", in0;
+    WHILE TRUE DO
+      IF in0 = 1 THEN
+        c := (c + 1) MOD 3;
+        d := d - 1;
+      ENDIF
+      total := total + 1;
+      log := "cycle " + NumToStr(total, 0);
+      ratio := 1 / d;
+      IF d < -1 d := 2;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+"""
+
+
+def test_skipped_writes_are_the_total_writes_to_sliced_data(tmp_path):
+    program = load(tmp_path, SLICED_WRITES)
+    model = api.prepare(program, formulas('b: G "c < 3"'), api.CheckOptions(reductions=ALL))
+    skipped = {span.line for span in model.system.config.skipped_writes}
+    lines = SLICED_WRITES.splitlines()
+    assert skipped == {number for number, line in enumerate(lines, 1)
+                       if line.lstrip().startswith(("total :=", "log :="))}   # not ratio :=
+    unreduced = api.prepare(program, formulas('b: G "c < 3"'), api.CheckOptions(reductions=NONE))
+    assert not unreduced.system.config.skipped_writes
+
+
+@pytest.mark.parametrize("reductions", [ALL, NONE], ids=["reduced", "plain"])
+def test_skipped_writes_check_alike(tmp_path, reductions):
+    """States without the skipped writes (``successor_states``) and with them (the
+    labelled ``successors``), projected: the same checks, the failing division found."""
+    program = load(tmp_path, SLICED_WRITES)
+    props = formulas('b: G "c < 3"', 'f: G F "c = 0"', 'n: G ("c = 1" -> X "c <> 2")')
+    assert_same_checks(program, props, reductions)
+    plain, fused = compare_drivers(program, props, reductions)
+    assert plain > fused > 0

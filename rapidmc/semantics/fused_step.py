@@ -11,6 +11,12 @@ the state's own data, with the expressions' sources (``Compiled.source``)
 written inline; free inputs chosen where read are chosen by ``_read`` as
 ``InputView`` and ``ScriptChooser`` choose them, in the same order.
 
+The entries that give only target states (``fused_successor_states``,
+for a search that projects them, ``model.RapidSystem``) leave out the
+assignments in ``config.skipped_writes``: assignments of total values to
+sliced data (``reduction.relevance``), whose values the projection resets
+and nothing else reads.  The projected states are the same.
+
 Anything else bails out before a transition is returned: an instruction
 without a source that would run, a RAPID error (the error handling of the
 general step applies), a frame in a handler or counting RETRYs.  Then
@@ -90,13 +96,14 @@ class FusedRoutine:
     only the choices made are tested when it runs.  A path longer than
     ``ENTRY_LINES`` lines continues in ``run``.  Entries come in two kinds:
     ``labelled`` ones note the spans executed, the others (for a search that
-    needs only the target states) do not."""
+    needs only the target states) do not, and skip the assignments ``skipped``."""
 
     __slots__ = ("run", "starts", "kinds", "first_visible", "entries", "labelled_entries",
-                 "_blocks", "_code", "_names", "_name")
+                 "_blocks", "_code", "_names", "_name", "_skipped")
 
     def __init__(self, run, starts: bytes, kinds: bytes, first_visible: bytes,
-                 blocks: list, code: list, names: dict, name: str):
+                 blocks: list, code: list, names: dict, name: str,
+                 skipped: frozenset = frozenset()):
         self.run = run                    # run(pc, store, locals_, cx, kinds, seen_visible, spans)
         self.starts = starts              # 1 where the instruction has a source
         self.kinds = kinds                # merge kinds per pc (+4: may read a signal)
@@ -105,12 +112,15 @@ class FusedRoutine:
         self.entries: list = [None] * len(code)
         self.labelled_entries: list = [None] * len(code)
         self._blocks, self._code, self._names, self._name = blocks, code, names, name
+        self._skipped = skipped
 
     def entry(self, pc: int, labelled: bool):
         """``enter(store, locals_, cx, spans) -> (pc, store, locals_)``: ``run`` from ``pc``
         (the spans executed noted in ``spans`` when ``labelled``)."""
         lines = ["def enter(store, locals_, cx, spans):", "    made = cx[3]"]
-        _path(lines, self, pc, bool(self.first_visible[pc]), "    ", [ENTRY_LINES])
+        blocks = self._blocks if labelled or not self._skipped else \
+            [_block(pc, instruction, self._skipped) for pc, instruction in enumerate(self._code)]
+        _path(lines, self, blocks, pc, bool(self.first_visible[pc]), "    ", [ENTRY_LINES])
         if not labelled:
             lines = [line for line in lines if not line.lstrip().startswith("spans.append(")]
         names = dict(self._names, _run=self.run, _kinds=self.kinds)
@@ -120,9 +130,11 @@ class FusedRoutine:
         return enter
 
 
-def fused_routine(routine, entry: Optional[tuple]) -> Optional[FusedRoutine]:
+def fused_routine(routine, entry: Optional[tuple],
+                  skipped: frozenset = frozenset()) -> Optional[FusedRoutine]:
     """The fused form of ``routine`` (``entry``: its merge table entry, None when its
-    steps are not merged), or None when no instruction has a source."""
+    steps are not merged; ``skipped``: the spans of assignments its unlabelled entries
+    leave out), or None when no instruction has a source."""
     code = routine.code
     blocks = [_block(pc, instruction) for pc, instruction in enumerate(code)]
     if not any(blocks) or len(code) > MAX_CODE:
@@ -156,28 +168,28 @@ def fused_routine(routine, entry: Optional[tuple]) -> Optional[FusedRoutine]:
         first_visible = bytes(1 if kind & 3 in (1, 3) else 0 for kind in kinds)
     starts = bytes(1 if block is not None else 0 for block in blocks)
     return FusedRoutine(namespace["run"], starts, kinds, first_visible, blocks, code, names,
-                        routine.name)
+                        routine.name, skipped)
 
 
-def _path(lines: list, fused: FusedRoutine, pc: int, seen_visible: bool, indent: str,
-          budget: list) -> None:
-    """The block at ``pc``, then for each pc it may go on to, what ``run`` does there
-    (its tests of the merge kinds settled here: ``seen_visible`` is known)."""
-    budget[0] -= len(fused._blocks[pc])
-    lines.extend(indent + line for line in fused._blocks[pc])
+def _path(lines: list, fused: FusedRoutine, blocks: list, pc: int, seen_visible: bool,
+          indent: str, budget: list) -> None:
+    """The block at ``pc`` (of ``blocks``), then for each pc it may go on to, what ``run``
+    does there (its tests of the merge kinds settled here: ``seen_visible`` is known)."""
+    budget[0] -= len(blocks[pc])
+    lines.extend(indent + line for line in blocks[pc])
     targets = _targets(fused._code[pc])
     if len(targets) == 1:
-        _go_on(lines, fused, targets[0], seen_visible, indent, budget)
+        _go_on(lines, fused, blocks, targets[0], seen_visible, indent, budget)
         return
     for number, target in enumerate(targets):
         lines.append(f"{indent}{'if' if number == 0 else 'elif'} pc == {target}:")
-        _go_on(lines, fused, target, seen_visible, indent + "    ", budget)
+        _go_on(lines, fused, blocks, target, seen_visible, indent + "    ", budget)
     lines.append(f"{indent}else:")
     lines.append(f"{indent}    _fallback()")               # (no other pc is set)
 
 
-def _go_on(lines: list, fused: FusedRoutine, pc: int, seen_visible: bool, indent: str,
-           budget: list) -> None:
+def _go_on(lines: list, fused: FusedRoutine, blocks: list, pc: int, seen_visible: bool,
+           indent: str, budget: list) -> None:
     """After a block, at ``pc``: stop, or run the block there (as ``run`` decides)."""
     kind = fused.kinds[pc]
     stop = f"{indent}return {pc}, store, locals_"
@@ -187,13 +199,13 @@ def _go_on(lines: list, fused: FusedRoutine, pc: int, seen_visible: bool, indent
     seen_visible = seen_visible or bool(kind & 1)
     if kind & 4:
         lines += [f"{indent}if made:", "    " + stop]
-    if fused._blocks[pc] is None:
+    if blocks[pc] is None:
         lines.append(f"{indent}_fallback()")
     elif budget[0] <= 0:
         lines.append(f"{indent}return _run({pc}, store, locals_, cx, _kinds, {seen_visible}, "
                      "spans)")
     else:
-        _path(lines, fused, pc, seen_visible, indent, budget)
+        _path(lines, fused, blocks, pc, seen_visible, indent, budget)
 
 
 def _targets(instruction) -> tuple:
@@ -214,8 +226,9 @@ def _targets(instruction) -> tuple:
     return tuple(dict.fromkeys(found))
 
 
-def _block(pc: int, instruction) -> Optional[list[str]]:
-    """The statements that execute ``instruction`` (and set the next pc), or None."""
+def _block(pc: int, instruction, skipped: frozenset = frozenset()) -> Optional[list[str]]:
+    """The statements that execute ``instruction`` (and set the next pc), or None; an
+    assignment whose span is in ``skipped`` only sets the next pc."""
     kind = type(instruction)
     fusion = instruction.fusion
     lines = []
@@ -228,7 +241,9 @@ def _block(pc: int, instruction) -> Optional[list[str]]:
                      f"{instruction.target_false}")
     elif kind is Action and fusion is not None:
         where, slot, value = fusion
-        if where == "store":
+        if instruction.span in skipped:
+            pass                                 # (its value is total: nothing to raise)
+        elif where == "store":
             lines.append(f"store = store.set({slot}, {value.source})")
         else:
             lines.append(f"locals_ = _with(locals_, {slot}, {value.source})")
@@ -318,14 +333,16 @@ def _fused(program, config: CheckConfig, routine: int) -> Optional[FusedRoutine]
     """The routine's fused form for this configuration's merge points (made when
     first needed; a copy of the config that changes ``merge_points`` makes its own)."""
     cached = config.fused
-    if cached is None or cached[0] is not config.merge_points or cached[1] is not program:
-        cached = config.fused = (config.merge_points, program, {})
-    routines = cached[2]
+    if cached is None or cached[0] is not config.merge_points or cached[1] is not program \
+            or cached[2] is not config.skipped_writes:
+        cached = config.fused = (config.merge_points, program, config.skipped_writes, {})
+    routines = cached[3]
     try:
         return routines[routine]
     except KeyError:
         entry = config.merge_table(program).get(routine) if config.merge_points else None
-        fused = routines[routine] = fused_routine(program.routines[routine], entry)
+        fused = routines[routine] = fused_routine(program.routines[routine], entry,
+                                                  config.skipped_writes)
         return fused
 
 
@@ -380,7 +397,8 @@ def fused_successors(program, state: State, config: CheckConfig) -> Optional[lis
 
 def fused_successor_states(program, state: State, config: CheckConfig) -> Optional[list[State]]:
     """The target states of ``fused_successors``, in its order, without building the
-    transitions (labels, spans) around them; None when it is None."""
+    transitions (labels, spans) around them, the assignments ``config.skipped_writes``
+    left out (the same states once projected); None when ``fused_successors`` is None."""
     frames = state[0]
     frame = frames[-1]
     enter = _entry(program, config, frame, False)
