@@ -401,9 +401,17 @@ def fused_successor_states(program, state: State, config: CheckConfig) -> Option
     left out (the same states once projected); None when ``fused_successors`` is None."""
     frames = state[0]
     frame = frames[-1]
-    enter = _entry(program, config, frame, False)
+    # (``_entry`` written out for an entry made already: a hot path)
+    cached = config.fused
+    fused = cached[3].get(frame[0]) if cached is not None and \
+        cached[0] is config.merge_points and cached[1] is program and \
+        cached[2] is config.skipped_writes else None
+    enter = fused.entries[frame[1]] if fused is not None and not frame[3] and not frame[5] \
+        else None
     if enter is None:
-        return None
+        enter = _entry(program, config, frame, False)
+        if enter is None:
+            return None
     routine, locals_, handling = frame[0], frame[2], frame[3:]
     store, rest, io = state[1], state[2:], state[2]
     below = frames[:-1]
