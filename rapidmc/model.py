@@ -25,7 +25,7 @@ from .semantics.state import ENDED, FAILED, RUNNING, STOPPED, State
 from .semantics.plain_step import is_plain
 from .semantics.step import (OPERATOR_CHOICE, CheckConfig, ScriptChooser, initial_states,
                              successors)
-from .semantics.fused_step import plain_successor_states
+from .semantics.fused_step import plain_successor_states, written_globals
 from .semantics.values import format_num, format_value
 from .semantics.errors import errno_name
 from .reduction import NO_PLAN, Plan
@@ -63,6 +63,12 @@ class RapidSystem:
         self.config = config
         self.plan = plan
         self.project = plan.projection
+        # the projection of the fused step's targets (None where they are projected
+        # already: the writes it would undo are the ones the step skips)
+        self.project_fused = self.project
+        if self.project is not None and self.project.keeps_fused_targets(
+                set(plan.slicing.globals), written_globals(program, config.skipped_writes)):
+            self.project_fused = None
         # successors kept for the next searches (one per property) over the same program
         self._shared: dict[State, list] = {}
 
@@ -116,7 +122,7 @@ class RapidSystem:
         found = plain_successor_states(self.program, state, self.config)
         if found is None:
             return [after for _, after in self.successors(state)]
-        project = self.project
+        project = self.project_fused
         return found if project is None else [project(after) for after in found]
 
     # built-in safety checks ------------------------------------------------

@@ -94,36 +94,38 @@ class FusedRoutine:
     needed): the merge kinds of the blocks that can follow are known, so
     their tests and the dispatch are settled when the code is written, and
     only the choices made are tested when it runs.  A path longer than
-    ``ENTRY_LINES`` lines continues in ``run``.  Entries come in two kinds:
+    ``ENTRY_LINES`` lines continues in ``run`` (``quiet_run`` for the unlabelled
+    entries).  Entries come in two kinds:
     ``labelled`` ones note the spans executed, the others (for a search that
     needs only the target states) do not, and skip the assignments ``skipped``."""
 
-    __slots__ = ("run", "starts", "kinds", "first_visible", "entries", "labelled_entries",
-                 "_blocks", "_code", "_names", "_name", "_skipped")
+    __slots__ = ("run", "quiet_run", "starts", "kinds", "first_visible", "entries",
+                 "labelled_entries", "_blocks", "_quiet_blocks", "_code", "_names", "_name")
 
-    def __init__(self, run, starts: bytes, kinds: bytes, first_visible: bytes,
-                 blocks: list, code: list, names: dict, name: str,
-                 skipped: frozenset = frozenset()):
-        self.run = run                    # run(pc, store, locals_, cx, kinds, seen_visible, spans)
+    def __init__(self, runs: tuple, starts: bytes, kinds: bytes, first_visible: bytes,
+                 blocks: tuple, code: list, names: dict, name: str):
+        # run(pc, store, locals_, cx, kinds, seen_visible, spans), and the same without the
+        # skipped assignments (for the unlabelled entries)
+        self.run, self.quiet_run = runs
         self.starts = starts              # 1 where the instruction has a source
         self.kinds = kinds                # merge kinds per pc (+4: may read a signal)
         self.first_visible = first_visible  # run_merged's seen_visible for a step starting here
         # per start pc: enter(store, locals_, cx, spans), made when first needed
         self.entries: list = [None] * len(code)
         self.labelled_entries: list = [None] * len(code)
-        self._blocks, self._code, self._names, self._name = blocks, code, names, name
-        self._skipped = skipped
+        self._blocks, self._quiet_blocks = blocks
+        self._code, self._names, self._name = code, names, name
 
     def entry(self, pc: int, labelled: bool):
         """``enter(store, locals_, cx, spans) -> (pc, store, locals_)``: ``run`` from ``pc``
         (the spans executed noted in ``spans`` when ``labelled``)."""
         lines = ["def enter(store, locals_, cx, spans):", "    made = cx[3]"]
-        blocks = self._blocks if labelled or not self._skipped else \
-            [_block(pc, instruction, self._skipped) for pc, instruction in enumerate(self._code)]
+        blocks = self._blocks if labelled else self._quiet_blocks
         _path(lines, self, blocks, pc, bool(self.first_visible[pc]), "    ", [ENTRY_LINES])
         if not labelled:
             lines = [line for line in lines if not line.lstrip().startswith("spans.append(")]
-        names = dict(self._names, _run=self.run, _kinds=self.kinds)
+        names = dict(self._names, _run=self.run if labelled else self.quiet_run,
+                     _kinds=self.kinds)
         exec(compile("\n".join(lines) + "\n", f"<fused {self._name} from {pc}>", "exec"), names)
         entries = self.labelled_entries if labelled else self.entries
         enter = entries[pc] = names["enter"]
@@ -144,10 +146,37 @@ def fused_routine(routine, entry: Optional[tuple],
         names[f"_s{pc}"] = instruction.span
         if blocks[pc] is not None:
             names.update(_names(instruction))
+    if entry is None:
+        kinds = bytes([NEVER_JOINS]) * len(code)
+        first_visible = bytes([1]) * len(code)
+    else:
+        kinds = entry[0]
+        first_visible = bytes(1 if kind & 3 in (1, 3) else 0 for kind in kinds)
+    starts = bytes(1 if block is not None else 0 for block in blocks)
+    run = _run_function(blocks, names, routine.name)
+    quiet_blocks, quiet_run = blocks, run
+    if skipped:
+        quiet_blocks = [_block(pc, instruction, skipped) for pc, instruction in enumerate(code)]
+        quiet_run = _run_function(quiet_blocks, names, routine.name)
+    return FusedRoutine((run, quiet_run), starts, kinds, first_visible,
+                        (blocks, quiet_blocks), code, names, routine.name)
+
+
+def written_globals(program, skipped: frozenset) -> set[int]:
+    """The global slots a fused step may write when it leaves out the assignments
+    ``skipped`` (the unlabelled entries): only fused assignments write global data."""
+    return {instruction.fusion[1] for routine in program.routines for instruction in routine.code
+            if type(instruction) is Action and instruction.fusion is not None and
+            instruction.fusion[0] == "store" and instruction.span not in skipped}
+
+
+def _run_function(blocks: list, names: dict, name: str):
+    """``run(pc, store, locals_, cx, kinds, seen_visible, spans)``: the dispatch loop over
+    ``blocks`` (see ``FusedRoutine``)."""
     lines = ["def run(pc, store, locals_, cx, kinds, seen_visible, spans):",
              "    made = cx[3]",
              "    while True:"]
-    _dispatch(lines, blocks, 0, len(code), "        ")
+    _dispatch(lines, blocks, 0, len(blocks), "        ")
     lines += ["        kind = kinds[pc]",
               "        if kind & 2:",
               "            break",
@@ -159,16 +188,8 @@ def fused_routine(routine, entry: Optional[tuple],
               "            break",
               "    return pc, store, locals_"]
     namespace = dict(names)
-    exec(compile("\n".join(lines) + "\n", f"<fused {routine.name}>", "exec"), namespace)
-    if entry is None:
-        kinds = bytes([NEVER_JOINS]) * len(code)
-        first_visible = bytes([1]) * len(code)
-    else:
-        kinds = entry[0]
-        first_visible = bytes(1 if kind & 3 in (1, 3) else 0 for kind in kinds)
-    starts = bytes(1 if block is not None else 0 for block in blocks)
-    return FusedRoutine(namespace["run"], starts, kinds, first_visible, blocks, code, names,
-                        routine.name, skipped)
+    exec(compile("\n".join(lines) + "\n", f"<fused {name}>", "exec"), namespace)
+    return namespace["run"]
 
 
 def _path(lines: list, fused: FusedRoutine, blocks: list, pc: int, seen_visible: bool,
