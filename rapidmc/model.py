@@ -25,7 +25,7 @@ from .semantics.state import ENDED, FAILED, RUNNING, STOPPED, State
 from .semantics.plain_step import is_plain
 from .semantics.step import (OPERATOR_CHOICE, CheckConfig, ScriptChooser, initial_states,
                              successors)
-from .semantics.fused_step import plain_successor_states, written_globals
+from .semantics.fused_step import plain_successor_states, stop_pcs, written_globals
 from .semantics.values import format_num, format_value
 from .semantics.errors import errno_name
 from .reduction import NO_PLAN, Plan
@@ -67,7 +67,8 @@ class RapidSystem:
         # already: the writes it would undo are the ones the step skips)
         self.project_fused = self.project
         if self.project is not None and self.project.keeps_fused_targets(
-                set(plan.slicing.globals), written_globals(program, config.skipped_writes)):
+                set(plan.slicing.globals), written_globals(program, config.skipped_writes),
+                stop_pcs(program.routines[program.entry])):
             self.project_fused = None
         # successors kept for the next searches (one per property) over the same program
         self._shared: dict[State, list] = {}

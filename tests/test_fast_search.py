@@ -167,23 +167,42 @@ def test_skipped_writes_are_the_total_writes_to_sliced_data(tmp_path):
     assert not unreduced.system.config.skipped_writes
 
 
-def test_fused_targets_are_left_unprojected_only_where_projected_already(tmp_path):
-    """The statistics variant checked on both counters: the projection resets only the
-    cycle counter and the log, whose writes the fused step skips.  On one counter, the
-    other is dead data at the end of main (after the endless loop): projected.  SLICED_WRITES: the ratio is
-    sliced too, but its failing division is not skipped, so the targets are projected."""
-    program = load(tmp_path, counters(2, statistics=True))
-    both = api.prepare(program, formulas('b: G ("c0 < 4" & "c1 < 4")'),
-                       api.CheckOptions(reductions=ALL))
-    assert both.system.project is not None and both.system.project_fused is None
-    one = api.prepare(program, formulas('b: G "c0 < 4"'), api.CheckOptions(reductions=ALL))
-    assert one.system.project_fused is one.system.project is not None
-    ratio = api.prepare(load(tmp_path, SLICED_WRITES), formulas('b: G ("c < 3" & "d > -5")'),
+# ``t`` is written before it is read in each pass of the loop: dead (reset) where the
+# steps stop, at the input's test.
+DEAD_TEMPORARY = """MODULE Dead
+  VAR signaldi in0;
+  VAR num c := 0;
+  VAR num t := 0;
+  PROC main()
+    AliasIO "IN0", in0;
+    WHILE TRUE DO
+      IF in0 = 1 THEN
+        c := (c + 1) MOD 3;
+      ENDIF
+      t := c + 1;
+      IF t > 2 c := 0;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+"""
+
+
+@pytest.mark.parametrize("text, formula, unprojected", [
+    # the projection resets only the cycle counter and the log, whose writes are skipped
+    # (c1, dead at the end of main, after the endless loop, where no step stops)
+    (counters(2, statistics=True), 'b: G "c0 < 4"', True),
+    # the ratio is sliced too, but its failing division is not skipped
+    (SLICED_WRITES, 'b: G ("c < 3" & "d > -5")', False),
+    # dead data (not sliced) is reset where the steps stop
+    (DEAD_TEMPORARY, 'b: G "c < 3"', False)], ids=["statistics", "ratio", "dead"])
+def test_fused_targets_are_left_unprojected_only_where_projected_already(
+        tmp_path, text, formula, unprojected):
+    model = api.prepare(load(tmp_path, text), formulas(formula),
                         api.CheckOptions(reductions=ALL))
-    assert ratio.system.project.main_resets and all(
-        {slot for slot, _ in resets} <= set(ratio.system.plan.slicing.globals)
-        for resets in ratio.system.project.main_resets)             # only sliced data reset
-    assert ratio.system.project_fused is ratio.system.project
+    assert model.system.project is not None
+    assert (model.system.project_fused is None) == unprojected
+    plain, fused = compare_drivers(load(tmp_path, text), formulas(formula), ALL)
+    assert fused > 0
 
 
 @pytest.mark.parametrize("reductions", [ALL, NONE], ids=["reduced", "plain"])

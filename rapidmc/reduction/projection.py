@@ -46,16 +46,17 @@ class Projection:
             if any(per_pc_resets):
                 self.frame_resets[routine.index] = per_pc_resets
 
-    def keeps_fused_targets(self, sliced: set, written: set) -> bool:
+    def keeps_fused_targets(self, sliced: set, written: set, main_stops: set) -> bool:
         """Whether the fused step's targets from projected states are projected already:
-        no routine data is ever reset, and every global value reset while the program
-        runs is sliced data (at its initial value in every projected state) that no
-        step writes (``written``: the global slots the step may write).  (A fused step
-        never ends the program: the final resets do not apply.)"""
+        no routine data is ever reset, and every global value reset at a target is sliced
+        data (at its initial value in every projected state) that no step writes
+        (``written``: the global slots the step may write; ``main_stops``: the pcs of main
+        where it may stop).  (A fused step never ends the program: the final resets do
+        not apply.)"""
         if self.frame_resets:
             return False
-        reset = {slot for resets in (self.global_resets, *self.main_resets)
-                 for slot, _ in resets}
+        at_stops = [resets for pc, resets in enumerate(self.main_resets) if pc in main_stops]
+        reset = {slot for resets in (self.global_resets, *at_stops) for slot, _ in resets}
         return reset <= sliced and not reset & written
 
     def __call__(self, state: State) -> State:

@@ -170,6 +170,13 @@ def written_globals(program, skipped: frozenset) -> set[int]:
             instruction.fusion[0] == "store" and instruction.span not in skipped}
 
 
+def stop_pcs(routine) -> set[int]:
+    """The pcs a fused step of ``routine`` may stop at: the pcs its blocks may set (a
+    constant condition sets one; the code after an endless loop is not among them)."""
+    return {target for pc, instruction in enumerate(routine.code)
+            if _block(pc, instruction) is not None for target in _targets(instruction)}
+
+
 def _run_function(blocks: list, names: dict, name: str):
     """``run(pc, store, locals_, cx, kinds, seen_visible, spans)``: the dispatch loop over
     ``blocks`` (see ``FusedRoutine``)."""
@@ -234,6 +241,9 @@ def _targets(instruction) -> tuple:
     kind = type(instruction)
     if kind is Jump:
         found = (instruction.target,)
+    elif kind is Branch and instruction.fusion is not None and instruction.fusion.is_constant:
+        found = (instruction.target_true if instruction.fusion.constant else
+                 instruction.target_false,)
     elif kind is Branch:
         found = (instruction.target_true, instruction.target_false)
     elif kind is Action:
@@ -257,6 +267,8 @@ def _block(pc: int, instruction, skipped: frozenset = frozenset()) -> Optional[l
         lines.append("cx[2] = {}")               # each instruction reads inputs afresh
     if kind is Jump:
         lines.append(f"pc = {instruction.target}")
+    elif kind is Branch and fusion is not None and fusion.is_constant:
+        lines.append(f"pc = {_targets(instruction)[0]}")       # WHILE TRUE: one way only
     elif kind is Branch and fusion is not None:
         lines.append(f"pc = {instruction.target_true} if {fusion.source} else "
                      f"{instruction.target_false}")
