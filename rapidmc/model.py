@@ -25,7 +25,7 @@ from .semantics.state import ENDED, FAILED, RUNNING, STOPPED, State
 from .semantics.plain_step import is_plain
 from .semantics.step import (OPERATOR_CHOICE, CheckConfig, ScriptChooser, initial_states,
                              successors)
-from .semantics.fused_step import plain_successor_states
+from .semantics.fused_step import plain_successor_states, stop_pcs, written_globals
 from .semantics.values import format_num, format_value
 from .semantics.errors import errno_name
 from .reduction import NO_PLAN, Plan
@@ -55,12 +55,21 @@ class RapidSystem:
     def __init__(self, program: Program, config: CheckConfig, plan: Plan = NO_PLAN):
         self.program = program
         self.plain_config = config
-        if plan.merge_points != config.merge_points:
+        skipped = plan.slicing.total_writes if plan.projection is not None else frozenset()
+        if plan.merge_points != config.merge_points or skipped != config.skipped_writes:
             config = copy.copy(config)
             config.merge_points = plan.merge_points
+            config.skipped_writes = skipped
         self.config = config
         self.plan = plan
         self.project = plan.projection
+        # the projection of the fused step's targets (None where they are projected
+        # already: the writes it would undo are the ones the step skips)
+        self.project_fused = self.project
+        if self.project is not None and self.project.keeps_fused_targets(
+                set(plan.slicing.globals), written_globals(program, config.skipped_writes),
+                stop_pcs(program.routines[program.entry])):
+            self.project_fused = None
         # successors kept for the next searches (one per property) over the same program
         self._shared: dict[State, list] = {}
 
@@ -109,11 +118,12 @@ class RapidSystem:
 
     def successor_states(self, state: State) -> list[State]:
         """The states of ``successors(state)``, in order, without their labels: what the
-        search stores (built faster at plain states, ``plain_successor_states``)."""
+        search stores (built faster at plain states, ``plain_successor_states``, which
+        skips the writes to sliced data the projection resets anyway)."""
         found = plain_successor_states(self.program, state, self.config)
         if found is None:
             return [after for _, after in self.successors(state)]
-        project = self.project
+        project = self.project_fused
         return found if project is None else [project(after) for after in found]
 
     # built-in safety checks ------------------------------------------------

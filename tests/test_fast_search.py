@@ -33,6 +33,32 @@ from test_reduction import counters
 
 MAX_STATES = 20_000
 
+# A cycle counter and a log nothing reads (sliced, written with total values: the fused
+# step's unlabelled entries skip those writes), a ratio nothing reads written with a
+# division that fails once ``d`` is 0 (sliced too, but never skipped: the step must fail).
+SLICED_WRITES = """MODULE Logged
+  VAR signaldi in0;
+  VAR num c := 0;
+  VAR num d := 2;
+  VAR num total := 0;
+  VAR num ratio := 0;
+  VAR string log := "";
+  PROC main()
+    AliasIO "IN0", in0;
+    WHILE TRUE DO
+      IF in0 = 1 THEN
+        c := (c + 1) MOD 3;
+        d := d - 1;
+      ENDIF
+      total := total + 1;
+      log := "cycle " + NumToStr(total, 0);
+      ratio := 1 / d;
+      IF d < -1 d := 2;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+"""
+
 
 class Unhurried(RapidSystem):
     """The same system searched without the fast paths of the search (see above)."""
@@ -82,10 +108,12 @@ def test_counters_check_alike(tmp_path, reductions):
 def test_entries_past_their_budget_agree(tmp_path, monkeypatch, reductions):
     """Entries cut after one block go on in the dispatch loop, with the same result."""
     monkeypatch.setattr(fused_step, "ENTRY_LINES", 1)
-    for text in (FUSED_FORMS, counters(3)):
+    for text, formula in ((FUSED_FORMS, 'b: G "n < 5"'), (counters(3), 'b: G "c0 < 4"'),
+                          (counters(3, statistics=True),
+                           'b: G ("c0 < 4" & "c1 < 4" & "c2 < 4")'),
+                          (SLICED_WRITES, 'b: G "c < 3"')):
         program = load(tmp_path, text)
-        plain, fused = compare_drivers(program, formulas('b: G "n < 5"' if text is FUSED_FORMS
-                                                         else 'b: G "c0 < 4"'), reductions)
+        plain, fused = compare_drivers(program, formulas(formula), reductions)
         assert fused > 0
 
 
@@ -126,3 +154,64 @@ def test_successor_cache_dropped_where_it_does_not_pay(tmp_path, monkeypatch):
                                    SearchBudget(MAX_STATES, None, None))
     assert found.verdict == "HOLDS"
     assert len(states) > 16 and not states._caching
+
+
+def test_skipped_writes_are_the_total_writes_to_sliced_data(tmp_path):
+    program = load(tmp_path, SLICED_WRITES)
+    model = api.prepare(program, formulas('b: G "c < 3"'), api.CheckOptions(reductions=ALL))
+    skipped = {span.line for span in model.system.config.skipped_writes}
+    lines = SLICED_WRITES.splitlines()
+    assert skipped == {number for number, line in enumerate(lines, 1)
+                       if line.lstrip().startswith(("total :=", "log :="))}   # not ratio :=
+    unreduced = api.prepare(program, formulas('b: G "c < 3"'), api.CheckOptions(reductions=NONE))
+    assert not unreduced.system.config.skipped_writes
+
+
+# ``t`` is written before it is read in each pass of the loop: dead (reset) where the
+# steps stop, at the input's test.
+DEAD_TEMPORARY = """MODULE Dead
+  VAR signaldi in0;
+  VAR num c := 0;
+  VAR num t := 0;
+  PROC main()
+    AliasIO "IN0", in0;
+    WHILE TRUE DO
+      IF in0 = 1 THEN
+        c := (c + 1) MOD 3;
+      ENDIF
+      t := c + 1;
+      IF t > 2 c := 0;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+"""
+
+
+@pytest.mark.parametrize("text, formula, unprojected", [
+    # the projection resets only the cycle counter and the log, whose writes are skipped
+    # (c1, dead at the end of main, after the endless loop, where no step stops)
+    (counters(2, statistics=True), 'b: G "c0 < 4"', True),
+    # the ratio is sliced too, but its failing division is not skipped
+    (SLICED_WRITES, 'b: G ("c < 3" & "d > -5")', False),
+    # dead data (not sliced) is reset where the steps stop
+    (DEAD_TEMPORARY, 'b: G "c < 3"', False)], ids=["statistics", "ratio", "dead"])
+def test_fused_targets_are_left_unprojected_only_where_projected_already(
+        tmp_path, text, formula, unprojected):
+    model = api.prepare(load(tmp_path, text), formulas(formula),
+                        api.CheckOptions(reductions=ALL))
+    assert model.system.project is not None
+    assert (model.system.project_fused is None) == unprojected
+    plain, fused = compare_drivers(load(tmp_path, text), formulas(formula), ALL)
+    assert fused > 0
+
+
+@pytest.mark.parametrize("reductions", [ALL, NONE], ids=["reduced", "plain"])
+def test_skipped_writes_check_alike(tmp_path, reductions):
+    """States without the skipped writes (``successor_states``) and with them (the
+    labelled ``successors``), projected: the same checks, the failing division found."""
+    program = load(tmp_path, SLICED_WRITES)
+    props = formulas('b: G "c < 3"', 'f: G F "c = 0"', 'n: G ("c = 1" -> X "c <> 2")',
+                     'd: G "d > -5"')
+    assert_same_checks(program, props, reductions)
+    plain, fused = compare_drivers(program, props, reductions)
+    assert plain > fused > 0

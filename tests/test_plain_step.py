@@ -65,8 +65,10 @@ def compare_drivers(program, props, reductions, limit: int = STATE_LIMIT) -> tup
             if fast is not None:
                 fused += 1
                 assert_same(fast, reference)
-                assert fused_successor_states(program, state, config) == \
-                    [transition.state for transition in fast]
+                # (without the writes to sliced data it skips: the same once projected)
+                project = system.project or (lambda s: s)
+                assert [project(s) for s in fused_successor_states(program, state, config)] \
+                    == [project(transition.state) for transition in fast]
         if isinstance(reference, str):
             continue                         # a routine rapidmc does not model stops here
         # what the search stores: the same states, without the labels

@@ -20,6 +20,7 @@ from hypothesis import strategies as st
 
 from rapidmc import ast
 from rapidmc.cli import main
+from rapidmc.model import RapidSystem
 from rapidmc.reduction import plan_reductions
 from rapidmc.reduction.relevance import find_slicing
 from rapidmc.reduction.totality import Totality
@@ -206,6 +207,30 @@ def test_unread_counter_and_log_are_sliced_counters_are_not():
     program = linked(counters(2, statistics=True))
     slicing = find_slicing(program, ["c0 < 4"])
     assert global_names(program, slicing.globals) == {"nCycles", "lastLog"}
+
+
+def test_total_writes_are_the_assignments_to_sliced_data():
+    """The assignments a step may skip (``Slicing.total_writes``): nCycles's and lastLog's,
+    not the counters' (which an atom reads)."""
+    text = counters(2, statistics=True)
+    slicing = find_slicing(linked(text), ["c0 < 4", "c1 < 4"])
+    assert {span.line for span in slicing.total_writes} == {
+        number for number, line in enumerate(text.splitlines(), 1)
+        if line.lstrip().startswith(("nCycles :=", "lastLog :="))}
+
+
+def test_projection_resets_sliced_data_and_keeps_a_projected_state():
+    program = linked(counters(2, statistics=True))
+    config = CheckConfig(program)
+    plan = plan_reductions(program, config, ["c0 < 4"], [None])
+    project = plan.projection
+    state = RapidSystem(program, config).initial_states()[0]
+    assert project(state) is state                     # nothing to reset: the same object
+    slots = {program.globals[slot].name: slot for slot in plan.slicing.globals}
+    logged = state._replace(store=state.store.set(slots["nCycles"], 5.0)
+                            .set(slots["lastLog"], "cycle 5"))
+    assert project(logged) == state
+    assert not project.frame_resets                    # main has no routine data to reset
 
 
 def test_data_an_atom_names_is_kept():

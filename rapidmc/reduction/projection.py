@@ -41,29 +41,50 @@ class Projection:
             if not always and not per_pc:
                 continue
             initial = routine.initial_locals
-            self.frame_resets[routine.index] = [
-                _resets(always | set(per_pc[pc] if per_pc else ()), initial)
-                for pc in range(max(len(routine.code), 1))]
+            per_pc_resets = [_resets(always | set(per_pc[pc] if per_pc else ()), initial)
+                             for pc in range(max(len(routine.code), 1))]
+            if any(per_pc_resets):
+                self.frame_resets[routine.index] = per_pc_resets
+
+    def keeps_fused_targets(self, sliced: set, written: set, main_stops: set) -> bool:
+        """Whether the fused step's targets from projected states are projected already:
+        no routine data is ever reset, and every global value reset at a target is sliced
+        data (at its initial value in every projected state) that no step writes
+        (``written``: the global slots the step may write; ``main_stops``: the pcs of main
+        where it may stop).  (A fused step never ends the program: the final resets do
+        not apply.)"""
+        if self.frame_resets:
+            return False
+        at_stops = [resets for pc, resets in enumerate(self.main_resets) if pc in main_stops]
+        reset = {slot for resets in (self.global_resets, *at_stops) for slot, _ in resets}
+        return reset <= sliced and not reset & written
 
     def __call__(self, state: State) -> State:
-        frames = state.frames
-        resets = self.global_resets
+        # (the hot path: once per successor; a state that needs no reset is returned as
+        # it is after a comparison per reset value, without building anything)
+        frames, store, tasks = state[0], state[1], state[10]
         if not frames:
             resets = self.final_resets
-        elif len(frames) == 1 and self.main_resets and not state.tasks and \
-                frames[0][0] == self.main:
+        elif self.main_resets and len(frames) == 1 and not tasks and frames[0][0] == self.main:
             resets = self.main_resets[frames[0][1]]
-        store = _reset_store(state.store, resets)
-        new_frames = self._stack(frames)
-        tasks = tuple(self._stack(stack) for stack in state.tasks) if state.tasks else state.tasks
-        if store is state.store and new_frames is frames and \
-                all(a is b for a, b in zip(tasks, state.tasks)):
+        else:
+            resets = self.global_resets
+        for slot, initial in resets:
+            if store[slot] != initial:
+                store = _reset_store(store, resets)
+                break
+        new_frames, new_tasks = frames, tasks
+        if self.frame_resets:
+            new_frames = self._stack(frames)
+            if tasks:
+                stacks = tuple(self._stack(stack) for stack in tasks)
+                if any(a is not b for a, b in zip(stacks, tasks)):
+                    new_tasks = stacks
+        if store is state[1] and new_frames is frames and new_tasks is tasks:
             return state
-        return state._replace(store=store, frames=new_frames, tasks=tasks)
+        return state._replace(store=store, frames=new_frames, tasks=new_tasks)
 
     def _stack(self, frames: tuple) -> tuple:
-        if not self.frame_resets:
-            return frames
         changed = False
         result = []
         for frame in frames:

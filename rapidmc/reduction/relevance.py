@@ -21,7 +21,9 @@ set closed under these rules; every other value-typed data object of the
 program and of its tasks (never parameters, FOR variables or temporaries)
 is *sliced*: no relevant computation reads it and no computation that reads
 it can fail, choose or wait, so it can be dropped from stored states
-without changing any verdict.
+without changing any verdict.  Sliced data is read only by such total
+assignments ``x := e`` to sliced data (``Slicing.total_writes``): a step
+whose state is then projected may skip them (``semantics.fused_step``).
 
 Names resolve as the linker resolves them (``routine.scope``); a name it
 cannot resolve (a FOR variable, system data) never denotes sliceable data.
@@ -55,6 +57,9 @@ class Slicing:
 
     globals: tuple[int, ...]
     locals: dict                     # routine index -> tuple of local slots
+    # the spans of the assignments ``x := e`` to sliced data named directly whose ``e``
+    # is total: skipped, they change only sliced values
+    total_writes: frozenset = frozenset()
 
     @property
     def empty(self) -> bool:
@@ -88,7 +93,11 @@ def find_slicing(program: Program, atom_texts: Iterable[str] = ()) -> Slicing:
                       and routine.local_names[slot].upper() not in atom_keys)
         if slots:
             sliced_locals[routine.index] = slots
-    return Slicing(sliced_globals, sliced_locals)
+    sliced = {("G", slot) for slot in sliced_globals} | \
+        {("L", routine, slot) for routine, slots in sliced_locals.items() for slot in slots}
+    total_writes = frozenset(span for span, key in analysis.total_writes.items()
+                             if key in sliced)
+    return Slicing(sliced_globals, sliced_locals, total_writes)
 
 
 def is_value(rapid_type) -> bool:
@@ -144,6 +153,7 @@ class _Analysis:
         self.program = program
         self.relevant: set[Key] = set()
         self.flows: dict[Key, set[Key]] = {}
+        self.total_writes: dict = {}     # span of ``x := e`` with ``e`` total -> x's key
         self.routine = None
 
     # ------------------------------------------------------------- results
@@ -273,6 +283,8 @@ class _Analysis:
             return
         if target is not root or not self.totality.assignable(statement.value, symbol.type):
             self.relevant.update(sources)   # whether the assignment fails depends on them
+        else:
+            self.total_writes[statement.span] = target_key
         if target_key is not None:
             self.flows.setdefault(target_key, set()).update(sources)
 

@@ -113,7 +113,11 @@ class CheckConfig:
         # (reduction.merging); empty: one instruction per step
         self.merge_points: dict = {}
         self._merge_table = None         # (merge_points, program, table): see merge_table
-        self.fused = None                # (merge_points, program, routines): fused_step's
+        self.fused = None                # (merge_points, program, skipped_writes,
+                                         # routines): fused_step's
+        # spans of assignments to sliced data the fused step may skip when only the
+        # projected target states are wanted (``reduction.relevance``, total_writes)
+        self.skipped_writes: frozenset = frozenset()
         self._unmerged = None            # (merge_points, copy without them): see unmerged
         self.view_steps = None           # staged_step's remembered steps (ViewSteps)
         # every combination of free input values, in the order the chooser enumerates them

@@ -11,6 +11,12 @@ the state's own data, with the expressions' sources (``Compiled.source``)
 written inline; free inputs chosen where read are chosen by ``_read`` as
 ``InputView`` and ``ScriptChooser`` choose them, in the same order.
 
+The entries that give only target states (``fused_successor_states``,
+for a search that projects them, ``model.RapidSystem``) leave out the
+assignments in ``config.skipped_writes``: assignments of total values to
+sliced data (``reduction.relevance``), whose values the projection resets
+and nothing else reads.  The projected states are the same.
+
 Anything else bails out before a transition is returned: an instruction
 without a source that would run, a RAPID error (the error handling of the
 general step applies), a frame in a handler or counting RETRYs.  Then
@@ -88,41 +94,49 @@ class FusedRoutine:
     needed): the merge kinds of the blocks that can follow are known, so
     their tests and the dispatch are settled when the code is written, and
     only the choices made are tested when it runs.  A path longer than
-    ``ENTRY_LINES`` lines continues in ``run``.  Entries come in two kinds:
+    ``ENTRY_LINES`` lines continues in ``run`` (``quiet_run`` for the unlabelled
+    entries).  Entries come in two kinds:
     ``labelled`` ones note the spans executed, the others (for a search that
-    needs only the target states) do not."""
+    needs only the target states) do not, and skip the assignments ``skipped``."""
 
-    __slots__ = ("run", "starts", "kinds", "first_visible", "entries", "labelled_entries",
-                 "_blocks", "_code", "_names", "_name")
+    __slots__ = ("run", "quiet_run", "starts", "kinds", "first_visible", "entries",
+                 "labelled_entries", "_blocks", "_quiet_blocks", "_code", "_names", "_name")
 
-    def __init__(self, run, starts: bytes, kinds: bytes, first_visible: bytes,
-                 blocks: list, code: list, names: dict, name: str):
-        self.run = run                    # run(pc, store, locals_, cx, kinds, seen_visible, spans)
+    def __init__(self, runs: tuple, starts: bytes, kinds: bytes, first_visible: bytes,
+                 blocks: tuple, code: list, names: dict, name: str):
+        # run(pc, store, locals_, cx, kinds, seen_visible, spans), and the same without the
+        # skipped assignments (for the unlabelled entries)
+        self.run, self.quiet_run = runs
         self.starts = starts              # 1 where the instruction has a source
         self.kinds = kinds                # merge kinds per pc (+4: may read a signal)
         self.first_visible = first_visible  # run_merged's seen_visible for a step starting here
         # per start pc: enter(store, locals_, cx, spans), made when first needed
         self.entries: list = [None] * len(code)
         self.labelled_entries: list = [None] * len(code)
-        self._blocks, self._code, self._names, self._name = blocks, code, names, name
+        self._blocks, self._quiet_blocks = blocks
+        self._code, self._names, self._name = code, names, name
 
     def entry(self, pc: int, labelled: bool):
         """``enter(store, locals_, cx, spans) -> (pc, store, locals_)``: ``run`` from ``pc``
         (the spans executed noted in ``spans`` when ``labelled``)."""
         lines = ["def enter(store, locals_, cx, spans):", "    made = cx[3]"]
-        _path(lines, self, pc, bool(self.first_visible[pc]), "    ", [ENTRY_LINES])
+        blocks = self._blocks if labelled else self._quiet_blocks
+        _path(lines, self, blocks, pc, bool(self.first_visible[pc]), "    ", [ENTRY_LINES])
         if not labelled:
             lines = [line for line in lines if not line.lstrip().startswith("spans.append(")]
-        names = dict(self._names, _run=self.run, _kinds=self.kinds)
+        names = dict(self._names, _run=self.run if labelled else self.quiet_run,
+                     _kinds=self.kinds)
         exec(compile("\n".join(lines) + "\n", f"<fused {self._name} from {pc}>", "exec"), names)
         entries = self.labelled_entries if labelled else self.entries
         enter = entries[pc] = names["enter"]
         return enter
 
 
-def fused_routine(routine, entry: Optional[tuple]) -> Optional[FusedRoutine]:
+def fused_routine(routine, entry: Optional[tuple],
+                  skipped: frozenset = frozenset()) -> Optional[FusedRoutine]:
     """The fused form of ``routine`` (``entry``: its merge table entry, None when its
-    steps are not merged), or None when no instruction has a source."""
+    steps are not merged; ``skipped``: the spans of assignments its unlabelled entries
+    leave out), or None when no instruction has a source."""
     code = routine.code
     blocks = [_block(pc, instruction) for pc, instruction in enumerate(code)]
     if not any(blocks) or len(code) > MAX_CODE:
@@ -132,10 +146,44 @@ def fused_routine(routine, entry: Optional[tuple]) -> Optional[FusedRoutine]:
         names[f"_s{pc}"] = instruction.span
         if blocks[pc] is not None:
             names.update(_names(instruction))
+    if entry is None:
+        kinds = bytes([NEVER_JOINS]) * len(code)
+        first_visible = bytes([1]) * len(code)
+    else:
+        kinds = entry[0]
+        first_visible = bytes(1 if kind & 3 in (1, 3) else 0 for kind in kinds)
+    starts = bytes(1 if block is not None else 0 for block in blocks)
+    run = _run_function(blocks, names, routine.name)
+    quiet_blocks, quiet_run = blocks, run
+    if skipped:
+        quiet_blocks = [_block(pc, instruction, skipped) for pc, instruction in enumerate(code)]
+        quiet_run = _run_function(quiet_blocks, names, routine.name)
+    return FusedRoutine((run, quiet_run), starts, kinds, first_visible,
+                        (blocks, quiet_blocks), code, names, routine.name)
+
+
+def written_globals(program, skipped: frozenset) -> set[int]:
+    """The global slots a fused step may write when it leaves out the assignments
+    ``skipped`` (the unlabelled entries): only fused assignments write global data."""
+    return {instruction.fusion[1] for routine in program.routines for instruction in routine.code
+            if type(instruction) is Action and instruction.fusion is not None and
+            instruction.fusion[0] == "store" and instruction.span not in skipped}
+
+
+def stop_pcs(routine) -> set[int]:
+    """The pcs a fused step of ``routine`` may stop at: the pcs its blocks may set (a
+    constant condition sets one; the code after an endless loop is not among them)."""
+    return {target for pc, instruction in enumerate(routine.code)
+            if _block(pc, instruction) is not None for target in _targets(instruction)}
+
+
+def _run_function(blocks: list, names: dict, name: str):
+    """``run(pc, store, locals_, cx, kinds, seen_visible, spans)``: the dispatch loop over
+    ``blocks`` (see ``FusedRoutine``)."""
     lines = ["def run(pc, store, locals_, cx, kinds, seen_visible, spans):",
              "    made = cx[3]",
              "    while True:"]
-    _dispatch(lines, blocks, 0, len(code), "        ")
+    _dispatch(lines, blocks, 0, len(blocks), "        ")
     lines += ["        kind = kinds[pc]",
               "        if kind & 2:",
               "            break",
@@ -147,37 +195,29 @@ def fused_routine(routine, entry: Optional[tuple]) -> Optional[FusedRoutine]:
               "            break",
               "    return pc, store, locals_"]
     namespace = dict(names)
-    exec(compile("\n".join(lines) + "\n", f"<fused {routine.name}>", "exec"), namespace)
-    if entry is None:
-        kinds = bytes([NEVER_JOINS]) * len(code)
-        first_visible = bytes([1]) * len(code)
-    else:
-        kinds = entry[0]
-        first_visible = bytes(1 if kind & 3 in (1, 3) else 0 for kind in kinds)
-    starts = bytes(1 if block is not None else 0 for block in blocks)
-    return FusedRoutine(namespace["run"], starts, kinds, first_visible, blocks, code, names,
-                        routine.name)
+    exec(compile("\n".join(lines) + "\n", f"<fused {name}>", "exec"), namespace)
+    return namespace["run"]
 
 
-def _path(lines: list, fused: FusedRoutine, pc: int, seen_visible: bool, indent: str,
-          budget: list) -> None:
-    """The block at ``pc``, then for each pc it may go on to, what ``run`` does there
-    (its tests of the merge kinds settled here: ``seen_visible`` is known)."""
-    budget[0] -= len(fused._blocks[pc])
-    lines.extend(indent + line for line in fused._blocks[pc])
+def _path(lines: list, fused: FusedRoutine, blocks: list, pc: int, seen_visible: bool,
+          indent: str, budget: list) -> None:
+    """The block at ``pc`` (of ``blocks``), then for each pc it may go on to, what ``run``
+    does there (its tests of the merge kinds settled here: ``seen_visible`` is known)."""
+    budget[0] -= len(blocks[pc])
+    lines.extend(indent + line for line in blocks[pc])
     targets = _targets(fused._code[pc])
     if len(targets) == 1:
-        _go_on(lines, fused, targets[0], seen_visible, indent, budget)
+        _go_on(lines, fused, blocks, targets[0], seen_visible, indent, budget)
         return
     for number, target in enumerate(targets):
         lines.append(f"{indent}{'if' if number == 0 else 'elif'} pc == {target}:")
-        _go_on(lines, fused, target, seen_visible, indent + "    ", budget)
+        _go_on(lines, fused, blocks, target, seen_visible, indent + "    ", budget)
     lines.append(f"{indent}else:")
     lines.append(f"{indent}    _fallback()")               # (no other pc is set)
 
 
-def _go_on(lines: list, fused: FusedRoutine, pc: int, seen_visible: bool, indent: str,
-           budget: list) -> None:
+def _go_on(lines: list, fused: FusedRoutine, blocks: list, pc: int, seen_visible: bool,
+           indent: str, budget: list) -> None:
     """After a block, at ``pc``: stop, or run the block there (as ``run`` decides)."""
     kind = fused.kinds[pc]
     stop = f"{indent}return {pc}, store, locals_"
@@ -187,13 +227,13 @@ def _go_on(lines: list, fused: FusedRoutine, pc: int, seen_visible: bool, indent
     seen_visible = seen_visible or bool(kind & 1)
     if kind & 4:
         lines += [f"{indent}if made:", "    " + stop]
-    if fused._blocks[pc] is None:
+    if blocks[pc] is None:
         lines.append(f"{indent}_fallback()")
     elif budget[0] <= 0:
         lines.append(f"{indent}return _run({pc}, store, locals_, cx, _kinds, {seen_visible}, "
                      "spans)")
     else:
-        _path(lines, fused, pc, seen_visible, indent, budget)
+        _path(lines, fused, blocks, pc, seen_visible, indent, budget)
 
 
 def _targets(instruction) -> tuple:
@@ -201,6 +241,9 @@ def _targets(instruction) -> tuple:
     kind = type(instruction)
     if kind is Jump:
         found = (instruction.target,)
+    elif kind is Branch and instruction.fusion is not None and instruction.fusion.is_constant:
+        found = (instruction.target_true if instruction.fusion.constant else
+                 instruction.target_false,)
     elif kind is Branch:
         found = (instruction.target_true, instruction.target_false)
     elif kind is Action:
@@ -214,8 +257,9 @@ def _targets(instruction) -> tuple:
     return tuple(dict.fromkeys(found))
 
 
-def _block(pc: int, instruction) -> Optional[list[str]]:
-    """The statements that execute ``instruction`` (and set the next pc), or None."""
+def _block(pc: int, instruction, skipped: frozenset = frozenset()) -> Optional[list[str]]:
+    """The statements that execute ``instruction`` (and set the next pc), or None; an
+    assignment whose span is in ``skipped`` only sets the next pc."""
     kind = type(instruction)
     fusion = instruction.fusion
     lines = []
@@ -223,12 +267,16 @@ def _block(pc: int, instruction) -> Optional[list[str]]:
         lines.append("cx[2] = {}")               # each instruction reads inputs afresh
     if kind is Jump:
         lines.append(f"pc = {instruction.target}")
+    elif kind is Branch and fusion is not None and fusion.is_constant:
+        lines.append(f"pc = {_targets(instruction)[0]}")       # WHILE TRUE: one way only
     elif kind is Branch and fusion is not None:
         lines.append(f"pc = {instruction.target_true} if {fusion.source} else "
                      f"{instruction.target_false}")
     elif kind is Action and fusion is not None:
         where, slot, value = fusion
-        if where == "store":
+        if instruction.span in skipped:
+            pass                                 # (its value is total: nothing to raise)
+        elif where == "store":
             lines.append(f"store = store.set({slot}, {value.source})")
         else:
             lines.append(f"locals_ = _with(locals_, {slot}, {value.source})")
@@ -318,14 +366,16 @@ def _fused(program, config: CheckConfig, routine: int) -> Optional[FusedRoutine]
     """The routine's fused form for this configuration's merge points (made when
     first needed; a copy of the config that changes ``merge_points`` makes its own)."""
     cached = config.fused
-    if cached is None or cached[0] is not config.merge_points or cached[1] is not program:
-        cached = config.fused = (config.merge_points, program, {})
-    routines = cached[2]
+    if cached is None or cached[0] is not config.merge_points or cached[1] is not program \
+            or cached[2] is not config.skipped_writes:
+        cached = config.fused = (config.merge_points, program, config.skipped_writes, {})
+    routines = cached[3]
     try:
         return routines[routine]
     except KeyError:
         entry = config.merge_table(program).get(routine) if config.merge_points else None
-        fused = routines[routine] = fused_routine(program.routines[routine], entry)
+        fused = routines[routine] = fused_routine(program.routines[routine], entry,
+                                                  config.skipped_writes)
         return fused
 
 
@@ -380,12 +430,21 @@ def fused_successors(program, state: State, config: CheckConfig) -> Optional[lis
 
 def fused_successor_states(program, state: State, config: CheckConfig) -> Optional[list[State]]:
     """The target states of ``fused_successors``, in its order, without building the
-    transitions (labels, spans) around them; None when it is None."""
+    transitions (labels, spans) around them, the assignments ``config.skipped_writes``
+    left out (the same states once projected); None when ``fused_successors`` is None."""
     frames = state[0]
     frame = frames[-1]
-    enter = _entry(program, config, frame, False)
+    # (``_entry`` written out for an entry made already: a hot path)
+    cached = config.fused
+    fused = cached[3].get(frame[0]) if cached is not None and \
+        cached[0] is config.merge_points and cached[1] is program and \
+        cached[2] is config.skipped_writes else None
+    enter = fused.entries[frame[1]] if fused is not None and not frame[3] and not frame[5] \
+        else None
     if enter is None:
-        return None
+        enter = _entry(program, config, frame, False)
+        if enter is None:
+            return None
     routine, locals_, handling = frame[0], frame[2], frame[3:]
     store, rest, io = state[1], state[2:], state[2]
     below = frames[:-1]
