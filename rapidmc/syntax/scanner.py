@@ -14,7 +14,13 @@ from these tokens is one in which ``RapidLexer`` reads the same tokens.
 The pattern is ``RapidLexer``'s (ignored text, then the terminals in Lark's
 order), with a last alternative that takes any one character: a place no
 token starts from becomes a token of no terminal, which makes ``scan``
-answer None, rather than a place ``findall`` would skip silently.
+answer None, rather than a place ``findall`` would skip silently.  One
+difference: the identifier is matched without its ``i`` flag (case-folding
+every character costs an eighth of the scan).  Its character classes hold
+both cases of each Latin-1 letter in them (checked when the scanner is
+built), so the flag only adds characters beyond Latin-1 (``\u017f``, the
+Kelvin sign): where the text has one in code, the scanner finds a token of
+no terminal and answers None, and Lark's driver reads the text.
 
 Example::
 
@@ -35,7 +41,7 @@ from operator import itemgetter
 from typing import Iterator, Optional
 
 from lark import Token
-from lark.lexer import TerminalDef
+from lark.lexer import PatternStr, TerminalDef
 
 from .lexer import IDENTIFIER, keyword_spellings, ordered_terminals
 
@@ -49,14 +55,15 @@ class Scanner:
         self.keywords = keyword_spellings(terminals)
         ordered = ordered_terminals(terminals, self.keywords)
         skipped = "|".join(t.pattern.to_regexp() for t in ordered if t.name in ignore)
-        tokens = [t for t in ordered if t.name not in ignore]
-        alternatives = "|".join(f"(?:{t.pattern.to_regexp()})" for t in tokens)
+        tokens = [(t.name, _case_sensitive(t) if t.name == IDENTIFIER else t.pattern.to_regexp())
+                  for t in ordered if t.name not in ignore]
+        alternatives = "|".join(f"(?:{regexp})" for _, regexp in tokens)
         # Two groups: the ignored text, then the token (or one stray character, or the end
         # of the text after ignored text such as a last comment: an empty token, dropped).
         self.pattern = re.compile(f"((?>(?:{skipped})*))({alternatives}|(?s:.)|\\Z)")
         assert self.pattern.groups == 2, "a terminal's pattern has a capturing group"
         self.terminal_of = re.compile(
-            "|".join(f"(?P<{t.name}>{t.pattern.to_regexp()})" for t in tokens)).match
+            "|".join(f"(?P<{name}>{regexp})" for name, regexp in tokens)).match
 
     def scan(self, text: str, make_token: type) -> Optional[Iterator]:
         """The tokens of ``text`` (made by ``make_token``, called as ``Token`` is), each
@@ -83,6 +90,25 @@ class Scanner:
                 kind = self.keywords.get(value.upper(), IDENTIFIER)
             terminal[value] = kind
         return terminal
+
+
+_LATIN_1 = [chr(code) for code in range(256)]
+
+
+def _case_sensitive(terminal: TerminalDef) -> str:
+    """The regular expression of ``terminal`` without its ``i`` flag, when that matches the
+    same Latin-1 text (a character class and a repeated one, each holding both cases of
+    its letters); else the one Lark gives."""
+    folded, plain = terminal.pattern.to_regexp(), terminal.pattern.value
+    if isinstance(terminal.pattern, PatternStr) or set(terminal.pattern.flags) != {"i"}:
+        return folded
+    first = [c for c in _LATIN_1 if re.fullmatch(folded, c)]
+    if not first or first != [c for c in _LATIN_1 if re.fullmatch(plain, c)]:
+        return folded
+    if ([c for c in _LATIN_1 if re.fullmatch(folded, first[0] + c)]
+            != [c for c in _LATIN_1 if re.fullmatch(plain, first[0] + c)]):
+        return folded
+    return plain
 
 
 def _tokens(pieces: list[tuple[str, str]], terminal: dict[str, str],
