@@ -37,16 +37,12 @@ Example::
 from __future__ import annotations
 
 import re
-from operator import itemgetter
 from typing import Iterator, Optional
 
 from lark import Token
 from lark.lexer import PatternStr, TerminalDef
 
 from .lexer import IDENTIFIER, keyword_spellings, ordered_terminals
-
-_TOKEN = itemgetter(1)
-
 
 class Scanner:
     """Tokens of a whole text; ``scan`` answers None where ``RapidLexer`` must decide."""
@@ -69,14 +65,18 @@ class Scanner:
         """The tokens of ``text`` (made by ``make_token``, called as ``Token`` is), each
         made as it is asked for; None, before any token, when some text is no token of
         the grammar."""
-        pieces = self.pattern.findall(text)
-        while pieces and not pieces[-1][1]:
-            pieces.pop()        # the ignored text at the end (and findall's empty last match)
-        terminal = self.terminals(set(map(_TOKEN, pieces)))
+        # ``split`` gives the text before the first match, then for each match its two
+        # groups and the text up to the next match: a flat list of strings, cheaper
+        # than ``findall``'s tuples.  Every place of the text matches, so the text
+        # between matches is always empty.
+        parts = self.pattern.split(text)
+        del parts[0]
+        while parts and not parts[-2]:
+            del parts[-3:]      # the ignored text at the end (and the empty last match)
+        terminal = self.terminals(set(parts[1::3]))
         if terminal is None:
             return None
-        pieces.reverse()        # taken from the end: each piece is freed once its token is made
-        return _tokens(pieces, terminal, make_token)
+        return _tokens(parts, terminal, make_token)
 
     def terminals(self, values: set[str]) -> Optional[dict[str, str]]:
         """Token text -> terminal, or None when a text is no token or spans lines."""
@@ -111,14 +111,12 @@ def _case_sensitive(terminal: TerminalDef) -> str:
     return plain
 
 
-def _tokens(pieces: list[tuple[str, str]], terminal: dict[str, str],
-            make_token: type) -> Iterator:
-    """The tokens of ``pieces`` (ignored text and token text, last piece first), with
-    their lines and columns counted (Lark counts lines at \\n only)."""
-    take = pieces.pop
+def _tokens(parts: list[str], terminal: dict[str, str], make_token: type) -> Iterator:
+    """The tokens of ``parts`` (ignored text, token text and empty text, for each token),
+    with their lines and columns counted (Lark counts lines at \n only)."""
     position, line, line_start = 0, 1, 0
-    for _ in range(len(pieces)):
-        skipped, value = take()
+    each = iter(parts)
+    for skipped, value, _ in zip(each, each, each):
         if skipped:
             if "\n" in skipped:
                 line += skipped.count("\n")
