@@ -435,6 +435,8 @@ class Lowering:
 
     def expression(self, children, entries):
         """Relations first, then AND, then OR and XOR, each from left to right."""
+        if len(children) == 3:              # one operator (each is one of the levels')
+            return self.joined(*children)
         items = children
         for operators in COMPARING, CONJOINING, DISJOINING:
             items = self.grouped(items, operators)
@@ -442,6 +444,8 @@ class Lowering:
 
     def term(self, children, entries):
         """Operands joined by * / DIV MOD, from left to right; a sign covers one operand."""
+        if len(children) == 3:              # one operator, no sign
+            return self.joined(*children)
         operands = [children[0]]
         rest = iter(children[1:])
         for operator in rest:
@@ -461,12 +465,14 @@ class Lowering:
         for index in range(1, len(items), 2):
             operator, operand = items[index], items[index + 1]
             if operator.type in operators:
-                left = result[-1]
-                result[-1] = nodes.Binary(operator.value.upper(), left, operand,
-                                        self.operation_span(left, operand))
+                result[-1] = self.joined(result[-1], operator, operand)
             else:
                 result += (operator, operand)
         return result
+
+    def joined(self, left, operator: Token, right) -> ast.Binary:
+        """``left operator right``, spanning both operands (and their parentheses)."""
+        return nodes.Binary(operator.value.upper(), left, right, self.operation_span(left, right))
 
     def negated(self, sign: Token, operand):
         return nodes.Unary(sign.value.upper(), operand, self.operation_span(sign, operand))
