@@ -113,17 +113,18 @@ def _case_sensitive(terminal: TerminalDef) -> str:
 
 def _tokens(parts: list[str], terminal: dict[str, str], make_token: type) -> Iterator:
     """The tokens of ``parts`` (ignored text, token text and empty text, for each token),
-    with their lines and columns counted (Lark counts lines at \n only)."""
-    position, line, line_start = 0, 1, 0
+    with their lines and columns counted (Lark counts lines at \\n only).  Their offsets
+    in the text are left out (``start_pos`` 0, ``end_pos`` None): the AST is built from
+    lines and columns, and a text that fails is parsed again by Lark's driver."""
+    line, column = 1, 1
     each = iter(parts)
     for skipped, value, _ in zip(each, each, each):
         if skipped:
             if "\n" in skipped:
                 line += skipped.count("\n")
-                line_start = position + skipped.rindex("\n") + 1
-            position += len(skipped)
-        end = position + len(value)
-        column = position - line_start + 1
-        yield make_token(terminal[value], value, position, line, column, line,
-                         column + end - position, end)
-        position = end
+                column = len(skipped) - skipped.rindex("\n")
+            else:
+                column += len(skipped)
+        end_column = column + len(value)
+        yield make_token(terminal[value], value, 0, line, column, line, end_column, None)
+        column = end_column
