@@ -19,6 +19,7 @@ exactly the one Lark's driver gives.  Without lark_cython installed,
 from __future__ import annotations
 
 import functools
+import sys
 from typing import Callable, Iterable, Iterator
 
 from lark.parsers.lalr_analysis import Reduce, Shift
@@ -40,7 +41,19 @@ class Reduction:
     __slots__ = ("expansion", "origin", "rule")
 
     def __init__(self, rule):
-        self.expansion, self.origin, self.rule = tuple(rule.expansion), rule.origin, rule
+        self.expansion, self.rule = tuple(rule.expansion), rule
+        self.origin = Symbol(rule.origin.name)
+
+
+class Symbol:
+    """A grammar symbol's name, interned (``sys.intern``) as the table's keys and the
+    scanner's terminal names are: the loop's look-ups by name then find the very key
+    object and compare no text."""
+
+    __slots__ = ("name",)
+
+    def __init__(self, name: str):
+        self.name = sys.intern(str(name))
 
 
 class CompiledTable:
@@ -53,7 +66,8 @@ class CompiledTable:
         reductions = {id(rule): (Reduce, Reduction(rule)) for actions in states.values()
                       for kind, rule in actions.values() if kind is Reduce}
         number = _state_numbers(states)
-        self.states = {number[state]: {symbol: reductions[id(entry[1])] if entry[0] is Reduce
+        self.states = {number[state]: {sys.intern(str(symbol)): reductions[id(entry[1])]
+                                       if entry[0] is Reduce
                                        else (Shift, number[entry[1]])
                                        for symbol, entry in actions.items()}
                        for state, actions in states.items()}

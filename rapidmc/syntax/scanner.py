@@ -37,6 +37,7 @@ Example::
 from __future__ import annotations
 
 import re
+import sys
 from typing import Iterator, Optional
 
 from lark import Token
@@ -88,7 +89,7 @@ class Scanner:
             kind = found.lastgroup
             if kind == IDENTIFIER:
                 kind = self.keywords.get(value.upper(), IDENTIFIER)
-            terminal[value] = kind
+            terminal[value] = sys.intern(kind)     # the compiled table's keys are interned
         return terminal
 
 
