@@ -98,7 +98,12 @@ def number_value(text: str) -> int | float:
 
 
 class Lowering:
-    """The rule methods for one file; ``lexer`` tells the last token shifted."""
+    """The rule methods for one file; ``lexer`` tells the last token shifted.
+
+    A token's line is read as its ``end_line``: no token of the grammar spans lines,
+    and lark_cython's tokens keep ``line`` as a C int, made into a new Python int at
+    each read, but ``end_line`` as the int the scanner gave, one for all the tokens
+    (and spans) of a line."""
 
     def __init__(self, filename: str, lexer):
         self.filename = filename
@@ -132,7 +137,7 @@ class Lowering:
     def span(self, entries: list) -> ast.Span:
         first = entries[0]
         if isinstance(first, TOKEN_TYPES):
-            line, column = first.line, first.column
+            line, column = first.end_line, first.column
         else:
             line, column = self.text_start(entries)
         last = self.lexer.previous
@@ -146,7 +151,7 @@ class Lowering:
         """Where the text of ``entries`` begins (None when they hold no token)."""
         for entry in entries:
             if isinstance(entry, TOKEN_TYPES):
-                return entry.line, entry.column
+                return entry.end_line, entry.column
             if isinstance(entry, (list, tuple)):
                 found = self.text_start(entry)
                 if found is not None:
@@ -176,7 +181,7 @@ class Lowering:
         """The span of one token (built as ``nodes.Span`` would build it, inline: the
         front end makes one for every identifier and literal)."""
         span = _SpanDraft()
-        span.file, span.line, span.column = self.filename, token.line, token.column
+        span.file, span.line, span.column = self.filename, token.end_line, token.column
         span.end_line, span.end_column = token.end_line, token.end_column
         span.__class__ = _Span
         return span
@@ -184,7 +189,7 @@ class Lowering:
     def name(self, token: Token) -> ast.Name:
         text = token.value
         span = _SpanDraft()         # the token's span, as ``token_span`` builds it
-        span.file, span.line, span.column = self.filename, token.line, token.column
+        span.file, span.line, span.column = self.filename, token.end_line, token.column
         span.end_line, span.end_column = token.end_line, token.end_column
         span.__class__ = _Span
         key = self.keys.get(text)
@@ -487,7 +492,7 @@ class Lowering:
         token = children[0]
         text = token.value
         span = _SpanDraft()
-        span.file, span.line, span.column = self.filename, token.line, token.column
+        span.file, span.line, span.column = self.filename, token.end_line, token.column
         span.end_line, span.end_column = token.end_line, token.end_column
         span.__class__ = _Span
         key = self.keys.get(text)
@@ -532,7 +537,7 @@ class Lowering:
         token = children[0]
         text = token.value
         span = _SpanDraft()         # ``token_span`` written out
-        span.file, span.line, span.column = self.filename, token.line, token.column
+        span.file, span.line, span.column = self.filename, token.end_line, token.column
         span.end_line, span.end_column = token.end_line, token.end_column
         span.__class__ = _Span
         value = self.numbers.get(text)
