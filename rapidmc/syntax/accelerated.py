@@ -63,8 +63,11 @@ class CompiledTable:
     def __init__(self, table, pass_through: frozenset = frozenset()):
         states = with_shortcuts(table.states, pass_through.__contains__,
                                 table.end_states.values()) if pass_through else table.states
-        reductions = {id(rule): (Reduce, Reduction(rule)) for actions in states.values()
-                      for kind, rule in actions.values() if kind is Reduce}
+        reductions: dict[int, tuple] = {}
+        for actions in states.values():
+            for kind, rule in actions.values():
+                if kind is Reduce and id(rule) not in reductions:
+                    reductions[id(rule)] = (Reduce, Reduction(rule))
         number = _state_numbers(states)
         self.states = {number[state]: {sys.intern(str(symbol)): reductions[id(entry[1])]
                                        if entry[0] is Reduce
