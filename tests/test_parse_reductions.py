@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from rapidmc.syntax.parser import rapid_parser
-from rapidmc.syntax.reductions import ChildPlan, _callback_maker, singular_rules
+from rapidmc.syntax.reductions import ChildPlan
 
 RULES = sorted(rapid_parser().rules, key=str)
 
@@ -38,24 +38,3 @@ def test_written_selection_matches_the_plan(rule):
     reduce = plan.function(lambda *arguments: received.append(arguments) or "node")
     assert reduce(sample_entries(plan)) == "node"
     assert received[0][0] == expected
-
-
-SINGULAR = singular_rules(tuple(RULES))
-
-
-def test_singular_rules_are_the_underscore_rules_of_one_child():
-    assert {"_statement", "_simple_statement", "_module_item"} <= SINGULAR
-    assert "_expressions" not in SINGULAR                            # one or more children
-    assert not [name for name in SINGULAR if name.startswith("__")]   # Lark's repetition lists
-
-
-@pytest.mark.parametrize("rule", [r for r in RULES if r.origin.name in SINGULAR], ids=str)
-def test_singular_rule_gives_the_child_lark_splices(rule):
-    """Lark splices the list of one child a singular rule makes; its callback gives that
-    child itself, and a singular rule below it is taken as its child too."""
-    plan = ChildPlan.of(rule)
-    spliced = {index for index, splice, _ in plan.kept if splice}
-    as_lists = [[f"e{index}"] if index in spliced else f"e{index}" for index in range(plan.size)]
-    (expected,) = expected_children(plan, as_lists)
-    callback = _callback_maker(rule, SINGULAR)(None)
-    assert callback([f"e{index}" for index in range(plan.size)]) == expected
