@@ -30,7 +30,7 @@ from ..diagnostics import (BAD_CHARACTER, BAD_STRING, FILE_EMPTY, PLACEHOLDER,
 from . import accelerated, recovery
 from .lexer import RapidLexer
 from .lower import Lowering
-from .reductions import passes_child_on, rule_callbacks, singular_rules
+from .reductions import passes_child_on, rule_callbacks
 from .scanner import Scanner
 from .tokens import CompiledToken, describe_expected, describe_token
 
@@ -113,13 +113,7 @@ def _all_syntax_errors(text: str, filename: str, first: UnexpectedInput) -> list
 @functools.cache
 def _pass_through() -> frozenset:
     """The rules whose reductions the compiled loop skips (``shortcuts``)."""
-    return frozenset(rule for rule in _reduced_rules() if passes_child_on(rule, _singular()))
-
-
-@functools.cache
-def _singular() -> frozenset[str]:
-    """The ``_rules`` whose callbacks give one child, not a list (``singular_rules``)."""
-    return singular_rules(_reduced_rules())
+    return frozenset(rule for rule in _reduced_rules() if passes_child_on(rule))
 
 
 class NotScanned(Exception):
@@ -139,7 +133,7 @@ def _parse(text: str, filename: str, compiled: bool = False) -> tuple[ast.Module
     frontend = lark.parser
     table = frontend.parser._parse_table
     lowering = Lowering(filename, None)
-    callbacks = rule_callbacks(_reduced_rules(), lowering, _singular())
+    callbacks = rule_callbacks(_reduced_rules(), lowering)
     if compiled:
         tokens = _scanner().scan(text, CompiledToken)
         if tokens is None:

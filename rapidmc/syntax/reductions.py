@@ -45,9 +45,7 @@ class ChildPlan:
     nones_after: int
 
     @staticmethod
-    def of(rule: Rule, singular: frozenset[str] = frozenset()) -> "ChildPlan":
-        """The plan of ``rule``; a ``_rule`` named in ``singular`` gives one child, which
-        is kept as it is rather than spliced (``singular_rules``)."""
+    def of(rule: Rule) -> "ChildPlan":
         expansion = rule.expansion
         empty = rule.options.empty_indices
         nones = _nones_per_gap(empty, len(expansion)) if empty else [0] * (len(expansion) + 1)
@@ -56,8 +54,7 @@ class ChildPlan:
         for index, symbol in enumerate(expansion):
             pending += nones[index]
             if not (symbol.is_term and symbol.filter_out):
-                splice = (not symbol.is_term and symbol.name.startswith("_")
-                          and symbol.name not in singular)
+                splice = not symbol.is_term and symbol.name.startswith("_")
                 kept.append((index, splice, pending))
                 pending = 0
         return ChildPlan(len(expansion), tuple(kept), pending + nones[len(expansion)])
@@ -134,57 +131,25 @@ def _nones_per_gap(empty_indices: list[bool], length: int) -> list[int]:
     return counts
 
 
-def rule_callbacks(rules, lowering,
-                   singular: Optional[frozenset[str]] = None) -> dict[Rule, Callback]:
+def rule_callbacks(rules, lowering) -> dict[Rule, Callback]:
     """The parser callbacks: one per rule, calling ``lowering``'s method of the rule's name.
 
     A lowering method receives ``(children, entries)``; ``lowering.enclose``
     is told when a ``?rule`` passes on its only child with other tokens
     around it (a parenthesised expression), since the enclosing text counts
-    for the positions of the rules above.  ``singular`` is ``singular_rules(rules)``,
-    given when known.
+    for the positions of the rules above.
     """
-    rules = tuple(rules)
-    if singular is None:
-        singular = singular_rules(rules)
-    return {rule: _callback_maker(rule, singular)(lowering) for rule in rules}
+    return {rule: _callback_maker(rule)(lowering) for rule in rules}
 
 
 @functools.cache
-def singular_rules(rules: tuple[Rule, ...]) -> frozenset[str]:
-    """The ``_rules`` that always give exactly one child (``_statement``: an assignment,
-    an IF, ...): each of their expansions keeps one symbol, itself no ``_rule`` or a
-    singular one.  Their callbacks give that child alone rather than a list of it to
-    splice, so that the compiled loop may skip them where they pass it on."""
-    by_name: dict[str, list[Rule]] = {}
-    for rule in rules:
-        by_name.setdefault(rule.origin.name, []).append(rule)
-    singular: set[str] = set()
-    while True:
-        found = {name for name, expansions in by_name.items()
-                 if name.startswith("_") and name not in singular
-                 and all(_one_child(ChildPlan.of(rule, frozenset(singular)))
-                         for rule in expansions)}
-        if not found:
-            return frozenset(singular)
-        singular |= found
-
-
-def _one_child(plan: ChildPlan) -> bool:
-    return len(plan.kept) == 1 and plan.kept[0][1:] == (False, 0) and not plan.nones_after
-
-
-@functools.cache
-def _callback_maker(rule: Rule, singular: frozenset[str]) -> Callable[[object], Callback]:
+def _callback_maker(rule: Rule) -> Callable[[object], Callback]:
     """What a rule's callback is, decided once: a function of the lowering giving it."""
     name = _callback_name(rule)
-    plan = ChildPlan.of(rule, singular)
-    if passes_child_on(rule, singular):
+    plan = ChildPlan.of(rule)
+    if passes_child_on(rule):
         return lambda lowering: _ONLY_ENTRY
     if name.startswith("_"):
-        if rule.origin.name in singular:
-            child = itemgetter(plan.kept[0][0])
-            return lambda lowering: child
         reduce = _passing_on(plan) or plan.function(None)
         return lambda lowering: reduce
     if rule.options.expand1 and not rule.alias:
@@ -202,17 +167,14 @@ def _callback_maker(rule: Rule, singular: frozenset[str]) -> Callable[[object], 
 
 
 @functools.cache
-def passes_child_on(rule: Rule, singular: frozenset[str] = frozenset()) -> bool:
+def passes_child_on(rule: Rule) -> bool:
     """Whether the rule's callback gives its one stack entry back unchanged: a ``?rule``
-    with one child (``term: postfix``), a ``_rule`` of one spliced child, or a singular
-    ``_rule`` (see ``singular_rules``) of one symbol.  The compiled loop may skip such
-    reductions (``shortcuts``)."""
-    plan = ChildPlan.of(rule, singular)
+    with one child (``term: postfix``), or a ``_rule`` of one spliced child.  The
+    compiled loop may skip such reductions (``shortcuts``)."""
+    plan = ChildPlan.of(rule)
     if plan.size != 1:
         return False
     if _callback_name(rule).startswith("_"):
-        if rule.origin.name in singular:
-            return _one_child(plan)
         return plan.kept == ((0, True, 0),) and not plan.nones_after
     return bool(rule.options.expand1) and not rule.alias and plan.is_identity()
 
