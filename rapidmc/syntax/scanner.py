@@ -103,13 +103,13 @@ def _case_sensitive(terminal: TerminalDef) -> str:
     folded, plain = terminal.pattern.to_regexp(), terminal.pattern.value
     if isinstance(terminal.pattern, PatternStr) or set(terminal.pattern.flags) != {"i"}:
         return folded
-    first = [c for c in _LATIN_1 if re.fullmatch(folded, c)]
-    if not first or first != [c for c in _LATIN_1 if re.fullmatch(plain, c)]:
+    folded_match, plain_match = re.compile(folded).fullmatch, re.compile(plain).fullmatch
+    first = [c for c in _LATIN_1 if folded_match(c)]
+    if not first or first != [c for c in _LATIN_1 if plain_match(c)]:
         return folded
-    if ([c for c in _LATIN_1 if re.fullmatch(folded, first[0] + c)]
-            != [c for c in _LATIN_1 if re.fullmatch(plain, first[0] + c)]):
-        return folded
-    return plain
+    start = first[0]
+    later = [c for c in _LATIN_1 if folded_match(start + c)]
+    return plain if later == [c for c in _LATIN_1 if plain_match(start + c)] else folded
 
 
 def _tokens(parts: list[str], terminal: dict[str, str], make_token: type) -> Iterator:
