@@ -210,3 +210,19 @@ def test_nesting_limit_is_the_same_on_both_paths(opening, middle, closing, aroun
     finally:
         sys.setrecursionlimit(limit)
     assert outcomes == {"ast", "diagnostics"}
+
+
+@pytest.mark.parametrize("regexp, case_sensitive", [
+    ("[a-zA-Z][a-zA-Z0-9_]*", True),
+    ("[a-zA-Z\xc0-\xd6\xd8-\xf6\xf8-\xff][a-zA-Z0-9_\xc0-\xd6\xd8-\xf6\xf8-\xff]*", True),
+    ("[a-z][a-z0-9]*", False),               # capitals only through the flag
+    ("[a-zA-Z][a-z0-9]*", False),            # the same, after the first character
+    ("[a-zA-Z\xc0-\xd6][a-zA-Z]*", False),   # \xe0-\xf6 only through the flag
+])
+def test_identifier_drops_its_i_flag_only_where_latin_1_matches_stay_the_same(
+        regexp, case_sensitive):
+    from lark.lexer import PatternRE, TerminalDef
+
+    from rapidmc.syntax.scanner import _case_sensitive
+    terminal = TerminalDef("NAME", PatternRE(regexp, ["i"]))
+    assert (_case_sensitive(terminal) == regexp) == case_sensitive
