@@ -225,13 +225,13 @@ def stage_times(text: str, runs: int) -> None:
 
 def floor_times(text: str, tokens: list, looping: float, runs: int) -> None:
     """What the fast path cannot do without, each measured alone: the scanner's regular
-    expression, making lark_cython's tokens (from their fields, in C), the compiled loop
+    expression (its ``split`` of the text), making lark_cython's tokens (from their fields, in C), the compiled loop
     (no-op callbacks) and making the AST's nodes (from their fields, by ``construct``'s
     builders).  Their sum is the floor of this design, with no Python run per token or
     per rule beyond the feed and one call per reduction."""
     count = text.count("\n")
     pattern = parser._scanner().pattern
-    matching = min(cpu_seconds(lambda: pattern.findall(text)) for _ in range(runs))
+    matching = min(cpu_seconds(lambda: pattern.split(text)) for _ in range(runs))
     fields = [(t.type, t.value, t.start_pos, t.line, t.column, t.end_line, t.end_column,
                t.end_pos) for t in tokens]
     making = min(cpu_seconds(lambda: list(itertools.starmap(CompiledToken, fields)))
