@@ -82,6 +82,16 @@ Reaching the target needs the scanning and the node construction compiled
 (a Cython or Rust front end that builds the nodes, against the rule of a
 pure-Python package), or AST nodes cheaper to build than frozen
 dataclasses (a change of rapidmc.ast that every later stage would see).
+
+Fourth round (docs/architecture.md, "Parsing speed"): the scanner splits the
+text into a flat list of strings (``re.split``), matches identifiers without
+the ``i`` flag and leaves the tokens' offsets out; the compiled table gives
+the states most often entered by a token CPython's shared small ints and
+interns its symbol names; the lowering writes the hottest rules out and
+reads a token's line as its ``end_line``.  Five rounds, the code before and
+after alternately: 90,000-92,300 -> 105,600-108,500 lines/s (best of 3);
+stages (best of 7): scanning 42 ms, LALR loop 49, AST construction 88,
+whole parse 180 (215 before).
 """
 from __future__ import annotations
 
