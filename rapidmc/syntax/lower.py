@@ -488,21 +488,9 @@ class Lowering:
 
     @children_only
     def name_ref(self, children, entries=None):
-        # ``name`` written out: a quarter of all reductions are this rule's.
-        token = children[0]
-        text = token.value
-        span = _SpanDraft()
-        span.file, span.line, span.column = self.filename, token.end_line, token.column
-        span.end_line, span.end_column = token.end_line, token.end_column
-        span.__class__ = _Span
-        key = self.keys.get(text)
-        if key is None:
-            key = self.checked_key(text, span)
-        name = _NameDraft()
-        name.text, name.key, name.span = text, key, span
-        name.__class__ = _Name
+        name = self.name(children[0])
         reference = _NameRefDraft()
-        reference.name, reference.span = name, span
+        reference.name, reference.span = name, name.span
         reference.__class__ = _NameRef
         return reference
 
