@@ -89,7 +89,7 @@ the ``i`` flag and leaves the tokens' offsets out; the compiled table gives
 the states most often entered by a token CPython's shared small ints and
 interns its symbol names; the lowering writes the hottest rules out and
 reads a token's line as its ``end_line``.  Five rounds, the code before and
-after alternately: 90,000-92,300 -> 105,600-108,500 lines/s (best of 3);
+after alternately: 92,300-94,000 -> 104,500-108,800 lines/s (best of 3);
 stages (best of 7): scanning 42 ms, LALR loop 49, AST construction 88,
 whole parse 180 (215 before).
 """
