@@ -12,7 +12,7 @@ import pytest
 
 from rapidmc.diagnostics import UserError
 from rapidmc.syntax import accelerated, parser
-from rapidmc.syntax.tokens import TOKEN_TYPES
+from rapidmc.syntax.tokens import TOKEN_TYPES, CompiledToken
 
 ROOT = Path(__file__).resolve().parent.parent
 PROGRAMS = sorted(path for path in ROOT.glob("**/*.mod")
@@ -154,6 +154,20 @@ def test_lexical_corners_parse_the_same_on_both_paths(text, monkeypatch):
     assert fast == _reported(text, "m.mod")
 
 
+@needs_compiled
+@pytest.mark.parametrize("identifier", ["x\u017f", "\u212aey", "\u0178es", "a\u017fb\u212a"])
+def test_identifiers_with_letters_beyond_latin_1_are_left_to_lark(identifier, monkeypatch):
+    """Lark's identifier ignores case, so it takes the letters beyond Latin-1 whose other case
+    is a letter it allows (long s, the Kelvin sign, Y with diaeresis); the scanner, which
+    matches identifiers case-sensitively, declines such a text and Lark's driver reads it."""
+    text = f"MODULE m\nPROC p()\n  {identifier} := 1;\nENDPROC\nENDMODULE\n"
+    assert parser._scanner().scan(text, CompiledToken) is None
+    fast = _reported(text, "m.mod")
+    monkeypatch.setattr(accelerated, "AVAILABLE", False)
+    assert fast == _reported(text, "m.mod")
+    assert fast[0].routines[0].body[0].target.name.text == identifier
+
+
 MUTANTS = 150
 
 
@@ -196,3 +210,19 @@ def test_nesting_limit_is_the_same_on_both_paths(opening, middle, closing, aroun
     finally:
         sys.setrecursionlimit(limit)
     assert outcomes == {"ast", "diagnostics"}
+
+
+@pytest.mark.parametrize("regexp, case_sensitive", [
+    ("[a-zA-Z][a-zA-Z0-9_]*", True),
+    ("[a-zA-Z\xc0-\xd6\xd8-\xf6\xf8-\xff][a-zA-Z0-9_\xc0-\xd6\xd8-\xf6\xf8-\xff]*", True),
+    ("[a-z][a-z0-9]*", False),               # capitals only through the flag
+    ("[a-zA-Z][a-z0-9]*", False),            # the same, after the first character
+    ("[a-zA-Z\xc0-\xd6][a-zA-Z]*", False),   # \xe0-\xf6 only through the flag
+])
+def test_identifier_drops_its_i_flag_only_where_latin_1_matches_stay_the_same(
+        regexp, case_sensitive):
+    from lark.lexer import PatternRE, TerminalDef
+
+    from rapidmc.syntax.scanner import _case_sensitive
+    terminal = TerminalDef("NAME", PatternRE(regexp, ["i"]))
+    assert (_case_sensitive(terminal) == regexp) == case_sensitive

@@ -90,3 +90,25 @@ def test_tokens_depend_on_what_the_parser_accepts(text, expected):
 
 def test_placeholder_is_an_expression_where_one_fits():
     assert value_of("<EXP>").kind == "EXP"
+
+
+def test_no_token_spans_lines():
+    """The lowering reads a token's line as its ``end_line`` (``lower.Lowering``): that
+    holds while no terminal of the grammar, ignored text apart, takes a line break."""
+    import re
+
+    from rapidmc.syntax.parser import rapid_parser
+    conf = rapid_parser().parser.lexer_conf
+    samples = ["\n", "a\nb", "A\nB", '"a\nb"', '"\n"', "1\n2", "<\n>", "<EXP\n>", ":\n=", "!\n"]
+    for terminal in conf.terminals:
+        if terminal.name not in conf.ignore:
+            pattern = re.compile(terminal.pattern.to_regexp())
+            assert not [text for text in samples if pattern.fullmatch(text)], terminal.name
+
+
+def test_spans_of_tokens_after_line_breaks_count_lines():
+    text = "MODULE t\nPROC p()\n\n  x :=\n    a +\n  1;\nENDPROC\nENDMODULE\n"
+    statement = parse_text(text, "t.mod")[0].routines[0].body[0]
+    assert (statement.span.line, statement.span.end_line) == (4, 6)
+    assert (statement.target.span.line, statement.value.left.span.line) == (4, 5)
+    assert statement.value.right.span.line == statement.value.right.span.end_line == 6

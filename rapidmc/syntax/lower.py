@@ -59,6 +59,8 @@ _INTEGER_LITERAL = re.compile(r"[0-9]+|0[xX][0-9a-fA-F]+|0[oO][0-7]+|0[bB][01]+"
 _SpanDraft, _NameDraft, _NameRefDraft, _NumLiteralDraft, _ArgumentDraft = DRAFTS = tuple(
     draft_class(c) for c in (ast.Span, ast.Name, ast.NameRef, ast.NumLiteral, ast.Argument))
 assert None not in DRAFTS, "this Python cannot turn a draft into its node"
+_Span, _Name, _NameRef, _NumLiteral, _Argument = (
+    ast.Span, ast.Name, ast.NameRef, ast.NumLiteral, ast.Argument)
 
 
 def decode_string(token_text: str) -> Optional[str]:
@@ -96,7 +98,12 @@ def number_value(text: str) -> int | float:
 
 
 class Lowering:
-    """The rule methods for one file; ``lexer`` tells the last token shifted."""
+    """The rule methods for one file; ``lexer`` tells the last token shifted.
+
+    A token's line is read as its ``end_line``: no token of the grammar spans lines,
+    and lark_cython's tokens keep ``line`` as a C int, made into a new Python int at
+    each read, but ``end_line`` as the int the scanner gave, one for all the tokens
+    (and spans) of a line."""
 
     def __init__(self, filename: str, lexer):
         self.filename = filename
@@ -130,21 +137,21 @@ class Lowering:
     def span(self, entries: list) -> ast.Span:
         first = entries[0]
         if isinstance(first, TOKEN_TYPES):
-            line, column = first.line, first.column
+            line, column = first.end_line, first.column
         else:
             line, column = self.text_start(entries)
         last = self.lexer.previous
         span = _SpanDraft()
         span.file, span.line, span.column = self.filename, line, column
         span.end_line, span.end_column = last.end_line, last.end_column
-        span.__class__ = ast.Span
+        span.__class__ = _Span
         return span
 
     def text_start(self, entries) -> Optional[tuple[int, int]]:
         """Where the text of ``entries`` begins (None when they hold no token)."""
         for entry in entries:
             if isinstance(entry, TOKEN_TYPES):
-                return entry.line, entry.column
+                return entry.end_line, entry.column
             if isinstance(entry, (list, tuple)):
                 found = self.text_start(entry)
                 if found is not None:
@@ -167,27 +174,30 @@ class Lowering:
         span = _SpanDraft()
         span.file, span.line, span.column = self.filename, line, column
         span.end_line, span.end_column = self.text_end(last)
-        span.__class__ = ast.Span
+        span.__class__ = _Span
         return span
 
     def token_span(self, token: Token) -> ast.Span:
         """The span of one token (built as ``nodes.Span`` would build it, inline: the
         front end makes one for every identifier and literal)."""
         span = _SpanDraft()
-        span.file, span.line, span.column = self.filename, token.line, token.column
+        span.file, span.line, span.column = self.filename, token.end_line, token.column
         span.end_line, span.end_column = token.end_line, token.end_column
-        span.__class__ = ast.Span
+        span.__class__ = _Span
         return span
 
     def name(self, token: Token) -> ast.Name:
         text = token.value
-        span = self.token_span(token)
+        span = _SpanDraft()         # the token's span, as ``token_span`` builds it
+        span.file, span.line, span.column = self.filename, token.end_line, token.column
+        span.end_line, span.end_column = token.end_line, token.end_column
+        span.__class__ = _Span
         key = self.keys.get(text)
         if key is None:
             key = self.checked_key(text, span)
         name = _NameDraft()
         name.text, name.key, name.span = text, key, span
-        name.__class__ = ast.Name
+        name.__class__ = _Name
         return name
 
     def checked_key(self, text: str, span: ast.Span) -> str:
@@ -409,7 +419,7 @@ class Lowering:
         argument.kind, argument.name, argument.value = ast.REQUIRED, None, value
         argument.source = None
         argument.span = self.span(entries or children) if id(value) in self.enclosed else value.span
-        argument.__class__ = ast.Argument
+        argument.__class__ = _Argument
         return argument
 
     def named_argument(self, children, entries):
@@ -430,6 +440,8 @@ class Lowering:
 
     def expression(self, children, entries):
         """Relations first, then AND, then OR and XOR, each from left to right."""
+        if len(children) == 3:              # one operator (each is one of the levels')
+            return self.joined(*children)
         items = children
         for operators in COMPARING, CONJOINING, DISJOINING:
             items = self.grouped(items, operators)
@@ -437,6 +449,8 @@ class Lowering:
 
     def term(self, children, entries):
         """Operands joined by * / DIV MOD, from left to right; a sign covers one operand."""
+        if len(children) == 3:              # one operator, no sign
+            return self.joined(*children)
         operands = [children[0]]
         rest = iter(children[1:])
         for operator in rest:
@@ -456,12 +470,14 @@ class Lowering:
         for index in range(1, len(items), 2):
             operator, operand = items[index], items[index + 1]
             if operator.type in operators:
-                left = result[-1]
-                result[-1] = nodes.Binary(operator.value.upper(), left, operand,
-                                        self.operation_span(left, operand))
+                result[-1] = self.joined(result[-1], operator, operand)
             else:
                 result += (operator, operand)
         return result
+
+    def joined(self, left, operator: Token, right) -> ast.Binary:
+        """``left operator right``, spanning both operands (and their parentheses)."""
+        return nodes.Binary(operator.value.upper(), left, right, self.operation_span(left, right))
 
     def negated(self, sign: Token, operand):
         return nodes.Unary(sign.value.upper(), operand, self.operation_span(sign, operand))
@@ -475,7 +491,7 @@ class Lowering:
         name = self.name(children[0])
         reference = _NameRefDraft()
         reference.name, reference.span = name, name.span
-        reference.__class__ = ast.NameRef
+        reference.__class__ = _NameRef
         return reference
 
     def index(self, children, entries):
@@ -506,14 +522,18 @@ class Lowering:
 
     @children_only
     def number(self, children, entries=None):
-        text = children[0].value
-        span = self.token_span(children[0])
+        token = children[0]
+        text = token.value
+        span = _SpanDraft()         # ``token_span`` written out
+        span.file, span.line, span.column = self.filename, token.end_line, token.column
+        span.end_line, span.end_column = token.end_line, token.end_column
+        span.__class__ = _Span
         value = self.numbers.get(text)
         if value is None:
             value = self.checked_number(text, span)
         literal = _NumLiteralDraft()
         literal.value, literal.text, literal.span = value, text, span
-        literal.__class__ = ast.NumLiteral
+        literal.__class__ = _NumLiteral
         return literal
 
     def checked_number(self, text: str, span: ast.Span) -> int | float:

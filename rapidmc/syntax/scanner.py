@@ -14,7 +14,13 @@ from these tokens is one in which ``RapidLexer`` reads the same tokens.
 The pattern is ``RapidLexer``'s (ignored text, then the terminals in Lark's
 order), with a last alternative that takes any one character: a place no
 token starts from becomes a token of no terminal, which makes ``scan``
-answer None, rather than a place ``findall`` would skip silently.
+answer None, rather than a place ``findall`` would skip silently.  One
+difference: the identifier is matched without its ``i`` flag (case-folding
+every character costs an eighth of the scan).  Its character classes hold
+both cases of each Latin-1 letter in them (checked when the scanner is
+built), so the flag only adds characters beyond Latin-1 (``\u017f``, the
+Kelvin sign): where the text has one in code, the scanner finds a token of
+no terminal and answers None, and Lark's driver reads the text.
 
 Example::
 
@@ -31,16 +37,13 @@ Example::
 from __future__ import annotations
 
 import re
-from operator import itemgetter
+import sys
 from typing import Iterator, Optional
 
 from lark import Token
-from lark.lexer import TerminalDef
+from lark.lexer import PatternStr, TerminalDef
 
 from .lexer import IDENTIFIER, keyword_spellings, ordered_terminals
-
-_TOKEN = itemgetter(1)
-
 
 class Scanner:
     """Tokens of a whole text; ``scan`` answers None where ``RapidLexer`` must decide."""
@@ -49,27 +52,32 @@ class Scanner:
         self.keywords = keyword_spellings(terminals)
         ordered = ordered_terminals(terminals, self.keywords)
         skipped = "|".join(t.pattern.to_regexp() for t in ordered if t.name in ignore)
-        tokens = [t for t in ordered if t.name not in ignore]
-        alternatives = "|".join(f"(?:{t.pattern.to_regexp()})" for t in tokens)
+        tokens = [(t.name, _case_sensitive(t) if t.name == IDENTIFIER else t.pattern.to_regexp())
+                  for t in ordered if t.name not in ignore]
+        alternatives = "|".join(f"(?:{regexp})" for _, regexp in tokens)
         # Two groups: the ignored text, then the token (or one stray character, or the end
         # of the text after ignored text such as a last comment: an empty token, dropped).
         self.pattern = re.compile(f"((?>(?:{skipped})*))({alternatives}|(?s:.)|\\Z)")
         assert self.pattern.groups == 2, "a terminal's pattern has a capturing group"
         self.terminal_of = re.compile(
-            "|".join(f"(?P<{t.name}>{t.pattern.to_regexp()})" for t in tokens)).match
+            "|".join(f"(?P<{name}>{regexp})" for name, regexp in tokens)).match
 
     def scan(self, text: str, make_token: type) -> Optional[Iterator]:
         """The tokens of ``text`` (made by ``make_token``, called as ``Token`` is), each
         made as it is asked for; None, before any token, when some text is no token of
         the grammar."""
-        pieces = self.pattern.findall(text)
-        while pieces and not pieces[-1][1]:
-            pieces.pop()        # the ignored text at the end (and findall's empty last match)
-        terminal = self.terminals(set(map(_TOKEN, pieces)))
+        # ``split`` gives the text before the first match, then for each match its two
+        # groups and the text up to the next match: a flat list of strings, cheaper
+        # than ``findall``'s tuples.  Every place of the text matches, so the text
+        # between matches is always empty.
+        parts = self.pattern.split(text)
+        del parts[0]
+        while parts and not parts[-2]:
+            del parts[-3:]      # the ignored text at the end (and the empty last match)
+        terminal = self.terminals(set(parts[1::3]))
         if terminal is None:
             return None
-        pieces.reverse()        # taken from the end: each piece is freed once its token is made
-        return _tokens(pieces, terminal, make_token)
+        return _tokens(parts, terminal, make_token)
 
     def terminals(self, values: set[str]) -> Optional[dict[str, str]]:
         """Token text -> terminal, or None when a text is no token or spans lines."""
@@ -81,25 +89,43 @@ class Scanner:
             kind = found.lastgroup
             if kind == IDENTIFIER:
                 kind = self.keywords.get(value.upper(), IDENTIFIER)
-            terminal[value] = kind
+            terminal[value] = sys.intern(kind)     # the compiled table's keys are interned
         return terminal
 
 
-def _tokens(pieces: list[tuple[str, str]], terminal: dict[str, str],
-            make_token: type) -> Iterator:
-    """The tokens of ``pieces`` (ignored text and token text, last piece first), with
-    their lines and columns counted (Lark counts lines at \\n only)."""
-    take = pieces.pop
-    position, line, line_start = 0, 1, 0
-    for _ in range(len(pieces)):
-        skipped, value = take()
+_LATIN_1 = [chr(code) for code in range(256)]
+
+
+def _case_sensitive(terminal: TerminalDef) -> str:
+    """The regular expression of ``terminal`` without its ``i`` flag, when that matches the
+    same Latin-1 text (a character class and a repeated one, each holding both cases of
+    its letters); else the one Lark gives."""
+    folded, plain = terminal.pattern.to_regexp(), terminal.pattern.value
+    if isinstance(terminal.pattern, PatternStr) or set(terminal.pattern.flags) != {"i"}:
+        return folded
+    folded_match, plain_match = re.compile(folded).fullmatch, re.compile(plain).fullmatch
+    first = [c for c in _LATIN_1 if folded_match(c)]
+    if not first or first != [c for c in _LATIN_1 if plain_match(c)]:
+        return folded
+    start = first[0]
+    later = [c for c in _LATIN_1 if folded_match(start + c)]
+    return plain if later == [c for c in _LATIN_1 if plain_match(start + c)] else folded
+
+
+def _tokens(parts: list[str], terminal: dict[str, str], make_token: type) -> Iterator:
+    """The tokens of ``parts`` (ignored text, token text and empty text, for each token),
+    with their lines and columns counted (Lark counts lines at \\n only).  Their offsets
+    in the text are left out (``start_pos`` 0, ``end_pos`` None): the AST is built from
+    lines and columns, and a text that fails is parsed again by Lark's driver."""
+    line, column = 1, 1
+    each = iter(parts)
+    for skipped, value, _ in zip(each, each, each):
         if skipped:
             if "\n" in skipped:
                 line += skipped.count("\n")
-                line_start = position + skipped.rindex("\n") + 1
-            position += len(skipped)
-        end = position + len(value)
-        column = position - line_start + 1
-        yield make_token(terminal[value], value, position, line, column, line,
-                         column + end - position, end)
-        position = end
+                column = len(skipped) - skipped.rindex("\n")
+            else:
+                column += len(skipped)
+        end_column = column + len(value)
+        yield make_token(terminal[value], value, 0, line, column, line, end_column, None)
+        column = end_column
