@@ -26,7 +26,7 @@ from .registry import CHOICE, compiled
 from .signature_parts import DEVICE, TIME
 from .sockets import configured, environment_text
 
-EOF_TEXT = "EOF"
+EOF_TEXT = PREDEFINED_DATA["EOF"].value
 EOF_NUM = float(PREDEFINED_DATA["EOF_NUM"].value)
 EOF_BIN = -1.0
 READ, WRITE, APPEND, BINARY = "read", "write", "append", "bin"
@@ -63,8 +63,10 @@ def _writer(calls, compiler, call, entry, text_of):
     return Action(call.span, write)
 
 
+# \Read, \Write and \Append exclude each other; \Bin goes with any of them (`\Read\Bin`,
+# `\Write\Bin` in public programs that run on controllers, e.g. abb_motion_program_exec).
 @compiled(f"Open(string Object \\string File, {DEVICE} \\switch Read | switch Write | switch Append "
-              "| switch Bin)")
+              "\\switch Bin)")
 def _open(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     place, file, device = arguments.value("Object"), arguments.value("File"), arguments.fn("IODevice")
@@ -245,7 +247,10 @@ def _read_str_bin(calls, compiler, call, entry) -> Compiled:
     return _reader(calls, compiler, call, entry, read, STRING)
 
 
-@compiled(f"ReadRawBytes({DEVICE}, VAR rawbytes RawData, num NoOfBytes {TIME})",
+# ABB's examples read what the device has (`ReadRawBytes io_device, raw_data_in \Time:=1;`):
+# without \NoOfBytes the read takes the received data not read yet, or else the next line,
+# at most a full rawbytes (1024 bytes); at the end of the file RawData is empty.
+@compiled(f"ReadRawBytes({DEVICE}, VAR rawbytes RawData \\num NoOfBytes {TIME})",
           modelled=CHOICE)
 def _read_raw_bytes(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
@@ -255,8 +260,13 @@ def _read_raw_bytes(calls, compiler, call, entry):
     def read(m):
         ref = device(m)
         name, mode, unread, unwritten = _open_device(m, ref, "ReadRawBytes")
-        size = int(count(m))
-        unread = _characters(m, call, name, unread, size)
+        wanted = count(m)
+        if wanted is ABSENT:
+            unread = _characters(m, call, name, unread, 1)
+            size = min(len(unread), rawbytes.MAX_BYTES)
+        else:
+            size = int(wanted)
+            unread = _characters(m, call, name, unread, size)
         m.write_ref(target(m), unread[:size].encode("latin-1", errors="replace"))
         m.write_ref(ref, (name, mode, unread[size:], unwritten))
     return Action(call.span, read)
