@@ -62,3 +62,43 @@ def test_a_procedure_with_parenthesised_arguments_is_told_how_to_write_them(tmp_
                      % (tmp_path / "Calls.mod")]
     assert not any("unexpected ','" in text for text in lines)
     assert sum("[RMC101]" in text for text in lines) == 4     # the expression call is fine
+
+
+def test_bin_goes_with_read_and_write_and_raw_bytes_are_read_without_a_count():
+    program = HERE / "binary_log.mod"
+    code, out, err = cli("check", program, "--quiet", "--file-lines", "OK",
+                         "--formula", 'raw: G ("Ended()" -> "nBytesRead = 0 OR nBytesRead = 3")',
+                         "--formula", 'some: G ("Ended()" -> "nBytesRead = 0")')
+    assert code == 1, err
+    found = verdicts(out)
+    assert found["no_runtime_error"] == found["raw"] == "HOLDS", out
+    assert found["some"] == "VIOLATED", out        # the line "OK" plus its end: 3 bytes
+
+
+def test_open_still_refuses_two_access_modes(tmp_path):
+    program = tmp_path / "Modes.mod"
+    program.write_text('MODULE Modes\n  VAR iodev f;\n  PROC main()\n'
+                       '    Open "HOME:" \\File:="a.txt", f \\Read\\Write;\n  ENDPROC\nENDMODULE\n')
+    code, _, err = cli("check", program, "--quiet")
+    assert code == 2 and "of Open exclude each other [RMC205]" in err
+
+
+def test_the_eof_constant_is_what_readstr_returns_at_the_end_of_a_file():
+    program = HERE / "binary_log.mod"
+    code, out, err = cli("check", program, "--quiet", "--file-lines", "OK",
+                         "--formula", 'end: G !"bAtEnd"', "--formula", 'line: G !"bGotLine"')
+    assert code == 1, err
+    found = verdicts(out)
+    assert found["end"] == found["line"] == "VIOLATED", out     # both branches are reached
+
+
+def test_analog_interrupt_limits_are_positional_and_waits_take_visualize(tmp_path):
+    program = HERE / "arc_monitor.mod"
+    code, out, err = cli("check", program, "--quiet")
+    assert code == 0, err
+    assert set(verdicts(out).values()) == {"HOLDS"}
+    without_limits = tmp_path / "NoLimits.mod"
+    without_limits.write_text(program.read_text().replace("AIO_BETWEEN, 400, 0, 1,",
+                                                          "AIO_BETWEEN,"))
+    code, _, err = cli("check", without_limits, "--quiet")
+    assert code == 2 and "ISignalAO" in err and "[RMC205]" in err
