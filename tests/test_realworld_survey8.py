@@ -102,3 +102,19 @@ def test_analog_interrupt_limits_are_positional_and_waits_take_visualize(tmp_pat
                                                           "AIO_BETWEEN,"))
     code, _, err = cli("check", without_limits, "--quiet")
     assert code == 2 and "ISignalAO" in err and "[RMC205]" in err
+
+
+def test_stubs_shape_a_missing_type_declared_with_nested_aggregates(tmp_path):
+    program = HERE / "seam_tracking.mod"
+    output = tmp_path / "Missing.mod"
+    code, _, err = cli("stubs", program, "-o", output)
+    assert code == 0, err
+    text = output.read_text()
+    assert ("RECORD trackdata\n    num c1;\n    bool c2;\n    num c3;\n"
+            "    trackdata_c4 c4;\n    trackdata_c5 c5;\n  ENDRECORD") in text
+    assert "RECORD trackdata_c4\n" + "".join(f"    num c{n};\n" for n in range(1, 10)) in text
+    assert "RECORD trackdata_c5\n" + "".join(f"    num c{n};\n" for n in range(1, 8)) in text
+    code, out, err = cli("check", program, output, "--quiet",
+                         "--formula", 'fill: G ("Ended()" -> "trackActive = trackFill")')
+    assert code == 0, err
+    assert set(verdicts(out).values()) == {"HOLDS"}

@@ -287,15 +287,45 @@ class Inference:
                 or decl.dims:
             return
         if isinstance(decl.init, ast.Aggregate):
-            parts = [self.type_of(item) for item in decl.init.items]
-            if parts and all(part is not None and part.key in ATOMIC for part in parts):
-                record.fields = {f"c{number}": part for number, part in enumerate(parts, 1)}
+            fields = self._shaped_fields(record.name, decl.init)
+            if fields:
+                record.fields = fields
                 self.changed = True
         else:
             value = self.type_of(decl.init)
             if value is not None and value.key in ATOMIC:
                 record.alias_of = value.name
                 self.changed = True
+
+    def _shaped_fields(self, owner: ast.Name, aggregate: ast.Aggregate) -> Optional[dict]:
+        """Components ``c1``, ``c2``, ... for the parts of ``aggregate``, or None when a part
+        is neither atomic nor an aggregate itself. A nested aggregate (``trackdata`` of
+        ArcWare: ``[0,TRUE,50,[0,0,...],[0,...]]``) is a record of its own, named
+        ``<owner>_c<n>`` and shaped the same way."""
+        parts = []
+        for item in aggregate.items:
+            part = self.type_of(item)
+            if part is not None and part.key in ATOMIC:
+                parts.append(part)
+            elif isinstance(item, ast.Aggregate) and item.items:
+                parts.append(item)
+            else:
+                return None
+        if not parts:
+            return None
+        fields = {}
+        for number, part in enumerate(parts, 1):
+            if isinstance(part, ast.Aggregate):
+                nested = self._fresh_type_name(f"{owner.text}_c{number}", owner.span)
+                inner = self._shaped_fields(nested, part)
+                if inner is None:
+                    return None
+                self.note(nested, TYPE, f"type of component c{number} of {owner.text}, "
+                          "shaped by a declared value; name invented").fields = inner
+                self.invented.add(nested.key)
+                part = TypeInfo(nested.text)
+            fields[f"c{number}"] = part
+        return fields
 
     def _routine(self, routine: ast.Routine) -> None:
         self.routine = routine
