@@ -118,3 +118,15 @@ def test_stubs_shape_a_missing_type_declared_with_nested_aggregates(tmp_path):
                          "--formula", 'fill: G ("Ended()" -> "trackActive = trackFill")')
     assert code == 0, err
     assert set(verdicts(out).values()) == {"HOLDS"}
+
+
+def test_stubs_type_the_parts_of_an_aggregate_from_the_record_it_is_given_to(tmp_path):
+    program = HERE / "approach_point.mod"
+    output = tmp_path / "Missing.mod"
+    code, _, err = cli("stubs", program, "-o", output)
+    assert code == 0, err                         # was: type not inferred, left to the user
+    assert "PERS num xCameraOffset := 0;" in output.read_text()
+    code, out, err = cli("check", program, output, "--quiet",
+                         "--formula", 'height: G ("Ended()" -> "pApproach.trans.z = 250")')
+    assert code == 0, err
+    assert set(verdicts(out).values()) == {"HOLDS"}

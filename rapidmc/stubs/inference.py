@@ -134,6 +134,17 @@ class Inference:
             self.expect(expr.operand, info, evidence)
         elif isinstance(expr, ast.Component):
             self._field(expr, info)
+        elif isinstance(expr, ast.Aggregate) and info is not None and not info.rank:
+            self._aggregate_items(expr, info, evidence)
+
+    def _aggregate_items(self, expr: ast.Aggregate, info: TypeInfo, evidence: str) -> None:
+        """An aggregate given where a known record is expected: each part has the type of
+        its component (``position.trans := [x, -y, zh]``: ``x`` is a num of a pos)."""
+        components = self.names.components(info.name)
+        if components is None or len(components) != len(expr.items):
+            return
+        for item, (name, type_name) in zip(expr.items, components):
+            self.expect(item, TypeInfo(type_name), f"component {name} of {evidence}")
 
     def _field(self, expr: ast.Component, info: Optional[TypeInfo]) -> None:
         """A component of data whose type is missing: the RECORD gets that component."""
