@@ -130,3 +130,15 @@ def test_stubs_type_the_parts_of_an_aggregate_from_the_record_it_is_given_to(tmp
                          "--formula", 'height: G ("Ended()" -> "pApproach.trans.z = 250")')
     assert code == 0, err
     assert set(verdicts(out).values()) == {"HOLDS"}
+
+
+def test_signals_named_with_the_kind_last_are_configured_signals():
+    program = HERE / "line_selector.mod"
+    code, _, err = cli("check", program, "--quiet")
+    assert code == 2 and "free GI input 'Line_Gi' needs a finite set of values" in err
+    code, out, err = cli("check", program, "--quiet", "--input-domain", "Line_Gi=2,3",
+                         "--formula", 'line: G ("Ended()" -> "nLine = 2 OR nLine = 3")',
+                         "--formula", 'empty: G !"bEmpty"')
+    assert code == 1, err
+    found = verdicts(out)
+    assert found["line"] == "HOLDS" and found["empty"] == "VIOLATED", out   # Suck_Gi may be 0
