@@ -66,13 +66,13 @@ def test_a_procedure_with_parenthesised_arguments_is_told_how_to_write_them(tmp_
 
 def test_bin_goes_with_read_and_write_and_raw_bytes_are_read_without_a_count():
     program = HERE / "binary_log.mod"
-    code, out, err = cli("check", program, "--quiet", "--file-lines", "OK",
+    code, out, err = cli("check", program, "--quiet", "--file-lines", "07 00 2a",
                          "--formula", 'raw: G ("Ended()" -> "nBytesRead = 0 OR nBytesRead = 3")',
                          "--formula", 'some: G ("Ended()" -> "nBytesRead = 0")')
     assert code == 1, err
     found = verdicts(out)
     assert found["no_runtime_error"] == found["raw"] == "HOLDS", out
-    assert found["some"] == "VIOLATED", out        # the line "OK" plus its end: 3 bytes
+    assert found["some"] == "VIOLATED", out        # a line of hex pairs: the 3 bytes it stands for
 
 
 def test_open_still_refuses_two_access_modes(tmp_path):
