@@ -142,3 +142,11 @@ def test_signals_named_with_the_kind_last_are_configured_signals():
     assert code == 1, err
     found = verdicts(out)
     assert found["line"] == "HOLDS" and found["empty"] == "VIOLATED", out   # Suck_Gi may be 0
+
+
+def test_an_empty_line_of_a_binary_file_gives_no_bytes():
+    program = HERE / "binary_log.mod"
+    code, out, err = cli("check", program, "--quiet",       # default: one empty line
+                         "--formula", 'nothing: G ("Ended()" -> "nBytesRead = 0")')
+    assert code == 0, err                                   # was: the read never ended
+    assert set(verdicts(out).values()) == {"HOLDS"}, out

@@ -206,9 +206,10 @@ def _binary_characters(m, call, name: str, unread: str, count: int):
     ``--socket-messages`` (``"0a 1F"``), else its characters, without a line end."""
     while len(unread) < count:
         line = _next_line(m, call, name)
-        if line is None:
+        data = rawbytes.from_text(line).decode("latin-1") if line is not None else ""
+        if not data:            # end of file, or an empty line: no more bytes now
             break
-        unread += rawbytes.from_text(line).decode("latin-1")
+        unread += data
     return unread
 
 
