@@ -150,3 +150,19 @@ def test_an_empty_line_of_a_binary_file_gives_no_bytes():
                          "--formula", 'nothing: G ("Ended()" -> "nBytesRead = 0")')
     assert code == 0, err                                   # was: the read never ended
     assert set(verdicts(out).values()) == {"HOLDS"}, out
+
+
+def test_stubs_give_names_compared_in_turn_distinct_numbers(tmp_path):
+    program = HERE / "axis_select.mod"
+    output = tmp_path / "Missing.mod"
+    code, _, err = cli("stubs", program, "-o", output)
+    assert code == 0, err
+    text = output.read_text()
+    for name, number, count in (("axisX", 1, 3), ("axisY", 2, 3), ("axisZ", 3, 3),
+                                ("STATION_LOAD", 1, 2), ("STATION_UNLOAD", 2, 2)):
+        assert (f"PERS num {name} := {number}; ! {number} of the {count} names one value "
+                "is compared with in turn") in text
+    code, out, err = cli("check", program, output, "--quiet",
+                         "--formula", 'picked: G ("Ended()" -> "vDir.y = 1 AND sStation = \\"load\\"")')
+    assert code == 0, err                          # with one neutral 0, no branch was taken
+    assert set(verdicts(out).values()) == {"HOLDS"}

@@ -64,6 +64,7 @@ class Missing:
     assigned: bool = False
     array_argument: bool = False                        # dims from an array parameter
     alias_of: Optional[str] = None                      # a missing type declared with a value
+    alternative: Optional[tuple] = None                 # (number, count) among compared names
 
     def learn(self, info: Optional[TypeInfo], evidence: str) -> bool:
         """Take ``info`` as the type if none is known yet; whether anything changed."""
@@ -415,6 +416,26 @@ class Inference:
             self.condition(branch.condition, "IF")
             self.statements(branch.body)
         self.statements(statement.else_body or ())
+        compared = [_compared_with(branch.condition) for branch in statement.branches]
+        subjects = {subject for subject, _ in filter(None, compared)}
+        if len(subjects) == 1 and all(compared):
+            self._alternatives([name for _, name in compared])
+
+    def _alternatives(self, names: list) -> None:
+        """Missing names one subject is compared with in turn (``IF axisNo = axisX ...
+        ELSEIF axisNo = axisY``, ``CASE PICK_TYPE: ... CASE PLACE_TYPE:``) stand for
+        different values: they get the numbers 1, 2, ... in order, not one neutral 0 that
+        would leave every branch after the first unreachable."""
+        keys = dict.fromkeys(name.key for name in names
+                             if isinstance(name, ast.Name) and self.undeclared_data(name))
+        missing = [self.missing[key] for key in keys
+                   if key in self.missing and self.missing[key].kind == DATA]
+        if len(missing) < 2:
+            return
+        for number, item in enumerate(missing, 1):
+            if item.alternative is None:
+                item.alternative = (number, len(missing))
+                self.changed = True
 
     def _CompactIf(self, statement: ast.CompactIf) -> None:
         self.condition(statement.condition, "IF")
@@ -446,6 +467,8 @@ class Inference:
                 self.expression(value)
             self.statements(case.body)
         self.statements(statement.default or ())
+        self._alternatives([value.name for case in statement.cases for value in case.values
+                            if isinstance(value, ast.NameRef)])
 
     def condition(self, expr, keyword: str) -> None:
         self.expect(expr, BOOL, f"{keyword} condition")
@@ -679,6 +702,17 @@ IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,31}")
 
 # Types whose values a declaration can show by a literal alone.
 ATOMIC = ("NUM", "DNUM", "STRING", "BOOL")
+
+
+def _compared_with(condition) -> Optional[tuple]:
+    """(subject name key, other name) of a condition ``subject = name`` (either order)
+    whose sides are both bare names, or None."""
+    if not (isinstance(condition, ast.Binary) and condition.op == "="):
+        return None
+    left, right = condition.left, condition.right
+    if not (isinstance(left, ast.NameRef) and isinstance(right, ast.NameRef)):
+        return None
+    return left.name.key, right.name
 
 # The optional parameters every motion instruction of ABB's and of its options has
 # (``PaintL ... \WObj:=woPanel``): a missing routine called with them takes these types.

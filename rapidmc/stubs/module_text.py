@@ -160,6 +160,10 @@ class StubWriter:
         elif item.indexes_array and not sizes and type_name == "num":
             value = "1"
             notes.append("an array index: 1, the first element (RAPID arrays start at 1)")
+        elif item.alternative and not sizes and type_name == "num":
+            number, count = item.alternative
+            value = str(number)
+            notes.append(f"{number} of the {count} names one value is compared with in turn")
         storage = "CONST" if item.storage == "CONST" and not item.assigned else "PERS"
         return [f"{storage} {type_name} {item.name.text}{dims} := {value};" + _comment(notes)]
 
