@@ -1,6 +1,16 @@
 """Survey round 8 (docs/realworld-survey.md): programs of ours in the styles of the public
 RAPID code surveyed, one per cause of a program that did not load or was mis-handled.
 
+* ``binary_log.mod``: ``Open ... \\Write\\Bin`` / ``\\Read\\Bin``, ReadRawBytes without
+  ``\\NoOfBytes`` (a line of hex pairs is the bytes of a binary file), ReadStr until ``EOF``.
+* ``arc_monitor.mod``: ISignalAO with its three limits written positionally, WaitDI with
+  RobotWare 6's ``\\Visualize`` arguments.
+* ``seam_tracking.mod``: ArcWare ``trackdata`` declared with nested aggregates; the stubs
+  shape it as nested records.
+* ``approach_point.mod``: a missing name inside an aggregate assigned to a ``pos``.
+* ``line_selector.mod``: signals named with the kind last (``Line_Gi``, ``Vacuum_Do``).
+* ``axis_select.mod``: missing constants one value is compared with in turn.
+
 The diagnostic for a call written ``Name(a, b);`` as a statement (round 7, left open) is
 tested on texts inline: a function called as a procedure and a procedure given its arguments
 in parentheses each get their own message at the name.
@@ -12,6 +22,7 @@ from pathlib import Path
 import pytest
 
 from tests.test_realworld_survey4 import cli, verdicts
+from tests.test_realworld_survey7 import assert_holds, stubs_text
 
 HERE = Path(__file__).resolve().parent / "realworld" / "survey8"
 
@@ -106,30 +117,21 @@ def test_analog_interrupt_limits_are_positional_and_waits_take_visualize(tmp_pat
 
 def test_stubs_shape_a_missing_type_declared_with_nested_aggregates(tmp_path):
     program = HERE / "seam_tracking.mod"
-    output = tmp_path / "Missing.mod"
-    code, _, err = cli("stubs", program, "-o", output)
-    assert code == 0, err
-    text = output.read_text()
+    text = stubs_text(program, tmp_path)
     assert ("RECORD trackdata\n    num c1;\n    bool c2;\n    num c3;\n"
             "    trackdata_c4 c4;\n    trackdata_c5 c5;\n  ENDRECORD") in text
     assert "RECORD trackdata_c4\n" + "".join(f"    num c{n};\n" for n in range(1, 10)) in text
     assert "RECORD trackdata_c5\n" + "".join(f"    num c{n};\n" for n in range(1, 8)) in text
-    code, out, err = cli("check", program, output, "--quiet",
-                         "--formula", 'fill: G ("Ended()" -> "trackActive = trackFill")')
-    assert code == 0, err
-    assert set(verdicts(out).values()) == {"HOLDS"}
+    assert_holds(program, tmp_path / "Missing.mod",
+                 formula='fill: G ("Ended()" -> "trackActive = trackFill")')
 
 
 def test_stubs_type_the_parts_of_an_aggregate_from_the_record_it_is_given_to(tmp_path):
     program = HERE / "approach_point.mod"
-    output = tmp_path / "Missing.mod"
-    code, _, err = cli("stubs", program, "-o", output)
-    assert code == 0, err                         # was: type not inferred, left to the user
-    assert "PERS num xCameraOffset := 0;" in output.read_text()
-    code, out, err = cli("check", program, output, "--quiet",
-                         "--formula", 'height: G ("Ended()" -> "pApproach.trans.z = 250")')
-    assert code == 0, err
-    assert set(verdicts(out).values()) == {"HOLDS"}
+    text = stubs_text(program, tmp_path)           # was: type not inferred, left to the user
+    assert "PERS num xCameraOffset := 0;" in text
+    assert_holds(program, tmp_path / "Missing.mod",
+                 formula='height: G ("Ended()" -> "pApproach.trans.z = 250")')
 
 
 def test_signals_named_with_the_kind_last_are_configured_signals():
@@ -154,15 +156,11 @@ def test_an_empty_line_of_a_binary_file_gives_no_bytes():
 
 def test_stubs_give_names_compared_in_turn_distinct_numbers(tmp_path):
     program = HERE / "axis_select.mod"
-    output = tmp_path / "Missing.mod"
-    code, _, err = cli("stubs", program, "-o", output)
-    assert code == 0, err
-    text = output.read_text()
+    text = stubs_text(program, tmp_path)
     for name, number, count in (("axisX", 1, 3), ("axisY", 2, 3), ("axisZ", 3, 3),
                                 ("STATION_LOAD", 1, 2), ("STATION_UNLOAD", 2, 2)):
         assert (f"PERS num {name} := {number}; ! {number} of the {count} names one value "
                 "is compared with in turn") in text
-    code, out, err = cli("check", program, output, "--quiet",
-                         "--formula", 'picked: G ("Ended()" -> "vDir.y = 1 AND sStation = \\"load\\"")')
-    assert code == 0, err                          # with one neutral 0, no branch was taken
-    assert set(verdicts(out).values()) == {"HOLDS"}
+    # with one neutral 0 for every name, no branch was taken
+    assert_holds(program, tmp_path / "Missing.mod",
+                 formula='picked: G ("Ended()" -> "vDir.y = 1 AND sStation = \\"load\\"")')
