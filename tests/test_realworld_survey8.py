@@ -164,3 +164,11 @@ def test_stubs_give_names_compared_in_turn_distinct_numbers(tmp_path):
     # with one neutral 0 for every name, no branch was taken
     assert_holds(program, tmp_path / "Missing.mod",
                  formula='picked: G ("Ended()" -> "vDir.y = 1 AND sStation = \\"load\\"")')
+
+
+def test_stubs_type_data_assigned_an_aggregate_of_task_names_as_a_task_list(tmp_path):
+    program = HERE / "task_lists.mod"
+    text = stubs_text(program, tmp_path)           # was: type not inferred, left to the user
+    assert 'PERS tasks tlCurrent{3} := [[""],[""],[""]];' in text
+    assert_holds(program, tmp_path / "Missing.mod",
+                 formula='second: G ("Ended()" -> "sSecond = \\"T_ROB2\\"")')

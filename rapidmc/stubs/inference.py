@@ -65,6 +65,7 @@ class Missing:
     array_argument: bool = False                        # dims from an array parameter
     alias_of: Optional[str] = None                      # a missing type declared with a value
     alternative: Optional[tuple] = None                 # (number, count) among compared names
+    exact_dims: bool = False                            # dims from an aggregate assigned whole
 
     def learn(self, info: Optional[TypeInfo], evidence: str) -> bool:
         """Take ``info`` as the type if none is known yet; whether anything changed."""
@@ -375,6 +376,9 @@ class Inference:
             self.missing[root.name.key].assigned = True
         self.expect(statement.value, target, f"assigned to {target.name} data" if target else "")
         self.expression(statement.value)
+        if target is None and value is None and isinstance(statement.target, ast.NameRef) \
+                and isinstance(statement.value, ast.Aggregate):
+            self._array_of_records(statement.target.name, statement.value)
         if target is None and value is None and isinstance(statement.value, ast.FunctionCall) \
                 and isinstance(statement.target, ast.Component):
             owner = self.type_of(statement.target.base)
@@ -382,6 +386,30 @@ class Inference:
             if record is not None and record.kind == TYPE:
                 self.component_feeds.setdefault(statement.value.name.key,
                                                 (record, statement.target.name.text))
+
+    def _array_of_records(self, name: ast.Name, aggregate: ast.Aggregate) -> None:
+        """Missing data assigned an aggregate of aggregates of one shape
+        (``taskList := [["T_ROB1"],[""],["T_POS1"]]``) is an array of the one known record of
+        that shape (``tasks``), as long as the shape fits exactly one record type."""
+        missing = self.missing.get(name.key)
+        if missing is None or missing.kind != DATA or missing.type is not None:
+            return
+        shapes = set()
+        for item in aggregate.items:
+            if not isinstance(item, ast.Aggregate):
+                return
+            parts = [self.type_of(part) for part in item.items]
+            if not parts or any(p is None or p.key not in ATOMIC for p in parts):
+                return
+            shapes.add(tuple(p.key for p in parts))
+        if len(shapes) != 1:
+            return
+        fitting = self.names.records_shaped(list(shapes.pop()))
+        if len(fitting) == 1 and missing.learn(TypeInfo(fitting[0]),
+                                               f"assigned an array of {fitting[0]} aggregates"):
+            missing.dims = [len(aggregate.items)]
+            missing.exact_dims = True
+            self.changed = True
 
     def _ProcedureCall(self, statement: ast.ProcedureCall) -> None:
         self.call(statement.name, statement.args, PROCEDURE, None)

@@ -141,7 +141,7 @@ class StubWriter:
         if item.type is None:
             return None
         type_name = item.type.name
-        sizes = [max(d, MIN_ARRAY_SIZE) for d in item.dims]
+        sizes = list(item.dims) if item.exact_dims else [max(d, MIN_ARRAY_SIZE) for d in item.dims]
         dims = "{" + ",".join(str(d) for d in sizes) + "}" if sizes else ""
         notes = [f"type from: {item.evidence}"] if item.evidence and item.evidence != item.use \
             else []
@@ -153,6 +153,7 @@ class StubWriter:
         if sizes:
             value = array_literal(value, sizes)
             notes.append(f"an array argument: size {MIN_ARRAY_SIZE} assumed" if item.array_argument
+                         else "size: the elements of the aggregate assigned" if item.exact_dims
                          else f"size: the largest constant index used, at least {MIN_ARRAY_SIZE}")
         if item.sizes_array:
             value = str(MIN_ARRAY_SIZE)
