@@ -91,7 +91,7 @@ def test_open_still_refuses_two_access_modes(tmp_path):
     program.write_text('MODULE Modes\n  VAR iodev f;\n  PROC main()\n'
                        '    Open "HOME:" \\File:="a.txt", f \\Read\\Write;\n  ENDPROC\nENDMODULE\n')
     code, _, err = cli("check", program, "--quiet")
-    assert code == 2 and "of Open exclude each other [RMC205]" in err
+    assert code == 2 and "arguments Read and Write of Open exclude each other [RMC205]" in err
 
 
 def test_the_eof_constant_is_what_readstr_returns_at_the_end_of_a_file():
