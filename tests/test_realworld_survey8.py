@@ -10,6 +10,7 @@ RAPID code surveyed, one per cause of a program that did not load or was mis-han
 * ``approach_point.mod``: a missing name inside an aggregate assigned to a ``pos``.
 * ``line_selector.mod``: signals named with the kind last (``Line_Gi``, ``Vacuum_Do``).
 * ``axis_select.mod``: missing constants one value is compared with in turn.
+* ``task_lists.mod``: a task list of a module not given, assigned as an aggregate.
 
 The diagnostic for a call written ``Name(a, b);`` as a statement (round 7, left open) is
 tested on texts inline: a function called as a procedure and a procedure given its arguments
@@ -126,14 +127,6 @@ def test_stubs_shape_a_missing_type_declared_with_nested_aggregates(tmp_path):
                  formula='fill: G ("Ended()" -> "trackActive = trackFill")')
 
 
-def test_stubs_type_the_parts_of_an_aggregate_from_the_record_it_is_given_to(tmp_path):
-    program = HERE / "approach_point.mod"
-    text = stubs_text(program, tmp_path)           # was: type not inferred, left to the user
-    assert "PERS num xCameraOffset := 0;" in text
-    assert_holds(program, tmp_path / "Missing.mod",
-                 formula='height: G ("Ended()" -> "pApproach.trans.z = 250")')
-
-
 def test_signals_named_with_the_kind_last_are_configured_signals():
     program = HERE / "line_selector.mod"
     code, _, err = cli("check", program, "--quiet")
@@ -166,9 +159,16 @@ def test_stubs_give_names_compared_in_turn_distinct_numbers(tmp_path):
                  formula='picked: G ("Ended()" -> "vDir.y = 1 AND sStation = \\"load\\"")')
 
 
-def test_stubs_type_data_assigned_an_aggregate_of_task_names_as_a_task_list(tmp_path):
-    program = HERE / "task_lists.mod"
-    text = stubs_text(program, tmp_path)           # was: type not inferred, left to the user
-    assert 'PERS tasks tlCurrent{3} := [[""],[""],[""]];' in text
-    assert_holds(program, tmp_path / "Missing.mod",
-                 formula='second: G ("Ended()" -> "sSecond = \\"T_ROB2\\"")')
+@pytest.mark.parametrize("program, declaration, formula", [
+    # a part of an aggregate assigned to a pos is a num
+    ("approach_point.mod", "PERS num xCameraOffset := 0;",
+     'height: G ("Ended()" -> "pApproach.trans.z = 250")'),
+    # data assigned an aggregate of task names is a task list of that size
+    ("task_lists.mod", 'PERS tasks tlCurrent{3} := [[""],[""],[""]];',
+     'second: G ("Ended()" -> "sSecond = \\"T_ROB2\\"")'),
+])
+def test_stubs_type_missing_data_from_the_aggregates_it_meets(tmp_path, program, declaration,
+                                                               formula):
+    text = stubs_text(HERE / program, tmp_path)    # was: type not inferred, left to the user
+    assert declaration in text
+    assert_holds(HERE / program, tmp_path / "Missing.mod", formula=formula)
