@@ -136,8 +136,8 @@ def test_required_routines_are_registered(lookup, names, special):
     ("MOVEABSJ", "Conc ID NoEOffs V T Z Inpos WObj TLoad"),
     ("TPREADFK", "MaxTime DIBreak DOBreak PersBoolBreak BreakFlag"),
     ("TPWRITE", "Num Bool Pos Orient Dnum"),
-    ("WAITDI", "MaxTime TimeFlag"),
-    ("WAITUNTIL", "InPos PollRate MaxTime TimeFlag"),
+    ("WAITDI", "MaxTime TimeFlag Visualize Header Message MsgArray Wrap Icon Image VisualizeTime UIActiveSignal"),
+    ("WAITUNTIL", "InPos PollRate MaxTime TimeFlag Visualize Header Message MsgArray Wrap Icon Image VisualizeTime UIActiveSignal"),
     ("ISIGNALDI", "Single SingleSafe"),
 ])
 def test_motion_and_io_optional_parameters(routine, optional):

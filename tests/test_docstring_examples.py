@@ -6,7 +6,8 @@ import importlib
 
 import pytest
 
-MODULES = ["rapidmc.error_report", "rapidmc.syntax.recovery", "rapidmc.stubs",
+MODULES = ["rapidmc.error_report", "rapidmc.syntax.recovery", "rapidmc.syntax.call_statement",
+           "rapidmc.stubs",
            "rapidmc.stubs.inference", "rapidmc.library_doc", "rapidmc.semantics.library.registry"]
 
 

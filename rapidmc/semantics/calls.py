@@ -59,7 +59,7 @@ def bind(compiler: ExpressionCompiler, routine_name: str, params: Sequence[Param
     None (see ``Compiled.source``)."""
     chosen: dict[int, ast.Argument] = {}
     required = [i for i, p in enumerate(params) if not p.optional]
-    groups_seen: dict[int, str] = {}
+    groups_seen: dict[int, ParameterView] = {}
     position = 0
     for arg in args:
         if arg.kind == ast.REQUIRED and arg.name is None:
@@ -75,10 +75,10 @@ def bind(compiler: ExpressionCompiler, routine_name: str, params: Sequence[Param
         param = params[index]
         if param.group is not None:
             other = groups_seen.get(param.group)
-            if other is not None and other != param.key:
-                raise error(ARGUMENT, f"arguments {other} and {param.name} of {routine_name} "
-                            "exclude each other", arg.span)
-            groups_seen[param.group] = param.key
+            if other is not None and other.key != param.key:
+                raise error(ARGUMENT, f"arguments {other.name} and {param.name} of "
+                            f"{routine_name} exclude each other", arg.span)
+            groups_seen[param.group] = param
         if index in chosen:
             raise error(ARGUMENT, f"argument {param.name} of {routine_name} given twice", arg.span)
         chosen[index] = arg

@@ -7,9 +7,10 @@ and takes each undeclared name passed to a signal parameter of a predefined
 routine (SetDO, WaitDI, DInput, ISignalDI, ...) as a configured signal of
 that parameter's kind; the name can then also be read in expressions, in
 any order.  An undeclared name compared with a number is a configured signal
-too, of the kind its prefix says (``TEST giRecipe CASE 1:``, ``IF aiLevel > 2.5``);
-without a prefix, only a name tested for equality with 0 or 1 is one (a digital
-input, ``IF sensorPart = 1``).  Names passed to a ``mecunit`` parameter are
+too, of the kind its prefix says (``TEST giRecipe CASE 1:``, ``IF aiLevel > 2.5``) or
+a ``_Gi``-style suffix (``Suck_Gi``); without either, only a name tested for equality
+with 0 or 1 is one (a digital input, ``IF sensorPart = 1``).  A name with such a prefix
+or suffix read as the whole value of an assignment (``nType := Type_Gi;``) is one too.  Names passed to a ``mecunit`` parameter are
 mechanical units of the motion configuration (``ActUnit CNV1``).
 """
 from __future__ import annotations
@@ -52,7 +53,11 @@ def compared_names(modules: Iterable[ast.Module]) -> Iterator[tuple[ast.Name, st
     taken as a digital input.  The linker only asks about undeclared names.
     """
     for node in _nodes(modules):
-        if isinstance(node, ast.Binary) and node.op in COMPARISONS:
+        if isinstance(node, ast.Assignment) and isinstance(node.value, ast.NameRef) \
+                and _SIGNAL_NAME.search(node.value.name.text) is not None:
+            # ``PalletTypeNo := PalletTypeNo_Gi;`` reads a signal named as one
+            yield node.value.name, kind_from_prefix(node.value.name.text)
+        elif isinstance(node, ast.Binary) and node.op in COMPARISONS:
             for name_side, other in ((node.left, node.right), (node.right, node.left)):
                 if isinstance(name_side, ast.NameRef) and _is_number(other):
                     kind = _compared_kind(name_side.name.text, (other,),
@@ -75,7 +80,7 @@ def _compared_kind(name: str, numbers, digital: bool) -> Optional[str]:
     tested for equality with 0 or 1: ``nThickness <= 2.9`` or ``TEST nStation CASE 3:``
     reads a number of the program, which is missing, not an I/O signal.
     """
-    if _PREFIX.match(name) is not None:
+    if _SIGNAL_NAME.search(name) is not None:
         return kind_from_prefix(name)
     if digital and all(_number_value(n) in (0, 1) for n in numbers):
         return "DI"
@@ -84,14 +89,19 @@ def _compared_kind(name: str, numbers, digital: bool) -> Optional[str]:
 
 COMPARISONS = ("=", "<>", "<", "<=", ">", ">=")
 _PREFIX = re.compile(r"^(?:(di|do|gi|go|ai|ao)(?=[A-Z_0-9])|(DI|DO|GI|GO|AI|AO)(?=[_0-9]))")
+# Some integrators put the kind last: ``PalletTypeNo_Gi``, ``CatchSuckNo_Go`` (survey round 8).
+_SUFFIX = re.compile(r"_((?i:di|do|gi|go|ai|ao))$")
+_SIGNAL_NAME = re.compile(f"{_PREFIX.pattern}|{_SUFFIX.pattern}")
 
 
 def kind_from_prefix(name: str) -> str:
-    """The signal kind a name's prefix suggests: ``doLamp`` -> DO; DI without a prefix."""
+    """The signal kind a name's prefix (or ``_Gi``-style suffix) suggests: ``doLamp`` -> DO,
+    ``Count_Gi`` -> GI; DI without either."""
     match = _PREFIX.match(name)
-    if match is None:
-        return "DI"
-    return (match.group(1) or match.group(2)).upper()
+    if match is not None:
+        return (match.group(1) or match.group(2)).upper()
+    match = _SUFFIX.search(name)
+    return match.group(1).upper() if match is not None else "DI"
 
 
 def _is_number(expr) -> bool:

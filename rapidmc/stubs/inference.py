@@ -64,6 +64,8 @@ class Missing:
     assigned: bool = False
     array_argument: bool = False                        # dims from an array parameter
     alias_of: Optional[str] = None                      # a missing type declared with a value
+    alternative: Optional[tuple] = None                 # (number, count) among compared names
+    exact_dims: bool = False                            # dims from an aggregate assigned whole
 
     def learn(self, info: Optional[TypeInfo], evidence: str) -> bool:
         """Take ``info`` as the type if none is known yet; whether anything changed."""
@@ -134,6 +136,17 @@ class Inference:
             self.expect(expr.operand, info, evidence)
         elif isinstance(expr, ast.Component):
             self._field(expr, info)
+        elif isinstance(expr, ast.Aggregate) and info is not None and not info.rank:
+            self._aggregate_items(expr, info, evidence)
+
+    def _aggregate_items(self, expr: ast.Aggregate, info: TypeInfo, evidence: str) -> None:
+        """An aggregate given where a known record is expected: each part has the type of
+        its component (``position.trans := [x, -y, zh]``: ``x`` is a num of a pos)."""
+        components = self.names.components(info.name)
+        if components is None or len(components) != len(expr.items):
+            return
+        for item, (name, type_name) in zip(expr.items, components):
+            self.expect(item, TypeInfo(type_name), f"component {name} of {evidence}")
 
     def _field(self, expr: ast.Component, info: Optional[TypeInfo]) -> None:
         """A component of data whose type is missing: the RECORD gets that component."""
@@ -287,15 +300,45 @@ class Inference:
                 or decl.dims:
             return
         if isinstance(decl.init, ast.Aggregate):
-            parts = [self.type_of(item) for item in decl.init.items]
-            if parts and all(part is not None and part.key in ATOMIC for part in parts):
-                record.fields = {f"c{number}": part for number, part in enumerate(parts, 1)}
+            fields = self._shaped_fields(record.name, decl.init)
+            if fields:
+                record.fields = fields
                 self.changed = True
         else:
             value = self.type_of(decl.init)
             if value is not None and value.key in ATOMIC:
                 record.alias_of = value.name
                 self.changed = True
+
+    def _shaped_fields(self, owner: ast.Name, aggregate: ast.Aggregate) -> Optional[dict]:
+        """Components ``c1``, ``c2``, ... for the parts of ``aggregate``, or None when a part
+        is neither atomic nor an aggregate itself. A nested aggregate (``trackdata`` of
+        ArcWare: ``[0,TRUE,50,[0,0,...],[0,...]]``) is a record of its own, named
+        ``<owner>_c<n>`` and shaped the same way."""
+        parts = []
+        for item in aggregate.items:
+            part = self.type_of(item)
+            if part is not None and part.key in ATOMIC:
+                parts.append(part)
+            elif isinstance(item, ast.Aggregate) and item.items:
+                parts.append(item)
+            else:
+                return None
+        if not parts:
+            return None
+        fields = {}
+        for number, part in enumerate(parts, 1):
+            if isinstance(part, ast.Aggregate):
+                nested = self._fresh_type_name(f"{owner.text}_c{number}", owner.span)
+                inner = self._shaped_fields(nested, part)
+                if inner is None:
+                    return None
+                self.note(nested, TYPE, f"type of component c{number} of {owner.text}, "
+                          "shaped by a declared value; name invented").fields = inner
+                self.invented.add(nested.key)
+                part = TypeInfo(nested.text)
+            fields[f"c{number}"] = part
+        return fields
 
     def _routine(self, routine: ast.Routine) -> None:
         self.routine = routine
@@ -333,6 +376,9 @@ class Inference:
             self.missing[root.name.key].assigned = True
         self.expect(statement.value, target, f"assigned to {target.name} data" if target else "")
         self.expression(statement.value)
+        if target is None and value is None and isinstance(statement.target, ast.NameRef) \
+                and isinstance(statement.value, ast.Aggregate):
+            self._array_of_records(statement.target.name, statement.value)
         if target is None and value is None and isinstance(statement.value, ast.FunctionCall) \
                 and isinstance(statement.target, ast.Component):
             owner = self.type_of(statement.target.base)
@@ -340,6 +386,30 @@ class Inference:
             if record is not None and record.kind == TYPE:
                 self.component_feeds.setdefault(statement.value.name.key,
                                                 (record, statement.target.name.text))
+
+    def _array_of_records(self, name: ast.Name, aggregate: ast.Aggregate) -> None:
+        """Missing data assigned an aggregate of aggregates of one shape
+        (``taskList := [["T_ROB1"],[""],["T_POS1"]]``) is an array of the one known record of
+        that shape (``tasks``), as long as the shape fits exactly one record type."""
+        missing = self.missing.get(name.key)
+        if missing is None or missing.kind != DATA or missing.type is not None:
+            return
+        shapes = set()
+        for item in aggregate.items:
+            if not isinstance(item, ast.Aggregate):
+                return
+            parts = [self.type_of(part) for part in item.items]
+            if not parts or any(p is None or p.key not in ATOMIC for p in parts):
+                return
+            shapes.add(tuple(p.key for p in parts))
+        if len(shapes) != 1:
+            return
+        fitting = self.names.records_shaped(list(shapes.pop()))
+        if len(fitting) == 1 and missing.learn(TypeInfo(fitting[0]),
+                                               f"assigned an array of {fitting[0]} aggregates"):
+            missing.dims = [len(aggregate.items)]
+            missing.exact_dims = True
+            self.changed = True
 
     def _ProcedureCall(self, statement: ast.ProcedureCall) -> None:
         self.call(statement.name, statement.args, PROCEDURE, None)
@@ -374,6 +444,26 @@ class Inference:
             self.condition(branch.condition, "IF")
             self.statements(branch.body)
         self.statements(statement.else_body or ())
+        compared = [_compared_with(branch.condition) for branch in statement.branches]
+        subjects = {subject for subject, _ in filter(None, compared)}
+        if len(subjects) == 1 and all(compared):
+            self._alternatives([name for _, name in compared])
+
+    def _alternatives(self, names: list) -> None:
+        """Missing names one subject is compared with in turn (``IF axisNo = axisX ...
+        ELSEIF axisNo = axisY``, ``CASE PICK_TYPE: ... CASE PLACE_TYPE:``) stand for
+        different values: they get the numbers 1, 2, ... in order, not one neutral 0 that
+        would leave every branch after the first unreachable."""
+        keys = dict.fromkeys(name.key for name in names
+                             if isinstance(name, ast.Name) and self.undeclared_data(name))
+        missing = [self.missing[key] for key in keys
+                   if key in self.missing and self.missing[key].kind == DATA]
+        if len(missing) < 2:
+            return
+        for number, item in enumerate(missing, 1):
+            if item.alternative is None:
+                item.alternative = (number, len(missing))
+                self.changed = True
 
     def _CompactIf(self, statement: ast.CompactIf) -> None:
         self.condition(statement.condition, "IF")
@@ -405,6 +495,8 @@ class Inference:
                 self.expression(value)
             self.statements(case.body)
         self.statements(statement.default or ())
+        self._alternatives([value.name for case in statement.cases for value in case.values
+                            if isinstance(value, ast.NameRef)])
 
     def condition(self, expr, keyword: str) -> None:
         self.expect(expr, BOOL, f"{keyword} condition")
@@ -638,6 +730,17 @@ IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,31}")
 
 # Types whose values a declaration can show by a literal alone.
 ATOMIC = ("NUM", "DNUM", "STRING", "BOOL")
+
+
+def _compared_with(condition) -> Optional[tuple]:
+    """(subject name key, other name) of a condition ``subject = name`` (either order)
+    whose sides are both bare names, or None."""
+    if not (isinstance(condition, ast.Binary) and condition.op == "="):
+        return None
+    left, right = condition.left, condition.right
+    if not (isinstance(left, ast.NameRef) and isinstance(right, ast.NameRef)):
+        return None
+    return left.name.key, right.name
 
 # The optional parameters every motion instruction of ABB's and of its options has
 # (``PaintL ... \WObj:=woPanel``): a missing routine called with them takes these types.

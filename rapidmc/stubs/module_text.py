@@ -141,7 +141,7 @@ class StubWriter:
         if item.type is None:
             return None
         type_name = item.type.name
-        sizes = [max(d, MIN_ARRAY_SIZE) for d in item.dims]
+        sizes = list(item.dims) if item.exact_dims else [max(d, MIN_ARRAY_SIZE) for d in item.dims]
         dims = "{" + ",".join(str(d) for d in sizes) + "}" if sizes else ""
         notes = [f"type from: {item.evidence}"] if item.evidence and item.evidence != item.use \
             else []
@@ -153,6 +153,7 @@ class StubWriter:
         if sizes:
             value = array_literal(value, sizes)
             notes.append(f"an array argument: size {MIN_ARRAY_SIZE} assumed" if item.array_argument
+                         else "size: the elements of the aggregate assigned" if item.exact_dims
                          else f"size: the largest constant index used, at least {MIN_ARRAY_SIZE}")
         if item.sizes_array:
             value = str(MIN_ARRAY_SIZE)
@@ -160,6 +161,10 @@ class StubWriter:
         elif item.indexes_array and not sizes and type_name == "num":
             value = "1"
             notes.append("an array index: 1, the first element (RAPID arrays start at 1)")
+        elif item.alternative and not sizes and type_name == "num":
+            number, count = item.alternative
+            value = str(number)
+            notes.append(f"{number} of the {count} names one value is compared with in turn")
         storage = "CONST" if item.storage == "CONST" and not item.assigned else "PERS"
         return [f"{storage} {type_name} {item.name.text}{dims} := {value};" + _comment(notes)]
 

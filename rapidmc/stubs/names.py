@@ -131,6 +131,14 @@ class Declarations:
                 return TypeInfo(component_type)
         return None
 
+    def records_shaped(self, parts: list[str]) -> list[str]:
+        """The record types (predefined first, then the program's) whose components have
+        exactly the types ``parts`` (upper-case keys of atomic types), in order."""
+        names = [t.name for t in PREDEFINED_TYPES.values() if t.kind == RECORD]
+        names += [self.spelling[key] for key in self.records]
+        return [name for name in names
+                if [self.base(TypeInfo(t)).key for _, t in self.components(name) or ()] == parts]
+
     def records_with(self, components: list[str]) -> list[str]:
         """The record types (predefined first, then the program's) having every component."""
         wanted = {c.upper() for c in components}

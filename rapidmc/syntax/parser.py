@@ -27,7 +27,7 @@ from .. import ast
 from ..ast import Span
 from ..diagnostics import (BAD_CHARACTER, BAD_STRING, FILE_EMPTY, PLACEHOLDER,
                            SYNTAX, UNEXPECTED_EOF, UserError, error)
-from . import accelerated, recovery
+from . import accelerated, call_statement, recovery
 from .lexer import RapidLexer
 from .lower import Lowering
 from .reductions import passes_child_on, rule_callbacks
@@ -164,6 +164,10 @@ def syntax_error(exc: UnexpectedInput, text: str, filename: str) -> UserError:
     if placeholder:
         return _placeholder_error(placeholder, exc, filename)
     if isinstance(exc, UnexpectedToken):
+        called = call_statement.called_name(exc)
+        if called is not None:
+            return error(SYNTAX, call_statement.message(str(called), text),
+                         call_statement.span(called, filename))
         return _unexpected_token_error(exc, filename)
     if isinstance(exc, UnexpectedCharacters):
         return _unexpected_character_error(exc, text, filename)

@@ -112,6 +112,8 @@ for _name, _size in (("USINT", 1), ("UINT", 2), ("UDINT", 4), ("ULINT", 8),
                      ("SINT", -1), ("INT", -2), ("DINT", -4), ("LINT", -8)):
     _define(_name, "inttypes", float(_size))
 _define("EOF_BIN", "num", -1.0)
+# What ReadStr and ReadStrBin return at the end of a file (`IF text = EOF THEN`).
+_define("EOF", "string", "EOF")
 for _name in ("diskhome", "diskram", "disktemp"):
     _define(_name, "string", {"diskhome": "HOME:", "diskram": "RAMDISK:", "disktemp": "TEMP:"}[_name])
 for _number, _name in enumerate(("EGM_STATE_DISCONNECTED", "EGM_STATE_CONNECTED",

@@ -8,8 +8,10 @@ checking, a choice among the configured lines or end of file.
 
 An ``iodev`` variable holds ``None`` (closed) or ``(name, mode, unread,
 unwritten)``: the device name (``HOME:/log.txt``, ``com1:``), the access
-mode, received text not read yet (ReadBin/ReadStrBin read characters, not
-lines), and written text not ended by a new line yet.
+mode (``read``, ``write`` or ``append``, followed by `` bin`` when opened with
+\\Bin), received text not read yet (ReadBin/ReadStrBin read characters, not
+lines; ReadRawBytes on a binary device takes a line of hex pairs as the bytes it
+stands for), and written text not ended by a new line yet.
 """
 from __future__ import annotations
 
@@ -26,7 +28,7 @@ from .registry import CHOICE, compiled
 from .signature_parts import DEVICE, TIME
 from .sockets import configured, environment_text
 
-EOF_TEXT = "EOF"
+EOF_TEXT = PREDEFINED_DATA["EOF"].value
 EOF_NUM = float(PREDEFINED_DATA["EOF_NUM"].value)
 EOF_BIN = -1.0
 READ, WRITE, APPEND, BINARY = "read", "write", "append", "bin"
@@ -36,7 +38,7 @@ def _open_device(m, ref, what: str, writing: bool = False):
     value = m.read_ref(ref)
     if value is None:
         raise RapidError("ERR_FILEACC", f"{what}: the I/O device is not open")
-    if writing and value[1] == READ:
+    if writing and value[1].split()[0] == READ:
         raise RapidError("ERR_FILEACC", f"{what}: {value[0]} is open for reading only")
     return value
 
@@ -63,13 +65,15 @@ def _writer(calls, compiler, call, entry, text_of):
     return Action(call.span, write)
 
 
+# \Read, \Write and \Append exclude each other; \Bin goes with any of them (`\Read\Bin`,
+# `\Write\Bin` in public programs that run on controllers, e.g. abb_motion_program_exec).
 @compiled(f"Open(string Object \\string File, {DEVICE} \\switch Read | switch Write | switch Append "
-              "| switch Bin)")
+              "\\switch Bin)")
 def _open(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     place, file, device = arguments.value("Object"), arguments.value("File"), arguments.fn("IODevice")
-    modes = [(arguments.value(key), mode) for key, mode in
-             (("Read", READ), ("Append", APPEND), ("Bin", BINARY))]
+    modes = [(arguments.value(key), mode) for key, mode in (("Read", READ), ("Append", APPEND))]
+    binary = arguments.value("Bin")
 
     def open_device(m):
         ref = device(m)
@@ -80,6 +84,8 @@ def _open(calls, compiler, call, entry):
         if extra is not ABSENT:
             name = name.rstrip("/") + "/" + extra
         mode = next((mode for flag, mode in modes if flag(m) is True), WRITE)
+        if binary(m) is True:
+            mode = f"{mode} {BINARY}"
         m.write_ref(ref, (name, mode, "", ""))
     return Action(call.span, open_device)
 
@@ -194,6 +200,19 @@ def _characters(m, call, name: str, unread: str, count: int):
     return unread
 
 
+def _binary_characters(m, call, name: str, unread: str, count: int):
+    """At least ``count`` bytes of a device opened with \\Bin (fewer only at end of file),
+    as Latin-1 characters: a line of input gives the bytes it stands for, hex pairs as in
+    ``--socket-messages`` (``"0a 1F"``), else its characters, without a line end."""
+    while len(unread) < count:
+        line = _next_line(m, call, name)
+        data = rawbytes.from_text(line).decode("latin-1") if line is not None else ""
+        if not data:            # end of file, or an empty line: no more bytes now
+            break
+        unread += data
+    return unread
+
+
 @compiled(f"string ReadStr({DEVICE} {TIME} \\switch RemoveCR)",
           modelled=CHOICE)
 def _read_str(calls, compiler, call, entry) -> Compiled:
@@ -245,7 +264,10 @@ def _read_str_bin(calls, compiler, call, entry) -> Compiled:
     return _reader(calls, compiler, call, entry, read, STRING)
 
 
-@compiled(f"ReadRawBytes({DEVICE}, VAR rawbytes RawData, num NoOfBytes {TIME})",
+# ABB's examples read what the device has (`ReadRawBytes io_device, raw_data_in \Time:=1;`):
+# without \NoOfBytes the read takes the received data not read yet, or else the next line,
+# at most a full rawbytes (1024 bytes); at the end of the file RawData is empty.
+@compiled(f"ReadRawBytes({DEVICE}, VAR rawbytes RawData \\num NoOfBytes {TIME})",
           modelled=CHOICE)
 def _read_raw_bytes(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
@@ -255,8 +277,14 @@ def _read_raw_bytes(calls, compiler, call, entry):
     def read(m):
         ref = device(m)
         name, mode, unread, unwritten = _open_device(m, ref, "ReadRawBytes")
-        size = int(count(m))
-        unread = _characters(m, call, name, unread, size)
+        wanted = count(m)
+        more = _binary_characters if mode.endswith(BINARY) else _characters
+        if wanted is ABSENT:
+            unread = more(m, call, name, unread, 1)
+            size = min(len(unread), rawbytes.MAX_BYTES)
+        else:
+            size = int(wanted)
+            unread = more(m, call, name, unread, size)
         m.write_ref(target(m), unread[:size].encode("latin-1", errors="replace"))
         m.write_ref(ref, (name, mode, unread[size:], unwritten))
     return Action(call.span, read)

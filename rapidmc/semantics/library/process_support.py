@@ -14,7 +14,8 @@ from .registry import FIXED, NO_EFFECT, NOT_MODELLED, compiled
 
 _SIGNAL_OUT = "\\VAR signaldo DOp | VAR signalgo GOp | VAR signalao AOp | num ProcID"
 _INDEPENDENT = "mecunit MecUnit, num Axis"
-_AIO = ("aiotrigg Condition \\num HighValue \\num LowValue \\num DeltaValue "
+# The limits are required (ABB's example: `ISignalAI ai1, AIO_BETWEEN, 1.5, 0.5, 0.1, sig1int;`).
+_AIO = ("aiotrigg Condition, num HighValue, num LowValue, num DeltaValue "
         "\\switch DPos | switch DNeg, VAR intnum Interrupt")
 
 compiled("TriggInt(VAR triggdata TriggData, num Distance \\switch Start | switch Time, "

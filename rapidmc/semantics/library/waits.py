@@ -51,8 +51,18 @@ def _wait(calls, compiler, call, entry, condition_factory, what: str) -> Instruc
     return Wait(call.span, condition, timeout, flag_ref, what)
 
 
-@compiled("WaitDI(VAR signaldi Signal, dionum Value \\num MaxTime \\VAR bool TimeFlag)",
-          "WaitDO(VAR signaldo Signal, dionum Value \\num MaxTime \\VAR bool TimeFlag)")
+# RobotWare 6's \Visualize shows a FlexPendant message while the instruction waits
+# (`WaitDI diReady,1\Visualize\Header:="..."\Message:="..."\Icon:=iconInfo;`); it
+# changes nothing rapidmc observes, so the wait is the same with or without it.
+_VISUALIZE = ("\\switch Visualize \\string Header \\string Message | string MsgArray{*} "
+              "\\switch Wrap \\icondata Icon \\string Image \\num VisualizeTime "
+              "\\VAR signaldo UIActiveSignal")
+
+
+@compiled("WaitDI(VAR signaldi Signal, dionum Value \\num MaxTime \\VAR bool TimeFlag "
+          f"{_VISUALIZE})",
+          "WaitDO(VAR signaldo Signal, dionum Value \\num MaxTime \\VAR bool TimeFlag "
+          f"{_VISUALIZE})")
 def _wait_signal(calls, compiler, call, entry):
     def factory(arguments):
         signal = arguments.fn("Signal")
@@ -61,7 +71,8 @@ def _wait_signal(calls, compiler, call, entry):
     return _wait(calls, compiler, call, entry, factory, f"{call.name.text} condition")
 
 
-@compiled("WaitUntil(\\switch InPos, bool Cond \\num PollRate \\num MaxTime \\VAR bool TimeFlag)")
+@compiled("WaitUntil(\\switch InPos, bool Cond \\num PollRate \\num MaxTime \\VAR bool TimeFlag "
+          f"{_VISUALIZE})")
 def _wait_until(calls, compiler, call, entry):
     def factory(arguments):
         return arguments.value("Cond")
