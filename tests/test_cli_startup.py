@@ -66,6 +66,13 @@ def test_the_command_list_still_names_every_command(tmp_path):
     assert all(name in help_text for name in SUBCOMMANDS)
 
 
+def _last_json_line(script: str, folder):
+    """What a fresh interpreter running ``script`` in ``folder`` prints last, read as JSON."""
+    done = subprocess.run([sys.executable, "-c", script], cwd=folder, capture_output=True,
+                          text=True, check=True)
+    return json.loads(done.stdout.splitlines()[-1])
+
+
 def test_check_parses_the_signatures_of_the_routines_it_looks_up_only(tmp_path):
     (tmp_path / "tiny.mod").write_text(PROGRAM.replace("x := 1;", "x := Abs(-1);"))
     script = ("import contextlib, io, json\n"
@@ -76,9 +83,7 @@ def test_check_parses_the_signatures_of_the_routines_it_looks_up_only(tmp_path):
               "parsed = [key for table in (registry.FUNCTIONS, registry.PROCEDURES)\n"
               "          for key, entry in table.items() if type(entry) is registry.RoutineEntry]\n"
               "print(json.dumps([code, parsed, len(registry.FUNCTIONS) + len(registry.PROCEDURES)]))\n")
-    done = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, capture_output=True,
-                          text=True, check=True)
-    code, parsed, registered = json.loads(done.stdout.splitlines()[-1])
+    code, parsed, registered = _last_json_line(script, tmp_path)
     assert code == 0 and "ABS" in parsed
     assert registered > 500 and len(parsed) < 20
 
@@ -118,6 +123,4 @@ def test_the_command_module_is_imported_without_collections_and_the_collector_ru
               "with contextlib.redirect_stdout(io.StringIO()):\n"
               "    code = cli.main(['check', 'tiny.mod', '--quiet'])\n"
               "print(json.dumps([code, during, gc.isenabled()]))\n")
-    done = subprocess.run([sys.executable, "-c", script], cwd=tmp_path, capture_output=True,
-                          text=True, check=True)
-    assert json.loads(done.stdout.splitlines()[-1]) == [0, 0, True]
+    assert _last_json_line(script, tmp_path) == [0, 0, True]
