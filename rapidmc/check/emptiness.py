@@ -102,11 +102,6 @@ class _CycleSearch:
         roots, root_accepting = self.roots, self.root_accepting
         accepting, width = self.product.accepting, self.product.width
         successor_keys = self.product.successor_keys
-        # the product's successors written out when its guard tables exist (as
-        # ``Product.successor_keys``: model successors in order, each with the
-        # automaton states its valuation leads to)
-        tables, read, store = self.product.tables, self.product.read, self.product.store
-        successor_ids = store.successor_ids
         budget = self.budget
         max_states = budget.max_states
         path_keys: list[int] = []
@@ -125,18 +120,7 @@ class _CycleSearch:
                     active.append(index)
                     roots.append(index)
                     root_accepting.append(accepting[key % width])
-                    if tables is None:
-                        successors = successor_keys(key)
-                    else:
-                        state_id, q = divmod(key, width)
-                        table = tables[q]
-                        ids = successor_ids(state_id)
-                        valuations = store.valuations
-                        successors = []
-                        for target_id in ids:
-                            base = target_id * width
-                            for target in table[valuations[target_id] & read]:
-                                successors.append(base + target)
+                    successors = successor_keys(key)
                     path_starts.append(len(pending))
                     if successors:
                         transitions += len(successors)
