@@ -31,7 +31,6 @@ from typing import Optional
 from lark.exceptions import UnexpectedToken
 from lark.lexer import Token
 
-from ..ast import Span
 
 
 def called_name(exc: UnexpectedToken) -> Optional[Token]:
@@ -67,7 +66,3 @@ def message(name: str, text: str) -> str:
     return (f"procedure call with its arguments in parentheses: write `{name} arg1, arg2;` "
             f"(a function call is not a statement)")
 
-
-def span(name: Token, filename: str) -> Span:
-    """The name of the call, where the caret points."""
-    return Span(filename, name.line, name.column, name.end_line, name.end_column)

@@ -167,16 +167,21 @@ def syntax_error(exc: UnexpectedInput, text: str, filename: str) -> UserError:
         called = call_statement.called_name(exc)
         if called is not None:
             return error(SYNTAX, call_statement.message(str(called), text),
-                         call_statement.span(called, filename))
+                         _token_span(called, filename))
         return _unexpected_token_error(exc, filename)
     if isinstance(exc, UnexpectedCharacters):
         return _unexpected_character_error(exc, text, filename)
     return error(SYNTAX, str(exc), Span(filename, exc.line, exc.column))
 
 
+def _token_span(token, filename: str) -> Span:
+    """Where a token of the failed parse is: the caret's place."""
+    return Span(filename, token.line, token.column, token.end_line, token.end_column)
+
+
 def _unexpected_token_error(exc: UnexpectedToken, filename: str) -> UserError:
     token = exc.token
-    span = Span(filename, token.line, token.column, token.end_line, token.end_column)
+    span = _token_span(token, filename)
     message = f"unexpected {describe_token(token)}; expected one of: {describe_expected(_acceptable(exc))}"
     return error(SYNTAX, message, span)
 
