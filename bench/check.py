@@ -44,9 +44,9 @@ from rapidmc import ast
 from rapidmc.check import check_property
 from rapidmc.ltl import parse_formula, to_buchi
 from rapidmc.ltl.syntax import Not
-from rapidmc.model import RapidSystem
-from rapidmc.properties import AtomCompiler, read_property_file
-from rapidmc.reduction import ALL, NONE, Reductions, plan_reductions
+from rapidmc.model.rapid_system import RapidSystem
+from rapidmc.model.properties import AtomCompiler, read_property_file
+from rapidmc.model.reduction import ALL, NONE, Reductions, plan_reductions
 from rapidmc.semantics.link import build
 from rapidmc.semantics.step import CheckConfig
 from rapidmc.syntax import load_program, parse_text

@@ -105,7 +105,7 @@ import sys
 import tempfile
 import time
 
-from rapidmc.source import read_source
+from rapidmc.load.source import read_source
 from rapidmc.syntax import accelerated, parse_text, parser
 from rapidmc.syntax.construct import draft_class
 from rapidmc.syntax.parser import rapid_parser

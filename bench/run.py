@@ -14,7 +14,7 @@ import io
 import sys
 import time
 
-from rapidmc.run import run_program
+from rapidmc.commands.console import run_program
 from rapidmc.semantics.link import build
 from rapidmc.syntax import parse_text
 

@@ -23,28 +23,28 @@ from types import SimpleNamespace
 from typing import Callable, Iterable, Mapping, Optional, Sequence
 
 from . import ast
-from .check import (HOLDS, UNKNOWN, VIOLATED, Progress, PropertyResult, SearchResult,
-                    check_property, find_reachable)
+from .check import HOLDS, UNKNOWN, VIOLATED, Progress, SearchResult, check_property, find_reachable
 from .check.budget import DEFAULT_MAX_STATES
-from .backup import load_tasks, resolve_program_files
+from .load.backup import load_tasks, resolve_program_files
 from .check.trace import Trace, build_trace
 from .diagnostics import (AUTOMATON, DOMAIN, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED,
                           TRACE_REPLAY, USAGE, Diagnostic, SourceCache, UserError, error)
-from .explored import ExploredFacts
+from .findings.explored import ExploredFacts
 from .ltl import read_hoa, to_buchi
 from .ltl.syntax import Not
-from . import reduction
-from .input_domains import Assumed, default_domains
-from .model import RapidDescriber, RapidSystem, replay, with_final_loop
-from .fixed_readings import fixed_readings
-from .task_fairness import TaskFairness, assumes_fairness, fair_or_plain_search
-from .properties import AtomCompiler, Property, check_unique, parse_property, read_property_file
+from .model import reduction
+from .report.results import PropertyResult
+from .load.input_domains import Assumed, default_domains
+from .model.rapid_system import RapidDescriber, RapidSystem, replay, with_final_loop
+from .findings.fixed_readings import fixed_readings
+from .model.fairness import TaskFairness, assumes_fairness, fair_or_plain_search
+from .model.properties import AtomCompiler, Property, check_unique, parse_property, read_property_file
 from .semantics.configured_signals import _walk_statements
 from .semantics.link import build
 from .semantics.program import PROGRAM_NAMESPACE, Program
 from .semantics.step import CheckConfig, EnvironmentFault
 from .syntax import load_program as _parse_files
-from .commands.quoting import one_line, quoted
+from .diagnostics.quoting import one_line, quoted
 
 __all__ = ["CheckOptions", "CheckReport", "Model", "check", "check_model", "load_program", "prepare",
            "property_from_text", "read_properties", "HOLDS", "VIOLATED", "UNKNOWN"]

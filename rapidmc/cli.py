@@ -38,7 +38,7 @@ class _ArgumentParser(argparse.ArgumentParser):
     """argparse that reports usage errors as rapidmc diagnostics (exit 2)."""
 
     def error(self, message: str) -> None:  # type: ignore[override]
-        from .commands.quoting import one_line   # user text stays on the diagnostic's line
+        from .diagnostics.quoting import one_line   # user text stays on the diagnostic's line
         raise UserError([Diagnostic(USAGE, f"{one_line(message)} (see '{self.prog} --help')")])
 
 

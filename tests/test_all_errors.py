@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from rapidmc.error_report import MAX_REPORTED
+from rapidmc.diagnostics.error_report import MAX_REPORTED
 from tests.test_realworld import cli
 
 HERE = Path(__file__).resolve().parent / "static_errors"

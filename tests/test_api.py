@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 from rapidmc import api
-from rapidmc.check.report import property_json
+from rapidmc.report.results import property_json
 from rapidmc.cli import main
 from rapidmc.diagnostics import UserError
 from test_check_cases import verdict_cases

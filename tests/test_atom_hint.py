@@ -12,7 +12,7 @@ import doctest
 
 import pytest
 
-import rapidmc.properties as properties
+import rapidmc.model.properties as properties
 from rapidmc.cli import main
 
 PROGRAM = ("MODULE M\n  VAR bool flag := FALSE;\n  PROC main()\n    WHILE TRUE DO\n"

@@ -5,7 +5,7 @@ from pathlib import Path
 
 import pytest
 
-from rapidmc.backup import read_eio
+from rapidmc.load.backup import read_eio
 from rapidmc.cli import main
 
 EIO = """EIO:CFG_1.0:6:1::

@@ -46,7 +46,7 @@ def test_check_loads_no_other_commands_module(tmp_path):
     assert "rapidmc.commands.check" in modules
     assert not modules & set(OTHER_COMMANDS)
     # the report writers load when asked for
-    assert not modules & {"rapidmc.check.html", "rapidmc.check.junit", "rapidmc.check.sarif"}
+    assert not modules & {"rapidmc.report.html", "rapidmc.report.junit", "rapidmc.report.sarif"}
 
 
 @pytest.mark.parametrize("report", [["--format", "sarif"], ["--junit", "out.xml"],

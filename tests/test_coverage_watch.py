@@ -6,9 +6,9 @@ the number of spans it keeps, not for a merged step's tuple of spans.
 """
 from __future__ import annotations
 
-from rapidmc import coverage
+from rapidmc.findings import coverage
 from rapidmc.ast import Span
-from rapidmc.coverage import StatementWatch
+from rapidmc.findings.coverage import StatementWatch
 
 
 def step(span):

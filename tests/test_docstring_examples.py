@@ -6,9 +6,9 @@ import importlib
 
 import pytest
 
-MODULES = ["rapidmc.error_report", "rapidmc.syntax.recovery", "rapidmc.syntax.call_statement",
-           "rapidmc.stubs",
-           "rapidmc.stubs.inference", "rapidmc.library_doc", "rapidmc.semantics.library.registry"]
+MODULES = ["rapidmc.diagnostics.error_report", "rapidmc.syntax.recovery", "rapidmc.syntax.call_statement",
+           "rapidmc.load.stubs",
+           "rapidmc.load.stubs.inference", "rapidmc.semantics.library.documentation", "rapidmc.semantics.library.registry"]
 
 
 @pytest.mark.parametrize("name", MODULES)

@@ -18,9 +18,9 @@ from rapidmc.check.product import Product
 from rapidmc.check.store import ModelStore
 from rapidmc.ltl import to_buchi
 from rapidmc.ltl.syntax import Not
-from rapidmc.model import RapidSystem
-from rapidmc.properties import AtomCompiler, parse_property
-from rapidmc.reduction import ALL, plan_reductions
+from rapidmc.model.rapid_system import RapidSystem
+from rapidmc.model.properties import AtomCompiler, parse_property
+from rapidmc.model.reduction import ALL, plan_reductions
 from rapidmc.semantics.link import build
 from rapidmc.semantics.step import CheckConfig
 from rapidmc.syntax import parse_text

@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 
 import networkx as nx
 
-from rapidmc.check.model import STUTTER
+from rapidmc.check.transition_system import STUTTER
 from rapidmc.ltl.buchi import Buchi, Edge
 
 # --- toy models ------------------------------------------------------------------

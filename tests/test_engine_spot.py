@@ -57,8 +57,8 @@ from rapidmc.ltl import BACKENDS, Buchi, Formula, atoms_of, parse_formula, read_
 from rapidmc.ltl.lasso import holds_on_lasso
 from rapidmc.ltl.spot_backend import from_spot, spot_available, to_spot
 from rapidmc.ltl.syntax import Not
-from rapidmc.model import RapidSystem, replay
-from rapidmc.properties import AtomCompiler, read_property_file
+from rapidmc.model.rapid_system import RapidSystem, replay
+from rapidmc.model.properties import AtomCompiler, read_property_file
 from rapidmc.semantics.link import build
 from rapidmc.semantics.step import CheckConfig
 from rapidmc.syntax import load_program, parse_text

@@ -14,7 +14,7 @@ import struct
 from hypothesis import given, settings, strategies as st
 
 from rapidmc import ast
-from rapidmc.run import run_program
+from rapidmc.commands.console import run_program
 from rapidmc.semantics.link import build
 from rapidmc.syntax import parse_text
 

@@ -23,8 +23,8 @@ from rapidmc import api
 from rapidmc.check import check_property, product, store
 from rapidmc.check.budget import SearchBudget
 from rapidmc.check.emptiness import search_accepting_cycle
-from rapidmc.model import RapidSystem
-from rapidmc.reduction import ALL, NONE
+from rapidmc.model.rapid_system import RapidSystem
+from rapidmc.model.reduction import ALL, NONE
 from rapidmc.semantics import fused_step
 
 from reduction_programs import properties, random_program

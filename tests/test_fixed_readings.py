@@ -14,7 +14,7 @@ import pytest
 
 from rapidmc import ast
 from rapidmc.cli import main
-from rapidmc.fixed_readings import fixed_readings
+from rapidmc.findings.fixed_readings import fixed_readings
 from rapidmc.semantics.link import build
 from rapidmc.syntax import parse_text
 

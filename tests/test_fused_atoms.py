@@ -15,8 +15,8 @@ from hypothesis import HealthCheck, given, settings
 
 from rapidmc import api
 from rapidmc.diagnostics import UserError
-from rapidmc.reduction import NONE
-from rapidmc.properties import AtomCompiler
+from rapidmc.model.reduction import NONE
+from rapidmc.model.properties import AtomCompiler
 
 from fuzz_programs import programs
 from reduction_programs import properties, random_program

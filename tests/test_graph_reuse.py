@@ -25,7 +25,7 @@ from rapidmc.cli import main
 from rapidmc.commands import check as check_command
 from rapidmc.ltl import to_buchi
 from rapidmc.ltl.syntax import Not
-from rapidmc.model import RapidSystem
+from rapidmc.model.rapid_system import RapidSystem
 
 from reduction_programs import properties, random_program
 from test_check_cases import verdict_cases

@@ -21,7 +21,7 @@ from pathlib import Path
 import pytest
 
 from rapidmc.check import check_property
-from rapidmc.check.html import timeline_rows
+from rapidmc.report.html import timeline_rows
 from rapidmc.check.trace import CallFrame, Change, TraceStep, build_trace
 from test_engine_models import NOT_INFINITELY_OFTEN_P
 from test_report import Cell, CellDescriber

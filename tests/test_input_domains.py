@@ -1,4 +1,4 @@
-"""Default domains of free group and analog inputs (rapidmc/input_domains.py).
+"""Default domains of free group and analog inputs (rapidmc/load/input_domains.py).
 
 The defaults must lose no behaviour: a differential test checks generated
 programs once with the derived domain and once with every 4-bit value, and
@@ -14,10 +14,10 @@ from pathlib import Path
 import pytest
 
 from rapidmc import api
-from rapidmc.backup import map_width, read_eio
+from rapidmc.load.backup import map_width, read_eio
 from rapidmc.cli import main
 from rapidmc.diagnostics import UserError
-from rapidmc.input_domains import analog_points, group_points
+from rapidmc.load.input_domains import analog_points, group_points
 from tests.test_backup import make_backup
 
 COMPARE = {"=": lambda a, b: a == b, "<>": lambda a, b: a != b, "<": lambda a, b: a < b,

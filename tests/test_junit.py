@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 import xmlschema
 
-from rapidmc.check.junit import format_junit_diagnostics
+from rapidmc.report.junit import format_junit_diagnostics
 from rapidmc.cli import main
 from rapidmc.diagnostics import SYNTAX, Diagnostic
 from test_check_cases import CASES_DIR, load_case

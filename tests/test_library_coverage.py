@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from rapidmc import library_coverage
+from rapidmc.semantics.library import reference_coverage as library_coverage
 
 
 def test_the_reference_has_the_four_sections_and_no_name_twice():

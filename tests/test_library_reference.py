@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from rapidmc.library_doc import signature_text
+from rapidmc.semantics.library.documentation import signature_text
 from rapidmc.semantics.library import lookup_function, lookup_procedure, parse_signature
 from rapidmc.semantics.library.registry import SignatureSyntaxError, register
 from rapidmc.semantics.types import PREDEFINED_TYPES

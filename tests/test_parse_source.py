@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 
 from rapidmc.diagnostics import SourceCache, UserError
-from rapidmc.source import MAX_FILE_BYTES, program_paths, read_source
+from rapidmc.load.source import MAX_FILE_BYTES, program_paths, read_source
 from rapidmc.syntax import load_program, parse_file, parse_text
 
 MODULE = b"MODULE m\n  PROC main()\n    Stop;\n  ENDPROC\nENDMODULE\n"

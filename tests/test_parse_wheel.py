@@ -33,7 +33,9 @@ def test_wheel_contains_grammar_and_parses_in_fresh_venv(tmp_path):
         "-w", str(wheels), str(ROOT), cwd=tmp_path)
     (wheel,) = wheels.glob("rapidmc-*.whl")
     names = zipfile.ZipFile(wheel).namelist()
-    assert {f"rapidmc/check/html_page/page.{kind}" for kind in ("html", "css", "js")} <= set(names)
+    assert {f"rapidmc/report/html_page/page.{kind}" for kind in ("html", "css", "js")} <= set(names)
+    packages = {str(init.relative_to(ROOT)) for init in (ROOT / "rapidmc").rglob("__init__.py")}
+    assert packages <= set(names), f"packages missing from the wheel: {sorted(packages - set(names))}"
     environment = tmp_path / "env"
     venv.create(environment, system_site_packages=True, with_pip=True)
     python = str(environment / "bin" / "python")

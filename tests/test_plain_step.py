@@ -26,7 +26,7 @@ from hypothesis import HealthCheck, given, settings
 
 from rapidmc import api
 from rapidmc.diagnostics import UserError
-from rapidmc.reduction import ALL, NONE
+from rapidmc.model.reduction import ALL, NONE
 from rapidmc.semantics.state import RUNNING
 from rapidmc.semantics.fused_step import fused_successor_states, fused_successors
 from rapidmc.semantics.plain_step import is_plain, plain_successors

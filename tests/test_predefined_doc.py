@@ -1,14 +1,14 @@
 """docs/predefined.md is generated from the library's registry and kept in step (issue 8, C)."""
 from __future__ import annotations
 
-from rapidmc import library_doc
+from rapidmc.semantics.library import documentation as library_doc
 from rapidmc.semantics.library import TOPICS, all_entries, parse_signature
 from rapidmc.semantics.library.registry import MODELLED_AS
 
 
 def test_committed_page_equals_the_generated_one():
     assert library_doc.DOC.read_text(encoding="utf-8") == library_doc.document(), \
-        "docs/predefined.md is out of date: run python -m rapidmc.library_doc"
+        "docs/predefined.md is out of date: run python -m rapidmc.semantics.library.documentation"
 
 
 def test_every_shown_signature_parses_back_to_the_registered_one():

@@ -19,7 +19,7 @@ import pytest
 
 from rapidmc.check import find_reachable
 from rapidmc.cli import main
-from rapidmc.model import RapidDescriber, RapidSystem
+from rapidmc.model.rapid_system import RapidDescriber, RapidSystem
 from rapidmc.semantics.link import build
 from rapidmc.semantics.step import CheckConfig
 from rapidmc.syntax import load_program

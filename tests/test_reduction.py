@@ -20,10 +20,10 @@ from hypothesis import strategies as st
 
 from rapidmc import ast
 from rapidmc.cli import main
-from rapidmc.model import RapidSystem
-from rapidmc.reduction import plan_reductions
-from rapidmc.reduction.relevance import find_slicing
-from rapidmc.reduction.totality import Totality
+from rapidmc.model.rapid_system import RapidSystem
+from rapidmc.model.reduction import plan_reductions
+from rapidmc.model.reduction.relevance import find_slicing
+from rapidmc.model.reduction.totality import Totality
 from rapidmc.semantics.link import build
 from rapidmc.semantics.step import CheckConfig
 from rapidmc.syntax import parse_text
@@ -343,7 +343,7 @@ def test_dead_values_are_reset(tmp_path, flags, states):
 
 
 def test_liveness_of_a_local_along_the_loop():
-    from rapidmc.reduction.liveness import DeadData
+    from rapidmc.model.reduction.liveness import DeadData
     program = linked(DEAD_LOCAL)
     dead = DeadData(program, {"X"})
     main = program.routines[program.entry]

@@ -8,8 +8,8 @@ import pytest
 from rapidmc.check import VIOLATED, check_property
 from rapidmc.ltl import to_buchi
 from rapidmc.ltl.syntax import Not
-from rapidmc.model import RapidSystem, replay
-from rapidmc.properties import AtomCompiler, read_property_file
+from rapidmc.model.rapid_system import RapidSystem, replay
+from rapidmc.model.properties import AtomCompiler, read_property_file
 from rapidmc.semantics.link import build
 from rapidmc.semantics.step import CheckConfig
 from rapidmc.syntax import load_program

@@ -9,8 +9,8 @@ from __future__ import annotations
 import json
 import re
 
-from rapidmc.check import (PropertyResult, TransitionInfo, check_property, find_reachable,
-                           format_json, format_text)
+from rapidmc.check import TransitionInfo, check_property, find_reachable
+from rapidmc.report.results import PropertyResult, format_json, format_text
 from test_engine_models import NOT_ALWAYS_P, NOT_INFINITELY_OFTEN_P
 
 

@@ -26,7 +26,7 @@ import pytest
 
 from rapidmc import api
 from rapidmc.diagnostics import UserError
-from rapidmc.reduction import ALL, NONE
+from rapidmc.model.reduction import ALL, NONE
 from rapidmc.semantics.staged_step import is_staged, staged_successors
 from rapidmc.semantics.state import RUNNING
 from rapidmc.semantics.step import general_successors, successors

@@ -87,8 +87,8 @@ def explore(prog, config):
     from rapidmc.check import check_property
     from rapidmc.ltl import parse_formula, to_buchi
     from rapidmc.ltl.syntax import Not
-    from rapidmc.model import RapidSystem
-    from rapidmc.properties import AtomCompiler
+    from rapidmc.model.rapid_system import RapidSystem
+    from rapidmc.model.properties import AtomCompiler
     buchi = to_buchi(Not(parse_formula('G F "n = 0"')))
     valuation = AtomCompiler(prog).valuation(buchi.atoms, {})
     return check_property(RapidSystem(prog, config), buchi, valuation)

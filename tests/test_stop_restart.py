@@ -82,7 +82,7 @@ def test_run_no_restart_ends_at_the_stop_without_reading_stdin(tmp_path, capsys,
 
 
 def test_run_stays_stopped_from_the_interpreter_api():
-    from rapidmc.run import run_program
+    from rapidmc.commands.console import run_program
     from rapidmc.semantics.link import build
     from rapidmc.semantics.state import STOPPED
     from rapidmc.syntax import load_program
@@ -126,7 +126,7 @@ def test_programs_with_stop_keep_their_verdicts_when_reduced(tmp_path, seed):
 @pytest.mark.parametrize("reductions", ["reduced", "plain"])
 @pytest.mark.parametrize("seed", range(6))
 def test_programs_with_stop_check_alike_on_the_fast_paths(tmp_path, seed, reductions):
-    from rapidmc.reduction import ALL, NONE
+    from rapidmc.model.reduction import ALL, NONE
     from reduction_programs import properties
     from test_fast_search import assert_same_checks
     from test_plain_step import formulas, load

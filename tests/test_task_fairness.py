@@ -21,7 +21,7 @@ from rapidmc.check.fair import check_fair_property
 from rapidmc.cli import main
 from rapidmc.ltl import parse_formula, to_buchi
 from rapidmc.ltl.syntax import Not
-from rapidmc.task_fairness import TaskFairness
+from rapidmc.model.fairness import TaskFairness
 
 CASES = Path(__file__).resolve().parent / "check"
 FAIR = CASES / "tasks_fairness"

@@ -39,13 +39,13 @@ from rapidmc.ltl import parse_formula, to_buchi
 from rapidmc.ltl.lasso import holds_on_lasso
 from rapidmc.ltl.spot_backend import spot_available, to_spot
 from rapidmc.ltl.syntax import Not
-from rapidmc.model import RapidSystem
-from rapidmc.properties import AtomCompiler
+from rapidmc.model.rapid_system import RapidSystem
+from rapidmc.model.properties import AtomCompiler
 from rapidmc.semantics.link import Task, build
 from rapidmc.semantics.state import RUNNING
 from rapidmc.semantics.step import CheckConfig
 from rapidmc.syntax import parse_text
-from rapidmc.task_fairness import TaskFairness, fair_or_plain_search
+from rapidmc.model.fairness import TaskFairness, fair_or_plain_search
 
 require_tool(spot_available(), "RAPIDMC_REQUIRE_SPOT",
              "Spot's Python bindings are not installed (../shared/spot/install)")

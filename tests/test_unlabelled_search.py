@@ -17,9 +17,9 @@ import pytest
 
 from rapidmc import api
 from rapidmc.check import find_reachable
-from rapidmc.coverage import StatementWatch
-from rapidmc.explored import ExploredFacts
-from rapidmc.model import RapidSystem
+from rapidmc.findings.coverage import StatementWatch
+from rapidmc.findings.explored import ExploredFacts
+from rapidmc.model.rapid_system import RapidSystem
 from rapidmc.semantics.state import RUNNING
 
 from reduction_programs import properties, random_program

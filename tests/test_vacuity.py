@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 
-import rapidmc.check.vacuity as vacuity
+import rapidmc.findings.vacuity as vacuity
 from rapidmc import api
 from rapidmc.cli import main
 from rapidmc.ltl import parse_formula, to_text

@@ -14,8 +14,8 @@ from hypothesis import HealthCheck, given, settings
 from rapidmc import ast
 from rapidmc.check import find_reachable
 from rapidmc.diagnostics import UserError
-from rapidmc.model import RapidSystem
-from rapidmc.properties import AtomCompiler, reads_data_only, parse_atom_expression
+from rapidmc.model.rapid_system import RapidSystem
+from rapidmc.model.properties import AtomCompiler, reads_data_only, parse_atom_expression
 from rapidmc.semantics.link import build
 from rapidmc.semantics.step import CheckConfig
 from rapidmc.syntax import parse_text

@@ -20,7 +20,7 @@ from .collector import frozen_while_searching
 from .emptiness import search_accepting_cycle
 from .graph_store import ExploredGraph, GraphStore
 from .hashed import hashed_accepting_cycle, visited_sets
-from .model import TransitionSystem, Valuation
+from .transition_system import TransitionSystem, Valuation
 from .product import Product
 from .progress import Progress
 from .result import SearchResult

@@ -1,7 +1,7 @@
 """Emptiness of model × Büchi under weak fairness constraints (Tarjan's SCCs, iterative).
 
 A weak fairness constraint (justice) holds on an infinite run when the
-constrained party — a RAPID task, for ``rapidmc.task_fairness`` — takes a
+constrained party — a RAPID task, for ``rapidmc.model.fairness`` — takes a
 step infinitely often or is infinitely often unable to go on.  On a lasso
 that means: its cycle contains a step of the party or a state where the
 party cannot go on.

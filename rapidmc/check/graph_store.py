@@ -25,7 +25,7 @@ from __future__ import annotations
 from array import array
 from typing import Callable, Hashable, Optional, Sequence
 
-from .model import Label, Valuation, labelled_successors
+from .transition_system import Label, Valuation, labelled_successors
 from .states import StateTable
 from .store import VALUATION_TYPES, unique, valuations_bytes, wider
 

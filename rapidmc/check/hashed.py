@@ -22,7 +22,7 @@ import math
 from typing import Callable, Hashable, Optional
 
 from .budget import SearchBudget
-from .model import STUTTER, TransitionSystem, labelled_successors
+from .transition_system import STUTTER, TransitionSystem, labelled_successors
 from .result import NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep, SearchResult, SearchStats
 
 MASK64 = (1 << 64) - 1

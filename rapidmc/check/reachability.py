@@ -34,7 +34,7 @@ from typing import Callable, Hashable, Optional, Protocol, Sequence
 
 from .budget import DEFAULT_MAX_STATES, SearchBudget
 from .collector import frozen_while_searching
-from .model import TransitionSystem, Valuation, as_sequence
+from .transition_system import TransitionSystem, Valuation, as_sequence
 from .progress import Progress
 from .graph_store import ExploredGraph
 from .hashed import hashed_reachable, visited_sets

@@ -25,7 +25,7 @@ from typing import Hashable, Sequence
 
 from array import array
 
-from .model import Label, TransitionSystem, Valuation, as_sequence, labelled_successors
+from .transition_system import Label, TransitionSystem, Valuation, as_sequence, labelled_successors
 from .states import StateTable
 
 SUCCESSOR_CACHE_SIZE = 1 << 16

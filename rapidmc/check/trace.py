@@ -19,7 +19,7 @@ from dataclasses import dataclass, field, replace
 from typing import Hashable, Mapping, Optional, Protocol
 
 from .fold import fold_lasso
-from .model import STUTTER
+from .transition_system import STUTTER
 from .result import LassoStep, SearchResult
 
 INITIAL = "initial"

@@ -16,15 +16,16 @@ import sys
 from pathlib import Path
 
 from .. import api
-from ..check import Progress, format_json, format_text
-from ..check.report import format_json_errors
+from ..check import Progress
+from ..report.results import format_json, format_text
+from ..report.results import format_json_errors
 from ..diagnostics import USAGE, UserError, error, render_all
 from ..ltl import BACKENDS
-from ..backup import add_program_arguments
-from ..properties import Property, check_unique, read_property_file
-from .. import reduction
+from ..load.backup import add_program_arguments
+from ..model.properties import Property, check_unique, read_property_file
+from ..model import reduction
 from . import storage_options
-from .quoting import quoted, routine_name
+from ..diagnostics.quoting import quoted, routine_name
 from .report_file import check_report_target, unwritable_reason, write_report
 
 DEFAULT_MAX_STATES = 1_000_000
@@ -153,7 +154,7 @@ def execute(args: argparse.Namespace) -> int:
         return _check(args)
     except UserError as exc:
         if args.junit:
-            from ..check.junit import format_junit_diagnostics   # (reports load on demand)
+            from ..report.junit import format_junit_diagnostics   # (reports load on demand)
             write_report(args.junit, format_junit_diagnostics(exc.diagnostics, *_suite(args)),
                          "JUnit report")
         if args.format == "text":
@@ -162,7 +163,7 @@ def execute(args: argparse.Namespace) -> int:
         if args.format == "json":
             print(format_json_errors(exc.diagnostics, getattr(args, "command_line", None)), end="")
         else:
-            from ..check.sarif import format_sarif_diagnostics
+            from ..report.sarif import format_sarif_diagnostics
             print(format_sarif_diagnostics(exc.diagnostics, exc.exit_code), end="")
         return exc.exit_code
 
@@ -173,12 +174,12 @@ def _check(args: argparse.Namespace) -> int:
     results, describer, warnings = report.results, report.describer, report.warnings
     exit_code = report.exit_code(args.fail_on_vacuous)
     if args.html:
-        from ..check.html import write_html          # (reports load on demand)
+        from ..report.html import write_html          # (reports load on demand)
         write_html(args.html, results, describer, warnings)
     if args.format == "json":
         print(format_json(results, describer, warnings, getattr(args, "command_line", None)))
     elif args.format == "sarif":
-        from ..check.sarif import format_sarif
+        from ..report.sarif import format_sarif
         print(format_sarif(results, describer, exit_code, warnings), end="")
     else:
         print(format_text(results, describer))
@@ -186,7 +187,7 @@ def _check(args: argparse.Namespace) -> int:
         if warnings:
             print(render_all(warnings), file=sys.stderr)
     if args.junit:
-        from ..check.junit import format_junit
+        from ..report.junit import format_junit
         write_report(args.junit, format_junit(results, describer, *_suite(args), warnings),
                      "JUnit report")
     return exit_code
@@ -196,7 +197,7 @@ def _refuse_unwritable_targets(args: argparse.Namespace) -> None:
     """A report file that cannot be written is an input error before the search, not after it."""
     reason = unwritable_reason(args.html) if args.html else None
     if reason is not None:
-        from ..check.html import html_unwritable
+        from ..report.html import html_unwritable
         raise html_unwritable(args.html, reason)
     if args.junit:
         check_report_target(args.junit, "JUnit report")

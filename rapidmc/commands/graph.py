@@ -4,7 +4,7 @@ Writes the program's reachable state graph (with ``--property``: its
 product with the automaton of the property's negation) for graph tools:
 GraphML (yEd, Gephi, networkx), GEXF (Gephi) or Graphviz DOT, and prints
 its size: states, edges, strongly connected components, terminal states.
-Node and edge attributes are described in ``rapidmc.state_graph``.
+Node and edge attributes are described in ``rapidmc.report.state_graph``.
 
 Exit codes: 0 the graph is complete; 3 a bound (``--max-states``,
 ``--max-seconds``) stopped the search, so the file holds part of it;
@@ -19,9 +19,9 @@ from pathlib import Path
 import networkx as nx
 
 from ..diagnostics import EXIT_OK, EXIT_UNKNOWN, USAGE, error
-from ..state_graph import StateGraph, product_graph, state_graph
+from ..report.state_graph import StateGraph, product_graph, state_graph
 from .check import add_model_arguments, prepare_model
-from .quoting import quoted
+from ..diagnostics.quoting import quoted
 from .report_file import check_report_target, write_report
 
 

@@ -16,7 +16,7 @@ from typing import Optional, Union
 
 from .. import ast
 from ..diagnostics import EXIT_INPUT_ERROR, EXIT_OK, Diagnostic, UserError, render_all
-from ..source import program_paths
+from ..load.source import program_paths
 from ..syntax import parse_file
 
 

@@ -18,12 +18,12 @@ import sys
 from dataclasses import replace
 from typing import Optional
 
-from ..check.report import step_lines
+from ..report.results import step_lines
 from ..check.trace import INITIAL, Change, TraceStep, TransitionInfo
 from ..diagnostics import EXIT_OK, TRACE_DIVERGED, TRACE_FILE, SourceCache, UserError, error
-from ..trace_replay import ReplayedStep, SavedStep, SavedTrace, TraceDiverged, follow
+from ..check.trace_replay import ReplayedStep, SavedStep, SavedTrace, TraceDiverged, follow
 from .. import ast
-from .quoting import one_line, quoted
+from ..diagnostics.quoting import one_line, quoted
 
 SCHEMA = "rapidmc-check/1"
 

@@ -12,12 +12,12 @@ import math
 import sys
 
 from ..diagnostics import (BAD_INPUT_VALUE, EXIT_OK, EXIT_RUNTIME_ERROR, USAGE, UserError, error, render)
-from ..run import fault_diagnostic, run_program
-from ..backup import add_program_arguments, load_tasks, resolve_program_files
+from .console import fault_diagnostic, run_program
+from ..load.backup import add_program_arguments, load_tasks, resolve_program_files
 from ..semantics.link import build
 from ..semantics.state import FAILED
 from ..syntax import load_program
-from .quoting import quoted, routine_name
+from ..diagnostics.quoting import quoted, routine_name
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

@@ -12,7 +12,7 @@ from typing import Optional
 
 from ..check.hashed import BITSTATE, COMPACT
 from ..diagnostics import USAGE, error
-from .quoting import quoted
+from ..diagnostics.quoting import quoted
 
 UNITS = {"": 1, "B": 1, "K": 1 << 10, "KB": 1 << 10, "M": 1 << 20, "MB": 1 << 20,
          "G": 1 << 30, "GB": 1 << 30}

@@ -2,7 +2,7 @@
 
 Writes a RAPID module (to ``-o`` or stdout) declaring every name the
 program uses and no given module declares, typed from the uses
-(``rapidmc.stubs``).  Then loads the program with that module, as ``check``
+(``rapidmc.load.stubs``).  Then loads the program with that module, as ``check``
 and ``run`` would: exit 0 when it loads (or nothing was missing), 2 with
 the remaining static errors when it does not (for instance a name whose
 type the uses do not tell, or a mistake that is not a missing name).
@@ -18,10 +18,10 @@ from pathlib import Path
 from .. import ast
 from ..diagnostics import (EXIT_INPUT_ERROR, EXIT_OK, NO_ENTRY, USAGE, UserError, error,
                            render_all)
-from ..backup import resolve_program_files
+from ..load.backup import resolve_program_files
 from ..semantics.link import build
-from ..source import program_paths
-from ..stubs import Stubs, stub_module
+from ..load.source import program_paths
+from ..load.stubs import Stubs, stub_module
 from ..syntax import load_program, parse_text
 
 DEFAULT_MODULE = "Missing"

@@ -18,7 +18,7 @@ from typing import Optional, Sequence
 from .. import ast
 from ..diagnostics import (BAD_DECLARATION, DUPLICATE, ENVIRONMENT, NO_ENTRY, NOT_CONSTANT,
                            TYPE_MISMATCH, UNKNOWN_NAME, UNKNOWN_TYPE, UserError, error)
-from ..error_report import ErrorCollector
+from ..diagnostics.error_report import ErrorCollector
 from . import configured_signals
 from . import program as P
 from .library.data import PREDEFINED_DATA

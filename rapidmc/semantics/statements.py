@@ -13,7 +13,7 @@ from typing import Optional
 from .. import ast
 from ..diagnostics import (ASSIGN_CONST, BAD_CONTROL, DUPLICATE, TYPE_MISMATCH, UNKNOWN_LABEL,
                            UNKNOWN_NAME, UNKNOWN_ROUTINE, PLACEHOLDER, UserError, error)
-from ..error_report import UNKNOWN_CODES
+from ..diagnostics.error_report import UNKNOWN_CODES
 from .library import registry
 from .expressions import ExpressionCompiler, _check_index as check_index
 from .instructions import (Action, Branch, Call, EndRoutine, EndUndo, ExitProgram,

@@ -12,8 +12,8 @@ import gc
 
 from .. import ast
 from ..diagnostics import SourceCache, UserError
-from ..error_report import report
-from ..source import program_paths, read_source
+from ..diagnostics.error_report import report
+from ..load.source import program_paths, read_source
 from .parser import parse_modules
 
 

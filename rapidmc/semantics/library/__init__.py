@@ -6,7 +6,7 @@ values (``@function``, ``@procedure``, ``@numeric``) or a factory that
 compiles each call against the program state (``@compiled``); see
 ``registry``.  ``data`` holds the predefined data objects.  Adding a name is
 adding an entry to the module of its topic (``TOPICS``); docs/predefined.md
-is generated from the registry (``python -m rapidmc.library_doc``).
+is generated from the registry (``python -m rapidmc.semantics.library.documentation``).
 """
 from .registry import (  # noqa: F401
     FUNCTION,

@@ -58,7 +58,7 @@ Calling convention (what the interpreter does after binding arguments):
   ``FIXED`` (a function whose controller-dependent result is one fixed
   value, e.g. the date), ``NO_EFFECT`` (checked against its signature,
   changes nothing rapidmc observes) or ``NOT_MODELLED`` (the program loads;
-  reaching the call stops with RMC305).  docs/predefined.md lists them (``rapidmc.library_doc``).
+  reaching the call stops with RMC305).  docs/predefined.md lists them (``rapidmc.semantics.library.documentation``).
 
 Lookups are by canonical (upper-case) name: ``lookup_function("ROUND")``.
 """

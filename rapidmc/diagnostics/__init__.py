@@ -1,0 +1,195 @@
+"""Diagnostics: one registry of codes, diagnostic values, and their rendering.
+
+A diagnostic is data (code, message, span); rendering is separate.  User
+errors travel as ``UserError`` carrying diagnostics; anything else that
+escapes is an internal bug and is reported as such by the CLI.
+
+Rendered form (like mypy and compilers)::
+
+    sorter.mod:12:5: error: unknown name 'flag_9' [RMC201]
+        flag_9 := TRUE;
+        ^
+
+Exit codes of the ``rapidmc`` command (documented in README):
+0 success / all properties hold, 1 violation or uncaught RAPID run-time
+error, 2 bad input or usage, 3 search incomplete (UNKNOWN), 4 internal error.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Iterable, Optional
+
+from ..ast import Span
+
+EXIT_OK = 0
+EXIT_VIOLATED = 1
+EXIT_RUNTIME_ERROR = 1
+EXIT_INPUT_ERROR = 2
+EXIT_UNKNOWN = 3
+EXIT_INTERNAL_ERROR = 4
+
+
+@dataclass(frozen=True)
+class ErrorCode:
+    code: str        # "RMC101"
+    name: str        # short slug, e.g. "syntax"
+    summary: str     # what the code is about
+
+
+REGISTRY: dict[str, ErrorCode] = {}
+
+
+def _code(code: str, name: str, summary: str) -> ErrorCode:
+    assert code not in REGISTRY, code
+    entry = ErrorCode(code, name, summary)
+    REGISTRY[code] = entry
+    return entry
+
+
+# --- input files (0xx) -------------------------------------------------------
+FILE_NOT_FOUND = _code("RMC001", "file-not-found", "the file does not exist")
+FILE_IS_DIRECTORY = _code("RMC002", "file-is-directory", "a directory was given where a file is needed")
+FILE_UNREADABLE = _code("RMC003", "file-unreadable", "the file cannot be read")
+FILE_BINARY = _code("RMC004", "file-binary", "the file is binary, not RAPID source text")
+FILE_ENCRYPTED = _code("RMC005", "file-encrypted", "the module is encrypted and cannot be analysed")
+FILE_EMPTY = _code("RMC006", "file-empty", "the file holds no module")
+FILE_TOO_LARGE = _code("RMC007", "file-too-large", "the file exceeds the size limit")
+PROGRAM_FILE = _code("RMC008", "program-file", "a .pgf program file is malformed or names a missing module")
+
+# --- lexical and syntax (1xx) -------------------------------------------------
+SYNTAX = _code("RMC101", "syntax", "the text does not follow RAPID syntax")
+BAD_CHARACTER = _code("RMC102", "bad-character", "a character that cannot start any RAPID token")
+BAD_STRING = _code("RMC103", "bad-string", "malformed string literal (escape, newline, or longer than 80 characters)")
+BAD_NUMBER = _code("RMC104", "bad-number", "malformed or out-of-range numeric literal")
+IDENTIFIER_TOO_LONG = _code("RMC105", "identifier-too-long", "identifier longer than 32 characters")
+PLACEHOLDER = _code("RMC106", "placeholder", "an editor placeholder such as <SMT> cannot be analysed")
+UNEXPECTED_EOF = _code("RMC107", "unexpected-eof", "the file ends inside a construct")
+
+# --- static semantics (2xx) ---------------------------------------------------
+UNKNOWN_NAME = _code("RMC201", "unknown-name", "a name that is not declared")
+UNKNOWN_TYPE = _code("RMC202", "unknown-type", "a data type that is not declared")
+UNKNOWN_ROUTINE = _code("RMC203", "unknown-routine", "a routine that is not declared")
+DUPLICATE = _code("RMC204", "duplicate", "two declarations of one name in one scope")
+ARGUMENT = _code("RMC205", "argument", "wrong number, kind or name of arguments")
+TYPE_MISMATCH = _code("RMC206", "type-mismatch", "a value of the wrong type")
+ASSIGN_CONST = _code("RMC207", "assign-const", "assignment to a constant or a read-only object")
+NOT_A_REFERENCE = _code("RMC208", "not-a-reference", "a data reference is required here")
+BAD_DECLARATION = _code("RMC209", "bad-declaration", "a declaration RAPID does not allow")
+BAD_CONTROL = _code("RMC210", "bad-control", "a statement in a place where RAPID does not allow it")
+NO_ENTRY = _code("RMC211", "no-entry", "the entry routine is missing or has parameters")
+UNKNOWN_LABEL = _code("RMC212", "unknown-label", "GOTO to a label that does not exist")
+NOT_CONSTANT = _code("RMC213", "not-constant", "a constant expression is required")
+ENV_ONLY = _code("RMC214", "env-only", "a model-only routine used outside an environment module")
+MORE_ERRORS = _code("RMC215", "more-errors", "further errors left out of the report (it is capped)")
+
+# --- run time (3xx) ------------------------------------------------------------
+RUNTIME_ERROR = _code("RMC301", "runtime-error", "an uncaught RAPID run-time error stopped the program")
+INPUT_EXHAUSTED = _code("RMC302", "input-exhausted", "the program read from the FlexPendant but stdin has no more answers")
+BAD_INPUT_VALUE = _code("RMC303", "bad-input-value", "an answer or --io value cannot be used")
+STEP_LIMIT = _code("RMC304", "step-limit", "the run exceeded --max-steps")
+UNSUPPORTED = _code("RMC305", "unsupported", "a feature rapidmc does not model")
+
+# --- properties and LTL (4xx) ----------------------------------------------------
+LTL_SYNTAX = _code("RMC401", "ltl-syntax", "the LTL formula is malformed")
+ATOM = _code("RMC402", "atom", "an atomic proposition does not type-check as bool")
+PROPERTY_FILE = _code("RMC403", "property-file", "a property file line is malformed")
+AUTOMATON = _code("RMC404", "automaton", "a supplied automaton (HOA) is malformed or does not fit")
+DUPLICATE_PROPERTY = _code("RMC405", "duplicate-property", "two properties with one name")
+
+# --- model checking (5xx) ---------------------------------------------------------
+STATE_LIMIT = _code("RMC501", "state-limit", "the search reached --max-states or --max-seconds")
+DOMAIN = _code("RMC502", "domain", "a nondeterministic input has no finite domain")
+DOMAIN_ASSUMED = _code("RMC515", "domain-assumed",
+                       "a free input's values were derived (its width, or the numbers it is compared with)")
+ENVIRONMENT = _code("RMC503", "environment", "the environment model is invalid")
+TRACE_REPLAY = _code("RMC504", "trace-replay", "a counterexample did not replay (internal)")
+OUTPUT_FILE = _code("RMC506", "output-file", "a report file (--junit, graph -o) cannot be written")
+TRACE_DIVERGED = _code("RMC507", "trace-diverged", "the program no longer follows a saved counterexample (replay)")
+TRACE_FILE = _code("RMC508", "trace-file", "a trace file is not a usable report of check --format json")
+HTML_OUTPUT = _code("RMC520", "html-output", "the HTML report file cannot be written")
+
+# --- usage (6xx) --------------------------------------------------------------------
+USAGE = _code("RMC601", "usage", "bad command-line usage")
+
+# --- warnings (7xx): reported beside the verdicts, never a failure on their own ------
+NEVER_REACHED = _code("RMC701", "never-reached", "a statement no input sequence reaches (after a complete search)")
+FIXED_READING = _code("RMC702", "fixed-reading", "a controller reading the check takes as a fixed or sampled value")
+
+
+@dataclass(frozen=True)
+class Diagnostic:
+    """One message about the input, with an optional position."""
+
+    code: ErrorCode
+    message: str
+    span: Optional[Span] = None
+    severity: str = "error"
+    notes: tuple[str, ...] = field(default_factory=tuple)
+    subject: str = ""        # canonical name an unknown-name diagnostic is about
+    omitted: int = 0         # a capped report's last diagnostic (RMC215): how many it leaves out
+
+
+class UserError(Exception):
+    """Bad input: carries diagnostics and the exit code to use."""
+
+    def __init__(self, diagnostics: Iterable[Diagnostic] | Diagnostic,
+                 exit_code: int = EXIT_INPUT_ERROR):
+        if isinstance(diagnostics, Diagnostic):
+            diagnostics = [diagnostics]
+        self.diagnostics = list(diagnostics)
+        self.exit_code = exit_code
+        super().__init__("; ".join(d.message for d in self.diagnostics))
+
+
+def error(code: ErrorCode, message: str, span: Optional[Span] = None,
+          *notes: str, exit_code: int = EXIT_INPUT_ERROR, subject: str = "") -> UserError:
+    """Shorthand: ``raise error(UNKNOWN_NAME, "unknown name 'x'", span)``."""
+    return UserError([Diagnostic(code, message, span, notes=tuple(notes), subject=subject)],
+                     exit_code)
+
+
+class SourceCache:
+    """Source lines by file name, for showing the offending line."""
+
+    _lines: dict[str, list[str]] = {}
+
+    @classmethod
+    def remember(cls, file: str, text: str) -> None:
+        cls._lines[file] = text.splitlines()
+
+    @classmethod
+    def line(cls, file: str, line: int) -> Optional[str]:
+        lines = cls._lines.get(file)
+        if lines is None or not 1 <= line <= len(lines):
+            return None
+        return lines[line - 1]
+
+    @classmethod
+    def lines(cls, file: str) -> Optional[tuple[str, ...]]:
+        """Every line of a remembered file (None when it was never read)."""
+        lines = cls._lines.get(file)
+        return None if lines is None else tuple(lines)
+
+
+def render(diagnostic: Diagnostic) -> str:
+    """Render one diagnostic as text: location, message, code, source line, caret."""
+    head = f"{diagnostic.severity}: {diagnostic.message} [{diagnostic.code.code}]"
+    span = diagnostic.span
+    if span is None or span.line <= 0:
+        out = [f"rapidmc: {head}"]
+    else:
+        out = [f"{span.file}:{span.line}:{span.column}: {head}"]
+        source = SourceCache.line(span.file, span.line)
+        if source is not None:
+            shown = source.expandtabs(1).rstrip()
+            out.append("    " + shown)
+            width = 1
+            if span.end_line == span.line and span.end_column > span.column:
+                width = span.end_column - span.column
+            out.append("    " + " " * max(span.column - 1, 0) + "^" + "~" * (width - 1))
+    out.extend(f"  note: {note}" for note in diagnostic.notes)
+    return "\n".join(out)
+
+
+def render_all(diagnostics: Iterable[Diagnostic]) -> str:
+    return "\n".join(render(d) for d in diagnostics)

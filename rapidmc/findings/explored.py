@@ -1,0 +1,93 @@
+"""What a complete search of a program's states shows besides the verdicts.
+
+``ExploredFacts`` watches a breadth-first search over the program's state
+graph (it is the search's ``observe`` callback) and records the source
+lines executed and which combinations of the properties' trigger atoms
+occur.  Once a search has covered every reachable state (``complete``),
+it answers two questions soundly:
+
+* coverage: which statements no input sequence reaches (``warnings``);
+* vacuity: which trigger of a holding property is never true (``vacuous``).
+
+Before that it answers nothing: a bounded search proves neither.
+"""
+from __future__ import annotations
+
+from typing import Hashable, Iterable, Optional, Sequence
+
+from ..check import HOLDS, VIOLATED, find_reachable
+from ..check.result import SearchResult
+from .vacuity import TriggerWatch, to_text
+from .coverage import StatementWatch, unreached
+from ..diagnostics import Diagnostic
+from ..ltl import Formula
+from ..model.properties import AtomCompiler
+from ..semantics.program import Program
+
+
+class ExploredFacts:
+    """Observer of a breadth-first search; see the module docstring."""
+
+    def __init__(self, program: Program, formulas: Iterable[Formula], atoms: AtomCompiler):
+        self.program = program
+        self.statements = StatementWatch(program)
+        self.triggers = TriggerWatch(formulas)
+        # no trigger to watch: no atom to evaluate (evaluating costs a machine per state)
+        self.valuation = atoms.valuation(self.triggers.atoms, {}) if self.triggers.atoms \
+            else _no_atoms
+        self.complete = False
+
+    def __call__(self, state: Hashable, successors: Sequence[tuple[Hashable, Hashable]]) -> None:
+        self.statements(state, successors)
+        self.triggers.seen.add(self.valuation(state))
+
+    @property
+    def labels_wanted(self) -> bool:
+        """Whether the next state's labels may still tell something (a line not yet run);
+        once not, the search hands over states only (``states``)."""
+        return not self.statements.saturated
+
+    def states(self, state: Hashable, targets: Sequence[Hashable]) -> None:
+        """``__call__`` once every line has run: only the state's atoms remain to watch."""
+        self.triggers.seen.add(self.valuation(state))
+
+    def finish(self, system, search: SearchResult, **bounds) -> None:
+        """Mark complete after ``search`` (a search this watched) covered every state.
+
+        A search that stopped at a run-time error is followed by one that looks
+        for nothing and so covers every state unless a bound stops it; one that
+        a bound stopped leaves the facts incomplete (the same bound would stop
+        another).
+        """
+        if search.verdict == VIOLATED:
+            self.watch(system, **bounds)
+        else:
+            self.complete = search.verdict == HOLDS
+
+    def watch(self, system, **bounds) -> None:
+        """Watch a search of ``system`` that looks for nothing; complete unless a bound stops it."""
+        self.statements.clear()
+        self.triggers.seen.clear()
+        search = find_reachable(system, _nothing, observe=self, **bounds)
+        self.complete = search.verdict == HOLDS
+
+    def warnings(self) -> list[Diagnostic]:
+        """Coverage warnings (RMC701); none unless the search was complete."""
+        if not self.complete:
+            return []
+        return [u.diagnostic() for u in unreached(self.program, self.statements.executed)]
+
+    def vacuous(self, formula: Formula) -> Optional[str]:
+        """The text of a trigger of ``formula`` that is never true, or None (or incomplete)."""
+        if not self.complete:
+            return None
+        trigger = self.triggers.never_true(formula)
+        return to_text(trigger) if trigger is not None else None
+
+
+def _no_atoms(state: Hashable) -> int:
+    return 0
+
+
+def _nothing(state: Hashable) -> bool:
+    return False

@@ -1,0 +1,72 @@
+"""Controller readings a check takes as fixed: say so beside the verdicts (RMC702).
+
+Some predefined functions read what only the controller knows: the
+operating mode (``OpMode``), the time (``CDate``, ``GetTime``), a file's
+size, a task's state.  When checking, the library gives each a fixed value
+(docs/predefined.md, "fixed value"), and ``ClkRead`` a few sampled
+readings.  A program that branches on such a reading is checked for that
+value only: its other branches look unreachable, and a verdict says
+nothing about a controller that reads otherwise.  ``fixed_readings`` lists
+each such routine the program calls once, at its first call, with the
+number of calls, so that the user knows what the verdicts assume.
+
+Calls only inside the text of FlexPendant or log output (``TPWrite``,
+``ErrWrite``, ...) decide nothing and are left out.
+"""
+from __future__ import annotations
+
+from typing import Iterator
+
+from .. import ast
+from ..diagnostics import FIXED_READING, Diagnostic
+from ..semantics.library import registry
+from ..semantics.library.clocks import SAMPLED_READINGS_TEXT
+from ..semantics.program import PROGRAM_NAMESPACE, Program
+
+# Output instructions: a reading in their arguments only ends up as text.
+OUTPUT_ONLY = frozenset({"TPWRITE", "ERRWRITE", "ERRLOG", "WRITE", "TPPRINT", "WRITESTRBIN"})
+# Readings that are not one fixed value but a few sampled ones.
+SAMPLED = {"CLKREAD": (SAMPLED_READINGS_TEXT, "those readings")}
+FIXED = ("a fixed value", "that value")
+
+
+def fixed_readings(program: Program) -> list[Diagnostic]:
+    """One warning per predefined routine read as a fixed or sampled value, in source order."""
+    user_routines = {routine.key for routine in program.routines}
+    first: dict[str, ast.Name] = {}
+    calls: dict[str, int] = {}
+    for routine in program.routines:
+        if routine.namespace != PROGRAM_NAMESPACE or routine.ast is None:
+            continue
+        for name in _readings(routine.ast):
+            key = name.key
+            if key in user_routines or not _is_reading(key):
+                continue
+            first.setdefault(key, name)
+            calls[key] = calls.get(key, 0) + 1
+    warnings = [_warning(first[key], calls[key]) for key in first]
+    return sorted(warnings, key=lambda d: (d.span.file, d.span.line, d.span.column))
+
+
+def _is_reading(key: str) -> bool:
+    if key in SAMPLED:
+        return True
+    entry = registry.lookup_function(key) or registry.lookup_procedure(key)
+    return entry is not None and entry.modelled == registry.FIXED
+
+
+def _warning(name: ast.Name, count: int) -> Diagnostic:
+    how, which = SAMPLED.get(name.key, FIXED)
+    times = "1 call" if count == 1 else f"{count} calls"
+    message = (f"{name.text} reads {how} when checking ({times}): verdicts and unreached "
+               f"lines hold for {which} only (docs/predefined.md)")
+    return Diagnostic(FIXED_READING, message, name.span, severity="warning")
+
+
+def _readings(routine_ast) -> Iterator[ast.Name]:
+    """The names of routines called in a routine, outside the arguments of output instructions."""
+    for node, parents in ast.walk(routine_ast):
+        if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) and \
+                not any(isinstance(p, ast.ProcedureCall) and p.name.key in OUTPUT_ONLY
+                        for p in (node, *parents)):
+            yield node.name

@@ -1,0 +1,285 @@
+"""Default value domains of free group and analog inputs, derived soundly.
+
+A free analog (AI) or group (GI) input may hold any value of its type; the
+checker needs a finite set to branch over (``--input-domain``, RMC502).
+Two cases allow a default that loses no behaviour:
+
+* **Width known.** A group input of ``n`` bits holds an integer 0..2^n-1.
+  When its I/O configuration (EIO.cfg: ``-DeviceMap "0-3"``) gives ``n`` and
+  ``n <= FULL_RANGE_BITS``, the default is every value: exact.
+* **Only compared with numbers.** When every read of the input in the code
+  is one side of a comparison (``= <> < <= > >=``) with a number literal or
+  a CONST num, a TEST subject whose CASE values are such numbers, or the
+  signal of ``WaitGI``/``WaitAI`` with such a (whole) number, the
+  program sees only the outcomes of those comparisons.  The outcomes depend
+  only on where the value lies among the numbers, so one value per place
+  covers every outcome: for a group input each number, its integer
+  neighbours and 0 (non-negative integers, within the width when known);
+  for an analog input each number, a value between each two neighbours and
+  one beyond each end.  ``GInput(s)`` / ``AInput(s)`` count as reads of
+  ``s``; a signal variable reads the signals ``AliasIO`` connects it to.
+
+Any other use (assigned, passed to a routine, arithmetic, an index, read
+by a property's atom, an ``AliasIO`` with a computed name) leaves the input
+without a default; the RMC502 error then names the first such use.  An
+explicit ``--input-domain`` always wins.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Optional, Sequence, Union
+
+from .. import ast
+from ..diagnostics import DOMAIN_ASSUMED, Diagnostic
+from ..semantics.configured_signals import COMPARISONS
+from ..semantics.program import Program, Signal
+from ..semantics.scope import CONSTANT, SIGNAL
+from ..semantics.values import to_num
+from ..diagnostics.quoting import quoted
+
+FULL_RANGE_BITS = 5           # a group input of at most 5 bits: every value (at most 32)
+MAX_GROUP_BITS = 32           # the widest group input a controller configures
+READERS = {"GINPUT": "GI", "AINPUT": "AI"}   # functions whose value is their signal's
+WAITS = {"WAITGI", "WAITAI"}  # wait until the signal compares with a value as asked
+
+
+@dataclass(frozen=True)
+class Assumed:
+    """The default domain of one input and why it covers every behaviour."""
+
+    signal: Signal
+    values: tuple                 # floats, ascending
+    reason: str                   # "4-bit group input from EIO.cfg"
+
+    def note(self) -> Diagnostic:
+        return Diagnostic(DOMAIN_ASSUMED, f"{self.signal.name}: {describe(self.values)} "
+                          f"({self.reason})", self.signal.span, severity="note")
+
+
+@dataclass(frozen=True)
+class Refused:
+    """Why an input has no default domain (a note of its RMC502 error)."""
+
+    reason: str
+
+
+Outcome = Union[Assumed, Refused]
+
+
+def describe(values: Sequence[float]) -> str:
+    """``values 0..15`` for a run of integers, else the values listed."""
+    numbers = [int(v) if float(v).is_integer() else v for v in values]
+    if len(numbers) > 2 and all(isinstance(n, int) for n in numbers) \
+            and numbers == list(range(numbers[0], numbers[-1] + 1)):
+        return f"values {numbers[0]}..{numbers[-1]}"
+    return "values " + ", ".join(str(n) for n in numbers)
+
+
+def default_domains(program: Program, signals: Sequence[Signal], atom_reads) -> dict:
+    """Signal key -> ``Assumed`` or ``Refused`` for each of ``signals`` (free AI/GI inputs).
+
+    ``atom_reads``: indices of the signals properties read (None: any of them).
+    """
+    if not signals:
+        return {}
+    widths = {s.name.upper(): s.width for s in program.options.get("configured_signals", ())
+              if getattr(s, "width", None)}
+    reads = ReadCollector(program)
+    reads.collect()
+    outcomes = {}
+    for signal in signals:
+        outcomes[signal.key] = _default(signal, widths.get(signal.key), reads, atom_reads)
+    return outcomes
+
+
+def _default(signal: Signal, width: Optional[int], reads: "ReadCollector",
+             atom_reads) -> Outcome:
+    if signal.kind == "GI" and width is not None and width <= FULL_RANGE_BITS:
+        return Assumed(signal, tuple(float(v) for v in range(2 ** width)),
+                       f"{width}-bit group input from the I/O configuration")
+    if atom_reads is None:
+        return Refused("a property's atom reads signal data: any input's value may be observed")
+    if signal.index in atom_reads:
+        return Refused(f"a property's atom reads {signal.name}: its value is observed, not "
+                       "only compared")
+    if reads.computed_alias is not None:
+        return Refused(f"AliasIO at {_where(reads.computed_alias)} names its signal at run time, "
+                       f"so not every read of {signal.name} is known")
+    other = reads.other_use.get(signal.index)
+    if other is not None:
+        return Refused(f"{other}; a default needs every read to be compared with number literals "
+                       "(= <> < <= > >=, TEST ... CASE, WaitGI/WaitAI)")
+    numbers = sorted(reads.numbers.get(signal.index, set()))
+    if signal.kind == "GI":
+        top = 2 ** (width or MAX_GROUP_BITS) - 1
+        return Assumed(signal, group_points(numbers, top),
+                       "group input only compared with " + _listing(numbers))
+    return Assumed(signal, analog_points(numbers), "analog input only compared with "
+                   + _listing(numbers))
+
+
+def group_points(numbers: Sequence[float], top: int) -> tuple:
+    """Non-negative integers up to ``top``, one in each class of the comparisons with ``numbers``.
+
+    Between two neighbouring numbers (and beyond the last) the smallest integer
+    above the lower one represents its class; 0 the class below them all.
+    """
+    points = {0}
+    for c in numbers:
+        low, high = math.floor(c), math.ceil(c)
+        points.update({low - 1, low, high, high + 1} if low == high else {low, high})
+    return tuple(float(p) for p in sorted(points) if 0 <= p <= top)
+
+
+def analog_points(numbers: Sequence[float]) -> tuple:
+    """Each number, a num strictly between each two neighbours, one beyond each end."""
+    if not numbers:
+        return (0.0,)
+    points = set(numbers)
+    points.update({to_num(numbers[0] - 1), to_num(numbers[-1] + 1)})
+    for low, high in zip(numbers, numbers[1:]):
+        middle = to_num((low + high) / 2)
+        if low < middle < high:        # neighbouring nums have no num between them
+            points.add(middle)
+    return tuple(sorted(points))
+
+
+def _listing(numbers: Sequence[float]) -> str:
+    return ", ".join(str(int(n)) if float(n).is_integer() else str(n) for n in numbers) \
+        if numbers else "nothing"
+
+
+def _where(span: Optional[ast.Span]) -> str:
+    return f"{span.file}:{span.line}:{span.column}" if span is not None else "an unknown place"
+
+
+class ReadCollector:
+    """Every read of every AI/GI signal in the program's code, classified."""
+
+    def __init__(self, program: Program):
+        self.program = program
+        self.numbers: dict[int, set] = {}         # signal index -> numbers it is compared with
+        self.other_use: dict[int, str] = {}       # signal index -> its first other use
+        self.aliases: dict[str, set] = {}         # signal variable key -> signal indices
+        self.computed_alias: Optional[ast.Span] = None
+
+    def collect(self) -> None:
+        routines = [r for r in self.program.routines if r.ast is not None]
+        for routine in routines:                  # AliasIO first: reads may come before
+            for node, _ in ast.walk(routine.ast):
+                if isinstance(node, ast.ProcedureCall) and node.name.key == "ALIASIO":
+                    self._alias(node, routine.scope)
+        for routine in routines:
+            for node, parents in ast.walk(routine.ast):
+                if isinstance(node, ast.NameRef) and not _inside_alias(parents):
+                    for index in self._signals_named(node, routine.scope):
+                        self._classify(index, node, parents, routine.scope)
+
+    def _alias(self, call: ast.ProcedureCall, scope) -> None:
+        values = [arg.value for arg in call.args]
+        if len(values) < 2 or not isinstance(values[1], ast.NameRef):
+            return
+        source = values[0]
+        index = None
+        if isinstance(source, ast.StringLiteral):
+            signal = self.program.signal(source.value.upper())
+            index = signal.index if signal is not None else None
+        elif isinstance(source, ast.NameRef):
+            symbol = scope.lookup(source.name.key)
+            index = symbol.slot if symbol is not None and symbol.kind == SIGNAL else None
+        if index is None and self.computed_alias is None:
+            self.computed_alias = call.span
+        if index is not None:
+            self.aliases.setdefault(values[1].name.key, set()).add(index)
+
+    def _signals_named(self, ref: ast.NameRef, scope) -> set:
+        symbol = scope.lookup(ref.name.key)
+        if symbol is None:
+            return set()
+        if symbol.kind == SIGNAL:
+            return {symbol.slot}
+        if getattr(symbol.type, "signal_kind", "") in ("AI", "GI"):
+            return self.aliases.get(ref.name.key, set())
+        return set()
+
+    def _classify(self, index: int, ref: ast.NameRef, parents: tuple, scope) -> None:
+        if index in self.other_use:
+            return
+        found = compared_numbers(ref, parents, scope)
+        if isinstance(found, str):
+            self.other_use[index] = f"'{ref.name.text}' at {_where(ref.span)} is {found}"
+        else:
+            self.numbers.setdefault(index, set()).update(found)
+
+
+def compared_numbers(ref: ast.NameRef, parents: tuple, scope) -> Union[set, str]:
+    """The numbers a read is compared with, or how else it is used."""
+    node = ref
+    if len(parents) >= 2 and isinstance(parents[-1], ast.Argument) \
+            and isinstance(parents[-2], ast.FunctionCall) \
+            and parents[-2].name.key in READERS and parents[-2].args[0] is parents[-1]:
+        node, parents = parents[-2], parents[:-2]
+    parent = parents[-1] if parents else None
+    if isinstance(parent, ast.Binary) and parent.op in COMPARISONS:
+        other = parent.right if parent.left is node else parent.left
+        value = number_value(other, scope)
+        if value is None:
+            return f"compared ('{parent.op}') with something other than a number literal"
+        return {value}
+    if isinstance(parent, ast.Argument) and len(parents) >= 2 \
+            and isinstance(parents[-2], ast.ProcedureCall) and parents[-2].name.key in WAITS:
+        return _waited_for(parents[-2], parent, scope)
+    if isinstance(parent, ast.Test) and parent.subject is node:
+        values = [number_value(v, scope) for case in parent.cases for v in case.values]
+        if any(v is None for v in values):
+            return "tested against a CASE value that is not a number literal"
+        return set(values)
+    return _use_of(parent)
+
+
+def _waited_for(call: ast.ProcedureCall, argument: ast.Argument, scope) -> Union[set, str]:
+    """``WaitGI gi, 3`` (\\NOTEQ, \\LT, \\GT): a comparison of the signal with the value."""
+    positional = [arg for arg in call.args if arg.kind == ast.REQUIRED and arg.name is None]
+    if len(positional) == 2 and positional[0] is argument:
+        value = number_value(positional[1].value, scope)
+        whole = value is not None and value == int(value) and abs(value) < 2 ** 24
+        if value is not None and (whole or call.name.key == "WAITAI"):   # GI: num = dnum
+            return {value}
+        return f"waited for ({call.name.text}) with a value that is not a small whole number"
+    return f"passed to {call.name.text} other than as its signal"
+
+
+def number_value(expr, scope) -> Optional[float]:
+    """The num a literal (or CONST num) denotes, as the program computes with it."""
+    sign = 1
+    if isinstance(expr, ast.Unary) and expr.op in ("-", "+"):
+        sign, expr = (-1 if expr.op == "-" else 1), expr.operand
+    if isinstance(expr, ast.NumLiteral):
+        try:
+            return sign * to_num(expr.value)
+        except Exception:           # beyond the num range: not a comparison we can place
+            return None
+    if isinstance(expr, ast.NameRef):
+        symbol = scope.lookup(expr.name.key)
+        if symbol is not None and symbol.kind == CONSTANT and type(symbol.value) is float:
+            return sign * symbol.value
+    return None
+
+
+def _use_of(parent) -> str:
+    if isinstance(parent, ast.Assignment):
+        return "assigned"
+    if isinstance(parent, ast.Argument):
+        return "passed as an argument"
+    if isinstance(parent, ast.Binary):
+        return f"an operand of '{parent.op}'"
+    if isinstance(parent, ast.Index):
+        return "used as an array index"
+    if isinstance(parent, ast.Test):
+        return "a CASE value"
+    return f"used in a {type(parent).__name__} (not a comparison with a number)"
+
+
+def _inside_alias(parents: tuple) -> bool:
+    return any(isinstance(p, ast.ProcedureCall) and p.name.key == "ALIASIO" for p in parents)

@@ -1,0 +1,824 @@
+"""Names the program uses and nobody declares, with types inferred from their uses.
+
+Each use of an undeclared name is evidence: passed as MoveL's ``ToPoint``
+it is a ``robtarget``; as ``\\Tool:=`` a ``tooldata``; assigned ``3`` a
+``num``; tested by ``IF`` a ``bool``; compared with a string a ``string``.
+A called procedure gets parameters typed from its arguments, a function the
+type its call's context expects.  The walk repeats until nothing new is
+learnt, since one inferred name types the next (``x := y;`` with ``x``
+known later).
+
+Example::
+
+    >>> from rapidmc.syntax import parse_text
+    >>> modules = parse_text("MODULE m PROC main() MoveL p1, v100, fine, tGrip; "
+    ...                      "IF ok THEN n := 3; ENDIF ENDPROC ENDMODULE", "m.mod")
+    >>> [(m.name.text, m.type.name) for m in missing_names(modules)]
+    [('p1', 'robtarget'), ('tGrip', 'tooldata'), ('ok', 'bool'), ('n', 'num')]
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import Optional
+
+from ... import ast
+from ...semantics.library import registry
+from ...semantics.configured_signals import COMPARISONS
+from .names import BOOL, NUM, STRING, Declarations, TypeInfo
+
+DATA, PROCEDURE, FUNCTION, TRAP, TYPE = "data", "procedure", "function", "trap", "type"
+ARITHMETIC = ("+", "-", "*", "/")
+LOGICAL = ("AND", "OR", "XOR")
+MAX_PASSES = 6
+
+
+@dataclass
+class Parameter:
+    """A parameter of a missing routine, typed from the arguments of its calls."""
+
+    name: str
+    type: Optional[TypeInfo]
+    optional: bool = False
+    switch: bool = False
+
+
+@dataclass
+class Missing:
+    """One undeclared name: how it is used, and what that says about it."""
+
+    name: ast.Name
+    kind: str
+    first_use: ast.Span
+    use: str                                  # the first use, in words
+    uses: int = 0
+    type: Optional[TypeInfo] = None
+    evidence: str = ""                        # where the type comes from
+    storage: str = "PERS"
+    dims: list[int] = field(default_factory=list)
+    components: list[str] = field(default_factory=list)
+    parameters: list[Parameter] = field(default_factory=list)
+    fields: dict = field(default_factory=dict)          # a missing RECORD: component -> type
+    sizes_array: bool = False                           # used as an array dimension
+    indexes_array: bool = False                         # used as an array index
+    assigned: bool = False
+    array_argument: bool = False                        # dims from an array parameter
+    alias_of: Optional[str] = None                      # a missing type declared with a value
+    alternative: Optional[tuple] = None                 # (number, count) among compared names
+    exact_dims: bool = False                            # dims from an aggregate assigned whole
+
+    def learn(self, info: Optional[TypeInfo], evidence: str) -> bool:
+        """Take ``info`` as the type if none is known yet; whether anything changed."""
+        if info is None or self.type is not None or info.name.lower() in ("anytype", "anynum",
+                                                                          "switch"):
+            return False
+        self.type = TypeInfo(info.name, 0)
+        self.evidence = evidence
+        return True
+
+
+class Inference:
+    """One walk over the program; ``missing`` accumulates across walks."""
+
+    def __init__(self, modules: tuple[ast.Module, ...], signals=frozenset()):
+        self.names = Declarations(modules, signals)
+        self.modules = modules
+        self.missing: dict[str, Missing] = {}
+        self.changed = False
+        self.counting = True
+        self.local: dict[str, TypeInfo] = {}
+        self.routine: Optional[ast.Routine] = None
+        self.in_declaration = False           # declaration values and sizes are constant
+        # a missing function whose value is an argument of a missing routine: that
+        # routine and the parameter's key (both untyped until one of them is known)
+        self.feeds: dict[str, tuple[Missing, str]] = {}
+        self.invented: set[str] = set()       # keys of record types named by the stubs
+        # a missing function whose value is assigned to an untyped component of a missing
+        # record: that record and the component's name
+        self.component_feeds: dict[str, tuple[Missing, str]] = {}
+
+    # ------------------------------------------------------------ bookkeeping
+    def note(self, name: ast.Name, kind: str, use: str) -> Missing:
+        found = self.missing.get(name.key)
+        if found is None:
+            found = Missing(name, kind, name.span, use)
+            self.missing[name.key] = found
+            self.changed = True
+        if self.counting:
+            found.uses += 1
+        if self.in_declaration and kind == DATA:
+            found.storage = "CONST"
+        return found
+
+    def expect(self, expr, info: Optional[TypeInfo], evidence: str) -> None:
+        """``expr`` should have type ``info``: an undeclared name in it learns so."""
+        if isinstance(expr, ast.NameRef) and self.undeclared_data(expr.name):
+            missing = self.note(expr.name, DATA, evidence)
+            self.changed |= missing.learn(info, evidence)
+            if info is not None and info.rank and not missing.dims and missing.type is not None \
+                    and missing.type.key == info.key:     # an array argument (``tasks{*}``)
+                missing.dims = [1] * info.rank
+                missing.array_argument = True
+                self.changed = True
+        elif isinstance(expr, ast.Index) and isinstance(expr.base, ast.NameRef) \
+                and self.undeclared_data(expr.base.name):
+            missing = self.note(expr.base.name, DATA, evidence)
+            self._array_use(missing, expr)
+            self.changed |= missing.learn(info, evidence)
+        elif isinstance(expr, ast.FunctionCall) and self.undeclared_routine(expr.name, FUNCTION):
+            missing = self.note(expr.name, FUNCTION, evidence)
+            self.changed |= missing.learn(info, f"its value: {evidence}")
+        elif isinstance(expr, ast.Binary) and expr.op in ARITHMETIC and info is not None:
+            for side in (expr.left, expr.right):
+                self.expect(side, info if info.name in ("num", "dnum", "string") else None,
+                            evidence)
+        elif isinstance(expr, ast.Unary) and expr.op in ("-", "+"):
+            self.expect(expr.operand, info, evidence)
+        elif isinstance(expr, ast.Component):
+            self._field(expr, info)
+        elif isinstance(expr, ast.Aggregate) and info is not None and not info.rank:
+            self._aggregate_items(expr, info, evidence)
+
+    def _aggregate_items(self, expr: ast.Aggregate, info: TypeInfo, evidence: str) -> None:
+        """An aggregate given where a known record is expected: each part has the type of
+        its component (``position.trans := [x, -y, zh]``: ``x`` is a num of a pos)."""
+        components = self.names.components(info.name)
+        if components is None or len(components) != len(expr.items):
+            return
+        for item, (name, type_name) in zip(expr.items, components):
+            self.expect(item, TypeInfo(type_name), f"component {name} of {evidence}")
+
+    def _field(self, expr: ast.Component, info: Optional[TypeInfo]) -> None:
+        """A component of data whose type is missing: the RECORD gets that component."""
+        if isinstance(expr.base, ast.Component):
+            self._nested_record(expr.base)
+        base = self.type_of(expr.base)
+        record = self.missing.get(base.key) if base is not None else None
+        if record is None or record.kind != TYPE:
+            return
+        name = expr.name.text
+        if name not in record.fields or info is not None and self._replaces(record.fields[name],
+                                                                            info):
+            record.fields[name] = info
+            self.changed = True
+
+    def _replaces(self, known: Optional[TypeInfo], info: TypeInfo) -> bool:
+        """A component's type ``info`` from a use takes the place of none, or of a record
+        type the stubs invented only because the component had components of its own
+        (``ee.tool.tframe.rot := ...`` and then ``tGrip := ee.tool``: a tooldata)."""
+        return known is None or known.key in self.invented and info.key not in self.invented
+
+    def _nested_record(self, expr: ast.Component) -> None:
+        """``msgs.state.joints``: when ``msgs`` has a missing RECORD type and its component
+        ``state`` has no known type, ``state`` is itself a record, of a type named after
+        both (``<record>_<component>``, said so in its comment)."""
+        if isinstance(expr.base, ast.Component):
+            self._nested_record(expr.base)
+        owner = self.type_of(expr.base)
+        record = self.missing.get(owner.key) if owner is not None else None
+        if record is None or record.kind != TYPE or record.fields.get(expr.name.text):
+            return
+        invented = self._fresh_type_name(f"{record.name.text}_{expr.name.text}",
+                                         expr.name.span)
+        self.note(invented, TYPE, f"type of component {expr.name.text} of "
+                  f"{record.name.text}, which has components itself; name invented")
+        self.invented.add(invented.key)
+        record.fields[expr.name.text] = TypeInfo(invented.text)
+        self.changed = True
+
+    def _fresh_type_name(self, text: str, span) -> ast.Name:
+        """``text`` cut to RAPID's 32 characters, numbered if that is taken."""
+        name, number = ast.Name.of(text[:32], span), 1
+        while self.names.is_type(name.key) or name.key in self.missing:
+            number += 1
+            suffix = f"_{number}"
+            name = ast.Name.of(text[:32 - len(suffix)] + suffix, span)
+        return name
+
+    def _array_use(self, missing: Missing, expr: ast.Index) -> None:
+        while len(missing.dims) < len(expr.indices):
+            missing.dims.append(1)
+        for number, index in enumerate(expr.indices):
+            if isinstance(index, ast.NumLiteral) and int(index.value) > missing.dims[number]:
+                missing.dims[number] = int(index.value)
+
+    def undeclared_data(self, name: ast.Name) -> bool:
+        return not self.names.is_data(name.key, self.local) and name.key not in self.names.routines
+
+    def undeclared_routine(self, name: ast.Name, use: str) -> bool:
+        """Neither a routine of that kind nor of the other (a misuse is not a missing name)."""
+        return not (self.names.is_routine(name.key, FUNCTION)
+                    or self.names.is_routine(name.key, PROCEDURE)) and name.key not in self.local
+
+    # ------------------------------------------------------------------ types
+    def type_of(self, expr) -> Optional[TypeInfo]:
+        """The static type of ``expr`` as far as declarations and inferences tell."""
+        if isinstance(expr, ast.NumLiteral):
+            return NUM
+        if isinstance(expr, ast.StringLiteral):
+            return STRING
+        if isinstance(expr, ast.BoolLiteral):
+            return BOOL
+        if isinstance(expr, ast.NameRef):
+            known = self.names.data_type(expr.name.key, self.local)
+            if known is None and expr.name.key in self.missing:
+                known = self.missing[expr.name.key].type
+            return known
+        if isinstance(expr, ast.Index):
+            base = self.type_of(expr.base)
+            return base.element() if base is not None else None
+        if isinstance(expr, ast.Component):
+            base = self.type_of(expr.base)
+            if base is not None and base.key in self.missing:
+                return self.missing[base.key].fields.get(expr.name.text)
+            return self.names.component_type(base.name, expr.name.text) if base else None
+        if isinstance(expr, ast.FunctionCall):
+            return self._call_type(expr)
+        if isinstance(expr, ast.Unary):
+            return BOOL if expr.op == "NOT" else self.type_of(expr.operand)
+        if isinstance(expr, ast.Binary):
+            if expr.op in COMPARISONS or expr.op in LOGICAL:
+                return BOOL
+            if expr.op in ("DIV", "MOD"):
+                return NUM
+            return self.type_of(expr.left) or self.type_of(expr.right)
+        return None
+
+    def _call_type(self, call: ast.FunctionCall) -> Optional[TypeInfo]:
+        routine = self.names.routines.get(call.name.key)
+        if routine is not None and routine.return_type is not None:
+            return TypeInfo(routine.return_type.name.text)
+        entry = registry.lookup_function(call.name.key)
+        if entry is not None and entry.signature.return_type:
+            return TypeInfo(entry.signature.return_type)
+        missing = self.missing.get(call.name.key)
+        return missing.type if missing is not None else None
+
+    # -------------------------------------------------------------- the walk
+    def walk(self) -> None:
+        for module in self.modules:
+            for definition in module.types:
+                self._record_components(definition)
+            for decl in module.data:
+                self.local = {}
+                self._declaration(decl)
+            for routine in module.routines:
+                self._routine(routine)
+
+    def _record_components(self, definition) -> None:
+        """A RECORD of the program whose component has a type no module declares."""
+        for component in getattr(definition, "components", ()):
+            if not self.names.is_type(component.type.name.key):
+                self.note(component.type.name, TYPE,
+                          f"type of component {component.name.text} of {definition.name.text}")
+
+    def _declaration(self, decl: ast.DataDeclaration) -> None:
+        if not self.names.is_type(decl.type.name.key):
+            self.note(decl.type.name, TYPE, f"type of {decl.name.text}")
+        self.in_declaration = True
+        self._declaration_values(decl)
+        self.in_declaration = False
+
+    def _declaration_values(self, decl: ast.DataDeclaration) -> None:
+        for dim in decl.dims:
+            if isinstance(dim, ast.NameRef) and self.undeclared_data(dim.name):
+                self.note(dim.name, DATA, f"array size of {decl.name.text}").sizes_array = True
+            self.expect(dim, NUM, f"array size of {decl.name.text}")
+            self.expression(dim)
+        if decl.init is not None:
+            self._type_from_value(decl)
+            self.expect(decl.init, TypeInfo(decl.type.name.text), f"value of {decl.name.text}")
+            self.expression(decl.init)
+
+    def _type_from_value(self, decl: ast.DataDeclaration) -> None:
+        """A missing type whose data is declared with a value of atomic parts: with an
+        aggregate (``PERS clampdata c := ["seq 1", 2, TRUE]``) a RECORD of components
+        ``c1``, ``c2``, ... of the parts' types; with a single value (``CONST gunnum g :=
+        2``) an ALIAS of its type. Only while no use names a component."""
+        record = self.missing.get(decl.type.name.key)
+        if record is None or record.kind != TYPE or record.fields or record.alias_of \
+                or decl.dims:
+            return
+        if isinstance(decl.init, ast.Aggregate):
+            fields = self._shaped_fields(record.name, decl.init)
+            if fields:
+                record.fields = fields
+                self.changed = True
+        else:
+            value = self.type_of(decl.init)
+            if value is not None and value.key in ATOMIC:
+                record.alias_of = value.name
+                self.changed = True
+
+    def _shaped_fields(self, owner: ast.Name, aggregate: ast.Aggregate) -> Optional[dict]:
+        """Components ``c1``, ``c2``, ... for the parts of ``aggregate``, or None when a part
+        is neither atomic nor an aggregate itself. A nested aggregate (``trackdata`` of
+        ArcWare: ``[0,TRUE,50,[0,0,...],[0,...]]``) is a record of its own, named
+        ``<owner>_c<n>`` and shaped the same way."""
+        parts = []
+        for item in aggregate.items:
+            part = self.type_of(item)
+            if part is not None and part.key in ATOMIC:
+                parts.append(part)
+            elif isinstance(item, ast.Aggregate) and item.items:
+                parts.append(item)
+            else:
+                return None
+        if not parts:
+            return None
+        fields = {}
+        for number, part in enumerate(parts, 1):
+            if isinstance(part, ast.Aggregate):
+                nested = self._fresh_type_name(f"{owner.text}_c{number}", owner.span)
+                inner = self._shaped_fields(nested, part)
+                if inner is None:
+                    return None
+                self.note(nested, TYPE, f"type of component c{number} of {owner.text}, "
+                          "shaped by a declared value; name invented").fields = inner
+                self.invented.add(nested.key)
+                part = TypeInfo(nested.text)
+            fields[f"c{number}"] = part
+        return fields
+
+    def _routine(self, routine: ast.Routine) -> None:
+        self.routine = routine
+        self.local = {}
+        for param in routine.parameters:
+            self.local[param.name.key] = TypeInfo(param.type.name.text, param.array_rank)
+            if not self.names.is_type(param.type.name.key):
+                self.note(param.type.name, TYPE, f"type of parameter {param.name.text}")
+        for decl in routine.data:
+            self.local[decl.name.key] = TypeInfo(decl.type.name.text, len(decl.dims))
+            self._declaration(decl)
+        if routine.return_type is not None and not self.names.is_type(routine.return_type.name.key):
+            self.note(routine.return_type.name, TYPE, f"return type of {routine.name.text}")
+        sections = [routine.body, routine.backward or (), routine.undo or (),
+                    routine.error.body if routine.error else ()]
+        for statements in sections:
+            self.statements(statements)
+
+    def statements(self, statements) -> None:
+        for statement in statements:
+            method = getattr(self, "_" + type(statement).__name__, None)
+            if method is not None:
+                method(statement)
+
+    # ------------------------------------------------------------ statements
+    def _Assignment(self, statement: ast.Assignment) -> None:
+        target = self.type_of(statement.target)
+        value = self.type_of(statement.value)
+        root = statement.target
+        while isinstance(root, (ast.Index, ast.Component)):
+            root = root.base
+        self.expect(statement.target, value, f"assigned a {value.name}" if value else "assigned")
+        self.expression(statement.target)
+        if isinstance(root, ast.NameRef) and root.name.key in self.missing:
+            self.missing[root.name.key].assigned = True
+        self.expect(statement.value, target, f"assigned to {target.name} data" if target else "")
+        self.expression(statement.value)
+        if target is None and value is None and isinstance(statement.target, ast.NameRef) \
+                and isinstance(statement.value, ast.Aggregate):
+            self._array_of_records(statement.target.name, statement.value)
+        if target is None and value is None and isinstance(statement.value, ast.FunctionCall) \
+                and isinstance(statement.target, ast.Component):
+            owner = self.type_of(statement.target.base)
+            record = self.missing.get(owner.key) if owner is not None else None
+            if record is not None and record.kind == TYPE:
+                self.component_feeds.setdefault(statement.value.name.key,
+                                                (record, statement.target.name.text))
+
+    def _array_of_records(self, name: ast.Name, aggregate: ast.Aggregate) -> None:
+        """Missing data assigned an aggregate of aggregates of one shape
+        (``taskList := [["T_ROB1"],[""],["T_POS1"]]``) is an array of the one known record of
+        that shape (``tasks``), as long as the shape fits exactly one record type."""
+        missing = self.missing.get(name.key)
+        if missing is None or missing.kind != DATA or missing.type is not None:
+            return
+        shapes = set()
+        for item in aggregate.items:
+            if not isinstance(item, ast.Aggregate):
+                return
+            parts = [self.type_of(part) for part in item.items]
+            if not parts or any(p is None or p.key not in ATOMIC for p in parts):
+                return
+            shapes.add(tuple(p.key for p in parts))
+        if len(shapes) != 1:
+            return
+        fitting = self.names.records_shaped(list(shapes.pop()))
+        if len(fitting) == 1 and missing.learn(TypeInfo(fitting[0]),
+                                               f"assigned an array of {fitting[0]} aggregates"):
+            missing.dims = [len(aggregate.items)]
+            missing.exact_dims = True
+            self.changed = True
+
+    def _ProcedureCall(self, statement: ast.ProcedureCall) -> None:
+        self.call(statement.name, statement.args, PROCEDURE, None)
+
+    def _LateBindingCall(self, statement: ast.LateBindingCall) -> None:
+        self.expect(statement.name_expr, STRING, "procedure name of a late-bound call")
+        self.expression(statement.name_expr)
+        for arg in statement.args:
+            if arg.value is not None:
+                self.expression(arg.value)
+
+    def _Return(self, statement: ast.Return) -> None:
+        if statement.value is not None:
+            routine = self.routine
+            wanted = TypeInfo(routine.return_type.name.text) if routine.return_type else None
+            self.expect(statement.value, wanted, f"returned by {routine.name.text}")
+            self.expression(statement.value)
+
+    def _Raise(self, statement: ast.Raise) -> None:
+        if statement.value is not None:
+            self.expect(statement.value, TypeInfo("errnum"), "raised as an error number")
+            self.expression(statement.value)
+
+    def _Connect(self, statement: ast.Connect) -> None:
+        self.expect(statement.target, TypeInfo("intnum"), "connected to a trap")
+        self.expression(statement.target)
+        if statement.trap.key not in self.names.routines:
+            self.note(statement.trap, TRAP, "trap of a CONNECT")
+
+    def _If(self, statement: ast.If) -> None:
+        for branch in statement.branches:
+            self.condition(branch.condition, "IF")
+            self.statements(branch.body)
+        self.statements(statement.else_body or ())
+        compared = [_compared_with(branch.condition) for branch in statement.branches]
+        subjects = {subject for subject, _ in filter(None, compared)}
+        if len(subjects) == 1 and all(compared):
+            self._alternatives([name for _, name in compared])
+
+    def _alternatives(self, names: list) -> None:
+        """Missing names one subject is compared with in turn (``IF axisNo = axisX ...
+        ELSEIF axisNo = axisY``, ``CASE PICK_TYPE: ... CASE PLACE_TYPE:``) stand for
+        different values: they get the numbers 1, 2, ... in order, not one neutral 0 that
+        would leave every branch after the first unreachable."""
+        keys = dict.fromkeys(name.key for name in names
+                             if isinstance(name, ast.Name) and self.undeclared_data(name))
+        missing = [self.missing[key] for key in keys
+                   if key in self.missing and self.missing[key].kind == DATA]
+        if len(missing) < 2:
+            return
+        for number, item in enumerate(missing, 1):
+            if item.alternative is None:
+                item.alternative = (number, len(missing))
+                self.changed = True
+
+    def _CompactIf(self, statement: ast.CompactIf) -> None:
+        self.condition(statement.condition, "IF")
+        self.statements((statement.statement,))
+
+    def _While(self, statement: ast.While) -> None:
+        self.condition(statement.condition, "WHILE")
+        self.statements(statement.body)
+
+    def _For(self, statement: ast.For) -> None:
+        for bound in (statement.start, statement.stop, statement.step):
+            if bound is not None:
+                self.expect(bound, NUM, "FOR bound")
+                self.expression(bound)
+        saved = dict(self.local)
+        self.local[statement.variable.key] = NUM
+        self.statements(statement.body)
+        self.local = saved
+
+    def _Test(self, statement: ast.Test) -> None:
+        values = [v for case in statement.cases for v in case.values]
+        subject = self.type_of(statement.subject) or next(
+            (t for t in map(self.type_of, values) if t is not None), None)
+        self.expect(statement.subject, subject, "TEST subject")
+        self.expression(statement.subject)
+        for case in statement.cases:
+            for value in case.values:
+                self.expect(value, subject, "CASE value")
+                self.expression(value)
+            self.statements(case.body)
+        self.statements(statement.default or ())
+        self._alternatives([value.name for case in statement.cases for value in case.values
+                            if isinstance(value, ast.NameRef)])
+
+    def condition(self, expr, keyword: str) -> None:
+        self.expect(expr, BOOL, f"{keyword} condition")
+        self.expression(expr)
+
+    # ----------------------------------------------------------- expressions
+    def expression(self, expr) -> None:
+        """Note every undeclared name in ``expr`` and what its place says about it."""
+        if isinstance(expr, ast.NameRef):
+            if self.undeclared_data(expr.name):
+                self.note(expr.name, DATA, "read")
+        elif isinstance(expr, ast.Index):
+            if isinstance(expr.base, ast.NameRef) and self.undeclared_data(expr.base.name):
+                self._array_use(self.note(expr.base.name, DATA, "indexed"), expr)
+            else:
+                self.expression(expr.base)
+            self._indices(expr.indices)
+        elif isinstance(expr, ast.Component):
+            self._component(expr)
+        elif isinstance(expr, ast.FunctionCall):
+            self.call(expr.name, expr.args, FUNCTION, expr)
+        elif isinstance(expr, ast.Unary):
+            if expr.op == "NOT":
+                self.expect(expr.operand, BOOL, "operand of NOT")
+            self.expression(expr.operand)
+        elif isinstance(expr, ast.Binary):
+            self._binary(expr)
+        elif isinstance(expr, ast.Aggregate):
+            for item in expr.items:
+                self.expression(item)
+
+    def _indices(self, indices) -> None:
+        """Array indices are numbers; a missing name used as one starts at the first element."""
+        for index in indices:
+            self.expect(index, NUM, "array index")
+            found = self.missing.get(index.name.key) if isinstance(index, ast.NameRef) else None
+            if found is not None and found.kind == DATA:
+                found.indexes_array = True
+            self.expression(index)
+
+    def _component(self, expr: ast.Component) -> None:
+        root = expr.base
+        indexed = isinstance(root, ast.Index) and isinstance(root.base, ast.NameRef) \
+            and self.undeclared_data(root.base.name)
+        if indexed or isinstance(root, ast.NameRef) and self.undeclared_data(root.name):
+            name = root.base.name if indexed else root.name
+            missing = self.note(name, DATA, f"component .{expr.name.text} read")
+            if indexed:                  # ``traj{1}.pos``: an array of records
+                self._array_use(missing, root)
+                self._indices(root.indices)
+            if expr.name.text not in missing.components:
+                missing.components.append(expr.name.text)
+                self.changed = True
+            self._field(expr, None)
+        else:
+            self._field(expr, None)
+            self.expression(root)
+
+    def _binary(self, expr: ast.Binary) -> None:
+        if expr.op in LOGICAL:
+            self.expect(expr.left, BOOL, f"operand of {expr.op}")
+            self.expect(expr.right, BOOL, f"operand of {expr.op}")
+        elif expr.op in COMPARISONS or expr.op in ARITHMETIC:
+            left, right = self.type_of(expr.left), self.type_of(expr.right)
+            what = "compared with" if expr.op in COMPARISONS else "combined with"
+            if right is not None:
+                self.expect(expr.left, right, f"{what} {right.name}")
+            if left is not None:
+                self.expect(expr.right, left, f"{what} {left.name}")
+        elif expr.op in ("DIV", "MOD"):
+            self.expect(expr.left, NUM, f"operand of {expr.op}")
+            self.expect(expr.right, NUM, f"operand of {expr.op}")
+        self.expression(expr.left)
+        self.expression(expr.right)
+
+    # ----------------------------------------------------------------- calls
+    def call(self, name: ast.Name, args, use: str, expr) -> None:
+        routine = self.names.routines.get(name.key)
+        entry = None if routine is not None else (
+            registry.lookup_function(name.key) if use == FUNCTION
+            else registry.lookup_procedure(name.key))
+        if routine is not None:
+            self._arguments(name, args, user_parameters(routine))
+        elif entry is not None:
+            self._arguments(name, args, predefined_parameters(entry))
+        elif self.undeclared_routine(name, use):
+            missing = self.note(name, use, "called")
+            self._learn_parameters(missing, args)
+        for arg in args:
+            if arg.value is not None:
+                self.expression(arg.value)
+
+    def _arguments(self, name: ast.Name, args, parameters) -> None:
+        """Match arguments to ``(key, name, type, optional)`` parameters; expect their types."""
+        required = [p for p in parameters if not p[3]]
+        position = 0
+        for arg in args:
+            if arg.value is None:
+                continue
+            if arg.kind == ast.REQUIRED and arg.name is None:
+                spec = required[position] if position < len(required) else None
+                position += 1
+            else:
+                spec = next((p for p in parameters if arg.name and p[0] == arg.name.key), None)
+            if spec is not None:
+                self.expect(arg.value, spec[2], f"{name.text} argument {spec[1]}")
+                if spec[0] == "PROCNAME":
+                    self._named_procedure(name, arg.value)
+
+    def _named_procedure(self, caller: ast.Name, value) -> None:
+        """A procedure named by a string literal (``MoveJSync p, v, z, t, "StartCycle"``):
+        the stubs declare it, without parameters, when no module does."""
+        if not isinstance(value, ast.StringLiteral) or not IDENTIFIER.fullmatch(value.value):
+            return
+        name = ast.Name.of(value.value, value.span)
+        if self.undeclared_routine(name, PROCEDURE) and name.key not in self.names.data:
+            self.note(name, PROCEDURE, f"named by a string given to {caller.text}")
+
+    def _learn_parameters(self, missing: Missing, args) -> None:
+        known = {p.name.upper(): p for p in missing.parameters}
+        position = 0
+        for arg in args:
+            if arg.kind == ast.REQUIRED and arg.name is None:
+                position += 1
+                key, text = f"P{position}", f"p{position}"
+            elif arg.name is not None:
+                key, text = arg.name.key, arg.name.text
+            else:
+                continue
+            info = self.type_of(arg.value) if arg.value is not None else None
+            if info is None and isinstance(arg.value, ast.Aggregate):
+                info = _text_array(self.type_of(item) for item in arg.value.items)
+            if info is None and isinstance(arg.value, ast.FunctionCall) \
+                    and arg.value.name.key in self.missing:
+                self.feeds.setdefault(arg.value.name.key, (missing, key))
+            if info is None and arg.value is not None and key in CONVENTIONAL_PARAMETERS:
+                info = TypeInfo(CONVENTIONAL_PARAMETERS[key])
+                self.expect(arg.value, info, f"{missing.name.text} argument \\{text}, named "
+                            "like the motion instructions' parameter")
+            parameter = known.get(key)
+            if parameter is None:
+                parameter = Parameter(text, info, optional=arg.kind != ast.REQUIRED,
+                                      switch=arg.kind == ast.SWITCH)
+                missing.parameters.append(parameter)
+                known[key] = parameter
+                self.changed = True
+            elif parameter.type is None and info is not None:
+                parameter.type = info.element() if info.rank == 0 else info
+                self.changed = True
+
+
+def _text_array(item_types) -> Optional[TypeInfo]:
+    """``["SELECT", "EXIT"]`` as an argument: an array of strings (or of bools); an
+    aggregate of numbers stays unknown (it may as well be a pos or a confdata)."""
+    names = {info.name if info is not None and info.rank == 0 else None for info in item_types}
+    if len(names) == 1 and names <= {"string", "bool"}:
+        return TypeInfo(names.pop(), 1)
+    return None
+
+
+def user_parameters(routine: ast.Routine) -> list[tuple]:
+    return [(p.name.key, p.name.text, TypeInfo(p.type.name.text, p.array_rank), p.optional)
+            for p in routine.parameters]
+
+
+def predefined_parameters(entry) -> list[tuple]:
+    """Parameters of a predefined routine; a group of required alternatives takes one place."""
+    found, groups = [], set()
+    for spec in entry.signature.parameters:
+        optional = spec.optional
+        if not optional and spec.alternative_group is not None:
+            optional = spec.alternative_group in groups
+            groups.add(spec.alternative_group)
+        found.append((spec.key, spec.name, TypeInfo(spec.type_name, spec.array_rank), optional))
+    return found
+
+
+def missing_names(modules: tuple[ast.Module, ...], signals=frozenset()) -> list[Missing]:
+    """Every undeclared name the modules use, in order of first use, types inferred
+    (``signals``: names of configured I/O signals, which are not missing)."""
+    inference = Inference(modules, signals)
+    _settle(inference, count_uses=True)
+    if _types_from_names(inference):        # the last resort; its types reach other names
+        _settle(inference, count_uses=False)
+    _types_of_passed_values(inference)
+    return sorted(inference.missing.values(),
+                  key=lambda m: (m.first_use.file, m.first_use.line, m.first_use.column))
+
+
+def _settle(inference: Inference, count_uses: bool) -> None:
+    """Walk the program until the walk learns nothing new (uses counted on the first)."""
+    for number in range(MAX_PASSES):
+        inference.changed = False
+        inference.counting = count_uses and number == 0
+        inference.walk()
+        if not _types_from_components(inference) and not inference.changed:
+            break
+
+
+def _types_from_components(inference: Inference) -> bool:
+    """A record whose components are read: the first record type that has them all
+    (also for a record type the stubs invented: the known type replaces it)."""
+    changed = _known_for_invented(inference)
+    for missing in list(inference.missing.values()):
+        if missing.type is None and missing.components:
+            candidates = inference.names.records_with(missing.components)
+            shown = ", ".join("." + c for c in missing.components)
+            if candidates:
+                changed |= missing.learn(TypeInfo(candidates[0]), f"has components {shown}")
+            elif missing.kind == DATA:
+                changed |= _invent_record(inference, missing, shown)
+    return changed
+
+
+def _invent_record(inference: Inference, missing: Missing, shown: str) -> bool:
+    """Data (or an array's elements) whose components are read (``traj{1}.pos``,
+    ``cmds.GET_TIME``) and that no known record has all of: a RECORD the stubs declare,
+    named ``<data>_rec``, with the components the uses type (survey rounds 5 and 7)."""
+    whose = "the elements of " if missing.dims else ""
+    invented = inference._fresh_type_name(f"{missing.name.text}_rec", missing.name.span)
+    record = inference.note(invented, TYPE, f"type of {whose}{missing.name.text}, "
+                            f"whose components {shown} no known record has; name invented")
+    record.fields.update({component: None for component in missing.components})
+    inference.invented.add(invented.key)
+    having = "its elements have" if missing.dims else "has"
+    return missing.learn(TypeInfo(invented.text), f"{having} components {shown}")
+
+
+# A RAPID identifier (a procedure named by a string must be one).
+IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,31}")
+
+# Types whose values a declaration can show by a literal alone.
+ATOMIC = ("NUM", "DNUM", "STRING", "BOOL")
+
+
+def _compared_with(condition) -> Optional[tuple]:
+    """(subject name key, other name) of a condition ``subject = name`` (either order)
+    whose sides are both bare names, or None."""
+    if not (isinstance(condition, ast.Binary) and condition.op == "="):
+        return None
+    left, right = condition.left, condition.right
+    if not (isinstance(left, ast.NameRef) and isinstance(right, ast.NameRef)):
+        return None
+    return left.name.key, right.name
+
+# The optional parameters every motion instruction of ABB's and of its options has
+# (``PaintL ... \WObj:=woPanel``): a missing routine called with them takes these types.
+CONVENTIONAL_PARAMETERS = {"WOBJ": "wobjdata", "TOOL": "tooldata", "TLOAD": "loaddata"}
+
+# Name prefixes that say the type in controller programs (wobjTable, tool_gun, loadPart);
+# used only when the uses tell nothing, and said so in the written comment.
+NAME_PREFIXES = (("wobj", "wobjdata"), ("tool", "tooldata"), ("load", "loaddata"))
+
+
+def _types_from_names(inference: Inference) -> bool:
+    changed = False
+    for missing in inference.missing.values():
+        if missing.kind != DATA or missing.type is not None:
+            continue
+        for prefix, type_name in NAME_PREFIXES:
+            if missing.name.text.lower().startswith(prefix):
+                changed |= missing.learn(TypeInfo(type_name),
+                                         f"guessed from the name's prefix '{prefix}'")
+                break
+    return changed
+
+
+def _types_of_passed_values(inference: Inference) -> None:
+    """A missing function whose value only ever goes to an untyped parameter of another
+    missing routine (``MoveRob(GetTarget())``) or to an untyped component of a missing
+    record (``msg.width := GetWidth()``): nothing tells the type, so both take the
+    assumed ``num`` and the function's comment says so."""
+    for key, (routine, parameter_key) in inference.feeds.items():
+        function = inference.missing.get(key)
+        if function is None or function.type is not None:
+            continue
+        parameter = next((p for number, p in enumerate(routine.parameters, 1)
+                          if p.name.upper() == parameter_key or f"P{number}" == parameter_key),
+                         None)
+        if parameter is not None and parameter.type is None:
+            function.learn(NUM, f"passed to {routine.name.text}, whose parameter type is not "
+                           "known either: num assumed")
+    for key, (record, component) in inference.component_feeds.items():
+        function = inference.missing.get(key)
+        if function is not None and function.type is None \
+                and record.fields.get(component) is None:
+            function.learn(NUM, f"assigned to component {component} of {record.name.text}, "
+                           "whose type is not known either: num assumed")
+
+
+def _known_for_invented(inference: Inference) -> bool:
+    """An invented record type whose two or more components a declared or predefined
+    record has all (``.robax``, ``.extax``: a jointtarget): its uses take that type."""
+    changed = False
+    for key in sorted(inference.invented):
+        record = inference.missing.get(key)
+        if record is None or len(record.fields) < 2:     # one name alone says too little
+            continue
+        candidates = inference.names.records_with(list(record.fields))
+        if not candidates:
+            continue
+        del inference.missing[key]
+        inference.invented.discard(key)
+        for owner in inference.missing.values():
+            for component, info in owner.fields.items():
+                if info is not None and info.key == key:
+                    owner.fields[component] = TypeInfo(candidates[0], info.rank)
+        changed = True
+    return _drop_unused_invented(inference) or changed
+
+
+def _drop_unused_invented(inference: Inference) -> bool:
+    """Invented record types no component uses any more (they belonged to one replaced, or
+    a use gave the component a known type); whether any was dropped."""
+    dropped = False
+    while True:
+        used = {info.key for owner in inference.missing.values()
+                for info in (*owner.fields.values(), owner.type) if info is not None}
+        unused = [key for key in inference.invented if key not in used]
+        if not unused:
+            return dropped
+        dropped = True
+        for key in unused:
+            inference.missing.pop(key, None)
+            inference.invented.discard(key)

@@ -1,0 +1,114 @@
+"""Weak fairness between RAPID tasks: which task took a step, which tasks cannot go on.
+
+A controller shares its time between its tasks, so a task that can go on
+does run again: an infinite run in which a task stays able to go on and
+never steps is not a run of the controller.  ``check.fair`` searches only
+runs where every task steps infinitely often or is infinitely often unable
+to go on.
+
+* The task of a step is the ``task`` choice of its label (``input: task =
+  ...`` in traces); when only one task is left running there is no choice,
+  and the step is that task's.
+* A task cannot go on in a state when the program has stopped, the task has
+  ended, or each of its steps would change nothing (it waits) — decided as
+  the step semantics decides which task takes the turn
+  (``semantics.staged_step.idle_steps_dropped``): on the semantic successors of
+  the state, before any reduction's projection.
+"""
+from __future__ import annotations
+
+from typing import Hashable, Optional
+
+from ..check import UNKNOWN, VIOLATED, Progress, SearchResult, check_property
+from ..check.fair import check_fair_property
+from ..check.transition_system import STUTTER
+from ..semantics.state import RUNNING, State
+from ..semantics.step import successors as semantic_successors
+
+TASK_CHOICE = "task"
+
+
+class TaskFairness:
+    """The fairness constraints (one per task) of a ``RapidSystem``, for ``check.fair``."""
+
+    def __init__(self, system):
+        self.program = system.program
+        self.config = system.config
+        self.names = tuple(system.program.task_names)
+        self.count = len(self.names)
+
+    def taken(self, state: State, label: Hashable) -> Optional[int]:
+        """The index of the task that took the step ``label`` from ``state`` (None: none)."""
+        if label is STUTTER or label is None:
+            return None
+        return self._task_choosing(state, label[0])
+
+    def _task_choosing(self, state: State, choices: tuple) -> Optional[int]:
+        """The task a step with these choices runs (``choices``: a ``Transition.label``)."""
+        for name, value in choices:
+            if name == TASK_CHOICE:
+                return self.names.index(value)
+        if state.status != RUNNING:
+            return None
+        running = running_tasks(state)
+        return running[0] if len(running) == 1 else None
+
+    def excused(self, state: State) -> frozenset:
+        """The tasks that cannot go on in ``state``."""
+        every = frozenset(range(self.count))
+        if state.status != RUNNING:
+            return every
+        moving = {self._task_choosing(state, transition.label)
+                  for transition in semantic_successors(self.program, state, self.config)
+                  if transition.state != state}
+        return every - moving
+
+    def unfair_tasks(self, steps: list, closing_label: Hashable) -> list[str]:
+        """The tasks a lasso's cycle starves: able to go on in each of its states, never
+        stepping (``steps``: the cycle's ``LassoStep``s).  Empty for a fair cycle."""
+        states = [step.state for step in steps]
+        labels = [step.label for step in steps[1:]] + [closing_label]
+        met = {self.taken(state, label) for state, label in zip(states, labels)}
+        for state in states:
+            met |= self.excused(state)
+        return [name for index, name in enumerate(self.names) if index not in met]
+
+
+def running_tasks(state: State) -> list[int]:
+    """The indices of the tasks that have not ended (the main task is 0)."""
+    return [index for index, stack in enumerate((state.frames,) + state.tasks) if stack]
+
+
+def assumes_fairness(model) -> bool:
+    """Whether a prepared ``api.Model`` is searched fairly: several tasks, not --no-fairness."""
+    return model.options.fairness and len(model.program.task_names) > 1
+
+
+def fair_or_plain_search(system, buchi, valuation, fairness: Optional[TaskFairness],
+                         progress: Optional[Progress], bounds: dict) -> SearchResult:
+    """One property's search: fair to the tasks when ``fairness`` is given.
+
+    Today's search runs first: fairness only removes runs, so its HOLDS stands,
+    and so does a counterexample whose cycle starves no task (a safety
+    property's, or any the search happens to find fair).  Only a
+    counterexample that starves a task calls for the fair search
+    (``check.fair``).  --compact / --bitstate searches (``bounds["storage"]``)
+    cannot look for fair cycles; they never answer HOLDS anyway, and a
+    counterexample of theirs that starves a task is no answer: UNKNOWN.
+    """
+    result = check_property(system, buchi, valuation, progress=progress, **bounds)
+    if fairness is None or result.verdict != VIOLATED:
+        return result
+    starved = fairness.unfair_tasks(result.cycle, result.closing_label)
+    if not starved:
+        return result
+    if bounds.get("storage") is not None:
+        return SearchResult(UNKNOWN, f"the cycle found starves {', '.join(starved)}; this "
+                            "search cannot look for cycles fair to every task",
+                            stats=result.stats)
+    result = check_fair_property(system, buchi, valuation, fairness, progress=progress,
+                                 max_states=bounds.get("max_states"),
+                                 max_seconds=bounds.get("max_seconds"))
+    if result.verdict == VIOLATED and fairness.unfair_tasks(result.cycle, result.closing_label):
+        raise RuntimeError("internal error: the fair search found a cycle that starves a task")
+    return result

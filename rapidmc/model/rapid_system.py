@@ -1,0 +1,333 @@
+"""A RAPID program (with its environment) as a transition system for the checker.
+
+``RapidSystem`` adapts the semantics (``semantics.step``) to the engine's
+``TransitionSystem`` protocol: states are semantic ``State`` values, labels
+are ``(choices, span, output)``.  ``RapidDescriber`` turns states and
+labels into what a robot programmer reads in a counterexample, and
+``replay`` re-executes a counterexample through the step function before it
+is printed.
+"""
+from __future__ import annotations
+
+import copy
+from typing import Hashable, Mapping, Optional, Sequence
+
+from pyrsistent import pvector
+
+from ..check import TransitionInfo
+from ..check.trace import CallFrame
+from ..check.result import LassoStep, SearchResult
+from ..diagnostics import TRACE_REPLAY, SourceCache, error
+from ..semantics.program import (ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE,
+                                PROGRAM_NAMESPACE, Program)
+from ..semantics.library.system import format_typed, value_kind
+from ..semantics.state import ENDED, FAILED, RUNNING, STOPPED, State
+from ..semantics.plain_step import is_plain
+from ..semantics.step import (OPERATOR_CHOICE, CheckConfig, ScriptChooser, initial_states,
+                             successors)
+from ..semantics.fused_step import plain_successor_states, stop_pcs, written_globals
+from ..semantics.values import format_num, format_value
+from ..semantics.errors import errno_name
+from .reduction import NO_PLAN, Plan
+from .reduction.expansion import expand_lasso
+from .reduction.merging import executed_spans
+
+
+_new_tuple = tuple.__new__
+
+
+class RapidSystem:
+    """The program's state graph, explored lazily.
+
+    Successors of states that take the general step (environment models,
+    tasks, interrupts, stored inputs) are remembered (up to ``shared_limit``
+    states) so that the searches for several properties of one program
+    compute them once.  Plain states (``semantics.plain_step``) are not: their
+    successors cost less to compute again than to hash, keep and have the
+    garbage collector scan (counters N=6, ``rapidmc check``: 3.3 s remembered,
+    2.2 s not).  A reduction ``plan`` (``rapidmc.model.reduction``) resets
+    sliced data in every state and merges steps; ``unreduced()`` is the
+    same system without it (for replaying counterexamples in full).
+    """
+
+    shared_limit = 100_000
+
+    def __init__(self, program: Program, config: CheckConfig, plan: Plan = NO_PLAN):
+        self.program = program
+        self.plain_config = config
+        skipped = plan.slicing.total_writes if plan.projection is not None else frozenset()
+        if plan.merge_points != config.merge_points or skipped != config.skipped_writes:
+            config = copy.copy(config)
+            config.merge_points = plan.merge_points
+            config.skipped_writes = skipped
+        self.config = config
+        self.plan = plan
+        self.project = plan.projection
+        # the projection of the fused step's targets (None where they are projected
+        # already: the writes it would undo are the ones the step skips)
+        self.project_fused = self.project
+        if self.project is not None and self.project.keeps_fused_targets(
+                set(plan.slicing.globals), written_globals(program, config.skipped_writes),
+                stop_pcs(program.routines[program.entry])):
+            self.project_fused = None
+        # successors kept for the next searches (one per property) over the same program
+        self._shared: dict[State, list] = {}
+
+    @staticmethod
+    def split_state(state: State) -> tuple:
+        """The parts stored separately (``check.states``): the call stack, global data (as
+        a tuple: smaller than a persistent vector), signals, robot, interrupts, and the rest
+        (ERRNO ... further tasks).  Signals stay a vector: they rarely change, and a vector
+        handed on unchanged is found by identity."""
+        return (state[0], tuple(state[1]), state[2], state[3], state[4], state[5:])
+
+    @staticmethod
+    def join_state(parts: tuple) -> State:
+        return _new_tuple(State, (parts[0], pvector(parts[1])) + parts[2:5] + parts[5])
+
+    def unreduced(self) -> "RapidSystem":
+        """The same program and configuration without reductions."""
+        if not self.plan.active:
+            return self
+        config = copy.copy(self.plain_config)
+        config.merge_points = {}
+        return RapidSystem(self.program, config)
+
+    def initial_states(self) -> list[State]:
+        states = initial_states(self.program, lambda script: ScriptChooser(script, self.config))
+        project = self.project
+        return states if project is None else list(dict.fromkeys(map(project, states)))
+
+    def successors(self, state: State) -> list[tuple[Hashable, State]]:
+        if self._shared:                 # (hashing a whole state is not free)
+            cached = self._shared.get(state)
+            if cached is not None:
+                return cached
+        transitions = successors(self.program, state, self.config)
+        project = self.project
+        if project is None:
+            result = [((label, span, output), after)
+                      for label, span, after, output, _ in transitions]
+        else:
+            result = [((label, span, output), project(after))
+                      for label, span, after, output, _ in transitions]
+        if len(self._shared) < self.shared_limit and \
+                not is_plain(self.program, state, self.config):
+            self._shared[state] = result
+        return result
+
+    def successor_states(self, state: State) -> list[State]:
+        """The states of ``successors(state)``, in order, without their labels: what the
+        search stores (built faster at plain states, ``plain_successor_states``, which
+        skips the writes to sliced data the projection resets anyway)."""
+        found = plain_successor_states(self.program, state, self.config)
+        if found is None:
+            return [after for _, after in self.successors(state)]
+        project = self.project_fused
+        return found if project is None else [project(after) for after in found]
+
+    # built-in safety checks ------------------------------------------------
+    @staticmethod
+    def failed(state: State) -> bool:
+        return state.status == FAILED
+
+    def stuck(self, state: State) -> bool:
+        """The program runs but no step can change anything but free inputs: it waits forever.
+
+        Free inputs are chosen before each step, so if some input values let
+        the program go on, the successor with those values differs in more
+        than the inputs.
+        """
+        return self.stuck_among(state, self.successors(state))
+
+    def stuck_among(self, state: State, found: Sequence) -> bool:
+        """``stuck(state)`` given ``found``, the state's successors (as ``successors`` gives)."""
+        return self.stuck_at(state, [after for _, after in found])
+
+    def stuck_at(self, state: State, targets: Sequence[State]) -> bool:
+        """``stuck(state)`` given ``targets``, its successor states (``successor_states``)."""
+        if state.status != RUNNING:
+            return False
+        # a successor whose call stack or data differ is not a state with other inputs:
+        # decided without masking the inputs of every successor (the usual case)
+        frames, store = state[0], state[1]
+        for after in targets:
+            if after[0] is not frames and after[0] != frames or \
+                    after[1] is not store and after[1] != store:
+                return False
+        return self._same_but_inputs(state, targets)
+
+    def _same_but_inputs(self, state: State, targets: Sequence[State]) -> bool:
+        """Whether every successor of the running ``state`` is ``state`` with other free
+        inputs (and, with merged steps, every single instruction's too)."""
+        free = [index for index, _, _ in self.config.free_inputs]
+        masked = _without_inputs(state, free)
+        if not all(_without_inputs(after, free) == masked for after in targets):
+            return False
+        if not self.config.merge_points:
+            return True
+        # A merged step that changes nothing may still run around a loop (a busy wait):
+        # decide on single instructions, as the unmerged semantics does.  (A merged step
+        # that changes something starts with a single step that does.)
+        project = self.project or (lambda s: s)
+        return all(_without_inputs(project(t.state), free) == masked
+                   for t in successors(self.program, state, self.plain_config))
+
+
+def _without_inputs(state: State, free: list) -> State:
+    if not free:
+        return state
+    io = state.io.mset(*[x for index in free for x in (index, 0.0)])
+    return state._replace(io=io)
+
+
+def _format(value, kind) -> str:
+    try:
+        return format_typed(value, kind)
+    except Exception:
+        return repr(value)
+
+
+class RapidDescriber:
+    """Printable views of states and transitions, in RAPID terms."""
+
+    # the program's status is in a view only while it is not running: a restart after
+    # Stop changes it back to this
+    absent_values = {"program": "running"}
+
+    def __init__(self, program: Program, config: Optional[CheckConfig] = None):
+        self.program = program
+        lazy = config.lazy_inputs if config is not None else {}
+        # inputs chosen when read are not stored: their values show in the step's inputs
+        self.signals = [s for s in program.signals if s.index not in lazy]
+        self.globals = [(g.slot, g.name, value_kind(g.type), g.type) for g in program.globals
+                        if g.namespace == PROGRAM_NAMESPACE and
+                        getattr(g.type, "kind", "") not in ("semi-value", "non-value")]
+        self.environment = [(g.slot, self._qualified(g), value_kind(g.type))
+                            for g in program.globals
+                            if g.namespace != PROGRAM_NAMESPACE and
+                            getattr(g.type, "kind", "") not in ("semi-value", "non-value")]
+
+    def _qualified(self, data) -> str:
+        """env.name for environment data, <task>.name for data of a further task."""
+        if data.namespace == ENVIRONMENT_NAMESPACE:
+            return f"env.{data.name}"
+        return f"{self.program.task_names[data.namespace - FIRST_TASK_NAMESPACE + 1]}.{data.name}"
+
+    def describe_state(self, state: State) -> Mapping[str, str]:
+        view: dict[str, str] = {}
+        store = state.store
+        for slot, name, kind, _ in self.globals:
+            view[name] = _format(store[slot], kind)
+        stacks = (state.frames,) + state.tasks
+        for frame in (frame for stack in stacks for frame in stack):
+            routine = self.program.routines[frame.routine]
+            for name, value in zip(routine.local_names, frame.locals):
+                if name.startswith("<"):
+                    continue                       # FOR bounds, temporaries
+                if isinstance(value, tuple) and len(value) == 3 and isinstance(value[0], int) \
+                        and isinstance(value[2], tuple):
+                    continue                       # a reference parameter
+                view[f"{routine.name}.{name}"] = _format(value, "num")
+        for signal in self.signals:
+            view[f"signal {signal.name}"] = format_num(state.io[signal.index])
+        view["robot TCP"] = _format(state.robot[0][0], "num")
+        for slot, name, kind in self.environment:
+            view[name] = _format(store[slot], kind)
+        if state.errno:
+            view["ERRNO"] = errno_name(int(state.errno))
+        if state.status == ENDED:
+            view["program"] = "ended"
+        elif state.status == STOPPED:
+            view["program"] = "stopped by Stop/Break (the operator may restart it)"
+        elif state.status == FAILED:
+            view["program"] = f"stopped: uncaught {errno_name(state.fault.errno)} " \
+                              f"({state.fault.message})"
+        return view
+
+    def describe_stack(self, state: State) -> tuple[CallFrame, ...]:
+        """Every task's active routines, outermost first, each at its next statement."""
+        stacks = (state.frames,) + state.tasks
+        named = len(stacks) > 1
+        frames = []
+        for number, stack in enumerate(stacks):
+            task = self.program.task_names[number] if named else ""
+            for frame in stack:
+                routine = self.program.routines[frame.routine]
+                span = _frame_span(routine, frame.pc)
+                frames.append(CallFrame(routine.name, span.file, span.line, task))
+        return tuple(frames)
+
+    def source_lines(self) -> dict[str, tuple[str, ...]]:
+        """The lines of every source file of the program and its environment, in link order."""
+        spans = [r.span for r in self.program.routines] + \
+                [g.span for g in self.program.globals]
+        files = dict.fromkeys(span.file for span in spans if span is not None and span.file)
+        sources = {}
+        for file in files:
+            lines = SourceCache.lines(file)
+            if lines is not None:
+                sources[file] = lines
+        return sources
+
+    def describe_transition(self, label) -> TransitionInfo:
+        choices, span, output = label
+        inputs = {name: _choice_text(value) for name, value in choices}
+        span = executed_spans(span)[0]       # merged steps not expanded: the first one
+        if span is None:
+            source = "(the program has stopped: this state repeats forever)" if not choices \
+                else "(the program continues after the Stop)" if inputs.get(OPERATOR_CHOICE) \
+                else ""
+            return TransitionInfo(None, None, source, inputs, output)
+        text = SourceCache.line(span.file, span.line)
+        source = text.strip() if text is not None else ""
+        return TransitionInfo(span.file, span.line, source, inputs, output)
+
+
+def _frame_span(routine, pc: int):
+    """Where a frame is: the statement at its program counter (a caller: the call)."""
+    if 0 <= pc < len(routine.code) and routine.code[pc].span is not None:
+        return routine.code[pc].span
+    return routine.end_span or routine.span
+
+
+def _choice_text(value) -> str:
+    """A chosen value as RAPID writes it; names (tasks, outcomes, messages) as they are."""
+    return value if isinstance(value, str) else format_value(value)
+
+
+def with_final_loop(system: RapidSystem, result: SearchResult) -> SearchResult:
+    """A reachability path ends in a state that repeats forever: make that the cycle."""
+    if result.prefix and not result.cycle:
+        last = result.prefix[-1]
+        transitions = system.successors(last.state)
+        loop = next((label for label, state in transitions if state == last.state), None)
+        result.cycle = [result.prefix.pop()]
+        result.closing_label = loop
+    return result
+
+
+def replay(system: RapidSystem, result: SearchResult) -> None:
+    """Re-execute a counterexample through the step function; a mismatch is an internal error.
+
+    A counterexample of a reduced system is then expanded on the unreduced
+    one (``reduction.expansion``): every line executed, every value shown.
+    """
+    steps: list[LassoStep] = result.prefix + result.cycle
+    if not steps:
+        return
+    if steps[0].state not in system.initial_states():
+        raise AssertionError("counterexample does not start in an initial state")
+    for before, after in zip(steps, steps[1:]):
+        _check_step(system, before.state, after.label, after.state)
+    if result.cycle:
+        closing = result.closing_label
+        _check_step(system, steps[-1].state, closing, result.cycle[0].state)
+    expand_lasso(system, result)
+
+
+def _check_step(system: RapidSystem, before: State, label, after: State) -> None:
+    for candidate_label, candidate in system.successors(before):
+        if candidate == after and (label is None or candidate_label == label):
+            return
+    raise AssertionError(f"counterexample step does not replay (label {label!r})")

@@ -1,0 +1,101 @@
+"""State-space reductions that keep every verdict: sliced data, dead data, merged steps.
+
+* ``relevance`` / ``totality``: which data can influence anything a check
+  observes (cone of influence); the rest is *sliced*.
+* ``liveness``: data that will be written before it is read (*dead*), per
+  program point.
+* ``projection``: sliced data reset in every stored state, dead data where
+  it is dead.
+* ``merging``: instructions that may run in the same transition as the one
+  before (statement merging).
+* ``expansion``: a counterexample of the reduced model re-executed on the
+  unreduced one, so traces show every line and every value.
+
+``plan_reductions(program, config, atoms, formulas, reductions)`` decides
+what applies to one check; ``RapidSystem`` applies the plan.
+"""
+from __future__ import annotations
+
+import argparse
+from dataclasses import dataclass, field
+from typing import Iterable, Optional
+
+from ...semantics.program import Program
+from .merging import merge_points, merging_allowed
+from .liveness import DeadData
+from .projection import Projection
+from .relevance import NO_SLICING, Slicing, atom_keys_of, find_slicing
+
+
+@dataclass(frozen=True)
+class Reductions:
+    """Which reductions a check may use (all by default)."""
+
+    slice_data: bool = True
+    dead_data: bool = True
+    merge_steps: bool = True
+
+
+ALL = Reductions()
+NONE = Reductions(slice_data=False, dead_data=False, merge_steps=False)
+
+
+@dataclass(frozen=True)
+class Plan:
+    """What one check applies: the projection of states and the merge points."""
+
+    reductions: Reductions = NONE
+    slicing: Slicing = NO_SLICING
+    projection: Optional[Projection] = None
+    merge_points: dict = field(default_factory=dict)
+
+    @property
+    def active(self) -> bool:
+        return self.projection is not None or bool(self.merge_points)
+
+
+NO_PLAN = Plan()
+
+
+def plan_reductions(program: Program, config, atoms: Iterable[str],
+                    formulas: Iterable[Optional[object]],
+                    reductions: Reductions = ALL) -> Plan:
+    """The reductions that keep every verdict of properties over ``atoms``.
+
+    ``formulas``: the properties' formulas (None for a property given as an
+    automaton, whose stutter invariance is unknown).
+    """
+    atoms = tuple(atoms)
+    keys = atom_keys_of(atoms)
+    slicing = find_slicing(program, atoms) if reductions.slice_data else NO_SLICING
+    dead = DeadData(program, keys) if reductions.dead_data else None
+    if dead is not None and dead.empty:
+        dead = None
+    projection = Projection(program, slicing, dead) if not slicing.empty or dead else None
+    points: dict = {}
+    formulas = list(formulas)
+    if reductions.merge_steps and None not in formulas and \
+            merging_allowed(program, formulas, keys, bool(config.free_inputs)):
+        points = merge_points(program, keys)
+    return Plan(reductions, slicing, projection, points)
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    """The command-line switches that turn reductions off."""
+    group = parser.add_argument_group("reductions (all on by default; verdicts never change)")
+    group.add_argument("--no-reduce", action="store_true",
+                       help="explore the program as written: no sliced data, no merged steps")
+    group.add_argument("--no-slice", action="store_true",
+                       help="keep data that nothing observable depends on in every state")
+    group.add_argument("--no-dead", action="store_true",
+                       help="keep values that will be written before they are read")
+    group.add_argument("--no-merge", action="store_true",
+                       help="one transition per instruction (no merged steps)")
+
+
+def from_arguments(args: argparse.Namespace) -> Reductions:
+    if getattr(args, "no_reduce", False):
+        return NONE
+    return Reductions(slice_data=not getattr(args, "no_slice", False),
+                      dead_data=not getattr(args, "no_dead", False),
+                      merge_steps=not getattr(args, "no_merge", False))

@@ -1,0 +1,111 @@
+"""Dropping sliced and dead data from states: such values are reset to their initial values.
+
+Two states that differ only in data nothing will read become one stored
+state.  Sliced data (``relevance``) is reset everywhere; dead data
+(``liveness``) where the program counter says it will be written before
+it is read.  The program still computes those values while a step runs
+(from the reset values); the analyses guarantee that nothing observable
+depends on them, so the next stored state is the same whatever they were.
+"""
+from __future__ import annotations
+
+from typing import Optional
+
+from ...semantics.program import Program
+from ...semantics.state import Frame, State
+from .liveness import DeadData
+from .relevance import Slicing
+
+_new_tuple = tuple.__new__
+
+
+class Projection:
+    """``project(state)``: the state with sliced and dead data at their initial values."""
+
+    def __init__(self, program: Program, slicing: Slicing, dead: Optional[DeadData] = None):
+        initial_global = [data.initial for data in program.globals]
+        sliced = set(slicing.globals)
+        self.global_resets = _resets(sliced, initial_global)
+        self.main = program.entry
+        self.main_resets: list[tuple] = []
+        self.final_resets: tuple = self.global_resets
+        if dead is not None and dead.globals:
+            self.main_resets = [_resets(sliced | set(slots), initial_global)
+                                for slots in dead.globals]
+        if dead is not None and dead.final_globals:
+            self.final_resets = _resets(sliced | set(dead.final_globals), initial_global)
+        self.frame_resets: dict[int, list[tuple]] = {}
+        for routine in program.routines:
+            always = set(slicing.locals.get(routine.index, ()))
+            per_pc = dead.locals.get(routine.index) if dead is not None else None
+            if not always and not per_pc:
+                continue
+            initial = routine.initial_locals
+            per_pc_resets = [_resets(always | set(per_pc[pc] if per_pc else ()), initial)
+                             for pc in range(max(len(routine.code), 1))]
+            if any(per_pc_resets):
+                self.frame_resets[routine.index] = per_pc_resets
+
+    def keeps_fused_targets(self, sliced: set, written: set, main_stops: set) -> bool:
+        """Whether the fused step's targets from projected states are projected already:
+        no routine data is ever reset, and every global value reset at a target is sliced
+        data (at its initial value in every projected state) that no step writes
+        (``written``: the global slots the step may write; ``main_stops``: the pcs of main
+        where it may stop).  (A fused step never ends the program: the final resets do
+        not apply.)"""
+        if self.frame_resets:
+            return False
+        at_stops = [resets for pc, resets in enumerate(self.main_resets) if pc in main_stops]
+        reset = {slot for resets in (self.global_resets, *at_stops) for slot, _ in resets}
+        return reset <= sliced and not reset & written
+
+    def __call__(self, state: State) -> State:
+        # (the hot path: once per successor; a state that needs no reset is returned as
+        # it is after a comparison per reset value, without building anything)
+        frames, store, tasks = state[0], state[1], state[10]
+        if not frames:
+            resets = self.final_resets
+        elif self.main_resets and len(frames) == 1 and not tasks and frames[0][0] == self.main:
+            resets = self.main_resets[frames[0][1]]
+        else:
+            resets = self.global_resets
+        for slot, initial in resets:
+            if store[slot] != initial:
+                store = _reset_store(store, resets)
+                break
+        new_frames, new_tasks = frames, tasks
+        if self.frame_resets:
+            new_frames = self._stack(frames)
+            if tasks:
+                stacks = tuple(self._stack(stack) for stack in tasks)
+                if any(a is not b for a, b in zip(stacks, tasks)):
+                    new_tasks = stacks
+        if store is state[1] and new_frames is frames and new_tasks is tasks:
+            return state
+        return state._replace(store=store, frames=new_frames, tasks=new_tasks)
+
+    def _stack(self, frames: tuple) -> tuple:
+        changed = False
+        result = []
+        for frame in frames:
+            per_pc = self.frame_resets.get(frame[0])
+            if per_pc:
+                resets = per_pc[frame[1]] if 0 <= frame[1] < len(per_pc) else ()
+                values = frame[2]
+                if any(values[slot] != initial for slot, initial in resets):
+                    values = list(values)
+                    for slot, initial in resets:
+                        values[slot] = initial
+                    frame = _new_tuple(Frame, (frame[0], frame[1], tuple(values), *frame[3:]))
+                    changed = True
+            result.append(frame)
+        return tuple(result) if changed else frames
+
+
+def _resets(slots: set, initial) -> tuple:
+    return tuple((slot, initial[slot]) for slot in sorted(slots))
+
+
+def _reset_store(store, resets: tuple):
+    changes = [x for slot, initial in resets if store[slot] != initial for x in (slot, initial)]
+    return store.mset(*changes) if changes else store

@@ -1,0 +1,215 @@
+"""Verdicts and counterexamples as text for people and JSON for scripts.
+
+Text, one line per property and a counterexample under each violation::
+
+    P1: HOLDS (1,234 states, 0.12 s)
+    P2: VIOLATED (56 states, 0.01 s)
+      formula: G "x < 3"
+      counterexample: 2 steps, then a loop of 2 steps
+        step 1  initial state
+            x = 0
+        step 2  main.mod:4  x := x + 1;
+            x = 1  (was 0)
+      -- loop starts here (repeats forever) --
+        ...
+      -- loop closes: back to the state of step 3 --
+    P3: UNKNOWN (state limit 1000000 reached; 1,000,000 states, 30.1 s)
+
+JSON follows the schema in docs/json-output.md (``SCHEMA`` names its version).
+"""
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from typing import Optional, Sequence
+
+from ..diagnostics import MORE_ERRORS, Diagnostic
+from ..diagnostics.error_report import omitted_count
+from ..check.result import UNKNOWN, VIOLATED, SearchResult, SearchStats
+from ..check.trace import INITIAL, Change, Trace, TraceDescriber, TraceStep, build_trace
+
+SCHEMA = "rapidmc-check/1"
+LOOP_STARTS = "-- loop starts here (repeats forever) --"
+
+
+@dataclass(frozen=True)
+class PropertyResult:
+    """The outcome of checking one named property."""
+
+    name: str
+    formula: str
+    result: SearchResult
+    vacuous: Optional[str] = None    # a trigger never true in any reachable state (HOLDS only)
+    fair_tasks: tuple = ()           # the tasks assumed weakly fair in the search (several tasks)
+
+
+# --- text ---------------------------------------------------------------------
+
+
+def format_text(results: Sequence[PropertyResult], describer: TraceDescriber) -> str:
+    """Every property's verdict line, with a counterexample under each violation."""
+    lines: list[str] = []
+    for checked in results:
+        lines.append(verdict_line(checked))
+        if checked.fair_tasks:
+            lines.append(f"  {fairness_text(checked.fair_tasks)}")
+        stats = checked.result.stats
+        if stats.deadlocks:
+            lines.append(f"  note: {stats.deadlocks:,} reachable state(s) without a successor; "
+                         "runs ending there repeat their last state")
+        if checked.result.verdict == VIOLATED:
+            lines.append(f"  formula: {checked.formula}")
+            lines.extend(counterexample_lines(build_trace(checked.result, describer)))
+    return "\n".join(lines) + "\n"
+
+
+def verdict_line(checked: PropertyResult) -> str:
+    """``P3: UNKNOWN (state limit 1000000 reached; 1,000,000 states, 30.1 s)``."""
+    result = checked.result
+    figures = statistics_text(result.stats)
+    if result.verdict == UNKNOWN and result.reason:
+        figures = f"{result.reason}; {figures}"
+    if checked.vacuous is not None:
+        figures = f"{vacuity_text(checked.vacuous)}; {figures}"
+    return f"{checked.name}: {result.verdict} ({figures})"
+
+
+def vacuity_text(trigger: str) -> str:
+    """``vacuously: "!C_IN & S_1" is never true``."""
+    return f"vacuously: {json.dumps(trigger, ensure_ascii=False)} is never true"
+
+
+def fairness_text(tasks: Sequence[str]) -> str:
+    """``assuming weak fairness between the tasks main task, task 2 (feeder)``."""
+    return f"assuming weak fairness between the tasks {', '.join(tasks)}"
+
+
+def statistics_text(stats: SearchStats) -> str:
+    states = stats.product_states
+    return f"{states:,} {'state' if states == 1 else 'states'}, {seconds_text(stats.seconds)}"
+
+
+def seconds_text(seconds: float) -> str:
+    return f"{seconds:.2f} s" if seconds < 10 else f"{seconds:,.1f} s"
+
+
+def counterexample_lines(trace: Trace) -> list[str]:
+    """The numbered steps of a trace with the loop markers."""
+    count = len(trace.prefix) + len(trace.cycle)
+    if trace.cycle:
+        head = (f"  counterexample: {_steps(len(trace.prefix))}, "
+                f"then a loop of {_steps(len(trace.cycle))}")
+    else:
+        head = f"  counterexample: {_steps(count)}"
+    lines = [head]
+    for step in trace.prefix:
+        lines.extend(step_lines(step))
+    if trace.cycle:
+        lines.append("  " + LOOP_STARTS)
+        for step in trace.cycle:
+            lines.extend(step_lines(step))
+        lines.extend(step_lines(trace.closing))
+        lines.append(f"  -- loop closes: back to the state of step {trace.loop_start} --")
+    return lines
+
+
+def _steps(count: int) -> str:
+    return f"{count} step" if count == 1 else f"{count} steps"
+
+
+def step_lines(step: TraceStep) -> list[str]:
+    """One step: number, location and source, then inputs, output and changed values."""
+    transition = step.transition
+    if step.kind == INITIAL:
+        head = "initial state"
+    else:
+        location = transition.location
+        head = f"{location}  {transition.source}" if location else transition.source
+    lines = [f"    step {step.index}  {head}".rstrip()]
+    if transition is not None:
+        lines.extend(f"        input: {name} = {value}" for name, value in transition.inputs.items())
+        if transition.output:
+            lines.append(f"        output: {json.dumps(transition.output, ensure_ascii=False)}")
+    lines.extend(f"        {_change_text(change)}" for change in step.changes)
+    return lines
+
+
+def _change_text(change: Change) -> str:
+    if change.new is None:
+        return f"{change.name} (no longer exists; was {change.old})"
+    if change.old is None:
+        return f"{change.name} = {change.new}"
+    return f"{change.name} = {change.new}  (was {change.old})"
+
+
+# --- JSON ---------------------------------------------------------------------
+
+
+def format_json(results: Sequence[PropertyResult], describer: Optional[TraceDescriber],
+                warnings: Sequence[Diagnostic] = (), command: Optional[Sequence[str]] = None,
+                errors: Sequence[Diagnostic] = ()) -> str:
+    """The JSON document of docs/json-output.md, indented, keys in schema order.
+
+    ``errors`` are the input errors that stopped ``check`` before any search (then
+    ``results`` is empty); a capped report's count of the rest is ``errors_not_shown``.
+    """
+    document = {"schema": SCHEMA,
+                "command": list(command) if command is not None else None,
+                "properties": [property_json(checked, describer) for checked in results],
+                "warnings": [warning_json(warning) for warning in warnings],
+                "errors": [error_json(e) for e in errors if e.code != MORE_ERRORS],
+                "errors_not_shown": omitted_count(errors)}
+    return json.dumps(document, indent=2, ensure_ascii=False) + "\n"
+
+
+def format_json_errors(errors: Sequence[Diagnostic], command: Optional[Sequence[str]]) -> str:
+    """The document of a ``check`` that stopped at input errors: no property, only errors."""
+    return format_json((), None, (), command, errors)
+
+
+def property_json(checked: PropertyResult, describer: TraceDescriber) -> dict:
+    result = checked.result
+    trace = None
+    if result.verdict == VIOLATED:
+        trace = trace_json(build_trace(result, describer))
+    return {"name": checked.name, "formula": checked.formula, "verdict": result.verdict,
+            "reason": result.reason, "stats": result.stats.as_dict(), "trace": trace,
+            "vacuous": checked.vacuous,
+            "fair_tasks": list(checked.fair_tasks) if checked.fair_tasks else None}
+
+
+def warning_json(warning: Diagnostic) -> dict:
+    span = warning.span
+    location = {"file": span.file, "line": span.line, "column": span.column} if span else None
+    return {"code": warning.code.code, "message": warning.message, "location": location}
+
+
+def error_json(diagnostic: Diagnostic) -> dict:
+    """An input error: code, severity, message, place (null for errors of no file) and notes."""
+    span = diagnostic.span
+    location = None
+    if span is not None and span.line > 0:
+        location = {"file": span.file, "line": span.line, "column": span.column,
+                    "end_line": span.end_line, "end_column": span.end_column}
+    return {"code": diagnostic.code.code, "severity": diagnostic.severity,
+            "message": diagnostic.message, "location": location,
+            "notes": list(diagnostic.notes)}
+
+
+def trace_json(trace: Trace) -> dict:
+    return {"prefix": [step_json(step) for step in trace.prefix],
+            "cycle": [step_json(step) for step in trace.cycle],
+            "closing": step_json(trace.closing) if trace.closing else None,
+            "loop_start": trace.loop_start}
+
+
+def step_json(step: TraceStep) -> dict:
+    transition = step.transition
+    location = None
+    if transition is not None and transition.file is not None:
+        location = {"file": transition.file, "line": transition.line}
+    return {"index": step.index, "kind": step.kind, "location": location,
+            "source": transition.source if transition else None,
+            "inputs": dict(transition.inputs) if transition else {},
+            "changes": {change.name: change.new for change in step.changes},
+            "output": transition.output if transition and transition.output else None}

@@ -1,0 +1,137 @@
+"""SARIF 2.1.0 output, for CI systems and code-scanning views.
+
+Each property is a rule; each VIOLATED property is a result of level
+``error`` whose location is the last statement before the counterexample's
+loop (for a run-time error: the statement that failed) and whose code flow
+is the whole counterexample, step by step, with the inputs chosen and the
+values changed as the messages of the steps.  UNKNOWN properties are
+results of level ``warning``; HOLDS gives no result.  Input errors (syntax,
+static, property files) become results of level ``error`` too, so a CI
+pipeline reads one format whatever went wrong.
+"""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Optional, Sequence
+
+from .. import __version__
+from ..diagnostics import Diagnostic
+from .results import PropertyResult
+from ..check.result import UNKNOWN, VIOLATED
+from ..check.trace import Trace, TraceDescriber, TraceStep, build_trace
+
+SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
+
+
+def format_sarif(results: Sequence[PropertyResult], describer: TraceDescriber,
+                 exit_code: int, warnings: Sequence[Diagnostic] = ()) -> str:
+    rules = [_rule(checked.name, checked.formula) for checked in results]
+    sarif_results = []
+    for index, checked in enumerate(results):
+        result = checked.result
+        if result.verdict == VIOLATED:
+            sarif_results.append(_violation(index, checked, build_trace(result, describer)))
+        elif result.verdict == UNKNOWN:
+            sarif_results.append({
+                "ruleId": checked.name, "ruleIndex": index, "level": "warning",
+                "message": {"text": f"{checked.name}: UNKNOWN ({result.reason}): no violation "
+                                    "found, but the search was bounded"}})
+    _diagnostic_results(warnings, rules, sarif_results)
+    return _document(rules, sarif_results, exit_code)
+
+
+def format_sarif_diagnostics(diagnostics: Sequence[Diagnostic], exit_code: int) -> str:
+    """Input errors as SARIF results (one rule per diagnostic code)."""
+    rules: list = []
+    results: list = []
+    _diagnostic_results(diagnostics, rules, results)
+    return _document(rules, results, exit_code)
+
+
+def _diagnostic_results(diagnostics: Sequence[Diagnostic], rules: list, results: list) -> None:
+    """Append a result per diagnostic (level: its severity) and a rule per new code."""
+    for code in sorted({d.code.code for d in diagnostics}):
+        entry = next(d.code for d in diagnostics if d.code.code == code)
+        rules.append(_rule(code, entry.summary))
+    indices = {rule["id"]: index for index, rule in enumerate(rules)}
+    for diagnostic in diagnostics:
+        result = {"ruleId": diagnostic.code.code, "ruleIndex": indices[diagnostic.code.code],
+                  "level": diagnostic.severity, "message": {"text": diagnostic.message}}
+        if diagnostic.span is not None and diagnostic.span.line > 0:
+            result["locations"] = [_location(diagnostic.span.file, diagnostic.span.line,
+                                             diagnostic.span.column)]
+        if diagnostic.omitted:          # the last result of a capped report counts the rest
+            result["properties"] = {"errorsNotShown": diagnostic.omitted}
+        results.append(result)
+
+
+def _document(rules: list, results: list, exit_code: int) -> str:
+    document = {
+        "$schema": SARIF_SCHEMA,
+        "version": "2.1.0",
+        "runs": [{
+            "tool": {"driver": {"name": "rapidmc", "version": __version__, "rules": rules}},
+            "results": results,
+            "invocations": [{"executionSuccessful": exit_code in (0, 1, 3),
+                             "exitCode": exit_code}],
+        }],
+    }
+    return json.dumps(document, indent=2, ensure_ascii=False) + "\n"
+
+
+def _rule(name: str, description: str) -> dict:
+    return {"id": name, "name": name, "shortDescription": {"text": description}}
+
+
+def _violation(index: int, checked: PropertyResult, trace: Trace) -> dict:
+    steps = [*trace.prefix, *trace.cycle]
+    located = [s for s in steps if s.transition is not None and s.transition.file]
+    anchor = _anchor(trace, located)
+    result = {
+        "ruleId": checked.name, "ruleIndex": index, "level": "error",
+        "message": {"text": f"{checked.name} is violated: {checked.formula} "
+                            f"(counterexample: {len(trace.prefix)} steps, then a loop of "
+                            f"{len(trace.cycle)} steps)"},
+        "codeFlows": [{"threadFlows": [{"locations": [
+            _flow_step(step, order, trace.loop_start) for order, step in
+            enumerate(steps, start=1)]}]}],
+    }
+    if anchor is not None:
+        result["locations"] = [_location(anchor.transition.file, anchor.transition.line)]
+    if checked.fair_tasks:            # the counterexample lets every task that can go on run
+        result["properties"] = {"fairTasks": list(checked.fair_tasks)}
+    return result
+
+
+def _anchor(trace: Trace, located: list) -> Optional[TraceStep]:
+    """The step to point at: the last located step before the loop (or the last one)."""
+    if not located:
+        return None
+    before_loop = [s for s in located if trace.loop_start is None or s.index < trace.loop_start]
+    return (before_loop or located)[-1]
+
+
+def _flow_step(step: TraceStep, order: int, loop_start: Optional[int]) -> dict:
+    transition = step.transition
+    parts = []
+    if loop_start is not None and step.index == loop_start:
+        parts.append("loop starts here (repeats forever)")
+    if transition is not None and transition.source:
+        parts.append(transition.source)
+    if transition is not None and transition.inputs:
+        parts.append("inputs: " + ", ".join(f"{k} = {v}" for k, v in transition.inputs.items()))
+    if step.changes:
+        parts.append("changes: " + ", ".join(f"{c.name} = {c.new}" for c in step.changes))
+    location: dict = {"message": {"text": "; ".join(parts) or f"step {step.index}"}}
+    if transition is not None and transition.file:
+        location.update(_location(transition.file, transition.line))
+    return {"location": location, "executionOrder": order, "nestingLevel": 0}
+
+
+def _location(file: str, line: Optional[int], column: Optional[int] = None) -> dict:
+    region = {"startLine": line or 1}
+    if column:
+        region["startColumn"] = column
+    return {"physicalLocation": {"artifactLocation": {"uri": Path(file).as_posix()},
+                                 "region": region}}
