@@ -199,6 +199,8 @@ def _reference_binder(compiler, routine_name, param, arg) -> Callable:
         raise
     _check_types(param, ref_type, expr.span, routine_name)
     storage = symbol.storage if symbol is not None else ""
+    if symbol is None:                     # a placeholder <VAR>: an error when executed
+        return ref_fn
     if symbol.kind == LOCAL_DATA and storage in ("CONST", "FOR") or storage == "CONST":
         raise error(NOT_A_REFERENCE, f"{storage} '{expr_root_name(expr)}' cannot be passed to "
                     f"{param.mode} parameter {param.name}", expr.span)
