@@ -100,8 +100,8 @@ def placeholder_reached(kind: str) -> None:
     loaded; if they cause no semantic error it can even be executed, but any placeholder
     encountered causes an execution error (errnum ERR_EXECPHR, "executed a placeholder").
     """
-    raise RapidError("ERR_EXECPHR", f"the editor placeholder <{kind}> was executed (the "
-                     "statement was never completed)")
+    raise RapidError("ERR_EXECPHR", f"the editor placeholder <{kind}> was executed (that "
+                     "part of the program was never completed)")
 
 
 class FatalRapidError(Exception):
