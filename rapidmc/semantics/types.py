@@ -128,7 +128,7 @@ SIGNAL_TYPES = {t.key: t for t in (
 
 NON_VALUE_NAMES = (
     "clock", "iodev", "dir", "socketdev", "rawbytes", "triggdata", "shapedata",
-    "wzstationary", "wztemporary", "mecunit", "taskid", "syncident", "rmqslot",
+    "mecunit", "taskid", "syncident", "rmqslot",
     "intnum_obsolete", "restartdata", "corrdescr", "pathrecid", "jointtype",
     "egmident", "trapdata", "cameradev", "datapos", "itmsrc", "jointgroup",
     "speedlimdata", "rmqmessage", "loadsession",
@@ -174,6 +174,11 @@ OPTION_RECORDS = (
             *_nums("val1", "val2", "val3", "val4", "val5"), ("string1", STRING),
             ("string2", STRING), *_nums("type", "sceneid")),
     _record("progdisp", ("pdisp", POSE), ("eoffs", EXTJOINT)),
+    # World zones: the manual's examples declare `PERS wzstationary equip1 := [0];` and
+    # `VAR wztemporary service;`, and backups do the same: one num component, the zone's
+    # identity (wz).
+    _record("wztemporary", ("wz", NUM)),
+    _record("wzstationary", ("wz", NUM)),
     # Production Manager's service-menu entries: a value record of eleven components, as
     # controller backups declare it (`TASK PERS menudata md := ["Move to Home", "",
     # "MovetoHome", 1, "", 255, TRUE, 1, 0, FALSE, 210];`). No text found gives the
