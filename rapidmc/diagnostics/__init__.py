@@ -62,7 +62,7 @@ BAD_CHARACTER = _code("RMC102", "bad-character", "a character that cannot start 
 BAD_STRING = _code("RMC103", "bad-string", "malformed string literal (escape, newline, or longer than 80 characters)")
 BAD_NUMBER = _code("RMC104", "bad-number", "malformed or out-of-range numeric literal")
 IDENTIFIER_TOO_LONG = _code("RMC105", "identifier-too-long", "identifier longer than 32 characters")
-PLACEHOLDER = _code("RMC106", "placeholder", "an editor placeholder such as <SMT> cannot be analysed")
+PLACEHOLDER = _code("RMC106", "placeholder", "an editor placeholder where no construct can stand in for it (<ID> as a declared name, <PAR>)")
 UNEXPECTED_EOF = _code("RMC107", "unexpected-eof", "the file ends inside a construct")
 
 # --- static semantics (2xx) ---------------------------------------------------
