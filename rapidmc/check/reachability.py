@@ -38,7 +38,7 @@ from .transition_system import TransitionSystem, Valuation, as_sequence
 from .progress import Progress
 from .graph_store import ExploredGraph
 from .hashed import hashed_reachable, visited_sets
-from .states import StateTable
+from .native import engine_of, state_table
 from .store import unique
 from .result import (HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep,
                      SearchResult, SearchStats)
@@ -100,7 +100,7 @@ class _BreadthFirst:
         self.predicate = predicate
         self.budget = budget
         self.deadlock_is_target = deadlock_is_target
-        self.states = StateTable(system)
+        self.states = state_table(system)
         self.graph = ExploredGraph(system, self.states, record) if record is not None else None
         self.parent = array("i")          # by id; -1 for initial states
         self.depth = array("i")
@@ -119,7 +119,8 @@ class _BreadthFirst:
         return SearchStats(product_states=stored, model_states=stored,
                            transitions=self.transitions, max_depth=depth,
                            deadlocks=self.deadlocks,
-                           bytes_per_state=memory / stored if stored else 0.0)
+                           bytes_per_state=memory / stored if stored else 0.0,
+                           engine=engine_of(self.states))
 
     def _store(self, state: Hashable, parent: int) -> tuple[int, bool]:
         """The state's id and whether it is new; id -1 when new and the budget is spent."""
