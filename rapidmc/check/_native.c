@@ -66,6 +66,34 @@ static void vector_free(Int64Vector *vector)
     vector->length = vector->capacity = 0;
 }
 
+typedef struct {          /* the same for numbers below 2**31: half the memory */
+    int32_t *items;
+    Py_ssize_t length, capacity;
+} Int32Vector;
+
+static int vector32_push(Int32Vector *vector, int64_t item)
+{
+    if (vector->length == vector->capacity) {
+        Py_ssize_t capacity = vector->capacity ? vector->capacity * 2 : 256;
+        int32_t *items = PyMem_Realloc(vector->items, capacity * sizeof(int32_t));
+        if (items == NULL) {
+            PyErr_NoMemory();
+            return -1;
+        }
+        vector->items = items;
+        vector->capacity = capacity;
+    }
+    vector->items[vector->length++] = (int32_t)item;
+    return 0;
+}
+
+static void vector32_free(Int32Vector *vector)
+{
+    PyMem_Free(vector->items);
+    vector->items = NULL;
+    vector->length = vector->capacity = 0;
+}
+
 /* ======================================================================== Table */
 
 typedef struct {
@@ -503,10 +531,11 @@ typedef struct {
     Py_ssize_t number_length;
     uint8_t *dead;                   /* by number: 1 once its component is complete */
     Py_ssize_t stored, dead_capacity;
-    Int64Vector active, roots;       /* numbers of live states; of component roots */
+    Int32Vector active, roots;       /* numbers of live states; of component roots */
     uint8_t *root_accepting;         /* parallel to roots */
     Py_ssize_t root_accepting_capacity;
-    Int64Vector path_keys, path_starts, pending;
+    Int64Vector path_keys, pending;  /* the DFS path; the successors still to try */
+    Int32Vector path_starts;         /* by path position: its first entry in pending */
     long long transitions, max_depth;
 } CycleSearch;
 
@@ -556,10 +585,10 @@ static void CycleSearch_dealloc(CycleSearch *self)
     PyMem_Free(self->number);
     PyMem_Free(self->dead);
     PyMem_Free(self->root_accepting);
-    vector_free(&self->active);
-    vector_free(&self->roots);
+    vector32_free(&self->active);
+    vector32_free(&self->roots);
     vector_free(&self->path_keys);
-    vector_free(&self->path_starts);
+    vector32_free(&self->path_starts);
     vector_free(&self->pending);
     Py_TYPE(self)->tp_free((PyObject *)self);
 }
@@ -584,7 +613,7 @@ static int cover_key(CycleSearch *self, int64_t key)
 
 static int push_root(CycleSearch *self, int64_t index, uint8_t accepting)
 {
-    if (vector_push(&self->roots, index) < 0)
+    if (vector32_push(&self->roots, index) < 0)
         return -1;
     if (self->roots.length > self->root_accepting_capacity) {
         Py_ssize_t capacity = self->roots.capacity;
@@ -676,7 +705,7 @@ static int explore_from(CycleSearch *self, int64_t initial_key)
         if (key >= 0) {         /* push: number it, put its successors on ``pending`` */
             int64_t index = self->stored;
             self->number[key] = (int32_t)index;
-            if (push_dead(self) < 0 || vector_push(&self->active, index) < 0 ||
+            if (push_dead(self) < 0 || vector32_push(&self->active, index) < 0 ||
                 push_root(self, index, accepting[key % width]) < 0)
                 return -1;
             PyObject *number = PyLong_FromLongLong(key);
@@ -691,7 +720,7 @@ static int explore_from(CycleSearch *self, int64_t initial_key)
                 PyErr_SetString(PyExc_TypeError, "successor_keys must return a list");
                 return -1;
             }
-            if (vector_push(&self->path_starts, self->pending.length) < 0) {
+            if (vector32_push(&self->path_starts, self->pending.length) < 0) {
                 Py_DECREF(successors);
                 return -1;
             }
@@ -737,7 +766,7 @@ static int explore_from(CycleSearch *self, int64_t initial_key)
             }
             else if (!self->dead[index]) {
                 uint8_t merged = 0;
-                int64_t *roots = self->roots.items;
+                int32_t *roots = self->roots.items;
                 while (roots[self->roots.length - 1] > index) {
                     self->roots.length--;
                     merged |= self->root_accepting[self->roots.length];
@@ -827,8 +856,9 @@ static PyObject *CycleSearch_number_of(CycleSearch *self, PyObject *argument)
 static PyObject *CycleSearch_counts(CycleSearch *self, PyObject *unused)
 {
     size_t bytes = self->number_length * sizeof(int32_t) + self->dead_capacity +
-                   (self->active.capacity + self->roots.capacity + self->path_keys.capacity +
-                    self->path_starts.capacity + self->pending.capacity) * sizeof(int64_t) +
+                   (self->active.capacity + self->roots.capacity + self->path_starts.capacity) *
+                   sizeof(int32_t) +
+                   (self->path_keys.capacity + self->pending.capacity) * sizeof(int64_t) +
                    self->root_accepting_capacity;
     return Py_BuildValue("{sn,sL,sL,sn}", "stored", self->stored, "transitions",
                          self->transitions, "max_depth", self->max_depth, "bytes",
@@ -861,6 +891,209 @@ static PyTypeObject CycleSearchType = {
     .tp_methods = CycleSearch_methods,
 };
 
+/* ================================================================ breadth first */
+
+/* an integer attribute of ``object``; INT64_MAX for infinity (a float); -1 with an error */
+static int64_t integer_attribute(PyObject *object, const char *name)
+{
+    PyObject *value = PyObject_GetAttrString(object, name);
+    if (value == NULL)
+        return -1;
+    int64_t number = INT64_MAX;
+    if (PyLong_Check(value))
+        number = PyLong_AsLongLong(value);
+    else if (PyFloat_Check(value) && PyFloat_AS_DOUBLE(value) < 9e18)
+        number = (int64_t)PyFloat_AS_DOUBLE(value);
+    Py_DECREF(value);
+    return number;
+}
+
+/* whether ``budget.reason`` is set (-1 with an error) */
+static int budget_stopped(PyObject *budget)
+{
+    PyObject *reason = PyObject_GetAttrString(budget, "reason");
+    if (reason == NULL)
+        return -1;
+    int stopped = reason != Py_None;
+    Py_DECREF(reason);
+    return stopped;
+}
+
+/* ``sequence.append(number)`` for an array of ints */
+static int append_number(PyObject *sequence, int64_t number)
+{
+    PyObject *item = PyLong_FromLongLong(number);
+    if (item == NULL)
+        return -1;
+    PyObject *done = PyObject_CallMethod(sequence, "append", "(O)", item);
+    Py_DECREF(item);
+    if (done == NULL)
+        return -1;
+    Py_DECREF(done);
+    return 0;
+}
+
+typedef struct {                 /* what one run of the breadth-first loop works with */
+    Table *table;
+    PyObject *targets_of, *observe, *predicate, *parent, *depth, *budget, *record;
+    int deadlock_is_target;
+    Int32Vector depths;          /* a native copy of ``depth`` */
+    int64_t max_states, next_checkpoint;
+    long long transitions, deadlocks;
+} BreadthFirst;
+
+enum { GO_ON = 0, FOUND = 1, STOPPED = 2, FAILED = -1 };
+
+/* Store one successor of ``frontier`` (its id in ``*id``): GO_ON, FOUND (the predicate
+ * holds there), STOPPED (the budget says so) or FAILED. */
+static int visit_successor(BreadthFirst *search, Py_ssize_t frontier, PyObject *successor,
+                           Py_ssize_t *id)
+{
+    Py_ssize_t stored = search->table->count;
+    int is_new = 0;
+    *id = table_intern(search->table, successor, stored < search->max_states, &is_new);
+    if (*id == -2)
+        return FAILED;
+    if (!is_new)
+        return GO_ON;
+    if (*id < 0) {              /* the state limit: ``may_store`` sets the reason */
+        PyObject *answer = PyObject_CallMethod(search->budget, "may_store", "(n)", stored);
+        Py_XDECREF(answer);
+        return answer == NULL ? FAILED : STOPPED;
+    }
+    int32_t depth = search->depths.items[frontier] + 1;
+    if (append_number(search->parent, frontier) < 0 || append_number(search->depth, depth) < 0 ||
+        vector32_push(&search->depths, depth) < 0)
+        return FAILED;
+    if (*id >= search->next_checkpoint) {
+        PyObject *answer = PyObject_CallMethod(search->budget, "checkpoint", "(nLi)", *id,
+                                               search->transitions, (int)depth);
+        if (answer == NULL)
+            return FAILED;
+        Py_DECREF(answer);
+        search->next_checkpoint = integer_attribute(search->budget, "next_checkpoint");
+        if (search->next_checkpoint < 0)
+            return FAILED;
+    }
+    PyObject *answer = PyObject_CallOneArg(search->predicate, successor);
+    if (answer == NULL)
+        return FAILED;
+    int bad = PyObject_IsTrue(answer);
+    Py_DECREF(answer);
+    if (bad)
+        return bad < 0 ? FAILED : FOUND;
+    int stopped = budget_stopped(search->budget);
+    return stopped < 0 ? FAILED : stopped ? STOPPED : GO_ON;
+}
+
+/* Expand state ``frontier``: GO_ON, FOUND (``*target``), STOPPED or FAILED. */
+static int expand_state(BreadthFirst *search, Py_ssize_t frontier, Py_ssize_t *target)
+{
+    PyObject *state = table_state(search->table, frontier);
+    if (state == NULL)
+        return FAILED;
+    PyObject *successors = PyObject_CallOneArg(search->targets_of, state);
+    PyObject *ids = NULL;
+    int outcome = FAILED;
+    if (successors == NULL)
+        goto done;
+    if (!PyList_CheckExact(successors) && !PyTuple_CheckExact(successors)) {
+        PyErr_SetString(PyExc_TypeError, "successor_states must return a list or tuple");
+        goto done;
+    }
+    if (search->observe != Py_None) {
+        PyObject *seen = PyObject_CallFunctionObjArgs(search->observe, state, successors, NULL);
+        if (seen == NULL)
+            goto done;
+        Py_DECREF(seen);
+    }
+    Py_ssize_t count = PySequence_Fast_GET_SIZE(successors);
+    search->transitions += count;
+    if (count == 0) {
+        search->deadlocks++;
+        if (search->deadlock_is_target) {
+            *target = frontier;
+            outcome = FOUND;
+            goto done;
+        }
+    }
+    ids = PyList_New(0);
+    if (ids == NULL)
+        goto done;
+    for (Py_ssize_t i = 0; i < count; i++) {
+        Py_ssize_t id;
+        outcome = visit_successor(search, frontier, PySequence_Fast_GET_ITEM(successors, i), &id);
+        if (outcome == FOUND)
+            *target = id;
+        if (outcome != GO_ON)
+            goto done;
+        PyObject *number = PyLong_FromSsize_t(id);
+        if (number == NULL || PyList_Append(ids, number) < 0) {
+            Py_XDECREF(number);
+            outcome = FAILED;
+            goto done;
+        }
+        Py_DECREF(number);
+    }
+    outcome = GO_ON;
+    if (search->record != Py_None) {
+        PyObject *recorded = PyObject_CallFunctionObjArgs(search->record, state, ids, NULL);
+        if (recorded == NULL)
+            outcome = FAILED;
+        Py_XDECREF(recorded);
+    }
+done:
+    Py_DECREF(state);
+    Py_XDECREF(successors);
+    Py_XDECREF(ids);
+    return outcome;
+}
+
+static PyObject *breadth_first(PyObject *module, PyObject *args)
+{
+    BreadthFirst search = {0};
+    Py_ssize_t frontier;
+    if (!PyArg_ParseTuple(args, "O!nOOOOOOOiLL", &TableType, &search.table, &frontier,
+                          &search.targets_of, &search.observe, &search.predicate,
+                          &search.parent, &search.depth, &search.budget, &search.record,
+                          &search.deadlock_is_target, &search.transitions, &search.deadlocks))
+        return NULL;
+    Py_ssize_t known = PySequence_Length(search.depth);
+    if (known < 0)
+        return NULL;
+    for (Py_ssize_t i = 0; i < known; i++) {
+        PyObject *item = PySequence_GetItem(search.depth, i);
+        long depth = item == NULL ? -1 : PyLong_AsLong(item);
+        Py_XDECREF(item);
+        if ((depth == -1 && PyErr_Occurred()) || vector32_push(&search.depths, depth) < 0) {
+            vector32_free(&search.depths);
+            return NULL;
+        }
+    }
+    search.max_states = integer_attribute(search.budget, "max_states");
+    search.next_checkpoint = integer_attribute(search.budget, "next_checkpoint");
+    Py_ssize_t target = -1;
+    int outcome = search.max_states < 0 || search.next_checkpoint < 0 ? FAILED : GO_ON;
+    while (outcome == GO_ON && frontier < search.table->count) {
+        outcome = expand_state(&search, frontier, &target);
+        if (outcome == GO_ON)
+            frontier++;
+    }
+    vector32_free(&search.depths);
+    if (outcome == FAILED)
+        return NULL;
+    return Py_BuildValue("(nLL)", outcome == FOUND ? target : -1, search.transitions,
+                         search.deadlocks);
+}
+
+static PyMethodDef module_functions[] = {
+    {"breadth_first", breadth_first, METH_VARARGS,
+     "breadth_first(table, frontier, targets_of, observe, predicate, parent, depth, budget, "
+     "record, deadlock_is_target, transitions, deadlocks) -> (target id or -1, transitions, "
+     "deadlocks): reachability's loop from ``frontier`` on (see reachability.py)."},
+    {NULL}
+};
+
 /* ====================================================================== module */
 
 static struct PyModuleDef native_module = {
@@ -868,6 +1101,7 @@ static struct PyModuleDef native_module = {
     .m_name = "rapidmc.check._native",
     .m_doc = "The compiled search core of rapidmc (see rapidmc/check/native.py).",
     .m_size = -1,
+    .m_methods = module_functions,
 };
 
 PyMODINIT_FUNC PyInit__native(void)

@@ -38,7 +38,7 @@ from .transition_system import TransitionSystem, Valuation, as_sequence
 from .progress import Progress
 from .graph_store import ExploredGraph
 from .hashed import hashed_reachable, visited_sets
-from .native import engine_of, state_table
+from .native import NATIVE, _native, engine_of, state_table
 from .store import unique
 from .result import (HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep,
                      SearchResult, SearchStats)
@@ -168,7 +168,10 @@ class _BreadthFirst:
         record = self.graph.adder() if self.graph is not None else None
         stored = len(table)
         frontier = 0
+        native = engine_of(table) == NATIVE
         while frontier < stored and budget.reason is None:
+            if unlabelled and native:     # the same loop in the compiled core from here on
+                return self._expand_natively(frontier, record)
             state = table[frontier]
             if unlabelled:
                 successors = targets_of(state)
@@ -207,6 +210,16 @@ class _BreadthFirst:
                 record(state, ids)
             frontier += 1
         return None
+
+    def _expand_natively(self, frontier: int, record) -> Optional[int]:
+        """``_expand_all``'s unlabelled loop from ``frontier`` on, in the compiled core
+        (``_native.breadth_first``): the same states, ids, calls and counts."""
+        observe = self.observe.states if self.observe is not None else None
+        target, self.transitions, self.deadlocks = _native.breadth_first(
+            self.states, frontier, self.system.successor_states, observe, self.predicate,
+            self.parent, self.depth, self.budget, record, self.deadlock_is_target,
+            self.transitions, self.deadlocks)
+        return target if target >= 0 else None
 
     def path_to(self, state_id: int) -> list[LassoStep]:
         """The steps from an initial state to ``state_id`` with their labels."""
