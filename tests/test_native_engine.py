@@ -21,12 +21,16 @@ import subprocess
 import sys
 
 import pytest
+from hypothesis import given, strategies as st
 
 from rapidmc.check import check_property, find_reachable, native
 from rapidmc.check.states import StateTable
 from rapidmc.cli import main
 
+from fuzz_invoke import assert_acceptable, invoke
+from fuzz_programs import programs
 from reduction_programs import properties, random_program
+from test_fuzz import STDIN, domains, formula_texts, fuzz_settings, write
 from test_case_studies import CASES, ROOT
 from test_check_cases import verdict_cases
 from test_graph_reuse import COUNTERS, case_arguments, model_of, report, without_measurements
@@ -78,6 +82,41 @@ def test_generated_programs_report_the_same_with_both_engines(seed, tmp_path, mo
     argv = ["random.mod", "--ltl", "props.ltl", "--max-states", "20000"]
     document = assert_same_reports(argv, monkeypatch, reuse=seed % 3 != 0)
     assert document["properties"], "the program's properties were checked"
+
+
+@needs_native
+@fuzz_settings(40)
+@given(programs(), st.data())
+def test_fuzzed_programs_answer_the_same_with_both_engines(program, data):
+    """The fuzzer's generated programs (tests/test_fuzz.py), checked by both engines: the
+    same exit code, stderr and JSON report (measurements and the engine's name aside)."""
+    path = write("engines.mod", program.text)
+    formula = data.draw(formula_texts(program.atoms))
+    # (a state bound, no time bound: a time bound could stop the engines at different states)
+    argv = ["check", "--max-states", "2000", "--quiet", *domains(program.text), "--format",
+            "json", "--formula", "p: G F true", "--formula", f"q: {formula}", path]
+    outcomes = {}
+    before = native.engine()
+    try:
+        for engine in native.ENGINES:
+            outcome = invoke(argv + ["--engine", engine], STDIN)
+            assert_acceptable(outcome)
+            outcomes[engine] = (outcome.exit_code, outcome.stderr, comparable(outcome.stdout))
+    finally:
+        native.use_engine(before)
+    assert outcomes[native.NATIVE] == outcomes[native.PYTHON]
+
+
+def comparable(stdout: str):
+    """A JSON report without what differs between engines (or the text, when not JSON)."""
+    try:
+        document = json.loads(stdout)
+    except ValueError:
+        return stdout
+    document.pop("command", None)
+    for entry in document.get("properties", []):
+        entry["stats"].pop("engine", None)
+    return without_measurements(document)
 
 
 @needs_native
