@@ -43,35 +43,7 @@ static uint64_t mix64(uint64_t x)
 
 /* ------------------------------------------------------------- growable arrays */
 
-typedef struct {
-    int64_t *items;
-    Py_ssize_t length, capacity;
-} Int64Vector;
-
-static int vector_push(Int64Vector *vector, int64_t item)
-{
-    if (vector->length == vector->capacity) {
-        Py_ssize_t capacity = vector->capacity ? vector->capacity * 2 : 256;
-        int64_t *items = PyMem_Realloc(vector->items, capacity * sizeof(int64_t));
-        if (items == NULL) {
-            PyErr_NoMemory();
-            return -1;
-        }
-        vector->items = items;
-        vector->capacity = capacity;
-    }
-    vector->items[vector->length++] = item;
-    return 0;
-}
-
-static void vector_free(Int64Vector *vector)
-{
-    PyMem_Free(vector->items);
-    vector->items = NULL;
-    vector->length = vector->capacity = 0;
-}
-
-typedef struct {          /* the same for numbers below 2**31: half the memory */
+typedef struct {          /* a growable array of numbers below 2**31 */
     int32_t *items;
     Py_ssize_t length, capacity;
 } Int32Vector;
@@ -539,8 +511,9 @@ typedef struct {
     Int32Vector active, roots;       /* numbers of live states; of component roots */
     uint8_t *root_accepting;         /* parallel to roots */
     Py_ssize_t root_accepting_capacity;
-    Int64Vector path_keys, pending;  /* the DFS path; the successors still to try */
-    Int32Vector path_starts;         /* by path position: its first entry in pending */
+    /* the DFS path, the successors still to try (keys: below 2**31, as numbers are) and by
+     * path position the first of its entries in pending */
+    Int32Vector path_keys, pending, path_starts;
     long long transitions, max_depth;
 } CycleSearch;
 
@@ -592,9 +565,9 @@ static void CycleSearch_dealloc(CycleSearch *self)
     PyMem_Free(self->root_accepting);
     vector32_free(&self->active);
     vector32_free(&self->roots);
-    vector_free(&self->path_keys);
+    vector32_free(&self->path_keys);
     vector32_free(&self->path_starts);
-    vector_free(&self->pending);
+    vector32_free(&self->pending);
     Py_TYPE(self)->tp_free((PyObject *)self);
 }
 
@@ -733,14 +706,17 @@ static int explore_from(CycleSearch *self, int64_t initial_key)
             self->transitions += count;
             for (Py_ssize_t i = count - 1; i >= 0; i--) {
                 int64_t successor = PyLong_AsLongLong(PyList_GET_ITEM(successors, i));
-                if ((successor == -1 && PyErr_Occurred()) || cover_key(self, successor) < 0 ||
-                    vector_push(&self->pending, successor) < 0) {
+                if (successor > INT32_MAX && !PyErr_Occurred())
+                    PyErr_SetString(PyExc_OverflowError, "product key beyond 2**31 "
+                                    "(the Python engine takes it: --engine python)");
+                if (PyErr_Occurred() || cover_key(self, successor) < 0 ||
+                    vector32_push(&self->pending, successor) < 0) {
                     Py_DECREF(successors);
                     return -1;
                 }
             }
             Py_DECREF(successors);
-            if (vector_push(&self->path_keys, key) < 0)
+            if (vector32_push(&self->path_keys, key) < 0)
                 return -1;
             if (self->path_keys.length > self->max_depth)
                 self->max_depth = self->path_keys.length;
@@ -834,6 +810,10 @@ static PyObject *CycleSearch_explore_from(CycleSearch *self, PyObject *argument)
     int64_t key = PyLong_AsLongLong(argument);
     if (key == -1 && PyErr_Occurred())
         return NULL;
+    if (key < 0 || key > INT32_MAX) {
+        PyErr_SetString(PyExc_OverflowError, "product key beyond 2**31");
+        return NULL;
+    }
     int found = explore_from(self, key);
     if (found < 0)
         return NULL;
@@ -861,9 +841,8 @@ static PyObject *CycleSearch_number_of(CycleSearch *self, PyObject *argument)
 static PyObject *CycleSearch_counts(CycleSearch *self, PyObject *unused)
 {
     size_t bytes = self->number_length * sizeof(int32_t) + self->dead_capacity +
-                   (self->active.capacity + self->roots.capacity + self->path_starts.capacity) *
-                   sizeof(int32_t) +
-                   (self->path_keys.capacity + self->pending.capacity) * sizeof(int64_t) +
+                   (self->active.capacity + self->roots.capacity + self->path_starts.capacity +
+                    self->path_keys.capacity + self->pending.capacity) * sizeof(int32_t) +
                    self->root_accepting_capacity;
     return Py_BuildValue("{sn,sL,sL,sn}", "stored", self->stored, "transitions",
                          self->transitions, "max_depth", self->max_depth, "bytes",
@@ -938,11 +917,15 @@ static int append_number(PyObject *sequence, int64_t number)
     return 0;
 }
 
+/* Depths without an array: a breadth-first search stores states level by level, so the
+ * states of the level being expanded end where the stored states ended when its first
+ * state was expanded (``level_end``), and each new state is one level deeper. */
 typedef struct {                 /* what one run of the breadth-first loop works with */
     Table *table;
     PyObject *targets_of, *observe, *predicate, *parent, *depth, *budget, *record;
     int deadlock_is_target;
-    Int32Vector depths;          /* a native copy of ``depth`` */
+    long depth_now, deepest;     /* the depth of the states expanded now; of the last stored */
+    Py_ssize_t level_end;        /* the first id one level deeper than depth_now */
     int64_t max_states, next_checkpoint;
     long long transitions, deadlocks;
 } BreadthFirst;
@@ -966,9 +949,8 @@ static int visit_successor(BreadthFirst *search, Py_ssize_t frontier, PyObject *
         Py_XDECREF(answer);
         return answer == NULL ? FAILED : STOPPED;
     }
-    int32_t depth = search->depths.items[frontier] + 1;
-    if (append_number(search->parent, frontier) < 0 || append_number(search->depth, depth) < 0 ||
-        vector32_push(&search->depths, depth) < 0)
+    long depth = search->deepest = search->depth_now + 1;
+    if (append_number(search->parent, frontier) < 0)
         return FAILED;
     if (*id >= search->next_checkpoint) {
         PyObject *answer = PyObject_CallMethod(search->budget, "checkpoint", "(nLi)", *id,
@@ -1054,6 +1036,39 @@ done:
     return outcome;
 }
 
+/* depth[index] of the depth array (-1 with an error) */
+static long depth_at(PyObject *depth, Py_ssize_t index)
+{
+    PyObject *item = PySequence_GetItem(depth, index);
+    long value = item == NULL ? -1 : PyLong_AsLong(item);
+    Py_XDECREF(item);
+    return value;
+}
+
+/* The levels where the loop takes over: the depth of ``frontier`` and where its level
+ * ends, from the depths the Python loop stored (0 or -1 with an error). */
+static int find_level(BreadthFirst *search, Py_ssize_t frontier)
+{
+    Py_ssize_t known = PySequence_Length(search->depth);
+    if (known <= frontier) {
+        PyErr_SetString(PyExc_ValueError, "breadth_first: the frontier has no depth");
+        return -1;
+    }
+    if ((search->depth_now = depth_at(search->depth, frontier)) < 0 ||
+        (search->deepest = depth_at(search->depth, known - 1)) < 0)
+        return -1;
+    search->level_end = frontier + 1;
+    while (search->level_end < known) {
+        long depth = depth_at(search->depth, search->level_end);
+        if (depth < 0)
+            return -1;
+        if (depth > search->depth_now)
+            break;
+        search->level_end++;
+    }
+    return 0;
+}
+
 static PyObject *breadth_first(PyObject *module, PyObject *args)
 {
     BreadthFirst search = {0};
@@ -1063,39 +1078,36 @@ static PyObject *breadth_first(PyObject *module, PyObject *args)
                           &search.parent, &search.depth, &search.budget, &search.record,
                           &search.deadlock_is_target, &search.transitions, &search.deadlocks))
         return NULL;
-    Py_ssize_t known = PySequence_Length(search.depth);
-    if (known < 0)
+    if (frontier >= search.table->count)
+        return Py_BuildValue("(nLLl)", (Py_ssize_t)-1, search.transitions, search.deadlocks,
+                             -1L);
+    if (find_level(&search, frontier) < 0)
         return NULL;
-    for (Py_ssize_t i = 0; i < known; i++) {
-        PyObject *item = PySequence_GetItem(search.depth, i);
-        long depth = item == NULL ? -1 : PyLong_AsLong(item);
-        Py_XDECREF(item);
-        if ((depth == -1 && PyErr_Occurred()) || vector32_push(&search.depths, depth) < 0) {
-            vector32_free(&search.depths);
-            return NULL;
-        }
-    }
     search.max_states = integer_attribute(search.budget, "max_states");
     search.next_checkpoint = integer_attribute(search.budget, "next_checkpoint");
     Py_ssize_t target = -1;
     int outcome = search.max_states < 0 || search.next_checkpoint < 0 ? FAILED : GO_ON;
     while (outcome == GO_ON && frontier < search.table->count) {
+        if (frontier == search.level_end) {     /* the next level's first state */
+            search.depth_now++;
+            search.level_end = search.table->count;
+        }
         outcome = expand_state(&search, frontier, &target);
         if (outcome == GO_ON)
             frontier++;
     }
-    vector32_free(&search.depths);
     if (outcome == FAILED)
         return NULL;
-    return Py_BuildValue("(nLL)", outcome == FOUND ? target : -1, search.transitions,
-                         search.deadlocks);
+    return Py_BuildValue("(nLLl)", outcome == FOUND ? target : -1, search.transitions,
+                         search.deadlocks, search.deepest);
 }
 
 static PyMethodDef module_functions[] = {
     {"breadth_first", breadth_first, METH_VARARGS,
      "breadth_first(table, frontier, targets_of, observe, predicate, parent, depth, budget, "
      "record, deadlock_is_target, transitions, deadlocks) -> (target id or -1, transitions, "
-     "deadlocks): reachability's loop from ``frontier`` on (see reachability.py)."},
+     "deadlocks, depth of the last stored state): reachability's loop from ``frontier`` on "
+     "(see reachability.py); ``depth`` is read, not extended."},
     {NULL}
 };
 

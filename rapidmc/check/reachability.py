@@ -104,11 +104,12 @@ class _BreadthFirst:
         self.graph = ExploredGraph(system, self.states, record) if record is not None else None
         self.parent = array("i")          # by id; -1 for initial states
         self.depth = array("i")
+        self.deepest = -1                 # the last state's depth, stored by the native loop
         self.transitions = 0
         self.deadlocks = 0
 
     def stats(self) -> SearchStats:
-        depth = max(self.depth) + 1 if self.depth else 0
+        depth = max(max(self.depth, default=-1), self.deepest) + 1
         stored = len(self.states)
         table = self.states.memory_bytes()
         memory = table + len(self.parent) * self.parent.itemsize + \
@@ -213,9 +214,10 @@ class _BreadthFirst:
 
     def _expand_natively(self, frontier: int, record) -> Optional[int]:
         """``_expand_all``'s unlabelled loop from ``frontier`` on, in the compiled core
-        (``_native.breadth_first``): the same states, ids, calls and counts."""
+        (``_native.breadth_first``): the same states, ids, calls and counts; the depths of
+        the states it stores are not kept (they grow level by level: only the last one's)."""
         observe = self.observe.states if self.observe is not None else None
-        target, self.transitions, self.deadlocks = _native.breadth_first(
+        target, self.transitions, self.deadlocks, self.deepest = _native.breadth_first(
             self.states, frontier, self.system.successor_states, observe, self.predicate,
             self.parent, self.depth, self.budget, record, self.deadlock_is_target,
             self.transitions, self.deadlocks)
