@@ -43,6 +43,22 @@ static uint64_t mix64(uint64_t x)
 
 /* ------------------------------------------------------------- growable arrays */
 
+/* ``items`` (``*capacity`` items of ``size`` bytes) with room for ``wanted`` items, moved
+ * when they are doubled (from 256) until they fit; NULL when out of memory. */
+static void *reserve(void *items, Py_ssize_t *capacity, size_t size, Py_ssize_t wanted)
+{
+    if (wanted <= *capacity)
+        return items;
+    Py_ssize_t grown = *capacity ? *capacity : 256;
+    while (grown < wanted)
+        grown *= 2;
+    void *moved = PyMem_Realloc(items, grown * size);
+    if (moved == NULL)
+        return PyErr_NoMemory();
+    *capacity = grown;
+    return moved;
+}
+
 typedef struct {          /* a growable array of numbers below 2**31 */
     int32_t *items;
     Py_ssize_t length, capacity;
@@ -50,16 +66,11 @@ typedef struct {          /* a growable array of numbers below 2**31 */
 
 static int vector32_push(Int32Vector *vector, int64_t item)
 {
-    if (vector->length == vector->capacity) {
-        Py_ssize_t capacity = vector->capacity ? vector->capacity * 2 : 256;
-        int32_t *items = PyMem_Realloc(vector->items, capacity * sizeof(int32_t));
-        if (items == NULL) {
-            PyErr_NoMemory();
-            return -1;
-        }
-        vector->items = items;
-        vector->capacity = capacity;
-    }
+    int32_t *items = reserve(vector->items, &vector->capacity, sizeof(int32_t),
+                             vector->length + 1);
+    if (items == NULL)
+        return -1;
+    vector->items = items;
     vector->items[vector->length++] = (int32_t)item;
     return 0;
 }
@@ -255,22 +266,33 @@ static Py_ssize_t tail_id(Table *self, PyObject *parts)
     return found;
 }
 
-static int grow_heads(Table *self)
+static uint64_t head_key(Table *self, Py_ssize_t head)
 {
-    uint64_t capacity = (self->head_mask + 1) * 2;
-    int32_t *slots = new_slots(capacity);
-    if (slots == NULL)
+    return ((uint64_t)self->head_first[head] << 32) | (uint32_t)self->head_tail[head];
+}
+
+static uint64_t state_key(Table *self, Py_ssize_t id)
+{
+    return (uint64_t)self->keys[id];
+}
+
+/* ``*slots`` (an index of ``count`` entries whose keys ``key_of`` gives) twice as large */
+static int grow_index(Table *self, int32_t **slots, uint64_t *mask, Py_ssize_t count,
+                      uint64_t (*key_of)(Table *, Py_ssize_t))
+{
+    uint64_t capacity = (*mask + 1) * 2;
+    int32_t *grown = new_slots(capacity);
+    if (grown == NULL)
         return -1;
-    for (Py_ssize_t head = 0; head < self->heads; head++) {
-        uint64_t position = mix64(((uint64_t)self->head_first[head] << 32) |
-                                  (uint32_t)self->head_tail[head]) & (capacity - 1);
-        while (slots[position] != EMPTY)
+    for (Py_ssize_t entry = 0; entry < count; entry++) {
+        uint64_t position = mix64(key_of(self, entry)) & (capacity - 1);
+        while (grown[position] != EMPTY)
             position = (position + 1) & (capacity - 1);
-        slots[position] = (int32_t)head;
+        grown[position] = (int32_t)entry;
     }
-    PyMem_Free(self->head_slots);
-    self->head_slots = slots;
-    self->head_mask = capacity - 1;
+    PyMem_Free(*slots);
+    *slots = grown;
+    *mask = capacity - 1;
     return 0;
 }
 
@@ -287,46 +309,25 @@ static Py_ssize_t head_id(Table *self, Py_ssize_t first, Py_ssize_t tail)
         position = (position + 1) & self->head_mask;
     }
     if (self->heads == self->head_capacity) {
-        Py_ssize_t capacity = self->head_capacity ? self->head_capacity * 2 : 256;
-        int32_t *firsts = PyMem_Realloc(self->head_first, capacity * sizeof(int32_t));
-        if (firsts == NULL) {
-            PyErr_NoMemory();
+        Py_ssize_t capacity = self->head_capacity;     /* (both arrays grow alike) */
+        int32_t *firsts = reserve(self->head_first, &capacity, sizeof(int32_t), self->heads + 1);
+        if (firsts == NULL)
             return -1;
-        }
         self->head_first = firsts;
-        int32_t *tails = PyMem_Realloc(self->head_tail, capacity * sizeof(int32_t));
-        if (tails == NULL) {
-            PyErr_NoMemory();
+        int32_t *tails = reserve(self->head_tail, &self->head_capacity, sizeof(int32_t),
+                                 self->heads + 1);
+        if (tails == NULL)
             return -1;
-        }
         self->head_tail = tails;
-        self->head_capacity = capacity;
     }
     Py_ssize_t head = self->heads++;
     self->head_first[head] = (int32_t)first;
     self->head_tail[head] = (int32_t)tail;
     self->head_slots[position] = (int32_t)head;
-    if ((uint64_t)self->heads * 2 > self->head_mask + 1 && grow_heads(self) < 0)
+    if ((uint64_t)self->heads * 2 > self->head_mask + 1 &&
+        grow_index(self, &self->head_slots, &self->head_mask, self->heads, head_key) < 0)
         return -1;
     return head;
-}
-
-static int grow_slots(Table *self)
-{
-    uint64_t capacity = (self->mask + 1) * 2;
-    int32_t *slots = new_slots(capacity);
-    if (slots == NULL)
-        return -1;
-    for (Py_ssize_t id = 0; id < self->count; id++) {
-        uint64_t position = mix64((uint64_t)self->keys[id]) & (capacity - 1);
-        while (slots[position] != EMPTY)
-            position = (position + 1) & (capacity - 1);
-        slots[position] = (int32_t)id;
-    }
-    PyMem_Free(self->slots);
-    self->slots = slots;
-    self->mask = capacity - 1;
-    return 0;
 }
 
 /* The id of ``state`` (-1 when new and not ``add``; -2 on an error); ``*is_new`` says
@@ -386,7 +387,8 @@ static Py_ssize_t table_intern(Table *self, PyObject *state, int add, int *is_ne
     Py_ssize_t id = self->count++;
     self->keys[id] = key;
     self->slots[position] = (int32_t)id;
-    if ((uint64_t)self->count * 4 > (self->mask + 1) * 3 && grow_slots(self) < 0)
+    if ((uint64_t)self->count * 4 > (self->mask + 1) * 3 &&
+        grow_index(self, &self->slots, &self->mask, self->count, state_key) < 0)
         return -2;
     return id;
 failed:
@@ -593,32 +595,21 @@ static int push_root(CycleSearch *self, int64_t index, uint8_t accepting)
 {
     if (vector32_push(&self->roots, index) < 0)
         return -1;
-    if (self->roots.length > self->root_accepting_capacity) {
-        Py_ssize_t capacity = self->roots.capacity;
-        uint8_t *flags = PyMem_Realloc(self->root_accepting, capacity);
-        if (flags == NULL) {
-            PyErr_NoMemory();
-            return -1;
-        }
-        self->root_accepting = flags;
-        self->root_accepting_capacity = capacity;
-    }
+    uint8_t *flags = reserve(self->root_accepting, &self->root_accepting_capacity, 1,
+                             self->roots.length);
+    if (flags == NULL)
+        return -1;
+    self->root_accepting = flags;
     self->root_accepting[self->roots.length - 1] = accepting;
     return 0;
 }
 
 static int push_dead(CycleSearch *self)
 {
-    if (self->stored == self->dead_capacity) {
-        Py_ssize_t capacity = self->dead_capacity ? self->dead_capacity * 2 : 1024;
-        uint8_t *dead = PyMem_Realloc(self->dead, capacity);
-        if (dead == NULL) {
-            PyErr_NoMemory();
-            return -1;
-        }
-        self->dead = dead;
-        self->dead_capacity = capacity;
-    }
+    uint8_t *dead = reserve(self->dead, &self->dead_capacity, 1, self->stored + 1);
+    if (dead == NULL)
+        return -1;
+    self->dead = dead;
     self->dead[self->stored++] = 0;
     return 0;
 }
@@ -647,35 +638,43 @@ static int budget_says(CycleSearch *self, const char *name, const char *format, 
     return truth;
 }
 
-/* an integer attribute of the budget; INT64_MAX for infinity or None */
-static int64_t budget_number(CycleSearch *self, const char *name, int *failed)
+/* an integer attribute of ``object``; INT64_MAX for infinity (a float); -1 with an error */
+static int64_t integer_attribute(PyObject *object, const char *name)
 {
-    PyObject *value = PyObject_GetAttrString(self->budget, name);
-    if (value == NULL) {
-        *failed = 1;
-        return 0;
-    }
+    PyObject *value = PyObject_GetAttrString(object, name);
+    if (value == NULL)
+        return -1;
     int64_t number = INT64_MAX;
     if (PyLong_Check(value))
         number = PyLong_AsLongLong(value);
     else if (PyFloat_Check(value) && PyFloat_AS_DOUBLE(value) < 9e18)
         number = (int64_t)PyFloat_AS_DOUBLE(value);
     Py_DECREF(value);
-    if (number == -1 && PyErr_Occurred())
-        *failed = 1;
     return number;
 }
 
+/* whether ``budget.reason`` is set (-1 with an error) */
+static int budget_stopped(PyObject *budget)
+{
+    PyObject *reason = PyObject_GetAttrString(budget, "reason");
+    if (reason == NULL)
+        return -1;
+    int stopped = reason != Py_None;
+    Py_DECREF(reason);
+    return stopped;
+}
+
 /* The search from one initial key: 1 when an accepting cycle closed (the path is left in
- * path_keys and the component on roots), 0 when done or stopped by the budget, -1 on error. */
+ * path_keys and the component on roots), 0 when done or stopped by the budget, -1 on error.
+ * One loop, step for step emptiness.py's ``_explore_from`` (push, try the next pending
+ * successor, pop), so that the two engines can be read side by side. */
 static int explore_from(CycleSearch *self, int64_t initial_key)
 {
     const uint8_t *accepting = (const uint8_t *)PyBytes_AS_STRING(self->accepting);
     int64_t width = self->width;
-    int failed = 0;
-    int64_t max_states = budget_number(self, "max_states", &failed);
-    int64_t next_checkpoint = budget_number(self, "next_checkpoint", &failed);
-    if (failed || cover_key(self, initial_key) < 0)
+    int64_t max_states = integer_attribute(self->budget, "max_states");
+    int64_t next_checkpoint = integer_attribute(self->budget, "next_checkpoint");
+    if (max_states < 0 || next_checkpoint < 0 || cover_key(self, initial_key) < 0)
         return -1;
     self->path_keys.length = self->path_starts.length = self->pending.length = 0;
     int64_t key = initial_key;
@@ -739,8 +738,8 @@ static int explore_from(CycleSearch *self, int64_t initial_key)
                                             self->transitions, self->path_keys.length);
                     if (going <= 0)
                         return going < 0 ? -1 : 0;
-                    next_checkpoint = budget_number(self, "next_checkpoint", &failed);
-                    if (failed)
+                    next_checkpoint = integer_attribute(self->budget, "next_checkpoint");
+                    if (next_checkpoint < 0)
                         return -1;
                 }
                 key = successor;
@@ -876,32 +875,6 @@ static PyTypeObject CycleSearchType = {
 };
 
 /* ================================================================ breadth first */
-
-/* an integer attribute of ``object``; INT64_MAX for infinity (a float); -1 with an error */
-static int64_t integer_attribute(PyObject *object, const char *name)
-{
-    PyObject *value = PyObject_GetAttrString(object, name);
-    if (value == NULL)
-        return -1;
-    int64_t number = INT64_MAX;
-    if (PyLong_Check(value))
-        number = PyLong_AsLongLong(value);
-    else if (PyFloat_Check(value) && PyFloat_AS_DOUBLE(value) < 9e18)
-        number = (int64_t)PyFloat_AS_DOUBLE(value);
-    Py_DECREF(value);
-    return number;
-}
-
-/* whether ``budget.reason`` is set (-1 with an error) */
-static int budget_stopped(PyObject *budget)
-{
-    PyObject *reason = PyObject_GetAttrString(budget, "reason");
-    if (reason == NULL)
-        return -1;
-    int stopped = reason != Py_None;
-    Py_DECREF(reason);
-    return stopped;
-}
 
 /* ``sequence.append(number)`` for an array of ints */
 static int append_number(PyObject *sequence, int64_t number)
