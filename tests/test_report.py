@@ -126,7 +126,7 @@ def test_deadlock_note_and_stuck_step():
 
 STEP_KEYS = ["index", "kind", "location", "source", "inputs", "changes", "output"]
 STATS_KEYS = ["product_states", "model_states", "transitions", "max_depth", "seconds",
-              "states_per_second", "deadlocks", "bytes_per_state"]
+              "states_per_second", "deadlocks", "bytes_per_state", "engine"]
 
 
 def test_json_follows_the_documented_schema():

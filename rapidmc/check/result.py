@@ -40,6 +40,7 @@ class SearchStats:
     seconds: float = 0.0
     deadlocks: int = 0
     bytes_per_state: float = 0.0     # memory of the stored states and search structures
+    engine: str = "python"           # "native" when the compiled core ran it (check.native)
 
     @property
     def states_per_second(self) -> float:
@@ -55,6 +56,7 @@ class SearchStats:
             "states_per_second": round(self.states_per_second),
             "deadlocks": self.deadlocks,
             "bytes_per_state": round(self.bytes_per_state),
+            "engine": self.engine,
         }
 
 

@@ -142,6 +142,7 @@ def check_options(args: argparse.Namespace) -> api.CheckOptions:
 
 def prepare_model(args: argparse.Namespace) -> api.Model:
     """The program and properties named by ``check``'s arguments, ready to search."""
+    storage_options.select_engine(args)
     properties = gather_properties(args)
     options = check_options(args)
     program = api.load_program(args.files, args.env, entry=args.entry, task=args.task,

@@ -115,6 +115,10 @@ USAGE = _code("RMC601", "usage", "bad command-line usage")
 NEVER_REACHED = _code("RMC701", "never-reached", "a statement no input sequence reaches (after a complete search)")
 FIXED_READING = _code("RMC702", "fixed-reading", "a controller reading the check takes as a fixed or sampled value")
 
+# --- the search engine (750-759) ---------------------------------------------------------
+NATIVE_ENGINE = _code("RMC750", "native-engine",
+                      "--engine native asked for, and the compiled search core is not built")
+
 
 @dataclass(frozen=True)
 class Diagnostic:
