@@ -93,7 +93,8 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
                                                   all_tasks=all_tasks, add_task=list(add_tasks)))
     environment = _parse_files(list(env)) if env else None
     return build(_parse_files(files.modules), entry=entry, environment=environment,
-                 options={"configured_signals": files.signals}, tasks=load_tasks(files))
+                 options={"configured_signals": files.signals,
+                          "configuration": files.configuration}, tasks=load_tasks(files))
 
 
 def read_properties(*paths: str) -> list[Property]:
