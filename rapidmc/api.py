@@ -36,6 +36,7 @@ from .model import reduction
 from .report.results import PropertyResult
 from .load.input_domains import Assumed, default_domains
 from .model.rapid_system import RapidDescriber, RapidSystem, replay, with_final_loop
+from .findings.assumptions import assumptions, for_verdict
 from .findings.fixed_readings import fixed_readings
 from .model.fairness import TaskFairness, assumes_fairness, fair_or_plain_search
 from .model.properties import AtomCompiler, Property, check_unique, parse_property, read_property_file
@@ -329,6 +330,8 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
                                           fairness.names if fairness is not None else ()))
     except EnvironmentFault as exc:
         raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
+    resting_on = assumptions(model.program)
+    results = [replace(r, assumes=for_verdict(resting_on, r.result, model.describer)) for r in results]
     warnings = [assumed.note() for assumed in model.assumed] + sorted(
         fixed_readings(model.program) + facts.warnings(),
         key=lambda d: (d.span.file, d.span.line, d.span.column))
