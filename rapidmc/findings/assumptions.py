@@ -123,9 +123,14 @@ def _identifiers(text: str) -> Iterator[str]:
 
 def _stub_files(program: Program) -> frozenset:
     """The files of the program that ``rapidmc stubs`` wrote (its marker in the header)."""
-    files = {routine.span.file for routine in program.routines} | \
-        {data.span.file for data in program.globals}
+    files = {_file(routine.span) for routine in program.routines} | \
+        {_file(data.span) for data in program.globals}
     return frozenset(f for f in files if f and _is_stub_file(f))
+
+
+def _file(span) -> Optional[str]:
+    """The file of a declaration (None for the controller's own data, declared nowhere)."""
+    return span.file if span is not None else None
 
 
 def _is_stub_file(file: str) -> bool:
@@ -138,12 +143,12 @@ def _is_stub_file(file: str) -> bool:
 
 def _stubs(program: Program, stub_files: frozenset) -> Iterator[Assumption]:
     for routine in program.routines:
-        if routine.span.file in stub_files and routine.namespace == PROGRAM_NAMESPACE:
+        if _file(routine.span) in stub_files and routine.namespace == PROGRAM_NAMESPACE:
             does = "returns a neutral value" if routine.kind == "FUNC" else "is empty"
             yield Assumption(STUB, routine.name,
                              f"stub {routine.name} {does} ({_where(routine.span)})")
     for data in program.globals:
-        if data.span.file in stub_files and data.namespace == PROGRAM_NAMESPACE:
+        if _file(data.span) in stub_files and data.namespace == PROGRAM_NAMESPACE:
             yield Assumption(STUB, data.name,
                              f"stub {data.name} keeps its neutral value ({_where(data.span)})")
 
@@ -171,7 +176,7 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
     if written is None:
         return
     for data in program.globals:
-        if data.storage != "PERS" or data.span.file in stub_files or \
+        if data.storage != "PERS" or _file(data.span) in (None, *stub_files) or \
                 data.namespace == ENVIRONMENT_NAMESPACE or \
                 data.key in written or not _value_typed(data.type):
             continue
