@@ -25,13 +25,18 @@ VERDICT = re.compile(r"^(\S+): (HOLDS|VIOLATED|UNKNOWN)\b")
 
 
 def run(folder: Path, *extra: str) -> tuple[int, str]:
-    args = shlex.split((folder / "args").read_text())
+    """``rapidmc check`` of the case's ``args`` (and ``extra``), from inside its folder."""
+    return check_in_folder(folder, *shlex.split((folder / "args").read_text()), *extra)
+
+
+def check_in_folder(folder: Path, *argv: str) -> tuple[int, str]:
+    """Exit code and stdout of ``rapidmc check ARGV --quiet`` run from inside ``folder``."""
     out = io.StringIO()
     cwd = os.getcwd()
     os.chdir(folder)
     try:
         with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
-            code = main(["check", *args, "--quiet", *extra])
+            code = main(["check", *argv, "--quiet"])
     finally:
         os.chdir(cwd)
     return code, out.getvalue()
