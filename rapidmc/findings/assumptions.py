@@ -215,29 +215,24 @@ def possibly_written(program: Program) -> Optional[frozenset]:
 
 def _by_reference(program: Program, call, procedure: bool) -> Iterator[ast.Argument]:
     """The arguments of a call that may be written (all, for an unknown routine)."""
-    modes = _parameter_modes(program, call.name.key, procedure)
-    required = [mode for name, mode, optional in modes or () if not optional]
-    position = 0
-    for argument in call.args:
-        if argument.kind == ast.REQUIRED and argument.name is None:
-            mode = required[position] if position < len(required) else None
-            position += 1
-        else:
-            key = argument.name.key if argument.name is not None else ""
-            mode = next((m for name, m, _ in modes or () if name == key), None)
-        if modes is None or mode is None or mode in WRITING_MODES:
+    parameters = _parameters(program, call.name.key, procedure)
+    if parameters is None:
+        yield from call.args
+        return
+    for argument, parameter in registry.matched_parameters(call.args, parameters):
+        if parameter is None or parameter.mode.upper() in WRITING_MODES:
             yield argument
 
 
-def _parameter_modes(program: Program, key: str, procedure: bool) -> Optional[list]:
-    """(parameter key, mode, optional) of a user or predefined routine; None if unknown."""
+def _parameters(program: Program, key: str, procedure: bool) -> Optional[tuple]:
+    """The parameters of a user or predefined routine (None if unknown)."""
     for routine in program.routines:
         if routine.key == key and (routine.kind == "FUNC") != procedure:
-            return [(p.key, p.mode.upper(), p.optional) for p in routine.parameters]
+            return routine.parameters
     entry = registry.lookup_procedure(key) if procedure else registry.lookup_function(key)
     if entry is None or entry.signature.open_parameters:
         return None
-    return [(p.key, p.mode.upper(), p.optional) for p in entry.signature.parameters]
+    return entry.signature.parameters
 
 
 def _root(expression) -> Iterator[str]:

@@ -1,12 +1,13 @@
 """The FlexPendant: writing, and answers read from the operator."""
 from __future__ import annotations
 
+from ... import ast
 from ...diagnostics import BAD_INPUT_VALUE, error
 from .. import values
 from ..errors import ERROR_NUMBERS, RapidError
 from ..instructions import Action, ControlAction
 from ..machine import ABSENT
-from .arguments import Arguments
+from .arguments import Arguments, argument_expression
 from .registry import CHOICE, NO_EFFECT, compiled
 from .signature_parts import TP_BREAKS
 
@@ -53,9 +54,12 @@ def _tp_read(calls, compiler, call, entry, kind: str):
     convert = values.to_dnum if kind == "TPReadDnum" else values.to_num
     keys = [arguments.value(f"TPFK{i}") for i in range(1, 6)] if kind == "TPReadFK" else None
     breaks = TPBreaks(arguments)
+    # keys written as "" or stEmpty in the source: no key is meant to be offered
+    unlabelled = keys is not None and all(
+        _written_empty(argument_expression(call, f"TPFK{i}", i + 1)) for i in range(1, 6))
 
     def read(m, instruction):
-        outcomes = _outcomes(m, kind, keys, breaks, call.span)
+        outcomes = _outcomes(m, kind, keys, breaks, call.span, unlabelled)
         if not outcomes:
             m.waiting = True            # no key to press and nothing that ends the wait
             return
@@ -67,17 +71,32 @@ def _tp_read(calls, compiler, call, entry, kind: str):
     return ControlAction(call.span, read)
 
 
-def _outcomes(m, kind: str, keys, breaks: "TPBreaks", span) -> tuple:
+def _outcomes(m, kind: str, keys, breaks: "TPBreaks", span, unlabelled: bool) -> tuple:
     """Check: every answer allowed (for TPReadFK, the labelled keys among them) and every
-    break given; run: the answer on stdin, or with no labelled key the time limit."""
+    break given; run: the answer on stdin, or with no labelled key the time limit.
+
+    When labels computed from data are all empty and no break is given, the dialog could
+    never be left; rapidmc then takes the labels for data it does not know (a stub's
+    neutral "", a text table of a module not given) and offers every key, as it did before
+    labels counted.  Only keys written empty in the source make such a dialog wait for ever."""
     if m.chooser.check_mode:
         allowed = m.chooser.tp_answers(kind)
         offered = allowed if keys is None else labelled_keys(m, keys, allowed)
-        return offered + breaks.outcomes(m)
+        ends = breaks.outcomes(m)
+        if not offered and not ends and not unlabelled:
+            return allowed
+        return offered + ends
     if keys is not None and not labelled_keys(m, keys, FUNCTION_KEYS):
-        return breaks.time_limit(m)
+        return breaks.time_limit(m) if unlabelled else m.chooser.tp_answers(kind)
     answer = m.chooser.tp_answers(kind)
     return answer if keys is None else checked_key(m, keys, answer, span)
+
+
+def _written_empty(expression) -> bool:
+    """``""`` or ``stEmpty`` as written in the source."""
+    if isinstance(expression, ast.StringLiteral):
+        return expression.value == ""
+    return isinstance(expression, ast.NameRef) and expression.name.key == "STEMPTY"
 
 
 def labelled_keys(m, keys, allowed: tuple) -> tuple:
