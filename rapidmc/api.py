@@ -39,6 +39,7 @@ from .check.trace import Trace, build_trace
 from .diagnostics import (AUTOMATON, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED,
                           TRACE_REPLAY, USAGE, Diagnostic, SourceCache, error)
 from .diagnostics.quoting import one_line, quoted
+from .findings.assumptions import assumptions, for_verdict
 from .findings.explored import ExploredFacts
 from .findings.fixed_readings import fixed_readings
 from .load.backup import load_tasks, resolve_program_files
@@ -101,7 +102,8 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
                                                   all_tasks=all_tasks, add_task=list(add_tasks)))
     environment = _parse_files(list(env)) if env else None
     return build(_parse_files(files.modules), entry=entry, environment=environment,
-                 options={"configured_signals": files.signals}, tasks=load_tasks(files))
+                 options={"configured_signals": files.signals,
+                          "configuration": files.configuration}, tasks=load_tasks(files))
 
 
 def read_properties(*paths: str) -> list[Property]:
@@ -243,6 +245,9 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
         results = searches.builtin_checks() + [searches.property(*job) for job in model.jobs]
     except EnvironmentFault as exc:
         raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
+    resting_on = assumptions(model.program)
+    results = [replace(r, assumes=for_verdict(resting_on, r.result, model.describer))
+               for r in results]
     return CheckReport(results, _findings(model, searches.facts), model.describer)
 
 

@@ -115,7 +115,8 @@ def execute(args: argparse.Namespace) -> int:
     io_values = parse_io(args.io)
     files = resolve_program_files(args)
     program = build(load_program(files.modules), entry=args.entry,
-                    options={"io_names": tuple(io_values), "configured_signals": files.signals},
+                    options={"io_names": tuple(io_values), "configured_signals": files.signals,
+                             "configuration": files.configuration},
                     tasks=load_tasks(files))
     check_io_values(program, io_values)
     changes = read_input_script(args.inputs, program) if args.inputs else ()

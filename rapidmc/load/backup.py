@@ -7,6 +7,7 @@ A RobotWare backup is a folder::
       RAPID/TASK1/SYSMOD/    system modules (*.sys)
       RAPID/TASK1/PROGMOD/   program modules (*.mod, *.modx)
       SYSPAR/EIO.cfg         I/O configuration: the signals programs use by name
+      SYSPAR/*.cfg           the configuration ReadCfgData reads (load.configuration)
 
 ``expand_backup`` turns it into the module files of one task and the path of
 its EIO.cfg; ``read_eio`` reads the signals (name and type) of an EIO.cfg, so
@@ -21,6 +22,8 @@ from typing import Optional
 
 from ..ast import Span
 from ..diagnostics import FILE_NOT_FOUND, PROGRAM_FILE, SourceCache, error
+from ..semantics.library.configuration import Configuration
+from .configuration import logical_lines, read_configuration
 
 MODULE_SUFFIXES = {".mod", ".modx", ".sys", ".prg"}
 SIGNAL_KINDS = {"DI", "DO", "AI", "AO", "GI", "GO"}
@@ -105,7 +108,7 @@ def read_eio(path: str) -> list[ConfiguredSignal]:
     SourceCache.remember(path, text)
     signals = []
     section = ""
-    for number, line in _logical_lines(text):
+    for number, line in logical_lines(text):
         stripped = line.strip()
         if not stripped or stripped.startswith("#"):
             continue
@@ -139,21 +142,6 @@ def map_width(mapping: Optional[str]) -> Optional[int]:
     return len(bits)
 
 
-def _logical_lines(text: str):
-    """(first line number, text) with backslash-continued lines joined."""
-    pending, start = "", 0
-    for number, line in enumerate(text.splitlines(), start=1):
-        if not pending:
-            start = number
-        if line.rstrip().endswith("\\"):
-            pending += line.rstrip()[:-1] + " "
-            continue
-        yield start, pending + line
-        pending = ""
-    if pending:
-        yield start, pending
-
-
 def add_program_arguments(parser) -> None:
     """Options of run and check for backups and I/O configuration."""
     parser.add_argument("--task", metavar="NAME",
@@ -177,6 +165,7 @@ class ProgramFiles:
     modules: list
     tasks: list                # (task name, module paths)
     signals: list
+    configuration: Optional[Configuration] = None   # the backup's SYSPAR files
 
 
 def resolve_program_files(args) -> ProgramFiles:
@@ -186,6 +175,7 @@ def resolve_program_files(args) -> ProgramFiles:
     paths: list[str] = []
     tasks: list[tuple[str, list[str]]] = []
     eio_paths = [eio] if eio else []
+    configuration = None
     for name in args.files:
         path = Path(name)
         if is_backup(path):
@@ -198,13 +188,14 @@ def resolve_program_files(args) -> ProgramFiles:
                 tasks.extend(other_tasks(path, modules))
             if backup_eio and not eio:
                 eio_paths.append(backup_eio)
+            configuration = read_configuration(_child(path, "SYSPAR"))
         else:
             paths.append(name)
     for number, spec in enumerate(getattr(args, "add_task", []) or [], start=1):
         files = [f for f in spec.split(",") if f]
         tasks.append((f"task {number + 1} ({Path(files[0]).stem})" if files else "", files))
     signals = [signal for eio_path in eio_paths for signal in read_eio(eio_path)]
-    return ProgramFiles(paths, tasks, signals)
+    return ProgramFiles(paths, tasks, signals, configuration)
 
 
 def load_tasks(files: ProgramFiles) -> list:

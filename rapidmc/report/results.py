@@ -41,6 +41,8 @@ class PropertyResult:
     result: SearchResult
     vacuous: Optional[str] = None    # a trigger never true in any reachable state (HOLDS only)
     fair_tasks: tuple = ()           # the tasks assumed weakly fair in the search (several tasks)
+    # what the verdict rests on that rapidmc assumed (findings.assumptions): sentences
+    assumes: tuple = ()
 
 
 # --- text ---------------------------------------------------------------------
@@ -51,6 +53,7 @@ def format_text(results: Sequence[PropertyResult], describer: TraceDescriber) ->
     lines: list[str] = []
     for checked in results:
         lines.append(verdict_line(checked))
+        lines.extend(assumption_lines(checked))
         if checked.fair_tasks:
             lines.append(f"  {fairness_text(checked.fair_tasks)}")
         stats = checked.result.stats
@@ -72,6 +75,19 @@ def verdict_line(checked: PropertyResult) -> str:
     if checked.vacuous is not None:
         figures = f"{vacuity_text(checked.vacuous)}; {figures}"
     return f"{checked.name}: {result.verdict} ({figures})"
+
+
+MAX_ASSUMPTIONS_SHOWN = 6
+
+
+def assumption_lines(checked: PropertyResult) -> list[str]:
+    """``  assumes: stub GripOpen is empty (Missing.mod:12)``, one line each, at most
+    ``MAX_ASSUMPTIONS_SHOWN`` and a count of the rest (JSON lists them all)."""
+    shown = [f"  assumes: {text}" for text in checked.assumes[:MAX_ASSUMPTIONS_SHOWN]]
+    rest = len(checked.assumes) - MAX_ASSUMPTIONS_SHOWN
+    if rest > 0:
+        shown.append(f"  assumes: ... and {rest} more (--format json lists them all)")
+    return shown
 
 
 def vacuity_text(trigger: str) -> str:
@@ -175,7 +191,8 @@ def property_json(checked: PropertyResult, describer: TraceDescriber) -> dict:
     return {"name": checked.name, "formula": checked.formula, "verdict": result.verdict,
             "reason": result.reason, "stats": result.stats.as_dict(), "trace": trace,
             "vacuous": checked.vacuous,
-            "fair_tasks": list(checked.fair_tasks) if checked.fair_tasks else None}
+            "fair_tasks": list(checked.fair_tasks) if checked.fair_tasks else None,
+            "assumes": list(checked.assumes)}
 
 
 def warning_json(warning: Diagnostic) -> dict:

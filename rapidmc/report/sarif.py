@@ -37,8 +37,21 @@ def format_sarif(results: Sequence[PropertyResult], describer: TraceDescriber,
                 "ruleId": checked.name, "ruleIndex": index, "level": "warning",
                 "message": {"text": f"{checked.name}: UNKNOWN ({result.reason}): no violation "
                                     "found, but the search was bounded"}})
+    _assumptions(results, rules, sarif_results)
     _diagnostic_results(warnings, rules, sarif_results)
     return _document(rules, sarif_results, exit_code)
+
+
+def _assumptions(results: Sequence[PropertyResult], rules: list, sarif_results: list) -> None:
+    """What each verdict assumes (findings.assumptions): ``properties.assumes`` of the
+    property's rule (every verdict; HOLDS gives no result) and of its result, if any."""
+    for rule, checked in zip(rules, results):
+        if checked.assumes:
+            rule.setdefault("properties", {})["assumes"] = list(checked.assumes)
+    for result in sarif_results:
+        assumes = rules[result["ruleIndex"]].get("properties", {}).get("assumes")
+        if assumes:
+            result.setdefault("properties", {})["assumes"] = assumes
 
 
 def format_sarif_diagnostics(diagnostics: Sequence[Diagnostic], exit_code: int) -> str:

@@ -78,6 +78,9 @@
       verdict.appendChild(element("span", "verdict " + property.verdict, property.verdict));
       if (property.reason) verdict.appendChild(element("div", "reason", property.reason));
       if (property.fairness) verdict.appendChild(element("div", "reason fairness", property.fairness));
+      for (const text of property.assumes || []) {
+        verdict.appendChild(element("div", "reason assumes", "assumes: " + text));
+      }
       row.appendChild(verdict);
       const formula = element("td");
       formula.appendChild(element("code", null, property.formula));

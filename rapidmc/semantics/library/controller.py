@@ -12,12 +12,15 @@ modelled: setting one up stops the run, and until then none exists.
 """
 from __future__ import annotations
 
+from .. import values
 from ..errors import ERROR_NUMBERS, RapidError
 from ..machine import ABSENT
 from ..expressions import Compiled, constant
 from ..instructions import Action, ControlAction
-from ..types import BOOL, NUM, STRING
-from .arguments import NAME_ONLY, ROBOT_JOINTS, Arguments, fixed, no_effect, not_modelled
+from ..types import BOOL, DNUM, NUM, STRING
+from .arguments import (NAME_ONLY, ROBOT_JOINTS, Arguments, argument_expression, fixed, no_effect,
+                        not_modelled)
+from .configuration import FOUND, NOT_KNOWN, UNKNOWN_VALUE, Lookup, look_up
 from .data import PREDEFINED_DATA
 from .environment_model import where
 from .motion import move_robot
@@ -306,18 +309,48 @@ compiled("PackDNHeader(string Service, string Path, VAR rawbytes RawData)",
 @compiled("ReadCfgData(string InstancePath, string Attribute, VAR anytype CfgData \\num ListNo)",
           modelled=CHOICE)
 def _read_cfg_data(calls, compiler, call, entry):
-    """Whether the configuration has the instance and attribute is the controller's: when
-    checking, the read either leaves CfgData as it is (rapidmc has no configuration
-    database to read a value from) or raises ERR_CFG_NOTFND, the error programs handle
-    (ABB's own calibration-position program does); ``run`` leaves CfgData as it is."""
-    Arguments(calls, compiler, call, entry)
+    """The instance and attribute as far as rapidmc knows them (``configuration``): found
+    with a known value (written to CfgData), found with a value rapidmc does not know
+    (CfgData keeps its value), not found (ERR_CFG_NOTFND), or not known either way: then,
+    when checking, a choice between found and ERR_CFG_NOTFND (``run``: found)."""
+    arguments = Arguments(calls, compiler, call, entry)
+    path, attribute, target = (arguments.value("InstancePath"), arguments.value("Attribute"),
+                               arguments.fn("CfgData"))
+    _, target_type, _ = compiler.reference(argument_expression(call, "CfgData", 2),
+                                           "written by ReadCfgData")
     label = f"ReadCfgData outcome at {where(call.span)}"
 
     def read(m):
-        if m.chooser.check_mode and m.choose(label, ("found", "ERR_CFG_NOTFND")) != "found":
+        found = look_up(m.program.options.get("configuration"), path(m), attribute(m))
+        if found.outcome == NOT_KNOWN and m.chooser.check_mode:
+            found = Lookup(m.choose(label, (FOUND, "ERR_CFG_NOTFND")))
+        if found.outcome not in (FOUND, NOT_KNOWN):
             raise RapidError("ERR_CFG_NOTFND", "ReadCfgData: no such instance or attribute in "
                              "the configuration")
+        value = configured_value(found.value, target_type)
+        if value is not None:
+            m.write_ref(target(m), value)
     return Action(call.span, read)
+
+
+def configured_value(text, rapid_type):
+    """A configuration attribute's text as a value of the data's type (None: not known, or
+    not of that type)."""
+    if text is UNKNOWN_VALUE:
+        return None
+    if rapid_type is BOOL:
+        return True if text is True else {"TRUE": True, "FALSE": False}.get(str(text).upper())
+    if text is True:
+        return None
+    if rapid_type is STRING:
+        return values.checked_string(text)
+    if rapid_type in (NUM, DNUM):
+        try:
+            number = float(text)
+        except ValueError:
+            return None
+        return values.to_dnum(number) if rapid_type is DNUM else values.to_num(number)
+    return None
 
 
 # --- reference coverage (issue 8, item 1): brake check, friction identification ------------
