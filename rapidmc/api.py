@@ -35,7 +35,7 @@ from .ltl.syntax import Not
 from .model import reduction
 from .report.results import PropertyResult
 from .load.input_domains import Assumed, default_domains
-from .model.rapid_system import RapidDescriber, RapidSystem, replay, with_final_loop
+from .model.rapid_system import RapidDescriber, RapidSystem, end_at_error, replay
 from .findings.fixed_readings import fixed_readings
 from .model.fairness import TaskFairness, assumes_fairness, fair_or_plain_search
 from .model.properties import AtomCompiler, Property, check_unique, parse_property, read_property_file
@@ -382,7 +382,7 @@ def _builtin(system: RapidSystem, name: str, description: str, predicate, bounds
              progress: Optional[Progress], observe=None) -> PropertyResult:
     result = find_reachable(system, predicate, progress=progress, observe=observe, **bounds)
     if result.verdict == VIOLATED:
-        with_final_loop(system, result)
+        end_at_error(system, result)
         _replayed(system, result)
     return PropertyResult(name, description, result)
 

@@ -102,6 +102,10 @@ def where(missing: Missing) -> str:
     return f"{Path(span.file).name}:{span.line}:{span.column}"
 
 
+# the first comment of a module 'rapidmc stubs' writes: a trace names the values it gives
+STUBS_HEADER = "Declarations written by 'rapidmc stubs'"
+
+
 class StubWriter:
     """Renders the missing names as declarations of one module."""
 
@@ -116,8 +120,7 @@ class StubWriter:
         self.neutral.aliases = {item.name.key: item.alias_of.upper()
                                 for item in missing if item.kind == TYPE and item.alias_of}
         lines = [f"MODULE {module_name}",
-                 "  ! Declarations written by 'rapidmc stubs' for the names the program uses "
-                 "and no module declares.",
+                 f"  ! {STUBS_HEADER} for the names the program uses and no module declares.",
                  "  ! Types come from the uses; values are neutral: replace them with the "
                  "cell's real data."]
         order = [TYPE, DATA, PROCEDURE, FUNCTION, TRAP]
