@@ -6,8 +6,8 @@ state, and where a transition is in the source, what it chose and wrote.
 This module only compares consecutive states so that each step lists
 only what changed (the first step lists every value once).  A value the
 describer gives as a ``Composite`` (an array or record: its text and its
-parts) changes per part when only a few parts change: ``waypoints{8}``,
-``tool.tframe.trans``, not the whole value twice.
+parts) changes per part when one part changes (or a few elements of an
+array): ``waypoints{8}``, ``tool.tframe.trans``, not the whole value twice.
 
 A describer may also say where the run is (``describe_stack``): the
 call stack each step's statement executes in, for viewers that show it.
@@ -88,7 +88,7 @@ class Composite(str):
         return made
 
 
-# a composite value whose parts change in at most this many places is shown per part
+# an array whose elements change in at most this many places is shown per element
 MOST_PARTS_SHOWN = 3
 
 
@@ -147,7 +147,8 @@ def changes_between(before: Optional[Mapping[str, str]], after: Mapping[str, str
 
 
 def component_changes(name: str, old: Optional[str], new: str) -> list[Change]:
-    """The change of ``name`` from ``old`` to ``new``, per part where few parts differ.
+    """The change of ``name`` from ``old`` to ``new``: per part where one part differs (or
+    up to ``MOST_PARTS_SHOWN`` elements of an array), else whole.
 
     >>> old = Composite("[1,2,3]", (("{1}", "1"), ("{2}", "2"), ("{3}", "3")))
     >>> new = Composite("[1,5,3]", (("{1}", "1"), ("{2}", "5"), ("{3}", "3")))
@@ -161,7 +162,11 @@ def component_changes(name: str, old: Optional[str], new: str) -> list[Change]:
         return [Change(name, old, new)]
     differing = [(suffix, was, now) for (suffix, was), (_, now) in zip(old_parts, new_parts)
                  if was != now]
-    if len(differing) > MOST_PARTS_SHOWN or len(differing) == len(new_parts) > 1:
+    # one part: that part; a few elements of an array (suffixes "{i}"): each of them;
+    # several parts of a record, or most of an array: the whole value
+    elements = all(suffix.startswith("{") for suffix, _, _ in differing)
+    if len(differing) > 1 and not (elements and len(differing) <= MOST_PARTS_SHOWN and
+                                   len(differing) < len(new_parts)):
         return [Change(name, old, new)]
     return [change for suffix, was, now in differing
             for change in component_changes(name + suffix, was, now)]

@@ -297,7 +297,7 @@ def fault_text(fault) -> str:
     """``uncaught ERR_DIVZERO: division by zero`` (the name once, when the message repeats it)."""
     name = errno_name(fault.errno)
     message = fault.message
-    if message.startswith(name + ":"):
+    if message == name or message.startswith(name + ":"):
         message = message[len(name) + 1:].strip()
     return f"uncaught {name}: {message}" if message else f"uncaught {name}"
 

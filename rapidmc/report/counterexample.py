@@ -37,6 +37,7 @@ SOURCE_WIDTH = 160     # a source line or FlexPendant output
 LONGEST_PERIOD = 40    # the longest stretch of steps looked for as a repeat
 FEWEST_REPEATS = 3     # a stretch folds when it runs at least this many times in a row
 NET_SHOWN = 4          # values listed after a folded stretch (then a count)
+FOLDED_WIDTH = 40      # each of them, at most
 ALWAYS_SHOWN = ("program", "ERRNO")
 IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 INDEX = re.compile(r"\{[^}]*\}")
@@ -164,6 +165,22 @@ def data_names(name: str) -> tuple[str, ...]:
     return tuple(part.upper() for part in INDEX.sub("", name).split(".")[:2])
 
 
+def _inputs_text(step: TraceStep) -> str:
+    """`` from the input TPReadNum = 1`` when the step chose inputs, else nothing."""
+    inputs = step.transition.inputs if step.transition is not None else {}
+    if not inputs:
+        return ""
+    chosen = ", ".join(f"{name} = {value}" for name, value in inputs.items())
+    return f" from the input {chosen}" if len(inputs) == 1 else f" from the inputs {chosen}"
+
+
+def datum_of(name: str, words: Sequence[str]) -> str:
+    """Which datum a shown name is about, given the ``words`` of a line: ``waypoints{2}.trans``
+    is about WAYPOINTS when the line names it, ``main.i`` about I (MAIN is no datum there)."""
+    parts = data_names(name)
+    return parts[0] if parts[0] in words or len(parts) == 1 else parts[1]
+
+
 def read_names(trace: Trace) -> frozenset:
     """The identifiers of every step's source line, upper case."""
     steps = [*trace.prefix, *trace.cycle, *([trace.closing] if trace.closing else [])]
@@ -254,13 +271,28 @@ def folded_line(folded: Folded) -> str:
     hidden = folded.hidden
     what = f"steps {hidden[0].index}-{hidden[-1].index} repeat steps {folded.first}-" \
            f"{folded.last} {folded.times} more {'time' if folded.times == 1 else 'times'}"
-    net = net_changes(hidden)
+    net = _grouped(net_changes(hidden))
     if net:
-        shown = ", ".join(f"{change.name} = {shorten(change.new, WAS_WIDTH)}"
-                          for change in net[:NET_SHOWN])
         more = len(net) - NET_SHOWN
-        what += f"; after them: {shown}" + (f" and {more} more" if more > 0 else "")
+        what += f"; after them: {', '.join(net[:NET_SHOWN])}" + \
+            (f" and {more} more" if more > 0 else "")
     return f"    -- {what} --"
+
+
+def _grouped(changes: list[Change]) -> list[str]:
+    """``n = 5``, and for several elements of one array ``waypoints{2} to waypoints{12} (11
+    values)``: what a folded stretch leaves behind, one entry per datum."""
+    groups: dict[str, list[Change]] = {}
+    for change in changes:
+        groups.setdefault(INDEX.sub("{}", change.name), []).append(change)
+    entries = []
+    for members in groups.values():
+        if len(members) == 1:
+            entries.append(f"{members[0].name} = {shorten(members[0].new, FOLDED_WIDTH)}")
+        else:
+            entries.append(f"{members[0].name} to {members[-1].name} "
+                           f"({len(members)} values)")
+    return entries
 
 
 def net_changes(steps: Iterable[TraceStep]) -> list[Change]:
@@ -300,36 +332,54 @@ def read_data(steps: Sequence[TraceStep], stub_data: frozenset = frozenset()) ->
     """(name, value, origin) of each datum the last step's line reads, in the order it names them.
 
     The value is the one before the last step ran: its latest change in the steps
-    before (a part of an array or record: that part) or its initial value; an
-    input chosen at a step counts as a change of that step.
+    before or its initial value; an input chosen at a step counts as a change of
+    that step.  Of a datum changed part by part, the part the line names
+    (``pk.id``), else the part changed last.
     """
-    last = steps[-1]
-    words = list(dict.fromkeys(word.upper() for word in
-                               IDENTIFIER.findall(last.transition.source)))
+    source = steps[-1].transition.source
+    words = list(dict.fromkeys(word.upper() for word in IDENTIFIER.findall(read_part(source))))
+    written = source.replace(" ", "").upper()
     found = []
     for word in words:
-        latest = _latest_value(steps, word, stub_data)
-        if latest is not None:
-            found.append(latest)
+        candidates = _latest_values(steps, word, words, stub_data)
+        named = [c for c in candidates if INDEX.sub("", c[0]).replace(" ", "").upper() in written
+                 and "." in c[0] and datum_of(c[0], words) == data_names(c[0])[0]]
+        if candidates:
+            found.append((named or candidates)[0])
     return found
 
 
-def _latest_value(steps: Sequence[TraceStep], word: str, stub_data: frozenset):
-    """The latest value of the datum named ``word`` before the last step, and its origin."""
+def read_part(source: str) -> str:
+    """What a line reads: of an assignment, the indexes of its target and its value."""
+    target, assigns, value = source.partition(":=")
+    if not assigns or '"' in target:
+        return source
+    return " ".join(re.findall(r"\{([^}]*)\}", target)) + " " + value
+
+
+def _latest_values(steps: Sequence[TraceStep], word: str, words: Sequence[str],
+                   stub_data: frozenset) -> list[tuple]:
+    """The latest values of the datum named ``word`` (one of the line's ``words``) and of its
+    parts before the last step, latest first, up to the datum's own: (name, value, origin)."""
+    found: dict[str, tuple] = {}
     for step in reversed(steps):
         transition = step.transition
         if transition is not None and step is not steps[-1]:
             for name, value in transition.inputs.items():
                 if name.upper() == word:
-                    return name, value, f"input chosen at step {step.index}"
+                    return list(found.values()) + [(name, value,
+                                                    f"input chosen at step {step.index}")]
+        if step is steps[-1] and step.kind != INITIAL:
+            continue                           # what the failing step itself wrote
         for change in reversed(step.changes):
-            if change.new is None or word not in data_names(change.name):
+            if change.new is None or change.name in found or \
+                    datum_of(change.name, words) != word:
                 continue
-            if step is steps[-1] and step.kind != INITIAL:
-                continue                       # what the failing step itself wrote
             if step.kind == INITIAL:
                 origin = "stub value" if change.name in stub_data else "initial value"
             else:
-                origin = f"set at step {step.index}"
-            return change.name, change.new, origin
-    return None
+                origin = f"set at step {step.index}" + _inputs_text(step)
+            found[change.name] = (change.name, change.new, origin)
+            if not INDEX.search(change.name) and "." not in change.name.removeprefix("signal "):
+                return list(found.values())    # the whole datum: older parts are in it
+    return list(found.values())
