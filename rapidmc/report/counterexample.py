@@ -192,7 +192,7 @@ def read_names(trace: Trace) -> frozenset:
 
 
 def shorten(text: str, width: Optional[int]) -> str:
-    """``text`` cut to about ``width`` characters at an element boundary, ending in ``...``.
+    """``text`` cut to at most ``width`` characters at an element boundary, ending in ``...``.
 
     An aggregate keeps its first elements and its closing brackets
     (``[[932.4,1557.5,2189.5],...]``); a string keeps its closing quote.
@@ -209,7 +209,7 @@ def shorten(text: str, width: Optional[int]) -> str:
             depth += 1
         elif char == "]":
             depth -= 1
-        elif char == ",":
+        elif char == "," and position + 4 + depth <= width:    # room for "..." and "]"s
             cut, cut_depth = position, depth
     if cut > 0:
         return text[:cut + 1] + "..." + "]" * cut_depth
