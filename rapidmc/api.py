@@ -49,7 +49,7 @@ from .model import reduction
 from .model.fairness import TaskFairness, assumes_fairness, fair_or_plain_search
 from .model.inputs import free_input_domains, observed_inputs
 from .model.properties import AtomCompiler, Property, check_unique, parse_property, read_property_file
-from .model.rapid_system import RapidDescriber, RapidSystem, replay, with_final_loop
+from .model.rapid_system import RapidDescriber, RapidSystem, end_at_error, replay
 from .report.results import PropertyResult
 from .semantics.link import build
 from .semantics.program import Program
@@ -352,7 +352,7 @@ def _builtin(system: RapidSystem, name: str, description: str, predicate, bounds
              progress: Optional[Progress], observe=None) -> PropertyResult:
     result = find_reachable(system, predicate, progress=progress, observe=observe, **bounds)
     if result.verdict == VIOLATED:
-        with_final_loop(system, result)
+        end_at_error(system, result)
         _replayed(system, result)
     return PropertyResult(name, description, result)
 

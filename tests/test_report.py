@@ -144,7 +144,8 @@ def test_json_follows_the_documented_schema():
         assert (entry["trace"] is None) == (entry["verdict"] != "VIOLATED")
     assert properties[2]["reason"] == "state limit 2 reached"
     trace = properties[1]["trace"]
-    assert list(trace) == ["prefix", "cycle", "closing", "loop_start"]
+    assert list(trace) == ["prefix", "cycle", "closing", "loop_start", "error"]
+    assert trace["error"] is None                 # a loop: no error ends it
     steps = trace["prefix"] + trace["cycle"] + [trace["closing"]]
     assert all(list(step) == STEP_KEYS for step in steps)
     assert [step["index"] for step in steps] == [1, 2, 3, 4, 5, 6]

@@ -25,8 +25,8 @@ KNOWN_VALUES = {"TOOLDATA": "tool0", "WOBJDATA": "wobj0", "LOADDATA": "load0",
 MIN_ARRAY_SIZE = 10
 UNUSED_AXIS = 9e9
 MAX_ARRAY_LITERAL = 1000
-# The header comment that marks a module as written by ``rapidmc stubs`` (findings.assumptions
-# recognises stub declarations by it).
+# The header comment that marks a module as written by ``rapidmc stubs``: findings.assumptions
+# recognises stub declarations by it, and a trace names the values they give.
 STUB_MARKER = "Declarations written by 'rapidmc stubs'"
 
 
@@ -103,6 +103,7 @@ def array_literal(element: str, dims: list[int], separator: str = ",\n    ") -> 
 def where(missing: Missing) -> str:
     span = missing.first_use
     return f"{Path(span.file).name}:{span.line}:{span.column}"
+
 
 
 class StubWriter:
