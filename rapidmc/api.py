@@ -25,7 +25,8 @@ from typing import Callable, Iterable, Mapping, Optional, Sequence
 from . import ast
 from .check import HOLDS, UNKNOWN, VIOLATED, Progress, SearchResult, check_property, find_reachable
 from .check.budget import DEFAULT_MAX_STATES
-from .load.backup import load_tasks, resolve_program_files
+from .load.backup import link_options, load_tasks, resolve_program_files
+from .load.shared_data import pers_warnings
 from .check.trace import Trace, build_trace
 from .diagnostics import (AUTOMATON, DOMAIN, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED,
                           TRACE_REPLAY, USAGE, Diagnostic, SourceCache, UserError, error)
@@ -92,8 +93,11 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
     files = resolve_program_files(SimpleNamespace(files=list(files), task=task, eio=eio,
                                                   all_tasks=all_tasks, add_task=list(add_tasks)))
     environment = _parse_files(list(env)) if env else None
-    return build(_parse_files(files.modules), entry=entry, environment=environment,
-                 options={"configured_signals": files.signals}, tasks=load_tasks(files))
+    program = build(_parse_files(files.modules), entry=files.main_entry if entry == "main"
+                    else entry, environment=environment, tasks=load_tasks(files),
+                    options=link_options(files))
+    program.load_notes = files.notes + pers_warnings(program, files)
+    return program
 
 
 def read_properties(*paths: str) -> list[Property]:
@@ -328,7 +332,7 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
                                           fairness.names if fairness is not None else ()))
     except EnvironmentFault as exc:
         raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
-    warnings = [assumed.note() for assumed in model.assumed] + sorted(
+    warnings = list(model.program.load_notes) + [assumed.note() for assumed in model.assumed] + sorted(
         fixed_readings(model.program) + facts.warnings(),
         key=lambda d: (d.span.file, d.span.line, d.span.column))
     return CheckReport(results, warnings, model.describer)
@@ -375,7 +379,11 @@ def _deadlock(system: RapidSystem, runtime: SearchResult, stuck: _StuckWatch, bo
     if runtime.verdict == HOLDS and bounds.get("storage") is None and not stuck.seen:
         answer = SearchResult(HOLDS, stats=replace(runtime.stats, seconds=0.0))
         return PropertyResult(BUILTIN_DEADLOCK, description, answer)
-    return _builtin(system, BUILTIN_DEADLOCK, description, system.stuck, bounds, progress())
+    found = _builtin(system, BUILTIN_DEADLOCK, description, system.stuck, bounds, progress())
+    if found.result.verdict == VIOLATED:
+        found.result.reason = system.describe_waits(
+            (found.result.cycle or found.result.prefix)[0 if found.result.cycle else -1].state)
+    return found
 
 
 def _builtin(system: RapidSystem, name: str, description: str, predicate, bounds,

@@ -21,6 +21,7 @@ from ..diagnostics import TRACE_REPLAY, SourceCache, error
 from ..semantics.program import (ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE,
                                 PROGRAM_NAMESPACE, Program)
 from ..semantics.library.system import format_typed, value_kind
+from ..semantics.library.tasks import SyncWait
 from ..semantics.state import ENDED, FAILED, RUNNING, STOPPED, State
 from ..semantics.plain_step import is_plain
 from ..semantics.step import (OPERATOR_CHOICE, CheckConfig, ScriptChooser, initial_states,
@@ -148,6 +149,8 @@ class RapidSystem:
         """``stuck(state)`` given ``targets``, its successor states (``successor_states``)."""
         if state.status != RUNNING:
             return False
+        if state[10] and self.blocked_at_barrier(state):
+            return True
         # a successor whose call stack or data differ is not a state with other inputs:
         # decided without masking the inputs of every successor (the usual case)
         frames, store = state[0], state[1]
@@ -156,6 +159,43 @@ class RapidSystem:
                     after[1] is not store and after[1] != store:
                 return False
         return self._same_but_inputs(state, targets)
+
+    def blocked_at_barrier(self, state: State) -> list[tuple[int, list[str]]]:
+        """(task, the ended tasks it waits for) per task at a barrier (WaitSyncTask,
+        SyncMoveOn/Off) that waits for a task that has ended: it waits forever, whatever
+        the others do."""
+        stacks = (state[0],) + state[10]
+        names = self.program.task_names
+        blocked = []
+        for task, waiting_for in barrier_waits(self.program, state):
+            ended = [name for name in waiting_for if not stacks[names.index(name)]]
+            if ended:
+                blocked.append((task, ended))
+        return blocked
+
+    def describe_waits(self, state: State) -> Optional[str]:
+        """Which task waits where, and for which tasks, in a state where the program waits
+        forever (None for a program of one task: its trace says it)."""
+        names = self.program.task_names
+        if len(names) == 1:
+            return None
+        stacks = (state[0],) + state[10]
+        barriers = dict(barrier_waits(self.program, state))
+        blocked = {task for task, _ in self.blocked_at_barrier(state)}
+        parts = []
+        for task, stack in enumerate(stacks):
+            if not stack or (blocked and task not in blocked):
+                continue
+            frame = stack[-1]
+            span = _frame_span(self.program.routines[frame.routine], frame.pc)
+            text = (SourceCache.line(span.file, span.line) or "").strip()
+            part = f"{names[task]} waits at {span.file}:{span.line} ({text})"
+            if task in barriers:
+                part += " for " + ", ".join(
+                    f"{name} (ended)" if not stacks[names.index(name)] else name
+                    for name in barriers[task])
+            parts.append(part)
+        return "waiting forever: " + "; ".join(parts) if parts else None
 
     def _same_but_inputs(self, state: State, targets: Sequence[State]) -> bool:
         """Whether every successor of the running ``state`` is ``state`` with other free
@@ -172,6 +212,22 @@ class RapidSystem:
         project = self.project or (lambda s: s)
         return all(_without_inputs(project(t.state), free) == masked
                    for t in successors(self.program, state, self.plain_config))
+
+
+def barrier_waits(program: Program, state: State) -> list[tuple[int, list[str]]]:
+    """(task, the tasks it waits for) per task whose next instruction is a barrier that
+    not every task of its list has reached."""
+    found = []
+    for task, stack in enumerate((state[0],) + state[10]):
+        if not stack:
+            continue
+        frame = stack[-1]
+        instruction = program.routines[frame[0]].code[frame[1]]
+        if isinstance(instruction, SyncWait):
+            missing = instruction.missing(state[1], task)
+            if missing:
+                found.append((task, missing))
+    return found
 
 
 def _without_inputs(state: State, free: list) -> State:
@@ -302,6 +358,8 @@ def with_final_loop(system: RapidSystem, result: SearchResult) -> SearchResult:
         last = result.prefix[-1]
         transitions = system.successors(last.state)
         loop = next((label for label, state in transitions if state == last.state), None)
+        if loop is None:       # a task waits forever for one that ended; others go on
+            return result
         result.cycle = [result.prefix.pop()]
         result.closing_label = loop
     return result
