@@ -16,7 +16,8 @@ from ..diagnostics import PERS_UNWRITTEN, Diagnostic
 from ..diagnostics.quoting import quoted
 from ..semantics.configured_signals import _walk_statements
 from ..semantics.program import PROGRAM_NAMESPACE
-from ..semantics.scope import GLOBAL_DATA
+from ..semantics.library import lookup_function, lookup_procedure
+from ..semantics.scope import GLOBAL_DATA, ROUTINE
 from ..semantics.values import format_value
 
 
@@ -35,8 +36,8 @@ def pers_warnings(program, files) -> tuple:
             PERS_UNWRITTEN, f"PERS {data.name} is read but never written by task {files.alone}, "
             "checked alone: another task or a PC may write it; the check assumes it keeps its "
             f"initial value {_shown(data.initial)}", data.span, severity="warning",
-            notes=(f"check the backup's tasks together (without --task), or give its values "
-                   f"with --pers-domain {data.name}=v1,v2,...",)))
+            notes=("check the backup's tasks together (without --task) to follow the "
+                   "writes of the other tasks",)))
     return tuple(found)
 
 
@@ -54,11 +55,37 @@ def data_uses(program) -> tuple[set, set]:
             elif isinstance(node, ast.Assignment):
                 written.add(_slot(lookup, _root(node.target)))
             elif isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
-                written.update(_slot(lookup, _root(arg.value)) for arg in node.args
-                               if arg.value is not None)
+                modes = _parameter_modes(program, lookup, node)
+                written.update(_slot(lookup, _root(arg.value))
+                               for arg, mode in zip(node.args, modes)
+                               if arg.value is not None and mode != "IN")
     read.discard(None)
     written.discard(None)
     return read, written
+
+
+def _parameter_modes(program, lookup, call) -> list:
+    """The mode (IN, VAR, INOUT, PERS, REF) of the parameter each argument of ``call``
+    binds, None where it is not known (a late-bound or unknown routine)."""
+    symbol = lookup(call.name.key)
+    if symbol is not None and symbol.kind == ROUTINE:
+        parameters = [(p.key, p.mode, p.optional) for p in program.routines[symbol.slot].parameters]
+    else:
+        entry = lookup_procedure(call.name.key) if isinstance(call, ast.ProcedureCall) \
+            else lookup_function(call.name.key)
+        if entry is None:
+            return [None] * len(call.args)
+        parameters = [(p.key, p.mode, p.optional) for p in entry.signature.parameters]
+    required = [mode for _, mode, optional in parameters if not optional]
+    by_key = {key: mode for key, mode, _ in parameters}
+    modes, position = [], 0
+    for arg in call.args:
+        if arg.name is not None:
+            modes.append(by_key.get(arg.name.key))
+        else:
+            modes.append(required[position] if position < len(required) else None)
+            position += 1
+    return modes
 
 
 def _root(expr):

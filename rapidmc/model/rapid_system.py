@@ -167,7 +167,7 @@ class RapidSystem:
         stacks = (state[0],) + state[10]
         names = self.program.task_names
         blocked = []
-        for task, waiting_for in barrier_waits(self.program, state):
+        for task, waiting_for in barrier_waits(self.program, state, timeouts=False):
             ended = [name for name in waiting_for if not stacks[names.index(name)]]
             if ended:
                 blocked.append((task, ended))
@@ -214,16 +214,17 @@ class RapidSystem:
                    for t in successors(self.program, state, self.plain_config))
 
 
-def barrier_waits(program: Program, state: State) -> list[tuple[int, list[str]]]:
+def barrier_waits(program: Program, state: State,
+                  timeouts: bool = True) -> list[tuple[int, list[str]]]:
     """(task, the tasks it waits for) per task whose next instruction is a barrier that
-    not every task of its list has reached."""
+    not every task of its list has reached (``timeouts``: barriers with \\TimeOut too)."""
     found = []
     for task, stack in enumerate((state[0],) + state[10]):
         if not stack:
             continue
         frame = stack[-1]
         instruction = program.routines[frame[0]].code[frame[1]]
-        if isinstance(instruction, SyncWait):
+        if isinstance(instruction, SyncWait) and (timeouts or not instruction.times_out):
             missing = instruction.missing(state[1], task)
             if missing:
                 found.append((task, missing))

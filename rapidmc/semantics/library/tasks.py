@@ -222,9 +222,10 @@ def _generation(value) -> tuple[float, bool]:
 
 
 class SyncWait(ControlAction):
-    """A barrier instruction; ``missing(store, task)`` names the tasks it still waits for."""
+    """A barrier instruction; ``missing(store, task)`` names the tasks it still waits for;
+    ``times_out``: it has a ``\\TimeOut`` (it never waits forever)."""
 
-    __slots__ = ("missing",)
+    __slots__ = ("missing", "times_out")
 
 
 def _barrier(calls, compiler, call, entry, what: str, error_name: str, listed: bool):
@@ -293,6 +294,7 @@ def _barrier(calls, compiler, call, entry, what: str, error_name: str, listed: b
         return Action(call.span, lambda m: None)
     instruction = SyncWait(call.span, wait)
     instruction.missing = missing
+    instruction.times_out = timeout is not None
     return instruction
 
 
