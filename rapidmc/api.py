@@ -39,6 +39,7 @@ from .load.input_domains import Assumed, default_domains
 from .model.rapid_system import RapidDescriber, RapidSystem, replay, with_final_loop
 from .findings.fixed_readings import fixed_readings
 from .model.fairness import TaskFairness, assumes_fairness, fair_or_plain_search
+from .model.waiting import waits_forever
 from .model.properties import AtomCompiler, Property, check_unique, parse_property, read_property_file
 from .semantics.configured_signals import _walk_statements
 from .semantics.link import build
@@ -378,7 +379,19 @@ def _deadlock(system: RapidSystem, runtime: SearchResult, stuck: _StuckWatch, bo
     description = "no reachable state where the program waits forever"
     if runtime.verdict == HOLDS and bounds.get("storage") is None and not stuck.seen:
         answer = SearchResult(HOLDS, stats=replace(runtime.stats, seconds=0.0))
-        return PropertyResult(BUILTIN_DEADLOCK, description, answer)
+        found = PropertyResult(BUILTIN_DEADLOCK, description, answer)
+    else:
+        found = _stuck_state(system, description, bounds, progress)
+    if found.result.verdict == HOLDS and len(system.program.task_names) > 1:
+        # several tasks: one may wait forever while the others go on (model.waiting)
+        waiting = waits_forever(system, bounds, progress())
+        _replayed(system, waiting)
+        found = PropertyResult(BUILTIN_DEADLOCK, "no task waits forever", waiting)
+    return found
+
+
+def _stuck_state(system: RapidSystem, description: str, bounds,
+                 progress: ProgressFactory) -> PropertyResult:
     found = _builtin(system, BUILTIN_DEADLOCK, description, system.stuck, bounds, progress())
     if found.result.verdict == VIOLATED:
         found.result.reason = system.describe_waits(

@@ -173,18 +173,20 @@ class RapidSystem:
                 blocked.append((task, ended))
         return blocked
 
-    def describe_waits(self, state: State) -> Optional[str]:
+    def describe_waits(self, state: State, only: Optional[set] = None) -> Optional[str]:
         """Which task waits where, and for which tasks, in a state where the program waits
-        forever (None for a program of one task: its trace says it)."""
+        forever (None for a program of one task: its trace says it).  ``only``: the tasks
+        to name (default: those blocked at a barrier, else every running task)."""
         names = self.program.task_names
         if len(names) == 1:
             return None
         stacks = (state[0],) + state[10]
         barriers = dict(barrier_waits(self.program, state))
-        blocked = {task for task, _ in self.blocked_at_barrier(state)}
+        if only is None:
+            only = {task for task, _ in self.blocked_at_barrier(state)} or set(range(len(names)))
         parts = []
         for task, stack in enumerate(stacks):
-            if not stack or (blocked and task not in blocked):
+            if not stack or task not in only:
                 continue
             frame = stack[-1]
             span = _frame_span(self.program.routines[frame.routine], frame.pc)
@@ -195,7 +197,7 @@ class RapidSystem:
                     f"{name} (ended)" if not stacks[names.index(name)] else name
                     for name in barriers[task])
             parts.append(part)
-        return "waiting forever: " + "; ".join(parts) if parts else None
+        return "waits forever: " + "; ".join(parts) if parts else None
 
     def _same_but_inputs(self, state: State, targets: Sequence[State]) -> bool:
         """Whether every successor of the running ``state`` is ``state`` with other free
