@@ -333,7 +333,8 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
                                           fairness.names if fairness is not None else ()))
     except EnvironmentFault as exc:
         raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
-    warnings = list(model.program.load_notes) + [assumed.note() for assumed in model.assumed] + sorted(
+    warnings = list(model.program.load_notes) + list(model.plan.notes) + [
+        assumed.note() for assumed in model.assumed] + sorted(
         fixed_readings(model.program) + facts.warnings(),
         key=lambda d: (d.span.file, d.span.line, d.span.column))
     return CheckReport(results, warnings, model.describer)

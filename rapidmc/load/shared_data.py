@@ -41,19 +41,22 @@ def pers_warnings(program, files) -> tuple:
     return tuple(found)
 
 
-def data_uses(program) -> tuple[set, set]:
-    """The global slots the program's routines name (read), and those they may write
-    (assigned, or passed to a routine)."""
+def data_uses(program, namespace: int = PROGRAM_NAMESPACE) -> tuple[set, set]:
+    """The global slots the routines of one task (its ``namespace``) name (read), and
+    those they may write (assigned, or passed to a routine by reference)."""
     read, written = set(), set()
     for routine in program.routines:
-        if routine.namespace != PROGRAM_NAMESPACE or routine.ast is None:
+        if routine.namespace != namespace or routine.ast is None:
             continue
         lookup = routine.scope.lookup
         for node in _walk_statements(routine.ast.body):
             if isinstance(node, ast.NameRef):
                 read.add(_slot(lookup, node))
-            elif isinstance(node, ast.Assignment):
+            elif isinstance(node, (ast.Assignment, ast.Connect)):
                 written.add(_slot(lookup, _root(node.target)))
+            elif isinstance(node, ast.LateBindingCall):      # a procedure named at run time
+                written.update(_slot(lookup, _root(arg.value)) for arg in node.args
+                               if arg.value is not None)
             elif isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
                 modes = _parameter_modes(program, lookup, node)
                 written.update(_slot(lookup, _root(arg.value))

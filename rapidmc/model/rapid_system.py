@@ -73,6 +73,8 @@ class RapidSystem:
             self.project_fused = None
         # successors kept for the next searches (one per property) over the same program
         self._shared: dict[State, list] = {}
+        self.order = plan.order          # ample sets between tasks (reduction.partial_order)
+        self._full: Optional["RapidSystem"] = None      # see full_interleaving
 
     @staticmethod
     def split_state(state: State) -> tuple:
@@ -94,6 +96,16 @@ class RapidSystem:
         config.merge_points = {}
         return RapidSystem(self.program, config)
 
+    def full_interleaving(self) -> "RapidSystem":
+        """This system with every interleaving of the tasks' steps (no ample sets)."""
+        if self.order is None:
+            return self
+        if self._full is None:
+            self._full = copy.copy(self)
+            self._full.order = None
+            self._full._shared = {}
+        return self._full
+
     def initial_states(self) -> list[State]:
         states = initial_states(self.program, lambda script: ScriptChooser(script, self.config))
         project = self.project
@@ -112,6 +124,8 @@ class RapidSystem:
         else:
             result = [((label, span, output), project(after))
                       for label, span, after, output, _ in transitions]
+        if self.order is not None:
+            result = self.order.ample(state, result)
         if len(self._shared) < self.shared_limit and \
                 not is_plain(self.program, state, self.config):
             self._shared[state] = result
@@ -377,6 +391,7 @@ def replay(system: RapidSystem, result: SearchResult) -> None:
     steps: list[LassoStep] = result.prefix + result.cycle
     if not steps:
         return
+    system = system.full_interleaving()   # a reduced path, or a fair one found without it
     if steps[0].state not in system.initial_states():
         raise AssertionError("counterexample does not start in an initial state")
     for before, after in zip(steps, steps[1:]):
