@@ -119,3 +119,35 @@ def test_a_property_with_next_turns_it_off_with_a_note(tmp_path):
     document = check_json(argv)
     assert any(w["code"] == "RMC732" for w in document["warnings"])
     assert states(document) == states(check_json(argv + ["--no-por"]))
+
+
+READER = """MODULE Reader
+  PERS num count := 0;
+  PERS num seen := 0;
+  VAR num copy := 0;
+  PROC main()
+    copy := count;
+    copy := copy * 2;
+    seen := copy;
+  ENDPROC
+ENDMODULE
+"""
+WRITER = """MODULE Writer
+  PERS num count := 0;
+  PROC main()
+    count := 1;
+  ENDPROC
+ENDMODULE
+"""
+
+
+def test_a_read_of_data_another_task_writes_is_not_reordered(tmp_path):
+    """copy := count reads data the writer task writes: it is no ample step, so the run in
+    which the writer goes first (seen = 2) is kept."""
+    (tmp_path / "reader.mod").write_text(READER)
+    (tmp_path / "writer.mod").write_text(WRITER)
+    argv = [str(tmp_path / "reader.mod"), "--add-task", str(tmp_path / "writer.mod"),
+            "--formula", 'never_two: G "seen <> 2"', "--formula", 'never_zero: G "seen = 0"']
+    expected = {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS", "never_two": "VIOLATED",
+                "never_zero": "VIOLATED"}
+    assert verdicts(check_json(argv)) == verdicts(check_json(argv + ["--no-por"])) == expected
