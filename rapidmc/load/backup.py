@@ -22,11 +22,11 @@ from typing import Optional
 from ..ast import Span
 from ..diagnostics import (FILE_NOT_FOUND, PROGRAM_FILE, TASKS_LOADED, Diagnostic, SourceCache,
                            error)
+from .config_file import instances
 from .task_config import BackupTask, config_file, read_tasks
 
 MODULE_SUFFIXES = {".mod", ".modx", ".sys", ".prg"}
 SIGNAL_KINDS = {"DI", "DO", "AI", "AO", "GI", "GO"}
-_ATTRIBUTE = re.compile(r'-(\w+)\s+(?:"([^"]*)"|(\S+))')
 
 
 @dataclass(frozen=True)
@@ -122,18 +122,7 @@ def read_eio(path: str) -> list[ConfiguredSignal]:
     text = file.read_bytes().decode("latin-1")
     SourceCache.remember(path, text)
     signals = []
-    section = ""
-    for number, line in _logical_lines(text):
-        stripped = line.strip()
-        if not stripped or stripped.startswith("#"):
-            continue
-        if re.fullmatch(r"[A-Z_]+:", stripped):
-            section = stripped[:-1]
-            continue
-        if section not in ("EIO_SIGNAL", "EIO_USER_SIGNAL"):
-            continue
-        attributes = {m.group(1).upper(): m.group(2) if m.group(2) is not None else m.group(3)
-                      for m in _ATTRIBUTE.finditer(stripped)}
+    for number, attributes in instances(text, ("EIO_SIGNAL", "EIO_USER_SIGNAL")):
         name, kind = attributes.get("NAME"), (attributes.get("SIGNALTYPE") or "").upper()
         if name and kind in SIGNAL_KINDS:
             mapping = attributes.get("DEVICEMAP") or attributes.get("UNITMAP")
@@ -155,21 +144,6 @@ def map_width(mapping: Optional[str]) -> Optional[int]:
         last = int(match.group(2)) if match.group(2) is not None else first
         bits.update(range(min(first, last), max(first, last) + 1))
     return len(bits)
-
-
-def _logical_lines(text: str):
-    """(first line number, text) with backslash-continued lines joined."""
-    pending, start = "", 0
-    for number, line in enumerate(text.splitlines(), start=1):
-        if not pending:
-            start = number
-        if line.rstrip().endswith("\\"):
-            pending += line.rstrip()[:-1] + " "
-            continue
-        yield start, pending + line
-        pending = ""
-    if pending:
-        yield start, pending
 
 
 def add_program_arguments(parser) -> None:

@@ -29,9 +29,9 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Optional
 
+from .config_file import instances
+
 _TASK_SECTION = re.compile(r"^>>(\w+):\s*\(\s*([^,)\s]*)", re.MULTILINE)
-# -Name "T_ROB1", -Type SEMISTATIC, or a flag such as -MotionTask with no value
-_CFG_ATTRIBUTE = re.compile(r'-(\w+)(?:\s+(?:"([^"]*)"|([^\s"-][^\s]*)))?')
 
 
 @dataclass(frozen=True)
@@ -91,31 +91,7 @@ def _configured_tasks(backup: Path) -> dict[str, dict[str, str]]:
     if path is None or not path.is_file():
         return {}
     tasks: dict[str, dict[str, str]] = {}
-    section = ""
-    for line in _joined_lines(path.read_bytes().decode("latin-1")):
-        stripped = line.strip()
-        if not stripped or stripped.startswith("#"):
-            continue
-        if re.fullmatch(r"[A-Z_]+:", stripped):
-            section = stripped[:-1]
-            continue
-        if section != "CAB_TASKS":
-            continue
-        attributes = {m.group(1).upper(): m.group(2) if m.group(2) is not None
-                      else (m.group(3) or "") for m in _CFG_ATTRIBUTE.finditer(stripped)}
+    for _, attributes in instances(path.read_bytes().decode("latin-1"), ("CAB_TASKS",)):
         if attributes.get("NAME"):
             tasks[attributes["NAME"].upper()] = attributes
     return tasks
-
-
-def _joined_lines(text: str):
-    """The lines of a configuration file with backslash-continued lines joined."""
-    pending = ""
-    for line in text.splitlines():
-        if line.rstrip().endswith("\\"):
-            pending += line.rstrip()[:-1] + " "
-            continue
-        yield pending + line
-        pending = ""
-    if pending:
-        yield pending
