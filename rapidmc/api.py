@@ -42,12 +42,14 @@ from .diagnostics.quoting import one_line, quoted
 from .findings.assumptions import assumptions, for_verdict
 from .findings.explored import ExploredFacts
 from .findings.fixed_readings import fixed_readings
-from .load.backup import load_tasks, resolve_program_files
+from .load.backup import link_options, load_tasks, resolve_program_files
+from .load.shared_data import pers_warnings
 from .ltl import read_hoa, to_buchi
 from .ltl.syntax import Not
 from .model import reduction
 from .model.fairness import TaskFairness, assumes_fairness, fair_or_plain_search
 from .model.inputs import free_input_domains, observed_inputs
+from .model.waiting import waits_forever
 from .model.properties import AtomCompiler, Property, check_unique, parse_property, read_property_file
 from .model.rapid_system import RapidDescriber, RapidSystem, end_at_error, replay
 from .report.results import PropertyResult
@@ -101,9 +103,11 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
     files = resolve_program_files(SimpleNamespace(files=list(files), task=task, eio=eio,
                                                   all_tasks=all_tasks, add_task=list(add_tasks)))
     environment = _parse_files(list(env)) if env else None
-    return build(_parse_files(files.modules), entry=entry, environment=environment,
-                 options={"configured_signals": files.signals,
-                          "configuration": files.configuration}, tasks=load_tasks(files))
+    program = build(_parse_files(files.modules), entry=files.main_entry if entry == "main"
+                    else entry, environment=environment, tasks=load_tasks(files),
+                    options=link_options(files))
+    program.load_notes = files.notes + pers_warnings(program, files)
+    return program
 
 
 def read_properties(*paths: str) -> list[Property]:
@@ -253,7 +257,8 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
 
 def _findings(model: Model, facts: ExploredFacts) -> list[Diagnostic]:
     """What the check assumed or saw besides verdicts, in source order after the domain notes."""
-    return [assumed.note() for assumed in model.assumed] + sorted(
+    return list(model.program.load_notes) + list(model.plan.notes) + [
+        assumed.note() for assumed in model.assumed] + sorted(
         fixed_readings(model.program) + facts.warnings(),
         key=lambda d: (d.span.file, d.span.line, d.span.column))
 
@@ -344,8 +349,24 @@ def _deadlock(system: RapidSystem, runtime: SearchResult, stuck: _StuckWatch, bo
     description = "no reachable state where the program waits forever"
     if runtime.verdict == HOLDS and bounds.get("storage") is None and not stuck.seen:
         answer = SearchResult(HOLDS, stats=replace(runtime.stats, seconds=0.0))
-        return PropertyResult(BUILTIN_DEADLOCK, description, answer)
-    return _builtin(system, BUILTIN_DEADLOCK, description, system.stuck, bounds, progress())
+        found = PropertyResult(BUILTIN_DEADLOCK, description, answer)
+    else:
+        found = _stuck_state(system, description, bounds, progress)
+    if found.result.verdict == HOLDS and len(system.program.task_names) > 1:
+        # several tasks: one may wait forever while the others go on (model.waiting)
+        waiting = waits_forever(system, bounds, progress())
+        _replayed(system, waiting)
+        found = PropertyResult(BUILTIN_DEADLOCK, "no task waits forever", waiting)
+    return found
+
+
+def _stuck_state(system: RapidSystem, description: str, bounds,
+                 progress: ProgressFactory) -> PropertyResult:
+    found = _builtin(system, BUILTIN_DEADLOCK, description, system.stuck, bounds, progress())
+    if found.result.verdict == VIOLATED:
+        found.result.reason = system.describe_waits(
+            (found.result.cycle or found.result.prefix)[0 if found.result.cycle else -1].state)
+    return found
 
 
 def _builtin(system: RapidSystem, name: str, description: str, predicate, bounds,

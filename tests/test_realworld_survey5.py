@@ -69,8 +69,10 @@ def test_all_tasks_of_a_backup_without_naming_the_main_one():
     assert found["taken_after_fed"] == "HOLDS" and found["all_taken"] == "HOLDS"
     # once the feeder is done, the counting task waits for a part that never comes
     assert found["no_deadlock"] == "VIOLATED" and code == 1
-    code, _, err = cli("check", BACKUP, "--quiet")                    # still ambiguous alone
-    assert code == 2 and "[RMC008]" in err
+    code, out, err = cli("check", BACKUP, "--quiet", "--input-domain", "giPartType=1,2")
+    # every task by default (issue 20), with a note naming them
+    assert code == 1 and verdicts(out)["no_deadlock"] == "VIOLATED"
+    assert "[RMC730]" in err and "[RMC008]" not in err
 
 
 def test_only_inputs_the_code_reads_need_a_domain():

@@ -13,7 +13,8 @@ import sys
 
 from ..diagnostics import (BAD_INPUT_VALUE, EXIT_OK, EXIT_RUNTIME_ERROR, USAGE, UserError, error, render)
 from .console import fault_diagnostic, run_program
-from ..load.backup import add_program_arguments, load_tasks, resolve_program_files
+from ..load.backup import (add_program_arguments, link_options, load_tasks,
+                           resolve_program_files)
 from ..semantics.link import build
 from ..semantics.state import FAILED
 from ..syntax import load_program
@@ -114,9 +115,9 @@ def read_input_script(path: str, program) -> tuple:
 def execute(args: argparse.Namespace) -> int:
     io_values = parse_io(args.io)
     files = resolve_program_files(args)
-    program = build(load_program(files.modules), entry=args.entry,
-                    options={"io_names": tuple(io_values), "configured_signals": files.signals,
-                             "configuration": files.configuration},
+    program = build(load_program(files.modules),
+                    entry=files.main_entry if args.entry == "main" else args.entry,
+                    options=dict(link_options(files), io_names=tuple(io_values)),
                     tasks=load_tasks(files))
     check_io_values(program, io_values)
     changes = read_input_script(args.inputs, program) if args.inputs else ()

@@ -114,6 +114,9 @@ USAGE = _code("RMC601", "usage", "bad command-line usage")
 # --- warnings (7xx): reported beside the verdicts, never a failure on their own ------
 NEVER_REACHED = _code("RMC701", "never-reached", "a statement no input sequence reaches (after a complete search)")
 FIXED_READING = _code("RMC702", "fixed-reading", "a controller reading the check takes as a fixed or sampled value")
+TASKS_LOADED = _code("RMC730", "tasks-loaded", "which tasks of a controller backup are checked together (or left out, and why)")
+PERS_UNWRITTEN = _code("RMC731", "pers-unwritten", "a task checked alone reads PERS data it never writes: another task or a PC may write it")
+ORDER_REDUCTION = _code("RMC732", "order-reduction", "partial-order reduction is off for a property with X (next)")
 
 # --- the search engine (750-759) ---------------------------------------------------------
 NATIVE_ENGINE = _code("RMC750", "native-engine",

@@ -21,13 +21,15 @@ from pathlib import Path
 from typing import Optional
 
 from ..ast import Span
-from ..diagnostics import FILE_NOT_FOUND, PROGRAM_FILE, SourceCache, error
+from ..diagnostics import (FILE_NOT_FOUND, PROGRAM_FILE, TASKS_LOADED, Diagnostic, SourceCache,
+                           error)
+from .config_file import instances
+from .task_config import BackupTask, config_file, read_tasks
 from ..semantics.library.configuration import Configuration
-from .configuration import logical_lines, read_configuration
+from .configuration import read_configuration
 
 MODULE_SUFFIXES = {".mod", ".modx", ".sys", ".prg"}
 SIGNAL_KINDS = {"DI", "DO", "AI", "AO", "GI", "GO"}
-_ATTRIBUTE = re.compile(r'-(\w+)\s+(?:"([^"]*)"|(\S+))')
 
 
 @dataclass(frozen=True)
@@ -44,21 +46,36 @@ def is_backup(path: Path) -> bool:
 
 def expand_backup(path: Path, task: Optional[str] = None) -> tuple[list[str], Optional[str]]:
     """The module files of one task of the backup at ``path``, and its EIO.cfg (if any)."""
-    tasks = _task_folders(path)
-    if not tasks:
-        raise error(PROGRAM_FILE, f"backup '{path}' has no task folder under RAPID/")
+    tasks = backup_tasks(path)
     chosen = _choose_task(path, tasks, task)
+    return task_modules(path, chosen), backup_eio(path)
+
+
+def backup_tasks(path: Path) -> list[BackupTask]:
+    """The backup's tasks, in folder order (TASK1, TASK2 ...), with their configured names."""
+    folders = _task_folders(path)
+    if not folders:
+        raise error(PROGRAM_FILE, f"backup '{path}' has no task folder under RAPID/")
+    return read_tasks(path, folders)
+
+
+def task_modules(path: Path, task: BackupTask) -> list[str]:
+    """The module files of ``task``: its SYSMOD, then its PROGMOD modules."""
     modules = []
     for folder in ("SYSMOD", "PROGMOD"):
-        directory = _child(chosen, folder)
+        directory = _child(task.folder, folder)
         if directory is not None:
             modules.extend(sorted(str(f) for f in directory.iterdir()
                                   if f.is_file() and f.suffix.lower() in MODULE_SUFFIXES))
     if not modules:
-        raise error(PROGRAM_FILE, f"task {chosen.name} of backup '{path}' holds no module")
+        raise error(PROGRAM_FILE, f"task {task.name} of backup '{path}' holds no module")
+    return modules
+
+
+def backup_eio(path: Path) -> Optional[str]:
     syspar = _child(path, "SYSPAR")
     eio = _child(syspar, "EIO.cfg") if syspar is not None else None
-    return modules, str(eio) if eio is not None else None
+    return str(eio) if eio is not None else None
 
 
 def _task_folders(path: Path) -> list[Path]:
@@ -74,25 +91,26 @@ def _child(directory: Path, name: str) -> Optional[Path]:
     return None
 
 
-def _choose_task(path: Path, tasks: list[Path], task: Optional[str]) -> Path:
+def _choose_task(path: Path, tasks: list[BackupTask], task: Optional[str]) -> BackupTask:
     names = ", ".join(t.name for t in tasks)
     if task is not None:
         for candidate in tasks:
-            if candidate.name.upper() == task.upper():
+            if task.upper() in (candidate.name.upper(), candidate.folder.name.upper()):
                 return candidate
         raise error(PROGRAM_FILE, f"backup '{path}' has no task '{task}' (tasks: {names})")
     if len(tasks) == 1:
         return tasks[0]
-    with_main = [t for t in tasks if _has_main(t)]
+    with_main = [t for t in tasks if _has_entry(t)]
     if len(with_main) == 1:
         return with_main[0]
     raise error(PROGRAM_FILE, f"backup '{path}' has several tasks ({names}): choose one with "
                 "--task NAME")
 
 
-def _has_main(task: Path) -> bool:
-    pattern = re.compile(r"^\s*(LOCAL\s+)?PROC\s+main\s*\(", re.IGNORECASE | re.MULTILINE)
-    for file in task.rglob("*"):
+def _has_entry(task: BackupTask) -> bool:
+    pattern = re.compile(rf"^\s*(LOCAL\s+)?PROC\s+{re.escape(task.entry)}\s*\(",
+                         re.IGNORECASE | re.MULTILINE)
+    for file in task.folder.rglob("*"):
         if file.is_file() and file.suffix.lower() in MODULE_SUFFIXES:
             if pattern.search(file.read_bytes().decode("latin-1", "replace")):
                 return True
@@ -107,18 +125,7 @@ def read_eio(path: str) -> list[ConfiguredSignal]:
     text = file.read_bytes().decode("latin-1")
     SourceCache.remember(path, text)
     signals = []
-    section = ""
-    for number, line in logical_lines(text):
-        stripped = line.strip()
-        if not stripped or stripped.startswith("#"):
-            continue
-        if re.fullmatch(r"[A-Z_]+:", stripped):
-            section = stripped[:-1]
-            continue
-        if section not in ("EIO_SIGNAL", "EIO_USER_SIGNAL"):
-            continue
-        attributes = {m.group(1).upper(): m.group(2) if m.group(2) is not None else m.group(3)
-                      for m in _ATTRIBUTE.finditer(stripped)}
+    for number, attributes in instances(text, ("EIO_SIGNAL", "EIO_USER_SIGNAL")):
         name, kind = attributes.get("NAME"), (attributes.get("SIGNALTYPE") or "").upper()
         if name and kind in SIGNAL_KINDS:
             mapping = attributes.get("DEVICEMAP") or attributes.get("UNITMAP")
@@ -145,14 +152,14 @@ def map_width(mapping: Optional[str]) -> Optional[int]:
 def add_program_arguments(parser) -> None:
     """Options of run and check for backups and I/O configuration."""
     parser.add_argument("--task", metavar="NAME",
-                        help="the task to load from a controller backup (default: the only "
-                             "task, or the only one with a main procedure)")
+                        help="the one task to load from a controller backup, by its name "
+                             "(T_ROB1) or folder (TASK1) (default: every task, together)")
     parser.add_argument("--add-task", action="append", default=[], metavar="FILE[,FILE...]",
                         help="a further RAPID task, made of these module files (entry: main), "
                              "running beside the program (repeatable)")
     parser.add_argument("--all-tasks", action="store_true",
-                        help="with a backup: run every task (the one chosen with --task, or "
-                             "the first, is the main task)")
+                        help="with a backup and --task: the chosen task is the main task and "
+                             "every other task runs beside it (without --task, the default)")
     parser.add_argument("--eio", metavar="EIO.cfg",
                         help="I/O configuration whose signals the program uses by name "
                              "(a backup's SYSPAR/EIO.cfg is read automatically)")
@@ -163,8 +170,12 @@ class ProgramFiles:
     """What to load: the main task's modules, further tasks, configured signals."""
 
     modules: list
-    tasks: list                # (task name, module paths)
+    tasks: list                # (task name, module paths, entry routine)
     signals: list
+    main_task: Optional[str] = None     # the main task's name in a backup (None: not one)
+    main_entry: str = "main"            # its configured entry routine
+    notes: tuple = ()                   # Diagnostic notes: which tasks were loaded
+    alone: Optional[str] = None         # a backup's task checked without its other tasks
     configuration: Optional[Configuration] = None   # the backup's SYSPAR files
 
 
@@ -173,43 +184,91 @@ def resolve_program_files(args) -> ProgramFiles:
     task = getattr(args, "task", None)
     eio = getattr(args, "eio", None)
     paths: list[str] = []
-    tasks: list[tuple[str, list[str]]] = []
+    tasks: list[tuple[str, list[str], str]] = []
     eio_paths = [eio] if eio else []
+    main_task, main_entry, notes, alone = None, "main", [], None
     configuration = None
     for name in args.files:
         path = Path(name)
-        if is_backup(path):
-            chosen = task
-            if chosen is None and getattr(args, "all_tasks", False):
-                chosen = _task_folders(path)[0].name if _task_folders(path) else None
-            modules, backup_eio = expand_backup(path, chosen)
-            paths.extend(modules)
-            if getattr(args, "all_tasks", False):
-                tasks.extend(other_tasks(path, modules))
-            if backup_eio and not eio:
-                eio_paths.append(backup_eio)
-            configuration = read_configuration(_child(path, "SYSPAR"))
-        else:
+        if not is_backup(path):
             paths.append(name)
+            continue
+        loaded = backup_tasks(path)
+        if task is not None:
+            chosen = [_choose_task(path, loaded, task)]
+            if getattr(args, "all_tasks", False):
+                chosen += [t for t in loaded if t is not chosen[0]]
+            elif len(loaded) > 1:
+                alone = chosen[0].name
+        else:
+            chosen, skipped = _runnable_tasks(path, loaded)
+            notes.extend(skipped)
+        if main_task is None and not paths:
+            main_task, main_entry = chosen[0].name, chosen[0].entry
+            paths.extend(task_modules(path, chosen[0]))
+            chosen = chosen[1:]
+        tasks.extend((t.name, task_modules(path, t), t.entry) for t in chosen)
+        if len(loaded) > 1 and task is None:
+            notes.append(_loaded_note(path, [t for t in loaded if t.name == main_task or
+                                             any(t.name == other[0] for other in tasks)]))
+        configuration = read_configuration(_child(path, "SYSPAR"))
+        backup = backup_eio(path)
+        if backup and not eio:
+            eio_paths.append(backup)
     for number, spec in enumerate(getattr(args, "add_task", []) or [], start=1):
         files = [f for f in spec.split(",") if f]
-        tasks.append((f"task {number + 1} ({Path(files[0]).stem})" if files else "", files))
+        tasks.append((f"task {number + 1} ({Path(files[0]).stem})" if files else "", files,
+                      "main"))
     signals = [signal for eio_path in eio_paths for signal in read_eio(eio_path)]
-    return ProgramFiles(paths, tasks, signals, configuration)
+    return ProgramFiles(paths, tasks, signals, main_task, main_entry, tuple(notes), alone,
+                        configuration)
+
+
+def _runnable_tasks(path: Path, tasks: list[BackupTask]) -> tuple[list[BackupTask], list]:
+    """The tasks of a backup that run when the controller starts (each has its entry
+    routine), and a note per task left out."""
+    if len(tasks) == 1:
+        return tasks, []
+    runnable = [t for t in tasks if _has_entry(t)]
+    if not runnable:
+        raise error(PROGRAM_FILE, f"no task of backup '{path}' has its entry routine "
+                    f"({', '.join(f'{t.name}: {t.entry}' for t in tasks)}): choose one with "
+                    "--task NAME and --entry ROUTINE")
+    skipped = [Diagnostic(TASKS_LOADED, f"task {t.name} is not checked: none of its modules "
+                          f"declares its entry routine {t.entry}", _task_span(path, t),
+                          severity="note")
+               for t in tasks if t not in runnable]
+    return runnable, skipped
+
+
+def _loaded_note(path: Path, tasks: list[BackupTask]) -> Diagnostic:
+    return Diagnostic(TASKS_LOADED, f"checking the {len(tasks)} tasks of the backup together: "
+                      f"{', '.join(t.describe() for t in tasks)} (--task NAME checks one)",
+                      _task_span(path, tasks[0]), severity="note")
+
+
+def _task_span(path: Path, task: BackupTask) -> Span:
+    """Where the backup names ``task``: its line of backinfo.txt, else its folder."""
+    info = config_file(path, "BACKINFO", "backinfo.txt")
+    if info is not None and info.is_file():
+        text = info.read_bytes().decode("latin-1")
+        for number, line in enumerate(text.splitlines(), start=1):
+            if line.upper().startswith(f">>{task.folder.name.upper()}:"):
+                SourceCache.remember(str(info), text)
+                return Span(str(info), number, 1)
+    return Span(str(task.folder), 0, 0)
+
+
+def link_options(files: ProgramFiles) -> dict:
+    """What the linker learns from the files: configured signals, the task names, whether
+    every task of a backup is loaded (a task list naming another task is then an error)."""
+    return {"configured_signals": files.signals, "main_task_name": files.main_task,
+            "all_tasks_loaded": files.main_task is not None and files.alone is None,
+            "configuration": files.configuration}
 
 
 def load_tasks(files: ProgramFiles) -> list:
     """The further tasks, parsed, for ``semantics.link.build``."""
     from ..semantics.link import Task
     from ..syntax import load_program
-    return [Task(name, load_program(paths)) for name, paths in files.tasks]
-
-
-def other_tasks(path: Path, main_modules: list[str]) -> list[tuple[str, list[str]]]:
-    """The backup's tasks other than the one whose modules are ``main_modules``."""
-    result = []
-    for task in _task_folders(path):
-        modules, _ = expand_backup(path, task.name)
-        if modules != main_modules:
-            result.append((task.name, modules))
-    return result
+    return [Task(name, load_program(paths), entry) for name, paths, entry in files.tasks]

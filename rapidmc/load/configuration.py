@@ -20,6 +20,7 @@ from pathlib import Path
 from typing import Iterator, Optional
 
 from ..semantics.library.configuration import Configuration
+from .config_file import logical_lines
 
 _DOMAIN = re.compile(r"^([A-Z]+):CFG_")
 _TYPE = re.compile(r"^([A-Za-z0-9_]+):$")
@@ -71,18 +72,3 @@ def attributes(line: str) -> Iterator[tuple[str, object]]:
             name = None
     if name is not None:
         yield name, True
-
-
-def logical_lines(text: str):
-    """(first line number, text) with backslash-continued lines joined."""
-    pending, start = "", 0
-    for number, line in enumerate(text.splitlines(), start=1):
-        if not pending:
-            start = number
-        if line.rstrip().endswith("\\"):
-            pending += line.rstrip()[:-1] + " "
-            continue
-        yield start, pending + line
-        pending = ""
-    if pending:
-        yield start, pending

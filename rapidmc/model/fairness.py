@@ -106,7 +106,10 @@ def fair_or_plain_search(system, buchi, valuation, fairness: Optional[TaskFairne
         return SearchResult(UNKNOWN, f"the cycle found starves {', '.join(starved)}; this "
                             "search cannot look for cycles fair to every task",
                             stats=result.stats)
-    result = check_fair_property(system, buchi, valuation, fairness, progress=progress,
+    # ample sets keep the verdicts of all runs, not of the fair ones: the fair search
+    # takes every interleaving
+    result = check_fair_property(system.full_interleaving(), buchi, valuation, fairness,
+                                 progress=progress,
                                  max_states=bounds.get("max_states"),
                                  max_seconds=bounds.get("max_seconds"))
     if result.verdict == VIOLATED and fairness.unfair_tasks(result.cycle, result.closing_label):

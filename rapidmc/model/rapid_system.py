@@ -22,6 +22,7 @@ from ..load.stubs.module_text import STUB_MARKER
 from ..semantics.program import (ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE,
                                 PROGRAM_NAMESPACE, Program)
 from ..semantics.types import ArrayType
+from ..semantics.library.tasks import SyncWait
 from ..semantics.state import ENDED, FAILED, RUNNING, STOPPED, State
 from ..semantics.plain_step import is_plain
 from ..semantics.step import (OPERATOR_CHOICE, CheckConfig, ScriptChooser, initial_states,
@@ -74,6 +75,8 @@ class RapidSystem:
             self.project_fused = None
         # successors kept for the next searches (one per property) over the same program
         self._shared: dict[State, list] = {}
+        self.order = plan.order          # ample sets between tasks (reduction.partial_order)
+        self._full: Optional["RapidSystem"] = None      # see full_interleaving
 
     @staticmethod
     def split_state(state: State) -> tuple:
@@ -95,6 +98,16 @@ class RapidSystem:
         config.merge_points = {}
         return RapidSystem(self.program, config)
 
+    def full_interleaving(self) -> "RapidSystem":
+        """This system with every interleaving of the tasks' steps (no ample sets)."""
+        if self.order is None:
+            return self
+        if self._full is None:
+            self._full = copy.copy(self)
+            self._full.order = None
+            self._full._shared = {}
+        return self._full
+
     def initial_states(self) -> list[State]:
         states = initial_states(self.program, lambda script: ScriptChooser(script, self.config))
         project = self.project
@@ -113,6 +126,8 @@ class RapidSystem:
         else:
             result = [((label, span, output), project(after))
                       for label, span, after, output, _ in transitions]
+        if self.order is not None:
+            result = self.order.ample(state, result)
         if len(self._shared) < self.shared_limit and \
                 not is_plain(self.program, state, self.config):
             self._shared[state] = result
@@ -150,6 +165,8 @@ class RapidSystem:
         """``stuck(state)`` given ``targets``, its successor states (``successor_states``)."""
         if state.status != RUNNING:
             return False
+        if state[10] and self.blocked_at_barrier(state):
+            return True
         # a successor whose call stack or data differ is not a state with other inputs:
         # decided without masking the inputs of every successor (the usual case)
         frames, store = state[0], state[1]
@@ -158,6 +175,45 @@ class RapidSystem:
                     after[1] is not store and after[1] != store:
                 return False
         return self._same_but_inputs(state, targets)
+
+    def blocked_at_barrier(self, state: State) -> list[tuple[int, list[str]]]:
+        """(task, the ended tasks it waits for) per task at a barrier (WaitSyncTask,
+        SyncMoveOn/Off) that waits for a task that has ended: it waits forever, whatever
+        the others do."""
+        stacks = (state[0],) + state[10]
+        names = self.program.task_names
+        blocked = []
+        for task, waiting_for in barrier_waits(self.program, state, timeouts=False):
+            ended = [name for name in waiting_for if not stacks[names.index(name)]]
+            if ended:
+                blocked.append((task, ended))
+        return blocked
+
+    def describe_waits(self, state: State, only: Optional[set] = None) -> Optional[str]:
+        """Which task waits where, and for which tasks, in a state where the program waits
+        forever (None for a program of one task: its trace says it).  ``only``: the tasks
+        to name (default: those blocked at a barrier, else every running task)."""
+        names = self.program.task_names
+        if len(names) == 1:
+            return None
+        stacks = (state[0],) + state[10]
+        barriers = dict(barrier_waits(self.program, state))
+        if only is None:
+            only = {task for task, _ in self.blocked_at_barrier(state)} or set(range(len(names)))
+        parts = []
+        for task, stack in enumerate(stacks):
+            if not stack or task not in only:
+                continue
+            frame = stack[-1]
+            span = _frame_span(self.program.routines[frame.routine], frame.pc)
+            text = (SourceCache.line(span.file, span.line) or "").strip()
+            part = f"{names[task]} waits at {span.file}:{span.line} ({text})"
+            if task in barriers:
+                part += " for " + ", ".join(
+                    f"{name} (ended)" if not stacks[names.index(name)] else name
+                    for name in barriers[task])
+            parts.append(part)
+        return "waits forever: " + "; ".join(parts) if parts else None
 
     def _same_but_inputs(self, state: State, targets: Sequence[State]) -> bool:
         """Whether every successor of the running ``state`` is ``state`` with other free
@@ -174,6 +230,23 @@ class RapidSystem:
         project = self.project or (lambda s: s)
         return all(_without_inputs(project(t.state), free) == masked
                    for t in successors(self.program, state, self.plain_config))
+
+
+def barrier_waits(program: Program, state: State,
+                  timeouts: bool = True) -> list[tuple[int, list[str]]]:
+    """(task, the tasks it waits for) per task whose next instruction is a barrier that
+    not every task of its list has reached (``timeouts``: barriers with \\TimeOut too)."""
+    found = []
+    for task, stack in enumerate((state[0],) + state[10]):
+        if not stack:
+            continue
+        frame = stack[-1]
+        instruction = program.routines[frame[0]].code[frame[1]]
+        if isinstance(instruction, SyncWait) and (timeouts or not instruction.times_out):
+            missing = instruction.missing(state[1], task)
+            if missing:
+                found.append((task, missing))
+    return found
 
 
 def _without_inputs(state: State, free: list) -> State:
@@ -332,6 +405,16 @@ def end_at_error(system: RapidSystem, result: SearchResult) -> SearchResult:
     if wait is not None:
         result.prefix.append(LassoStep(wait, last.state, last.automaton_state))
     result.ending = "the program waits here forever: no input lets it go on"
+def with_final_loop(system: RapidSystem, result: SearchResult) -> SearchResult:
+    """A reachability path ends in a state that repeats forever: make that the cycle."""
+    if result.prefix and not result.cycle:
+        last = result.prefix[-1]
+        transitions = system.successors(last.state)
+        loop = next((label for label, state in transitions if state == last.state), None)
+        if loop is None:       # a task waits forever for one that ended; others go on
+            return result
+        result.cycle = [result.prefix.pop()]
+        result.closing_label = loop
     return result
 
 
@@ -344,6 +427,7 @@ def replay(system: RapidSystem, result: SearchResult) -> None:
     steps: list[LassoStep] = result.prefix + result.cycle
     if not steps:
         return
+    system = system.full_interleaving()   # a reduced path, or a fair one found without it
     if steps[0].state not in system.initial_states():
         raise AssertionError("counterexample does not start in an initial state")
     for before, after in zip(steps, steps[1:]):

@@ -66,6 +66,8 @@ def format_text(results: Sequence[PropertyResult], describer: TraceDescriber,
                          "runs ending there repeat their last state")
         if checked.result.verdict == VIOLATED:
             lines.append(f"  formula: {checked.formula}")
+            if checked.result.reason:
+                lines.append(f"  {checked.result.reason}")
             lines.extend(counterexample_lines(build_trace(checked.result, describer),
                                               text_options(checked, describer, full)))
     return "\n".join(lines) + "\n"

@@ -245,6 +245,9 @@ class Linker:
                                   if namespace != P.ENVIRONMENT_NAMESPACE for m in modules])
         for namespace, modules in groups:
             self._prepare_routines(namespace)
+        # the names GetTaskName answers: a backup's (T_ROB1 ...), else T_ROB1 for the main task
+        self.task_names = (self.options.get("main_task_name") or "T_ROB1",) + tuple(
+            task.name for _, task in task_namespaces)
         for routine in self.routines:
             compiler = RoutineCompiler(self, routine, routine.scope)
             self.attempt(compiler.compile, routine.ast)
@@ -261,7 +264,8 @@ class Linker:
         linked.named_signals = (None if self.named_signals is None
                                 else frozenset(self.named_signals))
         linked.task_entries = task_entries
-        linked.task_names = ("main task",) + tuple(task.name for _, task in task_namespaces)
+        linked.task_names = (self.options.get("main_task_name") or "main task",) + \
+            self.task_names[1:]
         if environment is not None and environment.modules:
             linked.environment_init = environment_init
             linked.environment_react = environment_react

@@ -138,6 +138,7 @@ class Program:
     environment_reads_io: bool = False                     # some environment code reads signals
     task_entries: tuple = ()                               # entry routines of further tasks
     task_names: tuple = ("main task",)                     # one name per task, main task first
+    load_notes: tuple = ()                                 # Diagnostics about what was loaded
     # indices of the signals the code names; None: unknown (AliasIO of a computed name)
     named_signals: Optional[frozenset] = None
 

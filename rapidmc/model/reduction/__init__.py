@@ -10,6 +10,8 @@
   before (statement merging).
 * ``expansion``: a counterexample of the reduced model re-executed on the
   unreduced one, so traces show every line and every value.
+* ``partial_order``: with several tasks, steps on a task's own data are not
+  interleaved with the other tasks' (ample sets).
 
 ``plan_reductions(program, config, atoms, formulas, reductions)`` decides
 what applies to one check; ``RapidSystem`` applies the plan.
@@ -20,8 +22,10 @@ import argparse
 from dataclasses import dataclass, field
 from typing import Iterable, Optional
 
+from ...diagnostics import ORDER_REDUCTION, Diagnostic
 from ...semantics.program import Program
-from .merging import merge_points, merging_allowed
+from .merging import LOCATION_ATOMS, _has_next, merge_points, merging_allowed
+from .partial_order import PartialOrder, reaches_data_by_name
 from .liveness import DeadData
 from .projection import Projection
 from .relevance import NO_SLICING, Slicing, atom_keys_of, find_slicing
@@ -34,10 +38,11 @@ class Reductions:
     slice_data: bool = True
     dead_data: bool = True
     merge_steps: bool = True
+    partial_order: bool = True
 
 
 ALL = Reductions()
-NONE = Reductions(slice_data=False, dead_data=False, merge_steps=False)
+NONE = Reductions(slice_data=False, dead_data=False, merge_steps=False, partial_order=False)
 
 
 @dataclass(frozen=True)
@@ -48,6 +53,8 @@ class Plan:
     slicing: Slicing = NO_SLICING
     projection: Optional[Projection] = None
     merge_points: dict = field(default_factory=dict)
+    order: Optional[PartialOrder] = None     # ample sets between tasks (None: every order)
+    notes: tuple = ()                        # Diagnostics: a reduction left off, and why
 
     @property
     def active(self) -> bool:
@@ -77,7 +84,25 @@ def plan_reductions(program: Program, config, atoms: Iterable[str],
     if reductions.merge_steps and None not in formulas and \
             merging_allowed(program, formulas, keys, bool(config.free_inputs)):
         points = merge_points(program, keys)
-    return Plan(reductions, slicing, projection, points)
+    order, notes = None, ()
+    if reductions.partial_order and program.task_entries:
+        order, notes = _partial_order(program, config, formulas, keys)
+    return Plan(reductions, slicing, projection, points, order, notes)
+
+
+def _partial_order(program: Program, config, formulas: list, keys: set[str]) -> tuple:
+    """The partial-order reduction of a program of several tasks, when it keeps every
+    verdict of these properties (``partial_order``), and a note when a property with X
+    turns it off."""
+    if any(formula is not None and _has_next(formula) for formula in formulas):
+        return None, (Diagnostic(ORDER_REDUCTION, "partial-order reduction is off: a property "
+                                 "uses X (next), whose verdict depends on the interleaving "
+                                 "of the tasks' steps", severity="note"),)
+    if None in formulas or program.environment_react is not None or \
+            program.environment_init is not None or config.free_inputs or \
+            keys & LOCATION_ATOMS or reaches_data_by_name(program):
+        return None, ()
+    return PartialOrder(program, keys), ()
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -91,6 +116,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                        help="keep values that will be written before they are read")
     group.add_argument("--no-merge", action="store_true",
                        help="one transition per instruction (no merged steps)")
+    group.add_argument("--no-por", action="store_true",
+                       help="with several tasks: every interleaving of their steps (no "
+                            "partial-order reduction)")
 
 
 def from_arguments(args: argparse.Namespace) -> Reductions:
@@ -98,4 +126,5 @@ def from_arguments(args: argparse.Namespace) -> Reductions:
         return NONE
     return Reductions(slice_data=not getattr(args, "no_slice", False),
                       dead_data=not getattr(args, "no_dead", False),
-                      merge_steps=not getattr(args, "no_merge", False))
+                      merge_steps=not getattr(args, "no_merge", False),
+                      partial_order=not getattr(args, "no_por", False))

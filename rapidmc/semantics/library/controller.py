@@ -26,6 +26,7 @@ from .environment_model import where
 from .motion import move_robot
 from .registry import CHOICE, FIXED, NO_EFFECT, NOT_MODELLED, ROBOT_STATE, compiled
 from .signals import signal_reader
+from .tasks import task_number
 from .signature_parts import ACT_TAIL, AXES, JOINTS, RUN_TAIL, TRIGG_TAIL
 
 KINEMATICS = "needs the robot's kinematic model, which rapidmc does not have"
@@ -88,18 +89,20 @@ def _is_stop_move_act(calls, compiler, call, entry) -> Compiled:
     return constant(False, BOOL)
 
 
-@compiled("string GetTaskName(\\INOUT num TaskNo | INOUT num MecTaskNo)",
-          modelled=FIXED)
+@compiled("string GetTaskName(\\INOUT num TaskNo | INOUT num MecTaskNo)")
 def _get_task_name(calls, compiler, call, entry) -> Compiled:
+    """The name of the task whose code calls it (``\\TaskNo``: its number, from 1)."""
     arguments = Arguments(calls, compiler, call, entry)
     numbers = [arguments.fn(key) for key in ("TaskNo", "MecTaskNo")]
+    number = task_number(compiler)
+    name = compiler.linker.task_names[number]
 
     def task_name(m):
         for ref in numbers:
             target = ref(m)
             if isinstance(target, tuple):
-                m.write_ref(target, 1.0)
-        return "T_ROB1"
+                m.write_ref(target, float(number + 1))
+        return name
     return Compiled(task_name, STRING)
 
 
@@ -187,9 +190,6 @@ compiled("SkipWarn()",
          "MotionSup(\\switch On | switch Off \\num TuneValue)",
          "ErrLog(num ErrorId \\switch W | switch I, anytype Argument1, anytype Argument2, "
              "anytype Argument3, anytype Argument4, anytype Argument5)",
-         "WaitSyncTask(\\switch InPos, VAR syncident SyncID, REF tasks TaskList{*} \\num TimeOut)",
-         "SyncMoveOn(VAR syncident SyncID, REF tasks TaskList{*} \\num TimeOut)",
-         "SyncMoveOff(VAR syncident SyncID \\num TimeOut)",
          f"EGMActJoint(VAR egmident EGMid \\switch StreamStart \\PERS tooldata Tool \\PERS wobjdata WObj "
              f"\\PERS loaddata TLoad {JOINTS} {ACT_TAIL})",
          "EGMActPose(VAR egmident EGMid \\switch StreamStart \\PERS tooldata Tool \\PERS wobjdata WObj "

@@ -8,9 +8,13 @@ StartLoad, WaitLoad, Save and EraseModule change nothing it observes.
 """
 from __future__ import annotations
 
+from ... import ast
+from ..errors import RapidError
 from ..expressions import Compiled
-from ..instructions import Action
+from ..instructions import Action, ControlAction
 from ..machine import ABSENT
+from ..program import FIRST_TASK_NAMESPACE, PROGRAM_NAMESPACE
+from ..scope import GLOBAL_DATA
 from .arguments import (
     ROBOT_TOOL,
     ROBOT_WOBJ,
@@ -163,3 +167,162 @@ compiled("num TasksInSync(INOUT tasks TaskList{*})", modelled=FIXED)(fixed(0.0))
 # The task selection panel: every task rapidmc runs is a normal task selected in it.
 compiled("tsp_status GetTSPStatus(string TaskName)", modelled=FIXED)(
     fixed(PREDEFINED_DATA["TSP_STATUS_ACT"].value))
+
+
+# ===========================================================================
+# Synchronisation between tasks: WaitSyncTask, SyncMoveOn, SyncMoveOff
+# ===========================================================================
+#
+# Each is a barrier: a task that reaches it waits until every task of its list
+# has reached the same synchronisation point (the syncident data object of the
+# same name, declared in each task), then all go on.  The state of a barrier is
+# kept in the tasks' own syncident objects (no other RAPID code can read them):
+# a task's object holds its *generation*, the number of times it passed the
+# point, modulo 3, plus ARRIVED while it waits there.  Task P has reached
+# generation g when its generation is g or g + 1 (a task that passed g may
+# already wait at g + 1; no task can be further ahead or behind, since none
+# passes a generation before all have reached it), so three values suffice and
+# a barrier in an endless loop keeps the state space finite.
+
+ARRIVED = 10.0
+
+
+def task_number(compiler) -> int:
+    """The index of the task (0: the main task) whose code ``compiler`` compiles."""
+    namespace = compiler.routine.namespace
+    return 0 if namespace < FIRST_TASK_NAMESPACE else namespace - FIRST_TASK_NAMESPACE + 1
+
+
+def _task_namespace(number: int) -> int:
+    return PROGRAM_NAMESPACE if number == 0 else FIRST_TASK_NAMESPACE + number - 1
+
+
+def _syncident_slots(compiler, key: str) -> dict:
+    """Task index -> store slot of that task's global syncident named ``key``."""
+    linker = compiler.linker
+    slots = {}
+    for number in range(len(linker.task_names)):
+        namespace = _task_namespace(number)
+        scopes = [linker.namespaces.get(namespace)] + [
+            scope for (space, _), scope in sorted(linker.module_scopes.items())
+            if space == namespace]
+        for scope in scopes:
+            symbol = scope.names.get(key) if scope is not None else None
+            if symbol is not None and symbol.kind == GLOBAL_DATA:
+                slots[number] = symbol.slot
+                break
+    return slots
+
+
+def _generation(value) -> tuple[float, bool]:
+    """(generation modulo 3, arrived) of a syncident's value (never written: 0, not arrived)."""
+    if not isinstance(value, float):
+        return 0.0, False
+    return (value - ARRIVED, True) if value >= ARRIVED else (value, False)
+
+
+class SyncWait(ControlAction):
+    """A barrier instruction; ``missing(store, task)`` names the tasks it still waits for;
+    ``times_out``: it has a ``\\TimeOut`` (it never waits forever)."""
+
+    __slots__ = ("missing", "times_out")
+
+
+def _barrier(calls, compiler, call, entry, what: str, error_name: str, listed: bool):
+    """The barrier of ``what`` (WaitSyncTask, SyncMoveOn: the tasks of its TaskList;
+    SyncMoveOff: every task declaring the syncident).  With ``\\TimeOut`` the wait may
+    end, when model checking, at any step where it would block: ``error_name``."""
+    arguments = Arguments(calls, compiler, call, entry)
+    sync_expression = argument_expression(call, "SyncID", 0)
+    key = sync_expression.name.key if isinstance(sync_expression, ast.NameRef) else ""
+    slots = _syncident_slots(compiler, key)
+    me = task_number(compiler)
+    own = slots.get(me)
+    names = compiler.linker.task_names
+    by_name = {name.upper(): number for number, name in enumerate(names)}
+    complete = compiler.linker.options.get("all_tasks_loaded", False)
+    task_list = arguments.value("TaskList") if listed else None
+    timeout = arguments.value("TimeOut") \
+        if argument_expression(call, "TimeOut", -1) is not None else None
+
+    def partners(m) -> list:
+        if task_list is None:
+            return [number for number in slots if number != me]
+        found = []
+        for item in task_list(m):
+            name = (item[0] if isinstance(item, tuple) else item).strip().upper()
+            number = by_name.get(name)
+            if number is None:
+                if complete:
+                    raise RapidError("ERR_TASKNAME", f"{what}: no task named {name!r}")
+                continue                   # a task not loaded: assumed to arrive
+            if number != me:
+                found.append(number)
+        return found
+
+    def missing_from(store, generation: float, among: list) -> list:
+        ahead = (generation + 1.0) % 3.0
+        return [number for number in among
+                if number not in slots or _generation(store[slots[number]])[0]
+                not in (generation, ahead)]
+
+    def wait(m, instruction):
+        current, arrived = _generation(m.store[own])
+        generation = current if arrived else (current + 1.0) % 3.0
+        if not missing_from(m.store, generation, partners(m)):
+            m.store = m.store.set(own, generation)
+            m.goto(instruction.next)
+            return
+        if timeout is not None and m.chooser.wait_times_out(m, timeout(m)):
+            m.store = m.store.set(own, (generation - 1.0) % 3.0)
+            raise RapidError(error_name, f"{what}: not every task arrived within \\TimeOut")
+        if not arrived:
+            m.store = m.store.set(own, generation + ARRIVED)
+        else:
+            m.waiting = True
+
+    def missing(store, _task) -> list:
+        current, arrived = _generation(store[own])
+        generation = current if arrived else (current + 1.0) % 3.0
+        try:
+            among = partners(_StoreView(store))
+        except Exception:              # a task list in routine data: not readable here
+            return []
+        return [names[number] for number in missing_from(store, generation, among)]
+
+    if own is None:                    # (the linker reports a syncident it cannot find)
+        return Action(call.span, lambda m: None)
+    instruction = SyncWait(call.span, wait)
+    instruction.missing = missing
+    instruction.times_out = timeout is not None
+    return instruction
+
+
+class _StoreView:
+    """Enough of a machine to read arguments from a stored state's global data."""
+
+    def __init__(self, store):
+        self.store = store
+
+    def read_ref(self, ref):
+        index, path = ref[1], ref[2]
+        value = self.store[index]
+        for step in path:
+            value = value[step]
+        return value
+
+
+@compiled("WaitSyncTask(\\switch InPos, VAR syncident SyncID, REF tasks TaskList{*} "
+          "\\num TimeOut)")
+def _wait_sync_task(calls, compiler, call, entry):
+    return _barrier(calls, compiler, call, entry, "WaitSyncTask", "ERR_WAITSYNCTASK", True)
+
+
+@compiled("SyncMoveOn(VAR syncident SyncID, REF tasks TaskList{*} \\num TimeOut)")
+def _sync_move_on(calls, compiler, call, entry):
+    return _barrier(calls, compiler, call, entry, "SyncMoveOn", "ERR_SYNCMOVEON", True)
+
+
+@compiled("SyncMoveOff(VAR syncident SyncID \\num TimeOut)")
+def _sync_move_off(calls, compiler, call, entry):
+    return _barrier(calls, compiler, call, entry, "SyncMoveOff", "ERR_SYNCMOVEOFF", False)

@@ -1,0 +1,112 @@
+"""PERS data a task checked alone reads and never writes.
+
+Tasks share their (non-TASK) PERS data by name; so does a PC through its
+interfaces.  When only some tasks of a backup are loaded (``--task``), data
+the loaded program reads but never writes keeps its initial value in every
+run checked, although another task or a PC may write it on the controller.
+``pers_warnings`` names each such data object (RMC731), so a verdict says
+what it assumes.  A name counts as written when it is assigned to or passed
+to any routine (an argument may be INOUT or PERS): the warning names only
+data nothing in the program can change.
+"""
+from __future__ import annotations
+
+from .. import ast
+from ..diagnostics import PERS_UNWRITTEN, Diagnostic
+from ..diagnostics.quoting import quoted
+from ..semantics.configured_signals import _walk_statements
+from ..semantics.program import PROGRAM_NAMESPACE
+from ..semantics.library import lookup_function, lookup_procedure
+from ..semantics.scope import GLOBAL_DATA, ROUTINE
+from ..semantics.values import format_value
+
+
+def pers_warnings(program, files) -> tuple:
+    """RMC731 per shared PERS data object the task checked alone reads and never writes
+    (none unless ``files`` loaded one task of a backup with several)."""
+    if files.alone is None:
+        return ()
+    read, written = data_uses(program)
+    found = []
+    for data in program.globals:
+        if data.namespace != PROGRAM_NAMESPACE or data.storage != "PERS" or data.task_local \
+                or data.slot not in read or data.slot in written:
+            continue
+        found.append(Diagnostic(
+            PERS_UNWRITTEN, f"PERS {data.name} is read but never written by task {files.alone}, "
+            "checked alone: another task or a PC may write it; the check assumes it keeps its "
+            f"initial value {_shown(data.initial)}", data.span, severity="warning",
+            notes=("check the backup's tasks together (without --task) to follow the "
+                   "writes of the other tasks",)))
+    return tuple(found)
+
+
+def data_uses(program, namespace: int = PROGRAM_NAMESPACE) -> tuple[set, set]:
+    """The global slots the routines of one task (its ``namespace``) name (read), and
+    those they may write (assigned, or passed to a routine by reference)."""
+    read, written = set(), set()
+    for routine in program.routines:
+        if routine.namespace != namespace or routine.ast is None:
+            continue
+        lookup = routine.scope.lookup
+        for node in _walk_statements(routine.ast.body):
+            if isinstance(node, ast.NameRef):
+                read.add(_slot(lookup, node))
+            elif isinstance(node, (ast.Assignment, ast.Connect)):
+                written.add(_slot(lookup, _root(node.target)))
+            elif isinstance(node, ast.LateBindingCall):      # a procedure named at run time
+                written.update(_slot(lookup, _root(arg.value)) for arg in node.args
+                               if arg.value is not None)
+            elif isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
+                modes = _parameter_modes(program, lookup, node)
+                written.update(_slot(lookup, _root(arg.value))
+                               for arg, mode in zip(node.args, modes)
+                               if arg.value is not None and mode != "IN")
+    read.discard(None)
+    written.discard(None)
+    return read, written
+
+
+def _parameter_modes(program, lookup, call) -> list:
+    """The mode (IN, VAR, INOUT, PERS, REF) of the parameter each argument of ``call``
+    binds, None where it is not known (a late-bound or unknown routine)."""
+    symbol = lookup(call.name.key)
+    if symbol is not None and symbol.kind == ROUTINE:
+        parameters = [(p.key, p.mode, p.optional) for p in program.routines[symbol.slot].parameters]
+    else:
+        entry = lookup_procedure(call.name.key) if isinstance(call, ast.ProcedureCall) \
+            else lookup_function(call.name.key)
+        if entry is None:
+            return [None] * len(call.args)
+        parameters = [(p.key, p.mode, p.optional) for p in entry.signature.parameters]
+    required = [mode for _, mode, optional in parameters if not optional]
+    by_key = {key: mode for key, mode, _ in parameters}
+    modes, position = [], 0
+    for arg in call.args:
+        if arg.name is not None:
+            modes.append(by_key.get(arg.name.key))
+        else:
+            modes.append(required[position] if position < len(required) else None)
+            position += 1
+    return modes
+
+
+def _root(expr):
+    """The NameRef an assignment target or argument starts from (None: not data)."""
+    while expr is not None and not isinstance(expr, ast.NameRef):
+        expr = getattr(expr, "base", None)
+    return expr
+
+
+def _slot(lookup, name_ref):
+    if name_ref is None:
+        return None
+    symbol = lookup(name_ref.name.key)
+    return symbol.slot if symbol is not None and symbol.kind == GLOBAL_DATA else None
+
+
+def _shown(value) -> str:
+    try:
+        return format_value(value)
+    except Exception:
+        return quoted(repr(value))

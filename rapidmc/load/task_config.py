@@ -1,0 +1,97 @@
+"""The tasks of a controller backup as the controller names and runs them.
+
+A backup keeps each task's modules in a numbered folder (``RAPID/TASK1``,
+``RAPID/TASK2`` ...); the names programs use (``GetTaskName``, the task lists
+of ``WaitSyncTask``) are elsewhere:
+
+* ``BACKINFO/backinfo.txt`` maps the folders to names, one section per task::
+
+      >>TASK1: (T_ROB1,Main,)
+
+* ``SYSPAR/SYS.cfg``, section ``CAB_TASKS``, configures each task by name::
+
+      -Name "T_ROB1" -Type "NORMAL" -MotionTask
+      -Name "T_BG" -Type "SEMISTATIC" -Entry "bg_main"
+
+  ``-Type`` is NORMAL, STATIC or SEMISTATIC (all three run when the
+  controller starts; STATIC and SEMISTATIC ones cannot be stopped from the
+  FlexPendant), ``-Entry`` the entry routine (default ``main``),
+  ``-MotionTask`` marks the task that moves the robot.
+
+``read_tasks`` joins the three: folder, name, type, entry, motion flag.  A
+folder whose name the backup does not give keeps its folder name (backups
+written by hand often name the folders T_ROB1 ... themselves).
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Optional
+
+from .config_file import instances
+
+_TASK_SECTION = re.compile(r"^>>(\w+):\s*\(\s*([^,)\s]*)", re.MULTILINE)
+
+
+@dataclass(frozen=True)
+class BackupTask:
+    """One task of a backup: where its modules are and how the controller runs it."""
+
+    folder: Path
+    name: str                  # T_ROB1 (the folder's name when the backup gives none)
+    kind: str = ""             # NORMAL, STATIC, SEMISTATIC ("" when not configured)
+    entry: str = "main"
+    motion: bool = False
+
+    def describe(self) -> str:
+        details = [d for d in (self.kind, "motion task" if self.motion else "") if d]
+        return f"{self.name} ({', '.join(details)})" if details else self.name
+
+
+def read_tasks(backup: Path, folders: list[Path]) -> list[BackupTask]:
+    """The task folders ``folders`` of ``backup`` with their configured names and settings."""
+    names = _folder_names(backup)
+    configured = _configured_tasks(backup)
+    tasks = []
+    for folder in folders:
+        name = names.get(folder.name.upper(), folder.name)
+        settings = configured.get(name.upper(), {})
+        tasks.append(BackupTask(folder, name, settings.get("TYPE", "").upper(),
+                                settings.get("ENTRY") or "main", "MOTIONTASK" in settings))
+    return tasks
+
+
+def config_file(backup: Path, *parts: str) -> Optional[Path]:
+    """``backup/parts...``, each part matched without regard to case (backups vary)."""
+    found = backup
+    for part in parts:
+        if not found.is_dir():
+            return None
+        found = next((entry for entry in sorted(found.iterdir())
+                      if entry.name.upper() == part.upper()), None)
+        if found is None:
+            return None
+    return found
+
+
+def _folder_names(backup: Path) -> dict[str, str]:
+    """TASKn folder (upper case) -> task name, from BACKINFO/backinfo.txt."""
+    path = config_file(backup, "BACKINFO", "backinfo.txt")
+    if path is None or not path.is_file():
+        return {}
+    text = path.read_bytes().decode("latin-1")
+    return {folder.upper(): name for folder, name in _TASK_SECTION.findall(text)
+            if folder.upper().startswith("TASK") and name}
+
+
+def _configured_tasks(backup: Path) -> dict[str, dict[str, str]]:
+    """Task name (upper case) -> its CAB_TASKS attributes (upper-case keys), from SYS.cfg."""
+    path = config_file(backup, "SYSPAR", "SYS.cfg")
+    if path is None or not path.is_file():
+        return {}
+    tasks: dict[str, dict[str, str]] = {}
+    for _, attributes in instances(path.read_bytes().decode("latin-1"), ("CAB_TASKS",)):
+        if attributes.get("NAME"):
+            tasks[attributes["NAME"].upper()] = attributes
+    return tasks

@@ -1,0 +1,198 @@
+"""Partial-order reduction: steps of different tasks on their own data are not interleaved.
+
+With several tasks, every interleaving of their steps is a path of the state
+graph; when the steps touch only data of their own task, the orders lead to the
+same states and no property can tell them apart.  At such a state it is enough
+to follow one task: an *ample set* (Peled; Clarke, Grumberg, Peled, *Model
+Checking*, ch. 10) is every transition of one task ``t`` when
+
+* C0 the task has a transition (every one of them changes the state);
+* C1 its next instruction is *local*: an assignment, condition, FOR step or
+  jump (``fusion`` metadata: the instruction as Python over ``store`` and
+  ``locals_``) that reads only data no other task writes and writes only data
+  no other task can name (its own VAR data, TASK PERS, routine data), reads no
+  signal and calls nothing.  No step of another task depends on it or changes
+  whether it can run, so the other tasks' steps commute with it;
+* C2 it is invisible: it writes nothing an atom of the check names (by name:
+  global or routine data), it cannot fail (no successor FAILED), and the
+  task's next instruction after it is local too, so the task can go on
+  before and after (whether a task waits is an atom of ``no_deadlock``'s
+  search, ``model.waiting``);
+* C3 cycle proviso: no successor it leads to has been expanded before.  Along
+  a cycle of the reduced graph, the state expanded last has a successor
+  expanded earlier, so it is expanded fully: every cycle has a fully expanded
+  state.  (States are remembered by hash: a collision only expands fully.)
+
+Otherwise the state is expanded fully.  The reduced graph keeps every verdict
+of the LTL properties without X (next) over these atoms, reachability of
+FAILED and of states where the program waits forever; ``plan_reductions``
+turns it off for a property with X, an atom on locations (AtLine, InRoutine
+...), stored free inputs (every step would change them), environment models,
+and data reached by name at run time (SetDataVal ...).  States with interrupts
+are expanded fully.  The fair search (``check.fair``) runs on the unreduced
+system (``RapidSystem.full_interleaving``).  tests/test_partial_order.py holds
+the verdicts against the unreduced search.
+"""
+from __future__ import annotations
+
+import re
+from typing import Optional
+
+from ... import ast
+from ...load.shared_data import data_uses
+from ...semantics.configured_signals import _walk_statements
+from ...semantics.instructions import Action, Branch, ForInit, ForNext, Jump
+from ...semantics.program import ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE, Program
+from ...semantics.scope import GLOBAL_DATA
+from ...semantics.state import RUNNING, State
+from .relevance import DATA_BY_NAME
+
+_STORE_READ = re.compile(r"\bstore\[(\d+)\]")
+TASK_CHOICE = "task"
+
+
+class PartialOrder:
+    """The ample sets of one program's states (see the module docstring)."""
+
+    def __init__(self, program: Program, visible_names: set[str]):
+        self.program = program
+        self.names = program.task_names
+        self.visible = visible_names
+        tasks = len(self.names)
+        accessors = _accessors(program)
+        written = [data_uses(program, _namespace(task))[1] for task in range(tasks)]
+        # per task: the slots it may write (named by no other task), and those it may read
+        # (written by no other task)
+        self.own = [frozenset(slot for slot, by in accessors.items() if by <= {task})
+                    for task in range(tasks)]
+        self.stable = [frozenset(slot for slot, by in accessors.items()
+                                 if not any(written[other] and slot in written[other]
+                                            for other in by if other != task))
+                       for task in range(tasks)]
+        self._local: dict = {}          # (task, routine, pc) -> bool
+        self.expanded: set[int] = set()  # hashes of the states expanded (cycle proviso)
+
+    def ample(self, state: State, successors: list) -> list:
+        """``successors`` (labelled, as ``RapidSystem.successors`` gives them) or the
+        ample subset of one task's transitions."""
+        expanded = self.expanded
+        chosen = None
+        if state[7] == RUNNING and not _has_interrupts(state[4]):
+            stacks = (state[0],) + state[10]
+            running = [task for task, stack in enumerate(stacks) if stack]
+            if len(running) > 1:
+                chosen = self._choose(state, stacks, running, successors)
+        expanded.add(hash(state))
+        return successors if chosen is None else chosen
+
+    def _choose(self, state: State, stacks: tuple, running: list,
+                successors: list) -> Optional[list]:
+        for task in running:
+            frame = stacks[task][-1]
+            if not self.is_local(task, frame[0], frame[1]):
+                continue
+            name = self.names[task]
+            mine = [entry for entry in successors if (TASK_CHOICE, name) in entry[0][0]]
+            if mine and all(self._invisible_step(task, state, after) for _, after in mine):
+                return mine
+        return None
+
+    def _invisible_step(self, task: int, state: State, after: State) -> bool:
+        if after[7] != RUNNING or after == state or hash(after) in self.expanded:
+            return False
+        stack = after[0] if task == 0 else after[10][task - 1]
+        return bool(stack) and self.is_local(task, stack[-1][0], stack[-1][1])
+
+    def is_local(self, task: int, routine: int, pc: int) -> bool:
+        """Whether the instruction at ``pc`` of ``routine`` is local to ``task`` (C1, C2)."""
+        key = (task, routine, pc)
+        found = self._local.get(key)
+        if found is None:
+            found = self._local[key] = self._classify(task, routine, pc)
+        return found
+
+    def _classify(self, task: int, routine_index: int, pc: int) -> bool:
+        routine = self.program.routines[routine_index]
+        instruction = routine.code[pc]
+        kind = type(instruction)
+        if instruction.reads_io:
+            return False
+        if kind is Jump:
+            return instruction.target != pc
+        if kind is ForNext:
+            return not self._visible_local(routine, instruction.slot)
+        if kind is ForInit:
+            return instruction.fusion is not None and \
+                self._reads_allowed(task, *instruction.fusion) and \
+                not self._visible_local(routine, instruction.slot)
+        if kind is Branch:
+            return instruction.fusion is not None and pc not in (
+                instruction.target_true, instruction.target_false) and \
+                self._reads_allowed(task, instruction.fusion)
+        if kind is Action and instruction.fusion is not None:
+            where, slot, value = instruction.fusion
+            if where == "store":
+                data = self.program.globals[slot]
+                if slot not in self.own[task] or data.key in self.visible:
+                    return False
+            elif self._visible_local(routine, slot):
+                return False
+            return self._reads_allowed(task, value)
+        return False
+
+    def _reads_allowed(self, task: int, *compiled) -> bool:
+        """Whether the expressions read only data no other task writes, and no signal."""
+        for expression in compiled:
+            source = expression.source
+            if source is None or "cx" in source:
+                return False
+            for slot in _STORE_READ.findall(source):
+                if int(slot) not in self.stable[task]:
+                    return False
+        return True
+
+    def _visible_local(self, routine, slot: int) -> bool:
+        name = routine.local_names[slot] if slot < len(routine.local_names) else ""
+        return name.upper() in self.visible or routine.name.upper() in self.visible
+
+
+def _namespace(task: int) -> int:
+    return 0 if task == 0 else FIRST_TASK_NAMESPACE + task - 1
+
+
+def _task_of_namespace(namespace: int) -> Optional[int]:
+    if namespace == ENVIRONMENT_NAMESPACE:
+        return None
+    return 0 if namespace < FIRST_TASK_NAMESPACE else namespace - FIRST_TASK_NAMESPACE + 1
+
+
+def _accessors(program: Program) -> dict[int, set[int]]:
+    """Global slot -> the tasks that can name it (its declaring task; for shared PERS,
+    every task declaring it)."""
+    linker = program.scopes
+    found: dict[int, set[int]] = {data.slot: set() for data in program.globals}
+    scopes = [(namespace, scope) for namespace, scope in linker.namespaces.items()] + \
+        [(namespace, scope) for (namespace, _), scope in linker.module_scopes.items()]
+    for namespace, scope in scopes:
+        task = _task_of_namespace(namespace)
+        for symbol in scope.names.values():
+            if symbol.kind == GLOBAL_DATA and symbol.slot in found:
+                found[symbol.slot].add(task if task is not None else -1)
+    return found
+
+
+def reaches_data_by_name(program: Program) -> bool:
+    """Whether some routine reaches data by its name at run time (SetDataVal ...): then
+    any data may be any task's."""
+    for routine in program.routines:
+        if routine.ast is None:
+            continue
+        for node in _walk_statements(routine.ast.body):
+            if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) and \
+                    node.name.key in DATA_BY_NAME:
+                return True
+    return False
+
+
+def _has_interrupts(interrupts) -> bool:
+    return bool(interrupts[0] or interrupts[1] or interrupts[3])

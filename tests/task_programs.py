@@ -1,0 +1,72 @@
+"""Small random programs of several RAPID tasks, for differential tests of partial-order reduction.
+
+``random_tasks(seed)`` writes 2 or 3 task modules.  Every task declares the
+same shared PERS data (a counter, a flag, a lock) and its own VAR data, and
+runs a loop (bounded or endless) of statements drawn from: updates of its own
+data, updates of the shared data, conditions on either, waits for shared data
+(which may block forever), a lock taken with WaitTestAndSet, a division that
+may fail.  Everything is kept small by MOD, so the state spaces are finite.
+``task_properties(seed)`` writes LTL properties over the shared data and the
+main task's own data.  The same seed always gives the same text.
+"""
+from __future__ import annotations
+
+import random
+
+SHARED = ("PERS num shared := 0;", "PERS bool flag := FALSE;", "PERS bool lock := FALSE;",
+          "PERS num inside := 0;")
+
+
+def random_tasks(seed: int) -> list[str]:
+    rng = random.Random(seed)
+    return [_task(rng, number) for number in range(1, rng.randint(2, 3) + 1)]
+
+
+def _task(rng: random.Random, number: int) -> str:
+    own, mine = f"own{number}", f"mine{number}"
+    body = [_statement(rng, own, mine, 3) for _ in range(rng.randint(2, 4))]
+    if rng.random() < 0.4:
+        loop = ["    WHILE TRUE DO", *body, "    ENDWHILE"]
+    else:
+        loop = [f"    FOR i FROM 1 TO {rng.randint(1, 3)} DO", *body, "    ENDFOR"]
+    declarations = [f"  {line}" for line in SHARED] + [f"  VAR num {own} := 0;",
+                                                       f"  VAR bool {mine} := FALSE;",
+                                                       "  VAR num quotient := 0;"]
+    return "\n".join([f"MODULE Task{number}", *declarations, "  PROC main()", *loop,
+                      "  ENDPROC", "ENDMODULE", ""])
+
+
+def _statement(rng: random.Random, own: str, mine: str, indent: int) -> str:
+    pad = "  " * indent
+    choices = [
+        f"{pad}{own} := ({own} + {rng.randint(1, 2)}) MOD 3;",
+        f"{pad}{mine} := NOT {mine};",
+        f"{pad}{own} := {own} * 2 MOD 3;",
+        f"{pad}shared := (shared + 1) MOD 3;",
+        f"{pad}shared := {own};",
+        f"{pad}flag := NOT flag;",
+        f"{pad}flag := {mine};",
+        f"{pad}IF {own} = {rng.randint(0, 2)} THEN\n{pad}  {mine} := TRUE;\n{pad}ENDIF",
+        f"{pad}IF shared > {own} THEN\n{pad}  {own} := shared;\n{pad}ELSE\n{pad}  "
+        f"{own} := ({own} + 1) MOD 3;\n{pad}ENDIF",
+        f"{pad}IF {mine} {own} := 0;",
+        f"{pad}WaitUntil shared <> {rng.randint(0, 2)} OR {mine};",
+        f"{pad}WaitTestAndSet lock;\n{pad}inside := inside + 1;\n{pad}{own} := ({own} + 1) "
+        f"MOD 3;\n{pad}inside := inside - 1;\n{pad}lock := FALSE;",
+        f"{pad}quotient := 6 DIV ({own} + {rng.randint(0, 1)});",
+    ]
+    return rng.choice(choices)
+
+
+def task_properties(seed: int) -> list[str]:
+    """Properties over the shared data and the main task's own data (``own1``)."""
+    rng = random.Random(seed + 500)
+    atoms = ['"shared = 0"', '"shared < 2"', "flag", '"own1 = 0"', "mine1", '"inside <= 1"',
+             '"own1 = shared"']
+    shapes = ["G {a}", "F {a}", "G F {a}", "F G {a}", "G ({a} -> F {b})", "{a} U {b}",
+              "G ({a} | {b})", "F ({a} & {b})"]
+    lines = []
+    for number in range(4):
+        first, second = rng.sample(atoms, 2)
+        lines.append(f"p{number}: " + rng.choice(shapes).format(a=first, b=second))
+    return lines

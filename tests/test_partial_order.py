@@ -1,0 +1,159 @@
+"""Partial-order reduction keeps every verdict (issue 20): differential tests.
+
+``rapidmc check`` runs in-process with partial-order reduction (the default)
+and with ``--no-por`` on generated programs of several tasks
+(tests/task_programs.py), on every data-driven check case of several tasks
+and on every task backup case; the verdicts must agree, the built-in checks
+included.  Besides: it switches off, with a note, for a property with X, and
+five independent tasks need few states.
+"""
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+from pathlib import Path
+
+import pytest
+
+from rapidmc.cli import main
+
+from task_programs import random_tasks, task_properties
+from test_check_cases import run_check, verdict_cases
+from test_task_backups import CASES as BACKUP_CASES, run_check as run_backup_check
+
+MULTI_TASK_CASES = [case for case in verdict_cases() if "--add-task" in case.extra_args]
+
+
+def check_json(argv: list[str]) -> dict:
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
+        main(["check", *argv, "--format", "json", "--quiet"])
+    return json.loads(out.getvalue())
+
+
+def verdicts(document: dict) -> dict[str, str]:
+    return {p["name"]: p["verdict"] for p in document["properties"]}
+
+
+def states(document: dict) -> dict[str, int]:
+    return {p["name"]: p["stats"]["product_states"] for p in document["properties"]}
+
+
+def write_tasks(folder: Path, seed: int) -> list[str]:
+    argv = []
+    for number, text in enumerate(random_tasks(seed), start=1):
+        path = folder / f"task{number}.mod"
+        path.write_text(text)
+        argv += [str(path)] if number == 1 else ["--add-task", str(path)]
+    spec = folder / "props.ltl"
+    spec.write_text("\n".join(task_properties(seed)) + "\n")
+    return argv + ["--ltl", str(spec), "--max-states", "30000"]
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_generated_tasks_keep_their_verdicts(tmp_path, seed):
+    argv = write_tasks(tmp_path, seed)
+    if seed % 4 == 3:
+        argv.append("--no-fairness")         # every run: the plain search alone
+    reduced, full = check_json(argv), check_json(argv + ["--no-por"])
+    assert "UNKNOWN" not in verdicts(full).values(), states(full)
+    assert verdicts(reduced) == verdicts(full)
+    assert never_reached(reduced) == never_reached(full)      # coverage: the same lines
+
+
+def never_reached(document: dict) -> set:
+    return {(w["location"]["file"], w["location"]["line"]) for w in document["warnings"]
+            if w["code"] == "RMC701"}
+
+
+@pytest.mark.parametrize("case", MULTI_TASK_CASES, ids=lambda case: case.name)
+def test_check_cases_of_several_tasks_keep_their_verdicts(case, monkeypatch):
+    _, reduced, _ = run_check(case, monkeypatch)
+    full_case = type(case)(**{**case.__dict__, "extra_args": case.extra_args + ("--no-por",)})
+    _, full, _ = run_check(full_case, monkeypatch)
+    assert verdicts(json.loads(reduced)) == verdicts(json.loads(full))
+
+
+@pytest.mark.parametrize("case", sorted(p for p in BACKUP_CASES.iterdir() if p.is_dir()),
+                         ids=lambda p: p.name)
+def test_task_backups_keep_their_verdicts(case, tmp_path):
+    _, reduced, _ = run_backup_check(case, case / "backup")
+    options = tmp_path / "args"
+    args = case / "args"
+    options.write_text((args.read_text() if args.exists() else "") + "\n--no-por\n")
+    for name in ("props.ltl",):
+        if (case / name).exists():
+            (tmp_path / name).write_text((case / name).read_text())
+    _, full, _ = run_backup_check(tmp_path, case / "backup")
+    assert {n: p["verdict"] for n, p in reduced.items()} == \
+        {n: p["verdict"] for n, p in full.items()}
+
+
+INDEPENDENT = """MODULE Independent{n}
+  VAR num count{n} := 0;
+  PROC main()
+    FOR i FROM 1 TO 12 DO
+      count{n} := count{n} + 1;
+    ENDFOR
+  ENDPROC
+ENDMODULE
+"""
+
+
+def independent_tasks(folder: Path, count: int) -> list[str]:
+    argv = []
+    for n in range(1, count + 1):
+        path = folder / f"independent{n}.mod"
+        path.write_text(INDEPENDENT.format(n=n))
+        argv += [str(path)] if n == 1 else ["--add-task", str(path)]
+    return argv
+
+
+def test_five_independent_tasks_need_few_states(tmp_path):
+    argv = independent_tasks(tmp_path, 5) + ["--formula", 'bounded: G "count1 <= 12"']
+    document = check_json(argv)
+    assert verdicts(document) == {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS",
+                                  "bounded": "HOLDS"}
+    assert max(states(document).values()) < 10_000
+    full = check_json(argv + ["--no-por", "--max-states", "20000"])
+    assert verdicts(full)["no_runtime_error"] == "UNKNOWN"     # every order: too many
+
+
+def test_a_property_with_next_turns_it_off_with_a_note(tmp_path):
+    argv = independent_tasks(tmp_path, 2) + ["--formula", 'n: G ("count1 = 1" -> X "count1 >= 1")']
+    document = check_json(argv)
+    assert any(w["code"] == "RMC732" for w in document["warnings"])
+    assert states(document) == states(check_json(argv + ["--no-por"]))
+
+
+READER = """MODULE Reader
+  PERS num count := 0;
+  PERS num seen := 0;
+  VAR num copy := 0;
+  PROC main()
+    copy := count;
+    copy := copy * 2;
+    seen := copy;
+  ENDPROC
+ENDMODULE
+"""
+WRITER = """MODULE Writer
+  PERS num count := 0;
+  PROC main()
+    count := 1;
+  ENDPROC
+ENDMODULE
+"""
+
+
+def test_a_read_of_data_another_task_writes_is_not_reordered(tmp_path):
+    """copy := count reads data the writer task writes: it is no ample step, so the run in
+    which the writer goes first (seen = 2) is kept."""
+    (tmp_path / "reader.mod").write_text(READER)
+    (tmp_path / "writer.mod").write_text(WRITER)
+    argv = [str(tmp_path / "reader.mod"), "--add-task", str(tmp_path / "writer.mod"),
+            "--formula", 'never_two: G "seen <> 2"', "--formula", 'never_zero: G "seen = 0"']
+    expected = {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS", "never_two": "VIOLATED",
+                "never_zero": "VIOLATED"}
+    assert verdicts(check_json(argv)) == verdicts(check_json(argv + ["--no-por"])) == expected

@@ -1,0 +1,81 @@
+"""Controller backups of several tasks, checked together: tests/task_backups/<case>/.
+
+Each case is a folder with a backup written for the test (``backup/``: BACKINFO,
+SYSPAR, RAPID/TASKn), checked from the repository root:
+
+* ``props.ltl`` — properties (optional); ``args`` — extra options (optional);
+* ``expected`` — ``NAME VERDICT`` per property, the built-in checks included;
+* ``waiting`` — text the reason of a violated ``no_deadlock`` must contain, one piece a line;
+* ``warnings`` — ``RMCnnn text`` per warning or note the report must contain.
+
+Besides, a barrier removed from a case that needs it must break the property it keeps.
+"""
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import shlex
+import shutil
+from pathlib import Path
+
+import pytest
+
+from rapidmc.cli import main
+
+CASES = Path(__file__).resolve().parent / "task_backups"
+
+
+def lines(path: Path) -> list[str]:
+    if not path.exists():
+        return []
+    return [line.strip() for line in path.read_text().splitlines()
+            if line.strip() and not line.startswith("#")]
+
+
+def run_check(case: Path, backup: Path) -> tuple[int, dict, str]:
+    argv = ["check", str(backup), "--format", "json", "--quiet"]
+    if (case / "props.ltl").exists():
+        argv += ["--ltl", str(case / "props.ltl")]
+    argv += [arg for line in lines(case / "args") for arg in shlex.split(line)]
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        code = main(argv)
+    report = json.loads(out.getvalue())
+    warnings = "\n".join(f"{w['code']} {w['message']}" for w in report.get("warnings") or ())
+    return code, {p["name"]: p for p in report["properties"]}, err.getvalue() + warnings
+
+
+@pytest.mark.parametrize("case", sorted(p for p in CASES.iterdir() if p.is_dir()),
+                         ids=lambda p: p.name)
+def test_task_backup_case(case):
+    code, found, err = run_check(case, case / "backup")
+    expected = dict(line.split() for line in lines(case / "expected"))
+    assert {name: p["verdict"] for name, p in found.items()} == expected, err
+    assert code == (1 if "VIOLATED" in expected.values() else 0)
+    for piece in lines(case / "waiting"):
+        assert piece in (found["no_deadlock"]["reason"] or ""), found["no_deadlock"]["reason"]
+    for line in lines(case / "warnings"):
+        code_text, _, text = line.partition(" ")
+        assert any(code_text in row and text in row for row in err.splitlines()), err
+
+
+def test_without_its_barrier_robot_1_runs_ahead(tmp_path):
+    case = CASES / "sync_both"
+    backup = shutil.copytree(case / "backup", tmp_path / "backup")
+    module = backup / "RAPID" / "TASK1" / "PROGMOD" / "Rob1.mod"
+    module.write_text(module.read_text().replace("WaitSyncTask cycle_done, pair;", ""))
+    _, found, err = run_check(case, backup)
+    assert found["together"]["verdict"] == "VIOLATED", err
+
+
+def test_a_barrier_with_a_task_name_no_task_has_is_an_error(tmp_path):
+    case = CASES / "sync_both"
+    backup = shutil.copytree(case / "backup", tmp_path / "backup")
+    module = backup / "RAPID" / "TASK1" / "PROGMOD" / "Rob1.mod"
+    module.write_text(module.read_text().replace('[["T_ROB1"], ["T_ROB2"]]',
+                                                 '[["T_ROB1"], ["T_ROB9"]]'))
+    _, found, err = run_check(case, backup)
+    assert found["no_runtime_error"]["verdict"] == "VIOLATED"
+    steps = found["no_runtime_error"]["trace"]
+    assert "ERR_TASKNAME" in json.dumps(steps)
