@@ -20,7 +20,7 @@ from pathlib import Path
 from typing import Optional
 
 from ..ast import Span
-from ..diagnostics import FILE_NOT_FOUND, PROGRAM_FILE, SourceCache, error
+from ..diagnostics import FILE_NOT_FOUND, PROGRAM_FILE, SourceCache, UserError, error
 
 MODULE_SUFFIXES = {".mod", ".modx", ".sys", ".prg"}
 SIGNAL_KINDS = {"DI", "DO", "AI", "AO", "GI", "GO"}
@@ -212,6 +212,18 @@ def load_tasks(files: ProgramFiles) -> list:
     from ..semantics.link import Task
     from ..syntax import load_program
     return [Task(name, load_program(paths)) for name, paths in files.tasks]
+
+
+def every_task(path: Path) -> list[tuple[str, list[str]]]:
+    """(task name, module files) of each task of the backup at ``path`` holding a module."""
+    tasks = []
+    for task in _task_folders(path):
+        try:
+            modules, _ = expand_backup(path, task.name)
+        except UserError:                # a task folder without modules
+            continue
+        tasks.append((task.name, modules))
+    return tasks
 
 
 def other_tasks(path: Path, main_modules: list[str]) -> list[tuple[str, list[str]]]:

@@ -1,0 +1,90 @@
+"""``rapidmc lint``: mistakes visible without a search, and unchecked input flows.
+
+Each rule is a registered object (``registry.Rule``: code RMC801-RMC840, severity,
+summary, a bad and a good example) in one module per rule or small family; they
+read the program's syntax tree through a ``LintContext`` built once per program
+(``context``).  ``flows`` follows data read from sockets, files, serial channels,
+the FlexPendant and analog or group inputs to the arguments where unchecked input
+does harm (RMC820).  ``config`` chooses the rules and reads suppression comments;
+docs/lint.md is generated from the registry (``documentation``).
+
+One entry point, used by ``rapidmc lint`` and the language server::
+
+    >>> from rapidmc.syntax import parse_text
+    >>> program = ast.Program(parse_text(
+    ...     "MODULE M\\nPROC main()\\nVAR bool b;\\nb := TRUE AND NOT b AND b;\\nENDPROC\\nENDMODULE",
+    ...     "m.mod"))
+    >>> [(d.code.code, d.span.line) for d in lint_program(program)]
+    [('RMC801', 4)]
+
+May import: everything below ``findings`` (``ast``, ``diagnostics``, ``syntax``,
+``semantics``, ``load``).
+"""
+from __future__ import annotations
+
+from typing import Optional
+
+from ... import ast
+from ...diagnostics import Diagnostic
+from . import call_rules, precedence  # noqa: F401  (registration)
+from .config import LintConfig, suppressed
+from .context import LintContext
+from .registry import RULES, Rule, severity_rank
+
+_RULE_MODULES = ("blocking", "unused", "unreachable", "shared_index", "flexpendant", "flows")
+
+
+def _register_all() -> None:
+    import importlib
+    for name in _RULE_MODULES:
+        try:
+            importlib.import_module(f"{__name__}.{name}")
+        except ModuleNotFoundError as missing:
+            if missing.name != f"{__name__}.{name}":
+                raise
+
+
+_register_all()
+
+
+def lint_program(program: ast.Program, config: Optional[LintConfig] = None,
+                 files: Optional[set] = None) -> list[Diagnostic]:
+    """The findings of every enabled rule on ``program``, suppressed ones left out, sorted
+    by file, line and column; with ``files``, only findings in those files."""
+    config = config or LintConfig()
+    context = LintContext(program)
+    findings = []
+    for code, entry in RULES.items():
+        if not config.enabled(code):
+            continue
+        severity = config.severity_of(code)
+        for finding in entry.check(context):
+            if files is not None and (finding.span is None or finding.span.file not in files):
+                continue
+            if suppressed(finding):
+                continue
+            if finding.severity != severity:
+                finding = _with_severity(finding, severity)
+            findings.append(finding)
+    findings.sort(key=_order)
+    return findings
+
+
+def _with_severity(finding: Diagnostic, severity: str) -> Diagnostic:
+    from dataclasses import replace
+    return replace(finding, severity=severity)
+
+
+def _order(finding: Diagnostic):
+    span = finding.span
+    return (span.file, span.line, span.column, finding.code.code) if span is not None \
+        else ("", 0, 0, finding.code.code)
+
+
+def failing(findings: list[Diagnostic], threshold: str) -> bool:
+    """Is any finding at or above ``threshold``?"""
+    limit = severity_rank(threshold)
+    return any(severity_rank(f.severity) >= limit for f in findings)
+
+
+__all__ = ["lint_program", "failing", "LintConfig", "RULES", "Rule"]

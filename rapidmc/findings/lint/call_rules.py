@@ -1,0 +1,119 @@
+"""RMC802 (tool, work object or load not PERS) and RMC803 (optional argument's case):
+what a call passes, checked against the parameter it fills."""
+from __future__ import annotations
+
+from ... import ast
+from ...diagnostics import OPTIONAL_CASE, TOOL_NOT_PERS, Diagnostic
+from .arguments import bind_predefined, predefined_signature
+from .context import name_of
+from .registry import rule
+
+_PERSISTENT_TYPES = ("tooldata", "wobjdata", "loaddata")
+
+
+def call_sites(context):
+    """(call, is a procedure call, routine, module) of every call in the program."""
+    for site in context.calls:
+        yield site.statement, True, site.routine, site.module
+    for call, site, routine, module in context.of_type(ast.FunctionCall):
+        yield call, False, routine, module
+
+
+@rule(TOOL_NOT_PERS, "error",
+      bad="""
+          MODULE M
+            VAR tooldata gripper := [TRUE, [[0, 0, 150], [1, 0, 0, 0]], [1.5, [0, 0, 60], [1, 0, 0, 0], 0, 0, 0]];
+            PROC main()
+              MoveL Offs(CRobT(), 0, 0, 10), v100, fine, gripper;
+            ENDPROC
+          ENDMODULE
+          """,
+      good="""
+          MODULE M
+            PERS tooldata gripper := [TRUE, [[0, 0, 150], [1, 0, 0, 0]], [1.5, [0, 0, 60], [1, 0, 0, 0], 0, 0, 0]];
+            PROC main()
+              MoveL Offs(CRobT(), 0, 0, 10), v100, fine, gripper;
+            ENDPROC
+          ENDMODULE
+          """,
+      why="A move instruction's Tool, WObj and TLoad are PERS parameters: RobotStudio's "
+          "virtual controller accepts a VAR or CONST there, a real controller's program "
+          "check does not (K-RAPID paper, Table 5).")
+def tool_not_pers(context):
+    for call, is_procedure, routine, module in call_sites(context):
+        signature = predefined_signature(call.name, is_procedure)
+        if signature is None or signature.open_parameters:
+            continue
+        if not any(spec.type_name in _PERSISTENT_TYPES for spec in signature.parameters):
+            continue
+        bound = bind_predefined(call, is_procedure)
+        for spec in signature.parameters:
+            argument = bound.get(spec.key)
+            if spec.mode != "PERS" or spec.type_name not in _PERSISTENT_TYPES \
+                    or argument is None or argument.value is None:
+                continue
+            name = name_of(argument.value)
+            declaration = name and context.declaration(name.key, routine, module)
+            storage = _storage(declaration)
+            if storage is not None and storage != "PERS":
+                yield Diagnostic(
+                    TOOL_NOT_PERS, f"{spec.type_name} '{name.text}' given to {call.name.text} "
+                    f"\\{spec.name} is {storage}: a real controller requires PERS",
+                    argument.value.span, severity="error",
+                    notes=(f"declared at {declaration.span}",))
+
+
+def _storage(declaration):
+    if isinstance(declaration, ast.DataDeclaration):
+        return declaration.storage
+    if isinstance(declaration, ast.Parameter) and declaration.mode in ("IN", "VAR"):
+        return "an IN parameter" if declaration.mode == "IN" else "a VAR parameter"
+    return None
+
+
+@rule(OPTIONAL_CASE, "warning",
+      bad="""
+          MODULE M
+            PERS tooldata gripper := [TRUE, [[0, 0, 150], [1, 0, 0, 0]], [1.5, [0, 0, 60], [1, 0, 0, 0], 0, 0, 0]];
+            PERS wobjdata table := [FALSE, TRUE, "", [[0, 0, 0], [1, 0, 0, 0]], [[0, 0, 0], [1, 0, 0, 0]]];
+            PROC main()
+              MoveL Offs(CRobT(), 0, 0, 10), v100, fine, gripper \\wobj:=table;
+            ENDPROC
+          ENDMODULE
+          """,
+      good="""
+          MODULE M
+            PERS tooldata gripper := [TRUE, [[0, 0, 150], [1, 0, 0, 0]], [1.5, [0, 0, 60], [1, 0, 0, 0], 0, 0, 0]];
+            PERS wobjdata table := [FALSE, TRUE, "", [[0, 0, 0], [1, 0, 0, 0]], [[0, 0, 0], [1, 0, 0, 0]]];
+            PROC main()
+              MoveL Offs(CRobT(), 0, 0, 10), v100, fine, gripper \\WObj:=table;
+            ENDPROC
+          ENDMODULE
+          """,
+      why="Optional arguments are matched to parameters without regard to case by the "
+          "virtual controller; the manual spells them as declared, and tools that compare "
+          "names exactly (editors, other checkers) do not match them (K-RAPID, Table 5).")
+def optional_case(context):
+    for call, is_procedure, routine, module in call_sites(context):
+        declared = _declared_names(context, call, is_procedure)
+        if not declared:
+            continue
+        for argument in call.args:
+            if argument.kind == ast.REQUIRED or argument.name is None:
+                continue
+            spelling = declared.get(argument.name.key)
+            if spelling is not None and spelling != argument.name.text:
+                yield Diagnostic(
+                    OPTIONAL_CASE, f"optional argument '\\{argument.name.text}' of "
+                    f"{call.name.text} is declared '\\{spelling}'", argument.name.span,
+                    severity="warning")
+
+
+def _declared_names(context, call, is_procedure) -> dict[str, str]:
+    entry = context.routines.get(call.name.key)
+    if entry is not None:
+        return {p.name.key: p.name.text for p in entry[0].parameters if p.optional}
+    signature = predefined_signature(call.name, is_procedure)
+    if signature is None:
+        return {}
+    return {spec.key: spec.name for spec in signature.parameters if spec.optional}
