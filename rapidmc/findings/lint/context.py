@@ -189,6 +189,37 @@ class LintContext:
                     self._collect(inner, routine, module, inner_guards, section, found)
 
     @cached_property
+    def sites_by_routine(self) -> dict[int, list[Site]]:
+        found: dict[int, list[Site]] = {}
+        for site in self.sites:
+            found.setdefault(id(site.routine), []).append(site)
+        return found
+
+    @cached_property
+    def callers(self) -> dict[str, list[ast.Routine]]:
+        """Routine key -> the routines that call it (by procedure or function call)."""
+        found: dict[str, dict[int, ast.Routine]] = {}
+        for site in self.calls:
+            found.setdefault(site.statement.name.key, {})[id(site.routine)] = site.routine
+        for call, site, routine, module in self.of_type(ast.FunctionCall):
+            if routine is not None:
+                found.setdefault(call.name.key, {})[id(routine)] = routine
+        return {key: list(routines.values()) for key, routines in found.items()}
+
+    def waiting_routines(self, waits) -> set[str]:
+        """The keys of the user routines that run a statement for which ``waits(statement,
+        found)`` holds, directly or through the routines they call."""
+        found: set[str] = set()
+        pending = [site.routine for site in self.sites if waits(site.statement, found)]
+        while pending:
+            routine = pending.pop()
+            if routine.name.key in found:
+                continue
+            found.add(routine.name.key)
+            pending.extend(self.callers.get(routine.name.key, ()))
+        return found
+
+    @cached_property
     def calls(self) -> list[Site]:
         """The sites of procedure calls."""
         return [site for site in self.sites if type(site.statement) is ast.ProcedureCall]
