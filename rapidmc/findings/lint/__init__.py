@@ -26,25 +26,11 @@ from typing import Optional
 
 from ... import ast
 from ...diagnostics import Diagnostic
-from . import call_rules, precedence  # noqa: F401  (registration)
+from . import (blocking, call_rules, flexpendant, flows, precedence,  # noqa: F401
+               shared_index, unreachable, unused)                     # (they register rules)
 from .config import LintConfig, suppressed
 from .context import LintContext
 from .registry import RULES, Rule, severity_rank
-
-_RULE_MODULES = ("blocking", "unused", "unreachable", "shared_index", "flexpendant", "flows")
-
-
-def _register_all() -> None:
-    import importlib
-    for name in _RULE_MODULES:
-        try:
-            importlib.import_module(f"{__name__}.{name}")
-        except ModuleNotFoundError as missing:
-            if missing.name != f"{__name__}.{name}":
-                raise
-
-
-_register_all()
 
 
 def lint_program(program: ast.Program, config: Optional[LintConfig] = None,
