@@ -30,6 +30,7 @@ from .check.trace import Trace, build_trace
 from .diagnostics import (AUTOMATON, DOMAIN, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED,
                           TRACE_REPLAY, USAGE, Diagnostic, SourceCache, UserError, error)
 from .findings.explored import ExploredFacts
+from .findings.lint.marks import instrument as instrument_flows
 from .ltl import read_hoa, to_buchi
 from .ltl.syntax import Not
 from .model import reduction
@@ -46,7 +47,8 @@ from .semantics.step import CheckConfig, EnvironmentFault
 from .syntax import load_program as _parse_files
 from .diagnostics.quoting import one_line, quoted
 
-__all__ = ["CheckOptions", "CheckReport", "Model", "check", "check_model", "load_program", "prepare",
+__all__ = ["CheckOptions", "CheckReport", "Model", "check", "check_model", "flow_property",
+           "load_program", "prepare",
            "property_from_text", "read_properties", "HOLDS", "VIOLATED", "UNKNOWN"]
 
 BUILTIN_RUNTIME = "no_runtime_error"
@@ -82,18 +84,36 @@ class CheckOptions:
 
 def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = "main",
                  task: Optional[str] = None, all_tasks: bool = False,
-                 add_tasks: Sequence[str] = (), eio: Optional[str] = None) -> Program:
+                 add_tasks: Sequence[str] = (), eio: Optional[str] = None,
+                 flows: bool = False) -> Program:
     """Parse and link a program: module files or a controller backup folder, as ``check`` takes.
 
     ``env``: environment model modules; ``task``/``all_tasks``: which tasks of a
     backup; ``add_tasks``: further tasks, each ``"a.mod,b.mod"``; ``eio``: an
-    I/O configuration whose signals the program uses by name.
+    I/O configuration whose signals the program uses by name; ``flows``: keep taint
+    marks in the state, for ``flow_property`` (findings.lint.marks).
     """
     files = resolve_program_files(SimpleNamespace(files=list(files), task=task, eio=eio,
                                                   all_tasks=all_tasks, add_task=list(add_tasks)))
     environment = _parse_files(list(env)) if env else None
-    return build(_parse_files(files.modules), entry=entry, environment=environment,
-                 options={"configured_signals": files.signals}, tasks=load_tasks(files))
+    parsed = _parse_files(files.modules)
+    options: dict = {"configured_signals": files.signals}
+    if flows:
+        marks = instrument_flows(parsed)
+        parsed, options["flow_marks"] = marks.program, marks
+    return build(parsed, entry=entry, environment=environment, options=options,
+                 tasks=load_tasks(files))
+
+
+def flow_property(program: Program) -> Property:
+    """The built-in property ``no_unchecked_input`` of a program loaded with ``flows``:
+    no run takes input from a socket, file, FlexPendant or analog/group input to a
+    motion, file path, late-bound call or output argument without a check that bounds it."""
+    marks = program.options.get("flow_marks")
+    if marks is None:
+        raise ValueError("the program was not loaded with flows=True")
+    SourceCache.remember("<flows>", marks.property_text)
+    return parse_property(marks.property_text, "<flows>", 1)
 
 
 def read_properties(*paths: str) -> list[Property]:
