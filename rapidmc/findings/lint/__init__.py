@@ -22,6 +22,8 @@ May import: everything below ``findings`` (``ast``, ``diagnostics``, ``syntax``,
 """
 from __future__ import annotations
 
+import contextlib
+import gc
 from typing import Optional
 
 from ... import ast
@@ -40,20 +42,38 @@ def lint_program(program: ast.Program, config: Optional[LintConfig] = None,
     config = config or LintConfig()
     context = LintContext(program)
     findings = []
-    for code, entry in RULES.items():
-        if not config.enabled(code):
-            continue
-        severity = config.severity_of(code)
-        for finding in entry.check(context):
-            if files is not None and (finding.span is None or finding.span.file not in files):
-                continue
-            if suppressed(finding):
-                continue
-            if finding.severity != severity:
-                finding = _with_severity(finding, severity)
-            findings.append(finding)
+    with _collector_paused():
+        for code, entry in sorted(RULES.items()):
+            findings.extend(_findings(code, entry, context, config, files))
     findings.sort(key=_order)
     return findings
+
+
+@contextlib.contextmanager
+def _collector_paused():
+    """The indexes hold a tuple per expression: the cycle collector's passes over them
+    (none of them is garbage) would take as long as the rules themselves."""
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
+
+
+def _findings(code, entry, context, config, files):
+    if not config.enabled(code):
+        return
+    severity = config.severity_of(code)
+    for finding in entry.check(context):
+        if files is not None and (finding.span is None or finding.span.file not in files):
+            continue
+        if suppressed(finding):
+            continue
+        if finding.severity != severity:
+            finding = _with_severity(finding, severity)
+        yield finding
 
 
 def _with_severity(finding: Diagnostic, severity: str) -> Diagnostic:

@@ -1,6 +1,7 @@
 """Which parameter each argument of a call fills, for predefined and user routines."""
 from __future__ import annotations
 
+import functools
 from typing import Optional
 
 from ... import ast
@@ -16,17 +17,25 @@ def predefined_signature(name: ast.Name, procedure: bool = True):
 def bind_predefined(call, procedure: bool = True) -> dict[str, ast.Argument]:
     """Parameter key -> argument for a call of a predefined routine (empty when the
     routine is not predefined or its parameter list is not known)."""
-    signature = predefined_signature(call.name, procedure)
-    if signature is None or signature.open_parameters:
-        return {}
-    slots = []                        # each required slot: the keys of its alternatives
-    for spec in signature.required:
+    slots = _required_slots(call.name.key, procedure)
+    return _bind(call.args, slots) if slots is not None else {}
+
+
+@functools.lru_cache(maxsize=None)
+def _required_slots(key: str, procedure: bool) -> Optional[tuple]:
+    """The keys of each positional slot of a predefined routine (a group of required
+    alternatives is one slot), or None when the routine or its parameters are unknown."""
+    entry = (lookup_procedure if procedure else lookup_function)(key)
+    if entry is None or entry.signature.open_parameters:
+        return None
+    slots = []
+    for spec in entry.signature.required:
         if slots and spec.alternative_group is not None \
                 and spec.alternative_group == slots[-1][0]:
             slots[-1][1].append(spec.key)
         else:
             slots.append((spec.alternative_group, [spec.key]))
-    return _bind(call.args, [keys for _, keys in slots])
+    return tuple(keys for _, keys in slots)
 
 
 def bind_user(call, routine: ast.Routine) -> dict[str, ast.Argument]:

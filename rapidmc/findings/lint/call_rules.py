@@ -2,6 +2,8 @@
 what a call passes, checked against the parameter it fills."""
 from __future__ import annotations
 
+import functools
+
 from ... import ast
 from ...diagnostics import OPTIONAL_CASE, TOOL_NOT_PERS, Diagnostic
 from .arguments import bind_predefined, predefined_signature
@@ -41,16 +43,13 @@ def call_sites(context):
           "check does not (K-RAPID paper, Table 5).")
 def tool_not_pers(context):
     for call, is_procedure, routine, module in call_sites(context):
-        signature = predefined_signature(call.name, is_procedure)
-        if signature is None or signature.open_parameters:
-            continue
-        if not any(spec.type_name in _PERSISTENT_TYPES for spec in signature.parameters):
+        parameters = _persistent_parameters(call.name.key, is_procedure)
+        if not parameters:
             continue
         bound = bind_predefined(call, is_procedure)
-        for spec in signature.parameters:
+        for spec in parameters:
             argument = bound.get(spec.key)
-            if spec.mode != "PERS" or spec.type_name not in _PERSISTENT_TYPES \
-                    or argument is None or argument.value is None:
+            if argument is None or argument.value is None:
                 continue
             name = name_of(argument.value)
             declaration = name and context.declaration(name.key, routine, module)
@@ -61,6 +60,16 @@ def tool_not_pers(context):
                     f"\\{spec.name} is {storage}: a real controller requires PERS",
                     argument.value.span, severity="error",
                     notes=(f"declared at {declaration.span}",))
+
+
+@functools.lru_cache(maxsize=None)
+def _persistent_parameters(key: str, procedure: bool) -> tuple:
+    """The PERS tooldata, wobjdata and loaddata parameters of a predefined routine."""
+    signature = predefined_signature(ast.Name.of(key), procedure)
+    if signature is None or signature.open_parameters:
+        return ()
+    return tuple(spec for spec in signature.parameters
+                 if spec.mode == "PERS" and spec.type_name in _PERSISTENT_TYPES)
 
 
 def _storage(declaration):

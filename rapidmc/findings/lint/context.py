@@ -118,6 +118,7 @@ class LintContext:
     def __init__(self, program: ast.Program):
         self.program = program
         self.modules = program.modules
+        self._calls_at: dict[int, list] = {}
 
     # ------------------------------------------------------------ declarations
     @cached_property
@@ -235,11 +236,19 @@ class LintContext:
             for routine in module.routines:
                 for decl in routine.data:
                     self._declaration_expressions(decl, routine, module, found)
+        calls_at = self._calls_at
         for site in self.sites:
             for top in top_expressions(site.statement):
                 for expression in subexpressions(top):
                     found.append((expression, site, site.routine, site.module))
+                    if type(expression) is ast.FunctionCall:
+                        calls_at.setdefault(id(site), []).append(expression)
         return found
+
+    def function_calls(self, site: Site) -> list:
+        """The function calls in the expressions of ``site``'s statement."""
+        self.expressions
+        return self._calls_at.get(id(site), _NONE)
 
     @staticmethod
     def _declaration_expressions(decl, routine, module, found) -> None:
@@ -264,6 +273,7 @@ class LintContext:
         return SourceCache.line(file, line)
 
 
+_NONE: list = []
 _COMPOUND = (ast.If, ast.CompactIf, ast.While, ast.For, ast.Test)
 
 

@@ -26,6 +26,7 @@ input flows").
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from typing import Optional
 
@@ -33,7 +34,7 @@ from ... import ast
 from ...diagnostics import UNCHECKED_INPUT, Diagnostic
 from ...semantics.library import lookup_function, lookup_procedure
 from .arguments import bind_predefined, bind_user
-from .context import name_of, subexpressions, top_expressions
+from .context import name_of
 from .registry import rule
 from .shared_index import compares
 from .unreachable import ends_block
@@ -56,6 +57,8 @@ SOURCE_FUNCTIONS = {
     "AINPUT": "an analog input", "GINPUT": "a group input", "GINPUTDNUM": "a group input",
 }
 SOURCE_SIGNAL_TYPES = {"SIGNALAI": "an analog input", "SIGNALGI": "a group input"}
+_DEVICES = ("iodev", "socketdev", "dir", "signaldo", "signalgo", "signalao", "signaldi",
+            "signalgi", "signalai")
 
 MOTION_TYPES = {"robtarget": "target", "jointtarget": "target", "speeddata": "speed",
                 "zonedata": "zone", "tooldata": "tool", "wobjdata": "work object"}
@@ -66,6 +69,18 @@ PATH_ROUTINES = {"OPEN": ("OBJECT", "FILE"), "LOAD": ("FILEPATH", "FILE"),
 OUTPUT_ROUTINES = {"SETDO", "SETGO", "SETAO"}
 
 
+@functools.lru_cache(maxsize=None)
+def written_parameters(key: str, procedure: bool) -> frozenset:
+    """The keys of the parameters through which a predefined routine writes data
+    (INOUT and VAR, devices and signals left out): they take the taint of its inputs."""
+    entry = (lookup_procedure if procedure else lookup_function)(key)
+    if entry is None or entry.signature.open_parameters:
+        return frozenset()
+    return frozenset(p.key for p in entry.signature.parameters
+                     if p.mode in ("INOUT", "VAR") and p.type_name not in _DEVICES)
+
+
+@functools.lru_cache(maxsize=None)
 def sink_parameters(key: str) -> dict[str, str]:
     """Parameter key -> what it is (``target``, ``file path`` ...) for a predefined
     procedure's sensitive parameters (empty when it has none)."""
@@ -153,10 +168,8 @@ class TaintAnalysis:
                 self.returns[site.routine.name.key] = Origin(
                     statement.span, f"{site.routine.name.text} returns it", found,
                     found.source)
-        for top in top_expressions(statement):
-            for expression in subexpressions(top):
-                if type(expression) is ast.FunctionCall:
-                    self._call(expression, site, procedure=False)
+        for call in self.context.function_calls(site):
+            self._call(call, site, procedure=False)
 
     def _call(self, call, site, procedure: bool) -> None:
         key = call.name.key
@@ -175,19 +188,18 @@ class TaintAnalysis:
         if user is not None:
             self._user_call(call, user, site)
             return
-        entry = (lookup_procedure if procedure else lookup_function)(key)
-        if entry is None or entry.signature.open_parameters:
+        outputs = written_parameters(key, procedure)
+        if not outputs:
             return
         bound = bind_predefined(call, procedure)
-        inputs = [bound[p.key] for p in entry.signature.parameters
-                  if p.key in bound and not p.by_reference and bound[p.key].value is not None]
-        found = self._first_tainted([a.value for a in inputs], site)
+        inputs = [argument.value for parameter, argument in bound.items()
+                  if parameter not in outputs and argument.value is not None]
+        found = self._first_tainted(inputs, site)
         if found is None:
             return
-        for parameter in entry.signature.parameters:
-            argument = bound.get(parameter.key)
-            if parameter.mode in ("INOUT", "VAR") and argument is not None \
-                    and argument.value is not None and parameter.type_name not in _DEVICES:
+        for parameter in outputs:
+            argument = bound.get(parameter)
+            if argument is not None and argument.value is not None:
                 name = name_of(argument.value)
                 if name is not None:
                     self._taint(self.key(name, site.routine, site.module), Origin(
@@ -288,13 +300,12 @@ class TaintAnalysis:
 
 
 _RELATIONS = ("<", "<=", ">", ">=", "=", "<>")
-_DEVICES = ("iodev", "socketdev", "dir", "signaldo", "signalgo", "signalao", "signaldi",
-            "signalgi", "signalai")
 
 
 def checked(context, site, key: str) -> bool:
     """Is the datum ``key`` compared in a condition around ``site``, or in an earlier IF of
-    its routine that leaves the routine?"""
+    its routine whose branch for that comparison handles it (leaves the routine, or gives
+    the datum a new value)?"""
     if any(compares(guard, key) for guard in site.guards):
         return True
     line = site.statement.span.line
@@ -302,14 +313,22 @@ def checked(context, site, key: str) -> bool:
         statement = earlier.statement
         if statement.span.line >= line:
             break
-        if type(statement) is ast.CompactIf and ends_block(statement.statement) \
+        if type(statement) is ast.CompactIf and handles((statement.statement,), key) \
                 and compares(statement.condition, key):
             return True
         if type(statement) is ast.If and any(
-                branch.body and ends_block(branch.body[-1]) and compares(branch.condition, key)
+                handles(branch.body, key) and compares(branch.condition, key)
                 for branch in statement.branches):
             return True
     return False
+
+
+def handles(body, key: str) -> bool:
+    """Does a branch deal with an out-of-bounds datum ``key``: leave, or assign it whole?"""
+    if body and ends_block(body[-1]):
+        return True
+    return any(type(s) is ast.Assignment and type(s.target) is ast.NameRef
+               and s.target.name.key == key for s in body)
 
 
 def sinks(context):
@@ -370,6 +389,8 @@ def sinks(context):
           "or from an operator's keyboard can be driven anywhere: bound each value first "
           "(Pogliani et al., AsiaCCS 2020).")
 def unchecked_input(context):
+    if not has_sources(context):
+        return
     analysis = TaintAnalysis(context)
     for site, expression, what, routine in sinks(context):
         found = analysis.expression_taint(expression, site)
@@ -385,3 +406,11 @@ def unchecked_input(context):
             "with no check on the way", expression.span, severity="warning",
             notes=("bound the value with a comparison (IF ... < ... THEN) before this use",),
             flow=tuple(steps))
+
+
+def has_sources(context) -> bool:
+    """Does the program read input at all (else no flow can start)?"""
+    return any(site.statement.name.key in SOURCE_OUTPUTS for site in context.calls) or any(
+        call.name.key in SOURCE_FUNCTIONS for call, *_ in context.of_type(ast.FunctionCall)) \
+        or any(decl.type.name.key in SOURCE_SIGNAL_TYPES for module in context.modules
+               for decl in module.data)

@@ -14,7 +14,10 @@ hold input (a global ``bool`` per data object, parameter and function result, na
   function's result; routine data starts unmarked at each call;
 * a check clears marks: entering the body of an IF, ELSEIF, WHILE or CASE whose
   condition compares a datum (``<``, ``<=``, ``>``, ``>=``, ``=``, TEST) clears its
-  mark, and so does going on after an IF that compares it and leaves the routine;
+  mark; when that body handles the datum (leaves the routine, or assigns the datum a
+  new value) the later branches and the ELSE, taken when the comparison failed, clear
+  it too (``IF x > 800 RETURN;`` bounds x for what follows; ``IF x > 800 TPWrite
+  "too far";`` does not);
 * before each sink (the arguments of ``flows.sinks``) ``IF <mark of the argument>
   unchecked_input := N;`` records that unchecked input reached sink N.
 
@@ -33,9 +36,8 @@ from ...diagnostics import SourceCache
 from .arguments import bind_predefined, bind_user
 from .context import LintContext, name_of, nested_bodies, subexpressions, top_expressions
 from .flows import (SOURCE_FUNCTIONS, SOURCE_OUTPUTS, SOURCE_SIGNAL_TYPES, TaintAnalysis,
-                    sink_parameters)
+                    handles, sink_parameters)
 from .shared_index import COMPARISONS, compares
-from .unreachable import ends_block
 from ...semantics.library import lookup_function, lookup_procedure
 
 MARKS_FILE = "<flow marks>"
@@ -79,6 +81,7 @@ class _Instrumenter:
         self.marks: dict[object, str] = {}           # declaration id / ("return", F) -> mark
         self.declarations: list[ast.DataDeclaration] = []
         self.sinks: list[Sink] = []
+        self._cleared_keys: dict[int, str] = {}       # id of a clearing statement -> datum
         self.flag = self._fresh("unchecked_input")
         self.span = ast.Span(MARKS_FILE, 1, 1)
 
@@ -146,28 +149,20 @@ class _Instrumenter:
             before, after = self._effects(statement, routine, module)
             result.extend(before)
             result.append(self._nested(statement, routine, module, after))
-            result.extend(after)
-            result.extend(self._after_leaving_check(statement, routine, module))
+            if type(statement) not in (ast.If, ast.CompactIf):     # (they run it in each branch)
+                result.extend(after)
         return tuple(result)
 
     # ------------------------------------------------------------ nested bodies
     def _nested(self, statement, routine, module, after):
         kind = type(statement)
         if kind is ast.If:
-            branches = tuple(_replace(b, body=self._guarded(b.body, b.condition, routine,
-                                                             module, after))
-                             for b in statement.branches)
-            else_body = statement.else_body
-            if else_body is not None:
-                else_body = tuple(after) + self._body(else_body, routine, module)
-            return _replace(statement, branches=branches, else_body=else_body)
+            return self._if(statement.branches, statement.else_body, statement.span, routine,
+                            module, after)
         if kind is ast.CompactIf:
-            inner = self._guarded((statement.statement,), statement.condition, routine,
-                                  module, after)
-            if len(inner) == 1:
-                return _replace(statement, statement=inner[0])
-            return ast.If((ast.IfBranch(statement.condition, inner, statement.span),), None,
-                          statement.span)
+            return self._if((ast.IfBranch(statement.condition, (statement.statement,),
+                                          statement.span),), None, statement.span, routine,
+                            module, after, compact=True)
         if kind is ast.While:
             return _replace(statement, body=self._guarded(statement.body, statement.condition,
                                                           routine, module, after))
@@ -182,6 +177,28 @@ class _Instrumenter:
                 default = self._body(default, routine, module)
             return _replace(statement, cases=cases, default=default)
         return statement
+
+    def _if(self, branches, else_body, span, routine, module, after, compact=False):
+        """An IF: a branch whose condition compares a datum clears its mark; when that
+        branch handles the datum (leaves, or assigns it), the later branches and the ELSE,
+        reached when the comparison failed, clear it too."""
+        new_branches, handled = [], []
+        for branch in branches:
+            body = tuple(handled) + self._guarded(branch.body, branch.condition, routine,
+                                                  module, after)
+            new_branches.append(_replace(branch, body=body))
+            handled += [clear for clear in self._clears(branch.condition, routine, module, span)
+                        if handles(branch.body, self._compared_key(clear))]
+        if else_body is not None:
+            else_body = tuple(after) + tuple(handled) + self._body(else_body, routine, module)
+        elif handled or after:
+            else_body = tuple(after) + tuple(handled)
+        if compact and else_body is None and len(new_branches[0].body) == 1:
+            return ast.CompactIf(new_branches[0].condition, new_branches[0].body[0], span)
+        return ast.If(tuple(new_branches), else_body, span)
+
+    def _compared_key(self, clear) -> str:
+        return self._cleared_keys.get(id(clear), "")
 
     def _guarded(self, body, condition, routine, module, after) -> tuple:
         """A body entered when ``condition`` held: the marks it compares are cleared."""
@@ -198,22 +215,10 @@ class _Instrumenter:
         for key, name in names.items():
             mark = self.mark(name, routine, module)
             if mark is not None and compares(condition, key):
-                result.append(_assign(mark, _false(span), span))
+                clear = _assign(mark, _false(span), span)
+                self._cleared_keys[id(clear)] = key
+                result.append(clear)
         return result
-
-    def _after_leaving_check(self, statement, routine, module) -> list:
-        """After an IF that compares a datum and leaves: the comparison failed, it is bounded."""
-        kind = type(statement)
-        if kind is ast.CompactIf and ends_block(statement.statement):
-            return self._clears(statement.condition, routine, module, statement.span)
-        if kind is ast.If:
-            found = []
-            for branch in statement.branches:
-                if branch.body and ends_block(branch.body[-1]):
-                    found.extend(self._clears(branch.condition, routine, module,
-                                              statement.span))
-            return found
-        return []
 
     # ------------------------------------------------------------ effects of one statement
     def _effects(self, statement, routine, module) -> tuple[list, list]:

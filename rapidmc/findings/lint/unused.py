@@ -14,6 +14,9 @@ from .registry import rule
 
 
 def _used_names(context) -> set[str]:
+    cached = getattr(context, "_used_names", None)
+    if cached is not None:
+        return cached
     used = set()
     for expression, site, routine, module in context.expressions:
         kind = type(expression)
@@ -32,6 +35,7 @@ def _used_names(context) -> set[str]:
         for routine in module.routines:
             if routine.error is not None and routine.error.numbers:
                 used.update(e.name.key for e in routine.error.numbers if type(e) is ast.NameRef)
+    context._used_names = used
     return used
 
 
