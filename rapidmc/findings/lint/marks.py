@@ -28,6 +28,7 @@ Only programs checked with ``--flows`` are instrumented: no other check pays for
 """
 from __future__ import annotations
 
+import itertools
 from dataclasses import dataclass
 from typing import Optional
 
@@ -324,7 +325,7 @@ class _Instrumenter:
         number = len(self.sinks) + 1
         self.sinks.append(Sink(number, expression.span, description))
         before.append(ast.CompactIf(value, _assign(self.flag, ast.NumLiteral(
-            number, str(number), span), span), span))
+            number, str(number), span), span), _generated(span)))
 
     # ------------------------------------------------------------ the mark of a value
     def taint(self, expression, routine, module, span):
@@ -382,7 +383,19 @@ def _ref(name: str, span) -> ast.NameRef:
 
 
 def _assign(name: str, value, span) -> ast.Assignment:
+    span = _generated(span)
     return ast.Assignment(_ref(name, span), value, span)
+
+
+_GENERATED = itertools.count(1)
+
+
+def _generated(span: ast.Span) -> ast.Span:
+    """A span of its own for a statement the marks add at ``span``'s place: the reductions
+    know statements by span (``model.reduction.merging.nodes_by_span``), so no two may
+    share one.  It starts where ``span`` starts (traces and coverage name the statement
+    it belongs to) and ends on no line (``end_line`` 0: no real span does)."""
+    return ast.Span(span.file, span.line, span.column, 0, next(_GENERATED))
 
 
 def _false(span) -> ast.BoolLiteral:
