@@ -28,8 +28,10 @@ from .check.budget import DEFAULT_MAX_STATES
 from .load.backup import load_tasks, resolve_program_files
 from .check.trace import Trace, build_trace
 from .diagnostics import (AUTOMATON, DOMAIN, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED,
-                          TRACE_REPLAY, USAGE, Diagnostic, SourceCache, UserError, error)
+                          TRACE_REPLAY, UNCHECKED_INPUT, USAGE, Diagnostic, SourceCache,
+                          UserError, error)
 from .findings.explored import ExploredFacts
+from .findings.lint.marks import PROPERTY as FLOW_PROPERTY
 from .findings.lint.marks import instrument as instrument_flows
 from .ltl import read_hoa, to_buchi
 from .ltl.syntax import Not
@@ -349,9 +351,40 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
     except EnvironmentFault as exc:
         raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
     warnings = [assumed.note() for assumed in model.assumed] + sorted(
-        fixed_readings(model.program) + facts.warnings(),
+        fixed_readings(model.program) + facts.warnings()
+        + _flow_sinks(model.program, results, model.describer),
         key=lambda d: (d.span.file, d.span.line, d.span.column))
     return CheckReport(results, warnings, model.describer)
+
+
+def _flow_sinks(program: Program, results: list[PropertyResult], describer) -> list:
+    """For a violated ``no_unchecked_input``: a warning (RMC820) at the sink its
+    counterexample takes unchecked input to."""
+    marks = program.options.get("flow_marks")
+    if marks is None:
+        return []
+    found = []
+    for checked in results:
+        if checked.name != FLOW_PROPERTY or checked.result.verdict != VIOLATED:
+            continue
+        trace = build_trace(checked.result, describer)
+        for step in (*trace.prefix, *trace.cycle):
+            for change in step.changes:
+                sink = marks.sink(_number(change.new)) if change.name == marks.flag else None
+                if sink is not None:
+                    found.append(Diagnostic(
+                        UNCHECKED_INPUT, f"unchecked input reaches {sink.description} "
+                        f"(step {step.index} of the counterexample of {FLOW_PROPERTY})",
+                        sink.span, severity="warning"))
+                    return found
+    return found
+
+
+def _number(text) -> int:
+    try:
+        return int(float(text))
+    except (TypeError, ValueError):
+        return 0
 
 
 class _StuckWatch:
