@@ -141,11 +141,12 @@ WAITING_ROUTINES = {"SOCKETACCEPT", "SOCKETRECEIVE", "SOCKETRECEIVEFROM", "READS
           "it: without a wait it takes processor time from the motion task and floods "
           "whatever it writes.")
 def busy_loop(context):
+    loops = [site.statement for site in context.sites
+             if type(site.statement) is ast.While and _endless(site.statement.condition)]
+    if not loops:
+        return
     waiting = context.waiting_routines(_waits)
-    for site in context.sites:
-        loop = site.statement
-        if type(loop) is not ast.While or not _endless(loop.condition):
-            continue
+    for loop in loops:
         if not _body_waits(loop.body, waiting):
             yield Diagnostic(
                 BUSY_LOOP, "this endless loop never waits (no WaitTime, WaitUntil, move or "

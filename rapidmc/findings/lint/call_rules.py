@@ -104,12 +104,11 @@ def _storage(declaration):
           "names exactly (editors, other checkers) do not match them (K-RAPID, Table 5).")
 def optional_case(context):
     for call, is_procedure, routine, module in call_sites(context):
-        declared = _declared_names(context, call, is_procedure)
-        if not declared:
+        named = [a for a in call.args if a.kind != ast.REQUIRED and a.name is not None]
+        if not named:
             continue
-        for argument in call.args:
-            if argument.kind == ast.REQUIRED or argument.name is None:
-                continue
+        declared = _declared_names(context, call, is_procedure)
+        for argument in named:
             spelling = declared.get(argument.name.key)
             if spelling is not None and spelling != argument.name.text:
                 yield Diagnostic(
@@ -122,7 +121,12 @@ def _declared_names(context, call, is_procedure) -> dict[str, str]:
     entry = context.routines.get(call.name.key)
     if entry is not None:
         return {p.name.key: p.name.text for p in entry[0].parameters if p.optional}
-    signature = predefined_signature(call.name, is_procedure)
+    return _predefined_optional_names(call.name.key, is_procedure)
+
+
+@functools.lru_cache(maxsize=None)
+def _predefined_optional_names(key: str, is_procedure: bool) -> dict[str, str]:
+    signature = predefined_signature(ast.Name.of(key), is_procedure)
     if signature is None:
         return {}
     return {spec.key: spec.name for spec in signature.parameters if spec.optional}

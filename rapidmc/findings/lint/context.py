@@ -245,6 +245,28 @@ class LintContext:
                         calls_at.setdefault(id(site), []).append(expression)
         return found
 
+    @cached_property
+    def used_names(self) -> set[str]:
+        """Every name the program uses: data, functions, procedures, traps, FOR variables,
+        error names of ERROR (...) lists."""
+        used = {entry[0].name.key for entry in self.of_type(ast.NameRef)}
+        used.update(entry[0].name.key for entry in self.of_type(ast.FunctionCall))
+        for site in self.sites:
+            statement = site.statement
+            kind = type(statement)
+            if kind is ast.ProcedureCall:
+                used.add(statement.name.key)
+            elif kind is ast.Connect:
+                used.add(statement.trap.key)
+            elif kind is ast.For:
+                used.add(statement.variable.key)
+        for module in self.modules:
+            for routine in module.routines:
+                if routine.error is not None and routine.error.numbers:
+                    used.update(e.name.key for e in routine.error.numbers
+                                if type(e) is ast.NameRef)
+        return used
+
     def function_calls(self, site: Site) -> list:
         """The function calls in the expressions of ``site``'s statement."""
         self.expressions

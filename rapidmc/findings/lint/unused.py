@@ -14,36 +14,15 @@ from .registry import rule
 
 
 def _used_names(context) -> set[str]:
-    cached = getattr(context, "_used_names", None)
-    if cached is not None:
-        return cached
-    used = set()
-    for expression, site, routine, module in context.expressions:
-        kind = type(expression)
-        if kind is ast.NameRef or kind is ast.FunctionCall:
-            used.add(expression.name.key)
-    for site in context.sites:
-        statement = site.statement
-        kind = type(statement)
-        if kind is ast.ProcedureCall:
-            used.add(statement.name.key)
-        elif kind is ast.Connect:
-            used.add(statement.trap.key)
-        elif kind is ast.For:
-            used.add(statement.variable.key)
-    for module in context.modules:
-        for routine in module.routines:
-            if routine.error is not None and routine.error.numbers:
-                used.update(e.name.key for e in routine.error.numbers if type(e) is ast.NameRef)
-    context._used_names = used
-    return used
+    """Every name the program uses as data, routine or trap (``LintContext.used_names``)."""
+    return context.used_names
 
 
 def _scoped_uses(context) -> dict[int, set[str]]:
     """Routine id -> the names used inside it (for routine data)."""
     uses: dict[int, set[str]] = {}
-    for expression, site, routine, module in context.expressions:
-        if routine is not None and type(expression) is ast.NameRef:
+    for expression, site, routine, module in context.of_type(ast.NameRef):
+        if routine is not None:
             uses.setdefault(id(routine), set()).add(expression.name.key)
     return uses
 
