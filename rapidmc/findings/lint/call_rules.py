@@ -80,7 +80,7 @@ def _storage(declaration):
     return None
 
 
-@rule(OPTIONAL_CASE, "warning",
+@rule(OPTIONAL_CASE, "note",
       bad="""
           MODULE M
             PERS tooldata gripper := [TRUE, [[0, 0, 150], [1, 0, 0, 0]], [1.5, [0, 0, 60], [1, 0, 0, 0], 0, 0, 0]];
@@ -100,8 +100,10 @@ def _storage(declaration):
           ENDMODULE
           """,
       why="Optional arguments are matched to parameters without regard to case by the "
-          "virtual controller; the manual spells them as declared, and tools that compare "
-          "names exactly (editors, other checkers) do not match them (K-RAPID, Table 5).")
+          "controller, so the program runs; the manual spells them as declared, and tools "
+          "that compare names exactly (the K-RAPID semantics, editors, other checkers) do "
+          "not match them (K-RAPID, Table 5).  A note: real programs spell \\InPos and "
+          "\\WObj every way.")
 def optional_case(context):
     for call, is_procedure, routine, module in call_sites(context):
         named = [a for a in call.args if a.kind != ast.REQUIRED and a.name is not None]
@@ -114,7 +116,7 @@ def optional_case(context):
                 yield Diagnostic(
                     OPTIONAL_CASE, f"optional argument '\\{argument.name.text}' of "
                     f"{call.name.text} is declared '\\{spelling}'", argument.name.span,
-                    severity="warning")
+                    severity="note")
 
 
 def _declared_names(context, call, is_procedure) -> dict[str, str]:

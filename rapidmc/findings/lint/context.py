@@ -119,6 +119,7 @@ class LintContext:
         self.program = program
         self.modules = program.modules
         self._calls_at: dict[int, list] = {}
+        self.memo: dict[str, dict] = {}        # what a rule computes once per program
 
     # ------------------------------------------------------------ declarations
     @cached_property

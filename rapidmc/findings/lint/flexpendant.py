@@ -56,7 +56,7 @@ def empty_key(context):
         name = name_of(answer.value) if answer is not None and answer.value is not None else None
         if name is None:
             continue
-        compared = _compared_numbers(context, site.routine, name.key)
+        compared = _compared_numbers(context, site, name.key)
         for number, key in enumerate(KEYS, start=1):
             argument = bound.get(key)
             if argument is not None and argument.value is not None and \
@@ -68,24 +68,41 @@ def empty_key(context):
                     argument.value.span, severity="warning")
 
 
-def _compared_numbers(context, routine, key: str) -> dict[int, int]:
-    """Number -> line, for each number the answer ``key`` is compared with in ``routine``."""
+def _compared_numbers(context, call_site, key: str) -> dict[int, int]:
+    """Number -> line, for each number the answer ``key`` is compared with after the call
+    (up to the next TPReadFK into the same answer, in the lines of the routine)."""
+    start = call_site.statement.span.line
+    end = _next_read(context, call_site, key)
     found: dict[int, int] = {}
-    for site in context.sites_by_routine[id(routine)]:
+    for site in context.sites_by_routine[id(call_site.routine)]:
         statement = site.statement
-        if type(statement) is ast.Test and _is(statement.subject, key):
+        if type(statement) is ast.Test and _is(statement.subject, key) \
+                and start < statement.span.line < end:
             for case in statement.cases:
                 for value in case.values:
                     if type(value) is ast.NumLiteral:
                         found.setdefault(int(value.value), value.span.line)
     for expression, site, inside, module in context.of_type(ast.Binary):
-        if inside is not routine or expression.op not in ("=", "<>"):
+        if inside is not call_site.routine or expression.op not in ("=", "<>") \
+                or not start <= expression.span.line < end:
             continue
         for this, other in ((expression.left, expression.right),
                             (expression.right, expression.left)):
             if _is(this, key) and type(other) is ast.NumLiteral:
                 found.setdefault(int(other.value), expression.span.line)
     return found
+
+
+def _next_read(context, call_site, key: str) -> float:
+    """The line of the next TPReadFK of the routine into the same answer (or infinity)."""
+    for site in context.sites_by_routine[id(call_site.routine)]:
+        statement = site.statement
+        if type(statement) is ast.ProcedureCall and statement.name.key == "TPREADFK" \
+                and statement.span.line > call_site.statement.span.line:
+            answer = bind_predefined(statement).get("TPANSWER")
+            if answer is not None and answer.value is not None and _is(answer.value, key):
+                return statement.span.line
+    return float("inf")
 
 
 def _is(expression, key: str) -> bool:

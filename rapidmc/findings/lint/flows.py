@@ -36,8 +36,7 @@ from ...semantics.library import lookup_function, lookup_procedure
 from .arguments import bind_predefined, bind_user
 from .context import name_of
 from .registry import rule
-from .shared_index import compares
-from .unreachable import ends_block
+from .checks import checked
 
 # procedure -> (what delivers the data, the parameters it writes)
 SOURCE_OUTPUTS = {
@@ -129,6 +128,7 @@ class TaintAnalysis:
         self.sanitise = sanitise
         self.tainted: dict[object, Origin] = {}
         self.returns: dict[str, Origin] = {}        # user function key -> tainted RETURN
+        self._writes: dict[int, frozenset] = {}
         self._run()
 
     # ------------------------------------------------------------ keys
@@ -218,12 +218,50 @@ class TaintAnalysis:
                 self._taint(id(parameter), Origin(
                     call.span, f"passed to {routine.name.text} as {parameter.name.text}",
                     found, found.source))
-            if parameter.mode != ast.IN and id(parameter) in self.tainted:
+            if parameter.mode != ast.IN and id(parameter) in self.tainted \
+                    and parameter.name.key in self.writes(routine):
                 name = name_of(argument.value)
                 if name is not None:
                     self._taint(self.key(name, site.routine, site.module), Origin(
                         call.span, f"{routine.name.text} writes it to {name.text}",
                         self.tainted[id(parameter)], self.tainted[id(parameter)].source))
+
+    def writes(self, routine: ast.Routine) -> frozenset:
+        """The names ``routine`` may write: assignment targets, and the arguments it passes
+        by reference (to a user routine's VAR, PERS or INOUT parameter, or a predefined
+        routine's written one)."""
+        found = self._writes.get(id(routine))
+        if found is None:
+            found = frozenset(self._written_names(routine))
+            self._writes[id(routine)] = found
+        return found
+
+    def _written_names(self, routine: ast.Routine):
+        for site in self.context.sites_by_routine.get(id(routine), ()):
+            statement = site.statement
+            if type(statement) is ast.Assignment:
+                name = name_of(statement.target)
+                if name is not None:
+                    yield name.key
+            calls = list(self.context.function_calls(site))
+            if type(statement) is ast.ProcedureCall:
+                calls.append(statement)
+            for call in calls:
+                yield from self._passed_by_reference(call, call is statement)
+
+    def _passed_by_reference(self, call, procedure: bool):
+        user = self.context.routines.get(call.name.key)
+        if user is not None:
+            bound = bind_user(call, user[0])
+            written = {p.name.key for p in user[0].parameters if p.mode != ast.IN}
+        else:
+            bound = bind_predefined(call, procedure)
+            written = set(written_parameters(call.name.key, procedure))
+            written.update(SOURCE_OUTPUTS.get(call.name.key, ("", ()))[1] if procedure else ())
+        for parameter, argument in bound.items():
+            name = name_of(argument.value) if argument.value is not None else None
+            if parameter in written and name is not None:
+                yield name.key
 
     def _first_tainted(self, expressions, site):
         for expression in expressions:
@@ -300,35 +338,6 @@ class TaintAnalysis:
 
 
 _RELATIONS = ("<", "<=", ">", ">=", "=", "<>")
-
-
-def checked(context, site, key: str) -> bool:
-    """Is the datum ``key`` compared in a condition around ``site``, or in an earlier IF of
-    its routine whose branch for that comparison handles it (leaves the routine, or gives
-    the datum a new value)?"""
-    if any(compares(guard, key) for guard in site.guards):
-        return True
-    line = site.statement.span.line
-    for earlier in context.sites_by_routine[id(site.routine)]:
-        statement = earlier.statement
-        if statement.span.line >= line:
-            break
-        if type(statement) is ast.CompactIf and handles((statement.statement,), key) \
-                and compares(statement.condition, key):
-            return True
-        if type(statement) is ast.If and any(
-                handles(branch.body, key) and compares(branch.condition, key)
-                for branch in statement.branches):
-            return True
-    return False
-
-
-def handles(body, key: str) -> bool:
-    """Does a branch deal with an out-of-bounds datum ``key``: leave, or assign it whole?"""
-    if body and ends_block(body[-1]):
-        return True
-    return any(type(s) is ast.Assignment and type(s.target) is ast.NameRef
-               and s.target.name.key == key for s in body)
 
 
 def sinks(context):

@@ -36,9 +36,9 @@ from ... import ast
 from ...diagnostics import SourceCache
 from .arguments import bind_predefined, bind_user
 from .context import LintContext, name_of, nested_bodies, subexpressions, top_expressions
+from .checks import COMPARISONS, compares, handles
 from .flows import (SOURCE_FUNCTIONS, SOURCE_OUTPUTS, SOURCE_SIGNAL_TYPES, TaintAnalysis,
-                    handles, sink_parameters)
-from .shared_index import COMPARISONS, compares
+                    sink_parameters)
 from ...semantics.library import lookup_function, lookup_procedure
 
 MARKS_FILE = "<flow marks>"

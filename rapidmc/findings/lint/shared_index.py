@@ -3,31 +3,15 @@
 PERS data is shared by every task that declares it and keeps its value across
 restarts: another task, or last week's run, may have left any number in it.  A use is
 checked when a condition around it (IF, ELSEIF, WHILE, TEST) compares the PERS, or an
-earlier IF of the same routine compares it and leaves (RETURN, RAISE, EXIT).
+earlier IF of the same routine compares it and leaves or assigns it (``checks``).
 """
 from __future__ import annotations
 
 from ... import ast
 from ...diagnostics import SHARED_INDEX, Diagnostic
+from .checks import checked
 from .context import subexpressions
 from .registry import rule
-from .unreachable import ends_block
-
-COMPARISONS = ("<", "<=", ">", ">=", "=")
-
-
-def compares(condition, key: str) -> bool:
-    """Does ``condition`` compare the data ``key`` (on either side) with something?"""
-    if type(condition) is ast.Test:
-        return any(type(e) is ast.NameRef and e.name.key == key
-                   for e in subexpressions(condition.subject))
-    for expression in subexpressions(condition):
-        if type(expression) is ast.Binary and expression.op in COMPARISONS:
-            for side in (expression.left, expression.right):
-                if any(type(e) is ast.NameRef and e.name.key == key for e in subexpressions(side)):
-                    return True
-    return False
-
 
 @rule(SHARED_INDEX, "warning",
       bad="""
@@ -58,7 +42,7 @@ def shared_index(context):
             continue
         for index in expression.indices:
             for name in _pers_names(context, index, routine, module):
-                if site is not None and _checked(context, site, name.key):
+                if site is not None and checked(context, site, name.key):
                     continue
                 yield Diagnostic(
                     SHARED_INDEX, f"PERS '{name.text}' is used as an index with no bound "
@@ -74,21 +58,3 @@ def _pers_names(context, index, routine, module):
             if isinstance(declaration, ast.DataDeclaration) and declaration.storage == ast.PERS:
                 seen.add(expression.name.key)
                 yield expression.name
-
-
-def _checked(context, site, key: str) -> bool:
-    if any(compares(guard, key) for guard in site.guards):
-        return True
-    line = site.statement.span.line
-    for earlier in context.sites_by_routine[id(site.routine)]:
-        statement = earlier.statement
-        if statement.span.line >= line:
-            break
-        if type(statement) is ast.CompactIf and ends_block(statement.statement) \
-                and compares(statement.condition, key):
-            return True
-        if type(statement) is ast.If and any(
-                branch.body and ends_block(branch.body[-1]) and compares(branch.condition, key)
-                for branch in statement.branches):
-            return True
-    return False
