@@ -34,7 +34,7 @@ from ... import ast
 from ...diagnostics import UNCHECKED_INPUT, Diagnostic
 from ...semantics.library import lookup_function, lookup_procedure
 from .arguments import bind_predefined, bind_user
-from .context import name_of
+from .context import name_of, subexpressions, top_expressions
 from .registry import rule
 from .checks import checked
 
@@ -123,31 +123,66 @@ class TaintAnalysis:
 
     MAX_ROUNDS = 50
 
-    def __init__(self, context, sanitise: bool = True):
+    def __init__(self, context, sanitise: bool = True, every_round_everything: bool = False):
         self.context = context
         self.sanitise = sanitise
+        self.every_round_everything = every_round_everything    # (the tests' reference)
         self.tainted: dict[object, Origin] = {}
         self.returns: dict[str, Origin] = {}        # user function key -> tainted RETURN
         self._writes: dict[int, frozenset] = {}
+        self._names: dict[object, tuple] = {}       # taint key -> the names that mention it
+        self._mentioned: dict[int, frozenset] = {}
+        self._fresh: set = set()
         self._run()
 
     # ------------------------------------------------------------ keys
     def key(self, name: ast.Name, routine, module):
         declaration = self.context.declaration(name.key, routine, module)
-        return id(declaration) if declaration is not None else ("?", name.key)
+        key = id(declaration) if declaration is not None else ("?", name.key)
+        if isinstance(declaration, ast.Parameter):      # its callers read it back
+            self._names[key] = (name.key, routine.name.key)
+        else:
+            self._names[key] = (name.key,)
+        return key
 
     # ------------------------------------------------------------ fixpoint
     def _run(self) -> None:
+        """Visit every statement, then again only those that name something tainted in
+        the round before, until nothing new is tainted."""
+        pending = self.context.sites
         for _ in range(self.MAX_ROUNDS):
-            before = (len(self.tainted), len(self.returns))
-            for site in self.context.sites:
+            self._fresh = set()
+            for site in pending:
                 self._visit(site)
-            if (len(self.tainted), len(self.returns)) == before:
+            if not self._fresh:
                 return
+            fresh = self._fresh
+            pending = self.context.sites if self.every_round_everything else \
+                [site for site in self.context.sites if self._mentions(site) & fresh]
+
+    def _mentions(self, site) -> frozenset:
+        """The names a statement mentions: data, routines it calls (their parameters and
+        results carry taint to and from it)."""
+        found = self._mentioned.get(id(site))
+        if found is None:
+            names = set()
+            statement = site.statement
+            if type(statement) is ast.ProcedureCall:
+                names.add(statement.name.key)
+            for top in top_expressions(statement):
+                for expression in subexpressions(top):
+                    kind = type(expression)
+                    if kind is ast.NameRef or kind is ast.FunctionCall:
+                        names.add(expression.name.key)
+            if site.routine.kind == ast.FUNC or site.routine.parameters:
+                names.add(site.routine.name.key)      # its parameters, its result
+            found = self._mentioned[id(site)] = frozenset(names)
+        return found
 
     def _taint(self, key, origin: Origin) -> None:
         if key not in self.tainted:
             self.tainted[key] = origin
+            self._fresh.update(self._names.get(key, ()))
 
     def _visit(self, site) -> None:
         statement = site.statement
@@ -168,6 +203,7 @@ class TaintAnalysis:
                 self.returns[site.routine.name.key] = Origin(
                     statement.span, f"{site.routine.name.text} returns it", found,
                     found.source)
+                self._fresh.add(site.routine.name.key)
         for call in self.context.function_calls(site):
             self._call(call, site, procedure=False)
 
@@ -215,6 +251,7 @@ class TaintAnalysis:
                 continue
             found = self.expression_taint(argument.value, site)
             if found is not None:
+                self._names[id(parameter)] = (parameter.name.key, routine.name.key)
                 self._taint(id(parameter), Origin(
                     call.span, f"passed to {routine.name.text} as {parameter.name.text}",
                     found, found.source))
