@@ -29,6 +29,11 @@ def io_operations(context):
             yield call, routine, module, _errors_of(call.name.key)
 
 
+def _has_time_parameter(key: str) -> bool:
+    entry = lookup_procedure(key) or lookup_function(key)
+    return entry is not None and entry.signature.parameter("TIME") is not None
+
+
 def _errors_of(key: str) -> tuple:
     return SOCKET_ERRORS if key in SOCKET_OPERATIONS else FILE_ERRORS
 
@@ -64,14 +69,16 @@ def io_unguarded(context):
         timed = any(a.name is not None and a.name.key == "TIME" for a in call.args)
         if timed or _handled(context, routine, errors, set()):
             continue
+        waits = _has_time_parameter(call.name.key)
+        missing = "no \\Time and no" if waits else "no"
+        handle = "give \\Time, or handle " if waits else "handle "
+        errors_text = ("ERR_SOCK_TIMEOUT and ERR_SOCK_CLOSED" if errors is SOCKET_ERRORS
+                       else "ERR_FILEOPEN, ERR_FILEACC, ERR_DEV_MAXTIME")
         yield Diagnostic(
-            IO_UNGUARDED, f"{call.name.text} has no \\Time and no ERROR handler of "
-            f"{routine.name.text} (or of its callers) handles its errors",
+            IO_UNGUARDED, f"{call.name.text} has {missing} ERROR handler of "
+            f"{routine.name.text} (or of its callers) that handles its errors",
             call.name.span, severity="warning",
-            notes=("give \\Time, or handle " + ("ERR_SOCK_TIMEOUT and ERR_SOCK_CLOSED"
-                                                if errors is SOCKET_ERRORS else
-                                                "ERR_FILEOPEN, ERR_FILEACC, ERR_DEV_MAXTIME")
-                   + " in an ERROR handler",))
+            notes=(f"{handle}{errors_text} in an ERROR handler",))
 
 
 def _handled(context, routine: ast.Routine, errors: tuple, seen: set) -> bool:

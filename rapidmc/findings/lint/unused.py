@@ -1,10 +1,10 @@
 """RMC806 (data never used) and RMC807 (routines never called).
 
 Routine data and LOCAL module data are reported whenever nothing uses them.  Global
-names are reported only in a program with a ``main`` procedure (a module linted alone
-may be a library for others) and never from a SYSMODULE; global PERS data is never
-reported (another task may share it), nor a routine whose name a string of the program
-could spell (``CallByVar``, ``%name%``).
+and TASK names are reported only in a program with a ``main`` procedure (a module
+linted alone may be a library for others) and never from a SYSMODULE; global PERS data
+is never reported (another task may share it; TASK PERS is the task's own), nor a
+routine whose name a string of the program could spell (``CallByVar``, ``%name%``).
 """
 from __future__ import annotations
 
@@ -69,8 +69,10 @@ def unused_data(context):
         for decl in module.data:
             if decl.name.key in used:
                 continue
-            if decl.scope == ast.GLOBAL and (not whole_program or decl.storage == ast.PERS):
-                continue
+            if decl.scope != ast.LOCAL and not whole_program:
+                continue                 # a module alone may be a library for others
+            if decl.scope == ast.GLOBAL and decl.storage == ast.PERS:
+                continue                 # another task may share it
             yield _unused(decl, f"{decl.storage} '{decl.name.text}'")
 
 
