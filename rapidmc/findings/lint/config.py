@@ -20,7 +20,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Optional
 
-from ...diagnostics import LINT_CONFIG, Diagnostic, SourceCache, UserError, error
+from ...diagnostics import LINT_CONFIG, Diagnostic, SourceCache, error
 from .registry import RULES, SEVERITIES
 
 _SUPPRESSION = re.compile(r"!\s*rapidmc:\s*ignore(?:\[([^\]]*)\])?", re.IGNORECASE)
@@ -130,4 +130,4 @@ def _covers(line: str, diagnostic: Diagnostic) -> bool:
     return rule is not None and any(_matches(rule, selector) for selector in wanted)
 
 
-__all__ = ["LintConfig", "make_config", "read_pyproject", "suppressed", "UserError"]
+__all__ = ["LintConfig", "make_config", "read_pyproject", "suppressed"]

@@ -11,6 +11,7 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+from ...semantics.library.documentation import write_or_check
 from . import RULES
 
 DOC = Path(__file__).resolve().parents[3] / "docs" / "lint.md"
@@ -82,17 +83,7 @@ def document() -> str:
 
 
 def main(argv: list[str]) -> int:
-    text = document()
-    if "--check" in argv:
-        current = DOC.read_text(encoding="utf-8") if DOC.exists() else ""
-        if current != text:
-            print(f"{DOC} is out of date: run python -m rapidmc.findings.lint.documentation",
-                  file=sys.stderr)
-            return 1
-        return 0
-    DOC.write_text(text, encoding="utf-8")
-    print(f"wrote {DOC}")
-    return 0
+    return write_or_check(DOC, document(), "rapidmc.findings.lint.documentation", argv)
 
 
 if __name__ == "__main__":

@@ -9,7 +9,7 @@ from __future__ import annotations
 from ... import ast
 from ...diagnostics import EMPTY_KEY, Diagnostic
 from .arguments import bind_predefined
-from .context import name_of, subexpressions
+from .context import name_of
 from .registry import rule
 
 KEYS = ("TPFK1", "TPFK2", "TPFK3", "TPFK4", "TPFK5")

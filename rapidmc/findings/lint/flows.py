@@ -79,6 +79,20 @@ def written_parameters(key: str, procedure: bool) -> frozenset:
                      if p.mode in ("INOUT", "VAR") and p.type_name not in _DEVICES)
 
 
+def predefined_data_flow(call, procedure: bool) -> tuple[list, list]:
+    """(input expressions, written argument expressions) of a call of a predefined routine
+    that writes through its arguments: the written ones take the taint of the inputs."""
+    outputs = written_parameters(call.name.key, procedure)
+    if not outputs:
+        return [], []
+    bound = bind_predefined(call, procedure)
+    inputs = [argument.value for parameter, argument in bound.items()
+              if parameter not in outputs and argument.value is not None]
+    written = [bound[parameter].value for parameter in outputs
+               if parameter in bound and bound[parameter].value is not None]
+    return inputs, written
+
+
 @functools.lru_cache(maxsize=None)
 def sink_parameters(key: str) -> dict[str, str]:
     """Parameter key -> what it is (``target``, ``file path`` ...) for a predefined
@@ -224,23 +238,18 @@ class TaintAnalysis:
         if user is not None:
             self._user_call(call, user, site)
             return
-        outputs = written_parameters(key, procedure)
+        inputs, outputs = predefined_data_flow(call, procedure)
         if not outputs:
             return
-        bound = bind_predefined(call, procedure)
-        inputs = [argument.value for parameter, argument in bound.items()
-                  if parameter not in outputs and argument.value is not None]
         found = self._first_tainted(inputs, site)
         if found is None:
             return
-        for parameter in outputs:
-            argument = bound.get(parameter)
-            if argument is not None and argument.value is not None:
-                name = name_of(argument.value)
-                if name is not None:
-                    self._taint(self.key(name, site.routine, site.module), Origin(
-                        call.span, f"{call.name.text} writes {name.text} from it", found,
-                        found.source))
+        for output in outputs:
+            name = name_of(output)
+            if name is not None:
+                self._taint(self.key(name, site.routine, site.module), Origin(
+                    call.span, f"{call.name.text} writes {name.text} from it", found,
+                    found.source))
 
     def _user_call(self, call, user, site) -> None:
         routine, module = user
@@ -377,18 +386,23 @@ class TaintAnalysis:
 _RELATIONS = ("<", "<=", ">", ">=", "=", "<>")
 
 
+def sink_arguments(call: ast.ProcedureCall):
+    """(argument expression, what it is) for each sensitive argument of a call."""
+    parameters = sink_parameters(call.name.key)
+    if not parameters:
+        return
+    bound = bind_predefined(call)
+    for parameter, what in parameters.items():
+        argument = bound.get(parameter)
+        if argument is not None and argument.value is not None:
+            yield argument.value, what
+
+
 def sinks(context):
     """(site, the sink's expression, what it is, the routine it goes to) for every sink."""
     for site in context.calls:
-        call = site.statement
-        parameters = sink_parameters(call.name.key)
-        if not parameters:
-            continue
-        bound = bind_predefined(call)
-        for parameter, what in parameters.items():
-            argument = bound.get(parameter)
-            if argument is not None and argument.value is not None:
-                yield site, argument.value, what, call.name.text
+        for expression, what in sink_arguments(site.statement):
+            yield site, expression, what, site.statement.name.text
     for site in context.sites:
         if type(site.statement) is ast.LateBindingCall:
             yield site, site.statement.name_expr, "routine name", "a late-bound call %...%"

@@ -35,11 +35,10 @@ from typing import Optional
 from ... import ast
 from ...diagnostics import SourceCache
 from .arguments import bind_predefined, bind_user
-from .context import LintContext, name_of, nested_bodies, subexpressions, top_expressions
+from .context import LintContext, name_of, subexpressions, top_expressions
 from .checks import COMPARISONS, compares, handles
 from .flows import (SOURCE_FUNCTIONS, SOURCE_OUTPUTS, SOURCE_SIGNAL_TYPES, TaintAnalysis,
-                    sink_parameters)
-from ...semantics.library import lookup_function, lookup_procedure
+                    predefined_data_flow, sink_arguments)
 
 MARKS_FILE = "<flow marks>"
 MARKS_MODULE = "RapidmcFlowMarks"
@@ -267,25 +266,17 @@ class _Instrumenter:
         if user is not None:
             self._user_call(call, user[0], routine, module, span, before, after)
             return
-        entry = (lookup_procedure if procedure else lookup_function)(key)
-        if entry is None or entry.signature.open_parameters:
-            return
-        bound = bind_predefined(call, procedure)
-        inputs = [bound[p.key].value for p in entry.signature.parameters
-                  if p.key in bound and not p.by_reference and bound[p.key].value is not None]
-        if not inputs:
+        inputs, outputs = predefined_data_flow(call, procedure)
+        if not inputs or not outputs:
             return
         value = _any(self.taint(e, routine, module, span) for e in inputs)
         if type(value) is ast.BoolLiteral and not value.value:
             return
-        for parameter in entry.signature.parameters:
-            argument = bound.get(parameter.key)
-            if parameter.mode in ("INOUT", "VAR") and argument is not None \
-                    and argument.value is not None:
-                name = name_of(argument.value)
-                mark = name and self.mark(name, routine, module)
-                if mark:
-                    before.append(_assign(mark, _or(_ref(mark, span), value, span), span))
+        for output in outputs:
+            name = name_of(output)
+            mark = name and self.mark(name, routine, module)
+            if mark:
+                before.append(_assign(mark, _or(_ref(mark, span), value, span), span))
 
     def _user_call(self, call, callee, routine, module, span, before, after) -> None:
         bound = bind_user(call, callee)
@@ -308,15 +299,9 @@ class _Instrumenter:
                     after.append(_assign(target, value, span))
 
     def _sink(self, call, routine, module, before) -> None:
-        parameters = sink_parameters(call.name.key)
-        if not parameters:
-            return
-        bound = bind_predefined(call)
-        for parameter, what in parameters.items():
-            argument = bound.get(parameter)
-            if argument is not None and argument.value is not None:
-                self._sink_check(argument.value, f"the {what} of {call.name.text}", routine,
-                                 module, call.span, before)
+        for expression, what in sink_arguments(call):
+            self._sink_check(expression, f"the {what} of {call.name.text}", routine, module,
+                             call.span, before)
 
     def _sink_check(self, expression, description, routine, module, span, before) -> None:
         value = self.taint(expression, routine, module, span)
