@@ -5,6 +5,10 @@
 trigger never happens); ``fixed_readings`` names the controller readings a
 check took as fixed.  Each finding is a ``Diagnostic`` for the report.
 
+``lint`` finds what needs no search at all: the rules of ``rapidmc lint`` over the
+syntax tree, the taint analysis of unchecked input flows, and the taint marks that let
+``check --flows`` verify those flows on the state graph.
+
 May import: everything below it (``ast``, ``diagnostics``, ``semantics``,
 ``ltl``, ``check``, ``model``).
 """

@@ -78,7 +78,17 @@ def _diagnostic_results(diagnostics: Sequence[Diagnostic], rules: list, results:
                                              span.end_line if span.end_line > span.line else 0)]
         if diagnostic.omitted:          # the last result of a capped report counts the rest
             result["properties"] = {"errorsNotShown": diagnostic.omitted}
+        if diagnostic.flow:             # a lint flow: source, the steps between, sink
+            result["codeFlows"] = [{"threadFlows": [{"locations": [
+                _flow_location(span, text, order)
+                for order, (span, text) in enumerate(diagnostic.flow, start=1)]}]}]
         results.append(result)
+
+
+def _flow_location(span, text: str, order: int) -> dict:
+    location: dict = {"message": {"text": text}}
+    location.update(_location(span.file, span.line, span.column))
+    return {"location": location, "executionOrder": order, "nestingLevel": 0}
 
 
 def _document(rules: list, results: list, exit_code: int) -> str:
