@@ -115,6 +115,9 @@ USAGE = _code("RMC601", "usage", "bad command-line usage")
 NEVER_REACHED = _code("RMC701", "never-reached", "a statement no input sequence reaches (after a complete search)")
 FIXED_READING = _code("RMC702", "fixed-reading", "a controller reading the check takes as a fixed or sampled value")
 
+# --- editors (85x) --------------------------------------------------------------------
+LSP_UNAVAILABLE = _code("RMC850", "lsp-unavailable", "'rapidmc lsp' needs pygls, which is not installed")
+
 
 @dataclass(frozen=True)
 class Diagnostic:
