@@ -325,7 +325,8 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
             _replayed(system, result)
             vacuous = facts.vacuous(prop.formula) if result.verdict == HOLDS else None
             results.append(PropertyResult(prop.name, prop.text, result, vacuous,
-                                          fairness.names if fairness is not None else ()))
+                                          fairness.names if fairness is not None else (),
+                                          pattern=prop.pattern))
     except EnvironmentFault as exc:
         raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
     warnings = [assumed.note() for assumed in model.assumed] + sorted(

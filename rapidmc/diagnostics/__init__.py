@@ -118,6 +118,9 @@ FIXED_READING = _code("RMC702", "fixed-reading", "a controller reading the check
 # --- editors (85x) --------------------------------------------------------------------
 LSP_UNAVAILABLE = _code("RMC850", "lsp-unavailable", "'rapidmc lsp' needs pygls, which is not installed")
 
+# --- specification patterns (86x) ------------------------------------------------------
+PATTERN = _code("RMC860", "pattern", "a specification pattern is malformed")
+
 
 @dataclass(frozen=True)
 class Diagnostic:

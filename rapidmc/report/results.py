@@ -4,7 +4,7 @@ Text, one line per property and a counterexample under each violation::
 
     P1: HOLDS (1,234 states, 0.12 s)
     P2: VIOLATED (56 states, 0.01 s)
-      formula: G "x < 3"
+      formula: G "x < 3"           (a pattern's property: "pattern: ..." above it)
       counterexample: 2 steps, then a loop of 2 steps
         step 1  initial state
             x = 0
@@ -41,6 +41,7 @@ class PropertyResult:
     result: SearchResult
     vacuous: Optional[str] = None    # a trigger never true in any reachable state (HOLDS only)
     fair_tasks: tuple = ()           # the tasks assumed weakly fair in the search (several tasks)
+    pattern: Optional[str] = None    # the specification pattern the formula translates
 
 
 # --- text ---------------------------------------------------------------------
@@ -58,9 +59,18 @@ def format_text(results: Sequence[PropertyResult], describer: TraceDescriber) ->
             lines.append(f"  note: {stats.deadlocks:,} reachable state(s) without a successor; "
                          "runs ending there repeat their last state")
         if checked.result.verdict == VIOLATED:
+            if checked.pattern is not None:
+                lines.append(f"  pattern: {checked.pattern}")
             lines.append(f"  formula: {checked.formula}")
             lines.extend(counterexample_lines(build_trace(checked.result, describer)))
     return "\n".join(lines) + "\n"
+
+
+def described_formula(checked: PropertyResult) -> str:
+    """The formula, after the specification pattern it translates (if any): one line."""
+    if checked.pattern is None:
+        return checked.formula
+    return f"{checked.pattern} (LTL: {checked.formula})"
 
 
 def verdict_line(checked: PropertyResult) -> str:
@@ -175,7 +185,8 @@ def property_json(checked: PropertyResult, describer: TraceDescriber) -> dict:
     return {"name": checked.name, "formula": checked.formula, "verdict": result.verdict,
             "reason": result.reason, "stats": result.stats.as_dict(), "trace": trace,
             "vacuous": checked.vacuous,
-            "fair_tasks": list(checked.fair_tasks) if checked.fair_tasks else None}
+            "fair_tasks": list(checked.fair_tasks) if checked.fair_tasks else None,
+            "pattern": checked.pattern}
 
 
 def warning_json(warning: Diagnostic) -> dict:
