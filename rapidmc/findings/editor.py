@@ -27,6 +27,7 @@ Example::
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Optional
 
 from .. import ast
@@ -49,13 +50,13 @@ class Parsed:
     modules: tuple[ast.Module, ...] = ()
     errors: tuple[Diagnostic, ...] = ()
 
-    @property
+    @cached_property
     def declared(self) -> frozenset:
         """The keys of the global names its modules declare (not LOCAL)."""
         return frozenset(declaration.name.key for module in self.modules
                          for declaration in global_declarations(module))
 
-    @property
+    @cached_property
     def used(self) -> frozenset:
         """The keys of the names its modules use: data, routines and types."""
         keys = set()
@@ -90,16 +91,18 @@ class Workspace:
         self.documents.pop(file, None)
 
     def program_of(self, file: str) -> list[Parsed]:
-        """The document and the parsed documents declaring names it needs, transitively."""
+        """The document and the parsed documents declaring names it needs, transitively:
+        a document joins when it declares a name the chosen ones use and none declares."""
         chosen = {file: self.documents[file]}
-        used = set(chosen[file].used)
+        missing = set(chosen[file].used - chosen[file].declared)
         added = True
-        while added:
+        while added and missing:
             added = False
             for name, parsed in sorted(self.documents.items()):
-                if name not in chosen and parsed.modules and parsed.declared & used:
+                if name not in chosen and parsed.modules and parsed.declared & missing:
                     chosen[name] = parsed
-                    used |= parsed.used
+                    missing = (missing | parsed.used) - frozenset().union(
+                        *(p.declared for p in chosen.values()))
                     added = True
         return list(chosen.values())
 
