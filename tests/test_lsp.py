@@ -40,6 +40,11 @@ ENDMODULE
 """
 
 
+def without_lint(diagnostics: list[dict]) -> list[dict]:
+    """The syntax and static diagnostics (the lint stage's codes start at RMC800)."""
+    return [d for d in diagnostics if d["code"] < "RMC800"]
+
+
 @pytest.fixture(scope="module")
 def client(tmp_path_factory):
     root = tmp_path_factory.mktemp("workspace")
@@ -73,7 +78,7 @@ def test_a_static_error_is_published_with_its_code(client):
     path = client.root / "unknown.mod"
     client.open(path, FIXED.replace("MODULE Broken", "MODULE Unknown")
                 .replace("PROC main", "PROC other").replace("x := 1;", "y := 1;"))
-    [diagnostic] = client.diagnostics(path.as_uri())
+    [diagnostic] = without_lint(client.diagnostics(path.as_uri()))
     assert diagnostic["code"] == "RMC201" and "unknown name 'y'" in diagnostic["message"]
     assert diagnostic["range"]["start"] == {"line": 3, "character": 4}
 
@@ -81,10 +86,19 @@ def test_a_static_error_is_published_with_its_code(client):
 def test_a_call_into_a_module_not_open_is_unknown_until_that_module_opens(client):
     main, library = client.root / "cell_main.mod", client.root / "cell_lib.mod"
     client.open(main, MAIN)
-    codes = sorted(d["code"] for d in client.diagnostics(main.as_uri()))
+    codes = sorted(d["code"] for d in without_lint(client.diagnostics(main.as_uri())))
     assert codes == ["RMC201", "RMC203"]            # p10 and PickPart
     client.open(library, LIBRARY)
-    assert client.diagnostics(main.as_uri()) == []
+    assert without_lint(client.diagnostics(main.as_uri())) == []
+
+
+def test_lint_findings_are_published_when_the_lint_stage_is_there(client):
+    pytest.importorskip("rapidmc.findings.lint")
+    path = client.root / "chain.mod"
+    client.open(path, "MODULE Chain\n  PROC main()\n    VAR bool b;\n"
+                "    b := TRUE AND NOT b AND b;\n  ENDPROC\nENDMODULE\n")
+    found = [d for d in client.diagnostics(path.as_uri()) if d["code"] == "RMC801"]
+    assert [d["range"]["start"]["line"] for d in found] == [3]
 
 
 def test_hover_on_a_predefined_instruction_shows_signature_and_modelling(client):
