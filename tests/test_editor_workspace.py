@@ -1,5 +1,6 @@
-"""What the editor shows (``findings.editor``, ``findings.declarations``, ``report.lsp_diagnostics``):
-which documents make a program, which diagnostics a document gets, where names are declared."""
+"""What the editor shows (``findings.editor``, ``findings.declarations``,
+``report.lsp_diagnostics``): which documents make a program, which diagnostics a document gets,
+where names are declared."""
 from __future__ import annotations
 
 import sys

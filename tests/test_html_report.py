@@ -243,7 +243,8 @@ def test_the_page_lists_every_property_with_verdict_formula_and_statistics(brows
 
 
 def test_a_pattern_is_shown_beside_its_formula(browser, tmp_path_factory):
-    path, document = report(tmp_path_factory, "patterns", SORTER[:-1] + ["specs/sorter_patterns.ltl"])
+    path, document = report(tmp_path_factory, "patterns",
+                            SORTER[:-1] + ["specs/sorter_patterns.ltl"])
     page = Page(browser, path)
     cells = page.texts("#property-table tbody tr:nth-child(4) td:nth-child(3) > *")
     p2 = document["properties"][3]

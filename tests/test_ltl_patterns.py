@@ -11,7 +11,8 @@ from tool_requirements import require_tool
 from rapidmc.diagnostics import LTL_SYNTAX, PATTERN, UserError
 from rapidmc.ltl import parse_formula, to_text
 from rapidmc.ltl.lasso import product_is_empty
-from rapidmc.ltl.patterns import MAPPINGS, PATTERNS, SCOPES, is_pattern, parse_pattern, pattern_formula
+from rapidmc.ltl.patterns import (MAPPINGS, PATTERNS, SCOPES, is_pattern, parse_pattern,
+                                  pattern_formula)
 from rapidmc.ltl.spot_backend import spot_available, to_spot
 from rapidmc.ltl.syntax import Not
 from rapidmc.ltl.translate import translate

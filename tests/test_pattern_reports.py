@@ -69,7 +69,8 @@ def test_sarif_rules_and_results_name_pattern_and_formula(at_root):
     _, text = run("--format", "sarif")
     run_ = json.loads(text)["runs"][0]
     described = f"{P2_PATTERN} (LTL: {P2_FORMULA})"
-    rules = {rule["id"]: rule["shortDescription"]["text"] for rule in run_["tool"]["driver"]["rules"]}
+    rules = {rule["id"]: rule["shortDescription"]["text"]
+             for rule in run_["tool"]["driver"]["rules"]}
     assert rules["P2"] == described
     [violation] = [r for r in run_["results"] if r["ruleId"] == "P2"]
     assert violation["message"]["text"].startswith(f"P2 is violated: {described} ")

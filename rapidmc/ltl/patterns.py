@@ -220,11 +220,13 @@ MAPPINGS: dict[tuple[str, str], Callable[..., Formula]] = {
     ("response", "globally"): lambda p, s, q, r: Globally(Implies(p, Finally(s))),
     ("response", "before"):
         lambda p, s, q, r: Implies(Finally(r), Until(_answered_before(p, s, r), r)),
-    ("response", "after"): lambda p, s, q, r: Globally(Implies(q, Globally(Implies(p, Finally(s))))),
+    ("response", "after"):
+        lambda p, s, q, r: Globally(Implies(q, Globally(Implies(p, Finally(s))))),
     ("response", "between"):
         lambda p, s, q, r: Globally(Implies(_between(q, r), Until(_answered_before(p, s, r), r))),
     ("response", "after_until"):
-        lambda p, s, q, r: Globally(Implies(_opened(q, r), WeakUntil(_answered_before(p, s, r), r))),
+        lambda p, s, q, r: Globally(Implies(_opened(q, r),
+                                            WeakUntil(_answered_before(p, s, r), r))),
 }
 
 
