@@ -113,12 +113,19 @@ class _Editor:
         found = word_at(lines[line], params.position.character)
         return None if found is None else (file, line + 1, found[0])
 
-    def hover(self, params):
+    def _named(self, params):
+        """(word under the cursor, the declaration it refers to or None), or None off a name."""
         place = self._word(params)
         if place is None:
             return None
         file, line, word = place
-        declaration = declaration_at(self.workspace.program_modules(file), file, line, word)
+        return word, declaration_at(self.workspace.program_modules(file), file, line, word)
+
+    def hover(self, params):
+        named = self._named(params)
+        if named is None:
+            return None
+        word, declaration = named
         text = declaration_hover(declaration) if declaration else predefined_hover(word)
         if text is None:
             return None
@@ -126,17 +133,13 @@ class _Editor:
             kind=self.types.MarkupKind.Markdown, value=text))
 
     def definition(self, params):
-        place = self._word(params)
-        if place is None:
+        named = self._named(params)
+        if named is None or named[1] is None:
             return None
-        file, line, word = place
-        declaration = declaration_at(self.workspace.program_modules(file), file, line, word)
-        if declaration is None:
-            return None
-        span = declaration.name.span
-        uri = self.uris.get(span.file) or self._uri_of(span.file)
-        return self.converter.structure(
-            lsp_location(uri, span, len(declaration.name.text)), self.types.Location)
+        name = named[1].name
+        uri = self.uris.get(name.span.file) or self._uri_of(name.span.file)
+        return self.converter.structure(lsp_location(uri, name.span, len(name.text)),
+                                        self.types.Location)
 
     @staticmethod
     def _uri_of(file: str) -> str:

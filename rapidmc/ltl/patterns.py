@@ -40,15 +40,14 @@ from typing import Callable
 
 from ..diagnostics import PATTERN, error
 from .printing import to_text
-from .syntax import (BINARY_TYPES, UNARY_TYPES, And, Finally, Formula, Globally, Implies, Next,
-                     Not, Or, Release, StrongRelease, Until, WeakUntil, _Locator, parse_formula)
+from .syntax import (And, Finally, Formula, Globally, Implies, Not, Or, Until, WeakUntil,
+                     _Locator, is_propositional, parse_formula)
 
 # pattern -> the names of its arguments, in the order they are written
 PATTERNS = {"absence": ("P",), "existence": ("P",), "universality": ("P",),
             "precedence": ("S", "P"), "response": ("P", "S")}
 SCOPES = {"globally": (), "before": ("R",), "after": ("Q",), "between": ("Q", "R"),
           "after_until": ("Q", "R")}
-TEMPORAL = (Next, Globally, Finally, Until, WeakUntil, Release, StrongRelease)
 
 _START = re.compile(r"\s*(" + "|".join(PATTERNS) + r")\s*\(", re.IGNORECASE)
 _WORD = re.compile(r"\s*([A-Za-z_]+)")
@@ -158,21 +157,11 @@ def _condition(piece: str, offset: int, where: _Locator) -> Formula:
         raise _error(where, "expected a condition", offset, max(len(piece), 1))
     span = where.span(offset + lead, 1)
     formula = parse_formula(piece.strip(), where.file, span.line, span.column)
-    if _has_temporal(formula):
+    if not is_propositional(formula):
         raise _error(where, "a pattern's conditions hold in one state: write "
                                "no temporal operator (X F G U W R M) in them",
                                offset + lead, len(piece.strip()))
     return formula
-
-
-def _has_temporal(formula: Formula) -> bool:
-    if isinstance(formula, TEMPORAL):
-        return True
-    if isinstance(formula, UNARY_TYPES):
-        return _has_temporal(formula.operand)
-    if isinstance(formula, BINARY_TYPES):
-        return _has_temporal(formula.left) or _has_temporal(formula.right)
-    return False
 
 
 # --- the catalogue's LTL mappings ----------------------------------------------------------
