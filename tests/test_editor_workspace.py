@@ -66,6 +66,22 @@ def test_a_syntax_error_elsewhere_leaves_its_module_out():
     assert [d.code.code for d in space.diagnostics("main.mod")] == ["RMC203"]
 
 
+def test_with_read_folders_the_modules_beside_a_document_join_its_program(tmp_path):
+    (tmp_path / "library.mod").write_text("MODULE L\nPROC Helper()\nENDPROC\nENDMODULE\n")
+    (tmp_path / "other.mod").write_text("MODULE O\nPROC main()\nENDPROC\nENDMODULE\n")
+    (tmp_path / "broken.mod").write_text("MODULE B\nPROC Helper2()\n x := ;\nENDPROC\n")
+    (tmp_path / "notes.txt").write_text("PROC Helper3()")
+    main = str(tmp_path / "main.mod")
+    text = "MODULE M\nPROC main()\n  Helper;\n  Helper2;\nENDPROC\nENDMODULE\n"
+    space = Workspace(read_folders=True)
+    space.update(main, text)
+    assert [p.file for p in space.program_of(main)] == [main, str(tmp_path / "library.mod")]
+    assert [d.message for d in space.diagnostics(main)] == ["unknown procedure 'Helper2'"]
+    (tmp_path / "library.mod").write_text("MODULE L\nPROC Helper2()\nENDPROC\nENDMODULE\n")
+    assert [d.message for d in space.diagnostics(main)] == ["unknown procedure 'Helper'"]
+    assert Workspace().neighbours(main) == {}            # off unless asked for
+
+
 def test_an_edit_is_parsed_again_and_a_closed_document_is_gone():
     space = space_with(main="MODULE M\nPROC main()\n  x := ;\nENDPROC\nENDMODULE\n")
     assert space.diagnostics("main.mod")

@@ -83,7 +83,7 @@ def test_a_static_error_is_published_with_its_code(client):
     assert diagnostic["range"]["start"] == {"line": 3, "character": 4}
 
 
-def test_a_call_into_a_module_not_open_is_unknown_until_that_module_opens(client):
+def test_a_call_into_a_module_neither_open_nor_on_disk_is_unknown_until_it_opens(client):
     main, library = client.root / "cell_main.mod", client.root / "cell_lib.mod"
     client.open(main, MAIN)
     codes = sorted(d["code"] for d in without_lint(client.diagnostics(main.as_uri())))
@@ -123,6 +123,18 @@ def test_definition_of_a_routine_called_in_another_module(client):
                                  "end": {"line": 3, "character": 15}}
     target = client.at("textDocument/definition", main, 2, 11)        # on p10
     assert target["range"]["start"] == {"line": 1, "character": 18}
+
+
+def test_a_module_on_disk_beside_the_document_counts_without_being_opened(client):
+    folder = client.root / "cell"
+    folder.mkdir()
+    (folder / "cell_lib.mod").write_text(LIBRARY.replace("CellLib", "DiskLib"))
+    main = folder / "cell_main.mod"
+    client.open(main, MAIN.replace("CellMain", "DiskMain"))
+    assert without_lint(client.diagnostics(main.as_uri())) == []
+    location = client.at("textDocument/definition", main, 3, 8)
+    assert location["uri"] == (folder / "cell_lib.mod").as_uri()
+    assert location["range"]["start"] == {"line": 3, "character": 7}
 
 
 def test_nothing_to_show_off_a_name(client):

@@ -68,7 +68,7 @@ class _Editor:
     def __init__(self, server, types):
         self.server = server
         self.types = types
-        self.workspace = Workspace()
+        self.workspace = Workspace(read_folders=True)
         self.uris: dict[str, str] = {}      # file name in spans -> document URI
         from lsprotocol.converters import get_converter
         self.converter = get_converter()      # LSP JSON data -> lsprotocol types

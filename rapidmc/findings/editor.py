@@ -9,7 +9,9 @@ that stage is installed).
 
 Which program a document belongs to: the document, and the other documents
 of the workspace that declare a global name it uses (routine, data or type),
-and theirs in turn.  So a module calling a routine of another open module
+and theirs in turn.  With ``read_folders``, the module files in the
+document's folder that are not open count as documents too (read from disk
+again when they change there): a program's modules are usually side by side.  So a module calling a routine of another open module
 links with that module, while two main modules open side by side (program
 A and program B of one cell) are checked apart.  A module without ``main``
 is a library being edited: the missing entry routine is not reported.
@@ -26,6 +28,7 @@ Example::
 """
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass
 from functools import cached_property
 from typing import Optional
@@ -33,12 +36,15 @@ from typing import Optional
 from .. import ast
 from ..diagnostics import NO_ENTRY, Diagnostic, UserError
 from ..diagnostics.error_report import merge_unknown_names, without_repeats
+from ..load.backup import MODULE_SUFFIXES
+from ..load.source import read_source
 from ..semantics.link import build
 from ..syntax import parse_text
 from .declarations import global_declarations
 
 # The linker's diagnostics an editor leaves out: a module edited alone need not hold main.
 NOT_FOR_EDITORS = (NO_ENTRY,)
+MAX_FOLDER_ENTRIES = 500      # a folder's first entries (by name) that ``read_folders`` reads
 
 
 @dataclass(frozen=True)
@@ -79,8 +85,10 @@ def parse_document(file: str, text: str) -> Parsed:
 class Workspace:
     """The documents open in an editor, parsed once per version."""
 
-    def __init__(self) -> None:
+    def __init__(self, read_folders: bool = False) -> None:
         self.documents: dict[str, Parsed] = {}
+        self.read_folders = read_folders
+        self.on_disk: dict[str, tuple] = {}    # path -> ((mtime, size), Parsed or None)
 
     def update(self, file: str, text: str) -> None:
         known = self.documents.get(file)
@@ -95,16 +103,48 @@ class Workspace:
         a document joins when it declares a name the chosen ones use and none declares."""
         chosen = {file: self.documents[file]}
         missing = set(chosen[file].used - chosen[file].declared)
+        candidates = sorted({**self.neighbours(file), **self.documents}.items())
         added = True
         while added and missing:
             added = False
-            for name, parsed in sorted(self.documents.items()):
+            for name, parsed in candidates:
                 if name not in chosen and parsed.modules and parsed.declared & missing:
                     chosen[name] = parsed
                     missing = (missing | parsed.used) - frozenset().union(
                         *(p.declared for p in chosen.values()))
                     added = True
         return list(chosen.values())
+
+    def neighbours(self, file: str) -> dict[str, Parsed]:
+        """The module files beside ``file`` on disk, not open, that parse (``read_folders``)."""
+        folder = os.path.dirname(file)
+        if not self.read_folders or not os.path.isabs(file) or not os.path.isdir(folder):
+            return {}
+        found = {}
+        for entry in sorted(os.listdir(folder))[:MAX_FOLDER_ENTRIES]:
+            path = os.path.join(folder, entry)
+            if path not in self.documents and os.path.splitext(entry)[1].lower() in \
+                    MODULE_SUFFIXES:
+                parsed = self._from_disk(path)
+                if parsed is not None and parsed.modules:
+                    found[path] = parsed
+        return found
+
+    def _from_disk(self, path: str) -> Optional[Parsed]:
+        """The file as parsed, again only when its time or size changed; None: unreadable."""
+        try:
+            status = os.stat(path)
+        except OSError:
+            return None
+        stamp = (status.st_mtime_ns, status.st_size)
+        known = self.on_disk.get(path)
+        if known is None or known[0] != stamp:
+            try:
+                parsed = parse_document(path, read_source(path))
+            except UserError:
+                parsed = None
+            known = self.on_disk[path] = (stamp, parsed)
+        return known[1]
 
     def diagnostics(self, file: str) -> list[Diagnostic]:
         """Every diagnostic about ``file``: syntax errors, else static errors and lint."""
