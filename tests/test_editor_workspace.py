@@ -184,3 +184,8 @@ def test_a_diagnostic_without_an_end_covers_its_word():
     placeless = lsp_diagnostic(Diagnostic(SYNTAX, "y", None, notes=("a note",)), [])
     assert placeless["range"]["start"] == {"line": 0, "character": 0}
     assert placeless["message"] == "y\nnote: a note"
+
+
+def test_document_lines_break_where_the_parser_counts_a_line():
+    from rapidmc.report.lsp_diagnostics import document_lines
+    assert document_lines("a\r\nb\x0cc\x85d\ne") == ["a", "b\x0cc\x85d", "e"]

@@ -18,7 +18,7 @@ from ..diagnostics import EXIT_OK, LSP_UNAVAILABLE, error
 from ..findings.declarations import declaration_at, word_at
 from ..findings.editor import Workspace
 from ..report.hover import declaration_hover, predefined_hover
-from ..report.lsp_diagnostics import lsp_diagnostic, lsp_location
+from ..report.lsp_diagnostics import document_lines, lsp_diagnostic, lsp_location
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -94,7 +94,7 @@ class _Editor:
     def publish(self) -> None:
         """The diagnostics of every open document (a change in one may settle another's)."""
         for file in list(self.workspace.documents):
-            lines = self.workspace.text(file).splitlines()
+            lines = document_lines(self.workspace.text(file))
             self._send(file, [lsp_diagnostic(d, lines) for d in self.workspace.diagnostics(file)])
 
     def _send(self, file: str, diagnostics: list) -> None:
@@ -107,7 +107,7 @@ class _Editor:
         file = self._file(params.text_document.uri)
         text = self.workspace.text(file)
         line = params.position.line
-        lines = text.splitlines() if text is not None else []
+        lines = document_lines(text) if text is not None else []
         if line >= len(lines):
             return None
         found = word_at(lines[line], params.position.character)

@@ -92,8 +92,8 @@ def parse_pattern(text: str, file: str = "<formula>", line: int = 1,
     if text[end:].strip():
         offset = end + len(text[end:]) - len(text[end:].lstrip())
         raise _error(where, "expected a scope (globally, before(R), after(Q), "
-                               "between(Q, R), after_until(Q, R)) or the end of the pattern",
-                               offset, len(text) - offset)
+                     "between(Q, R), after_until(Q, R)) or the end of the pattern",
+                     offset, len(text) - offset)
     return Pattern(kind, tuple(arguments), scope, tuple(bounds))
 
 
@@ -110,7 +110,7 @@ def _call(text: str, start: int, where: _Locator, known: dict) -> tuple[str, lis
         offset = word.start(1) if word else start
         choices = ", ".join(known)
         raise _error(where, f"expected one of {choices}", offset,
-                               len(word.group(1)) if word else 1)
+                     len(word.group(1)) if word else 1)
     opening = len(text) - len(text[word.end():].lstrip())
     if not text.startswith("(", opening):
         raise _error(where, f"expected '(' after {word.group(1)}", opening, 1)
@@ -118,8 +118,8 @@ def _call(text: str, start: int, where: _Locator, known: dict) -> tuple[str, lis
     expected = known[name]
     if len(pieces) != len(expected):
         raise _error(where, f"{name} takes {len(expected)} condition"
-                               f"{'s' * (len(expected) != 1)} ({', '.join(expected)}), "
-                               f"found {len(pieces)}", word.start(1), end - word.start(1))
+                     f"{'s' * (len(expected) != 1)} ({', '.join(expected)}), "
+                     f"found {len(pieces)}", word.start(1), end - word.start(1))
     return name, [_condition(piece, offset, where) for piece, offset in pieces], end
 
 
@@ -159,8 +159,8 @@ def _condition(piece: str, offset: int, where: _Locator) -> Formula:
     formula = parse_formula(piece.strip(), where.file, span.line, span.column)
     if not is_propositional(formula):
         raise _error(where, "a pattern's conditions hold in one state: write "
-                               "no temporal operator (X F G U W R M) in them",
-                               offset + lead, len(piece.strip()))
+                     "no temporal operator (X F G U W R M) in them",
+                     offset + lead, len(piece.strip()))
     return formula
 
 

@@ -29,6 +29,13 @@ SEVERITIES = {"error": ERROR, "warning": WARNING, "note": INFORMATION, "info": I
               "hint": HINT}
 SOURCE = "rapidmc"
 _WORD = re.compile(r"[A-Za-z0-9_]+")
+_LINE_BREAK = re.compile(r"\r?\n")
+
+
+def document_lines(text: str) -> list[str]:
+    """The lines as the parser counts them, ended by LF or CR LF (``str.splitlines`` also
+    breaks at form feeds and Latin-1's NEL, which RAPID text may hold)."""
+    return _LINE_BREAK.split(text)
 
 
 def position(line: int, character: int) -> dict:
