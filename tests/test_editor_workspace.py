@@ -189,3 +189,19 @@ def test_a_diagnostic_without_an_end_covers_its_word():
 def test_document_lines_break_where_the_parser_counts_a_line():
     from rapidmc.report.lsp_diagnostics import document_lines
     assert document_lines("a\r\nb\x0cc\x85d\ne") == ["a", "b\x0cc\x85d", "e"]
+
+
+@pytest.mark.parametrize("word, shown", [
+    ("waittime", "WaitTime(\\switch InPos, num Time)"),
+    ("V100", "CONST speeddata v100"),
+    ("robtarget", "**robtarget** (record): pos trans, orient rot, confdata robconf, extjoint extax"),
+])
+def test_hover_on_predefined_routines_data_and_types(word, shown):
+    from rapidmc.report.hover import predefined_hover
+    assert shown in predefined_hover(word)
+
+
+@pytest.mark.parametrize("word", ["switch", "anytype", "PickPart", "MODULE"])
+def test_no_hover_for_hidden_types_and_unknown_words(word):
+    from rapidmc.report.hover import predefined_hover
+    assert predefined_hover(word) is None

@@ -107,6 +107,8 @@ def test_hover_on_a_predefined_instruction_shows_signature_and_modelling(client)
     text = hover["contents"]["value"]
     assert "MoveL(\\switch Conc, robtarget ToPoint" in text
     assert "modelled: robot state only" in text
+    speed = client.at("textDocument/hover", main, 2, 16)["contents"]["value"]   # on v100
+    assert "CONST speeddata v100" in speed
 
 
 def test_hover_on_a_declared_routine_shows_its_declaration(client):

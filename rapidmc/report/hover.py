@@ -2,7 +2,8 @@
 
 A predefined routine shows its signature and how rapidmc models it, from the
 registry that docs/predefined.md is generated from
-(``semantics.library.documentation``); a name the program declares shows its
+(``semantics.library.documentation``), as do predefined data (``v100``) and
+data types (``robtarget``); a name the program declares shows its
 declaration's source line and where it is.
 
 Example::
@@ -22,16 +23,29 @@ from typing import Optional
 from ..diagnostics import SourceCache
 from ..findings.declarations import Declaration
 from ..semantics.library import lookup_function, lookup_procedure
-from ..semantics.library.documentation import signature_text, topic_summary
+from ..semantics.library.data import PREDEFINED_DATA
+from ..semantics.library.documentation import (HIDDEN_TYPES, components_text, signature_text,
+                                               topic_summary)
+from ..semantics.types import PREDEFINED_TYPES
 
 
 def predefined_hover(word: str) -> Optional[str]:
-    """Signature, kind, topic and modelling of the predefined routines named ``word``."""
+    """What the predefined routines, data object or data type named ``word`` are: a
+    routine's signature, kind, topic and modelling; a data object's declaration; a type's
+    kind and components."""
     key = word.upper()
-    entries = [entry for entry in (lookup_procedure(key), lookup_function(key)) if entry]
-    if not entries:
-        return None
-    return "\n\n---\n\n".join(_routine_text(entry) for entry in entries)
+    texts = [_routine_text(entry) for entry in (lookup_procedure(key), lookup_function(key))
+             if entry]
+    data = PREDEFINED_DATA.get(key)
+    if data is not None:
+        texts.append(f"```rapid\n{data.storage} {data.type_name} {data.name}\n```\n"
+                     "predefined data")
+    rapid_type = PREDEFINED_TYPES.get(key)
+    if rapid_type is not None and key not in HIDDEN_TYPES:
+        components = components_text(rapid_type)
+        texts.append(f"predefined data type **{rapid_type.name}** ({rapid_type.kind})"
+                     + (f": {components}" if components else ""))
+    return "\n\n---\n\n".join(texts) if texts else None
 
 
 def _routine_text(entry) -> str:
