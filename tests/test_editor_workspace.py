@@ -194,7 +194,8 @@ def test_document_lines_break_where_the_parser_counts_a_line():
 @pytest.mark.parametrize("word, shown", [
     ("waittime", "WaitTime(\\switch InPos, num Time)"),
     ("V100", "CONST speeddata v100"),
-    ("robtarget", "**robtarget** (record): pos trans, orient rot, confdata robconf, extjoint extax"),
+    ("robtarget",
+     "**robtarget** (record): pos trans, orient rot, confdata robconf, extjoint extax"),
 ])
 def test_hover_on_predefined_routines_data_and_types(word, shown):
     from rapidmc.report.hover import predefined_hover
