@@ -206,3 +206,25 @@ def test_hover_on_predefined_routines_data_and_types(word, shown):
 def test_no_hover_for_hidden_types_and_unknown_words(word):
     from rapidmc.report.hover import predefined_hover
     assert predefined_hover(word) is None
+
+
+def test_a_flow_is_related_information_step_by_step():
+    """A lint flow finding (RMC820 of the lint stage: a Diagnostic with ``flow`` steps) shows
+    its path from the input to its use; a stand-in carries the same fields here."""
+    from rapidmc.diagnostics import SourceCache
+    SourceCache.remember("flow.mod", "MODULE F\n  SocketReceive s \\Str:=text;\n  MoveL p;\n")
+    source, sink = Span("flow.mod", 2, 3), Span("flow.mod", 3, 9, 3, 10)
+    finding = types.SimpleNamespace(
+        code=NEVER_REACHED, message="input reaches a target", span=sink, severity="warning",
+        notes=(), flow=((source, "SocketReceive reads it"), (sink, "MoveL takes it")))
+    shown = lsp_diagnostic(finding, [], lambda file: f"file:///work/{file}")
+    assert shown["relatedInformation"] == [
+        {"location": {"uri": "file:///work/flow.mod",
+                      "range": {"start": {"line": 1, "character": 2},
+                                "end": {"line": 1, "character": 15}}},
+         "message": "SocketReceive reads it"},
+        {"location": {"uri": "file:///work/flow.mod",
+                      "range": {"start": {"line": 2, "character": 8},
+                                "end": {"line": 2, "character": 9}}},
+         "message": "MoveL takes it"}]
+    assert "relatedInformation" not in lsp_diagnostic(Diagnostic(SYNTAX, "x", sink), [])

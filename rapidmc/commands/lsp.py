@@ -95,7 +95,8 @@ class _Editor:
         """The diagnostics of every open document (a change in one may settle another's)."""
         for file in list(self.workspace.documents):
             lines = document_lines(self.workspace.text(file))
-            self._send(file, [lsp_diagnostic(d, lines) for d in self.workspace.diagnostics(file)])
+            self._send(file, [lsp_diagnostic(d, lines, self._uri)
+                              for d in self.workspace.diagnostics(file)])
 
     def _send(self, file: str, diagnostics: list) -> None:
         self.server.text_document_publish_diagnostics(self.types.PublishDiagnosticsParams(
@@ -137,11 +138,11 @@ class _Editor:
         if named is None or named[1] is None:
             return None
         name = named[1].name
-        uri = self.uris.get(name.span.file) or self._uri_of(name.span.file)
-        return self.converter.structure(lsp_location(uri, name.span, len(name.text)),
+        return self.converter.structure(lsp_location(self._uri(name.span.file), name.span,
+                                                     len(name.text)),
                                         self.types.Location)
 
-    @staticmethod
-    def _uri_of(file: str) -> str:
+    def _uri(self, file: str) -> str:
+        """The URI of an open document's file name, or of a file on disk."""
         from pygls.uris import from_fs_path
-        return from_fs_path(file) or file
+        return self.uris.get(file) or from_fs_path(file) or file

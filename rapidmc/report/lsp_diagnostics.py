@@ -19,10 +19,10 @@ Example::
 from __future__ import annotations
 
 import re
-from typing import Optional, Sequence
+from typing import Callable, Optional, Sequence
 
 from ..ast import Span
-from ..diagnostics import Diagnostic
+from ..diagnostics import Diagnostic, SourceCache
 
 ERROR, WARNING, INFORMATION, HINT = 1, 2, 3, 4
 SEVERITIES = {"error": ERROR, "warning": WARNING, "note": INFORMATION, "info": INFORMATION,
@@ -56,12 +56,24 @@ def lsp_range(span: Optional[Span], lines: Sequence[str]) -> dict:
     return {"start": start, "end": position(span.line - 1, span.column - 1 + width)}
 
 
-def lsp_diagnostic(diagnostic: Diagnostic, lines: Sequence[str]) -> dict:
-    """One LSP ``Diagnostic``: range, severity, code, source and message (notes appended)."""
+def lsp_diagnostic(diagnostic: Diagnostic, lines: Sequence[str],
+                   uri_of: Optional[Callable[[str], str]] = None) -> dict:
+    """One LSP ``Diagnostic``: range, severity, code, source and message (notes appended).
+
+    A diagnostic that carries a flow (a lint finding's path from an input to where it is
+    used: ``(span, what happens there)`` steps) gives each step as related information,
+    with ``uri_of(file)`` as its document."""
     message = "\n".join((diagnostic.message,) + tuple(f"note: {n}" for n in diagnostic.notes))
-    return {"range": lsp_range(diagnostic.span, lines),
-            "severity": SEVERITIES.get(diagnostic.severity, ERROR),
-            "code": diagnostic.code.code, "source": SOURCE, "message": message}
+    found = {"range": lsp_range(diagnostic.span, lines),
+             "severity": SEVERITIES.get(diagnostic.severity, ERROR),
+             "code": diagnostic.code.code, "source": SOURCE, "message": message}
+    flow = getattr(diagnostic, "flow", ())
+    if flow and uri_of is not None:
+        found["relatedInformation"] = [
+            {"location": {"uri": uri_of(span.file),
+                          "range": lsp_range(span, SourceCache.lines(span.file) or ())},
+             "message": what} for span, what in flow]
+    return found
 
 
 def lsp_location(uri: str, span: Span, length: int) -> dict:
