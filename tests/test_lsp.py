@@ -101,6 +101,34 @@ def test_lint_findings_are_published_when_the_lint_stage_is_there(client):
     assert [d["range"]["start"]["line"] for d in found] == [3]
 
 
+NETWORK = """MODULE Net
+  VAR socketdev sock;
+  VAR string text;
+  VAR num x;
+  VAR robtarget target := [[0,0,0],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  PROC main()
+    SocketReceive sock \\Str:=text \\Time:=5;
+    IF StrToVal(text, x) THEN
+      target.trans.x := x;
+      MoveL target, v100, fine, tool0;
+    ENDIF
+  ENDPROC
+ENDMODULE
+"""
+
+
+def test_a_lint_flow_arrives_with_its_path_as_related_information(client):
+    pytest.importorskip("rapidmc.findings.lint")
+    path = client.root / "network.mod"
+    client.open(path, NETWORK)
+    [flow] = [d for d in client.diagnostics(path.as_uri()) if d["code"] == "RMC820"]
+    assert flow["range"]["start"]["line"] == 9                       # the MoveL
+    steps = flow["relatedInformation"]
+    assert {step["location"]["uri"] for step in steps} == {path.as_uri()}
+    assert steps[0]["location"]["range"]["start"]["line"] == 6        # the SocketReceive
+    assert steps[-1]["location"]["range"]["start"]["line"] == 9
+
+
 def test_hover_on_a_predefined_instruction_shows_signature_and_modelling(client):
     main = client.root / "cell_main.mod"
     hover = client.at("textDocument/hover", main, 2, 6)        # on MoveL
