@@ -330,7 +330,8 @@ class _Searches:
         _replayed(self.model.system, result)
         vacuous = self.facts.vacuous(prop.formula) if result.verdict == HOLDS else None
         return PropertyResult(prop.name, prop.text, result, vacuous,
-                              self.fairness.names if self.fairness is not None else ())
+                              self.fairness.names if self.fairness is not None else (),
+                              pattern=prop.pattern)
 
 
 def _flow_sinks(program: Program, results: list[PropertyResult], describer) -> list:

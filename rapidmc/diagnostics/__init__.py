@@ -136,6 +136,12 @@ EMPTY_KEY = _code("RMC810", "empty-key", "TPReadFK offers an empty key the progr
 UNCHECKED_INPUT = _code("RMC820", "unchecked-input", "input from outside reaches a motion, file, late-bound call or output argument unchecked")
 LINT_CONFIG = _code("RMC840", "lint-config", "the [tool.rapidmc.lint] configuration is malformed")
 
+# --- editors (85x) --------------------------------------------------------------------
+LSP_UNAVAILABLE = _code("RMC850", "lsp-unavailable", "'rapidmc lsp' needs pygls, which is not installed")
+
+# --- specification patterns (86x) ------------------------------------------------------
+PATTERN = _code("RMC860", "pattern", "a specification pattern is malformed")
+
 
 @dataclass(frozen=True)
 class Diagnostic:

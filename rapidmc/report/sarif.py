@@ -18,7 +18,7 @@ from typing import Optional, Sequence
 from .. import __version__
 from ..diagnostics import Diagnostic
 from .counterexample import WIDTH, read_data, shorten
-from .results import PropertyResult
+from .results import PropertyResult, described_formula
 from ..check.result import UNKNOWN, VIOLATED
 from ..check.trace import Trace, TraceDescriber, TraceStep, build_trace
 
@@ -27,7 +27,7 @@ SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 
 def format_sarif(results: Sequence[PropertyResult], describer: TraceDescriber,
                  exit_code: int, warnings: Sequence[Diagnostic] = ()) -> str:
-    rules = [_rule(checked.name, checked.formula) for checked in results]
+    rules = [_rule(checked.name, described_formula(checked)) for checked in results]
     sarif_results = []
     for index, checked in enumerate(results):
         result = checked.result
@@ -115,7 +115,7 @@ def _violation(index: int, checked: PropertyResult, trace: Trace) -> dict:
     anchor = _anchor(trace, located)
     result = {
         "ruleId": checked.name, "ruleIndex": index, "level": "error",
-        "message": {"text": f"{checked.name} is violated: {checked.formula} "
+        "message": {"text": f"{checked.name} is violated: {described_formula(checked)} "
                             f"({_shape(trace)})"},
         "codeFlows": [{"threadFlows": [{"locations": [
             _flow_step(step, order, trace.loop_start) for order, step in

@@ -90,17 +90,20 @@ def routine_sections(entries) -> list[str]:
     return lines
 
 
+def components_text(rapid_type) -> str:
+    """A record type's components, ``pos trans, orient rot, ...`` (empty for other types)."""
+    if rapid_type.kind != RECORD:
+        return ""
+    return ", ".join(f"{c.type.name} {c.name}" for c in rapid_type.components)
+
+
 def type_section() -> list[str]:
     lines = ["", "## Data types", "", "| type | kind | components or base |", "|---|---|---|"]
     for key in sorted(PREDEFINED_TYPES):
         if key in HIDDEN_TYPES:
             continue
         rapid_type = PREDEFINED_TYPES[key]
-        if rapid_type.kind == RECORD:
-            detail = ", ".join(f"{c.type.name} {c.name}" for c in rapid_type.components)
-        else:
-            detail = ""
-        lines.append(f"| {rapid_type.name} | {rapid_type.kind} | {detail} |")
+        lines.append(f"| {rapid_type.name} | {rapid_type.kind} | {components_text(rapid_type)} |")
     for key in sorted(PREDEFINED_ALIASES):
         name, base = PREDEFINED_ALIASES[key]
         lines.append(f"| {name} | alias | {base.name} |")
