@@ -92,7 +92,10 @@ def test_operators_on_pos_and_orient():
     assert cross((1.0, 0.0, 0.0), (0.0, 1.0, 0.0)) == (0.0, 0.0, 1.0)
     compose, result = operator_for("*", types.ORIENT, types.ORIENT)
     assert compose(IDENTITY, IDENTITY) == IDENTITY and result is types.ORIENT
-    assert operator_for("/", types.POS, types.NUM) == (None, None)
+    divide, result = operator_for("/", types.POS, types.NUM)      # controllers load pos / num
+    assert divide((2.0, 4.0, 6.0), 2.0) == (1.0, 2.0, 3.0) and result is types.POS
+    assert operator_for("/", types.NUM, types.POS) == (None, None)
+    assert operator_for("/", types.POS, types.POS) == (None, None)
 
 
 @pytest.mark.parametrize("name, type_name, value", [

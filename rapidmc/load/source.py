@@ -65,7 +65,9 @@ def decode_source(data: bytes, path: str) -> str:
     if not data.strip():
         raise error(FILE_EMPTY, f"'{path}' is empty")
     if data[0] >= 0xF0:
-        raise error(FILE_ENCRYPTED, f"'{path}' is an encrypted module; it cannot be analysed")
+        raise error(FILE_ENCRYPTED, f"'{path}' is an encrypted module; it cannot be analysed",
+                    None, "to analyse the rest of the task, give its other modules as files "
+                    "and 'rapidmc stubs' a module declaring what the program uses from this one")
     if is_binary(data):
         raise error(FILE_BINARY, f"'{path}' is a binary file, not RAPID source text")
     if data.startswith(UTF8_BOM):

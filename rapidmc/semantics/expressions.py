@@ -396,13 +396,26 @@ class ExpressionCompiler:
         if op in ("AND", "OR", "XOR"):
             return self._logical(expr)
         hint = expected if is_numeric(expected) else None
-        left = self.value(expr.left, hint)
-        right = self.value(expr.right, hint)
+        left, right = self._operands(expr, hint)
         if op in ("=", "<>"):
             return self._equality(expr, left, right)
         if op in ("<", "<=", ">", ">="):
             return self._ordering(expr, left, right)
         return self._arithmetic(expr, left, right)
+
+    def _operands(self, expr: ast.Binary, hint) -> tuple[Compiled, Compiled]:
+        """Both operands; an aggregate beside a pos (or another record) in ``+``, ``-``, ``=``
+        or ``<>`` takes the other operand's type (``[10,10,30] + p.trans``, which controllers
+        load), as an aggregate assigned to data takes the data's."""
+        aggregate_left = isinstance(expr.left, ast.Aggregate)
+        if aggregate_left != isinstance(expr.right, ast.Aggregate) and \
+                expr.op in ("+", "-", "=", "<>"):
+            other = self.value(expr.right if aggregate_left else expr.left, hint)
+            shaped = other.type if isinstance(other.type, RapidType) and \
+                other.type.kind == RECORD else hint
+            aggregate = self.value(expr.left if aggregate_left else expr.right, shaped)
+            return (aggregate, other) if aggregate_left else (other, aggregate)
+        return self.value(expr.left, hint), self.value(expr.right, hint)
 
     def _logical(self, expr: ast.Binary) -> Compiled:
         left = self.condition(expr.left)

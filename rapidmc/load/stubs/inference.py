@@ -97,6 +97,8 @@ class Inference:
         # a missing function whose value is assigned to an untyped component of a missing
         # record: that record and the component's name
         self.component_feeds: dict[str, tuple[Missing, str]] = {}
+        # TEST statements whose subject and CASE values are all missing names: the keys
+        self.untyped_tests: list[tuple[str, ...]] = []
 
     # ------------------------------------------------------------ bookkeeping
     def note(self, name: ast.Name, kind: str, use: str) -> Missing:
@@ -150,7 +152,10 @@ class Inference:
             self.expect(item, TypeInfo(type_name), f"component {name} of {evidence}")
 
     def _field(self, expr: ast.Component, info: Optional[TypeInfo]) -> None:
-        """A component of data whose type is missing: the RECORD gets that component."""
+        """A component of data whose type is missing: the RECORD gets that component (an
+        ``anytype`` parameter, ErrWrite's or a logging routine's, tells no type)."""
+        if info is not None and info.key in UNTYPED:
+            info = None
         if isinstance(expr.base, ast.Component):
             self._nested_record(expr.base)
         base = self.type_of(expr.base)
@@ -523,6 +528,11 @@ class Inference:
         self.statements(statement.default or ())
         self._alternatives([value.name for case in statement.cases for value in case.values
                             if isinstance(value, ast.NameRef)])
+        names = [statement.subject, *values]
+        if subject is None and all(isinstance(n, ast.NameRef) for n in names):
+            keys = tuple(n.name.key for n in names)
+            if keys not in self.untyped_tests:
+                self.untyped_tests.append(keys)
 
     def condition(self, expr, keyword: str) -> None:
         self.expect(expr, BOOL, f"{keyword} condition")
@@ -709,6 +719,8 @@ def missing_names(modules: tuple[ast.Module, ...], signals=frozenset()) -> list[
         _settle(inference, count_uses=False)
     if _types_from_written(inference):      # aggregates assigned whole: types and sizes
         _settle(inference, count_uses=False)
+    if _types_of_tests(inference):          # TEST on missing names only: num assumed
+        _settle(inference, count_uses=False)
     _types_of_passed_values(inference)
     return sorted(inference.missing.values(),
                   key=lambda m: (m.first_use.file, m.first_use.line, m.first_use.column))
@@ -759,6 +771,9 @@ POSITIONAL_COMPONENT = re.compile(r"c[0-9]+")
 
 # A RAPID identifier (a procedure named by a string must be one).
 IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,31}")
+
+# Parameter types that say nothing about the argument's type.
+UNTYPED = ("ANYTYPE", "ANYNUM", "SWITCH")
 
 # Types whose values a declaration can show by a literal alone.
 ATOMIC = ("NUM", "DNUM", "STRING", "BOOL")
@@ -975,3 +990,18 @@ def _widen_invented(inference: Inference, missing: Missing, dims: list, parts: l
 
 
 _ATOMIC_NAMES = {"NUM": "num", "DNUM": "dnum", "STRING": "string", "BOOL": "bool"}
+
+
+def _types_of_tests(inference: Inference) -> bool:
+    """``TEST nResume CASE RESUME_KILL: ...`` where the subject and every CASE value are missing
+    names that nothing else types: num, the type TEST is mostly used with, assumed and said
+    so in their comments (the values then get 1, 2 ... as names compared in turn)."""
+    changed = False
+    for keys in inference.untyped_tests:
+        group = [inference.missing.get(key) for key in keys]
+        if any(m is None or m.kind != DATA or m.type is not None for m in group):
+            continue
+        for missing in group:
+            changed |= missing.learn(NUM, "TEST subject or CASE value, nothing else tells the "
+                                     "type: num assumed")
+    return changed

@@ -1,7 +1,7 @@
 MODULE controllers_load
   ! Tests: code that controllers load (issue 19) loads and runs: SearchL supervising a PERS
   ! bool (PersFlag) instead of a signal, UIMsgBox \Result into a PERS, tool0/wobj0/load0 given
-  ! to PERS parameters of the program's own routines, pos / num, ReadStr \Delim
+  ! to PERS parameters of the program's own routines, pos / num, an aggregate added to a pos, ReadStr \Delim
   ! \DiscardHeaders, StrFormat {n} \Argn, GetSysInfo \SWVersionName, menudata as a value
   ! record, EGMSetupUC \PathCorr \APTR and EGMRunPose \Offset (a pose), a world zone
   ! declared PERS with a value as in the manual's examples.
@@ -24,6 +24,8 @@ MODULE controllers_load
     Describe tool0, wobj0, load0;
     pMid := (pEnd.trans + pFound.trans) / 4;
     TPWrite "mid " \Pos:=pMid;
+    pMid := [10,10,30] + pMid;
+    TPWrite "above " \Pos:=pMid;
     Open "HOME:/recipe.txt", file \Read;
     TPWrite ReadStr(file \Delim:=",");
     TPWrite ReadStr(file \Delim:=",");
