@@ -21,7 +21,7 @@ from ..diagnostics import TRACE_REPLAY, SourceCache, error
 from ..load.stubs.module_text import STUBS_HEADER
 from ..semantics.program import (ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE,
                                 PROGRAM_NAMESPACE, Program)
-from ..semantics.types import ArrayType
+from ..semantics.types import POS, ArrayType
 from ..semantics.state import ENDED, FAILED, RUNNING, STOPPED, State
 from ..semantics.plain_step import is_plain
 from ..semantics.step import (OPERATOR_CHOICE, CheckConfig, ScriptChooser, initial_states,
@@ -241,7 +241,7 @@ class RapidDescriber:
                 view[f"{routine.name}.{name}"] = untyped_text(value)
         for signal in self.signals:
             view[f"signal {signal.name}"] = format_num(state.io[signal.index])
-        view["robot TCP"] = untyped_text(state.robot[0][0])
+        view["robot TCP"] = value_text(state.robot[0][0], POS)
         for slot, name, rapid_type in self.environment:
             view[name] = value_text(store[slot], rapid_type)
         if state.errno:
