@@ -420,3 +420,22 @@ def test_with_several_tasks_the_table_says_fairness_was_assumed(browser, tmp_pat
     notes = page.texts("#properties .fairness")
     assert notes and all(n.startswith("assuming weak fairness between the tasks main task")
                          for n in notes)
+
+
+def test_a_path_to_an_error_says_the_error_and_unreached_stretches_are_shaded(browser, tmp_path):
+    """tests/counterexamples/many_unreached: a division by zero at line 73 after a branch
+    (lines 9-71) and three routines that never run."""
+    require_browser()
+    path = tmp_path / "error.html"
+    done = rapidmc("check", "tests/counterexamples/many_unreached/prog.mod", "--quiet",
+                   "--html", str(path))
+    assert done.returncode == 1, done.stderr
+    page = Page(browser, path)
+    page.click("#property-0 button.show-trace")
+    assert page.find("#trace-shape").text == (
+        "3 steps to the error: uncaught ERR_DIVZERO: division by zero (step 3), reading "
+        "total = 0 (initial value).")
+    shaded = [int(n) for n in page.driver.execute_script(
+        "return [...document.querySelectorAll('.source .line.unreached')]"
+        ".map((line) => line.dataset.line)")]
+    assert set(range(9, 72)) <= set(shaded) and 73 not in shaded and 8 not in shaded

@@ -87,7 +87,7 @@ def test_booked_error_numbers_in_handler_lists_are_caught_by_their_handler():
     assert code == 0, err
     assert set(verdicts(out).values()) == {"HOLDS"}, out
     # the handler that lists the other booked number never runs
-    assert "booked_recovery.mod:26:5: warning: never reached" in err
+    assert "booked_recovery.mod:26:5: warning: lines 26-27 of Pick are never reached" in err
 
 
 def test_booked_numbers_are_raisable_and_the_same_in_every_load(tmp_path):

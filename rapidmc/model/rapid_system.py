@@ -21,7 +21,7 @@ from ..diagnostics import TRACE_REPLAY, SourceCache, error
 from ..load.stubs.module_text import STUB_MARKER
 from ..semantics.program import (ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE,
                                 PROGRAM_NAMESPACE, Program)
-from ..semantics.types import ArrayType
+from ..semantics.types import POS, ArrayType
 from ..semantics.library.tasks import SyncWait
 from ..semantics.state import ENDED, FAILED, RUNNING, STOPPED, State
 from ..semantics.plain_step import is_plain
@@ -280,12 +280,23 @@ class RapidDescriber:
                             if g.namespace != PROGRAM_NAMESPACE and _shown(g.type)]
         self._declared_in = {g.slot: g.span.file if g.span else None for g in program.globals}
         self._stub_data: Optional[frozenset] = None
+        self._texts: dict[int, tuple] = {}      # slot -> (value, its text), the latest
 
     def _qualified(self, data) -> str:
         """env.name for environment data, <task>.name for data of a further task."""
         if data.namespace == ENVIRONMENT_NAMESPACE:
             return f"env.{data.name}"
         return f"{self.program.task_names[data.namespace - FIRST_TASK_NAMESPACE + 1]}.{data.name}"
+
+    def _text(self, value, slot: int, rapid_type) -> str:
+        """``value_text`` of a global's value, kept while the state holds the very same value
+        (consecutive states share most of their data: big arrays are written out once)."""
+        kept = self._texts.get(slot)
+        if kept is not None and kept[0] is value:
+            return kept[1]
+        text = value_text(value, rapid_type)
+        self._texts[slot] = (value, text)
+        return text
 
     @property
     def stub_data(self) -> frozenset:
@@ -301,7 +312,7 @@ class RapidDescriber:
         view: dict[str, str] = {}
         store = state.store
         for slot, name, rapid_type in self.globals:
-            view[name] = value_text(store[slot], rapid_type)
+            view[name] = self._text(store[slot], slot, rapid_type)
         stacks = (state.frames,) + state.tasks
         for frame in (frame for stack in stacks for frame in stack):
             routine = self.program.routines[frame.routine]
@@ -314,9 +325,9 @@ class RapidDescriber:
                 view[f"{routine.name}.{name}"] = untyped_text(value)
         for signal in self.signals:
             view[f"signal {signal.name}"] = format_num(state.io[signal.index])
-        view["robot TCP"] = untyped_text(state.robot[0][0])
+        view["robot TCP"] = value_text(state.robot[0][0], POS)
         for slot, name, rapid_type in self.environment:
-            view[name] = value_text(store[slot], rapid_type)
+            view[name] = self._text(store[slot], slot, rapid_type)
         if state.errno:
             view["ERRNO"] = errno_name(int(state.errno))
         if state.status == ENDED:
