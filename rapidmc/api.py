@@ -1,8 +1,18 @@
 """rapidmc as a Python library: load a RAPID program, state properties, check, read results.
 
-The ``rapidmc check`` command is a thin layer over this module (it turns
-options into ``CheckOptions`` and results into text, JSON, SARIF or JUnit),
-so a test written with it sees exactly what the command line sees.
+One check, stage by stage (``rapidmc check`` is exactly this, with its options
+from the command line and its report printed by ``rapidmc.report``)::
+
+    load      load_program(files, env)            -> Program      syntax, semantics, load
+    model     prepare(program, properties, opts)  -> Model        automata, inputs, reduction plan
+    search    check_model(model): the built-in    -> results      check (one search each; later
+              checks, then every property                         ones walk the graph the first kept)
+    findings  what the complete searches showed   -> warnings     unreached code, vacuity, fixed
+                                                                   readings, assumed input domains
+    report    CheckReport(results, warnings)      -> text, JSON, SARIF, JUnit, HTML (report/)
+
+Each stage takes what the one before returns and nothing else; none calls back
+into an earlier one.
 
 Example (see docs/api.md)::
 
@@ -23,37 +33,36 @@ from types import SimpleNamespace
 from typing import Callable, Iterable, Mapping, Optional, Sequence
 
 from . import ast
-from .check import HOLDS, UNKNOWN, VIOLATED, Progress, SearchResult, check_property, find_reachable
+from .check import HOLDS, UNKNOWN, VIOLATED, Progress, SearchResult, find_reachable
 from .check.budget import DEFAULT_MAX_STATES
+from .check.trace import Trace, build_trace
+from .diagnostics import (AUTOMATON, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED,
+                          TRACE_REPLAY, USAGE, Diagnostic, SourceCache, error)
+from .diagnostics.quoting import one_line, quoted
+from .findings.assumptions import assumptions, for_verdict
+from .findings.explored import ExploredFacts
+from .findings.fixed_readings import fixed_readings
 from .load.backup import link_options, load_tasks, resolve_program_files
 from .load.shared_data import pers_warnings
-from .check.trace import Trace, build_trace
-from .diagnostics import (AUTOMATON, DOMAIN, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED,
-                          TRACE_REPLAY, USAGE, Diagnostic, SourceCache, UserError, error)
-from .findings.explored import ExploredFacts
 from .ltl import read_hoa, to_buchi
 from .ltl.syntax import Not
 from .model import reduction
-from .report.results import PropertyResult
-from .load.input_domains import Assumed, default_domains
-from .model.rapid_system import RapidDescriber, RapidSystem, replay, with_final_loop
-from .findings.fixed_readings import fixed_readings
 from .model.fairness import TaskFairness, assumes_fairness, fair_or_plain_search
+from .model.inputs import free_input_domains, observed_inputs
 from .model.waiting import waits_forever
 from .model.properties import AtomCompiler, Property, check_unique, parse_property, read_property_file
-from .semantics.configured_signals import _walk_statements
+from .model.rapid_system import RapidDescriber, RapidSystem, end_at_error, replay
+from .report.results import PropertyResult
 from .semantics.link import build
-from .semantics.program import PROGRAM_NAMESPACE, Program
+from .semantics.program import Program
 from .semantics.step import CheckConfig, EnvironmentFault
 from .syntax import load_program as _parse_files
-from .diagnostics.quoting import one_line, quoted
 
 __all__ = ["CheckOptions", "CheckReport", "Model", "check", "check_model", "load_program", "prepare",
            "property_from_text", "read_properties", "HOLDS", "VIOLATED", "UNKNOWN"]
 
 BUILTIN_RUNTIME = "no_runtime_error"
 BUILTIN_DEADLOCK = "no_deadlock"
-INTERRUPT_ORDERS = {"ISIGNALDI", "ISIGNALDO", "ISIGNALAI", "ISIGNALAO", "ISIGNALGI", "ISIGNALGO"}
 
 
 @dataclass(frozen=True)
@@ -143,7 +152,7 @@ def prepare(program: Program, properties: Sequence[Property],
     jobs = [_automaton(prop, atoms, options) for prop in properties]
     domains, assumed = free_input_domains(program, atoms, options.input_domains)
     config = CheckConfig(program, options.tp_answers, options.fk_answers, domains,
-                         observed=_observed_inputs(program, atoms))
+                         observed=observed_inputs(program, atoms))
     if options.socket_messages:
         config.socket_messages = tuple(options.socket_messages)
     config.socket_closures = options.socket_closures
@@ -187,74 +196,6 @@ def _atom_span(prop: Property, atom: str) -> ast.Span:
             return ast.Span(prop.file, prop.line, column + 1, prop.line,
                             column + 1 + len(written))
     return ast.Span(prop.file, prop.line, 1)
-
-
-def _observed_inputs(program: Program, atoms: AtomCompiler):
-    """The free inputs whose values states must keep (None: all of them).
-
-    Inputs that no atom reads are chosen when the program reads them; an atom
-    that reads signal data (bound at run time) or an interrupt ordered on a
-    signal makes every input observed.
-    """
-    if atoms.observes_signal_data:
-        return None
-    for routine in program.routines:
-        if routine.namespace != PROGRAM_NAMESPACE or routine.ast is None:
-            continue
-        for node in _walk_statements(routine.ast.body):
-            if isinstance(node, ast.ProcedureCall) and node.name.key in INTERRUPT_ORDERS:
-                return None
-    return set(atoms.observed)
-
-
-def _read_inputs(program: Program, atoms: AtomCompiler) -> Optional[frozenset]:
-    """Indices of the signals the program names or the properties read (None: any may
-    be read).  An analog or group input of the I/O configuration that nothing reads
-    needs no domain (survey round 5: a backup's EIO.cfg lists more inputs than the task
-    uses)."""
-    if program.named_signals is None or atoms.observes_signal_data:
-        return None
-    return program.named_signals | frozenset(atoms.observed)
-
-
-def free_input_domains(program: Program, atoms: AtomCompiler,
-                       explicit: Mapping[str, tuple] = {}) -> tuple[dict, tuple]:
-    """Signal key -> values for the free analog and group inputs (``explicit`` ones as given,
-    the others' defaults from input_domains), and the defaults (``Assumed``) chosen.
-
-    ``atoms`` must have compiled the properties' atoms (it knows the signals they read).
-    Raises RMC502 for an input that needs a domain and has no sound default.
-    """
-    domains = {name.upper(): tuple(values) for name, values in explicit.items()}
-    assumed = _check_domains(program, domains, _read_inputs(program, atoms), atoms)
-    domains.update({a.signal.key: a.values for a in assumed})
-    return domains, assumed
-
-
-def _check_domains(program: Program, domains: dict, read: Optional[frozenset],
-                   atoms: AtomCompiler) -> tuple:
-    """The default domains of the free inputs that need one and have no --input-domain
-    (input_domains); RMC502 for those without a sound default, saying why."""
-    for key in domains:
-        signal = program.signal(key)
-        if signal is None:
-            raise error(USAGE, f"--input-domain names unknown signal {quoted(key)}")
-        if signal.kind not in ("AI", "GI"):
-            raise error(USAGE, f"--input-domain is for analog and group inputs; {signal.name} is "
-                        f"a {signal.kind}")
-    needed = [signal for signal in program.signals
-              if signal.kind in ("AI", "GI") and not signal.driven and signal.key not in domains
-              and (read is None or signal.index in read)]
-    atom_reads = None if atoms.observes_signal_data else frozenset(atoms.observed)
-    defaults = default_domains(program, needed, atom_reads)
-    missing = [Diagnostic(DOMAIN, f"free {signal.kind} input '{signal.name}' needs a finite set "
-                          f"of values: give --input-domain {signal.name}=v1,v2,... (or drive it "
-                          "from an environment model)", signal.span,
-                          notes=(f"no default: {defaults[signal.key].reason}",))
-               for signal in needed if not isinstance(defaults[signal.key], Assumed)]
-    if missing:                     # every input that lacks a domain at once, not one per run
-        raise UserError(missing)
-    return tuple(defaults[signal.key] for signal in needed)
 
 
 # --- checking -------------------------------------------------------------------------
@@ -303,41 +244,69 @@ def check(program: Program, properties: Iterable[Property] = (),
 
 def check_model(model: Model, progress: ProgressFactory = lambda: None) -> CheckReport:
     """``check`` on a prepared model; ``progress()`` gives each search its progress line."""
-    system, options = model.system, model.options
-    bounds = dict(max_states=options.max_states, max_seconds=options.max_seconds,
-                  storage=options.storage)
-    facts = ExploredFacts(model.program, [prop.formula for prop in model.properties], model.atoms)
-    # Coverage and vacuity watch the run-time error search (merged steps name every line
-    # they run); --compact / --bitstate searches are never complete, so they watch nothing.
-    watching = options.storage is None or not model.plan.merge_points
-    stuck = _StuckWatch(system, facts if watching else None)
-    # the whole state graph, kept by whichever complete search explored it first
-    graphs: list = []
-    keep = dict(explored=graphs.append, valuations=[valuation for _, _, valuation in model.jobs]) \
-        if options.reuse_explored and model.jobs else {}
-    results = []
+    searches = _Searches(model, progress)
     try:
-        results.append(_builtin(system, BUILTIN_RUNTIME, "no reachable uncaught run-time error",
-                                system.failed, dict(bounds, **keep), progress(), stuck))
-        if watching:
-            facts.finish(system, results[0].result, progress=progress(), **bounds, **keep)
-        results.append(_deadlock(system, results[0].result, stuck, bounds, progress))
-        fairness = TaskFairness(system) if assumes_fairness(model) else None
-        searches = dict(bounds, explored=graphs[0]) if graphs else bounds
-        for prop, buchi, valuation in model.jobs:
-            result = fair_or_plain_search(system, buchi, valuation, fairness, progress(),
-                                          searches)
-            _replayed(system, result)
-            vacuous = facts.vacuous(prop.formula) if result.verdict == HOLDS else None
-            results.append(PropertyResult(prop.name, prop.text, result, vacuous,
-                                          fairness.names if fairness is not None else ()))
+        results = searches.builtin_checks() + [searches.property(*job) for job in model.jobs]
     except EnvironmentFault as exc:
         raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
-    warnings = list(model.program.load_notes) + list(model.plan.notes) + [
+    resting_on = assumptions(model.program)
+    results = [replace(r, assumes=for_verdict(resting_on, r.result, model.describer))
+               for r in results]
+    return CheckReport(results, _findings(model, searches.facts), model.describer)
+
+
+def _findings(model: Model, facts: ExploredFacts) -> list[Diagnostic]:
+    """What the check assumed or saw besides verdicts, in source order after the domain notes."""
+    return list(model.program.load_notes) + list(model.plan.notes) + [
         assumed.note() for assumed in model.assumed] + sorted(
         fixed_readings(model.program) + facts.warnings(),
         key=lambda d: (d.span.file, d.span.line, d.span.column))
-    return CheckReport(results, warnings, model.describer)
+
+
+class _Searches:
+    """The searches of one check, sharing what the first complete one explored.
+
+    The run-time error search comes first: when it is complete it has seen every
+    reachable state, so it answers the deadlock check, feeds coverage and vacuity
+    (``facts``), and keeps the state graph that the property searches walk.
+    """
+
+    def __init__(self, model: Model, progress: ProgressFactory):
+        options = model.options
+        self.model, self.progress = model, progress
+        self.bounds = dict(max_states=options.max_states, max_seconds=options.max_seconds,
+                           storage=options.storage)
+        self.facts = ExploredFacts(model.program, [prop.formula for prop in model.properties],
+                                   model.atoms)
+        # Coverage and vacuity watch the run-time error search (merged steps name every line
+        # they run); --compact / --bitstate searches are never complete, so they watch nothing.
+        self.watching = options.storage is None or not model.plan.merge_points
+        self.graphs: list = []    # the whole state graph, kept by the first complete search
+        self.keep = dict(explored=self.graphs.append,
+                         valuations=[valuation for _, _, valuation in model.jobs]) \
+            if options.reuse_explored and model.jobs else {}
+        self.fairness = TaskFairness(model.system) if assumes_fairness(model) else None
+
+    def builtin_checks(self) -> list[PropertyResult]:
+        """No reachable uncaught run-time error; no state where the program waits forever."""
+        system = self.model.system
+        stuck = _StuckWatch(system, self.facts if self.watching else None)
+        runtime = _builtin(system, BUILTIN_RUNTIME, "no reachable uncaught run-time error",
+                           system.failed, dict(self.bounds, **self.keep), self.progress(), stuck)
+        if self.watching:
+            self.facts.finish(system, runtime.result, progress=self.progress(), **self.bounds,
+                              **self.keep)
+        return [runtime, _deadlock(system, runtime.result, stuck, self.bounds, self.progress)]
+
+    def property(self, prop: Property, buchi, valuation) -> PropertyResult:
+        """One LTL property: the product with its negation's automaton, empty or a lasso."""
+        searches = dict(self.bounds, explored=self.graphs[0]) if self.graphs else self.bounds
+        result = fair_or_plain_search(self.model.system, buchi, valuation, self.fairness,
+                                      self.progress(), searches)
+        _replayed(self.model.system, result)
+        vacuous = self.facts.vacuous(prop.formula) if result.verdict == HOLDS else None
+        return PropertyResult(prop.name, prop.text, result, vacuous,
+                              self.fairness.names if self.fairness is not None else ())
 
 
 class _StuckWatch:
@@ -404,7 +373,7 @@ def _builtin(system: RapidSystem, name: str, description: str, predicate, bounds
              progress: Optional[Progress], observe=None) -> PropertyResult:
     result = find_reachable(system, predicate, progress=progress, observe=observe, **bounds)
     if result.verdict == VIOLATED:
-        with_final_loop(system, result)
+        end_at_error(system, result)
         _replayed(system, result)
     return PropertyResult(name, description, result)
 

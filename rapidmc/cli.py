@@ -42,12 +42,23 @@ class _ArgumentParser(argparse.ArgumentParser):
         raise UserError([Diagnostic(USAGE, f"{one_line(message)} (see '{self.prog} --help')")])
 
 
+class _VersionAction(argparse.Action):
+    """``--version``: the version and the search engine (``check.native``, imported only
+    here: the other commands need not load the search engine)."""
+
+    def __call__(self, parser, namespace, values, option_string=None) -> None:
+        from .check.native import description
+        print(f"rapidmc {__version__} ({description()})")
+        parser.exit()
+
+
 def build_parser(command: Optional[str] = None) -> argparse.ArgumentParser:
     """The parser of every subcommand; with ``command``, only that one's arguments (the
     others' modules, some slow to import, are not loaded: their parsers take no options)."""
     parser = _ArgumentParser(prog="rapidmc", description="rapidmc: an LTL model checker and "
                              "reference interpreter for ABB RAPID robot programs")
-    parser.add_argument("--version", action="version", version=f"rapidmc {__version__}")
+    parser.add_argument("--version", action=_VersionAction, nargs=0,
+                        help="show the version and the search engine, and exit")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_ArgumentParser)
     for name, help_text in SUBCOMMANDS.items():
         if command is not None and name != command:

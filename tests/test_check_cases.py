@@ -41,6 +41,7 @@ from rapidmc.cli import main
 
 CASES_DIR = Path(__file__).resolve().parent / "check"
 VERDICTS = ("HOLDS", "VIOLATED", "UNKNOWN")
+SAFETY = ("no_runtime_error", "no_deadlock")     # built-in checks: a path to the error
 PROGRAM = "prog.mod"
 
 
@@ -152,11 +153,19 @@ def run_check(case: Case, monkeypatch) -> tuple[int, str, str]:
 # --- what a result must look like ---------------------------------------------
 
 def assert_real_lasso(name: str, trace: Optional[dict], folder: Path) -> None:
-    """A violation's trace is a lasso whose located steps are real lines of the case's
-    files (prog.mod, or a further task's module passed with --add-task)."""
+    """A violation's trace is a lasso (a path ending at the error for the built-in safety
+    checks) whose located steps are real lines of the case's files (prog.mod, or a further
+    task's module passed with --add-task)."""
     assert trace is not None, f"{name}: VIOLATED without a trace"
-    assert trace["cycle"], f"{name}: the trace has an empty cycle (not a lasso)"
-    assert trace["loop_start"] == trace["cycle"][0]["index"]
+    if name in SAFETY:
+        # a safety violation ends at the error, which the trace names with the error's step
+        assert not trace["cycle"] and trace["closing"] is None and trace["loop_start"] is None
+        assert trace["error"]["step"] == trace["prefix"][-1]["index"], name
+        assert trace["prefix"][-1]["location"] is not None, f"{name}: the error has no line"
+    else:
+        assert trace["cycle"], f"{name}: the trace has an empty cycle (not a lasso)"
+        assert trace["loop_start"] == trace["cycle"][0]["index"]
+        assert trace["error"] is None
     steps = trace["prefix"] + trace["cycle"] + [trace["closing"]]
     located = [step for step in steps if step is not None and step["location"] is not None]
     assert located, f"{name}: no step of the trace names a source line"

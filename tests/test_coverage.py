@@ -1,8 +1,9 @@
 """Coverage: after a complete search, statements no input reaches are warnings (RMC701).
 
 Data-driven on tests/check/: a case's ``unreached`` file lists the lines
-expected to be reported (a routine that never runs is reported once, at
-its declaration); every other case must report none.  The case studies pin
+(``13``) and stretches of lines (``13-14``: one warning) expected to be
+reported (a routine that never runs is reported once, at its declaration);
+every other case must report none.  The case studies pin
 the one dead statement of sorter B, and the three output formats are
 checked to carry the same warnings.
 """
@@ -28,9 +29,15 @@ def test_unreached_lines_of_every_check_case(name, monkeypatch):
     code, document = report_of(case, monkeypatch)
     warnings = [w for w in document["warnings"] if w["code"] != "RMC515"]   # domain notes
     assert all(w["code"] == "RMC701" and w["location"]["file"] == "prog.mod" for w in warnings)
-    expected = [int(line) for line in _data_lines(case.folder / "unreached")]
-    assert [w["location"]["line"] for w in warnings] == expected
+    expected = [_stretch(line) for line in _data_lines(case.folder / "unreached")]
+    assert [(w["location"]["line"], w["location"]["end_line"]) for w in warnings] == expected
     assert code == case.exit_code            # warnings never change the exit code
+
+
+def _stretch(text: str) -> tuple[int, int]:
+    """``13`` (one statement's line) or ``13-14`` (a stretch of lines): (first, last)."""
+    first, _, last = text.partition("-")
+    return int(first), int(last or first)
 
 
 def test_no_warnings_after_a_bounded_search(monkeypatch):
@@ -112,7 +119,10 @@ def test_an_unreached_statement_is_never_about_to_run(case, monkeypatch):
     program = api.load_program(["prog.mod"], env=env)
     report = api.check(program)
     routines = {r.span.line: r for r in program.routines if r.namespace == 0}
-    reported = {w.span.line for w in report.warnings if w.code.code == "RMC701"}
+    stretches = [w.span for w in report.warnings if w.code.code == "RMC701"]
+    lines = set().union(*map(statement_lines, routines.values()))
+    reported = {w.line for w in stretches} | {line for w in stretches for line in lines
+                                              if w.line <= line <= w.end_line}
     dead = set(reported)
     for line in reported & set(routines):
         dead |= statement_lines(routines[line])

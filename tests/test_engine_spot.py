@@ -52,7 +52,7 @@ from tool_requirements import require_tool
 from rapidmc import ast
 from rapidmc.check import HOLDS, UNKNOWN, VIOLATED, check_property
 from rapidmc.check import store
-from rapidmc.api import _observed_inputs, free_input_domains
+from rapidmc.model.inputs import free_input_domains, observed_inputs
 from rapidmc.ltl import BACKENDS, Buchi, Formula, atoms_of, parse_formula, read_hoa, to_buchi
 from rapidmc.ltl.lasso import holds_on_lasso
 from rapidmc.ltl.spot_backend import from_spot, spot_available, to_spot
@@ -116,7 +116,7 @@ def rapid_subject(name: str, program_ast: ast.Program, atoms, environment=None) 
     compiler.valuation(atoms, {})          # notes the signals the atoms read
     domains, _ = free_input_domains(program, compiler)     # defaults of free GI/AI inputs
     config = CheckConfig(program, input_domains=domains,
-                         observed=_observed_inputs(program, compiler))
+                         observed=observed_inputs(program, compiler))
     system = RapidSystem(program, config)
     return Subject(name, system, lambda some: compiler.valuation(some, {}), atoms,
                    lambda result: replay(system, result))

@@ -16,6 +16,10 @@ OUTCOMES = [
     ("button Cancel", '"nButton = resCancel"'),
     ("file exists", '"nFile = 1"'), ("no file", '"nFile = 2"'),
     ("no part", '"nParts = 0"'), ("two parts", '"nParts = 2"'),
+    ("search on a PERS bool hit", '"nFlagSearch = 1"'),
+    ("search on a PERS bool miss", '"nFlagSearch = 2"'),
+    ("CalcJointT reached", '"nReach = 1"'),
+    ("CalcJointT ERR_ROBLIMIT in \\ErrorNumber", '"nReach = 2"'),
 ]
 
 

@@ -72,7 +72,7 @@ def test_end_of_file_points_after_the_last_line():
 
 def test_placeholder_message_names_what_is_missing():
     diagnostic = first_diagnostic(BAD / "placeholder_declaration.mod")
-    assert "<DDN>" in diagnostic.message and "data declaration" in diagnostic.message
+    assert "<ID>" in diagnostic.message and "an identifier" in diagnostic.message
 
 
 def message_cases() -> list:

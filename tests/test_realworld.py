@@ -251,10 +251,14 @@ def test_user_module_data_is_not_in_programs_that_do_not_use_it(tmp_path):
         "CLOCK1", "REG1", "REG2", "REG3"]
 
 
-def test_kinematics_stop_with_unsupported_only_when_reached():
+def test_calc_joint_t_answers_the_robot_axes_the_robot_has_and_says_so():
+    """Issue 19: CalcJointT no longer stops the run; without kinematics it answers the robot
+    axes of the modelled robot (0 at the start), an assumption RMC702 names when checking."""
     code, out, err = cli(["run", str(SURVEY2 / "kinematics_server.mod")], "12\n")
-    assert code == 2 and "[RMC305]" in err and "CalcJointT needs the robot's kinematic model" in err
-    assert out.splitlines() == ["command"]
+    assert code == 0, err
+    assert out.splitlines() == ["command", "ik 0"]
+    code, out, err = cli(["check", str(SURVEY2 / "kinematics_server.mod")])
+    assert "CalcJointT reads a fixed value when checking" in err and "[RMC702]" in err
 
 
 def test_modules_of_two_tasks_report_the_duplicate_entry_clearly():

@@ -126,7 +126,7 @@ def test_deadlock_note_and_stuck_step():
 
 STEP_KEYS = ["index", "kind", "location", "source", "inputs", "changes", "output"]
 STATS_KEYS = ["product_states", "model_states", "transitions", "max_depth", "seconds",
-              "states_per_second", "deadlocks", "bytes_per_state"]
+              "states_per_second", "deadlocks", "bytes_per_state", "engine"]
 
 
 def test_json_follows_the_documented_schema():
@@ -138,13 +138,14 @@ def test_json_follows_the_documented_schema():
     assert [p["verdict"] for p in properties] == ["HOLDS", "VIOLATED", "UNKNOWN", "VIOLATED"]
     for entry in properties:
         assert list(entry) == ["name", "formula", "verdict", "reason", "stats", "trace",
-                               "vacuous", "fair_tasks"]
+                               "vacuous", "fair_tasks", "assumes"]
         assert entry["fair_tasks"] is None        # one task: no fairness assumed
         assert list(entry["stats"]) == STATS_KEYS
         assert (entry["trace"] is None) == (entry["verdict"] != "VIOLATED")
     assert properties[2]["reason"] == "state limit 2 reached"
     trace = properties[1]["trace"]
-    assert list(trace) == ["prefix", "cycle", "closing", "loop_start"]
+    assert list(trace) == ["prefix", "cycle", "closing", "loop_start", "error"]
+    assert trace["error"] is None                 # a loop: no error ends it
     steps = trace["prefix"] + trace["cycle"] + [trace["closing"]]
     assert all(list(step) == STEP_KEYS for step in steps)
     assert [step["index"] for step in steps] == [1, 2, 3, 4, 5, 6]

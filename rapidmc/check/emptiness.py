@@ -26,6 +26,7 @@ from array import array
 
 from .budget import SearchBudget
 from .lasso import build_lasso
+from .native import NATIVE, _native, native_search
 from .product import Product
 from .result import HOLDS, UNKNOWN, VIOLATED, SearchResult, SearchStats
 
@@ -34,7 +35,8 @@ UNSEEN = array("i", [-1])
 
 def search_accepting_cycle(product: Product, budget: SearchBudget) -> SearchResult:
     """HOLDS if no accepting cycle is reachable, VIOLATED with a lasso, or UNKNOWN."""
-    search = _CycleSearch(product, budget)
+    search = _NativeCycleSearch(product, budget) if native_search() else \
+        _CycleSearch(product, budget)
     found = search.run()
     stats = search.stats()
     stats.seconds = budget.finish()
@@ -185,3 +187,50 @@ class _Explored:
 
     def __contains__(self, key: int) -> bool:
         return key < len(self.number) and self.number[key] >= 0
+
+
+class _NativeCycleSearch:
+    """``_CycleSearch`` with its loop and arrays in the compiled core (``_native.CycleSearch``):
+    the same states in the same order, so the same verdict, lasso and counts."""
+
+    def __init__(self, product: Product, budget: SearchBudget):
+        self.product = product
+        self.budget = budget
+        self.search = _native.CycleSearch(product.successor_keys, bytes(product.accepting),
+                                          product.width, budget)
+
+    def stats(self) -> SearchStats:
+        counts = self.search.counts()
+        stored = counts["stored"]
+        memory = self.product.store.memory_bytes() + counts["bytes"]
+        return SearchStats(product_states=stored, model_states=len(self.product.store),
+                           transitions=counts["transitions"], max_depth=counts["max_depth"],
+                           deadlocks=len(self.product.store.deadlocked),
+                           bytes_per_state=memory / stored if stored else 0.0,
+                           engine=NATIVE)
+
+    def explored(self) -> "_NativeExplored":
+        return _NativeExplored(self.search)
+
+    def run(self):
+        """None when no accepting cycle was found; else (DFS path keys, component keys)."""
+        search = self.search
+        for key in self.product.initial_keys():
+            if search.contains_key(key):
+                continue
+            if not self.budget.may_store(search.counts()["stored"]):
+                return None
+            found = search.explore_from(key)
+            if found is not None or self.budget.reason is not None:
+                return found
+        return None
+
+
+class _NativeExplored:
+    """``key in explored`` for a native search."""
+
+    def __init__(self, search):
+        self.contains_key = search.contains_key
+
+    def __contains__(self, key: int) -> bool:
+        return self.contains_key(key)

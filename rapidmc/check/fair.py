@@ -31,6 +31,7 @@ from typing import Callable, Hashable, Optional, Protocol
 
 from ..ltl.graph import pop_component
 from .budget import DEFAULT_MAX_STATES, SearchBudget
+from .native import engine_of
 from .lasso import LabelledKey, shortest_entry, shortest_path
 from .product import Product
 from .progress import Progress
@@ -91,7 +92,8 @@ class _ComponentSearch:
     def stats(self) -> SearchStats:
         return SearchStats(product_states=len(self.number), model_states=len(self.product.store),
                            transitions=self.transitions, max_depth=self.max_depth,
-                           deadlocks=len(self.product.store.deadlocked))
+                           deadlocks=len(self.product.store.deadlocked),
+                           engine=engine_of(getattr(self.product.store, "states", None)))
 
     def run(self):
         """None, or (DFS path to the component, its keys, a witness per constraint)."""

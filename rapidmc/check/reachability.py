@@ -38,7 +38,7 @@ from .transition_system import TransitionSystem, Valuation, as_sequence
 from .progress import Progress
 from .graph_store import ExploredGraph
 from .hashed import hashed_reachable, visited_sets
-from .states import StateTable
+from .native import NATIVE, _native, engine_of, state_table
 from .store import unique
 from .result import (HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep,
                      SearchResult, SearchStats)
@@ -100,15 +100,16 @@ class _BreadthFirst:
         self.predicate = predicate
         self.budget = budget
         self.deadlock_is_target = deadlock_is_target
-        self.states = StateTable(system)
+        self.states = state_table(system)
         self.graph = ExploredGraph(system, self.states, record) if record is not None else None
         self.parent = array("i")          # by id; -1 for initial states
         self.depth = array("i")
+        self.deepest = -1                 # the last state's depth, stored by the native loop
         self.transitions = 0
         self.deadlocks = 0
 
     def stats(self) -> SearchStats:
-        depth = max(self.depth) + 1 if self.depth else 0
+        depth = max(max(self.depth, default=-1), self.deepest) + 1
         stored = len(self.states)
         table = self.states.memory_bytes()
         memory = table + len(self.parent) * self.parent.itemsize + \
@@ -119,7 +120,8 @@ class _BreadthFirst:
         return SearchStats(product_states=stored, model_states=stored,
                            transitions=self.transitions, max_depth=depth,
                            deadlocks=self.deadlocks,
-                           bytes_per_state=memory / stored if stored else 0.0)
+                           bytes_per_state=memory / stored if stored else 0.0,
+                           engine=engine_of(self.states))
 
     def _store(self, state: Hashable, parent: int) -> tuple[int, bool]:
         """The state's id and whether it is new; id -1 when new and the budget is spent."""
@@ -167,7 +169,10 @@ class _BreadthFirst:
         record = self.graph.adder() if self.graph is not None else None
         stored = len(table)
         frontier = 0
+        native = engine_of(table) == NATIVE
         while frontier < stored and budget.reason is None:
+            if unlabelled and native:     # the same loop in the compiled core from here on
+                return self._expand_natively(frontier, record)
             state = table[frontier]
             if unlabelled:
                 successors = targets_of(state)
@@ -206,6 +211,17 @@ class _BreadthFirst:
                 record(state, ids)
             frontier += 1
         return None
+
+    def _expand_natively(self, frontier: int, record) -> Optional[int]:
+        """``_expand_all``'s unlabelled loop from ``frontier`` on, in the compiled core
+        (``_native.breadth_first``): the same states, ids, calls and counts; the depths of
+        the states it stores are not kept (they grow level by level: only the last one's)."""
+        observe = self.observe.states if self.observe is not None else None
+        target, self.transitions, self.deadlocks, self.deepest = _native.breadth_first(
+            self.states, frontier, self.system.successor_states, observe, self.predicate,
+            self.parent, self.depth, self.budget, record, self.deadlock_is_target,
+            self.transitions, self.deadlocks)
+        return target if target >= 0 else None
 
     def path_to(self, state_id: int) -> list[LassoStep]:
         """The steps from an initial state to ``state_id`` with their labels."""

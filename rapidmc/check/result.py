@@ -5,7 +5,9 @@ violation gives ``UNKNOWN`` with the bound as ``reason`` (never ``HOLDS``).
 A ``VIOLATED`` result carries a lasso: ``prefix`` leads from an initial
 state to ``cycle[0]``; the successor of ``cycle[-1]`` is ``cycle[0]``,
 reached by the transition labelled ``closing_label``.  Reachability
-results have an empty cycle and ``closing_label`` None.
+results have an empty cycle and ``closing_label`` None; their ``ending`` may
+say, in words, what is wrong in the last state (an uncaught error, a wait
+that never ends).
 """
 from __future__ import annotations
 
@@ -40,6 +42,7 @@ class SearchStats:
     seconds: float = 0.0
     deadlocks: int = 0
     bytes_per_state: float = 0.0     # memory of the stored states and search structures
+    engine: str = "python"           # "native" when the compiled core ran it (check.native)
 
     @property
     def states_per_second(self) -> float:
@@ -55,6 +58,7 @@ class SearchStats:
             "states_per_second": round(self.states_per_second),
             "deadlocks": self.deadlocks,
             "bytes_per_state": round(self.bytes_per_state),
+            "engine": self.engine,
         }
 
 
@@ -68,3 +72,4 @@ class SearchResult:
     cycle: list[LassoStep] = field(default_factory=list)
     stats: SearchStats = field(default_factory=SearchStats)
     closing_label: Optional[Hashable] = None
+    ending: Optional[str] = None      # a path's last state, in words (safety violations)

@@ -204,18 +204,21 @@ class StateTable:
         if self._split is None:
             return sys.getsizeof(self._whole) + sys.getsizeof(self._whole_states) + \
                 sum(_size(state) for state in self._whole_states)
+        return (self._keys.buffer_info()[1] * self._keys.itemsize +
+                self._slots.buffer_info()[1] * self._slots.itemsize +
+                sys.getsizeof(self._heads) + sum(sys.getsizeof(h) for h in self._heads) +
+                sys.getsizeof(self._head_values) + sum(_size(h) for h in self._head_values) +
+                self.component_bytes())
+
+    def component_bytes(self) -> int:
+        """Bytes of the stored components and the tables that intern them."""
         tables = sum(sys.getsizeof(t) + sys.getsizeof(v)
                      for t, v in zip(self._components, self._values)) + \
             sum(sys.getsizeof(i) for i in self._identity) + sys.getsizeof(self._scalars) + \
             sys.getsizeof(self._tails) + sum(_size(t) for t in self._tail_values) + \
             sys.getsizeof(self._tail_parts) + sum(sys.getsizeof(t) for t in self._tail_parts) + \
-            sys.getsizeof(self._heads) + sum(sys.getsizeof(h) for h in self._heads) + \
-            sys.getsizeof(self._head_values) + sum(_size(h) for h in self._head_values) + \
             sum(sys.getsizeof(x) for x in self._scalars)
-        components = sum(_component_size(value) for values in self._values for value in values)
-        return (self._keys.buffer_info()[1] * self._keys.itemsize +
-                self._slots.buffer_info()[1] * self._slots.itemsize +
-                tables + components)
+        return tables + sum(_component_size(value) for values in self._values for value in values)
 
 
 def _component_size(part) -> int:

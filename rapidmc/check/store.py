@@ -26,7 +26,7 @@ from typing import Hashable, Sequence
 from array import array
 
 from .transition_system import Label, TransitionSystem, Valuation, as_sequence, labelled_successors
-from .states import StateTable
+from .native import state_table
 
 SUCCESSOR_CACHE_SIZE = 1 << 16
 CACHE_TRIAL = 1 << 12        # expansions with the successor cache, then a review
@@ -43,7 +43,7 @@ class ModelStore:
                  keep_new: int = FRESH_STATES):
         self.system = system
         self.valuation = valuation
-        self.states = StateTable(system)
+        self.states = state_table(system)
         self._known = None if self.states.collapsed else self.states.known_ids.get
         self.valuations = array(VALUATION_TYPES[0])    # the narrowest that holds them
         self.deadlocked: set[int] = set()

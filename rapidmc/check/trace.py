@@ -4,7 +4,10 @@ The RAPID specifics come from a ``TraceDescriber`` the caller implements:
 what every global data object, signal and robot item looks like in a
 state, and where a transition is in the source, what it chose and wrote.
 This module only compares consecutive states so that each step lists
-only what changed (the first step lists every value once).
+only what changed (the first step lists every value once).  A value the
+describer gives as a ``Composite`` (an array or record: its text and its
+parts) changes per part when one part changes (or a few elements of an
+array): ``waypoints{8}``, ``tool.tframe.trans``, not the whole value twice.
 
 A describer may also say where the run is (``describe_stack``): the
 call stack each step's statement executes in, for viewers that show it.
@@ -69,6 +72,26 @@ class TraceDescriber(Protocol):
     def describe_transition(self, label: Hashable) -> TransitionInfo: ...
 
 
+class Composite(str):
+    """A value's text together with its parts, for values made of parts (arrays, records).
+
+    It compares, hashes and prints as its text; ``parts`` are ``(suffix, value)``
+    pairs in order, each suffix appended to the value's name names the part
+    (``{3}``, ``.trans``), each value a ``str`` or a ``Composite`` again.
+    """
+
+    parts: tuple[tuple[str, str], ...]
+
+    def __new__(cls, text: str, parts: tuple[tuple[str, str], ...]) -> "Composite":
+        made = super().__new__(cls, text)
+        made.parts = parts
+        return made
+
+
+# an array whose elements change in at most this many places is shown per element
+MOST_PARTS_SHOWN = 3
+
+
 @dataclass(frozen=True)
 class Change:
     """A value that differs from the previous step; ``old`` None when it is new, ``new`` None when gone."""
@@ -95,9 +118,12 @@ class TraceStep:
 
 @dataclass(frozen=True)
 class Trace:
+    """``ending``: for a path without a loop, what is wrong where it ends (the search's words)."""
+
     prefix: tuple[TraceStep, ...]
     cycle: tuple[TraceStep, ...]
     closing: Optional[TraceStep]
+    ending: Optional[str] = None
 
     @property
     def loop_start(self) -> Optional[int]:
@@ -113,11 +139,37 @@ def changes_between(before: Optional[Mapping[str, str]], after: Mapping[str, str
     ``absent_values``: the program's status is shown only while it is not running), so
     a name that leaves the view changes to that value instead of ceasing to exist."""
     before = before or {}
-    changed = [Change(name, before.get(name), value) for name, value in after.items()
-               if before.get(name) != value]
+    changed = [change for name, value in after.items() if before.get(name) != value
+               for change in component_changes(name, before.get(name), value)]
     changed.extend(Change(name, value, absent.get(name)) for name, value in before.items()
                    if name not in after)
     return tuple(changed)
+
+
+def component_changes(name: str, old: Optional[str], new: str) -> list[Change]:
+    """The change of ``name`` from ``old`` to ``new``: per part where one part differs (or
+    up to ``MOST_PARTS_SHOWN`` elements of an array), else whole.
+
+    >>> old = Composite("[1,2,3]", (("{1}", "1"), ("{2}", "2"), ("{3}", "3")))
+    >>> new = Composite("[1,5,3]", (("{1}", "1"), ("{2}", "5"), ("{3}", "3")))
+    >>> component_changes("a", old, new)
+    [Change(name='a{2}', old='2', new='5')]
+    """
+    old_parts = getattr(old, "parts", None)
+    new_parts = getattr(new, "parts", None)
+    if old_parts is None or new_parts is None or len(old_parts) != len(new_parts) or \
+            any(a[0] != b[0] for a, b in zip(old_parts, new_parts)):
+        return [Change(name, old, new)]
+    differing = [(suffix, was, now) for (suffix, was), (_, now) in zip(old_parts, new_parts)
+                 if was != now]
+    # one part: that part; a few elements of an array (suffixes "{i}"): each of them;
+    # several parts of a record, or most of an array: the whole value
+    elements = all(suffix.startswith("{") for suffix, _, _ in differing)
+    if len(differing) > 1 and not (elements and len(differing) <= MOST_PARTS_SHOWN and
+                                   len(differing) < len(new_parts)):
+        return [Change(name, old, new)]
+    return [change for suffix, was, now in differing
+            for change in component_changes(name + suffix, was, now)]
 
 
 def build_trace(result: SearchResult, describer: TraceDescriber) -> Trace:
@@ -146,7 +198,8 @@ def build_trace(result: SearchResult, describer: TraceDescriber) -> Trace:
                               describer)
         closing = replace(closing, stack=tuple(describe_stack(cycle[-1].state)))
     split = len(prefix)
-    return Trace(tuple(steps[:split]), tuple(steps[split:]), closing)
+    return Trace(tuple(steps[:split]), tuple(steps[split:]), closing,
+                 None if cycle else result.ending)
 
 
 def _trace_step(index: int, label: Optional[Hashable], before: Optional[Mapping[str, str]],

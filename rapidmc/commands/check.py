@@ -43,6 +43,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="also write a JUnit XML report to FILE (one test case per property)")
     parser.add_argument("--fail-on-vacuous", action="store_true",
                         help="exit 1 when a property holds only because its trigger is never true")
+    parser.add_argument("--full-trace", action="store_true",
+                        help="text counterexamples in full: every initial value, values not "
+                             "shortened, repeated steps not folded")
     parser.add_argument("--quiet", action="store_true", help="no progress line on stderr")
 
 
@@ -142,6 +145,7 @@ def check_options(args: argparse.Namespace) -> api.CheckOptions:
 
 def prepare_model(args: argparse.Namespace) -> api.Model:
     """The program and properties named by ``check``'s arguments, ready to search."""
+    storage_options.select_engine(args)
     properties = gather_properties(args)
     options = check_options(args)
     program = api.load_program(args.files, args.env, entry=args.entry, task=args.task,
@@ -182,7 +186,7 @@ def _check(args: argparse.Namespace) -> int:
         from ..report.sarif import format_sarif
         print(format_sarif(results, describer, exit_code, warnings), end="")
     else:
-        print(format_text(results, describer))
+        print(format_text(results, describer, args.full_trace))
         sys.stdout.flush()
         if warnings:
             print(render_all(warnings), file=sys.stderr)

@@ -18,7 +18,7 @@ import sys
 from dataclasses import replace
 from typing import Optional
 
-from ..report.results import step_lines
+from ..report.counterexample import step_lines
 from ..check.trace import INITIAL, Change, TraceStep, TransitionInfo
 from ..diagnostics import EXIT_OK, TRACE_DIVERGED, TRACE_FILE, SourceCache, UserError, error
 from ..check.trace_replay import ReplayedStep, SavedStep, SavedTrace, TraceDiverged, follow

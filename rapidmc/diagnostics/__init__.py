@@ -62,7 +62,7 @@ BAD_CHARACTER = _code("RMC102", "bad-character", "a character that cannot start 
 BAD_STRING = _code("RMC103", "bad-string", "malformed string literal (escape, newline, or longer than 80 characters)")
 BAD_NUMBER = _code("RMC104", "bad-number", "malformed or out-of-range numeric literal")
 IDENTIFIER_TOO_LONG = _code("RMC105", "identifier-too-long", "identifier longer than 32 characters")
-PLACEHOLDER = _code("RMC106", "placeholder", "an editor placeholder such as <SMT> cannot be analysed")
+PLACEHOLDER = _code("RMC106", "placeholder", "an editor placeholder where no construct can stand in for it (<ID> as a declared name, <PAR>)")
 UNEXPECTED_EOF = _code("RMC107", "unexpected-eof", "the file ends inside a construct")
 
 # --- static semantics (2xx) ---------------------------------------------------
@@ -117,6 +117,10 @@ FIXED_READING = _code("RMC702", "fixed-reading", "a controller reading the check
 TASKS_LOADED = _code("RMC730", "tasks-loaded", "which tasks of a controller backup are checked together (or left out, and why)")
 PERS_UNWRITTEN = _code("RMC731", "pers-unwritten", "a task checked alone reads PERS data it never writes: another task or a PC may write it")
 ORDER_REDUCTION = _code("RMC732", "order-reduction", "partial-order reduction is off for a property with X (next)")
+
+# --- the search engine (750-759) ---------------------------------------------------------
+NATIVE_ENGINE = _code("RMC750", "native-engine",
+                      "--engine native asked for, and the compiled search core is not built")
 
 
 @dataclass(frozen=True)

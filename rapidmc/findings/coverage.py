@@ -5,7 +5,9 @@ for ``find_reachable``), the statements executed by some transition are
 known (a merged step names every instruction it ran); every other statement of the program — the environment model
 excepted — is dead code under every input the check considered.  A routine
 none of whose statements runs gets one warning at its declaration instead
-of one per line.  Only meaningful after a complete search: the caller
+of one per line, and the other unreached statements of a routine one
+warning per stretch of lines with no reached statement between them
+(``lines 12-40``).  Only meaningful after a complete search: the caller
 asks for ``unreached`` only then.
 """
 from __future__ import annotations
@@ -24,17 +26,24 @@ NOT_STATEMENTS = (EndRoutine, EndUndo)      # ENDPROC / end of UNDO: not a line 
 
 @dataclass(frozen=True)
 class Unreached:
-    """A statement (or a whole routine) that no reachable transition executes."""
+    """A statement, a stretch of statements up to ``last_line``, or a whole routine that no
+    reachable transition executes."""
 
     span: Span
     routine: str
     whole_routine: bool
+    last_line: int = 0            # the last line of the stretch (0: the statement's own)
 
     def diagnostic(self) -> Diagnostic:
         message = "never reached under any input"
+        span = self.span
         if self.whole_routine:
             message += f" (routine {self.routine} never runs)"
-        return Diagnostic(NEVER_REACHED, message, self.span, severity="warning")
+        elif self.last_line > span.line:
+            message = f"lines {span.line}-{self.last_line} of {self.routine} are never " \
+                      "reached under any input"
+            span = Span(span.file, span.line, span.column, self.last_line, 0)
+        return Diagnostic(NEVER_REACHED, message, span, severity="warning")
 
 
 SPANS_KEPT = 1 << 12
@@ -82,7 +91,7 @@ class StatementWatch:
 
 
 def unreached(program: Program, executed: set[tuple[str, int]]) -> list[Unreached]:
-    """The program's statements on lines never executed, in source order."""
+    """The program's statements on lines never executed, in source order, one per stretch."""
     found: list[Unreached] = []
     for routine in _watched_routines(program):
         lines = _statement_lines(routine)
@@ -90,8 +99,28 @@ def unreached(program: Program, executed: set[tuple[str, int]]) -> list[Unreache
         if lines and len(missed) == len(lines):
             found.append(Unreached(routine.span, routine.name, True))
         else:
-            found.extend(Unreached(span, routine.name, False) for span in missed)
+            found.extend(_stretches(routine.name, lines, executed))
     return sorted(found, key=lambda u: (u.span.file, u.span.line, u.span.column))
+
+
+def _stretches(routine: str, lines: dict[tuple[str, int], Span],
+               executed: set[tuple[str, int]]) -> list[Unreached]:
+    """The unreached statement lines of a routine, runs without a reached line between them."""
+    stretches: list[Unreached] = []
+    first: Optional[Span] = None
+    last_line = 0
+    for key in sorted(lines):
+        span = lines[key]
+        if key in executed or (first is not None and span.file != first.file):
+            if first is not None:
+                stretches.append(Unreached(first, routine, False, last_line))
+            first = None
+        if key not in executed:
+            first = first or span
+            last_line = span.line
+    if first is not None:
+        stretches.append(Unreached(first, routine, False, last_line))
+    return stretches
 
 
 def _watched_routines(program: Program) -> list:

@@ -2,7 +2,7 @@
 
 Some predefined functions read what only the controller knows: the
 operating mode (``OpMode``), the time (``CDate``, ``GetTime``), a file's
-size, a task's state.  When checking, the library gives each a fixed value
+size, a task's state, the configuration (``ReadCfgData``).  When checking, the library gives each a fixed value
 (docs/predefined.md, "fixed value"), and ``ClkRead`` a few sampled
 readings.  A program that branches on such a reading is checked for that
 value only: its other branches look unreachable, and a verdict says
@@ -21,12 +21,14 @@ from .. import ast
 from ..diagnostics import FIXED_READING, Diagnostic
 from ..semantics.library import registry
 from ..semantics.library.clocks import SAMPLED_READINGS_TEXT
+from ..semantics.library.configuration import STANDARD_TEXT
 from ..semantics.program import PROGRAM_NAMESPACE, Program
 
 # Output instructions: a reading in their arguments only ends up as text.
 OUTPUT_ONLY = frozenset({"TPWRITE", "ERRWRITE", "ERRLOG", "WRITE", "TPPRINT", "WRITESTRBIN"})
 # Readings that are not one fixed value but a few sampled ones.
-SAMPLED = {"CLKREAD": (SAMPLED_READINGS_TEXT, "those readings")}
+SAMPLED = {"CLKREAD": (SAMPLED_READINGS_TEXT, "those readings"),
+           "READCFGDATA": (STANDARD_TEXT, "that configuration")}
 FIXED = ("a fixed value", "that value")
 
 

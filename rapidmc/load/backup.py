@@ -7,6 +7,7 @@ A RobotWare backup is a folder::
       RAPID/TASK1/SYSMOD/    system modules (*.sys)
       RAPID/TASK1/PROGMOD/   program modules (*.mod, *.modx)
       SYSPAR/EIO.cfg         I/O configuration: the signals programs use by name
+      SYSPAR/*.cfg           the configuration ReadCfgData reads (load.configuration)
 
 ``expand_backup`` turns it into the module files of one task and the path of
 its EIO.cfg; ``read_eio`` reads the signals (name and type) of an EIO.cfg, so
@@ -24,6 +25,8 @@ from ..diagnostics import (FILE_NOT_FOUND, PROGRAM_FILE, TASKS_LOADED, Diagnosti
                            error)
 from .config_file import instances
 from .task_config import BackupTask, config_file, read_tasks
+from ..semantics.library.configuration import Configuration
+from .configuration import read_configuration
 
 MODULE_SUFFIXES = {".mod", ".modx", ".sys", ".prg"}
 SIGNAL_KINDS = {"DI", "DO", "AI", "AO", "GI", "GO"}
@@ -173,6 +176,7 @@ class ProgramFiles:
     main_entry: str = "main"            # its configured entry routine
     notes: tuple = ()                   # Diagnostic notes: which tasks were loaded
     alone: Optional[str] = None         # a backup's task checked without its other tasks
+    configuration: Optional[Configuration] = None   # the backup's SYSPAR files
 
 
 def resolve_program_files(args) -> ProgramFiles:
@@ -183,6 +187,7 @@ def resolve_program_files(args) -> ProgramFiles:
     tasks: list[tuple[str, list[str], str]] = []
     eio_paths = [eio] if eio else []
     main_task, main_entry, notes, alone = None, "main", [], None
+    configuration = None
     for name in args.files:
         path = Path(name)
         if not is_backup(path):
@@ -206,6 +211,7 @@ def resolve_program_files(args) -> ProgramFiles:
         if len(loaded) > 1 and task is None:
             notes.append(_loaded_note(path, [t for t in loaded if t.name == main_task or
                                              any(t.name == other[0] for other in tasks)]))
+        configuration = read_configuration(_child(path, "SYSPAR"))
         backup = backup_eio(path)
         if backup and not eio:
             eio_paths.append(backup)
@@ -214,7 +220,8 @@ def resolve_program_files(args) -> ProgramFiles:
         tasks.append((f"task {number + 1} ({Path(files[0]).stem})" if files else "", files,
                       "main"))
     signals = [signal for eio_path in eio_paths for signal in read_eio(eio_path)]
-    return ProgramFiles(paths, tasks, signals, main_task, main_entry, tuple(notes), alone)
+    return ProgramFiles(paths, tasks, signals, main_task, main_entry, tuple(notes), alone,
+                        configuration)
 
 
 def _runnable_tasks(path: Path, tasks: list[BackupTask]) -> tuple[list[BackupTask], list]:
@@ -256,7 +263,8 @@ def link_options(files: ProgramFiles) -> dict:
     """What the linker learns from the files: configured signals, the task names, whether
     every task of a backup is loaded (a task list naming another task is then an error)."""
     return {"configured_signals": files.signals, "main_task_name": files.main_task,
-            "all_tasks_loaded": files.main_task is not None and files.alone is None}
+            "all_tasks_loaded": files.main_task is not None and files.alone is None,
+            "configuration": files.configuration}
 
 
 def load_tasks(files: ProgramFiles) -> list:

@@ -18,9 +18,10 @@ from ..check import TransitionInfo
 from ..check.trace import CallFrame
 from ..check.result import LassoStep, SearchResult
 from ..diagnostics import TRACE_REPLAY, SourceCache, error
+from ..load.stubs.module_text import STUB_MARKER
 from ..semantics.program import (ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE,
                                 PROGRAM_NAMESPACE, Program)
-from ..semantics.library.system import format_typed, value_kind
+from ..semantics.types import ArrayType
 from ..semantics.library.tasks import SyncWait
 from ..semantics.state import ENDED, FAILED, RUNNING, STOPPED, State
 from ..semantics.plain_step import is_plain
@@ -30,6 +31,7 @@ from ..semantics.fused_step import plain_successor_states, stop_pcs, written_glo
 from ..semantics.values import format_num, format_value
 from ..semantics.errors import errno_name
 from .reduction import NO_PLAN, Plan
+from .value_text import OPAQUE_KINDS, untyped_text, value_text
 from .reduction.expansion import expand_lasso
 from .reduction.merging import executed_spans
 
@@ -254,11 +256,10 @@ def _without_inputs(state: State, free: list) -> State:
     return state._replace(io=io)
 
 
-def _format(value, kind) -> str:
-    try:
-        return format_typed(value, kind)
-    except Exception:
-        return repr(value)
+def _shown(rapid_type) -> bool:
+    """Whether data of this type has a value to show (not a signal, clock, syncident ...)."""
+    element = rapid_type.element if isinstance(rapid_type, ArrayType) else rapid_type
+    return getattr(element, "kind", "") not in OPAQUE_KINDS
 
 
 class RapidDescriber:
@@ -273,13 +274,12 @@ class RapidDescriber:
         lazy = config.lazy_inputs if config is not None else {}
         # inputs chosen when read are not stored: their values show in the step's inputs
         self.signals = [s for s in program.signals if s.index not in lazy]
-        self.globals = [(g.slot, g.name, value_kind(g.type), g.type) for g in program.globals
-                        if g.namespace == PROGRAM_NAMESPACE and
-                        getattr(g.type, "kind", "") not in ("semi-value", "non-value")]
-        self.environment = [(g.slot, self._qualified(g), value_kind(g.type))
-                            for g in program.globals
-                            if g.namespace != PROGRAM_NAMESPACE and
-                            getattr(g.type, "kind", "") not in ("semi-value", "non-value")]
+        self.globals = [(g.slot, g.name, g.type) for g in program.globals
+                        if g.namespace == PROGRAM_NAMESPACE and _shown(g.type)]
+        self.environment = [(g.slot, self._qualified(g), g.type) for g in program.globals
+                            if g.namespace != PROGRAM_NAMESPACE and _shown(g.type)]
+        self._declared_in = {g.slot: g.span.file if g.span else None for g in program.globals}
+        self._stub_data: Optional[frozenset] = None
 
     def _qualified(self, data) -> str:
         """env.name for environment data, <task>.name for data of a further task."""
@@ -287,11 +287,21 @@ class RapidDescriber:
             return f"env.{data.name}"
         return f"{self.program.task_names[data.namespace - FIRST_TASK_NAMESPACE + 1]}.{data.name}"
 
+    @property
+    def stub_data(self) -> frozenset:
+        """The shown names of data declared by a module of ``rapidmc stubs`` (a stub's value)."""
+        if self._stub_data is None:
+            stubs = {file for file in {g.span.file for g in self.program.globals if g.span}
+                     if any(STUB_MARKER in line for line in (SourceCache.lines(file) or ())[:3])}
+            self._stub_data = frozenset(name for slot, name, _ in self.globals + self.environment
+                                        if self._declared_in[slot] in stubs)
+        return self._stub_data
+
     def describe_state(self, state: State) -> Mapping[str, str]:
         view: dict[str, str] = {}
         store = state.store
-        for slot, name, kind, _ in self.globals:
-            view[name] = _format(store[slot], kind)
+        for slot, name, rapid_type in self.globals:
+            view[name] = value_text(store[slot], rapid_type)
         stacks = (state.frames,) + state.tasks
         for frame in (frame for stack in stacks for frame in stack):
             routine = self.program.routines[frame.routine]
@@ -301,12 +311,12 @@ class RapidDescriber:
                 if isinstance(value, tuple) and len(value) == 3 and isinstance(value[0], int) \
                         and isinstance(value[2], tuple):
                     continue                       # a reference parameter
-                view[f"{routine.name}.{name}"] = _format(value, "num")
+                view[f"{routine.name}.{name}"] = untyped_text(value)
         for signal in self.signals:
             view[f"signal {signal.name}"] = format_num(state.io[signal.index])
-        view["robot TCP"] = _format(state.robot[0][0], "num")
-        for slot, name, kind in self.environment:
-            view[name] = _format(store[slot], kind)
+        view["robot TCP"] = untyped_text(state.robot[0][0])
+        for slot, name, rapid_type in self.environment:
+            view[name] = value_text(store[slot], rapid_type)
         if state.errno:
             view["ERRNO"] = errno_name(int(state.errno))
         if state.status == ENDED:
@@ -314,8 +324,7 @@ class RapidDescriber:
         elif state.status == STOPPED:
             view["program"] = "stopped by Stop/Break (the operator may restart it)"
         elif state.status == FAILED:
-            view["program"] = f"stopped: uncaught {errno_name(state.fault.errno)} " \
-                              f"({state.fault.message})"
+            view["program"] = f"stopped: {fault_text(state.fault)}"
         return view
 
     def describe_stack(self, state: State) -> tuple[CallFrame, ...]:
@@ -357,6 +366,15 @@ class RapidDescriber:
         return TransitionInfo(span.file, span.line, source, inputs, output)
 
 
+def fault_text(fault) -> str:
+    """``uncaught ERR_DIVZERO: division by zero`` (the name once, when the message repeats it)."""
+    name = errno_name(fault.errno)
+    message = fault.message
+    if message == name or message.startswith(name + ":"):
+        message = message[len(name) + 1:].strip()
+    return f"uncaught {name}: {message}" if message else f"uncaught {name}"
+
+
 def _frame_span(routine, pc: int):
     """Where a frame is: the statement at its program counter (a caller: the call)."""
     if 0 <= pc < len(routine.code) and routine.code[pc].span is not None:
@@ -369,6 +387,24 @@ def _choice_text(value) -> str:
     return value if isinstance(value, str) else format_value(value)
 
 
+def end_at_error(system: RapidSystem, result: SearchResult) -> SearchResult:
+    """A safety violation's path ends where things go wrong, and says what went wrong.
+
+    An uncaught error: the path ends in the failed state.  A state that waits
+    forever: the path ends with the waiting statement run once more (it
+    changes nothing), so its last step names the statement that waits.
+    """
+    if not result.prefix or result.cycle:
+        return result
+    last = result.prefix[-1]
+    if last.state.status == FAILED:
+        result.ending = fault_text(last.state.fault)
+        return result
+    wait = next((label for label, state in system.successors(last.state)
+                 if state == last.state), None)
+    if wait is not None:
+        result.prefix.append(LassoStep(wait, last.state, last.automaton_state))
+    result.ending = "the program waits here forever: no input lets it go on"
 def with_final_loop(system: RapidSystem, result: SearchResult) -> SearchResult:
     """A reachability path ends in a state that repeats forever: make that the cycle."""
     if result.prefix and not result.cycle:

@@ -29,7 +29,7 @@ from typing import Mapping, Optional, Sequence
 
 from .. import __version__
 from ..diagnostics import HTML_OUTPUT, NEVER_REACHED, Diagnostic, SourceCache, error
-from .results import PropertyResult, fairness_text, property_json, step_json
+from .results import PropertyResult, error_json_of, fairness_text, property_json, step_json
 from ..check.result import VIOLATED
 from ..check.trace import Trace, TraceDescriber, TraceStep, build_trace
 
@@ -100,24 +100,28 @@ def page_data(results: Sequence[PropertyResult], describer: TraceDescriber,
         if checked.fair_tasks:
             entry["fairness"] = fairness_text(checked.fair_tasks)
         if checked.result.verdict == VIOLATED:
-            entry["trace"] = trace_view(build_trace(checked.result, describer))
+            entry["trace"] = trace_view(build_trace(checked.result, describer),
+                                        frozenset(getattr(describer, "stub_data", ())))
             located.extend(s["location"]["file"] for s in entry["trace"]["steps"]
                            if s["location"])
         properties.append(entry)
-    unreached = [{"file": w.span.file, "line": w.span.line, "message": w.message}
+    unreached = [{"file": w.span.file, "line": w.span.line,
+                  "end_line": max(w.span.line, w.span.end_line), "message": w.message}
                  for w in warnings if w.span is not None and w.code is NEVER_REACHED]
     located.extend(entry["file"] for entry in unreached)
     return {"tool": f"rapidmc {__version__}", "files": source_files(describer, located),
             "properties": properties, "unreached": unreached}
 
 
-def trace_view(trace: Trace) -> dict:
-    """The JSON trace with every step in one list (closing last) and the timeline rows."""
+def trace_view(trace: Trace, stub_data: frozenset = frozenset()) -> dict:
+    """The JSON trace with every step in one list (closing last), the timeline rows, and
+    the error a path ends in (as in the JSON report)."""
     steps = [*trace.prefix, *trace.cycle, *([trace.closing] if trace.closing else [])]
     return {"steps": [step_view(step) for step in steps],
             "loop_start": trace.loop_start,
             "closing": trace.closing.index if trace.closing else None,
-            "timeline": timeline_rows(steps)}
+            "timeline": timeline_rows(steps),
+            "error": error_json_of(trace, stub_data)}
 
 
 def step_view(step: TraceStep) -> dict:

@@ -23,7 +23,8 @@ import xml.etree.ElementTree as ET
 from typing import Sequence
 
 from ..diagnostics import Diagnostic, render
-from .results import PropertyResult, counterexample_lines, fairness_text, vacuity_text
+from .counterexample import counterexample_lines
+from .results import PropertyResult, fairness_text, text_options, vacuity_text
 from ..check.result import UNKNOWN, VIOLATED
 from ..check.trace import TraceDescriber, build_trace
 
@@ -72,13 +73,15 @@ def _property_case(suite: ET.Element, checked: PropertyResult, describer: TraceD
         skipped.text = f"UNKNOWN: {result.reason}: no violation found, but the search was bounded"
     elif result.verdict == VIOLATED:
         failure = ET.SubElement(case, "failure", message=checked.formula, type=VIOLATED)
-        lines = counterexample_lines(build_trace(result, describer))
+        lines = counterexample_lines(build_trace(result, describer),
+                                     text_options(checked, describer))
         failure.text = "\n".join(line[2:] for line in lines) + "\n"
     notes = []
     if checked.fair_tasks:
         notes.append(f"{result.verdict} {fairness_text(checked.fair_tasks)}")
     if checked.vacuous is not None:
         notes.append(f"HOLDS {vacuity_text(checked.vacuous)}")
+    notes.extend(f"{result.verdict} assumes: {text}" for text in checked.assumes)
     if notes:
         ET.SubElement(case, "system-out").text = "".join(note + "\n" for note in notes)
 

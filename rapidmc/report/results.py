@@ -26,10 +26,10 @@ from typing import Optional, Sequence
 from ..diagnostics import MORE_ERRORS, Diagnostic
 from ..diagnostics.error_report import omitted_count
 from ..check.result import UNKNOWN, VIOLATED, SearchResult, SearchStats
-from ..check.trace import INITIAL, Change, Trace, TraceDescriber, TraceStep, build_trace
+from ..check.trace import Trace, TraceDescriber, TraceStep, build_trace
+from .counterexample import IDENTIFIER, TextOptions, counterexample_lines, read_data
 
 SCHEMA = "rapidmc-check/1"
-LOOP_STARTS = "-- loop starts here (repeats forever) --"
 
 
 @dataclass(frozen=True)
@@ -41,16 +41,23 @@ class PropertyResult:
     result: SearchResult
     vacuous: Optional[str] = None    # a trigger never true in any reachable state (HOLDS only)
     fair_tasks: tuple = ()           # the tasks assumed weakly fair in the search (several tasks)
+    # what the verdict rests on that rapidmc assumed (findings.assumptions): sentences
+    assumes: tuple = ()
 
 
 # --- text ---------------------------------------------------------------------
 
 
-def format_text(results: Sequence[PropertyResult], describer: TraceDescriber) -> str:
-    """Every property's verdict line, with a counterexample under each violation."""
+def format_text(results: Sequence[PropertyResult], describer: TraceDescriber,
+                full: bool = False) -> str:
+    """Every property's verdict line, with a counterexample under each violation.
+
+    ``full``: every initial value, every value in full, no step folded (``--full-trace``).
+    """
     lines: list[str] = []
     for checked in results:
         lines.append(verdict_line(checked))
+        lines.extend(assumption_lines(checked))
         if checked.fair_tasks:
             lines.append(f"  {fairness_text(checked.fair_tasks)}")
         stats = checked.result.stats
@@ -61,7 +68,8 @@ def format_text(results: Sequence[PropertyResult], describer: TraceDescriber) ->
             lines.append(f"  formula: {checked.formula}")
             if checked.result.reason:
                 lines.append(f"  {checked.result.reason}")
-            lines.extend(counterexample_lines(build_trace(checked.result, describer)))
+            lines.extend(counterexample_lines(build_trace(checked.result, describer),
+                                              text_options(checked, describer, full)))
     return "\n".join(lines) + "\n"
 
 
@@ -74,6 +82,26 @@ def verdict_line(checked: PropertyResult) -> str:
     if checked.vacuous is not None:
         figures = f"{vacuity_text(checked.vacuous)}; {figures}"
     return f"{checked.name}: {result.verdict} ({figures})"
+
+
+MAX_ASSUMPTIONS_SHOWN = 6
+
+
+def assumption_lines(checked: PropertyResult) -> list[str]:
+    """``  assumes: stub GripOpen is empty (Missing.mod:12)``, one line each, at most
+    ``MAX_ASSUMPTIONS_SHOWN`` and a count of the rest (JSON lists them all)."""
+    shown = [f"  assumes: {text}" for text in checked.assumes[:MAX_ASSUMPTIONS_SHOWN]]
+    rest = len(checked.assumes) - MAX_ASSUMPTIONS_SHOWN
+    if rest > 0:
+        shown.append(f"  assumes: ... and {rest} more (--format json lists them all)")
+    return shown
+
+
+def text_options(checked: PropertyResult, describer: TraceDescriber,
+                 full: bool = False) -> TextOptions:
+    """How ``checked``'s counterexample is written: the names its formula uses are shown."""
+    names = frozenset(word.upper() for word in IDENTIFIER.findall(checked.formula))
+    return TextOptions(full, names, frozenset(getattr(describer, "stub_data", ())))
 
 
 def vacuity_text(trigger: str) -> str:
@@ -93,55 +121,6 @@ def statistics_text(stats: SearchStats) -> str:
 
 def seconds_text(seconds: float) -> str:
     return f"{seconds:.2f} s" if seconds < 10 else f"{seconds:,.1f} s"
-
-
-def counterexample_lines(trace: Trace) -> list[str]:
-    """The numbered steps of a trace with the loop markers."""
-    count = len(trace.prefix) + len(trace.cycle)
-    if trace.cycle:
-        head = (f"  counterexample: {_steps(len(trace.prefix))}, "
-                f"then a loop of {_steps(len(trace.cycle))}")
-    else:
-        head = f"  counterexample: {_steps(count)}"
-    lines = [head]
-    for step in trace.prefix:
-        lines.extend(step_lines(step))
-    if trace.cycle:
-        lines.append("  " + LOOP_STARTS)
-        for step in trace.cycle:
-            lines.extend(step_lines(step))
-        lines.extend(step_lines(trace.closing))
-        lines.append(f"  -- loop closes: back to the state of step {trace.loop_start} --")
-    return lines
-
-
-def _steps(count: int) -> str:
-    return f"{count} step" if count == 1 else f"{count} steps"
-
-
-def step_lines(step: TraceStep) -> list[str]:
-    """One step: number, location and source, then inputs, output and changed values."""
-    transition = step.transition
-    if step.kind == INITIAL:
-        head = "initial state"
-    else:
-        location = transition.location
-        head = f"{location}  {transition.source}" if location else transition.source
-    lines = [f"    step {step.index}  {head}".rstrip()]
-    if transition is not None:
-        lines.extend(f"        input: {name} = {value}" for name, value in transition.inputs.items())
-        if transition.output:
-            lines.append(f"        output: {json.dumps(transition.output, ensure_ascii=False)}")
-    lines.extend(f"        {_change_text(change)}" for change in step.changes)
-    return lines
-
-
-def _change_text(change: Change) -> str:
-    if change.new is None:
-        return f"{change.name} (no longer exists; was {change.old})"
-    if change.old is None:
-        return f"{change.name} = {change.new}"
-    return f"{change.name} = {change.new}  (was {change.old})"
 
 
 # --- JSON ---------------------------------------------------------------------
@@ -173,16 +152,22 @@ def property_json(checked: PropertyResult, describer: TraceDescriber) -> dict:
     result = checked.result
     trace = None
     if result.verdict == VIOLATED:
-        trace = trace_json(build_trace(result, describer))
+        trace = trace_json(build_trace(result, describer),
+                           frozenset(getattr(describer, "stub_data", ())))
     return {"name": checked.name, "formula": checked.formula, "verdict": result.verdict,
             "reason": result.reason, "stats": result.stats.as_dict(), "trace": trace,
             "vacuous": checked.vacuous,
-            "fair_tasks": list(checked.fair_tasks) if checked.fair_tasks else None}
+            "fair_tasks": list(checked.fair_tasks) if checked.fair_tasks else None,
+            "assumes": list(checked.assumes)}
 
 
 def warning_json(warning: Diagnostic) -> dict:
+    """A warning; its ``end_line`` is the last line of a stretch of unreached lines."""
     span = warning.span
-    location = {"file": span.file, "line": span.line, "column": span.column} if span else None
+    location = None
+    if span:
+        location = {"file": span.file, "line": span.line, "column": span.column,
+                    "end_line": max(span.end_line, span.line)}
     return {"code": warning.code.code, "message": warning.message, "location": location}
 
 
@@ -198,11 +183,23 @@ def error_json(diagnostic: Diagnostic) -> dict:
             "notes": list(diagnostic.notes)}
 
 
-def trace_json(trace: Trace) -> dict:
+def trace_json(trace: Trace, stub_data: frozenset = frozenset()) -> dict:
     return {"prefix": [step_json(step) for step in trace.prefix],
             "cycle": [step_json(step) for step in trace.cycle],
             "closing": step_json(trace.closing) if trace.closing else None,
-            "loop_start": trace.loop_start}
+            "loop_start": trace.loop_start,
+            "error": error_json_of(trace, stub_data)}
+
+
+def error_json_of(trace: Trace, stub_data: frozenset = frozenset()) -> Optional[dict]:
+    """The headline of a path that ends in an error, values in full; None for a loop."""
+    if trace.cycle or not trace.ending:
+        return None
+    last = trace.prefix[-1]
+    reads = [{"name": name, "value": value, "origin": origin}
+             for name, value, origin in read_data(trace.prefix, stub_data)] \
+        if last.transition is not None and last.transition.location else []
+    return {"message": trace.ending, "step": last.index, "reads": reads}
 
 
 def step_json(step: TraceStep) -> dict:

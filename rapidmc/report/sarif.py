@@ -17,6 +17,7 @@ from typing import Optional, Sequence
 
 from .. import __version__
 from ..diagnostics import Diagnostic
+from .counterexample import WIDTH, read_data, shorten
 from .results import PropertyResult
 from ..check.result import UNKNOWN, VIOLATED
 from ..check.trace import Trace, TraceDescriber, TraceStep, build_trace
@@ -37,8 +38,21 @@ def format_sarif(results: Sequence[PropertyResult], describer: TraceDescriber,
                 "ruleId": checked.name, "ruleIndex": index, "level": "warning",
                 "message": {"text": f"{checked.name}: UNKNOWN ({result.reason}): no violation "
                                     "found, but the search was bounded"}})
+    _assumptions(results, rules, sarif_results)
     _diagnostic_results(warnings, rules, sarif_results)
     return _document(rules, sarif_results, exit_code)
+
+
+def _assumptions(results: Sequence[PropertyResult], rules: list, sarif_results: list) -> None:
+    """What each verdict assumes (findings.assumptions): ``properties.assumes`` of the
+    property's rule (every verdict; HOLDS gives no result) and of its result, if any."""
+    for rule, checked in zip(rules, results):
+        if checked.assumes:
+            rule.setdefault("properties", {})["assumes"] = list(checked.assumes)
+    for result in sarif_results:
+        assumes = rules[result["ruleIndex"]].get("properties", {}).get("assumes")
+        if assumes:
+            result.setdefault("properties", {})["assumes"] = assumes
 
 
 def format_sarif_diagnostics(diagnostics: Sequence[Diagnostic], exit_code: int) -> str:
@@ -59,8 +73,9 @@ def _diagnostic_results(diagnostics: Sequence[Diagnostic], rules: list, results:
         result = {"ruleId": diagnostic.code.code, "ruleIndex": indices[diagnostic.code.code],
                   "level": diagnostic.severity, "message": {"text": diagnostic.message}}
         if diagnostic.span is not None and diagnostic.span.line > 0:
-            result["locations"] = [_location(diagnostic.span.file, diagnostic.span.line,
-                                             diagnostic.span.column)]
+            span = diagnostic.span
+            result["locations"] = [_location(span.file, span.line, span.column,
+                                             span.end_line if span.end_line > span.line else 0)]
         if diagnostic.omitted:          # the last result of a capped report counts the rest
             result["properties"] = {"errorsNotShown": diagnostic.omitted}
         results.append(result)
@@ -91,8 +106,7 @@ def _violation(index: int, checked: PropertyResult, trace: Trace) -> dict:
     result = {
         "ruleId": checked.name, "ruleIndex": index, "level": "error",
         "message": {"text": f"{checked.name} is violated: {checked.formula} "
-                            f"(counterexample: {len(trace.prefix)} steps, then a loop of "
-                            f"{len(trace.cycle)} steps)"},
+                            f"({_shape(trace)})"},
         "codeFlows": [{"threadFlows": [{"locations": [
             _flow_step(step, order, trace.loop_start) for order, step in
             enumerate(steps, start=1)]}]}],
@@ -102,6 +116,19 @@ def _violation(index: int, checked: PropertyResult, trace: Trace) -> dict:
     if checked.fair_tasks:            # the counterexample lets every task that can go on run
         result["properties"] = {"fairTasks": list(checked.fair_tasks)}
     return result
+
+
+def _shape(trace: Trace) -> str:
+    """``counterexample: 3 steps, then a loop of 2 steps``, or for a path ending in an error
+    ``counterexample: 5 steps to uncaught ERR_DIVZERO: division by zero, reading n = 0``."""
+    if trace.cycle or not trace.ending:
+        return f"counterexample: {len(trace.prefix)} steps, then a loop of " \
+               f"{len(trace.cycle)} steps"
+    read = read_data(trace.prefix) if trace.prefix[-1].transition is not None else []
+    reads = ", ".join(f"{name} = {shorten(value, WIDTH)} ({origin})"
+                      for name, value, origin in read)
+    return f"counterexample: {len(trace.prefix)} steps to {trace.ending}" + \
+        (f", reading {reads}" if reads else "")
 
 
 def _anchor(trace: Trace, located: list) -> Optional[TraceStep]:
@@ -129,9 +156,12 @@ def _flow_step(step: TraceStep, order: int, loop_start: Optional[int]) -> dict:
     return {"location": location, "executionOrder": order, "nestingLevel": 0}
 
 
-def _location(file: str, line: Optional[int], column: Optional[int] = None) -> dict:
+def _location(file: str, line: Optional[int], column: Optional[int] = None,
+              end_line: int = 0) -> dict:
     region = {"startLine": line or 1}
     if column:
         region["startColumn"] = column
+    if end_line:                      # a stretch of unreached lines
+        region["endLine"] = end_line
     return {"physicalLocation": {"artifactLocation": {"uri": Path(file).as_posix()},
                                  "region": region}}

@@ -63,12 +63,13 @@ def bind(compiler: ExpressionCompiler, routine_name: str, params: Sequence[Param
     position = 0
     for arg in args:
         if arg.kind == ast.REQUIRED and arg.name is None:
-            while position < len(required) and required[position] in chosen:
+            while position < len(required) and (
+                    required[position] in chosen or params[required[position]].group in groups_seen):
                 position += 1
             if position >= len(required):
                 raise error(ARGUMENT, f"too many arguments for {routine_name} (it takes "
                             f"{len(required)} required argument(s))", arg.span)
-            index = required[position]
+            index = _alternative_by_type(compiler, params, required[position], arg)
             position += 1
         else:
             index = _by_name(params, arg, routine_name)
@@ -98,6 +99,24 @@ def bind(compiler: ExpressionCompiler, routine_name: str, params: Sequence[Param
         if sources is not None:
             sources.append(compiled)
     return binders
+
+
+def _alternative_by_type(compiler, params, index: int, arg: ast.Argument) -> int:
+    """The member of a required alternative group (``Signal | PersFlag``) a positional argument
+    binds to: the first member, unless the argument is a named data object whose declared type
+    only another member takes (a PERS bool where a search takes a signal or a bool flag)."""
+    group = params[index].group
+    if group is None or not isinstance(arg.value, ast.NameRef):
+        return index
+    symbol = compiler.scope.lookup(arg.value.name.key) or \
+        compiler.linker.system_symbol(arg.value.name)
+    actual = getattr(symbol, "type", None)
+    if actual is None or any(same_type(actual, t) for t in params[index].types):
+        return index
+    for other, param in enumerate(params):
+        if param.group == group and any(same_type(actual, t) for t in param.types):
+            return other
+    return index
 
 
 def _alternative_given(params, param, chosen) -> bool:
@@ -199,6 +218,8 @@ def _reference_binder(compiler, routine_name, param, arg) -> Callable:
         raise
     _check_types(param, ref_type, expr.span, routine_name)
     storage = symbol.storage if symbol is not None else ""
+    if symbol is None:                     # a placeholder <VAR>: an error when executed
+        return ref_fn
     if symbol.kind == LOCAL_DATA and storage in ("CONST", "FOR") or storage == "CONST":
         raise error(NOT_A_REFERENCE, f"{storage} '{expr_root_name(expr)}' cannot be passed to "
                     f"{param.mode} parameter {param.name}", expr.span)

@@ -158,15 +158,7 @@ def _argument_uses(node) -> Iterator[tuple[ast.Name, str]]:
         return
     if entry is None:
         return
-    parameters = entry.signature.parameters
-    required = [p for p in parameters if not p.optional]
-    position = 0
-    for arg in node.args:
-        if arg.kind == ast.REQUIRED and arg.name is None:
-            spec = required[position] if position < len(required) else None
-            position += 1
-        else:
-            spec = entry.signature.parameter(arg.name.key) if arg.name else None
+    for arg, spec in registry.matched_parameters(node.args, entry.signature.parameters):
         if spec is not None and isinstance(arg.value, ast.NameRef):
             yield arg.value.name, spec.type_name.lower()
 

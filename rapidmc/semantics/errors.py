@@ -93,6 +93,17 @@ class RapidError(Exception):
         return errno_name(self.errno)
 
 
+def placeholder_reached(kind: str) -> None:
+    """Execution reached an editor placeholder (``<SMT>``, ``<EXP>`` ...): ERR_EXECPHR.
+
+    The RAPID kernel reference: a program with placeholders is syntactically correct and can be
+    loaded; if they cause no semantic error it can even be executed, but any placeholder
+    encountered causes an execution error (errnum ERR_EXECPHR, "executed a placeholder").
+    """
+    raise RapidError("ERR_EXECPHR", f"the editor placeholder <{kind}> was executed (that "
+                     "part of the program was never completed)")
+
+
 class FatalRapidError(Exception):
     """A non-recoverable run-time error (no ERROR handler may catch it)."""
 

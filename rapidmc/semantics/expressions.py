@@ -19,9 +19,9 @@ from typing import Any, Callable, Optional
 
 from .. import ast
 from ..diagnostics import (ARGUMENT, NOT_A_REFERENCE, TYPE_MISMATCH, UNKNOWN_NAME,
-                           UNKNOWN_ROUTINE, PLACEHOLDER, error)
+                           UNKNOWN_ROUTINE, error)
 from . import values
-from .errors import RapidError
+from .errors import RapidError, placeholder_reached
 from .machine import ABSENT, GLOBAL
 from .scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, Symbol
 from .types import (BOOL, DNUM, NUM, ORIENT, POS, RECORD, SEMI_VALUE, STRING, AnyType,
@@ -204,7 +204,9 @@ class ExpressionCompiler:
         return constant(expr.value, BOOL)
 
     def _Placeholder(self, expr: ast.Placeholder, expected) -> Compiled:
-        raise error(PLACEHOLDER, f"placeholder <{expr.kind}> cannot be executed", expr.span)
+        """An editor placeholder (``<EXP>``): any type; evaluating it raises ERR_EXECPHR."""
+        kind = expr.kind
+        return Compiled(lambda m: placeholder_reached(kind), None)
 
     # ------------------------------------------------------------------ names
     def lookup(self, name: ast.Name, expected=None) -> Symbol:
@@ -581,6 +583,9 @@ class ExpressionCompiler:
                 space, index, path = base_fn(m)
                 return (space, index, path + (offset,))
             return component_ref, component_type, symbol
+        if isinstance(expr, ast.Placeholder):      # <VAR>: an error only when executed
+            kind = expr.kind
+            return (lambda m: placeholder_reached(kind)), None, None
         raise error(NOT_A_REFERENCE, f"a variable or persistent is required here ({purpose})",
                     expr.span)
 

@@ -160,8 +160,8 @@ class Linker:
         if symbol is not None:
             return symbol
         entry = PREDEFINED_DATA.get(name.key)
-        if entry is not None and entry.storage == "VAR":
-            return self._user_module_variable(entry)
+        if entry is not None and entry.storage in ("VAR", "PERS"):
+            return self._system_module_data(entry)
         if entry is not None:
             rapid_type = self.builtin_types.get(entry.type_name.upper())
             symbol = Symbol(CONSTANT, entry.name, rapid_type, value=entry.value,
@@ -177,13 +177,17 @@ class Linker:
             return Symbol(CONSTANT, name.text, NUM, value=float(LONG_JMP_ALL_ERR), storage="CONST")
         return None
 
-    def _user_module_variable(self, entry) -> Symbol:
-        """A variable of the USER system module (reg1..reg5, clock1), given a slot on first use."""
+    def _system_module_data(self, entry) -> Symbol:
+        """Data of a system module, given a slot on first use: the variables of the USER module
+        (reg1..reg5, clock1) and the persistents of BASE (tool0, wobj0, load0), which a program
+        may pass to a PERS or INOUT parameter of its own routines."""
         rapid_type = self.builtin_types[entry.type_name.upper()]
         slot = len(self.globals)
-        self.globals.append(P.GlobalData(slot, entry.name, entry.name.upper(), rapid_type, "VAR",
-                                         "user", P.PROGRAM_NAMESPACE, False, None, entry.value))
-        symbol = Symbol(GLOBAL_DATA, entry.name, rapid_type, slot=slot, storage="VAR")
+        module = "user" if entry.storage == "VAR" else "base"
+        self.globals.append(P.GlobalData(slot, entry.name, entry.name.upper(), rapid_type,
+                                         entry.storage, module, P.PROGRAM_NAMESPACE, False, None,
+                                         entry.value))
+        symbol = Symbol(GLOBAL_DATA, entry.name, rapid_type, slot=slot, storage=entry.storage)
         self.system.declare(entry.name.upper(), symbol)
         return symbol
 

@@ -12,13 +12,14 @@ from typing import Optional
 
 from .. import ast
 from ..diagnostics import (ASSIGN_CONST, BAD_CONTROL, DUPLICATE, TYPE_MISMATCH, UNKNOWN_LABEL,
-                           UNKNOWN_NAME, UNKNOWN_ROUTINE, PLACEHOLDER, UserError, error)
+                           UNKNOWN_NAME, UNKNOWN_ROUTINE, UserError, error)
 from ..diagnostics.error_report import UNKNOWN_CODES
 from .library import registry
 from .expressions import ExpressionCompiler, _check_index as check_index
 from .instructions import (Action, Branch, Call, EndRoutine, EndUndo, ExitProgram,
                            ForInit, ForNext, Instruction, Jump, LateCall, Raise, Retry,
                            Return, TestDispatch, TryNext)
+from .errors import placeholder_reached
 from .machine import GLOBAL, with_locals
 from .scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, Scope, Symbol
 from .types import NUM, SEMI_VALUE, STRING, RapidType
@@ -231,6 +232,9 @@ class RoutineCompiler:
             if root_symbol is None and root_expr.name.key in ("ERRNO", "INTNO"):
                 raise error(ASSIGN_CONST, f"{root_expr.name.text} is read-only (set by the "
                             "system)", target.span)
+        if isinstance(root_expr, ast.Placeholder):     # <VAR> := value
+            self.emit(self._placeholder_assignment(compiler, statement, root_expr.kind))
+            return
         ref_fn, target_type, symbol = compiler.reference(target, "assigned")
         root = symbol
         if root.kind == CONSTANT or root.storage in ("CONST",):
@@ -367,9 +371,19 @@ class RoutineCompiler:
     def _Connect(self, statement: ast.Connect, follow: Label) -> None:
         self.emit(self.linker.calls.connect(self.expressions(), statement))
 
+    @staticmethod
+    def _placeholder_assignment(compiler, statement: ast.Assignment, kind: str) -> Action:
+        """``<VAR> := value``: the value is computed, then the placeholder raises ERR_EXECPHR."""
+        value_fn = compiler.value(statement.value).fn
+
+        def assign_placeholder(m):
+            value_fn(m)
+            placeholder_reached(kind)
+        return Action(statement.span, assign_placeholder)
+
     def _PlaceholderStatement(self, statement, follow: Label) -> None:
-        raise error(PLACEHOLDER, f"placeholder <{statement.kind}> cannot be executed",
-                    statement.span)
+        kind = statement.kind
+        self.emit(Action(statement.span, lambda m: placeholder_reached(kind)))
 
     # --------------------------------------------------- compound statements
     def _If(self, statement: ast.If, follow: Label) -> None:

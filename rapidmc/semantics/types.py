@@ -128,9 +128,9 @@ SIGNAL_TYPES = {t.key: t for t in (
 
 NON_VALUE_NAMES = (
     "clock", "iodev", "dir", "socketdev", "rawbytes", "triggdata", "shapedata",
-    "wzstationary", "wztemporary", "mecunit", "taskid", "syncident", "rmqslot",
+    "mecunit", "taskid", "syncident", "rmqslot",
     "intnum_obsolete", "restartdata", "corrdescr", "pathrecid", "jointtype",
-    "egmident", "trapdata", "cameradev", "datapos", "itmsrc", "jointgroup", "menudata",
+    "egmident", "trapdata", "cameradev", "datapos", "itmsrc", "jointgroup",
     "speedlimdata", "rmqmessage", "loadsession",
 )
 NON_VALUE_TYPES = {n.upper(): RapidType(n.upper(), n, NON_VALUE) for n in NON_VALUE_NAMES}
@@ -174,6 +174,18 @@ OPTION_RECORDS = (
             *_nums("val1", "val2", "val3", "val4", "val5"), ("string1", STRING),
             ("string2", STRING), *_nums("type", "sceneid")),
     _record("progdisp", ("pdisp", POSE), ("eoffs", EXTJOINT)),
+    # World zones: the manual's examples declare `PERS wzstationary equip1 := [0];` and
+    # `VAR wztemporary service;`, and backups do the same: one num component, the zone's
+    # identity (wz).
+    _record("wztemporary", ("wz", NUM)),
+    _record("wzstationary", ("wz", NUM)),
+    # Production Manager's service-menu entries: a value record of eleven components, as
+    # controller backups declare it (`TASK PERS menudata md := ["Move to Home", "",
+    # "MovetoHome", 1, "", 255, TRUE, 1, 0, FALSE, 210];`). No text found gives the
+    # components' names, so they are c1 .. c11, with the types the backups' values show.
+    _record("menudata", ("c1", STRING), ("c2", STRING), ("c3", STRING), ("c4", NUM),
+            ("c5", STRING), ("c6", NUM), ("c7", BOOL), ("c8", NUM), ("c9", NUM), ("c10", BOOL),
+            ("c11", NUM)),
     ARCDATA,
     _record("welddata", *_nums("weld_speed", "org_weld_speed"), ("main_arc", ARCDATA),
             ("org_arc", ARCDATA)),

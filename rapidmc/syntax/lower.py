@@ -287,8 +287,13 @@ class Lowering:
 
     def routine_body(self, items, entries):
         data = tuple(i for i in items if isinstance(i, ast.DataDeclaration))
-        body = tuple(i for i in items if not isinstance(i, ast.DataDeclaration))
+        body = tuple(i for i in items if not isinstance(i, ast.DataDeclaration)
+                     and not _declaration_hole(i))
         return data, body
+
+    def declaration_placeholder(self, children, entries):
+        """A <TDN>, <DDN> or <RDN> among a module's declarations: it declares nothing."""
+        return None
 
     def backward_handler(self, children, entries):
         return children[0]
@@ -379,7 +384,8 @@ class Lowering:
     def if_statement(self, children, entries):
         condition, body, *elseifs, else_body = children
         first = nodes.IfBranch(condition, body, self.span(entries))
-        return nodes.If((first, *elseifs), else_body, self.span(entries))
+        branches = [split for branch in (first, *elseifs) for split in _elseif_holes(branch)]
+        return nodes.If(tuple(branches), else_body, self.span(entries))
 
     def elseif(self, children, entries):
         condition, body = children
@@ -399,6 +405,7 @@ class Lowering:
 
     def test_statement(self, children, entries):
         subject, *cases, default = children
+        cases = [split for case in cases for split in _case_holes(case)]
         return nodes.Test(subject, tuple(cases), default, self.span(entries))
 
     def test_case(self, children, entries):
@@ -559,3 +566,38 @@ class Lowering:
             self.report(error(BAD_STRING, f"string of {len(value)} characters; RAPID strings "
                               f"hold at most {MAX_STRING_LENGTH}", span))
         return nodes.StringLiteral(value, span)
+
+
+# Editor placeholders that stand for a clause or a declaration, not a statement: the parser
+# reads them as placeholder statements, and the lowering puts them where they belong.
+DECLARATION_HOLES = ("TDN", "DDN", "RDN")
+
+
+def _declaration_hole(item) -> bool:
+    return isinstance(item, ast.PlaceholderStatement) and item.kind in DECLARATION_HOLES
+
+
+def _hole_at(body, kind: str):
+    return next((i for i, s in enumerate(body)
+                 if isinstance(s, ast.PlaceholderStatement) and s.kind == kind), None)
+
+
+def _elseif_holes(branch):
+    """An <EIT> in a branch's body is an ELSEIF clause of its own: its condition is the
+    placeholder (reached only when the conditions before it are false), its body what follows."""
+    at = _hole_at(branch.body, "EIT")
+    if at is None:
+        return [branch]
+    hole = branch.body[at]
+    rest = nodes.IfBranch(nodes.Placeholder("EIT", hole.span), branch.body[at + 1:], hole.span)
+    return [nodes.IfBranch(branch.condition, branch.body[:at], branch.span)] + _elseif_holes(rest)
+
+
+def _case_holes(case):
+    """A <CSE> in a CASE body is a CASE clause of its own, whose value is the placeholder."""
+    at = _hole_at(case.body, "CSE")
+    if at is None:
+        return [case]
+    hole = case.body[at]
+    rest = nodes.TestCase((nodes.Placeholder("CSE", hole.span),), case.body[at + 1:], hole.span)
+    return [nodes.TestCase(case.values, case.body[:at], case.span)] + _case_holes(rest)

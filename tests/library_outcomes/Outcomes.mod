@@ -6,6 +6,11 @@ MODULE Outcomes
   PERS num nButton := 0;
   PERS num nFile := 0;
   PERS num nParts := -1;
+  PERS num nFlagSearch := 0;
+  PERS num nReach := 0;
+  PERS bool bTouch := FALSE;
+  VAR errnum errIk;
+  VAR jointtarget jIk;
   PERS robtarget pEnd := [[500,0,100],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
   VAR robtarget pFound;
   VAR cameradev camTop;
@@ -19,6 +24,24 @@ MODULE Outcomes
       nFile := 2;
     ENDIF
     nParts := CamNumberOfResults(camTop);
+    FlagProbe;
+    jIk := CalcJointT(pEnd, tool0 \ErrorNumber:=errIk);
+    IF errIk = ERR_ROBLIMIT THEN
+      nReach := 2;
+    ELSE
+      nReach := 1;
+    ENDIF
+  ENDPROC
+
+  PROC FlagProbe()
+    ! issue 19: a PERS bool supervised instead of a signal (SearchL's PersFlag)
+    SearchL \Stop, bTouch, pFound, pEnd, v50, tool0;
+    nFlagSearch := 1;
+  ERROR
+    IF ERRNO = ERR_WHLSEARCH THEN
+      nFlagSearch := 2;
+      RETURN;
+    ENDIF
   ENDPROC
 
   PROC Probe()

@@ -66,6 +66,7 @@ class Missing:
     alias_of: Optional[str] = None                      # a missing type declared with a value
     alternative: Optional[tuple] = None                 # (number, count) among compared names
     exact_dims: bool = False                            # dims from an aggregate assigned whole
+    written: list = field(default_factory=list)         # aggregates assigned to it whole
 
     def learn(self, info: Optional[TypeInfo], evidence: str) -> bool:
         """Take ``info`` as the type if none is known yet; whether anything changed."""
@@ -157,10 +158,28 @@ class Inference:
         if record is None or record.kind != TYPE:
             return
         name = expr.name.text
-        if name not in record.fields or info is not None and self._replaces(record.fields[name],
-                                                                            info):
+        positional = [c for c in record.fields if POSITIONAL_COMPONENT.fullmatch(c)]
+        if name not in record.fields and positional and len(positional) == len(record.fields):
+            self._name_a_position(record, name, info)      # shaped by a value: keep the count
+        elif name not in record.fields or info is not None and \
+                self._replaces(record.fields[name], info):
             record.fields[name] = info
             self.changed = True
+
+    def _name_a_position(self, record: Missing, name: str, info: Optional[TypeInfo]) -> None:
+        """A record shaped by a declared value (``c1``, ``c2`` ...) whose component ``name``
+        a use reads with type ``info``: the first positional component of that type takes
+        the name, so the record keeps the value's count of components. Without a type the
+        name waits for a use that gives one."""
+        if info is None:
+            return
+        for component, known in record.fields.items():
+            if POSITIONAL_COMPONENT.fullmatch(component) and known is not None \
+                    and self.names.base(known).key == self.names.base(info).key:
+                record.fields = {(name if c == component else c): t
+                                 for c, t in record.fields.items()}
+                self.changed = True
+                return
 
     def _replaces(self, known: Optional[TypeInfo], info: TypeInfo) -> bool:
         """A component's type ``info`` from a use takes the place of none, or of a record
@@ -376,6 +395,11 @@ class Inference:
             self.missing[root.name.key].assigned = True
         self.expect(statement.value, target, f"assigned to {target.name} data" if target else "")
         self.expression(statement.value)
+        if isinstance(statement.target, ast.NameRef) and isinstance(statement.value, ast.Aggregate):
+            written = self.missing.get(statement.target.name.key)
+            if written is not None and written.kind == DATA and \
+                    all(a is not statement.value for a in written.written):
+                written.written.append(statement.value)
         if target is None and value is None and isinstance(statement.target, ast.NameRef) \
                 and isinstance(statement.value, ast.Aggregate):
             self._array_of_records(statement.target.name, statement.value)
@@ -389,8 +413,10 @@ class Inference:
 
     def _array_of_records(self, name: ast.Name, aggregate: ast.Aggregate) -> None:
         """Missing data assigned an aggregate of aggregates of one shape
-        (``taskList := [["T_ROB1"],[""],["T_POS1"]]``) is an array of the one known record of
-        that shape (``tasks``), as long as the shape fits exactly one record type."""
+        (``stations := [["A", 1], ["B", 2]]``) is an array of the one record of the program
+        of that shape, as long as the shape fits exactly one. A predefined record is not
+        taken for a plain aggregate (``[["img", "text"]]`` is no ``listitem`` for that alone;
+        a task list passed to WaitSyncTask is typed ``tasks`` by that use)."""
         missing = self.missing.get(name.key)
         if missing is None or missing.kind != DATA or missing.type is not None:
             return
@@ -404,7 +430,7 @@ class Inference:
             shapes.add(tuple(p.key for p in parts))
         if len(shapes) != 1:
             return
-        fitting = self.names.records_shaped(list(shapes.pop()))
+        fitting = self.names.records_shaped(list(shapes.pop()), predefined=False)
         if len(fitting) == 1 and missing.learn(TypeInfo(fitting[0]),
                                                f"assigned an array of {fitting[0]} aggregates"):
             missing.dims = [len(aggregate.items)]
@@ -681,6 +707,8 @@ def missing_names(modules: tuple[ast.Module, ...], signals=frozenset()) -> list[
     _settle(inference, count_uses=True)
     if _types_from_names(inference):        # the last resort; its types reach other names
         _settle(inference, count_uses=False)
+    if _types_from_written(inference):      # aggregates assigned whole: types and sizes
+        _settle(inference, count_uses=False)
     _types_of_passed_values(inference)
     return sorted(inference.missing.values(),
                   key=lambda m: (m.first_use.file, m.first_use.line, m.first_use.column))
@@ -702,7 +730,8 @@ def _types_from_components(inference: Inference) -> bool:
     changed = _known_for_invented(inference)
     for missing in list(inference.missing.values()):
         if missing.type is None and missing.components:
-            candidates = inference.names.records_with(missing.components)
+            candidates = [name for name in inference.names.records_with(missing.components)
+                          if _fits_written(inference, missing, name)]
             shown = ", ".join("." + c for c in missing.components)
             if candidates:
                 changed |= missing.learn(TypeInfo(candidates[0]), f"has components {shown}")
@@ -724,6 +753,9 @@ def _invent_record(inference: Inference, missing: Missing, shown: str) -> bool:
     having = "its elements have" if missing.dims else "has"
     return missing.learn(TypeInfo(invented.text), f"{having} components {shown}")
 
+
+# The components the stubs name after their position in a value (``c1``, ``c2`` ...).
+POSITIONAL_COMPONENT = re.compile(r"c[0-9]+")
 
 # A RAPID identifier (a procedure named by a string must be one).
 IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,31}")
@@ -795,6 +827,8 @@ def _known_for_invented(inference: Inference) -> bool:
         record = inference.missing.get(key)
         if record is None or len(record.fields) < 2:     # one name alone says too little
             continue
+        if all(POSITIONAL_COMPONENT.fullmatch(name) for name in record.fields):
+            continue         # c1, c2 ... name positions of a value, not known components
         candidates = inference.names.records_with(list(record.fields))
         if not candidates:
             continue
@@ -804,6 +838,8 @@ def _known_for_invented(inference: Inference) -> bool:
             for component, info in owner.fields.items():
                 if info is not None and info.key == key:
                     owner.fields[component] = TypeInfo(candidates[0], info.rank)
+            if owner.type is not None and owner.type.key == key:
+                owner.type = TypeInfo(candidates[0], owner.type.rank)
         changed = True
     return _drop_unused_invented(inference) or changed
 
@@ -822,3 +858,120 @@ def _drop_unused_invented(inference: Inference) -> bool:
         for key in unused:
             inference.missing.pop(key, None)
             inference.invented.discard(key)
+
+
+# ---------------------------------------------------------------------------------------
+# Aggregates the program assigns whole (issue 19): component counts and array sizes
+# ---------------------------------------------------------------------------------------
+
+def _shape(inference: Inference, aggregate: ast.Aggregate) -> Optional[tuple]:
+    """``(dims, part types)`` of a regular aggregate: ``[[1,2],[3,4],[5,6]]`` gives
+    ``([3, 2], ['NUM'] * 6)``; None when its parts are of mixed nesting, ragged or of no
+    atomic type."""
+    if not aggregate.items:
+        return None
+    if all(isinstance(item, ast.Aggregate) for item in aggregate.items):
+        inner = [_shape(inference, item) for item in aggregate.items]
+        if any(i is None for i in inner) or len({tuple(i[0]) for i in inner}) != 1:
+            return None
+        return [len(aggregate.items)] + inner[0][0], [t for i in inner for t in i[1]]
+    parts = [inference.type_of(item) for item in aggregate.items]
+    if any(p is None or p.key not in ATOMIC for p in parts):
+        return None
+    return [len(parts)], [p.key for p in parts]
+
+
+def _fits_written(inference: Inference, missing: Missing, record: str) -> bool:
+    """Whether ``record`` can take the aggregates assigned whole to ``missing`` (as many
+    components as the aggregate has parts); true when nothing is assigned whole."""
+    count = len(inference.names.components(record) or ())
+    shapes = [_shape(inference, a) for a in missing.written]
+    return all(shape is None or shape[0][-1] == count for shape in shapes)
+
+
+def _types_from_written(inference: Inference) -> bool:
+    """The last resort for missing data assigned an aggregate whole: sizes and types.
+
+    An array (typed by another use, or indexed) has the sizes of the aggregate assigned
+    (``nList := [1,2,3,4,5,6,7]``: 7 elements, not the 10 assumed from an index). Untyped
+    data takes the aggregate's shape: parts of one atomic type make an array of that type
+    (``pOffs := [10,20,30]``: ``num pOffs{3}``, no pos or other record is guessed); parts
+    of several types a RECORD ``<data>_rec`` with components ``c1`` ... ``cN``. A record
+    invented for components the program reads gets the aggregate's other parts as further
+    components, when the parts' types agree."""
+    changed = False
+    for missing in list(inference.missing.values()):
+        shapes = [s for s in (_shape(inference, a) for a in missing.written) if s is not None]
+        if missing.kind != DATA or not shapes or len({tuple(s[0]) for s in shapes}) != 1:
+            continue
+        dims, parts = shapes[0]
+        if missing.type is None:
+            changed |= _type_from_shape(inference, missing, dims, parts)
+        elif missing.dims or missing.type.rank:
+            record = inference.names.components(missing.type.name)
+            sizes = dims[:-1] if record is not None and len(record) == dims[-1] else dims
+            if sizes and (sizes != missing.dims or not missing.exact_dims):
+                missing.dims, missing.exact_dims = list(sizes), True
+                changed = True
+        else:
+            changed |= _widen_invented(inference, missing, dims, parts)
+    return changed
+
+
+def _type_from_shape(inference: Inference, missing: Missing, dims: list, parts: list) -> bool:
+    if len(set(parts)) == 1 and len(dims) <= 3:
+        info = TypeInfo(_ATOMIC_NAMES[parts[0]])
+        if missing.learn(info, f"assigned an aggregate of {info.name} values"):
+            missing.dims, missing.exact_dims = list(dims), True
+            return True
+        return False
+    if len(dims) > 2 or len(set(tuple(parts[i:i + dims[-1]])
+                                for i in range(0, len(parts), dims[-1]))) != 1:
+        return False
+    invented = inference._fresh_type_name(f"{missing.name.text}_rec", missing.name.span)
+    record = inference.note(invented, TYPE, f"type of {missing.name.text}, assigned an "
+                            "aggregate of values of several types; name invented")
+    record.fields = {f"c{n}": TypeInfo(_ATOMIC_NAMES[key])
+                     for n, key in enumerate(parts[:dims[-1]], 1)}
+    inference.invented.add(invented.key)
+    if missing.learn(TypeInfo(invented.text), "assigned an aggregate of values of several types"):
+        missing.dims, missing.exact_dims = list(dims[:-1]), True
+    return True
+
+
+def _widen_invented(inference: Inference, missing: Missing, dims: list, parts: list) -> bool:
+    """``r.name := "a"; r := ["a", 2, 3];``: the record invented for the components the
+    program reads of ``r`` gets one component per part of the aggregate: a read ``c3`` is
+    the third, a read name takes the first free place of its type, and the other places
+    are ``c1``, ``c2`` ... of the parts' types; nothing changes when the types disagree."""
+    record = inference.missing.get(missing.type.key)
+    if record is None or record.kind != TYPE or missing.type.key not in inference.invented \
+            or len(dims) != 1 or len(record.fields) >= dims[0]:
+        return False
+    places: list = [None] * dims[0]
+    named = []
+    for name, info in record.fields.items():
+        position = POSITIONAL_COMPONENT.fullmatch(name) and int(name[1:])
+        if position:
+            if position > dims[0] or places[position - 1] is not None:
+                return False
+            places[position - 1] = (name, info)
+        else:
+            named.append((name, info))
+    for name, info in named:
+        free = next((i for i, place in enumerate(places) if place is None and (
+            info is None or inference.names.base(info).key == parts[i])), None)
+        if free is None:
+            return False
+        places[free] = (name, info)
+    for number, place in enumerate(places):
+        if place is not None and place[1] is not None \
+                and inference.names.base(place[1]).key != parts[number]:
+            return False
+    record.fields = {name: info if info is not None else TypeInfo(_ATOMIC_NAMES[parts[i]])
+                     for i, (name, info) in enumerate(
+                         place or (f"c{i + 1}", None) for i, place in enumerate(places))}
+    return True
+
+
+_ATOMIC_NAMES = {"NUM": "num", "DNUM": "dnum", "STRING": "string", "BOOL": "bool"}

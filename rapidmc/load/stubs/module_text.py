@@ -25,6 +25,9 @@ KNOWN_VALUES = {"TOOLDATA": "tool0", "WOBJDATA": "wobj0", "LOADDATA": "load0",
 MIN_ARRAY_SIZE = 10
 UNUSED_AXIS = 9e9
 MAX_ARRAY_LITERAL = 1000
+# The header comment that marks a module as written by ``rapidmc stubs``: findings.assumptions
+# recognises stub declarations by it, and a trace names the values they give.
+STUB_MARKER = "Declarations written by 'rapidmc stubs'"
 
 
 def number_text(value: float) -> str:
@@ -102,6 +105,7 @@ def where(missing: Missing) -> str:
     return f"{Path(span.file).name}:{span.line}:{span.column}"
 
 
+
 class StubWriter:
     """Renders the missing names as declarations of one module."""
 
@@ -116,8 +120,7 @@ class StubWriter:
         self.neutral.aliases = {item.name.key: item.alias_of.upper()
                                 for item in missing if item.kind == TYPE and item.alias_of}
         lines = [f"MODULE {module_name}",
-                 "  ! Declarations written by 'rapidmc stubs' for the names the program uses "
-                 "and no module declares.",
+                 f"  ! {STUB_MARKER} for the names the program uses and no module declares.",
                  "  ! Types come from the uses; values are neutral: replace them with the "
                  "cell's real data."]
         order = [TYPE, DATA, PROCEDURE, FUNCTION, TRAP]

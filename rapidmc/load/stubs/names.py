@@ -15,7 +15,7 @@ from ...semantics import configured_signals
 from ...semantics.library import registry
 from ...semantics.library.data import PREDEFINED_DATA
 from ...semantics.errors import ERROR_NUMBERS
-from ...semantics.types import PREDEFINED_ALIASES, PREDEFINED_TYPES, RECORD
+from ...semantics.types import NON_VALUE, PREDEFINED_ALIASES, PREDEFINED_TYPES, RECORD
 
 
 @dataclass(frozen=True)
@@ -72,6 +72,7 @@ class Declarations:
         self.signals |= {name.key for name, _ in configured_signals.compared_names(modules)
                          if name.key not in declared}
         self.units = {name.key for name in configured_signals.unit_uses(modules)} - declared
+        self.shadowed = _valued_non_value_types(modules, set(self.spelling))
 
     # ------------------------------------------------------------------ data
     def data_type(self, key: str, local: dict[str, TypeInfo]) -> Optional[TypeInfo]:
@@ -105,7 +106,8 @@ class Declarations:
 
     # ----------------------------------------------------------------- types
     def is_type(self, key: str) -> bool:
-        return key in self.records or key in self.aliases or predefined_type_name(key) is not None
+        return key in self.records or key in self.aliases or (
+            predefined_type_name(key) is not None and key not in self.shadowed)
 
     def base(self, info: TypeInfo) -> TypeInfo:
         """An alias resolved to its base type (the alias itself for predefined aliases)."""
@@ -131,10 +133,12 @@ class Declarations:
                 return TypeInfo(component_type)
         return None
 
-    def records_shaped(self, parts: list[str]) -> list[str]:
-        """The record types (predefined first, then the program's) whose components have
-        exactly the types ``parts`` (upper-case keys of atomic types), in order."""
-        names = [t.name for t in PREDEFINED_TYPES.values() if t.kind == RECORD]
+    def records_shaped(self, parts: list[str], predefined: bool = True) -> list[str]:
+        """The record types (predefined first, unless not wanted, then the program's) whose
+        components have exactly the types ``parts`` (upper-case keys of atomic types), in
+        order."""
+        names = [t.name for t in PREDEFINED_TYPES.values() if t.kind == RECORD] if predefined \
+            else []
         names += [self.spelling[key] for key in self.records]
         return [name for name in names
                 if [self.base(TypeInfo(t)).key for _, t in self.components(name) or ()] == parts]
@@ -146,3 +150,22 @@ class Declarations:
         names += [self.spelling[key] for key in self.records]
         return [name for name in names
                 if wanted <= {c.upper() for c, _ in self.components(name) or ()}]
+
+
+def _valued_non_value_types(modules, declared: set) -> set:
+    """Predefined non-value types (``datapos``, ``jointgroup`` ...) the program declares data
+    of with a value, or as PERS, which no non-value type allows: the program means a type of
+    its own, of a module not given, that happens to have that name (issue 19); the stubs
+    declare it as a record shaped by the value. ``declared``: the program's own types."""
+    found = set()
+    for module in modules:
+        declarations = list(module.data)
+        for routine in module.routines:
+            declarations.extend(routine.data)
+        for decl in declarations:
+            key = decl.type.name.key
+            predefined = PREDEFINED_TYPES.get(key)
+            if predefined is not None and predefined.kind == NON_VALUE and key not in declared \
+                    and (decl.init is not None or decl.storage == "PERS"):
+                found.add(key)
+    return found

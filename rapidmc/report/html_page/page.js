@@ -10,7 +10,13 @@
   const data = JSON.parse(document.getElementById("report-data").textContent);
   const files = new Map(data.files.map((file) => [file.name, file.lines]));
   // coverage warnings: "file:line" -> message, shaded in the source view
-  const unreached = new Map((data.unreached || []).map((w) => [w.file + ":" + w.line, w.message]));
+  // (a warning about a stretch of lines shades every line of it)
+  const unreached = new Map();
+  for (const w of data.unreached || []) {
+    for (let line = w.line; line <= Math.max(w.end_line || 0, w.line); line += 1) {
+      unreached.set(w.file + ":" + line, w.message);
+    }
+  }
   const $ = (id) => document.getElementById(id);
 
   const player = {
@@ -78,6 +84,9 @@
       verdict.appendChild(element("span", "verdict " + property.verdict, property.verdict));
       if (property.reason) verdict.appendChild(element("div", "reason", property.reason));
       if (property.fairness) verdict.appendChild(element("div", "reason fairness", property.fairness));
+      for (const text of property.assumes || []) {
+        verdict.appendChild(element("div", "reason assumes", "assumes: " + text));
+      }
       row.appendChild(verdict);
       const formula = element("td");
       formula.appendChild(element("code", null, property.formula));
@@ -127,8 +136,16 @@
     goTo(0);
   }
 
+  // "5 steps to the error: uncaught ERR_DIVZERO: ... (step 5), reading n = 0 (initial value)."
+  function errorText(total, error) {
+    const reads = error.reads.map((read) => read.name + " = " + read.value + " (" + read.origin + ")");
+    return plural(total, "step") + " to the error: " + error.message + " (step " + error.step + ")" +
+      (reads.length ? ", reading " + reads.join(", ") : "") + ".";
+  }
+
   function traceShape(trace) {
     const total = trace.steps.length;
+    if (trace.loop_start === null && trace.error) return errorText(total, trace.error);
     if (trace.loop_start === null) return plural(total, "step") + " to the state that violates it.";
     const prefix = trace.loop_start - 1;
     return plural(prefix, "step") + ", then a loop of " +

@@ -12,11 +12,15 @@ modelled: setting one up stops the run, and until then none exists.
 """
 from __future__ import annotations
 
-from ..errors import RapidError
+from .. import values
+from ..errors import ERROR_NUMBERS, RapidError
+from ..machine import ABSENT
 from ..expressions import Compiled, constant
 from ..instructions import Action, ControlAction
-from ..types import BOOL, NUM, STRING
-from .arguments import NAME_ONLY, Arguments, fixed, no_effect, not_modelled
+from ..types import BOOL, DNUM, NUM, STRING
+from .arguments import (NAME_ONLY, ROBOT_JOINTS, Arguments, argument_expression, fixed, no_effect,
+                        not_modelled)
+from .configuration import FOUND, NOT_KNOWN, UNKNOWN_VALUE, Lookup, look_up
 from .data import PREDEFINED_DATA
 from .environment_model import where
 from .motion import move_robot
@@ -26,9 +30,10 @@ from .tasks import task_number
 from .signature_parts import ACT_TAIL, AXES, JOINTS, RUN_TAIL, TRIGG_TAIL
 
 KINEMATICS = "needs the robot's kinematic model, which rapidmc does not have"
+# \SWVersionName (the RobotWare name, e.g. "RobotWare 6.08"): GetSysInfo of RobotWare 6.
 SYSTEM_INFO = (("SerialNo", "rapidmc-0001"), ("SWVersion", "6.0.0"), ("RobotType", "IRB 120"),
                ("CtrlId", "rapidmc"), ("LanIp", "127.0.0.1"), ("CtrlLang", "en"),
-               ("SystemName", "rapidmc"))
+               ("SystemName", "rapidmc"), ("SWVersionName", "RobotWare 6.0.0"))
 
 
 # EGM session states (egmstate); programs compare them with <=, so they are ordered.
@@ -49,6 +54,12 @@ def _get_sys_info(calls, compiler, call, entry) -> Compiled:
     def info(m):
         return next((text for flag, text in switches if flag(m) is True), SYSTEM_INFO[0][1])
     return Compiled(info, STRING)
+
+
+# GetServiceInfo (RobotWare 6): service information of a mechanical unit as a string, here the
+# duty-time counter (\\DutyTimeCnt). The switches beyond that one are not known to rapidmc.
+compiled("string GetServiceInfo(mecunit MechUnit \\switch DutyTimeCnt)",
+         modelled=FIXED)(fixed("0"))
 
 
 @compiled("bool IsSysId(string SystemId)", modelled=FIXED)
@@ -99,10 +110,35 @@ compiled("num AInput(VAR signalai Signal)",
          "num GInput(VAR signalgi Signal)")(signal_reader)
 
 
-compiled("jointtarget CalcJointT(\\switch UseCurWObjPos, robtarget Rob_target, PERS tooldata Tool "
-             "\\PERS wobjdata WObj \\num ConfAngle \\INOUT errnum ErrorNumber)",
-         "robtarget CalcRobT(jointtarget Joint_target, PERS tooldata Tool \\PERS wobjdata WObj)",
+compiled("robtarget CalcRobT(jointtarget Joint_target, PERS tooldata Tool \\PERS wobjdata WObj)",
          modelled=NOT_MODELLED)(not_modelled(KINEMATICS))
+
+
+@compiled("jointtarget CalcJointT(\\switch UseCurWObjPos, robtarget Rob_target, PERS tooldata Tool "
+              "\\PERS wobjdata WObj \\num ConfAngle \\INOUT errnum ErrorNumber)",
+          modelled=FIXED)
+def _calc_joint_t(calls, compiler, call, entry) -> Compiled:
+    """The joint angles of a robtarget, without the arm's kinematics (an assumption, said by
+    RMC702 as for every fixed reading): the robot axes the modelled robot has now (what CJointT
+    reads) and the external axes of the target, which the manual's result carries over.
+
+    The target is taken as reachable: without \\ErrorNumber the controller raises ERR_ROBLIMIT
+    or ERR_OUTSIDE_REACH only for a target out of reach, which rapidmc cannot tell; a program
+    that asks for the error number (``\\ErrorNumber:=err``, it then gets no error raised) is
+    checked with both answers, 0 and ERR_ROBLIMIT, when model checking."""
+    arguments = Arguments(calls, compiler, call, entry)
+    target, error_number = arguments.value("Rob_target"), arguments.fn("ErrorNumber")
+    label = f"CalcJointT reaches the target at {where(call.span)}"
+    limit = float(ERROR_NUMBERS["ERR_ROBLIMIT"])
+
+    def joints(m):
+        robax = m.robot[ROBOT_JOINTS][0]
+        ref = error_number(m)
+        if ref is not ABSENT:
+            reached = m.choose(label, (True, False)) if m.chooser.check_mode else True
+            m.write_ref(ref, 0.0 if reached else limit)
+        return (robax, target(m)[3])
+    return Compiled(joints, calls.return_type(entry))
 
 
 # ===========================================================================
@@ -161,8 +197,11 @@ compiled("SkipWarn()",
              f"egmframetype SensFrType {AXES} {ACT_TAIL})",
          "EGMRunJoint(VAR egmident EGMid, egmstopmode Mode \\switch NoWaitCond "
              + " ".join(f"\\switch J{i}" for i in range(1, 8)) + f" {RUN_TAIL})",
+         # EGMRunPose's \Offset is a pose (the EGM manual: an offset frame added to the
+         # corrections; EGMRunJoint's is kept as num, no evidence of its type was found)
          "EGMRunPose(VAR egmident EGMid, egmstopmode Mode \\switch NoWaitCond "
-             + " ".join(f"\\switch {a}" for a in ("x", "y", "z", "rx", "ry", "rz")) + f" {RUN_TAIL})",
+             + " ".join(f"\\switch {a}" for a in ("x", "y", "z", "rx", "ry", "rz"))
+             + f" {RUN_TAIL.replace('num Offset', 'pose Offset')})",
          "EGMStop(VAR egmident EGMid, egmstopmode Mode \\num RampOutTime)",
          "EGMStreamStart(VAR egmident EGMid \\num SampleRate)",
          "EGMStreamStop(VAR egmident EGMid)",
@@ -184,8 +223,12 @@ def _egm_get_id(calls, compiler, call, entry):
     return _egm_state(calls, compiler, call, entry, None)
 
 
+# \APTR | \LATR go with \PathCorr: path correction from an Arc (or Laser) Path Tracking
+# sensor (`EGMSetupUC ROB_1, id, "path_corr", "UCdevice" \PathCorr \APTR;`, a motion-program
+# driver that runs on controllers).
 @compiled("EGMSetupUC(mecunit MecUnit, VAR egmident EGMid, string ExtConfigName, string UCDevice "
-              "\\switch Pose | switch Joint | switch PathCorr \\num CommTimeout)")
+              "\\switch Pose | switch Joint | switch PathCorr \\switch APTR | switch LATR "
+              "\\num CommTimeout)")
 def _egm_setup(calls, compiler, call, entry):
     return _egm_state(calls, compiler, call, entry, EGM_STATE_CONNECTED)
 
@@ -266,18 +309,48 @@ compiled("PackDNHeader(string Service, string Path, VAR rawbytes RawData)",
 @compiled("ReadCfgData(string InstancePath, string Attribute, VAR anytype CfgData \\num ListNo)",
           modelled=CHOICE)
 def _read_cfg_data(calls, compiler, call, entry):
-    """Whether the configuration has the instance and attribute is the controller's: when
-    checking, the read either leaves CfgData as it is (rapidmc has no configuration
-    database to read a value from) or raises ERR_CFG_NOTFND, the error programs handle
-    (ABB's own calibration-position program does); ``run`` leaves CfgData as it is."""
-    Arguments(calls, compiler, call, entry)
+    """The instance and attribute as far as rapidmc knows them (``configuration``): found
+    with a known value (written to CfgData), found with a value rapidmc does not know
+    (CfgData keeps its value), not found (ERR_CFG_NOTFND), or not known either way: then,
+    when checking, a choice between found and ERR_CFG_NOTFND (``run``: found)."""
+    arguments = Arguments(calls, compiler, call, entry)
+    path, attribute, target = (arguments.value("InstancePath"), arguments.value("Attribute"),
+                               arguments.fn("CfgData"))
+    _, target_type, _ = compiler.reference(argument_expression(call, "CfgData", 2),
+                                           "written by ReadCfgData")
     label = f"ReadCfgData outcome at {where(call.span)}"
 
     def read(m):
-        if m.chooser.check_mode and m.choose(label, ("found", "ERR_CFG_NOTFND")) != "found":
+        found = look_up(m.program.options.get("configuration"), path(m), attribute(m))
+        if found.outcome == NOT_KNOWN and m.chooser.check_mode:
+            found = Lookup(m.choose(label, (FOUND, "ERR_CFG_NOTFND")))
+        if found.outcome not in (FOUND, NOT_KNOWN):
             raise RapidError("ERR_CFG_NOTFND", "ReadCfgData: no such instance or attribute in "
                              "the configuration")
+        value = configured_value(found.value, target_type)
+        if value is not None:
+            m.write_ref(target(m), value)
     return Action(call.span, read)
+
+
+def configured_value(text, rapid_type):
+    """A configuration attribute's text as a value of the data's type (None: not known, or
+    not of that type)."""
+    if text is UNKNOWN_VALUE:
+        return None
+    if rapid_type is BOOL:
+        return True if text is True else {"TRUE": True, "FALSE": False}.get(str(text).upper())
+    if text is True:
+        return None
+    if rapid_type is STRING:
+        return values.checked_string(text)
+    if rapid_type in (NUM, DNUM):
+        try:
+            number = float(text)
+        except ValueError:
+            return None
+        return values.to_dnum(number) if rapid_type is DNUM else values.to_num(number)
+    return None
 
 
 # --- reference coverage (issue 8, item 1): brake check, friction identification ------------

@@ -213,15 +213,24 @@ def _binary_characters(m, call, name: str, unread: str, count: int):
     return unread
 
 
-@compiled(f"string ReadStr({DEVICE} {TIME} \\switch RemoveCR)",
+# \Delim (RobotWare 6 manual, ReadStr): the characters of the string end the significant part
+# of the text as the line feed does; the rest of the line is left for the next read.
+# \DiscardHeaders skips delimiters before the significant part.
+@compiled(f"string ReadStr({DEVICE} \\string Delim \\switch RemoveCR \\switch DiscardHeaders {TIME})",
           modelled=CHOICE)
 def _read_str(calls, compiler, call, entry) -> Compiled:
     def read(m, arguments, name, unread):
-        if unread:
-            line, _, rest = unread.partition("\n")
-            return line[:80], rest
-        line = _next_line(m, call, name)
-        return (EOF_TEXT if line is None else line[:80]), ""
+        delimiters = arguments.value("Delim")(m)
+        if not unread:
+            line = _next_line(m, call, name)
+            if line is None:
+                return EOF_TEXT, ""
+            unread = line + "\n"
+        ends = "\n" + ("" if delimiters is ABSENT else delimiters)
+        if arguments.value("DiscardHeaders")(m) is True:
+            unread = unread.lstrip(ends) or unread[-1:]
+        cut = next((i for i, character in enumerate(unread) if character in ends), len(unread))
+        return unread[:cut][:80], unread[cut + 1:]
     return _reader(calls, compiler, call, entry, read, STRING)
 
 

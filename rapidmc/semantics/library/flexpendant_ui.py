@@ -99,9 +99,12 @@ def _ui_message_box(calls, compiler, call, entry) -> Compiled:
     return Compiled(answer, calls.return_type(entry))
 
 
+# \Result (UIMsgBox, UIListView) is INOUT: the manual calls it "the variable" that gets the
+# button, but controllers load PERS btnres data given to it (Production Manager menus, issue 19),
+# and INOUT takes a variable or a persistent, as TPReadFK's answer does.
 @compiled("UIMsgBox(\\string Header, string MsgLine1 \\string MsgLine2 \\string MsgLine3 "
               "\\string MsgLine4 \\string MsgLine5 \\switch Wrap \\buttondata Buttons "
-              f"\\icondata Icon \\string Image \\VAR btnres Result {_BREAKS})",
+              f"\\icondata Icon \\string Image \\INOUT btnres Result {_BREAKS})",
           modelled=CHOICE)
 def _ui_msg_box(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
@@ -184,7 +187,7 @@ def _ui_alpha_entry(calls, compiler, call, entry) -> Compiled:
     return Compiled(answer, calls.return_type(entry))
 
 
-@compiled("num UIListView(\\VAR btnres Result \\string Header, listitem ListItems{*} "
+@compiled("num UIListView(\\INOUT btnres Result \\string Header, listitem ListItems{*} "
               "\\buttondata Buttons | string BtnArray{*} \\num DefaultIndex \\icondata Icon "
               f"{_BREAKS})",
           modelled=CHOICE)

@@ -1,15 +1,22 @@
 """RAPID operators on pos and orient: which function implements ``a op b``.
 
 ``pos + pos``, ``pos - pos``, ``num * pos``, ``pos * num`` (scaling),
-``pos * pos`` (cross product) and ``orient * orient`` (rotation
-composition).  Types are compared by their canonical key, so any type
+``pos / num`` (scaling by the inverse), ``pos * pos`` (cross product) and
+``orient * orient`` (rotation composition).
+
+``pos / num`` is not in the operator table of ABB's RAPID overview (``/`` is
+listed for num / num), but program modules of controller backups use it
+(``pCenter := (p1 + p2) / 2``), so controllers load and run it (issue 19):
+each component is divided, and a zero divisor raises ERR_DIVZERO as num / num
+does.  Types are compared by their canonical key, so any type
 object with ``.key`` ("POS", "ORIENT", "NUM", "DNUM") works.
 """
 from __future__ import annotations
 
 from typing import Callable, Optional
 
-from .vector_math import orient_multiply, pos_add, pos_cross, pos_scale, pos_sub
+from ..values import divide
+from .vector_math import as_pos, orient_multiply, pos_add, pos_cross, pos_scale, pos_sub
 
 _SCALARS = ("NUM", "DNUM")
 
@@ -22,6 +29,10 @@ def _scale_right(vector, factor):
     return pos_scale(factor, vector)
 
 
+def _divide(vector, divisor):
+    return as_pos(tuple(divide(component, divisor) for component in vector))
+
+
 # (operator, left key, right key) -> (function, result key)
 _OPERATORS: dict[tuple[str, str, str], tuple[Callable, str]] = {
     ("+", "POS", "POS"): (pos_add, "POS"),
@@ -32,6 +43,7 @@ _OPERATORS: dict[tuple[str, str, str], tuple[Callable, str]] = {
 for _scalar in _SCALARS:
     _OPERATORS[("*", _scalar, "POS")] = (pos_scale, "POS")
     _OPERATORS[("*", "POS", _scalar)] = (_scale_right, "POS")
+    _OPERATORS[("/", "POS", _scalar)] = (_divide, "POS")
 
 
 def operator_for(op: str, left_type: object, right_type: object):

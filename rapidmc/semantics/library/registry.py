@@ -70,6 +70,7 @@ import sys
 from dataclasses import dataclass
 from typing import Callable, Iterator, NamedTuple, Optional
 
+from ... import ast
 from ..values import DNUM, NUM, NumericKind
 
 FUNCTION = "function"
@@ -89,6 +90,22 @@ NO_EFFECT = "no effect"
 FIXED = "fixed value"
 NOT_MODELLED = "stops the run: not modelled"
 MODELLED_AS = (EXACT, CHOICE, ROBOT_STATE, FIXED, NO_EFFECT, NOT_MODELLED)
+
+
+def matched_parameters(args, parameters) -> Iterator[tuple]:
+    """(argument, its parameter or None) for a call's arguments: a positional one takes the
+    next required parameter, a named one (``\\Name:=`` or ``Name:=``) the parameter of that
+    name.  ``parameters``: objects with ``key`` and ``optional`` (a ``ParameterSpec``, a
+    user routine's ``Parameter``)."""
+    required = [p for p in parameters if not p.optional]
+    position = 0
+    for arg in args:
+        if arg.kind == ast.REQUIRED and arg.name is None:
+            yield arg, required[position] if position < len(required) else None
+            position += 1
+        else:
+            key = arg.name.key if arg.name is not None else None
+            yield arg, next((p for p in parameters if p.key == key), None)
 
 
 class SignatureSyntaxError(ValueError):

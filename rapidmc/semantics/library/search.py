@@ -12,12 +12,17 @@ from __future__ import annotations
 
 from ..errors import RapidError
 from ..instructions import ControlAction
+from ..machine import ABSENT
 from .arguments import ROBOT_JOINTS, Arguments
 from .environment_model import where
 from .motion import arrive
 from .registry import CHOICE, compiled
 
-_MODE = "\\switch Stop | switch PStop | switch SStop | switch Sup, VAR signaldi Signal " \
+# Signal | PersFlag: the manual's syntax supervises a digital input or, instead, a persistent
+# bool ("PersFlag, Data type: bool, the persistent variable flag to supervise"; the search
+# instructions of RobotWare 6 and 7). Real backups pass a PERS bool positionally.
+_MODE = "\\switch Stop | switch PStop | switch SStop | switch Sup, " \
+        "VAR signaldi Signal | PERS bool PersFlag " \
         "\\switch Flanks | switch PosFlank | switch NegFlank | switch HighLevel | switch LowLevel"
 _TAIL = "\\identno ID, speeddata Speed \\num V | num T, PERS tooldata Tool \\PERS wobjdata WObj"
 
@@ -31,7 +36,7 @@ _TAIL = "\\identno ID, speeddata Speed \\num V | num T, PERS tooldata Tool \\PER
           modelled=CHOICE)
 def _search(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
-    signal, search_point = arguments.fn("Signal"), arguments.fn("SearchPoint")
+    signal, search_point = _supervised(arguments), arguments.fn("SearchPoint")
     target, tool, wobj = (arguments.value(key) for key in ("ToPoint", "Tool", "WObj"))
     label = f"{call.name.text} hit at {where(call.span)}"
 
@@ -44,11 +49,24 @@ def _search(calls, compiler, call, entry):
     return ControlAction(call.span, search)
 
 
-def _hit(m, label: str, signal) -> bool:
-    """Check mode: hit and miss are both possible; run: a hit when the signal is 1."""
+def _supervised(arguments):
+    """fn(m) -> whether the supervised signal (or PERS bool flag) is set now."""
+    signal, flag = arguments.fn("Signal"), arguments.value("PersFlag")
+
+    def is_set(m) -> bool:
+        value = flag(m)
+        if value is not ABSENT:
+            return bool(value)
+        return m.io[signal(m)] == 1
+    return is_set
+
+
+def _hit(m, label: str, supervised) -> bool:
+    """Check mode: hit and miss are both possible; run: a hit when the signal (or the
+    PERS bool) is set."""
     if m.chooser.check_mode:
         return m.choose(label, (True, False))
-    return m.io[signal(m)] == 1
+    return supervised(m)
 
 
 def _miss_or_store(m, call, hit: bool, search_point, point) -> None:
@@ -67,7 +85,7 @@ def _search_ext_j(calls, compiler, call, entry):
     """A search with the external axes only: as MoveExtJ, the robot's joints keep their
     values; a hit stores the target, a miss raises ERR_WHLSEARCH."""
     arguments = Arguments(calls, compiler, call, entry)
-    signal, search_point = arguments.fn("Signal"), arguments.fn("SearchJointPos")
+    signal, search_point = _supervised(arguments), arguments.fn("SearchJointPos")
     target = arguments.value("ToJointPos")
     label = f"{call.name.text} hit at {where(call.span)}"
 

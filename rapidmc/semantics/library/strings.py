@@ -1,4 +1,4 @@
-"""String functions: StrLen, StrPart, StrFind, StrMatch, StrMemb, StrOrder, StrMap.
+"""String functions: StrLen, StrPart, StrFind, StrMatch, StrMemb, StrOrder, StrMap, StrFormat.
 
 Character positions are 1-based.  A position or length that leaves the
 string raises ERR_ARGVALERR; "not found" is StrLen(Str)+1 as in the manual.
@@ -86,3 +86,20 @@ def str_map(text: str, from_map: str, to_map: str) -> str:
         else:
             raise RapidError("ERR_ARGVALERR", "ToMap is shorter than FromMap")
     return "".join(out)
+
+
+# StrFormat (RobotWare 7): ``{n}`` in the format stands for the optional argument \\Argn.
+# No manual text was found with the search tools; the form is that of a motion-program
+# driver that runs on controllers (``StrFormat("motion_program_p{1}.bin"\\Arg1:=NumToStr(n,0))``).
+# The number of arguments (ten) is an assumption; a placeholder whose argument is absent stays.
+_FORMAT_ARGUMENTS = 10
+
+
+@function("string StrFormat(string Format "
+          + " ".join(f"\\string Arg{i}" for i in range(1, _FORMAT_ARGUMENTS + 1)) + ")")
+def str_format(text: str, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10) -> str:
+    arguments = (arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10)
+    for number, argument in enumerate(arguments, start=1):
+        if argument is not None:
+            text = text.replace("{%d}" % number, argument)
+    return text

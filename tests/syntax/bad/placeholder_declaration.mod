@@ -1,6 +1,6 @@
 ! expect: RMC106 line 3
 MODULE m
-  <DDN>
+  VAR num <ID>;
   PROC main()
   ENDPROC
 ENDMODULE

@@ -1,0 +1,119 @@
+"""How long ``rapidmc check`` reports are: text-report size of the programs with a violation.
+
+Usage: python bench/report_size.py FOLDER [--max-states N] [--max-seconds S] [--jobs N]
+                                   [--no-stubs] [--list] [--keep DIR] [-- CHECK-OPTIONS...]
+
+Every ``.mod``/``.modx``/``.sys`` file under FOLDER is checked as a program of its own
+(files with the same text once); one that stops at unknown names is checked again with
+the declarations ``rapidmc stubs`` writes for it.  The text report is what a user sees:
+stdout and stderr of ``rapidmc check FILE --quiet`` together.  For the programs whose
+check says VIOLATED (exit 1) it prints the count, the median and largest report size and
+the longest line; ``--list`` prints one row per such program (``--keep DIR`` keeps the
+reports there, one file each).  Options after ``--`` go to every check (e.g.
+``--full-trace``).
+
+The figures of issue 19 were taken with ``--max-states 20000 --max-seconds 20``.
+"""
+from __future__ import annotations
+
+import argparse
+import hashlib
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+SUFFIXES = (".mod", ".modx", ".sys")
+STATIC_ERRORS = 2
+
+
+def programs(folder: Path) -> list[Path]:
+    """The module files under ``folder``, one per distinct text, in path order."""
+    seen: set[str] = set()
+    found = []
+    for path in sorted(folder.rglob("*")):
+        if not path.is_file() or path.suffix.lower() not in SUFFIXES:
+            continue
+        digest = hashlib.sha1(path.read_bytes()).hexdigest()
+        if digest not in seen:
+            seen.add(digest)
+            found.append(path)
+    return found
+
+
+def rapidmc(*words: str, timeout: float) -> tuple[int, str]:
+    """Exit code and stdout + stderr of one rapidmc command (exit -1: it timed out)."""
+    command = [sys.executable, "-m", "rapidmc", *words]
+    try:
+        done = subprocess.run(command, capture_output=True, text=True, timeout=timeout,
+                              errors="replace")
+    except subprocess.TimeoutExpired:
+        return -1, ""
+    return done.returncode, done.stdout + done.stderr
+
+
+def check(path: Path, options: list[str], stubs: bool, timeout: float) -> tuple[int, str, bool]:
+    """(exit code, report, stubbed) of one program, with stubs when it needs them."""
+    code, report = rapidmc("check", str(path), "--quiet", *options, timeout=timeout)
+    if code != STATIC_ERRORS or not stubs:
+        return code, report, False
+    with tempfile.TemporaryDirectory() as scratch:
+        missing = os.path.join(scratch, "Missing.mod")
+        made, _ = rapidmc("stubs", str(path), "-o", missing, timeout=timeout)
+        if made != 0:
+            return code, report, False
+        code, report = rapidmc("check", str(path), missing, "--quiet", *options,
+                               timeout=timeout)
+        return code, report.replace(missing, "Missing.mod"), True
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("folder", type=Path)
+    parser.add_argument("--max-states", default="20000")
+    parser.add_argument("--max-seconds", default="20")
+    parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--no-stubs", action="store_true")
+    parser.add_argument("--list", action="store_true")
+    parser.add_argument("--keep", type=Path, default=None)
+    parser.add_argument("extra", nargs="*", help="options for every check (after --)")
+    args = parser.parse_args()
+    options = ["--max-states", args.max_states, "--max-seconds", args.max_seconds, *args.extra]
+    files = programs(args.folder)
+    timeout = 10 * float(args.max_seconds) + 60
+
+    def one(path: Path):
+        return path, *check(path, options, not args.no_stubs, timeout)
+
+    with ThreadPoolExecutor(args.jobs) as pool:
+        outcomes = list(pool.map(one, files))
+    violated = [(path, report, stubbed) for path, code, report, stubbed in outcomes if code == 1]
+    if args.keep is not None:
+        args.keep.mkdir(parents=True, exist_ok=True)
+    for path, report, stubbed in violated:
+        relative = path.relative_to(args.folder)
+        if args.list:
+            longest = max(map(len, report.splitlines()), default=0)
+            print(f"{len(report.encode()):>9,} B  longest {longest:>7,}  "
+                  f"{'stubs ' if stubbed else ''}{relative}")
+        if args.keep is not None:
+            (args.keep / (str(relative).replace("/", "__") + ".txt")).write_text(report)
+    codes = [code for _, code, _, _ in outcomes]
+    print(f"programs: {len(files)} (exit 0: {codes.count(0)}, 1: {codes.count(1)}, "
+          f"2: {codes.count(2)}, 3: {codes.count(3)}, 4: {codes.count(4)}, "
+          f"timed out: {codes.count(-1)})")
+    if not violated:
+        print("no program with a violation")
+        return 0
+    sizes = [len(report.encode()) for _, report, _ in violated]
+    lines = [len(line) for _, report, _ in violated for line in report.splitlines()]
+    print(f"violations: {len(violated)} programs; text report median {statistics.median(sizes):,.0f} B, "
+          f"max {max(sizes):,} B; longest line {max(lines):,} characters")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,1113 @@
+/* The compiled search core of rapidmc: a state table and the emptiness search in C.
+ *
+ * Optional: setup.py builds it when a C compiler is at hand, and the pure Python engine
+ * (states.py, emptiness.py) stays the reference; rapidmc/check/native.py says which
+ * engine runs.  Both engines give every state the same id and explore in the same order,
+ * so verdicts, counterexamples and counts are identical (tests/test_native_engine.py).
+ *
+ * Table: the hot path of ``states.StateTable.intern`` and ``__getitem__`` for collapsed
+ * states.  A state is split by the model's ``split_state``; its first two components are
+ * looked up in the Python dicts the Python table keeps (rare new ones are stored by the
+ * Python methods ``_add_component`` and ``_tail_id``), the (first component, tail) pair
+ * becomes a head id in a native hash table, and the 64-bit key (head << 32 | second) of
+ * the state finds its id in a native open-addressing table (filled up to three quarters:
+ * the keys are mixed well): 8 to 10 bytes of key and 5 to 11 of slots per state, nothing
+ * per state in Python objects.
+ *
+ * CycleSearch: Couvreur's emptiness check (emptiness.py's ``_explore_from``) with its
+ * numbers, dead flags, stacks and path in native arrays; the product's successors still
+ * come from the Python ``successor_keys``.
+ *
+ * breadth_first: reachability.py's unlabelled loop (the run-time error search) over a
+ * Table; the model's step, the predicate, the observer and the graph's rows stay Python
+ * calls.
+ */
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+#include <stdint.h>
+#include <string.h>
+
+#define EMPTY (-1)
+#define FIRST_CAPACITY 1024
+
+static uint64_t mix64(uint64_t x)
+{
+    /* splitmix64's finaliser: every bit of the key reaches the slot index */
+    x ^= x >> 30;
+    x *= 0xbf58476d1ce4e5b9ULL;
+    x ^= x >> 27;
+    x *= 0x94d049bb133111ebULL;
+    x ^= x >> 31;
+    return x;
+}
+
+/* ------------------------------------------------------------- growable arrays */
+
+/* ``items`` (``*capacity`` items of ``size`` bytes) with room for ``wanted`` items, moved
+ * when they are doubled (from 256) until they fit; NULL when out of memory. */
+static void *reserve(void *items, Py_ssize_t *capacity, size_t size, Py_ssize_t wanted)
+{
+    if (wanted <= *capacity)
+        return items;
+    Py_ssize_t grown = *capacity ? *capacity : 256;
+    while (grown < wanted)
+        grown *= 2;
+    void *moved = PyMem_Realloc(items, grown * size);
+    if (moved == NULL)
+        return PyErr_NoMemory();
+    *capacity = grown;
+    return moved;
+}
+
+typedef struct {          /* a growable array of numbers below 2**31 */
+    int32_t *items;
+    Py_ssize_t length, capacity;
+} Int32Vector;
+
+static int vector32_push(Int32Vector *vector, int64_t item)
+{
+    int32_t *items = reserve(vector->items, &vector->capacity, sizeof(int32_t),
+                             vector->length + 1);
+    if (items == NULL)
+        return -1;
+    vector->items = items;
+    vector->items[vector->length++] = (int32_t)item;
+    return 0;
+}
+
+static void vector32_free(Int32Vector *vector)
+{
+    PyMem_Free(vector->items);
+    vector->items = NULL;
+    vector->length = vector->capacity = 0;
+}
+
+/* ======================================================================== Table */
+
+typedef struct {
+    PyObject_HEAD
+    PyObject *split, *join;          /* the model's split_state and join_state */
+    PyObject *components0, *components1;   /* part -> id (dicts of the Python table) */
+    PyObject *values0, *values1;     /* id -> part (lists of the Python table) */
+    PyObject *tail_parts;            /* tail id -> tuple of the parts after the first two */
+    PyObject *last_tail;             /* the tail last looked up (a tuple) and its id */
+    Py_ssize_t last_tail_id;
+    /* heads: (first component id, tail id) -> head id */
+    int32_t *head_first, *head_tail;
+    Py_ssize_t heads, head_capacity;
+    int32_t *head_slots;
+    uint64_t head_mask;
+    /* states: id -> key, and the open-addressing index key -> id */
+    int64_t *keys;
+    Py_ssize_t count, key_capacity;
+    int32_t *slots;
+    uint64_t mask;
+} Table;
+
+static int32_t *new_slots(Py_ssize_t capacity)
+{
+    int32_t *slots = PyMem_Malloc(capacity * sizeof(int32_t));
+    if (slots == NULL) {
+        PyErr_NoMemory();
+        return NULL;
+    }
+    memset(slots, 0xff, capacity * sizeof(int32_t));     /* every slot EMPTY */
+    return slots;
+}
+
+static PyObject *Table_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
+{
+    Table *self = (Table *)type->tp_alloc(type, 0);
+    if (self == NULL)
+        return NULL;
+    self->last_tail_id = EMPTY;
+    self->slots = new_slots(FIRST_CAPACITY);
+    self->head_slots = new_slots(FIRST_CAPACITY);
+    if (self->slots == NULL || self->head_slots == NULL) {
+        Py_DECREF(self);
+        return NULL;
+    }
+    self->mask = self->head_mask = FIRST_CAPACITY - 1;
+    return (PyObject *)self;
+}
+
+static int Table_traverse(Table *self, visitproc visit, void *arg)
+{
+    Py_VISIT(self->split);
+    Py_VISIT(self->join);
+    Py_VISIT(self->components0);
+    Py_VISIT(self->components1);
+    Py_VISIT(self->values0);
+    Py_VISIT(self->values1);
+    Py_VISIT(self->tail_parts);
+    Py_VISIT(self->last_tail);
+    return 0;
+}
+
+static int Table_clear(Table *self)
+{
+    Py_CLEAR(self->split);
+    Py_CLEAR(self->join);
+    Py_CLEAR(self->components0);
+    Py_CLEAR(self->components1);
+    Py_CLEAR(self->values0);
+    Py_CLEAR(self->values1);
+    Py_CLEAR(self->tail_parts);
+    Py_CLEAR(self->last_tail);
+    return 0;
+}
+
+static void Table_dealloc(Table *self)
+{
+    PyObject_GC_UnTrack(self);
+    Table_clear(self);
+    PyMem_Free(self->head_first);
+    PyMem_Free(self->head_tail);
+    PyMem_Free(self->head_slots);
+    PyMem_Free(self->keys);
+    PyMem_Free(self->slots);
+    Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+/* the Python table's attribute ``name``, item ``index`` when ``index`` >= 0 (a new reference) */
+static PyObject *attribute_item(PyObject *self, const char *name, Py_ssize_t index)
+{
+    PyObject *value = PyObject_GetAttrString(self, name);
+    if (value == NULL || index < 0)
+        return value;
+    PyObject *item = PySequence_GetItem(value, index);
+    Py_DECREF(value);
+    return item;
+}
+
+/* Bind the Python table's split/join and, once its components exist, its dicts and lists. */
+static int table_bind(Table *self, Py_ssize_t width)
+{
+    if (self->split == NULL) {
+        self->split = attribute_item((PyObject *)self, "_split", -1);
+        self->join = attribute_item((PyObject *)self, "_join", -1);
+        if (self->split == NULL || self->join == NULL)
+            return -1;
+    }
+    if (width < 0 || self->components0 != NULL)
+        return 0;
+    PyObject *started = PyObject_CallMethod((PyObject *)self, "_start", "n", width);
+    if (started == NULL)
+        return -1;
+    Py_DECREF(started);
+    self->components0 = attribute_item((PyObject *)self, "_components", 0);
+    self->components1 = attribute_item((PyObject *)self, "_components", 1);
+    self->values0 = attribute_item((PyObject *)self, "_values", 0);
+    self->values1 = attribute_item((PyObject *)self, "_values", 1);
+    self->tail_parts = attribute_item((PyObject *)self, "_tail_parts", -1);
+    if (self->components0 == NULL || self->components1 == NULL || self->values0 == NULL ||
+        self->values1 == NULL || self->tail_parts == NULL)
+        return -1;
+    if (!PyDict_CheckExact(self->components0) || !PyDict_CheckExact(self->components1) ||
+        !PyList_CheckExact(self->values0) || !PyList_CheckExact(self->values1) ||
+        !PyList_CheckExact(self->tail_parts)) {
+        PyErr_SetString(PyExc_TypeError, "native table: components must be dicts and lists");
+        return -1;
+    }
+    return 0;
+}
+
+static Py_ssize_t as_index(PyObject *number)
+{
+    if (number == NULL)
+        return -1;
+    Py_ssize_t value = PyLong_AsSsize_t(number);
+    Py_DECREF(number);
+    return value;
+}
+
+/* The id of component ``index`` (0 or 1) of a state, stored by the Python table when new. */
+static Py_ssize_t component_id(Table *self, int index, PyObject *part)
+{
+    PyObject *components = index == 0 ? self->components0 : self->components1;
+    PyObject *found = PyDict_GetItemWithError(components, part);
+    if (found != NULL)
+        return PyLong_AsSsize_t(found);
+    if (PyErr_Occurred())
+        return -1;
+    return as_index(PyObject_CallMethod((PyObject *)self, "_add_component", "iO", index, part));
+}
+
+/* The tail id of parts[2:], the last one's when they equal the last tail's. */
+static Py_ssize_t tail_id(Table *self, PyObject *parts)
+{
+    Py_ssize_t length = PyTuple_GET_SIZE(parts) - 2;
+    PyObject *last = self->last_tail;
+    if (last != NULL && PyTuple_GET_SIZE(last) == length) {
+        Py_ssize_t i;
+        for (i = 0; i < length; i++) {
+            PyObject *a = PyTuple_GET_ITEM(parts, i + 2), *b = PyTuple_GET_ITEM(last, i);
+            if (a == b)
+                continue;
+            int equal = PyObject_RichCompareBool(a, b, Py_EQ);
+            if (equal < 0)
+                return -1;
+            if (!equal)
+                break;
+        }
+        if (i == length)
+            return self->last_tail_id;
+    }
+    PyObject *tail = PyTuple_GetSlice(parts, 2, length + 2);
+    if (tail == NULL)
+        return -1;
+    Py_ssize_t found = as_index(PyObject_CallMethod((PyObject *)self, "_tail_id", "(O)", tail));
+    if (found < 0) {
+        Py_DECREF(tail);
+        return -1;
+    }
+    Py_XSETREF(self->last_tail, tail);
+    self->last_tail_id = found;
+    return found;
+}
+
+static uint64_t head_key(Table *self, Py_ssize_t head)
+{
+    return ((uint64_t)self->head_first[head] << 32) | (uint32_t)self->head_tail[head];
+}
+
+static uint64_t state_key(Table *self, Py_ssize_t id)
+{
+    return (uint64_t)self->keys[id];
+}
+
+/* ``*slots`` (an index of ``count`` entries whose keys ``key_of`` gives) twice as large */
+static int grow_index(Table *self, int32_t **slots, uint64_t *mask, Py_ssize_t count,
+                      uint64_t (*key_of)(Table *, Py_ssize_t))
+{
+    uint64_t capacity = (*mask + 1) * 2;
+    int32_t *grown = new_slots(capacity);
+    if (grown == NULL)
+        return -1;
+    for (Py_ssize_t entry = 0; entry < count; entry++) {
+        uint64_t position = mix64(key_of(self, entry)) & (capacity - 1);
+        while (grown[position] != EMPTY)
+            position = (position + 1) & (capacity - 1);
+        grown[position] = (int32_t)entry;
+    }
+    PyMem_Free(*slots);
+    *slots = grown;
+    *mask = capacity - 1;
+    return 0;
+}
+
+/* The head id of (first, tail), added when new. */
+static Py_ssize_t head_id(Table *self, Py_ssize_t first, Py_ssize_t tail)
+{
+    uint64_t position = mix64(((uint64_t)first << 32) | (uint32_t)tail) & self->head_mask;
+    for (;;) {
+        int32_t head = self->head_slots[position];
+        if (head == EMPTY)
+            break;
+        if (self->head_first[head] == first && self->head_tail[head] == tail)
+            return head;
+        position = (position + 1) & self->head_mask;
+    }
+    if (self->heads == self->head_capacity) {
+        Py_ssize_t capacity = self->head_capacity;     /* (both arrays grow alike) */
+        int32_t *firsts = reserve(self->head_first, &capacity, sizeof(int32_t), self->heads + 1);
+        if (firsts == NULL)
+            return -1;
+        self->head_first = firsts;
+        int32_t *tails = reserve(self->head_tail, &self->head_capacity, sizeof(int32_t),
+                                 self->heads + 1);
+        if (tails == NULL)
+            return -1;
+        self->head_tail = tails;
+    }
+    Py_ssize_t head = self->heads++;
+    self->head_first[head] = (int32_t)first;
+    self->head_tail[head] = (int32_t)tail;
+    self->head_slots[position] = (int32_t)head;
+    if ((uint64_t)self->heads * 2 > self->head_mask + 1 &&
+        grow_index(self, &self->head_slots, &self->head_mask, self->heads, head_key) < 0)
+        return -1;
+    return head;
+}
+
+/* The id of ``state`` (-1 when new and not ``add``; -2 on an error); ``*is_new`` says
+ * whether it was new. */
+static Py_ssize_t table_intern(Table *self, PyObject *state, int add, int *is_new)
+{
+    if (self->split == NULL && table_bind(self, -1) < 0)
+        return -2;
+    PyObject *parts = PyObject_CallOneArg(self->split, state);
+    if (parts == NULL)
+        return -2;
+    if (!PyTuple_CheckExact(parts) || PyTuple_GET_SIZE(parts) < 2) {
+        PyErr_SetString(PyExc_TypeError, "split_state must return a tuple of 2 or more parts");
+        goto failed;
+    }
+    if (self->components0 == NULL && table_bind(self, PyTuple_GET_SIZE(parts)) < 0)
+        goto failed;
+    Py_ssize_t first = component_id(self, 0, PyTuple_GET_ITEM(parts, 0));
+    if (first < 0)
+        goto failed;
+    Py_ssize_t second = component_id(self, 1, PyTuple_GET_ITEM(parts, 1));
+    if (second < 0)
+        goto failed;
+    Py_ssize_t tail = tail_id(self, parts);
+    if (tail < 0)
+        goto failed;
+    Py_DECREF(parts);
+    Py_ssize_t head = head_id(self, first, tail);
+    if (head < 0)
+        return -2;
+    int64_t key = ((int64_t)head << 32) | (uint32_t)second;
+    uint64_t position = mix64((uint64_t)key) & self->mask;
+    for (;;) {
+        int32_t id = self->slots[position];
+        if (id == EMPTY)
+            break;
+        if (self->keys[id] == key) {
+            *is_new = 0;
+            return id;
+        }
+        position = (position + 1) & self->mask;
+    }
+    *is_new = 1;
+    if (!add)
+        return -1;
+    if (self->count == self->key_capacity) {
+        Py_ssize_t capacity = self->key_capacity ? self->key_capacity + self->key_capacity / 4
+                                                 : FIRST_CAPACITY;
+        int64_t *keys = PyMem_Realloc(self->keys, capacity * sizeof(int64_t));
+        if (keys == NULL) {
+            PyErr_NoMemory();
+            return -2;
+        }
+        self->keys = keys;
+        self->key_capacity = capacity;
+    }
+    Py_ssize_t id = self->count++;
+    self->keys[id] = key;
+    self->slots[position] = (int32_t)id;
+    if ((uint64_t)self->count * 4 > (self->mask + 1) * 3 &&
+        grow_index(self, &self->slots, &self->mask, self->count, state_key) < 0)
+        return -2;
+    return id;
+failed:
+    Py_DECREF(parts);
+    return -2;
+}
+
+/* The state of ``id``, rebuilt by the model's join_state (a new reference). */
+static PyObject *table_state(Table *self, Py_ssize_t id)
+{
+    if (id < 0 || id >= self->count) {
+        PyErr_SetString(PyExc_IndexError, "state id out of range");
+        return NULL;
+    }
+    int64_t key = self->keys[id];
+    Py_ssize_t head = (Py_ssize_t)(key >> 32), second = (Py_ssize_t)(key & 0xffffffff);
+    PyObject *tail = PyList_GET_ITEM(self->tail_parts, self->head_tail[head]);
+    Py_ssize_t length = PyTuple_GET_SIZE(tail);
+    PyObject *parts = PyTuple_New(length + 2);
+    if (parts == NULL)
+        return NULL;
+    PyObject *item = PyList_GET_ITEM(self->values0, self->head_first[head]);
+    Py_INCREF(item);
+    PyTuple_SET_ITEM(parts, 0, item);
+    item = PyList_GET_ITEM(self->values1, second);
+    Py_INCREF(item);
+    PyTuple_SET_ITEM(parts, 1, item);
+    for (Py_ssize_t i = 0; i < length; i++) {
+        item = PyTuple_GET_ITEM(tail, i);
+        Py_INCREF(item);
+        PyTuple_SET_ITEM(parts, i + 2, item);
+    }
+    PyObject *state = PyObject_CallOneArg(self->join, parts);
+    Py_DECREF(parts);
+    return state;
+}
+
+static PyObject *Table_intern(Table *self, PyObject *const *args, Py_ssize_t nargs,
+                              PyObject *kwnames)
+{
+    Py_ssize_t keywords = kwnames == NULL ? 0 : PyTuple_GET_SIZE(kwnames);
+    if (nargs < 1 || nargs + keywords > 2 ||
+        (keywords == 1 && !PyUnicode_Check(PyTuple_GET_ITEM(kwnames, 0))) ||
+        (keywords == 1 && PyUnicode_CompareWithASCIIString(PyTuple_GET_ITEM(kwnames, 0),
+                                                           "add") != 0)) {
+        PyErr_SetString(PyExc_TypeError, "intern(state, add=True)");
+        return NULL;
+    }
+    int add = 1;
+    if (nargs + keywords == 2 && (add = PyObject_IsTrue(args[1])) < 0)
+        return NULL;
+    int is_new = 0;
+    Py_ssize_t id = table_intern(self, args[0], add, &is_new);
+    if (id == -2)
+        return NULL;
+    PyObject *number = PyLong_FromSsize_t(id);
+    if (number == NULL)
+        return NULL;
+    PyObject *answer = PyTuple_Pack(2, number, is_new ? Py_True : Py_False);
+    Py_DECREF(number);
+    return answer;
+}
+
+static PyObject *Table_native_bytes(Table *self, PyObject *unused)
+{
+    size_t bytes = self->key_capacity * sizeof(int64_t) + (self->mask + 1) * sizeof(int32_t) +
+                   self->head_capacity * 2 * sizeof(int32_t) +
+                   (self->head_mask + 1) * sizeof(int32_t);
+    return PyLong_FromSize_t(bytes);
+}
+
+static Py_ssize_t Table_length(Table *self)
+{
+    return self->count;
+}
+
+static PyObject *Table_item(Table *self, Py_ssize_t id)
+{
+    return table_state(self, id);
+}
+
+static PyMethodDef Table_methods[] = {
+    {"intern", (PyCFunction)(void (*)(void))Table_intern, METH_FASTCALL | METH_KEYWORDS,
+     "intern(state, add=True) -> (id, new): the id of state, stored when new and add "
+     "(id -1 when new and not add)."},
+    {"native_bytes", (PyCFunction)Table_native_bytes, METH_NOARGS,
+     "Bytes of the native arrays: keys, slots and heads."},
+    {NULL}
+};
+
+static PySequenceMethods Table_as_sequence = {
+    .sq_length = (lenfunc)Table_length,
+    .sq_item = (ssizeargfunc)Table_item,
+};
+
+static PyTypeObject TableType = {
+    PyVarObject_HEAD_INIT(NULL, 0)
+    .tp_name = "rapidmc.check._native.Table",
+    .tp_doc = "The hot path of a collapsed state table (subclassed by native_states).",
+    .tp_basicsize = sizeof(Table),
+    .tp_flags = Py_TPFLAGS_DEFAULT | Py_TPFLAGS_BASETYPE | Py_TPFLAGS_HAVE_GC,
+    .tp_new = Table_new,
+    .tp_dealloc = (destructor)Table_dealloc,
+    .tp_traverse = (traverseproc)Table_traverse,
+    .tp_clear = (inquiry)Table_clear,
+    .tp_methods = Table_methods,
+    .tp_as_sequence = &Table_as_sequence,
+};
+
+/* =================================================================== CycleSearch */
+
+typedef struct {
+    PyObject_HEAD
+    PyObject *successor_keys;        /* key -> list of product successor keys */
+    PyObject *budget;                /* the SearchBudget */
+    PyObject *accepting;             /* bytes-like: by automaton state, 1 if accepting */
+    Py_ssize_t width;
+    int32_t *number;                 /* product key -> discovery number, -1: unseen */
+    Py_ssize_t number_length;
+    uint8_t *dead;                   /* by number: 1 once its component is complete */
+    Py_ssize_t stored, dead_capacity;
+    Int32Vector active, roots;       /* numbers of live states; of component roots */
+    uint8_t *root_accepting;         /* parallel to roots */
+    Py_ssize_t root_accepting_capacity;
+    /* the DFS path, the successors still to try (keys: below 2**31, as numbers are) and by
+     * path position the first of its entries in pending */
+    Int32Vector path_keys, pending, path_starts;
+    long long transitions, max_depth;
+} CycleSearch;
+
+static PyObject *CycleSearch_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
+{
+    PyObject *successor_keys, *accepting, *budget;
+    Py_ssize_t width;
+    if (!PyArg_ParseTuple(args, "OOnO", &successor_keys, &accepting, &width, &budget))
+        return NULL;
+    if (!PyBytes_Check(accepting)) {
+        PyErr_SetString(PyExc_TypeError, "accepting must be bytes");
+        return NULL;
+    }
+    CycleSearch *self = (CycleSearch *)type->tp_alloc(type, 0);
+    if (self == NULL)
+        return NULL;
+    Py_INCREF(successor_keys);
+    self->successor_keys = successor_keys;
+    Py_INCREF(accepting);
+    self->accepting = accepting;
+    Py_INCREF(budget);
+    self->budget = budget;
+    self->width = width;
+    return (PyObject *)self;
+}
+
+static int CycleSearch_traverse(CycleSearch *self, visitproc visit, void *arg)
+{
+    Py_VISIT(self->successor_keys);
+    Py_VISIT(self->budget);
+    Py_VISIT(self->accepting);
+    return 0;
+}
+
+static int CycleSearch_clear(CycleSearch *self)
+{
+    Py_CLEAR(self->successor_keys);
+    Py_CLEAR(self->budget);
+    Py_CLEAR(self->accepting);
+    return 0;
+}
+
+static void CycleSearch_dealloc(CycleSearch *self)
+{
+    PyObject_GC_UnTrack(self);
+    CycleSearch_clear(self);
+    PyMem_Free(self->number);
+    PyMem_Free(self->dead);
+    PyMem_Free(self->root_accepting);
+    vector32_free(&self->active);
+    vector32_free(&self->roots);
+    vector32_free(&self->path_keys);
+    vector32_free(&self->path_starts);
+    vector32_free(&self->pending);
+    Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+/* ``number`` long enough for ``key`` (grown by an eighth more, as emptiness.py does) */
+static int cover_key(CycleSearch *self, int64_t key)
+{
+    if (key < self->number_length)
+        return 0;
+    Py_ssize_t length = key + 1 + self->number_length / 8;
+    int32_t *number = PyMem_Realloc(self->number, length * sizeof(int32_t));
+    if (number == NULL) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    memset(number + self->number_length, 0xff,
+           (length - self->number_length) * sizeof(int32_t));
+    self->number = number;
+    self->number_length = length;
+    return 0;
+}
+
+static int push_root(CycleSearch *self, int64_t index, uint8_t accepting)
+{
+    if (vector32_push(&self->roots, index) < 0)
+        return -1;
+    uint8_t *flags = reserve(self->root_accepting, &self->root_accepting_capacity, 1,
+                             self->roots.length);
+    if (flags == NULL)
+        return -1;
+    self->root_accepting = flags;
+    self->root_accepting[self->roots.length - 1] = accepting;
+    return 0;
+}
+
+static int push_dead(CycleSearch *self)
+{
+    uint8_t *dead = reserve(self->dead, &self->dead_capacity, 1, self->stored + 1);
+    if (dead == NULL)
+        return -1;
+    self->dead = dead;
+    self->dead[self->stored++] = 0;
+    return 0;
+}
+
+/* budget.<name>(args...) as a truth value (-1 on an error) */
+static int budget_says(CycleSearch *self, const char *name, const char *format, ...)
+{
+    PyObject *method = PyObject_GetAttrString(self->budget, name);
+    if (method == NULL)
+        return -1;
+    va_list arguments;
+    va_start(arguments, format);
+    PyObject *call_args = Py_VaBuildValue(format, arguments);
+    va_end(arguments);
+    if (call_args == NULL) {
+        Py_DECREF(method);
+        return -1;
+    }
+    PyObject *answer = PyObject_CallObject(method, call_args);
+    Py_DECREF(method);
+    Py_DECREF(call_args);
+    if (answer == NULL)
+        return -1;
+    int truth = PyObject_IsTrue(answer);
+    Py_DECREF(answer);
+    return truth;
+}
+
+/* an integer attribute of ``object``; INT64_MAX for infinity (a float); -1 with an error */
+static int64_t integer_attribute(PyObject *object, const char *name)
+{
+    PyObject *value = PyObject_GetAttrString(object, name);
+    if (value == NULL)
+        return -1;
+    int64_t number = INT64_MAX;
+    if (PyLong_Check(value))
+        number = PyLong_AsLongLong(value);
+    else if (PyFloat_Check(value) && PyFloat_AS_DOUBLE(value) < 9e18)
+        number = (int64_t)PyFloat_AS_DOUBLE(value);
+    Py_DECREF(value);
+    return number;
+}
+
+/* whether ``budget.reason`` is set (-1 with an error) */
+static int budget_stopped(PyObject *budget)
+{
+    PyObject *reason = PyObject_GetAttrString(budget, "reason");
+    if (reason == NULL)
+        return -1;
+    int stopped = reason != Py_None;
+    Py_DECREF(reason);
+    return stopped;
+}
+
+/* The search from one initial key: 1 when an accepting cycle closed (the path is left in
+ * path_keys and the component on roots), 0 when done or stopped by the budget, -1 on error.
+ * One loop, step for step emptiness.py's ``_explore_from`` (push, try the next pending
+ * successor, pop), so that the two engines can be read side by side. */
+static int explore_from(CycleSearch *self, int64_t initial_key)
+{
+    const uint8_t *accepting = (const uint8_t *)PyBytes_AS_STRING(self->accepting);
+    int64_t width = self->width;
+    int64_t max_states = integer_attribute(self->budget, "max_states");
+    int64_t next_checkpoint = integer_attribute(self->budget, "next_checkpoint");
+    if (max_states < 0 || next_checkpoint < 0 || cover_key(self, initial_key) < 0)
+        return -1;
+    self->path_keys.length = self->path_starts.length = self->pending.length = 0;
+    int64_t key = initial_key;
+    for (;;) {
+        if (key >= 0) {         /* push: number it, put its successors on ``pending`` */
+            int64_t index = self->stored;
+            self->number[key] = (int32_t)index;
+            if (push_dead(self) < 0 || vector32_push(&self->active, index) < 0 ||
+                push_root(self, index, accepting[key % width]) < 0)
+                return -1;
+            PyObject *number = PyLong_FromLongLong(key);
+            if (number == NULL)
+                return -1;
+            PyObject *successors = PyObject_CallOneArg(self->successor_keys, number);
+            Py_DECREF(number);
+            if (successors == NULL)
+                return -1;
+            if (!PyList_CheckExact(successors)) {
+                Py_DECREF(successors);
+                PyErr_SetString(PyExc_TypeError, "successor_keys must return a list");
+                return -1;
+            }
+            if (vector32_push(&self->path_starts, self->pending.length) < 0) {
+                Py_DECREF(successors);
+                return -1;
+            }
+            Py_ssize_t count = PyList_GET_SIZE(successors);
+            self->transitions += count;
+            for (Py_ssize_t i = count - 1; i >= 0; i--) {
+                int64_t successor = PyLong_AsLongLong(PyList_GET_ITEM(successors, i));
+                if (successor > INT32_MAX && !PyErr_Occurred())
+                    PyErr_SetString(PyExc_OverflowError, "product key beyond 2**31 "
+                                    "(the Python engine takes it: --engine python)");
+                if (PyErr_Occurred() || cover_key(self, successor) < 0 ||
+                    vector32_push(&self->pending, successor) < 0) {
+                    Py_DECREF(successors);
+                    return -1;
+                }
+            }
+            Py_DECREF(successors);
+            if (vector32_push(&self->path_keys, key) < 0)
+                return -1;
+            if (self->path_keys.length > self->max_depth)
+                self->max_depth = self->path_keys.length;
+            key = -1;
+        }
+        else if (self->path_keys.length == 0)
+            return 0;
+        if (self->pending.length > self->path_starts.items[self->path_starts.length - 1]) {
+            int64_t successor = self->pending.items[--self->pending.length];
+            int64_t index = self->number[successor];
+            if (index < 0) {
+                int64_t stored = self->stored;
+                if (stored >= max_states) {
+                    int may = budget_says(self, "may_store", "(L)", (long long)stored);
+                    if (may <= 0)
+                        return may < 0 ? -1 : 0;
+                }
+                if (stored >= next_checkpoint) {
+                    int going = budget_says(self, "checkpoint", "(LLn)", (long long)stored,
+                                            self->transitions, self->path_keys.length);
+                    if (going <= 0)
+                        return going < 0 ? -1 : 0;
+                    next_checkpoint = integer_attribute(self->budget, "next_checkpoint");
+                    if (next_checkpoint < 0)
+                        return -1;
+                }
+                key = successor;
+            }
+            else if (!self->dead[index]) {
+                uint8_t merged = 0;
+                int32_t *roots = self->roots.items;
+                while (roots[self->roots.length - 1] > index) {
+                    self->roots.length--;
+                    merged |= self->root_accepting[self->roots.length];
+                }
+                self->root_accepting[self->roots.length - 1] |= merged;
+                if (self->root_accepting[self->roots.length - 1])
+                    return 1;
+            }
+        }
+        else {
+            int64_t popped = self->path_keys.items[--self->path_keys.length];
+            self->path_starts.length--;
+            int64_t index = self->number[popped];
+            if (self->roots.items[self->roots.length - 1] == index) {
+                self->roots.length--;
+                while (self->active.length && self->active.items[self->active.length - 1] >= index)
+                    self->dead[self->active.items[--self->active.length]] = 1;
+            }
+        }
+    }
+}
+
+/* (DFS path up to the accepting component's root, set of the component's keys) */
+static PyObject *violation(CycleSearch *self)
+{
+    int64_t root = self->roots.items[self->roots.length - 1];
+    Py_ssize_t depth = self->path_keys.length;
+    while (self->number[self->path_keys.items[depth - 1]] > root)
+        depth--;
+    PyObject *path = PyList_New(depth);
+    PyObject *component = PySet_New(NULL);
+    if (path == NULL || component == NULL)
+        goto failed;
+    for (Py_ssize_t i = 0; i < depth; i++) {
+        PyObject *key = PyLong_FromLongLong(self->path_keys.items[i]);
+        if (key == NULL)
+            goto failed;
+        PyList_SET_ITEM(path, i, key);
+    }
+    for (Py_ssize_t key = 0; key < self->number_length; key++) {
+        int32_t index = self->number[key];
+        if (index >= root && !self->dead[index]) {
+            PyObject *number = PyLong_FromSsize_t(key);
+            if (number == NULL || PySet_Add(component, number) < 0) {
+                Py_XDECREF(number);
+                goto failed;
+            }
+            Py_DECREF(number);
+        }
+    }
+    return Py_BuildValue("(NN)", path, component);
+failed:
+    Py_XDECREF(path);
+    Py_XDECREF(component);
+    return NULL;
+}
+
+static PyObject *CycleSearch_explore_from(CycleSearch *self, PyObject *argument)
+{
+    int64_t key = PyLong_AsLongLong(argument);
+    if (key == -1 && PyErr_Occurred())
+        return NULL;
+    if (key < 0 || key > INT32_MAX) {
+        PyErr_SetString(PyExc_OverflowError, "product key beyond 2**31");
+        return NULL;
+    }
+    int found = explore_from(self, key);
+    if (found < 0)
+        return NULL;
+    if (found == 0)
+        Py_RETURN_NONE;
+    return violation(self);
+}
+
+static PyObject *CycleSearch_contains_key(CycleSearch *self, PyObject *argument)
+{
+    int64_t key = PyLong_AsLongLong(argument);
+    if (key == -1 && PyErr_Occurred())
+        return NULL;
+    return PyBool_FromLong(key >= 0 && key < self->number_length && self->number[key] >= 0);
+}
+
+static PyObject *CycleSearch_number_of(CycleSearch *self, PyObject *argument)
+{
+    int64_t key = PyLong_AsLongLong(argument);
+    if (key == -1 && PyErr_Occurred())
+        return NULL;
+    return PyLong_FromLong(key >= 0 && key < self->number_length ? self->number[key] : -1);
+}
+
+static PyObject *CycleSearch_counts(CycleSearch *self, PyObject *unused)
+{
+    size_t bytes = self->number_length * sizeof(int32_t) + self->dead_capacity +
+                   (self->active.capacity + self->roots.capacity + self->path_starts.capacity +
+                    self->path_keys.capacity + self->pending.capacity) * sizeof(int32_t) +
+                   self->root_accepting_capacity;
+    return Py_BuildValue("{sn,sL,sL,sn}", "stored", self->stored, "transitions",
+                         self->transitions, "max_depth", self->max_depth, "bytes",
+                         (Py_ssize_t)bytes);
+}
+
+static PyMethodDef CycleSearch_methods[] = {
+    {"explore_from", (PyCFunction)CycleSearch_explore_from, METH_O,
+     "explore_from(key) -> None, or (path keys, component keys) of an accepting cycle."},
+    {"contains_key", (PyCFunction)CycleSearch_contains_key, METH_O,
+     "Whether the search has stored the product key."},
+    {"number_of", (PyCFunction)CycleSearch_number_of, METH_O,
+     "The discovery number of a product key (-1: unseen)."},
+    {"counts", (PyCFunction)CycleSearch_counts, METH_NOARGS,
+     "{stored, transitions, max_depth, bytes} of the search so far."},
+    {NULL}
+};
+
+static PyTypeObject CycleSearchType = {
+    PyVarObject_HEAD_INIT(NULL, 0)
+    .tp_name = "rapidmc.check._native.CycleSearch",
+    .tp_doc = "CycleSearch(successor_keys, accepting, width, budget): Couvreur's emptiness "
+              "check in native arrays.",
+    .tp_basicsize = sizeof(CycleSearch),
+    .tp_flags = Py_TPFLAGS_DEFAULT | Py_TPFLAGS_HAVE_GC,
+    .tp_new = CycleSearch_new,
+    .tp_dealloc = (destructor)CycleSearch_dealloc,
+    .tp_traverse = (traverseproc)CycleSearch_traverse,
+    .tp_clear = (inquiry)CycleSearch_clear,
+    .tp_methods = CycleSearch_methods,
+};
+
+/* ================================================================ breadth first */
+
+/* ``sequence.append(number)`` for an array of ints */
+static int append_number(PyObject *sequence, int64_t number)
+{
+    PyObject *item = PyLong_FromLongLong(number);
+    if (item == NULL)
+        return -1;
+    PyObject *done = PyObject_CallMethod(sequence, "append", "(O)", item);
+    Py_DECREF(item);
+    if (done == NULL)
+        return -1;
+    Py_DECREF(done);
+    return 0;
+}
+
+/* Depths without an array: a breadth-first search stores states level by level, so the
+ * states of the level being expanded end where the stored states ended when its first
+ * state was expanded (``level_end``), and each new state is one level deeper. */
+typedef struct {                 /* what one run of the breadth-first loop works with */
+    Table *table;
+    PyObject *targets_of, *observe, *predicate, *parent, *depth, *budget, *record;
+    int deadlock_is_target;
+    long depth_now, deepest;     /* the depth of the states expanded now; of the last stored */
+    Py_ssize_t level_end;        /* the first id one level deeper than depth_now */
+    int64_t max_states, next_checkpoint;
+    long long transitions, deadlocks;
+} BreadthFirst;
+
+enum { GO_ON = 0, FOUND = 1, STOPPED = 2, FAILED = -1 };
+
+/* Store one successor of ``frontier`` (its id in ``*id``): GO_ON, FOUND (the predicate
+ * holds there), STOPPED (the budget says so) or FAILED. */
+static int visit_successor(BreadthFirst *search, Py_ssize_t frontier, PyObject *successor,
+                           Py_ssize_t *id)
+{
+    Py_ssize_t stored = search->table->count;
+    int is_new = 0;
+    *id = table_intern(search->table, successor, stored < search->max_states, &is_new);
+    if (*id == -2)
+        return FAILED;
+    if (!is_new)
+        return GO_ON;
+    if (*id < 0) {              /* the state limit: ``may_store`` sets the reason */
+        PyObject *answer = PyObject_CallMethod(search->budget, "may_store", "(n)", stored);
+        Py_XDECREF(answer);
+        return answer == NULL ? FAILED : STOPPED;
+    }
+    long depth = search->deepest = search->depth_now + 1;
+    if (append_number(search->parent, frontier) < 0)
+        return FAILED;
+    if (*id >= search->next_checkpoint) {
+        PyObject *answer = PyObject_CallMethod(search->budget, "checkpoint", "(nLi)", *id,
+                                               search->transitions, (int)depth);
+        if (answer == NULL)
+            return FAILED;
+        Py_DECREF(answer);
+        search->next_checkpoint = integer_attribute(search->budget, "next_checkpoint");
+        if (search->next_checkpoint < 0)
+            return FAILED;
+    }
+    PyObject *answer = PyObject_CallOneArg(search->predicate, successor);
+    if (answer == NULL)
+        return FAILED;
+    int bad = PyObject_IsTrue(answer);
+    Py_DECREF(answer);
+    if (bad)
+        return bad < 0 ? FAILED : FOUND;
+    int stopped = budget_stopped(search->budget);
+    return stopped < 0 ? FAILED : stopped ? STOPPED : GO_ON;
+}
+
+/* Expand state ``frontier``: GO_ON, FOUND (``*target``), STOPPED or FAILED. */
+static int expand_state(BreadthFirst *search, Py_ssize_t frontier, Py_ssize_t *target)
+{
+    PyObject *state = table_state(search->table, frontier);
+    if (state == NULL)
+        return FAILED;
+    PyObject *successors = PyObject_CallOneArg(search->targets_of, state);
+    PyObject *ids = NULL;
+    int outcome = FAILED;
+    if (successors == NULL)
+        goto done;
+    if (!PyList_CheckExact(successors) && !PyTuple_CheckExact(successors)) {
+        PyErr_SetString(PyExc_TypeError, "successor_states must return a list or tuple");
+        goto done;
+    }
+    if (search->observe != Py_None) {
+        PyObject *seen = PyObject_CallFunctionObjArgs(search->observe, state, successors, NULL);
+        if (seen == NULL)
+            goto done;
+        Py_DECREF(seen);
+    }
+    Py_ssize_t count = PySequence_Fast_GET_SIZE(successors);
+    search->transitions += count;
+    if (count == 0) {
+        search->deadlocks++;
+        if (search->deadlock_is_target) {
+            *target = frontier;
+            outcome = FOUND;
+            goto done;
+        }
+    }
+    ids = PyList_New(0);
+    if (ids == NULL)
+        goto done;
+    for (Py_ssize_t i = 0; i < count; i++) {
+        Py_ssize_t id;
+        outcome = visit_successor(search, frontier, PySequence_Fast_GET_ITEM(successors, i), &id);
+        if (outcome == FOUND)
+            *target = id;
+        if (outcome != GO_ON)
+            goto done;
+        PyObject *number = PyLong_FromSsize_t(id);
+        if (number == NULL || PyList_Append(ids, number) < 0) {
+            Py_XDECREF(number);
+            outcome = FAILED;
+            goto done;
+        }
+        Py_DECREF(number);
+    }
+    outcome = GO_ON;
+    if (search->record != Py_None) {
+        PyObject *recorded = PyObject_CallFunctionObjArgs(search->record, state, ids, NULL);
+        if (recorded == NULL)
+            outcome = FAILED;
+        Py_XDECREF(recorded);
+    }
+done:
+    Py_DECREF(state);
+    Py_XDECREF(successors);
+    Py_XDECREF(ids);
+    return outcome;
+}
+
+/* depth[index] of the depth array (-1 with an error) */
+static long depth_at(PyObject *depth, Py_ssize_t index)
+{
+    PyObject *item = PySequence_GetItem(depth, index);
+    long value = item == NULL ? -1 : PyLong_AsLong(item);
+    Py_XDECREF(item);
+    return value;
+}
+
+/* The levels where the loop takes over: the depth of ``frontier`` and where its level
+ * ends, from the depths the Python loop stored (0 or -1 with an error). */
+static int find_level(BreadthFirst *search, Py_ssize_t frontier)
+{
+    Py_ssize_t known = PySequence_Length(search->depth);
+    if (known <= frontier) {
+        PyErr_SetString(PyExc_ValueError, "breadth_first: the frontier has no depth");
+        return -1;
+    }
+    if ((search->depth_now = depth_at(search->depth, frontier)) < 0 ||
+        (search->deepest = depth_at(search->depth, known - 1)) < 0)
+        return -1;
+    search->level_end = frontier + 1;
+    while (search->level_end < known) {
+        long depth = depth_at(search->depth, search->level_end);
+        if (depth < 0)
+            return -1;
+        if (depth > search->depth_now)
+            break;
+        search->level_end++;
+    }
+    return 0;
+}
+
+static PyObject *breadth_first(PyObject *module, PyObject *args)
+{
+    BreadthFirst search = {0};
+    Py_ssize_t frontier;
+    if (!PyArg_ParseTuple(args, "O!nOOOOOOOiLL", &TableType, &search.table, &frontier,
+                          &search.targets_of, &search.observe, &search.predicate,
+                          &search.parent, &search.depth, &search.budget, &search.record,
+                          &search.deadlock_is_target, &search.transitions, &search.deadlocks))
+        return NULL;
+    if (frontier >= search.table->count)
+        return Py_BuildValue("(nLLl)", (Py_ssize_t)-1, search.transitions, search.deadlocks,
+                             -1L);
+    if (find_level(&search, frontier) < 0)
+        return NULL;
+    search.max_states = integer_attribute(search.budget, "max_states");
+    search.next_checkpoint = integer_attribute(search.budget, "next_checkpoint");
+    Py_ssize_t target = -1;
+    int outcome = search.max_states < 0 || search.next_checkpoint < 0 ? FAILED : GO_ON;
+    while (outcome == GO_ON && frontier < search.table->count) {
+        if (frontier == search.level_end) {     /* the next level's first state */
+            search.depth_now++;
+            search.level_end = search.table->count;
+        }
+        outcome = expand_state(&search, frontier, &target);
+        if (outcome == GO_ON)
+            frontier++;
+    }
+    if (outcome == FAILED)
+        return NULL;
+    return Py_BuildValue("(nLLl)", outcome == FOUND ? target : -1, search.transitions,
+                         search.deadlocks, search.deepest);
+}
+
+static PyMethodDef module_functions[] = {
+    {"breadth_first", breadth_first, METH_VARARGS,
+     "breadth_first(table, frontier, targets_of, observe, predicate, parent, depth, budget, "
+     "record, deadlock_is_target, transitions, deadlocks) -> (target id or -1, transitions, "
+     "deadlocks, depth of the last stored state): reachability's loop from ``frontier`` on "
+     "(see reachability.py); ``depth`` is read, not extended."},
+    {NULL}
+};
+
+/* ====================================================================== module */
+
+static struct PyModuleDef native_module = {
+    PyModuleDef_HEAD_INIT,
+    .m_name = "rapidmc.check._native",
+    .m_doc = "The compiled search core of rapidmc (see rapidmc/check/native.py).",
+    .m_size = -1,
+    .m_methods = module_functions,
+};
+
+PyMODINIT_FUNC PyInit__native(void)
+{
+    if (PyType_Ready(&TableType) < 0 || PyType_Ready(&CycleSearchType) < 0)
+        return NULL;
+    PyObject *module = PyModule_Create(&native_module);
+    if (module == NULL)
+        return NULL;
+    Py_INCREF(&TableType);
+    Py_INCREF(&CycleSearchType);
+    if (PyModule_AddObject(module, "Table", (PyObject *)&TableType) < 0 ||
+        PyModule_AddObject(module, "CycleSearch", (PyObject *)&CycleSearchType) < 0 ||
+        PyModule_AddIntConstant(module, "VERSION", 1) < 0) {
+        Py_DECREF(module);
+        return NULL;
+    }
+    return module;
+}

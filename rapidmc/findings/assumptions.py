@@ -1,0 +1,243 @@
+"""What a verdict rests on that rapidmc assumed rather than read from the program (issue 19).
+
+A check explores the program as loaded, so a verdict can rest on things no
+loaded module says for sure:
+
+* **stubs**: a module written by ``rapidmc stubs`` (it says so in its header
+  comment) declares the names the program uses and no module declares, with
+  empty routines and neutral values; the real ones may do and hold anything;
+* **fixed controller readings**: the predefined routines that read the
+  controller (``OpMode``, ``ClkRead``, ``ReadCfgData`` ...) answer fixed or
+  sampled values when checking (RMC702, ``fixed_readings``);
+* **PERS data no loaded task writes**: a persistent of a value type that the
+  program reads and no loaded task (nor the environment) can write keeps its
+  initial value here, while on a controller another task or a PC may write it.
+
+``assumptions(program)`` lists them once; ``touched(assumption list, result)``
+keeps those a counterexample executes a statement of (the names each executed
+statement mentions, merged steps expanded), so that a VIOLATED verdict names
+only what its counterexample rests on and HOLDS names everything.
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Iterable, Iterator, Optional
+
+from .. import ast
+from ..check.result import SearchResult
+from ..diagnostics import SourceCache
+from ..load.stubs.module_text import STUB_MARKER
+from ..model.reduction.merging import executed_spans
+from ..semantics.library import registry
+from ..check.result import VIOLATED
+from ..semantics.program import ENVIRONMENT_NAMESPACE, PROGRAM_NAMESPACE, Program
+from ..semantics.types import ArrayType
+from .fixed_readings import fixed_readings
+
+STUB, READING, OTHER_WRITER = "stub", "fixed reading", "other writer"
+VALUE_TYPES = frozenset({"NUM", "DNUM", "BOOL", "STRING"})
+WRITING_MODES = frozenset({"INOUT", "VAR", "PERS"})
+# routines that write data named by a string: then any persistent may be written
+DATA_BY_NAME = frozenset({"SETDATAVAL", "SETALLDATAVAL"})
+_IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+_STRING_OR_COMMENT = re.compile(r'"(?:[^"]|"")*"|!.*$')
+_HEAD_END = re.compile(r";|\b(?:THEN|DO|CASE|DEFAULT)\b", re.IGNORECASE)
+
+
+@dataclass(frozen=True)
+class Assumption:
+    """One thing a verdict may rest on: its kind, the name it is about, and a sentence."""
+
+    kind: str                 # STUB, READING, OTHER_WRITER
+    name: str
+    text: str
+
+    @property
+    def key(self) -> str:
+        return self.name.upper()
+
+
+def assumptions(program: Program) -> tuple[Assumption, ...]:
+    """Every assumption the program's verdicts may rest on, in a stable order."""
+    stub_files = _stub_files(program)
+    found = list(_stubs(program, stub_files))
+    found += [_reading(warning) for warning in fixed_readings(program)]
+    found += list(_unwritten_persistents(program, stub_files))
+    return tuple(found)
+
+
+def touched(all_assumptions: Iterable[Assumption], result: SearchResult,
+            describer=None) -> tuple[Assumption, ...]:
+    """The assumptions whose name a statement of the counterexample mentions."""
+    names = executed_names(result, describer)
+    return tuple(a for a in all_assumptions if a.key in names)
+
+
+def for_verdict(all_assumptions: tuple[Assumption, ...], result: SearchResult,
+                describer=None) -> tuple[str, ...]:
+    """The sentences beside a verdict: what a counterexample touches, else everything."""
+    chosen = touched(all_assumptions, result, describer) if result.verdict == VIOLATED \
+        else all_assumptions
+    return tuple(a.text for a in chosen)
+
+
+def executed_names(result: SearchResult, describer=None) -> frozenset:
+    """Upper-case identifiers of every statement the lasso executes or stands at (strings
+    and comments left out; a compound statement up to its THEN, DO or first CASE), and
+    the names of the choices it makes.  ``describer``: a ``RapidDescriber``, whose
+    ``describe_stack`` says where each state stands (a wait that never ends)."""
+    names: set[str] = set()
+    steps = [*result.prefix, *result.cycle]
+    for label in [step.label for step in steps] + [result.closing_label]:
+        if not isinstance(label, tuple) or len(label) != 3:
+            continue
+        choices, span, _ = label
+        for choice in choices or ():
+            names.update(_identifiers(str(choice[0])))
+        for executed in executed_spans(span):
+            if executed is not None and hasattr(executed, "file"):
+                names.update(_statement_names(executed.file, executed.line,
+                                              executed.end_line or executed.line))
+    describe_stack = getattr(describer, "describe_stack", None)
+    for step in steps if describe_stack is not None else ():
+        for frame in describe_stack(step.state):
+            if frame.file is not None and frame.line:
+                names.update(_statement_names(frame.file, frame.line, frame.line + 3))
+    return frozenset(names)
+
+
+def _statement_names(file: str, first: int, last: int) -> Iterator[str]:
+    lines = (SourceCache.line(file, number) for number in range(first, max(first, last) + 1))
+    text = " ".join(_STRING_OR_COMMENT.sub(" ", line) for line in lines if line is not None)
+    return _identifiers(_HEAD_END.split(text, 1)[0])
+
+
+def _identifiers(text: str) -> Iterator[str]:
+    return (word.upper() for word in _IDENTIFIER.findall(text))
+
+
+# --- stubs ----------------------------------------------------------------------------
+
+
+def _stub_files(program: Program) -> frozenset:
+    """The files of the program that ``rapidmc stubs`` wrote (its marker in the header)."""
+    files = {_file(routine.span) for routine in program.routines} | \
+        {_file(data.span) for data in program.globals}
+    return frozenset(f for f in files if f and _is_stub_file(f))
+
+
+def _file(span) -> Optional[str]:
+    """The file of a declaration (None for the controller's own data, declared nowhere)."""
+    return span.file if span is not None else None
+
+
+def _is_stub_file(file: str) -> bool:
+    for number in range(1, 4):
+        line = SourceCache.line(file, number)
+        if line is not None and STUB_MARKER in line:
+            return True
+    return False
+
+
+def _stubs(program: Program, stub_files: frozenset) -> Iterator[Assumption]:
+    for routine in program.routines:
+        if _file(routine.span) in stub_files and routine.namespace == PROGRAM_NAMESPACE:
+            does = "returns a neutral value" if routine.kind == "FUNC" else "is empty"
+            yield Assumption(STUB, routine.name,
+                             f"stub {routine.name} {does} ({_where(routine.span)})")
+    for data in program.globals:
+        if _file(data.span) in stub_files and data.namespace == PROGRAM_NAMESPACE:
+            yield Assumption(STUB, data.name,
+                             f"stub {data.name} keeps its neutral value ({_where(data.span)})")
+
+
+def _where(span) -> str:
+    return f"{Path(span.file).name}:{span.line}"
+
+
+# --- fixed readings ---------------------------------------------------------------------
+
+
+def _reading(warning) -> Assumption:
+    """From an RMC702 warning: ``OpMode reads a fixed value``."""
+    name = warning.message.split(" ", 1)[0]
+    how = warning.message.split(" reads ", 1)[1].split(" when checking")[0]
+    short = how if len(how) <= 40 else how.split(" (", 1)[0]
+    return Assumption(READING, name, f"{name} reads {short} (RMC702)")
+
+
+# --- persistents another task may write -------------------------------------------------
+
+
+def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[Assumption]:
+    written = possibly_written(program)
+    if written is None:
+        return
+    for data in program.globals:
+        if data.storage != "PERS" or _file(data.span) in (None, *stub_files) or \
+                data.namespace == ENVIRONMENT_NAMESPACE or \
+                data.key in written or not _value_typed(data.type):
+            continue
+        yield Assumption(OTHER_WRITER, data.name,
+                         f"PERS {data.name} keeps its initial value: no loaded task writes it "
+                         f"(another task or a PC may; {_where(data.span)})")
+
+
+def _value_typed(rapid_type) -> bool:
+    element = rapid_type.element if isinstance(rapid_type, ArrayType) else rapid_type
+    return getattr(element, "key", "") in VALUE_TYPES
+
+
+def possibly_written(program: Program) -> Optional[frozenset]:
+    """Upper-case names the loaded code may write: assignment targets, every argument of a
+    procedure call, and function arguments passed to a parameter that is not IN.  None when
+    the code writes data named by a string (then any of it may be written)."""
+    written: set[str] = set()
+    for routine in program.routines:
+        if routine.ast is None:
+            continue
+        for node, _ in ast.walk(routine.ast):
+            if isinstance(node, ast.Assignment):
+                written.update(_root(node.target))
+            elif isinstance(node, ast.LateBindingCall):
+                for argument in node.args:
+                    written.update(_root(argument.value))
+            elif isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
+                if node.name.key in DATA_BY_NAME:
+                    return None
+                procedure = isinstance(node, ast.ProcedureCall)
+                for argument in _by_reference(program, node, procedure):
+                    written.update(_root(argument.value))
+    return frozenset(written)
+
+
+def _by_reference(program: Program, call, procedure: bool) -> Iterator[ast.Argument]:
+    """The arguments of a call that may be written (all, for an unknown routine)."""
+    parameters = _parameters(program, call.name.key, procedure)
+    if parameters is None:
+        yield from call.args
+        return
+    for argument, parameter in registry.matched_parameters(call.args, parameters):
+        if parameter is None or parameter.mode.upper() in WRITING_MODES:
+            yield argument
+
+
+def _parameters(program: Program, key: str, procedure: bool) -> Optional[tuple]:
+    """The parameters of a user or predefined routine (None if unknown)."""
+    for routine in program.routines:
+        if routine.key == key and (routine.kind == "FUNC") != procedure:
+            return routine.parameters
+    entry = registry.lookup_procedure(key) if procedure else registry.lookup_function(key)
+    if entry is None or entry.signature.open_parameters:
+        return None
+    return entry.signature.parameters
+
+
+def _root(expression) -> Iterator[str]:
+    """The data name an expression denotes (``a{i}.x`` -> ``A``), if it denotes one."""
+    while isinstance(expression, (ast.Index, ast.Component)):
+        expression = expression.base
+    if isinstance(expression, ast.NameRef):
+        yield expression.name.key

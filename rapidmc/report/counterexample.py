@@ -1,0 +1,385 @@
+"""A counterexample as text that fits on a screen: what went wrong first, then the steps.
+
+``counterexample_lines(trace)`` writes, under a violated property:
+
+* for a path that ends in an error (an uncaught run-time error, a wait
+  forever), a headline: the error, its line and step, and each datum the
+  failing line reads, with its value and where it got it (its initial value,
+  the step that set it, the input chosen at a step, a stub's value);
+* the initial state limited to the data the steps' lines and the property
+  name, with a count of the rest;
+* each step's changes, values longer than ``WIDTH`` characters shortened
+  (``[[932.4,1557.5,2189.5],...]``);
+* a stretch of steps that repeats the lines just before it (a retry loop,
+  a FOR loop filling an array) folded into one line with the values it
+  leaves behind.
+
+``TextOptions(full=True)`` (``check --full-trace``) prints every initial
+value, every value in full and every step.  JSON and HTML always carry every
+step and full values; the names are the same.
+
+    >>> shorten("[[932.4,1557.5,2189.5],[1,0,0,0],[1,1,0,0]]", 30)
+    '[[932.4,1557.5,2189.5],...]'
+"""
+from __future__ import annotations
+
+import json
+import re
+from dataclasses import dataclass, field
+from typing import Iterable, Optional, Sequence, Union
+
+from ..check.trace import INITIAL, Change, Trace, TraceStep
+
+LOOP_STARTS = "-- loop starts here (repeats forever) --"
+WIDTH = 100            # a value's text in a step, at most (then shortened)
+WAS_WIDTH = 60         # the previous value beside it
+SOURCE_WIDTH = 160     # a source line or FlexPendant output
+LONGEST_PERIOD = 40    # the longest stretch of steps looked for as a repeat
+FEWEST_REPEATS = 3     # a stretch folds when it runs at least this many times in a row
+NET_SHOWN = 4          # values listed after a folded stretch (then a count)
+FOLDED_WIDTH = 40      # each of them, at most
+ALWAYS_SHOWN = ("program", "ERRNO")
+IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+INDEX = re.compile(r"\{[^}]*\}")
+
+
+@dataclass(frozen=True)
+class TextOptions:
+    """How a counterexample is written: ``full`` (nothing left out), the property's ``names``
+    (upper case: the initial state shows them) and the ``stub_data`` (a stub module's data)."""
+
+    full: bool = False
+    names: frozenset = frozenset()
+    stub_data: frozenset = frozenset()
+
+
+@dataclass(frozen=True)
+class Folded:
+    """Steps ``hidden`` that repeat the lines of steps ``first``-``last`` ``times`` more times."""
+
+    first: int
+    last: int
+    times: int
+    hidden: tuple[TraceStep, ...]
+
+
+# --- the whole counterexample ------------------------------------------------------
+
+
+def counterexample_lines(trace: Trace, options: TextOptions = TextOptions()) -> list[str]:
+    """The headline (for a path ending in an error), then the steps with the loop markers."""
+    count = len(trace.prefix) + len(trace.cycle)
+    if trace.cycle:
+        head = (f"  counterexample: {_steps(len(trace.prefix))}, "
+                f"then a loop of {_steps(len(trace.cycle))}")
+    else:
+        head = f"  counterexample: {_steps(count)}"
+    lines = headline_lines(trace, options) + [head]
+    read = options.names | read_names(trace)
+    for item in _folded(trace.prefix, options):
+        lines.extend(_item_lines(item, options, read))
+    if trace.cycle:
+        lines.append("  " + LOOP_STARTS)
+        for item in _folded(trace.cycle, options):
+            lines.extend(_item_lines(item, options, read))
+        lines.extend(step_lines(trace.closing, options))
+        lines.append(f"  -- loop closes: back to the state of step {trace.loop_start} --")
+    return lines
+
+
+def _steps(count: int) -> str:
+    return f"{count} step" if count == 1 else f"{count} steps"
+
+
+def _folded(steps: Sequence[TraceStep], options: TextOptions) -> list:
+    return list(steps) if options.full else fold_repeats(steps)
+
+
+def _item_lines(item: Union[TraceStep, Folded], options: TextOptions,
+                read: frozenset) -> list[str]:
+    if isinstance(item, Folded):
+        return [folded_line(item)]
+    if item.kind == INITIAL and not options.full:
+        return initial_lines(item, read)
+    return step_lines(item, options)
+
+
+# --- one step ----------------------------------------------------------------------
+
+
+def step_lines(step: TraceStep, options: TextOptions = TextOptions()) -> list[str]:
+    """One step: number, location and source, then inputs, output and changed values."""
+    transition = step.transition
+    width = None if options.full else SOURCE_WIDTH
+    if step.kind == INITIAL:
+        head = "initial state"
+    else:
+        source = shorten(transition.source, width)
+        location = transition.location
+        head = f"{location}  {source}" if location else source
+    lines = [f"    step {step.index}  {head}".rstrip()]
+    if transition is not None:
+        lines.extend(f"        input: {name} = {shorten(value, width)}"
+                     for name, value in transition.inputs.items())
+        if transition.output:
+            output = json.dumps(transition.output, ensure_ascii=False)
+            lines.append(f"        output: {shorten(output, width)}")
+    lines.extend(f"        {change_text(change, options.full)}" for change in step.changes)
+    return lines
+
+
+def change_text(change: Change, full: bool = False) -> str:
+    """``x = 1  (was 0)``; values shortened unless ``full``."""
+    new_width, old_width = (None, None) if full else (WIDTH, WAS_WIDTH)
+    if change.new is None:
+        if change.old is None:
+            return f"{change.name} (no longer exists)"
+        return f"{change.name} (no longer exists; was {shorten(change.old, old_width)})"
+    if change.old is None:
+        return f"{change.name} = {shorten(change.new, new_width)}"
+    return f"{change.name} = {shorten(change.new, new_width)}  " \
+           f"(was {shorten(change.old, old_width)})"
+
+
+def initial_lines(step: TraceStep, read: frozenset) -> list[str]:
+    """The initial state: the values of the data the trace reads, and a count of the rest."""
+    shown = [change for change in step.changes
+             if change.name in ALWAYS_SHOWN or not read.isdisjoint(data_names(change.name))]
+    lines = [f"    step {step.index}  initial state"]
+    lines.extend(f"        {change_text(change)}" for change in shown)
+    rest = len(step.changes) - len(shown)
+    if rest:
+        lines.append(f"        ({rest} more {'value' if rest == 1 else 'values'} the trace "
+                     "does not read: --full-trace shows them)")
+    return lines
+
+
+def data_names(name: str) -> tuple[str, ...]:
+    """The identifiers a shown name may be about, upper case.
+
+    ``main.reg1{2}`` is routine data (``REG1``) and ``pose.trans`` a record's
+    component (``POSE``): a shown name does not say which, so both are given.
+    """
+    if name.startswith("signal "):
+        name = name[len("signal "):]
+    return tuple(part.upper() for part in INDEX.sub("", name).split(".")[:2])
+
+
+def _inputs_text(step: TraceStep) -> str:
+    """`` from the input TPReadNum = 1`` when the step chose inputs, else nothing."""
+    inputs = step.transition.inputs if step.transition is not None else {}
+    if not inputs:
+        return ""
+    chosen = ", ".join(f"{name} = {value}" for name, value in inputs.items())
+    return f" from the input {chosen}" if len(inputs) == 1 else f" from the inputs {chosen}"
+
+
+def datum_of(name: str, words: Sequence[str]) -> str:
+    """Which datum a shown name is about, given the ``words`` of a line: ``waypoints{2}.trans``
+    is about WAYPOINTS when the line names it, ``main.i`` about I (MAIN is no datum there)."""
+    parts = data_names(name)
+    return parts[0] if parts[0] in words or len(parts) == 1 else parts[1]
+
+
+def read_names(trace: Trace) -> frozenset:
+    """The identifiers of every step's source line, upper case."""
+    steps = [*trace.prefix, *trace.cycle, *([trace.closing] if trace.closing else [])]
+    return frozenset(word.upper() for step in steps if step.transition is not None
+                     for word in IDENTIFIER.findall(step.transition.source))
+
+
+# --- shortening --------------------------------------------------------------------
+
+
+def shorten(text: str, width: Optional[int]) -> str:
+    """``text`` cut to at most ``width`` characters at an element boundary, ending in ``...``.
+
+    An aggregate keeps its first elements and its closing brackets
+    (``[[932.4,1557.5,2189.5],...]``); a string keeps its closing quote.
+    """
+    if width is None or len(text) <= width:
+        return text
+    depth, quoted, cut, cut_depth = 0, False, -1, 0
+    for position, char in enumerate(text[:width]):
+        if char == '"':
+            quoted = not quoted
+        elif quoted:
+            continue
+        elif char == "[":
+            depth += 1
+        elif char == "]":
+            depth -= 1
+        elif char == "," and position + 4 + depth <= width:    # room for "..." and "]"s
+            cut, cut_depth = position, depth
+    if cut > 0:
+        return text[:cut + 1] + "..." + "]" * cut_depth
+    if quoted or text.startswith('"'):
+        return text[:width - 4] + '..."'
+    return text[:width - 3] + "..."
+
+
+# --- folding repeated steps --------------------------------------------------------
+
+
+def fold_repeats(steps: Sequence[TraceStep]) -> list[Union[TraceStep, Folded]]:
+    """The steps, with each stretch that runs the same lines as the one before it folded.
+
+    A stretch of up to ``LONGEST_PERIOD`` steps repeated at least
+    ``FEWEST_REPEATS`` times in a row (same lines, inputs, output, and the same
+    data changed, elements of an array counted as one) is shown once; the
+    repeats become one ``Folded`` item.
+    """
+    shapes = [_shape(step) for step in steps]
+    items: list[Union[TraceStep, Folded]] = []
+    start = 0
+    while start < len(steps):
+        period, times = _repeat_at(shapes, start)
+        if times < FEWEST_REPEATS:
+            items.append(steps[start])
+            start += 1
+            continue
+        items.extend(steps[start:start + period])
+        hidden = tuple(steps[start + period:start + times * period])
+        items.append(Folded(steps[start].index, steps[start + period - 1].index,
+                            times - 1, hidden))
+        start += times * period
+    return items
+
+
+def _shape(step: TraceStep) -> tuple:
+    transition = step.transition
+    where = (transition.file, transition.line, transition.source,
+             tuple(transition.inputs.items()), transition.output) if transition else None
+    return (step.kind, where, tuple(INDEX.sub("{}", change.name) for change in step.changes))
+
+
+def _repeat_at(shapes: list, start: int) -> tuple[int, int]:
+    """The period and count of the longest run of repeats starting at ``start`` (count 1: none)."""
+    best = (1, 1)
+    for period in range(1, min(LONGEST_PERIOD, (len(shapes) - start) // 2) + 1):
+        block = shapes[start:start + period]
+        times = 1
+        while shapes[start + times * period:start + (times + 1) * period] == block:
+            times += 1
+        if times >= FEWEST_REPEATS and times * period > best[0] * best[1]:
+            best = (period, times)
+    return best
+
+
+def folded_line(folded: Folded) -> str:
+    """``-- steps 9-20 repeat steps 6-8 4 more times; after them: n = 5, ok = TRUE --``."""
+    hidden = folded.hidden
+    what = f"steps {hidden[0].index}-{hidden[-1].index} repeat steps {folded.first}-" \
+           f"{folded.last} {folded.times} more {'time' if folded.times == 1 else 'times'}"
+    net = _grouped(net_changes(hidden))
+    if net:
+        more = len(net) - NET_SHOWN
+        what += f"; after them: {', '.join(net[:NET_SHOWN])}" + \
+            (f" and {more} more" if more > 0 else "")
+    return f"    -- {what} --"
+
+
+def _grouped(changes: list[Change]) -> list[str]:
+    """``n = 5``, and for several elements of one array ``waypoints{2} to waypoints{12} (11
+    values)``: what a folded stretch leaves behind, one entry per datum."""
+    groups: dict[str, list[Change]] = {}
+    for change in changes:
+        groups.setdefault(INDEX.sub("{}", change.name), []).append(change)
+    entries = []
+    for members in groups.values():
+        if len(members) == 1:
+            entries.append(f"{members[0].name} = {shorten(members[0].new, FOLDED_WIDTH)}")
+        else:
+            entries.append(f"{members[0].name} to {members[-1].name} "
+                           f"({len(members)} values)")
+    return entries
+
+
+def net_changes(steps: Iterable[TraceStep]) -> list[Change]:
+    """What a run of steps changed in all: each name's first old and last new value."""
+    first_old: dict[str, Optional[str]] = {}
+    last_new: dict[str, Optional[str]] = {}
+    for step in steps:
+        for change in step.changes:
+            first_old.setdefault(change.name, change.old)
+            last_new[change.name] = change.new
+    return [Change(name, first_old[name], new) for name, new in last_new.items()
+            if new != first_old[name] and new is not None]
+
+
+# --- the headline ------------------------------------------------------------------
+
+
+def headline_lines(trace: Trace, options: TextOptions = TextOptions()) -> list[str]:
+    """For a path that ends in an error: the error, where, and the data its line reads."""
+    if trace.cycle or not trace.ending:
+        return []
+    steps = list(trace.prefix)
+    lines = [f"  error: {trace.ending}"]
+    last = steps[-1]
+    if last.transition is None or not last.transition.location:
+        return lines
+    width = None if options.full else SOURCE_WIDTH
+    lines.append(f"    at step {last.index}, {last.transition.location}:  "
+                 f"{shorten(last.transition.source, width)}")
+    for name, value, origin in read_data(steps, options.stub_data):
+        lines.append(f"    {name} = {shorten(value, None if options.full else WIDTH)}"
+                     f"  ({origin})")
+    return lines
+
+
+def read_data(steps: Sequence[TraceStep], stub_data: frozenset = frozenset()) -> list[tuple]:
+    """(name, value, origin) of each datum the last step's line reads, in the order it names them.
+
+    The value is the one before the last step ran: its latest change in the steps
+    before or its initial value; an input chosen at a step counts as a change of
+    that step.  Of a datum changed part by part, the part the line names
+    (``pk.id``), else the part changed last.
+    """
+    source = steps[-1].transition.source
+    words = list(dict.fromkeys(word.upper() for word in IDENTIFIER.findall(read_part(source))))
+    written = source.replace(" ", "").upper()
+    found = []
+    for word in words:
+        candidates = _latest_values(steps, word, words, stub_data)
+        named = [c for c in candidates if INDEX.sub("", c[0]).replace(" ", "").upper() in written
+                 and "." in c[0] and datum_of(c[0], words) == data_names(c[0])[0]]
+        if candidates:
+            found.append((named or candidates)[0])
+    return found
+
+
+def read_part(source: str) -> str:
+    """What a line reads: of an assignment, the indexes of its target and its value."""
+    target, assigns, value = source.partition(":=")
+    if not assigns or '"' in target:
+        return source
+    return " ".join(re.findall(r"\{([^}]*)\}", target)) + " " + value
+
+
+def _latest_values(steps: Sequence[TraceStep], word: str, words: Sequence[str],
+                   stub_data: frozenset) -> list[tuple]:
+    """The latest values of the datum named ``word`` (one of the line's ``words``) and of its
+    parts before the last step, latest first, up to the datum's own: (name, value, origin)."""
+    found: dict[str, tuple] = {}
+    for step in reversed(steps):
+        transition = step.transition
+        if transition is not None and step is not steps[-1]:
+            for name, value in transition.inputs.items():
+                if name.upper() == word:
+                    return list(found.values()) + [(name, value,
+                                                    f"input chosen at step {step.index}")]
+        if step is steps[-1] and step.kind != INITIAL:
+            continue                           # what the failing step itself wrote
+        for change in reversed(step.changes):
+            if change.new is None or change.name in found or \
+                    datum_of(change.name, words) != word:
+                continue
+            if step.kind == INITIAL:
+                origin = "stub value" if change.name in stub_data else "initial value"
+            else:
+                origin = f"set at step {step.index}" + _inputs_text(step)
+            found[change.name] = (change.name, change.new, origin)
+            if not INDEX.search(change.name) and "." not in change.name.removeprefix("signal "):
+                return list(found.values())    # the whole datum: older parts are in it
+    return list(found.values())

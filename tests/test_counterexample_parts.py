@@ -1,0 +1,102 @@
+"""The pieces of a readable counterexample: values per part, shortening, folding, literals.
+
+The whole text is pinned by tests/test_counterexample_text.py on RAPID programs; these
+tests pin each rule on its own, with the cases the rule distinguishes.
+"""
+from __future__ import annotations
+
+import pytest
+
+from rapidmc.check.trace import INITIAL, TRANSITION, Change, Composite, TraceStep, \
+    TransitionInfo, changes_between
+from rapidmc.model.value_text import value_text
+from rapidmc.report.counterexample import Folded, fold_repeats, read_part, shorten
+from rapidmc.semantics.types import NON_VALUE_TYPES, NUM, POS, ROBTARGET, ArrayType
+
+
+def array(*values: str) -> Composite:
+    return Composite("[" + ",".join(values) + "]",
+                     tuple((f"{{{i}}}", v) for i, v in enumerate(values, start=1)))
+
+
+def pos(x: str, y: str, z: str) -> Composite:
+    return Composite(f"[{x},{y},{z}]", ((".x", x), (".y", y), (".z", z)))
+
+
+@pytest.mark.parametrize("old, new, expected", [
+    # one element of an array: that element
+    (array("0", "0", "0", "0"), array("0", "7", "0", "0"), [("a{2}", "0", "7")]),
+    # a few elements: each; most of them: the whole array
+    (array("0", "0", "0", "0"), array("1", "0", "2", "0"), [("a{1}", "0", "1"),
+                                                          ("a{3}", "0", "2")]),
+    (array("0", "0", "0", "0"), array("1", "2", "3", "4"), [("a", "[0,0,0,0]", "[1,2,3,4]")]),
+    # one component of a record: that component; two: the whole record
+    (pos("1", "2", "3"), pos("1", "5", "3"), [("a.y", "2", "5")]),
+    (pos("1", "2", "3"), pos("4", "5", "3"), [("a", "[1,2,3]", "[4,5,3]")]),
+    # nested: down to the one part that changed
+    (Composite("[[1,2,3]]", (("{1}", pos("1", "2", "3")),)),
+     Composite("[[1,9,3]]", (("{1}", pos("1", "9", "3")),)), [("a{1}.y", "2", "9")]),
+    # plain text: as a whole
+    ("0", "1", [("a", "0", "1")]),
+])
+def test_changes_name_the_part_that_changed(old, new, expected):
+    changes = changes_between({"a": old}, {"a": new})
+    assert [(c.name, c.old, c.new) for c in changes] == expected
+
+
+def test_value_text_names_parts_as_rapid_does():
+    grid = value_text(((1.0, 2.0), (3.0, 4.0)), ArrayType(NUM, (2, 2)))
+    assert grid == "[[1,2],[3,4]]"
+    assert [suffix for suffix, _ in grid.parts] == ["{1,1}", "{1,2}", "{2,1}", "{2,2}"]
+    target = value_text(((1.0, 2.0, 3.0), (1.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0),
+                         (9e9,) * 6), ROBTARGET)
+    assert [suffix for suffix, _ in target.parts] == [".trans", ".rot", ".robconf", ".extax"]
+    assert target.parts[0][1].parts[2] == (".z", "3")
+
+
+def test_data_without_a_literal_shows_its_type():
+    assert value_text((None, None, None), ArrayType(NON_VALUE_TYPES["SYNCIDENT"], (3,))) == \
+        "[<syncident>,<syncident>,<syncident>]"
+    assert value_text(b"\x00\x01", NON_VALUE_TYPES["RAWBYTES"]) == "<rawbytes: 2 bytes>"
+    assert value_text((1.0, 2.0, "x"), POS) == '[1,2,"x"]'         # by what it holds
+
+
+@pytest.mark.parametrize("text, width, expected", [
+    ("[1,2,3]", 10, "[1,2,3]"),
+    ("[[932.4,1557.5,2189.5],[1,0,0,0],[1,1,0,0]]", 30, "[[932.4,1557.5,2189.5],...]"),
+    ("[[932.4,1557.5,2189.5],[1,0,0,0],[1,1,0,0]]", 20, "[[932.4,1557.5,...]]"),
+    ('["a,b","c,d","e,f"]', 12, '["a,b",...]'),                # commas in strings are text
+    ('"' + "x" * 50 + '"', 20, '"' + "x" * 15 + '..."'),
+])
+def test_shorten_cuts_at_an_element_boundary(text, width, expected):
+    assert shorten(text, width) == expected
+
+
+def test_read_part_of_an_assignment_is_its_value_and_target_indexes():
+    assert read_part("waypoints{count + 1}.trans.x := n / d;").split() == \
+        ["count", "+", "1", "n", "/", "d;"]
+    assert read_part("MoveL p, v, z, tool0;") == "MoveL p, v, z, tool0;"
+
+
+def _step(index: int, line: int, *changes: Change) -> TraceStep:
+    return TraceStep(index, TRANSITION, TransitionInfo("p.mod", line, f"line {line}"), changes)
+
+
+def test_a_stretch_run_three_times_folds_into_one_line():
+    steps = [TraceStep(1, INITIAL, None, (Change("n", None, "0"),))]
+    for turn in range(4):           # lines 5, 6 four times; each time n and a{turn} change
+        steps.append(_step(len(steps) + 1, 5, Change("n", str(turn), str(turn + 1))))
+        steps.append(_step(len(steps) + 1, 6, Change(f"a{{{turn + 1}}}", "0", "1")))
+    steps.append(_step(len(steps) + 1, 7))
+    items = fold_repeats(steps)
+    assert [getattr(item, "index", None) for item in items] == [1, 2, 3, None, 10]
+    folded = items[3]
+    assert isinstance(folded, Folded) and (folded.first, folded.last, folded.times) == (2, 3, 3)
+    assert [step.index for step in folded.hidden] == [4, 5, 6, 7, 8, 9]
+
+
+def test_a_stretch_run_twice_or_with_other_lines_stays():
+    twice = [_step(1, 5), _step(2, 6), _step(3, 5), _step(4, 6)]
+    assert fold_repeats(twice) == twice
+    varied = [_step(1, 5), _step(2, 5, Change("n", "0", "1")), _step(3, 5)]
+    assert fold_repeats(varied) == varied

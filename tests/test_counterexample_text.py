@@ -1,0 +1,90 @@
+"""Counterexample text that fits on a screen, compared with golden output (issue 19).
+
+Each folder tests/counterexamples/<case>/ is one ``rapidmc check`` run from inside the
+folder: ``prog.mod`` and every other ``.mod`` file of the folder (a module written by
+``rapidmc stubs``, say), the options of ``args`` (one line, shell quoting), and
+``expected``: the text report, stdout then stderr, with seconds written ``<t>``.
+Regenerate an expectation only after reading the new text: these files are the spec of
+what a reader sees.
+
+Every case is also checked for what must hold of any report: no line over 500
+characters, no Python spelling of a value (``None``, ``b'...'``, ``(0.0, ...)``), the
+same counterexample in JSON with full values, and a JSON trace that replays.
+"""
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import re
+import shlex
+from pathlib import Path
+
+import pytest
+
+from rapidmc.cli import main
+
+CASES_DIR = Path(__file__).resolve().parent / "counterexamples"
+CASES = sorted(path.name for path in CASES_DIR.iterdir() if (path / "prog.mod").exists())
+SECONDS = re.compile(r"\d+\.\d+ s\)")
+LONGEST_LINE = 500
+PYTHON_SPELLINGS = re.compile(r"\bNone\b|\bb'|\(\d+\.\d+, |\bTrue\b|\bFalse\b")
+
+
+def command(case: str, *extra: str) -> list[str]:
+    folder = CASES_DIR / case
+    files = ["prog.mod"] + sorted(p.name for p in folder.glob("*.mod") if p.name != "prog.mod")
+    args_file = folder / "args"
+    options = shlex.split(args_file.read_text()) if args_file.exists() else []
+    return ["check", *files, "--quiet", *options, *extra]
+
+
+def run(case: str, monkeypatch, *extra: str) -> tuple[int, str, str]:
+    monkeypatch.chdir(CASES_DIR / case)
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        code = main(command(case, *extra))
+    return code, out.getvalue(), err.getvalue()
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_text_report_is_the_expected_one(case, monkeypatch):
+    code, out, err = run(case, monkeypatch)
+    assert code == 1
+    text = SECONDS.sub("<t> s)", out + err)
+    assert text == (CASES_DIR / case / "expected").read_text()
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_text_report_is_short_and_speaks_rapid(case, monkeypatch):
+    _, out, err = run(case, monkeypatch)
+    assert max(map(len, (out + err).splitlines())) <= LONGEST_LINE
+    for extra in ((), ("--full-trace",)):
+        _, out, err = run(case, monkeypatch, *extra)
+        assert not PYTHON_SPELLINGS.search(out + err), PYTHON_SPELLINGS.search(out + err)
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_json_has_full_values_and_replays(case, monkeypatch, tmp_path, capsys):
+    code, out, _ = run(case, monkeypatch, "--format", "json")
+    document = json.loads(out)
+    violated = [p for p in document["properties"] if p["verdict"] == "VIOLATED"]
+    assert violated
+    for entry in violated:
+        steps = entry["trace"]["prefix"] + entry["trace"]["cycle"]
+        values = [v for step in steps for v in step["changes"].values() if v is not None]
+        assert not any(v.endswith("...]") or v.endswith('..."') for v in values)
+        assert not any(PYTHON_SPELLINGS.search(v) for v in values)
+    saved = tmp_path / "trace.json"
+    saved.write_text(out)
+    for entry in violated:
+        assert main(["replay", str(saved), "--property", entry["name"], "--quiet"]) == 0
+    capsys.readouterr()
+
+
+def test_full_trace_shows_every_initial_value_and_step(monkeypatch):
+    _, short, _ = run("array_loop", monkeypatch)
+    _, full, _ = run("array_loop", monkeypatch, "--full-trace")
+    assert "repeat steps" in short and "repeat steps" not in full
+    assert "--full-trace shows them" in short and "spare = [0,0," in full
+    assert full.count("    step ") == 27 and "...]" not in full

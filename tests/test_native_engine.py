@@ -1,0 +1,204 @@
+"""The compiled search core (``rapidmc.check.native``) against the pure Python engine.
+
+Differential: ``rapidmc check --format json`` with ``--engine native`` and with
+``--engine python`` prints the same report, timing, memory figures and the engine's
+name aside (every verdict, every count, every counterexample, coverage and vacuity
+warnings), on the data-driven check cases (with the run-time error search's graph
+reused, as by default, and with every property search stepping the program itself),
+on the case studies and on generated programs (tests/reduction_programs.py).  The
+native table gives every state the id the Python table gives it; the engine choice
+(``--engine``, ``RAPIDMC_ENGINE``, ``--version``) and its diagnostic when the core is
+not built are pinned below.  Without the extension the differential tests are skipped
+and the rest run on the Python engine.
+"""
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import os
+import subprocess
+import sys
+
+import pytest
+from hypothesis import given, strategies as st
+
+from rapidmc.check import check_property, find_reachable, native
+from rapidmc.check.states import StateTable
+from rapidmc.cli import main
+
+from fuzz_invoke import assert_acceptable, invoke
+from fuzz_programs import programs
+from reduction_programs import properties, random_program
+from test_fuzz import STDIN, domains, formula_texts, fuzz_settings, write
+from test_case_studies import CASES, ROOT
+from test_check_cases import verdict_cases
+from test_graph_reuse import COUNTERS, case_arguments, model_of, report, without_measurements
+
+needs_native = pytest.mark.skipif(not native.available(), reason="the native core is not built")
+
+
+def engine_report(argv: list[str], monkeypatch, engine: str, reuse: bool = True):
+    """``report`` (test_graph_reuse) with ``--engine``, the engine's name dropped."""
+    before = native.engine()
+    try:
+        code, document = report([*argv, "--engine", engine], monkeypatch, reuse)
+    finally:
+        native.use_engine(before)
+    document.pop("command", None)            # (names the engine)
+    engines = {entry["stats"].pop("engine") for entry in document.get("properties", [])}
+    assert engine == native.NATIVE or engines <= {native.PYTHON}
+    return code, document
+
+
+def assert_same_reports(argv: list[str], monkeypatch, reuse: bool = True) -> dict:
+    native_report = engine_report(argv, monkeypatch, native.NATIVE, reuse)
+    assert native_report == engine_report(argv, monkeypatch, native.PYTHON, reuse)
+    return native_report[1]
+
+
+@needs_native
+@pytest.mark.parametrize("reuse", [True, False], ids=["graph reused", "stepped again"])
+@pytest.mark.parametrize("case", verdict_cases(), ids=lambda case: case.name)
+def test_check_cases_report_the_same_with_both_engines(case, reuse, monkeypatch):
+    assert_same_reports(case_arguments(case, monkeypatch), monkeypatch, reuse)
+
+
+@needs_native
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_case_studies_report_the_same_with_both_engines(name, monkeypatch):
+    monkeypatch.chdir(ROOT)
+    document = assert_same_reports(CASES[name].argv()[1:], monkeypatch)
+    assert {entry["name"]: entry["verdict"] for entry in document["properties"]} \
+        .items() >= CASES[name].verdicts.items()
+
+
+@needs_native
+@pytest.mark.parametrize("seed", range(12))
+def test_generated_programs_report_the_same_with_both_engines(seed, tmp_path, monkeypatch):
+    (tmp_path / "random.mod").write_text(random_program(seed))
+    (tmp_path / "props.ltl").write_text("\n".join(properties(seed, seed % 2 == 1)) + "\n")
+    monkeypatch.chdir(tmp_path)
+    argv = ["random.mod", "--ltl", "props.ltl", "--max-states", "20000"]
+    document = assert_same_reports(argv, monkeypatch, reuse=seed % 3 != 0)
+    assert document["properties"], "the program's properties were checked"
+
+
+@needs_native
+@fuzz_settings(40)
+@given(programs(), st.data())
+def test_fuzzed_programs_answer_the_same_with_both_engines(program, data):
+    """The fuzzer's generated programs (tests/test_fuzz.py), checked by both engines: the
+    same exit code, stderr and JSON report (measurements and the engine's name aside)."""
+    path = write("engines.mod", program.text)
+    formula = data.draw(formula_texts(program.atoms))
+    # (a state bound, no time bound: a time bound could stop the engines at different states)
+    argv = ["check", "--max-states", "2000", "--quiet", *domains(program.text), "--format",
+            "json", "--formula", "p: G F true", "--formula", f"q: {formula}", path]
+    outcomes = {}
+    before = native.engine()
+    try:
+        for engine in native.ENGINES:
+            outcome = invoke(argv + ["--engine", engine], STDIN)
+            assert_acceptable(outcome)
+            outcomes[engine] = (outcome.exit_code, outcome.stderr, comparable(outcome.stdout))
+    finally:
+        native.use_engine(before)
+    assert outcomes[native.NATIVE] == outcomes[native.PYTHON]
+
+
+def comparable(stdout: str):
+    """A JSON report without what differs between engines (or the text, when not JSON)."""
+    try:
+        document = json.loads(stdout)
+    except ValueError:
+        return stdout
+    document.pop("command", None)
+    for entry in document.get("properties", []):
+        entry["stats"].pop("engine", None)
+    return without_measurements(document)
+
+
+@needs_native
+@pytest.mark.parametrize("max_states", [1, 7, 40])
+def test_bounded_searches_stop_at_the_same_state(max_states, tmp_path):
+    model = model_of(COUNTERS, 'P: G ("c0 < 3" & "c1 < 3")', tmp_path)
+    _, buchi, valuation = model.jobs[0]
+    results = {}
+    for engine in native.ENGINES:
+        with native.engine_used(engine):
+            results[engine] = (
+                find_reachable(model.system, model.system.failed, max_states=max_states),
+                check_property(model.system, buchi, valuation, max_states=max_states))
+    for python, compiled in zip(results[native.PYTHON], results[native.NATIVE]):
+        assert (python.verdict, python.reason) == (compiled.verdict, compiled.reason)
+        assert without_measurements(python.stats.as_dict()) | {"engine": None} == \
+            without_measurements(compiled.stats.as_dict()) | {"engine": None}
+    assert results[native.NATIVE][1].stats.engine == native.NATIVE
+
+
+@needs_native
+def test_the_native_table_gives_every_state_the_python_tables_id(tmp_path):
+    model = model_of(COUNTERS, 'P: G "c0 < 3"', tmp_path)
+    graphs = []
+    find_reachable(model.system, model.system.failed, explored=graphs.append)
+    states = [graphs[0].states[i] for i in range(len(graphs[0]))]
+    python, compiled = StateTable(model.system), native.NativeStateTable(model.system)
+    for state in states + states[::-1]:
+        assert python.intern(state) == compiled.intern(state)
+    assert len(python) == len(compiled) == len(states)
+    assert [compiled[i] for i in range(len(states))] == states
+    assert compiled.intern(model.system.initial_states()[0], add=False) == (0, False)
+    unknown = states[0]._replace(errno=12345.0)
+    assert compiled.intern(unknown, add=False) == python.intern(unknown, add=False) == (-1, True)
+    with pytest.raises(IndexError):
+        compiled[len(states)]
+    assert compiled.memory_bytes() > compiled.native_bytes() >= 8 * len(states)
+
+
+def test_the_engine_is_chosen_by_name_and_refused_when_not_built(monkeypatch):
+    with pytest.raises(ValueError):
+        native.use_engine("fast")
+    with native.engine_used(native.PYTHON):
+        assert native.engine() == native.PYTHON
+        assert not native.native_search()
+    monkeypatch.setattr(native, "_native", None)
+    with pytest.raises(ValueError):
+        native.use_engine(native.NATIVE)
+    assert "native core not built" in native.description()
+
+
+def test_engine_native_without_the_core_is_a_diagnostic(monkeypatch, tmp_path):
+    (tmp_path / "prog.mod").write_text(COUNTERS)
+    monkeypatch.setattr(native, "_native", None)
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
+        code = main(["check", str(tmp_path / "prog.mod"), "--engine", "native", "--quiet"])
+    assert code == 2
+    assert "[RMC750]" in err.getvalue() and "--engine python" in err.getvalue()
+
+
+def test_the_python_engine_is_named_in_the_json_stats(tmp_path):
+    (tmp_path / "prog.mod").write_text(COUNTERS)
+    out = io.StringIO()
+    before = native.engine()
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
+            main(["check", str(tmp_path / "prog.mod"), "--engine", "python",
+                  "--formula", 'P: G "c0 < 3"', "--format", "json", "--quiet"])
+    finally:
+        native.use_engine(before)
+    engines = {entry["stats"]["engine"] for entry in json.loads(out.getvalue())["properties"]}
+    assert engines == {native.PYTHON}
+
+
+@pytest.mark.parametrize("variable, expected", [("python", "python"), ("", None)])
+def test_version_names_the_engine_the_environment_chooses(variable, expected):
+    environment = {"RAPIDMC_ENGINE": variable}
+    done = subprocess.run([sys.executable, "-m", "rapidmc", "--version"], capture_output=True,
+                          text=True, env={**os.environ, **environment})
+    assert done.returncode == 0
+    expected = expected or (native.NATIVE if native.available() else native.PYTHON)
+    assert f"search engine {expected} " in done.stdout
+    assert ("native core built" if native.available() else "native core not built") \
+        in done.stdout
