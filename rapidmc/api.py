@@ -37,11 +37,14 @@ from .check import HOLDS, UNKNOWN, VIOLATED, Progress, SearchResult, find_reacha
 from .check.budget import DEFAULT_MAX_STATES
 from .check.trace import Trace, build_trace
 from .diagnostics import (AUTOMATON, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED,
-                          TRACE_REPLAY, USAGE, Diagnostic, SourceCache, error)
+                          TRACE_REPLAY, UNCHECKED_INPUT, USAGE, Diagnostic, SourceCache,
+                          error)
 from .diagnostics.quoting import one_line, quoted
 from .findings.assumptions import assumptions, for_verdict
 from .findings.explored import ExploredFacts
 from .findings.fixed_readings import fixed_readings
+from .findings.lint.marks import PROPERTY as FLOW_PROPERTY
+from .findings.lint.marks import instrument as instrument_flows
 from .load.backup import link_options, load_tasks, resolve_program_files
 from .load.shared_data import pers_warnings
 from .ltl import read_hoa, to_buchi
@@ -58,7 +61,8 @@ from .semantics.program import Program
 from .semantics.step import CheckConfig, EnvironmentFault
 from .syntax import load_program as _parse_files
 
-__all__ = ["CheckOptions", "CheckReport", "Model", "check", "check_model", "load_program", "prepare",
+__all__ = ["CheckOptions", "CheckReport", "Model", "check", "check_model", "flow_property",
+           "load_program", "prepare",
            "property_from_text", "read_properties", "HOLDS", "VIOLATED", "UNKNOWN"]
 
 BUILTIN_RUNTIME = "no_runtime_error"
@@ -93,21 +97,38 @@ class CheckOptions:
 
 def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = "main",
                  task: Optional[str] = None, all_tasks: bool = False,
-                 add_tasks: Sequence[str] = (), eio: Optional[str] = None) -> Program:
+                 add_tasks: Sequence[str] = (), eio: Optional[str] = None,
+                 flows: bool = False) -> Program:
     """Parse and link a program: module files or a controller backup folder, as ``check`` takes.
 
     ``env``: environment model modules; ``task``/``all_tasks``: which tasks of a
     backup; ``add_tasks``: further tasks, each ``"a.mod,b.mod"``; ``eio``: an
-    I/O configuration whose signals the program uses by name.
+    I/O configuration whose signals the program uses by name; ``flows``: keep taint
+    marks in the state, for ``flow_property`` (findings.lint.marks).
     """
     files = resolve_program_files(SimpleNamespace(files=list(files), task=task, eio=eio,
                                                   all_tasks=all_tasks, add_task=list(add_tasks)))
     environment = _parse_files(list(env)) if env else None
-    program = build(_parse_files(files.modules), entry=files.main_entry if entry == "main"
-                    else entry, environment=environment, tasks=load_tasks(files),
-                    options=link_options(files))
+    parsed = _parse_files(files.modules)
+    options = link_options(files)
+    if flows:
+        marks = instrument_flows(parsed)
+        parsed, options["flow_marks"] = marks.program, marks
+    program = build(parsed, entry=files.main_entry if entry == "main" else entry,
+                    environment=environment, tasks=load_tasks(files), options=options)
     program.load_notes = files.notes + pers_warnings(program, files)
     return program
+
+
+def flow_property(program: Program) -> Property:
+    """The built-in property ``no_unchecked_input`` of a program loaded with ``flows``:
+    no run takes input from a socket, file, FlexPendant or analog/group input to a
+    motion, file path, late-bound call or output argument without a check that bounds it."""
+    marks = program.options.get("flow_marks")
+    if marks is None:
+        raise ValueError("the program was not loaded with flows=True")
+    SourceCache.remember("<flows>", marks.property_text)
+    return parse_property(marks.property_text, "<flows>", 1)
 
 
 def read_properties(*paths: str) -> list[Property]:
@@ -252,14 +273,17 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
     resting_on = assumptions(model.program)
     results = [replace(r, assumes=for_verdict(resting_on, r.result, model.describer))
                for r in results]
-    return CheckReport(results, _findings(model, searches.facts), model.describer)
+    return CheckReport(results, _findings(model, results, searches.facts), model.describer)
 
 
-def _findings(model: Model, facts: ExploredFacts) -> list[Diagnostic]:
-    """What the check assumed or saw besides verdicts, in source order after the domain notes."""
+def _findings(model: Model, results: list[PropertyResult],
+              facts: ExploredFacts) -> list[Diagnostic]:
+    """What the check assumed or saw besides verdicts, in source order after the load and
+    domain notes."""
     return list(model.program.load_notes) + list(model.plan.notes) + [
         assumed.note() for assumed in model.assumed] + sorted(
-        fixed_readings(model.program) + facts.warnings(),
+        fixed_readings(model.program) + facts.warnings()
+        + _flow_sinks(model.program, results, model.describer),
         key=lambda d: (d.span.file, d.span.line, d.span.column))
 
 
@@ -306,7 +330,38 @@ class _Searches:
         _replayed(self.model.system, result)
         vacuous = self.facts.vacuous(prop.formula) if result.verdict == HOLDS else None
         return PropertyResult(prop.name, prop.text, result, vacuous,
-                              self.fairness.names if self.fairness is not None else ())
+                              self.fairness.names if self.fairness is not None else (),
+                              pattern=prop.pattern)
+
+
+def _flow_sinks(program: Program, results: list[PropertyResult], describer) -> list:
+    """For a violated ``no_unchecked_input``: a warning (RMC820) at the sink its
+    counterexample takes unchecked input to."""
+    marks = program.options.get("flow_marks")
+    if marks is None:
+        return []
+    found = []
+    for checked in results:
+        if checked.name != FLOW_PROPERTY or checked.result.verdict != VIOLATED:
+            continue
+        trace = build_trace(checked.result, describer)
+        for step in (*trace.prefix, *trace.cycle):
+            for change in step.changes:
+                sink = marks.sink(_number(change.new)) if change.name == marks.flag else None
+                if sink is not None:
+                    found.append(Diagnostic(
+                        UNCHECKED_INPUT, f"unchecked input reaches {sink.description} "
+                        f"(step {step.index} of the counterexample of {FLOW_PROPERTY})",
+                        sink.span, severity="warning"))
+                    return found
+    return found
+
+
+def _number(text) -> int:
+    try:
+        return int(float(text))
+    except (TypeError, ValueError):
+        return 0
 
 
 class _StuckWatch:

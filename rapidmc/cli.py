@@ -31,6 +31,8 @@ SUBCOMMANDS = {
     "replay": "re-execute a counterexample saved by 'check --format json'",
     "graph": "write the reachable state graph (GraphML, GEXF or DOT)",
     "stubs": "write a module declaring the names the program uses and no module declares",
+    "lint": "report mistakes visible without a search, and unchecked input flows",
+    "lsp": "a Language Server over stdio: diagnostics, hover and go to definition in editors",
 }
 
 

@@ -27,7 +27,8 @@ CASES = {case.name: case for case in verdict_cases()}
 def test_unreached_lines_of_every_check_case(name, monkeypatch):
     case = CASES[name]
     code, document = report_of(case, monkeypatch)
-    warnings = [w for w in document["warnings"] if w["code"] != "RMC515"]   # domain notes
+    # domain notes, and the sink a --flows counterexample reaches (tests/test_flow_marks.py)
+    warnings = [w for w in document["warnings"] if w["code"] not in ("RMC515", "RMC820")]
     assert all(w["code"] == "RMC701" and w["location"]["file"] == "prog.mod" for w in warnings)
     expected = [_stretch(line) for line in _data_lines(case.folder / "unreached")]
     assert [(w["location"]["line"], w["location"]["end_line"]) for w in warnings] == expected

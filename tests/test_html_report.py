@@ -242,6 +242,17 @@ def test_the_page_lists_every_property_with_verdict_formula_and_statistics(brows
     assert page.find("#trace-name").text == "P2"             # the first violated property
 
 
+def test_a_pattern_is_shown_beside_its_formula(browser, tmp_path_factory):
+    path, document = report(tmp_path_factory, "patterns",
+                            SORTER[:-1] + ["specs/sorter_patterns.ltl"])
+    page = Page(browser, path)
+    cells = page.texts("#property-table tbody tr:nth-child(4) td:nth-child(3) > *")
+    p2 = document["properties"][3]
+    assert p2["name"] == "P2" and cells == [p2["pattern"], "LTL: " + p2["formula"]]
+    assert page.find("#trace-pattern").text == p2["pattern"]
+    assert page.find("#trace-formula").text == p2["formula"]
+
+
 def test_next_steps_through_the_counterexample_as_the_json_report_has_it(browser, sorter):
     path, document = sorter
     steps = violated(document, "P2")

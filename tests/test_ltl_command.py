@@ -41,3 +41,19 @@ def test_default_backend_works_without_spot(capsys, monkeypatch):
     monkeypatch.setattr("rapidmc.ltl.spot_available", lambda: False)
     assert main(["ltl", "F p"]) == EXIT_OK
     assert read_hoa(capsys.readouterr().out).atoms == ("p",)
+
+
+def test_a_pattern_prints_the_automaton_of_its_translation(capsys):
+    assert main(["ltl", "--backend", "builtin", "response(req, ack) before(stop)"]) == EXIT_OK
+    out = capsys.readouterr().out
+    assert 'name: "F stop -> (req -> !stop U (ack & !stop)) U stop"' in out
+    automaton = read_hoa(out)
+    assert accepts_lasso(automaton, [{"req"}, {"ack"}, {"stop"}], [set()])
+    assert not accepts_lasso(automaton, [{"req"}, {"stop"}], [{"ack"}])
+
+
+def test_a_malformed_pattern_is_a_diagnostic_with_caret(capsys):
+    assert main(["ltl", "response(req)"]) == EXIT_INPUT_ERROR
+    err = capsys.readouterr().err
+    assert err.startswith("<command-line>:1:1: error: response takes 2 conditions (P, S), "
+                          "found 1 [RMC860]")

@@ -83,6 +83,10 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
                         help="receives with a finite \\Time never time out")
     parser.add_argument("--file-lines", action="append", default=[], metavar="TEXT",
                         help="a line a file or serial read may deliver (repeatable)")
+    parser.add_argument("--flows", action="store_true",
+                        help="also check no_unchecked_input: no run takes input from a socket, "
+                             "file, the FlexPendant or an analog/group input to a move, file "
+                             "path, late-bound call or output without a bounding check")
     parser.add_argument("--automaton", action="append", default=[], metavar="NAME=FILE.hoa",
                         help="use this Büchi automaton (HOA) for the NEGATION of property NAME")
     parser.add_argument("--backend", choices=BACKENDS, default=None,
@@ -148,8 +152,12 @@ def prepare_model(args: argparse.Namespace) -> api.Model:
     storage_options.select_engine(args)
     properties = gather_properties(args)
     options = check_options(args)
+    flows = getattr(args, "flows", False)
     program = api.load_program(args.files, args.env, entry=args.entry, task=args.task,
-                               all_tasks=args.all_tasks, add_tasks=args.add_task, eio=args.eio)
+                               all_tasks=args.all_tasks, add_tasks=args.add_task, eio=args.eio,
+                               flows=flows)
+    if flows:
+        properties.append(api.flow_property(program))
     return api.prepare(program, properties, options)
 
 

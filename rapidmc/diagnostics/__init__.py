@@ -122,6 +122,26 @@ ORDER_REDUCTION = _code("RMC732", "order-reduction", "partial-order reduction is
 NATIVE_ENGINE = _code("RMC750", "native-engine",
                       "--engine native asked for, and the compiled search core is not built")
 
+# --- lint (80x-84x): `rapidmc lint` rules (rapidmc.findings.lint, docs/lint.md) ---------
+NOT_CHAIN = _code("RMC801", "not-chain", "NOT over an AND/OR/XOR chain without parentheses")
+TOOL_NOT_PERS = _code("RMC802", "tool-not-pers", "tooldata, wobjdata or loaddata given to a move instruction is not PERS")
+OPTIONAL_CASE = _code("RMC803", "optional-case", "an optional argument's name is spelt in another case than declared")
+IO_UNGUARDED = _code("RMC804", "io-unguarded", "a socket or file operation with neither \\Time nor an ERROR handler for its errors")
+BUSY_LOOP = _code("RMC805", "busy-loop", "a background task's endless loop that never waits")
+UNUSED_DATA = _code("RMC806", "unused-data", "data declared and never used")
+UNUSED_ROUTINE = _code("RMC807", "unused-routine", "a routine never called")
+UNREACHABLE = _code("RMC808", "unreachable", "a statement after RETURN, EXIT, RAISE, ExitCycle or GOTO that no jump reaches")
+SHARED_INDEX = _code("RMC809", "shared-index", "a PERS number indexes an array without a bound check")
+EMPTY_KEY = _code("RMC810", "empty-key", "TPReadFK offers an empty key the program waits for")
+UNCHECKED_INPUT = _code("RMC820", "unchecked-input", "input from outside reaches a motion, file, late-bound call or output argument unchecked")
+LINT_CONFIG = _code("RMC840", "lint-config", "the [tool.rapidmc.lint] configuration is malformed")
+
+# --- editors (85x) --------------------------------------------------------------------
+LSP_UNAVAILABLE = _code("RMC850", "lsp-unavailable", "'rapidmc lsp' needs pygls, which is not installed")
+
+# --- specification patterns (86x) ------------------------------------------------------
+PATTERN = _code("RMC860", "pattern", "a specification pattern is malformed")
+
 
 @dataclass(frozen=True)
 class Diagnostic:
@@ -134,6 +154,7 @@ class Diagnostic:
     notes: tuple[str, ...] = field(default_factory=tuple)
     subject: str = ""        # canonical name an unknown-name diagnostic is about
     omitted: int = 0         # a capped report's last diagnostic (RMC215): how many it leaves out
+    flow: tuple = ()         # a lint flow (RMC820): (span, what happens there) from source to sink
 
 
 class UserError(Exception):

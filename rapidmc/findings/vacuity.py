@@ -27,10 +27,8 @@ from __future__ import annotations
 from typing import Iterable, Optional
 
 from ..ltl.printing import to_text
-from ..ltl.syntax import (And, Atom, Equiv, FalseF, Formula, Implies, Not, Or, TrueF, Xor,
-                          BINARY_TYPES, UNARY_TYPES, atoms_of)
-
-PROPOSITIONAL = (Atom, TrueF, FalseF, Not, And, Or, Implies, Equiv, Xor)
+from ..ltl.syntax import (And, Atom, Equiv, FalseF, Formula, Implies, Not, Or, TrueF,
+                          BINARY_TYPES, UNARY_TYPES, atoms_of, is_propositional)
 
 __all__ = ["TriggerWatch", "triggers", "to_text"]
 
@@ -41,23 +39,13 @@ def triggers(formula: Formula) -> tuple[Formula, ...]:
     stack = [formula]
     while stack:
         node = stack.pop()
-        if isinstance(node, Implies) and _propositional(node.left) and node.left not in found:
+        if isinstance(node, Implies) and is_propositional(node.left) and node.left not in found:
             found.append(node.left)
         if isinstance(node, UNARY_TYPES):
             stack.append(node.operand)
         elif isinstance(node, BINARY_TYPES):
             stack.extend((node.right, node.left))
     return tuple(found)
-
-
-def _propositional(formula: Formula) -> bool:
-    if not isinstance(formula, PROPOSITIONAL):
-        return False
-    if isinstance(formula, Not):
-        return _propositional(formula.operand)
-    if isinstance(formula, BINARY_TYPES):
-        return _propositional(formula.left) and _propositional(formula.right)
-    return True
 
 
 def holds(formula: Formula, atoms: tuple[str, ...], bits: int) -> bool:

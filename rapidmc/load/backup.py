@@ -22,7 +22,7 @@ from typing import Optional
 
 from ..ast import Span
 from ..diagnostics import (FILE_NOT_FOUND, PROGRAM_FILE, TASKS_LOADED, Diagnostic, SourceCache,
-                           error)
+                           UserError, error)
 from .config_file import instances
 from .task_config import BackupTask, config_file, read_tasks
 from ..semantics.library.configuration import Configuration
@@ -272,3 +272,14 @@ def load_tasks(files: ProgramFiles) -> list:
     from ..semantics.link import Task
     from ..syntax import load_program
     return [Task(name, load_program(paths), entry) for name, paths, entry in files.tasks]
+
+
+def every_task(path: Path) -> list[tuple[str, list[str]]]:
+    """(task name, module files) of each task of the backup at ``path`` holding a module."""
+    tasks = []
+    for task in backup_tasks(path):
+        try:
+            tasks.append((task.name, task_modules(path, task)))
+        except UserError:                # a task folder without modules
+            continue
+    return tasks

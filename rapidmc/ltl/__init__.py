@@ -4,6 +4,8 @@
 * ``to_buchi(formula, backend=None) -> Buchi``: Spot when ``import spot``
   works, else the built-in tableau translator; ``backend="builtin"`` or
   ``"spot"`` forces one.  Atoms come in order of first appearance.
+* ``patterns``: specification patterns (``response(P, S) after(Q)``) and
+  their LTL translations.
 
 Example::
 

@@ -139,6 +139,20 @@ UNARY_TYPES = (Not, Next, Globally, Finally)
 BINARY_TYPES = (And, Or, Implies, Equiv, Xor, Until, WeakUntil, Release, StrongRelease)
 
 
+PROPOSITIONAL_TYPES = (Atom, TrueF, FalseF, Not, And, Or, Implies, Equiv, Xor)
+
+
+def is_propositional(formula: Formula) -> bool:
+    """Whether ``formula`` speaks of one state only (no temporal operator in it)."""
+    if not isinstance(formula, PROPOSITIONAL_TYPES):
+        return False
+    if isinstance(formula, Not):
+        return is_propositional(formula.operand)
+    if isinstance(formula, BINARY_TYPES):
+        return is_propositional(formula.left) and is_propositional(formula.right)
+    return True
+
+
 def atoms_of(formula: Formula) -> tuple[str, ...]:
     """The atom names of ``formula`` in order of first appearance (left to right)."""
     seen: dict[str, None] = {}

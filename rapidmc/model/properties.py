@@ -1,7 +1,8 @@
 """Properties to check: property files, formulas, and atomic propositions over RAPID states.
 
 A property file holds one ``NAME: FORMULA`` (or a bare ``FORMULA``) per line (``#`` starts a
-comment); formulas use Spot's LTL syntax.  Atoms are RAPID boolean
+comment); formulas use Spot's LTL syntax, or are specification patterns such as
+``response(P, S) after(Q)`` (``ltl.patterns``), which stand for their LTL translation.  Atoms are RAPID boolean
 expressions over the program's global data, evaluated in each state:
 
 * ``"c_in = 0 AND s1 = 1"`` — a quoted RAPID expression;
@@ -32,6 +33,7 @@ from ..diagnostics import (ATOM, DUPLICATE_PROPERTY, FILE_NOT_FOUND, PROPERTY_FI
                           UNKNOWN_NAME, Diagnostic, SourceCache, UserError, error)
 from .fused_atoms import fused_valuation
 from ..ltl import Formula, parse_formula, to_text
+from ..ltl.patterns import is_pattern, parse_pattern, pattern_formula
 from ..semantics.errors import RapidError
 from ..semantics.expressions import Compiled, ExpressionCompiler, constant
 from ..semantics.machine import Machine
@@ -48,10 +50,11 @@ AT_TARGET_TOLERANCE = 0.5      # mm
 @dataclass(frozen=True)
 class Property:
     name: str
-    text: str                  # the formula as written
+    text: str                  # the formula as written (a pattern's: its LTL translation)
     formula: Formula
     file: str
     line: int
+    pattern: Optional[str] = None   # a specification pattern as written (ltl.patterns)
 
 
 def read_property_file(path: str) -> list[Property]:
@@ -103,6 +106,9 @@ def parse_property(text: str, file: str = "<formula>", line: int = 1) -> Propert
         formula_text = text.strip()
         name = " ".join(formula_text.split())
         column = len(text) - len(text.lstrip()) + 1
+    if is_pattern(formula_text):
+        formula = pattern_formula(parse_pattern(formula_text, file, line, column))
+        return Property(name, to_text(formula), formula, file, line, pattern=formula_text)
     formula = parse_formula(formula_text, file=file, line=line, column=column)
     return Property(name, formula_text, formula, file, line)
 

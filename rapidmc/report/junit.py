@@ -4,7 +4,8 @@ One ``<testsuite>`` per run, named after the program; one ``<testcase>``
 per property (the built-in checks included):
 
 * HOLDS — a passed test case;
-* VIOLATED — a ``<failure>`` whose ``message`` is the formula and whose
+* VIOLATED — a ``<failure>`` whose ``message`` is the formula (after the
+  specification pattern it translates, if any) and whose
   text is the counterexample as ``rapidmc check`` prints it;
 * UNKNOWN — ``<skipped>`` with the reason the search stopped;
 * a property that holds vacuously says so in its ``<system-out>``, and so
@@ -24,7 +25,7 @@ from typing import Sequence
 
 from ..diagnostics import Diagnostic, render
 from .counterexample import counterexample_lines
-from .results import PropertyResult, fairness_text, text_options, vacuity_text
+from .results import PropertyResult, described_formula, fairness_text, text_options, vacuity_text
 from ..check.result import UNKNOWN, VIOLATED
 from ..check.trace import TraceDescriber, build_trace
 
@@ -72,7 +73,8 @@ def _property_case(suite: ET.Element, checked: PropertyResult, describer: TraceD
         skipped = ET.SubElement(case, "skipped")
         skipped.text = f"UNKNOWN: {result.reason}: no violation found, but the search was bounded"
     elif result.verdict == VIOLATED:
-        failure = ET.SubElement(case, "failure", message=checked.formula, type=VIOLATED)
+        failure = ET.SubElement(case, "failure", message=described_formula(checked),
+                                type=VIOLATED)
         lines = counterexample_lines(build_trace(result, describer),
                                      text_options(checked, describer))
         failure.text = "\n".join(line[2:] for line in lines) + "\n"

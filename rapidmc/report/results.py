@@ -4,7 +4,7 @@ Text, one line per property and a counterexample under each violation::
 
     P1: HOLDS (1,234 states, 0.12 s)
     P2: VIOLATED (56 states, 0.01 s)
-      formula: G "x < 3"
+      formula: G "x < 3"           (a pattern's property: "pattern: ..." above it)
       counterexample: 2 steps, then a loop of 2 steps
         step 1  initial state
             x = 0
@@ -43,6 +43,7 @@ class PropertyResult:
     fair_tasks: tuple = ()           # the tasks assumed weakly fair in the search (several tasks)
     # what the verdict rests on that rapidmc assumed (findings.assumptions): sentences
     assumes: tuple = ()
+    pattern: Optional[str] = None    # the specification pattern the formula translates
 
 
 # --- text ---------------------------------------------------------------------
@@ -65,12 +66,21 @@ def format_text(results: Sequence[PropertyResult], describer: TraceDescriber,
             lines.append(f"  note: {stats.deadlocks:,} reachable state(s) without a successor; "
                          "runs ending there repeat their last state")
         if checked.result.verdict == VIOLATED:
+            if checked.pattern is not None:
+                lines.append(f"  pattern: {checked.pattern}")
             lines.append(f"  formula: {checked.formula}")
             if checked.result.reason:
                 lines.append(f"  {checked.result.reason}")
             lines.extend(counterexample_lines(build_trace(checked.result, describer),
                                               text_options(checked, describer, full)))
     return "\n".join(lines) + "\n"
+
+
+def described_formula(checked: PropertyResult) -> str:
+    """The formula, after the specification pattern it translates (if any): one line."""
+    if checked.pattern is None:
+        return checked.formula
+    return f"{checked.pattern} (LTL: {checked.formula})"
 
 
 def verdict_line(checked: PropertyResult) -> str:
@@ -158,7 +168,8 @@ def property_json(checked: PropertyResult, describer: TraceDescriber) -> dict:
             "reason": result.reason, "stats": result.stats.as_dict(), "trace": trace,
             "vacuous": checked.vacuous,
             "fair_tasks": list(checked.fair_tasks) if checked.fair_tasks else None,
-            "assumes": list(checked.assumes)}
+            "assumes": list(checked.assumes),
+            "pattern": checked.pattern}
 
 
 def warning_json(warning: Diagnostic) -> dict:

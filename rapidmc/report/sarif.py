@@ -18,7 +18,7 @@ from typing import Optional, Sequence
 from .. import __version__
 from ..diagnostics import Diagnostic
 from .counterexample import WIDTH, read_data, shorten
-from .results import PropertyResult
+from .results import PropertyResult, described_formula
 from ..check.result import UNKNOWN, VIOLATED
 from ..check.trace import Trace, TraceDescriber, TraceStep, build_trace
 
@@ -27,7 +27,7 @@ SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 
 def format_sarif(results: Sequence[PropertyResult], describer: TraceDescriber,
                  exit_code: int, warnings: Sequence[Diagnostic] = ()) -> str:
-    rules = [_rule(checked.name, checked.formula) for checked in results]
+    rules = [_rule(checked.name, described_formula(checked)) for checked in results]
     sarif_results = []
     for index, checked in enumerate(results):
         result = checked.result
@@ -78,7 +78,17 @@ def _diagnostic_results(diagnostics: Sequence[Diagnostic], rules: list, results:
                                              span.end_line if span.end_line > span.line else 0)]
         if diagnostic.omitted:          # the last result of a capped report counts the rest
             result["properties"] = {"errorsNotShown": diagnostic.omitted}
+        if diagnostic.flow:             # a lint flow: source, the steps between, sink
+            result["codeFlows"] = [{"threadFlows": [{"locations": [
+                _flow_location(span, text, order)
+                for order, (span, text) in enumerate(diagnostic.flow, start=1)]}]}]
         results.append(result)
+
+
+def _flow_location(span, text: str, order: int) -> dict:
+    location: dict = {"message": {"text": text}}
+    location.update(_location(span.file, span.line, span.column))
+    return {"location": location, "executionOrder": order, "nestingLevel": 0}
 
 
 def _document(rules: list, results: list, exit_code: int) -> str:
@@ -105,7 +115,7 @@ def _violation(index: int, checked: PropertyResult, trace: Trace) -> dict:
     anchor = _anchor(trace, located)
     result = {
         "ruleId": checked.name, "ruleIndex": index, "level": "error",
-        "message": {"text": f"{checked.name} is violated: {checked.formula} "
+        "message": {"text": f"{checked.name} is violated: {described_formula(checked)} "
                             f"({_shape(trace)})"},
         "codeFlows": [{"threadFlows": [{"locations": [
             _flow_step(step, order, trace.loop_start) for order, step in

@@ -89,7 +89,12 @@
       }
       row.appendChild(verdict);
       const formula = element("td");
-      formula.appendChild(element("code", null, property.formula));
+      if (property.pattern) {
+        formula.appendChild(element("code", "pattern", property.pattern));
+        formula.appendChild(element("div", "reason", "LTL: " + property.formula));
+      } else {
+        formula.appendChild(element("code", null, property.formula));
+      }
       row.appendChild(formula);
       const stats = property.stats;
       row.appendChild(element("td", "number", stats.product_states.toLocaleString("en")));
@@ -129,6 +134,8 @@
     $("counterexample").hidden = false;
     $("trace-name").textContent = property.name;
     $("trace-formula").textContent = property.formula;
+    $("trace-pattern").textContent = property.pattern || "";
+    $("trace-pattern-line").hidden = !property.pattern;
     $("trace-shape").textContent = traceShape(property.trace);
     $("slider").max = String(player.steps.length);
     showFileTabs();

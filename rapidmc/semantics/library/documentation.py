@@ -90,17 +90,20 @@ def routine_sections(entries) -> list[str]:
     return lines
 
 
+def components_text(rapid_type) -> str:
+    """A record type's components, ``pos trans, orient rot, ...`` (empty for other types)."""
+    if rapid_type.kind != RECORD:
+        return ""
+    return ", ".join(f"{c.type.name} {c.name}" for c in rapid_type.components)
+
+
 def type_section() -> list[str]:
     lines = ["", "## Data types", "", "| type | kind | components or base |", "|---|---|---|"]
     for key in sorted(PREDEFINED_TYPES):
         if key in HIDDEN_TYPES:
             continue
         rapid_type = PREDEFINED_TYPES[key]
-        if rapid_type.kind == RECORD:
-            detail = ", ".join(f"{c.type.name} {c.name}" for c in rapid_type.components)
-        else:
-            detail = ""
-        lines.append(f"| {rapid_type.name} | {rapid_type.kind} | {detail} |")
+        lines.append(f"| {rapid_type.name} | {rapid_type.kind} | {components_text(rapid_type)} |")
     for key in sorted(PREDEFINED_ALIASES):
         name, base = PREDEFINED_ALIASES[key]
         lines.append(f"| {name} | alias | {base.name} |")
@@ -182,15 +185,20 @@ def document() -> str:
 
 
 def main(argv: list[str]) -> int:
-    text = document()
+    return write_or_check(DOC, document(), "rapidmc.semantics.library.documentation", argv)
+
+
+def write_or_check(page: Path, text: str, module: str, argv: list[str]) -> int:
+    """A generated page's command: write ``text`` to ``page``, or with ``--check`` exit 1
+    when the page differs from it (docs/lint.md's generator uses it too)."""
     if "--check" in argv:
-        current = DOC.read_text(encoding="utf-8") if DOC.exists() else ""
+        current = page.read_text(encoding="utf-8") if page.exists() else ""
         if current != text:
-            print(f"{DOC} is out of date: run python -m rapidmc.semantics.library.documentation", file=sys.stderr)
+            print(f"{page} is out of date: run python -m {module}", file=sys.stderr)
             return 1
         return 0
-    DOC.write_text(text, encoding="utf-8")
-    print(f"wrote {DOC}")
+    page.write_text(text, encoding="utf-8")
+    print(f"wrote {page}")
     return 0
 
 

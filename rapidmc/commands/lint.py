@@ -1,0 +1,87 @@
+"""``rapidmc lint FILE... | BACKUP``: static rules and unchecked input flows.
+
+Loads the modules (a controller backup: each of its tasks, linted as a program of its
+own), runs the rules of ``rapidmc.findings.lint`` with the configuration of
+``[tool.rapidmc.lint]`` in the nearest pyproject.toml and the options, and prints the
+findings: text (``file:line:col: warning: message [RMC8nn]``, source line, caret),
+``--format json`` or ``sarif``.  Exit 0 when no finding at or above ``--severity``
+(default: warning) remains, 1 when one does, 2 for input errors (syntax, files,
+configuration).  Rules are listed in docs/lint.md.
+"""
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from .. import ast
+from ..diagnostics import EXIT_OK, EXIT_VIOLATED
+from ..findings.lint import failing, lint_program
+from ..findings.lint.config import make_config, read_pyproject
+from ..findings.lint.registry import SEVERITIES
+from ..load.backup import every_task, is_backup
+from ..load.source import program_paths
+from ..report.lint import format_lint_json, format_lint_sarif, format_lint_text
+from ..syntax import load_program
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("files", nargs="+", metavar="FILE",
+                        help="RAPID module files (.mod, .sys, .pgf ...) linted as one program, "
+                             "or a controller backup folder (each task is linted)")
+    parser.add_argument("--format", choices=("text", "json", "sarif"), default="text",
+                        help="output format (default: text)")
+    parser.add_argument("--select", action="append", default=[], metavar="CODES",
+                        help="only these rules: codes, code prefixes or names, comma-separated "
+                             "(repeatable; default: every rule, or the configuration's)")
+    parser.add_argument("--ignore", action="append", default=[], metavar="CODES",
+                        help="leave these rules out (codes, prefixes or names, comma-separated)")
+    parser.add_argument("--severity", choices=SEVERITIES, default=None,
+                        help="the lowest severity of a finding that makes the exit code 1 "
+                             "(default: warning, or the configuration's)")
+    parser.add_argument("--task", metavar="NAME",
+                        help="with a backup: lint only this task")
+
+
+def execute(args: argparse.Namespace) -> int:
+    table, origin = read_pyproject(Path.cwd())
+    config = make_config(table, str(origin or "pyproject.toml"), _split(args.select),
+                         _split(args.ignore), args.severity)
+    findings, lines, files = [], 0, 0
+    for paths in _programs(args):
+        program = load_program(paths)
+        findings.extend(lint_program(program, config))
+        lines += _line_count(program)
+        files += len({module.span.file for module in program.modules})
+    exit_code = EXIT_VIOLATED if failing(findings, config.severity) else EXIT_OK
+    if args.format == "json":
+        sys.stdout.write(format_lint_json(findings, exit_code, lines))
+    elif args.format == "sarif":
+        sys.stdout.write(format_lint_sarif(findings, exit_code))
+    else:
+        sys.stdout.write(format_lint_text(findings, lines, files))
+    return exit_code
+
+
+def _split(values: list[str]) -> tuple[str, ...]:
+    return tuple(part.strip() for value in values for part in value.split(",") if part.strip())
+
+
+def _programs(args) -> list[list[str]]:
+    """The programs to lint: the loose files as one, each task of each backup as one."""
+    loose, programs = [], []
+    for name in args.files:
+        if is_backup(Path(name)):
+            programs.extend(modules for task, modules in every_task(Path(name))
+                            if args.task is None or task.upper() == args.task.upper())
+        else:
+            loose.append(name)
+    if loose:
+        programs.insert(0, program_paths(loose))
+    return programs
+
+
+def _line_count(program: ast.Program) -> int:
+    from ..diagnostics import SourceCache
+    files = {module.span.file for module in program.modules}
+    return sum(len(SourceCache.lines(file) or ()) for file in files)
