@@ -5,7 +5,7 @@ same shared PERS data (a counter, a flag, a lock) and its own VAR data, and
 runs a loop (bounded or endless) of statements drawn from: updates of its own
 data, updates of the shared data, conditions on either, waits for shared data
 (which may block forever), a lock taken with WaitTestAndSet, a division that
-may fail.  Everything is kept small by MOD, so the state spaces are finite.
+may fail (caught by an ERROR handler in about half the tasks).  Everything is kept small by MOD, so the state spaces are finite.
 ``task_properties(seed)`` writes LTL properties over the shared data and the
 main task's own data.  The same seed always gives the same text.
 """
@@ -32,8 +32,10 @@ def _task(rng: random.Random, number: int) -> str:
     declarations = [f"  {line}" for line in SHARED] + [f"  VAR num {own} := 0;",
                                                        f"  VAR bool {mine} := FALSE;",
                                                        "  VAR num quotient := 0;"]
+    # a handler every other task: a failed division sets ERRNO (every task's) and goes on
+    handler = ["  ERROR", f"    {own} := 1;", "    RETRY;"] if rng.random() < 0.5 else []
     return "\n".join([f"MODULE Task{number}", *declarations, "  PROC main()", *loop,
-                      "  ENDPROC", "ENDMODULE", ""])
+                      *handler, "  ENDPROC", "ENDMODULE", ""])
 
 
 def _statement(rng: random.Random, own: str, mine: str, indent: int) -> str:

@@ -98,10 +98,17 @@ class PartialOrder:
         return None
 
     def _invisible_step(self, task: int, state: State, after: State) -> bool:
-        if after[7] != RUNNING or after == state or hash(after) in self.expanded:
+        """Whether a step of ``task`` from ``state`` to ``after`` may be ample: it did what
+        a local instruction does (no error raised: ERRNO is every task's, and a handler
+        or an unwinding changes the task's frames), its task goes on with a local
+        instruction, and ``after`` is new to the search (C3)."""
+        if after[7] != RUNNING or after == state or after[5] != state[5] or \
+                after[6] != state[6] or hash(after) in self.expanded:
             return False
+        before = state[0] if task == 0 else state[10][task - 1]
         stack = after[0] if task == 0 else after[10][task - 1]
-        return bool(stack) and self.is_local(task, stack[-1][0], stack[-1][1])
+        return len(stack) == len(before) and stack[-1][3] == before[-1][3] and \
+            self.is_local(task, stack[-1][0], stack[-1][1])
 
     def is_local(self, task: int, routine: int, pc: int) -> bool:
         """Whether the instruction at ``pc`` of ``routine`` is local to ``task`` (C1, C2)."""
