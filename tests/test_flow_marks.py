@@ -55,3 +55,21 @@ def test_reductions_keep_the_flow_verdicts(case, monkeypatch):
     _, unreduced = report_of(plain, monkeypatch)
     assert {p["name"]: p["verdict"] for p in reduced["properties"]} == \
         {p["name"]: p["verdict"] for p in unreduced["properties"]} == case.verdicts
+
+
+def test_a_flow_counterexample_replays(monkeypatch, tmp_path):
+    """``replay`` rebuilds the marked program from the recorded command line."""
+    import contextlib
+    import io
+    from rapidmc.cli import main
+    case = next(case for case in FLOW_CASES if case.name == "flows_socket_move")
+    monkeypatch.chdir(case.folder)
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
+        assert main(case.argv()) == 1
+    trace = tmp_path / "trace.json"
+    trace.write_text(out.getvalue())
+    err = io.StringIO()
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
+        assert main(["replay", str(trace), "--property", "no_unchecked_input", "--quiet"]) == 0
+    assert "the counterexample replays" in err.getvalue()
