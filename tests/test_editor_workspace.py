@@ -3,7 +3,6 @@
 where names are declared."""
 from __future__ import annotations
 
-import sys
 import types
 from pathlib import Path
 
@@ -91,25 +90,27 @@ def test_an_edit_is_parsed_again_and_a_closed_document_is_gone():
     assert space.program_modules("main.mod") == [] and space.text("main.mod") is None
 
 
-def test_lint_findings_join_the_diagnostics(monkeypatch):
-    """The lint stage's entry point is called with the program (a stand-in stage here)."""
-    seen = []
-
-    def lint_program(program):
-        seen.append(sorted(m.name.text for m in program.modules))
-        return [Diagnostic(NEVER_REACHED, "a finding", Span("main.mod", 3, 3), "warning")]
-    monkeypatch.setitem(sys.modules, "rapidmc.findings.lint",
-                        types.SimpleNamespace(lint_program=lint_program))
-    space = space_with(main="MODULE M\nPROC main()\n  WaitTime 1;\nENDPROC\nENDMODULE\n")
-    [finding] = space.diagnostics("main.mod")
-    assert (finding.message, finding.severity, seen) == ("a finding", "warning", [["M"]])
+CHAIN = "MODULE M\nPROC main()\n  VAR bool b;\n  b := TRUE AND NOT b AND b;\nENDPROC\nENDMODULE\n"
 
 
-def test_the_real_lint_stage_reports_a_not_inside_an_and_chain():
-    pytest.importorskip("rapidmc.findings.lint")
-    space = space_with(main="MODULE M\nPROC main()\n  VAR bool b;\n"
-                       "  b := TRUE AND NOT b AND b;\nENDPROC\nENDMODULE\n")
+def test_lint_reports_a_not_inside_an_and_chain():
+    space = space_with(main=CHAIN)
     assert "RMC801" in [d.code.code for d in space.diagnostics("main.mod")]
+
+
+def test_lint_follows_the_nearest_pyproject_configuration(tmp_path):
+    project = tmp_path / "cell"
+    (project / "modules").mkdir(parents=True)
+    (project / "pyproject.toml").write_text('[tool.rapidmc.lint]\nignore = ["not-chain"]\n')
+    main = str(project / "modules" / "main.mod")
+    space = Workspace(read_folders=True)
+    space.update(main, CHAIN)
+    assert "RMC801" not in [d.code.code for d in space.diagnostics(main)]
+    (project / "pyproject.toml").write_text('[tool.rapidmc.lint]\nignored = ["not-chain"]\n')
+    found = {d.code.code: d for d in space.diagnostics(main)}
+    assert "RMC801" in found                              # a bad table: the defaults run
+    assert "unknown key(s) ignored" in found["RMC840"].message
+    assert str(project / "pyproject.toml") in found["RMC840"].message
 
 
 # --- declarations --------------------------------------------------------------------

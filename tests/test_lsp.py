@@ -92,8 +92,7 @@ def test_a_call_into_a_module_neither_open_nor_on_disk_is_unknown_until_it_opens
     assert without_lint(client.diagnostics(main.as_uri())) == []
 
 
-def test_lint_findings_are_published_when_the_lint_stage_is_there(client):
-    pytest.importorskip("rapidmc.findings.lint")
+def test_lint_findings_are_published(client):
     path = client.root / "chain.mod"
     client.open(path, "MODULE Chain\n  PROC main()\n    VAR bool b;\n"
                 "    b := TRUE AND NOT b AND b;\n  ENDPROC\nENDMODULE\n")
@@ -118,7 +117,6 @@ ENDMODULE
 
 
 def test_a_lint_flow_arrives_with_its_path_as_related_information(client):
-    pytest.importorskip("rapidmc.findings.lint")
     path = client.root / "network.mod"
     client.open(path, NETWORK)
     [flow] = [d for d in client.diagnostics(path.as_uri()) if d["code"] == "RMC820"]

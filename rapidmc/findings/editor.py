@@ -2,10 +2,11 @@
 
 A Language Server (``rapidmc lsp``) hands the text of every open document
 to ``Workspace.update``; ``Workspace.diagnostics(file)`` then gives what
-``rapidmc parse`` and ``rapidmc check`` would report for that document, with
-no cap: its syntax errors, or, when it parses, the static (link) errors of
-the program it belongs to, and the lint findings (``findings.lint``, when
-that stage is installed).
+``rapidmc parse``, ``check`` and ``lint`` would report for that document,
+with no cap: its syntax errors, or, when it parses, the static (link) errors
+of the program it belongs to, and the lint findings (``findings.lint``; with
+``read_folders``, configured by the nearest pyproject.toml as ``rapidmc
+lint`` is).
 
 Which program a document belongs to: the document, and the other documents
 of the workspace that declare a global name it uses (routine, data or type),
@@ -30,6 +31,7 @@ from __future__ import annotations
 
 import os
 from dataclasses import dataclass
+from pathlib import Path
 from functools import cached_property
 from typing import Optional
 
@@ -41,6 +43,8 @@ from ..load.source import read_source
 from ..semantics.link import build
 from ..syntax import parse_text
 from .declarations import global_declarations
+from .lint import LintConfig, lint_program
+from .lint.config import make_config, read_pyproject
 
 # The linker's diagnostics an editor leaves out: a module edited alone need not hold main.
 NOT_FOR_EDITORS = (NO_ENTRY,)
@@ -152,7 +156,8 @@ class Workspace:
         if parsed.errors:
             return list(parsed.errors)
         program = ast.Program(tuple(self.program_modules(file)))
-        found = static_errors(program) + lint_findings(program)
+        folder = os.path.dirname(file) if self.read_folders and os.path.isabs(file) else None
+        found = static_errors(program) + lint_findings(program, folder)
         return [d for d in without_repeats(merge_unknown_names(found))
                 if d.span is None or d.span.file == file]
 
@@ -176,10 +181,15 @@ def static_errors(program: ast.Program) -> list[Diagnostic]:
     return []
 
 
-def lint_findings(program: ast.Program) -> list[Diagnostic]:
-    """The lint rules' findings, when the lint stage is installed (else none)."""
-    try:
-        from .lint import lint_program
-    except ImportError:
-        return []
-    return list(lint_program(program))
+def lint_findings(program: ast.Program, folder: Optional[str] = None) -> list[Diagnostic]:
+    """The lint rules' findings, configured by the ``[tool.rapidmc.lint]`` of the nearest
+    pyproject.toml at or above ``folder`` as ``rapidmc lint`` is from its working folder; a
+    malformed configuration is a diagnostic (RMC840), and the rules then run as by default."""
+    config, problems = LintConfig(), []
+    if folder is not None:
+        try:
+            table, origin = read_pyproject(Path(folder))
+            config = make_config(table, str(origin or "pyproject.toml"))
+        except UserError as failure:
+            problems = list(failure.diagnostics)
+    return problems + lint_program(program, config)
