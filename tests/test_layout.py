@@ -114,3 +114,13 @@ def test_few_modules_loose_at_the_root():
 def test_every_package_opens_with_a_docstring(init):
     docstring = ast.get_docstring(ast.parse(init.read_text(encoding="utf-8")))
     assert docstring and len(docstring) > 40, f"{init} needs a docstring saying what it owns"
+
+
+def test_the_architecture_page_names_every_package():
+    page = (PACKAGE.parent / "docs" / "architecture.md").read_text(encoding="utf-8")
+    for init in sorted(PACKAGE.rglob("__init__.py")):
+        folder = init.parent
+        if folder == PACKAGE:
+            continue
+        name = folder.name + "/"
+        assert name in page, f"docs/architecture.md does not name the package {name}"
