@@ -626,7 +626,9 @@ class Inference:
                 self.expression(arg.value)
 
     def _arguments(self, name: ast.Name, args, parameters) -> None:
-        """Match arguments to ``(key, name, type, optional)`` parameters; expect their types."""
+        """Match arguments to ``(key, name, type, optional, mode)`` parameters; expect their
+        types. Missing data given to a VAR parameter (an interrupt number, a socket) must be
+        a variable: the stubs declare it VAR, not PERS."""
         required = [p for p in parameters if not p[3]]
         position = 0
         for arg in args:
@@ -639,6 +641,9 @@ class Inference:
                 spec = next((p for p in parameters if arg.name and p[0] == arg.name.key), None)
             if spec is not None:
                 self.expect(arg.value, spec[2], f"{name.text} argument {spec[1]}")
+                if spec[4] == "VAR" and isinstance(arg.value, ast.NameRef) and \
+                        arg.value.name.key in self.missing:
+                    self.missing[arg.value.name.key].storage = "VAR"
                 if spec[0] == "PROCNAME":
                     self._named_procedure(name, arg.value)
 
@@ -694,8 +699,8 @@ def _text_array(item_types) -> Optional[TypeInfo]:
 
 
 def user_parameters(routine: ast.Routine) -> list[tuple]:
-    return [(p.name.key, p.name.text, TypeInfo(p.type.name.text, p.array_rank), p.optional)
-            for p in routine.parameters]
+    return [(p.name.key, p.name.text, TypeInfo(p.type.name.text, p.array_rank), p.optional,
+             p.mode) for p in routine.parameters]
 
 
 def predefined_parameters(entry) -> list[tuple]:
@@ -706,7 +711,8 @@ def predefined_parameters(entry) -> list[tuple]:
         if not optional and spec.alternative_group is not None:
             optional = spec.alternative_group in groups
             groups.add(spec.alternative_group)
-        found.append((spec.key, spec.name, TypeInfo(spec.type_name, spec.array_rank), optional))
+        found.append((spec.key, spec.name, TypeInfo(spec.type_name, spec.array_rank), optional,
+                      spec.mode))
     return found
 
 

@@ -168,7 +168,8 @@ class StubWriter:
             number, count = item.alternative
             value = str(number)
             notes.append(f"{number} of the {count} names one value is compared with in turn")
-        storage = "CONST" if item.storage == "CONST" and not item.assigned else "PERS"
+        storage = "VAR" if item.storage == "VAR" else \
+            "CONST" if item.storage == "CONST" and not item.assigned else "PERS"
         return [f"{storage} {type_name} {item.name.text}{dims} := {value};" + _comment(notes)]
 
     def _parameters(self, item: Missing) -> tuple[str, list[str]]:
