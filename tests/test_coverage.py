@@ -86,7 +86,7 @@ def test_the_html_page_carries_the_unreached_statements(monkeypatch, capsys, tmp
     text = page.read_text()
     data = json.loads(text.split('id="report-data"', 1)[1].split(">", 1)[1].split("</script>")[0])
     assert data["unreached"] == [{"file": "case_studies/sorter/sorter_b.mod", "line": 84,
-                                  "message": "never reached under any input"}]
+                                  "end_line": 84, "message": "never reached under any input"}]
 
 
 def test_the_html_page_shades_the_unreached_line(browser, monkeypatch, capsys, tmp_path):
