@@ -158,8 +158,10 @@ def _flow_step(step: TraceStep, order: int, loop_start: Optional[int]) -> dict:
         parts.append(transition.source)
     if transition is not None and transition.inputs:
         parts.append("inputs: " + ", ".join(f"{k} = {v}" for k, v in transition.inputs.items()))
-    if step.changes:
-        parts.append("changes: " + ", ".join(f"{c.name} = {c.new}" for c in step.changes))
+    if step.changes:                  # values shortened as in the text report
+        parts.append("changes: " + ", ".join(
+            f"{c.name} = {shorten(c.new, WIDTH)}" if c.new is not None
+            else f"{c.name} (no longer exists)" for c in step.changes))
     location: dict = {"message": {"text": "; ".join(parts) or f"step {step.index}"}}
     if transition is not None and transition.file:
         location.update(_location(transition.file, transition.line))
