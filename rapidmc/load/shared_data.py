@@ -17,6 +17,7 @@ from ..diagnostics.quoting import quoted
 from ..semantics.configured_signals import _walk_statements
 from ..semantics.program import PROGRAM_NAMESPACE
 from ..semantics.library import lookup_function, lookup_procedure
+from ..semantics.library.registry import matched_parameters
 from ..semantics.scope import GLOBAL_DATA, ROUTINE
 from ..semantics.values import format_value
 
@@ -72,23 +73,15 @@ def _parameter_modes(program, lookup, call) -> list:
     binds, None where it is not known (a late-bound or unknown routine)."""
     symbol = lookup(call.name.key)
     if symbol is not None and symbol.kind == ROUTINE:
-        parameters = [(p.key, p.mode, p.optional) for p in program.routines[symbol.slot].parameters]
+        parameters = program.routines[symbol.slot].parameters
     else:
         entry = lookup_procedure(call.name.key) if isinstance(call, ast.ProcedureCall) \
             else lookup_function(call.name.key)
         if entry is None:
             return [None] * len(call.args)
-        parameters = [(p.key, p.mode, p.optional) for p in entry.signature.parameters]
-    required = [mode for _, mode, optional in parameters if not optional]
-    by_key = {key: mode for key, mode, _ in parameters}
-    modes, position = [], 0
-    for arg in call.args:
-        if arg.name is not None:
-            modes.append(by_key.get(arg.name.key))
-        else:
-            modes.append(required[position] if position < len(required) else None)
-            position += 1
-    return modes
+        parameters = entry.signature.parameters
+    return [None if parameter is None else parameter.mode
+            for _, parameter in matched_parameters(call.args, parameters)]
 
 
 def _root(expr):
