@@ -9,9 +9,10 @@ loaded module says for sure:
 * **fixed controller readings**: the predefined routines that read the
   controller (``OpMode``, ``ClkRead``, ``ReadCfgData`` ...) answer fixed or
   sampled values when checking (RMC702, ``fixed_readings``);
-* **PERS data no loaded task writes**: a persistent of a value type that the
-  program reads and no loaded task (nor the environment) can write keeps its
-  initial value here, while on a controller another task or a PC may write it.
+* **PERS data no loaded task writes**: a persistent of a value type that a
+  loaded task reads and no loaded task (nor the environment) can write keeps
+  its initial value here, while on a controller another task or a PC may write
+  it (``load.shared_data.data_uses`` says what each task reads and writes).
 
 ``assumptions(program)`` lists them once; ``touched(assumption list, result)``
 keeps those a counterexample executes a statement of (the names each executed
@@ -30,7 +31,7 @@ from ..check.result import SearchResult
 from ..diagnostics import SourceCache
 from ..load.stubs.module_text import STUB_MARKER
 from ..model.reduction.merging import executed_spans
-from ..semantics.library import registry
+from ..load.shared_data import data_uses
 from ..check.result import VIOLATED
 from ..semantics.program import ENVIRONMENT_NAMESPACE, PROGRAM_NAMESPACE, Program
 from ..semantics.types import ArrayType
@@ -38,7 +39,6 @@ from .fixed_readings import fixed_readings
 
 STUB, READING, OTHER_WRITER = "stub", "fixed reading", "other writer"
 VALUE_TYPES = frozenset({"NUM", "DNUM", "BOOL", "STRING"})
-WRITING_MODES = frozenset({"INOUT", "VAR", "PERS"})
 # routines that write data named by a string: then any persistent may be written
 DATA_BY_NAME = frozenset({"SETDATAVAL", "SETALLDATAVAL"})
 _IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
@@ -172,13 +172,19 @@ def _reading(warning) -> Assumption:
 
 
 def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[Assumption]:
-    written = possibly_written(program)
-    if written is None:
+    """PERS data of a value type that some loaded task reads and none writes (``data_uses``,
+    shared with the partial-order reduction and RMC731)."""
+    if _writes_by_name(program):
         return
+    read, written = set(), set()
+    for namespace in sorted({routine.namespace for routine in program.routines}):
+        task_read, task_written = data_uses(program, namespace)
+        read |= task_read
+        written |= task_written
     for data in program.globals:
         if data.storage != "PERS" or _file(data.span) in (None, *stub_files) or \
-                data.namespace == ENVIRONMENT_NAMESPACE or \
-                data.key in written or not _value_typed(data.type):
+                data.namespace == ENVIRONMENT_NAMESPACE or data.slot not in read or \
+                data.slot in written or not _value_typed(data.type):
             continue
         yield Assumption(OTHER_WRITER, data.name,
                          f"PERS {data.name} keeps its initial value: no loaded task writes it "
@@ -190,54 +196,8 @@ def _value_typed(rapid_type) -> bool:
     return getattr(element, "key", "") in VALUE_TYPES
 
 
-def possibly_written(program: Program) -> Optional[frozenset]:
-    """Upper-case names the loaded code may write: assignment targets, every argument of a
-    procedure call, and function arguments passed to a parameter that is not IN.  None when
-    the code writes data named by a string (then any of it may be written)."""
-    written: set[str] = set()
-    for routine in program.routines:
-        if routine.ast is None:
-            continue
-        for node, _ in ast.walk(routine.ast):
-            if isinstance(node, ast.Assignment):
-                written.update(_root(node.target))
-            elif isinstance(node, ast.LateBindingCall):
-                for argument in node.args:
-                    written.update(_root(argument.value))
-            elif isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
-                if node.name.key in DATA_BY_NAME:
-                    return None
-                procedure = isinstance(node, ast.ProcedureCall)
-                for argument in _by_reference(program, node, procedure):
-                    written.update(_root(argument.value))
-    return frozenset(written)
-
-
-def _by_reference(program: Program, call, procedure: bool) -> Iterator[ast.Argument]:
-    """The arguments of a call that may be written (all, for an unknown routine)."""
-    parameters = _parameters(program, call.name.key, procedure)
-    if parameters is None:
-        yield from call.args
-        return
-    for argument, parameter in registry.matched_parameters(call.args, parameters):
-        if parameter is None or parameter.mode.upper() in WRITING_MODES:
-            yield argument
-
-
-def _parameters(program: Program, key: str, procedure: bool) -> Optional[tuple]:
-    """The parameters of a user or predefined routine (None if unknown)."""
-    for routine in program.routines:
-        if routine.key == key and (routine.kind == "FUNC") != procedure:
-            return routine.parameters
-    entry = registry.lookup_procedure(key) if procedure else registry.lookup_function(key)
-    if entry is None or entry.signature.open_parameters:
-        return None
-    return entry.signature.parameters
-
-
-def _root(expression) -> Iterator[str]:
-    """The data name an expression denotes (``a{i}.x`` -> ``A``), if it denotes one."""
-    while isinstance(expression, (ast.Index, ast.Component)):
-        expression = expression.base
-    if isinstance(expression, ast.NameRef):
-        yield expression.name.key
+def _writes_by_name(program: Program) -> bool:
+    """Whether the code writes data named by a string (then any PERS may be written)."""
+    return any(isinstance(node, ast.ProcedureCall) and node.name.key in DATA_BY_NAME
+               for routine in program.routines if routine.ast is not None
+               for node, _ in ast.walk(routine.ast))
