@@ -37,13 +37,13 @@ from .check import HOLDS, UNKNOWN, VIOLATED, Progress, SearchResult, find_reacha
 from .check.budget import DEFAULT_MAX_STATES
 from .check.trace import Trace, build_trace
 from .diagnostics import (AUTOMATON, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED,
-                          TRACE_REPLAY, UNCHECKED_INPUT, USAGE, Diagnostic, SourceCache,
+                          TRACE_REPLAY, USAGE, Diagnostic, SourceCache,
                           error)
 from .diagnostics.quoting import one_line, quoted
 from .findings.assumptions import assumptions, for_verdict
 from .findings.explored import ExploredFacts
 from .findings.fixed_readings import fixed_readings
-from .findings.lint.marks import PROPERTY as FLOW_PROPERTY
+from .findings.lint.marks import flow_sinks
 from .findings.lint.marks import instrument as instrument_flows
 from .load.backup import link_options, load_tasks, resolve_program_files
 from .load.shared_data import pers_warnings
@@ -283,7 +283,7 @@ def _findings(model: Model, results: list[PropertyResult],
     return list(model.program.load_notes) + list(model.plan.notes) + [
         assumed.note() for assumed in model.assumed] + sorted(
         fixed_readings(model.program) + facts.warnings()
-        + _flow_sinks(model.program, results, model.describer),
+        + flow_sinks(model.program, results, model.describer),
         key=lambda d: (d.span.file, d.span.line, d.span.column))
 
 
@@ -332,36 +332,6 @@ class _Searches:
         return PropertyResult(prop.name, prop.text, result, vacuous,
                               self.fairness.names if self.fairness is not None else (),
                               pattern=prop.pattern)
-
-
-def _flow_sinks(program: Program, results: list[PropertyResult], describer) -> list:
-    """For a violated ``no_unchecked_input``: a warning (RMC820) at the sink its
-    counterexample takes unchecked input to."""
-    marks = program.options.get("flow_marks")
-    if marks is None:
-        return []
-    found = []
-    for checked in results:
-        if checked.name != FLOW_PROPERTY or checked.result.verdict != VIOLATED:
-            continue
-        trace = build_trace(checked.result, describer)
-        for step in (*trace.prefix, *trace.cycle):
-            for change in step.changes:
-                sink = marks.sink(_number(change.new)) if change.name == marks.flag else None
-                if sink is not None:
-                    found.append(Diagnostic(
-                        UNCHECKED_INPUT, f"unchecked input reaches {sink.description} "
-                        f"(step {step.index} of the counterexample of {FLOW_PROPERTY})",
-                        sink.span, severity="warning"))
-                    return found
-    return found
-
-
-def _number(text) -> int:
-    try:
-        return int(float(text))
-    except (TypeError, ValueError):
-        return 0
 
 
 class _StuckWatch:

@@ -73,3 +73,14 @@ def test_a_flow_counterexample_replays(monkeypatch, tmp_path):
     with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(err):
         assert main(["replay", str(trace), "--property", "no_unchecked_input", "--quiet"]) == 0
     assert "the counterexample replays" in err.getvalue()
+
+
+@pytest.mark.parametrize("name, sinks", [("flows_socket_move", [14]),
+                                         ("flows_socket_move_checked", [])])
+def test_a_violated_flow_property_warns_at_the_sink_it_reaches(name, sinks, monkeypatch):
+    """RMC820 names the move the counterexample takes unchecked input to; a range check
+    before the move leaves no warning (findings.lint.marks.flow_sinks)."""
+    case = next(case for case in verdict_cases() if case.name == name)
+    _, document = report_of(case, monkeypatch)
+    warned = [w["location"]["line"] for w in document["warnings"] if w["code"] == "RMC820"]
+    assert warned == sinks

@@ -33,7 +33,9 @@ from dataclasses import dataclass
 from typing import Optional
 
 from ... import ast
-from ...diagnostics import SourceCache
+from ...check.result import VIOLATED
+from ...check.trace import build_trace
+from ...diagnostics import UNCHECKED_INPUT, Diagnostic, SourceCache
 from .arguments import bind_predefined, bind_user
 from .context import LintContext, name_of, subexpressions, top_expressions
 from .checks import COMPARISONS, compares, handles
@@ -416,3 +418,36 @@ def _all_names(program: ast.Program):
                 yield decl.name.key
             for parameter in routine.parameters:
                 yield parameter.name.key
+
+
+# --- what a counterexample of the flow property shows ----------------------------------
+
+
+def flow_sinks(program, results, describer) -> list[Diagnostic]:
+    """For a violated ``no_unchecked_input``: a warning (RMC820) at the sink its
+    counterexample takes unchecked input to."""
+    marks = program.options.get("flow_marks")
+    if marks is None:
+        return []
+    found = []
+    for checked in results:
+        if checked.name != PROPERTY or checked.result.verdict != VIOLATED:
+            continue
+        trace = build_trace(checked.result, describer)
+        for step in (*trace.prefix, *trace.cycle):
+            for change in step.changes:
+                sink = marks.sink(_number(change.new)) if change.name == marks.flag else None
+                if sink is not None:
+                    found.append(Diagnostic(
+                        UNCHECKED_INPUT, f"unchecked input reaches {sink.description} "
+                        f"(step {step.index} of the counterexample of {PROPERTY})",
+                        sink.span, severity="warning"))
+                    return found
+    return found
+
+
+def _number(text) -> int:
+    try:
+        return int(float(text))
+    except (TypeError, ValueError):
+        return 0
