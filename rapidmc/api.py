@@ -355,6 +355,12 @@ class _StuckWatch:
         if not self.seen and self.stuck_at(state, [after for _, after in successors]):
             self.seen = True
 
+    def packed_watch(self) -> tuple:
+        """For a search in the compiled core (``reachability``), which looks for states
+        where the program may be stuck itself (asking ``states`` about those): what
+        ``then`` watches (``ExploredFacts.packed_watch``), else nothing."""
+        return self.then.packed_watch() if self.then is not None else (None, None)
+
     def states(self, state, targets) -> None:
         if self.then is not None:
             self.then.states(state, targets)

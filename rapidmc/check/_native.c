@@ -22,65 +22,8 @@
  * Table; the model's step, the predicate, the observer and the graph's rows stay Python
  * calls.
  */
-#define PY_SSIZE_T_CLEAN
-#include <Python.h>
-#include <stdint.h>
-#include <string.h>
+#include "_common.h"
 
-#define EMPTY (-1)
-#define FIRST_CAPACITY 1024
-
-static uint64_t mix64(uint64_t x)
-{
-    /* splitmix64's finaliser: every bit of the key reaches the slot index */
-    x ^= x >> 30;
-    x *= 0xbf58476d1ce4e5b9ULL;
-    x ^= x >> 27;
-    x *= 0x94d049bb133111ebULL;
-    x ^= x >> 31;
-    return x;
-}
-
-/* ------------------------------------------------------------- growable arrays */
-
-/* ``items`` (``*capacity`` items of ``size`` bytes) with room for ``wanted`` items, moved
- * when they are doubled (from 256) until they fit; NULL when out of memory. */
-static void *reserve(void *items, Py_ssize_t *capacity, size_t size, Py_ssize_t wanted)
-{
-    if (wanted <= *capacity)
-        return items;
-    Py_ssize_t grown = *capacity ? *capacity : 256;
-    while (grown < wanted)
-        grown *= 2;
-    void *moved = PyMem_Realloc(items, grown * size);
-    if (moved == NULL)
-        return PyErr_NoMemory();
-    *capacity = grown;
-    return moved;
-}
-
-typedef struct {          /* a growable array of numbers below 2**31 */
-    int32_t *items;
-    Py_ssize_t length, capacity;
-} Int32Vector;
-
-static int vector32_push(Int32Vector *vector, int64_t item)
-{
-    int32_t *items = reserve(vector->items, &vector->capacity, sizeof(int32_t),
-                             vector->length + 1);
-    if (items == NULL)
-        return -1;
-    vector->items = items;
-    vector->items[vector->length++] = (int32_t)item;
-    return 0;
-}
-
-static void vector32_free(Int32Vector *vector)
-{
-    PyMem_Free(vector->items);
-    vector->items = NULL;
-    vector->length = vector->capacity = 0;
-}
 
 /* ======================================================================== Table */
 
@@ -517,13 +460,21 @@ typedef struct {
      * path position the first of its entries in pending */
     Int32Vector path_keys, pending, path_starts;
     long long transitions, max_depth;
+    /* the product over an explored graph, computed here (``Product.native_successors``):
+     * the graph's row starts and targets, its kept valuations, the search's expanded
+     * flags, and per (automaton state, valuation & read) the automaton targets */
+    PyObject *graph;                 /* (starts, targets, valuations, expanded) or NULL */
+    int32_t *move_starts, *moves;    /* moves of (q, v): moves[move_starts[q * (read + 1) + v] ..] */
+    int64_t read;
+    Int32Vector found;               /* the successors of the state pushed last */
 } CycleSearch;
 
 static PyObject *CycleSearch_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
 {
-    PyObject *successor_keys, *accepting, *budget;
+    PyObject *successor_keys, *accepting, *budget, *graph = Py_None;
     Py_ssize_t width;
-    if (!PyArg_ParseTuple(args, "OOnO", &successor_keys, &accepting, &width, &budget))
+    if (!PyArg_ParseTuple(args, "OOnO|O", &successor_keys, &accepting, &width, &budget,
+                          &graph))
         return NULL;
     if (!PyBytes_Check(accepting)) {
         PyErr_SetString(PyExc_TypeError, "accepting must be bytes");
@@ -539,6 +490,27 @@ static PyObject *CycleSearch_new(PyTypeObject *type, PyObject *args, PyObject *k
     Py_INCREF(budget);
     self->budget = budget;
     self->width = width;
+    if (graph != Py_None) {
+        PyObject *rows, *move_starts, *moves;
+        long long read;
+        if (!PyArg_ParseTuple(graph, "OSSL", &rows, &move_starts, &moves, &read)) {
+            Py_DECREF(self);
+            return NULL;
+        }
+        Py_ssize_t starts_size = PyBytes_GET_SIZE(move_starts);
+        Py_ssize_t moves_size = PyBytes_GET_SIZE(moves);
+        self->move_starts = PyMem_Malloc(starts_size + 1);
+        self->moves = PyMem_Malloc(moves_size + 1);
+        if (self->move_starts == NULL || self->moves == NULL) {
+            Py_DECREF(self);
+            return PyErr_NoMemory();
+        }
+        memcpy(self->move_starts, PyBytes_AS_STRING(move_starts), starts_size);
+        memcpy(self->moves, PyBytes_AS_STRING(moves), moves_size);
+        self->read = read;
+        Py_INCREF(rows);
+        self->graph = rows;
+    }
     return (PyObject *)self;
 }
 
@@ -547,6 +519,7 @@ static int CycleSearch_traverse(CycleSearch *self, visitproc visit, void *arg)
     Py_VISIT(self->successor_keys);
     Py_VISIT(self->budget);
     Py_VISIT(self->accepting);
+    Py_VISIT(self->graph);
     return 0;
 }
 
@@ -555,6 +528,7 @@ static int CycleSearch_clear(CycleSearch *self)
     Py_CLEAR(self->successor_keys);
     Py_CLEAR(self->budget);
     Py_CLEAR(self->accepting);
+    Py_CLEAR(self->graph);
     return 0;
 }
 
@@ -570,6 +544,9 @@ static void CycleSearch_dealloc(CycleSearch *self)
     vector32_free(&self->path_keys);
     vector32_free(&self->path_starts);
     vector32_free(&self->pending);
+    vector32_free(&self->found);
+    PyMem_Free(self->move_starts);
+    PyMem_Free(self->moves);
     Py_TYPE(self)->tp_free((PyObject *)self);
 }
 
@@ -638,37 +615,84 @@ static int budget_says(CycleSearch *self, const char *name, const char *format, 
     return truth;
 }
 
-/* an integer attribute of ``object``; INT64_MAX for infinity (a float); -1 with an error */
-static int64_t integer_attribute(PyObject *object, const char *name)
+typedef struct {               /* the explored graph's arrays, while a search reads them */
+    Py_buffer starts, targets, valuations, expanded;
+    int held;
+} GraphView;
+
+static void release_graph(GraphView *view)
 {
-    PyObject *value = PyObject_GetAttrString(object, name);
-    if (value == NULL)
-        return -1;
-    int64_t number = INT64_MAX;
-    if (PyLong_Check(value))
-        number = PyLong_AsLongLong(value);
-    else if (PyFloat_Check(value) && PyFloat_AS_DOUBLE(value) < 9e18)
-        number = (int64_t)PyFloat_AS_DOUBLE(value);
-    Py_DECREF(value);
-    return number;
+    if (view->held >= 1) PyBuffer_Release(&view->starts);
+    if (view->held >= 2) PyBuffer_Release(&view->targets);
+    if (view->held >= 3) PyBuffer_Release(&view->valuations);
+    if (view->held >= 4) PyBuffer_Release(&view->expanded);
+    view->held = 0;
 }
 
-/* whether ``budget.reason`` is set (-1 with an error) */
-static int budget_stopped(PyObject *budget)
+static int hold_graph(CycleSearch *self, GraphView *view)
 {
-    PyObject *reason = PyObject_GetAttrString(budget, "reason");
-    if (reason == NULL)
+    view->held = 0;
+    if (self->graph == NULL)
+        return 0;
+    PyObject *parts[4];
+    if (!PyArg_ParseTuple(self->graph, "OOOO", &parts[0], &parts[1], &parts[2], &parts[3]))
         return -1;
-    int stopped = reason != Py_None;
-    Py_DECREF(reason);
-    return stopped;
+    Py_buffer *buffers[4] = {&view->starts, &view->targets, &view->valuations, &view->expanded};
+    for (int i = 0; i < 4; i++) {
+        if (PyObject_GetBuffer(parts[i], buffers[i],
+                               (i == 3 ? PyBUF_WRITABLE : PyBUF_SIMPLE) | PyBUF_FORMAT) < 0) {
+            release_graph(view);
+            return -1;
+        }
+        view->held = i + 1;
+    }
+    if (view->starts.itemsize != 4 || view->targets.itemsize != 4) {
+        release_graph(view);
+        PyErr_SetString(PyExc_TypeError, "the graph's rows must be 32-bit arrays");
+        return -1;
+    }
+    return 0;
+}
+
+/* ``Product.successor_keys`` over the explored graph: into ``self->found`` */
+static int graph_successors(CycleSearch *self, GraphView *view, int64_t key)
+{
+    int64_t width = self->width;
+    int64_t state = key / width, q = key % width;
+    const int32_t *starts = view->starts.buf, *targets = view->targets.buf;
+    ((uint8_t *)view->expanded.buf)[state] = 1;
+    self->found.length = 0;
+    Py_ssize_t size = view->valuations.itemsize;
+    const char *values = view->valuations.buf;
+    for (int32_t at = starts[state]; at < starts[state + 1]; at++) {
+        int64_t target = targets[at];
+        uint64_t valuation;
+        switch (size) {
+        case 1: valuation = ((const uint8_t *)values)[target]; break;
+        case 2: valuation = ((const uint16_t *)values)[target]; break;
+        case 4: valuation = ((const uint32_t *)values)[target]; break;
+        default: valuation = ((const uint64_t *)values)[target]; break;
+        }
+        int64_t row = q * (self->read + 1) + (int64_t)(valuation & (uint64_t)self->read);
+        for (int32_t m = self->move_starts[row]; m < self->move_starts[row + 1]; m++) {
+            int64_t successor = target * width + self->moves[m];
+            if (successor > INT32_MAX) {
+                PyErr_SetString(PyExc_OverflowError, "product key beyond 2**31 "
+                                "(the Python engine takes it: --engine python)");
+                return -1;
+            }
+            if (vector32_push(&self->found, successor) < 0)
+                return -1;
+        }
+    }
+    return 0;
 }
 
 /* The search from one initial key: 1 when an accepting cycle closed (the path is left in
  * path_keys and the component on roots), 0 when done or stopped by the budget, -1 on error.
  * One loop, step for step emptiness.py's ``_explore_from`` (push, try the next pending
  * successor, pop), so that the two engines can be read side by side. */
-static int explore_from(CycleSearch *self, int64_t initial_key)
+static int explore_from(CycleSearch *self, int64_t initial_key, GraphView *view)
 {
     const uint8_t *accepting = (const uint8_t *)PyBytes_AS_STRING(self->accepting);
     int64_t width = self->width;
@@ -685,36 +709,48 @@ static int explore_from(CycleSearch *self, int64_t initial_key)
             if (push_dead(self) < 0 || vector32_push(&self->active, index) < 0 ||
                 push_root(self, index, accepting[key % width]) < 0)
                 return -1;
-            PyObject *number = PyLong_FromLongLong(key);
-            if (number == NULL)
-                return -1;
-            PyObject *successors = PyObject_CallOneArg(self->successor_keys, number);
-            Py_DECREF(number);
-            if (successors == NULL)
-                return -1;
-            if (!PyList_CheckExact(successors)) {
-                Py_DECREF(successors);
-                PyErr_SetString(PyExc_TypeError, "successor_keys must return a list");
-                return -1;
+            if (self->graph != NULL) {
+                if (graph_successors(self, view, key) < 0 ||
+                    vector32_push(&self->path_starts, self->pending.length) < 0)
+                    return -1;
+                self->transitions += self->found.length;
+                for (Py_ssize_t i = self->found.length - 1; i >= 0; i--)
+                    if (cover_key(self, self->found.items[i]) < 0 ||
+                        vector32_push(&self->pending, self->found.items[i]) < 0)
+                        return -1;
             }
-            if (vector32_push(&self->path_starts, self->pending.length) < 0) {
-                Py_DECREF(successors);
-                return -1;
-            }
-            Py_ssize_t count = PyList_GET_SIZE(successors);
-            self->transitions += count;
-            for (Py_ssize_t i = count - 1; i >= 0; i--) {
-                int64_t successor = PyLong_AsLongLong(PyList_GET_ITEM(successors, i));
-                if (successor > INT32_MAX && !PyErr_Occurred())
-                    PyErr_SetString(PyExc_OverflowError, "product key beyond 2**31 "
-                                    "(the Python engine takes it: --engine python)");
-                if (PyErr_Occurred() || cover_key(self, successor) < 0 ||
-                    vector32_push(&self->pending, successor) < 0) {
+            else {
+                PyObject *number = PyLong_FromLongLong(key);
+                if (number == NULL)
+                    return -1;
+                PyObject *successors = PyObject_CallOneArg(self->successor_keys, number);
+                Py_DECREF(number);
+                if (successors == NULL)
+                    return -1;
+                if (!PyList_CheckExact(successors)) {
+                    Py_DECREF(successors);
+                    PyErr_SetString(PyExc_TypeError, "successor_keys must return a list");
+                    return -1;
+                }
+                if (vector32_push(&self->path_starts, self->pending.length) < 0) {
                     Py_DECREF(successors);
                     return -1;
                 }
+                Py_ssize_t count = PyList_GET_SIZE(successors);
+                self->transitions += count;
+                for (Py_ssize_t i = count - 1; i >= 0; i--) {
+                    int64_t successor = PyLong_AsLongLong(PyList_GET_ITEM(successors, i));
+                    if (successor > INT32_MAX && !PyErr_Occurred())
+                        PyErr_SetString(PyExc_OverflowError, "product key beyond 2**31 "
+                                        "(the Python engine takes it: --engine python)");
+                    if (PyErr_Occurred() || cover_key(self, successor) < 0 ||
+                        vector32_push(&self->pending, successor) < 0) {
+                        Py_DECREF(successors);
+                        return -1;
+                    }
+                }
+                Py_DECREF(successors);
             }
-            Py_DECREF(successors);
             if (vector32_push(&self->path_keys, key) < 0)
                 return -1;
             if (self->path_keys.length > self->max_depth)
@@ -813,7 +849,11 @@ static PyObject *CycleSearch_explore_from(CycleSearch *self, PyObject *argument)
         PyErr_SetString(PyExc_OverflowError, "product key beyond 2**31");
         return NULL;
     }
-    int found = explore_from(self, key);
+    GraphView view;
+    if (hold_graph(self, &view) < 0)
+        return NULL;
+    int found = explore_from(self, key, &view);
+    release_graph(&view);
     if (found < 0)
         return NULL;
     if (found == 0)
@@ -1105,7 +1145,7 @@ PyMODINIT_FUNC PyInit__native(void)
     Py_INCREF(&CycleSearchType);
     if (PyModule_AddObject(module, "Table", (PyObject *)&TableType) < 0 ||
         PyModule_AddObject(module, "CycleSearch", (PyObject *)&CycleSearchType) < 0 ||
-        PyModule_AddIntConstant(module, "VERSION", 1) < 0) {
+        PyModule_AddIntConstant(module, "VERSION", 2) < 0 || packed_register(module) < 0) {
         Py_DECREF(module);
         return NULL;
     }

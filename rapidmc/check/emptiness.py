@@ -196,8 +196,9 @@ class _NativeCycleSearch:
     def __init__(self, product: Product, budget: SearchBudget):
         self.product = product
         self.budget = budget
+        self.graph = product.native_successors()
         self.search = _native.CycleSearch(product.successor_keys, bytes(product.accepting),
-                                          product.width, budget)
+                                          product.width, budget, self.graph)
 
     def stats(self) -> SearchStats:
         counts = self.search.counts()
@@ -222,8 +223,13 @@ class _NativeCycleSearch:
                 return None
             found = search.explore_from(key)
             if found is not None or self.budget.reason is not None:
-                return found
-        return None
+                return self._finished(found)
+        return self._finished(None)
+
+    def _finished(self, found):
+        if self.graph is not None:        # what successor_ids would have noted on the way
+            self.product.store.note_deadlocks_expanded()
+        return found
 
 
 class _NativeExplored:

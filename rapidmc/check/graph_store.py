@@ -162,6 +162,24 @@ class GraphStore:
             self._evaluate(ids)
         return ids
 
+    def native_rows(self) -> Optional[tuple]:
+        """The arrays a search in the compiled core reads ``successor_ids`` from (row starts,
+        targets, kept valuations, the expanded flags it sets), None when the valuations
+        are not all kept (then ``successor_ids`` evaluates them)."""
+        graph = self.graph
+        if self._evaluated is not None or type(self.valuations) is not array:
+            return None
+        return graph.starts, graph.targets, self.valuations, self.expanded
+
+    def note_deadlocks_expanded(self) -> None:
+        """``deadlocked`` as ``successor_ids`` would have filled it (after a native search)."""
+        deadlocked, expanded = self.graph.deadlocked, self.expanded
+        at = expanded.find(1)
+        while at >= 0:
+            if deadlocked[at]:
+                self.deadlocked.add(at)
+            at = expanded.find(1, at + 1)
+
     def _evaluate(self, ids: Sequence[int]) -> None:
         """The valuations of ``ids``, unless kept with the graph or computed already."""
         evaluated = self._evaluated

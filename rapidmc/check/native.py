@@ -89,19 +89,28 @@ def native_search() -> bool:
     return _engine == NATIVE
 
 
-def state_table(system) -> StateTable:
+def state_table(system, packed: bool = False) -> StateTable:
     """A new state table for ``system``'s states, native when the engine is and the model
     splits its states (a model without ``split_state`` keeps them whole in a dict, which
-    the native table would not improve)."""
-    if _engine == NATIVE and getattr(system, "split_state", None) is not None:
+    the native table would not improve).  ``packed``: the model's packed table when it
+    offers one (``packed_table()``: states as vectors its step machine runs on, for the
+    breadth-first search)."""
+    if _engine != NATIVE:
+        return StateTable(system)
+    offer = getattr(system, "packed_table", None) if packed else None
+    table = offer() if offer is not None else None
+    if table is not None:
+        return table
+    if getattr(system, "split_state", None) is not None:
         return NativeStateTable(system)
     return StateTable(system)
 
 
 def engine_of(table: StateTable) -> str:
     """The engine a search with this state table runs on."""
-    return NATIVE if NativeStateTable is not None and isinstance(table, NativeStateTable) \
-        else PYTHON
+    native = NativeStateTable is not None and isinstance(table, NativeStateTable) or \
+        _native is not None and isinstance(table, _native.PackedTable)
+    return NATIVE if native else PYTHON
 
 
 if _native is not None:

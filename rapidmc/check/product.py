@@ -12,6 +12,7 @@ with ``s' |= g``.  A product state is accepting when ``q`` is.
 """
 from __future__ import annotations
 
+from array import array
 from typing import Hashable, Optional
 
 from .result import LassoStep
@@ -110,6 +111,24 @@ class Product:
             for target in targets:
                 keys.append(base + target)
         return keys
+
+    def native_successors(self) -> Optional[tuple]:
+        """What the compiled core's cycle search needs to compute ``successor_keys`` itself
+        (``_native.CycleSearch``): over an explored graph whose valuations are kept, with
+        guard tables: ((row starts, targets, valuations, expanded flags), move starts,
+        moves, read); else None (it calls ``successor_keys``)."""
+        rows = getattr(self.store, "native_rows", None)
+        if rows is None or self.tables is None:
+            return None
+        found = rows()
+        if found is None:
+            return None
+        starts, moves = array("i", [0]), array("i")
+        for table in self.tables:
+            for targets in table:
+                moves.extend(targets)
+                starts.append(len(moves))
+        return found, starts.tobytes(), moves.tobytes(), self.read
 
     def labelled_successor_keys(self, key: int) -> list[tuple[Hashable, int]]:
         """Every (model label, product successor), for rebuilding paths (slow path)."""

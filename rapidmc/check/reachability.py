@@ -39,11 +39,44 @@ from .progress import Progress
 from .graph_store import ExploredGraph
 from .hashed import hashed_reachable, visited_sets
 from .native import NATIVE, _native, engine_of, state_table
-from .store import unique
+from .store import unique, wider
 from .result import (HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep,
                      SearchResult, SearchStats)
 
 Observer = Callable[[Hashable, Sequence[tuple[Hashable, Hashable]]], None]
+
+
+class _GraphSink:
+    """Where ``packed_breadth_first`` hands what it buffered: the parents of new states
+    and the graph's rows (starts, targets, deadlock flags, one value per kept valuation,
+    interleaved as 64-bit numbers)."""
+
+    def __init__(self, parent: array, graph: Optional[ExploredGraph]):
+        self.parent = parent
+        self.graph = graph
+
+    def __call__(self, parents: bytes, starts: bytes, targets: bytes, deadlocked: bytes,
+                 values: bytes) -> None:
+        self.parent.frombytes(parents)
+        graph = self.graph
+        if graph is None:
+            return
+        graph.starts.frombytes(starts)
+        graph.targets.frombytes(targets)
+        graph.deadlocked.extend(deadlocked)
+        kept = graph.valuations
+        if not kept or not values:
+            return
+        rows = array("Q")
+        rows.frombytes(values)
+        width = len(kept)
+        for position, valuation in enumerate(list(kept)):
+            column = rows[position::width].tolist()
+            known = kept[valuation]
+            top = max(column, default=0)
+            if type(known) is array and top >= 1 << 8 * known.itemsize:
+                known = kept[valuation] = wider(known, top)
+            known.extend(column)
 
 
 class StatesObserver(Protocol):
@@ -100,7 +133,7 @@ class _BreadthFirst:
         self.predicate = predicate
         self.budget = budget
         self.deadlock_is_target = deadlock_is_target
-        self.states = state_table(system)
+        self.states = state_table(system, packed=True)
         self.graph = ExploredGraph(system, self.states, record) if record is not None else None
         self.parent = array("i")          # by id; -1 for initial states
         self.depth = array("i")
@@ -216,11 +249,46 @@ class _BreadthFirst:
         """``_expand_all``'s unlabelled loop from ``frontier`` on, in the compiled core
         (``_native.breadth_first``): the same states, ids, calls and counts; the depths of
         the states it stores are not kept (they grow level by level: only the last one's)."""
+        if hasattr(self.states, "python_successors"):
+            return self._expand_packed(frontier)
         observe = self.observe.states if self.observe is not None else None
         target, self.transitions, self.deadlocks, self.deepest = _native.breadth_first(
             self.states, frontier, self.system.successor_states, observe, self.predicate,
             self.parent, self.depth, self.budget, record, self.deadlock_is_target,
             self.transitions, self.deadlocks)
+        return target if target >= 0 else None
+
+    def _expand_packed(self, frontier: int) -> Optional[int]:
+        """``_expand_natively`` over a packed table (``model.packed``): the successors of
+        the states its step machine takes, the run-time error predicate, the rows of the
+        graph and their valuations, and the observer's stuck check and trigger atoms are
+        computed in the compiled core; Python is called for the rest."""
+        table, observe, graph = self.states, self.observe, self.graph
+        table.predicate = self.predicate
+        table.observer = observe
+        watch = getattr(observe, "packed_watch", None)
+        triggers, seen = watch() if watch is not None else (None, None)
+        kept = list(graph.valuations) if graph is not None else []
+        table.valuations_kept = kept
+        indices = [table.valuation_index(valuation) for valuation in kept]
+        trigger_index = table.valuation_index(triggers) if seen is not None else -1
+        depth_now = self.depth[frontier]
+        level_end = frontier + 1
+        while level_end < len(self.depth) and self.depth[level_end] <= depth_now:
+            level_end += 1
+        sink = _GraphSink(self.parent, graph)
+        target, self.transitions, self.deadlocks, self.deepest, bits = \
+            _native.packed_breadth_first(
+                table, frontier, table.python_successors,
+                table.observe if observe is not None else None,
+                watch is not None and (seen is None or trigger_index >= 0), trigger_index,
+                self.predicate == getattr(self.system, "failed", None),
+                self.deadlock_is_target, graph is not None, self.budget, sink, indices,
+                self.transitions, self.deadlocks, depth_now, level_end,
+                len(graph.targets) if graph is not None else 0)
+        if seen is not None:
+            seen.update(bits)
+        table.predicate = table.observer = None
         return target if target >= 0 else None
 
     def path_to(self, state_id: int) -> list[LassoStep]:

@@ -51,6 +51,11 @@ class ExploredFacts:
         """``__call__`` once every line has run: only the state's atoms remain to watch."""
         self.triggers.seen.add(self.valuation(state))
 
+    def packed_watch(self) -> tuple:
+        """For a search in the compiled core (``reachability``): the valuation whose bits
+        ``states`` collects and the set it adds them to."""
+        return self.valuation, self.triggers.seen
+
     def finish(self, system, search: SearchResult, **bounds) -> None:
         """Mark complete after ``search`` (a search this watched) covered every state.
 
@@ -87,6 +92,9 @@ class ExploredFacts:
 
 def _no_atoms(state: Hashable) -> int:
     return 0
+
+
+_no_atoms.fused_atoms = []      # (no atom for the compiled core to evaluate either)
 
 
 def _nothing(state: Hashable) -> bool:

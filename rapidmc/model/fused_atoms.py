@@ -42,4 +42,7 @@ def fused_valuation(atoms: list[tuple[int, str, dict]],
                   "        pass"]
     lines.append("    return bits" if others is None else "    return bits | _others(state)")
     exec(compile("\n".join(lines) + "\n", "<fused atoms>", "exec"), names)
-    return names["valuation"]
+    valuation = names["valuation"]
+    # what the compiled core's step machine compiles (model/packed/bytecode.py)
+    valuation.fused_atoms = None if others is not None else list(atoms)
+    return valuation

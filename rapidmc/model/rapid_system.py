@@ -90,6 +90,12 @@ class RapidSystem:
     def join_state(parts: tuple) -> State:
         return _new_tuple(State, (parts[0], pvector(parts[1])) + parts[2:5] + parts[5])
 
+    def packed_table(self):
+        """A state table of packed states whose fused steps the compiled core runs
+        (``model.packed``), or None when the core is not built or cannot take them."""
+        from .packed.table import packed_table
+        return packed_table(self)
+
     def unreduced(self) -> "RapidSystem":
         """The same program and configuration without reductions."""
         if not self.plan.active:

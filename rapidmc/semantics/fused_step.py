@@ -379,6 +379,10 @@ def _fused(program, config: CheckConfig, routine: int) -> Optional[FusedRoutine]
         return fused
 
 
+routine_fused = _fused        # (for the compiled step machine: model/packed/bytecode.py)
+block_targets = _targets
+
+
 def _entry(program, config: CheckConfig, frame: Frame, labelled: bool):
     """The fused entry that runs a step of ``frame`` (``FusedRoutine.entry``), or None
     when the step needs the general machinery."""

@@ -1,0 +1,97 @@
+/* What the two C files of rapidmc's compiled core share: hashing, growable arrays and
+ * the search budget's attributes (see _native.c and _packed.c). */
+#ifndef RAPIDMC_COMMON_H
+#define RAPIDMC_COMMON_H
+
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+#include <stdint.h>
+#include <string.h>
+
+#define EMPTY (-1)
+#define FIRST_CAPACITY 1024
+
+static inline uint64_t mix64(uint64_t x)
+{
+    /* splitmix64's finaliser: every bit of the key reaches the slot index */
+    x ^= x >> 30;
+    x *= 0xbf58476d1ce4e5b9ULL;
+    x ^= x >> 27;
+    x *= 0x94d049bb133111ebULL;
+    x ^= x >> 31;
+    return x;
+}
+
+/* ------------------------------------------------------------- growable arrays */
+
+/* ``items`` (``*capacity`` items of ``size`` bytes) with room for ``wanted`` items, moved
+ * when they are doubled (from 256) until they fit; NULL when out of memory. */
+static inline void *reserve(void *items, Py_ssize_t *capacity, size_t size, Py_ssize_t wanted)
+{
+    if (wanted <= *capacity)
+        return items;
+    Py_ssize_t grown = *capacity ? *capacity : 256;
+    while (grown < wanted)
+        grown *= 2;
+    void *moved = PyMem_Realloc(items, grown * size);
+    if (moved == NULL)
+        return PyErr_NoMemory();
+    *capacity = grown;
+    return moved;
+}
+
+typedef struct {          /* a growable array of numbers below 2**31 */
+    int32_t *items;
+    Py_ssize_t length, capacity;
+} Int32Vector;
+
+static inline int vector32_push(Int32Vector *vector, int64_t item)
+{
+    int32_t *items = reserve(vector->items, &vector->capacity, sizeof(int32_t),
+                             vector->length + 1);
+    if (items == NULL)
+        return -1;
+    vector->items = items;
+    vector->items[vector->length++] = (int32_t)item;
+    return 0;
+}
+
+static inline void vector32_free(Int32Vector *vector)
+{
+    PyMem_Free(vector->items);
+    vector->items = NULL;
+    vector->length = vector->capacity = 0;
+}
+
+/* an integer attribute of ``object``; INT64_MAX for infinity (a float); -1 with an error */
+static inline int64_t integer_attribute(PyObject *object, const char *name)
+{
+    PyObject *value = PyObject_GetAttrString(object, name);
+    if (value == NULL)
+        return -1;
+    int64_t number = INT64_MAX;
+    if (PyLong_Check(value))
+        number = PyLong_AsLongLong(value);
+    else if (PyFloat_Check(value) && PyFloat_AS_DOUBLE(value) < 9e18)
+        number = (int64_t)PyFloat_AS_DOUBLE(value);
+    Py_DECREF(value);
+    return number;
+}
+
+/* whether ``budget.reason`` is set (-1 with an error) */
+static inline int budget_stopped(PyObject *budget)
+{
+    PyObject *reason = PyObject_GetAttrString(budget, "reason");
+    if (reason == NULL)
+        return -1;
+    int stopped = reason != Py_None;
+    Py_DECREF(reason);
+    return stopped;
+}
+
+
+/* registers PackedTable and packed_breadth_first (_packed.c) in the module */
+int packed_register(PyObject *module);
+extern PyMethodDef packed_functions[];
+
+#endif

@@ -1,0 +1,1888 @@
+/* Packed states and the step machine: the search's hot loop without Python objects.
+ *
+ * A model that can describe its states as two vectors of small numbers (rapidmc's
+ * RAPID model does, see rapidmc/model/packed/) hands the search a ``PackedTable``:
+ *
+ * - values: every distinct value a state holds gets an id (numbers and booleans by
+ *   value, ``-0.0`` with ``0.0`` as Python's ``==`` has it; other objects through a
+ *   dict), so a state is vectors of 32-bit value ids;
+ * - segments: a state is a frame vector (context id, program counter, local data) and
+ *   a data vector (global data, then signals), each interned once in a table of its own
+ *   (SPIN's collapse compression), and the state is the pair of segment ids, interned in
+ *   an open-addressing table: ids in the order states were first interned, as the Python
+ *   table gives them;
+ * - the step machine: a routine's fused steps (``semantics/fused_step.py``) compiled to a
+ *   small stack code (``model/packed/bytecode.py``) that runs on the vectors.  Whatever
+ *   the code does not cover (calls, errors, strings, handlers...) makes it give up
+ *   before it changes anything; the search then asks the Python step for that state.
+ *   Property atoms are compiled the same way (an error makes an atom false, as in
+ *   ``model/fused_atoms.py``).
+ *
+ * ``packed_breadth_first`` is reachability.py's unlabelled loop over such a table: the
+ * same states, ids, transitions, deadlocks and rows of the explored graph, and the same
+ * Python calls for the states the step machine leaves to Python.
+ */
+#include "_common.h"
+#include <math.h>
+
+enum { T_NUM = 0, T_BOOL = 1, T_INT = 2, T_OBJ = 3 };
+
+/* what a context says (model/packed/table.py): the machine may step there; the program
+ * has failed there */
+enum { CONTEXT_RUNS = 1, CONTEXT_FAILED = 2 };
+
+/* opcodes of the step machine (mirrored in rapidmc/model/packed/bytecode.py) */
+enum {
+    OP_CONST = 1, OP_LOAD_STORE, OP_LOAD_LOCAL, OP_READ, OP_READ_DYN,
+    OP_ADD, OP_SUB, OP_MUL, OP_DIVIDE, OP_TO_NUM, OP_TO_DNUM, OP_INT_DIV, OP_INT_MOD,
+    OP_NEG, OP_NOT, OP_EQ, OP_NE, OP_LT, OP_LE, OP_GT, OP_GE, OP_AND, OP_OR,
+    OP_SET_STORE, OP_SET_LOCAL, OP_SET_TEMP, OP_GET_TEMP,
+    OP_GOTO, OP_BRANCH, OP_GOTO_IF, OP_RESET_CHOSEN, OP_UNSUPPORTED,
+    OP_FOR_DEFAULT_STEP, OP_FOR_INIT, OP_FOR_NEXT,
+    OP_ATOM_BEGIN, OP_ATOM_END, OP_END
+};
+
+/* what a run of code ends with */
+enum { VM_DONE = 0, VM_ERROR = 1, VM_UNSUPPORTED = 2 };
+
+#define FRAME_CACHE 1024
+#define STACK_SIZE 64
+#define TEMPS 8
+#define MAX_CHOICES 64
+#define MAX_BLOCKS_PER_STEP 100000
+#define NUM_EXACT_INTEGER 8388608.0
+#define INT_LIMIT 4611686018427387904.0        /* 2**62: integer operands beyond it: Python */
+
+typedef struct {
+    int tag;
+    double d;           /* T_NUM, T_BOOL (0/1), T_INT */
+    int32_t id;         /* the value's id, -1 while not interned (numbers computed here) */
+} Value;
+
+typedef struct {        /* a table of vectors of value ids, each stored once */
+    uint32_t *arena;
+    Py_ssize_t arena_length, arena_capacity;
+    int64_t *offsets;   /* vector i: arena[offsets[i] .. offsets[i + 1]) */
+    Py_ssize_t count, offsets_capacity;
+    uint32_t *hashes;   /* by id: the vector's hash (compared before its items) */
+    Py_ssize_t hashes_capacity;
+    int32_t *slots;
+    uint64_t mask;
+} VectorTable;
+
+typedef struct {        /* one routine's compiled steps */
+    Py_ssize_t length;          /* instructions */
+    uint8_t *kinds, *first_visible;
+    int32_t *block_start;       /* per pc: where its block starts in ``code``, -1: none */
+    int32_t *code;
+    Py_ssize_t code_length;
+} Routine;
+
+typedef struct {        /* compiled atoms of one valuation */
+    int32_t *code;
+    Py_ssize_t code_length;
+} Valuation;
+
+typedef struct {
+    PyObject_HEAD
+    /* values by id */
+    uint8_t *value_tag;
+    double *value_number;
+    PyObject **value_object;    /* the Python object (made when first asked for numbers) */
+    Py_ssize_t values, value_capacity;
+    int32_t *value_slots;       /* numbers and booleans: (tag, value) -> id */
+    uint64_t value_mask;
+    PyObject *object_ids;       /* other objects: object -> id */
+    /* segments and states */
+    VectorTable frames, data;
+    int64_t *keys;              /* by state id: frame id << 32 | data id */
+    Py_ssize_t count, key_capacity;
+    int32_t *slots;
+    uint64_t mask;
+    /* contexts (by context id): the routine of the top frame (-1: none), whether the
+     * step machine may run there */
+    int32_t *context_routine;
+    uint8_t *context_runs;      /* CONTEXT_ flags */
+    Py_ssize_t contexts, context_capacity;
+    /* the program */
+    Routine *routines;
+    Py_ssize_t routine_count;
+    Py_ssize_t store_length, io_length;
+    int32_t **lazy_domain;      /* by signal index: the domain's value ids, NULL: not lazy */
+    int32_t *lazy_size;
+    Valuation *valuations;
+    Py_ssize_t valuation_count;
+    /* (frame id, pc) + 1 -> frame id: the frames a step reaches without changing locals */
+    uint64_t frame_cache_key[FRAME_CACHE];
+    int32_t frame_cache_value[FRAME_CACHE];
+    /* counters */
+    long long machine_steps, python_steps;
+} PackedTable;
+
+/* ================================================================ vector tables */
+
+static inline uint64_t hash_vector(const uint32_t *items, Py_ssize_t length)
+{
+    uint64_t h = (uint64_t)length * 0x9e3779b97f4a7c15ULL;
+    Py_ssize_t i = 0;
+    for (; i + 1 < length; i += 2) {        /* two ids per multiplication */
+        h = (h ^ (items[i] | (uint64_t)items[i + 1] << 32)) * 0xff51afd7ed558ccdULL;
+        h ^= h >> 29;
+    }
+    if (i < length) {
+        h = (h ^ items[i]) * 0xff51afd7ed558ccdULL;
+        h ^= h >> 29;
+    }
+    return mix64(h);
+}
+
+static inline int same_items(const uint32_t *a, const uint32_t *b, Py_ssize_t length)
+{
+    for (Py_ssize_t i = 0; i < length; i++)
+        if (a[i] != b[i])
+            return 0;
+    return 1;
+}
+
+static int vt_init(VectorTable *table)
+{
+    table->slots = PyMem_Malloc(FIRST_CAPACITY * sizeof(int32_t));
+    table->offsets = PyMem_Malloc(256 * sizeof(int64_t));
+    if (table->slots == NULL || table->offsets == NULL) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    memset(table->slots, 0xff, FIRST_CAPACITY * sizeof(int32_t));
+    table->mask = FIRST_CAPACITY - 1;
+    table->offsets_capacity = 256;
+    table->offsets[0] = 0;
+    return 0;
+}
+
+static void vt_free(VectorTable *table)
+{
+    PyMem_Free(table->arena);
+    PyMem_Free(table->offsets);
+    PyMem_Free(table->slots);
+    PyMem_Free(table->hashes);
+}
+
+static inline const uint32_t *vt_items(const VectorTable *table, int32_t id, Py_ssize_t *length)
+{
+    *length = (Py_ssize_t)(table->offsets[id + 1] - table->offsets[id]);
+    return table->arena + table->offsets[id];
+}
+
+static int vt_grow(VectorTable *table)
+{
+    uint64_t capacity = (table->mask + 1) * 2;
+    int32_t *slots = PyMem_Malloc(capacity * sizeof(int32_t));
+    if (slots == NULL) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    memset(slots, 0xff, capacity * sizeof(int32_t));
+    for (Py_ssize_t id = 0; id < table->count; id++) {
+        uint64_t position = mix64(table->hashes[id]) & (capacity - 1);
+        while (slots[position] != EMPTY)
+            position = (position + 1) & (capacity - 1);
+        slots[position] = (int32_t)id;
+    }
+    PyMem_Free(table->slots);
+    table->slots = slots;
+    table->mask = capacity - 1;
+    return 0;
+}
+
+/* the id of the vector ``items`` (stored when new); -1 with an error */
+static int32_t vt_intern(VectorTable *table, const uint32_t *items, Py_ssize_t length)
+{
+    uint32_t hash = (uint32_t)hash_vector(items, length);
+    uint64_t position = mix64(hash) & table->mask;
+    for (;;) {
+        int32_t id = table->slots[position];
+        if (id == EMPTY)
+            break;
+        if (table->hashes[id] == hash) {
+            Py_ssize_t stored_length;
+            const uint32_t *stored = vt_items(table, id, &stored_length);
+            if (stored_length == length && same_items(stored, items, length))
+                return id;
+        }
+        position = (position + 1) & table->mask;
+    }
+    if (table->count >= INT32_MAX - 1) {
+        PyErr_SetString(PyExc_OverflowError, "more than 2**31 distinct state parts");
+        return -1;
+    }
+    uint32_t *arena = reserve(table->arena, &table->arena_capacity, sizeof(uint32_t),
+                              table->arena_length + length + 1);
+    if (arena == NULL)
+        return -1;
+    table->arena = arena;
+    int64_t *offsets = reserve(table->offsets, &table->offsets_capacity, sizeof(int64_t),
+                               table->count + 2);
+    if (offsets == NULL)
+        return -1;
+    table->offsets = offsets;
+    uint32_t *hashes = reserve(table->hashes, &table->hashes_capacity, sizeof(uint32_t),
+                               table->count + 1);
+    if (hashes == NULL)
+        return -1;
+    table->hashes = hashes;
+    memcpy(table->arena + table->arena_length, items, length * sizeof(uint32_t));
+    table->arena_length += length;
+    int32_t id = (int32_t)table->count++;
+    table->offsets[id + 1] = table->arena_length;
+    table->hashes[id] = hash;
+    table->slots[position] = id;
+    if ((uint64_t)table->count * 2 > table->mask + 1 && vt_grow(table) < 0)
+        return -1;
+    return id;
+}
+
+static Py_ssize_t vt_bytes(const VectorTable *table)
+{
+    return table->arena_capacity * sizeof(uint32_t) + table->offsets_capacity * sizeof(int64_t)
+        + table->hashes_capacity * sizeof(uint32_t) + (table->mask + 1) * sizeof(int32_t);
+}
+
+/* ======================================================================= values */
+
+static uint64_t number_key(int tag, double d)
+{
+    if (d == 0.0)
+        d = 0.0;                /* -0.0 == 0.0, as Python compares them */
+    uint64_t bits;
+    memcpy(&bits, &d, sizeof bits);
+    return mix64(bits ^ ((uint64_t)tag << 61) ^ 0x5851f42d4c957f2dULL);
+}
+
+static int same_number(PackedTable *self, int32_t id, int tag, double d)
+{
+    if (self->value_tag[id] != tag)
+        return 0;
+    double stored = self->value_number[id];
+    if (stored == d)
+        return 1;
+    return stored != stored && d != d &&
+        memcmp(&stored, &d, sizeof d) == 0;         /* the same NaN */
+}
+
+static int grow_values(PackedTable *self)
+{
+    uint64_t capacity = (self->value_mask + 1) * 2;
+    int32_t *slots = PyMem_Malloc(capacity * sizeof(int32_t));
+    if (slots == NULL) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    memset(slots, 0xff, capacity * sizeof(int32_t));
+    for (Py_ssize_t id = 0; id < self->values; id++) {
+        if (self->value_tag[id] == T_OBJ)
+            continue;
+        uint64_t position = number_key(self->value_tag[id], self->value_number[id]) &
+            (capacity - 1);
+        while (slots[position] != EMPTY)
+            position = (position + 1) & (capacity - 1);
+        slots[position] = (int32_t)id;
+    }
+    PyMem_Free(self->value_slots);
+    self->value_slots = slots;
+    self->value_mask = capacity - 1;
+    return 0;
+}
+
+/* a new value id (its object may be NULL: made when asked for); -1 with an error */
+static int32_t add_value(PackedTable *self, int tag, double d, PyObject *object)
+{
+    Py_ssize_t capacity = self->value_capacity;
+    uint8_t *tags = reserve(self->value_tag, &capacity, 1, self->values + 1);
+    if (tags == NULL)
+        return -1;
+    self->value_tag = tags;
+    capacity = self->value_capacity;
+    double *numbers = reserve(self->value_number, &capacity, sizeof(double), self->values + 1);
+    if (numbers == NULL)
+        return -1;
+    self->value_number = numbers;
+    capacity = self->value_capacity;
+    PyObject **objects = reserve(self->value_object, &capacity, sizeof(PyObject *),
+                                 self->values + 1);
+    if (objects == NULL)
+        return -1;
+    self->value_object = objects;
+    self->value_capacity = capacity;
+    int32_t id = (int32_t)self->values++;
+    self->value_tag[id] = (uint8_t)tag;
+    self->value_number[id] = d;
+    Py_XINCREF(object);
+    self->value_object[id] = object;
+    return id;
+}
+
+/* the id of a number or boolean (stored when new, with ``object`` if given) */
+static int32_t number_id(PackedTable *self, int tag, double d, PyObject *object)
+{
+    uint64_t position = number_key(tag, d) & self->value_mask;
+    for (;;) {
+        int32_t id = self->value_slots[position];
+        if (id == EMPTY)
+            break;
+        if (same_number(self, id, tag, d))
+            return id;
+        position = (position + 1) & self->value_mask;
+    }
+    int32_t id = add_value(self, tag, d, object);
+    if (id < 0)
+        return -1;
+    self->value_slots[position] = id;
+    if ((uint64_t)self->values * 2 > self->value_mask + 1 && grow_values(self) < 0)
+        return -1;
+    return id;
+}
+
+/* the id of any Python value; -1 with an error */
+static int32_t value_id(PackedTable *self, PyObject *object)
+{
+    PyTypeObject *type = Py_TYPE(object);
+    if (type == &PyFloat_Type)
+        return number_id(self, T_NUM, PyFloat_AS_DOUBLE(object), object);
+    if (type == &PyBool_Type)
+        return number_id(self, T_BOOL, object == Py_True ? 1.0 : 0.0, object);
+    if (type == &PyLong_Type) {
+        int overflow = 0;
+        long long number = PyLong_AsLongLongAndOverflow(object, &overflow);
+        if (number == -1 && PyErr_Occurred())
+            return -1;
+        if (!overflow && number > -(1LL << 53) && number < (1LL << 53))
+            return number_id(self, T_INT, (double)number, object);
+    }
+    PyObject *known = PyDict_GetItemWithError(self->object_ids, object);
+    if (known != NULL)
+        return (int32_t)PyLong_AsLong(known);
+    if (PyErr_Occurred())
+        return -1;
+    int32_t id = add_value(self, T_OBJ, 0.0, object);
+    if (id < 0)
+        return -1;
+    PyObject *number = PyLong_FromLong(id);
+    if (number == NULL || PyDict_SetItem(self->object_ids, object, number) < 0) {
+        Py_XDECREF(number);
+        return -1;
+    }
+    Py_DECREF(number);
+    return id;
+}
+
+/* the Python object of a value id (a new reference) */
+static PyObject *value_object(PackedTable *self, int32_t id)
+{
+    PyObject *object = self->value_object[id];
+    if (object == NULL) {
+        double d = self->value_number[id];
+        switch (self->value_tag[id]) {
+        case T_NUM: object = PyFloat_FromDouble(d); break;
+        case T_BOOL: object = PyBool_FromLong(d != 0.0); break;
+        default: object = PyLong_FromLongLong((long long)d); break;
+        }
+        if (object == NULL)
+            return NULL;
+        self->value_object[id] = object;
+    }
+    Py_INCREF(object);
+    return object;
+}
+
+/* ======================================================================== states */
+
+static int grow_states(PackedTable *self)
+{
+    uint64_t capacity = (self->mask + 1) * 2;
+    int32_t *slots = PyMem_Malloc(capacity * sizeof(int32_t));
+    if (slots == NULL) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    memset(slots, 0xff, capacity * sizeof(int32_t));
+    for (Py_ssize_t id = 0; id < self->count; id++) {
+        uint64_t position = mix64((uint64_t)self->keys[id]) & (capacity - 1);
+        while (slots[position] != EMPTY)
+            position = (position + 1) & (capacity - 1);
+        slots[position] = (int32_t)id;
+    }
+    PyMem_Free(self->slots);
+    self->slots = slots;
+    self->mask = capacity - 1;
+    return 0;
+}
+
+/* the id of the state (frame id, data id), ``*is_new``; -1: new and not ``add``;
+ * -2 with an error */
+static Py_ssize_t intern_key(PackedTable *self, int32_t frame, int32_t data, int add,
+                             int *is_new)
+{
+    int64_t key = ((int64_t)frame << 32) | (uint32_t)data;
+    uint64_t position = mix64((uint64_t)key) & self->mask;
+    for (;;) {
+        int32_t id = self->slots[position];
+        if (id == EMPTY)
+            break;
+        if (self->keys[id] == key) {
+            *is_new = 0;
+            return id;
+        }
+        position = (position + 1) & self->mask;
+    }
+    *is_new = 1;
+    if (!add)
+        return -1;
+    int64_t *keys = reserve(self->keys, &self->key_capacity, sizeof(int64_t), self->count + 1);
+    if (keys == NULL)
+        return -2;
+    self->keys = keys;
+    Py_ssize_t id = self->count++;
+    self->keys[id] = key;
+    self->slots[position] = (int32_t)id;
+    if ((uint64_t)self->count * 4 > (self->mask + 1) * 3 && grow_states(self) < 0)
+        return -2;
+    return id;
+}
+
+/* ============================================================== the step machine */
+
+typedef struct {
+    PackedTable *table;
+    uint32_t *locals;           /* working copies */
+    Py_ssize_t local_count;
+    uint32_t *data;
+    int32_t pc;
+    int data_changed, locals_changed;   /* whether the step wrote a different value */
+    int lazy;                   /* inputs chosen where read (steps), or read from data */
+    /* choices: the script to follow, the domain sizes met */
+    int32_t script[MAX_CHOICES];
+    Py_ssize_t script_length;
+    int32_t sizes[MAX_CHOICES];
+    Py_ssize_t size_count;
+    /* the inputs chosen by the instruction running now: by signal index */
+    uint32_t *chosen_epoch;
+    int32_t *chosen_value;
+    uint32_t epoch;
+    Value temps[TEMPS];
+} Run;
+
+static inline Value load(PackedTable *table, uint32_t id)
+{
+    Value v;
+    v.tag = table->value_tag[id];
+    v.d = table->value_number[id];
+    v.id = (int32_t)id;
+    return v;
+}
+
+static inline Value number(int tag, double d)
+{
+    Value v = {tag, d, -1};
+    return v;
+}
+
+/* the id of a value computed here (-1 with an error) */
+static inline int32_t store_id(PackedTable *table, Value v)
+{
+    if (v.id >= 0)
+        return v.id;
+    return number_id(table, v.tag, v.d, NULL);
+}
+
+static inline int numeric(Value v)
+{
+    return v.tag != T_OBJ;
+}
+
+static inline int integral(double d)
+{
+    return d == d && !isinf(d) && d == floor(d);
+}
+
+/* read signal ``index`` as ``fused_step._read`` does */
+static int read_signal(Run *run, int64_t index, Value *out)
+{
+    PackedTable *table = run->table;
+    if (index < 0 || index >= table->io_length)
+        return VM_UNSUPPORTED;          /* unbound signal data: Python raises */
+    if (run->lazy && table->lazy_domain[index] != NULL) {
+        if (run->chosen_epoch[index] == run->epoch) {
+            *out = load(table, run->chosen_value[index]);
+            return VM_DONE;
+        }
+        Py_ssize_t position = run->size_count;
+        if (position >= MAX_CHOICES)
+            return VM_UNSUPPORTED;
+        run->sizes[run->size_count++] = table->lazy_size[index];
+        int32_t chosen = position < run->script_length ? run->script[position] : 0;
+        int32_t id = table->lazy_domain[index][chosen];
+        run->chosen_epoch[index] = run->epoch;
+        run->chosen_value[index] = id;
+        *out = load(table, id);
+        return VM_DONE;
+    }
+    *out = load(table, run->data[table->store_length + index]);
+    return VM_DONE;
+}
+
+static int to_num(Value *v)
+{
+    double x = v->d;
+    if (!(integral(x) && x >= -NUM_EXACT_INTEGER && x <= NUM_EXACT_INTEGER)) {
+        if (x != x || isinf(x))
+            return VM_ERROR;
+        float rounded = (float)x;
+        if (isinf(rounded))
+            return VM_ERROR;            /* beyond the float32 range: ERR_NUM_LIMIT */
+        x = (double)rounded;
+    }
+    *v = number(T_NUM, x);
+    return VM_DONE;
+}
+
+static int truth(Value v, int *out)
+{
+    if (v.tag == T_OBJ)
+        return VM_UNSUPPORTED;
+    *out = v.d != 0.0;
+    return VM_DONE;
+}
+
+static int integer_operands(Value a, Value b, long long *x, long long *y)
+{
+    if (!numeric(a) || !numeric(b) || a.tag == T_BOOL || b.tag == T_BOOL)
+        return VM_UNSUPPORTED;
+    if (!integral(a.d) || !integral(b.d) || b.d == 0.0)
+        return VM_ERROR;               /* ERR_NOTINTVAL, ERR_DIVZERO */
+    if (fabs(a.d) >= INT_LIMIT || fabs(b.d) >= INT_LIMIT)
+        return VM_UNSUPPORTED;
+    *x = (long long)a.d;
+    *y = (long long)b.d;
+    return VM_DONE;
+}
+
+/* Run ``code`` from ``ip`` until the block sets the pc (VM_DONE), an error (VM_ERROR) or
+ * what Python must do (VM_UNSUPPORTED).  Atom code (``bits``) runs to OP_END. */
+static int execute(Run *run, const int32_t *code, Py_ssize_t ip, uint64_t *bits)
+{
+    PackedTable *table = run->table;
+    Value stack[STACK_SIZE];
+    int top = 0;                /* items on the stack */
+    Py_ssize_t atom_end = -1;   /* atoms: where the next atom starts */
+    int outcome;
+#define POP() (stack[--top])
+#define PUSH(v) (stack[top++] = (v))
+#define FAIL(o) do { outcome = (o); goto failed; } while (0)
+    for (;;) {
+        int32_t op = code[ip++];
+        switch (op) {
+        case OP_CONST:
+            PUSH(load(table, (uint32_t)code[ip++]));
+            break;
+        case OP_LOAD_STORE:
+            PUSH(load(table, run->data[code[ip++]]));
+            break;
+        case OP_LOAD_LOCAL: {
+            int32_t slot = code[ip++];
+            if (slot >= run->local_count)
+                FAIL(VM_UNSUPPORTED);
+            PUSH(load(table, run->locals[slot]));
+            break;
+        }
+        case OP_READ: {
+            Value v;
+            if ((outcome = read_signal(run, code[ip++], &v)) != VM_DONE)
+                goto failed;
+            PUSH(v);
+            break;
+        }
+        case OP_READ_DYN: {
+            Value index = POP(), v;
+            if (index.tag != T_INT)
+                FAIL(VM_UNSUPPORTED);
+            if ((outcome = read_signal(run, (int64_t)index.d, &v)) != VM_DONE)
+                goto failed;
+            PUSH(v);
+            break;
+        }
+        case OP_ADD: case OP_SUB: case OP_MUL: {
+            Value b = POP(), a = POP();
+            if (!numeric(a) || !numeric(b))
+                FAIL(VM_UNSUPPORTED);
+            double r = op == OP_ADD ? a.d + b.d : op == OP_SUB ? a.d - b.d : a.d * b.d;
+            /* Python: int op int stays an int (then rounded by _to_num), else a float */
+            int tag = a.tag != T_NUM && b.tag != T_NUM ? T_INT : T_NUM;
+            if (tag == T_INT && fabs(r) >= 9007199254740992.0)
+                FAIL(VM_UNSUPPORTED);
+            PUSH(number(tag, r));
+            break;
+        }
+        case OP_DIVIDE: {
+            Value b = POP(), a = POP();
+            if (!numeric(a) || !numeric(b))
+                FAIL(VM_UNSUPPORTED);
+            if (b.d == 0.0)
+                FAIL(VM_ERROR);                 /* ERR_DIVZERO */
+            PUSH(number(T_NUM, a.d / b.d));
+            break;
+        }
+        case OP_TO_NUM: {
+            Value v = POP();
+            if (!numeric(v))
+                FAIL(VM_UNSUPPORTED);
+            if ((outcome = to_num(&v)) != VM_DONE)
+                goto failed;
+            PUSH(v);
+            break;
+        }
+        case OP_TO_DNUM: {
+            Value v = POP();
+            if (!numeric(v))
+                FAIL(VM_UNSUPPORTED);
+            if (v.d != v.d || isinf(v.d))
+                FAIL(VM_ERROR);
+            PUSH(number(T_NUM, v.d));
+            break;
+        }
+        case OP_INT_DIV: case OP_INT_MOD: {
+            Value b = POP(), a = POP();
+            long long x, y;
+            if ((outcome = integer_operands(a, b, &x, &y)) != VM_DONE)
+                goto failed;
+            long long ax = x < 0 ? -x : x, ay = y < 0 ? -y : y, r;
+            if (op == OP_INT_DIV)
+                r = (x < 0) == (y < 0) ? ax / ay : -(ax / ay);
+            else
+                r = x >= 0 ? ax % ay : -(ax % ay);
+            PUSH(number(T_NUM, (double)r));
+            break;
+        }
+        case OP_NEG: {
+            Value v = POP();
+            if (!numeric(v))
+                FAIL(VM_UNSUPPORTED);
+            PUSH(number(v.tag == T_NUM ? T_NUM : T_INT, -v.d));
+            break;
+        }
+        case OP_NOT: {
+            int t;
+            if ((outcome = truth(POP(), &t)) != VM_DONE)
+                goto failed;
+            PUSH(number(T_BOOL, !t));
+            break;
+        }
+        case OP_EQ: case OP_NE: {
+            Value b = POP(), a = POP();
+            int equal;
+            if (numeric(a) && numeric(b))
+                equal = a.d == b.d;
+            else if (a.tag == T_OBJ && b.tag == T_OBJ)
+                equal = a.id == b.id;
+            else
+                FAIL(VM_UNSUPPORTED);
+            PUSH(number(T_BOOL, op == OP_EQ ? equal : !equal));
+            break;
+        }
+        case OP_LT: case OP_LE: case OP_GT: case OP_GE: {
+            Value b = POP(), a = POP();
+            if (!numeric(a) || !numeric(b))
+                FAIL(VM_UNSUPPORTED);
+            int r = op == OP_LT ? a.d < b.d : op == OP_LE ? a.d <= b.d :
+                op == OP_GT ? a.d > b.d : a.d >= b.d;
+            PUSH(number(T_BOOL, r));
+            break;
+        }
+        case OP_AND: case OP_OR: {
+            Value b = POP(), a = POP();
+            if (a.tag == T_OBJ || b.tag == T_OBJ || a.tag == T_NUM || b.tag == T_NUM)
+                FAIL(VM_UNSUPPORTED);
+            long long x = (long long)a.d, y = (long long)b.d;
+            PUSH(number(T_BOOL, op == OP_AND ? (x & y) != 0 : (x | y) != 0));
+            break;
+        }
+        case OP_SET_STORE: {
+            int32_t id = store_id(table, POP());
+            if (id < 0)
+                return -1;
+            int32_t slot = code[ip++];
+            run->data_changed |= run->data[slot] != (uint32_t)id;
+            run->data[slot] = (uint32_t)id;
+            break;
+        }
+        case OP_SET_LOCAL: {
+            int32_t slot = code[ip++];
+            if (slot >= run->local_count)
+                FAIL(VM_UNSUPPORTED);
+            int32_t id = store_id(table, POP());
+            if (id < 0)
+                return -1;
+            run->locals_changed |= run->locals[slot] != (uint32_t)id;
+            run->locals[slot] = (uint32_t)id;
+            break;
+        }
+        case OP_SET_TEMP:
+            run->temps[code[ip++]] = POP();
+            break;
+        case OP_GET_TEMP:
+            PUSH(run->temps[code[ip++]]);
+            break;
+        case OP_GOTO:
+            run->pc = code[ip];
+            return VM_DONE;
+        case OP_BRANCH: {
+            int t;
+            if ((outcome = truth(POP(), &t)) != VM_DONE)
+                goto failed;
+            run->pc = t ? code[ip] : code[ip + 1];
+            return VM_DONE;
+        }
+        case OP_GOTO_IF: {
+            int t;
+            if ((outcome = truth(POP(), &t)) != VM_DONE)
+                goto failed;
+            if (t) {
+                run->pc = code[ip];
+                return VM_DONE;
+            }
+            ip++;
+            break;
+        }
+        case OP_RESET_CHOSEN:
+            run->epoch++;
+            break;
+        case OP_UNSUPPORTED:
+            FAIL(VM_UNSUPPORTED);
+        case OP_FOR_DEFAULT_STEP: {     /* temps 0, 1: first, last */
+            Value first = run->temps[0], last = run->temps[1];
+            if (!numeric(first) || !numeric(last))
+                FAIL(VM_UNSUPPORTED);
+            PUSH(number(T_NUM, first.d > last.d ? -1.0 : 1.0));
+            break;
+        }
+        case OP_FOR_INIT: {             /* temps 0, 1, 2: first, last, step */
+            int32_t slot = code[ip];
+            Value first = run->temps[0], last = run->temps[1];
+            if (slot + 2 >= run->local_count || !numeric(first) || !numeric(last))
+                FAIL(VM_UNSUPPORTED);
+            for (int i = 0; i < 3; i++) {
+                int32_t id = store_id(table, run->temps[i]);
+                if (id < 0)
+                    return -1;
+                run->locals_changed |= run->locals[slot + i] != (uint32_t)id;
+                run->locals[slot + i] = (uint32_t)id;
+            }
+            double low = first.d <= last.d ? first.d : last.d;
+            double high = first.d <= last.d ? last.d : first.d;
+            run->pc = low <= first.d && first.d <= high ? code[ip + 1] : code[ip + 2];
+            return VM_DONE;
+        }
+        case OP_FOR_NEXT: {
+            int32_t slot = code[ip];
+            if (slot + 2 >= run->local_count)
+                FAIL(VM_UNSUPPORTED);
+            Value value = load(table, run->locals[slot]);
+            Value last = load(table, run->locals[slot + 1]);
+            Value step = load(table, run->locals[slot + 2]);
+            if (!numeric(value) || !numeric(last) || !numeric(step))
+                FAIL(VM_UNSUPPORTED);
+            Value sum = number(value.tag != T_NUM && step.tag != T_NUM ? T_INT : T_NUM,
+                               value.d + step.d);
+            if ((outcome = to_num(&sum)) != VM_DONE)
+                goto failed;
+            int32_t id = store_id(table, sum);
+            if (id < 0)
+                return -1;
+            run->locals_changed |= run->locals[slot] != (uint32_t)id;
+            run->locals[slot] = (uint32_t)id;
+            int go_on = step.d >= 0 ? sum.d <= last.d : sum.d >= last.d;
+            run->pc = go_on ? code[ip + 1] : code[ip + 2];
+            return VM_DONE;
+        }
+        case OP_ATOM_BEGIN:
+            atom_end = code[ip++];
+            top = 0;
+            break;
+        case OP_ATOM_END: {
+            int32_t bit = code[ip++];
+            int t;
+            if ((outcome = truth(POP(), &t)) != VM_DONE)
+                goto failed;
+            if (t)
+                *bits |= (uint64_t)1 << bit;
+            break;
+        }
+        case OP_END:
+            return VM_DONE;
+        default:
+            PyErr_Format(PyExc_SystemError, "step machine: bad opcode %d", (int)op);
+            return -1;
+        }
+        if (top >= STACK_SIZE - 2) {
+            PyErr_SetString(PyExc_SystemError, "step machine: stack overflow");
+            return -1;
+        }
+        continue;
+    failed:
+        if (outcome == VM_ERROR && atom_end >= 0) {
+            ip = atom_end;          /* an atom whose evaluation raises is false */
+            top = 0;
+            continue;
+        }
+        return outcome;
+    }
+#undef POP
+#undef PUSH
+#undef FAIL
+}
+
+/* the choices after the script (``choosers.next_script``): 0 when every one is done */
+static int next_script(Run *run)
+{
+    for (Py_ssize_t i = run->size_count - 1; i >= 0; i--) {
+        int32_t current = i < run->script_length ? run->script[i] : 0;
+        if (current + 1 < run->sizes[i]) {
+            for (Py_ssize_t j = run->script_length; j < i; j++)
+                run->script[j] = 0;
+            run->script[i] = current + 1;
+            run->script_length = i + 1;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+typedef struct {            /* the successors one state's step gave */
+    int32_t *frames, *data;
+    Py_ssize_t count, capacity;
+} Successors;
+
+static int add_successor(Successors *found, int32_t frame, int32_t data)
+{
+    Py_ssize_t capacity = found->capacity;
+    int32_t *frames = reserve(found->frames, &capacity, sizeof(int32_t), found->count + 1);
+    if (frames == NULL)
+        return -1;
+    found->frames = frames;
+    capacity = found->capacity;
+    int32_t *datas = reserve(found->data, &capacity, sizeof(int32_t), found->count + 1);
+    if (datas == NULL)
+        return -1;
+    found->data = datas;
+    found->capacity = capacity;
+    found->frames[found->count] = frame;
+    found->data[found->count++] = data;
+    return 0;
+}
+
+typedef struct {            /* scratch space of the step machine */
+    uint32_t *frame, *data;
+    Py_ssize_t frame_capacity, data_capacity;
+    uint32_t *chosen_epoch;
+    int32_t *chosen_value;
+    uint32_t epoch;
+} Scratch;
+
+static int scratch_init(Scratch *scratch, PackedTable *table)
+{
+    Py_ssize_t io = table->io_length ? table->io_length : 1;
+    scratch->chosen_epoch = PyMem_Calloc(io, sizeof(uint32_t));
+    scratch->chosen_value = PyMem_Calloc(io, sizeof(int32_t));
+    scratch->epoch = 1;
+    if (scratch->chosen_epoch == NULL || scratch->chosen_value == NULL) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    return 0;
+}
+
+static void scratch_free(Scratch *scratch)
+{
+    PyMem_Free(scratch->frame);
+    PyMem_Free(scratch->data);
+    PyMem_Free(scratch->chosen_epoch);
+    PyMem_Free(scratch->chosen_value);
+}
+
+/* the frame ``frame`` (id ``frame_id``) with the program counter ``pc`` (remembered in a
+ * small cache by (frame id, pc)); -1 with an error */
+static int32_t frame_at(PackedTable *table, int32_t frame_id, const uint32_t *frame,
+                        Py_ssize_t length, int32_t pc, uint32_t *work)
+{
+    uint64_t key = (uint64_t)(uint32_t)frame_id << 32 | (uint32_t)pc;
+    uint64_t slot = mix64(key) & (FRAME_CACHE - 1);
+    if (table->frame_cache_key[slot] == key + 1)
+        return table->frame_cache_value[slot];
+    memcpy(work, frame, length * sizeof(uint32_t));
+    work[1] = (uint32_t)pc;
+    int32_t id = vt_intern(&table->frames, work, length);
+    if (id >= 0) {
+        table->frame_cache_key[slot] = key + 1;
+        table->frame_cache_value[slot] = id;
+    }
+    return id;
+}
+
+/* The successors of state ``id`` by the step machine, as ``fused_successor_states``
+ * gives them: VM_DONE (``found`` filled), VM_UNSUPPORTED (Python must step it: nothing
+ * changed), -1 with an error. */
+static int machine_successors(PackedTable *table, Py_ssize_t id, Scratch *scratch,
+                              Successors *found)
+{
+    int64_t key = table->keys[id];
+    int32_t frame_id = (int32_t)(key >> 32), data_id = (int32_t)(key & 0xffffffff);
+    Py_ssize_t frame_length, data_length;
+    const uint32_t *frame = vt_items(&table->frames, frame_id, &frame_length);
+    const uint32_t *data = vt_items(&table->data, data_id, &data_length);
+    uint32_t context = frame[0];
+    if (frame_length < 2 || !(table->context_runs[context] & CONTEXT_RUNS))
+        return VM_UNSUPPORTED;
+    int32_t routine_index = table->context_routine[context];
+    if (routine_index < 0 || routine_index >= table->routine_count)
+        return VM_UNSUPPORTED;
+    Routine *routine = &table->routines[routine_index];
+    int32_t start_pc = (int32_t)frame[1];
+    if (routine->code == NULL || start_pc < 0 || start_pc >= routine->length ||
+            routine->block_start[start_pc] < 0)
+        return VM_UNSUPPORTED;
+    uint32_t *work_frame = reserve(scratch->frame, &scratch->frame_capacity, sizeof(uint32_t),
+                                   frame_length);
+    if (work_frame == NULL)
+        return -1;
+    scratch->frame = work_frame;
+    uint32_t *work_data = reserve(scratch->data, &scratch->data_capacity, sizeof(uint32_t),
+                                  data_length + 1);
+    if (work_data == NULL)
+        return -1;
+    scratch->data = work_data;
+    Run run;
+    run.table = table;
+    run.locals = work_frame + 2;
+    run.local_count = frame_length - 2;
+    run.data = work_data;
+    run.lazy = 1;
+    run.script_length = 0;
+    run.chosen_epoch = scratch->chosen_epoch;
+    run.chosen_value = scratch->chosen_value;
+    found->count = 0;
+    run.data_changed = run.locals_changed = 1;
+    for (;;) {
+        if (run.locals_changed)                 /* (the last run's copies, if unchanged) */
+            memcpy(work_frame, frame, frame_length * sizeof(uint32_t));
+        if (run.data_changed)
+            memcpy(work_data, data, data_length * sizeof(uint32_t));
+        run.data_changed = run.locals_changed = 0;
+        run.pc = start_pc;
+        run.size_count = 0;
+        run.epoch = ++scratch->epoch;
+        int seen_visible = routine->first_visible[start_pc];
+        int blocks = 0;
+        for (;;) {
+            int32_t at = routine->block_start[run.pc];
+            if (at < 0 || ++blocks > MAX_BLOCKS_PER_STEP)
+                return VM_UNSUPPORTED;
+            int outcome = execute(&run, routine->code, at, NULL);
+            scratch->epoch = run.epoch;
+            if (outcome != VM_DONE)
+                return outcome < 0 ? -1 : VM_UNSUPPORTED;
+            if (run.pc < 0 || run.pc >= routine->length)
+                return VM_UNSUPPORTED;
+            int kind = routine->kinds[run.pc];
+            if (kind & 2)
+                break;
+            if (kind & 1) {
+                if (seen_visible)
+                    break;
+                seen_visible = 1;
+            }
+            if ((kind & 4) && run.size_count)
+                break;
+        }
+        int32_t new_frame;
+        if (run.locals_changed) {
+            work_frame[1] = (uint32_t)run.pc;
+            new_frame = vt_intern(&table->frames, work_frame, frame_length);
+        }
+        else            /* the same context and locals at another pc: often seen before */
+            new_frame = frame_at(table, frame_id, frame, frame_length, run.pc, work_frame);
+        int32_t new_data = new_frame < 0 ? -1 : !run.data_changed ? data_id :
+            vt_intern(&table->data, work_data, data_length);
+        if (new_data < 0 || add_successor(found, new_frame, new_data) < 0)
+            return -1;
+        if (run.size_count == 0 || !next_script(&run))
+            return VM_DONE;
+    }
+}
+
+/* The valuation ``index`` of state ``id``: VM_DONE (``*bits``), VM_UNSUPPORTED, -1. */
+static int machine_valuation(PackedTable *table, Py_ssize_t index, Py_ssize_t id,
+                             Scratch *scratch, uint64_t *bits)
+{
+    int64_t key = table->keys[id];
+    Py_ssize_t frame_length, data_length;
+    const uint32_t *frame = vt_items(&table->frames, (int32_t)(key >> 32), &frame_length);
+    const uint32_t *data = vt_items(&table->data, (int32_t)(key & 0xffffffff), &data_length);
+    Run run;
+    run.table = table;
+    run.locals = (uint32_t *)frame + 2;        /* (atoms read global data only) */
+    run.local_count = frame_length >= 2 ? frame_length - 2 : 0;
+    run.data = (uint32_t *)data;
+    run.lazy = 0;
+    run.script_length = run.size_count = 0;
+    run.chosen_epoch = scratch->chosen_epoch;
+    run.chosen_value = scratch->chosen_value;
+    run.epoch = ++scratch->epoch;
+    *bits = 0;
+    int outcome = execute(&run, table->valuations[index].code, 0, bits);
+    return outcome < 0 ? -1 : outcome;
+}
+
+/* ================================================================ Python methods */
+
+static PyObject *PackedTable_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
+{
+    PackedTable *self = (PackedTable *)type->tp_alloc(type, 0);
+    if (self == NULL)
+        return NULL;
+    self->object_ids = PyDict_New();
+    self->slots = PyMem_Malloc(FIRST_CAPACITY * sizeof(int32_t));
+    self->value_slots = PyMem_Malloc(FIRST_CAPACITY * sizeof(int32_t));
+    if (self->object_ids == NULL || self->slots == NULL || self->value_slots == NULL ||
+            vt_init(&self->frames) < 0 || vt_init(&self->data) < 0) {
+        Py_DECREF(self);
+        return PyErr_Occurred() ? NULL : PyErr_NoMemory();
+    }
+    memset(self->slots, 0xff, FIRST_CAPACITY * sizeof(int32_t));
+    memset(self->value_slots, 0xff, FIRST_CAPACITY * sizeof(int32_t));
+    self->mask = self->value_mask = FIRST_CAPACITY - 1;
+    return (PyObject *)self;
+}
+
+static int PackedTable_traverse(PackedTable *self, visitproc visit, void *arg)
+{
+    Py_VISIT(self->object_ids);
+    for (Py_ssize_t i = 0; i < self->values; i++)
+        Py_VISIT(self->value_object[i]);
+    return 0;
+}
+
+static int PackedTable_clear(PackedTable *self)
+{
+    Py_CLEAR(self->object_ids);
+    for (Py_ssize_t i = 0; i < self->values; i++)
+        Py_CLEAR(self->value_object[i]);
+    return 0;
+}
+
+static void free_program(PackedTable *self)
+{
+    for (Py_ssize_t i = 0; i < self->routine_count; i++) {
+        Routine *r = &self->routines[i];
+        PyMem_Free(r->kinds);
+        PyMem_Free(r->first_visible);
+        PyMem_Free(r->block_start);
+        PyMem_Free(r->code);
+    }
+    PyMem_Free(self->routines);
+    self->routines = NULL;
+    self->routine_count = 0;
+    if (self->lazy_domain != NULL)
+        for (Py_ssize_t i = 0; i < self->io_length; i++)
+            PyMem_Free(self->lazy_domain[i]);
+    PyMem_Free(self->lazy_domain);
+    PyMem_Free(self->lazy_size);
+    self->lazy_domain = NULL;
+    self->lazy_size = NULL;
+    for (Py_ssize_t i = 0; i < self->valuation_count; i++)
+        PyMem_Free(self->valuations[i].code);
+    PyMem_Free(self->valuations);
+    self->valuations = NULL;
+    self->valuation_count = 0;
+}
+
+static void PackedTable_dealloc(PackedTable *self)
+{
+    PyObject_GC_UnTrack(self);
+    PackedTable_clear(self);
+    free_program(self);
+    PyMem_Free(self->value_tag);
+    PyMem_Free(self->value_number);
+    PyMem_Free(self->value_object);
+    PyMem_Free(self->value_slots);
+    vt_free(&self->frames);
+    vt_free(&self->data);
+    PyMem_Free(self->keys);
+    PyMem_Free(self->slots);
+    PyMem_Free(self->context_routine);
+    PyMem_Free(self->context_runs);
+    Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+/* ``value_ids(values) -> bytes``: the ids of a sequence of values, as 32-bit numbers */
+static PyObject *PackedTable_value_ids(PackedTable *self, PyObject *values)
+{
+    PyObject *fast = PySequence_Fast(values, "value_ids takes a sequence");
+    if (fast == NULL)
+        return NULL;
+    Py_ssize_t length = PySequence_Fast_GET_SIZE(fast);
+    PyObject *result = PyBytes_FromStringAndSize(NULL, length * sizeof(uint32_t));
+    if (result == NULL) {
+        Py_DECREF(fast);
+        return NULL;
+    }
+    uint32_t *ids = (uint32_t *)PyBytes_AS_STRING(result);
+    for (Py_ssize_t i = 0; i < length; i++) {
+        int32_t id = value_id(self, PySequence_Fast_GET_ITEM(fast, i));
+        if (id < 0) {
+            Py_DECREF(fast);
+            Py_DECREF(result);
+            return NULL;
+        }
+        ids[i] = (uint32_t)id;
+    }
+    Py_DECREF(fast);
+    return result;
+}
+
+/* ``values(ids: bytes) -> tuple``: the values of 32-bit ids */
+static PyObject *values_of(PackedTable *self, const uint32_t *ids, Py_ssize_t length)
+{
+    PyObject *result = PyTuple_New(length);
+    if (result == NULL)
+        return NULL;
+    for (Py_ssize_t i = 0; i < length; i++) {
+        if (ids[i] >= (uint32_t)self->values) {
+            Py_DECREF(result);
+            PyErr_SetString(PyExc_IndexError, "no such value id");
+            return NULL;
+        }
+        PyObject *object = value_object(self, (int32_t)ids[i]);
+        if (object == NULL) {
+            Py_DECREF(result);
+            return NULL;
+        }
+        PyTuple_SET_ITEM(result, i, object);
+    }
+    return result;
+}
+
+static PyObject *PackedTable_values(PackedTable *self, PyObject *ids)
+{
+    char *buffer;
+    Py_ssize_t size;
+    if (PyBytes_AsStringAndSize(ids, &buffer, &size) < 0)
+        return NULL;
+    return values_of(self, (const uint32_t *)buffer, size / (Py_ssize_t)sizeof(uint32_t));
+}
+
+/* ``add_context(routine, flags) -> id``: a new context and what the machine needs of it
+ * (flags: CONTEXT_RUNS, CONTEXT_FAILED) */
+static PyObject *PackedTable_add_context(PackedTable *self, PyObject *args)
+{
+    int routine, runs;
+    if (!PyArg_ParseTuple(args, "ii", &routine, &runs))
+        return NULL;
+    Py_ssize_t capacity = self->context_capacity;
+    int32_t *routines = reserve(self->context_routine, &capacity, sizeof(int32_t),
+                                self->contexts + 1);
+    if (routines == NULL)
+        return NULL;
+    self->context_routine = routines;
+    capacity = self->context_capacity;
+    uint8_t *flags = reserve(self->context_runs, &capacity, 1, self->contexts + 1);
+    if (flags == NULL)
+        return NULL;
+    self->context_runs = flags;
+    self->context_capacity = capacity;
+    self->context_routine[self->contexts] = routine;
+    self->context_runs[self->contexts] = (uint8_t)runs;
+    return PyLong_FromSsize_t(self->contexts++);
+}
+
+/* ``intern_vectors(frame: bytes, data: bytes, add) -> (id, new)`` (id -1: new, not added) */
+static PyObject *PackedTable_intern_vectors(PackedTable *self, PyObject *args)
+{
+    Py_buffer frame, data;
+    int add = 1;
+    if (!PyArg_ParseTuple(args, "y*y*|p", &frame, &data, &add))
+        return NULL;
+    PyObject *result = NULL;
+    int32_t frame_id = vt_intern(&self->frames, frame.buf, frame.len / sizeof(uint32_t));
+    int32_t data_id = frame_id < 0 ? -1 :
+        vt_intern(&self->data, data.buf, data.len / sizeof(uint32_t));
+    if (data_id >= 0) {
+        int is_new = 0;
+        Py_ssize_t id = intern_key(self, frame_id, data_id, add, &is_new);
+        if (id != -2)
+            result = Py_BuildValue("(nO)", id, is_new ? Py_True : Py_False);
+    }
+    PyBuffer_Release(&frame);
+    PyBuffer_Release(&data);
+    return result;
+}
+
+/* (context, pc, locals, data values) of the segments ``frame_id`` and ``data_id`` */
+static PyObject *parts_of(PackedTable *self, int32_t frame_id, int32_t data_id)
+{
+    if (frame_id < 0 || frame_id >= self->frames.count || data_id < 0 ||
+            data_id >= self->data.count) {
+        PyErr_SetString(PyExc_IndexError, "no such state part");
+        return NULL;
+    }
+    Py_ssize_t frame_length, data_length;
+    const uint32_t *frame = vt_items(&self->frames, frame_id, &frame_length);
+    const uint32_t *data = vt_items(&self->data, data_id, &data_length);
+    PyObject *locals = values_of(self, frame + 2, frame_length - 2);
+    PyObject *values = locals == NULL ? NULL : values_of(self, data, data_length);
+    PyObject *result = values == NULL ? NULL :
+        Py_BuildValue("(IIOO)", frame[0], frame[1], locals, values);
+    Py_XDECREF(locals);
+    Py_XDECREF(values);
+    return result;
+}
+
+/* ``vectors(id) -> (context, pc, locals, data)``: a stored state's parts, the context
+ * and pc as numbers, locals and data as tuples of values */
+static PyObject *PackedTable_vectors(PackedTable *self, PyObject *argument)
+{
+    Py_ssize_t id = PyLong_AsSsize_t(argument);
+    if (id == -1 && PyErr_Occurred())
+        return NULL;
+    if (id < 0 || id >= self->count) {
+        PyErr_SetString(PyExc_IndexError, "no such state id");
+        return NULL;
+    }
+    int64_t key = self->keys[id];
+    return parts_of(self, (int32_t)(key >> 32), (int32_t)(key & 0xffffffff));
+}
+
+/* ``parts(frame id, data id)``: as ``vectors``, for segments not (yet) a stored state */
+static PyObject *PackedTable_parts(PackedTable *self, PyObject *args)
+{
+    int frame, data;
+    if (!PyArg_ParseTuple(args, "ii", &frame, &data))
+        return NULL;
+    return parts_of(self, frame, data);
+}
+
+/* ``intern_parts(frame: bytes, data: bytes) -> (frame id, data id)`` */
+static PyObject *PackedTable_intern_parts(PackedTable *self, PyObject *args)
+{
+    Py_buffer frame, data;
+    if (!PyArg_ParseTuple(args, "y*y*", &frame, &data))
+        return NULL;
+    int32_t frame_id = vt_intern(&self->frames, frame.buf, frame.len / sizeof(uint32_t));
+    int32_t data_id = frame_id < 0 ? -1 :
+        vt_intern(&self->data, data.buf, data.len / sizeof(uint32_t));
+    PyBuffer_Release(&frame);
+    PyBuffer_Release(&data);
+    if (data_id < 0)
+        return NULL;
+    return Py_BuildValue("(ii)", frame_id, data_id);
+}
+
+/* ``set_program(store_length, io_length, routines, lazy, valuations)``:
+ * routines: list of None or (kinds: bytes, first_visible: bytes, block_start: bytes of
+ * int32, code: bytes of int32); lazy: {signal index: bytes of domain value ids};
+ * valuations: list of bytes of int32 (atom code). */
+static PyObject *PackedTable_set_program(PackedTable *self, PyObject *args)
+{
+    Py_ssize_t store_length, io_length;
+    PyObject *routines, *lazy, *valuations;
+    if (!PyArg_ParseTuple(args, "nnO!O!O!", &store_length, &io_length, &PyList_Type, &routines,
+                          &PyDict_Type, &lazy, &PyList_Type, &valuations))
+        return NULL;
+    free_program(self);
+    self->store_length = store_length;
+    self->io_length = io_length;
+    Py_ssize_t count = PyList_GET_SIZE(routines);
+    self->routines = PyMem_Calloc(count ? count : 1, sizeof(Routine));
+    self->lazy_domain = PyMem_Calloc(io_length ? io_length : 1, sizeof(int32_t *));
+    self->lazy_size = PyMem_Calloc(io_length ? io_length : 1, sizeof(int32_t));
+    Py_ssize_t valuation_count = PyList_GET_SIZE(valuations);
+    self->valuations = PyMem_Calloc(valuation_count ? valuation_count : 1, sizeof(Valuation));
+    if (self->routines == NULL || self->lazy_domain == NULL || self->lazy_size == NULL ||
+            self->valuations == NULL)
+        return PyErr_NoMemory();
+    self->routine_count = count;
+    self->valuation_count = valuation_count;
+    for (Py_ssize_t i = 0; i < count; i++) {
+        PyObject *entry = PyList_GET_ITEM(routines, i);
+        if (entry == Py_None)
+            continue;
+        const char *kinds, *visible, *starts, *code;
+        Py_ssize_t kinds_length, visible_length, starts_length, code_length;
+        if (!PyArg_ParseTuple(entry, "y#y#y#y#", &kinds, &kinds_length, &visible,
+                              &visible_length, &starts, &starts_length, &code, &code_length))
+            return NULL;
+        Routine *r = &self->routines[i];
+        r->length = kinds_length;
+        if (visible_length != kinds_length ||
+                starts_length != kinds_length * (Py_ssize_t)sizeof(int32_t)) {
+            PyErr_SetString(PyExc_ValueError, "set_program: routine tables differ in length");
+            return NULL;
+        }
+        r->kinds = PyMem_Malloc(kinds_length + 1);
+        r->first_visible = PyMem_Malloc(kinds_length + 1);
+        r->block_start = PyMem_Malloc(starts_length + 1);
+        r->code = PyMem_Malloc(code_length + sizeof(int32_t));
+        if (r->kinds == NULL || r->first_visible == NULL || r->block_start == NULL ||
+                r->code == NULL)
+            return PyErr_NoMemory();
+        memcpy(r->kinds, kinds, kinds_length);
+        memcpy(r->first_visible, visible, kinds_length);
+        memcpy(r->block_start, starts, starts_length);
+        memcpy(r->code, code, code_length);
+        r->code_length = code_length / sizeof(int32_t);
+    }
+    PyObject *key, *value;
+    Py_ssize_t position = 0;
+    while (PyDict_Next(lazy, &position, &key, &value)) {
+        Py_ssize_t index = PyLong_AsSsize_t(key);
+        char *ids;
+        Py_ssize_t size;
+        if ((index == -1 && PyErr_Occurred()) || PyBytes_AsStringAndSize(value, &ids, &size) < 0)
+            return NULL;
+        if (index < 0 || index >= io_length || size == 0) {
+            PyErr_SetString(PyExc_ValueError, "set_program: bad lazy input");
+            return NULL;
+        }
+        self->lazy_domain[index] = PyMem_Malloc(size);
+        if (self->lazy_domain[index] == NULL)
+            return PyErr_NoMemory();
+        memcpy(self->lazy_domain[index], ids, size);
+        self->lazy_size[index] = (int32_t)(size / sizeof(int32_t));
+    }
+    for (Py_ssize_t i = 0; i < valuation_count; i++) {
+        char *code;
+        Py_ssize_t size;
+        if (PyBytes_AsStringAndSize(PyList_GET_ITEM(valuations, i), &code, &size) < 0)
+            return NULL;
+        self->valuations[i].code = PyMem_Malloc(size + sizeof(int32_t));
+        if (self->valuations[i].code == NULL)
+            return PyErr_NoMemory();
+        memcpy(self->valuations[i].code, code, size);
+        self->valuations[i].code_length = size / sizeof(int32_t);
+    }
+    Py_RETURN_NONE;
+}
+
+/* ``step(id) -> list of state parts or None``: the step machine's successors of a stored
+ * state as (frame id, data id) pairs, None where Python must step it (for tests) */
+static PyObject *PackedTable_step(PackedTable *self, PyObject *argument)
+{
+    Py_ssize_t id = PyLong_AsSsize_t(argument);
+    if (id == -1 && PyErr_Occurred())
+        return NULL;
+    if (id < 0 || id >= self->count)
+        return PyErr_Format(PyExc_IndexError, "no such state id");
+    Scratch scratch = {0};
+    Successors found = {0};
+    PyObject *result = NULL;
+    if (scratch_init(&scratch, self) == 0) {
+        int outcome = machine_successors(self, id, &scratch, &found);
+        if (outcome == VM_UNSUPPORTED)
+            result = Py_NewRef(Py_None);
+        else if (outcome == VM_DONE && (result = PyList_New(found.count)) != NULL)
+            for (Py_ssize_t i = 0; i < found.count; i++)
+                PyList_SET_ITEM(result, i, Py_BuildValue("(ii)", found.frames[i],
+                                                         found.data[i]));
+    }
+    scratch_free(&scratch);
+    PyMem_Free(found.frames);
+    PyMem_Free(found.data);
+    return result;
+}
+
+/* ``evaluate(valuation index, id) -> int or None``: compiled atoms on a stored state */
+static PyObject *PackedTable_evaluate(PackedTable *self, PyObject *args)
+{
+    Py_ssize_t index, id;
+    if (!PyArg_ParseTuple(args, "nn", &index, &id))
+        return NULL;
+    if (index < 0 || index >= self->valuation_count || id < 0 || id >= self->count)
+        return PyErr_Format(PyExc_IndexError, "no such valuation or state");
+    Scratch scratch = {0};
+    if (scratch_init(&scratch, self) < 0)
+        return NULL;
+    uint64_t bits = 0;
+    int outcome = machine_valuation(self, index, id, &scratch, &bits);
+    scratch_free(&scratch);
+    if (outcome < 0)
+        return NULL;
+    if (outcome == VM_UNSUPPORTED)
+        Py_RETURN_NONE;
+    return PyLong_FromUnsignedLongLong(bits);
+}
+
+static PyObject *PackedTable_native_bytes(PackedTable *self, PyObject *unused)
+{
+    Py_ssize_t bytes = self->key_capacity * sizeof(int64_t) + (self->mask + 1) * sizeof(int32_t)
+        + vt_bytes(&self->frames) + vt_bytes(&self->data)
+        + self->value_capacity * (1 + sizeof(double) + sizeof(PyObject *))
+        + (self->value_mask + 1) * sizeof(int32_t)
+        + self->context_capacity * (sizeof(int32_t) + 1);
+    return PyLong_FromSsize_t(bytes);
+}
+
+static PyObject *PackedTable_counts(PackedTable *self, PyObject *unused)
+{
+    return Py_BuildValue("{s:n,s:n,s:n,s:n,s:L,s:L}", "states", self->count,
+                         "frames", self->frames.count, "data", self->data.count,
+                         "values", self->values, "machine_steps", self->machine_steps,
+                         "python_steps", self->python_steps);
+}
+
+static Py_ssize_t PackedTable_length(PackedTable *self)
+{
+    return self->count;
+}
+
+static PyMethodDef PackedTable_methods[] = {
+    {"value_ids", (PyCFunction)PackedTable_value_ids, METH_O,
+     "value_ids(values) -> bytes: the 32-bit ids of the values (stored when new)"},
+    {"values", (PyCFunction)PackedTable_values, METH_O,
+     "values(ids: bytes) -> tuple: the values of 32-bit ids"},
+    {"add_context", (PyCFunction)PackedTable_add_context, METH_VARARGS,
+     "add_context(routine, runs) -> id: a new context id"},
+    {"intern_vectors", (PyCFunction)PackedTable_intern_vectors, METH_VARARGS,
+     "intern_vectors(frame, data, add=True) -> (id, new): a state by its two vectors"},
+    {"vectors", (PyCFunction)PackedTable_vectors, METH_O,
+     "vectors(id) -> (context, pc, locals, data): a stored state's parts"},
+    {"parts", (PyCFunction)PackedTable_parts, METH_VARARGS,
+     "parts(frame id, data id) -> (context, pc, locals, data): segments' contents"},
+    {"intern_parts", (PyCFunction)PackedTable_intern_parts, METH_VARARGS,
+     "intern_parts(frame, data) -> (frame id, data id): segments by their vectors"},
+    {"set_program", (PyCFunction)PackedTable_set_program, METH_VARARGS,
+     "set_program(store_length, io_length, routines, lazy, valuations): the compiled code"},
+    {"step", (PyCFunction)PackedTable_step, METH_O,
+     "step(id) -> [(frame id, data id)] or None: the step machine on a stored state"},
+    {"evaluate", (PyCFunction)PackedTable_evaluate, METH_VARARGS,
+     "evaluate(valuation, id) -> bits or None: compiled atoms on a stored state"},
+    {"native_bytes", (PyCFunction)PackedTable_native_bytes, METH_NOARGS,
+     "native_bytes() -> int: bytes of the native arrays"},
+    {"counts", (PyCFunction)PackedTable_counts, METH_NOARGS,
+     "counts() -> dict: states, segments, values and steps taken by each engine"},
+    {NULL}
+};
+
+static PySequenceMethods PackedTable_sequence = {
+    .sq_length = (lenfunc)PackedTable_length,
+};
+
+static PyTypeObject PackedTableType = {
+    PyVarObject_HEAD_INIT(NULL, 0)
+    .tp_name = "rapidmc.check._native.PackedTable",
+    .tp_doc = "States as interned vectors of value ids, and the step machine (see _packed.c).",
+    .tp_basicsize = sizeof(PackedTable),
+    .tp_flags = Py_TPFLAGS_DEFAULT | Py_TPFLAGS_BASETYPE | Py_TPFLAGS_HAVE_GC,
+    .tp_new = PackedTable_new,
+    .tp_traverse = (traverseproc)PackedTable_traverse,
+    .tp_clear = (inquiry)PackedTable_clear,
+    .tp_dealloc = (destructor)PackedTable_dealloc,
+    .tp_methods = PackedTable_methods,
+    .tp_as_sequence = &PackedTable_sequence,
+};
+
+/* ================================================================ breadth first */
+
+#define FLUSH_EVERY 65536
+
+typedef struct {                 /* one run of the packed breadth-first loop */
+    PackedTable *table;
+    PyObject *step_python;       /* table.python_successors(id) -> list of (frame, data) */
+    PyObject *python_observe;    /* table.observe(id, successor ids) or None */
+    PyObject *predicate_python;  /* table.predicate_holds(successor index) ... see below */
+    PyObject *budget, *sink;
+    int observe_natively;        /* stuck check and triggers here; Python for candidates */
+    Py_ssize_t trigger_valuation;   /* -1: none */
+    int predicate_is_failed, deadlock_is_target, recording;
+    Py_ssize_t *valuations;      /* per recorded valuation: its compiled index or -1 */
+    Py_ssize_t valuation_count;
+    long depth_now, deepest;
+    Py_ssize_t level_end;
+    int64_t max_states, next_checkpoint;
+    long long transitions, deadlocks;
+    /* buffered output, handed to ``sink`` */
+    Int32Vector parents, starts, targets, unique;
+    uint8_t *deadlocked;
+    Py_ssize_t deadlocked_length, deadlocked_capacity;
+    uint64_t *values;            /* rows of valuation_count values (interleaved) */
+    Py_ssize_t values_length, values_capacity;     /* in rows */
+    int64_t targets_before;      /* the graph's targets before this loop */
+    /* trigger bits seen (a small set) */
+    uint64_t *triggers;
+    Py_ssize_t trigger_count, trigger_capacity;
+    Scratch scratch;
+    Successors found;
+} PackedSearch;
+
+static int flush(PackedSearch *search)
+{
+#define BYTES(p) ((p) != NULL ? (const char *)(p) : "")
+    PyObject *answer = PyObject_CallFunction(
+        search->sink, "y#y#y#y#y#",
+        BYTES(search->parents.items), search->parents.length * (Py_ssize_t)sizeof(int32_t),
+        BYTES(search->starts.items), search->starts.length * (Py_ssize_t)sizeof(int32_t),
+        BYTES(search->targets.items), search->targets.length * (Py_ssize_t)sizeof(int32_t),
+        BYTES(search->deadlocked), search->deadlocked_length, BYTES(search->values),
+        search->values_length * search->valuation_count * (Py_ssize_t)sizeof(uint64_t));
+#undef BYTES
+    if (answer == NULL)
+        return -1;
+    Py_DECREF(answer);
+    search->targets_before += search->targets.length;
+    search->parents.length = search->starts.length = search->targets.length = 0;
+    search->deadlocked_length = search->values_length = 0;
+    return 0;
+}
+
+static int note_trigger(PackedSearch *search, uint64_t bits)
+{
+    for (Py_ssize_t i = 0; i < search->trigger_count; i++)
+        if (search->triggers[i] == bits)
+            return 0;
+    uint64_t *triggers = reserve(search->triggers, &search->trigger_capacity, sizeof(uint64_t),
+                                 search->trigger_count + 1);
+    if (triggers == NULL)
+        return -1;
+    search->triggers = triggers;
+    search->triggers[search->trigger_count++] = bits;
+    return 0;
+}
+
+/* a Python list of ints (a new reference) */
+static PyObject *id_list(const int32_t *ids, Py_ssize_t count)
+{
+    PyObject *list = PyList_New(count);
+    if (list == NULL)
+        return NULL;
+    for (Py_ssize_t i = 0; i < count; i++) {
+        PyObject *number = PyLong_FromLong(ids[i]);
+        if (number == NULL) {
+            Py_DECREF(list);
+            return NULL;
+        }
+        PyList_SET_ITEM(list, i, number);
+    }
+    return list;
+}
+
+/* the successors of ``frontier`` from Python (``step_python``): into ``found``; 0 / -1 */
+static int python_successors(PackedSearch *search, Py_ssize_t frontier)
+{
+    PyObject *pairs = PyObject_CallFunction(search->step_python, "n", frontier);
+    if (pairs == NULL)
+        return -1;
+    PyObject *fast = PySequence_Fast(pairs, "python_successors must give a sequence");
+    Py_DECREF(pairs);
+    if (fast == NULL)
+        return -1;
+    search->found.count = 0;
+    for (Py_ssize_t i = 0; i < PySequence_Fast_GET_SIZE(fast); i++) {
+        int frame, data;
+        if (!PyArg_ParseTuple(PySequence_Fast_GET_ITEM(fast, i), "ii", &frame, &data) ||
+                add_successor(&search->found, frame, data) < 0) {
+            Py_DECREF(fast);
+            return -1;
+        }
+    }
+    Py_DECREF(fast);
+    return 0;
+}
+
+enum { GO_ON = 0, FOUND = 1, STOPPED = 2, FAILED = -1 };
+
+/* store successor ``i`` of ``frontier``; as _native.c's ``visit_successor`` */
+static int visit(PackedSearch *search, Py_ssize_t frontier, Py_ssize_t i, Py_ssize_t *id)
+{
+    PackedTable *table = search->table;
+    Py_ssize_t stored = table->count;
+    int is_new = 0;
+    *id = intern_key(table, search->found.frames[i], search->found.data[i],
+                     stored < search->max_states, &is_new);
+    if (*id == -2)
+        return FAILED;
+    if (!is_new)
+        return GO_ON;
+    if (*id < 0) {
+        PyObject *answer = PyObject_CallMethod(search->budget, "may_store", "(n)", stored);
+        Py_XDECREF(answer);
+        return answer == NULL ? FAILED : STOPPED;
+    }
+    search->deepest = search->depth_now + 1;
+    if (vector32_push(&search->parents, frontier) < 0)
+        return FAILED;
+    int stopped = 0;
+    if (*id >= search->next_checkpoint) {
+        PyObject *answer = PyObject_CallMethod(search->budget, "checkpoint", "(nLi)", *id,
+                                               search->transitions, (int)search->deepest);
+        if (answer == NULL)
+            return FAILED;
+        Py_DECREF(answer);
+        search->next_checkpoint = integer_attribute(search->budget, "next_checkpoint");
+        if (search->next_checkpoint < 0 || (stopped = budget_stopped(search->budget)) < 0)
+            return FAILED;
+    }
+    /* the run-time error predicate (the program failed) is the context's to say */
+    if (search->predicate_is_failed) {
+        uint32_t context = table->frames.arena[table->frames.offsets[search->found.frames[i]]];
+        if (table->context_runs[context] & CONTEXT_FAILED)
+            return FOUND;
+    }
+    else {
+        PyObject *answer = PyObject_CallMethod((PyObject *)table, "predicate_holds", "n", *id);
+        if (answer == NULL)
+            return FAILED;
+        int bad = PyObject_IsTrue(answer);
+        Py_DECREF(answer);
+        if (bad)
+            return bad < 0 ? FAILED : FOUND;
+    }
+    return stopped ? STOPPED : GO_ON;
+}
+
+static int record_row(PackedSearch *search, Py_ssize_t frontier, const int32_t *ids,
+                      Py_ssize_t count)
+{
+    uint8_t *deadlocked = reserve(search->deadlocked, &search->deadlocked_capacity, 1,
+                                  search->deadlocked_length + 1);
+    if (deadlocked == NULL)
+        return -1;
+    search->deadlocked = deadlocked;
+    if (count == 0) {
+        if (vector32_push(&search->targets, frontier) < 0)
+            return -1;
+        search->deadlocked[search->deadlocked_length++] = 1;
+    }
+    else {
+        for (Py_ssize_t i = 0; i < count; i++) {    /* distinct, in order */
+            int seen = 0;
+            for (Py_ssize_t j = 0; j < i && !seen; j++)
+                seen = ids[j] == ids[i];
+            if (!seen && vector32_push(&search->targets, ids[i]) < 0)
+                return -1;
+        }
+        search->deadlocked[search->deadlocked_length++] = 0;
+    }
+    if (vector32_push(&search->starts, search->targets_before + search->targets.length) < 0)
+        return -1;
+    if (search->valuation_count) {
+        uint64_t *rows = reserve(search->values, &search->values_capacity,
+                                 search->valuation_count * sizeof(uint64_t),
+                                 search->values_length + 1);
+        if (rows == NULL)
+            return -1;
+        search->values = rows;
+        uint64_t *row = rows + search->values_length * search->valuation_count;
+        for (Py_ssize_t v = 0; v < search->valuation_count; v++) {
+            uint64_t bits = 0;
+            int outcome = VM_UNSUPPORTED;
+            if (search->valuations[v] >= 0)
+                outcome = machine_valuation(search->table, search->valuations[v], frontier,
+                                            &search->scratch, &bits);
+            if (outcome < 0)
+                return -1;
+            if (outcome == VM_UNSUPPORTED) {
+                PyObject *answer = PyObject_CallMethod((PyObject *)search->table,
+                                                       "python_valuation", "nn", v, frontier);
+                if (answer == NULL)
+                    return -1;
+                bits = PyLong_AsUnsignedLongLong(answer);
+                Py_DECREF(answer);
+                if (bits == (uint64_t)-1 && PyErr_Occurred())
+                    return -1;
+            }
+            row[v] = bits;
+        }
+        search->values_length++;
+    }
+    return 0;
+}
+
+/* the observer at ``frontier``: natively (no stuck candidate) or in Python */
+static int observe(PackedSearch *search, Py_ssize_t frontier, int by_machine)
+{
+    if (search->python_observe == Py_None)
+        return 0;
+    PackedTable *table = search->table;
+    if (by_machine && search->observe_natively) {
+        int64_t key = table->keys[frontier];
+        int32_t frame = (int32_t)(key >> 32), data = (int32_t)(key & 0xffffffff);
+        int candidate = 1;     /* every successor has this call stack and data */
+        for (Py_ssize_t i = 0; i < search->found.count && candidate; i++)
+            candidate = search->found.frames[i] == frame && search->found.data[i] == data;
+        if (!candidate) {
+            if (search->trigger_valuation < 0)
+                return 0;
+            uint64_t bits = 0;
+            int outcome = machine_valuation(table, search->trigger_valuation, frontier,
+                                            &search->scratch, &bits);
+            if (outcome < 0)
+                return -1;
+            if (outcome == VM_DONE)
+                return note_trigger(search, bits);
+        }
+    }
+    PyObject *frames = id_list(search->found.frames, search->found.count);
+    PyObject *datas = frames == NULL ? NULL : id_list(search->found.data, search->found.count);
+    PyObject *answer = datas == NULL ? NULL :
+        PyObject_CallFunction(search->python_observe, "nOO", frontier, frames, datas);
+    Py_XDECREF(frames);
+    Py_XDECREF(datas);
+    if (answer == NULL)
+        return -1;
+    Py_DECREF(answer);
+    return 0;
+}
+
+static int expand(PackedSearch *search, Py_ssize_t frontier, Py_ssize_t *target)
+{
+    PackedTable *table = search->table;
+    int outcome = machine_successors(table, frontier, &search->scratch, &search->found);
+    if (outcome < 0)
+        return FAILED;
+    int by_machine = outcome == VM_DONE;
+    if (by_machine)
+        table->machine_steps++;
+    else {
+        table->python_steps++;
+        if (python_successors(search, frontier) < 0)
+            return FAILED;
+    }
+    if (observe(search, frontier, by_machine) < 0)
+        return FAILED;
+    Py_ssize_t count = search->found.count;
+    search->transitions += count;
+    if (count == 0) {
+        search->deadlocks++;
+        if (search->deadlock_is_target) {
+            *target = frontier;
+            return FOUND;
+        }
+    }
+    Int32Vector *ids = &search->unique;
+    ids->length = 0;
+    for (Py_ssize_t i = 0; i < count; i++) {
+        Py_ssize_t id;
+        int visited = visit(search, frontier, i, &id);
+        if (visited == FOUND)
+            *target = id;
+        if (visited != GO_ON)
+            return visited;
+        if (vector32_push(ids, id) < 0)
+            return FAILED;
+    }
+    if (search->recording && record_row(search, frontier, ids->items, ids->length) < 0)
+        return FAILED;
+    return GO_ON;
+}
+
+static PyObject *packed_breadth_first(PyObject *module, PyObject *args)
+{
+    PackedSearch search = {0};
+    Py_ssize_t frontier;
+    PyObject *valuations;
+    int recording;
+    if (!PyArg_ParseTuple(args, "O!nOOpnpppOOO!LLlnL", &PackedTableType, &search.table,
+                          &frontier, &search.step_python, &search.python_observe,
+                          &search.observe_natively, &search.trigger_valuation,
+                          &search.predicate_is_failed, &search.deadlock_is_target, &recording,
+                          &search.budget, &search.sink, &PyList_Type, &valuations,
+                          &search.transitions, &search.deadlocks, &search.depth_now,
+                          &search.level_end, &search.targets_before))
+        return NULL;
+    search.recording = recording;
+    search.deepest = search.depth_now;
+    Py_ssize_t target = -1;
+    int outcome = FAILED;
+    search.valuation_count = PyList_GET_SIZE(valuations);
+    search.valuations = PyMem_Calloc(search.valuation_count + 1, sizeof(Py_ssize_t));
+    if (search.valuations == NULL) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    for (Py_ssize_t i = 0; i < search.valuation_count; i++) {
+        search.valuations[i] = PyLong_AsSsize_t(PyList_GET_ITEM(valuations, i));
+        if (search.valuations[i] == -1 && PyErr_Occurred())
+            goto done;
+    }
+    if (scratch_init(&search.scratch, search.table) < 0)
+        goto done;
+    search.max_states = integer_attribute(search.budget, "max_states");
+    search.next_checkpoint = integer_attribute(search.budget, "next_checkpoint");
+    if (search.max_states < 0 || search.next_checkpoint < 0)
+        goto done;
+    if (search.level_end <= frontier)
+        search.level_end = search.table->count;
+    outcome = GO_ON;
+    while (outcome == GO_ON && frontier < search.table->count) {
+        if (frontier == search.level_end) {
+            search.depth_now++;
+            search.level_end = search.table->count;
+        }
+        outcome = expand(&search, frontier, &target);
+        if (outcome == GO_ON) {
+            frontier++;
+            if (search.parents.length >= FLUSH_EVERY || search.starts.length >= FLUSH_EVERY) {
+                if (flush(&search) < 0)
+                    outcome = FAILED;
+            }
+        }
+    }
+    if (outcome != FAILED && flush(&search) < 0)
+        outcome = FAILED;
+done:
+    PyMem_Free(search.valuations);
+    PyMem_Free(search.values);
+    vector32_free(&search.parents);
+    vector32_free(&search.starts);
+    vector32_free(&search.targets);
+    vector32_free(&search.unique);
+    PyMem_Free(search.deadlocked);
+    PyMem_Free(search.found.frames);
+    PyMem_Free(search.found.data);
+    scratch_free(&search.scratch);
+    if (outcome == FAILED) {
+        PyMem_Free(search.triggers);
+        return NULL;
+    }
+    PyObject *triggers = PyList_New(search.trigger_count);
+    for (Py_ssize_t i = 0; triggers != NULL && i < search.trigger_count; i++) {
+        PyObject *bits = PyLong_FromUnsignedLongLong(search.triggers[i]);
+        if (bits == NULL)
+            Py_CLEAR(triggers);
+        else
+            PyList_SET_ITEM(triggers, i, bits);
+    }
+    PyMem_Free(search.triggers);
+    if (triggers == NULL)
+        return NULL;
+    return Py_BuildValue("(nLLlN)", outcome == FOUND ? target : -1, search.transitions,
+                         search.deadlocks, search.deepest, triggers);
+}
+
+PyMethodDef packed_functions[] = {
+    {"packed_breadth_first", packed_breadth_first, METH_VARARGS,
+     "packed_breadth_first(table, frontier, python_successors, python_observe, "
+     "observe_natively, trigger_valuation, predicate_is_failed, deadlock_is_target, "
+     "recording, budget, sink, valuations, transitions, deadlocks, depth, level_end, "
+     "targets_before) -> (target id or -1, transitions, deadlocks, depth of the last "
+     "stored state, trigger bits seen): reachability's unlabelled loop over a PackedTable "
+     "(see _packed.c)"},
+    {NULL}
+};
+
+int packed_register(PyObject *module)
+{
+    if (PyType_Ready(&PackedTableType) < 0)
+        return -1;
+    Py_INCREF(&PackedTableType);
+    if (PyModule_AddObject(module, "PackedTable", (PyObject *)&PackedTableType) < 0)
+        return -1;
+    return PyModule_AddFunctions(module, packed_functions);
+}

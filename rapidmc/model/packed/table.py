@@ -1,0 +1,190 @@
+"""A RAPID model's states packed for the compiled core, and the step machine's program.
+
+``PackedStateTable`` is a ``check.states.StateTable`` (``intern``, ``[id]``,
+``len``, ``memory_bytes``) over ``_native.PackedTable``: a state is stored as a
+frame vector (context id, program counter, the top frame's local data) and a
+data vector (global data, then signals), of value ids.  The *context* is
+everything else (the frames below, the top frame's routine and handler
+fields, robot, interrupts, ERRNO, status, tasks ...), which the fused step
+never changes: each distinct one gets an id here, with the two facts the
+machine needs, whether it may step there (a plain running state, as
+``fused_step.plain_successor_states`` tests) and whether the program has
+failed there (the run-time error search's predicate).
+
+The table also hands the machine its program (``bytecode``): each routine's
+fused blocks, the domains of the inputs chosen where read, and the atoms of
+the valuations the search keeps.  It answers the machine's calls back for
+the states it leaves to Python (``python_successors``, ``python_valuation``,
+``predicate_holds``, ``observe``).
+
+Two states are the same stored state exactly when the Python table
+(``check.states``) says so: equal contexts (tuples compared by ``==``) and
+equal values (ids by ``==``, as ``_packed.c`` interns them).  tests/
+test_native_engine.py compares every report with the Python engine's.
+"""
+from __future__ import annotations
+
+import struct
+import sys
+from typing import Callable, Hashable, Optional, Sequence
+
+from pyrsistent import pvector
+
+from ...check.native import _native
+from ...semantics.state import FAILED, RUNNING, Frame, State
+from .bytecode import RoutineCode, atom_code
+
+_new_tuple = tuple.__new__
+_HEAD = struct.Struct("<Ii")           # context id, program counter
+RUNS = 1                               # context flags (_packed.c's add_context)
+HAS_FAILED = 2
+
+
+def packed_table(system) -> Optional["PackedStateTable"]:
+    """A packed table for ``system``'s states when the compiled core is built and its
+    step machine can take the system's fused steps, else None."""
+    if _native is None or system.project_fused is not None or system.order is not None:
+        return None
+    config = system.config
+    if config.free_inputs or system.program.environment_react is not None:
+        return None
+    table = PackedStateTable(system)
+    return table if table.compiled_routines else None
+
+
+class PackedStateTable(_native.PackedTable if _native is not None else object):
+    """States of a ``RapidSystem`` as packed vectors; see the module docstring."""
+
+    collapsed = True
+    known_ids: dict = {}
+
+    def __init__(self, system):
+        self.system = system
+        self.program = system.program
+        initial = system.initial_states()
+        first = initial[0]
+        self.store_length = len(first[1])
+        self.io_length = len(first[2])
+        self._contexts: dict[tuple, int] = {}
+        self._context_values: list[tuple] = []
+        self._valuations: list[Callable] = []       # by the machine's valuation index
+        self._valuation_codes: list[bytes] = []
+        self._routines: list = []
+        self.compiled_routines = 0
+        self._compile()
+        # what the search in progress hands over (``prepare_search``)
+        self.predicate: Optional[Callable] = None
+        self.observer = None
+        self._last_id = -1
+        self._last: tuple = ()
+
+    # ---------------------------------------------------------- the program
+    def _compile(self) -> None:
+        system, program = self.system, self.program
+        value_id = self._value_id
+        for index in range(len(program.routines)):
+            code = RoutineCode.compile(program, system.config, index, value_id,
+                                       self.store_length)
+            self._routines.append(None if code is None else code.as_tuple())
+            self.compiled_routines += code is not None and \
+                any(start >= 0 for start in code.block_start)
+        self._send_program()
+
+    def _send_program(self) -> None:
+        lazy = {index: self.value_ids(domain)
+                for index, (_, domain) in self.system.config.lazy_inputs.items()
+                if 0 <= index < self.io_length and domain}
+        self.set_program(self.store_length, self.io_length, self._routines, lazy,
+                         self._valuation_codes)
+
+    def _value_id(self, value) -> int:
+        return struct.unpack("<I", self.value_ids((value,)))[0]
+
+    def valuation_index(self, valuation: Optional[Callable]) -> int:
+        """The machine's index of ``valuation`` (compiled when first asked), -1 when its
+        atoms are not all compiled: Python evaluates it."""
+        if valuation is None:
+            return -1
+        for index, known in enumerate(self._valuations):
+            if known is valuation:
+                return index if self._valuation_codes[index] else -1
+        atoms = getattr(valuation, "fused_atoms", None)
+        code = atom_code(atoms, self._value_id, self.store_length) if atoms is not None \
+            else None
+        self._valuations.append(valuation)
+        self._valuation_codes.append(code.tobytes() if code is not None else b"")
+        if code is not None:
+            self._send_program()
+        return len(self._valuations) - 1 if code is not None else -1
+
+    # ------------------------------------------------------ StateTable protocol
+    def intern(self, state: Hashable, add: bool = True) -> tuple[int, bool]:
+        frame, data = self._vectors(state)
+        return self.intern_vectors(frame, data, add)
+
+    def __getitem__(self, state_id: int) -> State:
+        return self._state(*self.vectors(state_id))
+
+    def memory_bytes(self) -> int:
+        contexts = sys.getsizeof(self._contexts) + sys.getsizeof(self._context_values)
+        return self.native_bytes() + contexts
+
+    # -------------------------------------------------------------- packing
+    def _vectors(self, state: State) -> tuple[bytes, bytes]:
+        frames = state[0]
+        if frames:
+            top = frames[-1]
+            context = (frames[:-1], top[0], top[3:], state[3:])
+            head = (top[1], top[2])
+        else:
+            context = ((), -1, (), state[3:])
+            head = (0, ())
+        context_id = self._contexts.get(context)
+        if context_id is None:
+            context_id = self._add_context(context, state)
+        frame = _HEAD.pack(context_id, head[0]) + self.value_ids(head[1])
+        return frame, self.value_ids(state[1]) + self.value_ids(state[2])
+
+    def _add_context(self, context: tuple, state: State) -> int:
+        below, routine, handling, rest = context
+        interrupts = state[4]
+        runs = routine >= 0 and state[7] == RUNNING and not state[10] and \
+            not (interrupts[0] or interrupts[1] or interrupts[3]) and \
+            not handling[0] and not handling[2]
+        flags = (RUNS if runs else 0) | (HAS_FAILED if state[7] == FAILED else 0)
+        context_id = self.add_context(routine, flags)
+        self._contexts[context] = context_id
+        self._context_values.append(context)
+        return context_id
+
+    def _state(self, context_id: int, pc: int, locals_: tuple, data: tuple) -> State:
+        below, routine, handling, rest = self._context_values[context_id]
+        if routine >= 0:
+            frames = below + (_new_tuple(Frame, (routine, pc, locals_) + handling),)
+        else:
+            frames = below
+        n = self.store_length
+        return _new_tuple(State, (frames, pvector(data[:n]), pvector(data[n:])) + rest)
+
+    # ------------------------------------------- the machine's calls back
+    def python_successors(self, state_id: int) -> list[tuple[int, int]]:
+        """The successors of a state the machine left to Python, as interned parts."""
+        state = self[state_id]
+        targets = self.system.successor_states(state)
+        self._last_id, self._last = state_id, (state, targets)
+        return [self.intern_parts(*self._vectors(target)) for target in targets]
+
+    def predicate_holds(self, state_id: int) -> bool:
+        return bool(self.predicate(self[state_id]))
+
+    def python_valuation(self, index: int, state_id: int) -> int:
+        return self.valuations_kept[index](self[state_id])
+
+    def observe(self, state_id: int, frames: Sequence[int], data: Sequence[int]) -> None:
+        """The observer's ``states`` at a state (its successors given by their parts)."""
+        if self._last_id == state_id:
+            state, targets = self._last
+        else:
+            state = self[state_id]
+            targets = [self._state(*self.parts(frame, part)) for frame, part in zip(frames, data)]
+        self.observer.states(state, targets)
