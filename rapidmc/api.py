@@ -355,6 +355,10 @@ class _StuckWatch:
         if not self.seen and self.stuck_at(state, [after for _, after in successors]):
             self.seen = True
 
+    def note_spans(self, spans) -> bool:
+        """``ExploredFacts.note_spans`` of ``then``; whether labels are still wanted."""
+        return self.then.note_spans(spans) if self.then is not None else False
+
     def packed_watch(self) -> tuple:
         """For a search in the compiled core (``reachability``), which looks for states
         where the program may be stuck itself (asking ``states`` about those): what

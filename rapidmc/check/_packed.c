@@ -29,7 +29,7 @@ enum { T_NUM = 0, T_BOOL = 1, T_INT = 2, T_OBJ = 3 };
 
 /* what a context says (model/packed/table.py): the machine may step there; the program
  * has failed there */
-enum { CONTEXT_RUNS = 1, CONTEXT_FAILED = 2 };
+enum { CONTEXT_RUNS = 1, CONTEXT_FAILED = 2, CONTEXT_MAIN_ALONE = 4 };
 
 /* opcodes of the step machine (mirrored in rapidmc/model/packed/bytecode.py) */
 enum {
@@ -76,7 +76,16 @@ typedef struct {        /* one routine's compiled steps */
     int32_t *block_start;       /* per pc: where its block starts in ``code``, -1: none */
     int32_t *code;
     Py_ssize_t code_length;
+    /* the projection's resets of local data at each pc: (slot, value id) pairs
+     * reset_pairs[2 * reset_offsets[pc] .. 2 * reset_offsets[pc + 1]) */
+    int32_t *reset_offsets, *reset_pairs;
+    uint8_t *executed;          /* per pc: 1 once a step the machine took ran it */
 } Routine;
+
+typedef struct {        /* resets of global data: one list, or one per pc of main */
+    int32_t *offsets, *pairs;
+    Py_ssize_t lists;
+} Resets;
 
 typedef struct {        /* compiled atoms of one valuation */
     int32_t *code;
@@ -112,6 +121,11 @@ typedef struct {
     int32_t *lazy_size;
     Valuation *valuations;
     Py_ssize_t valuation_count;
+    /* the projection the model applies to the fused step's targets (None: none) */
+    int projecting;
+    Resets global_resets, main_resets;
+    /* (routine, pc) pairs run for the first time by steps the machine took */
+    Int32Vector newly_executed;
     /* (frame id, pc) + 1 -> frame id: the frames a step reaches without changing locals */
     uint64_t frame_cache_key[FRAME_CACHE];
     int32_t frame_cache_value[FRAME_CACHE];
@@ -882,6 +896,7 @@ static int add_successor(Successors *found, int32_t frame, int32_t data)
 typedef struct {            /* scratch space of the step machine */
     uint32_t *frame, *data;
     Py_ssize_t frame_capacity, data_capacity;
+    Int32Vector ran;            /* pcs whose blocks ran in this state's step, not yet known */
     uint32_t *chosen_epoch;
     int32_t *chosen_value;
     uint32_t epoch;
@@ -906,6 +921,42 @@ static void scratch_free(Scratch *scratch)
     PyMem_Free(scratch->data);
     PyMem_Free(scratch->chosen_epoch);
     PyMem_Free(scratch->chosen_value);
+    vector32_free(&scratch->ran);
+}
+
+/* set ``items[slot] = id`` for the (slot, id) pairs; whether one changed */
+static inline int reset(uint32_t *items, Py_ssize_t length, const int32_t *pairs,
+                        int32_t from, int32_t to)
+{
+    int changed = 0;
+    for (int32_t i = from; i < to; i++) {
+        int32_t slot = pairs[2 * i];
+        uint32_t id = (uint32_t)pairs[2 * i + 1];
+        if (slot < length && items[slot] != id) {
+            items[slot] = id;
+            changed = 1;
+        }
+    }
+    return changed;
+}
+
+/* The model's projection of a step's target (model/reduction/projection.py): sliced and
+ * dead data at their initial values, by the routine's and main's pc. */
+static void project(PackedTable *table, Routine *routine, uint32_t context, Run *run)
+{
+    if (routine->reset_offsets != NULL)
+        run->locals_changed |= reset(run->locals, run->local_count, routine->reset_pairs,
+                                     routine->reset_offsets[run->pc],
+                                     routine->reset_offsets[run->pc + 1]);
+    Resets *resets = &table->global_resets;
+    int32_t list = 0;
+    if ((table->context_runs[context] & CONTEXT_MAIN_ALONE) && table->main_resets.lists > 0) {
+        resets = &table->main_resets;
+        list = run->pc;
+    }
+    if (resets->offsets != NULL && list < resets->lists)
+        run->data_changed |= reset(run->data, table->store_length, resets->pairs,
+                                   resets->offsets[list], resets->offsets[list + 1]);
 }
 
 /* the frame ``frame`` (id ``frame_id``) with the program counter ``pc`` (remembered in a
@@ -930,8 +981,32 @@ static int32_t frame_at(PackedTable *table, int32_t frame_id, const uint32_t *fr
 /* The successors of state ``id`` by the step machine, as ``fused_successor_states``
  * gives them: VM_DONE (``found`` filled), VM_UNSUPPORTED (Python must step it: nothing
  * changed), -1 with an error. */
+static int machine_step(PackedTable *table, Py_ssize_t id, Scratch *scratch,
+                        Successors *found, Routine **ran_in);
+
+/* ``machine_step``, with the pcs its blocks ran noted as executed when it is done (and
+ * forgotten when it gave up: the Python step then says what runs) */
 static int machine_successors(PackedTable *table, Py_ssize_t id, Scratch *scratch,
                               Successors *found)
+{
+    Routine *routine = NULL;
+    int outcome = machine_step(table, id, scratch, found, &routine);
+    if (routine != NULL) {
+        for (Py_ssize_t i = 0; i < scratch->ran.length; i++) {
+            int32_t pc = scratch->ran.items[i];
+            routine->executed[pc] = outcome == VM_DONE;
+            if (outcome == VM_DONE &&
+                (vector32_push(&table->newly_executed, (int32_t)(routine - table->routines)) < 0 ||
+                 vector32_push(&table->newly_executed, pc) < 0))
+                return -1;
+        }
+        scratch->ran.length = 0;
+    }
+    return outcome;
+}
+
+static int machine_step(PackedTable *table, Py_ssize_t id, Scratch *scratch,
+                        Successors *found, Routine **ran_in)
 {
     int64_t key = table->keys[id];
     int32_t frame_id = (int32_t)(key >> 32), data_id = (int32_t)(key & 0xffffffff);
@@ -949,6 +1024,7 @@ static int machine_successors(PackedTable *table, Py_ssize_t id, Scratch *scratc
     if (routine->code == NULL || start_pc < 0 || start_pc >= routine->length ||
             routine->block_start[start_pc] < 0)
         return VM_UNSUPPORTED;
+    *ran_in = routine;
     uint32_t *work_frame = reserve(scratch->frame, &scratch->frame_capacity, sizeof(uint32_t),
                                    frame_length);
     if (work_frame == NULL)
@@ -969,6 +1045,7 @@ static int machine_successors(PackedTable *table, Py_ssize_t id, Scratch *scratc
     run.chosen_epoch = scratch->chosen_epoch;
     run.chosen_value = scratch->chosen_value;
     found->count = 0;
+    scratch->ran.length = 0;
     run.data_changed = run.locals_changed = 1;
     for (;;) {
         if (run.locals_changed)                 /* (the last run's copies, if unchanged) */
@@ -985,6 +1062,11 @@ static int machine_successors(PackedTable *table, Py_ssize_t id, Scratch *scratc
             int32_t at = routine->block_start[run.pc];
             if (at < 0 || ++blocks > MAX_BLOCKS_PER_STEP)
                 return VM_UNSUPPORTED;
+            if (!routine->executed[run.pc]) {       /* (noted once the step is done) */
+                routine->executed[run.pc] = 2;
+                if (vector32_push(&scratch->ran, run.pc) < 0)
+                    return -1;
+            }
             int outcome = execute(&run, routine->code, at, NULL);
             scratch->epoch = run.epoch;
             if (outcome != VM_DONE)
@@ -1002,6 +1084,8 @@ static int machine_successors(PackedTable *table, Py_ssize_t id, Scratch *scratc
             if ((kind & 4) && run.size_count)
                 break;
         }
+        if (table->projecting)
+            project(table, routine, context, &run);
         int32_t new_frame;
         if (run.locals_changed) {
             work_frame[1] = (uint32_t)run.pc;
@@ -1086,6 +1170,9 @@ static void free_program(PackedTable *self)
         PyMem_Free(r->first_visible);
         PyMem_Free(r->block_start);
         PyMem_Free(r->code);
+        PyMem_Free(r->reset_offsets);
+        PyMem_Free(r->reset_pairs);
+        PyMem_Free(r->executed);
     }
     PyMem_Free(self->routines);
     self->routines = NULL;
@@ -1102,6 +1189,13 @@ static void free_program(PackedTable *self)
     PyMem_Free(self->valuations);
     self->valuations = NULL;
     self->valuation_count = 0;
+    PyMem_Free(self->global_resets.offsets);
+    PyMem_Free(self->global_resets.pairs);
+    PyMem_Free(self->main_resets.offsets);
+    PyMem_Free(self->main_resets.pairs);
+    memset(&self->global_resets, 0, sizeof(Resets));
+    memset(&self->main_resets, 0, sizeof(Resets));
+    self->projecting = 0;
 }
 
 static void PackedTable_dealloc(PackedTable *self)
@@ -1115,6 +1209,7 @@ static void PackedTable_dealloc(PackedTable *self)
     PyMem_Free(self->value_slots);
     vt_free(&self->frames);
     vt_free(&self->data);
+    vector32_free(&self->newly_executed);
     PyMem_Free(self->keys);
     PyMem_Free(self->slots);
     PyMem_Free(self->context_routine);
@@ -1285,16 +1380,44 @@ static PyObject *PackedTable_intern_parts(PackedTable *self, PyObject *args)
     return Py_BuildValue("(ii)", frame_id, data_id);
 }
 
+/* ``resets``: None, or (offsets: bytes of int32, pairs: bytes of int32) */
+static int parse_resets(PyObject *resets, int32_t **offsets, int32_t **pairs,
+                        Py_ssize_t *lists)
+{
+    *offsets = *pairs = NULL;
+    *lists = 0;
+    if (resets == Py_None)
+        return 0;
+    const char *offset_bytes, *pair_bytes;
+    Py_ssize_t offsets_size, pairs_size;
+    if (!PyArg_ParseTuple(resets, "y#y#", &offset_bytes, &offsets_size, &pair_bytes,
+                          &pairs_size))
+        return -1;
+    *offsets = PyMem_Malloc(offsets_size + sizeof(int32_t));
+    *pairs = PyMem_Malloc(pairs_size + sizeof(int32_t));
+    if (*offsets == NULL || *pairs == NULL) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    memcpy(*offsets, offset_bytes, offsets_size);
+    memcpy(*pairs, pair_bytes, pairs_size);
+    *lists = offsets_size / (Py_ssize_t)sizeof(int32_t) - 1;
+    return 0;
+}
+
 /* ``set_program(store_length, io_length, routines, lazy, valuations)``:
  * routines: list of None or (kinds: bytes, first_visible: bytes, block_start: bytes of
  * int32, code: bytes of int32); lazy: {signal index: bytes of domain value ids};
- * valuations: list of bytes of int32 (atom code). */
+ * valuations: list of bytes of int32 (atom code); projection: None or (global resets,
+ * main's resets by pc or None, {routine: its resets by pc}), each resets list as
+ * (offsets, pairs) (see ``parse_resets``). */
 static PyObject *PackedTable_set_program(PackedTable *self, PyObject *args)
 {
     Py_ssize_t store_length, io_length;
-    PyObject *routines, *lazy, *valuations;
-    if (!PyArg_ParseTuple(args, "nnO!O!O!", &store_length, &io_length, &PyList_Type, &routines,
-                          &PyDict_Type, &lazy, &PyList_Type, &valuations))
+    PyObject *routines, *lazy, *valuations, *projection = Py_None;
+    if (!PyArg_ParseTuple(args, "nnO!O!O!|O", &store_length, &io_length, &PyList_Type,
+                          &routines, &PyDict_Type, &lazy, &PyList_Type, &valuations,
+                          &projection))
         return NULL;
     free_program(self);
     self->store_length = store_length;
@@ -1338,6 +1461,37 @@ static PyObject *PackedTable_set_program(PackedTable *self, PyObject *args)
         memcpy(r->block_start, starts, starts_length);
         memcpy(r->code, code, code_length);
         r->code_length = code_length / sizeof(int32_t);
+        r->executed = PyMem_Calloc(kinds_length + 1, 1);
+        if (r->executed == NULL)
+            return PyErr_NoMemory();
+    }
+    if (projection != Py_None) {
+        PyObject *global, *main, *frames;
+        if (!PyArg_ParseTuple(projection, "OOO!", &global, &main, &PyDict_Type, &frames))
+            return NULL;
+        Py_ssize_t lists;
+        if (parse_resets(global, &self->global_resets.offsets, &self->global_resets.pairs,
+                         &self->global_resets.lists) < 0 ||
+            parse_resets(main, &self->main_resets.offsets, &self->main_resets.pairs,
+                         &self->main_resets.lists) < 0)
+            return NULL;
+        PyObject *key, *value;
+        Py_ssize_t position = 0;
+        while (PyDict_Next(frames, &position, &key, &value)) {
+            Py_ssize_t index = PyLong_AsSsize_t(key);
+            if (index == -1 && PyErr_Occurred())
+                return NULL;
+            if (index < 0 || index >= count || self->routines[index].code == NULL)
+                continue;      /* (a routine the machine does not step: Python resets it) */
+            Routine *r = &self->routines[index];
+            if (parse_resets(value, &r->reset_offsets, &r->reset_pairs, &lists) < 0)
+                return NULL;
+            if (lists != r->length) {
+                PyErr_SetString(PyExc_ValueError, "set_program: resets per pc differ in length");
+                return NULL;
+            }
+        }
+        self->projecting = 1;
     }
     PyObject *key, *value;
     Py_ssize_t position = 0;
@@ -1501,6 +1655,7 @@ typedef struct {                 /* one run of the packed breadth-first loop */
     int observe_natively;        /* stuck check and triggers here; Python for candidates */
     Py_ssize_t trigger_valuation;   /* -1: none */
     int predicate_is_failed, deadlock_is_target, recording;
+    int labels_wanted;           /* the observer still wants the lines steps run */
     Py_ssize_t *valuations;      /* per recorded valuation: its compiled index or -1 */
     Py_ssize_t valuation_count;
     long depth_now, deepest;
@@ -1572,10 +1727,32 @@ static PyObject *id_list(const int32_t *ids, Py_ssize_t count)
     return list;
 }
 
-/* the successors of ``frontier`` from Python (``step_python``): into ``found``; 0 / -1 */
+/* the successors of ``frontier`` from Python (``step_python``, or with labels for the
+ * observer ``python_labelled``, which also says whether it wants more): into ``found``;
+ * 0 / -1 */
 static int python_successors(PackedSearch *search, Py_ssize_t frontier)
 {
-    PyObject *pairs = PyObject_CallFunction(search->step_python, "n", frontier);
+    PyObject *pairs;
+    if (search->labels_wanted) {
+        PyObject *answer = PyObject_CallMethod((PyObject *)search->table, "python_labelled",
+                                               "n", frontier);
+        if (answer == NULL)
+            return -1;
+        if (!PyTuple_Check(answer) || PyTuple_GET_SIZE(answer) != 2) {
+            Py_DECREF(answer);
+            PyErr_SetString(PyExc_TypeError, "python_labelled must give (parts, wanted)");
+            return -1;
+        }
+        pairs = Py_NewRef(PyTuple_GET_ITEM(answer, 0));
+        search->labels_wanted = PyObject_IsTrue(PyTuple_GET_ITEM(answer, 1));
+        Py_DECREF(answer);
+        if (search->labels_wanted < 0) {
+            Py_DECREF(pairs);
+            return -1;
+        }
+    }
+    else
+        pairs = PyObject_CallFunction(search->step_python, "n", frontier);
     if (pairs == NULL)
         return -1;
     PyObject *fast = PySequence_Fast(pairs, "python_successors must give a sequence");
@@ -1747,14 +1924,30 @@ static int expand(PackedSearch *search, Py_ssize_t frontier, Py_ssize_t *target)
     if (outcome < 0)
         return FAILED;
     int by_machine = outcome == VM_DONE;
-    if (by_machine)
+    int observed = 0;          /* (python_labelled shows the observer the labels) */
+    if (by_machine) {
         table->machine_steps++;
+        if (table->newly_executed.length && search->labels_wanted) {
+            PyObject *answer = PyObject_CallMethod(
+                (PyObject *)table, "note_executed", "y#",
+                (const char *)table->newly_executed.items,
+                table->newly_executed.length * (Py_ssize_t)sizeof(int32_t));
+            if (answer == NULL)
+                return FAILED;
+            search->labels_wanted = PyObject_IsTrue(answer);
+            Py_DECREF(answer);
+            if (search->labels_wanted < 0)
+                return FAILED;
+        }
+    }
     else {
         table->python_steps++;
+        observed = search->labels_wanted && search->python_observe != Py_None;
         if (python_successors(search, frontier) < 0)
             return FAILED;
     }
-    if (observe(search, frontier, by_machine) < 0)
+    table->newly_executed.length = 0;
+    if (!observed && observe(search, frontier, by_machine) < 0)
         return FAILED;
     Py_ssize_t count = search->found.count;
     search->transitions += count;
@@ -1788,14 +1981,15 @@ static PyObject *packed_breadth_first(PyObject *module, PyObject *args)
     Py_ssize_t frontier;
     PyObject *valuations;
     int recording;
-    if (!PyArg_ParseTuple(args, "O!nOOpnpppOOO!LLlnL", &PackedTableType, &search.table,
+    if (!PyArg_ParseTuple(args, "O!nOOpnpppOOO!LLlnLp", &PackedTableType, &search.table,
                           &frontier, &search.step_python, &search.python_observe,
                           &search.observe_natively, &search.trigger_valuation,
                           &search.predicate_is_failed, &search.deadlock_is_target, &recording,
                           &search.budget, &search.sink, &PyList_Type, &valuations,
                           &search.transitions, &search.deadlocks, &search.depth_now,
-                          &search.level_end, &search.targets_before))
+                          &search.level_end, &search.targets_before, &search.labels_wanted))
         return NULL;
+    search.table->newly_executed.length = 0;
     search.recording = recording;
     search.deepest = search.depth_now;
     Py_ssize_t target = -1;
@@ -1871,8 +2065,8 @@ PyMethodDef packed_functions[] = {
      "packed_breadth_first(table, frontier, python_successors, python_observe, "
      "observe_natively, trigger_valuation, predicate_is_failed, deadlock_is_target, "
      "recording, budget, sink, valuations, transitions, deadlocks, depth, level_end, "
-     "targets_before) -> (target id or -1, transitions, deadlocks, depth of the last "
-     "stored state, trigger bits seen): reachability's unlabelled loop over a PackedTable "
+     "targets_before, labels_wanted) -> (target id or -1, transitions, deadlocks, depth of "
+     "the last stored state, trigger bits seen): reachability's loop over a PackedTable "
      "(see _packed.c)"},
     {NULL}
 };

@@ -203,8 +203,14 @@ class _BreadthFirst:
         stored = len(table)
         frontier = 0
         native = engine_of(table) == NATIVE
+        # a packed table's loop also serves an observer that wants labels for a while (it
+        # names the lines its steps ran: ``note_spans``)
+        packed = native and hasattr(table, "python_successors") and \
+            (unlabelled or labelled_while and hasattr(observe, "note_spans"))
         while frontier < stored and budget.reason is None:
-            if unlabelled and native:     # the same loop in the compiled core from here on
+            if packed:                    # the same loop in the compiled core from here on
+                return self._expand_packed(frontier, labels_wanted=not unlabelled)
+            if unlabelled and native:
                 return self._expand_natively(frontier, record)
             state = table[frontier]
             if unlabelled:
@@ -249,8 +255,6 @@ class _BreadthFirst:
         """``_expand_all``'s unlabelled loop from ``frontier`` on, in the compiled core
         (``_native.breadth_first``): the same states, ids, calls and counts; the depths of
         the states it stores are not kept (they grow level by level: only the last one's)."""
-        if hasattr(self.states, "python_successors"):
-            return self._expand_packed(frontier)
         observe = self.observe.states if self.observe is not None else None
         target, self.transitions, self.deadlocks, self.deepest = _native.breadth_first(
             self.states, frontier, self.system.successor_states, observe, self.predicate,
@@ -258,11 +262,12 @@ class _BreadthFirst:
             self.transitions, self.deadlocks)
         return target if target >= 0 else None
 
-    def _expand_packed(self, frontier: int) -> Optional[int]:
-        """``_expand_natively`` over a packed table (``model.packed``): the successors of
-        the states its step machine takes, the run-time error predicate, the rows of the
-        graph and their valuations, and the observer's stuck check and trigger atoms are
-        computed in the compiled core; Python is called for the rest."""
+    def _expand_packed(self, frontier: int, labels_wanted: bool) -> Optional[int]:
+        """``_expand_all``'s loop over a packed table (``model.packed``) in the compiled core:
+        the successors of the states its step machine takes, the run-time error predicate,
+        the rows of the graph and their valuations, and the observer's stuck check and
+        trigger atoms are computed there; Python is called for the rest (the Python step,
+        with labels for the observer while it wants them: ``labels_wanted``)."""
         table, observe, graph = self.states, self.observe, self.graph
         table.predicate = self.predicate
         table.observer = observe
@@ -285,7 +290,7 @@ class _BreadthFirst:
                 self.predicate == getattr(self.system, "failed", None),
                 self.deadlock_is_target, graph is not None, self.budget, sink, indices,
                 self.transitions, self.deadlocks, depth_now, level_end,
-                len(graph.targets) if graph is not None else 0)
+                len(graph.targets) if graph is not None else 0, labels_wanted)
         if seen is not None:
             seen.update(bits)
         table.predicate = table.observer = None

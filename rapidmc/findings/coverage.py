@@ -76,16 +76,20 @@ class StatementWatch:
         self.saturated = self._asked == frozenset()
 
     def __call__(self, state: Hashable, successors: Sequence[tuple[Hashable, Hashable]]) -> None:
+        self.note_spans([one for (_, span, _), _ in successors for one in executed_spans(span)])
+
+    def note_spans(self, spans: Sequence) -> None:
+        """Mark the lines of ``spans`` executed (a search that runs steps without labels
+        names the instructions it ran)."""
         executed, recorded = self.executed, self._recorded
         before = len(executed)
-        for (_, span, _), _ in successors:
-            for one in executed_spans(span):
-                if one is None or id(one) in recorded:
-                    continue
-                executed.add((one.file, one.line))
-                if len(recorded) >= SPANS_KEPT:
-                    recorded.clear()
-                recorded[id(one)] = one
+        for one in spans:
+            if one is None or id(one) in recorded:
+                continue
+            executed.add((one.file, one.line))
+            if len(recorded) >= SPANS_KEPT:
+                recorded.clear()
+            recorded[id(one)] = one
         if len(executed) != before and self._asked is not None:
             self.saturated = self._asked <= executed
 

@@ -51,6 +51,12 @@ class ExploredFacts:
         """``__call__`` once every line has run: only the state's atoms remain to watch."""
         self.triggers.seen.add(self.valuation(state))
 
+    def note_spans(self, spans) -> bool:
+        """The lines of ``spans`` ran (named by a search without labels); whether the
+        labels are still wanted."""
+        self.statements.note_spans(spans)
+        return self.labels_wanted
+
     def packed_watch(self) -> tuple:
         """For a search in the compiled core (``reachability``): the valuation whose bits
         ``states`` collects and the set it adds them to."""

@@ -26,24 +26,28 @@ from __future__ import annotations
 
 import struct
 import sys
+from array import array
 from typing import Callable, Hashable, Optional, Sequence
 
 from pyrsistent import pvector
 
 from ...check.native import _native
 from ...semantics.state import FAILED, RUNNING, Frame, State
+from ..reduction.projection import Projection
 from .bytecode import RoutineCode, atom_code
 
 _new_tuple = tuple.__new__
 _HEAD = struct.Struct("<Ii")           # context id, program counter
 RUNS = 1                               # context flags (_packed.c's add_context)
 HAS_FAILED = 2
+MAIN_ALONE = 4                         # one frame, of the projection's main routine
 
 
 def packed_table(system) -> Optional["PackedStateTable"]:
     """A packed table for ``system``'s states when the compiled core is built and its
     step machine can take the system's fused steps, else None."""
-    if _native is None or system.project_fused is not None or system.order is not None:
+    if _native is None or system.order is not None or \
+            system.project_fused is not None and not isinstance(system.project_fused, Projection):
         return None
     config = system.config
     if config.free_inputs or system.program.environment_react is not None:
@@ -95,7 +99,26 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
                 for index, (_, domain) in self.system.config.lazy_inputs.items()
                 if 0 <= index < self.io_length and domain}
         self.set_program(self.store_length, self.io_length, self._routines, lazy,
-                         self._valuation_codes)
+                         self._valuation_codes, self._projection())
+
+    def _projection(self) -> Optional[tuple]:
+        """The projection of the fused step's targets for ``set_program``, or None."""
+        projection = self.system.project_fused
+        if projection is None:
+            return None
+        main = self._resets(projection.main_resets) if projection.main_resets else None
+        frames = {routine: self._resets(per_pc)
+                  for routine, per_pc in projection.frame_resets.items()}
+        return self._resets([projection.global_resets]), main, frames
+
+    def _resets(self, lists: Sequence[tuple]) -> tuple[bytes, bytes]:
+        """(offsets, (slot, value id) pairs) of reset lists, as ``_packed.c`` reads them."""
+        offsets, pairs = array("i", [0]), array("i")
+        for resets in lists:
+            for slot, initial in resets:
+                pairs.extend((slot, self._value_id(initial)))
+            offsets.append(len(pairs) // 2)
+        return offsets.tobytes(), pairs.tobytes()
 
     def _value_id(self, value) -> int:
         return struct.unpack("<I", self.value_ids((value,)))[0]
@@ -151,7 +174,11 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         runs = routine >= 0 and state[7] == RUNNING and not state[10] and \
             not (interrupts[0] or interrupts[1] or interrupts[3]) and \
             not handling[0] and not handling[2]
-        flags = (RUNS if runs else 0) | (HAS_FAILED if state[7] == FAILED else 0)
+        projection = self.system.project_fused
+        alone = projection is not None and len(state[0]) == 1 and not state[10] and \
+            routine == projection.main
+        flags = (RUNS if runs else 0) | (HAS_FAILED if state[7] == FAILED else 0) | \
+            (MAIN_ALONE if alone else 0)
         context_id = self.add_context(routine, flags)
         self._contexts[context] = context_id
         self._context_values.append(context)
@@ -173,6 +200,26 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         targets = self.system.successor_states(state)
         self._last_id, self._last = state_id, (state, targets)
         return [self.intern_parts(*self._vectors(target)) for target in targets]
+
+    def python_labelled(self, state_id: int) -> tuple[list[tuple[int, int]], bool]:
+        """``python_successors`` for an observer that wants the labels: it sees them; and
+        whether it wants more."""
+        state = self[state_id]
+        labelled = list(self.system.successors(state))
+        self.observer(state, labelled)
+        targets = [target for _, target in labelled]
+        self._last_id, self._last = state_id, (state, targets)
+        parts = [self.intern_parts(*self._vectors(target)) for target in targets]
+        return parts, self.observer.labels_wanted
+
+    def note_executed(self, pairs: bytes) -> bool:
+        """The observer is told the lines of the (routine, pc) ``pairs`` the machine ran
+        for the first time; whether it wants more."""
+        found = array("i")
+        found.frombytes(pairs)
+        routines = self.program.routines
+        spans = [routines[found[i]].code[found[i + 1]].span for i in range(0, len(found), 2)]
+        return self.observer.note_spans([span for span in spans if span is not None])
 
     def predicate_holds(self, state_id: int) -> bool:
         return bool(self.predicate(self[state_id]))
