@@ -7,10 +7,11 @@
  *   value, ``-0.0`` with ``0.0`` as Python's ``==`` has it; other objects through a
  *   dict), so a state is vectors of 32-bit value ids;
  * - segments: a state is a frame vector (context id, program counter, local data) and
- *   a data vector (global data, then signals), each interned once in a table of its own
+ *   a data vector (global data), each interned once in a table of its own
  *   (SPIN's collapse compression), and the state is the pair of segment ids, interned in
  *   an open-addressing table: ids in the order states were first interned, as the Python
- *   table gives them;
+ *   table gives them; a context (what the fused step never changes, signals included)
+ *   is numbered by the model, which tells the machine what it needs of one;
  * - the step machine: a routine's fused steps (``semantics/fused_step.py``) compiled to a
  *   small stack code (``model/packed/bytecode.py``) that runs on the vectors.  Whatever
  *   the code does not cover (calls, errors, strings, handlers...) makes it give up
@@ -112,6 +113,8 @@ typedef struct {
      * step machine may run there */
     int32_t *context_routine;
     uint8_t *context_runs;      /* CONTEXT_ flags */
+    int32_t *context_io;        /* the signals' values: a vector of ``signals`` */
+    VectorTable signals;
     Py_ssize_t contexts, context_capacity;
     /* the program */
     Routine *routines;
@@ -255,10 +258,41 @@ static int32_t vt_intern(VectorTable *table, const uint32_t *items, Py_ssize_t l
     return id;
 }
 
+/* drop the index (slots) of a table whose vectors stay; ``vt_index`` makes it again */
+static void vt_release_index(VectorTable *table)
+{
+    PyMem_Free(table->slots);
+    table->slots = NULL;
+}
+
+static int vt_index(VectorTable *table)
+{
+    if (table->slots != NULL)
+        return 0;
+    uint64_t capacity = FIRST_CAPACITY;
+    while ((uint64_t)table->count * 2 > capacity)
+        capacity *= 2;
+    table->slots = PyMem_Malloc(capacity * sizeof(int32_t));
+    if (table->slots == NULL) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    memset(table->slots, 0xff, capacity * sizeof(int32_t));
+    for (Py_ssize_t id = 0; id < table->count; id++) {
+        uint64_t position = mix64(table->hashes[id]) & (capacity - 1);
+        while (table->slots[position] != EMPTY)
+            position = (position + 1) & (capacity - 1);
+        table->slots[position] = (int32_t)id;
+    }
+    table->mask = capacity - 1;
+    return 0;
+}
+
 static Py_ssize_t vt_bytes(const VectorTable *table)
 {
     return table->arena_capacity * sizeof(uint32_t) + table->offsets_capacity * sizeof(int64_t)
-        + table->hashes_capacity * sizeof(uint32_t) + (table->mask + 1) * sizeof(int32_t);
+        + table->hashes_capacity * sizeof(uint32_t) +
+        (table->slots != NULL ? (table->mask + 1) * sizeof(int32_t) : 0);
 }
 
 /* ======================================================================= values */
@@ -431,6 +465,21 @@ static int grow_states(PackedTable *self)
     return 0;
 }
 
+/* the indexes (slots) of the states and their parts, made again when released */
+static int ensure_index(PackedTable *self)
+{
+    if (vt_index(&self->frames) < 0 || vt_index(&self->data) < 0 ||
+            vt_index(&self->signals) < 0)
+        return -1;
+    if (self->slots != NULL)
+        return 0;
+    uint64_t capacity = FIRST_CAPACITY;
+    while ((uint64_t)self->count * 4 > capacity * 3)
+        capacity *= 2;
+    self->mask = capacity / 2 - 1;
+    return grow_states(self);          /* (fills a new table twice that size) */
+}
+
 /* the id of the state (frame id, data id), ``*is_new``; -1: new and not ``add``;
  * -2 with an error */
 static Py_ssize_t intern_key(PackedTable *self, int32_t frame, int32_t data, int add,
@@ -470,6 +519,7 @@ typedef struct {
     uint32_t *locals;           /* working copies */
     Py_ssize_t local_count;
     uint32_t *data;
+    const uint32_t *io;         /* signal values (the context's) */
     int32_t pc;
     int data_changed, locals_changed;   /* whether the step wrote a different value */
     int lazy;                   /* inputs chosen where read (steps), or read from data */
@@ -518,6 +568,13 @@ static inline int integral(double d)
     return d == d && !isinf(d) && d == floor(d);
 }
 
+/* the signal values of a context */
+static inline const uint32_t *context_signals(PackedTable *table, uint32_t context)
+{
+    Py_ssize_t length;
+    return vt_items(&table->signals, table->context_io[context], &length);
+}
+
 /* read signal ``index`` as ``fused_step._read`` does */
 static int read_signal(Run *run, int64_t index, Value *out)
 {
@@ -540,7 +597,7 @@ static int read_signal(Run *run, int64_t index, Value *out)
         *out = load(table, id);
         return VM_DONE;
     }
-    *out = load(table, run->data[table->store_length + index]);
+    *out = load(table, run->io[index]);
     return VM_DONE;
 }
 
@@ -1040,6 +1097,7 @@ static int machine_step(PackedTable *table, Py_ssize_t id, Scratch *scratch,
     run.locals = work_frame + 2;
     run.local_count = frame_length - 2;
     run.data = work_data;
+    run.io = context_signals(table, context);
     run.lazy = 1;
     run.script_length = 0;
     run.chosen_epoch = scratch->chosen_epoch;
@@ -1115,6 +1173,7 @@ static int machine_valuation(PackedTable *table, Py_ssize_t index, Py_ssize_t id
     run.locals = (uint32_t *)frame + 2;        /* (atoms read global data only) */
     run.local_count = frame_length >= 2 ? frame_length - 2 : 0;
     run.data = (uint32_t *)data;
+    run.io = context_signals(table, frame[0]);
     run.lazy = 0;
     run.script_length = run.size_count = 0;
     run.chosen_epoch = scratch->chosen_epoch;
@@ -1136,7 +1195,8 @@ static PyObject *PackedTable_new(PyTypeObject *type, PyObject *args, PyObject *k
     self->slots = PyMem_Malloc(FIRST_CAPACITY * sizeof(int32_t));
     self->value_slots = PyMem_Malloc(FIRST_CAPACITY * sizeof(int32_t));
     if (self->object_ids == NULL || self->slots == NULL || self->value_slots == NULL ||
-            vt_init(&self->frames) < 0 || vt_init(&self->data) < 0) {
+            vt_init(&self->frames) < 0 || vt_init(&self->data) < 0 ||
+            vt_init(&self->signals) < 0) {
         Py_DECREF(self);
         return PyErr_Occurred() ? NULL : PyErr_NoMemory();
     }
@@ -1209,6 +1269,8 @@ static void PackedTable_dealloc(PackedTable *self)
     PyMem_Free(self->value_slots);
     vt_free(&self->frames);
     vt_free(&self->data);
+    vt_free(&self->signals);
+    PyMem_Free(self->context_io);
     vector32_free(&self->newly_executed);
     PyMem_Free(self->keys);
     PyMem_Free(self->slots);
@@ -1274,13 +1336,24 @@ static PyObject *PackedTable_values(PackedTable *self, PyObject *ids)
     return values_of(self, (const uint32_t *)buffer, size / (Py_ssize_t)sizeof(uint32_t));
 }
 
-/* ``add_context(routine, flags) -> id``: a new context and what the machine needs of it
- * (flags: CONTEXT_RUNS, CONTEXT_FAILED) */
+/* ``add_context(routine, flags, signals) -> id``: a new context and what the machine
+ * needs of it (flags: CONTEXT_ values; signals: the value ids of the signals) */
 static PyObject *PackedTable_add_context(PackedTable *self, PyObject *args)
 {
     int routine, runs;
-    if (!PyArg_ParseTuple(args, "ii", &routine, &runs))
+    Py_buffer io;
+    if (ensure_index(self) < 0 || !PyArg_ParseTuple(args, "iiy*", &routine, &runs, &io))
         return NULL;
+    int32_t io_id = vt_intern(&self->signals, io.buf, io.len / sizeof(uint32_t));
+    PyBuffer_Release(&io);
+    if (io_id < 0)
+        return NULL;
+    Py_ssize_t io_capacity = self->context_capacity;
+    int32_t *ios = reserve(self->context_io, &io_capacity, sizeof(int32_t), self->contexts + 1);
+    if (ios == NULL)
+        return NULL;
+    self->context_io = ios;
+    self->context_io[self->contexts] = io_id;
     Py_ssize_t capacity = self->context_capacity;
     int32_t *routines = reserve(self->context_routine, &capacity, sizeof(int32_t),
                                 self->contexts + 1);
@@ -1303,7 +1376,7 @@ static PyObject *PackedTable_intern_vectors(PackedTable *self, PyObject *args)
 {
     Py_buffer frame, data;
     int add = 1;
-    if (!PyArg_ParseTuple(args, "y*y*|p", &frame, &data, &add))
+    if (ensure_index(self) < 0 || !PyArg_ParseTuple(args, "y*y*|p", &frame, &data, &add))
         return NULL;
     PyObject *result = NULL;
     int32_t frame_id = vt_intern(&self->frames, frame.buf, frame.len / sizeof(uint32_t));
@@ -1368,7 +1441,7 @@ static PyObject *PackedTable_parts(PackedTable *self, PyObject *args)
 static PyObject *PackedTable_intern_parts(PackedTable *self, PyObject *args)
 {
     Py_buffer frame, data;
-    if (!PyArg_ParseTuple(args, "y*y*", &frame, &data))
+    if (ensure_index(self) < 0 || !PyArg_ParseTuple(args, "y*y*", &frame, &data))
         return NULL;
     int32_t frame_id = vt_intern(&self->frames, frame.buf, frame.len / sizeof(uint32_t));
     int32_t data_id = frame_id < 0 ? -1 :
@@ -1534,6 +1607,8 @@ static PyObject *PackedTable_step(PackedTable *self, PyObject *argument)
         return NULL;
     if (id < 0 || id >= self->count)
         return PyErr_Format(PyExc_IndexError, "no such state id");
+    if (ensure_index(self) < 0)
+        return NULL;
     Scratch scratch = {0};
     Successors found = {0};
     PyObject *result = NULL;
@@ -1573,13 +1648,25 @@ static PyObject *PackedTable_evaluate(PackedTable *self, PyObject *args)
     return PyLong_FromUnsignedLongLong(bits);
 }
 
+/* ``release_index()``: drop the hash indexes (the interning is done; ids, states and the
+ * machine stay; the next interning makes them again) */
+static PyObject *PackedTable_release_index(PackedTable *self, PyObject *unused)
+{
+    PyMem_Free(self->slots);
+    self->slots = NULL;
+    vt_release_index(&self->frames);
+    vt_release_index(&self->data);
+    Py_RETURN_NONE;
+}
+
 static PyObject *PackedTable_native_bytes(PackedTable *self, PyObject *unused)
 {
-    Py_ssize_t bytes = self->key_capacity * sizeof(int64_t) + (self->mask + 1) * sizeof(int32_t)
+    Py_ssize_t bytes = self->key_capacity * sizeof(int64_t) +
+        (self->slots != NULL ? (self->mask + 1) * sizeof(int32_t) : 0)
         + vt_bytes(&self->frames) + vt_bytes(&self->data)
         + self->value_capacity * (1 + sizeof(double) + sizeof(PyObject *))
         + (self->value_mask + 1) * sizeof(int32_t)
-        + self->context_capacity * (sizeof(int32_t) + 1);
+        + vt_bytes(&self->signals) + self->context_capacity * (2 * sizeof(int32_t) + 1);
     return PyLong_FromSsize_t(bytes);
 }
 
@@ -1617,6 +1704,8 @@ static PyMethodDef PackedTable_methods[] = {
      "step(id) -> [(frame id, data id)] or None: the step machine on a stored state"},
     {"evaluate", (PyCFunction)PackedTable_evaluate, METH_VARARGS,
      "evaluate(valuation, id) -> bits or None: compiled atoms on a stored state"},
+    {"release_index", (PyCFunction)PackedTable_release_index, METH_NOARGS,
+     "release_index(): drop the hash indexes until the next interning needs them"},
     {"native_bytes", (PyCFunction)PackedTable_native_bytes, METH_NOARGS,
      "native_bytes() -> int: bytes of the native arrays"},
     {"counts", (PyCFunction)PackedTable_counts, METH_NOARGS,
@@ -1990,6 +2079,8 @@ static PyObject *packed_breadth_first(PyObject *module, PyObject *args)
                           &search.level_end, &search.targets_before, &search.labels_wanted))
         return NULL;
     search.table->newly_executed.length = 0;
+    if (ensure_index(search.table) < 0)
+        return NULL;
     search.recording = recording;
     search.deepest = search.depth_now;
     Py_ssize_t target = -1;

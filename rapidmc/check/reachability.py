@@ -118,6 +118,9 @@ def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], boo
     if budget.reason is not None:
         return SearchResult(UNKNOWN, budget.reason, stats=stats)
     if search.graph is not None:
+        release = getattr(search.states, "release_index", None)
+        if release is not None:      # (what only interning needs; made again if asked)
+            release()
         explored(search.graph)
     return SearchResult(HOLDS, stats=stats)
 

@@ -3,10 +3,10 @@
 ``PackedStateTable`` is a ``check.states.StateTable`` (``intern``, ``[id]``,
 ``len``, ``memory_bytes``) over ``_native.PackedTable``: a state is stored as a
 frame vector (context id, program counter, the top frame's local data) and a
-data vector (global data, then signals), of value ids.  The *context* is
-everything else (the frames below, the top frame's routine and handler
-fields, robot, interrupts, ERRNO, status, tasks ...), which the fused step
-never changes: each distinct one gets an id here, with the two facts the
+data vector (global data), of value ids.  The *context* is everything else
+(the frames below, the top frame's routine and handler fields, signals,
+robot, interrupts, ERRNO, status, tasks ...), which the fused step never
+changes: each distinct one gets an id here, with the two facts the
 machine needs, whether it may step there (a plain running state, as
 ``fused_step.plain_successor_states`` tests) and whether the program has
 failed there (the run-time error search's predicate).
@@ -157,19 +157,19 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         frames = state[0]
         if frames:
             top = frames[-1]
-            context = (frames[:-1], top[0], top[3:], state[3:])
+            context = (frames[:-1], top[0], top[3:], state[2], state[3:])
             head = (top[1], top[2])
         else:
-            context = ((), -1, (), state[3:])
+            context = ((), -1, (), state[2], state[3:])
             head = (0, ())
         context_id = self._contexts.get(context)
         if context_id is None:
             context_id = self._add_context(context, state)
         frame = _HEAD.pack(context_id, head[0]) + self.value_ids(head[1])
-        return frame, self.value_ids(state[1]) + self.value_ids(state[2])
+        return frame, self.value_ids(state[1])
 
     def _add_context(self, context: tuple, state: State) -> int:
-        below, routine, handling, rest = context
+        below, routine, handling, io, rest = context
         interrupts = state[4]
         runs = routine >= 0 and state[7] == RUNNING and not state[10] and \
             not (interrupts[0] or interrupts[1] or interrupts[3]) and \
@@ -179,19 +179,18 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
             routine == projection.main
         flags = (RUNS if runs else 0) | (HAS_FAILED if state[7] == FAILED else 0) | \
             (MAIN_ALONE if alone else 0)
-        context_id = self.add_context(routine, flags)
+        context_id = self.add_context(routine, flags, self.value_ids(io))
         self._contexts[context] = context_id
         self._context_values.append(context)
         return context_id
 
     def _state(self, context_id: int, pc: int, locals_: tuple, data: tuple) -> State:
-        below, routine, handling, rest = self._context_values[context_id]
+        below, routine, handling, io, rest = self._context_values[context_id]
         if routine >= 0:
             frames = below + (_new_tuple(Frame, (routine, pc, locals_) + handling),)
         else:
             frames = below
-        n = self.store_length
-        return _new_tuple(State, (frames, pvector(data[:n]), pvector(data[n:])) + rest)
+        return _new_tuple(State, (frames, pvector(data), io) + rest)
 
     # ------------------------------------------- the machine's calls back
     def python_successors(self, state_id: int) -> list[tuple[int, int]]:
