@@ -8,7 +8,8 @@ On the counters family of bench/check.py (N free inputs, N counters modulo K, pr
 each size and engine, each in a fresh process:
 
 * "search" rows: the searches of a check, timed apart in CPU seconds (the machine may be
-  shared): the run-time error search (breadth-first, keeps the state graph), the
+  shared): the run-time error search (breadth-first, keeps the state graph; with the
+  native engine: how many states the step machine stepped and how many Python did), the
   property search over that graph (what ``rapidmc check`` runs), and the property search
   stepping the program itself (no graph); states per CPU second;
 * a "check cmd" row: the whole ``rapidmc check --engine E`` command (start-up, parsing,
@@ -57,11 +58,13 @@ def searches(inputs: int, modulo: int, engine: str) -> dict:
                              valuations=[valuation], **bound)
     searched = time.process_time()
     over_graph = check_property(model.system, buchi, valuation, explored=graphs[0], **bound)
+    table = graphs[0].states
+    steps = table.counts() if hasattr(table, "counts") else None
     graphs.clear()
     again = time.process_time()
     stepping = check_property(model.system, buchi, valuation, **bound)
     done = time.process_time()
-    return {"states": runtime.stats.product_states,
+    return {"states": runtime.stats.product_states, "steps": steps,
             "verdicts": [runtime.verdict, over_graph.verdict, stepping.verdict],
             "product states": [over_graph.stats.product_states, stepping.stats.product_states],
             "runtime error search": searched - started,
@@ -94,9 +97,12 @@ def search_rows(inputs: int, modulo: int, engine: str) -> list[str]:
                                   "property, stepping")):
         states = found["states"] if index == 0 else found["product states"][index - 1]
         seconds = found[what]
+        steps = found["steps"] if index == 0 else None
+        taken = f"; steps by the machine {steps['machine_steps']:,}, by Python " \
+            f"{steps['python_steps']:,}" if steps else ""
         rows.append(f"{'N=' + str(inputs):14} {engine:7} {what:22} {states:>10,} "
                     f"{seconds:>7.2f} {'':>7} {states / max(seconds, 1e-9):>10,.0f} {'':>8}"
-                    f"  {found['verdicts'][index]} ({found['engines'][index]})")
+                    f"  {found['verdicts'][index]} ({found['engines'][index]}{taken})")
     return rows
 
 

@@ -174,11 +174,11 @@ class GraphStore:
     def note_deadlocks_expanded(self) -> None:
         """``deadlocked`` as ``successor_ids`` would have filled it (after a native search)."""
         deadlocked, expanded = self.graph.deadlocked, self.expanded
-        at = expanded.find(1)
+        at = deadlocked.find(1)             # (deadlocks are few; expanded states many)
         while at >= 0:
-            if deadlocked[at]:
+            if expanded[at]:
                 self.deadlocked.add(at)
-            at = expanded.find(1, at + 1)
+            at = deadlocked.find(1, at + 1)
 
     def _evaluate(self, ids: Sequence[int]) -> None:
         """The valuations of ``ids``, unless kept with the graph or computed already."""
