@@ -1,0 +1,165 @@
+"""The compiled core's step machine (``check/_packed.c``, ``model/packed``) against the
+Python step it stands in for.
+
+Step by step: in every state the packed table stored during a check, the machine's
+successors (``PackedTable.step``), when it takes the step, are the states the model's
+``successor_states`` gives, in the same order; its compiled atoms value every state as
+the generated Python valuation does.  On the data-driven check cases (tests/check,
+among them the ``vm_*`` cases written for the machine's arithmetic, loops, dispatch,
+signals and errors), on generated programs and on the counters family.  The whole
+reports of both engines are compared in tests/test_native_engine.py; here a wrong step
+is caught where it happens, even when no verdict shows it.
+"""
+from __future__ import annotations
+
+import contextlib
+import io
+from array import array
+
+import pytest
+
+from rapidmc import api
+from rapidmc.check import find_reachable, native
+from rapidmc.cli import main
+from rapidmc.model.packed import table as packed
+from rapidmc.model.packed.bytecode import OP, ExpressionCode, Unsupported, atom_code
+
+from reduction_programs import properties, random_program
+from test_check_cases import verdict_cases
+from test_graph_reuse import COUNTERS, model_of
+
+needs_native = pytest.mark.skipif(not native.available(), reason="the native core is not built")
+
+STEPS_TAKEN: dict[str, int] = {}          # case -> states the machine stepped (see the end)
+
+
+def machine_agrees(table) -> int:
+    """Assert the machine's steps and atoms on every state of ``table``; the number of
+    states it stepped."""
+    system = table.system
+    stepped = 0
+    for state_id in range(len(table)):
+        found = table.step(state_id)
+        state = table[state_id]
+        if found is not None:
+            stepped += 1
+            by_machine = [table._state(*table.parts(frame, data)) for frame, data in found]
+            assert by_machine == system.successor_states(state), \
+                f"state {state_id}: the machine's successors differ from the Python step's"
+        for index, valuation in enumerate(table._valuations):
+            bits = table.evaluate(index, state_id) if table._valuation_codes[index] else None
+            if bits is not None:
+                assert bits == valuation(state), f"state {state_id}: atoms differ"
+    return stepped
+
+
+def tables_of(run) -> list:
+    """The packed tables made while ``run()`` runs."""
+    made = []
+    original = packed.packed_table
+
+    def spy(system):
+        table = original(system)
+        if table is not None:
+            made.append(table)
+        return table
+    packed.packed_table = spy
+    try:
+        run()
+    finally:
+        packed.packed_table = original
+    return made
+
+
+@needs_native
+@pytest.mark.parametrize("case", verdict_cases(), ids=lambda case: case.name)
+def test_the_machine_steps_as_python_does_on_the_check_cases(case, monkeypatch):
+    monkeypatch.chdir(case.folder)
+
+    def check():
+        with native.engine_used(native.NATIVE), contextlib.redirect_stdout(io.StringIO()), \
+                contextlib.redirect_stderr(io.StringIO()):
+            main(case.argv())
+    STEPS_TAKEN[case.name] = sum(machine_agrees(table) for table in tables_of(check))
+
+
+@needs_native
+@pytest.mark.parametrize("seed", range(20))
+def test_the_machine_steps_as_python_does_on_generated_programs(seed, tmp_path):
+    formula = properties(seed, seed % 2 == 1)[0]
+    model = model_of(random_program(seed, numeric_updates=seed % 3 == 0), formula, tmp_path,
+                     api.CheckOptions(max_states=5000))
+    _, _, valuation = model.jobs[0]
+    graphs: list = []
+    with native.engine_used(native.NATIVE):
+        find_reachable(model.system, model.system.failed, max_states=5000,
+                       explored=graphs.append, valuations=[valuation])
+    if graphs and isinstance(graphs[0].states, native._native.PackedTable):
+        STEPS_TAKEN[f"random {seed}"] = machine_agrees(graphs[0].states)
+
+
+@needs_native
+def test_the_counters_are_stepped_by_the_machine_alone_but_for_aliasio(tmp_path):
+    """The benchmark's family: every state but the AliasIO calls' is the machine's, and the
+    graph it keeps is the Python engine's, row for row and value for value."""
+    model = model_of(COUNTERS, 'P: G ("c0 < 3" & "c1 < 3")', tmp_path)
+    _, _, valuation = model.jobs[0]
+    graphs = {}
+    for engine in native.ENGINES:
+        found: list = []
+        with native.engine_used(engine):
+            result = find_reachable(model.system, model.system.failed, explored=found.append,
+                                    valuations=[valuation])
+        assert result.verdict == "HOLDS"
+        graphs[engine] = found[0]
+    table = graphs[native.NATIVE].states
+    counts = table.counts()
+    assert counts["python_steps"] == 2 and counts["machine_steps"] == len(table) - 2
+    for graph in (graphs[native.NATIVE], graphs[native.PYTHON]):
+        graph.rows = (graph.starts.tolist(), graph.targets.tolist(), bytes(graph.deadlocked),
+                      list(graph.valuations[valuation]))
+    assert graphs[native.NATIVE].rows == graphs[native.PYTHON].rows
+    assert [table[i] for i in range(len(table))] == \
+        [graphs[native.PYTHON].states[i] for i in range(len(table))]
+    assert machine_agrees(table) == len(table) - 2
+
+
+def test_expression_sources_compile_to_the_machines_code():
+    """The sources ``semantics.expressions`` writes, and what falls back to Python."""
+    ids: dict = {}
+
+    def value_id(value):
+        return ids.setdefault((type(value), value), len(ids))
+
+    code = ExpressionCode(value_id, {"_k1": 4.0}, store_length=3)
+    assert code.compile("_int_mod(_to_num(store[2] + _k1), _k1)") == [
+        OP["LOAD_STORE"], 2, OP["CONST"], 0, OP["ADD"], OP["TO_NUM"], OP["CONST"], 0,
+        OP["INT_MOD"]]
+    assert code.compile("(_read(cx, store[0]) == _k1)") == [
+        OP["LOAD_STORE"], 0, OP["READ_DYN"], OP["CONST"], 0, OP["EQ"]]
+    assert code.compile("bool((not locals_[1]) | (-store[1] < _k1))")[-1] == OP["OR"]
+    for source in ("_concat(store[0], store[1])", "_k1(store[0])", "store[9]", "store[0].x",
+                   "store[0] if store[1] else store[2]", "unknown_name"):
+        with pytest.raises(Unsupported):
+            code.compile(source)
+
+
+def test_atoms_compile_each_between_its_begin_and_end():
+    ids: dict = {}
+    code = atom_code([(1, "(store[0] < _k)", {"_k": 4.0}), (4, "store[1]", {})],
+                     lambda value: ids.setdefault(value, len(ids)), store_length=2)
+    assert code[0] == OP["ATOM_BEGIN"] and code[code[1]] == OP["ATOM_BEGIN"]
+    assert code[code[1] - 2:code[1]] == array("i", [OP["ATOM_END"], 0])
+    assert code[-3:] == array("i", [OP["ATOM_END"], 2, OP["END"]])
+    assert atom_code([(1, "locals_[0]", {})], lambda value: 0, 1) is None   # routine data
+
+
+@needs_native
+def test_the_machine_took_steps_in_most_check_cases():
+    """(Runs last in this file.) The comparisons above mean something only if the machine
+    stepped: it takes steps in most check cases and generated programs."""
+    if len(STEPS_TAKEN) < 20:
+        pytest.skip("run with the whole file")
+    stepped = [name for name, steps in STEPS_TAKEN.items() if steps]
+    assert len(stepped) >= len(STEPS_TAKEN) // 2, sorted(set(STEPS_TAKEN) - set(stepped))
+    assert {"vm_num_float32", "vm_for_loops", "vm_signal_reads", "vm_bool_string"} <= set(stepped)
