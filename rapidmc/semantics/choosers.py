@@ -14,6 +14,7 @@ from typing import Optional
 
 from .machine import Machine
 from .program import Program
+from .values import signal_value
 
 
 class Chooser:
@@ -100,7 +101,8 @@ class CheckConfig:
             if signal.kind == "DI":
                 domain = (0.0, 1.0)
             elif signal.key in domains:
-                domain = tuple(domains[signal.key])
+                domain = tuple(dict.fromkeys(signal_value(signal.kind, value)
+                                             for value in domains[signal.key]))
             else:
                 continue
             if observed is None or signal.index in observed:

@@ -24,6 +24,7 @@ from typing import Optional
 from pyrsistent import pvector
 
 from .errors import errno_name
+from .values import signal_value
 from .machine import Machine
 from .program import Program
 from .state import ENDED, FAILED, RUNNING, STOPPED, Frame, Interrupts, State, Transition
@@ -57,7 +58,7 @@ def start_state(program: Program, io_values: Optional[dict] = None) -> State:
     for key, value in (io_values or {}).items():
         signal = program.signal(key)
         if signal is not None:
-            io[signal.index] = float(value)
+            io[signal.index] = signal_value(signal.kind, value)
     main = program.routines[program.entry]
     robot = (HOME_TARGET, _predefined(program, "TOOL0"), _predefined(program, "WOBJ0"),
              HOME_JOINTS)

@@ -66,6 +66,17 @@ def to_num(x: float | int) -> float:
     return result
 
 
+def signal_value(kind: str, value: float) -> float:
+    """A value given for a signal of ``kind`` (an input domain, ``--io``) as the signal holds
+    it: analog values are nums (single precision, as AInput returns them), others as given."""
+    if kind in ("AI", "AO"):
+        try:
+            return to_num(float(value))
+        except RapidError:
+            return float(value)          # (beyond num: reported where it is read)
+    return float(value)
+
+
 def to_dnum(x: float | int) -> float:
     """``x`` as a dnum (double); infinities and NaN raise ERR_NUM_LIMIT."""
     try:
