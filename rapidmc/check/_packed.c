@@ -129,6 +129,7 @@ typedef struct {
     Resets global_resets, main_resets;
     /* (routine, pc) pairs run for the first time by steps the machine took */
     Int32Vector newly_executed;
+    struct Scratch *scratch;    /* the machine's scratch space for ``successor_ids`` */
     /* (frame id, pc) + 1 -> frame id: the frames a step reaches without changing locals */
     uint64_t frame_cache_key[FRAME_CACHE];
     int32_t frame_cache_value[FRAME_CACHE];
@@ -950,10 +951,11 @@ static int add_successor(Successors *found, int32_t frame, int32_t data)
     return 0;
 }
 
-typedef struct {            /* scratch space of the step machine */
+typedef struct Scratch {     /* scratch space of the step machine */
     uint32_t *frame, *data;
     Py_ssize_t frame_capacity, data_capacity;
     Int32Vector ran;            /* pcs whose blocks ran in this state's step, not yet known */
+    Successors found;           /* (for ``successor_ids``) */
     uint32_t *chosen_epoch;
     int32_t *chosen_value;
     uint32_t epoch;
@@ -979,6 +981,8 @@ static void scratch_free(Scratch *scratch)
     PyMem_Free(scratch->chosen_epoch);
     PyMem_Free(scratch->chosen_value);
     vector32_free(&scratch->ran);
+    PyMem_Free(scratch->found.frames);
+    PyMem_Free(scratch->found.data);
 }
 
 /* set ``items[slot] = id`` for the (slot, id) pairs; whether one changed */
@@ -1253,6 +1257,11 @@ static void free_program(PackedTable *self)
     PyMem_Free(self->global_resets.pairs);
     PyMem_Free(self->main_resets.offsets);
     PyMem_Free(self->main_resets.pairs);
+    if (self->scratch != NULL) {
+        scratch_free(self->scratch);
+        PyMem_Free(self->scratch);
+        self->scratch = NULL;
+    }
     memset(&self->global_resets, 0, sizeof(Resets));
     memset(&self->main_resets, 0, sizeof(Resets));
     self->projecting = 0;
@@ -1627,6 +1636,76 @@ static PyObject *PackedTable_step(PackedTable *self, PyObject *argument)
     return result;
 }
 
+/* ``successor_ids(id, valuation) -> (ids, bits) or None``: the machine's step of a stored
+ * state with its successors interned: their ids in model order, and the valuation's bits
+ * of each new one in id order (None when the valuation is not compiled, -1); None when
+ * the machine leaves the state to Python (``check.store.ModelStore``'s fast path) */
+static PyObject *PackedTable_successor_ids(PackedTable *self, PyObject *args)
+{
+    Py_ssize_t id, valuation;
+    if (!PyArg_ParseTuple(args, "nn", &id, &valuation))
+        return NULL;
+    if (id < 0 || id >= self->count || valuation >= self->valuation_count)
+        return PyErr_Format(PyExc_IndexError, "no such state or valuation");
+    if (ensure_index(self) < 0)
+        return NULL;
+    if (self->scratch == NULL) {
+        self->scratch = PyMem_Calloc(1, sizeof(Scratch));
+        if (self->scratch == NULL)
+            return PyErr_NoMemory();
+        if (scratch_init(self->scratch, self) < 0) {
+            PyMem_Free(self->scratch);
+            self->scratch = NULL;
+            return NULL;
+        }
+    }
+    Scratch *scratch = self->scratch;
+    Successors *found = &scratch->found;
+    PyObject *ids = NULL, *bits = NULL, *result = NULL;
+    int outcome = machine_successors(self, id, scratch, found);
+    self->newly_executed.length = 0;
+    if (outcome < 0)
+        goto done;
+    if (outcome != VM_DONE) {
+        self->python_steps++;
+        result = Py_NewRef(Py_None);
+        goto done;
+    }
+    self->machine_steps++;
+    ids = PyList_New(found->count);
+    bits = valuation >= 0 ? PyList_New(0) : Py_NewRef(Py_None);
+    if (ids == NULL || bits == NULL)
+        goto done;
+    for (Py_ssize_t i = 0; i < found->count; i++) {
+        int is_new = 0;
+        Py_ssize_t successor = intern_key(self, found->frames[i], found->data[i], 1, &is_new);
+        if (successor < 0)
+            goto done;
+        PyObject *number = PyLong_FromSsize_t(successor);
+        if (number == NULL)
+            goto done;
+        PyList_SET_ITEM(ids, i, number);
+        if (is_new && valuation >= 0) {
+            uint64_t value = 0;
+            int valued = machine_valuation(self, valuation, successor, scratch, &value);
+            if (valued < 0)
+                goto done;
+            PyObject *item = valued == VM_DONE ? PyLong_FromUnsignedLongLong(value) :
+                Py_NewRef(Py_None);          /* (None: Python values this one) */
+            if (item == NULL || PyList_Append(bits, item) < 0) {
+                Py_XDECREF(item);
+                goto done;
+            }
+            Py_DECREF(item);
+        }
+    }
+    result = PyTuple_Pack(2, ids, bits);
+done:
+    Py_XDECREF(ids);
+    Py_XDECREF(bits);
+    return result;
+}
+
 /* ``evaluate(valuation index, id) -> int or None``: compiled atoms on a stored state */
 static PyObject *PackedTable_evaluate(PackedTable *self, PyObject *args)
 {
@@ -1702,6 +1781,9 @@ static PyMethodDef PackedTable_methods[] = {
      "set_program(store_length, io_length, routines, lazy, valuations): the compiled code"},
     {"step", (PyCFunction)PackedTable_step, METH_O,
      "step(id) -> [(frame id, data id)] or None: the step machine on a stored state"},
+    {"successor_ids", (PyCFunction)PackedTable_successor_ids, METH_VARARGS,
+     "successor_ids(id, valuation) -> (ids, bits of the new ones) or None: the machine's "
+     "step with the successors interned"},
     {"evaluate", (PyCFunction)PackedTable_evaluate, METH_VARARGS,
      "evaluate(valuation, id) -> bits or None: compiled atoms on a stored state"},
     {"release_index", (PyCFunction)PackedTable_release_index, METH_NOARGS,

@@ -43,8 +43,12 @@ class ModelStore:
                  keep_new: int = FRESH_STATES):
         self.system = system
         self.valuation = valuation
-        self.states = state_table(system)
+        self.states = state_table(system, packed=True)
         self._known = None if self.states.collapsed else self.states.known_ids.get
+        # a packed table's step machine (``model.packed``): successors as ids, in C
+        self._machine = getattr(self.states, "successor_ids", None)
+        self._machine_valuation = self.states.valuation_index(valuation) \
+            if self._machine is not None else -1
         self.valuations = array(VALUATION_TYPES[0])    # the narrowest that holds them
         self.deadlocked: set[int] = set()
         self._successor_cache: dict[int, tuple[int, ...]] = {}
@@ -100,6 +104,10 @@ class ModelStore:
             if cached is not None:
                 self._hits += 1
                 return cached
+        if self._machine is not None:
+            stepped = self._machine(state_id, self._machine_valuation)
+            if stepped is not None:
+                return self._machine_stepped(state_id, *stepped)
         state = self._fresh.pop(state_id, None)
         if state is None:
             state = self.states[state_id]
@@ -131,6 +139,30 @@ class ModelStore:
                 result = tuple(ids)
             else:
                 result = tuple(dict.fromkeys(ids))
+        return self._expanded(state_id, result)
+
+    def _machine_stepped(self, state_id: int, ids: list[int], bits) -> tuple[int, ...]:
+        """``successor_ids`` from the step machine's ids and the new states' valuations
+        (None where its atoms gave up, or all of them when they are not compiled)."""
+        first_new = len(self.valuations)
+        new_ids = range(first_new, len(self.states))
+        if bits is None:
+            bits = [None] * len(new_ids)
+        for new_id, value in zip(new_ids, bits):
+            if value is None:
+                value = self.valuation(self.states[new_id])
+            try:
+                self.valuations.append(value)
+            except OverflowError:
+                self.valuations = wider(self.valuations, value)
+                self.valuations.append(value)
+        result = tuple(ids) if len(ids) == 1 or len(ids) == 2 and ids[0] != ids[1] \
+            else tuple(dict.fromkeys(ids))
+        return self._expanded(state_id, result)
+
+    def _expanded(self, state_id: int, result: tuple[int, ...]) -> tuple[int, ...]:
+        """Book-keeping after a state's successors were found: the cache and its review."""
+        cache = self._successor_cache
         if self._caching:
             if len(cache) >= SUCCESSOR_CACHE_SIZE:
                 # Start afresh rather than evict one by one: deleting the oldest
