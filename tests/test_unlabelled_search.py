@@ -16,7 +16,7 @@ from __future__ import annotations
 import pytest
 
 from rapidmc import api
-from rapidmc.check import find_reachable
+from rapidmc.check import find_reachable, native
 from rapidmc.findings.coverage import StatementWatch
 from rapidmc.findings.explored import ExploredFacts
 from rapidmc.model.rapid_system import RapidSystem
@@ -94,12 +94,15 @@ class CountingSteps:
         system.successors, system.successor_states = labelled, unlabelled
 
 
-def watched_search(text: str, formula: str, tmp_path):
+def watched_search(text: str, formula: str, tmp_path, engine: str = native.PYTHON):
+    """The run-time error search with the check's watch, on ``engine`` (the Python engine
+    by default: the counts below are of its Python loop)."""
     model = model_of(text, formula, tmp_path)
     facts = ExploredFacts(model.program, [p.formula for p in model.properties], model.atoms)
     steps = CountingSteps(model.system)
-    result = find_reachable(model.system, model.system.failed, observe=api._StuckWatch(
-        model.system, facts))
+    with native.engine_used(engine):
+        result = find_reachable(model.system, model.system.failed, observe=api._StuckWatch(
+            model.system, facts))
     facts.finish(model.system, result)
     return result, facts, steps
 
@@ -117,12 +120,26 @@ def test_a_line_never_run_keeps_the_labels_to_the_end(tmp_path):
     assert steps.unlabelled == 0 and steps.labelled == result.stats.model_states
 
 
-def test_a_search_without_observer_builds_no_labels(tmp_path):
+@pytest.mark.skipif(not native.available(), reason="the native core is not built")
+def test_the_step_machine_names_the_lines_it_runs(tmp_path):
+    """With the compiled core's step machine, coverage comes from the lines the machine
+    says it ran: the same warning, with next to no Python step (labelled or not)."""
+    result, facts, steps = watched_search(DEAD_CODE, 'P: G "x < 3"', tmp_path, native.NATIVE)
+    assert result.verdict == "HOLDS" and [d.span.line for d in facts.warnings()] == [7]
+    assert steps.labelled + steps.unlabelled < result.stats.model_states // 2
+
+
+@pytest.mark.parametrize("engine", native.ENGINES if native.available() else [native.PYTHON])
+def test_a_search_without_observer_builds_no_labels(engine, tmp_path):
     model = model_of(COUNTERS, 'P: G "c0 < 3"', tmp_path)
     steps = CountingSteps(model.system)
-    result = find_reachable(model.system, model.system.failed)
+    with native.engine_used(engine):
+        result = find_reachable(model.system, model.system.failed)
     assert result.verdict == "HOLDS" and steps.labelled == 0
-    assert steps.unlabelled == result.stats.model_states
+    if engine == native.PYTHON:
+        assert steps.unlabelled == result.stats.model_states
+    else:                       # the machine steps all but the AliasIO calls
+        assert steps.unlabelled == 2
 
 
 def test_a_cleared_watch_wants_labels_again():

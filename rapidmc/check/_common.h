@@ -40,6 +40,15 @@ static inline void *reserve(void *items, Py_ssize_t *capacity, size_t size, Py_s
     return moved;
 }
 
+/* ``capacity`` hash slots, every one EMPTY; NULL when out of memory */
+static inline int32_t *new_slots(Py_ssize_t capacity)
+{
+    int32_t *slots = PyMem_Malloc(capacity * sizeof(int32_t));
+    if (slots == NULL) {
+        PyErr_NoMemory();
+        return NULL;
+    }
+
 typedef struct {          /* a growable array of numbers below 2**31 */
     int32_t *items;
     Py_ssize_t length, capacity;

@@ -47,13 +47,6 @@ typedef struct {
     uint64_t mask;
 } Table;
 
-static int32_t *new_slots(Py_ssize_t capacity)
-{
-    int32_t *slots = PyMem_Malloc(capacity * sizeof(int32_t));
-    if (slots == NULL) {
-        PyErr_NoMemory();
-        return NULL;
-    }
     memset(slots, 0xff, capacity * sizeof(int32_t));     /* every slot EMPTY */
     return slots;
 }

@@ -164,13 +164,13 @@ static inline int same_items(const uint32_t *a, const uint32_t *b, Py_ssize_t le
 
 static int vt_init(VectorTable *table)
 {
-    table->slots = PyMem_Malloc(FIRST_CAPACITY * sizeof(int32_t));
+    table->slots = new_slots(FIRST_CAPACITY);
     table->offsets = PyMem_Malloc(256 * sizeof(int64_t));
     if (table->slots == NULL || table->offsets == NULL) {
-        PyErr_NoMemory();
+        if (!PyErr_Occurred())
+            PyErr_NoMemory();
         return -1;
     }
-    memset(table->slots, 0xff, FIRST_CAPACITY * sizeof(int32_t));
     table->mask = FIRST_CAPACITY - 1;
     table->offsets_capacity = 256;
     table->offsets[0] = 0;
@@ -194,12 +194,9 @@ static inline const uint32_t *vt_items(const VectorTable *table, int32_t id, Py_
 static int vt_grow(VectorTable *table)
 {
     uint64_t capacity = (table->mask + 1) * 2;
-    int32_t *slots = PyMem_Malloc(capacity * sizeof(int32_t));
-    if (slots == NULL) {
-        PyErr_NoMemory();
+    int32_t *slots = new_slots(capacity);
+    if (slots == NULL)
         return -1;
-    }
-    memset(slots, 0xff, capacity * sizeof(int32_t));
     for (Py_ssize_t id = 0; id < table->count; id++) {
         uint64_t position = mix64(table->hashes[id]) & (capacity - 1);
         while (slots[position] != EMPTY)
@@ -273,12 +270,9 @@ static int vt_index(VectorTable *table)
     uint64_t capacity = FIRST_CAPACITY;
     while ((uint64_t)table->count * 2 > capacity)
         capacity *= 2;
-    table->slots = PyMem_Malloc(capacity * sizeof(int32_t));
-    if (table->slots == NULL) {
-        PyErr_NoMemory();
+    table->slots = new_slots(capacity);
+    if (table->slots == NULL)
         return -1;
-    }
-    memset(table->slots, 0xff, capacity * sizeof(int32_t));
     for (Py_ssize_t id = 0; id < table->count; id++) {
         uint64_t position = mix64(table->hashes[id]) & (capacity - 1);
         while (table->slots[position] != EMPTY)
@@ -321,12 +315,9 @@ static int same_number(PackedTable *self, int32_t id, int tag, double d)
 static int grow_values(PackedTable *self)
 {
     uint64_t capacity = (self->value_mask + 1) * 2;
-    int32_t *slots = PyMem_Malloc(capacity * sizeof(int32_t));
-    if (slots == NULL) {
-        PyErr_NoMemory();
+    int32_t *slots = new_slots(capacity);
+    if (slots == NULL)
         return -1;
-    }
-    memset(slots, 0xff, capacity * sizeof(int32_t));
     for (Py_ssize_t id = 0; id < self->values; id++) {
         if (self->value_tag[id] == T_OBJ)
             continue;
@@ -448,12 +439,9 @@ static PyObject *value_object(PackedTable *self, int32_t id)
 static int grow_states(PackedTable *self)
 {
     uint64_t capacity = (self->mask + 1) * 2;
-    int32_t *slots = PyMem_Malloc(capacity * sizeof(int32_t));
-    if (slots == NULL) {
-        PyErr_NoMemory();
+    int32_t *slots = new_slots(capacity);
+    if (slots == NULL)
         return -1;
-    }
-    memset(slots, 0xff, capacity * sizeof(int32_t));
     for (Py_ssize_t id = 0; id < self->count; id++) {
         uint64_t position = mix64((uint64_t)self->keys[id]) & (capacity - 1);
         while (slots[position] != EMPTY)
@@ -1196,16 +1184,14 @@ static PyObject *PackedTable_new(PyTypeObject *type, PyObject *args, PyObject *k
     if (self == NULL)
         return NULL;
     self->object_ids = PyDict_New();
-    self->slots = PyMem_Malloc(FIRST_CAPACITY * sizeof(int32_t));
-    self->value_slots = PyMem_Malloc(FIRST_CAPACITY * sizeof(int32_t));
+    self->slots = new_slots(FIRST_CAPACITY);
+    self->value_slots = new_slots(FIRST_CAPACITY);
     if (self->object_ids == NULL || self->slots == NULL || self->value_slots == NULL ||
             vt_init(&self->frames) < 0 || vt_init(&self->data) < 0 ||
             vt_init(&self->signals) < 0) {
         Py_DECREF(self);
         return PyErr_Occurred() ? NULL : PyErr_NoMemory();
     }
-    memset(self->slots, 0xff, FIRST_CAPACITY * sizeof(int32_t));
-    memset(self->value_slots, 0xff, FIRST_CAPACITY * sizeof(int32_t));
     self->mask = self->value_mask = FIRST_CAPACITY - 1;
     return (PyObject *)self;
 }
