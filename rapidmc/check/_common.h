@@ -48,6 +48,9 @@ static inline int32_t *new_slots(Py_ssize_t capacity)
         PyErr_NoMemory();
         return NULL;
     }
+    memset(slots, 0xff, capacity * sizeof(int32_t));     /* every slot EMPTY */
+    return slots;
+}
 
 typedef struct {          /* a growable array of numbers below 2**31 */
     int32_t *items;

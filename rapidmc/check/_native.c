@@ -47,10 +47,6 @@ typedef struct {
     uint64_t mask;
 } Table;
 
-    memset(slots, 0xff, capacity * sizeof(int32_t));     /* every slot EMPTY */
-    return slots;
-}
-
 static PyObject *Table_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
 {
     Table *self = (Table *)type->tp_alloc(type, 0);
