@@ -940,8 +940,11 @@ static int add_successor(Successors *found, int32_t frame, int32_t data)
 }
 
 typedef struct Scratch {     /* scratch space of the step machine */
-    uint32_t *frame, *data;
+    uint32_t *frame, *data;     /* the vectors a run works on */
     Py_ssize_t frame_capacity, data_capacity;
+    uint32_t *source;           /* the stepped state's vectors, copied out of the tables
+                                 * (whose arenas move when a successor is interned) */
+    Py_ssize_t source_capacity;
     Int32Vector ran;            /* pcs whose blocks ran in this state's step, not yet known */
     Successors found;           /* (for ``successor_ids``) */
     uint32_t *chosen_epoch;
@@ -966,6 +969,7 @@ static void scratch_free(Scratch *scratch)
 {
     PyMem_Free(scratch->frame);
     PyMem_Free(scratch->data);
+    PyMem_Free(scratch->source);
     PyMem_Free(scratch->chosen_epoch);
     PyMem_Free(scratch->chosen_value);
     vector32_free(&scratch->ran);
@@ -1060,20 +1064,28 @@ static int machine_step(PackedTable *table, Py_ssize_t id, Scratch *scratch,
     int64_t key = table->keys[id];
     int32_t frame_id = (int32_t)(key >> 32), data_id = (int32_t)(key & 0xffffffff);
     Py_ssize_t frame_length, data_length;
-    const uint32_t *frame = vt_items(&table->frames, frame_id, &frame_length);
-    const uint32_t *data = vt_items(&table->data, data_id, &data_length);
-    uint32_t context = frame[0];
+    const uint32_t *stored_frame = vt_items(&table->frames, frame_id, &frame_length);
+    const uint32_t *stored_data = vt_items(&table->data, data_id, &data_length);
+    uint32_t context = stored_frame[0];
     if (frame_length < 2 || !(table->context_runs[context] & CONTEXT_RUNS))
         return VM_UNSUPPORTED;
     int32_t routine_index = table->context_routine[context];
     if (routine_index < 0 || routine_index >= table->routine_count)
         return VM_UNSUPPORTED;
     Routine *routine = &table->routines[routine_index];
-    int32_t start_pc = (int32_t)frame[1];
+    int32_t start_pc = (int32_t)stored_frame[1];
     if (routine->code == NULL || start_pc < 0 || start_pc >= routine->length ||
             routine->block_start[start_pc] < 0)
         return VM_UNSUPPORTED;
     *ran_in = routine;
+    uint32_t *source = reserve(scratch->source, &scratch->source_capacity, sizeof(uint32_t),
+                               frame_length + data_length + 1);
+    if (source == NULL)
+        return -1;
+    scratch->source = source;
+    memcpy(source, stored_frame, frame_length * sizeof(uint32_t));
+    memcpy(source + frame_length, stored_data, data_length * sizeof(uint32_t));
+    const uint32_t *frame = source, *data = source + frame_length;
     uint32_t *work_frame = reserve(scratch->frame, &scratch->frame_capacity, sizeof(uint32_t),
                                    frame_length);
     if (work_frame == NULL)
