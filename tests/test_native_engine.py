@@ -138,6 +138,20 @@ def test_bounded_searches_stop_at_the_same_state(max_states, tmp_path):
 
 
 @needs_native
+def test_a_property_of_more_than_64_atoms_reports_the_same(tmp_path, monkeypatch):
+    """Valuations beyond 64 bits (the compiled core keeps 64 per state): the native engine
+    leaves such a search's loop to Python, with the same report."""
+    (tmp_path / "prog.mod").write_text(COUNTERS)
+    atoms = " | ".join(f'"c0 < {k}"' for k in range(1, 71))
+    (tmp_path / "props.ltl").write_text(f"wide: G ({atoms})\nnarrow: G \"c0 < 5\"\n")
+    monkeypatch.chdir(tmp_path)
+    document = assert_same_reports(["prog.mod", "--ltl", "props.ltl"], monkeypatch)
+    assert {entry["name"]: entry["verdict"] for entry in document["properties"]} == \
+        {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS", "wide": "HOLDS",
+         "narrow": "HOLDS"}
+
+
+@needs_native
 def test_the_native_table_gives_every_state_the_python_tables_id(tmp_path):
     model = model_of(COUNTERS, 'P: G "c0 < 3"', tmp_path)
     graphs = []

@@ -207,13 +207,17 @@ class _BreadthFirst:
         frontier = 0
         native = engine_of(table) == NATIVE
         # a packed table's loop also serves an observer that wants labels for a while (it
-        # names the lines its steps ran: ``note_spans``)
-        packed = native and hasattr(table, "python_successors") and \
-            (unlabelled or labelled_while and hasattr(observe, "note_spans"))
+        # names the lines its steps ran: ``note_spans``); it keeps valuations of 64 atoms
+        # at most
+        is_packed = hasattr(table, "python_successors")
+        packed = native and is_packed and \
+            (unlabelled or labelled_while and hasattr(observe, "note_spans")) and \
+            all(getattr(valuation, "atom_count", 0) <= 64 for valuation in
+                (self.graph.valuations if self.graph is not None else ()))
         while frontier < stored and budget.reason is None:
             if packed:                    # the same loop in the compiled core from here on
                 return self._expand_packed(frontier, labels_wanted=not unlabelled)
-            if unlabelled and native:
+            if unlabelled and native and not is_packed:
                 return self._expand_natively(frontier, record)
             state = table[frontier]
             if unlabelled:

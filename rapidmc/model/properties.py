@@ -258,6 +258,14 @@ class AtomCompiler:
 
     def valuation(self, atoms: tuple[str, ...], spans: dict,
                   memo: bool = True) -> Callable[[State], int]:
+        """``fn(state) -> int``: bit i set when atom i holds (``fn.atom_count``: how many
+        atoms; see ``_valuation``)."""
+        valuation = self._valuation(atoms, spans, memo)
+        valuation.atom_count = len(atoms)
+        return valuation
+
+    def _valuation(self, atoms: tuple[str, ...], spans: dict,
+                   memo: bool = True) -> Callable[[State], int]:
         """``fn(state) -> int``: bit i set when atom i holds.
 
         The atoms that read only global data and signals (most do) and have a
