@@ -43,8 +43,6 @@ from .diagnostics.quoting import one_line, quoted
 from .findings.assumptions import assumptions, for_verdict
 from .findings.explored import ExploredFacts
 from .findings.fixed_readings import fixed_readings
-from .findings.lint.marks import flow_sinks
-from .findings.lint.marks import instrument as instrument_flows
 from .load.backup import link_options, load_tasks, resolve_program_files
 from .load.shared_data import pers_warnings
 from .ltl import read_hoa, to_buchi
@@ -112,6 +110,7 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
     parsed = _parse_files(files.modules)
     options = link_options(files)
     if flows:
+        from .findings.lint.marks import instrument as instrument_flows  # (only for --flows)
         marks = instrument_flows(parsed)
         parsed, options["flow_marks"] = marks.program, marks
     program = build(parsed, entry=files.main_entry if entry == "main" else entry,
@@ -283,8 +282,17 @@ def _findings(model: Model, results: list[PropertyResult],
     return list(model.program.load_notes) + list(model.plan.notes) + [
         assumed.note() for assumed in model.assumed] + sorted(
         fixed_readings(model.program) + facts.warnings()
-        + flow_sinks(model.program, results, model.describer),
+        + _flow_sinks(model, results),
         key=lambda d: (d.span.file, d.span.line, d.span.column))
+
+
+def _flow_sinks(model: Model, results) -> list[Diagnostic]:
+    """``findings.lint.marks.flow_sinks`` of a check with ``--flows`` (the taint analysis is
+    loaded only then)."""
+    if model.program.options.get("flow_marks") is None:
+        return []
+    from .findings.lint.marks import flow_sinks
+    return flow_sinks(model.program, results, model.describer)
 
 
 class _Searches:
