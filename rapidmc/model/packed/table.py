@@ -32,6 +32,7 @@ from typing import Callable, Hashable, Optional, Sequence
 from pyrsistent import pvector
 
 from ...check.native import _native
+from ...semantics.plain_step import is_plain
 from ...semantics.state import FAILED, RUNNING, Frame, State
 from ..reduction.projection import Projection
 from .bytecode import RoutineCode, atom_code
@@ -170,9 +171,10 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
 
     def _add_context(self, context: tuple, state: State) -> int:
         below, routine, handling, io, rest = context
-        interrupts = state[4]
-        runs = routine >= 0 and state[7] == RUNNING and not state[10] and \
-            not (interrupts[0] or interrupts[1] or interrupts[3]) and \
+        # where the fused step runs (``plain_successor_states``): a running plain state
+        # whose frame is not in a handler nor counting RETRYs (``fused_step._entry``)
+        runs = routine >= 0 and state[7] == RUNNING and \
+            is_plain(self.program, state, self.system.config) and \
             not handling[0] and not handling[2]
         projection = self.system.project_fused
         alone = projection is not None and len(state[0]) == 1 and not state[10] and \
