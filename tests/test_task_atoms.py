@@ -1,0 +1,83 @@
+"""Atoms on a controller of several tasks: no unqualified name is resolved silently.
+
+The backup tests/task_backups/qualified/backup has three tasks: T_ROB1 and T_ROB2 each
+declare ``VAR num slot`` and ``PROC MoveToSlot`` (and ``main``); T_LOG alone declares
+``seen``.  The verdicts of every kind of qualified atom are pinned by that case
+(tests/test_task_backups.py); here: the errors for names and places that need a task.
+"""
+from __future__ import annotations
+
+import contextlib
+import io
+from pathlib import Path
+
+import pytest
+
+from rapidmc.cli import main
+
+BACKUP = Path(__file__).resolve().parent / "task_backups" / "qualified" / "backup"
+
+
+def run(tmp_path: Path, formula: str) -> tuple[int, str]:
+    props = tmp_path / "props.ltl"
+    props.write_text(f"p: {formula}\n")
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        code = main(["check", str(BACKUP), "--ltl", str(props), "--quiet"])
+    return code, out.getvalue() + err.getvalue()
+
+
+@pytest.mark.parametrize("formula, name, candidates", [
+    ('G "slot = 1"', "slot", ["T_ROB1 (Rob1.mod:4)", "T_ROB2 (Rob2.mod:3)"]),
+    ('G ("T_LOG.seen = 0" | "seen > slot")', "slot", ["T_ROB1.slot or T_ROB2.slot"]),
+    ('G !"main.flag"', "main", ["T_ROB1 (Rob1.mod:5)", "T_ROB2 (Rob2.mod:4)",
+                                "T_ROB1.main or T_ROB2.main"]),
+])
+def test_a_name_several_tasks_declare_is_an_error_with_a_caret(tmp_path, formula, name,
+                                                               candidates):
+    code, text = run(tmp_path, formula)
+    assert code == 2, text
+    assert f"'{name}' is declared by several tasks" in text and "[RMC406]" in text, text
+    for candidate in candidates:
+        assert candidate in text, text
+    line = f"p: {formula}"
+    column = line.index(name) + 1
+    assert f"props.ltl:1:{column}: error:" in text, text
+    assert "\n" + " " * (column - 1 + 4) + "^" in text or f"{line}\n" in text, text
+
+
+def test_the_main_of_a_task_named_alone_is_not_ambiguous_for_the_logger(tmp_path):
+    """T_LOG's entry is log_main: ``main`` is T_ROB1's and T_ROB2's only."""
+    code, text = run(tmp_path, 'G !"main.flag"')
+    assert "T_LOG (" not in text, text
+
+
+@pytest.mark.parametrize("atom", ['InRoutine(\\"MoveToSlot\\")', "AtLine(9)",
+                                  'AtLabel(\\"back\\")'])
+def test_a_location_atom_without_a_task_is_an_error(tmp_path, atom):
+    code, text = run(tmp_path, f'G !"{atom}"')
+    assert code == 2, text
+    assert "needs a task on a controller of several tasks (T_ROB1, T_ROB2, T_LOG)" in text
+    assert "[RMC406]" in text and "name the task first, e.g." in text, text
+
+
+def test_a_name_one_task_declares_works_unqualified(tmp_path):
+    code, text = run(tmp_path, 'F "seen = 1"')
+    assert code == 0 and "p: HOLDS" in text, text
+
+
+def test_shared_pers_data_keeps_its_plain_name(tmp_path):
+    """``go`` is declared by T_ROB1 and T_ROB2: one persistent, not two candidates."""
+    code, text = run(tmp_path, 'G ("T_ROB1.go" <-> go)')
+    assert code == 0 and "p: HOLDS" in text, text
+
+
+def test_a_task_has_no_routine_of_another(tmp_path):
+    code, text = run(tmp_path, 'G !"InRoutine(T_LOG, \\"MoveToSlot\\")"')
+    assert code == 2 and "task T_LOG has no routine named 'MoveToSlot'" in text, text
+
+
+def test_at_target_with_a_task_says_per_robot_positions_are_not_modelled(tmp_path):
+    code, text = run(tmp_path, 'G !"AtTarget(T_ROB2, [[0,0,0],[1,0,0,0],[0,0,0,0],'
+                     '[9E9,9E9,9E9,9E9,9E9,9E9]])"')
+    assert code == 2 and "AtTarget takes no task" in text, text
