@@ -81,3 +81,21 @@ def test_at_target_with_a_task_says_per_robot_positions_are_not_modelled(tmp_pat
     code, text = run(tmp_path, 'G !"AtTarget(T_ROB2, [[0,0,0],[1,0,0,0],[0,0,0,0],'
                      '[9E9,9E9,9E9,9E9,9E9,9E9]])"')
     assert code == 2 and "AtTarget takes no task" in text, text
+
+
+def test_tasks_added_without_a_name_are_named_by_number(tmp_path):
+    """``--add-task`` tasks are called ``task 2 (b)``: atoms name them TASK1, TASK2 ..."""
+    module = ("MODULE M{n}\n  TASK PERS num mine := 0;\n  PROC main()\n    mine := {n};\n"
+              "  ENDPROC\nENDMODULE\n")
+    for n in (1, 2):
+        (tmp_path / f"m{n}.mod").write_text(module.replace("{n}", str(n)))
+    base = ["check", str(tmp_path / "m1.mod"), "--add-task", str(tmp_path / "m2.mod"), "--quiet"]
+
+    def check(formula: str) -> tuple[int, str]:
+        out = io.StringIO()
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out):
+            code = main(base + ["--formula", f"p: {formula}"])
+        return code, out.getvalue()
+    code, text = check('F G "mine = 2"')
+    assert code == 2 and "name the task: TASK1.mine or TASK2.mine" in text, text
+    assert check('F G ("TASK1.mine = 1" & "TASK2.mine = 2")')[0] == 0

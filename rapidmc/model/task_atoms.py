@@ -9,6 +9,9 @@ with the task's name, as the backup names the task:
 * ``InRoutine(T_ROB2, "MoveToSlot")``, ``AtLine(T_ROB2, 42)``, ``AtLabel(T_ROB2, "lbl")``,
   ``Ended(T_LOG)``, ``Failed(T_LOG)``, ``Waiting(T_ROB1)``: where that task is.
 
+A task whose name is no identifier (``--add-task`` names them ``task 2 (feeder)``) is
+named by its number, ``TASK2``, as a backup's folders count; ``TASK1`` is the main task.
+
 A name declared by one task alone (or shared PERS data, one object for every task that
 declares it) may stay unqualified.  A name that several tasks declare as different
 objects is never resolved silently: it is an error that lists the candidates
@@ -18,6 +21,7 @@ controller (every task ended; an uncaught error stopped every task).
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from typing import Iterator, Optional
 
@@ -27,6 +31,9 @@ from ..semantics.program import FIRST_TASK_NAMESPACE, PROGRAM_NAMESPACE, Program
 from ..semantics.scope import GLOBAL_DATA, ROUTINE, Scope, Symbol
 
 
+_IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+
+
 @dataclass(frozen=True)
 class Task:
     """One task of the controller: its number (the main task is 0), name and namespace."""
@@ -34,6 +41,18 @@ class Task:
     number: int
     name: str
     namespace: int
+
+    @property
+    def qualifier(self) -> str:
+        """How an atom names the task: its name (``T_ROB2``), or ``TASK2`` (its number from
+        1, as a backup's folders count) when the name is no identifier (``--add-task``)."""
+        return self.name if _IDENTIFIER.fullmatch(self.name) else f"TASK{self.number + 1}"
+
+
+def task_qualifier(program: Program, namespace: int) -> str:
+    """How atoms and traces name the task of ``namespace`` (``Task.qualifier``)."""
+    number = 0 if namespace == PROGRAM_NAMESPACE else namespace - FIRST_TASK_NAMESPACE + 1
+    return Task(number, program.task_names[number], namespace).qualifier
 
 
 def task_stack(m, number: int) -> tuple:
@@ -50,7 +69,9 @@ class ControllerTasks:
             FIRST_TASK_NAMESPACE + i for i in range(len(program.task_names) - 1))
         self.tasks = [Task(number, name, namespace) for number, (name, namespace)
                       in enumerate(zip(program.task_names, namespaces))]
-        self._by_key = {task.name.upper(): task for task in self.tasks}
+        self._by_key = {f"TASK{task.number + 1}": task for task in self.tasks}
+        self._by_key.update((task.name.upper(), task) for task in self.tasks
+                            if _IDENTIFIER.fullmatch(task.name))
 
     @property
     def several(self) -> bool:
@@ -163,7 +184,7 @@ ATOM_TEXT_LINE = 4      # the line of the atom's text in properties._WRAPPER_HEA
 
 def _ambiguous_name(name: ast.Name, candidates, where: ast.Span, atom: str):
     listed = ", ".join(f"{task.name} ({_declared_at(symbol)})" for task, symbol in candidates)
-    written = " or ".join(f"{task.name}.{name.text}" for task, _ in candidates)
+    written = " or ".join(f"{task.qualifier}.{name.text}" for task, _ in candidates)
     return error(AMBIGUOUS_NAME, f"atom \"{atom}\": '{name.text}' is declared by several "
                  f"tasks: {listed}", atom_position(where, name.span),
                  f"name the task: {written}")
@@ -179,7 +200,7 @@ def _declared_at(symbol: Symbol) -> str:
 
 def _location_without_task(call: ast.FunctionCall, tasks, where: ast.Span, atom: str):
     names = ", ".join(task.name for task in tasks)
-    first = tasks[0].name
+    first = tasks[0].qualifier
     example = ", ".join([first] + [_argument_text(arg) for arg in call.args])
     return error(AMBIGUOUS_NAME, f"atom \"{atom}\": {call.name.text} needs a task on a "
                  f"controller of several tasks ({names})", atom_position(where, call.span),
