@@ -35,7 +35,7 @@ from .. import ast
 from ..diagnostics import (ATOM, DUPLICATE_PROPERTY, FILE_NOT_FOUND, PROPERTY_FILE,
                           UNKNOWN_NAME, Diagnostic, SourceCache, UserError, error)
 from .fused_atoms import fused_valuation
-from .task_atoms import ControllerTasks, Task, task_stack, unqualified_nodes
+from .task_atoms import ControllerTasks, Task, task_stack, tasks_read, unqualified_nodes
 from ..ltl import Formula, parse_formula, to_text
 from ..ltl.patterns import is_pattern, parse_pattern, pattern_formula
 from ..semantics.errors import RapidError
@@ -255,6 +255,11 @@ class AtomCompiler:
         fused = (source, compiled.names or {}) if data_only and source is not None and \
             "locals_" not in source else None
         return safe, data_only, fused
+
+    def tasks_read(self, atom: str) -> tuple[str, ...]:
+        """The tasks whose own data or places ``atom`` reads (``task_atoms.tasks_read``; the
+        atom compiles: ``compile`` has seen it)."""
+        return tasks_read(parse_atom_expression(atom, ast.Span("<atom>", 1, 1)), self.tasks)
 
     def _operator_notes(self, atom: str, where: ast.Span, diagnostics) -> tuple[str, ...]:
         """For an unknown bare name like ``GFa``: Spot's reading, spaced (``G F a``)."""

@@ -108,6 +108,11 @@ class ControllerTasks:
             scope.names.update(self.scope(task).names)
         return scope
 
+    def shared(self, symbol: Symbol) -> bool:
+        """Whether ``symbol`` is PERS data every task that declares it shares (not TASK PERS)."""
+        return symbol.kind == GLOBAL_DATA and symbol.storage == "PERS" and \
+            not self.program.globals[symbol.slot].task_local
+
     def ambiguous(self, key: str) -> list[tuple[Task, Symbol]]:
         """The declarations of ``key`` when several tasks declare different objects."""
         found = self.declarations(key)
@@ -135,6 +140,33 @@ def _identity(symbol: Symbol) -> tuple:
     if symbol.kind in (GLOBAL_DATA, ROUTINE):
         return symbol.kind, symbol.slot
     return symbol.kind, id(symbol)
+
+
+def tasks_read(expr: ast.Expr, tasks: ControllerTasks) -> tuple[str, ...]:
+    """The tasks (``Task.qualifier``) whose own data or places an atom's expression reads,
+    in task order: those it names, and those that alone declare a name it writes bare.
+    Shared PERS data, signals and ``Ended()``/``Failed()`` of the controller belong to no
+    task.  Empty on a controller of one task."""
+    if not tasks.several:
+        return ()
+    found: set[int] = set()
+    from ..semantics.configured_signals import _walk_expression
+    for node in _walk_expression(expr):
+        if isinstance(node, ast.FunctionCall) and node.args:
+            task = tasks.named(node.args[0].value)
+        elif isinstance(node, ast.Component):
+            task = tasks.named(node.base)
+        else:
+            task = None
+        if task is not None:
+            found.add(task.number)
+    for node in unqualified_nodes(expr, tasks):
+        if isinstance(node, ast.NameRef):
+            owners = [task for task, symbol in tasks.declarations(node.name.key)
+                      if not tasks.shared(symbol)]
+            if len(owners) == 1:
+                found.add(owners[0].number)
+    return tuple(task.qualifier for task in tasks.tasks if task.number in found)
 
 
 # location atoms that read where one task is (Ended, Failed: the whole controller)
