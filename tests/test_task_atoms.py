@@ -99,3 +99,28 @@ def test_tasks_added_without_a_name_are_named_by_number(tmp_path):
     code, text = check('F G "mine = 2"')
     assert code == 2 and "name the task: TASK1.mine or TASK2.mine" in text, text
     assert check('F G ("TASK1.mine = 1" & "TASK2.mine = 2")')[0] == 0
+
+
+def test_failed_names_the_task_whose_error_stopped_the_controller(tmp_path):
+    (tmp_path / "m1.mod").write_text("MODULE M1\n  PROC main()\n    WaitTime 1;\n  ENDPROC\n"
+                                     "ENDMODULE\n")
+    (tmp_path / "m2.mod").write_text("MODULE M2\n  VAR num zero := 0;\n  PROC main()\n"
+                                     "    zero := 1 / zero;\n  ENDPROC\nENDMODULE\n")
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out):
+        main(["check", str(tmp_path / "m1.mod"), "--add-task", str(tmp_path / "m2.mod"),
+              "--formula", 'two_fails: F "Failed(TASK2)"',
+              "--formula", 'one_never: G !"Failed(TASK1)"',
+              "--formula", 'controller: F "Failed()"'])
+    text = out.getvalue()
+    for verdict in ("two_fails: HOLDS", "one_never: HOLDS", "controller: HOLDS"):
+        assert verdict in text, text
+
+
+def test_waiting_without_a_task_in_a_program_of_one_task(tmp_path):
+    (tmp_path / "m.mod").write_text("MODULE M\n  VAR bool go := FALSE;\n  PROC main()\n"
+                                    "    WaitUntil go;\n  ENDPROC\nENDMODULE\n")
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out):
+        main(["check", str(tmp_path / "m.mod"), "--formula", 'p: F G "Waiting()"'])
+    assert "p: HOLDS" in out.getvalue(), out.getvalue()

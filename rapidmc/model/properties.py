@@ -615,11 +615,13 @@ def _task_status(atoms: AtomCompiler, task: Task, status: int):
 
 
 def _waiting(atoms: AtomCompiler, expr) -> Compiled:
-    """``Waiting(T_ROB1)``: the task's next instruction is a wait (WaitUntil, WaitDI,
+    """``Waiting(T_ROB1)`` (``Waiting()`` in a program of one task): the task's next
+    instruction is a wait (WaitUntil, WaitDI,
     WaitDO ..., a WaitSyncTask or SyncMoveOn/Off barrier) that cannot go on now."""
     task, args = _task_and_args(atoms, expr)
-    if args or not expr.args:
-        raise error(ATOM, "Waiting takes a task", expr.span)
+    if args:
+        raise error(ATOM, "Waiting takes a task (or nothing, for a program of one task)",
+                    expr.span)
     number = task.number
 
     def waiting(m):
