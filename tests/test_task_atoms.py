@@ -124,3 +124,9 @@ def test_waiting_without_a_task_in_a_program_of_one_task(tmp_path):
     with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out):
         main(["check", str(tmp_path / "m.mod"), "--formula", 'p: F G "Waiting()"'])
     assert "p: HOLDS" in out.getvalue(), out.getvalue()
+
+
+def test_a_task_that_declares_no_such_name_says_who_does(tmp_path):
+    code, text = run(tmp_path, 'G "T_LOG.slot = 1"')
+    assert code == 2 and "task T_LOG declares no 'slot'" in text, text
+    assert "note: declared by T_ROB1, T_ROB2" in text, text

@@ -234,7 +234,8 @@ class AtomCompiler:
             compiled = self._compile(expr)
         except UserError as exc:
             notes = self._operator_notes(atom, where, exc.diagnostics)
-            raise UserError([Diagnostic(ATOM, f"atom \"{atom}\": {d.message}", where, notes=notes)
+            raise UserError([Diagnostic(ATOM, f"atom \"{atom}\": {d.message}", where,
+                                        notes=tuple(d.notes) + notes)
                              for d in exc.diagnostics]) from None
         fn = compiled.fn
         source = compiled.source
@@ -401,12 +402,12 @@ class _AtomExpressions(ExpressionCompiler):
         base = expr.base
         task = self.atoms.tasks.named(base)
         if task is not None:
-            inner = _AtomExpressions(self.atoms, self.atoms.tasks.scope(task))
+            inner = _AtomExpressions(self.atoms, self._task_scope(task, expr.name))
             return inner.value(ast.NameRef(expr.name, expr.span), expected)
         if isinstance(base, ast.Component):
             task = self.atoms.tasks.named(base.base)
             if task is not None:
-                inner = _AtomExpressions(self.atoms, self.atoms.tasks.scope(task))
+                inner = _AtomExpressions(self.atoms, self._task_scope(task, base.name))
                 return inner._Component(ast.Component(ast.NameRef(base.name, base.span),
                                                       expr.name, expr.span), expected)
         if isinstance(base, ast.NameRef):
@@ -414,6 +415,17 @@ class _AtomExpressions(ExpressionCompiler):
             if symbol is not None and symbol.kind == ROUTINE:
                 return _routine_data(self.atoms, symbol.slot, expr)
         return super()._Component(expr, expected)
+
+
+    def _task_scope(self, task: Task, name: ast.Name) -> Scope:
+        """The names of ``task``, which must declare ``name`` (else: who does)."""
+        tasks = self.atoms.tasks
+        if tasks.scope(task).names.get(name.key) is None:
+            owners = [other.qualifier for other, _ in tasks.declarations(name.key)]
+            notes = (f"declared by {', '.join(owners)}",) if owners else ()
+            raise error(UNKNOWN_NAME, f"task {task.qualifier} declares no '{name.text}'",
+                        name.span, *notes)
+        return tasks.scope(task)
 
 
 # --- location and robot atoms ------------------------------------------------
