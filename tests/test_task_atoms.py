@@ -130,3 +130,16 @@ def test_a_task_that_declares_no_such_name_says_who_does(tmp_path):
     code, text = run(tmp_path, 'G "T_LOG.slot = 1"')
     assert code == 2 and "task T_LOG declares no 'slot'" in text, text
     assert "note: declared by T_ROB1, T_ROB2" in text, text
+
+
+def test_the_controller_tcp_compares_with_numbers_for_a_zone_box(tmp_path):
+    (tmp_path / "r.mod").write_text(
+        "MODULE R\n  CONST robtarget p1 := [[900,0,300],[1,0,0,0],[0,0,0,0],"
+        "[9E9,9E9,9E9,9E9,9E9,9E9]];\n  PROC main()\n    MoveJ p1, v1000, fine, tool0;\n"
+        "  ENDPROC\nENDMODULE\n")
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out):
+        main(["check", str(tmp_path / "r.mod"),
+              "--formula", 'inside: F "CPos().x > 800 AND CPos().x < 1000 AND CPos().z < 400"',
+              "--formula", 'outside: G !"CPos().x > 950"'])
+    assert "inside: HOLDS" in out.getvalue() and "outside: HOLDS" in out.getvalue()
