@@ -69,3 +69,12 @@ def test_html_page_data_names_the_tasks(run, tmp_path):
     # the timeline's rows name each task's own data as atoms do
     names = {row["name"] for row in mixed["trace"]["timeline"]}
     assert "T_LOG.seen" in names and "go" in names, names
+
+
+def test_a_pattern_property_names_the_task_of_its_atoms(tmp_path):
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
+        main(["check", str(BACKUP), "--formula", 'pat: absence("T_ROB2.slot = 2") after(go)'])
+    assert ('  pattern: absence("T_ROB2.slot = 2") after(go)\n'
+            '  formula: G (go -> G !"T_ROB2.slot = 2")\n'
+            '  atoms: go (shared), "T_ROB2.slot = 2" (T_ROB2)\n') in out.getvalue()
