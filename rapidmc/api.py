@@ -339,7 +339,14 @@ class _Searches:
         vacuous = self.facts.vacuous(prop.formula) if result.verdict == HOLDS else None
         return PropertyResult(prop.name, prop.text, result, vacuous,
                               self.fairness.names if self.fairness is not None else (),
-                              pattern=prop.pattern)
+                              pattern=prop.pattern, atom_tasks=self._atom_tasks(buchi.atoms))
+
+    def _atom_tasks(self, atoms) -> tuple:
+        """(atom, its tasks) per atom, on a controller of several tasks (else empty)."""
+        compiler = self.model.atoms
+        if not compiler.tasks.several:
+            return ()
+        return tuple((atom, compiler.tasks_read(atom)) for atom in atoms)
 
 
 class _StuckWatch:

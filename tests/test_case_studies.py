@@ -25,6 +25,7 @@ from rapidmc.cli import main
 ROOT = Path(__file__).resolve().parent.parent
 SORTER = ROOT / "case_studies" / "sorter"
 DOOR = ROOT / "case_studies" / "door"
+MULTIMOVE = ROOT / "case_studies" / "multimove"
 
 HOLDS, VIOLATED = "HOLDS", "VIOLATED"
 
@@ -60,6 +61,14 @@ def door_case(program: str, states: int, d1: str, d2: str) -> Case:
                 "specs/door.ltl", {"D1": d1, "D2": d2}, states)
 
 
+def multimove_case(backup: str, states: int, mutex: str, gives_back: str) -> Case:
+    verdicts = {"zone_mutex": mutex, "no_motion_door_open": HOLDS, "rob1_answered": HOLDS,
+                "rob2_answered": HOLDS, "rob1_gives_back": gives_back,
+                "rob2_gives_back": gives_back}
+    return Case(f"case_studies/multimove/{backup}", "case_studies/multimove/door.mod",
+                "case_studies/multimove/cell.ltl", verdicts, states)
+
+
 # reachable_states: states of program and plant together that an exhaustive
 # search visits (the model states of every property that HOLDS).
 CASES = {
@@ -73,6 +82,8 @@ CASES = {
                                            plant="variants/plant_sensors_forget.mod"),
     "door_safe": door_case("door_safe.mod", 28, HOLDS, HOLDS),
     "door_race": door_case("door_race.mod", 35, VIOLATED, HOLDS),
+    "multimove_fixed": multimove_case("fixed", 1393, HOLDS, HOLDS),
+    "multimove_faulty": multimove_case("faulty", 4425, VIOLATED, VIOLATED),
 }
 
 VIOLATIONS = [(case, name) for case, c in CASES.items()
@@ -221,7 +232,28 @@ VIOLATION_SHOWN = {
                             lambda s: s.signal("C_OUT")),
     "D1": next_violated(lambda s: not s.signal("DOOR_CLOSED"),
                         lambda s: not s.signal("ROBOT_MOVED")),
+    "rob1_gives_back": response_violated(lambda s: s.values["grant1"] == "TRUE",
+                                         lambda s: s.values["req1"] == "FALSE"),
+    "rob2_gives_back": response_violated(lambda s: s.values["grant2"] == "TRUE",
+                                         lambda s: s.values["req2"] == "FALSE"),
+    "zone_mutex": lambda lasso: any(one and two for one, two in zip(
+        in_zone(lasso, "Rob1.mod"), in_zone(lasso, "Rob2.mod"))),
 }
+
+
+def in_zone(lasso: Lasso, module: str) -> list[bool]:
+    """Per state of the lasso: whether the robot of task module ``module`` is in its routine
+    WorkInZone (it has called it and not yet left it at its ENDPROC)."""
+    inside, shown = False, []
+    for step in lasso.steps:
+        location = step["location"]
+        if location and Path(location["file"]).name == module:
+            if step["source"] == "WorkInZone;":
+                inside = True
+            elif step["source"] == "ENDPROC":
+                inside = False
+        shown.append(inside)
+    return shown
 
 
 def line_of(path: Path, text: str, occurrence: int = 1) -> int:
@@ -315,6 +347,23 @@ def test_door_race_d1_trace_moves_after_the_door_opened_between_test_and_lock(js
     assert moves_from_line(lasso, moving[0]) == line_of(program, "MoveJ pick")
 
 
+def test_multimove_mutex_trace_names_both_tasks_entering_the_zone(json_reports):
+    """faulty/zone_mutex: both robots pass their zone_busy test before either raises the
+    flag; the steps name their tasks (the inputs choose T_ROB1 and T_ROB2)."""
+    report = property_report(json_reports["multimove_faulty"], "zone_mutex")
+    lasso = read_lasso(report["trace"])
+    both = next(i for i, (one, two) in enumerate(zip(in_zone(lasso, "Rob1.mod"),
+                                                     in_zone(lasso, "Rob2.mod"))) if one and two)
+    entered = [step for step in lasso.steps[:both + 1] if step["source"] == "WorkInZone;"]
+    assert {step["inputs"]["task"] for step in entered[-2:]} == {"T_ROB1", "T_ROB2"}
+    tests = [step["inputs"]["task"] for step in lasso.steps[:both + 1]
+             if step["source"] == "WaitUntil NOT zone_busy;"]
+    assert tests[-2:] in (["T_ROB1", "T_ROB2"], ["T_ROB2", "T_ROB1"])
+    assert report["atoms"] == [
+        {"atom": 'InRoutine(T_ROB1, "WorkInZone")', "tasks": ["T_ROB1"]},
+        {"atom": 'InRoutine(T_ROB2, "WorkInZone")', "tasks": ["T_ROB2"]}]
+
+
 def moves_from_line(lasso: Lasso, index: int) -> int | None:
     """The source line of the step taken from ``states[index]``."""
     following = lasso.steps[index + 1] if index + 1 < len(lasso.steps) else lasso.steps[lasso.loop]
@@ -344,3 +393,16 @@ def test_sorter_readme_first_command_is_a_check_with_the_plant():
 def test_readme_shows_the_counterexamples_in_full_as_printed(readme, key, capsys, at_root):
     _, output = run_check(CASES[key], capsys)
     assert normalise_times(output) in normalise_times(readme.read_text())
+
+
+def test_multimove_readme_excerpt_is_printed_in_order(capsys, at_root):
+    """The README's zone_mutex excerpt: its lines are the check's output, in order."""
+    readme = (MULTIMOVE / "README.md").read_text()
+    block = re.search(r"```\n(zone_mutex: VIOLATED.*?)```", readme, re.DOTALL).group(1)
+    _, output = run_check(CASES["multimove_faulty"], capsys)
+    lines = normalise_times(output).splitlines()
+    position = 0
+    for line in normalise_times(block).splitlines():
+        if line.strip() == "...":
+            continue
+        position = lines.index(line, position) + 1

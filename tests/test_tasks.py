@@ -83,7 +83,7 @@ def test_a_lost_update_between_tasks_is_found(tmp_path, capsys):
     f = files(tmp_path, a=COUNTER.format(n="A"), b=COUNTER.format(n="B"))
     code, result = verdicts(capsys, f["a"], "--add-task", f["b"],
                             "--formula", 'all_counted: F G "count = 4"',
-                            "--formula", 'own_count: F G "mine = 2"')
+                            "--formula", 'own_count: F G "TASK1.mine = 2"')
     assert code == 1
     assert result["all_counted"] == "VIOLATED"      # both read count before either writes it
     assert result["own_count"] == "HOLDS"           # TASK PERS: each task has its own

@@ -92,4 +92,4 @@ def test_atoms_reading_only_data_are_told_apart(atom, data_only):
     program = build(ast.Program(parse_text(PROGRAM, "m.mod")))
     compiler = AtomCompiler(program)
     expr = parse_atom_expression(atom, ast.Span("<formula>", 1, 1))
-    assert reads_data_only(expr, compiler.scope) is data_only
+    assert reads_data_only(compiler.symbols(expr)) is data_only

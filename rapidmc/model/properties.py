@@ -16,7 +16,10 @@ expressions over the program's global data, evaluated in each state:
   ``AtLine("prog.mod", 42)`` (the statement about to execute),
   ``AtLabel("retry_point")``, ``AtTarget(c1)`` (the TCP is at robtarget or
   pos ``c1``, within 0.5 mm), ``Ended()`` (the program has ended),
-  ``Failed()`` (it stopped on an uncaught error).
+  ``Failed()`` (it stopped on an uncaught error);
+* on a controller of several tasks, names and places qualified with a task:
+  ``T_ROB2.slot``, ``T_ROB2.main.flag``, ``InRoutine(T_ROB2, "MoveToSlot")``,
+  ``Waiting(T_ROB1)`` ... (``task_atoms``).
 
 An atom whose evaluation raises a RAPID error (e.g. signal data not yet
 bound with AliasIO) is false in that state.
@@ -32,6 +35,7 @@ from .. import ast
 from ..diagnostics import (ATOM, DUPLICATE_PROPERTY, FILE_NOT_FOUND, PROPERTY_FILE,
                           UNKNOWN_NAME, Diagnostic, SourceCache, UserError, error)
 from .fused_atoms import fused_valuation
+from .task_atoms import ControllerTasks, Task, task_stack, tasks_read, unqualified_nodes
 from ..ltl import Formula, parse_formula, to_text
 from ..ltl.patterns import is_pattern, parse_pattern, pattern_formula
 from ..semantics.errors import RapidError
@@ -40,7 +44,9 @@ from ..semantics.machine import Machine
 from ..semantics.program import Program
 from ..semantics.scope import (CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, Scope,
                               Symbol)
-from ..semantics.state import ENDED, FAILED, STOPPED, State
+from ..semantics.instructions import Wait
+from ..semantics.library.tasks import SyncWait
+from ..semantics.state import ENDED, FAILED, RUNNING, STOPPED, State
 from ..semantics.types import BOOL, NUM, POS, ROBTARGET, STRING, RapidType
 
 _PROPERTY_LINE = re.compile(r"^\s*([A-Za-z_][A-Za-z0-9_.-]*)\s*:(?!=)\s*(.*?)\s*$")
@@ -184,8 +190,8 @@ class AtomCompiler:
         self.program = program
         self.linker = program.scopes
         self.linker.options["infer_signals"] = False    # atoms name only known signals
-        from ..semantics.program import PROGRAM_NAMESPACE
-        scope = Scope(self.linker.namespaces[PROGRAM_NAMESPACE])
+        self.tasks = ControllerTasks(program)
+        scope = self.tasks.unqualified_scope()
         # physical signal names (C_IN, S_1) take precedence over program data names
         for signal in program.signals:
             scope.names[signal.key] = Symbol(SIGNAL, signal.name, NUM, slot=signal.index,
@@ -195,16 +201,24 @@ class AtomCompiler:
         self.observes_signal_data = False     # an atom reads signal data (binding unknown)
 
     def _note_signals(self, expr: ast.Expr) -> None:
-        from ..semantics.configured_signals import _walk_expression
-        for node in _walk_expression(expr):
+        for symbol in self.symbols(expr):
+            if not isinstance(symbol, Symbol):
+                continue
+            if symbol.kind == SIGNAL:
+                self.observed.add(symbol.slot)
+            elif getattr(symbol.type, "kind", "") == "semi-value":
+                self.observes_signal_data = True
+
+    def symbols(self, expr: ast.Expr):
+        """What each name in ``expr`` denotes (None: not a data name of the program), the
+        task-qualified ``T_ROB2.slot`` included; other nodes are yielded as they are."""
+        for node in unqualified_nodes(expr, self.tasks):
             if isinstance(node, ast.NameRef):
-                symbol = self.scope.lookup(node.name.key)
-                if symbol is None:
-                    continue
-                if symbol.kind == SIGNAL:
-                    self.observed.add(symbol.slot)
-                elif getattr(symbol.type, "kind", "") == "semi-value":
-                    self.observes_signal_data = True
+                yield self.scope.lookup(node.name.key)
+            else:
+                yield node
+        for node in _task_qualified(expr, self.tasks):
+            yield self.tasks.scope(self.tasks.named(node.base)).lookup(node.name.key)
 
     def compile(self, atom: str, where: ast.Span) -> Callable:
         return self._compile_atom(atom, where)[0]
@@ -214,12 +228,14 @@ class AtomCompiler:
         signals (``reads_data_only``), and for such an atom whose expression has a source
         (``Compiled.source``) its truth as (Python source, names), else None."""
         expr = parse_atom_expression(atom, where)
+        self.tasks.check_unambiguous(expr, where, atom)
         self._note_signals(expr)
         try:
             compiled = self._compile(expr)
         except UserError as exc:
             notes = self._operator_notes(atom, where, exc.diagnostics)
-            raise UserError([Diagnostic(ATOM, f"atom \"{atom}\": {d.message}", where, notes=notes)
+            raise UserError([Diagnostic(ATOM, f"atom \"{atom}\": {d.message}", where,
+                                        notes=tuple(d.notes) + notes)
                              for d in exc.diagnostics]) from None
         fn = compiled.fn
         source = compiled.source
@@ -236,10 +252,15 @@ class AtomCompiler:
                 return bool(fn(m))
             except RapidError:
                 return False
-        data_only = reads_data_only(expr, self.scope)
+        data_only = reads_data_only(self.symbols(expr))
         fused = (source, compiled.names or {}) if data_only and source is not None and \
             "locals_" not in source else None
         return safe, data_only, fused
+
+    def tasks_read(self, atom: str) -> tuple[str, ...]:
+        """The tasks whose own data or places ``atom`` reads (``task_atoms.tasks_read``; the
+        atom compiles: ``compile`` has seen it)."""
+        return tasks_read(parse_atom_expression(atom, ast.Span("<atom>", 1, 1)), self.tasks)
 
     def _operator_notes(self, atom: str, where: ast.Span, diagnostics) -> tuple[str, ...]:
         """For an unknown bare name like ``GFa``: Spot's reading, spaced (``G F a``)."""
@@ -336,27 +357,37 @@ _DATA_NODES = (ast.NumLiteral, ast.StringLiteral, ast.BoolLiteral, ast.Index, as
 _DATA_SYMBOLS = (GLOBAL_DATA, CONSTANT, SIGNAL)
 
 
-def reads_data_only(expr: ast.Expr, scope: Scope) -> bool:
-    """Whether ``expr`` reads nothing of a state but its global data and signals.
+def reads_data_only(symbols) -> bool:
+    """Whether an atom reads nothing of a state but its global data and signals, given
+    what its names denote (``AtomCompiler.symbols``).
 
     Conservative: any function call (location and robot atoms, user functions),
     routine data, ERRNO/INTNO or a name not found makes it False."""
-    from ..semantics.configured_signals import _walk_expression
-    for node in _walk_expression(expr):
-        if isinstance(node, ast.NameRef):
-            symbol = scope.lookup(node.name.key)
-            if symbol is None or symbol.kind not in _DATA_SYMBOLS:
+    for node in symbols:
+        if node is None:
+            return False
+        if isinstance(node, Symbol):
+            if node.kind not in _DATA_SYMBOLS:
                 return False
         elif not isinstance(node, _DATA_NODES):
             return False
     return True
 
 
+def _task_qualified(expr: ast.Expr, tasks: ControllerTasks):
+    """The ``TASK.name`` nodes of ``expr`` (in ``TASK.routine.name``: ``TASK.routine``,
+    which names a routine, not data: routine data reads a call stack)."""
+    from ..semantics.configured_signals import _walk_expression
+    for node in _walk_expression(expr):
+        if isinstance(node, ast.Component) and tasks.named(node.base) is not None:
+            yield node
+
+
 class _AtomExpressions(ExpressionCompiler):
     """RAPID expressions plus the location and robot atom functions."""
 
-    def __init__(self, atoms: AtomCompiler):
-        super().__init__(atoms.linker, atoms.scope, hoist=None)
+    def __init__(self, atoms: AtomCompiler, scope: Optional[Scope] = None):
+        super().__init__(atoms.linker, scope or atoms.scope, hoist=None)
         self.atoms = atoms
 
     def _FunctionCall(self, expr: ast.FunctionCall, expected) -> Compiled:
@@ -366,8 +397,19 @@ class _AtomExpressions(ExpressionCompiler):
         return super()._FunctionCall(expr, expected)
 
     def _Component(self, expr: ast.Component, expected) -> Compiled:
-        """``routine.data``: routine data of the innermost active call of that routine."""
+        """``routine.data``: routine data of the innermost active call of that routine;
+        ``TASK.data`` and ``TASK.routine.data``: the same in task TASK's names."""
         base = expr.base
+        task = self.atoms.tasks.named(base)
+        if task is not None:
+            inner = _AtomExpressions(self.atoms, self._task_scope(task, expr.name))
+            return inner.value(ast.NameRef(expr.name, expr.span), expected)
+        if isinstance(base, ast.Component):
+            task = self.atoms.tasks.named(base.base)
+            if task is not None:
+                inner = _AtomExpressions(self.atoms, self._task_scope(task, base.name))
+                return inner._Component(ast.Component(ast.NameRef(base.name, base.span),
+                                                      expr.name, expr.span), expected)
         if isinstance(base, ast.NameRef):
             symbol = self.scope.lookup(base.name.key)
             if symbol is not None and symbol.kind == ROUTINE:
@@ -375,11 +417,32 @@ class _AtomExpressions(ExpressionCompiler):
         return super()._Component(expr, expected)
 
 
+    def _task_scope(self, task: Task, name: ast.Name) -> Scope:
+        """The names of ``task``, which must declare ``name`` (else: who does)."""
+        tasks = self.atoms.tasks
+        if tasks.scope(task).names.get(name.key) is None:
+            owners = [other.qualifier for other, _ in tasks.declarations(name.key)]
+            notes = (f"declared by {', '.join(owners)}",) if owners else ()
+            raise error(UNKNOWN_NAME, f"task {task.qualifier} declares no '{name.text}'",
+                        name.span, *notes)
+        return tasks.scope(task)
+
+
 # --- location and robot atoms ------------------------------------------------
 
-def _string_args(expr: ast.FunctionCall) -> list:
+def _task_and_args(atoms: AtomCompiler, expr: ast.FunctionCall) -> tuple[Task, list]:
+    """The task a location atom names first (else the main task: on a controller of
+    several tasks, ``check_unambiguous`` has asked for one) and its other arguments."""
+    args = expr.args
+    task = atoms.tasks.named(args[0].value) if args else None
+    if task is None:
+        return atoms.tasks.tasks[0], _string_args(expr, args)
+    return task, _string_args(expr, args[1:])
+
+
+def _string_args(expr: ast.FunctionCall, args) -> list:
     out = []
-    for arg in expr.args:
+    for arg in args:
         if arg.kind != ast.REQUIRED or arg.value is None:
             raise error(ATOM, f"{expr.name.text} takes plain arguments", expr.span)
         value = arg.value
@@ -392,30 +455,43 @@ def _string_args(expr: ast.FunctionCall) -> list:
     return out
 
 
-def _current(m: Machine):
-    if not m.frames:
+def _current(m: Machine, task: int = 0):
+    """The innermost routine of task ``task`` and its next instruction (None: ended)."""
+    frames = task_stack(m, task)
+    if not frames:
         return None
-    frame = m.frames[-1]
+    frame = frames[-1]
     routine = m.program.routines[frame.routine]
     return routine, routine.code[frame.pc]
 
 
+def _in_task(atoms: AtomCompiler, task: Task):
+    """The routines of ``task`` (on a controller of one task: every routine)."""
+    routines = atoms.program.routines
+    if not atoms.tasks.several:
+        return routines
+    return [r for r in routines if r.namespace == task.namespace]
+
+
 def _in_routine(atoms: AtomCompiler, expr) -> Compiled:
-    args = _string_args(expr)
+    task, args = _task_and_args(atoms, expr)
     if len(args) != 1:
-        raise error(ATOM, "InRoutine takes one routine name", expr.span)
+        raise error(ATOM, "InRoutine takes one routine name (after a task)", expr.span)
     key = str(args[0]).upper()
-    if not any(r.key == key for r in atoms.program.routines):
-        raise error(ATOM, f"InRoutine: no routine named '{args[0]}'", expr.span)
+    if not any(r.key == key for r in _in_task(atoms, task)):
+        owner = f"task {task.name} has" if atoms.tasks.several else "there is"
+        raise error(ATOM, f"InRoutine: {owner} no routine named '{args[0]}'", expr.span)
+    number = task.number
 
     def in_routine(m):
-        here = _current(m)
+        here = _current(m, number)
         return here is not None and here[0].key == key
     return Compiled(in_routine, BOOL)
 
 
 def _at_line(atoms: AtomCompiler, expr) -> Compiled:
-    args = _string_args(expr)
+    task, args = _task_and_args(atoms, expr)
+    number = task.number
     if len(args) == 1:
         file, line = None, args[0]
     elif len(args) == 2:
@@ -424,7 +500,7 @@ def _at_line(atoms: AtomCompiler, expr) -> Compiled:
         raise error(ATOM, "AtLine takes a line number, optionally after a file name", expr.span)
 
     def at_line(m):
-        here = _current(m)
+        here = _current(m, number)
         if here is None or here[1].span is None:
             return False
         span = here[1].span
@@ -434,12 +510,13 @@ def _at_line(atoms: AtomCompiler, expr) -> Compiled:
 
 
 def _at_label(atoms: AtomCompiler, expr) -> Compiled:
-    args = _string_args(expr)
+    task, args = _task_and_args(atoms, expr)
     if len(args) != 1:
-        raise error(ATOM, "AtLabel takes one label name", expr.span)
+        raise error(ATOM, "AtLabel takes one label name (after a task)", expr.span)
     key = str(args[0]).upper()
+    number = task.number
     places = set()
-    for routine in atoms.program.routines:
+    for routine in _in_task(atoms, task):
         for statement in _labels(routine.ast.body if routine.ast else ()):
             if statement.name.key == key:
                 places.add((routine.index, statement.span.line))
@@ -454,9 +531,10 @@ def _at_label(atoms: AtomCompiler, expr) -> Compiled:
             lines[routine_index] = min(following, key=lambda i: code[i].span.line)
 
     def at_label(m):
-        if not m.frames:
+        frames = task_stack(m, number)
+        if not frames:
             return False
-        frame = m.frames[-1]
+        frame = frames[-1]
         return lines.get(frame.routine) == frame.pc
     return Compiled(at_label, BOOL)
 
@@ -474,6 +552,12 @@ def _labels(statements):
 
 
 def _at_target(atoms: AtomCompiler, expr) -> Compiled:
+    if expr.args and atoms.tasks.named(expr.args[0].value) is not None:
+        raise error(ATOM, "AtTarget takes no task: rapidmc keeps one TCP for the whole "
+                    "controller (a move jumps to its target), so the position of each "
+                    "robot of several motion tasks is not modelled", expr.span,
+                    "state where a robot is by its task's place instead, e.g. "
+                    "InRoutine(T_ROB2, \"MoveToZone\") or a PERS flag the task sets")
     if len(expr.args) != 1 or expr.args[0].value is None:
         raise error(ATOM, "AtTarget takes one robtarget or pos", expr.span)
     compiler = ExpressionCompiler(atoms.linker, atoms.scope)
@@ -501,9 +585,11 @@ def _routine_data(atoms: AtomCompiler, routine_index: int, expr: ast.Component) 
                     f"'{expr.name.text}'", expr.span)
     slot = symbol.slot
     name = f"{routine.name}.{expr.name.text}"
+    task = atoms.tasks.task_of_namespace(routine.namespace) if atoms.tasks.several else None
+    number = task.number if task is not None else 0
 
     def read(m):
-        for frame in reversed(m.frames):
+        for frame in reversed(task_stack(m, number)):
             if frame.routine == routine_index:
                 return frame.locals[slot]
         raise RapidError("ERR_REFUNKDAT", f"{name}: {routine.name} is not active")
@@ -511,11 +597,65 @@ def _routine_data(atoms: AtomCompiler, routine_index: int, expr: ast.Component) 
 
 
 def _status(status: int):
+    """``Ended()`` ... of the whole controller; ``Ended(T_LOG)`` ... of one task."""
     def factory(atoms: AtomCompiler, expr) -> Compiled:
-        if expr.args:
-            raise error(ATOM, f"{expr.name.text}() takes no arguments", expr.span)
+        task, args = _task_and_args(atoms, expr)
+        if args:
+            raise error(ATOM, f"{expr.name.text} takes no arguments but a task", expr.span)
+        if len(expr.args) == 1:
+            return Compiled(_task_status(atoms, task, status), BOOL)
         return Compiled(lambda m: m.status == status, BOOL)
     return factory
+
+
+def _task_status(atoms: AtomCompiler, task: Task, status: int):
+    """Task ``task`` has ended (its stack is empty: the others may run on), has stopped
+    with the controller, or raised the uncaught error that stopped every task."""
+    number = task.number
+    if status == ENDED:
+        return lambda m: m.status == ENDED or (m.status != FAILED and not task_stack(m, number))
+    if status == STOPPED:
+        return lambda m: m.status == STOPPED and bool(task_stack(m, number))
+    namespace = task.namespace
+    routines = atoms.program.routines
+
+    def failed_here(m):
+        fault = m.fault
+        return m.status == FAILED and fault is not None and \
+            routines[fault.instruction[0]].namespace == namespace
+    return failed_here
+
+
+def _waiting(atoms: AtomCompiler, expr) -> Compiled:
+    """``Waiting(T_ROB1)`` (``Waiting()`` in a program of one task): the task's next
+    instruction is a wait (WaitUntil, WaitDI,
+    WaitDO ..., a WaitSyncTask or SyncMoveOn/Off barrier) that cannot go on now."""
+    task, args = _task_and_args(atoms, expr)
+    if args:
+        raise error(ATOM, "Waiting takes a task (or nothing, for a program of one task)",
+                    expr.span)
+    number = task.number
+
+    def waiting(m):
+        here = _current(m, number)
+        if here is None or m.status != RUNNING:
+            return False
+        instruction = here[1]
+        if isinstance(instruction, SyncWait):
+            return bool(instruction.missing(m.store, number))
+        if isinstance(instruction, Wait):
+            return not instruction.condition(_task_view(m, number))
+        return False
+    return Compiled(waiting, BOOL)
+
+
+def _task_view(m: Machine, number: int) -> Machine:
+    """A machine whose running stack is task ``number``'s (what that task's code reads)."""
+    if number == 0:
+        return m
+    view = Machine(m.program, m.to_state(), None)
+    view.frames = list(task_stack(m, number))
+    return view
 
 
 LOCATION_ATOMS = {
@@ -525,5 +665,6 @@ LOCATION_ATOMS = {
     "ATTARGET": _at_target,
     "ENDED": _status(ENDED),
     "FAILED": _status(FAILED),
+    "WAITING": _waiting,
     "STOPPED": _status(STOPPED),
 }

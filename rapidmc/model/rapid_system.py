@@ -19,7 +19,7 @@ from ..check.trace import CallFrame
 from ..check.result import LassoStep, SearchResult
 from ..diagnostics import TRACE_REPLAY, SourceCache, error
 from ..load.stubs.module_text import STUB_MARKER
-from ..semantics.program import (ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE,
+from ..semantics.program import (ENVIRONMENT_NAMESPACE,
                                 PROGRAM_NAMESPACE, Program)
 from ..semantics.types import POS, ArrayType
 from ..semantics.library.tasks import SyncWait
@@ -31,6 +31,7 @@ from ..semantics.fused_step import plain_successor_states, stop_pcs, written_glo
 from ..semantics.values import format_num, format_value
 from ..semantics.errors import errno_name
 from .reduction import NO_PLAN, Plan
+from .task_atoms import task_qualifier
 from .value_text import OPAQUE_KINDS, untyped_text, value_text
 from .reduction.expansion import expand_lasso
 from .reduction.merging import executed_spans
@@ -280,7 +281,8 @@ class RapidDescriber:
         lazy = config.lazy_inputs if config is not None else {}
         # inputs chosen when read are not stored: their values show in the step's inputs
         self.signals = [s for s in program.signals if s.index not in lazy]
-        self.globals = [(g.slot, g.name, g.type) for g in program.globals
+        self.several_tasks = len(program.task_names) > 1
+        self.globals = [(g.slot, self._qualified(g), g.type) for g in program.globals
                         if g.namespace == PROGRAM_NAMESPACE and _shown(g.type)]
         self.environment = [(g.slot, self._qualified(g), g.type) for g in program.globals
                             if g.namespace != PROGRAM_NAMESPACE and _shown(g.type)]
@@ -289,10 +291,16 @@ class RapidDescriber:
         self._texts: dict[int, tuple] = {}      # slot -> (value, its text), the latest
 
     def _qualified(self, data) -> str:
-        """env.name for environment data, <task>.name for data of a further task."""
+        """env.name for environment data; on a controller of several tasks <task>.name for a
+        task's own data, as atoms name it (shared PERS data keeps its plain name)."""
         if data.namespace == ENVIRONMENT_NAMESPACE:
             return f"env.{data.name}"
-        return f"{self.program.task_names[data.namespace - FIRST_TASK_NAMESPACE + 1]}.{data.name}"
+        if not self.several_tasks or (data.storage == "PERS" and not data.task_local):
+            return data.name
+        return f"{self._task_name(data.namespace)}.{data.name}"
+
+    def _task_name(self, namespace: int) -> str:
+        return task_qualifier(self.program, namespace)
 
     def _text(self, value, slot: int, rapid_type) -> str:
         """``value_text`` of a global's value, kept while the state holds the very same value
@@ -328,7 +336,7 @@ class RapidDescriber:
                 if isinstance(value, tuple) and len(value) == 3 and isinstance(value[0], int) \
                         and isinstance(value[2], tuple):
                     continue                       # a reference parameter
-                view[f"{routine.name}.{name}"] = untyped_text(value)
+                view[self._routine_prefix(routine) + name] = untyped_text(value)
         for signal in self.signals:
             view[f"signal {signal.name}"] = format_num(state.io[signal.index])
         view["robot TCP"] = value_text(state.robot[0][0], POS)
@@ -343,6 +351,12 @@ class RapidDescriber:
         elif state.status == FAILED:
             view["program"] = f"stopped: {fault_text(state.fault)}"
         return view
+
+    def _routine_prefix(self, routine) -> str:
+        """``main.`` for routine data; ``T_ROB2.main.`` on a controller of several tasks."""
+        if self.several_tasks and routine.namespace != ENVIRONMENT_NAMESPACE:
+            return f"{self._task_name(routine.namespace)}.{routine.name}."
+        return f"{routine.name}."
 
     def describe_stack(self, state: State) -> tuple[CallFrame, ...]:
         """Every task's active routines, outermost first, each at its next statement."""

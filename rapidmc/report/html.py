@@ -29,7 +29,8 @@ from typing import Mapping, Optional, Sequence
 
 from .. import __version__
 from ..diagnostics import HTML_OUTPUT, NEVER_REACHED, Diagnostic, SourceCache, error
-from .results import PropertyResult, error_json_of, fairness_text, property_json, step_json
+from .results import (PropertyResult, atoms_text, error_json_of, fairness_text, property_json,
+                      step_json)
 from ..check.result import VIOLATED
 from ..check.trace import Trace, TraceDescriber, TraceStep, build_trace
 
@@ -99,6 +100,8 @@ def page_data(results: Sequence[PropertyResult], describer: TraceDescriber,
         entry = property_json(checked, describer)
         if checked.fair_tasks:
             entry["fairness"] = fairness_text(checked.fair_tasks)
+        if checked.atom_tasks:
+            entry["atoms_text"] = atoms_text(checked.atom_tasks)
         if checked.result.verdict == VIOLATED:
             entry["trace"] = trace_view(build_trace(checked.result, describer),
                                         frozenset(getattr(describer, "stub_data", ())))

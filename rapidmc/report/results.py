@@ -44,6 +44,9 @@ class PropertyResult:
     # what the verdict rests on that rapidmc assumed (findings.assumptions): sentences
     assumes: tuple = ()
     pattern: Optional[str] = None    # the specification pattern the formula translates
+    # on a controller of several tasks: (atom, the tasks whose own data or places it reads)
+    # per atom of the formula (no task: shared PERS data, signals, the controller's status)
+    atom_tasks: tuple = ()
 
 
 # --- text ---------------------------------------------------------------------
@@ -69,6 +72,8 @@ def format_text(results: Sequence[PropertyResult], describer: TraceDescriber,
             if checked.pattern is not None:
                 lines.append(f"  pattern: {checked.pattern}")
             lines.append(f"  formula: {checked.formula}")
+            if checked.atom_tasks:
+                lines.append(f"  {atoms_text(checked.atom_tasks)}")
             if checked.result.reason:
                 lines.append(f"  {checked.result.reason}")
             lines.extend(counterexample_lines(build_trace(checked.result, describer),
@@ -77,10 +82,25 @@ def format_text(results: Sequence[PropertyResult], describer: TraceDescriber,
 
 
 def described_formula(checked: PropertyResult) -> str:
-    """The formula, after the specification pattern it translates (if any): one line."""
-    if checked.pattern is None:
-        return checked.formula
-    return f"{checked.pattern} (LTL: {checked.formula})"
+    """The formula, after the specification pattern it translates (if any), and on a
+    controller of several tasks the task of each atom: one line."""
+    described = checked.formula if checked.pattern is None else \
+        f"{checked.pattern} (LTL: {checked.formula})"
+    if checked.atom_tasks:
+        described += f" [{atoms_text(checked.atom_tasks)}]"
+    return described
+
+
+def atoms_text(atom_tasks: Sequence[tuple]) -> str:
+    """``atoms: "seen = 1" (T_LOG), go (shared), "AtLine(T_ROB2, 9)" (T_ROB2)``."""
+    return "atoms: " + ", ".join(
+        f"{atom_written(atom)} ({', '.join(tasks) if tasks else 'shared'})"
+        for atom, tasks in atom_tasks)
+
+
+def atom_written(atom: str) -> str:
+    """An atom as a formula writes it: bare when it is one name, else quoted."""
+    return atom if IDENTIFIER.fullmatch(atom) else json.dumps(atom, ensure_ascii=False)
 
 
 def verdict_line(checked: PropertyResult) -> str:
@@ -169,7 +189,9 @@ def property_json(checked: PropertyResult, describer: TraceDescriber) -> dict:
             "vacuous": checked.vacuous,
             "fair_tasks": list(checked.fair_tasks) if checked.fair_tasks else None,
             "assumes": list(checked.assumes),
-            "pattern": checked.pattern}
+            "pattern": checked.pattern,
+            "atoms": [{"atom": atom, "tasks": list(tasks)} for atom, tasks in checked.atom_tasks]
+            if checked.atom_tasks else None}
 
 
 def warning_json(warning: Diagnostic) -> dict:

@@ -43,7 +43,7 @@ from .numeric_updates import as_assignment, target_root
 # which are never merged)
 JUMP_FIELDS = ("next", "target_true", "target_false", "target", "exit", "body", "default")
 LOCATION_ATOMS = frozenset({"INROUTINE", "ATLINE", "ATLABEL", "ATTARGET", "ENDED", "FAILED",
-                            "STOPPED", "ERRNO", "INTNO"})
+                            "STOPPED", "WAITING", "ERRNO", "INTNO"})
 
 
 def merging_allowed(program: Program, formulas: Iterable, atom_keys: set[str],

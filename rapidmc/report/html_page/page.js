@@ -95,6 +95,7 @@
       } else {
         formula.appendChild(element("code", null, property.formula));
       }
+      if (property.atoms_text) formula.appendChild(element("div", "reason atoms", property.atoms_text));
       row.appendChild(formula);
       const stats = property.stats;
       row.appendChild(element("td", "number", stats.product_states.toLocaleString("en")));
@@ -133,7 +134,8 @@
     $("property-" + index).classList.add("selected");
     $("counterexample").hidden = false;
     $("trace-name").textContent = property.name;
-    $("trace-formula").textContent = property.formula;
+    $("trace-formula").textContent = property.formula +
+      (property.atoms_text ? "  [" + property.atoms_text + "]" : "");
     $("trace-pattern").textContent = property.pattern || "";
     $("trace-pattern-line").hidden = !property.pattern;
     $("trace-shape").textContent = traceShape(property.trace);
