@@ -74,8 +74,11 @@ def expected_findings(path: Path) -> list[tuple[int, str]]:
 
 @pytest.mark.parametrize("path", CASES, ids=[p.stem for p in CASES])
 def test_lint_case(path):
+    """Every expected finding is found, at its own line or as another place of a finding
+    given once per cause."""
     findings = lint_program(ast.Program(parse_file(str(path))))
-    assert sorted((f.span.line, f.code.code) for f in findings) == expected_findings(path)
+    found = [(span.line, f.code.code) for f in findings for span in (f.span, *f.places)]
+    assert sorted(found) == expected_findings(path)
 
 
 # --- the command -------------------------------------------------------------------
@@ -136,6 +139,23 @@ def test_make_config_merges_file_and_command_line():
     assert LintConfig().enabled("RMC820")
 
 
+@pytest.mark.parametrize("path", CASES, ids=[p.stem for p in CASES])
+def test_no_two_findings_say_the_same_thing(path):
+    """One finding per cause: no code and message twice in a report."""
+    findings = lint_program(ast.Program(parse_file(str(path))))
+    said = [(f.code.code, f.message) for f in findings]
+    assert len(said) == len(set(said))
+
+
+def test_a_repeated_finding_is_one_finding_with_its_places(monkeypatch):
+    monkeypatch.chdir(ROOT)
+    code, out, _ = run(["lint", "tests/lint/shared_index.mod", "--select", "RMC809"])
+    assert code == 1
+    assert out.count("PERS 'count' is used as an index") == 1
+    assert "note: the same at 1 more place: tests/lint/shared_index.mod line 32" in out
+    assert out.rstrip().endswith("2 findings (2 warnings)")
+
+
 def test_json_and_sarif_reports(monkeypatch):
     monkeypatch.chdir(ROOT)
     case = "tests/lint/flows.mod"
@@ -143,16 +163,21 @@ def test_json_and_sarif_reports(monkeypatch):
     document = json.loads(out)
     assert code == document["exit_code"] == 1
     flows = [f for f in document["findings"] if f["code"] == "RMC820"]
-    assert len(flows) == 6 and document["summary"]["warning"] == 6
+    # The socket read of line 15 reaches two late-bound calls (lines 16, 17): one finding.
+    assert len(flows) == 5 and document["summary"]["warning"] == 5
     first = flows[0]
     assert first["location"]["line"] == 16 and first["flow"][0]["line"] == 15
     assert first["flow"][-1]["line"] == 16
+    assert [p["line"] for p in first["places"]] == [17]
+    assert all(f["places"] == [] for f in flows[1:])
     code, out, _ = run(["lint", case, "--format", "sarif"])
     sarif = json.loads(out)
     results = sarif["runs"][0]["results"]
-    assert len(results) == 6 and all(r["level"] == "warning" for r in results)
+    assert len(results) == 5 and all(r["level"] == "warning" for r in results)
     steps = results[0]["codeFlows"][0]["threadFlows"][0]["locations"]
     assert [s["location"]["physicalLocation"]["region"]["startLine"] for s in steps] == [15, 16]
+    related = results[0]["relatedLocations"]
+    assert [r["physicalLocation"]["region"]["startLine"] for r in related] == [17]
 
 
 def test_a_syntax_error_is_reported_not_linted(tmp_path, monkeypatch):
@@ -189,7 +214,8 @@ def test_socket_to_move_finding_names_both_lines():
     finding = findings[0]
     assert finding.span.line == 14
     assert "line 11: SocketReceive reads message" in finding.message
-    assert "MoveL (line 14)" in finding.message
+    # the sink's line is the finding's own place (its other sinks, if any, are places)
+    assert "reaches the target of MoveL" in finding.message
     assert [span.line for span, _ in finding.flow] == [11, 12, 13, 14]
 
 

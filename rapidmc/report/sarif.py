@@ -76,6 +76,11 @@ def _diagnostic_results(diagnostics: Sequence[Diagnostic], rules: list, results:
             span = diagnostic.span
             result["locations"] = [_location(span.file, span.line, span.column,
                                              span.end_line if span.end_line > span.line else 0)]
+        if diagnostic.places:           # a finding given once per cause: its other places
+            result["relatedLocations"] = [
+                dict(id=number, message={"text": "the same finding"},
+                     **_location(span.file, span.line, span.column))
+                for number, span in enumerate(diagnostic.places, start=1)]
         if diagnostic.omitted:          # the last result of a capped report counts the rest
             result["properties"] = {"errorsNotShown": diagnostic.omitted}
         if diagnostic.flow:             # a lint flow: source, the steps between, sink

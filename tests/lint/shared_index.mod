@@ -1,5 +1,7 @@
 MODULE SharedIndex
   PERS num slot := 1;
+  PERS num count := 1;
+  PERS num mode := 1;
   VAR num local_slot := 1;
   VAR robtarget places{4};
   PERS tooldata gripper := [TRUE, [[0, 0, 150], [1, 0, 0, 0]], [1.5, [0, 0, 60], [1, 0, 0, 0], 0, 0, 0]];
@@ -15,10 +17,27 @@ MODULE SharedIndex
         MoveL places{slot}, v100, fine, gripper;
     ENDTEST
     Next;
+    Counted;
+    Moded;
   ENDPROC
 
   PROC Next()
     IF slot < 1 OR slot > Dim(places, 1) RETURN;
     places{slot} := CRobT();
+  ENDPROC
+
+  ! A count without a bound: each use is the same finding, reported once with its places.
+  PROC Counted()
+    MoveL places{count}, v100, fine, gripper;  ! expect: RMC809
+    MoveJ places{count}, v100, fine, gripper;  ! expect: RMC809
+    count := count + 1;
+  ENDPROC
+
+  ! Only ever set to constants: a wrong value is not plausible, no finding.
+  PROC Moded()
+    MoveL places{mode}, v100, fine, gripper;
+    mode := 2;
+    MoveL places{mode}, v100, fine, gripper;
+    mode := -1;
   ENDPROC
 ENDMODULE

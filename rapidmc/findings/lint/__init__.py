@@ -28,6 +28,7 @@ from typing import Optional
 
 from ... import ast
 from ...diagnostics import Diagnostic
+from ..grouping import one_per_cause
 from . import (blocking, call_rules, flexpendant, flows, precedence,  # noqa: F401
                shared_index, unreachable, unused)                     # (they register rules)
 from .config import LintConfig, suppressed
@@ -38,7 +39,8 @@ from .registry import RULES, Rule, severity_rank
 def lint_program(program: ast.Program, config: Optional[LintConfig] = None,
                  files: Optional[set] = None) -> list[Diagnostic]:
     """The findings of every enabled rule on ``program``, suppressed ones left out, sorted
-    by file, line and column; with ``files``, only findings in those files."""
+    by file, line and column, each cause once (``grouping``: the repeats are its
+    ``places``); with ``files``, only findings in those files."""
     config = config or LintConfig()
     context = LintContext(program)
     findings = []
@@ -46,7 +48,7 @@ def lint_program(program: ast.Program, config: Optional[LintConfig] = None,
         for code, entry in sorted(RULES.items()):
             findings.extend(_findings(code, entry, context, config, files))
     findings.sort(key=_order)
-    return findings
+    return one_per_cause(findings)
 
 
 @contextlib.contextmanager
