@@ -239,7 +239,7 @@ def test_the_other_places_of_a_finding_are_related_information():
     finding = Diagnostic(SHARED_INDEX, "PERS 'n' is used as an index", first, "warning",
                          places=(second,))
     shown = lsp_diagnostic(finding, [], lambda file: f"file:///work/{file}")
-    assert shown["message"].endswith("note: the same at 1 more place: idx.mod line 3")
+    assert shown["message"].endswith("note: 1 more place: idx.mod line 3")
     assert shown["relatedInformation"] == [
         {"location": {"uri": "file:///work/idx.mod",
                       "range": {"start": {"line": 2, "character": 10},

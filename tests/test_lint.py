@@ -152,7 +152,7 @@ def test_a_repeated_finding_is_one_finding_with_its_places(monkeypatch):
     code, out, _ = run(["lint", "tests/lint/shared_index.mod", "--select", "RMC809"])
     assert code == 1
     assert out.count("PERS 'count' is used as an index") == 1
-    assert "note: the same at 1 more place: tests/lint/shared_index.mod line 32" in out
+    assert "note: 1 more place: tests/lint/shared_index.mod line 32" in out
     assert out.rstrip().endswith("2 findings (2 warnings)")
 
 

@@ -224,7 +224,7 @@ def render(diagnostic: Diagnostic) -> str:
 
 def places_text(places) -> str:
     """The other places of a finding given once per cause, by file:
-    ``the same at 3 more places: m.mod lines 14, 22; n.mod line 5``."""
+    ``3 more places: m.mod lines 14, 22; n.mod line 5``."""
     by_file: dict[str, list[int]] = {}
     for span in places:
         lines = by_file.setdefault(span.file, [])
@@ -233,7 +233,7 @@ def places_text(places) -> str:
     parts = [f"{file} line{'s' if len(lines) > 1 else ''} {', '.join(map(str, lines))}"
              for file, lines in by_file.items()]
     count = len(places)
-    return f"the same at {count} more place{'s' if count != 1 else ''}: {'; '.join(parts)}"
+    return f"{count} more place{'s' if count != 1 else ''}: {'; '.join(parts)}"
 
 
 def render_all(diagnostics: Iterable[Diagnostic]) -> str:

@@ -38,7 +38,7 @@ case_studies/sorter/sorter_a.mod:73:34: warning: NOT negates the whole 'AND' cha
 * **One finding per cause**: a rule that finds the same thing at several places (one PERS
   used unchecked as an index in every line of a routine, one socket read reaching many move
   targets) gives one finding at the first place, with every other place: a note in text
-  (`the same at 3 more places: m.mod lines 14, 22, 30`), `places` in JSON, related
+  (`3 more places: m.mod lines 14, 22, 30`), `places` in JSON, related
   locations in SARIF and in the editor. A flow (RMC820) is one finding per source and kind of
   use (target, tool, speed ...), with the path to its first use as its flow.
 * **Exit code**: 1 when a finding at or above `--severity` remains (default `warning`:
