@@ -93,3 +93,14 @@ def test_entry_all_writes_a_page_per_entry(tmp_path):
     run(["check", PROGRAM.name, "--entry", "all", "--html", str(page), "--quiet"])
     written = sorted(p.name for p in tmp_path.iterdir())
     assert written == ["report.CalibrateCamera.html", "report.TestGripper.html", "report.html"]
+
+
+def test_a_backups_service_routines_are_its_main_tasks():
+    """In a backup, --entry names routines of the main task: its service routine is an
+    entry, the PLC task's stays a coverage warning."""
+    code, out, err = run(["check", "backup", "--entry", "all", "--format", "json", "--quiet"])
+    document = json.loads(out)
+    assert code == 0
+    assert [entry["entry"] for entry in document["entries"]] == ["main", "ServicePosition"]
+    assert [w["message"] for w in document["warnings"] if w["code"] == "RMC701"] == [
+        "never reached under any input (routine ResetPlc never runs)"]

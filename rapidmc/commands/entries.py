@@ -2,7 +2,8 @@
 
 A procedure without parameters that no routine calls is, on a real controller, most often
 started by hand from the FlexPendant ("PP to routine"). With ``--entry all`` each such
-routine is checked as an entry of its own, after the program's entry routine, with the
+routine of the main task (a backup's first motion task: ``--entry`` names its routines) is
+checked as an entry of its own, after the program's entry routine, with the
 same properties and options: one verdict table per entry, in every output format (text:
 a heading per entry; JSON: ``entries``; SARIF: a run per entry; JUnit: a suite per entry;
 HTML: a page per entry). Coverage covers every entry together: a line is reported as never
@@ -50,8 +51,9 @@ def check_every_entry(args: argparse.Namespace,
     """Check the program from its entry routine, then from each service routine."""
     first = prepare(_with_entry(args, "main"))
     program = first.program
-    names = [program.routines[program.entry].name] + [
-        routine.name for routine in service_routines(program)]
+    entry = program.routines[program.entry]
+    names = [entry.name] + [routine.name for routine in service_routines(program)
+                            if routine.namespace == entry.namespace]   # the main task's
     entries = [(names[0], api.check_model(first, progress=progress))]
     for name in names[1:]:
         model = prepare(_with_entry(args, name))
