@@ -228,6 +228,8 @@ class CheckReport:
     results: list[PropertyResult]
     warnings: list[Diagnostic]
     describer: RapidDescriber
+    # (file, line) of the statements the complete search ran (None: not complete)
+    executed: Optional[frozenset] = None
 
     @property
     def verdicts(self) -> dict[str, str]:
@@ -272,7 +274,8 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
     resting_on = assumptions(model.program)
     results = [replace(r, assumes=for_verdict(resting_on, r.result, model.describer))
                for r in results]
-    return CheckReport(results, _findings(model, results, searches.facts), model.describer)
+    return CheckReport(results, _findings(model, results, searches.facts), model.describer,
+                       searches.facts.executed())
 
 
 def _findings(model: Model, results: list[PropertyResult],

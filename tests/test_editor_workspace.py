@@ -229,3 +229,19 @@ def test_a_flow_is_related_information_step_by_step():
                                 "end": {"line": 2, "character": 9}}},
          "message": "MoveL takes it"}]
     assert "relatedInformation" not in lsp_diagnostic(Diagnostic(SYNTAX, "x", sink), [])
+
+
+def test_the_other_places_of_a_finding_are_related_information():
+    """A finding given once per cause (``findings.grouping``) lists its other places."""
+    from rapidmc.diagnostics import SHARED_INDEX, SourceCache
+    SourceCache.remember("idx.mod", "MODULE I\n  MoveL p{n};\n  MoveJ p{n};\n")
+    first, second = Span("idx.mod", 2, 11), Span("idx.mod", 3, 11)
+    finding = Diagnostic(SHARED_INDEX, "PERS 'n' is used as an index", first, "warning",
+                         places=(second,))
+    shown = lsp_diagnostic(finding, [], lambda file: f"file:///work/{file}")
+    assert shown["message"].endswith("note: 1 more place: idx.mod line 3")
+    assert shown["relatedInformation"] == [
+        {"location": {"uri": "file:///work/idx.mod",
+                      "range": {"start": {"line": 2, "character": 10},
+                                "end": {"line": 2, "character": 11}}},
+         "message": "the same finding"}]

@@ -17,14 +17,14 @@ from pathlib import Path
 
 from .. import api
 from ..check import Progress
-from ..report.results import format_json, format_text
+from ..report.results import format_json, format_json_entries, format_text
 from ..report.results import format_json_errors
 from ..diagnostics import USAGE, UserError, error, render_all
 from ..ltl import BACKENDS
 from ..load.backup import add_program_arguments
 from ..model.properties import Property, check_unique, read_property_file
 from ..model import reduction
-from . import storage_options
+from . import entries, storage_options
 from ..diagnostics.quoting import quoted, routine_name
 from .report_file import check_report_target, unwritable_reason, write_report
 
@@ -62,7 +62,9 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--env", action="append", default=[], metavar="FILE",
                         help="environment (plant) model module in RAPID (repeatable)")
     parser.add_argument("--entry", default="main", metavar="NAME", type=routine_name,
-                        help="procedure to start from (default: main)")
+                        help="procedure to start from (default: main); check: 'all' checks "
+                             "from the entry and from each procedure without parameters that "
+                             "no routine calls (service routines), a verdict table each")
     parser.add_argument("--max-states", type=int, default=DEFAULT_MAX_STATES, metavar="N",
                         help=f"bound on stored states per search (default {DEFAULT_MAX_STATES:,})")
     parser.add_argument("--max-seconds", type=float, default=None, metavar="S",
@@ -182,6 +184,8 @@ def execute(args: argparse.Namespace) -> int:
 
 def _check(args: argparse.Namespace) -> int:
     _refuse_unwritable_targets(args)
+    if entries.every_entry(args):
+        return _check_every_entry(args)
     report = api.check_model(prepare_model(args), progress=lambda: _progress(args.quiet))
     results, describer, warnings = report.results, report.describer, report.warnings
     exit_code = report.exit_code(args.fail_on_vacuous)
@@ -201,6 +205,34 @@ def _check(args: argparse.Namespace) -> int:
     if args.junit:
         from ..report.junit import format_junit
         write_report(args.junit, format_junit(results, describer, *_suite(args), warnings),
+                     "JUnit report")
+    return exit_code
+
+
+def _check_every_entry(args: argparse.Namespace) -> int:
+    """``--entry all``: a verdict table per entry routine, in every format."""
+    checked = entries.check_every_entry(args, prepare_model, lambda: _progress(args.quiet))
+    tables, warnings = checked.tables(), checked.warnings
+    exit_code = checked.exit_code(args.fail_on_vacuous)
+    if args.html:
+        from ..report.html import write_html
+        for path, (_, results, describer) in zip(
+                entries.html_paths(args.html, [entry for entry, *_ in tables]), tables):
+            write_html(path, results, describer, warnings)
+    if args.format == "json":
+        print(format_json_entries(tables, warnings, getattr(args, "command_line", None)), end="")
+    elif args.format == "sarif":
+        from ..report.sarif import format_sarif_entries
+        print(format_sarif_entries(tables, exit_code, warnings), end="")
+    else:
+        print("\n".join(f"entry {entry}:\n{format_text(results, describer, args.full_trace)}"
+                        for entry, results, describer in tables))
+        sys.stdout.flush()
+        if warnings:
+            print(render_all(warnings), file=sys.stderr)
+    if args.junit:
+        from ..report.junit import format_junit_entries
+        write_report(args.junit, format_junit_entries(tables, *_suite(args), warnings),
                      "JUnit report")
     return exit_code
 

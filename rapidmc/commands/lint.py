@@ -16,7 +16,7 @@ from pathlib import Path
 
 from .. import ast
 from ..diagnostics import EXIT_OK, EXIT_VIOLATED
-from ..findings.lint import failing, lint_program
+from ..findings.lint import failing, lint_tasks
 from ..findings.lint.config import make_config, read_pyproject
 from ..findings.lint.registry import SEVERITIES
 from ..load.backup import every_task, is_backup
@@ -48,11 +48,14 @@ def execute(args: argparse.Namespace) -> int:
     config = make_config(table, str(origin or "pyproject.toml"), _split(args.select),
                          _split(args.ignore), args.severity)
     findings, lines, files = [], 0, 0
-    for paths in _programs(args):
-        program = load_program(paths)
-        findings.extend(lint_program(program, config))
-        lines += _line_count(program)
-        files += len({module.span.file for module in program.modules})
+    for controller in _programs(args):
+        programs = [load_program(paths) for _, paths in controller]
+        for (task, _), program, found in zip(controller, programs, lint_tasks(programs, config)):
+            if args.task is not None and task is not None and task.upper() != args.task.upper():
+                continue
+            findings.extend(found)
+            lines += _line_count(program)
+            files += len({module.span.file for module in program.modules})
     exit_code = EXIT_VIOLATED if failing(findings, config.severity) else EXIT_OK
     if args.format == "json":
         sys.stdout.write(format_lint_json(findings, exit_code, lines))
@@ -67,18 +70,19 @@ def _split(values: list[str]) -> tuple[str, ...]:
     return tuple(part.strip() for value in values for part in value.split(",") if part.strip())
 
 
-def _programs(args) -> list[list[str]]:
-    """The programs to lint: the loose files as one, each task of each backup as one."""
-    loose, programs = [], []
+def _programs(args) -> list[list[tuple]]:
+    """The controllers to lint, each a list of (task name or None, the program's files): the
+    loose files as one program, each backup's tasks (all of them are read, for the PERS
+    data they change; ``--task`` keeps the findings of one)."""
+    loose, controllers = [], []
     for name in args.files:
         if is_backup(Path(name)):
-            programs.extend(modules for task, modules in every_task(Path(name))
-                            if args.task is None or task.upper() == args.task.upper())
+            controllers.append(list(every_task(Path(name))))
         else:
             loose.append(name)
     if loose:
-        programs.insert(0, program_paths(loose))
-    return programs
+        controllers.insert(0, [(None, program_paths(loose))])
+    return controllers
 
 
 def _line_count(program: ast.Program) -> int:

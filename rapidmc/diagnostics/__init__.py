@@ -157,6 +157,7 @@ class Diagnostic:
     subject: str = ""        # canonical name an unknown-name diagnostic is about
     omitted: int = 0         # a capped report's last diagnostic (RMC215): how many it leaves out
     flow: tuple = ()         # a lint flow (RMC820): (span, what happens there) from source to sink
+    places: tuple = ()       # a finding given once per cause: the spans of its other places
 
 
 class UserError(Exception):
@@ -218,7 +219,23 @@ def render(diagnostic: Diagnostic) -> str:
                 width = span.end_column - span.column
             out.append("    " + " " * max(span.column - 1, 0) + "^" + "~" * (width - 1))
     out.extend(f"  note: {note}" for note in diagnostic.notes)
+    if diagnostic.places:
+        out.append(f"  note: {places_text(diagnostic.places)}")
     return "\n".join(out)
+
+
+def places_text(places) -> str:
+    """The other places of a finding given once per cause, by file:
+    ``3 more places: m.mod lines 14, 22; n.mod line 5``."""
+    by_file: dict[str, list[int]] = {}
+    for span in places:
+        lines = by_file.setdefault(span.file, [])
+        if span.line not in lines:
+            lines.append(span.line)
+    parts = [f"{file} line{'s' if len(lines) > 1 else ''} {', '.join(map(str, lines))}"
+             for file, lines in by_file.items()]
+    count = len(places)
+    return f"{count} more place{'s' if count != 1 else ''}: {'; '.join(parts)}"
 
 
 def render_all(diagnostics: Iterable[Diagnostic]) -> str:

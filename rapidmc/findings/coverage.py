@@ -9,6 +9,12 @@ of one per line, and the other unreached statements of a routine one
 warning per stretch of lines with no reached statement between them
 (``lines 12-40``).  Only meaningful after a complete search: the caller
 asks for ``unreached`` only then.
+
+A procedure without parameters that no routine calls is, on a real controller, most
+often a service routine an operator starts by hand ("PP to routine": a calibration, a
+test move).  Those that never run are summed up in one warning naming them all
+(``service_routines``), instead of one warning each; ``check --entry all`` checks each
+of them as an entry of its own.
 """
 from __future__ import annotations
 
@@ -18,7 +24,7 @@ from typing import Hashable, Optional, Sequence
 from ..ast import Span
 from ..diagnostics import NEVER_REACHED, Diagnostic
 from ..model.reduction.merging import executed_spans
-from ..semantics.instructions import EndRoutine, EndUndo
+from ..semantics.instructions import Call, EndRoutine, EndUndo, LateCall
 from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
 
 NOT_STATEMENTS = (EndRoutine, EndUndo)      # ENDPROC / end of UNDO: not a line to run
@@ -92,6 +98,44 @@ class StatementWatch:
             recorded[id(one)] = one
         if len(executed) != before and self._asked is not None:
             self.saturated = self._asked <= executed
+
+
+def coverage_warnings(program: Program, executed: set[tuple[str, int]]) -> list[Diagnostic]:
+    """RMC701 warnings: the service routines that never run as one, then the rest."""
+    found = unreached(program, executed)
+    service = {routine.span for routine in service_routines(program)}
+    idle = [u for u in found if u.whole_routine and u.span in service]
+    warnings = [u.diagnostic() for u in found if u not in idle]
+    if len(idle) > 1:
+        warnings.append(_idle_service_routines(idle))
+    else:
+        warnings.extend(u.diagnostic() for u in idle)
+    return warnings
+
+
+def _idle_service_routines(idle: list[Unreached]) -> Diagnostic:
+    names = ", ".join(u.routine for u in idle)
+    return Diagnostic(
+        NEVER_REACHED, f"{len(idle)} routines never run: {names}", idle[0].span,
+        severity="warning", places=tuple(u.span for u in idle[1:]),
+        notes=("no routine calls them and they take no parameters: an operator may start "
+               "them by hand (PP to routine); 'check --entry all' checks each as an entry",))
+
+
+def service_routines(program: Program) -> list:
+    """The procedures without parameters that no routine calls (by name or as a
+    late-bound call's candidate) and that are no task's entry, in program order."""
+    called = {program.entry, *program.task_entries}
+    for routine in program.routines:
+        for instruction in routine.code:
+            if isinstance(instruction, Call):
+                called.add(instruction.routine.index)
+            elif isinstance(instruction, LateCall):
+                called.update(candidate.index for candidate, _ in
+                              instruction.candidates.values())
+    return [routine for routine in _watched_routines(program)
+            if routine.kind == "PROC" and not routine.parameters
+            and routine.index not in called]
 
 
 def unreached(program: Program, executed: set[tuple[str, int]]) -> list[Unreached]:

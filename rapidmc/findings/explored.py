@@ -18,7 +18,7 @@ from typing import Hashable, Iterable, Optional, Sequence
 from ..check import HOLDS, VIOLATED, find_reachable
 from ..check.result import SearchResult
 from .vacuity import TriggerWatch, to_text
-from .coverage import StatementWatch, unreached
+from .coverage import StatementWatch, coverage_warnings
 from ..diagnostics import Diagnostic
 from ..ltl import Formula
 from ..model.properties import AtomCompiler
@@ -82,11 +82,16 @@ class ExploredFacts:
         search = find_reachable(system, _nothing, observe=self, **bounds)
         self.complete = search.verdict == HOLDS
 
+    def executed(self) -> Optional[frozenset]:
+        """The (file, line) of every statement some reachable step runs; None unless the
+        search was complete."""
+        return frozenset(self.statements.executed) if self.complete else None
+
     def warnings(self) -> list[Diagnostic]:
         """Coverage warnings (RMC701); none unless the search was complete."""
         if not self.complete:
             return []
-        return [u.diagnostic() for u in unreached(self.program, self.statements.executed)]
+        return coverage_warnings(self.program, self.statements.executed)
 
     def vacuous(self, formula: Formula) -> Optional[str]:
         """The text of a trigger of ``formula`` that is never true, or None (or incomplete)."""

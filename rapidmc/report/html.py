@@ -108,9 +108,10 @@ def page_data(results: Sequence[PropertyResult], describer: TraceDescriber,
             located.extend(s["location"]["file"] for s in entry["trace"]["steps"]
                            if s["location"])
         properties.append(entry)
-    unreached = [{"file": w.span.file, "line": w.span.line,
-                  "end_line": max(w.span.line, w.span.end_line), "message": w.message}
-                 for w in warnings if w.span is not None and w.code is NEVER_REACHED]
+    unreached = [{"file": span.file, "line": span.line,
+                  "end_line": max(span.line, span.end_line), "message": w.message}
+                 for w in warnings if w.span is not None and w.code is NEVER_REACHED
+                 for span in (w.span, *w.places)]
     located.extend(entry["file"] for entry in unreached)
     return {"tool": f"rapidmc {__version__}", "files": source_files(describer, located),
             "properties": properties, "unreached": unreached}

@@ -1,7 +1,7 @@
 """JUnit XML output, the test report format CI servers (Jenkins, GitLab, Azure) read.
 
-One ``<testsuite>`` per run, named after the program; one ``<testcase>``
-per property (the built-in checks included):
+One ``<testsuite>`` per run, named after the program (``check --entry all``: one per
+entry routine); one ``<testcase>`` per property (the built-in checks included):
 
 * HOLDS — a passed test case;
 * VIOLATED — a ``<failure>`` whose ``message`` is the formula (after the
@@ -36,12 +36,27 @@ _NOT_XML = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ufffe\uffff]")
 def format_junit(results: Sequence[PropertyResult], describer: TraceDescriber,
                  suite_name: str, class_name: str, warnings: Sequence[Diagnostic] = ()) -> str:
     """The JUnit document for the verdicts of one ``check`` run."""
+    return _document(_verdict_suite(results, describer, suite_name, class_name, warnings))
+
+
+def format_junit_entries(entries: Sequence[tuple[str, Sequence[PropertyResult], TraceDescriber]],
+                         suite_name: str, class_name: str,
+                         warnings: Sequence[Diagnostic] = ()) -> str:
+    """The JUnit document of ``check --entry all``: a suite per entry routine, named
+    ``PROGRAM (entry NAME)``; the warnings of the whole check in the first suite."""
+    return _document(*(
+        _verdict_suite(results, describer, f"{suite_name} (entry {entry})", class_name,
+                       warnings if number == 0 else ())
+        for number, (entry, results, describer) in enumerate(entries)))
+
+
+def _verdict_suite(results, describer, suite_name, class_name, warnings) -> ET.Element:
     suite = _suite(suite_name)
     for checked in results:
         _property_case(suite, checked, describer, class_name)
     if warnings:
         ET.SubElement(suite, "system-out").text = "\n".join(render(w) for w in warnings) + "\n"
-    return _document(suite)
+    return suite
 
 
 def format_junit_diagnostics(diagnostics: Sequence[Diagnostic], suite_name: str,
@@ -88,19 +103,25 @@ def _property_case(suite: ET.Element, checked: PropertyResult, describer: TraceD
         ET.SubElement(case, "system-out").text = "".join(note + "\n" for note in notes)
 
 
-def _document(suite: ET.Element) -> str:
-    cases = suite.findall("testcase")
-    counts = {"tests": len(cases),
-              "failures": sum(case.find("failure") is not None for case in cases),
-              "errors": sum(len(case.findall("error")) > 0 for case in cases),
-              "skipped": sum(case.find("skipped") is not None for case in cases)}
-    for key, value in counts.items():
-        suite.set(key, str(value))
-    suite.set("time", _seconds(sum(float(case.get("time")) for case in cases)))
-    root = ET.Element("testsuites", name="rapidmc", tests=str(counts["tests"]),
-                      failures=str(counts["failures"]), errors=str(counts["errors"]),
-                      time=suite.get("time"))
-    root.append(suite)
+def _document(*suites: ET.Element) -> str:
+    totals = {"tests": 0, "failures": 0, "errors": 0, "seconds": 0.0}
+    for suite in suites:
+        cases = suite.findall("testcase")
+        counts = {"tests": len(cases),
+                  "failures": sum(case.find("failure") is not None for case in cases),
+                  "errors": sum(len(case.findall("error")) > 0 for case in cases),
+                  "skipped": sum(case.find("skipped") is not None for case in cases)}
+        for key, value in counts.items():
+            suite.set(key, str(value))
+        seconds = sum(float(case.get("time")) for case in cases)
+        suite.set("time", _seconds(seconds))
+        for key in ("tests", "failures", "errors"):
+            totals[key] += counts[key]
+        totals["seconds"] += seconds
+    root = ET.Element("testsuites", name="rapidmc", tests=str(totals["tests"]),
+                      failures=str(totals["failures"]), errors=str(totals["errors"]),
+                      time=_seconds(totals["seconds"]))
+    root.extend(suites)
     for element in root.iter():
         _clean(element)
     ET.indent(root)

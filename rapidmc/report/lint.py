@@ -42,6 +42,8 @@ def finding_json(finding: Diagnostic) -> dict:
                 "file": span.file, "line": span.line, "column": span.column,
                 "end_line": span.end_line, "end_column": span.end_column},
             "notes": list(finding.notes),
+            "places": [{"file": s.file, "line": s.line, "column": s.column}
+                       for s in finding.places],
             "flow": [{"file": s.file, "line": s.line, "column": s.column, "step": text}
                      for s, text in finding.flow]}
 

@@ -22,7 +22,7 @@ import re
 from typing import Callable, Optional, Sequence
 
 from ..ast import Span
-from ..diagnostics import Diagnostic, SourceCache
+from ..diagnostics import Diagnostic, SourceCache, places_text
 
 ERROR, WARNING, INFORMATION, HINT = 1, 2, 3, 4
 SEVERITIES = {"error": ERROR, "warning": WARNING, "note": INFORMATION, "info": INFORMATION,
@@ -62,17 +62,21 @@ def lsp_diagnostic(diagnostic: Diagnostic, lines: Sequence[str],
 
     A diagnostic that carries a flow (a lint finding's path from an input to where it is
     used: ``(span, what happens there)`` steps) gives each step as related information,
-    with ``uri_of(file)`` as its document."""
-    message = "\n".join((diagnostic.message,) + tuple(f"note: {n}" for n in diagnostic.notes))
+    with ``uri_of(file)`` as its document; so does each other place of a finding given once
+    per cause (``findings.grouping``)."""
+    places = getattr(diagnostic, "places", ())
+    notes = diagnostic.notes + ((places_text(places),) if places else ())
+    message = "\n".join((diagnostic.message,) + tuple(f"note: {n}" for n in notes))
     found = {"range": lsp_range(diagnostic.span, lines),
              "severity": SEVERITIES.get(diagnostic.severity, ERROR),
              "code": diagnostic.code.code, "source": SOURCE, "message": message}
-    flow = getattr(diagnostic, "flow", ())
-    if flow and uri_of is not None:
+    related = [*getattr(diagnostic, "flow", ()),
+               *((span, "the same finding") for span in places)]
+    if related and uri_of is not None:
         found["relatedInformation"] = [
             {"location": {"uri": uri_of(span.file),
                           "range": lsp_range(span, SourceCache.lines(span.file) or ())},
-             "message": what} for span, what in flow]
+             "message": what} for span, what in related]
     return found
 
 

@@ -173,6 +173,22 @@ def format_json(results: Sequence[PropertyResult], describer: Optional[TraceDesc
     return json.dumps(document, indent=2, ensure_ascii=False) + "\n"
 
 
+def format_json_entries(entries: Sequence[tuple[str, Sequence[PropertyResult], Optional[TraceDescriber]]],
+                        warnings: Sequence[Diagnostic] = (),
+                        command: Optional[Sequence[str]] = None) -> str:
+    """The JSON document of ``check --entry all``: ``entries``, one per entry routine with
+    its ``properties``, in place of ``properties``; the warnings of the whole check."""
+    document = {"schema": SCHEMA,
+                "command": list(command) if command is not None else None,
+                "entries": [{"entry": entry,
+                             "properties": [property_json(checked, describer)
+                                            for checked in results]}
+                            for entry, results, describer in entries],
+                "warnings": [warning_json(warning) for warning in warnings],
+                "errors": [], "errors_not_shown": 0}
+    return json.dumps(document, indent=2, ensure_ascii=False) + "\n"
+
+
 def format_json_errors(errors: Sequence[Diagnostic], command: Optional[Sequence[str]]) -> str:
     """The document of a ``check`` that stopped at input errors: no property, only errors."""
     return format_json((), None, (), command, errors)
@@ -201,7 +217,10 @@ def warning_json(warning: Diagnostic) -> dict:
     if span:
         location = {"file": span.file, "line": span.line, "column": span.column,
                     "end_line": max(span.end_line, span.line)}
-    return {"code": warning.code.code, "message": warning.message, "location": location}
+    return {"code": warning.code.code, "message": warning.message, "location": location,
+            "places": [{"file": place.file, "line": place.line, "column": place.column,
+                        "end_line": max(place.end_line, place.line)}
+                       for place in warning.places]}
 
 
 def error_json(diagnostic: Diagnostic) -> dict:

@@ -43,6 +43,21 @@ def format_sarif(results: Sequence[PropertyResult], describer: TraceDescriber,
     return _document(rules, sarif_results, exit_code)
 
 
+def format_sarif_entries(entries: Sequence[tuple[str, Sequence[PropertyResult], TraceDescriber]],
+                         exit_code: int, warnings: Sequence[Diagnostic] = ()) -> str:
+    """``check --entry all``: one run per entry routine (``automationDetails.id``
+    ``entry/NAME``); the warnings of the whole check in the first run."""
+    runs = []
+    for number, (entry, results, describer) in enumerate(entries):
+        run = json.loads(format_sarif(results, describer, exit_code,
+                                      warnings if number == 0 else ()))["runs"][0]
+        run["automationDetails"] = {"id": f"entry/{entry}"}
+        runs.append(run)
+    document = json.loads(_document([], [], exit_code))
+    document["runs"] = runs
+    return json.dumps(document, indent=2, ensure_ascii=False) + "\n"
+
+
 def _assumptions(results: Sequence[PropertyResult], rules: list, sarif_results: list) -> None:
     """What each verdict assumes (findings.assumptions): ``properties.assumes`` of the
     property's rule (every verdict; HOLDS gives no result) and of its result, if any."""
@@ -76,6 +91,11 @@ def _diagnostic_results(diagnostics: Sequence[Diagnostic], rules: list, results:
             span = diagnostic.span
             result["locations"] = [_location(span.file, span.line, span.column,
                                              span.end_line if span.end_line > span.line else 0)]
+        if diagnostic.places:           # a finding given once per cause: its other places
+            result["relatedLocations"] = [
+                dict(id=number, message={"text": "the same finding"},
+                     **_location(span.file, span.line, span.column))
+                for number, span in enumerate(diagnostic.places, start=1)]
         if diagnostic.omitted:          # the last result of a capped report counts the rest
             result["properties"] = {"errorsNotShown": diagnostic.omitted}
         if diagnostic.flow:             # a lint flow: source, the steps between, sink

@@ -18,8 +18,14 @@ MODULE Unused
     TPWrite "help";
   ENDPROC
 
-  PROC Forgotten()  ! expect: RMC807
+  PROC Forgotten(num times)  ! expect: RMC807
     TPWrite "nobody calls me";
+  ENDPROC
+
+  ! A global procedure without parameters nobody calls: an operator may start it from
+  ! the FlexPendant (PP to routine), no finding.
+  PROC ServicePosition()
+    TPWrite "service";
   ENDPROC
 
   PROC station1()

@@ -28,25 +28,30 @@ from typing import Optional
 
 from ... import ast
 from ...diagnostics import Diagnostic
+from ..grouping import one_per_cause
 from . import (blocking, call_rules, flexpendant, flows, precedence,  # noqa: F401
                shared_index, unreachable, unused)                     # (they register rules)
 from .config import LintConfig, suppressed
 from .context import LintContext
 from .registry import RULES, Rule, severity_rank
+from .shared_index import changed_data
 
 
 def lint_program(program: ast.Program, config: Optional[LintConfig] = None,
-                 files: Optional[set] = None) -> list[Diagnostic]:
+                 files: Optional[set] = None,
+                 other_tasks_change: frozenset = frozenset()) -> list[Diagnostic]:
     """The findings of every enabled rule on ``program``, suppressed ones left out, sorted
-    by file, line and column; with ``files``, only findings in those files."""
+    by file, line and column, each cause once (``grouping``: the repeats are its
+    ``places``); with ``files``, only findings in those files.  ``other_tasks_change``:
+    the PERS data other tasks of the controller change (``lint_tasks`` finds them)."""
     config = config or LintConfig()
-    context = LintContext(program)
+    context = LintContext(program, other_tasks_change)
     findings = []
     with _collector_paused():
         for code, entry in sorted(RULES.items()):
             findings.extend(_findings(code, entry, context, config, files))
     findings.sort(key=_order)
-    return findings
+    return one_per_cause(findings)
 
 
 @contextlib.contextmanager
@@ -60,6 +65,16 @@ def _collector_paused():
     finally:
         if enabled:
             gc.enable()
+
+
+def lint_tasks(programs: list[ast.Program],
+               config: Optional[LintConfig] = None) -> list[list[Diagnostic]]:
+    """The findings of each task of one controller: each linted as a program of its own,
+    knowing which PERS data the others change."""
+    changes = [changed_data(LintContext(program)) for program in programs]
+    return [lint_program(program, config, other_tasks_change=frozenset().union(
+                *(other for number, other in enumerate(changes) if number != own)))
+            for own, program in enumerate(programs)]
 
 
 def _findings(code, entry, context, config, files):
@@ -93,4 +108,4 @@ def failing(findings: list[Diagnostic], threshold: str) -> bool:
     return any(severity_rank(f.severity) >= limit for f in findings)
 
 
-__all__ = ["lint_program", "failing", "LintConfig", "RULES", "Rule"]
+__all__ = ["lint_program", "lint_tasks", "failing", "LintConfig", "RULES", "Rule"]

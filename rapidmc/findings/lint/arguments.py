@@ -60,3 +60,23 @@ def _bind(args, slots: list[list[str]]) -> dict[str, ast.Argument]:
 def argument_value(bound: dict, key: str) -> Optional[object]:
     argument = bound.get(key)
     return argument.value if argument is not None else None
+
+
+def by_reference(call, routines: dict, procedure: bool = True):
+    """The argument expressions of ``call`` that bind a parameter the routine may write
+    (VAR, INOUT, PERS).  Nothing for a routine whose declaration is not loaded (in an
+    encrypted module or an option): what it does is not known."""
+    found = routines.get(call.name.key)
+    if found is not None:
+        modes = {p.name.key: p.mode.upper() for p in found[0].parameters}
+        bound = bind_user(call, found[0])
+    else:
+        entry = (lookup_procedure if procedure else lookup_function)(call.name.key)
+        if entry is None or entry.signature.open_parameters:
+            return
+        modes = {p.key: p.mode.upper() for p in entry.signature.parameters}
+        bound = bind_predefined(call, procedure)
+    keys = {id(argument): key for key, argument in bound.items()}
+    for argument in call.args:
+        if argument.value is not None and modes.get(keys.get(id(argument)), "IN") != "IN":
+            yield argument.value

@@ -80,7 +80,7 @@ def _storage(declaration):
     return None
 
 
-@rule(OPTIONAL_CASE, "note",
+@rule(OPTIONAL_CASE, "note", default=False,
       bad="""
           MODULE M
             PERS tooldata gripper := [TRUE, [[0, 0, 150], [1, 0, 0, 0]], [1.5, [0, 0, 60], [1, 0, 0, 0], 0, 0, 0]];

@@ -35,8 +35,9 @@ class LintConfig:
     severities: dict = field(default_factory=dict)    # code -> severity
 
     def enabled(self, code: str) -> bool:
+        """Is the rule on: selected (no ``select``: every rule on by default), not ignored?"""
         rule = RULES[code]
-        chosen = not self.select or any(_matches(rule, s) for s in self.select)
+        chosen = any(_matches(rule, s) for s in self.select) if self.select else rule.default
         return chosen and not any(_matches(rule, s) for s in self.ignore)
 
     def severity_of(self, code: str) -> str:

@@ -115,9 +115,11 @@ def routine_sections(routine: ast.Routine) -> Iterator[tuple[str, tuple]]:
 class LintContext:
     """The program as the rules see it; every index is built once, on first use."""
 
-    def __init__(self, program: ast.Program):
+    def __init__(self, program: ast.Program, other_tasks_change: frozenset = frozenset()):
         self.program = program
         self.modules = program.modules
+        # keys of the PERS data the other tasks of a backup change (``shared_index``)
+        self.other_tasks_change = other_tasks_change
         self._calls_at: dict[int, list] = {}
         self.memo: dict[str, dict] = {}        # what a rule computes once per program
 

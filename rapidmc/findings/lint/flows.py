@@ -460,12 +460,14 @@ def unchecked_input(context):
         steps = analysis.chain(origin)
         steps.append((expression.span, f"{routine} takes it as its {what}"))
         source_span, source_step = steps[0]
+        # One finding per source and kind of use (grouping): its other sinks are places.
         yield Diagnostic(
             UNCHECKED_INPUT, f"input from {origin.source} (line {source_span.line}: "
-            f"{source_step}) reaches the {what} of {routine} (line {expression.span.line}) "
-            "with no check on the way", expression.span, severity="warning",
+            f"{source_step}) reaches the {what} of {routine} with no check on the way",
+            expression.span, severity="warning",
             notes=("bound the value with a comparison (IF ... < ... THEN) before this use",),
-            flow=tuple(steps))
+            flow=tuple(steps),
+            subject=f"{source_span.file}:{source_span.line}:{source_span.column} -> {what}")
 
 
 def has_sources(context) -> bool:

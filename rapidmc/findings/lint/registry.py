@@ -27,6 +27,7 @@ class Rule:
     good: str
     check: Callable[[object], Iterable[Diagnostic]]
     why: str = ""
+    default: bool = True          # on unless selected away; False: opt-in (``select``)
 
     @property
     def summary(self) -> str:
@@ -36,12 +37,15 @@ class Rule:
 RULES: dict[str, Rule] = {}
 
 
-def rule(code: ErrorCode, severity: str, bad: str, good: str, why: str = ""):
-    """Register the decorated function as the check of the rule ``code``."""
+def rule(code: ErrorCode, severity: str, bad: str, good: str, why: str = "",
+         default: bool = True):
+    """Register the decorated function as the check of the rule ``code``; ``default``
+    False: the rule runs only when a ``select`` names it (opt-in)."""
     assert severity in SEVERITIES and code.code not in RULES, code.code
 
     def register(check: Callable[[object], Iterable[Diagnostic]]):
-        RULES[code.code] = Rule(code, severity, _dedent(bad), _dedent(good), check, why)
+        RULES[code.code] = Rule(code, severity, _dedent(bad), _dedent(good), check, why,
+                                default)
         return check
     return register
 

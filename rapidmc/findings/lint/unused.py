@@ -4,7 +4,9 @@ Routine data and LOCAL module data are reported whenever nothing uses them.  Glo
 and TASK names are reported only in a program with a ``main`` procedure (a module
 linted alone may be a library for others) and never from a SYSMODULE; global PERS data
 is never reported (another task may share it; TASK PERS is the task's own), nor a
-routine whose name a string of the program could spell (``CallByVar``, ``%name%``).
+routine whose name a string of the program could spell (``CallByVar``, ``%name%``), nor
+a global procedure without parameters (an operator may start it by hand, "PP to routine":
+``check`` sums those up, and ``check --entry all`` checks each).
 """
 from __future__ import annotations
 
@@ -36,7 +38,7 @@ def _is_system(module: ast.Module) -> bool:
     return "SYSMODULE" in module.attributes
 
 
-@rule(UNUSED_DATA, "note",
+@rule(UNUSED_DATA, "note", default=False,
       bad="""
           MODULE M
             PROC main()
@@ -76,6 +78,12 @@ def unused_data(context):
             yield _unused(decl, f"{decl.storage} '{decl.name.text}'")
 
 
+def _service_routine(routine: ast.Routine) -> bool:
+    """A global procedure without parameters: one the operator may start from the
+    FlexPendant ("PP to routine"), as a calibration or a test move is."""
+    return routine.kind == ast.PROC and not routine.local and not routine.parameters
+
+
 def _unused(decl, what: str) -> Diagnostic:
     return Diagnostic(UNUSED_DATA, f"{what} is declared and never used", decl.name.span,
                       severity="note")
@@ -113,6 +121,8 @@ def unused_routine(context):
                 continue
             if any(key.startswith(text) for text in spelled):
                 continue
+            if _service_routine(routine):
+                continue                 # an operator may start it by hand
             kind = {ast.PROC: "procedure", ast.FUNC: "function", ast.TRAP: "trap"}[routine.kind]
             yield Diagnostic(UNUSED_ROUTINE, f"{kind} {routine.name.text} is never "
                              f"{'connected' if routine.kind == ast.TRAP else 'called'}",

@@ -1,0 +1,83 @@
+"""``rapidmc check ... --entry all``: the program from its entry and from each service routine.
+
+A procedure without parameters that no routine calls is, on a real controller, most often
+started by hand from the FlexPendant ("PP to routine"). With ``--entry all`` each such
+routine of the main task (a backup's first motion task: ``--entry`` names its routines) is
+checked as an entry of its own, after the program's entry routine, with the
+same properties and options: one verdict table per entry, in every output format (text:
+a heading per entry; JSON: ``entries``; SARIF: a run per entry; JUnit: a suite per entry;
+HTML: a page per entry). Coverage covers every entry together: a line is reported as never
+reached only when no entry's search ran it, and only when every search was complete.
+"""
+from __future__ import annotations
+
+import argparse
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable
+
+from .. import api
+from ..diagnostics import EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED, NEVER_REACHED, Diagnostic
+from ..findings.coverage import coverage_warnings, service_routines
+
+EVERY_ENTRY = "ALL"
+
+
+def every_entry(args: argparse.Namespace) -> bool:
+    """Does ``--entry`` ask for every entry (``all``, in any case as RAPID names are)?"""
+    return args.entry.upper() == EVERY_ENTRY
+
+
+@dataclass
+class EntryChecks:
+    """The reports of one program checked from each of its entries, the first the
+    program's own entry routine."""
+
+    entries: list[tuple[str, api.CheckReport]]
+    warnings: list[Diagnostic]
+
+    def exit_code(self, fail_on_vacuous: bool = False) -> int:
+        codes = {report.exit_code(fail_on_vacuous) for _, report in self.entries}
+        return next((code for code in (EXIT_VIOLATED, EXIT_UNKNOWN) if code in codes), EXIT_OK)
+
+    def tables(self) -> list[tuple]:
+        """(entry, results, describer) for each entry, as the report formats take them."""
+        return [(entry, report.results, report.describer) for entry, report in self.entries]
+
+
+def check_every_entry(args: argparse.Namespace,
+                      prepare: Callable[[argparse.Namespace], api.Model],
+                      progress) -> EntryChecks:
+    """Check the program from its entry routine, then from each service routine."""
+    first = prepare(_with_entry(args, "main"))
+    program = first.program
+    entry = program.routines[program.entry]
+    names = [entry.name] + [routine.name for routine in service_routines(program)
+                            if routine.namespace == entry.namespace]   # the main task's
+    entries = [(names[0], api.check_model(first, progress=progress))]
+    for name in names[1:]:
+        model = prepare(_with_entry(args, name))
+        entries.append((name, api.check_model(model, progress=progress)))
+    return EntryChecks(entries, _merged_warnings(program, entries))
+
+
+def _with_entry(args: argparse.Namespace, entry: str) -> argparse.Namespace:
+    return argparse.Namespace(**{**vars(args), "entry": entry})
+
+
+def _merged_warnings(program, entries) -> list[Diagnostic]:
+    """The first entry's warnings but coverage, then coverage of every entry's search."""
+    first = entries[0][1]
+    warnings = [w for w in first.warnings if w.code is not NEVER_REACHED]
+    executed = [report.executed for _, report in entries]
+    if all(lines is not None for lines in executed):
+        warnings.extend(coverage_warnings(program, frozenset().union(*executed)))
+    return warnings
+
+
+def html_paths(path: str, entries: list[str]) -> list[str]:
+    """The page of each entry: the given path for the first, ``NAME.ENTRY.html`` beside it
+    for the others."""
+    given = Path(path)
+    return [path] + [str(given.with_name(f"{given.stem}.{entry}{given.suffix or '.html'}"))
+                     for entry in entries[1:]]
