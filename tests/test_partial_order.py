@@ -12,11 +12,15 @@ from __future__ import annotations
 import contextlib
 import io
 import json
+import re
 from pathlib import Path
 
 import pytest
 
+from rapidmc.api import load_program
 from rapidmc.cli import main
+from rapidmc.model.reduction.partial_order import LOCAL, SHARED, VISIBLE, PartialOrder
+from rapidmc.model.reduction.relevance import atom_keys_of
 
 from task_programs import random_tasks, task_properties
 from test_check_cases import run_check, verdict_cases
@@ -169,3 +173,55 @@ def test_a_read_of_data_another_task_writes_is_not_reordered(tmp_path):
     expected = {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS", "never_two": "VIOLATED",
                 "never_zero": "VIOLATED"}
     assert verdicts(check_json(argv)) == verdicts(check_json(argv + ["--no-por"])) == expected
+
+
+FOOTPRINT_CASES = Path(__file__).resolve().parent / "por_footprints"
+_MARK = re.compile(r"!\s*(LOCAL|VISIBLE|SHARED)\s*$")
+
+
+@pytest.mark.parametrize("case", sorted(p for p in FOOTPRINT_CASES.iterdir() if p.is_dir()),
+                         ids=lambda p: p.name)
+def test_each_instruction_has_the_footprint_its_line_names(case):
+    """Every line ending in ``! LOCAL``, ``! VISIBLE`` or ``! SHARED`` compiles to
+    instructions of that footprint (``PartialOrder.footprint``), with the atoms of
+    ``atoms`` (one per line); the first file is the main task, each other one a task."""
+    files = sorted(case.glob("*.mod"))
+    program = load_program([str(files[0])], add_tasks=[str(f) for f in files[1:]])
+    atoms = (case / "atoms").read_text().splitlines()
+    order = PartialOrder(program, atom_keys_of(atoms))
+    names = {LOCAL: "LOCAL", VISIBLE: "VISIBLE", SHARED: "SHARED"}
+    entries = (program.entry,) + tuple(program.task_entries)
+    expected, found = {}, {}
+    for task, path in enumerate(files):
+        for number, line in enumerate(path.read_text().splitlines(), start=1):
+            mark = _MARK.search(line)
+            if mark:
+                expected[(path.name, number)] = {mark.group(1)}
+        for index in _routines_of_task(program, entries[task]):
+            for pc, instruction in enumerate(program.routines[index].code):
+                span = instruction.span
+                if span is not None and Path(span.file).name == path.name:
+                    found.setdefault((path.name, span.line), set()).add(
+                        names[order.footprint(task, index, pc)])
+    assert {key: found.get(key) for key in expected} == expected
+
+
+def _routines_of_task(program, entry: int) -> list[int]:
+    """The routines of the task whose entry routine is ``entry`` (those of its modules)."""
+    namespace = program.routines[entry].namespace
+    return [index for index, routine in enumerate(program.routines)
+            if routine.namespace == namespace]
+
+
+@pytest.mark.parametrize("case", sorted(p for p in FOOTPRINT_CASES.iterdir() if p.is_dir()),
+                         ids=lambda p: p.name)
+def test_footprint_cases_keep_their_verdicts(case):
+    """The same programs, checked with ``G atom`` and ``F atom`` per atom: the same
+    verdicts with and without the reduction."""
+    files = sorted(case.glob("*.mod"))
+    argv = [str(files[0])] + [x for f in files[1:] for x in ("--add-task", str(f))]
+    for number, atom in enumerate((case / "atoms").read_text().splitlines()):
+        argv += ["--formula", f"always{number}: G {atom}", "--formula", f"once{number}: F {atom}"]
+    reduced, full = check_json(argv), check_json(argv + ["--no-por"])
+    assert "UNKNOWN" not in verdicts(full).values()
+    assert verdicts(reduced) == verdicts(full)

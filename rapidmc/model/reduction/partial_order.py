@@ -10,7 +10,8 @@ Checking*, ch. 10) is every transition of one task ``t`` when
 * C1 its next instruction is *independent* of every other task
   (``PartialOrder.footprint``, decided once per instruction from its code): an
   assignment, condition, FOR step, jump (``fusion`` metadata: the instruction
-  as Python over ``store`` and ``locals_``) or the end of a procedure, that
+  as Python over ``store`` and ``locals_``), a call of a procedure without
+  arguments or the end of a procedure (ENDPROC, RETURN), that
   reads only data no other task writes and writes only data no other task can
   name (its own VAR data, TASK PERS, routine data, its own frames), reads no
   signal and calls nothing.  No step of another task depends on it or changes
@@ -48,7 +49,8 @@ from typing import NamedTuple, Optional
 from ... import ast
 from ...load.shared_data import data_uses
 from ...semantics.configured_signals import _walk_statements
-from ...semantics.instructions import Action, Branch, EndRoutine, ForInit, ForNext, Jump
+from ...semantics.instructions import (Action, Branch, Call, EndRoutine, ForInit, ForNext,
+                                       Jump, Return)
 from ...semantics.library.tasks import SyncWait
 from ...semantics.program import ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE, Program
 from ...semantics.scope import GLOBAL_DATA
@@ -142,11 +144,12 @@ class PartialOrder:
         stack = after[0] if task == 0 else after[10][task - 1]
         if not stack:
             return True              # the task ended (its EndRoutine was local: no barrier)
-        if len(stack) == len(before):
-            if stack[-1][3] != before[-1][3]:
-                return False         # an error: the frame went into its handler
-        elif len(stack) != len(before) - 1 or stack[-1][3] != before[-2][3]:
-            return False             # (a return: the caller goes on in its mode)
+        # the frame that went on (the caller's after a call or a return) keeps its mode:
+        # an error would have sent it into its handler
+        depth = len(stack) - len(before)
+        if depth not in (-1, 0, 1) or \
+                stack[-1 - max(depth, 0)][3] != before[min(depth, 0) - 1][3]:
+            return False
         return self.never_waits(stack[-1][0], stack[-1][1])
 
     def is_ample_candidate(self, task: int, routine: int, pc: int) -> bool:
@@ -180,7 +183,11 @@ class PartialOrder:
                                                     instruction.target_false):
                 return SHARED
             return LOCAL if self._reads_allowed(task, instruction.fusion) else SHARED
-        if kind is EndRoutine:
+        if kind is Call:
+            # entering a procedure without arguments pushes a frame of the task's own
+            return LOCAL if not instruction.binders and instruction.routine.kind == "PROC" \
+                else SHARED
+        if kind is EndRoutine or kind is Return and instruction.value_fn is None:
             # leaving a procedure writes only the task's frames; the task's last one ends
             # the task, which a barrier waiting for it observes (``blocked_at_barrier``)
             if routine.kind != "PROC":
@@ -207,7 +214,7 @@ class PartialOrder:
             return instruction.target != pc
         if kind is Branch:
             return pc not in (instruction.target_true, instruction.target_false)
-        if kind in (ForNext, ForInit, EndRoutine):
+        if kind in (ForNext, ForInit, EndRoutine, Call, Return):
             return True
         return kind is Action and instruction.fusion is not None
 
