@@ -20,9 +20,10 @@ Checking*, ch. 10) is every transition of one task ``t`` when
   observes: with barriers in the program it is not independent;
 * C2 it is invisible: it writes nothing an atom of the check names (by name:
   global or routine data), it cannot fail (no successor FAILED, ERRNO and the
-  frames' modes unchanged), and it leaves its task at an instruction whose
-  step always changes the state (``never_waits``), so ``waits(task)``, the
-  atom of ``no_deadlock``'s search (``model.waiting``), stays false;
+  frames' modes unchanged), and it leaves its task where it can go on (an
+  instruction whose step always changes the state, ``never_waits``, or one
+  of its steps from there does), so ``waits(task)``, the atom of
+  ``no_deadlock``'s search (``model.waiting``), stays false;
 * C3 cycle proviso: no successor it leads to has been expanded before.  Along
   a cycle of the reduced graph, the state whose successors were computed last
   has a successor computed earlier, so it is expanded fully: every cycle has
@@ -55,6 +56,7 @@ from ...semantics.library.tasks import SyncWait
 from ...semantics.program import ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE, Program
 from ...semantics.scope import GLOBAL_DATA
 from ...semantics.state import RUNNING, State
+from ...semantics.step import successors as semantic_successors
 from .relevance import DATA_BY_NAME
 
 _STORE_READ = re.compile(r"\bstore\[(\d+)\]")
@@ -106,37 +108,39 @@ class PartialOrder:
         self._local: dict = {}          # (task, routine, pc) -> bool
         self.expanded: set[int] = set()  # hashes of the states expanded (cycle proviso)
 
-    def ample(self, state: State, successors: list) -> list:
+    def ample(self, state: State, successors: list, config) -> list:
         """``successors`` (labelled, as ``RapidSystem.successors`` gives them) or the
-        ample subset of one task's transitions."""
+        ample subset of one task's transitions (``config``: the system's, with which a
+        task's steps are computed to tell whether it waits)."""
         expanded = self.expanded
         chosen = None
         if state[7] == RUNNING and not _has_interrupts(state[4]):
             stacks = (state[0],) + state[10]
             running = [task for task, stack in enumerate(stacks) if stack]
             if len(running) > 1:
-                chosen = self._choose(state, stacks, running, successors)
+                chosen = self._choose(state, stacks, running, successors, config)
         expanded.add(hash(state))
         return successors if chosen is None else chosen
 
-    def _choose(self, state: State, stacks: tuple, running: list,
-                successors: list) -> Optional[list]:
+    def _choose(self, state: State, stacks: tuple, running: list, successors: list,
+                config) -> Optional[list]:
         for task in running:
             frame = stacks[task][-1]
             if not self.is_ample_candidate(task, frame[0], frame[1]):
                 continue
             name = self.names[task]
             mine = [entry for entry in successors if (TASK_CHOICE, name) in entry[0][0]]
-            if mine and all(self._invisible_step(task, state, after) for _, after in mine):
+            if mine and all(self._invisible_step(task, state, after, config)
+                            for _, after in mine):
                 return mine
         return None
 
-    def _invisible_step(self, task: int, state: State, after: State) -> bool:
+    def _invisible_step(self, task: int, state: State, after: State, config) -> bool:
         """Whether a step of ``task`` from ``state`` to ``after`` may be ample: it did what
         its instruction does without an error (ERRNO is every task's, and a handler or an
-        unwinding changes the task's frames), it leaves the task where it cannot wait (so
-        ``waits(task)`` of ``no_deadlock``'s search stays false), and ``after`` is new to
-        the search (C3)."""
+        unwinding changes the task's frames), the task can go on in ``after`` (so
+        ``waits(task)`` of ``no_deadlock``'s search stays false, as in ``state``, where
+        its instruction was independent), and ``after`` is new to the search (C3)."""
         if after[7] != RUNNING or after == state or after[5] != state[5] or \
                 after[6] != state[6] or hash(after) in self.expanded:
             return False
@@ -150,7 +154,15 @@ class PartialOrder:
         if depth not in (-1, 0, 1) or \
                 stack[-1 - max(depth, 0)][3] != before[min(depth, 0) - 1][3]:
             return False
-        return self.never_waits(stack[-1][0], stack[-1][1])
+        return self.never_waits(stack[-1][0], stack[-1][1]) or \
+            self._goes_on(task, after, config)
+
+    def _goes_on(self, task: int, state: State, config) -> bool:
+        """Whether some step of ``task`` from ``state`` changes it: the task does not wait
+        there (``fairness.TaskFairness.excused``, for one task)."""
+        name = (TASK_CHOICE, self.names[task])
+        return any(name in transition.label and transition.state != state
+                   for transition in semantic_successors(self.program, state, config))
 
     def is_ample_candidate(self, task: int, routine: int, pc: int) -> bool:
         """Whether the instruction at ``pc`` of ``routine`` is independent of every step of
@@ -207,7 +219,8 @@ class PartialOrder:
 
     def never_waits(self, routine_index: int, pc: int) -> bool:
         """Whether a step of the instruction at ``pc`` always changes the state (moves the
-        task on or ends it): a task there does not wait (``model.waiting``)."""
+        task on or ends it): a task there does not wait (``model.waiting``), without
+        computing its steps."""
         instruction = self.program.routines[routine_index].code[pc]
         kind = type(instruction)
         if kind is Jump:
