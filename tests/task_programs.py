@@ -17,14 +17,25 @@ SHARED = ("PERS num shared := 0;", "PERS bool flag := FALSE;", "PERS bool lock :
           "PERS num inside := 0;")
 
 
-def random_tasks(seed: int) -> list[str]:
+def random_tasks(seed: int, procedures: bool = False) -> list[str]:
+    """``procedures``: each task also has a procedure of its own (statements as the loop's)
+    that its loop may call, so steps enter and leave routines (two tasks then: the
+    state spaces stay small enough for the search without reduction)."""
     rng = random.Random(seed)
-    return [_task(rng, number) for number in range(1, rng.randint(2, 3) + 1)]
+    count = 2 if procedures else rng.randint(2, 3)
+    return [_task(rng, number, procedures) for number in range(1, count + 1)]
 
 
-def _task(rng: random.Random, number: int) -> str:
+def _task(rng: random.Random, number: int, procedures: bool = False) -> str:
     own, mine = f"own{number}", f"mine{number}"
     body = [_statement(rng, own, mine, 3) for _ in range(rng.randint(2, 4))]
+    routines = []
+    if procedures:
+        call = f"    Step{number};"
+        body.insert(rng.randint(0, len(body)), "  " + call)
+        routines = [f"  PROC Step{number}()",
+                    *(_statement(rng, own, mine, 2) for _ in range(rng.randint(1, 2))),
+                    "  ENDPROC"]
     if rng.random() < 0.4:
         loop = ["    WHILE TRUE DO", *body, "    ENDWHILE"]
     else:
@@ -35,7 +46,7 @@ def _task(rng: random.Random, number: int) -> str:
     # a handler every other task: a failed division sets ERRNO (every task's) and goes on
     handler = ["  ERROR", f"    {own} := 1;", "    RETRY;"] if rng.random() < 0.5 else []
     return "\n".join([f"MODULE Task{number}", *declarations, "  PROC main()", *loop,
-                      *handler, "  ENDPROC", "ENDMODULE", ""])
+                      *handler, "  ENDPROC", *routines, "ENDMODULE", ""])
 
 
 def _statement(rng: random.Random, own: str, mine: str, indent: int) -> str:

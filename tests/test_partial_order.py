@@ -12,11 +12,15 @@ from __future__ import annotations
 import contextlib
 import io
 import json
+import re
 from pathlib import Path
 
 import pytest
 
+from rapidmc.api import load_program
 from rapidmc.cli import main
+from rapidmc.model.reduction.partial_order import LOCAL, SHARED, VISIBLE, PartialOrder
+from rapidmc.model.reduction.relevance import atom_keys_of
 
 from task_programs import random_tasks, task_properties
 from test_check_cases import run_check, verdict_cases
@@ -40,9 +44,9 @@ def states(document: dict) -> dict[str, int]:
     return {p["name"]: p["stats"]["product_states"] for p in document["properties"]}
 
 
-def write_tasks(folder: Path, seed: int) -> list[str]:
+def write_tasks(folder: Path, seed: int, procedures: bool = False) -> list[str]:
     argv = []
-    for number, text in enumerate(random_tasks(seed), start=1):
+    for number, text in enumerate(random_tasks(seed, procedures), start=1):
         path = folder / f"task{number}.mod"
         path.write_text(text)
         argv += [str(path)] if number == 1 else ["--add-task", str(path)]
@@ -60,6 +64,18 @@ def test_generated_tasks_keep_their_verdicts(tmp_path, seed):
     assert "UNKNOWN" not in verdicts(full).values(), states(full)
     assert verdicts(reduced) == verdicts(full)
     assert never_reached(reduced) == never_reached(full)      # coverage: the same lines
+
+
+@pytest.mark.parametrize("seed", range(40, 70))
+def test_generated_tasks_with_procedures_keep_their_verdicts(tmp_path, seed):
+    """Steps that enter and leave a task's own procedures are ample too (ENDPROC is local)."""
+    argv = write_tasks(tmp_path, seed, procedures=True)
+    if seed % 4 == 3:
+        argv.append("--no-fairness")
+    reduced, full = check_json(argv), check_json(argv + ["--no-por"])
+    assert "UNKNOWN" not in verdicts(full).values(), states(full)
+    assert verdicts(reduced) == verdicts(full)
+    assert never_reached(reduced) == never_reached(full)
 
 
 def never_reached(document: dict) -> set:
@@ -115,7 +131,7 @@ def test_five_independent_tasks_need_few_states(tmp_path):
     document = check_json(argv)
     assert verdicts(document) == {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS",
                                   "bounded": "HOLDS"}
-    assert max(states(document).values()) < 10_000
+    assert max(states(document).values()) <= 150       # SPIN: 71 (bench/por.py)
     full = check_json(argv + ["--no-por", "--max-states", "20000"])
     assert verdicts(full)["no_runtime_error"] == "UNKNOWN"     # every order: too many
 
@@ -157,3 +173,55 @@ def test_a_read_of_data_another_task_writes_is_not_reordered(tmp_path):
     expected = {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS", "never_two": "VIOLATED",
                 "never_zero": "VIOLATED"}
     assert verdicts(check_json(argv)) == verdicts(check_json(argv + ["--no-por"])) == expected
+
+
+FOOTPRINT_CASES = Path(__file__).resolve().parent / "por_footprints"
+_MARK = re.compile(r"!\s*(LOCAL|VISIBLE|SHARED)\s*$")
+
+
+@pytest.mark.parametrize("case", sorted(p for p in FOOTPRINT_CASES.iterdir() if p.is_dir()),
+                         ids=lambda p: p.name)
+def test_each_instruction_has_the_footprint_its_line_names(case):
+    """Every line ending in ``! LOCAL``, ``! VISIBLE`` or ``! SHARED`` compiles to
+    instructions of that footprint (``PartialOrder.footprint``), with the atoms of
+    ``atoms`` (one per line); the first file is the main task, each other one a task."""
+    files = sorted(case.glob("*.mod"))
+    program = load_program([str(files[0])], add_tasks=[str(f) for f in files[1:]])
+    atoms = (case / "atoms").read_text().splitlines()
+    order = PartialOrder(program, atom_keys_of(atoms))
+    names = {LOCAL: "LOCAL", VISIBLE: "VISIBLE", SHARED: "SHARED"}
+    entries = (program.entry,) + tuple(program.task_entries)
+    expected, found = {}, {}
+    for task, path in enumerate(files):
+        for number, line in enumerate(path.read_text().splitlines(), start=1):
+            mark = _MARK.search(line)
+            if mark:
+                expected[(path.name, number)] = {mark.group(1)}
+        for index in _routines_of_task(program, entries[task]):
+            for pc, instruction in enumerate(program.routines[index].code):
+                span = instruction.span
+                if span is not None and Path(span.file).name == path.name:
+                    found.setdefault((path.name, span.line), set()).add(
+                        names[order.footprint(task, index, pc)])
+    assert {key: found.get(key) for key in expected} == expected
+
+
+def _routines_of_task(program, entry: int) -> list[int]:
+    """The routines of the task whose entry routine is ``entry`` (those of its modules)."""
+    namespace = program.routines[entry].namespace
+    return [index for index, routine in enumerate(program.routines)
+            if routine.namespace == namespace]
+
+
+@pytest.mark.parametrize("case", sorted(p for p in FOOTPRINT_CASES.iterdir() if p.is_dir()),
+                         ids=lambda p: p.name)
+def test_footprint_cases_keep_their_verdicts(case):
+    """The same programs, checked with ``G atom`` and ``F atom`` per atom: the same
+    verdicts with and without the reduction."""
+    files = sorted(case.glob("*.mod"))
+    argv = [str(files[0])] + [x for f in files[1:] for x in ("--add-task", str(f))]
+    for number, atom in enumerate((case / "atoms").read_text().splitlines()):
+        argv += ["--formula", f"always{number}: G {atom}", "--formula", f"once{number}: F {atom}"]
+    reduced, full = check_json(argv), check_json(argv + ["--no-por"])
+    assert "UNKNOWN" not in verdicts(full).values()
+    assert verdicts(reduced) == verdicts(full)

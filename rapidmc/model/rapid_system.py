@@ -134,7 +134,7 @@ class RapidSystem:
             result = [((label, span, output), project(after))
                       for label, span, after, output, _ in transitions]
         if self.order is not None:
-            result = self.order.ample(state, result)
+            result = self.order.ample(state, result, self.config)
         if len(self._shared) < self.shared_limit and \
                 not is_plain(self.program, state, self.config):
             self._shared[state] = result

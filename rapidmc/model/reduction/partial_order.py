@@ -7,21 +7,30 @@ to follow one task: an *ample set* (Peled; Clarke, Grumberg, Peled, *Model
 Checking*, ch. 10) is every transition of one task ``t`` when
 
 * C0 the task has a transition (every one of them changes the state);
-* C1 its next instruction is *local*: an assignment, condition, FOR step or
-  jump (``fusion`` metadata: the instruction as Python over ``store`` and
-  ``locals_``) that reads only data no other task writes and writes only data
-  no other task can name (its own VAR data, TASK PERS, routine data), reads no
+* C1 its next instruction is *independent* of every other task
+  (``PartialOrder.footprint``, decided once per instruction from its code): an
+  assignment, condition, FOR step, jump (``fusion`` metadata: the instruction
+  as Python over ``store`` and ``locals_``), a call of a procedure without
+  arguments or the end of a procedure (ENDPROC, RETURN), that
+  reads only data no other task writes and writes only data no other task can
+  name (its own VAR data, TASK PERS, routine data, its own frames), reads no
   signal and calls nothing.  No step of another task depends on it or changes
-  whether it can run, so the other tasks' steps commute with it;
+  whether it can run, so the other tasks' steps commute with it.  The last
+  ENDPROC of a task ends it, which a barrier (WaitSyncTask, SyncMoveOn/Off)
+  observes: with barriers in the program it is not independent;
 * C2 it is invisible: it writes nothing an atom of the check names (by name:
-  global or routine data), it cannot fail (no successor FAILED), and the
-  task's next instruction after it is local too, so the task can go on
-  before and after (whether a task waits is an atom of ``no_deadlock``'s
-  search, ``model.waiting``);
+  global or routine data), it cannot fail (no successor FAILED, ERRNO and the
+  frames' modes unchanged), and it leaves its task where it can go on (an
+  instruction whose step always changes the state, ``never_waits``, or one
+  of its steps from there does), so ``waits(task)``, the atom of
+  ``no_deadlock``'s search (``model.waiting``), stays false;
 * C3 cycle proviso: no successor it leads to has been expanded before.  Along
-  a cycle of the reduced graph, the state expanded last has a successor
-  expanded earlier, so it is expanded fully: every cycle has a fully expanded
-  state.  (States are remembered by hash: a collision only expands fully.)
+  a cycle of the reduced graph, the state whose successors were computed last
+  has a successor computed earlier, so it is expanded fully: every cycle has
+  a fully expanded state, whatever the search order (the breadth-first safety
+  searches, the depth-first product search of an LTL property, several
+  searches over one system whose successors are remembered).  States are
+  remembered by hash: a collision only expands fully.
 
 Otherwise the state is expanded fully.  The reduced graph keeps every verdict
 of the LTL properties without X (next) over these atoms, reachability of
@@ -36,19 +45,42 @@ the verdicts against the unreduced search.
 from __future__ import annotations
 
 import re
-from typing import Optional
+from typing import NamedTuple, Optional
 
 from ... import ast
 from ...load.shared_data import data_uses
 from ...semantics.configured_signals import _walk_statements
-from ...semantics.instructions import Action, Branch, ForInit, ForNext, Jump
+from ...semantics.instructions import (Action, Branch, Call, EndRoutine, ForInit, ForNext,
+                                       Jump, Return)
+from ...semantics.library.tasks import SyncWait
 from ...semantics.program import ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE, Program
 from ...semantics.scope import GLOBAL_DATA
 from ...semantics.state import RUNNING, State
+from ...semantics.step import successors as semantic_successors
 from .relevance import DATA_BY_NAME
 
 _STORE_READ = re.compile(r"\bstore\[(\d+)\]")
 TASK_CHOICE = "task"
+
+
+class Footprint(NamedTuple):
+    """What one instruction of a task touches, decided from its code alone.
+
+    ``independent``: it reads only data no other task writes and writes only data
+    no other task can name (its own VAR data, TASK PERS, routine data, its own
+    frames), reads no signal and waits for nothing: every step of another task
+    commutes with it and neither enables nor disables it, as SPIN treats a
+    statement on local variables.  ``visible``: it may change the value of an atom
+    of the check (it writes data an atom names).
+    """
+
+    independent: bool
+    visible: bool
+
+
+LOCAL = Footprint(True, False)
+VISIBLE = Footprint(True, True)
+SHARED = Footprint(False, True)
 
 
 class PartialOrder:
@@ -69,83 +101,140 @@ class PartialOrder:
                                  if not any(written[other] and slot in written[other]
                                             for other in by if other != task))
                        for task in range(tasks)]
+        self.entries = (program.entry,) + tuple(program.task_entries)
+        # a barrier (WaitSyncTask, SyncMoveOn/Off) observes whether its partners have ended
+        self.barriers = any(isinstance(instruction, SyncWait)
+                            for routine in program.routines for instruction in routine.code)
         self._local: dict = {}          # (task, routine, pc) -> bool
         self.expanded: set[int] = set()  # hashes of the states expanded (cycle proviso)
 
-    def ample(self, state: State, successors: list) -> list:
+    def ample(self, state: State, successors: list, config) -> list:
         """``successors`` (labelled, as ``RapidSystem.successors`` gives them) or the
-        ample subset of one task's transitions."""
+        ample subset of one task's transitions (``config``: the system's, with which a
+        task's steps are computed to tell whether it waits)."""
         expanded = self.expanded
         chosen = None
         if state[7] == RUNNING and not _has_interrupts(state[4]):
             stacks = (state[0],) + state[10]
             running = [task for task, stack in enumerate(stacks) if stack]
             if len(running) > 1:
-                chosen = self._choose(state, stacks, running, successors)
+                chosen = self._choose(state, stacks, running, successors, config)
         expanded.add(hash(state))
         return successors if chosen is None else chosen
 
-    def _choose(self, state: State, stacks: tuple, running: list,
-                successors: list) -> Optional[list]:
+    def _choose(self, state: State, stacks: tuple, running: list, successors: list,
+                config) -> Optional[list]:
         for task in running:
             frame = stacks[task][-1]
-            if not self.is_local(task, frame[0], frame[1]):
+            if not self.is_ample_candidate(task, frame[0], frame[1]):
                 continue
             name = self.names[task]
             mine = [entry for entry in successors if (TASK_CHOICE, name) in entry[0][0]]
-            if mine and all(self._invisible_step(task, state, after) for _, after in mine):
+            if mine and all(self._invisible_step(task, state, after, config)
+                            for _, after in mine):
                 return mine
         return None
 
-    def _invisible_step(self, task: int, state: State, after: State) -> bool:
+    def _invisible_step(self, task: int, state: State, after: State, config) -> bool:
         """Whether a step of ``task`` from ``state`` to ``after`` may be ample: it did what
-        a local instruction does (no error raised: ERRNO is every task's, and a handler
-        or an unwinding changes the task's frames), its task goes on with a local
-        instruction, and ``after`` is new to the search (C3)."""
+        its instruction does without an error (ERRNO is every task's, and a handler or an
+        unwinding changes the task's frames), the task can go on in ``after`` (so
+        ``waits(task)`` of ``no_deadlock``'s search stays false, as in ``state``, where
+        its instruction was independent), and ``after`` is new to the search (C3)."""
         if after[7] != RUNNING or after == state or after[5] != state[5] or \
                 after[6] != state[6] or hash(after) in self.expanded:
             return False
         before = state[0] if task == 0 else state[10][task - 1]
         stack = after[0] if task == 0 else after[10][task - 1]
-        return len(stack) == len(before) and stack[-1][3] == before[-1][3] and \
-            self.is_local(task, stack[-1][0], stack[-1][1])
+        if not stack:
+            return True              # the task ended (its EndRoutine was local: no barrier)
+        # the frame that went on (the caller's after a call or a return) keeps its mode:
+        # an error would have sent it into its handler
+        depth = len(stack) - len(before)
+        if depth not in (-1, 0, 1) or \
+                stack[-1 - max(depth, 0)][3] != before[min(depth, 0) - 1][3]:
+            return False
+        return self.never_waits(stack[-1][0], stack[-1][1]) or \
+            self._goes_on(task, after, config)
 
-    def is_local(self, task: int, routine: int, pc: int) -> bool:
-        """Whether the instruction at ``pc`` of ``routine`` is local to ``task`` (C1, C2)."""
+    def _goes_on(self, task: int, state: State, config) -> bool:
+        """Whether some step of ``task`` from ``state`` changes it: the task does not wait
+        there (``fairness.TaskFairness.excused``, for one task)."""
+        name = (TASK_CHOICE, self.names[task])
+        return any(name in transition.label and transition.state != state
+                   for transition in semantic_successors(self.program, state, config))
+
+    def is_ample_candidate(self, task: int, routine: int, pc: int) -> bool:
+        """Whether the instruction at ``pc`` of ``routine`` is independent of every step of
+        the other tasks (C1) and changes no atom of the check (C2)."""
         key = (task, routine, pc)
         found = self._local.get(key)
         if found is None:
-            found = self._local[key] = self._classify(task, routine, pc)
+            footprint = self.footprint(task, routine, pc)
+            found = self._local[key] = footprint.independent and not footprint.visible
         return found
 
-    def _classify(self, task: int, routine_index: int, pc: int) -> bool:
+    def footprint(self, task: int, routine_index: int, pc: int) -> "Footprint":
+        """What the instruction at ``pc`` of ``routine`` touches, as far as the other tasks
+        and the atoms are concerned (see ``Footprint``)."""
         routine = self.program.routines[routine_index]
         instruction = routine.code[pc]
         kind = type(instruction)
         if instruction.reads_io:
-            return False
+            return SHARED                # a signal: another task or the cell may set it
         if kind is Jump:
-            return instruction.target != pc
+            return LOCAL if instruction.target != pc else SHARED
         if kind is ForNext:
-            return not self._visible_local(routine, instruction.slot)
+            return self._local_write(routine, instruction.slot)
         if kind is ForInit:
-            return instruction.fusion is not None and \
-                self._reads_allowed(task, *instruction.fusion) and \
-                not self._visible_local(routine, instruction.slot)
+            if instruction.fusion is None or not self._reads_allowed(task, *instruction.fusion):
+                return SHARED
+            return self._local_write(routine, instruction.slot)
         if kind is Branch:
-            return instruction.fusion is not None and pc not in (
-                instruction.target_true, instruction.target_false) and \
-                self._reads_allowed(task, instruction.fusion)
+            if instruction.fusion is None or pc in (instruction.target_true,
+                                                    instruction.target_false):
+                return SHARED
+            return LOCAL if self._reads_allowed(task, instruction.fusion) else SHARED
+        if kind is Call:
+            # entering a procedure without arguments pushes a frame of the task's own
+            return LOCAL if not instruction.binders and instruction.routine.kind == "PROC" \
+                else SHARED
+        if kind is EndRoutine or kind is Return and instruction.value_fn is None:
+            # leaving a procedure writes only the task's frames; the task's last one ends
+            # the task, which a barrier waiting for it observes (``blocked_at_barrier``)
+            if routine.kind != "PROC":
+                return SHARED
+            ends_task = routine_index == self.entries[task]
+            return SHARED if ends_task and self.barriers else LOCAL
         if kind is Action and instruction.fusion is not None:
             where, slot, value = instruction.fusion
+            if not self._reads_allowed(task, value):
+                return SHARED
             if where == "store":
-                data = self.program.globals[slot]
-                if slot not in self.own[task] or data.key in self.visible:
-                    return False
-            elif self._visible_local(routine, slot):
-                return False
-            return self._reads_allowed(task, value)
-        return False
+                if slot not in self.own[task]:
+                    return SHARED
+                return VISIBLE if self.program.globals[slot].key in self.visible else LOCAL
+            return self._local_write(routine, slot)
+        return SHARED
+
+    def never_waits(self, routine_index: int, pc: int) -> bool:
+        """Whether a step of the instruction at ``pc`` always changes the state (moves the
+        task on or ends it): a task there does not wait (``model.waiting``), without
+        computing its steps."""
+        instruction = self.program.routines[routine_index].code[pc]
+        kind = type(instruction)
+        if kind is Jump:
+            return instruction.target != pc
+        if kind is Branch:
+            return pc not in (instruction.target_true, instruction.target_false)
+        if kind in (ForNext, ForInit, EndRoutine, Call, Return):
+            return True
+        return kind is Action and instruction.fusion is not None
+
+    def _local_write(self, routine, slot: int) -> "Footprint":
+        """A write of routine data (a local variable, a FOR variable): visible when an
+        atom names it or its routine."""
+        return VISIBLE if self._visible_local(routine, slot) else LOCAL
 
     def _reads_allowed(self, task: int, *compiled) -> bool:
         """Whether the expressions read only data no other task writes, and no signal."""
