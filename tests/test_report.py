@@ -138,7 +138,8 @@ def test_json_follows_the_documented_schema():
     assert [p["verdict"] for p in properties] == ["HOLDS", "VIOLATED", "UNKNOWN", "VIOLATED"]
     for entry in properties:
         assert list(entry) == ["name", "formula", "verdict", "reason", "stats", "trace",
-                               "vacuous", "fair_tasks", "assumes", "pattern"]
+                               "vacuous", "vacuous_inputs", "fair_tasks", "assumes",
+                               "pattern"]
         assert entry["fair_tasks"] is None        # one task: no fairness assumed
         assert list(entry["stats"]) == STATS_KEYS
         assert (entry["trace"] is None) == (entry["verdict"] != "VIOLATED")

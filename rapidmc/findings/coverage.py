@@ -1,5 +1,8 @@
 """Coverage: the statements of a program that no input sequence reaches.
 
+"No input" means every value the check offered each input; where an input was
+offered a sample only (``tried_inputs``), the warning says so and names it.
+
 Shown the whole reachable state graph (``StatementWatch`` is an observer
 for ``find_reachable``), the statements executed by some transition are
 known (a merged step names every instruction it ran); every other statement of the program — the environment model
@@ -34,14 +37,15 @@ class Unreached:
     whole_routine: bool
     last_line: int = 0            # the last line of the stretch (0: the statement's own)
 
-    def diagnostic(self) -> Diagnostic:
-        message = "never reached under any input"
+    def diagnostic(self, inputs: str = "under any input") -> Diagnostic:
+        """The warning; ``inputs`` says which inputs it holds for (``tried_inputs.qualifier``)."""
+        message = f"never reached {inputs}"
         span = self.span
         if self.whole_routine:
             message += f" (routine {self.routine} never runs)"
         elif self.last_line > span.line:
             message = f"lines {span.line}-{self.last_line} of {self.routine} are never " \
-                      "reached under any input"
+                      f"reached {inputs}"
             span = Span(span.file, span.line, span.column, self.last_line, 0)
         return Diagnostic(NEVER_REACHED, message, span, severity="warning")
 
