@@ -36,6 +36,7 @@ SERVER = """MODULE Server
 {body}
         ENDWHILE
     ENDPROC
+{extra}
 ENDMODULE
 """
 
@@ -88,9 +89,9 @@ def test_a_well_formed_text_parses_into_its_type():
     assert well_formed(ArrayType(NUM, (5,))) == "[1,2,3,4,5]"
 
 
-def check_server(tmp_path, body: str, **options) -> api.CheckReport:
+def check_server(tmp_path, body: str, extra: str = "", **options) -> api.CheckReport:
     path = tmp_path / "server.mod"
-    path.write_text(SERVER.format(body=body))
+    path.write_text(SERVER.format(body=body, extra=extra))
     prop = api.property_from_text('never3: G("state = 3" -> F "state = 0")')
     return api.check(api.load_program([str(path)]), [prop], api.CheckOptions(**options))
 
@@ -122,3 +123,16 @@ def test_socket_messages_given_replace_the_derived_domain(tmp_path, body):
     assert not [w for w in report.warnings if w.code.code == "RMC515"]
     assert all("with the socket messages tried (SocketReceive at line 14)" in message
                for message in coverage(report))
+
+
+def test_a_routine_no_call_leads_to_is_never_reached_under_any_input(tmp_path):
+    unused = "    PROC Unused()\n        state := 5;\n    ENDPROC"
+    report = check_server(tmp_path, PARSED, unused)
+    assert coverage(report) == [
+        "never reached with the socket messages tried (SocketReceive at line 14)",
+        "never reached under any input (routine Unused never runs)"]
+
+
+def test_a_parsed_code_dispatched_by_test_gets_each_case_number_as_fields():
+    [(_, _, messages, exact)] = domains_of("socket_parsed_code")
+    assert {"1 1 #", "2 2 #", "99 99 #"} <= set(messages) and not exact

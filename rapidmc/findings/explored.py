@@ -19,7 +19,7 @@ from ..check import HOLDS, VIOLATED, find_reachable
 from ..check.result import SearchResult
 from .vacuity import TriggerWatch, to_text
 from .coverage import StatementWatch, unreached
-from .tried_inputs import TriedInput, qualifier, reached
+from .tried_inputs import TriedInput, called_routines, qualifier, reached
 from ..diagnostics import Diagnostic
 from ..ltl import Formula
 from ..model.properties import AtomCompiler
@@ -91,7 +91,10 @@ class ExploredFacts:
         if not self.complete:
             return []
         inputs = self.inputs_tried()
-        return [u.diagnostic(inputs) for u in unreached(self.program, self.statements.executed)]
+        called = called_routines(self.program) if inputs != qualifier(()) else None
+        return [u.diagnostic(qualifier(()) if called is not None and u.routine not in called
+                             else inputs)
+                for u in unreached(self.program, self.statements.executed)]
 
     def inputs_tried(self) -> str:
         """``under any input``, or which sampled inputs the search's findings rest on

@@ -194,6 +194,7 @@ class Uses:
         self.fields: dict[tuple, set] = {}       # (start, encoding, network) -> numbers compared
         self.numbers: set = set()                # numbers the whole value is compared with
         self.extent = 0                          # bytes the unpacked fields span
+        self.parsed_numbers: list = []           # (view of the text, number) parsed, compared
         self.exact = True                        # every read tells apart only what was tried
 
     def follow(self, start: dict) -> None:
@@ -221,6 +222,8 @@ class Uses:
         elif isinstance(node, ast.Return) and node.value is not None \
                 and self.carries(node.value) and routine.ast.kind == ast.FUNC:
             self.functions.add(routine.ast.name.key)
+        elif isinstance(node, ast.FunctionCall) and node.name.key == "STRTOVAL":
+            self._parsed_into(node)
         elif isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
             self._arguments(node)
 
@@ -259,6 +262,17 @@ class Uses:
             if parameter.mode in ("VAR", "INOUT") and parameter.name.key in self.views \
                     and target is not None:
                 self.views.setdefault(target, set()).update(self.views[parameter.name.key])
+
+    def _parsed_into(self, call) -> None:
+        """The target of ``StrToVal(text, x)`` holds a number parsed from where ``text``
+        was taken: its comparisons give texts of the numbers (``TEST code CASE 1, 2``)."""
+        values = [a.value for a in call.args if a.kind == ast.REQUIRED]
+        if len(values) != 2 or not self.carries(values[0]):
+            return
+        target = _base_name(values[1])
+        if target is not None:
+            self.views.setdefault(target, set()).update(
+                ("parsed", view) for view in self.view_of(values[0]))
 
     def _unpacked(self, call) -> None:
         positional = [a.value for a in call.args if a.kind == ast.REQUIRED and a.name is None]
@@ -344,6 +358,8 @@ class Uses:
         for view in views:
             if view is not None and view[0] == "field":
                 self.fields.setdefault(view[1:], set()).add(number)
+            elif view is not None and view[0] == "parsed":
+                self.parsed_numbers.append((view[1], number))
 
     def _searched(self, call, scope) -> None:
         values = [a.value for a in call.args if a.kind == ast.REQUIRED]
@@ -367,14 +383,17 @@ class Uses:
 
     def text_messages(self) -> tuple[tuple, str]:
         """The string messages that tell the code's choices apart, and what they come from."""
-        messages: list[str] = []
         heads = [text for view, text in self.compared if view in (IDENTITY, ("part", 1))]
-        for view, text in self.compared:
-            messages.extend(_placed(view, text, self.searched, heads))
+        wanted = [(view, text) for view, text in self.compared]
+        wanted += [(view, format_num(number)) for view, number in self.parsed_numbers]
         for view, rapid_type in self.parsed:
             good = well_formed(rapid_type)
-            for text in ((good,) if good is not None else ()) + (MALFORMED,):
-                messages.extend(_placed(view, text, self.searched, heads))
+            wanted += [(view, text) for text in ((good,) if good is not None else ())
+                       + (MALFORMED,)]
+        # each value's likeliest message first, then the next of each (the cap keeps the first)
+        ranked = [list(_placed(view, text, self.searched, heads)) for view, text in wanted]
+        messages = [forms[rank] for rank in range(max(map(len, ranked), default=0))
+                    for forms in ranked if rank < len(forms)]
         messages.extend(self.searched)
         bounded = list(dict.fromkeys(messages))[:MAX_MESSAGES - 1]
         if self.compared or self.searched or not self.parsed:
@@ -396,16 +415,21 @@ class Uses:
         types = list(dict.fromkeys(str(t) for _, t in self.parsed))
         if types:
             parts.append("parsed by StrToVal as " + ", ".join(types))
+        numbers = list(dict.fromkeys(n for _, n in self.parsed_numbers))
+        if numbers:
+            parts.append("parsed numbers compared with "
+                         + ", ".join(_number_text(n) for n in numbers[:8])
+                         + (", ..." if len(numbers) > 8 else ""))
         if not parts:
             return "not compared with anything: one text"
-        if not strings and not self.searched:
+        if not strings and not self.searched and not numbers:
             return "; ".join(parts) + ": a well-formed and a malformed text"
         return "; ".join(parts) + "; and one the program does not expect"
 
     def well_formed_only(self) -> tuple:
         """For data only parsed (StrToVal), not compared or searched: the well-formed texts
         alone (a narrower domain); else ()."""
-        if self.compared or self.searched or not self.parsed:
+        if self.compared or self.searched or self.parsed_numbers or not self.parsed:
             return ()
         texts = (well_formed(rapid_type) for _, rapid_type in self.parsed)
         return tuple(dict.fromkeys(text for text in texts if text is not None))
@@ -441,20 +465,38 @@ class Uses:
 
 
 def _placed(view, text: str, separators: list, heads: list) -> Iterator[str]:
-    """Messages in which a value taken by ``view`` reads ``text``: a part at a position
-    after the filler, or after each text compared with the message's start that ends
-    just before it (``"JNT:"`` for ``StrPart(msg, 5, ...)``)."""
+    """Messages in which a value taken by ``view`` reads ``text``.
+
+    The whole message: ``text``.  A part at a position: after the filler, or after each
+    text compared with the message's start that ends just before it (``"JNT:"`` for
+    ``StrPart(msg, 5, ...)``).  A part whose end, or a value whose place, the code finds
+    at run time (StrFind, StrMatch): the text as the first of fields split at the
+    separator sought most often and ended by each other one (``"1 1 #"``), alone, and
+    followed by each separator."""
+    if view == IDENTITY:
+        yield text
+        return
+    prefixes = [""]
     if view is not None and view[0] == "part":
         before = view[1] - 1
-        yield FILLER * before + text
-        for head in dict.fromkeys(heads):
-            if 0 < len(head) <= before:
-                yield head + FILLER * (before - len(head)) + text
-        return
+        prefixes = [FILLER * before] + [head + FILLER * (before - len(head))
+                                         for head in dict.fromkeys(heads)
+                                         if 0 < len(head) <= before]
+    for prefix in prefixes:
+        for form in _fields(text, separators):
+            yield prefix + form
+
+
+def _fields(text: str, separators: list) -> Iterator[str]:
+    counts = {separator: separators.count(separator) for separator in separators}
+    # the separator sought most often most likely splits fields; each other ends them
+    for field in sorted(counts, key=lambda s: (-counts[s], separators.index(s))):
+        for last in counts:
+            if last != field:
+                yield text + field + text + field + last
     yield text
-    if view is None:              # taken from the message some other way: text and what follows
-        for separator in dict.fromkeys(separators):
-            yield text + separator
+    for separator in counts:
+        yield text + separator
 
 
 def _field_points(numbers: list, encoding: tuple) -> tuple:
