@@ -43,7 +43,9 @@ from .diagnostics.quoting import one_line, quoted
 from .findings.assumptions import assumptions, for_verdict
 from .findings.explored import ExploredFacts
 from .findings.fixed_readings import fixed_readings
+from .findings.tried_inputs import sampled_inputs
 from .load.backup import link_options, load_tasks, resolve_program_files
+from .load.message_domains import ANSWERS, FILE, SOCKET, message_domains, site_key
 from .load.shared_data import pers_warnings
 from .ltl import read_hoa, to_buchi
 from .ltl.syntax import Not
@@ -161,6 +163,7 @@ class Model:
     describer: RapidDescriber
     plan: reduction.Plan = reduction.NO_PLAN
     assumed: tuple = ()   # input_domains.Assumed: default domains of free AI/GI inputs
+    messages: tuple = ()  # message_domains.MessageDomain: derived socket message domains
 
 
 def prepare(program: Program, properties: Sequence[Property],
@@ -173,8 +176,11 @@ def prepare(program: Program, properties: Sequence[Property],
     domains, assumed = free_input_domains(program, atoms, options.input_domains)
     config = CheckConfig(program, options.tp_answers, options.fk_answers, domains,
                          observed=observed_inputs(program, atoms))
+    messages = _derived_domains(program, options)
     if options.socket_messages:
         config.socket_messages = tuple(options.socket_messages)
+    for kind, name in DERIVED_DOMAINS.items():
+        setattr(config, name, {site_key(d.site): d.messages for d in messages if d.kind == kind})
     config.socket_closures = options.socket_closures
     config.socket_timeouts = options.socket_timeouts
     if options.file_lines:
@@ -189,7 +195,19 @@ def prepare(program: Program, properties: Sequence[Property],
         options.reductions)
     return Model(program, properties, options, atoms, jobs, config,
                  RapidSystem(program, config, plan), RapidDescriber(program, config), plan,
-                 assumed)
+                 assumed, messages)
+
+
+# message_domains kind -> the CheckConfig attribute holding its domains per reading site
+DERIVED_DOMAINS = {SOCKET: "socket_domains", FILE: "file_domains", ANSWERS: "answer_domains"}
+
+
+def _derived_domains(program: Program, options: CheckOptions) -> tuple:
+    """The domains ``message_domains`` derives, for the inputs whose values no option gives
+    (``--socket-messages``, ``--file-lines``, ``--tp-answers`` replace them all)."""
+    given = {SOCKET: bool(options.socket_messages), FILE: bool(options.file_lines),
+             ANSWERS: options.tp_answers != CheckOptions.tp_answers}
+    return tuple(d for d in message_domains(program) if not given[d.kind])
 
 
 def _automaton(prop: Property, atoms: AtomCompiler, options: CheckOptions):
@@ -230,6 +248,8 @@ class CheckReport:
     describer: RapidDescriber
     # (file, line) of the statements the complete search ran (None: not complete)
     executed: Optional[frozenset] = None
+    # the inputs coverage rests on: "under any input" or "with the ... tried (...)"
+    inputs_tried: str = "under any input"
 
     @property
     def verdicts(self) -> dict[str, str]:
@@ -275,7 +295,7 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
     results = [replace(r, assumes=for_verdict(resting_on, r.result, model.describer))
                for r in results]
     return CheckReport(results, _findings(model, results, searches.facts), model.describer,
-                       searches.facts.executed())
+                       searches.facts.executed(), searches.facts.inputs_tried())
 
 
 def _findings(model: Model, results: list[PropertyResult],
@@ -283,7 +303,7 @@ def _findings(model: Model, results: list[PropertyResult],
     """What the check assumed or saw besides verdicts, in source order after the load and
     domain notes."""
     return list(model.program.load_notes) + list(model.plan.notes) + [
-        assumed.note() for assumed in model.assumed] + sorted(
+        assumed.note() for assumed in model.assumed + model.messages] + sorted(
         fixed_readings(model.program) + facts.warnings()
         + _flow_sinks(model, results),
         key=lambda d: (d.span.file, d.span.line, d.span.column))
@@ -311,8 +331,9 @@ class _Searches:
         self.model, self.progress = model, progress
         self.bounds = dict(max_states=options.max_states, max_seconds=options.max_seconds,
                            storage=options.storage)
+        exact = [site_key(d.site) for d in model.messages if d.exact]
         self.facts = ExploredFacts(model.program, [prop.formula for prop in model.properties],
-                                   model.atoms)
+                                   model.atoms, sampled_inputs(model.program, exact))
         # Coverage and vacuity watch the run-time error search (merged steps name every line
         # they run); --compact / --bitstate searches are never complete, so they watch nothing.
         self.watching = options.storage is None or not model.plan.merge_points
@@ -342,7 +363,8 @@ class _Searches:
         vacuous = self.facts.vacuous(prop.formula) if result.verdict == HOLDS else None
         return PropertyResult(prop.name, prop.text, result, vacuous,
                               self.fairness.names if self.fairness is not None else (),
-                              pattern=prop.pattern, atom_tasks=self._atom_tasks(buchi.atoms))
+                              pattern=prop.pattern, atom_tasks=self._atom_tasks(buchi.atoms),
+                              vacuous_inputs=self.facts.vacuous_inputs() if vacuous else "")
 
     def _atom_tasks(self, atoms) -> tuple:
         """(atom, its tasks) per atom, on a controller of several tasks (else empty)."""

@@ -138,7 +138,8 @@ def test_json_follows_the_documented_schema():
     assert [p["verdict"] for p in properties] == ["HOLDS", "VIOLATED", "UNKNOWN", "VIOLATED"]
     for entry in properties:
         assert list(entry) == ["name", "formula", "verdict", "reason", "stats", "trace",
-                               "vacuous", "fair_tasks", "assumes", "pattern", "atoms"]
+                               "vacuous", "vacuous_inputs", "fair_tasks", "assumes",
+                               "pattern", "atoms"]
         assert entry["fair_tasks"] is None        # one task: no fairness assumed
         assert entry["atoms"] is None             # one task: atoms belong to no task
         assert list(entry["stats"]) == STATS_KEYS

@@ -18,7 +18,8 @@ from typing import Callable
 
 from .. import api
 from ..diagnostics import EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED, NEVER_REACHED, Diagnostic
-from ..findings.coverage import coverage_warnings, service_routines
+from ..findings.coverage import ANY_INPUT, coverage_warnings, service_routines
+from ..findings.tried_inputs import called_routines
 
 EVERY_ENTRY = "ALL"
 
@@ -71,7 +72,11 @@ def _merged_warnings(program, entries) -> list[Diagnostic]:
     warnings = [w for w in first.warnings if w.code is not NEVER_REACHED]
     executed = [report.executed for _, report in entries]
     if all(lines is not None for lines in executed):
-        warnings.extend(coverage_warnings(program, frozenset().union(*executed)))
+        tried = [r.inputs_tried for _, r in entries if r.inputs_tried != ANY_INPUT]
+        inputs = "; ".join(dict.fromkeys(tried)) if tried else ANY_INPUT
+        called = called_routines(program) if tried else None
+        warnings.extend(coverage_warnings(program, frozenset().union(*executed), inputs,
+                                          called))
     return warnings
 
 

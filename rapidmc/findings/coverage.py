@@ -1,5 +1,8 @@
 """Coverage: the statements of a program that no input sequence reaches.
 
+"No input" means every value the check offered each input; where an input was
+offered a sample only (``tried_inputs``), the warning says so and names it.
+
 Shown the whole reachable state graph (``StatementWatch`` is an observer
 for ``find_reachable``), the statements executed by some transition are
 known (a merged step names every instruction it ran); every other statement of the program — the environment model
@@ -28,6 +31,7 @@ from ..semantics.instructions import Call, EndRoutine, EndUndo, LateCall
 from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
 
 NOT_STATEMENTS = (EndRoutine, EndUndo)      # ENDPROC / end of UNDO: not a line to run
+ANY_INPUT = "under any input"
 
 
 @dataclass(frozen=True)
@@ -40,14 +44,15 @@ class Unreached:
     whole_routine: bool
     last_line: int = 0            # the last line of the stretch (0: the statement's own)
 
-    def diagnostic(self) -> Diagnostic:
-        message = "never reached under any input"
+    def diagnostic(self, inputs: str = ANY_INPUT) -> Diagnostic:
+        """The warning; ``inputs`` says which inputs it holds for (``tried_inputs.qualifier``)."""
+        message = f"never reached {inputs}"
         span = self.span
         if self.whole_routine:
             message += f" (routine {self.routine} never runs)"
         elif self.last_line > span.line:
             message = f"lines {span.line}-{self.last_line} of {self.routine} are never " \
-                      "reached under any input"
+                      f"reached {inputs}"
             span = Span(span.file, span.line, span.column, self.last_line, 0)
         return Diagnostic(NEVER_REACHED, message, span, severity="warning")
 
@@ -100,12 +105,20 @@ class StatementWatch:
             self.saturated = self._asked <= executed
 
 
-def coverage_warnings(program: Program, executed: set[tuple[str, int]]) -> list[Diagnostic]:
-    """RMC701 warnings: the service routines that never run as one, then the rest."""
+def coverage_warnings(program: Program, executed: set[tuple[str, int]],
+                      inputs: str = ANY_INPUT, called: Optional[frozenset] = None
+                      ) -> list[Diagnostic]:
+    """RMC701 warnings: the service routines that never run as one, then the rest.
+
+    ``inputs`` says which inputs a warning holds for (``tried_inputs.qualifier``); a
+    routine outside ``called`` (those a chain of calls reaches) is unreached under any
+    input whatever was tried."""
     found = unreached(program, executed)
     service = {routine.span for routine in service_routines(program)}
     idle = [u for u in found if u.whole_routine and u.span in service]
-    warnings = [u.diagnostic() for u in found if u not in idle]
+    warnings = [u.diagnostic(ANY_INPUT if called is not None and u.routine not in called
+                             else inputs)
+                for u in found if u not in idle]
     if len(idle) > 1:
         warnings.append(_idle_service_routines(idle))
     else:

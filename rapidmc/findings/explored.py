@@ -19,6 +19,7 @@ from ..check import HOLDS, VIOLATED, find_reachable
 from ..check.result import SearchResult
 from .vacuity import TriggerWatch, to_text
 from .coverage import StatementWatch, coverage_warnings
+from .tried_inputs import TriedInput, called_routines, qualifier, reached
 from ..diagnostics import Diagnostic
 from ..ltl import Formula
 from ..model.properties import AtomCompiler
@@ -28,8 +29,11 @@ from ..semantics.program import Program
 class ExploredFacts:
     """Observer of a breadth-first search; see the module docstring."""
 
-    def __init__(self, program: Program, formulas: Iterable[Formula], atoms: AtomCompiler):
+    def __init__(self, program: Program, formulas: Iterable[Formula], atoms: AtomCompiler,
+                 sampled: Sequence[TriedInput] = ()):
+        """``sampled``: the reading instructions whose inputs were offered a sample only."""
         self.program = program
+        self.sampled = tuple(sampled)
         self.statements = StatementWatch(program)
         self.triggers = TriggerWatch(formulas)
         # no trigger to watch: no atom to evaluate (evaluating costs a machine per state)
@@ -91,7 +95,14 @@ class ExploredFacts:
         """Coverage warnings (RMC701); none unless the search was complete."""
         if not self.complete:
             return []
-        return coverage_warnings(self.program, self.statements.executed)
+        inputs = self.inputs_tried()
+        called = called_routines(self.program) if inputs != qualifier(()) else None
+        return coverage_warnings(self.program, self.statements.executed, inputs, called)
+
+    def inputs_tried(self) -> str:
+        """``under any input``, or which sampled inputs the search's findings rest on
+        (those whose reading instruction ran)."""
+        return qualifier(reached(self.sampled, self.statements.executed))
 
     def vacuous(self, formula: Formula) -> Optional[str]:
         """The text of a trigger of ``formula`` that is never true, or None (or incomplete)."""
@@ -99,6 +110,12 @@ class ExploredFacts:
             return None
         trigger = self.triggers.never_true(formula)
         return to_text(trigger) if trigger is not None else None
+
+    def vacuous_inputs(self) -> str:
+        """What a vacuity note rests on: "" when every input's values were tried, else
+        ``with the socket messages tried (...)``."""
+        inputs = self.inputs_tried()
+        return "" if inputs == qualifier(()) else inputs
 
 
 def _no_atoms(state: Hashable) -> int:

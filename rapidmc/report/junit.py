@@ -97,7 +97,7 @@ def _property_case(suite: ET.Element, checked: PropertyResult, describer: TraceD
     if checked.fair_tasks:
         notes.append(f"{result.verdict} {fairness_text(checked.fair_tasks)}")
     if checked.vacuous is not None:
-        notes.append(f"HOLDS {vacuity_text(checked.vacuous)}")
+        notes.append(f"HOLDS {vacuity_text(checked.vacuous, checked.vacuous_inputs)}")
     notes.extend(f"{result.verdict} assumes: {text}" for text in checked.assumes)
     if notes:
         ET.SubElement(case, "system-out").text = "".join(note + "\n" for note in notes)

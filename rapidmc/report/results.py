@@ -47,6 +47,9 @@ class PropertyResult:
     # on a controller of several tasks: (atom, the tasks whose own data or places it reads)
     # per atom of the formula (no task: shared PERS data, signals, the controller's status)
     atom_tasks: tuple = ()
+    # with a vacuous HOLDS: the sampled inputs it rests on ("with the socket messages tried
+    # (SocketReceive at line 14)"), "" when every input's values were tried
+    vacuous_inputs: str = ""
 
 
 # --- text ---------------------------------------------------------------------
@@ -110,7 +113,7 @@ def verdict_line(checked: PropertyResult) -> str:
     if result.verdict == UNKNOWN and result.reason:
         figures = f"{result.reason}; {figures}"
     if checked.vacuous is not None:
-        figures = f"{vacuity_text(checked.vacuous)}; {figures}"
+        figures = f"{vacuity_text(checked.vacuous, checked.vacuous_inputs)}; {figures}"
     return f"{checked.name}: {result.verdict} ({figures})"
 
 
@@ -134,9 +137,11 @@ def text_options(checked: PropertyResult, describer: TraceDescriber,
     return TextOptions(full, names, frozenset(getattr(describer, "stub_data", ())))
 
 
-def vacuity_text(trigger: str) -> str:
-    """``vacuously: "!C_IN & S_1" is never true``."""
-    return f"vacuously: {json.dumps(trigger, ensure_ascii=False)} is never true"
+def vacuity_text(trigger: str, inputs: str = "") -> str:
+    """``vacuously: "!C_IN & S_1" is never true`` (``inputs``: ``with the socket messages
+    tried (SocketReceive at line 14)`` when that is what it rests on)."""
+    return f"vacuously: {json.dumps(trigger, ensure_ascii=False)} is never true" \
+        + (f" {inputs}" if inputs else "")
 
 
 def fairness_text(tasks: Sequence[str]) -> str:
@@ -203,6 +208,7 @@ def property_json(checked: PropertyResult, describer: TraceDescriber) -> dict:
     return {"name": checked.name, "formula": checked.formula, "verdict": result.verdict,
             "reason": result.reason, "stats": result.stats.as_dict(), "trace": trace,
             "vacuous": checked.vacuous,
+            "vacuous_inputs": checked.vacuous_inputs or None,
             "fair_tasks": list(checked.fair_tasks) if checked.fair_tasks else None,
             "assumes": list(checked.assumes),
             "pattern": checked.pattern,

@@ -14,6 +14,19 @@ def where(span) -> str:
     return f"{Path(span.file).name}:{span.line}:{span.column}"
 
 
+def site_domain(m, span, given, derived: str, default: tuple) -> tuple:
+    """Check mode: what the environment may deliver to the reading site at ``span``: the
+    domain an option gave (``config.<given>``) when there is one, else the site's domain
+    derived from the program (``config.<derived>``, ``load.message_domains``), else
+    ``default``."""
+    config = getattr(m.chooser, "config", None)
+    explicit = tuple(getattr(config, given, ())) if given else ()
+    if explicit:
+        return explicit
+    per_site = getattr(config, derived, {})
+    return tuple(per_site.get((span.file, span.line, span.column), ())) or default
+
+
 @compiled("bool AnyBool()",
           modelled=CHOICE)
 def _any_bool(calls, compiler, call, entry) -> Compiled:

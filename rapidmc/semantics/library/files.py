@@ -26,7 +26,8 @@ from .data import PREDEFINED_DATA
 from .flexpendant import TP_OPTIONS
 from .registry import CHOICE, compiled
 from .signature_parts import DEVICE, TIME
-from .sockets import configured, environment_text
+from .environment_model import site_domain
+from .sockets import environment_text
 
 EOF_TEXT = PREDEFINED_DATA["EOF"].value
 EOF_NUM = float(PREDEFINED_DATA["EOF_NUM"].value)
@@ -169,7 +170,7 @@ def _rewind(calls, compiler, call, entry):
 
 def _next_line(m, call, name: str):
     """The next line of the device's input, or None at end of file."""
-    lines = configured(m, "file_lines", ("",))
+    lines = site_domain(m, call.span, "file_lines", "file_domains", ("",))
     domain = lines if EOF_TEXT in lines else lines + (EOF_TEXT,)
     text = environment_text(m, f"{call.name.text} {name}", call.span, domain)
     return None if text is None or (m.chooser.check_mode and text == EOF_TEXT) else text

@@ -8,12 +8,15 @@ from ..errors import ERROR_NUMBERS, RapidError
 from ..instructions import Action, ControlAction
 from ..machine import ABSENT
 from .arguments import Arguments, argument_expression
+from .environment_model import site_domain
 from .registry import CHOICE, NO_EFFECT, compiled
 from .signature_parts import TP_BREAKS
 
 FUNCTION_KEYS = (1.0, 2.0, 3.0, 4.0, 5.0)
 TP_OPTIONS = (("NUM", "num"), ("BOOL", "bool"), ("POS", "num"), ("ORIENT", "num"),
               ("DNUM", "dnum"))
+
+NUMBER_ANSWERS = ("TPReadNum", "TPReadDnum")   # answers derived per site (load.message_domains)
 
 
 @compiled("TPWrite(string String \\num Num | bool Bool | pos Pos | orient Orient | dnum Dnum)")
@@ -81,6 +84,8 @@ def _outcomes(m, kind: str, keys, breaks: "TPBreaks", span, unlabelled: bool) ->
     labels counted.  Only keys written empty in the source make such a dialog wait for ever."""
     if m.chooser.check_mode:
         allowed = m.chooser.tp_answers(kind)
+        if kind in NUMBER_ANSWERS:     # --tp-answers given: kept in "answer_domains" too
+            allowed = site_domain(m, span, None, "answer_domains", allowed)
         offered = allowed if keys is None else labelled_keys(m, keys, allowed)
         ends = breaks.outcomes(m)
         if not offered and not ends and not unlabelled:

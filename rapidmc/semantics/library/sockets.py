@@ -24,7 +24,7 @@ from ..instructions import Action
 from ..types import NUM
 from .arguments import Arguments, argument_expression
 from .data import PREDEFINED_DATA
-from .environment_model import where
+from .environment_model import site_domain, where
 from .registry import CHOICE, compiled
 from .signature_parts import TIME
 
@@ -232,7 +232,7 @@ def _receive_message(m, call, seconds) -> str:
     if outcome == CLOSED:
         raise RapidError("ERR_SOCK_CLOSED", "SocketReceive: the peer closed the connection")
     text = environment_text(m, "SocketReceive", call.span,
-                            configured(m, "socket_messages", ("",)))
+                            site_domain(m, call.span, "socket_messages", "socket_domains", ("",)))
     if text is None:
         m.chooser.socket_input_ended = True
         raise RapidError("ERR_SOCK_CLOSED", "SocketReceive: the client closed the connection "

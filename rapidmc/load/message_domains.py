@@ -1,0 +1,631 @@
+"""Default message domains of socket receives, taken from what the program does with the data.
+
+A socket message may be any text; the checker offers each ``SocketReceive``
+(and ``SocketReceiveFrom``) a finite set.  Without ``--socket-messages`` that
+set comes from the code that handles the received data.  Starting from the
+receive's ``\\Str`` or ``\\RawData`` variable, the data is followed through
+assignments (``cmd := StrPart(msg, 1, 3)``), routine parameters and function
+results; every place it reaches that chooses between branches gives messages:
+
+* a comparison with a string (``=``, ``<>``, ``TEST ... CASE "PNP":``) gives
+  that string, placed where the compared value was taken from the message
+  (``StrPart(msg, 4, 3) = "ABC"``: ``"   ABC"``);
+* ``StrFind``/``StrMatch`` give a message holding the characters or pattern
+  they look for;
+* ``StrToVal`` gives a well-formed text of the target's type (``[1,2,3,4,5]``
+  for a ``num{5}``) and a malformed one;
+* ``UnpackRawBytes`` of a received ``rawbytes`` gives, per field the code
+  compares with numbers, one message per class of those comparisons (the
+  field encoded at its start index, hex pairs as ``--socket-messages`` takes).
+
+One message the program does not expect (no literal of it) is always added.
+The domain is *exact* (every message the peer could send behaves like one of
+those tried) only when the received text reaches nothing but equality
+comparisons with strings; otherwise coverage warnings say that they hold for
+the messages tried (``findings.coverage``).  ``--socket-messages`` replaces
+every derived domain.  Closures and timeouts are modelled as before.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from typing import Iterator, Optional
+
+from .. import ast
+from ..diagnostics import DOMAIN_ASSUMED, Diagnostic
+from ..diagnostics.quoting import quoted
+from ..semantics import rawbytes
+from ..semantics.literals import parse_literal
+from ..semantics.program import PROGRAM_NAMESPACE, Program
+from ..semantics.scope import CONSTANT
+from ..semantics.types import BOOL, RECORD, STRING, ArrayType, default_value
+from ..semantics.values import format_num
+from .input_domains import analog_points, group_points, number_value
+
+MAX_MESSAGES = 24             # per receiving site: the search branches over every one
+MAX_COMBINATIONS = 4096       # of all sites' values, before sites that only parse are narrowed
+RECEIVES = {"SOCKETRECEIVE": "SocketReceive", "SOCKETRECEIVEFROM": "SocketReceiveFrom"}
+EQUALITY = ("=", "<>")
+NUMBER_COMPARISONS = ("=", "<>", "<", "<=", ">", ">=")
+UNEXPECTED = "?"              # the text a peer sends that no code of the program expects
+FILLER = " "                  # what stands before a compared part of a message
+MALFORMED = "#"               # text no StrToVal target type accepts
+
+IDENTITY = ("whole",)         # how a value was taken from the message
+
+
+def site_key(span: ast.Span) -> tuple:
+    """How the checker's configuration names a receiving site."""
+    return (span.file, span.line, span.column)
+
+
+@dataclass(frozen=True)
+class MessageDomain:
+    """The values offered to one reading site, and why."""
+
+    site: ast.Span
+    instruction: str              # "SocketReceive", "ReadStr", "TPReadNum"
+    kind: str                     # SOCKET, FILE or ANSWERS: which domain of the check
+    messages: tuple               # texts (hex pairs for a rawbytes receive), or numbers
+    exact: bool                   # every possible value behaves like one of these
+    reason: str                   # what the data read is compared with or parsed as
+    narrower: tuple = ()          # fewer messages, when the sites' domains multiply too far
+
+    def note(self) -> Diagnostic:
+        shown = ", ".join(quoted(value) if isinstance(value, str) else format_num(value)
+                          for value in self.messages)
+        return Diagnostic(DOMAIN_ASSUMED, f"{self.instruction} at line {self.site.line}: "
+                          f"{self.kind} {shown} ({self.reason})", self.site, severity="note")
+
+
+SOCKET, FILE, ANSWERS = "messages", "lines", "answers"
+TEXT_FILES = {"READSTR": "ReadStr"}
+NUMBER_FILES = {"READNUM": "ReadNum"}
+NUMBER_ANSWERS = {"TPREADNUM": "TPReadNum", "TPREADDNUM": "TPReadDnum"}
+
+
+def message_domains(program: Program) -> tuple:
+    """A ``MessageDomain`` per reading site of the program's own code, in source order:
+    socket receives, ``x := ReadStr(...)`` / ``x := ReadNum(...)``, ``TPReadNum``."""
+    routines = [r for r in program.routines
+                if r.ast is not None and r.namespace == PROGRAM_NAMESPACE]
+    found = []
+    for routine in routines:
+        for node, _ in ast.walk(routine.ast):
+            domain = _site_domain(program, routines, node)
+            if domain is not None:
+                found.append(domain)
+    return tuple(sorted(_bounded(found), key=lambda d: (d.site.file, d.site.line,
+                                                         d.site.column)))
+
+
+def _bounded(domains: list) -> list:
+    """The domains, those with a narrower choice narrowed when together they would offer
+    more than ``MAX_COMBINATIONS`` combinations (each received value may stay in the state,
+    so the state space grows with their product)."""
+    combinations = 1
+    for domain in domains:
+        combinations *= len(domain.messages) + 1
+    if combinations <= MAX_COMBINATIONS:
+        return domains
+    return [replace(d, messages=d.narrower, exact=False,
+                    reason=d.reason + f"; narrowed: the {len(domains)} sites' messages would "
+                    f"give {combinations} combinations")
+            if d.narrower else d for d in domains]
+
+
+def _site_domain(program, routines, node) -> Optional[MessageDomain]:
+    """The domain of ``node`` when it reads from the environment into named data."""
+    if isinstance(node, ast.ProcedureCall) and node.name.key in RECEIVES:
+        raw = _named_argument(node, "RAWDATA")
+        target = raw if raw is not None else _named_argument(node, "STR")
+        uses = _followed(program, routines, target)
+        if uses is None:
+            return None
+        wanted = _literal_number(_named_argument(node, "READNOOFBYTES"))
+        messages, reason = uses.raw_messages(min(int(wanted or 0), rawbytes.MAX_BYTES)) \
+            if raw is not None \
+            else uses.text_messages()
+        return MessageDomain(node.span, RECEIVES[node.name.key], SOCKET, messages,
+                             uses.exact and raw is None, reason,
+                             uses.well_formed_only() if raw is None else ())
+    if isinstance(node, ast.ProcedureCall) and node.name.key in NUMBER_ANSWERS:
+        positional = [a.value for a in node.args if a.kind == ast.REQUIRED and a.name is None]
+        uses = _followed(program, routines, positional[0] if positional else None)
+        if uses is None or not uses.numbers:
+            return None
+        return MessageDomain(node.span, NUMBER_ANSWERS[node.name.key], ANSWERS,
+                             _number_points(uses.numbers), uses.exact, uses.number_reason())
+    if isinstance(node, ast.Assignment) and isinstance(node.value, ast.FunctionCall):
+        call = node.value
+        uses = _followed(program, routines, node.target) \
+            if call.name.key in TEXT_FILES or call.name.key in NUMBER_FILES else None
+        if uses is None:
+            return None
+        if call.name.key in TEXT_FILES:
+            lines, reason = uses.text_messages()
+            return MessageDomain(call.span, TEXT_FILES[call.name.key], FILE, lines,
+                                 uses.exact, reason)
+        if uses.numbers:
+            lines = tuple(format_num(n) for n in _number_points(uses.numbers)) + (MALFORMED,)
+            return MessageDomain(call.span, NUMBER_FILES[call.name.key], FILE, lines,
+                                 uses.exact, uses.number_reason() + "; and a line that is "
+                                 "not a number")
+    return None
+
+
+def _followed(program, routines, target) -> Optional["Uses"]:
+    if not isinstance(target, ast.NameRef):
+        return None
+    uses = Uses(program, routines)
+    uses.follow({target.name.key: {IDENTITY}})
+    return uses
+
+
+def _number_points(numbers) -> tuple:
+    """One number per class of the comparisons with ``numbers``."""
+    return analog_points(sorted(numbers))
+
+
+def _named_argument(call, key: str):
+    for argument in call.args:
+        if argument.name is not None and argument.name.key == key:
+            return argument.value
+    return None
+
+
+# ===========================================================================
+# Following the received data
+# ===========================================================================
+
+class Uses:
+    """Where data taken from one message goes, and what the code there tells apart.
+
+    Data is named program-wide by its name (a local of one routine and a global
+    of the same name are one): following too much only adds messages.
+    """
+
+    def __init__(self, program: Program, routines: list):
+        self.program, self.routines = program, routines
+        self.views: dict[str, set] = {}          # name key -> how it was taken from the message
+        self.functions: set[str] = set()         # FUNCs returning data from the message
+        self.compared: list[tuple] = []          # (view, string) compared
+        self.searched: list[str] = []            # characters/patterns looked for
+        self.parsed: list = []                   # (view, type) StrToVal targets
+        self.fields: dict[tuple, set] = {}       # (start, encoding, network) -> numbers compared
+        self.numbers: set = set()                # numbers the whole value is compared with
+        self.extent = 0                          # bytes the unpacked fields span
+        self.parsed_numbers: list = []           # (view of the text, number) parsed, compared
+        self.exact = True                        # every read tells apart only what was tried
+
+    def follow(self, start: dict) -> None:
+        """Every name and function the data reaches, to a fixpoint, then what is done there."""
+        for key, views in start.items():
+            self.views.setdefault(key, set()).update(views)
+        size = -1
+        while size != self._size():
+            size = self._size()
+            for routine in self.routines:
+                for node, parents in ast.walk(routine.ast):
+                    self._spread(node, parents, routine)
+        for routine in self.routines:
+            for node, parents in ast.walk(routine.ast):
+                self._observe(node, parents, routine)
+
+    def _size(self) -> int:
+        return sum(len(v) for v in self.views.values()) + len(self.functions)
+
+    # --- spreading: assignments, arguments, function results ------------------
+
+    def _spread(self, node, parents, routine) -> None:
+        if isinstance(node, ast.Assignment):
+            self._flow(node.value, node.target)
+        elif isinstance(node, ast.Return) and node.value is not None \
+                and self.carries(node.value) and routine.ast.kind == ast.FUNC:
+            self.functions.add(routine.ast.name.key)
+        elif isinstance(node, ast.FunctionCall) and node.name.key == "STRTOVAL":
+            self._parsed_into(node)
+        elif isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
+            self._arguments(node)
+
+    def _flow(self, value, target) -> None:
+        base = _base_name(target)
+        if base is None or not self.carries(value):
+            return
+        views = self.views.setdefault(base, set())
+        views.update(self.view_of(value) if isinstance(target, ast.NameRef) else {None})
+
+    def _arguments(self, call) -> None:
+        """A user routine's parameter takes on what its argument carries; so does the
+        target of ``UnpackRawBytes`` (a field) or ``StrToVal`` (parsed data)."""
+        key = call.name.key
+        if key == "UNPACKRAWBYTES":
+            self._unpacked(call)
+            return
+        symbol = _routine_named(self.program, key)
+        if symbol is None or symbol.ast is None:
+            return
+        parameters = [p for p in symbol.ast.parameters if not p.optional]
+        positional = [a for a in call.args if a.kind == ast.REQUIRED and a.name is None]
+        for parameter, argument in zip(parameters, positional):
+            if argument.value is not None and self.carries(argument.value):
+                self.views.setdefault(parameter.name.key, set()).update(
+                    self.view_of(argument.value))
+        named = {p.name.key: p for p in symbol.ast.parameters}
+        for argument in call.args:
+            if argument.name is not None and argument.value is not None \
+                    and argument.name.key in named and self.carries(argument.value):
+                self.views.setdefault(argument.name.key, set()).update(
+                    self.view_of(argument.value))
+        # what a routine receives into a VAR/INOUT parameter, its caller's argument holds
+        for parameter, argument in zip(parameters, positional):
+            target = _base_name(argument.value) if argument.value is not None else None
+            if parameter.mode in ("VAR", "INOUT") and parameter.name.key in self.views \
+                    and target is not None:
+                self.views.setdefault(target, set()).update(self.views[parameter.name.key])
+
+    def _parsed_into(self, call) -> None:
+        """The target of ``StrToVal(text, x)`` holds a number parsed from where ``text``
+        was taken: its comparisons give texts of the numbers (``TEST code CASE 1, 2``)."""
+        values = [a.value for a in call.args if a.kind == ast.REQUIRED]
+        if len(values) != 2 or not self.carries(values[0]):
+            return
+        target = _base_name(values[1])
+        if target is not None:
+            self.views.setdefault(target, set()).update(
+                ("parsed", view) for view in self.view_of(values[0]))
+
+    def _unpacked(self, call) -> None:
+        positional = [a.value for a in call.args if a.kind == ast.REQUIRED and a.name is None]
+        if len(positional) < 3 or not self.carries(positional[0]):
+            return
+        target, start = _base_name(positional[2]), _literal_number(positional[1])
+        encoding = _encoding(call)
+        if target is None:
+            return
+        network = any(a.name is not None and a.name.key == "NETWORK" for a in call.args)
+        if start is not None and encoding is not None:
+            self.extent = max(self.extent, int(start) - 1 + _size(encoding))
+        view = ("field", int(start), encoding, network) if start is not None and encoding is not None \
+            and isinstance(positional[2], ast.NameRef) else None
+        self.views.setdefault(target, set()).add(view)
+
+    # --- what an expression carries ---------------------------------------------
+
+    def carries(self, expr) -> bool:
+        """Whether ``expr`` holds data taken from the message."""
+        for node, _ in ast.walk(expr):
+            if isinstance(node, ast.NameRef) and node.name.key in self.views:
+                return True
+            if isinstance(node, ast.FunctionCall) and node.name.key in self.functions:
+                return True
+        return False
+
+    def view_of(self, expr) -> set:
+        """How ``expr``'s value was taken from the message: the views of a name, a
+        ``StrPart`` of the whole message at a constant position, else unknown (None)."""
+        if isinstance(expr, ast.NameRef):
+            return set(self.views.get(expr.name.key, {None}))
+        if isinstance(expr, ast.FunctionCall) and expr.name.key == "STRPART":
+            values = [a.value for a in expr.args if a.kind == ast.REQUIRED]
+            start = _literal_number(values[1]) if len(values) == 3 else None
+            if start is not None and start == int(start) and start >= 1 \
+                    and IDENTITY in self.view_of(values[0]):
+                return {("part", int(start))}
+        return {None}
+
+    # --- observing: what the code tells apart -----------------------------------
+
+    def _observe(self, node, parents, routine) -> None:
+        scope = routine.scope
+        if isinstance(node, ast.NameRef) and node.name.key in self.views \
+                and not _plain_read(node, parents, self.program, scope):
+            self.exact = False
+        if isinstance(node, ast.Binary) and (self.carries(node.left) or self.carries(node.right)):
+            self._comparison(node, scope)
+        elif isinstance(node, ast.Test) and self.carries(node.subject):
+            for case in node.cases:
+                for value in case.values:
+                    self._compared(node.subject, value, "=", scope)
+        elif isinstance(node, ast.FunctionCall) and node.name.key in ("STRFIND", "STRMATCH",
+                                                                       "STRMEMB"):
+            self._searched(node, scope)
+        elif isinstance(node, ast.FunctionCall) and node.name.key == "STRTOVAL":
+            self._parse(node, scope)
+
+    def _comparison(self, node, scope) -> None:
+        if node.op in NUMBER_COMPARISONS:
+            carried = node.left if self.carries(node.left) else node.right
+            other = node.right if carried is node.left else node.left
+            self._compared(carried, other, node.op, scope)
+        elif node.op not in ("AND", "OR", "XOR"):
+            self.exact = False
+
+    def _compared(self, carried, other, op: str, scope) -> None:
+        text = _string_value(other, scope)
+        views = self.view_of(carried)
+        if text is not None and op in EQUALITY:
+            self.compared.extend((view, text) for view in views)
+            self.exact = self.exact and views == {IDENTITY}
+            return
+        number = number_value(other, scope)
+        if number is None or views != {IDENTITY}:
+            self.exact = self.exact and number is not None and all(
+                view is not None and view[0] == "field" for view in views)
+        if number is None:
+            return
+        if IDENTITY in views:
+            self.numbers.add(number)
+        for view in views:
+            if view is not None and view[0] == "field":
+                self.fields.setdefault(view[1:], set()).add(number)
+            elif view is not None and view[0] == "parsed":
+                self.parsed_numbers.append((view[1], number))
+
+    def _searched(self, call, scope) -> None:
+        values = [a.value for a in call.args if a.kind == ast.REQUIRED]
+        if not values or not self.carries(values[0]):
+            return
+        self.exact = False
+        wanted = _string_value(values[-1], scope) if len(values) >= 2 else None
+        if wanted:
+            self.searched.append(wanted if call.name.key == "STRMATCH" else wanted[0])
+
+    def _parse(self, call, scope) -> None:
+        values = [a.value for a in call.args if a.kind == ast.REQUIRED]
+        if len(values) != 2 or not self.carries(values[0]):
+            return
+        self.exact = False
+        symbol = scope.lookup(_base_name(values[1]) or "")
+        if symbol is not None and isinstance(values[1], ast.NameRef):
+            self.parsed.extend((view, symbol.type) for view in self.view_of(values[0]))
+
+    # --- the messages -----------------------------------------------------------
+
+    def text_messages(self) -> tuple[tuple, str]:
+        """The string messages that tell the code's choices apart, and what they come from."""
+        heads = [text for view, text in self.compared if view in (IDENTITY, ("part", 1))]
+        wanted = [(view, text) for view, text in self.compared]
+        wanted += [(view, format_num(number)) for view, number in self.parsed_numbers]
+        for view, rapid_type in self.parsed:
+            good = well_formed(rapid_type)
+            wanted += [(view, text) for text in ((good,) if good is not None else ())
+                       + (MALFORMED,)]
+        # each value's likeliest message first, then the next of each (the cap keeps the first)
+        ranked = [list(_placed(view, text, self.searched, heads)) for view, text in wanted]
+        messages = [forms[rank] for rank in range(max(map(len, ranked), default=0))
+                    for forms in ranked if rank < len(forms)]
+        messages.extend(self.searched)
+        bounded = list(dict.fromkeys(messages))[:MAX_MESSAGES - 1]
+        if self.compared or self.searched or not self.parsed:
+            # (data only parsed: the malformed text is already one nothing expects)
+            unexpected = UNEXPECTED
+            while unexpected in messages:
+                unexpected += UNEXPECTED
+            bounded.append(unexpected)
+        return tuple(bounded), self._reason()
+
+    def _reason(self) -> str:
+        parts = []
+        strings = list(dict.fromkeys(text for _, text in self.compared))
+        if strings:
+            parts.append("compared with " + ", ".join(map(quoted, strings[:8]))
+                         + (", ..." if len(strings) > 8 else ""))
+        if self.searched:
+            parts.append("searched for " + ", ".join(map(quoted, dict.fromkeys(self.searched))))
+        types = list(dict.fromkeys(str(t) for _, t in self.parsed))
+        if types:
+            parts.append("parsed by StrToVal as " + ", ".join(types))
+        numbers = list(dict.fromkeys(n for _, n in self.parsed_numbers))
+        if numbers:
+            parts.append("parsed numbers compared with "
+                         + ", ".join(_number_text(n) for n in numbers[:8])
+                         + (", ..." if len(numbers) > 8 else ""))
+        if not parts:
+            return "not compared with anything: one text"
+        if not strings and not self.searched and not numbers:
+            return "; ".join(parts) + ": a well-formed and a malformed text"
+        return "; ".join(parts) + "; and one the program does not expect"
+
+    def well_formed_only(self) -> tuple:
+        """For data only parsed (StrToVal), not compared or searched: the well-formed texts
+        alone (a narrower domain); else ()."""
+        if self.compared or self.searched or self.parsed_numbers or not self.parsed:
+            return ()
+        texts = (well_formed(rapid_type) for _, rapid_type in self.parsed)
+        return tuple(dict.fromkeys(text for text in texts if text is not None))
+
+    def number_reason(self) -> str:
+        return "compared with " + ", ".join(_number_text(n) for n in sorted(self.numbers))
+
+    def raw_messages(self, wanted: int = 0) -> tuple[tuple, str]:
+        """Hex-pair messages of at least ``wanted`` bytes (the receive's ``\\ReadNoOfBytes``)
+        spanning every field unpacked: one per class of each field's comparisons, the other
+        bytes 0, and one of bytes ff.  With no field compared, one message of zeros (a byte
+        stream of ff would read as a huge length and the next read would never end)."""
+        fields = sorted(self.fields.items(), key=lambda item: item[0][0])
+        length = max([start - 1 + _size(encoding) for (start, encoding, _), _ in fields]
+                     + [self.extent, wanted, 1])
+        base = bytes(length)
+        if not fields:
+            return (rawbytes.to_text(base),), "no field of the received bytes is compared " \
+                "with a number: one message of zeros"
+        messages = []
+        for (start, encoding, network), numbers in fields:
+            for value in _field_points(sorted(numbers), encoding):
+                data = rawbytes.pack(base, start, value, encoding, network)
+                messages.append(rawbytes.to_text(data))
+        messages = list(dict.fromkeys(messages))[:MAX_MESSAGES - 1]
+        unexpected = rawbytes.to_text(bytes([0xFF] * length))
+        if unexpected not in messages:
+            messages.append(unexpected)
+        shown = ", ".join(f"bytes from {start} compared with "
+                          + ", ".join(_number_text(n) for n in sorted(numbers))
+                          for (start, _, _), numbers in fields)
+        return tuple(messages), f"UnpackRawBytes fields: {shown}"
+
+
+def _placed(view, text: str, separators: list, heads: list) -> Iterator[str]:
+    """Messages in which a value taken by ``view`` reads ``text``.
+
+    The whole message: ``text``.  A part at a position: after the filler, or after each
+    text compared with the message's start that ends just before it (``"JNT:"`` for
+    ``StrPart(msg, 5, ...)``).  A part whose end, or a value whose place, the code finds
+    at run time (StrFind, StrMatch): the text as the first of fields split at the
+    separator sought most often and ended by each other one (``"1 1 #"``), alone, and
+    followed by each separator."""
+    if view == IDENTITY:
+        yield text
+        return
+    prefixes = [""]
+    if view is not None and view[0] == "part":
+        before = view[1] - 1
+        prefixes = [FILLER * before] + [head + FILLER * (before - len(head))
+                                         for head in dict.fromkeys(heads)
+                                         if 0 < len(head) <= before]
+    for prefix in prefixes:
+        for form in _fields(text, separators):
+            yield prefix + form
+
+
+def _fields(text: str, separators: list) -> Iterator[str]:
+    counts = {separator: separators.count(separator) for separator in separators}
+    # the separator sought most often most likely splits fields; each other ends them
+    for field in sorted(counts, key=lambda s: (-counts[s], separators.index(s))):
+        for last in counts:
+            if last != field:
+                yield text + field + text + field + last
+    yield text
+    for separator in counts:
+        yield text + separator
+
+
+def _field_points(numbers: list, encoding: tuple) -> tuple:
+    """Whole values, one per class of the comparisons with ``numbers``, that fit the field."""
+    if encoding == rawbytes.FLOAT4:
+        return analog_points(numbers)
+    top = 255 if encoding == rawbytes.HEX1 else 2 ** (8 * abs(int(encoding[1]))) - 1
+    signed = encoding[0] == "int" and encoding[1] < 0
+    low = -(top + 1) // 2 if signed else 0
+    points = group_points([n - low for n in numbers], top)
+    return tuple(p + low for p in points)
+
+
+def _size(encoding: tuple) -> int:
+    if encoding[0] == "int":
+        return abs(int(encoding[1]))
+    return 1 if encoding == rawbytes.HEX1 else 4
+
+
+def _encoding(call) -> Optional[tuple]:
+    """The byte layout of an ``UnpackRawBytes`` with a constant format (None: other)."""
+    for argument in call.args:
+        key = argument.name.key if argument.name is not None else ""
+        if key == "HEX1":
+            return rawbytes.HEX1
+        if key == "FLOAT4":
+            return rawbytes.FLOAT4
+        if key == "INTX":
+            size = _inttype(argument.value)
+            return ("int", size) if size is not None else None
+    return None
+
+
+def _inttype(expr) -> Optional[float]:
+    if isinstance(expr, ast.NameRef):
+        return dict(rawbytes.INTTYPES).get(expr.name.key)
+    value = _literal_number(expr)
+    return value if value is not None and int(value) in rawbytes.INT_SIZES else None
+
+
+def _number_text(number: float) -> str:
+    return str(int(number)) if float(number).is_integer() else str(number)
+
+
+# ===========================================================================
+# Parsing targets: a text StrToVal accepts
+# ===========================================================================
+
+def well_formed(rapid_type) -> Optional[str]:
+    """A literal of ``rapid_type`` that StrToVal accepts, numbers counting from 1 (None:
+    no such text for this type)."""
+    from ..semantics.library.system import format_typed, value_kind
+    if rapid_type is None:
+        return None
+    counter = iter(range(1, 10 ** 6))
+    value = _counting(rapid_type, counter)
+    text = format_typed(value, value_kind(rapid_type))
+    return text if parse_literal(text, rapid_type) is not None else None
+
+
+def _counting(rapid_type, counter):
+    if isinstance(rapid_type, ArrayType):
+        inner = ArrayType(rapid_type.element, rapid_type.dims[1:]) if rapid_type.rank > 1 \
+            else rapid_type.element
+        return tuple(_counting(inner, counter) for _ in range(rapid_type.dims[0] or 1))
+    if rapid_type.kind == RECORD:
+        return tuple(_counting(c.type, counter) for c in rapid_type.components)
+    if rapid_type is BOOL:
+        return True
+    if rapid_type is STRING:
+        return "a"
+    value = default_value(rapid_type)
+    return float(next(counter)) if isinstance(value, float) else value
+
+
+# ===========================================================================
+# Helpers
+# ===========================================================================
+
+def _base_name(expr) -> Optional[str]:
+    """The data a target names: ``x``, ``x{i}``, ``x.c`` -> ``X``."""
+    while isinstance(expr, (ast.Index, ast.Component)):
+        expr = expr.base
+    return expr.name.key if isinstance(expr, ast.NameRef) else None
+
+
+def _string_value(expr, scope) -> Optional[str]:
+    if isinstance(expr, ast.StringLiteral):
+        return expr.value
+    if isinstance(expr, ast.NameRef) and scope is not None:
+        symbol = scope.lookup(expr.name.key)
+        if symbol is not None and symbol.kind == CONSTANT and isinstance(symbol.value, str):
+            return symbol.value
+    return None
+
+
+def _routine_named(program: Program, key: str):
+    for routine in program.routines:
+        if routine.key == key and routine.namespace == PROGRAM_NAMESPACE:
+            return routine
+    return None
+
+
+def _literal_number(expr) -> Optional[float]:
+    """A number written as a literal (no scope to look constants up in)."""
+    if expr is None or isinstance(expr, ast.NameRef):
+        return None
+    return number_value(expr, None)
+
+
+# instructions that only pass data on, never choose by it
+OUTPUTS = {"SOCKETSEND", "TPWRITE", "WRITE", "ERRWRITE", "ERRLOG"} | set(RECEIVES) \
+    | set(NUMBER_ANSWERS)
+
+
+def _plain_read(ref: ast.NameRef, parents: tuple, program: Program, scope) -> bool:
+    """Whether this use of received data can only tell apart what the tried values do:
+    a comparison operand (its other side is judged where it is compared), a TEST subject,
+    a copy, a write, an argument of a routine of the program (followed there) or of an
+    instruction that only passes it on."""
+    parent = parents[-1] if parents else None
+    if isinstance(parent, ast.Binary):
+        return parent.op in NUMBER_COMPARISONS
+    if isinstance(parent, ast.Test):
+        return parent.subject is ref
+    if isinstance(parent, ast.Assignment):
+        return True
+    if isinstance(parent, ast.Argument) and len(parents) >= 2:
+        call = parents[-2]
+        key = getattr(getattr(call, "name", None), "key", "")
+        return key in OUTPUTS or _routine_named(program, key) is not None
+    return False

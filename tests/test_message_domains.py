@@ -1,0 +1,138 @@
+"""Domains of socket messages, file lines and FlexPendant numbers derived from the program
+(``rapidmc.load.message_domains``), and coverage warnings that say what they rest on.
+
+The verdicts these domains reach are pinned by check cases (tests/check/socket_test_cases,
+socket_strtoval_array, socket_raw_header, file_lines_derived, tp_answers_derived), which
+test_native_engine also runs on both engines.  Here: the domains themselves, their notes
+(RMC515), ``--socket-messages`` replacing them, and the wording of RMC701 and of vacuity
+when an input was offered a sample of its values only.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from rapidmc import api
+from rapidmc.load.message_domains import message_domains, well_formed
+from rapidmc.semantics.types import NUM, ArrayType
+
+CHECK = Path(__file__).resolve().parent / "check"
+
+SERVER = """MODULE Server
+    VAR socketdev server;
+    VAR socketdev client;
+    VAR string request := "";
+    VAR num joints{{2}};
+    VAR num state := 0;
+
+    PROC main()
+        SocketCreate server;
+        SocketBind server, "127.0.0.1", 1025;
+        SocketListen server;
+        SocketAccept server, client \\Time:=WAIT_MAX;
+        WHILE TRUE DO
+            SocketReceive client \\Str:=request \\Time:=WAIT_MAX;
+{body}
+        ENDWHILE
+    ENDPROC
+{extra}
+ENDMODULE
+"""
+
+# only compared with strings: the messages tried tell apart all a peer could send
+EXACT = """            IF request = "A" THEN
+                state := 1;
+                IF request = "B" THEN
+                    state := 2;
+                ENDIF
+            ENDIF"""
+
+# parsed: a peer's other texts parse into other values
+PARSED = """            IF StrToVal(request, joints) THEN
+                IF joints{1} = 99 THEN
+                    state := 3;
+                ENDIF
+            ENDIF"""
+
+
+def domains_of(folder: str) -> list:
+    program = api.load_program([str(CHECK / folder / "prog.mod")])
+    return [(d.instruction, d.site.line, d.messages, d.exact) for d in message_domains(program)]
+
+
+def test_test_on_a_received_string_offers_every_case_and_one_more():
+    assert domains_of("socket_test_cases") == [
+        ("SocketReceive", 14, ("PNP", "INK", "?"), True)]
+
+
+def test_strtoval_into_an_array_offers_a_good_and_a_bad_text_after_its_prefix():
+    [(_, _, messages, exact)] = domains_of("socket_strtoval_array")
+    assert "JNT:[1,2,3,4,5]" in messages and "JNT:#" in messages and not exact
+
+
+def test_a_header_read_with_unpackrawbytes_offers_one_value_per_dispatch_class():
+    [(_, _, messages, exact)] = domains_of("socket_raw_header")
+    headers = {bytes.fromhex(m.replace(" ", "")) for m in messages}
+    values = {int.from_bytes(h, "little", signed=True) for h in headers}
+    assert {10, 11, 101} <= values and values - {10, 11} and not exact
+
+
+def test_file_reads_and_typed_numbers_get_their_own_domains():
+    assert domains_of("file_lines_derived") == [
+        ("ReadStr", 10, ("FAST", "SLOW", "?"), True),
+        ("ReadNum", 11, ("9", "10", "11", "#"), True)]
+    assert domains_of("tp_answers_derived") == [("TPReadNum", 10, (6.0, 7.0, 8.0), True)]
+
+
+def test_a_well_formed_text_parses_into_its_type():
+    assert well_formed(ArrayType(NUM, (5,))) == "[1,2,3,4,5]"
+
+
+def check_server(tmp_path, body: str, extra: str = "", **options) -> api.CheckReport:
+    path = tmp_path / "server.mod"
+    path.write_text(SERVER.format(body=body, extra=extra))
+    prop = api.property_from_text('never3: G("state = 3" -> F "state = 0")')
+    return api.check(api.load_program([str(path)]), [prop], api.CheckOptions(**options))
+
+
+def coverage(report: api.CheckReport) -> list[str]:
+    return [w.message for w in report.warnings if w.code.code == "RMC701"]
+
+
+def test_dead_code_behind_an_exact_domain_is_never_reached_under_any_input(tmp_path):
+    report = check_server(tmp_path, EXACT)
+    assert coverage(report) == ["never reached under any input"]      # state := 2
+    notes = [w.message for w in report.warnings if w.code.code == "RMC515"]
+    assert notes == ["SocketReceive at line 14: messages 'A', 'B', '?' (compared with 'A', "
+                     "'B'; and one the program does not expect)"]
+
+
+def test_code_unreached_with_sampled_messages_says_so_and_names_the_receive(tmp_path):
+    report = check_server(tmp_path, PARSED)
+    assert coverage(report) == [
+        "never reached with the socket messages tried (SocketReceive at line 14)"]
+    [result] = [r for r in report.results if r.name == "never3"]
+    assert result.vacuous is not None
+    assert result.vacuous_inputs == "with the socket messages tried (SocketReceive at line 14)"
+
+
+@pytest.mark.parametrize("body", [EXACT, PARSED])
+def test_socket_messages_given_replace_the_derived_domain(tmp_path, body):
+    report = check_server(tmp_path, body, socket_messages=("A",))
+    assert not [w for w in report.warnings if w.code.code == "RMC515"]
+    assert all("with the socket messages tried (SocketReceive at line 14)" in message
+               for message in coverage(report))
+
+
+def test_a_routine_no_call_leads_to_is_never_reached_under_any_input(tmp_path):
+    unused = "    PROC Unused()\n        state := 5;\n    ENDPROC"
+    report = check_server(tmp_path, PARSED, unused)
+    assert coverage(report) == [
+        "never reached with the socket messages tried (SocketReceive at line 14)",
+        "never reached under any input (routine Unused never runs)"]
+
+
+def test_a_parsed_code_dispatched_by_test_gets_each_case_number_as_fields():
+    [(_, _, messages, exact)] = domains_of("socket_parsed_code")
+    assert {"1 1 #", "2 2 #", "99 99 #"} <= set(messages) and not exact
