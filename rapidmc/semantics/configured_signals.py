@@ -10,7 +10,10 @@ any order.  An undeclared name compared with a number is a configured signal
 too, of the kind its prefix says (``TEST giRecipe CASE 1:``, ``IF aiLevel > 2.5``) or
 a ``_Gi``-style suffix (``Suck_Gi``); without either, only a name tested for equality
 with 0 or 1 is one (a digital input, ``IF sensorPart = 1``).  A name with such a prefix
-or suffix read as the whole value of an assignment (``nType := Type_Gi;``) is one too.  Names passed to a ``mecunit`` parameter are
+or suffix read as the whole value of an assignment (``nType := Type_Gi;``) is one too.
+A name the program assigns with ``:=`` is never one: signals are not values RAPID can
+assign (AliasIO and the Set/Reset instructions change them), so ``partReady := 0; ...
+IF partReady = 1`` is missing data.  Names passed to a ``mecunit`` parameter are
 mechanical units of the motion configuration (``ActUnit CNV1``).
 """
 from __future__ import annotations
@@ -51,7 +54,28 @@ def compared_names(modules: Iterable[ast.Module]) -> Iterator[tuple[ast.Name, st
     them to an I/O routine.  The kind follows the usual name prefix (di, do,
     gi, go, ai, ao: ``diPart``, ``DI_PART``, ``DI1``); a name without one is
     taken as a digital input.  The linker only asks about undeclared names.
+    A name the program assigns anywhere is data, not a signal, and is not yielded.
     """
+    assigned = assigned_names(modules)
+    for name, kind in _compared_uses(modules):
+        if name.key not in assigned:
+            yield name, kind
+
+
+def assigned_names(modules: Iterable[ast.Module]) -> set[str]:
+    """The names whose data (whole, an element or a component) some ``:=`` assigns."""
+    found = set()
+    for node in _nodes(modules):
+        if isinstance(node, ast.Assignment):
+            root = node.target
+            while isinstance(root, (ast.Index, ast.Component)):
+                root = root.base
+            if isinstance(root, ast.NameRef):
+                found.add(root.name.key)
+    return found
+
+
+def _compared_uses(modules: Iterable[ast.Module]) -> Iterator[tuple[ast.Name, str]]:
     for node in _nodes(modules):
         if isinstance(node, ast.Assignment) and isinstance(node.value, ast.NameRef) \
                 and _SIGNAL_NAME.search(node.value.name.text) is not None:
