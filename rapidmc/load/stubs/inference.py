@@ -60,6 +60,7 @@ class Missing:
     parameters: list[Parameter] = field(default_factory=list)
     fields: dict = field(default_factory=dict)          # a missing RECORD: component -> type
     sizes_array: bool = False                           # used as an array dimension
+    array_size: Optional[tuple] = None                  # (size, array) a declared value fixes
     indexes_array: bool = False                         # used as an array index
     assigned: bool = False
     array_argument: bool = False                        # dims from an array parameter
@@ -304,9 +305,14 @@ class Inference:
         self.in_declaration = False
 
     def _declaration_values(self, decl: ast.DataDeclaration) -> None:
-        for dim in decl.dims:
+        for axis, dim in enumerate(decl.dims):
             if isinstance(dim, ast.NameRef) and self.undeclared_data(dim.name):
-                self.note(dim.name, DATA, f"array size of {decl.name.text}").sizes_array = True
+                size = self.note(dim.name, DATA, f"array size of {decl.name.text}")
+                size.sizes_array = True
+                length = _length_along(decl.init, axis)
+                if length is not None and size.array_size is None:
+                    size.array_size = (length, decl.name.text)
+                    self.changed = True
             self.expect(dim, NUM, f"array size of {decl.name.text}")
             self.expression(dim)
         if decl.init is not None:
@@ -687,6 +693,16 @@ class Inference:
             elif parameter.type is None and info is not None:
                 parameter.type = info.element() if info.rank == 0 else info
                 self.changed = True
+
+
+def _length_along(value, axis: int) -> Optional[int]:
+    """The number of parts of an array's declared value along dimension ``axis`` (0 the
+    first): ``[[1,2,3],[4,5,6]]`` has 2 along 0 and 3 along 1; None without an aggregate."""
+    for _ in range(axis):
+        if not isinstance(value, ast.Aggregate) or not value.items:
+            return None
+        value = value.items[0]
+    return len(value.items) if isinstance(value, ast.Aggregate) else None
 
 
 def _text_array(item_types) -> Optional[TypeInfo]:

@@ -158,7 +158,11 @@ class StubWriter:
             notes.append(f"an array argument: size {MIN_ARRAY_SIZE} assumed" if item.array_argument
                          else "size: the elements of the aggregate assigned" if item.exact_dims
                          else f"size: the largest constant index used, at least {MIN_ARRAY_SIZE}")
-        if item.sizes_array:
+        if item.sizes_array and item.array_size is not None:
+            size, array = item.array_size
+            value = str(size)
+            notes.append(f"an array size: {size}, as in the value declared for {array}")
+        elif item.sizes_array:
             value = str(MIN_ARRAY_SIZE)
             notes.append(f"an array size: {MIN_ARRAY_SIZE} assumed")
         elif item.indexes_array and not sizes and type_name == "num":
