@@ -877,6 +877,9 @@ def _known_for_invented(inference: Inference) -> bool:
                     owner.fields[component] = TypeInfo(candidates[0], info.rank)
             if owner.type is not None and owner.type.key == key:
                 owner.type = TypeInfo(candidates[0], owner.type.rank)
+            for parameter in owner.parameters:
+                if parameter.type is not None and parameter.type.key == key:
+                    parameter.type = TypeInfo(candidates[0], parameter.type.rank)
         changed = True
     return _drop_unused_invented(inference) or changed
 
@@ -887,7 +890,9 @@ def _drop_unused_invented(inference: Inference) -> bool:
     dropped = False
     while True:
         used = {info.key for owner in inference.missing.values()
-                for info in (*owner.fields.values(), owner.type) if info is not None}
+                for info in (*owner.fields.values(), owner.type,
+                             *(parameter.type for parameter in owner.parameters))
+                if info is not None}
         unused = [key for key in inference.invented if key not in used]
         if not unused:
             return dropped
