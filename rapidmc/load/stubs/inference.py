@@ -26,6 +26,7 @@ from ... import ast
 from ...semantics.library import registry
 from ...semantics.configured_signals import COMPARISONS
 from .names import BOOL, NUM, STRING, Declarations, TypeInfo
+from .records import POSITIONAL_COMPONENT, SOME_RECORD, arrange
 
 DATA, PROCEDURE, FUNCTION, TRAP, TYPE = "data", "procedure", "function", "trap", "type"
 ARITHMETIC = ("+", "-", "*", "/")
@@ -59,6 +60,11 @@ class Missing:
     components: list[str] = field(default_factory=list)
     parameters: list[Parameter] = field(default_factory=list)
     fields: dict = field(default_factory=dict)          # a missing RECORD: component -> type
+    named: dict = field(default_factory=dict)           # its components the uses name -> type
+    shape: Optional[list] = None                        # its positions' types, from a value
+    left_out: list = field(default_factory=list)        # names no position of the shape takes
+    value: Optional[object] = None                      # the aggregate that gave the shape
+    assumed: list = field(default_factory=list)         # components num is assumed for
     sizes_array: bool = False                           # used as an array dimension
     array_size: Optional[tuple] = None                  # (size, array) a declared value fixes
     indexes_array: bool = False                         # used as an array index
@@ -147,6 +153,10 @@ class Inference:
         """An aggregate given where a known record is expected: each part has the type of
         its component (``position.trans := [x, -y, zh]``: ``x`` is a num of a pos)."""
         components = self.names.components(info.name)
+        record = self.missing.get(self.names.base(info).key)
+        if components is None and record is not None and record.kind == TYPE:
+            components = [(name, known.name) for name, known in record.fields.items()
+                          if known is not None and known is not SOME_RECORD]
         if components is None or len(components) != len(expr.items):
             return
         for item, (name, type_name) in zip(expr.items, components):
@@ -163,35 +173,42 @@ class Inference:
         record = self.missing.get(base.key) if base is not None else None
         if record is None or record.kind != TYPE:
             return
-        name = expr.name.text
-        positional = [c for c in record.fields if POSITIONAL_COMPONENT.fullmatch(c)]
-        if name not in record.fields and positional and len(positional) == len(record.fields):
-            self._name_a_position(record, name, info)      # shaped by a value: keep the count
-        elif name not in record.fields or info is not None and \
-                self._replaces(record.fields[name], info):
-            record.fields[name] = info
+        self._name_component(record, expr.name.text, info)
+
+    def _name_component(self, record: Missing, name: str, info: Optional[TypeInfo]) -> None:
+        """A use names component ``name`` of a missing record, of type ``info`` if the use
+        tells it: the record gets it (on a position of the value that shapes it, if any)."""
+        if name not in record.named or info is not None and \
+                self._replaces(record.named[name], info):
+            record.named[name] = info
+            self._arrange(record)
+
+    def _arrange(self, record: Missing) -> None:
+        """The record's components from its names and shape (records.arrange)."""
+        components, left_out = arrange(record.named, record.shape, self._fits)
+        if components != record.fields or left_out != record.left_out:
+            record.fields, record.left_out = components, left_out
             self.changed = True
 
-    def _name_a_position(self, record: Missing, name: str, info: Optional[TypeInfo]) -> None:
-        """A record shaped by a declared value (``c1``, ``c2`` ...) whose component ``name``
-        a use reads with type ``info``: the first positional component of that type takes
-        the name, so the record keeps the value's count of components. Without a type the
-        name waits for a use that gives one."""
-        if info is None:
-            return
-        for component, known in record.fields.items():
-            if POSITIONAL_COMPONENT.fullmatch(component) and known is not None \
-                    and self.names.base(known).key == self.names.base(info).key:
-                record.fields = {(name if c == component else c): t
-                                 for c, t in record.fields.items()}
-                self.changed = True
-                return
+    def _fits(self, info: Optional[TypeInfo], slot: Optional[TypeInfo]) -> bool:
+        """Whether a component of type ``info`` can stand at a position of type ``slot``."""
+        if info is SOME_RECORD:
+            return slot is not None and self._is_record(slot)
+        return info is None or slot is None or \
+            self.names.base(info).key == self.names.base(slot).key
+
+    def _is_record(self, info: TypeInfo) -> bool:
+        known = self.missing.get(info.key)
+        if known is not None and known.kind == TYPE:
+            return not known.alias_of
+        return bool(self.names.components(info.name))
 
     def _replaces(self, known: Optional[TypeInfo], info: TypeInfo) -> bool:
         """A component's type ``info`` from a use takes the place of none, or of a record
         type the stubs invented only because the component had components of its own
         (``ee.tool.tframe.rot := ...`` and then ``tGrip := ee.tool``: a tooldata)."""
-        return known is None or known.key in self.invented and info.key not in self.invented
+        return known is None or known is SOME_RECORD or \
+            known.key in self.invented and info.key not in self.invented
 
     def _nested_record(self, expr: ast.Component) -> None:
         """``msgs.state.joints``: when ``msgs`` has a missing RECORD type and its component
@@ -203,13 +220,15 @@ class Inference:
         record = self.missing.get(owner.key) if owner is not None else None
         if record is None or record.kind != TYPE or record.fields.get(expr.name.text):
             return
+        if record.shape is not None:     # a position holding a record of its own takes it
+            self._name_component(record, expr.name.text, SOME_RECORD)
+            return
         invented = self._fresh_type_name(f"{record.name.text}_{expr.name.text}",
                                          expr.name.span)
         self.note(invented, TYPE, f"type of component {expr.name.text} of "
                   f"{record.name.text}, which has components itself; name invented")
         self.invented.add(invented.key)
-        record.fields[expr.name.text] = TypeInfo(invented.text)
-        self.changed = True
+        self._name_component(record, expr.name.text, TypeInfo(invented.text))
 
     def _fresh_type_name(self, text: str, span) -> ast.Name:
         """``text`` cut to RAPID's 32 characters, numbered if that is taken."""
@@ -321,54 +340,69 @@ class Inference:
             self.expression(decl.init)
 
     def _type_from_value(self, decl: ast.DataDeclaration) -> None:
-        """A missing type whose data is declared with a value of atomic parts: with an
-        aggregate (``PERS clampdata c := ["seq 1", 2, TRUE]``) a RECORD of components
-        ``c1``, ``c2``, ... of the parts' types; with a single value (``CONST gunnum g :=
-        2``) an ALIAS of its type. Only while no use names a component."""
+        """A missing type whose data is declared with a value: with an aggregate (``PERS
+        clampdata c := ["seq 1", 2, TRUE]``) a RECORD with one component per part, of the
+        part's type, which the names the uses give then take (records.arrange); with a single
+        atomic value (``CONST gunnum g := 2``) and no component named, an ALIAS of its type.
+        An array's value shapes its elements' type."""
         record = self.missing.get(decl.type.name.key)
-        if record is None or record.kind != TYPE or record.fields or record.alias_of \
-                or decl.dims:
+        if record is None or record.kind != TYPE or record.alias_of:
             return
-        if isinstance(decl.init, ast.Aggregate):
-            fields = self._shaped_fields(record.name, decl.init)
-            if fields:
-                record.fields = fields
-                self.changed = True
-        else:
-            value = self.type_of(decl.init)
-            if value is not None and value.key in ATOMIC:
-                record.alias_of = value.name
+        value = decl.init
+        for _ in decl.dims:
+            value = value.items[0] if isinstance(value, ast.Aggregate) and value.items else None
+        if isinstance(value, ast.Aggregate) and value.items:
+            self._shape_record(record, value)
+        elif value is not None and not decl.dims and not record.named and record.shape is None:
+            known = self.type_of(value)
+            if known is not None and known.key in ATOMIC:
+                record.alias_of = known.name
                 self.changed = True
 
-    def _shaped_fields(self, owner: ast.Name, aggregate: ast.Aggregate) -> Optional[dict]:
-        """Components ``c1``, ``c2``, ... for the parts of ``aggregate``, or None when a part
-        is neither atomic nor an aggregate itself. A nested aggregate (``trackdata`` of
-        ArcWare: ``[0,TRUE,50,[0,0,...],[0,...]]``) is a record of its own, named
-        ``<owner>_c<n>`` and shaped the same way."""
+    def _shape_record(self, record: Missing, aggregate: ast.Aggregate) -> None:
+        """The positions of ``record`` from the value ``aggregate``: the first value shapes
+        it; a position whose part's type is not known (a missing name) learns it from a
+        later walk or from another value of as many parts."""
+        if record.shape is not None and (None not in record.shape
+                                         or len(record.shape) != len(aggregate.items)):
+            return
+        shape = self._parts(record.name, aggregate, record.name.text)
+        if record.shape is not None:
+            shape = [old if old is not None else new for old, new in zip(record.shape, shape)]
+        if shape != record.shape:
+            record.shape, record.value = shape, record.value or aggregate
+            self._arrange(record)
+
+    def _parts(self, owner: ast.Name, aggregate: ast.Aggregate, top: str) -> list:
+        """The type of each part of a record's value (None while unknown). A nested
+        aggregate (``trackdata`` of ArcWare: ``[0,TRUE,50,[0,0,...],[0,...]]``) is a record
+        of its own, named ``<owner>_c<n>`` and shaped the same way; nested aggregates of
+        one shape share that record (the three jointtargets of a MultiMove group)."""
         parts = []
-        for item in aggregate.items:
-            part = self.type_of(item)
-            if part is not None and part.key in ATOMIC:
-                parts.append(part)
-            elif isinstance(item, ast.Aggregate) and item.items:
-                parts.append(item)
+        for number, item in enumerate(aggregate.items, 1):
+            if isinstance(item, ast.Aggregate) and item.items:
+                parts.append(self._nested_shape(owner, number, item, top))
             else:
-                return None
-        if not parts:
-            return None
-        fields = {}
-        for number, part in enumerate(parts, 1):
-            if isinstance(part, ast.Aggregate):
-                nested = self._fresh_type_name(f"{owner.text}_c{number}", owner.span)
-                inner = self._shaped_fields(nested, part)
-                if inner is None:
-                    return None
-                self.note(nested, TYPE, f"type of component c{number} of {owner.text}, "
-                          "shaped by a declared value; name invented").fields = inner
-                self.invented.add(nested.key)
-                part = TypeInfo(nested.text)
-            fields[f"c{number}"] = part
-        return fields
+                known = self.type_of(item)
+                parts.append(known.element() if known is not None and not known.rank
+                             else None)
+        return parts
+
+    def _nested_shape(self, owner: ast.Name, number: int, aggregate: ast.Aggregate,
+                      top: str) -> TypeInfo:
+        nested = self._fresh_type_name(f"{owner.text}_c{number}", owner.span)
+        inner = self._parts(nested, aggregate, top)      # nested ones are shaped first
+        for key in sorted(self.invented):
+            known = self.missing.get(key)
+            if known is not None and known.shape == inner and known.value is not None \
+                    and known.name.text.startswith(top + "_c"):
+                return TypeInfo(known.name.text)
+        record = self.note(nested, TYPE, f"type of component c{number} of {owner.text}, "
+                           "shaped by a declared value; name invented")
+        record.shape, record.value = inner, aggregate
+        self.invented.add(nested.key)
+        self._arrange(record)
+        return TypeInfo(nested.text)
 
     def _routine(self, routine: ast.Routine) -> None:
         self.routine = routine
@@ -743,9 +777,28 @@ def missing_names(modules: tuple[ast.Module, ...], signals=frozenset()) -> list[
         _settle(inference, count_uses=False)
     if _types_of_tests(inference):          # TEST on missing names only: num assumed
         _settle(inference, count_uses=False)
+    if _assumed_positions(inference):       # positions of a value nothing types: num assumed
+        _settle(inference, count_uses=False)
     _types_of_passed_values(inference)
     return sorted(inference.missing.values(),
                   key=lambda m: (m.first_use.file, m.first_use.line, m.first_use.column))
+
+
+def _assumed_positions(inference: Inference) -> bool:
+    """Positions of a record's value whose part (``[nSpeed, 2, "weld"]``) and name nothing
+    types: num, said so in the record's comment; the parts then learn it from the value."""
+    changed = False
+    for record in list(inference.missing.values()):
+        if record.kind != TYPE or record.shape is None:
+            continue
+        for position, (name, info) in enumerate(record.fields.items()):
+            if info is None and record.shape[position] is None:
+                record.shape[position] = NUM
+                record.assumed.append(name)
+                changed = True
+        if changed:
+            inference._arrange(record)
+    return changed
 
 
 def _settle(inference: Inference, count_uses: bool) -> None:
@@ -782,14 +835,12 @@ def _invent_record(inference: Inference, missing: Missing, shown: str) -> bool:
     invented = inference._fresh_type_name(f"{missing.name.text}_rec", missing.name.span)
     record = inference.note(invented, TYPE, f"type of {whose}{missing.name.text}, "
                             f"whose components {shown} no known record has; name invented")
-    record.fields.update({component: None for component in missing.components})
+    record.named.update({component: None for component in missing.components})
+    inference._arrange(record)
     inference.invented.add(invented.key)
     having = "its elements have" if missing.dims else "has"
     return missing.learn(TypeInfo(invented.text), f"{having} components {shown}")
 
-
-# The components the stubs name after their position in a value (``c1``, ``c2`` ...).
-POSITIONAL_COMPONENT = re.compile(r"c[0-9]+")
 
 # A RAPID identifier (a procedure named by a string must be one).
 IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,31}")
@@ -857,31 +908,62 @@ def _types_of_passed_values(inference: Inference) -> None:
 
 
 def _known_for_invented(inference: Inference) -> bool:
-    """An invented record type whose two or more components a declared or predefined
-    record has all (``.robax``, ``.extax``: a jointtarget): its uses take that type."""
+    """An invented record type whose components a declared or predefined record has all:
+    its uses take that type. Without a value's shape two names are needed (``.robax``,
+    ``.extax``: a jointtarget); with one, a single name does when the known record has the
+    same shape (``g.JointG.extax`` with ``[[0,0,0,0,0,0],[9E9,...]]`` declared)."""
     changed = False
     for key in sorted(inference.invented):
         record = inference.missing.get(key)
-        if record is None or len(record.fields) < 2:     # one name alone says too little
+        if record is None:
             continue
-        if all(POSITIONAL_COMPONENT.fullmatch(name) for name in record.fields):
-            continue         # c1, c2 ... name positions of a value, not known components
-        candidates = inference.names.records_with(list(record.fields))
+        names = [name for name in record.named if not POSITIONAL_COMPONENT.fullmatch(name)]
+        if not names or record.shape is None and len(names) < 2:
+            continue          # one name alone says too little; c1, c2 ... name positions
+        candidates = inference.names.records_with(names)
+        if record.shape is not None:
+            shape = _structure(inference, TypeInfo(record.name.text))
+            candidates = [c for c in candidates
+                          if shape is not None and _structure(inference, TypeInfo(c)) == shape]
         if not candidates:
             continue
         del inference.missing[key]
         inference.invented.discard(key)
         for owner in inference.missing.values():
-            for component, info in owner.fields.items():
-                if info is not None and info.key == key:
-                    owner.fields[component] = TypeInfo(candidates[0], info.rank)
-            if owner.type is not None and owner.type.key == key:
-                owner.type = TypeInfo(candidates[0], owner.type.rank)
-            for parameter in owner.parameters:
-                if parameter.type is not None and parameter.type.key == key:
-                    parameter.type = TypeInfo(candidates[0], parameter.type.rank)
+            _substitute(inference, owner, key, candidates[0])
         changed = True
     return _drop_unused_invented(inference) or changed
+
+
+def _substitute(inference: Inference, owner: Missing, key: str, type_name: str) -> None:
+    """Type ``key`` replaced by ``type_name`` wherever ``owner`` uses it."""
+    def replaced(info):
+        return TypeInfo(type_name, info.rank) if info is not None and info.key == key else info
+    owner.named = {name: replaced(info) for name, info in owner.named.items()}
+    if owner.shape is not None:
+        owner.shape = [replaced(slot) for slot in owner.shape]
+    owner.type = replaced(owner.type)
+    for parameter in owner.parameters:
+        parameter.type = replaced(parameter.type)
+    if owner.kind == TYPE:
+        inference._arrange(owner)
+
+
+def _structure(inference: Inference, info: TypeInfo, depth: int = 0):
+    """A type's shape: the atomic type's key, or the tuple of its components' shapes (the
+    positions' for a record the stubs shape from a value); None when a part is unknown."""
+    base = inference.names.base(info).key
+    if base in ATOMIC or depth > 8:
+        return base
+    record = inference.missing.get(base)
+    if record is not None and record.kind == TYPE:
+        parts = record.shape if record.shape is not None else list(record.fields.values())
+    else:
+        parts = [TypeInfo(t) for _, t in inference.names.components(info.name) or ()]
+    if not parts or None in parts:
+        return None
+    shapes = tuple(_structure(inference, part, depth + 1) for part in parts)
+    return None if None in shapes else shapes
 
 
 def _drop_unused_invented(inference: Inference) -> bool:
@@ -890,8 +972,8 @@ def _drop_unused_invented(inference: Inference) -> bool:
     dropped = False
     while True:
         used = {info.key for owner in inference.missing.values()
-                for info in (*owner.fields.values(), owner.type,
-                             *(parameter.type for parameter in owner.parameters))
+                for info in (*owner.fields.values(), *owner.named.values(), *(owner.shape or ()),
+                             owner.type, *(parameter.type for parameter in owner.parameters))
                 if info is not None}
         unused = [key for key in inference.invented if key not in used]
         if not unused:
@@ -973,8 +1055,8 @@ def _type_from_shape(inference: Inference, missing: Missing, dims: list, parts: 
     invented = inference._fresh_type_name(f"{missing.name.text}_rec", missing.name.span)
     record = inference.note(invented, TYPE, f"type of {missing.name.text}, assigned an "
                             "aggregate of values of several types; name invented")
-    record.fields = {f"c{n}": TypeInfo(_ATOMIC_NAMES[key])
-                     for n, key in enumerate(parts[:dims[-1]], 1)}
+    record.shape = [TypeInfo(_ATOMIC_NAMES[key]) for key in parts[:dims[-1]]]
+    inference._arrange(record)
     inference.invented.add(invented.key)
     if missing.learn(TypeInfo(invented.text), "assigned an aggregate of values of several types"):
         missing.dims, missing.exact_dims = list(dims[:-1]), True
@@ -984,35 +1066,17 @@ def _type_from_shape(inference: Inference, missing: Missing, dims: list, parts: 
 def _widen_invented(inference: Inference, missing: Missing, dims: list, parts: list) -> bool:
     """``r.name := "a"; r := ["a", 2, 3];``: the record invented for the components the
     program reads of ``r`` gets one component per part of the aggregate: a read ``c3`` is
-    the third, a read name takes the first free place of its type, and the other places
-    are ``c1``, ``c2`` ... of the parts' types; nothing changes when the types disagree."""
+    the third, a read name a place of its type (records.arrange), and the other places are
+    ``c1``, ``c2`` ... of the parts' types; nothing changes when not every name fits."""
     record = inference.missing.get(missing.type.key)
     if record is None or record.kind != TYPE or missing.type.key not in inference.invented \
-            or len(dims) != 1 or len(record.fields) >= dims[0]:
+            or len(dims) != 1 or record.shape is not None:
         return False
-    places: list = [None] * dims[0]
-    named = []
-    for name, info in record.fields.items():
-        position = POSITIONAL_COMPONENT.fullmatch(name) and int(name[1:])
-        if position:
-            if position > dims[0] or places[position - 1] is not None:
-                return False
-            places[position - 1] = (name, info)
-        else:
-            named.append((name, info))
-    for name, info in named:
-        free = next((i for i, place in enumerate(places) if place is None and (
-            info is None or inference.names.base(info).key == parts[i])), None)
-        if free is None:
-            return False
-        places[free] = (name, info)
-    for number, place in enumerate(places):
-        if place is not None and place[1] is not None \
-                and inference.names.base(place[1]).key != parts[number]:
-            return False
-    record.fields = {name: info if info is not None else TypeInfo(_ATOMIC_NAMES[parts[i]])
-                     for i, (name, info) in enumerate(
-                         place or (f"c{i + 1}", None) for i, place in enumerate(places))}
+    shape = [TypeInfo(_ATOMIC_NAMES[key]) for key in parts]
+    if arrange(record.named, shape, inference._fits)[1]:
+        return False
+    record.shape = shape
+    inference._arrange(record)
     return True
 
 

@@ -221,9 +221,14 @@ class StubWriter:
         if not item.fields:
             return ["! its components are not known: one num component stands in for them",
                     f"RECORD {item.name.text}", "  num value;", "ENDRECORD"]
-        guessed = [name for name, info in item.fields.items() if info is None]
+        guessed = [name for name, info in item.fields.items()
+                   if info is None or name in item.assumed]
         notes = [f"! component types not inferred ({', '.join(guessed)}): num assumed"] \
             if guessed else []
+        if item.left_out:
+            them = "it" if len(item.left_out) == 1 else "them"
+            notes.append(f"! the value declared has no place for {', '.join(item.left_out)}, "
+                         f"which the uses also name: declare {them} here")
         components = [f"  {type_name} {name};" for name, type_name in record_components(item)]
         return notes + [f"RECORD {item.name.text}"] + components + ["ENDRECORD"]
 
