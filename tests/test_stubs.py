@@ -52,11 +52,11 @@ def test_without_stubs_the_programs_do_not_load():
 
 
 def test_uninferred_names_are_left_to_the_user_and_reported():
-    folder = HERE / "weld_cell"
+    folder = HERE / "untyped_copy"
     code, out, err = cli(["stubs", *program_files(folder), "-o", "/dev/null"])
     assert code == 2
-    assert "type not inferred, left to you: p10, p20, seamA" in out
-    assert "unknown name 'p10'" in err and "nSeams" not in err
+    assert "type not inferred, left to you: pSaved, pHome" in out
+    assert "unknown name 'pHome'" in err and "nCopies" not in err
 
 
 def test_stubs_to_stdout_and_nothing_to_declare(tmp_path):

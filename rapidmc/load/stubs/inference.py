@@ -42,6 +42,8 @@ class Parameter:
     type: Optional[TypeInfo]
     optional: bool = False
     switch: bool = False
+    assumed: bool = False            # num, as nothing tells the type
+    aggregates: list = field(default_factory=list)      # aggregates given as the argument
 
 
 @dataclass
@@ -438,7 +440,8 @@ class Inference:
         self.expression(statement.target)
         if isinstance(root, ast.NameRef) and root.name.key in self.missing:
             self.missing[root.name.key].assigned = True
-        self.expect(statement.value, target, f"assigned to {target.name} data" if target else "")
+        self.expect(statement.value, target,
+                    f"assigned to {target.name} data" if target else "read")
         self.expression(statement.value)
         if isinstance(statement.target, ast.NameRef) and isinstance(statement.value, ast.Aggregate):
             written = self.missing.get(statement.target.name.key)
@@ -727,6 +730,13 @@ class Inference:
             elif parameter.type is None and info is not None:
                 parameter.type = info.element() if info.rank == 0 else info
                 self.changed = True
+            if isinstance(arg.value, ast.Aggregate) and \
+                    all(a is not arg.value for a in parameter.aggregates):
+                parameter.aggregates.append(arg.value)
+            if parameter.type is not None and arg.value is not None and not parameter.switch:
+                # the other calls' arguments have the type one call's argument gave
+                self.expect(arg.value, parameter.type, f"{missing.name.text} argument "
+                            f"{parameter.name}" + (", num assumed" if parameter.assumed else ""))
 
 
 def _length_along(value, axis: int) -> Optional[int]:
@@ -780,6 +790,8 @@ def missing_names(modules: tuple[ast.Module, ...], signals=frozenset()) -> list[
     if _assumed_positions(inference):       # positions of a value nothing types: num assumed
         _settle(inference, count_uses=False)
     _types_of_passed_values(inference)
+    if _types_of_parameters(inference):     # what no argument types: from aggregates, or num
+        _settle(inference, count_uses=False)
     return sorted(inference.missing.values(),
                   key=lambda m: (m.first_use.file, m.first_use.line, m.first_use.column))
 
@@ -905,6 +917,49 @@ def _types_of_passed_values(inference: Inference) -> None:
                 and record.fields.get(component) is None:
             function.learn(NUM, f"assigned to component {component} of {record.name.text}, "
                            "whose type is not known either: num assumed")
+
+
+def _types_of_parameters(inference: Inference) -> bool:
+    """Parameters of missing routines that no argument types: an aggregate given as the
+    argument makes an array of its parts' one atomic type (``[10, 20, 30]``: ``num{*}``) or
+    a record the stubs declare shaped by it (``<routine>_<parameter>``); otherwise num is
+    assumed, and said so. The missing data passed as such an argument then has that type
+    (the walk that follows expects it), instead of being left undeclared."""
+    changed = False
+    for routine in list(inference.missing.values()):
+        if routine.kind not in (PROCEDURE, FUNCTION):
+            continue
+        for parameter in routine.parameters:
+            if parameter.type is not None or parameter.switch:
+                continue
+            parameter.type = _type_of_aggregates(inference, routine, parameter)
+            if parameter.type is None:
+                parameter.type, parameter.assumed = NUM, True
+            changed = True
+    return changed
+
+
+def _type_of_aggregates(inference: Inference, routine: Missing,
+                        parameter: Parameter) -> Optional[TypeInfo]:
+    shapes = {None if s is None else (tuple(s[0]), tuple(s[1]))
+              for s in (_shape(inference, a) for a in parameter.aggregates)}
+    if len(shapes) != 1 or None in shapes:
+        return None
+    dims, parts = shapes.pop()
+    if len(set(parts)) == 1:
+        return TypeInfo(_ATOMIC_NAMES[parts[0]], len(dims))
+    if len(dims) != 1:
+        return None
+    invented = inference._fresh_type_name(f"{routine.name.text}_{parameter.name}",
+                                          routine.name.span)
+    record = inference.note(invented, TYPE, f"type of parameter {parameter.name} of "
+                            f"{routine.name.text}, given an aggregate of values of several "
+                            "types; name invented")
+    record.shape = [TypeInfo(_ATOMIC_NAMES[key]) for key in parts]
+    record.value = parameter.aggregates[0]
+    inference._arrange(record)
+    inference.invented.add(invented.key)
+    return TypeInfo(invented.text)
 
 
 def _known_for_invented(inference: Inference) -> bool:

@@ -183,11 +183,9 @@ class StubWriter:
                 texts.append(f"\\switch {parameter.name}")
                 continue
             info = parameter.type
-            if info is None:
+            if info is None or parameter.assumed:
                 guessed.append(parameter.name)
-                type_name, rank = "num", 0
-            else:
-                type_name, rank = info.name, info.rank
+            type_name, rank = (info.name, info.rank) if info is not None else ("num", 0)
             mode = "" if self.neutral.is_value_type(type_name) else "VAR "
             array = "{" + ",".join("*" * rank) + "}" if rank else ""
             optional = "\\" if parameter.optional else ""
