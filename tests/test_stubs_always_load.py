@@ -99,3 +99,39 @@ def test_the_module_written_for_a_program_missing_declarations_loads(program, da
     source = WORK / "Program.mod"
     source.write_text(text, encoding="latin-1")
     assert_written_module_loads([str(source)], WORK / "Missing.mod")
+
+
+# Values of a record type of a module not given, and component names the code reads:
+# the record must take the values and, where they fit, the names (issue 28).
+ATOMIC_PARTS = ("120", "-2.5", "TRUE", '"box"', "nSpeed", "sLabel", "bFlag")
+NESTED_PARTS = ("[0, 0, 100]", "[1, 0, 0, 0]",
+                "[[10, -17, 0, 0, 45, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]]")
+USES = ("TPWrite {d}.{c};", "nValue := {d}.{c} + 1;", "IF {d}.{c} THEN\n    Stop;\n  ENDIF",
+        "{d}.{c}.extax.eax_a := 0;", "MoveAbsJ {d}.{c}, v100, fine, tool0;",
+        "{d}.{c}.x := 5;", "TPWrite \"n\" \\Num:={d}.{c};", "{d}.{c} := {d}.{c};")
+COMPONENTS = ("length", "label", "ok", "c2", "c3", "joints", "trans", "count")
+
+record_values = st.lists(st.sampled_from(ATOMIC_PARTS + NESTED_PARTS), min_size=1, max_size=6)
+
+
+@fuzz_settings(60)
+@given(record_values, st.booleans(),
+       st.lists(st.tuples(st.sampled_from(USES), st.sampled_from(COMPONENTS)), max_size=8),
+       st.booleans())
+def test_the_module_written_for_a_record_known_by_value_and_names_loads(parts, second, uses,
+                                                                      data_first):
+    value = "[" + ", ".join(parts) + "]"
+    data = [f"  PERS celldata cell1 := {value};"]
+    if second:   # another value of the type, literals where the first has names
+        literal = {"nSpeed": "3", "sLabel": '"a"', "bFlag": "FALSE"}
+        data.append("  PERS celldata cell2 := [" +
+                    ", ".join(literal.get(p, p) for p in parts) + "];")
+    body = "\n  ".join(use.format(d="cell1", c=name) for use, name in uses)
+    main = f"MODULE CellMain\n  PROC main()\n  {body}\n  ENDPROC\nENDMODULE\n"
+    teach = "MODULE CellData\n" + "\n".join(data) + "\nENDMODULE\n"
+    files = []
+    for name, text in (("A.mod", teach), ("B.mod", main)) if data_first else \
+            (("A.mod", main), ("B.mod", teach)):
+        (WORK / name).write_text(text, encoding="latin-1")
+        files.append(str(WORK / name))
+    assert_written_module_loads(files, WORK / "Missing.mod")
