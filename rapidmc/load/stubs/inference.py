@@ -179,7 +179,9 @@ class Inference:
 
     def _name_component(self, record: Missing, name: str, info: Optional[TypeInfo]) -> None:
         """A use names component ``name`` of a missing record, of type ``info`` if the use
-        tells it: the record gets it (on a position of the value that shapes it, if any)."""
+        tells it: the record gets it (on a position of the value that shapes it, if any).
+        RAPID names are not case-sensitive: the first spelling used stays."""
+        name = _spelled(record.named, name)
         if name not in record.named or info is not None and \
                 self._replaces(record.named[name], info):
             record.named[name] = info
@@ -220,7 +222,8 @@ class Inference:
             self._nested_record(expr.base)
         owner = self.type_of(expr.base)
         record = self.missing.get(owner.key) if owner is not None else None
-        if record is None or record.kind != TYPE or record.fields.get(expr.name.text):
+        if record is None or record.kind != TYPE or \
+                record.fields.get(_spelled(record.fields, expr.name.text)):
             return
         if record.shape is not None:     # a position holding a record of its own takes it
             self._name_component(record, expr.name.text, SOME_RECORD)
@@ -276,7 +279,8 @@ class Inference:
         if isinstance(expr, ast.Component):
             base = self.type_of(expr.base)
             if base is not None and base.key in self.missing:
-                return self.missing[base.key].fields.get(expr.name.text)
+                fields = self.missing[base.key].fields
+                return fields.get(_spelled(fields, expr.name.text))
             return self.names.component_type(base.name, expr.name.text) if base else None
         if isinstance(expr, ast.FunctionCall):
             return self._call_type(expr)
@@ -737,6 +741,11 @@ class Inference:
                 # the other calls' arguments have the type one call's argument gave
                 self.expect(arg.value, parameter.type, f"{missing.name.text} argument "
                             f"{parameter.name}" + (", num assumed" if parameter.assumed else ""))
+
+
+def _spelled(names: dict, name: str) -> str:
+    """``name`` as ``names`` spell it (RAPID names ignore case), or as given if absent."""
+    return next((known for known in names if known.upper() == name.upper()), name)
 
 
 def _length_along(value, axis: int) -> Optional[int]:
