@@ -11,9 +11,9 @@ too, of the kind its prefix says (``TEST giRecipe CASE 1:``, ``IF aiLevel > 2.5`
 a ``_Gi``-style suffix (``Suck_Gi``); without either, only a name tested for equality
 with 0 or 1 is one (a digital input, ``IF sensorPart = 1``).  A name with such a prefix
 or suffix read as the whole value of an assignment (``nType := Type_Gi;``) is one too.
-A name the program assigns with ``:=`` is never one: signals are not values RAPID can
-assign (AliasIO and the Set/Reset instructions change them), so ``partReady := 0; ...
-IF partReady = 1`` is missing data.  Names passed to a ``mecunit`` parameter are
+A name the program writes is never one: signals are not values RAPID can assign (AliasIO
+and the Set/Reset instructions change them), so ``partReady := 0; ... IF partReady = 1``
+and ``Incr nCycle; IF nCycle = 1`` read missing data.  Names passed to a ``mecunit`` parameter are
 mechanical units of the motion configuration (``ActUnit CNV1``).
 """
 from __future__ import annotations
@@ -54,16 +54,19 @@ def compared_names(modules: Iterable[ast.Module]) -> Iterator[tuple[ast.Name, st
     them to an I/O routine.  The kind follows the usual name prefix (di, do,
     gi, go, ai, ao: ``diPart``, ``DI_PART``, ``DI1``); a name without one is
     taken as a digital input.  The linker only asks about undeclared names.
-    A name the program assigns anywhere is data, not a signal, and is not yielded.
+    A name the program writes anywhere is data, not a signal, and is not yielded.
     """
-    assigned = assigned_names(modules)
+    assigned = written_names(modules)
     for name, kind in _compared_uses(modules):
         if name.key not in assigned:
             yield name, kind
 
 
-def assigned_names(modules: Iterable[ast.Module]) -> set[str]:
-    """The names whose data (whole, an element or a component) some ``:=`` assigns."""
+def written_names(modules: Iterable[ast.Module]) -> set[str]:
+    """The names whose data (whole, an element or a component) some ``:=`` assigns, and
+    the bare names passed to a parameter of a predefined routine that writes a value
+    (``Incr nCycle``, ``TPReadNum nAnswer``: VAR, INOUT or PERS, of a type that is no
+    signal's and not ``anytype``)."""
     found = set()
     for node in _nodes(modules):
         if isinstance(node, ast.Assignment):
@@ -72,6 +75,10 @@ def assigned_names(modules: Iterable[ast.Module]) -> set[str]:
                 root = root.base
             if isinstance(root, ast.NameRef):
                 found.add(root.name.key)
+        for name, spec in _argument_specs(node):
+            if spec.mode in ("VAR", "INOUT", "PERS") and \
+                    spec.type_name.lower() not in (*SIGNAL_KINDS, "anytype"):
+                found.add(name.key)    # (anytype: AliasIO's ToSignal takes a signal)
     return found
 
 
@@ -174,6 +181,12 @@ def _call_uses(node) -> Iterator[tuple[ast.Name, str]]:
 
 def _argument_uses(node) -> Iterator[tuple[ast.Name, str]]:
     """(name, parameter type in lower case) for each bare name argument of a predefined call."""
+    for name, spec in _argument_specs(node):
+        yield name, spec.type_name.lower()
+
+
+def _argument_specs(node) -> Iterator[tuple[ast.Name, object]]:
+    """(name, parameter spec) for each bare name argument of a predefined call."""
     if isinstance(node, ast.ProcedureCall):
         entry = registry.lookup_procedure(node.name.key)
     elif isinstance(node, ast.FunctionCall):
@@ -184,7 +197,7 @@ def _argument_uses(node) -> Iterator[tuple[ast.Name, str]]:
         return
     for arg, spec in registry.matched_parameters(node.args, entry.signature.parameters):
         if spec is not None and isinstance(arg.value, ast.NameRef):
-            yield arg.value.name, spec.type_name.lower()
+            yield arg.value.name, spec
 
 
 def _for_variables(statements) -> Iterator[str]:

@@ -1,8 +1,9 @@
 MODULE Conveyor
   ! Issue 28: a name the program assigns and also compares with 0 or 1 is data of a module
   ! not given (a handshake flag), not a configured digital input: signals are not assigned
-  ! with :=. The stubs declare partReady and nBoxCount; diBoxAtEnd, compared with 1 and
-  ! never assigned, stays a configured input and is not declared.
+  ! with := nor written by instructions (Incr, TPReadNum). The stubs declare partReady,
+  ! nBoxCount, nCycle and nAnswer; diBoxAtEnd, compared with 1 and never written, stays a
+  ! configured input and is not declared.
   PROC main()
     partReady := 0;
     WHILE partReady = 0 DO
@@ -14,5 +15,9 @@ MODULE Conveyor
       TPWrite "first box";
     ENDIF
     nBoxCount := nBoxCount + 1;
+    Incr nCycle;
+    IF nCycle = 1 TPWrite "first cycle";
+    TPReadNum nAnswer, "Go on? (1 = yes)";
+    IF nAnswer = 0 Stop;
   ENDPROC
 ENDMODULE
