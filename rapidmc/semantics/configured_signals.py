@@ -24,6 +24,9 @@ from typing import Iterable, Iterator, Optional
 from .. import ast
 from .library import registry
 
+# Parameters of type anytype that take a signal: (routine key, parameter key).
+SIGNAL_ALIASES = {("ALIASIO", "TOSIGNAL")}
+
 SIGNAL_KINDS = {"signaldi": "DI", "signaldo": "DO", "signalai": "AI", "signalao": "AO",
                 "signalgi": "GI", "signalgo": "GO"}
 
@@ -65,8 +68,8 @@ def compared_names(modules: Iterable[ast.Module]) -> Iterator[tuple[ast.Name, st
 def written_names(modules: Iterable[ast.Module]) -> set[str]:
     """The names whose data (whole, an element or a component) some ``:=`` assigns, and
     the bare names passed to a parameter of a predefined routine that writes a value
-    (``Incr nCycle``, ``TPReadNum nAnswer``: VAR, INOUT or PERS, of a type that is no
-    signal's and not ``anytype``)."""
+    (``Incr nCycle``, ``TPReadNum nAnswer``, ``GetDataVal "x", ao_Act``: VAR, INOUT or
+    PERS, of a type that is no signal's, AliasIO's ToSignal excepted)."""
     found = set()
     for node in _nodes(modules):
         if isinstance(node, ast.Assignment):
@@ -76,9 +79,9 @@ def written_names(modules: Iterable[ast.Module]) -> set[str]:
             if isinstance(root, ast.NameRef):
                 found.add(root.name.key)
         for name, spec in _argument_specs(node):
-            if spec.mode in ("VAR", "INOUT", "PERS") and \
-                    spec.type_name.lower() not in (*SIGNAL_KINDS, "anytype"):
-                found.add(name.key)    # (anytype: AliasIO's ToSignal takes a signal)
+            if spec.mode in ("VAR", "INOUT", "PERS") and spec.type_name.lower() not in \
+                    SIGNAL_KINDS and (node.name.key, spec.key) not in SIGNAL_ALIASES:
+                found.add(name.key)
     return found
 
 

@@ -207,6 +207,43 @@ class Inference:
         return known is None or known is SOME_RECORD or \
             known.key in self.invented and info.key not in self.invented
 
+    def replace_type(self, key: str, type_name: str) -> None:
+        """The stubs' type ``key`` gives way to ``type_name`` wherever a missing name uses it."""
+        self.missing.pop(key, None)
+        self.invented.discard(key)
+
+        def replaced(info):
+            return TypeInfo(type_name, info.rank) if info is not None and info.key == key \
+                else info
+        for owner in self.missing.values():
+            owner.named = {name: replaced(info) for name, info in owner.named.items()}
+            if owner.shape is not None:
+                owner.shape = [replaced(slot) for slot in owner.shape]
+            owner.type = replaced(owner.type)
+            for parameter in owner.parameters:
+                parameter.type = replaced(parameter.type)
+            if owner.kind == TYPE:
+                self._arrange(owner)
+        self.changed = True
+
+    def _unify_invented(self, target: Optional[TypeInfo], value: Optional[TypeInfo]) -> None:
+        """Data of two record types the stubs invented (``bufA{i} := bmEmpty`` and ``bufB{i}
+        := bmEmpty``, each array's ``<data>_rec``) assigned one to the other: one type, the
+        one invented first, with the components both are read by (a value's shape kept)."""
+        if target is None or value is None or target.key == value.key or \
+                target.key not in self.invented or value.key not in self.invented:
+            return
+        kept, merged = self.missing.get(target.key), self.missing.get(value.key)
+        if kept is None or merged is None or merged.shape is not None and kept.shape is not None:
+            return
+        if _place_of(merged) < _place_of(kept):
+            kept, merged = merged, kept
+        if kept.shape is None and merged.shape is not None:
+            kept.shape, kept.value = merged.shape, merged.value
+        for name, info in merged.named.items():
+            self._name_component(kept, name, info)
+        self.replace_type(merged.name.key, kept.name.text)
+
     def _nested_record(self, expr: ast.Component) -> None:
         """``msgs.state.joints``: when ``msgs`` has a missing RECORD type and its component
         ``state`` has no known type, ``state`` is itself a record, of a type named after
@@ -433,6 +470,8 @@ class Inference:
         root = statement.target
         while isinstance(root, (ast.Index, ast.Component)):
             root = root.base
+        self._unify_invented(target, value)
+        self._same_sizes(statement.target, statement.value)
         self.expect(statement.target, value, f"assigned a {value.name}" if value else "assigned")
         self.expression(statement.target)
         if isinstance(root, ast.NameRef) and root.name.key in self.missing:
@@ -455,6 +494,26 @@ class Inference:
             if record is not None and record.kind == TYPE:
                 self.component_feeds.setdefault(statement.value.name.key,
                                                 (record, statement.target.name.text))
+
+    def _same_sizes(self, target, value) -> None:
+        """``a := b`` of two missing names, one of them an array (indexed elsewhere): the
+        other is an array of the same sizes, not a single value of its element type."""
+        if not (isinstance(target, ast.NameRef) and isinstance(value, ast.NameRef)):
+            return
+        pair = [self.missing.get(target.name.key), self.missing.get(value.name.key)]
+        if any(m is None or m.kind != DATA for m in pair):
+            return
+        for one, other in (pair, pair[::-1]):
+            if one.dims and (len(other.dims) != len(one.dims) or other.dims != one.dims
+                             and not other.exact_dims and one.exact_dims):
+                other.dims = list(one.dims)
+                other.exact_dims = one.exact_dims
+                self.changed = True
+            elif one.dims and other.dims and other.dims != one.dims and not other.exact_dims:
+                larger = [max(a, b) for a, b in zip(one.dims, other.dims)]
+                if larger != other.dims:
+                    other.dims = larger
+                    self.changed = True
 
     def _array_of_records(self, name: ast.Name, aggregate: ast.Aggregate) -> None:
         """Missing data assigned an aggregate of aggregates of one shape
@@ -734,6 +793,11 @@ class Inference:
                 # the other calls' arguments have the type one call's argument gave
                 self.expect(arg.value, parameter.type, f"{missing.name.text} argument "
                             f"{parameter.name}" + (", num assumed" if parameter.assumed else ""))
+
+
+def _place_of(missing: Missing) -> tuple:
+    span = missing.first_use
+    return span.file, span.line, span.column
 
 
 def _spelled(names: dict, name: str) -> str:

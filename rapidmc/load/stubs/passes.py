@@ -211,26 +211,9 @@ def _known_for_invented(inference: Inference) -> bool:
                           if shape is not None and _structure(inference, TypeInfo(c)) == shape]
         if not candidates:
             continue
-        del inference.missing[key]
-        inference.invented.discard(key)
-        for owner in inference.missing.values():
-            _substitute(inference, owner, key, candidates[0])
+        inference.replace_type(key, candidates[0])
         changed = True
     return _drop_unused_invented(inference) or changed
-
-
-def _substitute(inference: Inference, owner: Missing, key: str, type_name: str) -> None:
-    """Type ``key`` replaced by ``type_name`` wherever ``owner`` uses it."""
-    def replaced(info):
-        return TypeInfo(type_name, info.rank) if info is not None and info.key == key else info
-    owner.named = {name: replaced(info) for name, info in owner.named.items()}
-    if owner.shape is not None:
-        owner.shape = [replaced(slot) for slot in owner.shape]
-    owner.type = replaced(owner.type)
-    for parameter in owner.parameters:
-        parameter.type = replaced(parameter.type)
-    if owner.kind == TYPE:
-        inference._arrange(owner)
 
 
 def _structure(inference: Inference, info: TypeInfo, depth: int = 0):
