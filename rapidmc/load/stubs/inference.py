@@ -504,16 +504,15 @@ class Inference:
         if any(m is None or m.kind != DATA for m in pair):
             return
         for one, other in (pair, pair[::-1]):
-            if one.dims and (len(other.dims) != len(one.dims) or other.dims != one.dims
-                             and not other.exact_dims and one.exact_dims):
-                other.dims = list(one.dims)
-                other.exact_dims = one.exact_dims
+            if not one.dims or other.exact_dims or other.dims == one.dims:
+                continue
+            if one.exact_dims or len(other.dims) != len(one.dims):
+                sizes = list(one.dims)                  # the sizes an aggregate fixed
+            else:
+                sizes = [max(a, b) for a, b in zip(one.dims, other.dims)]
+            if sizes != other.dims:
+                other.dims, other.exact_dims = sizes, one.exact_dims
                 self.changed = True
-            elif one.dims and other.dims and other.dims != one.dims and not other.exact_dims:
-                larger = [max(a, b) for a, b in zip(one.dims, other.dims)]
-                if larger != other.dims:
-                    other.dims = larger
-                    self.changed = True
 
     def _array_of_records(self, name: ast.Name, aggregate: ast.Aggregate) -> None:
         """Missing data assigned an aggregate of aggregates of one shape
