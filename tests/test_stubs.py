@@ -95,3 +95,15 @@ def test_stubs_of_a_backup_leave_the_configured_signals_alone(tmp_path):
     text = output.read_text()
     assert "PERS num nState := 0;" in text and "PERS bool bAuto := FALSE;" in text
     assert "cellState" not in text and "gripClose" not in text
+
+
+def test_an_error_inside_the_written_module_is_reported_as_a_fault_of_stubs(capsys):
+    from rapidmc import ast
+    from rapidmc.commands.stubs import _verify
+    from rapidmc.load.stubs import Stubs
+    from rapidmc.syntax import parse_text
+    program = parse_text("MODULE m\n  PROC main()\n    n := 1;\n  ENDPROC\nENDMODULE\n", "m.mod")
+    broken = Stubs("MODULE Missing\n  PERS nosuchtype n := 0;\nENDMODULE\n", (), ())
+    assert _verify(ast.Program(program), broken, "Missing.mod", ()) == 2
+    err = capsys.readouterr().err
+    assert "Missing.mod:2:8: error:" in err and "a fault of rapidmc" in err
