@@ -48,15 +48,15 @@ def test_program_with_written_module_parses_and_checks(folder, tmp_path):
 def test_without_stubs_the_programs_do_not_load():
     for folder in PROGRAMS:
         code, _, err = cli(["run", *program_files(folder)])
-        assert code == 2 and "[RMC201]" in err, folder.name
+        assert code == 2 and ("[RMC201]" in err or "[RMC202]" in err), folder.name
 
 
 def test_uninferred_names_are_left_to_the_user_and_reported():
-    folder = HERE / "weld_cell"
+    folder = HERE / "untyped_copy"
     code, out, err = cli(["stubs", *program_files(folder), "-o", "/dev/null"])
     assert code == 2
-    assert "type not inferred, left to you: p10, p20, seamA" in out
-    assert "unknown name 'p10'" in err and "nSeams" not in err
+    assert "type not inferred, left to you: pSaved, pHome" in out
+    assert "unknown name 'pHome'" in err and "nCopies" not in err
 
 
 def test_stubs_to_stdout_and_nothing_to_declare(tmp_path):
@@ -95,3 +95,15 @@ def test_stubs_of_a_backup_leave_the_configured_signals_alone(tmp_path):
     text = output.read_text()
     assert "PERS num nState := 0;" in text and "PERS bool bAuto := FALSE;" in text
     assert "cellState" not in text and "gripClose" not in text
+
+
+def test_an_error_inside_the_written_module_is_reported_as_a_fault_of_stubs(capsys):
+    from rapidmc import ast
+    from rapidmc.commands.stubs import _verify
+    from rapidmc.load.stubs import Stubs
+    from rapidmc.syntax import parse_text
+    program = parse_text("MODULE m\n  PROC main()\n    n := 1;\n  ENDPROC\nENDMODULE\n", "m.mod")
+    broken = Stubs("MODULE Missing\n  PERS nosuchtype n := 0;\nENDMODULE\n", (), ())
+    assert _verify(ast.Program(program), broken, "Missing.mod", ()) == 2
+    err = capsys.readouterr().err
+    assert "Missing.mod:2:8: error:" in err and "a fault of rapidmc" in err

@@ -10,7 +10,10 @@ any order.  An undeclared name compared with a number is a configured signal
 too, of the kind its prefix says (``TEST giRecipe CASE 1:``, ``IF aiLevel > 2.5``) or
 a ``_Gi``-style suffix (``Suck_Gi``); without either, only a name tested for equality
 with 0 or 1 is one (a digital input, ``IF sensorPart = 1``).  A name with such a prefix
-or suffix read as the whole value of an assignment (``nType := Type_Gi;``) is one too.  Names passed to a ``mecunit`` parameter are
+or suffix read as the whole value of an assignment (``nType := Type_Gi;``) is one too.
+A name the program writes is never one: signals are not values RAPID can assign (AliasIO
+and the Set/Reset instructions change them), so ``partReady := 0; ... IF partReady = 1``
+and ``Incr nCycle; IF nCycle = 1`` read missing data.  Names passed to a ``mecunit`` parameter are
 mechanical units of the motion configuration (``ActUnit CNV1``).
 """
 from __future__ import annotations
@@ -20,6 +23,9 @@ from typing import Iterable, Iterator, Optional
 
 from .. import ast
 from .library import registry
+
+# Parameters of type anytype that take a signal: (routine key, parameter key).
+SIGNAL_ALIASES = {("ALIASIO", "TOSIGNAL")}
 
 SIGNAL_KINDS = {"signaldi": "DI", "signaldo": "DO", "signalai": "AI", "signalao": "AO",
                 "signalgi": "GI", "signalgo": "GO"}
@@ -51,7 +57,35 @@ def compared_names(modules: Iterable[ast.Module]) -> Iterator[tuple[ast.Name, st
     them to an I/O routine.  The kind follows the usual name prefix (di, do,
     gi, go, ai, ao: ``diPart``, ``DI_PART``, ``DI1``); a name without one is
     taken as a digital input.  The linker only asks about undeclared names.
+    A name the program writes anywhere is data, not a signal, and is not yielded.
     """
+    assigned = written_names(modules)
+    for name, kind in _compared_uses(modules):
+        if name.key not in assigned:
+            yield name, kind
+
+
+def written_names(modules: Iterable[ast.Module]) -> set[str]:
+    """The names whose data (whole, an element or a component) some ``:=`` assigns, and
+    the bare names passed to a parameter of a predefined routine that writes a value
+    (``Incr nCycle``, ``TPReadNum nAnswer``, ``GetDataVal "x", ao_Act``: VAR, INOUT or
+    PERS, of a type that is no signal's, AliasIO's ToSignal excepted)."""
+    found = set()
+    for node in _nodes(modules):
+        if isinstance(node, ast.Assignment):
+            root = node.target
+            while isinstance(root, (ast.Index, ast.Component)):
+                root = root.base
+            if isinstance(root, ast.NameRef):
+                found.add(root.name.key)
+        for name, spec in _argument_specs(node):
+            if spec.mode in ("VAR", "INOUT", "PERS") and spec.type_name.lower() not in \
+                    SIGNAL_KINDS and (node.name.key, spec.key) not in SIGNAL_ALIASES:
+                found.add(name.key)
+    return found
+
+
+def _compared_uses(modules: Iterable[ast.Module]) -> Iterator[tuple[ast.Name, str]]:
     for node in _nodes(modules):
         if isinstance(node, ast.Assignment) and isinstance(node.value, ast.NameRef) \
                 and _SIGNAL_NAME.search(node.value.name.text) is not None:
@@ -150,6 +184,12 @@ def _call_uses(node) -> Iterator[tuple[ast.Name, str]]:
 
 def _argument_uses(node) -> Iterator[tuple[ast.Name, str]]:
     """(name, parameter type in lower case) for each bare name argument of a predefined call."""
+    for name, spec in _argument_specs(node):
+        yield name, spec.type_name.lower()
+
+
+def _argument_specs(node) -> Iterator[tuple[ast.Name, object]]:
+    """(name, parameter spec) for each bare name argument of a predefined call."""
     if isinstance(node, ast.ProcedureCall):
         entry = registry.lookup_procedure(node.name.key)
     elif isinstance(node, ast.FunctionCall):
@@ -160,7 +200,7 @@ def _argument_uses(node) -> Iterator[tuple[ast.Name, str]]:
         return
     for arg, spec in registry.matched_parameters(node.args, entry.signature.parameters):
         if spec is not None and isinstance(arg.value, ast.NameRef):
-            yield arg.value.name, spec.type_name.lower()
+            yield arg.value.name, spec
 
 
 def _for_variables(statements) -> Iterator[str]:

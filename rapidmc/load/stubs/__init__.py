@@ -17,7 +17,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ... import ast
-from .inference import Missing, missing_names
+from .inference import Missing
+from .passes import missing_names
 from .module_text import StubWriter
 from .names import Declarations
 

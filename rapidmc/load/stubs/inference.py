@@ -8,13 +8,7 @@ type its call's context expects.  The walk repeats until nothing new is
 learnt, since one inferred name types the next (``x := y;`` with ``x``
 known later).
 
-Example::
-
-    >>> from rapidmc.syntax import parse_text
-    >>> modules = parse_text("MODULE m PROC main() MoveL p1, v100, fine, tGrip; "
-    ...                      "IF ok THEN n := 3; ENDIF ENDPROC ENDMODULE", "m.mod")
-    >>> [(m.name.text, m.type.name) for m in missing_names(modules)]
-    [('p1', 'robtarget'), ('tGrip', 'tooldata'), ('ok', 'bool'), ('n', 'num')]
+The passes around the walk are in ``passes`` (``missing_names``).
 """
 from __future__ import annotations
 
@@ -26,11 +20,11 @@ from ... import ast
 from ...semantics.library import registry
 from ...semantics.configured_signals import COMPARISONS
 from .names import BOOL, NUM, STRING, Declarations, TypeInfo
+from .records import SOME_RECORD, arrange
 
 DATA, PROCEDURE, FUNCTION, TRAP, TYPE = "data", "procedure", "function", "trap", "type"
 ARITHMETIC = ("+", "-", "*", "/")
 LOGICAL = ("AND", "OR", "XOR")
-MAX_PASSES = 6
 
 
 @dataclass
@@ -41,6 +35,8 @@ class Parameter:
     type: Optional[TypeInfo]
     optional: bool = False
     switch: bool = False
+    assumed: bool = False            # num, as nothing tells the type
+    aggregates: list = field(default_factory=list)      # aggregates given as the argument
 
 
 @dataclass
@@ -59,7 +55,13 @@ class Missing:
     components: list[str] = field(default_factory=list)
     parameters: list[Parameter] = field(default_factory=list)
     fields: dict = field(default_factory=dict)          # a missing RECORD: component -> type
+    named: dict = field(default_factory=dict)           # its components the uses name -> type
+    shape: Optional[list] = None                        # its positions' types, from a value
+    left_out: list = field(default_factory=list)        # names no position of the shape takes
+    value: Optional[object] = None                      # the aggregate that gave the shape
+    assumed: list = field(default_factory=list)         # components num is assumed for
     sizes_array: bool = False                           # used as an array dimension
+    array_size: Optional[tuple] = None                  # (size, array) a declared value fixes
     indexes_array: bool = False                         # used as an array index
     assigned: bool = False
     array_argument: bool = False                        # dims from an array parameter
@@ -146,6 +148,10 @@ class Inference:
         """An aggregate given where a known record is expected: each part has the type of
         its component (``position.trans := [x, -y, zh]``: ``x`` is a num of a pos)."""
         components = self.names.components(info.name)
+        record = self.missing.get(self.names.base(info).key)
+        if components is None and record is not None and record.kind == TYPE:
+            components = [(name, known.name) for name, known in record.fields.items()
+                          if known is not None and known is not SOME_RECORD]
         if components is None or len(components) != len(expr.items):
             return
         for item, (name, type_name) in zip(expr.items, components):
@@ -162,35 +168,81 @@ class Inference:
         record = self.missing.get(base.key) if base is not None else None
         if record is None or record.kind != TYPE:
             return
-        name = expr.name.text
-        positional = [c for c in record.fields if POSITIONAL_COMPONENT.fullmatch(c)]
-        if name not in record.fields and positional and len(positional) == len(record.fields):
-            self._name_a_position(record, name, info)      # shaped by a value: keep the count
-        elif name not in record.fields or info is not None and \
-                self._replaces(record.fields[name], info):
-            record.fields[name] = info
+        self._name_component(record, expr.name.text, info)
+
+    def _name_component(self, record: Missing, name: str, info: Optional[TypeInfo]) -> None:
+        """A use names component ``name`` of a missing record, of type ``info`` if the use
+        tells it: the record gets it (on a position of the value that shapes it, if any).
+        RAPID names are not case-sensitive: the first spelling used stays."""
+        name = _spelled(record.named, name)
+        if name not in record.named or info is not None and \
+                self._replaces(record.named[name], info):
+            record.named[name] = info
+            self._arrange(record)
+
+    def _arrange(self, record: Missing) -> None:
+        """The record's components from its names and shape (records.arrange)."""
+        components, left_out = arrange(record.named, record.shape, self._fits)
+        if components != record.fields or left_out != record.left_out:
+            record.fields, record.left_out = components, left_out
             self.changed = True
 
-    def _name_a_position(self, record: Missing, name: str, info: Optional[TypeInfo]) -> None:
-        """A record shaped by a declared value (``c1``, ``c2`` ...) whose component ``name``
-        a use reads with type ``info``: the first positional component of that type takes
-        the name, so the record keeps the value's count of components. Without a type the
-        name waits for a use that gives one."""
-        if info is None:
-            return
-        for component, known in record.fields.items():
-            if POSITIONAL_COMPONENT.fullmatch(component) and known is not None \
-                    and self.names.base(known).key == self.names.base(info).key:
-                record.fields = {(name if c == component else c): t
-                                 for c, t in record.fields.items()}
-                self.changed = True
-                return
+    def _fits(self, info: Optional[TypeInfo], slot: Optional[TypeInfo]) -> bool:
+        """Whether a component of type ``info`` can stand at a position of type ``slot``."""
+        if info is SOME_RECORD:
+            return slot is not None and self._is_record(slot)
+        return info is None or slot is None or \
+            self.names.base(info).key == self.names.base(slot).key
+
+    def _is_record(self, info: TypeInfo) -> bool:
+        known = self.missing.get(info.key)
+        if known is not None and known.kind == TYPE:
+            return not known.alias_of
+        return bool(self.names.components(info.name))
 
     def _replaces(self, known: Optional[TypeInfo], info: TypeInfo) -> bool:
         """A component's type ``info`` from a use takes the place of none, or of a record
         type the stubs invented only because the component had components of its own
         (``ee.tool.tframe.rot := ...`` and then ``tGrip := ee.tool``: a tooldata)."""
-        return known is None or known.key in self.invented and info.key not in self.invented
+        return known is None or known is SOME_RECORD or \
+            known.key in self.invented and info.key not in self.invented
+
+    def replace_type(self, key: str, type_name: str) -> None:
+        """The stubs' type ``key`` gives way to ``type_name`` wherever a missing name uses it."""
+        self.missing.pop(key, None)
+        self.invented.discard(key)
+
+        def replaced(info):
+            return TypeInfo(type_name, info.rank) if info is not None and info.key == key \
+                else info
+        for owner in self.missing.values():
+            owner.named = {name: replaced(info) for name, info in owner.named.items()}
+            if owner.shape is not None:
+                owner.shape = [replaced(slot) for slot in owner.shape]
+            owner.type = replaced(owner.type)
+            for parameter in owner.parameters:
+                parameter.type = replaced(parameter.type)
+            if owner.kind == TYPE:
+                self._arrange(owner)
+        self.changed = True
+
+    def _unify_invented(self, target: Optional[TypeInfo], value: Optional[TypeInfo]) -> None:
+        """Data of two record types the stubs invented (``bufA{i} := bmEmpty`` and ``bufB{i}
+        := bmEmpty``, each array's ``<data>_rec``) assigned one to the other: one type, the
+        one invented first, with the components both are read by (a value's shape kept)."""
+        if target is None or value is None or target.key == value.key or \
+                target.key not in self.invented or value.key not in self.invented:
+            return
+        kept, merged = self.missing.get(target.key), self.missing.get(value.key)
+        if kept is None or merged is None or merged.shape is not None and kept.shape is not None:
+            return
+        if _place_of(merged) < _place_of(kept):
+            kept, merged = merged, kept
+        if kept.shape is None and merged.shape is not None:
+            kept.shape, kept.value = merged.shape, merged.value
+        for name, info in merged.named.items():
+            self._name_component(kept, name, info)
+        self.replace_type(merged.name.key, kept.name.text)
 
     def _nested_record(self, expr: ast.Component) -> None:
         """``msgs.state.joints``: when ``msgs`` has a missing RECORD type and its component
@@ -200,15 +252,18 @@ class Inference:
             self._nested_record(expr.base)
         owner = self.type_of(expr.base)
         record = self.missing.get(owner.key) if owner is not None else None
-        if record is None or record.kind != TYPE or record.fields.get(expr.name.text):
+        if record is None or record.kind != TYPE or \
+                record.fields.get(_spelled(record.fields, expr.name.text)):
+            return
+        if record.shape is not None:     # a position holding a record of its own takes it
+            self._name_component(record, expr.name.text, SOME_RECORD)
             return
         invented = self._fresh_type_name(f"{record.name.text}_{expr.name.text}",
                                          expr.name.span)
         self.note(invented, TYPE, f"type of component {expr.name.text} of "
                   f"{record.name.text}, which has components itself; name invented")
         self.invented.add(invented.key)
-        record.fields[expr.name.text] = TypeInfo(invented.text)
-        self.changed = True
+        self._name_component(record, expr.name.text, TypeInfo(invented.text))
 
     def _fresh_type_name(self, text: str, span) -> ast.Name:
         """``text`` cut to RAPID's 32 characters, numbered if that is taken."""
@@ -254,7 +309,8 @@ class Inference:
         if isinstance(expr, ast.Component):
             base = self.type_of(expr.base)
             if base is not None and base.key in self.missing:
-                return self.missing[base.key].fields.get(expr.name.text)
+                fields = self.missing[base.key].fields
+                return fields.get(_spelled(fields, expr.name.text))
             return self.names.component_type(base.name, expr.name.text) if base else None
         if isinstance(expr, ast.FunctionCall):
             return self._call_type(expr)
@@ -304,9 +360,14 @@ class Inference:
         self.in_declaration = False
 
     def _declaration_values(self, decl: ast.DataDeclaration) -> None:
-        for dim in decl.dims:
+        for axis, dim in enumerate(decl.dims):
             if isinstance(dim, ast.NameRef) and self.undeclared_data(dim.name):
-                self.note(dim.name, DATA, f"array size of {decl.name.text}").sizes_array = True
+                size = self.note(dim.name, DATA, f"array size of {decl.name.text}")
+                size.sizes_array = True
+                length = _length_along(decl.init, axis)
+                if length is not None and size.array_size is None:
+                    size.array_size = (length, decl.name.text)
+                    self.changed = True
             self.expect(dim, NUM, f"array size of {decl.name.text}")
             self.expression(dim)
         if decl.init is not None:
@@ -315,54 +376,69 @@ class Inference:
             self.expression(decl.init)
 
     def _type_from_value(self, decl: ast.DataDeclaration) -> None:
-        """A missing type whose data is declared with a value of atomic parts: with an
-        aggregate (``PERS clampdata c := ["seq 1", 2, TRUE]``) a RECORD of components
-        ``c1``, ``c2``, ... of the parts' types; with a single value (``CONST gunnum g :=
-        2``) an ALIAS of its type. Only while no use names a component."""
+        """A missing type whose data is declared with a value: with an aggregate (``PERS
+        clampdata c := ["seq 1", 2, TRUE]``) a RECORD with one component per part, of the
+        part's type, which the names the uses give then take (records.arrange); with a single
+        atomic value (``CONST gunnum g := 2``) and no component named, an ALIAS of its type.
+        An array's value shapes its elements' type."""
         record = self.missing.get(decl.type.name.key)
-        if record is None or record.kind != TYPE or record.fields or record.alias_of \
-                or decl.dims:
+        if record is None or record.kind != TYPE or record.alias_of:
             return
-        if isinstance(decl.init, ast.Aggregate):
-            fields = self._shaped_fields(record.name, decl.init)
-            if fields:
-                record.fields = fields
-                self.changed = True
-        else:
-            value = self.type_of(decl.init)
-            if value is not None and value.key in ATOMIC:
-                record.alias_of = value.name
+        value = decl.init
+        for _ in decl.dims:
+            value = value.items[0] if isinstance(value, ast.Aggregate) and value.items else None
+        if isinstance(value, ast.Aggregate) and value.items:
+            self._shape_record(record, value)
+        elif value is not None and not decl.dims and not record.named and record.shape is None:
+            known = self.type_of(value)
+            if known is not None and known.key in ATOMIC:
+                record.alias_of = known.name
                 self.changed = True
 
-    def _shaped_fields(self, owner: ast.Name, aggregate: ast.Aggregate) -> Optional[dict]:
-        """Components ``c1``, ``c2``, ... for the parts of ``aggregate``, or None when a part
-        is neither atomic nor an aggregate itself. A nested aggregate (``trackdata`` of
-        ArcWare: ``[0,TRUE,50,[0,0,...],[0,...]]``) is a record of its own, named
-        ``<owner>_c<n>`` and shaped the same way."""
+    def _shape_record(self, record: Missing, aggregate: ast.Aggregate) -> None:
+        """The positions of ``record`` from the value ``aggregate``: the first value shapes
+        it; a position whose part's type is not known (a missing name) learns it from a
+        later walk or from another value of as many parts."""
+        if record.shape is not None and (None not in record.shape
+                                         or len(record.shape) != len(aggregate.items)):
+            return
+        shape = self._parts(record.name, aggregate, record.name.text)
+        if record.shape is not None:
+            shape = [old if old is not None else new for old, new in zip(record.shape, shape)]
+        if shape != record.shape:
+            record.shape, record.value = shape, record.value or aggregate
+            self._arrange(record)
+
+    def _parts(self, owner: ast.Name, aggregate: ast.Aggregate, top: str) -> list:
+        """The type of each part of a record's value (None while unknown). A nested
+        aggregate (``trackdata`` of ArcWare: ``[0,TRUE,50,[0,0,...],[0,...]]``) is a record
+        of its own, named ``<owner>_c<n>`` and shaped the same way; nested aggregates of
+        one shape share that record (the three jointtargets of a MultiMove group)."""
         parts = []
-        for item in aggregate.items:
-            part = self.type_of(item)
-            if part is not None and part.key in ATOMIC:
-                parts.append(part)
-            elif isinstance(item, ast.Aggregate) and item.items:
-                parts.append(item)
+        for number, item in enumerate(aggregate.items, 1):
+            if isinstance(item, ast.Aggregate) and item.items:
+                parts.append(self._nested_shape(owner, number, item, top))
             else:
-                return None
-        if not parts:
-            return None
-        fields = {}
-        for number, part in enumerate(parts, 1):
-            if isinstance(part, ast.Aggregate):
-                nested = self._fresh_type_name(f"{owner.text}_c{number}", owner.span)
-                inner = self._shaped_fields(nested, part)
-                if inner is None:
-                    return None
-                self.note(nested, TYPE, f"type of component c{number} of {owner.text}, "
-                          "shaped by a declared value; name invented").fields = inner
-                self.invented.add(nested.key)
-                part = TypeInfo(nested.text)
-            fields[f"c{number}"] = part
-        return fields
+                known = self.type_of(item)
+                parts.append(known.element() if known is not None and not known.rank
+                             else None)
+        return parts
+
+    def _nested_shape(self, owner: ast.Name, number: int, aggregate: ast.Aggregate,
+                      top: str) -> TypeInfo:
+        nested = self._fresh_type_name(f"{owner.text}_c{number}", owner.span)
+        inner = self._parts(nested, aggregate, top)      # nested ones are shaped first
+        for key in sorted(self.invented):
+            known = self.missing.get(key)
+            if known is not None and known.shape == inner and known.value is not None \
+                    and known.name.text.startswith(top + "_c"):
+                return TypeInfo(known.name.text)
+        record = self.note(nested, TYPE, f"type of component c{number} of {owner.text}, "
+                           "shaped by a declared value; name invented")
+        record.shape, record.value = inner, aggregate
+        self.invented.add(nested.key)
+        self._arrange(record)
+        return TypeInfo(nested.text)
 
     def _routine(self, routine: ast.Routine) -> None:
         self.routine = routine
@@ -394,11 +470,14 @@ class Inference:
         root = statement.target
         while isinstance(root, (ast.Index, ast.Component)):
             root = root.base
+        self._unify_invented(target, value)
+        self._same_sizes(statement.target, statement.value)
         self.expect(statement.target, value, f"assigned a {value.name}" if value else "assigned")
         self.expression(statement.target)
         if isinstance(root, ast.NameRef) and root.name.key in self.missing:
             self.missing[root.name.key].assigned = True
-        self.expect(statement.value, target, f"assigned to {target.name} data" if target else "")
+        self.expect(statement.value, target,
+                    f"assigned to {target.name} data" if target else "read")
         self.expression(statement.value)
         if isinstance(statement.target, ast.NameRef) and isinstance(statement.value, ast.Aggregate):
             written = self.missing.get(statement.target.name.key)
@@ -415,6 +494,25 @@ class Inference:
             if record is not None and record.kind == TYPE:
                 self.component_feeds.setdefault(statement.value.name.key,
                                                 (record, statement.target.name.text))
+
+    def _same_sizes(self, target, value) -> None:
+        """``a := b`` of two missing names, one of them an array (indexed elsewhere): the
+        other is an array of the same sizes, not a single value of its element type."""
+        if not (isinstance(target, ast.NameRef) and isinstance(value, ast.NameRef)):
+            return
+        pair = [self.missing.get(target.name.key), self.missing.get(value.name.key)]
+        if any(m is None or m.kind != DATA for m in pair):
+            return
+        for one, other in (pair, pair[::-1]):
+            if not one.dims or other.exact_dims or other.dims == one.dims:
+                continue
+            if one.exact_dims or len(other.dims) != len(one.dims):
+                sizes = list(one.dims)                  # the sizes an aggregate fixed
+            else:
+                sizes = [max(a, b) for a, b in zip(one.dims, other.dims)]
+            if sizes != other.dims:
+                other.dims, other.exact_dims = sizes, one.exact_dims
+                self.changed = True
 
     def _array_of_records(self, name: ast.Name, aggregate: ast.Aggregate) -> None:
         """Missing data assigned an aggregate of aggregates of one shape
@@ -687,6 +785,33 @@ class Inference:
             elif parameter.type is None and info is not None:
                 parameter.type = info.element() if info.rank == 0 else info
                 self.changed = True
+            if isinstance(arg.value, ast.Aggregate) and \
+                    all(a is not arg.value for a in parameter.aggregates):
+                parameter.aggregates.append(arg.value)
+            if parameter.type is not None and arg.value is not None and not parameter.switch:
+                # the other calls' arguments have the type one call's argument gave
+                self.expect(arg.value, parameter.type, f"{missing.name.text} argument "
+                            f"{parameter.name}" + (", num assumed" if parameter.assumed else ""))
+
+
+def _place_of(missing: Missing) -> tuple:
+    span = missing.first_use
+    return span.file, span.line, span.column
+
+
+def _spelled(names: dict, name: str) -> str:
+    """``name`` as ``names`` spell it (RAPID names ignore case), or as given if absent."""
+    return next((known for known in names if known.upper() == name.upper()), name)
+
+
+def _length_along(value, axis: int) -> Optional[int]:
+    """The number of parts of an array's declared value along dimension ``axis`` (0 the
+    first): ``[[1,2,3],[4,5,6]]`` has 2 along 0 and 3 along 1; None without an aggregate."""
+    for _ in range(axis):
+        if not isinstance(value, ast.Aggregate) or not value.items:
+            return None
+        value = value.items[0]
+    return len(value.items) if isinstance(value, ast.Aggregate) else None
 
 
 def _text_array(item_types) -> Optional[TypeInfo]:
@@ -716,65 +841,6 @@ def predefined_parameters(entry) -> list[tuple]:
     return found
 
 
-def missing_names(modules: tuple[ast.Module, ...], signals=frozenset()) -> list[Missing]:
-    """Every undeclared name the modules use, in order of first use, types inferred
-    (``signals``: names of configured I/O signals, which are not missing)."""
-    inference = Inference(modules, signals)
-    _settle(inference, count_uses=True)
-    if _types_from_names(inference):        # the last resort; its types reach other names
-        _settle(inference, count_uses=False)
-    if _types_from_written(inference):      # aggregates assigned whole: types and sizes
-        _settle(inference, count_uses=False)
-    if _types_of_tests(inference):          # TEST on missing names only: num assumed
-        _settle(inference, count_uses=False)
-    _types_of_passed_values(inference)
-    return sorted(inference.missing.values(),
-                  key=lambda m: (m.first_use.file, m.first_use.line, m.first_use.column))
-
-
-def _settle(inference: Inference, count_uses: bool) -> None:
-    """Walk the program until the walk learns nothing new (uses counted on the first)."""
-    for number in range(MAX_PASSES):
-        inference.changed = False
-        inference.counting = count_uses and number == 0
-        inference.walk()
-        if not _types_from_components(inference) and not inference.changed:
-            break
-
-
-def _types_from_components(inference: Inference) -> bool:
-    """A record whose components are read: the first record type that has them all
-    (also for a record type the stubs invented: the known type replaces it)."""
-    changed = _known_for_invented(inference)
-    for missing in list(inference.missing.values()):
-        if missing.type is None and missing.components:
-            candidates = [name for name in inference.names.records_with(missing.components)
-                          if _fits_written(inference, missing, name)]
-            shown = ", ".join("." + c for c in missing.components)
-            if candidates:
-                changed |= missing.learn(TypeInfo(candidates[0]), f"has components {shown}")
-            elif missing.kind == DATA:
-                changed |= _invent_record(inference, missing, shown)
-    return changed
-
-
-def _invent_record(inference: Inference, missing: Missing, shown: str) -> bool:
-    """Data (or an array's elements) whose components are read (``traj{1}.pos``,
-    ``cmds.GET_TIME``) and that no known record has all of: a RECORD the stubs declare,
-    named ``<data>_rec``, with the components the uses type (survey rounds 5 and 7)."""
-    whose = "the elements of " if missing.dims else ""
-    invented = inference._fresh_type_name(f"{missing.name.text}_rec", missing.name.span)
-    record = inference.note(invented, TYPE, f"type of {whose}{missing.name.text}, "
-                            f"whose components {shown} no known record has; name invented")
-    record.fields.update({component: None for component in missing.components})
-    inference.invented.add(invented.key)
-    having = "its elements have" if missing.dims else "has"
-    return missing.learn(TypeInfo(invented.text), f"{having} components {shown}")
-
-
-# The components the stubs name after their position in a value (``c1``, ``c2`` ...).
-POSITIONAL_COMPONENT = re.compile(r"c[0-9]+")
-
 # A RAPID identifier (a procedure named by a string must be one).
 IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,31}")
 
@@ -798,216 +864,3 @@ def _compared_with(condition) -> Optional[tuple]:
 # The optional parameters every motion instruction of ABB's and of its options has
 # (``PaintL ... \WObj:=woPanel``): a missing routine called with them takes these types.
 CONVENTIONAL_PARAMETERS = {"WOBJ": "wobjdata", "TOOL": "tooldata", "TLOAD": "loaddata"}
-
-# Name prefixes that say the type in controller programs (wobjTable, tool_gun, loadPart);
-# used only when the uses tell nothing, and said so in the written comment.
-NAME_PREFIXES = (("wobj", "wobjdata"), ("tool", "tooldata"), ("load", "loaddata"))
-
-
-def _types_from_names(inference: Inference) -> bool:
-    changed = False
-    for missing in inference.missing.values():
-        if missing.kind != DATA or missing.type is not None:
-            continue
-        for prefix, type_name in NAME_PREFIXES:
-            if missing.name.text.lower().startswith(prefix):
-                changed |= missing.learn(TypeInfo(type_name),
-                                         f"guessed from the name's prefix '{prefix}'")
-                break
-    return changed
-
-
-def _types_of_passed_values(inference: Inference) -> None:
-    """A missing function whose value only ever goes to an untyped parameter of another
-    missing routine (``MoveRob(GetTarget())``) or to an untyped component of a missing
-    record (``msg.width := GetWidth()``): nothing tells the type, so both take the
-    assumed ``num`` and the function's comment says so."""
-    for key, (routine, parameter_key) in inference.feeds.items():
-        function = inference.missing.get(key)
-        if function is None or function.type is not None:
-            continue
-        parameter = next((p for number, p in enumerate(routine.parameters, 1)
-                          if p.name.upper() == parameter_key or f"P{number}" == parameter_key),
-                         None)
-        if parameter is not None and parameter.type is None:
-            function.learn(NUM, f"passed to {routine.name.text}, whose parameter type is not "
-                           "known either: num assumed")
-    for key, (record, component) in inference.component_feeds.items():
-        function = inference.missing.get(key)
-        if function is not None and function.type is None \
-                and record.fields.get(component) is None:
-            function.learn(NUM, f"assigned to component {component} of {record.name.text}, "
-                           "whose type is not known either: num assumed")
-
-
-def _known_for_invented(inference: Inference) -> bool:
-    """An invented record type whose two or more components a declared or predefined
-    record has all (``.robax``, ``.extax``: a jointtarget): its uses take that type."""
-    changed = False
-    for key in sorted(inference.invented):
-        record = inference.missing.get(key)
-        if record is None or len(record.fields) < 2:     # one name alone says too little
-            continue
-        if all(POSITIONAL_COMPONENT.fullmatch(name) for name in record.fields):
-            continue         # c1, c2 ... name positions of a value, not known components
-        candidates = inference.names.records_with(list(record.fields))
-        if not candidates:
-            continue
-        del inference.missing[key]
-        inference.invented.discard(key)
-        for owner in inference.missing.values():
-            for component, info in owner.fields.items():
-                if info is not None and info.key == key:
-                    owner.fields[component] = TypeInfo(candidates[0], info.rank)
-            if owner.type is not None and owner.type.key == key:
-                owner.type = TypeInfo(candidates[0], owner.type.rank)
-        changed = True
-    return _drop_unused_invented(inference) or changed
-
-
-def _drop_unused_invented(inference: Inference) -> bool:
-    """Invented record types no component uses any more (they belonged to one replaced, or
-    a use gave the component a known type); whether any was dropped."""
-    dropped = False
-    while True:
-        used = {info.key for owner in inference.missing.values()
-                for info in (*owner.fields.values(), owner.type) if info is not None}
-        unused = [key for key in inference.invented if key not in used]
-        if not unused:
-            return dropped
-        dropped = True
-        for key in unused:
-            inference.missing.pop(key, None)
-            inference.invented.discard(key)
-
-
-# ---------------------------------------------------------------------------------------
-# Aggregates the program assigns whole (issue 19): component counts and array sizes
-# ---------------------------------------------------------------------------------------
-
-def _shape(inference: Inference, aggregate: ast.Aggregate) -> Optional[tuple]:
-    """``(dims, part types)`` of a regular aggregate: ``[[1,2],[3,4],[5,6]]`` gives
-    ``([3, 2], ['NUM'] * 6)``; None when its parts are of mixed nesting, ragged or of no
-    atomic type."""
-    if not aggregate.items:
-        return None
-    if all(isinstance(item, ast.Aggregate) for item in aggregate.items):
-        inner = [_shape(inference, item) for item in aggregate.items]
-        if any(i is None for i in inner) or len({tuple(i[0]) for i in inner}) != 1:
-            return None
-        return [len(aggregate.items)] + inner[0][0], [t for i in inner for t in i[1]]
-    parts = [inference.type_of(item) for item in aggregate.items]
-    if any(p is None or p.key not in ATOMIC for p in parts):
-        return None
-    return [len(parts)], [p.key for p in parts]
-
-
-def _fits_written(inference: Inference, missing: Missing, record: str) -> bool:
-    """Whether ``record`` can take the aggregates assigned whole to ``missing`` (as many
-    components as the aggregate has parts); true when nothing is assigned whole."""
-    count = len(inference.names.components(record) or ())
-    shapes = [_shape(inference, a) for a in missing.written]
-    return all(shape is None or shape[0][-1] == count for shape in shapes)
-
-
-def _types_from_written(inference: Inference) -> bool:
-    """The last resort for missing data assigned an aggregate whole: sizes and types.
-
-    An array (typed by another use, or indexed) has the sizes of the aggregate assigned
-    (``nList := [1,2,3,4,5,6,7]``: 7 elements, not the 10 assumed from an index). Untyped
-    data takes the aggregate's shape: parts of one atomic type make an array of that type
-    (``pOffs := [10,20,30]``: ``num pOffs{3}``, no pos or other record is guessed); parts
-    of several types a RECORD ``<data>_rec`` with components ``c1`` ... ``cN``. A record
-    invented for components the program reads gets the aggregate's other parts as further
-    components, when the parts' types agree."""
-    changed = False
-    for missing in list(inference.missing.values()):
-        shapes = [s for s in (_shape(inference, a) for a in missing.written) if s is not None]
-        if missing.kind != DATA or not shapes or len({tuple(s[0]) for s in shapes}) != 1:
-            continue
-        dims, parts = shapes[0]
-        if missing.type is None:
-            changed |= _type_from_shape(inference, missing, dims, parts)
-        elif missing.dims or missing.type.rank:
-            record = inference.names.components(missing.type.name)
-            sizes = dims[:-1] if record is not None and len(record) == dims[-1] else dims
-            if sizes and (sizes != missing.dims or not missing.exact_dims):
-                missing.dims, missing.exact_dims = list(sizes), True
-                changed = True
-        else:
-            changed |= _widen_invented(inference, missing, dims, parts)
-    return changed
-
-
-def _type_from_shape(inference: Inference, missing: Missing, dims: list, parts: list) -> bool:
-    if len(set(parts)) == 1 and len(dims) <= 3:
-        info = TypeInfo(_ATOMIC_NAMES[parts[0]])
-        if missing.learn(info, f"assigned an aggregate of {info.name} values"):
-            missing.dims, missing.exact_dims = list(dims), True
-            return True
-        return False
-    if len(dims) > 2 or len(set(tuple(parts[i:i + dims[-1]])
-                                for i in range(0, len(parts), dims[-1]))) != 1:
-        return False
-    invented = inference._fresh_type_name(f"{missing.name.text}_rec", missing.name.span)
-    record = inference.note(invented, TYPE, f"type of {missing.name.text}, assigned an "
-                            "aggregate of values of several types; name invented")
-    record.fields = {f"c{n}": TypeInfo(_ATOMIC_NAMES[key])
-                     for n, key in enumerate(parts[:dims[-1]], 1)}
-    inference.invented.add(invented.key)
-    if missing.learn(TypeInfo(invented.text), "assigned an aggregate of values of several types"):
-        missing.dims, missing.exact_dims = list(dims[:-1]), True
-    return True
-
-
-def _widen_invented(inference: Inference, missing: Missing, dims: list, parts: list) -> bool:
-    """``r.name := "a"; r := ["a", 2, 3];``: the record invented for the components the
-    program reads of ``r`` gets one component per part of the aggregate: a read ``c3`` is
-    the third, a read name takes the first free place of its type, and the other places
-    are ``c1``, ``c2`` ... of the parts' types; nothing changes when the types disagree."""
-    record = inference.missing.get(missing.type.key)
-    if record is None or record.kind != TYPE or missing.type.key not in inference.invented \
-            or len(dims) != 1 or len(record.fields) >= dims[0]:
-        return False
-    places: list = [None] * dims[0]
-    named = []
-    for name, info in record.fields.items():
-        position = POSITIONAL_COMPONENT.fullmatch(name) and int(name[1:])
-        if position:
-            if position > dims[0] or places[position - 1] is not None:
-                return False
-            places[position - 1] = (name, info)
-        else:
-            named.append((name, info))
-    for name, info in named:
-        free = next((i for i, place in enumerate(places) if place is None and (
-            info is None or inference.names.base(info).key == parts[i])), None)
-        if free is None:
-            return False
-        places[free] = (name, info)
-    for number, place in enumerate(places):
-        if place is not None and place[1] is not None \
-                and inference.names.base(place[1]).key != parts[number]:
-            return False
-    record.fields = {name: info if info is not None else TypeInfo(_ATOMIC_NAMES[parts[i]])
-                     for i, (name, info) in enumerate(
-                         place or (f"c{i + 1}", None) for i, place in enumerate(places))}
-    return True
-
-
-_ATOMIC_NAMES = {"NUM": "num", "DNUM": "dnum", "STRING": "string", "BOOL": "bool"}
-
-
-def _types_of_tests(inference: Inference) -> bool:
-    """``TEST nResume CASE RESUME_KILL: ...`` where the subject and every CASE value are missing
-    names that nothing else types: num, the type TEST is mostly used with, assumed and said
-    so in their comments (the values then get 1, 2 ... as names compared in turn)."""
-    changed = False
-    for keys in inference.untyped_tests:
-        group = [inference.missing.get(key) for key in keys]
-        if any(m is None or m.kind != DATA or m.type is not None for m in group):
-            continue
-        for missing in group:
-            changed |= missing.learn(NUM, "TEST subject or CASE value, nothing else tells the "
-                                     "type: num assumed")
-    return changed

@@ -158,7 +158,11 @@ class StubWriter:
             notes.append(f"an array argument: size {MIN_ARRAY_SIZE} assumed" if item.array_argument
                          else "size: the elements of the aggregate assigned" if item.exact_dims
                          else f"size: the largest constant index used, at least {MIN_ARRAY_SIZE}")
-        if item.sizes_array:
+        if item.sizes_array and item.array_size is not None:
+            size, array = item.array_size
+            value = str(size)
+            notes.append(f"an array size: {size}, as in the value declared for {array}")
+        elif item.sizes_array:
             value = str(MIN_ARRAY_SIZE)
             notes.append(f"an array size: {MIN_ARRAY_SIZE} assumed")
         elif item.indexes_array and not sizes and type_name == "num":
@@ -179,11 +183,9 @@ class StubWriter:
                 texts.append(f"\\switch {parameter.name}")
                 continue
             info = parameter.type
-            if info is None:
+            if info is None or parameter.assumed:
                 guessed.append(parameter.name)
-                type_name, rank = "num", 0
-            else:
-                type_name, rank = info.name, info.rank
+            type_name, rank = (info.name, info.rank) if info is not None else ("num", 0)
             mode = "" if self.neutral.is_value_type(type_name) else "VAR "
             array = "{" + ",".join("*" * rank) + "}" if rank else ""
             optional = "\\" if parameter.optional else ""
@@ -217,9 +219,14 @@ class StubWriter:
         if not item.fields:
             return ["! its components are not known: one num component stands in for them",
                     f"RECORD {item.name.text}", "  num value;", "ENDRECORD"]
-        guessed = [name for name, info in item.fields.items() if info is None]
+        guessed = [name for name, info in item.fields.items()
+                   if info is None or name in item.assumed]
         notes = [f"! component types not inferred ({', '.join(guessed)}): num assumed"] \
             if guessed else []
+        if item.left_out:
+            them = "it" if len(item.left_out) == 1 else "them"
+            notes.append(f"! the value declared has no place for {', '.join(item.left_out)}, "
+                         f"which the uses also name: declare {them} here")
         components = [f"  {type_name} {name};" for name, type_name in record_components(item)]
         return notes + [f"RECORD {item.name.text}"] + components + ["ENDRECORD"]
 

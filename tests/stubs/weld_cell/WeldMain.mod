@@ -1,6 +1,8 @@
 MODULE WeldMain
-  ! Tests: a name whose type its uses do not tell gets a comment, not a guess, and
-  ! stubs exits 2 with the program's remaining error (issue 8, part B).
+  ! Tests: data passed only to a routine of a module not given takes the num the stubs
+  ! assume for the routine's parameters, said so in both comments, so the written module
+  ! loads (issue 28; issue 8 left p10, p20 and seamA undeclared). untyped_copy keeps a
+  ! name whose type nothing tells.
   PROC main()
     WeldSeam p10, p20, seamA;
     nSeams := nSeams + 1;
