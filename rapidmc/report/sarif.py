@@ -111,8 +111,7 @@ def _rule(name: str, description: str) -> dict:
 
 def _violation(index: int, checked: PropertyResult, trace: Trace) -> dict:
     steps = [*trace.prefix, *trace.cycle]
-    located = [s for s in steps if s.transition is not None and s.transition.file]
-    anchor = _anchor(trace, located)
+    anchor = violation_anchor(trace)
     result = {
         "ruleId": checked.name, "ruleIndex": index, "level": "error",
         "message": {"text": f"{checked.name} is violated: {described_formula(checked)} "
@@ -141,8 +140,11 @@ def _shape(trace: Trace) -> str:
         (f", reading {reads}" if reads else "")
 
 
-def _anchor(trace: Trace, located: list) -> Optional[TraceStep]:
-    """The step to point at: the last located step before the loop (or the last one)."""
+def violation_anchor(trace: Trace) -> Optional[TraceStep]:
+    """The step a violation points at: the last located step before the loop (or the last
+    one); None when no step has a source line."""
+    located = [s for s in [*trace.prefix, *trace.cycle]
+               if s.transition is not None and s.transition.file]
     if not located:
         return None
     before_loop = [s for s in located if trace.loop_start is None or s.index < trace.loop_start]
