@@ -95,11 +95,24 @@ def test_equal_findings_in_one_file_get_distinct_fingerprints(program):
     assert len({i["fingerprint"] for i in issues}) == len(issues)
 
 
-def test_an_input_error_is_a_blocker_issue(program):
+@pytest.mark.parametrize("argv", [LINT, CHECK])
+def test_an_input_error_is_a_blocker_issue(program, argv):
     program.write_text("MODULE Cell\n  PROC main()\n    x := ;\n  ENDPROC\nENDMODULE\n")
-    code, issues = quality(CHECK)
+    code, issues = quality(argv)
     assert code == 2
     assert [(i["severity"], i["location"]["lines"]["begin"]) for i in issues] == [("blocker", 3)]
+
+
+def test_an_unknown_property_is_a_major_issue_whatever_the_bound(program):
+    fingerprints = set()
+    for bound in ("3", "4"):
+        code, issues = quality([*CHECK, "--max-states", bound])
+        assert code == 3
+        unknown = [i for i in issues if i["check_name"] == "at_most_three"]
+        assert [i["severity"] for i in unknown] == ["major"]
+        assert "UNKNOWN" in unknown[0]["description"] and bound not in unknown[0]["description"]
+        fingerprints.add(unknown[0]["fingerprint"])
+    assert len(fingerprints) == 1
 
 
 def test_lint_baseline_hides_old_findings_moved_by_an_edit_and_shows_a_new_one(program):

@@ -29,8 +29,8 @@ from . import storage_options
 from ..diagnostics.quoting import quoted, routine_name
 from .report_file import check_report_target, unwritable_reason, write_report
 from . import baseline_options
-from ..report.ci_findings import from_diagnostics, from_results
-from ..report.codeclimate import format_codeclimate
+from ..report.ci_findings import from_results
+from ..report.codeclimate import format_codeclimate, format_codeclimate_errors
 
 DEFAULT_MAX_STATES = 1_000_000
 
@@ -182,8 +182,7 @@ def execute(args: argparse.Namespace) -> int:
         if args.format == "json":
             print(format_json_errors(exc.diagnostics, getattr(args, "command_line", None)), end="")
         elif args.format == "codeclimate":
-            print(format_codeclimate(from_diagnostics(exc.diagnostics, args.files[0],
-                                                      lambda severity: "blocker")), end="")
+            print(format_codeclimate_errors(exc.diagnostics, args.files[0]), end="")
         else:
             from ..report.sarif import format_sarif_diagnostics
             print(format_sarif_diagnostics(exc.diagnostics, exc.exit_code), end="")

@@ -16,14 +16,14 @@ import sys
 from pathlib import Path
 
 from .. import ast
-from ..diagnostics import EXIT_OK, EXIT_VIOLATED
+from ..diagnostics import EXIT_OK, EXIT_VIOLATED, UserError, render_all
 from ..findings.lint import failing, lint_program
 from ..findings.lint.config import make_config, read_pyproject
 from ..findings.lint.registry import SEVERITIES
 from ..load.backup import every_task, is_backup
 from ..load.source import program_paths
 from ..report.ci_findings import from_diagnostics
-from ..report.codeclimate import format_codeclimate
+from ..report.codeclimate import format_codeclimate, format_codeclimate_errors
 from ..report.lint import format_lint_json, format_lint_sarif, format_lint_text
 from ..syntax import load_program
 from . import baseline_options
@@ -51,6 +51,18 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def execute(args: argparse.Namespace) -> int:
+    try:
+        return _lint(args)
+    except UserError as exc:
+        if args.format != "codeclimate":
+            raise
+        # a Code Quality report is always a JSON array: input errors are blocker issues in it
+        print(render_all(exc.diagnostics), file=sys.stderr)
+        sys.stdout.write(format_codeclimate_errors(exc.diagnostics, args.files[0]))
+        return exc.exit_code
+
+
+def _lint(args: argparse.Namespace) -> int:
     table, origin = read_pyproject(Path.cwd())
     config = make_config(table, str(origin or "pyproject.toml"), _split(args.select),
                          _split(args.ignore), args.severity)

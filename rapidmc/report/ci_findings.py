@@ -119,7 +119,7 @@ def property_finding(checked: PropertyResult, describer: TraceDescriber, default
 def without_numbers(reason: Optional[str]) -> str:
     """A bound's reason without its figures ('state limit 1000 reached; 1,000 states' ->
     'state limit reached; states'): the figures move with every edit of the program."""
-    text = re.sub(r"\s*[\d.,]+(?:\s*s\b)?", "", reason or "bounded")
+    text = re.sub(r"\s*\d[\d.,]*(?:\s*s\b)?", "", reason or "bounded")
     return re.sub(r"\s+", " ", text).strip()
 
 

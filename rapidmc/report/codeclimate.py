@@ -10,7 +10,8 @@ from __future__ import annotations
 import json
 from typing import Sequence
 
-from .ci_findings import Finding, fingerprints
+from ..diagnostics import Diagnostic
+from .ci_findings import Finding, fingerprints, from_diagnostics
 
 
 def format_codeclimate(findings: Sequence[Finding]) -> str:
@@ -24,3 +25,10 @@ def format_codeclimate(findings: Sequence[Finding]) -> str:
         "location": {"path": finding.path, "lines": {"begin": finding.line}},
     } for finding, fingerprint in zip(findings, fingerprints(findings))]
     return json.dumps(issues, indent=1, ensure_ascii=False) + "\n"
+
+
+def format_codeclimate_errors(diagnostics: Sequence[Diagnostic], first_file: str) -> str:
+    """Input errors (exit 2: nothing could be checked) as ``blocker`` issues; one without a
+    source position sits on the program's first file."""
+    return format_codeclimate(from_diagnostics(diagnostics, first_file,
+                                               severity_of=lambda severity: "blocker"))
