@@ -30,7 +30,6 @@ from ..diagnostics.quoting import quoted, routine_name
 from .report_file import check_report_target, unwritable_reason, write_report
 from . import baseline_options
 from ..report.ci_findings import from_results
-from ..report.codeclimate import format_codeclimate, format_codeclimate_errors
 
 DEFAULT_MAX_STATES = 1_000_000
 
@@ -182,6 +181,7 @@ def execute(args: argparse.Namespace) -> int:
         if args.format == "json":
             print(format_json_errors(exc.diagnostics, getattr(args, "command_line", None)), end="")
         elif args.format == "codeclimate":
+            from ..report.codeclimate import format_codeclimate_errors
             print(format_codeclimate_errors(exc.diagnostics, args.files[0]), end="")
         else:
             from ..report.sarif import format_sarif_diagnostics
@@ -209,6 +209,7 @@ def _check(args: argparse.Namespace) -> int:
         from ..report.sarif import format_sarif
         print(format_sarif(gated_results, describer, exit_code, gated_warnings), end="")
     elif args.format == "codeclimate":
+        from ..report.codeclimate import format_codeclimate
         print(format_codeclimate(gated), end="")
     else:
         print(format_text(results, describer, args.full_trace))

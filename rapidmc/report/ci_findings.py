@@ -19,10 +19,9 @@ from pathlib import Path
 from typing import Optional, Sequence
 
 from ..check.result import UNKNOWN, VIOLATED
-from ..check.trace import TraceDescriber, build_trace
+from ..check.trace import Trace, TraceDescriber, TraceStep, build_trace
 from ..diagnostics import Diagnostic
 from .results import PropertyResult, described_formula
-from .sarif import violation_anchor
 
 # Code Quality severities, lowest first (GitLab shows them in merge requests).
 SEVERITIES = ("info", "minor", "major", "critical", "blocker")
@@ -134,3 +133,14 @@ def fingerprints(findings: Sequence[Finding]) -> list[str]:
         prints[index] = hashlib.sha256(text.encode("utf-8")).hexdigest()
         seen[key] += 1
     return prints
+
+
+def violation_anchor(trace: Trace) -> Optional[TraceStep]:
+    """The step a violation points at: the last located step before the loop (or the last
+    one); None when no step has a source line."""
+    located = [s for s in [*trace.prefix, *trace.cycle]
+               if s.transition is not None and s.transition.file]
+    if not located:
+        return None
+    before_loop = [s for s in located if trace.loop_start is None or s.index < trace.loop_start]
+    return (before_loop or located)[-1]

@@ -18,6 +18,7 @@ from typing import Optional, Sequence
 from .. import __version__
 from ..diagnostics import Diagnostic
 from .counterexample import WIDTH, read_data, shorten
+from .ci_findings import violation_anchor
 from .results import PropertyResult, described_formula
 from ..check.result import UNKNOWN, VIOLATED
 from ..check.trace import Trace, TraceDescriber, TraceStep, build_trace
@@ -138,17 +139,6 @@ def _shape(trace: Trace) -> str:
                       for name, value, origin in read)
     return f"counterexample: {len(trace.prefix)} steps to {trace.ending}" + \
         (f", reading {reads}" if reads else "")
-
-
-def violation_anchor(trace: Trace) -> Optional[TraceStep]:
-    """The step a violation points at: the last located step before the loop (or the last
-    one); None when no step has a source line."""
-    located = [s for s in [*trace.prefix, *trace.cycle]
-               if s.transition is not None and s.transition.file]
-    if not located:
-        return None
-    before_loop = [s for s in located if trace.loop_start is None or s.index < trace.loop_start]
-    return (before_loop or located)[-1]
 
 
 def _flow_step(step: TraceStep, order: int, loop_start: Optional[int]) -> dict:
