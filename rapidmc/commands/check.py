@@ -13,6 +13,7 @@ from __future__ import annotations
 import argparse
 import math
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 from .. import api
@@ -27,15 +28,19 @@ from ..model import reduction
 from . import entries, storage_options
 from ..diagnostics.quoting import quoted, routine_name
 from .report_file import check_report_target, unwritable_reason, write_report
+from . import baseline_options
+from ..report.ci_findings import from_results
 
 DEFAULT_MAX_STATES = 1_000_000
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_model_arguments(parser)
-    parser.add_argument("--format", choices=("text", "json", "sarif"), default="text",
+    parser.add_argument("--format", choices=("text", "json", "sarif", "codeclimate"),
+                        default="text",
                         help="output format (default: text); sarif: SARIF 2.1.0 for CI and "
-                             "code-scanning tools, input errors included")
+                             "code-scanning tools, input errors included; codeclimate: GitLab's "
+                             "Code Quality report")
     parser.add_argument("--html", metavar="FILE", default=None,
                         help="also write a self-contained HTML report: verdicts, and each "
                              "counterexample as a player with the source and a timeline")
@@ -47,6 +52,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="text counterexamples in full: every initial value, values not "
                              "shortened, repeated steps not folded")
     parser.add_argument("--quiet", action="store_true", help="no progress line on stderr")
+    baseline_options.add_arguments(parser)
 
 
 def add_model_arguments(parser: argparse.ArgumentParser) -> None:
@@ -176,6 +182,9 @@ def execute(args: argparse.Namespace) -> int:
         print(render_all(exc.diagnostics), file=sys.stderr)
         if args.format == "json":
             print(format_json_errors(exc.diagnostics, getattr(args, "command_line", None)), end="")
+        elif args.format == "codeclimate":
+            from ..report.codeclimate import format_codeclimate_errors
+            print(format_codeclimate_errors(exc.diagnostics, args.files[0]), end="")
         else:
             from ..report.sarif import format_sarif_diagnostics
             print(format_sarif_diagnostics(exc.diagnostics, exc.exit_code), end="")
@@ -186,9 +195,15 @@ def _check(args: argparse.Namespace) -> int:
     _refuse_unwritable_targets(args)
     if entries.every_entry(args):
         return _check_every_entry(args)
+    known = baseline_options.read_known(args, "check")
     report = api.check_model(prepare_model(args), progress=lambda: _progress(args.quiet))
     results, describer, warnings = report.results, report.describer, report.warnings
-    exit_code = report.exit_code(args.fail_on_vacuous)
+    gated, known_sources = _new_findings(args, report, known)
+    # the gates (exit code, SARIF, Code Quality, JUnit) leave out what the baseline records;
+    # text, JSON and HTML show every verdict
+    gated_results = [checked for checked in results if id(checked) not in known_sources]
+    gated_warnings = [warning for warning in warnings if id(warning) not in known_sources]
+    exit_code = replace(report, results=gated_results).exit_code(args.fail_on_vacuous)
     if args.html:
         from ..report.html import write_html          # (reports load on demand)
         write_html(args.html, results, describer, warnings)
@@ -196,7 +211,10 @@ def _check(args: argparse.Namespace) -> int:
         print(format_json(results, describer, warnings, getattr(args, "command_line", None)))
     elif args.format == "sarif":
         from ..report.sarif import format_sarif
-        print(format_sarif(results, describer, exit_code, warnings), end="")
+        print(format_sarif(gated_results, describer, exit_code, gated_warnings), end="")
+    elif args.format == "codeclimate":
+        from ..report.codeclimate import format_codeclimate
+        print(format_codeclimate(gated), end="")
     else:
         print(format_text(results, describer, args.full_trace))
         sys.stdout.flush()
@@ -204,13 +222,17 @@ def _check(args: argparse.Namespace) -> int:
             print(render_all(warnings), file=sys.stderr)
     if args.junit:
         from ..report.junit import format_junit
-        write_report(args.junit, format_junit(results, describer, *_suite(args), warnings),
-                     "JUnit report")
+        write_report(args.junit, format_junit(gated_results, describer, *_suite(args),
+                                              warnings), "JUnit report")
     return exit_code
 
 
 def _check_every_entry(args: argparse.Namespace) -> int:
     """``--entry all``: a verdict table per entry routine, in every format."""
+    if args.format == "codeclimate" or args.baseline or args.write_baseline:
+        raise error(USAGE, "--entry all gives a verdict table per entry; it does not combine "
+                    "with --format codeclimate or baselines (check each entry with "
+                    "--entry NAME for those)")
     checked = entries.check_every_entry(args, prepare_model, lambda: _progress(args.quiet))
     tables, warnings = checked.tables(), checked.warnings
     exit_code = checked.exit_code(args.fail_on_vacuous)
@@ -237,6 +259,15 @@ def _check_every_entry(args: argparse.Namespace) -> int:
     return exit_code
 
 
+def _new_findings(args: argparse.Namespace, report: api.CheckReport, known):
+    """The findings a baseline does not record (the Code Quality issues), and the ids of the
+    properties and warnings it does record."""
+    pairs = from_results(report.results, report.describer, report.warnings, args.files[0],
+                         args.fail_on_vacuous)
+    new, old = baseline_options.new_findings(args, "check", [f for f, _ in pairs], pairs, known)
+    return [finding for finding, _ in new], {id(source) for _, source in old}
+
+
 def _refuse_unwritable_targets(args: argparse.Namespace) -> None:
     """A report file that cannot be written is an input error before the search, not after it."""
     reason = unwritable_reason(args.html) if args.html else None
@@ -245,6 +276,7 @@ def _refuse_unwritable_targets(args: argparse.Namespace) -> None:
         raise html_unwritable(args.html, reason)
     if args.junit:
         check_report_target(args.junit, "JUnit report")
+    baseline_options.refuse_unwritable_target(args)
 
 
 def _suite(args: argparse.Namespace) -> tuple[str, str]:

@@ -4,7 +4,8 @@ Loads the modules (a controller backup: each of its tasks, linted as a program o
 own), runs the rules of ``rapidmc.findings.lint`` with the configuration of
 ``[tool.rapidmc.lint]`` in the nearest pyproject.toml and the options, and prints the
 findings: text (``file:line:col: warning: message [RMC8nn]``, source line, caret),
-``--format json`` or ``sarif``.  Exit 0 when no finding at or above ``--severity``
+``--format json``, ``sarif`` or ``codeclimate``; ``--baseline`` leaves out the findings a
+baseline records (docs/ci.md).  Exit 0 when no finding at or above ``--severity``
 (default: warning) remains, 1 when one does, 2 for input errors (syntax, files,
 configuration).  Rules are listed in docs/lint.md.
 """
@@ -15,22 +16,27 @@ import sys
 from pathlib import Path
 
 from .. import ast
-from ..diagnostics import EXIT_OK, EXIT_VIOLATED
+from ..diagnostics import EXIT_OK, EXIT_VIOLATED, UserError, render_all
 from ..findings.lint import failing, lint_tasks
 from ..findings.lint.config import make_config, read_pyproject
 from ..findings.lint.registry import SEVERITIES
 from ..load.backup import every_task, is_backup
 from ..load.source import program_paths
+from ..report.ci_findings import from_diagnostics
+from ..report.codeclimate import format_codeclimate, format_codeclimate_errors
 from ..report.lint import format_lint_json, format_lint_sarif, format_lint_text
 from ..syntax import load_program
+from . import baseline_options
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("files", nargs="+", metavar="FILE",
                         help="RAPID module files (.mod, .sys, .pgf ...) linted as one program, "
                              "or a controller backup folder (each task is linted)")
-    parser.add_argument("--format", choices=("text", "json", "sarif"), default="text",
-                        help="output format (default: text)")
+    parser.add_argument("--format", choices=("text", "json", "sarif", "codeclimate"),
+                        default="text",
+                        help="output format (default: text); codeclimate: GitLab's Code Quality "
+                             "report")
     parser.add_argument("--select", action="append", default=[], metavar="CODES",
                         help="only these rules: codes, code prefixes or names, comma-separated "
                              "(repeatable; default: every rule, or the configuration's)")
@@ -41,12 +47,27 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "(default: warning, or the configuration's)")
     parser.add_argument("--task", metavar="NAME",
                         help="with a backup: lint only this task")
+    baseline_options.add_arguments(parser)
 
 
 def execute(args: argparse.Namespace) -> int:
+    try:
+        return _lint(args)
+    except UserError as exc:
+        if args.format != "codeclimate":
+            raise
+        # a Code Quality report is always a JSON array: input errors are blocker issues in it
+        print(render_all(exc.diagnostics), file=sys.stderr)
+        sys.stdout.write(format_codeclimate_errors(exc.diagnostics, args.files[0]))
+        return exc.exit_code
+
+
+def _lint(args: argparse.Namespace) -> int:
     table, origin = read_pyproject(Path.cwd())
     config = make_config(table, str(origin or "pyproject.toml"), _split(args.select),
                          _split(args.ignore), args.severity)
+    baseline_options.refuse_unwritable_target(args)
+    known = baseline_options.read_known(args, "lint")
     findings, lines, files = [], 0, 0
     for controller in _programs(args):
         programs = [load_program(paths) for _, paths in controller]
@@ -56,11 +77,17 @@ def execute(args: argparse.Namespace) -> int:
             findings.extend(found)
             lines += _line_count(program)
             files += len({module.span.file for module in program.modules})
+    gated = from_diagnostics(findings, args.files[0])
+    new, _ = baseline_options.new_findings(args, "lint", gated, list(zip(gated, findings)),
+                                           known)
+    findings = [finding for _, finding in new]
     exit_code = EXIT_VIOLATED if failing(findings, config.severity) else EXIT_OK
     if args.format == "json":
         sys.stdout.write(format_lint_json(findings, exit_code, lines))
     elif args.format == "sarif":
         sys.stdout.write(format_lint_sarif(findings, exit_code))
+    elif args.format == "codeclimate":
+        sys.stdout.write(format_codeclimate([gate for gate, _ in new]))
     else:
         sys.stdout.write(format_lint_text(findings, lines, files))
     return exit_code

@@ -108,6 +108,7 @@ TRACE_REPLAY = _code("RMC504", "trace-replay", "a counterexample did not replay 
 OUTPUT_FILE = _code("RMC506", "output-file", "a report file (--junit, graph -o) cannot be written")
 TRACE_DIVERGED = _code("RMC507", "trace-diverged", "the program no longer follows a saved counterexample (replay)")
 TRACE_FILE = _code("RMC508", "trace-file", "a trace file is not a usable report of check --format json")
+BASELINE_FILE = _code("RMC509", "baseline-file", "a --baseline file cannot be read or is not a rapidmc baseline")
 HTML_OUTPUT = _code("RMC520", "html-output", "the HTML report file cannot be written")
 
 # --- usage (6xx) --------------------------------------------------------------------

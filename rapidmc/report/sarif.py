@@ -18,6 +18,7 @@ from typing import Optional, Sequence
 from .. import __version__
 from ..diagnostics import Diagnostic
 from .counterexample import WIDTH, read_data, shorten
+from .ci_findings import violation_anchor
 from .results import PropertyResult, described_formula
 from ..check.result import UNKNOWN, VIOLATED
 from ..check.trace import Trace, TraceDescriber, TraceStep, build_trace
@@ -131,8 +132,7 @@ def _rule(name: str, description: str) -> dict:
 
 def _violation(index: int, checked: PropertyResult, trace: Trace) -> dict:
     steps = [*trace.prefix, *trace.cycle]
-    located = [s for s in steps if s.transition is not None and s.transition.file]
-    anchor = _anchor(trace, located)
+    anchor = violation_anchor(trace)
     result = {
         "ruleId": checked.name, "ruleIndex": index, "level": "error",
         "message": {"text": f"{checked.name} is violated: {described_formula(checked)} "
@@ -159,14 +159,6 @@ def _shape(trace: Trace) -> str:
                       for name, value, origin in read)
     return f"counterexample: {len(trace.prefix)} steps to {trace.ending}" + \
         (f", reading {reads}" if reads else "")
-
-
-def _anchor(trace: Trace, located: list) -> Optional[TraceStep]:
-    """The step to point at: the last located step before the loop (or the last one)."""
-    if not located:
-        return None
-    before_loop = [s for s in located if trace.loop_start is None or s.index < trace.loop_start]
-    return (before_loop or located)[-1]
 
 
 def _flow_step(step: TraceStep, order: int, loop_start: Optional[int]) -> dict:
