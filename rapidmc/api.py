@@ -29,12 +29,15 @@ Input errors raise ``rapidmc.diagnostics.UserError`` carrying diagnostics.
 from __future__ import annotations
 
 import contextlib
+import functools
+import os
 from dataclasses import dataclass, field, replace
 from types import SimpleNamespace
 from typing import Callable, Iterable, Mapping, Optional, Sequence
 
 from . import ast
 from .check import HOLDS, UNKNOWN, VIOLATED, Progress, SearchResult, find_reachable
+from .check import native
 from .check.budget import DEFAULT_MAX_STATES
 from .check.distributed import Cluster
 from .check.trace import Trace, build_trace
@@ -109,6 +112,7 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
     I/O configuration whose signals the program uses by name; ``flows``: keep taint
     marks in the state, for ``flow_property`` (findings.lint.marks).
     """
+    files_given = list(files)
     files = resolve_program_files(SimpleNamespace(files=list(files), task=task, eio=eio,
                                                   all_tasks=all_tasks, add_task=list(add_tasks)))
     environment = _parse_files(list(env)) if env else None
@@ -121,6 +125,12 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
     program = build(parsed, entry=files.main_entry if entry == "main" else entry,
                     environment=environment, tasks=load_tasks(files), options=options)
     program.load_notes = files.notes + pers_warnings(program, files)
+    # what a worker of a distributed check loads to build the same system in its own process
+    program.load_arguments = dict(
+        files=[os.path.abspath(path) for path in files_given], env=[os.path.abspath(path) for path in env],
+        entry=entry, task=task, all_tasks=all_tasks, add_tasks=[
+            ",".join(os.path.abspath(path) for path in group.split(",")) for group in add_tasks],
+        eio=os.path.abspath(eio) if eio is not None else None, flows=flows)
     return program
 
 
@@ -328,7 +338,8 @@ class _Searches:
         self.keep = dict(explored=self.graphs.append,
                          valuations=[valuation for _, _, valuation in model.jobs]) \
             if options.reuse_explored and model.jobs and ray is None else {}
-        self.reach = _reach_here if ray is None else _DistributedReach(ray, options.cluster)
+        self.reach = _reach_here if ray is None else \
+            _DistributedReach(ray, options.cluster, system_recipe(model))
         self.notes: list[Diagnostic] = []
         if ray is not None:
             self.notes.append(_one_process_note(
@@ -467,12 +478,29 @@ def _reach_here(system: RapidSystem, predicate: str, bounds, progress: Optional[
                           observe=observe, **bounds)
 
 
+def system_recipe(model: Model):
+    """How a worker builds the model's system in its own process: load and prepare the same
+    files with the same properties and options (a system is not shipped whole: what its
+    step functions set up while loading belongs to the process that loaded it)."""
+    arguments = getattr(model.program, "load_arguments", None)
+    if arguments is None:
+        raise ValueError("a distributed check needs a program from api.load_program")
+    return functools.partial(_rebuilt_system, arguments, tuple(model.properties),
+                             replace(model.options, cluster=None), native.engine())
+
+
+def _rebuilt_system(arguments: dict, properties: tuple, options: CheckOptions,
+                    engine: str) -> RapidSystem:
+    native.use_engine(engine)
+    return prepare(load_program(**arguments), list(properties), options).system
+
+
 class _DistributedReach:
     """``_reach_here`` on a Ray cluster (``rapidmc.check.distributed``): the stuck watch runs
     in the workers (``stuck_at``), and only what it saw comes back."""
 
-    def __init__(self, ray, cluster: Cluster):
-        self.ray, self.cluster = ray, cluster
+    def __init__(self, ray, cluster: Cluster, recipe):
+        self.ray, self.cluster, self.recipe = ray, cluster, recipe
 
     def __call__(self, system: RapidSystem, predicate: str, bounds,
                  progress: Optional[Progress], observe) -> SearchResult:
@@ -481,7 +509,7 @@ class _DistributedReach:
             self.ray, self.cluster, system, predicate,
             watch="stuck_at" if observe is not None else None,
             max_states=bounds.get("max_states"), max_seconds=bounds.get("max_seconds"),
-            progress=progress, storage=bounds.get("storage"))
+            progress=progress, storage=bounds.get("storage"), rebuild=self.recipe)
         if watched:
             observe.seen = True
         return result

@@ -34,8 +34,37 @@ def canonical_bytes(value: Hashable) -> bytes:
 
 def owner(value: Hashable, partitions: int) -> int:
     """The partition (0 .. partitions-1) that owns ``value``: the same in every process."""
-    digest = hashlib.blake2b(canonical_bytes(value), digest_size=8).digest()
+    digest = hashlib.blake2b(_state_bytes(value), digest_size=8).digest()
     return int.from_bytes(digest, "little") % partitions
+
+
+_PARTS: dict = {}          # a state's part -> its canonical bytes (see _state_bytes)
+MAX_PARTS = 1 << 17
+
+
+def _state_bytes(value) -> bytes:
+    """``canonical_bytes`` of a tuple-shaped state, each of its parts encoded once per
+    process: successive states share most parts (a model changes a few per step), and
+    writing them afresh in Python dominated the cost of a distributed search.  The cache is
+    keyed by the part itself, so a part equal to a cached one (hence written alike) reuses
+    its bytes; it is emptied when it grows past ``MAX_PARTS``."""
+    if not isinstance(value, tuple):
+        return canonical_bytes(value)
+    out = bytearray(b"L")
+    _length(len(value), out)
+    parts = _PARTS
+    for part in value:
+        try:
+            encoded = parts.get(part)
+        except TypeError:                     # (an unhashable part: written each time)
+            encoded = canonical_bytes(part)
+        else:
+            if encoded is None:
+                if len(parts) >= MAX_PARTS:
+                    parts.clear()
+                encoded = parts[part] = canonical_bytes(part)
+        out += encoded
+    return bytes(out)
 
 
 def _length(count: int, out: bytearray) -> None:

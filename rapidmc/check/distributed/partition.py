@@ -19,7 +19,7 @@ no process's ids in them).
 from __future__ import annotations
 
 from array import array
-from typing import Hashable, Optional, Sequence
+from typing import Callable, Hashable, Optional, Sequence
 
 from ..native import engine_of, state_table
 from .canonical import owner
@@ -37,16 +37,40 @@ def unlink(parent: int) -> tuple[int, int]:
     return parent >> ID_BITS, parent & ID_MASK
 
 
+class SystemSource:
+    """The model a worker searches: the system itself (pickled with it), or a ``recipe``
+    that builds it in the worker's process, built once per ``key``."""
+
+    def __init__(self, system=None, recipe: Optional[Callable] = None):
+        self.system, self.recipe = system, recipe
+        self.key = None
+        if recipe is not None:
+            import hashlib
+            from ray import cloudpickle
+            self.key = hashlib.blake2b(cloudpickle.dumps(recipe), digest_size=16).hexdigest()
+
+    def build(self):
+        return self.system if self.recipe is None else self.recipe()
+
+
 class Partition:
     """The states of one partition (see the module docstring)."""
 
     def __init__(self):
         self.table = None
+        self.built: tuple = (None, None)       # (recipe key, the system it built)
 
-    def start(self, index: int, count: int, system, predicate: str,
+    def start(self, index: int, count: int, source: "SystemSource", predicate: str,
               deadlock_is_target: bool, watch: Optional[str] = None) -> None:
         """Begin a search (an actor serves the searches of one check one after another)."""
         self.index, self.count = index, count
+        if source.recipe is None:
+            system = source.system
+        elif self.built[0] == source.key:
+            system = self.built[1]
+        else:
+            system = source.recipe()
+            self.built = (source.key, system)
         self.system = system
         self.predicate = getattr(system, predicate)
         self.deadlock_is_target = deadlock_is_target
@@ -58,6 +82,7 @@ class Partition:
         self.expanded = 0                      # states before this id have been expanded
         self.transitions = 0
         self.deadlocks = 0
+        self.sent = 0                          # successors sent to other partitions
 
     def receive(self, senders: Sequence[int], *batches) -> tuple[int, int, int]:
         """Store the new states of the batches (``senders[i]`` sent ``batches[i]``: a list of
@@ -102,6 +127,8 @@ class Partition:
                 states.append(successor)
                 parents.append(state_id)
         self.expanded = end
+        self.sent = sum(len(states) for target, (states, _) in enumerate(outgoing)
+                        if target != index) + self.sent
         return (*outgoing, (self.transitions, self.deadlocks, deadlock_target, self.watched))
 
     def _targets(self, state) -> list:
@@ -112,14 +139,16 @@ class Partition:
         return self.table[state_id], self.parent[state_id]
 
     def clear(self) -> None:
-        """Let the search's states go."""
+        """Let the search's states go (the system stays, for the check's next search)."""
+        built = self.built
         self.__init__()
+        self.built = built
 
     def figures(self) -> dict:
         """What this partition holds: states, bytes, engine, and the process's peak memory."""
         import resource
         table = self.table
-        return {"states": len(table), "transitions": self.transitions,
+        return {"states": len(table), "transitions": self.transitions, "sent": self.sent,
                 "bytes": table.memory_bytes() + len(self.parent) * self.parent.itemsize,
                 "engine": engine_of(table),
                 "max_rss_kb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss}

@@ -30,7 +30,7 @@ from ..budget import SearchBudget
 from ..result import HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep, SearchResult, SearchStats
 from ..transition_system import TransitionSystem
 from .canonical import owner
-from .partition import NO_PARENT, Partition, unlink
+from .partition import NO_PARENT, Partition, SystemSource, unlink
 
 ENGINE = "distributed"
 
@@ -38,15 +38,18 @@ ENGINE = "distributed"
 def partitioned_reachable(ray, partitions: int, system: TransitionSystem, predicate: str, *,
                           deadlock_is_target: bool = False, watch: Optional[str] = None,
                           budget: Optional[SearchBudget] = None,
-                          on_level: Optional[Callable[[list], None]] = None) -> tuple:
+                          on_level: Optional[Callable[[list], None]] = None,
+                          rebuild: Optional[Callable[[], TransitionSystem]] = None) -> tuple:
     """(SearchResult, whether ``watch`` said True for some state, per-partition figures).
 
     ``predicate`` and ``watch`` name methods of ``system`` (the actors call them on their
     copy of it).  ``on_level(actors)`` is called before each level (tests kill one there).
+    ``rebuild``: a picklable function that builds ``system`` in a worker's process (else
+    the system itself is pickled to the workers).
     """
     budget = budget if budget is not None else SearchBudget()
     actors = _actors(ray, partitions)
-    shared = ray.put(system)
+    shared = ray.put(SystemSource(system if rebuild is None else None, rebuild))
     try:
         with worker_failures(ray):
             ray.get([actor.start.remote(index, partitions, shared, predicate,
@@ -133,6 +136,7 @@ class _Levels:
             if self.new == 0:
                 return self._result(HOLDS)
             self.depth += 1
+            self._note_balance()
             if sum(self.stored) > self.budget.max_states:
                 self.budget.reason = f"state limit {self.budget.max_states} reached"
             elif not self.budget.checkpoint(sum(self.stored), self.transitions, self.depth):
@@ -153,6 +157,13 @@ class _Levels:
             senders = list(range(count))
             received = [actor.receive.remote(senders, *[refs[target] for refs in expanded])
                         for target, actor in enumerate(self.actors)]
+
+    def _note_balance(self) -> None:
+        """The progress line's per-worker balance: each worker's share of the states."""
+        progress, total = self.budget.progress, sum(self.stored)
+        if progress is not None and total:
+            shares = "/".join(f"{100 * stored / total:.0f}" for stored in self.stored)
+            progress.note = f"{self.count} workers, states {shares} %"
 
     def _stored(self, answers) -> Optional[tuple[int, int]]:
         """Note what each partition stored; the first target (partition, id) or None."""
@@ -196,7 +207,7 @@ class _Levels:
 
 def reachable(ray, cluster, system: TransitionSystem, predicate: str, *,
               watch: Optional[str] = None, max_states=None, max_seconds=None,
-              progress=None, storage=None) -> tuple[SearchResult, bool]:
+              progress=None, storage=None, rebuild=None) -> tuple[SearchResult, bool]:
     """The distributed search ``cluster`` asks for (partitioned, or a swarm): the result and
     whether ``watch`` said True of some expanded state (a swarm watches nothing: False)."""
     from ..budget import DEFAULT_MAX_STATES
@@ -204,7 +215,8 @@ def reachable(ray, cluster, system: TransitionSystem, predicate: str, *,
                           max_seconds, progress)
     if cluster.swarm:
         from .swarm import swarm_reachable
-        return swarm_reachable(ray, cluster.swarm, system, predicate, budget, storage), False
+        return swarm_reachable(ray, cluster.swarm, system, predicate, budget, storage,
+                               rebuild), False
     result, watched, _ = partitioned_reachable(ray, cluster.partitions(ray), system, predicate,
-                                               watch=watch, budget=budget)
+                                               watch=watch, budget=budget, rebuild=rebuild)
     return result, watched

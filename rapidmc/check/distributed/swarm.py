@@ -20,6 +20,7 @@ from ..budget import SearchBudget
 from ..hashed import BITSTATE, MASK64, MIX, BitState, hashed_reachable
 from ..result import UNKNOWN, VIOLATED, SearchResult, SearchStats
 from .canonical import canonical_bytes
+from .partition import SystemSource
 
 DEFAULT_MEMBER_BYTES = 16 << 20          # each member's bit table without --bitstate
 
@@ -60,21 +61,22 @@ class SaltedBits:
         return self.bits.doubt(stored)
 
 
-def member(system, predicate: str, seed: int, size: int, max_states, max_seconds) -> SearchResult:
-    """One member's search (run as a Ray task)."""
+def member(source, predicate: str, seed: int, size: int, max_states, max_seconds) -> SearchResult:
+    """One member's search (run as a Ray task; ``source``: a ``partition.SystemSource``)."""
+    system = source.build()
     diversified = Diversified(system, seed)
     return hashed_reachable(diversified, getattr(system, predicate), SaltedBits(size, seed),
                             SearchBudget(max_states, max_seconds))
 
 
 def swarm_reachable(ray, members: int, system, predicate: str, budget: SearchBudget,
-                    storage: Optional[tuple] = None) -> SearchResult:
+                    storage: Optional[tuple] = None, rebuild=None) -> SearchResult:
     """The first violation any of ``members`` searches finds, else UNKNOWN with coverage."""
     from .search import drop_actors, worker_failures
     drop_actors(ray)                  # (a partitioned search's actors would hold the CPUs)
     size = storage[1] if storage is not None and storage[0] == BITSTATE else DEFAULT_MEMBER_BYTES
     task = ray.remote(num_cpus=1)(member)
-    shared = ray.put(system)
+    shared = ray.put(SystemSource(system if rebuild is None else None, rebuild))
     max_states = budget.max_states if budget.max_states != float("inf") else None
     pending = [task.remote(shared, predicate, seed, size, max_states, budget.max_seconds)
                for seed in range(1, members + 1)]
