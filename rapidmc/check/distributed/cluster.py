@@ -70,4 +70,6 @@ class Cluster:
         try:
             yield ray
         finally:
+            from .search import drop_actors     # (their handles die with this session)
+            drop_actors(ray)
             ray.shutdown()
