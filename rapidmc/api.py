@@ -28,15 +28,20 @@ Input errors raise ``rapidmc.diagnostics.UserError`` carrying diagnostics.
 """
 from __future__ import annotations
 
+import contextlib
+import functools
+import os
 from dataclasses import dataclass, field, replace
 from types import SimpleNamespace
 from typing import Callable, Iterable, Mapping, Optional, Sequence
 
 from . import ast
 from .check import HOLDS, UNKNOWN, VIOLATED, Progress, SearchResult, find_reachable
+from .check import native
 from .check.budget import DEFAULT_MAX_STATES
+from .check.distributed import Cluster
 from .check.trace import Trace, build_trace
-from .diagnostics import (AUTOMATON, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED,
+from .diagnostics import (AUTOMATON, DISTRIBUTED_SCOPE, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED,
                           TRACE_REPLAY, USAGE, Diagnostic, SourceCache,
                           error)
 from .diagnostics.quoting import one_line, quoted
@@ -90,6 +95,9 @@ class CheckOptions:
     # the property searches walk the state graph the run-time error search explored, when
     # that search was complete (False: each steps the program again; same answers)
     reuse_explored: bool = True
+    # --workers / --ray / --swarm: the built-in checks' searches on a Ray cluster
+    # (rapidmc.check.distributed, docs/distributed.md); None: in this process
+    cluster: Optional[Cluster] = None
 
 
 # --- loading -----------------------------------------------------------------------
@@ -106,6 +114,7 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
     I/O configuration whose signals the program uses by name; ``flows``: keep taint
     marks in the state, for ``flow_property`` (findings.lint.marks).
     """
+    files_given = list(files)
     files = resolve_program_files(SimpleNamespace(files=list(files), task=task, eio=eio,
                                                   all_tasks=all_tasks, add_task=list(add_tasks)))
     environment = _parse_files(list(env)) if env else None
@@ -118,6 +127,12 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
     program = build(parsed, entry=files.main_entry if entry == "main" else entry,
                     environment=environment, tasks=load_tasks(files), options=options)
     program.load_notes = files.notes + pers_warnings(program, files)
+    # what a worker of a distributed check loads to build the same system in its own process
+    program.load_arguments = dict(
+        files=[os.path.abspath(path) for path in files_given], env=[os.path.abspath(path) for path in env],
+        entry=entry, task=task, all_tasks=all_tasks, add_tasks=[
+            ",".join(os.path.abspath(path) for path in group.split(",")) for group in add_tasks],
+        eio=os.path.abspath(eio) if eio is not None else None, flows=flows)
     return program
 
 
@@ -286,23 +301,25 @@ def check(program: Program, properties: Iterable[Property] = (),
 
 def check_model(model: Model, progress: ProgressFactory = lambda: None) -> CheckReport:
     """``check`` on a prepared model; ``progress()`` gives each search its progress line."""
-    searches = _Searches(model, progress)
-    try:
-        results = searches.builtin_checks() + [searches.property(*job) for job in model.jobs]
-    except EnvironmentFault as exc:
-        raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
+    cluster = model.options.cluster
+    with cluster.session() if cluster is not None else contextlib.nullcontext() as ray:
+        searches = _Searches(model, progress, ray)
+        try:
+            results = searches.builtin_checks() + [searches.property(*job) for job in model.jobs]
+        except EnvironmentFault as exc:
+            raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
     resting_on = assumptions(model.program)
     results = [replace(r, assumes=for_verdict(resting_on, r.result, model.describer))
                for r in results]
-    return CheckReport(results, _findings(model, results, searches.facts), model.describer,
-                       searches.facts.executed(), searches.facts.inputs_tried())
+    return CheckReport(results, _findings(model, results, searches.facts, searches.notes),
+                       model.describer, searches.facts.executed(), searches.facts.inputs_tried())
 
 
 def _findings(model: Model, results: list[PropertyResult],
-              facts: ExploredFacts) -> list[Diagnostic]:
+              facts: ExploredFacts, notes: Sequence[Diagnostic] = ()) -> list[Diagnostic]:
     """What the check assumed or saw besides verdicts, in source order after the load and
     domain notes."""
-    return list(model.program.load_notes) + list(model.plan.notes) + [
+    return list(model.program.load_notes) + list(model.plan.notes) + list(notes) + [
         assumed.note() for assumed in model.assumed + model.messages] + sorted(
         fixed_readings(model.program) + facts.warnings()
         + _flow_sinks(model, results),
@@ -326,7 +343,7 @@ class _Searches:
     (``facts``), and keeps the state graph that the property searches walk.
     """
 
-    def __init__(self, model: Model, progress: ProgressFactory):
+    def __init__(self, model: Model, progress: ProgressFactory, ray=None):
         options = model.options
         self.model, self.progress = model, progress
         self.bounds = dict(max_states=options.max_states, max_seconds=options.max_seconds,
@@ -335,24 +352,43 @@ class _Searches:
         self.facts = ExploredFacts(model.program, [prop.formula for prop in model.properties],
                                    model.atoms, sampled_inputs(model.program, exact))
         # Coverage and vacuity watch the run-time error search (merged steps name every line
-        # they run); --compact / --bitstate searches are never complete, so they watch nothing.
-        self.watching = options.storage is None or not model.plan.merge_points
+        # they run); --compact / --bitstate searches are never complete, so they watch nothing;
+        # nor do distributed searches (their states are expanded in other processes).
+        self.watching = (options.storage is None or not model.plan.merge_points) and ray is None
         self.graphs: list = []    # the whole state graph, kept by the first complete search
         self.keep = dict(explored=self.graphs.append,
                          valuations=[valuation for _, _, valuation in model.jobs]) \
-            if options.reuse_explored and model.jobs else {}
+            if options.reuse_explored and model.jobs and ray is None else {}
+        self.reach = _reach_here if ray is None else \
+            _DistributedReach(ray, options.cluster, system_recipe(model))
+        self.notes: list[Diagnostic] = []
+        if ray is not None:
+            self.notes.append(_one_process_note(
+                "a distributed search does not report unreached code (RMC701) or vacuity: "
+                "its states are expanded in other processes"))
+        if ray is not None and model.jobs:
+            self.notes.append(_one_process_note(
+                "LTL properties are checked in one process: the distributed search covers "
+                "the built-in checks (no_runtime_error, no_deadlock)"))
         self.fairness = TaskFairness(model.system) if assumes_fairness(model) else None
 
     def builtin_checks(self) -> list[PropertyResult]:
         """No reachable uncaught run-time error; no state where the program waits forever."""
         system = self.model.system
         stuck = _StuckWatch(system, self.facts if self.watching else None)
-        runtime = _builtin(system, BUILTIN_RUNTIME, "no reachable uncaught run-time error",
-                           system.failed, dict(self.bounds, **self.keep), self.progress(), stuck)
+        runtime = _builtin(self.reach, system, BUILTIN_RUNTIME,
+                           "no reachable uncaught run-time error", "failed",
+                           dict(self.bounds, **self.keep), self.progress(), stuck)
         if self.watching:
             self.facts.finish(system, runtime.result, progress=self.progress(), **self.bounds,
                               **self.keep)
-        return [runtime, _deadlock(system, runtime.result, stuck, self.bounds, self.progress)]
+        deadlock = _deadlock(self.reach, system, runtime.result, stuck, self.bounds,
+                             self.progress)
+        if self.reach is not _reach_here and deadlock.name == BUILTIN_DEADLOCK and \
+                deadlock.formula == _TASK_WAITS:
+            self.notes.append(_one_process_note(
+                "the search for a task that waits forever (several tasks) ran in one process"))
+        return [runtime, deadlock]
 
     def property(self, prop: Property, buchi, valuation) -> PropertyResult:
         """One LTL property: the product with its negation's automaton, empty or a lasso."""
@@ -412,7 +448,7 @@ class _StuckWatch:
             self.seen = True
 
 
-def _deadlock(system: RapidSystem, runtime: SearchResult, stuck: _StuckWatch, bounds,
+def _deadlock(reach, system: RapidSystem, runtime: SearchResult, stuck: _StuckWatch, bounds,
               progress: ProgressFactory) -> PropertyResult:
     """The deadlock check: answered by the run-time error search when that one was complete.
 
@@ -426,31 +462,83 @@ def _deadlock(system: RapidSystem, runtime: SearchResult, stuck: _StuckWatch, bo
         answer = SearchResult(HOLDS, stats=replace(runtime.stats, seconds=0.0))
         found = PropertyResult(BUILTIN_DEADLOCK, description, answer)
     else:
-        found = _stuck_state(system, description, bounds, progress)
+        found = _stuck_state(reach, system, description, bounds, progress)
     if found.result.verdict == HOLDS and len(system.program.task_names) > 1:
         # several tasks: one may wait forever while the others go on (model.waiting)
         waiting = waits_forever(system, bounds, progress())
         _replayed(system, waiting)
-        found = PropertyResult(BUILTIN_DEADLOCK, "no task waits forever", waiting)
+        found = PropertyResult(BUILTIN_DEADLOCK, _TASK_WAITS, waiting)
     return found
 
 
-def _stuck_state(system: RapidSystem, description: str, bounds,
+def _stuck_state(reach, system: RapidSystem, description: str, bounds,
                  progress: ProgressFactory) -> PropertyResult:
-    found = _builtin(system, BUILTIN_DEADLOCK, description, system.stuck, bounds, progress())
+    found = _builtin(reach, system, BUILTIN_DEADLOCK, description, "stuck", bounds, progress())
     if found.result.verdict == VIOLATED:
         found.result.reason = system.describe_waits(
             (found.result.cycle or found.result.prefix)[0 if found.result.cycle else -1].state)
     return found
 
 
-def _builtin(system: RapidSystem, name: str, description: str, predicate, bounds,
+def _builtin(reach, system: RapidSystem, name: str, description: str, predicate: str, bounds,
              progress: Optional[Progress], observe=None) -> PropertyResult:
-    result = find_reachable(system, predicate, progress=progress, observe=observe, **bounds)
+    result = reach(system, predicate, bounds, progress, observe)
     if result.verdict == VIOLATED:
         end_at_error(system, result)
         _replayed(system, result)
     return PropertyResult(name, description, result)
+
+
+_TASK_WAITS = "no task waits forever"
+
+
+def _reach_here(system: RapidSystem, predicate: str, bounds, progress: Optional[Progress],
+                observe) -> SearchResult:
+    """The reachability search of a built-in check, in this process (``predicate`` names
+    the system's method that marks the bad states)."""
+    return find_reachable(system, getattr(system, predicate), progress=progress,
+                          observe=observe, **bounds)
+
+
+def system_recipe(model: Model):
+    """How a worker builds the model's system in its own process: load and prepare the same
+    files with the same properties and options (a system is not shipped whole: what its
+    step functions set up while loading belongs to the process that loaded it)."""
+    arguments = getattr(model.program, "load_arguments", None)
+    if arguments is None:
+        raise ValueError("a distributed check needs a program from api.load_program")
+    return functools.partial(_rebuilt_system, arguments, tuple(model.properties),
+                             replace(model.options, cluster=None), native.engine())
+
+
+def _rebuilt_system(arguments: dict, properties: tuple, options: CheckOptions,
+                    engine: str) -> RapidSystem:
+    native.use_engine(engine)
+    return prepare(load_program(**arguments), list(properties), options).system
+
+
+class _DistributedReach:
+    """``_reach_here`` on a Ray cluster (``rapidmc.check.distributed``): the stuck watch runs
+    in the workers (``stuck_at``), and only what it saw comes back."""
+
+    def __init__(self, ray, cluster: Cluster, recipe):
+        self.ray, self.cluster, self.recipe = ray, cluster, recipe
+
+    def __call__(self, system: RapidSystem, predicate: str, bounds,
+                 progress: Optional[Progress], observe) -> SearchResult:
+        from .check.distributed.search import reachable
+        result, watched = reachable(
+            self.ray, self.cluster, system, predicate,
+            watch="stuck_at" if observe is not None else None,
+            max_states=bounds.get("max_states"), max_seconds=bounds.get("max_seconds"),
+            progress=progress, storage=bounds.get("storage"), rebuild=self.recipe)
+        if watched:
+            observe.seen = True
+        return result
+
+
+def _one_process_note(message: str) -> Diagnostic:
+    return Diagnostic(DISTRIBUTED_SCOPE, message, None, severity="note")
 
 
 def _replayed(system: RapidSystem, result) -> None:

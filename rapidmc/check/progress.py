@@ -36,6 +36,7 @@ class Progress:
         self.started = clock()
         self.next_print = self.started + delay
         self.width = 0
+        self.note = ""         # appended to the line (a distributed search: per-worker balance)
 
     def start(self) -> None:
         """Restart the clock (one ``Progress`` may serve several searches)."""
@@ -50,6 +51,8 @@ class Progress:
             return
         self.next_print = now + self.interval
         line = progress_line(states, transitions, depth, now - self.started)
+        if self.note:
+            line += "  " + self.note
         padding = " " * max(self.width - len(line), 0)
         self.width = len(line)
         self.stream.write("\r" + line + padding)

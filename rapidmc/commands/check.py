@@ -25,7 +25,7 @@ from ..ltl import BACKENDS
 from ..load.backup import add_program_arguments
 from ..model.properties import Property, check_unique, read_property_file
 from ..model import reduction
-from . import entries, storage_options
+from . import cluster_options, entries, storage_options
 from ..diagnostics.quoting import quoted, routine_name
 from .report_file import check_report_target, unwritable_reason, write_report
 from . import baseline_options
@@ -53,6 +53,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "shortened, repeated steps not folded")
     parser.add_argument("--quiet", action="store_true", help="no progress line on stderr")
     baseline_options.add_arguments(parser)
+    cluster_options.add_arguments(parser)
 
 
 def add_model_arguments(parser: argparse.ArgumentParser) -> None:
@@ -152,7 +153,8 @@ def check_options(args: argparse.Namespace) -> api.CheckOptions:
         max_states=args.max_states, max_seconds=args.max_seconds,
         reductions=reduction.from_arguments(args),
         storage=storage_options.storage_from_arguments(args),
-        fairness=not args.no_fairness)
+        fairness=not args.no_fairness,
+        cluster=cluster_options.cluster_from_arguments(args))
 
 
 def prepare_model(args: argparse.Namespace) -> api.Model:

@@ -12,7 +12,8 @@ Rendered form (like mypy and compilers)::
 
 Exit codes of the ``rapidmc`` command (documented in README):
 0 success / all properties hold, 1 violation or uncaught RAPID run-time
-error, 2 bad input or usage, 3 search incomplete (UNKNOWN), 4 internal error.
+error, 2 bad input or usage, 3 search incomplete (UNKNOWN), 4 internal error, 5 a
+distributed search lost a worker (no verdict).
 """
 from __future__ import annotations
 
@@ -27,6 +28,7 @@ EXIT_RUNTIME_ERROR = 1
 EXIT_INPUT_ERROR = 2
 EXIT_UNKNOWN = 3
 EXIT_INTERNAL_ERROR = 4
+EXIT_WORKER_LOST = 5
 
 
 @dataclass(frozen=True)
@@ -124,6 +126,13 @@ ORDER_REDUCTION = _code("RMC732", "order-reduction", "partial-order reduction is
 # --- the search engine (750-759) ---------------------------------------------------------
 NATIVE_ENGINE = _code("RMC750", "native-engine",
                       "--engine native asked for, and the compiled search core is not built")
+RAY_UNAVAILABLE = _code("RMC751", "ray-unavailable",
+                        "--workers, --ray or --swarm asked for, and Ray (the 'ray' extra) is not installed")
+WORKER_LOST = _code("RMC752", "worker-lost",
+                    "a worker of a distributed search died or ran out of memory: no verdict (exit 5)")
+DISTRIBUTED_SCOPE = _code("RMC753", "distributed-scope",
+                          "what a distributed check did not distribute or report: LTL properties and "
+                          "waiting tasks run in one process; no coverage or vacuity")
 
 # --- lint (80x-84x): `rapidmc lint` rules (rapidmc.findings.lint, docs/lint.md) ---------
 NOT_CHAIN = _code("RMC801", "not-chain", "NOT over an AND/OR/XOR chain without parentheses")

@@ -1,0 +1,138 @@
+"""One process against a local Ray cluster of 2 workers (``--workers 2``, issue 29).
+
+Usage: python bench/distributed.py [--counters 6,7] [--modulo 4] [--only NAME] [--workers 2]
+
+For each model, each in a fresh process: the run-time error search of a check (breadth-first,
+the whole reachable state space, since these programs have no run-time error), once in one
+process (``find_reachable``, the default engine) and once hash-partitioned over the workers
+(``check.distributed.search``).  Models: the whole-controller family of bench/tasks.py (two
+tasks sharing PERS data, interrupts, a socket server: steps mostly in Python, the general
+driver) and bench/check.py's counters family (N inputs, N counters modulo K: the compiled
+step machine where it is built).
+
+Columns: states; wall seconds of the search (Ray's start-up is apart: "start s"); the speed-up
+of the workers; microseconds of wall time per state; the successors sent to another
+partition per state and the pickled bytes of a state (the message volume); the maximum
+resident set size of the single process and of each worker.  The machine may be shared with
+other work: run it a few times.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import logging
+import pickle
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+
+from check import counters_program  # noqa: E402  (bench/check.py)
+from tasks import MODELS, load      # noqa: E402  (bench/tasks.py)
+
+from rapidmc import api  # noqa: E402
+
+
+def model_of(name: str, modulo: int):
+    if name.startswith("counters N="):
+        inputs = int(name.split("=")[1])
+        folder = tempfile.mkdtemp()
+        path = Path(folder) / "counters.mod"
+        path.write_text(counters_program(inputs, modulo))
+        return api.prepare(api.load_program([str(path)]), [])
+    _, files, tasks, _, options = next(model for model in MODELS if model[0] == name)
+    return api.prepare(load(files, tasks), [], api.CheckOptions(**options))
+
+
+def pickled_bytes(system, sample: int = 300) -> float:
+    """The mean pickled size of the first states breadth-first (what a batch carries)."""
+    seen, frontier = [], list(system.initial_states())
+    while frontier and len(seen) < sample:
+        state = frontier.pop(0)
+        seen.append(state)
+        frontier.extend(after for _, after in system.successors(state))
+    return sum(len(pickle.dumps(state, protocol=5)) for state in seen) / len(seen)
+
+
+def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
+    """One measurement in this process (the parent runs each in a fresh one)."""
+    model = model_of(name, modulo)
+    system = model.system
+    if mode == "single":
+        from rapidmc.check import find_reachable
+        started = time.perf_counter()
+        result = find_reachable(system, system.failed, max_states=None)
+        seconds = time.perf_counter() - started
+        return {"verdict": result.verdict, "states": result.stats.product_states,
+                "seconds": seconds, "engine": result.stats.engine,
+                "max_rss_kb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss}
+    import ray
+    from rapidmc.check.budget import SearchBudget
+    from rapidmc.check.distributed.search import partitioned_reachable
+    started = time.perf_counter()
+    ray.init(num_cpus=workers, include_dashboard=False, logging_level=logging.ERROR,
+             log_to_driver=False)
+    start_seconds = time.perf_counter() - started
+    # the actors' processes start here, outside the timed search (as in one process's import)
+    recipe = api.system_recipe(model)        # (each worker builds the system itself)
+    partitioned_reachable(ray, workers, system, "failed", budget=SearchBudget(1),
+                          rebuild=recipe)
+    started = time.perf_counter()
+    result, _, figures = partitioned_reachable(ray, workers, system, "failed",
+                                               budget=SearchBudget(None), rebuild=recipe)
+    seconds = time.perf_counter() - started
+    ray.shutdown()
+    return {"verdict": result.verdict, "states": result.stats.product_states,
+            "seconds": seconds, "start_seconds": start_seconds,
+            "sent": sum(f["sent"] for f in figures),
+            "pickled": pickled_bytes(system),
+            "worker_rss_kb": [f["max_rss_kb"] for f in figures],
+            "worker_states": [f["states"] for f in figures]}
+
+
+def fresh(name: str, mode: str, modulo: int, workers: int) -> dict:
+    run = subprocess.run([sys.executable, __file__, "--measure", name, mode,
+                          "--modulo", str(modulo), "--workers", str(workers)],
+                         capture_output=True, text=True, check=True)
+    return json.loads(run.stdout.strip().splitlines()[-1])
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--counters", default="6,7", help="N of the counters family")
+    parser.add_argument("--modulo", type=int, default=4)
+    parser.add_argument("--workers", type=int, default=2)
+    parser.add_argument("--only", default=None, help="only the models whose name holds this")
+    parser.add_argument("--measure", nargs=2, default=None, help=argparse.SUPPRESS)
+    args = parser.parse_args()
+    if args.measure is not None:
+        print(json.dumps(measure(*args.measure, args.modulo, args.workers)))
+        return
+    names = [model[0] for model in MODELS] + \
+        [f"counters N={n}" for n in args.counters.split(",") if n]
+    print(f"{'model':16} {'states':>9} {'1 proc s':>8} {f'{args.workers} wkr s':>8} "
+          f"{'speed-up':>8} {'us/state':>8} {'start s':>7} {'sent/st':>7} {'B/state':>7} "
+          f"{'RSS 1 MB':>8} {'RSS wkr MB':>12} {'balance':>9}")
+    for name in names:
+        if args.only and args.only not in name:
+            continue
+        single = fresh(name, "single", args.modulo, args.workers)
+        spread = fresh(name, "workers", args.modulo, args.workers)
+        assert (single["verdict"], single["states"]) == (spread["verdict"], spread["states"])
+        states = single["states"]
+        rss = "/".join(f"{kb / 1024:.0f}" for kb in spread["worker_rss_kb"])
+        balance = "/".join(f"{100 * s / states:.0f}" for s in spread["worker_states"])
+        print(f"{name:16} {states:>9,} {single['seconds']:>8.2f} {spread['seconds']:>8.2f} "
+              f"{single['seconds'] / spread['seconds']:>7.2f}x "
+              f"{1e6 * single['seconds'] / states:>8.0f} {spread['start_seconds']:>7.1f} "
+              f"{spread['sent'] / states:>7.2f} {spread['pickled']:>7.0f} "
+              f"{single['max_rss_kb'] / 1024:>8.0f} {rss:>12} {balance:>9}", flush=True)
+
+
+if __name__ == "__main__":
+    main()

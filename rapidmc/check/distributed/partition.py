@@ -1,0 +1,154 @@
+"""One worker of a partitioned search: the states it owns, their parents, its frontier.
+
+A ``Partition`` is a plain class; ``search`` runs it as a Ray actor, one per worker, and
+keeps the actors for the next search of the same Ray session (``start`` begins one).  Its
+states are those whose canonical hash (``canonical.owner``) names it; it stores them in a
+state table of the engine's (``native.state_table``: the compiled one where built), each
+with the link to the state it was first reached from, which may live in another partition.
+
+A link is one number: ``sender << ID_BITS | id`` (the sender partition and the parent's id
+there), -1 for an initial state, so parents cost an ``array`` slot each.
+
+The search runs in breadth-first levels.  ``receive`` takes the states that every
+partition (in partition order) sent this one at the end of the last level, stores the new
+ones in that order, and notes the first new one the predicate marks; ``expand`` steps every
+state stored since the previous ``expand`` and sorts their successors into one batch per
+owner.  States travel as the objects the model made (Ray pickles them; they are values, with
+no process's ids in them).
+"""
+from __future__ import annotations
+
+from array import array
+from typing import Callable, Hashable, Optional, Sequence
+
+from ..native import engine_of, state_table
+from .canonical import owner
+
+ID_BITS = 40
+ID_MASK = (1 << ID_BITS) - 1
+NO_PARENT = -1
+
+
+def link(partition: int, state_id: int) -> int:
+    return partition << ID_BITS | state_id
+
+
+def unlink(parent: int) -> tuple[int, int]:
+    return parent >> ID_BITS, parent & ID_MASK
+
+
+class SystemSource:
+    """The model a worker searches: the system itself (pickled with it), or a ``recipe``
+    that builds it in the worker's process, built once per ``key``."""
+
+    def __init__(self, system=None, recipe: Optional[Callable] = None):
+        self.system, self.recipe = system, recipe
+        self.key = None
+        if recipe is not None:
+            import hashlib
+            from ray import cloudpickle
+            self.key = hashlib.blake2b(cloudpickle.dumps(recipe), digest_size=16).hexdigest()
+
+    def build(self):
+        return self.system if self.recipe is None else self.recipe()
+
+
+class Partition:
+    """The states of one partition (see the module docstring)."""
+
+    def __init__(self):
+        self.table = None
+        self.built: tuple = (None, None)       # (recipe key, the system it built)
+
+    def start(self, index: int, count: int, source: "SystemSource", predicate: str,
+              deadlock_is_target: bool, watch: Optional[str] = None) -> None:
+        """Begin a search (an actor serves the searches of one check one after another)."""
+        self.index, self.count = index, count
+        if source.recipe is None:
+            system = source.system
+        elif self.built[0] == source.key:
+            system = self.built[1]
+        else:
+            system = source.recipe()
+            self.built = (source.key, system)
+        self.system = system
+        self.predicate = getattr(system, predicate)
+        self.deadlock_is_target = deadlock_is_target
+        # a method (state, successor states) -> bool to ask of every expanded state
+        self.watch = getattr(system, watch) if watch is not None else None
+        self.watched = False                   # whether it ever said True
+        self.table = state_table(system)
+        self.parent = array("q")
+        self.expanded = 0                      # states before this id have been expanded
+        self.transitions = 0
+        self.deadlocks = 0
+        self.sent = 0                          # successors sent to other partitions
+
+    def receive(self, senders: Sequence[int], *batches) -> tuple[int, int, int]:
+        """Store the new states of the batches (``senders[i]`` sent ``batches[i]``: a list of
+        states and an array of their parents' ids there).  Returns (states stored, states
+        new now, the id of the first new state the predicate marks or -1)."""
+        table, parent, predicate = self.table, self.parent, self.predicate
+        before = len(table)
+        target = -1
+        for sender, (states, parents) in zip(senders, batches):
+            for state, parent_id in zip(states, parents):
+                state_id, new = table.intern(state, True)
+                if not new:
+                    continue
+                parent.append(NO_PARENT if sender < 0 else link(sender, parent_id))
+                if target < 0 and predicate(state):
+                    target = state_id
+        return len(table), len(table) - before, target
+
+    def expand(self) -> tuple:
+        """Step the states stored since the last call: one batch per partition, then the
+        level's figures (transitions, deadlocks, the first deadlocked state when those are
+        targets or -1, and whether ``watch`` said True)."""
+        table, count, index = self.table, self.count, self.index
+        successors_of = getattr(self.system, "successor_states", None)
+        if successors_of is None:
+            successors_of = self._targets
+        outgoing = [([], array("q")) for _ in range(count)]
+        deadlock_target = -1
+        end = len(table)
+        for state_id in range(self.expanded, end):
+            state = table[state_id]
+            successors = successors_of(state)
+            if self.watch is not None and not self.watched and self.watch(state, successors):
+                self.watched = True
+            self.transitions += len(successors)
+            if not successors:
+                self.deadlocks += 1
+                if self.deadlock_is_target and deadlock_target < 0:
+                    deadlock_target = state_id
+            for successor in successors:
+                states, parents = outgoing[owner(successor, count) if count > 1 else 0]
+                states.append(successor)
+                parents.append(state_id)
+        self.expanded = end
+        self.sent = sum(len(states) for target, (states, _) in enumerate(outgoing)
+                        if target != index) + self.sent
+        return (*outgoing, (self.transitions, self.deadlocks, deadlock_target, self.watched))
+
+    def _targets(self, state) -> list:
+        return [successor for _, successor in self.system.successors(state)]
+
+    def step_back(self, state_id: int) -> tuple[Hashable, int]:
+        """The state with this id and the link to its parent (``NO_PARENT`` for an initial one)."""
+        return self.table[state_id], self.parent[state_id]
+
+    def clear(self) -> None:
+        """Let the search's states go (the system stays, for the check's next search)."""
+        built = self.built
+        self.__init__()
+        self.built = built
+
+    def figures(self) -> dict:
+        """What this partition holds: states, bytes, engine, and the process's peak memory."""
+        import resource
+        table = self.table
+        return {"states": len(table), "transitions": self.transitions, "sent": self.sent,
+                "bytes": table.memory_bytes() + len(self.parent) * self.parent.itemsize,
+                "engine": engine_of(table),
+                "max_rss_kb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss}

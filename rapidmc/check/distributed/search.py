@@ -1,0 +1,222 @@
+"""The hash-partitioned breadth-first search: one Ray actor per partition, run in levels.
+
+``partitioned_reachable`` answers what ``reachability.find_reachable`` answers (the
+shortest path to a state the predicate marks; HOLDS after the whole state space; UNKNOWN at
+a bound), with the states split among ``Partition`` actors by their canonical hash.  Each
+level: every partition expands its new states and sorts their successors by owner (one
+batch per owner, handed from actor to actor through Ray's object store, never through this
+process); then every partition stores what it was sent.  A level that stores nothing new
+ends a complete search.
+
+A violation is found in the level of its depth, as in the one-process search, so the path is
+as short; it is rebuilt by following parent links from partition to partition, and its
+labels by stepping the model along it here (as ``reachability`` does), so it replays.
+
+A complete search stores exactly the reachable states and counts each transition once: the
+same states, transitions, deadlocks and depth as one process.  The state limit is checked
+after each level (a level may store more than the limit before the search stops: UNKNOWN
+either way), the time limit between levels.
+
+A worker that dies (killed, out of memory, crashed node) ends the search with the
+``WORKER_LOST`` diagnostic and its exit code: never with a verdict.
+"""
+from __future__ import annotations
+
+import contextlib
+from typing import Callable, Optional
+
+from ...diagnostics import EXIT_WORKER_LOST, WORKER_LOST, error
+from ..budget import SearchBudget
+from ..result import HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep, SearchResult, SearchStats
+from ..transition_system import TransitionSystem
+from .canonical import owner
+from .partition import NO_PARENT, Partition, SystemSource, unlink
+
+ENGINE = "distributed"
+
+
+def partitioned_reachable(ray, partitions: int, system: TransitionSystem, predicate: str, *,
+                          deadlock_is_target: bool = False, watch: Optional[str] = None,
+                          budget: Optional[SearchBudget] = None,
+                          on_level: Optional[Callable[[list], None]] = None,
+                          rebuild: Optional[Callable[[], TransitionSystem]] = None) -> tuple:
+    """(SearchResult, whether ``watch`` said True for some state, per-partition figures).
+
+    ``predicate`` and ``watch`` name methods of ``system`` (the actors call them on their
+    copy of it).  ``on_level(actors)`` is called before each level (tests kill one there).
+    ``rebuild``: a picklable function that builds ``system`` in a worker's process (else
+    the system itself is pickled to the workers).
+    """
+    budget = budget if budget is not None else SearchBudget()
+    actors = _actors(ray, partitions)
+    shared = ray.put(SystemSource(system if rebuild is None else None, rebuild))
+    try:
+        with worker_failures(ray):
+            ray.get([actor.start.remote(index, partitions, shared, predicate,
+                                        deadlock_is_target, watch)
+                     for index, actor in enumerate(actors)])
+            return _Levels(ray, actors, system, budget, on_level).run()
+    except BaseException:
+        drop_actors(ray)         # (one may be dead; the next search starts afresh)
+        raise
+    finally:
+        for actor in _ACTORS.get("actors", ()):
+            actor.clear.remote()
+
+
+_ACTORS: dict = {}     # the actors of this Ray session: "session", "actors"
+
+
+def _actors(ray, partitions: int) -> list:
+    """``partitions`` Partition actors, kept for the next search of the same Ray session
+    (an actor costs a process start, a second or more)."""
+    session = ray.get_runtime_context().get_job_id()
+    if _ACTORS.get("session") != session or len(_ACTORS.get("actors", ())) != partitions:
+        drop_actors(ray)
+        actor_class = ray.remote(num_cpus=1)(Partition)
+        _ACTORS.update(session=session,
+                       actors=[actor_class.remote() for _ in range(partitions)])
+    return _ACTORS["actors"]
+
+
+def drop_actors(ray) -> None:
+    for actor in _ACTORS.pop("actors", ()):
+        try:
+            ray.kill(actor)
+        except Exception:         # (a session already shut down took them with it)
+            pass
+    _ACTORS.pop("session", None)
+
+
+@contextlib.contextmanager
+def worker_failures(ray):
+    """A lost worker as the ``WORKER_LOST`` diagnostic; an exception the model raised in a
+    worker (``RayTaskError``) as that exception, as if the search had run here."""
+    try:
+        yield
+    except ray.exceptions.RayTaskError as exc:
+        cause = exc.cause if isinstance(exc.cause, Exception) else None
+        if cause is None or isinstance(cause, ray.exceptions.RayError):
+            raise _worker_lost(cause or exc) from None
+        raise cause from None
+    except ray.exceptions.RayError as exc:
+        raise _worker_lost(exc) from None
+
+
+def _worker_lost(exc: Exception):
+    summary = str(exc).strip().splitlines()[0] if str(exc).strip() else type(exc).__name__
+    return error(WORKER_LOST, f"a search worker was lost ({type(exc).__name__}): the search "
+                 "is incomplete and gives no verdict", None, summary[:300],
+                 exit_code=EXIT_WORKER_LOST)
+
+
+class _Levels:
+    def __init__(self, ray, actors, system, budget: SearchBudget, on_level):
+        self.ray, self.actors, self.system = ray, actors, system
+        self.budget, self.on_level = budget, on_level
+        self.count = len(actors)
+        self.stored = [0] * self.count
+        self.transitions = self.deadlocks = 0
+        self.depth = 0
+        self.watched = False
+
+    def run(self) -> tuple:
+        ray, count = self.ray, self.count
+        batches = [([], []) for _ in range(count)]
+        for state in self.system.initial_states():
+            states, parents = batches[owner(state, count) if count > 1 else 0]
+            states.append(state)
+            parents.append(NO_PARENT)
+        received = [actor.receive.remote([-1], batches[index])
+                    for index, actor in enumerate(self.actors)]
+        while True:
+            found = self._stored(ray.get(received))
+            if found is not None:
+                return self._result(VIOLATED, self._path(*found))
+            if self.new == 0:
+                return self._result(HOLDS)
+            self.depth += 1
+            self._note_balance()
+            if sum(self.stored) > self.budget.max_states:
+                self.budget.reason = f"state limit {self.budget.max_states} reached"
+            elif not self.budget.checkpoint(sum(self.stored), self.transitions, self.depth):
+                pass                                  # (the time limit: reason is set)
+            if self.budget.reason is not None:
+                return self._result(UNKNOWN)
+            if self.on_level is not None:
+                self.on_level(self.actors)
+            expanded = [actor.expand.options(num_returns=count + 1).remote()
+                        for actor in self.actors]
+            figures = ray.get([refs[count] for refs in expanded])
+            self.transitions = sum(f[0] for f in figures)
+            self.deadlocks = sum(f[1] for f in figures)
+            self.watched = self.watched or any(f[3] for f in figures)
+            for index, f in enumerate(figures):
+                if f[2] >= 0:
+                    return self._result(VIOLATED, self._path(index, f[2]))
+            senders = list(range(count))
+            received = [actor.receive.remote(senders, *[refs[target] for refs in expanded])
+                        for target, actor in enumerate(self.actors)]
+
+    def _note_balance(self) -> None:
+        """The progress line's per-worker balance: each worker's share of the states."""
+        progress, total = self.budget.progress, sum(self.stored)
+        if progress is not None and total:
+            shares = "/".join(f"{100 * stored / total:.0f}" for stored in self.stored)
+            progress.note = f"{self.count} workers, states {shares} %"
+
+    def _stored(self, answers) -> Optional[tuple[int, int]]:
+        """Note what each partition stored; the first target (partition, id) or None."""
+        self.new = sum(new for _, new, _ in answers)
+        self.stored = [stored for stored, _, _ in answers]
+        for index, (_, _, target) in enumerate(answers):
+            if target >= 0:
+                return index, target
+        return None
+
+    def _path(self, partition: int, state_id: int) -> list[LassoStep]:
+        """The steps from an initial state to the target, across partitions."""
+        states = []
+        while True:
+            state, parent = self.ray.get(self.actors[partition].step_back.remote(state_id))
+            states.append(state)
+            if parent == NO_PARENT:
+                break
+            partition, state_id = unlink(parent)
+        states.reverse()
+        steps = [LassoStep(None, states[0], NO_AUTOMATON)]
+        for previous, current in zip(states, states[1:]):
+            label = next(label for label, state in self.system.successors(previous)
+                         if state == current)
+            steps.append(LassoStep(label, current, NO_AUTOMATON))
+        return steps
+
+    def _result(self, verdict: str, path=None) -> tuple:
+        figures = self.ray.get([actor.figures.remote() for actor in self.actors])
+        stored = sum(f["states"] for f in figures)
+        memory = sum(f["bytes"] for f in figures)
+        stats = SearchStats(product_states=stored, model_states=stored,
+                            transitions=self.transitions, max_depth=self.depth,
+                            deadlocks=self.deadlocks,
+                            bytes_per_state=memory / stored if stored else 0.0, engine=ENGINE)
+        stats.seconds = self.budget.finish()
+        reason = self.budget.reason if verdict == UNKNOWN else None
+        result = SearchResult(verdict, reason, path or [], [], stats)
+        return result, self.watched, figures
+
+
+def reachable(ray, cluster, system: TransitionSystem, predicate: str, *,
+              watch: Optional[str] = None, max_states=None, max_seconds=None,
+              progress=None, storage=None, rebuild=None) -> tuple[SearchResult, bool]:
+    """The distributed search ``cluster`` asks for (partitioned, or a swarm): the result and
+    whether ``watch`` said True of some expanded state (a swarm watches nothing: False)."""
+    from ..budget import DEFAULT_MAX_STATES
+    budget = SearchBudget(DEFAULT_MAX_STATES if max_states is None else max_states,
+                          max_seconds, progress)
+    if cluster.swarm:
+        from .swarm import swarm_reachable
+        return swarm_reachable(ray, cluster.swarm, system, predicate, budget, storage,
+                               rebuild), False
+    result, watched, _ = partitioned_reachable(ray, cluster.partitions(ray), system, predicate,
+                                               watch=watch, budget=budget, rebuild=rebuild)
+    return result, watched
