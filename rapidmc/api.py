@@ -186,6 +186,10 @@ def prepare(program: Program, properties: Sequence[Property],
     """Translate the properties and set up the program's transition system."""
     properties = list(properties)
     check_unique(properties)
+    if options.cluster is not None and options.reductions.partial_order:
+        # its cycle proviso depends on the order states are expanded in, which a partitioned
+        # search does not keep: the workers search unreduced (a note says so)
+        options = replace(options, reductions=replace(options.reductions, partial_order=False))
     atoms = AtomCompiler(program)
     jobs = [_automaton(prop, atoms, options) for prop in properties]
     domains, assumed = free_input_domains(program, atoms, options.input_domains)
@@ -366,6 +370,10 @@ class _Searches:
             self.notes.append(_one_process_note(
                 "a distributed search does not report unreached code (RMC701) or vacuity: "
                 "its states are expanded in other processes"))
+        if ray is not None and model.program.task_entries:
+            self.notes.append(_one_process_note(
+                "partial-order reduction is off on a Ray cluster (its cycle proviso depends on "
+                "the order states are expanded in): the state counts are those of --no-por"))
         if ray is not None and model.jobs:
             self.notes.append(_one_process_note(
                 "LTL properties are checked in one process: the distributed search covers "
