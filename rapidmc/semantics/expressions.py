@@ -24,7 +24,7 @@ from . import values
 from .errors import RapidError, placeholder_reached
 from .machine import ABSENT, GLOBAL
 from .scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, Symbol
-from .types import (BOOL, DNUM, NUM, ORIENT, POS, RECORD, SEMI_VALUE, STRING, AnyType,
+from .types import (ATOMIC, BOOL, DNUM, NUM, ORIENT, POS, RECORD, SEMI_VALUE, STRING, AnyType,
                     ArrayType, RapidType, is_numeric, same_type)
 
 NOT_CONSTANT = object()
@@ -159,10 +159,44 @@ class ExpressionCompiler:
     def value(self, expr: ast.Expr, expected: Optional[AnyType] = None) -> Compiled:
         method = getattr(self, "_" + type(expr).__name__)
         compiled = method(expr, expected)
+        if self.routine is not None and self.linker.outside_data and \
+                isinstance(expr, (ast.NameRef, ast.Component, ast.Index)):
+            compiled = self._outside_read(expr, compiled)
         if expected is not None and compiled.type is not None:
             self.check_assignable(compiled.type, expected, expr.span)
             compiled = self.convert(compiled, expected)
         return compiled
+
+    def _outside_read(self, expr, compiled: Compiled) -> Compiled:
+        """A read of a value component of PERS data written from outside the loaded code
+        (``load.outside_data``): any value of its domain, chosen afresh by each read, as
+        the outside may write between any two (merged steps expand read by read)."""
+        if not isinstance(compiled.type, RapidType) or compiled.type.kind != ATOMIC:
+            return compiled              # a whole array or record: the stored value
+        path, indexed, node = [], False, expr
+        while isinstance(node, (ast.Component, ast.Index)):
+            if isinstance(node, ast.Component):
+                path.append(node.name.key)
+            else:
+                indexed = True
+            node = node.base
+        if not isinstance(node, ast.NameRef):
+            return compiled
+        symbol = self.scope.lookup(node.name.key)
+        if symbol is None or symbol.kind != GLOBAL_DATA:
+            return compiled
+        outside = self.linker.outside_data.get(symbol.slot)
+        domain = outside.domain(tuple(reversed(path))) if outside is not None else None
+        if domain is None:
+            return compiled
+        name = symbol.name + "".join("." + part.lower() for part in reversed(path)) + \
+            ("{*}" if indexed else "")
+        stored = compiled.fn
+
+        def chosen(m):
+            stored(m)                    # the stored read's own errors (an index out of range)
+            return m.choose(name, domain)
+        return Compiled(chosen, compiled.type)
 
     def condition(self, expr: ast.Expr) -> Compiled:
         compiled = self.value(expr)
