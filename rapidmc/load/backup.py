@@ -21,8 +21,8 @@ from pathlib import Path
 from typing import Optional
 
 from ..ast import Span
-from ..diagnostics import (FILE_NOT_FOUND, PROGRAM_FILE, TASKS_LOADED, Diagnostic, SourceCache,
-                           UserError, error)
+from ..diagnostics import (EXIT_OK, FILE_NOT_FOUND, NO_PROGRAM, PROGRAM_FILE, TASKS_LOADED,
+                           Diagnostic, SourceCache, UserError, error)
 from .config_file import instances
 from .encrypted import interface_module, is_encrypted, only_encrypted_note, skipped_note
 from .task_config import BackupTask, config_file, read_tasks
@@ -223,6 +223,8 @@ def resolve_program_files(args) -> ProgramFiles:
             elif len(loaded) > 1:
                 alone = chosen[0].name
         else:
+            if not any(_holds_program(t) for t in loaded):
+                raise _no_program(path, loaded)
             chosen, skipped = _runnable_tasks(path, loaded)
             notes.extend(skipped)
         becomes_main = main_task is None and not paths
@@ -270,6 +272,23 @@ def _runnable_tasks(path: Path, tasks: list[BackupTask]) -> tuple[list[BackupTas
                           severity="note")
                for t in tasks if t not in runnable]
     return runnable, notes + skipped
+
+
+def _holds_program(task: BackupTask) -> bool:
+    """Whether ``task`` has a program: a readable program module, or its entry routine."""
+    directory = _child(task.folder, "PROGMOD")
+    programs = [str(f) for f in directory.iterdir() if f.is_file() and
+                f.suffix.lower() in MODULE_SUFFIXES] if directory is not None else []
+    return any(not is_encrypted(f) for f in programs) or _has_entry(task)
+
+
+def _no_program(path: Path, tasks: list[BackupTask]) -> UserError:
+    """RMC736, exit 0: a backup of system modules only (a factory backup) runs nothing."""
+    return UserError([Diagnostic(
+        NO_PROGRAM, f"backup '{path}' holds no program: no task has a program module or its "
+        f"entry routine ({', '.join(f'{t.name}: {t.entry}' for t in tasks)}); nothing runs, "
+        "so there is nothing to check", _task_span(path, tasks[0]), severity="note")],
+        EXIT_OK)
 
 
 def _loaded_note(path: Path, tasks: list[BackupTask]) -> Diagnostic:

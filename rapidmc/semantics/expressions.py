@@ -440,13 +440,15 @@ class ExpressionCompiler:
     def _operands(self, expr: ast.Binary, hint) -> tuple[Compiled, Compiled]:
         """Both operands; an aggregate beside a pos (or another record) in ``+``, ``-``, ``=``
         or ``<>`` takes the other operand's type (``[10,10,30] + p.trans``, which controllers
-        load), as an aggregate assigned to data takes the data's."""
+        load), as an aggregate assigned to data takes the data's; so does one beside a pos or
+        an orient in ``*`` (the cross product ``[0,0,1] * v``, the quaternion product)."""
         aggregate_left = isinstance(expr.left, ast.Aggregate)
         if aggregate_left != isinstance(expr.right, ast.Aggregate) and \
-                expr.op in ("+", "-", "=", "<>"):
+                expr.op in ("+", "-", "=", "<>", "*"):
             other = self.value(expr.right if aggregate_left else expr.left, hint)
-            shaped = other.type if isinstance(other.type, RapidType) and \
-                other.type.kind == RECORD else hint
+            record = isinstance(other.type, RapidType) and other.type.kind == RECORD and \
+                (expr.op != "*" or other.type in (POS, ORIENT))
+            shaped = other.type if record else hint
             aggregate = self.value(expr.left if aggregate_left else expr.right, shaped)
             return (aggregate, other) if aggregate_left else (other, aggregate)
         return self.value(expr.left, hint), self.value(expr.right, hint)
