@@ -256,8 +256,7 @@ SPEED_ONLY = """MODULE M
   VAR num x := 0;
   PROC main()
     AliasIO "GI_CODE", gi_speed;
-    override := GInput(gi_speed) * 2 - 1;
-    VelSet override, 5000;
+    VelSet GInput(gi_speed) * 2 - 1, 5000;
     SpeedRefresh gi_speed;
     x := 1;
   ENDPROC
@@ -272,9 +271,9 @@ def test_an_input_that_reaches_only_routines_with_no_effect_takes_one_value(tmp_
 
 
 @pytest.mark.parametrize("use, found", [
-    ("    x := 100 / override;\n", "operand of '*'"),          # a divisor: can fail
-    ("    IF override > 50 x := 2;\n", "operand of '*'"),       # a condition tells values apart
-    ("    show override;\n", "operand of '*'"),                 # the program's own routine
+    ("    VelSet 100 / gi_speed, 5000;\n", "operand of '/'"),  # a divisor: can fail
+    ("    override := gi_speed;\n", "is assigned"),             # an atom may read the data
+    ("    show gi_speed * 2;\n", "operand of '*'"),             # the program's own routine
 ])
 def test_an_input_whose_value_reaches_a_condition_or_divisor_has_no_default(tmp_path, use, found):
     text = SPEED_ONLY.replace("    x := 1;\n", use) + "\n"

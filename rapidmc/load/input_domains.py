@@ -21,8 +21,8 @@ Two cases allow a default that loses no behaviour:
 
 * **Reaching nothing.** When every read's value goes, through ``+ - *``
   only, into an IN argument of a predefined routine modelled with no effect
-  (a PLC's speed override given to ``VelSet`` or ``SpeedRefresh``), or into a
-  VAR num whose reads do so in turn, no behaviour depends on it: one value.
+  (a PLC's speed override given to ``VelSet`` or ``SpeedRefresh``), no
+  behaviour depends on it: one value.
 
 Any other use (assigned, passed to a routine, arithmetic, an index, read
 by a property's atom, an ``AliasIO`` with a computed name) leaves the input
@@ -41,7 +41,7 @@ from ..semantics.configured_signals import COMPARISONS
 from ..semantics.program import Program, Signal
 from ..semantics.library import lookup_procedure
 from ..semantics.library.registry import NO_EFFECT, matched_parameters
-from ..semantics.scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, SIGNAL
+from ..semantics.scope import CONSTANT, SIGNAL
 from ..semantics.values import to_num
 from ..diagnostics.quoting import quoted
 
@@ -227,12 +227,12 @@ class ReadCollector:
         else:
             self.numbers.setdefault(index, set()).update(found)
 
-    def inert(self, node, parents: tuple, scope, depth: int = 0) -> bool:
+    def inert(self, node, parents: tuple, scope) -> bool:
         """Whether the value read at ``node`` reaches nothing that can tell values apart:
         through ``+ - *`` and unary minus only into an IN argument of a predefined routine
-        modelled with no effect (``VelSet``, ``SpeedRefresh`` ...), or into a routine-free
-        VAR num whose every read is inert in turn (two assignments deep at most).  A
-        condition, index, divisor, atom or operation that can fail is never inert."""
+        modelled with no effect (``VelSet``, ``SpeedRefresh`` ...).  Assigned to data it is
+        not inert: a property's atom may read the data.  A condition, index, divisor, atom
+        or operation that can fail is never inert."""
         parents = list(parents)
         if len(parents) >= 2 and isinstance(parents[-1], ast.Argument) and \
                 isinstance(parents[-2], ast.FunctionCall) and parents[-2].name.key in READERS:
@@ -245,9 +245,6 @@ class ReadCollector:
         if isinstance(parent, ast.Argument) and len(parents) >= 2 and \
                 isinstance(parents[-2], ast.ProcedureCall):
             return self._no_effect_argument(parents[-2], parent, scope)
-        if isinstance(parent, ast.Assignment) and parent.value is node and depth < 2 and \
-                isinstance(parent.target, ast.NameRef):
-            return self._inert_variable(parent.target, scope, depth + 1)
         return False
 
     @staticmethod
@@ -262,28 +259,6 @@ class ReadCollector:
             if arg is argument:
                 return parameter is not None and parameter.mode.upper() == "IN"
         return False
-
-    def _inert_variable(self, target: ast.NameRef, scope, depth: int) -> bool:
-        """Every read of the variable ``target`` names is inert (the same symbol)."""
-        symbol = scope.lookup(target.name.key)
-        if symbol is None or symbol.kind not in (GLOBAL_DATA, LOCAL_DATA) or \
-                getattr(symbol.type, "key", "") != "NUM" or getattr(symbol, "by_reference", False):
-            return False
-        for routine in self.program.routines:
-            if routine.ast is None:
-                continue
-            for node, parents in ast.walk(routine.ast):
-                if not isinstance(node, ast.NameRef) or node.name.key != target.name.key:
-                    continue
-                if routine.scope.lookup(node.name.key) is not symbol and \
-                        routine.scope.lookup(node.name.key) != symbol:
-                    continue
-                if parents and isinstance(parents[-1], ast.Assignment) and \
-                        parents[-1].target is node:
-                    continue                          # written, not read
-                if not self.inert(node, parents, routine.scope, depth):
-                    return False
-        return True
 
 
 def compared_numbers(ref: ast.NameRef, parents: tuple, scope) -> Union[set, str]:
