@@ -49,8 +49,10 @@ from .findings.assumptions import assumptions, for_verdict
 from .findings.explored import ExploredFacts
 from .findings.fixed_readings import fixed_readings
 from .findings.tried_inputs import sampled_inputs
-from .load.backup import link_options, load_tasks, resolve_program_files
+from .load.backup import (link_options, load_tasks, resolve_program_files,
+                          with_encrypted_interface)
 from .load.message_domains import ANSWERS, FILE, SOCKET, message_domains, site_key
+from .load.outside_data import observed_names, outside_data as find_outside_data
 from .load.shared_data import pers_warnings
 from .ltl import read_hoa, to_buchi
 from .ltl.syntax import Not
@@ -106,20 +108,27 @@ class CheckOptions:
 def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = "main",
                  task: Optional[str] = None, all_tasks: bool = False,
                  add_tasks: Sequence[str] = (), eio: Optional[str] = None,
-                 flows: bool = False) -> Program:
+                 flows: bool = False, outside_data: bool = True,
+                 properties: Sequence[Property] = ()) -> Program:
     """Parse and link a program: module files or a controller backup folder, as ``check`` takes.
 
     ``env``: environment model modules; ``task``/``all_tasks``: which tasks of a
     backup; ``add_tasks``: further tasks, each ``"a.mod,b.mod"``; ``eio``: an
     I/O configuration whose signals the program uses by name; ``flows``: keep taint
-    marks in the state, for ``flow_property`` (findings.lint.marks).
+    marks in the state, for ``flow_property`` (findings.lint.marks); ``outside_data``:
+    each read of PERS data no loaded code writes takes any value of its domain
+    (load.outside_data), else it keeps its initial value (``--fixed-outside-data``), as
+    it does when one of ``properties`` may name it (atoms read stored values).
     """
     files_given = list(files)
     files = resolve_program_files(SimpleNamespace(files=list(files), task=task, eio=eio,
                                                   all_tasks=all_tasks, add_task=list(add_tasks)))
     environment = _parse_files(list(env)) if env else None
-    parsed = _parse_files(files.modules)
+    parsed = with_encrypted_interface(_parse_files(files.modules), files, None)
     options = link_options(files)
+    if outside_data:
+        options["outside_data"] = find_outside_data
+        options["observed_names"] = observed_names(properties)
     if flows:
         from .findings.lint.marks import instrument as instrument_flows  # (only for --flows)
         marks = instrument_flows(parsed)
@@ -132,7 +141,8 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
         files=[os.path.abspath(path) for path in files_given], env=[os.path.abspath(path) for path in env],
         entry=entry, task=task, all_tasks=all_tasks, add_tasks=[
             ",".join(os.path.abspath(path) for path in group.split(",")) for group in add_tasks],
-        eio=os.path.abspath(eio) if eio is not None else None, flows=flows)
+        eio=os.path.abspath(eio) if eio is not None else None, flows=flows,
+        outside_data=outside_data, properties=tuple(properties))
     return program
 
 

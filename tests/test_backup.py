@@ -113,3 +113,18 @@ def test_eio_option_with_plain_module_files(tmp_path, capsys):
     code = main(["run", str(tmp_path / "user.sys"), str(tmp_path / "main.mod"),
                  "--eio", str(tmp_path / "EIO.cfg"), "--io", "partPresent=1"])
     assert code == 0 and capsys.readouterr().out == "picked\n"
+
+
+def test_a_backup_without_a_program_is_a_note_and_exit_0(tmp_path, capsys):
+    """Issue 28: a factory backup (system modules only) runs nothing: RMC736, exit 0."""
+    backup = tmp_path / "factory"
+    (backup / "RAPID" / "TASK1" / "SYSMOD").mkdir(parents=True)
+    (backup / "RAPID" / "TASK1" / "SYSMOD" / "user.sys").write_text(USER_SYS)
+    assert main(["check", str(backup)]) == 0
+    err = capsys.readouterr().err
+    assert "holds no program" in err and "[RMC736]" in err
+    (backup / "RAPID" / "TASK1" / "PROGMOD").mkdir()
+    (backup / "RAPID" / "TASK1" / "PROGMOD" / "Lib.mod").write_text(
+        "MODULE Lib\n  PROC helper()\n  ENDPROC\nENDMODULE\n")
+    assert main(["check", str(backup)]) == 2          # a program module without main: an error
+    assert "[RMC736]" not in capsys.readouterr().err

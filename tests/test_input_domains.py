@@ -246,3 +246,36 @@ def test_a_read_used_as_an_index_names_the_first_such_read(tmp_path):
         .replace("  VAR num x := 0;\n", "  VAR num x := 0;\n  VAR num table{3} := [1, 2, 3];\n")
     note = _refusal(tmp_path, text)
     assert "prog.mod:8:23 is used as an array index" in note
+
+
+# --- issue 28: an input whose value reaches nothing needs one value ----------------------
+
+SPEED_ONLY = """MODULE M
+  VAR signalgi gi_speed;
+  VAR num override := 100;
+  VAR num x := 0;
+  PROC main()
+    AliasIO "GI_CODE", gi_speed;
+    VelSet GInput(gi_speed) * 2 - 1, 5000;
+    SpeedRefresh gi_speed;
+    x := 1;
+  ENDPROC
+ENDMODULE
+"""
+
+
+def test_an_input_that_reaches_only_routines_with_no_effect_takes_one_value(tmp_path):
+    model = api.prepare(_load(tmp_path, SPEED_ONLY), [])
+    [assumed] = model.assumed
+    assert assumed.values == (0.0,) and "reaches no condition" in assumed.reason
+
+
+@pytest.mark.parametrize("use, found", [
+    ("    VelSet 100 / gi_speed, 5000;\n", "operand of '/'"),  # a divisor: can fail
+    ("    override := gi_speed;\n", "is assigned"),             # an atom may read the data
+    ("    show gi_speed * 2;\n", "operand of '*'"),             # the program's own routine
+])
+def test_an_input_whose_value_reaches_a_condition_or_divisor_has_no_default(tmp_path, use, found):
+    text = SPEED_ONLY.replace("    x := 1;\n", use) + "\n"
+    text = text.replace("ENDMODULE", "  PROC show(num n)\n  ENDPROC\nENDMODULE")
+    assert found in _refusal(tmp_path, text)

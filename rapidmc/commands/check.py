@@ -100,6 +100,10 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
                         help="use this Büchi automaton (HOA) for the NEGATION of property NAME")
     parser.add_argument("--backend", choices=BACKENDS, default=None,
                         help="LTL translator (default: spot when installed, else builtin)")
+    parser.add_argument("--fixed-outside-data", action="store_true",
+                        help="PERS data no loaded code writes keeps its initial value (default: "
+                             "each read takes any value of its domain, as another task, an "
+                             "encrypted module or a PC may write it)")
     parser.add_argument("--no-fairness", action="store_true",
                         help="with several tasks: also search runs in which a task that could "
                              "go on never runs again (default: weak fairness between tasks; "
@@ -165,7 +169,9 @@ def prepare_model(args: argparse.Namespace) -> api.Model:
     flows = getattr(args, "flows", False)
     program = api.load_program(args.files, args.env, entry=args.entry, task=args.task,
                                all_tasks=args.all_tasks, add_tasks=args.add_task, eio=args.eio,
-                               flows=flows)
+                               flows=flows,
+                               outside_data=not getattr(args, "fixed_outside_data", False),
+                               properties=properties)
     if flows:
         properties.append(api.flow_property(program))
     return api.prepare(program, properties, options)

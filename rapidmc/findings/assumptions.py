@@ -9,10 +9,13 @@ loaded module says for sure:
 * **fixed controller readings**: the predefined routines that read the
   controller (``OpMode``, ``ClkRead``, ``ReadCfgData`` ...) answer fixed or
   sampled values when checking (RMC702, ``fixed_readings``);
-* **PERS data no loaded task writes**: a persistent of a value type that a
-  loaded task reads and no loaded task (nor the environment) can write keeps
-  its initial value here, while on a controller another task or a PC may write
-  it (``load.shared_data.data_uses`` says what each task reads and writes).
+* **PERS data no loaded task writes**: a persistent (of any type) that a
+  loaded task reads and no loaded task (nor the environment) can write is
+  written, if at all, outside the loaded code (another task, an encrypted
+  module, a PC): the reads of its value components take the values of a finite
+  domain (``load.outside_data``), or it keeps its initial value with
+  ``--fixed-outside-data``; the verdict names it and its values either way
+  (``load.shared_data.data_uses`` says what each task reads and writes).
 
 ``assumptions(program)`` lists them once; ``touched(assumption list, result)``
 keeps those a counterexample executes a statement of (the names each executed
@@ -31,16 +34,12 @@ from ..check.result import SearchResult
 from ..diagnostics import SourceCache
 from ..load.stubs.module_text import STUB_MARKER
 from ..model.reduction.merging import executed_spans
-from ..load.shared_data import data_uses
+from ..load.shared_data import data_uses, writes_data_by_name
 from ..check.result import VIOLATED
 from ..semantics.program import ENVIRONMENT_NAMESPACE, PROGRAM_NAMESPACE, Program
-from ..semantics.types import ArrayType
 from .fixed_readings import fixed_readings
 
 STUB, READING, OTHER_WRITER = "stub", "fixed reading", "other writer"
-VALUE_TYPES = frozenset({"NUM", "DNUM", "BOOL", "STRING"})
-# routines that write data named by a string: then any persistent may be written
-DATA_BY_NAME = frozenset({"SETDATAVAL", "SETALLDATAVAL"})
 _IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 _STRING_OR_COMMENT = re.compile(r'"(?:[^"]|"")*"|!.*$')
 _HEAD_END = re.compile(r";|\b(?:THEN|DO|CASE|DEFAULT)\b", re.IGNORECASE)
@@ -147,8 +146,10 @@ def _stubs(program: Program, stub_files: frozenset) -> Iterator[Assumption]:
             does = "returns a neutral value" if routine.kind == "FUNC" else "is empty"
             yield Assumption(STUB, routine.name,
                              f"stub {routine.name} {does} ({_where(routine.span)})")
-    for data in program.globals:
-        if _file(data.span) in stub_files and data.namespace == PROGRAM_NAMESPACE:
+    outside = getattr(program, "outside_data", None) or {}
+    for data in program.globals:          # (an encrypted module's PERS: written outside)
+        if _file(data.span) in stub_files and data.namespace == PROGRAM_NAMESPACE and \
+                data.slot not in outside:
             yield Assumption(STUB, data.name,
                              f"stub {data.name} keeps its neutral value ({_where(data.span)})")
 
@@ -172,32 +173,29 @@ def _reading(warning) -> Assumption:
 
 
 def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[Assumption]:
-    """PERS data of a value type that some loaded task reads and none writes (``data_uses``,
-    shared with the partial-order reduction and RMC731)."""
-    if _writes_by_name(program):
+    """PERS data that some loaded task reads and none writes (``data_uses``, shared with
+    the partial-order reduction and RMC731): the values its reads take when it is written
+    from outside (``load.outside_data``), else that it keeps its initial value."""
+    if writes_data_by_name(program.routines):
         return
+    outside = getattr(program, "outside_data", None) or {}
     read, written = set(), set()
     for namespace in sorted({routine.namespace for routine in program.routines}):
         task_read, task_written = data_uses(program, namespace)
         read |= task_read
         written |= task_written
     for data in program.globals:
-        if data.storage != "PERS" or _file(data.span) in (None, *stub_files) or \
+        if data.storage != "PERS" or _file(data.span) is None or \
+                (_file(data.span) in stub_files and data.slot not in outside) or \
                 data.namespace == ENVIRONMENT_NAMESPACE or data.slot not in read or \
-                data.slot in written or not _value_typed(data.type):
+                data.slot in written:
             continue
-        yield Assumption(OTHER_WRITER, data.name,
-                         f"PERS {data.name} keeps its initial value: no loaded task writes it "
-                         f"(another task or a PC may; {_where(data.span)})")
-
-
-def _value_typed(rapid_type) -> bool:
-    element = rapid_type.element if isinstance(rapid_type, ArrayType) else rapid_type
-    return getattr(element, "key", "") in VALUE_TYPES
-
-
-def _writes_by_name(program: Program) -> bool:
-    """Whether the code writes data named by a string (then any PERS may be written)."""
-    return any(isinstance(node, ast.ProcedureCall) and node.name.key in DATA_BY_NAME
-               for routine in program.routines if routine.ast is not None
-               for node, _ in ast.walk(routine.ast))
+        chosen = outside.get(data.slot)
+        if chosen is not None:
+            yield Assumption(OTHER_WRITER, data.name,
+                             f"PERS {data.name} is written outside the loaded code; its reads "
+                             f"take {chosen.describe()} ({_where(data.span)})")
+        else:
+            yield Assumption(OTHER_WRITER, data.name,
+                             f"PERS {data.name} keeps its initial value: no loaded task writes "
+                             f"it (another task or a PC may; {_where(data.span)})")

@@ -21,9 +21,10 @@ from pathlib import Path
 from typing import Optional
 
 from ..ast import Span
-from ..diagnostics import (FILE_NOT_FOUND, PROGRAM_FILE, TASKS_LOADED, Diagnostic, SourceCache,
-                           UserError, error)
+from ..diagnostics import (EXIT_OK, FILE_NOT_FOUND, NO_PROGRAM, PROGRAM_FILE, TASKS_LOADED,
+                           Diagnostic, SourceCache, UserError, error)
 from .config_file import instances
+from .encrypted import interface_module, is_encrypted, only_encrypted_note, skipped_note
 from .task_config import BackupTask, config_file, read_tasks
 from ..semantics.library.configuration import Configuration
 from .configuration import read_configuration
@@ -60,15 +61,33 @@ def backup_tasks(path: Path) -> list[BackupTask]:
 
 
 def task_modules(path: Path, task: BackupTask) -> list[str]:
-    """The module files of ``task``: its SYSMOD, then its PROGMOD modules."""
+    """The module files of ``task`` rapidmc can read: its SYSMOD, then its PROGMOD modules,
+    the encrypted ones left out (``task_encrypted``)."""
+    every = _module_files(task)
+    modules = [m for m in every if not is_encrypted(m)]
+    if not modules:
+        more = " but encrypted ones" if every else ""
+        raise error(PROGRAM_FILE, f"task {task.name} of backup '{path}' holds no module{more}")
+    return modules
+
+
+def task_modules_readable(task: BackupTask) -> bool:
+    """Whether ``task`` holds a module that is not encrypted."""
+    return any(not is_encrypted(m) for m in _module_files(task))
+
+
+def task_encrypted(task: BackupTask) -> list[str]:
+    """The encrypted module files of ``task`` (load.encrypted)."""
+    return [m for m in _module_files(task) if is_encrypted(m)]
+
+
+def _module_files(task: BackupTask) -> list[str]:
     modules = []
     for folder in ("SYSMOD", "PROGMOD"):
         directory = _child(task.folder, folder)
         if directory is not None:
             modules.extend(sorted(str(f) for f in directory.iterdir()
                                   if f.is_file() and f.suffix.lower() in MODULE_SUFFIXES))
-    if not modules:
-        raise error(PROGRAM_FILE, f"task {task.name} of backup '{path}' holds no module")
     return modules
 
 
@@ -177,6 +196,8 @@ class ProgramFiles:
     notes: tuple = ()                   # Diagnostic notes: which tasks were loaded
     alone: Optional[str] = None         # a backup's task checked without its other tasks
     configuration: Optional[Configuration] = None   # the backup's SYSPAR files
+    # task name (None: the main task) -> its encrypted module files (load.encrypted)
+    encrypted: Optional[dict] = None
 
 
 def resolve_program_files(args) -> ProgramFiles:
@@ -187,6 +208,7 @@ def resolve_program_files(args) -> ProgramFiles:
     tasks: list[tuple[str, list[str], str]] = []
     eio_paths = [eio] if eio else []
     main_task, main_entry, notes, alone = None, "main", [], None
+    encrypted: dict = {}
     configuration = None
     for name in args.files:
         path = Path(name)
@@ -201,9 +223,17 @@ def resolve_program_files(args) -> ProgramFiles:
             elif len(loaded) > 1:
                 alone = chosen[0].name
         else:
+            if not any(_holds_program(t) for t in loaded):
+                raise _no_program(path, loaded)
             chosen, skipped = _runnable_tasks(path, loaded)
             notes.extend(skipped)
-        if main_task is None and not paths:
+        becomes_main = main_task is None and not paths
+        for number, t in enumerate(chosen):
+            sealed = task_encrypted(t)
+            if sealed:
+                encrypted[None if becomes_main and number == 0 else t.name] = sealed
+                notes.extend(skipped_note(f, t.name) for f in sealed)
+        if becomes_main:
             main_task, main_entry = chosen[0].name, chosen[0].entry
             paths.extend(task_modules(path, chosen[0]))
             chosen = chosen[1:]
@@ -221,7 +251,7 @@ def resolve_program_files(args) -> ProgramFiles:
                       "main"))
     signals = [signal for eio_path in eio_paths for signal in read_eio(eio_path)]
     return ProgramFiles(paths, tasks, signals, main_task, main_entry, tuple(notes), alone,
-                        configuration)
+                        configuration, encrypted)
 
 
 def _runnable_tasks(path: Path, tasks: list[BackupTask]) -> tuple[list[BackupTask], list]:
@@ -229,6 +259,9 @@ def _runnable_tasks(path: Path, tasks: list[BackupTask]) -> tuple[list[BackupTas
     routine), and a note per task left out."""
     if len(tasks) == 1:
         return tasks, []
+    sealed = [t for t in tasks if _module_files(t) and not task_modules_readable(t)]
+    tasks = [t for t in tasks if t not in sealed]
+    notes = [only_encrypted_note(str(t.folder), t.name) for t in sealed]
     runnable = [t for t in tasks if _has_entry(t)]
     if not runnable:
         raise error(PROGRAM_FILE, f"no task of backup '{path}' has its entry routine "
@@ -238,7 +271,24 @@ def _runnable_tasks(path: Path, tasks: list[BackupTask]) -> tuple[list[BackupTas
                           f"declares its entry routine {t.entry}", _task_span(path, t),
                           severity="note")
                for t in tasks if t not in runnable]
-    return runnable, skipped
+    return runnable, notes + skipped
+
+
+def _holds_program(task: BackupTask) -> bool:
+    """Whether ``task`` has a program: a readable program module, or its entry routine."""
+    directory = _child(task.folder, "PROGMOD")
+    programs = [str(f) for f in directory.iterdir() if f.is_file() and
+                f.suffix.lower() in MODULE_SUFFIXES] if directory is not None else []
+    return any(not is_encrypted(f) for f in programs) or _has_entry(task)
+
+
+def _no_program(path: Path, tasks: list[BackupTask]) -> UserError:
+    """RMC736, exit 0: a backup of system modules only (a factory backup) runs nothing."""
+    return UserError([Diagnostic(
+        NO_PROGRAM, f"backup '{path}' holds no program: no task has a program module or its "
+        f"entry routine ({', '.join(f'{t.name}: {t.entry}' for t in tasks)}); nothing runs, "
+        "so there is nothing to check", _task_span(path, tasks[0]), severity="note")],
+        EXIT_OK)
 
 
 def _loaded_note(path: Path, tasks: list[BackupTask]) -> Diagnostic:
@@ -271,7 +321,19 @@ def load_tasks(files: ProgramFiles) -> list:
     """The further tasks, parsed, for ``semantics.link.build``."""
     from ..semantics.link import Task
     from ..syntax import load_program
-    return [Task(name, load_program(paths), entry) for name, paths, entry in files.tasks]
+    return [Task(name, with_encrypted_interface(load_program(paths), files, name), entry)
+            for name, paths, entry in files.tasks]
+
+
+def with_encrypted_interface(parsed, files: ProgramFiles, task: Optional[str]):
+    """``parsed`` (the modules of ``task``, None: the main task) with the interface of the
+    task's encrypted modules taken from their uses (``load.encrypted``)."""
+    from .. import ast
+    sealed = (files.encrypted or {}).get(task)
+    if not sealed:
+        return parsed
+    signals = frozenset(signal.name.upper() for signal in files.signals)
+    return ast.Program(tuple(parsed.modules) + interface_module(parsed.modules, sealed, signals))
 
 
 def every_task(path: Path) -> list[tuple[str, list[str]]]:

@@ -19,6 +19,11 @@ Two cases allow a default that loses no behaviour:
   one beyond each end.  ``GInput(s)`` / ``AInput(s)`` count as reads of
   ``s``; a signal variable reads the signals ``AliasIO`` connects it to.
 
+* **Reaching nothing.** When every read's value goes, through ``+ - *``
+  only, into an IN argument of a predefined routine modelled with no effect
+  (a PLC's speed override given to ``VelSet`` or ``SpeedRefresh``), no
+  behaviour depends on it: one value.
+
 Any other use (assigned, passed to a routine, arithmetic, an index, read
 by a property's atom, an ``AliasIO`` with a computed name) leaves the input
 without a default; the RMC502 error then names the first such use.  An
@@ -34,6 +39,8 @@ from .. import ast
 from ..diagnostics import DOMAIN_ASSUMED, Diagnostic
 from ..semantics.configured_signals import COMPARISONS
 from ..semantics.program import Program, Signal
+from ..semantics.library import lookup_procedure
+from ..semantics.library.registry import NO_EFFECT, matched_parameters
 from ..semantics.scope import CONSTANT, SIGNAL
 from ..semantics.values import to_num
 from ..diagnostics.quoting import quoted
@@ -42,6 +49,7 @@ FULL_RANGE_BITS = 5           # a group input of at most 5 bits: every value (at
 MAX_GROUP_BITS = 32           # the widest group input a controller configures
 READERS = {"GINPUT": "GI", "AINPUT": "AI"}   # functions whose value is their signal's
 WAITS = {"WAITGI", "WAITAI"}  # wait until the signal compares with a value as asked
+INERT_OPS = ("+", "-", "*")   # operations that cannot fail on a num read (no divisor)
 
 
 @dataclass(frozen=True)
@@ -111,6 +119,9 @@ def _default(signal: Signal, width: Optional[int], reads: "ReadCollector",
         return Refused(f"{other}; a default needs every read to be compared with number literals "
                        "(= <> < <= > >=, TEST ... CASE, WaitGI/WaitAI)")
     numbers = sorted(reads.numbers.get(signal.index, set()))
+    if not numbers and signal.index in reads.inert_uses:
+        return Assumed(signal, (0.0,), "its value reaches no condition, index, divisor, atom or "
+                       "operation that can fail (only routines with no effect here): one value")
     if signal.kind == "GI":
         top = 2 ** (width or MAX_GROUP_BITS) - 1
         return Assumed(signal, group_points(numbers, top),
@@ -163,6 +174,7 @@ class ReadCollector:
         self.other_use: dict[int, str] = {}       # signal index -> its first other use
         self.aliases: dict[str, set] = {}         # signal variable key -> signal indices
         self.computed_alias: Optional[ast.Span] = None
+        self.inert_uses: set[int] = set()         # signals with a read that reaches nothing
 
     def collect(self) -> None:
         routines = [r for r in self.program.routines if r.ast is not None]
@@ -208,9 +220,45 @@ class ReadCollector:
             return
         found = compared_numbers(ref, parents, scope)
         if isinstance(found, str):
+            if self.inert(ref, parents, scope):
+                self.inert_uses.add(index)
+                return
             self.other_use[index] = f"'{ref.name.text}' at {_where(ref.span)} is {found}"
         else:
             self.numbers.setdefault(index, set()).update(found)
+
+    def inert(self, node, parents: tuple, scope) -> bool:
+        """Whether the value read at ``node`` reaches nothing that can tell values apart:
+        through ``+ - *`` and unary minus only into an IN argument of a predefined routine
+        modelled with no effect (``VelSet``, ``SpeedRefresh`` ...).  Assigned to data it is
+        not inert: a property's atom may read the data.  A condition, index, divisor, atom
+        or operation that can fail is never inert."""
+        parents = list(parents)
+        if len(parents) >= 2 and isinstance(parents[-1], ast.Argument) and \
+                isinstance(parents[-2], ast.FunctionCall) and parents[-2].name.key in READERS:
+            node = parents[-2]
+            parents = parents[:-2]
+        while parents and (isinstance(parents[-1], ast.Binary) and parents[-1].op in INERT_OPS
+                           or isinstance(parents[-1], ast.Unary) and parents[-1].op == "-"):
+            node = parents.pop()
+        parent = parents[-1] if parents else None
+        if isinstance(parent, ast.Argument) and len(parents) >= 2 and \
+                isinstance(parents[-2], ast.ProcedureCall):
+            return self._no_effect_argument(parents[-2], parent, scope)
+        return False
+
+    @staticmethod
+    def _no_effect_argument(call: ast.ProcedureCall, argument: ast.Argument, scope) -> bool:
+        symbol = scope.lookup(call.name.key)
+        if symbol is not None:                       # the program's own routine
+            return False
+        entry = lookup_procedure(call.name.key)
+        if entry is None or entry.modelled != NO_EFFECT:
+            return False
+        for arg, parameter in matched_parameters(call.args, entry.signature.parameters):
+            if arg is argument:
+                return parameter is not None and parameter.mode.upper() == "IN"
+        return False
 
 
 def compared_numbers(ref: ast.NameRef, parents: tuple, scope) -> Union[set, str]:

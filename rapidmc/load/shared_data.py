@@ -21,6 +21,9 @@ from ..semantics.library.registry import matched_parameters
 from ..semantics.scope import GLOBAL_DATA, ROUTINE
 from ..semantics.values import format_value
 
+# routines that write data named by a string: then any persistent may be written
+DATA_BY_NAME = frozenset({"SETDATAVAL", "SETALLDATAVAL"})
+
 
 def pers_warnings(program, files) -> tuple:
     """RMC731 per shared PERS data object the task checked alone reads and never writes
@@ -33,10 +36,14 @@ def pers_warnings(program, files) -> tuple:
         if data.namespace != PROGRAM_NAMESPACE or data.storage != "PERS" or data.task_local \
                 or data.slot not in read or data.slot in written:
             continue
+        chosen = (getattr(program, "outside_data", None) or {}).get(data.slot)
+        reading = f"its reads take {chosen.describe()}, as data written outside the loaded " \
+            "code" if chosen is not None else \
+            f"the check assumes it keeps its initial value {_shown(data.initial)}"
         found.append(Diagnostic(
             PERS_UNWRITTEN, f"PERS {data.name} is read but never written by task {files.alone}, "
-            "checked alone: another task or a PC may write it; the check assumes it keeps its "
-            f"initial value {_shown(data.initial)}", data.span, severity="warning",
+            f"checked alone: another task or a PC may write it; {reading}", data.span,
+            severity="warning",
             notes=("check the backup's tasks together (without --task) to follow the "
                    "writes of the other tasks",)))
     return tuple(found)
@@ -66,6 +73,14 @@ def data_uses(program, namespace: int = PROGRAM_NAMESPACE) -> tuple[set, set]:
     read.discard(None)
     written.discard(None)
     return read, written
+
+
+def writes_data_by_name(routines) -> bool:
+    """Whether any of ``routines`` writes data named by a string (``SetDataVal``,
+    ``SetAllDataVal``): then any persistent may be written."""
+    return any(isinstance(node, ast.ProcedureCall) and node.name.key in DATA_BY_NAME
+               for routine in routines if routine.ast is not None
+               for node, _ in ast.walk(routine.ast))
 
 
 def _parameter_modes(program, lookup, call) -> list:

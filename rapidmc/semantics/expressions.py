@@ -24,7 +24,7 @@ from . import values
 from .errors import RapidError, placeholder_reached
 from .machine import ABSENT, GLOBAL
 from .scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, Symbol
-from .types import (BOOL, DNUM, NUM, ORIENT, POS, RECORD, SEMI_VALUE, STRING, AnyType,
+from .types import (ATOMIC, BOOL, DNUM, NUM, ORIENT, POS, RECORD, SEMI_VALUE, STRING, AnyType,
                     ArrayType, RapidType, is_numeric, same_type)
 
 NOT_CONSTANT = object()
@@ -159,10 +159,44 @@ class ExpressionCompiler:
     def value(self, expr: ast.Expr, expected: Optional[AnyType] = None) -> Compiled:
         method = getattr(self, "_" + type(expr).__name__)
         compiled = method(expr, expected)
+        if self.routine is not None and self.linker.outside_data and \
+                isinstance(expr, (ast.NameRef, ast.Component, ast.Index)):
+            compiled = self._outside_read(expr, compiled)
         if expected is not None and compiled.type is not None:
             self.check_assignable(compiled.type, expected, expr.span)
             compiled = self.convert(compiled, expected)
         return compiled
+
+    def _outside_read(self, expr, compiled: Compiled) -> Compiled:
+        """A read of a value component of PERS data written from outside the loaded code
+        (``load.outside_data``): any value of its domain, chosen afresh by each read, as
+        the outside may write between any two (merged steps expand read by read)."""
+        if not isinstance(compiled.type, RapidType) or compiled.type.kind != ATOMIC:
+            return compiled              # a whole array or record: the stored value
+        path, indexed, node = [], False, expr
+        while isinstance(node, (ast.Component, ast.Index)):
+            if isinstance(node, ast.Component):
+                path.append(node.name.key)
+            else:
+                indexed = True
+            node = node.base
+        if not isinstance(node, ast.NameRef):
+            return compiled
+        symbol = self.scope.lookup(node.name.key)
+        if symbol is None or symbol.kind != GLOBAL_DATA:
+            return compiled
+        outside = self.linker.outside_data.get(symbol.slot)
+        domain = outside.domain(tuple(reversed(path))) if outside is not None else None
+        if domain is None:
+            return compiled
+        name = symbol.name + "".join("." + part.lower() for part in reversed(path)) + \
+            ("{*}" if indexed else "")
+        stored = compiled.fn
+
+        def chosen(m):
+            stored(m)                    # the stored read's own errors (an index out of range)
+            return m.choose(name, domain)
+        return Compiled(chosen, compiled.type)
 
     def condition(self, expr: ast.Expr) -> Compiled:
         compiled = self.value(expr)
@@ -406,13 +440,15 @@ class ExpressionCompiler:
     def _operands(self, expr: ast.Binary, hint) -> tuple[Compiled, Compiled]:
         """Both operands; an aggregate beside a pos (or another record) in ``+``, ``-``, ``=``
         or ``<>`` takes the other operand's type (``[10,10,30] + p.trans``, which controllers
-        load), as an aggregate assigned to data takes the data's."""
+        load), as an aggregate assigned to data takes the data's; so does one beside a pos or
+        an orient in ``*`` (the cross product ``[0,0,1] * v``, the quaternion product)."""
         aggregate_left = isinstance(expr.left, ast.Aggregate)
         if aggregate_left != isinstance(expr.right, ast.Aggregate) and \
-                expr.op in ("+", "-", "=", "<>"):
+                expr.op in ("+", "-", "=", "<>", "*"):
             other = self.value(expr.right if aggregate_left else expr.left, hint)
-            shaped = other.type if isinstance(other.type, RapidType) and \
-                other.type.kind == RECORD else hint
+            record = isinstance(other.type, RapidType) and other.type.kind == RECORD and \
+                (expr.op != "*" or other.type in (POS, ORIENT))
+            shaped = other.type if record else hint
             aggregate = self.value(expr.left if aggregate_left else expr.right, shaped)
             return (aggregate, other) if aggregate_left else (other, aggregate)
         return self.value(expr.left, hint), self.value(expr.right, hint)

@@ -53,6 +53,7 @@ class Linker:
         self.calls = PredefinedCalls(self)
         self.entry_key = "MAIN"
         self.errors = ErrorCollector()
+        self.outside_data: dict = {}     # slot -> load.outside_data.OutsideData
         self.failed_names: set[str] = set()     # declarations that failed: uses stay quiet
         self.booked_errors = 0                  # BookErrNo call sites numbered so far
         self._predefined_types()
@@ -245,6 +246,9 @@ class Linker:
                                   if namespace != P.ENVIRONMENT_NAMESPACE for m in modules])
         for namespace, modules in groups:
             self._prepare_routines(namespace)
+        # PERS written from outside the loaded code, read as choices (load.outside_data)
+        finder = self.options.get("outside_data")
+        self.outside_data = finder(self) if finder is not None and not self.errors else {}
         # the names GetTaskName answers: a backup's (T_ROB1 ...), else T_ROB1 for the main task
         self.task_names = (self.options.get("main_task_name") or "T_ROB1",) + tuple(
             task.name for _, task in task_namespaces)
@@ -270,6 +274,7 @@ class Linker:
             linked.environment_init = environment_init
             linked.environment_react = environment_react
         linked.scopes = self
+        linked.outside_data = self.outside_data
         linked.environment_reads_io = any(
             instruction.reads_io for routine in self.routines
             if routine.namespace == P.ENVIRONMENT_NAMESPACE for instruction in routine.code)

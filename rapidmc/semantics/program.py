@@ -141,6 +141,8 @@ class Program:
     load_notes: tuple = ()                                 # Diagnostics about what was loaded
     # indices of the signals the code names; None: unknown (AliasIO of a computed name)
     named_signals: Optional[frozenset] = None
+    # PERS written from outside the loaded code, read as choices: slot -> OutsideData
+    outside_data: dict = field(default_factory=dict)
 
     def signal(self, key: str) -> Optional[Signal]:
         return self.signal_index.get(key)

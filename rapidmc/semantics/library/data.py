@@ -91,6 +91,19 @@ _define("tool0", "tooldata", (True, _IDENTITY_POSE, LOAD0), PERS)
 _define("wobj0", "wobjdata", (False, True, "", _IDENTITY_POSE, _IDENTITY_POSE), PERS)
 
 
+# --- motion settings -------------------------------------------------------------------
+# C_MOTSET: the current motion settings (motsetdata), read-only system data that VelSet,
+# AccSet, SingArea, ConfL/ConfJ, PathResol ... change. rapidmc models those instructions as
+# no effect (semantics/library/motion_settings.py), so a read gives the settings a program
+# starts with: override 100 %, max TCP speed 5000 mm/s, full acceleration, no singularity
+# area interpolation, configuration supervision on (axis limits 30/45/90 degrees), path
+# resolution 100 %, motion supervision on, tuning 100 %, no path or world acceleration
+# limits (-1), circle reorientation standard, event buffer on, prefetch time 0.
+_define("C_MOTSET", "motsetdata",
+        (_nums(100, 5000), _nums(100, 100, 100), (False, False, False),
+         (True, True) + _nums(30, 45, 90), to_num(100), True, to_num(100), False, to_num(-1),
+         False, to_num(-1), to_num(0), False, to_num(-1), True, to_num(0)), VAR)
+
 # --- stop points (stoppoint, the type component of stoppointdata) -------------------
 for _number, _name in enumerate(("inpos", "stoptime", "fllwtime"), start=1):
     _define(_name, "stoppoint", float(_number))

@@ -44,6 +44,13 @@ compiled("GripLoad(PERS loaddata Load)",
              "| switch Fwd | switch Bwd | switch Old)",
          modelled=NO_EFFECT)(no_effect)
 
+# Electronically linked motors (an option): its standard system module LINKEDM.sys, which
+# backups of controllers with the option hold, offers the service routine Linked_m, calling
+# the option's own Linked_m_exe (a FlexPendant dialog that jogs and links the follower axis
+# to its master). Motion is a jump to the target here, so the dialog changes nothing rapidmc
+# observes.
+compiled("Linked_m_exe()", modelled=NO_EFFECT)(no_effect)
+
 compiled("num MaxRobSpeed()", modelled=FIXED)(fixed(5000.0))
 compiled("num GetMotorTorque(\\mecunit MecUnit, num AxisNo)",
          "num ReadMotor(\\mecunit MecUnit, num Axis)", modelled=FIXED)(fixed(0.0))

@@ -1,0 +1,83 @@
+"""Encrypted modules in a controller backup: check everything else (issue 28).
+
+A licensed add-in ships its modules encrypted (the file's first byte is 0xF0
+or above); a controller runs them, rapidmc cannot read them.  Instead of
+refusing the whole backup (RMC005 for a module given by name stays):
+
+* the task's other modules are checked; what they use and no module declares
+  is taken, as ``rapidmc stubs`` does, from its uses: a generated module
+  (``interface_module``) declares it with empty routines and neutral values.
+  Its header carries the stubs' marker, so every verdict names each of those
+  declarations under ``assumes:`` (``findings.assumptions``), and a line
+  naming the encrypted modules (``ENCRYPTED_MARKER``);
+* PERS data the encrypted code may write is data written from outside the
+  loaded code (``outside_data``): the interface's PERS are not kept at their
+  neutral values as a user's stubs are, their reads take any value of their
+  domains;
+* a task made only of encrypted modules is left out (RMC735 note): it runs
+  as a party that may write its PERS at any time, which is what data written
+  from outside means for the tasks that read them.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Sequence
+
+from .. import ast
+from ..diagnostics import ENCRYPTED_SKIPPED, Diagnostic
+from ..diagnostics import SourceCache
+
+ENCRYPTED_MARKER = "Interface of encrypted modules"
+
+
+def is_encrypted(path: str) -> bool:
+    """Whether the module file is encrypted (its first byte 0xF0-0xFF, as RMC005 tells)."""
+    try:
+        with open(path, "rb") as stream:
+            first = stream.read(1)
+    except OSError:
+        return False
+    return bool(first) and first[0] >= 0xF0
+
+
+def skipped_note(path: str, task: str) -> Diagnostic:
+    """RMC735: the encrypted module is checked as the interface its uses show."""
+    return Diagnostic(ENCRYPTED_SKIPPED, f"module {Path(path).name} of task {task} is "
+                      "encrypted: the task is checked without it; what the other modules use "
+                      "from it is declared from those uses (stubs, named under assumes:), and "
+                      "PERS data it may write is data written from outside",
+                      ast.Span(path, 0, 0), severity="note")
+
+
+def only_encrypted_note(path: str, task: str) -> Diagnostic:
+    """RMC735: a task of encrypted modules only is a party writing its PERS at any time."""
+    return Diagnostic(ENCRYPTED_SKIPPED, f"task {task} is made only of encrypted modules: it "
+                      "is not checked; it runs as a party that may write its PERS data at any "
+                      "time (data written from outside for the tasks that read it)",
+                      ast.Span(path, 0, 0), severity="note")
+
+
+def interface_module(modules: Sequence[ast.Module], encrypted: Sequence[str],
+                     signals: frozenset) -> tuple[ast.Module, ...]:
+    """The modules declaring what ``modules`` use and nobody declares, taken as the
+    interface of the ``encrypted`` module files (empty when nothing is missing)."""
+    from ..syntax import parse_text
+    from .stubs import stub_module
+    taken = {module.name.key for module in modules}
+    name = "Encrypted_interface"
+    while name.upper() in taken:
+        name += "_"
+    stubs = stub_module(tuple(modules), name, signals)
+    if not stubs.declared:
+        return ()
+    names = ", ".join(Path(p).name for p in encrypted)
+    text = f"! {ENCRYPTED_MARKER} ({names}), taken from their uses\n" + stubs.text
+    path = str(Path(encrypted[0]).with_name(f"{Path(encrypted[0]).name} (interface)"))
+    SourceCache.remember(path, text)
+    return parse_text(text, path)
+
+
+def from_encrypted_interface(file: str) -> bool:
+    """Whether ``file`` is a module ``interface_module`` wrote."""
+    line = SourceCache.line(file, 1)
+    return line is not None and ENCRYPTED_MARKER in line

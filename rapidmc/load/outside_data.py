@@ -1,0 +1,232 @@
+"""PERS data written from outside the loaded code, and the values it may take (issue 28).
+
+A persistent that some loaded task reads and no loaded code can write (see
+``shared_data.data_uses``) is written, if at all, by something rapidmc does
+not load: another task checked apart (``--task``), an encrypted module, a PC
+through its interfaces.  Keeping its initial value makes a ``WaitUntil
+startRob`` wait forever although the controller's PLC sets it.  So, like a
+free input, each read of such data in the program's code takes any value of a
+finite domain (``semantics.expressions`` compiles the read as a choice); the
+stored value never changes.  The domain is per component (records) and per
+element type (arrays), for the value types only:
+
+* bool: both values;
+* num, dnum and string: the initial values and the constants the code
+  compares the component with (``= <>``, TEST ... CASE), plus one other
+  value; with an ordering comparison (``< <= > >=``), one value per place
+  among those numbers (each number, one between each two, one beyond each
+  end), as for the free analog inputs of ``input_domains``.  A component the
+  code never compares with anything keeps its initial value: no branch of the
+  program can tell its values apart, and inventing values for an index or a
+  divisor would report errors the data never causes.
+
+A read of a whole record or array (an argument, an assignment from it) reads
+the stored value, and so do the properties' atoms: data an atom may name keeps
+its initial value (the assumption says so).  ``check --fixed-outside-data`` keeps every such data object
+at its initial value, as before.  The verdicts name each object and its
+values under ``assumes:`` (``findings.assumptions``).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Optional
+
+from .. import ast
+from ..semantics.configured_signals import COMPARISONS
+from ..semantics.program import ENVIRONMENT_NAMESPACE
+from ..semantics.scope import GLOBAL_DATA
+from ..semantics.types import ArrayType, RapidType
+from ..semantics.values import format_value, to_dnum
+from .encrypted import from_encrypted_interface
+from .input_domains import analog_points, number_value
+from .shared_data import data_uses, writes_data_by_name
+
+VALUE_KEYS = frozenset({"BOOL", "NUM", "DNUM", "STRING"})
+ORDERINGS = frozenset({"<", "<=", ">", ">="})
+
+
+@dataclass(frozen=True)
+class OutsideData:
+    """One PERS data object written from outside: the domain of each value component.
+
+    ``domains``: component path (upper-case component names from the data object,
+    array indices left out) -> the values a read of that component may give."""
+
+    slot: int
+    name: str
+    span: object
+    domains: dict
+
+    def domain(self, path: tuple) -> Optional[tuple]:
+        return self.domains.get(path)
+
+    def describe(self) -> str:
+        """``FALSE or TRUE`` / ``rec.a: 0 or 1; rec.b: ...`` per component."""
+        parts = []
+        for path, values in self.domains.items():
+            shown = " or ".join(format_value(v) for v in values) if len(values) <= 8 else \
+                f"{len(values)} values from {format_value(values[0])} to {format_value(values[-1])}"
+            parts.append(f"{self.name}{''.join('.' + p.lower() for p in path)}: {shown}"
+                         if path else shown)
+        return "; ".join(parts)
+
+
+def outside_data(linker) -> dict:
+    """Slot -> ``OutsideData`` for each PERS some loaded task reads and no loaded code writes
+    (the linker's routines prepared, not yet compiled), but for those a property's atom
+    may name (the linker's option ``observed_names``): atoms read stored values, so those
+    keep their initial value, as the verdicts' assumptions say.  Empty when the code writes data named
+    by a string (``SetDataVal``): then any persistent may be written."""
+    routines = [r for r in linker.routines if r.namespace != ENVIRONMENT_NAMESPACE]
+    if writes_data_by_name(routines):
+        return {}
+    read, written = set(), set()
+    for namespace in sorted({routine.namespace for routine in routines}):
+        task_read, task_written = data_uses(linker, namespace)
+        read |= task_read
+        written |= task_written
+    observed = linker.options.get("observed_names", frozenset())
+    chosen = {data.slot: data for data in linker.globals
+              if data.storage == "PERS" and data.namespace != ENVIRONMENT_NAMESPACE
+              and data.slot in read and data.slot not in written and data.span is not None
+              and data.key not in observed and not _is_stub(data.span)}
+    if not chosen:
+        return {}
+    compared = _compared_constants(routines, chosen)
+    found = {}
+    for slot, data in chosen.items():
+        domains = {}
+        for path, leaf_type, initial in _leaves(data.type, data.initial):
+            domains[path] = _domain(leaf_type, initial, compared.get((slot, path)))
+        if domains:
+            found[slot] = OutsideData(slot, data.name, data.span, domains)
+    return found
+
+
+def _is_stub(span) -> bool:
+    """Data a user's ``rapidmc stubs`` module declares: its own assumption (neutral value).
+    The interface of encrypted modules is no such module: the encrypted code may write
+    its PERS (``encrypted``)."""
+    from .stubs.module_text import STUB_MARKER
+    from ..diagnostics import SourceCache
+    if from_encrypted_interface(span.file):
+        return False
+    return any(STUB_MARKER in (SourceCache.line(span.file, n) or "") for n in range(1, 4))
+
+
+def data_path(expr) -> Optional[tuple]:
+    """(root NameRef, component path) of a read ``name``, ``name.c``, ``name{i}.c`` ...
+    (None for any other expression)."""
+    path = []
+    while isinstance(expr, (ast.Component, ast.Index)):
+        if isinstance(expr, ast.Component):
+            path.append(expr.name.key)
+        expr = expr.base
+    if not isinstance(expr, ast.NameRef):
+        return None
+    return expr, tuple(reversed(path))
+
+
+def _leaves(rapid_type, value, path: tuple = ()):
+    """(component path, leaf type, the set of its initial values) per value component."""
+    if isinstance(rapid_type, ArrayType):
+        values = _elements(value, len(rapid_type.dims))
+        merged: dict = {}
+        for element in values:
+            for leaf_path, leaf_type, initial in _leaves(rapid_type.element, element, path):
+                merged.setdefault((leaf_path, leaf_type), set()).update(initial)
+        for (leaf_path, leaf_type), initial in merged.items():
+            yield leaf_path, leaf_type, initial
+        return
+    if not isinstance(rapid_type, RapidType):
+        return
+    if rapid_type.key in VALUE_KEYS:
+        yield path, rapid_type, ({value} if value is not None else set())
+    elif rapid_type.components and isinstance(value, (tuple, list)):
+        for component, part in zip(rapid_type.components, value):
+            yield from _leaves(component.type, part, path + (component.key,))
+
+
+def _elements(value, rank: int) -> list:
+    items = [value]
+    for _ in range(rank):
+        items = [item for outer in items if isinstance(outer, (tuple, list)) for item in outer]
+    return items
+
+
+def _compared_constants(routines, chosen: dict) -> dict:
+    """(slot, path) -> [constants, ordered?, compared with a non-constant?] from the code."""
+    found: dict = {}
+    for routine in routines:
+        if routine.ast is None:
+            continue
+        scope = routine.scope
+        for node, _ in ast.walk(routine.ast):
+            if isinstance(node, ast.Binary) and node.op in COMPARISONS:
+                for side, other in ((node.left, node.right), (node.right, node.left)):
+                    _note(found, chosen, scope, side, [other], node.op in ORDERINGS)
+            elif isinstance(node, ast.Test):
+                _note(found, chosen, scope, node.subject,
+                      [value for case in node.cases for value in case.values], False)
+    return found
+
+
+def _note(found: dict, chosen: dict, scope, side, others: list, ordered: bool) -> None:
+    located = data_path(side)
+    if located is None:
+        return
+    ref, path = located
+    symbol = scope.lookup(ref.name.key)
+    if symbol is None or symbol.slot not in chosen or symbol.kind != GLOBAL_DATA:
+        return
+    entry = found.setdefault((symbol.slot, path), [set(), False, False])
+    entry[1] = entry[1] or ordered
+    for other in others:
+        value = _constant(other, scope)
+        if value is None:
+            entry[2] = True
+        else:
+            entry[0].add(value)
+
+
+def _constant(expr, scope):
+    if isinstance(expr, ast.StringLiteral):
+        return expr.value
+    if isinstance(expr, ast.BoolLiteral):
+        return expr.value
+    return number_value(expr, scope)
+
+
+def _domain(leaf_type: RapidType, initial: set, compared) -> tuple:
+    if leaf_type.key == "BOOL":
+        return (False, True)
+    constants, ordered, open_ended = compared if compared is not None else (set(), False, False)
+    if leaf_type.key == "STRING":
+        values = set(initial) | {c for c in constants if isinstance(c, str)}
+        if constants or open_ended:
+            values.add(_other_string(values))
+        return tuple(sorted(values))
+    convert = to_dnum if leaf_type.key == "DNUM" else float
+    numbers = {convert(c) for c in constants if isinstance(c, float)}
+    values = {convert(v) for v in initial if isinstance(v, (int, float))}
+    if ordered and numbers:
+        return tuple(convert(v) for v in analog_points(sorted(numbers | values)))
+    values |= numbers
+    if numbers or open_ended:
+        values.add(convert(max(values, default=0.0) + 1))
+    return tuple(sorted(values)) or (convert(0),)
+
+
+def _other_string(values: set) -> str:
+    other, count = "", 0
+    while other in values:
+        count += 1
+        other = f"other{count}"
+    return other
+
+
+def observed_names(properties) -> frozenset:
+    """Upper-case identifiers in the properties' formulas: the data their atoms may read."""
+    import re
+    return frozenset(word.upper() for prop in properties
+                     for word in re.findall(r"[A-Za-z][A-Za-z0-9_]*", prop.text))
