@@ -10,6 +10,7 @@ is printed.
 from __future__ import annotations
 
 import copy
+import re
 from typing import Hashable, Mapping, Optional, Sequence
 
 from pyrsistent import pvector
@@ -372,15 +373,47 @@ class RapidDescriber:
     def describe_transition(self, label) -> TransitionInfo:
         choices, span, output = label
         inputs = {name: _choice_text(value) for name, value in choices}
-        span = executed_spans(span)[0]       # merged steps not expanded: the first one
+        spans = executed_spans(span)
+        span = spans[0]                      # a merged step is shown at its first statement
         if span is None:
             source = "(the program has stopped: this state repeats forever)" if not choices \
                 else "(the program continues after the Stop)" if inputs.get(OPERATOR_CHOICE) \
                 else ""
             return TransitionInfo(None, None, source, inputs, output)
-        text = SourceCache.line(span.file, span.line)
-        source = text.strip() if text is not None else ""
-        return TransitionInfo(span.file, span.line, source, inputs, output)
+        source = _statement_text(span)
+        statements = tuple(_whole_statement(s) for s in spans)
+        if statements == (source,):
+            statements = ()
+        return TransitionInfo(span.file, span.line, source, inputs, output, statements)
+
+
+def _statement_text(span) -> str:
+    """The source line a statement starts on, stripped (empty when the file is gone)."""
+    if span is None:
+        return ""
+    text = SourceCache.line(span.file, span.line)
+    return text.strip() if text is not None else ""
+
+
+def _whole_statement(span) -> str:
+    """A statement's text over all its lines: a simple statement's up to its ``;``, a
+    compound statement's head up to its THEN or DO (its body runs as steps of its own)."""
+    if span is None:
+        return ""
+    lines = []
+    for number in range(span.line, max(span.end_line, span.line) + 1):
+        text = SourceCache.line(span.file, number)
+        if text is None:
+            break
+        code = text.split("!", 1)[0].strip() if '"' not in text else text.strip()
+        lines.append(code)
+        if code.endswith(";") or HEAD_END.search(code) or \
+                (number == span.line and code.upper().startswith("TEST ")):
+            break
+    return " ".join(lines)
+
+
+HEAD_END = re.compile(r"\b(THEN|DO)$", re.IGNORECASE)
 
 
 def fault_text(fault) -> str:

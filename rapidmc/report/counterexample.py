@@ -12,7 +12,13 @@
   (``[[932.4,1557.5,2189.5],...]``);
 * a stretch of steps that repeats the lines just before it (a retry loop,
   a FOR loop filling an array) folded into one line with the values it
-  leaves behind.
+  leaves behind;
+* a run of steps the violation does not depend on (``trace_slice``: they
+  write only data that no step kept, no error line and no atom reads) told
+  in one line (``steps 2-18: waypoints{1..17} assigned, not read by the error``).
+
+Files are named relative to the current folder when they are under it, else
+relative to the folder that holds them all, named once above the steps.
 
 ``TextOptions(full=True)`` (``check --full-trace``) prints every initial
 value, every value in full and every step.  JSON and HTML always carry every
@@ -24,11 +30,13 @@ step and full values; the names are the same.
 from __future__ import annotations
 
 import json
+import os
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Iterable, Optional, Sequence, Union
 
-from ..check.trace import INITIAL, Change, Trace, TraceStep
+from ..check.trace import INITIAL, Change, Trace, TraceStep, TransitionInfo
+from .trace_slice import needed_steps, read_part, reads_of
 
 LOOP_STARTS = "-- loop starts here (repeats forever) --"
 WIDTH = 100            # a value's text in a step, at most (then shortened)
@@ -37,6 +45,7 @@ SOURCE_WIDTH = 160     # a source line or FlexPendant output
 LONGEST_PERIOD = 40    # the longest stretch of steps looked for as a repeat
 FEWEST_REPEATS = 3     # a stretch folds when it runs at least this many times in a row
 NET_SHOWN = 4          # values listed after a folded stretch (then a count)
+SLICED_SHOWN = 6       # data named in a line of steps left out (then a count)
 FOLDED_WIDTH = 40      # each of them, at most
 ALWAYS_SHOWN = ("program", "ERRNO")
 IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
@@ -51,6 +60,7 @@ class TextOptions:
     full: bool = False
     names: frozenset = frozenset()
     stub_data: frozenset = frozenset()
+    root: str = ""        # files are shown relative to this folder (empty: as given)
 
 
 @dataclass(frozen=True)
@@ -61,6 +71,15 @@ class Folded:
     last: int
     times: int
     hidden: tuple[TraceStep, ...]
+
+
+@dataclass(frozen=True)
+class SlicedAway:
+    """Steps ``steps`` (two or more in a row) that the violation does not depend on, ``reader``
+    naming what does (``the error``)."""
+
+    steps: tuple[TraceStep, ...]
+    reader: str
 
 
 # --- the whole counterexample ------------------------------------------------------
@@ -74,9 +93,17 @@ def counterexample_lines(trace: Trace, options: TextOptions = TextOptions()) -> 
                 f"then a loop of {_steps(len(trace.cycle))}")
     else:
         head = f"  counterexample: {_steps(count)}"
-    lines = headline_lines(trace, options) + [head]
-    read = options.names | read_names(trace)
-    for item in _folded(trace.prefix, options):
+    root, announced = display_root(trace_files(trace))
+    options = replace(options, root=root)
+    lines = headline_lines(trace, options)
+    if announced:
+        lines.append(f"  (files relative to {root})")
+    lines.append(head)
+    items = _prefix_items(trace, needed_steps(trace, options.names), options)
+    hidden = {step.index for item in items if isinstance(item, SlicedAway) for step in item.steps}
+    shown = [step for step in [*trace.prefix, *trace.cycle] if step.index not in hidden]
+    read = options.names | frozenset().union(*map(reads_of, shown))
+    for item in items:
         lines.extend(_item_lines(item, options, read))
     if trace.cycle:
         lines.append("  " + LOOP_STARTS)
@@ -87,6 +114,67 @@ def counterexample_lines(trace: Trace, options: TextOptions = TextOptions()) -> 
     return lines
 
 
+def _prefix_items(trace: Trace, needed: frozenset, options: TextOptions) -> list:
+    """The prefix's steps: each run of two or more the violation does not need as one
+    ``SlicedAway``, the stretches between them with their repeats folded."""
+    if options.full or not (trace.cycle or trace.ending):
+        return _folded(trace.prefix, options)     # an ending of unknown reads: all of it
+    reader = "the loop or the property" if trace.cycle else "the error"
+    items: list = []
+    stretch: list[TraceStep] = []
+    steps = list(trace.prefix)
+    start = 0
+    while start < len(steps):
+        end = start
+        while end < len(steps) and steps[end].index not in needed:
+            end += 1
+        if end - start >= 2:
+            items.extend(_folded(stretch, options))
+            stretch = []
+            items.append(SlicedAway(tuple(steps[start:end]), reader))
+            start = end
+        else:
+            stretch.append(steps[start])
+            start += 1
+    items.extend(_folded(stretch, options))
+    return items
+
+
+def trace_files(trace: Trace) -> list[str]:
+    """The files the trace's steps are in, in order of first use."""
+    steps = [*trace.prefix, *trace.cycle, *([trace.closing] if trace.closing else [])]
+    return list(dict.fromkeys(step.transition.file for step in steps
+                              if step.transition is not None and step.transition.file))
+
+
+def display_root(files: Sequence[str]) -> tuple[str, bool]:
+    """The folder files are shown relative to, and whether it must be named: the current
+    folder when it holds them all (not named), else the deepest folder that holds them all
+    (named once), else none (files as given)."""
+    absolute = [os.path.abspath(file) for file in files]
+    if not absolute:
+        return "", False
+    here = os.getcwd()
+    if all(os.path.commonpath([here, file]) == here for file in absolute):
+        return here, False
+    try:
+        common = os.path.commonpath([os.path.dirname(file) for file in absolute])
+    except ValueError:                         # different drives
+        return "", False
+    if common == os.path.dirname(common):      # only the file system's root: no gain
+        return "", False
+    return common, True
+
+
+def shown_location(transition: TransitionInfo, root: str) -> str:
+    """``file:line`` with the file relative to ``root`` (as given when ``root`` is empty)."""
+    location = transition.location
+    if not root or not transition.file:
+        return location
+    relative = os.path.relpath(os.path.abspath(transition.file), root)
+    return relative + location[len(transition.file):]
+
+
 def _steps(count: int) -> str:
     return f"{count} step" if count == 1 else f"{count} steps"
 
@@ -95,10 +183,12 @@ def _folded(steps: Sequence[TraceStep], options: TextOptions) -> list:
     return list(steps) if options.full else fold_repeats(steps)
 
 
-def _item_lines(item: Union[TraceStep, Folded], options: TextOptions,
+def _item_lines(item: Union[TraceStep, Folded, SlicedAway], options: TextOptions,
                 read: frozenset) -> list[str]:
     if isinstance(item, Folded):
         return [folded_line(item)]
+    if isinstance(item, SlicedAway):
+        return [sliced_line(item)]
     if item.kind == INITIAL and not options.full:
         return initial_lines(item, read)
     return step_lines(item, options)
@@ -115,7 +205,7 @@ def step_lines(step: TraceStep, options: TextOptions = TextOptions()) -> list[st
         head = "initial state"
     else:
         source = shorten(transition.source, width)
-        location = transition.location
+        location = shown_location(transition, options.root)
         head = f"{location}  {source}" if location else source
     lines = [f"    step {step.index}  {head}".rstrip()]
     if transition is not None:
@@ -181,9 +271,11 @@ def datum_of(name: str, words: Sequence[str]) -> str:
     return parts[0] if parts[0] in words or len(parts) == 1 else parts[1]
 
 
-def read_names(trace: Trace) -> frozenset:
-    """The identifiers of every step's source line, upper case."""
-    steps = [*trace.prefix, *trace.cycle, *([trace.closing] if trace.closing else [])]
+def read_names(trace: Trace, steps: Optional[Sequence[TraceStep]] = None) -> frozenset:
+    """The identifiers of the source lines of ``steps`` (default: every step), upper case."""
+    if steps is None:
+        steps = [*trace.prefix, *trace.cycle]
+    steps = [*steps, *([trace.closing] if trace.closing else [])]
     return frozenset(word.upper() for step in steps if step.transition is not None
                      for word in IDENTIFIER.findall(step.transition.source))
 
@@ -307,6 +399,56 @@ def net_changes(steps: Iterable[TraceStep]) -> list[Change]:
             if new != first_old[name] and new is not None]
 
 
+# --- steps the violation does not depend on ---------------------------------------
+
+
+def sliced_line(sliced: SlicedAway) -> str:
+    """``-- steps 2-18: waypoints{1..17} assigned, not read by the error --``."""
+    steps = sliced.steps
+    names = list(dict.fromkeys(change.name for step in steps for change in step.changes))
+    moved = "robot TCP" in names
+    entries = _name_ranges([name for name in names if name != "robot TCP"])
+    what = []
+    if entries:
+        more = len(entries) - SLICED_SHOWN
+        what.append(", ".join(entries[:SLICED_SHOWN]) + (f" and {more} more" if more > 0
+                                                        else "") + " assigned")
+    if moved:
+        what.append("the robot moved")
+    written = sum(1 for step in steps if step.transition and step.transition.output)
+    if written:
+        what.append(f"{written} FlexPendant {'line' if written == 1 else 'lines'} written")
+    done = ", ".join(what) if what else "nothing changed"
+    return f"    -- steps {steps[0].index}-{steps[-1].index}: {done}, not read by " \
+           f"{sliced.reader} (--full-trace shows them) --"
+
+
+def _name_ranges(names: Sequence[str]) -> list[str]:
+    """Names with the elements of one array put together: ``k{1..3}``, ``reg{2,5}``."""
+    groups: dict[str, list[str]] = {}
+    for name in names:
+        groups.setdefault(INDEX.sub("{}", name), []).append(name)
+    entries = []
+    for shape, members in groups.items():
+        numbers = [_single_index(name) for name in members]
+        if len(members) == 1 or shape.count("{}") != 1 or None in numbers:
+            entries.extend(members)
+            continue
+        ordered = sorted(set(numbers))
+        head, tail = shape.split("{}", 1)
+        if ordered == list(range(ordered[0], ordered[-1] + 1)):
+            entries.append(f"{head}{{{ordered[0]}..{ordered[-1]}}}{tail}")
+        else:
+            entries.append(f"{head}{{{','.join(map(str, ordered))}}}{tail}")
+    return entries
+
+
+def _single_index(name: str) -> Optional[int]:
+    found = INDEX.findall(name)
+    text = found[0][1:-1] if len(found) == 1 else ""
+    return int(text) if text.isdigit() else None
+
+
 # --- the headline ------------------------------------------------------------------
 
 
@@ -320,7 +462,7 @@ def headline_lines(trace: Trace, options: TextOptions = TextOptions()) -> list[s
     if last.transition is None or not last.transition.location:
         return lines
     width = None if options.full else SOURCE_WIDTH
-    lines.append(f"    at step {last.index}, {last.transition.location}:  "
+    lines.append(f"    at step {last.index}, {shown_location(last.transition, options.root)}:  "
                  f"{shorten(last.transition.source, width)}")
     for name, value, origin in read_data(steps, options.stub_data):
         lines.append(f"    {name} = {shorten(value, None if options.full else WIDTH)}"
@@ -347,14 +489,6 @@ def read_data(steps: Sequence[TraceStep], stub_data: frozenset = frozenset()) ->
         if candidates:
             found.append((named or candidates)[0])
     return found
-
-
-def read_part(source: str) -> str:
-    """What a line reads: of an assignment, the indexes of its target and its value."""
-    target, assigns, value = source.partition(":=")
-    if not assigns or '"' in target:
-        return source
-    return " ".join(re.findall(r"\{([^}]*)\}", target)) + " " + value
 
 
 def _latest_values(steps: Sequence[TraceStep], word: str, words: Sequence[str],

@@ -1,0 +1,166 @@
+"""Which steps of a counterexample the failure depends on: a dynamic slice of the trace.
+
+A reader of a counterexample wants the steps that lead to what went wrong.  A
+step that only writes data nothing later needed reads (17 waypoints assigned
+before a division by zero) can be told in one line instead of seventeen.
+
+``needed_steps(trace, names)`` walks the trace backwards from what the
+violation reads -- the failing line of a path that ends in an error, every
+line of a lasso's cycle (the loop runs forever: all of it counts), and the
+property's ``names`` -- and keeps:
+
+* data dependence: a step that writes a datum a kept step (or the property)
+  reads; its own line's data become read in turn;
+* control dependence, over-approximated: every step whose statement decides
+  where the run goes (IF, WHILE, FOR, TEST, RETURN, RAISE, waits, interrupt
+  set-up ...) is kept with the data it reads, and so is the call that entered
+  the routine of each kept step (its arguments may be references);
+* every step that is not a plain statement: the initial state, a stuck state,
+  a step with no source line, a step that changes ERRNO or the program's status.
+
+What a statement reads is taken from its source text (every identifier of
+every statement a merged step ran), what it writes from the data the step
+changed.  Both are over-approximations (an identifier is taken to name every
+datum it may name), so a step left out is one whose writes nothing kept can
+read: the slice is sound, not minimal.
+"""
+from __future__ import annotations
+
+import re
+from typing import Iterable, Sequence
+
+from ..check.trace import INITIAL, TRANSITION, Trace, TraceStep
+
+IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+STRING = re.compile(r'"(?:[^"]|"")*"')
+INDEX = re.compile(r"\{[^}]*\}")
+COMMENT = re.compile(r"!.*$")
+
+# first words of statements that decide where the run goes next (or when)
+CONTROL_WORDS = frozenset("""
+    IF ELSEIF ELSE ENDIF WHILE ENDWHILE FOR ENDFOR TEST CASE DEFAULT ENDTEST GOTO RETURN RAISE
+    EXIT EXITCYCLE RETRY TRYNEXT STOP BREAK SYSTEMSTOPACTION ERROR UNDO BACKWARD
+    WAITUNTIL WAITDI WAITDO WAITAI WAITAO WAITGI WAITGO WAITSYNCTASK WAITTESTANDSET WAITLOAD
+    WAITTIME WAITWOBJ WAITROB
+    CONNECT IDELETE IENABLE IDISABLE ISLEEP IWATCH ISIGNALDI ISIGNALDO ISIGNALAI ISIGNALAO
+    ISIGNALGI ISIGNALGO ITIMER IPERS IERROR IRMQMESSAGE
+    CALLBYVAR
+""".split())
+# the robot's position is read by these functions (and by atoms naming them)
+ROBOT_READERS = frozenset({"CROBT", "CPOS", "CJOINTT", "CTOOL", "CWOBJ", "CDIRPATH"})
+ROBOT = "ROBOT TCP"
+ALWAYS_KEPT = ("ERRNO", "program")
+LABEL = re.compile(r"^\s*[A-Za-z][A-Za-z0-9_]*\s*:(?!=)")
+
+
+def statements_of(step: TraceStep) -> tuple[str, ...]:
+    """The source text of every statement the step ran (a merged step ran several)."""
+    transition = step.transition
+    if transition is None:
+        return ()
+    return tuple(getattr(transition, "statements", ()) or (transition.source,))
+
+
+def words_of(text: str) -> list[str]:
+    """The identifiers of a statement, upper case, strings and comments left out."""
+    return [word.upper() for word in IDENTIFIER.findall(COMMENT.sub("", STRING.sub('""', text)))]
+
+
+def read_part(source: str) -> str:
+    """What a line reads: of an assignment, the indexes of its target and its value."""
+    target, assigns, value = source.partition(":=")
+    if not assigns or '"' in target:
+        return source
+    return " ".join(re.findall(r"\{([^}]*)\}", target)) + " " + value
+
+
+def reads_of(step: TraceStep) -> frozenset:
+    """What the step may read: every identifier its statements name, an assignment's target
+    left out (not its indexes), and the robot's position when a statement calls a function
+    that reads it."""
+    words = set()
+    for text in statements_of(step):
+        named = words_of(text)
+        if named and named[0] not in CONTROL_WORDS and not LABEL.match(text):
+            named = words_of(read_part(text))
+        words.update(named)
+    return frozenset(words | {ROBOT} if words & ROBOT_READERS else words)
+
+
+def writes_of(step: TraceStep) -> frozenset:
+    """Every identifier a changed name may be about (``main.reg1{2}``: MAIN and REG1)."""
+    found = set()
+    for change in step.changes:
+        name = change.name.removeprefix("signal ")
+        found.update(part.upper() for part in INDEX.sub("", name).split(".")[:2])
+    return frozenset(found)
+
+
+def is_control(step: TraceStep) -> bool:
+    """Whether the step decides the run's path, or is not a plain statement at all."""
+    if step.kind != TRANSITION or step.transition is None or not step.transition.location:
+        return True
+    if any(change.name in ALWAYS_KEPT for change in step.changes):
+        return True
+    for text in statements_of(step):
+        words = words_of(text)
+        if not words or words[0] in CONTROL_WORDS or LABEL.match(text) or text.startswith("%"):
+            return True
+    return False
+
+
+def needed_steps(trace: Trace, names: Iterable[str] = ()) -> frozenset:
+    """The indexes of the steps the violation depends on (see the module's docstring)."""
+    steps = [*trace.prefix, *trace.cycle]
+    read = set(names)
+    needed = set()
+    if trace.cycle:
+        for step in [*trace.cycle, *([trace.closing] if trace.closing else [])]:
+            read |= reads_of(step)
+        needed.update(step.index for step in trace.cycle)
+    elif trace.prefix:
+        read |= reads_of(trace.prefix[-1])
+        needed.add(trace.prefix[-1].index)
+    position = {step.index: number for number, step in enumerate(steps)}
+    for number in range(len(trace.prefix) - 1, -1, -1):
+        step = steps[number]
+        if step.index in needed or is_control(step) or not read.isdisjoint(writes_of(step)):
+            needed.add(step.index)
+            read |= reads_of(step)
+    # the calls that entered the routines of the kept steps: fixpoint, as a call kept
+    # reads its arguments, which may make earlier steps needed
+    changed = True
+    while changed:
+        changed = False
+        for index in sorted(needed):
+            for call in _entering_calls(steps, position[index]):
+                if call.index not in needed:
+                    needed.add(call.index)
+                    read |= reads_of(call)
+                    changed = True
+        if changed:
+            for number in range(len(trace.prefix) - 1, -1, -1):
+                step = steps[number]
+                if step.index not in needed and not read.isdisjoint(writes_of(step)):
+                    needed.add(step.index)
+                    read |= reads_of(step)
+    return frozenset(needed)
+
+
+def _entering_calls(steps: Sequence[TraceStep], number: int) -> list[TraceStep]:
+    """The latest earlier steps at each caller frame's line: the calls that led here.
+
+    With several tasks the stack holds every task's frames; the calls of the other tasks
+    are taken too (more kept, never less)."""
+    own = steps[number].transition
+    found = []
+    for frame in steps[number].stack:
+        if own is not None and (frame.file, frame.line) == (own.file, own.line):
+            continue
+        for earlier in range(number - 1, -1, -1):
+            transition = steps[earlier].transition
+            if transition is not None and transition.file == frame.file and \
+                    transition.line == frame.line:
+                found.append(steps[earlier])
+                break
+    return found
