@@ -19,7 +19,7 @@ from ..check import TransitionInfo
 from ..check.trace import CallFrame
 from ..check.result import LassoStep, SearchResult
 from ..diagnostics import TRACE_REPLAY, SourceCache, error
-from ..load.stubs.module_text import STUB_MARKER
+from ..load.stubs.module_text import is_stub_module
 from ..semantics.program import (ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE,
                                 PROGRAM_NAMESPACE, Program)
 from ..semantics.types import POS, ArrayType
@@ -310,7 +310,7 @@ class RapidDescriber:
         """The shown names of data declared by a module of ``rapidmc stubs`` (a stub's value)."""
         if self._stub_data is None:
             stubs = {file for file in {g.span.file for g in self.program.globals if g.span}
-                     if any(STUB_MARKER in line for line in (SourceCache.lines(file) or ())[:3])}
+                     if is_stub_module(file)}
             self._stub_data = frozenset(name for slot, name, _ in self.globals + self.environment
                                         if self._declared_in[slot] in stubs)
         return self._stub_data

@@ -36,6 +36,7 @@ from dataclasses import dataclass, replace
 from typing import Iterable, Optional, Sequence, Union
 
 from ..check.trace import INITIAL, Change, Trace, TraceStep, TransitionInfo
+from ..load.stubs.module_text import is_stub_module
 from .trace_slice import needed_steps, read_part, reads_of
 
 LOOP_STARTS = "-- loop starts here (repeats forever) --"
@@ -464,6 +465,9 @@ def headline_lines(trace: Trace, options: TextOptions = TextOptions()) -> list[s
     width = None if options.full else SOURCE_WIDTH
     lines.append(f"    at step {last.index}, {shown_location(last.transition, options.root)}:  "
                  f"{shorten(last.transition.source, width)}")
+    if is_stub_module(last.transition.file) and last.stack:
+        lines.append(f"    (in {last.stack[-1].routine}, a routine of the stubs module: "
+                     "its body is a stand-in for the real one)")
     for name, value, origin in read_data(steps, options.stub_data):
         lines.append(f"    {name} = {shorten(value, None if options.full else WIDTH)}"
                      f"  ({origin})")
@@ -481,7 +485,7 @@ def read_data(steps: Sequence[TraceStep], stub_data: frozenset = frozenset()) ->
     source = steps[-1].transition.source
     words = list(dict.fromkeys(word.upper() for word in IDENTIFIER.findall(read_part(source))))
     written = source.replace(" ", "").upper()
-    found = []
+    found = stub_results(steps)
     for word in words:
         candidates = _latest_values(steps, word, words, stub_data)
         named = [c for c in candidates if INDEX.sub("", c[0]).replace(" ", "").upper() in written
@@ -489,6 +493,23 @@ def read_data(steps: Sequence[TraceStep], stub_data: frozenset = frozenset()) ->
         if candidates:
             found.append((named or candidates)[0])
     return found
+
+
+def stub_results(steps: Sequence[TraceStep]) -> list[tuple]:
+    """(``F()``, value, origin) of each stub function the failing statement called: the
+    steps between the statement's start and the failing step that run in a stubs module."""
+    last = steps[-1].transition
+    found = []
+    for step in reversed(steps[:-1]):
+        transition = step.transition
+        if transition is None or (transition.file, transition.line) == (last.file, last.line):
+            break
+        returned = re.match(r"RETURN\s+(.*?);?$", transition.source, re.IGNORECASE)
+        if returned and step.stack and is_stub_module(transition.file):
+            found.append((f"{step.stack[-1].routine}()", returned.group(1).strip(),
+                          f"returned by the stub at {os.path.basename(transition.file)}:"
+                          f"{transition.line}"))
+    return found[::-1]
 
 
 def _latest_values(steps: Sequence[TraceStep], word: str, words: Sequence[str],
