@@ -137,3 +137,15 @@ def test_slice_keeps_what_the_failing_line_reads_and_every_branch():
     assert sorted(needed_steps(trace)) == [1, 3, 4, 5, 7]
     # an atom that reads x keeps its writer
     assert 6 in needed_steps(trace, {"X"})
+
+
+def test_slice_reads_the_arguments_of_an_instruction_with_an_optional_argument():
+    # ``\Str:=request`` is an argument, not an assignment: the socket is read too
+    from rapidmc.check.trace import Trace
+    from rapidmc.report.trace_slice import needed_steps
+    steps = (TraceStep(1, INITIAL, None, ()),
+             step(2, "SocketCreate client;", "client"),
+             step(3, "SocketConnect client, \"10.0.0.1\", 1025;", "client"),
+             step(4, "SocketReceive client \\Str:=request;"))
+    assert sorted(needed_steps(Trace(steps, (), None, "uncaught ERR_SOCK_TIMEOUT"))) == \
+        [1, 2, 3, 4]

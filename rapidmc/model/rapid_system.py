@@ -22,6 +22,7 @@ from ..diagnostics import TRACE_REPLAY, SourceCache, error
 from ..load.stubs.module_text import is_stub_module
 from ..semantics.program import (ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE,
                                 PROGRAM_NAMESPACE, Program)
+from ..semantics.scope import LOCAL_DATA
 from ..semantics.types import POS, ArrayType
 from ..semantics.library.tasks import SyncWait
 from ..semantics.state import ENDED, FAILED, RUNNING, STOPPED, State
@@ -32,7 +33,7 @@ from ..semantics.fused_step import plain_successor_states, stop_pcs, written_glo
 from ..semantics.values import format_num, format_value
 from ..semantics.errors import errno_name
 from .reduction import NO_PLAN, Plan
-from .value_text import OPAQUE_KINDS, untyped_text, value_text
+from .value_text import DESCRIBED_TYPES, OPAQUE_KINDS, untyped_text, value_text
 from .reduction.expansion import expand_lasso
 from .reduction.merging import executed_spans
 
@@ -264,9 +265,21 @@ def _without_inputs(state: State, free: list) -> State:
 
 
 def _shown(rapid_type) -> bool:
-    """Whether data of this type has a value to show (not a signal, clock, syncident ...)."""
+    """Whether data of this type has a value to show: not a signal, clock, syncident ...,
+    but a socket or an I/O device, whose state RAPID names (``<socketdev: connected>``)."""
     element = rapid_type.element if isinstance(rapid_type, ArrayType) else rapid_type
-    return getattr(element, "kind", "") not in OPAQUE_KINDS
+    return getattr(element, "kind", "") not in OPAQUE_KINDS or \
+        getattr(element, "key", "") in DESCRIBED_TYPES
+
+
+def _local_types(routine) -> dict:
+    """The declared type of each frame slot of ``routine``'s parameters and data (a FOR
+    variable or a temporary has none: it shows by what it holds)."""
+    scope = getattr(routine, "scope", None)
+    if scope is None:
+        return {}
+    return {symbol.slot: symbol.type for symbol in scope.names.values()
+            if symbol.kind == LOCAL_DATA and symbol.type is not None}
 
 
 class RapidDescriber:
@@ -288,6 +301,13 @@ class RapidDescriber:
         self._declared_in = {g.slot: g.span.file if g.span else None for g in program.globals}
         self._stub_data: Optional[frozenset] = None
         self._texts: dict[int, tuple] = {}      # slot -> (value, its text), the latest
+        self._slot_types: dict[int, dict] = {}  # routine index -> its frame slots' types
+
+    def _local_types(self, routine) -> dict:
+        types = self._slot_types.get(routine.index)
+        if types is None:
+            types = self._slot_types[routine.index] = _local_types(routine)
+        return types
 
     def _qualified(self, data) -> str:
         """env.name for environment data, <task>.name for data of a further task."""
@@ -323,13 +343,15 @@ class RapidDescriber:
         stacks = (state.frames,) + state.tasks
         for frame in (frame for stack in stacks for frame in stack):
             routine = self.program.routines[frame.routine]
-            for name, value in zip(routine.local_names, frame.locals):
+            for slot, (name, value) in enumerate(zip(routine.local_names, frame.locals)):
                 if name.startswith("<"):
                     continue                       # FOR bounds, temporaries
                 if isinstance(value, tuple) and len(value) == 3 and isinstance(value[0], int) \
                         and isinstance(value[2], tuple):
                     continue                       # a reference parameter
-                view[f"{routine.name}.{name}"] = untyped_text(value)
+                rapid_type = self._local_types(routine).get(slot)
+                view[f"{routine.name}.{name}"] = untyped_text(value) if rapid_type is None \
+                    else value_text(value, rapid_type)
         for signal in self.signals:
             view[f"signal {signal.name}"] = format_num(state.io[signal.index])
         view["robot TCP"] = value_text(state.robot[0][0], POS)

@@ -490,9 +490,49 @@ def read_data(steps: Sequence[TraceStep], stub_data: frozenset = frozenset()) ->
         candidates = _latest_values(steps, word, words, stub_data)
         named = [c for c in candidates if INDEX.sub("", c[0]).replace(" ", "").upper() in written
                  and "." in c[0] and datum_of(c[0], words) == data_names(c[0])[0]]
-        if candidates:
-            found.append((named or candidates)[0])
+        if named:
+            found.append(named[0])
+        elif candidates:
+            found.append(_part_read(candidates, _component_path(source, word), word) or candidates[0])
     return found
+
+
+def _component_path(source: str, word: str) -> list[str]:
+    """The components the line reads of the datum ``word``: ``raw_message.head.length``
+    gives ``[".head", ".length"]`` (none when the line reads it whole or not by name)."""
+    match = re.search(r"\b" + re.escape(word) + r"((?:\s*\.\s*[A-Za-z][A-Za-z0-9_]*)+)",
+                      source, re.IGNORECASE)
+    if match is None:
+        return []
+    return ["." + part.strip() for part in match.group(1).split(".")[1:]]
+
+
+def _part_read(candidates: list[tuple], path: list[str], word: str) -> Optional[tuple]:
+    """Of a datum's latest values (latest first), the value of the component ``path`` the
+    line reads: from the latest value that holds that component, taken down to it; the
+    latest change inside it as it is; None when the line reads no path or an array element
+    is in the way (the old choice stands)."""
+    if not path:
+        return None
+    for name, value, origin in candidates:
+        if "{" in name:
+            return None
+        parts = name.split(".")
+        at = next((n for n, part in enumerate(parts) if part.upper() == word), None)
+        if at is None:
+            return None
+        own = ["." + part for part in parts[at + 1:]]
+        if [part.upper() for part in own] == [part.upper() for part in path[:len(own)]]:
+            for part in path[len(own):]:
+                value = {suffix.upper(): text for suffix, text in
+                         getattr(value, "parts", ())}.get(part.upper())
+                if value is None:
+                    return None
+            return (".".join(parts[:at + 1]) + "".join(path[len(own):]) if not own else
+                    name + "".join(path[len(own):]), value, origin)
+        if [part.upper() for part in path] == [part.upper() for part in own[:len(path)]]:
+            return (name, value, origin)       # a change inside the part read
+    return None
 
 
 def stub_results(steps: Sequence[TraceStep]) -> list[tuple]:

@@ -35,6 +35,8 @@ IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 STRING = re.compile(r'"(?:[^"]|"")*"')
 INDEX = re.compile(r"\{[^}]*\}")
 COMMENT = re.compile(r"!.*$")
+# the target of an assignment: a name with indexes and components (``pk{2}.id``)
+ASSIGNED = re.compile(r"^\s*[A-Za-z][A-Za-z0-9_]*(\s*\{[^}]*\}|\s*\.\s*[A-Za-z][A-Za-z0-9_]*)*\s*$")
 
 # first words of statements that decide where the run goes next (or when)
 CONTROL_WORDS = frozenset("""
@@ -69,8 +71,8 @@ def words_of(text: str) -> list[str]:
 def read_part(source: str) -> str:
     """What a line reads: of an assignment, the indexes of its target and its value."""
     target, assigns, value = source.partition(":=")
-    if not assigns or '"' in target:
-        return source
+    if not assigns or not ASSIGNED.match(target):
+        return source                  # no assignment (``SocketReceive s \Str:=text;``)
     return " ".join(re.findall(r"\{([^}]*)\}", target)) + " " + value
 
 
