@@ -149,3 +149,17 @@ def test_slice_reads_the_arguments_of_an_instruction_with_an_optional_argument()
              step(4, "SocketReceive client \\Str:=request;"))
     assert sorted(needed_steps(Trace(steps, (), None, "uncaught ERR_SOCK_TIMEOUT"))) == \
         [1, 2, 3, 4]
+
+
+def test_slice_ends_the_need_for_a_datum_at_its_whole_assignment_only_where_unambiguous():
+    from rapidmc.check.trace import Trace
+    from rapidmc.report.trace_slice import needed_steps
+    steps = (TraceStep(1, INITIAL, None, ()),
+             step(2, "x := 1;", "x"),                  # overwritten at 3 before the read
+             step(3, "x := 2;", "x"),
+             step(4, "y := 1 / (x - 2);"))
+    assert sorted(needed_steps(Trace(steps, (), None, "uncaught ERR_DIVZERO"))) == [1, 3, 4]
+    # a routine's own x is in the trace too: the name may mean either, both writes stay
+    local = steps[:3] + (step(4, "x := 5;", "main.x"), step(5, "y := 1 / (x - 2);"))
+    assert sorted(needed_steps(Trace(local, (), None, "uncaught ERR_DIVZERO"))) == \
+        [1, 2, 3, 4, 5]

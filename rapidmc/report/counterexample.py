@@ -94,6 +94,8 @@ def counterexample_lines(trace: Trace, options: TextOptions = TextOptions()) -> 
                 f"then a loop of {_steps(len(trace.cycle))}")
     else:
         head = f"  counterexample: {_steps(count)}"
+    if not options.full:
+        trace = chosen_inputs_only(trace)
     root, announced = display_root(trace_files(trace))
     options = replace(options, root=root)
     lines = headline_lines(trace, options)
@@ -174,6 +176,31 @@ def shown_location(transition: TransitionInfo, root: str) -> str:
         return location
     relative = os.path.relpath(os.path.abspath(transition.file), root)
     return relative + location[len(transition.file):]
+
+
+def chosen_inputs_only(trace: Trace) -> Trace:
+    """The trace with each input shown at the step that chose it: an input the step just
+    before chose with the same value (a signal an interrupt watches is chosen at every
+    step) is left out, unless the step's statement names it."""
+    previous: dict = {}
+
+    def kept(step: Optional[TraceStep]) -> Optional[TraceStep]:
+        nonlocal previous
+        transition = step.transition if step is not None else None
+        if transition is None:
+            previous = {}
+            return step
+        named = reads_of(step)
+        inputs = {name: value for name, value in transition.inputs.items()
+                  if previous.get(name) != value or name.upper() in named}
+        previous = dict(transition.inputs)
+        if len(inputs) == len(transition.inputs):
+            return step
+        return replace(step, transition=replace(transition, inputs=inputs))
+
+    prefix = tuple(kept(step) for step in trace.prefix)
+    cycle = tuple(kept(step) for step in trace.cycle)
+    return replace(trace, prefix=prefix, cycle=cycle, closing=kept(trace.closing))
 
 
 def _steps(count: int) -> str:

@@ -112,41 +112,62 @@ def is_control(step: TraceStep) -> bool:
 
 
 def needed_steps(trace: Trace, names: Iterable[str] = ()) -> frozenset:
-    """The indexes of the steps the violation depends on (see the module's docstring)."""
+    """The indexes of the steps the violation depends on (see the module's docstring).
+
+    One walk back over the prefix: a kept step adds what it reads and marks the calls
+    that entered its routine (earlier steps, so the walk meets them later).  A kept
+    assignment of a whole datum ``x := ...`` that does not read ``x`` ends the need
+    for earlier writes of ``x`` -- only where the name cannot mean another datum (one
+    task, no routine data or other datum of that name in the trace)."""
     steps = [*trace.prefix, *trace.cycle]
+    position = {step.index: number for number, step in enumerate(steps)}
     read = set(names)
     needed = set()
     if trace.cycle:
         for step in [*trace.cycle, *([trace.closing] if trace.closing else [])]:
             read |= reads_of(step)
-        needed.update(step.index for step in trace.cycle)
+            if step.index in position:
+                needed.add(step.index)
+                needed.update(call.index for call in _entering_calls(steps, position[step.index]))
     elif trace.prefix:
-        read |= reads_of(trace.prefix[-1])
         needed.add(trace.prefix[-1].index)
-    position = {step.index: number for number, step in enumerate(steps)}
+    single = _plain_names(steps)
     for number in range(len(trace.prefix) - 1, -1, -1):
         step = steps[number]
         if step.index in needed or is_control(step) or not read.isdisjoint(writes_of(step)):
             needed.add(step.index)
-            read |= reads_of(step)
-    # the calls that entered the routines of the kept steps: fixpoint, as a call kept
-    # reads its arguments, which may make earlier steps needed
-    changed = True
-    while changed:
-        changed = False
-        for index in sorted(needed):
-            for call in _entering_calls(steps, position[index]):
-                if call.index not in needed:
-                    needed.add(call.index)
-                    read |= reads_of(call)
-                    changed = True
-        if changed:
-            for number in range(len(trace.prefix) - 1, -1, -1):
-                step = steps[number]
-                if step.index not in needed and not read.isdisjoint(writes_of(step)):
-                    needed.add(step.index)
-                    read |= reads_of(step)
+            reads = reads_of(step)
+            read -= (_whole_assigned(step) & single) - reads
+            read |= reads
+            needed.update(call.index for call in _entering_calls(steps, number))
     return frozenset(needed)
+
+
+def _whole_assigned(step: TraceStep) -> set:
+    """The datum an assignment ``x := ...`` writes whole (none for any other statement)."""
+    statements = statements_of(step)
+    if len(statements) != 1:
+        return set()
+    target, assigns, _ = statements[0].partition(":=")
+    target = target.strip()
+    if not assigns or not IDENTIFIER.fullmatch(target):
+        return set()
+    return {target.upper()} if any(change.name.upper() == target.upper()
+                                   for change in step.changes) else set()
+
+
+def _plain_names(steps: Sequence[TraceStep]) -> set:
+    """The names that can mean only one datum here: changed under that one plain name in
+    the trace, and no task but the first runs (a further task's data has the same names)."""
+    if any(frame.task for step in steps for frame in step.stack):
+        return set()
+    spellings: dict[str, set] = {}
+    for step in steps:
+        for change in step.changes:
+            name = change.name.removeprefix("signal ")
+            for part in INDEX.sub("", name).split(".")[:2]:
+                spellings.setdefault(part.upper(), set()).add(INDEX.sub("", name).upper())
+    return {word for word, names in spellings.items() if names == {word}}
 
 
 def _entering_calls(steps: Sequence[TraceStep], number: int) -> list[TraceStep]:
