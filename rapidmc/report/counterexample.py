@@ -37,7 +37,7 @@ from typing import Iterable, Optional, Sequence, Union
 
 from ..check.trace import INITIAL, Change, Trace, TraceStep, TransitionInfo
 from ..load.stubs.module_text import is_stub_module
-from .trace_slice import needed_steps, read_part, reads_of
+from .trace_slice import needed_steps, read_part, reads_of, whole_assignments
 
 LOOP_STARTS = "-- loop starts here (repeats forever) --"
 WIDTH = 100            # a value's text in a step, at most (then shortened)
@@ -584,8 +584,13 @@ def _latest_values(steps: Sequence[TraceStep], word: str, words: Sequence[str],
     """The latest values of the datum named ``word`` (one of the line's ``words``) and of its
     parts before the last step, latest first, up to the datum's own: (name, value, origin)."""
     found: dict[str, tuple] = {}
+    rewritten = None        # the latest step that assigned the datum whole without changing it
     for step in reversed(steps):
         transition = step.transition
+        if rewritten is None and not found and step is not steps[-1] and \
+                word in whole_assignments(step) and \
+                not any(datum_of(change.name, words) == word for change in step.changes):
+            rewritten = step.index
         if transition is not None and step is not steps[-1]:
             for name, value in transition.inputs.items():
                 if name.upper() == word:
@@ -601,6 +606,8 @@ def _latest_values(steps: Sequence[TraceStep], word: str, words: Sequence[str],
                 origin = "stub value" if change.name in stub_data else "initial value"
             else:
                 origin = f"set at step {step.index}" + _inputs_text(step)
+            if rewritten is not None and not found:
+                origin = f"set at step {rewritten}, to the value it had"
             found[change.name] = (change.name, change.new, origin)
             if not INDEX.search(change.name) and "." not in change.name.removeprefix("signal "):
                 return list(found.values())    # the whole datum: older parts are in it

@@ -90,8 +90,14 @@ def reads_of(step: TraceStep) -> frozenset:
 
 
 def writes_of(step: TraceStep) -> frozenset:
-    """Every identifier a changed name may be about (``main.reg1{2}``: MAIN and REG1)."""
+    """Every identifier a changed name may be about (``main.reg1{2}``: MAIN and REG1), and
+    the datum of each assignment's target (an assignment of the value it had changes
+    nothing, yet the value read after it comes from it)."""
     found = set()
+    for text in statements_of(step):
+        target, assigns, _ = text.partition(":=")
+        if assigns and ASSIGNED.match(target):
+            found.add(IDENTIFIER.match(target.strip()).group().upper())
     for change in step.changes:
         name = change.name.removeprefix("signal ")
         found.update(part.upper() for part in INDEX.sub("", name).split(".")[:2])
@@ -143,17 +149,23 @@ def needed_steps(trace: Trace, names: Iterable[str] = ()) -> frozenset:
     return frozenset(needed)
 
 
+def whole_assignments(step: TraceStep) -> set:
+    """The data the step's assignments ``x := ...`` write whole, upper case."""
+    found = set()
+    for text in statements_of(step):
+        target, assigns, _ = text.partition(":=")
+        if assigns and IDENTIFIER.fullmatch(target.strip()):
+            found.add(target.strip().upper())
+    return found
+
+
 def _whole_assigned(step: TraceStep) -> set:
-    """The datum an assignment ``x := ...`` writes whole (none for any other statement)."""
-    statements = statements_of(step)
-    if len(statements) != 1:
+    """The datum the step's one statement, an assignment ``x := ...``, writes whole and the
+    step shows changed (so ``x`` names that datum); none for any other step."""
+    if len(statements_of(step)) != 1:
         return set()
-    target, assigns, _ = statements[0].partition(":=")
-    target = target.strip()
-    if not assigns or not IDENTIFIER.fullmatch(target):
-        return set()
-    return {target.upper()} if any(change.name.upper() == target.upper()
-                                   for change in step.changes) else set()
+    return {name for name in whole_assignments(step)
+            if any(change.name.upper() == name for change in step.changes)}
 
 
 def _plain_names(steps: Sequence[TraceStep]) -> set:
