@@ -163,3 +163,23 @@ def test_slice_ends_the_need_for_a_datum_at_its_whole_assignment_only_where_unam
     local = steps[:3] + (step(4, "x := 5;", "main.x"), step(5, "y := 1 / (x - 2);"))
     assert sorted(needed_steps(Trace(local, (), None, "uncaught ERR_DIVZERO"))) == \
         [1, 2, 3, 4, 5]
+
+
+def test_slice_keeps_a_step_that_raised_an_error_and_one_that_chose_an_input():
+    # the error handler at line 9 reads ERRNO; step 3 raised (ERRNO unchanged: the same
+    # error again), so it and the socket it reads stay shown
+    from rapidmc.check.trace import Trace
+    from rapidmc.report.trace_slice import needed_steps
+    steps = (TraceStep(1, INITIAL, None, ()),
+             step(2, "SocketCreate s;", "s"),
+             step(3, "SocketReceive s \\Str:=text;"),
+             TraceStep(9, TRANSITION, TransitionInfo("p.mod", 9, "RETRY;"), ()),
+             step(10, "k := 1;", "k"),
+             TraceStep(11, TRANSITION, TransitionInfo("p.mod", 11, "TPReadNum n, \"n?\";",
+                                                      {"TPReadNum": "0"}), ()),
+             step(12, "k := 2;", "k"),
+             step(13, "y := 1 / 0;"))
+    trace = Trace(steps, (), None, "uncaught ERR_DIVZERO")
+    assert sorted(needed_steps(trace)) == [1, 9, 11, 13]
+    assert sorted(needed_steps(trace, handler_starts=frozenset({("p.mod", 9)}))) == \
+        [1, 2, 3, 9, 11, 13]

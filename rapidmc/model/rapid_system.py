@@ -335,6 +335,18 @@ class RapidDescriber:
                                         if self._declared_in[slot] in stubs)
         return self._stub_data
 
+    @property
+    def handler_starts(self) -> frozenset:
+        """(file, line) of the first statement of every ERROR handler: a step that the next
+        step follows there raised an error (a counterexample keeps it shown)."""
+        starts = set()
+        for routine in self.program.routines:
+            if 0 <= routine.handler_pc < len(routine.code):
+                span = routine.code[routine.handler_pc].span
+                if span is not None:
+                    starts.add((span.file, span.line))
+        return frozenset(starts)
+
     def describe_state(self, state: State) -> Mapping[str, str]:
         view: dict[str, str] = {}
         store = state.store

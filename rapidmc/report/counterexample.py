@@ -62,6 +62,7 @@ class TextOptions:
     names: frozenset = frozenset()
     stub_data: frozenset = frozenset()
     root: str = ""        # files are shown relative to this folder (empty: as given)
+    handler_starts: frozenset = frozenset()   # (file, line) of each ERROR handler's start
 
 
 @dataclass(frozen=True)
@@ -102,7 +103,8 @@ def counterexample_lines(trace: Trace, options: TextOptions = TextOptions()) -> 
     if announced:
         lines.append(f"  (files relative to {root})")
     lines.append(head)
-    items = _prefix_items(trace, needed_steps(trace, options.names), options)
+    items = _prefix_items(trace, needed_steps(trace, options.names, options.handler_starts),
+                          options)
     hidden = {step.index for item in items if isinstance(item, SlicedAway) for step in item.steps}
     shown = [step for step in [*trace.prefix, *trace.cycle] if step.index not in hidden]
     read = options.names | frozenset().union(*map(reads_of, shown))
@@ -118,28 +120,22 @@ def counterexample_lines(trace: Trace, options: TextOptions = TextOptions()) -> 
 
 
 def _prefix_items(trace: Trace, needed: frozenset, options: TextOptions) -> list:
-    """The prefix's steps: each run of two or more the violation does not need as one
-    ``SlicedAway``, the stretches between them with their repeats folded."""
+    """The prefix's steps with their repeats folded, then each run of two or more shown
+    steps the violation does not need as one ``SlicedAway``."""
+    folded = _folded(trace.prefix, options)
     if options.full or not (trace.cycle or trace.ending):
-        return _folded(trace.prefix, options)     # an ending of unknown reads: all of it
+        return folded                          # an ending of unknown reads: all of it
     reader = "the loop or the property" if trace.cycle else "the error"
     items: list = []
-    stretch: list[TraceStep] = []
-    steps = list(trace.prefix)
-    start = 0
-    while start < len(steps):
-        end = start
-        while end < len(steps) and steps[end].index not in needed:
-            end += 1
-        if end - start >= 2:
-            items.extend(_folded(stretch, options))
-            stretch = []
-            items.append(SlicedAway(tuple(steps[start:end]), reader))
-            start = end
-        else:
-            stretch.append(steps[start])
-            start += 1
-    items.extend(_folded(stretch, options))
+    run: list[TraceStep] = []
+    for item in [*folded, None]:
+        if isinstance(item, TraceStep) and item.index not in needed:
+            run.append(item)
+            continue
+        items.extend(run if len(run) < 2 else [SlicedAway(tuple(run), reader)])
+        run = []
+        if item is not None:
+            items.append(item)
     return items
 
 
@@ -242,7 +238,12 @@ def step_lines(step: TraceStep, options: TextOptions = TextOptions()) -> list[st
         if transition.output:
             output = json.dumps(transition.output, ensure_ascii=False)
             lines.append(f"        output: {shorten(output, width)}")
-    lines.extend(f"        {change_text(change, options.full)}" for change in step.changes)
+    changes = step.changes
+    if not options.full and any(change.name == "program" for change in changes):
+        # the program stopped, ended or restarted: routine data that goes with it is not
+        # listed one by one (--full-trace lists it)
+        changes = tuple(change for change in changes if change.new is not None)
+    lines.extend(f"        {change_text(change, options.full)}" for change in changes)
     return lines
 
 

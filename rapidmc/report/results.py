@@ -112,7 +112,8 @@ def text_options(checked: PropertyResult, describer: TraceDescriber,
                  full: bool = False) -> TextOptions:
     """How ``checked``'s counterexample is written: the names its formula uses are shown."""
     names = frozenset(word.upper() for word in IDENTIFIER.findall(checked.formula))
-    return TextOptions(full, names, frozenset(getattr(describer, "stub_data", ())))
+    return TextOptions(full, names, frozenset(getattr(describer, "stub_data", ())),
+                       handler_starts=frozenset(getattr(describer, "handler_starts", ())))
 
 
 def vacuity_text(trigger: str) -> str:

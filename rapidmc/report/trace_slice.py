@@ -16,7 +16,9 @@ property's ``names`` -- and keeps:
   set-up ...) is kept with the data it reads, and so is the call that entered
   the routine of each kept step (its arguments may be references);
 * every step that is not a plain statement: the initial state, a stuck state,
-  a step with no source line, a step that changes ERRNO or the program's status.
+  a step with no source line, a step that changes ERRNO or the program's status,
+  chooses an input, or raises an error (the next step starts an ERROR handler:
+  the caller names the handlers' first lines).
 
 What a statement reads is taken from its source text (every identifier of
 every statement a merged step ran), what it writes from the data the step
@@ -104,9 +106,12 @@ def writes_of(step: TraceStep) -> frozenset:
     return frozenset(found)
 
 
-def is_control(step: TraceStep) -> bool:
-    """Whether the step decides the run's path, or is not a plain statement at all."""
+def is_control(step: TraceStep, raised: bool = False) -> bool:
+    """Whether the step decides the run's path (``raised``: the next step starts an ERROR
+    handler, so this one raised an error), or is not a plain statement at all."""
     if step.kind != TRANSITION or step.transition is None or not step.transition.location:
+        return True
+    if raised or step.transition.inputs:       # an error raised, an input chosen
         return True
     if any(change.name in ALWAYS_KEPT for change in step.changes):
         return True
@@ -117,7 +122,8 @@ def is_control(step: TraceStep) -> bool:
     return False
 
 
-def needed_steps(trace: Trace, names: Iterable[str] = ()) -> frozenset:
+def needed_steps(trace: Trace, names: Iterable[str] = (),
+                 handler_starts: frozenset = frozenset()) -> frozenset:
     """The indexes of the steps the violation depends on (see the module's docstring).
 
     One walk back over the prefix: a kept step adds what it reads and marks the calls
@@ -140,13 +146,22 @@ def needed_steps(trace: Trace, names: Iterable[str] = ()) -> frozenset:
     single = _plain_names(steps)
     for number in range(len(trace.prefix) - 1, -1, -1):
         step = steps[number]
-        if step.index in needed or is_control(step) or not read.isdisjoint(writes_of(step)):
+        if step.index in needed or is_control(step, _raises(steps, number, handler_starts)) \
+                or not read.isdisjoint(writes_of(step)):
             needed.add(step.index)
             reads = reads_of(step)
             read -= (_whole_assigned(step) & single) - reads
             read |= reads
             needed.update(call.index for call in _entering_calls(steps, number))
     return frozenset(needed)
+
+
+def _raises(steps: Sequence[TraceStep], number: int, handler_starts: frozenset) -> bool:
+    """Whether the step after ``steps[number]`` is the first statement of an ERROR handler."""
+    if number + 1 >= len(steps) or steps[number + 1].transition is None:
+        return False
+    following = steps[number + 1].transition
+    return (following.file, following.line) in handler_starts
 
 
 def whole_assignments(step: TraceStep) -> set:
