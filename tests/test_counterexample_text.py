@@ -88,3 +88,11 @@ def test_full_trace_shows_every_initial_value_and_step(monkeypatch):
     assert "repeat steps" in short and "repeat steps" not in full
     assert "--full-trace shows them" in short and "spare = [0,0," in full
     assert full.count("    step ") == 27 and "...]" not in full
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_both_engines_write_the_same_report(case, monkeypatch):
+    _, native_out, native_err = run(case, monkeypatch)
+    _, python_out, python_err = run(case, monkeypatch, "--engine", "python")
+    assert SECONDS.sub("<t> s)", python_out + python_err) == \
+        SECONDS.sub("<t> s)", native_out + native_err)
