@@ -496,6 +496,15 @@ def headline_lines(trace: Trace, options: TextOptions = TextOptions()) -> list[s
     if is_stub_module(last.transition.file) and last.stack:
         lines.append(f"    (in {last.stack[-1].routine}, a routine of the stubs module: "
                      "its body is a stand-in for the real one)")
+    raising = raising_steps(steps)
+    if raising is not steps:
+        first = raising[-1]
+        lines.append(f"    raised at step {first.index}, "
+                     f"{shown_location(first.transition, options.root)}:  "
+                     f"{shorten(first.transition.source, width)}")
+        if is_stub_module(first.transition.file) and first.stack:
+            lines.append(f"    (in {first.stack[-1].routine}, a routine of the stubs module: "
+                         "its body is a stand-in for the real one)")
     for name, value, origin in read_data(steps, options.stub_data):
         lines.append(f"    {name} = {shorten(value, None if options.full else WIDTH)}"
                      f"  ({origin})")
@@ -510,6 +519,7 @@ def read_data(steps: Sequence[TraceStep], stub_data: frozenset = frozenset()) ->
     that step.  Of a datum changed part by part, the part the line names
     (``pk.id``), else the part changed last.
     """
+    steps = raising_steps(steps)
     source = steps[-1].transition.source
     words = list(dict.fromkeys(word.upper() for word in IDENTIFIER.findall(read_part(source))))
     written = source.replace(" ", "").upper()
@@ -563,14 +573,31 @@ def _part_read(candidates: list[tuple], path: list[str], word: str) -> Optional[
     return None
 
 
-def stub_results(steps: Sequence[TraceStep]) -> list[tuple]:
-    """(``F()``, value, origin) of each stub function the failing statement called: the
-    steps between the statement's start and the failing step that run in a stubs module."""
+BARE_RAISE = re.compile(r"^RAISE\s*;", re.IGNORECASE)
+
+
+def raising_steps(steps: Sequence[TraceStep]) -> Sequence[TraceStep]:
+    """The steps up to the one that raised the error a bare ``RAISE;`` passes on (the latest
+    that set ERRNO); ``steps`` itself when the last step is no bare RAISE or none set it."""
     last = steps[-1].transition
+    if last is None or not BARE_RAISE.match(last.source):
+        return steps
+    for number in range(len(steps) - 2, 0, -1):
+        if any(change.name == "ERRNO" and change.new for change in steps[number].changes) \
+                and steps[number].transition is not None:
+            return steps[:number + 1]
+    return steps
+
+
+def stub_results(steps: Sequence[TraceStep]) -> list[tuple]:
+    """(``F()``, value, origin) of each stub function the failing statement called: of the
+    steps just before it that run deeper in the call stack (in the functions it called),
+    those in a stubs module."""
+    depth = len(steps[-1].stack)
     found = []
     for step in reversed(steps[:-1]):
         transition = step.transition
-        if transition is None or (transition.file, transition.line) == (last.file, last.line):
+        if transition is None or len(step.stack) <= depth:
             break
         returned = re.match(r"RETURN\s+(.*?);?$", transition.source, re.IGNORECASE)
         if returned and step.stack and is_stub_module(transition.file):
