@@ -197,12 +197,21 @@ def _check(args: argparse.Namespace) -> int:
         print(format_text(results, describer, args.full_trace))
         sys.stdout.flush()
         if warnings:
-            print(render_all(warnings), file=sys.stderr)
+            print(warnings_text(warnings), file=sys.stderr)
     if args.junit:
         from ..report.junit import format_junit
         write_report(args.junit, format_junit(results, describer, *_suite(args), warnings),
                      "JUnit report")
     return exit_code
+
+
+def warnings_text(warnings) -> str:
+    """The warnings as the counterexamples name files: relative to the current folder when
+    it holds them all, else to the folder that does, named once."""
+    from ..report.counterexample import display_root
+    root, named = display_root([w.span.file for w in warnings if w.span and w.span.file])
+    text = render_all(warnings, root)
+    return f"(files relative to {root})\n{text}" if named else text
 
 
 def _refuse_unwritable_targets(args: argparse.Namespace) -> None:
