@@ -51,6 +51,7 @@ FOLDED_WIDTH = 40      # each of them, at most
 ALWAYS_SHOWN = ("program", "ERRNO")
 IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 INDEX = re.compile(r"\{[^}]*\}")
+NOT_CALLED = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?![A-Za-z0-9_]|\s*\()")   # no function's name
 
 
 @dataclass(frozen=True)
@@ -521,7 +522,7 @@ def read_data(steps: Sequence[TraceStep], stub_data: frozenset = frozenset()) ->
     """
     steps = raising_steps(steps)
     source = steps[-1].transition.source
-    words = list(dict.fromkeys(word.upper() for word in IDENTIFIER.findall(read_part(source))))
+    words = list(dict.fromkeys(word.upper() for word in NOT_CALLED.findall(read_part(source))))
     written = source.replace(" ", "").upper()
     found = stub_results(steps)
     for word in words:
