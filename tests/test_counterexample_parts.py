@@ -100,3 +100,86 @@ def test_a_stretch_run_twice_or_with_other_lines_stays():
     assert fold_repeats(twice) == twice
     varied = [_step(1, 5), _step(2, 5, Change("n", "0", "1")), _step(3, 5)]
     assert fold_repeats(varied) == varied
+
+
+def test_files_are_shown_relative_to_the_current_folder_or_their_common_folder(
+        tmp_path, monkeypatch):
+    from rapidmc.report.counterexample import display_root, shown_location
+    (tmp_path / "here").mkdir()
+    monkeypatch.chdir(tmp_path / "here")
+    inside = str(tmp_path / "here" / "a" / "prog.mod")
+    assert display_root([inside]) == (str(tmp_path / "here"), False)
+    assert shown_location(TransitionInfo(inside, 7, ""), str(tmp_path / "here")) == \
+        "a/prog.mod:7"
+    backup = [str(tmp_path / "b" / "RAPID" / "T_ROB1" / "PROGMOD" / "m.mod"),
+              str(tmp_path / "b" / "RAPID" / "T_ROB1" / "SYSMOD" / "s.sys")]
+    root, named = display_root(backup)
+    assert named and root == str(tmp_path / "b" / "RAPID" / "T_ROB1")
+    assert shown_location(TransitionInfo(backup[1], 3, ""), root) == "SYSMOD/s.sys:3"
+
+
+def step(index: int, source: str, *changed: str) -> TraceStep:
+    return TraceStep(index, TRANSITION, TransitionInfo("p.mod", index, source),
+                     tuple(Change(name, "0", "1") for name in changed))
+
+
+def test_slice_keeps_what_the_failing_line_reads_and_every_branch():
+    from rapidmc.check.trace import Trace
+    from rapidmc.report.trace_slice import needed_steps
+    steps = (TraceStep(1, INITIAL, None, ()),
+             step(2, "k{1} := 1;", "k{1}"),            # not read: left out
+             step(3, "n := m + 1;", "n"),              # read by the branch at 5
+             step(4, "d := 0;", "d"),                  # read by the failing line
+             step(5, "IF n > 0 THEN", ),               # a branch: always kept
+             step(6, "x := k{2} + 1;", "x"),           # writes x, which nobody reads
+             step(7, "y := 1 / d;"))
+    trace = Trace(steps, (), None, "uncaught ERR_DIVZERO")
+    assert sorted(needed_steps(trace)) == [1, 3, 4, 5, 7]
+    # an atom that reads x keeps its writer
+    assert 6 in needed_steps(trace, {"X"})
+
+
+def test_slice_reads_the_arguments_of_an_instruction_with_an_optional_argument():
+    # ``\Str:=request`` is an argument, not an assignment: the socket is read too
+    from rapidmc.check.trace import Trace
+    from rapidmc.report.trace_slice import needed_steps
+    steps = (TraceStep(1, INITIAL, None, ()),
+             step(2, "SocketCreate client;", "client"),
+             step(3, "SocketConnect client, \"10.0.0.1\", 1025;", "client"),
+             step(4, "SocketReceive client \\Str:=request;"))
+    assert sorted(needed_steps(Trace(steps, (), None, "uncaught ERR_SOCK_TIMEOUT"))) == \
+        [1, 2, 3, 4]
+
+
+def test_slice_ends_the_need_for_a_datum_at_its_whole_assignment_only_where_unambiguous():
+    from rapidmc.check.trace import Trace
+    from rapidmc.report.trace_slice import needed_steps
+    steps = (TraceStep(1, INITIAL, None, ()),
+             step(2, "x := 1;", "x"),                  # overwritten at 3 before the read
+             step(3, "x := 2;", "x"),
+             step(4, "y := 1 / (x - 2);"))
+    assert sorted(needed_steps(Trace(steps, (), None, "uncaught ERR_DIVZERO"))) == [1, 3, 4]
+    # a routine's own x is in the trace too: the name may mean either, both writes stay
+    local = steps[:3] + (step(4, "x := 5;", "main.x"), step(5, "y := 1 / (x - 2);"))
+    assert sorted(needed_steps(Trace(local, (), None, "uncaught ERR_DIVZERO"))) == \
+        [1, 2, 3, 4, 5]
+
+
+def test_slice_keeps_a_step_that_raised_an_error_and_one_that_chose_an_input():
+    # the error handler at line 9 reads ERRNO; step 3 raised (ERRNO unchanged: the same
+    # error again), so it and the socket it reads stay shown
+    from rapidmc.check.trace import Trace
+    from rapidmc.report.trace_slice import needed_steps
+    steps = (TraceStep(1, INITIAL, None, ()),
+             step(2, "SocketCreate s;", "s"),
+             step(3, "SocketReceive s \\Str:=text;"),
+             TraceStep(9, TRANSITION, TransitionInfo("p.mod", 9, "RETRY;"), ()),
+             step(10, "k := 1;", "k"),
+             TraceStep(11, TRANSITION, TransitionInfo("p.mod", 11, "TPReadNum n, \"n?\";",
+                                                      {"TPReadNum": "0"}), ()),
+             step(12, "k := 2;", "k"),
+             step(13, "y := 1 / 0;"))
+    trace = Trace(steps, (), None, "uncaught ERR_DIVZERO")
+    assert sorted(needed_steps(trace)) == [1, 9, 11, 13]
+    assert sorted(needed_steps(trace, handler_starts=frozenset({("p.mod", 9)}))) == \
+        [1, 2, 3, 9, 11, 13]

@@ -88,3 +88,25 @@ def test_full_trace_shows_every_initial_value_and_step(monkeypatch):
     assert "repeat steps" in short and "repeat steps" not in full
     assert "--full-trace shows them" in short and "spare = [0,0," in full
     assert full.count("    step ") == 27 and "...]" not in full
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_both_engines_write_the_same_report(case, monkeypatch):
+    _, native_out, native_err = run(case, monkeypatch)
+    _, python_out, python_err = run(case, monkeypatch, "--engine", "python")
+    assert SECONDS.sub("<t> s)", python_out + python_err) == \
+        SECONDS.sub("<t> s)", native_out + native_err)
+
+
+def test_files_given_by_absolute_path_are_shown_relative_to_the_current_folder(monkeypatch):
+    # the steps, the headline and the warnings name tests/counterexamples/<case>/prog.mod
+    # as counterexamples/many_unreached/prog.mod from tests/, never by its absolute path
+    monkeypatch.chdir(CASES_DIR.parent)
+    program = CASES_DIR / "many_unreached" / "prog.mod"
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        main(["check", str(program), "--quiet"])
+    text = out.getvalue() + err.getvalue()
+    assert str(CASES_DIR) not in text
+    assert "counterexamples/many_unreached/prog.mod:" in out.getvalue()
+    assert err.getvalue().startswith("counterexamples/many_unreached/prog.mod:")

@@ -33,13 +33,18 @@ STUCK_SOURCE = "(no statement can execute: the program is stuck and stays in thi
 
 @dataclass(frozen=True)
 class TransitionInfo:
-    """What one model transition did, in source terms."""
+    """What one model transition did, in source terms.
+
+    ``statements``: the source of every statement a transition that ran several (a merged
+    step) ran, in order; empty when it ran one (``source`` is then all of it).
+    """
 
     file: Optional[str]
     line: Optional[int]
     source: str
     inputs: Mapping[str, str] = field(default_factory=dict)
     output: str = ""
+    statements: tuple[str, ...] = ()
 
     @property
     def location(self) -> str:

@@ -227,7 +227,7 @@ def _check(args: argparse.Namespace) -> int:
         print(format_text(results, describer, args.full_trace))
         sys.stdout.flush()
         if warnings:
-            print(render_all(warnings), file=sys.stderr)
+            print(warnings_text(warnings), file=sys.stderr)
     if args.junit:
         from ..report.junit import format_junit
         write_report(args.junit, format_junit(gated_results, describer, *_suite(args),
@@ -259,7 +259,7 @@ def _check_every_entry(args: argparse.Namespace) -> int:
                         for entry, results, describer in tables))
         sys.stdout.flush()
         if warnings:
-            print(render_all(warnings), file=sys.stderr)
+            print(warnings_text(warnings), file=sys.stderr)
     if args.junit:
         from ..report.junit import format_junit_entries
         write_report(args.junit, format_junit_entries(tables, *_suite(args), warnings),
@@ -274,6 +274,15 @@ def _new_findings(args: argparse.Namespace, report: api.CheckReport, known):
                          args.fail_on_vacuous)
     new, old = baseline_options.new_findings(args, "check", [f for f, _ in pairs], pairs, known)
     return [finding for finding, _ in new], {id(source) for _, source in old}
+
+
+def warnings_text(warnings) -> str:
+    """The warnings as the counterexamples name files: relative to the current folder when
+    it holds them all, else to the folder that does, named once."""
+    from ..report.counterexample import display_root
+    root, named = display_root([w.span.file for w in warnings if w.span and w.span.file])
+    text = render_all(warnings, root)
+    return f"(files relative to {root})\n{text}" if named else text
 
 
 def _refuse_unwritable_targets(args: argparse.Namespace) -> None:

@@ -17,6 +17,8 @@ distributed search lost a worker (no verdict).
 """
 from __future__ import annotations
 
+import os
+
 from dataclasses import dataclass, field
 from typing import Iterable, Optional
 
@@ -214,14 +216,16 @@ class SourceCache:
         return None if lines is None else tuple(lines)
 
 
-def render(diagnostic: Diagnostic) -> str:
-    """Render one diagnostic as text: location, message, code, source line, caret."""
+def render(diagnostic: Diagnostic, root: str = "") -> str:
+    """Render one diagnostic as text: location, message, code, source line, caret; the
+    file relative to ``root`` when one is given."""
     head = f"{diagnostic.severity}: {diagnostic.message} [{diagnostic.code.code}]"
     span = diagnostic.span
     if span is None or span.line <= 0:
         out = [f"rapidmc: {head}"]
     else:
-        out = [f"{span.file}:{span.line}:{span.column}: {head}"]
+        file = os.path.relpath(os.path.abspath(span.file), root) if root else span.file
+        out = [f"{file}:{span.line}:{span.column}: {head}"]
         source = SourceCache.line(span.file, span.line)
         if source is not None:
             shown = source.expandtabs(1).rstrip()
@@ -250,5 +254,5 @@ def places_text(places) -> str:
     return f"{count} more place{'s' if count != 1 else ''}: {'; '.join(parts)}"
 
 
-def render_all(diagnostics: Iterable[Diagnostic]) -> str:
-    return "\n".join(render(d) for d in diagnostics)
+def render_all(diagnostics: Iterable[Diagnostic], root: str = "") -> str:
+    return "\n".join(render(d, root) for d in diagnostics)

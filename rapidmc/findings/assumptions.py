@@ -32,7 +32,7 @@ from typing import Iterable, Iterator, Optional
 from .. import ast
 from ..check.result import SearchResult
 from ..diagnostics import SourceCache
-from ..load.stubs.module_text import STUB_MARKER
+from ..load.stubs.module_text import is_stub_module
 from ..model.reduction.merging import executed_spans
 from ..load.shared_data import data_uses, writes_data_by_name
 from ..check.result import VIOLATED
@@ -124,20 +124,12 @@ def _stub_files(program: Program) -> frozenset:
     """The files of the program that ``rapidmc stubs`` wrote (its marker in the header)."""
     files = {_file(routine.span) for routine in program.routines} | \
         {_file(data.span) for data in program.globals}
-    return frozenset(f for f in files if f and _is_stub_file(f))
+    return frozenset(f for f in files if f and is_stub_module(f))
 
 
 def _file(span) -> Optional[str]:
     """The file of a declaration (None for the controller's own data, declared nowhere)."""
     return span.file if span is not None else None
-
-
-def _is_stub_file(file: str) -> bool:
-    for number in range(1, 4):
-        line = SourceCache.line(file, number)
-        if line is not None and STUB_MARKER in line:
-            return True
-    return False
 
 
 def _stubs(program: Program, stub_files: frozenset) -> Iterator[Assumption]:

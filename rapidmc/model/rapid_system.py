@@ -10,6 +10,7 @@ is printed.
 from __future__ import annotations
 
 import copy
+import re
 from typing import Hashable, Mapping, Optional, Sequence
 
 from pyrsistent import pvector
@@ -18,9 +19,10 @@ from ..check import TransitionInfo
 from ..check.trace import CallFrame
 from ..check.result import LassoStep, SearchResult
 from ..diagnostics import TRACE_REPLAY, SourceCache, error
-from ..load.stubs.module_text import STUB_MARKER
+from ..load.stubs.module_text import is_stub_module
 from ..semantics.program import (ENVIRONMENT_NAMESPACE,
                                 PROGRAM_NAMESPACE, Program)
+from ..semantics.scope import LOCAL_DATA
 from ..semantics.types import POS, ArrayType
 from ..semantics.library.tasks import SyncWait
 from ..semantics.state import ENDED, FAILED, RUNNING, STOPPED, State
@@ -32,7 +34,7 @@ from ..semantics.values import format_num, format_value
 from ..semantics.errors import errno_name
 from .reduction import NO_PLAN, Plan
 from .task_atoms import task_qualifier
-from .value_text import OPAQUE_KINDS, untyped_text, value_text
+from .value_text import DESCRIBED_TYPES, OPAQUE_KINDS, untyped_text, value_text
 from .reduction.expansion import expand_lasso
 from .reduction.merging import executed_spans
 
@@ -264,9 +266,21 @@ def _without_inputs(state: State, free: list) -> State:
 
 
 def _shown(rapid_type) -> bool:
-    """Whether data of this type has a value to show (not a signal, clock, syncident ...)."""
+    """Whether data of this type has a value to show: not a signal, clock, syncident ...,
+    but a socket or an I/O device, whose state RAPID names (``<socketdev: connected>``)."""
     element = rapid_type.element if isinstance(rapid_type, ArrayType) else rapid_type
-    return getattr(element, "kind", "") not in OPAQUE_KINDS
+    return getattr(element, "kind", "") not in OPAQUE_KINDS or \
+        getattr(element, "key", "") in DESCRIBED_TYPES
+
+
+def _local_types(routine) -> dict:
+    """The declared type of each frame slot of ``routine``'s parameters and data (a FOR
+    variable or a temporary has none: it shows by what it holds)."""
+    scope = getattr(routine, "scope", None)
+    if scope is None:
+        return {}
+    return {symbol.slot: symbol.type for symbol in scope.names.values()
+            if symbol.kind == LOCAL_DATA and symbol.type is not None}
 
 
 class RapidDescriber:
@@ -289,6 +303,13 @@ class RapidDescriber:
         self._declared_in = {g.slot: g.span.file if g.span else None for g in program.globals}
         self._stub_data: Optional[frozenset] = None
         self._texts: dict[int, tuple] = {}      # slot -> (value, its text), the latest
+        self._slot_types: dict[int, dict] = {}  # routine index -> its frame slots' types
+
+    def _local_types(self, routine) -> dict:
+        types = self._slot_types.get(routine.index)
+        if types is None:
+            types = self._slot_types[routine.index] = _local_types(routine)
+        return types
 
     def _qualified(self, data) -> str:
         """env.name for environment data; on a controller of several tasks <task>.name for a
@@ -317,10 +338,22 @@ class RapidDescriber:
         """The shown names of data declared by a module of ``rapidmc stubs`` (a stub's value)."""
         if self._stub_data is None:
             stubs = {file for file in {g.span.file for g in self.program.globals if g.span}
-                     if any(STUB_MARKER in line for line in (SourceCache.lines(file) or ())[:3])}
+                     if is_stub_module(file)}
             self._stub_data = frozenset(name for slot, name, _ in self.globals + self.environment
                                         if self._declared_in[slot] in stubs)
         return self._stub_data
+
+    @property
+    def handler_starts(self) -> frozenset:
+        """(file, line) of the first statement of every ERROR handler: a step that the next
+        step follows there raised an error (a counterexample keeps it shown)."""
+        starts = set()
+        for routine in self.program.routines:
+            if 0 <= routine.handler_pc < len(routine.code):
+                span = routine.code[routine.handler_pc].span
+                if span is not None:
+                    starts.add((span.file, span.line))
+        return frozenset(starts)
 
     def describe_state(self, state: State) -> Mapping[str, str]:
         view: dict[str, str] = {}
@@ -330,13 +363,15 @@ class RapidDescriber:
         stacks = (state.frames,) + state.tasks
         for frame in (frame for stack in stacks for frame in stack):
             routine = self.program.routines[frame.routine]
-            for name, value in zip(routine.local_names, frame.locals):
+            for slot, (name, value) in enumerate(zip(routine.local_names, frame.locals)):
                 if name.startswith("<"):
                     continue                       # FOR bounds, temporaries
                 if isinstance(value, tuple) and len(value) == 3 and isinstance(value[0], int) \
                         and isinstance(value[2], tuple):
                     continue                       # a reference parameter
-                view[self._routine_prefix(routine) + name] = untyped_text(value)
+                rapid_type = self._local_types(routine).get(slot)
+                view[self._routine_prefix(routine) + name] = untyped_text(value) \
+                    if rapid_type is None else value_text(value, rapid_type)
         for signal in self.signals:
             view[f"signal {signal.name}"] = format_num(state.io[signal.index])
         view["robot TCP"] = value_text(state.robot[0][0], POS)
@@ -386,15 +421,47 @@ class RapidDescriber:
     def describe_transition(self, label) -> TransitionInfo:
         choices, span, output = label
         inputs = {name: _choice_text(value) for name, value in choices}
-        span = executed_spans(span)[0]       # merged steps not expanded: the first one
+        spans = executed_spans(span)
+        span = spans[0]                      # a merged step is shown at its first statement
         if span is None:
             source = "(the program has stopped: this state repeats forever)" if not choices \
                 else "(the program continues after the Stop)" if inputs.get(OPERATOR_CHOICE) \
                 else ""
             return TransitionInfo(None, None, source, inputs, output)
-        text = SourceCache.line(span.file, span.line)
-        source = text.strip() if text is not None else ""
-        return TransitionInfo(span.file, span.line, source, inputs, output)
+        source = _statement_text(span)
+        statements = tuple(_whole_statement(s) for s in spans)
+        if statements == (source,):
+            statements = ()
+        return TransitionInfo(span.file, span.line, source, inputs, output, statements)
+
+
+def _statement_text(span) -> str:
+    """The source line a statement starts on, stripped (empty when the file is gone)."""
+    if span is None:
+        return ""
+    text = SourceCache.line(span.file, span.line)
+    return text.strip() if text is not None else ""
+
+
+def _whole_statement(span) -> str:
+    """A statement's text over all its lines: a simple statement's up to its ``;``, a
+    compound statement's head up to its THEN or DO (its body runs as steps of its own)."""
+    if span is None:
+        return ""
+    lines = []
+    for number in range(span.line, max(span.end_line, span.line) + 1):
+        text = SourceCache.line(span.file, number)
+        if text is None:
+            break
+        code = text.split("!", 1)[0].strip() if '"' not in text else text.strip()
+        lines.append(code)
+        if code.endswith(";") or HEAD_END.search(code) or \
+                (number == span.line and code.upper().startswith("TEST ")):
+            break
+    return " ".join(lines)
+
+
+HEAD_END = re.compile(r"\b(THEN|DO)$", re.IGNORECASE)
 
 
 def fault_text(fault) -> str:

@@ -20,6 +20,8 @@ from typing import Any
 
 from ..check.trace import Composite
 from ..semantics.types import DNUM, NON_VALUE, RECORD, SEMI_VALUE, ArrayType
+from ..semantics.library.sockets import (SOCKET_BOUND, SOCKET_CLOSED, SOCKET_CONNECTED,
+                                         SOCKET_CREATED, SOCKET_LISTENING)
 from ..semantics.values import format_value
 
 OPAQUE_KINDS = (NON_VALUE, SEMI_VALUE)
@@ -52,10 +54,38 @@ def untyped_text(value: Any, kind: str = "num") -> str:
 
 
 def placeholder(value: Any, type_name: str) -> str:
-    """``<rawbytes>``, ``<rawbytes: 4 bytes>``, ``<syncident>``: data without a literal."""
+    """``<rawbytes>``, ``<rawbytes: 4 bytes>``, ``<syncident>``: data without a literal; a
+    socket or an I/O device with its state (``<socketdev: connected>``)."""
+    describe = DESCRIBED_TYPES.get(type_name.upper())
+    if describe is not None:
+        return f"<{type_name}: {describe(value)}>"
     if isinstance(value, bytes) and value:
         return f"<{type_name}: {len(value)} byte{'s' if len(value) != 1 else ''}>"
     return f"<{type_name}>"
+
+
+# a socket's status as SocketGetStatus names it (SOCKET_CONNECTED: connected)
+SOCKET_STATES = {SOCKET_CREATED: "created", SOCKET_CONNECTED: "connected",
+                 SOCKET_BOUND: "bound", SOCKET_LISTENING: "listening", SOCKET_CLOSED: "closed"}
+
+
+def _socket_state(value: Any) -> str:
+    """``connected``; a socket never created (or closed and gone) is ``closed``."""
+    if isinstance(value, tuple) and value:
+        state = SOCKET_STATES.get(value[0], "closed")
+        waiting = value[1] if len(value) > 1 else b""
+        return f"{state}, {len(waiting)} bytes unread" if waiting else state
+    return "closed"
+
+
+def _device_state(value: Any) -> str:
+    """``open "HOME:/log.txt" (write)`` or ``closed``."""
+    if isinstance(value, tuple) and len(value) >= 2:
+        return f"open {format_value(str(value[0]))} ({value[1]})"
+    return "closed"
+
+
+DESCRIBED_TYPES = {"SOCKETDEV": _socket_state, "IODEV": _device_state}
 
 
 def _array(value: Any, array_type: ArrayType) -> str:

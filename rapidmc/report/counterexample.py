@@ -12,7 +12,13 @@
   (``[[932.4,1557.5,2189.5],...]``);
 * a stretch of steps that repeats the lines just before it (a retry loop,
   a FOR loop filling an array) folded into one line with the values it
-  leaves behind.
+  leaves behind;
+* a run of steps the violation does not depend on (``trace_slice``: they
+  write only data that no step kept, no error line and no atom reads) told
+  in one line (``steps 2-18: waypoints{1..17} assigned, not read by the error``).
+
+Files are named relative to the current folder when they are under it, else
+relative to the folder that holds them all, named once above the steps.
 
 ``TextOptions(full=True)`` (``check --full-trace``) prints every initial
 value, every value in full and every step.  JSON and HTML always carry every
@@ -24,11 +30,14 @@ step and full values; the names are the same.
 from __future__ import annotations
 
 import json
+import os
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Iterable, Optional, Sequence, Union
 
-from ..check.trace import INITIAL, Change, Trace, TraceStep
+from ..check.trace import INITIAL, Change, Trace, TraceStep, TransitionInfo
+from ..load.stubs.module_text import is_stub_module
+from .trace_slice import needed_steps, read_part, reads_of, whole_assignments
 
 LOOP_STARTS = "-- loop starts here (repeats forever) --"
 WIDTH = 100            # a value's text in a step, at most (then shortened)
@@ -37,10 +46,12 @@ SOURCE_WIDTH = 160     # a source line or FlexPendant output
 LONGEST_PERIOD = 40    # the longest stretch of steps looked for as a repeat
 FEWEST_REPEATS = 3     # a stretch folds when it runs at least this many times in a row
 NET_SHOWN = 4          # values listed after a folded stretch (then a count)
+SLICED_SHOWN = 6       # data named in a line of steps left out (then a count)
 FOLDED_WIDTH = 40      # each of them, at most
 ALWAYS_SHOWN = ("program", "ERRNO")
 IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 INDEX = re.compile(r"\{[^}]*\}")
+NOT_CALLED = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?![A-Za-z0-9_]|\s*\()")   # no function's name
 
 
 @dataclass(frozen=True)
@@ -51,6 +62,8 @@ class TextOptions:
     full: bool = False
     names: frozenset = frozenset()
     stub_data: frozenset = frozenset()
+    root: str = ""        # files are shown relative to this folder (empty: as given)
+    handler_starts: frozenset = frozenset()   # (file, line) of each ERROR handler's start
 
 
 @dataclass(frozen=True)
@@ -61,6 +74,15 @@ class Folded:
     last: int
     times: int
     hidden: tuple[TraceStep, ...]
+
+
+@dataclass(frozen=True)
+class SlicedAway:
+    """Steps ``steps`` (two or more in a row) that the violation does not depend on, ``reader``
+    naming what does (``the error``)."""
+
+    steps: tuple[TraceStep, ...]
+    reader: str
 
 
 # --- the whole counterexample ------------------------------------------------------
@@ -74,9 +96,20 @@ def counterexample_lines(trace: Trace, options: TextOptions = TextOptions()) -> 
                 f"then a loop of {_steps(len(trace.cycle))}")
     else:
         head = f"  counterexample: {_steps(count)}"
-    lines = headline_lines(trace, options) + [head]
-    read = options.names | read_names(trace)
-    for item in _folded(trace.prefix, options):
+    if not options.full:
+        trace = chosen_inputs_only(trace)
+    root, announced = display_root(trace_files(trace))
+    options = replace(options, root=root)
+    lines = headline_lines(trace, options)
+    if announced:
+        lines.append(f"  (files relative to {root})")
+    lines.append(head)
+    items = _prefix_items(trace, needed_steps(trace, options.names, options.handler_starts),
+                          options)
+    hidden = {step.index for item in items if isinstance(item, SlicedAway) for step in item.steps}
+    shown = [step for step in [*trace.prefix, *trace.cycle] if step.index not in hidden]
+    read = options.names | frozenset().union(*map(reads_of, shown))
+    for item in items:
         lines.extend(_item_lines(item, options, read))
     if trace.cycle:
         lines.append("  " + LOOP_STARTS)
@@ -87,6 +120,86 @@ def counterexample_lines(trace: Trace, options: TextOptions = TextOptions()) -> 
     return lines
 
 
+def _prefix_items(trace: Trace, needed: frozenset, options: TextOptions) -> list:
+    """The prefix's steps with their repeats folded, then each run of two or more shown
+    steps the violation does not need as one ``SlicedAway``."""
+    folded = _folded(trace.prefix, options)
+    if options.full or not (trace.cycle or trace.ending):
+        return folded                          # an ending of unknown reads: all of it
+    reader = "the loop or the property" if trace.cycle else "the error"
+    items: list = []
+    run: list[TraceStep] = []
+    for item in [*folded, None]:
+        if isinstance(item, TraceStep) and item.index not in needed:
+            run.append(item)
+            continue
+        items.extend(run if len(run) < 2 else [SlicedAway(tuple(run), reader)])
+        run = []
+        if item is not None:
+            items.append(item)
+    return items
+
+
+def trace_files(trace: Trace) -> list[str]:
+    """The files the trace's steps are in, in order of first use."""
+    steps = [*trace.prefix, *trace.cycle, *([trace.closing] if trace.closing else [])]
+    return list(dict.fromkeys(step.transition.file for step in steps
+                              if step.transition is not None and step.transition.file))
+
+
+def display_root(files: Sequence[str]) -> tuple[str, bool]:
+    """The folder files are shown relative to, and whether it must be named: the current
+    folder when it holds them all (not named), else the deepest folder that holds them all
+    (named once), else none (files as given)."""
+    absolute = [os.path.abspath(file) for file in files]
+    if not absolute:
+        return "", False
+    here = os.getcwd()
+    if all(os.path.commonpath([here, file]) == here for file in absolute):
+        return here, False
+    try:
+        common = os.path.commonpath([os.path.dirname(file) for file in absolute])
+    except ValueError:                         # different drives
+        return "", False
+    if common == os.path.dirname(common):      # only the file system's root: no gain
+        return "", False
+    return common, True
+
+
+def shown_location(transition: TransitionInfo, root: str) -> str:
+    """``file:line`` with the file relative to ``root`` (as given when ``root`` is empty)."""
+    location = transition.location
+    if not root or not transition.file:
+        return location
+    relative = os.path.relpath(os.path.abspath(transition.file), root)
+    return relative + location[len(transition.file):]
+
+
+def chosen_inputs_only(trace: Trace) -> Trace:
+    """The trace with each input shown at the step that chose it: an input the step just
+    before chose with the same value (a signal an interrupt watches is chosen at every
+    step) is left out, unless the step's statement names it."""
+    previous: dict = {}
+
+    def kept(step: Optional[TraceStep]) -> Optional[TraceStep]:
+        nonlocal previous
+        transition = step.transition if step is not None else None
+        if transition is None:
+            previous = {}
+            return step
+        named = reads_of(step)
+        inputs = {name: value for name, value in transition.inputs.items()
+                  if previous.get(name) != value or name.upper() in named}
+        previous = dict(transition.inputs)
+        if len(inputs) == len(transition.inputs):
+            return step
+        return replace(step, transition=replace(transition, inputs=inputs))
+
+    prefix = tuple(kept(step) for step in trace.prefix)
+    cycle = tuple(kept(step) for step in trace.cycle)
+    return replace(trace, prefix=prefix, cycle=cycle, closing=kept(trace.closing))
+
+
 def _steps(count: int) -> str:
     return f"{count} step" if count == 1 else f"{count} steps"
 
@@ -95,10 +208,12 @@ def _folded(steps: Sequence[TraceStep], options: TextOptions) -> list:
     return list(steps) if options.full else fold_repeats(steps)
 
 
-def _item_lines(item: Union[TraceStep, Folded], options: TextOptions,
+def _item_lines(item: Union[TraceStep, Folded, SlicedAway], options: TextOptions,
                 read: frozenset) -> list[str]:
     if isinstance(item, Folded):
         return [folded_line(item)]
+    if isinstance(item, SlicedAway):
+        return [sliced_line(item)]
     if item.kind == INITIAL and not options.full:
         return initial_lines(item, read)
     return step_lines(item, options)
@@ -115,7 +230,7 @@ def step_lines(step: TraceStep, options: TextOptions = TextOptions()) -> list[st
         head = "initial state"
     else:
         source = shorten(transition.source, width)
-        location = transition.location
+        location = shown_location(transition, options.root)
         head = f"{location}  {source}" if location else source
     lines = [f"    step {step.index}  {head}".rstrip()]
     if transition is not None:
@@ -124,7 +239,12 @@ def step_lines(step: TraceStep, options: TextOptions = TextOptions()) -> list[st
         if transition.output:
             output = json.dumps(transition.output, ensure_ascii=False)
             lines.append(f"        output: {shorten(output, width)}")
-    lines.extend(f"        {change_text(change, options.full)}" for change in step.changes)
+    changes = step.changes
+    if not options.full and any(change.name == "program" for change in changes):
+        # the program stopped, ended or restarted: routine data that goes with it is not
+        # listed one by one (--full-trace lists it)
+        changes = tuple(change for change in changes if change.new is not None)
+    lines.extend(f"        {change_text(change, options.full)}" for change in changes)
     return lines
 
 
@@ -181,9 +301,11 @@ def datum_of(name: str, words: Sequence[str]) -> str:
     return parts[0] if parts[0] in words or len(parts) == 1 else parts[1]
 
 
-def read_names(trace: Trace) -> frozenset:
-    """The identifiers of every step's source line, upper case."""
-    steps = [*trace.prefix, *trace.cycle, *([trace.closing] if trace.closing else [])]
+def read_names(trace: Trace, steps: Optional[Sequence[TraceStep]] = None) -> frozenset:
+    """The identifiers of the source lines of ``steps`` (default: every step), upper case."""
+    if steps is None:
+        steps = [*trace.prefix, *trace.cycle]
+    steps = [*steps, *([trace.closing] if trace.closing else [])]
     return frozenset(word.upper() for step in steps if step.transition is not None
                      for word in IDENTIFIER.findall(step.transition.source))
 
@@ -307,6 +429,56 @@ def net_changes(steps: Iterable[TraceStep]) -> list[Change]:
             if new != first_old[name] and new is not None]
 
 
+# --- steps the violation does not depend on ---------------------------------------
+
+
+def sliced_line(sliced: SlicedAway) -> str:
+    """``-- steps 2-18: waypoints{1..17} assigned, not read by the error --``."""
+    steps = sliced.steps
+    names = list(dict.fromkeys(change.name for step in steps for change in step.changes))
+    moved = "robot TCP" in names
+    entries = _name_ranges([name for name in names if name != "robot TCP"])
+    what = []
+    if entries:
+        more = len(entries) - SLICED_SHOWN
+        what.append(", ".join(entries[:SLICED_SHOWN]) + (f" and {more} more" if more > 0
+                                                        else "") + " assigned")
+    if moved:
+        what.append("the robot moved")
+    written = sum(1 for step in steps if step.transition and step.transition.output)
+    if written:
+        what.append(f"{written} FlexPendant {'line' if written == 1 else 'lines'} written")
+    done = ", ".join(what) if what else "nothing changed"
+    return f"    -- steps {steps[0].index}-{steps[-1].index}: {done}, not read by " \
+           f"{sliced.reader} (--full-trace shows them) --"
+
+
+def _name_ranges(names: Sequence[str]) -> list[str]:
+    """Names with the elements of one array put together: ``k{1..3}``, ``reg{2,5}``."""
+    groups: dict[str, list[str]] = {}
+    for name in names:
+        groups.setdefault(INDEX.sub("{}", name), []).append(name)
+    entries = []
+    for shape, members in groups.items():
+        numbers = [_single_index(name) for name in members]
+        if len(members) == 1 or shape.count("{}") != 1 or None in numbers:
+            entries.extend(members)
+            continue
+        ordered = sorted(set(numbers))
+        head, tail = shape.split("{}", 1)
+        if ordered == list(range(ordered[0], ordered[-1] + 1)):
+            entries.append(f"{head}{{{ordered[0]}..{ordered[-1]}}}{tail}")
+        else:
+            entries.append(f"{head}{{{','.join(map(str, ordered))}}}{tail}")
+    return entries
+
+
+def _single_index(name: str) -> Optional[int]:
+    found = INDEX.findall(name)
+    text = found[0][1:-1] if len(found) == 1 else ""
+    return int(text) if text.isdigit() else None
+
+
 # --- the headline ------------------------------------------------------------------
 
 
@@ -320,8 +492,20 @@ def headline_lines(trace: Trace, options: TextOptions = TextOptions()) -> list[s
     if last.transition is None or not last.transition.location:
         return lines
     width = None if options.full else SOURCE_WIDTH
-    lines.append(f"    at step {last.index}, {last.transition.location}:  "
+    lines.append(f"    at step {last.index}, {shown_location(last.transition, options.root)}:  "
                  f"{shorten(last.transition.source, width)}")
+    if is_stub_module(last.transition.file) and last.stack:
+        lines.append(f"    (in {last.stack[-1].routine}, a routine of the stubs module: "
+                     "its body is a stand-in for the real one)")
+    raising = raising_steps(steps)
+    if raising is not steps:
+        first = raising[-1]
+        lines.append(f"    raised at step {first.index}, "
+                     f"{shown_location(first.transition, options.root)}:  "
+                     f"{shorten(first.transition.source, width)}")
+        if is_stub_module(first.transition.file) and first.stack:
+            lines.append(f"    (in {first.stack[-1].routine}, a routine of the stubs module: "
+                         "its body is a stand-in for the real one)")
     for name, value, origin in read_data(steps, options.stub_data):
         lines.append(f"    {name} = {shorten(value, None if options.full else WIDTH)}"
                      f"  ({origin})")
@@ -336,25 +520,92 @@ def read_data(steps: Sequence[TraceStep], stub_data: frozenset = frozenset()) ->
     that step.  Of a datum changed part by part, the part the line names
     (``pk.id``), else the part changed last.
     """
+    steps = raising_steps(steps)
     source = steps[-1].transition.source
-    words = list(dict.fromkeys(word.upper() for word in IDENTIFIER.findall(read_part(source))))
+    words = list(dict.fromkeys(word.upper() for word in NOT_CALLED.findall(read_part(source))))
     written = source.replace(" ", "").upper()
-    found = []
+    found = stub_results(steps)
     for word in words:
         candidates = _latest_values(steps, word, words, stub_data)
         named = [c for c in candidates if INDEX.sub("", c[0]).replace(" ", "").upper() in written
                  and "." in c[0] and datum_of(c[0], words) == data_names(c[0])[0]]
-        if candidates:
-            found.append((named or candidates)[0])
+        if named:
+            found.append(named[0])
+        elif candidates:
+            found.append(_part_read(candidates, _component_path(source, word), word) or candidates[0])
     return found
 
 
-def read_part(source: str) -> str:
-    """What a line reads: of an assignment, the indexes of its target and its value."""
-    target, assigns, value = source.partition(":=")
-    if not assigns or '"' in target:
-        return source
-    return " ".join(re.findall(r"\{([^}]*)\}", target)) + " " + value
+def _component_path(source: str, word: str) -> list[str]:
+    """The components the line reads of the datum ``word``: ``raw_message.head.length``
+    gives ``[".head", ".length"]`` (none when the line reads it whole or not by name)."""
+    match = re.search(r"\b" + re.escape(word) + r"((?:\s*\.\s*[A-Za-z][A-Za-z0-9_]*)+)",
+                      source, re.IGNORECASE)
+    if match is None:
+        return []
+    return ["." + part.strip() for part in match.group(1).split(".")[1:]]
+
+
+def _part_read(candidates: list[tuple], path: list[str], word: str) -> Optional[tuple]:
+    """Of a datum's latest values (latest first), the value of the component ``path`` the
+    line reads: from the latest value that holds that component, taken down to it; the
+    latest change inside it as it is; None when the line reads no path or an array element
+    is in the way (the old choice stands)."""
+    if not path:
+        return None
+    for name, value, origin in candidates:
+        if "{" in name:
+            return None
+        parts = name.split(".")
+        at = next((n for n, part in enumerate(parts) if part.upper() == word), None)
+        if at is None:
+            return None
+        own = ["." + part for part in parts[at + 1:]]
+        if [part.upper() for part in own] == [part.upper() for part in path[:len(own)]]:
+            for part in path[len(own):]:
+                value = {suffix.upper(): text for suffix, text in
+                         getattr(value, "parts", ())}.get(part.upper())
+                if value is None:
+                    return None
+            return (".".join(parts[:at + 1]) + "".join(path[len(own):]) if not own else
+                    name + "".join(path[len(own):]), value, origin)
+        if [part.upper() for part in path] == [part.upper() for part in own[:len(path)]]:
+            return (name, value, origin)       # a change inside the part read
+    return None
+
+
+BARE_RAISE = re.compile(r"^RAISE\s*;", re.IGNORECASE)
+
+
+def raising_steps(steps: Sequence[TraceStep]) -> Sequence[TraceStep]:
+    """The steps up to the one that raised the error a bare ``RAISE;`` passes on (the latest
+    that set ERRNO); ``steps`` itself when the last step is no bare RAISE or none set it."""
+    last = steps[-1].transition
+    if last is None or not BARE_RAISE.match(last.source):
+        return steps
+    for number in range(len(steps) - 2, 0, -1):
+        if any(change.name == "ERRNO" and change.new for change in steps[number].changes) \
+                and steps[number].transition is not None:
+            return steps[:number + 1]
+    return steps
+
+
+def stub_results(steps: Sequence[TraceStep]) -> list[tuple]:
+    """(``F()``, value, origin) of each stub function the failing statement called: of the
+    steps just before it that run deeper in the call stack (in the functions it called),
+    those in a stubs module."""
+    depth = len(steps[-1].stack)
+    found = []
+    for step in reversed(steps[:-1]):
+        transition = step.transition
+        if transition is None or len(step.stack) <= depth:
+            break
+        returned = re.match(r"RETURN\s+(.*?);?$", transition.source, re.IGNORECASE)
+        if returned and step.stack and is_stub_module(transition.file):
+            found.append((f"{step.stack[-1].routine}()", returned.group(1).strip(),
+                          f"returned by the stub at {os.path.basename(transition.file)}:"
+                          f"{transition.line}"))
+    return found[::-1]
 
 
 def _latest_values(steps: Sequence[TraceStep], word: str, words: Sequence[str],
@@ -362,8 +613,13 @@ def _latest_values(steps: Sequence[TraceStep], word: str, words: Sequence[str],
     """The latest values of the datum named ``word`` (one of the line's ``words``) and of its
     parts before the last step, latest first, up to the datum's own: (name, value, origin)."""
     found: dict[str, tuple] = {}
+    rewritten = None        # the latest step that assigned the datum whole without changing it
     for step in reversed(steps):
         transition = step.transition
+        if rewritten is None and not found and step is not steps[-1] and \
+                word in whole_assignments(step) and \
+                not any(datum_of(change.name, words) == word for change in step.changes):
+            rewritten = step.index
         if transition is not None and step is not steps[-1]:
             for name, value in transition.inputs.items():
                 if name.upper() == word:
@@ -379,6 +635,8 @@ def _latest_values(steps: Sequence[TraceStep], word: str, words: Sequence[str],
                 origin = "stub value" if change.name in stub_data else "initial value"
             else:
                 origin = f"set at step {step.index}" + _inputs_text(step)
+            if rewritten is not None and not found:
+                origin = f"set at step {rewritten}, to the value it had"
             found[change.name] = (change.name, change.new, origin)
             if not INDEX.search(change.name) and "." not in change.name.removeprefix("signal "):
                 return list(found.values())    # the whole datum: older parts are in it

@@ -27,7 +27,8 @@ from ..diagnostics import MORE_ERRORS, Diagnostic
 from ..diagnostics.error_report import omitted_count
 from ..check.result import UNKNOWN, VIOLATED, SearchResult, SearchStats
 from ..check.trace import Trace, TraceDescriber, TraceStep, build_trace
-from .counterexample import IDENTIFIER, TextOptions, counterexample_lines, read_data
+from .counterexample import (IDENTIFIER, TextOptions, chosen_inputs_only, counterexample_lines,
+                             read_data)
 
 SCHEMA = "rapidmc-check/1"
 
@@ -134,7 +135,8 @@ def text_options(checked: PropertyResult, describer: TraceDescriber,
                  full: bool = False) -> TextOptions:
     """How ``checked``'s counterexample is written: the names its formula uses are shown."""
     names = frozenset(word.upper() for word in IDENTIFIER.findall(checked.formula))
-    return TextOptions(full, names, frozenset(getattr(describer, "stub_data", ())))
+    return TextOptions(full, names, frozenset(getattr(describer, "stub_data", ())),
+                       handler_starts=frozenset(getattr(describer, "handler_starts", ())))
 
 
 def vacuity_text(trigger: str, inputs: str = "") -> str:
@@ -253,6 +255,7 @@ def error_json_of(trace: Trace, stub_data: frozenset = frozenset()) -> Optional[
     """The headline of a path that ends in an error, values in full; None for a loop."""
     if trace.cycle or not trace.ending:
         return None
+    trace = chosen_inputs_only(trace)          # origins as the text report names them
     last = trace.prefix[-1]
     reads = [{"name": name, "value": value, "origin": origin}
              for name, value, origin in read_data(trace.prefix, stub_data)] \

@@ -17,7 +17,7 @@ from typing import Optional, Sequence
 
 from .. import __version__
 from ..diagnostics import Diagnostic
-from .counterexample import WIDTH, read_data, shorten
+from .counterexample import WIDTH, chosen_inputs_only, read_data, shorten
 from .ci_findings import violation_anchor
 from .results import PropertyResult, described_formula
 from ..check.result import UNKNOWN, VIOLATED
@@ -33,7 +33,8 @@ def format_sarif(results: Sequence[PropertyResult], describer: TraceDescriber,
     for index, checked in enumerate(results):
         result = checked.result
         if result.verdict == VIOLATED:
-            sarif_results.append(_violation(index, checked, build_trace(result, describer)))
+            trace = chosen_inputs_only(build_trace(result, describer))   # inputs as in text
+            sarif_results.append(_violation(index, checked, trace))
         elif result.verdict == UNKNOWN:
             sarif_results.append({
                 "ruleId": checked.name, "ruleIndex": index, "level": "warning",

@@ -13,6 +13,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Optional
 
+from ...diagnostics import SourceCache
 from ...semantics.library.data import PREDEFINED_DATA
 from ...semantics.types import NON_VALUE, PREDEFINED_ALIASES, PREDEFINED_TYPES, SEMI_VALUE
 from .inference import DATA, FUNCTION, PROCEDURE, TRAP, TYPE, Missing
@@ -28,6 +29,13 @@ MAX_ARRAY_LITERAL = 1000
 # The header comment that marks a module as written by ``rapidmc stubs``: findings.assumptions
 # recognises stub declarations by it, and a trace names the values they give.
 STUB_MARKER = "Declarations written by 'rapidmc stubs'"
+
+
+def is_stub_module(file: Optional[str]) -> bool:
+    """Whether ``file`` (read before, so remembered by SourceCache) is a module ``rapidmc
+    stubs`` wrote: its marker is on one of its first three lines."""
+    lines = SourceCache.lines(file) if file else None
+    return any(STUB_MARKER in line for line in (lines or ())[:3])
 
 
 def number_text(value: float) -> str:

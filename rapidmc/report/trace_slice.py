@@ -1,0 +1,216 @@
+"""Which steps of a counterexample the failure depends on: a dynamic slice of the trace.
+
+A reader of a counterexample wants the steps that lead to what went wrong.  A
+step that only writes data nothing later needed reads (17 waypoints assigned
+before a division by zero) can be told in one line instead of seventeen.
+
+``needed_steps(trace, names)`` walks the trace backwards from what the
+violation reads -- the failing line of a path that ends in an error, every
+line of a lasso's cycle (the loop runs forever: all of it counts), and the
+property's ``names`` -- and keeps:
+
+* data dependence: a step that writes a datum a kept step (or the property)
+  reads; its own line's data become read in turn;
+* control dependence, over-approximated: every step whose statement decides
+  where the run goes (IF, WHILE, FOR, TEST, RETURN, RAISE, waits, interrupt
+  set-up ...) is kept with the data it reads, and so is the call that entered
+  the routine of each kept step (its arguments may be references);
+* every step that is not a plain statement: the initial state, a stuck state,
+  a step with no source line, a step that changes ERRNO or the program's status,
+  chooses an input, or raises an error (the next step starts an ERROR handler:
+  the caller names the handlers' first lines).
+
+What a statement reads is taken from its source text (every identifier of
+every statement a merged step ran), what it writes from the data the step
+changed.  Both are over-approximations (an identifier is taken to name every
+datum it may name), so a step left out is one whose writes nothing kept can
+read: the slice is sound, not minimal.
+"""
+from __future__ import annotations
+
+import re
+from typing import Iterable, Sequence
+
+from ..check.trace import INITIAL, TRANSITION, Trace, TraceStep
+
+IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+STRING = re.compile(r'"(?:[^"]|"")*"')
+INDEX = re.compile(r"\{[^}]*\}")
+COMMENT = re.compile(r"!.*$")
+# the target of an assignment: a name with indexes and components (``pk{2}.id``)
+ASSIGNED = re.compile(r"^\s*[A-Za-z][A-Za-z0-9_]*(\s*\{[^}]*\}|\s*\.\s*[A-Za-z][A-Za-z0-9_]*)*\s*$")
+
+# first words of statements that decide where the run goes next (or when)
+CONTROL_WORDS = frozenset("""
+    IF ELSEIF ELSE ENDIF WHILE ENDWHILE FOR ENDFOR TEST CASE DEFAULT ENDTEST GOTO RETURN RAISE
+    EXIT EXITCYCLE RETRY TRYNEXT STOP BREAK SYSTEMSTOPACTION ERROR UNDO BACKWARD
+    WAITUNTIL WAITDI WAITDO WAITAI WAITAO WAITGI WAITGO WAITSYNCTASK WAITTESTANDSET WAITLOAD
+    WAITTIME WAITWOBJ WAITROB
+    CONNECT IDELETE IENABLE IDISABLE ISLEEP IWATCH ISIGNALDI ISIGNALDO ISIGNALAI ISIGNALAO
+    ISIGNALGI ISIGNALGO ITIMER IPERS IERROR IRMQMESSAGE
+    CALLBYVAR
+""".split())
+# the robot's position is read by these functions (and by atoms naming them)
+ROBOT_READERS = frozenset({"CROBT", "CPOS", "CJOINTT", "CTOOL", "CWOBJ", "CDIRPATH"})
+ROBOT = "ROBOT TCP"
+ALWAYS_KEPT = ("ERRNO", "program")
+LABEL = re.compile(r"^\s*[A-Za-z][A-Za-z0-9_]*\s*:(?!=)")
+
+
+def statements_of(step: TraceStep) -> tuple[str, ...]:
+    """The source text of every statement the step ran (a merged step ran several)."""
+    transition = step.transition
+    if transition is None:
+        return ()
+    return tuple(getattr(transition, "statements", ()) or (transition.source,))
+
+
+def words_of(text: str) -> list[str]:
+    """The identifiers of a statement, upper case, strings and comments left out."""
+    return [word.upper() for word in IDENTIFIER.findall(COMMENT.sub("", STRING.sub('""', text)))]
+
+
+def read_part(source: str) -> str:
+    """What a line reads: of an assignment, the indexes of its target and its value."""
+    target, assigns, value = source.partition(":=")
+    if not assigns or not ASSIGNED.match(target):
+        return source                  # no assignment (``SocketReceive s \Str:=text;``)
+    return " ".join(re.findall(r"\{([^}]*)\}", target)) + " " + value
+
+
+def reads_of(step: TraceStep) -> frozenset:
+    """What the step may read: every identifier its statements name, an assignment's target
+    left out (not its indexes), and the robot's position when a statement calls a function
+    that reads it."""
+    words = set()
+    for text in statements_of(step):
+        named = words_of(text)
+        if named and named[0] not in CONTROL_WORDS and not LABEL.match(text):
+            named = words_of(read_part(text))
+        words.update(named)
+    return frozenset(words | {ROBOT} if words & ROBOT_READERS else words)
+
+
+def writes_of(step: TraceStep) -> frozenset:
+    """Every identifier a changed name may be about (``main.reg1{2}``: MAIN and REG1), and
+    the datum of each assignment's target (an assignment of the value it had changes
+    nothing, yet the value read after it comes from it)."""
+    found = set()
+    for text in statements_of(step):
+        target, assigns, _ = text.partition(":=")
+        if assigns and ASSIGNED.match(target):
+            found.add(IDENTIFIER.match(target.strip()).group().upper())
+    for change in step.changes:
+        name = change.name.removeprefix("signal ")
+        found.update(part.upper() for part in INDEX.sub("", name).split(".")[:2])
+    return frozenset(found)
+
+
+def is_control(step: TraceStep, raised: bool = False) -> bool:
+    """Whether the step decides the run's path (``raised``: the next step starts an ERROR
+    handler, so this one raised an error), or is not a plain statement at all."""
+    if step.kind != TRANSITION or step.transition is None or not step.transition.location:
+        return True
+    if raised or step.transition.inputs:       # an error raised, an input chosen
+        return True
+    if any(change.name in ALWAYS_KEPT for change in step.changes):
+        return True
+    for text in statements_of(step):
+        words = words_of(text)
+        if not words or words[0] in CONTROL_WORDS or LABEL.match(text) or text.startswith("%"):
+            return True
+    return False
+
+
+def needed_steps(trace: Trace, names: Iterable[str] = (),
+                 handler_starts: frozenset = frozenset()) -> frozenset:
+    """The indexes of the steps the violation depends on (see the module's docstring).
+
+    One walk back over the prefix: a kept step adds what it reads and marks the calls
+    that entered its routine (earlier steps, so the walk meets them later).  A kept
+    assignment of a whole datum ``x := ...`` that does not read ``x`` ends the need
+    for earlier writes of ``x`` -- only where the name cannot mean another datum (one
+    task, no routine data or other datum of that name in the trace)."""
+    steps = [*trace.prefix, *trace.cycle]
+    position = {step.index: number for number, step in enumerate(steps)}
+    read = set(names)
+    needed = set()
+    if trace.cycle:
+        for step in [*trace.cycle, *([trace.closing] if trace.closing else [])]:
+            read |= reads_of(step)
+            if step.index in position:
+                needed.add(step.index)
+                needed.update(call.index for call in _entering_calls(steps, position[step.index]))
+    elif trace.prefix:
+        needed.add(trace.prefix[-1].index)
+    single = _plain_names(steps)
+    for number in range(len(trace.prefix) - 1, -1, -1):
+        step = steps[number]
+        if step.index in needed or is_control(step, _raises(steps, number, handler_starts)) \
+                or not read.isdisjoint(writes_of(step)):
+            needed.add(step.index)
+            reads = reads_of(step)
+            read -= (_whole_assigned(step) & single) - reads
+            read |= reads
+            needed.update(call.index for call in _entering_calls(steps, number))
+    return frozenset(needed)
+
+
+def _raises(steps: Sequence[TraceStep], number: int, handler_starts: frozenset) -> bool:
+    """Whether the step after ``steps[number]`` is the first statement of an ERROR handler."""
+    if number + 1 >= len(steps) or steps[number + 1].transition is None:
+        return False
+    following = steps[number + 1].transition
+    return (following.file, following.line) in handler_starts
+
+
+def whole_assignments(step: TraceStep) -> set:
+    """The data the step's assignments ``x := ...`` write whole, upper case."""
+    found = set()
+    for text in statements_of(step):
+        target, assigns, _ = text.partition(":=")
+        if assigns and IDENTIFIER.fullmatch(target.strip()):
+            found.add(target.strip().upper())
+    return found
+
+
+def _whole_assigned(step: TraceStep) -> set:
+    """The datum the step's one statement, an assignment ``x := ...``, writes whole and the
+    step shows changed (so ``x`` names that datum); none for any other step."""
+    if len(statements_of(step)) != 1:
+        return set()
+    return {name for name in whole_assignments(step)
+            if any(change.name.upper() == name for change in step.changes)}
+
+
+def _plain_names(steps: Sequence[TraceStep]) -> set:
+    """The names that can mean only one datum here: changed under that one plain name in
+    the trace, and no task but the first runs (a further task's data has the same names)."""
+    if any(frame.task for step in steps for frame in step.stack):
+        return set()
+    spellings: dict[str, set] = {}
+    for step in steps:
+        for change in step.changes:
+            name = change.name.removeprefix("signal ")
+            for part in INDEX.sub("", name).split(".")[:2]:
+                spellings.setdefault(part.upper(), set()).add(INDEX.sub("", name).upper())
+    return {word for word, names in spellings.items() if names == {word}}
+
+
+def _entering_calls(steps: Sequence[TraceStep], number: int) -> list[TraceStep]:
+    """The latest earlier steps at each caller frame's line: the calls that led here.
+
+    With several tasks the stack holds every task's frames; the calls of the other tasks
+    are taken too (more kept, never less)."""
+    own = steps[number].transition
+    found = []
+    for frame in steps[number].stack:
+        if own is not None and (frame.file, frame.line) == (own.file, own.line):
+            continue
+        for earlier in range(number - 1, -1, -1):
+            transition = steps[earlier].transition
+            if transition is not None and transition.file == frame.file and \
+                    transition.line == frame.line:
+                found.append(steps[earlier])
+                break
+    return found
