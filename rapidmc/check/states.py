@@ -4,7 +4,9 @@ A model may split its states into a few components (``split_state`` and
 ``join_state``; a RAPID state: call stacks, global data, signals, the
 rest).  Each distinct component is stored once, in a table of its own,
 and a state becomes the tuple of its component ids (SPIN's collapse
-compression): states that share their data but not their program counter
+compression).  A component is itself stored as a tree of interned nodes
+(``check.nodes``: each frame, array, record and scalar once, found by
+identity when handed on unchanged), and known by the id of its tree: states that share their data but not their program counter
 share the stored data.  The ids of the components after the first
 ``PRIMARY`` ones, which rarely change, are interned once more as one tail
 id, and the first component's id with the tail id as one head id, so a
@@ -15,10 +17,10 @@ state id is an open-addressing hash table in another ``array``, so a
 stored state costs a few dozen bytes instead of a Python tuple, a dict
 entry and an int object.  A model without ``split_state`` keeps its states whole in a dict.
 
-``memory_bytes()`` adds up what the table holds (arrays, component
-tables and the components themselves, estimated from their Python sizes;
-objects Python shares anyway, such as small ints, ``None`` and booleans,
-are not counted).
+``memory_bytes()`` adds up what the table holds: its arrays, and the nodes
+and index entries as they were counted when added (Python sizes; objects
+Python shares anyway, such as small ints, ``None`` and booleans, are not
+counted).  It walks nothing stored, so asking costs nothing.
 """
 from __future__ import annotations
 
@@ -26,9 +28,11 @@ import sys
 from array import array
 from typing import Hashable
 
+from .nodes import ENTRY_BYTES, NodeTable, value_bytes
+
 EMPTY = -1
 FIRST_CAPACITY = 1 << 10
-IDENTITY_LIMIT = 1 << 10
+HEAD_BYTES = sys.getsizeof((0, 0)) + 2 * 28   # a head's (first id, tail id) and its ints
 PRIMARY = 2          # components with an id of their own; the others share one tail id
 SECOND_BITS = 32     # a state's key: head id << SECOND_BITS | second component id
 SECOND_MASK = (1 << SECOND_BITS) - 1
@@ -38,14 +42,16 @@ class StateTable:
     """``intern(state) -> (id, new)``, ``table[id] -> state``; see the module docstring."""
 
     def __init__(self, system):
-        self._split = getattr(system, "split_state", None)
-        self._join = getattr(system, "join_state", None)
+        split = getattr(system, "split_state", None)
+        # components are stored as the ids of their trees of interned nodes (check.nodes)
+        self._nodes = NodeTable()
+        self._split = self._nodes.splitter(split) if split is not None else None
+        self._join = self._nodes.joiner(system.join_state) if split is not None else None
         self._whole: dict[Hashable, int] = {}
         self._whole_states: list[Hashable] = []
+        self._whole_bytes = 0                  # the whole states' own bytes, counted as added
         self._components: list[dict] = []
         self._values: list[list] = []
-        self._identity: list[dict] = []        # per component: id() of a stored part -> its id
-        self._scalars: dict = {}               # one object per distinct float or string
         self._tails: dict[tuple, int] = {}     # ids of the components after PRIMARY -> tail id
         self._tail_values: list[tuple] = []
         self._tail_parts: list[tuple] = []     # by tail id: the stored parts themselves
@@ -85,6 +91,7 @@ class StateTable:
                 return EMPTY, True
             state_id = self._whole[state] = len(self._whole_states)
             self._whole_states.append(state)
+            self._whole_bytes += value_bytes(state) + ENTRY_BYTES
             self._count += 1
             return state_id, True
         parts = split(state)
@@ -144,16 +151,12 @@ class StateTable:
     def _start(self, width: int) -> None:
         self._components = [{} for _ in range(width)]
         self._values = [[] for _ in range(width)]
-        self._identity = [{} for _ in range(width)]
 
-    def _add_component(self, index: int, part) -> int:
-        """The id of a component not stored yet (stored now, its scalars shared)."""
+    def _add_component(self, index: int, part: int) -> int:
+        """The id of a component (the node id of its tree) not stored yet."""
         values = self._values[index]
-        part = self._shared_scalars(part)
         part_id = self._components[index][part] = len(values)
         values.append(part)
-        if index >= PRIMARY and part_id < IDENTITY_LIMIT:
-            self._identity[index][id(part)] = part_id
         return part_id
 
     def _tail_id(self, tail: tuple) -> int:
@@ -161,13 +164,9 @@ class StateTable:
         with its heads)."""
         ids = []
         for index, part in enumerate(tail, PRIMARY):
-            # a rarely changing part handed on unchanged from a stored state is
-            # that very object: found by identity, without hashing its contents
-            part_id = self._identity[index].get(id(part), -1)
-            if part_id < 0 or self._values[index][part_id] is not part:
-                part_id = self._components[index].get(part)
-                if part_id is None:
-                    part_id = self._add_component(index, part)
+            part_id = self._components[index].get(part)
+            if part_id is None:
+                part_id = self._add_component(index, part)
             ids.append(part_id)
         key = tuple(ids)
         tail_id = self._tails.get(key)
@@ -181,13 +180,6 @@ class StateTable:
         self._last_heads = self._heads[tail_id]
         return tail_id
 
-    def _shared_scalars(self, part):
-        """A tuple part whose numbers and strings are the objects other parts hold already."""
-        if type(part) is not tuple:
-            return part
-        shared = self._scalars.setdefault
-        return tuple([shared(x, x) if type(x) is float or type(x) is str else x for x in part])
-
     def _grow(self) -> None:
         slots = array("i", [EMPTY]) * (len(self._slots) * 2)
         mask = len(slots) - 1
@@ -200,51 +192,24 @@ class StateTable:
 
     # ----------------------------------------------------------------- memory
     def memory_bytes(self) -> int:
-        """Bytes the table holds (components estimated from their Python sizes)."""
+        """Bytes the table holds: its arrays, and the rest as counted while it was filled
+        (nothing stored is walked)."""
         if self._split is None:
             return sys.getsizeof(self._whole) + sys.getsizeof(self._whole_states) + \
-                sum(_size(state) for state in self._whole_states)
+                self._whole_bytes
+        heads = len(self._head_values)
         return (self._keys.buffer_info()[1] * self._keys.itemsize +
                 self._slots.buffer_info()[1] * self._slots.itemsize +
-                sys.getsizeof(self._heads) + sum(sys.getsizeof(h) for h in self._heads) +
-                sys.getsizeof(self._head_values) + sum(_size(h) for h in self._head_values) +
+                sys.getsizeof(self._head_values) + heads * (HEAD_BYTES + ENTRY_BYTES) +
                 self.component_bytes())
 
     def component_bytes(self) -> int:
-        """Bytes of the stored components and the tables that intern them."""
+        """Bytes of the stored components (their node trees) and the tables that index them."""
+        width = len(self._components)
+        tails = len(self._tail_values)
         tables = sum(sys.getsizeof(t) + sys.getsizeof(v)
                      for t, v in zip(self._components, self._values)) + \
-            sum(sys.getsizeof(i) for i in self._identity) + sys.getsizeof(self._scalars) + \
-            sys.getsizeof(self._tails) + sum(_size(t) for t in self._tail_values) + \
-            sys.getsizeof(self._tail_parts) + sum(sys.getsizeof(t) for t in self._tail_parts) + \
-            sum(sys.getsizeof(x) for x in self._scalars)
-        return tables + sum(_component_size(value) for values in self._values for value in values)
-
-
-def _component_size(part) -> int:
-    """Bytes of a stored component; its own numbers and strings are in the shared table."""
-    if type(part) is not tuple:
-        return _size(part)
-    seen: set = set()
-    return sys.getsizeof(part) + sum(_size(x, seen) for x in part
-                                     if type(x) is not float and type(x) is not str)
-
-
-def _size(value, seen: set | None = None) -> int:
-    """Python bytes of ``value`` and what it holds (shared parts counted once per call)."""
-    if value is None or type(value) is bool or type(value) is int and -5 <= value <= 256:
-        return 0                               # objects Python keeps once for all uses
-    seen = set() if seen is None else seen
-    if id(value) in seen:
-        return 0
-    seen.add(id(value))
-    size = sys.getsizeof(value)
-    if isinstance(value, (str, bytes, int, float, bool)) or value is None:
-        return size
-    try:
-        items = list(value) if not isinstance(value, dict) else list(value.items())
-    except TypeError:
-        return size
-    if not isinstance(value, (tuple, list, dict)):
-        size += 8 * len(items)                 # a persistent vector's node slots
-    return size + sum(_size(item, seen) for item in items)
+            sys.getsizeof(self._tails) + sys.getsizeof(self._tail_parts) + \
+            sys.getsizeof(self._heads) + sys.getsizeof(self._tail_values) + \
+            tails * (2 * sys.getsizeof((0,) * (width - PRIMARY)) + sys.getsizeof({}))
+        return tables + self._nodes.memory_bytes()

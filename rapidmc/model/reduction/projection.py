@@ -70,7 +70,10 @@ class Projection:
         else:
             resets = self.global_resets
         for slot, initial in resets:
-            if store[slot] != initial:
+            value = store[slot]
+            # (the stored initial value is most often that very object: check.nodes keeps
+            # a program's values as the canonical ones; comparing 512 records is not free)
+            if value is not initial and value != initial:
                 store = _reset_store(store, resets)
                 break
         new_frames, new_tasks = frames, tasks

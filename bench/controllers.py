@@ -1,0 +1,377 @@
+"""Whole controllers as cells are made: multi-task backups with big buffers (issue 27).
+
+Usage: python bench/controllers.py [--sizes 512] [--motion 2] [--loggers 1] [--kinds 3]
+                                   [--engines native,python] [--max-seconds 60]
+                                   [--no-counters] [--no-sorter] [--keep DIR] [--profile]
+
+The family: a RobotWare backup (BACKINFO/backinfo.txt, SYSPAR/SYS.cfg and EIO.cfg,
+RAPID/TASKn/PROGMOD and SYSMOD) of 2-4 tasks, written as real cells are:
+
+* ``--motion`` motion tasks (1 or 2), each serving commands from a socket: it keeps buffers of
+  N robtargets, speeddata and jointtargets (``--sizes``), a write slot and a read slot;
+  "store" teaches the next slot (the taught position depends on the slot, so the buffers
+  cycle through N fillings), "run" moves through the next stored position, "home" moves
+  home and rewinds the read slot, further kinds ("speedK") retune the current slot's
+  speed: ``--kinds`` commands in all (at least 3);
+* ``--loggers`` tasks (0 to 2; the first a logger, the second a PLC handshake): the logger
+  waits for a PERS flag a motion task raises after each move and reports it over a socket;
+  the PLC task answers a start request on digital signals;
+* PERS flags between the tasks and a WaitSyncTask barrier between the motion tasks at
+  every "home".
+
+N and the number of command kinds scale the state space (about 2N fillings x N read slots
+per motion task).  Each model is checked in a fresh process with ``rapidmc check BACKUP``
+(the built-in properties and one LTL property), per engine: reachable states, CPU
+seconds, states per CPU second, bytes per state (the process's maximum resident set
+size / states) and the share of steps the native step machine took (a second, in-process
+run of the run-time error search, which counts them).  The same rows follow for the
+counters (bench/native.py's family, N=8) and for case_studies/sorter.
+
+A search that reaches ``--max-seconds`` ends UNKNOWN; its row says so (the states/s are
+then those of the truncated search).  ``--keep DIR`` writes the backups there;
+``--profile`` prints the top of a cProfile of one native check per model instead.
+
+Measured on 2026-11-28 (a shared 2-core machine; CPU seconds, so load matters little;
+N=512, 2 motion tasks + logger, 3 kinds, 40 s per search, every search ends UNKNOWN):
+before the tree-compressed table, native 47 states/s and 10,721 bytes/state (walking the
+stored components for the memory statistic took most of the time), Python 143 and
+16,769; after, native 929 and 7,030, Python 517 and 9,296.  The step machine takes none
+of these steps (several tasks).  N=2 with 2 motion tasks completes: 23,916 states with
+both engines, every property HOLDS.  Counters N=8 native: 377,626 states/s and 137 bytes
+before, 336,168 and 136 after (within the noise of the shared machine).
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent
+sys.path.insert(0, str(HERE))
+
+from check import counters_formula, counters_program  # noqa: E402  (bench/check.py)
+
+MESSAGES = ("store", "run", "home")
+HEADER = (f"{'model':24} {'engine':7} {'states':>9} {'cpu s':>7} {'states/s':>10} "
+          f"{'B/state':>8} {'machine':>8}  verdicts")
+
+
+# ------------------------------------------------------------------ the family
+def robtarget(x: float, y: float, z: float) -> str:
+    return f"[[{x:g},{y:g},{z:g}],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]]"
+
+
+def motion_module(index: int, size: int, kinds: int, motion: int, logger: bool) -> str:
+    """The module of motion task ``index`` (1-based).  Task 1 serves a socket and hands
+    each command on to the other motion task (a PERS string and a WaitSyncTask barrier),
+    as a MultiMove cell's leading task does; both keep the same buffers and serialise
+    their buffer runs by an interlock flag."""
+    tunings = [f"speed{k}" for k in range(1, kinds - len(MESSAGES) + 1)]
+    retune = "".join(f'      CASE "{name}":\n        speed := [{100 * k},500,5000,1000];\n'
+                     for k, name in enumerate(tunings, 1))
+    tasks = ", ".join(f'["T_ROB{i}"]' for i in range(1, motion + 1))
+    barriers = motion > 1
+    # every motion task's counters, seen by all (PERS data is shared by name)
+    shared = "".join(f"  PERS num moves{i} := 0;\n" for i in range(1, motion + 1))
+    if logger:
+        shared += "".join(f"  PERS bool log_request{i} := FALSE;\n"
+                          for i in range(1, motion + 1))
+    if index == 1:
+        serve = ("      SocketReceive client \\Str:=command;\n" +
+                 ("      order := command;\n      WaitSyncTask sync_order, motion_tasks;\n"
+                  if barriers else ""))
+        connect = ("    SocketCreate server;\n    SocketBind server, \"192.168.125.1\", 1025;\n"
+                   "    SocketListen server;\n    SocketAccept server, client;\n")
+    else:
+        serve = "      WaitSyncTask sync_order, motion_tasks;\n      command := order;\n"
+        connect = ""
+    done = "      WaitSyncTask sync_done, motion_tasks;\n" if barriers else ""
+    report = (f"          WaitUntil NOT log_request{index};\n"
+              f"          log_request{index} := TRUE;\n") if logger else ""
+    return f"""MODULE Cell{index}
+  ! buffers the cell's PC fills over the socket: taught positions, speeds and axes
+  VAR robtarget targets{{{size}}};
+  VAR speeddata speeds{{{size}}};
+  VAR jointtarget joints{{{size}}};
+  VAR num taught := 0;
+  VAR speeddata speed := [100,500,5000,1000];
+  VAR socketdev server;
+  VAR socketdev client;
+  VAR string command := "";
+  VAR syncident sync_order;
+  VAR syncident sync_done;
+  PERS tasks motion_tasks{{{motion}}} := [{tasks}];
+  PERS string order := "";
+  PERS bool zone_busy := FALSE;
+{shared}  CONST robtarget home := {robtarget(500, 0, 600)};
+
+  PROC main()
+{connect}    WHILE TRUE DO
+{serve}      TEST command
+      CASE "store":
+        IF taught < {size} THEN
+          taught := taught + 1;
+          teach taught;
+        ENDIF
+      CASE "run":
+        IF taught = {size} THEN
+          WaitUntil NOT zone_busy;
+          zone_busy := TRUE;
+          FOR i FROM 1 TO {size} DO
+            MoveJ targets{{i}}, speeds{{i}}, fine, tool0;
+          ENDFOR
+          zone_busy := FALSE;
+          moves{index} := (moves{index} + 1) MOD 4;
+{report}        ENDIF
+      CASE "home":
+        MoveJ home, speed, fine, tool0;
+        taught := 0;
+{retune}      ENDTEST
+{done}    ENDWHILE
+  ENDPROC
+
+  PROC teach(num slot)
+    targets{{slot}} := home;
+    targets{{slot}}.trans.x := 400 + slot;
+    speeds{{slot}} := speed;
+    joints{{slot}} := [[slot,0,0,0,30,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  ENDPROC
+ENDMODULE
+"""
+
+
+def logger_module(motion: int) -> str:
+    """A task reporting each move over a socket (the flags the motion tasks raise)."""
+    polls = "".join(f"""      IF log_request{i} THEN
+        SocketSend log_socket \\Str:="moved {i}";
+        log_request{i} := FALSE;
+      ENDIF
+""" for i in range(1, motion + 1))
+    flags = "".join(f"  PERS bool log_request{i} := FALSE;\n" for i in range(1, motion + 1))
+    return f"""MODULE Logger
+{flags}  VAR socketdev log_socket;
+
+  PROC main()
+    SocketCreate log_socket;
+    SocketConnect log_socket, "192.168.125.10", 2000;
+    WHILE TRUE DO
+      WaitUntil {" OR ".join(f"log_request{i}" for i in range(1, motion + 1))};
+{polls}    ENDWHILE
+  ENDPROC
+ENDMODULE
+"""
+
+
+def plc_module() -> str:
+    """A PLC handshake: the PLC asks to start, the task answers busy, then ready."""
+    return """MODULE Plc
+  PERS num handshakes := 0;
+
+  PROC main()
+    WHILE TRUE DO
+      WaitDI diStart, 1;
+      SetDO doBusy, 1;
+      handshakes := (handshakes + 1) MOD 4;
+      WaitDI diStart, 0;
+      SetDO doBusy, 0;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+"""
+
+
+SYSMOD = """MODULE CellData(SYSMODULE)
+  ! cell constants as a system module holds them
+  CONST num cell_id := 7;
+ENDMODULE
+"""
+
+EIO = """EIO:CFG_1.0:6:1::
+#
+EIO_SIGNAL:
+      -Name "diStart" -SignalType "DI" -Device "plc" -DeviceMap "0"
+      -Name "doBusy" -SignalType "DO" -Device "plc" -DeviceMap "0"
+"""
+
+
+def write_backup(folder: Path, size: int, motion: int = 2, loggers: int = 1,
+                 kinds: int = 3) -> list[str]:
+    """Write the family's backup into ``folder``; the names of its tasks."""
+    if not 1 <= motion <= 2 or not 0 <= loggers <= 2 or kinds < len(MESSAGES):
+        raise ValueError("1-2 motion tasks, 0-2 logger/PLC tasks, at least 3 command kinds")
+    tasks: list[tuple[str, str, str, str]] = []     # (name, options, module file, text)
+    for index in range(1, motion + 1):
+        tasks.append((f"T_ROB{index}", " -MotionTask", f"Cell{index}.mod",
+                      motion_module(index, size, kinds, motion, loggers >= 1)))
+    if loggers >= 1:
+        tasks.append(("T_LOG", "", "Logger.mod", logger_module(motion)))
+    if loggers >= 2:
+        tasks.append(("T_PLC", "", "Plc.mod", plc_module()))
+    info = [">>SYSTEM_ID:", "rapidmc bench cell (generated by bench/controllers.py)", ""]
+    cab = ["SYS:CFG_1.0:6:0::", "#", "CAB_TASKS:", ""]
+    for number, (name, options, file, text) in enumerate(tasks, 1):
+        task = folder / "RAPID" / f"TASK{number}"
+        (task / "PROGMOD").mkdir(parents=True)
+        (task / "SYSMOD").mkdir()
+        (task / "PROGMOD" / file).write_text(text)
+        (task / "SYSMOD" / "CellData.sys").write_text(SYSMOD)
+        info += [f">>TASK{number}: ({name},,)", ""]
+        cab += [f'      -Name "{name}" -Type "NORMAL"{options}', ""]
+    (folder / "BACKINFO").mkdir(parents=True)
+    (folder / "BACKINFO" / "backinfo.txt").write_text("\n".join(info + [">>EOF:", ""]))
+    (folder / "SYSPAR").mkdir()
+    (folder / "SYSPAR" / "SYS.cfg").write_text("\n".join(cab))
+    (folder / "SYSPAR" / "EIO.cfg").write_text(EIO)
+    return [name for name, *_ in tasks]
+
+
+def family_property(motion: int) -> str:
+    """Each motion task's move counter stays in range (holds: the whole space is searched)."""
+    return " & ".join(f'G "moves{i} < 4"' for i in range(1, motion + 1))
+
+
+def family_arguments(kinds: int) -> list[str]:
+    messages = list(MESSAGES) + [f"speed{k}" for k in range(1, kinds - len(MESSAGES) + 1)]
+    arguments = ["--no-socket-timeouts"]
+    for message in messages:
+        arguments += ["--socket-messages", message]
+    return arguments
+
+
+# -------------------------------------------------------------- measuring
+def run_measured(command: list[str]) -> tuple[int, float, int, str]:
+    """(exit code, CPU s, max RSS bytes, stdout) of one child process."""
+    with tempfile.TemporaryFile("w+") as out:
+        child = subprocess.Popen(command, stdout=out, stderr=subprocess.DEVNULL)
+        _, status, usage = os.wait4(child.pid, 0)
+        out.seek(0)
+        return (os.waitstatus_to_exitcode(status), usage.ru_utime + usage.ru_stime,
+                usage.ru_maxrss * 1024, out.read())
+
+
+def check_command(target: list[str], ltl: Path, engine: str, max_seconds: float) -> list[str]:
+    return [sys.executable, "-m", "rapidmc", "check", *target, "--ltl", str(ltl),
+            "--engine", engine, "--format", "json", "--quiet", "--max-states", str(10 ** 9),
+            "--max-seconds", str(max_seconds)]
+
+
+def machine_share(target: list[str]) -> str:
+    """The share of the run-time error search's steps the native step machine took (run
+    in a child process: ``--child-share``)."""
+    code, _, _, out = run_measured([sys.executable, __file__, "--child-share", json.dumps(target)])
+    if code != 0:
+        return "?"
+    counts = json.loads(out)
+    if counts is None:
+        return "none"
+    total = counts["machine_steps"] + counts["python_steps"]
+    return f"{100 * counts['machine_steps'] / max(total, 1):.0f}%"
+
+
+def child_share(target: list[str]) -> None:
+    from rapidmc.check import find_reachable, native
+    from rapidmc.cli import build_parser
+    from rapidmc.commands.check import prepare_model
+    args = build_parser("check").parse_args(["check", *target, "--engine", "native"])
+    model = prepare_model(args)
+    native.use_engine("native")
+    graphs: list = []
+    find_reachable(model.system, model.system.failed, explored=graphs.append,
+                   max_states=10 ** 9, max_seconds=60.0)
+    table = graphs[0].states if graphs else None
+    print(json.dumps(table.counts() if hasattr(table, "counts") else None))
+
+
+def row(model: str, target: list[str], ltl: Path, engine: str, max_seconds: float,
+        share: bool) -> str:
+    code, cpu, rss, out = run_measured(check_command(target, ltl, engine, max_seconds))
+    try:
+        found = json.loads(out)
+        found["properties"][0]
+    except (ValueError, KeyError, IndexError):
+        return f"{model:24} {engine:7} check exited {code} without a report"
+    states = max(p["stats"]["model_states"] for p in found["properties"])
+    verdicts = " ".join(f"{p['name']}={p['verdict']}" for p in found["properties"])
+    machine = machine_share(target) if share and engine == "native" else ""
+    return (f"{model:24} {engine:7} {states:>9,} {cpu:>7.2f} {states / max(cpu, 1e-9):>10,.0f} "
+            f"{rss / max(states, 1):>8,.0f} {machine:>8}  {verdicts}")
+
+
+def models(args, folder: Path):
+    """(name, check arguments, property file) of each model the bench measures."""
+    for size in (int(n) for n in args.sizes.split(",")):
+        backup = folder / f"cell{size}"
+        write_backup(backup, size, args.motion, args.loggers, args.kinds)
+        ltl = folder / f"cell{size}.ltl"
+        ltl.write_text(f"moves_in_range: {family_property(args.motion)}\n")
+        name = f"cell N={size} T={args.motion + args.loggers} K={args.kinds}"
+        yield name, [str(backup), *family_arguments(args.kinds)], ltl
+    if not args.no_counters:
+        program = folder / "counters.mod"
+        program.write_text(counters_program(8, 4))
+        ltl = folder / "counters.ltl"
+        ltl.write_text(f"bounded: {counters_formula(8, 4)}\n")
+        yield "counters N=8", [str(program)], ltl
+    if not args.no_sorter:
+        sorter = ROOT / "case_studies" / "sorter"
+        yield "sorter B + plant", [str(sorter / "sorter_b.mod"), "--env",
+                                   str(sorter / "plant.mod")], ROOT / "specs" / "sorter.ltl"
+
+
+def profile(target: list[str], ltl: Path, max_seconds: float) -> None:
+    import cProfile
+    import pstats
+    from rapidmc import cli
+    argv = ["check", *target, "--ltl", str(ltl), "--engine", "native", "--quiet",
+            "--max-states", str(10 ** 9), "--max-seconds", str(max_seconds)]
+    profiler = cProfile.Profile()
+    started = time.process_time()
+    try:
+        profiler.runcall(cli.main, argv)
+    except SystemExit:
+        pass
+    print(f"  ({time.process_time() - started:.1f} CPU s)")
+    pstats.Stats(profiler).sort_stats("tottime").print_stats(12)
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--sizes", default="512", help="buffer sizes N of the family")
+    parser.add_argument("--motion", type=int, default=2, help="motion tasks (1-2)")
+    parser.add_argument("--loggers", type=int, default=1, help="logger/PLC tasks (0-2)")
+    parser.add_argument("--kinds", type=int, default=3, help="command kinds (3 or more)")
+    parser.add_argument("--engines", default="native,python")
+    parser.add_argument("--max-seconds", type=float, default=60.0)
+    parser.add_argument("--no-counters", action="store_true")
+    parser.add_argument("--no-sorter", action="store_true")
+    parser.add_argument("--keep", help="write the backups into this folder")
+    parser.add_argument("--profile", action="store_true")
+    parser.add_argument("--child-share", help=argparse.SUPPRESS)
+    args = parser.parse_args()
+    if args.child_share:
+        child_share(json.loads(args.child_share))
+        return
+    with tempfile.TemporaryDirectory() as scratch:
+        folder = Path(args.keep) if args.keep else Path(scratch)
+        folder.mkdir(parents=True, exist_ok=True)
+        if not args.profile:
+            print(HEADER, flush=True)
+        for name, target, ltl in models(args, folder):
+            if args.profile:
+                print(f"== {name}", flush=True)
+                profile(target, ltl, args.max_seconds)
+                continue
+            for engine in args.engines.split(","):
+                print(row(name, target, ltl, engine, args.max_seconds, share=True), flush=True)
+
+
+if __name__ == "__main__":
+    resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
+    main()

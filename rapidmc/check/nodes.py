@@ -1,0 +1,145 @@
+"""Tree-compressed storage of state components: every subvalue interned once as a node.
+
+LTSmin's tree compression (Laarman, van de Pol and Weber, SPIN 2011) for Python values.
+A value is a tree: a tuple (a call stack, a frame, global data, an array, a record) or a
+persistent vector is a node whose key is the ids of its children; anything else (a number,
+a string, None ...) is a leaf, keyed by its type and value (a bool and a num are
+different leaves even where Python finds them equal).  Each distinct node is stored
+once, as a *canonical* object built from the canonical objects of its children, so
+equal subtrees of different states are one object.
+
+A value handed on unchanged from a stored state is that canonical object, found by
+identity (``id``) without hashing its contents; a step that writes one element of a
+512-element array builds a new tuple whose other 511 elements are still canonical, so
+interning it costs 511 identity look-ups and one new leaf or record, not a deep hash of
+the whole array.  Two values get the same node id exactly when their trees are equal,
+so states are compared by id.
+
+``memory_bytes`` is counted as nodes are added (each node's own object, its key and its
+index entries), never by walking stored values.
+"""
+from __future__ import annotations
+
+import sys
+from typing import Callable, Hashable
+
+from pyrsistent import pvector
+
+_PVECTOR = type(pvector())
+_new_tuple = tuple.__new__
+# an index entry (key -> id or id(object) -> id) in a dict: a hash, a key and a value
+# pointer, and the table's share of empty room (dicts stay a third to two thirds full)
+ENTRY_BYTES = 3 * 8 * 2
+ALIAS_LIMIT = 1 << 14        # equal non-canonical objects known by identity, at most
+SHARED = 0                   # objects Python keeps once for all uses cost nothing here
+
+
+class NodeTable:
+    """``node(value) -> id`` and ``value(id) -> canonical object``; see the module
+    docstring."""
+
+    def __init__(self) -> None:
+        self._canonical: list = []                 # node id -> canonical object
+        self._by_identity: dict[int, int] = {}     # id(canonical object) -> node id
+        self._by_key: dict[Hashable, int] = {}     # children ids or (type, leaf) -> node id
+        self._aliases: dict[int, tuple] = {}       # id(equal object) -> (it, node id)
+        self._bytes = 0
+
+    def __len__(self) -> int:
+        return len(self._canonical)
+
+    def value(self, node_id: int):
+        return self._canonical[node_id]
+
+    def node(self, value) -> int:
+        """The id of ``value``'s tree (its nodes added when new)."""
+        node_id = self._by_identity.get(id(value))
+        if node_id is not None and self._canonical[node_id] is value:
+            return node_id
+        alias = self._aliases.get(id(value))
+        if alias is not None and alias[0] is value:
+            return alias[1]
+        kind = type(value)
+        if kind is tuple or kind is _PVECTOR or isinstance(value, tuple):
+            node = self.node
+            children = tuple([node(child) for child in value])
+            key = children if kind is tuple else (kind, children)
+        else:
+            key = (kind, value)
+            children = None
+        node_id = self._by_key.get(key)
+        if node_id is None:
+            return self._add(key, kind, value, children)
+        # an equal object met again (a program's initial value a reset writes back, a
+        # constant): known by identity from now on, while the bounded cache keeps it alive
+        aliases = self._aliases
+        if len(aliases) >= ALIAS_LIMIT:
+            aliases.clear()
+        aliases[id(value)] = (value, node_id)
+        return node_id
+
+    def _add(self, key: Hashable, kind: type, value, children) -> int:
+        canonical = self._canonical
+        if children is None:
+            made = value
+        elif kind is not _PVECTOR and all(canonical[child] is element
+                                          for child, element in zip(children, value)):
+            made = value          # (a program's initial value stays the object it hands on)
+        else:
+            parts = [canonical[child] for child in children]
+            made = pvector(parts) if kind is _PVECTOR else _new_tuple(kind, parts)
+        node_id = self._by_key[key] = len(canonical)
+        canonical.append(made)
+        self._by_identity[id(made)] = node_id
+        self._bytes += _own_bytes(made, children) + 2 * ENTRY_BYTES + 8
+        if children is not None:
+            self._bytes += sys.getsizeof(key)      # the key holds the children's ids
+        return node_id
+
+    def splitter(self, split: Callable[[Hashable], tuple]) -> Callable[[Hashable], tuple]:
+        """``split`` giving the node ids of the parts instead of the parts."""
+        node = self.node
+        return lambda state: tuple([node(part) for part in split(state)])
+
+    def joiner(self, join: Callable[[tuple], Hashable]) -> Callable[[tuple], Hashable]:
+        """``join`` taking the node ids of the parts (a state of canonical objects)."""
+        canonical = self._canonical
+        return lambda ids: join(tuple([canonical[node_id] for node_id in ids]))
+
+    def memory_bytes(self) -> int:
+        """Bytes of the nodes and their indexes (counted as they were added), and of the
+        bounded alias cache."""
+        return self._bytes + sys.getsizeof(self._aliases)
+
+
+def _own_bytes(made, children) -> int:
+    """Bytes of a node's own object (its children are nodes of their own)."""
+    if children is None:
+        if made is None or type(made) is bool or type(made) is int and -5 <= made <= 256:
+            return SHARED
+        return sys.getsizeof(made)
+    if type(made) is _PVECTOR:
+        return sys.getsizeof(made) + 8 * len(children)   # the vector's node slots
+    return sys.getsizeof(made)
+
+
+
+def value_bytes(value, seen: set | None = None) -> int:
+    """Python bytes of ``value`` and what it holds (shared parts counted once per call):
+    for values stored whole, counted once when they are added."""
+    if value is None or type(value) is bool or type(value) is int and -5 <= value <= 256:
+        return SHARED
+    seen = set() if seen is None else seen
+    if id(value) in seen:
+        return 0
+    seen.add(id(value))
+    size = sys.getsizeof(value)
+    if isinstance(value, (str, bytes, int, float)):
+        return size
+    try:
+        items = list(value) if not isinstance(value, dict) else list(value.items())
+    except TypeError:
+        return size
+    if not isinstance(value, (tuple, list, dict)):
+        size += 8 * len(items)                 # a persistent vector's node slots
+    return size + sum(value_bytes(item, seen) for item in items)

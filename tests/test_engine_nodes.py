@@ -1,0 +1,79 @@
+"""Tree-compressed storage (check.nodes): each subvalue interned once, ids equal exactly when
+trees are equal, a one-element write re-interns only its path, memory counted as added."""
+from __future__ import annotations
+
+from pyrsistent import pvector
+
+from rapidmc.check.nodes import NodeTable
+from rapidmc.check.states import StateTable
+from rapidmc.semantics.state import Frame
+
+BUFFER = tuple((float(i), (float(i), 0.0, 600.0), "p%d" % i) for i in range(512))
+
+
+class SplitModel:
+    split_state = staticmethod(lambda state: state)
+    join_state = staticmethod(tuple)
+
+
+def written(buffer: tuple, index: int, element) -> tuple:
+    """The array after a step writes one element (the others handed on unchanged)."""
+    return buffer[:index] + (element,) + buffer[index + 1:]
+
+
+def test_equal_trees_have_one_id_and_one_canonical_object():
+    nodes = NodeTable()
+    first = nodes.node(BUFFER)
+    copy = tuple((a, tuple(b), str(c)) for a, b, c in BUFFER)
+    assert nodes.node(copy) == first
+    assert nodes.value(first) == BUFFER
+    assert nodes.node(written(BUFFER, 7, (1.0, (2.0, 0.0, 600.0), "q"))) != first
+
+
+def test_leaves_python_finds_equal_but_rapid_does_not_are_different_nodes():
+    nodes = NodeTable()
+    assert nodes.node((True,)) != nodes.node((1,))
+    assert type(nodes.value(nodes.node((1,)))[0]) is int
+
+
+def test_tuple_subclasses_and_vectors_come_back_as_their_own_type():
+    nodes = NodeTable()
+    frame = Frame(3, 4, (1.0, "a"))
+    vector = pvector([frame, (1.0,)])
+    assert type(nodes.value(nodes.node(frame))) is Frame
+    back = nodes.value(nodes.node(vector))
+    assert back == vector and type(back) is type(vector) and type(back[0]) is Frame
+
+
+def test_a_one_element_write_shares_every_other_element_and_adds_only_its_path():
+    nodes = NodeTable()
+    canonical = nodes.value(nodes.node(BUFFER))
+    before = len(nodes)
+    after = written(canonical, 100, (100.0, (999.0, 0.0, 600.0), "p100"))
+    changed = nodes.value(nodes.node(after))
+    # the new array, the new record and its new position (x = 999.0 is a new leaf too)
+    assert len(nodes) - before == 4
+    assert all(changed[i] is canonical[i] for i in range(512) if i != 100)
+    assert changed[100][2] is canonical[100][2]
+
+
+def test_memory_is_counted_as_nodes_are_added_and_not_when_known_values_come_again():
+    nodes = NodeTable()
+    canonical = nodes.value(nodes.node(BUFFER))
+    counted, known = nodes.memory_bytes(), len(nodes)
+    assert counted > 512 * 3 * 8
+    nodes.node(canonical)
+    nodes.node(canonical[:256] + canonical[256:])
+    assert nodes.memory_bytes() == counted and len(nodes) == known
+
+
+def test_states_with_big_arrays_share_their_unchanged_elements_in_the_state_table():
+    table = StateTable(SplitModel())
+    state = (0, BUFFER, ("robot",))
+    table.intern(state)
+    stored = table[0][1]
+    step = (1, written(stored, 5, (5.0, (7.0, 0.0, 600.0), "p5")), ("robot",))
+    assert table.intern(step) == (1, True)
+    assert table.intern((1, written(BUFFER, 5, (5.0, (7.0, 0.0, 600.0), "p5")), ("robot",))) \
+        == (1, False)
+    assert all(table[1][1][i] is stored[i] for i in range(512) if i != 5)
