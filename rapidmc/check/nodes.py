@@ -82,9 +82,6 @@ class NodeTable:
         canonical = self._canonical
         if children is None:
             made = value
-        elif kind is not _PVECTOR and all(canonical[child] is element
-                                          for child, element in zip(children, value)):
-            made = value          # (a program's initial value stays the object it hands on)
         else:
             parts = [canonical[child] for child in children]
             made = pvector(parts) if kind is _PVECTOR else _new_tuple(kind, parts)

@@ -70,10 +70,7 @@ class Projection:
         else:
             resets = self.global_resets
         for slot, initial in resets:
-            value = store[slot]
-            # (the stored initial value is most often that very object: check.nodes keeps
-            # a program's values as the canonical ones; comparing 512 records is not free)
-            if value is not initial and value != initial:
+            if store[slot] != initial:
                 store = _reset_store(store, resets)
                 break
         new_frames, new_tasks = frames, tasks
