@@ -104,3 +104,14 @@ def test_a_backups_service_routines_are_its_main_tasks():
     assert [entry["entry"] for entry in document["entries"]] == ["main", "ServicePosition"]
     assert [w["message"] for w in document["warnings"] if w["code"] == "RMC701"] == [
         "never reached under any input (routine ResetPlc never runs)"]
+
+
+def test_entry_all_in_code_quality_names_the_entry_of_each_issue():
+    code, out, _ = run(["check", PROGRAM.name, "--entry", "all", "--format", "codeclimate",
+                        "--quiet"])
+    issues = json.loads(out)
+    assert code == 1
+    violated = [i["description"] for i in issues if i["severity"] == "critical"]
+    assert violated == ["entry CalibrateCamera: no_runtime_error is violated: no reachable "
+                        "uncaught run-time error"]
+    assert len({i["fingerprint"] for i in issues}) == len(issues)

@@ -237,10 +237,9 @@ def _check(args: argparse.Namespace) -> int:
 
 def _check_every_entry(args: argparse.Namespace) -> int:
     """``--entry all``: a verdict table per entry routine, in every format."""
-    if args.format == "codeclimate" or args.baseline or args.write_baseline:
+    if args.baseline or args.write_baseline:
         raise error(USAGE, "--entry all gives a verdict table per entry; it does not combine "
-                    "with --format codeclimate or baselines (check each entry with "
-                    "--entry NAME for those)")
+                    "with baselines (check each entry with --entry NAME for those)")
     checked = entries.check_every_entry(args, prepare_model, lambda: _progress(args.quiet))
     tables, warnings = checked.tables(), checked.warnings
     exit_code = checked.exit_code(args.fail_on_vacuous)
@@ -254,6 +253,9 @@ def _check_every_entry(args: argparse.Namespace) -> int:
     elif args.format == "sarif":
         from ..report.sarif import format_sarif_entries
         print(format_sarif_entries(tables, exit_code, warnings), end="")
+    elif args.format == "codeclimate":
+        from ..report.codeclimate import format_codeclimate
+        print(format_codeclimate(_entry_findings(args, tables, warnings)), end="")
     else:
         print("\n".join(f"entry {entry}:\n{format_text(results, describer, args.full_trace)}"
                         for entry, results, describer in tables))
@@ -283,6 +285,17 @@ def warnings_text(warnings) -> str:
     root, named = display_root([w.span.file for w in warnings if w.span and w.span.file])
     text = render_all(warnings, root)
     return f"(files relative to {root})\n{text}" if named else text
+
+
+def _entry_findings(args: argparse.Namespace, tables, warnings) -> list:
+    """The Code Quality issues of ``--entry all``: each entry's properties, their messages
+    naming the entry, then the warnings of the whole check."""
+    found = []
+    for entry, results, describer in tables:
+        for finding, _ in from_results(results, describer, (), args.files[0],
+                                       args.fail_on_vacuous):
+            found.append(replace(finding, message=f"entry {entry}: {finding.message}"))
+    return found + [finding for finding, _ in from_results((), None, warnings, args.files[0])]
 
 
 def _refuse_unwritable_targets(args: argparse.Namespace) -> None:
