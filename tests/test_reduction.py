@@ -181,7 +181,8 @@ def test_counterexample_lists_every_line_and_sliced_values(tmp_path):
     path.write_text(counters(2, statistics=True))
     out = io.StringIO()
     with contextlib.redirect_stdout(out):
-        main(["check", str(path), "--formula", 'P: G "c1 < 1"', "--quiet"])
+        # --full-trace: every step, none folded as not read by the property (issue 28)
+        main(["check", str(path), "--formula", 'P: G "c1 < 1"', "--quiet", "--full-trace"])
     text = out.getvalue()
     assert "P: VIOLATED" in text
     assert 'lastLog = "cycle 1"' in text and "nCycles = 1" in text

@@ -29,8 +29,10 @@ WAITING = CASES / "tasks_fairness_waiting"
 
 
 def checked(folder: Path, task: str, fairness: bool = True, **options) -> api.CheckReport:
-    program = api.load_program([str(folder / "prog.mod")], add_tasks=[str(folder / task)])
     properties = api.read_properties(str(folder / "props.ltl"))
+    # as `check` loads: data a property names keeps its stored value (issue 28)
+    program = api.load_program([str(folder / "prog.mod")], add_tasks=[str(folder / task)],
+                               properties=properties)
     return api.check(program, properties, api.CheckOptions(fairness=fairness, **options))
 
 
@@ -62,7 +64,8 @@ def test_a_waiting_task_need_not_step_in_a_fair_loop():
 
 
 def report_program(folder: Path, task: str):
-    return api.load_program([str(folder / "prog.mod")], add_tasks=[str(folder / task)])
+    return api.load_program([str(folder / "prog.mod")], add_tasks=[str(folder / task)],
+                            properties=api.read_properties(str(folder / "props.ltl")))
 
 
 def test_without_fairness_the_starving_loop_is_a_counterexample():

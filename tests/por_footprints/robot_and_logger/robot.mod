@@ -15,7 +15,7 @@ MODULE Robot
       robot_only := robot_only + count;  ! LOCAL
       reported := count;                 ! VISIBLE
       Bookkeeping;                       ! LOCAL
-      IF count > limit THEN              ! LOCAL
+      IF count > limit THEN              ! SHARED
         done := TRUE;                    ! LOCAL
       ENDIF
       count := count + status;           ! SHARED
