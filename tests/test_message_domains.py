@@ -136,3 +136,27 @@ def test_a_routine_no_call_leads_to_is_never_reached_under_any_input(tmp_path):
 def test_a_parsed_code_dispatched_by_test_gets_each_case_number_as_fields():
     [(_, _, messages, exact)] = domains_of("socket_parsed_code")
     assert {"1 1 #", "2 2 #", "99 99 #"} <= set(messages) and not exact
+
+
+def test_a_further_tasks_receives_get_their_domains_and_honest_coverage(tmp_path):
+    """A socket server in the second task of a controller: its receive is offered the
+    messages its code tells apart, as the main task's are, and code it leaves unreached is
+    said to rest on the messages tried (not 'under any input')."""
+    (tmp_path / "robot.mod").write_text(
+        "MODULE Robot\n  PERS bool go := FALSE;\n  PROC main()\n    WaitUntil go;\n"
+        "  ENDPROC\nENDMODULE\n")
+    (tmp_path / "link.mod").write_text(
+        "MODULE Link\n  PERS bool go := FALSE;\n  VAR socketdev server;\n"
+        "  VAR socketdev client;\n  VAR string data := \"\";\n  VAR num parsed := 0;\n"
+        "  PROC main()\n    SocketCreate server;\n    SocketBind server, \"127.0.0.1\", 1025;\n"
+        "    SocketListen server;\n    SocketAccept server, client \\Time:=WAIT_MAX;\n"
+        "    SocketReceive client \\Str:=data \\Time:=WAIT_MAX;\n"
+        "    IF data = \"TRUE\" THEN\n      go := TRUE;\n    ENDIF\n"
+        "    IF StrToVal(data, parsed) AND parsed > 7 THEN\n      go := FALSE;\n    ENDIF\n"
+        "  ENDPROC\nENDMODULE\n")
+    program = api.load_program([str(tmp_path / "robot.mod")],
+                               add_tasks=[str(tmp_path / "link.mod")])
+    report = api.check(program, [])
+    notes = [w.message for w in report.warnings if w.code.code == "RMC515"]
+    assert len(notes) == 1 and notes[0].startswith("SocketReceive at line 12: messages 'TRUE'")
+    assert all("under any input" not in message for message in coverage(report))

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 from typing import Iterable, Optional, Sequence
 
 from .. import ast
-from ..semantics.program import PROGRAM_NAMESPACE, Program
+from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
 
 # instruction or function (canonical name) -> what a check offers it only some of
 SAMPLED = {
@@ -49,8 +49,8 @@ def sampled_inputs(program: Program, exact: Iterable[tuple] = ()) -> tuple:
     exact = set(exact)
     found = []
     for routine in program.routines:
-        if routine.ast is None or routine.namespace != PROGRAM_NAMESPACE:
-            continue
+        if routine.ast is None or routine.namespace == ENVIRONMENT_NAMESPACE:
+            continue                # every task's code: the environment model is no input
         for node, _ in ast.walk(routine.ast):
             if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) \
                     and node.name.key in SAMPLED \

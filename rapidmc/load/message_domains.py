@@ -35,7 +35,7 @@ from ..diagnostics import DOMAIN_ASSUMED, Diagnostic
 from ..diagnostics.quoting import quoted
 from ..semantics import rawbytes
 from ..semantics.literals import parse_literal
-from ..semantics.program import PROGRAM_NAMESPACE, Program
+from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
 from ..semantics.scope import CONSTANT
 from ..semantics.types import BOOL, RECORD, STRING, ArrayType, default_value
 from ..semantics.values import format_num
@@ -86,14 +86,13 @@ NUMBER_ANSWERS = {"TPREADNUM": "TPReadNum", "TPREADDNUM": "TPReadDnum"}
 def message_domains(program: Program) -> tuple:
     """A ``MessageDomain`` per reading site of the program's own code, in source order:
     socket receives, ``x := ReadStr(...)`` / ``x := ReadNum(...)``, ``TPReadNum``."""
-    routines = [r for r in program.routines
-                if r.ast is not None and r.namespace == PROGRAM_NAMESPACE]
     found = []
-    for routine in routines:
-        for node, _ in ast.walk(routine.ast):
-            domain = _site_domain(program, routines, node)
-            if domain is not None:
-                found.append(domain)
+    for routines in task_routines(program):       # each task's code apart: names are its own
+        for routine in routines:
+            for node, _ in ast.walk(routine.ast):
+                domain = _site_domain(program, routines, node)
+                if domain is not None:
+                    found.append(domain)
     return tuple(sorted(_bounded(found), key=lambda d: (d.site.file, d.site.line,
                                                          d.site.column)))
 
@@ -241,7 +240,7 @@ class Uses:
         if key == "UNPACKRAWBYTES":
             self._unpacked(call)
             return
-        symbol = _routine_named(self.program, key)
+        symbol = _routine_named(self.routines, key)
         if symbol is None or symbol.ast is None:
             return
         parameters = [p for p in symbol.ast.parameters if not p.optional]
@@ -318,7 +317,7 @@ class Uses:
     def _observe(self, node, parents, routine) -> None:
         scope = routine.scope
         if isinstance(node, ast.NameRef) and node.name.key in self.views \
-                and not _plain_read(node, parents, self.program, scope):
+                and not _plain_read(node, parents, self.routines, scope):
             self.exact = False
         if isinstance(node, ast.Binary) and (self.carries(node.left) or self.carries(node.right)):
             self._comparison(node, scope)
@@ -593,11 +592,19 @@ def _string_value(expr, scope) -> Optional[str]:
     return None
 
 
-def _routine_named(program: Program, key: str):
+def task_routines(program: Program) -> list[list]:
+    """The routines of the program's own code (the environment model's left out), one list
+    per task: the main task's first."""
+    tasks: dict[int, list] = {}
     for routine in program.routines:
-        if routine.key == key and routine.namespace == PROGRAM_NAMESPACE:
-            return routine
-    return None
+        if routine.ast is not None and routine.namespace != ENVIRONMENT_NAMESPACE:
+            tasks.setdefault(routine.namespace, []).append(routine)
+    return [tasks[namespace] for namespace in sorted(tasks)]
+
+
+def _routine_named(routines: list, key: str):
+    """The routine ``key`` among one task's ``routines``."""
+    return next((routine for routine in routines if routine.key == key), None)
 
 
 def _literal_number(expr) -> Optional[float]:
@@ -612,7 +619,7 @@ OUTPUTS = {"SOCKETSEND", "TPWRITE", "WRITE", "ERRWRITE", "ERRLOG"} | set(RECEIVE
     | set(NUMBER_ANSWERS)
 
 
-def _plain_read(ref: ast.NameRef, parents: tuple, program: Program, scope) -> bool:
+def _plain_read(ref: ast.NameRef, parents: tuple, routines: list, scope) -> bool:
     """Whether this use of received data can only tell apart what the tried values do:
     a comparison operand (its other side is judged where it is compared), a TEST subject,
     a copy, a write, an argument of a routine of the program (followed there) or of an
@@ -627,5 +634,5 @@ def _plain_read(ref: ast.NameRef, parents: tuple, program: Program, scope) -> bo
     if isinstance(parent, ast.Argument) and len(parents) >= 2:
         call = parents[-2]
         key = getattr(getattr(call, "name", None), "key", "")
-        return key in OUTPUTS or _routine_named(program, key) is not None
+        return key in OUTPUTS or _routine_named(routines, key) is not None
     return False
