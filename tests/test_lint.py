@@ -224,6 +224,23 @@ def test_a_syntax_error_is_reported_not_linted(tmp_path, monkeypatch):
     assert code == 2 and "bad.mod:3" in err and "[RMC101]" in err and out == ""
 
 
+@pytest.mark.parametrize("form", ["json", "sarif"])
+def test_a_syntax_error_is_a_finding_of_a_machine_readable_report(tmp_path, monkeypatch, form):
+    # a CI step uploads the report whatever the exit code: it must be a report, not nothing
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "bad.mod").write_text("MODULE Bad\n  PROC main()\n    x := ;\n  ENDPROC\nENDMODULE\n")
+    code, out, err = run(["lint", "bad.mod", "--format", form])
+    assert code == 2 and "[RMC101]" in err
+    document = json.loads(out)
+    if form == "json":
+        assert document["exit_code"] == 2
+        assert [(f["code"], f["location"]["line"]) for f in document["findings"]] == [("RMC101", 3)]
+    else:
+        [result] = document["runs"][0]["results"]
+        assert (result["ruleId"], result["level"]) == ("RMC101", "error")
+        assert result["locations"][0]["physicalLocation"]["region"]["startLine"] == 3
+
+
 def test_a_backup_is_linted_task_by_task(monkeypatch, tmp_path):
     monkeypatch.chdir(tmp_path)
     for task, text in (("T_ROB1", "MODULE Main\n  PROC main()\n    VAR bool a;\n"

@@ -54,11 +54,17 @@ def execute(args: argparse.Namespace) -> int:
     try:
         return _lint(args)
     except UserError as exc:
-        if args.format != "codeclimate":
+        if args.format == "text":
             raise
-        # a Code Quality report is always a JSON array: input errors are blocker issues in it
+        # a machine-readable report is always written, so that a CI step that uploads it
+        # finds a valid file: input errors are findings in it (blocker issues in Code Quality)
         print(render_all(exc.diagnostics), file=sys.stderr)
-        sys.stdout.write(format_codeclimate_errors(exc.diagnostics, args.files[0]))
+        if args.format == "codeclimate":
+            sys.stdout.write(format_codeclimate_errors(exc.diagnostics, args.files[0]))
+        elif args.format == "sarif":
+            sys.stdout.write(format_lint_sarif(exc.diagnostics, exc.exit_code))
+        else:
+            sys.stdout.write(format_lint_json(exc.diagnostics, exc.exit_code, 0))
         return exc.exit_code
 
 
