@@ -101,6 +101,34 @@ def test_tasks_waiting_for_each_other_deadlock(tmp_path, capsys):
     assert "deadlock" in capsys.readouterr().err
 
 
+MOVER = """MODULE Mover{n}
+  CONST robtarget there := [[{x},0,300],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  PROC main()
+    MoveJ there, v1000, fine, tool0;
+    WaitUntil CPos().x {wait};
+    TPWrite "robot {n} at " \\Num:=CPos().x;
+  ENDPROC
+ENDMODULE
+"""
+
+
+def test_each_task_that_moves_reads_and_moves_its_own_robot(tmp_path, capsys):
+    """Two tasks that move (motion tasks by their move instructions: no backup configures
+    them) each keep their robot: each waits for a position only the other's robot has, so
+    both wait for ever; with one robot for both tasks one of them would go on."""
+    f = files(tmp_path, a=MOVER.format(n=1, x=900, wait="< 100"),
+              b=MOVER.format(n=2, x=50, wait="> 800"))
+    code, result = verdicts(capsys, f["a"], "--add-task", f["b"],
+                            "--formula", 'one: G "CPos(TASK1).x = 0 OR CPos(TASK1).x = 900"',
+                            "--formula", 'two: F "CPos(TASK2).x = 50"')
+    assert code == 1 and result["no_deadlock"] == "VIOLATED", result
+    assert result["one"] == result["two"] == "HOLDS", result
+    f = files(tmp_path, a=MOVER.format(n=1, x=900, wait="> 800"),
+              b=MOVER.format(n=2, x=50, wait="< 100"))
+    assert main(["run", f["a"], "--add-task", f["b"]]) == 0
+    assert sorted(capsys.readouterr().out.splitlines()) == ["robot 1 at 900", "robot 2 at 50"]
+
+
 def test_a_backup_with_all_tasks(tmp_path, capsys):
     backup = tmp_path / "backup"
     for task, text in (("T_ROB1", ROBOT), ("T_FEED", FEEDER)):
