@@ -137,3 +137,17 @@ def test_a_backup_with_all_tasks(tmp_path, capsys):
         (folder / "Main.mod").write_text(text)
     assert main(["run", str(backup), "--task", "T_ROB1", "--all-tasks"]) == 0
     assert capsys.readouterr().out.count("robot took part") == 3
+
+
+def test_environment_code_reading_the_robot_of_two_motion_tasks_is_a_modelling_error(
+        tmp_path, capsys):
+    """No task steps while the environment reacts: which robot CPos() means is not guessed."""
+    f = files(tmp_path, a=MOVER.format(n=1, x=900, wait="> 800"),
+              b=MOVER.format(n=2, x=50, wait="< 100"),
+              env="MODULE Env\n  VAR signaldi di1;\n  PROC react()\n"
+                  "    IF CPos().x > 800 SetDI di1, 1;\n  ENDPROC\nENDMODULE\n")
+    assert main(["check", f["a"], "--add-task", f["b"], "--env", f["env"]]) == 2
+    err = capsys.readouterr().err
+    assert "ERR_NOT_MOVETASK" in err and "[RMC503]" in err, err
+    assert "each of the motion tasks main task, task 2 (b) moves its own" in err, err
+    assert main(["check", f["a"], "--env", f["env"], "--quiet"]) == 0   # one robot: read

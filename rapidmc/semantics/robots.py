@@ -68,6 +68,24 @@ def _moving_namespaces(linker) -> set:
 _NOT_MOVING = frozenset({"GETSYSDATA", "SETSYSDATA"})
 
 
+class NoTaskRobot:
+    """The robot environment code sees on a controller where each motion task has its own:
+    no task is stepping, so reading (or moving) "the" robot is a modelling error
+    (ERR_NOT_MOVETASK), never a silent choice of one task's robot."""
+
+    def __init__(self, program):
+        motion = ", ".join(program.task_names[number] for number in program.motion_tasks)
+        self.message = (f"environment code reads or moves the robot, and each of the motion "
+                        f"tasks {motion} moves its own (not modelled)")
+
+    def __getitem__(self, part):
+        from .errors import RapidError
+        raise RapidError("ERR_NOT_MOVETASK", self.message)
+
+    def __iter__(self):
+        return self[0]
+
+
 def initial_robots(program, home: tuple):
     """The robot part of the start state: ``home``, once per task when each has its own."""
     if program.robot_per_task:

@@ -29,7 +29,7 @@ from .machine import Machine
 from .program import Program
 from .state import ENDED, FAILED, RUNNING, STOPPED, Frame, Interrupts, State, Transition
 from .lazy_inputs import InputView
-from .robots import initial_robots, task_robot, with_task_robot
+from .robots import NoTaskRobot, initial_robots, task_robot, with_task_robot
 from .choosers import Chooser, CheckConfig, ScriptChooser  # noqa: F401 (the step's interface)
 from .fused_step import fused_successors
 from .plain_step import (MERGED_STEP_LIMIT, is_plain, plain_successors,  # noqa: F401
@@ -98,6 +98,9 @@ def run_environment_routine(m: Machine, routine_index: int) -> None:
     saved_frames = m.frames
     saved_status = m.status
     saved_waiting = m.waiting            # the program's own wait, not the environment's
+    saved_robot = m.robot
+    if m.program.robot_per_task:
+        m.robot = NoTaskRobot(m.program)
     m.waiting = False
     m.frames = [Frame(routine.index, 0, routine.initial_locals)]
     m.status = RUNNING
@@ -120,6 +123,7 @@ def run_environment_routine(m: Machine, routine_index: int) -> None:
         m.frames = saved_frames
         m.status = saved_status
         m.waiting = saved_waiting
+        m.robot = saved_robot
 
 
 class EnvironmentFault(Exception):
