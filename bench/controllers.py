@@ -44,8 +44,8 @@ Later the same day (issue 31: each motion task keeps its own robot position), N=
 motion tasks, native, 420 s per search: 391,951 states, 76 CPU seconds, no_deadlock
 VIOLATED (the logger waits for ever while the robots go on), the other two HOLD.  The
 main branch of that hour, with one TCP for the whole controller, gives 355,639 states and
-the same verdicts (its figures had moved since the 23,916 above, with the socket message
-domains of other tasks): the second robot's position costs 10 % more states here.
+the same verdicts (its figures had moved since the 23,916 above; why was not looked into):
+the second robot's position costs 10 % more states here.
 """
 from __future__ import annotations
 
