@@ -64,7 +64,8 @@ def door_case(program: str, states: int, d1: str, d2: str) -> Case:
 def multimove_case(backup: str, states: int, mutex: str, gives_back: str) -> Case:
     verdicts = {"zone_mutex": mutex, "no_motion_door_open": HOLDS, "rob1_answered": HOLDS,
                 "rob2_answered": HOLDS, "rob1_gives_back": gives_back,
-                "rob2_gives_back": gives_back}
+                "rob2_gives_back": gives_back, "zone_box_mutex": mutex,
+                "rob1_zone_granted": HOLDS, "rob2_zone_granted": HOLDS}
     return Case(f"case_studies/multimove/{backup}", "case_studies/multimove/door.mod",
                 "case_studies/multimove/cell.ltl", verdicts, states)
 
@@ -82,8 +83,8 @@ CASES = {
                                            plant="variants/plant_sensors_forget.mod"),
     "door_safe": door_case("door_safe.mod", 28, HOLDS, HOLDS),
     "door_race": door_case("door_race.mod", 35, VIOLATED, HOLDS),
-    "multimove_fixed": multimove_case("fixed", 1393, HOLDS, HOLDS),
-    "multimove_faulty": multimove_case("faulty", 4425, VIOLATED, VIOLATED),
+    "multimove_fixed": multimove_case("fixed", 2157, HOLDS, HOLDS),
+    "multimove_faulty": multimove_case("faulty", 4810, VIOLATED, VIOLATED),
 }
 
 VIOLATIONS = [(case, name) for case, c in CASES.items()
@@ -238,7 +239,11 @@ VIOLATION_SHOWN = {
                                          lambda s: s.values["req2"] == "FALSE"),
     "zone_mutex": lambda lasso: any(one and two for one, two in zip(
         in_zone(lasso, "Rob1.mod"), in_zone(lasso, "Rob2.mod"))),
+    "zone_box_mutex": lambda lasso: any(
+        state.values.get("T_ROB1.robot TCP") == state.values.get("T_ROB2.robot TCP") == P_ZONE
+        for state in lasso.states),
 }
+P_ZONE = "[900,0,300]"      # pZone of both robot tasks of case_studies/multimove
 
 
 def in_zone(lasso: Lasso, module: str) -> list[bool]:
@@ -348,20 +353,34 @@ def test_door_race_d1_trace_moves_after_the_door_opened_between_test_and_lock(js
 
 
 def test_multimove_mutex_trace_names_both_tasks_entering_the_zone(json_reports):
-    """faulty/zone_mutex: both robots pass their zone_busy test before either raises the
-    flag; the steps name their tasks (the inputs choose T_ROB1 and T_ROB2)."""
+    """faulty/zone_mutex: a robot enters the zone while the other is inside, each having
+    passed its own zone_busy test; the steps name their tasks (the inputs choose T_ROB1 and
+    T_ROB2)."""
     report = property_report(json_reports["multimove_faulty"], "zone_mutex")
     lasso = read_lasso(report["trace"])
     both = next(i for i, (one, two) in enumerate(zip(in_zone(lasso, "Rob1.mod"),
                                                      in_zone(lasso, "Rob2.mod"))) if one and two)
     entered = [step for step in lasso.steps[:both + 1] if step["source"] == "WorkInZone;"]
     assert {step["inputs"]["task"] for step in entered[-2:]} == {"T_ROB1", "T_ROB2"}
-    tests = [step["inputs"]["task"] for step in lasso.steps[:both + 1]
-             if step["source"] == "WaitUntil NOT zone_busy;"]
-    assert tests[-2:] in (["T_ROB1", "T_ROB2"], ["T_ROB2", "T_ROB1"])
+    tests = {step["inputs"]["task"] for step in lasso.steps[:both + 1]
+             if step["source"] == "WaitUntil NOT zone_busy;"}
+    assert tests == {"T_ROB1", "T_ROB2"}
     assert report["atoms"] == [
         {"atom": 'InRoutine(T_ROB1, "WorkInZone")', "tasks": ["T_ROB1"]},
         {"atom": 'InRoutine(T_ROB2, "WorkInZone")', "tasks": ["T_ROB2"]}]
+
+
+def test_multimove_zone_box_trace_moves_each_robot_by_its_own_task(json_reports):
+    """faulty/zone_box_mutex, stated on the two robots' TCPs: each task's move changes its
+    own robot's position only (T_ROB1.robot TCP by Rob1.mod's steps, T_ROB2.robot TCP by
+    Rob2.mod's), and the atoms name their tasks."""
+    report = property_report(json_reports["multimove_faulty"], "zone_box_mutex")
+    lasso = read_lasso(report["trace"])
+    movers = {name: {Path(step["location"]["file"]).name for step in lasso.steps
+                     if name in step["changes"] and step["location"]}
+              for name in ("T_ROB1.robot TCP", "T_ROB2.robot TCP")}
+    assert movers == {"T_ROB1.robot TCP": {"Rob1.mod"}, "T_ROB2.robot TCP": {"Rob2.mod"}}
+    assert [atom["tasks"] for atom in report["atoms"]] == [["T_ROB1"], ["T_ROB2"]]
 
 
 def moves_from_line(lasso: Lasso, index: int) -> int | None:

@@ -74,6 +74,16 @@ def test_case_studies_report_the_same_with_both_engines(name, monkeypatch):
 
 
 @needs_native
+def test_a_controller_of_two_robots_reports_the_same_with_both_engines(monkeypatch):
+    """tests/task_backups/robots: T_ROB1 and T_ROB2 each keep their own robot in the state."""
+    case = ROOT / "tests" / "task_backups" / "robots"
+    document = assert_same_reports([str(case / "backup"), "--ltl", str(case / "props.ltl")],
+                                   monkeypatch)
+    verdicts = {entry["name"]: entry["verdict"] for entry in document["properties"]}
+    assert verdicts["rob1_own_side"] == "HOLDS" and verdicts["both_at_p10"] == "VIOLATED"
+
+
+@needs_native
 @pytest.mark.parametrize("seed", range(12))
 def test_generated_programs_report_the_same_with_both_engines(seed, tmp_path, monkeypatch):
     (tmp_path / "random.mod").write_text(random_program(seed))

@@ -306,6 +306,51 @@ def test_tasks_with_interrupts_choices_and_ends_agree(tmp_path, tasks, reduction
     assert answered == staged > 0
 
 
+MOVING_MAIN = """MODULE MovingMain
+  PERS num shared := 0;
+  VAR signaldi di1;
+  VAR intnum alarm;
+  CONST robtarget p1 := [[900,0,300],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  PROC main()
+    AliasIO "DI1", di1;
+    CONNECT alarm WITH OnAlarm;
+    ISignalDI di1, 1, alarm;
+    MoveJ p1, v1000, fine, tool0;
+    WaitUntil shared >= 1;
+    MoveL Offs(p1, 0, 0, CPos().z), v1000, fine, tool0;
+  ENDPROC
+  TRAP OnAlarm
+    MoveJ Offs(p1, 10, 0, 0), v1000, fine, tool0;
+  ENDTRAP
+ENDMODULE
+"""
+
+MOVING_FAILING = """MODULE MovingFailing
+  PERS num shared;
+  CONST robtarget p2 := [[50,0,300],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  VAR num x := 0;
+  PROC main()
+    MoveJ p2, v1000, fine, tool0;
+    shared := 1;
+    WaitUntil shared >= 2;
+    x := 1 / (shared - 2);
+  ENDPROC
+ENDMODULE
+"""
+
+
+@BOTH
+def test_two_motion_tasks_each_with_its_robot_agree(tmp_path, reductions):
+    """Each task moves its own robot (semantics.robots): the views carry the task's robot,
+    a TRAP in the main task moves the main task's, and an uncaught error after a move
+    leaves every robot in the failed state as the general driver does."""
+    program = program_files(tmp_path, MOVING_MAIN, MOVING_FAILING, MOVING_FAILING.replace(
+        "MovingFailing", "Third").replace("shared := 1;", "shared := 2;"))
+    assert program.robot_per_task and program.motion_tasks == (0, 1, 2)
+    staged, answered = compare_staged(program, formulas('s: G "shared <= 3"'), reductions)
+    assert answered == staged > 0
+
+
 def test_stored_inputs_beside_tasks_agree(tmp_path):
     """A property that reads an input keeps it in states: every step chooses it first."""
     program = program_files(tmp_path, MAIN_TASK, HELPER_TASK)

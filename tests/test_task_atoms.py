@@ -77,12 +77,6 @@ def test_a_task_has_no_routine_of_another(tmp_path):
     assert code == 2 and "task T_LOG has no routine named 'MoveToSlot'" in text, text
 
 
-def test_at_target_with_a_task_says_per_robot_positions_are_not_modelled(tmp_path):
-    code, text = run(tmp_path, 'G !"AtTarget(T_ROB2, [[0,0,0],[1,0,0,0],[0,0,0,0],'
-                     '[9E9,9E9,9E9,9E9,9E9,9E9]])"')
-    assert code == 2 and "AtTarget takes no task" in text, text
-
-
 def test_tasks_added_without_a_name_are_named_by_number(tmp_path):
     """``--add-task`` tasks are called ``task 2 (b)``: atoms name them TASK1, TASK2 ..."""
     module = ("MODULE M{n}\n  TASK PERS num mine := 0;\n  PROC main()\n    mine := {n};\n"
@@ -143,3 +137,66 @@ def test_the_controller_tcp_compares_with_numbers_for_a_zone_box(tmp_path):
               "--formula", 'inside: F "CPos().x > 800 AND CPos().x < 1000 AND CPos().z < 400"',
               "--formula", 'outside: G !"CPos().x > 950"'])
     assert "inside: HOLDS" in out.getvalue() and "outside: HOLDS" in out.getvalue()
+
+
+# --- robots: tests/task_backups/robots/backup, where T_ROB1 and T_ROB2 each move their own
+# robot (the verdicts of AtTarget(T_ROB2, p10), CPos(T_ROB1).x ... are pinned by that case)
+
+ROBOTS = Path(__file__).resolve().parent / "task_backups" / "robots" / "backup"
+
+
+def run_robots(tmp_path: Path, formula: str) -> tuple[int, str]:
+    props = tmp_path / "props.ltl"
+    props.write_text(f"p: {formula}\n")
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out):
+        code = main(["check", str(ROBOTS), "--ltl", str(props), "--quiet"])
+    return code, out.getvalue()
+
+
+@pytest.mark.parametrize("atom, example", [
+    ("AtTarget(p10)", "AtTarget(T_ROB1, p10)"),
+    ("CPos().x > 1000", "CPos(T_ROB1)"),
+    ("CRobT().trans.z < 400", "CRobT(T_ROB1)"),
+])
+def test_a_robot_atom_without_a_task_is_an_error_with_a_caret(tmp_path, atom, example):
+    code, text = run_robots(tmp_path, f'G !"{atom}"')
+    assert code == 2, text
+    name = atom.split("(")[0]
+    assert f"{name} reads a robot, and each of the motion tasks T_ROB1, T_ROB2 moves its own" \
+        in text and "[RMC406]" in text, text
+    assert f"name the robot's task first, e.g. {example}" in text, text
+    assert "props.ltl:1:8: error:" in text, text        # at the call, inside the quote
+
+
+def test_a_task_that_moves_no_robot_has_no_robot_atom(tmp_path):
+    code, text = run_robots(tmp_path, 'G !"CPos(T_LOG).x > 0"')
+    assert code == 2 and "CPos: task T_LOG moves no robot" in text, text
+    assert "the motion tasks: T_ROB1, T_ROB2" in text, text
+
+
+def test_at_target_reads_the_target_in_the_named_task(tmp_path):
+    """Both tasks declare p10; T_LOG declares none."""
+    code, text = run_robots(tmp_path, 'G !"AtTarget(T_LOG, p10)"')
+    assert code == 2 and "AtTarget: task T_LOG moves no robot" in text, text
+    assert run_robots(tmp_path, 'F ("AtTarget(T_ROB2, p10)" & "CPos(T_ROB2).x = 1500")')[0] == 0
+
+
+def test_a_controller_with_one_motion_task_keeps_its_robot_atoms_unqualified(tmp_path):
+    """The qualified backup's SYS.cfg marks T_ROB1 and T_ROB2 motion tasks; with a logger
+    beside one robot task that moves, an unqualified robot atom reads that robot and the
+    report names its task."""
+    (tmp_path / "r.mod").write_text(
+        "MODULE R\n  CONST robtarget p1 := [[900,0,300],[1,0,0,0],[0,0,0,0],"
+        "[9E9,9E9,9E9,9E9,9E9,9E9]];\n  PROC main()\n    MoveJ p1, v1000, fine, tool0;\n"
+        "  ENDPROC\nENDMODULE\n")
+    (tmp_path / "log.mod").write_text("MODULE L\n  VAR num n := 0;\n  PROC main()\n"
+                                      "    n := 1;\n  ENDPROC\nENDMODULE\n")
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(out):
+        code = main(["check", str(tmp_path / "r.mod"), "--add-task", str(tmp_path / "log.mod"),
+                     "--formula", 'at: G !"AtTarget(p1)"',
+                     "--formula", 'box: F "CPos(TASK1).x > 800"'])
+    text = out.getvalue()
+    assert code == 1 and "at: VIOLATED" in text and "box: HOLDS" in text, text
+    assert 'atoms: "AtTarget(p1)" (TASK1)' in text, text

@@ -101,6 +101,34 @@ def test_tasks_waiting_for_each_other_deadlock(tmp_path, capsys):
     assert "deadlock" in capsys.readouterr().err
 
 
+MOVER = """MODULE Mover{n}
+  CONST robtarget there := [[{x},0,300],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  PROC main()
+    MoveJ there, v1000, fine, tool0;
+    WaitUntil CPos().x {wait};
+    TPWrite "robot {n} at " \\Num:=CPos().x;
+  ENDPROC
+ENDMODULE
+"""
+
+
+def test_each_task_that_moves_reads_and_moves_its_own_robot(tmp_path, capsys):
+    """Two tasks that move (motion tasks by their move instructions: no backup configures
+    them) each keep their robot: each waits for a position only the other's robot has, so
+    both wait for ever; with one robot for both tasks one of them would go on."""
+    f = files(tmp_path, a=MOVER.format(n=1, x=900, wait="< 100"),
+              b=MOVER.format(n=2, x=50, wait="> 800"))
+    code, result = verdicts(capsys, f["a"], "--add-task", f["b"],
+                            "--formula", 'one: G "CPos(TASK1).x = 0 OR CPos(TASK1).x = 900"',
+                            "--formula", 'two: F "CPos(TASK2).x = 50"')
+    assert code == 1 and result["no_deadlock"] == "VIOLATED", result
+    assert result["one"] == result["two"] == "HOLDS", result
+    f = files(tmp_path, a=MOVER.format(n=1, x=900, wait="> 800"),
+              b=MOVER.format(n=2, x=50, wait="< 100"))
+    assert main(["run", f["a"], "--add-task", f["b"]]) == 0
+    assert sorted(capsys.readouterr().out.splitlines()) == ["robot 1 at 900", "robot 2 at 50"]
+
+
 def test_a_backup_with_all_tasks(tmp_path, capsys):
     backup = tmp_path / "backup"
     for task, text in (("T_ROB1", ROBOT), ("T_FEED", FEEDER)):
@@ -109,3 +137,17 @@ def test_a_backup_with_all_tasks(tmp_path, capsys):
         (folder / "Main.mod").write_text(text)
     assert main(["run", str(backup), "--task", "T_ROB1", "--all-tasks"]) == 0
     assert capsys.readouterr().out.count("robot took part") == 3
+
+
+def test_environment_code_reading_the_robot_of_two_motion_tasks_is_a_modelling_error(
+        tmp_path, capsys):
+    """No task steps while the environment reacts: which robot CPos() means is not guessed."""
+    f = files(tmp_path, a=MOVER.format(n=1, x=900, wait="> 800"),
+              b=MOVER.format(n=2, x=50, wait="< 100"),
+              env="MODULE Env\n  VAR signaldi di1;\n  PROC react()\n"
+                  "    IF CPos().x > 800 SetDI di1, 1;\n  ENDPROC\nENDMODULE\n")
+    assert main(["check", f["a"], "--add-task", f["b"], "--env", f["env"]]) == 2
+    err = capsys.readouterr().err
+    assert "ERR_NOT_MOVETASK" in err and "[RMC503]" in err, err
+    assert "each of the motion tasks main task, task 2 (b) moves its own" in err, err
+    assert main(["check", f["a"], "--env", f["env"], "--quiet"]) == 0   # one robot: read

@@ -100,7 +100,8 @@ PROPERTY_FILE = _code("RMC403", "property-file", "a property file line is malfor
 AUTOMATON = _code("RMC404", "automaton", "a supplied automaton (HOA) is malformed or does not fit")
 DUPLICATE_PROPERTY = _code("RMC405", "duplicate-property", "two properties with one name")
 AMBIGUOUS_NAME = _code("RMC406", "ambiguous-name",
-                       "an atom names data or a place several tasks have, without naming the task")
+                       "an atom names data or a place several tasks have, or a robot of a "
+                       "controller with several motion tasks, without naming the task")
 
 # --- model checking (5xx) ---------------------------------------------------------
 STATE_LIMIT = _code("RMC501", "state-limit", "the search reached --max-states or --max-seconds")

@@ -198,6 +198,7 @@ class ProgramFiles:
     configuration: Optional[Configuration] = None   # the backup's SYSPAR files
     # task name (None: the main task) -> its encrypted module files (load.encrypted)
     encrypted: Optional[dict] = None
+    motion_tasks: tuple = ()            # the backup's tasks SYS.cfg marks -MotionTask
 
 
 def resolve_program_files(args) -> ProgramFiles:
@@ -210,6 +211,7 @@ def resolve_program_files(args) -> ProgramFiles:
     main_task, main_entry, notes, alone = None, "main", [], None
     encrypted: dict = {}
     configuration = None
+    motion_tasks: list[str] = []
     for name in args.files:
         path = Path(name)
         if not is_backup(path):
@@ -241,6 +243,7 @@ def resolve_program_files(args) -> ProgramFiles:
         if len(loaded) > 1 and task is None:
             notes.append(_loaded_note(path, [t for t in loaded if t.name == main_task or
                                              any(t.name == other[0] for other in tasks)]))
+        motion_tasks.extend(t.name for t in loaded if t.motion)
         configuration = read_configuration(_child(path, "SYSPAR"))
         backup = backup_eio(path)
         if backup and not eio:
@@ -251,7 +254,7 @@ def resolve_program_files(args) -> ProgramFiles:
                       "main"))
     signals = [signal for eio_path in eio_paths for signal in read_eio(eio_path)]
     return ProgramFiles(paths, tasks, signals, main_task, main_entry, tuple(notes), alone,
-                        configuration, encrypted)
+                        configuration, encrypted, tuple(motion_tasks))
 
 
 def _runnable_tasks(path: Path, tasks: list[BackupTask]) -> tuple[list[BackupTask], list]:
@@ -314,7 +317,7 @@ def link_options(files: ProgramFiles) -> dict:
     every task of a backup is loaded (a task list naming another task is then an error)."""
     return {"configured_signals": files.signals, "main_task_name": files.main_task,
             "all_tasks_loaded": files.main_task is not None and files.alone is None,
-            "configuration": files.configuration}
+            "configuration": files.configuration, "motion_tasks": files.motion_tasks}
 
 
 def load_tasks(files: ProgramFiles) -> list:

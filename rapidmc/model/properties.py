@@ -42,12 +42,15 @@ from ..semantics.errors import RapidError
 from ..semantics.expressions import Compiled, ExpressionCompiler, constant
 from ..semantics.machine import Machine
 from ..semantics.program import Program
+from ..semantics.robots import task_robot
 from ..semantics.scope import (CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, Scope,
                               Symbol)
 from ..semantics.instructions import Wait
 from ..semantics.library.tasks import SyncWait
 from ..semantics.state import ENDED, FAILED, RUNNING, STOPPED, State
-from ..semantics.types import BOOL, NUM, POS, ROBTARGET, STRING, RapidType
+from ..semantics.library.position import ROBOT_PARTS
+from ..semantics.library.registry import lookup_function
+from ..semantics.types import BOOL, NUM, POS, PREDEFINED_TYPES, ROBTARGET, STRING, RapidType
 
 _PROPERTY_LINE = re.compile(r"^\s*([A-Za-z_][A-Za-z0-9_.-]*)\s*:(?!=)\s*(.*?)\s*$")
 AT_TARGET_TOLERANCE = 0.5      # mm
@@ -394,6 +397,10 @@ class _AtomExpressions(ExpressionCompiler):
         factory = LOCATION_ATOMS.get(expr.name.key)
         if factory is not None:
             return factory(self.atoms, expr)
+        if expr.name.key in ROBOT_PARTS:
+            compiled = _robot_function(self.atoms, expr)
+            if compiled is not None:
+                return compiled
         return super()._FunctionCall(expr, expected)
 
     def _Component(self, expr: ast.Component, expected) -> Compiled:
@@ -551,30 +558,62 @@ def _labels(statements):
             yield from _labels(branch.body)
 
 
+def _robot_task(atoms: AtomCompiler, expr: ast.FunctionCall) -> tuple[Optional[Task], Callable,
+                                                                      tuple]:
+    """The task a robot atom names first (None: the controller's one robot, which
+    ``check_unambiguous`` has made sure of), ``fn(machine)`` reading its robot, and the
+    atom's other arguments.  A task named must move a robot."""
+    args = expr.args
+    if not atoms.tasks.names_task(expr):
+        return None, lambda m: m.robot, args
+    task = atoms.tasks.named(args[0].value)
+    if task.number not in atoms.program.motion_tasks:
+        motion = ", ".join(other.name for other in atoms.tasks.motion)
+        raise error(ATOM, f"{expr.name.text}: task {task.name} moves no robot", expr.span,
+                    f"the motion tasks: {motion}" if motion else
+                    "no task of this controller moves a robot")
+    if not atoms.program.robot_per_task:
+        return task, lambda m: m.robot, args[1:]
+    number = task.number
+    return task, lambda m: m.robot[number], args[1:]
+
+
 def _at_target(atoms: AtomCompiler, expr) -> Compiled:
-    if expr.args and atoms.tasks.named(expr.args[0].value) is not None:
-        raise error(ATOM, "AtTarget takes no task: rapidmc keeps one TCP for the whole "
-                    "controller (a move jumps to its target), so the position of each "
-                    "robot of several motion tasks is not modelled", expr.span,
-                    "state where a robot is by its task's place instead, e.g. "
-                    "InRoutine(T_ROB2, \"MoveToZone\") or a PERS flag the task sets")
-    if len(expr.args) != 1 or expr.args[0].value is None:
-        raise error(ATOM, "AtTarget takes one robtarget or pos", expr.span)
-    compiler = ExpressionCompiler(atoms.linker, atoms.scope)
-    target = compiler.value(expr.args[0].value)
+    """``AtTarget(p10)``; ``AtTarget(T_ROB2, p10)``: T_ROB2's robot is at T_ROB2's ``p10``."""
+    task, robot, args = _robot_task(atoms, expr)
+    if len(args) != 1 or args[0].value is None:
+        raise error(ATOM, "AtTarget takes one robtarget or pos (after a task)", expr.span)
+    compiler = ExpressionCompiler(atoms.linker, atoms.scope if task is None else
+                                  atoms.tasks.scope(task))
+    target = compiler.value(args[0].value)
     fn = target.fn
     if target.type is ROBTARGET:
         position = lambda m: fn(m)[0]  # noqa: E731
     elif target.type is POS:
         position = fn
     else:
-        raise error(ATOM, "AtTarget takes a robtarget or a pos", expr.args[0].span)
+        raise error(ATOM, "AtTarget takes a robtarget or a pos", args[0].span)
 
     def at_target(m):
-        x, y, z = m.robot[0][0]
+        x, y, z = robot(m)[0][0]
         px, py, pz = position(m)
         return (x - px) ** 2 + (y - py) ** 2 + (z - pz) ** 2 <= AT_TARGET_TOLERANCE ** 2
     return Compiled(at_target, BOOL)
+
+
+def _robot_function(atoms: AtomCompiler, expr) -> Optional[Compiled]:
+    """``CPos(T_ROB2)``, ``CRobT(T_ROB2)`` ...: that task's robot, as the function reads
+    the robot of the task that calls it; None without a task (the library's function)."""
+    if not atoms.tasks.names_task(expr):
+        return None
+    _, robot, args = _robot_task(atoms, expr)
+    if args:
+        raise error(ATOM, f"{expr.name.text} in an atom takes a task only", expr.span)
+    part, component = ROBOT_PARTS[expr.name.key]
+    rapid_type = PREDEFINED_TYPES[lookup_function(expr.name.key).signature.return_type.upper()]
+    if component is None:
+        return Compiled(lambda m: robot(m)[part], rapid_type)
+    return Compiled(lambda m: robot(m)[part][component], rapid_type)
 
 
 def _routine_data(atoms: AtomCompiler, routine_index: int, expr: ast.Component) -> Compiled:
@@ -650,11 +689,13 @@ def _waiting(atoms: AtomCompiler, expr) -> Compiled:
 
 
 def _task_view(m: Machine, number: int) -> Machine:
-    """A machine whose running stack is task ``number``'s (what that task's code reads)."""
-    if number == 0:
+    """A machine whose running stack and robot are task ``number``'s (what that task's
+    code reads)."""
+    if number == 0 and not m.program.robot_per_task:
         return m
     view = Machine(m.program, m.to_state(), None)
     view.frames = list(task_stack(m, number))
+    view.robot = task_robot(m.program, m.robot, number)
     return view
 
 

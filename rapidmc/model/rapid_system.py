@@ -22,6 +22,7 @@ from ..diagnostics import TRACE_REPLAY, SourceCache, error
 from ..load.stubs.module_text import is_stub_module
 from ..semantics.program import (ENVIRONMENT_NAMESPACE,
                                 PROGRAM_NAMESPACE, Program)
+from ..semantics.robots import ROBOT_TCP, task_namespace
 from ..semantics.scope import LOCAL_DATA
 from ..semantics.types import POS, ArrayType
 from ..semantics.library.tasks import SyncWait
@@ -374,7 +375,12 @@ class RapidDescriber:
                     if rapid_type is None else value_text(value, rapid_type)
         for signal in self.signals:
             view[f"signal {signal.name}"] = format_num(state.io[signal.index])
-        view["robot TCP"] = value_text(state.robot[0][0], POS)
+        if self.program.robot_per_task:        # each motion task's robot (semantics.robots)
+            for number in self.program.motion_tasks:
+                name = self._task_name(task_namespace(number))
+                view[f"{name}.{ROBOT_TCP}"] = value_text(state.robot[number][0][0], POS)
+        else:
+            view[ROBOT_TCP] = value_text(state.robot[0][0], POS)
         for slot, name, rapid_type in self.environment:
             view[name] = self._text(store[slot], slot, rapid_type)
         if state.errno:

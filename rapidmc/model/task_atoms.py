@@ -77,6 +77,11 @@ class ControllerTasks:
     def several(self) -> bool:
         return len(self.tasks) > 1
 
+    @property
+    def motion(self) -> list[Task]:
+        """The tasks that move a robot (``semantics.robots``), in task order."""
+        return [self.tasks[number] for number in self.program.motion_tasks]
+
     def named(self, expr) -> Optional[Task]:
         """The task ``expr`` names (a bare task name), on a controller of several tasks."""
         if self.several and isinstance(expr, ast.NameRef):
@@ -130,9 +135,15 @@ class ControllerTasks:
                 candidates = self.ambiguous(node.name.key)
                 if candidates:
                     raise _ambiguous_name(node.name, candidates, where, atom)
-            elif isinstance(node, ast.FunctionCall) and node.name.key in NEEDS_TASK and \
-                    not (node.args and self.named(node.args[0].value) is not None):
-                raise _location_without_task(node, self.tasks, where, atom)
+            elif isinstance(node, ast.FunctionCall) and not self.names_task(node):
+                if node.name.key in NEEDS_TASK:
+                    raise _location_without_task(node, self.tasks, where, atom)
+                if node.name.key in ROBOT_ATOMS and self.program.robot_per_task:
+                    raise _robot_without_task(node, self.motion, where, atom)
+
+    def names_task(self, call: ast.FunctionCall) -> bool:
+        """Whether ``call``'s first argument names a task (``InRoutine(T_ROB2, ...)``)."""
+        return bool(call.args) and self.named(call.args[0].value) is not None
 
 
 def _identity(symbol: Symbol) -> tuple:
@@ -166,11 +177,16 @@ def tasks_read(expr: ast.Expr, tasks: ControllerTasks) -> tuple[str, ...]:
                       if not tasks.shared(symbol)]
             if len(owners) == 1:
                 found.add(owners[0].number)
+        elif isinstance(node, ast.FunctionCall) and node.name.key in ROBOT_ATOMS and \
+                not tasks.names_task(node) and len(tasks.motion) == 1:
+            found.add(tasks.motion[0].number)     # the one robot: its motion task's
     return tuple(task.qualifier for task in tasks.tasks if task.number in found)
 
 
 # location atoms that read where one task is (Ended, Failed: the whole controller)
 NEEDS_TASK = frozenset({"INROUTINE", "ATLINE", "ATLABEL", "WAITING"})
+# atoms that read a robot: with several motion tasks, one robot per task (semantics.robots)
+ROBOT_ATOMS = frozenset({"ATTARGET", "CPOS", "CROBT", "CJOINTT", "CTOOL", "CWOBJ"})
 
 
 def unqualified_nodes(expr: ast.Expr, tasks: ControllerTasks) -> Iterator[object]:
@@ -181,7 +197,7 @@ def unqualified_nodes(expr: ast.Expr, tasks: ControllerTasks) -> Iterator[object
     if isinstance(expr, ast.FunctionCall):
         args = [arg.value for arg in expr.args if arg.value is not None]
         if args and tasks.named(args[0]) is not None:
-            args = args[1:]
+            args = []       # read in that task's names: AtTarget(T_ROB2, p10) is T_ROB2's p10
         for arg in args:
             yield from unqualified_nodes(arg, tasks)
     for field in ("base", "operand", "left", "right"):
@@ -237,6 +253,14 @@ def _location_without_task(call: ast.FunctionCall, tasks, where: ast.Span, atom:
     return error(AMBIGUOUS_NAME, f"atom \"{atom}\": {call.name.text} needs a task on a "
                  f"controller of several tasks ({names})", atom_position(where, call.span),
                  f"name the task first, e.g. {call.name.text}({example})")
+
+
+def _robot_without_task(call: ast.FunctionCall, motion, where: ast.Span, atom: str):
+    names = ", ".join(task.name for task in motion)
+    example = ", ".join([motion[0].qualifier] + [_argument_text(arg) for arg in call.args])
+    return error(AMBIGUOUS_NAME, f"atom \"{atom}\": {call.name.text} reads a robot, and each "
+                 f"of the motion tasks {names} moves its own", atom_position(where, call.span),
+                 f"name the robot's task first, e.g. {call.name.text}({example})")
 
 
 def _argument_text(arg: ast.Argument) -> str:

@@ -37,6 +37,7 @@ from typing import Iterable, Optional, Sequence, Union
 
 from ..check.trace import INITIAL, Change, Trace, TraceStep, TransitionInfo
 from ..load.stubs.module_text import is_stub_module
+from ..semantics.robots import ROBOT_TCP
 from .trace_slice import needed_steps, read_part, reads_of, whole_assignments
 
 LOOP_STARTS = "-- loop starts here (repeats forever) --"
@@ -436,15 +437,15 @@ def sliced_line(sliced: SlicedAway) -> str:
     """``-- steps 2-18: waypoints{1..17} assigned, not read by the error --``."""
     steps = sliced.steps
     names = list(dict.fromkeys(change.name for step in steps for change in step.changes))
-    moved = "robot TCP" in names
-    entries = _name_ranges([name for name in names if name != "robot TCP"])
+    robots = [name for name in names if name.endswith(ROBOT_TCP)]
+    entries = _name_ranges([name for name in names if name not in robots])
     what = []
     if entries:
         more = len(entries) - SLICED_SHOWN
         what.append(", ".join(entries[:SLICED_SHOWN]) + (f" and {more} more" if more > 0
                                                         else "") + " assigned")
-    if moved:
-        what.append("the robot moved")
+    if robots:
+        what.append("the robot moved" if len(robots) == 1 else "the robots moved")
     written = sum(1 for step in steps if step.transition and step.transition.output)
     if written:
         what.append(f"{written} FlexPendant {'line' if written == 1 else 'lines'} written")

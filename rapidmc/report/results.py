@@ -27,6 +27,7 @@ from ..diagnostics import MORE_ERRORS, Diagnostic
 from ..diagnostics.error_report import omitted_count
 from ..check.result import UNKNOWN, VIOLATED, SearchResult, SearchStats
 from ..check.trace import Trace, TraceDescriber, TraceStep, build_trace
+from .trace_slice import with_robot
 from .counterexample import (IDENTIFIER, TextOptions, chosen_inputs_only, counterexample_lines,
                              read_data)
 
@@ -134,7 +135,7 @@ def assumption_lines(checked: PropertyResult) -> list[str]:
 def text_options(checked: PropertyResult, describer: TraceDescriber,
                  full: bool = False) -> TextOptions:
     """How ``checked``'s counterexample is written: the names its formula uses are shown."""
-    names = frozenset(word.upper() for word in IDENTIFIER.findall(checked.formula))
+    names = with_robot({word.upper() for word in IDENTIFIER.findall(checked.formula)})
     return TextOptions(full, names, frozenset(getattr(describer, "stub_data", ())),
                        handler_starts=frozenset(getattr(describer, "handler_starts", ())))
 

@@ -32,6 +32,7 @@ import re
 from typing import Iterable, Sequence
 
 from ..check.trace import INITIAL, TRANSITION, Trace, TraceStep
+from ..semantics.robots import ROBOT_TCP
 
 IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 STRING = re.compile(r'"(?:[^"]|"")*"')
@@ -50,9 +51,9 @@ CONTROL_WORDS = frozenset("""
     ISIGNALGI ISIGNALGO ITIMER IPERS IERROR IRMQMESSAGE
     CALLBYVAR
 """.split())
-# the robot's position is read by these functions (and by atoms naming them)
-ROBOT_READERS = frozenset({"CROBT", "CPOS", "CJOINTT", "CTOOL", "CWOBJ", "CDIRPATH"})
-ROBOT = "ROBOT TCP"
+# the robot's position is read by these functions (and by atoms naming them, or AtTarget)
+ROBOT_READERS = frozenset({"CROBT", "CPOS", "CJOINTT", "CTOOL", "CWOBJ", "CDIRPATH", "ATTARGET"})
+ROBOT = ROBOT_TCP.upper()      # a change of T_ROB2.robot TCP writes T_ROB2 and ROBOT TCP
 ALWAYS_KEPT = ("ERRNO", "program")
 LABEL = re.compile(r"^\s*[A-Za-z][A-Za-z0-9_]*\s*:(?!=)")
 
@@ -88,7 +89,12 @@ def reads_of(step: TraceStep) -> frozenset:
         if named and named[0] not in CONTROL_WORDS and not LABEL.match(text):
             named = words_of(read_part(text))
         words.update(named)
-    return frozenset(words | {ROBOT} if words & ROBOT_READERS else words)
+    return with_robot(words)
+
+
+def with_robot(words) -> frozenset:
+    """``words`` (upper case), and the robot's position when one of them reads it."""
+    return frozenset(words | {ROBOT} if ROBOT_READERS.intersection(words) else words)
 
 
 def writes_of(step: TraceStep) -> frozenset:

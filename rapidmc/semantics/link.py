@@ -26,6 +26,7 @@ from .calls import ParameterView, bind
 from .errors import ERROR_NUMBERS, LONG_JMP_ALL_ERR
 from .expressions import ExpressionCompiler
 from .machine import ABSENT
+from .robots import motion_task_numbers
 from .runtime import PredefinedCalls
 from .scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, Scope, Symbol
 from .statements import RoutineCompiler
@@ -270,6 +271,9 @@ class Linker:
         linked.task_entries = task_entries
         linked.task_names = (self.options.get("main_task_name") or "main task",) + \
             self.task_names[1:]
+        linked.motion_tasks = motion_task_numbers(self, self.task_names,
+                                                  self.options.get("motion_tasks", ()))
+        linked.robot_per_task = len(linked.motion_tasks) > 1
         if environment is not None and environment.modules:
             linked.environment_init = environment_init
             linked.environment_react = environment_react

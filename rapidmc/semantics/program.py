@@ -138,6 +138,9 @@ class Program:
     environment_reads_io: bool = False                     # some environment code reads signals
     task_entries: tuple = ()                               # entry routines of further tasks
     task_names: tuple = ("main task",)                     # one name per task, main task first
+    motion_tasks: tuple = ()                               # numbers of the tasks that move a robot
+    # the state keeps one robot per task (two or more motion tasks: semantics.robots)
+    robot_per_task: bool = False
     load_notes: tuple = ()                                 # Diagnostics about what was loaded
     # indices of the signals the code names; None: unknown (AliasIO of a computed name)
     named_signals: Optional[frozenset] = None

@@ -30,6 +30,7 @@ from typing import Optional
 from .choosers import CheckConfig
 from .fused_step import fused_successors
 from .plain_step import plain_successors
+from .robots import task_robot, with_task_robot
 from .state import ENDED, FAILED, RUNNING, Frame, Interrupts, State, Transition
 
 _new_tuple = tuple.__new__
@@ -73,7 +74,7 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
     # the task each transition's label names (task_of), when no input label comes first
     # with that name
     owners = [] if len(runnable) > 1 and not steps.input_named_task else None
-    rest = state[3:10] + ((),)
+    rest = state[4:10] + ((),)
     result = []
     append = result.append
     for io, ready_io, input_label in zip(inputs, ready, config.input_labels):
@@ -82,9 +83,10 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
             if plan is not None and task == 0:
                 _main_steps(state, label, ready_io, plan, steps, shared, result)
             else:
-                view = _new_tuple(State, (stacks[task], state[1], io) + rest)
+                robot = task_robot(program, state[3], task)
+                view = _new_tuple(State, (stacks[task], state[1], io, robot) + rest)
                 for transition in steps(view, task, shared):
-                    append(_in_task(state, task, label, transition))
+                    append(_in_task(program, state, task, label, transition))
             if owners is not None:
                 owners += [task_label[0][1]] * (len(result) - len(owners))
     if not tasks and config.merge_points and _may_merge(result):
@@ -197,11 +199,16 @@ def view_steps(program, config: CheckConfig) -> ViewSteps:
     return steps
 
 
-def _in_task(state: State, task: int, label: tuple, transition: Transition) -> Transition:
+def _in_task(program, state: State, task: int, label: tuple,
+             transition: Transition) -> Transition:
     """The transition of a one-task view as a step of ``task`` in ``state``: its stack
     back among the others' (a task that ended leaves the others running; an uncaught
-    error stops every task: nothing to put back), ``label`` before the view's."""
+    error stops every task: nothing to put back), its robot back among the others' (when
+    each task has its own: ``semantics.robots``), ``label`` before the view's."""
     after = transition[2]
+    if program.robot_per_task:
+        after = _new_tuple(State, after[:3] + (with_task_robot(program, state[3], task,
+                                                               after[3]),) + after[4:])
     tasks = state[10]
     if tasks and after[7] != FAILED:
         if task:
@@ -286,10 +293,11 @@ def _main_steps(state: State, label: tuple, io, plan: list, steps: ViewSteps,
             result.append(_new_tuple(Transition, (label + timers_label, span,
                                                   _with_edges(after, before), "", False)))
             continue
-        view = _new_tuple(State, (state[0], state[1], io, state[3], interrupts) +
-                          state[5:10] + ((),))
+        program = steps.program
+        view = _new_tuple(State, (state[0], state[1], io, task_robot(program, state[3], 0),
+                                  interrupts) + state[5:10] + ((),))
         for transition in steps(view, 0, shared):
-            transition = _in_task(state, 0, label + timers_label, transition)
+            transition = _in_task(program, state, 0, label + timers_label, transition)
             after = _with_edges(transition[2], before)
             if after is not transition[2]:
                 transition = transition._replace(state=after)

@@ -29,6 +29,7 @@ from .machine import Machine
 from .program import Program
 from .state import ENDED, FAILED, RUNNING, STOPPED, Frame, Interrupts, State, Transition
 from .lazy_inputs import InputView
+from .robots import NoTaskRobot, initial_robots, task_robot, with_task_robot
 from .choosers import Chooser, CheckConfig, ScriptChooser  # noqa: F401 (the step's interface)
 from .fused_step import fused_successors
 from .plain_step import (MERGED_STEP_LIMIT, is_plain, plain_successors,  # noqa: F401
@@ -60,8 +61,8 @@ def start_state(program: Program, io_values: Optional[dict] = None) -> State:
         if signal is not None:
             io[signal.index] = signal_value(signal.kind, value)
     main = program.routines[program.entry]
-    robot = (HOME_TARGET, _predefined(program, "TOOL0"), _predefined(program, "WOBJ0"),
-             HOME_JOINTS)
+    robot = initial_robots(program, (HOME_TARGET, _predefined(program, "TOOL0"),
+                                     _predefined(program, "WOBJ0"), HOME_JOINTS))
     tasks = tuple((Frame(entry, 0, program.routines[entry].initial_locals),)
                   for entry in program.task_entries)
     return State((Frame(main.index, 0, main.initial_locals),), initial_store(program),
@@ -97,6 +98,9 @@ def run_environment_routine(m: Machine, routine_index: int) -> None:
     saved_frames = m.frames
     saved_status = m.status
     saved_waiting = m.waiting            # the program's own wait, not the environment's
+    saved_robot = m.robot
+    if m.program.robot_per_task:
+        m.robot = NoTaskRobot(m.program)
     m.waiting = False
     m.frames = [Frame(routine.index, 0, routine.initial_locals)]
     m.status = RUNNING
@@ -119,6 +123,7 @@ def run_environment_routine(m: Machine, routine_index: int) -> None:
         m.frames = saved_frames
         m.status = saved_status
         m.waiting = saved_waiting
+        m.robot = saved_robot
 
 
 class EnvironmentFault(Exception):
@@ -265,6 +270,8 @@ def _step_some_task(m: Machine, io_before):
         task = runnable[0]
     else:
         task = names.index(m.choose("task", tuple(names[i] for i in runnable)))
+    robots = m.robot
+    m.robot = task_robot(m.program, robots, task)      # the task moves its own robot
     if task == 0:
         span = _step_main_task(m, io_before)
     else:
@@ -276,6 +283,7 @@ def _step_some_task(m: Machine, io_before):
             tasks[task - 1] = tuple(m.frames)
             m.tasks = tuple(tasks)
             m.frames = main_frames
+    m.robot = with_task_robot(m.program, robots, task, m.robot)
     if m.status == ENDED and (m.frames or any(m.tasks)):
         m.status = RUNNING               # one task ended; the others go on
     return span

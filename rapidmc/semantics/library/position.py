@@ -7,7 +7,7 @@ from .registry import compiled
 from .signature_parts import TASK
 
 # name -> (part of the robot state, component of it or None for the whole part)
-_PARTS = {"CPOS": (ROBOT_TCP, 0), "CROBT": (ROBOT_TCP, None), "CJOINTT": (ROBOT_JOINTS, None),
+ROBOT_PARTS = {"CPOS": (ROBOT_TCP, 0), "CROBT": (ROBOT_TCP, None), "CJOINTT": (ROBOT_JOINTS, None),
           "CTOOL": (ROBOT_TOOL, None), "CWOBJ": (ROBOT_WOBJ, None)}
 
 
@@ -19,7 +19,7 @@ _PARTS = {"CPOS": (ROBOT_TCP, 0), "CROBT": (ROBOT_TCP, None), "CJOINTT": (ROBOT_
 def _robot_part(calls, compiler, call, entry) -> Compiled:
     """The modelled robot's position, joints, tool or work object (as last programmed)."""
     Arguments(calls, compiler, call, entry)
-    part, component = _PARTS[entry.key]
+    part, component = ROBOT_PARTS[entry.key]
     if component is None:
         return Compiled(lambda m: m.robot[part], calls.return_type(entry))
     return Compiled(lambda m: m.robot[part][component], calls.return_type(entry))

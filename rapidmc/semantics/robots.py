@@ -1,0 +1,107 @@
+"""The robots of a controller: which tasks move one, and each task's robot in the state.
+
+A RAPID task that moves a robot is a *motion task*: the backup's ``SYS.cfg``
+marks it (``-MotionTask``), or its code calls a move instruction (``MoveL``,
+``SearchL``, ``TriggL`` ... : the predefined procedures modelled on the robot
+state).  A MultiMove controller has several, each with its own robot.
+
+A program of one task, or a controller with one motion task, keeps one robot
+in the state (``State.robot``: TCP target, tool, work object, joints), as it
+always did.  With two or more motion tasks (``Program.robot_per_task``) the
+state keeps one robot per task, in task order: ``State.robot`` is then a tuple
+of robots, and a step of task T sees T's robot as its own (``task_robot``) and
+puts it back (``with_task_robot``), so T's moves change T's robot only.  A task
+that moves nothing keeps its robot at home.
+"""
+from __future__ import annotations
+
+from typing import Iterable
+
+from .. import ast
+from .configured_signals import _walk_statements
+from .program import FIRST_TASK_NAMESPACE, PROGRAM_NAMESPACE
+from .scope import ROUTINE
+
+# how traces name a robot's TCP (``T_ROB2.robot TCP`` for each motion task's own robot)
+ROBOT_TCP = "robot TCP"
+
+
+def task_namespace(number: int) -> int:
+    """The namespace of task ``number`` (the main task is 0)."""
+    return PROGRAM_NAMESPACE if number == 0 else FIRST_TASK_NAMESPACE + number - 1
+
+
+def motion_task_numbers(linker, task_names: tuple, configured: Iterable[str]) -> tuple:
+    """The numbers of the tasks that move a robot: those ``configured`` names (a backup's
+    ``-MotionTask``), and those whose code calls a move instruction."""
+    configured_keys = {name.upper() for name in configured}
+    moving = _moving_namespaces(linker)
+    return tuple(number for number, name in enumerate(task_names)
+                 if name.upper() in configured_keys or task_namespace(number) in moving)
+
+
+def _moving_namespaces(linker) -> set:
+    """The namespaces with a call of a predefined procedure that moves the robot."""
+    from .library.registry import ROBOT_STATE, lookup_procedure
+    found = set()
+    for routine in linker.routines:
+        namespace = routine.namespace
+        if namespace in found or routine.ast is None:
+            continue
+        scope = linker.namespaces.get(namespace)
+        for node in _walk_statements(routine.ast.body):
+            if not isinstance(node, ast.ProcedureCall):
+                continue
+            name = node.name
+            own = scope.names.get(name.key) if scope is not None else None
+            if own is not None and own.kind == ROUTINE:
+                continue                       # the task's own routine of that name
+            entry = lookup_procedure(name.key)
+            if entry is not None and entry.modelled == ROBOT_STATE and \
+                    entry.key not in _NOT_MOVING:
+                found.add(namespace)
+                break
+    return found
+
+
+# modelled on the robot state, but reading or setting data, not moving
+_NOT_MOVING = frozenset({"GETSYSDATA", "SETSYSDATA"})
+
+
+class NoTaskRobot:
+    """The robot environment code sees on a controller where each motion task has its own:
+    no task is stepping, so reading (or moving) "the" robot is a modelling error
+    (ERR_NOT_MOVETASK), never a silent choice of one task's robot."""
+
+    def __init__(self, program):
+        motion = ", ".join(program.task_names[number] for number in program.motion_tasks)
+        self.message = (f"environment code reads or moves the robot, and each of the motion "
+                        f"tasks {motion} moves its own (not modelled)")
+
+    def __getitem__(self, part):
+        from .errors import RapidError
+        raise RapidError("ERR_NOT_MOVETASK", self.message)
+
+    def __iter__(self):
+        return self[0]
+
+
+def initial_robots(program, home: tuple):
+    """The robot part of the start state: ``home``, once per task when each has its own."""
+    if program.robot_per_task:
+        return (home,) * len(program.task_names)
+    return home
+
+
+def task_robot(program, robot, task: int) -> tuple:
+    """Task ``task``'s robot in a state's robot part ``robot``."""
+    return robot[task] if program.robot_per_task else robot
+
+
+def with_task_robot(program, robot, task: int, moved: tuple):
+    """The robot part ``robot`` with task ``task``'s robot ``moved``."""
+    if not program.robot_per_task:
+        return moved
+    if robot[task] is moved:
+        return robot
+    return robot[:task] + (moved,) + robot[task + 1:]
