@@ -39,18 +39,30 @@ def unlink(parent: int) -> tuple[int, int]:
 
 class SystemSource:
     """The model a worker searches: the system itself (pickled with it), or a ``recipe``
-    that builds it in the worker's process, built once per ``key``."""
+    that builds it in the worker's process (``built_once``)."""
 
     def __init__(self, system=None, recipe: Optional[Callable] = None):
         self.system, self.recipe = system, recipe
-        self.key = None
-        if recipe is not None:
-            import hashlib
-            from ray import cloudpickle
-            self.key = hashlib.blake2b(cloudpickle.dumps(recipe), digest_size=16).hexdigest()
 
     def build(self):
-        return self.system if self.recipe is None else self.recipe()
+        return self.system if self.recipe is None else built_once(self.recipe)
+
+
+_BUILT: dict = {}       # a recipe's key -> what it built in this process
+KEEP_BUILT = 4
+
+
+def built_once(recipe: Callable):
+    """``recipe()``, built once per process for equal recipes (equal pickled bytes): the
+    searches of one check, safety and LTL, share the model their worker built."""
+    import hashlib
+    from ray import cloudpickle
+    key = hashlib.blake2b(cloudpickle.dumps(recipe), digest_size=16).hexdigest()
+    if key not in _BUILT:
+        if len(_BUILT) >= KEEP_BUILT:
+            _BUILT.clear()
+        _BUILT[key] = recipe()
+    return _BUILT[key]
 
 
 class Partition:
@@ -58,19 +70,12 @@ class Partition:
 
     def __init__(self):
         self.table = None
-        self.built: tuple = (None, None)       # (recipe key, the system it built)
 
     def start(self, index: int, count: int, source: "SystemSource", predicate: str,
               deadlock_is_target: bool, watch: Optional[str] = None) -> None:
         """Begin a search (an actor serves the searches of one check one after another)."""
         self.index, self.count = index, count
-        if source.recipe is None:
-            system = source.system
-        elif self.built[0] == source.key:
-            system = self.built[1]
-        else:
-            system = source.recipe()
-            self.built = (source.key, system)
+        system = source.build()
         self.system = system
         self.predicate = getattr(system, predicate)
         self.deadlock_is_target = deadlock_is_target
@@ -140,9 +145,8 @@ class Partition:
 
     def clear(self) -> None:
         """Let the search's states go (the system stays, for the check's next search)."""
-        built = self.built
+        self.__dict__.clear()
         self.__init__()
-        self.built = built
 
     def figures(self) -> dict:
         """What this partition holds: states, bytes, engine, and the process's peak memory."""

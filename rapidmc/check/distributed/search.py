@@ -30,7 +30,8 @@ from ..budget import SearchBudget
 from ..result import HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep, SearchResult, SearchStats
 from ..transition_system import TransitionSystem
 from .canonical import owner
-from .partition import NO_PARENT, Partition, SystemSource, unlink
+from .partition import NO_PARENT, SystemSource, unlink
+from .worker import SAFETY, Worker, call
 
 ENGINE = "distributed"
 
@@ -48,11 +49,11 @@ def partitioned_reachable(ray, partitions: int, system: TransitionSystem, predic
     the system itself is pickled to the workers).
     """
     budget = budget if budget is not None else SearchBudget()
-    actors = _actors(ray, partitions)
+    actors = actors_of(ray, partitions)
     shared = ray.put(SystemSource(system if rebuild is None else None, rebuild))
     try:
         with worker_failures(ray):
-            ray.get([actor.start.remote(index, partitions, shared, predicate,
+            ray.get([call(actor, SAFETY, "start", index, partitions, shared, predicate,
                                         deadlock_is_target, watch)
                      for index, actor in enumerate(actors)])
             return _Levels(ray, actors, system, budget, on_level).run()
@@ -61,19 +62,19 @@ def partitioned_reachable(ray, partitions: int, system: TransitionSystem, predic
         raise
     finally:
         for actor in _ACTORS.get("actors", ()):
-            actor.clear.remote()
+            call(actor, SAFETY, "clear")
 
 
 _ACTORS: dict = {}     # the actors of this Ray session: "session", "actors"
 
 
-def _actors(ray, partitions: int) -> list:
-    """``partitions`` Partition actors, kept for the next search of the same Ray session
-    (an actor costs a process start, a second or more)."""
+def actors_of(ray, partitions: int) -> list:
+    """``partitions`` ``worker.Worker`` actors, kept for the next search of the same Ray
+    session (an actor costs a process start, a second or more)."""
     session = ray.get_runtime_context().get_job_id()
     if _ACTORS.get("session") != session or len(_ACTORS.get("actors", ())) != partitions:
         drop_actors(ray)
-        actor_class = ray.remote(num_cpus=1)(Partition)
+        actor_class = ray.remote(num_cpus=1)(Worker)
         _ACTORS.update(session=session,
                        actors=[actor_class.remote() for _ in range(partitions)])
     return _ACTORS["actors"]
@@ -127,7 +128,7 @@ class _Levels:
             states, parents = batches[owner(state, count) if count > 1 else 0]
             states.append(state)
             parents.append(NO_PARENT)
-        received = [actor.receive.remote([-1], batches[index])
+        received = [call(actor, SAFETY, "receive", [-1], batches[index])
                     for index, actor in enumerate(self.actors)]
         while True:
             found = self._stored(ray.get(received))
@@ -145,7 +146,7 @@ class _Levels:
                 return self._result(UNKNOWN)
             if self.on_level is not None:
                 self.on_level(self.actors)
-            expanded = [actor.expand.options(num_returns=count + 1).remote()
+            expanded = [call(actor, SAFETY, "expand", returns=count + 1)
                         for actor in self.actors]
             figures = ray.get([refs[count] for refs in expanded])
             self.transitions = sum(f[0] for f in figures)
@@ -155,7 +156,8 @@ class _Levels:
                 if f[2] >= 0:
                     return self._result(VIOLATED, self._path(index, f[2]))
             senders = list(range(count))
-            received = [actor.receive.remote(senders, *[refs[target] for refs in expanded])
+            received = [call(actor, SAFETY, "receive", senders,
+                             *[refs[target] for refs in expanded])
                         for target, actor in enumerate(self.actors)]
 
     def _note_balance(self) -> None:
@@ -178,7 +180,8 @@ class _Levels:
         """The steps from an initial state to the target, across partitions."""
         states = []
         while True:
-            state, parent = self.ray.get(self.actors[partition].step_back.remote(state_id))
+            state, parent = self.ray.get(call(self.actors[partition], SAFETY, "step_back",
+                                              state_id))
             states.append(state)
             if parent == NO_PARENT:
                 break
@@ -192,7 +195,7 @@ class _Levels:
         return steps
 
     def _result(self, verdict: str, path=None) -> tuple:
-        figures = self.ray.get([actor.figures.remote() for actor in self.actors])
+        figures = self.ray.get([call(actor, SAFETY, "figures") for actor in self.actors])
         stored = sum(f["states"] for f in figures)
         memory = sum(f["bytes"] for f in figures)
         stats = SearchStats(product_states=stored, model_states=stored,
