@@ -211,9 +211,11 @@ def test_check_case_on_two_workers(cluster, name, monkeypatch):
 @pytest.mark.parametrize("study, program", [("sorter", "sorter_b.mod"),
                                             ("door", "door_race.mod")])
 def test_case_study_on_two_workers(cluster, study, program, monkeypatch):
+    """The built-in checks and the study's LTL properties (specs/), against --no-por."""
     monkeypatch.chdir(ROOT / "case_studies" / study)
-    argv = ["check", program, "--env", "plant.mod", "--format", "json", "--quiet"]
-    _same_builtin_answers(_json(argv), _json(argv + ["--workers", "2"]))
+    argv = ["check", program, "--env", "plant.mod", "--ltl", str(ROOT / "specs" / f"{study}.ltl"),
+            "--format", "json", "--quiet"]
+    _same_builtin_answers(_json(argv + ["--no-por"]), _json(argv + ["--workers", "2"]))
 
 
 @pytest.mark.parametrize("name, check", [("runtime_div_input", "no_runtime_error"),
