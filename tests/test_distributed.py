@@ -18,8 +18,14 @@ import functools
 import io
 import json
 import logging
+import os
 import random
+import shutil
+import signal
+import socket
+import subprocess
 import sys
+import tempfile
 from pathlib import Path
 from types import SimpleNamespace
 
@@ -303,3 +309,61 @@ def test_a_cycle_that_starves_a_task_is_searched_again_fairly_with_a_note(cluste
     assert code == 1, err
     assert "the cycle the cluster found for seen_again starves a task" in err
     assert "[RMC753]" in err
+
+
+def _free_port() -> int:
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        return probe.getsockname()[1]
+
+
+def test_ray_address_joins_a_running_cluster(tmp_path):
+    """``--ray ADDRESS`` joins a cluster that ``ray start --head`` runs (its own processes,
+    stopped afterwards by ending that command), and answers as one process does."""
+    require_tool(ray is not None, "RAPIDMC_REQUIRE_RAY", "Ray is not installed (the 'ray' extra)")
+    port = _free_port()
+    # a cluster of this test's own: its own temporary folder, and no token from ~/.ray
+    env = dict(os.environ, RAY_AUTH_MODE="disabled")
+    temp = tempfile.mkdtemp(prefix="/tmp/rmc")           # (Ray's socket paths must be short)
+    head = subprocess.Popen(
+        [sys.executable, "-m", "ray.scripts.scripts", "start", "--head", f"--port={port}",
+         "--node-ip-address=127.0.0.1", "--num-cpus=2", "--include-dashboard=false",
+         "--disable-usage-stats", f"--temp-dir={temp}", "--block"],
+        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env, start_new_session=True)
+    try:
+        case = CASES_DIR / "loop_toggle"
+        run = subprocess.run(
+            [sys.executable, "-m", "rapidmc", "check", "prog.mod", "--ltl", "props.ltl",
+             "--ray", f"127.0.0.1:{port}", "--format", "json", "--quiet"],
+            cwd=case, env=env, capture_output=True, text=True, timeout=600)
+        assert run.returncode == 1, run.stderr[-2000:]
+        report = json.loads(run.stdout)
+        expected = dict(line.split() for line in (case / "expected").read_text().splitlines()
+                        if line.strip() and not line.startswith("#"))
+        assert _verdicts(report) == expected
+        engines = {p["stats"]["engine"] for p in report["properties"]}
+        assert engines == {"distributed", "distributed-owcty"}
+    finally:
+        head.send_signal(signal.SIGTERM)                 # (ray start --block stops its node)
+        try:
+            head.wait(timeout=90)
+        except subprocess.TimeoutExpired:
+            os.killpg(head.pid, signal.SIGKILL)
+            head.wait()
+        shutil.rmtree(temp, ignore_errors=True)
+
+
+def test_an_address_with_no_cluster_is_a_diagnostic(monkeypatch):
+    """Ray's failure to join (here: refused) is RMC754 with exit 2, not an internal error."""
+    require_tool(ray is not None, "RAPIDMC_REQUIRE_RAY", "Ray is not installed (the 'ray' extra)")
+    from rapidmc.check.distributed import Cluster
+
+    def refuse(**options):
+        raise ConnectionError("Failed to connect to Ray cluster at 127.0.0.1:9")
+    monkeypatch.setattr(ray, "is_initialized", lambda: False)
+    monkeypatch.setattr(ray, "init", refuse)
+    with pytest.raises(UserError) as raised:
+        with Cluster(address="127.0.0.1:9").session():
+            pass
+    assert raised.value.exit_code == 2
+    assert raised.value.diagnostics[0].code.code == "RMC754"
