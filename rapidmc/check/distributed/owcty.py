@@ -116,23 +116,24 @@ class _Owcty:
         while True:
             figures = ray.get([refs[count] for refs in received])
             stored, new = sum(f[0] for f in figures), sum(f[1] for f in figures)
+            if new and stored > self.budget.max_states:
+                self.budget.reason = f"state limit {self.budget.max_states} reached"
+                return False
+            if new and self.on_level is not None:
+                self.on_level(actors)
             expanded = [call(actor, CYCLES, "expand", *[refs[index] for refs in received],
                              returns=count + 1) for index, actor in enumerate(actors)]
+            if new:       # (queued before waiting here, as in ``search``)
+                senders = list(range(count))
+                received = [call(actor, CYCLES, "receive", senders,
+                                 *[refs[target] for refs in expanded], returns=count + 1)
+                            for target, actor in enumerate(actors)]
             self.transitions = sum(ray.get([refs[count] for refs in expanded]))
             if new == 0:
                 return True
             self.depth += 1
-            if stored > self.budget.max_states:
-                self.budget.reason = f"state limit {self.budget.max_states} reached"
-                return False
             if not self.budget.checkpoint(stored, self.transitions, self.depth):
                 return False
-            if self.on_level is not None:
-                self.on_level(actors)
-            senders = list(range(count))
-            received = [call(actor, CYCLES, "receive", senders,
-                             *[refs[target] for refs in expanded], returns=count + 1)
-                        for target, actor in enumerate(actors)]
 
     def _spread(self, mode: str) -> bool:
         """Run one spread (``product_partition``) to its end; False at the time limit."""

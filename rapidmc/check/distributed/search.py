@@ -148,6 +148,12 @@ class _Levels:
                 self.on_level(self.actors)
             expanded = [call(actor, SAFETY, "expand", returns=count + 1)
                         for actor in self.actors]
+            # the next level's receives are queued before this process waits for the
+            # figures: the workers go on without waiting for a round trip to it
+            senders = list(range(count))
+            received = [call(actor, SAFETY, "receive", senders,
+                             *[refs[target] for refs in expanded])
+                        for target, actor in enumerate(self.actors)]
             figures = ray.get([refs[count] for refs in expanded])
             self.transitions = sum(f[0] for f in figures)
             self.deadlocks = sum(f[1] for f in figures)
@@ -155,10 +161,6 @@ class _Levels:
             for index, f in enumerate(figures):
                 if f[2] >= 0:
                     return self._result(VIOLATED, self._path(index, f[2]))
-            senders = list(range(count))
-            received = [call(actor, SAFETY, "receive", senders,
-                             *[refs[target] for refs in expanded])
-                        for target, actor in enumerate(self.actors)]
 
     def _note_balance(self) -> None:
         """The progress line's per-worker balance: each worker's share of the states."""
