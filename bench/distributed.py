@@ -1,6 +1,7 @@
 """One process against a local Ray cluster of 2 workers (``--workers 2``, issue 29).
 
 Usage: python bench/distributed.py [--counters 6,7] [--modulo 4] [--only NAME] [--workers 2]
+                                   [--ltl] [--split]
 
 For each model, each in a fresh process: the run-time error search of a check (breadth-first,
 the whole reachable state space, since these programs have no run-time error), once in one
@@ -15,6 +16,17 @@ of the workers; microseconds of wall time per state; the successors sent to anot
 partition per state and the pickled bytes of a state (the message volume); the maximum
 resident set size of the single process and of each worker.  The machine may be shared with
 other work: run it a few times.
+
+``--ltl``: the same for each whole-controller model's LTL property (bench/tasks.py's, which
+holds: the whole product is searched), in one process (``check_property``, partial-order
+reduction off as on a cluster) against OWCTY on the workers (``owcty``).
+
+``--split``: where a worker's time goes, without Ray: two ``Partition`` objects driven in
+one process, CPU seconds of stepping and routing successors (``expand``: the model's
+``successor_states`` and the owner hash), pickling and unpickling the batches, and storing
+what arrives (``receive``: interning the unpickled states), beside the one-process search's
+CPU seconds.  Their sum over 2 is what each of 2 workers would spend without Ray's own
+costs.
 """
 from __future__ import annotations
 
@@ -59,8 +71,96 @@ def pickled_bytes(system, sample: int = 300) -> float:
     return sum(len(pickle.dumps(state, protocol=5)) for state in seen) / len(seen)
 
 
+def ltl_model_of(name: str):
+    """The model with its LTL property, partial-order reduction off (as on a cluster)."""
+    from dataclasses import replace
+    _, files, tasks, formula, options = next(model for model in MODELS if model[0] == name)
+    options = api.CheckOptions(**options)
+    options = replace(options, reductions=replace(options.reductions, partial_order=False))
+    return api.prepare(load(files, tasks), [api.property_from_text(formula)], options)
+
+
+def measure_ltl(name: str, mode: str, workers: int) -> dict:
+    model = ltl_model_of(name)
+    prop, buchi, valuation = model.jobs[0]
+    if mode == "ltl-single":
+        from rapidmc.check import check_property
+        started = time.perf_counter()
+        result = check_property(model.system, buchi, valuation, max_states=None)
+        return {"verdict": result.verdict, "states": result.stats.product_states,
+                "seconds": time.perf_counter() - started,
+                "max_rss_kb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss}
+    import ray
+    from rapidmc.check.budget import SearchBudget
+    from rapidmc.check.distributed.owcty import partitioned_accepting_cycle
+    started = time.perf_counter()
+    ray.init(num_cpus=workers, include_dashboard=False, logging_level=logging.ERROR,
+             log_to_driver=False)
+    start_seconds = time.perf_counter() - started
+    recipe = api.model_recipe(model)
+    partitioned_accepting_cycle(ray, workers, model.system, buchi, valuation, prop.name, recipe,
+                                budget=SearchBudget(1))          # (actors start, model built)
+    started = time.perf_counter()
+    result, figures = partitioned_accepting_cycle(ray, workers, model.system, buchi, valuation,
+                                                  prop.name, recipe, budget=SearchBudget(None))
+    seconds = time.perf_counter() - started
+    ray.shutdown()
+    return {"verdict": result.verdict, "states": result.stats.product_states,
+            "seconds": seconds, "start_seconds": start_seconds,
+            "sent": sum(f["sent"] for f in figures), "pickled": pickled_bytes(model.system),
+            "worker_rss_kb": [f["max_rss_kb"] for f in figures],
+            "worker_states": [f["states"] for f in figures]}
+
+
+def measure_split(name: str, modulo: int) -> dict:
+    """CPU seconds of a worker's parts, two partitions driven here (module docstring)."""
+    from rapidmc.check import find_reachable
+    from rapidmc.check.distributed.canonical import owner
+    from rapidmc.check.distributed.partition import Partition, SystemSource
+    system = model_of(name, modulo).system
+    started = time.process_time()
+    single = find_reachable(system, system.failed, max_states=None)
+    cpu = {"single": time.process_time() - started, "expand": 0.0, "pickle": 0.0,
+           "unpickle": 0.0, "receive": 0.0}
+    parts = [Partition(), Partition()]
+    for index, part in enumerate(parts):
+        part.start(index, 2, SystemSource(system), "failed", False)
+    batches = [([], []) for _ in parts]
+    for state in system.initial_states():
+        batches[owner(state, 2)][0].append(state)
+        batches[owner(state, 2)][1].append(-1)
+    for index, part in enumerate(parts):
+        part.receive([-1], batches[index])
+    sent_bytes = 0
+    while True:
+        started = time.process_time()
+        outgoing = [part.expand() for part in parts]
+        cpu["expand"] += time.process_time() - started
+        started = time.process_time()
+        blobs = [[pickle.dumps(batches[target], protocol=5) for target in range(2)]
+                 for batches in outgoing]
+        cpu["pickle"] += time.process_time() - started
+        sent_bytes += sum(len(blob) for row in blobs for blob in row)
+        started = time.process_time()
+        loaded = [[pickle.loads(blob) for blob in row] for row in blobs]
+        cpu["unpickle"] += time.process_time() - started
+        started = time.process_time()
+        answers = [part.receive([0, 1], loaded[0][target], loaded[1][target])
+                   for target, part in enumerate(parts)]
+        cpu["receive"] += time.process_time() - started
+        if not sum(new for _, new, _ in answers):
+            break
+    states = sum(len(part.table) for part in parts)
+    assert states == single.stats.product_states
+    return {"states": states, "cpu": cpu, "bytes": sent_bytes}
+
+
 def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
     """One measurement in this process (the parent runs each in a fresh one)."""
+    if mode.startswith("ltl-"):
+        return measure_ltl(name, mode, workers)
+    if mode == "split":
+        return measure_split(name, modulo)
     model = model_of(name, modulo)
     system = model.system
     if mode == "single":
@@ -108,21 +208,27 @@ def main() -> None:
     parser.add_argument("--modulo", type=int, default=4)
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--only", default=None, help="only the models whose name holds this")
+    parser.add_argument("--ltl", action="store_true", help="time the LTL searches instead")
+    parser.add_argument("--split", action="store_true",
+                        help="where a worker's CPU time goes (no Ray)")
     parser.add_argument("--measure", nargs=2, default=None, help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.measure is not None:
         print(json.dumps(measure(*args.measure, args.modulo, args.workers)))
         return
     names = [model[0] for model in MODELS] + \
-        [f"counters N={n}" for n in args.counters.split(",") if n]
+        [f"counters N={n}" for n in args.counters.split(",") if n and not args.ltl]
+    names = [name for name in names if not args.only or args.only in name]
+    if args.split:
+        print_split(names, args.modulo)
+        return
+    modes = ("ltl-single", "ltl-workers") if args.ltl else ("single", "workers")
     print(f"{'model':16} {'states':>9} {'1 proc s':>8} {f'{args.workers} wkr s':>8} "
           f"{'speed-up':>8} {'us/state':>8} {'start s':>7} {'sent/st':>7} {'B/state':>7} "
           f"{'RSS 1 MB':>8} {'RSS wkr MB':>12} {'balance':>9}")
     for name in names:
-        if args.only and args.only not in name:
-            continue
-        single = fresh(name, "single", args.modulo, args.workers)
-        spread = fresh(name, "workers", args.modulo, args.workers)
+        single = fresh(name, modes[0], args.modulo, args.workers)
+        spread = fresh(name, modes[1], args.modulo, args.workers)
         assert (single["verdict"], single["states"]) == (spread["verdict"], spread["states"])
         states = single["states"]
         rss = "/".join(f"{kb / 1024:.0f}" for kb in spread["worker_rss_kb"])
@@ -132,6 +238,18 @@ def main() -> None:
               f"{1e6 * single['seconds'] / states:>8.0f} {spread['start_seconds']:>7.1f} "
               f"{spread['sent'] / states:>7.2f} {spread['pickled']:>7.0f} "
               f"{single['max_rss_kb'] / 1024:>8.0f} {rss:>12} {balance:>9}", flush=True)
+
+
+def print_split(names, modulo: int) -> None:
+    print(f"{'model':16} {'states':>9} {'1 proc s':>8} {'expand s':>8} {'pickle s':>8} "
+          f"{'unpick s':>8} {'receive s':>9} {'sum/2 s':>8} {'B sent/st':>9}")
+    for name in names:
+        found = fresh(name, "split", modulo, 2)
+        cpu, states = found["cpu"], found["states"]
+        parts = cpu["expand"] + cpu["pickle"] + cpu["unpickle"] + cpu["receive"]
+        print(f"{name:16} {states:>9,} {cpu['single']:>8.2f} {cpu['expand']:>8.2f} "
+              f"{cpu['pickle']:>8.2f} {cpu['unpickle']:>8.2f} {cpu['receive']:>9.2f} "
+              f"{parts / 2:>8.2f} {found['bytes'] / states:>9.0f}", flush=True)
 
 
 if __name__ == "__main__":

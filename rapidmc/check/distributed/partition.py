@@ -22,7 +22,7 @@ from array import array
 from typing import Callable, Hashable, Optional, Sequence
 
 from ..native import engine_of, state_table
-from .canonical import owner
+from .canonical import owned_bytes
 
 ID_BITS = 40
 ID_MASK = (1 << ID_BITS) - 1
@@ -115,6 +115,9 @@ class Partition:
         if successors_of is None:
             successors_of = self._targets
         outgoing = [([], array("q")) for _ in range(count)]
+        # a successor reached again in this level is sent once (its first parent, as its
+        # owner would keep): storing a state costs its owner more than encoding it here
+        sending: set = set()
         deadlock_target = -1
         end = len(table)
         for state_id in range(self.expanded, end):
@@ -128,7 +131,11 @@ class Partition:
                 if self.deadlock_is_target and deadlock_target < 0:
                     deadlock_target = state_id
             for successor in successors:
-                states, parents = outgoing[owner(successor, count) if count > 1 else 0]
+                encoded, target = owned_bytes(successor, count)
+                if encoded in sending:
+                    continue
+                sending.add(encoded)
+                states, parents = outgoing[target]
                 states.append(successor)
                 parents.append(state_id)
         self.expanded = end
