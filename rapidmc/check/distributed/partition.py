@@ -82,7 +82,7 @@ class Partition:
         # a method (state, successor states) -> bool to ask of every expanded state
         self.watch = getattr(system, watch) if watch is not None else None
         self.watched = False                   # whether it ever said True
-        self.table = state_table(system)
+        self.table = state_table(system, packed=True)
         self.parent = array("q")
         self.expanded = 0                      # states before this id have been expanded
         self.transitions = 0
