@@ -3,7 +3,8 @@
 A ``Partition`` is a plain class; ``search`` runs it as a Ray actor, one per worker, and
 keeps the actors for the next search of the same Ray session (``start`` begins one).  Its
 states are those whose canonical hash (``canonical.owner``) names it; it stores them in a
-state table of the engine's (``native.state_table``: the compiled one where built), each
+state table of the engine's (``native.state_table``: the model's packed table where it
+offers one, else the compiled one where built), each
 with the link to the state it was first reached from, which may live in another partition.
 
 A link is one number: ``sender << ID_BITS | id`` (the sender partition and the parent's id

@@ -58,7 +58,7 @@ class ProductPartition:
                                "differs from the driver's")
         self.product = Product(None, buchi)
         self.index, self.count = index, count
-        self.table = state_table(self.system)
+        self.table = state_table(self.system, packed=True)
         self.keys, self.index_of = array("q"), {}
         self.parent = array("q")
         self.edge_start, self.edges = array("q", [0]), array("q")
