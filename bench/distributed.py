@@ -51,14 +51,21 @@ from rapidmc import api  # noqa: E402
 
 
 def model_of(name: str, modulo: int):
+    """The model, partial-order reduction off as on a cluster (its cycle proviso depends on
+    the search order: with it, the two searches would store different states)."""
     if name.startswith("counters N="):
         inputs = int(name.split("=")[1])
         folder = tempfile.mkdtemp()
         path = Path(folder) / "counters.mod"
         path.write_text(counters_program(inputs, modulo))
-        return api.prepare(api.load_program([str(path)]), [])
+        return api.prepare(api.load_program([str(path)]), [], unreduced_order(api.CheckOptions()))
     _, files, tasks, _, options = next(model for model in MODELS if model[0] == name)
-    return api.prepare(load(files, tasks), [], api.CheckOptions(**options))
+    return api.prepare(load(files, tasks), [], unreduced_order(api.CheckOptions(**options)))
+
+
+def unreduced_order(options):
+    from dataclasses import replace
+    return replace(options, reductions=replace(options.reductions, partial_order=False))
 
 
 def pickled_bytes(system, sample: int = 300) -> float:
@@ -73,11 +80,9 @@ def pickled_bytes(system, sample: int = 300) -> float:
 
 def ltl_model_of(name: str):
     """The model with its LTL property, partial-order reduction off (as on a cluster)."""
-    from dataclasses import replace
     _, files, tasks, formula, options = next(model for model in MODELS if model[0] == name)
-    options = api.CheckOptions(**options)
-    options = replace(options, reductions=replace(options.reductions, partial_order=False))
-    return api.prepare(load(files, tasks), [api.property_from_text(formula)], options)
+    return api.prepare(load(files, tasks), [api.property_from_text(formula)],
+                       unreduced_order(api.CheckOptions(**options)))
 
 
 def measure_ltl(name: str, mode: str, workers: int) -> dict:
