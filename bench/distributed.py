@@ -22,10 +22,9 @@ holds: the whole product is searched), in one process (``check_property``, parti
 reduction off as on a cluster) against OWCTY on the workers (``owcty``).
 
 ``--split``: where a worker's time goes, without Ray: two ``Partition`` objects driven in
-one process, CPU seconds of stepping and routing successors (``expand``: the model's
-``successor_states`` and the owner hash), pickling and unpickling the batches, and storing
-what arrives (``receive``: interning the unpickled states), beside the one-process search's
-CPU seconds.  Their sum over 2 is what each of 2 workers would spend without Ray's own
+one process, CPU seconds of stepping, routing and pickling successors (``expand``: the
+model's ``successor_states``, the owner hash, ``encode_batch``) and of unpickling and storing
+what arrives (``receive``), beside the one-process search's CPU seconds.  Their sum over 2 is what each of 2 workers would spend without Ray's own
 costs.
 """
 from __future__ import annotations
@@ -114,6 +113,7 @@ def measure_ltl(name: str, mode: str, workers: int) -> dict:
             "seconds": seconds, "start_seconds": start_seconds,
             "sent": sum(f["sent"] for f in figures), "pickled": pickled_bytes(model.system),
             "worker_rss_kb": [f["max_rss_kb"] for f in figures],
+            "worker_cpu": [f["cpu_seconds"] for f in figures],
             "worker_states": [f["states"] for f in figures]}
 
 
@@ -121,12 +121,11 @@ def measure_split(name: str, modulo: int) -> dict:
     """CPU seconds of a worker's parts, two partitions driven here (module docstring)."""
     from rapidmc.check import find_reachable
     from rapidmc.check.distributed.canonical import owner
-    from rapidmc.check.distributed.partition import Partition, SystemSource
+    from rapidmc.check.distributed.partition import Partition, SystemSource, encode_batch
     system = model_of(name, modulo).system
     started = time.process_time()
     single = find_reachable(system, system.failed, max_states=None)
-    cpu = {"single": time.process_time() - started, "expand": 0.0, "pickle": 0.0,
-           "unpickle": 0.0, "receive": 0.0}
+    cpu = {"single": time.process_time() - started, "expand": 0.0, "receive": 0.0}
     parts = [Partition(), Partition()]
     for index, part in enumerate(parts):
         part.start(index, 2, SystemSource(system), "failed", False)
@@ -135,22 +134,15 @@ def measure_split(name: str, modulo: int) -> dict:
         batches[owner(state, 2)][0].append(state)
         batches[owner(state, 2)][1].append(-1)
     for index, part in enumerate(parts):
-        part.receive([-1], batches[index])
+        part.receive([-1], encode_batch(batches[index]))
     sent_bytes = 0
     while True:
         started = time.process_time()
-        outgoing = [part.expand() for part in parts]
+        outgoing = [part.expand() for part in parts]       # (batches pickled: bytes)
         cpu["expand"] += time.process_time() - started
+        sent_bytes += sum(len(blob) for row in outgoing for blob in row[:2])
         started = time.process_time()
-        blobs = [[pickle.dumps(batches[target], protocol=5) for target in range(2)]
-                 for batches in outgoing]
-        cpu["pickle"] += time.process_time() - started
-        sent_bytes += sum(len(blob) for row in blobs for blob in row)
-        started = time.process_time()
-        loaded = [[pickle.loads(blob) for blob in row] for row in blobs]
-        cpu["unpickle"] += time.process_time() - started
-        started = time.process_time()
-        answers = [part.receive([0, 1], loaded[0][target], loaded[1][target])
+        answers = [part.receive([0, 1], outgoing[0][target], outgoing[1][target])
                    for target, part in enumerate(parts)]
         cpu["receive"] += time.process_time() - started
         if not sum(new for _, new, _ in answers):
@@ -197,6 +189,7 @@ def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
             "sent": sum(f["sent"] for f in figures),
             "pickled": pickled_bytes(system),
             "worker_rss_kb": [f["max_rss_kb"] for f in figures],
+            "worker_cpu": [f["cpu_seconds"] for f in figures],
             "worker_states": [f["states"] for f in figures]}
 
 
@@ -230,7 +223,7 @@ def main() -> None:
     modes = ("ltl-single", "ltl-workers") if args.ltl else ("single", "workers")
     print(f"{'model':16} {'states':>9} {'1 proc s':>8} {f'{args.workers} wkr s':>8} "
           f"{'speed-up':>8} {'us/state':>8} {'start s':>7} {'sent/st':>7} {'B/state':>7} "
-          f"{'RSS 1 MB':>8} {'RSS wkr MB':>12} {'balance':>9}")
+          f"{'RSS 1 MB':>8} {'RSS wkr MB':>12} {'balance':>9} {'wkr CPU s':>11}")
     for name in names:
         single = fresh(name, modes[0], args.modulo, args.workers)
         spread = fresh(name, modes[1], args.modulo, args.workers)
@@ -238,23 +231,23 @@ def main() -> None:
         states = single["states"]
         rss = "/".join(f"{kb / 1024:.0f}" for kb in spread["worker_rss_kb"])
         balance = "/".join(f"{100 * s / states:.0f}" for s in spread["worker_states"])
+        cpu = "/".join(f"{seconds:.1f}" for seconds in spread["worker_cpu"])
         print(f"{name:16} {states:>9,} {single['seconds']:>8.2f} {spread['seconds']:>8.2f} "
               f"{single['seconds'] / spread['seconds']:>7.2f}x "
               f"{1e6 * single['seconds'] / states:>8.0f} {spread['start_seconds']:>7.1f} "
               f"{spread['sent'] / states:>7.2f} {spread['pickled']:>7.0f} "
-              f"{single['max_rss_kb'] / 1024:>8.0f} {rss:>12} {balance:>9}", flush=True)
+              f"{single['max_rss_kb'] / 1024:>8.0f} {rss:>12} {balance:>9} {cpu:>11}", flush=True)
 
 
 def print_split(names, modulo: int) -> None:
-    print(f"{'model':16} {'states':>9} {'1 proc s':>8} {'expand s':>8} {'pickle s':>8} "
-          f"{'unpick s':>8} {'receive s':>9} {'sum/2 s':>8} {'B sent/st':>9}")
+    print(f"{'model':16} {'states':>9} {'1 proc s':>8} {'expand s':>8} {'receive s':>9} "
+          f"{'sum/2 s':>8} {'B sent/st':>9}")
     for name in names:
         found = fresh(name, "split", modulo, 2)
         cpu, states = found["cpu"], found["states"]
-        parts = cpu["expand"] + cpu["pickle"] + cpu["unpickle"] + cpu["receive"]
         print(f"{name:16} {states:>9,} {cpu['single']:>8.2f} {cpu['expand']:>8.2f} "
-              f"{cpu['pickle']:>8.2f} {cpu['unpickle']:>8.2f} {cpu['receive']:>9.2f} "
-              f"{parts / 2:>8.2f} {found['bytes'] / states:>9.0f}", flush=True)
+              f"{cpu['receive']:>9.2f} {(cpu['expand'] + cpu['receive']) / 2:>8.2f} "
+              f"{found['bytes'] / states:>9.0f}", flush=True)
 
 
 if __name__ == "__main__":

@@ -34,7 +34,7 @@ from ..product import Product
 from ..result import HOLDS, UNKNOWN, VIOLATED, LassoStep, SearchResult, SearchStats
 from ..transition_system import labelled_successors
 from .canonical import owner
-from .partition import NO_PARENT, SystemSource, unlink
+from .partition import NO_PARENT, SystemSource, encode_batch, unlink
 from .product_partition import CYCLE, ELIMINATE, REACH
 from .search import actors_of, drop_actors, worker_failures
 from .worker import CYCLES, call
@@ -111,7 +111,8 @@ class _Owcty:
                 states.append(state)
                 automaton_states.append(q)
                 parents.append(NO_PARENT)
-        received = [call(actor, CYCLES, "receive", [-1], batches[index], returns=count + 1)
+        received = [call(actor, CYCLES, "receive", [-1], encode_batch(batches[index]),
+                         returns=count + 1)
                     for index, actor in enumerate(actors)]
         while True:
             figures = ray.get([refs[count] for refs in received])

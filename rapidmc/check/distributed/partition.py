@@ -14,11 +14,13 @@ The search runs in breadth-first levels.  ``receive`` takes the states that ever
 partition (in partition order) sent this one at the end of the last level, stores the new
 ones in that order, and notes the first new one the predicate marks; ``expand`` steps every
 state stored since the previous ``expand`` and sorts their successors into one batch per
-owner.  States travel as the objects the model made (Ray pickles them; they are values, with
-no process's ids in them).
+owner.  States travel as the objects the model made, pickled (``encode_batch``; they are
+values, with no process's ids in them).
 """
 from __future__ import annotations
 
+import pickle
+import time
 from array import array
 from typing import Callable, Hashable, Optional, Sequence
 
@@ -28,6 +30,17 @@ from .canonical import owned_bytes
 ID_BITS = 40
 ID_MASK = (1 << ID_BITS) - 1
 NO_PARENT = -1
+
+
+def encode_batch(batch) -> bytes:
+    """A batch of states as bytes, pickled here by the standard C pickler: Ray's own
+    serializer (cloudpickle) calls back into Python for every object of every state, which
+    cost a worker more CPU time than stepping the states."""
+    return pickle.dumps(batch, protocol=pickle.HIGHEST_PROTOCOL)
+
+
+def decode_batch(data: bytes):
+    return pickle.loads(data)
 
 
 def link(partition: int, state_id: int) -> int:
@@ -89,6 +102,7 @@ class Partition:
         self.transitions = 0
         self.deadlocks = 0
         self.sent = 0                          # successors sent to other partitions
+        self.cpu_started = time.process_time()  # (figures: CPU seconds of this search)
 
     def receive(self, senders: Sequence[int], *batches) -> tuple[int, int, int]:
         """Store the new states of the batches (``senders[i]`` sent ``batches[i]``: a list of
@@ -97,7 +111,8 @@ class Partition:
         table, parent, predicate = self.table, self.parent, self.predicate
         before = len(table)
         target = -1
-        for sender, (states, parents) in zip(senders, batches):
+        for sender, batch in zip(senders, batches):
+            states, parents = decode_batch(batch)
             for state, parent_id in zip(states, parents):
                 state_id, new = table.intern(state, True)
                 if not new:
@@ -142,7 +157,8 @@ class Partition:
         self.expanded = end
         self.sent = sum(len(states) for target, (states, _) in enumerate(outgoing)
                         if target != index) + self.sent
-        return (*outgoing, (self.transitions, self.deadlocks, deadlock_target, self.watched))
+        return (*map(encode_batch, outgoing),
+                (self.transitions, self.deadlocks, deadlock_target, self.watched))
 
     def _targets(self, state) -> list:
         return [successor for _, successor in self.system.successors(state)]
@@ -163,4 +179,5 @@ class Partition:
         return {"states": len(table), "transitions": self.transitions, "sent": self.sent,
                 "bytes": table.memory_bytes() + len(self.parent) * self.parent.itemsize,
                 "engine": engine_of(table),
+                "cpu_seconds": time.process_time() - self.cpu_started,
                 "max_rss_kb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss}

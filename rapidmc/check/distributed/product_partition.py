@@ -27,13 +27,14 @@ along the edges of the states it queued:
 """
 from __future__ import annotations
 
+import time
 from array import array
 from typing import Optional
 
 from ..native import engine_of, state_table
 from ..product import Product
 from .canonical import owner
-from .partition import NO_PARENT, link, unlink
+from .partition import NO_PARENT, decode_batch, encode_batch, link, unlink
 
 REACH, ELIMINATE, CYCLE = "reach", "eliminate", "cycle"
 
@@ -65,6 +66,7 @@ class ProductPartition:
         self._open: list = []                  # per owner: positions in ``edges`` to fill
         self.transitions = 0
         self.sent = 0
+        self.cpu_started = time.process_time()
 
     # --- the reachability search ---------------------------------------------------
 
@@ -76,7 +78,8 @@ class ProductPartition:
         width = self.product.width
         before = len(keys)
         answers = [array("q") for _ in range(self.count)]
-        for sender, (states, automaton_states, parents) in zip(senders, batches):
+        for sender, batch in zip(senders, batches):
+            states, automaton_states, parents = decode_batch(batch)
             ids = answers[sender] if sender >= 0 else array("q")
             for state, q, parent_id in zip(states, automaton_states, parents):
                 model_id, _ = table.intern(state, True)
@@ -117,7 +120,7 @@ class ProductPartition:
         self.transitions = len(edges)
         self.sent += sum(len(batch[0]) for target, batch in enumerate(outgoing)
                          if target != self.index)
-        return (*outgoing, self.transitions)
+        return (*map(encode_batch, outgoing), self.transitions)
 
     def _close(self, answers) -> None:
         edges = self.edges
@@ -253,6 +256,7 @@ class ProductPartition:
                 "transitions": len(self.edges), "sent": self.sent,
                 "bytes": table.memory_bytes() + sum(len(a) * a.itemsize for a in arrays),
                 "engine": engine_of(table),
+                "cpu_seconds": time.process_time() - self.cpu_started,
                 "max_rss_kb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss}
 
     def clear(self) -> None:

@@ -30,7 +30,7 @@ from ..budget import SearchBudget
 from ..result import HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep, SearchResult, SearchStats
 from ..transition_system import TransitionSystem
 from .canonical import owner
-from .partition import NO_PARENT, SystemSource, unlink
+from .partition import NO_PARENT, SystemSource, encode_batch, unlink
 from .worker import SAFETY, Worker, call
 
 ENGINE = "distributed"
@@ -128,7 +128,7 @@ class _Levels:
             states, parents = batches[owner(state, count) if count > 1 else 0]
             states.append(state)
             parents.append(NO_PARENT)
-        received = [call(actor, SAFETY, "receive", [-1], batches[index])
+        received = [call(actor, SAFETY, "receive", [-1], encode_batch(batches[index]))
                     for index, actor in enumerate(self.actors)]
         while True:
             found = self._stored(ray.get(received))
