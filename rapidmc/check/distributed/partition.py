@@ -122,6 +122,19 @@ class Partition:
                     target = state_id
         return len(table), len(table) - before, target
 
+    def step(self, senders: Sequence[int], *batches) -> tuple:
+        """``receive`` then ``expand`` in one call (one actor call per level: a call costs a
+        worker milliseconds of CPU time): the batches ``expand`` makes, then (states
+        stored, new, the first target received or -1, and ``expand``'s figures).  Nothing is
+        expanded once a target was received or nothing was new."""
+        stored, new, target = self.receive(senders, *batches)
+        if target >= 0 or new == 0:
+            empty = encode_batch(([], array("q")))
+            return (*[empty] * self.count,
+                    (stored, new, target, self.transitions, self.deadlocks, -1, self.watched))
+        *outgoing, figures = self.expand()
+        return (*outgoing, (stored, new, target, *figures))
+
     def expand(self) -> tuple:
         """Step the states stored since the last call: one batch per partition, then the
         level's figures (transitions, deadlocks, the first deadlocked state when those are

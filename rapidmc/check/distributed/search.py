@@ -5,7 +5,8 @@ shortest path to a state the predicate marks; HOLDS after the whole state space;
 a bound), with the states split among ``Partition`` actors by their canonical hash.  Each
 level: every partition expands its new states and sorts their successors by owner (one
 batch per owner, handed from actor to actor through Ray's object store, never through this
-process); then every partition stores what it was sent.  A level that stores nothing new
+process); then every partition stores what it was sent (``Partition.step``: the storing of
+one level and the expanding of the next in one actor call).  A level that stores nothing new
 ends a complete search.
 
 A violation is found in the level of its depth, as in the one-process search, so the path is
@@ -128,12 +129,20 @@ class _Levels:
             states, parents = batches[owner(state, count) if count > 1 else 0]
             states.append(state)
             parents.append(NO_PARENT)
-        received = [call(actor, SAFETY, "receive", [-1], encode_batch(batches[index]))
-                    for index, actor in enumerate(self.actors)]
+        stepped = [call(actor, SAFETY, "step", [-1], encode_batch(batches[index]),
+                        returns=count + 1) for index, actor in enumerate(self.actors)]
+        senders = list(range(count))
         while True:
-            found = self._stored(ray.get(received))
+            figures = ray.get([refs[count] for refs in stepped])
+            found = self._stored([f[:3] for f in figures])
             if found is not None:
                 return self._result(VIOLATED, self._path(*found))
+            self.transitions = sum(f[3] for f in figures)
+            self.deadlocks = sum(f[4] for f in figures)
+            self.watched = self.watched or any(f[6] for f in figures)
+            for index, f in enumerate(figures):
+                if f[5] >= 0:
+                    return self._result(VIOLATED, self._path(index, f[5]))
             if self.new == 0:
                 return self._result(HOLDS)
             self.depth += 1
@@ -146,21 +155,8 @@ class _Levels:
                 return self._result(UNKNOWN)
             if self.on_level is not None:
                 self.on_level(self.actors)
-            expanded = [call(actor, SAFETY, "expand", returns=count + 1)
-                        for actor in self.actors]
-            # the next level's receives are queued before this process waits for the
-            # figures: the workers go on without waiting for a round trip to it
-            senders = list(range(count))
-            received = [call(actor, SAFETY, "receive", senders,
-                             *[refs[target] for refs in expanded])
-                        for target, actor in enumerate(self.actors)]
-            figures = ray.get([refs[count] for refs in expanded])
-            self.transitions = sum(f[0] for f in figures)
-            self.deadlocks = sum(f[1] for f in figures)
-            self.watched = self.watched or any(f[3] for f in figures)
-            for index, f in enumerate(figures):
-                if f[2] >= 0:
-                    return self._result(VIOLATED, self._path(index, f[2]))
+            stepped = [call(actor, SAFETY, "step", senders, *[refs[target] for refs in stepped],
+                            returns=count + 1) for target, actor in enumerate(self.actors)]
 
     def _note_balance(self) -> None:
         """The progress line's per-worker balance: each worker's share of the states."""
