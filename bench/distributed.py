@@ -14,7 +14,8 @@ step machine where it is built).
 Columns: states; wall seconds of the search (Ray's start-up is apart: "start s"); the speed-up
 of the workers; microseconds of wall time per state; the successors sent to another
 partition per state and the pickled bytes of a state (the message volume); the maximum
-resident set size of the single process and of each worker.  The machine may be shared with
+resident set size of the single process and of each worker; each worker's CPU seconds in
+the search (against the wall time: how much of it a worker waited, for a core or for Ray).  The machine may be shared with
 other work: run it a few times.
 
 ``--ltl``: the same for each whole-controller model's LTL property (bench/tasks.py's, which
