@@ -1,6 +1,7 @@
 """One process against a local Ray cluster of 2 workers (``--workers 2``, issue 29).
 
 Usage: python bench/distributed.py [--counters 6,7] [--modulo 4] [--only NAME] [--workers 2]
+                                   [--ltl] [--split]
 
 For each model, each in a fresh process: the run-time error search of a check (breadth-first,
 the whole reachable state space, since these programs have no run-time error), once in one
@@ -13,8 +14,19 @@ step machine where it is built).
 Columns: states; wall seconds of the search (Ray's start-up is apart: "start s"); the speed-up
 of the workers; microseconds of wall time per state; the successors sent to another
 partition per state and the pickled bytes of a state (the message volume); the maximum
-resident set size of the single process and of each worker.  The machine may be shared with
+resident set size of the single process and of each worker; each worker's CPU seconds in
+the search (against the wall time: how much of it a worker waited, for a core or for Ray).  The machine may be shared with
 other work: run it a few times.
+
+``--ltl``: the same for each whole-controller model's LTL property (bench/tasks.py's, which
+holds: the whole product is searched), in one process (``check_property``, partial-order
+reduction off as on a cluster) against OWCTY on the workers (``owcty``).
+
+``--split``: where a worker's time goes, without Ray: two ``Partition`` objects driven in
+one process, CPU seconds of stepping, routing and pickling successors (``expand``: the
+model's ``successor_states``, the owner hash, ``encode_batch``) and of unpickling and storing
+what arrives (``receive``), beside the one-process search's CPU seconds.  Their sum over 2 is what each of 2 workers would spend without Ray's own
+costs.
 """
 from __future__ import annotations
 
@@ -39,14 +51,21 @@ from rapidmc import api  # noqa: E402
 
 
 def model_of(name: str, modulo: int):
+    """The model, partial-order reduction off as on a cluster (its cycle proviso depends on
+    the search order: with it, the two searches would store different states)."""
     if name.startswith("counters N="):
         inputs = int(name.split("=")[1])
         folder = tempfile.mkdtemp()
         path = Path(folder) / "counters.mod"
         path.write_text(counters_program(inputs, modulo))
-        return api.prepare(api.load_program([str(path)]), [])
+        return api.prepare(api.load_program([str(path)]), [], unreduced_order(api.CheckOptions()))
     _, files, tasks, _, options = next(model for model in MODELS if model[0] == name)
-    return api.prepare(load(files, tasks), [], api.CheckOptions(**options))
+    return api.prepare(load(files, tasks), [], unreduced_order(api.CheckOptions(**options)))
+
+
+def unreduced_order(options):
+    from dataclasses import replace
+    return replace(options, reductions=replace(options.reductions, partial_order=False))
 
 
 def pickled_bytes(system, sample: int = 300) -> float:
@@ -59,8 +78,87 @@ def pickled_bytes(system, sample: int = 300) -> float:
     return sum(len(pickle.dumps(state, protocol=5)) for state in seen) / len(seen)
 
 
+def ltl_model_of(name: str):
+    """The model with its LTL property, partial-order reduction off (as on a cluster)."""
+    _, files, tasks, formula, options = next(model for model in MODELS if model[0] == name)
+    return api.prepare(load(files, tasks), [api.property_from_text(formula)],
+                       unreduced_order(api.CheckOptions(**options)))
+
+
+def measure_ltl(name: str, mode: str, workers: int) -> dict:
+    model = ltl_model_of(name)
+    prop, buchi, valuation = model.jobs[0]
+    if mode == "ltl-single":
+        from rapidmc.check import check_property
+        started = time.perf_counter()
+        result = check_property(model.system, buchi, valuation, max_states=None)
+        return {"verdict": result.verdict, "states": result.stats.product_states,
+                "seconds": time.perf_counter() - started,
+                "max_rss_kb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss}
+    import ray
+    from rapidmc.check.budget import SearchBudget
+    from rapidmc.check.distributed.owcty import partitioned_accepting_cycle
+    started = time.perf_counter()
+    ray.init(num_cpus=workers, include_dashboard=False, logging_level=logging.ERROR,
+             log_to_driver=False)
+    start_seconds = time.perf_counter() - started
+    recipe = api.model_recipe(model)
+    partitioned_accepting_cycle(ray, workers, model.system, buchi, valuation, prop.name, recipe,
+                                budget=SearchBudget(1))          # (actors start, model built)
+    started = time.perf_counter()
+    result, figures = partitioned_accepting_cycle(ray, workers, model.system, buchi, valuation,
+                                                  prop.name, recipe, budget=SearchBudget(None))
+    seconds = time.perf_counter() - started
+    ray.shutdown()
+    return {"verdict": result.verdict, "states": result.stats.product_states,
+            "seconds": seconds, "start_seconds": start_seconds,
+            "sent": sum(f["sent"] for f in figures), "pickled": pickled_bytes(model.system),
+            "worker_rss_kb": [f["max_rss_kb"] for f in figures],
+            "worker_cpu": [f["cpu_seconds"] for f in figures],
+            "worker_states": [f["states"] for f in figures]}
+
+
+def measure_split(name: str, modulo: int) -> dict:
+    """CPU seconds of a worker's parts, two partitions driven here (module docstring)."""
+    from rapidmc.check import find_reachable
+    from rapidmc.check.distributed.canonical import owner
+    from rapidmc.check.distributed.partition import Partition, SystemSource, encode_batch
+    system = model_of(name, modulo).system
+    started = time.process_time()
+    single = find_reachable(system, system.failed, max_states=None)
+    cpu = {"single": time.process_time() - started, "expand": 0.0, "receive": 0.0}
+    parts = [Partition(), Partition()]
+    for index, part in enumerate(parts):
+        part.start(index, 2, SystemSource(system), "failed", False)
+    batches = [([], []) for _ in parts]
+    for state in system.initial_states():
+        batches[owner(state, 2)][0].append(state)
+        batches[owner(state, 2)][1].append(-1)
+    for index, part in enumerate(parts):
+        part.receive([-1], encode_batch(batches[index]))
+    sent_bytes = 0
+    while True:
+        started = time.process_time()
+        outgoing = [part.expand() for part in parts]       # (batches pickled: bytes)
+        cpu["expand"] += time.process_time() - started
+        sent_bytes += sum(len(blob) for row in outgoing for blob in row[:2])
+        started = time.process_time()
+        answers = [part.receive([0, 1], outgoing[0][target], outgoing[1][target])
+                   for target, part in enumerate(parts)]
+        cpu["receive"] += time.process_time() - started
+        if not sum(new for _, new, _ in answers):
+            break
+    states = sum(len(part.table) for part in parts)
+    assert states == single.stats.product_states
+    return {"states": states, "cpu": cpu, "bytes": sent_bytes}
+
+
 def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
     """One measurement in this process (the parent runs each in a fresh one)."""
+    if mode.startswith("ltl-"):
+        return measure_ltl(name, mode, workers)
+    if mode == "split":
+        return measure_split(name, modulo)
     model = model_of(name, modulo)
     system = model.system
     if mode == "single":
@@ -92,6 +190,7 @@ def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
             "sent": sum(f["sent"] for f in figures),
             "pickled": pickled_bytes(system),
             "worker_rss_kb": [f["max_rss_kb"] for f in figures],
+            "worker_cpu": [f["cpu_seconds"] for f in figures],
             "worker_states": [f["states"] for f in figures]}
 
 
@@ -108,30 +207,48 @@ def main() -> None:
     parser.add_argument("--modulo", type=int, default=4)
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--only", default=None, help="only the models whose name holds this")
+    parser.add_argument("--ltl", action="store_true", help="time the LTL searches instead")
+    parser.add_argument("--split", action="store_true",
+                        help="where a worker's CPU time goes (no Ray)")
     parser.add_argument("--measure", nargs=2, default=None, help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.measure is not None:
         print(json.dumps(measure(*args.measure, args.modulo, args.workers)))
         return
     names = [model[0] for model in MODELS] + \
-        [f"counters N={n}" for n in args.counters.split(",") if n]
+        [f"counters N={n}" for n in args.counters.split(",") if n and not args.ltl]
+    names = [name for name in names if not args.only or args.only in name]
+    if args.split:
+        print_split(names, args.modulo)
+        return
+    modes = ("ltl-single", "ltl-workers") if args.ltl else ("single", "workers")
     print(f"{'model':16} {'states':>9} {'1 proc s':>8} {f'{args.workers} wkr s':>8} "
           f"{'speed-up':>8} {'us/state':>8} {'start s':>7} {'sent/st':>7} {'B/state':>7} "
-          f"{'RSS 1 MB':>8} {'RSS wkr MB':>12} {'balance':>9}")
+          f"{'RSS 1 MB':>8} {'RSS wkr MB':>12} {'balance':>9} {'wkr CPU s':>11}")
     for name in names:
-        if args.only and args.only not in name:
-            continue
-        single = fresh(name, "single", args.modulo, args.workers)
-        spread = fresh(name, "workers", args.modulo, args.workers)
+        single = fresh(name, modes[0], args.modulo, args.workers)
+        spread = fresh(name, modes[1], args.modulo, args.workers)
         assert (single["verdict"], single["states"]) == (spread["verdict"], spread["states"])
         states = single["states"]
         rss = "/".join(f"{kb / 1024:.0f}" for kb in spread["worker_rss_kb"])
         balance = "/".join(f"{100 * s / states:.0f}" for s in spread["worker_states"])
+        cpu = "/".join(f"{seconds:.1f}" for seconds in spread["worker_cpu"])
         print(f"{name:16} {states:>9,} {single['seconds']:>8.2f} {spread['seconds']:>8.2f} "
               f"{single['seconds'] / spread['seconds']:>7.2f}x "
               f"{1e6 * single['seconds'] / states:>8.0f} {spread['start_seconds']:>7.1f} "
               f"{spread['sent'] / states:>7.2f} {spread['pickled']:>7.0f} "
-              f"{single['max_rss_kb'] / 1024:>8.0f} {rss:>12} {balance:>9}", flush=True)
+              f"{single['max_rss_kb'] / 1024:>8.0f} {rss:>12} {balance:>9} {cpu:>11}", flush=True)
+
+
+def print_split(names, modulo: int) -> None:
+    print(f"{'model':16} {'states':>9} {'1 proc s':>8} {'expand s':>8} {'receive s':>9} "
+          f"{'sum/2 s':>8} {'B sent/st':>9}")
+    for name in names:
+        found = fresh(name, "split", modulo, 2)
+        cpu, states = found["cpu"], found["states"]
+        print(f"{name:16} {states:>9,} {cpu['single']:>8.2f} {cpu['expand']:>8.2f} "
+              f"{cpu['receive']:>9.2f} {(cpu['expand'] + cpu['receive']) / 2:>8.2f} "
+              f"{found['bytes'] / states:>9.0f}", flush=True)
 
 
 if __name__ == "__main__":

@@ -384,11 +384,16 @@ class _Searches:
             self.notes.append(_one_process_note(
                 "partial-order reduction is off on a Ray cluster (its cycle proviso depends on "
                 "the order states are expanded in): the state counts are those of --no-por"))
-        if ray is not None and model.jobs:
-            self.notes.append(_one_process_note(
-                "LTL properties are checked in one process: the distributed search covers "
-                "the built-in checks (no_runtime_error, no_deadlock)"))
         self.fairness = TaskFairness(model.system) if assumes_fairness(model) else None
+        # LTL properties on the cluster too (OWCTY), unless the cluster is a swarm's or the
+        # states are stored by hash (those searches stay in this process)
+        self.cycles = _DistributedCycles(ray, options.cluster, model_recipe(model)) \
+            if ray is not None and model.jobs and not options.cluster.swarm and \
+            options.storage is None else None
+        if ray is not None and model.jobs and self.cycles is None:
+            self.notes.append(_one_process_note(
+                "LTL properties are checked in one process: a swarm or a --compact / "
+                "--bitstate search distributes the built-in checks only"))
 
     def builtin_checks(self) -> list[PropertyResult]:
         """No reachable uncaught run-time error; no state where the program waits forever."""
@@ -411,8 +416,17 @@ class _Searches:
     def property(self, prop: Property, buchi, valuation) -> PropertyResult:
         """One LTL property: the product with its negation's automaton, empty or a lasso."""
         searches = dict(self.bounds, explored=self.graphs[0]) if self.graphs else self.bounds
+        first = None
+        if self.cycles is not None:
+            first = self.cycles(self.model.system, prop, buchi, valuation, self.bounds,
+                                self.progress())
+            if self.fairness is not None and first.verdict == VIOLATED and \
+                    self.fairness.unfair_tasks(first.cycle, first.closing_label):
+                self.notes.append(_one_process_note(
+                    f"the cycle the cluster found for {prop.name} starves a task: the search "
+                    "for a cycle fair to every task (weak fairness) ran in one process"))
         result = fair_or_plain_search(self.model.system, buchi, valuation, self.fairness,
-                                      self.progress(), searches)
+                                      self.progress(), searches, first)
         _replayed(self.model.system, result)
         vacuous = self.facts.vacuous(prop.formula) if result.verdict == HOLDS else None
         return PropertyResult(prop.name, prop.text, result, vacuous,
@@ -522,17 +536,30 @@ def system_recipe(model: Model):
     """How a worker builds the model's system in its own process: load and prepare the same
     files with the same properties and options (a system is not shipped whole: what its
     step functions set up while loading belongs to the process that loaded it)."""
+    return functools.partial(_rebuilt_system, model_recipe(model))
+
+
+def model_recipe(model: Model):
+    """``system_recipe``, for the whole prepared model (its properties' automata and
+    valuations too: what a worker of a distributed LTL search needs)."""
     arguments = getattr(model.program, "load_arguments", None)
     if arguments is None:
         raise ValueError("a distributed check needs a program from api.load_program")
-    return functools.partial(_rebuilt_system, arguments, tuple(model.properties),
-                             replace(model.options, cluster=None), native.engine())
+    automata = {name: os.path.abspath(path) for name, path in model.options.automata.items()}
+    return functools.partial(_rebuilt_model, arguments, tuple(model.properties),
+                             replace(model.options, cluster=None, automata=automata),
+                             native.engine())
 
 
-def _rebuilt_system(arguments: dict, properties: tuple, options: CheckOptions,
-                    engine: str) -> RapidSystem:
+def _rebuilt_model(arguments: dict, properties: tuple, options: CheckOptions,
+                   engine: str) -> Model:
     native.use_engine(engine)
-    return prepare(load_program(**arguments), list(properties), options).system
+    return prepare(load_program(**arguments), list(properties), options)
+
+
+def _rebuilt_system(model_recipe) -> RapidSystem:
+    from .check.distributed.partition import built_once   # (in a worker: shares the model)
+    return built_once(model_recipe).system
 
 
 class _DistributedReach:
@@ -552,6 +579,25 @@ class _DistributedReach:
             progress=progress, storage=bounds.get("storage"), rebuild=self.recipe)
         if watched:
             observe.seen = True
+        return result
+
+
+class _DistributedCycles:
+    """One LTL property's search on a Ray cluster (``check.distributed.owcty``)."""
+
+    def __init__(self, ray, cluster: Cluster, recipe):
+        self.ray, self.cluster, self.recipe = ray, cluster, recipe
+
+    def __call__(self, system: RapidSystem, prop: Property, buchi, valuation, bounds,
+                 progress: Optional[Progress]) -> SearchResult:
+        from .check.budget import SearchBudget
+        from .check.distributed.owcty import partitioned_accepting_cycle
+        max_states = bounds.get("max_states")
+        budget = SearchBudget(DEFAULT_MAX_STATES if max_states is None else max_states,
+                              bounds.get("max_seconds"), progress)
+        result, _ = partitioned_accepting_cycle(
+            self.ray, self.cluster.partitions(self.ray), system, buchi, valuation, prop.name,
+            self.recipe, budget=budget)
         return result
 
 

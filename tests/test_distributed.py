@@ -2,7 +2,9 @@
 
 The partitioned search must answer exactly what the one-process search answers: the
 same verdicts, and after a complete search the same state, transition, deadlock and depth
-counts; its counterexamples are as short and replay.  A lost worker ends the check with
+counts; its counterexamples are as short and replay.  LTL properties (OWCTY over the
+partitioned product) give the verdicts and product counts of the one-process search, on
+random toy graphs and on check cases, with lassos of real steps that the formula rejects.  A lost worker ends the check with
 RMC752 (exit 5), never a verdict; a swarm finds a planted deep error the exhaustive search
 cannot reach in its bound, and never says HOLDS.
 
@@ -12,19 +14,31 @@ the tests skip, unless RAPIDMC_REQUIRE_RAY=1 (CI), where they fail.
 from __future__ import annotations
 
 import contextlib
+import functools
 import io
 import json
 import logging
+import os
+import random
+import shutil
+import signal
+import socket
+import subprocess
 import sys
+import tempfile
 from pathlib import Path
+from types import SimpleNamespace
 
 import pytest
 
-from rapidmc.check import find_reachable
+from rapidmc.check import check_property, find_reachable
 from rapidmc.check.budget import SearchBudget
 from rapidmc.check.result import HOLDS, VIOLATED
 from rapidmc.cli import main
+from rapidmc.check.transition_system import labelled_successors
 from rapidmc.diagnostics import EXIT_WORKER_LOST, UserError
+from rapidmc.ltl import parse_formula, to_buchi
+from rapidmc.ltl.lasso import holds_on_lasso
 from test_check_cases import SAFETY, load_case, report_of, CASES_DIR
 from tool_requirements import require_tool
 
@@ -37,7 +51,9 @@ ROOT = Path(__file__).resolve().parent.parent
 HERE = Path(__file__).resolve().parent / "distributed"
 # a few check cases: a run-time error, a deadlock, several tasks, a bound, loops that hold
 CASES = ["runtime_div_input", "deadlock_waitdo_never_set", "tasks_test_and_set",
-         "max_states_unknown", "loop_mod_counter", "runtime_array_index_safe"]
+         "max_states_unknown", "loop_mod_counter", "runtime_array_index_safe",
+         # LTL: lassos through stopped programs, until/release, HOA automata, fairness
+         "loop_toggle", "ltl_until_release", "automaton_hoa", "tasks_fairness"]
 
 
 @pytest.fixture(scope="module")
@@ -73,6 +89,76 @@ class Grid:
 
     def never(self, state):
         return False
+
+
+class RandomGraph:
+    """A toy model: ``size`` states, each with 0-3 successors drawn from ``seed`` (0-successor
+    states deadlock: the product repeats them), and atoms p and q true on random states."""
+
+    def __init__(self, seed: int, size: int):
+        rng = random.Random(seed)
+        self.edges = [rng.sample(range(size), rng.choice((0, 1, 1, 2, 2, 3)))
+                      for _ in range(size)]
+        self.atoms = {"p": {s for s in range(size) if rng.random() < 0.4},
+                      "q": {s for s in range(size) if rng.random() < 0.5}}
+
+    def initial_states(self):
+        return (0,)
+
+    def successors(self, state):
+        return [(f"{state}->{target}", target) for target in self.edges[state]]
+
+    def letter(self, state) -> set:
+        return {name for name, states in self.atoms.items() if state in states}
+
+
+def toy_job(seed: int, size: int, formula: str):
+    """(system, automaton of the formula's negation, valuation): what a worker rebuilds."""
+    system = RandomGraph(seed, size)
+    buchi = to_buchi(parse_formula(f"!({formula})"), backend="builtin", atoms=("p", "q"))
+
+    def valuation(state):
+        return sum(1 << index for index, atom in enumerate(buchi.atoms)
+                   if state in system.atoms[atom])
+
+    return system, buchi, valuation
+
+
+def toy_model(seed: int, size: int, formula: str):
+    system, buchi, valuation = toy_job(seed, size, formula)
+    return SimpleNamespace(system=system, jobs=[(SimpleNamespace(name="prop"), buchi, valuation)])
+
+
+TOY_FORMULAS = ["G F p", "F G q", "G (p -> F q)", "p U q", "G (p -> X !p)", "F p", "G !q",
+                "(G F p) -> (G F q)", "q W p", "X X p"]
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_owcty_answers_what_one_process_answers(cluster, seed):
+    """Distributed OWCTY against the one-process search on random graphs and formulas: the
+    same verdict; on HOLDS the same product states and transitions; on VIOLATED a lasso
+    of real steps that the formula rejects."""
+    from rapidmc.check.distributed.owcty import partitioned_accepting_cycle
+    size = 6 + seed * 3
+    for formula in TOY_FORMULAS:
+        system, buchi, valuation = toy_job(seed, size, formula)
+        one = check_property(system, buchi, valuation, max_states=None)
+        spread, figures = partitioned_accepting_cycle(
+            cluster, 2, system, buchi, valuation, "prop",
+            functools.partial(toy_model, seed, size, formula))
+        assert spread.verdict == one.verdict, (seed, formula)
+        if one.verdict == HOLDS:
+            assert spread.stats.product_states == one.stats.product_states, (seed, formula)
+            assert spread.stats.transitions == one.stats.transitions, (seed, formula)
+            continue
+        steps = spread.prefix + spread.cycle
+        moves = [(step.label, step.state) for step in steps[1:]] + \
+            [(spread.closing_label, spread.cycle[0].state)]
+        for before, move in zip(steps, moves):
+            assert move in labelled_successors(system, before.state), (seed, formula)
+        letters = [system.letter(step.state) for step in spread.prefix]
+        loop = [system.letter(step.state) for step in spread.cycle]
+        assert not holds_on_lasso(parse_formula(formula), letters, loop), (seed, formula)
 
 
 def _partitioned(cluster, system, predicate, **options):
@@ -131,9 +217,11 @@ def test_check_case_on_two_workers(cluster, name, monkeypatch):
 @pytest.mark.parametrize("study, program", [("sorter", "sorter_b.mod"),
                                             ("door", "door_race.mod")])
 def test_case_study_on_two_workers(cluster, study, program, monkeypatch):
+    """The built-in checks and the study's LTL properties (specs/), against --no-por."""
     monkeypatch.chdir(ROOT / "case_studies" / study)
-    argv = ["check", program, "--env", "plant.mod", "--format", "json", "--quiet"]
-    _same_builtin_answers(_json(argv), _json(argv + ["--workers", "2"]))
+    argv = ["check", program, "--env", "plant.mod", "--ltl", str(ROOT / "specs" / f"{study}.ltl"),
+            "--format", "json", "--quiet"]
+    _same_builtin_answers(_json(argv + ["--no-por"]), _json(argv + ["--workers", "2"]))
 
 
 @pytest.mark.parametrize("name, check", [("runtime_div_input", "no_runtime_error"),
@@ -170,15 +258,24 @@ def test_without_ray_the_options_name_the_extra(monkeypatch):
 
 
 def _same_builtin_answers(alone: dict, spread: dict) -> None:
+    """The same verdicts; after a complete search the same counts (the built-in checks:
+    states, transitions, deadlocks, depth; LTL properties searched without fairness: product
+    states and transitions), and safety counterexamples as short."""
     first, second = _by_name(alone), _by_name(spread)
     assert _verdicts(alone) == _verdicts(spread)
-    for name in SAFETY:
-        one, other = first[name], second[name]
+    for name, one in first.items():
+        other = second[name]
+        figures = ("product_states", "transitions", "max_depth", "deadlocks") \
+            if name in SAFETY else ("product_states", "transitions")
         if one["verdict"] == "HOLDS" and one["stats"]["engine"] != "python-fair":
-            for figure in ("product_states", "transitions", "max_depth", "deadlocks"):
+            for figure in figures:
                 assert one["stats"][figure] == other["stats"][figure], (name, figure)
-        if one["verdict"] == "VIOLATED" and not one["trace"]["cycle"]:
+        if name in SAFETY and one["verdict"] == "VIOLATED" and not one["trace"]["cycle"]:
             assert len(one["trace"]["prefix"]) == len(other["trace"]["prefix"]), name
+        refair = f"the cycle the cluster found for {name} starves a task"
+        if name not in SAFETY and other["verdict"] != "UNKNOWN" and \
+                not any(refair in warning["message"] for warning in spread["warnings"]):
+            assert other["stats"]["engine"] == "distributed-owcty", name   # not one process
 
 
 def _by_name(report: dict) -> dict:
@@ -200,3 +297,73 @@ def _run(argv: list[str]) -> tuple[int, str, str]:
     with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
         code = main(argv)
     return code, out.getvalue(), err.getvalue()
+
+
+def test_a_cycle_that_starves_a_task_is_searched_again_fairly_with_a_note(cluster,
+                                                                            monkeypatch):
+    """Weak fairness between tasks is never dropped on a cluster: the unfair cycles the
+    workers find are searched again in one process, and a note names the property."""
+    monkeypatch.chdir(CASES_DIR / "tasks_fairness")
+    code, out, err = _run(["check", "prog.mod", "--ltl", "props.ltl", "--add-task", "b.mod",
+                           "--workers", "2", "--quiet"])
+    assert code == 1, err
+    assert "the cycle the cluster found for seen_again starves a task" in err
+    assert "[RMC753]" in err
+
+
+def _free_port() -> int:
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        return probe.getsockname()[1]
+
+
+def test_ray_address_joins_a_running_cluster(tmp_path):
+    """``--ray ADDRESS`` joins a cluster that ``ray start --head`` runs (its own processes,
+    stopped afterwards by ending that command), and answers as one process does."""
+    require_tool(ray is not None, "RAPIDMC_REQUIRE_RAY", "Ray is not installed (the 'ray' extra)")
+    port = _free_port()
+    # a cluster of this test's own: its own temporary folder, and no token from ~/.ray
+    env = dict(os.environ, RAY_AUTH_MODE="disabled")
+    temp = tempfile.mkdtemp(prefix="/tmp/rmc")           # (Ray's socket paths must be short)
+    head = subprocess.Popen(
+        [sys.executable, "-m", "ray.scripts.scripts", "start", "--head", f"--port={port}",
+         "--node-ip-address=127.0.0.1", "--num-cpus=2", "--include-dashboard=false",
+         "--disable-usage-stats", f"--temp-dir={temp}", "--block"],
+        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, env=env, start_new_session=True)
+    try:
+        case = CASES_DIR / "loop_toggle"
+        run = subprocess.run(
+            [sys.executable, "-m", "rapidmc", "check", "prog.mod", "--ltl", "props.ltl",
+             "--ray", f"127.0.0.1:{port}", "--format", "json", "--quiet"],
+            cwd=case, env=env, capture_output=True, text=True, timeout=600)
+        assert run.returncode == 1, run.stderr[-2000:]
+        report = json.loads(run.stdout)
+        expected = dict(line.split() for line in (case / "expected").read_text().splitlines()
+                        if line.strip() and not line.startswith("#"))
+        assert _verdicts(report) == expected
+        engines = {p["stats"]["engine"] for p in report["properties"]}
+        assert engines == {"distributed", "distributed-owcty"}
+    finally:
+        head.send_signal(signal.SIGTERM)                 # (ray start --block stops its node)
+        try:
+            head.wait(timeout=90)
+        except subprocess.TimeoutExpired:
+            os.killpg(head.pid, signal.SIGKILL)
+            head.wait()
+        shutil.rmtree(temp, ignore_errors=True)
+
+
+def test_an_address_with_no_cluster_is_a_diagnostic(monkeypatch):
+    """Ray's failure to join (here: refused) is RMC754 with exit 2, not an internal error."""
+    require_tool(ray is not None, "RAPIDMC_REQUIRE_RAY", "Ray is not installed (the 'ray' extra)")
+    from rapidmc.check.distributed import Cluster
+
+    def refuse(**options):
+        raise ConnectionError("Failed to connect to Ray cluster at 127.0.0.1:9")
+    monkeypatch.setattr(ray, "is_initialized", lambda: False)
+    monkeypatch.setattr(ray, "init", refuse)
+    with pytest.raises(UserError) as raised:
+        with Cluster(address="127.0.0.1:9").session():
+            pass
+    assert raised.value.exit_code == 2
+    assert raised.value.diagnostics[0].code.code == "RMC754"

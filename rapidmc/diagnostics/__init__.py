@@ -135,9 +135,12 @@ RAY_UNAVAILABLE = _code("RMC751", "ray-unavailable",
                         "--workers, --ray or --swarm asked for, and Ray (the 'ray' extra) is not installed")
 WORKER_LOST = _code("RMC752", "worker-lost",
                     "a worker of a distributed search died or ran out of memory: no verdict (exit 5)")
+RAY_UNREACHABLE = _code("RMC754", "ray-unreachable",
+                        "--ray ADDRESS names no Ray cluster this process can join (exit 2)")
 DISTRIBUTED_SCOPE = _code("RMC753", "distributed-scope",
-                          "what a distributed check did not distribute or report: LTL properties and "
-                          "waiting tasks run in one process; no coverage or vacuity")
+                          "what a distributed check did not distribute or report: fair cycles, "
+                          "waiting tasks and a swarm's LTL run in one process; no coverage or "
+                          "vacuity")
 
 # --- lint (80x-84x): `rapidmc lint` rules (rapidmc.findings.lint, docs/lint.md) ---------
 NOT_CHAIN = _code("RMC801", "not-chain", "NOT over an AND/OR/XOR chain without parentheses")

@@ -85,7 +85,8 @@ def assumes_fairness(model) -> bool:
 
 
 def fair_or_plain_search(system, buchi, valuation, fairness: Optional[TaskFairness],
-                         progress: Optional[Progress], bounds: dict) -> SearchResult:
+                         progress: Optional[Progress], bounds: dict,
+                         first: Optional[SearchResult] = None) -> SearchResult:
     """One property's search: fair to the tasks when ``fairness`` is given.
 
     Today's search runs first: fairness only removes runs, so its HOLDS stands,
@@ -95,8 +96,10 @@ def fair_or_plain_search(system, buchi, valuation, fairness: Optional[TaskFairne
     (``check.fair``).  --compact / --bitstate searches (``bounds["storage"]``)
     cannot look for fair cycles; they never answer HOLDS anyway, and a
     counterexample of theirs that starves a task is no answer: UNKNOWN.
+    ``first``: today's search's result when it ran elsewhere (on a Ray cluster).
     """
-    result = check_property(system, buchi, valuation, progress=progress, **bounds)
+    result = first if first is not None else \
+        check_property(system, buchi, valuation, progress=progress, **bounds)
     if fairness is None or result.verdict != VIOLATED:
         return result
     starved = fairness.unfair_tasks(result.cycle, result.closing_label)

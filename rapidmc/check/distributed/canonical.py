@@ -34,7 +34,17 @@ def canonical_bytes(value: Hashable) -> bytes:
 
 def owner(value: Hashable, partitions: int) -> int:
     """The partition (0 .. partitions-1) that owns ``value``: the same in every process."""
-    digest = hashlib.blake2b(_state_bytes(value), digest_size=8).digest()
+    return owner_of_bytes(_state_bytes(value), partitions)
+
+
+def owned_bytes(value: Hashable, partitions: int) -> tuple[bytes, int]:
+    """(``canonical_bytes(value)``, ``owner(value, partitions)``): equal bytes, equal values."""
+    encoded = _state_bytes(value)
+    return encoded, owner_of_bytes(encoded, partitions)
+
+
+def owner_of_bytes(encoded: bytes, partitions: int) -> int:
+    digest = hashlib.blake2b(encoded, digest_size=8).digest()
     return int.from_bytes(digest, "little") % partitions
 
 

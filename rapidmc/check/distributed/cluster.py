@@ -17,7 +17,7 @@ import os
 from dataclasses import dataclass
 from typing import Optional
 
-from ...diagnostics import RAY_UNAVAILABLE, error
+from ...diagnostics import RAY_UNAVAILABLE, RAY_UNREACHABLE, error
 
 EXTRA_HINT = "install it with: pip install 'rapidmc[ray]'"
 
@@ -62,7 +62,13 @@ class Cluster:
         options = dict(include_dashboard=False, logging_level=logging.ERROR,
                        log_to_driver=False, configure_logging=True)
         if self.address is not None:
-            ray.init(address=self.address, **options)
+            try:
+                ray.init(address=self.address, **options)
+            except (ConnectionError, RuntimeError, ValueError) as exc:
+                first = str(exc).strip().splitlines()[0] if str(exc).strip() else ""
+                raise error(RAY_UNREACHABLE, f"--ray {self.address}: no Ray cluster to join "
+                            "there", None, first[:300],
+                            "start one with: ray start --head --port=6379") from None
         else:
             cpus = self.workers if self.workers is not None else \
                 min(self.swarm, os.cpu_count() or 1)

@@ -3,7 +3,8 @@
 A ``Partition`` is a plain class; ``search`` runs it as a Ray actor, one per worker, and
 keeps the actors for the next search of the same Ray session (``start`` begins one).  Its
 states are those whose canonical hash (``canonical.owner``) names it; it stores them in a
-state table of the engine's (``native.state_table``: the compiled one where built), each
+state table of the engine's (``native.state_table``: the model's packed table where it
+offers one, else the compiled one where built), each
 with the link to the state it was first reached from, which may live in another partition.
 
 A link is one number: ``sender << ID_BITS | id`` (the sender partition and the parent's id
@@ -13,20 +14,33 @@ The search runs in breadth-first levels.  ``receive`` takes the states that ever
 partition (in partition order) sent this one at the end of the last level, stores the new
 ones in that order, and notes the first new one the predicate marks; ``expand`` steps every
 state stored since the previous ``expand`` and sorts their successors into one batch per
-owner.  States travel as the objects the model made (Ray pickles them; they are values, with
-no process's ids in them).
+owner.  States travel as the objects the model made, pickled (``encode_batch``; they are
+values, with no process's ids in them).
 """
 from __future__ import annotations
 
+import pickle
+import time
 from array import array
 from typing import Callable, Hashable, Optional, Sequence
 
 from ..native import engine_of, state_table
-from .canonical import owner
+from .canonical import owned_bytes
 
 ID_BITS = 40
 ID_MASK = (1 << ID_BITS) - 1
 NO_PARENT = -1
+
+
+def encode_batch(batch) -> bytes:
+    """A batch of states as bytes, pickled here by the standard C pickler: Ray's own
+    serializer (cloudpickle) calls back into Python for every object of every state, which
+    cost a worker more CPU time than stepping the states."""
+    return pickle.dumps(batch, protocol=pickle.HIGHEST_PROTOCOL)
+
+
+def decode_batch(data: bytes):
+    return pickle.loads(data)
 
 
 def link(partition: int, state_id: int) -> int:
@@ -39,18 +53,30 @@ def unlink(parent: int) -> tuple[int, int]:
 
 class SystemSource:
     """The model a worker searches: the system itself (pickled with it), or a ``recipe``
-    that builds it in the worker's process, built once per ``key``."""
+    that builds it in the worker's process (``built_once``)."""
 
     def __init__(self, system=None, recipe: Optional[Callable] = None):
         self.system, self.recipe = system, recipe
-        self.key = None
-        if recipe is not None:
-            import hashlib
-            from ray import cloudpickle
-            self.key = hashlib.blake2b(cloudpickle.dumps(recipe), digest_size=16).hexdigest()
 
     def build(self):
-        return self.system if self.recipe is None else self.recipe()
+        return self.system if self.recipe is None else built_once(self.recipe)
+
+
+_BUILT: dict = {}       # a recipe's key -> what it built in this process
+KEEP_BUILT = 4
+
+
+def built_once(recipe: Callable):
+    """``recipe()``, built once per process for equal recipes (equal pickled bytes): the
+    searches of one check, safety and LTL, share the model their worker built."""
+    import hashlib
+    from ray import cloudpickle
+    key = hashlib.blake2b(cloudpickle.dumps(recipe), digest_size=16).hexdigest()
+    if key not in _BUILT:
+        if len(_BUILT) >= KEEP_BUILT:
+            _BUILT.clear()
+        _BUILT[key] = recipe()
+    return _BUILT[key]
 
 
 class Partition:
@@ -58,31 +84,25 @@ class Partition:
 
     def __init__(self):
         self.table = None
-        self.built: tuple = (None, None)       # (recipe key, the system it built)
 
     def start(self, index: int, count: int, source: "SystemSource", predicate: str,
               deadlock_is_target: bool, watch: Optional[str] = None) -> None:
         """Begin a search (an actor serves the searches of one check one after another)."""
         self.index, self.count = index, count
-        if source.recipe is None:
-            system = source.system
-        elif self.built[0] == source.key:
-            system = self.built[1]
-        else:
-            system = source.recipe()
-            self.built = (source.key, system)
+        system = source.build()
         self.system = system
         self.predicate = getattr(system, predicate)
         self.deadlock_is_target = deadlock_is_target
         # a method (state, successor states) -> bool to ask of every expanded state
         self.watch = getattr(system, watch) if watch is not None else None
         self.watched = False                   # whether it ever said True
-        self.table = state_table(system)
+        self.table = state_table(system, packed=True)
         self.parent = array("q")
         self.expanded = 0                      # states before this id have been expanded
         self.transitions = 0
         self.deadlocks = 0
         self.sent = 0                          # successors sent to other partitions
+        self.cpu_started = time.process_time()  # (figures: CPU seconds of this search)
 
     def receive(self, senders: Sequence[int], *batches) -> tuple[int, int, int]:
         """Store the new states of the batches (``senders[i]`` sent ``batches[i]``: a list of
@@ -91,7 +111,8 @@ class Partition:
         table, parent, predicate = self.table, self.parent, self.predicate
         before = len(table)
         target = -1
-        for sender, (states, parents) in zip(senders, batches):
+        for sender, batch in zip(senders, batches):
+            states, parents = decode_batch(batch)
             for state, parent_id in zip(states, parents):
                 state_id, new = table.intern(state, True)
                 if not new:
@@ -100,6 +121,19 @@ class Partition:
                 if target < 0 and predicate(state):
                     target = state_id
         return len(table), len(table) - before, target
+
+    def step(self, senders: Sequence[int], *batches) -> tuple:
+        """``receive`` then ``expand`` in one call (one actor call per level: a call costs a
+        worker milliseconds of CPU time): the batches ``expand`` makes, then (states
+        stored, new, the first target received or -1, and ``expand``'s figures).  Nothing is
+        expanded once a target was received or nothing was new."""
+        stored, new, target = self.receive(senders, *batches)
+        if target >= 0 or new == 0:
+            empty = encode_batch(([], array("q")))
+            return (*[empty] * self.count,
+                    (stored, new, target, self.transitions, self.deadlocks, -1, self.watched))
+        *outgoing, figures = self.expand()
+        return (*outgoing, (stored, new, target, *figures))
 
     def expand(self) -> tuple:
         """Step the states stored since the last call: one batch per partition, then the
@@ -110,6 +144,9 @@ class Partition:
         if successors_of is None:
             successors_of = self._targets
         outgoing = [([], array("q")) for _ in range(count)]
+        # a successor reached again in this level is sent once (its first parent, as its
+        # owner would keep): storing a state costs its owner more than encoding it here
+        sending: set = set()
         deadlock_target = -1
         end = len(table)
         for state_id in range(self.expanded, end):
@@ -123,13 +160,18 @@ class Partition:
                 if self.deadlock_is_target and deadlock_target < 0:
                     deadlock_target = state_id
             for successor in successors:
-                states, parents = outgoing[owner(successor, count) if count > 1 else 0]
+                encoded, target = owned_bytes(successor, count)
+                if encoded in sending:
+                    continue
+                sending.add(encoded)
+                states, parents = outgoing[target]
                 states.append(successor)
                 parents.append(state_id)
         self.expanded = end
         self.sent = sum(len(states) for target, (states, _) in enumerate(outgoing)
                         if target != index) + self.sent
-        return (*outgoing, (self.transitions, self.deadlocks, deadlock_target, self.watched))
+        return (*map(encode_batch, outgoing),
+                (self.transitions, self.deadlocks, deadlock_target, self.watched))
 
     def _targets(self, state) -> list:
         return [successor for _, successor in self.system.successors(state)]
@@ -140,9 +182,8 @@ class Partition:
 
     def clear(self) -> None:
         """Let the search's states go (the system stays, for the check's next search)."""
-        built = self.built
+        self.__dict__.clear()
         self.__init__()
-        self.built = built
 
     def figures(self) -> dict:
         """What this partition holds: states, bytes, engine, and the process's peak memory."""
@@ -151,4 +192,5 @@ class Partition:
         return {"states": len(table), "transitions": self.transitions, "sent": self.sent,
                 "bytes": table.memory_bytes() + len(self.parent) * self.parent.itemsize,
                 "engine": engine_of(table),
+                "cpu_seconds": time.process_time() - self.cpu_started,
                 "max_rss_kb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss}

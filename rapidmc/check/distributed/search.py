@@ -5,7 +5,8 @@ shortest path to a state the predicate marks; HOLDS after the whole state space;
 a bound), with the states split among ``Partition`` actors by their canonical hash.  Each
 level: every partition expands its new states and sorts their successors by owner (one
 batch per owner, handed from actor to actor through Ray's object store, never through this
-process); then every partition stores what it was sent.  A level that stores nothing new
+process); then every partition stores what it was sent (``Partition.step``: the storing of
+one level and the expanding of the next in one actor call).  A level that stores nothing new
 ends a complete search.
 
 A violation is found in the level of its depth, as in the one-process search, so the path is
@@ -30,7 +31,8 @@ from ..budget import SearchBudget
 from ..result import HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep, SearchResult, SearchStats
 from ..transition_system import TransitionSystem
 from .canonical import owner
-from .partition import NO_PARENT, Partition, SystemSource, unlink
+from .partition import NO_PARENT, SystemSource, encode_batch, unlink
+from .worker import SAFETY, Worker, call
 
 ENGINE = "distributed"
 
@@ -48,11 +50,11 @@ def partitioned_reachable(ray, partitions: int, system: TransitionSystem, predic
     the system itself is pickled to the workers).
     """
     budget = budget if budget is not None else SearchBudget()
-    actors = _actors(ray, partitions)
+    actors = actors_of(ray, partitions)
     shared = ray.put(SystemSource(system if rebuild is None else None, rebuild))
     try:
         with worker_failures(ray):
-            ray.get([actor.start.remote(index, partitions, shared, predicate,
+            ray.get([call(actor, SAFETY, "start", index, partitions, shared, predicate,
                                         deadlock_is_target, watch)
                      for index, actor in enumerate(actors)])
             return _Levels(ray, actors, system, budget, on_level).run()
@@ -61,19 +63,19 @@ def partitioned_reachable(ray, partitions: int, system: TransitionSystem, predic
         raise
     finally:
         for actor in _ACTORS.get("actors", ()):
-            actor.clear.remote()
+            call(actor, SAFETY, "clear")
 
 
 _ACTORS: dict = {}     # the actors of this Ray session: "session", "actors"
 
 
-def _actors(ray, partitions: int) -> list:
-    """``partitions`` Partition actors, kept for the next search of the same Ray session
-    (an actor costs a process start, a second or more)."""
+def actors_of(ray, partitions: int) -> list:
+    """``partitions`` ``worker.Worker`` actors, kept for the next search of the same Ray
+    session (an actor costs a process start, a second or more)."""
     session = ray.get_runtime_context().get_job_id()
     if _ACTORS.get("session") != session or len(_ACTORS.get("actors", ())) != partitions:
         drop_actors(ray)
-        actor_class = ray.remote(num_cpus=1)(Partition)
+        actor_class = ray.remote(num_cpus=1)(Worker)
         _ACTORS.update(session=session,
                        actors=[actor_class.remote() for _ in range(partitions)])
     return _ACTORS["actors"]
@@ -127,12 +129,20 @@ class _Levels:
             states, parents = batches[owner(state, count) if count > 1 else 0]
             states.append(state)
             parents.append(NO_PARENT)
-        received = [actor.receive.remote([-1], batches[index])
-                    for index, actor in enumerate(self.actors)]
+        stepped = [call(actor, SAFETY, "step", [-1], encode_batch(batches[index]),
+                        returns=count + 1) for index, actor in enumerate(self.actors)]
+        senders = list(range(count))
         while True:
-            found = self._stored(ray.get(received))
+            figures = ray.get([refs[count] for refs in stepped])
+            found = self._stored([f[:3] for f in figures])
             if found is not None:
                 return self._result(VIOLATED, self._path(*found))
+            self.transitions = sum(f[3] for f in figures)
+            self.deadlocks = sum(f[4] for f in figures)
+            self.watched = self.watched or any(f[6] for f in figures)
+            for index, f in enumerate(figures):
+                if f[5] >= 0:
+                    return self._result(VIOLATED, self._path(index, f[5]))
             if self.new == 0:
                 return self._result(HOLDS)
             self.depth += 1
@@ -145,18 +155,8 @@ class _Levels:
                 return self._result(UNKNOWN)
             if self.on_level is not None:
                 self.on_level(self.actors)
-            expanded = [actor.expand.options(num_returns=count + 1).remote()
-                        for actor in self.actors]
-            figures = ray.get([refs[count] for refs in expanded])
-            self.transitions = sum(f[0] for f in figures)
-            self.deadlocks = sum(f[1] for f in figures)
-            self.watched = self.watched or any(f[3] for f in figures)
-            for index, f in enumerate(figures):
-                if f[2] >= 0:
-                    return self._result(VIOLATED, self._path(index, f[2]))
-            senders = list(range(count))
-            received = [actor.receive.remote(senders, *[refs[target] for refs in expanded])
-                        for target, actor in enumerate(self.actors)]
+            stepped = [call(actor, SAFETY, "step", senders, *[refs[target] for refs in stepped],
+                            returns=count + 1) for target, actor in enumerate(self.actors)]
 
     def _note_balance(self) -> None:
         """The progress line's per-worker balance: each worker's share of the states."""
@@ -178,7 +178,8 @@ class _Levels:
         """The steps from an initial state to the target, across partitions."""
         states = []
         while True:
-            state, parent = self.ray.get(self.actors[partition].step_back.remote(state_id))
+            state, parent = self.ray.get(call(self.actors[partition], SAFETY, "step_back",
+                                              state_id))
             states.append(state)
             if parent == NO_PARENT:
                 break
@@ -192,7 +193,7 @@ class _Levels:
         return steps
 
     def _result(self, verdict: str, path=None) -> tuple:
-        figures = self.ray.get([actor.figures.remote() for actor in self.actors])
+        figures = self.ray.get([call(actor, SAFETY, "figures") for actor in self.actors])
         stored = sum(f["states"] for f in figures)
         memory = sum(f["bytes"] for f in figures)
         stats = SearchStats(product_states=stored, model_states=stored,
