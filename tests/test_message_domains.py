@@ -160,3 +160,24 @@ def test_a_further_tasks_receives_get_their_domains_and_honest_coverage(tmp_path
     notes = [w.message for w in report.warnings if w.code.code == "RMC515"]
     assert len(notes) == 1 and notes[0].startswith("SocketReceive at line 12: messages 'TRUE'")
     assert all("under any input" not in message for message in coverage(report))
+
+
+def test_a_count_of_fields_compared_in_a_commands_branch_gets_probe_messages():
+    """``TEST code CASE 1: IF nParams = 3``, nParams counted by a loop over the message's
+    fields: a probe per count a command compares (and one other count), tried one at a
+    time for coverage; the code no CASE names ('3') is among the messages of the search."""
+    program = api.load_program([str(CHECK / "socket_field_count" / "prog.mod")])
+    [domain] = message_domains(program)
+    assert {"1 1 1 1 #", "1 #", "2 #", "2 1 #"} <= set(domain.probes)
+    assert "3 3 #" in domain.messages and not set(domain.probes) & set(domain.messages)
+    assert "for coverage also each of" in domain.note().message
+
+
+def test_probe_messages_reach_the_branches_coverage_would_report(monkeypatch):
+    """Without the probes' searches, the branch for three parameters is reported; with
+    them it is reached (tests/check/socket_field_count has no ``unreached`` file)."""
+    program = api.load_program([str(CHECK / "socket_field_count" / "prog.mod")])
+    assert coverage(api.check(program)) == []
+    monkeypatch.setattr(api, "_probed_lines", lambda model: set())
+    assert coverage(api.check(program)) == [
+        "never reached with the socket messages tried (SocketReceive at line 53)"]

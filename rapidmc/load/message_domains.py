@@ -51,6 +51,11 @@ FILLER = " "                  # what stands before a compared part of a message
 MALFORMED = "#"               # text no StrToVal target type accepts
 
 IDENTITY = ("whole",)         # how a value was taken from the message
+COUNT = ("count",)            # a number of fields: counted in a loop over the message
+SCANS = ("STRFIND", "STRMATCH", "STRPART", "STRTOVAL")   # what a loop over fields does
+TEXT_LIMIT = 80               # characters a string holds (a longer message is cut)
+MAX_PROBES = 64               # per receiving site: each is one small search for coverage
+PROBE_STATES = 20000          # states a probe's search may visit (its lines count even so)
 
 
 def site_key(span: ast.Span) -> tuple:
@@ -69,12 +74,19 @@ class MessageDomain:
     exact: bool                   # every possible value behaves like one of these
     reason: str                   # what the data read is compared with or parsed as
     narrower: tuple = ()          # fewer messages, when the sites' domains multiply too far
+    probes: tuple = ()            # messages tried one at a time, for coverage only
 
     def note(self) -> Diagnostic:
         shown = ", ".join(quoted(value) if isinstance(value, str) else format_num(value)
                           for value in self.messages)
+        probed = ""
+        if self.probes:
+            probed = (f"; for coverage also each of {len(self.probes)} messages alone: "
+                      + ", ".join(map(quoted, self.probes[:4]))
+                      + (", ..." if len(self.probes) > 4 else ""))
         return Diagnostic(DOMAIN_ASSUMED, f"{self.instruction} at line {self.site.line}: "
-                          f"{self.kind} {shown} ({self.reason})", self.site, severity="note")
+                          f"{self.kind} {shown} ({self.reason}){probed}", self.site,
+                          severity="note")
 
 
 SOCKET, FILE, ANSWERS = "messages", "lines", "answers"
@@ -126,7 +138,8 @@ def _site_domain(program, routines, node) -> Optional[MessageDomain]:
             else uses.text_messages()
         return MessageDomain(node.span, RECEIVES[node.name.key], SOCKET, messages,
                              uses.exact and raw is None, reason,
-                             uses.well_formed_only() if raw is None else ())
+                             uses.well_formed_only() if raw is None else (),
+                             uses.probe_messages() if raw is None else ())
     if isinstance(node, ast.ProcedureCall) and node.name.key in NUMBER_ANSWERS:
         positional = [a.value for a in node.args if a.kind == ast.REQUIRED and a.name is None]
         uses = _followed(program, routines, positional[0] if positional else None)
@@ -194,6 +207,7 @@ class Uses:
         self.numbers: set = set()                # numbers the whole value is compared with
         self.extent = 0                          # bytes the unpacked fields span
         self.parsed_numbers: list = []           # (view of the text, number) parsed, compared
+        self.counted: list = []                  # (dispatch, number): a count of fields compared
         self.exact = True                        # every read tells apart only what was tried
 
     def follow(self, start: dict) -> None:
@@ -216,6 +230,9 @@ class Uses:
     # --- spreading: assignments, arguments, function results ------------------
 
     def _spread(self, node, parents, routine) -> None:
+        counter = _incremented(node)
+        if counter is not None and self._in_message_loop(parents):
+            self.views.setdefault(counter, set()).add(COUNT)
         if isinstance(node, ast.Assignment):
             self._flow(node.value, node.target)
         elif isinstance(node, ast.Return) and node.value is not None \
@@ -225,6 +242,17 @@ class Uses:
             self._parsed_into(node)
         elif isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
             self._arguments(node)
+
+    def _in_message_loop(self, parents) -> bool:
+        """Whether the innermost loop around the node walks over the parts of the message:
+        it cuts, searches or parses data taken from it (a server's loop over whole messages
+        counts messages, not fields, and cuts them in a routine it calls)."""
+        loop = next((p for p in reversed(parents) if isinstance(p, (ast.While, ast.For))), None)
+        return loop is not None and any(
+            isinstance(node, ast.FunctionCall) and node.name.key in SCANS and node.args
+            and isinstance(node.args[0].value, ast.NameRef)
+            and IDENTITY in self.views.get(node.args[0].value.name.key, ())
+            for node, _ in ast.walk(loop))
 
     def _flow(self, value, target) -> None:
         base = _base_name(target)
@@ -310,6 +338,11 @@ class Uses:
             if start is not None and start == int(start) and start >= 1 \
                     and IDENTITY in self.view_of(values[0]):
                 return {("part", int(start))}
+        if isinstance(expr, ast.Binary) and expr.op in ("+", "-"):
+            sides = (expr.left, expr.right)
+            if any(_literal_number(side) is not None for side in sides) and any(
+                    COUNT in self.view_of(side) for side in sides):
+                return {COUNT}      # nParams := indParam - 1: still the number of fields
         return {None}
 
     # --- observing: what the code tells apart -----------------------------------
@@ -320,26 +353,26 @@ class Uses:
                 and not _plain_read(node, parents, self.routines, scope):
             self.exact = False
         if isinstance(node, ast.Binary) and (self.carries(node.left) or self.carries(node.right)):
-            self._comparison(node, scope)
+            self._comparison(node, scope, parents)
         elif isinstance(node, ast.Test) and self.carries(node.subject):
             for case in node.cases:
                 for value in case.values:
-                    self._compared(node.subject, value, "=", scope)
+                    self._compared(node.subject, value, "=", scope, parents + (node, case))
         elif isinstance(node, ast.FunctionCall) and node.name.key in ("STRFIND", "STRMATCH",
                                                                        "STRMEMB"):
             self._searched(node, scope)
         elif isinstance(node, ast.FunctionCall) and node.name.key == "STRTOVAL":
             self._parse(node, scope)
 
-    def _comparison(self, node, scope) -> None:
+    def _comparison(self, node, scope, parents=()) -> None:
         if node.op in NUMBER_COMPARISONS:
             carried = node.left if self.carries(node.left) else node.right
             other = node.right if carried is node.left else node.left
-            self._compared(carried, other, node.op, scope)
+            self._compared(carried, other, node.op, scope, parents + (node,))
         elif node.op not in ("AND", "OR", "XOR"):
             self.exact = False
 
-    def _compared(self, carried, other, op: str, scope) -> None:
+    def _compared(self, carried, other, op: str, scope, parents=()) -> None:
         text = _string_value(other, scope)
         views = self.view_of(carried)
         if text is not None and op in EQUALITY:
@@ -359,6 +392,45 @@ class Uses:
                 self.fields.setdefault(view[1:], set()).add(number)
             elif view is not None and view[0] == "parsed":
                 self.parsed_numbers.append((view[1], number))
+            elif view == COUNT and number >= 0 and number == int(number):
+                self.counted.append((self._dispatch(parents, scope), int(number)))
+
+    def _dispatch(self, parents, scope) -> Optional[tuple]:
+        """The innermost choice on a value taken from the message that the node (the last
+        of ``parents``) lies in a branch of: (view of the text, the text that takes that
+        branch); None when there is none.  ``TEST code CASE 1: IF nParams = 7`` -> the
+        parsed code's field and '1'."""
+        for depth in range(len(parents) - 2, -1, -1):
+            outer, inner = parents[depth], parents[depth + 1]
+            if isinstance(outer, ast.Test) and isinstance(inner, ast.TestCase) \
+                    and self.carries(outer.subject) and inner.values \
+                    and not _within(parents[-1], outer.subject):
+                chosen = self._branch_text(outer.subject, inner.values[0], scope)
+                if chosen is not None:
+                    return chosen
+            if isinstance(outer, ast.IfBranch) and isinstance(outer.condition, ast.Binary) \
+                    and outer.condition.op == "=" and inner is not outer.condition:
+                condition = outer.condition
+                for carried, other in ((condition.left, condition.right),
+                                       (condition.right, condition.left)):
+                    if self.carries(carried) and not self.carries(other):
+                        chosen = self._branch_text(carried, other, scope)
+                        if chosen is not None:
+                            return chosen
+        return None
+
+    def _branch_text(self, carried, value, scope) -> Optional[tuple]:
+        """(view, text) of a message part for which ``carried`` equals ``value``."""
+        text = _string_value(value, scope)
+        number = number_value(value, scope) if text is None else None
+        for view in sorted(self.view_of(carried), key=repr):
+            if view is None or view == COUNT:
+                continue
+            if text is not None and view[0] != "parsed":
+                return view, text
+            if number is not None and view[0] == "parsed":
+                return view[1], format_num(number)
+        return None
 
     def _searched(self, call, scope) -> None:
         values = [a.value for a in call.args if a.kind == ast.REQUIRED]
@@ -385,6 +457,11 @@ class Uses:
         heads = [text for view, text in self.compared if view in (IDENTITY, ("part", 1))]
         wanted = [(view, text) for view, text in self.compared]
         wanted += [(view, format_num(number)) for view, number in self.parsed_numbers]
+        # and per text parsed and compared, a number none of those comparisons names
+        # (it takes a TEST's DEFAULT: ``TEST code CASE 1, 2`` -> '3')
+        for view in dict.fromkeys(view for view, _ in self.parsed_numbers):
+            named = {number for seen, number in self.parsed_numbers if seen == view}
+            wanted.append((view, format_num(_unnamed(named))))
         for view, rapid_type in self.parsed:
             good = well_formed(rapid_type)
             wanted += [(view, text) for text in ((good,) if good is not None else ())
@@ -403,6 +480,40 @@ class Uses:
             bounded.append(unexpected)
         return tuple(bounded), self._reason()
 
+    def _parsed_texts(self) -> set:
+        return {(view, format_num(number)) for view, number in self.parsed_numbers}
+
+    def probe_messages(self) -> tuple:
+        """Messages that reach the branches comparing a count of fields (``IF nParams =
+        7`` in ``CASE 1``), each the dispatch's text followed by that many fields "1", and
+        one with another count per dispatch.  They are probes: tried one at a time, for
+        coverage only, since the settings such branches store multiply the states of a
+        search offered them all together."""
+        counts, forms = self._counts(), []
+        for view, text in self._parsed_texts():
+            if view is None and counts:
+                numbers = counts.get((view, text), set())
+                other = next(n for n in range(len(numbers) + 1) if n not in numbers)
+                forms += self._counted(text, sorted(numbers) + [other])
+        forms += self._counted("1", sorted(counts.get(None, ())))
+        return tuple(sorted(dict.fromkeys(forms), key=_natural))[:MAX_PROBES]
+
+    def _counts(self) -> dict:
+        """The counts of fields compared, by the dispatch whose branch compares them
+        ((view, text), or None outside any); empty when the code seeks no separator."""
+        if _separators(self.searched)[0] is None:
+            return {}
+        counts: dict = {}
+        for dispatch, count in self.counted:
+            counts.setdefault(dispatch, set()).add(count)
+        return counts
+
+    def _counted(self, head: str, counts: list) -> list:
+        """``head`` followed by each count of fields, as the code splits them."""
+        separator, last = _separators(self.searched)
+        forms = (head + (separator + "1") * count + separator + last for count in counts)
+        return [form for form in forms if len(form) <= TEXT_LIMIT]
+
     def _reason(self) -> str:
         parts = []
         strings = list(dict.fromkeys(text for _, text in self.compared))
@@ -415,6 +526,9 @@ class Uses:
         if types:
             parts.append("parsed by StrToVal as " + ", ".join(types))
         numbers = list(dict.fromkeys(n for _, n in self.parsed_numbers))
+        counts = sorted(set(n for _, n in self.counted))
+        if counts and _separators(self.searched)[0] is not None:
+            parts.append("counts of fields compared with " + ", ".join(map(str, counts)))
         if numbers:
             parts.append("parsed numbers compared with "
                          + ", ".join(_number_text(n) for n in numbers[:8])
@@ -486,10 +600,26 @@ def _placed(view, text: str, separators: list, heads: list) -> Iterator[str]:
             yield prefix + form
 
 
+def _ordered(separators: list) -> list:
+    """The separators sought, the one sought most often (most likely splitting fields)
+    first."""
+    counts = {separator: separators.count(separator) for separator in separators}
+    return sorted(counts, key=lambda s: (-counts[s], separators.index(s)))
+
+
+def _separators(separators: list) -> tuple:
+    """(the separator of fields, the text that ends the last one); (None, "") when the code
+    seeks none."""
+    order = _ordered(separators)
+    if not order:
+        return None, ""
+    return order[0], (order[1] if len(order) > 1 else "")
+
+
 def _fields(text: str, separators: list) -> Iterator[str]:
     counts = {separator: separators.count(separator) for separator in separators}
     # the separator sought most often most likely splits fields; each other ends them
-    for field in sorted(counts, key=lambda s: (-counts[s], separators.index(s))):
+    for field in _ordered(separators):
         for last in counts:
             if last != field:
                 yield text + field + text + field + last
@@ -536,6 +666,20 @@ def _inttype(expr) -> Optional[float]:
     return value if value is not None and int(value) in rawbytes.INT_SIZES else None
 
 
+def _unnamed(numbers: set) -> float:
+    """A whole number above every one of ``numbers``."""
+    return float(int(max(numbers)) + 1)
+
+
+def _natural(text: str) -> tuple:
+    """Sort key: texts by their leading number, then as text."""
+    head = text.split(" ", 1)[0]
+    try:
+        return (float(head), text)
+    except ValueError:
+        return (float("inf"), text)
+
+
 def _number_text(number: float) -> str:
     return str(int(number)) if float(number).is_integer() else str(number)
 
@@ -580,6 +724,24 @@ def _base_name(expr) -> Optional[str]:
     while isinstance(expr, (ast.Index, ast.Component)):
         expr = expr.base
     return expr.name.key if isinstance(expr, ast.NameRef) else None
+
+
+def _incremented(node) -> Optional[str]:
+    """The name a statement counts up by a constant (``n := n + 1``, ``Incr n``), or None."""
+    if isinstance(node, ast.ProcedureCall) and node.name.key == "INCR" and node.args \
+            and isinstance(node.args[0].value, ast.NameRef):
+        return node.args[0].value.name.key
+    if isinstance(node, ast.Assignment) and isinstance(node.target, ast.NameRef) \
+            and isinstance(node.value, ast.Binary) and node.value.op == "+":
+        key, sides = node.target.name.key, (node.value.left, node.value.right)
+        if any(isinstance(side, ast.NameRef) and side.name.key == key for side in sides) \
+                and any(_literal_number(side) is not None for side in sides):
+            return key
+    return None
+
+
+def _within(node, tree) -> bool:
+    return any(inner is node for inner, _ in ast.walk(tree))
 
 
 def _string_value(expr, scope) -> Optional[str]:
