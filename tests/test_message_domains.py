@@ -181,3 +181,49 @@ def test_probe_messages_reach_the_branches_coverage_would_report(monkeypatch):
     monkeypatch.setattr(api, "_probed_lines", lambda model: set())
     assert coverage(api.check(program)) == [
         "never reached with the socket messages tried (SocketReceive at line 53)"]
+
+
+# Texts a peer might send besides the derived ones: empty, numbers, each CASE word in other
+# cases and with more after it, lists, parameters after a code, separators alone.
+OTHER_MESSAGES = ("", " ", "0", "1", "-1", "3", "99", "1.5", "a", "A", "B", "pnp", "PNP ",
+                  "INK;", "[1,2,3]", "[99,99]", "[1,2,3,4,5]", "JNT:[1,2,3,4,5]", "1 #", "1 1 1 1 #",
+                  "2 #", "2 1 #", "3 3 #", "99 99 #", "# # #", "#", ",", "?")
+
+TEXT_SERVERS = ["socket_test_cases", "socket_parsed_code", "socket_strtoval_array",
+                "socket_field_count", "defect_socket_receive_no_time"]
+
+
+def unreached_under_any_input(report: api.CheckReport) -> set:
+    return {(w.span.file, line) for w in report.warnings if w.code.code == "RMC701"
+            and "under any input" in w.message
+            for line in range(w.span.line, (w.span.end_line or w.span.line) + 1)}
+
+
+@pytest.mark.parametrize("body", [EXACT, PARSED])
+def test_no_line_said_unreached_under_any_input_is_reached_by_other_messages(tmp_path, body):
+    """Lines reported 'never reached under any input' stay unreached when the peer sends
+    the derived messages and many others besides (a differential test of that wording)."""
+    unused = "    PROC Unused()\n        state := 5;\n    ENDPROC"
+    derived = check_server(tmp_path, body, unused)
+    claimed = unreached_under_any_input(derived)
+    assert claimed                   # each program has such lines: state := 2, or Unused
+    derived_messages = tuple(m for d in message_domains(derived_program(tmp_path))
+                             for m in d.messages)
+    widened = check_server(tmp_path, body, unused,
+                           socket_messages=derived_messages + OTHER_MESSAGES)
+    assert not claimed & set(widened.executed)
+
+
+@pytest.mark.parametrize("case", TEXT_SERVERS)
+def test_check_cases_claim_no_line_other_messages_reach(case, monkeypatch):
+    monkeypatch.chdir(CHECK / case)
+    program = api.load_program(["prog.mod"])
+    claimed = unreached_under_any_input(api.check(program))
+    derived_messages = tuple(m for d in message_domains(program) for m in d.messages)
+    widened = api.check(program, [], api.CheckOptions(
+        socket_messages=derived_messages + OTHER_MESSAGES))
+    assert widened.executed is not None and not claimed & set(widened.executed)
+
+
+def derived_program(tmp_path):
+    return api.load_program([str(tmp_path / "server.mod")])
