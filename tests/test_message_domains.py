@@ -227,3 +227,51 @@ def test_check_cases_claim_no_line_other_messages_reach(case, monkeypatch):
 
 def derived_program(tmp_path):
     return api.load_program([str(tmp_path / "server.mod")])
+
+
+# a routine the server runs after each message: it reports and waits for an answer
+EXCHANGE = """    VAR num lost := 0;
+    VAR num mode := 0;
+    VAR string ack := "";
+
+    PROC Exchange()
+        SocketSend client \\Str:="state";
+        SocketReceive client \\Str:=ack \\Time:=WAIT_MAX;
+    ERROR
+        IF ERRNO = ERR_SOCK_CLOSED THEN
+            lost := 1;
+        ENDIF
+    ENDPROC
+
+    PROC Report()
+        TEST OpMode()
+        CASE OP_MAN_PROG:
+            mode := 1;
+        ENDTEST
+    ENDPROC"""
+
+
+@pytest.mark.parametrize("body, wording", [
+    ("            Exchange;",
+     "lines 26-27 of Exchange are never reached with no peer closing its socket "
+     "(SocketReceive at lines 14, 24; SocketSend at line 23)"),
+    ("            Exchange;\n            Report;",
+     "lines 27-28 of Exchange are never reached with no peer closing its socket and the "
+     "controller's readings fixed (SocketReceive at lines 14, 25; SocketSend at line 24; "
+     "OpMode at line 33)")])
+def test_a_handler_a_closing_peer_reaches_is_not_unreached_under_any_input(
+        tmp_path, body, wording):
+    """After each message the server reports and waits for an acknowledgement it does not
+    read: a peer closing the connection makes SocketSend or SocketReceive raise
+    ERR_SOCK_CLOSED, which the handler catches.  Without --socket-closures the check never
+    closes, so the handler's lines are said to rest on that; with it they run.  A fixed
+    reading (OpMode) is named the same way."""
+    path = tmp_path / "server.mod"
+    text = SERVER.format(body=body, extra=EXCHANGE)
+    path.write_text(text)
+    program = api.load_program([str(path)])
+    messages = coverage(api.check(program))
+    assert messages[0] == wording
+    closing = api.check(program, [], api.CheckOptions(socket_closures=True))
+    lost = text.splitlines().index("            lost := 1;") + 1
+    assert closing.executed is not None and (str(path), lost) in closing.executed
