@@ -53,6 +53,7 @@ MALFORMED = "#"               # text no StrToVal target type accepts
 IDENTITY = ("whole",)         # how a value was taken from the message
 COUNT = ("count",)            # a number of fields: counted in a loop over the message
 SCANS = ("STRFIND", "STRMATCH", "STRPART", "STRTOVAL")   # what a loop over fields does
+BRACKETS = {"[": "]", "(": ")", "{": "}", "<": ">"}   # around a list the code reads
 TEXT_LIMIT = 80               # characters a string holds (a longer message is cut)
 MAX_PROBES = 64               # per receiving site: each is one small search for coverage
 PROBE_STATES = 20000          # states a probe's search may visit (its lines count even so)
@@ -208,6 +209,7 @@ class Uses:
         self.extent = 0                          # bytes the unpacked fields span
         self.parsed_numbers: list = []           # (view of the text, number) parsed, compared
         self.counted: list = []                  # (dispatch, number): a count of fields compared
+        self.lists: dict[str, int] = {}          # routine -> StrToVal calls on parts cut at run time
         self.exact = True                        # every read tells apart only what was tried
 
     def follow(self, start: dict) -> None:
@@ -363,6 +365,7 @@ class Uses:
             self._searched(node, scope)
         elif isinstance(node, ast.FunctionCall) and node.name.key == "STRTOVAL":
             self._parse(node, scope)
+            self._listed(node, routine)
 
     def _comparison(self, node, scope, parents=()) -> None:
         if node.op in NUMBER_COMPARISONS:
@@ -441,6 +444,13 @@ class Uses:
         if wanted:
             self.searched.append(wanted if call.name.key == "STRMATCH" else wanted[0])
 
+    def _listed(self, call, routine) -> None:
+        """Count a StrToVal of a part the code cut at run-time positions (``StrFind(msg,
+        i, ",")``): a routine that parses N such parts reads a list of N values."""
+        values = [a.value for a in call.args if a.kind == ast.REQUIRED]
+        if len(values) == 2 and self.carries(values[0]) and self.view_of(values[0]) == {None}:
+            self.lists[routine.key] = self.lists.get(routine.key, 0) + 1
+
     def _parse(self, call, scope) -> None:
         values = [a.value for a in call.args if a.kind == ast.REQUIRED]
         if len(values) != 2 or not self.carries(values[0]):
@@ -468,6 +478,8 @@ class Uses:
                        + (MALFORMED,)]
         # each value's likeliest message first, then the next of each (the cap keeps the first)
         ranked = [list(_placed(view, text, self.searched, heads)) for view, text in wanted]
+        # a list of as many numbers as a routine parses from parts it cuts ('[1,1,1]')
+        ranked[1:1] = [[form] for form in self._list_forms()]
         messages = [forms[rank] for rank in range(max(map(len, ranked), default=0))
                     for forms in ranked if rank < len(forms)]
         messages.extend(self.searched)
@@ -479,6 +491,25 @@ class Uses:
                 unexpected += UNEXPECTED
             bounded.append(unexpected)
         return tuple(bounded), self._reason()
+
+    def _list_forms(self) -> list:
+        """Per number of parts a routine cuts and parses, a list of that many "1"s after the
+        opening bracket the code seeks (and before its closing one, if sought), split at the
+        separator it seeks most: ``[1,1,1]`` for ``StrFind(s, 1, "[")``, then three
+        ``StrFind(s, i, ",")``/``StrFind(s, i, "]")`` parts parsed; the longest list
+        first, then each shorter one."""
+        others = [text for text in _ordered(self.searched) if text not in BRACKETS.values()
+                  and text not in BRACKETS]
+        if not others or len(others[0]) != 1:
+            return []
+        opener = next((text for text in self.searched if text in BRACKETS), "")
+        if not opener:
+            return []               # (a list the code reads between brackets only)
+        closer = BRACKETS[opener] if BRACKETS[opener] in self.searched else ""
+        # and each shorter list, whose missing part fails to parse ('[1,1]')
+        longest = max(self.lists.values(), default=0)
+        return [opener + others[0].join(["1"] * count) + closer
+                for count in range(longest, 1, -1)] if longest > 1 else []
 
     def _parsed_texts(self) -> set:
         return {(view, format_num(number)) for view, number in self.parsed_numbers}
