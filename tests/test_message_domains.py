@@ -275,3 +275,18 @@ def test_a_handler_a_closing_peer_reaches_is_not_unreached_under_any_input(
     closing = api.check(program, [], api.CheckOptions(socket_closures=True))
     lost = text.splitlines().index("            lost := 1;") + 1
     assert closing.executed is not None and (str(path), lost) in closing.executed
+
+
+def test_a_length_prefix_frames_each_message_of_the_receive_it_sizes():
+    """ROS-style frames: the 4-byte receive whose value sizes the next receive is offered
+    each of that receive's messages after its length, and a length of 0; the header's
+    fields unpacked into record components (followed out of the VAR parameter) and the
+    data copied from byte 9 give the dispatch's values."""
+    program = api.load_program([str(CHECK / "socket_length_prefixed" / "prog.mod")])
+    prefix, body = message_domains(program)
+    frames = [bytes.fromhex(m.replace(" ", "")) for m in prefix.messages]
+    assert frames[-1] == bytes(4)
+    assert all(int.from_bytes(f[:4], "little") == len(f) - 4 for f in frames)
+    bodies = [bytes.fromhex(m.replace(" ", "")) for m in body.messages]
+    typed = [b for b in bodies if int.from_bytes(b[:4], "little", signed=True) == 11]
+    assert {int.from_bytes(b[8:12], "little", signed=True) for b in typed} >= {-1, -3}

@@ -34,6 +34,7 @@ from .. import ast
 from ..diagnostics import DOMAIN_ASSUMED, Diagnostic
 from ..diagnostics.quoting import quoted
 from ..semantics import rawbytes
+from ..semantics.errors import RapidError
 from ..semantics.literals import parse_literal
 from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
 from ..semantics.scope import CONSTANT
@@ -103,7 +104,7 @@ def message_domains(program: Program) -> tuple:
     for routines in task_routines(program):       # each task's code apart: names are its own
         for routine in routines:
             for node, _ in ast.walk(routine.ast):
-                domain = _site_domain(program, routines, node)
+                domain = _site_domain(program, routines, node, routine.ast)
                 if domain is not None:
                     found.append(domain)
     return tuple(sorted(_bounded(found), key=lambda d: (d.site.file, d.site.line,
@@ -125,7 +126,7 @@ def _bounded(domains: list) -> list:
             if d.narrower else d for d in domains]
 
 
-def _site_domain(program, routines, node) -> Optional[MessageDomain]:
+def _site_domain(program, routines, node, routine=None) -> Optional[MessageDomain]:
     """The domain of ``node`` when it reads from the environment into named data."""
     if isinstance(node, ast.ProcedureCall) and node.name.key in RECEIVES:
         raw = _named_argument(node, "RAWDATA")
@@ -137,6 +138,10 @@ def _site_domain(program, routines, node) -> Optional[MessageDomain]:
         messages, reason = uses.raw_messages(min(int(wanted or 0), rawbytes.MAX_BYTES)) \
             if raw is not None \
             else uses.text_messages()
+        prefix = _length_prefix(routine, raw, wanted) if raw is not None else None
+        if prefix is not None:
+            messages, reason = _framed(uses.raw_messages()[0], *prefix), \
+                reason + f"; each after its length ({int(wanted)} bytes), and a length of 0"
         return MessageDomain(node.span, RECEIVES[node.name.key], SOCKET, messages,
                              uses.exact and raw is None, reason,
                              uses.well_formed_only() if raw is None else (),
@@ -164,6 +169,46 @@ def _site_domain(program, routines, node) -> Optional[MessageDomain]:
                                  uses.exact, uses.number_reason() + "; and a line that is "
                                  "not a number")
     return None
+
+
+def _length_prefix(routine, buffer, wanted) -> Optional[tuple]:
+    """(encoding, network) when this receive of ``wanted`` bytes into ``buffer`` reads a
+    length prefix: its routine unpacks a whole number of that size from byte 1 of the
+    buffer, and another receive into the buffer reads that many bytes (ROS_receive_msg)."""
+    if routine is None or not isinstance(buffer, ast.NameRef) or not wanted:
+        return None
+    lengths, sizes = {}, set()
+    for node, _ in ast.walk(routine):
+        if not isinstance(node, ast.ProcedureCall):
+            continue
+        positional = [a.value for a in node.args if a.kind == ast.REQUIRED and a.name is None]
+        if node.name.key == "UNPACKRAWBYTES" and len(positional) >= 3 \
+                and isinstance(positional[0], ast.NameRef) \
+                and positional[0].name.key == buffer.name.key \
+                and _literal_number(positional[1]) == 1 \
+                and isinstance(positional[2], ast.NameRef):
+            encoding = _encoding(node)
+            if encoding is not None and encoding[0] == "int" and _size(encoding) == wanted:
+                network = any(a.name is not None and a.name.key == "NETWORK" for a in node.args)
+                lengths[positional[2].name.key] = (encoding, network)
+        elif node.name.key in RECEIVES:
+            data, count = _named_argument(node, "RAWDATA"), _named_argument(node, "READNOOFBYTES")
+            if isinstance(data, ast.NameRef) and data.name.key == buffer.name.key \
+                    and isinstance(count, ast.NameRef):
+                sizes.add(count.name.key)
+    found = [lengths[name] for name in sizes if name in lengths]
+    return found[0] if found else None
+
+
+def _framed(messages: tuple, encoding: tuple, network: bool) -> tuple:
+    """Each message after its length, and a length of 0 with nothing after it."""
+    frames = []
+    for text in messages:
+        body = rawbytes.from_text(text)
+        frames.append(rawbytes.to_text(rawbytes.pack(b"", 1, len(body), encoding, network)
+                                       + body))
+    frames.append(rawbytes.to_text(rawbytes.pack(b"", 1, 0, encoding, network)))
+    return tuple(dict.fromkeys(frames))
 
 
 def _followed(program, routines, target) -> Optional["Uses"]:
@@ -210,6 +255,7 @@ class Uses:
         self.parsed_numbers: list = []           # (view of the text, number) parsed, compared
         self.counted: list = []                  # (dispatch, number): a count of fields compared
         self.lists: dict[str, int] = {}          # routine -> StrToVal calls on parts cut at run time
+        self.paths: dict[tuple, set] = {}        # (name, component, ...) -> views of that part
         self.exact = True                        # every read tells apart only what was tried
 
     def follow(self, start: dict) -> None:
@@ -227,7 +273,8 @@ class Uses:
                 self._observe(node, parents, routine)
 
     def _size(self) -> int:
-        return sum(len(v) for v in self.views.values()) + len(self.functions)
+        return sum(len(v) for v in self.views.values()) + len(self.functions) \
+            + sum(len(v) for v in self.paths.values())
 
     # --- spreading: assignments, arguments, function results ------------------
 
@@ -237,6 +284,7 @@ class Uses:
             self.views.setdefault(counter, set()).add(COUNT)
         if isinstance(node, ast.Assignment):
             self._flow(node.value, node.target)
+            self._copy_paths(_path(node.value), _path(node.target))
         elif isinstance(node, ast.Return) and node.value is not None \
                 and self.carries(node.value) and routine.ast.kind == ast.FUNC:
             self.functions.add(routine.ast.name.key)
@@ -244,6 +292,14 @@ class Uses:
             self._parsed_into(node)
         elif isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
             self._arguments(node)
+
+    def _copy_paths(self, source: Optional[tuple], target: Optional[tuple]) -> None:
+        """The parts of ``source`` (``raw_message.header``) become those of ``target``."""
+        if not source or not target or source == target:
+            return
+        for path, views in list(self.paths.items()):
+            if path[:len(source)] == source:
+                self.paths.setdefault(target + path[len(source):], set()).update(views)
 
     def _in_message_loop(self, parents) -> bool:
         """Whether the innermost loop around the node walks over the parts of the message:
@@ -270,11 +326,20 @@ class Uses:
         if key == "UNPACKRAWBYTES":
             self._unpacked(call)
             return
+        if key == "COPYRAWBYTES":
+            self._copied(call)
+            return
         symbol = _routine_named(self.routines, key)
         if symbol is None or symbol.ast is None:
             return
         parameters = [p for p in symbol.ast.parameters if not p.optional]
         positional = [a for a in call.args if a.kind == ast.REQUIRED and a.name is None]
+        for parameter, argument in zip(parameters, positional):
+            # the parts of a record argument are the parameter's, and back out of VAR/INOUT
+            inside, outside = (parameter.name.key,), _path(argument.value)
+            self._copy_paths(outside, inside)
+            if parameter.mode in ("VAR", "INOUT"):
+                self._copy_paths(inside, outside)
         for parameter, argument in zip(parameters, positional):
             if argument.value is not None and self.carries(argument.value):
                 self.views.setdefault(parameter.name.key, set()).update(
@@ -311,12 +376,46 @@ class Uses:
         encoding = _encoding(call)
         if target is None:
             return
+        offset = self._offset(positional[0])
+        if start is not None and offset is not None:
+            start += offset                # a field of bytes copied from further in
         network = any(a.name is not None and a.name.key == "NETWORK" for a in call.args)
         if start is not None and encoding is not None:
             self.extent = max(self.extent, int(start) - 1 + _size(encoding))
-        view = ("field", int(start), encoding, network) if start is not None and encoding is not None \
-            and isinstance(positional[2], ast.NameRef) else None
-        self.views.setdefault(target, set()).add(view)
+        view = ("field", int(start), encoding, network) \
+            if start is not None and encoding is not None and offset is not None else None
+        path = _path(positional[2])
+        if isinstance(positional[2], ast.NameRef) or view is None or path is None:
+            self.views.setdefault(target, set()).add(view)
+        else:                              # a record's component: message.header.msg_type
+            self.views.setdefault(target, set()).add(None)
+            self.paths.setdefault(path, set()).add(view)
+
+    def _offset(self, expr) -> Optional[int]:
+        """How far into the message byte 1 of ``expr`` lies: 0 for the received bytes, n for
+        bytes CopyRawBytes took from byte n + 1 (None: not known)."""
+        path = _path(expr)
+        if path is not None and len(path) > 1:
+            slices = {view[1] for view in self.paths.get(path, ()) if view[0] == "slice"}
+            return slices.pop() if len(slices) == 1 else None
+        return 0 if isinstance(expr, ast.NameRef) else None
+
+    def _copied(self, call) -> None:
+        """``CopyRawBytes buffer, 13, message.data, 1``: message.data holds the message from
+        byte 13 on."""
+        positional = [a.value for a in call.args if a.kind == ast.REQUIRED and a.name is None]
+        if len(positional) < 4 or not self.carries(positional[0]):
+            return
+        source_start, target_start = (_literal_number(positional[1]),
+                                      _literal_number(positional[3]))
+        offset, target = self._offset(positional[0]), _base_name(positional[2])
+        if target is None:
+            return
+        self.views.setdefault(target, set()).add(None)
+        path = _path(positional[2])
+        if None not in (source_start, target_start, offset, path) and len(path) > 1:
+            self.paths.setdefault(path, set()).add(
+                ("slice", int(offset + source_start - target_start)))
 
     # --- what an expression carries ---------------------------------------------
 
@@ -340,6 +439,9 @@ class Uses:
             if start is not None and start == int(start) and start >= 1 \
                     and IDENTITY in self.view_of(values[0]):
                 return {("part", int(start))}
+        path = _path(expr)
+        if path is not None and len(path) > 1 and path in self.paths:
+            return {view for view in self.paths[path] if view[0] != "slice"} or {None}
         if isinstance(expr, ast.Binary) and expr.op in ("+", "-"):
             sides = (expr.left, expr.right)
             if any(_literal_number(side) is not None for side in sides) and any(
@@ -376,6 +478,12 @@ class Uses:
             self.exact = False
 
     def _compared(self, carried, other, op: str, scope, parents=()) -> None:
+        if isinstance(carried, ast.FunctionCall) and carried.name.key == "RAWBYTESLEN" \
+                and carried.args and carried.args[0].value is not None:
+            # RawBytesLen(message.data) < 52: the message must reach that far
+            offset, number = self._offset(carried.args[0].value), number_value(other, scope)
+            if offset is not None and number is not None:
+                self.extent = max(self.extent, int(offset + number))
         text = _string_value(other, scope)
         views = self.view_of(carried)
         if text is not None and op in EQUALITY:
@@ -590,6 +698,13 @@ class Uses:
         length = max([start - 1 + _size(encoding) for (start, encoding, _), _ in fields]
                      + [self.extent, wanted, 1])
         base = bytes(length)
+        for (start, encoding, network), numbers in fields:
+            # every field at the first number it is compared with (a header's expected
+            # type): the others' branches are then reached past that check
+            try:
+                base = rawbytes.pack(base, start, min(numbers), encoding, network)
+            except RapidError:
+                pass                       # (a number the field cannot hold: left 0)
         if not fields:
             return (rawbytes.to_text(base),), "no field of the received bytes is compared " \
                 "with a number: one message of zeros"
@@ -755,6 +870,18 @@ def _base_name(expr) -> Optional[str]:
     while isinstance(expr, (ast.Index, ast.Component)):
         expr = expr.base
     return expr.name.key if isinstance(expr, ast.NameRef) else None
+
+
+def _path(expr) -> Optional[tuple]:
+    """``message.header.msg_type`` -> ("MESSAGE", "HEADER", "MSG_TYPE"); None when an index
+    or anything but names and components is in the way."""
+    names = []
+    while isinstance(expr, ast.Component):
+        names.append(expr.name.key)
+        expr = expr.base
+    if not isinstance(expr, ast.NameRef):
+        return None
+    return (expr.name.key, *reversed(names))
 
 
 def _incremented(node) -> Optional[str]:
