@@ -290,3 +290,14 @@ def test_a_length_prefix_frames_each_message_of_the_receive_it_sizes():
     bodies = [bytes.fromhex(m.replace(" ", "")) for m in body.messages]
     typed = [b for b in bodies if int.from_bytes(b[:4], "little", signed=True) == 11]
     assert {int.from_bytes(b[8:12], "little", signed=True) for b in typed} >= {-1, -3}
+
+
+def test_a_routine_no_call_reaches_gives_no_values(tmp_path):
+    """What only an uncalled routine compares the data with chooses nothing a search can
+    reach: it adds no message (each would multiply the states for nothing)."""
+    unused = ("    PROC Unused()\n        IF request = \"NEVER\" THEN\n            state := 5;\n"
+              "        ENDIF\n    ENDPROC")
+    path = tmp_path / "server.mod"
+    path.write_text(SERVER.format(body=EXACT, extra=unused))
+    [domain] = message_domains(api.load_program([str(path)]))
+    assert domain.messages == ("A", "B", "?")

@@ -28,10 +28,11 @@ reached under any input (``called_routines``).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Iterable, Optional, Sequence
+from typing import Iterable, Sequence
 
 from .. import ast
 from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
+from ..load.call_graph import called_routines  # noqa: F401  (coverage asks it here)
 from .fixed_readings import reading_calls
 
 # instruction or function (canonical name) -> what a check offers it only some of
@@ -91,34 +92,6 @@ def sampled_inputs(program: Program, exact: Iterable[tuple] = (),
 def reached(inputs: Sequence[TriedInput], executed: set) -> tuple:
     """The inputs whose reading instruction ran (``executed``: (file, line) pairs)."""
     return tuple(t for t in inputs if (t.span.file, t.span.line) in executed)
-
-
-def called_routines(program: Program) -> Optional[frozenset]:
-    """Names of the routines some chain of calls from an entry routine or a TRAP reaches
-    (None: a late-bound call may name any routine).  Calls are matched by name, across
-    tasks and modules: a name reaches every routine so named."""
-    by_name: dict[str, list] = {}
-    for routine in program.routines:
-        if routine.ast is not None:
-            by_name.setdefault(routine.key, []).append(routine)
-    starts = [program.routines[i] for i in (program.entry, *program.task_entries)
-              if isinstance(i, int)]
-    pending = starts + [r for r in program.routines if r.ast is not None and r.kind == "TRAP"]
-    seen: set = set()
-    while pending:
-        routine = pending.pop()
-        if routine.index in seen or routine.ast is None:
-            continue
-        seen.add(routine.index)
-        for node, _ in ast.walk(routine.ast):
-            if isinstance(node, ast.LateBindingCall) or (
-                    isinstance(node, ast.ProcedureCall) and node.name.key == "CALLBYVAR"):
-                return None
-            if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
-                pending.extend(by_name.get(node.name.key, ()))
-            elif isinstance(node, ast.Connect):
-                pending.extend(by_name.get(node.trap.key, ()))
-    return frozenset(program.routines[index].name for index in seen)
 
 
 def qualifier(inputs: Sequence[TriedInput]) -> str:

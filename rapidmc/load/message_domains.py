@@ -40,6 +40,7 @@ from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
 from ..semantics.scope import CONSTANT
 from ..semantics.types import BOOL, RECORD, STRING, ArrayType, default_value
 from ..semantics.values import format_num
+from .call_graph import called_routines
 from .input_domains import analog_points, group_points, number_value
 
 MAX_MESSAGES = 24             # per receiving site: the search branches over every one
@@ -257,6 +258,8 @@ class Uses:
         self.lists: dict[str, int] = {}          # routine -> StrToVal calls on parts cut at run time
         self.paths: dict[tuple, set] = {}        # (name, component, ...) -> views of that part
         self.exact = True                        # every read tells apart only what was tried
+        # what a routine no call reaches compares chooses nothing a search can reach
+        self.called = called_routines(program)
 
     def follow(self, start: dict) -> None:
         """Every name and function the data reaches, to a fixpoint, then what is done there."""
@@ -269,6 +272,8 @@ class Uses:
                 for node, parents in ast.walk(routine.ast):
                     self._spread(node, parents, routine)
         for routine in self.routines:
+            if self.called is not None and routine.name not in self.called:
+                continue
             for node, parents in ast.walk(routine.ast):
                 self._observe(node, parents, routine)
 
