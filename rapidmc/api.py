@@ -51,7 +51,8 @@ from .findings.fixed_readings import fixed_readings
 from .findings.tried_inputs import sampled_inputs
 from .load.backup import (link_options, load_tasks, resolve_program_files,
                           with_encrypted_interface)
-from .load.message_domains import ANSWERS, FILE, SOCKET, message_domains, site_key
+from .load.message_domains import (ANSWERS, FILE, PROBE_STATES, SOCKET, message_domains,
+                                   site_key)
 from .load.outside_data import observed_names, outside_data as find_outside_data
 from .load.shared_data import pers_warnings
 from .ltl import read_hoa, to_buchi
@@ -202,18 +203,8 @@ def prepare(program: Program, properties: Sequence[Property],
         options = replace(options, reductions=replace(options.reductions, partial_order=False))
     atoms = AtomCompiler(program)
     jobs = [_automaton(prop, atoms, options) for prop in properties]
-    domains, assumed = free_input_domains(program, atoms, options.input_domains)
-    config = CheckConfig(program, options.tp_answers, options.fk_answers, domains,
-                         observed=observed_inputs(program, atoms))
     messages = _derived_domains(program, options)
-    if options.socket_messages:
-        config.socket_messages = tuple(options.socket_messages)
-    for kind, name in DERIVED_DOMAINS.items():
-        setattr(config, name, {site_key(d.site): d.messages for d in messages if d.kind == kind})
-    config.socket_closures = options.socket_closures
-    config.socket_timeouts = options.socket_timeouts
-    if options.file_lines:
-        config.file_lines = tuple(options.file_lines)
+    config, assumed = _check_config(program, atoms, options, messages)
     unknown = set(options.automata) - {p.name for p in properties}
     if unknown:
         raise error(USAGE, f"--automaton names no property: "
@@ -225,6 +216,46 @@ def prepare(program: Program, properties: Sequence[Property],
     return Model(program, properties, options, atoms, jobs, config,
                  RapidSystem(program, config, plan), RapidDescriber(program, config), plan,
                  assumed, messages)
+
+
+def _check_config(program: Program, atoms: AtomCompiler, options: CheckOptions,
+                  messages: tuple) -> tuple:
+    """The environment a check offers the program: the options' inputs and answers, the
+    derived ``messages`` per reading site; and the default input domains assumed."""
+    domains, assumed = free_input_domains(program, atoms, options.input_domains)
+    config = CheckConfig(program, options.tp_answers, options.fk_answers, domains,
+                         observed=observed_inputs(program, atoms))
+    if options.socket_messages:
+        config.socket_messages = tuple(options.socket_messages)
+    for kind, name in DERIVED_DOMAINS.items():
+        setattr(config, name, {site_key(d.site): d.messages for d in messages if d.kind == kind})
+    config.socket_closures = options.socket_closures
+    config.socket_timeouts = options.socket_timeouts
+    if options.file_lines:
+        config.file_lines = tuple(options.file_lines)
+    return config, assumed
+
+
+def _probed_lines(model: Model) -> set:
+    """The lines that searches offering one probe message at a site (each site's other
+    messages as derived) run: each search is small where the derived messages together
+    multiply the states (``MessageDomain.probes``).  A line one of them runs is reachable,
+    complete or not, so its lines count even when ``PROBE_STATES`` stops it."""
+    lines: set = set()
+    for domain in model.messages:
+        for probe in domain.probes:
+            messages = tuple(replace(d, messages=(probe,)) if d is domain else d
+                             for d in model.messages)
+            config, _ = _check_config(model.program, model.atoms, model.options, messages)
+            watch = ExploredFacts(model.program, (), model.atoms)
+            find_reachable(RapidSystem(model.program, config, reduction.NO_PLAN), _never,
+                           observe=watch, max_states=PROBE_STATES)
+            lines |= watch.statements.executed
+    return lines
+
+
+def _never(state) -> bool:
+    return False
 
 
 # message_domains kind -> the CheckConfig attribute holding its domains per reading site
@@ -322,6 +353,8 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
             results = searches.builtin_checks() + [searches.property(*job) for job in model.jobs]
         except EnvironmentFault as exc:
             raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
+    if searches.facts.complete and any(d.probes for d in model.messages):
+        searches.facts.statements.executed |= _probed_lines(model)
     resting_on = assumptions(model.program)
     results = [replace(r, assumes=for_verdict(resting_on, r.result, model.describer))
                for r in results]
@@ -364,7 +397,8 @@ class _Searches:
                            storage=options.storage)
         exact = [site_key(d.site) for d in model.messages if d.exact]
         self.facts = ExploredFacts(model.program, [prop.formula for prop in model.properties],
-                                   model.atoms, sampled_inputs(model.program, exact))
+                                   model.atoms, sampled_inputs(model.program, exact,
+                                                                  options.socket_closures))
         # Coverage and vacuity watch the run-time error search (merged steps name every line
         # they run); --compact / --bitstate searches are never complete, so they watch nothing;
         # nor do distributed searches (their states are expanded in other processes).

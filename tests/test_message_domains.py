@@ -160,3 +160,144 @@ def test_a_further_tasks_receives_get_their_domains_and_honest_coverage(tmp_path
     notes = [w.message for w in report.warnings if w.code.code == "RMC515"]
     assert len(notes) == 1 and notes[0].startswith("SocketReceive at line 12: messages 'TRUE'")
     assert all("under any input" not in message for message in coverage(report))
+
+
+def test_a_count_of_fields_compared_in_a_commands_branch_gets_probe_messages():
+    """``TEST code CASE 1: IF nParams = 3``, nParams counted by a loop over the message's
+    fields: a probe per count a command compares (and one other count), tried one at a
+    time for coverage; the code no CASE names ('3') is among the messages of the search."""
+    program = api.load_program([str(CHECK / "socket_field_count" / "prog.mod")])
+    [domain] = message_domains(program)
+    assert {"1 1 1 1 #", "1 #", "2 #", "2 1 #"} <= set(domain.probes)
+    assert "3 3 #" in domain.messages and not set(domain.probes) & set(domain.messages)
+    assert "for coverage also each of" in domain.note().message
+
+
+def test_probe_messages_reach_the_branches_coverage_would_report(monkeypatch):
+    """Without the probes' searches, the branch for three parameters is reported; with
+    them it is reached (tests/check/socket_field_count has no ``unreached`` file)."""
+    program = api.load_program([str(CHECK / "socket_field_count" / "prog.mod")])
+    assert coverage(api.check(program)) == []
+    monkeypatch.setattr(api, "_probed_lines", lambda model: set())
+    assert coverage(api.check(program)) == [
+        "never reached with the socket messages tried (SocketReceive at line 53)"]
+
+
+# Texts a peer might send besides the derived ones: empty, numbers, each CASE word in other
+# cases and with more after it, lists, parameters after a code, separators alone.
+OTHER_MESSAGES = ("", " ", "0", "1", "-1", "3", "99", "1.5", "a", "A", "B", "pnp", "PNP ",
+                  "INK;", "[1,2,3]", "[99,99]", "[1,2,3,4,5]", "JNT:[1,2,3,4,5]", "1 #", "1 1 1 1 #",
+                  "2 #", "2 1 #", "3 3 #", "99 99 #", "# # #", "#", ",", "?")
+
+TEXT_SERVERS = ["socket_test_cases", "socket_parsed_code", "socket_strtoval_array",
+                "socket_field_count", "defect_socket_receive_no_time"]
+
+
+def unreached_under_any_input(report: api.CheckReport) -> set:
+    return {(w.span.file, line) for w in report.warnings if w.code.code == "RMC701"
+            and "under any input" in w.message
+            for line in range(w.span.line, (w.span.end_line or w.span.line) + 1)}
+
+
+@pytest.mark.parametrize("body", [EXACT, PARSED])
+def test_no_line_said_unreached_under_any_input_is_reached_by_other_messages(tmp_path, body):
+    """Lines reported 'never reached under any input' stay unreached when the peer sends
+    the derived messages and many others besides (a differential test of that wording)."""
+    unused = "    PROC Unused()\n        state := 5;\n    ENDPROC"
+    derived = check_server(tmp_path, body, unused)
+    claimed = unreached_under_any_input(derived)
+    assert claimed                   # each program has such lines: state := 2, or Unused
+    derived_messages = tuple(m for d in message_domains(derived_program(tmp_path))
+                             for m in d.messages)
+    widened = check_server(tmp_path, body, unused,
+                           socket_messages=derived_messages + OTHER_MESSAGES)
+    assert not claimed & set(widened.executed)
+
+
+@pytest.mark.parametrize("case", TEXT_SERVERS)
+def test_check_cases_claim_no_line_other_messages_reach(case, monkeypatch):
+    monkeypatch.chdir(CHECK / case)
+    program = api.load_program(["prog.mod"])
+    claimed = unreached_under_any_input(api.check(program))
+    derived_messages = tuple(m for d in message_domains(program) for m in d.messages)
+    widened = api.check(program, [], api.CheckOptions(
+        socket_messages=derived_messages + OTHER_MESSAGES))
+    assert widened.executed is not None and not claimed & set(widened.executed)
+
+
+def derived_program(tmp_path):
+    return api.load_program([str(tmp_path / "server.mod")])
+
+
+# a routine the server runs after each message: it reports and waits for an answer
+EXCHANGE = """    VAR num lost := 0;
+    VAR num mode := 0;
+    VAR string ack := "";
+
+    PROC Exchange()
+        SocketSend client \\Str:="state";
+        SocketReceive client \\Str:=ack \\Time:=WAIT_MAX;
+    ERROR
+        IF ERRNO = ERR_SOCK_CLOSED THEN
+            lost := 1;
+        ENDIF
+    ENDPROC
+
+    PROC Report()
+        TEST OpMode()
+        CASE OP_MAN_PROG:
+            mode := 1;
+        ENDTEST
+    ENDPROC"""
+
+
+@pytest.mark.parametrize("body, wording", [
+    ("            Exchange;",
+     "lines 26-27 of Exchange are never reached with no peer closing its socket "
+     "(SocketReceive at lines 14, 24; SocketSend at line 23)"),
+    ("            Exchange;\n            Report;",
+     "lines 27-28 of Exchange are never reached with no peer closing its socket and the "
+     "controller's readings fixed (SocketReceive at lines 14, 25; SocketSend at line 24; "
+     "OpMode at line 33)")])
+def test_a_handler_a_closing_peer_reaches_is_not_unreached_under_any_input(
+        tmp_path, body, wording):
+    """After each message the server reports and waits for an acknowledgement it does not
+    read: a peer closing the connection makes SocketSend or SocketReceive raise
+    ERR_SOCK_CLOSED, which the handler catches.  Without --socket-closures the check never
+    closes, so the handler's lines are said to rest on that; with it they run.  A fixed
+    reading (OpMode) is named the same way."""
+    path = tmp_path / "server.mod"
+    text = SERVER.format(body=body, extra=EXCHANGE)
+    path.write_text(text)
+    program = api.load_program([str(path)])
+    messages = coverage(api.check(program))
+    assert messages[0] == wording
+    closing = api.check(program, [], api.CheckOptions(socket_closures=True))
+    lost = text.splitlines().index("            lost := 1;") + 1
+    assert closing.executed is not None and (str(path), lost) in closing.executed
+
+
+def test_a_length_prefix_frames_each_message_of_the_receive_it_sizes():
+    """ROS-style frames: the 4-byte receive whose value sizes the next receive is offered
+    each of that receive's messages after its length, and a length of 0; the header's
+    fields unpacked into record components (followed out of the VAR parameter) and the
+    data copied from byte 9 give the dispatch's values."""
+    program = api.load_program([str(CHECK / "socket_length_prefixed" / "prog.mod")])
+    prefix, body = message_domains(program)
+    frames = [bytes.fromhex(m.replace(" ", "")) for m in prefix.messages]
+    assert frames[-1] == bytes(4)
+    assert all(int.from_bytes(f[:4], "little") == len(f) - 4 for f in frames)
+    bodies = [bytes.fromhex(m.replace(" ", "")) for m in body.messages]
+    typed = [b for b in bodies if int.from_bytes(b[:4], "little", signed=True) == 11]
+    assert {int.from_bytes(b[8:12], "little", signed=True) for b in typed} >= {-1, -3}
+
+
+def test_a_routine_no_call_reaches_gives_no_values(tmp_path):
+    """What only an uncalled routine compares the data with chooses nothing a search can
+    reach: it adds no message (each would multiply the states for nothing)."""
+    unused = ("    PROC Unused()\n        IF request = \"NEVER\" THEN\n            state := 5;\n"
+              "        ENDIF\n    ENDPROC")
+    path = tmp_path / "server.mod"
+    path.write_text(SERVER.format(body=EXACT, extra=unused))
+    [domain] = message_domains(api.load_program([str(path)]))
+    assert domain.messages == ("A", "B", "?")

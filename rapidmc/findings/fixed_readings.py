@@ -34,20 +34,26 @@ FIXED = ("a fixed value", "that value")
 
 def fixed_readings(program: Program) -> list[Diagnostic]:
     """One warning per predefined routine read as a fixed or sampled value, in source order."""
-    user_routines = {routine.key for routine in program.routines}
     first: dict[str, ast.Name] = {}
     calls: dict[str, int] = {}
+    for name in reading_calls(program):
+        key = name.key
+        first.setdefault(key, name)
+        calls[key] = calls.get(key, 0) + 1
+    warnings = [_warning(first[key], calls[key]) for key in first]
+    return sorted(warnings, key=lambda d: (d.span.file, d.span.line, d.span.column))
+
+
+def reading_calls(program: Program) -> Iterator[ast.Name]:
+    """The name of each call of the program's code to a predefined routine read as a fixed
+    or sampled value, outside output instructions."""
+    user_routines = {routine.key for routine in program.routines}
     for routine in program.routines:
         if routine.namespace != PROGRAM_NAMESPACE or routine.ast is None:
             continue
         for name in _readings(routine.ast):
-            key = name.key
-            if key in user_routines or not _is_reading(key):
-                continue
-            first.setdefault(key, name)
-            calls[key] = calls.get(key, 0) + 1
-    warnings = [_warning(first[key], calls[key]) for key in first]
-    return sorted(warnings, key=lambda d: (d.span.file, d.span.line, d.span.column))
+            if name.key not in user_routines and _is_reading(name.key):
+                yield name
 
 
 def _is_reading(key: str) -> bool:

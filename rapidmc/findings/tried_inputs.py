@@ -9,6 +9,17 @@ FlexPendant.  Code that is never reached in such a check may still be reached
 by another message, line or answer, so its warning says "with the ... tried"
 and names the reading instruction instead of "under any input".
 
+The controller's readings a check takes as fixed (OpMode, GetSysInfo, ...: RMC702,
+``fixed_readings``) are inputs of the same kind: each call is named ("and the
+controller's readings fixed (OpMode at line 107)").
+
+A peer that closes its connection is an input too: in reality SocketSend and
+SocketReceive then raise ERR_SOCK_CLOSED, which an ERROR handler may catch; a
+check models that only with ``--socket-closures``.  Without it, when the program
+has an ERROR handler, each such instruction that ran is named as well ("with no
+peer closing its socket (SocketSend at line 97)"): the handler's code may be
+reached by a closure the check did not try.
+
 An input counts when its reading instruction ran in the search (an input the
 program never reads cannot explain anything), and only for code some call could
 reach: a routine that no entry, TRAP or late-bound call leads to is never
@@ -17,10 +28,12 @@ reached under any input (``called_routines``).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Iterable, Optional, Sequence
+from typing import Iterable, Sequence
 
 from .. import ast
 from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
+from ..load.call_graph import called_routines  # noqa: F401  (coverage asks it here)
+from .fixed_readings import reading_calls
 
 # instruction or function (canonical name) -> what a check offers it only some of
 SAMPLED = {
@@ -34,6 +47,13 @@ SAMPLED = {
 }
 
 
+# instructions that raise ERR_SOCK_CLOSED when the peer has closed the connection
+CLOSABLE = ("SOCKETSEND", "SOCKETRECEIVE", "SOCKETRECEIVEFROM")
+PEERS_OPEN = "no peer closing its socket"      # the kind of those, when closures are not tried
+FIXED = "the controller's readings fixed"      # the kind of a fixed reading (RMC702)
+PHRASES = (PEERS_OPEN, FIXED)                  # kinds that are phrases of their own
+
+
 @dataclass(frozen=True)
 class TriedInput:
     """A reading instruction whose input the check offered only a sample of values."""
@@ -43,19 +63,29 @@ class TriedInput:
     span: ast.Span
 
 
-def sampled_inputs(program: Program, exact: Iterable[tuple] = ()) -> tuple:
+def sampled_inputs(program: Program, exact: Iterable[tuple] = (),
+                   closures: bool = False) -> tuple:
     """Every reading instruction of the program's code whose input is sampled, in source
-    order; ``exact``: (file, line, column) of sites whose domain covers every value."""
+    order; ``exact``: (file, line, column) of sites whose domain covers every value;
+    ``closures``: whether the check lets peers close their sockets (else the socket
+    instructions that would raise ERR_SOCK_CLOSED are named, when an ERROR handler could
+    catch it)."""
     exact = set(exact)
+    routines = [routine for routine in program.routines
+                if routine.ast is not None and routine.namespace != ENVIRONMENT_NAMESPACE]
+    # (every task's code: the environment model is no input)
+    handled = not closures and any(routine.ast.error is not None for routine in routines)
     found = []
-    for routine in program.routines:
-        if routine.ast is None or routine.namespace == ENVIRONMENT_NAMESPACE:
-            continue                # every task's code: the environment model is no input
+    for routine in routines:
         for node, _ in ast.walk(routine.ast):
-            if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) \
-                    and node.name.key in SAMPLED \
+            if not isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
+                continue
+            if node.name.key in SAMPLED \
                     and (node.span.file, node.span.line, node.span.column) not in exact:
                 found.append(TriedInput(SAMPLED[node.name.key], node.name.text, node.span))
+            if handled and node.name.key in CLOSABLE:
+                found.append(TriedInput(PEERS_OPEN, node.name.text, node.span))
+    found += [TriedInput(FIXED, name.text, name.span) for name in reading_calls(program)]
     return tuple(sorted(set(found), key=lambda t: (t.span.file, t.span.line, t.span.column)))
 
 
@@ -64,43 +94,17 @@ def reached(inputs: Sequence[TriedInput], executed: set) -> tuple:
     return tuple(t for t in inputs if (t.span.file, t.span.line) in executed)
 
 
-def called_routines(program: Program) -> Optional[frozenset]:
-    """Names of the routines some chain of calls from an entry routine or a TRAP reaches
-    (None: a late-bound call may name any routine).  Calls are matched by name, across
-    tasks and modules: a name reaches every routine so named."""
-    by_name: dict[str, list] = {}
-    for routine in program.routines:
-        if routine.ast is not None:
-            by_name.setdefault(routine.key, []).append(routine)
-    starts = [program.routines[i] for i in (program.entry, *program.task_entries)
-              if isinstance(i, int)]
-    pending = starts + [r for r in program.routines if r.ast is not None and r.kind == "TRAP"]
-    seen: set = set()
-    while pending:
-        routine = pending.pop()
-        if routine.index in seen or routine.ast is None:
-            continue
-        seen.add(routine.index)
-        for node, _ in ast.walk(routine.ast):
-            if isinstance(node, ast.LateBindingCall) or (
-                    isinstance(node, ast.ProcedureCall) and node.name.key == "CALLBYVAR"):
-                return None
-            if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
-                pending.extend(by_name.get(node.name.key, ()))
-            elif isinstance(node, ast.Connect):
-                pending.extend(by_name.get(node.trap.key, ()))
-    return frozenset(program.routines[index].name for index in seen)
-
-
 def qualifier(inputs: Sequence[TriedInput]) -> str:
     """``under any input``, or ``with the socket messages tried (SocketReceive at line 191)``."""
     if not inputs:
         return "under any input"
-    kinds = list(dict.fromkeys(t.kind for t in inputs))
-    kinds_text = kinds[0] if len(kinds) == 1 else ", ".join(kinds[:-1]) + " and " + kinds[-1]
+    kinds = list(dict.fromkeys(t.kind for t in inputs if t.kind not in PHRASES))
+    phrases = [f"the {kinds[0] if len(kinds) == 1 else ', '.join(kinds[:-1]) + ' and ' + kinds[-1]}"
+               f" tried"] if kinds else []
+    phrases += [phrase for phrase in PHRASES if any(t.kind == phrase for t in inputs)]
     places = []
     for name in dict.fromkeys(t.instruction for t in inputs):
         lines = sorted({t.span.line for t in inputs if t.instruction == name})
         places.append(f"{name} at line{'s' if len(lines) > 1 else ''} "
                       + ", ".join(map(str, lines)))
-    return f"with the {kinds_text} tried ({'; '.join(places)})"
+    return f"with {' and '.join(phrases)} ({'; '.join(places)})"

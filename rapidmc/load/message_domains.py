@@ -34,11 +34,13 @@ from .. import ast
 from ..diagnostics import DOMAIN_ASSUMED, Diagnostic
 from ..diagnostics.quoting import quoted
 from ..semantics import rawbytes
+from ..semantics.errors import RapidError
 from ..semantics.literals import parse_literal
 from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
 from ..semantics.scope import CONSTANT
 from ..semantics.types import BOOL, RECORD, STRING, ArrayType, default_value
 from ..semantics.values import format_num
+from .call_graph import called_routines
 from .input_domains import analog_points, group_points, number_value
 
 MAX_MESSAGES = 24             # per receiving site: the search branches over every one
@@ -51,6 +53,12 @@ FILLER = " "                  # what stands before a compared part of a message
 MALFORMED = "#"               # text no StrToVal target type accepts
 
 IDENTITY = ("whole",)         # how a value was taken from the message
+COUNT = ("count",)            # a number of fields: counted in a loop over the message
+SCANS = ("STRFIND", "STRMATCH", "STRPART", "STRTOVAL")   # what a loop over fields does
+BRACKETS = {"[": "]", "(": ")", "{": "}", "<": ">"}   # around a list the code reads
+TEXT_LIMIT = 80               # characters a string holds (a longer message is cut)
+MAX_PROBES = 64               # per receiving site: each is one small search for coverage
+PROBE_STATES = 20000          # states a probe's search may visit (its lines count even so)
 
 
 def site_key(span: ast.Span) -> tuple:
@@ -69,12 +77,19 @@ class MessageDomain:
     exact: bool                   # every possible value behaves like one of these
     reason: str                   # what the data read is compared with or parsed as
     narrower: tuple = ()          # fewer messages, when the sites' domains multiply too far
+    probes: tuple = ()            # messages tried one at a time, for coverage only
 
     def note(self) -> Diagnostic:
         shown = ", ".join(quoted(value) if isinstance(value, str) else format_num(value)
                           for value in self.messages)
+        probed = ""
+        if self.probes:
+            probed = (f"; for coverage also each of {len(self.probes)} messages alone: "
+                      + ", ".join(map(quoted, self.probes[:4]))
+                      + (", ..." if len(self.probes) > 4 else ""))
         return Diagnostic(DOMAIN_ASSUMED, f"{self.instruction} at line {self.site.line}: "
-                          f"{self.kind} {shown} ({self.reason})", self.site, severity="note")
+                          f"{self.kind} {shown} ({self.reason}){probed}", self.site,
+                          severity="note")
 
 
 SOCKET, FILE, ANSWERS = "messages", "lines", "answers"
@@ -90,7 +105,7 @@ def message_domains(program: Program) -> tuple:
     for routines in task_routines(program):       # each task's code apart: names are its own
         for routine in routines:
             for node, _ in ast.walk(routine.ast):
-                domain = _site_domain(program, routines, node)
+                domain = _site_domain(program, routines, node, routine.ast)
                 if domain is not None:
                     found.append(domain)
     return tuple(sorted(_bounded(found), key=lambda d: (d.site.file, d.site.line,
@@ -112,7 +127,7 @@ def _bounded(domains: list) -> list:
             if d.narrower else d for d in domains]
 
 
-def _site_domain(program, routines, node) -> Optional[MessageDomain]:
+def _site_domain(program, routines, node, routine=None) -> Optional[MessageDomain]:
     """The domain of ``node`` when it reads from the environment into named data."""
     if isinstance(node, ast.ProcedureCall) and node.name.key in RECEIVES:
         raw = _named_argument(node, "RAWDATA")
@@ -124,9 +139,14 @@ def _site_domain(program, routines, node) -> Optional[MessageDomain]:
         messages, reason = uses.raw_messages(min(int(wanted or 0), rawbytes.MAX_BYTES)) \
             if raw is not None \
             else uses.text_messages()
+        prefix = _length_prefix(routine, raw, wanted) if raw is not None else None
+        if prefix is not None:
+            messages, reason = _framed(uses.raw_messages()[0], *prefix), \
+                reason + f"; each after its length ({int(wanted)} bytes), and a length of 0"
         return MessageDomain(node.span, RECEIVES[node.name.key], SOCKET, messages,
                              uses.exact and raw is None, reason,
-                             uses.well_formed_only() if raw is None else ())
+                             uses.well_formed_only() if raw is None else (),
+                             uses.probe_messages() if raw is None else ())
     if isinstance(node, ast.ProcedureCall) and node.name.key in NUMBER_ANSWERS:
         positional = [a.value for a in node.args if a.kind == ast.REQUIRED and a.name is None]
         uses = _followed(program, routines, positional[0] if positional else None)
@@ -150,6 +170,46 @@ def _site_domain(program, routines, node) -> Optional[MessageDomain]:
                                  uses.exact, uses.number_reason() + "; and a line that is "
                                  "not a number")
     return None
+
+
+def _length_prefix(routine, buffer, wanted) -> Optional[tuple]:
+    """(encoding, network) when this receive of ``wanted`` bytes into ``buffer`` reads a
+    length prefix: its routine unpacks a whole number of that size from byte 1 of the
+    buffer, and another receive into the buffer reads that many bytes (ROS_receive_msg)."""
+    if routine is None or not isinstance(buffer, ast.NameRef) or not wanted:
+        return None
+    lengths, sizes = {}, set()
+    for node, _ in ast.walk(routine):
+        if not isinstance(node, ast.ProcedureCall):
+            continue
+        positional = [a.value for a in node.args if a.kind == ast.REQUIRED and a.name is None]
+        if node.name.key == "UNPACKRAWBYTES" and len(positional) >= 3 \
+                and isinstance(positional[0], ast.NameRef) \
+                and positional[0].name.key == buffer.name.key \
+                and _literal_number(positional[1]) == 1 \
+                and isinstance(positional[2], ast.NameRef):
+            encoding = _encoding(node)
+            if encoding is not None and encoding[0] == "int" and _size(encoding) == wanted:
+                network = any(a.name is not None and a.name.key == "NETWORK" for a in node.args)
+                lengths[positional[2].name.key] = (encoding, network)
+        elif node.name.key in RECEIVES:
+            data, count = _named_argument(node, "RAWDATA"), _named_argument(node, "READNOOFBYTES")
+            if isinstance(data, ast.NameRef) and data.name.key == buffer.name.key \
+                    and isinstance(count, ast.NameRef):
+                sizes.add(count.name.key)
+    found = [lengths[name] for name in sizes if name in lengths]
+    return found[0] if found else None
+
+
+def _framed(messages: tuple, encoding: tuple, network: bool) -> tuple:
+    """Each message after its length, and a length of 0 with nothing after it."""
+    frames = []
+    for text in messages:
+        body = rawbytes.from_text(text)
+        frames.append(rawbytes.to_text(rawbytes.pack(b"", 1, len(body), encoding, network)
+                                       + body))
+    frames.append(rawbytes.to_text(rawbytes.pack(b"", 1, 0, encoding, network)))
+    return tuple(dict.fromkeys(frames))
 
 
 def _followed(program, routines, target) -> Optional["Uses"]:
@@ -194,7 +254,12 @@ class Uses:
         self.numbers: set = set()                # numbers the whole value is compared with
         self.extent = 0                          # bytes the unpacked fields span
         self.parsed_numbers: list = []           # (view of the text, number) parsed, compared
+        self.counted: list = []                  # (dispatch, number): a count of fields compared
+        self.lists: dict[str, int] = {}          # routine -> StrToVal calls on parts cut at run time
+        self.paths: dict[tuple, set] = {}        # (name, component, ...) -> views of that part
         self.exact = True                        # every read tells apart only what was tried
+        # what a routine no call reaches compares chooses nothing a search can reach
+        self.called = called_routines(program)
 
     def follow(self, start: dict) -> None:
         """Every name and function the data reaches, to a fixpoint, then what is done there."""
@@ -207,17 +272,24 @@ class Uses:
                 for node, parents in ast.walk(routine.ast):
                     self._spread(node, parents, routine)
         for routine in self.routines:
+            if self.called is not None and routine.name not in self.called:
+                continue
             for node, parents in ast.walk(routine.ast):
                 self._observe(node, parents, routine)
 
     def _size(self) -> int:
-        return sum(len(v) for v in self.views.values()) + len(self.functions)
+        return sum(len(v) for v in self.views.values()) + len(self.functions) \
+            + sum(len(v) for v in self.paths.values())
 
     # --- spreading: assignments, arguments, function results ------------------
 
     def _spread(self, node, parents, routine) -> None:
+        counter = _incremented(node)
+        if counter is not None and self._in_message_loop(parents):
+            self.views.setdefault(counter, set()).add(COUNT)
         if isinstance(node, ast.Assignment):
             self._flow(node.value, node.target)
+            self._copy_paths(_path(node.value), _path(node.target))
         elif isinstance(node, ast.Return) and node.value is not None \
                 and self.carries(node.value) and routine.ast.kind == ast.FUNC:
             self.functions.add(routine.ast.name.key)
@@ -225,6 +297,25 @@ class Uses:
             self._parsed_into(node)
         elif isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
             self._arguments(node)
+
+    def _copy_paths(self, source: Optional[tuple], target: Optional[tuple]) -> None:
+        """The parts of ``source`` (``raw_message.header``) become those of ``target``."""
+        if not source or not target or source == target:
+            return
+        for path, views in list(self.paths.items()):
+            if path[:len(source)] == source:
+                self.paths.setdefault(target + path[len(source):], set()).update(views)
+
+    def _in_message_loop(self, parents) -> bool:
+        """Whether the innermost loop around the node walks over the parts of the message:
+        it cuts, searches or parses data taken from it (a server's loop over whole messages
+        counts messages, not fields, and cuts them in a routine it calls)."""
+        loop = next((p for p in reversed(parents) if isinstance(p, (ast.While, ast.For))), None)
+        return loop is not None and any(
+            isinstance(node, ast.FunctionCall) and node.name.key in SCANS and node.args
+            and isinstance(node.args[0].value, ast.NameRef)
+            and IDENTITY in self.views.get(node.args[0].value.name.key, ())
+            for node, _ in ast.walk(loop))
 
     def _flow(self, value, target) -> None:
         base = _base_name(target)
@@ -240,11 +331,20 @@ class Uses:
         if key == "UNPACKRAWBYTES":
             self._unpacked(call)
             return
+        if key == "COPYRAWBYTES":
+            self._copied(call)
+            return
         symbol = _routine_named(self.routines, key)
         if symbol is None or symbol.ast is None:
             return
         parameters = [p for p in symbol.ast.parameters if not p.optional]
         positional = [a for a in call.args if a.kind == ast.REQUIRED and a.name is None]
+        for parameter, argument in zip(parameters, positional):
+            # the parts of a record argument are the parameter's, and back out of VAR/INOUT
+            inside, outside = (parameter.name.key,), _path(argument.value)
+            self._copy_paths(outside, inside)
+            if parameter.mode in ("VAR", "INOUT"):
+                self._copy_paths(inside, outside)
         for parameter, argument in zip(parameters, positional):
             if argument.value is not None and self.carries(argument.value):
                 self.views.setdefault(parameter.name.key, set()).update(
@@ -281,12 +381,46 @@ class Uses:
         encoding = _encoding(call)
         if target is None:
             return
+        offset = self._offset(positional[0])
+        if start is not None and offset is not None:
+            start += offset                # a field of bytes copied from further in
         network = any(a.name is not None and a.name.key == "NETWORK" for a in call.args)
         if start is not None and encoding is not None:
             self.extent = max(self.extent, int(start) - 1 + _size(encoding))
-        view = ("field", int(start), encoding, network) if start is not None and encoding is not None \
-            and isinstance(positional[2], ast.NameRef) else None
-        self.views.setdefault(target, set()).add(view)
+        view = ("field", int(start), encoding, network) \
+            if start is not None and encoding is not None and offset is not None else None
+        path = _path(positional[2])
+        if isinstance(positional[2], ast.NameRef) or view is None or path is None:
+            self.views.setdefault(target, set()).add(view)
+        else:                              # a record's component: message.header.msg_type
+            self.views.setdefault(target, set()).add(None)
+            self.paths.setdefault(path, set()).add(view)
+
+    def _offset(self, expr) -> Optional[int]:
+        """How far into the message byte 1 of ``expr`` lies: 0 for the received bytes, n for
+        bytes CopyRawBytes took from byte n + 1 (None: not known)."""
+        path = _path(expr)
+        if path is not None and len(path) > 1:
+            slices = {view[1] for view in self.paths.get(path, ()) if view[0] == "slice"}
+            return slices.pop() if len(slices) == 1 else None
+        return 0 if isinstance(expr, ast.NameRef) else None
+
+    def _copied(self, call) -> None:
+        """``CopyRawBytes buffer, 13, message.data, 1``: message.data holds the message from
+        byte 13 on."""
+        positional = [a.value for a in call.args if a.kind == ast.REQUIRED and a.name is None]
+        if len(positional) < 4 or not self.carries(positional[0]):
+            return
+        source_start, target_start = (_literal_number(positional[1]),
+                                      _literal_number(positional[3]))
+        offset, target = self._offset(positional[0]), _base_name(positional[2])
+        if target is None:
+            return
+        self.views.setdefault(target, set()).add(None)
+        path = _path(positional[2])
+        if None not in (source_start, target_start, offset, path) and len(path) > 1:
+            self.paths.setdefault(path, set()).add(
+                ("slice", int(offset + source_start - target_start)))
 
     # --- what an expression carries ---------------------------------------------
 
@@ -310,6 +444,14 @@ class Uses:
             if start is not None and start == int(start) and start >= 1 \
                     and IDENTITY in self.view_of(values[0]):
                 return {("part", int(start))}
+        path = _path(expr)
+        if path is not None and len(path) > 1 and path in self.paths:
+            return {view for view in self.paths[path] if view[0] != "slice"} or {None}
+        if isinstance(expr, ast.Binary) and expr.op in ("+", "-"):
+            sides = (expr.left, expr.right)
+            if any(_literal_number(side) is not None for side in sides) and any(
+                    COUNT in self.view_of(side) for side in sides):
+                return {COUNT}      # nParams := indParam - 1: still the number of fields
         return {None}
 
     # --- observing: what the code tells apart -----------------------------------
@@ -320,26 +462,33 @@ class Uses:
                 and not _plain_read(node, parents, self.routines, scope):
             self.exact = False
         if isinstance(node, ast.Binary) and (self.carries(node.left) or self.carries(node.right)):
-            self._comparison(node, scope)
+            self._comparison(node, scope, parents)
         elif isinstance(node, ast.Test) and self.carries(node.subject):
             for case in node.cases:
                 for value in case.values:
-                    self._compared(node.subject, value, "=", scope)
+                    self._compared(node.subject, value, "=", scope, parents + (node, case))
         elif isinstance(node, ast.FunctionCall) and node.name.key in ("STRFIND", "STRMATCH",
                                                                        "STRMEMB"):
             self._searched(node, scope)
         elif isinstance(node, ast.FunctionCall) and node.name.key == "STRTOVAL":
             self._parse(node, scope)
+            self._listed(node, routine)
 
-    def _comparison(self, node, scope) -> None:
+    def _comparison(self, node, scope, parents=()) -> None:
         if node.op in NUMBER_COMPARISONS:
             carried = node.left if self.carries(node.left) else node.right
             other = node.right if carried is node.left else node.left
-            self._compared(carried, other, node.op, scope)
+            self._compared(carried, other, node.op, scope, parents + (node,))
         elif node.op not in ("AND", "OR", "XOR"):
             self.exact = False
 
-    def _compared(self, carried, other, op: str, scope) -> None:
+    def _compared(self, carried, other, op: str, scope, parents=()) -> None:
+        if isinstance(carried, ast.FunctionCall) and carried.name.key == "RAWBYTESLEN" \
+                and carried.args and carried.args[0].value is not None:
+            # RawBytesLen(message.data) < 52: the message must reach that far
+            offset, number = self._offset(carried.args[0].value), number_value(other, scope)
+            if offset is not None and number is not None:
+                self.extent = max(self.extent, int(offset + number))
         text = _string_value(other, scope)
         views = self.view_of(carried)
         if text is not None and op in EQUALITY:
@@ -359,6 +508,45 @@ class Uses:
                 self.fields.setdefault(view[1:], set()).add(number)
             elif view is not None and view[0] == "parsed":
                 self.parsed_numbers.append((view[1], number))
+            elif view == COUNT and number >= 0 and number == int(number):
+                self.counted.append((self._dispatch(parents, scope), int(number)))
+
+    def _dispatch(self, parents, scope) -> Optional[tuple]:
+        """The innermost choice on a value taken from the message that the node (the last
+        of ``parents``) lies in a branch of: (view of the text, the text that takes that
+        branch); None when there is none.  ``TEST code CASE 1: IF nParams = 7`` -> the
+        parsed code's field and '1'."""
+        for depth in range(len(parents) - 2, -1, -1):
+            outer, inner = parents[depth], parents[depth + 1]
+            if isinstance(outer, ast.Test) and isinstance(inner, ast.TestCase) \
+                    and self.carries(outer.subject) and inner.values \
+                    and not _within(parents[-1], outer.subject):
+                chosen = self._branch_text(outer.subject, inner.values[0], scope)
+                if chosen is not None:
+                    return chosen
+            if isinstance(outer, ast.IfBranch) and isinstance(outer.condition, ast.Binary) \
+                    and outer.condition.op == "=" and inner is not outer.condition:
+                condition = outer.condition
+                for carried, other in ((condition.left, condition.right),
+                                       (condition.right, condition.left)):
+                    if self.carries(carried) and not self.carries(other):
+                        chosen = self._branch_text(carried, other, scope)
+                        if chosen is not None:
+                            return chosen
+        return None
+
+    def _branch_text(self, carried, value, scope) -> Optional[tuple]:
+        """(view, text) of a message part for which ``carried`` equals ``value``."""
+        text = _string_value(value, scope)
+        number = number_value(value, scope) if text is None else None
+        for view in sorted(self.view_of(carried), key=repr):
+            if view is None or view == COUNT:
+                continue
+            if text is not None and view[0] != "parsed":
+                return view, text
+            if number is not None and view[0] == "parsed":
+                return view[1], format_num(number)
+        return None
 
     def _searched(self, call, scope) -> None:
         values = [a.value for a in call.args if a.kind == ast.REQUIRED]
@@ -368,6 +556,13 @@ class Uses:
         wanted = _string_value(values[-1], scope) if len(values) >= 2 else None
         if wanted:
             self.searched.append(wanted if call.name.key == "STRMATCH" else wanted[0])
+
+    def _listed(self, call, routine) -> None:
+        """Count a StrToVal of a part the code cut at run-time positions (``StrFind(msg,
+        i, ",")``): a routine that parses N such parts reads a list of N values."""
+        values = [a.value for a in call.args if a.kind == ast.REQUIRED]
+        if len(values) == 2 and self.carries(values[0]) and self.view_of(values[0]) == {None}:
+            self.lists[routine.key] = self.lists.get(routine.key, 0) + 1
 
     def _parse(self, call, scope) -> None:
         values = [a.value for a in call.args if a.kind == ast.REQUIRED]
@@ -385,12 +580,19 @@ class Uses:
         heads = [text for view, text in self.compared if view in (IDENTITY, ("part", 1))]
         wanted = [(view, text) for view, text in self.compared]
         wanted += [(view, format_num(number)) for view, number in self.parsed_numbers]
+        # and per text parsed and compared, a number none of those comparisons names
+        # (it takes a TEST's DEFAULT: ``TEST code CASE 1, 2`` -> '3')
+        for view in dict.fromkeys(view for view, _ in self.parsed_numbers):
+            named = {number for seen, number in self.parsed_numbers if seen == view}
+            wanted.append((view, format_num(_unnamed(named))))
         for view, rapid_type in self.parsed:
             good = well_formed(rapid_type)
             wanted += [(view, text) for text in ((good,) if good is not None else ())
                        + (MALFORMED,)]
         # each value's likeliest message first, then the next of each (the cap keeps the first)
         ranked = [list(_placed(view, text, self.searched, heads)) for view, text in wanted]
+        # a list of as many numbers as a routine parses from parts it cuts ('[1,1,1]')
+        ranked[1:1] = [[form] for form in self._list_forms()]
         messages = [forms[rank] for rank in range(max(map(len, ranked), default=0))
                     for forms in ranked if rank < len(forms)]
         messages.extend(self.searched)
@@ -402,6 +604,59 @@ class Uses:
                 unexpected += UNEXPECTED
             bounded.append(unexpected)
         return tuple(bounded), self._reason()
+
+    def _list_forms(self) -> list:
+        """Per number of parts a routine cuts and parses, a list of that many "1"s after the
+        opening bracket the code seeks (and before its closing one, if sought), split at the
+        separator it seeks most: ``[1,1,1]`` for ``StrFind(s, 1, "[")``, then three
+        ``StrFind(s, i, ",")``/``StrFind(s, i, "]")`` parts parsed; the longest list
+        first, then each shorter one."""
+        others = [text for text in _ordered(self.searched) if text not in BRACKETS.values()
+                  and text not in BRACKETS]
+        if not others or len(others[0]) != 1:
+            return []
+        opener = next((text for text in self.searched if text in BRACKETS), "")
+        if not opener:
+            return []               # (a list the code reads between brackets only)
+        closer = BRACKETS[opener] if BRACKETS[opener] in self.searched else ""
+        # and each shorter list, whose missing part fails to parse ('[1,1]')
+        longest = max(self.lists.values(), default=0)
+        return [opener + others[0].join(["1"] * count) + closer
+                for count in range(longest, 1, -1)] if longest > 1 else []
+
+    def _parsed_texts(self) -> set:
+        return {(view, format_num(number)) for view, number in self.parsed_numbers}
+
+    def probe_messages(self) -> tuple:
+        """Messages that reach the branches comparing a count of fields (``IF nParams =
+        7`` in ``CASE 1``), each the dispatch's text followed by that many fields "1", and
+        one with another count per dispatch.  They are probes: tried one at a time, for
+        coverage only, since the settings such branches store multiply the states of a
+        search offered them all together."""
+        counts, forms = self._counts(), []
+        for view, text in self._parsed_texts():
+            if view is None and counts:
+                numbers = counts.get((view, text), set())
+                other = next(n for n in range(len(numbers) + 1) if n not in numbers)
+                forms += self._counted(text, sorted(numbers) + [other])
+        forms += self._counted("1", sorted(counts.get(None, ())))
+        return tuple(sorted(dict.fromkeys(forms), key=_natural))[:MAX_PROBES]
+
+    def _counts(self) -> dict:
+        """The counts of fields compared, by the dispatch whose branch compares them
+        ((view, text), or None outside any); empty when the code seeks no separator."""
+        if _separators(self.searched)[0] is None:
+            return {}
+        counts: dict = {}
+        for dispatch, count in self.counted:
+            counts.setdefault(dispatch, set()).add(count)
+        return counts
+
+    def _counted(self, head: str, counts: list) -> list:
+        """``head`` followed by each count of fields, as the code splits them."""
+        separator, last = _separators(self.searched)
+        forms = (head + (separator + "1") * count + separator + last for count in counts)
+        return [form for form in forms if len(form) <= TEXT_LIMIT]
 
     def _reason(self) -> str:
         parts = []
@@ -415,6 +670,9 @@ class Uses:
         if types:
             parts.append("parsed by StrToVal as " + ", ".join(types))
         numbers = list(dict.fromkeys(n for _, n in self.parsed_numbers))
+        counts = sorted(set(n for _, n in self.counted))
+        if counts and _separators(self.searched)[0] is not None:
+            parts.append("counts of fields compared with " + ", ".join(map(str, counts)))
         if numbers:
             parts.append("parsed numbers compared with "
                          + ", ".join(_number_text(n) for n in numbers[:8])
@@ -445,6 +703,13 @@ class Uses:
         length = max([start - 1 + _size(encoding) for (start, encoding, _), _ in fields]
                      + [self.extent, wanted, 1])
         base = bytes(length)
+        for (start, encoding, network), numbers in fields:
+            # every field at the first number it is compared with (a header's expected
+            # type): the others' branches are then reached past that check
+            try:
+                base = rawbytes.pack(base, start, min(numbers), encoding, network)
+            except RapidError:
+                pass                       # (a number the field cannot hold: left 0)
         if not fields:
             return (rawbytes.to_text(base),), "no field of the received bytes is compared " \
                 "with a number: one message of zeros"
@@ -486,10 +751,26 @@ def _placed(view, text: str, separators: list, heads: list) -> Iterator[str]:
             yield prefix + form
 
 
+def _ordered(separators: list) -> list:
+    """The separators sought, the one sought most often (most likely splitting fields)
+    first."""
+    counts = {separator: separators.count(separator) for separator in separators}
+    return sorted(counts, key=lambda s: (-counts[s], separators.index(s)))
+
+
+def _separators(separators: list) -> tuple:
+    """(the separator of fields, the text that ends the last one); (None, "") when the code
+    seeks none."""
+    order = _ordered(separators)
+    if not order:
+        return None, ""
+    return order[0], (order[1] if len(order) > 1 else "")
+
+
 def _fields(text: str, separators: list) -> Iterator[str]:
     counts = {separator: separators.count(separator) for separator in separators}
     # the separator sought most often most likely splits fields; each other ends them
-    for field in sorted(counts, key=lambda s: (-counts[s], separators.index(s))):
+    for field in _ordered(separators):
         for last in counts:
             if last != field:
                 yield text + field + text + field + last
@@ -536,6 +817,20 @@ def _inttype(expr) -> Optional[float]:
     return value if value is not None and int(value) in rawbytes.INT_SIZES else None
 
 
+def _unnamed(numbers: set) -> float:
+    """A whole number above every one of ``numbers``."""
+    return float(int(max(numbers)) + 1)
+
+
+def _natural(text: str) -> tuple:
+    """Sort key: texts by their leading number, then as text."""
+    head = text.split(" ", 1)[0]
+    try:
+        return (float(head), text)
+    except ValueError:
+        return (float("inf"), text)
+
+
 def _number_text(number: float) -> str:
     return str(int(number)) if float(number).is_integer() else str(number)
 
@@ -580,6 +875,36 @@ def _base_name(expr) -> Optional[str]:
     while isinstance(expr, (ast.Index, ast.Component)):
         expr = expr.base
     return expr.name.key if isinstance(expr, ast.NameRef) else None
+
+
+def _path(expr) -> Optional[tuple]:
+    """``message.header.msg_type`` -> ("MESSAGE", "HEADER", "MSG_TYPE"); None when an index
+    or anything but names and components is in the way."""
+    names = []
+    while isinstance(expr, ast.Component):
+        names.append(expr.name.key)
+        expr = expr.base
+    if not isinstance(expr, ast.NameRef):
+        return None
+    return (expr.name.key, *reversed(names))
+
+
+def _incremented(node) -> Optional[str]:
+    """The name a statement counts up by a constant (``n := n + 1``, ``Incr n``), or None."""
+    if isinstance(node, ast.ProcedureCall) and node.name.key == "INCR" and node.args \
+            and isinstance(node.args[0].value, ast.NameRef):
+        return node.args[0].value.name.key
+    if isinstance(node, ast.Assignment) and isinstance(node.target, ast.NameRef) \
+            and isinstance(node.value, ast.Binary) and node.value.op == "+":
+        key, sides = node.target.name.key, (node.value.left, node.value.right)
+        if any(isinstance(side, ast.NameRef) and side.name.key == key for side in sides) \
+                and any(_literal_number(side) is not None for side in sides):
+            return key
+    return None
+
+
+def _within(node, tree) -> bool:
+    return any(inner is node for inner, _ in ast.walk(tree))
 
 
 def _string_value(expr, scope) -> Optional[str]:
