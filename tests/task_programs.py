@@ -15,20 +15,26 @@ import random
 
 SHARED = ("PERS num shared := 0;", "PERS bool flag := FALSE;", "PERS bool lock := FALSE;",
           "PERS num inside := 0;")
+SHARED_ARRAY = ("PERS bool slots{2} := [FALSE, FALSE];",)
 
 
-def random_tasks(seed: int, procedures: bool = False) -> list[str]:
+def random_tasks(seed: int, procedures: bool = False, arrays: bool = False) -> list[str]:
     """``procedures``: each task also has a procedure of its own (statements as the loop's)
     that its loop may call, so steps enter and leave routines (two tasks then: the
-    state spaces stay small enough for the search without reduction)."""
+    state spaces stay small enough for the search without reduction).  ``arrays``: the
+    statements also index arrays by data (its own ``marks``, the shared ``slots``: 
+    conditions the fused step does not take) and reach data by name (GetDataVal,
+    SetDataVal); two tasks then, as with procedures."""
     rng = random.Random(seed)
-    count = 2 if procedures else rng.randint(2, 3)
-    return [_task(rng, number, procedures) for number in range(1, count + 1)]
+    count = 2 if procedures or arrays else rng.randint(2, 3)
+    return [_task(rng, number, procedures, arrays) for number in range(1, count + 1)]
 
 
-def _task(rng: random.Random, number: int, procedures: bool = False) -> str:
+def _task(rng: random.Random, number: int, procedures: bool = False,
+          arrays: bool = False) -> str:
     own, mine = f"own{number}", f"mine{number}"
-    body = [_statement(rng, own, mine, 3) for _ in range(rng.randint(2, 4))]
+    draw = _array_statement if arrays else _statement
+    body = [draw(rng, own, mine, 3) for _ in range(rng.randint(2, 4))]
     routines = []
     if procedures:
         call = f"    Step{number};"
@@ -40,9 +46,10 @@ def _task(rng: random.Random, number: int, procedures: bool = False) -> str:
         loop = ["    WHILE TRUE DO", *body, "    ENDWHILE"]
     else:
         loop = [f"    FOR i FROM 1 TO {rng.randint(1, 3)} DO", *body, "    ENDFOR"]
-    declarations = [f"  {line}" for line in SHARED] + [f"  VAR num {own} := 0;",
-                                                       f"  VAR bool {mine} := FALSE;",
-                                                       "  VAR num quotient := 0;"]
+    declarations = [f"  {line}" for line in SHARED + (SHARED_ARRAY if arrays else ())] + \
+        [f"  VAR num {own} := 0;", f"  VAR bool {mine} := FALSE;", "  VAR num quotient := 0;"]
+    if arrays:
+        declarations.append("  VAR bool marks{3} := [FALSE, TRUE, FALSE];")
     # a handler every other task: a failed division sets ERRNO (every task's) and goes on
     handler = ["  ERROR", f"    {own} := 1;", "    RETRY;"] if rng.random() < 0.5 else []
     return "\n".join([f"MODULE Task{number}", *declarations, "  PROC main()", *loop,
@@ -67,6 +74,25 @@ def _statement(rng: random.Random, own: str, mine: str, indent: int) -> str:
         f"{pad}WaitTestAndSet lock;\n{pad}inside := inside + 1;\n{pad}{own} := ({own} + 1) "
         f"MOD 3;\n{pad}inside := inside - 1;\n{pad}lock := FALSE;",
         f"{pad}quotient := 6 DIV ({own} + {rng.randint(0, 1)});",
+    ]
+    return rng.choice(choices)
+
+
+def _array_statement(rng: random.Random, own: str, mine: str, indent: int) -> str:
+    """A statement of ``_statement`` or one on arrays indexed by data or on data reached
+    by name."""
+    if rng.random() < 0.5:
+        return _statement(rng, own, mine, indent)
+    pad = "  " * indent
+    choices = [
+        f"{pad}IF marks{{{own} + 1}} = TRUE THEN\n{pad}  {mine} := NOT {mine};\n{pad}ENDIF",
+        f"{pad}marks{{{own} + 1}} := {mine};",
+        f"{pad}IF slots{{{own} MOD 2 + 1}} {own} := ({own} + 1) MOD 3;",
+        f"{pad}slots{{{own} MOD 2 + 1}} := NOT {mine};",
+        f"{pad}IF marks{{{own} + 1}} AND slots{{1}} THEN\n{pad}  shared := {own};\n{pad}ENDIF",
+        f'{pad}GetDataVal "{own}", quotient;',
+        f'{pad}SetDataVal "{own}", ({own} + 1) MOD 3;',
+        f'{pad}SetDataVal "shared", {own};',
     ]
     return rng.choice(choices)
 

@@ -44,9 +44,10 @@ def states(document: dict) -> dict[str, int]:
     return {p["name"]: p["stats"]["product_states"] for p in document["properties"]}
 
 
-def write_tasks(folder: Path, seed: int, procedures: bool = False) -> list[str]:
+def write_tasks(folder: Path, seed: int, procedures: bool = False,
+                arrays: bool = False) -> list[str]:
     argv = []
-    for number, text in enumerate(random_tasks(seed, procedures), start=1):
+    for number, text in enumerate(random_tasks(seed, procedures, arrays), start=1):
         path = folder / f"task{number}.mod"
         path.write_text(text)
         argv += [str(path)] if number == 1 else ["--add-task", str(path)]
@@ -70,6 +71,19 @@ def test_generated_tasks_keep_their_verdicts(tmp_path, seed):
 def test_generated_tasks_with_procedures_keep_their_verdicts(tmp_path, seed):
     """Steps that enter and leave a task's own procedures are ample too (ENDPROC is local)."""
     argv = write_tasks(tmp_path, seed, procedures=True)
+    if seed % 4 == 3:
+        argv.append("--no-fairness")
+    reduced, full = check_json(argv), check_json(argv + ["--no-por"])
+    assert "UNKNOWN" not in verdicts(full).values(), states(full)
+    assert verdicts(reduced) == verdicts(full)
+    assert never_reached(reduced) == never_reached(full)
+
+
+@pytest.mark.parametrize("seed", range(70, 90))
+def test_generated_tasks_on_arrays_and_named_data_keep_their_verdicts(tmp_path, seed):
+    """Conditions on arrays indexed by data (read from their syntax) and data reached by
+    name in the task's own scope (GetDataVal, SetDataVal) keep the reduction on."""
+    argv = write_tasks(tmp_path, seed, arrays=True)
     if seed % 4 == 3:
         argv.append("--no-fairness")
     reduced, full = check_json(argv), check_json(argv + ["--no-por"])

@@ -34,6 +34,7 @@ from ..semantics.fused_step import plain_successor_states, stop_pcs, written_glo
 from ..semantics.values import format_num, format_value
 from ..semantics.errors import errno_name
 from .reduction import NO_PLAN, Plan
+from .state_keys import StateKeys
 from .task_atoms import task_qualifier
 from .value_text import DESCRIBED_TYPES, OPAQUE_KINDS, untyped_text, value_text
 from .reduction.expansion import expand_lasso
@@ -78,7 +79,8 @@ class RapidSystem:
                 stop_pcs(program.routines[program.entry])):
             self.project_fused = None
         # successors kept for the next searches (one per property) over the same program
-        self._shared: dict[State, list] = {}
+        self._shared: dict[int, tuple] = {}   # state key -> (state, its successors)
+        self._keys = StateKeys()
         self.order = plan.order          # ample sets between tasks (reduction.partial_order)
         self._full: Optional["RapidSystem"] = None      # see full_interleaving
 
@@ -116,6 +118,7 @@ class RapidSystem:
             self._full = copy.copy(self)
             self._full.order = None
             self._full._shared = {}
+            self._full._keys = StateKeys()
         return self._full
 
     def initial_states(self) -> list[State]:
@@ -124,10 +127,12 @@ class RapidSystem:
         return states if project is None else list(dict.fromkeys(map(project, states)))
 
     def successors(self, state: State) -> list[tuple[Hashable, State]]:
-        if self._shared:                 # (hashing a whole state is not free)
-            cached = self._shared.get(state)
-            if cached is not None:
-                return cached
+        shared = self._shared
+        if shared:                       # (hashing a whole state is not free: see state_keys)
+            key = self._keys.key(state)
+            cached = shared.get(key)
+            if cached is not None and cached[0] == state:
+                return cached[1]
         transitions = successors(self.program, state, self.config)
         project = self.project
         if project is None:
@@ -138,9 +143,8 @@ class RapidSystem:
                       for label, span, after, output, _ in transitions]
         if self.order is not None:
             result = self.order.ample(state, result, self.config)
-        if len(self._shared) < self.shared_limit and \
-                not is_plain(self.program, state, self.config):
-            self._shared[state] = result
+        if len(shared) < self.shared_limit and not is_plain(self.program, state, self.config):
+            shared.setdefault(self._keys.key(state), (state, result))
         return result
 
     def successor_states(self, state: State) -> list[State]:

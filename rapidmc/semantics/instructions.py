@@ -77,13 +77,14 @@ class ControlAction(Instruction):
 class Branch(Instruction):
     """Evaluate a condition; continue at ``target_true`` or ``target_false``."""
 
-    __slots__ = ("condition", "target_true", "target_false")
+    __slots__ = ("condition", "target_true", "target_false", "expression")
 
-    def __init__(self, span, condition):
+    def __init__(self, span, condition, expression=None):
         super().__init__(span)
         self.condition = condition
         self.target_true = -1
         self.target_false = -1
+        self.expression = expression    # the condition's syntax (what it reads, for analyses)
 
     def run(self, m: Machine) -> None:
         m.goto(self.target_true if self.condition(m) else self.target_false)

@@ -410,7 +410,7 @@ class RoutineCompiler:
     def branch(self, condition_expr, span, otherwise: Label) -> None:
         """Emit a condition test; what is emitted next runs when it holds."""
         condition = self.expressions().condition(condition_expr)
-        test = self.emit(Branch(span, condition.fn))
+        test = self.emit(Branch(span, condition.fn, condition_expr))
         if condition.source is not None:
             test.fusion = condition
         body = Label()

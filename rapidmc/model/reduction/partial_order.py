@@ -30,14 +30,18 @@ Checking*, ch. 10) is every transition of one task ``t`` when
   a fully expanded state, whatever the search order (the breadth-first safety
   searches, the depth-first product search of an LTL property, several
   searches over one system whose successors are remembered).  States are
-  remembered by hash: a collision only expands fully.
+  remembered by key (``model.state_keys``: equal states, equal keys, computed
+  from the parts a step handed on unchanged): a collision only expands fully.
 
 Otherwise the state is expanded fully.  The reduced graph keeps every verdict
 of the LTL properties without X (next) over these atoms, reachability of
 FAILED and of states where the program waits forever; ``plan_reductions``
 turns it off for a property with X, an atom on locations (AtLine, InRoutine
 ...), stored free inputs (every step would change them), environment models,
-and data reached by name at run time (SetDataVal ...).  States with interrupts
+and data reached by name at run time in another task or by pattern
+(``\\TaskName``, SetAllDataVal, GetNextSym); GetDataVal and SetDataVal look the
+name up where the call is, so a task's SetDataVal counts as a write of every
+datum the task can name.  States with interrupts
 are expanded fully.  The fair search (``check.fair``) runs on the unreduced
 system (``RapidSystem.full_interleaving``).  tests/test_partial_order.py holds
 the verdicts against the unreduced search.
@@ -54,13 +58,19 @@ from ...semantics.instructions import (Action, Branch, Call, EndRoutine, ForInit
                                        Jump, Return)
 from ...semantics.library.tasks import SyncWait
 from ...semantics.program import ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE, Program
-from ...semantics.scope import GLOBAL_DATA
+from ...semantics.scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA
 from ...semantics.state import RUNNING, State
 from ...semantics.step import successors as semantic_successors
+from ..state_keys import StateKeys
 from .relevance import DATA_BY_NAME
 
 _STORE_READ = re.compile(r"\bstore\[(\d+)\]")
 TASK_CHOICE = "task"
+_OWN_TASK_BY_NAME = frozenset({"GETDATAVAL", "SETDATAVAL"})
+# syntax that reads nothing but the data it names
+_PLAIN_EXPRESSIONS = frozenset({ast.NumLiteral, ast.StringLiteral, ast.BoolLiteral,
+                                ast.Index, ast.Component, ast.Unary, ast.Binary,
+                                ast.Aggregate})
 
 
 class Footprint(NamedTuple):
@@ -93,6 +103,9 @@ class PartialOrder:
         tasks = len(self.names)
         accessors = _accessors(program)
         written = [data_uses(program, _namespace(task))[1] for task in range(tasks)]
+        for task in tasks_writing_data_by_name(program):
+            # SetDataVal looks the name up where the call is: any data its task can name
+            written[task] = written[task] | {slot for slot, by in accessors.items() if task in by}
         # per task: the slots it may write (named by no other task), and those it may read
         # (written by no other task)
         self.own = [frozenset(slot for slot, by in accessors.items() if by <= {task})
@@ -106,7 +119,9 @@ class PartialOrder:
         self.barriers = any(isinstance(instruction, SyncWait)
                             for routine in program.routines for instruction in routine.code)
         self._local: dict = {}          # (task, routine, pc) -> bool
-        self.expanded: set[int] = set()  # hashes of the states expanded (cycle proviso)
+        self._loops: dict = {}          # routine index -> names of its FOR variables
+        self.expanded: set[int] = set()  # keys of the states expanded (cycle proviso)
+        self.keys = StateKeys()
 
     def ample(self, state: State, successors: list, config) -> list:
         """``successors`` (labelled, as ``RapidSystem.successors`` gives them) or the
@@ -119,7 +134,7 @@ class PartialOrder:
             running = [task for task, stack in enumerate(stacks) if stack]
             if len(running) > 1:
                 chosen = self._choose(state, stacks, running, successors, config)
-        expanded.add(hash(state))
+        expanded.add(self.keys.key(state))
         return successors if chosen is None else chosen
 
     def _choose(self, state: State, stacks: tuple, running: list, successors: list,
@@ -142,7 +157,7 @@ class PartialOrder:
         ``waits(task)`` of ``no_deadlock``'s search stays false, as in ``state``, where
         its instruction was independent), and ``after`` is new to the search (C3)."""
         if after[7] != RUNNING or after == state or after[5] != state[5] or \
-                after[6] != state[6] or hash(after) in self.expanded:
+                after[6] != state[6] or self.keys.key(after) in self.expanded:
             return False
         before = state[0] if task == 0 else state[10][task - 1]
         stack = after[0] if task == 0 else after[10][task - 1]
@@ -191,10 +206,14 @@ class PartialOrder:
                 return SHARED
             return self._local_write(routine, instruction.slot)
         if kind is Branch:
-            if instruction.fusion is None or pc in (instruction.target_true,
-                                                    instruction.target_false):
+            if pc in (instruction.target_true, instruction.target_false):
                 return SHARED
-            return LOCAL if self._reads_allowed(task, instruction.fusion) else SHARED
+            if instruction.fusion is not None:
+                return LOCAL if self._reads_allowed(task, instruction.fusion) else SHARED
+            # a condition the fused step does not take (an indexed array ...): what it
+            # reads, from its syntax
+            return LOCAL if self._syntax_reads_allowed(task, routine,
+                                                       instruction.expression) else SHARED
         if kind is Call:
             # entering a procedure without arguments pushes a frame of the task's own
             return LOCAL if not instruction.binders and instruction.routine.kind == "PROC" \
@@ -247,6 +266,40 @@ class PartialOrder:
                     return False
         return True
 
+    def _syntax_reads_allowed(self, task: int, routine, expression) -> bool:
+        """Whether an expression reads only data no other task writes: constants, the
+        routine's own data and parameters passed by value, and global data in
+        ``stable`` that is not written outside the loaded code; no function (it may read
+        or wait for anything), no signal."""
+        if expression is None:
+            return False
+        lookup = routine.scope.lookup
+        # PERS data written outside the loaded code: each read a choice, as an input's
+        outside = getattr(self.program, "outside_data", None) or {}
+        for node, _ in ast.walk(expression):
+            kind = type(node)
+            if kind is ast.NameRef:
+                symbol = lookup(node.name.key)
+                if symbol is None and node.name.key in self._loop_variables(routine):
+                    continue             # a FOR variable (its scope is the loop's)
+                if symbol is None or not (
+                        symbol.kind == CONSTANT or
+                        symbol.kind == LOCAL_DATA and not symbol.by_reference or
+                        symbol.kind == GLOBAL_DATA and symbol.slot in self.stable[task]
+                        and symbol.slot not in outside):
+                    return False
+            elif kind not in _PLAIN_EXPRESSIONS:
+                return False
+        return True
+
+    def _loop_variables(self, routine) -> frozenset:
+        found = self._loops.get(routine.index)
+        if found is None:
+            found = self._loops[routine.index] = frozenset(
+                node.variable.key for node, _ in ast.walk(routine.ast)
+                if isinstance(node, ast.For)) if routine.ast is not None else frozenset()
+        return found
+
     def _visible_local(self, routine, slot: int) -> bool:
         name = routine.local_names[slot] if slot < len(routine.local_names) else ""
         return name.upper() in self.visible or routine.name.upper() in self.visible
@@ -278,16 +331,38 @@ def _accessors(program: Program) -> dict[int, set[int]]:
 
 
 def reaches_data_by_name(program: Program) -> bool:
-    """Whether some routine reaches data by its name at run time (SetDataVal ...): then
-    any data may be any task's."""
+    """Whether some routine reaches data by its name at run time in a way the reduction
+    cannot bound: GetDataVal or SetDataVal naming another task (``\\TaskRef``,
+    ``\\TaskName``), SetAllDataVal or GetNextSym.  Without a task argument, the name is
+    looked up where the call is (``library.data_access``), so the data is its task's."""
+    return any(not _own_task_only(node) for _, node in _calls_by_name(program))
+
+
+def tasks_writing_data_by_name(program: Program) -> set[int]:
+    """The tasks with a SetDataVal (naming data of their own, see
+    ``reaches_data_by_name``)."""
+    tasks = {_task_of_namespace(routine.namespace) for routine, node in _calls_by_name(program)
+             if node.name.key == "SETDATAVAL"}
+    tasks.discard(None)
+    return tasks
+
+
+def _calls_by_name(program: Program):
+    """(routine, call) per call that reaches data by its name at run time."""
     for routine in program.routines:
         if routine.ast is None:
             continue
         for node in _walk_statements(routine.ast.body):
             if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) and \
                     node.name.key in DATA_BY_NAME:
-                return True
-    return False
+                yield routine, node
+
+
+def _own_task_only(call) -> bool:
+    """Whether a call reaching data by name reaches only its own task's data."""
+    return call.name.key in _OWN_TASK_BY_NAME and not any(
+        argument.name is not None and argument.name.key in ("TASKREF", "TASKNAME")
+        for argument in call.args)
 
 
 def _has_interrupts(interrupts) -> bool:

@@ -26,6 +26,7 @@ class Projection:
         initial_global = [data.initial for data in program.globals]
         sliced = set(slicing.globals)
         self.global_resets = _resets(sliced, initial_global)
+        self._equal_initial: dict = {}     # slot -> the value last found equal to its reset
         self.main = program.entry
         self.main_resets: list[tuple] = []
         self.final_resets: tuple = self.global_resets
@@ -69,10 +70,18 @@ class Projection:
             resets = self.main_resets[frames[0][1]]
         else:
             resets = self.global_resets
+        equal = self._equal_initial
         for slot, initial in resets:
-            if store[slot] != initial:
+            value = store[slot]
+            # (a value handed on since its reset is the initial object itself, or the one
+            # found equal to it last, often a stored state's copy: no deep comparison of a
+            # big array each time; values are immutable)
+            if value is initial or value is equal.get(slot):
+                continue
+            if value != initial:
                 store = _reset_store(store, resets)
                 break
+            equal[slot] = value
         new_frames, new_tasks = frames, tasks
         if self.frame_resets:
             new_frames = self._stack(frames)
@@ -92,7 +101,8 @@ class Projection:
             if per_pc:
                 resets = per_pc[frame[1]] if 0 <= frame[1] < len(per_pc) else ()
                 values = frame[2]
-                if any(values[slot] != initial for slot, initial in resets):
+                if any(values[slot] is not initial and values[slot] != initial
+                       for slot, initial in resets):
                     values = list(values)
                     for slot, initial in resets:
                         values[slot] = initial
@@ -107,5 +117,6 @@ def _resets(slots: set, initial) -> tuple:
 
 
 def _reset_store(store, resets: tuple):
-    changes = [x for slot, initial in resets if store[slot] != initial for x in (slot, initial)]
+    changes = [x for slot, initial in resets
+               if store[slot] is not initial and store[slot] != initial for x in (slot, initial)]
     return store.mset(*changes) if changes else store

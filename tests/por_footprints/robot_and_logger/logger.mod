@@ -5,11 +5,13 @@ MODULE Logger
   PERS num status := 0;
   PERS num limit := 2;
   VAR num lines := 0;
+  PERS bool ready{2} := [FALSE, FALSE];
   PROC main()
     WHILE lines < limit DO               ! SHARED
       lines := lines + 1;                ! LOCAL
       status := lines;                   ! SHARED
       handshake := 0;                    ! SHARED
+      ready{2} := TRUE;                  ! SHARED
       Report lines;                      ! SHARED
     ENDWHILE
   ENDPROC                                ! LOCAL

@@ -9,12 +9,19 @@ MODULE Robot
   VAR num count := 0;
   VAR num reported := 0;
   VAR bool done := FALSE;
+  VAR bool taught{3} := [TRUE, FALSE, TRUE];
+  PERS bool ready{2} := [FALSE, FALSE];
   PROC main()
     FOR i FROM 1 TO 3 DO                 ! LOCAL
       count := count + 1;                ! LOCAL
       robot_only := robot_only + count;  ! LOCAL
       reported := count;                 ! VISIBLE
       Bookkeeping;                       ! LOCAL
+      ! an indexed condition (not a fused step): what it reads, from its syntax
+      IF taught{i} = TRUE done := FALSE; ! LOCAL
+      IF ready{count MOD 2 + 1} THEN     ! SHARED
+        done := FALSE;                   ! LOCAL
+      ENDIF
       IF count > limit THEN              ! SHARED
         done := TRUE;                    ! LOCAL
       ENDIF
