@@ -117,6 +117,13 @@ class RapidSystem:
             self._full._shared = {}
         return self._full
 
+    def path_system(self) -> "RapidSystem":
+        """Where the checker rebuilds paths through stored states (``check.transition_system``):
+        the full interleaving.  Ample sets depend on the states expanded before (their
+        proviso), so asking this system again after the search may give another task's
+        steps than the search took from that state."""
+        return self.full_interleaving()
+
     def initial_states(self) -> list[State]:
         states = initial_states(self.program, lambda script: ScriptChooser(script, self.config))
         project = self.project
