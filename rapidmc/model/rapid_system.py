@@ -77,7 +77,7 @@ class RapidSystem:
                 stop_pcs(program.routines[program.entry])):
             self.project_fused = None
         # successors kept for the next searches (one per property) over the same program
-        self._shared: dict[State, list] = {}
+        self._shared: dict[tuple, tuple] = {}     # _shared_key(state) -> (successors, state)
         self.order = plan.order          # ample sets between tasks (reduction.partial_order)
         self._full: Optional["RapidSystem"] = None      # see full_interleaving
 
@@ -130,10 +130,12 @@ class RapidSystem:
         return states if project is None else list(dict.fromkeys(map(project, states)))
 
     def successors(self, state: State) -> list[tuple[Hashable, State]]:
+        key = None
         if self._shared:                 # (hashing a whole state is not free)
-            cached = self._shared.get(state)
+            key = _shared_key(state)
+            cached = self._shared.get(key)
             if cached is not None:
-                return cached
+                return cached[0]
         transitions = successors(self.program, state, self.config)
         project = self.project
         if project is None:
@@ -146,7 +148,7 @@ class RapidSystem:
             result = self.order.ample(state, result, self.config)
         if len(self._shared) < self.shared_limit and \
                 not is_plain(self.program, state, self.config):
-            self._shared[state] = result
+            self._shared[_shared_key(state) if key is None else key] = (result, state)
         return result
 
     def successor_states(self, state: State) -> list[State]:
@@ -548,3 +550,11 @@ def _check_step(system: RapidSystem, before: State, label, after: State) -> None
         if candidate == after and (label is None or candidate_label == label):
             return
     raise AssertionError(f"counterexample step does not replay (label {label!r})")
+
+
+def _shared_key(state: State) -> tuple:
+    """The key of ``state``'s kept successors: its global data by the identity of each
+    slot's value (hashing 512-element arrays for every look-up costs more than the step),
+    the rest by value.  Sound because the entry keeps the state, so the values whose ids
+    the key holds stay alive; an equal value that is another object only misses."""
+    return (state[0], tuple(map(id, state[1])), state[2:])
