@@ -26,6 +26,9 @@ class Projection:
         initial_global = [data.initial for data in program.globals]
         sliced = set(slicing.globals)
         self.global_resets = _resets(sliced, initial_global)
+        # slot -> the object last found equal to its initial value (a state rebuilt from
+        # the checker's table holds its own equal object; comparing 512 records is not free)
+        self._equal_initial: dict[int, object] = {}
         self.main = program.entry
         self.main_resets: list[tuple] = []
         self.final_resets: tuple = self.global_resets
@@ -69,10 +72,15 @@ class Projection:
             resets = self.main_resets[frames[0][1]]
         else:
             resets = self.global_resets
+        equal = self._equal_initial
         for slot, initial in resets:
-            if store[slot] != initial:
-                store = _reset_store(store, resets)
+            value = store[slot]
+            if value is initial or value is equal.get(slot):
+                continue
+            if value != initial:
+                store = self._reset_store(store, resets)
                 break
+            equal[slot] = value
         new_frames, new_tasks = frames, tasks
         if self.frame_resets:
             new_frames = self._stack(frames)
@@ -83,6 +91,22 @@ class Projection:
         if store is state[1] and new_frames is frames and new_tasks is tasks:
             return state
         return state._replace(store=store, frames=new_frames, tasks=new_tasks)
+
+    def _reset_store(self, store, resets: tuple):
+        """``store`` with each slot of ``resets`` at its initial value: the object last
+        found equal to it there (in a state the checker stored: its canonical object,
+        which the checker then finds by identity, not by walking 512 records)."""
+        equal = self._equal_initial
+        changes = []
+        for slot, initial in resets:
+            value = store[slot]
+            if value is initial or value is equal.get(slot):
+                continue
+            if value == initial:
+                equal[slot] = value
+            else:
+                changes += (slot, equal.get(slot, initial))
+        return store.mset(*changes) if changes else store
 
     def _stack(self, frames: tuple) -> tuple:
         changed = False
@@ -106,6 +130,3 @@ def _resets(slots: set, initial) -> tuple:
     return tuple((slot, initial[slot]) for slot in sorted(slots))
 
 
-def _reset_store(store, resets: tuple):
-    changes = [x for slot, initial in resets if store[slot] != initial for x in (slot, initial)]
-    return store.mset(*changes) if changes else store
