@@ -132,7 +132,7 @@ class RapidSystem:
     def successors(self, state: State) -> list[tuple[Hashable, State]]:
         key = None
         if self._shared:                 # (hashing a whole state is not free)
-            key = _shared_key(state)
+            key = self._shared_key(state)
             cached = self._shared.get(key)
             if cached is not None:
                 return cached[0]
@@ -148,8 +148,22 @@ class RapidSystem:
             result = self.order.ample(state, result, self.config)
         if len(self._shared) < self.shared_limit and \
                 not is_plain(self.program, state, self.config):
-            self._shared[_shared_key(state) if key is None else key] = (result, state)
+            self._shared[self._shared_key(state) if key is None else key] = (result, state)
         return result
+
+    def _shared_key(self, state: State) -> tuple:
+        """The key of ``state``'s kept successors: its global data by the identity of each
+        slot's value (hashing 512-element arrays for every look-up costs more than the
+        step), the rest by value.  Sound because the entry keeps the state, so the values
+        whose ids the key holds stay alive; an equal value that is another object only
+        misses.  With ample sets, the whole state by value: ample sets depend on the
+        states expanded before, and a state's successors must come back as the first
+        search took them, for the next searches (the property searches of a check take the
+        same graph whether or not they reuse the run-time error search's,
+        tests/test_graph_reuse.py)."""
+        if self.order is not None:
+            return state
+        return (state[0], tuple(map(id, state[1])), state[2:])
 
     def successor_states(self, state: State) -> list[State]:
         """The states of ``successors(state)``, in order, without their labels: what the
@@ -551,10 +565,3 @@ def _check_step(system: RapidSystem, before: State, label, after: State) -> None
             return
     raise AssertionError(f"counterexample step does not replay (label {label!r})")
 
-
-def _shared_key(state: State) -> tuple:
-    """The key of ``state``'s kept successors: its global data by the identity of each
-    slot's value (hashing 512-element arrays for every look-up costs more than the step),
-    the rest by value.  Sound because the entry keeps the state, so the values whose ids
-    the key holds stay alive; an equal value that is another object only misses."""
-    return (state[0], tuple(map(id, state[1])), state[2:])

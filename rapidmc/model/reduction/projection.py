@@ -93,9 +93,8 @@ class Projection:
         return state._replace(store=store, frames=new_frames, tasks=new_tasks)
 
     def _reset_store(self, store, resets: tuple):
-        """``store`` with each slot of ``resets`` at its initial value: the object last
-        found equal to it there (in a state the checker stored: its canonical object,
-        which the checker then finds by identity, not by walking 512 records)."""
+        """``store`` with each slot of ``resets`` at its initial value (the initial object
+        itself: an equal one may differ in the type of a number inside)."""
         equal = self._equal_initial
         changes = []
         for slot, initial in resets:
@@ -105,7 +104,7 @@ class Projection:
             if value == initial:
                 equal[slot] = value
             else:
-                changes += (slot, equal.get(slot, initial))
+                changes += (slot, initial)
         return store.mset(*changes) if changes else store
 
     def _stack(self, frames: tuple) -> tuple:
