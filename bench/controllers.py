@@ -39,6 +39,19 @@ stored components for the memory statistic took most of the time), Python 143 an
 of these steps (several tasks).  N=2 with 2 motion tasks completes: 23,916 states with
 both engines, every property HOLDS.  Counters N=8 native: 377,626 states/s and 137 bytes
 before, 336,168 and 136 after (within the noise of the shared machine).
+
+Measured on 2026-11-28 after the identity fast paths (one ``map`` pass over a tuple's
+children, the projection's known-equal objects), under heavy load (load average 17-20 on
+2 cores; CPU seconds still vary by 1.5x from run to run): N=512, 3 tasks, each search
+bounded at 3,000 states (12,627 model states over the three searches, the same with both
+engines), whole command: before 712 and 573 model states per CPU second, after 793 and
+740 (native; Python engine 781); maximum RSS 62-64 MB either way.  The profiled split of
+a native check (``costs`` row; a profile weighs calls heavily): steps about 11 %,
+interning nodes about 36 %, the memory statistic 0.0 %; the largest single cost left is
+the deep ``hash`` of whole states in the partial-order reduction's proviso (about 27 %).
+Counters, ``bench/native.py --sizes 8,9``: N=8 search 0.48 + 0.18 CPU s (pan 8.29 s
+wall under that load), whole check 371,557 states/s and 138 bytes/state; N=9 834,085 and
+1,742,132 states/s in the two searches, whole check 534,095 states/s and 81 bytes/state.
 """
 from __future__ import annotations
 
