@@ -46,10 +46,24 @@ VIOLATED (the logger waits for ever while the robots go on), the other two HOLD.
 main branch of that hour, with one TCP for the whole controller, gives 355,639 states and
 the same verdicts (its figures had moved since the 23,916 above; why was not looked into):
 the second robot's position costs 10 % more states here.
+
+Measured on 2026-11-28 after the identity fast paths (one ``map`` pass over a tuple's
+children, the projection's known-equal objects), under heavy load (load average 17-20 on
+2 cores; CPU seconds still vary by 1.5x from run to run): N=512, 3 tasks, each search
+bounded at 3,000 states (12,627 model states over the three searches, the same with both
+engines), whole command: before 712 and 573 model states per CPU second, after 793 and
+740 (native; Python engine 781); maximum RSS 62-64 MB either way.  The profiled split of
+a native check (``costs`` row; a profile weighs calls heavily): steps about 11 %,
+interning nodes about 36 %, the memory statistic 0.0 %; the largest single cost left is
+the deep ``hash`` of whole states in the partial-order reduction's proviso (about 27 %).
+Counters, ``bench/native.py --sizes 8,9``: N=8 search 0.48 + 0.18 CPU s (pan 8.29 s
+wall under that load), whole check 371,557 states/s and 138 bytes/state; N=9 834,085 and
+1,742,132 states/s in the two searches, whole check 534,095 states/s and 81 bytes/state.
 """
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import os
 import resource
@@ -296,6 +310,58 @@ def child_share(target: list[str]) -> None:
     print(json.dumps(table.counts() if hasattr(table, "counts") else None))
 
 
+# where a check's CPU time goes (a profile in CPU time, in a child process)
+COSTS = {
+    "steps": lambda file, name: (file.endswith("semantics/step.py") and name == "successors") or
+    (file.endswith("semantics/fused_step.py") and name == "plain_successor_states"),
+    "intern": lambda file, name: file.endswith("check/nodes.py"),
+    "memory statistic": lambda file, name: name in ("memory_bytes", "component_bytes",
+                                                    "rows_bytes", "native_bytes"),
+}
+
+
+def outer_seconds(stats, matches) -> float:
+    """CPU seconds spent in the functions ``matches(file, name)`` picks, each call counted
+    once (calls from one picked function to another are inside the outer one)."""
+    total = 0.0
+    for (file, _, name), (_, _, _, _, callers) in stats.stats.items():
+        if matches(file, name):
+            total += sum(figures[3] for (caller_file, _, caller), figures in callers.items()
+                         if not matches(caller_file, caller))
+    return total
+
+
+def child_costs(target: list[str], ltl: str, max_seconds: float) -> None:
+    import cProfile
+    import io
+    import pstats
+    from rapidmc import cli
+    argv = ["check", *target, "--ltl", ltl, "--engine", "native", "--quiet", "--format", "json",
+            "--max-states", str(10 ** 9), "--max-seconds", str(max_seconds)]
+    profiler = cProfile.Profile(time.process_time)
+    with contextlib.redirect_stdout(io.StringIO()):
+        try:
+            profiler.runcall(cli.main, argv)
+        except SystemExit:
+            pass
+    stats = pstats.Stats(profiler)
+    print(json.dumps({"total": stats.total_tt, **{name: outer_seconds(stats, matches)
+                                                   for name, matches in COSTS.items()}}))
+
+
+def costs(target: list[str], ltl: Path, max_seconds: float) -> str:
+    """The shares of a native check's CPU time (profiled, so calls weigh more than they
+    do unprofiled) in the steps, in interning nodes and in the memory statistic."""
+    code, _, _, out = run_measured([sys.executable, __file__, "--child-costs",
+                                    json.dumps([target, str(ltl), max_seconds])])
+    if code != 0:
+        return "costs: ?"
+    found = json.loads(out)
+    total = max(found.pop("total"), 1e-9)
+    return "costs (profiled, share of CPU): " + ", ".join(
+        f"{name} {100 * seconds / total:.1f}%" for name, seconds in found.items())
+
+
 def row(model: str, target: list[str], ltl: Path, engine: str, max_seconds: float,
         share: bool) -> str:
     code, cpu, rss, out = run_measured(check_command(target, ltl, engine, max_seconds))
@@ -338,14 +404,16 @@ def profile(target: list[str], ltl: Path, max_seconds: float) -> None:
     from rapidmc import cli
     argv = ["check", *target, "--ltl", str(ltl), "--engine", "native", "--quiet",
             "--max-states", str(10 ** 9), "--max-seconds", str(max_seconds)]
-    profiler = cProfile.Profile()
+    profiler = cProfile.Profile(time.process_time)     # CPU time: the machine is shared
     started = time.process_time()
     try:
         profiler.runcall(cli.main, argv)
     except SystemExit:
         pass
     print(f"  ({time.process_time() - started:.1f} CPU s)")
-    pstats.Stats(profiler).sort_stats("tottime").print_stats(12)
+    stats = pstats.Stats(profiler).sort_stats("tottime")
+    stats.print_stats(14)
+    stats.print_callers(4)
 
 
 def main() -> None:
@@ -360,10 +428,16 @@ def main() -> None:
     parser.add_argument("--no-sorter", action="store_true")
     parser.add_argument("--keep", help="write the backups into this folder")
     parser.add_argument("--profile", action="store_true")
+    parser.add_argument("--no-costs", action="store_true",
+                        help="skip the profiled run that splits a check's time")
     parser.add_argument("--child-share", help=argparse.SUPPRESS)
+    parser.add_argument("--child-costs", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.child_share:
         child_share(json.loads(args.child_share))
+        return
+    if args.child_costs:
+        child_costs(*json.loads(args.child_costs))
         return
     with tempfile.TemporaryDirectory() as scratch:
         folder = Path(args.keep) if args.keep else Path(scratch)
@@ -377,6 +451,8 @@ def main() -> None:
                 continue
             for engine in args.engines.split(","):
                 print(row(name, target, ltl, engine, args.max_seconds, share=True), flush=True)
+            if not args.no_costs:
+                print(f"{'':24} {costs(target, ltl, args.max_seconds)}", flush=True)
 
 
 if __name__ == "__main__":

@@ -77,3 +77,37 @@ def test_states_with_big_arrays_share_their_unchanged_elements_in_the_state_tabl
     assert table.intern((1, written(BUFFER, 5, (5.0, (7.0, 0.0, 600.0), "p5")), ("robot",))) \
         == (1, False)
     assert all(table[1][1][i] is stored[i] for i in range(512) if i != 5)
+
+
+class CountingNodes(NodeTable):
+    """A node table that counts the values it is asked about (its recursion included)."""
+
+    calls = 0
+
+    def node(self, value) -> int:
+        self.calls += 1
+        return super().node(value)
+
+
+def test_a_value_added_with_an_equal_copy_of_a_known_leaf_is_found_again_by_identity():
+    nodes = CountingNodes()
+    nodes.node((1.5,))
+    record = (float("1.5"), float("7.0"))    # its first leaf is not the canonical 1.5
+    first = nodes.node(record)
+    assert nodes.value(first) is not record     # the canonical record is built of canonical leaves
+    nodes.calls = 0
+    assert nodes.node(record) == first and nodes.calls == 1      # the state hands it on
+    handed_on = nodes.value(nodes.node(((record, 3.0))))
+    assert handed_on[0] is nodes.value(first)
+
+
+def test_ids_stay_exact_over_many_short_lived_values():
+    # canonical objects live as long as the table, so an id found there is never that of
+    # a later, different object that happens to reuse a freed one's address
+    nodes = NodeTable()
+    seen: dict = {}
+    for round_ in range(3):
+        for i in range(2000):
+            value = (float(i % 97), (float(i % 89), str(i % 7)))
+            assert seen.setdefault(value, nodes.node(value)) == nodes.node(value)
+    assert len(set(seen.values())) == len(seen)

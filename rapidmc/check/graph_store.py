@@ -25,7 +25,8 @@ from __future__ import annotations
 from array import array
 from typing import Callable, Hashable, Optional, Sequence
 
-from .transition_system import Label, Valuation, labelled_successors
+from .transition_system import Label, Valuation, labelled_successors, path_system, \
+    path_transitions
 from .states import StateTable
 from .store import VALUATION_TYPES, unique, valuations_bytes, wider
 
@@ -204,8 +205,15 @@ class GraphStore:
         return self.graph.memory_bytes() + own
 
     def labelled_successor_ids(self, state_id: int) -> list[tuple[Label, int]]:
-        """Every (label, successor id) in model order, ``STUTTER`` for a deadlock (slow path)."""
-        transitions = labelled_successors(self.system, self.states[state_id])
+        """Every (label, successor id) in model order, ``STUTTER`` for a deadlock (slow path);
+        on a model with a ``path_system`` its transitions into the graph's states."""
+        state = self.states[state_id]
+        if path_system(self.system) is not self.system:
+            found = path_transitions(self.system, state,
+                                     lambda target: self.states.intern(target, add=False)[0])
+            self._evaluate([target_id for _, target_id in found])
+            return found
+        transitions = labelled_successors(self.system, state)
         ids = [self.states.intern(target, add=False)[0] for _, target in transitions]
         assert min(ids) >= 0, "a successor the explored graph does not hold"
         self._evaluate(ids)

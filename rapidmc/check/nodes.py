@@ -21,6 +21,7 @@ index entries), never by walking stored values.
 from __future__ import annotations
 
 import sys
+from operator import is_
 from typing import Callable, Hashable
 
 from pyrsistent import pvector
@@ -54,40 +55,58 @@ class NodeTable:
     def node(self, value) -> int:
         """The id of ``value``'s tree (its nodes added when new)."""
         node_id = self._by_identity.get(id(value))
-        if node_id is not None and self._canonical[node_id] is value:
+        if node_id is not None:
             return node_id
+        kind = type(value)
+        if kind is not tuple and kind is not _PVECTOR and not isinstance(value, tuple):
+            # a leaf: found by its value (cheaper than remembering the object)
+            key = (kind, value)
+            node_id = self._by_key.get(key)
+            return node_id if node_id is not None else self._add(key, kind, value, None)
         alias = self._aliases.get(id(value))
         if alias is not None and alias[0] is value:
             return alias[1]
-        kind = type(value)
-        if kind is tuple or kind is _PVECTOR or isinstance(value, tuple):
+        # children handed on unchanged are canonical objects: their ids in one pass
+        # at C speed (a canonical object lives as long as the table, so its id is
+        # no other object's); the others recursively
+        children = tuple(map(self._by_identity.get, map(id, value)))
+        if None in children:
             node = self.node
-            children = tuple([node(child) for child in value])
-            key = children if kind is tuple else (kind, children)
-        else:
-            key = (kind, value)
-            children = None
+            children = tuple([known if known is not None else node(child)
+                              for known, child in zip(children, value)])
+        key = children if kind is tuple else (kind, children)
         node_id = self._by_key.get(key)
         if node_id is None:
             return self._add(key, kind, value, children)
         # an equal object met again (a program's initial value a reset writes back, a
-        # constant): known by identity from now on, while the bounded cache keeps it alive
+        # constant): known by identity from now on
+        self._alias(value, node_id)
+        return node_id
+
+    def _alias(self, value, node_id: int) -> None:
+        """Know ``value``, equal to node ``node_id``'s canonical object but not it, by
+        identity while the bounded cache keeps it alive."""
         aliases = self._aliases
         if len(aliases) >= ALIAS_LIMIT:
             aliases.clear()
         aliases[id(value)] = (value, node_id)
-        return node_id
 
     def _add(self, key: Hashable, kind: type, value, children) -> int:
         canonical = self._canonical
         if children is None:
             made = value
+        elif kind is not _PVECTOR and all(map(is_, map(canonical.__getitem__, children), value)):
+            made = value          # (a program's initial value stays the object it hands on)
         else:
             parts = [canonical[child] for child in children]
             made = pvector(parts) if kind is _PVECTOR else _new_tuple(kind, parts)
         node_id = self._by_key[key] = len(canonical)
         canonical.append(made)
         self._by_identity[id(made)] = node_id
+        if made is not value:
+            # the state that holds ``value`` hands it on to its successors: found by
+            # identity there, not walked again
+            self._alias(value, node_id)
         self._bytes += _own_bytes(made, children) + 2 * ENTRY_BYTES + 8
         if children is not None:
             self._bytes += sys.getsizeof(key)      # the key holds the children's ids

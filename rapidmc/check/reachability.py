@@ -34,7 +34,7 @@ from typing import Callable, Hashable, Optional, Protocol, Sequence
 
 from .budget import DEFAULT_MAX_STATES, SearchBudget
 from .collector import frozen_while_searching
-from .transition_system import TransitionSystem, Valuation, as_sequence
+from .transition_system import TransitionSystem, Valuation, as_sequence, transition_label
 from .progress import Progress
 from .graph_store import ExploredGraph
 from .hashed import hashed_reachable, visited_sets
@@ -313,7 +313,6 @@ class _BreadthFirst:
         steps = [LassoStep(None, self.states[ids[0]], NO_AUTOMATON)]
         for previous, current in zip(ids, ids[1:]):
             target = self.states[current]
-            label = next(label for label, state in self.system.successors(self.states[previous])
-                         if state == target)
+            label = transition_label(self.system, self.states[previous], target)
             steps.append(LassoStep(label, target, NO_AUTOMATON))
         return steps

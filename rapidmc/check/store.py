@@ -25,7 +25,8 @@ from typing import Hashable, Sequence
 
 from array import array
 
-from .transition_system import Label, TransitionSystem, Valuation, as_sequence, labelled_successors
+from .transition_system import (Label, TransitionSystem, Valuation, as_sequence,
+                                labelled_successors, path_system, path_transitions)
 from .native import state_table
 
 SUCCESSOR_CACHE_SIZE = 1 << 16
@@ -192,9 +193,17 @@ class ModelStore:
         return self.states.memory_bytes() + valuations_bytes(self.valuations)
 
     def labelled_successor_ids(self, state_id: int) -> list[tuple[Label, int]]:
-        """Every (label, successor id) in model order, ``STUTTER`` for a deadlock (slow path)."""
-        transitions: Sequence = labelled_successors(self.system, self.states[state_id])
+        """Every (label, successor id) in model order, ``STUTTER`` for a deadlock (slow path);
+        on a model with a ``path_system`` its transitions into stored states."""
+        state = self.states[state_id]
+        if path_system(self.system) is not self.system:
+            return path_transitions(self.system, state, self.stored_id)
+        transitions: Sequence = labelled_successors(self.system, state)
         return [(label, self.intern(target)) for label, target in transitions]
+
+    def stored_id(self, state: Hashable) -> int:
+        """The id of ``state``, -1 when it is not stored (nothing is added)."""
+        return self.states.intern(state, add=False)[0]
 
 
 def valuations_bytes(valuations) -> int:

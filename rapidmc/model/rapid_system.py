@@ -121,6 +121,13 @@ class RapidSystem:
             self._full._keys = StateKeys()
         return self._full
 
+    def path_system(self) -> "RapidSystem":
+        """Where the checker rebuilds paths through stored states (``check.transition_system``):
+        the full interleaving.  Ample sets depend on the states expanded before (their
+        proviso), so asking this system again after the search may give another task's
+        steps than the search took from that state."""
+        return self.full_interleaving()
+
     def initial_states(self) -> list[State]:
         states = initial_states(self.program, lambda script: ScriptChooser(script, self.config))
         project = self.project
@@ -551,3 +558,4 @@ def _check_step(system: RapidSystem, before: State, label, after: State) -> None
         if candidate == after and (label is None or candidate_label == label):
             return
     raise AssertionError(f"counterexample step does not replay (label {label!r})")
+

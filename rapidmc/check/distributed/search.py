@@ -29,7 +29,7 @@ from typing import Callable, Optional
 from ...diagnostics import EXIT_WORKER_LOST, WORKER_LOST, error
 from ..budget import SearchBudget
 from ..result import HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep, SearchResult, SearchStats
-from ..transition_system import TransitionSystem
+from ..transition_system import TransitionSystem, transition_label
 from .canonical import owner
 from .partition import NO_PARENT, SystemSource, encode_batch, unlink
 from .worker import SAFETY, Worker, call
@@ -187,8 +187,7 @@ class _Levels:
         states.reverse()
         steps = [LassoStep(None, states[0], NO_AUTOMATON)]
         for previous, current in zip(states, states[1:]):
-            label = next(label for label, state in self.system.successors(previous)
-                         if state == current)
+            label = transition_label(self.system, previous, current)
             steps.append(LassoStep(label, current, NO_AUTOMATON))
         return steps
 

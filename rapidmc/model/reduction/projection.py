@@ -26,7 +26,9 @@ class Projection:
         initial_global = [data.initial for data in program.globals]
         sliced = set(slicing.globals)
         self.global_resets = _resets(sliced, initial_global)
-        self._equal_initial: dict = {}     # slot -> the value last found equal to its reset
+        # slot -> the object last found equal to its initial value (a state rebuilt from
+        # the checker's table holds its own equal object; comparing 512 records is not free)
+        self._equal_initial: dict[int, object] = {}
         self.main = program.entry
         self.main_resets: list[tuple] = []
         self.final_resets: tuple = self.global_resets
@@ -73,13 +75,10 @@ class Projection:
         equal = self._equal_initial
         for slot, initial in resets:
             value = store[slot]
-            # (a value handed on since its reset is the initial object itself, or the one
-            # found equal to it last, often a stored state's copy: no deep comparison of a
-            # big array each time; values are immutable)
             if value is initial or value is equal.get(slot):
                 continue
             if value != initial:
-                store = _reset_store(store, resets)
+                store = self._reset_store(store, resets)
                 break
             equal[slot] = value
         new_frames, new_tasks = frames, tasks
@@ -93,6 +92,21 @@ class Projection:
             return state
         return state._replace(store=store, frames=new_frames, tasks=new_tasks)
 
+    def _reset_store(self, store, resets: tuple):
+        """``store`` with each slot of ``resets`` at its initial value (the initial object
+        itself: an equal one may differ in the type of a number inside)."""
+        equal = self._equal_initial
+        changes = []
+        for slot, initial in resets:
+            value = store[slot]
+            if value is initial or value is equal.get(slot):
+                continue
+            if value == initial:
+                equal[slot] = value
+            else:
+                changes += (slot, initial)
+        return store.mset(*changes) if changes else store
+
     def _stack(self, frames: tuple) -> tuple:
         changed = False
         result = []
@@ -101,8 +115,7 @@ class Projection:
             if per_pc:
                 resets = per_pc[frame[1]] if 0 <= frame[1] < len(per_pc) else ()
                 values = frame[2]
-                if any(values[slot] is not initial and values[slot] != initial
-                       for slot, initial in resets):
+                if any(values[slot] != initial for slot, initial in resets):
                     values = list(values)
                     for slot, initial in resets:
                         values[slot] = initial
@@ -116,7 +129,3 @@ def _resets(slots: set, initial) -> tuple:
     return tuple((slot, initial[slot]) for slot in sorted(slots))
 
 
-def _reset_store(store, resets: tuple):
-    changes = [x for slot, initial in resets
-               if store[slot] is not initial and store[slot] != initial for x in (slot, initial)]
-    return store.mset(*changes) if changes else store
