@@ -25,6 +25,7 @@ from ..diagnostics import (EXIT_OK, FILE_NOT_FOUND, NO_PROGRAM, PROGRAM_FILE, TA
                            Diagnostic, SourceCache, UserError, error)
 from .config_file import instances
 from .encrypted import interface_module, is_encrypted, only_encrypted_note, skipped_note
+from .other_writers import other_writers
 from .task_config import BackupTask, config_file, read_tasks
 from ..semantics.library.configuration import Configuration
 from .configuration import read_configuration
@@ -198,6 +199,8 @@ class ProgramFiles:
     configuration: Optional[Configuration] = None   # the backup's SYSPAR files
     # task name (None: the main task) -> its encrypted module files (load.encrypted)
     encrypted: Optional[dict] = None
+    # upper-case PERS name -> a party not loaded that may write it (load.other_writers)
+    outside_writers: Optional[dict] = None
 
 
 def resolve_program_files(args) -> ProgramFiles:
@@ -209,6 +212,7 @@ def resolve_program_files(args) -> ProgramFiles:
     eio_paths = [eio] if eio else []
     main_task, main_entry, notes, alone = None, "main", [], None
     encrypted: dict = {}
+    writers: dict = {}
     configuration = None
     for name in args.files:
         path = Path(name)
@@ -233,6 +237,8 @@ def resolve_program_files(args) -> ProgramFiles:
             if sealed:
                 encrypted[None if becomes_main and number == 0 else t.name] = sealed
                 notes.extend(skipped_note(f, t.name) for f in sealed)
+        for key, who in other_writers(path, [t.name for t in chosen]).items():
+            writers.setdefault(key, who)
         if becomes_main:
             main_task, main_entry = chosen[0].name, chosen[0].entry
             paths.extend(task_modules(path, chosen[0]))
@@ -251,7 +257,7 @@ def resolve_program_files(args) -> ProgramFiles:
                       "main"))
     signals = [signal for eio_path in eio_paths for signal in read_eio(eio_path)]
     return ProgramFiles(paths, tasks, signals, main_task, main_entry, tuple(notes), alone,
-                        configuration, encrypted)
+                        configuration, encrypted, writers)
 
 
 def _runnable_tasks(path: Path, tasks: list[BackupTask]) -> tuple[list[BackupTask], list]:
@@ -314,7 +320,8 @@ def link_options(files: ProgramFiles) -> dict:
     every task of a backup is loaded (a task list naming another task is then an error)."""
     return {"configured_signals": files.signals, "main_task_name": files.main_task,
             "all_tasks_loaded": files.main_task is not None and files.alone is None,
-            "configuration": files.configuration}
+            "configuration": files.configuration,
+            "outside_writers": files.outside_writers or {}}
 
 
 def load_tasks(files: ProgramFiles) -> list:

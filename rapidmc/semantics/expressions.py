@@ -192,6 +192,12 @@ class ExpressionCompiler:
         name = symbol.name + "".join("." + part.lower() for part in reversed(path)) + \
             ("{*}" if indexed else "")
         stored = compiled.fn
+        if outside.also_written_by is not None:
+            # the loaded code writes it too: the value it stored, or one the other writer wrote
+            def either(m):
+                value = stored(m)
+                return m.choose(name, domain if value in domain else (value,) + domain)
+            return Compiled(either, compiled.type)
 
         def chosen(m):
             stored(m)                    # the stored read's own errors (an index out of range)
