@@ -222,6 +222,9 @@ def resolve_program_files(args) -> ProgramFiles:
         loaded = backup_tasks(path)
         if task is not None:
             chosen = [_choose_task(path, loaded, task)]
+            if getattr(args, "entry", "main") == "main" and len(loaded) > 1 and \
+                    not getattr(args, "all_tasks", False) and not _holds_program(chosen[0]):
+                raise _task_without_program(path, chosen[0])
             if getattr(args, "all_tasks", False):
                 chosen += [t for t in loaded if t is not chosen[0]]
             elif len(loaded) > 1:
@@ -295,6 +298,16 @@ def _no_program(path: Path, tasks: list[BackupTask]) -> UserError:
         f"entry routine ({', '.join(f'{t.name}: {t.entry}' for t in tasks)}); nothing runs, "
         "so there is nothing to check", _task_span(path, tasks[0]), severity="note")],
         EXIT_OK)
+
+
+def _task_without_program(path: Path, task: BackupTask) -> UserError:
+    """RMC736, exit 0: the task ``--task`` chose holds system modules only (a shared task,
+    a command task): started alone, it runs nothing, as a backup of such tasks does."""
+    return UserError([Diagnostic(
+        NO_PROGRAM, f"task {task.name} of backup '{path}' holds no program: it has no program "
+        f"module and no module declares its entry routine {task.entry}; nothing runs, so there "
+        "is nothing to check", _task_span(path, task), severity="note",
+        notes=("--entry NAME checks one of its routines",))], EXIT_OK)
 
 
 def _loaded_note(path: Path, tasks: list[BackupTask]) -> Diagnostic:
