@@ -103,7 +103,8 @@ def outside_data(linker) -> dict:
     writers = linker.options.get("outside_writers") or {}
     chosen = {data.slot: data for data in linker.globals
               if data.storage == "PERS" and data.namespace != ENVIRONMENT_NAMESPACE
-              and data.slot in read and (data.slot not in written or data.key in writers)
+              and data.slot in read
+              and (data.slot not in written or (data.key in writers and _shared(data)))
               and data.span is not None and data.key not in observed
               and not _is_stub(data.span)}
     if not chosen:
@@ -118,6 +119,11 @@ def outside_data(linker) -> dict:
             found[slot] = OutsideData(slot, data.name, data.span, domains,
                                       writers.get(data.key) if slot in written else None)
     return found
+
+
+def _shared(data) -> bool:
+    """Whether other tasks see the data object: neither TASK PERS nor LOCAL to its module."""
+    return not data.task_local and not data.local
 
 
 def _is_stub(span) -> bool:
