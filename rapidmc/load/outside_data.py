@@ -20,6 +20,10 @@ element type (arrays), for the value types only:
   program can tell its values apart, and inventing values for an index or a
   divisor would report errors the data never causes.
 
+PERS data the loaded code writes too, when a party left out may also write it
+(``other_writers``: a task not loaded, a task's encrypted modules), is chosen
+as well: each read takes the stored value or any value of the same domain.
+
 A read of a whole record or array (an argument, an assignment from it) reads
 the stored value, and so do the properties' atoms: data an atom may name keeps
 its initial value (the assumption says so).  ``check --fixed-outside-data`` keeps every such data object
