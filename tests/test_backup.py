@@ -123,6 +123,8 @@ def test_a_backup_without_a_program_is_a_note_and_exit_0(tmp_path, capsys):
     assert main(["check", str(backup)]) == 0
     err = capsys.readouterr().err
     assert "holds no program" in err and "[RMC736]" in err
+    assert main(["check", str(backup), "--task", "TASK1"]) == 0       # the same, task by task
+    assert "[RMC736]" in capsys.readouterr().err
     (backup / "RAPID" / "TASK1" / "PROGMOD").mkdir()
     (backup / "RAPID" / "TASK1" / "PROGMOD" / "Lib.mod").write_text(
         "MODULE Lib\n  PROC helper()\n  ENDPROC\nENDMODULE\n")

@@ -222,7 +222,7 @@ def resolve_program_files(args) -> ProgramFiles:
         loaded = backup_tasks(path)
         if task is not None:
             chosen = [_choose_task(path, loaded, task)]
-            if getattr(args, "entry", "main") == "main" and len(loaded) > 1 and \
+            if getattr(args, "entry", "main") == "main" and \
                     not getattr(args, "all_tasks", False) and not _holds_program(chosen[0]):
                 raise _task_without_program(path, chosen[0])
             if getattr(args, "all_tasks", False):
