@@ -123,7 +123,8 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
     """
     files_given = list(files)
     files = resolve_program_files(SimpleNamespace(files=list(files), task=task, eio=eio,
-                                                  all_tasks=all_tasks, add_task=list(add_tasks)))
+                                                  all_tasks=all_tasks, add_task=list(add_tasks),
+                                                  entry=entry))
     environment = _parse_files(list(env)) if env else None
     parsed = with_encrypted_interface(_parse_files(files.modules), files, None)
     options = link_options(files)

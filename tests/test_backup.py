@@ -123,8 +123,34 @@ def test_a_backup_without_a_program_is_a_note_and_exit_0(tmp_path, capsys):
     assert main(["check", str(backup)]) == 0
     err = capsys.readouterr().err
     assert "holds no program" in err and "[RMC736]" in err
+    assert main(["check", str(backup), "--task", "TASK1"]) == 0       # the same, task by task
+    assert "[RMC736]" in capsys.readouterr().err
     (backup / "RAPID" / "TASK1" / "PROGMOD").mkdir()
     (backup / "RAPID" / "TASK1" / "PROGMOD" / "Lib.mod").write_text(
         "MODULE Lib\n  PROC helper()\n  ENDPROC\nENDMODULE\n")
     assert main(["check", str(backup)]) == 2          # a program module without main: an error
     assert "[RMC736]" not in capsys.readouterr().err
+
+
+def test_a_task_of_system_modules_only_is_a_note_and_exit_0(tmp_path, capsys):
+    """Issue 28: ``--task`` naming a task of system modules only (a shared or command task)
+    says it holds no program (RMC736, exit 0), as a backup of such tasks does; with
+    ``--entry`` one of its routines is checked, and a task with a program module but no
+    entry routine stays an error."""
+    backup = tmp_path / "cell"
+    (backup / "RAPID" / "TASK1" / "PROGMOD").mkdir(parents=True)
+    (backup / "RAPID" / "TASK1" / "PROGMOD" / "Main.mod").write_text(
+        "MODULE Main\n  PROC main()\n    TPWrite \"run\";\n  ENDPROC\nENDMODULE\n")
+    (backup / "RAPID" / "TASK2" / "SYSMOD").mkdir(parents=True)
+    (backup / "RAPID" / "TASK2" / "SYSMOD" / "cmd.sys").write_text(
+        "MODULE cmd(SYSMODULE)\n  PROC service()\n    TPWrite \"service\";\n  ENDPROC\nENDMODULE\n")
+    assert main(["check", str(backup), "--task", "TASK2"]) == 0
+    err = capsys.readouterr().err
+    assert "task TASK2 of backup" in err and "holds no program" in err and "[RMC736]" in err
+    assert main(["check", str(backup), "--task", "TASK2", "--entry", "service"]) == 0
+    assert "[RMC736]" not in capsys.readouterr().err
+    (backup / "RAPID" / "TASK2" / "PROGMOD").mkdir()
+    (backup / "RAPID" / "TASK2" / "PROGMOD" / "Lib.mod").write_text(
+        "MODULE Lib\n  PROC helper()\n  ENDPROC\nENDMODULE\n")
+    assert main(["check", str(backup), "--task", "TASK2"]) == 2
+    assert "[RMC211]" in capsys.readouterr().err

@@ -126,7 +126,7 @@ TASKS_LOADED = _code("RMC730", "tasks-loaded", "which tasks of a controller back
 PERS_UNWRITTEN = _code("RMC731", "pers-unwritten", "a task checked alone reads PERS data it never writes: another task or a PC may write it")
 ORDER_REDUCTION = _code("RMC732", "order-reduction", "partial-order reduction is off for a property with X (next)")
 ENCRYPTED_SKIPPED = _code("RMC735", "encrypted-skipped", "a backup's encrypted module (or task of encrypted modules only) is checked as the interface its uses show")
-NO_PROGRAM = _code("RMC736", "no-program", "a controller backup holds no program (system modules only): nothing to check, exit 0")
+NO_PROGRAM = _code("RMC736", "no-program", "a controller backup, or the task --task names, holds no program (system modules only): nothing to check, exit 0")
 
 # --- the search engine (750-759) ---------------------------------------------------------
 NATIVE_ENGINE = _code("RMC750", "native-engine",

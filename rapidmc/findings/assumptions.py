@@ -177,12 +177,19 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
         read |= task_read
         written |= task_written
     for data in program.globals:
+        chosen = outside.get(data.slot)
+        if chosen is not None and chosen.also_written_by is not None:
+            yield Assumption(OTHER_WRITER, data.name,
+                             f"PERS {data.name} is written by the loaded code and by "
+                             f"{chosen.also_written_by}; its reads in WaitUntil conditions "
+                             f"take the stored value or {chosen.describe()}, other reads the "
+                             f"stored value ({_where(data.span)})")
+            continue
         if data.storage != "PERS" or _file(data.span) is None or \
                 (_file(data.span) in stub_files and data.slot not in outside) or \
                 data.namespace == ENVIRONMENT_NAMESPACE or data.slot not in read or \
                 data.slot in written:
             continue
-        chosen = outside.get(data.slot)
         if chosen is not None:
             yield Assumption(OTHER_WRITER, data.name,
                              f"PERS {data.name} is written outside the loaded code; its reads "

@@ -25,6 +25,7 @@ from ..diagnostics import (EXIT_OK, FILE_NOT_FOUND, NO_PROGRAM, PROGRAM_FILE, TA
                            Diagnostic, SourceCache, UserError, error)
 from .config_file import instances
 from .encrypted import interface_module, is_encrypted, only_encrypted_note, skipped_note
+from .other_writers import other_writers
 from .task_config import BackupTask, config_file, read_tasks
 from ..semantics.library.configuration import Configuration
 from .configuration import read_configuration
@@ -199,6 +200,8 @@ class ProgramFiles:
     # task name (None: the main task) -> its encrypted module files (load.encrypted)
     encrypted: Optional[dict] = None
     motion_tasks: tuple = ()            # the backup's tasks SYS.cfg marks -MotionTask
+    # upper-case PERS name -> a party not loaded that may write it (load.other_writers)
+    outside_writers: Optional[dict] = None
 
 
 def resolve_program_files(args) -> ProgramFiles:
@@ -210,6 +213,7 @@ def resolve_program_files(args) -> ProgramFiles:
     eio_paths = [eio] if eio else []
     main_task, main_entry, notes, alone = None, "main", [], None
     encrypted: dict = {}
+    writers: dict = {}
     configuration = None
     motion_tasks: list[str] = []
     for name in args.files:
@@ -220,6 +224,9 @@ def resolve_program_files(args) -> ProgramFiles:
         loaded = backup_tasks(path)
         if task is not None:
             chosen = [_choose_task(path, loaded, task)]
+            if getattr(args, "entry", "main") == "main" and \
+                    not getattr(args, "all_tasks", False) and not _holds_program(chosen[0]):
+                raise _task_without_program(path, chosen[0])
             if getattr(args, "all_tasks", False):
                 chosen += [t for t in loaded if t is not chosen[0]]
             elif len(loaded) > 1:
@@ -235,6 +242,8 @@ def resolve_program_files(args) -> ProgramFiles:
             if sealed:
                 encrypted[None if becomes_main and number == 0 else t.name] = sealed
                 notes.extend(skipped_note(f, t.name) for f in sealed)
+        for key, who in other_writers(path, [t.name for t in chosen]).items():
+            writers.setdefault(key, who)
         if becomes_main:
             main_task, main_entry = chosen[0].name, chosen[0].entry
             paths.extend(task_modules(path, chosen[0]))
@@ -254,7 +263,7 @@ def resolve_program_files(args) -> ProgramFiles:
                       "main"))
     signals = [signal for eio_path in eio_paths for signal in read_eio(eio_path)]
     return ProgramFiles(paths, tasks, signals, main_task, main_entry, tuple(notes), alone,
-                        configuration, encrypted, tuple(motion_tasks))
+                        configuration, encrypted, tuple(motion_tasks), writers)
 
 
 def _runnable_tasks(path: Path, tasks: list[BackupTask]) -> tuple[list[BackupTask], list]:
@@ -294,6 +303,16 @@ def _no_program(path: Path, tasks: list[BackupTask]) -> UserError:
         EXIT_OK)
 
 
+def _task_without_program(path: Path, task: BackupTask) -> UserError:
+    """RMC736, exit 0: the task ``--task`` chose holds system modules only (a shared task,
+    a command task): started alone, it runs nothing, as a backup of such tasks does."""
+    return UserError([Diagnostic(
+        NO_PROGRAM, f"task {task.name} of backup '{path}' holds no program: it has no program "
+        f"module and no module declares its entry routine {task.entry}; nothing runs, so there "
+        "is nothing to check", _task_span(path, task), severity="note",
+        notes=("--entry NAME checks one of its routines",))], EXIT_OK)
+
+
 def _loaded_note(path: Path, tasks: list[BackupTask]) -> Diagnostic:
     return Diagnostic(TASKS_LOADED, f"checking the {len(tasks)} tasks of the backup together: "
                       f"{', '.join(t.describe() for t in tasks)} (--task NAME checks one)",
@@ -317,7 +336,8 @@ def link_options(files: ProgramFiles) -> dict:
     every task of a backup is loaded (a task list naming another task is then an error)."""
     return {"configured_signals": files.signals, "main_task_name": files.main_task,
             "all_tasks_loaded": files.main_task is not None and files.alone is None,
-            "configuration": files.configuration, "motion_tasks": files.motion_tasks}
+            "configuration": files.configuration, "motion_tasks": files.motion_tasks,
+            "outside_writers": files.outside_writers or {}}
 
 
 def load_tasks(files: ProgramFiles) -> list:

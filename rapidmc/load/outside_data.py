@@ -20,6 +20,13 @@ element type (arrays), for the value types only:
   program can tell its values apart, and inventing values for an index or a
   divisor would report errors the data never causes.
 
+PERS data the loaded code writes too, when a party left out may also write it
+(``other_writers``: a task not loaded, a task's encrypted modules), is chosen
+as well, where a wait reads it: a WaitUntil condition takes the stored value or
+any value of the same domain, so the wait may end; every other read takes the
+stored value (the loaded code's own protocol), so no branch runs on values the
+other writer's protocol may never produce together with the rest of the data.
+
 A read of a whole record or array (an argument, an assignment from it) reads
 the stored value, and so do the properties' atoms: data an atom may name keeps
 its initial value (the assumption says so).  ``check --fixed-outside-data`` keeps every such data object
@@ -43,6 +50,7 @@ from .shared_data import data_uses, writes_data_by_name
 
 VALUE_KEYS = frozenset({"BOOL", "NUM", "DNUM", "STRING"})
 ORDERINGS = frozenset({"<", "<=", ">", ">="})
+MANY_COMPONENTS = 6           # a record with more is described by its varying components
 
 
 @dataclass(frozen=True)
@@ -56,18 +64,31 @@ class OutsideData:
     name: str
     span: object
     domains: dict
+    # who else writes it when loaded code writes it too (load.other_writers), else None:
+    # then a read takes the stored value or any value of the domain
+    also_written_by: Optional[str] = None
 
     def domain(self, path: tuple) -> Optional[tuple]:
         return self.domains.get(path)
 
     def describe(self) -> str:
-        """``FALSE or TRUE`` / ``rec.a: 0 or 1; rec.b: ...`` per component."""
+        """``FALSE or TRUE`` / ``rec.a: 0 or 1; rec.b: ...`` per component; a record of
+        many components names only those that may take several values."""
         parts = []
-        for path, values in self.domains.items():
+        shown_paths = self.domains
+        if len(self.domains) > MANY_COMPONENTS:
+            shown_paths = {path: values for path, values in self.domains.items()
+                           if len(values) > 1}
+        for path, values in shown_paths.items():
             shown = " or ".join(format_value(v) for v in values) if len(values) <= 8 else \
                 f"{len(values)} values from {format_value(values[0])} to {format_value(values[-1])}"
             parts.append(f"{self.name}{''.join('.' + p.lower() for p in path)}: {shown}"
                          if path else shown)
+        left = len(self.domains) - len(shown_paths)
+        if left and not parts:
+            return "its initial value"
+        if left:
+            parts.append(f"{left} other components: their initial values")
         return "; ".join(parts)
 
 
@@ -86,10 +107,13 @@ def outside_data(linker) -> dict:
         read |= task_read
         written |= task_written
     observed = linker.options.get("observed_names", frozenset())
+    writers = linker.options.get("outside_writers") or {}
     chosen = {data.slot: data for data in linker.globals
               if data.storage == "PERS" and data.namespace != ENVIRONMENT_NAMESPACE
-              and data.slot in read and data.slot not in written and data.span is not None
-              and data.key not in observed and not _is_stub(data.span)}
+              and data.slot in read
+              and (data.slot not in written or (data.key in writers and _shared(data)))
+              and data.span is not None and data.key not in observed
+              and not _is_stub(data.span)}
     if not chosen:
         return {}
     compared = _compared_constants(routines, chosen)
@@ -99,8 +123,14 @@ def outside_data(linker) -> dict:
         for path, leaf_type, initial in _leaves(data.type, data.initial):
             domains[path] = _domain(leaf_type, initial, compared.get((slot, path)))
         if domains:
-            found[slot] = OutsideData(slot, data.name, data.span, domains)
+            found[slot] = OutsideData(slot, data.name, data.span, domains,
+                                      writers.get(data.key) if slot in written else None)
     return found
+
+
+def _shared(data) -> bool:
+    """Whether other tasks see the data object: neither TASK PERS nor LOCAL to its module."""
+    return not data.task_local and not data.local
 
 
 def _is_stub(span) -> bool:

@@ -150,6 +150,7 @@ class ExpressionCompiler:
         self.constant_only = constant_only  # CONST/VAR initialisers: no variables, no calls
         self.routine = routine
         self.io_reader = None               # callable noting that the code reads signals
+        self.in_wait = False                # compiling a WaitUntil condition (_outside_read)
 
     def note_io_read(self) -> None:
         if self.io_reader is not None:
@@ -192,6 +193,14 @@ class ExpressionCompiler:
         name = symbol.name + "".join("." + part.lower() for part in reversed(path)) + \
             ("{*}" if indexed else "")
         stored = compiled.fn
+        if outside.also_written_by is not None:
+            if not self.in_wait:
+                return compiled          # elsewhere the value the loaded code stored
+            # a wait: the value the loaded code stored, or one the other writer wrote
+            def either(m):
+                value = stored(m)
+                return m.choose(name, domain if value in domain else (value,) + domain)
+            return Compiled(either, compiled.type)
 
         def chosen(m):
             stored(m)                    # the stored read's own errors (an index out of range)

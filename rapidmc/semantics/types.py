@@ -181,9 +181,10 @@ OPTION_RECORDS = (
     _record("wzstationary", ("wz", NUM)),
     # Production Manager's service-menu entries: a value record of eleven components, as
     # controller backups declare it (`TASK PERS menudata md := ["Move to Home", "",
-    # "MovetoHome", 1, "", 255, TRUE, 1, 0, FALSE, 210];`). No text found gives the
-    # components' names, so they are c1 .. c11, with the types the backups' values show.
-    _record("menudata", ("c1", STRING), ("c2", STRING), ("c3", STRING), ("c4", NUM),
+    # "MovetoHome", 1, "", 255, TRUE, 1, 0, FALSE, 210];`). The first is the entry's text:
+    # public code sets `md.description := TextGet(...)`. No text found names the others, so
+    # they are c2 .. c11, with the types the backups' values show.
+    _record("menudata", ("description", STRING), ("c2", STRING), ("c3", STRING), ("c4", NUM),
             ("c5", STRING), ("c6", NUM), ("c7", BOOL), ("c8", NUM), ("c9", NUM), ("c10", BOOL),
             ("c11", NUM)),
     ARCDATA,

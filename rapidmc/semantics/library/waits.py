@@ -76,7 +76,11 @@ def _wait_signal(calls, compiler, call, entry):
 def _wait_until(calls, compiler, call, entry):
     def factory(arguments):
         return arguments.value("Cond")
-    return _wait(calls, compiler, call, entry, factory, "WaitUntil condition")
+    compiler.in_wait = True          # PERS another party writes too: the wait may end (issue 28)
+    try:
+        return _wait(calls, compiler, call, entry, factory, "WaitUntil condition")
+    finally:
+        compiler.in_wait = False
 
 
 compiled("WaitRob(\\switch InPos | switch ZeroSpeed)",

@@ -3,7 +3,7 @@ MODULE controllers_load
   ! bool (PersFlag) instead of a signal, UIMsgBox \Result into a PERS, tool0/wobj0/load0 given
   ! to PERS parameters of the program's own routines, pos / num, an aggregate added to a pos, ReadStr \Delim
   ! \DiscardHeaders, StrFormat {n} \Argn, GetSysInfo \SWVersionName, menudata as a value
-  ! record, EGMSetupUC \PathCorr \APTR and EGMRunPose \Offset (a pose), a world zone
+  ! record (its text `.description`), EGMSetupUC \PathCorr \APTR and EGMRunPose \Offset (a pose), a world zone
   ! declared PERS with a value as in the manual's examples.
   TASK PERS menudata mdHome := ["Move to Home","","MoveToHome",1,"",255,TRUE,1,0,FALSE,210];
   PERS bool bTouched := TRUE;
@@ -34,6 +34,8 @@ MODULE controllers_load
     TPWrite StrFormat("part_{1}_of_{2}" \Arg1:=NumToStr(3,0) \Arg2:="7");
     TPWrite GetSysInfo(\SWVersionName);
     TPWrite mdHome.c3 + " " + NumToStr(mdHome.c11, 0);
+    mdHome.description := mdHome.description + " (service)";
+    TPWrite mdHome.description;
     TPWrite "zone " \Num:=wzHome.wz;
     EGMGetId egmId;
     EGMSetupUC ROB_1, egmId, "path_corr", "UCdevice" \PathCorr \APTR;

@@ -15,7 +15,7 @@ MODULE ServiceMenu
   VAR errnum errIk;
 
   PROC main()
-    UIMsgBox \Header:="Service", "Run " + mdTouchUp.c1 + "?" \Buttons:=btnOKCancel \Result:=answer;
+    UIMsgBox \Header:="Service", "Run " + mdTouchUp.description + "?" \Buttons:=btnOKCancel \Result:=answer;
     IF answer = resOK THEN
       %mdTouchUp.c3%;
     ENDIF

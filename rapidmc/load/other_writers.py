@@ -1,0 +1,115 @@
+"""PERS data that a party rapidmc does not load may write, although loaded code writes it too.
+
+``outside_data`` gives reads of a PERS that no loaded code writes any value of a
+finite domain.  A buffer that a receiver task fills and the checked task clears
+is written by both: the loaded code's own write makes it look like ordinary
+shared data, and a ``WaitUntil buffer{i}.startbit = TRUE`` would wait forever
+when the receiver is not loaded (``--task``) or is encrypted.  This module names
+such data, by the writer the check leaves out:
+
+* a task of the backup that is not loaded (a task checked alone): each shared
+  PERS it declares and its code writes (assigned, or passed to a routine that
+  may write it: a parameter by reference, a routine that is not declared);
+* a task holding encrypted modules, loaded or not: each shared PERS its readable
+  modules declare (the encrypted code may write any of them).
+
+A task made only of encrypted modules declares nothing rapidmc can read; the
+PERS it may write that no loaded code writes stay ``outside_data``'s own case.
+The reads of the named data take the stored value or any value of the domain
+(``outside_data``); the verdicts name the writer under ``assumes:``.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Iterable, Optional
+
+from .. import ast
+from ..diagnostics import UserError
+from ..semantics.library import lookup_function, lookup_procedure
+from ..semantics.library.registry import matched_parameters
+
+
+def other_writers(path: Path, loaded: Iterable[str]) -> dict:
+    """Upper-case PERS name -> who else may write it (a phrase), for the backup at
+    ``path`` whose tasks named ``loaded`` are loaded."""
+    from .backup import backup_tasks, task_encrypted, task_modules_readable, task_modules
+    from ..syntax import load_program
+    loaded = set(loaded)
+    found: dict = {}
+    for task in backup_tasks(path):
+        sealed = bool(task_encrypted(task))
+        if (task.name in loaded and not sealed) or not task_modules_readable(task):
+            continue
+        try:
+            program = load_program(task_modules(path, task))
+        except UserError:                # a task the controller would not load either
+            continue
+        shared = _shared_persistents(program)
+        if sealed:
+            who = f"the encrypted modules of task {task.name}"
+            for key in shared:
+                found.setdefault(key, who)
+        if task.name not in loaded:
+            who = f"task {task.name} (not loaded)"
+            for key in sorted(written_names(program) & shared):
+                found.setdefault(key, who)
+    return found
+
+
+def _shared_persistents(program: ast.Program) -> set:
+    """The PERS data a task shares with the others: declared in a module, not LOCAL or TASK."""
+    return {data.name.key for module in program.modules for data in module.data
+            if data.storage == ast.PERS and data.scope not in (ast.LOCAL, ast.TASK)}
+
+
+def written_names(program: ast.Program) -> set:
+    """The upper-case names a program's code may write: assignment targets and
+    arguments a routine may write (by reference, or the routine is not declared)."""
+    routines = {routine.name.key: routine for module in program.modules
+                for routine in module.routines}
+    written = set()
+    for module in program.modules:
+        for routine in module.routines:
+            for node, _ in ast.walk(routine):
+                if isinstance(node, (ast.Assignment, ast.Connect)):
+                    written.add(_root(node.target))
+                elif isinstance(node, ast.LateBindingCall):
+                    written.update(_root(arg.value) for arg in node.args)
+                elif isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
+                    written.update(_root(arg.value) for arg in node.args
+                                   if _may_write(node, arg, routines))
+    written.discard(None)
+    return written
+
+
+class _Named:
+    """A user routine's parameter as ``matched_parameters`` wants it."""
+
+    def __init__(self, parameter: ast.Parameter):
+        self.key = parameter.name.key
+        self.optional = parameter.optional
+        self.mode = parameter.mode
+
+
+def _may_write(call, argument, routines: dict) -> bool:
+    if argument.value is None:
+        return False
+    routine = routines.get(call.name.key)
+    if routine is not None:
+        parameters = [_Named(p) for p in routine.parameters]
+    else:
+        entry = lookup_procedure(call.name.key) if isinstance(call, ast.ProcedureCall) \
+            else lookup_function(call.name.key)
+        if entry is None:
+            return True                  # a routine of encrypted code or an option: unknown
+        parameters = entry.signature.parameters
+    for arg, parameter in matched_parameters(call.args, parameters):
+        if arg is argument:
+            return parameter is None or parameter.mode.upper() != ast.IN
+    return True
+
+
+def _root(expr) -> Optional[str]:
+    while expr is not None and not isinstance(expr, ast.NameRef):
+        expr = getattr(expr, "base", None)
+    return expr.name.key if expr is not None else None
