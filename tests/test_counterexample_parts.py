@@ -10,7 +10,9 @@ import pytest
 from rapidmc.check.trace import INITIAL, TRANSITION, Change, Composite, TraceStep, \
     TransitionInfo, changes_between
 from rapidmc.model.value_text import value_text
-from rapidmc.report.counterexample import Folded, fold_repeats, read_part, shorten
+from rapidmc.report.counterexample import Folded, fold_repeats
+from rapidmc.report.trace_slice import read_part
+from rapidmc.report.trace_text import shorten
 from rapidmc.semantics.types import NON_VALUE_TYPES, NUM, POS, ROBTARGET, ArrayType
 
 
@@ -104,7 +106,7 @@ def test_a_stretch_run_twice_or_with_other_lines_stays():
 
 def test_files_are_shown_relative_to_the_current_folder_or_their_common_folder(
         tmp_path, monkeypatch):
-    from rapidmc.report.counterexample import display_root, shown_location
+    from rapidmc.report.trace_text import display_root, shown_location
     (tmp_path / "here").mkdir()
     monkeypatch.chdir(tmp_path / "here")
     inside = str(tmp_path / "here" / "a" / "prog.mod")

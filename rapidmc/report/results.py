@@ -27,8 +27,9 @@ from ..diagnostics import MORE_ERRORS, Diagnostic
 from ..diagnostics.error_report import omitted_count
 from ..check.result import UNKNOWN, VIOLATED, SearchResult, SearchStats
 from ..check.trace import Trace, TraceDescriber, TraceStep, build_trace
-from .counterexample import (IDENTIFIER, TextOptions, chosen_inputs_only, counterexample_lines,
-                             read_data)
+from .counterexample import chosen_inputs_only, counterexample_lines
+from .headline import read_data
+from .trace_text import IDENTIFIER, TextOptions
 
 SCHEMA = "rapidmc-check/1"
 

@@ -1,0 +1,117 @@
+"""What every written form of a counterexample shares: the options, how a file and a long
+value are shown, and which datum a shown name is about.
+
+``counterexample`` (the steps), ``headline`` (the error and the data its line reads), SARIF
+and JSON write a trace with these.
+
+    >>> shorten("[[932.4,1557.5,2189.5],[1,0,0,0],[1,1,0,0]]", 30)
+    '[[932.4,1557.5,2189.5],...]'
+"""
+from __future__ import annotations
+
+import os
+import re
+from dataclasses import dataclass
+from typing import Optional, Sequence
+
+from ..check.trace import TransitionInfo
+
+WIDTH = 100            # a value's text in a step, at most (then shortened)
+WAS_WIDTH = 60         # the previous value beside it
+SOURCE_WIDTH = 160     # a source line or FlexPendant output
+IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+INDEX = re.compile(r"\{[^}]*\}")
+
+
+@dataclass(frozen=True)
+class TextOptions:
+    """How a counterexample is written: ``full`` (nothing left out), the property's ``names``
+    (upper case: the initial state shows them) and the ``stub_data`` (a stub module's data)."""
+
+    full: bool = False
+    names: frozenset = frozenset()
+    stub_data: frozenset = frozenset()
+    root: str = ""        # files are shown relative to this folder (empty: as given)
+    handler_starts: frozenset = frozenset()   # (file, line) of each ERROR handler's start
+
+
+# --- files ---------------------------------------------------------------------------
+
+
+def display_root(files: Sequence[str]) -> tuple[str, bool]:
+    """The folder files are shown relative to, and whether it must be named: the current
+    folder when it holds them all (not named), else the deepest folder that holds them all
+    (named once), else none (files as given)."""
+    absolute = [os.path.abspath(file) for file in files]
+    if not absolute:
+        return "", False
+    here = os.getcwd()
+    if all(os.path.commonpath([here, file]) == here for file in absolute):
+        return here, False
+    try:
+        common = os.path.commonpath([os.path.dirname(file) for file in absolute])
+    except ValueError:                         # different drives
+        return "", False
+    if common == os.path.dirname(common):      # only the file system's root: no gain
+        return "", False
+    return common, True
+
+
+def shown_location(transition: TransitionInfo, root: str) -> str:
+    """``file:line`` with the file relative to ``root`` (as given when ``root`` is empty)."""
+    location = transition.location
+    if not root or not transition.file:
+        return location
+    relative = os.path.relpath(os.path.abspath(transition.file), root)
+    return relative + location[len(transition.file):]
+
+
+# --- names ---------------------------------------------------------------------------
+
+
+def data_names(name: str) -> tuple[str, ...]:
+    """The identifiers a shown name may be about, upper case.
+
+    ``main.reg1{2}`` is routine data (``REG1``) and ``pose.trans`` a record's
+    component (``POSE``): a shown name does not say which, so both are given.
+    """
+    if name.startswith("signal "):
+        name = name[len("signal "):]
+    return tuple(part.upper() for part in INDEX.sub("", name).split(".")[:2])
+
+
+def datum_of(name: str, words: Sequence[str]) -> str:
+    """Which datum a shown name is about, given the ``words`` of a line: ``waypoints{2}.trans``
+    is about WAYPOINTS when the line names it, ``main.i`` about I (MAIN is no datum there)."""
+    parts = data_names(name)
+    return parts[0] if parts[0] in words or len(parts) == 1 else parts[1]
+
+
+# --- shortening --------------------------------------------------------------------
+
+
+def shorten(text: str, width: Optional[int]) -> str:
+    """``text`` cut to at most ``width`` characters at an element boundary, ending in ``...``.
+
+    An aggregate keeps its first elements and its closing brackets
+    (``[[932.4,1557.5,2189.5],...]``); a string keeps its closing quote.
+    """
+    if width is None or len(text) <= width:
+        return text
+    depth, quoted, cut, cut_depth = 0, False, -1, 0
+    for position, char in enumerate(text[:width]):
+        if char == '"':
+            quoted = not quoted
+        elif quoted:
+            continue
+        elif char == "[":
+            depth += 1
+        elif char == "]":
+            depth -= 1
+        elif char == "," and position + 4 + depth <= width:    # room for "..." and "]"s
+            cut, cut_depth = position, depth
+    if cut > 0:
+        return text[:cut + 1] + "..." + "]" * cut_depth
+    if quoted or text.startswith('"'):
+        return text[:width - 4] + '..."'
+    return text[:width - 3] + "..."
