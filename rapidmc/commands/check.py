@@ -281,10 +281,11 @@ def _new_findings(args: argparse.Namespace, report: api.CheckReport, known):
 def warnings_text(warnings) -> str:
     """The warnings as the counterexamples name files: relative to the current folder when
     it holds them all, else to the folder that does, named once."""
+    from ..report.line_width import wrapped
     from ..report.trace_text import display_root
     root, named = display_root([w.span.file for w in warnings if w.span and w.span.file])
     text = render_all(warnings, root)
-    return f"(files relative to {root})\n{text}" if named else text
+    return wrapped(f"(files relative to {root})\n{text}" if named else text)
 
 
 def _entry_findings(args: argparse.Namespace, tables, warnings) -> list:

@@ -228,16 +228,40 @@ def render(diagnostic: Diagnostic, root: str = "") -> str:
         out = [f"{file}:{span.line}:{span.column}: {head}"]
         source = SourceCache.line(span.file, span.line)
         if source is not None:
-            shown = source.expandtabs(1).rstrip()
-            out.append("    " + shown)
             width = 1
             if span.end_line == span.line and span.end_column > span.column:
                 width = span.end_column - span.column
-            out.append("    " + " " * max(span.column - 1, 0) + "^" + "~" * (width - 1))
+            shown, column = source_window(source.expandtabs(1).rstrip(), span.column - 1)
+            width = max(1, min(width, len(shown) - column))
+            out.append("    " + shown)
+            out.append("    " + " " * column + "^" + "~" * (width - 1))
     out.extend(f"  note: {note}" for note in diagnostic.notes)
     if diagnostic.places:
         out.append(f"  note: {places_text(diagnostic.places)}")
     return "\n".join(out)
+
+
+SOURCE_SHOWN = 200     # a longer source line is shown around its caret, cut with "..."
+
+
+def source_window(source: str, column: int) -> tuple[str, int]:
+    """The part of a source line a diagnostic shows and the caret's column in it: the line
+    itself when it has at most ``SOURCE_SHOWN`` characters, else ``SOURCE_SHOWN`` of them
+    from a little before the caret, with ``...`` where it is cut.
+
+    >>> source_window("x := 1;", 0)
+    ('x := 1;', 0)
+    >>> shown, at = source_window("a" * 300 + " := 1;", 300)
+    >>> len(shown), shown[at:], shown[:3]
+    (203, ' := 1;', '...')
+    """
+    column = max(column, 0)
+    if len(source) <= SOURCE_SHOWN:
+        return source, column
+    first = max(0, min(column - SOURCE_SHOWN // 4, len(source) - SOURCE_SHOWN))
+    lead = "..." if first else ""
+    tail = "..." if first + SOURCE_SHOWN < len(source) else ""
+    return lead + source[first:first + SOURCE_SHOWN] + tail, column - first + len(lead)
 
 
 def places_text(places) -> str:

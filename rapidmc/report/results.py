@@ -29,6 +29,7 @@ from ..check.result import UNKNOWN, VIOLATED, SearchResult, SearchStats
 from ..check.trace import Trace, TraceDescriber, TraceStep, build_trace
 from .counterexample import chosen_inputs_only, counterexample_lines
 from .headline import read_data
+from .line_width import wrapped
 from .trace_text import IDENTIFIER, TextOptions
 
 SCHEMA = "rapidmc-check/1"
@@ -62,6 +63,7 @@ def format_text(results: Sequence[PropertyResult], describer: TraceDescriber,
     """Every property's verdict line, with a counterexample under each violation.
 
     ``full``: every initial value, every value in full, no step folded (``--full-trace``).
+    No line is longer than ``line_width.LONGEST_LINE``: a longer one goes on in the next.
     """
     lines: list[str] = []
     for checked in results:
@@ -83,7 +85,7 @@ def format_text(results: Sequence[PropertyResult], describer: TraceDescriber,
                 lines.append(f"  {checked.result.reason}")
             lines.extend(counterexample_lines(build_trace(checked.result, describer),
                                               text_options(checked, describer, full)))
-    return "\n".join(lines) + "\n"
+    return wrapped("\n".join(lines)) + "\n"
 
 
 def described_formula(checked: PropertyResult) -> str:
