@@ -10,9 +10,11 @@ import pytest
 from rapidmc.check.trace import INITIAL, TRANSITION, Change, Composite, TraceStep, \
     TransitionInfo, changes_between
 from rapidmc.model.value_text import value_text
-from rapidmc.report.counterexample import Folded, fold_repeats
+from rapidmc.diagnostics import source_window
+from rapidmc.report.counterexample import Folded, change_text, fold_repeats
+from rapidmc.report.line_width import wrapped
 from rapidmc.report.trace_slice import read_part
-from rapidmc.report.trace_text import shorten
+from rapidmc.report.trace_text import shorten, shown_value
 from rapidmc.semantics.types import NON_VALUE_TYPES, NUM, POS, ROBTARGET, ArrayType
 
 
@@ -72,6 +74,46 @@ def test_data_without_a_literal_shows_its_type():
 ])
 def test_shorten_cuts_at_an_element_boundary(text, width, expected):
     assert shorten(text, width) == expected
+
+
+def test_a_long_array_written_whole_shows_only_its_changed_elements():
+    old = array(*[str(i) for i in range(1, 61)])
+    new = array(*[("0" if i in (3, 30) else str(i)) for i in range(1, 61)])
+    text = change_text(Change("table", old, new))
+    assert text == "table: 2 of 60 elements changed: {3} = 0 (was 3), {30} = 0 (was 30)"
+    # with most elements changed the value itself, shortened, and its length
+    mostly = array(*["9"] * 60)
+    assert change_text(Change("table", old, mostly)).startswith("table = [9,9,")
+    assert "(60 elements, all 9)  (was [1,2,3," in change_text(Change("table", old, mostly))
+    # more changed elements than are listed: a count, and --full-trace shows them all
+    many = array(*[("0" if i % 10 == 0 else str(i)) for i in range(1, 61)])
+    assert change_text(Change("table", old, many)).endswith(
+        "{40} = 0 (was 40) and 2 more (--full-trace shows them)")
+    assert change_text(Change("table", old, many), full=True) == f"table = {many}  (was {old})"
+
+
+def test_a_long_string_is_shortened_with_its_length():
+    message = '"The gripper reported a fault while the part was released at station four"'
+    assert shown_value(message, 100, 48) == \
+        '"The gripper reported a fault while the part..." (72 characters)'
+    assert shown_value('"short"', 100, 48) == '"short"'
+    assert shown_value('"say ""hi"" now"', 100, 8) == '"say..." (12 characters)'
+
+
+def test_no_line_is_longer_than_the_width_and_nothing_is_lost():
+    line = "        table = [" + ",".join(str(i) for i in range(1, 400)) + "]  (was [])"
+    pieces = wrapped(line).split("\n")
+    assert len(pieces) > 1 and max(map(len, pieces)) <= 300
+    assert "".join(piece.removeprefix("            ") for piece in pieces[1:]) == \
+        line[len(pieces[0]):]
+    assert wrapped("short line\n  another") == "short line\n  another"
+
+
+def test_a_long_source_line_is_shown_around_its_caret():
+    source = "x := " + " + ".join(f'"part {i}"' for i in range(60)) + ";"
+    shown, column = source_window(source, source.index('"part 50"'))
+    assert len(shown) <= 206 and shown.startswith("...")
+    assert shown[column:].startswith('"part 50"')
 
 
 def test_read_part_of_an_assignment_is_its_value_and_target_indexes():

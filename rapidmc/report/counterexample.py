@@ -31,8 +31,9 @@ from typing import Iterable, Optional, Sequence, Union
 from ..check.trace import INITIAL, Change, Trace, TraceStep
 from .headline import headline_lines
 from .trace_slice import needed_steps, reads_of
-from .trace_text import (IDENTIFIER, INDEX, SOURCE_WIDTH, WAS_WIDTH, WIDTH, TextOptions,
-                         data_names, display_root, shorten, shown_location)
+from .trace_text import (IDENTIFIER, INDEX, SOURCE_WIDTH, STRING_WIDTH, WAS_WIDTH, WIDTH,
+                         TextOptions, array_elements, data_names, display_root, shorten,
+                         shown_location, shown_value)
 
 LOOP_STARTS = "-- loop starts here (repeats forever) --"
 LONGEST_PERIOD = 40    # the longest stretch of steps looked for as a repeat
@@ -40,6 +41,7 @@ FEWEST_REPEATS = 3     # a stretch folds when it runs at least this many times i
 NET_SHOWN = 4          # values listed after a folded stretch (then a count)
 SLICED_SHOWN = 6       # data named in a line of steps left out (then a count)
 FOLDED_WIDTH = 40      # each of them, at most
+ELEMENTS_SHOWN = 4     # changed elements of a long array listed in a step (then a count)
 ALWAYS_SHOWN = ("program", "ERRNO")
 
 
@@ -198,16 +200,42 @@ def step_lines(step: TraceStep, options: TextOptions = TextOptions()) -> list[st
 
 
 def change_text(change: Change, full: bool = False) -> str:
-    """``x = 1  (was 0)``; values shortened unless ``full``."""
-    new_width, old_width = (None, None) if full else (WIDTH, WAS_WIDTH)
+    """``x = 1  (was 0)``; values shortened unless ``full``, a long array written whole
+    with a few elements changed shown by those elements."""
+    if full:
+        def value(text: str, _: int) -> str:
+            return text
+    else:
+        def value(text: str, width: int) -> str:
+            return shown_value(text, width, STRING_WIDTH)
     if change.new is None:
         if change.old is None:
             return f"{change.name} (no longer exists)"
-        return f"{change.name} (no longer exists; was {shorten(change.old, old_width)})"
+        return f"{change.name} (no longer exists; was {value(change.old, WAS_WIDTH)})"
     if change.old is None:
-        return f"{change.name} = {shorten(change.new, new_width)}"
-    return f"{change.name} = {shorten(change.new, new_width)}  " \
-           f"(was {shorten(change.old, old_width)})"
+        return f"{change.name} = {value(change.new, WIDTH)}"
+    elements = None if full else changed_elements(change)
+    if elements is not None:
+        return elements
+    return f"{change.name} = {value(change.new, WIDTH)}  (was {value(change.old, WAS_WIDTH)})"
+
+
+def changed_elements(change: Change) -> Optional[str]:
+    """``table: 4 of 120 elements changed: {5} = 7 (was 5), {40} = 7 (was 40), ...``: an
+    array too long to show whole, written with fewer than half of its elements changed;
+    None for any other change."""
+    old, new = array_elements(change.old or ""), array_elements(change.new or "")
+    if not old or len(change.new) <= WIDTH or [s for s, _ in old] != [s for s, _ in new]:
+        return None
+    differing = [(suffix, was, now) for (suffix, was), (_, now) in zip(old, new) if was != now]
+    if not differing or 2 * len(differing) >= len(new):
+        return None
+    listed = ", ".join(f"{suffix} = {shown_value(now, FOLDED_WIDTH, FOLDED_WIDTH)} "
+                       f"(was {shown_value(was, FOLDED_WIDTH, FOLDED_WIDTH)})"
+                       for suffix, was, now in differing[:ELEMENTS_SHOWN])
+    more = len(differing) - ELEMENTS_SHOWN
+    return (f"{change.name}: {len(differing)} of {len(new)} elements changed: {listed}"
+            + (f" and {more} more (--full-trace shows them)" if more > 0 else ""))
 
 
 def initial_lines(step: TraceStep, read: frozenset) -> list[str]:

@@ -14,8 +14,8 @@ from typing import Optional, Sequence
 from ..check.trace import INITIAL, Trace, TraceStep
 from ..load.stubs.module_text import is_stub_module
 from .trace_slice import read_part, whole_assignments
-from .trace_text import INDEX, SOURCE_WIDTH, WIDTH, TextOptions, data_names, datum_of, shorten, \
-    shown_location
+from .trace_text import (INDEX, SOURCE_WIDTH, STRING_WIDTH, WIDTH, TextOptions, data_names,
+                         datum_of, shorten, shown_location, shown_value)
 
 NOT_CALLED = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?![A-Za-z0-9_]|\s*\()")   # no function's name
 
@@ -45,8 +45,8 @@ def headline_lines(trace: Trace, options: TextOptions = TextOptions()) -> list[s
             lines.append(f"    (in {first.stack[-1].routine}, a routine of the stubs module: "
                          "its body is a stand-in for the real one)")
     for name, value, origin in read_data(steps, options.stub_data):
-        lines.append(f"    {name} = {shorten(value, None if options.full else WIDTH)}"
-                     f"  ({origin})")
+        shown = value if options.full else shown_value(value, WIDTH, STRING_WIDTH)
+        lines.append(f"    {name} = {shown}  ({origin})")
     return lines
 
 
@@ -74,14 +74,17 @@ def read_data(steps: Sequence[TraceStep], stub_data: frozenset = frozenset()) ->
     return found
 
 
+PART = r"\s*\.\s*[A-Za-z][A-Za-z0-9_]*|\{\s*\d+\s*\}"     # a component, or an element by number
+
+
 def _component_path(source: str, word: str) -> list[str]:
-    """The components the line reads of the datum ``word``: ``raw_message.head.length``
-    gives ``[".head", ".length"]`` (none when the line reads it whole or not by name)."""
-    match = re.search(r"\b" + re.escape(word) + r"((?:\s*\.\s*[A-Za-z][A-Za-z0-9_]*)+)",
-                      source, re.IGNORECASE)
+    """The parts the line reads of the datum ``word``: ``raw_message.head.length`` gives
+    ``[".head", ".length"]``, ``table{3}.x`` ``["{3}", ".x"]`` (none when the line reads it
+    whole, not by name, or by an index that is no number)."""
+    match = re.search(r"\b" + re.escape(word) + f"((?:{PART})+)", source, re.IGNORECASE)
     if match is None:
         return []
-    return ["." + part.strip() for part in match.group(1).split(".")[1:]]
+    return [re.sub(r"\s", "", part) for part in re.findall(PART, match.group(1))]
 
 
 def _part_read(candidates: list[tuple], path: list[str], word: str) -> Optional[tuple]:

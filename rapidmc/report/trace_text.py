@@ -17,6 +17,7 @@ from typing import Optional, Sequence
 from ..check.trace import TransitionInfo
 
 WIDTH = 100            # a value's text in a step, at most (then shortened)
+STRING_WIDTH = 48      # a string value's, at most (then shortened, with its length)
 WAS_WIDTH = 60         # the previous value beside it
 SOURCE_WIDTH = 160     # a source line or FlexPendant output
 IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
@@ -115,3 +116,35 @@ def shorten(text: str, width: Optional[int]) -> str:
     if quoted or text.startswith('"'):
         return text[:width - 4] + '..."'
     return text[:width - 3] + "..."
+
+
+def shown_value(text: str, width: Optional[int], string_width: Optional[int] = None) -> str:
+    """``text`` shortened to ``width`` (a string value to ``string_width``, when given),
+    saying how long the whole is: an array's element count, a string's length.
+
+    >>> shown_value('"The gripper reported a fault at station four"', 100, 24)
+    '"The gripper reporte..." (44 characters)'
+    """
+    string = len(text) >= 2 and text[0] == text[-1] == '"' and not getattr(text, "parts", ())
+    short = shorten(text, string_width if string and string_width else width)
+    if short == text:
+        return text
+    if string:
+        return f"{short} ({string_length(text)} characters)"
+    elements = array_elements(text)
+    if not elements:
+        return short
+    if len({value for _, value in elements}) == 1 and len(elements[0][1]) <= width // 4:
+        return f"{short} ({len(elements)} elements, all {elements[0][1]})"
+    return f"{short} ({len(elements)} elements)"
+
+
+def string_length(literal: str) -> int:
+    """The length of the string a RAPID string literal writes (``""`` and ``\\\\`` are one)."""
+    return len(literal[1:-1].replace('""', '"').replace("\\\\", "\\"))
+
+
+def array_elements(value: str) -> tuple[tuple[str, str], ...]:
+    """The ``({i}, value)`` parts of an array value; none for any other value."""
+    parts = getattr(value, "parts", ())
+    return parts if parts and all(suffix.startswith("{") for suffix, _ in parts) else ()
