@@ -14,7 +14,7 @@ from rapidmc.diagnostics import source_window
 from rapidmc.report.counterexample import Folded, change_text, fold_repeats
 from rapidmc.report.line_width import wrapped
 from rapidmc.report.trace_slice import read_part
-from rapidmc.report.trace_text import shorten, shown_value
+from rapidmc.report.trace_text import file_names, shorten, shown_location, shown_value
 from rapidmc.semantics.types import NON_VALUE_TYPES, NUM, POS, ROBTARGET, ArrayType
 
 
@@ -148,18 +148,34 @@ def test_a_stretch_run_twice_or_with_other_lines_stays():
 
 def test_files_are_shown_relative_to_the_current_folder_or_their_common_folder(
         tmp_path, monkeypatch):
-    from rapidmc.report.trace_text import display_root, shown_location
+    from rapidmc.report.trace_text import FileNames
     (tmp_path / "here").mkdir()
     monkeypatch.chdir(tmp_path / "here")
     inside = str(tmp_path / "here" / "a" / "prog.mod")
-    assert display_root([inside]) == (str(tmp_path / "here"), False)
-    assert shown_location(TransitionInfo(inside, 7, ""), str(tmp_path / "here")) == \
+    assert file_names([inside]) == FileNames(str(tmp_path / "here"))
+    assert shown_location(TransitionInfo(inside, 7, ""), file_names([inside])) == \
         "a/prog.mod:7"
     backup = [str(tmp_path / "b" / "RAPID" / "T_ROB1" / "PROGMOD" / "m.mod"),
               str(tmp_path / "b" / "RAPID" / "T_ROB1" / "SYSMOD" / "s.sys")]
-    root, named = display_root(backup)
-    assert named and root == str(tmp_path / "b" / "RAPID" / "T_ROB1")
-    assert shown_location(TransitionInfo(backup[1], 3, ""), root) == "SYSMOD/s.sys:3"
+    names = file_names(backup)
+    assert names.legend() == [f"(files relative to {tmp_path / 'b' / 'RAPID' / 'T_ROB1'})"]
+    assert shown_location(TransitionInfo(backup[1], 3, ""), names) == "SYSMOD/s.sys:3"
+
+
+def test_files_in_far_apart_folders_are_shown_by_their_names(tmp_path, monkeypatch):
+    # a program given by absolute path and the stubs module written in the current folder:
+    # each by its name in the steps, each folder named once
+    monkeypatch.chdir(tmp_path)
+    program = "/srv/robots/cell_3/backup_2024/RAPID/TASK1/PROGMOD/Server.mod"
+    names = file_names([program, "Missing.mod"])
+    assert shown_location(TransitionInfo(program, 31, ""), names) == "Server.mod:31"
+    assert names.shown(str(tmp_path / "Missing.mod")) == "Missing.mod"
+    assert names.legend() == ["(files in /srv/robots/cell_3/backup_2024/RAPID/TASK1/PROGMOD: "
+                              f"Server.mod; in {tmp_path}: Missing.mod)"]
+    # two files of one name: relative to their common folder, or as given
+    same = ["/srv/a/long_folder_name_one/x/prog.mod", "/srv/a/long_folder_name_two/y/prog.mod"]
+    assert file_names(same).shown(same[0]) == "long_folder_name_one/x/prog.mod"
+    assert file_names(["/a/prog.mod", "/b/prog.mod"]).shown("/b/prog.mod") == "/b/prog.mod"
 
 
 def step(index: int, source: str, *changed: str) -> TraceStep:

@@ -110,3 +110,21 @@ def test_files_given_by_absolute_path_are_shown_relative_to_the_current_folder(m
     assert str(CASES_DIR) not in text
     assert "counterexamples/many_unreached/prog.mod:" in out.getvalue()
     assert err.getvalue().startswith("counterexamples/many_unreached/prog.mod:")
+
+
+def test_a_program_given_by_absolute_path_outside_the_current_folder_reads_by_file_name(
+        monkeypatch, tmp_path):
+    # the program by its absolute path, the stubs module in the current folder (no common
+    # folder but the root): every step and the headline say prog.mod:N, and each folder is
+    # named once
+    monkeypatch.chdir(tmp_path)
+    case = CASES_DIR / "stub_reraise"
+    (tmp_path / "Missing.mod").write_text((case / "Missing.mod").read_text())
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        main(["check", str(case / "prog.mod"), "Missing.mod", "--quiet"])
+    text = out.getvalue()
+    assert text.count(str(case)) == 1
+    assert f"  (files in {case}: prog.mod; in {tmp_path}: Missing.mod)" in text
+    assert "    at step 6, prog.mod:13:  RAISE;" in text
+    assert "    step 4  Missing.mod:7  RETURN 0;" in text

@@ -279,13 +279,12 @@ def _new_findings(args: argparse.Namespace, report: api.CheckReport, known):
 
 
 def warnings_text(warnings) -> str:
-    """The warnings as the counterexamples name files: relative to the current folder when
-    it holds them all, else to the folder that does, named once."""
+    """The warnings with their files named as the counterexamples name them
+    (``trace_text.file_names``)."""
     from ..report.line_width import wrapped
-    from ..report.trace_text import display_root
-    root, named = display_root([w.span.file for w in warnings if w.span and w.span.file])
-    text = render_all(warnings, root)
-    return wrapped(f"(files relative to {root})\n{text}" if named else text)
+    from ..report.trace_text import file_names
+    names = file_names([w.span.file for w in warnings if w.span and w.span.file])
+    return wrapped("\n".join([*names.legend(), render_all(warnings, names.shown)]))
 
 
 def _entry_findings(args: argparse.Namespace, tables, warnings) -> list:

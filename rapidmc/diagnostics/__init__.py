@@ -17,10 +17,8 @@ distributed search lost a worker (no verdict).
 """
 from __future__ import annotations
 
-import os
-
 from dataclasses import dataclass, field
-from typing import Iterable, Optional
+from typing import Callable, Iterable, Optional
 
 from ..ast import Span
 
@@ -216,15 +214,15 @@ class SourceCache:
         return None if lines is None else tuple(lines)
 
 
-def render(diagnostic: Diagnostic, root: str = "") -> str:
+def render(diagnostic: Diagnostic, file_name: Optional[Callable[[str], str]] = None) -> str:
     """Render one diagnostic as text: location, message, code, source line, caret; the
-    file relative to ``root`` when one is given."""
+    file named by ``file_name`` when one is given (else as given)."""
     head = f"{diagnostic.severity}: {diagnostic.message} [{diagnostic.code.code}]"
     span = diagnostic.span
     if span is None or span.line <= 0:
         out = [f"rapidmc: {head}"]
     else:
-        file = os.path.relpath(os.path.abspath(span.file), root) if root else span.file
+        file = file_name(span.file) if file_name else span.file
         out = [f"{file}:{span.line}:{span.column}: {head}"]
         source = SourceCache.line(span.file, span.line)
         if source is not None:
@@ -278,5 +276,6 @@ def places_text(places) -> str:
     return f"{count} more place{'s' if count != 1 else ''}: {'; '.join(parts)}"
 
 
-def render_all(diagnostics: Iterable[Diagnostic], root: str = "") -> str:
-    return "\n".join(render(d, root) for d in diagnostics)
+def render_all(diagnostics: Iterable[Diagnostic],
+               file_name: Optional[Callable[[str], str]] = None) -> str:
+    return "\n".join(render(d, file_name) for d in diagnostics)

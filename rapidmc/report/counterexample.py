@@ -32,7 +32,7 @@ from ..check.trace import INITIAL, Change, Trace, TraceStep
 from .headline import headline_lines
 from .trace_slice import needed_steps, reads_of
 from .trace_text import (IDENTIFIER, INDEX, SOURCE_WIDTH, STRING_WIDTH, WAS_WIDTH, WIDTH,
-                         TextOptions, array_elements, data_names, display_root, shorten,
+                         TextOptions, array_elements, data_names, file_names, shorten,
                          shown_location, shown_value)
 
 LOOP_STARTS = "-- loop starts here (repeats forever) --"
@@ -77,11 +77,9 @@ def counterexample_lines(trace: Trace, options: TextOptions = TextOptions()) -> 
         head = f"  counterexample: {_steps(count)}"
     if not options.full:
         trace = chosen_inputs_only(trace)
-    root, announced = display_root(trace_files(trace))
-    options = replace(options, root=root)
+    options = replace(options, files=file_names(trace_files(trace)))
     lines = headline_lines(trace, options)
-    if announced:
-        lines.append(f"  (files relative to {root})")
+    lines.extend(f"  {line}" for line in options.files.legend())
     lines.append(head)
     items = _prefix_items(trace, needed_steps(trace, options.names, options.handler_starts),
                           options)
@@ -181,7 +179,7 @@ def step_lines(step: TraceStep, options: TextOptions = TextOptions()) -> list[st
         head = "initial state"
     else:
         source = shorten(transition.source, width)
-        location = shown_location(transition, options.root)
+        location = shown_location(transition, options.files)
         head = f"{location}  {source}" if location else source
     lines = [f"    step {step.index}  {head}".rstrip()]
     if transition is not None:

@@ -30,7 +30,7 @@ def headline_lines(trace: Trace, options: TextOptions = TextOptions()) -> list[s
     if last.transition is None or not last.transition.location:
         return lines
     width = None if options.full else SOURCE_WIDTH
-    lines.append(f"    at step {last.index}, {shown_location(last.transition, options.root)}:  "
+    lines.append(f"    at step {last.index}, {shown_location(last.transition, options.files)}:  "
                  f"{shorten(last.transition.source, width)}")
     if is_stub_module(last.transition.file) and last.stack:
         lines.append(f"    (in {last.stack[-1].routine}, a routine of the stubs module: "
@@ -39,7 +39,7 @@ def headline_lines(trace: Trace, options: TextOptions = TextOptions()) -> list[s
     if raising is not steps:
         first = raising[-1]
         lines.append(f"    raised at step {first.index}, "
-                     f"{shown_location(first.transition, options.root)}:  "
+                     f"{shown_location(first.transition, options.files)}:  "
                      f"{shorten(first.transition.source, width)}")
         if is_stub_module(first.transition.file) and first.stack:
             lines.append(f"    (in {first.stack[-1].routine}, a routine of the stubs module: "

@@ -22,6 +22,74 @@ WAS_WIDTH = 60         # the previous value beside it
 SOURCE_WIDTH = 160     # a source line or FlexPendant output
 IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 INDEX = re.compile(r"\{[^}]*\}")
+SHORT_PATH = 40        # a file relative to the common folder, at most, to be named so
+
+
+# --- files ---------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class FileNames:
+    """How a report names files: relative to ``root`` (named once above the steps when
+    ``announced``), or by their base names with each folder of ``folders`` (``(folder,
+    (name, ...))``) named once; as given when neither."""
+
+    root: str = ""
+    announced: bool = False
+    folders: tuple[tuple[str, tuple[str, ...]], ...] = ()
+
+    def shown(self, file: str) -> str:
+        """The name ``file`` is shown by."""
+        if self.folders:
+            return os.path.basename(file)
+        if self.root:
+            return os.path.relpath(os.path.abspath(file), self.root)
+        return file
+
+    def legend(self) -> list[str]:
+        """The lines that name the folders, once: ``(files relative to /backups/cell_3)``,
+        ``(files in /work/cell: prog.mod; in /tmp/stubs: Missing.mod)``."""
+        if self.folders:
+            return ["(files in " + "; in ".join(f"{folder}: {', '.join(names)}"
+                                                 for folder, names in self.folders) + ")"]
+        return [f"(files relative to {self.root})"] if self.announced else []
+
+
+def file_names(files: Sequence[str]) -> FileNames:
+    """How to name ``files`` briefly: relative to the current folder when it holds them all;
+    else relative to the deepest folder that holds them all, named once, when that leaves
+    each at most ``SHORT_PATH`` characters; else by base name, each folder named once, when
+    no two share one; else relative to the common folder (as given when that is only the
+    file system's root)."""
+    absolute = list(dict.fromkeys(os.path.abspath(file) for file in files))
+    if not absolute:
+        return FileNames()
+    here = os.getcwd()
+    if all(os.path.commonpath([here, file]) == here for file in absolute):
+        return FileNames(here)
+    try:
+        common = os.path.commonpath([os.path.dirname(file) for file in absolute])
+    except ValueError:                         # different drives
+        common = ""
+    deep = bool(common) and common != os.path.dirname(common)  # more than the root
+    if deep and all(len(os.path.relpath(file, common)) <= SHORT_PATH for file in absolute):
+        return FileNames(common, True)
+    names = [os.path.basename(file) for file in absolute]
+    if len(set(names)) == len(names):
+        folders: dict[str, list[str]] = {}
+        for file in absolute:
+            folders.setdefault(os.path.dirname(file), []).append(os.path.basename(file))
+        return FileNames(folders=tuple((folder, tuple(names))
+                                       for folder, names in folders.items()))
+    return FileNames(common, True) if deep else FileNames()
+
+
+def shown_location(transition: TransitionInfo, files: FileNames) -> str:
+    """``file:line`` with the file named as ``files`` says."""
+    location = transition.location
+    if not transition.file:
+        return location
+    return files.shown(transition.file) + location[len(transition.file):]
 
 
 @dataclass(frozen=True)
@@ -32,39 +100,8 @@ class TextOptions:
     full: bool = False
     names: frozenset = frozenset()
     stub_data: frozenset = frozenset()
-    root: str = ""        # files are shown relative to this folder (empty: as given)
+    files: FileNames = FileNames()        # how files are named
     handler_starts: frozenset = frozenset()   # (file, line) of each ERROR handler's start
-
-
-# --- files ---------------------------------------------------------------------------
-
-
-def display_root(files: Sequence[str]) -> tuple[str, bool]:
-    """The folder files are shown relative to, and whether it must be named: the current
-    folder when it holds them all (not named), else the deepest folder that holds them all
-    (named once), else none (files as given)."""
-    absolute = [os.path.abspath(file) for file in files]
-    if not absolute:
-        return "", False
-    here = os.getcwd()
-    if all(os.path.commonpath([here, file]) == here for file in absolute):
-        return here, False
-    try:
-        common = os.path.commonpath([os.path.dirname(file) for file in absolute])
-    except ValueError:                         # different drives
-        return "", False
-    if common == os.path.dirname(common):      # only the file system's root: no gain
-        return "", False
-    return common, True
-
-
-def shown_location(transition: TransitionInfo, root: str) -> str:
-    """``file:line`` with the file relative to ``root`` (as given when ``root`` is empty)."""
-    location = transition.location
-    if not root or not transition.file:
-        return location
-    relative = os.path.relpath(os.path.abspath(transition.file), root)
-    return relative + location[len(transition.file):]
 
 
 # --- names ---------------------------------------------------------------------------
