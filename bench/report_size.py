@@ -1,7 +1,8 @@
 """How long ``rapidmc check`` reports are: text-report size of the programs with a violation.
 
 Usage: python bench/report_size.py FOLDER [--max-states N] [--max-seconds S] [--jobs N]
-                                   [--no-stubs] [--list] [--keep DIR] [-- CHECK-OPTIONS...]
+                                   [--no-stubs] [--list] [--keep DIR] [--only LIST]
+                                   [-- CHECK-OPTIONS...]
 
 Every ``.mod``/``.modx``/``.sys`` file under FOLDER is checked as a program of its own
 (files with the same text once); one that stops at unknown names is checked again with
@@ -12,7 +13,8 @@ text is the part of it under each VIOLATED verdict (the verdict line and the ind
 after it).  For the programs whose check says VIOLATED (exit 1) it prints the count, and of
 the counterexample texts and of the whole reports the median and largest size and the
 longest line; ``--list`` prints one row per such program (``--keep DIR`` keeps the reports
-there, one file each).  Options after ``--`` go to every check (e.g. ``--full-trace``).
+there, one file each; ``--only LIST`` checks only the files LIST names, relative to FOLDER,
+one a line).  Options after ``--`` go to every check (e.g. ``--full-trace``).
 
 The figures of issue 19 were taken with ``--max-states 20000 --max-seconds 20``.
 """
@@ -100,11 +102,16 @@ def main() -> int:
     parser.add_argument("--no-stubs", action="store_true")
     parser.add_argument("--list", action="store_true")
     parser.add_argument("--keep", type=Path, default=None)
+    parser.add_argument("--only", type=Path, default=None,
+                        help="a file of paths under FOLDER, one a line: check only these")
     parser.add_argument("extra", nargs="*", help="options for every check (after --)")
     args = parser.parse_args()
     args.folder = args.folder.resolve()
     options = ["--max-states", args.max_states, "--max-seconds", args.max_seconds, *args.extra]
     files = programs(args.folder)
+    if args.only is not None:
+        wanted = {line.strip() for line in args.only.read_text().splitlines() if line.strip()}
+        files = [path for path in files if str(path.relative_to(args.folder)) in wanted]
     timeout = 10 * float(args.max_seconds) + 60
 
     def one(path: Path):

@@ -128,3 +128,24 @@ def test_a_program_given_by_absolute_path_outside_the_current_folder_reads_by_fi
     assert f"  (files in {case}: prog.mod; in {tmp_path}: Missing.mod)" in text
     assert "    at step 6, prog.mod:13:  RAISE;" in text
     assert "    step 4  Missing.mod:7  RETURN 0;" in text
+
+
+def test_unreached_code_beside_a_counterexample_is_one_line_each_then_a_count(
+        monkeypatch, tmp_path):
+    # seven branches never taken and an error: beside the counterexample five RMC701 lines
+    # without their source, then a count; --full-trace prints each with its source line
+    branches = "".join(f"        IF mode = {n} THEN\n            total := {n};\n        ENDIF\n"
+                       for n in range(2, 9))
+    (tmp_path / "prog.mod").write_text(
+        "MODULE Branches\n    VAR num mode := 1;\n    VAR num total := 0;\n"
+        f"    PROC main()\n{branches}        total := 1 / total;\n    ENDPROC\nENDMODULE\n")
+    monkeypatch.chdir(tmp_path)
+    for extra, shown in (((), 5), (("--full-trace",), 7)):
+        out, err = io.StringIO(), io.StringIO()
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            assert main(["check", "prog.mod", "--quiet", *extra]) == 1
+        lines = err.getvalue().splitlines()
+        assert sum(line.endswith("[RMC701]") for line in lines) == shown
+        assert ("                total := 2;" in lines) == bool(extra)
+        assert (lines[-1] == "rapidmc: and 2 more unreached stretches [RMC701] (--full-trace, "
+                "--format json or --html shows each)") != bool(extra)

@@ -214,9 +214,11 @@ class SourceCache:
         return None if lines is None else tuple(lines)
 
 
-def render(diagnostic: Diagnostic, file_name: Optional[Callable[[str], str]] = None) -> str:
-    """Render one diagnostic as text: location, message, code, source line, caret; the
-    file named by ``file_name`` when one is given (else as given)."""
+def render(diagnostic: Diagnostic, file_name: Optional[Callable[[str], str]] = None,
+           source: bool = True) -> str:
+    """Render one diagnostic as text: location, message, code, source line, caret (unless
+    not ``source``), notes; the file named by ``file_name`` when one is given (else as
+    given)."""
     head = f"{diagnostic.severity}: {diagnostic.message} [{diagnostic.code.code}]"
     span = diagnostic.span
     if span is None or span.line <= 0:
@@ -224,12 +226,12 @@ def render(diagnostic: Diagnostic, file_name: Optional[Callable[[str], str]] = N
     else:
         file = file_name(span.file) if file_name else span.file
         out = [f"{file}:{span.line}:{span.column}: {head}"]
-        source = SourceCache.line(span.file, span.line)
-        if source is not None:
+        line = SourceCache.line(span.file, span.line) if source else None
+        if line is not None:
             width = 1
             if span.end_line == span.line and span.end_column > span.column:
                 width = span.end_column - span.column
-            shown, column = source_window(source.expandtabs(1).rstrip(), span.column - 1)
+            shown, column = source_window(line.expandtabs(1).rstrip(), span.column - 1)
             width = max(1, min(width, len(shown) - column))
             out.append("    " + shown)
             out.append("    " + " " * column + "^" + "~" * (width - 1))
