@@ -243,3 +243,14 @@ def test_slice_keeps_a_step_that_raised_an_error_and_one_that_chose_an_input():
     assert sorted(needed_steps(trace)) == [1, 9, 11, 13]
     assert sorted(needed_steps(trace, handler_starts=frozenset({("p.mod", 9)}))) == \
         [1, 2, 3, 9, 11, 13]
+
+
+def test_a_long_assumption_is_cut_with_its_place_kept():
+    from rapidmc.report.results import short_assumption
+    text = "PERS Welds1 is written outside the loaded code; its reads take " + \
+        "; ".join(f"Welds1.c{i}: 0" for i in range(40)) + " (Teaching.mod:25)"
+    short = short_assumption(text)
+    assert len(short) < 300 and short.endswith("; ... (--format json lists it whole) "
+                                               "(Teaching.mod:25)")
+    assert short_assumption("stub GripOpen is empty (Missing.mod:12)") == \
+        "stub GripOpen is empty (Missing.mod:12)"
