@@ -1,16 +1,20 @@
 """How long ``rapidmc check`` reports are: text-report size of the programs with a violation.
 
 Usage: python bench/report_size.py FOLDER [--max-states N] [--max-seconds S] [--jobs N]
-                                   [--no-stubs] [--list] [--keep DIR] [-- CHECK-OPTIONS...]
+                                   [--no-stubs] [--list] [--keep DIR] [--only LIST]
+                                   [-- CHECK-OPTIONS...]
 
 Every ``.mod``/``.modx``/``.sys`` file under FOLDER is checked as a program of its own
 (files with the same text once); one that stops at unknown names is checked again with
-the declarations ``rapidmc stubs`` writes for it.  The text report is what a user sees:
-stdout and stderr of ``rapidmc check FILE --quiet`` together.  For the programs whose
-check says VIOLATED (exit 1) it prints the count, the median and largest report size and
-the longest line; ``--list`` prints one row per such program (``--keep DIR`` keeps the
-reports there, one file each).  Options after ``--`` go to every check (e.g.
-``--full-trace``).
+the declarations ``rapidmc stubs`` writes for it.  Each file is named by its absolute path,
+as a user who checks a file outside the current folder names it.  The text report is what a
+user sees: stdout and stderr of ``rapidmc check FILE --quiet`` together; the counterexample
+text is the part of it under each VIOLATED verdict (the verdict line and the indented lines
+after it).  For the programs whose check says VIOLATED (exit 1) it prints the count, and of
+the counterexample texts and of the whole reports the median and largest size and the
+longest line; ``--list`` prints one row per such program (``--keep DIR`` keeps the reports
+there, one file each; ``--only LIST`` checks only the files LIST names, relative to FOLDER,
+one a line).  Options after ``--`` go to every check (e.g. ``--full-trace``).
 
 The figures of issue 19 were taken with ``--max-states 20000 --max-seconds 20``.
 """
@@ -45,7 +49,7 @@ def programs(folder: Path) -> list[Path]:
 
 
 def rapidmc(*words: str, timeout: float) -> tuple[int, str]:
-    """Exit code and stdout + stderr of one rapidmc command (exit -1: it timed out)."""
+    """Exit code and stdout then stderr of one rapidmc command (exit -1: it timed out)."""
     command = [sys.executable, "-m", "rapidmc", *words]
     try:
         done = subprocess.run(command, capture_output=True, text=True, timeout=timeout,
@@ -67,7 +71,26 @@ def check(path: Path, options: list[str], stubs: bool, timeout: float) -> tuple[
             return code, report, False
         code, report = rapidmc("check", str(path), missing, "--quiet", *options,
                                timeout=timeout)
-        return code, report.replace(missing, "Missing.mod"), True
+        return code, report, True
+
+
+def counterexample_text(report: str) -> str:
+    """The lines under each VIOLATED verdict: the verdict line and the indented lines after it."""
+    kept, inside = [], False
+    for line in report.splitlines():
+        if not line[:1].isspace():
+            inside = ": VIOLATED" in line and not line.startswith("(")
+        if inside and line:
+            kept.append(line)
+    return "\n".join(kept) + "\n" if kept else ""
+
+
+def figures(texts: list[str]) -> str:
+    """``median 2,316 B, largest 6,250 B, longest line 266 characters``."""
+    sizes = [len(text.encode()) for text in texts]
+    longest = max((len(line) for text in texts for line in text.splitlines()), default=0)
+    return (f"median {statistics.median(sizes):,.0f} B, largest {max(sizes):,} B, "
+            f"longest line {longest:,} characters")
 
 
 def main() -> int:
@@ -79,10 +102,16 @@ def main() -> int:
     parser.add_argument("--no-stubs", action="store_true")
     parser.add_argument("--list", action="store_true")
     parser.add_argument("--keep", type=Path, default=None)
+    parser.add_argument("--only", type=Path, default=None,
+                        help="a file of paths under FOLDER, one a line: check only these")
     parser.add_argument("extra", nargs="*", help="options for every check (after --)")
     args = parser.parse_args()
+    args.folder = args.folder.resolve()
     options = ["--max-states", args.max_states, "--max-seconds", args.max_seconds, *args.extra]
     files = programs(args.folder)
+    if args.only is not None:
+        wanted = {line.strip() for line in args.only.read_text().splitlines() if line.strip()}
+        files = [path for path in files if str(path.relative_to(args.folder)) in wanted]
     timeout = 10 * float(args.max_seconds) + 60
 
     def one(path: Path):
@@ -93,11 +122,14 @@ def main() -> int:
     violated = [(path, report, stubbed) for path, code, report, stubbed in outcomes if code == 1]
     if args.keep is not None:
         args.keep.mkdir(parents=True, exist_ok=True)
+    if args.list and violated:
+        print("counterexample  report  longest line  program")
     for path, report, stubbed in violated:
         relative = path.relative_to(args.folder)
         if args.list:
-            longest = max(map(len, report.splitlines()), default=0)
-            print(f"{len(report.encode()):>9,} B  longest {longest:>7,}  "
+            shown = counterexample_text(report)
+            print(f"{len(shown.encode()):>7,} B  {len(report.encode()):>7,} B  longest "
+                  f"{max(map(len, report.splitlines()), default=0):>5,}  "
                   f"{'stubs ' if stubbed else ''}{relative}")
         if args.keep is not None:
             (args.keep / (str(relative).replace("/", "__") + ".txt")).write_text(report)
@@ -108,10 +140,10 @@ def main() -> int:
     if not violated:
         print("no program with a violation")
         return 0
-    sizes = [len(report.encode()) for _, report, _ in violated]
-    lines = [len(line) for _, report, _ in violated for line in report.splitlines()]
-    print(f"violations: {len(violated)} programs; text report median {statistics.median(sizes):,.0f} B, "
-          f"max {max(sizes):,} B; longest line {max(lines):,} characters")
+    reports = [report for _, report, _ in violated]
+    print(f"violations: {len(violated)} programs")
+    print(f"  counterexample text: {figures([counterexample_text(r) for r in reports])}")
+    print(f"  whole text report:   {figures(reports)}")
     return 0
 
 

@@ -10,7 +10,11 @@ import pytest
 from rapidmc.check.trace import INITIAL, TRANSITION, Change, Composite, TraceStep, \
     TransitionInfo, changes_between
 from rapidmc.model.value_text import value_text
-from rapidmc.report.counterexample import Folded, fold_repeats, read_part, shorten
+from rapidmc.diagnostics import source_window
+from rapidmc.report.counterexample import Folded, change_text, fold_repeats
+from rapidmc.report.line_width import wrapped
+from rapidmc.report.trace_slice import read_part
+from rapidmc.report.trace_text import file_names, shorten, shown_location, shown_value
 from rapidmc.semantics.types import NON_VALUE_TYPES, NUM, POS, ROBTARGET, ArrayType
 
 
@@ -72,6 +76,46 @@ def test_shorten_cuts_at_an_element_boundary(text, width, expected):
     assert shorten(text, width) == expected
 
 
+def test_a_long_array_written_whole_shows_only_its_changed_elements():
+    old = array(*[str(i) for i in range(1, 61)])
+    new = array(*[("0" if i in (3, 30) else str(i)) for i in range(1, 61)])
+    text = change_text(Change("table", old, new))
+    assert text == "table: 2 of 60 elements changed: {3} = 0 (was 3), {30} = 0 (was 30)"
+    # with most elements changed the value itself, shortened, and its length
+    mostly = array(*["9"] * 60)
+    assert change_text(Change("table", old, mostly)).startswith("table = [9,9,")
+    assert "(60 elements, all 9)  (was [1,2,3," in change_text(Change("table", old, mostly))
+    # more changed elements than are listed: a count, and --full-trace shows them all
+    many = array(*[("0" if i % 10 == 0 else str(i)) for i in range(1, 61)])
+    assert change_text(Change("table", old, many)).endswith(
+        "{40} = 0 (was 40) and 2 more (--full-trace shows them)")
+    assert change_text(Change("table", old, many), full=True) == f"table = {many}  (was {old})"
+
+
+def test_a_long_string_is_shortened_with_its_length():
+    message = '"The gripper reported a fault while the part was released at station four"'
+    assert shown_value(message, 100, 48) == \
+        '"The gripper reported a fault while the part..." (72 characters)'
+    assert shown_value('"short"', 100, 48) == '"short"'
+    assert shown_value('"say ""hi"" now"', 100, 8) == '"say..." (12 characters)'
+
+
+def test_no_line_is_longer_than_the_width_and_nothing_is_lost():
+    line = "        table = [" + ",".join(str(i) for i in range(1, 400)) + "]  (was [])"
+    pieces = wrapped(line).split("\n")
+    assert len(pieces) > 1 and max(map(len, pieces)) <= 300
+    assert "".join(piece.removeprefix("            ") for piece in pieces[1:]) == \
+        line[len(pieces[0]):]
+    assert wrapped("short line\n  another") == "short line\n  another"
+
+
+def test_a_long_source_line_is_shown_around_its_caret():
+    source = "x := " + " + ".join(f'"part {i}"' for i in range(60)) + ";"
+    shown, column = source_window(source, source.index('"part 50"'))
+    assert len(shown) <= 206 and shown.startswith("...")
+    assert shown[column:].startswith('"part 50"')
+
+
 def test_read_part_of_an_assignment_is_its_value_and_target_indexes():
     assert read_part("waypoints{count + 1}.trans.x := n / d;").split() == \
         ["count", "+", "1", "n", "/", "d;"]
@@ -104,18 +148,34 @@ def test_a_stretch_run_twice_or_with_other_lines_stays():
 
 def test_files_are_shown_relative_to_the_current_folder_or_their_common_folder(
         tmp_path, monkeypatch):
-    from rapidmc.report.counterexample import display_root, shown_location
+    from rapidmc.report.trace_text import FileNames
     (tmp_path / "here").mkdir()
     monkeypatch.chdir(tmp_path / "here")
     inside = str(tmp_path / "here" / "a" / "prog.mod")
-    assert display_root([inside]) == (str(tmp_path / "here"), False)
-    assert shown_location(TransitionInfo(inside, 7, ""), str(tmp_path / "here")) == \
+    assert file_names([inside]) == FileNames(str(tmp_path / "here"))
+    assert shown_location(TransitionInfo(inside, 7, ""), file_names([inside])) == \
         "a/prog.mod:7"
     backup = [str(tmp_path / "b" / "RAPID" / "T_ROB1" / "PROGMOD" / "m.mod"),
               str(tmp_path / "b" / "RAPID" / "T_ROB1" / "SYSMOD" / "s.sys")]
-    root, named = display_root(backup)
-    assert named and root == str(tmp_path / "b" / "RAPID" / "T_ROB1")
-    assert shown_location(TransitionInfo(backup[1], 3, ""), root) == "SYSMOD/s.sys:3"
+    names = file_names(backup)
+    assert names.legend() == [f"(files relative to {tmp_path / 'b' / 'RAPID' / 'T_ROB1'})"]
+    assert shown_location(TransitionInfo(backup[1], 3, ""), names) == "SYSMOD/s.sys:3"
+
+
+def test_files_in_far_apart_folders_are_shown_by_their_names(tmp_path, monkeypatch):
+    # a program given by absolute path and the stubs module written in the current folder:
+    # each by its name in the steps, each folder named once
+    monkeypatch.chdir(tmp_path)
+    program = "/srv/robots/cell_3/backup_2024/RAPID/TASK1/PROGMOD/Server.mod"
+    names = file_names([program, "Missing.mod"])
+    assert shown_location(TransitionInfo(program, 31, ""), names) == "Server.mod:31"
+    assert names.shown(str(tmp_path / "Missing.mod")) == "Missing.mod"
+    assert names.legend() == ["(files in /srv/robots/cell_3/backup_2024/RAPID/TASK1/PROGMOD: "
+                              f"Server.mod; in {tmp_path}: Missing.mod)"]
+    # two files of one name: relative to their common folder, or as given
+    same = ["/srv/a/long_folder_name_one/x/prog.mod", "/srv/a/long_folder_name_two/y/prog.mod"]
+    assert file_names(same).shown(same[0]) == "long_folder_name_one/x/prog.mod"
+    assert file_names(["/a/prog.mod", "/b/prog.mod"]).shown("/b/prog.mod") == "/b/prog.mod"
 
 
 def step(index: int, source: str, *changed: str) -> TraceStep:
@@ -183,3 +243,14 @@ def test_slice_keeps_a_step_that_raised_an_error_and_one_that_chose_an_input():
     assert sorted(needed_steps(trace)) == [1, 9, 11, 13]
     assert sorted(needed_steps(trace, handler_starts=frozenset({("p.mod", 9)}))) == \
         [1, 2, 3, 9, 11, 13]
+
+
+def test_a_long_assumption_is_cut_with_its_place_kept():
+    from rapidmc.report.results import short_assumption
+    text = "PERS Welds1 is written outside the loaded code; its reads take " + \
+        "; ".join(f"Welds1.c{i}: 0" for i in range(40)) + " (Teaching.mod:25)"
+    short = short_assumption(text)
+    assert len(short) < 300 and short.endswith("; ... (--format json lists it whole) "
+                                               "(Teaching.mod:25)")
+    assert short_assumption("stub GripOpen is empty (Missing.mod:12)") == \
+        "stub GripOpen is empty (Missing.mod:12)"

@@ -9,7 +9,7 @@ import pytest
 MODULES = ["rapidmc.diagnostics.error_report", "rapidmc.syntax.recovery", "rapidmc.syntax.call_statement",
            "rapidmc.load.stubs",
            "rapidmc.load.stubs.passes", "rapidmc.load.stubs.records", "rapidmc.semantics.library.documentation", "rapidmc.semantics.library.registry",
-           "rapidmc.check.trace", "rapidmc.model.value_text", "rapidmc.report.counterexample",
+           "rapidmc.check.trace", "rapidmc.model.value_text", "rapidmc.report.trace_text", "rapidmc.report.line_width", "rapidmc.diagnostics",
            "rapidmc.findings.editor", "rapidmc.findings.declarations", "rapidmc.report.hover",
            "rapidmc.report.lsp_diagnostics"]
 

@@ -18,9 +18,10 @@ from pathlib import Path
 
 from .. import api
 from ..check import Progress
+from ..check.result import VIOLATED
 from ..report.results import format_json, format_json_entries, format_text
 from ..report.results import format_json_errors
-from ..diagnostics import USAGE, UserError, error, render_all
+from ..diagnostics import NEVER_REACHED, USAGE, UserError, error, render, render_all
 from ..ltl import BACKENDS
 from ..load.backup import add_program_arguments
 from ..model.properties import Property, check_unique, read_property_file
@@ -227,7 +228,8 @@ def _check(args: argparse.Namespace) -> int:
         print(format_text(results, describer, args.full_trace))
         sys.stdout.flush()
         if warnings:
-            print(warnings_text(warnings), file=sys.stderr)
+            print(warnings_text(warnings, _beside_counterexample(args, results)),
+                  file=sys.stderr)
     if args.junit:
         from ..report.junit import format_junit
         write_report(args.junit, format_junit(gated_results, describer, *_suite(args),
@@ -261,7 +263,9 @@ def _check_every_entry(args: argparse.Namespace) -> int:
                         for entry, results, describer in tables))
         sys.stdout.flush()
         if warnings:
-            print(warnings_text(warnings), file=sys.stderr)
+            every = [checked for _, results, _ in tables for checked in results]
+            print(warnings_text(warnings, _beside_counterexample(args, every)),
+                  file=sys.stderr)
     if args.junit:
         from ..report.junit import format_junit_entries
         write_report(args.junit, format_junit_entries(tables, *_suite(args), warnings),
@@ -278,13 +282,35 @@ def _new_findings(args: argparse.Namespace, report: api.CheckReport, known):
     return [finding for finding, _ in new], {id(source) for _, source in old}
 
 
-def warnings_text(warnings) -> str:
-    """The warnings as the counterexamples name files: relative to the current folder when
-    it holds them all, else to the folder that does, named once."""
-    from ..report.counterexample import display_root
-    root, named = display_root([w.span.file for w in warnings if w.span and w.span.file])
-    text = render_all(warnings, root)
-    return f"(files relative to {root})\n{text}" if named else text
+COVERAGE_SHOWN = 5      # unreached-code warnings beside a counterexample (then a count)
+
+
+def warnings_text(warnings, brief_coverage: bool = False) -> str:
+    """The warnings with their files named as the counterexamples name them
+    (``trace_text.file_names``).  ``brief_coverage`` (beside a counterexample, which is what
+    the reader needs first): the unreached-code warnings (RMC701) one line each, without
+    their source line, at most ``COVERAGE_SHOWN``, then a count."""
+    from ..report.line_width import wrapped
+    from ..report.trace_text import file_names
+    names = file_names([w.span.file for w in warnings if w.span and w.span.file])
+    lines = names.legend()
+    coverage = 0
+    for warning in warnings:
+        if not (brief_coverage and warning.code is NEVER_REACHED):
+            lines.append(render(warning, names.shown))
+        else:
+            coverage += 1
+            if coverage <= COVERAGE_SHOWN:
+                lines.append(render(warning, names.shown, source=False))
+    if coverage > COVERAGE_SHOWN:
+        lines.append(f"rapidmc: and {coverage - COVERAGE_SHOWN} more unreached stretches "
+                     "[RMC701] (--full-trace, --format json or --html shows each)")
+    return wrapped("\n".join(lines))
+
+
+def _beside_counterexample(args: argparse.Namespace, results) -> bool:
+    """Whether the text report shows a counterexample (a violation, no ``--full-trace``)."""
+    return not args.full_trace and any(checked.result.verdict == VIOLATED for checked in results)
 
 
 def _entry_findings(args: argparse.Namespace, tables, warnings) -> list:

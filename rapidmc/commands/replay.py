@@ -19,6 +19,7 @@ from dataclasses import replace
 from typing import Optional
 
 from ..report.counterexample import step_lines
+from ..report.line_width import wrapped
 from ..check.trace import INITIAL, Change, TraceStep, TransitionInfo
 from ..diagnostics import EXIT_OK, TRACE_DIVERGED, TRACE_FILE, SourceCache, UserError, error
 from ..check.trace_replay import ReplayedStep, SavedStep, SavedTrace, TraceDiverged, follow
@@ -126,7 +127,7 @@ def _show(replayed: ReplayedStep, quiet: bool) -> None:
     if not quiet:
         sys.stdout.flush()
         lines = step_lines(_as_trace_step(saved))
-        print("\n".join(lines), file=sys.stderr)
+        print(wrapped("\n".join(lines)), file=sys.stderr)
 
 
 def _as_trace_step(saved: SavedStep) -> TraceStep:

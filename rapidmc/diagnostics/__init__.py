@@ -17,10 +17,8 @@ distributed search lost a worker (no verdict).
 """
 from __future__ import annotations
 
-import os
-
 from dataclasses import dataclass, field
-from typing import Iterable, Optional
+from typing import Callable, Iterable, Optional
 
 from ..ast import Span
 
@@ -220,28 +218,54 @@ class SourceCache:
         return None if lines is None else tuple(lines)
 
 
-def render(diagnostic: Diagnostic, root: str = "") -> str:
-    """Render one diagnostic as text: location, message, code, source line, caret; the
-    file relative to ``root`` when one is given."""
+def render(diagnostic: Diagnostic, file_name: Optional[Callable[[str], str]] = None,
+           source: bool = True) -> str:
+    """Render one diagnostic as text: location, message, code, source line, caret (unless
+    not ``source``), notes; the file named by ``file_name`` when one is given (else as
+    given)."""
     head = f"{diagnostic.severity}: {diagnostic.message} [{diagnostic.code.code}]"
     span = diagnostic.span
     if span is None or span.line <= 0:
         out = [f"rapidmc: {head}"]
     else:
-        file = os.path.relpath(os.path.abspath(span.file), root) if root else span.file
+        file = file_name(span.file) if file_name else span.file
         out = [f"{file}:{span.line}:{span.column}: {head}"]
-        source = SourceCache.line(span.file, span.line)
-        if source is not None:
-            shown = source.expandtabs(1).rstrip()
-            out.append("    " + shown)
+        line = SourceCache.line(span.file, span.line) if source else None
+        if line is not None:
             width = 1
             if span.end_line == span.line and span.end_column > span.column:
                 width = span.end_column - span.column
-            out.append("    " + " " * max(span.column - 1, 0) + "^" + "~" * (width - 1))
+            shown, column = source_window(line.expandtabs(1).rstrip(), span.column - 1)
+            width = max(1, min(width, len(shown) - column))
+            out.append("    " + shown)
+            out.append("    " + " " * column + "^" + "~" * (width - 1))
     out.extend(f"  note: {note}" for note in diagnostic.notes)
     if diagnostic.places:
         out.append(f"  note: {places_text(diagnostic.places)}")
     return "\n".join(out)
+
+
+SOURCE_SHOWN = 200     # a longer source line is shown around its caret, cut with "..."
+
+
+def source_window(source: str, column: int) -> tuple[str, int]:
+    """The part of a source line a diagnostic shows and the caret's column in it: the line
+    itself when it has at most ``SOURCE_SHOWN`` characters, else ``SOURCE_SHOWN`` of them
+    from a little before the caret, with ``...`` where it is cut.
+
+    >>> source_window("x := 1;", 0)
+    ('x := 1;', 0)
+    >>> shown, at = source_window("a" * 300 + " := 1;", 300)
+    >>> len(shown), shown[at:], shown[:3]
+    (203, ' := 1;', '...')
+    """
+    column = max(column, 0)
+    if len(source) <= SOURCE_SHOWN:
+        return source, column
+    first = max(0, min(column - SOURCE_SHOWN // 4, len(source) - SOURCE_SHOWN))
+    lead = "..." if first else ""
+    tail = "..." if first + SOURCE_SHOWN < len(source) else ""
+    return lead + source[first:first + SOURCE_SHOWN] + tail, column - first + len(lead)
 
 
 def places_text(places) -> str:
@@ -258,5 +282,6 @@ def places_text(places) -> str:
     return f"{count} more place{'s' if count != 1 else ''}: {'; '.join(parts)}"
 
 
-def render_all(diagnostics: Iterable[Diagnostic], root: str = "") -> str:
-    return "\n".join(render(d, root) for d in diagnostics)
+def render_all(diagnostics: Iterable[Diagnostic],
+               file_name: Optional[Callable[[str], str]] = None) -> str:
+    return "\n".join(render(d, file_name) for d in diagnostics)

@@ -3,9 +3,7 @@
 ``counterexample_lines(trace)`` writes, under a violated property:
 
 * for a path that ends in an error (an uncaught run-time error, a wait
-  forever), a headline: the error, its line and step, and each datum the
-  failing line reads, with its value and where it got it (its initial value,
-  the step that set it, the input chosen at a step, a stub's value);
+  forever), the headline of ``headline``;
 * the initial state limited to the data the steps' lines and the property
   name, with a count of the rest;
 * each step's changes, values longer than ``WIDTH`` characters shortened
@@ -23,48 +21,29 @@ relative to the folder that holds them all, named once above the steps.
 ``TextOptions(full=True)`` (``check --full-trace``) prints every initial
 value, every value in full and every step.  JSON and HTML always carry every
 step and full values; the names are the same.
-
-    >>> shorten("[[932.4,1557.5,2189.5],[1,0,0,0],[1,1,0,0]]", 30)
-    '[[932.4,1557.5,2189.5],...]'
 """
 from __future__ import annotations
 
 import json
-import os
-import re
 from dataclasses import dataclass, replace
 from typing import Iterable, Optional, Sequence, Union
 
-from ..check.trace import INITIAL, Change, Trace, TraceStep, TransitionInfo
-from ..load.stubs.module_text import is_stub_module
+from ..check.trace import INITIAL, Change, Trace, TraceStep
 from ..semantics.robots import ROBOT_TCP
-from .trace_slice import needed_steps, read_part, reads_of, whole_assignments
+from .headline import headline_lines
+from .trace_slice import needed_steps, reads_of
+from .trace_text import (IDENTIFIER, INDEX, SOURCE_WIDTH, STRING_WIDTH, WAS_WIDTH, WIDTH,
+                         TextOptions, array_elements, data_names, file_names, shorten,
+                         shown_location, shown_value)
 
 LOOP_STARTS = "-- loop starts here (repeats forever) --"
-WIDTH = 100            # a value's text in a step, at most (then shortened)
-WAS_WIDTH = 60         # the previous value beside it
-SOURCE_WIDTH = 160     # a source line or FlexPendant output
 LONGEST_PERIOD = 40    # the longest stretch of steps looked for as a repeat
 FEWEST_REPEATS = 3     # a stretch folds when it runs at least this many times in a row
 NET_SHOWN = 4          # values listed after a folded stretch (then a count)
 SLICED_SHOWN = 6       # data named in a line of steps left out (then a count)
 FOLDED_WIDTH = 40      # each of them, at most
+ELEMENTS_SHOWN = 4     # changed elements of a long array listed in a step (then a count)
 ALWAYS_SHOWN = ("program", "ERRNO")
-IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
-INDEX = re.compile(r"\{[^}]*\}")
-NOT_CALLED = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?![A-Za-z0-9_]|\s*\()")   # no function's name
-
-
-@dataclass(frozen=True)
-class TextOptions:
-    """How a counterexample is written: ``full`` (nothing left out), the property's ``names``
-    (upper case: the initial state shows them) and the ``stub_data`` (a stub module's data)."""
-
-    full: bool = False
-    names: frozenset = frozenset()
-    stub_data: frozenset = frozenset()
-    root: str = ""        # files are shown relative to this folder (empty: as given)
-    handler_starts: frozenset = frozenset()   # (file, line) of each ERROR handler's start
 
 
 @dataclass(frozen=True)
@@ -99,11 +78,9 @@ def counterexample_lines(trace: Trace, options: TextOptions = TextOptions()) -> 
         head = f"  counterexample: {_steps(count)}"
     if not options.full:
         trace = chosen_inputs_only(trace)
-    root, announced = display_root(trace_files(trace))
-    options = replace(options, root=root)
+    options = replace(options, files=file_names(trace_files(trace)))
     lines = headline_lines(trace, options)
-    if announced:
-        lines.append(f"  (files relative to {root})")
+    lines.extend(f"  {line}" for line in options.files.legend())
     lines.append(head)
     items = _prefix_items(trace, needed_steps(trace, options.names, options.handler_starts),
                           options)
@@ -146,34 +123,6 @@ def trace_files(trace: Trace) -> list[str]:
     steps = [*trace.prefix, *trace.cycle, *([trace.closing] if trace.closing else [])]
     return list(dict.fromkeys(step.transition.file for step in steps
                               if step.transition is not None and step.transition.file))
-
-
-def display_root(files: Sequence[str]) -> tuple[str, bool]:
-    """The folder files are shown relative to, and whether it must be named: the current
-    folder when it holds them all (not named), else the deepest folder that holds them all
-    (named once), else none (files as given)."""
-    absolute = [os.path.abspath(file) for file in files]
-    if not absolute:
-        return "", False
-    here = os.getcwd()
-    if all(os.path.commonpath([here, file]) == here for file in absolute):
-        return here, False
-    try:
-        common = os.path.commonpath([os.path.dirname(file) for file in absolute])
-    except ValueError:                         # different drives
-        return "", False
-    if common == os.path.dirname(common):      # only the file system's root: no gain
-        return "", False
-    return common, True
-
-
-def shown_location(transition: TransitionInfo, root: str) -> str:
-    """``file:line`` with the file relative to ``root`` (as given when ``root`` is empty)."""
-    location = transition.location
-    if not root or not transition.file:
-        return location
-    relative = os.path.relpath(os.path.abspath(transition.file), root)
-    return relative + location[len(transition.file):]
 
 
 def chosen_inputs_only(trace: Trace) -> Trace:
@@ -231,7 +180,7 @@ def step_lines(step: TraceStep, options: TextOptions = TextOptions()) -> list[st
         head = "initial state"
     else:
         source = shorten(transition.source, width)
-        location = shown_location(transition, options.root)
+        location = shown_location(transition, options.files)
         head = f"{location}  {source}" if location else source
     lines = [f"    step {step.index}  {head}".rstrip()]
     if transition is not None:
@@ -250,16 +199,42 @@ def step_lines(step: TraceStep, options: TextOptions = TextOptions()) -> list[st
 
 
 def change_text(change: Change, full: bool = False) -> str:
-    """``x = 1  (was 0)``; values shortened unless ``full``."""
-    new_width, old_width = (None, None) if full else (WIDTH, WAS_WIDTH)
+    """``x = 1  (was 0)``; values shortened unless ``full``, a long array written whole
+    with a few elements changed shown by those elements."""
+    if full:
+        def value(text: str, _: int) -> str:
+            return text
+    else:
+        def value(text: str, width: int) -> str:
+            return shown_value(text, width, STRING_WIDTH)
     if change.new is None:
         if change.old is None:
             return f"{change.name} (no longer exists)"
-        return f"{change.name} (no longer exists; was {shorten(change.old, old_width)})"
+        return f"{change.name} (no longer exists; was {value(change.old, WAS_WIDTH)})"
     if change.old is None:
-        return f"{change.name} = {shorten(change.new, new_width)}"
-    return f"{change.name} = {shorten(change.new, new_width)}  " \
-           f"(was {shorten(change.old, old_width)})"
+        return f"{change.name} = {value(change.new, WIDTH)}"
+    elements = None if full else changed_elements(change)
+    if elements is not None:
+        return elements
+    return f"{change.name} = {value(change.new, WIDTH)}  (was {value(change.old, WAS_WIDTH)})"
+
+
+def changed_elements(change: Change) -> Optional[str]:
+    """``table: 4 of 120 elements changed: {5} = 7 (was 5), {40} = 7 (was 40), ...``: an
+    array too long to show whole, written with fewer than half of its elements changed;
+    None for any other change."""
+    old, new = array_elements(change.old or ""), array_elements(change.new or "")
+    if not old or len(change.new) <= WIDTH or [s for s, _ in old] != [s for s, _ in new]:
+        return None
+    differing = [(suffix, was, now) for (suffix, was), (_, now) in zip(old, new) if was != now]
+    if not differing or 2 * len(differing) >= len(new):
+        return None
+    listed = ", ".join(f"{suffix} = {shown_value(now, FOLDED_WIDTH, FOLDED_WIDTH)} "
+                       f"(was {shown_value(was, FOLDED_WIDTH, FOLDED_WIDTH)})"
+                       for suffix, was, now in differing[:ELEMENTS_SHOWN])
+    more = len(differing) - ELEMENTS_SHOWN
+    return (f"{change.name}: {len(differing)} of {len(new)} elements changed: {listed}"
+            + (f" and {more} more (--full-trace shows them)" if more > 0 else ""))
 
 
 def initial_lines(step: TraceStep, read: frozenset) -> list[str]:
@@ -275,33 +250,6 @@ def initial_lines(step: TraceStep, read: frozenset) -> list[str]:
     return lines
 
 
-def data_names(name: str) -> tuple[str, ...]:
-    """The identifiers a shown name may be about, upper case.
-
-    ``main.reg1{2}`` is routine data (``REG1``) and ``pose.trans`` a record's
-    component (``POSE``): a shown name does not say which, so both are given.
-    """
-    if name.startswith("signal "):
-        name = name[len("signal "):]
-    return tuple(part.upper() for part in INDEX.sub("", name).split(".")[:2])
-
-
-def _inputs_text(step: TraceStep) -> str:
-    """`` from the input TPReadNum = 1`` when the step chose inputs, else nothing."""
-    inputs = step.transition.inputs if step.transition is not None else {}
-    if not inputs:
-        return ""
-    chosen = ", ".join(f"{name} = {value}" for name, value in inputs.items())
-    return f" from the input {chosen}" if len(inputs) == 1 else f" from the inputs {chosen}"
-
-
-def datum_of(name: str, words: Sequence[str]) -> str:
-    """Which datum a shown name is about, given the ``words`` of a line: ``waypoints{2}.trans``
-    is about WAYPOINTS when the line names it, ``main.i`` about I (MAIN is no datum there)."""
-    parts = data_names(name)
-    return parts[0] if parts[0] in words or len(parts) == 1 else parts[1]
-
-
 def read_names(trace: Trace, steps: Optional[Sequence[TraceStep]] = None) -> frozenset:
     """The identifiers of the source lines of ``steps`` (default: every step), upper case."""
     if steps is None:
@@ -309,36 +257,6 @@ def read_names(trace: Trace, steps: Optional[Sequence[TraceStep]] = None) -> fro
     steps = [*steps, *([trace.closing] if trace.closing else [])]
     return frozenset(word.upper() for step in steps if step.transition is not None
                      for word in IDENTIFIER.findall(step.transition.source))
-
-
-# --- shortening --------------------------------------------------------------------
-
-
-def shorten(text: str, width: Optional[int]) -> str:
-    """``text`` cut to at most ``width`` characters at an element boundary, ending in ``...``.
-
-    An aggregate keeps its first elements and its closing brackets
-    (``[[932.4,1557.5,2189.5],...]``); a string keeps its closing quote.
-    """
-    if width is None or len(text) <= width:
-        return text
-    depth, quoted, cut, cut_depth = 0, False, -1, 0
-    for position, char in enumerate(text[:width]):
-        if char == '"':
-            quoted = not quoted
-        elif quoted:
-            continue
-        elif char == "[":
-            depth += 1
-        elif char == "]":
-            depth -= 1
-        elif char == "," and position + 4 + depth <= width:    # room for "..." and "]"s
-            cut, cut_depth = position, depth
-    if cut > 0:
-        return text[:cut + 1] + "..." + "]" * cut_depth
-    if quoted or text.startswith('"'):
-        return text[:width - 4] + '..."'
-    return text[:width - 3] + "..."
 
 
 # --- folding repeated steps --------------------------------------------------------
@@ -480,165 +398,3 @@ def _single_index(name: str) -> Optional[int]:
     return int(text) if text.isdigit() else None
 
 
-# --- the headline ------------------------------------------------------------------
-
-
-def headline_lines(trace: Trace, options: TextOptions = TextOptions()) -> list[str]:
-    """For a path that ends in an error: the error, where, and the data its line reads."""
-    if trace.cycle or not trace.ending:
-        return []
-    steps = list(trace.prefix)
-    lines = [f"  error: {trace.ending}"]
-    last = steps[-1]
-    if last.transition is None or not last.transition.location:
-        return lines
-    width = None if options.full else SOURCE_WIDTH
-    lines.append(f"    at step {last.index}, {shown_location(last.transition, options.root)}:  "
-                 f"{shorten(last.transition.source, width)}")
-    if is_stub_module(last.transition.file) and last.stack:
-        lines.append(f"    (in {last.stack[-1].routine}, a routine of the stubs module: "
-                     "its body is a stand-in for the real one)")
-    raising = raising_steps(steps)
-    if raising is not steps:
-        first = raising[-1]
-        lines.append(f"    raised at step {first.index}, "
-                     f"{shown_location(first.transition, options.root)}:  "
-                     f"{shorten(first.transition.source, width)}")
-        if is_stub_module(first.transition.file) and first.stack:
-            lines.append(f"    (in {first.stack[-1].routine}, a routine of the stubs module: "
-                         "its body is a stand-in for the real one)")
-    for name, value, origin in read_data(steps, options.stub_data):
-        lines.append(f"    {name} = {shorten(value, None if options.full else WIDTH)}"
-                     f"  ({origin})")
-    return lines
-
-
-def read_data(steps: Sequence[TraceStep], stub_data: frozenset = frozenset()) -> list[tuple]:
-    """(name, value, origin) of each datum the last step's line reads, in the order it names them.
-
-    The value is the one before the last step ran: its latest change in the steps
-    before or its initial value; an input chosen at a step counts as a change of
-    that step.  Of a datum changed part by part, the part the line names
-    (``pk.id``), else the part changed last.
-    """
-    steps = raising_steps(steps)
-    source = steps[-1].transition.source
-    words = list(dict.fromkeys(word.upper() for word in NOT_CALLED.findall(read_part(source))))
-    written = source.replace(" ", "").upper()
-    found = stub_results(steps)
-    for word in words:
-        candidates = _latest_values(steps, word, words, stub_data)
-        named = [c for c in candidates if INDEX.sub("", c[0]).replace(" ", "").upper() in written
-                 and "." in c[0] and datum_of(c[0], words) == data_names(c[0])[0]]
-        if named:
-            found.append(named[0])
-        elif candidates:
-            found.append(_part_read(candidates, _component_path(source, word), word) or candidates[0])
-    return found
-
-
-def _component_path(source: str, word: str) -> list[str]:
-    """The components the line reads of the datum ``word``: ``raw_message.head.length``
-    gives ``[".head", ".length"]`` (none when the line reads it whole or not by name)."""
-    match = re.search(r"\b" + re.escape(word) + r"((?:\s*\.\s*[A-Za-z][A-Za-z0-9_]*)+)",
-                      source, re.IGNORECASE)
-    if match is None:
-        return []
-    return ["." + part.strip() for part in match.group(1).split(".")[1:]]
-
-
-def _part_read(candidates: list[tuple], path: list[str], word: str) -> Optional[tuple]:
-    """Of a datum's latest values (latest first), the value of the component ``path`` the
-    line reads: from the latest value that holds that component, taken down to it; the
-    latest change inside it as it is; None when the line reads no path or an array element
-    is in the way (the old choice stands)."""
-    if not path:
-        return None
-    for name, value, origin in candidates:
-        if "{" in name:
-            return None
-        parts = name.split(".")
-        at = next((n for n, part in enumerate(parts) if part.upper() == word), None)
-        if at is None:
-            return None
-        own = ["." + part for part in parts[at + 1:]]
-        if [part.upper() for part in own] == [part.upper() for part in path[:len(own)]]:
-            for part in path[len(own):]:
-                value = {suffix.upper(): text for suffix, text in
-                         getattr(value, "parts", ())}.get(part.upper())
-                if value is None:
-                    return None
-            return (".".join(parts[:at + 1]) + "".join(path[len(own):]) if not own else
-                    name + "".join(path[len(own):]), value, origin)
-        if [part.upper() for part in path] == [part.upper() for part in own[:len(path)]]:
-            return (name, value, origin)       # a change inside the part read
-    return None
-
-
-BARE_RAISE = re.compile(r"^RAISE\s*;", re.IGNORECASE)
-
-
-def raising_steps(steps: Sequence[TraceStep]) -> Sequence[TraceStep]:
-    """The steps up to the one that raised the error a bare ``RAISE;`` passes on (the latest
-    that set ERRNO); ``steps`` itself when the last step is no bare RAISE or none set it."""
-    last = steps[-1].transition
-    if last is None or not BARE_RAISE.match(last.source):
-        return steps
-    for number in range(len(steps) - 2, 0, -1):
-        if any(change.name == "ERRNO" and change.new for change in steps[number].changes) \
-                and steps[number].transition is not None:
-            return steps[:number + 1]
-    return steps
-
-
-def stub_results(steps: Sequence[TraceStep]) -> list[tuple]:
-    """(``F()``, value, origin) of each stub function the failing statement called: of the
-    steps just before it that run deeper in the call stack (in the functions it called),
-    those in a stubs module."""
-    depth = len(steps[-1].stack)
-    found = []
-    for step in reversed(steps[:-1]):
-        transition = step.transition
-        if transition is None or len(step.stack) <= depth:
-            break
-        returned = re.match(r"RETURN\s+(.*?);?$", transition.source, re.IGNORECASE)
-        if returned and step.stack and is_stub_module(transition.file):
-            found.append((f"{step.stack[-1].routine}()", returned.group(1).strip(),
-                          f"returned by the stub at {os.path.basename(transition.file)}:"
-                          f"{transition.line}"))
-    return found[::-1]
-
-
-def _latest_values(steps: Sequence[TraceStep], word: str, words: Sequence[str],
-                   stub_data: frozenset) -> list[tuple]:
-    """The latest values of the datum named ``word`` (one of the line's ``words``) and of its
-    parts before the last step, latest first, up to the datum's own: (name, value, origin)."""
-    found: dict[str, tuple] = {}
-    rewritten = None        # the latest step that assigned the datum whole without changing it
-    for step in reversed(steps):
-        transition = step.transition
-        if rewritten is None and not found and step is not steps[-1] and \
-                word in whole_assignments(step) and \
-                not any(datum_of(change.name, words) == word for change in step.changes):
-            rewritten = step.index
-        if transition is not None and step is not steps[-1]:
-            for name, value in transition.inputs.items():
-                if name.upper() == word:
-                    return list(found.values()) + [(name, value,
-                                                    f"input chosen at step {step.index}")]
-        if step is steps[-1] and step.kind != INITIAL:
-            continue                           # what the failing step itself wrote
-        for change in reversed(step.changes):
-            if change.new is None or change.name in found or \
-                    datum_of(change.name, words) != word:
-                continue
-            if step.kind == INITIAL:
-                origin = "stub value" if change.name in stub_data else "initial value"
-            else:
-                origin = f"set at step {step.index}" + _inputs_text(step)
-            if rewritten is not None and not found:
-                origin = f"set at step {rewritten}, to the value it had"
-            found[change.name] = (change.name, change.new, origin)
-            if not INDEX.search(change.name) and "." not in change.name.removeprefix("signal "):
-                return list(found.values())    # the whole datum: older parts are in it
-    return list(found.values())

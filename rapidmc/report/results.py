@@ -20,6 +20,7 @@ JSON follows the schema in docs/json-output.md (``SCHEMA`` names its version).
 from __future__ import annotations
 
 import json
+import re
 from dataclasses import dataclass
 from typing import Optional, Sequence
 
@@ -27,9 +28,11 @@ from ..diagnostics import MORE_ERRORS, Diagnostic
 from ..diagnostics.error_report import omitted_count
 from ..check.result import UNKNOWN, VIOLATED, SearchResult, SearchStats
 from ..check.trace import Trace, TraceDescriber, TraceStep, build_trace
+from .counterexample import chosen_inputs_only, counterexample_lines
+from .headline import read_data
+from .line_width import wrapped
+from .trace_text import IDENTIFIER, TextOptions
 from .trace_slice import with_robot
-from .counterexample import (IDENTIFIER, TextOptions, chosen_inputs_only, counterexample_lines,
-                             read_data)
 
 SCHEMA = "rapidmc-check/1"
 
@@ -62,6 +65,7 @@ def format_text(results: Sequence[PropertyResult], describer: TraceDescriber,
     """Every property's verdict line, with a counterexample under each violation.
 
     ``full``: every initial value, every value in full, no step folded (``--full-trace``).
+    No line is longer than ``line_width.LONGEST_LINE``: a longer one goes on in the next.
     """
     lines: list[str] = []
     for checked in results:
@@ -83,7 +87,7 @@ def format_text(results: Sequence[PropertyResult], describer: TraceDescriber,
                 lines.append(f"  {checked.result.reason}")
             lines.extend(counterexample_lines(build_trace(checked.result, describer),
                                               text_options(checked, describer, full)))
-    return "\n".join(lines) + "\n"
+    return wrapped("\n".join(lines)) + "\n"
 
 
 def described_formula(checked: PropertyResult) -> str:
@@ -122,14 +126,33 @@ def verdict_line(checked: PropertyResult) -> str:
 MAX_ASSUMPTIONS_SHOWN = 6
 
 
+ASSUMPTION_WIDTH = 240
+PLACE = re.compile(r" \([^()]*:\d+\)$")       # `` (Teaching.mod:25)`` ending an assumption
+
+
 def assumption_lines(checked: PropertyResult) -> list[str]:
     """``  assumes: stub GripOpen is empty (Missing.mod:12)``, one line each, at most
-    ``MAX_ASSUMPTIONS_SHOWN`` and a count of the rest (JSON lists them all)."""
-    shown = [f"  assumes: {text}" for text in checked.assumes[:MAX_ASSUMPTIONS_SHOWN]]
+    ``MAX_ASSUMPTIONS_SHOWN`` and a count of the rest, each within about
+    ``ASSUMPTION_WIDTH`` characters (JSON lists them all, in full)."""
+    shown = [f"  assumes: {short_assumption(text)}"
+             for text in checked.assumes[:MAX_ASSUMPTIONS_SHOWN]]
     rest = len(checked.assumes) - MAX_ASSUMPTIONS_SHOWN
     if rest > 0:
         shown.append(f"  assumes: ... and {rest} more (--format json lists them all)")
     return shown
+
+
+def short_assumption(text: str) -> str:
+    """An assumption over ``ASSUMPTION_WIDTH`` characters (the values of every component of
+    a record written from outside) cut after a ``;`` with ``...``, its place kept:
+    ``PERS Welds1 ... take Welds1.cpm: 0; ... (Teaching.mod:25)``."""
+    if len(text) <= ASSUMPTION_WIDTH:
+        return text
+    place = PLACE.search(text)
+    body = text[:place.start()] if place else text
+    cut = body.rfind("; ", 0, ASSUMPTION_WIDTH)
+    return (body[:cut + 1] if cut > 0 else body[:ASSUMPTION_WIDTH]) + " ... " \
+        "(--format json lists it whole)" + (place.group(0) if place else "")
 
 
 def text_options(checked: PropertyResult, describer: TraceDescriber,

@@ -17,7 +17,9 @@ from typing import Optional, Sequence
 
 from .. import __version__
 from ..diagnostics import Diagnostic
-from .counterexample import WIDTH, chosen_inputs_only, read_data, shorten
+from .counterexample import chosen_inputs_only
+from .headline import read_data
+from .trace_text import WIDTH, shorten
 from .ci_findings import violation_anchor
 from .results import PropertyResult, described_formula
 from ..check.result import UNKNOWN, VIOLATED

@@ -1,0 +1,193 @@
+"""The headline of a counterexample that ends in an error: the error, its line and step,
+and each datum the failing line reads, with its value and where it got it (its last
+assignment, the input chosen at a step, a stub's value or its initial value).
+
+A bare ``RAISE;`` is followed back to the step that raised the error; a line in the
+stubs module says so.
+"""
+from __future__ import annotations
+
+import os
+import re
+from typing import Optional, Sequence
+
+from ..check.trace import INITIAL, Trace, TraceStep
+from ..load.stubs.module_text import is_stub_module
+from .trace_slice import read_part, whole_assignments
+from .trace_text import (INDEX, SOURCE_WIDTH, STRING_WIDTH, WIDTH, TextOptions, data_names,
+                         datum_of, shorten, shown_location, shown_value)
+
+NOT_CALLED = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?![A-Za-z0-9_]|\s*\()")   # no function's name
+
+
+def headline_lines(trace: Trace, options: TextOptions = TextOptions()) -> list[str]:
+    """For a path that ends in an error: the error, where, and the data its line reads."""
+    if trace.cycle or not trace.ending:
+        return []
+    steps = list(trace.prefix)
+    lines = [f"  error: {trace.ending}"]
+    last = steps[-1]
+    if last.transition is None or not last.transition.location:
+        return lines
+    width = None if options.full else SOURCE_WIDTH
+    lines.append(f"    at step {last.index}, {shown_location(last.transition, options.files)}:  "
+                 f"{shorten(last.transition.source, width)}")
+    if is_stub_module(last.transition.file) and last.stack:
+        lines.append(f"    (in {last.stack[-1].routine}, a routine of the stubs module: "
+                     "its body is a stand-in for the real one)")
+    raising = raising_steps(steps)
+    if raising is not steps:
+        first = raising[-1]
+        lines.append(f"    raised at step {first.index}, "
+                     f"{shown_location(first.transition, options.files)}:  "
+                     f"{shorten(first.transition.source, width)}")
+        if is_stub_module(first.transition.file) and first.stack:
+            lines.append(f"    (in {first.stack[-1].routine}, a routine of the stubs module: "
+                         "its body is a stand-in for the real one)")
+    for name, value, origin in read_data(steps, options.stub_data):
+        shown = value if options.full else shown_value(value, WIDTH, STRING_WIDTH)
+        lines.append(f"    {name} = {shown}  ({origin})")
+    return lines
+
+
+def read_data(steps: Sequence[TraceStep], stub_data: frozenset = frozenset()) -> list[tuple]:
+    """(name, value, origin) of each datum the last step's line reads, in the order it names them.
+
+    The value is the one before the last step ran: its latest change in the steps
+    before or its initial value; an input chosen at a step counts as a change of
+    that step.  Of a datum changed part by part, the part the line names
+    (``pk.id``), else the part changed last.
+    """
+    steps = raising_steps(steps)
+    source = steps[-1].transition.source
+    words = list(dict.fromkeys(word.upper() for word in NOT_CALLED.findall(read_part(source))))
+    written = source.replace(" ", "").upper()
+    found = stub_results(steps)
+    for word in words:
+        candidates = _latest_values(steps, word, words, stub_data)
+        named = [c for c in candidates if INDEX.sub("", c[0]).replace(" ", "").upper() in written
+                 and "." in c[0] and datum_of(c[0], words) == data_names(c[0])[0]]
+        if named:
+            found.append(named[0])
+        elif candidates:
+            found.append(_part_read(candidates, _component_path(source, word), word) or candidates[0])
+    return found
+
+
+PART = r"\s*\.\s*[A-Za-z][A-Za-z0-9_]*|\{\s*\d+\s*\}"     # a component, or an element by number
+
+
+def _component_path(source: str, word: str) -> list[str]:
+    """The parts the line reads of the datum ``word``: ``raw_message.head.length`` gives
+    ``[".head", ".length"]``, ``table{3}.x`` ``["{3}", ".x"]`` (none when the line reads it
+    whole, not by name, or by an index that is no number)."""
+    match = re.search(r"\b" + re.escape(word) + f"((?:{PART})+)", source, re.IGNORECASE)
+    if match is None:
+        return []
+    return [re.sub(r"\s", "", part) for part in re.findall(PART, match.group(1))]
+
+
+def _part_read(candidates: list[tuple], path: list[str], word: str) -> Optional[tuple]:
+    """Of a datum's latest values (latest first), the value of the component ``path`` the
+    line reads: from the latest value that holds that component, taken down to it; the
+    latest change inside it as it is; None when the line reads no path or an array element
+    is in the way (the old choice stands)."""
+    if not path:
+        return None
+    for name, value, origin in candidates:
+        if "{" in name:
+            return None
+        parts = name.split(".")
+        at = next((n for n, part in enumerate(parts) if part.upper() == word), None)
+        if at is None:
+            return None
+        own = ["." + part for part in parts[at + 1:]]
+        if [part.upper() for part in own] == [part.upper() for part in path[:len(own)]]:
+            for part in path[len(own):]:
+                value = {suffix.upper(): text for suffix, text in
+                         getattr(value, "parts", ())}.get(part.upper())
+                if value is None:
+                    return None
+            return (".".join(parts[:at + 1]) + "".join(path[len(own):]) if not own else
+                    name + "".join(path[len(own):]), value, origin)
+        if [part.upper() for part in path] == [part.upper() for part in own[:len(path)]]:
+            return (name, value, origin)       # a change inside the part read
+    return None
+
+
+BARE_RAISE = re.compile(r"^RAISE\s*;", re.IGNORECASE)
+
+
+def raising_steps(steps: Sequence[TraceStep]) -> Sequence[TraceStep]:
+    """The steps up to the one that raised the error a bare ``RAISE;`` passes on (the latest
+    that set ERRNO); ``steps`` itself when the last step is no bare RAISE or none set it."""
+    last = steps[-1].transition
+    if last is None or not BARE_RAISE.match(last.source):
+        return steps
+    for number in range(len(steps) - 2, 0, -1):
+        if any(change.name == "ERRNO" and change.new for change in steps[number].changes) \
+                and steps[number].transition is not None:
+            return steps[:number + 1]
+    return steps
+
+
+def stub_results(steps: Sequence[TraceStep]) -> list[tuple]:
+    """(``F()``, value, origin) of each stub function the failing statement called: of the
+    steps just before it that run deeper in the call stack (in the functions it called),
+    those in a stubs module."""
+    depth = len(steps[-1].stack)
+    found = []
+    for step in reversed(steps[:-1]):
+        transition = step.transition
+        if transition is None or len(step.stack) <= depth:
+            break
+        returned = re.match(r"RETURN\s+(.*?);?$", transition.source, re.IGNORECASE)
+        if returned and step.stack and is_stub_module(transition.file):
+            found.append((f"{step.stack[-1].routine}()", returned.group(1).strip(),
+                          f"returned by the stub at {os.path.basename(transition.file)}:"
+                          f"{transition.line}"))
+    return found[::-1]
+
+
+def _latest_values(steps: Sequence[TraceStep], word: str, words: Sequence[str],
+                   stub_data: frozenset) -> list[tuple]:
+    """The latest values of the datum named ``word`` (one of the line's ``words``) and of its
+    parts before the last step, latest first, up to the datum's own: (name, value, origin)."""
+    found: dict[str, tuple] = {}
+    rewritten = None        # the latest step that assigned the datum whole without changing it
+    for step in reversed(steps):
+        transition = step.transition
+        if rewritten is None and not found and step is not steps[-1] and \
+                word in whole_assignments(step) and \
+                not any(datum_of(change.name, words) == word for change in step.changes):
+            rewritten = step.index
+        if transition is not None and step is not steps[-1]:
+            for name, value in transition.inputs.items():
+                if name.upper() == word:
+                    return list(found.values()) + [(name, value,
+                                                    f"input chosen at step {step.index}")]
+        if step is steps[-1] and step.kind != INITIAL:
+            continue                           # what the failing step itself wrote
+        for change in reversed(step.changes):
+            if change.new is None or change.name in found or \
+                    datum_of(change.name, words) != word:
+                continue
+            if step.kind == INITIAL:
+                origin = "stub value" if change.name in stub_data else "initial value"
+            else:
+                origin = f"set at step {step.index}" + _inputs_text(step)
+            if rewritten is not None and not found:
+                origin = f"set at step {rewritten}, to the value it had"
+            found[change.name] = (change.name, change.new, origin)
+            if not INDEX.search(change.name) and "." not in change.name.removeprefix("signal "):
+                return list(found.values())    # the whole datum: older parts are in it
+    return list(found.values())
+
+
+def _inputs_text(step: TraceStep) -> str:
+    """`` from the input TPReadNum = 1`` when the step chose inputs, else nothing."""
+    inputs = step.transition.inputs if step.transition is not None else {}
+    if not inputs:
+        return ""
+    chosen = ", ".join(f"{name} = {value}" for name, value in inputs.items())
+    return f" from the input {chosen}" if len(inputs) == 1 else f" from the inputs {chosen}"
