@@ -14,7 +14,8 @@ RAPID/TASKn/PROGMOD and SYSMOD) of 2-4 tasks, written as real cells are:
   home and rewinds the read slot, further kinds ("speedK") retune the current slot's
   speed: ``--kinds`` commands in all (at least 3);
 * ``--loggers`` tasks (0 to 2; the first a logger, the second a PLC handshake): the logger
-  waits for a PERS flag a motion task raises after each move and reports it over a socket;
+  waits (at most a minute, then it reports that it is alive) for a PERS flag a motion task
+  raises after each move and reports the move over a socket;
   the PLC task answers a start request on digital signals;
 * PERS flags between the tasks and a WaitSyncTask barrier between the motion tasks at
   every "home".
@@ -41,11 +42,28 @@ both engines, every property HOLDS.  Counters N=8 native: 377,626 states/s and 1
 before, 336,168 and 136 after (within the noise of the shared machine).
 
 Later the same day (issue 31: each motion task keeps its own robot position), N=2 with 2
-motion tasks, native, 420 s per search: 391,951 states, 76 CPU seconds, no_deadlock
-VIOLATED (the logger waits for ever while the robots go on), the other two HOLD.  The
-main branch of that hour, with one TCP for the whole controller, gives 355,639 states and
-the same verdicts (its figures had moved since the 23,916 above; why was not looked into):
-the second robot's position costs 10 % more states here.
+motion tasks and the logger (the default ``--loggers 1``), native, 420 s per search:
+391,951 states, 76 CPU seconds, no_deadlock VIOLATED, the other two HOLD; with one TCP for
+the whole controller, 355,639 states and the same verdicts.  Neither figure is comparable
+with the 23,916 above: that row was measured with ``--loggers 0`` (two tasks, "T=2"; the
+commit it was measured at, 787c6fe, gives 23,916 again with ``--loggers 0`` and more than
+30,000 states and the same VIOLATED with the logger; 87b13e6, before the robot per motion
+task, 22,802; today 24,770, the second robot's position).  The logger multiplies the
+states by about 14: its own position in its loop, the flags it clears and the
+interleavings of its steps with the robots'.
+
+The VIOLATED was the generated program's, at every commit since the family was written:
+the logger waited for a flag with a plain ``WaitUntil``, and a flag comes only after the
+PC sends "run"; in a run where the PC sends "store" for ever (the buffers full, nothing
+taught) the robots go on and the logger waits for ever, which is what ``no_deadlock``
+means with several tasks (docs/checking.md: "a flag no other task sets while a background
+task loops").  The report said so: ``waits forever: T_LOG waits at .../Logger.mod:9
+(WaitUntil log_request1;), while the other tasks go on``, with a loop of T_ROB1 receiving
+"store".  A logger in a cell does not hang on its source, so the generator now gives its
+``WaitUntil`` a ``\MaxTime`` with a ``\TimeFlag`` and an "alive" report: the family models
+a correct cell and every property HOLDS (N=1, 1 motion task: 3,975 states).  N=2 with 2
+motion tasks was not measured to the end with it (a 250 s search on the loaded machine did
+not finish).
 
 Measured on 2026-11-28 after the identity fast paths (one ``map`` pass over a tuple's
 children, the projection's known-equal objects), under heavy load (load average 17-20 on
@@ -169,7 +187,10 @@ ENDMODULE
 
 
 def logger_module(motion: int) -> str:
-    """A task reporting each move over a socket (the flags the motion tasks raise)."""
+    """A task reporting each move over a socket (the flags the motion tasks raise).  It
+    waits for a flag at most a minute and then reports that it is alive: a move comes only
+    when the PC sends "run", which it may never do again, and a logger waiting for one
+    without a time-out would wait for ever while the robots go on (``no_deadlock``)."""
     polls = "".join(f"""      IF log_request{i} THEN
         SocketSend log_socket \\Str:="moved {i}";
         log_request{i} := FALSE;
@@ -178,12 +199,14 @@ def logger_module(motion: int) -> str:
     flags = "".join(f"  PERS bool log_request{i} := FALSE;\n" for i in range(1, motion + 1))
     return f"""MODULE Logger
 {flags}  VAR socketdev log_socket;
+  VAR bool idle := FALSE;
 
   PROC main()
     SocketCreate log_socket;
     SocketConnect log_socket, "192.168.125.10", 2000;
     WHILE TRUE DO
-      WaitUntil {" OR ".join(f"log_request{i}" for i in range(1, motion + 1))};
+      WaitUntil {" OR ".join(f"log_request{i}" for i in range(1, motion + 1))} \\MaxTime:=60 \\TimeFlag:=idle;
+      IF idle SocketSend log_socket \\Str:="alive";
 {polls}    ENDWHILE
   ENDPROC
 ENDMODULE
