@@ -13,6 +13,8 @@ from rapidmc.model.value_text import value_text
 from rapidmc.report.counterexample import Folded, fold_repeats, read_part, shorten
 from rapidmc.semantics.types import NON_VALUE_TYPES, NUM, POS, ROBTARGET, ArrayType
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 
 def array(*values: str) -> Composite:
     return Composite("[" + ",".join(values) + "]",
