@@ -96,9 +96,19 @@ def sample(tmp_path) -> Path:
     return tmp_path
 
 
-def pre_commit(arguments: list[str], repository: Path, home: Path) -> subprocess.CompletedProcess:
+def _pre_commit_environment(home: Path) -> dict:
+    """pre-commit's environment: the store ``home``, and a short install of the hooks'
+    environment: no native core, and no isolated build environment for pip (the hooks'
+    virtualenv gets setuptools, which builds rapidmc there, instead of a fresh one fetched from
+    the index for each install)."""
     environment = _git_environment()
-    environment.update(PRE_COMMIT_HOME=str(home), RAPIDMC_NO_NATIVE="1", PRE_COMMIT_COLOR="never")
+    environment.update(PRE_COMMIT_HOME=str(home), RAPIDMC_NO_NATIVE="1", PRE_COMMIT_COLOR="never",
+                       PIP_NO_BUILD_ISOLATION="0", VIRTUALENV_SETUPTOOLS="bundle")
+    return environment
+
+
+def pre_commit(arguments: list[str], repository: Path, home: Path) -> subprocess.CompletedProcess:
+    environment = _pre_commit_environment(home)
     return subprocess.run([*PRE_COMMIT, *arguments], cwd=repository, capture_output=True,
                           text=True, env=environment, timeout=900)
 
@@ -144,9 +154,7 @@ def test_installed_hooks_refuse_a_commit_whose_program_violates_a_property(
 
     before = git("rev-parse", "HEAD", cwd=sample)
     stage(sample, "violating")
-    environment = _git_environment()
-    environment.update(PRE_COMMIT_HOME=str(pre_commit_home), RAPIDMC_NO_NATIVE="1",
-                       PRE_COMMIT_COLOR="never")
+    environment = _pre_commit_environment(pre_commit_home)
     refused = subprocess.run(["git", "commit", "-m", "violating cell"], cwd=sample,
                              capture_output=True, text=True, env=environment, timeout=900)
     output = refused.stdout + refused.stderr
