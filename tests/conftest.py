@@ -8,11 +8,11 @@ outcome can depend on the engine; it leaves out the modules marked
 The rule (docs/ci.md, "rapidmc's own CI"): a module may carry the mark only when none of its
 tests consults the engine, that is calls a function of ``rapidmc.check.native`` (every search
 asks it for its state table or its loop; ``--engine``, ``--version`` and the checks for the
-core ask it too) or the packed table's offer, neither in the test nor in its fixtures nor when the module is imported.
-The probe below wraps those functions: a marked test that consults the engine fails, in every
-run, with the functions it called.  The probe sees this process only; a marked module that
-starts rapidmc in another process says in a comment why that process's engine does not
-depend on the run's (tests/test_engine_independence.py lists those modules).
+core ask it too) or the packed table's offer, neither in the test nor in its fixtures nor
+when the module is imported.  The probe below wraps those functions: a marked test that
+consults the engine fails, in every run, and names the functions it called.  The probe sees
+this process only; a marked module that starts processes says why their engine does not
+follow the run's (STARTED_PROCESSES in tests/test_engine_independence.py).
 """
 from __future__ import annotations
 
@@ -90,25 +90,22 @@ def pytest_make_collect_report(collector):
         _consulted_on_import[collector.nodeid] = called
 
 
-def _phase(item):
-    PROBE.start()
-
-
+# each phase of a test (setup, call, teardown) starts the probe afresh; its report takes it
 @pytest.hookimpl(hookwrapper=True)
 def pytest_runtest_setup(item):
-    _phase(item)
+    PROBE.start()
     yield
 
 
 @pytest.hookimpl(hookwrapper=True)
 def pytest_runtest_call(item):
-    _phase(item)
+    PROBE.start()
     yield
 
 
 @pytest.hookimpl(hookwrapper=True)
 def pytest_runtest_teardown(item):
-    _phase(item)
+    PROBE.start()
     yield
 
 
