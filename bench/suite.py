@@ -6,8 +6,9 @@ Usage: python bench/suite.py [--workers 0,auto] [--engines native,python] [--dis
 For each engine and worker count, one row: ``RAPIDMC_ENGINE``, the workers (0: no xdist),
 wall seconds, the machine's load average before the run, and pytest's last line.  The README's
 test command is ``-n auto`` on the native engine; ``.ci/run`` runs that, then the python engine
-with the core renamed away (here ``RAPIDMC_ENGINE=python`` with the core left in place, which
-times the same tests but for the few that look for the core).  Run it on a quiet machine: the
+with the core renamed away, leaving out the modules marked ``engine_independent`` (here
+``RAPIDMC_ENGINE=python`` with the core left in place and the same marks left out, which times
+the same tests but for the few that look for the core).  Run it on a quiet machine: the
 load column says whether it was.
 """
 from __future__ import annotations
@@ -26,6 +27,8 @@ def run_suite(engine: str, workers: str, dist: str, extra: list[str]) -> tuple[f
     command = [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", *extra]
     if workers != "0":
         command += ["-n", workers, "--dist", dist]
+    if engine == "python":      # as .ci/run: the engine-independent modules ran with the core
+        command += ["-m", "not engine_independent"]
     environment = dict(os.environ, RAPIDMC_ENGINE=engine)
     started = time.perf_counter()
     done = subprocess.run(command, cwd=ROOT, capture_output=True, text=True, env=environment)

@@ -12,6 +12,8 @@ from rapidmc.semantics.library.geometry_ops import operator_for
 from rapidmc.semantics.errors import RapidError
 from rapidmc.semantics.values import to_num
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 
 def call(name, *args):
     return lookup_function(name.upper()).impl(*args)

@@ -11,6 +11,8 @@ from rapidmc.semantics.library import lookup_function, lookup_procedure
 from rapidmc.semantics.errors import RapidError
 from rapidmc.semantics.values import to_num
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 
 def call(name, *args):
     return lookup_function(name.upper()).impl(*args)

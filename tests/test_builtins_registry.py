@@ -11,6 +11,8 @@ from rapidmc.semantics.library.registry import (
     FUNCTION, PROCEDURE, SignatureSyntaxError, parse_signature, register,
 )
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 # (signature text, expected kind, return type,
 #  [(name, type, mode, optional, group, rank), ...])
 CASES = [

@@ -8,6 +8,8 @@ from rapidmc.semantics.library import lookup_function
 from rapidmc.semantics.library.data import PREDEFINED_DATA
 from rapidmc.semantics.errors import RapidError
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 
 def call(name, *args):
     return lookup_function(name.upper()).impl(*args)

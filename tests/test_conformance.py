@@ -28,6 +28,8 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 CONFORMANCE_ROOT = Path(__file__).parent / "conformance"
 MINIMUM_CASES = 200            # both parts of the suite together
 MINIMUM_CASES_PER_PART = 110

@@ -17,6 +17,8 @@ from rapidmc.report.trace_slice import read_part
 from rapidmc.report.trace_text import file_names, shorten, shown_location, shown_value
 from rapidmc.semantics.types import NON_VALUE_TYPES, NUM, POS, ROBTARGET, ArrayType
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 
 def array(*values: str) -> Composite:
     return Composite("[" + ",".join(values) + "]",

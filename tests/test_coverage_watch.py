@@ -6,9 +6,13 @@ the number of spans it keeps, not for a merged step's tuple of spans.
 """
 from __future__ import annotations
 
+import pytest
+
 from rapidmc.findings import coverage
 from rapidmc.ast import Span
 from rapidmc.findings.coverage import StatementWatch
+
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
 
 
 def step(span):

@@ -4,7 +4,11 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+import pytest
+
 from rapidmc.diagnostics import REGISTRY
+
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
 
 DOC = Path(__file__).resolve().parent.parent / "docs" / "diagnostics.md"
 

@@ -18,6 +18,8 @@ from pyrsistent import pmap, pvector
 from rapidmc import api
 from rapidmc.check.distributed.canonical import canonical_bytes, owner
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 ROOT = Path(__file__).resolve().parent.parent
 SORTER = [str(ROOT / "case_studies" / "sorter" / "sorter_b.mod")]
 PLANT = [str(ROOT / "case_studies" / "sorter" / "plant.mod")]

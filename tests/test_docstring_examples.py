@@ -6,6 +6,8 @@ import importlib
 
 import pytest
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 MODULES = ["rapidmc.diagnostics.error_report", "rapidmc.syntax.recovery", "rapidmc.syntax.call_statement",
            "rapidmc.load.stubs",
            "rapidmc.load.stubs.passes", "rapidmc.load.stubs.records", "rapidmc.semantics.library.documentation", "rapidmc.semantics.library.registry",

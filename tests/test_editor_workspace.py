@@ -14,6 +14,8 @@ from rapidmc.findings.declarations import declaration_at, word_at
 from rapidmc.findings.editor import Workspace
 from rapidmc.report.lsp_diagnostics import lsp_diagnostic
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 SORTER = Path(__file__).resolve().parent.parent / "case_studies" / "sorter"
 LINT_CODES = "RMC800"       # the lint stage's codes start here (docs/diagnostics.md)
 

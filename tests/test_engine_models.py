@@ -10,9 +10,12 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import networkx as nx
+import pytest
 
 from rapidmc.check.transition_system import STUTTER
 from rapidmc.ltl.buchi import Buchi, Edge
+
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
 
 # --- toy models ------------------------------------------------------------------
 

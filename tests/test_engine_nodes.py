@@ -3,10 +3,13 @@ trees are equal, a one-element write re-interns only its path, memory counted as
 from __future__ import annotations
 
 from pyrsistent import pvector
+import pytest
 
 from rapidmc.check.nodes import NodeTable
 from rapidmc.check.states import StateTable
 from rapidmc.semantics.state import Frame
+
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
 
 BUFFER = tuple((float(i), (float(i), 0.0, 600.0), "p%d" % i) for i in range(512))
 

@@ -7,6 +7,8 @@ import pytest
 
 from rapidmc.check.states import StateTable
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 
 class SplitModel:
     """States (pc, data, signals, rest) split into their four parts."""

@@ -12,11 +12,14 @@ import io
 import struct
 
 from hypothesis import given, settings, strategies as st
+import pytest
 
 from rapidmc import ast
 from rapidmc.commands.console import run_program
 from rapidmc.semantics.link import build
 from rapidmc.syntax import parse_text
+
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
 
 
 def f32(x: float) -> float:

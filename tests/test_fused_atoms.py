@@ -23,6 +23,8 @@ from reduction_programs import properties, random_program
 from test_plain_step import formulas, load, load_check_case, load_fuzz_program
 from test_reduction import CHECK_CASES
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 STATE_LIMIT = 600
 
 

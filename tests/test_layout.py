@@ -13,6 +13,8 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 PACKAGE = Path(__file__).resolve().parent.parent / "rapidmc"
 
 # Lowest first.  A stage is a package (folder) or a module loose at the package root.

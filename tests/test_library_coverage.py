@@ -6,6 +6,8 @@ import pytest
 
 from rapidmc.semantics.library import reference_coverage as library_coverage
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 
 def test_the_reference_has_the_four_sections_and_no_name_twice():
     sections = library_coverage.read_reference()

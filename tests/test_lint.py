@@ -22,6 +22,8 @@ from rapidmc.findings.lint import documentation as lint_doc
 from rapidmc.findings.lint.config import LintConfig, make_config
 from rapidmc.syntax import parse_file, parse_text
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 ROOT = Path(__file__).resolve().parent.parent
 CASES = sorted((ROOT / "tests" / "lint").glob("*.mod"))
 EXPECT = re.compile(r"!\s*expect:\s*(RMC\d{3}(?:\s*,\s*RMC\d{3})*)")

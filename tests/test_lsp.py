@@ -15,6 +15,8 @@ pytest.importorskip("pygls")
 
 from lsp_client import LspClient  # noqa: E402  (after the skip: the server needs pygls)
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 BROKEN = """MODULE Broken
   PROC main()
     VAR num x;

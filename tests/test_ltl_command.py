@@ -1,10 +1,14 @@
 """``rapidmc ltl``: HOA on stdout, diagnostics and exit codes on bad input."""
 from __future__ import annotations
 
+import pytest
+
 from rapidmc.cli import main
 from rapidmc.diagnostics import EXIT_INPUT_ERROR, EXIT_OK
 from rapidmc.ltl import read_hoa
 from rapidmc.ltl.lasso import accepts_lasso
+
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
 
 
 def test_prints_hoa_of_the_formula(capsys):

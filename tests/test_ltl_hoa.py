@@ -16,6 +16,8 @@ from rapidmc.ltl.lasso import accepts_lasso, holds_on_lasso
 from rapidmc.ltl.spot_backend import spot_available, spot_translate, with_atoms
 from rapidmc.ltl.translate import translate
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 DATA = Path(__file__).parent / "ltl"
 
 

@@ -17,6 +17,8 @@ from rapidmc.ltl.spot_backend import spot_available, to_spot
 from rapidmc.ltl.syntax import Not
 from rapidmc.ltl.translate import translate
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 DATA = Path(__file__).parent / "ltl" / "pattern_equivalents.txt"
 
 

@@ -22,6 +22,8 @@ from rapidmc.ltl.normal_form import negation_normal_form
 from rapidmc.ltl.simulation import reduce_by_simulation, simulation
 from rapidmc.ltl.translate import degeneralise, tableau_automaton, translate
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 
 @pytest.mark.parametrize("text, expected", [
     ("a U F b", "true U b"),                      # a U e == e

@@ -20,6 +20,8 @@ from rapidmc.ltl.lasso import accepts_lasso
 from rapidmc.ltl.spin import cross_check, spin_translate
 from rapidmc.ltl.translate import translate
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 SPIN = shutil.which("spin")
 TIMEOUT = 3.0          # SPIN can blow up on <-> / xor nests; such formulas are skipped
 MAX_SKIPPED_SHARE = 0.05

@@ -11,6 +11,8 @@ from rapidmc.diagnostics import LTL_SYNTAX, UserError
 from rapidmc.ltl import parse_formula, to_spin, to_text
 from rapidmc.ltl.syntax import (And, Atom, Finally, Globally, Next, Not, Or, Until, atoms_of)
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 DATA = Path(__file__).parent / "ltl"
 
 

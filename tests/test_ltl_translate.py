@@ -16,6 +16,8 @@ from rapidmc.ltl.normal_form import negation_normal_form
 from rapidmc.ltl.syntax import Not
 from rapidmc.ltl.translate import translate
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 DATA = Path(__file__).parent / "ltl"
 PAPER_PROPERTY = "G(!c_in & s1 & s2 -> F(s3 & !s4))"
 

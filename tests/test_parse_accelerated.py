@@ -14,6 +14,8 @@ from rapidmc.diagnostics import UserError
 from rapidmc.syntax import accelerated, parser
 from rapidmc.syntax.tokens import TOKEN_TYPES, CompiledToken
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 ROOT = Path(__file__).resolve().parent.parent
 PROGRAMS = sorted(path for path in ROOT.glob("**/*.mod")
                   if ".venv" not in path.parts and "site-packages" not in path.parts)

@@ -11,6 +11,8 @@ import pytest
 
 from rapidmc.syntax import accelerated
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 BENCH = Path(__file__).resolve().parent.parent / "bench" / "parse.py"
 
 

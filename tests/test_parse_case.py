@@ -3,9 +3,12 @@ from __future__ import annotations
 
 from hypothesis import given, settings
 from hypothesis import strategies as st
+import pytest
 
 from rapidmc.syntax import parse_text
 from rapidmc.syntax.sexpr import sexpr
+
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
 
 KEYWORD_OPERATORS = ["AND", "OR", "XOR", "DIV", "MOD"]
 SYMBOL_OPERATORS = ["+", "-", "*", "/", "<", "<=", "=", ">", ">=", "<>"]

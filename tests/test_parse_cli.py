@@ -4,7 +4,11 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import pytest
+
 from rapidmc.cli import main
+
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
 
 ROOT = Path(__file__).resolve().parent.parent
 HELLO = str(ROOT / "case_studies" / "hello" / "hello.mod")

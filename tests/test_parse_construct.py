@@ -7,6 +7,8 @@ import pytest
 
 from rapidmc.syntax.construct import NODE_CLASSES, draft_class, constructor, nodes
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 
 @pytest.mark.parametrize("name", sorted(NODE_CLASSES))
 def test_fast_constructor_builds_the_same_node(name):

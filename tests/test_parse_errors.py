@@ -14,6 +14,8 @@ import pytest
 from rapidmc.diagnostics import UserError, render
 from rapidmc.syntax import parse_file, parse_text
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 BAD = Path(__file__).parent / "syntax" / "bad"
 EXPECT = re.compile(r"! expect: (RMC\d{3}) line (\d+)")
 

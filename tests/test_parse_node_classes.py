@@ -14,6 +14,8 @@ from rapidmc import ast
 from rapidmc.syntax import parse_text
 from rapidmc.syntax.construct import NODE_CLASSES
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 PROGRAM = """MODULE m
   RECORD rec num a; ENDRECORD
   ALIAS num length;

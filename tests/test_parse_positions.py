@@ -13,6 +13,8 @@ import pytest
 from rapidmc.diagnostics import UserError
 from rapidmc.syntax import parse_text
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 
 def value_of(expression: str):
     text = f"MODULE t\nPROC p()\nx := {expression};\nENDPROC\nENDMODULE\n"

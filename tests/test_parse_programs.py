@@ -15,6 +15,8 @@ from rapidmc import ast
 from rapidmc.syntax import parse_file, parse_text
 from rapidmc.syntax.sexpr import sexpr
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 ROOT = Path(__file__).resolve().parent.parent
 GOOD = ROOT / "tests" / "syntax" / "good"
 PROGRAMS = sorted(GOOD.glob("*.mod")) + sorted((ROOT / "case_studies").rglob("*.mod"))

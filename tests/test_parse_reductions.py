@@ -7,6 +7,8 @@ import pytest
 from rapidmc.syntax.parser import rapid_parser
 from rapidmc.syntax.reductions import ChildPlan
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 RULES = sorted(rapid_parser().rules, key=str)
 
 

@@ -14,6 +14,8 @@ import pytest
 from rapidmc.syntax import parse_text
 from rapidmc.syntax.sexpr import sexpr
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 DATA = Path(__file__).parent / "syntax"
 
 

@@ -14,6 +14,8 @@ from rapidmc.syntax import accelerated, parser
 from rapidmc.syntax.reductions import passes_child_on
 from rapidmc.syntax.tokens import CompiledToken
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 needs_compiled = pytest.mark.skipif(not accelerated.AVAILABLE, reason="lark_cython not installed")
 
 # Unit chains (comparison -> sum -> product -> factor), operators that start and continue

@@ -10,6 +10,8 @@ from rapidmc.diagnostics import SourceCache, UserError
 from rapidmc.load.source import MAX_FILE_BYTES, program_paths, read_source
 from rapidmc.syntax import load_program, parse_file, parse_text
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 MODULE = b"MODULE m\n  PROC main()\n    Stop;\n  ENDPROC\nENDMODULE\n"
 
 

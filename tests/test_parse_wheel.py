@@ -16,6 +16,9 @@ from pathlib import Path
 import lark
 import networkx
 import pyrsistent
+import pytest
+
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
 
 ROOT = Path(__file__).resolve().parent.parent
 HELLO = ROOT / "case_studies" / "hello" / "hello.mod"

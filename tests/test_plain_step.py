@@ -36,6 +36,8 @@ from fuzz_programs import programs
 from reduction_programs import properties, random_program
 from test_reduction import CHECK_CASES, counters
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 ROOT = Path(__file__).resolve().parent.parent
 STATE_LIMIT = 1500
 CASE_STUDIES = [("case_studies/sorter/sorter_b.mod", "case_studies/sorter/plant.mod",

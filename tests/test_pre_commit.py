@@ -4,8 +4,9 @@ A sample git repository is made in a temporary folder; ``pre-commit try-repo`` r
 hook on its staged modules, and a ``.pre-commit-config.yaml`` that names the hooks (with the
 check hook's ``args``) guards a real ``git commit``.  The hooks repository is a snapshot of this
 work tree (tracked and new files) committed once, so that pre-commit installs its environment
-once for the module; the native core is not built there (RAPIDMC_NO_NATIVE) to keep that
-install short, as the hooks work the same on the Python engine.
+once for the session, shared by the pytest-xdist workers; the native core is not built there
+(RAPIDMC_NO_NATIVE) to keep that install short, as the hooks work the same on the Python
+engine.
 """
 from __future__ import annotations
 
@@ -16,12 +17,14 @@ import sys
 from pathlib import Path
 
 import pytest
+from filelock import FileLock
 
 ROOT = Path(__file__).resolve().parent.parent
 SAMPLES = ROOT / "tests" / "ci"
 PRE_COMMIT = [sys.executable, "-m", "pre_commit"]
 
-pytestmark = pytest.mark.skipif(shutil.which("git") is None, reason="git is not installed")
+pytestmark = [pytest.mark.skipif(shutil.which("git") is None, reason="git is not installed"),
+              pytest.mark.engine_independent]      # the hooks' rapidmc has no core: see below
 
 
 def git(*arguments: str, cwd: Path) -> str:
@@ -38,10 +41,29 @@ def _git_environment() -> dict:
     return environment
 
 
-@pytest.fixture(scope="module")
-def hooks_repository(tmp_path_factory) -> tuple[Path, str]:
-    """This work tree's files as one commit of a fresh repository: (its path, the commit)."""
-    snapshot = tmp_path_factory.mktemp("hooks")
+@pytest.fixture(scope="session")
+def shared_folder(tmp_path_factory) -> Path:
+    """A folder all pytest-xdist workers of this session share (the parent of their
+    temporary folders; without xdist the session's own), so that the hooks' environment is
+    built once per session, not once per worker."""
+    base = tmp_path_factory.getbasetemp()
+    folder = (base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base) / "pre-commit-shared"
+    folder.mkdir(exist_ok=True)
+    return folder
+
+
+@pytest.fixture(scope="session")
+def hooks_repository(shared_folder) -> tuple[Path, str]:
+    """This work tree's files as one commit of a fresh repository: (its path, the commit).
+    The first worker makes it; the others wait for the lock and reuse it."""
+    snapshot = shared_folder / "hooks"
+    with FileLock(str(shared_folder / "hooks.lock")):
+        if not (snapshot / ".git").is_dir():
+            _snapshot_work_tree(snapshot)
+        return snapshot, git("rev-parse", "HEAD", cwd=snapshot).strip()
+
+
+def _snapshot_work_tree(snapshot: Path) -> None:
     listed = subprocess.run(["git", "ls-files", "-z", "--cached", "--others", "--exclude-standard"],
                             cwd=ROOT, capture_output=True, check=True).stdout.decode()
     for name in filter(None, listed.split("\0")):
@@ -52,12 +74,16 @@ def hooks_repository(tmp_path_factory) -> tuple[Path, str]:
     git("init", "-q", cwd=snapshot)
     git("add", "-A", cwd=snapshot)
     git("commit", "-q", "-m", "snapshot", cwd=snapshot)
-    return snapshot, git("rev-parse", "HEAD", cwd=snapshot).strip()
 
 
-@pytest.fixture(scope="module")
-def pre_commit_home(tmp_path_factory) -> Path:
-    return tmp_path_factory.mktemp("pre-commit-home")
+@pytest.fixture(scope="session")
+def pre_commit_home(shared_folder) -> Path:
+    """One pre-commit store for the session: pre-commit locks it while it installs the hooks'
+    environment, so workers that start together wait for one install instead of each making
+    its own."""
+    home = shared_folder / "pre-commit-home"
+    home.mkdir(exist_ok=True)
+    return home
 
 
 @pytest.fixture
@@ -70,9 +96,19 @@ def sample(tmp_path) -> Path:
     return tmp_path
 
 
-def pre_commit(arguments: list[str], repository: Path, home: Path) -> subprocess.CompletedProcess:
+def _pre_commit_environment(home: Path) -> dict:
+    """pre-commit's environment: the store ``home``, and a short install of the hooks'
+    environment: no native core, and no isolated build environment for pip (the hooks'
+    virtualenv gets setuptools, which builds rapidmc there, instead of a fresh one fetched from
+    the index for each install)."""
     environment = _git_environment()
-    environment.update(PRE_COMMIT_HOME=str(home), RAPIDMC_NO_NATIVE="1", PRE_COMMIT_COLOR="never")
+    environment.update(PRE_COMMIT_HOME=str(home), RAPIDMC_NO_NATIVE="1", PRE_COMMIT_COLOR="never",
+                       PIP_NO_BUILD_ISOLATION="0", VIRTUALENV_SETUPTOOLS="bundle")
+    return environment
+
+
+def pre_commit(arguments: list[str], repository: Path, home: Path) -> subprocess.CompletedProcess:
+    environment = _pre_commit_environment(home)
     return subprocess.run([*PRE_COMMIT, *arguments], cwd=repository, capture_output=True,
                           text=True, env=environment, timeout=900)
 
@@ -118,9 +154,7 @@ def test_installed_hooks_refuse_a_commit_whose_program_violates_a_property(
 
     before = git("rev-parse", "HEAD", cwd=sample)
     stage(sample, "violating")
-    environment = _git_environment()
-    environment.update(PRE_COMMIT_HOME=str(pre_commit_home), RAPIDMC_NO_NATIVE="1",
-                       PRE_COMMIT_COLOR="never")
+    environment = _pre_commit_environment(pre_commit_home)
     refused = subprocess.run(["git", "commit", "-m", "violating cell"], cwd=sample,
                              capture_output=True, text=True, env=environment, timeout=900)
     output = refused.stdout + refused.stderr

@@ -1,9 +1,13 @@
 """docs/predefined.md is generated from the library's registry and kept in step (issue 8, C)."""
 from __future__ import annotations
 
+import pytest
+
 from rapidmc.semantics.library import documentation as library_doc
 from rapidmc.semantics.library import TOPICS, all_entries, parse_signature
 from rapidmc.semantics.library.registry import MODELLED_AS
+
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
 
 
 def test_committed_page_equals_the_generated_one():

@@ -4,6 +4,10 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
+import pytest
+
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 ROOT = Path(__file__).resolve().parent.parent
 
 

@@ -1,7 +1,11 @@
 """``rapidmc run --inputs FILE``: input changes at virtual times; waits let time pass."""
 from __future__ import annotations
 
+import pytest
+
 from rapidmc.cli import main
+
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
 
 PROGRAM = """MODULE In
   VAR signaldi start;

@@ -33,6 +33,8 @@ from rapidmc.semantics.step import general_successors, successors
 
 from test_plain_step import assert_same, formulas, outcome
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 ROOT = Path(__file__).resolve().parent.parent
 BENCH = ROOT / "bench" / "programs"
 CHECK = ROOT / "tests" / "check"

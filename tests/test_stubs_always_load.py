@@ -28,6 +28,8 @@ from rapidmc.diagnostics import UserError, render_all  # noqa: E402
 from rapidmc.semantics.link import build  # noqa: E402
 from rapidmc.syntax import load_program  # noqa: E402
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 HERE = Path(__file__).resolve().parent / "stubs"
 PROGRAMS = sorted(p for p in HERE.iterdir() if p.is_dir())
 WORK = Path(tempfile.mkdtemp(prefix="rapidmc-stubs-"))

@@ -12,6 +12,8 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 TESTS = Path(__file__).resolve().parent
 MODULE_LEVEL = """
     from tool_requirements import require_tool

@@ -18,6 +18,8 @@ from rapidmc.semantics.values import (
     format_value, int_div, int_mod, num_to_str, round_decimal, shortest_decimal, to_dnum, to_num,
 )
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 FLOAT32_MAX = struct.unpack("f", struct.pack("I", 0x7F7FFFFF))[0]
 finite_doubles = st.floats(allow_nan=False, allow_infinity=False)
 num_values = st.floats(width=32, allow_nan=False, allow_infinity=False)
