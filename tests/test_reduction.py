@@ -11,6 +11,7 @@ from __future__ import annotations
 import contextlib
 import io
 import json
+import shlex
 from pathlib import Path
 
 import pytest
@@ -30,7 +31,7 @@ from rapidmc.syntax import parse_text
 
 from fuzz_programs import programs
 from reduction_programs import properties, random_program
-from test_check_cases import verdict_cases
+from test_check_cases import _data_lines, verdict_cases
 
 ROOT = Path(__file__).resolve().parent.parent
 # the data-driven cases that expect verdicts (not input errors) and have a property file
@@ -121,8 +122,13 @@ def test_fuzz_programs_keep_their_verdicts(tmp_path_factory, program, rnd):
 
 
 @pytest.mark.parametrize("case", CHECK_CASES, ids=lambda path: path.name)
-def test_check_cases_keep_their_verdicts(case):
+def test_check_cases_keep_their_verdicts(case, monkeypatch):
+    # with the case's own options (its bound, further tasks, input and message domains), from
+    # its folder as tests/test_check_cases.py runs it: without its bound, a case whose
+    # unreduced program grows without end searched to the default bound (minutes)
+    monkeypatch.chdir(case)
     argv = [str(case / "prog.mod"), "--ltl", str(case / "props.ltl")]
+    argv += [word for line in _data_lines(case / "args") for word in shlex.split(line)]
     for extra in ("env.mod", "env"):
         if (case / extra).is_file():
             argv += ["--env", str(case / extra)]
