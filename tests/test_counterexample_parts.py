@@ -11,7 +11,7 @@ from rapidmc.check.trace import INITIAL, TRANSITION, Change, Composite, TraceSte
     TransitionInfo, changes_between
 from rapidmc.model.value_text import value_text
 from rapidmc.diagnostics import source_window
-from rapidmc.report.counterexample import Folded, change_text, fold_repeats
+from rapidmc.report.counterexample import Folded, SlicedAway, change_text, fold_repeats, sliced_line
 from rapidmc.report.line_width import wrapped
 from rapidmc.report.trace_slice import read_part
 from rapidmc.report.trace_text import file_names, shorten, shown_location, shown_value
@@ -256,3 +256,13 @@ def test_a_long_assumption_is_cut_with_its_place_kept():
                                                "(Teaching.mod:25)")
     assert short_assumption("stub GripOpen is empty (Missing.mod:12)") == \
         "stub GripOpen is empty (Missing.mod:12)"
+
+
+def test_steps_left_out_count_each_output_by_where_it_went():
+    # a socket message or a file line is not a FlexPendant line (the library marks them)
+    outputs = ("[socket] alive\n", "part ok\n", "[file log.txt] cycle 1\n[file log.txt] cycle 2\n",
+               "[socket] alive\n")
+    steps = tuple(TraceStep(index, TRANSITION, TransitionInfo("p.mod", index, "x", {}, output), ())
+                  for index, output in enumerate(outputs, start=2))
+    line = sliced_line(SlicedAway(steps, "the error"))
+    assert "1 FlexPendant line written, 2 socket messages sent, 2 file lines written" in line

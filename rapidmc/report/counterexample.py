@@ -364,12 +364,35 @@ def sliced_line(sliced: SlicedAway) -> str:
                                                         else "") + " assigned")
     if robots:
         what.append("the robot moved" if len(robots) == 1 else "the robots moved")
-    written = sum(1 for step in steps if step.transition and step.transition.output)
-    if written:
-        what.append(f"{written} FlexPendant {'line' if written == 1 else 'lines'} written")
+    what.extend(_outputs_written(steps))
     done = ", ".join(what) if what else "nothing changed"
     return f"    -- steps {steps[0].index}-{steps[-1].index}: {done}, not read by " \
            f"{sliced.reader} (--full-trace shows them) --"
+
+
+# Where a step's output line went: the library marks socket messages and file lines
+# (semantics/library/sockets.py, files.py); the rest is FlexPendant text.
+OUTPUT_KINDS = (("[socket] ", "socket message", "socket messages", "sent"),
+                ("[file ", "file line", "file lines", "written"))
+
+
+def _outputs_written(steps: Sequence[TraceStep]) -> list[str]:
+    """``2 FlexPendant lines written``, ``1 socket message sent``: counted by kind."""
+    counts = {"FlexPendant": 0, **{prefix: 0 for prefix, *_ in OUTPUT_KINDS}}
+    for step in steps:
+        output = step.transition.output if step.transition else ""
+        for line in output.splitlines():
+            kind = next((prefix for prefix, *_ in OUTPUT_KINDS if line.startswith(prefix)),
+                        "FlexPendant")
+            counts[kind] += 1
+    said = []
+    if counts["FlexPendant"]:
+        number = counts["FlexPendant"]
+        said.append(f"{number} FlexPendant {'line' if number == 1 else 'lines'} written")
+    for prefix, one, many, verb in OUTPUT_KINDS:
+        if counts[prefix]:
+            said.append(f"{counts[prefix]} {one if counts[prefix] == 1 else many} {verb}")
+    return said
 
 
 def _name_ranges(names: Sequence[str]) -> list[str]:
