@@ -314,7 +314,9 @@ def _task_without_program(path: Path, task: BackupTask) -> UserError:
 
 
 def _loaded_note(path: Path, tasks: list[BackupTask]) -> Diagnostic:
-    return Diagnostic(TASKS_LOADED, f"checking the {len(tasks)} tasks of the backup together: "
+    what = "the one task of the backup" if len(tasks) == 1 else \
+        f"the {len(tasks)} tasks of the backup together"
+    return Diagnostic(TASKS_LOADED, f"checking {what}: "
                       f"{', '.join(t.describe() for t in tasks)} (--task NAME checks one)",
                       _task_span(path, tasks[0]), severity="note")
 
