@@ -43,7 +43,9 @@ case_studies/sorter/sorter_a.mod:73:34: warning: NOT negates the whole 'AND' cha
   use (target, tool, speed ...), with the path to its first use as its flow.
 * **Exit code**: 1 when a finding at or above `--severity` remains (default `warning`:
   notes alone give 0), 0 otherwise, 2 for input errors (syntax, missing files, a bad
-  configuration: RMC840).
+  configuration: RMC840). With `--format json`, `sarif` or `codeclimate` an input error is
+  still a report on standard output, with the error as its finding (and the usual text on
+  standard error), so a CI step that uploads the report always finds a valid file.
 * **Choosing rules**: `--select` and `--ignore` take codes, code prefixes (`RMC80`) or rule
   names (`not-chain`), comma-separated.
 * **Suppressing one finding**: a comment on its line or on a comment line right above it,
