@@ -53,7 +53,7 @@ from typing import NamedTuple, Optional
 
 from ... import ast
 from ...load.shared_data import data_uses
-from ...semantics.configured_signals import _walk_statements
+from ...semantics.configured_signals import walk_routine
 from ...semantics.instructions import (Action, Branch, Call, EndRoutine, ForInit, ForNext,
                                        Jump, Return)
 from ...semantics.library.tasks import SyncWait
@@ -352,7 +352,7 @@ def _calls_by_name(program: Program):
     for routine in program.routines:
         if routine.ast is None:
             continue
-        for node in _walk_statements(routine.ast.body):
+        for node in walk_routine(routine.ast):       # (handlers call them too)
             if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) and \
                     node.name.key in DATA_BY_NAME:
                 yield routine, node
