@@ -153,6 +153,8 @@ def test_check_baseline_hides_a_known_violation_and_shows_a_new_one(program):
     ('{"schema": "rapidmc-baseline/1", "command": "lint", "findings": []}', "'rapidmc lint'"),
     ('{"schema": "rapidmc-baseline/1", "command": "check", "findings": [{"rule": 1}]}',
      "malformed finding"),
+    ('{"schema": "rapidmc-baseline/1", "command": "check", "findings": 3}',
+     "findings are not a list"),
 ])
 def test_a_bad_baseline_is_an_input_error(program, text, says):
     Path("baseline.json").write_text(text)

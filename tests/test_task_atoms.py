@@ -175,6 +175,18 @@ def test_a_task_that_moves_no_robot_has_no_robot_atom(tmp_path):
     assert "the motion tasks: T_ROB1, T_ROB2" in text, text
 
 
+@pytest.mark.parametrize("atom", ["CPos(T_ROB9).x > 0", "AtTarget(T_ROB9, p10)",
+                                  "InRoutine(T_ROB9, main)", "Waiting(T_ROB9)"])
+def test_a_task_name_no_task_has_is_named_as_such(tmp_path, atom):
+    """A misspelt task where an atom takes one: the message names it as an unknown task,
+    not as a missing one (whose example would put a task before the misspelt one)."""
+    code, text = run_robots(tmp_path, f'G !"{atom}"')
+    assert code == 2, text
+    assert "no task is named T_ROB9" in text and "[RMC402]" in text, text
+    assert "the tasks: T_ROB1, T_ROB2, T_LOG" in text and ", T_ROB9" not in text, text
+    assert "props.ltl:1:8: error:" in text, text        # at the call, inside the quote
+
+
 def test_at_target_reads_the_target_in_the_named_task(tmp_path):
     """Both tasks declare p10; T_LOG declares none."""
     code, text = run_robots(tmp_path, 'G !"AtTarget(T_LOG, p10)"')

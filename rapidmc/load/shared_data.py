@@ -14,7 +14,7 @@ from __future__ import annotations
 from .. import ast
 from ..diagnostics import PERS_UNWRITTEN, Diagnostic
 from ..diagnostics.quoting import quoted
-from ..semantics.configured_signals import _walk_statements
+from ..semantics.configured_signals import walk_routine
 from ..semantics.program import PROGRAM_NAMESPACE
 from ..semantics.library import lookup_function, lookup_procedure
 from ..semantics.library.registry import matched_parameters
@@ -51,13 +51,14 @@ def pers_warnings(program, files) -> tuple:
 
 def data_uses(program, namespace: int = PROGRAM_NAMESPACE) -> tuple[set, set]:
     """The global slots the routines of one task (its ``namespace``) name (read), and
-    those they may write (assigned, or passed to a routine by reference)."""
+    those they may write (assigned, or passed to a routine by reference), in their
+    bodies and their handlers."""
     read, written = set(), set()
     for routine in program.routines:
         if routine.namespace != namespace or routine.ast is None:
             continue
         lookup = routine.scope.lookup
-        for node in _walk_statements(routine.ast.body):
+        for node in walk_routine(routine.ast):      # (its handlers write too)
             if isinstance(node, ast.NameRef):
                 read.add(_slot(lookup, node))
             elif isinstance(node, (ast.Assignment, ast.Connect)):

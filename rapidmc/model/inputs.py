@@ -13,8 +13,8 @@ from .. import ast
 from ..diagnostics import DOMAIN, USAGE, Diagnostic, UserError, error
 from ..diagnostics.quoting import quoted
 from ..load.input_domains import Assumed, default_domains
-from ..semantics.configured_signals import _walk_statements
-from ..semantics.program import PROGRAM_NAMESPACE, Program
+from ..semantics.configured_signals import walk_routine
+from ..semantics.program import Program
 from .properties import AtomCompiler
 
 INTERRUPT_ORDERS = {"ISIGNALDI", "ISIGNALDO", "ISIGNALAI", "ISIGNALAO", "ISIGNALGI", "ISIGNALGO"}
@@ -30,9 +30,9 @@ def observed_inputs(program: Program, atoms: AtomCompiler):
     if atoms.observes_signal_data:
         return None
     for routine in program.routines:
-        if routine.namespace != PROGRAM_NAMESPACE or routine.ast is None:
+        if routine.ast is None:
             continue
-        for node in _walk_statements(routine.ast.body):
+        for node in walk_routine(routine.ast):      # every task's, handlers included
             if isinstance(node, ast.ProcedureCall) and node.name.key in INTERRUPT_ORDERS:
                 return None
     return set(atoms.observed)

@@ -520,16 +520,6 @@ def end_at_error(system: RapidSystem, result: SearchResult) -> SearchResult:
     if wait is not None:
         result.prefix.append(LassoStep(wait, last.state, last.automaton_state))
     result.ending = "the program waits here forever: no input lets it go on"
-def with_final_loop(system: RapidSystem, result: SearchResult) -> SearchResult:
-    """A reachability path ends in a state that repeats forever: make that the cycle."""
-    if result.prefix and not result.cycle:
-        last = result.prefix[-1]
-        transitions = system.successors(last.state)
-        loop = next((label for label, state in transitions if state == last.state), None)
-        if loop is None:       # a task waits forever for one that ended; others go on
-            return result
-        result.cycle = [result.prefix.pop()]
-        result.closing_label = loop
     return result
 
 
@@ -558,4 +548,3 @@ def _check_step(system: RapidSystem, before: State, label, after: State) -> None
         if candidate == after and (label is None or candidate_label == label):
             return
     raise AssertionError(f"counterexample step does not replay (label {label!r})")
-

@@ -26,7 +26,7 @@ from dataclasses import dataclass
 from typing import Iterator, Optional
 
 from .. import ast
-from ..diagnostics import AMBIGUOUS_NAME, SourceCache, error
+from ..diagnostics import AMBIGUOUS_NAME, ATOM, SourceCache, error
 from ..semantics.program import FIRST_TASK_NAMESPACE, PROGRAM_NAMESPACE, Program
 from ..semantics.scope import GLOBAL_DATA, ROUTINE, Scope, Symbol
 
@@ -136,6 +136,8 @@ class ControllerTasks:
                 if candidates:
                     raise _ambiguous_name(node.name, candidates, where, atom)
             elif isinstance(node, ast.FunctionCall) and not self.names_task(node):
+                if _task_slot_misnamed(node):
+                    raise _no_such_task(node, self.tasks, where, atom)
                 if node.name.key in NEEDS_TASK:
                     raise _location_without_task(node, self.tasks, where, atom)
                 if node.name.key in ROBOT_ATOMS and self.program.robot_per_task:
@@ -187,6 +189,10 @@ def tasks_read(expr: ast.Expr, tasks: ControllerTasks) -> tuple[str, ...]:
 NEEDS_TASK = frozenset({"INROUTINE", "ATLINE", "ATLABEL", "WAITING"})
 # atoms that read a robot: with several motion tasks, one robot per task (semantics.robots)
 ROBOT_ATOMS = frozenset({"ATTARGET", "CPOS", "CROBT", "CJOINTT", "CTOOL", "CWOBJ"})
+# the most arguments each of them takes after its task that can start with a bare name
+# (AtLine's two-argument form starts with a file name in quotes)
+_MOST_ARGUMENTS = {"INROUTINE": 1, "ATLINE": 1, "ATLABEL": 1, "WAITING": 0, "ATTARGET": 1,
+                   "CPOS": 0, "CROBT": 0, "CJOINTT": 0, "CTOOL": 0, "CWOBJ": 0}
 
 
 def unqualified_nodes(expr: ast.Expr, tasks: ControllerTasks) -> Iterator[object]:
@@ -261,6 +267,21 @@ def _robot_without_task(call: ast.FunctionCall, motion, where: ast.Span, atom: s
     return error(AMBIGUOUS_NAME, f"atom \"{atom}\": {call.name.text} reads a robot, and each "
                  f"of the motion tasks {names} moves its own", atom_position(where, call.span),
                  f"name the robot's task first, e.g. {call.name.text}({example})")
+
+
+def _task_slot_misnamed(call: ast.FunctionCall) -> bool:
+    """Whether ``call`` (naming no task) starts with a bare name where only a task fits:
+    ``CPos(T_ROB9)``, ``InRoutine(T_ROB9, main)`` (one argument more than it takes)."""
+    most = _MOST_ARGUMENTS.get(call.name.key)
+    return most is not None and len(call.args) > most and \
+        isinstance(call.args[0].value, ast.NameRef)
+
+
+def _no_such_task(call: ast.FunctionCall, tasks, where: ast.Span, atom: str):
+    name = call.args[0].value.name.text
+    return error(ATOM, f"atom \"{atom}\": {call.name.text} takes a task first, and no task is "
+                 f"named {name}", atom_position(where, call.span),
+                 f"the tasks: {', '.join(task.name for task in tasks)}")
 
 
 def _argument_text(arg: ast.Argument) -> str:

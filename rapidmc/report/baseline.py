@@ -45,8 +45,12 @@ def read_baseline(path: str, command: str) -> Counter:
     if document.get("command") != command:
         raise error(BASELINE_FILE, f"the baseline '{path}' records the findings of "
                     f"'rapidmc {document.get('command')}', not of 'rapidmc {command}'")
+    findings = document.get("findings", [])
+    if not isinstance(findings, list):
+        raise error(BASELINE_FILE, f"the baseline '{path}' is malformed: its findings are not "
+                    "a list")
     known: Counter = Counter()
-    for entry in document.get("findings", ()):
+    for entry in findings:
         try:
             key = (entry["rule"], entry["file"], entry["message"])
             count = int(entry.get("count", 1))

@@ -32,7 +32,7 @@ from ..check.trace import INITIAL, Change, Trace, TraceStep
 from ..semantics.robots import ROBOT_TCP
 from .headline import headline_lines
 from .trace_slice import needed_steps, reads_of
-from .trace_text import (IDENTIFIER, INDEX, SOURCE_WIDTH, STRING_WIDTH, WAS_WIDTH, WIDTH,
+from .trace_text import (INDEX, SOURCE_WIDTH, STRING_WIDTH, WAS_WIDTH, WIDTH,
                          TextOptions, array_elements, data_names, file_names, shorten,
                          shown_location, shown_value)
 
@@ -248,15 +248,6 @@ def initial_lines(step: TraceStep, read: frozenset) -> list[str]:
         lines.append(f"        ({rest} more {'value' if rest == 1 else 'values'} the trace "
                      "does not read: --full-trace shows them)")
     return lines
-
-
-def read_names(trace: Trace, steps: Optional[Sequence[TraceStep]] = None) -> frozenset:
-    """The identifiers of the source lines of ``steps`` (default: every step), upper case."""
-    if steps is None:
-        steps = [*trace.prefix, *trace.cycle]
-    steps = [*steps, *([trace.closing] if trace.closing else [])]
-    return frozenset(word.upper() for step in steps if step.transition is not None
-                     for word in IDENTIFIER.findall(step.transition.source))
 
 
 # --- folding repeated steps --------------------------------------------------------

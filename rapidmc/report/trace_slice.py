@@ -33,10 +33,9 @@ from typing import Iterable, Sequence
 
 from ..check.trace import INITIAL, TRANSITION, Trace, TraceStep
 from ..semantics.robots import ROBOT_TCP
+from .trace_text import IDENTIFIER, INDEX
 
-IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 STRING = re.compile(r'"(?:[^"]|"")*"')
-INDEX = re.compile(r"\{[^}]*\}")
 COMMENT = re.compile(r"!.*$")
 # the target of an assignment: a name with indexes and components (``pk{2}.id``)
 ASSIGNED = re.compile(r"^\s*[A-Za-z][A-Za-z0-9_]*(\s*\{[^}]*\}|\s*\.\s*[A-Za-z][A-Za-z0-9_]*)*\s*$")

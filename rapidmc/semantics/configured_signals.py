@@ -155,10 +155,16 @@ def _number_value(expr):
 def _nodes(modules: Iterable[ast.Module]) -> Iterator[object]:
     for module in modules:
         for routine in module.routines:
-            sections = [routine.body, routine.backward or (), routine.undo or (),
-                        routine.error.body if routine.error else ()]
-            for statements in sections:
-                yield from _walk_statements(statements)
+            yield from walk_routine(routine)
+
+
+def walk_routine(routine: ast.Routine) -> Iterator[object]:
+    """Every statement and expression of a routine: its body, and its backward, UNDO and
+    ERROR handlers (code that runs as much as the body does)."""
+    sections = [routine.body, routine.backward or (), routine.undo or (),
+                routine.error.body if routine.error else ()]
+    for statements in sections:
+        yield from _walk_statements(statements)
 
 
 def unit_uses(modules: Iterable[ast.Module]) -> Iterator[ast.Name]:

@@ -18,7 +18,7 @@ from __future__ import annotations
 from typing import Iterable
 
 from .. import ast
-from .configured_signals import _walk_statements
+from .configured_signals import walk_routine
 from .program import FIRST_TASK_NAMESPACE, PROGRAM_NAMESPACE
 from .scope import ROUTINE
 
@@ -49,7 +49,7 @@ def _moving_namespaces(linker) -> set:
         if namespace in found or routine.ast is None:
             continue
         scope = linker.namespaces.get(namespace)
-        for node in _walk_statements(routine.ast.body):
+        for node in walk_routine(routine.ast):      # (a handler's moves too)
             if not isinstance(node, ast.ProcedureCall):
                 continue
             name = node.name

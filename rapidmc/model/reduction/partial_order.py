@@ -53,7 +53,7 @@ from typing import NamedTuple, Optional
 
 from ... import ast
 from ...load.shared_data import data_uses
-from ...semantics.configured_signals import _walk_statements
+from ...semantics.configured_signals import walk_routine
 from ...semantics.instructions import (Action, Branch, Call, EndRoutine, ForInit, ForNext,
                                        Jump, Return)
 from ...semantics.library.tasks import SyncWait
@@ -317,7 +317,7 @@ def _task_of_namespace(namespace: int) -> Optional[int]:
 
 def _accessors(program: Program) -> dict[int, set[int]]:
     """Global slot -> the tasks that can name it (its declaring task; for shared PERS,
-    every task declaring it)."""
+    every task declaring it; for system module data, every task)."""
     linker = program.scopes
     found: dict[int, set[int]] = {data.slot: set() for data in program.globals}
     scopes = [(namespace, scope) for namespace, scope in linker.namespaces.items()] + \
@@ -327,6 +327,11 @@ def _accessors(program: Program) -> dict[int, set[int]]:
         for symbol in scope.names.values():
             if symbol.kind == GLOBAL_DATA and symbol.slot in found:
                 found[symbol.slot].add(task if task is not None else -1)
+    # data of the system modules (tool0, wobj0, reg1 ...): one object every task names
+    every = set(range(len(program.task_names)))
+    for symbol in linker.system.names.values():
+        if symbol.kind == GLOBAL_DATA and symbol.slot in found:
+            found[symbol.slot] |= every
     return found
 
 
@@ -352,7 +357,7 @@ def _calls_by_name(program: Program):
     for routine in program.routines:
         if routine.ast is None:
             continue
-        for node in _walk_statements(routine.ast.body):
+        for node in walk_routine(routine.ast):       # (handlers call them too)
             if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) and \
                     node.name.key in DATA_BY_NAME:
                 yield routine, node

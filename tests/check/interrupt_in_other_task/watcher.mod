@@ -1,0 +1,14 @@
+MODULE Watcher
+  VAR intnum irq;
+  VAR bool fired := FALSE;
+  PROC main()
+    CONNECT irq WITH OnSignal;
+    ISignalDI di1, 1, irq;
+    WHILE TRUE DO
+      WaitTime 1;
+    ENDWHILE
+  ENDPROC
+  TRAP OnSignal
+    fired := TRUE;
+  ENDTRAP
+ENDMODULE
