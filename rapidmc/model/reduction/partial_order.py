@@ -62,6 +62,7 @@ from ...semantics.scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA
 from ...semantics.state import RUNNING, State
 from ...semantics.step import successors as semantic_successors
 from ..state_keys import StateKeys
+from .local_runs import LocalRuns
 from .relevance import DATA_BY_NAME
 
 _STORE_READ = re.compile(r"\bstore\[(\d+)\]")
@@ -96,7 +97,8 @@ SHARED = Footprint(False, True)
 class PartialOrder:
     """The ample sets of one program's states (see the module docstring)."""
 
-    def __init__(self, program: Program, visible_names: set[str]):
+    def __init__(self, program: Program, visible_names: set[str], merge: bool = False,
+                 project=None):
         self.program = program
         self.names = program.task_names
         self.visible = visible_names
@@ -122,6 +124,13 @@ class PartialOrder:
         self._loops: dict = {}          # routine index -> names of its FOR variables
         self.expanded: set[int] = set()  # keys of the states expanded (cycle proviso)
         self.keys = StateKeys()
+        # a task's step goes on through its local instructions (``local_runs``)
+        self.runs = LocalRuns(program, self, visible_names, project) if merge else None
+
+    def every_order(self) -> Optional["EveryOrder"]:
+        """The stand-in of the ample sets in the full interleaving: every transition, with
+        the same local runs (None when steps are not merged)."""
+        return EveryOrder(self.runs) if self.runs is not None else None
 
     def ample(self, state: State, successors: list, config) -> list:
         """``successors`` (labelled, as ``RapidSystem.successors`` gives them) or the
@@ -135,7 +144,9 @@ class PartialOrder:
             if len(running) > 1:
                 chosen = self._choose(state, stacks, running, successors, config)
         expanded.add(self.keys.key(state))
-        return successors if chosen is None else chosen
+        if chosen is not None:
+            return chosen
+        return successors if self.runs is None else self.runs.extend(state, successors, config)
 
     def _choose(self, state: State, stacks: tuple, running: list, successors: list,
                 config) -> Optional[list]:
@@ -145,6 +156,8 @@ class PartialOrder:
                 continue
             name = self.names[task]
             mine = [entry for entry in successors if (TASK_CHOICE, name) in entry[0][0]]
+            if self.runs is not None:
+                mine = self.runs.extend(state, mine, config)
             if mine and all(self._invisible_step(task, state, after, config)
                             for _, after in mine):
                 return mine
@@ -303,6 +316,20 @@ class PartialOrder:
     def _visible_local(self, routine, slot: int) -> bool:
         name = routine.local_names[slot] if slot < len(routine.local_names) else ""
         return name.upper() in self.visible or routine.name.upper() in self.visible
+
+
+class EveryOrder:
+    """Every transition, each run on through its task's local instructions
+    (``PartialOrder.every_order``): the full interleaving of the merged model."""
+
+    def __init__(self, runs: LocalRuns):
+        self.runs = runs
+
+    def ample(self, state: State, successors: list, config) -> list:
+        return self.runs.extend(state, successors, config)
+
+    def every_order(self) -> "EveryOrder":
+        return self
 
 
 def _namespace(task: int) -> int:
