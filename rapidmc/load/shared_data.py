@@ -51,13 +51,14 @@ def pers_warnings(program, files) -> tuple:
 
 def data_uses(program, namespace: int = PROGRAM_NAMESPACE) -> tuple[set, set]:
     """The global slots the routines of one task (its ``namespace``) name (read), and
-    those they may write (assigned, or passed to a routine by reference)."""
+    those they may write (assigned, or passed to a routine by reference), in their
+    bodies and their ERROR, UNDO and BACKWARD handlers."""
     read, written = set(), set()
     for routine in program.routines:
         if routine.namespace != namespace or routine.ast is None:
             continue
         lookup = routine.scope.lookup
-        for node in _walk_statements(routine.ast.body):
+        for node in _walk_statements(_every_statement(routine.ast)):
             if isinstance(node, ast.NameRef):
                 read.add(_slot(lookup, node))
             elif isinstance(node, (ast.Assignment, ast.Connect)):
@@ -73,6 +74,14 @@ def data_uses(program, namespace: int = PROGRAM_NAMESPACE) -> tuple[set, set]:
     read.discard(None)
     written.discard(None)
     return read, written
+
+
+def _every_statement(routine: ast.Routine) -> tuple:
+    """The statements of a routine's body and handlers (a write in an ERROR handler is a
+    write: another task may see it)."""
+    handlers = (routine.error.body if routine.error is not None else (),
+                routine.undo or (), routine.backward or ())
+    return routine.body + tuple(statement for block in handlers for statement in block)
 
 
 def writes_data_by_name(routines) -> bool:
