@@ -33,7 +33,9 @@ Checking*, ch. 10) is every transition of one task ``t`` when
   remembered by key (``model.state_keys``: equal states, equal keys, computed
   from the parts a step handed on unchanged): a collision only expands fully.
 
-Otherwise the state is expanded fully.  The reduced graph keeps every verdict
+Otherwise the state is expanded fully.  With merged steps on, each transition
+then runs on through its task's next independent, invisible instructions
+(``local_runs``, SPIN's statement merging between processes).  The reduced graph keeps every verdict
 of the LTL properties without X (next) over these atoms, reachability of
 FAILED and of states where the program waits forever; ``plan_reductions``
 turns it off for a property with X, an atom on locations (AtLine, InRoutine
