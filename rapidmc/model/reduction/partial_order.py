@@ -12,9 +12,10 @@ Checking*, ch. 10) is every transition of one task ``t`` when
   assignment, condition, FOR step, jump (``fusion`` metadata: the instruction
   as Python over ``store`` and ``locals_``), a call of a procedure without
   arguments or the end of a procedure (ENDPROC, RETURN), that
-  reads only data no other task writes and writes only data no other task can
-  name (its own VAR data, TASK PERS, routine data, its own frames), reads no
-  signal and calls nothing.  No step of another task depends on it or changes
+  reads only data no other task writes and writes only data no other task's
+  code names (its own VAR data, TASK PERS, routine data, its own frames, shared
+  PERS that the other tasks declare but never use; a task with GetDataVal or
+  SetDataVal names all it can), reads no signal and calls nothing.  No step of another task depends on it or changes
   whether it can run, so the other tasks' steps commute with it.  The last
   ENDPROC of a task ends it, which a barrier (WaitSyncTask, SyncMoveOn/Off)
   observes: with barriers in the program it is not independent;
@@ -80,7 +81,7 @@ class Footprint(NamedTuple):
     """What one instruction of a task touches, decided from its code alone.
 
     ``independent``: it reads only data no other task writes and writes only data
-    no other task can name (its own VAR data, TASK PERS, routine data, its own
+    no other task's code names (its own VAR data, TASK PERS, routine data, its own
     frames), reads no signal and waits for nothing: every step of another task
     commutes with it and neither enables nor disables it, as SPIN treats a
     statement on local variables.  ``visible``: it may change the value of an atom
@@ -106,13 +107,21 @@ class PartialOrder:
         self.visible = visible_names
         tasks = len(self.names)
         accessors = _accessors(program)
-        written = [data_uses(program, _namespace(task))[1] for task in range(tasks)]
-        for task in tasks_writing_data_by_name(program):
+        uses = [data_uses(program, _namespace(task)) for task in range(tasks)]
+        written = [found[1] for found in uses]
+        used = [found[0] | found[1] for found in uses]
+        by_name = tasks_calling(program, "SETDATAVAL")
+        for task in by_name:
             # SetDataVal looks the name up where the call is: any data its task can name
             written[task] = written[task] | {slot for slot, by in accessors.items() if task in by}
-        # per task: the slots it may write (named by no other task), and those it may read
-        # (written by no other task)
-        self.own = [frozenset(slot for slot, by in accessors.items() if by <= {task})
+        for task in by_name | tasks_calling(program, "GETDATAVAL"):
+            used[task] = used[task] | {slot for slot, by in accessors.items() if task in by}
+        # per task: the slots it may write (no other task's code names them: a PERS that
+        # every task declares, in a module each loads, is still one task's when only its
+        # code reads or writes it), and those it may read (written by no other task)
+        self.own = [frozenset(slot for slot, by in accessors.items()
+                              if -1 not in by and not any(slot in used[other]
+                                                          for other in by if other != task))
                     for task in range(tasks)]
         self.stable = [frozenset(slot for slot, by in accessors.items()
                                  if not any(written[other] and slot in written[other]
@@ -367,11 +376,11 @@ def reaches_data_by_name(program: Program) -> bool:
     return any(not _own_task_only(node) for _, node in _calls_by_name(program))
 
 
-def tasks_writing_data_by_name(program: Program) -> set[int]:
-    """The tasks with a SetDataVal (naming data of their own, see
-    ``reaches_data_by_name``)."""
+def tasks_calling(program: Program, name: str) -> set[int]:
+    """The tasks with a call of ``name`` (GETDATAVAL, SETDATAVAL: reaching data of their
+    own by its name, see ``reaches_data_by_name``)."""
     tasks = {_task_of_namespace(routine.namespace) for routine, node in _calls_by_name(program)
-             if node.name.key == "SETDATAVAL"}
+             if node.name.key == name}
     tasks.discard(None)
     return tasks
 
