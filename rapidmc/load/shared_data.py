@@ -58,7 +58,7 @@ def data_uses(program, namespace: int = PROGRAM_NAMESPACE) -> tuple[set, set]:
         if routine.namespace != namespace or routine.ast is None:
             continue
         lookup = routine.scope.lookup
-        for node in _walk_statements(_every_statement(routine.ast)):
+        for node in _walk_statements(every_statement(routine.ast)):
             if isinstance(node, ast.NameRef):
                 read.add(_slot(lookup, node))
             elif isinstance(node, (ast.Assignment, ast.Connect)):
@@ -76,7 +76,7 @@ def data_uses(program, namespace: int = PROGRAM_NAMESPACE) -> tuple[set, set]:
     return read, written
 
 
-def _every_statement(routine: ast.Routine) -> tuple:
+def every_statement(routine: ast.Routine) -> tuple:
     """The statements of a routine's body and handlers (a write in an ERROR handler is a
     write: another task may see it)."""
     handlers = (routine.error.body if routine.error is not None else (),

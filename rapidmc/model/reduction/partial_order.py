@@ -55,7 +55,7 @@ import re
 from typing import NamedTuple, Optional
 
 from ... import ast
-from ...load.shared_data import data_uses
+from ...load.shared_data import data_uses, every_statement
 from ...semantics.configured_signals import _walk_statements
 from ...semantics.instructions import (Action, Branch, Call, EndRoutine, ForInit, ForNext,
                                        Jump, Return)
@@ -390,7 +390,7 @@ def _calls_by_name(program: Program):
     for routine in program.routines:
         if routine.ast is None:
             continue
-        for node in _walk_statements(routine.ast.body):
+        for node in _walk_statements(every_statement(routine.ast)):
             if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) and \
                     node.name.key in DATA_BY_NAME:
                 yield routine, node
