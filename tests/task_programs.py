@@ -18,22 +18,25 @@ SHARED = ("PERS num shared := 0;", "PERS bool flag := FALSE;", "PERS bool lock :
 SHARED_ARRAY = ("PERS bool slots{2} := [FALSE, FALSE];",)
 
 
-def random_tasks(seed: int, procedures: bool = False, arrays: bool = False) -> list[str]:
+def random_tasks(seed: int, procedures: bool = False, arrays: bool = False,
+                 local: bool = False) -> list[str]:
     """``procedures``: each task also has a procedure of its own (statements as the loop's)
     that its loop may call, so steps enter and leave routines (two tasks then: the
     state spaces stay small enough for the search without reduction).  ``arrays``: the
     statements also index arrays by data (its own ``marks``, the shared ``slots``: 
     conditions the fused step does not take) and reach data by name (GetDataVal,
-    SetDataVal); two tasks then, as with procedures."""
+    SetDataVal); two tasks then, as with procedures.  ``local``: most statements touch
+    only the task's own data, so a task may loop for ever on steps of its own (what the
+    reduction's cycle proviso is for) and its steps run on through several of them."""
     rng = random.Random(seed)
     count = 2 if procedures or arrays else rng.randint(2, 3)
-    return [_task(rng, number, procedures, arrays) for number in range(1, count + 1)]
+    return [_task(rng, number, procedures, arrays, local) for number in range(1, count + 1)]
 
 
 def _task(rng: random.Random, number: int, procedures: bool = False,
-          arrays: bool = False) -> str:
+          arrays: bool = False, local: bool = False) -> str:
     own, mine = f"own{number}", f"mine{number}"
-    draw = _array_statement if arrays else _statement
+    draw = _array_statement if arrays else _local_statement if local else _statement
     body = [draw(rng, own, mine, 3) for _ in range(rng.randint(2, 4))]
     routines = []
     if procedures:
@@ -78,13 +81,22 @@ def _statement(rng: random.Random, own: str, mine: str, indent: int) -> str:
     return rng.choice(choices)
 
 
+def _local_statement(rng: random.Random, own: str, mine: str, indent: int) -> str:
+    """A statement on the task's own data (three times in four), else one of
+    ``_statement``."""
+    return _mixed(rng, own, mine, indent, 0.25, lambda pad: [
+        f"{pad}{own} := ({own} + {rng.randint(1, 2)}) MOD 3;",
+        f"{pad}{mine} := NOT {mine};",
+        f"{pad}IF {own} = {rng.randint(0, 2)} THEN\n{pad}  {mine} := NOT {mine};\n{pad}ENDIF",
+        f"{pad}IF {mine} {own} := 0;",
+        f"{pad}quotient := 6 DIV ({own} + {rng.randint(0, 1)});",
+    ])
+
+
 def _array_statement(rng: random.Random, own: str, mine: str, indent: int) -> str:
     """A statement of ``_statement`` or one on arrays indexed by data or on data reached
     by name."""
-    if rng.random() < 0.5:
-        return _statement(rng, own, mine, indent)
-    pad = "  " * indent
-    choices = [
+    return _mixed(rng, own, mine, indent, 0.5, lambda pad: [
         f"{pad}IF marks{{{own} + 1}} = TRUE THEN\n{pad}  {mine} := NOT {mine};\n{pad}ENDIF",
         f"{pad}marks{{{own} + 1}} := {mine};",
         f"{pad}IF slots{{{own} MOD 2 + 1}} {own} := ({own} + 1) MOD 3;",
@@ -93,8 +105,17 @@ def _array_statement(rng: random.Random, own: str, mine: str, indent: int) -> st
         f'{pad}GetDataVal "{own}", quotient;',
         f'{pad}SetDataVal "{own}", ({own} + 1) MOD 3;',
         f'{pad}SetDataVal "shared", {own};',
-    ]
-    return rng.choice(choices)
+    ])
+
+
+def _mixed(rng: random.Random, own: str, mine: str, indent: int, plain: float,
+           statements) -> str:
+    """With probability ``plain`` a statement of ``_statement``, else one of
+    ``statements(pad)`` (the same draws as before this helper: the seeds keep their
+    programs)."""
+    if rng.random() < plain:
+        return _statement(rng, own, mine, indent)
+    return rng.choice(statements("  " * indent))
 
 
 def task_properties(seed: int) -> list[str]:

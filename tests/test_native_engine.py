@@ -5,7 +5,8 @@ Differential: ``rapidmc check --format json`` with ``--engine native`` and with
 name aside (every verdict, every count, every counterexample, coverage and vacuity
 warnings), on the data-driven check cases (with the run-time error search's graph
 reused, as by default, and with every property search stepping the program itself),
-on the case studies and on generated programs (tests/reduction_programs.py).  The
+on the case studies and on generated programs (tests/reduction_programs.py, and
+tests/task_programs.py for several tasks).  The
 native table gives every state the id the Python table gives it; the engine choice
 (``--engine``, ``RAPIDMC_ENGINE``, ``--version``) and its diagnostic when the core is
 not built are pinned below.  Without the extension the differential tests are skipped
@@ -34,6 +35,7 @@ from test_fuzz import STDIN, domains, formula_texts, fuzz_settings, write
 from test_case_studies import CASES, ROOT
 from test_check_cases import verdict_cases
 from test_graph_reuse import COUNTERS, case_arguments, model_of, report, without_measurements
+from test_partial_order import write_tasks
 
 needs_native = pytest.mark.skipif(not native.available(), reason="the native core is not built")
 
@@ -90,6 +92,17 @@ def test_generated_programs_report_the_same_with_both_engines(seed, tmp_path, mo
     (tmp_path / "props.ltl").write_text("\n".join(properties(seed, seed % 2 == 1)) + "\n")
     monkeypatch.chdir(tmp_path)
     argv = ["random.mod", "--ltl", "props.ltl", "--max-states", "20000"]
+    document = assert_same_reports(argv, monkeypatch, reuse=seed % 3 != 0)
+    assert document["properties"], "the program's properties were checked"
+
+
+@needs_native
+@pytest.mark.parametrize("seed", [*range(6), *range(90, 96)])
+def test_generated_tasks_report_the_same_with_both_engines(seed, tmp_path, monkeypatch):
+    """Programs of several tasks (tests/task_programs.py; from seed 90 mostly on their own
+    data): the partial-order reduction's ample sets and local runs give both engines the
+    same states, counts and counterexamples."""
+    argv = write_tasks(tmp_path, seed, local=seed >= 90)
     document = assert_same_reports(argv, monkeypatch, reuse=seed % 3 != 0)
     assert document["properties"], "the program's properties were checked"
 

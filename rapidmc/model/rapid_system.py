@@ -111,12 +111,14 @@ class RapidSystem:
         return RapidSystem(self.program, config)
 
     def full_interleaving(self) -> "RapidSystem":
-        """This system with every interleaving of the tasks' steps (no ample sets)."""
-        if self.order is None:
+        """This system with every interleaving of the tasks' steps (no ample sets; a
+        task's step still runs on through its local instructions, ``local_runs``, as in
+        the reduced search, whose paths are rebuilt here)."""
+        if self.order is None or self.order is self.order.every_order():
             return self
         if self._full is None:
             self._full = copy.copy(self)
-            self._full.order = None
+            self._full.order = self.order.every_order()
             self._full._shared = {}
             self._full._keys = StateKeys()
         return self._full
@@ -243,9 +245,9 @@ class RapidSystem:
         masked = _without_inputs(state, free)
         if not all(_without_inputs(after, free) == masked for after in targets):
             return False
-        if not self.config.merge_points:
+        if not self.config.merge_points and (self.order is None or self.order.runs is None):
             return True
-        # A merged step that changes nothing may still run around a loop (a busy wait):
+        # A merged step (or a task's local run, ``reduction.local_runs``) that changes nothing may still run around a loop (a busy wait):
         # decide on single instructions, as the unmerged semantics does.  (A merged step
         # that changes something starts with a single step that does.)
         project = self.project or (lambda s: s)

@@ -96,6 +96,29 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
     return result
 
 
+def task_transitions(program, state: State, task: int,
+                     config: CheckConfig) -> Optional[list]:
+    """The transitions of ``task`` alone from ``state``: those of ``staged_successors``
+    whose label names the task, in the same order, without the idle steps dropped;
+    None where the state has interrupts, stored inputs or an environment reaction (or
+    the task has ended).  Partial-order reduction extends a step of one task with its
+    task-local instructions (``reduction.partial_order``) without stepping the others."""
+    interrupts = state[4]
+    if program.environment_react is not None or config.free_inputs or \
+            interrupts[0] or interrupts[1] or interrupts[3]:
+        return None
+    stacks = (state[0],) + state[10]
+    if not stacks[task]:
+        return None
+    runnable = [i for i, stack in enumerate(stacks) if stack]
+    steps = view_steps(program, config)
+    label = steps.task_labels(runnable)[runnable.index(task)]
+    view = _new_tuple(State, (stacks[task], state[1], state[2],
+                              task_robot(program, state[3], task)) + state[4:10] + ((),))
+    return [_in_task(program, state, task, label, transition)
+            for transition in steps(view, task, None)]
+
+
 class ViewSteps:
     """The instruction's transitions from one-task views (through the plain drivers,
     without merge points), and what the views of one state share: the signal vector

@@ -58,7 +58,10 @@ class Plan:
 
     @property
     def active(self) -> bool:
-        return self.projection is not None or bool(self.merge_points)
+        """Whether stored states or transitions differ from the unreduced model's (a
+        counterexample is then re-executed on it, ``expansion``)."""
+        return self.projection is not None or bool(self.merge_points) or \
+            self.order is not None and self.order.runs is not None
 
 
 NO_PLAN = Plan()
@@ -86,14 +89,17 @@ def plan_reductions(program: Program, config, atoms: Iterable[str],
         points = merge_points(program, keys)
     order, notes = None, ()
     if reductions.partial_order and program.task_entries:
-        order, notes = _partial_order(program, config, formulas, keys)
+        order, notes = _partial_order(program, config, formulas, keys,
+                                      reductions.merge_steps, projection)
     return Plan(reductions, slicing, projection, points, order, notes)
 
 
-def _partial_order(program: Program, config, formulas: list, keys: set[str]) -> tuple:
+def _partial_order(program: Program, config, formulas: list, keys: set[str],
+                   merge: bool, projection: Optional[Projection]) -> tuple:
     """The partial-order reduction of a program of several tasks, when it keeps every
     verdict of these properties (``partial_order``), and a note when a property with X
-    turns it off."""
+    turns it off.  ``merge``: a task's step goes on through its local instructions
+    (``local_runs``), whose states ``projection`` maps as the search's."""
     if any(formula is not None and _has_next(formula) for formula in formulas):
         return None, (Diagnostic(ORDER_REDUCTION, "partial-order reduction is off: a property "
                                  "uses X (next), whose verdict depends on the interleaving "
@@ -102,7 +108,7 @@ def _partial_order(program: Program, config, formulas: list, keys: set[str]) -> 
             program.environment_init is not None or config.free_inputs or \
             keys & LOCATION_ATOMS or reaches_data_by_name(program):
         return None, ()
-    return PartialOrder(program, keys), ()
+    return PartialOrder(program, keys, merge, projection), ()
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

@@ -12,9 +12,10 @@ Checking*, ch. 10) is every transition of one task ``t`` when
   assignment, condition, FOR step, jump (``fusion`` metadata: the instruction
   as Python over ``store`` and ``locals_``), a call of a procedure without
   arguments or the end of a procedure (ENDPROC, RETURN), that
-  reads only data no other task writes and writes only data no other task can
-  name (its own VAR data, TASK PERS, routine data, its own frames), reads no
-  signal and calls nothing.  No step of another task depends on it or changes
+  reads only data no other task writes and writes only data no other task's
+  code names (its own VAR data, TASK PERS, routine data, its own frames, shared
+  PERS that the other tasks declare but never use; a task with GetDataVal or
+  SetDataVal names all it can), reads no signal and calls nothing.  No step of another task depends on it or changes
   whether it can run, so the other tasks' steps commute with it.  The last
   ENDPROC of a task ends it, which a barrier (WaitSyncTask, SyncMoveOn/Off)
   observes: with barriers in the program it is not independent;
@@ -33,7 +34,9 @@ Checking*, ch. 10) is every transition of one task ``t`` when
   remembered by key (``model.state_keys``: equal states, equal keys, computed
   from the parts a step handed on unchanged): a collision only expands fully.
 
-Otherwise the state is expanded fully.  The reduced graph keeps every verdict
+Otherwise the state is expanded fully.  With merged steps on, each transition
+then runs on through its task's next independent, invisible instructions
+(``local_runs``, SPIN's statement merging between processes).  The reduced graph keeps every verdict
 of the LTL properties without X (next) over these atoms, reachability of
 FAILED and of states where the program waits forever; ``plan_reductions``
 turns it off for a property with X, an atom on locations (AtLine, InRoutine
@@ -62,6 +65,7 @@ from ...semantics.scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA
 from ...semantics.state import RUNNING, State
 from ...semantics.step import successors as semantic_successors
 from ..state_keys import StateKeys
+from .local_runs import LocalRuns
 from .relevance import DATA_BY_NAME
 
 _STORE_READ = re.compile(r"\bstore\[(\d+)\]")
@@ -77,7 +81,7 @@ class Footprint(NamedTuple):
     """What one instruction of a task touches, decided from its code alone.
 
     ``independent``: it reads only data no other task writes and writes only data
-    no other task can name (its own VAR data, TASK PERS, routine data, its own
+    no other task's code names (its own VAR data, TASK PERS, routine data, its own
     frames), reads no signal and waits for nothing: every step of another task
     commutes with it and neither enables nor disables it, as SPIN treats a
     statement on local variables.  ``visible``: it may change the value of an atom
@@ -96,19 +100,28 @@ SHARED = Footprint(False, True)
 class PartialOrder:
     """The ample sets of one program's states (see the module docstring)."""
 
-    def __init__(self, program: Program, visible_names: set[str]):
+    def __init__(self, program: Program, visible_names: set[str], merge: bool = False,
+                 project=None):
         self.program = program
         self.names = program.task_names
         self.visible = visible_names
         tasks = len(self.names)
         accessors = _accessors(program)
-        written = [data_uses(program, _namespace(task))[1] for task in range(tasks)]
-        for task in tasks_writing_data_by_name(program):
+        uses = [data_uses(program, _namespace(task)) for task in range(tasks)]
+        written = [found[1] for found in uses]
+        used = [found[0] | found[1] for found in uses]
+        by_name = tasks_calling(program, "SETDATAVAL")
+        for task in by_name:
             # SetDataVal looks the name up where the call is: any data its task can name
             written[task] = written[task] | {slot for slot, by in accessors.items() if task in by}
-        # per task: the slots it may write (named by no other task), and those it may read
-        # (written by no other task)
-        self.own = [frozenset(slot for slot, by in accessors.items() if by <= {task})
+        for task in by_name | tasks_calling(program, "GETDATAVAL"):
+            used[task] = used[task] | {slot for slot, by in accessors.items() if task in by}
+        # per task: the slots it may write (no other task's code names them: a PERS that
+        # every task declares, in a module each loads, is still one task's when only its
+        # code reads or writes it), and those it may read (written by no other task)
+        self.own = [frozenset(slot for slot, by in accessors.items()
+                              if -1 not in by and not any(slot in used[other]
+                                                          for other in by if other != task))
                     for task in range(tasks)]
         self.stable = [frozenset(slot for slot, by in accessors.items()
                                  if not any(written[other] and slot in written[other]
@@ -122,6 +135,13 @@ class PartialOrder:
         self._loops: dict = {}          # routine index -> names of its FOR variables
         self.expanded: set[int] = set()  # keys of the states expanded (cycle proviso)
         self.keys = StateKeys()
+        # a task's step goes on through its local instructions (``local_runs``)
+        self.runs = LocalRuns(program, self, visible_names, project) if merge else None
+
+    def every_order(self) -> Optional["EveryOrder"]:
+        """The stand-in of the ample sets in the full interleaving: every transition, with
+        the same local runs (None when steps are not merged)."""
+        return EveryOrder(self.runs) if self.runs is not None else None
 
     def ample(self, state: State, successors: list, config) -> list:
         """``successors`` (labelled, as ``RapidSystem.successors`` gives them) or the
@@ -135,7 +155,9 @@ class PartialOrder:
             if len(running) > 1:
                 chosen = self._choose(state, stacks, running, successors, config)
         expanded.add(self.keys.key(state))
-        return successors if chosen is None else chosen
+        if chosen is not None:
+            return chosen
+        return successors if self.runs is None else self.runs.extend(state, successors, config)
 
     def _choose(self, state: State, stacks: tuple, running: list, successors: list,
                 config) -> Optional[list]:
@@ -145,6 +167,8 @@ class PartialOrder:
                 continue
             name = self.names[task]
             mine = [entry for entry in successors if (TASK_CHOICE, name) in entry[0][0]]
+            if self.runs is not None:
+                mine = self.runs.extend(state, mine, config)
             if mine and all(self._invisible_step(task, state, after, config)
                             for _, after in mine):
                 return mine
@@ -305,6 +329,20 @@ class PartialOrder:
         return name.upper() in self.visible or routine.name.upper() in self.visible
 
 
+class EveryOrder:
+    """Every transition, each run on through its task's local instructions
+    (``PartialOrder.every_order``): the full interleaving of the merged model."""
+
+    def __init__(self, runs: LocalRuns):
+        self.runs = runs
+
+    def ample(self, state: State, successors: list, config) -> list:
+        return self.runs.extend(state, successors, config)
+
+    def every_order(self) -> "EveryOrder":
+        return self
+
+
 def _namespace(task: int) -> int:
     return 0 if task == 0 else FIRST_TASK_NAMESPACE + task - 1
 
@@ -343,11 +381,11 @@ def reaches_data_by_name(program: Program) -> bool:
     return any(not _own_task_only(node) for _, node in _calls_by_name(program))
 
 
-def tasks_writing_data_by_name(program: Program) -> set[int]:
-    """The tasks with a SetDataVal (naming data of their own, see
-    ``reaches_data_by_name``)."""
+def tasks_calling(program: Program, name: str) -> set[int]:
+    """The tasks with a call of ``name`` (GETDATAVAL, SETDATAVAL: reaching data of their
+    own by its name, see ``reaches_data_by_name``)."""
     tasks = {_task_of_namespace(routine.namespace) for routine, node in _calls_by_name(program)
-             if node.name.key == "SETDATAVAL"}
+             if node.name.key == name}
     tasks.discard(None)
     return tasks
 

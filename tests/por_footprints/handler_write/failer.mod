@@ -1,0 +1,11 @@
+MODULE Failer
+  PERS num shared := 0;
+  VAR num zero := 0;
+  VAR num q := 0;
+  PROC main()
+    q := 1 DIV zero;                     ! LOCAL
+  ERROR
+    shared := 1;                         ! SHARED
+    TRYNEXT;
+  ENDPROC
+ENDMODULE
