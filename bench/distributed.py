@@ -121,7 +121,6 @@ def measure_ltl(name: str, mode: str, workers: int) -> dict:
 def measure_split(name: str, modulo: int) -> dict:
     """CPU seconds of a worker's parts, two partitions driven here (module docstring)."""
     from rapidmc.check import find_reachable
-    from rapidmc.check.distributed.canonical import owner
     from rapidmc.check.distributed.partition import Partition, SystemSource, encode_batch
     system = model_of(name, modulo).system
     started = time.process_time()
@@ -130,18 +129,13 @@ def measure_split(name: str, modulo: int) -> dict:
     parts = [Partition(), Partition()]
     for index, part in enumerate(parts):
         part.start(index, 2, SystemSource(system), "failed", False)
-    batches = [([], []) for _ in parts]
-    for state in system.initial_states():
-        batches[owner(state, 2)][0].append(state)
-        batches[owner(state, 2)][1].append(-1)
-    for index, part in enumerate(parts):
-        part.receive([-1], encode_batch(batches[index]))
-    sent_bytes = 0
+    initial = encode_batch((list(system.initial_states()), []))
+    for part in parts:
+        part.receive([-1], initial)
     while True:
         started = time.process_time()
-        outgoing = [part.expand() for part in parts]       # (batches pickled: bytes)
+        outgoing = [part.expand() for part in parts]       # (batches encoded: bytes)
         cpu["expand"] += time.process_time() - started
-        sent_bytes += sum(len(blob) for row in outgoing for blob in row[:2])
         started = time.process_time()
         answers = [part.receive([0, 1], outgoing[0][target], outgoing[1][target])
                    for target, part in enumerate(parts)]
@@ -150,7 +144,8 @@ def measure_split(name: str, modulo: int) -> dict:
             break
     states = sum(len(part.table) for part in parts)
     assert states == single.stats.product_states
-    return {"states": states, "cpu": cpu, "bytes": sent_bytes}
+    return {"states": states, "cpu": cpu, "codec": type(parts[0].codec).__name__,
+            "bytes": sum(part.sent_bytes for part in parts)}
 
 
 def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
@@ -163,11 +158,12 @@ def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
     system = model.system
     if mode == "single":
         from rapidmc.check import find_reachable
-        started = time.perf_counter()
+        started, cpu = time.perf_counter(), time.process_time()
         result = find_reachable(system, system.failed, max_states=None)
         seconds = time.perf_counter() - started
         return {"verdict": result.verdict, "states": result.stats.product_states,
                 "seconds": seconds, "engine": result.stats.engine,
+                "cpu": time.process_time() - cpu,
                 "max_rss_kb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss}
     import ray
     from rapidmc.check.budget import SearchBudget
@@ -181,16 +177,20 @@ def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
     partitioned_reachable(ray, workers, system, "failed", budget=SearchBudget(1),
                           rebuild=recipe)
     started = time.perf_counter()
+    driver_cpu = time.process_time()
     result, _, figures = partitioned_reachable(ray, workers, system, "failed",
                                                budget=SearchBudget(None), rebuild=recipe)
     seconds = time.perf_counter() - started
+    driver_cpu = time.process_time() - driver_cpu
     ray.shutdown()
     return {"verdict": result.verdict, "states": result.stats.product_states,
-            "seconds": seconds, "start_seconds": start_seconds,
+            "seconds": seconds, "start_seconds": start_seconds, "driver_cpu": driver_cpu,
+            "levels": result.stats.max_depth + 1,
             "sent": sum(f["sent"] for f in figures),
-            "pickled": pickled_bytes(system),
+            "sent_bytes": sum(f["sent_bytes"] for f in figures),
             "worker_rss_kb": [f["max_rss_kb"] for f in figures],
             "worker_cpu": [f["cpu_seconds"] for f in figures],
+            "worker_step_cpu": [f["step_seconds"] for f in figures],
             "worker_states": [f["states"] for f in figures]}
 
 
@@ -242,13 +242,13 @@ def main() -> None:
 
 def print_split(names, modulo: int) -> None:
     print(f"{'model':16} {'states':>9} {'1 proc s':>8} {'expand s':>8} {'receive s':>9} "
-          f"{'sum/2 s':>8} {'B sent/st':>9}")
+          f"{'sum/2 s':>8} {'B sent/st':>9} codec")
     for name in names:
         found = fresh(name, "split", modulo, 2)
         cpu, states = found["cpu"], found["states"]
         print(f"{name:16} {states:>9,} {cpu['single']:>8.2f} {cpu['expand']:>8.2f} "
               f"{cpu['receive']:>9.2f} {(cpu['expand'] + cpu['receive']) / 2:>8.2f} "
-              f"{found['bytes'] / states:>9.0f}", flush=True)
+              f"{found['bytes'] / states:>9.0f} {found['codec']}", flush=True)
 
 
 if __name__ == "__main__":

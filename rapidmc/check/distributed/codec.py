@@ -1,0 +1,207 @@
+"""How a worker writes the states it sends to their owners, and reads the states it is sent.
+
+Two codecs, one per kind of state table, with one interface (``Partition`` uses it):
+
+* ``VectorCodec``, for a model's packed table (``model.packed``, the whole-controller models
+  and the counters): a state travels as the table's own encoding, its frame and data
+  vectors of value ids, written by the table itself (``vectors_of``).  Those ids are the
+  sender's: each batch carries the values and contexts the sender numbered since its last
+  batch to that owner (ids only grow), and the owner keeps, per sender, an array that
+  maps the sender's ids to its own.  So a state costs its vectors' bytes on the wire (4
+  bytes a value), a whole batch is translated with a few array operations, and the owner
+  stores a state with one call into the table (``intern_vectors``): no Python object is
+  pickled or built per state, and a state the owner already has is never rebuilt.
+  The owner of a state is a hash of its vectors in which every id stands for a
+  fingerprint of its value (BLAKE2b of ``canonical.canonical_bytes``), the same in every
+  process: equal values, equal fingerprints; so every worker agrees on the owner.
+* ``PickleCodec``, for every other table (the Python engine, models without a packed
+  table): states travel pickled, owned by ``canonical.owner``.
+
+Interface: ``prepare(state) -> (key, item)`` (equal keys: equal states, for the level's
+deduplication), ``owners(keys, items)`` (a chunk at a time), ``encode(target, items,
+parents)``, ``store(sender, data)`` (stores the batch's states, yields (id, new, parent id)),
+``owns(state)``.
+"""
+from __future__ import annotations
+
+import hashlib
+import pickle
+from array import array
+from typing import Hashable, Iterator, Sequence
+
+from .canonical import canonical_bytes, owner, owner_of_bytes
+
+PROTOCOL = pickle.HIGHEST_PROTOCOL
+
+
+def codec_for(table, index: int, count: int):
+    """The codec for a worker's table: vectors where the table offers them (and numpy, which
+    Ray brings, is installed), else pickles."""
+    if getattr(table, "vectors_of", None) is not None:
+        try:
+            import numpy  # noqa: F401
+        except ImportError:
+            pass
+        else:
+            return VectorCodec(table, index, count)
+    return PickleCodec(table, count)
+
+
+class PickleCodec:
+    """States pickled by the standard C pickler, owned by ``canonical.owner``."""
+
+    def __init__(self, table, count: int):
+        self.table, self.count = table, count
+
+    def prepare(self, state: Hashable) -> tuple[bytes, Hashable]:
+        from .canonical import _state_bytes
+        return _state_bytes(state), state
+
+    def owners(self, keys: Sequence[bytes], items) -> list[int]:
+        count = self.count
+        return [owner_of_bytes(key, count) for key in keys]
+
+    def encode(self, target: int, items: list, parents: array) -> bytes:
+        return pickle.dumps((items, parents), protocol=PROTOCOL)
+
+    def store(self, sender: int, data: bytes) -> Iterator[tuple[int, bool, int]]:
+        states, parents = pickle.loads(data)
+        intern = self.table.intern
+        for state, parent in zip(states, parents):
+            state_id, new = intern(state, True)
+            yield state_id, new, parent
+
+    def owns(self, state: Hashable, index: int) -> bool:
+        return owner(state, self.count) == index
+
+
+# odd 64-bit constants of the owner hash (any fixed ones do; these are splitmix64's)
+_GOLDEN = 0x9E3779B97F4A7C15
+_MIX1, _MIX2 = 0xBF58476D1CE4E5B9, 0x94D049BB133111EB
+
+
+def fingerprint(value) -> int:
+    """A 64-bit fingerprint of a value, the same in every process (canonical bytes)."""
+    return int.from_bytes(hashlib.blake2b(canonical_bytes(value), digest_size=8).digest(),
+                          "little")
+
+
+class VectorCodec:
+    """States as a packed table's vectors (module docstring)."""
+
+    def __init__(self, table, index: int, count: int):
+        import numpy
+        self.np = numpy
+        self.table, self.index, self.count = table, index, count
+        self.data_length = table.store_length
+        self.value_print = numpy.zeros(0, numpy.uint64)      # by value id: fingerprint
+        self.context_print = numpy.zeros(0, numpy.uint64)    # by context id: fingerprint
+        self.sent_values = [0] * count       # per owner: values handed over (ids below it)
+        self.sent_contexts = [0] * count
+        self.value_map: dict = {}            # per sender: its value id -> this table's
+        self.context_map: dict = {}
+        self._vectors = table.vectors_of
+
+    # ---------------------------------------------------------------- sending
+    def prepare(self, state: Hashable) -> tuple[bytes, tuple[bytes, bytes]]:
+        frame, data = self._vectors(state)
+        return frame + data, (frame, data)
+
+    def owners(self, keys, items: Sequence[tuple[bytes, bytes]]):
+        """The owner of each state (its vectors): a hash over the fingerprints of its
+        context, program counter and values, position by position."""
+        np = self.np
+        self._fingerprint_new()
+        frames = np.frombuffer(b"".join(frame for frame, _ in items), np.uint32)
+        lengths = np.fromiter((len(frame) >> 2 for frame, _ in items), np.int64, len(items))
+        starts = np.cumsum(lengths) - lengths
+        with np.errstate(over="ignore"):
+            prints = np.take(self.value_print, frames, mode="clip")
+            prints[starts] = self.context_print[frames[starts]]
+            prints[starts + 1] = frames[starts + 1].astype(np.uint64) * np.uint64(_GOLDEN)
+            positions = np.arange(len(frames), dtype=np.uint64) - \
+                np.repeat(starts, lengths).astype(np.uint64)
+            mixed = np.add.reduceat(prints * (positions * np.uint64(2) + np.uint64(1))
+                                    * np.uint64(_MIX1), starts)
+            if self.data_length:
+                data = np.frombuffer(b"".join(data for _, data in items), np.uint32)
+                data = self.value_print[data].reshape(len(items), self.data_length)
+                weights = (np.arange(self.data_length, dtype=np.uint64) * np.uint64(2) +
+                           np.uint64(1)) * np.uint64(_MIX2)
+                mixed ^= (data * weights).sum(axis=1, dtype=np.uint64)
+            mixed ^= mixed >> np.uint64(30)
+            mixed *= np.uint64(_MIX1)
+            mixed ^= mixed >> np.uint64(27)
+            mixed *= np.uint64(_MIX2)
+            mixed ^= mixed >> np.uint64(31)
+        return (mixed % np.uint64(self.count)).tolist()
+
+    def _fingerprint_new(self) -> None:
+        """Fingerprints of the values and contexts the table numbered since the last call."""
+        np, table = self.np, self.table
+        known = len(self.value_print)
+        values = table.exported_values(known)
+        if values:
+            self.value_print = np.concatenate(
+                (self.value_print, np.fromiter(map(fingerprint, values), np.uint64, len(values))))
+        known = len(self.context_print)
+        if table.context_count() > known:
+            contexts = [context for context, _ in table.exported_contexts(known)]
+            self.context_print = np.concatenate(
+                (self.context_print, np.fromiter(map(fingerprint, contexts), np.uint64,
+                                                 len(contexts))))
+
+    def encode(self, target: int, items: list, parents: array) -> bytes:
+        """A batch for ``target``: the values and contexts numbered since the last batch to
+        it, the frame vectors' lengths, the frame and data vectors, the parents' ids."""
+        table = self.table
+        values = contexts = ()
+        if target != self.index:
+            values = table.exported_values(self.sent_values[target])
+            self.sent_values[target] += len(values)
+            contexts = table.exported_contexts(self.sent_contexts[target])
+            self.sent_contexts[target] += len(contexts)
+        lengths = array("I", [len(frame) >> 2 for frame, _ in items])
+        return pickle.dumps((values, contexts, lengths,
+                             b"".join(frame for frame, _ in items),
+                             b"".join(data for _, data in items), parents), protocol=PROTOCOL)
+
+    # -------------------------------------------------------------- receiving
+    def store(self, sender: int, blob: bytes) -> Iterator[tuple[int, bool, int]]:
+        np, table = self.np, self.table
+        values, contexts, lengths, frames, data, parents = pickle.loads(blob)
+        frames = np.frombuffer(frames, np.uint32)
+        data = np.frombuffer(data, np.uint32)
+        if sender != self.index:                       # its ids -> this table's ids
+            value_map = self.value_map.get(sender, np.zeros(0, np.uint32))
+            if values:
+                value_map = np.concatenate(
+                    (value_map, np.frombuffer(table.value_ids(values), np.uint32)))
+            context_map = self.context_map.get(sender, np.zeros(0, np.uint32))
+            if contexts:
+                context_map = np.concatenate(
+                    (context_map, np.array([table.import_context(context, flags)
+                                            for context, flags in contexts], np.uint32)))
+            self.value_map[sender], self.context_map[sender] = value_map, context_map
+            lengths_np = np.frombuffer(lengths, np.uint32).astype(np.int64)
+            starts = np.cumsum(lengths_np) - lengths_np
+            mapped = np.take(value_map, frames, mode="clip") if len(value_map) \
+                else frames.copy()
+            if len(starts):
+                mapped[starts] = context_map[frames[starts]]
+                mapped[starts + 1] = frames[starts + 1]
+            frames = mapped
+            data = value_map[data] if len(data) else data
+        frames, data = frames.tobytes(), data.tobytes()
+        intern = table.intern_vectors
+        step = self.data_length * 4
+        at = 0
+        for number, length in enumerate(lengths):
+            end = at + 4 * length
+            state_id, new = intern(frames[at:end], data[number * step:(number + 1) * step], True)
+            at = end
+            yield state_id, new, parents[number]
+
+    def owns(self, state: Hashable, index: int) -> bool:
+        key, item = self.prepare(state)
+        return self.owners([key], [item])[0] == index
