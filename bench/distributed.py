@@ -121,27 +121,14 @@ def measure_ltl(name: str, mode: str, workers: int) -> dict:
 def measure_split(name: str, modulo: int) -> dict:
     """CPU seconds of a worker's parts, two partitions driven here (module docstring)."""
     from rapidmc.check import find_reachable
-    from rapidmc.check.distributed.partition import Partition, SystemSource, encode_batch
+    from rapidmc.check.distributed.partition import search_here
     system = model_of(name, modulo).system
     started = time.process_time()
     single = find_reachable(system, system.failed, max_states=None)
-    cpu = {"single": time.process_time() - started, "expand": 0.0, "receive": 0.0}
-    parts = [Partition(), Partition()]
-    for index, part in enumerate(parts):
-        part.start(index, 2, SystemSource(system), "failed", False)
-    initial = encode_batch((list(system.initial_states()), []))
-    for part in parts:
-        part.receive([-1], initial)
-    while True:
-        started = time.process_time()
-        outgoing = [part.expand() for part in parts]       # (batches encoded: bytes)
-        cpu["expand"] += time.process_time() - started
-        started = time.process_time()
-        answers = [part.receive([0, 1], outgoing[0][target], outgoing[1][target])
-                   for target, part in enumerate(parts)]
-        cpu["receive"] += time.process_time() - started
-        if not sum(new for _, new, _ in answers):
-            break
+    cpu = {"single": time.process_time() - started}
+    started = time.process_time()
+    parts, _, _ = search_here(system, 2)
+    cpu["split"] = time.process_time() - started
     states = sum(len(part.table) for part in parts)
     assert states == single.stats.product_states
     return {"states": states, "cpu": cpu, "codec": type(parts[0].codec).__name__,
@@ -241,13 +228,13 @@ def main() -> None:
 
 
 def print_split(names, modulo: int) -> None:
-    print(f"{'model':16} {'states':>9} {'1 proc s':>8} {'expand s':>8} {'receive s':>9} "
-          f"{'sum/2 s':>8} {'B sent/st':>9} codec")
+    print(f"{'model':16} {'states':>9} {'1 proc s':>8} {'2 parts s':>9} {'sum/2 s':>8} "
+          f"{'CPU x':>6} {'B sent/st':>9} codec")
     for name in names:
         found = fresh(name, "split", modulo, 2)
         cpu, states = found["cpu"], found["states"]
-        print(f"{name:16} {states:>9,} {cpu['single']:>8.2f} {cpu['expand']:>8.2f} "
-              f"{cpu['receive']:>9.2f} {(cpu['expand'] + cpu['receive']) / 2:>8.2f} "
+        print(f"{name:16} {states:>9,} {cpu['single']:>8.2f} {cpu['split']:>9.2f} "
+              f"{cpu['split'] / 2:>8.2f} {2 * cpu['single'] / cpu['split']:>5.2f}x "
               f"{found['bytes'] / states:>9.0f} {found['codec']}", flush=True)
 
 

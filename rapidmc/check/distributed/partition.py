@@ -245,3 +245,26 @@ class Partition:
                 "cpu_seconds": time.process_time() - self.cpu_started,
                 "step_seconds": self.step_seconds, "sent_bytes": self.sent_bytes,
                 "max_rss_kb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss}
+
+
+def search_here(system, count: int, predicate: str = "failed") -> tuple[list, int, tuple]:
+    """The partitioned search with ``count`` partitions driven in this process, level by
+    level as ``search`` drives the actors (no Ray): for tests and bench/distributed.py.
+    Returns (the partitions, levels, the first (partition, state id) the predicate marks
+    or None)."""
+    parts = [Partition() for _ in range(count)]
+    for index, part in enumerate(parts):
+        part.start(index, count, SystemSource(system), predicate, False)
+    initial = encode_batch((list(system.initial_states()), []))
+    stepped = [part.step([-1], initial) for part in parts]
+    senders = list(range(count))
+    levels = 1
+    while True:
+        for index, answer in enumerate(stepped):
+            if answer[count][2] >= 0:
+                return parts, levels, (index, answer[count][2])
+        if not sum(answer[count][1] for answer in stepped):
+            return parts, levels, None
+        stepped = [part.step(senders, *[answer[target] for answer in stepped])
+                   for target, part in enumerate(parts)]
+        levels += 1
