@@ -197,8 +197,13 @@ def main() -> None:
     parser.add_argument("--ltl", action="store_true", help="time the LTL searches instead")
     parser.add_argument("--split", action="store_true",
                         help="where a worker's CPU time goes (no Ray)")
+    parser.add_argument("--issue", action="store_true",
+                        help="the issue's figures only: the whole-controller family and "
+                             "counters N=10 (a few minutes on a quiet machine)")
     parser.add_argument("--measure", nargs=2, default=None, help=argparse.SUPPRESS)
     args = parser.parse_args()
+    if args.issue:
+        args.counters, args.ltl, args.split, args.only = "10", False, False, None
     if args.measure is not None:
         print(json.dumps(measure(*args.measure, args.modulo, args.workers)))
         return
@@ -208,13 +213,67 @@ def main() -> None:
     if args.split:
         print_split(names, args.modulo)
         return
-    modes = ("ltl-single", "ltl-workers") if args.ltl else ("single", "workers")
-    print(f"{'model':16} {'states':>9} {'1 proc s':>8} {f'{args.workers} wkr s':>8} "
+    print(f"uptime at the start: {uptime()}", flush=True)
+    if args.ltl:
+        print_ltl(names, args.modulo, args.workers)
+    else:
+        print_safety(names, args.modulo, args.workers)
+    print(f"uptime at the end: {uptime()}")
+
+
+def uptime() -> str:
+    return subprocess.run(["uptime"], capture_output=True, text=True).stdout.strip()
+
+
+def print_safety(names, modulo: int, workers: int) -> None:
+    """One process against the workers, per model, then the whole-controller family's totals
+    (the issue's speed target) and each worker's peak RSS against one process's."""
+    print(f"{'model':16} {'states':>9} {'levels':>6} {'1 proc s':>8} {f'{workers} wkr s':>8} "
+          f"{'wall x':>6} {'1 CPU s':>7} {'wkr CPU s':>11} {'in step s':>11} {'CPU x':>6} "
+          f"{'B/state':>7} {'RSS 1 MB':>8} {'RSS wkr MB':>11} {'RSS %':>5} {'balance':>7}",
+          flush=True)
+    family = {"single": 0.0, "workers": 0.0, "single_cpu": 0.0, "worker_cpu": 0.0}
+    for name in names:
+        single = fresh(name, "single", modulo, workers)
+        spread = fresh(name, "workers", modulo, workers)
+        assert (single["verdict"], single["states"]) == (spread["verdict"], spread["states"])
+        states = single["states"]
+        busiest = max(spread["worker_cpu"])
+        heaviest = max(spread["worker_rss_kb"])
+        print(f"{name:16} {states:>9,} {spread['levels']:>6} {single['seconds']:>8.2f} "
+              f"{spread['seconds']:>8.2f} {single['seconds'] / spread['seconds']:>5.2f}x "
+              f"{single['cpu']:>7.2f} {_each(spread['worker_cpu'], '.1f'):>11} "
+              f"{_each(spread['worker_step_cpu'], '.1f'):>11} {single['cpu'] / busiest:>5.2f}x "
+              f"{spread['sent_bytes'] / states:>7.0f} {single['max_rss_kb'] / 1024:>8.0f} "
+              f"{_each([kb / 1024 for kb in spread['worker_rss_kb']], '.0f'):>11} "
+              f"{100 * heaviest / single['max_rss_kb']:>5.0f} "
+              f"{_each([100 * n / states for n in spread['worker_states']], '.0f'):>7}",
+              flush=True)
+        if not name.startswith("counters"):
+            family["single"] += single["seconds"]
+            family["workers"] += spread["seconds"]
+            family["single_cpu"] += single["cpu"]
+            family["worker_cpu"] += busiest
+    if family["workers"]:
+        print(f"whole-controller family: {family['single']:.2f} s in one process, "
+              f"{family['workers']:.2f} s on {workers} workers: "
+              f"{family['single'] / family['workers']:.2f}x wall; CPU: "
+              f"{family['single_cpu']:.2f} s against {family['worker_cpu']:.2f} s of the "
+              f"busier worker: {family['single_cpu'] / family['worker_cpu']:.2f}x")
+
+
+def _each(values, form: str) -> str:
+    return "/".join(format(value, form) for value in values)
+
+
+def print_ltl(names, modulo: int, workers: int) -> None:
+    modes = ("ltl-single", "ltl-workers")
+    print(f"{'model':16} {'states':>9} {'1 proc s':>8} {f'{workers} wkr s':>8} "
           f"{'speed-up':>8} {'us/state':>8} {'start s':>7} {'sent/st':>7} {'B/state':>7} "
           f"{'RSS 1 MB':>8} {'RSS wkr MB':>12} {'balance':>9} {'wkr CPU s':>11}")
     for name in names:
-        single = fresh(name, modes[0], args.modulo, args.workers)
-        spread = fresh(name, modes[1], args.modulo, args.workers)
+        single = fresh(name, modes[0], modulo, workers)
+        spread = fresh(name, modes[1], modulo, workers)
         assert (single["verdict"], single["states"]) == (spread["verdict"], spread["states"])
         states = single["states"]
         rss = "/".join(f"{kb / 1024:.0f}" for kb in spread["worker_rss_kb"])

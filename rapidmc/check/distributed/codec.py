@@ -17,10 +17,12 @@ Two codecs, one per kind of state table, with one interface (``Partition`` uses 
 * ``PickleCodec``, for every other table (the Python engine, models without a packed
   table): states travel pickled, owned by ``canonical.owner``.
 
-Interface: ``prepare(state) -> (key, item)`` (equal keys: equal states, for the level's
-deduplication), ``owners(keys, items)`` (a chunk at a time), ``encode(target, items,
-parents)``, ``store(sender, data)`` (stores the batch's states, yields (id, new, parent id)),
-``owns(state)``.
+Interface: ``successor_keys(id, state, successors)`` (a key per successor, in the model's
+order, from the successor states or from ``successors(state)``; equal keys: equal states,
+for the level's deduplication), ``route(keys) -> (owners, items)`` (a chunk at a time),
+``outbox()`` and ``post(outbox, item, parent id)`` (a batch being written: bytes as it
+grows, not an object per state), ``encode(target, outbox)``, ``store(sender, data)``
+(stores the batch's states, yields (id, new, parent id)), ``owns(state, index)``.
 """
 from __future__ import annotations
 
@@ -29,7 +31,7 @@ import pickle
 from array import array
 from typing import Hashable, Iterator, Sequence
 
-from .canonical import canonical_bytes, owner, owner_of_bytes
+from .canonical import canonical_bytes, owner, owner_of_bytes, state_bytes
 
 PROTOCOL = pickle.HIGHEST_PROTOCOL
 
@@ -47,22 +49,45 @@ def codec_for(table, index: int, count: int):
     return PickleCodec(table, count)
 
 
+class _Keyed:
+    """A successor with its canonical bytes, equal (and hashed) by those bytes alone."""
+    __slots__ = ("encoded", "state")
+
+    def __init__(self, encoded: bytes, state):
+        self.encoded, self.state = encoded, state
+
+    def __eq__(self, other) -> bool:
+        return self.encoded == other.encoded
+
+    def __hash__(self) -> int:
+        return hash(self.encoded)
+
+
 class PickleCodec:
     """States pickled by the standard C pickler, owned by ``canonical.owner``."""
 
     def __init__(self, table, count: int):
         self.table, self.count = table, count
 
-    def prepare(self, state: Hashable) -> tuple[bytes, Hashable]:
-        from .canonical import _state_bytes
-        return _state_bytes(state), state
+    def successor_keys(self, state_id: int, state, successors) -> list:
+        """Keys: (canonical bytes, the state)."""
+        if callable(successors):
+            successors = successors(state)
+        return [_Keyed(state_bytes(successor), successor) for successor in successors]
 
-    def owners(self, keys: Sequence[bytes], items) -> list[int]:
+    def route(self, keys: Sequence["_Keyed"]) -> tuple[list[int], list]:
         count = self.count
-        return [owner_of_bytes(key, count) for key in keys]
+        return [owner_of_bytes(key.encoded, count) for key in keys], [key.state for key in keys]
 
-    def encode(self, target: int, items: list, parents: array) -> bytes:
-        return pickle.dumps((items, parents), protocol=PROTOCOL)
+    def outbox(self) -> tuple[list, array]:
+        return [], array("q")
+
+    def post(self, outbox, item, parent: int) -> None:
+        outbox[0].append(item)
+        outbox[1].append(parent)
+
+    def encode(self, target: int, outbox) -> bytes:
+        return pickle.dumps(outbox, protocol=PROTOCOL)
 
     def store(self, sender: int, data: bytes) -> Iterator[tuple[int, bool, int]]:
         states, parents = pickle.loads(data)
@@ -101,13 +126,36 @@ class VectorCodec:
         self.value_map: dict = {}            # per sender: its value id -> this table's
         self.context_map: dict = {}
         self._vectors = table.vectors_of
+        self._intern_parts, self._segments = table.intern_parts, table.segments
+        self._machine = table.step                 # (None: the state is Python's to step)
 
     # ---------------------------------------------------------------- sending
-    def prepare(self, state: Hashable) -> tuple[bytes, tuple[bytes, bytes]]:
-        frame, data = self._vectors(state)
-        return frame + data, (frame, data)
+    # A successor's key is its interned segments, ``frame id << 32 | data id`` in this table
+    # (equal states, equal segments): the step machine gives them without building the
+    # state (``step``), and a state Python stepped is written to its vectors once.
+    def successor_keys(self, state_id: int, state, successors) -> list[int]:
+        if callable(successors):
+            found = self._machine(state_id)
+            if found is not None:
+                return [frame << 32 | data for frame, data in found]
+            successors = successors(state)
+        vectors, intern = self._vectors, self._intern_parts
+        keys = []
+        for successor in successors:
+            frame, data = intern(*vectors(successor))
+            keys.append(frame << 32 | data)
+        return keys
 
-    def owners(self, keys, items: Sequence[tuple[bytes, bytes]]):
+    def prepare(self, state: Hashable) -> tuple[bytes, bytes]:
+        """The state's vectors (for ``owners``, ``post``)."""
+        return self._vectors(state)
+
+    def route(self, keys: Sequence[int]) -> tuple[list[int], list[tuple[bytes, bytes]]]:
+        segments = self._segments
+        items = [segments(key >> 32, key & 0xFFFFFFFF) for key in keys]
+        return self.owners(items), items
+
+    def owners(self, items: Sequence[tuple[bytes, bytes]]) -> list[int]:
         """The owner of each state (its vectors): a hash over the fingerprints of its
         context, program counter and values, position by position."""
         np = self.np
@@ -151,9 +199,22 @@ class VectorCodec:
                 (self.context_print, np.fromiter(map(fingerprint, contexts), np.uint64,
                                                  len(contexts))))
 
-    def encode(self, target: int, items: list, parents: array) -> bytes:
+    def outbox(self) -> tuple[bytearray, bytearray, array, array]:
+        """A batch being written: frame vectors, data vectors, the frames' lengths (in ids),
+        the parents' ids."""
+        return bytearray(), bytearray(), array("I"), array("q")
+
+    def post(self, outbox, item: tuple[bytes, bytes], parent: int) -> None:
+        frames, data, lengths, parents = outbox
+        frame = item[0]
+        frames += frame
+        data += item[1]
+        lengths.append(len(frame) >> 2)
+        parents.append(parent)
+
+    def encode(self, target: int, outbox) -> bytes:
         """A batch for ``target``: the values and contexts numbered since the last batch to
-        it, the frame vectors' lengths, the frame and data vectors, the parents' ids."""
+        it, then the outbox."""
         table = self.table
         values = contexts = ()
         if target != self.index:
@@ -161,15 +222,12 @@ class VectorCodec:
             self.sent_values[target] += len(values)
             contexts = table.exported_contexts(self.sent_contexts[target])
             self.sent_contexts[target] += len(contexts)
-        lengths = array("I", [len(frame) >> 2 for frame, _ in items])
-        return pickle.dumps((values, contexts, lengths,
-                             b"".join(frame for frame, _ in items),
-                             b"".join(data for _, data in items), parents), protocol=PROTOCOL)
+        return pickle.dumps((values, contexts, *outbox), protocol=PROTOCOL)
 
     # -------------------------------------------------------------- receiving
     def store(self, sender: int, blob: bytes) -> Iterator[tuple[int, bool, int]]:
         np, table = self.np, self.table
-        values, contexts, lengths, frames, data, parents = pickle.loads(blob)
+        values, contexts, frames, data, lengths, parents = pickle.loads(blob)
         frames = np.frombuffer(frames, np.uint32)
         data = np.frombuffer(data, np.uint32)
         if sender != self.index:                       # its ids -> this table's ids
@@ -203,5 +261,4 @@ class VectorCodec:
             yield state_id, new, parents[number]
 
     def owns(self, state: Hashable, index: int) -> bool:
-        key, item = self.prepare(state)
-        return self.owners([key], [item])[0] == index
+        return self.owners([self.prepare(state)])[0] == index

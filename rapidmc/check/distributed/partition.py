@@ -108,6 +108,8 @@ class Partition:
         self.cpu_started = time.process_time()  # (figures: CPU seconds of this search)
         self.step_seconds = 0.0                # ... of which in ``step`` (the rest: Ray's)
         self.sent_bytes = 0                    # bytes of the batches to other partitions
+        self.start_rss_kb = _peak_rss_kb()      # the process's peak before this search
+        self.peak_private_kb = 0               # (``_note_memory``)
 
     def receive(self, senders: Sequence[int], *batches) -> tuple[int, int, int]:
         """Store the new states of the batches (``senders[i]`` sent ``batches[i]``, written
@@ -140,6 +142,19 @@ class Partition:
             return self._step(senders, batches)
         finally:
             self.step_seconds += time.process_time() - started
+            self._note_memory()
+
+    def _note_memory(self) -> None:
+        """The largest memory of this process not shared with Ray's object store, after
+        each level (Linux: /proc; the peak RSS counts the store's pages this process
+        mapped, which the one-process search has none of)."""
+        try:
+            with open("/proc/self/status") as status:
+                fields = dict(line.split(":", 1) for line in status)
+            private = int(fields["RssAnon"].split()[0]) + int(fields["RssFile"].split()[0])
+        except (OSError, KeyError, ValueError):
+            return
+        self.peak_private_kb = max(self.peak_private_kb, private)
 
     def _step(self, senders: Sequence[int], batches) -> tuple:
         stored, new, _ = self.receive(senders, *batches)
@@ -150,7 +165,7 @@ class Partition:
         return (*outgoing, (stored, new, *figures))
 
     def _nothing(self) -> list:
-        return [self.codec.encode(target, [], array("q")) for target in range(self.count)]
+        return [self.codec.encode(target, self.codec.outbox()) for target in range(self.count)]
 
     def expand(self) -> tuple:
         """Step the states stored since the last call: one batch per partition, then the
@@ -162,26 +177,27 @@ class Partition:
         successors_of = getattr(self.system, "successor_states", None)
         if successors_of is None:
             successors_of = self._targets
+        watch = self.watch
+        keys_of = codec.successor_keys
         predicate = self.predicate
-        items: list = [[] for _ in range(count)]
-        parents = [array("q") for _ in range(count)]
+        outboxes = [codec.outbox() for _ in range(count)]
+        post = codec.post
         # a successor reached again in this level is sent once (its first parent, as its
         # owner would keep): storing a state costs its owner more than encoding it here
         sending: set = set()
-        keys: list = []
         pending: list = []
         pending_parents: list = []
+        sent = [0] * count
         transitions = deadlocks = 0
         deadlock_target = -1
         watched = self.watched
         end = len(table)
 
         def flush():
-            for target, item, parent_id in zip(codec.owners(keys, pending), pending,
-                                               pending_parents):
-                items[target].append(item)
-                parents[target].append(parent_id)
-            keys.clear()
+            owners, items = codec.route(pending)
+            for target, item, parent_id in zip(owners, items, pending_parents):
+                post(outboxes[target], item, parent_id)
+                sent[target] += 1
             pending.clear()
             pending_parents.clear()
 
@@ -191,21 +207,23 @@ class Partition:
                 self.expanded = end
                 return (*self._nothing(), (state_id, self.transitions, self.deadlocks, -1,
                                            self.watched))
-            successors = successors_of(state)
-            if self.watch is not None and not watched and self.watch(state, successors):
-                watched = True
-            transitions += len(successors)
-            if not successors:
+            if watch is None:
+                keys = keys_of(state_id, state, successors_of)
+            else:                              # (it wants the successor states)
+                successors = successors_of(state)
+                if not watched and watch(state, successors):
+                    watched = True
+                keys = keys_of(state_id, state, successors)
+            transitions += len(keys)
+            if not keys:
                 deadlocks += 1
                 if self.deadlock_is_target and deadlock_target < 0:
                     deadlock_target = state_id
-            for successor in successors:
-                key, item = codec.prepare(successor)
+            for key in keys:
                 if key in sending:
                     continue
                 sending.add(key)
-                keys.append(key)
-                pending.append(item)
+                pending.append(key)
                 pending_parents.append(state_id)
             if len(pending) >= CHUNK:
                 flush()
@@ -215,9 +233,8 @@ class Partition:
         self.transitions += transitions
         self.deadlocks += deadlocks
         self.watched = watched
-        self.sent += sum(len(batch) for target, batch in enumerate(items) if target != index)
-        outgoing = [codec.encode(target, items[target], parents[target])
-                    for target in range(count)]
+        self.sent += sum(sent) - sent[index]
+        outgoing = [codec.encode(target, outboxes[target]) for target in range(count)]
         self.sent_bytes += sum(len(batch) for target, batch in enumerate(outgoing)
                                if target != index)
         return (*outgoing,
@@ -237,14 +254,19 @@ class Partition:
 
     def figures(self) -> dict:
         """What this partition holds: states, bytes, engine, and the process's peak memory."""
-        import resource
         table = self.table
         return {"states": len(table), "transitions": self.transitions, "sent": self.sent,
                 "bytes": table.memory_bytes() + len(self.parent) * self.parent.itemsize,
                 "engine": engine_of(table),
                 "cpu_seconds": time.process_time() - self.cpu_started,
                 "step_seconds": self.step_seconds, "sent_bytes": self.sent_bytes,
-                "max_rss_kb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss}
+                "start_rss_kb": self.start_rss_kb, "peak_private_kb": self.peak_private_kb,
+                "max_rss_kb": _peak_rss_kb()}
+
+
+def _peak_rss_kb() -> int:
+    import resource
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
 
 
 def search_here(system, count: int, predicate: str = "failed") -> tuple[list, int, tuple]:
