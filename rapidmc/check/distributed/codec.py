@@ -28,12 +28,15 @@ from __future__ import annotations
 
 import hashlib
 import pickle
+import struct
 from array import array
 from typing import Hashable, Iterator, Sequence
 
 from .canonical import canonical_bytes, owner, owner_of_bytes, state_bytes
 
 PROTOCOL = pickle.HIGHEST_PROTOCOL
+_SIZES = struct.Struct("<QQQQ")    # a vector batch's header, frames, data sizes; states
+SLICE = 1 << 16                    # states of a received batch translated at a time
 
 
 def codec_for(table, index: int, count: int):
@@ -222,43 +225,74 @@ class VectorCodec:
             self.sent_values[target] += len(values)
             contexts = table.exported_contexts(self.sent_contexts[target])
             self.sent_contexts[target] += len(contexts)
-        return pickle.dumps((values, contexts, *outbox), protocol=PROTOCOL)
+        frames, data, lengths, parents = outbox
+        header = pickle.dumps((values, contexts), protocol=PROTOCOL)
+        return b"".join((_SIZES.pack(len(header), len(frames), len(data), len(lengths)),
+                         header, frames, data, lengths, parents))
 
     # -------------------------------------------------------------- receiving
     def store(self, sender: int, blob: bytes) -> Iterator[tuple[int, bool, int]]:
+        """The batch's states stored, read in place (views of ``blob``) and translated a
+        slice at a time, so a large batch is not copied whole."""
         np, table = self.np, self.table
-        values, contexts, frames, data, lengths, parents = pickle.loads(blob)
-        frames = np.frombuffer(frames, np.uint32)
-        data = np.frombuffer(data, np.uint32)
-        if sender != self.index:                       # its ids -> this table's ids
-            value_map = self.value_map.get(sender, np.zeros(0, np.uint32))
-            if values:
-                value_map = np.concatenate(
-                    (value_map, np.frombuffer(table.value_ids(values), np.uint32)))
-            context_map = self.context_map.get(sender, np.zeros(0, np.uint32))
-            if contexts:
-                context_map = np.concatenate(
-                    (context_map, np.array([table.import_context(context, flags)
-                                            for context, flags in contexts], np.uint32)))
-            self.value_map[sender], self.context_map[sender] = value_map, context_map
-            lengths_np = np.frombuffer(lengths, np.uint32).astype(np.int64)
-            starts = np.cumsum(lengths_np) - lengths_np
-            mapped = np.take(value_map, frames, mode="clip") if len(value_map) \
-                else frames.copy()
-            if len(starts):
-                mapped[starts] = context_map[frames[starts]]
-                mapped[starts + 1] = frames[starts + 1]
-            frames = mapped
-            data = value_map[data] if len(data) else data
-        frames, data = frames.tobytes(), data.tobytes()
+        view = memoryview(blob)
+        header_size, frames_size, data_size, count = _SIZES.unpack_from(view)
+        at = _SIZES.size
+        values, contexts = pickle.loads(view[at:at + header_size])
+        at += header_size
+        frames = np.frombuffer(view[at:at + frames_size], np.uint32)
+        at += frames_size
+        data = np.frombuffer(view[at:at + data_size], np.uint32)
+        at += data_size
+        lengths = np.frombuffer(view[at:at + 4 * count], np.uint32)
+        at += 4 * count
+        parents = array("q")
+        parents.frombytes(view[at:at + 8 * count])
+        foreign = sender != self.index
+        if foreign:
+            value_map, context_map = self._maps(sender, values, contexts)
+        ends = np.cumsum(lengths, dtype=np.int64)
+        width = self.data_length
         intern = table.intern_vectors
-        step = self.data_length * 4
-        at = 0
-        for number, length in enumerate(lengths):
-            end = at + 4 * length
-            state_id, new = intern(frames[at:end], data[number * step:(number + 1) * step], True)
-            at = end
-            yield state_id, new, parents[number]
+        for first in range(0, count, SLICE):
+            last = min(first + SLICE, count)
+            begin = int(ends[first - 1]) if first else 0
+            some_frames = frames[begin:int(ends[last - 1])] if last > first else frames[:0]
+            some_data = data[first * width:last * width]
+            starts = ends[first:last] - lengths[first:last] - begin
+            if foreign:                                # its ids -> this table's ids
+                mapped = np.take(value_map, some_frames, mode="clip") if len(value_map) \
+                    else some_frames.copy()
+                mapped[starts] = context_map[some_frames[starts]]
+                mapped[starts + 1] = some_frames[starts + 1]
+                some_frames = mapped
+                some_data = value_map[some_data] if len(some_data) else some_data
+            frame_bytes, data_bytes = some_frames.tobytes(), some_data.tobytes()
+            step = 4 * width
+            offset = 0
+            for number in range(first, last):
+                end = offset + 4 * int(lengths[number])
+                local = number - first
+                state_id, new = intern(frame_bytes[offset:end],
+                                       data_bytes[local * step:(local + 1) * step], True)
+                offset = end
+                yield state_id, new, parents[number]
+
+    def _maps(self, sender: int, values, contexts) -> tuple:
+        """The arrays from ``sender``'s value and context ids to this table's, extended by
+        the values and contexts it handed over with this batch."""
+        np, table = self.np, self.table
+        value_map = self.value_map.get(sender, np.zeros(0, np.uint32))
+        if values:
+            value_map = np.concatenate(
+                (value_map, np.frombuffer(table.value_ids(values), np.uint32)))
+        context_map = self.context_map.get(sender, np.zeros(0, np.uint32))
+        if contexts:
+            context_map = np.concatenate(
+                (context_map, np.array([table.import_context(context, flags)
+                                        for context, flags in contexts], np.uint32)))
+        self.value_map[sender], self.context_map[sender] = value_map, context_map
+        return value_map, context_map
 
     def owns(self, state: Hashable, index: int) -> bool:
         return self.owners([self.prepare(state)])[0] == index

@@ -20,11 +20,13 @@ has one, else pickled.
 """
 from __future__ import annotations
 
+import contextlib
 import pickle
 import time
 from array import array
 from typing import Callable, Hashable, Optional, Sequence
 
+from ..collector import freeze_survivors, frozen_while_searching
 from ..native import engine_of, state_table
 from .codec import codec_for
 
@@ -86,6 +88,7 @@ class Partition:
 
     def __init__(self):
         self.table = None
+        self._frozen: Optional[contextlib.ExitStack] = None
 
     def start(self, index: int, count: int, source: "SystemSource", predicate: str,
               deadlock_is_target: bool, watch: Optional[str] = None) -> None:
@@ -105,6 +108,12 @@ class Partition:
         self.transitions = 0
         self.deadlocks = 0
         self.sent = 0                          # successors sent to other partitions
+        # what the search keeps is out of the cycle collector's reach, as in one process
+        # (``collector``: else its collections walk the model's caches again and again,
+        # which doubled a worker's CPU time on the two-task model)
+        self.finish()
+        self._frozen = contextlib.ExitStack()
+        self._frozen.enter_context(frozen_while_searching())
         self.cpu_started = time.process_time()  # (figures: CPU seconds of this search)
         self.step_seconds = 0.0                # ... of which in ``step`` (the rest: Ray's)
         self.sent_bytes = 0                    # bytes of the batches to other partitions
@@ -141,6 +150,7 @@ class Partition:
         try:
             return self._step(senders, batches)
         finally:
+            freeze_survivors()
             self.step_seconds += time.process_time() - started
             self._note_memory()
 
@@ -247,8 +257,15 @@ class Partition:
         """The state with this id and the link to its parent (``NO_PARENT`` for an initial one)."""
         return self.table[state_id], self.parent[state_id]
 
+    def finish(self) -> None:
+        """Hand the search's objects back to the cycle collector."""
+        if self._frozen is not None:
+            self._frozen.close()
+            self._frozen = None
+
     def clear(self) -> None:
         """Let the search's states go (the system stays, for the check's next search)."""
+        self.finish()
         self.__dict__.clear()
         self.__init__()
 
@@ -281,12 +298,16 @@ def search_here(system, count: int, predicate: str = "failed") -> tuple[list, in
     stepped = [part.step([-1], initial) for part in parts]
     senders = list(range(count))
     levels = 1
-    while True:
-        for index, answer in enumerate(stepped):
-            if answer[count][2] >= 0:
-                return parts, levels, (index, answer[count][2])
-        if not sum(answer[count][1] for answer in stepped):
-            return parts, levels, None
-        stepped = [part.step(senders, *[answer[target] for answer in stepped])
-                   for target, part in enumerate(parts)]
-        levels += 1
+    try:
+        while True:
+            for index, answer in enumerate(stepped):
+                if answer[count][2] >= 0:
+                    return parts, levels, (index, answer[count][2])
+            if not sum(answer[count][1] for answer in stepped):
+                return parts, levels, None
+            stepped = [part.step(senders, *[answer[target] for answer in stepped])
+                       for target, part in enumerate(parts)]
+            levels += 1
+    finally:
+        for part in parts:
+            part.finish()
