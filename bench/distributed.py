@@ -1,32 +1,35 @@
 """One process against a local Ray cluster of 2 workers (``--workers 2``, issue 29).
 
-Usage: python bench/distributed.py [--counters 6,7] [--modulo 4] [--only NAME] [--workers 2]
-                                   [--ltl] [--split]
+Usage: python bench/distributed.py [--issue] [--counters 6,7] [--modulo 4] [--only NAME]
+                                   [--workers 2] [--ltl] [--split]
 
 For each model, each in a fresh process: the run-time error search of a check (breadth-first,
 the whole reachable state space, since these programs have no run-time error), once in one
 process (``find_reachable``, the default engine) and once hash-partitioned over the workers
 (``check.distributed.search``).  Models: the whole-controller family of bench/tasks.py (two
-tasks sharing PERS data, interrupts, a socket server: steps mostly in Python, the general
-driver) and bench/check.py's counters family (N inputs, N counters modulo K: the compiled
-step machine where it is built).
+tasks sharing PERS data, interrupts, a socket server, a ROS server: steps mostly in Python)
+and bench/check.py's counters family (N inputs, N counters modulo K: the compiled step
+machine where it is built).
 
-Columns: states; wall seconds of the search (Ray's start-up is apart: "start s"); the speed-up
-of the workers; microseconds of wall time per state; the successors sent to another
-partition per state and the pickled bytes of a state (the message volume); the maximum
-resident set size of the single process and of each worker; each worker's CPU seconds in
-the search (against the wall time: how much of it a worker waited, for a core or for Ray).  The machine may be shared with
-other work: run it a few times.
+Columns: states; breadth-first levels; wall seconds of one process and of the workers (Ray's
+start-up apart) and their ratio; CPU seconds of the one process, of each worker (the whole
+process) and of that, in ``Partition.step`` (the rest is Ray's); the CPU speed-up (one
+process's CPU over the busier worker's: the wall speed-up on free cores, Ray's waits apart);
+bytes sent to other workers per state; peak RSS of the one process and of each worker (ru_maxrss,
+nothing subtracted: a worker's counts the pages of Ray's object store it touched) and the
+larger worker's against the one process's; each worker's share of the states.  Then the
+whole-controller family's totals (the issue's 1.7x target) and ``uptime`` before and after:
+the machine may be shared, where wall times mean little and CPU times are the figures.
+
+``--issue``: only the issue's figures, the whole-controller family and counters N=10 (a few
+minutes on a quiet 2-core machine).
 
 ``--ltl``: the same for each whole-controller model's LTL property (bench/tasks.py's, which
 holds: the whole product is searched), in one process (``check_property``, partial-order
 reduction off as on a cluster) against OWCTY on the workers (``owcty``).
 
-``--split``: where a worker's time goes, without Ray: two ``Partition`` objects driven in
-one process, CPU seconds of stepping, routing and pickling successors (``expand``: the
-model's ``successor_states``, the owner hash, ``encode_batch``) and of unpickling and storing
-what arrives (``receive``), beside the one-process search's CPU seconds.  Their sum over 2 is what each of 2 workers would spend without Ray's own
-costs.
+``--split``: without Ray, two partitions driven in one process (``partition.search_here``):
+their CPU seconds together against one process's, and the bytes they sent per state.
 """
 from __future__ import annotations
 
