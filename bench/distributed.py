@@ -1,32 +1,35 @@
 """One process against a local Ray cluster of 2 workers (``--workers 2``, issue 29).
 
-Usage: python bench/distributed.py [--counters 6,7] [--modulo 4] [--only NAME] [--workers 2]
-                                   [--ltl] [--split]
+Usage: python bench/distributed.py [--issue] [--counters 6,7] [--modulo 4] [--only NAME]
+                                   [--workers 2] [--ltl] [--split]
 
 For each model, each in a fresh process: the run-time error search of a check (breadth-first,
 the whole reachable state space, since these programs have no run-time error), once in one
 process (``find_reachable``, the default engine) and once hash-partitioned over the workers
 (``check.distributed.search``).  Models: the whole-controller family of bench/tasks.py (two
-tasks sharing PERS data, interrupts, a socket server: steps mostly in Python, the general
-driver) and bench/check.py's counters family (N inputs, N counters modulo K: the compiled
-step machine where it is built).
+tasks sharing PERS data, interrupts, a socket server, a ROS server: steps mostly in Python)
+and bench/check.py's counters family (N inputs, N counters modulo K: the compiled step
+machine where it is built).
 
-Columns: states; wall seconds of the search (Ray's start-up is apart: "start s"); the speed-up
-of the workers; microseconds of wall time per state; the successors sent to another
-partition per state and the pickled bytes of a state (the message volume); the maximum
-resident set size of the single process and of each worker; each worker's CPU seconds in
-the search (against the wall time: how much of it a worker waited, for a core or for Ray).  The machine may be shared with
-other work: run it a few times.
+Columns: states; breadth-first levels; wall seconds of one process and of the workers (Ray's
+start-up apart) and their ratio; CPU seconds of the one process, of each worker (the whole
+process) and of that, in ``Partition.step`` (the rest is Ray's); the CPU speed-up (one
+process's CPU over the busier worker's: the wall speed-up on free cores, Ray's waits apart);
+bytes sent to other workers per state; peak RSS of the one process and of each worker (ru_maxrss,
+nothing subtracted: a worker's counts the pages of Ray's object store it touched) and the
+larger worker's against the one process's; each worker's share of the states.  Then the
+whole-controller family's totals (the issue's 1.7x target) and ``uptime`` before and after:
+the machine may be shared, where wall times mean little and CPU times are the figures.
+
+``--issue``: only the issue's figures, the whole-controller family and counters N=10 (a few
+minutes on a quiet 2-core machine).
 
 ``--ltl``: the same for each whole-controller model's LTL property (bench/tasks.py's, which
 holds: the whole product is searched), in one process (``check_property``, partial-order
 reduction off as on a cluster) against OWCTY on the workers (``owcty``).
 
-``--split``: where a worker's time goes, without Ray: two ``Partition`` objects driven in
-one process, CPU seconds of stepping, routing and pickling successors (``expand``: the
-model's ``successor_states``, the owner hash, ``encode_batch``) and of unpickling and storing
-what arrives (``receive``), beside the one-process search's CPU seconds.  Their sum over 2 is what each of 2 workers would spend without Ray's own
-costs.
+``--split``: without Ray, two partitions driven in one process (``partition.search_here``):
+their CPU seconds together against one process's, and the bytes they sent per state.
 """
 from __future__ import annotations
 
@@ -121,36 +124,18 @@ def measure_ltl(name: str, mode: str, workers: int) -> dict:
 def measure_split(name: str, modulo: int) -> dict:
     """CPU seconds of a worker's parts, two partitions driven here (module docstring)."""
     from rapidmc.check import find_reachable
-    from rapidmc.check.distributed.canonical import owner
-    from rapidmc.check.distributed.partition import Partition, SystemSource, encode_batch
+    from rapidmc.check.distributed.partition import search_here
     system = model_of(name, modulo).system
     started = time.process_time()
     single = find_reachable(system, system.failed, max_states=None)
-    cpu = {"single": time.process_time() - started, "expand": 0.0, "receive": 0.0}
-    parts = [Partition(), Partition()]
-    for index, part in enumerate(parts):
-        part.start(index, 2, SystemSource(system), "failed", False)
-    batches = [([], []) for _ in parts]
-    for state in system.initial_states():
-        batches[owner(state, 2)][0].append(state)
-        batches[owner(state, 2)][1].append(-1)
-    for index, part in enumerate(parts):
-        part.receive([-1], encode_batch(batches[index]))
-    sent_bytes = 0
-    while True:
-        started = time.process_time()
-        outgoing = [part.expand() for part in parts]       # (batches pickled: bytes)
-        cpu["expand"] += time.process_time() - started
-        sent_bytes += sum(len(blob) for row in outgoing for blob in row[:2])
-        started = time.process_time()
-        answers = [part.receive([0, 1], outgoing[0][target], outgoing[1][target])
-                   for target, part in enumerate(parts)]
-        cpu["receive"] += time.process_time() - started
-        if not sum(new for _, new, _ in answers):
-            break
+    cpu = {"single": time.process_time() - started}
+    started = time.process_time()
+    parts, _, _ = search_here(system, 2)
+    cpu["split"] = time.process_time() - started
     states = sum(len(part.table) for part in parts)
     assert states == single.stats.product_states
-    return {"states": states, "cpu": cpu, "bytes": sent_bytes}
+    return {"states": states, "cpu": cpu, "codec": type(parts[0].codec).__name__,
+            "bytes": sum(part.sent_bytes for part in parts)}
 
 
 def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
@@ -163,11 +148,12 @@ def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
     system = model.system
     if mode == "single":
         from rapidmc.check import find_reachable
-        started = time.perf_counter()
+        started, cpu = time.perf_counter(), time.process_time()
         result = find_reachable(system, system.failed, max_states=None)
         seconds = time.perf_counter() - started
         return {"verdict": result.verdict, "states": result.stats.product_states,
                 "seconds": seconds, "engine": result.stats.engine,
+                "cpu": time.process_time() - cpu,
                 "max_rss_kb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss}
     import ray
     from rapidmc.check.budget import SearchBudget
@@ -181,16 +167,20 @@ def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
     partitioned_reachable(ray, workers, system, "failed", budget=SearchBudget(1),
                           rebuild=recipe)
     started = time.perf_counter()
+    driver_cpu = time.process_time()
     result, _, figures = partitioned_reachable(ray, workers, system, "failed",
                                                budget=SearchBudget(None), rebuild=recipe)
     seconds = time.perf_counter() - started
+    driver_cpu = time.process_time() - driver_cpu
     ray.shutdown()
     return {"verdict": result.verdict, "states": result.stats.product_states,
-            "seconds": seconds, "start_seconds": start_seconds,
+            "seconds": seconds, "start_seconds": start_seconds, "driver_cpu": driver_cpu,
+            "levels": result.stats.max_depth + 1,
             "sent": sum(f["sent"] for f in figures),
-            "pickled": pickled_bytes(system),
+            "sent_bytes": sum(f["sent_bytes"] for f in figures),
             "worker_rss_kb": [f["max_rss_kb"] for f in figures],
             "worker_cpu": [f["cpu_seconds"] for f in figures],
+            "worker_step_cpu": [f["step_seconds"] for f in figures],
             "worker_states": [f["states"] for f in figures]}
 
 
@@ -210,8 +200,13 @@ def main() -> None:
     parser.add_argument("--ltl", action="store_true", help="time the LTL searches instead")
     parser.add_argument("--split", action="store_true",
                         help="where a worker's CPU time goes (no Ray)")
+    parser.add_argument("--issue", action="store_true",
+                        help="the issue's figures only: the whole-controller family and "
+                             "counters N=10 (a few minutes on a quiet machine)")
     parser.add_argument("--measure", nargs=2, default=None, help=argparse.SUPPRESS)
     args = parser.parse_args()
+    if args.issue:
+        args.counters, args.ltl, args.split, args.only = "10", False, False, None
     if args.measure is not None:
         print(json.dumps(measure(*args.measure, args.modulo, args.workers)))
         return
@@ -221,13 +216,67 @@ def main() -> None:
     if args.split:
         print_split(names, args.modulo)
         return
-    modes = ("ltl-single", "ltl-workers") if args.ltl else ("single", "workers")
-    print(f"{'model':16} {'states':>9} {'1 proc s':>8} {f'{args.workers} wkr s':>8} "
+    print(f"uptime at the start: {uptime()}", flush=True)
+    if args.ltl:
+        print_ltl(names, args.modulo, args.workers)
+    else:
+        print_safety(names, args.modulo, args.workers)
+    print(f"uptime at the end: {uptime()}")
+
+
+def uptime() -> str:
+    return subprocess.run(["uptime"], capture_output=True, text=True).stdout.strip()
+
+
+def print_safety(names, modulo: int, workers: int) -> None:
+    """One process against the workers, per model, then the whole-controller family's totals
+    (the issue's speed target) and each worker's peak RSS against one process's."""
+    print(f"{'model':16} {'states':>9} {'levels':>6} {'1 proc s':>8} {f'{workers} wkr s':>8} "
+          f"{'wall x':>6} {'1 CPU s':>7} {'wkr CPU s':>11} {'in step s':>11} {'CPU x':>6} "
+          f"{'B/state':>7} {'RSS 1 MB':>8} {'RSS wkr MB':>11} {'RSS %':>5} {'balance':>7}",
+          flush=True)
+    family = {"single": 0.0, "workers": 0.0, "single_cpu": 0.0, "worker_cpu": 0.0}
+    for name in names:
+        single = fresh(name, "single", modulo, workers)
+        spread = fresh(name, "workers", modulo, workers)
+        assert (single["verdict"], single["states"]) == (spread["verdict"], spread["states"])
+        states = single["states"]
+        busiest = max(spread["worker_cpu"])
+        heaviest = max(spread["worker_rss_kb"])
+        print(f"{name:16} {states:>9,} {spread['levels']:>6} {single['seconds']:>8.2f} "
+              f"{spread['seconds']:>8.2f} {single['seconds'] / spread['seconds']:>5.2f}x "
+              f"{single['cpu']:>7.2f} {_each(spread['worker_cpu'], '.1f'):>11} "
+              f"{_each(spread['worker_step_cpu'], '.1f'):>11} {single['cpu'] / busiest:>5.2f}x "
+              f"{spread['sent_bytes'] / states:>7.0f} {single['max_rss_kb'] / 1024:>8.0f} "
+              f"{_each([kb / 1024 for kb in spread['worker_rss_kb']], '.0f'):>11} "
+              f"{100 * heaviest / single['max_rss_kb']:>5.0f} "
+              f"{_each([100 * n / states for n in spread['worker_states']], '.0f'):>7}",
+              flush=True)
+        if not name.startswith("counters"):
+            family["single"] += single["seconds"]
+            family["workers"] += spread["seconds"]
+            family["single_cpu"] += single["cpu"]
+            family["worker_cpu"] += busiest
+    if family["workers"]:
+        print(f"whole-controller family: {family['single']:.2f} s in one process, "
+              f"{family['workers']:.2f} s on {workers} workers: "
+              f"{family['single'] / family['workers']:.2f}x wall; CPU: "
+              f"{family['single_cpu']:.2f} s against {family['worker_cpu']:.2f} s of the "
+              f"busier worker: {family['single_cpu'] / family['worker_cpu']:.2f}x")
+
+
+def _each(values, form: str) -> str:
+    return "/".join(format(value, form) for value in values)
+
+
+def print_ltl(names, modulo: int, workers: int) -> None:
+    modes = ("ltl-single", "ltl-workers")
+    print(f"{'model':16} {'states':>9} {'1 proc s':>8} {f'{workers} wkr s':>8} "
           f"{'speed-up':>8} {'us/state':>8} {'start s':>7} {'sent/st':>7} {'B/state':>7} "
           f"{'RSS 1 MB':>8} {'RSS wkr MB':>12} {'balance':>9} {'wkr CPU s':>11}")
     for name in names:
-        single = fresh(name, modes[0], args.modulo, args.workers)
-        spread = fresh(name, modes[1], args.modulo, args.workers)
+        single = fresh(name, modes[0], modulo, workers)
+        spread = fresh(name, modes[1], modulo, workers)
         assert (single["verdict"], single["states"]) == (spread["verdict"], spread["states"])
         states = single["states"]
         rss = "/".join(f"{kb / 1024:.0f}" for kb in spread["worker_rss_kb"])
@@ -241,14 +290,14 @@ def main() -> None:
 
 
 def print_split(names, modulo: int) -> None:
-    print(f"{'model':16} {'states':>9} {'1 proc s':>8} {'expand s':>8} {'receive s':>9} "
-          f"{'sum/2 s':>8} {'B sent/st':>9}")
+    print(f"{'model':16} {'states':>9} {'1 proc s':>8} {'2 parts s':>9} {'sum/2 s':>8} "
+          f"{'CPU x':>6} {'B sent/st':>9} codec")
     for name in names:
         found = fresh(name, "split", modulo, 2)
         cpu, states = found["cpu"], found["states"]
-        print(f"{name:16} {states:>9,} {cpu['single']:>8.2f} {cpu['expand']:>8.2f} "
-              f"{cpu['receive']:>9.2f} {(cpu['expand'] + cpu['receive']) / 2:>8.2f} "
-              f"{found['bytes'] / states:>9.0f}", flush=True)
+        print(f"{name:16} {states:>9,} {cpu['single']:>8.2f} {cpu['split']:>9.2f} "
+              f"{cpu['split'] / 2:>8.2f} {2 * cpu['single'] / cpu['split']:>5.2f}x "
+              f"{found['bytes'] / states:>9.0f} {found['codec']}", flush=True)
 
 
 if __name__ == "__main__":

@@ -1401,16 +1401,27 @@ static PyObject *PackedTable_intern_vectors(PackedTable *self, PyObject *args)
 }
 
 /* (context, pc, locals, data values) of the segments ``frame_id`` and ``data_id`` */
-static PyObject *parts_of(PackedTable *self, int32_t frame_id, int32_t data_id)
+/* the items of a frame segment and a data segment (-1 and IndexError: no such segment) */
+static int segment_items(PackedTable *self, int32_t frame_id, int32_t data_id,
+                         const uint32_t **frame, Py_ssize_t *frame_length,
+                         const uint32_t **data, Py_ssize_t *data_length)
 {
     if (frame_id < 0 || frame_id >= self->frames.count || data_id < 0 ||
             data_id >= self->data.count) {
         PyErr_SetString(PyExc_IndexError, "no such state part");
-        return NULL;
+        return -1;
     }
+    *frame = vt_items(&self->frames, frame_id, frame_length);
+    *data = vt_items(&self->data, data_id, data_length);
+    return 0;
+}
+
+static PyObject *parts_of(PackedTable *self, int32_t frame_id, int32_t data_id)
+{
     Py_ssize_t frame_length, data_length;
-    const uint32_t *frame = vt_items(&self->frames, frame_id, &frame_length);
-    const uint32_t *data = vt_items(&self->data, data_id, &data_length);
+    const uint32_t *frame, *data;
+    if (segment_items(self, frame_id, data_id, &frame, &frame_length, &data, &data_length) < 0)
+        return NULL;
     PyObject *locals = values_of(self, frame + 2, frame_length - 2);
     PyObject *values = locals == NULL ? NULL : values_of(self, data, data_length);
     PyObject *result = values == NULL ? NULL :
@@ -1458,6 +1469,24 @@ static PyObject *PackedTable_intern_parts(PackedTable *self, PyObject *args)
     if (data_id < 0)
         return NULL;
     return Py_BuildValue("(ii)", frame_id, data_id);
+}
+
+/* ``segments(frame id, data id) -> (frame, data)``: interned segments' vectors as bytes
+ * (what ``intern_parts`` took): how a distributed search sends a successor the step
+ * machine found without building its values */
+static PyObject *PackedTable_segments(PackedTable *self, PyObject *args)
+{
+    int frame_id, data_id;
+    if (!PyArg_ParseTuple(args, "ii", &frame_id, &data_id))
+        return NULL;
+    Py_ssize_t frame_length, data_length;
+    const uint32_t *frame, *data;
+    if (segment_items(self, frame_id, data_id, &frame, &frame_length, &data, &data_length) < 0)
+        return NULL;
+    return Py_BuildValue("(y#y#)", (const char *)frame,
+                         (Py_ssize_t)(frame_length * (Py_ssize_t)sizeof(uint32_t)),
+                         (const char *)data,
+                         (Py_ssize_t)(data_length * (Py_ssize_t)sizeof(uint32_t)));
 }
 
 /* ``resets``: None, or (offsets: bytes of int32, pairs: bytes of int32) */
@@ -1775,6 +1804,8 @@ static PyMethodDef PackedTable_methods[] = {
      "parts(frame id, data id) -> (context, pc, locals, data): segments' contents"},
     {"intern_parts", (PyCFunction)PackedTable_intern_parts, METH_VARARGS,
      "intern_parts(frame, data) -> (frame id, data id): segments by their vectors"},
+    {"segments", (PyCFunction)PackedTable_segments, METH_VARARGS,
+     "segments(frame id, data id) -> (frame, data): interned segments' vectors as bytes"},
     {"set_program", (PyCFunction)PackedTable_set_program, METH_VARARGS,
      "set_program(store_length, io_length, routines, lazy, valuations): the compiled code"},
     {"step", (PyCFunction)PackedTable_step, METH_O,

@@ -34,13 +34,7 @@ def canonical_bytes(value: Hashable) -> bytes:
 
 def owner(value: Hashable, partitions: int) -> int:
     """The partition (0 .. partitions-1) that owns ``value``: the same in every process."""
-    return owner_of_bytes(_state_bytes(value), partitions)
-
-
-def owned_bytes(value: Hashable, partitions: int) -> tuple[bytes, int]:
-    """(``canonical_bytes(value)``, ``owner(value, partitions)``): equal bytes, equal values."""
-    encoded = _state_bytes(value)
-    return encoded, owner_of_bytes(encoded, partitions)
+    return owner_of_bytes(state_bytes(value), partitions)
 
 
 def owner_of_bytes(encoded: bytes, partitions: int) -> int:
@@ -48,11 +42,11 @@ def owner_of_bytes(encoded: bytes, partitions: int) -> int:
     return int.from_bytes(digest, "little") % partitions
 
 
-_PARTS: dict = {}          # a state's part -> its canonical bytes (see _state_bytes)
+_PARTS: dict = {}          # a state's part -> its canonical bytes (see state_bytes)
 MAX_PARTS = 1 << 17
 
 
-def _state_bytes(value) -> bytes:
+def state_bytes(value) -> bytes:
     """``canonical_bytes`` of a tuple-shaped state, each of its parts encoded once per
     process: successive states share most parts (a model changes a few per step), and
     writing them afresh in Python dominated the cost of a distributed search.  The cache is

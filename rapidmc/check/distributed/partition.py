@@ -11,24 +11,28 @@ A link is one number: ``sender << ID_BITS | id`` (the sender partition and the p
 there), -1 for an initial state, so parents cost an ``array`` slot each.
 
 The search runs in breadth-first levels.  ``receive`` takes the states that every
-partition (in partition order) sent this one at the end of the last level, stores the new
-ones in that order, and notes the first new one the predicate marks; ``expand`` steps every
-state stored since the previous ``expand`` and sorts their successors into one batch per
-owner.  States travel as the objects the model made, pickled (``encode_batch``; they are
-values, with no process's ids in them).
+partition (in partition order) sent this one at the end of the last level and stores the
+new ones in that order; ``expand`` steps every state stored since the previous ``expand``
+(asking the predicate of each first: the first one it marks ends the search) and sorts
+their successors into one batch per owner.  The worker's ``codec`` (``codec.py``) decides
+the owner of a state and how states travel: as the packed table's vectors where the model
+has one, else pickled.
 """
 from __future__ import annotations
 
+import contextlib
 import pickle
 import time
 from array import array
 from typing import Callable, Hashable, Optional, Sequence
 
+from ..collector import freeze_survivors, frozen_while_searching
 from ..native import engine_of, state_table
-from .canonical import owned_bytes
+from .codec import codec_for
 
 ID_BITS = 40
 ID_MASK = (1 << ID_BITS) - 1
+CHUNK = 4096            # successors whose owners are computed together (``codec.owners``)
 NO_PARENT = -1
 
 
@@ -84,6 +88,7 @@ class Partition:
 
     def __init__(self):
         self.table = None
+        self._frozen: Optional[contextlib.ExitStack] = None
 
     def start(self, index: int, count: int, source: "SystemSource", predicate: str,
               deadlock_is_target: bool, watch: Optional[str] = None) -> None:
@@ -97,81 +102,153 @@ class Partition:
         self.watch = getattr(system, watch) if watch is not None else None
         self.watched = False                   # whether it ever said True
         self.table = state_table(system, packed=True)
+        self.codec = codec_for(self.table, index, count)
         self.parent = array("q")
         self.expanded = 0                      # states before this id have been expanded
         self.transitions = 0
         self.deadlocks = 0
         self.sent = 0                          # successors sent to other partitions
+        # what the search keeps is out of the cycle collector's reach, as in one process
+        # (``collector``: else its collections walk the model's caches again and again,
+        # which doubled a worker's CPU time on the two-task model)
+        self.finish()
+        self._frozen = contextlib.ExitStack()
+        self._frozen.enter_context(frozen_while_searching())
         self.cpu_started = time.process_time()  # (figures: CPU seconds of this search)
+        self.step_seconds = 0.0                # ... of which in ``step`` (the rest: Ray's)
+        self.sent_bytes = 0                    # bytes of the batches to other partitions
+        self.start_rss_kb = _peak_rss_kb()      # the process's peak before this search
+        self.peak_private_kb = 0               # (``_note_memory``)
 
     def receive(self, senders: Sequence[int], *batches) -> tuple[int, int, int]:
-        """Store the new states of the batches (``senders[i]`` sent ``batches[i]``: a list of
-        states and an array of their parents' ids there).  Returns (states stored, states
-        new now, the id of the first new state the predicate marks or -1)."""
-        table, parent, predicate = self.table, self.parent, self.predicate
+        """Store the new states of the batches (``senders[i]`` sent ``batches[i]``, written
+        by the codec: states and their parents' ids there; sender -1: the initial states,
+        sent to every partition, of which each keeps those it owns).  Returns (states
+        stored, states new now, -1: the predicate is asked of a new state when ``expand``
+        comes to it)."""
+        table, parent = self.table, self.parent
         before = len(table)
-        target = -1
         for sender, batch in zip(senders, batches):
-            states, parents = decode_batch(batch)
-            for state, parent_id in zip(states, parents):
-                state_id, new = table.intern(state, True)
-                if not new:
-                    continue
-                parent.append(NO_PARENT if sender < 0 else link(sender, parent_id))
-                if target < 0 and predicate(state):
-                    target = state_id
-        return len(table), len(table) - before, target
+            if sender < 0:
+                for state in decode_batch(batch)[0]:
+                    if self.count == 1 or self.codec.owns(state, self.index):
+                        if table.intern(state, True)[1]:
+                            parent.append(NO_PARENT)
+                continue
+            high = sender << ID_BITS
+            for _, new, parent_id in self.codec.store(sender, batch):
+                if new:
+                    parent.append(high | parent_id)
+        return len(table), len(table) - before, -1
 
     def step(self, senders: Sequence[int], *batches) -> tuple:
         """``receive`` then ``expand`` in one call (one actor call per level: a call costs a
         worker milliseconds of CPU time): the batches ``expand`` makes, then (states
-        stored, new, the first target received or -1, and ``expand``'s figures).  Nothing is
-        expanded once a target was received or nothing was new."""
-        stored, new, target = self.receive(senders, *batches)
-        if target >= 0 or new == 0:
-            empty = encode_batch(([], array("q")))
-            return (*[empty] * self.count,
-                    (stored, new, target, self.transitions, self.deadlocks, -1, self.watched))
+        stored, new, the first new state the predicate marks or -1, and ``expand``'s
+        figures).  Nothing is sent once a target was found or nothing was new."""
+        started = time.process_time()
+        try:
+            return self._step(senders, batches)
+        finally:
+            freeze_survivors()
+            self.step_seconds += time.process_time() - started
+            self._note_memory()
+
+    def _note_memory(self) -> None:
+        """The largest memory of this process not shared with Ray's object store, after
+        each level (Linux: /proc; the peak RSS counts the store's pages this process
+        mapped, which the one-process search has none of)."""
+        try:
+            with open("/proc/self/status") as status:
+                fields = dict(line.split(":", 1) for line in status)
+            private = int(fields["RssAnon"].split()[0]) + int(fields["RssFile"].split()[0])
+        except (OSError, KeyError, ValueError):
+            return
+        self.peak_private_kb = max(self.peak_private_kb, private)
+
+    def _step(self, senders: Sequence[int], batches) -> tuple:
+        stored, new, _ = self.receive(senders, *batches)
+        if new == 0:
+            return (*self._nothing(), (stored, new, -1, self.transitions, self.deadlocks, -1,
+                                       self.watched))
         *outgoing, figures = self.expand()
-        return (*outgoing, (stored, new, target, *figures))
+        return (*outgoing, (stored, new, *figures))
+
+    def _nothing(self) -> list:
+        return [self.codec.encode(target, self.codec.outbox()) for target in range(self.count)]
 
     def expand(self) -> tuple:
         """Step the states stored since the last call: one batch per partition, then the
-        level's figures (transitions, deadlocks, the first deadlocked state when those are
-        targets or -1, and whether ``watch`` said True)."""
-        table, count, index = self.table, self.count, self.index
+        level's figures (the first of those states the predicate marks or -1; transitions,
+        deadlocks, the first deadlocked state when those are targets or -1, and whether
+        ``watch`` said True).  Once the predicate marks a state the level is dropped (the
+        search ends there, with the figures of the levels before)."""
+        table, count, index, codec = self.table, self.count, self.index, self.codec
         successors_of = getattr(self.system, "successor_states", None)
         if successors_of is None:
             successors_of = self._targets
-        outgoing = [([], array("q")) for _ in range(count)]
+        watch = self.watch
+        keys_of = codec.successor_keys
+        predicate = self.predicate
+        outboxes = [codec.outbox() for _ in range(count)]
+        post = codec.post
         # a successor reached again in this level is sent once (its first parent, as its
         # owner would keep): storing a state costs its owner more than encoding it here
         sending: set = set()
+        pending: list = []
+        pending_parents: list = []
+        sent = [0] * count
+        transitions = deadlocks = 0
         deadlock_target = -1
+        watched = self.watched
         end = len(table)
+
+        def flush():
+            owners, items = codec.route(pending)
+            for target, item, parent_id in zip(owners, items, pending_parents):
+                post(outboxes[target], item, parent_id)
+                sent[target] += 1
+            pending.clear()
+            pending_parents.clear()
+
         for state_id in range(self.expanded, end):
             state = table[state_id]
-            successors = successors_of(state)
-            if self.watch is not None and not self.watched and self.watch(state, successors):
-                self.watched = True
-            self.transitions += len(successors)
-            if not successors:
-                self.deadlocks += 1
+            if predicate(state):
+                self.expanded = end
+                return (*self._nothing(), (state_id, self.transitions, self.deadlocks, -1,
+                                           self.watched))
+            if watch is None:
+                keys = keys_of(state_id, state, successors_of)
+            else:                              # (it wants the successor states)
+                successors = successors_of(state)
+                if not watched and watch(state, successors):
+                    watched = True
+                keys = keys_of(state_id, state, successors)
+            transitions += len(keys)
+            if not keys:
+                deadlocks += 1
                 if self.deadlock_is_target and deadlock_target < 0:
                     deadlock_target = state_id
-            for successor in successors:
-                encoded, target = owned_bytes(successor, count)
-                if encoded in sending:
+            for key in keys:
+                if key in sending:
                     continue
-                sending.add(encoded)
-                states, parents = outgoing[target]
-                states.append(successor)
-                parents.append(state_id)
+                sending.add(key)
+                pending.append(key)
+                pending_parents.append(state_id)
+            if len(pending) >= CHUNK:
+                flush()
+        if pending:
+            flush()
         self.expanded = end
-        self.sent = sum(len(states) for target, (states, _) in enumerate(outgoing)
-                        if target != index) + self.sent
-        return (*map(encode_batch, outgoing),
-                (self.transitions, self.deadlocks, deadlock_target, self.watched))
+        self.transitions += transitions
+        self.deadlocks += deadlocks
+        self.watched = watched
+        self.sent += sum(sent) - sent[index]
+        outgoing = [codec.encode(target, outboxes[target]) for target in range(count)]
+        self.sent_bytes += sum(len(batch) for target, batch in enumerate(outgoing)
+                               if target != index)
+        return (*outgoing,
+                (-1, self.transitions, self.deadlocks, deadlock_target, self.watched))
 
     def _targets(self, state) -> list:
         return [successor for _, successor in self.system.successors(state)]
@@ -180,17 +257,57 @@ class Partition:
         """The state with this id and the link to its parent (``NO_PARENT`` for an initial one)."""
         return self.table[state_id], self.parent[state_id]
 
+    def finish(self) -> None:
+        """Hand the search's objects back to the cycle collector."""
+        if self._frozen is not None:
+            self._frozen.close()
+            self._frozen = None
+
     def clear(self) -> None:
         """Let the search's states go (the system stays, for the check's next search)."""
+        self.finish()
         self.__dict__.clear()
         self.__init__()
 
     def figures(self) -> dict:
         """What this partition holds: states, bytes, engine, and the process's peak memory."""
-        import resource
         table = self.table
         return {"states": len(table), "transitions": self.transitions, "sent": self.sent,
                 "bytes": table.memory_bytes() + len(self.parent) * self.parent.itemsize,
                 "engine": engine_of(table),
                 "cpu_seconds": time.process_time() - self.cpu_started,
-                "max_rss_kb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss}
+                "step_seconds": self.step_seconds, "sent_bytes": self.sent_bytes,
+                "start_rss_kb": self.start_rss_kb, "peak_private_kb": self.peak_private_kb,
+                "max_rss_kb": _peak_rss_kb()}
+
+
+def _peak_rss_kb() -> int:
+    import resource
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
+
+
+def search_here(system, count: int, predicate: str = "failed") -> tuple[list, int, tuple]:
+    """The partitioned search with ``count`` partitions driven in this process, level by
+    level as ``search`` drives the actors (no Ray): for tests and bench/distributed.py.
+    Returns (the partitions, levels, the first (partition, state id) the predicate marks
+    or None)."""
+    parts = [Partition() for _ in range(count)]
+    for index, part in enumerate(parts):
+        part.start(index, count, SystemSource(system), predicate, False)
+    initial = encode_batch((list(system.initial_states()), []))
+    stepped = [part.step([-1], initial) for part in parts]
+    senders = list(range(count))
+    levels = 1
+    try:
+        while True:
+            for index, answer in enumerate(stepped):
+                if answer[count][2] >= 0:
+                    return parts, levels, (index, answer[count][2])
+            if not sum(answer[count][1] for answer in stepped):
+                return parts, levels, None
+            stepped = [part.step(senders, *[answer[target] for answer in stepped])
+                       for target, part in enumerate(parts)]
+            levels += 1
+    finally:
+        for part in parts:
+            part.finish()

@@ -30,7 +30,6 @@ from ...diagnostics import EXIT_WORKER_LOST, WORKER_LOST, error
 from ..budget import SearchBudget
 from ..result import HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep, SearchResult, SearchStats
 from ..transition_system import TransitionSystem, transition_label
-from .canonical import owner
 from .partition import NO_PARENT, SystemSource, encode_batch, unlink
 from .worker import SAFETY, Worker, call
 
@@ -124,13 +123,10 @@ class _Levels:
 
     def run(self) -> tuple:
         ray, count = self.ray, self.count
-        batches = [([], []) for _ in range(count)]
-        for state in self.system.initial_states():
-            states, parents = batches[owner(state, count) if count > 1 else 0]
-            states.append(state)
-            parents.append(NO_PARENT)
-        stepped = [call(actor, SAFETY, "step", [-1], encode_batch(batches[index]),
-                        returns=count + 1) for index, actor in enumerate(self.actors)]
+        # every partition is sent the initial states and keeps those it owns
+        initial = encode_batch((list(self.system.initial_states()), []))
+        stepped = [call(actor, SAFETY, "step", [-1], initial, returns=count + 1)
+                   for actor in self.actors]
         senders = list(range(count))
         while True:
             figures = ray.get([refs[count] for refs in stepped])

@@ -72,6 +72,7 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         self.io_length = len(first[2])
         self._contexts: dict[tuple, int] = {}
         self._context_values: list[tuple] = []
+        self._context_flags: list[int] = []         # by context id (``import_context``)
         self._valuations: list[Callable] = []       # by the machine's valuation index
         self._valuation_codes: list[bytes] = []
         self._routines: list = []
@@ -181,10 +182,44 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
             routine == projection.main
         flags = (RUNS if runs else 0) | (HAS_FAILED if state[7] == FAILED else 0) | \
             (MAIN_ALONE if alone else 0)
+        return self._new_context(context, flags)
+
+    def _new_context(self, context: tuple, flags: int) -> int:
+        routine, io = context[1], context[3]
         context_id = self.add_context(routine, flags, self.value_ids(io))
         self._contexts[context] = context_id
         self._context_values.append(context)
+        self._context_flags.append(flags)
         return context_id
+
+    # ------------------------------------- vectors between tables (workers)
+    # A state's vectors hold ids that only this table gives its values and contexts.  Another
+    # table (a worker of a distributed search) reads them once it has been handed the values
+    # and contexts behind the ids (``exported_values`` / ``exported_contexts``, from the
+    # count it was handed before: ids only grow) and mapped them to its own ids
+    # (``value_ids``, ``import_context``).
+    def vectors_of(self, state: State) -> tuple[bytes, bytes]:
+        """The state's (frame, data) vectors, its values and context stored when new (not
+        the state itself)."""
+        return self._vectors(state)
+
+    def context_count(self) -> int:
+        return len(self._context_values)
+
+    def exported_values(self, start: int) -> tuple:
+        """The values of the ids from ``start`` on."""
+        end = self.counts()["values"]
+        return self.values(array("I", range(start, end)).tobytes()) if end > start else ()
+
+    def exported_contexts(self, start: int) -> list[tuple[tuple, int]]:
+        """(context, flags) of the context ids from ``start`` on."""
+        return list(zip(self._context_values[start:], self._context_flags[start:]))
+
+    def import_context(self, context: tuple, flags: int) -> int:
+        """This table's id of a context another table exported (with its flags there: the
+        flags are a function of the context, computed by the first table that met it)."""
+        known = self._contexts.get(context)
+        return known if known is not None else self._new_context(context, flags)
 
     def _state(self, context_id: int, pc: int, locals_: tuple, data: tuple) -> State:
         below, routine, handling, io, rest = self._context_values[context_id]

@@ -1,0 +1,298 @@
+"""How a worker writes the states it sends to their owners, and reads the states it is sent.
+
+Two codecs, one per kind of state table, with one interface (``Partition`` uses it):
+
+* ``VectorCodec``, for a model's packed table (``model.packed``, the whole-controller models
+  and the counters): a state travels as the table's own encoding, its frame and data
+  vectors of value ids, written by the table itself (``vectors_of``).  Those ids are the
+  sender's: each batch carries the values and contexts the sender numbered since its last
+  batch to that owner (ids only grow), and the owner keeps, per sender, an array that
+  maps the sender's ids to its own.  So a state costs its vectors' bytes on the wire (4
+  bytes a value), a whole batch is translated with a few array operations, and the owner
+  stores a state with one call into the table (``intern_vectors``): no Python object is
+  pickled or built per state, and a state the owner already has is never rebuilt.
+  The owner of a state is a hash of its vectors in which every id stands for a
+  fingerprint of its value (BLAKE2b of ``canonical.canonical_bytes``), the same in every
+  process: equal values, equal fingerprints; so every worker agrees on the owner.
+* ``PickleCodec``, for every other table (the Python engine, models without a packed
+  table): states travel pickled, owned by ``canonical.owner``.
+
+Interface: ``successor_keys(id, state, successors)`` (a key per successor, in the model's
+order, from the successor states or from ``successors(state)``; equal keys: equal states,
+for the level's deduplication), ``route(keys) -> (owners, items)`` (a chunk at a time),
+``outbox()`` and ``post(outbox, item, parent id)`` (a batch being written: bytes as it
+grows, not an object per state), ``encode(target, outbox)``, ``store(sender, data)``
+(stores the batch's states, yields (id, new, parent id)), ``owns(state, index)``.
+"""
+from __future__ import annotations
+
+import hashlib
+import pickle
+import struct
+from array import array
+from typing import Hashable, Iterator, Sequence
+
+from .canonical import canonical_bytes, owner, owner_of_bytes, state_bytes
+
+PROTOCOL = pickle.HIGHEST_PROTOCOL
+_SIZES = struct.Struct("<QQQQ")    # a vector batch's header, frames, data sizes; states
+SLICE = 1 << 16                    # states of a received batch translated at a time
+
+
+def codec_for(table, index: int, count: int):
+    """The codec for a worker's table: vectors where the table offers them (and numpy, which
+    Ray brings, is installed), else pickles."""
+    if getattr(table, "vectors_of", None) is not None:
+        try:
+            import numpy  # noqa: F401
+        except ImportError:
+            pass
+        else:
+            return VectorCodec(table, index, count)
+    return PickleCodec(table, count)
+
+
+class _Keyed:
+    """A successor with its canonical bytes, equal (and hashed) by those bytes alone."""
+    __slots__ = ("encoded", "state")
+
+    def __init__(self, encoded: bytes, state):
+        self.encoded, self.state = encoded, state
+
+    def __eq__(self, other) -> bool:
+        return self.encoded == other.encoded
+
+    def __hash__(self) -> int:
+        return hash(self.encoded)
+
+
+class PickleCodec:
+    """States pickled by the standard C pickler, owned by ``canonical.owner``."""
+
+    def __init__(self, table, count: int):
+        self.table, self.count = table, count
+
+    def successor_keys(self, state_id: int, state, successors) -> list:
+        """Keys: (canonical bytes, the state)."""
+        if callable(successors):
+            successors = successors(state)
+        return [_Keyed(state_bytes(successor), successor) for successor in successors]
+
+    def route(self, keys: Sequence["_Keyed"]) -> tuple[list[int], list]:
+        count = self.count
+        return [owner_of_bytes(key.encoded, count) for key in keys], [key.state for key in keys]
+
+    def outbox(self) -> tuple[list, array]:
+        return [], array("q")
+
+    def post(self, outbox, item, parent: int) -> None:
+        outbox[0].append(item)
+        outbox[1].append(parent)
+
+    def encode(self, target: int, outbox) -> bytes:
+        return pickle.dumps(outbox, protocol=PROTOCOL)
+
+    def store(self, sender: int, data: bytes) -> Iterator[tuple[int, bool, int]]:
+        states, parents = pickle.loads(data)
+        intern = self.table.intern
+        for state, parent in zip(states, parents):
+            state_id, new = intern(state, True)
+            yield state_id, new, parent
+
+    def owns(self, state: Hashable, index: int) -> bool:
+        return owner(state, self.count) == index
+
+
+# odd 64-bit constants of the owner hash (any fixed ones do; these are splitmix64's)
+_GOLDEN = 0x9E3779B97F4A7C15
+_MIX1, _MIX2 = 0xBF58476D1CE4E5B9, 0x94D049BB133111EB
+
+
+def fingerprint(value) -> int:
+    """A 64-bit fingerprint of a value, the same in every process (canonical bytes)."""
+    return int.from_bytes(hashlib.blake2b(canonical_bytes(value), digest_size=8).digest(),
+                          "little")
+
+
+class VectorCodec:
+    """States as a packed table's vectors (module docstring)."""
+
+    def __init__(self, table, index: int, count: int):
+        import numpy
+        self.np = numpy
+        self.table, self.index, self.count = table, index, count
+        self.data_length = table.store_length
+        self.value_print = numpy.zeros(0, numpy.uint64)      # by value id: fingerprint
+        self.context_print = numpy.zeros(0, numpy.uint64)    # by context id: fingerprint
+        self.sent_values = [0] * count       # per owner: values handed over (ids below it)
+        self.sent_contexts = [0] * count
+        self.value_map: dict = {}            # per sender: its value id -> this table's
+        self.context_map: dict = {}
+        self._vectors = table.vectors_of
+        self._intern_parts, self._segments = table.intern_parts, table.segments
+        self._machine = table.step                 # (None: the state is Python's to step)
+
+    # ---------------------------------------------------------------- sending
+    # A successor's key is its interned segments, ``frame id << 32 | data id`` in this table
+    # (equal states, equal segments): the step machine gives them without building the
+    # state (``step``), and a state Python stepped is written to its vectors once.
+    def successor_keys(self, state_id: int, state, successors) -> list[int]:
+        if callable(successors):
+            found = self._machine(state_id)
+            if found is not None:
+                return [frame << 32 | data for frame, data in found]
+            successors = successors(state)
+        vectors, intern = self._vectors, self._intern_parts
+        keys = []
+        for successor in successors:
+            frame, data = intern(*vectors(successor))
+            keys.append(frame << 32 | data)
+        return keys
+
+    def prepare(self, state: Hashable) -> tuple[bytes, bytes]:
+        """The state's vectors (for ``owners``, ``post``)."""
+        return self._vectors(state)
+
+    def route(self, keys: Sequence[int]) -> tuple[list[int], list[tuple[bytes, bytes]]]:
+        segments = self._segments
+        items = [segments(key >> 32, key & 0xFFFFFFFF) for key in keys]
+        return self.owners(items), items
+
+    def owners(self, items: Sequence[tuple[bytes, bytes]]) -> list[int]:
+        """The owner of each state (its vectors): a hash over the fingerprints of its
+        context, program counter and values, position by position."""
+        np = self.np
+        self._fingerprint_new()
+        frames = np.frombuffer(b"".join(frame for frame, _ in items), np.uint32)
+        lengths = np.fromiter((len(frame) >> 2 for frame, _ in items), np.int64, len(items))
+        starts = np.cumsum(lengths) - lengths
+        with np.errstate(over="ignore"):
+            prints = np.take(self.value_print, frames, mode="clip")
+            prints[starts] = self.context_print[frames[starts]]
+            prints[starts + 1] = frames[starts + 1].astype(np.uint64) * np.uint64(_GOLDEN)
+            positions = np.arange(len(frames), dtype=np.uint64) - \
+                np.repeat(starts, lengths).astype(np.uint64)
+            mixed = np.add.reduceat(prints * (positions * np.uint64(2) + np.uint64(1))
+                                    * np.uint64(_MIX1), starts)
+            if self.data_length:
+                data = np.frombuffer(b"".join(data for _, data in items), np.uint32)
+                data = self.value_print[data].reshape(len(items), self.data_length)
+                weights = (np.arange(self.data_length, dtype=np.uint64) * np.uint64(2) +
+                           np.uint64(1)) * np.uint64(_MIX2)
+                mixed ^= (data * weights).sum(axis=1, dtype=np.uint64)
+            mixed ^= mixed >> np.uint64(30)
+            mixed *= np.uint64(_MIX1)
+            mixed ^= mixed >> np.uint64(27)
+            mixed *= np.uint64(_MIX2)
+            mixed ^= mixed >> np.uint64(31)
+        return (mixed % np.uint64(self.count)).tolist()
+
+    def _fingerprint_new(self) -> None:
+        """Fingerprints of the values and contexts the table numbered since the last call."""
+        np, table = self.np, self.table
+        known = len(self.value_print)
+        values = table.exported_values(known)
+        if values:
+            self.value_print = np.concatenate(
+                (self.value_print, np.fromiter(map(fingerprint, values), np.uint64, len(values))))
+        known = len(self.context_print)
+        if table.context_count() > known:
+            contexts = [context for context, _ in table.exported_contexts(known)]
+            self.context_print = np.concatenate(
+                (self.context_print, np.fromiter(map(fingerprint, contexts), np.uint64,
+                                                 len(contexts))))
+
+    def outbox(self) -> tuple[bytearray, bytearray, array, array]:
+        """A batch being written: frame vectors, data vectors, the frames' lengths (in ids),
+        the parents' ids."""
+        return bytearray(), bytearray(), array("I"), array("q")
+
+    def post(self, outbox, item: tuple[bytes, bytes], parent: int) -> None:
+        frames, data, lengths, parents = outbox
+        frame = item[0]
+        frames += frame
+        data += item[1]
+        lengths.append(len(frame) >> 2)
+        parents.append(parent)
+
+    def encode(self, target: int, outbox) -> bytes:
+        """A batch for ``target``: the values and contexts numbered since the last batch to
+        it, then the outbox."""
+        table = self.table
+        values = contexts = ()
+        if target != self.index:
+            values = table.exported_values(self.sent_values[target])
+            self.sent_values[target] += len(values)
+            contexts = table.exported_contexts(self.sent_contexts[target])
+            self.sent_contexts[target] += len(contexts)
+        frames, data, lengths, parents = outbox
+        header = pickle.dumps((values, contexts), protocol=PROTOCOL)
+        return b"".join((_SIZES.pack(len(header), len(frames), len(data), len(lengths)),
+                         header, frames, data, lengths, parents))
+
+    # -------------------------------------------------------------- receiving
+    def store(self, sender: int, blob: bytes) -> Iterator[tuple[int, bool, int]]:
+        """The batch's states stored, read in place (views of ``blob``) and translated a
+        slice at a time, so a large batch is not copied whole."""
+        np, table = self.np, self.table
+        view = memoryview(blob)
+        header_size, frames_size, data_size, count = _SIZES.unpack_from(view)
+        at = _SIZES.size
+        values, contexts = pickle.loads(view[at:at + header_size])
+        at += header_size
+        frames = np.frombuffer(view[at:at + frames_size], np.uint32)
+        at += frames_size
+        data = np.frombuffer(view[at:at + data_size], np.uint32)
+        at += data_size
+        lengths = np.frombuffer(view[at:at + 4 * count], np.uint32)
+        at += 4 * count
+        parents = array("q")
+        parents.frombytes(view[at:at + 8 * count])
+        foreign = sender != self.index
+        if foreign:
+            value_map, context_map = self._maps(sender, values, contexts)
+        ends = np.cumsum(lengths, dtype=np.int64)
+        width = self.data_length
+        intern = table.intern_vectors
+        for first in range(0, count, SLICE):
+            last = min(first + SLICE, count)
+            begin = int(ends[first - 1]) if first else 0
+            some_frames = frames[begin:int(ends[last - 1])] if last > first else frames[:0]
+            some_data = data[first * width:last * width]
+            starts = ends[first:last] - lengths[first:last] - begin
+            if foreign:                                # its ids -> this table's ids
+                mapped = np.take(value_map, some_frames, mode="clip") if len(value_map) \
+                    else some_frames.copy()
+                mapped[starts] = context_map[some_frames[starts]]
+                mapped[starts + 1] = some_frames[starts + 1]
+                some_frames = mapped
+                some_data = value_map[some_data] if len(some_data) else some_data
+            frame_bytes, data_bytes = some_frames.tobytes(), some_data.tobytes()
+            step = 4 * width
+            offset = 0
+            for number in range(first, last):
+                end = offset + 4 * int(lengths[number])
+                local = number - first
+                state_id, new = intern(frame_bytes[offset:end],
+                                       data_bytes[local * step:(local + 1) * step], True)
+                offset = end
+                yield state_id, new, parents[number]
+
+    def _maps(self, sender: int, values, contexts) -> tuple:
+        """The arrays from ``sender``'s value and context ids to this table's, extended by
+        the values and contexts it handed over with this batch."""
+        np, table = self.np, self.table
+        value_map = self.value_map.get(sender, np.zeros(0, np.uint32))
+        if values:
+            value_map = np.concatenate(
+                (value_map, np.frombuffer(table.value_ids(values), np.uint32)))
+        context_map = self.context_map.get(sender, np.zeros(0, np.uint32))
+        if contexts:
+            context_map = np.concatenate(
+                (context_map, np.array([table.import_context(context, flags)
+                                        for context, flags in contexts], np.uint32)))
+        self.value_map[sender], self.context_map[sender] = value_map, context_map
+        return value_map, context_map
+
+    def owns(self, state: Hashable, index: int) -> bool:
+        return self.owners([self.prepare(state)])[0] == index

@@ -1,0 +1,150 @@
+"""How states travel between the workers of a partitioned search (``distributed/codec.py``),
+without Ray: partitions driven in this process (``partition.search_here``).
+
+Where the model has a packed table, a state travels as the table's vectors, whose ids are
+the sender's own: the owner must map them to its ids (values and contexts handed over
+incrementally) and every process must agree on a state's owner however its table numbered
+the values.  The search over either codec (packed vectors on the native engine, pickles on
+the Python engine) must count exactly what one process counts, and find the violation at
+the depth one process finds it.
+"""
+from __future__ import annotations
+
+from dataclasses import replace
+from pathlib import Path
+
+import pytest
+
+from rapidmc import api
+from rapidmc.check import find_reachable, native
+from rapidmc.check.distributed.codec import PickleCodec, VectorCodec, codec_for
+from rapidmc.check.distributed.partition import search_here, unlink
+from rapidmc.check.result import HOLDS, VIOLATED
+
+pytest.importorskip("numpy")
+
+ROOT = Path(__file__).resolve().parent.parent
+CHECK = ROOT / "tests" / "check"
+# (name, files, environment, further tasks), all with a packed table: a socket server,
+# two tasks, an error raised in a routine with an error handler
+MODELS = {
+    "socket server": ([CHECK / "socket_field_count" / "prog.mod"], [], []),
+    "two tasks": ([CHECK / "tasks_test_and_set" / "prog.mod"], [],
+                  [str(CHECK / "tasks_test_and_set" / "other.mod")]),
+    "run-time error": ([CHECK / "vm_error_handlers" / "prog.mod"], [], []),
+}
+
+
+def system_of(name: str):
+    files, env, tasks = MODELS[name]
+    program = api.load_program([str(f) for f in files], [str(f) for f in env], add_tasks=tasks)
+    options = api.CheckOptions()
+    options = replace(options, reductions=replace(options.reductions, partial_order=False))
+    return api.prepare(program, [], options).system
+
+
+def breadth_first(system, limit: int) -> list:
+    seen, frontier = [], list(system.initial_states())
+    known = set(frontier)
+    while frontier and len(seen) < limit:
+        state = frontier.pop(0)
+        seen.append(state)
+        for after in system.successor_states(state):
+            if after not in known:
+                known.add(after)
+                frontier.append(after)
+    return seen
+
+
+def packed(system):
+    table = system.packed_table() if native.available() else None
+    if table is None:
+        pytest.skip("the native core is not built here: no packed table")
+    return table
+
+
+def test_every_table_names_the_same_owner_whatever_its_numbering():
+    """Two tables that met the values in opposite orders give states different vectors,
+    and still the same owner; the owners split the states between both partitions."""
+    system = system_of("socket server")
+    states = breadth_first(system, 400)
+    first, second = packed(system), packed(system)
+    codecs = [VectorCodec(first, 0, 2), VectorCodec(second, 1, 2)]
+    for state in states:
+        first.intern(state, True)
+    for state in reversed(states):
+        second.intern(state, True)
+    prepared = [[codec.prepare(state) for state in states] for codec in codecs]
+    assert any(a != b for a, b in zip(*prepared))              # numbered differently
+    owners = [codec.owners(rows) for codec, rows in zip(codecs, prepared)]
+    assert owners[0] == owners[1]
+    assert 0.3 < sum(owners[0]) / len(states) < 0.7
+    assert all(codec.owns(state, owner) for codec in codecs
+               for state, owner in zip(states, owners[0]))
+
+
+def test_vectors_sent_to_another_table_are_stored_as_the_same_states():
+    """Batches in the sender's ids, values and contexts handed over as they appear: the
+    receiver stores exactly the states sent, with their parents, once."""
+    system = system_of("two tasks")
+    states = breadth_first(system, 300)
+    sender_table, receiver_table = packed(system), packed(system)
+    sender, receiver = VectorCodec(sender_table, 0, 2), VectorCodec(receiver_table, 1, 2)
+    for state in states[100:]:              # the receiver numbered other states first
+        receiver_table.intern(state, True)
+    stored = {}
+    for batch in (states[:150], states[150:], states[:150]):       # the last: all known
+        outbox = sender.outbox()
+        for parent, state in enumerate(batch):
+            sender.post(outbox, sender.prepare(state), parent)
+        for (state_id, new, parent), state in zip(receiver.store(0, sender.encode(1, outbox)),
+                                                  batch):
+            assert receiver_table[state_id] == state
+            assert parent == batch.index(state)
+            stored[state_id] = state
+    assert len(stored) == len(states) == len(receiver_table)
+    assert sender_table.context_count() >= 2    # several contexts went across
+
+
+@pytest.mark.parametrize("engine", ["native", "python"])
+@pytest.mark.parametrize("name", ["socket server", "two tasks"])
+def test_partitions_count_what_one_process_counts(name, engine):
+    """Both codecs: the same states, transitions, deadlocks and depth as one process."""
+    if engine == "native" and not native.available():
+        pytest.skip("the native core is not built here")
+    with native.engine_used(engine):
+        system = system_of(name)
+        one = find_reachable(system, system.failed, max_states=None)
+        parts, levels, target = search_here(system, 2)
+        codec = type(parts[0].codec)
+        assert codec is (VectorCodec if engine == "native" else PickleCodec)
+        assert codec_for(parts[0].table, 0, 2).__class__ is codec
+    assert one.verdict == HOLDS and target is None
+    assert sum(len(part.table) for part in parts) == one.stats.product_states
+    assert sum(part.transitions for part in parts) == one.stats.transitions
+    assert sum(part.deadlocks for part in parts) == one.stats.deadlocks
+    assert levels - 1 == one.stats.max_depth       # (the last level stores nothing)
+    assert all(len(part.table) for part in parts)
+
+
+@pytest.mark.parametrize("engine", ["native", "python"])
+def test_partitions_find_the_error_at_its_depth(engine):
+    """The first state the predicate marks is found in the level of its depth: its parent
+    links, across partitions, are as long as one process's counterexample."""
+    if engine == "native" and not native.available():
+        pytest.skip("the native core is not built here")
+    with native.engine_used(engine):
+        system = system_of("run-time error")
+        one = find_reachable(system, system.failed, max_states=None)
+        parts, _, target = search_here(system, 2)
+    assert one.verdict == VIOLATED and target is not None
+    partition, state_id = target
+    path = []
+    while True:
+        state, parent = parts[partition].step_back(state_id)
+        path.append(state)
+        if parent < 0:
+            break
+        partition, state_id = unlink(parent)
+    assert len(path) == len(one.prefix)
+    assert system.failed(path[0]) and path[-1] in system.initial_states()
