@@ -154,3 +154,19 @@ def test_a_task_of_system_modules_only_is_a_note_and_exit_0(tmp_path, capsys):
         "MODULE Lib\n  PROC helper()\n  ENDPROC\nENDMODULE\n")
     assert main(["check", str(backup), "--task", "TASK2"]) == 2
     assert "[RMC211]" in capsys.readouterr().err
+
+
+def test_task_identities_name_the_backups_tasks_only(tmp_path, capsys):
+    """Issue 28: the controller declares ``<task name>Id`` (taskid) for each task it runs,
+    so ``T_ROB1Id`` resolves in a backup whose task is T_ROB1 (its folder's name here, as no
+    backinfo names it) and with plain module files (whose one task is T_ROB1); a name of a
+    task the controller does not have stays unknown."""
+    uses = "MODULE Main\n  VAR robtarget p;\n  PROC main()\n    p := CRobT(\\TaskRef:={});\n" \
+           "    TPWrite \"x\" \\Num:=p.trans.x;\n  ENDPROC\nENDMODULE\n"
+    backup = make_backup(tmp_path, {"T_ROB1": {"PROGMOD/Main.mod": uses.format("T_ROB1Id")}})
+    assert main(["check", str(backup)]) == 0
+    assert main(["check", str(backup / "RAPID" / "T_ROB1" / "PROGMOD" / "Main.mod")]) == 0
+    capsys.readouterr()
+    (backup / "RAPID" / "T_ROB1" / "PROGMOD" / "Main.mod").write_text(uses.format("T_ROB2Id"))
+    assert main(["check", str(backup)]) == 2
+    assert "unknown name 'T_ROB2Id'" in capsys.readouterr().err

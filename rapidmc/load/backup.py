@@ -26,7 +26,7 @@ from ..diagnostics import (EXIT_OK, FILE_NOT_FOUND, NO_PROGRAM, PROGRAM_FILE, TA
 from .config_file import instances
 from .encrypted import interface_module, is_encrypted, only_encrypted_note, skipped_note
 from .other_writers import other_writers
-from .task_config import BackupTask, config_file, read_tasks
+from .task_config import BackupTask, config_file, read_tasks, task_names
 from ..semantics.library.configuration import Configuration
 from .configuration import read_configuration
 
@@ -202,6 +202,7 @@ class ProgramFiles:
     motion_tasks: tuple = ()            # the backup's tasks SYS.cfg marks -MotionTask
     # upper-case PERS name -> a party not loaded that may write it (load.other_writers)
     outside_writers: Optional[dict] = None
+    task_names: tuple = ()              # every task of the backups (their taskid T_ROB1Id ...)
 
 
 def resolve_program_files(args) -> ProgramFiles:
@@ -216,6 +217,7 @@ def resolve_program_files(args) -> ProgramFiles:
     writers: dict = {}
     configuration = None
     motion_tasks: list[str] = []
+    names: list[str] = []
     for name in args.files:
         path = Path(name)
         if not is_backup(path):
@@ -253,6 +255,7 @@ def resolve_program_files(args) -> ProgramFiles:
             notes.append(_loaded_note(path, [t for t in loaded if t.name == main_task or
                                              any(t.name == other[0] for other in tasks)]))
         motion_tasks.extend(t.name for t in loaded if t.motion)
+        names.extend(task_names(path, loaded))
         configuration = read_configuration(_child(path, "SYSPAR"))
         backup = backup_eio(path)
         if backup and not eio:
@@ -263,7 +266,8 @@ def resolve_program_files(args) -> ProgramFiles:
                       "main"))
     signals = [signal for eio_path in eio_paths for signal in read_eio(eio_path)]
     return ProgramFiles(paths, tasks, signals, main_task, main_entry, tuple(notes), alone,
-                        configuration, encrypted, tuple(motion_tasks), writers)
+                        configuration, encrypted, tuple(motion_tasks), writers,
+                        tuple(dict.fromkeys(names)))
 
 
 def _runnable_tasks(path: Path, tasks: list[BackupTask]) -> tuple[list[BackupTask], list]:
@@ -339,7 +343,7 @@ def link_options(files: ProgramFiles) -> dict:
     return {"configured_signals": files.signals, "main_task_name": files.main_task,
             "all_tasks_loaded": files.main_task is not None and files.alone is None,
             "configuration": files.configuration, "motion_tasks": files.motion_tasks,
-            "outside_writers": files.outside_writers or {}}
+            "outside_writers": files.outside_writers or {}, "task_names": files.task_names}
 
 
 def load_tasks(files: ProgramFiles) -> list:

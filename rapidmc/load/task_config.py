@@ -62,6 +62,16 @@ def read_tasks(backup: Path, folders: list[Path]) -> list[BackupTask]:
     return tasks
 
 
+def task_names(backup: Path, tasks: list[BackupTask]) -> tuple[str, ...]:
+    """Every task name the controller knows: ``tasks`` (the folders) and the tasks SYS.cfg
+    configures, in that order, each once.  The controller declares a ``taskid`` named
+    ``<task name>Id`` for each (T_ROB1Id), which code names whether or not that task is
+    checked with it."""
+    names = [task.name for task in tasks]
+    names += [attributes["NAME"] for attributes in _configured_tasks(backup).values()]
+    return tuple(dict.fromkeys(names))
+
+
 def config_file(backup: Path, *parts: str) -> Optional[Path]:
     """``backup/parts...``, each part matched without regard to case (backups vary)."""
     found = backup

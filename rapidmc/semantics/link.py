@@ -12,6 +12,7 @@ namespace of their own: their global names never clash with the program's.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from typing import Optional, Sequence
 
@@ -245,6 +246,7 @@ class Linker:
             self._declare_data(modules, namespace)
         self._configured_signals([m for namespace, modules in groups
                                   if namespace != P.ENVIRONMENT_NAMESPACE for m in modules])
+        self._task_identities()
         for namespace, modules in groups:
             self._prepare_routines(namespace)
         # PERS written from outside the loaded code, read as choices (load.outside_data)
@@ -335,6 +337,17 @@ class Linker:
             self.system.declare(name.key, Symbol(CONSTANT, name.text,
                                                  self.builtin_types["MECUNIT"], value=None,
                                                  storage="CONST"))
+
+    def _task_identities(self) -> None:
+        """The controller's ``taskid`` of each task it runs, named ``<task name>Id`` (T_ROB1Id):
+        a backup's every task, loaded or not; else the one task T_ROB1.  System data, so a
+        program's own declaration of the name hides it."""
+        names = self.options.get("task_names") or (self.options.get("main_task_name") or "T_ROB1",)
+        for name in names:
+            key = f"{name}ID".upper()
+            if re.fullmatch(r"[A-Z][A-Z0-9_]*", key) and self.system.lookup(key) is None:
+                self.system.declare(key, Symbol(CONSTANT, f"{name}Id", self.builtin_types["TASKID"],
+                                                value=None, storage="CONST"))
 
     def _declare_routines(self, modules, namespace: int) -> None:
         seen_modules = set()

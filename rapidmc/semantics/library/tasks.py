@@ -266,10 +266,19 @@ def _barrier(calls, compiler, call, entry, what: str, error_name: str, listed: b
                 if number not in slots or _generation(store[slots[number]])[0]
                 not in (generation, ahead)]
 
+    # no other loaded task declares the syncident, so none reads its generation: a barrier
+    # that waits for no loaded task passes without counting (a task checked alone, whose
+    # partners are assumed to arrive, would otherwise store a count modulo 3 per syncident)
+    unshared = set(slots) == {me}
+
     def wait(m, instruction):
         current, arrived = _generation(m.store[own])
         generation = current if arrived else (current + 1.0) % 3.0
-        if not missing_from(m.store, generation, partners(m)):
+        among = partners(m)
+        if unshared and not among and not arrived:
+            m.goto(instruction.next)
+            return
+        if not missing_from(m.store, generation, among):
             m.store = m.store.set(own, generation)
             m.goto(instruction.next)
             return
