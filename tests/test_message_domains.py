@@ -194,9 +194,9 @@ TEXT_SERVERS = ["socket_test_cases", "socket_parsed_code", "socket_strtoval_arra
 
 
 def unreached_under_any_input(report: api.CheckReport) -> set:
-    return {(w.span.file, line) for w in report.warnings if w.code.code == "RMC701"
-            and "under any input" in w.message
-            for line in range(w.span.line, (w.span.end_line or w.span.line) + 1)}
+    return {(span.file, line) for w in report.warnings if w.code.code == "RMC701"
+            and "under any input" in w.message for span in (w.span, *w.places)
+            for line in range(span.line, (span.end_line or span.line) + 1)}
 
 
 @pytest.mark.parametrize("body", [EXACT, PARSED])

@@ -100,7 +100,7 @@ class ExploredFacts:
             return []
         sampled = [t for t in self.sampled if not (self.closures_tried and t.kind == PEERS_OPEN)]
         inputs = qualifier(reached(sampled, self.statements.executed))
-        called = called_routines(self.program) if inputs != qualifier(()) else None
+        called = called_routines(self.program)
         return coverage_warnings(self.program, self.statements.executed, inputs, called)
 
     def waits_for_closures(self) -> bool:
