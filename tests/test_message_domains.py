@@ -322,3 +322,21 @@ def test_a_routine_no_call_reaches_gives_no_values(tmp_path):
     path.write_text(SERVER.format(body=EXACT, extra=unused))
     [domain] = message_domains(api.load_program([str(path)]))
     assert domain.messages == ("A", "B", "?")
+
+
+@pytest.mark.parametrize("setter, wording", [
+    ("", "never reached with the outputs no loaded code sets at their first value "
+         "(DOutput at line 4)"),
+    ("        Set doCycleOn;\n", None)])
+def test_an_output_no_loaded_code_sets_is_named_as_an_input(tmp_path, setter, wording):
+    """A task that waits for an output the controller sets (a system output: cycle on) or
+    another task sets reads its first value in the check: the code after the wait is not
+    unreached under any input.  Set by the program itself, the output is no input."""
+    path = tmp_path / "cell.mod"
+    path.write_text("MODULE Cell\n    VAR num state := 0;\n    PROC main()\n"
+                    "        WaitUntil DOutput(doCycleOn) = 1;\n        state := 1;\n"
+                    f"    ENDPROC\n    PROC Start()\n{setter}        state := 2;\n"
+                    "    ENDPROC\nENDMODULE\n")
+    messages = [m for m in coverage(api.check(api.load_program([str(path)])))
+                if "Start" not in m]
+    assert messages == ([wording] if wording else ["never reached under any input"])

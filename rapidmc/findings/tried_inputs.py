@@ -11,7 +11,10 @@ and names the reading instruction instead of "under any input".
 
 The controller's readings a check takes as fixed (OpMode, GetSysInfo, ...: RMC702,
 ``fixed_readings``) are inputs of the same kind: each call is named ("and the
-controller's readings fixed (OpMode at line 107)").
+controller's readings fixed (OpMode at line 107)").  So is an output signal that no
+loaded code sets, read back with DOutput (a system output the controller sets, or one
+another task sets): "the outputs no loaded code sets at their first value (DOutput at
+line 118)".
 
 A peer that closes its connection is an input too: in reality SocketSend and
 SocketReceive then raise ERR_SOCK_CLOSED, which an ERROR handler may catch; a
@@ -49,9 +52,12 @@ SAMPLED = {
 
 # instructions that raise ERR_SOCK_CLOSED when the peer has closed the connection
 CLOSABLE = ("SOCKETSEND", "SOCKETRECEIVE", "SOCKETRECEIVEFROM")
+# functions reading back an output signal's value
+OUTPUT_READS = ("DOUTPUT", "GOUTPUT", "GOUTPUTDNUM", "AOUTPUT")
 PEERS_OPEN = "no peer closing its socket"      # the kind of those, when closures are not tried
 FIXED = "the controller's readings fixed"      # the kind of a fixed reading (RMC702)
-PHRASES = (PEERS_OPEN, FIXED)                  # kinds that are phrases of their own
+UNSET = "the outputs no loaded code sets at their first value"   # (system outputs, other tasks)
+PHRASES = (PEERS_OPEN, FIXED, UNSET)           # kinds that are phrases of their own
 
 
 @dataclass(frozen=True)
@@ -86,7 +92,34 @@ def sampled_inputs(program: Program, exact: Iterable[tuple] = (),
             if handled and node.name.key in CLOSABLE:
                 found.append(TriedInput(PEERS_OPEN, node.name.text, node.span))
     found += [TriedInput(FIXED, name.text, name.span) for name in reading_calls(program)]
+    found += [TriedInput(UNSET, call.name.text, call.span)
+              for call in unset_output_reads(program)]
     return tuple(sorted(set(found), key=lambda t: (t.span.file, t.span.line, t.span.column)))
+
+
+def unset_output_reads(program: Program) -> list:
+    """The reads (DOutput, GOutput, AOutput) of an output signal that no loaded code sets.
+
+    The controller sets such an output itself (a system output: motors on, cycle on,
+    execution error) or another task does; the check reads the value it started with.  A
+    signal counts as set when any call of the program (every task, the environment model)
+    passes it by name as an argument, to Set, SetDO, PulseDO, a routine of the program's own
+    taking a signal parameter, or anything but the reads themselves."""
+    reads, passed = [], set()
+    for routine in program.routines:
+        if routine.ast is None:
+            continue
+        for node, _ in ast.walk(routine.ast):
+            if not isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
+                continue
+            names = [a.value.name.key for a in node.args if isinstance(a.value, ast.NameRef)]
+            if node.name.key in OUTPUT_READS and isinstance(node, ast.FunctionCall):
+                if names and routine.namespace != ENVIRONMENT_NAMESPACE:
+                    reads.append((names[0], node))
+            else:
+                passed.update(names)
+    outputs = {signal.key for signal in program.signals if signal.kind.endswith("O")}
+    return [call for name, call in reads if name in outputs and name not in passed]
 
 
 def reached(inputs: Sequence[TriedInput], executed: set) -> tuple:
