@@ -340,3 +340,19 @@ def test_an_output_no_loaded_code_sets_is_named_as_an_input(tmp_path, setter, wo
     messages = [m for m in coverage(api.check(api.load_program([str(path)])))
                 if "Start" not in m]
     assert messages == ([wording] if wording else ["never reached under any input"])
+
+
+def test_a_handler_an_egm_session_failure_reaches_names_the_egm_instructions(tmp_path):
+    """An EGM session may fail on a controller (ERR_UDPUC_COMM when the sensor stops
+    answering); the check never fails one, so the handler is not unreached under any input."""
+    path = tmp_path / "egm.mod"
+    path.write_text(
+        "MODULE Egm\n    VAR egmident egm_id;\n    VAR num lost := 0;\n    PROC main()\n"
+        "        EGMGetId egm_id;\n"
+        "        EGMSetupUC ROB_1, egm_id, \"default\", \"UCdevice\", \\Joint;\n"
+        "        EGMRunJoint egm_id, EGM_STOP_HOLD \\J1 \\CondTime:=5;\n"
+        "        EGMReset egm_id;\n    ERROR\n        IF ERRNO = ERR_UDPUC_COMM THEN\n"
+        "            lost := 1;\n        ENDIF\n    ENDPROC\nENDMODULE\n")
+    assert coverage(api.check(api.load_program([str(path)]))) == [
+        "lines 10-11 of main are never reached with no EGM session failing "
+        "(EGMSetupUC at line 6; EGMRunJoint at line 7)"]

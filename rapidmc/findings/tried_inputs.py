@@ -18,7 +18,10 @@ line 118)".
 
 A peer that closes its connection is an input too: in reality SocketSend and
 SocketReceive then raise ERR_SOCK_CLOSED, which an ERROR handler may catch; a
-check models that only with ``--socket-closures``.  Without it, when the program
+check models that only with ``--socket-closures``.  Likewise an EGM session may fail
+(ERR_UDPUC_COMM when the sensor stops answering), which the check never makes happen:
+in a program with an ERROR handler each EGM instruction that ran is named ("with no EGM
+session failing (EGMRunJoint at line 29)").  Without it, when the program
 has an ERROR handler, each such instruction that ran is named as well ("with no
 peer closing its socket (SocketSend at line 97)"): the handler's code may be
 reached by a closure the check did not try.
@@ -57,7 +60,12 @@ OUTPUT_READS = ("DOUTPUT", "GOUTPUT", "GOUTPUTDNUM", "AOUTPUT")
 PEERS_OPEN = "no peer closing its socket"      # the kind of those, when closures are not tried
 FIXED = "the controller's readings fixed"      # the kind of a fixed reading (RMC702)
 UNSET = "the outputs no loaded code sets at their first value"   # (system outputs, other tasks)
-PHRASES = (PEERS_OPEN, FIXED, UNSET)           # kinds that are phrases of their own
+# EGM instructions whose session may fail on a real controller (ERR_UDPUC_COMM when the
+# sensor stops answering), which the check never makes happen (they have no effect in it)
+EGM_SESSIONS = ("EGMRUNJOINT", "EGMRUNPOSE", "EGMSETUPUC", "EGMACTJOINT", "EGMACTPOSE",
+                "EGMSTREAMSTART")
+EGM_UP = "no EGM session failing"              # the kind of those, in a program with a handler
+PHRASES = (PEERS_OPEN, FIXED, UNSET, EGM_UP)   # kinds that are phrases of their own
 
 
 @dataclass(frozen=True)
@@ -80,7 +88,8 @@ def sampled_inputs(program: Program, exact: Iterable[tuple] = (),
     routines = [routine for routine in program.routines
                 if routine.ast is not None and routine.namespace != ENVIRONMENT_NAMESPACE]
     # (every task's code: the environment model is no input)
-    handled = not closures and any(routine.ast.error is not None for routine in routines)
+    has_handler = any(routine.ast.error is not None for routine in routines)
+    handled = not closures and has_handler
     found = []
     for routine in routines:
         for node, _ in ast.walk(routine.ast):
@@ -91,6 +100,8 @@ def sampled_inputs(program: Program, exact: Iterable[tuple] = (),
                 found.append(TriedInput(SAMPLED[node.name.key], node.name.text, node.span))
             if handled and node.name.key in CLOSABLE:
                 found.append(TriedInput(PEERS_OPEN, node.name.text, node.span))
+            if has_handler and node.name.key in EGM_SESSIONS:
+                found.append(TriedInput(EGM_UP, node.name.text, node.span))
     found += [TriedInput(FIXED, name.text, name.span) for name in reading_calls(program)]
     found += [TriedInput(UNSET, call.name.text, call.span)
               for call in unset_output_reads(program)]
