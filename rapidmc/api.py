@@ -255,6 +255,21 @@ def _probed_lines(model: Model) -> set:
     return lines
 
 
+def _closure_probe(model: Model) -> tuple:
+    """The lines a search run with peers closing their sockets (``--socket-closures``:
+    ERR_SOCK_CLOSED at any SocketReceive or SocketSend), the derived messages as in the
+    check, and whether that search was complete.  Closures stay out of the verdicts (the
+    issue's "closures stay as now"); a closing peer is a real input, so a line this search
+    runs is reachable, complete or not, and when it is complete no unreached line waits for
+    a closure any more.  Bounded by ``PROBE_STATES`` as the message probes are."""
+    options = replace(model.options, socket_closures=True)
+    config, _ = _check_config(model.program, model.atoms, options, model.messages)
+    watch = ExploredFacts(model.program, (), model.atoms)
+    search = find_reachable(RapidSystem(model.program, config, reduction.NO_PLAN), _never,
+                            observe=watch, max_states=PROBE_STATES)
+    return watch.statements.executed, search.verdict == HOLDS
+
+
 def _never(state) -> bool:
     return False
 
@@ -356,6 +371,10 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
             raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
     if searches.facts.complete and any(d.probes for d in model.messages):
         searches.facts.statements.executed |= _probed_lines(model)
+    if searches.facts.complete and searches.facts.waits_for_closures():
+        lines, complete = _closure_probe(model)
+        searches.facts.statements.executed |= lines
+        searches.facts.closures_tried = complete
     resting_on = assumptions(model.program)
     results = [replace(r, assumes=for_verdict(resting_on, r.result, model.describer))
                for r in results]

@@ -125,7 +125,8 @@ def test_an_unreached_statement_is_never_about_to_run(case, monkeypatch):
     program = api.load_program(["prog.mod"], env=env)
     report = api.check(program)
     routines = {r.span.line: r for r in program.routines if r.namespace == 0}
-    stretches = [w.span for w in report.warnings if w.code.code == "RMC701"]
+    stretches = [span for w in report.warnings if w.code.code == "RMC701"
+                 for span in (w.span, *w.places)]        # (a grouped warning's places)
     lines = set().union(*map(statement_lines, routines.values()))
     reported = {w.line for w in stretches} | {line for w in stretches for line in lines
                                               if w.line <= line <= w.end_line}

@@ -194,9 +194,9 @@ TEXT_SERVERS = ["socket_test_cases", "socket_parsed_code", "socket_strtoval_arra
 
 
 def unreached_under_any_input(report: api.CheckReport) -> set:
-    return {(w.span.file, line) for w in report.warnings if w.code.code == "RMC701"
-            and "under any input" in w.message
-            for line in range(w.span.line, (w.span.end_line or w.span.line) + 1)}
+    return {(span.file, line) for w in report.warnings if w.code.code == "RMC701"
+            and "under any input" in w.message for span in (w.span, *w.places)
+            for line in range(span.line, (span.end_line or span.line) + 1)}
 
 
 @pytest.mark.parametrize("body", [EXACT, PARSED])
@@ -251,30 +251,51 @@ EXCHANGE = """    VAR num lost := 0;
     ENDPROC"""
 
 
-@pytest.mark.parametrize("body, wording", [
-    ("            Exchange;",
-     "lines 26-27 of Exchange are never reached with no peer closing its socket "
-     "(SocketReceive at lines 14, 24; SocketSend at line 23)"),
-    ("            Exchange;\n            Report;",
-     "lines 27-28 of Exchange are never reached with no peer closing its socket and the "
-     "controller's readings fixed (SocketReceive at lines 14, 25; SocketSend at line 24; "
-     "OpMode at line 33)")])
-def test_a_handler_a_closing_peer_reaches_is_not_unreached_under_any_input(
-        tmp_path, body, wording):
+def test_a_handler_a_closing_peer_reaches_is_shown_reached_by_the_closure_probe(tmp_path):
     """After each message the server reports and waits for an acknowledgement it does not
     read: a peer closing the connection makes SocketSend or SocketReceive raise
-    ERR_SOCK_CLOSED, which the handler catches.  Without --socket-closures the check never
-    closes, so the handler's lines are said to rest on that; with it they run.  A fixed
-    reading (OpMode) is named the same way."""
+    ERR_SOCK_CLOSED, which the handler catches.  The verdicts' search never closes (closures
+    are opt-in), but a coverage probe lets peers close: the handler's lines count as reached,
+    and the other unreached lines no longer rest on "no peer closing its socket"."""
     path = tmp_path / "server.mod"
-    text = SERVER.format(body=body, extra=EXCHANGE)
+    text = SERVER.format(body="            Exchange;\n            Report;", extra=EXCHANGE)
     path.write_text(text)
     program = api.load_program([str(path)])
-    messages = coverage(api.check(program))
-    assert messages[0] == wording
-    closing = api.check(program, [], api.CheckOptions(socket_closures=True))
+    report = api.check(program)
     lost = text.splitlines().index("            lost := 1;") + 1
+    assert report.executed is not None and (str(path), lost) in report.executed
+    assert coverage(report) == [
+        "never reached with the controller's readings fixed (OpMode at line 33)"]  # mode := 1
+    assert report.verdicts == api.check(program, [], api.CheckOptions(
+        reuse_explored=False)).verdicts
+    closing = api.check(program, [], api.CheckOptions(socket_closures=True))
     assert closing.executed is not None and (str(path), lost) in closing.executed
+
+
+def test_a_closure_probe_the_bound_stops_keeps_the_wording(tmp_path, monkeypatch):
+    """A closure probe stopped by its bound shows nothing about the lines it did not run:
+    their warnings still say they rest on no peer closing its socket."""
+    monkeypatch.setattr(api, "PROBE_STATES", 3)
+    path = tmp_path / "server.mod"
+    path.write_text(SERVER.format(body="            Exchange;", extra=EXCHANGE))
+    messages = coverage(api.check(api.load_program([str(path)])))
+    assert messages == [
+        "lines 26-27 of Exchange are never reached with no peer closing its socket "
+        "(SocketReceive at lines 14, 24; SocketSend at line 23)",
+        "never reached under any input (routine Report never runs)"]
+
+
+def test_no_line_said_unreached_under_any_input_runs_when_peers_close(tmp_path):
+    """The differential test of the wording for closures: with --socket-closures in the
+    verdicts' own search, no line the default check called unreached under any input runs."""
+    path = tmp_path / "server.mod"
+    unused = EXCHANGE + "\n    PROC Unused(num n)\n        state := n;\n    ENDPROC"
+    path.write_text(SERVER.format(body=EXACT + "\n            Exchange;", extra=unused))
+    program = api.load_program([str(path)])
+    claimed = unreached_under_any_input(api.check(program))
+    assert len(claimed) > 2                          # state := 2, Unused
+    closing = api.check(program, [], api.CheckOptions(socket_closures=True))
+    assert closing.executed is not None and not claimed & set(closing.executed)
 
 
 def test_a_length_prefix_frames_each_message_of_the_receive_it_sizes():
@@ -301,3 +322,37 @@ def test_a_routine_no_call_reaches_gives_no_values(tmp_path):
     path.write_text(SERVER.format(body=EXACT, extra=unused))
     [domain] = message_domains(api.load_program([str(path)]))
     assert domain.messages == ("A", "B", "?")
+
+
+@pytest.mark.parametrize("setter, wording", [
+    ("", "never reached with the outputs no loaded code sets at their first value "
+         "(DOutput at line 4)"),
+    ("        Set doCycleOn;\n", None)])
+def test_an_output_no_loaded_code_sets_is_named_as_an_input(tmp_path, setter, wording):
+    """A task that waits for an output the controller sets (a system output: cycle on) or
+    another task sets reads its first value in the check: the code after the wait is not
+    unreached under any input.  Set by the program itself, the output is no input."""
+    path = tmp_path / "cell.mod"
+    path.write_text("MODULE Cell\n    VAR num state := 0;\n    PROC main()\n"
+                    "        WaitUntil DOutput(doCycleOn) = 1;\n        state := 1;\n"
+                    f"    ENDPROC\n    PROC Start()\n{setter}        state := 2;\n"
+                    "    ENDPROC\nENDMODULE\n")
+    messages = [m for m in coverage(api.check(api.load_program([str(path)])))
+                if "Start" not in m]
+    assert messages == ([wording] if wording else ["never reached under any input"])
+
+
+def test_a_handler_an_egm_session_failure_reaches_names_the_egm_instructions(tmp_path):
+    """An EGM session may fail on a controller (ERR_UDPUC_COMM when the sensor stops
+    answering); the check never fails one, so the handler is not unreached under any input."""
+    path = tmp_path / "egm.mod"
+    path.write_text(
+        "MODULE Egm\n    VAR egmident egm_id;\n    VAR num lost := 0;\n    PROC main()\n"
+        "        EGMGetId egm_id;\n"
+        "        EGMSetupUC ROB_1, egm_id, \"default\", \"UCdevice\", \\Joint;\n"
+        "        EGMRunJoint egm_id, EGM_STOP_HOLD \\J1 \\CondTime:=5;\n"
+        "        EGMReset egm_id;\n    ERROR\n        IF ERRNO = ERR_UDPUC_COMM THEN\n"
+        "            lost := 1;\n        ENDIF\n    ENDPROC\nENDMODULE\n")
+    assert coverage(api.check(api.load_program([str(path)]))) == [
+        "lines 10-11 of main are never reached with no EGM session failing "
+        "(EGMSetupUC at line 6; EGMRunJoint at line 7)"]

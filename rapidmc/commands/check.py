@@ -88,7 +88,8 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
                         help="a message SocketReceive may deliver (repeatable; default: one "
                              "empty message)")
     parser.add_argument("--socket-closures", action="store_true",
-                        help="the peer may close a socket at any receive (ERR_SOCK_CLOSED)")
+                        help="the peer may close a socket at any receive or send "
+                             "(ERR_SOCK_CLOSED)")
     parser.add_argument("--no-socket-timeouts", action="store_true",
                         help="receives with a finite \\Time never time out")
     parser.add_argument("--file-lines", action="append", default=[], metavar="TEXT",

@@ -116,14 +116,32 @@ def coverage_warnings(program: Program, executed: set[tuple[str, int]],
     found = unreached(program, executed)
     service = {routine.span for routine in service_routines(program)}
     idle = [u for u in found if u.whole_routine and u.span in service]
+    uncalled = [u for u in found if u.whole_routine and u not in idle
+                and called is not None and u.routine not in called]
+    if len(uncalled) < 2:
+        uncalled = []
     warnings = [u.diagnostic(ANY_INPUT if called is not None and u.routine not in called
                              else inputs)
-                for u in found if u not in idle]
+                for u in found if u not in idle and u not in uncalled]
+    if uncalled:
+        warnings.append(_uncalled_routines(uncalled))
     if len(idle) > 1:
         warnings.append(_idle_service_routines(idle))
     else:
         warnings.extend(u.diagnostic() for u in idle)
     return warnings
+
+
+def _uncalled_routines(uncalled: list[Unreached]) -> Diagnostic:
+    """Routines no chain of calls reaches, as one warning: dead code whatever the inputs,
+    a fact of the call graph (each is a place of the warning), not of the inputs tried."""
+    names = ", ".join(u.routine for u in uncalled)
+    return Diagnostic(
+        NEVER_REACHED, f"never reached {ANY_INPUT}: {len(uncalled)} routines no call "
+        f"reaches ({names})", uncalled[0].span, severity="warning",
+        places=tuple(u.span for u in uncalled[1:]),
+        notes=("no chain of calls from an entry routine or a TRAP leads to them; 'rapidmc "
+               "lint' (unused-routine, RMC807) names each that nothing calls",))
 
 
 def _idle_service_routines(idle: list[Unreached]) -> Diagnostic:

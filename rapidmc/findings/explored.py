@@ -19,7 +19,7 @@ from ..check import HOLDS, VIOLATED, find_reachable
 from ..check.result import SearchResult
 from .vacuity import TriggerWatch, to_text
 from .coverage import StatementWatch, coverage_warnings
-from .tried_inputs import TriedInput, called_routines, qualifier, reached
+from .tried_inputs import PEERS_OPEN, TriedInput, called_routines, qualifier, reached
 from ..diagnostics import Diagnostic
 from ..ltl import Formula
 from ..model.properties import AtomCompiler
@@ -40,6 +40,9 @@ class ExploredFacts:
         self.valuation = atoms.valuation(self.triggers.atoms, {}) if self.triggers.atoms \
             else _no_atoms
         self.complete = False
+        # a complete coverage probe let peers close their sockets: no unreached line rests
+        # on "no peer closing its socket" (vacuity still does: the probe watches no trigger)
+        self.closures_tried = False
 
     def __call__(self, state: Hashable, successors: Sequence[tuple[Hashable, Hashable]]) -> None:
         self.statements(state, successors)
@@ -95,9 +98,15 @@ class ExploredFacts:
         """Coverage warnings (RMC701); none unless the search was complete."""
         if not self.complete:
             return []
-        inputs = self.inputs_tried()
-        called = called_routines(self.program) if inputs != qualifier(()) else None
+        sampled = [t for t in self.sampled if not (self.closures_tried and t.kind == PEERS_OPEN)]
+        inputs = qualifier(reached(sampled, self.statements.executed))
+        called = called_routines(self.program)
         return coverage_warnings(self.program, self.statements.executed, inputs, called)
+
+    def waits_for_closures(self) -> bool:
+        """Whether some unreached-code warning would rest on no peer closing its socket (a
+        SocketSend or SocketReceive that could raise ERR_SOCK_CLOSED into a handler ran)."""
+        return any(t.kind == PEERS_OPEN for t in reached(self.sampled, self.statements.executed))
 
     def inputs_tried(self) -> str:
         """``under any input``, or which sampled inputs the search's findings rest on

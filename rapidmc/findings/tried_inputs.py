@@ -11,11 +11,17 @@ and names the reading instruction instead of "under any input".
 
 The controller's readings a check takes as fixed (OpMode, GetSysInfo, ...: RMC702,
 ``fixed_readings``) are inputs of the same kind: each call is named ("and the
-controller's readings fixed (OpMode at line 107)").
+controller's readings fixed (OpMode at line 107)").  So is an output signal that no
+loaded code sets, read back with DOutput (a system output the controller sets, or one
+another task sets): "the outputs no loaded code sets at their first value (DOutput at
+line 118)".
 
 A peer that closes its connection is an input too: in reality SocketSend and
 SocketReceive then raise ERR_SOCK_CLOSED, which an ERROR handler may catch; a
-check models that only with ``--socket-closures``.  Without it, when the program
+check models that only with ``--socket-closures``.  Likewise an EGM session may fail
+(ERR_UDPUC_COMM when the sensor stops answering), which the check never makes happen:
+in a program with an ERROR handler each EGM instruction that ran is named ("with no EGM
+session failing (EGMRunJoint at line 29)").  Without it, when the program
 has an ERROR handler, each such instruction that ran is named as well ("with no
 peer closing its socket (SocketSend at line 97)"): the handler's code may be
 reached by a closure the check did not try.
@@ -49,9 +55,17 @@ SAMPLED = {
 
 # instructions that raise ERR_SOCK_CLOSED when the peer has closed the connection
 CLOSABLE = ("SOCKETSEND", "SOCKETRECEIVE", "SOCKETRECEIVEFROM")
+# functions reading back an output signal's value
+OUTPUT_READS = ("DOUTPUT", "GOUTPUT", "GOUTPUTDNUM", "AOUTPUT")
 PEERS_OPEN = "no peer closing its socket"      # the kind of those, when closures are not tried
 FIXED = "the controller's readings fixed"      # the kind of a fixed reading (RMC702)
-PHRASES = (PEERS_OPEN, FIXED)                  # kinds that are phrases of their own
+UNSET = "the outputs no loaded code sets at their first value"   # (system outputs, other tasks)
+# EGM instructions whose session may fail on a real controller (ERR_UDPUC_COMM when the
+# sensor stops answering), which the check never makes happen (they have no effect in it)
+EGM_SESSIONS = ("EGMRUNJOINT", "EGMRUNPOSE", "EGMSETUPUC", "EGMACTJOINT", "EGMACTPOSE",
+                "EGMSTREAMSTART")
+EGM_UP = "no EGM session failing"              # the kind of those, in a program with a handler
+PHRASES = (PEERS_OPEN, FIXED, UNSET, EGM_UP)   # kinds that are phrases of their own
 
 
 @dataclass(frozen=True)
@@ -74,7 +88,8 @@ def sampled_inputs(program: Program, exact: Iterable[tuple] = (),
     routines = [routine for routine in program.routines
                 if routine.ast is not None and routine.namespace != ENVIRONMENT_NAMESPACE]
     # (every task's code: the environment model is no input)
-    handled = not closures and any(routine.ast.error is not None for routine in routines)
+    has_handler = any(routine.ast.error is not None for routine in routines)
+    handled = not closures and has_handler
     found = []
     for routine in routines:
         for node, _ in ast.walk(routine.ast):
@@ -85,8 +100,37 @@ def sampled_inputs(program: Program, exact: Iterable[tuple] = (),
                 found.append(TriedInput(SAMPLED[node.name.key], node.name.text, node.span))
             if handled and node.name.key in CLOSABLE:
                 found.append(TriedInput(PEERS_OPEN, node.name.text, node.span))
+            if has_handler and node.name.key in EGM_SESSIONS:
+                found.append(TriedInput(EGM_UP, node.name.text, node.span))
     found += [TriedInput(FIXED, name.text, name.span) for name in reading_calls(program)]
+    found += [TriedInput(UNSET, call.name.text, call.span)
+              for call in unset_output_reads(program)]
     return tuple(sorted(set(found), key=lambda t: (t.span.file, t.span.line, t.span.column)))
+
+
+def unset_output_reads(program: Program) -> list:
+    """The reads (DOutput, GOutput, AOutput) of an output signal that no loaded code sets.
+
+    The controller sets such an output itself (a system output: motors on, cycle on,
+    execution error) or another task does; the check reads the value it started with.  A
+    signal counts as set when any call of the program (every task, the environment model)
+    passes it by name as an argument, to Set, SetDO, PulseDO, a routine of the program's own
+    taking a signal parameter, or anything but the reads themselves."""
+    reads, passed = [], set()
+    for routine in program.routines:
+        if routine.ast is None:
+            continue
+        for node, _ in ast.walk(routine.ast):
+            if not isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
+                continue
+            names = [a.value.name.key for a in node.args if isinstance(a.value, ast.NameRef)]
+            if node.name.key in OUTPUT_READS and isinstance(node, ast.FunctionCall):
+                if names and routine.namespace != ENVIRONMENT_NAMESPACE:
+                    reads.append((names[0], node))
+            else:
+                passed.update(names)
+    outputs = {signal.key for signal in program.signals if signal.kind.endswith("O")}
+    return [call for name, call in reads if name in outputs and name not in passed]
 
 
 def reached(inputs: Sequence[TriedInput], executed: set) -> tuple:

@@ -202,7 +202,8 @@ def _no_data(call) -> None:
 
 
 @compiled("SocketSend(VAR socketdev Socket \\string Str | VAR rawbytes RawData | VAR anytype Data "
-              "\\num NoOfBytes)")
+              "\\num NoOfBytes)",
+          modelled=CHOICE)
 def _socket_send(calls, compiler, call, entry):
     _no_data(call)
     arguments = Arguments(calls, compiler, call, entry)
@@ -214,6 +215,9 @@ def _socket_send(calls, compiler, call, entry):
 
     def send(m):
         _require(m.read_ref(socket(m)), SOCKET_CONNECTED, "SocketSend")
+        # a peer that closed the connection makes the send fail (only when closures are tried)
+        if may_fail(m, "SocketSend", call.span, _closures(m)) != RECEIVED:
+            raise RapidError("ERR_SOCK_CLOSED", "SocketSend: the peer closed the connection")
         limit = _optional(count(m))
         if is_raw:
             data = rawbytes.as_bytes(raw(m))
