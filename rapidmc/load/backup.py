@@ -244,8 +244,10 @@ def resolve_program_files(args) -> ProgramFiles:
             if sealed:
                 encrypted[None if becomes_main and number == 0 else t.name] = sealed
                 notes.extend(skipped_note(f, t.name) for f in sealed)
-        for key, who in other_writers(path, [t.name for t in chosen]).items():
+        outside_writers, unparsed = other_writers(path, [t.name for t in chosen])
+        for key, who in outside_writers.items():
             writers.setdefault(key, who)
+        notes.extend(unparsed)
         if becomes_main:
             main_task, main_entry = chosen[0].name, chosen[0].entry
             paths.extend(task_modules(path, chosen[0]))

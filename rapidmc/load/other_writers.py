@@ -15,45 +15,83 @@ such data, by the writer the check leaves out:
 
 A task made only of encrypted modules declares nothing rapidmc can read; the
 PERS it may write that no loaded code writes stay ``outside_data``'s own case.
+A module of a task not loaded that rapidmc cannot parse is read as encrypted
+code is: it may write each shared PERS its task declares, in the modules that
+parse and in its own declarations (lines ``PERS type name``); a note (RMC730)
+names it, since its writes are not known but assumed.
 The reads of the named data take the stored value or any value of the domain
 (``outside_data``); the verdicts name the writer under ``assumes:``.
 """
 from __future__ import annotations
 
+import re
 from pathlib import Path
 from typing import Iterable, Optional
 
 from .. import ast
-from ..diagnostics import UserError
+from ..diagnostics import TASKS_LOADED, Diagnostic, UserError
 from ..semantics.library import lookup_function, lookup_procedure
 from ..semantics.library.registry import matched_parameters
 
 
-def other_writers(path: Path, loaded: Iterable[str]) -> dict:
+_DECLARED_PERS = re.compile(r"^[ \t]*(LOCAL[ \t]+|TASK[ \t]+)?PERS[ \t]+\w+[ \t]+(\w+)",
+                            re.IGNORECASE | re.MULTILINE)
+
+
+def other_writers(path: Path, loaded: Iterable[str]) -> tuple[dict, list]:
     """Upper-case PERS name -> who else may write it (a phrase), for the backup at
-    ``path`` whose tasks named ``loaded`` are loaded."""
+    ``path`` whose tasks named ``loaded`` are loaded; and the notes (RMC730) naming
+    the modules of tasks not loaded that rapidmc cannot parse."""
     from .backup import backup_tasks, task_encrypted, task_modules_readable, task_modules
-    from ..syntax import load_program
     loaded = set(loaded)
     found: dict = {}
+    notes: list = []
     for task in backup_tasks(path):
         sealed = bool(task_encrypted(task))
         if (task.name in loaded and not sealed) or not task_modules_readable(task):
             continue
-        try:
-            program = load_program(task_modules(path, task))
-        except UserError:                # a task the controller would not load either
-            continue
-        shared = _shared_persistents(program)
+        programs, unparsable = _parsed_modules(task_modules(path, task))
+        shared = set().union(*(_shared_persistents(program) for program in programs))
         if sealed:
             who = f"the encrypted modules of task {task.name}"
             for key in shared:
                 found.setdefault(key, who)
-        if task.name not in loaded:
-            who = f"task {task.name} (not loaded)"
-            for key in sorted(written_names(program) & shared):
+        if task.name in loaded:
+            continue
+        who = f"task {task.name} (not loaded)"
+        written = set().union(*(written_names(program) for program in programs))
+        for key in sorted(written & shared):
+            found.setdefault(key, who)
+        for module in unparsable:
+            name = Path(module).name
+            declared = {m.group(2).upper() for m in
+                        _DECLARED_PERS.finditer(Path(module).read_text(errors="replace"))
+                        if not m.group(1)}
+            who = f"module {name} of task {task.name} (not loaded, not parsed)"
+            for key in sorted(shared | declared):
                 found.setdefault(key, who)
-    return found
+            notes.append(Diagnostic(
+                TASKS_LOADED, f"module {name} of task {task.name}, which is not loaded, "
+                "cannot be parsed: every shared PERS its task declares counts as data it "
+                "may write", ast.Span(module, 0, 0), severity="note"))
+    return found, notes
+
+
+def _parsed_modules(modules: list) -> tuple[list, list]:
+    """The task's modules parsed (all at once, else one by one), and the modules that
+    cannot be parsed."""
+    from ..syntax import load_program
+    try:
+        return [load_program(modules)], []
+    except UserError:
+        pass
+    programs, unparsable = [], []
+    for module in modules:
+        try:
+            programs.append(load_program([module]))
+        except UserError:
+            unparsable.append(module)
+    return programs, unparsable
 
 
 def _shared_persistents(program: ast.Program) -> set:

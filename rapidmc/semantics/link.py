@@ -58,6 +58,10 @@ class Linker:
         self.outside_data: dict = {}     # slot -> load.outside_data.OutsideData
         self.failed_names: set[str] = set()     # declarations that failed: uses stay quiet
         self.booked_errors = 0                  # BookErrNo call sites numbered so far
+        # the namespace whose code is being compiled: each task has its own USER module
+        self.compiling_namespace = P.PROGRAM_NAMESPACE
+        # (namespace, key) -> the data of that task's USER module (reg1 ...)
+        self.user_module_data: dict[tuple[int, str], Symbol] = {}
         self._predefined_types()
 
     # ------------------------------------------------------------ errors
@@ -183,15 +187,39 @@ class Linker:
     def _system_module_data(self, entry) -> Symbol:
         """Data of a system module, given a slot on first use: the variables of the USER module
         (reg1..reg5, clock1) and the persistents of BASE (tool0, wobj0, load0), which a program
-        may pass to a PERS or INOUT parameter of its own routines."""
+        may pass to a PERS or INOUT parameter of its own routines.  Every task has its own
+        USER module (and its own C_MOTSET), so a variable gets a slot per task (the task's
+        namespace); the persistents of BASE are shared, as every PERS is."""
+        key = entry.name.upper()
+        if entry.storage == "VAR":
+            return self._user_module_data(entry, key)
+        return self._new_system_module_data(entry, key, P.PROGRAM_NAMESPACE)
+
+    def _new_system_module_data(self, entry, key: str, namespace: int) -> Symbol:
+        user = entry.storage == "VAR"
         rapid_type = self.builtin_types[entry.type_name.upper()]
         slot = len(self.globals)
-        module = "user" if entry.storage == "VAR" else "base"
-        self.globals.append(P.GlobalData(slot, entry.name, entry.name.upper(), rapid_type,
-                                         entry.storage, module, P.PROGRAM_NAMESPACE, False, None,
+        self.globals.append(P.GlobalData(slot, entry.name, key, rapid_type, entry.storage,
+                                         "user" if user else "base", namespace, False, None,
                                          entry.value))
         symbol = Symbol(GLOBAL_DATA, entry.name, rapid_type, slot=slot, storage=entry.storage)
-        self.system.declare(entry.name.upper(), symbol)
+        if user:
+            self.user_module_data[(namespace, key)] = symbol
+        else:
+            self.system.declare(key, symbol)
+        return symbol
+
+    def _user_module_data(self, entry, key: str) -> Symbol:
+        """A variable of the USER module of the task being compiled (an environment model
+        acts on the main task's), declared in that task's scope, so its routines' lookups
+        and the analyses (``load.shared_data``, the partial-order reduction) find it."""
+        compiling = self.compiling_namespace
+        namespace = P.PROGRAM_NAMESPACE if compiling == P.ENVIRONMENT_NAMESPACE else compiling
+        symbol = self.user_module_data.get((namespace, key))
+        if symbol is None:
+            symbol = self._new_system_module_data(entry, key, namespace)
+        if compiling in self.namespaces:
+            self.namespaces[compiling].declare(key, symbol)
         return symbol
 
     # ---------------------------------------------------------------- signals
@@ -257,7 +285,9 @@ class Linker:
             task.name for _, task in task_namespaces)
         for routine in self.routines:
             compiler = RoutineCompiler(self, routine, routine.scope)
+            self.compiling_namespace = routine.namespace
             self.attempt(compiler.compile, routine.ast)
+        self.compiling_namespace = P.PROGRAM_NAMESPACE
         entry_index = self.attempt(self._entry, entry)
         task_entries = tuple(self.attempt(self._entry, task.entry, namespace, task.name)
                              for namespace, task in task_namespaces)
@@ -498,9 +528,11 @@ class Linker:
 
     # --------------------------------------------------------------- routines
     def _prepare_routines(self, namespace: int) -> None:
+        self.compiling_namespace = namespace
         for routine in self.routines:
             if routine.namespace == namespace:
                 self._prepare_routine(routine, namespace)
+        self.compiling_namespace = P.PROGRAM_NAMESPACE
 
     def _prepare_routine(self, routine: P.Routine, namespace: int) -> None:
         """Scope, parameters and routine data of one routine (errors recorded, not raised)."""

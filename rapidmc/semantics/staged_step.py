@@ -30,6 +30,7 @@ from typing import Optional
 from .choosers import CheckConfig
 from .fused_step import fused_successors
 from .plain_step import plain_successors
+from .program import FIRST_TASK_NAMESPACE
 from .robots import task_robot, with_task_robot
 from .state import ENDED, FAILED, RUNNING, Frame, Interrupts, State, Transition
 
@@ -63,13 +64,15 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
         return None
     steps = view_steps(program, config)
     interrupts = state[4]
-    plan = None
-    if runnable[0] == 0 and (interrupts[0] or interrupts[3] or interrupts[1]):
-        plan = _main_plan(program, state, steps.timer_choices(interrupts))
+    plans = None                         # per runnable task: its plan (_task_plan)
+    if interrupts[0] or interrupts[3] or interrupts[1]:
+        plans = {task: _task_plan(program, stacks[task], task, steps.timer_choices(
+            program, interrupts, task)) for task in runnable}
     inputs = steps.input_values(state[2])
-    ready = steps.input_values(state[2], interrupts[3]) if plan and interrupts[3] else inputs
+    ready = steps.input_values(state[2], interrupts[3]) if plans and interrupts[3] else inputs
     # a task's views share their transitions (ViewSteps) only when there are several
-    shared = {} if len(inputs) > 1 or (plan is not None and len(plan) > 1) else None
+    shared = {} if len(inputs) > 1 or (
+        plans is not None and any(len(plan) > 1 for plan in plans.values())) else None
     task_labels = steps.task_labels(runnable)
     # the task each transition's label names (task_of), when no input label comes first
     # with that name
@@ -80,8 +83,8 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
     for io, ready_io, input_label in zip(inputs, ready, config.input_labels):
         for task, task_label in zip(runnable, task_labels):
             label = input_label + task_label if input_label else task_label
-            if plan is not None and task == 0:
-                _main_steps(state, label, ready_io, plan, steps, shared, result)
+            if plans is not None:
+                _task_steps(state, task, label, ready_io, plans[task], steps, shared, result)
             else:
                 robot = task_robot(program, state[3], task)
                 view = _new_tuple(State, (stacks[task], state[1], io, robot) + rest)
@@ -176,14 +179,14 @@ class ViewSteps:
         return values
 
     @staticmethod
-    def timer_choices(interrupts: Interrupts) -> list:
-        """(label, interrupts) per combination of timers firing, in the general order
-        (each active timer not pending may fire, False before True), delayed signal
-        changes done."""
+    def timer_choices(program, interrupts: Interrupts, task: int) -> list:
+        """(label, interrupts) per combination of ``task``'s timers firing, in the general
+        order (each active timer of the task not pending may fire, False before True),
+        delayed signal changes done."""
         ready = interrupts._replace(scheduled=()) if interrupts[3] else interrupts
         found = []
         if ready[0]:
-            _fire(ready[0], 0, ready[1], (), found)
+            _fire(program, task, ready[0], 0, ready[1], (), found)
         else:
             found.append(((), ready[1]))
         return [(label, ready if pending is ready[1] else ready._replace(pending=pending))
@@ -259,25 +262,47 @@ def _may_merge(transitions: list) -> bool:
 
 
 # ---------------------------------------------------------------------------
-# The main task's step with interrupts
+# A task's step with interrupts
 # ---------------------------------------------------------------------------
 
-def _fire(table: tuple, start: int, pending: tuple, label: tuple, found: list) -> None:
+def interrupt_task(program, entry) -> int:
+    """The task that serves interrupt ``entry``: the task whose TRAP it is (a task can
+    connect only its own traps; the environment's count as the main task's)."""
+    namespace = program.routines[entry[1]].namespace
+    return namespace - FIRST_TASK_NAMESPACE + 1 if namespace >= FIRST_TASK_NAMESPACE else 0
+
+
+def next_pending(program, interrupts: Interrupts, task: int) -> Optional[int]:
+    """The first pending interrupt ``task`` takes: one it connected, or one no longer
+    connected (dropped by whichever task steps), None if there is none."""
+    table = interrupts[0]
+    for number in interrupts[1]:
+        entry = next((e for e in table if e[0] == number), None)
+        if entry is None or interrupt_task(program, entry) == task:
+            return number
+    return None
+
+
+def _fire(program, task: int, table: tuple, start: int, pending: tuple, label: tuple,
+          found: list) -> None:
     for position in range(start, len(table)):
         entry = table[position]
         source = entry[2]
-        if entry[3] and source and source[0] == "timer" and entry[0] not in pending:
+        if entry[3] and source and source[0] == "timer" and entry[0] not in pending and \
+                interrupt_task(program, entry) == task:
             name = f"timer {entry[0]}"
-            _fire(table, position + 1, pending, label + ((name, False),), found)
-            _fire(table, position + 1, pending + (entry[0],), label + ((name, True),), found)
+            _fire(program, task, table, position + 1, pending, label + ((name, False),),
+                  found)
+            _fire(program, task, table, position + 1, pending + (entry[0],),
+                  label + ((name, True),), found)
             return
     found.append((label, pending))
 
 
-def _main_plan(program, state: State, choices: list) -> list:
-    """Per combination of timers: (label, interrupts, None) when the instruction runs,
-    or (label, interrupts, (frames, INTNO, span)) when a pending TRAP starts instead."""
-    frames = state[0]
+def _task_plan(program, frames: tuple, task: int, choices: list) -> list:
+    """Per combination of timers: (label, interrupts, None) when the instruction of the
+    task with stack ``frames`` runs, or (label, interrupts, (frames, INTNO, span)) when a
+    pending TRAP of that task starts instead."""
     plan = []
     may_trap = None
     for label, interrupts in choices:
@@ -286,8 +311,12 @@ def _main_plan(program, state: State, choices: list) -> list:
             if may_trap is None:
                 may_trap = not in_trap(program, frames)
             if may_trap:
-                number = pending[0]
-                interrupts = interrupts._replace(pending=pending[1:])
+                number = next_pending(program, interrupts, task)
+                if number is None:
+                    plan.append((label, interrupts, None))
+                    continue
+                interrupts = interrupts._replace(
+                    pending=tuple(n for n in pending if n != number))
                 entry = next((e for e in interrupts[0] if e[0] == number), None)
                 if entry is not None:
                     trap = program.routines[entry[1]]
@@ -302,25 +331,27 @@ def _main_plan(program, state: State, choices: list) -> list:
     return plan
 
 
-def _main_steps(state: State, label: tuple, io, plan: list, steps: ViewSteps,
+def _task_steps(state: State, task: int, label: tuple, io, plan: list, steps: ViewSteps,
                 shared: Optional[dict], result: list) -> None:
-    """The main task's steps from signal values ``io`` (inputs set, delayed changes
-    done), one per ``plan`` entry: a TRAP starts or the instruction runs; then the
-    signal edges since ``state`` order their interrupts."""
+    """The steps of ``task`` from signal values ``io`` (inputs set, delayed changes
+    done), one per ``plan`` entry: a pending TRAP of the task starts on its stack or the
+    instruction runs; then the signal edges since ``state`` order their interrupts."""
     before = state[2]
+    program = steps.program
+    stack = state[0] if task == 0 else state[10][task - 1]
+    robot = task_robot(program, state[3], task)
     for timers_label, interrupts, trap in plan:
         if trap is not None:
             entered, number, span = trap
-            after = _new_tuple(State, (entered, state[1], io, state[3], interrupts, state[5],
-                                       number) + state[7:])
-            result.append(_new_tuple(Transition, (label + timers_label, span,
-                                                  _with_edges(after, before), "", False)))
+            view = _new_tuple(State, (entered, state[1], io, robot, interrupts, state[5],
+                                      number) + state[7:10] + ((),))
+            transition = _in_task(program, state, task, label + timers_label,
+                                  _new_tuple(Transition, ((), span, view, "", False)))
+            result.append(transition._replace(state=_with_edges(transition[2], before)))
             continue
-        program = steps.program
-        view = _new_tuple(State, (state[0], state[1], io, task_robot(program, state[3], 0),
-                                  interrupts) + state[5:10] + ((),))
-        for transition in steps(view, 0, shared):
-            transition = _in_task(program, state, 0, label + timers_label, transition)
+        view = _new_tuple(State, (stack, state[1], io, robot, interrupts) + state[5:10] + ((),))
+        for transition in steps(view, task, shared):
+            transition = _in_task(program, state, task, label + timers_label, transition)
             after = _with_edges(transition[2], before)
             if after is not transition[2]:
                 transition = transition._replace(state=after)

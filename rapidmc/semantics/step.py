@@ -34,8 +34,8 @@ from .choosers import Chooser, CheckConfig, ScriptChooser  # noqa: F401 (the ste
 from .fused_step import fused_successors
 from .plain_step import (MERGED_STEP_LIMIT, is_plain, plain_successors,  # noqa: F401
                          run_instruction, run_merged)
-from .staged_step import (deactivated, idle_steps_dropped, in_trap, is_staged,
-                          signal_edges_pending, staged_successors)
+from .staged_step import (deactivated, idle_steps_dropped, in_trap, interrupt_task,
+                          is_staged, next_pending, signal_edges_pending, staged_successors)
 from .timing import apply_scheduled, enqueue
 
 ENVIRONMENT_STEP_LIMIT = 100_000
@@ -245,7 +245,7 @@ def execute_step(m: Machine):
     if m.tasks:
         span = _step_some_task(m, io_before)
     else:
-        span = _step_main_task(m, io_before)
+        span = _step_task(m, io_before)
     if program.environment_react is not None and m.status == RUNNING:
         io_mid = m.io
         run_environment_routine(m, program.environment_react)
@@ -254,16 +254,19 @@ def execute_step(m: Machine):
     return span
 
 
-def _step_main_task(m: Machine, io_before):
+def _step_task(m: Machine, io_before, task: int = 0):
+    """One step of ``task``, whose stack is ``m.frames``: an interrupt it connected may
+    start its TRAP on that stack instead of the instruction."""
     interrupts = m.interrupts
     if interrupts.table or interrupts.scheduled or interrupts.pending:
-        return _step_with_interrupts(m, io_before)
+        return _step_with_interrupts(m, io_before, task)
     return run_instruction(m)
 
 
 def _step_some_task(m: Machine, io_before):
     """Several tasks: one of those still running takes the step (any one when checking,
-    in turn when running).  Interrupts are served in the main task."""
+    in turn when running).  Each task serves the interrupts it connected, on its own
+    stack, in its own steps."""
     names = m.program.task_names
     runnable = [i for i, stack in enumerate((m.frames,) + m.tasks) if stack]
     if len(runnable) == 1:
@@ -273,11 +276,11 @@ def _step_some_task(m: Machine, io_before):
     robots = m.robot
     m.robot = task_robot(m.program, robots, task)      # the task moves its own robot
     if task == 0:
-        span = _step_main_task(m, io_before)
+        span = _step_task(m, io_before)
     else:
         main_frames = m.frames
         m.frames = list(m.tasks[task - 1])
-        span = run_instruction(m)
+        span = _step_task(m, io_before, task)
         if m.status != FAILED:
             tasks = list(m.tasks)
             tasks[task - 1] = tuple(m.frames)
@@ -289,33 +292,35 @@ def _step_some_task(m: Machine, io_before):
     return span
 
 
-def _step_with_interrupts(m: Machine, io_before):
+def _step_with_interrupts(m: Machine, io_before, task: int):
     if m.chooser.check_mode and m.interrupts.scheduled:
         apply_scheduled(m)                 # time is abstract: delayed changes happen now
     if m.chooser.check_mode and m.interrupts.table:
-        _timers_may_fire(m)
-    span = _execute(m)
+        _timers_may_fire(m, task)
+    span = _execute(m, task)
     if m.interrupts.table and m.io != io_before:
         signal_edges(m, io_before)
     return span
 
 
-def _execute(m: Machine):
-    """Start a pending TRAP, or execute the instruction at the program counter."""
+def _execute(m: Machine, task: int):
+    """Start a pending TRAP of ``task``, or execute the instruction at the program counter."""
     program = m.program
     interrupts = m.interrupts
     if interrupts.pending and interrupts.enabled and not in_trap(program, m.frames):
-        number = interrupts.pending[0]
-        m.interrupts = interrupts._replace(pending=interrupts.pending[1:])
-        entry = next((e for e in interrupts.table if e.number == number), None)
-        if entry is not None:
-            trap = program.routines[entry.trap]
-            m.intno = float(number)
-            m.frames.append(Frame(trap.index, 0, trap.initial_locals))
-            if entry.source and entry.source[-1] is True and entry.source[0] != "pers":
-                m.interrupts = m.interrupts._replace(
-                    table=deactivated(m.interrupts.table, number))
-            return trap.span
+        number = next_pending(program, interrupts, task)
+        if number is not None:
+            m.interrupts = interrupts._replace(
+                pending=tuple(n for n in interrupts.pending if n != number))
+            entry = next((e for e in interrupts.table if e.number == number), None)
+            if entry is not None:
+                trap = program.routines[entry.trap]
+                m.intno = float(number)
+                m.frames.append(Frame(trap.index, 0, trap.initial_locals))
+                if entry.source and entry.source[-1] is True and entry.source[0] != "pers":
+                    m.interrupts = m.interrupts._replace(
+                        table=deactivated(m.interrupts.table, number))
+                return trap.span
     return run_instruction(m)
 
 
@@ -324,9 +329,11 @@ def signal_edges(m: Machine, before) -> None:
     m.interrupts = signal_edges_pending(m.interrupts, before, m.io)
 
 
-def _timers_may_fire(m: Machine) -> None:
+def _timers_may_fire(m: Machine, task: int) -> None:
+    program = m.program
     for entry in m.interrupts.table:
         if entry.active and entry.source and entry.source[0] == "timer" and \
-                entry.number not in m.interrupts.pending:
+                entry.number not in m.interrupts.pending and \
+                interrupt_task(program, entry) == task:
             if m.choose(f"timer {entry.number}", (False, True)):
                 enqueue(m, entry.number)

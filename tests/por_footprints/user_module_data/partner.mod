@@ -1,0 +1,5 @@
+MODULE Partner
+  PROC main()
+    reg1 := 2;                           ! LOCAL
+  ENDPROC                                ! LOCAL
+ENDMODULE
