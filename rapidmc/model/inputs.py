@@ -13,8 +13,8 @@ from .. import ast
 from ..diagnostics import DOMAIN, USAGE, Diagnostic, UserError, error
 from ..diagnostics.quoting import quoted
 from ..load.input_domains import Assumed, default_domains
-from ..semantics.configured_signals import _walk_statements
-from ..semantics.program import PROGRAM_NAMESPACE, Program
+from ..semantics.library.arguments import argument_expression
+from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
 from .properties import AtomCompiler
 
 INTERRUPT_ORDERS = {"ISIGNALDI", "ISIGNALDO", "ISIGNALAI", "ISIGNALAO", "ISIGNALGI", "ISIGNALGO"}
@@ -23,19 +23,42 @@ INTERRUPT_ORDERS = {"ISIGNALDI", "ISIGNALDO", "ISIGNALAI", "ISIGNALAO", "ISIGNAL
 def observed_inputs(program: Program, atoms: AtomCompiler):
     """The free inputs whose values states must keep (None: all of them).
 
-    Inputs that no atom reads are chosen when the program reads them; an atom
-    that reads signal data (bound at run time) or an interrupt ordered on a
-    signal makes every input observed.
+    Inputs that no atom reads are chosen when the program reads them.  An
+    interrupt ordered on a signal (``ISignalDI diReset, 1, intno``) needs that
+    signal's value kept, since its edge between two states raises the
+    interrupt; the other inputs stay chosen where read (a backup with eleven
+    digital inputs and one ``ISignalDI`` offered 2,048 input valuations per
+    step before).  An atom that reads signal data (bound at run time), an
+    interrupt ordered on signal data or a routine's parameter, or a late-bound
+    call (it may order one) makes every input observed.
     """
     if atoms.observes_signal_data:
         return None
+    observed = set(atoms.observed)
     for routine in program.routines:
-        if routine.namespace != PROGRAM_NAMESPACE or routine.ast is None:
+        if routine.namespace == ENVIRONMENT_NAMESPACE or routine.ast is None:
             continue
-        for node in _walk_statements(routine.ast.body):
-            if isinstance(node, ast.ProcedureCall) and node.name.key in INTERRUPT_ORDERS:
+        for node, _ in ast.walk(routine.ast):
+            if isinstance(node, ast.LateBindingCall):
                 return None
-    return set(atoms.observed)
+            if isinstance(node, ast.ProcedureCall) and node.name.key in INTERRUPT_ORDERS:
+                signal = _ordered_signal(program, routine.ast, node)
+                if signal is None:
+                    return None
+                observed.add(signal.index)
+    return observed
+
+
+def _ordered_signal(program: Program, routine: ast.Routine, call: ast.ProcedureCall):
+    """The configured signal an interrupt order names directly, else None (signal data,
+    a parameter, a routine's own data: known only at run time)."""
+    expr = argument_expression(call, "Signal", 0)
+    if not isinstance(expr, ast.NameRef):
+        return None
+    key = expr.name.key
+    own = {p.name.key for p in routine.parameters} | \
+        {d.name.key for d in routine.data}
+    return None if key in own else program.signal(key)
 
 
 def _read_inputs(program: Program, atoms: AtomCompiler) -> Optional[frozenset]:
