@@ -134,13 +134,16 @@ class EnvironmentFault(Exception):
 # Transitions
 # ---------------------------------------------------------------------------
 
-def enumerate_choices(run, chooser_factory):
-    """Run ``run(chooser)`` once per combination of choices; yield its results."""
+def enumerate_choices(run, chooser_factory, time_check=None):
+    """Run ``run(chooser)`` once per combination of choices; yield its results.
+    ``time_check`` (``CheckConfig.time_check``) is called before each run but the first."""
     script: Optional[list] = []
     while script is not None:
         chooser = chooser_factory(script)
         yield run(chooser)
         script = chooser.next_script()
+        if script is not None and time_check is not None:
+            time_check()
 
 
 # The environment's choice at a program stopped by Stop or Break.
@@ -181,7 +184,8 @@ def general_successors(program: Program, state: State, config: CheckConfig) -> l
     if config.free_inputs and not _inputs_matter(program, state):
         return _successors_inputs_after(program, state, config)
     transitions = list(enumerate_choices(lambda chooser: step(program, state, chooser),
-                                         lambda script: ScriptChooser(script, config)))
+                                         lambda script: ScriptChooser(script, config),
+                                         config.time_check))
     if state.tasks:
         transitions = idle_steps_dropped(state, transitions)
     return transitions
@@ -205,7 +209,9 @@ def _successors_inputs_after(program: Program, state: State,
     its result, instead of re-running the step for each valuation.
     """
     inner = list(enumerate_choices(lambda chooser: step(program, state, chooser),
-                                   lambda script: ScriptChooser(script, config, inputs=False)))
+                                   lambda script: ScriptChooser(script, config, inputs=False),
+                                   config.time_check))
+    config.time_check()                  # the valuations below cost a state each
     result = []
     append = result.append
     for assignments, input_label in zip(config.input_assignments, config.input_labels):
