@@ -23,7 +23,7 @@ from typing import Optional
 
 from pyrsistent import pvector
 
-from .errors import errno_name
+from .errors import errno_name, error_detail
 from .values import signal_value
 from .machine import Machine
 from .program import Program
@@ -118,12 +118,18 @@ def run_environment_routine(m: Machine, routine_index: int) -> None:
         if m.status == FAILED:
             fault = m.fault
             raise EnvironmentFault(f"environment routine {program_routine.name} stopped with "
-                                   f"{errno_name(fault.errno)}: {fault.message}")
+                                   f"{_named_fault(fault)}")
     finally:
         m.frames = saved_frames
         m.status = saved_status
         m.waiting = saved_waiting
         m.robot = saved_robot
+
+
+def _named_fault(fault) -> str:
+    """``ERR_DIVZERO: division by zero``, the name once."""
+    detail = error_detail(fault.errno, fault.message)
+    return f"{errno_name(fault.errno)}: {detail}" if detail else errno_name(fault.errno)
 
 
 class EnvironmentFault(Exception):
