@@ -29,8 +29,9 @@ def observed_inputs(program: Program, atoms: AtomCompiler):
     interrupt; the other inputs stay chosen where read (a backup with eleven
     digital inputs and one ``ISignalDI`` offered 2,048 input valuations per
     step before).  An atom that reads signal data (bound at run time), an
-    interrupt ordered on signal data or a routine's parameter, or a late-bound
-    call (it may order one) makes every input observed.
+    interrupt ordered on signal data or a routine's parameter makes every input
+    observed.  A late-bound call (``%name%``) binds to user procedures only
+    (``statements._LateBindingCall``), whose orders this walk sees.
     """
     if atoms.observes_signal_data:
         return None
@@ -39,8 +40,6 @@ def observed_inputs(program: Program, atoms: AtomCompiler):
         if routine.namespace == ENVIRONMENT_NAMESPACE or routine.ast is None:
             continue
         for node, _ in ast.walk(routine.ast):
-            if isinstance(node, ast.LateBindingCall):
-                return None
             if isinstance(node, ast.ProcedureCall) and node.name.key in INTERRUPT_ORDERS:
                 signal = _ordered_signal(program, routine.ast, node)
                 if signal is None:
