@@ -1,8 +1,8 @@
 """The text report's warnings are bounded; --all-warnings and the machine formats keep all.
 
 A whole backup's text report was 31 KB, mostly warnings after the verdicts (issue 28).  Text
-shows ``WARNINGS_SHOWN`` of them in full, warnings before notes, then how many of each code
-it left out; ``--all-warnings`` shows every one; JSON and SARIF list every one whatever the
+shows ``WARNINGS_SHOWN`` of them in full, warnings before notes and unreached code (RMC701)
+after both, then how many of each code it left out; ``--all-warnings`` shows every one; JSON and SARIF list every one whatever the
 text shows.
 """
 from __future__ import annotations
@@ -62,3 +62,16 @@ def test_warnings_come_before_notes_in_the_bounded_text():
     assert "and 1 more warnings and notes (1 RMC735)" in text
     assert "ClkRead" in warnings_text(notes + [warning], every=True)
     assert "more warnings" not in warnings_text(notes + [warning], every=True)
+
+
+def test_unreached_code_comes_after_what_the_verdicts_rest_on(tmp_path, capsys):
+    """ECL 7600: 90 unreached stretches, then a ClkRead reading and the encrypted modules'
+    notes; the reading and the notes are shown, stretches fill the rest."""
+    path = program(tmp_path)
+    source = open(path).read().replace("        n := 1;\n", "        n := ClkRead(clock);\n")
+    open(path, "w").write(source.replace("    VAR num n := 0;\n",
+                                         "    VAR num n := 0;\n    VAR clock clock;\n"))
+    main(["check", path, "--quiet"])
+    err = capsys.readouterr().err
+    assert "[RMC702]" in err.split("warning: never reached")[0], err
+    assert err.count("warning: never reached") == WARNINGS_SHOWN - 1

@@ -55,7 +55,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--quiet", action="store_true", help="no progress line on stderr")
     parser.add_argument("--all-warnings", action="store_true",
                         help=f"text: every warning and note in full (default: the first "
-                             f"{WARNINGS_SHOWN}, warnings before notes, then a count per code; "
+                             f"{WARNINGS_SHOWN}, warnings before notes, unreached code last, then a "
+                             f"count per code; "
                              f"json, sarif, codeclimate, --html and --junit always keep all)")
     baseline_options.add_arguments(parser)
     cluster_options.add_arguments(parser)
@@ -298,14 +299,16 @@ def warnings_text(warnings, brief_coverage: bool = False, every: bool = False) -
     (``trace_text.file_names``).  ``brief_coverage`` (beside a counterexample, which is what
     the reader needs first): the unreached-code warnings (RMC701) one line each, without
     their source line, at most ``COVERAGE_SHOWN``, then a count.  Unless ``every``
-    (``--all-warnings``): at most ``WARNINGS_SHOWN`` in all, warnings before notes, then how
-    many of each code are left out."""
+    (``--all-warnings``): at most ``WARNINGS_SHOWN`` in all, warnings before notes,
+    unreached code (RMC701) after both, then how many of each code are left out."""
     from ..report.line_width import wrapped
     from ..report.trace_text import file_names
     names = file_names([w.span.file for w in warnings if w.span and w.span.file])
     lines = names.legend()
     if not every:
-        warnings = sorted(warnings, key=lambda w: SEVERITY_ORDER.get(w.severity, 1))
+        # what the verdicts rest on first; unreached code, the many, last
+        warnings = sorted(warnings, key=lambda w: (w.code is NEVER_REACHED,
+                                                   SEVERITY_ORDER.get(w.severity, 1)))
     shown, left_out = 0, {}
     coverage = 0
     for warning in warnings:
