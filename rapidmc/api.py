@@ -38,7 +38,7 @@ from typing import Callable, Iterable, Mapping, Optional, Sequence
 from . import ast
 from .check import HOLDS, UNKNOWN, VIOLATED, Progress, SearchResult, find_reachable
 from .check import native
-from .check.budget import DEFAULT_MAX_STATES
+from .check.budget import DEFAULT_MAX_STATES, time_check
 from .check.distributed import Cluster
 from .check.trace import Trace, build_trace
 from .diagnostics import (AUTOMATON, DISTRIBUTED_SCOPE, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED,
@@ -226,6 +226,7 @@ def _check_config(program: Program, atoms: AtomCompiler, options: CheckOptions,
     domains, assumed = free_input_domains(program, atoms, options.input_domains)
     config = CheckConfig(program, options.tp_answers, options.fk_answers, domains,
                          observed=observed_inputs(program, atoms))
+    config.time_check = time_check       # the running search's time limit, inside a step
     if options.socket_messages:
         config.socket_messages = tuple(options.socket_messages)
     for kind, name in DERIVED_DOMAINS.items():

@@ -9,11 +9,21 @@ slower than a toy model) so that the clock is read about ten times a
 second: often enough for the progress line and the time limit, rarely
 enough to cost nothing.  A checkpoint also puts the objects the search has
 kept so far out of the cycle collector's reach (``collector``).
+
+Checkpoints come with new states only, so a search whose expansions find few
+new states (thousands of successors that are mostly known), or one step with
+thousands of successors, would run far past its time limit.  So the model's
+successor generation calls ``time_check`` between two runs of a step: it
+reads the clock of the running search's budget and raises ``OutOfTime`` once
+its time is over; the search catches it (``stopped_in_time``) and ends
+UNKNOWN at the time limit, like a checkpoint would.  The clock is injectable,
+so tests count clock readings instead of timing.
 """
 from __future__ import annotations
 
 import time
-from typing import Optional
+from contextlib import contextmanager
+from typing import Callable, Optional
 
 from .collector import freeze_survivors
 from .progress import Progress
@@ -23,17 +33,26 @@ FIRST_CHECKPOINT = 16
 CHECKPOINT_SECONDS = 0.1
 MAX_CHECKPOINT_DISTANCE = 1 << 16
 
+# the clock of budgets made without one (tests put a counter here)
+default_clock: Callable[[], float] = time.monotonic
+
+
+class OutOfTime(Exception):
+    """The running search's time limit is over (raised by ``time_check``)."""
+
 
 class SearchBudget:
     """The bounds of one search and the clock it started with."""
 
     def __init__(self, max_states: Optional[int] = DEFAULT_MAX_STATES,
                  max_seconds: Optional[float] = None,
-                 progress: Optional[Progress] = None):
+                 progress: Optional[Progress] = None,
+                 clock: Optional[Callable[[], float]] = None):
         self.max_states = max_states if max_states is not None else float("inf")
         self.max_seconds = max_seconds
         self.progress = progress
-        self.started = time.monotonic()
+        self.clock = clock if clock is not None else default_clock
+        self.started = self.clock()
         self.last_checkpoint = self.started
         self.distance = FIRST_CHECKPOINT
         self.next_checkpoint = FIRST_CHECKPOINT
@@ -51,7 +70,7 @@ class SearchBudget:
     def checkpoint(self, stored: int, transitions: int, depth: int) -> bool:
         """Report progress; False (and ``reason`` set) once the time limit is over."""
         freeze_survivors()
-        now = time.monotonic()
+        now = self.clock()
         self._adapt_distance(now - self.last_checkpoint)
         self.last_checkpoint = now
         self.next_checkpoint = stored + self.distance
@@ -68,11 +87,47 @@ class SearchBudget:
         wanted = int(states_per_second * CHECKPOINT_SECONDS)
         self.distance = max(1, min(wanted, self.distance * 4, MAX_CHECKPOINT_DISTANCE))
 
+    def over_time(self) -> bool:
+        """Whether the time limit is over (``reason`` set then); reads the clock."""
+        if self.max_seconds is None or self.reason is not None:
+            return self.reason is not None
+        if self.clock() - self.started >= self.max_seconds:
+            self.reason = f"time limit {self.max_seconds:g} s reached"
+        return self.reason is not None
+
     def elapsed(self) -> float:
-        return time.monotonic() - self.started
+        return self.clock() - self.started
 
     def finish(self) -> float:
         """Clear the progress line; the seconds the search took."""
         if self.progress is not None:
             self.progress.finish()
         return self.elapsed()
+
+
+_running: Optional[SearchBudget] = None     # the budget of the search running its loop
+
+
+def time_check() -> None:
+    """Raise ``OutOfTime`` when the running search has a time limit and it is over: what a
+    model's successor generation calls between two runs of a step."""
+    budget = _running
+    if budget is not None and budget.max_seconds is not None and budget.over_time():
+        raise OutOfTime(budget.reason)
+
+
+@contextmanager
+def stopped_in_time(budget: SearchBudget):
+    """Run a search's loop with ``budget`` as the running one (``time_check`` reads it); an
+    ``OutOfTime`` from the successor generation ends the loop with the budget's ``reason``
+    set (the caller's result is UNKNOWN).  Outside such a loop (a counterexample's steps
+    described after the search) ``time_check`` never raises."""
+    global _running
+    outer, _running = _running, budget
+    try:
+        yield
+    except OutOfTime:
+        if budget.reason is None:       # another search's budget ran out: not ours
+            raise
+    finally:
+        _running = outer

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 from array import array
 
-from .budget import SearchBudget
+from .budget import SearchBudget, stopped_in_time
 from .lasso import build_lasso
 from .native import NATIVE, _native, native_search
 from .product import Product
@@ -37,7 +37,9 @@ def search_accepting_cycle(product: Product, budget: SearchBudget) -> SearchResu
     """HOLDS if no accepting cycle is reachable, VIOLATED with a lasso, or UNKNOWN."""
     search = _NativeCycleSearch(product, budget) if native_search() else \
         _CycleSearch(product, budget)
-    found = search.run()
+    found = None
+    with stopped_in_time(budget):
+        found = search.run()
     stats = search.stats()
     stats.seconds = budget.finish()
     if found is not None:

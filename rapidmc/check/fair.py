@@ -30,7 +30,7 @@ from __future__ import annotations
 from typing import Callable, Hashable, Optional, Protocol
 
 from ..ltl.graph import pop_component
-from .budget import DEFAULT_MAX_STATES, SearchBudget
+from .budget import DEFAULT_MAX_STATES, SearchBudget, stopped_in_time
 from .native import engine_of
 from .lasso import LabelledKey, shortest_entry, shortest_path
 from .product import Product
@@ -58,7 +58,9 @@ def search_fair_accepting_cycle(product: Product, fairness: Fairness,
                                 budget: SearchBudget) -> SearchResult:
     """HOLDS if no fair accepting cycle is reachable, VIOLATED with a fair lasso, or UNKNOWN."""
     search = _ComponentSearch(product, fairness, budget)
-    found = search.run()
+    found = None
+    with stopped_in_time(budget):
+        found = search.run()
     stats = search.stats()
     stats.seconds = budget.finish()
     if found is not None:

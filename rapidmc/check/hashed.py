@@ -21,7 +21,7 @@ from __future__ import annotations
 import math
 from typing import Callable, Hashable, Optional
 
-from .budget import SearchBudget
+from .budget import SearchBudget, stopped_in_time
 from .transition_system import STUTTER, TransitionSystem, labelled_successors
 from .result import NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep, SearchResult, SearchStats
 
@@ -111,27 +111,28 @@ def hashed_reachable(system: TransitionSystem, predicate: Callable[[Hashable], b
         return predicate(state)
 
     found = False
-    for initial in system.initial_states():
-        if found or budget.reason is not None:
-            break
-        if visited.add(fingerprint(initial)):
-            found = push(None, initial)
-        while stack and not found:
-            frame = stack[-1]
-            if frame[3] == len(frame[2]):
-                stack.pop()
-                continue
-            label, successor = frame[2][frame[3]]
-            frame[3] += 1
-            if label is STUTTER:
-                continue
-            if visited.add(fingerprint(successor)):
-                if not budget.may_store(stats.product_states):
-                    break
-                if stats.product_states >= budget.next_checkpoint and not budget.checkpoint(
-                        stats.product_states, stats.transitions, len(stack)):
-                    break
-                found = push(label, successor)
+    with stopped_in_time(budget):      # found stays False when the time is up
+        for initial in system.initial_states():
+            if found or budget.reason is not None:
+                break
+            if visited.add(fingerprint(initial)):
+                found = push(None, initial)
+            while stack and not found:
+                frame = stack[-1]
+                if frame[3] == len(frame[2]):
+                    stack.pop()
+                    continue
+                label, successor = frame[2][frame[3]]
+                frame[3] += 1
+                if label is STUTTER:
+                    continue
+                if visited.add(fingerprint(successor)):
+                    if not budget.may_store(stats.product_states):
+                        break
+                    if stats.product_states >= budget.next_checkpoint and not budget.checkpoint(
+                            stats.product_states, stats.transitions, len(stack)):
+                        break
+                    found = push(label, successor)
     return _finish(stats, visited, budget,
                    [LassoStep(f[0], f[1], NO_AUTOMATON) for f in stack] if found else None)
 
@@ -140,7 +141,9 @@ def hashed_accepting_cycle(system: TransitionSystem, buchi, valuation, visited_o
                            visited_inner, budget: SearchBudget) -> SearchResult:
     """Nested depth-first search for an accepting cycle of model × ``buchi``."""
     search = _NestedSearch(system, buchi, valuation, visited_outer, visited_inner, budget)
-    lasso = search.run()
+    lasso = None
+    with stopped_in_time(budget):
+        lasso = search.run()
     return _finish(search.stats, visited_outer, budget, None, lasso)
 
 

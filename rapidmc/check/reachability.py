@@ -32,7 +32,7 @@ from __future__ import annotations
 from array import array
 from typing import Callable, Hashable, Optional, Protocol, Sequence
 
-from .budget import DEFAULT_MAX_STATES, SearchBudget
+from .budget import DEFAULT_MAX_STATES, SearchBudget, stopped_in_time
 from .collector import frozen_while_searching
 from .transition_system import TransitionSystem, Valuation, as_sequence, transition_label
 from .progress import Progress
@@ -110,7 +110,9 @@ def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], boo
             return hashed_reachable(system, predicate, visited_sets(storage, 1)[0], budget)
         search = _BreadthFirst(system, predicate, budget, deadlock_is_target, observe,
                                record=None if explored is None else valuations)
-        target = search.run()
+        target = None
+        with stopped_in_time(budget):
+            target = search.run()
     stats = search.stats()
     stats.seconds = budget.finish()
     if target is not None:

@@ -53,6 +53,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="text counterexamples in full: every initial value, values not "
                              "shortened, repeated steps not folded")
     parser.add_argument("--quiet", action="store_true", help="no progress line on stderr")
+    parser.add_argument("--all-warnings", action="store_true",
+                        help=f"text: every warning and note in full (default: the first "
+                             f"{WARNINGS_SHOWN}, warnings before notes, unreached code last, then a "
+                             f"count per code; "
+                             f"json, sarif, codeclimate, --html and --junit always keep all)")
     baseline_options.add_arguments(parser)
     cluster_options.add_arguments(parser)
 
@@ -229,8 +234,8 @@ def _check(args: argparse.Namespace) -> int:
         print(format_text(results, describer, args.full_trace))
         sys.stdout.flush()
         if warnings:
-            print(warnings_text(warnings, _beside_counterexample(args, results)),
-                  file=sys.stderr)
+            print(warnings_text(warnings, _beside_counterexample(args, results),
+                                args.all_warnings), file=sys.stderr)
     if args.junit:
         from ..report.junit import format_junit
         write_report(args.junit, format_junit(gated_results, describer, *_suite(args),
@@ -265,8 +270,8 @@ def _check_every_entry(args: argparse.Namespace) -> int:
         sys.stdout.flush()
         if warnings:
             every = [checked for _, results, _ in tables for checked in results]
-            print(warnings_text(warnings, _beside_counterexample(args, every)),
-                  file=sys.stderr)
+            print(warnings_text(warnings, _beside_counterexample(args, every),
+                                args.all_warnings), file=sys.stderr)
     if args.junit:
         from ..report.junit import format_junit_entries
         write_report(args.junit, format_junit_entries(tables, *_suite(args), warnings),
@@ -284,28 +289,47 @@ def _new_findings(args: argparse.Namespace, report: api.CheckReport, known):
 
 
 COVERAGE_SHOWN = 5      # unreached-code warnings beside a counterexample (then a count)
+# warnings and notes the text report shows in full after the verdicts (then a count per code):
+# a whole backup gave 31 KB of them, and the verdicts are what a cell engineer reads first
+WARNINGS_SHOWN = 10
+SEVERITY_ORDER = {"error": 0, "warning": 1, "note": 2}
 
 
-def warnings_text(warnings, brief_coverage: bool = False) -> str:
+def warnings_text(warnings, brief_coverage: bool = False, every: bool = False) -> str:
     """The warnings with their files named as the counterexamples name them
     (``trace_text.file_names``).  ``brief_coverage`` (beside a counterexample, which is what
     the reader needs first): the unreached-code warnings (RMC701) one line each, without
-    their source line, at most ``COVERAGE_SHOWN``, then a count."""
+    their source line, at most ``COVERAGE_SHOWN``, then a count.  Unless ``every``
+    (``--all-warnings``): at most ``WARNINGS_SHOWN`` in all, warnings before notes,
+    unreached code (RMC701) after both, then how many of each code are left out."""
     from ..report.line_width import wrapped
     from ..report.trace_text import file_names
     names = file_names([w.span.file for w in warnings if w.span and w.span.file])
     lines = names.legend()
+    if not every:
+        # what the verdicts rest on first; unreached code, the many, last
+        warnings = sorted(warnings, key=lambda w: (w.code is NEVER_REACHED,
+                                                   SEVERITY_ORDER.get(w.severity, 1)))
+    shown, left_out = 0, {}
     coverage = 0
     for warning in warnings:
-        if not (brief_coverage and warning.code is NEVER_REACHED):
+        if not every and shown >= WARNINGS_SHOWN:
+            left_out[warning.code.code] = left_out.get(warning.code.code, 0) + 1
+        elif not (brief_coverage and warning.code is NEVER_REACHED):
             lines.append(render(warning, names.shown))
+            shown += 1
         else:
             coverage += 1
             if coverage <= COVERAGE_SHOWN:
                 lines.append(render(warning, names.shown, source=False))
+                shown += 1
     if coverage > COVERAGE_SHOWN:
         lines.append(f"rapidmc: and {coverage - COVERAGE_SHOWN} more unreached stretches "
                      "[RMC701] (--full-trace, --format json or --html shows each)")
+    if left_out:
+        counts = ", ".join(f"{count} {code}" for code, count in sorted(left_out.items()))
+        lines.append(f"rapidmc: and {sum(left_out.values())} more warnings and notes ({counts}): "
+                     "--all-warnings shows each; --format json or sarif and --html list them all")
     return wrapped("\n".join(lines))
 
 

@@ -16,7 +16,7 @@ from typing import Optional, TextIO
 from ..diagnostics import (BAD_INPUT_VALUE, INPUT_EXHAUSTED, RUNTIME_ERROR, STEP_LIMIT,
                           Diagnostic, error, render)
 from ..diagnostics.quoting import one_line
-from ..semantics.errors import errno_name
+from ..semantics.errors import errno_name, error_detail
 from ..semantics.machine import Machine
 from ..semantics.program import Program
 from ..semantics.state import ENDED, FAILED, RUNNING, STOPPED, State
@@ -166,7 +166,7 @@ def fault_diagnostic(program: Program, state: State) -> Diagnostic:
     if routine_index >= 0:
         span = program.routines[routine_index].code[pc].span
     name = errno_name(fault.errno)
-    detail = fault.message if fault.message and fault.message != name else ""
+    detail = error_detail(fault.errno, fault.message or "")
     message = f"uncaught RAPID error {name} (ERRNO {format_num(float(fault.errno))})"
     if detail:
         message += f": {detail}"

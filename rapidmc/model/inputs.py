@@ -14,8 +14,8 @@ from ..diagnostics import DOMAIN, USAGE, Diagnostic, UserError, error
 from ..diagnostics.quoting import quoted
 from ..load.input_domains import Assumed, default_domains
 from ..semantics.configured_signals import walk_routine
+from ..semantics.library.arguments import argument_expression
 from ..semantics.program import Program
-from ..semantics.scope import SIGNAL
 from .properties import AtomCompiler
 
 INTERRUPT_ORDERS = {"ISIGNALDI", "ISIGNALDO", "ISIGNALAI", "ISIGNALAO", "ISIGNALGI", "ISIGNALGO"}
@@ -24,13 +24,15 @@ INTERRUPT_ORDERS = {"ISIGNALDI", "ISIGNALDO", "ISIGNALAI", "ISIGNALAO", "ISIGNAL
 def observed_inputs(program: Program, atoms: AtomCompiler):
     """The free inputs whose values states must keep (None: all of them).
 
-    Inputs that no atom reads are chosen when the program reads them.  An interrupt
-    ordered on a configured signal (``ISignalDI diReset, 1, intno``) fires on a change of
-    that signal, so states keep that signal's value, and only that one: the others are
-    still chosen where they are read (a backup's task ordering interrupts on 4 of its 11
-    inputs had 2,048 successors a step).  An atom that reads signal data bound at run time,
-    or an interrupt ordered on a signal the program names through data (an AliasIO
-    alias, a parameter), makes every input observed.
+    Inputs that no atom reads are chosen when the program reads them.  An
+    interrupt ordered on a signal (``ISignalDI diReset, 1, intno``) needs that
+    signal's value kept, since its edge between two states raises the
+    interrupt; the other inputs stay chosen where read (a backup with eleven
+    digital inputs and one ``ISignalDI`` offered 2,048 input valuations per
+    step before).  An atom that reads signal data (bound at run time), an
+    interrupt ordered on signal data or a routine's parameter makes every input
+    observed.  A late-bound call (``%name%``) binds to user procedures only
+    (``statements._LateBindingCall``), whose orders this walk sees.
     """
     if atoms.observes_signal_data:
         return None
@@ -38,24 +40,25 @@ def observed_inputs(program: Program, atoms: AtomCompiler):
     for routine in program.routines:
         if routine.ast is None:
             continue
-        for node in walk_routine(routine.ast):      # every task's, handlers included
+        for node in walk_routine(routine.ast):      # every task's and model's, handlers too
             if isinstance(node, ast.ProcedureCall) and node.name.key in INTERRUPT_ORDERS:
-                signal = _configured_signal(routine, node)
+                signal = _ordered_signal(program, routine.ast, node)
                 if signal is None:
                     return None
-                observed.add(signal)
+                observed.add(signal.index)
     return observed
 
 
-def _configured_signal(routine, call: ast.ProcedureCall) -> Optional[int]:
-    """The index of the configured signal an interrupt order names directly, else None."""
-    first = next((arg for arg in call.args if arg.name is None), None)
-    if first is None or not isinstance(first.value, ast.NameRef):
+def _ordered_signal(program: Program, routine: ast.Routine, call: ast.ProcedureCall):
+    """The configured signal an interrupt order names directly, else None (signal data,
+    a parameter, a routine's own data: known only at run time)."""
+    expr = argument_expression(call, "Signal", 0)
+    if not isinstance(expr, ast.NameRef):
         return None
-    symbol = routine.scope.lookup(first.value.name.key) if routine.scope is not None else None
-    if symbol is None or symbol.kind != SIGNAL:
-        return None
-    return symbol.slot
+    key = expr.name.key
+    own = {p.name.key for p in routine.parameters} | \
+        {d.name.key for d in routine.data}
+    return None if key in own else program.signal(key)
 
 
 def _read_inputs(program: Program, atoms: AtomCompiler) -> Optional[frozenset]:

@@ -32,7 +32,7 @@ from ..semantics.step import (OPERATOR_CHOICE, CheckConfig, ScriptChooser, initi
                              successors)
 from ..semantics.fused_step import plain_successor_states, stop_pcs, written_globals
 from ..semantics.values import format_num, format_value
-from ..semantics.errors import errno_name
+from ..semantics.errors import errno_name, error_detail
 from .reduction import NO_PLAN, Plan
 from .state_keys import StateKeys
 from .task_atoms import task_qualifier
@@ -486,9 +486,7 @@ HEAD_END = re.compile(r"\b(THEN|DO)$", re.IGNORECASE)
 def fault_text(fault) -> str:
     """``uncaught ERR_DIVZERO: division by zero`` (the name once, when the message repeats it)."""
     name = errno_name(fault.errno)
-    message = fault.message
-    if message == name or message.startswith(name + ":"):
-        message = message[len(name) + 1:].strip()
+    message = error_detail(fault.errno, fault.message)
     return f"uncaught {name}: {message}" if message else f"uncaught {name}"
 
 

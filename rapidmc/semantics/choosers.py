@@ -82,6 +82,10 @@ def next_script(script: list, sizes: list) -> Optional[list]:
     return None
 
 
+def no_time_limit() -> None:
+    """``CheckConfig.time_check`` when no search sets one."""
+
+
 class CheckConfig:
     """Model-checking choices: answer domains and which inputs are free."""
 
@@ -111,6 +115,10 @@ class CheckConfig:
                 lazy[signal.index] = (signal.name, domain)
         self.free_inputs = tuple(free)
         self.lazy_inputs = lazy
+        # called between two runs of one step with different choices: the search engine's
+        # ``check.budget.time_check`` raises there once the running search's time is up,
+        # so a step with thousands of successors cannot run far past the time limit
+        self.time_check = no_time_limit
         # (routine, pc) -> visible, for instructions that join the step before them
         # (reduction.merging); empty: one instruction per step
         self.merge_points: dict = {}

@@ -73,6 +73,15 @@ def errno_name(number: int) -> str:
     return name if name else f"user error {number}"
 
 
+def error_detail(errno: int, message: str) -> str:
+    """A fault's message without the error's name in front (``RapidError`` texts begin
+    ``ERR_DIVZERO: ...``): what follows ``ERR_DIVZERO:`` where a text names it once."""
+    name = errno_name(errno)
+    if message == name or message.startswith(name + ":"):
+        return message[len(name) + 1:].strip()
+    return message
+
+
 class RapidError(Exception):
     """A recoverable RAPID run-time error, e.g. ``RapidError("ERR_DIVZERO")``.
 

@@ -22,7 +22,7 @@ from ..diagnostics import (ARGUMENT, NOT_A_REFERENCE, TYPE_MISMATCH, UNKNOWN_NAM
                            UNKNOWN_ROUTINE, error)
 from . import values
 from .errors import RapidError, placeholder_reached
-from .machine import ABSENT, GLOBAL
+from .machine import ABSENT, GLOBAL, replace_at
 from .scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, Symbol
 from .types import (ATOMIC, BOOL, DNUM, NUM, ORIENT, POS, RECORD, SEMI_VALUE, STRING, AnyType,
                     ArrayType, RapidType, is_numeric, same_type)
@@ -139,6 +139,20 @@ def read_signal(m, index: int) -> float:
     return m.io[index]
 
 
+def _component_positions(record_type, names: tuple) -> Optional[tuple]:
+    """The positions of the components ``names`` (upper-case) inside a value of
+    ``record_type``, or None when the types do not have them."""
+    positions = []
+    for key in names:
+        components = getattr(record_type, "components", None) or ()
+        index = next((i for i, c in enumerate(components) if c.key == key), None)
+        if index is None:
+            return None
+        positions.append(index)
+        record_type = components[index].type
+    return tuple(positions)
+
+
 class ExpressionCompiler:
     """Compiles expressions in one scope (a routine body, a data initialiser, an atom)."""
 
@@ -168,12 +182,20 @@ class ExpressionCompiler:
             compiled = self.convert(compiled, expected)
         return compiled
 
+    def base_value(self, expr: ast.Expr) -> Compiled:
+        """The record or array a component or element is read from: compiled as ``value``
+        does, but never a read of outside data of its own (the component or element read
+        makes the one choice, ``_outside_read``)."""
+        return getattr(self, "_" + type(expr).__name__)(expr, None)
+
     def _outside_read(self, expr, compiled: Compiled) -> Compiled:
         """A read of a value component of PERS data written from outside the loaded code
         (``load.outside_data``): any value of its domain, chosen afresh by each read, as
-        the outside may write between any two (merged steps expand read by read)."""
-        if not isinstance(compiled.type, RapidType) or compiled.type.kind != ATOMIC:
-            return compiled              # a whole array or record: the stored value
+        the outside may write between any two (merged steps expand read by read).  A read
+        of a whole record (``target``, ``rec.sub``) takes its components' choices together
+        (``_outside_record``); a whole array keeps the stored value."""
+        if not isinstance(compiled.type, RapidType) or compiled.type.kind not in (ATOMIC, RECORD):
+            return compiled              # a whole array: the stored value
         path, indexed, node = [], False, expr
         while isinstance(node, (ast.Component, ast.Index)):
             if isinstance(node, ast.Component):
@@ -187,11 +209,15 @@ class ExpressionCompiler:
         if symbol is None or symbol.kind != GLOBAL_DATA:
             return compiled
         outside = self.linker.outside_data.get(symbol.slot)
-        domain = outside.domain(tuple(reversed(path))) if outside is not None else None
-        if domain is None:
+        if outside is None:
+            return compiled
+        domain = outside.domain(tuple(reversed(path)))
+        if domain is None and compiled.type.kind != RECORD:
             return compiled
         name = symbol.name + "".join("." + part.lower() for part in reversed(path)) + \
             ("{*}" if indexed else "")
+        if compiled.type.kind == RECORD:
+            return self._outside_record(compiled, outside, tuple(reversed(path)), name)
         stored = compiled.fn
         if outside.also_written_by is not None:
             if not self.in_wait:
@@ -205,6 +231,35 @@ class ExpressionCompiler:
         def chosen(m):
             stored(m)                    # the stored read's own errors (an index out of range)
             return m.choose(name, domain)
+        return Compiled(chosen, compiled.type)
+
+    @staticmethod
+    def _outside_record(compiled: Compiled, outside, path: tuple, name: str) -> Compiled:
+        """A whole record of outside data read at once: each value component that a read of
+        the component alone may choose (a domain of several values) is chosen here too, so
+        the record and its components tell the same story (the record passed on or copied
+        may hold any value its components may take).  Components of one value keep it; the
+        choices are as many as those the components' own reads make together."""
+        leaves = []
+        for leaf_path, domain in outside.domains.items():
+            if leaf_path[:len(path)] != path or len(domain) < 2:
+                continue
+            positions = _component_positions(compiled.type, leaf_path[len(path):])
+            if positions is not None:
+                leaves.append((positions, name + "".join("." + p.lower()
+                                                         for p in leaf_path[len(path):]),
+                               domain))
+        if not leaves or outside.also_written_by is not None:
+            # written by the loaded code too: elsewhere than a wait the stored value, and a
+            # wait's condition reads components, not whole records
+            return compiled
+        stored = compiled.fn
+
+        def chosen(m):
+            value = stored(m)
+            for positions, leaf_name, domain in leaves:
+                value = replace_at(value, positions, m.choose(leaf_name, domain))
+            return value
         return Compiled(chosen, compiled.type)
 
     def condition(self, expr: ast.Expr) -> Compiled:
@@ -328,7 +383,7 @@ class ExpressionCompiler:
 
     # ------------------------------------------------------- index, component
     def _Index(self, expr: ast.Index, expected) -> Compiled:
-        base = self.value(expr.base)
+        base = self.base_value(expr.base)
         base_type = base.type
         if base_type is not None and not isinstance(base_type, ArrayType):
             raise error(TYPE_MISMATCH, f"'{type_name(base_type)}' is not an array", expr.span)
@@ -359,7 +414,7 @@ class ExpressionCompiler:
         return Compiled(element_n, result_type)
 
     def _Component(self, expr: ast.Component, expected) -> Compiled:
-        base = self.value(expr.base)
+        base = self.base_value(expr.base)
         offset, component_type = self.component_offset(base.type, expr.name)
         base_fn = base.fn
         if base.is_constant:

@@ -400,6 +400,11 @@ def _entry(program, config: CheckConfig, frame: Frame, labelled: bool):
     return enter
 
 
+# the running search's time limit is checked once every 32 runs of a fused step (a run costs
+# a few microseconds; ``CheckConfig.time_check``)
+TIME_CHECK_MASK = 31
+
+
 def fused_successors(program, state: State, config: CheckConfig) -> Optional[list[Transition]]:
     """The transitions of a plain state (``plain_step.is_plain``) through its routine's
     fused function, or None when the step needs the general machinery."""
@@ -427,6 +432,8 @@ def fused_successors(program, state: State, config: CheckConfig) -> Optional[lis
             if not sizes:
                 break
             script = _next_script(script, sizes)
+            if not len(result) & TIME_CHECK_MASK:
+                config.time_check()
     except (RapidError, Fallback):
         return None
     return result
@@ -466,6 +473,8 @@ def fused_successor_states(program, state: State, config: CheckConfig) -> Option
                                              new_store) + rest))
             if not sizes:
                 return result
+            if not len(result) & TIME_CHECK_MASK:
+                config.time_check()
             if len(sizes) == 1:                  # (``_next_script`` written out: a hot path)
                 following = script[0] + 1 if script else 1
                 if following >= sizes[0]:

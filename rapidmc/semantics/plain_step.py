@@ -56,6 +56,8 @@ def plain_successors(program, state: State, config: CheckConfig) -> list[Transit
         result.append(_new_tuple(Transition, (tuple(m.choices), span, m.to_state(), output,
                                               m.waiting)))
         script = chooser.next_script()
+        if script is not None:
+            config.time_check()
     return result
 
 

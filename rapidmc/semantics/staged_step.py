@@ -80,7 +80,9 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
     rest = state[4:10] + ((),)
     result = []
     append = result.append
+    time_check = config.time_check
     for io, ready_io, input_label in zip(inputs, ready, config.input_labels):
+        time_check()                     # (a valuation: one step per runnable task)
         for task, task_label in zip(runnable, task_labels):
             label = input_label + task_label if input_label else task_label
             if plans is not None:

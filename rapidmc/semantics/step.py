@@ -23,7 +23,7 @@ from typing import Optional
 
 from pyrsistent import pvector
 
-from .errors import errno_name
+from .errors import errno_name, error_detail
 from .values import signal_value
 from .machine import Machine
 from .program import Program
@@ -118,12 +118,18 @@ def run_environment_routine(m: Machine, routine_index: int) -> None:
         if m.status == FAILED:
             fault = m.fault
             raise EnvironmentFault(f"environment routine {program_routine.name} stopped with "
-                                   f"{errno_name(fault.errno)}: {fault.message}")
+                                   f"{_named_fault(fault)}")
     finally:
         m.frames = saved_frames
         m.status = saved_status
         m.waiting = saved_waiting
         m.robot = saved_robot
+
+
+def _named_fault(fault) -> str:
+    """``ERR_DIVZERO: division by zero``, the name once."""
+    detail = error_detail(fault.errno, fault.message)
+    return f"{errno_name(fault.errno)}: {detail}" if detail else errno_name(fault.errno)
 
 
 class EnvironmentFault(Exception):
@@ -134,13 +140,16 @@ class EnvironmentFault(Exception):
 # Transitions
 # ---------------------------------------------------------------------------
 
-def enumerate_choices(run, chooser_factory):
-    """Run ``run(chooser)`` once per combination of choices; yield its results."""
+def enumerate_choices(run, chooser_factory, time_check=None):
+    """Run ``run(chooser)`` once per combination of choices; yield its results.
+    ``time_check`` (``CheckConfig.time_check``) is called before each run but the first."""
     script: Optional[list] = []
     while script is not None:
         chooser = chooser_factory(script)
         yield run(chooser)
         script = chooser.next_script()
+        if script is not None and time_check is not None:
+            time_check()
 
 
 # The environment's choice at a program stopped by Stop or Break.
@@ -181,7 +190,8 @@ def general_successors(program: Program, state: State, config: CheckConfig) -> l
     if config.free_inputs and not _inputs_matter(program, state):
         return _successors_inputs_after(program, state, config)
     transitions = list(enumerate_choices(lambda chooser: step(program, state, chooser),
-                                         lambda script: ScriptChooser(script, config)))
+                                         lambda script: ScriptChooser(script, config),
+                                         config.time_check))
     if state.tasks:
         transitions = idle_steps_dropped(state, transitions)
     return transitions
@@ -205,7 +215,9 @@ def _successors_inputs_after(program: Program, state: State,
     its result, instead of re-running the step for each valuation.
     """
     inner = list(enumerate_choices(lambda chooser: step(program, state, chooser),
-                                   lambda script: ScriptChooser(script, config, inputs=False)))
+                                   lambda script: ScriptChooser(script, config, inputs=False),
+                                   config.time_check))
+    config.time_check()                  # the valuations below cost a state each
     result = []
     append = result.append
     for assignments, input_label in zip(config.input_assignments, config.input_labels):
