@@ -24,6 +24,7 @@ import os
 from contextlib import contextmanager
 from typing import Iterator
 
+from .nodes import NodeTable
 from .states import StateTable
 
 try:
@@ -114,11 +115,21 @@ def engine_of(table: StateTable) -> str:
 
 
 if _native is not None:
+    class NativeNodeTable(_native.NodeTable):
+        """``nodes.NodeTable`` with its ``node``, ``ids`` and ``values`` in C (``_nodes.c``):
+        the same nodes, found by address and hash-consed without Python calls."""
+
+        splitter = NodeTable.splitter
+        joiner = NodeTable.joiner
+
     class NativeStateTable(_native.Table, StateTable):
         """A collapsed ``StateTable`` whose ``intern``, ``[id]`` and ``len`` run natively
-        (``_native.Table``); new components and tails are stored by the Python methods."""
+        (``_native.Table``), its components' nodes interned in C (``NativeNodeTable``); new
+        components and tails are stored by the Python methods."""
+
+        node_table = NativeNodeTable
 
         def memory_bytes(self) -> int:
             return self.native_bytes() + self.component_bytes()
 else:
-    NativeStateTable = None
+    NativeNodeTable = NativeStateTable = None

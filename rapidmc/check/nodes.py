@@ -112,15 +112,25 @@ class NodeTable:
             self._bytes += sys.getsizeof(key)      # the key holds the children's ids
         return node_id
 
+    def ids(self, values) -> tuple:
+        """The node id of each of ``values``."""
+        node = self.node
+        return tuple([node(value) for value in values])
+
+    def values(self, ids) -> tuple:
+        """The canonical object of each node id."""
+        canonical = self._canonical
+        return tuple([canonical[node_id] for node_id in ids])
+
     def splitter(self, split: Callable[[Hashable], tuple]) -> Callable[[Hashable], tuple]:
         """``split`` giving the node ids of the parts instead of the parts."""
-        node = self.node
-        return lambda state: tuple([node(part) for part in split(state)])
+        ids = self.ids
+        return lambda state: ids(split(state))
 
     def joiner(self, join: Callable[[tuple], Hashable]) -> Callable[[tuple], Hashable]:
         """``join`` taking the node ids of the parts (a state of canonical objects)."""
-        canonical = self._canonical
-        return lambda ids: join(tuple([canonical[node_id] for node_id in ids]))
+        values = self.values
+        return lambda ids: join(values(ids))
 
     def memory_bytes(self) -> int:
         """Bytes of the nodes and their indexes (counted as they were added), and of the

@@ -41,10 +41,12 @@ SECOND_MASK = (1 << SECOND_BITS) - 1
 class StateTable:
     """``intern(state) -> (id, new)``, ``table[id] -> state``; see the module docstring."""
 
+    node_table = NodeTable        # (the native engine's table interns its nodes in C)
+
     def __init__(self, system):
         split = getattr(system, "split_state", None)
         # components are stored as the ids of their trees of interned nodes (check.nodes)
-        self._nodes = NodeTable()
+        self._nodes = self.node_table()
         self._split = self._nodes.splitter(split) if split is not None else None
         self._join = self._nodes.joiner(system.join_state) if split is not None else None
         self._whole: dict[Hashable, int] = {}
