@@ -1,4 +1,4 @@
-"""Whole controllers as cells are made: multi-task backups with big buffers (issue 27).
+r"""Whole controllers as cells are made: multi-task backups with big buffers (issue 27).
 
 Usage: python bench/controllers.py [--sizes 512] [--motion 2] [--loggers 1] [--kinds 3]
                                    [--engines native,python] [--max-seconds 60] [--max-states N]

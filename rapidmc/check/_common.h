@@ -102,7 +102,7 @@ static inline int budget_stopped(PyObject *budget)
 }
 
 
-/* registers NodeTable (_nodes.c) in the module */
+/* registers NodeTable and PartHashes (_nodes.c) in the module */
 int nodes_register(PyObject *module);
 
 /* registers PackedTable and packed_breadth_first (_packed.c) in the module */

@@ -19,9 +19,9 @@
 #define ALIAS_LIMIT (1 << 14)          /* equal non-canonical objects known, at most */
 #define SMALL_CHILDREN 32
 
-typedef struct {        /* object address -> node id, open addressing */
+typedef struct {        /* object address -> a number (a node id, a hash), open addressing */
     PyObject **objects;
-    int32_t *ids;
+    int64_t *ids;
     uint64_t mask;
     Py_ssize_t count;
 } AddressIndex;
@@ -63,18 +63,27 @@ static uint64_t children_hash(PyTypeObject *kind, const int32_t *children, Py_ss
     return h;
 }
 
-/* the node id of an object found by its address, -1 when it is not there */
-static inline int32_t address_find(const AddressIndex *index, PyObject *object)
+/* whether an object is there (found by its address), and its number in ``*number`` */
+static inline int address_lookup(const AddressIndex *index, PyObject *object, int64_t *number)
 {
     uint64_t position = address_key(object) & index->mask;
     for (;;) {
         PyObject *found = index->objects[position];
         if (found == NULL)
-            return -1;
-        if (found == object)
-            return index->ids[position];
+            return 0;
+        if (found == object) {
+            *number = index->ids[position];
+            return 1;
+        }
         position = (position + 1) & index->mask;
     }
+}
+
+/* the node id of an object found by its address, -1 when it is not there */
+static inline int32_t address_find(const AddressIndex *index, PyObject *object)
+{
+    int64_t id;
+    return address_lookup(index, object, &id) ? (int32_t)id : -1;
 }
 
 static int address_init(AddressIndex *index)
@@ -82,7 +91,7 @@ static int address_init(AddressIndex *index)
     index->mask = FIRST_CAPACITY - 1;
     index->count = 0;
     index->objects = PyMem_Calloc(FIRST_CAPACITY, sizeof(PyObject *));
-    index->ids = PyMem_Malloc(FIRST_CAPACITY * sizeof(int32_t));
+    index->ids = PyMem_Malloc(FIRST_CAPACITY * sizeof(int64_t));
     if (index->objects == NULL || index->ids == NULL) {
         PyErr_NoMemory();
         return -1;
@@ -92,12 +101,12 @@ static int address_init(AddressIndex *index)
 
 /* ``object`` -> ``id`` (not there yet), the index doubled when half full; -1 with an
  * error.  The caller keeps the object alive while it is in the index. */
-static int address_put(AddressIndex *index, PyObject *object, int32_t id)
+static int address_put(AddressIndex *index, PyObject *object, int64_t id)
 {
     if ((uint64_t)(index->count + 1) * 2 > index->mask + 1) {
         uint64_t capacity = (index->mask + 1) * 2;
         PyObject **objects = PyMem_Calloc(capacity, sizeof(PyObject *));
-        int32_t *ids = PyMem_Malloc(capacity * sizeof(int32_t));
+        int64_t *ids = PyMem_Malloc(capacity * sizeof(int64_t));
         if (objects == NULL || ids == NULL) {
             PyMem_Free(objects);
             PyMem_Free(ids);
@@ -136,25 +145,45 @@ static void address_free(AddressIndex *index)
     index->ids = NULL;
 }
 
-/* the aliases hold their objects: forgotten all at once when the bound is reached */
-static void clear_aliases(NodeTable *self)
+/* an index that holds its objects forgets them all at once when full */
+static void address_clear(AddressIndex *index)
 {
-    AddressIndex *aliases = &self->aliases;
-    for (uint64_t i = 0; i <= aliases->mask; i++)
-        Py_CLEAR(aliases->objects[i]);
-    aliases->count = 0;
+    for (uint64_t i = 0; i <= index->mask; i++)
+        Py_CLEAR(index->objects[i]);
+    index->count = 0;
+}
+
+/* ``address_put`` holding ``object``, the index forgotten first when it has ``limit``
+ * objects; -1 with an error */
+static int address_hold(AddressIndex *index, PyObject *object, int64_t number,
+                        Py_ssize_t limit)
+{
+    if (index->count >= limit)
+        address_clear(index);
+    if (address_put(index, object, number) < 0)
+        return -1;
+    Py_INCREF(object);
+    return 0;
+}
+
+static Py_ssize_t address_bytes(const AddressIndex *index)
+{
+    return (Py_ssize_t)(index->mask + 1) * (sizeof(PyObject *) + sizeof(int64_t));
+}
+
+static int address_visit(AddressIndex *index, visitproc visit, void *arg)
+{
+    if (index->objects != NULL)
+        for (uint64_t i = 0; i <= index->mask; i++)
+            Py_VISIT(index->objects[i]);
+    return 0;
 }
 
 /* know ``object`` (equal to node ``id``'s canonical object, not it) by its address;
  * -1 with an error */
 static int add_alias(NodeTable *self, PyObject *object, int32_t id)
 {
-    if (self->aliases.count >= ALIAS_LIMIT)
-        clear_aliases(self);
-    if (address_put(&self->aliases, object, id) < 0)
-        return -1;
-    Py_INCREF(object);
-    return 0;
+    return address_hold(&self->aliases, object, id, ALIAS_LIMIT);
 }
 
 /* the bytes of a new node's own object (objects Python keeps once cost nothing here) */
@@ -442,10 +471,7 @@ static int NodeTable_traverse(NodeTable *self, visitproc visit, void *arg)
     Py_VISIT(self->pvector_type);
     Py_VISIT(self->new_tuple);
     Py_VISIT(self->getsizeof);
-    if (self->aliases.objects != NULL)
-        for (uint64_t i = 0; i <= self->aliases.mask; i++)
-            Py_VISIT(self->aliases.objects[i]);
-    return 0;
+    return address_visit(&self->aliases, visit, arg);
 }
 
 static int NodeTable_clear(NodeTable *self)
@@ -457,7 +483,7 @@ static int NodeTable_clear(NodeTable *self)
     Py_CLEAR(self->new_tuple);
     Py_CLEAR(self->getsizeof);
     if (self->aliases.objects != NULL)
-        clear_aliases(self);
+        address_clear(&self->aliases);
     return 0;
 }
 
@@ -534,7 +560,7 @@ static PyObject *NodeTable_memory_bytes(NodeTable *self, PyObject *unused)
                                        sizeof(int32_t) + sizeof(uint64_t) + sizeof(PyObject *)) +
         (size_t)self->arena_capacity * sizeof(int32_t) +
         (self->key_mask + 1) * sizeof(int32_t) +
-        (self->known.mask + 1 + self->aliases.mask + 1) * (sizeof(PyObject *) + sizeof(int32_t));
+        address_bytes(&self->known) + address_bytes(&self->aliases);
     return PyLong_FromSize_t(bytes);
 }
 
@@ -575,13 +601,160 @@ static PyTypeObject NodeTableType = {
     .tp_as_sequence = &NodeTable_as_sequence,
 };
 
+/* ================================================================ PartHashes */
+
+/* model/state_keys.py's hashes remembered by the identity of the part hashed: ``of(part)``
+ * is ``hash(part)``, ``of_items(sequence)`` the hash of the tuple of its items' hashes
+ * (a tuple or persistent vector item's remembered, any other hashed at once); each index
+ * holds the objects it remembers (so an address is never another object's) and forgets
+ * them all at once when it holds ``limit``.  The same numbers as the Python code's, so
+ * a search's partial-order reduction chooses the same steps on both engines. */
+
+typedef struct {
+    PyObject_HEAD
+    AddressIndex parts;             /* part -> hash(part) */
+    AddressIndex sequences;         /* sequence -> hash of its items' hashes */
+    PyTypeObject *pvector_type;
+    Py_ssize_t limit;
+} PartHashes;
+
+static int part_hash(PartHashes *self, PyObject *value, Py_hash_t *hash)
+{
+    int64_t known;
+    if (address_lookup(&self->parts, value, &known)) {
+        *hash = (Py_hash_t)known;
+        return 0;
+    }
+    *hash = PyObject_Hash(value);
+    if (*hash == -1)
+        return -1;
+    return address_hold(&self->parts, value, *hash, self->limit);
+}
+
+static PyObject *PartHashes_of(PartHashes *self, PyObject *value)
+{
+    Py_hash_t hash;
+    return part_hash(self, value, &hash) < 0 ? NULL : PyLong_FromSsize_t(hash);
+}
+
+static PyObject *PartHashes_of_items(PartHashes *self, PyObject *sequence)
+{
+    int64_t known;
+    if (address_lookup(&self->sequences, sequence, &known))
+        return PyLong_FromSsize_t((Py_ssize_t)known);
+    PyObject *items = PySequence_Fast(sequence, "of_items takes a sequence");
+    if (items == NULL)
+        return NULL;
+    Py_ssize_t length = PySequence_Fast_GET_SIZE(items);
+    PyObject *hashes = PyTuple_New(length);
+    for (Py_ssize_t i = 0; hashes != NULL && i < length; i++) {
+        PyObject *item = PySequence_Fast_GET_ITEM(items, i);
+        PyTypeObject *kind = Py_TYPE(item);
+        Py_hash_t hash;
+        PyObject *number = NULL;
+        if (kind == &PyTuple_Type || kind == self->pvector_type ?
+                part_hash(self, item, &hash) == 0 : (hash = PyObject_Hash(item)) != -1)
+            number = PyLong_FromSsize_t(hash);
+        if (number == NULL)
+            Py_CLEAR(hashes);
+        else
+            PyTuple_SET_ITEM(hashes, i, number);
+    }
+    Py_DECREF(items);
+    if (hashes == NULL)
+        return NULL;
+    Py_hash_t hash = PyObject_Hash(hashes);
+    Py_DECREF(hashes);
+    if (hash == -1 || address_hold(&self->sequences, sequence, hash, self->limit) < 0)
+        return NULL;
+    return PyLong_FromSsize_t(hash);
+}
+
+static PyObject *PartHashes_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
+{
+    Py_ssize_t limit;
+    if (!PyArg_ParseTuple(args, "n:PartHashes", &limit))
+        return NULL;
+    PartHashes *self = (PartHashes *)type->tp_alloc(type, 0);
+    if (self == NULL)
+        return NULL;
+    self->limit = limit;
+    PyObject *pyrsistent = PyImport_ImportModule("pyrsistent");
+    PyObject *empty = pyrsistent == NULL ? NULL :
+        PyObject_CallMethod(pyrsistent, "pvector", NULL);
+    Py_XDECREF(pyrsistent);
+    if (empty == NULL || address_init(&self->parts) < 0 ||
+        address_init(&self->sequences) < 0) {
+        Py_XDECREF(empty);
+        Py_DECREF(self);
+        return NULL;
+    }
+    self->pvector_type = Py_TYPE(empty);
+    Py_INCREF(self->pvector_type);
+    Py_DECREF(empty);
+    return (PyObject *)self;
+}
+
+static int PartHashes_traverse(PartHashes *self, visitproc visit, void *arg)
+{
+    Py_VISIT(self->pvector_type);
+    if (address_visit(&self->parts, visit, arg) != 0)
+        return -1;
+    return address_visit(&self->sequences, visit, arg);
+}
+
+static int PartHashes_clear(PartHashes *self)
+{
+    Py_CLEAR(self->pvector_type);
+    if (self->parts.objects != NULL)
+        address_clear(&self->parts);
+    if (self->sequences.objects != NULL)
+        address_clear(&self->sequences);
+    return 0;
+}
+
+static void PartHashes_dealloc(PartHashes *self)
+{
+    PyObject_GC_UnTrack(self);
+    PartHashes_clear(self);
+    address_free(&self->parts);
+    address_free(&self->sequences);
+    Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+static PyMethodDef PartHashes_methods[] = {
+    {"of", (PyCFunction)PartHashes_of, METH_O,
+     "of(part) -> hash(part), remembered by the part's identity."},
+    {"of_items", (PyCFunction)PartHashes_of_items, METH_O,
+     "of_items(sequence) -> the hash of its items' hashes, remembered by its identity."},
+    {NULL}
+};
+
+static PyTypeObject PartHashesType = {
+    PyVarObject_HEAD_INIT(NULL, 0)
+    .tp_name = "rapidmc.check._native.PartHashes",
+    .tp_doc = "PartHashes(limit): hashes remembered by identity (model/state_keys.py).",
+    .tp_basicsize = sizeof(PartHashes),
+    .tp_flags = Py_TPFLAGS_DEFAULT | Py_TPFLAGS_HAVE_GC,
+    .tp_new = PartHashes_new,
+    .tp_traverse = (traverseproc)PartHashes_traverse,
+    .tp_clear = (inquiry)PartHashes_clear,
+    .tp_dealloc = (destructor)PartHashes_dealloc,
+    .tp_methods = PartHashes_methods,
+};
+
 int nodes_register(PyObject *module)
 {
-    if (PyType_Ready(&NodeTableType) < 0)
+    if (PyType_Ready(&NodeTableType) < 0 || PyType_Ready(&PartHashesType) < 0)
         return -1;
     Py_INCREF(&NodeTableType);
     if (PyModule_AddObject(module, "NodeTable", (PyObject *)&NodeTableType) < 0) {
         Py_DECREF(&NodeTableType);
+        return -1;
+    }
+    Py_INCREF(&PartHashesType);
+    if (PyModule_AddObject(module, "PartHashes", (PyObject *)&PartHashesType) < 0) {
+        Py_DECREF(&PartHashesType);
         return -1;
     }
     return 0;

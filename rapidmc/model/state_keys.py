@@ -12,23 +12,35 @@ data from the remembered hashes of its elements.
 Equal states get equal keys (every part's key is a function of its value), so a key
 that is not found means the state was not met; a key found may be another state's (a
 collision): users compare the states or take the safe side.
+
+On the native engine the remembered hashes are kept in C (``_native.PartHashes``), which
+computes the very same numbers: a key decides the partial-order reduction's choices (its
+cycle proviso), so both engines choose the same steps.
 """
 from __future__ import annotations
 
-from typing import Hashable
+from typing import Hashable, Optional
 
 from pyrsistent import pvector
+
+from ..check.native import _native, native_search
 
 KNOWN_LIMIT = 1 << 15          # parts remembered by identity, at most (then forgotten)
 _CONTAINERS = (tuple, type(pvector()))     # arrays and records (a number is hashed at once)
 
 
 class StateKeys:
-    """``key(state) -> int``, equal for equal states (see the module docstring)."""
+    """``key(state) -> int``, equal for equal states (see the module docstring).
+    ``native``: remember the hashes in C (default: when the native engine searches)."""
 
-    def __init__(self) -> None:
+    def __init__(self, native: Optional[bool] = None) -> None:
         self._known: dict[int, tuple] = {}        # id(part) -> (part, its hash)
         self._stores: dict[int, tuple] = {}       # id(global data) -> (it, its key)
+        if native is None:
+            native = native_search()
+        if native and _native is not None:
+            hashes = _native.PartHashes(KNOWN_LIMIT)
+            self._part, self._store = hashes.of, hashes.of_items
 
     def key(self, state) -> int:
         part = self._part
