@@ -36,6 +36,9 @@ class StateKeys:
     def __init__(self, native: Optional[bool] = None) -> None:
         self._known: dict[int, tuple] = {}        # id(part) -> (part, its hash)
         self._stores: dict[int, tuple] = {}       # id(global data) -> (it, its key)
+        # the state last keyed and its key: callers ask about one state object twice in a
+        # row (a search's kept successors, the reduction's proviso)
+        self._last: list = [None, 0]
         if native is None:
             native = native_search()
         if native and _native is not None:
@@ -43,10 +46,15 @@ class StateKeys:
             self._part, self._store = hashes.of, hashes.of_items
 
     def key(self, state) -> int:
+        last = self._last
+        if state is last[0]:
+            return last[1]
         part = self._part
-        return hash((part(state[0]), self._store(state[1]), part(state[2]), part(state[3]),
-                     state[4], state[5], state[6], state[7], state[8], state[9],
-                     tuple([part(stack) for stack in state[10]])))
+        key = hash((part(state[0]), self._store(state[1]), part(state[2]), part(state[3]),
+                    state[4], state[5], state[6], state[7], state[8], state[9],
+                    tuple([part(stack) for stack in state[10]])))
+        last[0], last[1] = state, key
+        return key
 
     def _part(self, value: Hashable) -> int:
         found = self._known.get(id(value))
