@@ -77,6 +77,19 @@ the deep ``hash`` of whole states in the partial-order reduction's proviso (abou
 Counters, ``bench/native.py --sizes 8,9``: N=8 search 0.48 + 0.18 CPU s (pan 8.29 s
 wall under that load), whole check 371,557 states/s and 138 bytes/state; N=9 834,085 and
 1,742,132 states/s in the two searches, whole check 534,095 states/s and 81 bytes/state.
+
+Measured on 2026-11-28 at 23:00 (issue 27: the node table and the reduction's remembered
+hashes in C, one node table for the searches of a check), each search bounded by states
+(``--max-states 5000``: the same work on every run, which a wall-clock bound under load is
+not), N=512, 3 tasks, 3 kinds, load average 24-29 on 2 cores, CPU seconds of the whole
+command (about 0.9 s of it loading): 11,042 model states with both engines, before and
+after.  Before (main at 002c842), two runs: native 5.78 and 4.92 s (1,909 and 2,243 model
+states per CPU second), Python 6.33 and 5.13 s; after: native 3.04 and 2.34 s (3,628 and
+4,714), Python 4.01 and 3.98 s (2,757 and 2,776).  The run-time error search alone,
+in-process, 20,000 states: 4.01 s on main, 3.15 with the node table in C, 2.42 (best of 4,
+against 3.20) with the hashes in C; the table counts 142-150 bytes per state there (the
+RSS column above is the interpreter's at such small bounds).  The step machine takes none
+of these steps (several tasks): the Python step is now more than half of a check's time.
 """
 from __future__ import annotations
 

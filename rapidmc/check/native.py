@@ -107,6 +107,13 @@ def state_table(system, packed: bool = False) -> StateTable:
     return StateTable(system)
 
 
+def part_hashes(limit: int):
+    """``_native.PartHashes(limit)`` (model/state_keys.py's remembered hashes in C) when
+    the core is built, else None.  Whatever the engine: it computes the very numbers the
+    Python code does, so no outcome depends on whether it is used."""
+    return _native.PartHashes(limit) if _native is not None else None
+
+
 def engine_of(table: StateTable) -> str:
     """The engine a search with this state table runs on."""
     native = NativeStateTable is not None and isinstance(table, NativeStateTable) or \

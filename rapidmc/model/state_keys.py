@@ -13,9 +13,10 @@ Equal states get equal keys (every part's key is a function of its value), so a 
 that is not found means the state was not met; a key found may be another state's (a
 collision): users compare the states or take the safe side.
 
-On the native engine the remembered hashes are kept in C (``_native.PartHashes``), which
-computes the very same numbers: a key decides the partial-order reduction's choices (its
-cycle proviso), so both engines choose the same steps.
+Where the compiled core is built the remembered hashes are kept in C
+(``_native.PartHashes``), whatever the engine: it computes the very numbers the Python code
+does (a key decides the partial-order reduction's choices, its cycle proviso, so the
+choices do not depend on it; tests/test_state_keys.py compares them).
 """
 from __future__ import annotations
 
@@ -23,7 +24,7 @@ from typing import Hashable, Optional
 
 from pyrsistent import pvector
 
-from ..check.native import _native, native_search
+from ..check.native import part_hashes
 
 KNOWN_LIMIT = 1 << 15          # parts remembered by identity, at most (then forgotten)
 _CONTAINERS = (tuple, type(pvector()))     # arrays and records (a number is hashed at once)
@@ -31,7 +32,7 @@ _CONTAINERS = (tuple, type(pvector()))     # arrays and records (a number is has
 
 class StateKeys:
     """``key(state) -> int``, equal for equal states (see the module docstring).
-    ``native``: remember the hashes in C (default: when the native engine searches)."""
+    ``native``: remember the hashes in C (default: when the compiled core is built)."""
 
     def __init__(self, native: Optional[bool] = None) -> None:
         self._known: dict[int, tuple] = {}        # id(part) -> (part, its hash)
@@ -39,10 +40,8 @@ class StateKeys:
         # the state last keyed and its key: callers ask about one state object twice in a
         # row (a search's kept successors, the reduction's proviso)
         self._last: list = [None, 0]
-        if native is None:
-            native = native_search()
-        if native and _native is not None:
-            hashes = _native.PartHashes(KNOWN_LIMIT)
+        hashes = part_hashes(KNOWN_LIMIT) if native is not False else None
+        if hashes is not None:
             self._part, self._store = hashes.of, hashes.of_items
 
     def key(self, state) -> int:
