@@ -88,8 +88,10 @@ states per CPU second), Python 6.33 and 5.13 s; after: native 3.04 and 2.34 s (3
 4,714), Python 4.01 and 3.98 s (2,757 and 2,776).  The run-time error search alone,
 in-process, 20,000 states: 4.01 s on main, 3.15 with the node table in C, 2.42 (best of 4,
 against 3.20) with the hashes in C; the table counts 142-150 bytes per state there (the
-RSS column above is the interpreter's at such small bounds).  The step machine takes none
-of these steps (several tasks): the Python step is now more than half of a check's time.
+RSS column above is the interpreter's at such small bounds).  The profiled split of a
+native check (``costs`` row, same bound): steps 17.1 %, interning 48.9 % before; steps
+43.7 %, interning 5.0 % after; the memory statistic 0.0 % in both.  The step machine takes
+none of these steps (several tasks): the Python step is now the largest cost.
 """
 from __future__ import annotations
 
