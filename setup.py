@@ -35,7 +35,8 @@ class OptionalBuildExt(build_ext):
 
 
 NATIVE = [] if os.environ.get("RAPIDMC_NO_NATIVE") else [
-    Extension("rapidmc.check._native", ["rapidmc/check/_native.c", "rapidmc/check/_packed.c"],
+    Extension("rapidmc.check._native", ["rapidmc/check/_native.c", "rapidmc/check/_packed.c",
+                                        "rapidmc/check/_nodes.c"],
               depends=["rapidmc/check/_common.h"],
               extra_compile_args=["-O2", "-std=c99"] if os.name != "nt" else []),
 ]

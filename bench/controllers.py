@@ -1,7 +1,7 @@
-"""Whole controllers as cells are made: multi-task backups with big buffers (issue 27).
+r"""Whole controllers as cells are made: multi-task backups with big buffers (issue 27).
 
 Usage: python bench/controllers.py [--sizes 512] [--motion 2] [--loggers 1] [--kinds 3]
-                                   [--engines native,python] [--max-seconds 60]
+                                   [--engines native,python] [--max-seconds 60] [--max-states N]
                                    [--no-counters] [--no-sorter] [--keep DIR] [--profile]
 
 The family: a RobotWare backup (BACKINFO/backinfo.txt, SYSPAR/SYS.cfg and EIO.cfg,
@@ -77,6 +77,21 @@ the deep ``hash`` of whole states in the partial-order reduction's proviso (abou
 Counters, ``bench/native.py --sizes 8,9``: N=8 search 0.48 + 0.18 CPU s (pan 8.29 s
 wall under that load), whole check 371,557 states/s and 138 bytes/state; N=9 834,085 and
 1,742,132 states/s in the two searches, whole check 534,095 states/s and 81 bytes/state.
+
+Measured on 2026-11-28 at 23:00 (issue 27: the node table and the reduction's remembered
+hashes in C, one node table for the searches of a check), each search bounded by states
+(``--max-states 5000``: the same work on every run, which a wall-clock bound under load is
+not), N=512, 3 tasks, 3 kinds, load average 24-29 on 2 cores, CPU seconds of the whole
+command (about 0.9 s of it loading): 11,042 model states with both engines, before and
+after.  Before (main at 002c842), two runs: native 5.78 and 4.92 s (1,909 and 2,243 model
+states per CPU second), Python 6.33 and 5.13 s; after: native 3.04 and 2.34 s (3,628 and
+4,714), Python 4.01 and 3.98 s (2,757 and 2,776).  The run-time error search alone,
+in-process, 20,000 states: 4.01 s on main, 3.15 with the node table in C, 2.42 (best of 4,
+against 3.20) with the hashes in C; the table counts 142-150 bytes per state there (the
+RSS column above is the interpreter's at such small bounds).  The profiled split of a
+native check (``costs`` row, same bound): steps 17.1 %, interning 48.9 % before; steps
+43.7 %, interning 5.0 % after; the memory statistic 0.0 % in both.  The step machine takes
+none of these steps (several tasks): the Python step is now the largest cost.
 """
 from __future__ import annotations
 
@@ -300,16 +315,18 @@ def run_measured(command: list[str]) -> tuple[int, float, int, str]:
                 usage.ru_maxrss * 1024, out.read())
 
 
-def check_command(target: list[str], ltl: Path, engine: str, max_seconds: float) -> list[str]:
+def check_command(target: list[str], ltl: Path, engine: str, max_seconds: float,
+                  max_states: int) -> list[str]:
     return [sys.executable, "-m", "rapidmc", "check", *target, "--ltl", str(ltl),
-            "--engine", engine, "--format", "json", "--quiet", "--max-states", str(10 ** 9),
+            "--engine", engine, "--format", "json", "--quiet", "--max-states", str(max_states),
             "--max-seconds", str(max_seconds)]
 
 
-def machine_share(target: list[str]) -> str:
+def machine_share(target: list[str], max_states: int) -> str:
     """The share of the run-time error search's steps the native step machine took (run
     in a child process: ``--child-share``)."""
-    code, _, _, out = run_measured([sys.executable, __file__, "--child-share", json.dumps(target)])
+    code, _, _, out = run_measured([sys.executable, __file__, "--child-share",
+                                    json.dumps([target, max_states])])
     if code != 0:
         return "?"
     counts = json.loads(out)
@@ -319,7 +336,7 @@ def machine_share(target: list[str]) -> str:
     return f"{100 * counts['machine_steps'] / max(total, 1):.0f}%"
 
 
-def child_share(target: list[str]) -> None:
+def child_share(target: list[str], max_states: int) -> None:
     from rapidmc.check import find_reachable, native
     from rapidmc.cli import build_parser
     from rapidmc.commands.check import prepare_model
@@ -328,7 +345,7 @@ def child_share(target: list[str]) -> None:
     native.use_engine("native")
     graphs: list = []
     find_reachable(model.system, model.system.failed, explored=graphs.append,
-                   max_states=10 ** 9, max_seconds=60.0)
+                   max_states=max_states, max_seconds=60.0)
     table = graphs[0].states if graphs else None
     print(json.dumps(table.counts() if hasattr(table, "counts") else None))
 
@@ -354,13 +371,13 @@ def outer_seconds(stats, matches) -> float:
     return total
 
 
-def child_costs(target: list[str], ltl: str, max_seconds: float) -> None:
+def child_costs(target: list[str], ltl: str, max_seconds: float, max_states: int) -> None:
     import cProfile
     import io
     import pstats
     from rapidmc import cli
     argv = ["check", *target, "--ltl", ltl, "--engine", "native", "--quiet", "--format", "json",
-            "--max-states", str(10 ** 9), "--max-seconds", str(max_seconds)]
+            "--max-states", str(max_states), "--max-seconds", str(max_seconds)]
     profiler = cProfile.Profile(time.process_time)
     with contextlib.redirect_stdout(io.StringIO()):
         try:
@@ -372,11 +389,11 @@ def child_costs(target: list[str], ltl: str, max_seconds: float) -> None:
                                                    for name, matches in COSTS.items()}}))
 
 
-def costs(target: list[str], ltl: Path, max_seconds: float) -> str:
+def costs(target: list[str], ltl: Path, max_seconds: float, max_states: int) -> str:
     """The shares of a native check's CPU time (profiled, so calls weigh more than they
     do unprofiled) in the steps, in interning nodes and in the memory statistic."""
     code, _, _, out = run_measured([sys.executable, __file__, "--child-costs",
-                                    json.dumps([target, str(ltl), max_seconds])])
+                                    json.dumps([target, str(ltl), max_seconds, max_states])])
     if code != 0:
         return "costs: ?"
     found = json.loads(out)
@@ -386,8 +403,9 @@ def costs(target: list[str], ltl: Path, max_seconds: float) -> str:
 
 
 def row(model: str, target: list[str], ltl: Path, engine: str, max_seconds: float,
-        share: bool) -> str:
-    code, cpu, rss, out = run_measured(check_command(target, ltl, engine, max_seconds))
+        max_states: int, share: bool) -> str:
+    code, cpu, rss, out = run_measured(check_command(target, ltl, engine, max_seconds,
+                                                     max_states))
     try:
         found = json.loads(out)
         found["properties"][0]
@@ -395,7 +413,7 @@ def row(model: str, target: list[str], ltl: Path, engine: str, max_seconds: floa
         return f"{model:24} {engine:7} check exited {code} without a report"
     states = max(p["stats"]["model_states"] for p in found["properties"])
     verdicts = " ".join(f"{p['name']}={p['verdict']}" for p in found["properties"])
-    machine = machine_share(target) if share and engine == "native" else ""
+    machine = machine_share(target, max_states) if share and engine == "native" else ""
     return (f"{model:24} {engine:7} {states:>9,} {cpu:>7.2f} {states / max(cpu, 1e-9):>10,.0f} "
             f"{rss / max(states, 1):>8,.0f} {machine:>8}  {verdicts}")
 
@@ -421,12 +439,12 @@ def models(args, folder: Path):
                                    str(sorter / "plant.mod")], ROOT / "specs" / "sorter.ltl"
 
 
-def profile(target: list[str], ltl: Path, max_seconds: float) -> None:
+def profile(target: list[str], ltl: Path, max_seconds: float, max_states: int) -> None:
     import cProfile
     import pstats
     from rapidmc import cli
     argv = ["check", *target, "--ltl", str(ltl), "--engine", "native", "--quiet",
-            "--max-states", str(10 ** 9), "--max-seconds", str(max_seconds)]
+            "--max-states", str(max_states), "--max-seconds", str(max_seconds)]
     profiler = cProfile.Profile(time.process_time)     # CPU time: the machine is shared
     started = time.process_time()
     try:
@@ -447,6 +465,9 @@ def main() -> None:
     parser.add_argument("--kinds", type=int, default=3, help="command kinds (3 or more)")
     parser.add_argument("--engines", default="native,python")
     parser.add_argument("--max-seconds", type=float, default=60.0)
+    parser.add_argument("--max-states", type=int, default=10 ** 9,
+                        help="bound each search by states (the same work on every run, "
+                        "whatever the load; the wall-clock --max-seconds is not)")
     parser.add_argument("--no-counters", action="store_true")
     parser.add_argument("--no-sorter", action="store_true")
     parser.add_argument("--keep", help="write the backups into this folder")
@@ -457,7 +478,7 @@ def main() -> None:
     parser.add_argument("--child-costs", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.child_share:
-        child_share(json.loads(args.child_share))
+        child_share(*json.loads(args.child_share))
         return
     if args.child_costs:
         child_costs(*json.loads(args.child_costs))
@@ -470,12 +491,14 @@ def main() -> None:
         for name, target, ltl in models(args, folder):
             if args.profile:
                 print(f"== {name}", flush=True)
-                profile(target, ltl, args.max_seconds)
+                profile(target, ltl, args.max_seconds, args.max_states)
                 continue
             for engine in args.engines.split(","):
-                print(row(name, target, ltl, engine, args.max_seconds, share=True), flush=True)
+                print(row(name, target, ltl, engine, args.max_seconds, args.max_states,
+                          share=True), flush=True)
             if not args.no_costs:
-                print(f"{'':24} {costs(target, ltl, args.max_seconds)}", flush=True)
+                print(f"{'':24} {costs(target, ltl, args.max_seconds, args.max_states)}",
+                      flush=True)
 
 
 if __name__ == "__main__":

@@ -49,3 +49,18 @@ def test_collapsed_states_take_less_memory_than_whole_ones():
         collapsed.intern(state)
         whole.intern(state)
     assert collapsed.memory_bytes() < whole.memory_bytes()
+
+
+def test_the_searches_over_one_model_rebuild_states_of_the_same_objects():
+    # a model's successors kept by one search are compared with the states another search
+    # rebuilds: equal parts are then the very same objects, found equal at once
+    model = SplitModel()
+    first, second, elsewhere = StateTable(model), StateTable(model), StateTable(SplitModel())
+    state = STATES[7]
+    built_apart = (state[0], (float(state[1][0]), "x" * len(state[1][1])), (0.0,),
+                   ("robot", -1.5))
+    first.intern(state)
+    second.intern(built_apart)
+    elsewhere.intern(built_apart)
+    assert second[0][1] is first[0][1] and second[0][3] is first[0][3]
+    assert elsewhere[0][1] is not first[0][1] and elsewhere[0] == first[0]

@@ -33,6 +33,7 @@ from fuzz_programs import programs
 from reduction_programs import properties, random_program
 from test_fuzz import STDIN, domains, formula_texts, fuzz_settings, write
 from test_case_studies import CASES, ROOT
+from test_partial_order import write_tasks
 from test_check_cases import verdict_cases
 from test_graph_reuse import COUNTERS, case_arguments, model_of, report, without_measurements
 from test_partial_order import write_tasks
@@ -239,3 +240,29 @@ def test_version_names_the_engine_the_environment_chooses(variable, expected):
     assert f"search engine {expected} " in done.stdout
     assert ("native core built" if native.available() else "native core not built") \
         in done.stdout
+
+
+@needs_native
+@pytest.mark.parametrize("seed", [0, 1, 2, 5, 41, 44, 71, 76])
+def test_reduced_task_programs_report_the_same_with_both_engines(seed, tmp_path, monkeypatch):
+    """tests/test_partial_order.py's generated tasks (plain, with procedures, on arrays),
+    searched with the partial-order reduction: its cycle proviso remembers states by key,
+    which the native engine computes in C, so both must choose the same steps: the same
+    verdicts and counts."""
+    argv = write_tasks(tmp_path, seed, procedures=40 <= seed < 70, arrays=seed >= 70)
+    assert_same_reports(argv, monkeypatch, reuse=seed % 2 == 0)
+
+
+@needs_native
+def test_a_whole_controller_reports_the_same_with_both_engines(tmp_path, monkeypatch):
+    """bench/controllers.py's family (two motion tasks with buffers of records, a logger,
+    PERS flags and barriers), reduced, bounded by states: the same report on both engines."""
+    sys.path.insert(0, str(ROOT / "bench"))
+    try:
+        from controllers import family_arguments, family_property, write_backup
+    finally:
+        sys.path.remove(str(ROOT / "bench"))
+    write_backup(tmp_path / "cell", 16)
+    (tmp_path / "cell.ltl").write_text(f"moves: {family_property(2)}\n")
+    assert_same_reports([str(tmp_path / "cell"), *family_arguments(3), "--ltl",
+                         str(tmp_path / "cell.ltl"), "--max-states", "3000"], monkeypatch)

@@ -1,5 +1,5 @@
-/* What the two C files of rapidmc's compiled core share: hashing, growable arrays and
- * the search budget's attributes (see _native.c and _packed.c). */
+/* What the C files of rapidmc's compiled core share: hashing, growable arrays and
+ * the search budget's attributes (see _native.c, _nodes.c and _packed.c). */
 #ifndef RAPIDMC_COMMON_H
 #define RAPIDMC_COMMON_H
 
@@ -101,6 +101,9 @@ static inline int budget_stopped(PyObject *budget)
     return stopped;
 }
 
+
+/* registers NodeTable and PartHashes (_nodes.c) in the module */
+int nodes_register(PyObject *module);
 
 /* registers PackedTable and packed_breadth_first (_packed.c) in the module */
 int packed_register(PyObject *module);

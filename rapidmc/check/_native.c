@@ -1134,7 +1134,8 @@ PyMODINIT_FUNC PyInit__native(void)
     Py_INCREF(&CycleSearchType);
     if (PyModule_AddObject(module, "Table", (PyObject *)&TableType) < 0 ||
         PyModule_AddObject(module, "CycleSearch", (PyObject *)&CycleSearchType) < 0 ||
-        PyModule_AddIntConstant(module, "VERSION", 2) < 0 || packed_register(module) < 0) {
+        PyModule_AddIntConstant(module, "VERSION", 2) < 0 || packed_register(module) < 0 ||
+        nodes_register(module) < 0) {
         Py_DECREF(module);
         return NULL;
     }

@@ -24,6 +24,7 @@ import os
 from contextlib import contextmanager
 from typing import Iterator
 
+from .nodes import NodeTable
 from .states import StateTable
 
 try:
@@ -106,6 +107,13 @@ def state_table(system, packed: bool = False) -> StateTable:
     return StateTable(system)
 
 
+def part_hashes(limit: int):
+    """``_native.PartHashes(limit)`` (model/state_keys.py's remembered hashes in C) when
+    the core is built, else None.  Whatever the engine: it computes the very numbers the
+    Python code does, so no outcome depends on whether it is used."""
+    return _native.PartHashes(limit) if _native is not None else None
+
+
 def engine_of(table: StateTable) -> str:
     """The engine a search with this state table runs on."""
     native = NativeStateTable is not None and isinstance(table, NativeStateTable) or \
@@ -114,11 +122,21 @@ def engine_of(table: StateTable) -> str:
 
 
 if _native is not None:
+    class NativeNodeTable(_native.NodeTable):
+        """``nodes.NodeTable`` with its ``node``, ``ids`` and ``values`` in C (``_nodes.c``):
+        the same nodes, found by address and hash-consed without Python calls."""
+
+        splitter = NodeTable.splitter
+        joiner = NodeTable.joiner
+
     class NativeStateTable(_native.Table, StateTable):
         """A collapsed ``StateTable`` whose ``intern``, ``[id]`` and ``len`` run natively
-        (``_native.Table``); new components and tails are stored by the Python methods."""
+        (``_native.Table``), its components' nodes interned in C (``NativeNodeTable``); new
+        components and tails are stored by the Python methods."""
+
+        node_table = NativeNodeTable
 
         def memory_bytes(self) -> int:
             return self.native_bytes() + self.component_bytes()
 else:
-    NativeStateTable = None
+    NativeNodeTable = NativeStateTable = None

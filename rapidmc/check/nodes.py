@@ -17,10 +17,17 @@ so states are compared by id.
 
 ``memory_bytes`` is counted as nodes are added (each node's own object, its key and its
 index entries), never by walking stored values.
+
+The searches over one model share one node table (``shared_nodes``): the states each
+rebuilds are made of the same canonical objects, so comparing a state with one an earlier
+search handed over (a model's successors kept between searches) finds equal parts by
+identity instead of comparing 512-element arrays element by element, and the nodes are
+stored once for all the searches.
 """
 from __future__ import annotations
 
 import sys
+import weakref
 from operator import is_
 from typing import Callable, Hashable
 
@@ -33,6 +40,22 @@ _new_tuple = tuple.__new__
 ENTRY_BYTES = 3 * 8 * 2
 ALIAS_LIMIT = 1 << 14        # equal non-canonical objects known by identity, at most
 SHARED = 0                   # objects Python keeps once for all uses cost nothing here
+
+
+_SHARED: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()   # model -> {kind: table}
+
+
+def shared_nodes(system, kind: type) -> "NodeTable":
+    """The node table of class ``kind`` that the searches over ``system`` share (a new one
+    for a model that cannot be referred to weakly); it lives as long as the model."""
+    try:
+        tables = _SHARED.setdefault(system, {})
+    except TypeError:
+        return kind()
+    table = tables.get(kind)
+    if table is None:
+        table = tables[kind] = kind()
+    return table
 
 
 class NodeTable:
@@ -112,15 +135,25 @@ class NodeTable:
             self._bytes += sys.getsizeof(key)      # the key holds the children's ids
         return node_id
 
+    def ids(self, values) -> tuple:
+        """The node id of each of ``values``."""
+        node = self.node
+        return tuple([node(value) for value in values])
+
+    def values(self, ids) -> tuple:
+        """The canonical object of each node id."""
+        canonical = self._canonical
+        return tuple([canonical[node_id] for node_id in ids])
+
     def splitter(self, split: Callable[[Hashable], tuple]) -> Callable[[Hashable], tuple]:
         """``split`` giving the node ids of the parts instead of the parts."""
-        node = self.node
-        return lambda state: tuple([node(part) for part in split(state)])
+        ids = self.ids
+        return lambda state: ids(split(state))
 
     def joiner(self, join: Callable[[tuple], Hashable]) -> Callable[[tuple], Hashable]:
         """``join`` taking the node ids of the parts (a state of canonical objects)."""
-        canonical = self._canonical
-        return lambda ids: join(tuple([canonical[node_id] for node_id in ids]))
+        values = self.values
+        return lambda ids: join(values(ids))
 
     def memory_bytes(self) -> int:
         """Bytes of the nodes and their indexes (counted as they were added), and of the

@@ -28,7 +28,7 @@ import sys
 from array import array
 from typing import Hashable
 
-from .nodes import ENTRY_BYTES, NodeTable, value_bytes
+from .nodes import ENTRY_BYTES, NodeTable, shared_nodes, value_bytes
 
 EMPTY = -1
 FIRST_CAPACITY = 1 << 10
@@ -41,10 +41,13 @@ SECOND_MASK = (1 << SECOND_BITS) - 1
 class StateTable:
     """``intern(state) -> (id, new)``, ``table[id] -> state``; see the module docstring."""
 
+    node_table = NodeTable        # (the native engine's table interns its nodes in C)
+
     def __init__(self, system):
         split = getattr(system, "split_state", None)
-        # components are stored as the ids of their trees of interned nodes (check.nodes)
-        self._nodes = NodeTable()
+        # components are stored as the ids of their trees of interned nodes (check.nodes),
+        # in the table every search over this model shares
+        self._nodes = shared_nodes(system, self.node_table)
         self._split = self._nodes.splitter(split) if split is not None else None
         self._join = self._nodes.joiner(system.join_state) if split is not None else None
         self._whole: dict[Hashable, int] = {}
