@@ -133,7 +133,9 @@ TOY_FORMULAS = ["G F p", "F G q", "G (p -> F q)", "p U q", "G (p -> X !p)", "F p
                 "(G F p) -> (G F q)", "q W p", "X X p"]
 
 
-@pytest.mark.parametrize("seed", range(12))
+# every other seed: graphs of 6 to 36 states (each distributed search starts its workers
+# anew, which costs far more than the graph; the odd seeds only added sizes in between)
+@pytest.mark.parametrize("seed", range(0, 12, 2))
 def test_owcty_answers_what_one_process_answers(cluster, seed):
     """Distributed OWCTY against the one-process search on random graphs and formulas: the
     same verdict; on HOLDS the same product states and transitions; on VIOLATED a lasso
