@@ -12,9 +12,36 @@ import contextlib
 import io
 import re
 import sys
+import tempfile
 from dataclasses import dataclass
+from pathlib import Path
+
+import pytest
 
 from rapidmc.cli import main
+
+class ScratchFolder:
+    """A temporary folder for the files a test module writes (``folder / name``).  The module
+    assigns ``fixture()`` to a name: it makes the folder before the module's tests and removes
+    it after them, so no run leaves folders behind in /tmp."""
+
+    def __init__(self, prefix: str) -> None:
+        self.prefix = prefix
+        self.path: Path | None = None
+
+    def __truediv__(self, name: str) -> Path:
+        assert self.path is not None, "the module's scratch folder fixture is not set up"
+        return self.path / name
+
+    def fixture(self):
+        @pytest.fixture(autouse=True, scope="module")
+        def scratch_folder():
+            with tempfile.TemporaryDirectory(prefix=self.prefix) as folder:
+                self.path = Path(folder)
+                yield
+                self.path = None
+        return scratch_folder
+
 
 DOCUMENTED_EXIT_CODES = (0, 1, 2, 3)
 DIAGNOSTIC_HEAD = re.compile(r"^(\S+:\d+:\d+|rapidmc): (error|warning): .* \[RMC\d{3}\]$")

@@ -133,7 +133,9 @@ TOY_FORMULAS = ["G F p", "F G q", "G (p -> F q)", "p U q", "G (p -> X !p)", "F p
                 "(G F p) -> (G F q)", "q W p", "X X p"]
 
 
-@pytest.mark.parametrize("seed", range(12))
+# every other seed: graphs of 6 to 36 states (each distributed search starts its workers
+# anew, which costs far more than the graph; the odd seeds only added sizes in between)
+@pytest.mark.parametrize("seed", range(0, 12, 2))
 def test_owcty_answers_what_one_process_answers(cluster, seed):
     """Distributed OWCTY against the one-process search on random graphs and formulas: the
     same verdict; on HOLDS the same product states and transitions; on VIOLATED a lasso
@@ -238,7 +240,7 @@ def test_counterexample_of_two_workers_replays(cluster, name, check, tmp_path, m
 
 def test_swarm_finds_a_planted_deep_error_the_exhaustive_search_cannot_reach(cluster):
     program = str(HERE / "deep_error.mod")
-    bound = ["--max-states", "20000", "--format", "json", "--quiet"]
+    bound = ["--max-states", "5000", "--format", "json", "--quiet"]
     exhaustive = _json(["check", program, *bound])
     assert _verdicts(exhaustive)["no_runtime_error"] == "UNKNOWN"
     swarm = _json(["check", program, *bound, "--swarm", "2"])
@@ -246,7 +248,7 @@ def test_swarm_finds_a_planted_deep_error_the_exhaustive_search_cannot_reach(clu
     assert verdicts["no_runtime_error"] == "VIOLATED"
     assert verdicts["no_deadlock"] == "UNKNOWN"                # a swarm never says HOLDS
     runtime = next(p for p in swarm["properties"] if p["name"] == "no_runtime_error")
-    assert len(runtime["trace"]["prefix"]) > 6000             # deep: 1500 rounds of the loop
+    assert len(runtime["trace"]["prefix"]) > 1200             # deep: 300 rounds of the loop
 
 
 def test_without_ray_the_options_name_the_extra(monkeypatch):

@@ -16,19 +16,19 @@ from __future__ import annotations
 import os
 import random
 import re
-import tempfile
 from pathlib import Path
 
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from fuzz_invoke import DIAGNOSTIC_HEAD, assert_acceptable, invoke
+from fuzz_invoke import DIAGNOSTIC_HEAD, ScratchFolder, assert_acceptable, invoke
 from fuzz_mutations import corpus_files, mutate
 from fuzz_programs import programs
 
 SCALE = int(os.environ.get("RAPIDMC_FUZZ_EXAMPLES", "0"))
-WORK = Path(tempfile.mkdtemp(prefix="rapidmc-fuzz-"))
+WORK = ScratchFolder("rapidmc-fuzz-")     # WORK / name: a file in it
+scratch_folder = WORK.fixture()
 REGRESSIONS = Path(__file__).parent / "fuzz_regressions"
 CORPUS = corpus_files()
 STDIN = "1\n2\n3\n"

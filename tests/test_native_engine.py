@@ -32,6 +32,7 @@ from fuzz_invoke import assert_acceptable, invoke
 from fuzz_programs import programs
 from reduction_programs import properties, random_program
 from test_fuzz import STDIN, domains, formula_texts, fuzz_settings, write
+from test_fuzz import scratch_folder  # noqa: F401  (the folder write() writes in)
 from test_case_studies import CASES, ROOT
 from test_partial_order import write_tasks
 from test_check_cases import verdict_cases

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import re
 import sys
-import tempfile
 from pathlib import Path
 
 import pytest
@@ -20,7 +19,7 @@ from hypothesis import strategies as st
 
 sys.path.insert(0, str(Path(__file__).parent))
 
-from fuzz_invoke import DIAGNOSTIC_HEAD, assert_acceptable, invoke  # noqa: E402
+from fuzz_invoke import DIAGNOSTIC_HEAD, ScratchFolder, assert_acceptable, invoke  # noqa: E402
 from fuzz_programs import programs  # noqa: E402
 from test_fuzz import fuzz_settings  # noqa: E402
 
@@ -32,7 +31,8 @@ pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest
 
 HERE = Path(__file__).resolve().parent / "stubs"
 PROGRAMS = sorted(p for p in HERE.iterdir() if p.is_dir())
-WORK = Path(tempfile.mkdtemp(prefix="rapidmc-stubs-"))
+WORK = ScratchFolder("rapidmc-stubs-")     # WORK / name: a file in it
+scratch_folder = WORK.fixture()
 DECLARATION = re.compile(r"\s*(VAR|PERS|CONST|LOCAL|TASK|ALIAS)\b")
 BLOCK = {"RECORD": "ENDRECORD", "PROC": "ENDPROC", "FUNC": "ENDFUNC", "TRAP": "ENDTRAP"}
 

@@ -1,5 +1,5 @@
 MODULE DeepError
-    ! A planted deep error: ERR_DIVZERO once the counter reaches 1500, thousands of steps
+    ! A planted deep error: ERR_DIVZERO once the counter reaches 300, over a thousand steps
     ! down; beside the counter a value mixed from two free inputs takes 97 values, so a
     ! breadth-first search must store about 97 states per step of depth to get there.
     VAR num count := 0;
@@ -11,7 +11,7 @@ MODULE DeepError
         WHILE TRUE DO
             noise := (noise + DInput(di_a) + 2 * DInput(di_b) + 1) MOD 97;
             count := count + 1;
-            IF count = 1500 THEN
+            IF count = 300 THEN
                 ratio := noise / zero;
             ENDIF
         ENDWHILE
