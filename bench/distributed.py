@@ -53,6 +53,14 @@ from tasks import MODELS, load      # noqa: E402  (bench/tasks.py)
 from rapidmc import api  # noqa: E402
 
 
+def _start_ray(ray, workers: int) -> float:
+    """Start a local Ray cluster of ``workers`` CPUs, quietly; the seconds it took."""
+    started = time.perf_counter()
+    ray.init(num_cpus=workers, include_dashboard=False, logging_level=logging.ERROR,
+             log_to_driver=False)
+    return time.perf_counter() - started
+
+
 def model_of(name: str, modulo: int):
     """The model, partial-order reduction off as on a cluster (its cycle proviso depends on
     the search order: with it, the two searches would store different states)."""
@@ -101,10 +109,7 @@ def measure_ltl(name: str, mode: str, workers: int) -> dict:
     import ray
     from rapidmc.check.budget import SearchBudget
     from rapidmc.check.distributed.owcty import partitioned_accepting_cycle
-    started = time.perf_counter()
-    ray.init(num_cpus=workers, include_dashboard=False, logging_level=logging.ERROR,
-             log_to_driver=False)
-    start_seconds = time.perf_counter() - started
+    start_seconds = _start_ray(ray, workers)
     recipe = api.model_recipe(model)
     partitioned_accepting_cycle(ray, workers, model.system, buchi, valuation, prop.name, recipe,
                                 budget=SearchBudget(1))          # (actors start, model built)
@@ -158,10 +163,7 @@ def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
     import ray
     from rapidmc.check.budget import SearchBudget
     from rapidmc.check.distributed.search import partitioned_reachable
-    started = time.perf_counter()
-    ray.init(num_cpus=workers, include_dashboard=False, logging_level=logging.ERROR,
-             log_to_driver=False)
-    start_seconds = time.perf_counter() - started
+    start_seconds = _start_ray(ray, workers)
     # the actors' processes start here, outside the timed search (as in one process's import)
     recipe = api.system_recipe(model)        # (each worker builds the system itself)
     partitioned_reachable(ray, workers, system, "failed", budget=SearchBudget(1),
