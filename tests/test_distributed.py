@@ -238,6 +238,24 @@ def test_counterexample_of_two_workers_replays(cluster, name, check, tmp_path, m
     assert code == 0, out + err
 
 
+def test_lasso_below_many_accepting_states_on_no_cycle_replays(cluster, tmp_path,
+                                                              monkeypatch):
+    """The lasso takes one spread however many accepting states OWCTY leaves that lie on no
+    cycle: here 4,096 (over 2,000 per partition) come breadth-first before the one that
+    does, where the lasso used to try them one by one and gave up after 1,024 per
+    partition with an internal error."""
+    monkeypatch.chdir(HERE)
+    report = _json(["check", "accepting_below_a_cycle.mod", "--ltl", "accepting_below_a_cycle.ltl",
+                    "--format", "json", "--quiet", "--workers", "2"])
+    found = _by_name(report)["finally_done"]
+    assert (found["verdict"], found["stats"]["engine"]) == ("VIOLATED", "distributed-owcty")
+    trace = tmp_path / "trace.json"
+    trace.write_text(json.dumps(report))
+    code, out, err = _run(["replay", str(trace), "--property", "finally_done"])
+    assert code == 0, out + err
+    assert "the counterexample replays" in out + err
+
+
 def test_swarm_finds_a_planted_deep_error_the_exhaustive_search_cannot_reach(cluster):
     program = str(HERE / "deep_error.mod")
     bound = ["--max-states", "5000", "--format", "json", "--quiet"]

@@ -23,7 +23,10 @@ along the edges of the states it queued:
   each how many edges from them enter it;
 * ``ELIMINATE``: states no edge of the set enters leave it, and take their edges' counts
   with them;
-* ``CYCLE``: breadth-first from one state through the set, with parents, back to it.
+* ``REGIONS``: breadth-first through the set from all its accepting states at once; each
+  state joins the region of the first accepting state that reaches it (with its parent
+  there), and each accepting state keeps the first edge of the set that enters it, and
+  from which region (``owcty`` closes the lasso's cycle with these).
 """
 from __future__ import annotations
 
@@ -36,7 +39,8 @@ from ..product import Product
 from .canonical import owner
 from .partition import NO_PARENT, decode_batch, encode_batch, link, unlink
 
-REACH, ELIMINATE, CYCLE = "reach", "eliminate", "cycle"
+REACH, ELIMINATE, REGIONS = "reach", "eliminate", "regions"
+UNSEEN = -1             # REGIONS: not reached yet
 
 
 class ProductPartition:
@@ -45,8 +49,6 @@ class ProductPartition:
     def __init__(self):
         self.table = None
         self.alive: Optional[bytearray] = None  # the OWCTY set (None: every state)
-        self.source: Optional[int] = None      # CYCLE: where it started (here)
-        self.closing = None                    # CYCLE: the link that came back to the source
 
     def start(self, index: int, count: int, source, property_name: str, expected) -> None:
         """Begin the search of one property (``source.build()`` gives the prepared model;
@@ -171,17 +173,26 @@ class ProductPartition:
         """How many states of this partition are in the set."""
         return len(self.keys) if self.alive is None else sum(self.alive)
 
-    def begin_cycle(self, source: Optional[int]) -> None:
-        """Begin a CYCLE spread from ``source``, a state of this partition (None: the
-        source is another partition's)."""
-        self.source, self.closing = source, None
-        self.cycle_parent: dict = {}
-        self.queue = [] if source is None else [source]
+    def begin_regions(self) -> int:
+        """Begin a REGIONS spread: every accepting state of the set is the source of its
+        region; returns their number."""
+        size, alive = len(self.keys), self.alive
+        accepting, width = self.product.accepting, self.product.width
+        self.region = array("q", [UNSEEN]) * size           # link of the region's source
+        self.region_parent = array("q", [NO_PARENT]) * size
+        self.entry: dict = {}        # source id -> (region entered from, link of the state)
+        self.queue = []
+        for i, key in enumerate(self.keys):
+            if alive[i] and accepting[key % width]:
+                self.region[i] = link(self.index, i)
+                self.queue.append(i)
+        return len(self.queue)
 
     def propagate(self, mode: str, *incoming) -> tuple:
-        """One level of a spread (module docstring): take ``incoming`` (one (ids, parents)
-        batch per sender), then send along the edges of the queued states.  Returns one
-        batch per owner, then (states queued this level, whether CYCLE came back)."""
+        """One level of a spread (module docstring): take ``incoming`` (one batch per
+        sender: the ids its edges enter here; for REGIONS also the links of the states they
+        leave and their regions), then send along the edges of the queued states.  Returns
+        one batch per owner, then the number of states queued this level."""
         alive = self.alive
         if mode == REACH:
             entering, reached, queue = self.entering, self.reached, self.queue
@@ -202,51 +213,59 @@ class ProductPartition:
                             alive[i] = 0
                             queue.append(i)
         else:
-            parents, queue, source = self.cycle_parent, self.queue, self.source
-            for ids, links in incoming:
-                for i, parent in zip(ids, links):
-                    if i == source:
-                        if self.closing is None:
-                            self.closing = parent
-                    elif alive[i] and i not in parents:
-                        parents[i] = parent
+            region, parents, entry, queue = self.region, self.region_parent, self.entry, \
+                self.queue
+            index = self.index
+            for ids, links, regions in incoming:
+                for i, parent, source in zip(ids, links, regions):
+                    if not alive[i]:
+                        continue
+                    if region[i] == UNSEEN:
+                        region[i], parents[i] = source, parent
                         queue.append(i)
+                    elif region[i] == link(index, i) and i not in entry:
+                        entry[i] = (source, parent)
         return self._send(mode)
 
     def _send(self, mode: str) -> tuple:
         queue, self.queue = self.queue, []
         edges, edge_start, count = self.edges, self.edge_start, self.count
-        outgoing = [(array("q"), array("q")) for _ in range(count)]
-        with_parents = mode == CYCLE
+        if mode != REGIONS:
+            outgoing = [array("q") for _ in range(count)]
+            for i in queue:
+                for position in range(edge_start[i], edge_start[i + 1]):
+                    target, target_id = unlink(edges[position])
+                    outgoing[target].append(target_id)
+            return (*[(ids, ()) for ids in outgoing], len(queue))
+        outgoing = [(array("q"), array("q"), array("q")) for _ in range(count)]
+        region = self.region
         for i in queue:
-            here = link(self.index, i)
+            here, source = link(self.index, i), region[i]
             for position in range(edge_start[i], edge_start[i + 1]):
                 target, target_id = unlink(edges[position])
-                ids, parents = outgoing[target]
+                ids, parents, regions = outgoing[target]
                 ids.append(target_id)
-                if with_parents:
-                    parents.append(here)
-        return (*outgoing, (len(queue), self.closing is not None))
+                parents.append(here)
+                regions.append(source)
+        return (*outgoing, len(queue))
 
     # --- paths and figures -------------------------------------------------------------
 
-    def accepting_left(self, limit: int) -> list[int]:
-        """Up to ``limit`` accepting states still in the set, in id order."""
-        accepting, width = self.product.accepting, self.product.width
-        return [i for i, key in enumerate(self.keys)
-                if self.alive[i] and accepting[key % width]][:limit]
+    def entries(self) -> list[tuple[int, int, int]]:
+        """After a REGIONS spread: (link of an accepting state of the set, the region the
+        first edge into it came from, link of that edge's state), for each of them."""
+        index = self.index
+        return [(link(index, i), source, parent) for i, (source, parent) in self.entry.items()]
 
     def step_back(self, product_id: int) -> tuple:
         """(model state, automaton state, link to the breadth-first parent)."""
         model_id, q = divmod(self.keys[product_id], self.product.width)
         return self.table[model_id], q, self.parent[product_id]
 
-    def cycle_back(self, product_id: int) -> int:
-        """The link to the state the CYCLE spread reached ``product_id`` from (the source:
-        the last state of the cycle)."""
-        if product_id == self.source:
-            return self.closing
-        return self.cycle_parent[product_id]
+    def region_back(self, product_id: int) -> int:
+        """The link to the state the REGIONS spread reached ``product_id`` from
+        (``NO_PARENT``: the source of its region)."""
+        return self.region_parent[product_id]
 
     def figures(self) -> dict:
         import resource
