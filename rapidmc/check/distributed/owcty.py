@@ -40,9 +40,8 @@ from ..budget import SearchBudget
 from ..product import Product
 from ..result import HOLDS, UNKNOWN, VIOLATED, LassoStep, SearchResult, SearchStats
 from ..transition_system import labelled_successors
-from .canonical import owner
-from .partition import NO_PARENT, SystemSource, encode_batch, unlink
-from .product_partition import ELIMINATE, REACH, REGIONS
+from .partition import NO_PARENT, SystemSource, unlink
+from .product_partition import ELIMINATE, REACH, REGIONS, initial_batch
 from .search import actors_of, drop_actors, worker_failures
 from .worker import CYCLES, call
 
@@ -109,17 +108,9 @@ class _Owcty:
     def _reach_all(self) -> bool:
         """Store every reachable product state and edge; False at a bound."""
         ray, count, actors = self.ray, self.count, self.actors
-        batches = [([], [], []) for _ in range(count)]
-        initial = self.product.initial_automaton_state
-        for state in self.system.initial_states():
-            states, automaton_states, parents = batches[owner(state, count) if count > 1 else 0]
-            for q in dict.fromkeys(self.product.targets(initial, self.valuation(state))):
-                states.append(state)
-                automaton_states.append(q)
-                parents.append(NO_PARENT)
-        received = [call(actor, CYCLES, "receive", [-1], encode_batch(batches[index]),
-                         returns=count + 1)
-                    for index, actor in enumerate(actors)]
+        batch = initial_batch(self.system, self.product, self.valuation)
+        received = [call(actor, CYCLES, "receive", [-1], batch, returns=count + 1)
+                    for actor in actors]
         while True:
             figures = ray.get([refs[count] for refs in received])
             stored, new = sum(f[0] for f in figures), sum(f[1] for f in figures)
