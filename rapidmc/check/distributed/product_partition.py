@@ -76,7 +76,7 @@ class ProductPartition:
         self.index, self.count = index, count
         self.table = state_table(self.system, packed=True)
         self.codec = codec_for(self.table, index, count)
-        self.letters = array("q")              # model id -> its valuation
+        self.letters: list[int] = []           # model id -> its valuation (any width)
         self.keys, self.index_of = array("q"), {}
         self.parent = array("q")
         self.edge_start, self.edges = array("q", [0]), array("q")
