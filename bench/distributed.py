@@ -144,6 +144,7 @@ def measure_ltl(name: str, mode: str, modulo: int, workers: int) -> dict:
     return {"verdict": result.verdict, "states": result.stats.product_states,
             "seconds": seconds, "start_seconds": start_seconds,
             "sent": sum(f["sent"] for f in figures), "pickled": pickled_bytes(model.system),
+            "sent_bytes": sum(f.get("sent_bytes", 0) for f in figures),
             "worker_rss_kb": [f["max_rss_kb"] for f in figures],
             "worker_cpu": [f["cpu_seconds"] for f in figures],
             "worker_states": [f["states"] for f in figures]}
@@ -298,7 +299,8 @@ def _each(values, form: str) -> str:
 def print_ltl(names, modulo: int, workers: int) -> None:
     modes = ("ltl-single", "ltl-workers")
     print(f"{'model':16} {'states':>9} {'1 proc s':>8} {f'{workers} wkr s':>8} "
-          f"{'speed-up':>8} {'us/state':>8} {'start s':>7} {'sent/st':>7} {'B/state':>7} "
+          f"{'speed-up':>8} {'us/state':>8} {'start s':>7} {'sent/st':>7} {'B sent/st':>9} "
+          f"{'pickled B':>9} "
           f"{'RSS 1 MB':>8} {'RSS wkr MB':>12} {'balance':>9} {'1 CPU s':>7} {'wkr CPU s':>11} "
           f"{'CPU x':>6}")
     for name in names:
@@ -312,7 +314,8 @@ def print_ltl(names, modulo: int, workers: int) -> None:
         print(f"{name:16} {states:>9,} {single['seconds']:>8.2f} {spread['seconds']:>8.2f} "
               f"{single['seconds'] / spread['seconds']:>7.2f}x "
               f"{1e6 * single['seconds'] / states:>8.0f} {spread['start_seconds']:>7.1f} "
-              f"{spread['sent'] / states:>7.2f} {spread['pickled']:>7.0f} "
+              f"{spread['sent'] / states:>7.2f} {spread['sent_bytes'] / states:>9.0f} "
+              f"{spread['pickled']:>9.0f} "
               f"{single['max_rss_kb'] / 1024:>8.0f} {rss:>12} {balance:>9} "
               f"{single['cpu']:>7.2f} {cpu:>11} "
               f"{single['cpu'] / max(spread['worker_cpu']):>5.2f}x", flush=True)

@@ -83,7 +83,8 @@ class ProductPartition:
         self.expanded = 0                      # product states before this id are stepped
         self._sent_to = array("i")             # the last level's successors: their owners
         self.transitions = 0
-        self.sent = 0
+        self.sent = 0                          # successors sent to other partitions
+        self.sent_bytes = 0                    # ... their batches' bytes
         self.finish()                          # (see the module docstring)
         self._frozen = contextlib.ExitStack()
         self._frozen.enter_context(frozen_while_searching())
@@ -189,8 +190,10 @@ class ProductPartition:
         self.expanded = end
         self._sent_to, self._fanout = sent_to, fanout
         self.sent += sum(1 for target in sent_to if target != self.index)
-        return (*[codec.encode(target, outboxes[target]) for target in range(count)],
-                self.transitions)
+        outgoing = [codec.encode(target, outboxes[target]) for target in range(count)]
+        self.sent_bytes += sum(len(batch) for target, batch in enumerate(outgoing)
+                               if target != self.index)
+        return (*outgoing, self.transitions)
 
     def _close(self, answers) -> None:
         """The edges of the states ``_expand`` stepped last: for each, for each successor it
@@ -353,6 +356,7 @@ class ProductPartition:
         arrays = (self.keys, self.parent, self.edge_start, self.edges)
         return {"states": len(self.keys), "model_states": len(table),
                 "transitions": len(self.edges), "sent": self.sent,
+                "sent_bytes": self.sent_bytes,
                 "bytes": table.memory_bytes() + sum(len(a) * a.itemsize for a in arrays),
                 "engine": engine_of(table), "codec": type(self.codec).__name__,
                 "cpu_seconds": time.process_time() - self.cpu_started,
