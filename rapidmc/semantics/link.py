@@ -29,7 +29,8 @@ from .expressions import ExpressionCompiler
 from .machine import ABSENT
 from .robots import motion_task_numbers
 from .runtime import PredefinedCalls
-from .scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, Scope, Symbol
+from .scope import (CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, SYSTEM_VARIABLES, Scope,
+                    Symbol)
 from .statements import RoutineCompiler
 from .types import (ANYTYPE, DNUM, NUM, PREDEFINED_ALIASES, PREDEFINED_TYPES, RECORD,
                     SEMI_VALUE, ArrayType, ComponentType, RapidType, default_value)
@@ -357,7 +358,8 @@ class Linker:
         uses = list(configured_signals.signal_uses(modules))
         uses += configured_signals.compared_names(modules)     # after the calls: they know the kind
         for name, kind in uses:
-            if name.key in declared or self.system_symbol(name) is not None:
+            if name.key in declared or name.key in SYSTEM_VARIABLES or \
+                    self.system_symbol(name) is not None:
                 continue
             self.physical_signal(name.text, kind, name.span)
         for name in configured_signals.unit_uses(modules):
