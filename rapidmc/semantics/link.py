@@ -307,6 +307,7 @@ class Linker:
         linked.motion_tasks = motion_task_numbers(self, self.task_names,
                                                   self.options.get("motion_tasks", ()))
         linked.robot_per_task = len(linked.motion_tasks) > 1
+        linked.registers_per_task = bool(task_entries)
         if environment is not None and environment.modules:
             linked.environment_init = environment_init
             linked.environment_react = environment_react

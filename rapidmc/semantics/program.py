@@ -141,6 +141,8 @@ class Program:
     motion_tasks: tuple = ()                               # numbers of the tasks that move a robot
     # the state keeps one robot per task (two or more motion tasks: semantics.robots)
     robot_per_task: bool = False
+    # each task keeps its own ERRNO, INTNO and IEnable flag (further tasks: task_registers)
+    registers_per_task: bool = False
     load_notes: tuple = ()                                 # Diagnostics about what was loaded
     # indices of the signals the code names; None: unknown (AliasIO of a computed name)
     named_signals: Optional[frozenset] = None
