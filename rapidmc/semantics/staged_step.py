@@ -40,8 +40,9 @@ _new_tuple = tuple.__new__
 
 def is_staged(program, state: State, config: CheckConfig) -> bool:
     """Whether ``staged_successors`` may stand in for the general driver at ``state``
-    (a running state with tasks or interrupts, no environment reaction)."""
-    if program.environment_react is not None:
+    (a running state with tasks or interrupts, no environment reaction, no reading of
+    another task's robot: a view carries its task's robot only)."""
+    if program.environment_react is not None or program.reads_task_robots:
         return False
     interrupts = state[4]
     if not (state[10] or interrupts[0] or interrupts[1]):
@@ -113,7 +114,7 @@ def task_transitions(program, state: State, task: int,
     task-local instructions (``reduction.partial_order``) without stepping the others."""
     interrupts = state[4]
     if program.environment_react is not None or config.free_inputs or \
-            interrupts[0] or interrupts[1] or interrupts[3]:
+            program.reads_task_robots or interrupts[0] or interrupts[1] or interrupts[3]:
         return None
     stacks = (state[0],) + state[10]
     if not stacks[task]:

@@ -292,6 +292,8 @@ def _step_some_task(m: Machine, io_before):
         task = names.index(m.choose("task", tuple(names[i] for i in runnable)))
     robots = m.robot
     m.robot = task_robot(m.program, robots, task)      # the task moves its own robot
+    if m.program.robot_per_task:
+        m.robots = robots                              # (the others' stay as they are)
     registers = take_task_view(m, task)                # its own ERRNO, INTNO, IEnable flag
     if task == 0:
         span = _step_task(m, io_before)
@@ -305,6 +307,7 @@ def _step_some_task(m: Machine, io_before):
             m.tasks = tuple(tasks)
             m.frames = main_frames
     m.robot = with_task_robot(m.program, robots, task, m.robot)
+    m.robots = None
     give_back(m, task, registers)
     if m.status == ENDED and (m.frames or any(m.tasks)):
         m.status = RUNNING               # one task ended; the others go on
