@@ -33,6 +33,7 @@ from pyrsistent import pvector
 
 from ...check.native import _native
 from ...semantics.plain_step import is_plain
+from ...semantics.staged_step import task_transitions
 from ...semantics.state import FAILED, RUNNING, Frame, State
 from ..reduction.projection import Projection
 from .bytecode import RoutineCode, atom_code
@@ -42,13 +43,18 @@ _HEAD = struct.Struct("<Ii")           # context id, program counter
 RUNS = 1                               # context flags (_packed.c's add_context)
 HAS_FAILED = 2
 MAIN_ALONE = 4                         # one frame, of the projection's main routine
+ENDED_TASK = 8                         # several tasks, one of them has ended
+TASK_RUNS = 1                          # per task of a context: the machine may step it
+MAX_TASKS = 64
 
 
 def packed_table(system) -> Optional["PackedStateTable"]:
     """A packed table for ``system``'s states when the compiled core is built and its
     step machine can take the system's fused steps, else None."""
-    if _native is None or system.order is not None or \
-            system.project_fused is not None and not isinstance(system.project_fused, Projection):
+    tasks = len(system.program.task_names)
+    projection = system.project if tasks > 1 else system.project_fused
+    if _native is None or system.order is not None or tasks > MAX_TASKS or \
+            projection is not None and not isinstance(projection, Projection):
         return None
     config = system.config
     if config.free_inputs or system.program.environment_react is not None:
@@ -77,6 +83,14 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         self._valuation_codes: list[bytes] = []
         self._routines: list = []
         self.compiled_routines = 0
+        # several tasks: each one's top frame is in the frame vector (``_task_vectors``)
+        self.tasks = len(self.program.task_names)
+        if self.tasks > 1:
+            self.set_tasks(self.tasks)
+            self._vectors = self._task_vectors
+            self._state = self._task_state
+            self._new_context = self._new_task_context
+        self._stepping: tuple = (-1, None)      # (id, state) of python_task_successors
         self._compile()
         # what the search in progress hands over (``prepare_search``)
         self.predicate: Optional[Callable] = None
@@ -104,8 +118,10 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
                          self._valuation_codes, self._projection())
 
     def _projection(self) -> Optional[tuple]:
-        """The projection of the fused step's targets for ``set_program``, or None."""
-        projection = self.system.project_fused
+        """The projection of the fused step's targets for ``set_program``, or None (with
+        several tasks, the system's whole projection: a task's step is projected as
+        ``RapidSystem.successors`` projects it)."""
+        projection = self.system.project if self.tasks > 1 else self.system.project_fused
         if projection is None:
             return None
         main = self._resets(projection.main_resets) if projection.main_resets else None
@@ -191,6 +207,106 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         self._context_values.append(context)
         self._context_flags.append(flags)
         return context_id
+
+    # ------------------------------------------------------- several tasks
+    # The frame vector holds every running task's top frame, in task order: the context
+    # id, a 0, then per task its pc (as a value: an int) and its local values.  The
+    # context is each task's frames below, its top frame's routine, handler fields and
+    # number of locals (None: the task has ended), the signals and the rest of the state
+    # but the tasks.
+    def _task_vectors(self, state: State) -> tuple[bytes, bytes]:
+        shapes = []
+        items: list = []
+        for stack in (state[0],) + state[10]:
+            if stack:
+                top = stack[-1]
+                shapes.append((stack[:-1], top[0], top[3:], len(top[2])))
+                items.append(top[1])
+                items += top[2]
+            else:
+                shapes.append(None)
+        context = (tuple(shapes), state[2], state[3:10])
+        context_id = self._contexts.get(context)
+        if context_id is None:
+            context_id = self._add_task_context(context, state)
+        return _HEAD.pack(context_id, 0) + self.value_ids(items), self.value_ids(state[1])
+
+    def _add_task_context(self, context: tuple, state: State) -> int:
+        # where the machine steps a task (``staged_step`` without interrupts, stored
+        # inputs or an environment; main running, so the projection's final resets do not
+        # apply): a running state whose interrupt table, pending and scheduled lists are
+        # empty; each task's frame then as ``_task_info`` says
+        interrupts = state[4]
+        runs = state[7] == RUNNING and bool(state[0]) and \
+            not (interrupts[0] or interrupts[1] or interrupts[3])
+        ended = any(shape is None for shape in context[0])
+        flags = (RUNS if runs else 0) | (HAS_FAILED if state[7] == FAILED else 0) | \
+            (ENDED_TASK if ended else 0)
+        return self._new_context(context, flags)
+
+    def _new_task_context(self, context: tuple, flags: int) -> int:
+        shapes, io = context[0], context[1]
+        info = array("i")
+        where = 2
+        for shape in shapes:
+            if shape is None:
+                info.extend((-1, 0, 0, 0))
+                continue
+            _, routine, handling, count = shape
+            # (not in a handler nor counting RETRYs: ``fused_step._entry``)
+            runs = not handling[0] and not handling[2]
+            info.extend((routine, where, count, TASK_RUNS if runs else 0))
+            where += 1 + count
+        for _ in range(len(shapes), self.tasks):
+            info.extend((-1, 0, 0, 0))           # (a failed state keeps no further tasks)
+        first = shapes[0][1] if shapes[0] is not None else -1
+        context_id = self.add_context(first, flags, self.value_ids(io), info.tobytes())
+        self._contexts[context] = context_id
+        self._context_values.append(context)
+        self._context_flags.append(flags)
+        return context_id
+
+    def _task_state(self, context_id: int, pc: int, items: tuple, data: tuple) -> State:
+        shapes, io, rest = self._context_values[context_id]
+        stacks = []
+        position = 0
+        for shape in shapes:
+            if shape is None:
+                stacks.append(())
+                continue
+            below, routine, handling, count = shape
+            start = position + 1
+            top = _new_tuple(Frame, (routine, items[position], items[start:start + count]) +
+                             handling)
+            stacks.append(below + (top,))
+            position = start + count
+        return _new_tuple(State, (stacks[0], pvector(data), io) + rest + (tuple(stacks[1:]),))
+
+    def python_task_successors(self, state_id: int, task: int) -> Optional[list]:
+        """The transitions of ``task`` alone at a state of several tasks, for the machine
+        that takes the others' (``_packed.c``'s ``tasks_step``): (frame id, data id,
+        whether it changes the state) each, projected; None to have the whole state
+        stepped by Python (an observer that still wants the labels sees them there)."""
+        observer = self.observer
+        if observer is not None and observer.labels_wanted:
+            return None
+        if self._stepping[0] == state_id:
+            state = self._stepping[1]
+        else:
+            state = self[state_id]
+            self._stepping = (state_id, state)
+        found = task_transitions(self.program, state, task, self.system.config)
+        if found is None:
+            return None
+        project = self.system.project
+        result = []
+        for transition in found:
+            after = transition[2]
+            moved = after != state
+            if project is not None:
+                after = project(after)
+            result.append(self.intern_parts(*self._vectors(after)) + (moved,))
+        return result
 
     # ------------------------------------- vectors between tables (workers)
     # A state's vectors hold ids that only this table gives its values and contexts.  Another
