@@ -2,6 +2,7 @@ r"""Whole controllers as cells are made: multi-task backups with big buffers (is
 
 Usage: python bench/controllers.py [--sizes 512] [--motion 2] [--loggers 1] [--kinds 3]
                                    [--engines native,python] [--max-seconds 60] [--max-states N]
+                                   [--no-por]
                                    [--no-counters] [--no-sorter] [--keep DIR] [--profile]
 
 The family: a RobotWare backup (BACKINFO/backinfo.txt, SYSPAR/SYS.cfg and EIO.cfg,
@@ -296,9 +297,9 @@ def family_property(motion: int) -> str:
     return " & ".join(f'G "moves{i} < 4"' for i in range(1, motion + 1))
 
 
-def family_arguments(kinds: int) -> list[str]:
+def family_arguments(kinds: int, reduced: bool = True) -> list[str]:
     messages = list(MESSAGES) + [f"speed{k}" for k in range(1, kinds - len(MESSAGES) + 1)]
-    arguments = ["--no-socket-timeouts"]
+    arguments = ["--no-socket-timeouts"] + ([] if reduced else ["--no-por"])
     for message in messages:
         arguments += ["--socket-messages", message]
     return arguments
@@ -332,28 +333,38 @@ def machine_share(target: list[str], max_states: int) -> str:
     counts = json.loads(out)
     if counts is None:
         return "none"
-    total = counts["machine_steps"] + counts["python_steps"]
-    return f"{100 * counts['machine_steps'] / max(total, 1):.0f}%"
+    if counts.get("task_machine_steps", 0) + counts.get("task_python_steps", 0):
+        # several tasks: the share of single tasks' steps (a state's step is one per task)
+        machine, python = counts["task_machine_steps"], counts["task_python_steps"]
+    else:
+        machine, python = counts["machine_steps"], counts["python_steps"]
+    return f"{100 * machine / max(machine + python, 1):.0f}%"
 
 
 def child_share(target: list[str], max_states: int) -> None:
-    from rapidmc.check import find_reachable, native
+    from rapidmc.check import find_reachable, native, reachability
     from rapidmc.cli import build_parser
     from rapidmc.commands.check import prepare_model
     args = build_parser("check").parse_args(["check", *target, "--engine", "native"])
     model = prepare_model(args)
     native.use_engine("native")
-    graphs: list = []
-    find_reachable(model.system, model.system.failed, explored=graphs.append,
-                   max_states=max_states, max_seconds=60.0)
-    table = graphs[0].states if graphs else None
+    tables: list = []
+    made = native.state_table
+
+    def kept(*given, **named):          # (the search's table, even when it stops at a bound)
+        tables.append(made(*given, **named))
+        return tables[-1]
+    reachability.state_table = kept
+    find_reachable(model.system, model.system.failed, max_states=max_states, max_seconds=60.0)
+    table = tables[0] if tables else None
     print(json.dumps(table.counts() if hasattr(table, "counts") else None))
 
 
 # where a check's CPU time goes (a profile in CPU time, in a child process)
 COSTS = {
     "steps": lambda file, name: (file.endswith("semantics/step.py") and name == "successors") or
-    (file.endswith("semantics/fused_step.py") and name == "plain_successor_states"),
+    (file.endswith("semantics/fused_step.py") and name == "plain_successor_states") or
+    (file.endswith("semantics/staged_step.py") and name == "task_transitions"),
     "intern": lambda file, name: file.endswith("check/nodes.py"),
     "memory statistic": lambda file, name: name in ("memory_bytes", "component_bytes",
                                                     "rows_bytes", "native_bytes"),
@@ -426,7 +437,9 @@ def models(args, folder: Path):
         ltl = folder / f"cell{size}.ltl"
         ltl.write_text(f"moves_in_range: {family_property(args.motion)}\n")
         name = f"cell N={size} T={args.motion + args.loggers} K={args.kinds}"
-        yield name, [str(backup), *family_arguments(args.kinds)], ltl
+        if args.no_por:
+            name += " no POR"
+        yield name, [str(backup), *family_arguments(args.kinds, not args.no_por)], ltl
     if not args.no_counters:
         program = folder / "counters.mod"
         program.write_text(counters_program(8, 4))
@@ -468,6 +481,9 @@ def main() -> None:
     parser.add_argument("--max-states", type=int, default=10 ** 9,
                         help="bound each search by states (the same work on every run, "
                         "whatever the load; the wall-clock --max-seconds is not)")
+    parser.add_argument("--no-por", action="store_true",
+                        help="check the family without the partial-order reduction (the "
+                        "packed table and the step machine serve only unreduced searches)")
     parser.add_argument("--no-counters", action="store_true")
     parser.add_argument("--no-sorter", action="store_true")
     parser.add_argument("--keep", help="write the backups into this folder")

@@ -51,6 +51,7 @@ enum { VM_DONE = 0, VM_ERROR = 1, VM_UNSUPPORTED = 2 };
 #define FRAME_CACHE 1024
 #define ID_CACHE 4096           /* objects found by identity before the dict (value_id) */
 #define TASK_INFO 4             /* per task of a context: routine, where, locals, flags */
+#define TASK_COUNT_MAX 64
 #define STACK_SIZE 64
 #define TEMPS 8
 #define MAX_CHOICES 64
@@ -151,6 +152,9 @@ typedef struct {
     /* counters: states stepped by the machine / by Python; with several tasks, also the
      * steps of single tasks within a state taken by each */
     long long machine_steps, python_steps, task_machine_steps, task_python_steps;
+    /* the search's observer still wants the lines steps run: Python's steps of single
+     * tasks then tell it theirs (``note_python_spans``) */
+    int labels_wanted;
 } PackedTable;
 
 /* ================================================================ vector tables */
@@ -976,7 +980,8 @@ typedef struct Scratch {     /* scratch space of the step machine */
                                  * not yet known */
     Successors found;           /* (for ``successor_ids``) */
     Int32Vector changed, owners;    /* several tasks: per successor, whether it changes the
-                                     * state, and the task that took the step */
+                                     * state, the task that took the step (+ TASK_COUNT_MAX
+                                     * when Python took it) */
     uint32_t *chosen_epoch;
     int32_t *chosen_value;
     uint32_t epoch;
@@ -1385,9 +1390,11 @@ static int tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Succe
                                         at.data_id, data, at.data_length, found, changed);
         if (outcome < 0)
             return -1;
+        int owner = (int)task;
         if (outcome == VM_DONE)
             by_machine++;
         else {
+            owner += TASK_COUNT_MAX;            /* (Python's step) */
             outcome = task_python_step(table, id, task, found, changed);
             if (outcome < 0)
                 return -1;
@@ -1398,7 +1405,7 @@ static int tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Succe
             by_python++;
         }
         for (Py_ssize_t i = before; i < found->count; i++)
-            if (vector32_push(owners, task) < 0)
+            if (vector32_push(owners, owner) < 0)
                 return -1;
     }
     /* idle steps dropped: kept when no task moves, or when each transition moves, or
@@ -1407,22 +1414,38 @@ static int tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Succe
     int all_moved = 1;
     for (Py_ssize_t i = 0; i < found->count; i++) {
         if (changed->items[i])
-            moving |= (uint64_t)1 << owners->items[i];
+            moving |= (uint64_t)1 << (owners->items[i] % TASK_COUNT_MAX);
         else
             all_moved = 0;
     }
-    if (moving && !all_moved) {
-        Py_ssize_t kept = 0;
-        for (Py_ssize_t i = 0; i < found->count; i++) {
-            if (changed->items[i] || !(moving & ~((uint64_t)1 << owners->items[i]))) {
-                found->frames[kept] = found->frames[i];
-                found->data[kept++] = found->data[i];
-            }
+    /* ``changed`` becomes, per successor, 0: the machine's, 1: Python's and dropped,
+     * 2: Python's and kept */
+    Py_ssize_t kept = 0;
+    for (Py_ssize_t i = 0; i < found->count; i++) {
+        int keep = !moving || all_moved || changed->items[i] ||
+            !(moving & ~((uint64_t)1 << (owners->items[i] % TASK_COUNT_MAX)));
+        changed->items[i] = owners->items[i] >= TASK_COUNT_MAX ? 1 + keep : 0;
+        if (keep) {
+            found->frames[kept] = found->frames[i];
+            found->data[kept++] = found->data[i];
         }
-        found->count = kept;
     }
+    Py_ssize_t before_drop = found->count;
+    found->count = kept;
     table->task_machine_steps += by_machine;
     table->task_python_steps += by_python;
+    if (by_python && table->labels_wanted) {
+        /* the observer hears the lines of Python's steps that were kept */
+        PyObject *answer = PyObject_CallMethod(
+            (PyObject *)table, "note_python_spans", "y#", (const char *)changed->items,
+            before_drop * (Py_ssize_t)sizeof(int32_t));
+        if (answer == NULL)
+            return -1;
+        table->labels_wanted = PyObject_IsTrue(answer);
+        Py_DECREF(answer);
+        if (table->labels_wanted < 0)
+            return -1;
+    }
     return VM_DONE;
 }
 
@@ -1733,6 +1756,20 @@ static PyObject *PackedTable_vectors(PackedTable *self, PyObject *argument)
     }
     int64_t key = self->keys[id];
     return parts_of(self, (int32_t)(key >> 32), (int32_t)(key & 0xffffffff));
+}
+
+/* ``key(id) -> (frame id, data id, context id)``: a stored state's segments and context */
+static PyObject *PackedTable_key(PackedTable *self, PyObject *argument)
+{
+    Py_ssize_t id = PyLong_AsSsize_t(argument);
+    if (id == -1 && PyErr_Occurred())
+        return NULL;
+    if (id < 0 || id >= self->count)
+        return PyErr_Format(PyExc_IndexError, "no such state id");
+    int64_t key = self->keys[id];
+    int32_t frame = (int32_t)(key >> 32);
+    return Py_BuildValue("(iiI)", frame, (int32_t)(key & 0xffffffff),
+                         self->frames.arena[self->frames.offsets[frame]]);
 }
 
 /* ``parts(frame id, data id)``: as ``vectors``, for segments not (yet) a stored state */
@@ -2105,6 +2142,8 @@ static PyMethodDef PackedTable_methods[] = {
      "intern_vectors(frame, data, add=True) -> (id, new): a state by its two vectors"},
     {"vectors", (PyCFunction)PackedTable_vectors, METH_O,
      "vectors(id) -> (context, pc, locals, data): a stored state's parts"},
+    {"key", (PyCFunction)PackedTable_key, METH_O,
+     "key(id) -> (frame id, data id, context id): a stored state's segments and context"},
     {"parts", (PyCFunction)PackedTable_parts, METH_VARARGS,
      "parts(frame id, data id) -> (context, pc, locals, data): segments' contents"},
     {"intern_parts", (PyCFunction)PackedTable_intern_parts, METH_VARARGS,
@@ -2431,7 +2470,12 @@ static int observe(PackedSearch *search, Py_ssize_t frontier, int by_machine)
 static int expand(PackedSearch *search, Py_ssize_t frontier, Py_ssize_t *target)
 {
     PackedTable *table = search->table;
+    int observed_labels = search->labels_wanted && search->python_observe != Py_None;
+    table->labels_wanted = observed_labels;
     int outcome = machine_successors(table, frontier, &search->scratch, &search->found);
+    if (observed_labels)
+        search->labels_wanted = table->labels_wanted;
+    table->labels_wanted = 0;           /* (other callers of the machine: no observer) */
     if (outcome < 0)
         return FAILED;
     int by_machine = outcome == VM_DONE;

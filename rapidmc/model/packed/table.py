@@ -34,6 +34,7 @@ from pyrsistent import pvector
 from ...check.native import _native
 from ...semantics.plain_step import is_plain
 from ...semantics.staged_step import task_transitions
+from ..reduction.merging import executed_spans
 from ...semantics.state import FAILED, RUNNING, Frame, State
 from ..reduction.projection import Projection
 from .bytecode import RoutineCode, atom_code
@@ -91,6 +92,7 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
             self._state = self._task_state
             self._new_context = self._new_task_context
         self._stepping: tuple = (-1, None)      # (id, state) of python_task_successors
+        self._python_spans: list = []           # the lines its steps there ran
         self._compile()
         # what the search in progress hands over (``prepare_search``)
         self.predicate: Optional[Callable] = None
@@ -287,17 +289,19 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         that takes the others' (``_packed.c``'s ``tasks_step``): (frame id, data id,
         whether it changes the state) each, projected; None to have the whole state
         stepped by Python (an observer that still wants the labels sees them there)."""
-        observer = self.observer
-        if observer is not None and observer.labels_wanted:
-            return None
         if self._stepping[0] == state_id:
             state = self._stepping[1]
         else:
             state = self[state_id]
             self._stepping = (state_id, state)
+            self._python_spans = []
         found = task_transitions(self.program, state, task, self.system.config)
         if found is None:
             return None
+        observer = self.observer
+        if observer is not None and observer.labels_wanted:
+            # (the lines each one ran, told once the idle steps are dropped)
+            self._python_spans += [executed_spans(transition[1]) for transition in found]
         project = self.system.project
         result = []
         for transition in found:
@@ -307,6 +311,19 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
                 after = project(after)
             result.append(self.intern_parts(*self._vectors(after)) + (moved,))
         return result
+
+    def note_python_spans(self, kinds: bytes) -> bool:
+        """The observer is told the lines of the steps ``python_task_successors`` gave at
+        the state just stepped that were kept (``kinds``: per successor 0 the machine's,
+        1 Python's dropped as idle, 2 Python's kept; as ``python_labelled`` shows it the
+        kept ones); whether it wants more."""
+        marks = array("i")
+        marks.frombytes(kinds)
+        spans = iter(self._python_spans)
+        kept = [span for mark in marks if mark for span in [next(spans)] if mark == 2]
+        self._python_spans = []
+        self._stepping = (-1, None)
+        return self.observer.note_spans([one for spans_ in kept for one in spans_])
 
     # ------------------------------------- vectors between tables (workers)
     # A state's vectors hold ids that only this table gives its values and contexts.  Another
@@ -374,7 +391,29 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         return self.observer.note_spans([span for span in spans if span is not None])
 
     def predicate_holds(self, state_id: int) -> bool:
+        if self.tasks > 1 and self.predicate == getattr(self.system, "stuck", None):
+            stuck = self._stuck(state_id)
+            if stuck is not None:
+                return stuck
         return bool(self.predicate(self[state_id]))
+
+    def _stuck(self, state_id: int) -> Optional[bool]:
+        """``RapidSystem.stuck`` at a state of several tasks from the machine's step (its
+        own steps and Python's of single tasks, ``tasks_step``), or None where Python
+        decides: the machine does not step there, a task has ended (a barrier may wait
+        for it), or an observer wants the lines steps run.  Without stored free inputs
+        (``packed_table``) a running state is stuck exactly when every successor is the
+        state itself: the same segments."""
+        observer = self.observer
+        if observer is not None and observer.labels_wanted:
+            return None
+        frame, data, context = self.key(state_id)
+        if self._context_flags[context] & ENDED_TASK:
+            return None
+        found = self.step(state_id)
+        if found is None:
+            return None
+        return all(parts == (frame, data) for parts in found)
 
     def python_valuation(self, index: int, state_id: int) -> int:
         return self.valuations_kept[index](self[state_id])
