@@ -23,10 +23,11 @@ RAPID/TASKn/PROGMOD and SYSMOD) of 2-4 tasks, written as real cells are:
 
 N and the number of command kinds scale the state space (about 2N fillings x N read slots
 per motion task).  Each model is checked in a fresh process with ``rapidmc check BACKUP``
-(the built-in properties and one LTL property), per engine: reachable states, CPU
-seconds, states per CPU second, bytes per state (the process's maximum resident set
-size / states) and the share of steps the native step machine took (a second, in-process
-run of the run-time error search, which counts them).  The same rows follow for the
+(the built-in properties and one LTL property; ``--no-por``: without the partial-order
+reduction), per engine: reachable states, CPU seconds, states per CPU second, bytes per
+state (the process's maximum resident set size / states) and the share of steps the
+native step machine took (a second, in-process run of the run-time error search, which
+counts them; with several tasks, the single tasks' steps).  The same rows follow for the
 counters (bench/native.py's family, N=8) and for case_studies/sorter.
 
 A search that reaches ``--max-seconds`` ends UNKNOWN; its row says so (the states/s are
@@ -93,6 +94,20 @@ RSS column above is the interpreter's at such small bounds).  The profiled split
 native check (``costs`` row, same bound): steps 17.1 %, interning 48.9 % before; steps
 43.7 %, interning 5.0 % after; the memory statistic 0.0 % in both.  The step machine takes
 none of these steps (several tasks): the Python step is now the largest cost.
+
+Measured on 2026-11-29 (issue 27 item 2: the packed table and the step machine for
+several tasks, searches without the partial-order reduction, ``--no-por``; load 10-20 on
+2 cores, CPU seconds).  The ``machine`` column now counts single tasks' steps when there
+are several (a state's step is one per running task).  ``--max-states 5000 --no-por``
+(13,109 model states, both engines alike): native 19.01 s (689 states/s: the packed
+table hashed the 512-element arrays of every state Python stepped, and the machine took
+no step) -> 2.75 s (4,770 states/s, machine 41 %); Python engine 3.61 s.  With
+``--max-states 20000 --no-por`` (50,894): native 13.4-15.1 s, machine 40 %, Python 18.6 s.
+The reduced search (the default) is unchanged: 10.7 s for 46,488 states at 20,000 per
+search.  The in-process run-time error search, 20,000 states: 32.2 s -> 2.54 s unreduced
+(88 bytes per state in the table), 4.62 s reduced, 6.25 s on the Python engine.  What the
+machine leaves to Python (WaitSyncTask, WaitUntil, the call of ``teach`` and its writes of
+array elements and record components, MoveJ, sockets) is now nearly all the time.
 """
 from __future__ import annotations
 

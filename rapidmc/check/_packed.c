@@ -17,7 +17,9 @@
  *   the code does not cover (calls, errors, strings, handlers...) makes it give up
  *   before it changes anything; the search then asks the Python step for that state.
  *   Property atoms are compiled the same way (an error makes an atom false, as in
- *   ``model/fused_atoms.py``).
+ *   ``model/fused_atoms.py``).  With several tasks (``tasks_step``) the frame vector holds
+ *   each running task's top frame; the machine steps each task's instruction it can and
+ *   asks Python for the others' alone, then drops idle steps as ``staged_step`` does.
  *
  * ``packed_breadth_first`` is reachability.py's unlabelled loop over such a table: the
  * same states, ids, transitions, deadlocks and rows of the explored graph, and the same

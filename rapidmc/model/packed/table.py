@@ -9,7 +9,10 @@ robot, interrupts, ERRNO, status, tasks ...), which the fused step never
 changes: each distinct one gets an id here, with the two facts the
 machine needs, whether it may step there (a plain running state, as
 ``fused_step.plain_successor_states`` tests) and whether the program has
-failed there (the run-time error search's predicate).
+failed there (the run-time error search's predicate).  With several tasks the frame
+vector holds every running task's top frame and the machine steps one task's
+instruction at a time (``_task_vectors``, ``python_task_successors`` for the tasks it
+leaves to Python).
 
 The table also hands the machine its program (``bytecode``): each routine's
 fused blocks, the domains of the inputs chosen where read, and the atoms of
