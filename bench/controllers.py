@@ -2,6 +2,7 @@ r"""Whole controllers as cells are made: multi-task backups with big buffers (is
 
 Usage: python bench/controllers.py [--sizes 512] [--motion 2] [--loggers 1] [--kinds 3]
                                    [--engines native,python] [--max-seconds 60] [--max-states N]
+                                   [--no-por]
                                    [--no-counters] [--no-sorter] [--keep DIR] [--profile]
 
 The family: a RobotWare backup (BACKINFO/backinfo.txt, SYSPAR/SYS.cfg and EIO.cfg,
@@ -22,10 +23,11 @@ RAPID/TASKn/PROGMOD and SYSMOD) of 2-4 tasks, written as real cells are:
 
 N and the number of command kinds scale the state space (about 2N fillings x N read slots
 per motion task).  Each model is checked in a fresh process with ``rapidmc check BACKUP``
-(the built-in properties and one LTL property), per engine: reachable states, CPU
-seconds, states per CPU second, bytes per state (the process's maximum resident set
-size / states) and the share of steps the native step machine took (a second, in-process
-run of the run-time error search, which counts them).  The same rows follow for the
+(the built-in properties and one LTL property; ``--no-por``: without the partial-order
+reduction), per engine: reachable states, CPU seconds, states per CPU second, bytes per
+state (the process's maximum resident set size / states) and the share of steps the
+native step machine took (a second, in-process run of the run-time error search, which
+counts them; with several tasks, the single tasks' steps).  The same rows follow for the
 counters (bench/native.py's family, N=8) and for case_studies/sorter.
 
 A search that reaches ``--max-seconds`` ends UNKNOWN; its row says so (the states/s are
@@ -92,6 +94,20 @@ RSS column above is the interpreter's at such small bounds).  The profiled split
 native check (``costs`` row, same bound): steps 17.1 %, interning 48.9 % before; steps
 43.7 %, interning 5.0 % after; the memory statistic 0.0 % in both.  The step machine takes
 none of these steps (several tasks): the Python step is now the largest cost.
+
+Measured on 2026-11-29 (issue 27 item 2: the packed table and the step machine for
+several tasks, searches without the partial-order reduction, ``--no-por``; load 10-20 on
+2 cores, CPU seconds).  The ``machine`` column now counts single tasks' steps when there
+are several (a state's step is one per running task).  ``--max-states 5000 --no-por``
+(13,109 model states, both engines alike): native 19.01 s (689 states/s: the packed
+table hashed the 512-element arrays of every state Python stepped, and the machine took
+no step) -> 2.75 s (4,770 states/s, machine 41 %); Python engine 3.61 s.  With
+``--max-states 20000 --no-por`` (50,894): native 13.4-15.1 s, machine 40 %, Python 18.6 s.
+The reduced search (the default) is unchanged: 10.7 s for 46,488 states at 20,000 per
+search.  The in-process run-time error search, 20,000 states: 32.2 s -> 2.54 s unreduced
+(88 bytes per state in the table), 4.62 s reduced, 6.25 s on the Python engine.  What the
+machine leaves to Python (WaitSyncTask, WaitUntil, the call of ``teach`` and its writes of
+array elements and record components, MoveJ, sockets) is now nearly all the time.
 """
 from __future__ import annotations
 
@@ -296,9 +312,9 @@ def family_property(motion: int) -> str:
     return " & ".join(f'G "moves{i} < 4"' for i in range(1, motion + 1))
 
 
-def family_arguments(kinds: int) -> list[str]:
+def family_arguments(kinds: int, reduced: bool = True) -> list[str]:
     messages = list(MESSAGES) + [f"speed{k}" for k in range(1, kinds - len(MESSAGES) + 1)]
-    arguments = ["--no-socket-timeouts"]
+    arguments = ["--no-socket-timeouts"] + ([] if reduced else ["--no-por"])
     for message in messages:
         arguments += ["--socket-messages", message]
     return arguments
@@ -332,28 +348,38 @@ def machine_share(target: list[str], max_states: int) -> str:
     counts = json.loads(out)
     if counts is None:
         return "none"
-    total = counts["machine_steps"] + counts["python_steps"]
-    return f"{100 * counts['machine_steps'] / max(total, 1):.0f}%"
+    if counts.get("task_machine_steps", 0) + counts.get("task_python_steps", 0):
+        # several tasks: the share of single tasks' steps (a state's step is one per task)
+        machine, python = counts["task_machine_steps"], counts["task_python_steps"]
+    else:
+        machine, python = counts["machine_steps"], counts["python_steps"]
+    return f"{100 * machine / max(machine + python, 1):.0f}%"
 
 
 def child_share(target: list[str], max_states: int) -> None:
-    from rapidmc.check import find_reachable, native
+    from rapidmc.check import find_reachable, native, reachability
     from rapidmc.cli import build_parser
     from rapidmc.commands.check import prepare_model
     args = build_parser("check").parse_args(["check", *target, "--engine", "native"])
     model = prepare_model(args)
     native.use_engine("native")
-    graphs: list = []
-    find_reachable(model.system, model.system.failed, explored=graphs.append,
-                   max_states=max_states, max_seconds=60.0)
-    table = graphs[0].states if graphs else None
+    tables: list = []
+    made = native.state_table
+
+    def kept(*given, **named):          # (the search's table, even when it stops at a bound)
+        tables.append(made(*given, **named))
+        return tables[-1]
+    reachability.state_table = kept
+    find_reachable(model.system, model.system.failed, max_states=max_states, max_seconds=60.0)
+    table = tables[0] if tables else None
     print(json.dumps(table.counts() if hasattr(table, "counts") else None))
 
 
 # where a check's CPU time goes (a profile in CPU time, in a child process)
 COSTS = {
     "steps": lambda file, name: (file.endswith("semantics/step.py") and name == "successors") or
-    (file.endswith("semantics/fused_step.py") and name == "plain_successor_states"),
+    (file.endswith("semantics/fused_step.py") and name == "plain_successor_states") or
+    (file.endswith("semantics/staged_step.py") and name == "task_transitions"),
     "intern": lambda file, name: file.endswith("check/nodes.py"),
     "memory statistic": lambda file, name: name in ("memory_bytes", "component_bytes",
                                                     "rows_bytes", "native_bytes"),
@@ -426,7 +452,9 @@ def models(args, folder: Path):
         ltl = folder / f"cell{size}.ltl"
         ltl.write_text(f"moves_in_range: {family_property(args.motion)}\n")
         name = f"cell N={size} T={args.motion + args.loggers} K={args.kinds}"
-        yield name, [str(backup), *family_arguments(args.kinds)], ltl
+        if args.no_por:
+            name += " no POR"
+        yield name, [str(backup), *family_arguments(args.kinds, not args.no_por)], ltl
     if not args.no_counters:
         program = folder / "counters.mod"
         program.write_text(counters_program(8, 4))
@@ -468,6 +496,9 @@ def main() -> None:
     parser.add_argument("--max-states", type=int, default=10 ** 9,
                         help="bound each search by states (the same work on every run, "
                         "whatever the load; the wall-clock --max-seconds is not)")
+    parser.add_argument("--no-por", action="store_true",
+                        help="check the family without the partial-order reduction (the "
+                        "packed table and the step machine serve only unreduced searches)")
     parser.add_argument("--no-counters", action="store_true")
     parser.add_argument("--no-sorter", action="store_true")
     parser.add_argument("--keep", help="write the backups into this folder")

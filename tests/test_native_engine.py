@@ -255,6 +255,20 @@ def test_reduced_task_programs_report_the_same_with_both_engines(seed, tmp_path,
 
 
 @needs_native
+@pytest.mark.parametrize("seed", [0, 1, 3, 6, 41, 44, 71, 76, 90, 93])
+def test_unreduced_task_programs_report_the_same_with_both_engines(seed, tmp_path,
+                                                                   monkeypatch):
+    """Without the partial-order reduction a program of several tasks is searched on the
+    packed table, the step machine taking each task's instruction where it can and Python
+    the others' (``_packed.c``'s ``tasks_step``): the same verdicts, counts,
+    counterexamples and coverage as the Python engine (plain tasks, with procedures, on
+    arrays, mostly on their own data)."""
+    argv = write_tasks(tmp_path, seed, procedures=40 <= seed < 70, arrays=70 <= seed < 90,
+                       local=seed >= 90)
+    assert_same_reports(argv + ["--no-por"], monkeypatch, reuse=seed % 2 == 0)
+
+
+@needs_native
 def test_a_whole_controller_reports_the_same_with_both_engines(tmp_path, monkeypatch):
     """bench/controllers.py's family (two motion tasks with buffers of records, a logger,
     PERS flags and barriers), reduced, bounded by states: the same report on both engines."""
@@ -265,5 +279,8 @@ def test_a_whole_controller_reports_the_same_with_both_engines(tmp_path, monkeyp
         sys.path.remove(str(ROOT / "bench"))
     write_backup(tmp_path / "cell", 16)
     (tmp_path / "cell.ltl").write_text(f"moves: {family_property(2)}\n")
-    assert_same_reports([str(tmp_path / "cell"), *family_arguments(3), "--ltl",
-                         str(tmp_path / "cell.ltl"), "--max-states", "3000"], monkeypatch)
+    argv = [str(tmp_path / "cell"), *family_arguments(3), "--ltl", str(tmp_path / "cell.ltl"),
+            "--max-states", "3000"]
+    assert_same_reports(argv, monkeypatch)
+    # unreduced: on the packed table, the machine stepping the tasks it can
+    assert_same_reports(argv + ["--no-por"], monkeypatch)

@@ -27,6 +27,7 @@ from rapidmc.model.packed.bytecode import OP, ExpressionCode, Unsupported, atom_
 from reduction_programs import properties, random_program
 from test_check_cases import verdict_cases
 from test_graph_reuse import COUNTERS, model_of
+from test_partial_order import write_tasks
 
 needs_native = pytest.mark.skipif(not native.available(), reason="the native core is not built")
 
@@ -103,6 +104,26 @@ def test_the_machine_steps_as_python_does_on_generated_programs(seed, tmp_path):
 
 
 @needs_native
+@needs_native
+@pytest.mark.parametrize("seed", [0, 2, 6, 41, 71, 90, 93])
+def test_the_machine_steps_one_task_of_several_as_python_does(seed, tmp_path, monkeypatch):
+    """Programs of several tasks without the partial-order reduction
+    (tests/task_programs.py): in every state, the successors the machine gives (its own
+    steps of the tasks it can take, Python's of the others, idle steps dropped) are the
+    Python step's; it takes some task's step in each program."""
+    argv = write_tasks(tmp_path, seed, procedures=40 <= seed < 70, arrays=70 <= seed < 90,
+                       local=seed >= 90)
+    monkeypatch.chdir(tmp_path)
+
+    def check():
+        with contextlib.redirect_stdout(io.StringIO()):
+            main(["check", *argv, "--no-por", "--engine", "native", "--format", "json"])
+    tables = tables_of(check)
+    assert tables and all(table.tasks > 1 for table in tables)
+    assert sum(machine_agrees(table) for table in tables) > 0
+    assert sum(table.counts()["task_machine_steps"] for table in tables) > 0
+
+
 def test_the_counters_are_stepped_by_the_machine_alone_but_for_aliasio(tmp_path):
     """The benchmark's family: every state but the AliasIO calls' is the machine's, and the
     graph it keeps is the Python engine's, row for row and value for value."""

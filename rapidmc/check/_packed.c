@@ -17,7 +17,9 @@
  *   the code does not cover (calls, errors, strings, handlers...) makes it give up
  *   before it changes anything; the search then asks the Python step for that state.
  *   Property atoms are compiled the same way (an error makes an atom false, as in
- *   ``model/fused_atoms.py``).
+ *   ``model/fused_atoms.py``).  With several tasks (``tasks_step``) the frame vector holds
+ *   each running task's top frame; the machine steps each task's instruction it can and
+ *   asks Python for the others' alone, then drops idle steps as ``staged_step`` does.
  *
  * ``packed_breadth_first`` is reachability.py's unlabelled loop over such a table: the
  * same states, ids, transitions, deadlocks and rows of the explored graph, and the same
@@ -30,7 +32,9 @@ enum { T_NUM = 0, T_BOOL = 1, T_INT = 2, T_OBJ = 3 };
 
 /* what a context says (model/packed/table.py): the machine may step there; the program
  * has failed there */
-enum { CONTEXT_RUNS = 1, CONTEXT_FAILED = 2, CONTEXT_MAIN_ALONE = 4 };
+enum { CONTEXT_RUNS = 1, CONTEXT_FAILED = 2, CONTEXT_MAIN_ALONE = 4, CONTEXT_ENDED_TASK = 8 };
+/* what a context says of one of several tasks: the machine may step its top frame */
+enum { TASK_RUNS = 1 };
 
 /* opcodes of the step machine (mirrored in rapidmc/model/packed/bytecode.py) */
 enum {
@@ -47,6 +51,9 @@ enum {
 enum { VM_DONE = 0, VM_ERROR = 1, VM_UNSUPPORTED = 2 };
 
 #define FRAME_CACHE 1024
+#define ID_CACHE 4096           /* objects found by identity before the dict (value_id) */
+#define TASK_INFO 4             /* per task of a context: routine, where, locals, flags */
+#define TASK_COUNT_MAX 64
 #define STACK_SIZE 64
 #define TEMPS 8
 #define MAX_CHOICES 64
@@ -103,6 +110,11 @@ typedef struct {
     int32_t *value_slots;       /* numbers and booleans: (tag, value) -> id */
     uint64_t value_mask;
     PyObject *object_ids;       /* other objects: object -> id */
+    /* other objects met lately, by address (each held, so no other object takes its
+     * address while it is here): a state rebuilt from the table hands on the table's own
+     * objects, and hashing a 512-element array again costs what the lookup saves */
+    PyObject *id_cache_object[ID_CACHE];
+    int32_t id_cache_id[ID_CACHE];
     /* segments and states */
     VectorTable frames, data;
     int64_t *keys;              /* by state id: frame id << 32 | data id */
@@ -113,6 +125,12 @@ typedef struct {
      * step machine may run there */
     int32_t *context_routine;
     uint8_t *context_runs;      /* CONTEXT_ flags */
+    /* several tasks: per context, TASK_INFO numbers per task (``task_info``): the routine
+     * of its top frame (-1: the task has ended), where its pc is in the frame vector, how
+     * many local values follow, TASK_ flags */
+    Py_ssize_t task_count;
+    int32_t *context_tasks;
+    Py_ssize_t context_tasks_capacity;      /* (in contexts) */
     int32_t *context_io;        /* the signals' values: a vector of ``signals`` */
     VectorTable signals;
     Py_ssize_t contexts, context_capacity;
@@ -133,8 +151,12 @@ typedef struct {
     /* (frame id, pc) + 1 -> frame id: the frames a step reaches without changing locals */
     uint64_t frame_cache_key[FRAME_CACHE];
     int32_t frame_cache_value[FRAME_CACHE];
-    /* counters */
-    long long machine_steps, python_steps;
+    /* counters: states stepped by the machine / by Python; with several tasks, also the
+     * steps of single tasks within a state taken by each */
+    long long machine_steps, python_steps, task_machine_steps, task_python_steps;
+    /* the search's observer still wants the lines steps run: Python's steps of single
+     * tasks then tell it theirs (``note_python_spans``) */
+    int labels_wanted;
 } PackedTable;
 
 /* ================================================================ vector tables */
@@ -398,20 +420,31 @@ static int32_t value_id(PackedTable *self, PyObject *object)
         if (!overflow && number > -(1LL << 53) && number < (1LL << 53))
             return number_id(self, T_INT, (double)number, object);
     }
+    uint64_t cached = mix64((uint64_t)(uintptr_t)object) & (ID_CACHE - 1);
+    if (self->id_cache_object[cached] == object)
+        return self->id_cache_id[cached];
+    int32_t id;
     PyObject *known = PyDict_GetItemWithError(self->object_ids, object);
     if (known != NULL)
-        return (int32_t)PyLong_AsLong(known);
-    if (PyErr_Occurred())
-        return -1;
-    int32_t id = add_value(self, T_OBJ, 0.0, object);
-    if (id < 0)
-        return -1;
-    PyObject *number = PyLong_FromLong(id);
-    if (number == NULL || PyDict_SetItem(self->object_ids, object, number) < 0) {
-        Py_XDECREF(number);
-        return -1;
+        id = (int32_t)PyLong_AsLong(known);
+    else {
+        if (PyErr_Occurred())
+            return -1;
+        id = add_value(self, T_OBJ, 0.0, object);
+        if (id < 0)
+            return -1;
+        PyObject *number = PyLong_FromLong(id);
+        if (number == NULL || PyDict_SetItem(self->object_ids, object, number) < 0) {
+            Py_XDECREF(number);
+            return -1;
+        }
+        Py_DECREF(number);
     }
-    Py_DECREF(number);
+    if (type == &PyTuple_Type) {        /* (what is costly to hash: arrays, records) */
+        Py_INCREF(object);
+        Py_XSETREF(self->id_cache_object[cached], object);
+        self->id_cache_id[cached] = id;
+    }
     return id;
 }
 
@@ -945,8 +978,12 @@ typedef struct Scratch {     /* scratch space of the step machine */
     uint32_t *source;           /* the stepped state's vectors, copied out of the tables
                                  * (whose arenas move when a successor is interned) */
     Py_ssize_t source_capacity;
-    Int32Vector ran;            /* pcs whose blocks ran in this state's step, not yet known */
+    Int32Vector ran;            /* (routine, pc) pairs whose blocks ran in this state's step,
+                                 * not yet known */
     Successors found;           /* (for ``successor_ids``) */
+    Int32Vector changed, owners;    /* several tasks: per successor, whether it changes the
+                                     * state, the task that took the step (+ TASK_COUNT_MAX
+                                     * when Python took it) */
     uint32_t *chosen_epoch;
     int32_t *chosen_value;
     uint32_t epoch;
@@ -973,6 +1010,8 @@ static void scratch_free(Scratch *scratch)
     PyMem_Free(scratch->chosen_epoch);
     PyMem_Free(scratch->chosen_value);
     vector32_free(&scratch->ran);
+    vector32_free(&scratch->changed);
+    vector32_free(&scratch->owners);
     PyMem_Free(scratch->found.frames);
     PyMem_Free(scratch->found.data);
 }
@@ -1031,41 +1070,121 @@ static int32_t frame_at(PackedTable *table, int32_t frame_id, const uint32_t *fr
     return id;
 }
 
+typedef struct {            /* a stored state's segments, as the tables hold them now */
+    int32_t frame_id, data_id;
+    const uint32_t *frame, *data;
+    Py_ssize_t frame_length, data_length;
+} Stored;
+
+static void stored_state(PackedTable *table, Py_ssize_t id, Stored *stored)
+{
+    int64_t key = table->keys[id];
+    stored->frame_id = (int32_t)(key >> 32);
+    stored->data_id = (int32_t)(key & 0xffffffff);
+    stored->frame = vt_items(&table->frames, stored->frame_id, &stored->frame_length);
+    stored->data = vt_items(&table->data, stored->data_id, &stored->data_length);
+}
+
+/* The stepped state's vectors copied out of the tables (interning a successor may move
+ * their arenas) into ``scratch->source``: ``*frame`` and ``*data`` point there; -1 */
+static int copy_source(Scratch *scratch, const uint32_t *stored_frame, Py_ssize_t frame_length,
+                       const uint32_t *stored_data, Py_ssize_t data_length,
+                       const uint32_t **frame, const uint32_t **data)
+{
+    uint32_t *source = reserve(scratch->source, &scratch->source_capacity, sizeof(uint32_t),
+                               frame_length + data_length + 1);
+    if (source == NULL)
+        return -1;
+    scratch->source = source;
+    memcpy(source, stored_frame, frame_length * sizeof(uint32_t));
+    memcpy(source + frame_length, stored_data, data_length * sizeof(uint32_t));
+    *frame = source;
+    *data = source + frame_length;
+    return 0;
+}
+
+/* A run over working copies of the vectors (``run->locals`` still to be set): -1 */
+static int start_run(Run *run, PackedTable *table, Scratch *scratch, Py_ssize_t frame_length,
+                     Py_ssize_t data_length, uint32_t context)
+{
+    uint32_t *work_frame = reserve(scratch->frame, &scratch->frame_capacity, sizeof(uint32_t),
+                                   frame_length);
+    if (work_frame == NULL)
+        return -1;
+    scratch->frame = work_frame;
+    uint32_t *work_data = reserve(scratch->data, &scratch->data_capacity, sizeof(uint32_t),
+                                  data_length + 1);
+    if (work_data == NULL)
+        return -1;
+    scratch->data = work_data;
+    run->table = table;
+    run->data = work_data;
+    run->io = context_signals(table, context);
+    run->lazy = 1;
+    run->script_length = 0;
+    run->chosen_epoch = scratch->chosen_epoch;
+    run->chosen_value = scratch->chosen_value;
+    return 0;
+}
+
 /* The successors of state ``id`` by the step machine, as ``fused_successor_states``
  * gives them: VM_DONE (``found`` filled), VM_UNSUPPORTED (Python must step it: nothing
  * changed), -1 with an error. */
 static int machine_step(PackedTable *table, Py_ssize_t id, Scratch *scratch,
-                        Successors *found, Routine **ran_in);
+                        Successors *found);
+static int tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Successors *found);
 
-/* ``machine_step``, with the pcs its blocks ran noted as executed when it is done (and
- * forgotten when it gave up: the Python step then says what runs) */
+/* note (routine, pc) as run by a step in progress (known once the step is done) */
+static inline int note_ran(PackedTable *table, Scratch *scratch, int32_t routine, int32_t pc)
+{
+    uint8_t *executed = &table->routines[routine].executed[pc];
+    if (*executed)
+        return 0;
+    *executed = 2;
+    if (vector32_push(&scratch->ran, routine) < 0 || vector32_push(&scratch->ran, pc) < 0)
+        return -1;
+    return 0;
+}
+
+/* forget the pcs noted from pair ``from`` on (a step given up: Python says what runs) */
+static void forget_ran(PackedTable *table, Scratch *scratch, Py_ssize_t from)
+{
+    for (Py_ssize_t i = from; i + 1 < scratch->ran.length; i += 2)
+        table->routines[scratch->ran.items[i]].executed[scratch->ran.items[i + 1]] = 0;
+    scratch->ran.length = from;
+}
+
+/* ``machine_step`` (or ``tasks_step`` with several tasks), with the pcs its blocks ran
+ * noted as executed when it is done (and forgotten when it gave up: the Python step then
+ * says what runs) */
 static int machine_successors(PackedTable *table, Py_ssize_t id, Scratch *scratch,
                               Successors *found)
 {
-    Routine *routine = NULL;
-    int outcome = machine_step(table, id, scratch, found, &routine);
-    if (routine != NULL) {
-        for (Py_ssize_t i = 0; i < scratch->ran.length; i++) {
-            int32_t pc = scratch->ran.items[i];
-            routine->executed[pc] = outcome == VM_DONE;
-            if (outcome == VM_DONE &&
-                (vector32_push(&table->newly_executed, (int32_t)(routine - table->routines)) < 0 ||
-                 vector32_push(&table->newly_executed, pc) < 0))
-                return -1;
-        }
-        scratch->ran.length = 0;
+    scratch->ran.length = 0;
+    int outcome = table->task_count > 1 ? tasks_step(table, id, scratch, found) :
+        machine_step(table, id, scratch, found);
+    if (outcome != VM_DONE) {
+        forget_ran(table, scratch, 0);
+        return outcome;
     }
+    for (Py_ssize_t i = 0; i < scratch->ran.length; i++) {
+        if (i % 2)
+            table->routines[scratch->ran.items[i - 1]].executed[scratch->ran.items[i]] = 1;
+        if (vector32_push(&table->newly_executed, scratch->ran.items[i]) < 0)
+            return -1;
+    }
+    scratch->ran.length = 0;
     return outcome;
 }
 
 static int machine_step(PackedTable *table, Py_ssize_t id, Scratch *scratch,
-                        Successors *found, Routine **ran_in)
+                        Successors *found)
 {
-    int64_t key = table->keys[id];
-    int32_t frame_id = (int32_t)(key >> 32), data_id = (int32_t)(key & 0xffffffff);
-    Py_ssize_t frame_length, data_length;
-    const uint32_t *stored_frame = vt_items(&table->frames, frame_id, &frame_length);
-    const uint32_t *stored_data = vt_items(&table->data, data_id, &data_length);
+    Stored stored;
+    stored_state(table, id, &stored);
+    int32_t frame_id = stored.frame_id, data_id = stored.data_id;
+    Py_ssize_t frame_length = stored.frame_length, data_length = stored.data_length;
+    const uint32_t *stored_frame = stored.frame, *stored_data = stored.data;
     uint32_t context = stored_frame[0];
     if (frame_length < 2 || !(table->context_runs[context] & CONTEXT_RUNS))
         return VM_UNSUPPORTED;
@@ -1077,37 +1196,16 @@ static int machine_step(PackedTable *table, Py_ssize_t id, Scratch *scratch,
     if (routine->code == NULL || start_pc < 0 || start_pc >= routine->length ||
             routine->block_start[start_pc] < 0)
         return VM_UNSUPPORTED;
-    *ran_in = routine;
-    uint32_t *source = reserve(scratch->source, &scratch->source_capacity, sizeof(uint32_t),
-                               frame_length + data_length + 1);
-    if (source == NULL)
-        return -1;
-    scratch->source = source;
-    memcpy(source, stored_frame, frame_length * sizeof(uint32_t));
-    memcpy(source + frame_length, stored_data, data_length * sizeof(uint32_t));
-    const uint32_t *frame = source, *data = source + frame_length;
-    uint32_t *work_frame = reserve(scratch->frame, &scratch->frame_capacity, sizeof(uint32_t),
-                                   frame_length);
-    if (work_frame == NULL)
-        return -1;
-    scratch->frame = work_frame;
-    uint32_t *work_data = reserve(scratch->data, &scratch->data_capacity, sizeof(uint32_t),
-                                  data_length + 1);
-    if (work_data == NULL)
-        return -1;
-    scratch->data = work_data;
+    const uint32_t *frame, *data;
     Run run;
-    run.table = table;
+    if (copy_source(scratch, stored_frame, frame_length, stored_data, data_length,
+                    &frame, &data) < 0 ||
+            start_run(&run, table, scratch, frame_length, data_length, context) < 0)
+        return -1;
+    uint32_t *work_frame = scratch->frame, *work_data = scratch->data;
     run.locals = work_frame + 2;
     run.local_count = frame_length - 2;
-    run.data = work_data;
-    run.io = context_signals(table, context);
-    run.lazy = 1;
-    run.script_length = 0;
-    run.chosen_epoch = scratch->chosen_epoch;
-    run.chosen_value = scratch->chosen_value;
     found->count = 0;
-    scratch->ran.length = 0;
     run.data_changed = run.locals_changed = 1;
     for (;;) {
         if (run.locals_changed)                 /* (the last run's copies, if unchanged) */
@@ -1124,11 +1222,8 @@ static int machine_step(PackedTable *table, Py_ssize_t id, Scratch *scratch,
             int32_t at = routine->block_start[run.pc];
             if (at < 0 || ++blocks > MAX_BLOCKS_PER_STEP)
                 return VM_UNSUPPORTED;
-            if (!routine->executed[run.pc]) {       /* (noted once the step is done) */
-                routine->executed[run.pc] = 2;
-                if (vector32_push(&scratch->ran, run.pc) < 0)
-                    return -1;
-            }
+            if (note_ran(table, scratch, routine_index, run.pc) < 0)
+                return -1;
             int outcome = execute(&run, routine->code, at, NULL);
             scratch->epoch = run.epoch;
             if (outcome != VM_DONE)
@@ -1162,6 +1257,198 @@ static int machine_step(PackedTable *table, Py_ssize_t id, Scratch *scratch,
         if (run.size_count == 0 || !next_script(&run))
             return VM_DONE;
     }
+}
+
+/* One task's instruction in a state of several tasks, by the machine: the block at its pc
+ * once per choice script (tasks take turns one instruction each: no merged run), as
+ * ``staged_step`` runs it through ``fused_step`` on a view of that task.  Its successors
+ * are appended to ``found`` (``changed``: each one changes the state).  VM_UNSUPPORTED
+ * (with ``found`` as it was) where Python must step the task: no block, an error, a
+ * step that leaves the state as it is (Python then decides about the idle step). */
+static int task_machine_step(PackedTable *table, Scratch *scratch, const int32_t *info,
+                             uint32_t context, const uint32_t *frame, Py_ssize_t frame_length,
+                             int32_t data_id, const uint32_t *data, Py_ssize_t data_length,
+                             Successors *found, Int32Vector *changed)
+{
+    int32_t routine_index = info[0], where = info[1], locals = info[2];
+    if (!(info[3] & TASK_RUNS) || routine_index < 0 || routine_index >= table->routine_count ||
+            where < 1 || where + 1 + locals > frame_length)
+        return VM_UNSUPPORTED;
+    Routine *routine = &table->routines[routine_index];
+    uint32_t pc_id = frame[where];              /* (the pc as a value: an int) */
+    if (pc_id >= table->values || table->value_tag[pc_id] != T_INT)
+        return VM_UNSUPPORTED;
+    int32_t start_pc = (int32_t)table->value_number[pc_id];
+    if (routine->code == NULL || start_pc < 0 || start_pc >= routine->length ||
+            routine->block_start[start_pc] < 0)
+        return VM_UNSUPPORTED;
+    Run run;
+    if (start_run(&run, table, scratch, frame_length, data_length, context) < 0)
+        return -1;
+    uint32_t *work_frame = scratch->frame, *work_data = scratch->data;
+    run.locals = work_frame + where + 1;
+    run.local_count = locals;
+    Py_ssize_t found_before = found->count, ran_before = scratch->ran.length;
+    int outcome = VM_DONE;
+    for (;;) {
+        memcpy(work_frame, frame, frame_length * sizeof(uint32_t));
+        memcpy(work_data, data, data_length * sizeof(uint32_t));
+        run.data_changed = run.locals_changed = 0;
+        run.pc = start_pc;
+        run.size_count = 0;
+        run.epoch = ++scratch->epoch;
+        if (note_ran(table, scratch, routine_index, start_pc) < 0)
+            return -1;
+        outcome = execute(&run, routine->code, routine->block_start[start_pc], NULL);
+        scratch->epoch = run.epoch;
+        if (outcome < 0)
+            return -1;
+        if (outcome != VM_DONE || run.pc < 0 || run.pc >= routine->length ||
+                (run.pc == start_pc && !run.locals_changed && !run.data_changed)) {
+            outcome = VM_UNSUPPORTED;
+            break;
+        }
+        if (table->projecting)
+            project(table, routine, context, &run);
+        int32_t new_pc = run.pc == start_pc ? (int32_t)pc_id :
+            number_id(table, T_INT, (double)run.pc, NULL);
+        if (new_pc < 0)
+            return -1;
+        work_frame[where] = (uint32_t)new_pc;
+        int32_t new_frame = vt_intern(&table->frames, work_frame, frame_length);
+        int32_t new_data = new_frame < 0 ? -1 : !run.data_changed ? data_id :
+            vt_intern(&table->data, work_data, data_length);
+        if (new_data < 0 || add_successor(found, new_frame, new_data) < 0 ||
+                vector32_push(changed, 1) < 0)
+            return -1;
+        if (run.size_count == 0 || !next_script(&run))
+            return VM_DONE;
+    }
+    found->count = found_before;
+    changed->length = found_before;
+    forget_ran(table, scratch, ran_before);
+    return outcome;
+}
+
+/* One task's transitions in state ``id`` from Python (``python_task_successors``),
+ * appended to ``found``: 0, VM_UNSUPPORTED (Python steps the whole state), -1 */
+static int task_python_step(PackedTable *table, Py_ssize_t id, Py_ssize_t task,
+                            Successors *found, Int32Vector *changed)
+{
+    PyObject *answer = PyObject_CallMethod((PyObject *)table, "python_task_successors", "nn",
+                                           id, task);
+    if (answer == NULL)
+        return -1;
+    if (answer == Py_None) {
+        Py_DECREF(answer);
+        return VM_UNSUPPORTED;
+    }
+    PyObject *fast = PySequence_Fast(answer, "python_task_successors must give a sequence");
+    Py_DECREF(answer);
+    if (fast == NULL)
+        return -1;
+    for (Py_ssize_t i = 0; i < PySequence_Fast_GET_SIZE(fast); i++) {
+        int frame, data, moved;
+        if (!PyArg_ParseTuple(PySequence_Fast_GET_ITEM(fast, i), "iip", &frame, &data, &moved)
+                || add_successor(found, frame, data) < 0 || vector32_push(changed, moved) < 0) {
+            Py_DECREF(fast);
+            return -1;
+        }
+    }
+    Py_DECREF(fast);
+    return 0;
+}
+
+/* ``machine_step`` for a program of several tasks (``staged_step.staged_successors``
+ * without interrupts, stored inputs or an environment): each running task's
+ * instruction in task order, by the machine where it can and else by Python for that
+ * task alone; then a task whose step changes nothing gives up its turn when another
+ * can go on (``staged_step.idle_steps_dropped``).  VM_UNSUPPORTED: Python steps the
+ * whole state (a context the machine does not run in, or Python asked for it). */
+static int tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Successors *found)
+{
+    Stored at;
+    stored_state(table, id, &at);
+    uint32_t context = at.frame[0];
+    Py_ssize_t tasks = table->task_count;
+    if (!(table->context_runs[context] & CONTEXT_RUNS) || table->context_tasks == NULL)
+        return VM_UNSUPPORTED;
+    const uint32_t *frame, *data;
+    if (copy_source(scratch, at.frame, at.frame_length, at.data, at.data_length,
+                    &frame, &data) < 0)
+        return -1;
+    Int32Vector *changed = &scratch->changed, *owners = &scratch->owners;
+    found->count = changed->length = owners->length = 0;
+    long long by_machine = 0, by_python = 0, running = 0;
+    for (Py_ssize_t task = 0; task < tasks; task++)
+        running += table->context_tasks[(context * tasks + task) * TASK_INFO] >= 0;
+    for (Py_ssize_t task = 0; task < tasks; task++) {
+        /* (looked up again each time: Python may add contexts, which moves the array) */
+        const int32_t *info = table->context_tasks + (context * tasks + task) * TASK_INFO;
+        if (info[0] < 0)
+            continue;                           /* (ended) */
+        Py_ssize_t before = found->count;
+        int outcome = task_machine_step(table, scratch, info, context, frame, at.frame_length,
+                                        at.data_id, data, at.data_length, found, changed);
+        if (outcome < 0)
+            return -1;
+        int owner = (int)task;
+        if (outcome == VM_DONE)
+            by_machine++;
+        else {
+            owner += TASK_COUNT_MAX;            /* (Python's step) */
+            outcome = task_python_step(table, id, task, found, changed);
+            if (outcome < 0)
+                return -1;
+            if (outcome == VM_UNSUPPORTED) {
+                table->task_python_steps += running;
+                return VM_UNSUPPORTED;
+            }
+            by_python++;
+        }
+        for (Py_ssize_t i = before; i < found->count; i++)
+            if (vector32_push(owners, owner) < 0)
+                return -1;
+    }
+    /* idle steps dropped: kept when no task moves, or when each transition moves, or
+     * when no task but its own moves */
+    uint64_t moving = 0;
+    int all_moved = 1;
+    for (Py_ssize_t i = 0; i < found->count; i++) {
+        if (changed->items[i])
+            moving |= (uint64_t)1 << (owners->items[i] % TASK_COUNT_MAX);
+        else
+            all_moved = 0;
+    }
+    /* ``changed`` becomes, per successor, 0: the machine's, 1: Python's and dropped,
+     * 2: Python's and kept */
+    Py_ssize_t kept = 0;
+    for (Py_ssize_t i = 0; i < found->count; i++) {
+        int keep = !moving || all_moved || changed->items[i] ||
+            !(moving & ~((uint64_t)1 << (owners->items[i] % TASK_COUNT_MAX)));
+        changed->items[i] = owners->items[i] >= TASK_COUNT_MAX ? 1 + keep : 0;
+        if (keep) {
+            found->frames[kept] = found->frames[i];
+            found->data[kept++] = found->data[i];
+        }
+    }
+    Py_ssize_t before_drop = found->count;
+    found->count = kept;
+    table->task_machine_steps += by_machine;
+    table->task_python_steps += by_python;
+    if (by_python && table->labels_wanted) {
+        /* the observer hears the lines of Python's steps that were kept */
+        PyObject *answer = PyObject_CallMethod(
+            (PyObject *)table, "note_python_spans", "y#", (const char *)changed->items,
+            before_drop * (Py_ssize_t)sizeof(int32_t));
+        if (answer == NULL)
+            return -1;
+        table->labels_wanted = PyObject_IsTrue(answer);
+        Py_DECREF(answer);
+        if (table->labels_wanted < 0)
+            return -1;
+    }
+    return VM_DONE;
 }
 
 /* The valuation ``index`` of state ``id``: VM_DONE (``*bits``), VM_UNSUPPORTED, -1. */
@@ -1213,6 +1500,8 @@ static int PackedTable_traverse(PackedTable *self, visitproc visit, void *arg)
     Py_VISIT(self->object_ids);
     for (Py_ssize_t i = 0; i < self->values; i++)
         Py_VISIT(self->value_object[i]);
+    for (Py_ssize_t i = 0; i < ID_CACHE; i++)
+        Py_VISIT(self->id_cache_object[i]);
     return 0;
 }
 
@@ -1221,6 +1510,8 @@ static int PackedTable_clear(PackedTable *self)
     Py_CLEAR(self->object_ids);
     for (Py_ssize_t i = 0; i < self->values; i++)
         Py_CLEAR(self->value_object[i]);
+    for (Py_ssize_t i = 0; i < ID_CACHE; i++)
+        Py_CLEAR(self->id_cache_object[i]);
     return 0;
 }
 
@@ -1283,6 +1574,7 @@ static void PackedTable_dealloc(PackedTable *self)
     PyMem_Free(self->slots);
     PyMem_Free(self->context_routine);
     PyMem_Free(self->context_runs);
+    PyMem_Free(self->context_tasks);
     Py_TYPE(self)->tp_free((PyObject *)self);
 }
 
@@ -1348,9 +1640,31 @@ static PyObject *PackedTable_values(PackedTable *self, PyObject *ids)
 static PyObject *PackedTable_add_context(PackedTable *self, PyObject *args)
 {
     int routine, runs;
-    Py_buffer io;
-    if (ensure_index(self) < 0 || !PyArg_ParseTuple(args, "iiy*", &routine, &runs, &io))
+    Py_buffer io, tasks = {0};
+    if (ensure_index(self) < 0 ||
+            !PyArg_ParseTuple(args, "iiy*|y*", &routine, &runs, &io, &tasks))
         return NULL;
+    if (tasks.buf != NULL) {
+        Py_ssize_t numbers = tasks.len / (Py_ssize_t)sizeof(int32_t);
+        int wrong = self->task_count < 2 || numbers != self->task_count * TASK_INFO;
+        int32_t *all = wrong ? NULL : reserve(self->context_tasks,
+                                              &self->context_tasks_capacity,
+                                              numbers * sizeof(int32_t), self->contexts + 1);
+        if (!wrong && all != NULL) {
+            self->context_tasks = all;
+            memcpy(all + self->contexts * numbers, tasks.buf, numbers * sizeof(int32_t));
+        }
+        PyBuffer_Release(&tasks);
+        if (wrong || all == NULL) {
+            PyBuffer_Release(&io);
+            return wrong ? PyErr_Format(PyExc_ValueError, "task_info: %zd tasks of %d numbers",
+                                        self->task_count, TASK_INFO) : PyErr_NoMemory();
+        }
+    }
+    else if (self->task_count > 1) {
+        PyBuffer_Release(&io);
+        return PyErr_Format(PyExc_ValueError, "a context of several tasks needs its tasks");
+    }
     int32_t io_id = vt_intern(&self->signals, io.buf, io.len / sizeof(uint32_t));
     PyBuffer_Release(&io);
     if (io_id < 0)
@@ -1444,6 +1758,20 @@ static PyObject *PackedTable_vectors(PackedTable *self, PyObject *argument)
     }
     int64_t key = self->keys[id];
     return parts_of(self, (int32_t)(key >> 32), (int32_t)(key & 0xffffffff));
+}
+
+/* ``key(id) -> (frame id, data id, context id)``: a stored state's segments and context */
+static PyObject *PackedTable_key(PackedTable *self, PyObject *argument)
+{
+    Py_ssize_t id = PyLong_AsSsize_t(argument);
+    if (id == -1 && PyErr_Occurred())
+        return NULL;
+    if (id < 0 || id >= self->count)
+        return PyErr_Format(PyExc_IndexError, "no such state id");
+    int64_t key = self->keys[id];
+    int32_t frame = (int32_t)(key >> 32);
+    return Py_BuildValue("(iiI)", frame, (int32_t)(key & 0xffffffff),
+                         self->frames.arena[self->frames.offsets[frame]]);
 }
 
 /* ``parts(frame id, data id)``: as ``vectors``, for segments not (yet) a stored state */
@@ -1772,16 +2100,32 @@ static PyObject *PackedTable_native_bytes(PackedTable *self, PyObject *unused)
         + vt_bytes(&self->frames) + vt_bytes(&self->data)
         + self->value_capacity * (1 + sizeof(double) + sizeof(PyObject *))
         + (self->value_mask + 1) * sizeof(int32_t)
-        + vt_bytes(&self->signals) + self->context_capacity * (2 * sizeof(int32_t) + 1);
+        + vt_bytes(&self->signals) + self->context_capacity * (2 * sizeof(int32_t) + 1)
+        + self->context_tasks_capacity * self->task_count * TASK_INFO * sizeof(int32_t);
     return PyLong_FromSsize_t(bytes);
 }
 
 static PyObject *PackedTable_counts(PackedTable *self, PyObject *unused)
 {
-    return Py_BuildValue("{s:n,s:n,s:n,s:n,s:L,s:L}", "states", self->count,
+    return Py_BuildValue("{s:n,s:n,s:n,s:n,s:L,s:L,s:L,s:L}", "states", self->count,
                          "frames", self->frames.count, "data", self->data.count,
                          "values", self->values, "machine_steps", self->machine_steps,
-                         "python_steps", self->python_steps);
+                         "python_steps", self->python_steps,
+                         "task_machine_steps", self->task_machine_steps,
+                         "task_python_steps", self->task_python_steps);
+}
+
+/* ``set_tasks(count)``: the program's tasks (2-64: each context then says where each
+ * task's top frame is, ``add_context``), before the first context */
+static PyObject *PackedTable_set_tasks(PackedTable *self, PyObject *argument)
+{
+    Py_ssize_t count = PyLong_AsSsize_t(argument);
+    if (count == -1 && PyErr_Occurred())
+        return NULL;
+    if (count < 1 || count > 64 || self->contexts > 0)
+        return PyErr_Format(PyExc_ValueError, "1-64 tasks, before the first context");
+    self->task_count = count;
+    Py_RETURN_NONE;
 }
 
 static Py_ssize_t PackedTable_length(PackedTable *self)
@@ -1795,11 +2139,13 @@ static PyMethodDef PackedTable_methods[] = {
     {"values", (PyCFunction)PackedTable_values, METH_O,
      "values(ids: bytes) -> tuple: the values of 32-bit ids"},
     {"add_context", (PyCFunction)PackedTable_add_context, METH_VARARGS,
-     "add_context(routine, runs) -> id: a new context id"},
+     "add_context(routine, flags, signals, tasks=None) -> id: a new context id"},
     {"intern_vectors", (PyCFunction)PackedTable_intern_vectors, METH_VARARGS,
      "intern_vectors(frame, data, add=True) -> (id, new): a state by its two vectors"},
     {"vectors", (PyCFunction)PackedTable_vectors, METH_O,
      "vectors(id) -> (context, pc, locals, data): a stored state's parts"},
+    {"key", (PyCFunction)PackedTable_key, METH_O,
+     "key(id) -> (frame id, data id, context id): a stored state's segments and context"},
     {"parts", (PyCFunction)PackedTable_parts, METH_VARARGS,
      "parts(frame id, data id) -> (context, pc, locals, data): segments' contents"},
     {"intern_parts", (PyCFunction)PackedTable_intern_parts, METH_VARARGS,
@@ -1819,6 +2165,8 @@ static PyMethodDef PackedTable_methods[] = {
      "release_index(): drop the hash indexes until the next interning needs them"},
     {"native_bytes", (PyCFunction)PackedTable_native_bytes, METH_NOARGS,
      "native_bytes() -> int: bytes of the native arrays"},
+    {"set_tasks", (PyCFunction)PackedTable_set_tasks, METH_O,
+     "set_tasks(count): the program's tasks (several: contexts say where each one's frame is)"},
     {"counts", (PyCFunction)PackedTable_counts, METH_NOARGS,
      "counts() -> dict: states, segments, values and steps taken by each engine"},
     {NULL}
@@ -2087,9 +2435,13 @@ static int observe(PackedSearch *search, Py_ssize_t frontier, int by_machine)
     if (search->python_observe == Py_None)
         return 0;
     PackedTable *table = search->table;
-    if (by_machine && search->observe_natively) {
-        int64_t key = table->keys[frontier];
-        int32_t frame = (int32_t)(key >> 32), data = (int32_t)(key & 0xffffffff);
+    int64_t key = table->keys[frontier];
+    int32_t frame = (int32_t)(key >> 32), data = (int32_t)(key & 0xffffffff);
+    /* (a task at a barrier waiting for one that has ended is stuck whatever the others
+     * do: Python's stuck check says so) */
+    if (by_machine && search->observe_natively &&
+            !(table->context_runs[table->frames.arena[table->frames.offsets[frame]]] &
+              CONTEXT_ENDED_TASK)) {
         int candidate = 1;     /* every successor has this call stack and data */
         for (Py_ssize_t i = 0; i < search->found.count && candidate; i++)
             candidate = search->found.frames[i] == frame && search->found.data[i] == data;
@@ -2120,7 +2472,12 @@ static int observe(PackedSearch *search, Py_ssize_t frontier, int by_machine)
 static int expand(PackedSearch *search, Py_ssize_t frontier, Py_ssize_t *target)
 {
     PackedTable *table = search->table;
+    int observed_labels = search->labels_wanted && search->python_observe != Py_None;
+    table->labels_wanted = observed_labels;
     int outcome = machine_successors(table, frontier, &search->scratch, &search->found);
+    if (observed_labels)
+        search->labels_wanted = table->labels_wanted;
+    table->labels_wanted = 0;           /* (other callers of the machine: no observer) */
     if (outcome < 0)
         return FAILED;
     int by_machine = outcome == VM_DONE;

@@ -9,7 +9,10 @@ robot, interrupts, ERRNO, status, tasks ...), which the fused step never
 changes: each distinct one gets an id here, with the two facts the
 machine needs, whether it may step there (a plain running state, as
 ``fused_step.plain_successor_states`` tests) and whether the program has
-failed there (the run-time error search's predicate).
+failed there (the run-time error search's predicate).  With several tasks the frame
+vector holds every running task's top frame and the machine steps one task's
+instruction at a time (``_task_vectors``, ``python_task_successors`` for the tasks it
+leaves to Python).
 
 The table also hands the machine its program (``bytecode``): each routine's
 fused blocks, the domains of the inputs chosen where read, and the atoms of
@@ -33,6 +36,8 @@ from pyrsistent import pvector
 
 from ...check.native import _native
 from ...semantics.plain_step import is_plain
+from ...semantics.staged_step import task_transitions
+from ..reduction.merging import executed_spans
 from ...semantics.state import FAILED, RUNNING, Frame, State
 from ..reduction.projection import Projection
 from .bytecode import RoutineCode, atom_code
@@ -42,13 +47,18 @@ _HEAD = struct.Struct("<Ii")           # context id, program counter
 RUNS = 1                               # context flags (_packed.c's add_context)
 HAS_FAILED = 2
 MAIN_ALONE = 4                         # one frame, of the projection's main routine
+ENDED_TASK = 8                         # several tasks, one of them has ended
+TASK_RUNS = 1                          # per task of a context: the machine may step it
+MAX_TASKS = 64
 
 
 def packed_table(system) -> Optional["PackedStateTable"]:
     """A packed table for ``system``'s states when the compiled core is built and its
     step machine can take the system's fused steps, else None."""
-    if _native is None or system.order is not None or \
-            system.project_fused is not None and not isinstance(system.project_fused, Projection):
+    tasks = len(system.program.task_names)
+    projection = system.project if tasks > 1 else system.project_fused
+    if _native is None or system.order is not None or tasks > MAX_TASKS or \
+            projection is not None and not isinstance(projection, Projection):
         return None
     config = system.config
     if config.free_inputs or system.program.environment_react is not None:
@@ -77,6 +87,15 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         self._valuation_codes: list[bytes] = []
         self._routines: list = []
         self.compiled_routines = 0
+        # several tasks: each one's top frame is in the frame vector (``_task_vectors``)
+        self.tasks = len(self.program.task_names)
+        if self.tasks > 1:
+            self.set_tasks(self.tasks)
+            self._vectors = self._task_vectors
+            self._state = self._task_state
+            self._new_context = self._new_task_context
+        self._stepping: tuple = (-1, None)      # (id, state) of python_task_successors
+        self._python_spans: list = []           # the lines its steps there ran
         self._compile()
         # what the search in progress hands over (``prepare_search``)
         self.predicate: Optional[Callable] = None
@@ -104,8 +123,10 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
                          self._valuation_codes, self._projection())
 
     def _projection(self) -> Optional[tuple]:
-        """The projection of the fused step's targets for ``set_program``, or None."""
-        projection = self.system.project_fused
+        """The projection of the fused step's targets for ``set_program``, or None (with
+        several tasks, the system's whole projection: a task's step is projected as
+        ``RapidSystem.successors`` projects it)."""
+        projection = self.system.project if self.tasks > 1 else self.system.project_fused
         if projection is None:
             return None
         main = self._resets(projection.main_resets) if projection.main_resets else None
@@ -192,6 +213,121 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         self._context_flags.append(flags)
         return context_id
 
+    # ------------------------------------------------------- several tasks
+    # The frame vector holds every running task's top frame, in task order: the context
+    # id, a 0, then per task its pc (as a value: an int) and its local values.  The
+    # context is each task's frames below, its top frame's routine, handler fields and
+    # number of locals (None: the task has ended), the signals and the rest of the state
+    # but the tasks.
+    def _task_vectors(self, state: State) -> tuple[bytes, bytes]:
+        shapes = []
+        items: list = []
+        for stack in (state[0],) + state[10]:
+            if stack:
+                top = stack[-1]
+                shapes.append((stack[:-1], top[0], top[3:], len(top[2])))
+                items.append(top[1])
+                items += top[2]
+            else:
+                shapes.append(None)
+        context = (tuple(shapes), state[2], state[3:10])
+        context_id = self._contexts.get(context)
+        if context_id is None:
+            context_id = self._add_task_context(context, state)
+        return _HEAD.pack(context_id, 0) + self.value_ids(items), self.value_ids(state[1])
+
+    def _add_task_context(self, context: tuple, state: State) -> int:
+        # where the machine steps a task (``staged_step`` without interrupts, stored
+        # inputs or an environment; main running, so the projection's final resets do not
+        # apply): a running state whose interrupt table, pending and scheduled lists are
+        # empty; each task's frame then as ``_task_info`` says
+        interrupts = state[4]
+        runs = state[7] == RUNNING and bool(state[0]) and \
+            not (interrupts[0] or interrupts[1] or interrupts[3])
+        ended = any(shape is None for shape in context[0])
+        flags = (RUNS if runs else 0) | (HAS_FAILED if state[7] == FAILED else 0) | \
+            (ENDED_TASK if ended else 0)
+        return self._new_context(context, flags)
+
+    def _new_task_context(self, context: tuple, flags: int) -> int:
+        shapes, io = context[0], context[1]
+        info = array("i")
+        where = 2
+        for shape in shapes:
+            if shape is None:
+                info.extend((-1, 0, 0, 0))
+                continue
+            _, routine, handling, count = shape
+            # (not in a handler nor counting RETRYs: ``fused_step._entry``)
+            runs = not handling[0] and not handling[2]
+            info.extend((routine, where, count, TASK_RUNS if runs else 0))
+            where += 1 + count
+        for _ in range(len(shapes), self.tasks):
+            info.extend((-1, 0, 0, 0))           # (a failed state keeps no further tasks)
+        first = shapes[0][1] if shapes[0] is not None else -1
+        context_id = self.add_context(first, flags, self.value_ids(io), info.tobytes())
+        self._contexts[context] = context_id
+        self._context_values.append(context)
+        self._context_flags.append(flags)
+        return context_id
+
+    def _task_state(self, context_id: int, pc: int, items: tuple, data: tuple) -> State:
+        shapes, io, rest = self._context_values[context_id]
+        stacks = []
+        position = 0
+        for shape in shapes:
+            if shape is None:
+                stacks.append(())
+                continue
+            below, routine, handling, count = shape
+            start = position + 1
+            top = _new_tuple(Frame, (routine, items[position], items[start:start + count]) +
+                             handling)
+            stacks.append(below + (top,))
+            position = start + count
+        return _new_tuple(State, (stacks[0], pvector(data), io) + rest + (tuple(stacks[1:]),))
+
+    def python_task_successors(self, state_id: int, task: int) -> Optional[list]:
+        """The transitions of ``task`` alone at a state of several tasks, for the machine
+        that takes the others' (``_packed.c``'s ``tasks_step``): (frame id, data id,
+        whether it changes the state) each, projected; None to have the whole state
+        stepped by Python (an observer that still wants the labels sees them there)."""
+        if self._stepping[0] == state_id:
+            state = self._stepping[1]
+        else:
+            state = self[state_id]
+            self._stepping = (state_id, state)
+            self._python_spans = []
+        found = task_transitions(self.program, state, task, self.system.config)
+        if found is None:
+            return None
+        observer = self.observer
+        if observer is not None and observer.labels_wanted:
+            # (the lines each one ran, told once the idle steps are dropped)
+            self._python_spans += [executed_spans(transition[1]) for transition in found]
+        project = self.system.project
+        result = []
+        for transition in found:
+            after = transition[2]
+            moved = after != state
+            if project is not None:
+                after = project(after)
+            result.append(self.intern_parts(*self._vectors(after)) + (moved,))
+        return result
+
+    def note_python_spans(self, kinds: bytes) -> bool:
+        """The observer is told the lines of the steps ``python_task_successors`` gave at
+        the state just stepped that were kept (``kinds``: per successor 0 the machine's,
+        1 Python's dropped as idle, 2 Python's kept; as ``python_labelled`` shows it the
+        kept ones); whether it wants more."""
+        marks = array("i")
+        marks.frombytes(kinds)
+        spans = iter(self._python_spans)
+        kept = [span for mark in marks if mark for span in [next(spans)] if mark == 2]
+        self._python_spans = []
+        self._stepping = (-1, None)
+        return self.observer.note_spans([one for spans_ in kept for one in spans_])
+
     # ------------------------------------- vectors between tables (workers)
     # A state's vectors hold ids that only this table gives its values and contexts.  Another
     # table (a worker of a distributed search) reads them once it has been handed the values
@@ -258,7 +394,29 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         return self.observer.note_spans([span for span in spans if span is not None])
 
     def predicate_holds(self, state_id: int) -> bool:
+        if self.tasks > 1 and self.predicate == getattr(self.system, "stuck", None):
+            stuck = self._stuck(state_id)
+            if stuck is not None:
+                return stuck
         return bool(self.predicate(self[state_id]))
+
+    def _stuck(self, state_id: int) -> Optional[bool]:
+        """``RapidSystem.stuck`` at a state of several tasks from the machine's step (its
+        own steps and Python's of single tasks, ``tasks_step``), or None where Python
+        decides: the machine does not step there, a task has ended (a barrier may wait
+        for it), or an observer wants the lines steps run.  Without stored free inputs
+        (``packed_table``) a running state is stuck exactly when every successor is the
+        state itself: the same segments."""
+        observer = self.observer
+        if observer is not None and observer.labels_wanted:
+            return None
+        frame, data, context = self.key(state_id)
+        if self._context_flags[context] & ENDED_TASK:
+            return None
+        found = self.step(state_id)
+        if found is None:
+            return None
+        return all(parts == (frame, data) for parts in found)
 
     def python_valuation(self, index: int, state_id: int) -> int:
         return self.valuations_kept[index](self[state_id])
