@@ -7,7 +7,9 @@ SYSPAR, RAPID/TASKn), checked from the repository root:
 * ``expected`` — ``NAME VERDICT`` per property, the built-in checks included;
 * ``waiting`` — text the reason of a violated ``no_deadlock`` must contain, one piece a line;
 * ``warnings`` — ``RMCnnn text`` per warning or note the report must contain;
-* ``assumes`` — text each verdict's ``assumes:`` must contain, one piece a line.
+* ``assumes`` — text each verdict's ``assumes:`` must contain, one piece a line;
+* ``error`` — text the last step of the ``no_runtime_error`` counterexample must contain
+  (the error it stops with).
 
 Besides, a barrier removed from a case that needs it must break the property it keeps.
 """
@@ -56,6 +58,10 @@ def test_task_backup_case(case):
     assert code == (1 if "VIOLATED" in expected.values() else 0)
     for piece in lines(case / "waiting"):
         assert piece in (found["no_deadlock"]["reason"] or ""), found["no_deadlock"]["reason"]
+    for piece in lines(case / "error"):
+        trace = found["no_runtime_error"]["trace"]
+        last = json.dumps((trace["cycle"] or trace["prefix"])[-1])
+        assert piece in last, last
     for piece in lines(case / "assumes"):
         for name, p in found.items():
             assert any(piece in line for line in p.get("assumes") or ()), (name, p.get("assumes"))
@@ -85,7 +91,8 @@ def test_a_barrier_with_a_task_name_no_task_has_is_an_error(tmp_path):
     assert "ERR_TASKNAME" in json.dumps(steps)
 
 
-@pytest.mark.parametrize("name", ["alone_output_written", "system_output"])
+@pytest.mark.parametrize("name", ["alone_output_written", "system_output", "alone_polling_while",
+                                  "alone_polling_goto"])
 def test_outputs_set_outside_same_on_both_engines(name):
     """Outputs set outside the loaded code are free inputs of both engines alike."""
     case = CASES / name

@@ -188,7 +188,7 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
         if chosen is not None and chosen.also_written_by is not None:
             yield Assumption(OTHER_WRITER, data.name,
                              f"PERS {data.name} is written by the loaded code and by "
-                             f"{chosen.also_written_by}; its reads in WaitUntil conditions "
+                             f"{chosen.also_written_by}; its reads in WaitUntil and loop conditions "
                              f"take the stored value or {chosen.describe()}, other reads the "
                              f"stored value ({_where(data.span)})")
             continue

@@ -164,7 +164,7 @@ class ExpressionCompiler:
         self.constant_only = constant_only  # CONST/VAR initialisers: no variables, no calls
         self.routine = routine
         self.io_reader = None               # callable noting that the code reads signals
-        self.in_wait = False                # compiling a WaitUntil condition (_outside_read)
+        self.in_wait = False                # compiling a WaitUntil or polling condition (_outside_read)
 
     def note_io_read(self) -> None:
         if self.io_reader is not None:
