@@ -222,10 +222,17 @@ class ExpressionCompiler:
         if outside.also_written_by is not None:
             if not self.in_wait:
                 return compiled          # elsewhere the value the loaded code stored
-            # a wait: the value the loaded code stored, or one the other writer wrote
+            # a wait or a poll: the value the loaded code stored, or one the other writer
+            # wrote just before; a value it wrote stays, so the code after the wait or in
+            # the loop's body reads what the condition saw
+            ref_fn = self.reference(expr, "read")[0]
+
             def either(m):
                 value = stored(m)
-                return m.choose(name, domain if value in domain else (value,) + domain)
+                taken = m.choose(name, domain if value in domain else (value,) + domain)
+                if taken != value:
+                    m.write_ref(ref_fn(m), taken)
+                return taken
             return Compiled(either, compiled.type)
 
         def chosen(m):
