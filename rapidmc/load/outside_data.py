@@ -33,8 +33,9 @@ other writer's protocol may never produce together with the rest of the data.
 A read of a whole record (an argument, an assignment from it) chooses each of its
 components that has several values, together, so the record passed on holds what
 reads of its components could give (``ExpressionCompiler._outside_record``); a
-whole array reads the stored value (choosing each element would multiply the
-successors by the elements' domains; a gap, not seen in the surveys), and so do
+whole array chooses each element's components likewise when their combinations are
+at most ``WHOLE_ARRAY_CHOICES`` (64), else it reads the stored value (choosing
+would multiply the successors by the elements' domains), and so do
 the properties' atoms: data an atom may name keeps its initial value (the
 assumption says so).  ``check --fixed-outside-data`` keeps every such data object
 at its initial value, as before.  The verdicts name each object and its

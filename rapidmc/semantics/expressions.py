@@ -27,6 +27,10 @@ from .scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, Symbol
 from .types import (ATOMIC, BOOL, DNUM, NUM, ORIENT, POS, RECORD, SEMI_VALUE, STRING, AnyType,
                     ArrayType, RapidType, is_numeric, same_type)
 
+# a whole array of data written from outside is chosen element by element up to this many
+# combinations of values (ExpressionCompiler._outside_array); a larger one keeps its value
+WHOLE_ARRAY_CHOICES = 64
+
 NOT_CONSTANT = object()
 
 
@@ -194,8 +198,10 @@ class ExpressionCompiler:
         the outside may write between any two (merged steps expand read by read).  A read
         of a whole record (``target``, ``rec.sub``) takes its components' choices together
         (``_outside_record``); a whole array keeps the stored value."""
-        if not isinstance(compiled.type, RapidType) or compiled.type.kind not in (ATOMIC, RECORD):
-            return compiled              # a whole array: the stored value
+        whole_array = isinstance(compiled.type, ArrayType)
+        if not whole_array and (not isinstance(compiled.type, RapidType) or
+                                compiled.type.kind not in (ATOMIC, RECORD)):
+            return compiled
         path, indexed, node = [], False, expr
         while isinstance(node, (ast.Component, ast.Index)):
             if isinstance(node, ast.Component):
@@ -211,6 +217,9 @@ class ExpressionCompiler:
         outside = self.linker.outside_data.get(symbol.slot)
         if outside is None:
             return compiled
+        if whole_array:
+            return self._outside_array(compiled, outside, tuple(reversed(path)), symbol.name +
+                                       "".join("." + part.lower() for part in reversed(path)))
         domain = outside.domain(tuple(reversed(path)))
         if domain is None and compiled.type.kind != RECORD:
             return compiled
@@ -268,6 +277,42 @@ class ExpressionCompiler:
                 value = replace_at(value, positions, m.choose(leaf_name, domain))
             return value
         return Compiled(chosen, compiled.type)
+
+    @staticmethod
+    def _outside_array(compiled: Compiled, outside, path: tuple, name: str) -> Compiled:
+        """A whole array of outside data read at once (an argument, an assignment from it):
+        each element's value components of several values are chosen, as reads of each
+        element would choose them, when their combinations are at most
+        ``WHOLE_ARRAY_CHOICES``; a larger array keeps the stored value (the assumption
+        says so: ``OutsideData.describe``).  Data the loaded code writes too keeps it."""
+        array_type = compiled.type
+        if outside.also_written_by is not None or any(d is None for d in array_type.dims):
+            return compiled
+        leaves = []
+        for leaf_path, domain in outside.domains.items():
+            if leaf_path[:len(path)] != path or len(domain) < 2:
+                continue
+            positions = _component_positions(array_type.element, leaf_path[len(path):])
+            if positions is not None:
+                leaves.append((positions, "".join("." + p.lower()
+                                                  for p in leaf_path[len(path):]), domain))
+        elements = list(itertools.product(*(range(d) for d in array_type.dims)))
+        combinations = 1
+        for _, _, domain in leaves:
+            combinations *= len(domain) ** len(elements)
+        if not leaves or combinations > WHOLE_ARRAY_CHOICES:
+            return compiled
+        stored = compiled.fn
+        choices = [(element + positions,
+                    f"{name}{{{','.join(str(i + 1) for i in element)}}}{leaf_name}", domain)
+                   for element in elements for positions, leaf_name, domain in leaves]
+
+        def chosen(m):
+            value = stored(m)
+            for positions, leaf_name, domain in choices:
+                value = replace_at(value, positions, m.choose(leaf_name, domain))
+            return value
+        return Compiled(chosen, array_type)
 
     def condition(self, expr: ast.Expr) -> Compiled:
         compiled = self.value(expr)
