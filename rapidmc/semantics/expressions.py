@@ -157,6 +157,21 @@ def _component_positions(record_type, names: tuple) -> Optional[tuple]:
     return tuple(positions)
 
 
+def _varying_leaves(value_type, outside, path: tuple) -> list:
+    """(positions in a value of ``value_type``, ``.component`` names, domain) of each value
+    component under ``path`` of outside data (``load.outside_data``) whose reads may take
+    several values."""
+    leaves = []
+    for leaf_path, domain in outside.domains.items():
+        if leaf_path[:len(path)] != path or len(domain) < 2:
+            continue
+        positions = _component_positions(value_type, leaf_path[len(path):])
+        if positions is not None:
+            leaves.append((positions, "".join("." + p.lower() for p in leaf_path[len(path):]),
+                           domain))
+    return leaves
+
+
 class ExpressionCompiler:
     """Compiles expressions in one scope (a routine body, a data initialiser, an atom)."""
 
@@ -256,15 +271,8 @@ class ExpressionCompiler:
         the record and its components tell the same story (the record passed on or copied
         may hold any value its components may take).  Components of one value keep it; the
         choices are as many as those the components' own reads make together."""
-        leaves = []
-        for leaf_path, domain in outside.domains.items():
-            if leaf_path[:len(path)] != path or len(domain) < 2:
-                continue
-            positions = _component_positions(compiled.type, leaf_path[len(path):])
-            if positions is not None:
-                leaves.append((positions, name + "".join("." + p.lower()
-                                                         for p in leaf_path[len(path):]),
-                               domain))
+        leaves = [(positions, name + suffix, domain) for positions, suffix, domain
+                  in _varying_leaves(compiled.type, outside, path)]
         if not leaves or outside.also_written_by is not None:
             # written by the loaded code too: elsewhere than a wait the stored value, and a
             # wait's condition reads components, not whole records
@@ -288,14 +296,7 @@ class ExpressionCompiler:
         array_type = compiled.type
         if outside.also_written_by is not None or any(d is None for d in array_type.dims):
             return compiled
-        leaves = []
-        for leaf_path, domain in outside.domains.items():
-            if leaf_path[:len(path)] != path or len(domain) < 2:
-                continue
-            positions = _component_positions(array_type.element, leaf_path[len(path):])
-            if positions is not None:
-                leaves.append((positions, "".join("." + p.lower()
-                                                  for p in leaf_path[len(path):]), domain))
+        leaves = _varying_leaves(array_type.element, outside, path)
         elements = list(itertools.product(*(range(d) for d in array_type.dims)))
         combinations = 1
         for _, _, domain in leaves:
