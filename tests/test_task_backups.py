@@ -6,7 +6,10 @@ SYSPAR, RAPID/TASKn), checked from the repository root:
 * ``props.ltl`` — properties (optional); ``args`` — extra options (optional);
 * ``expected`` — ``NAME VERDICT`` per property, the built-in checks included;
 * ``waiting`` — text the reason of a violated ``no_deadlock`` must contain, one piece a line;
-* ``warnings`` — ``RMCnnn text`` per warning or note the report must contain.
+* ``warnings`` — ``RMCnnn text`` per warning or note the report must contain;
+* ``assumes`` — text each verdict's ``assumes:`` must contain, one piece a line;
+* ``error`` — text the last step of the ``no_runtime_error`` counterexample must contain
+  (the error it stops with).
 
 Besides, a barrier removed from a case that needs it must break the property it keeps.
 """
@@ -55,6 +58,13 @@ def test_task_backup_case(case):
     assert code == (1 if "VIOLATED" in expected.values() else 0)
     for piece in lines(case / "waiting"):
         assert piece in (found["no_deadlock"]["reason"] or ""), found["no_deadlock"]["reason"]
+    for piece in lines(case / "error"):
+        trace = found["no_runtime_error"]["trace"]
+        last = json.dumps((trace["cycle"] or trace["prefix"])[-1])
+        assert piece in last, last
+    for piece in lines(case / "assumes"):
+        for name, p in found.items():
+            assert any(piece in line for line in p.get("assumes") or ()), (name, p.get("assumes"))
     for line in lines(case / "warnings"):
         code_text, _, text = line.partition(" ")
         assert any(code_text in row and text in row for row in err.splitlines()), err
@@ -79,3 +89,21 @@ def test_a_barrier_with_a_task_name_no_task_has_is_an_error(tmp_path):
     assert found["no_runtime_error"]["verdict"] == "VIOLATED"
     steps = found["no_runtime_error"]["trace"]
     assert "ERR_TASKNAME" in json.dumps(steps)
+
+
+@pytest.mark.parametrize("name", ["alone_output_written", "system_output", "alone_polling_while",
+                                  "alone_polling_goto", "alone_wait_then_read"])
+def test_outputs_set_outside_same_on_both_engines(name):
+    """Outputs set outside the loaded code are free inputs of both engines alike."""
+    case = CASES / name
+    reports = {}
+    for engine in ("native", "python"):
+        argv = ["check", str(case / "backup"), "--format", "json", "--quiet", "--engine", engine]
+        argv += [arg for line in lines(case / "args") for arg in shlex.split(line)]
+        out = io.StringIO()
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
+            main(argv)
+        reports[engine] = [(p["name"], p["verdict"], p["stats"]["model_states"],
+                            p["stats"]["transitions"], len(p.get("trace") or ()))
+                           for p in json.loads(out.getvalue())["properties"]]
+    assert reports["native"] == reports["python"]

@@ -108,7 +108,8 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--backend", choices=BACKENDS, default=None,
                         help="LTL translator (default: spot when installed, else builtin)")
     parser.add_argument("--fixed-outside-data", action="store_true",
-                        help="PERS data no loaded code writes keeps its initial value (default: "
+                        help="PERS data no loaded code writes keeps its initial value, and so do "
+                             "outputs only the controller or a task not loaded sets (default: "
                              "each read takes any value of its domain, as another task, an "
                              "encrypted module or a PC may write it)")
     parser.add_argument("--no-fairness", action="store_true",

@@ -15,7 +15,10 @@ loaded module says for sure:
   module, a PC): the reads of its value components take the values of a finite
   domain (``load.outside_data``), or it keeps its initial value with
   ``--fixed-outside-data``; the verdict names it and its values either way
-  (``load.shared_data.data_uses`` says what each task reads and writes).
+  (``load.shared_data.data_uses`` says what each task reads and writes);
+* **digital outputs no loaded code sets**: read back, they take either value
+  (``load.outside_outputs``: a system output, a cross-connection, a task not
+  loaded).
 
 ``assumptions(program)`` lists them once; ``touched(assumption list, result)``
 keeps those a counterexample executes a statement of (the names each executed
@@ -64,6 +67,10 @@ def assumptions(program: Program) -> tuple[Assumption, ...]:
     found = list(_stubs(program, stub_files))
     found += [_reading(warning) for warning in fixed_readings(program)]
     found += list(_unwritten_persistents(program, stub_files))
+    found += [Assumption(OTHER_WRITER, signal.name,
+                         f"output {signal.name} is set outside the loaded code, by "
+                         f"{signal.outside}; its reads take 0 or 1")
+              for signal in program.signals if signal.outside]
     return tuple(found)
 
 
@@ -181,7 +188,7 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
         if chosen is not None and chosen.also_written_by is not None:
             yield Assumption(OTHER_WRITER, data.name,
                              f"PERS {data.name} is written by the loaded code and by "
-                             f"{chosen.also_written_by}; its reads in WaitUntil conditions "
+                             f"{chosen.also_written_by}; its reads in WaitUntil and loop conditions "
                              f"take the stored value or {chosen.describe()}, other reads the "
                              f"stored value ({_where(data.span)})")
             continue

@@ -129,7 +129,9 @@ def unset_output_reads(program: Program) -> list:
                     reads.append((names[0], node))
             else:
                 passed.update(names)
-    outputs = {signal.key for signal in program.signals if signal.kind.endswith("O")}
+    # (an output read as set outside the loaded code takes both values: load.outside_outputs)
+    outputs = {signal.key for signal in program.signals
+               if signal.kind.endswith("O") and not signal.outside}
     return [call for name, call in reads if name in outputs and name not in passed]
 
 

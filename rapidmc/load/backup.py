@@ -25,7 +25,8 @@ from ..diagnostics import (EXIT_OK, FILE_NOT_FOUND, NO_PROGRAM, PROGRAM_FILE, TA
                            Diagnostic, SourceCache, UserError, error)
 from .config_file import instances
 from .encrypted import interface_module, is_encrypted, only_encrypted_note, skipped_note
-from .other_writers import other_writers
+from .other_writers import other_writers, task_output_writers
+from .outside_outputs import controller_writers
 from .task_config import BackupTask, config_file, read_tasks, task_names
 from ..semantics.library.configuration import Configuration
 from .configuration import read_configuration
@@ -203,6 +204,8 @@ class ProgramFiles:
     # upper-case PERS name -> a party not loaded that may write it (load.other_writers)
     outside_writers: Optional[dict] = None
     task_names: tuple = ()              # every task of the backups (their taskid T_ROB1Id ...)
+    # upper-case output name -> who sets it outside the loaded code (load.outside_outputs)
+    output_writers: Optional[dict] = None
 
 
 def resolve_program_files(args) -> ProgramFiles:
@@ -215,6 +218,7 @@ def resolve_program_files(args) -> ProgramFiles:
     main_task, main_entry, notes, alone = None, "main", [], None
     encrypted: dict = {}
     writers: dict = {}
+    output_writers: dict = {}
     configuration = None
     motion_tasks: list[str] = []
     names: list[str] = []
@@ -248,6 +252,8 @@ def resolve_program_files(args) -> ProgramFiles:
         for key, who in outside_writers.items():
             writers.setdefault(key, who)
         notes.extend(unparsed)
+        for key, who in task_output_writers(path, [t.name for t in chosen]).items():
+            output_writers.setdefault(key, who)
         if becomes_main:
             main_task, main_entry = chosen[0].name, chosen[0].entry
             paths.extend(task_modules(path, chosen[0]))
@@ -267,9 +273,12 @@ def resolve_program_files(args) -> ProgramFiles:
         tasks.append((f"task {number + 1} ({Path(files[0]).stem})" if files else "", files,
                       "main"))
     signals = [signal for eio_path in eio_paths for signal in read_eio(eio_path)]
+    for eio_path in eio_paths:
+        for key, who in controller_writers(eio_path).items():
+            output_writers.setdefault(key, who)
     return ProgramFiles(paths, tasks, signals, main_task, main_entry, tuple(notes), alone,
                         configuration, encrypted, tuple(motion_tasks), writers,
-                        tuple(dict.fromkeys(names)))
+                        tuple(dict.fromkeys(names)), output_writers)
 
 
 def _runnable_tasks(path: Path, tasks: list[BackupTask]) -> tuple[list[BackupTask], list]:
@@ -345,7 +354,8 @@ def link_options(files: ProgramFiles) -> dict:
     return {"configured_signals": files.signals, "main_task_name": files.main_task,
             "all_tasks_loaded": files.main_task is not None and files.alone is None,
             "configuration": files.configuration, "motion_tasks": files.motion_tasks,
-            "outside_writers": files.outside_writers or {}, "task_names": files.task_names}
+            "outside_writers": files.outside_writers or {}, "task_names": files.task_names,
+            "output_writers": files.output_writers or {}}
 
 
 def load_tasks(files: ProgramFiles) -> list:

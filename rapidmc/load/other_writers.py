@@ -82,6 +82,24 @@ def other_writers(path: Path, loaded: Iterable[str]) -> tuple[dict, list]:
     return found, notes
 
 
+def task_output_writers(path: Path, loaded: Iterable[str]) -> dict:
+    """Upper-case signal name -> the task not loaded whose code may set it (passes it to a
+    call other than a reading one: ``outside_outputs.written_signals``)."""
+    from .backup import backup_tasks, task_modules_readable, task_modules
+    from .outside_outputs import written_signals
+    loaded = set(loaded)
+    found: dict = {}
+    for task in backup_tasks(path):
+        if task.name in loaded or not task_modules_readable(task):
+            continue
+        programs, _ = _parsed_modules(task_modules(path, task))
+        trees = [routine for program in programs for module in program.modules
+                 for routine in module.routines]
+        for key in sorted(written_signals(trees) or ()):
+            found.setdefault(key, f"task {task.name} (not loaded)")
+    return found
+
+
 def _parsed_modules(modules: list) -> tuple[list, list]:
     """The task's modules parsed (all at once, else one by one), and the modules that
     cannot be parsed."""

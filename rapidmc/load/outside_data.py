@@ -22,16 +22,20 @@ element type (arrays), for the value types only:
 
 PERS data the loaded code writes too, when a party left out may also write it
 (``other_writers``: a task not loaded, a task's encrypted modules), is chosen
-as well, where a wait reads it: a WaitUntil condition takes the stored value or
-any value of the same domain, so the wait may end; every other read takes the
+as well, where a wait reads it: a WaitUntil condition, and the condition of a
+polling loop (WHILE; IF ... GOTO back: ``statements.branch``), takes the stored
+value or any value of the same domain, so the wait may end, and stores a value
+other than the stored one (the other party wrote it just before: the code after the
+wait reads what the wait saw); every other read takes the
 stored value (the loaded code's own protocol), so no branch runs on values the
 other writer's protocol may never produce together with the rest of the data.
 
 A read of a whole record (an argument, an assignment from it) chooses each of its
 components that has several values, together, so the record passed on holds what
 reads of its components could give (``ExpressionCompiler._outside_record``); a
-whole array reads the stored value (choosing each element would multiply the
-successors by the elements' domains; a gap, not seen in the surveys), and so do
+whole array chooses each element's components likewise when their combinations are
+at most ``WHOLE_ARRAY_CHOICES`` (64), else it reads the stored value (choosing
+would multiply the successors by the elements' domains), and so do
 the properties' atoms: data an atom may name keeps its initial value (the
 assumption says so).  ``check --fixed-outside-data`` keeps every such data object
 at its initial value, as before.  The verdicts name each object and its

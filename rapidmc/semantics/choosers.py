@@ -100,9 +100,10 @@ class CheckConfig:
         free = []
         lazy = {}
         for signal in program.signals:
-            if signal.driven or not signal.kind.endswith("I"):
+            # an input, or an output no loaded code sets (load.outside_outputs)
+            if signal.driven or not (signal.kind.endswith("I") or signal.outside):
                 continue
-            if signal.kind == "DI":
+            if signal.kind in ("DI", "DO"):
                 domain = (0.0, 1.0)
             elif signal.key in domains:
                 domain = tuple(dict.fromkeys(signal_value(signal.kind, value)

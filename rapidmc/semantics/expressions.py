@@ -27,6 +27,10 @@ from .scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, Symbol
 from .types import (ATOMIC, BOOL, DNUM, NUM, ORIENT, POS, RECORD, SEMI_VALUE, STRING, AnyType,
                     ArrayType, RapidType, is_numeric, same_type)
 
+# a whole array of data written from outside is chosen element by element up to this many
+# combinations of values (ExpressionCompiler._outside_array); a larger one keeps its value
+WHOLE_ARRAY_CHOICES = 64
+
 NOT_CONSTANT = object()
 
 
@@ -153,6 +157,21 @@ def _component_positions(record_type, names: tuple) -> Optional[tuple]:
     return tuple(positions)
 
 
+def _varying_leaves(value_type, outside, path: tuple) -> list:
+    """(positions in a value of ``value_type``, ``.component`` names, domain) of each value
+    component under ``path`` of outside data (``load.outside_data``) whose reads may take
+    several values."""
+    leaves = []
+    for leaf_path, domain in outside.domains.items():
+        if leaf_path[:len(path)] != path or len(domain) < 2:
+            continue
+        positions = _component_positions(value_type, leaf_path[len(path):])
+        if positions is not None:
+            leaves.append((positions, "".join("." + p.lower() for p in leaf_path[len(path):]),
+                           domain))
+    return leaves
+
+
 class ExpressionCompiler:
     """Compiles expressions in one scope (a routine body, a data initialiser, an atom)."""
 
@@ -164,7 +183,7 @@ class ExpressionCompiler:
         self.constant_only = constant_only  # CONST/VAR initialisers: no variables, no calls
         self.routine = routine
         self.io_reader = None               # callable noting that the code reads signals
-        self.in_wait = False                # compiling a WaitUntil condition (_outside_read)
+        self.in_wait = False                # compiling a WaitUntil or polling condition (_outside_read)
 
     def note_io_read(self) -> None:
         if self.io_reader is not None:
@@ -194,8 +213,10 @@ class ExpressionCompiler:
         the outside may write between any two (merged steps expand read by read).  A read
         of a whole record (``target``, ``rec.sub``) takes its components' choices together
         (``_outside_record``); a whole array keeps the stored value."""
-        if not isinstance(compiled.type, RapidType) or compiled.type.kind not in (ATOMIC, RECORD):
-            return compiled              # a whole array: the stored value
+        whole_array = isinstance(compiled.type, ArrayType)
+        if not whole_array and (not isinstance(compiled.type, RapidType) or
+                                compiled.type.kind not in (ATOMIC, RECORD)):
+            return compiled
         path, indexed, node = [], False, expr
         while isinstance(node, (ast.Component, ast.Index)):
             if isinstance(node, ast.Component):
@@ -211,6 +232,9 @@ class ExpressionCompiler:
         outside = self.linker.outside_data.get(symbol.slot)
         if outside is None:
             return compiled
+        if whole_array:
+            return self._outside_array(compiled, outside, tuple(reversed(path)), symbol.name +
+                                       "".join("." + part.lower() for part in reversed(path)))
         domain = outside.domain(tuple(reversed(path)))
         if domain is None and compiled.type.kind != RECORD:
             return compiled
@@ -222,10 +246,17 @@ class ExpressionCompiler:
         if outside.also_written_by is not None:
             if not self.in_wait:
                 return compiled          # elsewhere the value the loaded code stored
-            # a wait: the value the loaded code stored, or one the other writer wrote
+            # a wait or a poll: the value the loaded code stored, or one the other writer
+            # wrote just before; a value it wrote stays, so the code after the wait or in
+            # the loop's body reads what the condition saw
+            ref_fn = self.reference(expr, "read")[0]
+
             def either(m):
                 value = stored(m)
-                return m.choose(name, domain if value in domain else (value,) + domain)
+                taken = m.choose(name, domain if value in domain else (value,) + domain)
+                if taken != value:
+                    m.write_ref(ref_fn(m), taken)
+                return taken
             return Compiled(either, compiled.type)
 
         def chosen(m):
@@ -240,15 +271,8 @@ class ExpressionCompiler:
         the record and its components tell the same story (the record passed on or copied
         may hold any value its components may take).  Components of one value keep it; the
         choices are as many as those the components' own reads make together."""
-        leaves = []
-        for leaf_path, domain in outside.domains.items():
-            if leaf_path[:len(path)] != path or len(domain) < 2:
-                continue
-            positions = _component_positions(compiled.type, leaf_path[len(path):])
-            if positions is not None:
-                leaves.append((positions, name + "".join("." + p.lower()
-                                                         for p in leaf_path[len(path):]),
-                               domain))
+        leaves = [(positions, name + suffix, domain) for positions, suffix, domain
+                  in _varying_leaves(compiled.type, outside, path)]
         if not leaves or outside.also_written_by is not None:
             # written by the loaded code too: elsewhere than a wait the stored value, and a
             # wait's condition reads components, not whole records
@@ -261,6 +285,35 @@ class ExpressionCompiler:
                 value = replace_at(value, positions, m.choose(leaf_name, domain))
             return value
         return Compiled(chosen, compiled.type)
+
+    @staticmethod
+    def _outside_array(compiled: Compiled, outside, path: tuple, name: str) -> Compiled:
+        """A whole array of outside data read at once (an argument, an assignment from it):
+        each element's value components of several values are chosen, as reads of each
+        element would choose them, when their combinations are at most
+        ``WHOLE_ARRAY_CHOICES``; a larger array keeps the stored value (the assumption
+        says so: ``OutsideData.describe``).  Data the loaded code writes too keeps it."""
+        array_type = compiled.type
+        if outside.also_written_by is not None or any(d is None for d in array_type.dims):
+            return compiled
+        leaves = _varying_leaves(array_type.element, outside, path)
+        elements = list(itertools.product(*(range(d) for d in array_type.dims)))
+        combinations = 1
+        for _, _, domain in leaves:
+            combinations *= len(domain) ** len(elements)
+        if not leaves or combinations > WHOLE_ARRAY_CHOICES:
+            return compiled
+        stored = compiled.fn
+        choices = [(element + positions,
+                    f"{name}{{{','.join(str(i + 1) for i in element)}}}{leaf_name}", domain)
+                   for element in elements for positions, leaf_name, domain in leaves]
+
+        def chosen(m):
+            value = stored(m)
+            for positions, leaf_name, domain in choices:
+                value = replace_at(value, positions, m.choose(leaf_name, domain))
+            return value
+        return Compiled(chosen, array_type)
 
     def condition(self, expr: ast.Expr) -> Compiled:
         compiled = self.value(expr)

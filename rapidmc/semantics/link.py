@@ -281,6 +281,10 @@ class Linker:
         # PERS written from outside the loaded code, read as choices (load.outside_data)
         finder = self.options.get("outside_data")
         self.outside_data = finder(self) if finder is not None and not self.errors else {}
+        # outputs no loaded code sets, read like free inputs (load.outside_outputs)
+        finder = self.options.get("outside_outputs")
+        for index, who in (finder(self) if finder is not None and not self.errors else {}).items():
+            self.signals[index].outside = who
         # the names GetTaskName answers: a backup's (T_ROB1 ...), else T_ROB1 for the main task
         self.task_names = (self.options.get("main_task_name") or "T_ROB1",) + tuple(
             task.name for _, task in task_namespaces)

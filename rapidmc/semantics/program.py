@@ -120,6 +120,8 @@ class Signal:
     kind: str                     # DI, DO, AI, AO, GI, GO
     driven: bool = False          # an environment module drives it (inputs only)
     span: Optional[Span] = None
+    # an output no loaded code sets, read like a free input: who sets it (load.outside_outputs)
+    outside: Optional[str] = None
 
 
 @dataclass

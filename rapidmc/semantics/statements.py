@@ -390,7 +390,8 @@ class RoutineCompiler:
     def _If(self, statement: ast.If, follow: Label) -> None:
         for branch in statement.branches:
             otherwise = Label()
-            self.branch(branch.condition, branch.span, otherwise)
+            self.branch(branch.condition, branch.span, otherwise,
+                        polls=self._jumps_back(branch.body[-1] if branch.body else None))
             self.block(branch.body, follow)
             self.place(otherwise)
         if statement.else_body is not None:
@@ -399,18 +400,27 @@ class RoutineCompiler:
             self.end_block(follow)
 
     def _CompactIf(self, statement: ast.CompactIf, follow: Label) -> None:
-        self.branch(statement.condition, statement.span, follow)
+        self.branch(statement.condition, statement.span, follow,
+                    polls=self._jumps_back(statement.statement))
         self.statement(statement.statement, follow)
         self.end_block(follow)
 
     def _While(self, statement: ast.While, follow: Label) -> None:
         head = self.here()
-        self.branch(statement.condition, statement.span, follow)
+        self.branch(statement.condition, statement.span, follow, polls=True)
         self.block(statement.body, head)
 
-    def branch(self, condition_expr, span, otherwise: Label) -> None:
-        """Emit a condition test; what is emitted next runs when it holds."""
-        condition = self.expressions().condition(condition_expr)
+    def _jumps_back(self, statement) -> bool:
+        """Whether ``statement`` is a GOTO to a label placed before it (a polling loop)."""
+        return isinstance(statement, ast.Goto) and statement.label.key in self.labels
+
+    def branch(self, condition_expr, span, otherwise: Label, polls: bool = False) -> None:
+        """Emit a condition test; what is emitted next runs when it holds.  ``polls``: the
+        condition decides whether a loop goes round again (a WHILE, an IF that jumps back),
+        so it reads data another party writes as a WaitUntil condition does (issue 28)."""
+        compiler = self.expressions()
+        compiler.in_wait = polls
+        condition = compiler.condition(condition_expr)
         test = self.emit(Branch(span, condition.fn, condition_expr))
         if condition.source is not None:
             test.fusion = condition

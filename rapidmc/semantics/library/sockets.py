@@ -17,7 +17,7 @@ bytes not read yet (``\\ReadNoOfBytes`` reads a stream, not messages).
 from __future__ import annotations
 
 from ...diagnostics import INPUT_EXHAUSTED, UNSUPPORTED, error
-from .. import rawbytes
+from .. import rawbytes, values
 from ..errors import RapidError
 from ..expressions import Compiled
 from ..instructions import Action
@@ -100,6 +100,16 @@ def _require(value, wanted: float, what: str) -> None:
         if wanted == SOCKET_CONNECTED:
             raise RapidError("ERR_SOCK_CLOSED", f"{what}: the socket is not connected")
         raise RapidError("ERR_SOCK_CLOSED", f"{what}: the socket is in the wrong state")
+
+
+def _readable_count(count, most: int, instruction: str) -> None:
+    """``\\ReadNoOfBytes`` asks for 1 up to the size of the data it fills: 1,024 bytes of a
+    rawbytes, 80 characters of a string.  More can never be stored, so the instruction fails
+    before it waits (a count unpacked from a message's header: 10^18 bytes would otherwise
+    gather messages in one step without end)."""
+    if count is not None and (count != int(count) or not 1 <= count <= most):
+        raise RapidError("ERR_ARGVALERR", f"{instruction}: ReadNoOfBytes {values.format_num(count)} "
+                         f"is outside 1..{most}")
 
 
 def _optional(value):
@@ -263,6 +273,7 @@ def _socket_receive(calls, compiler, call, entry):
         value = m.read_ref(ref)
         _require(value, SOCKET_CONNECTED, "SocketReceive")
         pending, limit, time = value[1], _optional(wanted(m)), _optional(seconds(m))
+        _readable_count(limit, rawbytes.MAX_BYTES if is_raw else values.STRING_MAX, "SocketReceive")
         if is_raw:
             while not pending or (limit is not None and len(pending) < limit):
                 more = rawbytes.from_text(_receive_message(m, call, time))
@@ -310,7 +321,9 @@ def _socket_receive_from(calls, compiler, call, entry):
 
     def receive(m):
         _require(m.read_ref(socket(m)), SOCKET_BOUND, "SocketReceiveFrom")
-        text, limit = _receive_message(m, call, _optional(seconds(m))), _optional(wanted(m))
+        limit = _optional(wanted(m))
+        _readable_count(limit, rawbytes.MAX_BYTES if is_raw else values.STRING_MAX, "SocketReceiveFrom")
+        text = _receive_message(m, call, _optional(seconds(m)))
         if is_raw:
             data = rawbytes.from_text(text)
             data = data if limit is None else data[:int(limit)]

@@ -1,0 +1,109 @@
+"""Digital outputs written outside the loaded code, read like free inputs (issue 28).
+
+An output that the loaded code reads back (``DOutput``, ``WaitDO``, an
+interrupt on it) and never sets may be set by something rapidmc does not
+load: the controller itself (a system output of SYSPAR/EIO.cfg's
+``SYSSIG_OUT``: ``TaskExecuting`` of another task, motors on, cycle on), a
+cross-connection (``EIO_CROSS -Res``), or a task of the backup checked apart
+(``--task``) whose code sets it.  Keeping its first value made a communication
+task that waits with ``WaitUntil DOutput(doRob_1Excuting) = 1`` for the robot
+task to run wait forever.  Such an output is read as PERS data written from
+outside is (``outside_data``): each read may give either value, as a free
+digital input's does (``semantics.choosers.CheckConfig``), and the verdicts name
+it and its writer under ``assumes:``.  An output no such writer is known for
+(module files without a backup, or nothing in the backup sets it) keeps its
+stored value, as one a property's atom names does (atoms read stored values).
+
+An output counts as set by the loaded code when any call of it (every task,
+the environment model) passes it by name to anything but a reading routine
+(``OUTPUT_READERS``), or names it in a string given to ``AliasIO``; an
+``AliasIO`` whose signal is computed at run time may connect any output, so
+then every output keeps the stored reading.  Group and analog outputs keep it
+too: their values have no finite domain here (a gap the verdict's assumption
+names).  ``check --fixed-outside-data`` keeps every output stored, as before.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Iterable, Optional
+
+from .. import ast
+from ..semantics.configured_signals import walk_routine
+from ..semantics.library.arguments import argument_expression
+from .config_file import instances
+
+# routines that only read the signal they are given
+OUTPUT_READERS = frozenset({
+    "DOUTPUT", "GOUTPUT", "GOUTPUTDNUM", "AOUTPUT", "WAITDO", "WAITGO", "WAITAO",
+    "ISIGNALDO", "ISIGNALGO", "ISIGNALAO", "VALIDIO", "GETSIGNALORIGIN",
+    "DINPUT", "TESTDI", "GINPUTDNUM", "WAITDI", "WAITGI", "WAITAI",
+    "ISIGNALDI", "ISIGNALGI", "ISIGNALAI"})
+
+
+def written_signals(routines: Iterable) -> Optional[set]:
+    """Upper-case names of the signals the routines' code (AST routines) may set: passed
+    by name to a call other than a reading one, or named by a string given to AliasIO.
+    None: an AliasIO names its signal at run time, so any signal may be set."""
+    written: set = set()
+    for routine in routines:
+        for node in walk_routine(routine):
+            if isinstance(node, ast.LateBindingCall):
+                written.update(a.value.name.key for a in node.args
+                               if isinstance(a.value, ast.NameRef))
+            if not isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
+                continue
+            if node.name.key == "ALIASIO":
+                source = argument_expression(node, "FromSignal", 0)
+                if isinstance(source, ast.StringLiteral):
+                    written.add(source.value.upper())
+                elif not isinstance(source, ast.NameRef):
+                    return None
+            if node.name.key in OUTPUT_READERS:
+                continue
+            written.update(a.value.name.key for a in node.args
+                           if isinstance(a.value, ast.NameRef))
+    return written
+
+
+def controller_writers(eio_path: Optional[str]) -> dict:
+    """Upper-case output name -> who sets it, from an EIO.cfg: system outputs (SYSSIG_OUT)
+    and the results of cross-connections (EIO_CROSS)."""
+    if not eio_path or not Path(eio_path).is_file():
+        return {}
+    text = Path(eio_path).read_bytes().decode("latin-1")
+    found: dict = {}
+    for _, attributes in instances(text, ("SYSSIG_OUT",)):
+        name, status = attributes.get("SIGNAL"), attributes.get("STATUS") or "?"
+        if name:
+            of = [attributes[a] for a in ("ARG1", "ARG2") if attributes.get(a)]
+            found.setdefault(name.upper(), f"the controller (system output {status}"
+                             f"{' of ' + ', '.join(of) if of else ''})")
+    for _, attributes in instances(text, ("EIO_CROSS",)):
+        name = attributes.get("RES")
+        if name:
+            found.setdefault(name.upper(), "a cross-connection of the I/O configuration")
+    return found
+
+
+def outside_outputs(linker) -> dict:
+    """Signal index -> who writes it, for each digital output some loaded code reads and
+    no loaded code (nor the environment model) sets (``linker``: routines prepared)."""
+    from ..semantics.program import ENVIRONMENT_NAMESPACE
+    trees = [routine.ast for routine in linker.routines if routine.ast is not None]
+    written = written_signals(trees)
+    if written is None:
+        return {}
+    read = named_signals(routine.ast for routine in linker.routines
+                         if routine.ast is not None and routine.namespace != ENVIRONMENT_NAMESPACE)
+    writers = linker.options.get("output_writers") or {}
+    observed = linker.options.get("observed_names", frozenset())
+    return {signal.index: writers[signal.key] for signal in linker.signals
+            if signal.kind == "DO" and signal.key in writers and signal.key in read
+            and signal.key not in written and signal.key not in observed}
+
+
+def named_signals(routines: Iterable) -> set:
+    """Upper-case names the routines' code refers to (a signal among them is read there:
+    the code cannot set one but by a call, which ``written_signals`` counts)."""
+    return {node.name.key for routine in routines for node in walk_routine(routine)
+            if isinstance(node, ast.NameRef)}

@@ -1,0 +1,27 @@
+MODULE Robot
+    ! Written for the test (issue 28): the job buffer is filled by the receiver task T_RX
+    ! and cleared here, so both tasks write it; the robot polls it with IF ... GOTO.
+    RECORD job
+        bool ready;
+        num code;
+    ENDRECORD
+    PERS job jobs{2} := [[FALSE, 0], [FALSE, 0]];
+    VAR num slots{3} := [10, 20, 30];
+    VAR num slot := 0;
+
+    PROC main()
+        WHILE TRUE DO
+        again:
+            WaitTime 0.1;
+            IF NOT jobs{1}.ready GOTO again;
+            TEST jobs{1}.code
+            CASE 1:
+                slot := 1;
+            CASE 2:
+                slot := 3;
+            ENDTEST
+            TPWrite "slot value" \Num:=slots{slot};
+            jobs{1}.ready := FALSE;
+        ENDWHILE
+    ENDPROC
+ENDMODULE
