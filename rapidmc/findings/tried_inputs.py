@@ -14,7 +14,8 @@ The controller's readings a check takes as fixed (OpMode, GetSysInfo, ...: RMC70
 controller's readings fixed (OpMode at line 107)").  So is an output signal that no
 loaded code sets, read back with DOutput (a system output the controller sets, or one
 another task sets): "the outputs no loaded code sets at their first value (DOutput at
-line 118)".
+line 118)".  A complete readings probe (``api``) read OpMode, RunMode, RobOS, IsSysId
+and those DOutput reads at every value (``probed``): then they no longer explain anything.
 
 A peer that closes its connection is an input too: in reality SocketSend and
 SocketReceive then raise ERR_SOCK_CLOSED, which an ERROR handler may catch; a
@@ -39,6 +40,7 @@ from typing import Iterable, Sequence
 from .. import ast
 from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
 from ..load.call_graph import called_routines  # noqa: F401  (coverage asks it here)
+from ..semantics.library.probed_readings import DOMAINS as PROBED_READINGS
 from .fixed_readings import reading_calls
 
 # instruction or function (canonical name) -> what a check offers it only some of
@@ -131,6 +133,22 @@ def unset_output_reads(program: Program) -> list:
                 passed.update(names)
     outputs = {signal.key for signal in program.signals if signal.kind.endswith("O")}
     return [call for name, call in reads if name in outputs and name not in passed]
+
+
+def unset_digital_outputs(program: Program) -> list:
+    """The digital outputs of ``unset_output_reads``: the readings probe lets them read 0
+    or 1 (a system output, another task, the FlexPendant's I/O view may set them)."""
+    keys = {call.args[0].value.name.key for call in unset_output_reads(program)
+            if call.name.key == "DOUTPUT"}
+    return [signal for signal in program.signals if signal.key in keys]
+
+
+def probed(read: TriedInput) -> bool:
+    """Whether the readings probe frees ``read``: a reading of ``probed_readings.DOMAINS``
+    or a DOutput of an output no loaded code sets."""
+    name = read.instruction.upper()
+    return (read.kind == FIXED and name in PROBED_READINGS) or \
+        (read.kind == UNSET and name == "DOUTPUT")
 
 
 def reached(inputs: Sequence[TriedInput], executed: set) -> tuple:
