@@ -16,7 +16,9 @@ results; every place it reaches that chooses between branches gives messages:
   for a ``num{5}``) and a malformed one;
 * ``UnpackRawBytes`` of a received ``rawbytes`` gives, per field the code
   compares with numbers, one message per class of those comparisons (the
-  field encoded at its start index, hex pairs as ``--socket-messages`` takes).
+  field encoded at its start index, hex pairs as ``--socket-messages`` takes),
+  and per string compared with characters unpacked with ``\\ASCII:=n`` (n
+  characters long), one message holding it there.
 
 One message the program does not expect (no literal of it) is always added.
 The domain is *exact* (every message the peer could send behaves like one of
@@ -700,7 +702,9 @@ class Uses:
         bytes 0, and one of bytes ff.  With no field compared, one message of zeros (a byte
         stream of ff would read as a huge length and the next read would never end)."""
         fields = sorted(self.fields.items(), key=lambda item: item[0][0])
+        texts = self._text_fields()
         length = max([start - 1 + _size(encoding) for (start, encoding, _), _ in fields]
+                     + [start - 1 + size for start, size, _ in texts]
                      + [self.extent, wanted, 1])
         base = bytes(length)
         for (start, encoding, network), numbers in fields:
@@ -710,10 +714,12 @@ class Uses:
                 base = rawbytes.pack(base, start, min(numbers), encoding, network)
             except RapidError:
                 pass                       # (a number the field cannot hold: left 0)
-        if not fields:
+        if not fields and not texts:
             return (rawbytes.to_text(base),), "no field of the received bytes is compared " \
                 "with a number: one message of zeros"
-        messages = []
+        messages = [rawbytes.to_text(base[:start - 1] + text.encode("latin-1", "replace")
+                                     + base[start - 1 + size:])
+                    for start, size, text in texts]
         for (start, encoding, network), numbers in fields:
             for value in _field_points(sorted(numbers), encoding):
                 data = rawbytes.pack(base, start, value, encoding, network)
@@ -722,10 +728,24 @@ class Uses:
         unexpected = rawbytes.to_text(bytes([0xFF] * length))
         if unexpected not in messages:
             messages.append(unexpected)
-        shown = ", ".join(f"bytes from {start} compared with "
-                          + ", ".join(_number_text(n) for n in sorted(numbers))
-                          for (start, _, _), numbers in fields)
-        return tuple(messages), f"UnpackRawBytes fields: {shown}"
+        shown = [f"bytes from {start} compared with "
+                 + ", ".join(_number_text(n) for n in sorted(numbers))
+                 for (start, _, _), numbers in fields]
+        for start in dict.fromkeys(start for start, _, _ in texts):
+            shown.append(f"characters from {start} compared with " + ", ".join(
+                quoted(text) for at, _, text in texts if at == start))
+        return tuple(messages), f"UnpackRawBytes fields: {', '.join(shown)}"
+
+    def _text_fields(self) -> list:
+        """(start, size, text) per string compared with characters unpacked with
+        ``\\ASCII:=size`` from byte ``start`` of the message; a text of another length
+        never equals them and gives nothing."""
+        found = []
+        for view, text in self.compared:
+            if view is not None and view[0] == "field" and view[2][0] == "ascii" \
+                    and len(text) == view[2][1]:
+                found.append((view[1], view[2][1], text))
+        return list(dict.fromkeys(found))
 
 
 def _placed(view, text: str, separators: list, heads: list) -> Iterator[str]:
@@ -791,7 +811,7 @@ def _field_points(numbers: list, encoding: tuple) -> tuple:
 
 
 def _size(encoding: tuple) -> int:
-    if encoding[0] == "int":
+    if encoding[0] in ("int", "ascii"):
         return abs(int(encoding[1]))
     return 1 if encoding == rawbytes.HEX1 else 4
 
@@ -807,6 +827,10 @@ def _encoding(call) -> Optional[tuple]:
         if key == "INTX":
             size = _inttype(argument.value)
             return ("int", size) if size is not None else None
+        if key == "ASCII":
+            size = _literal_number(argument.value)
+            return ("ascii", int(size)) if size is not None and size == int(size) \
+                and 1 <= size <= TEXT_LIMIT else None
     return None
 
 
