@@ -360,3 +360,19 @@ def test_a_handler_an_egm_session_failure_reaches_names_the_egm_instructions(tmp
     assert coverage(api.check(api.load_program([str(path)]))) == [
         "lines 10-11 of main are never reached with no EGM session failing "
         "(EGMSetupUC at line 6; EGMRunJoint at line 7)"]
+
+
+def test_code_waiting_for_another_tasks_write_names_the_persistent_data(tmp_path):
+    """A socket task checked alone forwards a command only once the motion task has taken
+    the last one (``WHILE SocketStr <> ""``; the motion task writes ``SocketStr := ""``).
+    This task never empties it, so the forwarding code is unreached, but another task or a
+    PC may: the warning names the persistent data instead of "under any input"."""
+    path = tmp_path / "socket.mod"
+    path.write_text("MODULE Socket\n    PERS string SocketStr := \"start\";\n"
+                    "    VAR num sent := 0;\n    PROC main()\n"
+                    "        WHILE SocketStr <> \"\" DO\n            WaitTime 1;\n"
+                    "        ENDWHILE\n        SocketStr := \"next\";\n        sent := 1;\n"
+                    "    ENDPROC\nENDMODULE\n")
+    assert coverage(api.check(api.load_program([str(path)]))) == [
+        "lines 8-9 of main are never reached with no other task writing the persistent "
+        "data (SocketStr at line 5)"]
