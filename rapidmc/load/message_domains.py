@@ -12,6 +12,8 @@ results; every place it reaches that chooses between branches gives messages:
   (``StrPart(msg, 4, 3) = "ABC"``: ``"   ABC"``);
 * ``StrFind``/``StrMatch`` give a message holding the characters or pattern
   they look for;
+* a comparison of the message's length (``StrLen(msg) > 72``) gives a message
+  one character longer than the number;
 * ``StrToVal`` gives a well-formed text of the target's type (``[1,2,3,4,5]``
   for a ``num{5}``) and a malformed one;
 * ``UnpackRawBytes`` of a received ``rawbytes`` gives, per field the code
@@ -53,8 +55,10 @@ NUMBER_COMPARISONS = ("=", "<>", "<", "<=", ">", ">=")
 UNEXPECTED = "?"              # the text a peer sends that no code of the program expects
 FILLER = " "                  # what stands before a compared part of a message
 MALFORMED = "#"               # text no StrToVal target type accepts
+FILLER_LETTER = "a"           # what a message of a given length holds
 
 IDENTITY = ("whole",)         # how a value was taken from the message
+LENGTH = ("length",)          # the message's length (StrLen of the whole message)
 COUNT = ("count",)            # a number of fields: counted in a loop over the message
 SCANS = ("STRFIND", "STRMATCH", "STRPART", "STRTOVAL")   # what a loop over fields does
 BRACKETS = {"[": "]", "(": ")", "{": "}", "<": ">"}   # around a list the code reads
@@ -256,6 +260,7 @@ class Uses:
         self.numbers: set = set()                # numbers the whole value is compared with
         self.extent = 0                          # bytes the unpacked fields span
         self.parsed_numbers: list = []           # (view of the text, number) parsed, compared
+        self.lengths: set = set()                # numbers the message's length is compared with
         self.counted: list = []                  # (dispatch, number): a count of fields compared
         self.lists: dict[str, int] = {}          # routine -> StrToVal calls on parts cut at run time
         self.paths: dict[tuple, set] = {}        # (name, component, ...) -> views of that part
@@ -440,6 +445,10 @@ class Uses:
         ``StrPart`` of the whole message at a constant position, else unknown (None)."""
         if isinstance(expr, ast.NameRef):
             return set(self.views.get(expr.name.key, {None}))
+        if isinstance(expr, ast.FunctionCall) and expr.name.key == "STRLEN" and expr.args \
+                and expr.args[0].value is not None \
+                and IDENTITY in self.view_of(expr.args[0].value):
+            return {LENGTH}
         if isinstance(expr, ast.FunctionCall) and expr.name.key == "STRPART":
             values = [a.value for a in expr.args if a.kind == ast.REQUIRED]
             start = _literal_number(values[1]) if len(values) == 3 else None
@@ -505,6 +514,8 @@ class Uses:
             return
         if IDENTITY in views:
             self.numbers.add(number)
+        if LENGTH in views:
+            self.lengths.add(number)
         for view in views:
             if view is not None and view[0] == "field":
                 self.fields.setdefault(view[1:], set()).add(number)
@@ -598,6 +609,7 @@ class Uses:
         messages = [forms[rank] for rank in range(max(map(len, ranked), default=0))
                     for forms in ranked if rank < len(forms)]
         messages.extend(self.searched)
+        messages.extend(self._length_forms())
         bounded = list(dict.fromkeys(messages))[:MAX_MESSAGES - 1]
         if self.compared or self.searched or not self.parsed:
             # (data only parsed: the malformed text is already one nothing expects)
@@ -625,6 +637,13 @@ class Uses:
         longest = max(self.lists.values(), default=0)
         return [opener + others[0].join(["1"] * count) + closer
                 for count in range(longest, 1, -1)] if longest > 1 else []
+
+    def _length_forms(self) -> list:
+        """Per number the message's length is compared with (``StrLen(msg) > 72``), a
+        message one character longer (the shorter ones are the other messages); none
+        longer than a string holds."""
+        return [FILLER_LETTER * (int(n) + 1) for n in sorted(self.lengths)
+                if n >= 0 and n == int(n) and int(n) + 1 <= TEXT_LIMIT]
 
     def _parsed_texts(self) -> set:
         return {(view, format_num(number)) for view, number in self.parsed_numbers}
@@ -673,6 +692,9 @@ class Uses:
             parts.append("parsed by StrToVal as " + ", ".join(types))
         numbers = list(dict.fromkeys(n for _, n in self.parsed_numbers))
         counts = sorted(set(n for _, n in self.counted))
+        if self.lengths:
+            parts.append("length compared with " + ", ".join(
+                _number_text(n) for n in sorted(self.lengths)))
         if counts and _separators(self.searched)[0] is not None:
             parts.append("counts of fields compared with " + ", ".join(map(str, counts)))
         if numbers:
@@ -681,7 +703,7 @@ class Uses:
                          + (", ..." if len(numbers) > 8 else ""))
         if not parts:
             return "not compared with anything: one text"
-        if not strings and not self.searched and not numbers:
+        if not strings and not self.searched and not numbers and not self.lengths:
             return "; ".join(parts) + ": a well-formed and a malformed text"
         return "; ".join(parts) + "; and one the program does not expect"
 
