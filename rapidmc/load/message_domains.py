@@ -12,6 +12,9 @@ results; every place it reaches that chooses between branches gives messages:
   (``StrPart(msg, 4, 3) = "ABC"``: ``"   ABC"``);
 * ``StrFind``/``StrMatch`` give a message holding the characters or pattern
   they look for;
+* a field of a message split into a string array (``parts{2}``) gives the
+  fields joined by the separator sought (one a caller passes counts), those
+  the enclosing branches compare holding their texts (``F|SM|[1,2,3]``);
 * a comparison of the message's length (``StrLen(msg) > 72``) gives a message
   one character longer than the number;
 * ``StrToVal`` gives a well-formed text of the target's type (``[1,2,3,4,5]``
@@ -63,6 +66,7 @@ COUNT = ("count",)            # a number of fields: counted in a loop over the m
 SCANS = ("STRFIND", "STRMATCH", "STRPART", "STRTOVAL")   # what a loop over fields does
 BRACKETS = {"[": "]", "(": ")", "{": "}", "<": ">"}   # around a list the code reads
 TEXT_LIMIT = 80               # characters a string holds (a longer message is cut)
+MAX_FIELDS = 16               # the fields of a split message a use may name (parts{16})
 MAX_PROBES = 64               # per receiving site: each is one small search for coverage
 PROBE_STATES = 20000          # states a probe's search may visit (its lines count even so)
 
@@ -265,6 +269,7 @@ class Uses:
         self.lists: dict[str, int] = {}          # routine -> StrToVal calls on parts cut at run time
         self.paths: dict[tuple, set] = {}        # (name, component, ...) -> views of that part
         self.exact = True                        # every read tells apart only what was tried
+        self.string_arrays: set = set()          # string arrays the message's fields go into
         # what a routine no call reaches compares chooses nothing a search can reach
         self.called = called_routines(program)
 
@@ -278,6 +283,12 @@ class Uses:
             for routine in self.routines:
                 for node, parents in ast.walk(routine.ast):
                     self._spread(node, parents, routine)
+        for routine in self.routines:
+            for key in self.views:
+                symbol = routine.scope.lookup(key)
+                if symbol is not None and isinstance(symbol.type, ArrayType) \
+                        and symbol.type.element is STRING:
+                    self.string_arrays.add(key)
         for routine in self.routines:
             if self.called is not None and routine.name not in self.called:
                 continue
@@ -445,6 +456,11 @@ class Uses:
         ``StrPart`` of the whole message at a constant position, else unknown (None)."""
         if isinstance(expr, ast.NameRef):
             return set(self.views.get(expr.name.key, {None}))
+        if isinstance(expr, ast.Index) and isinstance(expr.base, ast.NameRef) \
+                and expr.base.name.key in self.string_arrays and len(expr.indices) == 1:
+            number = _literal_number(expr.indices[0])
+            if number is not None and number == int(number) and 1 <= number <= MAX_FIELDS:
+                return {("element", int(number))}     # parts{2}: the message's second field
         if isinstance(expr, ast.FunctionCall) and expr.name.key == "STRLEN" and expr.args \
                 and expr.args[0].value is not None \
                 and IDENTITY in self.view_of(expr.args[0].value):
@@ -480,9 +496,9 @@ class Uses:
                     self._compared(node.subject, value, "=", scope, parents + (node, case))
         elif isinstance(node, ast.FunctionCall) and node.name.key in ("STRFIND", "STRMATCH",
                                                                        "STRMEMB"):
-            self._searched(node, scope)
+            self._searched(node, scope, routine)
         elif isinstance(node, ast.FunctionCall) and node.name.key == "STRTOVAL":
-            self._parse(node, scope)
+            self._parse(node, scope, parents)
             self._listed(node, routine)
 
     def _comparison(self, node, scope, parents=()) -> None:
@@ -501,7 +517,7 @@ class Uses:
             if offset is not None and number is not None:
                 self.extent = max(self.extent, int(offset + number))
         text = _string_value(other, scope)
-        views = self.view_of(carried)
+        views = {self._in_branches(view, parents, scope) for view in self.view_of(carried)}
         if text is not None and op in EQUALITY:
             self.compared.extend((view, text) for view in views)
             self.exact = self.exact and views == {IDENTITY}
@@ -548,6 +564,35 @@ class Uses:
                             return chosen
         return None
 
+    def _in_branches(self, view, parents, scope):
+        """A field's view (``("element", k)``) with the fields and texts of the branches on
+        other fields that the use lies in (``TEST parts{2}`` inside ``IF parts{1} = "F"``:
+        ``("element", 2, ((1, "F"),))``); any other view as it is."""
+        if view is None or view[0] != "element":
+            return view
+        chain = []
+        for depth in range(len(parents) - 1):
+            outer, inner = parents[depth], parents[depth + 1]
+            chosen = None
+            if isinstance(outer, ast.Test) and isinstance(inner, ast.TestCase) \
+                    and inner.values and not _within(parents[-1], outer.subject):
+                chosen = self._element_text(outer.subject, inner.values[0], scope)
+            elif isinstance(outer, ast.IfBranch) and isinstance(outer.condition, ast.Binary) \
+                    and outer.condition.op == "=" and inner is not outer.condition:
+                condition = outer.condition
+                chosen = self._element_text(condition.left, condition.right, scope) or \
+                    self._element_text(condition.right, condition.left, scope)
+            if chosen is not None and chosen[0] != view[1]:
+                chain.append(chosen)
+        return view[:2] + (tuple(chain),)
+
+    def _element_text(self, carried, value, scope) -> Optional[tuple]:
+        """(k, text) when ``carried`` is the message's k-th field and ``value`` a string."""
+        text = _string_value(value, scope)
+        fields = [view[1] for view in self.view_of(carried)
+                  if view is not None and view[0] == "element"]
+        return (fields[0], text) if text is not None and fields else None
+
     def _branch_text(self, carried, value, scope) -> Optional[tuple]:
         """(view, text) of a message part for which ``carried`` equals ``value``."""
         text = _string_value(value, scope)
@@ -561,14 +606,39 @@ class Uses:
                 return view[1], format_num(number)
         return None
 
-    def _searched(self, call, scope) -> None:
+    def _searched(self, call, scope, routine=None) -> None:
         values = [a.value for a in call.args if a.kind == ast.REQUIRED]
         if not values or not self.carries(values[0]):
             return
         self.exact = False
-        wanted = _string_value(values[-1], scope) if len(values) >= 2 else None
-        if wanted:
+        sought = values[-1] if len(values) >= 2 else None
+        wanted = _string_value(sought, scope) if sought is not None else None
+        found = [wanted] if wanted else self._passed_strings(sought, routine)
+        for wanted in found:
             self.searched.append(wanted if call.name.key == "STRMATCH" else wanted[0])
+
+    def _passed_strings(self, expr, routine) -> list:
+        """The string constants the calls of ``routine`` pass to its parameter ``expr``
+        (``strSplit received, "|", parts, n`` seeks ``split``: ``"|"``)."""
+        if routine is None or not isinstance(expr, ast.NameRef):
+            return []
+        parameters = [p for p in routine.ast.parameters if not p.optional]
+        position = next((i for i, p in enumerate(parameters)
+                         if p.name.key == expr.name.key), None)
+        if position is None:
+            return []
+        found = []
+        for caller in self.routines:
+            for node, _ in ast.walk(caller.ast):
+                if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) \
+                        and node.name.key == routine.key:
+                    positional = [a.value for a in node.args
+                                  if a.kind == ast.REQUIRED and a.name is None]
+                    text = _string_value(positional[position], caller.scope) \
+                        if position < len(positional) else None
+                    if text:
+                        found.append(text)
+        return list(dict.fromkeys(found))
 
     def _listed(self, call, routine) -> None:
         """Count a StrToVal of a part the code cut at run-time positions (``StrFind(msg,
@@ -577,14 +647,15 @@ class Uses:
         if len(values) == 2 and self.carries(values[0]) and self.view_of(values[0]) == {None}:
             self.lists[routine.key] = self.lists.get(routine.key, 0) + 1
 
-    def _parse(self, call, scope) -> None:
+    def _parse(self, call, scope, parents=()) -> None:
         values = [a.value for a in call.args if a.kind == ast.REQUIRED]
         if len(values) != 2 or not self.carries(values[0]):
             return
         self.exact = False
         symbol = scope.lookup(_base_name(values[1]) or "")
         if symbol is not None and isinstance(values[1], ast.NameRef):
-            self.parsed.extend((view, symbol.type) for view in self.view_of(values[0]))
+            self.parsed.extend((self._in_branches(view, parents + (call,), scope), symbol.type)
+                               for view in self.view_of(values[0]))
 
     # --- the messages -----------------------------------------------------------
 
@@ -781,6 +852,15 @@ def _placed(view, text: str, separators: list, heads: list) -> Iterator[str]:
     followed by each separator."""
     if view == IDENTITY:
         yield text
+        return
+    if view is not None and view[0] == "element":
+        # the k-th of fields split at the separator sought, the fields the branches it
+        # lies in compare holding their texts: 'F|SM|[1,2,3]'
+        order = _ordered(separators)
+        fields = dict(view[2])
+        fields[view[1]] = text
+        yield (order[0] if order else FILLER).join(
+            fields.get(k, "") for k in range(1, max(fields) + 1))
         return
     prefixes = [""]
     if view is not None and view[0] == "part":
