@@ -263,6 +263,7 @@ class Uses:
         self.fields: dict[tuple, set] = {}       # (start, encoding, network) -> numbers compared
         self.numbers: set = set()                # numbers the whole value is compared with
         self.extent = 0                          # bytes the unpacked fields span
+        self.bounds: set = set()                 # bytes a RawBytesLen comparison asks for
         self.parsed_numbers: list = []           # (view of the text, number) parsed, compared
         self.lengths: set = set()                # numbers the message's length is compared with
         self.counted: list = []                  # (dispatch, number): a count of fields compared
@@ -516,6 +517,7 @@ class Uses:
             offset, number = self._offset(carried.args[0].value), number_value(other, scope)
             if offset is not None and number is not None:
                 self.extent = max(self.extent, int(offset + number))
+                self.bounds.add(int(offset + number))
         text = _string_value(other, scope)
         views = {self._in_branches(view, parents, scope) for view in self.view_of(carried)}
         if text is not None and op in EQUALITY:
@@ -817,6 +819,10 @@ class Uses:
             for value in _field_points(sorted(numbers), encoding):
                 data = rawbytes.pack(base, start, value, encoding, network)
                 messages.append(rawbytes.to_text(data))
+        # and the first message one byte short of each length a RawBytesLen comparison asks
+        # for (a frame of the right type with too little data: 'RawBytesLen(data) < 52')
+        messages += [rawbytes.to_text(base[:bound - 1]) for bound in sorted(self.bounds)
+                     if 1 < bound <= len(base)]
         messages = list(dict.fromkeys(messages))[:MAX_MESSAGES - 1]
         unexpected = rawbytes.to_text(bytes([0xFF] * length))
         if unexpected not in messages:
