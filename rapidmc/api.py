@@ -48,7 +48,7 @@ from .diagnostics.quoting import one_line, quoted
 from .findings.assumptions import assumptions, for_verdict
 from .findings.explored import ExploredFacts
 from .findings.fixed_readings import fixed_readings
-from .findings.tried_inputs import sampled_inputs
+from .findings.tried_inputs import sampled_inputs, unset_digital_outputs
 from .load.backup import (link_options, load_tasks, resolve_program_files,
                           with_encrypted_interface)
 from .load.message_domains import (ANSWERS, FILE, PROBE_STATES, SOCKET, message_domains,
@@ -273,6 +273,23 @@ def _closure_probe(model: Model) -> tuple:
     return watch.statements.executed, search.verdict == HOLDS
 
 
+def _readings_probe(model: Model) -> tuple:
+    """The lines a search runs in which the controller's readings the check fixes read
+    any value at each call (OpMode, RunMode, RobOS, IsSysId: ``probed_readings``) and each
+    DOutput of an output no loaded code sets reads 0 or 1 (the controller, another task
+    or the FlexPendant's I/O view sets it), and whether that search was complete.  Each
+    value is one a real controller gives, so a line this search runs is reachable; the
+    verdicts keep the fixed readings (RMC702 says so).  Bounded by ``PROBE_STATES``."""
+    config, _ = _check_config(model.program, model.atoms, model.options, model.messages)
+    config.free_readings = True
+    config.lazy_inputs = {**config.lazy_inputs, **{
+        signal.index: (signal.name, (0.0, 1.0)) for signal in unset_digital_outputs(model.program)}}
+    watch = ExploredFacts(model.program, (), model.atoms)
+    search = find_reachable(RapidSystem(model.program, config, reduction.NO_PLAN), _never,
+                            observe=watch, max_states=PROBE_STATES)
+    return watch.statements.executed, search.verdict == HOLDS
+
+
 def _never(state) -> bool:
     return False
 
@@ -376,6 +393,10 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
             lines, complete = _closure_probe(model)
             searches.facts.statements.executed |= lines
             searches.facts.closures_tried = complete
+        if searches.facts.complete and searches.facts.waits_for_readings():
+            lines, complete = _readings_probe(model)
+            searches.facts.statements.executed |= lines
+            searches.facts.readings_tried = complete
     resting_on = assumptions(model.program)
     results = [replace(r, assumes=for_verdict(resting_on, r.result, model.describer))
                for r in results]

@@ -12,7 +12,7 @@ import re
 
 import pytest
 
-from rapidmc import ast
+from rapidmc import api, ast
 from rapidmc.cli import main
 from rapidmc.findings.fixed_readings import fixed_readings
 from rapidmc.semantics.link import build
@@ -57,7 +57,7 @@ def test_a_user_routine_with_a_predefined_name_is_not_a_reading():
 
 def test_the_warning_is_in_the_json_report_beside_the_verdicts(tmp_path, capsys):
     program = tmp_path / "prog.mod"
-    program.write_text(HEAD + "    IF OpMode() = OP_AUTO THEN\n      speed := 100;\n    ELSE\n"
+    program.write_text(HEAD + "    IF CDate() = \"2026-01-01\" THEN\n      speed := 100;\n    ELSE\n"
                        "      speed := 10;\n    ENDIF\n" + TAIL)
     code = main(["check", str(program), "--format", "json", "--quiet"])
     document = json.loads(capsys.readouterr().out)
@@ -68,7 +68,7 @@ def test_the_warning_is_in_the_json_report_beside_the_verdicts(tmp_path, capsys)
 
 def test_the_html_page_shades_only_unreached_lines_not_readings(tmp_path, capsys):
     program = tmp_path / "prog.mod"
-    program.write_text(HEAD + "    IF OpMode() = OP_AUTO THEN\n      speed := 100;\n    ELSE\n"
+    program.write_text(HEAD + "    IF CDate() = \"2026-01-01\" THEN\n      speed := 100;\n    ELSE\n"
                        "      speed := 10;\n    ENDIF\n" + TAIL)
     page = tmp_path / "report.html"
     main(["check", str(program), "--html", str(page), "--quiet"])
@@ -98,3 +98,70 @@ def test_a_robot_reading_of_a_task_not_loaded_is_named(body, expected):
     loads that task (tests/check/tasks_crobt_named_task), else the calling task's, with a
     warning that says so."""
     assert warnings_of(body, HEAD_ROBOT=True) == expected
+
+
+# --- the readings probe (library.probed_readings): other readings a controller gives ---
+
+MODES = """MODULE Modes
+  VAR num mode := 0;
+  VAR num host := 0;
+  PROC main()
+    TEST OpMode()
+    CASE OP_AUTO:
+      mode := 1;
+    CASE OP_MAN_PROG:
+      mode := 2;
+    CASE OP_MAN_TEST:
+      mode := 3 / 0;
+    DEFAULT:
+      mode := 4;
+    ENDTEST
+    IF RobOS() THEN
+      host := 1;
+    ENDIF
+    IF RunMode() = RUN_STEP_MOVE host := 2;
+  ENDPROC
+ENDMODULE
+"""
+
+
+def line_of(text: str, code: str) -> int:
+    return next(number for number, line in enumerate(text.splitlines(), 1) if code in line)
+
+
+def test_code_another_controller_reading_runs_counts_as_reached(tmp_path):
+    """A TEST over OpMode, a branch on RobOS and on RunMode: every arm runs on some real
+    controller (manual mode, the robot's own operating system, stepwise), so the readings
+    probe shows each reached, OP_UNDEF's DEFAULT included.  The verdicts keep the fixed
+    readings: the division by zero of manual test mode is no run-time error of the check
+    (RMC702 says the verdicts hold for that value only)."""
+    path = tmp_path / "modes.mod"
+    path.write_text(MODES)
+    report = api.check(api.load_program([str(path)]))
+    assert report.verdicts == {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS"}
+    assert [w.code.code for w in report.warnings] == ["RMC702", "RMC702", "RMC702"]
+    for code in ("mode := 2;", "mode := 3 / 0;", "mode := 4;", "host := 1;", "host := 2;"):
+        assert (str(path), line_of(MODES, code)) in report.executed, code
+
+
+def test_a_readings_probe_the_bound_stops_keeps_the_wording(tmp_path, monkeypatch):
+    """A readings probe stopped by its bound shows nothing about the lines it did not run:
+    their warnings still name the fixed reading."""
+    monkeypatch.setattr(api, "PROBE_STATES", 1)
+    path = tmp_path / "modes.mod"
+    path.write_text(MODES)
+    warnings = [w.message for w in api.check(api.load_program([str(path)])).warnings
+                if w.code.code == "RMC701"]
+    assert warnings and all("readings fixed (OpMode at line 5; RobOS at line 15; "
+                            "RunMode at line 18)" in m for m in warnings)
+
+
+def test_dead_code_beside_a_reading_stays_unreached_under_any_input(tmp_path):
+    """Freeing the readings makes no line reached that no reading reaches: code after an
+    endless loop stays unreached, now "under any input" (the probe was complete)."""
+    path = tmp_path / "modes.mod"
+    path.write_text(MODES.replace("  ENDPROC", "    WHILE TRUE DO\n      WaitTime 1;\n"
+                                  "    ENDWHILE\n    host := 3;\n  ENDPROC"))
+    warnings = [w.message for w in api.check(api.load_program([str(path)])).warnings
+                if w.code.code == "RMC701"]
+    assert warnings == ["never reached under any input"]

@@ -19,7 +19,7 @@ from ..check import HOLDS, VIOLATED, find_reachable
 from ..check.result import SearchResult
 from .vacuity import TriggerWatch, to_text
 from .coverage import StatementWatch, coverage_warnings
-from .tried_inputs import PEERS_OPEN, TriedInput, called_routines, qualifier, reached
+from .tried_inputs import PEERS_OPEN, TriedInput, called_routines, probed, qualifier, reached
 from ..diagnostics import Diagnostic
 from ..ltl import Formula
 from ..model.properties import AtomCompiler
@@ -43,6 +43,9 @@ class ExploredFacts:
         # a complete coverage probe let peers close their sockets: no unreached line rests
         # on "no peer closing its socket" (vacuity still does: the probe watches no trigger)
         self.closures_tried = False
+        # a complete readings probe read OpMode, RobOS, ... and the outputs no loaded code
+        # sets at every value: no unreached line rests on those (tried_inputs.probed)
+        self.readings_tried = False
 
     def __call__(self, state: Hashable, successors: Sequence[tuple[Hashable, Hashable]]) -> None:
         self.statements(state, successors)
@@ -98,7 +101,8 @@ class ExploredFacts:
         """Coverage warnings (RMC701); none unless the search was complete."""
         if not self.complete:
             return []
-        sampled = [t for t in self.sampled if not (self.closures_tried and t.kind == PEERS_OPEN)]
+        sampled = [t for t in self.sampled if not (self.closures_tried and t.kind == PEERS_OPEN)
+                   and not (self.readings_tried and probed(t))]
         inputs = qualifier(reached(sampled, self.statements.executed))
         called = called_routines(self.program)
         return coverage_warnings(self.program, self.statements.executed, inputs, called)
@@ -107,6 +111,11 @@ class ExploredFacts:
         """Whether some unreached-code warning would rest on no peer closing its socket (a
         SocketSend or SocketReceive that could raise ERR_SOCK_CLOSED into a handler ran)."""
         return any(t.kind == PEERS_OPEN for t in reached(self.sampled, self.statements.executed))
+
+    def waits_for_readings(self) -> bool:
+        """Whether some unreached-code warning would rest on a reading the readings probe
+        frees (``tried_inputs.probed``: OpMode, an output no loaded code sets, ...)."""
+        return any(probed(t) for t in reached(self.sampled, self.statements.executed))
 
     def inputs_tried(self) -> str:
         """``under any input``, or which sampled inputs the search's findings rest on

@@ -14,7 +14,11 @@ The controller's readings a check takes as fixed (OpMode, GetSysInfo, ...: RMC70
 controller's readings fixed (OpMode at line 107)").  So is an output signal that no
 loaded code sets, read back with DOutput (a system output the controller sets, or one
 another task sets): "the outputs no loaded code sets at their first value (DOutput at
-line 118)".
+line 118)"; and, in a program of one task, shared PERS data a condition reads (another
+task or a PC may write it): "no other task writing the persistent data (SocketStr at line
+38)".
+A complete readings probe (``api``) read OpMode, RunMode, RobOS, IsSysId
+and those DOutput reads at every value (``probed``): then they no longer explain anything.
 
 A peer that closes its connection is an input too: in reality SocketSend and
 SocketReceive then raise ERR_SOCK_CLOSED, which an ERROR handler may catch; a
@@ -37,8 +41,10 @@ from dataclasses import dataclass
 from typing import Iterable, Sequence
 
 from .. import ast
-from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
+from ..semantics.program import ENVIRONMENT_NAMESPACE, PROGRAM_NAMESPACE, Program
 from ..load.call_graph import called_routines  # noqa: F401  (coverage asks it here)
+from ..semantics.scope import GLOBAL_DATA
+from ..semantics.library.probed_readings import DOMAINS as PROBED_READINGS
 from .fixed_readings import reading_calls
 
 # instruction or function (canonical name) -> what a check offers it only some of
@@ -65,7 +71,10 @@ UNSET = "the outputs no loaded code sets at their first value"   # (system outpu
 EGM_SESSIONS = ("EGMRUNJOINT", "EGMRUNPOSE", "EGMSETUPUC", "EGMACTJOINT", "EGMACTPOSE",
                 "EGMSTREAMSTART")
 EGM_UP = "no EGM session failing"              # the kind of those, in a program with a handler
-PHRASES = (PEERS_OPEN, FIXED, UNSET, EGM_UP)   # kinds that are phrases of their own
+# shared PERS data a condition reads in a task checked alone: another task or a PC may write
+# it on the controller, which the check does not model
+UNWRITTEN = "no other task writing the persistent data"
+PHRASES = (PEERS_OPEN, FIXED, UNSET, UNWRITTEN, EGM_UP)   # kinds that are phrases of their own
 
 
 @dataclass(frozen=True)
@@ -105,6 +114,8 @@ def sampled_inputs(program: Program, exact: Iterable[tuple] = (),
     found += [TriedInput(FIXED, name.text, name.span) for name in reading_calls(program)]
     found += [TriedInput(UNSET, call.name.text, call.span)
               for call in unset_output_reads(program)]
+    found += [TriedInput(UNWRITTEN, ref.name.text, ref.span)
+              for ref in unwritten_pers_reads(program)]
     return tuple(sorted(set(found), key=lambda t: (t.span.file, t.span.line, t.span.column)))
 
 
@@ -133,6 +144,60 @@ def unset_output_reads(program: Program) -> list:
     outputs = {signal.key for signal in program.signals
                if signal.kind.endswith("O") and not signal.outside}
     return [call for name, call in reads if name in outputs and name not in passed]
+
+
+def unwritten_pers_reads(program: Program) -> list:
+    """In a program of one task, the reads of shared PERS data (not TASK PERS) in a
+    condition (IF, WHILE, TEST, WaitUntil) that the check does not already choose as data
+    written from outside (``Program.outside_data``): another task or a PC may write such
+    data on the controller (the Hanoi socket task waits for ``SocketStr = ""``, which the
+    motion task sets), while the check sees only this task's writes."""
+    if program.task_entries:
+        return []                  # (the loaded tasks' writes are modelled)
+    by_slot = {data.slot: data for data in program.globals}
+    outside = set(getattr(program, "outside_data", None) or {})
+    reads = []
+    for routine in program.routines:
+        if routine.ast is None or routine.namespace != PROGRAM_NAMESPACE:
+            continue
+        for node in _conditions(routine.ast):
+            for ref, _ in ast.walk(node):
+                if not isinstance(ref, ast.NameRef):
+                    continue
+                symbol = routine.scope.lookup(ref.name.key)
+                data = by_slot.get(symbol.slot) if symbol is not None \
+                    and symbol.kind == GLOBAL_DATA else None
+                if data is not None and data.storage == "PERS" and not data.task_local \
+                        and data.slot not in outside:
+                    reads.append(ref)
+    return reads
+
+
+def _conditions(routine_ast):
+    """The expressions a routine's choices and waits depend on."""
+    for node, _ in ast.walk(routine_ast):
+        if isinstance(node, (ast.IfBranch, ast.While)) and node.condition is not None:
+            yield node.condition
+        elif isinstance(node, ast.Test):
+            yield node.subject
+        elif isinstance(node, ast.ProcedureCall) and node.name.key == "WAITUNTIL":
+            yield from (argument.value for argument in node.args if argument.value is not None)
+
+
+def unset_digital_outputs(program: Program) -> list:
+    """The digital outputs of ``unset_output_reads``: the readings probe lets them read 0
+    or 1 (a system output, another task, the FlexPendant's I/O view may set them)."""
+    keys = {call.args[0].value.name.key for call in unset_output_reads(program)
+            if call.name.key == "DOUTPUT"}
+    return [signal for signal in program.signals if signal.key in keys]
+
+
+def probed(read: TriedInput) -> bool:
+    """Whether the readings probe frees ``read``: a reading of ``probed_readings.DOMAINS``
+    or a DOutput of an output no loaded code sets."""
+    name = read.instruction.upper()
+    return (read.kind == FIXED and name in PROBED_READINGS) or \
+        (read.kind == UNSET and name == "DOUTPUT")
 
 
 def reached(inputs: Sequence[TriedInput], executed: set) -> tuple:

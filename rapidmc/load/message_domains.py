@@ -12,11 +12,18 @@ results; every place it reaches that chooses between branches gives messages:
   (``StrPart(msg, 4, 3) = "ABC"``: ``"   ABC"``);
 * ``StrFind``/``StrMatch`` give a message holding the characters or pattern
   they look for;
+* a field of a message split into a string array (``parts{2}``) gives the
+  fields joined by the separator sought (one a caller passes counts), those
+  the enclosing branches compare holding their texts (``F|SM|[1,2,3]``);
+* a comparison of the message's length (``StrLen(msg) > 72``) gives a message
+  one character longer than the number;
 * ``StrToVal`` gives a well-formed text of the target's type (``[1,2,3,4,5]``
   for a ``num{5}``) and a malformed one;
 * ``UnpackRawBytes`` of a received ``rawbytes`` gives, per field the code
   compares with numbers, one message per class of those comparisons (the
-  field encoded at its start index, hex pairs as ``--socket-messages`` takes).
+  field encoded at its start index, hex pairs as ``--socket-messages`` takes),
+  and per string compared with characters unpacked with ``\\ASCII:=n`` (n
+  characters long), one message holding it there.
 
 One message the program does not expect (no literal of it) is always added.
 The domain is *exact* (every message the peer could send behaves like one of
@@ -51,12 +58,15 @@ NUMBER_COMPARISONS = ("=", "<>", "<", "<=", ">", ">=")
 UNEXPECTED = "?"              # the text a peer sends that no code of the program expects
 FILLER = " "                  # what stands before a compared part of a message
 MALFORMED = "#"               # text no StrToVal target type accepts
+FILLER_LETTER = "a"           # what a message of a given length holds
 
 IDENTITY = ("whole",)         # how a value was taken from the message
+LENGTH = ("length",)          # the message's length (StrLen of the whole message)
 COUNT = ("count",)            # a number of fields: counted in a loop over the message
 SCANS = ("STRFIND", "STRMATCH", "STRPART", "STRTOVAL")   # what a loop over fields does
 BRACKETS = {"[": "]", "(": ")", "{": "}", "<": ">"}   # around a list the code reads
 TEXT_LIMIT = 80               # characters a string holds (a longer message is cut)
+MAX_FIELDS = 16               # the fields of a split message a use may name (parts{16})
 MAX_PROBES = 64               # per receiving site: each is one small search for coverage
 PROBE_STATES = 20000          # states a probe's search may visit (its lines count even so)
 
@@ -253,11 +263,14 @@ class Uses:
         self.fields: dict[tuple, set] = {}       # (start, encoding, network) -> numbers compared
         self.numbers: set = set()                # numbers the whole value is compared with
         self.extent = 0                          # bytes the unpacked fields span
+        self.bounds: set = set()                 # bytes a RawBytesLen comparison asks for
         self.parsed_numbers: list = []           # (view of the text, number) parsed, compared
+        self.lengths: set = set()                # numbers the message's length is compared with
         self.counted: list = []                  # (dispatch, number): a count of fields compared
         self.lists: dict[str, int] = {}          # routine -> StrToVal calls on parts cut at run time
         self.paths: dict[tuple, set] = {}        # (name, component, ...) -> views of that part
         self.exact = True                        # every read tells apart only what was tried
+        self.string_arrays: set = set()          # string arrays the message's fields go into
         # what a routine no call reaches compares chooses nothing a search can reach
         self.called = called_routines(program)
 
@@ -271,6 +284,12 @@ class Uses:
             for routine in self.routines:
                 for node, parents in ast.walk(routine.ast):
                     self._spread(node, parents, routine)
+        for routine in self.routines:
+            for key in self.views:
+                symbol = routine.scope.lookup(key)
+                if symbol is not None and isinstance(symbol.type, ArrayType) \
+                        and symbol.type.element is STRING:
+                    self.string_arrays.add(key)
         for routine in self.routines:
             if self.called is not None and routine.name not in self.called:
                 continue
@@ -438,6 +457,15 @@ class Uses:
         ``StrPart`` of the whole message at a constant position, else unknown (None)."""
         if isinstance(expr, ast.NameRef):
             return set(self.views.get(expr.name.key, {None}))
+        if isinstance(expr, ast.Index) and isinstance(expr.base, ast.NameRef) \
+                and expr.base.name.key in self.string_arrays and len(expr.indices) == 1:
+            number = _literal_number(expr.indices[0])
+            if number is not None and number == int(number) and 1 <= number <= MAX_FIELDS:
+                return {("element", int(number))}     # parts{2}: the message's second field
+        if isinstance(expr, ast.FunctionCall) and expr.name.key == "STRLEN" and expr.args \
+                and expr.args[0].value is not None \
+                and IDENTITY in self.view_of(expr.args[0].value):
+            return {LENGTH}
         if isinstance(expr, ast.FunctionCall) and expr.name.key == "STRPART":
             values = [a.value for a in expr.args if a.kind == ast.REQUIRED]
             start = _literal_number(values[1]) if len(values) == 3 else None
@@ -469,9 +497,9 @@ class Uses:
                     self._compared(node.subject, value, "=", scope, parents + (node, case))
         elif isinstance(node, ast.FunctionCall) and node.name.key in ("STRFIND", "STRMATCH",
                                                                        "STRMEMB"):
-            self._searched(node, scope)
+            self._searched(node, scope, routine)
         elif isinstance(node, ast.FunctionCall) and node.name.key == "STRTOVAL":
-            self._parse(node, scope)
+            self._parse(node, scope, parents)
             self._listed(node, routine)
 
     def _comparison(self, node, scope, parents=()) -> None:
@@ -489,8 +517,9 @@ class Uses:
             offset, number = self._offset(carried.args[0].value), number_value(other, scope)
             if offset is not None and number is not None:
                 self.extent = max(self.extent, int(offset + number))
+                self.bounds.add(int(offset + number))
         text = _string_value(other, scope)
-        views = self.view_of(carried)
+        views = {self._in_branches(view, parents, scope) for view in self.view_of(carried)}
         if text is not None and op in EQUALITY:
             self.compared.extend((view, text) for view in views)
             self.exact = self.exact and views == {IDENTITY}
@@ -503,6 +532,8 @@ class Uses:
             return
         if IDENTITY in views:
             self.numbers.add(number)
+        if LENGTH in views:
+            self.lengths.add(number)
         for view in views:
             if view is not None and view[0] == "field":
                 self.fields.setdefault(view[1:], set()).add(number)
@@ -535,6 +566,35 @@ class Uses:
                             return chosen
         return None
 
+    def _in_branches(self, view, parents, scope):
+        """A field's view (``("element", k)``) with the fields and texts of the branches on
+        other fields that the use lies in (``TEST parts{2}`` inside ``IF parts{1} = "F"``:
+        ``("element", 2, ((1, "F"),))``); any other view as it is."""
+        if view is None or view[0] != "element":
+            return view
+        chain = []
+        for depth in range(len(parents) - 1):
+            outer, inner = parents[depth], parents[depth + 1]
+            chosen = None
+            if isinstance(outer, ast.Test) and isinstance(inner, ast.TestCase) \
+                    and inner.values and not _within(parents[-1], outer.subject):
+                chosen = self._element_text(outer.subject, inner.values[0], scope)
+            elif isinstance(outer, ast.IfBranch) and isinstance(outer.condition, ast.Binary) \
+                    and outer.condition.op == "=" and inner is not outer.condition:
+                condition = outer.condition
+                chosen = self._element_text(condition.left, condition.right, scope) or \
+                    self._element_text(condition.right, condition.left, scope)
+            if chosen is not None and chosen[0] != view[1]:
+                chain.append(chosen)
+        return view[:2] + (tuple(chain),)
+
+    def _element_text(self, carried, value, scope) -> Optional[tuple]:
+        """(k, text) when ``carried`` is the message's k-th field and ``value`` a string."""
+        text = _string_value(value, scope)
+        fields = [view[1] for view in self.view_of(carried)
+                  if view is not None and view[0] == "element"]
+        return (fields[0], text) if text is not None and fields else None
+
     def _branch_text(self, carried, value, scope) -> Optional[tuple]:
         """(view, text) of a message part for which ``carried`` equals ``value``."""
         text = _string_value(value, scope)
@@ -548,14 +608,39 @@ class Uses:
                 return view[1], format_num(number)
         return None
 
-    def _searched(self, call, scope) -> None:
+    def _searched(self, call, scope, routine=None) -> None:
         values = [a.value for a in call.args if a.kind == ast.REQUIRED]
         if not values or not self.carries(values[0]):
             return
         self.exact = False
-        wanted = _string_value(values[-1], scope) if len(values) >= 2 else None
-        if wanted:
+        sought = values[-1] if len(values) >= 2 else None
+        wanted = _string_value(sought, scope) if sought is not None else None
+        found = [wanted] if wanted else self._passed_strings(sought, routine)
+        for wanted in found:
             self.searched.append(wanted if call.name.key == "STRMATCH" else wanted[0])
+
+    def _passed_strings(self, expr, routine) -> list:
+        """The string constants the calls of ``routine`` pass to its parameter ``expr``
+        (``strSplit received, "|", parts, n`` seeks ``split``: ``"|"``)."""
+        if routine is None or not isinstance(expr, ast.NameRef):
+            return []
+        parameters = [p for p in routine.ast.parameters if not p.optional]
+        position = next((i for i, p in enumerate(parameters)
+                         if p.name.key == expr.name.key), None)
+        if position is None:
+            return []
+        found = []
+        for caller in self.routines:
+            for node, _ in ast.walk(caller.ast):
+                if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) \
+                        and node.name.key == routine.key:
+                    positional = [a.value for a in node.args
+                                  if a.kind == ast.REQUIRED and a.name is None]
+                    text = _string_value(positional[position], caller.scope) \
+                        if position < len(positional) else None
+                    if text:
+                        found.append(text)
+        return list(dict.fromkeys(found))
 
     def _listed(self, call, routine) -> None:
         """Count a StrToVal of a part the code cut at run-time positions (``StrFind(msg,
@@ -564,14 +649,15 @@ class Uses:
         if len(values) == 2 and self.carries(values[0]) and self.view_of(values[0]) == {None}:
             self.lists[routine.key] = self.lists.get(routine.key, 0) + 1
 
-    def _parse(self, call, scope) -> None:
+    def _parse(self, call, scope, parents=()) -> None:
         values = [a.value for a in call.args if a.kind == ast.REQUIRED]
         if len(values) != 2 or not self.carries(values[0]):
             return
         self.exact = False
         symbol = scope.lookup(_base_name(values[1]) or "")
         if symbol is not None and isinstance(values[1], ast.NameRef):
-            self.parsed.extend((view, symbol.type) for view in self.view_of(values[0]))
+            self.parsed.extend((self._in_branches(view, parents + (call,), scope), symbol.type)
+                               for view in self.view_of(values[0]))
 
     # --- the messages -----------------------------------------------------------
 
@@ -596,6 +682,7 @@ class Uses:
         messages = [forms[rank] for rank in range(max(map(len, ranked), default=0))
                     for forms in ranked if rank < len(forms)]
         messages.extend(self.searched)
+        messages.extend(self._length_forms())
         bounded = list(dict.fromkeys(messages))[:MAX_MESSAGES - 1]
         if self.compared or self.searched or not self.parsed:
             # (data only parsed: the malformed text is already one nothing expects)
@@ -623,6 +710,13 @@ class Uses:
         longest = max(self.lists.values(), default=0)
         return [opener + others[0].join(["1"] * count) + closer
                 for count in range(longest, 1, -1)] if longest > 1 else []
+
+    def _length_forms(self) -> list:
+        """Per number the message's length is compared with (``StrLen(msg) > 72``), a
+        message one character longer (the shorter ones are the other messages); none
+        longer than a string holds."""
+        return [FILLER_LETTER * (int(n) + 1) for n in sorted(self.lengths)
+                if n >= 0 and n == int(n) and int(n) + 1 <= TEXT_LIMIT]
 
     def _parsed_texts(self) -> set:
         return {(view, format_num(number)) for view, number in self.parsed_numbers}
@@ -671,6 +765,9 @@ class Uses:
             parts.append("parsed by StrToVal as " + ", ".join(types))
         numbers = list(dict.fromkeys(n for _, n in self.parsed_numbers))
         counts = sorted(set(n for _, n in self.counted))
+        if self.lengths:
+            parts.append("length compared with " + ", ".join(
+                _number_text(n) for n in sorted(self.lengths)))
         if counts and _separators(self.searched)[0] is not None:
             parts.append("counts of fields compared with " + ", ".join(map(str, counts)))
         if numbers:
@@ -679,7 +776,7 @@ class Uses:
                          + (", ..." if len(numbers) > 8 else ""))
         if not parts:
             return "not compared with anything: one text"
-        if not strings and not self.searched and not numbers:
+        if not strings and not self.searched and not numbers and not self.lengths:
             return "; ".join(parts) + ": a well-formed and a malformed text"
         return "; ".join(parts) + "; and one the program does not expect"
 
@@ -700,7 +797,9 @@ class Uses:
         bytes 0, and one of bytes ff.  With no field compared, one message of zeros (a byte
         stream of ff would read as a huge length and the next read would never end)."""
         fields = sorted(self.fields.items(), key=lambda item: item[0][0])
+        texts = self._text_fields()
         length = max([start - 1 + _size(encoding) for (start, encoding, _), _ in fields]
+                     + [start - 1 + size for start, size, _ in texts]
                      + [self.extent, wanted, 1])
         base = bytes(length)
         for (start, encoding, network), numbers in fields:
@@ -710,22 +809,42 @@ class Uses:
                 base = rawbytes.pack(base, start, min(numbers), encoding, network)
             except RapidError:
                 pass                       # (a number the field cannot hold: left 0)
-        if not fields:
+        if not fields and not texts:
             return (rawbytes.to_text(base),), "no field of the received bytes is compared " \
                 "with a number: one message of zeros"
-        messages = []
+        messages = [rawbytes.to_text(base[:start - 1] + text.encode("latin-1", "replace")
+                                     + base[start - 1 + size:])
+                    for start, size, text in texts]
         for (start, encoding, network), numbers in fields:
             for value in _field_points(sorted(numbers), encoding):
                 data = rawbytes.pack(base, start, value, encoding, network)
                 messages.append(rawbytes.to_text(data))
+        # and the first message one byte short of each length a RawBytesLen comparison asks
+        # for (a frame of the right type with too little data: 'RawBytesLen(data) < 52')
+        messages += [rawbytes.to_text(base[:bound - 1]) for bound in sorted(self.bounds)
+                     if 1 < bound <= len(base)]
         messages = list(dict.fromkeys(messages))[:MAX_MESSAGES - 1]
         unexpected = rawbytes.to_text(bytes([0xFF] * length))
         if unexpected not in messages:
             messages.append(unexpected)
-        shown = ", ".join(f"bytes from {start} compared with "
-                          + ", ".join(_number_text(n) for n in sorted(numbers))
-                          for (start, _, _), numbers in fields)
-        return tuple(messages), f"UnpackRawBytes fields: {shown}"
+        shown = [f"bytes from {start} compared with "
+                 + ", ".join(_number_text(n) for n in sorted(numbers))
+                 for (start, _, _), numbers in fields]
+        for start in dict.fromkeys(start for start, _, _ in texts):
+            shown.append(f"characters from {start} compared with " + ", ".join(
+                quoted(text) for at, _, text in texts if at == start))
+        return tuple(messages), f"UnpackRawBytes fields: {', '.join(shown)}"
+
+    def _text_fields(self) -> list:
+        """(start, size, text) per string compared with characters unpacked with
+        ``\\ASCII:=size`` from byte ``start`` of the message; a text of another length
+        never equals them and gives nothing."""
+        found = []
+        for view, text in self.compared:
+            if view is not None and view[0] == "field" and view[2][0] == "ascii" \
+                    and len(text) == view[2][1]:
+                found.append((view[1], view[2][1], text))
+        return list(dict.fromkeys(found))
 
 
 def _placed(view, text: str, separators: list, heads: list) -> Iterator[str]:
@@ -739,6 +858,15 @@ def _placed(view, text: str, separators: list, heads: list) -> Iterator[str]:
     followed by each separator."""
     if view == IDENTITY:
         yield text
+        return
+    if view is not None and view[0] == "element":
+        # the k-th of fields split at the separator sought, the fields the branches it
+        # lies in compare holding their texts: 'F|SM|[1,2,3]'
+        order = _ordered(separators)
+        fields = dict(view[2])
+        fields[view[1]] = text
+        yield (order[0] if order else FILLER).join(
+            fields.get(k, "") for k in range(1, max(fields) + 1))
         return
     prefixes = [""]
     if view is not None and view[0] == "part":
@@ -791,7 +919,7 @@ def _field_points(numbers: list, encoding: tuple) -> tuple:
 
 
 def _size(encoding: tuple) -> int:
-    if encoding[0] == "int":
+    if encoding[0] in ("int", "ascii"):
         return abs(int(encoding[1]))
     return 1 if encoding == rawbytes.HEX1 else 4
 
@@ -807,6 +935,10 @@ def _encoding(call) -> Optional[tuple]:
         if key == "INTX":
             size = _inttype(argument.value)
             return ("int", size) if size is not None else None
+        if key == "ASCII":
+            size = _literal_number(argument.value)
+            return ("ascii", int(size)) if size is not None and size == int(size) \
+                and 1 <= size <= TEXT_LIMIT else None
     return None
 
 

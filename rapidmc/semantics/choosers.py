@@ -120,6 +120,9 @@ class CheckConfig:
         # ``check.budget.time_check`` raises there once the running search's time is up,
         # so a step with thousands of successors cannot run far past the time limit
         self.time_check = no_time_limit
+        # the coverage probe's: controller readings read any value of their domain
+        # (library.probed_readings); never for verdicts
+        self.free_readings = False
         # (routine, pc) -> visible, for instructions that join the step before them
         # (reduction.merging); empty: one instruction per step
         self.merge_points: dict = {}

@@ -24,6 +24,7 @@ from .configuration import FOUND, NOT_KNOWN, UNKNOWN_VALUE, Lookup, look_up
 from .data import PREDEFINED_DATA
 from .environment_model import where
 from .motion import move_robot
+from .probed_readings import probed_reading
 from .registry import CHOICE, FIXED, NO_EFFECT, NOT_MODELLED, ROBOT_STATE, compiled
 from .signals import signal_reader
 from .tasks import task_number
@@ -67,7 +68,7 @@ def _is_sys_id(calls, compiler, call, entry) -> Compiled:
     """Whether SystemId is this controller's serial number (GetSysInfo \\SerialNo)."""
     system_id = Arguments(calls, compiler, call, entry).value("SystemId")
     serial = dict(SYSTEM_INFO)["SerialNo"]
-    return Compiled(lambda m: system_id(m) == serial, BOOL)
+    return probed_reading(compiler, call, lambda m: system_id(m) == serial, BOOL)
 
 
 compiled("WarmStart()", modelled=NOT_MODELLED)(
@@ -77,9 +78,10 @@ compiled("WarmStart()", modelled=NOT_MODELLED)(
 @compiled("bool RobOS()",
           modelled=FIXED)
 def _rob_os(calls, compiler, call, entry) -> Compiled:
-    """FALSE: rapidmc is a virtual controller, not the robot's operating system."""
+    """FALSE: rapidmc is a virtual controller, not the robot's operating system (either
+    in the readings probe: probed_readings)."""
     Arguments(calls, compiler, call, entry)
-    return constant(False, BOOL)
+    return probed_reading(compiler, call, lambda m: False, BOOL)
 
 
 @compiled("bool IsStopMoveAct(\\switch FromMoveTask | switch FromNonMoveTask)",

@@ -25,6 +25,7 @@ from ..types import (
     RapidType,
 )
 from .arguments import Arguments, argument_expression
+from .probed_readings import probed_reading
 from .registry import FIXED, compiled
 
 
@@ -131,13 +132,18 @@ def _is_pers(calls, compiler, call, entry) -> Compiled:
 @compiled("symnum OpMode()",
           modelled=FIXED)
 def _op_mode(calls, compiler, call, entry) -> Compiled:
-    return constant(compiler.linker.system_symbol(ast.Name.of("OP_AUTO")).value, NUM)
+    """OP_AUTO (any mode in the readings probe: probed_readings)."""
+    mode = compiler.linker.system_symbol(ast.Name.of("OP_AUTO")).value
+    return probed_reading(compiler, call, lambda m: mode, NUM)
 
 
 @compiled("symnum RunMode(\\switch Main)",
           modelled=FIXED)
 def _run_mode(calls, compiler, call, entry) -> Compiled:
-    return constant(compiler.linker.system_symbol(ast.Name.of("RUN_CONT_CYCLE")).value, NUM)
+    """RUN_CONT_CYCLE (any mode in the readings probe: probed_readings)."""
+    Arguments(calls, compiler, call, entry)
+    mode = compiler.linker.system_symbol(ast.Name.of("RUN_CONT_CYCLE")).value
+    return probed_reading(compiler, call, lambda m: mode, NUM)
 
 
 @compiled("num RemainingRetries()")

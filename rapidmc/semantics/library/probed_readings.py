@@ -1,0 +1,51 @@
+"""Controller readings a check takes as fixed, and the coverage probe that frees them.
+
+``OpMode``, ``RunMode``, ``RobOS`` and ``IsSysId`` read what only the controller
+knows; the check compiles each in as one value (``registry.FIXED``: automatic
+mode, continuous run, a virtual controller, another system id) and its verdicts
+rest on that value (RMC702 says so).  Code guarded by another reading is still
+reachable: on a controller in manual mode, on the robot's own operating system.
+The readings probe (``api``'s coverage probe, ``CheckConfig.free_readings``) lets
+each call read any value of the reading's real domain, chosen at each call (the
+operator may turn the key between two calls), so that coverage can tell such code
+from dead code.  Verdicts never run with it.
+"""
+from __future__ import annotations
+
+from typing import Callable
+
+from ... import ast
+from ..expressions import Compiled
+from .environment_model import where
+
+# reading (canonical name) -> the symbolic constants or truth values a controller returns
+# (the check's fixed value first)
+DOMAINS = {
+    "OPMODE": ("OP_AUTO", "OP_MAN_PROG", "OP_MAN_TEST", "OP_UNDEF"),
+    "RUNMODE": ("RUN_CONT_CYCLE", "RUN_INSTR_FWD", "RUN_INSTR_BWD", "RUN_SIM",
+                "RUN_STEP_MOVE", "RUN_UNDEF"),
+    "ROBOS": (False, True),
+    "ISSYSID": (False, True),
+}
+
+
+def probed_reading(compiler, call, fixed: Callable, rapid_type) -> Compiled:
+    """The compiled call of a reading (a ``DOMAINS`` key): ``fixed(m)``, or in the
+    readings probe any value of its domain, a choice named after the call."""
+    domain = tuple(_value(compiler, value) for value in DOMAINS[call.name.key])
+    label = f"{call.name.text} at {where(call.span)}"
+
+    def read(m):
+        chooser = m.chooser
+        if chooser.check_mode and getattr(getattr(chooser, "config", None), "free_readings",
+                                          False):
+            return m.choose(label, domain)
+        return fixed(m)
+    return Compiled(read, rapid_type)
+
+
+def _value(compiler, value):
+    if isinstance(value, bool):
+        return value
+    return compiler.linker.system_symbol(ast.Name.of(value)).value
+
