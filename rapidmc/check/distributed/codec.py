@@ -19,10 +19,11 @@ Two codecs, one per kind of state table, with one interface (``Partition`` uses 
 
 Interface: ``successor_keys(id, state, successors)`` (a key per successor, in the model's
 order, from the successor states or from ``successors(state)``; equal keys: equal states,
-for the level's deduplication), ``route(keys) -> (owners, items)`` (a chunk at a time),
-``outbox()`` and ``post(outbox, item, parent id)`` (a batch being written: bytes as it
-grows, not an object per state), ``encode(target, outbox)``, ``store(sender, data)``
-(stores the batch's states, yields (id, new, parent id)), ``owns(state, index)``.
+for the level's deduplication), ``outbox()`` (a batch being written), ``send(outboxes, keys,
+parents)`` (a chunk of keys routed to their owners' outboxes, with their parents' ids;
+returns how many went to each), ``encode(target, outbox)``, ``store(sender, data)``
+(stores the batch's states; returns the links to the parents of the new ones, in the order
+they were stored: ``link(sender, parent id)``), ``owns(state, index)``.
 """
 from __future__ import annotations
 
@@ -30,13 +31,23 @@ import hashlib
 import pickle
 import struct
 from array import array
-from typing import Hashable, Iterator, Sequence
+from typing import Hashable, Sequence
 
 from .canonical import canonical_bytes, owner, owner_of_bytes, state_bytes
 
 PROTOCOL = pickle.HIGHEST_PROTOCOL
+ID_BITS = 40                       # a link: sender partition << ID_BITS | the parent's id
+ID_MASK = (1 << ID_BITS) - 1
 _SIZES = struct.Struct("<QQQQ")    # a vector batch's header, frames, data sizes; states
 SLICE = 1 << 16                    # states of a received batch translated at a time
+
+
+def link(partition: int, state_id: int) -> int:
+    return partition << ID_BITS | state_id
+
+
+def unlink(parent: int) -> tuple[int, int]:
+    return parent >> ID_BITS, parent & ID_MASK
 
 
 def codec_for(table, index: int, count: int):
@@ -78,26 +89,28 @@ class PickleCodec:
             successors = successors(state)
         return [_Keyed(state_bytes(successor), successor) for successor in successors]
 
-    def route(self, keys: Sequence["_Keyed"]) -> tuple[list[int], list]:
-        count = self.count
-        return [owner_of_bytes(key.encoded, count) for key in keys], [key.state for key in keys]
-
     def outbox(self) -> tuple[list, array]:
         return [], array("q")
 
-    def post(self, outbox, item, parent: int) -> None:
-        outbox[0].append(item)
-        outbox[1].append(parent)
+    def send(self, outboxes, keys: Sequence["_Keyed"], parents: Sequence[int]) -> list[int]:
+        count = self.count
+        sent = [0] * count
+        for key, parent in zip(keys, parents):
+            target = owner_of_bytes(key.encoded, count)
+            outboxes[target][0].append(key.state)
+            outboxes[target][1].append(parent)
+            sent[target] += 1
+        return sent
 
     def encode(self, target: int, outbox) -> bytes:
         return pickle.dumps(outbox, protocol=PROTOCOL)
 
-    def store(self, sender: int, data: bytes) -> Iterator[tuple[int, bool, int]]:
+    def store(self, sender: int, data: bytes) -> array:
         states, parents = pickle.loads(data)
         intern = self.table.intern
-        for state, parent in zip(states, parents):
-            state_id, new = intern(state, True)
-            yield state_id, new, parent
+        high = sender << ID_BITS
+        return array("q", [high | parent for state, parent in zip(states, parents)
+                           if intern(state, True)[1]])
 
     def owns(self, state: Hashable, index: int) -> bool:
         return owner(state, self.count) == index
@@ -129,7 +142,8 @@ class VectorCodec:
         self.value_map: dict = {}            # per sender: its value id -> this table's
         self.context_map: dict = {}
         self._vectors = table.vectors_of
-        self._intern_parts, self._segments = table.intern_parts, table.segments
+        self._intern_parts = table.intern_parts
+        self._segments_batch, self._intern_batch = table.segments_batch, table.intern_batch
         self._machine = table.step                 # (None: the state is Python's to step)
 
     # ---------------------------------------------------------------- sending
@@ -150,21 +164,49 @@ class VectorCodec:
         return keys
 
     def prepare(self, state: Hashable) -> tuple[bytes, bytes]:
-        """The state's vectors (for ``owners``, ``post``)."""
+        """The state's vectors (for ``owners``)."""
         return self._vectors(state)
 
-    def route(self, keys: Sequence[int]) -> tuple[list[int], list[tuple[bytes, bytes]]]:
-        segments = self._segments
-        items = [segments(key >> 32, key & 0xFFFFFFFF) for key in keys]
-        return self.owners(items), items
+    def send(self, outboxes, keys: Sequence[int], parents: Sequence[int]) -> list[int]:
+        """The chunk's successors, written to their owners' outboxes: their segments read
+        out of the table together (``segments_batch``), their owners computed together, and
+        each owner's share written again in one call."""
+        np = self.np
+        keys = np.array(keys, np.uint64)
+        parents = np.array(parents, np.int64)
+        frames, data, lengths = self._segments_batch(keys.tobytes())
+        owners = self._owners_of(np.frombuffer(frames, np.uint32),
+                                 np.frombuffer(data, np.uint32),
+                                 np.frombuffer(lengths, np.uint32))
+        sent = [0] * self.count
+        for target in range(self.count):
+            mine = owners == target
+            number = int(np.count_nonzero(mine))
+            if not number:
+                continue
+            sent[target] = number
+            if number == len(keys):
+                outboxes[target].append((frames, data, lengths, parents.tobytes()))
+            else:
+                outboxes[target].append((*self._segments_batch(keys[mine].tobytes()),
+                                         parents[mine].tobytes()))
+        return sent
 
     def owners(self, items: Sequence[tuple[bytes, bytes]]) -> list[int]:
-        """The owner of each state (its vectors): a hash over the fingerprints of its
-        context, program counter and values, position by position."""
+        """The owner of each state given by its vectors (``prepare``)."""
+        np = self.np
+        frames = np.frombuffer(b"".join(frame for frame, _ in items), np.uint32)
+        lengths = np.fromiter((len(frame) >> 2 for frame, _ in items), np.uint32, len(items))
+        data = np.frombuffer(b"".join(data for _, data in items), np.uint32)
+        return self._owners_of(frames, data, lengths).tolist()
+
+    def _owners_of(self, frames, data, lengths):
+        """The owners of states (their frame vectors end to end, their data vectors end to
+        end, the frames' lengths): a hash over the fingerprints of each one's context,
+        program counter and values, position by position."""
         np = self.np
         self._fingerprint_new()
-        frames = np.frombuffer(b"".join(frame for frame, _ in items), np.uint32)
-        lengths = np.fromiter((len(frame) >> 2 for frame, _ in items), np.int64, len(items))
+        lengths = lengths.astype(np.int64)
         starts = np.cumsum(lengths) - lengths
         with np.errstate(over="ignore"):
             prints = np.take(self.value_print, frames, mode="clip")
@@ -175,8 +217,7 @@ class VectorCodec:
             mixed = np.add.reduceat(prints * (positions * np.uint64(2) + np.uint64(1))
                                     * np.uint64(_MIX1), starts)
             if self.data_length:
-                data = np.frombuffer(b"".join(data for _, data in items), np.uint32)
-                data = self.value_print[data].reshape(len(items), self.data_length)
+                data = self.value_print[data].reshape(len(lengths), self.data_length)
                 weights = (np.arange(self.data_length, dtype=np.uint64) * np.uint64(2) +
                            np.uint64(1)) * np.uint64(_MIX2)
                 mixed ^= (data * weights).sum(axis=1, dtype=np.uint64)
@@ -185,7 +226,7 @@ class VectorCodec:
             mixed ^= mixed >> np.uint64(27)
             mixed *= np.uint64(_MIX2)
             mixed ^= mixed >> np.uint64(31)
-        return (mixed % np.uint64(self.count)).tolist()
+        return mixed % np.uint64(self.count)
 
     def _fingerprint_new(self) -> None:
         """Fingerprints of the values and contexts the table numbered since the last call."""
@@ -202,22 +243,14 @@ class VectorCodec:
                 (self.context_print, np.fromiter(map(fingerprint, contexts), np.uint64,
                                                  len(contexts))))
 
-    def outbox(self) -> tuple[bytearray, bytearray, array, array]:
-        """A batch being written: frame vectors, data vectors, the frames' lengths (in ids),
-        the parents' ids."""
-        return bytearray(), bytearray(), array("I"), array("q")
-
-    def post(self, outbox, item: tuple[bytes, bytes], parent: int) -> None:
-        frames, data, lengths, parents = outbox
-        frame = item[0]
-        frames += frame
-        data += item[1]
-        lengths.append(len(frame) >> 2)
-        parents.append(parent)
+    def outbox(self) -> list:
+        """A batch being written: chunks of (frame vectors, data vectors, the frames'
+        lengths in ids, the parents' ids), as ``send`` wrote them."""
+        return []
 
     def encode(self, target: int, outbox) -> bytes:
         """A batch for ``target``: the values and contexts numbered since the last batch to
-        it, then the outbox."""
+        it, then the outbox's chunks, each part joined."""
         table = self.table
         values = contexts = ()
         if target != self.index:
@@ -225,15 +258,17 @@ class VectorCodec:
             self.sent_values[target] += len(values)
             contexts = table.exported_contexts(self.sent_contexts[target])
             self.sent_contexts[target] += len(contexts)
-        frames, data, lengths, parents = outbox
         header = pickle.dumps((values, contexts), protocol=PROTOCOL)
-        return b"".join((_SIZES.pack(len(header), len(frames), len(data), len(lengths)),
+        parts = [b"".join(chunk[part] for chunk in outbox) for part in range(4)]
+        frames, data, lengths, parents = parts
+        return b"".join((_SIZES.pack(len(header), len(frames), len(data), len(lengths) >> 2),
                          header, frames, data, lengths, parents))
 
     # -------------------------------------------------------------- receiving
-    def store(self, sender: int, blob: bytes) -> Iterator[tuple[int, bool, int]]:
-        """The batch's states stored, read in place (views of ``blob``) and translated a
-        slice at a time, so a large batch is not copied whole."""
+    def store(self, sender: int, blob: bytes) -> array:
+        """The batch's states stored (``intern_batch``), read in place (views of ``blob``)
+        and translated a slice at a time, so a large batch is not copied whole; the links to
+        the parents of the new ones."""
         np, table = self.np, self.table
         view = memoryview(blob)
         header_size, frames_size, data_size, count = _SIZES.unpack_from(view)
@@ -246,37 +281,33 @@ class VectorCodec:
         at += data_size
         lengths = np.frombuffer(view[at:at + 4 * count], np.uint32)
         at += 4 * count
-        parents = array("q")
-        parents.frombytes(view[at:at + 8 * count])
+        parents = np.frombuffer(view[at:at + 8 * count], np.int64)
         foreign = sender != self.index
         if foreign:
             value_map, context_map = self._maps(sender, values, contexts)
         ends = np.cumsum(lengths, dtype=np.int64)
         width = self.data_length
-        intern = table.intern_vectors
+        intern = self._intern_batch
+        links = array("q")
+        high = np.int64(sender << ID_BITS)
         for first in range(0, count, SLICE):
             last = min(first + SLICE, count)
             begin = int(ends[first - 1]) if first else 0
-            some_frames = frames[begin:int(ends[last - 1])] if last > first else frames[:0]
+            some_frames = frames[begin:int(ends[last - 1])]
             some_data = data[first * width:last * width]
-            starts = ends[first:last] - lengths[first:last] - begin
+            some_lengths = lengths[first:last]
             if foreign:                                # its ids -> this table's ids
+                starts = ends[first:last] - some_lengths - begin
                 mapped = np.take(value_map, some_frames, mode="clip") if len(value_map) \
                     else some_frames.copy()
                 mapped[starts] = context_map[some_frames[starts]]
                 mapped[starts + 1] = some_frames[starts + 1]
                 some_frames = mapped
                 some_data = value_map[some_data] if len(some_data) else some_data
-            frame_bytes, data_bytes = some_frames.tobytes(), some_data.tobytes()
-            step = 4 * width
-            offset = 0
-            for number in range(first, last):
-                end = offset + 4 * int(lengths[number])
-                local = number - first
-                state_id, new = intern(frame_bytes[offset:end],
-                                       data_bytes[local * step:(local + 1) * step], True)
-                offset = end
-                yield state_id, new, parents[number]
+            _, new = intern(some_frames, some_data, some_lengths)
+            fresh = np.frombuffer(new, np.bool_)
+            links.frombytes((parents[first:last][fresh] | high).tobytes())
+        return links
 
     def _maps(self, sender: int, values, contexts) -> tuple:
         """The arrays from ``sender``'s value and context ids to this table's, extended by
