@@ -33,7 +33,7 @@ import struct
 from array import array
 from typing import Hashable, Sequence
 
-from .canonical import canonical_bytes, owner, owner_of_bytes, state_bytes
+from .canonical import canonical_bytes
 
 PROTOCOL = pickle.HIGHEST_PROTOCOL
 ID_BITS = 40                       # a link: sender partition << ID_BITS | the parent's id
@@ -63,31 +63,100 @@ def codec_for(table, index: int, count: int):
     return PickleCodec(table, count)
 
 
-class _Keyed:
-    """A successor with its canonical bytes, equal (and hashed) by those bytes alone."""
-    __slots__ = ("encoded", "state")
+# odd 64-bit constants of the owner hash (any fixed ones do; these are splitmix64's)
+_GOLDEN = 0x9E3779B97F4A7C15
+_MIX1, _MIX2 = 0xBF58476D1CE4E5B9, 0x94D049BB133111EB
+_MASK64 = (1 << 64) - 1
 
-    def __init__(self, encoded: bytes, state):
-        self.encoded, self.state = encoded, state
+
+def fingerprint(value) -> int:
+    """A 64-bit fingerprint of a value, the same in every process (canonical bytes)."""
+    return int.from_bytes(hashlib.blake2b(canonical_bytes(value), digest_size=8).digest(),
+                          "little")
+
+
+class _Keyed:
+    """A successor with its parts' fingerprints (``PartPrints``): hashed by them, equal to
+    another successor exactly when the states are equal (the fingerprints only sort out
+    the unequal ones cheaply)."""
+    __slots__ = ("prints", "state")
+
+    def __init__(self, prints: tuple, state):
+        self.prints, self.state = prints, state
 
     def __eq__(self, other) -> bool:
-        return self.encoded == other.encoded
+        return self.prints == other.prints and self.state == other.state
 
     def __hash__(self) -> int:
-        return hash(self.encoded)
+        return hash(self.prints)
+
+
+class PartPrints:
+    """The fingerprint (``fingerprint``: of its canonical bytes, the same in every process) of
+    each part of a tuple-shaped state, remembered by the part's identity and then by its
+    value: a successor hands on most parts of its state unchanged, as the same objects,
+    found without hashing them (a 512-element array too); a part a step wrote is often
+    equal to one met before (found by value), and only a new value is encoded.  The
+    remembered parts are kept alive, so an identity is never another object's; each memory
+    is emptied when it grows past ``limit``."""
+
+    def __init__(self, limit: int = 1 << 16):
+        self.by_identity: dict = {}     # id(part) -> (part, fingerprint)
+        self.by_value: dict = {}        # part -> fingerprint
+        self.limit = limit
+
+    def __call__(self, state) -> tuple:
+        if not isinstance(state, tuple):
+            return (fingerprint(state),)
+        by_identity = self.by_identity
+        prints = []
+        for part in state:
+            entry = by_identity.get(id(part))
+            if entry is None or entry[0] is not part:
+                if len(by_identity) >= self.limit:
+                    by_identity.clear()
+                entry = by_identity[id(part)] = (part, self._by_value(part))
+            prints.append(entry[1])
+        return tuple(prints)
+
+    def _by_value(self, part) -> int:
+        try:
+            found = self.by_value.get(part)
+        except TypeError:                   # (an unhashable part: encoded each time)
+            return fingerprint(part)
+        if found is None:
+            if len(self.by_value) >= self.limit:
+                self.by_value.clear()
+            found = self.by_value[part] = fingerprint(part)
+        return found
+
+
+def owner_of_prints(prints: tuple, count: int) -> int:
+    """The partition of a state by its parts' fingerprints, position by position."""
+    mixed = 0
+    for position, value in enumerate(prints):
+        mixed = (mixed + value * (2 * position + 1) * _MIX1) & _MASK64
+    mixed ^= mixed >> 30
+    mixed = mixed * _MIX1 & _MASK64
+    mixed ^= mixed >> 27
+    mixed = mixed * _MIX2 & _MASK64
+    mixed ^= mixed >> 31
+    return mixed % count
 
 
 class PickleCodec:
-    """States pickled by the standard C pickler, owned by ``canonical.owner``."""
+    """States pickled by the standard C pickler, owned by ``owner_of_prints``."""
 
     def __init__(self, table, count: int):
         self.table, self.count = table, count
+        self.prints = PartPrints()
 
     def successor_keys(self, state_id: int, state, successors) -> list:
-        """Keys: (canonical bytes, the state)."""
+        """Keys: (the parts' fingerprints, the state)."""
         if callable(successors):
             successors = successors(state)
-        return [_Keyed(state_bytes(successor), successor) for successor in successors]
+        prints = self.prints
+        return [_Keyed(prints(successor), successor) for successor in successors]
 
     def outbox(self) -> tuple[list, array]:
         return [], array("q")
@@ -96,7 +165,7 @@ class PickleCodec:
         count = self.count
         sent = [0] * count
         for key, parent in zip(keys, parents):
-            target = owner_of_bytes(key.encoded, count)
+            target = owner_of_prints(key.prints, count)
             outboxes[target][0].append(key.state)
             outboxes[target][1].append(parent)
             sent[target] += 1
@@ -113,18 +182,7 @@ class PickleCodec:
                            if intern(state, True)[1]])
 
     def owns(self, state: Hashable, index: int) -> bool:
-        return owner(state, self.count) == index
-
-
-# odd 64-bit constants of the owner hash (any fixed ones do; these are splitmix64's)
-_GOLDEN = 0x9E3779B97F4A7C15
-_MIX1, _MIX2 = 0xBF58476D1CE4E5B9, 0x94D049BB133111EB
-
-
-def fingerprint(value) -> int:
-    """A 64-bit fingerprint of a value, the same in every process (canonical bytes)."""
-    return int.from_bytes(hashlib.blake2b(canonical_bytes(value), digest_size=8).digest(),
-                          "little")
+        return owner_of_prints(self.prints(state), self.count) == index
 
 
 class VectorCodec:
