@@ -134,6 +134,7 @@ def measure_split(name: str, modulo: int) -> dict:
     started = time.process_time()
     single = find_reachable(system, system.failed, max_states=None)
     cpu = {"single": time.process_time() - started}
+    system = model_of(name, modulo).system      # (afresh: the model's caches are warm)
     started = time.process_time()
     parts, _, _ = search_here(system, 2)
     cpu["split"] = time.process_time() - started
@@ -181,6 +182,7 @@ def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
             "sent": sum(f["sent"] for f in figures),
             "sent_bytes": sum(f["sent_bytes"] for f in figures),
             "worker_rss_kb": [f["max_rss_kb"] for f in figures],
+            "worker_start_rss_kb": [f["start_rss_kb"] for f in figures],
             "worker_cpu": [f["cpu_seconds"] for f in figures],
             "worker_step_cpu": [f["step_seconds"] for f in figures],
             "worker_states": [f["states"] for f in figures]}
