@@ -7,8 +7,8 @@ state table of the engine's (``native.state_table``: the model's packed table wh
 offers one, else the compiled one where built), each
 with the link to the state it was first reached from, which may live in another partition.
 
-A link is one number: ``sender << ID_BITS | id`` (the sender partition and the parent's id
-there), -1 for an initial state, so parents cost an ``array`` slot each.
+A link is one number (``codec.link``): ``sender << ID_BITS | id`` (the sender partition and
+the parent's id there), -1 for an initial state, so parents cost an ``array`` slot each.
 
 The search runs in breadth-first levels, each in one or more rounds.  A round is one call
 of ``step``: ``receive`` stores the states the other partitions sent in the round before
