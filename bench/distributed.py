@@ -236,8 +236,8 @@ def print_safety(names, modulo: int, workers: int) -> None:
     """One process against the workers, per model, then the whole-controller family's totals
     (the issue's speed target) and each worker's peak RSS against one process's."""
     print(f"{'model':16} {'states':>9} {'levels':>6} {'1 proc s':>8} {f'{workers} wkr s':>8} "
-          f"{'wall x':>6} {'1 CPU s':>7} {'wkr CPU s':>11} {'in step s':>11} {'drv s':>5} {'CPU x':>6} "
-          f"{'B/state':>7} {'RSS 1 MB':>8} {'RSS wkr MB':>11} {'RSS %':>5} {'balance':>7}",
+          f"{'wall x':>6} {'1 CPU s':>7} {'wkr CPU s':>11} {'in step s':>11} {'drv s':>5} "
+          f"{'CPU x':>6} {'B/state':>7} {'RSS 1 MB':>8} {'RSS wkr MB':>11} {'RSS %':>5} {'balance':>7}",
           flush=True)
     family = {"single": 0.0, "workers": 0.0, "single_cpu": 0.0, "worker_cpu": 0.0}
     for name in names:
