@@ -24,9 +24,11 @@ the machine may be shared, where wall times mean little and CPU times are the fi
 ``--issue``: only the issue's figures, the whole-controller family and counters N=10 (a few
 minutes on a quiet 2-core machine).
 
-``--ltl``: the same for each whole-controller model's LTL property (bench/tasks.py's, which
-holds: the whole product is searched), in one process (``check_property``, partial-order
-reduction off as on a cluster) against OWCTY on the workers (``owcty``).
+``--ltl``: the same for each whole-controller model's LTL property (bench/tasks.py's), a
+property of each case study (specs/) and the counters' (``G`` of every counter below the
+modulo), all of which hold, so the whole product is searched: in one process
+(``check_property``, partial-order reduction off as on a cluster) against OWCTY on the
+workers (``owcty``), with the one process's CPU seconds against the busier worker's.
 
 ``--split``: without Ray, two partitions driven in one process (``partition.search_here``):
 their CPU seconds together against one process's, and the bytes they sent per state.
@@ -47,7 +49,7 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
-from check import counters_program  # noqa: E402  (bench/check.py)
+from check import counters_formula, counters_program  # noqa: E402  (bench/check.py)
 from tasks import MODELS, load      # noqa: E402  (bench/tasks.py)
 
 from rapidmc import api  # noqa: E402
@@ -89,22 +91,43 @@ def pickled_bytes(system, sample: int = 300) -> float:
     return sum(len(pickle.dumps(state, protocol=5)) for state in seen) / len(seen)
 
 
-def ltl_model_of(name: str):
+# (name, case study, program, property of specs/STUDY.ltl): properties that hold
+STUDIES = (("sorter A P2", "sorter", "sorter_a.mod", "P2"),
+           ("door safe D2", "door", "door_safe.mod", "D2"))
+
+
+def ltl_model_of(name: str, modulo: int = 4):
     """The model with its LTL property, partial-order reduction off (as on a cluster)."""
+    options = unreduced_order(api.CheckOptions())
+    if name.startswith("counters N="):
+        inputs = int(name.split("=")[1])
+        path = Path(tempfile.mkdtemp()) / "counters.mod"
+        path.write_text(counters_program(inputs, modulo))
+        return api.prepare(api.load_program([str(path)]),
+                           [api.property_from_text(f"bound: {counters_formula(inputs, modulo)}")],
+                           options)
+    study = next((study for study in STUDIES if study[0] == name), None)
+    if study is not None:
+        _, folder, program, prop = study
+        root = Path(__file__).resolve().parent.parent
+        properties = [p for p in api.read_properties(str(root / "specs" / f"{folder}.ltl"))
+                      if p.name == prop]
+        files = [str(root / "case_studies" / folder / f) for f in (program, "plant.mod")]
+        return api.prepare(api.load_program(files[:1], files[1:]), properties, options)
     _, files, tasks, formula, options = next(model for model in MODELS if model[0] == name)
     return api.prepare(load(files, tasks), [api.property_from_text(formula)],
                        unreduced_order(api.CheckOptions(**options)))
 
 
-def measure_ltl(name: str, mode: str, workers: int) -> dict:
-    model = ltl_model_of(name)
+def measure_ltl(name: str, mode: str, modulo: int, workers: int) -> dict:
+    model = ltl_model_of(name, modulo)
     prop, buchi, valuation = model.jobs[0]
     if mode == "ltl-single":
         from rapidmc.check import check_property
-        started = time.perf_counter()
+        started, cpu = time.perf_counter(), time.process_time()
         result = check_property(model.system, buchi, valuation, max_states=None)
         return {"verdict": result.verdict, "states": result.stats.product_states,
-                "seconds": time.perf_counter() - started,
+                "seconds": time.perf_counter() - started, "cpu": time.process_time() - cpu,
                 "max_rss_kb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss}
     import ray
     from rapidmc.check.budget import SearchBudget
@@ -121,6 +144,7 @@ def measure_ltl(name: str, mode: str, workers: int) -> dict:
     return {"verdict": result.verdict, "states": result.stats.product_states,
             "seconds": seconds, "start_seconds": start_seconds,
             "sent": sum(f["sent"] for f in figures), "pickled": pickled_bytes(model.system),
+            "sent_bytes": sum(f.get("sent_bytes", 0) for f in figures),
             "worker_rss_kb": [f["max_rss_kb"] for f in figures],
             "worker_cpu": [f["cpu_seconds"] for f in figures],
             "worker_states": [f["states"] for f in figures]}
@@ -147,7 +171,7 @@ def measure_split(name: str, modulo: int) -> dict:
 def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
     """One measurement in this process (the parent runs each in a fresh one)."""
     if mode.startswith("ltl-"):
-        return measure_ltl(name, mode, workers)
+        return measure_ltl(name, mode, modulo, workers)
     if mode == "split":
         return measure_split(name, modulo)
     model = model_of(name, modulo)
@@ -215,7 +239,8 @@ def main() -> None:
         print(json.dumps(measure(*args.measure, args.modulo, args.workers)))
         return
     names = [model[0] for model in MODELS] + \
-        [f"counters N={n}" for n in args.counters.split(",") if n and not args.ltl]
+        [study[0] for study in STUDIES if args.ltl] + \
+        [f"counters N={n}" for n in args.counters.split(",") if n]
     names = [name for name in names if not args.only or args.only in name]
     if args.split:
         print_split(names, args.modulo)
@@ -277,8 +302,10 @@ def _each(values, form: str) -> str:
 def print_ltl(names, modulo: int, workers: int) -> None:
     modes = ("ltl-single", "ltl-workers")
     print(f"{'model':16} {'states':>9} {'1 proc s':>8} {f'{workers} wkr s':>8} "
-          f"{'speed-up':>8} {'us/state':>8} {'start s':>7} {'sent/st':>7} {'B/state':>7} "
-          f"{'RSS 1 MB':>8} {'RSS wkr MB':>12} {'balance':>9} {'wkr CPU s':>11}")
+          f"{'speed-up':>8} {'us/state':>8} {'start s':>7} {'sent/st':>7} {'B sent/st':>9} "
+          f"{'pickled B':>9} "
+          f"{'RSS 1 MB':>8} {'RSS wkr MB':>12} {'balance':>9} {'1 CPU s':>7} {'wkr CPU s':>11} "
+          f"{'CPU x':>6}")
     for name in names:
         single = fresh(name, modes[0], modulo, workers)
         spread = fresh(name, modes[1], modulo, workers)
@@ -290,8 +317,11 @@ def print_ltl(names, modulo: int, workers: int) -> None:
         print(f"{name:16} {states:>9,} {single['seconds']:>8.2f} {spread['seconds']:>8.2f} "
               f"{single['seconds'] / spread['seconds']:>7.2f}x "
               f"{1e6 * single['seconds'] / states:>8.0f} {spread['start_seconds']:>7.1f} "
-              f"{spread['sent'] / states:>7.2f} {spread['pickled']:>7.0f} "
-              f"{single['max_rss_kb'] / 1024:>8.0f} {rss:>12} {balance:>9} {cpu:>11}", flush=True)
+              f"{spread['sent'] / states:>7.2f} {spread['sent_bytes'] / states:>9.0f} "
+              f"{spread['pickled']:>9.0f} "
+              f"{single['max_rss_kb'] / 1024:>8.0f} {rss:>12} {balance:>9} "
+              f"{single['cpu']:>7.2f} {cpu:>11} "
+              f"{single['cpu'] / max(spread['worker_cpu']):>5.2f}x", flush=True)
 
 
 def print_split(names, modulo: int) -> None:

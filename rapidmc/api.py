@@ -364,23 +364,32 @@ def check(program: Program, properties: Iterable[Property] = (),
 def check_model(model: Model, progress: ProgressFactory = lambda: None) -> CheckReport:
     """``check`` on a prepared model; ``progress()`` gives each search its progress line."""
     cluster = model.options.cluster
-    with cluster.session() if cluster is not None else contextlib.nullcontext() as ray:
-        searches = _Searches(model, progress, ray)
-        try:
+    with environment_faults():
+        with cluster.session() if cluster is not None else contextlib.nullcontext() as ray:
+            searches = _Searches(model, progress, ray)
             results = searches.builtin_checks() + [searches.property(*job) for job in model.jobs]
-        except EnvironmentFault as exc:
-            raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
-    if searches.facts.complete and any(d.probes for d in model.messages):
-        searches.facts.statements.executed |= _probed_lines(model)
-    if searches.facts.complete and searches.facts.waits_for_closures():
-        lines, complete = _closure_probe(model)
-        searches.facts.statements.executed |= lines
-        searches.facts.closures_tried = complete
+        if searches.facts.complete and any(d.probes for d in model.messages):
+            searches.facts.statements.executed |= _probed_lines(model)
+        if searches.facts.complete and searches.facts.waits_for_closures():
+            lines, complete = _closure_probe(model)
+            searches.facts.statements.executed |= lines
+            searches.facts.closures_tried = complete
     resting_on = assumptions(model.program)
     results = [replace(r, assumes=for_verdict(resting_on, r.result, model.describer))
                for r in results]
     return CheckReport(results, _findings(model, results, searches.facts, searches.notes),
                        model.describer, searches.facts.executed(), searches.facts.inputs_tried())
+
+
+@contextlib.contextmanager
+def environment_faults():
+    """An environment model that goes wrong in any search (a check's verdicts, its coverage
+    probes, ``rapidmc graph``) is the user's modelling error, RMC503, never an internal
+    error."""
+    try:
+        yield
+    except EnvironmentFault as exc:
+        raise error(ENVIRONMENT, f"environment model: {one_line(str(exc))}") from None
 
 
 def _findings(model: Model, results: list[PropertyResult],

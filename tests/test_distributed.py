@@ -26,6 +26,7 @@ import socket
 import subprocess
 import sys
 import tempfile
+import threading
 from pathlib import Path
 from types import SimpleNamespace
 
@@ -238,6 +239,24 @@ def test_counterexample_of_two_workers_replays(cluster, name, check, tmp_path, m
     assert code == 0, out + err
 
 
+def test_lasso_below_many_accepting_states_on_no_cycle_replays(cluster, tmp_path,
+                                                              monkeypatch):
+    """The lasso takes one spread however many accepting states OWCTY leaves that lie on no
+    cycle: here 4,096 (over 2,000 per partition) come breadth-first before the one that
+    does, where the lasso used to try them one by one and gave up after 1,024 per
+    partition with an internal error."""
+    monkeypatch.chdir(HERE)
+    report = _json(["check", "accepting_below_a_cycle.mod", "--ltl", "accepting_below_a_cycle.ltl",
+                    "--format", "json", "--quiet", "--workers", "2"])
+    found = _by_name(report)["finally_done"]
+    assert (found["verdict"], found["stats"]["engine"]) == ("VIOLATED", "distributed-owcty")
+    trace = tmp_path / "trace.json"
+    trace.write_text(json.dumps(report))
+    code, out, err = _run(["replay", str(trace), "--property", "finally_done"])
+    assert code == 0, out + err
+    assert "the counterexample replays" in out + err
+
+
 def test_swarm_finds_a_planted_deep_error_the_exhaustive_search_cannot_reach(cluster):
     program = str(HERE / "deep_error.mod")
     bound = ["--max-states", "5000", "--format", "json", "--quiet"]
@@ -358,10 +377,11 @@ def test_ray_address_joins_a_running_cluster(tmp_path):
 def test_an_address_with_no_cluster_is_a_diagnostic(monkeypatch):
     """Ray's failure to join (here: refused) is RMC754 with exit 2, not an internal error."""
     require_tool(ray is not None, "RAPIDMC_REQUIRE_RAY", "Ray is not installed (the 'ray' extra)")
-    from rapidmc.check.distributed import Cluster
+    from rapidmc.check.distributed import Cluster, cluster as joining
 
     def refuse(**options):
         raise ConnectionError("Failed to connect to Ray cluster at 127.0.0.1:9")
+    monkeypatch.setattr(joining, "_answers", lambda address, seconds: None)   # (Ray is asked)
     monkeypatch.setattr(ray, "is_initialized", lambda: False)
     monkeypatch.setattr(ray, "init", refuse)
     with pytest.raises(UserError) as raised:
@@ -369,3 +389,52 @@ def test_an_address_with_no_cluster_is_a_diagnostic(monkeypatch):
             pass
     assert raised.value.exit_code == 2
     assert raised.value.diagnostics[0].code.code == "RMC754"
+
+
+def test_a_host_that_does_not_exist_is_a_diagnostic_not_a_hang():
+    """``--ray notahost:1``: Ray would retry for minutes; the check ends at once with RMC754
+    and exit 2 (the timeout is a hang's, far above the wait it allows)."""
+    require_tool(ray is not None, "RAPIDMC_REQUIRE_RAY", "Ray is not installed (the 'ray' extra)")
+    run = subprocess.run([sys.executable, "-m", "rapidmc", "check", "prog.mod", "--ray",
+                          "notahost:1", "--quiet"], cwd=CASES_DIR / "loop_toggle",
+                         capture_output=True, text=True, timeout=100)
+    assert run.returncode == 2, run.stderr[-2000:]
+    assert "--ray notahost:1: no Ray cluster to join there [RMC754]" in run.stderr
+
+
+@pytest.mark.parametrize("reply, why", [(None, "no answer within 1 s"),
+                                        (b"HTTP/1.1 400 Bad Request\r\n\r\n",
+                                         "answers, but not as a Ray cluster does")])
+def test_an_address_that_does_not_answer_as_ray_is_a_diagnostic(monkeypatch, reply, why):
+    """A port that accepts but says nothing, or answers another protocol: RMC754 within the
+    wait (``CONNECT_SECONDS``, here 1 s), and Ray is never asked (it would retry for
+    minutes)."""
+    require_tool(ray is not None, "RAPIDMC_REQUIRE_RAY", "Ray is not installed (the 'ray' extra)")
+    from rapidmc.check.distributed import Cluster, cluster as joining
+
+    def asked(**options):
+        raise AssertionError("Ray was asked to join an address that does not answer as Ray")
+    monkeypatch.setattr(joining, "CONNECT_SECONDS", 1)
+    monkeypatch.setattr(ray, "is_initialized", lambda: False)
+    monkeypatch.setattr(ray, "init", asked)
+    with socket.socket() as listener:
+        listener.bind(("127.0.0.1", 0))
+        listener.listen(1)
+        port = listener.getsockname()[1]
+
+        def serve():
+            peer, _ = listener.accept()
+            with peer, contextlib.suppress(OSError):    # (the prober may reset it)
+                if reply is not None:
+                    peer.recv(64)
+                    peer.sendall(reply)
+                while peer.recv(64):       # (until the prober hangs up)
+                    pass
+        server = threading.Thread(target=serve, daemon=True)
+        server.start()
+        with pytest.raises(UserError) as raised:
+            with Cluster(address=f"127.0.0.1:{port}").session():
+                pass
+    assert raised.value.exit_code == 2
+    assert raised.value.diagnostics[0].code.code == "RMC754"
+    assert why in str(raised.value.diagnostics[0])

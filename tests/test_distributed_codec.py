@@ -10,15 +10,17 @@ the depth one process finds it.
 """
 from __future__ import annotations
 
+import gc
 from dataclasses import replace
 from pathlib import Path
 
 import pytest
 
 from rapidmc import api
-from rapidmc.check import find_reachable, native
+from rapidmc.check import check_property, find_reachable, native
 from rapidmc.check.distributed.codec import PickleCodec, VectorCodec, codec_for
-from rapidmc.check.distributed.partition import search_here, unlink
+from rapidmc.check.distributed.partition import link, search_here, unlink
+from rapidmc.check.distributed.product_partition import product_here
 from rapidmc.check.result import HOLDS, VIOLATED
 
 pytest.importorskip("numpy")
@@ -36,11 +38,16 @@ MODELS = {
 
 
 def system_of(name: str):
+    return model_of(name).system
+
+
+def model_of(name: str, formulas=()):
     files, env, tasks = MODELS[name]
     program = api.load_program([str(f) for f in files], [str(f) for f in env], add_tasks=tasks)
     options = api.CheckOptions()
     options = replace(options, reductions=replace(options.reductions, partial_order=False))
-    return api.prepare(program, [], options).system
+    properties = [api.property_from_text(formula) for formula in formulas]
+    return api.prepare(program, properties, options)
 
 
 def breadth_first(system, limit: int) -> list:
@@ -97,11 +104,16 @@ def test_vectors_sent_to_another_table_are_stored_as_the_same_states():
         outboxes = [sender.outbox(), sender.outbox()]
         keys = [(lambda frame, data: frame << 32 | data)(*sender_table.intern_parts(
             *sender.prepare(state))) for state in batch]
-        sent = sender.send(outboxes, keys, range(len(batch)))
-        assert sum(sent) == len(batch)
+        owners = sender.send(outboxes, keys, range(len(batch)))
+        assert owners == sender.owners([sender.prepare(state) for state in batch])
         before = len(receiver_table)
         for target in (0, 1):         # (each owner's share, written for the receiver)
-            links = receiver.store(0, sender.encode(1, outboxes[target]))
+            ids, new, fields = receiver.store(0, sender.encode(1, outboxes[target]))
+            assert [receiver_table[i] for i in ids.tolist()] == \
+                [batch[field] for field in fields.tolist()]
+            links = receiver.store_links(0, sender.encode(1, outboxes[target]))
+            assert not links                    # (stored already: nothing new again)
+            links = [link(0, field) for field, fresh in zip(fields.tolist(), new) if fresh]
             assert all(unlink(each)[0] == 0 for each in links)
             stored += [(receiver_table[state_id], batch[unlink(each)[1]]) for state_id, each
                        in zip(range(before, len(receiver_table)), links)]
@@ -154,3 +166,31 @@ def test_partitions_find_the_error_at_its_depth(engine):
         partition, state_id = unlink(parent)
     assert len(path) == len(one.prefix)
     assert system.failed(path[0]) and path[-1] in system.initial_states()
+
+
+# properties that hold, so that one process too searches the whole product
+LTL = {"two tasks": 'exclusive: G "inside <= 1"', "socket server": 'sane: G "done >= -1"'}
+
+
+@pytest.mark.parametrize("engine", ["native", "python"])
+@pytest.mark.parametrize("name", ["socket server", "two tasks"])
+def test_ltl_partitions_count_what_one_process_counts(name, engine):
+    """The LTL workers' product search travels by the same codecs (vectors for a packed
+    model, no pickles) and stores the same product states and transitions as one process;
+    while it runs its objects are out of the cycle collector's reach, and handed back."""
+    if engine == "native" and not native.available():
+        pytest.skip("the native core is not built here")
+    with native.engine_used(engine):
+        model = model_of(name, [LTL[name]])
+        prop, buchi, valuation = model.jobs[0]
+        one = check_property(model.system, buchi, valuation, max_states=None)
+        frozen = []
+        parts = product_here(model, prop.name, 2, on_level=lambda: frozen.append(
+            gc.get_freeze_count()))
+    assert {type(part.codec) for part in parts} == \
+        {VectorCodec if engine == "native" else PickleCodec}
+    assert one.verdict == HOLDS
+    assert sum(len(part.keys) for part in parts) == one.stats.product_states
+    assert sum(len(part.edges) for part in parts) == one.stats.transitions
+    assert all(len(part.keys) for part in parts)
+    assert frozen and min(frozen) > 0 and gc.get_freeze_count() == 0

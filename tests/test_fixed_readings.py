@@ -23,15 +23,16 @@ TAIL = "  ENDPROC\nENDMODULE\n"
 FIRST_LINE = HEAD.count("\n") + 1
 
 
-def warnings_of(body: str, extra: str = "") -> list[tuple[str, int, int]]:
-    text = HEAD + body + TAIL.replace("ENDMODULE", extra + "ENDMODULE")
+def warnings_of(body: str, extra: str = "", HEAD_ROBOT: bool = False) -> list[tuple[str, int, int]]:
+    head = HEAD.replace("  PROC main()", ROBOT + "  PROC main()") if HEAD_ROBOT else HEAD
+    text = head + body + TAIL.replace("ENDMODULE", extra + "ENDMODULE")
     program = build(ast.Program(parse_text(text, "readings.mod")))
     found = []
     for diagnostic in fixed_readings(program):
         assert diagnostic.code.code == "RMC702" and diagnostic.severity == "warning"
         name = diagnostic.message.split()[0]
         calls = int(re.search(r"\((\d+) calls?\)", diagnostic.message).group(1))
-        found.append((name, diagnostic.span.line - FIRST_LINE + 1, calls))
+        found.append((name, diagnostic.span.line - FIRST_LINE + 1 - HEAD_ROBOT, calls))
     return found
 
 
@@ -75,3 +76,25 @@ def test_the_html_page_shades_only_unreached_lines_not_readings(tmp_path, capsys
     text = page.read_text()
     data = json.loads(text.split('id="report-data"', 1)[1].split(">", 1)[1].split("</script>")[0])
     assert [entry["line"] for entry in data["unreached"]] == [FIRST_LINE + 3]
+
+
+ROBOT = "  VAR robtarget seen;\n"
+
+
+@pytest.mark.parametrize("body, expected", [
+    # T_ROB1 is the one task loaded (the main task's controller name): its robot is kept
+    ('    seen := CRobT(\\TaskName:="T_ROB1");\n', []),
+    ('    seen := CRobT(\\TaskRef:=T_ROB1Id);\n', []),
+    ('    seen := CRobT();\n', []),
+    # no loaded task of that name: the calling task's robot is read, and said so
+    ('    seen := CRobT(\\TaskName:="T_ROB2");\n    seen := CRobT(\\TaskName:="T_ROB2");\n',
+     [("CRobT", 1, 2)]),
+    ('    speed := CJointT(\\TaskName:="T_ROB2").robax.rax_1;\n', [("CJointT", 1, 1)]),
+    # a name known only when the program runs
+    ('    text := "T_ROB1";\n    seen := CRobT(\\TaskName:=text);\n', [("CRobT", 2, 1)]),
+])
+def test_a_robot_reading_of_a_task_not_loaded_is_named(body, expected):
+    """``CRobT(\\TaskName:=...)``, ``\\TaskRef``: the named task's robot where the check
+    loads that task (tests/check/tasks_crobt_named_task), else the calling task's, with a
+    warning that says so."""
+    assert warnings_of(body, HEAD_ROBOT=True) == expected

@@ -147,7 +147,9 @@ def test_check_cases_agree(case):
     props = api.read_properties(str(case / "props.ltl"))
     for reductions in (ALL, NONE):
         staged, answered = compare_staged(program, props, reductions)
-        assert staged > 0
+        # a task reading another's robot (tasks_crobt_named_task) steps through the general
+        # driver only: a view carries its own task's robot
+        assert (staged == 0) if program.reads_task_robots else (staged > 0)
 
 
 def test_backup_of_two_tasks_agrees():

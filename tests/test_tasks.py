@@ -151,3 +151,35 @@ def test_environment_code_reading_the_robot_of_two_motion_tasks_is_a_modelling_e
     assert "ERR_NOT_MOVETASK" in err and "[RMC503]" in err, err
     assert "each of the motion tasks main task, task 2 (b) moves its own" in err, err
     assert main(["check", f["a"], "--env", f["env"], "--quiet"]) == 0   # one robot: read
+
+
+CATCHER = """MODULE Catcher
+  PERS bool caught := FALSE;
+  VAR num zero := 0;
+  VAR num q := 0;
+  PROC main()
+    q := 1 / zero;
+    TPWrite "catcher ERRNO " \\Num:=ERRNO;
+    caught := TRUE;
+  ERROR
+    TRYNEXT;
+  ENDPROC
+ENDMODULE
+"""
+
+LOOKER = """MODULE Looker
+  PERS bool caught := FALSE;
+  PROC main()
+    WaitUntil caught;
+    TPWrite "looker ERRNO " \\Num:=ERRNO;
+  ENDPROC
+ENDMODULE
+"""
+
+
+def test_each_task_has_its_own_errno_when_run(tmp_path, capsys):
+    """``rapidmc run`` steps the tasks in turn on one machine: the error the catcher's
+    handler caught sets the catcher's ERRNO only (semantics.task_registers)."""
+    f = files(tmp_path, catcher=CATCHER, looker=LOOKER)
+    assert main(["run", f["catcher"], "--add-task", f["looker"]]) == 0
+    assert capsys.readouterr().out.splitlines() == ["catcher ERRNO 1001", "looker ERRNO 0"]

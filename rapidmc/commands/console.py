@@ -20,6 +20,7 @@ from ..semantics.errors import errno_name, error_detail
 from ..semantics.machine import Machine
 from ..semantics.program import Program
 from ..semantics.state import ENDED, FAILED, RUNNING, STOPPED, State
+from ..semantics.task_registers import pending_served
 from ..semantics.step import (Chooser, EnvironmentFault, execute_step, run_instruction,
                              signal_edges, start_state)
 from ..semantics.timing import advance_to, next_event, schedule
@@ -147,7 +148,7 @@ def _wake(m: Machine) -> None:
     """The program makes no progress: let virtual time pass, or report a deadlock."""
     due = next_event(m.interrupts)
     if due is None or m.interrupts.pending:
-        if m.interrupts.pending and m.interrupts.enabled:
+        if pending_served(m.program, m.interrupts):
             return                       # a trap is about to run
         frame = (m.frames or [stack[-1] for stack in m.tasks if stack])[-1]
         span = m.program.routines[frame.routine].code[frame.pc].span

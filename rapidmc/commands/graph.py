@@ -18,6 +18,7 @@ from pathlib import Path
 
 import networkx as nx
 
+from ..api import environment_faults
 from ..diagnostics import EXIT_OK, EXIT_UNKNOWN, USAGE, error
 from ..report.state_graph import StateGraph, product_graph, state_graph
 from .check import add_model_arguments, prepare_model
@@ -62,13 +63,15 @@ def execute(args: argparse.Namespace) -> int:
     bounds = dict(max_states=args.max_states, max_seconds=args.max_seconds)
     from ..check import Progress
     progress = Progress(sys.stderr, quiet=args.quiet)
-    if args.property is None:
-        result = state_graph(model, progress=progress, **bounds)
-    else:
-        if args.property not in {prop.name for prop in model.properties}:
-            raise error(USAGE, f"--property {quoted(args.property)} names no property "
-                        "(give it with --ltl or --formula)")
-        result = product_graph(model, args.property, progress=progress, **bounds)
+    if args.property is not None and \
+            args.property not in {prop.name for prop in model.properties}:
+        raise error(USAGE, f"--property {quoted(args.property)} names no property "
+                    "(give it with --ltl or --formula)")
+    with environment_faults():
+        if args.property is None:
+            result = state_graph(model, progress=progress, **bounds)
+        else:
+            result = product_graph(model, args.property, progress=progress, **bounds)
     write_report(args.output, writer(result.graph), "graph")
     print(_summary(result, args.output))
     return EXIT_OK if result.complete else EXIT_UNKNOWN

@@ -23,6 +23,7 @@ from ..semantics.library import registry
 from ..semantics.library.clocks import SAMPLED_READINGS_TEXT
 from ..semantics.library.configuration import STANDARD_TEXT
 from ..semantics.program import PROGRAM_NAMESPACE, Program
+from ..semantics.robots import controller_task_names, named_robot_readings, named_task
 
 # Output instructions: a reading in their arguments only ends up as text.
 OUTPUT_ONLY = frozenset({"TPWRITE", "ERRWRITE", "ERRLOG", "WRITE", "TPPRINT", "WRITESTRBIN"})
@@ -40,8 +41,43 @@ def fixed_readings(program: Program) -> list[Diagnostic]:
         key = name.key
         first.setdefault(key, name)
         calls[key] = calls.get(key, 0) + 1
-    warnings = [_warning(first[key], calls[key]) for key in first]
+    warnings = [_warning(first[key], calls[key]) for key in first] + \
+        _unknown_task_robots(program)
     return sorted(warnings, key=lambda d: (d.span.file, d.span.line, d.span.column))
+
+
+def _unknown_task_robots(program: Program) -> list[Diagnostic]:
+    """One warning per robot reader and task argument whose task's robot the model does not
+    keep (``CRobT(\\TaskName:="T_ROB9")`` of a task that is not loaded, or a name known only
+    when the program runs): such a call reads the calling task's robot (``library.position``)."""
+    names = controller_task_names(program)
+    first: dict[tuple, ast.FunctionCall] = {}
+    calls: dict[tuple, int] = {}
+    for _, call, argument in named_robot_readings(program.routines):
+        value = argument.value
+        if isinstance(value, ast.StringLiteral) and argument.name.key == "TASKNAME":
+            if named_task(names, value.value) is not None:
+                continue
+            what = f'\\TaskName:="{value.value}", which names no loaded task'
+        elif isinstance(value, ast.NameRef) and argument.name.key == "TASKREF":
+            text = value.name.text
+            if text.upper().endswith("ID") and named_task(names, text[:-2]) is not None:
+                continue
+            what = f"\\TaskRef:={text}, which names no loaded task"
+        else:
+            what = f"the task \\{argument.name.text} names, if no loaded task has that name"
+        key = (call.name.key, what)
+        first.setdefault(key, call)
+        calls[key] = calls.get(key, 0) + 1
+    warnings = []
+    for key, call in first.items():
+        times = "1 call" if calls[key] == 1 else f"{calls[key]} calls"
+        message = (f"{call.name.text} reads the calling task's robot for {key[1]} "
+                   f"when checking ({times})")
+        note = "verdicts and unreached lines hold for that robot only (docs/predefined.md)"
+        warnings.append(Diagnostic(FIXED_READING, message, call.name.span, severity="warning",
+                                   notes=(note,)))
+    return warnings
 
 
 def reading_calls(program: Program) -> Iterator[ast.Name]:

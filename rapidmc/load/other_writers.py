@@ -9,7 +9,8 @@ such data, by the writer the check leaves out:
 
 * a task of the backup that is not loaded (a task checked alone): each shared
   PERS it declares and its code writes (assigned, or passed to a routine that
-  may write it: a parameter by reference, a routine that is not declared);
+  may write it: a parameter by reference, a routine that is not declared; every
+  one when its code writes data by name, ``SetDataVal``);
 * a task holding encrypted modules, loaded or not: each shared PERS its readable
   modules declare (the encrypted code may write any of them).
 
@@ -32,6 +33,7 @@ from .. import ast
 from ..diagnostics import TASKS_LOADED, Diagnostic, UserError
 from ..semantics.library import lookup_function, lookup_procedure
 from ..semantics.library.registry import matched_parameters
+from .shared_data import trees_write_by_name
 
 
 _DECLARED_PERS = re.compile(r"^[ \t]*(LOCAL[ \t]+|TASK[ \t]+)?PERS[ \t]+\w+[ \t]+(\w+)",
@@ -60,6 +62,9 @@ def other_writers(path: Path, loaded: Iterable[str]) -> tuple[dict, list]:
             continue
         who = f"task {task.name} (not loaded)"
         written = set().union(*(written_names(program) for program in programs))
+        if trees_write_by_name(routine for program in programs
+                               for module in program.modules for routine in module.routines):
+            written |= shared            # SetDataVal names its data when it runs: any PERS
         for key in sorted(written & shared):
             found.setdefault(key, who)
         for module in unparsable:

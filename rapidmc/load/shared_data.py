@@ -79,9 +79,13 @@ def data_uses(program, namespace: int = PROGRAM_NAMESPACE) -> tuple[set, set]:
 def writes_data_by_name(routines) -> bool:
     """Whether any of ``routines`` writes data named by a string (``SetDataVal``,
     ``SetAllDataVal``): then any persistent may be written."""
+    return trees_write_by_name(routine.ast for routine in routines if routine.ast is not None)
+
+
+def trees_write_by_name(trees) -> bool:
+    """``writes_data_by_name`` of routines' syntax trees (``ast.Routine``)."""
     return any(isinstance(node, ast.ProcedureCall) and node.name.key in DATA_BY_NAME
-               for routine in routines if routine.ast is not None
-               for node, _ in ast.walk(routine.ast))
+               for tree in trees for node, _ in ast.walk(tree))
 
 
 def _parameter_modes(program, lookup, call) -> list:

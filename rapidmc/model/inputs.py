@@ -42,23 +42,27 @@ def observed_inputs(program: Program, atoms: AtomCompiler):
             continue
         for node in walk_routine(routine.ast):      # every task's and model's, handlers too
             if isinstance(node, ast.ProcedureCall) and node.name.key in INTERRUPT_ORDERS:
-                signal = _ordered_signal(program, routine.ast, node)
+                signal = _ordered_signal(program, routine, node)
                 if signal is None:
                     return None
                 observed.add(signal.index)
     return observed
 
 
-def _ordered_signal(program: Program, routine: ast.Routine, call: ast.ProcedureCall):
+def _ordered_signal(program: Program, routine, call: ast.ProcedureCall):
     """The configured signal an interrupt order names directly, else None (signal data,
-    a parameter, a routine's own data: known only at run time)."""
+    a parameter, a routine's own data, the task's module data, which may hide a
+    configured signal of that name: known only at run time, through AliasIO)."""
     expr = argument_expression(call, "Signal", 0)
     if not isinstance(expr, ast.NameRef):
         return None
     key = expr.name.key
-    own = {p.name.key for p in routine.parameters} | \
-        {d.name.key for d in routine.data}
-    return None if key in own else program.signal(key)
+    own = {p.name.key for p in routine.ast.parameters} | \
+        {d.name.key for d in routine.ast.data}
+    if key in own or any(data.key == key and data.namespace == routine.namespace
+                         for data in program.globals):
+        return None
+    return program.signal(key)
 
 
 def _read_inputs(program: Program, atoms: AtomCompiler) -> Optional[frozenset]:

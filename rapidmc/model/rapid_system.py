@@ -27,6 +27,7 @@ from ..semantics.scope import LOCAL_DATA
 from ..semantics.types import POS, ArrayType
 from ..semantics.library.tasks import SyncWait
 from ..semantics.state import ENDED, FAILED, RUNNING, STOPPED, State
+from ..semantics.task_registers import ERRNO_NAME
 from ..semantics.plain_step import is_plain
 from ..semantics.step import (OPERATOR_CHOICE, CheckConfig, ScriptChooser, initial_states,
                              successors)
@@ -396,8 +397,13 @@ class RapidDescriber:
             view[ROBOT_TCP] = value_text(state.robot[0][0], POS)
         for slot, name, rapid_type in self.environment:
             view[name] = self._text(store[slot], slot, rapid_type)
-        if state.errno:
-            view["ERRNO"] = errno_name(int(state.errno))
+        if self.program.registers_per_task:  # each task's own (semantics.task_registers)
+            for number, errno in enumerate(state.errno):
+                if errno:
+                    name = self._task_name(task_namespace(number))
+                    view[f"{name}.{ERRNO_NAME}"] = errno_name(int(errno))
+        elif state.errno:
+            view[ERRNO_NAME] = errno_name(int(state.errno))
         if state.status == ENDED:
             view["program"] = "ended"
         elif state.status == STOPPED:

@@ -30,6 +30,7 @@ from typing import Iterable, Optional, Sequence, Union
 
 from ..check.trace import INITIAL, Change, Trace, TraceStep
 from ..semantics.robots import ROBOT_TCP
+from ..semantics.task_registers import names_errno
 from .headline import headline_lines
 from .trace_slice import needed_steps, reads_of
 from .trace_text import (INDEX, SOURCE_WIDTH, STRING_WIDTH, WAS_WIDTH, WIDTH,
@@ -240,7 +241,7 @@ def changed_elements(change: Change) -> Optional[str]:
 def initial_lines(step: TraceStep, read: frozenset) -> list[str]:
     """The initial state: the values of the data the trace reads, and a count of the rest."""
     shown = [change for change in step.changes
-             if change.name in ALWAYS_SHOWN or not read.isdisjoint(data_names(change.name))]
+             if change.name in ALWAYS_SHOWN or names_errno(change.name) or not read.isdisjoint(data_names(change.name))]
     lines = [f"    step {step.index}  initial state"]
     lines.extend(f"        {change_text(change)}" for change in shown)
     rest = len(step.changes) - len(shown)

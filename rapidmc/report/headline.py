@@ -13,6 +13,7 @@ from typing import Optional, Sequence
 
 from ..check.trace import INITIAL, Trace, TraceStep
 from ..load.stubs.module_text import is_stub_module
+from ..semantics.task_registers import names_errno
 from .trace_slice import read_part, whole_assignments
 from .trace_text import (INDEX, SOURCE_WIDTH, STRING_WIDTH, WIDTH, TextOptions, data_names,
                          datum_of, shorten, shown_location, shown_value)
@@ -125,7 +126,7 @@ def raising_steps(steps: Sequence[TraceStep]) -> Sequence[TraceStep]:
     if last is None or not BARE_RAISE.match(last.source):
         return steps
     for number in range(len(steps) - 2, 0, -1):
-        if any(change.name == "ERRNO" and change.new for change in steps[number].changes) \
+        if any(names_errno(change.name) and change.new for change in steps[number].changes) \
                 and steps[number].transition is not None:
             return steps[:number + 1]
     return steps

@@ -33,6 +33,7 @@ from typing import Iterable, Sequence
 
 from ..check.trace import INITIAL, TRANSITION, Trace, TraceStep
 from ..semantics.robots import ROBOT_TCP
+from ..semantics.task_registers import names_errno
 from .trace_text import IDENTIFIER, INDEX
 
 STRING = re.compile(r'"(?:[^"]|"")*"')
@@ -118,7 +119,8 @@ def is_control(step: TraceStep, raised: bool = False) -> bool:
         return True
     if raised or step.transition.inputs:       # an error raised, an input chosen
         return True
-    if any(change.name in ALWAYS_KEPT for change in step.changes):
+    if any(change.name in ALWAYS_KEPT or names_errno(change.name)
+           for change in step.changes):
         return True
     for text in statements_of(step):
         words = words_of(text)

@@ -250,6 +250,9 @@ def _walk_expressions_of(statement) -> Iterator[object]:
             yield from _walk_expression(arg.value)
     for branch in getattr(statement, "branches", ()) or ():
         yield from _walk_expression(branch.condition)
+    for case in getattr(statement, "cases", ()) or ():      # TEST's CASE values read too
+        for value in case.values:
+            yield from _walk_expression(value)
 
 
 def _walk_expression(expr) -> Iterator[object]:

@@ -27,9 +27,10 @@ from .calls import ParameterView, bind
 from .errors import ERROR_NUMBERS, LONG_JMP_ALL_ERR
 from .expressions import ExpressionCompiler
 from .machine import ABSENT
-from .robots import motion_task_numbers
+from .robots import motion_task_numbers, named_robot_readings
 from .runtime import PredefinedCalls
-from .scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, Scope, Symbol
+from .scope import (CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, SYSTEM_VARIABLES, Scope,
+                    Symbol)
 from .statements import RoutineCompiler
 from .types import (ANYTYPE, DNUM, NUM, PREDEFINED_ALIASES, PREDEFINED_TYPES, RECORD,
                     SEMI_VALUE, ArrayType, ComponentType, RapidType, default_value)
@@ -306,6 +307,9 @@ class Linker:
         linked.motion_tasks = motion_task_numbers(self, self.task_names,
                                                   self.options.get("motion_tasks", ()))
         linked.robot_per_task = len(linked.motion_tasks) > 1
+        linked.registers_per_task = bool(task_entries)
+        linked.reads_task_robots = linked.robot_per_task and \
+            any(True for _ in named_robot_readings(self.routines))
         if environment is not None and environment.modules:
             linked.environment_init = environment_init
             linked.environment_react = environment_react
@@ -357,7 +361,8 @@ class Linker:
         uses = list(configured_signals.signal_uses(modules))
         uses += configured_signals.compared_names(modules)     # after the calls: they know the kind
         for name, kind in uses:
-            if name.key in declared or self.system_symbol(name) is not None:
+            if name.key in declared or name.key in SYSTEM_VARIABLES or \
+                    self.system_symbol(name) is not None:
                 continue
             self.physical_signal(name.text, kind, name.span)
         for name in configured_signals.unit_uses(modules):

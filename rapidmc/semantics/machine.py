@@ -87,7 +87,7 @@ class Machine:
 
     __slots__ = ("program", "frames", "store", "io", "robot", "interrupts", "errno",
                  "intno", "status", "fault", "clock", "output", "chooser", "choices",
-                 "span", "waiting", "lazy_values", "tasks")
+                 "span", "waiting", "lazy_values", "tasks", "robots")
 
     def __init__(self, program, state: State, chooser):
         self.program = program
@@ -100,6 +100,9 @@ class Machine:
         self.span = None
         self.waiting = False
         self.lazy_values = None          # lazily chosen free inputs of this step (check mode)
+        # every task's robot when the step started, where each motion task has its own and
+        # the step is one task's (semantics.robots; None: only the machine's own robot)
+        self.robots = None
 
     def to_state(self) -> State:
         """The state the step leaves (the step is over: no input is chosen any more)."""

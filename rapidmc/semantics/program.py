@@ -141,6 +141,11 @@ class Program:
     motion_tasks: tuple = ()                               # numbers of the tasks that move a robot
     # the state keeps one robot per task (two or more motion tasks: semantics.robots)
     robot_per_task: bool = False
+    # each task keeps its own ERRNO, INTNO and IEnable flag (further tasks: task_registers)
+    registers_per_task: bool = False
+    # some code reads another task's robot (CRobT(\\TaskName:=...)) while each motion task
+    # keeps its own: its steps need every task's robot (general driver, Machine.robots)
+    reads_task_robots: bool = False
     load_notes: tuple = ()                                 # Diagnostics about what was loaded
     # indices of the signals the code names; None: unknown (AliasIO of a computed name)
     named_signals: Optional[frozenset] = None

@@ -15,7 +15,7 @@ that moves nothing keeps its robot at home.
 """
 from __future__ import annotations
 
-from typing import Iterable
+from typing import Iterable, Iterator
 
 from .. import ast
 from .configured_signals import walk_routine
@@ -66,6 +66,37 @@ def _moving_namespaces(linker) -> set:
 
 # modelled on the robot state, but reading or setting data, not moving
 _NOT_MOVING = frozenset({"GETSYSDATA", "SETSYSDATA"})
+
+# the functions that read a robot, any task's with \TaskName or \TaskRef
+TASK_ROBOT_READERS = frozenset({"CROBT", "CJOINTT", "CTOOL", "CWOBJ"})
+TASK_ARGUMENTS = frozenset({"TASKNAME", "TASKREF"})
+
+
+def controller_task_names(program) -> tuple:
+    """The tasks' names as the controller (GetTaskName, \\TaskName) spells them: a backup's,
+    else T_ROB1 for the main task."""
+    return (program.options.get("main_task_name") or "T_ROB1",) + tuple(program.task_names[1:])
+
+
+def named_task(names: tuple, text: str):
+    """The number of the task called ``text`` (case-insensitive) among ``names``, or None."""
+    key = text.upper()
+    return next((number for number, name in enumerate(names) if name.upper() == key), None)
+
+
+def named_robot_readings(routines) -> Iterator[tuple]:
+    """(routine, call, task argument) for each call of a robot reader that names a task
+    (``CRobT(\\TaskName:="T_ROB2")``), a user routine of that name left out."""
+    own = {(routine.namespace, routine.key) for routine in routines}
+    for routine in routines:
+        if routine.ast is None:
+            continue
+        for node, _ in ast.walk(routine.ast):
+            if isinstance(node, ast.FunctionCall) and node.name.key in TASK_ROBOT_READERS \
+                    and (routine.namespace, node.name.key) not in own:
+                for argument in node.args:
+                    if argument.name is not None and argument.name.key in TASK_ARGUMENTS:
+                        yield routine, node, argument
 
 
 class NoTaskRobot:

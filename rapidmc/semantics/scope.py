@@ -20,6 +20,10 @@ CONSTANT = "constant"
 SIGNAL = "signal"
 ROUTINE = "routine"
 
+# the system variables every task has (the step keeps them: State.errno, State.intno), never
+# a configured signal or stub data, whatever the code compares them with
+SYSTEM_VARIABLES = frozenset({"ERRNO", "INTNO"})
+
 
 @dataclass(frozen=True)
 class Symbol:

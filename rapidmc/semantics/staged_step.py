@@ -33,14 +33,16 @@ from .plain_step import plain_successors
 from .program import FIRST_TASK_NAMESPACE
 from .robots import task_robot, with_task_robot
 from .state import ENDED, FAILED, RUNNING, Frame, Interrupts, State, Transition
+from .task_registers import put_back, task_view
 
 _new_tuple = tuple.__new__
 
 
 def is_staged(program, state: State, config: CheckConfig) -> bool:
     """Whether ``staged_successors`` may stand in for the general driver at ``state``
-    (a running state with tasks or interrupts, no environment reaction)."""
-    if program.environment_react is not None:
+    (a running state with tasks or interrupts, no environment reaction, no reading of
+    another task's robot: a view carries its task's robot only)."""
+    if program.environment_react is not None or program.reads_task_robots:
         return False
     interrupts = state[4]
     if not (state[10] or interrupts[0] or interrupts[1]):
@@ -77,7 +79,7 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
     # the task each transition's label names (task_of), when no input label comes first
     # with that name
     owners = [] if len(runnable) > 1 and not steps.input_named_task else None
-    rest = state[4:10] + ((),)
+    views = {}                           # task -> _task_parts (without interrupts: plans)
     result = []
     append = result.append
     time_check = config.time_check
@@ -88,8 +90,10 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
             if plans is not None:
                 _task_steps(state, task, label, ready_io, plans[task], steps, shared, result)
             else:
-                robot = task_robot(program, state[3], task)
-                view = _new_tuple(State, (stacks[task], state[1], io, robot) + rest)
+                parts = views.get(task)
+                if parts is None:
+                    parts = views[task] = _task_parts(program, state, task, state[4])
+                view = _new_tuple(State, (stacks[task], state[1], io) + parts)
                 for transition in steps(view, task, shared):
                     append(_in_task(program, state, task, label, transition))
             if owners is not None:
@@ -110,7 +114,7 @@ def task_transitions(program, state: State, task: int,
     task-local instructions (``reduction.partial_order``) without stepping the others."""
     interrupts = state[4]
     if program.environment_react is not None or config.free_inputs or \
-            interrupts[0] or interrupts[1] or interrupts[3]:
+            program.reads_task_robots or interrupts[0] or interrupts[1] or interrupts[3]:
         return None
     stacks = (state[0],) + state[10]
     if not stacks[task]:
@@ -118,8 +122,8 @@ def task_transitions(program, state: State, task: int,
     runnable = [i for i, stack in enumerate(stacks) if stack]
     steps = view_steps(program, config)
     label = steps.task_labels(runnable)[runnable.index(task)]
-    view = _new_tuple(State, (stacks[task], state[1], state[2],
-                              task_robot(program, state[3], task)) + state[4:10] + ((),))
+    view = _new_tuple(State, (stacks[task], state[1], state[2]) +
+                      _task_parts(program, state, task, state[4]))
     return [_in_task(program, state, task, label, transition)
             for transition in steps(view, task, None)]
 
@@ -227,16 +231,29 @@ def view_steps(program, config: CheckConfig) -> ViewSteps:
     return steps
 
 
+def _task_parts(program, state: State, task: int, interrupts: Interrupts) -> tuple:
+    """The parts of a one-task view of ``task`` in ``state`` after its stack, global data and
+    signals: its robot, ``interrupts`` (every task's table and queue) with its own enable
+    flag, its own ERRNO and INTNO, the rest of ``state``, no further tasks."""
+    return (task_robot(program, state[3], task),) + \
+        task_view(program, interrupts, state[5], state[6], task) + state[7:10] + ((),)
+
+
 def _in_task(program, state: State, task: int, label: tuple,
              transition: Transition) -> Transition:
     """The transition of a one-task view as a step of ``task`` in ``state``: its stack
     back among the others' (a task that ended leaves the others running; an uncaught
     error stops every task: nothing to put back), its robot back among the others' (when
-    each task has its own: ``semantics.robots``), ``label`` before the view's."""
+    each task has its own: ``semantics.robots``), its ERRNO, INTNO and enable flag back
+    among the others' (``semantics.task_registers``), ``label`` before the view's."""
     after = transition[2]
     if program.robot_per_task:
         after = _new_tuple(State, after[:3] + (with_task_robot(program, state[3], task,
                                                                after[3]),) + after[4:])
+    if program.registers_per_task:
+        after = _new_tuple(State, after[:4] + put_back(
+            program, state[4], state[5], state[6], task, after[4], after[5], after[6]) +
+            after[7:])
     tasks = state[10]
     if tasks and after[7] != FAILED:
         if task:
@@ -309,7 +326,7 @@ def _task_plan(program, frames: tuple, task: int, choices: list) -> list:
     may_trap = None
     for label, interrupts in choices:
         pending = interrupts[1]
-        if pending and interrupts[2]:
+        if pending and (interrupts[2][task] if program.registers_per_task else interrupts[2]):
             if may_trap is None:
                 may_trap = not in_trap(program, frames)
             if may_trap:
@@ -341,17 +358,17 @@ def _task_steps(state: State, task: int, label: tuple, io, plan: list, steps: Vi
     before = state[2]
     program = steps.program
     stack = state[0] if task == 0 else state[10][task - 1]
-    robot = task_robot(program, state[3], task)
     for timers_label, interrupts, trap in plan:
+        parts = _task_parts(program, state, task, interrupts)
         if trap is not None:
             entered, number, span = trap
-            view = _new_tuple(State, (entered, state[1], io, robot, interrupts, state[5],
-                                      number) + state[7:10] + ((),))
+            view = _new_tuple(State, (entered, state[1], io) + parts[:3] + (number,) +
+                              parts[4:])
             transition = _in_task(program, state, task, label + timers_label,
                                   _new_tuple(Transition, ((), span, view, "", False)))
             result.append(transition._replace(state=_with_edges(transition[2], before)))
             continue
-        view = _new_tuple(State, (stack, state[1], io, robot, interrupts) + state[5:10] + ((),))
+        view = _new_tuple(State, (stack, state[1], io) + parts)
         for transition in steps(view, task, shared):
             transition = _in_task(program, state, task, label + timers_label, transition)
             after = _with_edges(transition[2], before)

@@ -21,7 +21,8 @@ from .instructions import (Action, Branch, Call, EndRoutine, EndUndo, ExitProgra
                            Return, TestDispatch, TryNext)
 from .errors import placeholder_reached
 from .machine import GLOBAL, with_locals
-from .scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, Scope, Symbol
+from .scope import (CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SYSTEM_VARIABLES, Scope,
+                    Symbol)
 from .types import NUM, SEMI_VALUE, STRING, RapidType
 
 TARGET_FIELDS = ("next", "start", "after", "target_true", "target_false", "target", "exit",
@@ -177,7 +178,7 @@ class RoutineCompiler:
 
     def knows(self, name: ast.Name, use: str) -> bool:
         """Whether ``name`` means something here (data, a routine, predefined)."""
-        if self.scope.lookup(name.key) is not None or name.key in ("ERRNO", "INTNO"):
+        if self.scope.lookup(name.key) is not None or name.key in SYSTEM_VARIABLES:
             return True
         if use == "data":
             return self.linker.system_symbol(name) is not None
@@ -229,7 +230,7 @@ class RoutineCompiler:
             if root_symbol is not None and root_symbol.kind == CONSTANT:
                 raise error(ASSIGN_CONST, f"cannot assign to constant '{root_expr.name.text}'",
                             target.span)
-            if root_symbol is None and root_expr.name.key in ("ERRNO", "INTNO"):
+            if root_symbol is None and root_expr.name.key in SYSTEM_VARIABLES:
                 raise error(ASSIGN_CONST, f"{root_expr.name.text} is read-only (set by the "
                             "system)", target.span)
         if isinstance(root_expr, ast.Placeholder):     # <VAR> := value

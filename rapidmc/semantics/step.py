@@ -36,6 +36,7 @@ from .plain_step import (MERGED_STEP_LIMIT, is_plain, plain_successors,  # noqa:
                          run_instruction, run_merged)
 from .staged_step import (deactivated, idle_steps_dropped, in_trap, interrupt_task,
                           is_staged, next_pending, signal_edges_pending, staged_successors)
+from .task_registers import give_back, initial_registers, take_task_view
 from .timing import apply_scheduled, enqueue
 
 ENVIRONMENT_STEP_LIMIT = 100_000
@@ -65,8 +66,9 @@ def start_state(program: Program, io_values: Optional[dict] = None) -> State:
                                      _predefined(program, "WOBJ0"), HOME_JOINTS))
     tasks = tuple((Frame(entry, 0, program.routines[entry].initial_locals),)
                   for entry in program.task_entries)
+    errno, intno, enabled = initial_registers(program)
     return State((Frame(main.index, 0, main.initial_locals),), initial_store(program),
-                 pvector(io), robot, Interrupts(), tasks=tasks)
+                 pvector(io), robot, Interrupts(enabled=enabled), errno, intno, tasks=tasks)
 
 
 def _predefined(program: Program, key: str):
@@ -101,6 +103,8 @@ def run_environment_routine(m: Machine, routine_index: int) -> None:
     saved_robot = m.robot
     if m.program.robot_per_task:
         m.robot = NoTaskRobot(m.program)
+    # environment code runs with the main task's ERRNO, INTNO and IEnable flag
+    registers = take_task_view(m, 0)
     m.waiting = False
     m.frames = [Frame(routine.index, 0, routine.initial_locals)]
     m.status = RUNNING
@@ -120,6 +124,7 @@ def run_environment_routine(m: Machine, routine_index: int) -> None:
             raise EnvironmentFault(f"environment routine {program_routine.name} stopped with "
                                    f"{_named_fault(fault)}")
     finally:
+        give_back(m, 0, registers)
         m.frames = saved_frames
         m.status = saved_status
         m.waiting = saved_waiting
@@ -287,6 +292,9 @@ def _step_some_task(m: Machine, io_before):
         task = names.index(m.choose("task", tuple(names[i] for i in runnable)))
     robots = m.robot
     m.robot = task_robot(m.program, robots, task)      # the task moves its own robot
+    if m.program.robot_per_task:
+        m.robots = robots                              # (the others' stay as they are)
+    registers = take_task_view(m, task)                # its own ERRNO, INTNO, IEnable flag
     if task == 0:
         span = _step_task(m, io_before)
     else:
@@ -299,6 +307,8 @@ def _step_some_task(m: Machine, io_before):
             m.tasks = tuple(tasks)
             m.frames = main_frames
     m.robot = with_task_robot(m.program, robots, task, m.robot)
+    m.robots = None
+    give_back(m, task, registers)
     if m.status == ENDED and (m.frames or any(m.tasks)):
         m.status = RUNNING               # one task ended; the others go on
     return span

@@ -8,18 +8,28 @@ process, as in the tests, is used as it is and left running).
 
 Ray is an optional extra (``pip install 'rapidmc[ray]'``); without it, ``require_ray``
 raises the diagnostic that names the extra.
+
+Joining an address waits at most ``CONNECT_SECONDS`` for an answer: Ray itself retries an
+address where no cluster answers for minutes (a name that does not resolve: more than two),
+about half a minute an attempt, so before Ray is asked, ``_answers`` checks that a gRPC
+server (as Ray's cluster head and its client server are) answers there: it accepts a
+connection and replies to HTTP/2's opening with its settings.  Else: RAY_UNREACHABLE.
 """
 from __future__ import annotations
 
 import contextlib
 import logging
 import os
+import socket
+import threading
 from dataclasses import dataclass
 from typing import Optional
 
 from ...diagnostics import RAY_UNAVAILABLE, RAY_UNREACHABLE, error
 
 EXTRA_HINT = "install it with: pip install 'rapidmc[ray]'"
+START_HINT = "start one with: ray start --head --port=6379"
+CONNECT_SECONDS = 20      # how long --ray ADDRESS may take to answer
 
 
 def require_ray(option: str):
@@ -62,13 +72,7 @@ class Cluster:
         options = dict(include_dashboard=False, logging_level=logging.ERROR,
                        log_to_driver=False, configure_logging=True)
         if self.address is not None:
-            try:
-                ray.init(address=self.address, **options)
-            except (ConnectionError, RuntimeError, ValueError) as exc:
-                first = str(exc).strip().splitlines()[0] if str(exc).strip() else ""
-                raise error(RAY_UNREACHABLE, f"--ray {self.address}: no Ray cluster to join "
-                            "there", None, first[:300],
-                            "start one with: ray start --head --port=6379") from None
+            self._join(ray, options)
         else:
             cpus = self.workers if self.workers is not None else \
                 min(self.swarm, os.cpu_count() or 1)
@@ -79,3 +83,59 @@ class Cluster:
             from .search import drop_actors     # (their handles die with this session)
             drop_actors(ray)
             ray.shutdown()
+
+    def _join(self, ray, options: dict) -> None:
+        """``ray.init`` at ``address``, or RAY_UNREACHABLE (``_answers``: at once where no
+        gRPC server answers within ``CONNECT_SECONDS``)."""
+        def unreachable(why: str):
+            return error(RAY_UNREACHABLE, f"--ray {self.address}: no Ray cluster to join there",
+                         None, why[:300], START_HINT)
+
+        why = _answers(self.address, CONNECT_SECONDS)
+        if why is not None:
+            raise unreachable(why)
+        try:
+            ray.init(address=self.address, **options)
+        except (ConnectionError, RuntimeError, ValueError, TimeoutError) as exc:
+            first = str(exc).strip().splitlines()[0] if str(exc).strip() else ""
+            raise unreachable(first) from None
+
+
+# what an HTTP/2 client sends first (RFC 9113, 3.4): the preface, then its (empty) settings
+HTTP2_OPENING = b"PRI * HTTP/2.0\r\n\r\nSM\r\n\r\n" + bytes((0, 0, 0, 4, 0, 0, 0, 0, 0))
+SETTINGS_FRAME = 4          # a frame's type, the fourth byte of its 9-byte header
+
+
+def _answers(address: str, seconds: float) -> Optional[str]:
+    """None if a gRPC server at ``address`` (``[ray://]host:port``; ``auto`` and other forms
+    are Ray's to read) answers HTTP/2's opening within ``seconds``, else why not.  (In a
+    thread of its own, as the name's resolution has no timeout.)"""
+    host, _, port = address.split("://", 1)[-1].rpartition(":")
+    if not host or not port.isdigit():
+        return None
+    found: list = []
+    silent = f"{host}:{port}: no answer within {seconds:g} s"
+
+    def ask():
+        try:
+            with socket.create_connection((host.strip("[]"), int(port)), timeout=seconds) as peer:
+                peer.sendall(HTTP2_OPENING)
+                header = b""
+                while len(header) < 9:
+                    more = peer.recv(9 - len(header))
+                    if not more:
+                        break
+                    header += more
+        except TimeoutError:
+            found.append(silent)
+            return
+        except OSError as exc:
+            found.append(f"{host}:{port}: {exc.strerror or exc or type(exc).__name__}")
+            return
+        found.append(None if len(header) == 9 and header[3] == SETTINGS_FRAME else
+                     f"{host}:{port} answers, but not as a Ray cluster does (gRPC)")
+
+    attempt = threading.Thread(target=ask, daemon=True)
+    attempt.start()
+    attempt.join(seconds)
+    return found[0] if found else silent

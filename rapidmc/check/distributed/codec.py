@@ -20,10 +20,11 @@ Two codecs, one per kind of state table, with one interface (``Partition`` uses 
 Interface: ``successor_keys(id, state, successors)`` (a key per successor, in the model's
 order, from the successor states or from ``successors(state)``; equal keys: equal states,
 for the level's deduplication), ``outbox()`` (a batch being written), ``send(outboxes, keys,
-parents)`` (a chunk of keys routed to their owners' outboxes, with their parents' ids;
-returns how many went to each), ``encode(target, outbox)``, ``store(sender, data)``
-(stores the batch's states; returns the links to the parents of the new ones, in the order
-they were stored: ``link(sender, parent id)``), ``owns(state, index)``.
+fields)`` (a chunk of keys routed to their owners' outboxes, each with a number, its
+parent's id; returns each key's owner), ``encode(target, outbox)``, ``store(sender, data)``
+(stores the batch's states: their ids, whether each was new and their fields, in order),
+``store_links(sender, data)`` (``store``, then the links ``link(sender, field)`` of the new
+ones), ``owns(state, index)``.
 """
 from __future__ import annotations
 
@@ -161,25 +162,29 @@ class PickleCodec:
     def outbox(self) -> tuple[list, array]:
         return [], array("q")
 
-    def send(self, outboxes, keys: Sequence["_Keyed"], parents: Sequence[int]) -> list[int]:
+    def send(self, outboxes, keys: Sequence["_Keyed"], fields: Sequence[int]) -> list[int]:
         count = self.count
-        sent = [0] * count
-        for key, parent in zip(keys, parents):
+        owners = []
+        for key, field in zip(keys, fields):
             target = owner_of_prints(key.prints, count)
             outboxes[target][0].append(key.state)
-            outboxes[target][1].append(parent)
-            sent[target] += 1
-        return sent
+            outboxes[target][1].append(field)
+            owners.append(target)
+        return owners
 
     def encode(self, target: int, outbox) -> bytes:
         return pickle.dumps(outbox, protocol=PROTOCOL)
 
-    def store(self, sender: int, data: bytes) -> array:
-        states, parents = pickle.loads(data)
+    def store(self, sender: int, data: bytes) -> tuple[list, list, array]:
+        states, fields = pickle.loads(data)
         intern = self.table.intern
+        stored = [intern(state, True) for state in states]
+        return array("q", [i for i, _ in stored]), [new for _, new in stored], fields
+
+    def store_links(self, sender: int, data: bytes) -> array:
+        _, new, fields = self.store(sender, data)
         high = sender << ID_BITS
-        return array("q", [high | parent for state, parent in zip(states, parents)
-                           if intern(state, True)[1]])
+        return array("q", [high | field for field, fresh in zip(fields, new) if fresh])
 
     def owns(self, state: Hashable, index: int) -> bool:
         return owner_of_prints(self.prints(state), self.count) == index
@@ -225,30 +230,29 @@ class VectorCodec:
         """The state's vectors (for ``owners``)."""
         return self._vectors(state)
 
-    def send(self, outboxes, keys: Sequence[int], parents: Sequence[int]) -> list[int]:
-        """The chunk's successors, written to their owners' outboxes: their segments read
-        out of the table together (``segments_batch``), their owners computed together, and
-        each owner's share written again in one call."""
+    def send(self, outboxes, keys: Sequence[int], fields: Sequence[int]) -> list[int]:
+        """The chunk's successors, written to their owners' outboxes with their ``fields``
+        (a parent's id): their segments read out of the table together
+        (``segments_batch``), their owners computed together, and each owner's share
+        written again in one call.  Returns each successor's owner."""
         np = self.np
         keys = np.array(keys, np.uint64)
-        parents = np.array(parents, np.int64)
+        parents = np.array(fields, np.int64)
         frames, data, lengths = self._segments_batch(keys.tobytes())
         owners = self._owners_of(np.frombuffer(frames, np.uint32),
                                  np.frombuffer(data, np.uint32),
                                  np.frombuffer(lengths, np.uint32))
-        sent = [0] * self.count
         for target in range(self.count):
             mine = owners == target
             number = int(np.count_nonzero(mine))
             if not number:
                 continue
-            sent[target] = number
             if number == len(keys):
                 outboxes[target].append((frames, data, lengths, parents.tobytes()))
             else:
                 outboxes[target].append((*self._segments_batch(keys[mine].tobytes()),
                                          parents[mine].tobytes()))
-        return sent
+        return owners.tolist()
 
     def owners(self, items: Sequence[tuple[bytes, bytes]]) -> list[int]:
         """The owner of each state given by its vectors (``prepare``)."""
@@ -323,10 +327,10 @@ class VectorCodec:
                          header, frames, data, lengths, parents))
 
     # -------------------------------------------------------------- receiving
-    def store(self, sender: int, blob: bytes) -> array:
+    def store(self, sender: int, blob: bytes) -> tuple:
         """The batch's states stored (``intern_batch``), read in place (views of ``blob``)
-        and translated a slice at a time, so a large batch is not copied whole; the links to
-        the parents of the new ones."""
+        and translated a slice at a time, so a large batch is not copied whole: (their ids,
+        whether each was new, their fields), arrays in the batch's order."""
         np, table = self.np, self.table
         view = memoryview(blob)
         header_size, frames_size, data_size, count = _SIZES.unpack_from(view)
@@ -346,8 +350,7 @@ class VectorCodec:
         ends = np.cumsum(lengths, dtype=np.int64)
         width = self.data_length
         intern = self._intern_batch
-        links = array("q")
-        high = np.int64(sender << ID_BITS)
+        ids, news = [], []
         for first in range(0, count, SLICE):
             last = min(first + SLICE, count)
             begin = int(ends[first - 1]) if first else 0
@@ -362,9 +365,18 @@ class VectorCodec:
                 mapped[starts + 1] = some_frames[starts + 1]
                 some_frames = mapped
                 some_data = value_map[some_data] if len(some_data) else some_data
-            _, new = intern(some_frames, some_data, some_lengths)
-            fresh = np.frombuffer(new, np.bool_)
-            links.frombytes((parents[first:last][fresh] | high).tobytes())
+            some_ids, some_new = intern(some_frames, some_data, some_lengths)
+            ids.append(np.frombuffer(some_ids, np.int64))
+            news.append(np.frombuffer(some_new, np.bool_))
+        if not ids:
+            return np.zeros(0, np.int64), np.zeros(0, np.bool_), parents
+        return np.concatenate(ids), np.concatenate(news), parents
+
+    def store_links(self, sender: int, blob: bytes) -> array:
+        """``store``, then the links to the parents of the new states, in their order."""
+        _, new, fields = self.store(sender, blob)
+        links = array("q")
+        links.frombytes((fields[new] | self.np.int64(sender << ID_BITS)).tobytes())
         return links
 
     def _maps(self, sender: int, values, contexts) -> tuple:

@@ -16,10 +16,17 @@ needs only breadth-first spreads, each a sequence of levels like the reachabilit
    it from outside) has an entering edge for each state, so it is a cycle, and a state of it
    is reachable from an accepting state of S, which must lie in it.
 
-The lasso: the prefix follows the breadth-first parents to an accepting state of S, and the
-cycle is a breadth-first CYCLE spread through S from that state back to it (an accepting
-state of S that lies on no cycle is passed over for the next).  Labels come from stepping
-the model along the path here, as ``search`` does, so the lasso replays.
+The lasso takes one more spread, whatever the number of accepting states in S (an accepting
+state of S need not lie on a cycle itself: it may hang below one).  REGIONS goes
+breadth-first through S from all accepting states of S at once: each state joins the
+region of the first one that reaches it, and each accepting state x notes the first edge
+of S into it and the region y that edge leaves: a path y -> ... -> x inside S.  Every
+state of S is reachable from an accepting state of S, so every state joins a region, and
+every accepting state, having an edge of S that enters it, notes one.  Following these
+notes from x to y and on must come back to an accepting state already passed: the
+notes from there on, each a path, close a cycle through accepting states.  The prefix
+follows the breadth-first parents to that state.  Labels come from stepping the model
+along the path here, as ``search`` does, so the lasso replays.
 
 A complete search stores exactly the reachable product states and edges: the same product
 state and transition counts as one process.  The state limit is checked after each level
@@ -33,14 +40,12 @@ from ..budget import SearchBudget
 from ..product import Product
 from ..result import HOLDS, UNKNOWN, VIOLATED, LassoStep, SearchResult, SearchStats
 from ..transition_system import labelled_successors
-from .canonical import owner
-from .partition import NO_PARENT, SystemSource, encode_batch, unlink
-from .product_partition import CYCLE, ELIMINATE, REACH
+from .partition import NO_PARENT, SystemSource, unlink
+from .product_partition import ELIMINATE, REACH, REGIONS, initial_batch
 from .search import actors_of, drop_actors, worker_failures
 from .worker import CYCLES, call
 
 ENGINE = "distributed-owcty"
-CANDIDATES = 1 << 10          # accepting states of S asked of each partition for the lasso
 
 
 def partitioned_accepting_cycle(ray, partitions: int, system, buchi, valuation,
@@ -103,17 +108,9 @@ class _Owcty:
     def _reach_all(self) -> bool:
         """Store every reachable product state and edge; False at a bound."""
         ray, count, actors = self.ray, self.count, self.actors
-        batches = [([], [], []) for _ in range(count)]
-        initial = self.product.initial_automaton_state
-        for state in self.system.initial_states():
-            states, automaton_states, parents = batches[owner(state, count) if count > 1 else 0]
-            for q in dict.fromkeys(self.product.targets(initial, self.valuation(state))):
-                states.append(state)
-                automaton_states.append(q)
-                parents.append(NO_PARENT)
-        received = [call(actor, CYCLES, "receive", [-1], encode_batch(batches[index]),
-                         returns=count + 1)
-                    for index, actor in enumerate(actors)]
+        batch = initial_batch(self.system, self.product, self.valuation)
+        received = [call(actor, CYCLES, "receive", [-1], batch, returns=count + 1)
+                    for actor in actors]
         while True:
             figures = ray.get([refs[count] for refs in received])
             stored, new = sum(f[0] for f in figures), sum(f[1] for f in figures)
@@ -141,8 +138,7 @@ class _Owcty:
         ray, count, actors = self.ray, self.count, self.actors
         sent = [call(actor, CYCLES, "propagate", mode, returns=count + 1) for actor in actors]
         while True:
-            figures = ray.get([refs[count] for refs in sent])
-            if not any(queued for queued, _ in figures) or any(back for _, back in figures):
+            if not any(ray.get([refs[count] for refs in sent])):
                 return True
             if self.budget.max_seconds is not None and \
                     self.budget.elapsed() >= self.budget.max_seconds:
@@ -153,29 +149,40 @@ class _Owcty:
 
     # --- the lasso -----------------------------------------------------------------------
 
-    def _lasso(self) -> tuple:
-        """(prefix, cycle, closing label) through an accepting state of S on a cycle."""
+    def _lasso(self) -> Optional[tuple]:
+        """(prefix, cycle, closing label) through an accepting state of S (module
+        docstring); None at the time limit."""
         ray, actors = self.ray, self.actors
-        candidates = ray.get([call(actor, CYCLES, "accepting_left", CANDIDATES) for actor in actors])
-        for partition, ids in enumerate(candidates):
-            for source in ids:
-                ray.get([call(actor, CYCLES, "begin_cycle", source if index == partition else None)
-                         for index, actor in enumerate(actors)])
-                if not self._spread(CYCLE):
-                    return None
-                closing = ray.get(call(actors[partition], CYCLES, "cycle_back", source))
-                if closing is not None:
-                    return self._path_through(partition, source, closing)
-        raise RuntimeError("internal error: OWCTY left states but no accepting cycle was found")
+        ray.get([call(actor, CYCLES, "begin_regions") for actor in actors])
+        if not self._spread(REGIONS):
+            return None
+        notes = {}          # accepting state -> (region the edge leaves, the edge's state)
+        for entries in ray.get([call(actor, CYCLES, "entries") for actor in actors]):
+            for target, region, before in entries:
+                notes[target] = (region, before)
+        at, passed = min(notes), set()
+        while at not in passed:
+            passed.add(at)
+            at = notes[at][0]
+        return self._path_through(at, notes)
 
-    def _path_through(self, partition: int, source: int, closing: int) -> tuple:
+    def _path_through(self, first: int, notes: dict) -> tuple:
+        """The lasso through the accepting state ``first`` (a link) whose ``notes`` lead
+        back to it: its cycle gathered backwards, region by region."""
         ray, actors = self.ray, self.actors
-        loop = [(partition, source)]
-        at = unlink(closing)
-        while at != (partition, source):
-            loop.append(at)
-            at = unlink(ray.get(call(actors[at[0]], CYCLES, "cycle_back", at[1])))
-        loop = [loop[0]] + loop[:0:-1]              # source, then forwards
+        backwards, target = [], first
+        while True:
+            region, at = notes[target]
+            while True:                             # from the edge's state up to its region
+                backwards.append(unlink(at))
+                if at == region:
+                    break
+                at = ray.get(call(actors[unlink(at)[0]], CYCLES, "region_back", unlink(at)[1]))
+            target = region
+            if target == first:
+                break
+        loop = backwards[::-1]                      # ``first``, then forwards
+        partition, source = unlink(first)
         prefix = []
         at, parent = (partition, source), None
         while True:

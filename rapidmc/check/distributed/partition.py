@@ -135,7 +135,7 @@ class Partition:
                         if table.intern(state, True)[1]:
                             parent.append(NO_PARENT)
                 continue
-            parent.extend(self.codec.store(sender, batch))
+            parent.extend(self.codec.store_links(sender, batch))
         return len(table)
 
     def step(self, advance: bool, senders: Sequence[int], *batches) -> tuple:
@@ -207,8 +207,9 @@ class Partition:
         end = min(self.level_end, self.expanded + ROUND)
 
         def flush():
-            for target, number in enumerate(send(outboxes, pending, pending_parents)):
-                sent[target] += number
+            owners = send(outboxes, pending, pending_parents)
+            for target in range(count):
+                sent[target] += owners.count(target)
             pending.clear()
             pending_parents.clear()
 

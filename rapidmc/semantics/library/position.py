@@ -1,10 +1,16 @@
 """The current robot position, tool and work object."""
 from __future__ import annotations
 
+from typing import Callable, Optional
+
+from ... import ast
 from ..expressions import Compiled
-from .arguments import ROBOT_JOINTS, ROBOT_TCP, ROBOT_TOOL, ROBOT_WOBJ, Arguments
+from ..robots import named_task
+from .arguments import (ROBOT_JOINTS, ROBOT_TCP, ROBOT_TOOL, ROBOT_WOBJ, Arguments,
+                        argument_expression)
 from .registry import compiled
 from .signature_parts import TASK
+from .tasks import task_number
 
 # name -> (part of the robot state, component of it or None for the whole part)
 ROBOT_PARTS = {"CPOS": (ROBOT_TCP, 0), "CROBT": (ROBOT_TCP, None), "CJOINTT": (ROBOT_JOINTS, None),
@@ -17,12 +23,52 @@ ROBOT_PARTS = {"CPOS": (ROBOT_TCP, 0), "CROBT": (ROBOT_TCP, None), "CJOINTT": (R
           f"tooldata CTool({TASK})",
           f"wobjdata CWObj({TASK})")
 def _robot_part(calls, compiler, call, entry) -> Compiled:
-    """The modelled robot's position, joints, tool or work object (as last programmed)."""
-    Arguments(calls, compiler, call, entry)
+    """The modelled robot's position, joints, tool or work object (as last programmed):
+    the calling task's robot, or with ``\\TaskName``/``\\TaskRef`` the named task's.
+
+    Where each motion task keeps its own robot (``semantics.robots``) another task's is
+    read from the robots of the state the step started from (``Machine.robots``: only the
+    stepping task moves in a step).  Otherwise the state's one robot is the robot of every
+    task that is loaded.  A task the check does not load, or a name only known when the
+    program runs, reads the calling task's robot, and ``findings.fixed_readings`` says so.
+    """
+    arguments = Arguments(calls, compiler, call, entry)
     part, component = ROBOT_PARTS[entry.key]
+    result_type = calls.return_type(entry)
     if component is None:
-        return Compiled(lambda m: m.robot[part], calls.return_type(entry))
-    return Compiled(lambda m: m.robot[part][component], calls.return_type(entry))
+        def read(robot):
+            return robot[part]
+    else:
+        def read(robot):
+            return robot[part][component]
+    named = _named_task(compiler, call, arguments) if entry.key != "CPOS" else None
+    if named is None:
+        return Compiled(lambda m: read(m.robot), result_type)
+    caller = task_number(compiler)
+
+    def read_named(m):
+        number = named(m)
+        robots = m.robots
+        if number is None or number == caller or robots is None:
+            return read(m.robot)
+        return read(robots[number])
+    return Compiled(read_named, result_type)
+
+
+def _named_task(compiler, call, arguments: Arguments) -> Optional[Callable]:
+    """fn(m) -> the number of the task a call's ``\\TaskName`` or ``\\TaskRef`` names
+    (None: not a loaded task); None when the call names no task."""
+    names = compiler.linker.task_names          # as GetTaskName spells them
+    reference = argument_expression(call, "TaskRef", -1)
+    if reference is not None:
+        # taskid data have no value in the model: the name <task>Id says which task
+        text = reference.name.text if isinstance(reference, ast.NameRef) else ""
+        number = named_task(names, text[:-2]) if text.upper().endswith("ID") else None
+        return lambda m: number
+    if argument_expression(call, "TaskName", -1) is None:
+        return None
+    name = arguments.value("TaskName")
+    return lambda m: named_task(names, name(m))
 
 
 def set_robot(m, part: int, value) -> None:

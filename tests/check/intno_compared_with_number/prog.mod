@@ -1,0 +1,12 @@
+MODULE Main
+  ! INTNO compared with a number is the system variable, never a configured input.
+  VAR bool bad := FALSE;
+  PROC main()
+    WHILE TRUE DO
+      IF INTNO <> 0 THEN
+        bad := TRUE;
+      ENDIF
+      WaitTime 1;
+    ENDWHILE
+  ENDPROC
+ENDMODULE

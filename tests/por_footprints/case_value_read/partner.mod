@@ -1,0 +1,10 @@
+MODULE Partner
+  PERS num code := 0;
+  VAR bool early := FALSE;
+  PROC main()
+    TEST 0
+    CASE code:
+      early := TRUE;
+    ENDTEST
+  ENDPROC
+ENDMODULE
