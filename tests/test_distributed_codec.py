@@ -19,7 +19,7 @@ import pytest
 from rapidmc import api
 from rapidmc.check import check_property, find_reachable, native
 from rapidmc.check.distributed.codec import PickleCodec, VectorCodec, codec_for
-from rapidmc.check.distributed.partition import search_here, unlink
+from rapidmc.check.distributed.partition import link, search_here, unlink
 from rapidmc.check.distributed.product_partition import product_here
 from rapidmc.check.result import HOLDS, VIOLATED
 
@@ -99,17 +99,28 @@ def test_vectors_sent_to_another_table_are_stored_as_the_same_states():
     sender, receiver = VectorCodec(sender_table, 0, 2), VectorCodec(receiver_table, 1, 2)
     for state in states[100:]:              # the receiver numbered other states first
         receiver_table.intern(state, True)
-    stored = {}
+    stored = []
     for batch in (states[:150], states[150:], states[:150]):       # the last: all known
-        outbox = sender.outbox()
-        for parent, state in enumerate(batch):
-            sender.post(outbox, sender.prepare(state), parent)
-        for (state_id, new, parent), state in zip(receiver.store(0, sender.encode(1, outbox)),
-                                                  batch):
-            assert receiver_table[state_id] == state
-            assert parent == batch.index(state)
-            stored[state_id] = state
-    assert len(stored) == len(states) == len(receiver_table)
+        outboxes = [sender.outbox(), sender.outbox()]
+        keys = [(lambda frame, data: frame << 32 | data)(*sender_table.intern_parts(
+            *sender.prepare(state))) for state in batch]
+        owners = sender.send(outboxes, keys, range(len(batch)))
+        assert owners == sender.owners([sender.prepare(state) for state in batch])
+        before = len(receiver_table)
+        for target in (0, 1):         # (each owner's share, written for the receiver)
+            ids, new, fields = receiver.store(0, sender.encode(1, outboxes[target]))
+            assert [receiver_table[i] for i in ids.tolist()] == \
+                [batch[field] for field in fields.tolist()]
+            links = receiver.store_links(0, sender.encode(1, outboxes[target]))
+            assert not links                    # (stored already: nothing new again)
+            links = [link(0, field) for field, fresh in zip(fields.tolist(), new) if fresh]
+            assert all(unlink(each)[0] == 0 for each in links)
+            stored += [(receiver_table[state_id], batch[unlink(each)[1]]) for state_id, each
+                       in zip(range(before, len(receiver_table)), links)]
+            before = len(receiver_table)
+    assert all(got == sent_state for got, sent_state in stored)
+    assert {receiver_table[i] for i in range(len(receiver_table))} == set(states)
+    assert len(receiver_table) == len(states)
     assert sender_table.context_count() >= 2    # several contexts went across
 
 

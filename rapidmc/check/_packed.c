@@ -1817,6 +1817,112 @@ static PyObject *PackedTable_segments(PackedTable *self, PyObject *args)
                          (Py_ssize_t)(data_length * (Py_ssize_t)sizeof(uint32_t)));
 }
 
+/* ``segments_batch(keys) -> (frames, data, lengths)``: ``segments`` of many states at once,
+ * keys as bytes of uint64 ``frame id << 32 | data id``: their frame vectors end to end, their
+ * data vectors end to end, and each frame vector's length (bytes of uint32): how a
+ * distributed search writes a chunk of successors for their owners without a Python call
+ * per successor */
+static PyObject *PackedTable_segments_batch(PackedTable *self, PyObject *args)
+{
+    Py_buffer keys;
+    if (!PyArg_ParseTuple(args, "y*", &keys))
+        return NULL;
+    const uint64_t *key = keys.buf;
+    Py_ssize_t count = keys.len / (Py_ssize_t)sizeof(uint64_t);
+    Py_ssize_t frame_total = 0, data_total = 0, length;
+    PyObject *frames = NULL, *data = NULL, *lengths = NULL, *result = NULL;
+    for (Py_ssize_t i = 0; i < count; i++) {
+        int32_t frame_id = (int32_t)(key[i] >> 32), data_id = (int32_t)(key[i] & 0xFFFFFFFFu);
+        if (frame_id < 0 || frame_id >= self->frames.count || data_id < 0 ||
+                data_id >= self->data.count) {
+            PyErr_SetString(PyExc_IndexError, "no such state part");
+            goto done;
+        }
+        vt_items(&self->frames, frame_id, &length);
+        frame_total += length;
+        vt_items(&self->data, data_id, &length);
+        data_total += length;
+    }
+    frames = PyBytes_FromStringAndSize(NULL, frame_total * (Py_ssize_t)sizeof(uint32_t));
+    data = PyBytes_FromStringAndSize(NULL, data_total * (Py_ssize_t)sizeof(uint32_t));
+    lengths = PyBytes_FromStringAndSize(NULL, count * (Py_ssize_t)sizeof(uint32_t));
+    if (frames == NULL || data == NULL || lengths == NULL)
+        goto done;
+    uint32_t *frame_out = (uint32_t *)PyBytes_AS_STRING(frames);
+    uint32_t *data_out = (uint32_t *)PyBytes_AS_STRING(data);
+    uint32_t *length_out = (uint32_t *)PyBytes_AS_STRING(lengths);
+    for (Py_ssize_t i = 0; i < count; i++) {
+        const uint32_t *items = vt_items(&self->frames, (int32_t)(key[i] >> 32), &length);
+        memcpy(frame_out, items, length * sizeof(uint32_t));
+        frame_out += length;
+        length_out[i] = (uint32_t)length;
+        items = vt_items(&self->data, (int32_t)(key[i] & 0xFFFFFFFFu), &length);
+        memcpy(data_out, items, length * sizeof(uint32_t));
+        data_out += length;
+    }
+    result = PyTuple_Pack(3, frames, data, lengths);
+done:
+    Py_XDECREF(frames);
+    Py_XDECREF(data);
+    Py_XDECREF(lengths);
+    PyBuffer_Release(&keys);
+    return result;
+}
+
+/* ``intern_batch(frames, data, lengths) -> (ids, new)``: ``intern_vectors`` of many states
+ * at once (the layout ``segments_batch`` writes; each data vector ``len(data) / states``
+ * ids): their ids (bytes of int64) and whether each was new (bytes of 0 and 1), in order;
+ * how a worker stores a received batch without a Python call per state */
+static PyObject *PackedTable_intern_batch(PackedTable *self, PyObject *args)
+{
+    Py_buffer frames, data, lengths;
+    if (ensure_index(self) < 0 ||
+            !PyArg_ParseTuple(args, "y*y*y*", &frames, &data, &lengths))
+        return NULL;
+    PyObject *ids = NULL, *news = NULL, *result = NULL;
+    Py_ssize_t count = lengths.len / (Py_ssize_t)sizeof(uint32_t);
+    Py_ssize_t frame_total = frames.len / (Py_ssize_t)sizeof(uint32_t);
+    Py_ssize_t data_total = data.len / (Py_ssize_t)sizeof(uint32_t);
+    Py_ssize_t width = count ? data_total / count : 0;
+    const uint32_t *length = lengths.buf;
+    Py_ssize_t sum = 0;
+    for (Py_ssize_t i = 0; i < count; i++)
+        sum += length[i];
+    if (sum != frame_total || width * count != data_total) {
+        PyErr_SetString(PyExc_ValueError, "intern_batch: vectors and lengths disagree");
+        goto done;
+    }
+    ids = PyBytes_FromStringAndSize(NULL, count * (Py_ssize_t)sizeof(int64_t));
+    news = PyBytes_FromStringAndSize(NULL, count);
+    if (ids == NULL || news == NULL)
+        goto done;
+    int64_t *id_out = (int64_t *)PyBytes_AS_STRING(ids);
+    char *new_out = PyBytes_AS_STRING(news);
+    const uint32_t *frame = frames.buf, *row = data.buf;
+    for (Py_ssize_t i = 0; i < count; i++) {
+        int32_t frame_id = vt_intern(&self->frames, frame, length[i]);
+        int32_t data_id = frame_id < 0 ? -1 : vt_intern(&self->data, row, width);
+        if (data_id < 0)
+            goto done;
+        int is_new = 0;
+        Py_ssize_t id = intern_key(self, frame_id, data_id, 1, &is_new);
+        if (id == -2)
+            goto done;
+        id_out[i] = id;
+        new_out[i] = (char)is_new;
+        frame += length[i];
+        row += width;
+    }
+    result = PyTuple_Pack(2, ids, news);
+done:
+    Py_XDECREF(ids);
+    Py_XDECREF(news);
+    PyBuffer_Release(&frames);
+    PyBuffer_Release(&data);
+    PyBuffer_Release(&lengths);
+    return result;
+}
+
 /* ``resets``: None, or (offsets: bytes of int32, pairs: bytes of int32) */
 static int parse_resets(PyObject *resets, int32_t **offsets, int32_t **pairs,
                         Py_ssize_t *lists)
@@ -2152,6 +2258,10 @@ static PyMethodDef PackedTable_methods[] = {
      "intern_parts(frame, data) -> (frame id, data id): segments by their vectors"},
     {"segments", (PyCFunction)PackedTable_segments, METH_VARARGS,
      "segments(frame id, data id) -> (frame, data): interned segments' vectors as bytes"},
+    {"segments_batch", (PyCFunction)PackedTable_segments_batch, METH_VARARGS,
+     "segments_batch(keys) -> (frames, data, lengths): segments of many states"},
+    {"intern_batch", (PyCFunction)PackedTable_intern_batch, METH_VARARGS,
+     "intern_batch(frames, data, lengths) -> (ids, new): many states by their vectors"},
     {"set_program", (PyCFunction)PackedTable_set_program, METH_VARARGS,
      "set_program(store_length, io_length, routines, lazy, valuations): the compiled code"},
     {"step", (PyCFunction)PackedTable_step, METH_O,

@@ -19,10 +19,12 @@ Two codecs, one per kind of state table, with one interface (``Partition`` uses 
 
 Interface: ``successor_keys(id, state, successors)`` (a key per successor, in the model's
 order, from the successor states or from ``successors(state)``; equal keys: equal states,
-for the level's deduplication), ``route(keys) -> (owners, items)`` (a chunk at a time),
-``outbox()`` and ``post(outbox, item, parent id)`` (a batch being written: bytes as it
-grows, not an object per state), ``encode(target, outbox)``, ``store(sender, data)``
-(stores the batch's states, yields (id, new, parent id)), ``owns(state, index)``.
+for the level's deduplication), ``outbox()`` (a batch being written), ``send(outboxes, keys,
+fields)`` (a chunk of keys routed to their owners' outboxes, each with a number, its
+parent's id; returns each key's owner), ``encode(target, outbox)``, ``store(sender, data)``
+(stores the batch's states: their ids, whether each was new and their fields, in order),
+``store_links(sender, data)`` (``store``, then the links ``link(sender, field)`` of the new
+ones), ``owns(state, index)``.
 """
 from __future__ import annotations
 
@@ -30,13 +32,23 @@ import hashlib
 import pickle
 import struct
 from array import array
-from typing import Hashable, Iterator, Sequence
+from typing import Hashable, Sequence
 
-from .canonical import canonical_bytes, owner, owner_of_bytes, state_bytes
+from .canonical import canonical_bytes
 
 PROTOCOL = pickle.HIGHEST_PROTOCOL
+ID_BITS = 40                       # a link: sender partition << ID_BITS | the parent's id
+ID_MASK = (1 << ID_BITS) - 1
 _SIZES = struct.Struct("<QQQQ")    # a vector batch's header, frames, data sizes; states
 SLICE = 1 << 16                    # states of a received batch translated at a time
+
+
+def link(partition: int, state_id: int) -> int:
+    return partition << ID_BITS | state_id
+
+
+def unlink(parent: int) -> tuple[int, int]:
+    return parent >> ID_BITS, parent & ID_MASK
 
 
 def codec_for(table, index: int, count: int):
@@ -52,66 +64,130 @@ def codec_for(table, index: int, count: int):
     return PickleCodec(table, count)
 
 
-class _Keyed:
-    """A successor with its canonical bytes, equal (and hashed) by those bytes alone."""
-    __slots__ = ("encoded", "state")
-
-    def __init__(self, encoded: bytes, state):
-        self.encoded, self.state = encoded, state
-
-    def __eq__(self, other) -> bool:
-        return self.encoded == other.encoded
-
-    def __hash__(self) -> int:
-        return hash(self.encoded)
-
-
-class PickleCodec:
-    """States pickled by the standard C pickler, owned by ``canonical.owner``."""
-
-    def __init__(self, table, count: int):
-        self.table, self.count = table, count
-
-    def successor_keys(self, state_id: int, state, successors) -> list:
-        """Keys: (canonical bytes, the state)."""
-        if callable(successors):
-            successors = successors(state)
-        return [_Keyed(state_bytes(successor), successor) for successor in successors]
-
-    def route(self, keys: Sequence["_Keyed"]) -> tuple[list[int], list]:
-        count = self.count
-        return [owner_of_bytes(key.encoded, count) for key in keys], [key.state for key in keys]
-
-    def outbox(self) -> tuple[list, array]:
-        return [], array("q")
-
-    def post(self, outbox, item, parent: int) -> None:
-        outbox[0].append(item)
-        outbox[1].append(parent)
-
-    def encode(self, target: int, outbox) -> bytes:
-        return pickle.dumps(outbox, protocol=PROTOCOL)
-
-    def store(self, sender: int, data: bytes) -> Iterator[tuple[int, bool, int]]:
-        states, parents = pickle.loads(data)
-        intern = self.table.intern
-        for state, parent in zip(states, parents):
-            state_id, new = intern(state, True)
-            yield state_id, new, parent
-
-    def owns(self, state: Hashable, index: int) -> bool:
-        return owner(state, self.count) == index
-
-
 # odd 64-bit constants of the owner hash (any fixed ones do; these are splitmix64's)
 _GOLDEN = 0x9E3779B97F4A7C15
 _MIX1, _MIX2 = 0xBF58476D1CE4E5B9, 0x94D049BB133111EB
+_MASK64 = (1 << 64) - 1
 
 
 def fingerprint(value) -> int:
     """A 64-bit fingerprint of a value, the same in every process (canonical bytes)."""
     return int.from_bytes(hashlib.blake2b(canonical_bytes(value), digest_size=8).digest(),
                           "little")
+
+
+class _Keyed:
+    """A successor with its parts' fingerprints (``PartPrints``): hashed by them, equal to
+    another successor exactly when the states are equal (the fingerprints only sort out
+    the unequal ones cheaply)."""
+    __slots__ = ("prints", "state")
+
+    def __init__(self, prints: tuple, state):
+        self.prints, self.state = prints, state
+
+    def __eq__(self, other) -> bool:
+        return self.prints == other.prints and self.state == other.state
+
+    def __hash__(self) -> int:
+        return hash(self.prints)
+
+
+class PartPrints:
+    """The fingerprint (``fingerprint``: of its canonical bytes, the same in every process) of
+    each part of a tuple-shaped state, remembered by the part's identity and then by its
+    value: a successor hands on most parts of its state unchanged, as the same objects,
+    found without hashing them (a 512-element array too); a part a step wrote is often
+    equal to one met before (found by value), and only a new value is encoded.  The
+    remembered parts are kept alive, so an identity is never another object's; each memory
+    is emptied when it grows past ``limit``."""
+
+    def __init__(self, limit: int = 1 << 16):
+        self.by_identity: dict = {}     # id(part) -> (part, fingerprint)
+        self.by_value: dict = {}        # part -> fingerprint
+        self.limit = limit
+
+    def __call__(self, state) -> tuple:
+        if not isinstance(state, tuple):
+            return (fingerprint(state),)
+        by_identity = self.by_identity
+        prints = []
+        for part in state:
+            entry = by_identity.get(id(part))
+            if entry is None or entry[0] is not part:
+                if len(by_identity) >= self.limit:
+                    by_identity.clear()
+                entry = by_identity[id(part)] = (part, self._by_value(part))
+            prints.append(entry[1])
+        return tuple(prints)
+
+    def _by_value(self, part) -> int:
+        try:
+            found = self.by_value.get(part)
+        except TypeError:                   # (an unhashable part: encoded each time)
+            return fingerprint(part)
+        if found is None:
+            if len(self.by_value) >= self.limit:
+                self.by_value.clear()
+            found = self.by_value[part] = fingerprint(part)
+        return found
+
+
+def owner_of_prints(prints: tuple, count: int) -> int:
+    """The partition of a state by its parts' fingerprints, position by position."""
+    mixed = 0
+    for position, value in enumerate(prints):
+        mixed = (mixed + value * (2 * position + 1) * _MIX1) & _MASK64
+    mixed ^= mixed >> 30
+    mixed = mixed * _MIX1 & _MASK64
+    mixed ^= mixed >> 27
+    mixed = mixed * _MIX2 & _MASK64
+    mixed ^= mixed >> 31
+    return mixed % count
+
+
+class PickleCodec:
+    """States pickled by the standard C pickler, owned by ``owner_of_prints``."""
+
+    def __init__(self, table, count: int):
+        self.table, self.count = table, count
+        self.prints = PartPrints()
+
+    def successor_keys(self, state_id: int, state, successors) -> list:
+        """Keys: (the parts' fingerprints, the state)."""
+        if callable(successors):
+            successors = successors(state)
+        prints = self.prints
+        return [_Keyed(prints(successor), successor) for successor in successors]
+
+    def outbox(self) -> tuple[list, array]:
+        return [], array("q")
+
+    def send(self, outboxes, keys: Sequence["_Keyed"], fields: Sequence[int]) -> list[int]:
+        count = self.count
+        owners = []
+        for key, field in zip(keys, fields):
+            target = owner_of_prints(key.prints, count)
+            outboxes[target][0].append(key.state)
+            outboxes[target][1].append(field)
+            owners.append(target)
+        return owners
+
+    def encode(self, target: int, outbox) -> bytes:
+        return pickle.dumps(outbox, protocol=PROTOCOL)
+
+    def store(self, sender: int, data: bytes) -> tuple[list, list, array]:
+        states, fields = pickle.loads(data)
+        intern = self.table.intern
+        stored = [intern(state, True) for state in states]
+        return array("q", [i for i, _ in stored]), [new for _, new in stored], fields
+
+    def store_links(self, sender: int, data: bytes) -> array:
+        _, new, fields = self.store(sender, data)
+        high = sender << ID_BITS
+        return array("q", [high | field for field, fresh in zip(fields, new) if fresh])
+
+    def owns(self, state: Hashable, index: int) -> bool:
+        return owner_of_prints(self.prints(state), self.count) == index
 
 
 class VectorCodec:
@@ -129,7 +205,8 @@ class VectorCodec:
         self.value_map: dict = {}            # per sender: its value id -> this table's
         self.context_map: dict = {}
         self._vectors = table.vectors_of
-        self._intern_parts, self._segments = table.intern_parts, table.segments
+        self._intern_parts = table.intern_parts
+        self._segments_batch, self._intern_batch = table.segments_batch, table.intern_batch
         self._machine = table.step                 # (None: the state is Python's to step)
 
     # ---------------------------------------------------------------- sending
@@ -150,21 +227,48 @@ class VectorCodec:
         return keys
 
     def prepare(self, state: Hashable) -> tuple[bytes, bytes]:
-        """The state's vectors (for ``owners``, ``post``)."""
+        """The state's vectors (for ``owners``)."""
         return self._vectors(state)
 
-    def route(self, keys: Sequence[int]) -> tuple[list[int], list[tuple[bytes, bytes]]]:
-        segments = self._segments
-        items = [segments(key >> 32, key & 0xFFFFFFFF) for key in keys]
-        return self.owners(items), items
+    def send(self, outboxes, keys: Sequence[int], fields: Sequence[int]) -> list[int]:
+        """The chunk's successors, written to their owners' outboxes with their ``fields``
+        (a parent's id): their segments read out of the table together
+        (``segments_batch``), their owners computed together, and each owner's share
+        written again in one call.  Returns each successor's owner."""
+        np = self.np
+        keys = np.array(keys, np.uint64)
+        parents = np.array(fields, np.int64)
+        frames, data, lengths = self._segments_batch(keys.tobytes())
+        owners = self._owners_of(np.frombuffer(frames, np.uint32),
+                                 np.frombuffer(data, np.uint32),
+                                 np.frombuffer(lengths, np.uint32))
+        for target in range(self.count):
+            mine = owners == target
+            number = int(np.count_nonzero(mine))
+            if not number:
+                continue
+            if number == len(keys):
+                outboxes[target].append((frames, data, lengths, parents.tobytes()))
+            else:
+                outboxes[target].append((*self._segments_batch(keys[mine].tobytes()),
+                                         parents[mine].tobytes()))
+        return owners.tolist()
 
     def owners(self, items: Sequence[tuple[bytes, bytes]]) -> list[int]:
-        """The owner of each state (its vectors): a hash over the fingerprints of its
-        context, program counter and values, position by position."""
+        """The owner of each state given by its vectors (``prepare``)."""
+        np = self.np
+        frames = np.frombuffer(b"".join(frame for frame, _ in items), np.uint32)
+        lengths = np.fromiter((len(frame) >> 2 for frame, _ in items), np.uint32, len(items))
+        data = np.frombuffer(b"".join(data for _, data in items), np.uint32)
+        return self._owners_of(frames, data, lengths).tolist()
+
+    def _owners_of(self, frames, data, lengths):
+        """The owners of states (their frame vectors end to end, their data vectors end to
+        end, the frames' lengths): a hash over the fingerprints of each one's context,
+        program counter and values, position by position."""
         np = self.np
         self._fingerprint_new()
-        frames = np.frombuffer(b"".join(frame for frame, _ in items), np.uint32)
-        lengths = np.fromiter((len(frame) >> 2 for frame, _ in items), np.int64, len(items))
+        lengths = lengths.astype(np.int64)
         starts = np.cumsum(lengths) - lengths
         with np.errstate(over="ignore"):
             prints = np.take(self.value_print, frames, mode="clip")
@@ -175,8 +279,7 @@ class VectorCodec:
             mixed = np.add.reduceat(prints * (positions * np.uint64(2) + np.uint64(1))
                                     * np.uint64(_MIX1), starts)
             if self.data_length:
-                data = np.frombuffer(b"".join(data for _, data in items), np.uint32)
-                data = self.value_print[data].reshape(len(items), self.data_length)
+                data = self.value_print[data].reshape(len(lengths), self.data_length)
                 weights = (np.arange(self.data_length, dtype=np.uint64) * np.uint64(2) +
                            np.uint64(1)) * np.uint64(_MIX2)
                 mixed ^= (data * weights).sum(axis=1, dtype=np.uint64)
@@ -185,7 +288,7 @@ class VectorCodec:
             mixed ^= mixed >> np.uint64(27)
             mixed *= np.uint64(_MIX2)
             mixed ^= mixed >> np.uint64(31)
-        return (mixed % np.uint64(self.count)).tolist()
+        return mixed % np.uint64(self.count)
 
     def _fingerprint_new(self) -> None:
         """Fingerprints of the values and contexts the table numbered since the last call."""
@@ -202,22 +305,14 @@ class VectorCodec:
                 (self.context_print, np.fromiter(map(fingerprint, contexts), np.uint64,
                                                  len(contexts))))
 
-    def outbox(self) -> tuple[bytearray, bytearray, array, array]:
-        """A batch being written: frame vectors, data vectors, the frames' lengths (in ids),
-        the parents' ids."""
-        return bytearray(), bytearray(), array("I"), array("q")
-
-    def post(self, outbox, item: tuple[bytes, bytes], parent: int) -> None:
-        frames, data, lengths, parents = outbox
-        frame = item[0]
-        frames += frame
-        data += item[1]
-        lengths.append(len(frame) >> 2)
-        parents.append(parent)
+    def outbox(self) -> list:
+        """A batch being written: chunks of (frame vectors, data vectors, the frames'
+        lengths in ids, the parents' ids), as ``send`` wrote them."""
+        return []
 
     def encode(self, target: int, outbox) -> bytes:
         """A batch for ``target``: the values and contexts numbered since the last batch to
-        it, then the outbox."""
+        it, then the outbox's chunks, each part joined."""
         table = self.table
         values = contexts = ()
         if target != self.index:
@@ -225,15 +320,17 @@ class VectorCodec:
             self.sent_values[target] += len(values)
             contexts = table.exported_contexts(self.sent_contexts[target])
             self.sent_contexts[target] += len(contexts)
-        frames, data, lengths, parents = outbox
         header = pickle.dumps((values, contexts), protocol=PROTOCOL)
-        return b"".join((_SIZES.pack(len(header), len(frames), len(data), len(lengths)),
+        parts = [b"".join(chunk[part] for chunk in outbox) for part in range(4)]
+        frames, data, lengths, parents = parts
+        return b"".join((_SIZES.pack(len(header), len(frames), len(data), len(lengths) >> 2),
                          header, frames, data, lengths, parents))
 
     # -------------------------------------------------------------- receiving
-    def store(self, sender: int, blob: bytes) -> Iterator[tuple[int, bool, int]]:
-        """The batch's states stored, read in place (views of ``blob``) and translated a
-        slice at a time, so a large batch is not copied whole."""
+    def store(self, sender: int, blob: bytes) -> tuple:
+        """The batch's states stored (``intern_batch``), read in place (views of ``blob``)
+        and translated a slice at a time, so a large batch is not copied whole: (their ids,
+        whether each was new, their fields), arrays in the batch's order."""
         np, table = self.np, self.table
         view = memoryview(blob)
         header_size, frames_size, data_size, count = _SIZES.unpack_from(view)
@@ -246,37 +343,41 @@ class VectorCodec:
         at += data_size
         lengths = np.frombuffer(view[at:at + 4 * count], np.uint32)
         at += 4 * count
-        parents = array("q")
-        parents.frombytes(view[at:at + 8 * count])
+        parents = np.frombuffer(view[at:at + 8 * count], np.int64)
         foreign = sender != self.index
         if foreign:
             value_map, context_map = self._maps(sender, values, contexts)
         ends = np.cumsum(lengths, dtype=np.int64)
         width = self.data_length
-        intern = table.intern_vectors
+        intern = self._intern_batch
+        ids, news = [], []
         for first in range(0, count, SLICE):
             last = min(first + SLICE, count)
             begin = int(ends[first - 1]) if first else 0
-            some_frames = frames[begin:int(ends[last - 1])] if last > first else frames[:0]
+            some_frames = frames[begin:int(ends[last - 1])]
             some_data = data[first * width:last * width]
-            starts = ends[first:last] - lengths[first:last] - begin
+            some_lengths = lengths[first:last]
             if foreign:                                # its ids -> this table's ids
+                starts = ends[first:last] - some_lengths - begin
                 mapped = np.take(value_map, some_frames, mode="clip") if len(value_map) \
                     else some_frames.copy()
                 mapped[starts] = context_map[some_frames[starts]]
                 mapped[starts + 1] = some_frames[starts + 1]
                 some_frames = mapped
                 some_data = value_map[some_data] if len(some_data) else some_data
-            frame_bytes, data_bytes = some_frames.tobytes(), some_data.tobytes()
-            step = 4 * width
-            offset = 0
-            for number in range(first, last):
-                end = offset + 4 * int(lengths[number])
-                local = number - first
-                state_id, new = intern(frame_bytes[offset:end],
-                                       data_bytes[local * step:(local + 1) * step], True)
-                offset = end
-                yield state_id, new, parents[number]
+            some_ids, some_new = intern(some_frames, some_data, some_lengths)
+            ids.append(np.frombuffer(some_ids, np.int64))
+            news.append(np.frombuffer(some_new, np.bool_))
+        if not ids:
+            return np.zeros(0, np.int64), np.zeros(0, np.bool_), parents
+        return np.concatenate(ids), np.concatenate(news), parents
+
+    def store_links(self, sender: int, blob: bytes) -> array:
+        """``store``, then the links to the parents of the new states, in their order."""
+        _, new, fields = self.store(sender, blob)
+        links = array("q")
+        links.frombytes((fields[new] | self.np.int64(sender << ID_BITS)).tobytes())
+        return links
 
     def _maps(self, sender: int, values, contexts) -> tuple:
         """The arrays from ``sender``'s value and context ids to this table's, extended by

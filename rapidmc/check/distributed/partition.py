@@ -7,16 +7,20 @@ state table of the engine's (``native.state_table``: the model's packed table wh
 offers one, else the compiled one where built), each
 with the link to the state it was first reached from, which may live in another partition.
 
-A link is one number: ``sender << ID_BITS | id`` (the sender partition and the parent's id
-there), -1 for an initial state, so parents cost an ``array`` slot each.
+A link is one number (``codec.link``): ``sender << ID_BITS | id`` (the sender partition and
+the parent's id there), -1 for an initial state, so parents cost an ``array`` slot each.
 
-The search runs in breadth-first levels.  ``receive`` takes the states that every
-partition (in partition order) sent this one at the end of the last level and stores the
-new ones in that order; ``expand`` steps every state stored since the previous ``expand``
-(asking the predicate of each first: the first one it marks ends the search) and sorts
-their successors into one batch per owner.  The worker's ``codec`` (``codec.py``) decides
-the owner of a state and how states travel: as the packed table's vectors where the model
-has one, else pickled.
+The search runs in breadth-first levels, each in one or more rounds.  A round is one call
+of ``step``: ``receive`` stores the states the other partitions sent in the round before
+(and the batch this one kept for itself), and ``expand`` steps at most ``ROUND`` states of
+the current level (asking the predicate of each first: the first one it marks ends the
+search) and sorts their successors into one batch per owner.  A round that ``advance``s
+begins the next level with the states stored since the last one began; the driver asks for
+it once every partition has expanded its whole level, so a state is stored at its depth.
+Rounds bound what a worker holds at once: the successors of ``ROUND`` states and their
+batches, not a whole level's.  The worker's ``codec`` (``codec.py``) decides the owner of a
+state and how states travel: as the packed table's vectors where the model has one, else
+pickled.
 """
 from __future__ import annotations
 
@@ -28,11 +32,10 @@ from typing import Callable, Hashable, Optional, Sequence
 
 from ..collector import freeze_survivors, frozen_while_searching
 from ..native import engine_of, state_table
-from .codec import codec_for
+from .codec import codec_for, link, unlink  # noqa: F401  (search's links)
 
-ID_BITS = 40
-ID_MASK = (1 << ID_BITS) - 1
-CHUNK = 4096            # successors whose owners are computed together (``codec.owners``)
+CHUNK = 4096            # successors whose owners are computed together (``codec.send``)
+ROUND = 1 << 13         # states a worker expands in one round at most (module docstring)
 NO_PARENT = -1
 
 
@@ -45,14 +48,6 @@ def encode_batch(batch) -> bytes:
 
 def decode_batch(data: bytes):
     return pickle.loads(data)
-
-
-def link(partition: int, state_id: int) -> int:
-    return partition << ID_BITS | state_id
-
-
-def unlink(parent: int) -> tuple[int, int]:
-    return parent >> ID_BITS, parent & ID_MASK
 
 
 class SystemSource:
@@ -105,6 +100,8 @@ class Partition:
         self.codec = codec_for(self.table, index, count)
         self.parent = array("q")
         self.expanded = 0                      # states before this id have been expanded
+        self.level_end = 0                     # the current level: ids below this one
+        self.own = None                        # the batch the last round kept for this one
         self.transitions = 0
         self.deadlocks = 0
         self.sent = 0                          # successors sent to other partitions
@@ -120,35 +117,38 @@ class Partition:
         self.start_rss_kb = _peak_rss_kb()      # the process's peak before this search
         self.peak_private_kb = 0               # (``_note_memory``)
 
-    def receive(self, senders: Sequence[int], *batches) -> tuple[int, int, int]:
+    def receive(self, senders: Sequence[int], *batches) -> int:
         """Store the new states of the batches (``senders[i]`` sent ``batches[i]``, written
         by the codec: states and their parents' ids there; sender -1: the initial states,
-        sent to every partition, of which each keeps those it owns).  Returns (states
-        stored, states new now, -1: the predicate is asked of a new state when ``expand``
-        comes to it)."""
+        sent to every partition, of which each keeps those it owns), and of the batch the
+        last round kept here, in partition order.  Returns the states stored."""
         table, parent = self.table, self.parent
-        before = len(table)
-        for sender, batch in zip(senders, batches):
+        arrived = list(zip(senders, batches))
+        if self.own is not None:
+            arrived.append((self.index, self.own))
+            arrived.sort(key=lambda pair: pair[0])
+            self.own = None
+        for sender, batch in arrived:
             if sender < 0:
                 for state in decode_batch(batch)[0]:
                     if self.count == 1 or self.codec.owns(state, self.index):
                         if table.intern(state, True)[1]:
                             parent.append(NO_PARENT)
                 continue
-            high = sender << ID_BITS
-            for _, new, parent_id in self.codec.store(sender, batch):
-                if new:
-                    parent.append(high | parent_id)
-        return len(table), len(table) - before, -1
+            parent.extend(self.codec.store_links(sender, batch))
+        return len(table)
 
-    def step(self, senders: Sequence[int], *batches) -> tuple:
-        """``receive`` then ``expand`` in one call (one actor call per level: a call costs a
-        worker milliseconds of CPU time): the batches ``expand`` makes, then (states
-        stored, new, the first new state the predicate marks or -1, and ``expand``'s
-        figures).  Nothing is sent once a target was found or nothing was new."""
+    def step(self, advance: bool, senders: Sequence[int], *batches) -> tuple:
+        """One round (module docstring): ``receive``, then (``advance``) begin the next
+        level, then ``expand``.  Returns a batch per partition (this one's own is kept here
+        and an empty one returned in its place), then (states stored, the level's states
+        when it began in this round else 0, the first state the predicate marks or -1,
+        transitions, deadlocks, the first deadlocked state when those are targets or -1,
+        whether ``watch`` said True, the level's states still to expand here).  Nothing is
+        sent once a target was found."""
         started = time.process_time()
         try:
-            return self._step(senders, batches)
+            return self._step(advance, senders, batches)
         finally:
             freeze_survivors()
             self.step_seconds += time.process_time() - started
@@ -166,20 +166,23 @@ class Partition:
             return
         self.peak_private_kb = max(self.peak_private_kb, private)
 
-    def _step(self, senders: Sequence[int], batches) -> tuple:
-        stored, new, _ = self.receive(senders, *batches)
-        if new == 0:
-            return (*self._nothing(), (stored, new, -1, self.transitions, self.deadlocks, -1,
-                                       self.watched))
+    def _step(self, advance: bool, senders: Sequence[int], batches) -> tuple:
+        stored = self.receive(senders, *batches)
+        new = 0
+        if advance:
+            new = stored - self.level_end
+            self.level_end = stored
         *outgoing, figures = self.expand()
-        return (*outgoing, (stored, new, *figures))
+        self.own = outgoing[self.index]
+        outgoing[self.index] = b""
+        return (*outgoing, (stored, new, *figures, self.level_end - self.expanded))
 
     def _nothing(self) -> list:
         return [self.codec.encode(target, self.codec.outbox()) for target in range(self.count)]
 
     def expand(self) -> tuple:
-        """Step the states stored since the last call: one batch per partition, then the
-        level's figures (the first of those states the predicate marks or -1; transitions,
+        """Step the next ``ROUND`` states of the level: one batch per partition, then the
+        round's figures (the first of those states the predicate marks or -1; transitions,
         deadlocks, the first deadlocked state when those are targets or -1, and whether
         ``watch`` said True).  Once the predicate marks a state the level is dropped (the
         search ends there, with the figures of the levels before)."""
@@ -191,7 +194,7 @@ class Partition:
         keys_of = codec.successor_keys
         predicate = self.predicate
         outboxes = [codec.outbox() for _ in range(count)]
-        post = codec.post
+        send = codec.send
         # a successor reached again in this level is sent once (its first parent, as its
         # owner would keep): storing a state costs its owner more than encoding it here
         sending: set = set()
@@ -201,22 +204,21 @@ class Partition:
         transitions = deadlocks = 0
         deadlock_target = -1
         watched = self.watched
-        end = len(table)
+        end = min(self.level_end, self.expanded + ROUND)
 
         def flush():
-            owners, items = codec.route(pending)
-            for target, item, parent_id in zip(owners, items, pending_parents):
-                post(outboxes[target], item, parent_id)
-                sent[target] += 1
+            owners = send(outboxes, pending, pending_parents)
+            for target in range(count):
+                sent[target] += owners.count(target)
             pending.clear()
             pending_parents.clear()
 
         for state_id in range(self.expanded, end):
             state = table[state_id]
             if predicate(state):
-                self.expanded = end
-                return (*self._nothing(), (state_id, self.transitions, self.deadlocks, -1,
-                                           self.watched))
+                self.expanded = self.level_end
+                return [*self._nothing(), (state_id, self.transitions, self.deadlocks, -1,
+                                           self.watched)]
             if watch is None:
                 keys = keys_of(state_id, state, successors_of)
             else:                              # (it wants the successor states)
@@ -247,8 +249,8 @@ class Partition:
         outgoing = [codec.encode(target, outboxes[target]) for target in range(count)]
         self.sent_bytes += sum(len(batch) for target, batch in enumerate(outgoing)
                                if target != index)
-        return (*outgoing,
-                (-1, self.transitions, self.deadlocks, deadlock_target, self.watched))
+        return [*outgoing,
+                (-1, self.transitions, self.deadlocks, deadlock_target, self.watched)]
 
     def _targets(self, state) -> list:
         return [successor for _, successor in self.system.successors(state)]
@@ -287,27 +289,42 @@ def _peak_rss_kb() -> int:
 
 
 def search_here(system, count: int, predicate: str = "failed") -> tuple[list, int, tuple]:
-    """The partitioned search with ``count`` partitions driven in this process, level by
-    level as ``search`` drives the actors (no Ray): for tests and bench/distributed.py.
+    """The partitioned search with ``count`` partitions driven in this process by the
+    cluster's driver (``search._Rounds``), without Ray: for tests and bench/distributed.py.
     Returns (the partitions, levels, the first (partition, state id) the predicate marks
     or None)."""
+    from .search import _Rounds
+    from ..budget import SearchBudget
     parts = [Partition() for _ in range(count)]
     for index, part in enumerate(parts):
         part.start(index, count, SystemSource(system), predicate, False)
-    initial = encode_batch((list(system.initial_states()), []))
-    stepped = [part.step([-1], initial) for part in parts]
-    senders = list(range(count))
-    levels = 1
     try:
-        while True:
-            for index, answer in enumerate(stepped):
-                if answer[count][2] >= 0:
-                    return parts, levels, (index, answer[count][2])
-            if not sum(answer[count][1] for answer in stepped):
-                return parts, levels, None
-            stepped = [part.step(senders, *[answer[target] for answer in stepped])
-                       for target, part in enumerate(parts)]
-            levels += 1
+        rounds = _Rounds(_HERE, [_Here(part) for part in parts], system, SearchBudget(None),
+                         None)
+        result, _, _ = rounds.run()
     finally:
         for part in parts:
             part.finish()
+    return parts, result.stats.max_depth + 1, rounds.target
+
+
+class _Here:
+    """A partition called as ``worker.call`` calls an actor, in this process."""
+
+    def __init__(self, part: Partition):
+        self.part = part
+        self.call = self
+
+    def options(self, num_returns: int = 1) -> "_Here":
+        return self
+
+    def remote(self, _kind: str, method: str, *args):
+        return getattr(self.part, method)(*args)
+
+
+class _HERE:
+    """``ray.get`` for ``_Here``: the answers are there already."""
+
+    @staticmethod
+    def get(answers):
+        return answers

@@ -122,7 +122,8 @@ class ProductPartition:
                 continue
             counts, ids = answers[sender]
             moves, letters = self._moves, self.letters
-            for model_id, _, field in self.codec.store(sender, batch):
+            stored_ids, _, stored_fields = self.codec.store(sender, batch)
+            for model_id, field in zip(stored_ids.tolist(), stored_fields.tolist()):
                 parent_id, q = divmod(field, width)
                 letter = letters[model_id] if model_id < len(letters) else \
                     self._letter(model_id)
@@ -161,15 +162,12 @@ class ProductPartition:
         successors_of = getattr(self.system, "successor_states", None) or self._targets
         keys_of = codec.successor_keys
         outboxes = [codec.outbox() for _ in range(count)]
-        post = codec.post
+        send = codec.send
         sent_to, fanout = array("i"), array("q")
         pending, fields = [], []
 
         def flush():
-            owners, items = codec.route(pending)
-            for target, item, field in zip(owners, items, fields):
-                post(outboxes[target], item, field)
-                sent_to.append(target)
+            sent_to.extend(send(outboxes, pending, fields))
             pending.clear()
             fields.clear()
 

@@ -2,21 +2,22 @@
 
 ``partitioned_reachable`` answers what ``reachability.find_reachable`` answers (the
 shortest path to a state the predicate marks; HOLDS after the whole state space; UNKNOWN at
-a bound), with the states split among ``Partition`` actors by their canonical hash.  Each
-level: every partition expands its new states and sorts their successors by owner (one
-batch per owner, handed from actor to actor through Ray's object store, never through this
-process); then every partition stores what it was sent (``Partition.step``: the storing of
-one level and the expanding of the next in one actor call).  A level that stores nothing new
-ends a complete search.
+a bound), with the states split among ``Partition`` actors by their canonical hash.  The
+search goes in rounds (``partition`` module docstring): in each, every partition stores
+what it was sent in the round before and expands at most ``partition.ROUND`` states of the
+current level, sorting their successors by owner (one batch per owner, handed from actor to
+actor through Ray's object store, never through this process; the batch for itself it
+keeps).  A level ends once every partition expanded its share; a level that stores nothing
+new ends a complete search.
 
 A violation is found in the level of its depth, as in the one-process search, so the path is
 as short; it is rebuilt by following parent links from partition to partition, and its
 labels by stepping the model along it here (as ``reachability`` does), so it replays.
 
 A complete search stores exactly the reachable states and counts each transition once: the
-same states, transitions, deadlocks and depth as one process.  The state limit is checked
-after each level (a level may store more than the limit before the search stops: UNKNOWN
-either way), the time limit between levels.
+same states, transitions, deadlocks and depth as one process.  The state and time limits
+are checked after each round (a round may store more than the limit before the search
+stops: UNKNOWN either way).
 
 A worker that dies (killed, out of memory, crashed node) ends the search with the
 ``WORKER_LOST`` diagnostic and its exit code: never with a verdict.
@@ -56,7 +57,7 @@ def partitioned_reachable(ray, partitions: int, system: TransitionSystem, predic
             ray.get([call(actor, SAFETY, "start", index, partitions, shared, predicate,
                                         deadlock_is_target, watch)
                      for index, actor in enumerate(actors)])
-            return _Levels(ray, actors, system, budget, on_level).run()
+            return _Rounds(ray, actors, system, budget, on_level).run()
     except BaseException:
         drop_actors(ray)         # (one may be dead; the next search starts afresh)
         raise
@@ -111,7 +112,10 @@ def _worker_lost(exc: Exception):
                  exit_code=EXIT_WORKER_LOST)
 
 
-class _Levels:
+class _Rounds:
+    """Drives the partitions' rounds (``partition`` module docstring): each round's batches
+    go from actor to actor, and a level ends once every partition expanded its share."""
+
     def __init__(self, ray, actors, system, budget: SearchBudget, on_level):
         self.ray, self.actors, self.system = ray, actors, system
         self.budget, self.on_level = budget, on_level
@@ -120,28 +124,32 @@ class _Levels:
         self.transitions = self.deadlocks = 0
         self.depth = 0
         self.watched = False
+        self.target: Optional[tuple[int, int]] = None   # (partition, id) the predicate marked
 
     def run(self) -> tuple:
         ray, count = self.ray, self.count
         # every partition is sent the initial states and keeps those it owns
         initial = encode_batch((list(self.system.initial_states()), []))
-        stepped = [call(actor, SAFETY, "step", [-1], initial, returns=count + 1)
+        stepped = [call(actor, SAFETY, "step", True, [-1], initial, returns=count + 1)
                    for actor in self.actors]
-        senders = list(range(count))
+        advanced = True
         while True:
             figures = ray.get([refs[count] for refs in stepped])
-            found = self._stored([f[:3] for f in figures])
-            if found is not None:
-                return self._result(VIOLATED, self._path(*found))
+            self.stored = [f[0] for f in figures]
+            for index, f in enumerate(figures):
+                if f[2] >= 0:
+                    self.target = index, f[2]
+                    return self._result(VIOLATED, self._path(index, f[2]))
             self.transitions = sum(f[3] for f in figures)
             self.deadlocks = sum(f[4] for f in figures)
             self.watched = self.watched or any(f[6] for f in figures)
             for index, f in enumerate(figures):
                 if f[5] >= 0:
                     return self._result(VIOLATED, self._path(index, f[5]))
-            if self.new == 0:
-                return self._result(HOLDS)
-            self.depth += 1
+            if advanced:
+                if sum(f[1] for f in figures) == 0:
+                    return self._result(HOLDS)
+                self.depth += 1
             self._note_balance()
             if sum(self.stored) > self.budget.max_states:
                 self.budget.reason = f"state limit {self.budget.max_states} reached"
@@ -151,7 +159,12 @@ class _Levels:
                 return self._result(UNKNOWN)
             if self.on_level is not None:
                 self.on_level(self.actors)
-            stepped = [call(actor, SAFETY, "step", senders, *[refs[target] for refs in stepped],
+            # the next level once every partition expanded all of this one
+            advanced = not any(f[7] for f in figures)
+            stepped = [call(actor, SAFETY, "step", advanced,
+                            [sender for sender in range(count) if sender != target],
+                            *[refs[target] for sender, refs in enumerate(stepped)
+                              if sender != target],
                             returns=count + 1) for target, actor in enumerate(self.actors)]
 
     def _note_balance(self) -> None:
@@ -160,15 +173,6 @@ class _Levels:
         if progress is not None and total:
             shares = "/".join(f"{100 * stored / total:.0f}" for stored in self.stored)
             progress.note = f"{self.count} workers, states {shares} %"
-
-    def _stored(self, answers) -> Optional[tuple[int, int]]:
-        """Note what each partition stored; the first target (partition, id) or None."""
-        self.new = sum(new for _, new, _ in answers)
-        self.stored = [stored for stored, _, _ in answers]
-        for index, (_, _, target) in enumerate(answers):
-            if target >= 0:
-                return index, target
-        return None
 
     def _path(self, partition: int, state_id: int) -> list[LassoStep]:
         """The steps from an initial state to the target, across partitions."""
