@@ -13,7 +13,9 @@ Joining an address waits at most ``CONNECT_SECONDS`` for an answer: Ray itself r
 address where no cluster answers for minutes (a name that does not resolve: more than two),
 about half a minute an attempt, so before Ray is asked, ``_answers`` checks that a gRPC
 server (as Ray's cluster head and its client server are) answers there: it accepts a
-connection and replies to HTTP/2's opening with its settings.  Else: RAY_UNREACHABLE.
+connection and replies to HTTP/2's opening with its settings.  A refused connection is asked
+again within that time (a head that ``ray start`` is still bringing up).  Else:
+RAY_UNREACHABLE.
 """
 from __future__ import annotations
 
@@ -22,6 +24,7 @@ import logging
 import os
 import socket
 import threading
+import time
 from dataclasses import dataclass
 from typing import Optional
 
@@ -116,9 +119,21 @@ def _answers(address: str, seconds: float) -> Optional[str]:
     found: list = []
     silent = f"{host}:{port}: no answer within {seconds:g} s"
 
+    deadline = time.monotonic() + seconds
+
     def ask():
         try:
-            with socket.create_connection((host.strip("[]"), int(port)), timeout=seconds) as peer:
+            # a head that ``ray start`` is still bringing up refuses at first: ask again
+            while True:
+                try:
+                    peer = socket.create_connection((host.strip("[]"), int(port)),
+                                                    timeout=seconds)
+                    break
+                except ConnectionRefusedError:
+                    if time.monotonic() + 0.5 > deadline:
+                        raise
+                    time.sleep(0.5)
+            with peer:
                 peer.sendall(HTTP2_OPENING)
                 header = b""
                 while len(header) < 9:
