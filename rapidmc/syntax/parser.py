@@ -14,8 +14,10 @@ Example::
 """
 from __future__ import annotations
 
+import contextlib
 import functools
 import re
+import threading
 
 from lark import Lark
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
@@ -132,23 +134,53 @@ def _parse(text: str, filename: str, compiled: bool = False) -> tuple[ast.Module
     lark = rapid_parser()
     frontend = lark.parser
     table = frontend.parser._parse_table
-    lowering = Lowering(filename, None)
-    callbacks = rule_callbacks(_reduced_rules(), lowering)
-    if compiled:
-        tokens = _scanner().scan(text, CompiledToken)
-        if tokens is None:
-            raise NotScanned(filename)
-        lowering.lexer = feed = accelerated.TokenFeed(tokens, MAX_STACK_DEPTH, lowering.too_deep)
-        modules = accelerated.parse(table, callbacks, feed, START_RULE, _pass_through())
-    else:
-        lowering.lexer = lexer = RapidLexer(
-            frontend.lexer_conf.terminals, frozenset(frontend.lexer_conf.ignore),
-            frontend.lexer, MAX_STACK_DEPTH, lowering.too_deep)
-        lexer_state = LexerState(TextSlice.cast_from(text))
-        modules = _Parser(table, callbacks).parse(LexerThread(lexer, lexer_state), START_RULE)
-    if lowering.problem is not None:
-        raise lowering.problem
+    with _lowering(filename) as (lowering, callbacks):
+        if compiled:
+            tokens = _scanner().scan(text, CompiledToken)
+            if tokens is None:
+                raise NotScanned(filename)
+            lowering.lexer = feed = accelerated.TokenFeed(tokens, MAX_STACK_DEPTH,
+                                                          lowering.too_deep)
+            modules = accelerated.parse(table, callbacks, feed, START_RULE, _pass_through())
+        else:
+            lowering.lexer = lexer = RapidLexer(
+                frontend.lexer_conf.terminals, frozenset(frontend.lexer_conf.ignore),
+                frontend.lexer, MAX_STACK_DEPTH, lowering.too_deep)
+            lexer_state = LexerState(TextSlice.cast_from(text))
+            modules = _Parser(table, callbacks).parse(LexerThread(lexer, lexer_state),
+                                                      START_RULE)
+        if lowering.problem is not None:
+            raise lowering.problem
     return modules
+
+
+class _Spare(threading.local):
+    """A thread's lowering and its callbacks between parses (``_lowering``)."""
+
+    pair: tuple | None = None
+
+
+_SPARE = _Spare()
+
+
+@contextlib.contextmanager
+def _lowering(filename: str):
+    """A ``Lowering`` for one parse of ``filename`` and its rule callbacks.  Making the
+    callbacks (a closure for each of the table's rules) takes longer than parsing a short
+    text (an atom of a property, a small module: some 1.5 ms each time), so each thread
+    keeps one pair and starts its lowering afresh for the next parse; a parse while the
+    pair is in use makes its own."""
+    pair, _SPARE.pair = _SPARE.pair, None
+    if pair is None:
+        lowering = Lowering(filename, None)
+        pair = (lowering, rule_callbacks(_reduced_rules(), lowering))
+    else:
+        pair[0].for_file(filename, None)
+    try:
+        yield pair
+    finally:
+        pair[0].for_file("", None)       # (lets go of the parse's nodes and tokens)
+        _SPARE.pair = pair
 
 
 def has_code(text: str) -> bool:
