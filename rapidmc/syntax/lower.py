@@ -110,7 +110,7 @@ class Lowering:
 
     def for_file(self, filename: str, lexer) -> None:
         """Ready for a parse of ``filename``, as if new (the parser keeps one lowering
-        with its callbacks: parser._lowering)."""
+        with its callbacks: parser._parsing)."""
         self.filename = filename
         self.lexer = lexer
         self.problem: Optional[UserError] = None
