@@ -92,10 +92,15 @@ def _tokens_in(value) -> list:
 @needs_compiled
 def test_compiled_loop_is_the_one_used_when_installed(monkeypatch):
     used = []
-    original = accelerated.parse
-    monkeypatch.setattr(accelerated, "parse", lambda *args: used.append(1) or original(*args))
+    original = parser._Parsing.compiled
+
+    def compiled(parsing, table):
+        loop = original(parsing, table)
+        used.append(type(loop))
+        return loop
+    monkeypatch.setattr(parser._Parsing, "compiled", compiled)
     parser.parse_modules("MODULE m\nPROC p()\n  x := 1;\nENDPROC\nENDMODULE\n", "m.mod")
-    assert used == [1]
+    assert used == [accelerated.CompiledParser]
 
 
 ERRONEOUS = [

@@ -27,6 +27,7 @@ Example::
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from typing import Iterable, Sequence
 
@@ -226,7 +227,13 @@ def translate(formula: Formula, atoms: Sequence[str] | None = None) -> Buchi:
     ``atoms`` fixes the atom order (default: order of first appearance); it
     must include every atom of the formula.
     """
-    atoms = tuple(atoms) if atoms is not None else atoms_of(formula)
+    return _translated(formula, tuple(atoms) if atoms is not None else atoms_of(formula))
+
+
+# A process that checks again (the language server, the API's callers, the tests) translates
+# the same formulas again: the automaton (immutable) is a function of the formula and atoms.
+@functools.lru_cache(maxsize=1024)
+def _translated(formula: Formula, atoms: tuple[str, ...]) -> Buchi:
     generalised = tableau_automaton(negation_normal_form(formula), atoms)
     candidates = (simplify(degeneralise(generalised, atoms, level))
                   for level in sorted({0, len(generalised.untils)}))

@@ -26,6 +26,7 @@ bound with AliasIO) is false in that state.
 """
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -143,13 +144,19 @@ _WRAPPER_LINE = 4
 
 def parse_atom_expression(text: str, where: ast.Span) -> ast.Expr:
     """Parse the RAPID expression of an atom; diagnostics point into the property."""
-    from ..syntax import parse_text
     try:
-        modules = parse_text(_WRAPPER_HEAD + text + _WRAPPER_TAIL, "<atom>")
+        return _atom_expression(text)
     except UserError as exc:
         raise UserError([_relocate(d, where) for d in exc.diagnostics]) from None
-    statement = modules[0].routines[0].body[0]
-    return statement.value
+
+
+# A process that checks again (the API's callers, the tests) parses the same atoms again;
+# the expression (frozen nodes, spans in "<atom>") is a function of the text alone.
+@functools.lru_cache(maxsize=4096)
+def _atom_expression(text: str) -> ast.Expr:
+    from ..syntax import parse_text
+    modules = parse_text(_WRAPPER_HEAD + text + _WRAPPER_TAIL, "<atom>")
+    return modules[0].routines[0].body[0].value
 
 
 def _relocate(diagnostic: Diagnostic, where: ast.Span) -> Diagnostic:

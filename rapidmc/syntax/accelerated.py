@@ -108,9 +108,15 @@ def parse(table, callbacks: dict, tokens: "TokenFeed", start: str,
     """Run the compiled loop over ``table`` (Lark's), with ``callbacks`` keyed by Lark's
     rules, on the tokens of ``tokens``; the reductions of the ``pass_through`` rules,
     whose callbacks give their one entry back, are skipped."""
+    return compiled_parser(table, callbacks, pass_through).parse(tokens, start)
+
+
+def compiled_parser(table, callbacks: dict, pass_through: frozenset = frozenset()):
+    """The compiled loop over ``table`` with ``callbacks`` keyed by its reductions (it
+    keeps no state between parses: a parser may keep it with the callbacks)."""
     compiled = compiled_table(table, pass_through)
     by_reduction = {reduction: callbacks[reduction.rule] for reduction in compiled.reductions}
-    return CompiledParser(compiled, by_reduction).parse(tokens, start)
+    return CompiledParser(compiled, by_reduction)
 
 
 class TokenFeed:

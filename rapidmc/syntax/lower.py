@@ -106,6 +106,11 @@ class Lowering:
     (and spans) of a line."""
 
     def __init__(self, filename: str, lexer):
+        self.for_file(filename, lexer)
+
+    def for_file(self, filename: str, lexer) -> None:
+        """Ready for a parse of ``filename``, as if new (the parser keeps one lowering
+        with its callbacks: parser._parsing)."""
         self.filename = filename
         self.lexer = lexer
         self.problem: Optional[UserError] = None

@@ -14,8 +14,10 @@ Example::
 """
 from __future__ import annotations
 
+import contextlib
 import functools
 import re
+import threading
 
 from lark import Lark
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
@@ -132,23 +134,66 @@ def _parse(text: str, filename: str, compiled: bool = False) -> tuple[ast.Module
     lark = rapid_parser()
     frontend = lark.parser
     table = frontend.parser._parse_table
-    lowering = Lowering(filename, None)
-    callbacks = rule_callbacks(_reduced_rules(), lowering)
-    if compiled:
-        tokens = _scanner().scan(text, CompiledToken)
-        if tokens is None:
-            raise NotScanned(filename)
-        lowering.lexer = feed = accelerated.TokenFeed(tokens, MAX_STACK_DEPTH, lowering.too_deep)
-        modules = accelerated.parse(table, callbacks, feed, START_RULE, _pass_through())
-    else:
-        lowering.lexer = lexer = RapidLexer(
-            frontend.lexer_conf.terminals, frozenset(frontend.lexer_conf.ignore),
-            frontend.lexer, MAX_STACK_DEPTH, lowering.too_deep)
-        lexer_state = LexerState(TextSlice.cast_from(text))
-        modules = _Parser(table, callbacks).parse(LexerThread(lexer, lexer_state), START_RULE)
-    if lowering.problem is not None:
-        raise lowering.problem
+    with _parsing(filename) as parsing:
+        lowering = parsing.lowering
+        if compiled:
+            tokens = _scanner().scan(text, CompiledToken)
+            if tokens is None:
+                raise NotScanned(filename)
+            lowering.lexer = feed = accelerated.TokenFeed(tokens, MAX_STACK_DEPTH,
+                                                          lowering.too_deep)
+            modules = parsing.compiled(table).parse(feed, START_RULE)
+        else:
+            lowering.lexer = lexer = RapidLexer(
+                frontend.lexer_conf.terminals, frozenset(frontend.lexer_conf.ignore),
+                frontend.lexer, MAX_STACK_DEPTH, lowering.too_deep)
+            lexer_state = LexerState(TextSlice.cast_from(text))
+            modules = _Parser(table, parsing.callbacks).parse(LexerThread(lexer, lexer_state),
+                                                              START_RULE)
+        if lowering.problem is not None:
+            raise lowering.problem
     return modules
+
+
+class _Parsing:
+    """A ``Lowering``, its rule callbacks and the compiled loop over them, for one parse
+    after another (``_parsing``)."""
+
+    def __init__(self) -> None:
+        self.lowering = Lowering("", None)
+        self.callbacks = rule_callbacks(_reduced_rules(), self.lowering)
+        self._compiled = None
+
+    def compiled(self, table):
+        if self._compiled is None:
+            self._compiled = accelerated.compiled_parser(table, self.callbacks,
+                                                         _pass_through())
+        return self._compiled
+
+
+class _Spare(threading.local):
+    """A thread's ``_Parsing`` between parses."""
+
+    parsing: _Parsing | None = None
+
+
+_SPARE = _Spare()
+
+
+@contextlib.contextmanager
+def _parsing(filename: str):
+    """A ``_Parsing`` for one parse of ``filename``.  Making the callbacks (a closure for
+    each of the table's rules) and keying them by the compiled table's reductions took
+    longer than parsing a short text (an atom of a property, a small module: some 0.7 ms
+    each time), so each thread keeps one and starts its lowering afresh for the next
+    parse; a parse while it is in use makes its own."""
+    parsing, _SPARE.parsing = _SPARE.parsing or _Parsing(), None
+    parsing.lowering.for_file(filename, None)
+    try:
+        yield parsing
+    finally:
+        parsing.lowering.for_file("", None)      # (lets go of the parse's nodes and tokens)
+        _SPARE.parsing = parsing
 
 
 def has_code(text: str) -> bool:
