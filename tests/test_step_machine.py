@@ -124,6 +124,7 @@ def test_the_machine_steps_one_task_of_several_as_python_does(seed, tmp_path, mo
     assert sum(table.counts()["task_machine_steps"] for table in tables) > 0
 
 
+@needs_native
 def test_the_counters_are_stepped_by_the_machine_alone_but_for_aliasio(tmp_path):
     """The benchmark's family: every state but the AliasIO calls' is the machine's, and the
     graph it keeps is the Python engine's, row for row and value for value."""

@@ -24,6 +24,7 @@ from pathlib import Path
 
 import pytest
 
+from rapidmc.check import native
 from rapidmc.cli import main
 
 CASES = Path(__file__).resolve().parent / "task_backups"
@@ -91,6 +92,7 @@ def test_a_barrier_with_a_task_name_no_task_has_is_an_error(tmp_path):
     assert "ERR_TASKNAME" in json.dumps(steps)
 
 
+@pytest.mark.skipif(not native.available(), reason="the native core is not built")
 @pytest.mark.parametrize("name", ["alone_output_written", "system_output", "alone_polling_while",
                                   "alone_polling_goto", "alone_wait_then_read"])
 def test_outputs_set_outside_same_on_both_engines(name):
