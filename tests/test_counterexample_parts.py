@@ -164,6 +164,24 @@ def test_files_are_shown_relative_to_the_current_folder_or_their_common_folder(
     assert shown_location(TransitionInfo(backup[1], 3, ""), names) == "SYSMOD/s.sys:3"
 
 
+def test_a_backup_deep_below_the_current_folder_names_its_folders_once(tmp_path, monkeypatch):
+    """``rapidmc check cells/line_4/Controller1_240820-161154`` run from the folder above:
+    each step names the file below the backup's common folder, and the legend names that
+    folder once, relative to the current folder (no absolute path in a report a README
+    quotes)."""
+    monkeypatch.chdir(tmp_path)
+    rapid = tmp_path / "cells" / "line_4" / "Controller1_240820-161154" / "RAPID"
+    backup = [str(rapid / "TASK1" / "PROGMOD" / "Module1.mod"),
+              str(rapid / "TASK2" / "PROGMOD" / "Module1.mod")]
+    names = file_names(backup)
+    assert shown_location(TransitionInfo(backup[1], 54, ""), names) == \
+        "TASK2/PROGMOD/Module1.mod:54"
+    assert names.legend() == ["(files relative to cells/line_4/Controller1_240820-161154/RAPID)"]
+    # a short path below the current folder stays as it is, with no legend
+    assert file_names(["cell/prog.mod"]).shown("cell/prog.mod") == "cell/prog.mod"
+    assert file_names(["cell/prog.mod"]).legend() == []
+
+
 def test_files_in_far_apart_folders_are_shown_by_their_names(tmp_path, monkeypatch):
     # a program given by absolute path and the stubs module written in the current folder:
     # each by its name in the steps, each folder named once

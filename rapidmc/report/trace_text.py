@@ -52,12 +52,18 @@ class FileNames:
         if self.folders:
             return ["(files in " + "; in ".join(f"{folder}: {', '.join(names)}"
                                                  for folder, names in self.folders) + ")"]
-        return [f"(files relative to {self.root})"] if self.announced else []
+        if not self.announced:
+            return []
+        here = os.getcwd()
+        root = (os.path.relpath(self.root, here)
+                if os.path.commonpath([here, self.root]) == here else self.root)
+        return [f"(files relative to {root})"]
 
 
 def file_names(files: Sequence[str]) -> FileNames:
-    """How to name ``files`` briefly: relative to the current folder when it holds them all;
-    else relative to the deepest folder that holds them all, named once, when that leaves
+    """How to name ``files`` briefly: relative to the current folder when it holds them all
+    and that leaves each at most ``SHORT_PATH`` characters (a backup below the current
+    folder would repeat its folders at every step); else relative to the deepest folder that holds them all, named once, when that leaves
     each at most ``SHORT_PATH`` characters; else by base name, each folder named once, when
     no two share one; else relative to the common folder (as given when that is only the
     file system's root)."""
@@ -65,7 +71,8 @@ def file_names(files: Sequence[str]) -> FileNames:
     if not absolute:
         return FileNames()
     here = os.getcwd()
-    if all(os.path.commonpath([here, file]) == here for file in absolute):
+    if all(os.path.commonpath([here, file]) == here
+           and len(os.path.relpath(file, here)) <= SHORT_PATH for file in absolute):
         return FileNames(here)
     try:
         common = os.path.commonpath([os.path.dirname(file) for file in absolute])
