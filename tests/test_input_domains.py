@@ -272,10 +272,156 @@ def test_an_input_that_reaches_only_routines_with_no_effect_takes_one_value(tmp_
 
 @pytest.mark.parametrize("use, found", [
     ("    VelSet 100 / gi_speed, 5000;\n", "operand of '/'"),  # a divisor: can fail
-    ("    override := gi_speed;\n", "is assigned"),             # an atom may read the data
     ("    show gi_speed * 2;\n", "operand of '*'"),             # the program's own routine
 ])
 def test_an_input_whose_value_reaches_a_condition_or_divisor_has_no_default(tmp_path, use, found):
     text = SPEED_ONLY.replace("    x := 1;\n", use) + "\n"
     text = text.replace("ENDMODULE", "  PROC show(num n)\n  ENDPROC\nENDMODULE")
     assert found in _refusal(tmp_path, text)
+
+
+def test_an_input_stored_into_data_a_property_reads_has_no_default(tmp_path):
+    text = SPEED_ONLY.replace("    x := 1;\n", "    override := gi_speed;\n")
+    prop = api.property_from_text('p: G "override < 1000"')
+    assert "is assigned" in _refusal(tmp_path, text, [prop])
+
+
+# --- issue 28: a value followed through the data it is stored into -----------------------
+# Survey of public backups: a part code from a PLC, range-checked, copied into a routine's
+# INOUT parameter and used as an array index; a PLC's speed percentage scaled into a
+# speeddata that only moves read.
+
+PART_CODE = """MODULE M
+  VAR signalgi gi_code;
+  VAR bool taken{4} := [FALSE, FALSE, FALSE, FALSE];
+  VAR num picked := 0;
+  PROC main()
+    VAR num code;
+    VAR bool ready;
+    AliasIO "GI_CODE", gi_code;
+    WHILE TRUE DO
+      ready := ChoosePart(code);
+      IF ready THEN
+        taken{code} := TRUE;
+        picked := picked + 1;
+        IF picked > 2 picked := 0;
+      ENDIF
+    ENDWHILE
+  ENDPROC
+  FUNC bool ChoosePart(INOUT num part)
+    part := 0;
+    IF GInput(gi_code) >= LOW AND gi_code <= 4 THEN
+      IF taken{gi_code} = FALSE THEN
+        part := gi_code;
+        RETURN TRUE;
+      ENDIF
+    ENDIF
+    RETURN FALSE;
+  ENDFUNC
+ENDMODULE
+"""
+
+
+def test_a_range_checked_part_code_used_as_an_index_gets_each_element(tmp_path):
+    text = PART_CODE.replace("VAR num picked := 0;", "VAR num picked := 0;\n  CONST num LOW := 1;")
+    model = api.prepare(_load(tmp_path, text), [])
+    [assumed] = model.assumed
+    assert assumed.values == tuple(float(v) for v in range(6))
+    assert "compared with 1, 4, an index of a 4-element array" in assumed.reason
+    assert "followed through part, code" in assumed.reason
+
+
+SPEED_PERCENT = """MODULE M
+  VAR signalgi gi_speed;
+  VAR speeddata speed := [100, 500, 5000, 1000];
+  VAR num x := 0;
+  PROC main()
+    AliasIO "GI_SPEED", gi_speed;
+    WHILE TRUE DO
+      speed.v_tcp := MaxRobSpeed() / 100 * gi_speed;
+      speed.v_ori := MaxRobReorientSpeed() / 100 * GInput(gi_speed) * 0.2;
+      MoveL Offs(home, 0, 0, 50), speed, z10, tool0;
+      MoveJ \\Conc, home, speed \\V:=gi_speed * 2, fine, tool0;
+      x := x + 1;
+      IF x > 2 x := 0;
+    ENDWHILE
+  ENDPROC
+  CONST robtarget home := [[500, 0, 600], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];
+ENDMODULE
+"""
+
+
+def test_a_speed_percentage_that_only_moves_read_takes_one_value(tmp_path):
+    model = api.prepare(_load(tmp_path, SPEED_PERCENT), [])
+    [assumed] = model.assumed
+    assert assumed.values == (0.0,)
+    assert "followed through speed" in assumed.reason
+
+
+@pytest.mark.parametrize("text, found", [
+    # the scaled speed is compared: its value tells behaviours apart
+    (SPEED_PERCENT.replace("      x := x + 1;\n", "      IF speed.v_tcp > 100 x := 2;\n"),
+     "'gi_speed' at "),
+    # the speed is passed where a routine of the program may read it
+    (SPEED_PERCENT.replace("      x := x + 1;\n", "      Slow speed;\n")
+     .replace("ENDMODULE", "  PROC Slow(speeddata s)\n  ENDPROC\nENDMODULE"), "'gi_speed' at "),
+    # the part code indexes an array too big to branch over each element
+    (PART_CODE.replace("taken{4} := [FALSE, FALSE, FALSE, FALSE]", "taken{100}"),
+     "an index of an array of more than 64 elements"),
+    # the stored code is computed with before it is used
+    (PART_CODE.replace("taken{code} := TRUE;", "taken{code + 1} := TRUE;"),
+     "prog.mod:12:15 is an operand of '+'"),
+    # a PERS receives the code: another task may read it
+    (PART_CODE.replace("    VAR num code;\n", "").replace(
+        "VAR num picked := 0;", "VAR num picked := 0;\n  PERS num code := 0;"),
+     "passed for ChoosePart's INOUT parameter part, which holds an input's value, and is "
+     "PERS data, which another task may read"),
+])
+def test_a_value_followed_through_data_to_a_use_it_cannot_place_has_no_default(tmp_path, text,
+                                                                                 found):
+    text = text.replace("GInput(gi_code) >= LOW", "GInput(gi_code) >= 1")
+    assert found in _refusal(tmp_path, text)
+
+
+def test_a_followed_value_a_property_reads_has_no_default(tmp_path):
+    text = PART_CODE.replace("GInput(gi_code) >= LOW", "GInput(gi_code) >= 1") \
+        .replace("    VAR num code;\n", "").replace(
+            "VAR num picked := 0;", "VAR num picked := 0;\n  VAR num code := 0;")
+    prop = api.property_from_text('p: G "code < 7"')
+    assert "is data a property's atom reads" in _refusal(tmp_path, text, [prop])
+
+
+FOLLOWED_PROPERTIES = "\n".join([
+    "never_full: G !\"taken{1} AND taken{2} AND taken{3} AND taken{4}\"",
+    "counts: G F \"picked = 0\"",
+    "fourth: G !\"taken{4}\"",
+    "last_first: G (\"taken{4}\" -> \"taken{1}\")"]) + "\n"
+
+
+@pytest.mark.parametrize("variant", [
+    "", "        picked := 0;\n", "      IF code = 3 picked := 0;\n",
+])
+def test_followed_domains_keep_the_verdicts_of_every_4_bit_value(tmp_path, variant):
+    """The default (0..5, from the range check and the 4-element index) against every value
+    of a 4-bit input, with run-time errors (an index out of bounds) among the properties."""
+    text = PART_CODE.replace("GInput(gi_code) >= LOW", "GInput(gi_code) >= 0") \
+        .replace("      ENDIF\n    ENDWHILE", "      ENDIF\n" + variant + "    ENDWHILE") \
+        .replace("VAR num picked := 0;", "VAR num picked := 0;\n  VAR bool unused;")
+    (tmp_path / "props.ltl").write_text(FOLLOWED_PROPERTIES)
+    properties = api.read_properties(str(tmp_path / "props.ltl"))
+    derived = api.check(_load(tmp_path, text), properties)
+    full = api.check(_load(tmp_path, text), properties,
+                     api.CheckOptions(input_domains={"GI_CODE": FULL}))
+    assert any(w.code.code == "RMC515" for w in derived.warnings)
+    assert derived.verdicts == full.verdicts
+    assert "VIOLATED" in derived.verdicts.values()
+
+
+def test_a_computed_alias_onto_digital_signal_data_leaves_the_default(tmp_path):
+    """Survey of public backups: clamp checks bind ``signaldi`` data to a computed name; no
+    group input can be read through it."""
+    text = PASSED_ON.replace("    show gi_code;\n", "    AliasIO name, di_clamp;\n    IF di_clamp = 1 x := 2;\n") \
+        .replace("  VAR num x := 0;\n", "  VAR num x := 0;\n  VAR string name := \"DI_CLAMP\";\n"
+                 "  VAR signaldi di_clamp;\n")
+    model = api.prepare(_load(tmp_path, text), [])
+    assert [a.values for a in model.assumed] == [(0.0, 1.0, 2.0)]

@@ -24,10 +24,16 @@ Two cases allow a default that loses no behaviour:
   (a PLC's speed override given to ``VelSet`` or ``SpeedRefresh``), no
   behaviour depends on it: one value.
 
-Any other use (assigned, passed to a routine, arithmetic, an index, read
-by a property's atom, an ``AliasIO`` with a computed name) leaves the input
-without a default; the RMC502 error then names the first such use.  An
-explicit ``--input-domain`` always wins.
+* **Followed through data** (``input_flow``).  A group input's value used as
+  an index of an array of known size (each element, and beyond either end, is
+  a class), stored whole into num data or passed to the program's own
+  routine, whose every read is again such a use; a value scaled by ``+ - *``
+  into data that only moves read as their speed or zone.
+
+Any other use (arithmetic that reaches a condition, a divisor, data a
+property's atom or another task may read, an ``AliasIO`` with a computed
+name) leaves the input without a default; the RMC502 error then names the
+first such use.  An explicit ``--input-domain`` always wins.
 """
 from __future__ import annotations
 
@@ -39,17 +45,15 @@ from .. import ast
 from ..diagnostics import DOMAIN_ASSUMED, Diagnostic
 from ..semantics.configured_signals import COMPARISONS
 from ..semantics.program import Program, Signal
-from ..semantics.library import lookup_procedure
-from ..semantics.library.registry import NO_EFFECT, matched_parameters
 from ..semantics.scope import CONSTANT, SIGNAL
 from ..semantics.values import to_num
 from ..diagnostics.quoting import quoted
+from .input_flow import InputFlow, Read, Uses
 
 FULL_RANGE_BITS = 5           # a group input of at most 5 bits: every value (at most 32)
 MAX_GROUP_BITS = 32           # the widest group input a controller configures
 READERS = {"GINPUT": "GI", "AINPUT": "AI"}   # functions whose value is their signal's
 WAITS = {"WAITGI", "WAITAI"}  # wait until the signal compares with a value as asked
-INERT_OPS = ("+", "-", "*")   # operations that cannot fail on a num read (no divisor)
 
 
 @dataclass(frozen=True)
@@ -84,16 +88,19 @@ def describe(values: Sequence[float]) -> str:
     return "values " + ", ".join(str(n) for n in numbers)
 
 
-def default_domains(program: Program, signals: Sequence[Signal], atom_reads) -> dict:
+def default_domains(program: Program, signals: Sequence[Signal], atom_reads,
+                    atom_data: Optional[frozenset] = None) -> dict:
     """Signal key -> ``Assumed`` or ``Refused`` for each of ``signals`` (free AI/GI inputs).
 
-    ``atom_reads``: indices of the signals properties read (None: any of them).
+    ``atom_reads``: indices of the signals properties read (None: any of them);
+    ``atom_data``: upper-case names of the data they read (None: unknown, so an input's
+    value is not followed through data).
     """
     if not signals:
         return {}
     widths = {s.name.upper(): s.width for s in program.options.get("configured_signals", ())
               if getattr(s, "width", None)}
-    reads = ReadCollector(program)
+    reads = ReadCollector(program, atom_data)
     reads.collect()
     outcomes = {}
     for signal in signals:
@@ -118,16 +125,21 @@ def _default(signal: Signal, width: Optional[int], reads: "ReadCollector",
     if other is not None:
         return Refused(f"{other}; a default needs every read to be compared with number literals "
                        "(= <> < <= > >=, TEST ... CASE, WaitGI/WaitAI)")
-    numbers = sorted(reads.numbers.get(signal.index, set()))
-    if not numbers and signal.index in reads.inert_uses:
+    uses = reads.uses.get(signal.index, Uses())
+    numbers = sorted(uses.numbers)
+    through = f"; followed through {', '.join(uses.through)}" if uses.through else ""
+    if not numbers and uses.sunk:
         return Assumed(signal, (0.0,), "its value reaches no condition, index, divisor, atom or "
-                       "operation that can fail (only routines with no effect here): one value")
+                       "operation that can fail (only arguments no model evaluates here"
+                       f"{through}): one value")
+    indexed = "".join(f", an index of a {n}-element array" for n in sorted(set(uses.indexed)))
+    compared = sorted(uses.compared)
     if signal.kind == "GI":
         top = 2 ** (width or MAX_GROUP_BITS) - 1
         return Assumed(signal, group_points(numbers, top),
-                       "group input only compared with " + _listing(numbers))
+                       "group input only compared with " + _listing(compared) + indexed + through)
     return Assumed(signal, analog_points(numbers), "analog input only compared with "
-                   + _listing(numbers))
+                   + _listing(compared) + through)
 
 
 def group_points(numbers: Sequence[float], top: int) -> tuple:
@@ -166,27 +178,33 @@ def _where(span: Optional[ast.Span]) -> str:
 
 
 class ReadCollector:
-    """Every read of every AI/GI signal in the program's code, classified."""
+    """Every read of every AI/GI signal in the program's code, classified (through the data
+    it is stored into: ``input_flow``)."""
 
-    def __init__(self, program: Program):
+    def __init__(self, program: Program, atom_data: Optional[frozenset] = None):
         self.program = program
-        self.numbers: dict[int, set] = {}         # signal index -> numbers it is compared with
-        self.other_use: dict[int, str] = {}       # signal index -> its first other use
+        self.routines = [r for r in program.routines if r.ast is not None]
+        self.flow = InputFlow(self.routines, atom_data)
+        self.uses: dict[int, Uses] = {}           # signal index -> what its reads amount to
         self.aliases: dict[str, set] = {}         # signal variable key -> signal indices
         self.computed_alias: Optional[ast.Span] = None
-        self.inert_uses: set[int] = set()         # signals with a read that reaches nothing
+
+    @property
+    def other_use(self) -> dict:
+        """Signal index -> its first use that allows no default."""
+        return {index: uses.refusal for index, uses in self.uses.items()
+                if uses.refusal is not None}
 
     def collect(self) -> None:
-        routines = [r for r in self.program.routines if r.ast is not None]
-        for routine in routines:                  # AliasIO first: reads may come before
+        for routine in self.routines:             # AliasIO first: reads may come before
             for node, _ in ast.walk(routine.ast):
                 if isinstance(node, ast.ProcedureCall) and node.name.key == "ALIASIO":
                     self._alias(node, routine.scope)
-        for routine in routines:
+        for routine in self.routines:
             for node, parents in ast.walk(routine.ast):
                 if isinstance(node, ast.NameRef) and not _inside_alias(parents):
                     for index in self._signals_named(node, routine.scope):
-                        self._classify(index, node, parents, routine.scope)
+                        self._classify(index, Read(node, parents, routine.scope, routine))
 
     def _alias(self, call: ast.ProcedureCall, scope) -> None:
         values = [arg.value for arg in call.args]
@@ -200,7 +218,10 @@ class ReadCollector:
         elif isinstance(source, ast.NameRef):
             symbol = scope.lookup(source.name.key)
             index = symbol.slot if symbol is not None and symbol.kind == SIGNAL else None
-        if index is None and self.computed_alias is None:
+        target = scope.lookup(values[1].name.key)
+        binds_value_input = getattr(getattr(target, "type", None), "signal_kind", "") \
+            in ("AI", "GI")    # a computed name bound to signaldi data hides no AI/GI read
+        if index is None and self.computed_alias is None and binds_value_input:
             self.computed_alias = call.span
         if index is not None:
             self.aliases.setdefault(values[1].name.key, set()).add(index)
@@ -215,50 +236,14 @@ class ReadCollector:
             return self.aliases.get(ref.name.key, set())
         return set()
 
-    def _classify(self, index: int, ref: ast.NameRef, parents: tuple, scope) -> None:
-        if index in self.other_use:
+    def _classify(self, index: int, read: Read) -> None:
+        uses = self.uses.setdefault(index, Uses())
+        if uses.refusal is not None:
             return
-        found = compared_numbers(ref, parents, scope)
-        if isinstance(found, str):
-            if self.inert(ref, parents, scope):
-                self.inert_uses.add(index)
-                return
-            self.other_use[index] = f"'{ref.name.text}' at {_where(ref.span)} is {found}"
-        else:
-            self.numbers.setdefault(index, set()).update(found)
-
-    def inert(self, node, parents: tuple, scope) -> bool:
-        """Whether the value read at ``node`` reaches nothing that can tell values apart:
-        through ``+ - *`` and unary minus only into an IN argument of a predefined routine
-        modelled with no effect (``VelSet``, ``SpeedRefresh`` ...).  Assigned to data it is
-        not inert: a property's atom may read the data.  A condition, index, divisor, atom
-        or operation that can fail is never inert."""
-        parents = list(parents)
-        if len(parents) >= 2 and isinstance(parents[-1], ast.Argument) and \
-                isinstance(parents[-2], ast.FunctionCall) and parents[-2].name.key in READERS:
-            node = parents[-2]
-            parents = parents[:-2]
-        while parents and (isinstance(parents[-1], ast.Binary) and parents[-1].op in INERT_OPS
-                           or isinstance(parents[-1], ast.Unary) and parents[-1].op == "-"):
-            node = parents.pop()
-        parent = parents[-1] if parents else None
-        if isinstance(parent, ast.Argument) and len(parents) >= 2 and \
-                isinstance(parents[-2], ast.ProcedureCall):
-            return self._no_effect_argument(parents[-2], parent, scope)
-        return False
-
-    @staticmethod
-    def _no_effect_argument(call: ast.ProcedureCall, argument: ast.Argument, scope) -> bool:
-        symbol = scope.lookup(call.name.key)
-        if symbol is not None:                       # the program's own routine
-            return False
-        entry = lookup_procedure(call.name.key)
-        if entry is None or entry.modelled != NO_EFFECT:
-            return False
-        for arg, parameter in matched_parameters(call.args, entry.signature.parameters):
-            if arg is argument:
-                return parameter is not None and parameter.mode.upper() == "IN"
-        return False
+        signal = self.program.signals[index] if index < len(self.program.signals) else None
+        integral = signal is not None and signal.kind == "GI"
+        self.flow.raw(read, uses, integral,
+                      lambda r: compared_numbers(r.node, r.parents, r.scope), set())
 
 
 def compared_numbers(ref: ast.NameRef, parents: tuple, scope) -> Union[set, str]:

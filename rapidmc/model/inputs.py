@@ -104,7 +104,8 @@ def _check_domains(program: Program, domains: dict, read: Optional[frozenset],
               if signal.kind in ("AI", "GI") and not signal.driven and signal.key not in domains
               and (read is None or signal.index in read)]
     atom_reads = None if atoms.observes_signal_data else frozenset(atoms.observed)
-    defaults = default_domains(program, needed, atom_reads)
+    atom_data = None if atoms.observed_data is None else frozenset(atoms.observed_data)
+    defaults = default_domains(program, needed, atom_reads, atom_data)
     missing = [Diagnostic(DOMAIN, f"free {signal.kind} input '{signal.name}' needs a finite set "
                           f"of values: give --input-domain {signal.name}=v1,v2,... (or drive it "
                           "from an environment model)", signal.span,

@@ -209,15 +209,25 @@ class AtomCompiler:
         self.scope = scope
         self.observed: set[int] = set()       # physical signals the atoms read
         self.observes_signal_data = False     # an atom reads signal data (binding unknown)
+        # upper-case names of program data the atoms read; None once an atom calls one of
+        # the program's own functions (which may read any data)
+        self.observed_data: Optional[set] = set()
 
     def _note_signals(self, expr: ast.Expr) -> None:
         for symbol in self.symbols(expr):
+            if isinstance(symbol, ast.FunctionCall) and self.observed_data is not None:
+                own = self.scope.lookup(symbol.name.key)
+                if own is not None and own.kind == ROUTINE:
+                    self.observed_data = None
+                continue
             if not isinstance(symbol, Symbol):
                 continue
             if symbol.kind == SIGNAL:
                 self.observed.add(symbol.slot)
             elif getattr(symbol.type, "kind", "") == "semi-value":
                 self.observes_signal_data = True
+            elif symbol.kind in (GLOBAL_DATA, LOCAL_DATA) and self.observed_data is not None:
+                self.observed_data.add(symbol.name.upper())
 
     def symbols(self, expr: ast.Expr):
         """What each name in ``expr`` denotes (None: not a data name of the program), the

@@ -5,9 +5,22 @@ from ..errors import RapidError
 from ..instructions import ControlAction, Instruction, enter_routine
 from ..machine import ABSENT
 from .arguments import ROBOT_JOINTS, ROBOT_TCP, ROBOT_TOOL, ROBOT_WOBJ, Arguments, no_effect
-from .registry import NO_EFFECT, ROBOT_STATE, compiled
+from .registry import EXACT, NO_EFFECT, ROBOT_STATE, compiled
 from .signals import dionum, write_signal
 from .signature_parts import MOVE_DO_TAIL, MOVE_TAIL
+
+
+# Moves: the routines move_robot (or MoveExtJ) models, and the parameters it never evaluates,
+# since the robot jumps to the target in one step: how fast, how close and how precisely it
+# gets there (input_flow: a value that only reaches these tells no behaviour apart).
+MOVE_ROUTINES: set = set()
+UNEVALUATED_BY_MOVES = frozenset({"SPEED", "V", "T", "ZONE", "Z", "INPOS", "ID", "TLOAD"})
+
+
+def _move(*texts: str, modelled: str = EXACT):
+    """``compiled`` for a move, noting its name in MOVE_ROUTINES."""
+    MOVE_ROUTINES.update(text.split("(", 1)[0].strip().upper() for text in texts)
+    return compiled(*texts, modelled=modelled)
 
 
 def arrive(m, point, tool, wobj, joint: bool = False) -> None:
@@ -52,7 +65,7 @@ def move_robot(calls, compiler, call, entry, target_key: str, joint: bool = Fals
     return ControlAction(call.span, move)
 
 
-@compiled(f"MoveJ(\\switch Conc, robtarget ToPoint \\identno ID, {MOVE_TAIL} \\PERS loaddata TLoad)",
+@_move(f"MoveJ(\\switch Conc, robtarget ToPoint \\identno ID, {MOVE_TAIL} \\PERS loaddata TLoad)",
           f"MoveL(\\switch Conc, robtarget ToPoint \\identno ID, {MOVE_TAIL} \\switch Corr "
               "\\PERS loaddata TLoad)",
           f"MoveC(\\switch Conc, robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_TAIL} "
@@ -62,14 +75,14 @@ def _move_to_point(calls, compiler, call, entry):
     return move_robot(calls, compiler, call, entry, "ToPoint")
 
 
-@compiled(f"MoveAbsJ(\\switch Conc, jointtarget ToJointPos \\identno ID \\switch NoEOffs, {MOVE_TAIL} "
+@_move(f"MoveAbsJ(\\switch Conc, jointtarget ToJointPos \\identno ID \\switch NoEOffs, {MOVE_TAIL} "
               "\\PERS loaddata TLoad)",
           modelled=ROBOT_STATE)
 def _move_abs_j(calls, compiler, call, entry):
     return move_robot(calls, compiler, call, entry, "ToJointPos", joint=True)
 
 
-@compiled(f"MoveJDO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, VAR signaldo Signal, dionum Value "
+@_move(f"MoveJDO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, VAR signaldo Signal, dionum Value "
               "\\PERS loaddata TLoad)",
           f"MoveLDO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, VAR signaldo Signal, dionum Value "
               "\\PERS loaddata TLoad)",
@@ -79,7 +92,7 @@ def _move_do(calls, compiler, call, entry):
     return move_robot(calls, compiler, call, entry, "ToPoint", signal=True)
 
 
-@compiled(f"MoveJSync(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, string ProcName \\PERS loaddata TLoad)",
+@_move(f"MoveJSync(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, string ProcName \\PERS loaddata TLoad)",
           f"MoveLSync(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, string ProcName \\PERS loaddata TLoad)",
           f"MoveCSync(robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, "
               "string ProcName \\PERS loaddata TLoad)")
@@ -87,7 +100,7 @@ def _move_sync(calls, compiler, call, entry):
     return move_robot(calls, compiler, call, entry, "ToPoint", sync=True)
 
 
-@compiled("MoveExtJ(\\switch Conc, jointtarget ToJointPos \\identno ID \\switch UseEOffs, "
+@_move("MoveExtJ(\\switch Conc, jointtarget ToJointPos \\identno ID \\switch UseEOffs, "
               "speeddata Speed \\num T, zonedata Zone \\stoppointdata Inpos)",
           modelled=ROBOT_STATE)
 def _move_ext_j(calls, compiler, call, entry):
@@ -110,7 +123,7 @@ _AO_TAIL = "VAR signalao Signal, num Value \\PERS loaddata TLoad"
 _GO_TAIL = "VAR signalgo Signal, num Value \\PERS loaddata TLoad"
 
 
-@compiled(f"MoveJAO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, {_AO_TAIL})",
+@_move(f"MoveJAO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, {_AO_TAIL})",
           f"MoveLAO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, {_AO_TAIL})",
           f"MoveCAO(robtarget CirPoint, robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, {_AO_TAIL})",
           f"MoveJGO(robtarget ToPoint \\identno ID, {MOVE_DO_TAIL}, {_GO_TAIL})",
@@ -128,7 +141,7 @@ def _move_analog_or_group(calls, compiler, call, entry):
 _PAINT_TAIL = "speeddata Speed \\num T, zonedata Zone, PERS tooldata Tool \\PERS wobjdata WObj"
 
 
-@compiled(f"PaintL(robtarget ToPoint \\identno ID, {_PAINT_TAIL})",
+@_move(f"PaintL(robtarget ToPoint \\identno ID, {_PAINT_TAIL})",
           f"PaintC(robtarget CirPoint, robtarget ToPoint \\identno ID, {_PAINT_TAIL})",
           modelled=ROBOT_STATE)
 def _paint_move(calls, compiler, call, entry):

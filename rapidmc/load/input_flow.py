@@ -1,0 +1,348 @@
+"""Where the value read from a free input goes, followed through the program's data.
+
+``input_domains`` gives a free group or analog input a finite default domain
+when every use of its value is one it can place: a comparison with a number,
+a TEST against numbers, a wait for a number, or a use with no effect.  Real
+programs first store the value and use it later (issue 28, survey of public
+backups): a part code copied into a routine's INOUT parameter and used as an
+array index after a range check, a PLC's speed percentage scaled into a
+``speeddata`` that only moves read.  This module follows such a value:
+
+* **Raw value** (the input's own number).  Besides the comparisons of
+  ``compared_numbers``, it may be an index of an array of known size (GI
+  only: each element is a class of its own, and so is beyond either end), be
+  stored whole into a ``num``/``dnum`` variable or parameter, or be passed to
+  one of the program's own routines; the data it was stored into is then
+  followed the same way: each of its reads is such a use.  A by-reference
+  parameter that holds the value passes it back to the argument of every call.
+* **Mixed value** (after ``+ - *`` with other operands).  It may only reach a
+  sink: an IN argument of a predefined routine modelled with no effect, an
+  argument a move never evaluates (speed, zone), or data whose every read is
+  such an argument.
+
+Data followed must be the task's own ``VAR`` data or routine data (a PERS
+can be read where the analysis does not look) and must not be read by a
+property's atom.  Any other use refuses the default, naming the use.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Optional, Union
+
+from .. import ast
+from ..semantics.library import lookup_procedure
+from ..semantics.library.motion import MOVE_ROUTINES, UNEVALUATED_BY_MOVES
+from ..semantics.library.registry import NO_EFFECT, matched_parameters
+from ..semantics.scope import GLOBAL_DATA, LOCAL_DATA, ROUTINE
+from ..semantics.types import ArrayType
+
+MAX_INDEXED = 64              # an index of a bigger array: too many classes to branch over
+INERT_OPS = ("+", "-", "*")   # operations that cannot fail on a num read (no divisor)
+NUMERIC = ("NUM", "DNUM")     # types of data a raw value may be stored in and followed
+WRITABLE = ("VAR", "IN", "INOUT")   # storage of data followed (not PERS, CONST, FOR)
+
+
+@dataclass
+class Uses:
+    """What the uses of one input's value, followed through data, amount to."""
+
+    numbers: set = field(default_factory=set)   # class boundaries of the raw value
+    compared: set = field(default_factory=set)  # the numbers among them it is compared with
+    refusal: Optional[str] = None               # the first use that allows no default
+    through: list = field(default_factory=list)  # names of the data followed, in order
+    indexed: list = field(default_factory=list)  # sizes of arrays the value indexes
+    sunk: bool = False                          # a use reaches only a sink
+
+
+Place = tuple   # (Symbol, routine index or None): data that holds the value
+
+
+@dataclass(frozen=True)
+class Read:
+    """One read of a name: the node, its ancestors, the scope and routine it is in."""
+
+    node: object
+    parents: tuple
+    scope: object
+    routine: object
+
+
+class InputFlow:
+    """Follows input values through the data of ``routines``.
+
+    ``observed_names``: upper-case names of data that properties' atoms read
+    (``None``: unknown, so no data is followed)."""
+
+    def __init__(self, routines, observed_names: Optional[frozenset]):
+        self.routines = routines
+        self.observed_names = observed_names
+        self._reads: Optional[dict] = None
+
+    # --- the uses of a value --------------------------------------------------------------
+
+    def raw(self, read: Read, uses: Uses, integral: bool, classify, seen: set) -> None:
+        """A read whose value is the input's own number.  ``classify(read)``: the numbers
+        it is compared with (a set) or how else it is used (a string), as
+        ``compared_numbers`` says."""
+        if uses.refusal is not None:
+            return
+        found = classify(read)
+        if not isinstance(found, str):
+            uses.numbers.update(found)
+            uses.compared.update(found)
+            return
+        node, parents = read.node, list(read.parents)
+        parent = parents[-1] if parents else None
+        if isinstance(parent, ast.Index) and any(i is node for i in parent.indices):
+            size = self._index_size(parent, node, read.scope)
+            if integral and size is not None:
+                uses.numbers.update(float(k) for k in range(1, size + 1))
+                uses.indexed.append(size)
+                return
+            uses.refusal = _at(read, "an analog value used as an array index") \
+                if not integral else \
+                _at(read, f"used as an index of an array of more than {MAX_INDEXED} elements "
+                    "or of unknown size")
+            return
+        if isinstance(parent, ast.Assignment) and parent.value is node:
+            place = self._place(parent.target, read)
+            if place is not None:
+                self._follow(place, uses, integral, classify, seen)
+                return
+        if isinstance(parent, ast.Argument) and len(parents) >= 2:
+            place = self._own_parameter(parents[-2], parent, read)
+            if place is not None:
+                self._follow(place, uses, integral, classify, seen)
+                return
+        if self.sink(read, uses, seen):
+            uses.sunk = True
+            return
+        uses.refusal = _at(read, found)
+
+    def sink(self, read: Read, uses: Uses, seen: set) -> bool:
+        """Whether the value read at ``read`` reaches nothing that can tell values apart:
+        through ``+ - *`` and unary minus only into an argument no model evaluates, or
+        into data whose every read is such an argument.  A condition, index, divisor,
+        atom or operation that can fail is never a sink."""
+        node, parents = read.node, list(read.parents)
+        if len(parents) >= 2 and isinstance(parents[-1], ast.Argument) and \
+                isinstance(parents[-2], ast.FunctionCall) and \
+                parents[-2].name.key in ("GINPUT", "AINPUT"):
+            node = parents[-2]
+            parents = parents[:-2]
+        while parents and (isinstance(parents[-1], ast.Binary) and parents[-1].op in INERT_OPS
+                           or isinstance(parents[-1], ast.Unary) and parents[-1].op == "-"):
+            node = parents.pop()
+        parent = parents[-1] if parents else None
+        if isinstance(parent, ast.Argument) and len(parents) >= 2 and \
+                isinstance(parents[-2], ast.ProcedureCall):
+            return unevaluated_argument(parents[-2], parent, read.scope)
+        if isinstance(parent, ast.Assignment) and parent.value is node:
+            place = self._place(_base(parent.target), read, any_type=True)
+            return place is not None and self._sink_place(place, uses, seen)
+        return False
+
+    # --- data that holds the value --------------------------------------------------------
+
+    def _follow(self, place: Place, uses: Uses, integral: bool, classify, seen: set) -> None:
+        if place in seen:
+            return
+        seen.add(place)
+        symbol, _ = place
+        if symbol.name not in uses.through:
+            uses.through.append(symbol.name)
+        for read in self.reads().get(place, ()):
+            self.raw(read, uses, integral, classify, seen)
+            if uses.refusal is not None:
+                return
+        for argument_place in self._bound_arguments(place, uses):
+            self._follow(argument_place, uses, integral, classify, seen)
+
+    def _sink_place(self, place: Place, uses: Uses, seen: set) -> bool:
+        """Data whose every read is whole an argument no model evaluates."""
+        symbol, _ = place
+        if symbol.by_reference or symbol.storage not in ("VAR",):
+            return False
+        key = ("sink",) + place
+        if key in seen:
+            return True
+        seen.add(key)
+        for read in self.reads().get(place, ()):
+            parent = read.parents[-1] if read.parents else None
+            if not (isinstance(parent, ast.Argument) and len(read.parents) >= 2 and
+                    isinstance(read.parents[-2], ast.ProcedureCall) and
+                    unevaluated_argument(read.parents[-2], parent, read.scope)):
+                return False
+        if symbol.name not in uses.through:
+            uses.through.append(symbol.name)
+        return True
+
+    def _place(self, target, read: Read, any_type: bool = False) -> Optional[Place]:
+        """The data ``target`` (a name) denotes, when the analysis may follow it."""
+        if not isinstance(target, ast.NameRef):
+            return None
+        symbol = read.scope.lookup(target.name.key)
+        if symbol is None or symbol.kind not in (GLOBAL_DATA, LOCAL_DATA):
+            return None
+        if symbol.storage not in WRITABLE or isinstance(symbol.type, ArrayType):
+            return None
+        if not any_type and getattr(symbol.type, "key", "") not in NUMERIC:
+            return None
+        if self.observed_names is None or symbol.name.upper() in self.observed_names:
+            return None
+        return (symbol, read.routine.index if symbol.kind == LOCAL_DATA else None)
+
+    def _unfollowed(self, target, read: Read) -> str:
+        """Why the data ``target`` names is not followed."""
+        symbol = read.scope.lookup(target.name.key) if isinstance(target, ast.NameRef) else None
+        if symbol is None or symbol.kind not in (GLOBAL_DATA, LOCAL_DATA):
+            return "not data of the task"
+        if self.observed_names is None or symbol.name.upper() in self.observed_names:
+            return "data a property's atom reads"
+        if symbol.storage not in WRITABLE:
+            return f"{symbol.storage} data, which another task may read"
+        return "not a num"
+
+    def _own_parameter(self, call, argument: ast.Argument, read: Read) -> Optional[Place]:
+        """The parameter of the program's own routine that ``argument`` is bound to."""
+        if not isinstance(call, (ast.ProcedureCall, ast.FunctionCall)):
+            return None
+        routine = self._own_routine(call, read.scope)
+        if routine is None:
+            return None
+        for arg, parameter in matched_parameters(call.args, routine.parameters):
+            if arg is argument and parameter is not None:
+                if parameter.by_reference and not isinstance(argument.value, ast.NameRef):
+                    return None
+                if getattr(parameter.type, "key", "") not in NUMERIC:
+                    return None
+                symbol = routine.scope.lookup(parameter.key)
+                if symbol is None or symbol.kind != LOCAL_DATA:
+                    return None
+                if self.observed_names is None:
+                    return None
+                return (symbol, routine.index)
+        return None
+
+    def _bound_arguments(self, place: Place, uses: Uses) -> list:
+        """For a by-reference parameter: the data every call passes for it (a value stored
+        into the parameter is stored there)."""
+        symbol, routine_index = place
+        if not (symbol.kind == LOCAL_DATA and symbol.storage in ("VAR", "INOUT")
+                and symbol.by_reference) or routine_index is None:
+            return []
+        places = []
+        for read in self._calls_of(routine_index):
+            call = read.node
+            routine = self._routine(routine_index)
+            for arg, parameter in matched_parameters(call.args, routine.parameters):
+                if parameter is None or parameter.key != symbol.name.upper():
+                    continue
+                bound = self._place(arg.value, read)
+                if bound is None:
+                    uses.refusal = _at(Read(arg.value or call, read.parents, read.scope,
+                                            read.routine),
+                                       f"passed for {routine.name}'s {parameter.mode} parameter "
+                                       f"{parameter.name}, which holds an input's value, and "
+                                       f"is {self._unfollowed(arg.value, read)}")
+                    return []
+                places.append(bound)
+        return places
+
+    # --- indexes of the program -----------------------------------------------------------
+
+    def reads(self) -> dict:
+        """Place -> its reads, over every routine (assignment targets are writes)."""
+        if self._reads is None:
+            self._reads = {}
+            self._calls = {}
+            for routine in self.routines:
+                for node, parents in ast.walk(routine.ast):
+                    if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
+                        callee = self._own_routine(node, routine.scope)
+                        if callee is not None:
+                            self._calls.setdefault(callee.index, []).append(
+                                Read(node, parents, routine.scope, routine))
+                    if not isinstance(node, ast.NameRef) or _written(node, parents):
+                        continue
+                    symbol = routine.scope.lookup(node.name.key)
+                    if symbol is None or symbol.kind not in (GLOBAL_DATA, LOCAL_DATA):
+                        continue
+                    place = (symbol, routine.index if symbol.kind == LOCAL_DATA else None)
+                    self._reads.setdefault(place, []).append(
+                        Read(node, parents, routine.scope, routine))
+        return self._reads
+
+    def _calls_of(self, routine_index: int) -> list:
+        self.reads()
+        return self._calls.get(routine_index, [])
+
+    def _routine(self, index: int):
+        return next(r for r in self.routines if r.index == index)
+
+    def _own_routine(self, call, scope):
+        symbol = scope.lookup(call.name.key)
+        if symbol is None or symbol.kind != ROUTINE:
+            return None
+        return next((r for r in self.routines if r.index == symbol.slot), None)
+
+    @staticmethod
+    def _index_size(index: ast.Index, node, scope) -> Optional[int]:
+        if not isinstance(index.base, ast.NameRef):
+            return None
+        symbol = scope.lookup(index.base.name.key)
+        kind = getattr(symbol, "type", None)
+        if not isinstance(kind, ArrayType):
+            return None
+        position = next(k for k, i in enumerate(index.indices) if i is node)
+        size = kind.dims[position] if position < len(kind.dims) else None
+        return size if size is not None and size <= MAX_INDEXED else None
+
+
+def unevaluated_argument(call: ast.ProcedureCall, argument: ast.Argument, scope) -> bool:
+    """Whether ``argument`` is one a predefined routine never evaluates: an IN argument of
+    a routine modelled with no effect, or how fast or how close a move goes."""
+    if scope.lookup(call.name.key) is not None:        # the program's own routine
+        return False
+    entry = lookup_procedure(call.name.key)
+    if entry is None:
+        return False
+    unevaluated = entry.modelled == NO_EFFECT
+    for arg, parameter in matched_parameters(call.args, entry.signature.parameters):
+        if arg is argument:
+            if parameter is None or parameter.mode.upper() != "IN":
+                return False
+            return unevaluated or (call.name.key in MOVE_ROUTINES and
+                                   parameter.key in UNEVALUATED_BY_MOVES)
+    return False
+
+
+def _base(target):
+    """The data a target of an assignment writes into (``speed`` of ``speed.v_tcp``)."""
+    while isinstance(target, (ast.Component, ast.Index)):
+        target = target.base
+    return target
+
+
+def _written(node: ast.NameRef, parents: tuple) -> bool:
+    """Whether ``node`` is (the base of) an assignment's target: a write, not a read."""
+    child = node
+    for parent in reversed(parents):
+        if isinstance(parent, ast.Assignment):
+            return parent.target is child
+        if isinstance(parent, (ast.Component, ast.Index)) and parent.base is child:
+            child = parent
+            continue
+        return False
+    return False
+
+
+def _at(read: Read, what: str) -> str:
+    node = read.node
+    name = node.name.text if isinstance(node, ast.NameRef) else "the value"
+    span = getattr(node, "span", None)
+    where = f"{span.file}:{span.line}:{span.column}" if span is not None else "an unknown place"
+    return f"'{name}' at {where} is {what}"
+
+
+Found = Union[set, str]
