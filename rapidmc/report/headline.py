@@ -162,11 +162,12 @@ def _latest_values(steps: Sequence[TraceStep], word: str, words: Sequence[str],
                 word in whole_assignments(step) and \
                 not any(datum_of(change.name, words) == word for change in step.changes):
             rewritten = step.index
-        if transition is not None and step is not steps[-1]:
+        if transition is not None:             # the failing step reads what it chose
             for name, value in transition.inputs.items():
                 if name.upper() == word:
-                    return list(found.values()) + [(name, value,
-                                                    f"input chosen at step {step.index}")]
+                    return list(found.values()) + [(name, value, f"input chosen at step "
+                                                    f"{step.index}" + _read_before(
+                                                        steps, step, name, value))]
         if step is steps[-1] and step.kind != INITIAL:
             continue                           # what the failing step itself wrote
         for change in reversed(step.changes):
@@ -183,6 +184,19 @@ def _latest_values(steps: Sequence[TraceStep], word: str, words: Sequence[str],
             if not INDEX.search(change.name) and "." not in change.name.removeprefix("signal "):
                 return list(found.values())    # the whole datum: older parts are in it
     return list(found.values())
+
+
+def _read_before(steps: Sequence[TraceStep], chosen: TraceStep, name: str, value) -> str:
+    """``; it read 1 at step 105, line 116`` when an input read again had another value the
+    time before (a value checked, then used after the signal changed)."""
+    for step in reversed(steps[:steps.index(chosen)]):
+        transition = step.transition
+        if transition is not None and name in transition.inputs:
+            before = transition.inputs[name]
+            if before == value:
+                return ""
+            return f"; it read {before} at step {step.index}, line {transition.line}"
+    return ""
 
 
 def _inputs_text(step: TraceStep) -> str:
