@@ -26,7 +26,8 @@ as well, where a wait reads it: a WaitUntil condition, and the condition of a
 polling loop (WHILE; IF ... GOTO back: ``statements.branch``), takes the stored
 value or any value of the same domain, so the wait may end, and stores a value
 other than the stored one (the other party wrote it just before: the code after the
-wait reads what the wait saw); every other read takes the
+wait reads what the wait saw; a WaitUntil keeps it only where it ends, so a wait no
+value ends stays a deadlock: ``library.waits``); every other read takes the
 stored value (the loaded code's own protocol), so no branch runs on values the
 other writer's protocol may never produce together with the rest of the data.
 

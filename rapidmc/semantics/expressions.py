@@ -184,6 +184,9 @@ class ExpressionCompiler:
         self.routine = routine
         self.io_reader = None               # callable noting that the code reads signals
         self.in_wait = False                # compiling a WaitUntil or polling condition (_outside_read)
+        # a read compiled while ``in_wait`` chose a value another writer wrote and stores it
+        # (``_outside_read``; WaitUntil keeps it only where the wait ends: library.waits)
+        self.wait_choices = False
 
     def note_io_read(self) -> None:
         if self.io_reader is not None:
@@ -250,6 +253,7 @@ class ExpressionCompiler:
             # wrote just before; a value it wrote stays, so the code after the wait or in
             # the loop's body reads what the condition saw
             ref_fn = self.reference(expr, "read")[0]
+            self.wait_choices = True
 
             def either(m):
                 value = stored(m)
