@@ -23,7 +23,8 @@ element type (arrays), for the value types only:
 PERS data the loaded code writes too, when a party left out may also write it
 (``other_writers``: a task not loaded, a task's encrypted modules), is chosen
 as well, where a wait reads it: a WaitUntil condition, and the condition of a
-polling loop (WHILE; IF ... GOTO back: ``statements.branch``), takes the stored
+polling loop (WHILE; IF ... GOTO back, in a branch or the ELSE:
+``statements.branch``), takes the stored
 value or any value of the same domain, so the wait may end, and stores a value
 other than the stored one (the other party wrote it just before: the code after the
 wait reads what the wait saw; a WaitUntil keeps it only where it ends, so a wait no
