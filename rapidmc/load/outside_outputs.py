@@ -10,9 +10,10 @@ task that waits with ``WaitUntil DOutput(doRob_1Excuting) = 1`` for the robot
 task to run wait forever.  Such an output is read as PERS data written from
 outside is (``outside_data``): each read may give either value, as a free
 digital input's does (``semantics.choosers.CheckConfig``), and the verdicts name
-it and its writer under ``assumes:``.  An output no such writer is known for
-(module files without a backup, or nothing in the backup sets it) keeps its
-stored value, as one a property's atom names does (atoms read stored values).
+it and its writer under ``assumes:``; one a property's atom reads is kept in the
+state, as a free input an atom reads is, so the atom sees what the code reads.  An
+output no such writer is known for (module files without a backup, or nothing in
+the backup sets it) keeps its stored value.
 
 An output counts as set by the loaded code when any call of it (every task,
 the environment model) passes it by name to anything but a reading routine
@@ -145,10 +146,11 @@ def outside_outputs(linker) -> dict:
     read = named_signals(routine.ast for routine in linker.routines
                          if routine.ast is not None and routine.namespace != ENVIRONMENT_NAMESPACE)
     writers = linker.options.get("output_writers") or {}
-    observed = linker.options.get("observed_names", frozenset())
+    # (an output a property's atom reads too is kept in the state, as an input an atom
+    # reads is: semantics.choosers.CheckConfig; the atom and the code read the same value)
     return {signal.index: writers[signal.key] for signal in linker.signals
             if signal.kind == "DO" and signal.key in writers and signal.key in read
-            and signal.key not in written and signal.key not in observed}
+            and signal.key not in written}
 
 
 def named_signals(routines: Iterable) -> set:
