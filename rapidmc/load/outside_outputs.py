@@ -17,7 +17,8 @@ the backup sets it) keeps its stored value.
 
 An output counts as set by the loaded code when any call of it (every task,
 the environment model) passes it by name to anything but a reading routine
-(``OUTPUT_READERS``) or a routine of its own that only reads the parameter it binds, or names it in a string given to ``AliasIO``; an
+(``OUTPUT_READERS``) or a routine of the code that only reads the parameter it
+binds, or names it in a string given to ``AliasIO``; an
 ``AliasIO`` whose signal is computed at run time may connect any output, so
 then every output keeps the stored reading.  Group and analog outputs keep it
 too: their values have no finite domain here (a gap the verdict's assumption

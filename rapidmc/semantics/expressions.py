@@ -218,7 +218,7 @@ class ExpressionCompiler:
         (``load.outside_data``): any value of its domain, chosen afresh by each read, as
         the outside may write between any two (merged steps expand read by read).  A read
         of a whole record (``target``, ``rec.sub``) takes its components' choices together
-        (``_outside_record``); a whole array keeps the stored value."""
+        (``_outside_record``), a whole array its elements' (``_outside_array``)."""
         whole_array = isinstance(compiled.type, ArrayType)
         if not whole_array and (not isinstance(compiled.type, RapidType) or
                                 compiled.type.kind not in (ATOMIC, RECORD)):
