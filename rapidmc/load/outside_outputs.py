@@ -75,17 +75,16 @@ def _set_names(routine, declared: dict, sets: dict) -> Optional[set]:
     written: set = set()
     for node in walk_routine(routine):
         if isinstance(node, ast.LateBindingCall):
-            written.update(a.value.name.key for a in node.args
-                           if isinstance(a.value, ast.NameRef))
+            written.update(_passed_names(node.args))
         if not isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
             continue
         callees = declared.get(node.name.key)
         if callees:
             for argument in node.args:
-                if isinstance(argument.value, ast.NameRef) and any(
-                        _sets_parameter(callee, node.args, argument, sets)
-                        for callee in callees):
-                    written.add(argument.value.name.key)
+                name = _passed_name(argument)
+                if name is not None and any(_sets_parameter(callee, node.args, argument, sets)
+                                            for callee in callees):
+                    written.add(name)
             continue
         if node.name.key == "ALIASIO":
             source = argument_expression(node, "FromSignal", 0)
@@ -95,9 +94,22 @@ def _set_names(routine, declared: dict, sets: dict) -> Optional[set]:
                 return None
         if node.name.key in OUTPUT_READERS:
             continue
-        written.update(a.value.name.key for a in node.args
-                       if isinstance(a.value, ast.NameRef))
+        written.update(_passed_names(node.args))
     return written
+
+
+def _passed_name(argument) -> Optional[str]:
+    """The upper-case name an argument passes: a bare name (``doLamp``, ``\\Sig:=doLamp``),
+    or the caller's optional parameter a conditional argument passes on (``\\Sig?Sig``)."""
+    if isinstance(argument.value, ast.NameRef):
+        return argument.value.name.key
+    if argument.kind == ast.CONDITIONAL and argument.source is not None:
+        return argument.source.key
+    return None
+
+
+def _passed_names(arguments) -> list:
+    return [name for name in map(_passed_name, arguments) if name is not None]
 
 
 def _sets_parameter(callee, arguments, argument, sets: dict) -> bool:
