@@ -94,7 +94,11 @@ def test_a_barrier_with_a_task_name_no_task_has_is_an_error(tmp_path):
 
 @pytest.mark.skipif(not native.available(), reason="the native core is not built")
 @pytest.mark.parametrize("name", ["alone_output_written", "system_output", "alone_polling_while",
-                                  "alone_polling_goto", "alone_wait_then_read"])
+                                  "alone_polling_goto", "alone_wait_then_read",
+                                  "alone_wait_never_met", "alone_polling_else_goto",
+                                  "alone_polling_function_index",
+                                  "system_output_helpers", "system_output_in_property",
+                                  "system_output_set_through_option"])
 def test_outputs_set_outside_same_on_both_engines(name):
     """Outputs set outside the loaded code are free inputs of both engines alike."""
     case = CASES / name

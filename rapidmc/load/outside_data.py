@@ -23,10 +23,12 @@ element type (arrays), for the value types only:
 PERS data the loaded code writes too, when a party left out may also write it
 (``other_writers``: a task not loaded, a task's encrypted modules), is chosen
 as well, where a wait reads it: a WaitUntil condition, and the condition of a
-polling loop (WHILE; IF ... GOTO back: ``statements.branch``), takes the stored
+polling loop (WHILE; IF ... GOTO back, in a branch or the ELSE:
+``statements.branch``), takes the stored
 value or any value of the same domain, so the wait may end, and stores a value
 other than the stored one (the other party wrote it just before: the code after the
-wait reads what the wait saw); every other read takes the
+wait reads what the wait saw; a WaitUntil keeps it only where it ends, so a wait no
+value ends stays a deadlock: ``library.waits``); every other read takes the
 stored value (the loaded code's own protocol), so no branch runs on values the
 other writer's protocol may never produce together with the rest of the data.
 

@@ -10,13 +10,15 @@ task that waits with ``WaitUntil DOutput(doRob_1Excuting) = 1`` for the robot
 task to run wait forever.  Such an output is read as PERS data written from
 outside is (``outside_data``): each read may give either value, as a free
 digital input's does (``semantics.choosers.CheckConfig``), and the verdicts name
-it and its writer under ``assumes:``.  An output no such writer is known for
-(module files without a backup, or nothing in the backup sets it) keeps its
-stored value, as one a property's atom names does (atoms read stored values).
+it and its writer under ``assumes:``; one a property's atom reads is kept in the
+state, as a free input an atom reads is, so the atom sees what the code reads.  An
+output no such writer is known for (module files without a backup, or nothing in
+the backup sets it) keeps its stored value.
 
 An output counts as set by the loaded code when any call of it (every task,
 the environment model) passes it by name to anything but a reading routine
-(``OUTPUT_READERS``), or names it in a string given to ``AliasIO``; an
+(``OUTPUT_READERS``) or a routine of the code that only reads the parameter it
+binds, or names it in a string given to ``AliasIO``; an
 ``AliasIO`` whose signal is computed at run time may connect any output, so
 then every output keeps the stored reading.  Group and analog outputs keep it
 too: their values have no finite domain here (a gap the verdict's assumption
@@ -43,26 +45,87 @@ OUTPUT_READERS = frozenset({
 def written_signals(routines: Iterable) -> Optional[set]:
     """Upper-case names of the signals the routines' code (AST routines) may set: passed
     by name to a call other than a reading one, or named by a string given to AliasIO.
+    A signal passed to a routine among ``routines`` counts only where that routine may
+    set the parameter it is bound to (passes it on to such a call), so a helper such as
+    ``PROC WaitHigh(VAR signaldo s) WaitDO s, 1; ENDPROC`` reads what it is given.
     None: an AliasIO names its signal at run time, so any signal may be set."""
-    written: set = set()
+    routines = list(routines)
+    declared: dict = {}
     for routine in routines:
-        for node in walk_routine(routine):
-            if isinstance(node, ast.LateBindingCall):
-                written.update(a.value.name.key for a in node.args
-                               if isinstance(a.value, ast.NameRef))
-            if not isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
-                continue
-            if node.name.key == "ALIASIO":
-                source = argument_expression(node, "FromSignal", 0)
-                if isinstance(source, ast.StringLiteral):
-                    written.add(source.value.upper())
-                elif not isinstance(source, ast.NameRef):
-                    return None
-            if node.name.key in OUTPUT_READERS:
-                continue
-            written.update(a.value.name.key for a in node.args
-                           if isinstance(a.value, ast.NameRef))
+        declared.setdefault(routine.name.key, []).append(routine)
+    # routine -> the names its code sets: the least fixed point over the calls between
+    # the routines (a routine that only hands its parameter to itself sets nothing)
+    sets: dict = {id(routine): set() for routine in routines}
+    changed = True
+    while changed:
+        changed = False
+        for routine in routines:
+            found = _set_names(routine, declared, sets)
+            if found is None:
+                return None
+            if found != sets[id(routine)]:
+                sets[id(routine)] = found
+                changed = True
+    return set().union(*sets.values())
+
+
+def _set_names(routine, declared: dict, sets: dict) -> Optional[set]:
+    """The names ``routine``'s code passes to a call that may set them, given what each
+    declared routine sets (``sets``); None where an AliasIO names a signal at run time."""
+    written: set = set()
+    for node in walk_routine(routine):
+        if isinstance(node, ast.LateBindingCall):
+            written.update(_passed_names(node.args))
+        if not isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
+            continue
+        callees = declared.get(node.name.key)
+        if callees:
+            for argument in node.args:
+                name = _passed_name(argument)
+                if name is not None and any(_sets_parameter(callee, node.args, argument, sets)
+                                            for callee in callees):
+                    written.add(name)
+            continue
+        if node.name.key == "ALIASIO":
+            source = argument_expression(node, "FromSignal", 0)
+            if isinstance(source, ast.StringLiteral):
+                written.add(source.value.upper())
+            elif not isinstance(source, ast.NameRef):
+                return None
+        if node.name.key in OUTPUT_READERS:
+            continue
+        written.update(_passed_names(node.args))
     return written
+
+
+def _passed_name(argument) -> Optional[str]:
+    """The upper-case name an argument passes: a bare name (``doLamp``, ``\\Sig:=doLamp``),
+    or the caller's optional parameter a conditional argument passes on (``\\Sig?Sig``)."""
+    if isinstance(argument.value, ast.NameRef):
+        return argument.value.name.key
+    if argument.kind == ast.CONDITIONAL and argument.source is not None:
+        return argument.source.key
+    return None
+
+
+def _passed_names(arguments) -> list:
+    return [name for name in map(_passed_name, arguments) if name is not None]
+
+
+def _sets_parameter(callee, arguments, argument, sets: dict) -> bool:
+    """Whether ``callee`` may set the parameter ``argument`` (one of a call's
+    ``arguments``) is bound to: by name (``\\Sig:=do1``), else the required parameter at
+    its position among the positional arguments; one that matches no parameter may."""
+    if argument.name is not None:
+        matched = [p for p in callee.parameters if p.name.key == argument.name.key]
+    else:
+        position = next(i for i, a in enumerate(a for a in arguments if a.name is None)
+                        if a is argument)
+        required = [p for p in callee.parameters if not p.optional]
+        matched = required[position:position + 1]
+    if not matched:
+        return True
+    return matched[0].name.key in sets[id(callee)]
 
 
 def controller_writers(eio_path: Optional[str]) -> dict:
@@ -96,10 +159,11 @@ def outside_outputs(linker) -> dict:
     read = named_signals(routine.ast for routine in linker.routines
                          if routine.ast is not None and routine.namespace != ENVIRONMENT_NAMESPACE)
     writers = linker.options.get("output_writers") or {}
-    observed = linker.options.get("observed_names", frozenset())
+    # (an output a property's atom reads too is kept in the state, as an input an atom
+    # reads is: semantics.choosers.CheckConfig; the atom and the code read the same value)
     return {signal.index: writers[signal.key] for signal in linker.signals
             if signal.kind == "DO" and signal.key in writers and signal.key in read
-            and signal.key not in written and signal.key not in observed}
+            and signal.key not in written}
 
 
 def named_signals(routines: Iterable) -> set:

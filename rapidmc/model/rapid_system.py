@@ -338,6 +338,15 @@ class RapidDescriber:
     def _task_name(self, namespace: int) -> str:
         return task_qualifier(self.program, namespace)
 
+    def _signal_text(self, value, rapid_type) -> Optional[str]:
+        """``<signaldo: doReady>`` for a signal parameter: the signal its caller passed (it
+        holds the signal's index), so that a wait in a helper routine (``WaitDO s, 1``)
+        says which signal it waits for; None for other data."""
+        if getattr(rapid_type, "signal_kind", None) is None or isinstance(value, bool) or \
+                not isinstance(value, (int, float)) or not 0 <= value < len(self.program.signals):
+            return None
+        return f"<{rapid_type.name}: {self.program.signals[int(value)].name}>"
+
     def _text(self, value, slot: int, rapid_type) -> str:
         """``value_text`` of a global's value, kept while the state holds the very same value
         (consecutive states share most of their data: big arrays are written out once)."""
@@ -386,7 +395,8 @@ class RapidDescriber:
                     continue                       # a reference parameter
                 rapid_type = self._local_types(routine).get(slot)
                 view[self._routine_prefix(routine) + name] = untyped_text(value) \
-                    if rapid_type is None else value_text(value, rapid_type)
+                    if rapid_type is None else self._signal_text(value, rapid_type) or \
+                    value_text(value, rapid_type)
         for signal in self.signals:
             view[f"signal {signal.name}"] = format_num(state.io[signal.index])
         if self.program.robot_per_task:        # each motion task's robot (semantics.robots)

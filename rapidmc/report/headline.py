@@ -14,7 +14,8 @@ from typing import Optional, Sequence
 from ..check.trace import INITIAL, Trace, TraceStep
 from ..load.stubs.module_text import is_stub_module
 from ..semantics.task_registers import names_errno
-from .trace_slice import read_part, whole_assignments
+from ..model.fairness import TASK_CHOICE
+from .trace_slice import read_part, statements_of, whole_assignments, words_of
 from .trace_text import (INDEX, SOURCE_WIDTH, STRING_WIDTH, WIDTH, TextOptions, data_names,
                          datum_of, shorten, shown_location, shown_value)
 
@@ -177,7 +178,7 @@ def _latest_values(steps: Sequence[TraceStep], word: str, words: Sequence[str],
             if step.kind == INITIAL:
                 origin = "stub value" if change.name in stub_data else "initial value"
             else:
-                origin = f"set at step {step.index}" + _inputs_text(step)
+                origin = f"set at step {step.index}" + _inputs_text(step, steps[0])
             if rewritten is not None and not found:
                 origin = f"set at step {rewritten}, to the value it had"
             found[change.name] = (change.name, change.new, origin)
@@ -188,9 +189,16 @@ def _latest_values(steps: Sequence[TraceStep], word: str, words: Sequence[str],
 
 def _read_before(steps: Sequence[TraceStep], chosen: TraceStep, name: str, value) -> str:
     """``; it read 1 at step 105, line 116`` when an input read again had another value the
-    time before (a value checked, then used after the signal changed)."""
+    time before (a value checked, then used after the signal changed).  An input the state
+    keeps is chosen before every step: only a step whose statement names it read it."""
+    first = steps[0]
+    kept = first.kind == INITIAL and any(change.name == f"signal {name}"
+                                         for change in first.changes)
     for step in reversed(steps[:steps.index(chosen)]):
         transition = step.transition
+        if kept and transition is not None and name.upper() not in {
+                word for text in statements_of(step) for word in words_of(text)}:
+            continue
         if transition is not None and name in transition.inputs:
             before = transition.inputs[name]
             if before == value:
@@ -199,10 +207,22 @@ def _read_before(steps: Sequence[TraceStep], chosen: TraceStep, name: str, value
     return ""
 
 
-def _inputs_text(step: TraceStep) -> str:
-    """`` from the input TPReadNum = 1`` when the step chose inputs, else nothing."""
+def _inputs_text(step: TraceStep, first: TraceStep) -> str:
+    """`` by task 2 (T_ROB2)`` when the step chose the task that steps, and `` from the
+    input TPReadNum = 1`` when it chose inputs its statements may read, else nothing.  An
+    input the state keeps (``signal diStart`` of the ``first`` step, the initial state) is
+    chosen before every step, so it counts only where a statement of the step names it: a
+    SetDO beside it does not take its value from it."""
     inputs = step.transition.inputs if step.transition is not None else {}
     if not inputs:
         return ""
-    chosen = ", ".join(f"{name} = {value}" for name, value in inputs.items())
-    return f" from the input {chosen}" if len(inputs) == 1 else f" from the inputs {chosen}"
+    kept = {change.name[len("signal "):] for change in first.changes
+            if change.name.startswith("signal ")} if first.kind == INITIAL else set()
+    words = {word for text in statements_of(step) for word in words_of(text)}
+    read = {name: value for name, value in inputs.items()
+            if name != TASK_CHOICE and (name not in kept or name.upper() in words)}
+    text = f" by {inputs[TASK_CHOICE]}" if TASK_CHOICE in inputs else ""
+    if read:
+        chosen = ", ".join(f"{name} = {value}" for name, value in read.items())
+        text += f" from the input {chosen}" if len(read) == 1 else f" from the inputs {chosen}"
+    return text

@@ -184,6 +184,12 @@ class ExpressionCompiler:
         self.routine = routine
         self.io_reader = None               # callable noting that the code reads signals
         self.in_wait = False                # compiling a WaitUntil or polling condition (_outside_read)
+        # a read compiled while ``in_wait`` chose a value another writer wrote and stores it
+        # (``_outside_read``; WaitUntil keeps it only where the wait ends: library.waits)
+        self.wait_choices = False
+        # user FUNC call node (id) -> the slot of its hoisted result: an expression compiled
+        # twice (a read and the reference it stores to) calls the function once
+        self._hoisted: dict[int, int] = {}
 
     def note_io_read(self) -> None:
         if self.io_reader is not None:
@@ -212,7 +218,7 @@ class ExpressionCompiler:
         (``load.outside_data``): any value of its domain, chosen afresh by each read, as
         the outside may write between any two (merged steps expand read by read).  A read
         of a whole record (``target``, ``rec.sub``) takes its components' choices together
-        (``_outside_record``); a whole array keeps the stored value."""
+        (``_outside_record``), a whole array its elements' (``_outside_array``)."""
         whole_array = isinstance(compiled.type, ArrayType)
         if not whole_array and (not isinstance(compiled.type, RapidType) or
                                 compiled.type.kind not in (ATOMIC, RECORD)):
@@ -249,13 +255,16 @@ class ExpressionCompiler:
             # a wait or a poll: the value the loaded code stored, or one the other writer
             # wrote just before; a value it wrote stays, so the code after the wait or in
             # the loop's body reads what the condition saw
+            # (the reference's indexes are evaluated once: the value is read through it)
             ref_fn = self.reference(expr, "read")[0]
+            self.wait_choices = True
 
             def either(m):
-                value = stored(m)
+                ref = ref_fn(m)
+                value = m.read_ref(ref)
                 taken = m.choose(name, domain if value in domain else (value,) + domain)
                 if taken != value:
-                    m.write_ref(ref_fn(m), taken)
+                    m.write_ref(ref, taken)
                 return taken
             return Compiled(either, compiled.type)
 
@@ -684,7 +693,9 @@ class ExpressionCompiler:
             if self.hoist is None:
                 raise error(ARGUMENT, f"user function '{expr.name.text}' cannot be called "
                             "here (only predefined functions)", expr.span)
-            slot = self.hoist(expr, routine)
+            slot = self._hoisted.get(id(expr))
+            if slot is None:
+                slot = self._hoisted[id(expr)] = self.hoist(expr, routine)
             return Compiled(lambda m: m.frames[-1].locals[slot], routine.return_type)
         if symbol is not None:
             raise error(TYPE_MISMATCH, f"'{expr.name.text}' is data, not a function", expr.span)

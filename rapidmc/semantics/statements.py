@@ -388,10 +388,14 @@ class RoutineCompiler:
 
     # --------------------------------------------------- compound statements
     def _If(self, statement: ast.If, follow: Label) -> None:
+        # an ELSE that jumps back makes every condition decide whether the loop goes round
+        # again (IF ready THEN ... ELSE WaitTime 0.1; GOTO wait; ENDIF)
+        else_polls = self._jumps_back(statement.else_body[-1]
+                                      if statement.else_body else None)
         for branch in statement.branches:
             otherwise = Label()
-            self.branch(branch.condition, branch.span, otherwise,
-                        polls=self._jumps_back(branch.body[-1] if branch.body else None))
+            self.branch(branch.condition, branch.span, otherwise, polls=else_polls or
+                        self._jumps_back(branch.body[-1] if branch.body else None))
             self.block(branch.body, follow)
             self.place(otherwise)
         if statement.else_body is not None:

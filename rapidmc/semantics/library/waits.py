@@ -75,12 +75,29 @@ def _wait_signal(calls, compiler, call, entry):
           f"{_VISUALIZE})")
 def _wait_until(calls, compiler, call, entry):
     def factory(arguments):
-        return arguments.value("Cond")
+        condition = arguments.value("Cond")
+        return _kept_where_it_ends(condition) if compiler.wait_choices else condition
     compiler.in_wait = True          # PERS another party writes too: the wait may end (issue 28)
+    compiler.wait_choices = False
     try:
         return _wait(calls, compiler, call, entry, factory, "WaitUntil condition")
     finally:
         compiler.in_wait = False
+
+
+def _kept_where_it_ends(condition):
+    """``condition``, whose reads of PERS another party writes too store the value they
+    take (``ExpressionCompiler._outside_read``), keeping those values only where it holds:
+    the code after the wait reads what the wait saw, while a try that keeps the task
+    waiting leaves the data as it was.  Else a wait that no value ends would change the
+    state at every try and never be seen to wait forever."""
+    def seen(m):
+        store = m.store
+        if condition(m):
+            return True
+        m.store = store
+        return False
+    return seen
 
 
 compiled("WaitRob(\\switch InPos | switch ZeroSpeed)",
