@@ -425,3 +425,13 @@ def test_a_computed_alias_onto_digital_signal_data_leaves_the_default(tmp_path):
                  "  VAR signaldi di_clamp;\n")
     model = api.prepare(_load(tmp_path, text), [])
     assert [a.values for a in model.assumed] == [(0.0, 1.0, 2.0)]
+
+
+def test_an_input_no_statement_reads_beside_a_computed_digital_alias_takes_one_value(tmp_path):
+    text = PASSED_ON.replace("    IF gi_code = 1 x := 1;\n    show gi_code;\n",
+                             "    AliasIO name, di_clamp;\n    IF di_clamp = 1 x := 2;\n") \
+        .replace("  VAR num x := 0;\n", "  VAR num x := 0;\n  VAR string name := \"DI_CLAMP\";\n"
+                 "  VAR signaldi di_clamp;\n")
+    model = api.prepare(_load(tmp_path, text), [])
+    assert [(a.values, a.reason) for a in model.assumed] == \
+        [((0.0,), "no statement reads it: one value")]

@@ -125,7 +125,9 @@ def _default(signal: Signal, width: Optional[int], reads: "ReadCollector",
     if other is not None:
         return Refused(f"{other}; a default needs every read to be compared with number literals "
                        "(= <> < <= > >=, TEST ... CASE, WaitGI/WaitAI)")
-    uses = reads.uses.get(signal.index, Uses())
+    uses = reads.uses.get(signal.index)
+    if uses is None:           # listed since a computed AliasIO binds other signal data
+        return Assumed(signal, (0.0,), "no statement reads it: one value")
     numbers = sorted(uses.numbers)
     through = f"; followed through {', '.join(uses.through)}" if uses.through else ""
     if not numbers and uses.sunk:
