@@ -311,8 +311,8 @@ PART_CODE = """MODULE M
   FUNC bool ChoosePart(INOUT num part)
     part := 0;
     IF GInput(gi_code) >= LOW AND gi_code <= 4 THEN
-      IF taken{gi_code} = FALSE THEN
-        part := gi_code;
+      IF taken{GInput(gi_code)} = FALSE THEN
+        part := GInput(gi_code);
         RETURN TRUE;
       ENDIF
     ENDIF

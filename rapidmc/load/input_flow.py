@@ -91,7 +91,7 @@ class InputFlow:
             uses.numbers.update(found)
             uses.compared.update(found)
             return
-        node, parents = read.node, list(read.parents)
+        node, parents = _unwrapped(read.node, list(read.parents))
         parent = parents[-1] if parents else None
         if isinstance(parent, ast.Index) and any(i is node for i in parent.indices):
             size = self._index_size(parent, node, read.scope)
@@ -124,12 +124,7 @@ class InputFlow:
         through ``+ - *`` and unary minus only into an argument no model evaluates, or
         into data whose every read is such an argument.  A condition, index, divisor,
         atom or operation that can fail is never a sink."""
-        node, parents = read.node, list(read.parents)
-        if len(parents) >= 2 and isinstance(parents[-1], ast.Argument) and \
-                isinstance(parents[-2], ast.FunctionCall) and \
-                parents[-2].name.key in ("GINPUT", "AINPUT"):
-            node = parents[-2]
-            parents = parents[:-2]
+        node, parents = _unwrapped(read.node, list(read.parents))
         while parents and (isinstance(parents[-1], ast.Binary) and parents[-1].op in INERT_OPS
                            or isinstance(parents[-1], ast.Unary) and parents[-1].op == "-"):
             node = parents.pop()
@@ -315,6 +310,15 @@ def unevaluated_argument(call: ast.ProcedureCall, argument: ast.Argument, scope)
             return unevaluated or (call.name.key in MOVE_ROUTINES and
                                    parameter.key in UNEVALUATED_BY_MOVES)
     return False
+
+
+def _unwrapped(node, parents: list) -> tuple:
+    """``GInput(s)`` / ``AInput(s)`` for a read of ``s`` inside one: the value is the same."""
+    if len(parents) >= 2 and isinstance(parents[-1], ast.Argument) and \
+            isinstance(parents[-2], ast.FunctionCall) and \
+            parents[-2].name.key in ("GINPUT", "AINPUT") and parents[-2].args[0] is parents[-1]:
+        return parents[-2], parents[:-2]
+    return node, parents
 
 
 def _base(target):
