@@ -241,11 +241,19 @@ def test_an_alias_with_a_computed_name_leaves_no_default(tmp_path):
     assert "prog.mod:9:5 names its signal at run time" in _refusal(tmp_path, text)
 
 
-def test_a_read_used_as_an_index_names_the_first_such_read(tmp_path):
-    text = PASSED_ON.replace("    show gi_code;\n", "    x := table{GInput(gi_code)};\n    x := gi_code + 1;\n") \
+def test_a_read_computed_into_an_index_names_the_first_such_read(tmp_path):
+    text = PASSED_ON.replace("    show gi_code;\n", "    x := table{GInput(gi_code) + 1};\n"
+                             "    x := table{gi_code - 1};\n") \
         .replace("  VAR num x := 0;\n", "  VAR num x := 0;\n  VAR num table{3} := [1, 2, 3];\n")
     note = _refusal(tmp_path, text)
-    assert "prog.mod:8:23 is used as an array index" in note
+    assert "prog.mod:8:23 is an operand of '+'" in note
+
+
+def test_a_read_used_as_an_index_counts_each_element(tmp_path):
+    text = PASSED_ON.replace("    show gi_code;\n", "    x := table{GInput(gi_code)};\n") \
+        .replace("  VAR num x := 0;\n", "  VAR num x := 0;\n  VAR num table{3} := [1, 2, 3];\n")
+    [assumed] = api.prepare(_load(tmp_path, text), []).assumed
+    assert assumed.values == (0.0, 1.0, 2.0, 3.0, 4.0)
 
 
 # --- issue 28: an input whose value reaches nothing needs one value ----------------------
@@ -435,3 +443,56 @@ def test_an_input_no_statement_reads_beside_a_computed_digital_alias_takes_one_v
     model = api.prepare(_load(tmp_path, text), [])
     assert [(a.values, a.reason) for a in model.assumed] == \
         [((0.0,), "no statement reads it: one value")]
+
+
+# A camera's pick position sent as group inputs, stored, and given to Offs for a move's
+# target (survey of public backups): the robot goes there, and nothing reads its position.
+CAMERA_PICK = """MODULE M
+  VAR signalgi gi_x;
+  VAR signalgi gi_y;
+  VAR num pick_x := 0;
+  VAR num pick_y := 0;
+  VAR num parts := 0;
+  CONST robtarget table := [[500, 0, 600], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];
+  PROC main()
+    AliasIO "GI_X", gi_x;
+    AliasIO "GI_Y", gi_y;
+    WHILE TRUE DO
+      pick_x := GInput(gi_x);
+      pick_y := gi_y;
+      MoveL Offs(table, pick_x, pick_y * 2 + 10, 250), v1000, z10, tool0;
+      MoveL Offs(table, pick_x, pick_y, 0), v100, fine, tool0;
+      parts := parts + 1;
+      IF parts > 2 parts := 0;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
+"""
+
+
+def test_a_pick_position_that_only_moves_the_robot_takes_one_value(tmp_path):
+    model = api.prepare(_load(tmp_path, CAMERA_PICK), [])
+    assert {a.signal.name: a.values for a in model.assumed} == {"GI_X": (0.0,), "GI_Y": (0.0,)}
+    assert all("followed through pick_" in a.reason for a in model.assumed)
+
+
+@pytest.mark.parametrize("change, properties", [
+    # the program reads the robot's position back
+    (("      parts := parts + 1;\n", "      IF CRobT().trans.x > 600 parts := 0;\n"), ()),
+    # a property reads it
+    (("", ""), ('p: G "CPos().x < 900"',)),
+    # an offset position is computed with, not moved to
+    (("      parts := parts + 1;\n", "      IF Offs(table, pick_x, 0, 0).trans.x > 600 parts := 0;\n"),
+     ()),
+])
+def test_a_pick_position_the_code_or_a_property_can_observe_has_no_default(tmp_path, change,
+                                                                           properties):
+    text = CAMERA_PICK.replace(*change) if change[0] else CAMERA_PICK
+    props = [api.property_from_text(p) for p in properties]
+    assert "no default" in _refusal_notes(tmp_path, text, props)
+
+
+def _refusal_notes(tmp_path, text: str, properties) -> str:
+    with pytest.raises(UserError) as caught:
+        api.prepare(_load(tmp_path, text), properties, api.CheckOptions())
+    return " ".join(note for d in caught.value.diagnostics for note in d.notes)

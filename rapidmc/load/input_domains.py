@@ -89,18 +89,19 @@ def describe(values: Sequence[float]) -> str:
 
 
 def default_domains(program: Program, signals: Sequence[Signal], atom_reads,
-                    atom_data: Optional[frozenset] = None) -> dict:
+                    atom_data: Optional[frozenset] = None, robot_observed: bool = True) -> dict:
     """Signal key -> ``Assumed`` or ``Refused`` for each of ``signals`` (free AI/GI inputs).
 
     ``atom_reads``: indices of the signals properties read (None: any of them);
     ``atom_data``: upper-case names of the data they read (None: unknown, so an input's
-    value is not followed through data).
+    value is not followed through data); ``robot_observed``: whether they read a robot's
+    position.
     """
     if not signals:
         return {}
     widths = {s.name.upper(): s.width for s in program.options.get("configured_signals", ())
               if getattr(s, "width", None)}
-    reads = ReadCollector(program, atom_data)
+    reads = ReadCollector(program, atom_data, robot_observed)
     reads.collect()
     outcomes = {}
     for signal in signals:
@@ -183,10 +184,11 @@ class ReadCollector:
     """Every read of every AI/GI signal in the program's code, classified (through the data
     it is stored into: ``input_flow``)."""
 
-    def __init__(self, program: Program, atom_data: Optional[frozenset] = None):
+    def __init__(self, program: Program, atom_data: Optional[frozenset] = None,
+                 robot_observed: bool = True):
         self.program = program
         self.routines = [r for r in program.routines if r.ast is not None]
-        self.flow = InputFlow(self.routines, atom_data)
+        self.flow = InputFlow(self.routines, atom_data, robot_observed)
         self.uses: dict[int, Uses] = {}           # signal index -> what its reads amount to
         self.aliases: dict[str, set] = {}         # signal variable key -> signal indices
         self.computed_alias: Optional[ast.Span] = None

@@ -18,7 +18,11 @@ array index after a range check, a PLC's speed percentage scaled into a
 * **Mixed value** (after ``+ - *`` with other operands).  It may only reach a
   sink: an IN argument of a predefined routine modelled with no effect, an
   argument a move never evaluates (speed, zone), or data whose every read is
-  such an argument.
+  such an argument; or an offset of ``Offs`` whose result is a move's target,
+  when nothing reads the robot's position back (no ``CRobT``, ``CPos``,
+  ``CJointT``, ``CalcJointT`` ... in the code, no robot atom in a property):
+  a camera's pick position sent as group inputs moves the robot, and nothing
+  else.
 
 Data followed must be the task's own ``VAR`` data or routine data (a PERS
 can be read where the analysis does not look) and must not be read by a
@@ -32,10 +36,15 @@ from typing import Optional, Union
 from .. import ast
 from ..semantics.library import lookup_procedure
 from ..semantics.library.motion import MOVE_ROUTINES, UNEVALUATED_BY_MOVES
+from ..semantics.library.position import ROBOT_PARTS
 from ..semantics.library.registry import NO_EFFECT, matched_parameters
 from ..semantics.scope import GLOBAL_DATA, LOCAL_DATA, ROUTINE
 from ..semantics.types import ArrayType
 
+# routines that read the robot's position, tool or work object back (ROBOT_PARTS, and those
+# computing from the joints): a target that depends on an input is then observed
+ROBOT_READERS = frozenset(ROBOT_PARTS) | {"CALCJOINTT", "MOVEEXTJ", "GETSYSDATA", "ATTARGET"}
+MOVE_TARGETS = frozenset({"TOPOINT", "CIRPOINT"})
 MAX_INDEXED = 64              # an index of a bigger array: too many classes to branch over
 INERT_OPS = ("+", "-", "*")   # operations that cannot fail on a num read (no divisor)
 NUMERIC = ("NUM", "DNUM")     # types of data a raw value may be stored in and followed
@@ -73,10 +82,13 @@ class InputFlow:
     ``observed_names``: upper-case names of data that properties' atoms read
     (``None``: unknown, so no data is followed)."""
 
-    def __init__(self, routines, observed_names: Optional[frozenset]):
+    def __init__(self, routines, observed_names: Optional[frozenset],
+                 robot_observed: bool = True):
         self.routines = routines
         self.observed_names = observed_names
+        self.robot_observed = robot_observed     # a property's atom reads a robot
         self._reads: Optional[dict] = None
+        self._robot_read: Optional[bool] = None
 
     # --- the uses of a value --------------------------------------------------------------
 
@@ -129,6 +141,12 @@ class InputFlow:
                            or isinstance(parents[-1], ast.Unary) and parents[-1].op == "-"):
             node = parents.pop()
         parent = parents[-1] if parents else None
+        if isinstance(parent, ast.Argument) and len(parents) >= 4 and \
+                isinstance(parents[-2], ast.FunctionCall) and parents[-2].name.key == "OFFS" \
+                and read.scope.lookup("OFFS") is None and parents[-2].args[0] is not parent \
+                and isinstance(parents[-3], ast.Argument) and \
+                isinstance(parents[-4], ast.ProcedureCall):
+            return self._robot_target(parents[-4], parents[-3], read.scope)
         if isinstance(parent, ast.Argument) and len(parents) >= 2 and \
                 isinstance(parents[-2], ast.ProcedureCall):
             return unevaluated_argument(parents[-2], parent, read.scope)
@@ -136,6 +154,26 @@ class InputFlow:
             place = self._place(_base(parent.target), read, any_type=True)
             return place is not None and self._sink_place(place, uses, seen)
         return False
+
+    def _robot_target(self, call: ast.ProcedureCall, argument: ast.Argument, scope) -> bool:
+        """Whether ``argument`` is the target of a predefined move and nothing reads the
+        robot's position back."""
+        if call.name.key not in MOVE_ROUTINES or scope.lookup(call.name.key) is not None:
+            return False
+        entry = lookup_procedure(call.name.key)
+        for arg, parameter in matched_parameters(call.args, entry.signature.parameters):
+            if arg is argument:
+                return parameter is not None and parameter.key in MOVE_TARGETS and \
+                    not self.robot_observed and not self._reads_robot()
+        return False
+
+    def _reads_robot(self) -> bool:
+        if self._robot_read is None:
+            self._robot_read = any(
+                isinstance(node, (ast.FunctionCall, ast.ProcedureCall))
+                and node.name.key in ROBOT_READERS
+                for routine in self.routines for node, _ in ast.walk(routine.ast))
+        return self._robot_read
 
     # --- data that holds the value --------------------------------------------------------
 

@@ -36,7 +36,8 @@ from .. import ast
 from ..diagnostics import (ATOM, DUPLICATE_PROPERTY, FILE_NOT_FOUND, PROPERTY_FILE,
                           UNKNOWN_NAME, Diagnostic, SourceCache, UserError, error)
 from .fused_atoms import fused_valuation
-from .task_atoms import ControllerTasks, Task, task_stack, tasks_read, unqualified_nodes
+from .task_atoms import (ROBOT_ATOMS, ControllerTasks, Task, task_stack, tasks_read,
+                         unqualified_nodes)
 from ..ltl import Formula, parse_formula, to_text
 from ..ltl.patterns import is_pattern, parse_pattern, pattern_formula
 from ..semantics.errors import RapidError
@@ -212,13 +213,17 @@ class AtomCompiler:
         # upper-case names of program data the atoms read; None once an atom calls one of
         # the program's own functions (which may read any data)
         self.observed_data: Optional[set] = set()
+        self.observes_robot = False           # an atom reads a robot's position (CRobT ...)
 
     def _note_signals(self, expr: ast.Expr) -> None:
         for symbol in self.symbols(expr):
-            if isinstance(symbol, ast.FunctionCall) and self.observed_data is not None:
+            if isinstance(symbol, ast.FunctionCall):
                 own = self.scope.lookup(symbol.name.key)
                 if own is not None and own.kind == ROUTINE:
                     self.observed_data = None
+                    self.observes_robot = True     # the program's function may read it
+                elif symbol.name.key in ROBOT_ATOMS:
+                    self.observes_robot = True
                 continue
             if not isinstance(symbol, Symbol):
                 continue
