@@ -165,3 +165,15 @@ def test_dead_code_beside_a_reading_stays_unreached_under_any_input(tmp_path):
     warnings = [w.message for w in api.check(api.load_program([str(path)])).warnings
                 if w.code.code == "RMC701"]
     assert warnings == ["never reached under any input"]
+
+
+def test_a_reading_called_all_over_a_backup_names_five_lines_and_counts_the_rest():
+    """Survey of public backups: MaxRobSpeed at 39 lines made three warnings of 400
+    characters each; the warning names the first five lines and counts the others."""
+    from rapidmc import ast
+    from rapidmc.findings.tried_inputs import FIXED, TriedInput, qualifier
+    inputs = [TriedInput(FIXED, "MaxRobSpeed", ast.Span("a.mod", line, 5))
+              for line in (55, 60, 80, 85, 90, 95, 109)] + \
+        [TriedInput(FIXED, "OpMode", ast.Span("a.mod", 7, 5))]
+    assert qualifier(inputs) == ("with the controller's readings fixed (MaxRobSpeed at lines "
+                                 "55, 60, 80, 85, 90 and 2 more; OpMode at line 7)")

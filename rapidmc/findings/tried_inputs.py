@@ -64,6 +64,7 @@ CLOSABLE = ("SOCKETSEND", "SOCKETRECEIVE", "SOCKETRECEIVEFROM")
 # functions reading back an output signal's value
 OUTPUT_READS = ("DOUTPUT", "GOUTPUT", "GOUTPUTDNUM", "AOUTPUT")
 PEERS_OPEN = "no peer closing its socket"      # the kind of those, when closures are not tried
+PLACES_SHOWN = 5     # lines named per reading instruction in a warning; the rest counted
 FIXED = "the controller's readings fixed"      # the kind of a fixed reading (RMC702)
 UNSET = "the outputs no loaded code sets at their first value"   # (system outputs, other tasks)
 # EGM instructions whose session may fail on a real controller (ERR_UDPUC_COMM when the
@@ -216,6 +217,8 @@ def qualifier(inputs: Sequence[TriedInput]) -> str:
     places = []
     for name in dict.fromkeys(t.instruction for t in inputs):
         lines = sorted({t.span.line for t in inputs if t.instruction == name})
-        places.append(f"{name} at line{'s' if len(lines) > 1 else ''} "
-                      + ", ".join(map(str, lines)))
+        shown = ", ".join(map(str, lines[:PLACES_SHOWN]))
+        if len(lines) > PLACES_SHOWN:       # a reading called all over a backup: a count
+            shown += f" and {len(lines) - PLACES_SHOWN} more"
+        places.append(f"{name} at line{'s' if len(lines) > 1 else ''} {shown}")
     return f"with {' and '.join(phrases)} ({'; '.join(places)})"
