@@ -218,6 +218,8 @@ class PickleCodec:
 class VectorCodec:
     """States as a packed table's vectors (module docstring)."""
 
+    lazy_states = True          # ``successor_keys`` takes a state id without its state
+
     def __init__(self, table, index: int, count: int):
         import numpy
         self.np = numpy
@@ -239,11 +241,12 @@ class VectorCodec:
     # (equal states, equal segments): the step machine gives them without building the
     # state (``step``), and a state Python stepped is written to its vectors once.
     def successor_keys(self, state_id: int, state, successors) -> list[int]:
+        """(``state`` may be None: the table rebuilds it if Python must step it.)"""
         if callable(successors):
             found = self._machine(state_id)
             if found is not None:
                 return [frame << 32 | data for frame, data in found]
-            successors = successors(state)
+            successors = successors(self.table[state_id] if state is None else state)
         vectors, intern = self._vectors, self._intern_parts
         keys = []
         for successor in successors:
