@@ -227,14 +227,15 @@ def test_partitions_find_the_error_at_its_depth(engine):
 
 
 # properties that hold, so that one process too searches the whole product
-LTL = {"two tasks": 'exclusive: G "inside <= 1"', "socket server": 'sane: G "done >= -1"'}
+LTL = {"two tasks": 'exclusive: G "inside <= 1"', "socket server": 'sane: G "done >= -1"',
+       "interrupts": 'counted: G "nParts < 3"'}
 
 
 @pytest.mark.parametrize("engine", ["native", "python"])
-@pytest.mark.parametrize("name", ["socket server", "two tasks"])
+@pytest.mark.parametrize("name", ["socket server", "two tasks", "interrupts"])
 def test_ltl_partitions_count_what_one_process_counts(name, engine):
     """The LTL workers' product search travels by the same codecs (vectors for a packed
-    model, no pickles) and stores the same product states and transitions as one process;
+    model, else node ids: no pickles) and stores the same product states and transitions as one process;
     while it runs its objects are out of the cycle collector's reach, and handed back."""
     if engine == "native" and not native.available():
         pytest.skip("the native core is not built here")
