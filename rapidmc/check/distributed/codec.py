@@ -452,6 +452,7 @@ class NodeCodec:
         self.nodes = table.nodes
         self.parts_of = table.parts_of
         self.prints = numpy.zeros(0, numpy.uint64)     # by node id: fingerprint
+        self.print_list: list = []            # the same as Python ints (``_fingerprint_new``)
         self.sent_nodes = [0] * count         # per owner: nodes handed over (ids below it)
         self.node_map: dict = {}              # per sender: its node id -> this table's (list)
         self.node_array: dict = {}            # ... the same as a numpy array
@@ -505,7 +506,7 @@ class NodeCodec:
         if total == known:
             return
         value, ids = nodes.value, nodes.ids
-        prints = self.prints.tolist()
+        prints = self.print_list
         for node_id in range(known, total):
             node = value(node_id)
             if has_children(node):
@@ -514,7 +515,7 @@ class NodeCodec:
                                       len(children)))
             else:
                 prints.append(fingerprint(node))
-        self.prints = np.array(prints, np.uint64)
+        self.prints = np.concatenate((self.prints, np.array(prints[known:], np.uint64)))
 
     def encode(self, target: int, outbox) -> bytes:
         """A batch for ``target``: the nodes numbered since the last batch to it, then the
@@ -584,9 +585,11 @@ class NodeCodec:
             else:
                 made = tuple.__new__(kind, children)
             mapping.append(node(made))
-        if kinds or sender not in self.node_array:
-            self.node_array[sender] = self.np.array(mapping, self.np.uint32)
-        return self.node_array[sender]
+        known = self.node_array.get(sender, self.np.zeros(0, self.np.uint32))
+        if len(known) < len(mapping):
+            known = self.node_array[sender] = self.np.concatenate(
+                (known, self.np.array(mapping[len(known):], self.np.uint32)))
+        return known
 
     def store_links(self, sender: int, blob: bytes) -> array:
         """``store``, then the links to the parents of the new states, in their order."""
