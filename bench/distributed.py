@@ -1,7 +1,7 @@
 """One process against a local Ray cluster of 2 workers (``--workers 2``, issue 29).
 
 Usage: python bench/distributed.py [--issue] [--counters 6,7] [--modulo 4] [--only NAME]
-                                   [--workers 2] [--ltl] [--split]
+                                   [--workers 2] [--ltl] [--split] [--rounds [--payload B]]
 
 For each model, each in a fresh process: the run-time error search of a check (breadth-first,
 the whole reachable state space, since these programs have no run-time error), once in one
@@ -32,6 +32,13 @@ workers (``owcty``), with the one process's CPU seconds against the busier worke
 
 ``--split``: without Ray, two partitions driven in one process (``partition.search_here``):
 their CPU seconds together against one process's, and the bytes they sent per state.
+
+``--rounds``: Ray's own cost of a round, without a model: two actors exchange a batch of
+``--payload`` bytes per round, (a) as the search does (the driver calls each actor with
+the other's batch, an object the driver owns, as its argument) and (b) from actor to actor
+(each actor calls the other's ``deliver``, an asyncio actor waits in ``step`` until its
+batch arrived; the driver calls ``step`` only): wall, driver and worker CPU milliseconds per
+round.
 """
 from __future__ import annotations
 
@@ -212,6 +219,81 @@ def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
             "worker_states": [f["states"] for f in figures]}
 
 
+class _Relayed:
+    """(a) a round as the search runs it: the batch comes in as the driver's argument."""
+
+    def __init__(self, payload: int):
+        self.payload = payload
+
+    def cpu(self) -> float:
+        return time.process_time()
+
+    def step(self, *batches):
+        return b"x" * self.payload, b"", len(batches)
+
+
+class _Pushed:
+    """(b) a round from actor to actor: ``step`` waits for the peer's batch, then sends
+    its own to the peer directly."""
+
+    def __init__(self, payload: int):
+        import asyncio
+        self.payload, self.inbox, self.arrived = payload, [], asyncio.Event()
+
+    def cpu(self) -> float:
+        return time.process_time()
+
+    def meet(self, peer) -> None:
+        self.peer = peer
+
+    async def deliver(self, batch: bytes) -> None:
+        self.inbox.append(batch)
+        self.arrived.set()
+
+    async def step(self, expected: int) -> int:
+        while len(self.inbox) < expected:
+            self.arrived.clear()
+            await self.arrived.wait()
+        del self.inbox[:expected]
+        self.peer.deliver.remote(b"x" * self.payload)
+        return expected
+
+
+def measure_rounds(payload: int, rounds: int = 300) -> None:
+    import ray
+    _start_ray(ray, 2)
+    for name in ("relayed by the driver", "actor to actor", "relayed by the driver",
+                 "actor to actor"):
+        pushed = name == "actor to actor"
+        actor_class = ray.remote(num_cpus=1)(_Pushed if pushed else _Relayed)
+        actors = [actor_class.remote(payload) for _ in range(2)]
+        if pushed:
+            ray.get([actor.meet.remote(actors[1 - i]) for i, actor in enumerate(actors)])
+        ray.get([actor.step.remote(0) if pushed else actor.cpu.remote() for actor in actors])
+        cpu = ray.get([actor.cpu.remote() for actor in actors])
+        driver, started = time.process_time(), time.perf_counter()
+        stepped = [actor.step.options(num_returns=3).remote() for actor in actors] \
+            if not pushed else None
+        for _ in range(rounds):
+            if pushed:
+                ray.get([actor.step.remote(1) for actor in actors])
+                continue
+            ray.get([refs[2] for refs in stepped])
+            stepped = [actor.step.options(num_returns=3).remote(stepped[1 - i][0])
+                       for i, actor in enumerate(actors)]
+        if not pushed:
+            ray.get([refs[2] for refs in stepped])
+        wall, driver = time.perf_counter() - started, time.process_time() - driver
+        workers = [after - before for before, after in
+                   zip(cpu, ray.get([actor.cpu.remote() for actor in actors]))]
+        print(f"{name:22} {payload:>8} B: wall {1e3 * wall / rounds:5.2f} ms a round, "
+              f"driver {1e3 * driver / rounds:5.2f} ms, workers "
+              f"{_each([1e3 * w / rounds for w in workers], '.2f')} ms", flush=True)
+        for actor in actors:
+            ray.kill(actor)
+    ray.shutdown()
+
+
 def fresh(name: str, mode: str, modulo: int, workers: int) -> dict:
     run = subprocess.run([sys.executable, __file__, "--measure", name, mode,
                           "--modulo", str(modulo), "--workers", str(workers)],
@@ -231,8 +313,18 @@ def main() -> None:
     parser.add_argument("--issue", action="store_true",
                         help="the issue's figures only: the whole-controller family and "
                              "counters N=10 (a few minutes on a quiet machine)")
+    parser.add_argument("--rounds", action="store_true",
+                        help="Ray's cost of a round: the driver relaying batches against "
+                             "actors sending them to each other")
+    parser.add_argument("--payload", type=int, default=20000,
+                        help="bytes of a batch for --rounds")
     parser.add_argument("--measure", nargs=2, default=None, help=argparse.SUPPRESS)
     args = parser.parse_args()
+    if args.rounds:
+        print(f"uptime at the start: {uptime()}", flush=True)
+        measure_rounds(args.payload)
+        print(f"uptime at the end: {uptime()}")
+        return
     if args.issue:
         args.counters, args.ltl, args.split, args.only = "10", False, False, None
     if args.measure is not None:

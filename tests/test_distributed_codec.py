@@ -1,12 +1,13 @@
 """How states travel between the workers of a partitioned search (``distributed/codec.py``),
 without Ray: partitions driven in this process (``partition.search_here``).
 
-Where the model has a packed table, a state travels as the table's vectors, whose ids are
-the sender's own: the owner must map them to its ids (values and contexts handed over
-incrementally) and every process must agree on a state's owner however its table numbered
-the values.  The search over either codec (packed vectors on the native engine, pickles on
-the Python engine) must count exactly what one process counts, and find the violation at
-the depth one process finds it.
+Where the model has a packed table, a state travels as the table's vectors; where it has
+none (free inputs, or the Python engine), as the node ids of its parts.  Either way the ids
+are the sender's own: the owner must map them to its ids (values and contexts, or nodes,
+handed over incrementally) and every process must agree on a state's owner however its
+table numbered them.  The search over every codec (packed vectors and node ids on the
+native engine, node ids on the Python engine) must count exactly what one process counts,
+and find the violation at the depth one process finds it.
 """
 from __future__ import annotations
 
@@ -18,7 +19,7 @@ import pytest
 
 from rapidmc import api
 from rapidmc.check import check_property, find_reachable, native
-from rapidmc.check.distributed.codec import PickleCodec, VectorCodec, codec_for
+from rapidmc.check.distributed.codec import NodeCodec, VectorCodec, codec_for
 from rapidmc.check.distributed.partition import link, search_here, unlink
 from rapidmc.check.distributed.product_partition import product_here
 from rapidmc.check.result import HOLDS, VIOLATED
@@ -34,7 +35,15 @@ MODELS = {
     "two tasks": ([CHECK / "tasks_test_and_set" / "prog.mod"], [],
                   [str(CHECK / "tasks_test_and_set" / "other.mod")]),
     "run-time error": ([CHECK / "vm_error_handlers" / "prog.mod"], [], []),
+    # free inputs raise an interrupt: no packed table
+    "interrupts": ([ROOT / "tests" / "distributed" / "interrupt_counts.mod"], [], []),
 }
+
+
+def codec_expected(name: str, engine: str) -> type:
+    """Packed vectors on the native engine where the model has a packed table, else the
+    parts' node ids."""
+    return VectorCodec if engine == "native" and name != "interrupts" else NodeCodec
 
 
 def system_of(name: str):
@@ -124,10 +133,59 @@ def test_vectors_sent_to_another_table_are_stored_as_the_same_states():
     assert sender_table.context_count() >= 2    # several contexts went across
 
 
+def test_node_codec_tables_name_the_same_owner_whatever_their_numbering():
+    """Two collapsed tables that met the nodes in opposite orders give states different
+    node ids, and still the same owner, both partitions owning some."""
+    with native.engine_used("python"):
+        system = system_of("interrupts")
+        states = breadth_first(system, 400)
+        tables = [native.state_table(system), native.state_table(type(system)(
+            system.program, system.config))]        # (two models: two node tables)
+        codecs = [NodeCodec(table, index, 2) for index, table in enumerate(tables)]
+        for state in states:
+            tables[0].intern(state, True)
+        for state in reversed(states):
+            tables[1].intern(state, True)
+        parts = [[table.parts_of(state) for state in states] for table in tables]
+        assert any(a != b for a, b in zip(*parts))                # numbered differently
+        owners = [[int(codec.owns(state, 1)) for state in states] for codec in codecs]
+    assert owners[0] == owners[1]
+    assert 0.3 < sum(owners[0]) / len(states) < 0.7
+
+
 @pytest.mark.parametrize("engine", ["native", "python"])
-@pytest.mark.parametrize("name", ["socket server", "two tasks"])
+def test_node_ids_sent_to_another_table_are_stored_as_the_same_states(engine):
+    """Batches in the sender's node ids, its new nodes handed over as they appear (also in
+    a batch without states): the receiver stores exactly the states sent, once."""
+    if engine == "native" and not native.available():
+        pytest.skip("the native core is not built here")
+    with native.engine_used(engine):
+        system = system_of("interrupts")
+        states = breadth_first(system, 300)
+        other = type(system)(system.program, system.config)
+        sender_table, receiver_table = native.state_table(system), native.state_table(other)
+        sender, receiver = NodeCodec(sender_table, 0, 2), NodeCodec(receiver_table, 1, 2)
+        for state in states[100:]:          # the receiver numbered other states first
+            receiver_table.intern(state, True)
+        for batch in (states[:150], None, states[150:], states[:150]):  # the last: all known
+            outboxes = [sender.outbox(), sender.outbox()]
+            if batch is None:       # nodes alone: those of states the receiver is sent next
+                sender.successor_keys(0, None, states[150:])
+                batch = []
+            else:
+                sender.send(outboxes, sender.successor_keys(0, None, batch), range(len(batch)))
+            for target in (0, 1):           # (each owner's share, written for the receiver)
+                ids, new, fields = receiver.store(0, sender.encode(1, outboxes[target]))
+                assert [receiver_table[i] for i in ids.tolist()] == \
+                    [batch[field] for field in fields.tolist()]
+    assert {receiver_table[i] for i in range(len(receiver_table))} == set(states)
+    assert len(receiver_table) == len(states)
+
+
+@pytest.mark.parametrize("engine", ["native", "python"])
+@pytest.mark.parametrize("name", ["socket server", "two tasks", "interrupts"])
 def test_partitions_count_what_one_process_counts(name, engine):
-    """Both codecs: the same states, transitions, deadlocks and depth as one process."""
+    """Every codec: the same states, transitions, deadlocks and depth as one process."""
     if engine == "native" and not native.available():
         pytest.skip("the native core is not built here")
     with native.engine_used(engine):
@@ -135,7 +193,7 @@ def test_partitions_count_what_one_process_counts(name, engine):
         one = find_reachable(system, system.failed, max_states=None)
         parts, levels, target = search_here(system, 2)
         codec = type(parts[0].codec)
-        assert codec is (VectorCodec if engine == "native" else PickleCodec)
+        assert codec is codec_expected(name, engine)
         assert codec_for(parts[0].table, 0, 2).__class__ is codec
     assert one.verdict == HOLDS and target is None
     assert sum(len(part.table) for part in parts) == one.stats.product_states
@@ -169,14 +227,15 @@ def test_partitions_find_the_error_at_its_depth(engine):
 
 
 # properties that hold, so that one process too searches the whole product
-LTL = {"two tasks": 'exclusive: G "inside <= 1"', "socket server": 'sane: G "done >= -1"'}
+LTL = {"two tasks": 'exclusive: G "inside <= 1"', "socket server": 'sane: G "done >= -1"',
+       "interrupts": 'counted: G "nParts < 3"'}
 
 
 @pytest.mark.parametrize("engine", ["native", "python"])
-@pytest.mark.parametrize("name", ["socket server", "two tasks"])
+@pytest.mark.parametrize("name", ["socket server", "two tasks", "interrupts"])
 def test_ltl_partitions_count_what_one_process_counts(name, engine):
     """The LTL workers' product search travels by the same codecs (vectors for a packed
-    model, no pickles) and stores the same product states and transitions as one process;
+    model, else node ids: no pickles) and stores the same product states and transitions as one process;
     while it runs its objects are out of the cycle collector's reach, and handed back."""
     if engine == "native" and not native.available():
         pytest.skip("the native core is not built here")
@@ -187,8 +246,7 @@ def test_ltl_partitions_count_what_one_process_counts(name, engine):
         frozen = []
         parts = product_here(model, prop.name, 2, on_level=lambda: frozen.append(
             gc.get_freeze_count()))
-    assert {type(part.codec) for part in parts} == \
-        {VectorCodec if engine == "native" else PickleCodec}
+    assert {type(part.codec) for part in parts} == {codec_expected(name, engine)}
     assert one.verdict == HOLDS
     assert sum(len(part.keys) for part in parts) == one.stats.product_states
     assert sum(len(part.edges) for part in parts) == one.stats.transitions

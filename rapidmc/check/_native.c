@@ -264,29 +264,27 @@ static Py_ssize_t head_id(Table *self, Py_ssize_t first, Py_ssize_t tail)
 
 /* The id of ``state`` (-1 when new and not ``add``; -2 on an error); ``*is_new`` says
  * whether it was new. */
-static Py_ssize_t table_intern(Table *self, PyObject *state, int add, int *is_new)
+/* The id of the state whose split parts (their node ids) are ``parts``, a tuple the caller
+ * keeps; -2 on an error. */
+static Py_ssize_t table_intern_parts(Table *self, PyObject *parts, int add, int *is_new)
 {
     if (self->split == NULL && table_bind(self, -1) < 0)
         return -2;
-    PyObject *parts = PyObject_CallOneArg(self->split, state);
-    if (parts == NULL)
-        return -2;
     if (!PyTuple_CheckExact(parts) || PyTuple_GET_SIZE(parts) < 2) {
         PyErr_SetString(PyExc_TypeError, "split_state must return a tuple of 2 or more parts");
-        goto failed;
+        return -2;
     }
     if (self->components0 == NULL && table_bind(self, PyTuple_GET_SIZE(parts)) < 0)
-        goto failed;
+        return -2;
     Py_ssize_t first = component_id(self, 0, PyTuple_GET_ITEM(parts, 0));
     if (first < 0)
-        goto failed;
+        return -2;
     Py_ssize_t second = component_id(self, 1, PyTuple_GET_ITEM(parts, 1));
     if (second < 0)
-        goto failed;
+        return -2;
     Py_ssize_t tail = tail_id(self, parts);
     if (tail < 0)
-        goto failed;
-    Py_DECREF(parts);
+        return -2;
     Py_ssize_t head = head_id(self, first, tail);
     if (head < 0)
         return -2;
@@ -323,9 +321,18 @@ static Py_ssize_t table_intern(Table *self, PyObject *state, int add, int *is_ne
         grow_index(self, &self->slots, &self->mask, self->count, state_key) < 0)
         return -2;
     return id;
-failed:
+}
+
+static Py_ssize_t table_intern(Table *self, PyObject *state, int add, int *is_new)
+{
+    if (self->split == NULL && table_bind(self, -1) < 0)
+        return -2;
+    PyObject *parts = PyObject_CallOneArg(self->split, state);
+    if (parts == NULL)
+        return -2;
+    Py_ssize_t id = table_intern_parts(self, parts, add, is_new);
     Py_DECREF(parts);
-    return -2;
+    return id;
 }
 
 /* The state of ``id``, rebuilt by the model's join_state (a new reference). */
@@ -384,6 +391,56 @@ static PyObject *Table_intern(Table *self, PyObject *const *args, Py_ssize_t nar
     return answer;
 }
 
+/* intern_rows(rows, width) -> (ids, new): the states given by their split parts' node
+ * ids, ``width`` 32-bit ids a state end to end in ``rows`` (a buffer), stored when new;
+ * their ids (64-bit) and whether each was new (a byte each), as bytes. */
+static PyObject *Table_intern_rows(Table *self, PyObject *args)
+{
+    Py_buffer rows;
+    Py_ssize_t width;
+    if (!PyArg_ParseTuple(args, "y*n", &rows, &width))
+        return NULL;
+    PyObject *ids = NULL, *news = NULL, *answer = NULL;
+    if (width < 2 || rows.len % (4 * width) != 0) {
+        PyErr_SetString(PyExc_ValueError, "intern_rows: rows of width 32-bit ids expected");
+        goto done;
+    }
+    Py_ssize_t count = rows.len / (4 * width);
+    ids = PyBytes_FromStringAndSize(NULL, count * (Py_ssize_t)sizeof(int64_t));
+    news = PyBytes_FromStringAndSize(NULL, count);
+    if (ids == NULL || news == NULL)
+        goto done;
+    int64_t *id_out = (int64_t *)PyBytes_AS_STRING(ids);
+    char *new_out = PyBytes_AS_STRING(news);
+    const uint32_t *row = (const uint32_t *)rows.buf;
+    for (Py_ssize_t i = 0; i < count; i++, row += width) {
+        PyObject *parts = PyTuple_New(width);
+        if (parts == NULL)
+            goto done;
+        for (Py_ssize_t j = 0; j < width; j++) {
+            PyObject *part = PyLong_FromUnsignedLong(row[j]);
+            if (part == NULL) {
+                Py_DECREF(parts);
+                goto done;
+            }
+            PyTuple_SET_ITEM(parts, j, part);
+        }
+        int is_new = 0;
+        Py_ssize_t id = table_intern_parts(self, parts, 1, &is_new);
+        Py_DECREF(parts);
+        if (id == -2)
+            goto done;
+        id_out[i] = id;
+        new_out[i] = (char)is_new;
+    }
+    answer = PyTuple_Pack(2, ids, news);
+done:
+    Py_XDECREF(ids);
+    Py_XDECREF(news);
+    PyBuffer_Release(&rows);
+    return answer;
+}
+
 static PyObject *Table_native_bytes(Table *self, PyObject *unused)
 {
     size_t bytes = self->key_capacity * sizeof(int64_t) + (self->mask + 1) * sizeof(int32_t) +
@@ -406,6 +463,9 @@ static PyMethodDef Table_methods[] = {
     {"intern", (PyCFunction)(void (*)(void))Table_intern, METH_FASTCALL | METH_KEYWORDS,
      "intern(state, add=True) -> (id, new): the id of state, stored when new and add "
      "(id -1 when new and not add)."},
+    {"intern_rows", (PyCFunction)Table_intern_rows, METH_VARARGS,
+     "intern_rows(rows, width) -> (ids, new): states given by their parts' node ids "
+     "(width uint32 a state), stored when new; int64 ids and a byte per state, as bytes."},
     {"native_bytes", (PyCFunction)Table_native_bytes, METH_NOARGS,
      "Bytes of the native arrays: keys, slots and heads."},
     {NULL}

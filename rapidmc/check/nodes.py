@@ -33,7 +33,7 @@ from typing import Callable, Hashable
 
 from pyrsistent import pvector
 
-_PVECTOR = type(pvector())
+_PVECTOR = PVECTOR = type(pvector())
 _new_tuple = tuple.__new__
 # an index entry (key -> id or id(object) -> id) in a dict: a hash, a key and a value
 # pointer, and the table's share of empty room (dicts stay a third to two thirds full)
@@ -159,6 +159,13 @@ class NodeTable:
         """Bytes of the nodes and their indexes (counted as they were added), and of the
         bounded alias cache."""
         return self._bytes + sys.getsizeof(self._aliases)
+
+
+def has_children(value) -> bool:
+    """Whether ``value`` is a container node (a tuple, a tuple subclass, a persistent
+    vector: ``NodeTable.node``'s test), not a leaf."""
+    kind = type(value)
+    return kind is tuple or kind is _PVECTOR or isinstance(value, tuple)
 
 
 def _own_bytes(made, children) -> int:

@@ -84,7 +84,9 @@ class StateTable:
     def intern(self, state: Hashable, add: bool = True) -> tuple[int, bool]:
         """The id of ``state`` and whether it was new (id -1 when new and not ``add``).
 
-        (One function on purpose: it runs twice per explored transition.)"""
+        (Whole states are looked up here, without a further call: it runs twice per
+        explored transition; collapsed ones go on in ``intern_parts``, which the workers of
+        a distributed search also call with the parts they were sent.)"""
         split = self._split
         if split is None:
             state_id = self._whole.get(state)
@@ -97,7 +99,10 @@ class StateTable:
             self._whole_bytes += value_bytes(state) + ENTRY_BYTES
             self._count += 1
             return state_id, True
-        parts = split(state)
+        return self.intern_parts(split(state), add)
+
+    def intern_parts(self, parts: tuple, add: bool = True) -> tuple[int, bool]:
+        """``intern`` of the state whose split parts have these node ids (``parts_of``)."""
         components = self._components
         if not components:
             self._start(len(parts))
@@ -140,6 +145,30 @@ class StateTable:
         if self._count * 2 > len(slots):
             self._grow()
         return state_id, True
+
+    def parts_of(self, state: Hashable) -> tuple:
+        """The node ids of the state's split parts (collapsed tables only): equal states,
+        equal ids, in this process."""
+        return self._split(state)
+
+    @property
+    def nodes(self):
+        """The node table the parts' trees are interned in (collapsed tables only)."""
+        return self._nodes
+
+    def intern_rows(self, rows: bytes, width: int) -> tuple[bytes, bytes]:
+        """``intern_parts`` of states given as ``width`` node ids each (uint32, end to
+        end): their ids (int64) and whether each was new (a byte each), as bytes (the
+        native table does this in one C call)."""
+        flat = array("I")
+        flat.frombytes(rows)
+        ids, news = array("q"), bytearray()
+        intern = self.intern_parts
+        for start in range(0, len(flat), width):
+            state_id, new = intern(tuple(flat[start:start + width]))
+            ids.append(state_id)
+            news.append(new)
+        return ids.tobytes(), bytes(news)
 
     def __getitem__(self, state_id: int) -> Hashable:
         if self._split is None:

@@ -14,8 +14,20 @@ Two codecs, one per kind of state table, with one interface (``Partition`` uses 
   The owner of a state is a hash of its vectors in which every id stands for a
   fingerprint of its value (BLAKE2b of ``canonical.canonical_bytes``), the same in every
   process: equal values, equal fingerprints; so every worker agrees on the owner.
-* ``PickleCodec``, for every other table (the Python engine, models without a packed
-  table): states travel pickled, owned by ``canonical.owner``.
+* ``NodeCodec``, for a collapsed table (``check.states``, both engines: a RAPID model
+  without a packed table, as one with free inputs or an environment reaction, and every
+  RAPID model on the Python engine): a state travels as the node ids of its split parts
+  (``parts_of``: each part a tree of nodes interned once, ``check.nodes``), 4 bytes a
+  part.  As above, the ids are the sender's: each batch carries the nodes the sender
+  numbered since its last batch to that owner, a container as its kind and its children's
+  ids, a leaf as its value (children are numbered before their parents, so the owner
+  rebuilds and interns them in order), and the owner maps the sender's ids to its own.
+  The owner of a state is a hash of its parts' fingerprints; a node's fingerprint is
+  computed once, from its children's (a leaf's: BLAKE2b of its canonical bytes), so equal
+  trees have equal fingerprints in every process.  A received batch is stored by one call
+  into the table (``intern_rows``): no state is pickled, rebuilt or split again.
+* ``PickleCodec``, for every other table (models that do not split their states):
+  states travel pickled, owned by ``canonical.owner``.
 
 Interface: ``successor_keys(id, state, successors)`` (a key per successor, in the model's
 order, from the successor states or from ``successors(state)``; equal keys: equal states,
@@ -34,6 +46,9 @@ import struct
 from array import array
 from typing import Hashable, Sequence
 
+from pyrsistent import pvector
+
+from ..nodes import PVECTOR, has_children
 from .canonical import canonical_bytes
 
 PROTOCOL = pickle.HIGHEST_PROTOCOL
@@ -52,15 +67,16 @@ def unlink(parent: int) -> tuple[int, int]:
 
 
 def codec_for(table, index: int, count: int):
-    """The codec for a worker's table: vectors where the table offers them (and numpy, which
-    Ray brings, is installed), else pickles."""
+    """The codec for a worker's table: vectors where the table offers them, node ids where
+    it collapses states into parts (both need numpy, which Ray brings), else pickles."""
+    try:
+        import numpy  # noqa: F401
+    except ImportError:
+        return PickleCodec(table, count)
     if getattr(table, "vectors_of", None) is not None:
-        try:
-            import numpy  # noqa: F401
-        except ImportError:
-            pass
-        else:
-            return VectorCodec(table, index, count)
+        return VectorCodec(table, index, count)
+    if getattr(table, "collapsed", False):
+        return NodeCodec(table, index, count)
     return PickleCodec(table, count)
 
 
@@ -132,17 +148,26 @@ class PartPrints:
         return found
 
 
-def owner_of_prints(prints: tuple, count: int) -> int:
-    """The partition of a state by its parts' fingerprints, position by position."""
-    mixed = 0
-    for position, value in enumerate(prints):
-        mixed = (mixed + value * (2 * position + 1) * _MIX1) & _MASK64
+def _finish(mixed: int) -> int:
+    """splitmix64's finaliser on a 64-bit number (every bit reaches every other)."""
     mixed ^= mixed >> 30
     mixed = mixed * _MIX1 & _MASK64
     mixed ^= mixed >> 27
     mixed = mixed * _MIX2 & _MASK64
-    mixed ^= mixed >> 31
-    return mixed % count
+    return mixed ^ mixed >> 31
+
+
+def owner_of_prints(prints: tuple, count: int) -> int:
+    """The partition of a state by its parts' fingerprints, position by position."""
+    return _finish(_positioned(prints)) % count
+
+
+def _positioned(prints) -> int:
+    """The fingerprints summed, each weighted by its position (so order counts)."""
+    mixed = 0
+    for position, value in enumerate(prints):
+        mixed = (mixed + value * (2 * position + 1) * _MIX1) & _MASK64
+    return mixed
 
 
 class PickleCodec:
@@ -193,6 +218,8 @@ class PickleCodec:
 class VectorCodec:
     """States as a packed table's vectors (module docstring)."""
 
+    lazy_states = True          # ``successor_keys`` takes a state id without its state
+
     def __init__(self, table, index: int, count: int):
         import numpy
         self.np = numpy
@@ -214,11 +241,12 @@ class VectorCodec:
     # (equal states, equal segments): the step machine gives them without building the
     # state (``step``), and a state Python stepped is written to its vectors once.
     def successor_keys(self, state_id: int, state, successors) -> list[int]:
+        """(``state`` may be None: the table rebuilds it if Python must step it.)"""
         if callable(successors):
             found = self._machine(state_id)
             if found is not None:
                 return [frame << 32 | data for frame, data in found]
-            successors = successors(state)
+            successors = successors(self.table[state_id] if state is None else state)
         vectors, intern = self._vectors, self._intern_parts
         keys = []
         for successor in successors:
@@ -283,12 +311,7 @@ class VectorCodec:
                 weights = (np.arange(self.data_length, dtype=np.uint64) * np.uint64(2) +
                            np.uint64(1)) * np.uint64(_MIX2)
                 mixed ^= (data * weights).sum(axis=1, dtype=np.uint64)
-            mixed ^= mixed >> np.uint64(30)
-            mixed *= np.uint64(_MIX1)
-            mixed ^= mixed >> np.uint64(27)
-            mixed *= np.uint64(_MIX2)
-            mixed ^= mixed >> np.uint64(31)
-        return mixed % np.uint64(self.count)
+        return _finish_all(np, mixed) % np.uint64(self.count)
 
     def _fingerprint_new(self) -> None:
         """Fingerprints of the values and contexts the table numbered since the last call."""
@@ -332,18 +355,13 @@ class VectorCodec:
         and translated a slice at a time, so a large batch is not copied whole: (their ids,
         whether each was new, their fields), arrays in the batch's order."""
         np, table = self.np, self.table
-        view = memoryview(blob)
-        header_size, frames_size, data_size, count = _SIZES.unpack_from(view)
-        at = _SIZES.size
-        values, contexts = pickle.loads(view[at:at + header_size])
-        at += header_size
-        frames = np.frombuffer(view[at:at + frames_size], np.uint32)
-        at += frames_size
-        data = np.frombuffer(view[at:at + data_size], np.uint32)
-        at += data_size
-        lengths = np.frombuffer(view[at:at + 4 * count], np.uint32)
-        at += 4 * count
-        parents = np.frombuffer(view[at:at + 8 * count], np.int64)
+        header_size, frames_size, data_size, count = _SIZES.unpack_from(blob)
+        header, frames, data, lengths, parents = _pieces(
+            blob, _SIZES.size, (header_size, frames_size, data_size, 4 * count, 8 * count))
+        values, contexts = pickle.loads(header)
+        frames, data, lengths = (np.frombuffer(piece, np.uint32)
+                                 for piece in (frames, data, lengths))
+        parents = np.frombuffer(parents, np.int64)
         foreign = sender != self.index
         if foreign:
             value_map, context_map = self._maps(sender, values, contexts)
@@ -397,3 +415,190 @@ class VectorCodec:
 
     def owns(self, state: Hashable, index: int) -> bool:
         return self.owners([self.prepare(state)])[0] == index
+
+
+def _pieces(blob: bytes, at: int, sizes) -> list:
+    """The pieces of a batch of these ``sizes``, one after another from ``at``: views of
+    ``blob``, not copies."""
+    view, pieces = memoryview(blob), []
+    for size in sizes:
+        pieces.append(view[at:at + size])
+        at += size
+    return pieces
+
+
+def _finish_all(np, mixed):
+    """``_finish`` of each number of a uint64 array (in place; the array)."""
+    with np.errstate(over="ignore"):
+        mixed ^= mixed >> np.uint64(30)
+        mixed *= np.uint64(_MIX1)
+        mixed ^= mixed >> np.uint64(27)
+        mixed *= np.uint64(_MIX2)
+        mixed ^= mixed >> np.uint64(31)
+    return mixed
+
+
+_PLAIN, _VECTOR = 0, 1     # a container node's kind in a batch: a tuple, a persistent vector
+_NODE_SIZES = struct.Struct("<QQQQ")   # a node batch's header, rows sizes; width; states
+
+
+class NodeCodec:
+    """States of a collapsed table as their parts' node ids (module docstring)."""
+
+    def __init__(self, table, index: int, count: int):
+        import numpy
+        self.np = numpy
+        self.table, self.index, self.count = table, index, count
+        self.nodes = table.nodes
+        self.parts_of = table.parts_of
+        self.prints = numpy.zeros(0, numpy.uint64)     # by node id: fingerprint
+        self.print_list: list = []            # the same as Python ints (``_fingerprint_new``)
+        self.sent_nodes = [0] * count         # per owner: nodes handed over (ids below it)
+        self.node_map: dict = {}              # per sender: its node id -> this table's (list)
+        self.node_array: dict = {}            # ... the same as a numpy array
+
+    # ---------------------------------------------------------------- sending
+    def successor_keys(self, state_id: int, state, successors) -> list[tuple]:
+        """Keys: the successors' parts' node ids (equal states, equal keys)."""
+        if callable(successors):
+            successors = successors(state)
+        parts_of = self.parts_of
+        return [parts_of(successor) for successor in successors]
+
+    def outbox(self) -> list:
+        """A batch being written: chunks of (the states' rows of node ids, their parents)."""
+        return []
+
+    def send(self, outboxes, keys: Sequence[tuple], fields: Sequence[int]) -> list[int]:
+        """The chunk's successors, each owner's share written to its outbox with their
+        ``fields``; returns each successor's owner."""
+        np = self.np
+        rows = np.array(keys, np.uint32)
+        parents = np.array(fields, np.int64)
+        owners = self._owners_of(rows)
+        for target in range(self.count):
+            mine = owners == target
+            number = int(np.count_nonzero(mine))
+            if number == len(keys):
+                outboxes[target].append((rows, parents))
+            elif number:
+                outboxes[target].append((rows[mine], parents[mine]))
+        return owners.tolist()
+
+    def _owners_of(self, rows):
+        """The owners of states given by rows of node ids: a hash of their parts'
+        fingerprints, position by position."""
+        np = self.np
+        self._fingerprint_new()
+        width = rows.shape[1]
+        with np.errstate(over="ignore"):
+            weights = (np.arange(width, dtype=np.uint64) * np.uint64(2) + np.uint64(1)) * \
+                np.uint64(_MIX1)
+            mixed = (self.prints[rows] * weights).sum(axis=1, dtype=np.uint64)
+        return _finish_all(np, mixed) % np.uint64(self.count)
+
+    def _fingerprint_new(self) -> None:
+        """The fingerprints of the nodes numbered since the last call: a leaf's, of its
+        canonical bytes; a container's, of its children's by position (children come
+        first), so equal trees have equal fingerprints whatever a process numbered them."""
+        nodes, np = self.nodes, self.np
+        known, total = len(self.prints), len(nodes)
+        if total == known:
+            return
+        value, ids = nodes.value, nodes.ids
+        prints = self.print_list
+        for node_id in range(known, total):
+            node = value(node_id)
+            if has_children(node):
+                children = ids(node)
+                prints.append(_finish(_positioned([prints[child] for child in children]) ^
+                                      len(children)))
+            else:
+                prints.append(fingerprint(node))
+        self.prints = np.concatenate((self.prints, np.array(prints[known:], np.uint64)))
+
+    def encode(self, target: int, outbox) -> bytes:
+        """A batch for ``target``: the nodes numbered since the last batch to it, then the
+        states' rows of node ids and their parents."""
+        kinds, payloads = [], []
+        if target != self.index:
+            total = len(self.nodes)
+            kinds, payloads = self._export(self.sent_nodes[target], total)
+            self.sent_nodes[target] = total
+        header = pickle.dumps((kinds, payloads), protocol=PROTOCOL)
+        width = outbox[0][0].shape[1] if outbox else 0
+        rows = b"".join(chunk[0].tobytes() for chunk in outbox)
+        parents = b"".join(chunk[1].tobytes() for chunk in outbox)
+        return b"".join((_NODE_SIZES.pack(len(header), len(rows), width, len(parents) >> 3),
+                         header, rows, parents))
+
+    def _export(self, first: int, last: int) -> tuple[list, list]:
+        """Nodes ``first`` .. ``last`` - 1: each one's kind (None for a leaf) and its
+        children's ids (a leaf: its value)."""
+        value, ids = self.nodes.value, self.nodes.ids
+        kinds, payloads = [], []
+        for node_id in range(first, last):
+            node = value(node_id)
+            if has_children(node):
+                kind = type(node)
+                kinds.append(_PLAIN if kind is tuple else _VECTOR if kind is PVECTOR else kind)
+                payloads.append(ids(node))
+            else:
+                kinds.append(None)
+                payloads.append(node)
+        return kinds, payloads
+
+    # -------------------------------------------------------------- receiving
+    def store(self, sender: int, blob: bytes) -> tuple:
+        """The batch's states stored (``intern_rows``): (their ids, whether each was new,
+        their fields), arrays in the batch's order."""
+        np = self.np
+        header_size, rows_size, width, count = _NODE_SIZES.unpack_from(blob)
+        header, rows, parents = _pieces(blob, _NODE_SIZES.size,
+                                        (header_size, rows_size, 8 * count))
+        kinds, payloads = pickle.loads(header)
+        rows = np.frombuffer(rows, np.uint32)
+        parents = np.frombuffer(parents, np.int64)
+        if sender != self.index:          # its ids -> this table's (its nodes, even alone)
+            rows = self._import(sender, kinds, payloads)[rows]
+        if not count:
+            return np.zeros(0, np.int64), np.zeros(0, np.bool_), parents
+        ids, news = self.table.intern_rows(rows.tobytes(), width)
+        return np.frombuffer(ids, np.int64), np.frombuffer(news, np.bool_), parents
+
+    def _import(self, sender: int, kinds: list, payloads: list):
+        """The array from ``sender``'s node ids to this table's, extended by the nodes it
+        handed over with this batch (each rebuilt from this table's canonical children, and
+        interned)."""
+        nodes = self.nodes
+        node, values = nodes.node, nodes.values
+        mapping = self.node_map.setdefault(sender, [])
+        for kind, payload in zip(kinds, payloads):
+            if kind is None:
+                mapping.append(node(payload))
+                continue
+            children = values([mapping[child] for child in payload])
+            if kind is _VECTOR:
+                made = pvector(children)
+            elif kind is _PLAIN:
+                made = children
+            else:
+                made = tuple.__new__(kind, children)
+            mapping.append(node(made))
+        known = self.node_array.get(sender, self.np.zeros(0, self.np.uint32))
+        if len(known) < len(mapping):
+            known = self.node_array[sender] = self.np.concatenate(
+                (known, self.np.array(mapping[len(known):], self.np.uint32)))
+        return known
+
+    def store_links(self, sender: int, blob: bytes) -> array:
+        """``store``, then the links to the parents of the new states, in their order."""
+        _, new, fields = self.store(sender, blob)
+        links = array("q")
+        links.frombytes((fields[new] | self.np.int64(sender << ID_BITS)).tobytes())
+        return links
+
+    def owns(self, state: Hashable, index: int) -> bool:
+        return int(self._owners_of(self.np.array([self.parts_of(state)], self.np.uint32))[0]) \
+            == index
+

@@ -193,6 +193,12 @@ class Partition:
         watch = self.watch
         keys_of = codec.successor_keys
         predicate = self.predicate
+        # a packed table answers the run-time error predicate from a state's context, and
+        # its step machine steps most states from their ids: a state is rebuilt as a
+        # Python object only where something needs it
+        failed_at = getattr(table, "failed_at", None) \
+            if predicate == getattr(self.system, "failed", None) else None
+        lazy = failed_at is not None and watch is None and getattr(codec, "lazy_states", False)
         outboxes = [codec.outbox() for _ in range(count)]
         send = codec.send
         # a successor reached again in this level is sent once (its first parent, as its
@@ -214,8 +220,8 @@ class Partition:
             pending_parents.clear()
 
         for state_id in range(self.expanded, end):
-            state = table[state_id]
-            if predicate(state):
+            state = None if lazy else table[state_id]
+            if failed_at(state_id) if lazy else predicate(state):
                 self.expanded = self.level_end
                 return [*self._nothing(), (state_id, self.transitions, self.deadlocks, -1,
                                            self.watched)]

@@ -393,6 +393,11 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         spans = [routines[found[i]].code[found[i + 1]].span for i in range(0, len(found), 2)]
         return self.observer.note_spans([span for span in spans if span is not None])
 
+    def failed_at(self, state_id: int) -> bool:
+        """``RapidSystem.failed`` of a stored state, from its context (the state is not
+        rebuilt)."""
+        return bool(self._context_flags[self.key(state_id)[2]] & HAS_FAILED)
+
     def predicate_holds(self, state_id: int) -> bool:
         if self.tasks > 1 and self.predicate == getattr(self.system, "stuck", None):
             stuck = self._stuck(state_id)
