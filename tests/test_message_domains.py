@@ -363,16 +363,78 @@ def test_a_handler_an_egm_session_failure_reaches_names_the_egm_instructions(tmp
 
 
 def test_code_waiting_for_another_tasks_write_names_the_persistent_data(tmp_path):
-    """A socket task checked alone forwards a command only once the motion task has taken
-    the last one (``WHILE SocketStr <> ""``; the motion task writes ``SocketStr := ""``).
-    This task never empties it, so the forwarding code is unreached, but another task or a
-    PC may: the warning names the persistent data instead of "under any input"."""
+    """A socket task checked alone acts on ``SocketStr`` only when it holds a command
+    (``IF SocketStr = "go"``, no wait) and empties it after: it never writes a command
+    itself, another task or a PC may.  The shared data probe lets waits and polls see such writes, not this branch, so
+    the code stays unreached and the warning names the persistent data instead of "under
+    any input"."""
     path = tmp_path / "socket.mod"
-    path.write_text("MODULE Socket\n    PERS string SocketStr := \"start\";\n"
+    path.write_text("MODULE Socket\n    PERS string SocketStr := \"\";\n"
                     "    VAR num sent := 0;\n    PROC main()\n"
-                    "        WHILE SocketStr <> \"\" DO\n            WaitTime 1;\n"
-                    "        ENDWHILE\n        SocketStr := \"next\";\n        sent := 1;\n"
-                    "    ENDPROC\nENDMODULE\n")
+                    "        IF SocketStr = \"go\" THEN\n            sent := 1;\n"
+                    "        ENDIF\n        SocketStr := \"\";\n    ENDPROC\nENDMODULE\n")
     assert coverage(api.check(api.load_program([str(path)]))) == [
-        "lines 8-9 of main are never reached with no other task writing the persistent "
-        "data (SocketStr at line 5)"]
+        "never reached with no other task writing the persistent data (SocketStr at line 5)"]
+
+
+MAILBOX = """MODULE Mailbox
+    PERS string command := "";
+    PERS string reply := "";
+    VAR num picked := 0;
+    VAR num placed := 0;
+    PROC main()
+        WHILE TRUE DO
+            WHILE command <> "" DO
+                IF command = "pick" THEN
+                    picked := picked + 1;
+                    reply := "ok";
+                    command := "";
+                    WaitUntil reply = "";
+                    picked := picked + 10;
+                ELSEIF command = "place" THEN
+                    placed := placed + 1;
+                    command := "";
+                ELSE
+                    command := "";
+                ENDIF
+            ENDWHILE
+            WaitTime 0.1;
+        ENDWHILE
+        placed := -1;
+    ENDPROC
+ENDMODULE
+"""
+
+
+def test_a_mailbox_another_task_fills_is_reached_by_the_shared_data_probe(tmp_path):
+    """One half of a two-task mailbox checked alone: the task polls ``command``, which
+    only the other task fills, and waits for ``reply = ""``, which only the other task
+    clears.  The shared data probe lets each poll and wait see what another task may
+    write (the strings compared, and one other), so every command's branch and the code
+    after the wait for the reply run; code after the endless loop stays unreached.  Its
+    warning still names the data: the probe chooses at waits and polls only, so it does
+    not show that no other read could lead there.  The verdicts keep this task's own
+    writes (the probe only shows lines)."""
+    path = tmp_path / "mailbox.mod"
+    path.write_text(MAILBOX)
+    report = api.check(api.load_program([str(path)]))
+    assert report.verdicts == {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS"}
+    for code in ("picked := picked + 1;", "picked := picked + 10;", "placed := placed + 1;",
+                 "        ELSE"):
+        number = next(n for n, line in enumerate(MAILBOX.splitlines(), 1) if code in line)
+        assert (str(path), number) in report.executed, code
+    assert coverage(report) == ["never reached with no other task writing the persistent "
+                                "data (command at lines 8, 9, 15; reply at line 13)"]
+
+
+def test_without_the_shared_data_probe_the_mailbox_code_is_unreached(tmp_path):
+    """The same program built without ``load_program`` (no files to load again): the
+    probe cannot run, and the warning names the data the code waits for."""
+    path = tmp_path / "mailbox.mod"
+    path.write_text(MAILBOX)
+    program = api.load_program([str(path)])
+    program.load_arguments = None
+    assert coverage(api.check(program)) == [
+        "lines 9-19 of main are never reached with no other task writing the persistent "
+        "data (command at line 8)", "never reached with no other task writing the persistent "
+        "data (command at line 8)"]

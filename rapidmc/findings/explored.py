@@ -19,7 +19,7 @@ from ..check import HOLDS, VIOLATED, find_reachable
 from ..check.result import SearchResult
 from .vacuity import TriggerWatch, to_text
 from .coverage import StatementWatch, coverage_warnings
-from .tried_inputs import PEERS_OPEN, TriedInput, called_routines, probed, qualifier, reached
+from .tried_inputs import PEERS_OPEN, UNWRITTEN, TriedInput, called_routines, probed, qualifier, reached
 from ..diagnostics import Diagnostic
 from ..ltl import Formula
 from ..model.properties import AtomCompiler
@@ -116,6 +116,12 @@ class ExploredFacts:
         """Whether some unreached-code warning would rest on a reading the readings probe
         frees (``tried_inputs.probed``: OpMode, an output no loaded code sets, ...)."""
         return any(probed(t) for t in reached(self.sampled, self.statements.executed))
+
+    def waits_for_other_tasks(self) -> bool:
+        """Whether some unreached-code warning would rest on no other task writing shared
+        PERS data that a condition read (``tried_inputs.UNWRITTEN``)."""
+        return any(t.kind == UNWRITTEN for t in reached(self.sampled, self.statements.executed)) \
+            and bool(self.warnings())
 
     def inputs_tried(self) -> str:
         """``under any input``, or which sampled inputs the search's findings rest on
