@@ -19,7 +19,8 @@ from ..check import HOLDS, VIOLATED, find_reachable
 from ..check.result import SearchResult
 from .vacuity import TriggerWatch, to_text
 from .coverage import StatementWatch, coverage_warnings
-from .tried_inputs import PEERS_OPEN, UNWRITTEN, TriedInput, called_routines, probed, qualifier, reached
+from .tried_inputs import (PEERS_OPEN, UNWRITTEN, TriedInput, called_routines, probed, qualifier,
+                           reached, varied)
 from ..diagnostics import Diagnostic
 from ..ltl import Formula
 from ..model.properties import AtomCompiler
@@ -114,8 +115,8 @@ class ExploredFacts:
 
     def waits_for_readings(self) -> bool:
         """Whether some unreached-code warning would rest on a reading the readings probe
-        frees (``tried_inputs.probed``: OpMode, an output no loaded code sets, ...)."""
-        return any(probed(t) for t in reached(self.sampled, self.statements.executed))
+        varies (``tried_inputs.varied``: OpMode, an output no loaded code sets, ...)."""
+        return any(varied(t) for t in reached(self.sampled, self.statements.executed))
 
     def waits_for_other_tasks(self) -> bool:
         """Whether some unreached-code warning would rest on no other task writing shared

@@ -44,7 +44,7 @@ from .. import ast
 from ..semantics.program import ENVIRONMENT_NAMESPACE, PROGRAM_NAMESPACE, Program
 from ..load.call_graph import called_routines  # noqa: F401  (coverage asks it here)
 from ..semantics.scope import GLOBAL_DATA
-from ..semantics.library.probed_readings import DOMAINS as PROBED_READINGS
+from ..semantics.library.probed_readings import DOMAINS as PROBED_READINGS, FAILING
 from .fixed_readings import reading_calls
 
 # instruction or function (canonical name) -> what a check offers it only some of
@@ -198,6 +198,12 @@ def probed(read: TriedInput) -> bool:
     name = read.instruction.upper()
     return (read.kind == FIXED and name in PROBED_READINGS) or \
         (read.kind == UNSET and name == "DOUTPUT")
+
+
+def varied(read: TriedInput) -> bool:
+    """Whether the readings probe varies ``read``: those it frees (``probed``) and those
+    it lets fail (``probed_readings.FAILING``: CalcJointT out of reach)."""
+    return probed(read) or (read.kind == FIXED and read.instruction.upper() in FAILING)
 
 
 def reached(inputs: Sequence[TriedInput], executed: set) -> tuple:
