@@ -266,15 +266,20 @@ def _probed_lines(model: Model) -> set:
     return lines
 
 
-def _closure_probe(model: Model) -> tuple:
+def _closure_probe(model: Model, readings_free: bool = False) -> tuple:
     """The lines a search run with peers closing their sockets (``--socket-closures``:
     ERR_SOCK_CLOSED at any SocketReceive or SocketSend), the derived messages as in the
     check, and whether that search was complete.  Closures stay out of the verdicts (the
     issue's "closures stay as now"); a closing peer is a real input, so a line this search
     runs is reachable, complete or not, and when it is complete no unreached line waits for
-    a closure any more.  Bounded by ``PROBE_STATES`` as the message probes are."""
+    a closure any more.  Bounded by ``PROBE_STATES`` as the message probes are.
+    ``readings_free``: the readings free as well (``_readings_probe``), for a handler only
+    a closure reaches behind a wait for a reading (the Hanoi socket task connects only
+    once an output no loaded code sets is 1)."""
     options = replace(model.options, socket_closures=True)
-    config, _ = _check_config(model.program, model.atoms, options, model.messages)
+    config = _free_readings_config(model, model.program, model.atoms, options) \
+        if readings_free else _check_config(model.program, model.atoms, options,
+                                            model.messages)[0]
     watch = ExploredFacts(model.program, (), model.atoms)
     search = find_reachable(RapidSystem(model.program, config, reduction.NO_PLAN), _never,
                             observe=watch, max_states=PROBE_STATES)
@@ -295,10 +300,12 @@ def _readings_probe(model: Model) -> tuple:
     return watch.statements.executed, search.verdict == HOLDS
 
 
-def _free_readings_config(model: Model, program: Program, atoms: AtomCompiler) -> CheckConfig:
-    """The check's environment for ``program`` with the controller's readings and the
-    outputs no loaded code sets free (``_readings_probe``)."""
-    config, _ = _check_config(program, atoms, model.options, model.messages)
+def _free_readings_config(model: Model, program: Program, atoms: AtomCompiler,
+                          options: Optional[CheckOptions] = None) -> CheckConfig:
+    """The check's environment for ``program`` (with ``options``, else the model's) with
+    the controller's readings and the outputs no loaded code sets free
+    (``_readings_probe``)."""
+    config, _ = _check_config(program, atoms, options or model.options, model.messages)
     config.free_readings = True
     config.lazy_inputs = {**config.lazy_inputs, **{
         signal.index: (signal.name, (0.0, 1.0)) for signal in unset_digital_outputs(program)}}
@@ -441,6 +448,10 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
             lines, complete = _readings_probe(model)
             searches.facts.statements.executed |= lines
             searches.facts.readings_tried = complete
+            if searches.facts.waits_for_closures():
+                lines, complete = _closure_probe(model, readings_free=True)
+                searches.facts.statements.executed |= lines
+                searches.facts.closures_tried |= complete
         if searches.facts.complete and searches.facts.waits_for_other_tasks():
             searches.facts.statements.executed |= _shared_data_probe(model)
     resting_on = assumptions(model.program)

@@ -438,3 +438,22 @@ def test_without_the_shared_data_probe_the_mailbox_code_is_unreached(tmp_path):
         "lines 9-19 of main are never reached with no other task writing the persistent "
         "data (command at line 8)", "never reached with no other task writing the persistent "
         "data (command at line 8)"]
+
+
+def test_a_handler_a_closure_reaches_behind_a_wait_for_an_output_is_reached(tmp_path):
+    """The Hanoi socket task connects only once an output no loaded code sets is 1, and
+    handles a closed connection in ``main``'s ERROR handler.  The closure probe alone waits
+    forever at the output, the readings probe alone never closes: a closure probe with the
+    readings free reaches the handler, and nothing is left unreached."""
+    path = tmp_path / "client.mod"
+    path.write_text(
+        "MODULE Client\n    VAR socketdev link;\n    VAR string text := \"\";\n"
+        "    VAR num lost := 0;\n    PROC main()\n"
+        "        WaitUntil DOutput(doRobotReady) = 1;\n        SocketCreate link;\n"
+        "        SocketConnect link, \"10.0.0.2\", 5000;\n        WHILE TRUE DO\n"
+        "            SocketReceive link \\Str:=text;\n        ENDWHILE\n    ERROR\n"
+        "        IF ERRNO = ERR_SOCK_CLOSED THEN\n            lost := lost + 1;\n"
+        "            SocketClose link;\n        ENDIF\n    ENDPROC\nENDMODULE\n")
+    report = api.check(api.load_program([str(path)]))
+    assert (str(path), 14) in report.executed
+    assert coverage(report) == []
