@@ -272,7 +272,9 @@ def _closure_probe(model: Model, readings_free: bool = False) -> tuple:
     check, and whether that search was complete.  Closures stay out of the verdicts (the
     issue's "closures stay as now"); a closing peer is a real input, so a line this search
     runs is reachable, complete or not, and when it is complete no unreached line waits for
-    a closure any more.  Bounded by ``PROBE_STATES`` as the message probes are.
+    a closure any more.  A server's SocketBind may also find its port taken
+    (ERR_SOCK_ADDR_INUSE: the previous run still holds it), for the handlers that
+    catch it or pass it on.  Bounded by ``PROBE_STATES`` as the message probes are.
     ``readings_free``: the readings free as well (``_readings_probe``), for a handler only
     a closure reaches behind a wait for a reading (the Hanoi socket task connects only
     once an output no loaded code sets is 1)."""
@@ -280,6 +282,7 @@ def _closure_probe(model: Model, readings_free: bool = False) -> tuple:
     config = _free_readings_config(model, model.program, model.atoms, options) \
         if readings_free else _check_config(model.program, model.atoms, options,
                                             model.messages)[0]
+    config.socket_setup_failures = True      # a server's port may be taken as well
     watch = ExploredFacts(model.program, (), model.atoms)
     search = find_reachable(RapidSystem(model.program, config, reduction.NO_PLAN), _never,
                             observe=watch, max_states=PROBE_STATES)

@@ -273,14 +273,16 @@ def test_a_handler_a_closing_peer_reaches_is_shown_reached_by_the_closure_probe(
 
 def test_a_closure_probe_the_bound_stops_keeps_the_wording(tmp_path, monkeypatch):
     """A closure probe stopped by its bound shows nothing about the lines it did not run:
-    their warnings still say they rest on no peer closing its socket."""
+    their warnings still say they rest on no peer closing its socket and on the server's
+    port being free (the probe also lets SocketBind fail)."""
     monkeypatch.setattr(api, "PROBE_STATES", 3)
     path = tmp_path / "server.mod"
     path.write_text(SERVER.format(body="            Exchange;", extra=EXCHANGE))
     messages = coverage(api.check(api.load_program([str(path)])))
     assert messages == [
-        "lines 26-27 of Exchange are never reached with no peer closing its socket "
-        "(SocketReceive at lines 14, 24; SocketSend at line 23)",
+        "lines 26-27 of Exchange are never reached with no peer closing its socket and the "
+        "server's port free (SocketBind at line 10; SocketReceive at lines 14, 24; SocketSend "
+        "at line 23)",
         "never reached under any input (routine Report never runs)"]
 
 
@@ -456,4 +458,48 @@ def test_a_handler_a_closure_reaches_behind_a_wait_for_an_output_is_reached(tmp_
         "            SocketClose link;\n        ENDIF\n    ENDPROC\nENDMODULE\n")
     report = api.check(api.load_program([str(path)]))
     assert (str(path), 14) in report.executed
+    assert coverage(report) == []
+
+
+BIND = """MODULE Server
+    VAR socketdev listener;
+    VAR socketdev client;
+    VAR string text := "";
+    VAR num failures := 0;
+    PROC main()
+        OpenServer;
+        SocketAccept listener, client \\Time:=WAIT_MAX;
+        WHILE TRUE DO
+            SocketReceive client \\Str:=text \\Time:=WAIT_MAX;
+            SocketSend client \\Str:="ok";
+        ENDWHILE
+    ERROR (ERR_SOCK_CLOSED)
+        SocketClose client;
+        RETRY;
+    ENDPROC
+    PROC OpenServer()
+        SocketCreate listener;
+        SocketBind listener, "127.0.0.1", 1100;
+        SocketListen listener;
+    ERROR
+        failures := failures + 1;
+        RAISE;
+    ENDPROC
+ENDMODULE
+"""
+
+
+def test_a_handler_for_a_port_in_use_is_reached_by_the_closure_probe(tmp_path):
+    """A ROS-style server opens its socket in a routine whose handler passes errors on
+    (``ERROR ... RAISE``).  A closing peer never reaches that handler: ERR_SOCK_CLOSED
+    comes after the socket is open.  A port the previous run still holds does
+    (ERR_SOCK_ADDR_INUSE at SocketBind), so the closure probe lets SocketBind fail too:
+    the handler counts as reached instead of "never reached under any input".  The
+    verdicts keep a free port."""
+    path = tmp_path / "bind.mod"
+    path.write_text(BIND)
+    report = api.check(api.load_program([str(path)]))
+    assert report.verdicts == {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS"}
+    number = next(n for n, line in enumerate(BIND.splitlines(), 1) if "failures := failures" in line)
+    assert (str(path), number) in report.executed
     assert coverage(report) == []

@@ -19,7 +19,7 @@ from ..check import HOLDS, VIOLATED, find_reachable
 from ..check.result import SearchResult
 from .vacuity import TriggerWatch, to_text
 from .coverage import StatementWatch, coverage_warnings
-from .tried_inputs import (PEERS_OPEN, UNWRITTEN, TriedInput, called_routines, probed, qualifier,
+from .tried_inputs import (PEERS_OPEN, PORT_FREE, UNWRITTEN, TriedInput, called_routines, probed, qualifier,
                            reached, varied)
 from ..diagnostics import Diagnostic
 from ..ltl import Formula
@@ -102,7 +102,8 @@ class ExploredFacts:
         """Coverage warnings (RMC701); none unless the search was complete."""
         if not self.complete:
             return []
-        sampled = [t for t in self.sampled if not (self.closures_tried and t.kind == PEERS_OPEN)
+        sampled = [t for t in self.sampled
+                   if not (self.closures_tried and t.kind in (PEERS_OPEN, PORT_FREE))
                    and not (self.readings_tried and probed(t))]
         inputs = qualifier(reached(sampled, self.statements.executed))
         called = called_routines(self.program)
@@ -110,8 +111,10 @@ class ExploredFacts:
 
     def waits_for_closures(self) -> bool:
         """Whether some unreached-code warning would rest on no peer closing its socket (a
-        SocketSend or SocketReceive that could raise ERR_SOCK_CLOSED into a handler ran)."""
-        return any(t.kind == PEERS_OPEN for t in reached(self.sampled, self.statements.executed))
+        SocketSend or SocketReceive that could raise ERR_SOCK_CLOSED into a handler ran) or
+        on the server's port being free (a SocketBind ran)."""
+        return any(t.kind in (PEERS_OPEN, PORT_FREE)
+                   for t in reached(self.sampled, self.statements.executed))
 
     def waits_for_readings(self) -> bool:
         """Whether some unreached-code warning would rest on a reading the readings probe
