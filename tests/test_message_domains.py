@@ -10,10 +10,12 @@ when an input was offered a sample of its values only.
 from __future__ import annotations
 
 from pathlib import Path
+from types import SimpleNamespace
 
 import pytest
 
 from rapidmc import api
+from rapidmc.check.result import SearchStats
 from rapidmc.load.message_domains import message_domains, well_formed
 from rapidmc.semantics.types import NUM, ArrayType
 
@@ -178,7 +180,7 @@ def test_probe_messages_reach_the_branches_coverage_would_report(monkeypatch):
     them it is reached (tests/check/socket_field_count has no ``unreached`` file)."""
     program = api.load_program([str(CHECK / "socket_field_count" / "prog.mod")])
     assert coverage(api.check(program)) == []
-    monkeypatch.setattr(api, "_probed_lines", lambda model: set())
+    monkeypatch.setattr(api, "_probed_lines", lambda model, bound: set())
     assert coverage(api.check(program)) == [
         "never reached with the socket messages tried (SocketReceive at line 53)"]
 
@@ -338,6 +340,7 @@ def test_an_output_no_loaded_code_sets_is_an_input(tmp_path, monkeypatch, setter
     leaves the warning naming the read).  Set by the program itself (in a routine nothing
     calls), the output is no input: the code after the wait is dead."""
     monkeypatch.setattr(api, "PROBE_STATES", probe_states)
+    monkeypatch.setattr(api, "PROBE_GROWTH", 1)          # (the bound is PROBE_STATES)
     path = tmp_path / "cell.mod"
     path.write_text("MODULE Cell\n    VAR num state := 0;\n    PROC main()\n"
                     "        WaitUntil DOutput(doCycleOn) = 1;\n        state := 1;\n"
@@ -503,3 +506,16 @@ def test_a_handler_for_a_port_in_use_is_reached_by_the_closure_probe(tmp_path):
     number = next(n for n, line in enumerate(BIND.splitlines(), 1) if "failures := failures" in line)
     assert (str(path), number) in report.executed
     assert coverage(report) == []
+
+
+def test_a_probe_may_visit_twice_the_states_of_the_check_up_to_a_limit(monkeypatch):
+    """A probe adds choices to the program the check searched: its bound is twice the
+    check's own states when that exceeds PROBE_STATES, at most PROBE_GROWTH times it."""
+    def results(states):
+        stats = SearchStats(model_states=states)
+        return [SimpleNamespace(result=SimpleNamespace(stats=stats))]
+    monkeypatch.setattr(api, "PROBE_STATES", 100)
+    monkeypatch.setattr(api, "PROBE_GROWTH", 2.5)
+    assert api._probe_bound(results(10)) == 100
+    assert api._probe_bound(results(70)) == 140
+    assert api._probe_bound(results(1000)) == 250
