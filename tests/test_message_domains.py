@@ -519,3 +519,17 @@ def test_a_probe_may_visit_twice_the_states_of_the_check_up_to_a_limit(monkeypat
     assert api._probe_bound(results(10)) == 100
     assert api._probe_bound(results(70)) == 140
     assert api._probe_bound(results(1000)) == 250
+
+
+def test_with_socket_closures_a_port_in_use_is_still_tried(tmp_path):
+    """``--socket-closures`` closes peers in the verdicts' own search but never takes a
+    port: the handler a taken port reaches is still shown reached by the closure probe,
+    not "never reached under any input"."""
+    path = tmp_path / "bind.mod"
+    path.write_text(BIND)
+    report = api.check(api.load_program([str(path)]), [],
+                       api.CheckOptions(socket_closures=True))
+    number = next(n for n, line in enumerate(BIND.splitlines(), 1)
+                  if "failures := failures" in line)
+    assert (str(path), number) in report.executed
+    assert coverage(report) == []

@@ -115,7 +115,7 @@ def sampled_inputs(program: Program, exact: Iterable[tuple] = (),
                 found.append(TriedInput(SAMPLED[node.name.key], node.name.text, node.span))
             if handled and node.name.key in CLOSABLE:
                 found.append(TriedInput(PEERS_OPEN, node.name.text, node.span))
-            if handled and node.name.key in BINDS:
+            if has_handler and node.name.key in BINDS:     # (--socket-closures binds)
                 found.append(TriedInput(PORT_FREE, node.name.text, node.span))
             if has_handler and node.name.key in EGM_SESSIONS:
                 found.append(TriedInput(EGM_UP, node.name.text, node.span))
