@@ -77,7 +77,7 @@ __all__ = ["CheckOptions", "CheckReport", "Model", "check", "check_model", "flow
 BUILTIN_RUNTIME = "no_runtime_error"
 BUILTIN_DEADLOCK = "no_deadlock"
 # a coverage probe's bound grows with the check's own search up to this many PROBE_STATES
-PROBE_GROWTH = 2.5
+PROBE_GROWTH = 3.5
 # who else writes shared PERS data in the shared data probe (a one-task program's coverage)
 ANOTHER_TASK = "another task"
 

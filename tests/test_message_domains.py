@@ -533,3 +533,12 @@ def test_with_socket_closures_a_port_in_use_is_still_tried(tmp_path):
                   if "failures := failures" in line)
     assert (str(path), number) in report.executed
     assert coverage(report) == []
+
+
+def test_a_list_between_brackets_is_also_tried_with_its_last_part_malformed():
+    """A routine that cuts a list between brackets and parses each part fails at the part
+    that does not parse: "[1,1]" fails at its missing part, "[1,1,?]" at the last one (the
+    handler of MARC-HT25's fourth orientation value)."""
+    program = api.load_program([str(CHECK / "socket_bracket_list" / "prog.mod")])
+    [domain] = message_domains(program)
+    assert domain.messages[:3] == ("[1,1,1]", "[1,1]", "[1,1,?]")
