@@ -48,7 +48,7 @@ from .diagnostics.quoting import one_line, quoted
 from .findings.assumptions import assumptions, for_verdict
 from .findings.explored import ExploredFacts
 from .findings.fixed_readings import fixed_readings
-from .findings.tried_inputs import sampled_inputs, unset_digital_outputs
+from .findings.tried_inputs import sampled_inputs, unset_digital_outputs, unwritten_pers_reads
 from .load.backup import (link_options, load_tasks, resolve_program_files,
                           with_encrypted_interface)
 from .load.message_domains import (ANSWERS, FILE, PROBE_STATES, SOCKET, message_domains,
@@ -76,6 +76,10 @@ __all__ = ["CheckOptions", "CheckReport", "Model", "check", "check_model", "flow
 
 BUILTIN_RUNTIME = "no_runtime_error"
 BUILTIN_DEADLOCK = "no_deadlock"
+# a coverage probe's bound grows with the check's own search up to this many PROBE_STATES
+PROBE_GROWTH = 3.5
+# who else writes shared PERS data in the shared data probe (a one-task program's coverage)
+ANOTHER_TASK = "another task"
 
 
 @dataclass(frozen=True)
@@ -111,7 +115,8 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
                  task: Optional[str] = None, all_tasks: bool = False,
                  add_tasks: Sequence[str] = (), eio: Optional[str] = None,
                  flows: bool = False, outside_data: bool = True,
-                 properties: Sequence[Property] = ()) -> Program:
+                 properties: Sequence[Property] = (),
+                 other_task_writes: Sequence[str] = ()) -> Program:
     """Parse and link a program: module files or a controller backup folder, as ``check`` takes.
 
     ``env``: environment model modules; ``task``/``all_tasks``: which tasks of a
@@ -120,7 +125,9 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
     marks in the state, for ``flow_property`` (findings.lint.marks); ``outside_data``:
     each read of PERS data no loaded code writes takes any value of its domain
     (load.outside_data), else it keeps its initial value (``--fixed-outside-data``), as
-    it does when one of ``properties`` may name it (atoms read stored values).
+    it does when one of ``properties`` may name it (atoms read stored values);
+    ``other_task_writes``: upper-case names of shared PERS data that a task not loaded
+    may write too (the shared data probe, ``_shared_data_probe``).
     """
     files_given = list(files)
     files = resolve_program_files(SimpleNamespace(files=list(files), task=task, eio=eio,
@@ -129,6 +136,9 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
     environment = _parse_files(list(env)) if env else None
     parsed = with_encrypted_interface(_parse_files(files.modules), files, None)
     options = link_options(files)
+    if other_task_writes:
+        options["outside_writers"] = {**{key: ANOTHER_TASK for key in other_task_writes},
+                                      **options["outside_writers"]}
     if outside_data:
         options["outside_data"] = find_outside_data
         options["outside_outputs"] = find_outside_outputs
@@ -240,11 +250,20 @@ def _check_config(program: Program, atoms: AtomCompiler, options: CheckOptions,
     return config, assumed
 
 
-def _probed_lines(model: Model) -> set:
+def _probe_bound(results: list) -> int:
+    """The states a coverage probe may visit: ``PROBE_STATES``, or twice the states of the
+    check's own search when that is larger (a probe adds choices to the same program, so a
+    bound below the check's own states stops it before the code the check ran), at most
+    ``PROBE_GROWTH`` times ``PROBE_STATES``."""
+    explored = max((r.result.stats.model_states for r in results), default=0)
+    return int(min(PROBE_STATES * PROBE_GROWTH, max(PROBE_STATES, 2 * explored)))
+
+
+def _probed_lines(model: Model, bound: int) -> set:
     """The lines that searches offering one probe message at a site (each site's other
     messages as derived) run: each search is small where the derived messages together
     multiply the states (``MessageDomain.probes``).  A line one of them runs is reachable,
-    complete or not, so its lines count even when ``PROBE_STATES`` stops it."""
+    complete or not, so its lines count even when ``_probe_bound`` stops it."""
     lines: set = set()
     for domain in model.messages:
         for probe in domain.probes:
@@ -253,41 +272,87 @@ def _probed_lines(model: Model) -> set:
             config, _ = _check_config(model.program, model.atoms, model.options, messages)
             watch = ExploredFacts(model.program, (), model.atoms)
             find_reachable(RapidSystem(model.program, config, reduction.NO_PLAN), _never,
-                           observe=watch, max_states=PROBE_STATES)
+                           observe=watch, max_states=bound)
             lines |= watch.statements.executed
     return lines
 
 
-def _closure_probe(model: Model) -> tuple:
+def _closure_probe(model: Model, bound: int, readings_free: bool = False) -> tuple:
     """The lines a search run with peers closing their sockets (``--socket-closures``:
     ERR_SOCK_CLOSED at any SocketReceive or SocketSend), the derived messages as in the
     check, and whether that search was complete.  Closures stay out of the verdicts (the
     issue's "closures stay as now"); a closing peer is a real input, so a line this search
     runs is reachable, complete or not, and when it is complete no unreached line waits for
-    a closure any more.  Bounded by ``PROBE_STATES`` as the message probes are."""
+    a closure any more.  A server's SocketBind may also find its port taken
+    (ERR_SOCK_ADDR_INUSE: the previous run still holds it), for the handlers that
+    catch it or pass it on.  Bounded by ``_probe_bound`` as the message probes are.
+    ``readings_free``: the readings free as well (``_readings_probe``), for a handler only
+    a closure reaches behind a wait for a reading (the Hanoi socket task connects only
+    once an output no loaded code sets is 1)."""
     options = replace(model.options, socket_closures=True)
-    config, _ = _check_config(model.program, model.atoms, options, model.messages)
+    config = _free_readings_config(model, model.program, model.atoms, options) \
+        if readings_free else _check_config(model.program, model.atoms, options,
+                                            model.messages)[0]
+    config.socket_setup_failures = True      # a server's port may be taken as well
     watch = ExploredFacts(model.program, (), model.atoms)
     search = find_reachable(RapidSystem(model.program, config, reduction.NO_PLAN), _never,
-                            observe=watch, max_states=PROBE_STATES)
+                            observe=watch, max_states=bound)
     return watch.statements.executed, search.verdict == HOLDS
 
 
-def _readings_probe(model: Model) -> tuple:
+def _readings_probe(model: Model, bound: int) -> tuple:
     """The lines a search runs in which the controller's readings the check fixes read
     any value at each call (OpMode, RunMode, RobOS, IsSysId: ``probed_readings``) and each
     DOutput of an output no loaded code sets reads 0 or 1 (the controller, another task
     or the FlexPendant's I/O view sets it), and whether that search was complete.  Each
     value is one a real controller gives, so a line this search runs is reachable; the
-    verdicts keep the fixed readings (RMC702 says so).  Bounded by ``PROBE_STATES``."""
-    config, _ = _check_config(model.program, model.atoms, model.options, model.messages)
-    config.free_readings = True
-    config.lazy_inputs = {**config.lazy_inputs, **{
-        signal.index: (signal.name, (0.0, 1.0)) for signal in unset_digital_outputs(model.program)}}
+    verdicts keep the fixed readings (RMC702 says so).  Bounded by ``_probe_bound``."""
+    config = _free_readings_config(model, model.program, model.atoms)
     watch = ExploredFacts(model.program, (), model.atoms)
     search = find_reachable(RapidSystem(model.program, config, reduction.NO_PLAN), _never,
-                            observe=watch, max_states=PROBE_STATES)
+                            observe=watch, max_states=bound)
     return watch.statements.executed, search.verdict == HOLDS
+
+
+def _free_readings_config(model: Model, program: Program, atoms: AtomCompiler,
+                          options: Optional[CheckOptions] = None) -> CheckConfig:
+    """The check's environment for ``program`` (with ``options``, else the model's) with
+    the controller's readings and the outputs no loaded code sets free
+    (``_readings_probe``)."""
+    config, _ = _check_config(program, atoms, options or model.options, model.messages)
+    config.free_readings = True
+    config.lazy_inputs = {**config.lazy_inputs, **{
+        signal.index: (signal.name, (0.0, 1.0)) for signal in unset_digital_outputs(program)}}
+    return config
+
+
+def _shared_data_probe(model: Model, bound: int) -> set:
+    """The lines a search runs in which another task may write the shared PERS data that a
+    program of one task reads in a condition (``tried_inputs.unwritten_pers_reads``): the
+    program loaded again with that data written by a party left out, so that each wait and
+    polling loop reading it may see any value of its domain (``load.outside_data``: the
+    values the code compares it with, and one other), with the readings free as in
+    ``_readings_probe`` (a task that waits for the operator's mode before it reads its
+    mailbox needs both).  A task checked alone often is one
+    half of a mailbox: the other task puts a command into ``SocketStr`` and waits for
+    ``SocketStr = ""``; each such value is one another task can write, so a line this search
+    runs is reachable, complete or not.  The verdicts keep the loaded code's writes only
+    (the warning still names the data for what this probe did not reach: its domain is a
+    sample, and only waits choose).  Needs a program from ``load_program``; bounded by
+    ``_probe_bound``."""
+    arguments = getattr(model.program, "load_arguments", None)
+    keys = sorted({ref.name.key for ref in unwritten_pers_reads(model.program)})
+    if arguments is None or not keys or not arguments.get("outside_data", True):
+        return set()
+    program = load_program(**arguments, other_task_writes=keys)
+    atoms = AtomCompiler(program)
+    watch = ExploredFacts(program, (), atoms)
+    find_reachable(RapidSystem(program, _free_readings_config(model, program, atoms),
+                               reduction.NO_PLAN), _never, observe=watch, max_states=bound)
+    # the program was loaded from absolute paths: name its lines as the checked program does
+    named = {os.path.abspath(routine.ast.span.file): routine.ast.span.file
+             for routine in model.program.routines if routine.ast is not None}
+    return {(named.get(file, file), line) for file, line in watch.statements.executed}
 
 
 def _never(state) -> bool:
@@ -387,16 +452,23 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
         with cluster.session() if cluster is not None else contextlib.nullcontext() as ray:
             searches = _Searches(model, progress, ray)
             results = searches.builtin_checks() + [searches.property(*job) for job in model.jobs]
+        bound = _probe_bound(results)
         if searches.facts.complete and any(d.probes for d in model.messages):
-            searches.facts.statements.executed |= _probed_lines(model)
+            searches.facts.statements.executed |= _probed_lines(model, bound)
         if searches.facts.complete and searches.facts.waits_for_closures():
-            lines, complete = _closure_probe(model)
+            lines, complete = _closure_probe(model, bound)
             searches.facts.statements.executed |= lines
             searches.facts.closures_tried = complete
         if searches.facts.complete and searches.facts.waits_for_readings():
-            lines, complete = _readings_probe(model)
+            lines, complete = _readings_probe(model, bound)
             searches.facts.statements.executed |= lines
             searches.facts.readings_tried = complete
+            if searches.facts.waits_for_closures():
+                lines, complete = _closure_probe(model, bound, readings_free=True)
+                searches.facts.statements.executed |= lines
+                searches.facts.closures_tried |= complete
+        if searches.facts.complete and searches.facts.waits_for_other_tasks():
+            searches.facts.statements.executed |= _shared_data_probe(model, bound)
     resting_on = assumptions(model.program)
     results = [replace(r, assumes=for_verdict(resting_on, r.result, model.describer))
                for r in results]

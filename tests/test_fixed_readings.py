@@ -177,3 +177,47 @@ def test_a_reading_called_all_over_a_backup_names_five_lines_and_counts_the_rest
         [TriedInput(FIXED, "OpMode", ast.Span("a.mod", 7, 5))]
     assert qualifier(inputs) == ("with the controller's readings fixed (MaxRobSpeed at lines "
                                  "55, 60, 80, 85, 90 and 2 more; OpMode at line 7)")
+
+
+REACH = """MODULE Reach
+    VAR robtarget goal := [[500,0,400],[0,0,1,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    VAR num failures := 0;
+    PROC main()
+        VAR bool moved;
+        moved := MoveTo(goal);
+        IF NOT moved THEN
+            failures := failures + 1;
+        ENDIF
+        WHILE TRUE DO
+            WaitTime 1;
+        ENDWHILE
+        failures := -1;
+    ENDPROC
+    FUNC bool MoveTo(robtarget target)
+        VAR jointtarget joints;
+        joints := CalcJointT(target, tool0 \\WObj:=wobj0);
+        MoveAbsJ joints, v100, z100, tool0;
+        RETURN TRUE;
+    ERROR
+        IF ERRNO = ERR_ROBLIMIT THEN
+            RETURN FALSE;
+        ENDIF
+    ENDFUNC
+ENDMODULE
+"""
+
+
+def test_a_handler_for_a_target_out_of_reach_is_reached_by_the_readings_probe(tmp_path):
+    """The check takes every target as reachable; a controller raises ERR_ROBLIMIT in
+    CalcJointT for one out of reach.  The readings probe lets each call fail, so the
+    handler and the branch its answer feeds count as reached, while the verdicts keep
+    reachable targets.  CalcJointT's value stays fixed when it succeeds (no kinematics),
+    so code the probe still does not reach keeps naming it."""
+    path = tmp_path / "reach.mod"
+    path.write_text(REACH)
+    report = api.check(api.load_program([str(path)]))
+    assert report.verdicts == {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS"}
+    for code in ("failures := failures + 1;", "RETURN FALSE;"):
+        assert (str(path), line_of(REACH, code)) in report.executed, code
+    assert [w.message for w in report.warnings if w.code.code == "RMC701"] == [
+        "never reached with the controller's readings fixed (CalcJointT at line 17)"]

@@ -10,10 +10,12 @@ when an input was offered a sample of its values only.
 from __future__ import annotations
 
 from pathlib import Path
+from types import SimpleNamespace
 
 import pytest
 
 from rapidmc import api
+from rapidmc.check.result import SearchStats
 from rapidmc.load.message_domains import message_domains, well_formed
 from rapidmc.semantics.types import NUM, ArrayType
 
@@ -178,7 +180,7 @@ def test_probe_messages_reach_the_branches_coverage_would_report(monkeypatch):
     them it is reached (tests/check/socket_field_count has no ``unreached`` file)."""
     program = api.load_program([str(CHECK / "socket_field_count" / "prog.mod")])
     assert coverage(api.check(program)) == []
-    monkeypatch.setattr(api, "_probed_lines", lambda model: set())
+    monkeypatch.setattr(api, "_probed_lines", lambda model, bound: set())
     assert coverage(api.check(program)) == [
         "never reached with the socket messages tried (SocketReceive at line 53)"]
 
@@ -273,14 +275,16 @@ def test_a_handler_a_closing_peer_reaches_is_shown_reached_by_the_closure_probe(
 
 def test_a_closure_probe_the_bound_stops_keeps_the_wording(tmp_path, monkeypatch):
     """A closure probe stopped by its bound shows nothing about the lines it did not run:
-    their warnings still say they rest on no peer closing its socket."""
+    their warnings still say they rest on no peer closing its socket and on the server's
+    port being free (the probe also lets SocketBind fail)."""
     monkeypatch.setattr(api, "PROBE_STATES", 3)
     path = tmp_path / "server.mod"
     path.write_text(SERVER.format(body="            Exchange;", extra=EXCHANGE))
     messages = coverage(api.check(api.load_program([str(path)])))
     assert messages == [
-        "lines 26-27 of Exchange are never reached with no peer closing its socket "
-        "(SocketReceive at lines 14, 24; SocketSend at line 23)",
+        "lines 26-27 of Exchange are never reached with no peer closing its socket and the "
+        "server's port free (SocketBind at line 10; SocketReceive at lines 14, 24; SocketSend "
+        "at line 23)",
         "never reached under any input (routine Report never runs)"]
 
 
@@ -336,6 +340,7 @@ def test_an_output_no_loaded_code_sets_is_an_input(tmp_path, monkeypatch, setter
     leaves the warning naming the read).  Set by the program itself (in a routine nothing
     calls), the output is no input: the code after the wait is dead."""
     monkeypatch.setattr(api, "PROBE_STATES", probe_states)
+    monkeypatch.setattr(api, "PROBE_GROWTH", 1)          # (the bound is PROBE_STATES)
     path = tmp_path / "cell.mod"
     path.write_text("MODULE Cell\n    VAR num state := 0;\n    PROC main()\n"
                     "        WaitUntil DOutput(doCycleOn) = 1;\n        state := 1;\n"
@@ -363,16 +368,177 @@ def test_a_handler_an_egm_session_failure_reaches_names_the_egm_instructions(tmp
 
 
 def test_code_waiting_for_another_tasks_write_names_the_persistent_data(tmp_path):
-    """A socket task checked alone forwards a command only once the motion task has taken
-    the last one (``WHILE SocketStr <> ""``; the motion task writes ``SocketStr := ""``).
-    This task never empties it, so the forwarding code is unreached, but another task or a
-    PC may: the warning names the persistent data instead of "under any input"."""
+    """A socket task checked alone acts on ``SocketStr`` only when it holds a command
+    (``IF SocketStr = "go"``, no wait) and empties it after: it never writes a command
+    itself, another task or a PC may.  The shared data probe lets waits and polls see such writes, not this branch, so
+    the code stays unreached and the warning names the persistent data instead of "under
+    any input"."""
     path = tmp_path / "socket.mod"
-    path.write_text("MODULE Socket\n    PERS string SocketStr := \"start\";\n"
+    path.write_text("MODULE Socket\n    PERS string SocketStr := \"\";\n"
                     "    VAR num sent := 0;\n    PROC main()\n"
-                    "        WHILE SocketStr <> \"\" DO\n            WaitTime 1;\n"
-                    "        ENDWHILE\n        SocketStr := \"next\";\n        sent := 1;\n"
-                    "    ENDPROC\nENDMODULE\n")
+                    "        IF SocketStr = \"go\" THEN\n            sent := 1;\n"
+                    "        ENDIF\n        SocketStr := \"\";\n    ENDPROC\nENDMODULE\n")
     assert coverage(api.check(api.load_program([str(path)]))) == [
-        "lines 8-9 of main are never reached with no other task writing the persistent "
-        "data (SocketStr at line 5)"]
+        "never reached with no other task writing the persistent data (SocketStr at line 5)"]
+
+
+MAILBOX = """MODULE Mailbox
+    PERS string command := "";
+    PERS string reply := "";
+    VAR num picked := 0;
+    VAR num placed := 0;
+    PROC main()
+        WHILE TRUE DO
+            WHILE command <> "" DO
+                IF command = "pick" THEN
+                    picked := picked + 1;
+                    reply := "ok";
+                    command := "";
+                    WaitUntil reply = "";
+                    picked := picked + 10;
+                ELSEIF command = "place" THEN
+                    placed := placed + 1;
+                    command := "";
+                ELSE
+                    command := "";
+                ENDIF
+            ENDWHILE
+            WaitTime 0.1;
+        ENDWHILE
+        placed := -1;
+    ENDPROC
+ENDMODULE
+"""
+
+
+def test_a_mailbox_another_task_fills_is_reached_by_the_shared_data_probe(tmp_path):
+    """One half of a two-task mailbox checked alone: the task polls ``command``, which
+    only the other task fills, and waits for ``reply = ""``, which only the other task
+    clears.  The shared data probe lets each poll and wait see what another task may
+    write (the strings compared, and one other), so every command's branch and the code
+    after the wait for the reply run; code after the endless loop stays unreached.  Its
+    warning still names the data: the probe chooses at waits and polls only, so it does
+    not show that no other read could lead there.  The verdicts keep this task's own
+    writes (the probe only shows lines)."""
+    path = tmp_path / "mailbox.mod"
+    path.write_text(MAILBOX)
+    report = api.check(api.load_program([str(path)]))
+    assert report.verdicts == {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS"}
+    for code in ("picked := picked + 1;", "picked := picked + 10;", "placed := placed + 1;",
+                 "        ELSE"):
+        number = next(n for n, line in enumerate(MAILBOX.splitlines(), 1) if code in line)
+        assert (str(path), number) in report.executed, code
+    assert coverage(report) == ["never reached with no other task writing the persistent "
+                                "data (command at lines 8, 9, 15; reply at line 13)"]
+
+
+def test_without_the_shared_data_probe_the_mailbox_code_is_unreached(tmp_path):
+    """The same program built without ``load_program`` (no files to load again): the
+    probe cannot run, and the warning names the data the code waits for."""
+    path = tmp_path / "mailbox.mod"
+    path.write_text(MAILBOX)
+    program = api.load_program([str(path)])
+    program.load_arguments = None
+    assert coverage(api.check(program)) == [
+        "lines 9-19 of main are never reached with no other task writing the persistent "
+        "data (command at line 8)", "never reached with no other task writing the persistent "
+        "data (command at line 8)"]
+
+
+def test_a_handler_a_closure_reaches_behind_a_wait_for_an_output_is_reached(tmp_path):
+    """The Hanoi socket task connects only once an output no loaded code sets is 1, and
+    handles a closed connection in ``main``'s ERROR handler.  The closure probe alone waits
+    forever at the output, the readings probe alone never closes: a closure probe with the
+    readings free reaches the handler, and nothing is left unreached."""
+    path = tmp_path / "client.mod"
+    path.write_text(
+        "MODULE Client\n    VAR socketdev link;\n    VAR string text := \"\";\n"
+        "    VAR num lost := 0;\n    PROC main()\n"
+        "        WaitUntil DOutput(doRobotReady) = 1;\n        SocketCreate link;\n"
+        "        SocketConnect link, \"10.0.0.2\", 5000;\n        WHILE TRUE DO\n"
+        "            SocketReceive link \\Str:=text;\n        ENDWHILE\n    ERROR\n"
+        "        IF ERRNO = ERR_SOCK_CLOSED THEN\n            lost := lost + 1;\n"
+        "            SocketClose link;\n        ENDIF\n    ENDPROC\nENDMODULE\n")
+    report = api.check(api.load_program([str(path)]))
+    assert (str(path), 14) in report.executed
+    assert coverage(report) == []
+
+
+BIND = """MODULE Server
+    VAR socketdev listener;
+    VAR socketdev client;
+    VAR string text := "";
+    VAR num failures := 0;
+    PROC main()
+        OpenServer;
+        SocketAccept listener, client \\Time:=WAIT_MAX;
+        WHILE TRUE DO
+            SocketReceive client \\Str:=text \\Time:=WAIT_MAX;
+            SocketSend client \\Str:="ok";
+        ENDWHILE
+    ERROR (ERR_SOCK_CLOSED)
+        SocketClose client;
+        RETRY;
+    ENDPROC
+    PROC OpenServer()
+        SocketCreate listener;
+        SocketBind listener, "127.0.0.1", 1100;
+        SocketListen listener;
+    ERROR
+        failures := failures + 1;
+        RAISE;
+    ENDPROC
+ENDMODULE
+"""
+
+
+def test_a_handler_for_a_port_in_use_is_reached_by_the_closure_probe(tmp_path):
+    """A ROS-style server opens its socket in a routine whose handler passes errors on
+    (``ERROR ... RAISE``).  A closing peer never reaches that handler: ERR_SOCK_CLOSED
+    comes after the socket is open.  A port the previous run still holds does
+    (ERR_SOCK_ADDR_INUSE at SocketBind), so the closure probe lets SocketBind fail too:
+    the handler counts as reached instead of "never reached under any input".  The
+    verdicts keep a free port."""
+    path = tmp_path / "bind.mod"
+    path.write_text(BIND)
+    report = api.check(api.load_program([str(path)]))
+    assert report.verdicts == {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS"}
+    number = next(n for n, line in enumerate(BIND.splitlines(), 1) if "failures := failures" in line)
+    assert (str(path), number) in report.executed
+    assert coverage(report) == []
+
+
+def test_a_probe_may_visit_twice_the_states_of_the_check_up_to_a_limit(monkeypatch):
+    """A probe adds choices to the program the check searched: its bound is twice the
+    check's own states when that exceeds PROBE_STATES, at most PROBE_GROWTH times it."""
+    def results(states):
+        stats = SearchStats(model_states=states)
+        return [SimpleNamespace(result=SimpleNamespace(stats=stats))]
+    monkeypatch.setattr(api, "PROBE_STATES", 100)
+    monkeypatch.setattr(api, "PROBE_GROWTH", 2.5)
+    assert api._probe_bound(results(10)) == 100
+    assert api._probe_bound(results(70)) == 140
+    assert api._probe_bound(results(1000)) == 250
+
+
+def test_with_socket_closures_a_port_in_use_is_still_tried(tmp_path):
+    """``--socket-closures`` closes peers in the verdicts' own search but never takes a
+    port: the handler a taken port reaches is still shown reached by the closure probe,
+    not "never reached under any input"."""
+    path = tmp_path / "bind.mod"
+    path.write_text(BIND)
+    report = api.check(api.load_program([str(path)]), [],
+                       api.CheckOptions(socket_closures=True))
+    number = next(n for n, line in enumerate(BIND.splitlines(), 1)
+                  if "failures := failures" in line)
+    assert (str(path), number) in report.executed
+    assert coverage(report) == []
+
+
+def test_a_list_between_brackets_is_also_tried_with_its_last_part_malformed():
+    """A routine that cuts a list between brackets and parses each part fails at the part
+    that does not parse: "[1,1]" fails at its missing part, "[1,1,?]" at the last one (the
+    handler of MARC-HT25's fourth orientation value)."""
+    program = api.load_program([str(CHECK / "socket_bracket_list" / "prog.mod")])
+    [domain] = message_domains(program)
+    assert domain.messages[:3] == ("[1,1,1]", "[1,1]", "[1,1,?]")

@@ -85,7 +85,7 @@ def test_a_fault_in_a_message_probe_is_the_same_diagnostic(tmp_path, capsys, mon
     assert main(argv) == 2
     err = capsys.readouterr().err
     assert "internal error" not in err and FAULT in err, err
-    monkeypatch.setattr(api, "_probed_lines", lambda model: set())
+    monkeypatch.setattr(api, "_probed_lines", lambda model, bound: set())
     assert main(argv) == 0, capsys.readouterr().err     # the verdicts' search alone: no fault
 
 

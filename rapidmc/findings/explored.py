@@ -19,7 +19,8 @@ from ..check import HOLDS, VIOLATED, find_reachable
 from ..check.result import SearchResult
 from .vacuity import TriggerWatch, to_text
 from .coverage import StatementWatch, coverage_warnings
-from .tried_inputs import PEERS_OPEN, TriedInput, called_routines, probed, qualifier, reached
+from .tried_inputs import (PEERS_OPEN, PORT_FREE, UNWRITTEN, TriedInput, called_routines, probed, qualifier,
+                           reached, varied)
 from ..diagnostics import Diagnostic
 from ..ltl import Formula
 from ..model.properties import AtomCompiler
@@ -101,7 +102,8 @@ class ExploredFacts:
         """Coverage warnings (RMC701); none unless the search was complete."""
         if not self.complete:
             return []
-        sampled = [t for t in self.sampled if not (self.closures_tried and t.kind == PEERS_OPEN)
+        sampled = [t for t in self.sampled
+                   if not (self.closures_tried and t.kind in (PEERS_OPEN, PORT_FREE))
                    and not (self.readings_tried and probed(t))]
         inputs = qualifier(reached(sampled, self.statements.executed))
         called = called_routines(self.program)
@@ -109,13 +111,21 @@ class ExploredFacts:
 
     def waits_for_closures(self) -> bool:
         """Whether some unreached-code warning would rest on no peer closing its socket (a
-        SocketSend or SocketReceive that could raise ERR_SOCK_CLOSED into a handler ran)."""
-        return any(t.kind == PEERS_OPEN for t in reached(self.sampled, self.statements.executed))
+        SocketSend or SocketReceive that could raise ERR_SOCK_CLOSED into a handler ran) or
+        on the server's port being free (a SocketBind ran)."""
+        return any(t.kind in (PEERS_OPEN, PORT_FREE)
+                   for t in reached(self.sampled, self.statements.executed))
 
     def waits_for_readings(self) -> bool:
         """Whether some unreached-code warning would rest on a reading the readings probe
-        frees (``tried_inputs.probed``: OpMode, an output no loaded code sets, ...)."""
-        return any(probed(t) for t in reached(self.sampled, self.statements.executed))
+        varies (``tried_inputs.varied``: OpMode, an output no loaded code sets, ...)."""
+        return any(varied(t) for t in reached(self.sampled, self.statements.executed))
+
+    def waits_for_other_tasks(self) -> bool:
+        """Whether some unreached-code warning would rest on no other task writing shared
+        PERS data that a condition read (``tried_inputs.UNWRITTEN``)."""
+        return any(t.kind == UNWRITTEN for t in reached(self.sampled, self.statements.executed)) \
+            and bool(self.warnings())
 
     def inputs_tried(self) -> str:
         """``under any input``, or which sampled inputs the search's findings rest on

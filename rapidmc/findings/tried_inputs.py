@@ -22,7 +22,9 @@ and those DOutput reads at every value (``probed``): then they no longer explain
 
 A peer that closes its connection is an input too: in reality SocketSend and
 SocketReceive then raise ERR_SOCK_CLOSED, which an ERROR handler may catch; a
-check models that only with ``--socket-closures``.  Likewise an EGM session may fail
+check models that only with ``--socket-closures``.  So is a server's port that the
+previous run still holds (SocketBind raises ERR_SOCK_ADDR_INUSE): "with the server's
+port free (SocketBind at line 32)"; the closure probe tries both.  Likewise an EGM session may fail
 (ERR_UDPUC_COMM when the sensor stops answering), which the check never makes happen:
 in a program with an ERROR handler each EGM instruction that ran is named ("with no EGM
 session failing (EGMRunJoint at line 29)").  Without it, when the program
@@ -44,7 +46,7 @@ from .. import ast
 from ..semantics.program import ENVIRONMENT_NAMESPACE, PROGRAM_NAMESPACE, Program
 from ..load.call_graph import called_routines  # noqa: F401  (coverage asks it here)
 from ..semantics.scope import GLOBAL_DATA
-from ..semantics.library.probed_readings import DOMAINS as PROBED_READINGS
+from ..semantics.library.probed_readings import DOMAINS as PROBED_READINGS, FAILING
 from .fixed_readings import reading_calls
 
 # instruction or function (canonical name) -> what a check offers it only some of
@@ -65,6 +67,10 @@ CLOSABLE = ("SOCKETSEND", "SOCKETRECEIVE", "SOCKETRECEIVEFROM")
 OUTPUT_READS = ("DOUTPUT", "GOUTPUT", "GOUTPUTDNUM", "AOUTPUT")
 PEERS_OPEN = "no peer closing its socket"      # the kind of those, when closures are not tried
 PLACES_SHOWN = 5     # lines named per reading instruction in a warning; the rest counted
+# a server's SocketBind may find its port taken (ERR_SOCK_ADDR_INUSE), which only the closure
+# probe makes happen
+BINDS = ("SOCKETBIND",)
+PORT_FREE = "the server's port free"            # the kind of those, in a program with a handler
 FIXED = "the controller's readings fixed"      # the kind of a fixed reading (RMC702)
 UNSET = "the outputs no loaded code sets at their first value"   # (system outputs, other tasks)
 # EGM instructions whose session may fail on a real controller (ERR_UDPUC_COMM when the
@@ -75,7 +81,7 @@ EGM_UP = "no EGM session failing"              # the kind of those, in a program
 # shared PERS data a condition reads in a task checked alone: another task or a PC may write
 # it on the controller, which the check does not model
 UNWRITTEN = "no other task writing the persistent data"
-PHRASES = (PEERS_OPEN, FIXED, UNSET, UNWRITTEN, EGM_UP)   # kinds that are phrases of their own
+PHRASES = (PEERS_OPEN, PORT_FREE, FIXED, UNSET, UNWRITTEN, EGM_UP)   # kinds that are phrases of their own
 
 
 @dataclass(frozen=True)
@@ -110,6 +116,8 @@ def sampled_inputs(program: Program, exact: Iterable[tuple] = (),
                 found.append(TriedInput(SAMPLED[node.name.key], node.name.text, node.span))
             if handled and node.name.key in CLOSABLE:
                 found.append(TriedInput(PEERS_OPEN, node.name.text, node.span))
+            if has_handler and node.name.key in BINDS:     # (--socket-closures binds)
+                found.append(TriedInput(PORT_FREE, node.name.text, node.span))
             if has_handler and node.name.key in EGM_SESSIONS:
                 found.append(TriedInput(EGM_UP, node.name.text, node.span))
     found += [TriedInput(FIXED, name.text, name.span) for name in reading_calls(program)]
@@ -199,6 +207,12 @@ def probed(read: TriedInput) -> bool:
     name = read.instruction.upper()
     return (read.kind == FIXED and name in PROBED_READINGS) or \
         (read.kind == UNSET and name == "DOUTPUT")
+
+
+def varied(read: TriedInput) -> bool:
+    """Whether the readings probe varies ``read``: those it frees (``probed``) and those
+    it lets fail (``probed_readings.FAILING``: CalcJointT out of reach)."""
+    return probed(read) or (read.kind == FIXED and read.instruction.upper() in FAILING)
 
 
 def reached(inputs: Sequence[TriedInput], executed: set) -> tuple:

@@ -697,7 +697,8 @@ class Uses:
         opening bracket the code seeks (and before its closing one, if sought), split at the
         separator it seeks most: ``[1,1,1]`` for ``StrFind(s, 1, "[")``, then three
         ``StrFind(s, i, ",")``/``StrFind(s, i, "]")`` parts parsed; the longest list
-        first, then each shorter one."""
+        first, then each shorter one, then the longest with its last part malformed
+        (``[1,1,?]``)."""
         others = [text for text in _ordered(self.searched) if text not in BRACKETS.values()
                   and text not in BRACKETS]
         if not others or len(others[0]) != 1:
@@ -706,10 +707,14 @@ class Uses:
         if not opener:
             return []               # (a list the code reads between brackets only)
         closer = BRACKETS[opener] if BRACKETS[opener] in self.searched else ""
-        # and each shorter list, whose missing part fails to parse ('[1,1]')
+        # and each shorter list, whose missing part fails to parse ('[1,1]'), and the
+        # longest with its last part malformed ('[1,1,?]'): the last parse's failure
         longest = max(self.lists.values(), default=0)
+        if longest <= 1:
+            return []
         return [opener + others[0].join(["1"] * count) + closer
-                for count in range(longest, 1, -1)] if longest > 1 else []
+                for count in range(longest, 1, -1)] + \
+            [opener + others[0].join(["1"] * (longest - 1) + [UNEXPECTED]) + closer]
 
     def _length_forms(self) -> list:
         """Per number the message's length is compared with (``StrLen(msg) > 72``), a

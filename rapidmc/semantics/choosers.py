@@ -123,6 +123,8 @@ class CheckConfig:
         # the coverage probe's: controller readings read any value of their domain
         # (library.probed_readings); never for verdicts
         self.free_readings = False
+        # the closure probe's: SocketBind may find its port taken (library.sockets)
+        self.socket_setup_failures = False
         # (routine, pc) -> visible, for instructions that join the step before them
         # (reduction.merging); empty: one instruction per step
         self.merge_points: dict = {}

@@ -24,7 +24,7 @@ from .configuration import FOUND, NOT_KNOWN, UNKNOWN_VALUE, Lookup, look_up
 from .data import PREDEFINED_DATA
 from .environment_model import where
 from .motion import move_robot
-from .probed_readings import probed_reading
+from .probed_readings import FAILING, probed_reading, readings_free
 from .registry import CHOICE, FIXED, NO_EFFECT, NOT_MODELLED, ROBOT_STATE, compiled
 from .signals import signal_reader
 from .tasks import task_number
@@ -127,11 +127,13 @@ def _calc_joint_t(calls, compiler, call, entry) -> Compiled:
     The target is taken as reachable: without \\ErrorNumber the controller raises ERR_ROBLIMIT
     or ERR_OUTSIDE_REACH only for a target out of reach, which rapidmc cannot tell; a program
     that asks for the error number (``\\ErrorNumber:=err``, it then gets no error raised) is
-    checked with both answers, 0 and ERR_ROBLIMIT, when model checking."""
+    checked with both answers, 0 and ERR_ROBLIMIT, when model checking; without it, the
+    readings probe (``probed_readings``) lets the call raise ERR_ROBLIMIT, for coverage."""
     arguments = Arguments(calls, compiler, call, entry)
     target, error_number = arguments.value("Rob_target"), arguments.fn("ErrorNumber")
     label = f"CalcJointT reaches the target at {where(call.span)}"
-    limit = float(ERROR_NUMBERS["ERR_ROBLIMIT"])
+    failure = FAILING["CALCJOINTT"]
+    limit = float(ERROR_NUMBERS[failure])
 
     def joints(m):
         robax = m.robot[ROBOT_JOINTS][0]
@@ -139,6 +141,8 @@ def _calc_joint_t(calls, compiler, call, entry) -> Compiled:
         if ref is not ABSENT:
             reached = m.choose(label, (True, False)) if m.chooser.check_mode else True
             m.write_ref(ref, 0.0 if reached else limit)
+        elif readings_free(m) and not m.choose(label, (True, False)):
+            raise RapidError(failure, "CalcJointT: the target is out of reach")
         return (robax, target(m)[3])
     return Compiled(joints, calls.return_type(entry))
 

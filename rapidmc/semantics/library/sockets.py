@@ -33,6 +33,7 @@ SOCKET_CREATED, SOCKET_CONNECTED, SOCKET_BOUND, SOCKET_LISTENING, SOCKET_CLOSED 
 DEFAULT_TIMEOUT = 60.0          # seconds, when \Time is not given (manual)
 WAIT_MAX = float(PREDEFINED_DATA["WAIT_MAX"].value)
 TIMEOUT, CLOSED, RECEIVED = "ERR_SOCK_TIMEOUT", "ERR_SOCK_CLOSED", "received"
+ADDRESS_IN_USE = "ERR_SOCK_ADDR_INUSE"
 
 
 # ===========================================================================
@@ -136,12 +137,26 @@ def _socket_transition(calls, compiler, call, entry):
     wanted, new = TRANSITIONS[call.name.key]
     name = call.name.text
 
+    binds = call.name.key == "SOCKETBIND"
+    label = f"{name} outcome at {where(call.span)}"
+
     def act(m):
         ref = socket(m)
         if wanted is not None:
             _require(m.read_ref(ref), wanted, name)
+        if binds and _setup_failures(m) and m.choose(label, ("bound", ADDRESS_IN_USE)) \
+                == ADDRESS_IN_USE:
+            raise RapidError(ADDRESS_IN_USE, f"{name}: the address and port are in use")
         m.write_ref(ref, (new, b""))
     return Action(call.span, act)
+
+
+def _setup_failures(m) -> bool:
+    """Whether a server's port may be taken (the closure probe's ``socket_setup_failures``:
+    a port the previous run still holds, ERR_SOCK_ADDR_INUSE at SocketBind); never for
+    verdicts."""
+    return m.chooser.check_mode and \
+        getattr(getattr(m.chooser, "config", None), "socket_setup_failures", False)
 
 
 def _connection(m, call, seconds, failure: str) -> None:
