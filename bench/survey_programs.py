@@ -261,9 +261,16 @@ def main() -> int:
         to_check = [p for p in to_check if args.only in p.name]
         settled = [p for p in settled if args.only in p.name]
     options = ["--max-states", args.max_states]
+    done = iter(range(1, len(to_check) + 1))
+
+    def one(program: Program) -> Program:
+        survey(program, options, args.cpu, not args.no_stubs)
+        print(f"[{next(done)}/{len(to_check)}] {program.outcome}: {program.name}",
+              file=sys.stderr, flush=True)
+        return program
+
     with ThreadPoolExecutor(args.jobs) as pool:
-        checked = list(pool.map(lambda p: survey(p, options, args.cpu, not args.no_stubs),
-                                to_check))
+        checked = list(pool.map(one, to_check))
     report(checked + settled, corpus, args.list)
     if args.json is not None:
         args.json.write_text(json.dumps([vars(p) | {"files": [str(f) for f in p.files]}
