@@ -141,6 +141,17 @@ def find_programs(corpus: Path) -> tuple[list[Program], list[Program]]:
     return _distinct(programs)
 
 
+def earlier_rows(path: Path, outcomes: set[str]) -> tuple[list[Program], list[Program]]:
+    """The rows of an earlier ``--json`` run: (those to check again, those kept)."""
+    rows = [Program(**{**row, "files": [Path(f) for f in row["files"]]})
+            for row in json.loads(path.read_text())]
+    again = [row for row in rows if row.outcome in outcomes]
+    for row in again:
+        row.outcome, row.detail, row.codes, row.stubbed = "", "", [], False
+    chosen = {id(row) for row in again}
+    return again, [row for row in rows if id(row) not in chosen]
+
+
 def _is_backup(folder: Path) -> bool:
     """A controller backup: a RAPID folder whose task folders hold SYSMOD or PROGMOD (not a
     repository's own RAPID folder of loose modules or of backups)."""
@@ -251,12 +262,20 @@ def main() -> int:
     parser.add_argument("--list", action="store_true", help="a row per program")
     parser.add_argument("--only", default=None, help="only programs whose name holds TEXT")
     parser.add_argument("--json", type=Path, default=None, help="write every row to FILE")
+    parser.add_argument("--recheck", type=Path, default=None, metavar="JSON",
+                        help="take the rows of an earlier --json run and check again only the "
+                             "programs whose outcome --outcomes names")
+    parser.add_argument("--outcomes", default="load error",
+                        help="with --recheck: the outcomes to check again, comma-separated")
     args = parser.parse_args()
     corpus = args.corpus.resolve()
     if args.extract is not None:
         extract(args.extract, corpus)
         return 0
-    to_check, settled = find_programs(corpus)
+    if args.recheck is not None:
+        to_check, settled = earlier_rows(args.recheck, set(args.outcomes.split(",")))
+    else:
+        to_check, settled = find_programs(corpus)
     if args.only:
         to_check = [p for p in to_check if args.only in p.name]
         settled = [p for p in settled if args.only in p.name]

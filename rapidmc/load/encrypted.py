@@ -21,7 +21,7 @@ refusing the whole backup (RMC005 for a module given by name stays):
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Sequence
+from typing import Optional, Sequence
 
 from .. import ast
 from ..diagnostics import ENCRYPTED_SKIPPED, Diagnostic
@@ -40,10 +40,13 @@ def is_encrypted(path: str) -> bool:
     return bool(first) and first[0] >= 0xF0
 
 
-def skipped_note(path: str, task: str) -> Diagnostic:
-    """RMC735: the encrypted module is checked as the interface its uses show."""
-    return Diagnostic(ENCRYPTED_SKIPPED, f"module {Path(path).name} of task {task} is "
-                      "encrypted: the task is checked without it; what the other modules use "
+def skipped_note(path: str, task: Optional[str]) -> Diagnostic:
+    """RMC735: the encrypted module is checked as the interface its uses show (``task``
+    None: a module given as a file)."""
+    owner = f"task {task}" if task else "the program"
+    what = "the task" if task else "the program"
+    return Diagnostic(ENCRYPTED_SKIPPED, f"module {Path(path).name} of {owner} is "
+                      f"encrypted: {what} is checked without it; what the other modules use "
                       "from it is declared from those uses (stubs, named under assumes:), and "
                       "PERS data it may write is data written from outside",
                       ast.Span(path, 0, 0), severity="note")
