@@ -1,8 +1,10 @@
-"""Encrypted modules in a controller backup: check everything else (issue 28).
+"""Encrypted modules in a controller backup or among module files: check everything else
+(issue 28).
 
 A licensed add-in ships its modules encrypted (the file's first byte is 0xF0
 or above); a controller runs them, rapidmc cannot read them.  Instead of
-refusing the whole backup (RMC005 for a module given by name stays):
+refusing the whole backup or program (RMC005 stays when every module given by
+name is encrypted):
 
 * the task's other modules are checked; what they use and no module declares
   is taken, as ``rapidmc stubs`` does, from its uses: a generated module
