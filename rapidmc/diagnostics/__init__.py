@@ -53,7 +53,7 @@ FILE_NOT_FOUND = _code("RMC001", "file-not-found", "the file does not exist")
 FILE_IS_DIRECTORY = _code("RMC002", "file-is-directory", "a directory was given where a file is needed")
 FILE_UNREADABLE = _code("RMC003", "file-unreadable", "the file cannot be read")
 FILE_BINARY = _code("RMC004", "file-binary", "the file is binary, not RAPID source text")
-FILE_ENCRYPTED = _code("RMC005", "file-encrypted", "the module is encrypted and cannot be analysed")
+FILE_ENCRYPTED = _code("RMC005", "file-encrypted", "the module is encrypted and cannot be analysed (every module given is)")
 FILE_EMPTY = _code("RMC006", "file-empty", "the file holds no module")
 FILE_TOO_LARGE = _code("RMC007", "file-too-large", "the file exceeds the size limit")
 PROGRAM_FILE = _code("RMC008", "program-file", "a .pgf program file is malformed or names a missing module")
@@ -123,7 +123,7 @@ FIXED_READING = _code("RMC702", "fixed-reading", "a controller reading the check
 TASKS_LOADED = _code("RMC730", "tasks-loaded", "which tasks of a controller backup are checked together (or left out, and why)")
 PERS_UNWRITTEN = _code("RMC731", "pers-unwritten", "a task checked alone reads PERS data it never writes: another task or a PC may write it")
 ORDER_REDUCTION = _code("RMC732", "order-reduction", "partial-order reduction is off for a property with X (next)")
-ENCRYPTED_SKIPPED = _code("RMC735", "encrypted-skipped", "a backup's encrypted module (or task of encrypted modules only) is checked as the interface its uses show")
+ENCRYPTED_SKIPPED = _code("RMC735", "encrypted-skipped", "an encrypted module beside readable ones (or a backup's task of encrypted modules only) is checked as the interface its uses show")
 NO_PROGRAM = _code("RMC736", "no-program", "a controller backup, or the task --task names, holds no program (system modules only): nothing to check, exit 0")
 
 # --- the search engine (750-759) ---------------------------------------------------------

@@ -272,6 +272,10 @@ def resolve_program_files(args) -> ProgramFiles:
         files = [f for f in spec.split(",") if f]
         tasks.append((f"task {number + 1} ({Path(files[0]).stem})" if files else "", files,
                       "main"))
+    paths, sealed = _readable_files(paths)
+    if sealed:
+        encrypted[None] = encrypted.get(None, []) + sealed
+        notes.extend(skipped_note(f, main_task) for f in sealed)
     signals = [signal for eio_path in eio_paths for signal in read_eio(eio_path)]
     for eio_path in eio_paths:
         for key, who in controller_writers(eio_path).items():
@@ -279,6 +283,16 @@ def resolve_program_files(args) -> ProgramFiles:
     return ProgramFiles(paths, tasks, signals, main_task, main_entry, tuple(notes), alone,
                         configuration, encrypted, tuple(motion_tasks), writers,
                         tuple(dict.fromkeys(names)), output_writers)
+
+
+def _readable_files(paths: list[str]) -> tuple[list[str], list[str]]:
+    """(modules to load, encrypted modules left out) of the main task's files: an encrypted
+    module beside readable ones is left out as a backup's is, its interface taken from the
+    uses; a program of encrypted modules only keeps them (RMC005: nothing to analyse)."""
+    sealed = [p for p in paths if Path(p).suffix.lower() in MODULE_SUFFIXES and is_encrypted(p)]
+    if not sealed or len(sealed) == len(paths):
+        return paths, []
+    return [p for p in paths if p not in sealed], sealed
 
 
 def _runnable_tasks(path: Path, tasks: list[BackupTask]) -> tuple[list[BackupTask], list]:

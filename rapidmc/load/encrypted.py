@@ -1,8 +1,10 @@
-"""Encrypted modules in a controller backup: check everything else (issue 28).
+"""Encrypted modules in a controller backup or among module files: check everything else
+(issue 28).
 
 A licensed add-in ships its modules encrypted (the file's first byte is 0xF0
 or above); a controller runs them, rapidmc cannot read them.  Instead of
-refusing the whole backup (RMC005 for a module given by name stays):
+refusing the whole backup or program (RMC005 stays when every module given by
+name is encrypted):
 
 * the task's other modules are checked; what they use and no module declares
   is taken, as ``rapidmc stubs`` does, from its uses: a generated module
@@ -21,7 +23,7 @@ refusing the whole backup (RMC005 for a module given by name stays):
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Sequence
+from typing import Optional, Sequence
 
 from .. import ast
 from ..diagnostics import ENCRYPTED_SKIPPED, Diagnostic
@@ -40,10 +42,13 @@ def is_encrypted(path: str) -> bool:
     return bool(first) and first[0] >= 0xF0
 
 
-def skipped_note(path: str, task: str) -> Diagnostic:
-    """RMC735: the encrypted module is checked as the interface its uses show."""
-    return Diagnostic(ENCRYPTED_SKIPPED, f"module {Path(path).name} of task {task} is "
-                      "encrypted: the task is checked without it; what the other modules use "
+def skipped_note(path: str, task: Optional[str]) -> Diagnostic:
+    """RMC735: the encrypted module is checked as the interface its uses show (``task``
+    None: a module given as a file)."""
+    owner = f"task {task}" if task else "the program"
+    what = "the task" if task else "the program"
+    return Diagnostic(ENCRYPTED_SKIPPED, f"module {Path(path).name} of {owner} is "
+                      f"encrypted: {what} is checked without it; what the other modules use "
                       "from it is declared from those uses (stubs, named under assumes:), and "
                       "PERS data it may write is data written from outside",
                       ast.Span(path, 0, 0), severity="note")

@@ -81,13 +81,21 @@ def _enter_handler(m: Machine, depth: int) -> None:
 
 
 def unwind_to(m: Machine, depth: int) -> None:
-    """Pop frames above ``depth``, running their UNDO handlers innermost first."""
+    """Pop frames above ``depth``, running their UNDO handlers innermost first.
+
+    An UNDO handler runs once: when an EXIT inside it unwinds the stack again, the frame
+    beneath its IN_UNDO frame (the routine being undone) is popped without running it anew
+    (before, UNDO -> EXIT -> UNDO ... recursed without end).  Such an EXIT may leave fewer
+    frames than the unwinding that ran the handler expected."""
+    undoing = False
     while len(m.frames) > depth:
         frame = m.frames[-1]
         routine = m.program.routines[frame.routine]
-        if routine.undo_pc >= 0 and frame.mode != IN_UNDO:
+        if routine.undo_pc >= 0 and frame.mode != IN_UNDO and not undoing:
             run_undo(m, frame)
-        m.frames.pop()
+        undoing = frame.mode == IN_UNDO
+        if len(m.frames) > depth:
+            m.frames.pop()
 
 
 def unwind_all(m: Machine) -> None:

@@ -1,0 +1,358 @@
+"""Survey of public programs, task by task: how many reach a verdict (issue 28).
+
+Usage: python bench/survey_programs.py CORPUS [--max-states N] [--cpu S] [--jobs N]
+                                       [--no-stubs] [--list] [--only TEXT] [--json FILE]
+       python bench/survey_programs.py CORPUS --recheck ROWS.json [--outcomes LIST]
+       python bench/survey_programs.py CORPUS --extract MIRRORS
+
+CORPUS holds public repositories, one folder each (``--extract`` fills it from the git
+mirrors ``fetch`` leaves in MIRRORS: the RAPID modules and configuration files of each
+mirror's newest snapshot, one folder per mirror, nothing else).  A *program* is what a
+controller would load and start:
+
+* each task of a controller backup (a folder with ``RAPID/``; ``rapidmc check BACKUP --task
+  FOLDER``);
+* outside backups, the module files of one folder when one of them declares ``PROC main``;
+  a folder where several files declare ``main`` gives a program per such file, with the
+  folder's files that declare none.  A folder of modules without ``main`` is a library:
+  counted apart ("no entry"), never checked.
+
+Programs with the same module texts are counted once.  Each is checked with the default
+properties, ``--max-states`` (20,000) and a limit of ``--cpu`` CPU seconds (20) per
+command, as the surveys of docs/realworld-survey.md; one that stops at names no module
+declares is checked again with the module ``rapidmc stubs`` writes for it.  Outcomes:
+
+* ``verdict``: HOLDS or VIOLATED (exit 0 or 1), with the violated properties;
+* ``unknown``: UNKNOWN at the state bound (exit 3); ``cpu limit``: the limit was reached;
+* ``load error``: exit 2, with its diagnostic codes (after stubs, when they were tried);
+* ``own error``: a load error the survey's reviewed list (``OWN_ERRORS``) gives as the
+  program's own (the controller would refuse it too);
+* ``no entry``: a backup task without its entry routine (RMC211); ``no program``: a task of
+  system modules only (RMC736); ``encrypted``: every module of the program is encrypted;
+* ``internal``: exit 4.
+
+It prints the counts per outcome and per load-error code, and the share of programs reaching
+a verdict among those that can: every program but the encrypted ones, those without program
+or entry, and those with an error of their own.  ``--list`` prints a row per program,
+``--json`` writes the rows; ``--recheck ROWS.json`` reads them back and checks again only
+the programs whose outcome ``--outcomes`` names (default ``load error``; ``none``: reclassify
+with the current ``OWN_ERRORS`` only), keeping the other rows: a fix's effect in minutes
+instead of the whole survey's hour (17 CPU minutes; 62 minutes of wall time on a loaded
+2-core machine).
+"""
+from __future__ import annotations
+
+import argparse
+import hashlib
+import json
+import re
+import resource
+import subprocess
+import sys
+import tempfile
+from collections import Counter
+from concurrent.futures import ThreadPoolExecutor
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from rapidmc.load.backup import MODULE_SUFFIXES, backup_tasks, is_backup
+from rapidmc.load.encrypted import is_encrypted
+
+CONFIG_SUFFIXES = {".cfg", ".txt", ".pgf"}
+ENTRY = re.compile(rb"^\s*(LOCAL\s+)?PROC\s+main\s*\(", re.IGNORECASE | re.MULTILINE)
+EXTRACTED_LIMIT = 4_000_000       # bytes: larger files of a mirror are not RAPID code
+
+# Load errors reviewed as the program's own: the controller refuses the same files (see
+# docs/realworld-survey.md).  Key: a fragment of the program's path and the code.
+OWN_ERRORS = {
+    ("Topsy/Backups/120-502354_BACKUP_2024-08-08", "RMC204"): "two modules declare main",
+    ("abb_communication", "RMC205"): "Present() of a parameter that is not optional",
+    ("Keen1949+ABB_ROBOT_Socket", "RMC205"): "Assemble called with 5 of its 6 arguments",
+    ("PaletizadoCajasConFrascos", "RMC204"): "two files declare MODULE MainModule",
+    ("008_circle_track_v2", "RMC101"): "CommonData\\pStart is no RAPID",
+    ("0-robinson-1+abb-rapid-robotics/exercises", "RMC107"):
+        "011_pick_and_place.mod ends in the middle of a declaration",
+    ("Follansbeast+ABB-IRB-120-Hanoi/src/rapid/", "RMC101"):
+        "the folder's HanoiAlgorithm modules index arrays with [ ], which is no RAPID",
+    ("HOME/1/1_T_ROB", "RMC101"): "MODULE 1_T_ROB1: a name cannot start with a digit",
+    ("SheetformingTODAY", "RMC101"): "instructions after ENDMODULE",
+    ("Stena obluk", "RMC101"): "text after ENDMODULE",
+    ("Expiremental/BG_Module", "RMC101"): "ENDIF; (a semicolon after ENDIF)",
+    ("Expiremental/Test_mod", "RMC101"): "a declaration inside IF, indexing with [ ]",
+    ("Expiremental/multitasking_scripts", "RMC101"): "a text document, not a module",
+    ("ravenorb+abb-robot-welder/RAPID/PROGMOD", "RMC205"):
+        "TPWrite given three positional arguments",
+}
+
+
+@dataclass
+class Program:
+    name: str                  # path under the corpus (and task)
+    command: list[str]         # the files (or BACKUP --task T) given to rapidmc
+    files: list[Path]
+    outcome: str = ""
+    detail: str = ""
+    codes: list[str] = field(default_factory=list)
+    stubbed: bool = False
+    duplicates: int = 0
+
+
+def extract(mirrors: Path, corpus: Path) -> None:
+    """Write each mirror's RAPID and configuration files into ``corpus/<mirror>/``."""
+    for mirror in sorted(p for p in mirrors.iterdir() if (p / "repo").is_dir()):
+        repo = str(mirror / "repo")
+        listing = subprocess.run(["git", "-C", repo, "ls-tree", "-r", "-l", "-z", "HEAD"],
+                                 capture_output=True, check=True).stdout.split(b"\0")
+        wanted = []
+        for entry in filter(None, listing):
+            meta, path = entry.split(b"\t", 1)
+            _, kind, sha, size = meta.split()
+            name = Path(path.decode("utf-8", "replace"))
+            if kind == b"blob" and size.isdigit() and int(size) <= EXTRACTED_LIMIT and \
+                    name.suffix.lower() in MODULE_SUFFIXES | CONFIG_SUFFIXES:
+                wanted.append((sha, name))
+        blobs = subprocess.run(["git", "-C", repo, "cat-file", "--batch"], capture_output=True,
+                               input=b"".join(sha + b"\n" for sha, _ in wanted)).stdout
+        at = 0
+        for _, name in wanted:
+            header_end = blobs.index(b"\n", at)
+            header = blobs[at:header_end].split()
+            at = header_end + 1
+            if len(header) != 3:             # "<sha> missing": the snapshot left it out
+                continue
+            size = int(header[2])
+            target = corpus / mirror.name / name
+            target.parent.mkdir(parents=True, exist_ok=True)
+            target.write_bytes(blobs[at:at + size])
+            at += size + 1
+
+
+def find_programs(corpus: Path) -> tuple[list[Program], list[Program]]:
+    """(programs to check, programs classified without a check), one per distinct text."""
+    backups = sorted(p for p in corpus.rglob("RAPID") if p.is_dir() and _is_backup(p.parent))
+    backup_rapid = {p.resolve() for p in backups}
+    programs: list[Program] = []
+    for rapid in backups:
+        backup = rapid.parent
+        try:
+            tasks = backup_tasks(backup)
+        except Exception:              # a RAPID folder without task folders
+            continue
+        for task in tasks:
+            files = sorted(f for f in task.folder.rglob("*")
+                           if f.is_file() and f.suffix.lower() in MODULE_SUFFIXES)
+            programs.append(Program(f"{backup.relative_to(corpus)} --task {task.folder.name}",
+                                    [str(backup), "--task", task.folder.name], files))
+    folders: dict[Path, list[Path]] = {}
+    for path in sorted(corpus.rglob("*")):
+        if path.is_file() and path.suffix.lower() in MODULE_SUFFIXES and \
+                not any(parent.resolve() in backup_rapid for parent in path.parents):
+            folders.setdefault(path.parent, []).append(path)
+    for folder, files in folders.items():
+        entries = [f for f in files if ENTRY.search(f.read_bytes())]
+        others = [f for f in files if f not in entries]
+        groups = [files] if len(entries) <= 1 else [[entry, *others] for entry in entries]
+        for group in groups:
+            name = str(folder.relative_to(corpus)) if len(groups) == 1 else \
+                str(group[0].relative_to(corpus))
+            programs.append(Program(name, [str(f) for f in group], group))
+    return _distinct(programs)
+
+
+def earlier_rows(path: Path, outcomes: set[str]) -> tuple[list[Program], list[Program]]:
+    """The rows of an earlier ``--json`` run: (those to check again, those kept)."""
+    rows = [Program(**{**row, "files": [Path(f) for f in row["files"]]})
+            for row in json.loads(path.read_text())]
+    again = [row for row in rows if row.outcome in outcomes]
+    for row in again:
+        row.outcome, row.detail, row.codes, row.stubbed = "", "", [], False
+    for row in rows:                 # the reviewed list as it is now
+        _own_error(row)
+    chosen = {id(row) for row in again}
+    return again, [row for row in rows if id(row) not in chosen]
+
+
+def _is_backup(folder: Path) -> bool:
+    """A controller backup: a RAPID folder whose task folders hold SYSMOD or PROGMOD (not a
+    repository's own RAPID folder of loose modules or of backups)."""
+    return is_backup(folder) and any(
+        (task / part).is_dir() for task in (folder / "RAPID").iterdir() if task.is_dir()
+        for part in ("SYSMOD", "PROGMOD", "sysmod", "progmod"))
+
+
+def _distinct(programs: list[Program]) -> tuple[list[Program], list[Program]]:
+    seen: dict[str, Program] = {}
+    to_check, settled = [], []
+    for program in programs:
+        digest = hashlib.sha1(b"".join(sorted(hashlib.sha1(f.read_bytes()).digest()
+                                              for f in program.files))).hexdigest()
+        if digest in seen:
+            seen[digest].duplicates += 1
+            continue
+        seen[digest] = program
+        readable = [f for f in program.files if not is_encrypted(str(f))]
+        if program.files and not readable:
+            program.outcome = "encrypted"
+        elif "--task" not in program.command and \
+                not any(ENTRY.search(f.read_bytes()) for f in program.files):
+            program.outcome, program.detail = "no entry", "library: no module declares main"
+        (settled if program.outcome else to_check).append(program)
+    return to_check, settled
+
+
+def rapidmc(words: list[str], cpu: int) -> tuple[int, dict]:
+    """Exit code and JSON report of one rapidmc command under a CPU limit (-1: reached)."""
+    def limit() -> None:
+        resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 1))
+    done = subprocess.run([sys.executable, "-m", "rapidmc", *words], capture_output=True,
+                          text=True, errors="replace", preexec_fn=limit)
+    if done.returncode < 0:
+        return -1, {}
+    try:
+        return done.returncode, json.loads(done.stdout)
+    except ValueError:
+        return done.returncode, {}
+
+
+def survey(program: Program, options: list[str], cpu: int, stubs: bool) -> Program:
+    check = ["check", *program.command, "--quiet", "--format", "json", *options]
+    code, report = rapidmc(check, cpu)
+    if code == 2 and stubs and _stubbable(report):
+        with tempfile.TemporaryDirectory() as scratch:
+            missing = str(Path(scratch) / "Missing.mod")
+            rapidmc(["stubs", *program.command, "-o", missing], cpu)
+            if Path(missing).is_file():
+                code, report = rapidmc(["check", *_with(program.command, missing), "--quiet",
+                                        "--format", "json", *options], cpu)
+                program.stubbed = True
+    _classify(program, code, report)
+    return program
+
+
+def _stubbable(report: dict) -> bool:
+    return any(e.get("code") in {"RMC201", "RMC202", "RMC203"} for e in report.get("errors", ()))
+
+
+def _with(command: list[str], extra: str) -> list[str]:
+    if "--task" in command:
+        at = command.index("--task")
+        return [*command[:at], extra, *command[at:]]
+    return [*command, extra]
+
+
+def _classify(program: Program, code: int, report: dict) -> None:
+    errors = report.get("errors", [])
+    program.codes = sorted({e.get("code", "?") for e in errors})
+    notes = {w.get("code") for w in report.get("warnings", ())}
+    if code == -1:
+        program.outcome = "cpu limit"
+    elif code in (0, 1) and "RMC736" in notes | set(program.codes):
+        program.outcome = "no program"
+    elif code in (0, 1):
+        violated = [p["name"] for p in report.get("properties", ())
+                    if p.get("verdict") == "VIOLATED"]
+        program.outcome = "verdict"
+        program.detail = "VIOLATED " + ",".join(violated) if violated else "HOLDS"
+    elif code == 3:
+        program.outcome = "unknown"
+    elif code == 2:
+        first = errors[0] if errors else {}
+        program.outcome = "no entry" if "RMC211" in program.codes else "load error"
+        program.detail = f"{first.get('code', '?')}: {first.get('message', '')[:110]}"
+        _own_error(program)
+    else:
+        program.outcome = "internal"
+
+
+def _own_error(program: Program) -> None:
+    """A load error the reviewed list gives as the program's own becomes ``own error``."""
+    own = [reason for (where, rmc), reason in OWN_ERRORS.items()
+           if where in program.name and rmc in program.codes]
+    if program.outcome == "load error" and own:
+        program.outcome, program.detail = "own error", own[0]
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("corpus", type=Path)
+    parser.add_argument("--extract", type=Path, metavar="MIRRORS",
+                        help="first fill CORPUS from the git mirrors in MIRRORS")
+    parser.add_argument("--max-states", default="20000")
+    parser.add_argument("--cpu", type=int, default=20, help="CPU seconds per command")
+    parser.add_argument("--jobs", type=int, default=2)
+    parser.add_argument("--no-stubs", action="store_true")
+    parser.add_argument("--list", action="store_true", help="a row per program")
+    parser.add_argument("--only", default=None, help="only programs whose name holds TEXT")
+    parser.add_argument("--json", type=Path, default=None, help="write every row to FILE")
+    parser.add_argument("--recheck", type=Path, default=None, metavar="JSON",
+                        help="take the rows of an earlier --json run and check again only the "
+                             "programs whose outcome --outcomes names")
+    parser.add_argument("--outcomes", default="load error",
+                        help="with --recheck: the outcomes to check again, comma-separated")
+    args = parser.parse_args()
+    corpus = args.corpus.resolve()
+    if args.extract is not None:
+        extract(args.extract, corpus)
+        return 0
+    if args.recheck is not None:
+        to_check, settled = earlier_rows(args.recheck, set(args.outcomes.split(",")))
+    else:
+        to_check, settled = find_programs(corpus)
+    if args.only:
+        to_check = [p for p in to_check if args.only in p.name]
+        settled = [p for p in settled if args.only in p.name]
+    options = ["--max-states", args.max_states]
+    done = iter(range(1, len(to_check) + 1))
+
+    def one(program: Program) -> Program:
+        survey(program, options, args.cpu, not args.no_stubs)
+        print(f"[{next(done)}/{len(to_check)}] {program.outcome}: {program.name}",
+              file=sys.stderr, flush=True)
+        return program
+
+    with ThreadPoolExecutor(args.jobs) as pool:
+        checked = list(pool.map(one, to_check))
+    report(checked + settled, corpus, args.list)
+    if args.json is not None:
+        args.json.write_text(json.dumps([vars(p) | {"files": [str(f) for f in p.files]}
+                                         for p in checked + settled], indent=1, default=str))
+    return 0
+
+
+OUTSIDE = ("encrypted", "no entry", "no program", "own error")
+
+
+def report(programs: list[Program], corpus: Path, rows: bool) -> None:
+    programs = sorted(programs, key=lambda p: p.name)
+    if rows:
+        for p in programs:
+            stub = " (stubs)" if p.stubbed else ""
+            print(f"{p.outcome + stub:<22} {p.detail[:90]:<60}  {p.name}")
+        print()
+    outcomes = Counter(p.outcome for p in programs)
+    tasks = [p for p in programs if "--task" in p.command]
+    print(f"corpus {corpus}: {len(programs)} distinct programs "
+          f"({len(tasks)} backup tasks, {len(programs) - len(tasks)} module folders); "
+          f"{sum(p.duplicates for p in programs)} duplicates left out")
+    for outcome, count in outcomes.most_common():
+        stubbed = sum(1 for p in programs if p.outcome == outcome and p.stubbed)
+        print(f"  {outcome:<12} {count:>4}" + (f"  ({stubbed} with stubs)" if stubbed else ""))
+    verdicts = [p for p in programs if p.outcome == "verdict"]
+    violated = Counter(name for p in verdicts if p.detail.startswith("VIOLATED")
+                       for name in p.detail.split()[1].split(","))
+    print(f"  verdicts: HOLDS {sum(p.detail == 'HOLDS' for p in verdicts)}, VIOLATED "
+          f"{len(verdicts) - sum(p.detail == 'HOLDS' for p in verdicts)} "
+          f"({', '.join(f'{n} {c}' for n, c in violated.most_common())})")
+    codes = Counter(code for p in programs if p.outcome == "load error" for code in p.codes)
+    if codes:
+        print("  load errors by code (a program counts once per code): " +
+              ", ".join(f"{c} {n}" for c, n in codes.most_common()))
+    eligible = [p for p in programs if p.outcome not in OUTSIDE]
+    share = 100 * len(verdicts) / len(eligible) if eligible else 0
+    print(f"verdict: {len(verdicts)} of {len(eligible)} programs that can reach one "
+          f"({share:.1f} %); of all {len(programs)}: "
+          f"{100 * len(verdicts) / max(len(programs), 1):.1f} %")
+
+
+if __name__ == "__main__":
+    sys.exit(main())
