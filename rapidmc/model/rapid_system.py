@@ -83,6 +83,9 @@ class RapidSystem:
         self._shared: dict[int, tuple] = {}   # state key -> (state, its successors)
         self._keys = StateKeys()
         self.order = plan.order          # ample sets between tasks (reduction.partial_order)
+        if getattr(self.order, "keys", None) is not None:
+            # (its proviso keys the very states this cache does: one memory of their parts)
+            self.order.keys = self._keys
         self._full: Optional["RapidSystem"] = None      # see full_interleaving
 
     @staticmethod

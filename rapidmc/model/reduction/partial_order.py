@@ -62,6 +62,7 @@ from ...semantics.instructions import (Action, Branch, Call, EndRoutine, ForInit
 from ...semantics.library.tasks import SyncWait
 from ...semantics.program import ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE, Program
 from ...semantics.scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA
+from ...semantics.staged_step import task_transitions
 from ...semantics.state import RUNNING, State
 from ...semantics.step import successors as semantic_successors
 from ..state_keys import StateKeys
@@ -199,6 +200,9 @@ class PartialOrder:
     def _goes_on(self, task: int, state: State, config) -> bool:
         """Whether some step of ``task`` from ``state`` changes it: the task does not wait
         there (``fairness.TaskFairness.excused``, for one task)."""
+        found = task_transitions(self.program, state, task, config)
+        if found is not None:       # (the task's own steps: the others' are not needed)
+            return any(transition[2] != state for transition in found)
         name = (TASK_CHOICE, self.names[task])
         return any(name in transition.label and transition.state != state
                    for transition in semantic_successors(self.program, state, config))
