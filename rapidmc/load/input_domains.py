@@ -131,10 +131,13 @@ def _default(signal: Signal, width: Optional[int], reads: "ReadCollector",
         return Assumed(signal, (0.0,), "no statement reads it: one value")
     numbers = sorted(uses.numbers)
     through = f"; followed through {', '.join(uses.through)}" if uses.through else ""
-    if not numbers and uses.sunk:
+    if not numbers and uses.sinks:
         return Assumed(signal, (0.0,), "its value reaches no condition, index, divisor, atom or "
-                       "operation that can fail (only arguments no model evaluates here"
+                       f"operation that can fail (only {' and '.join(uses.sinks)} here"
                        f"{through}): one value")
+    if not numbers and uses.through:
+        return Assumed(signal, (0.0,), f"stored into {', '.join(uses.through)}, which no "
+                       "statement reads: one value")
     indexed = "".join(f", an index of a {n}-element array" for n in sorted(set(uses.indexed)))
     compared = sorted(uses.compared)
     if signal.kind == "GI":

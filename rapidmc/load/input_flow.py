@@ -41,10 +41,13 @@ from ..semantics.library.registry import NO_EFFECT, matched_parameters
 from ..semantics.scope import GLOBAL_DATA, LOCAL_DATA, ROUTINE
 from ..semantics.types import ArrayType
 
-# routines that read the robot's position, tool or work object back (ROBOT_PARTS, and those
-# computing from the joints): a target that depends on an input is then observed
-ROBOT_READERS = frozenset(ROBOT_PARTS) | {"CALCJOINTT", "MOVEEXTJ", "GETSYSDATA", "ATTARGET"}
-MOVE_TARGETS = frozenset({"TOPOINT", "CIRPOINT"})
+# what reads the robot's position, tool or work object back: ROBOT_PARTS (CRobT, CPos,
+# CJointT, CTool, CWObj) may, when their value too only shapes moves' targets; CalcJointT
+# (it may fail) and GetSysData never may
+ROBOT_READERS = frozenset(ROBOT_PARTS) | {"CALCJOINTT", "GETSYSDATA"}
+MOVE_TARGETS = frozenset({"TOPOINT", "CIRPOINT", "TOJOINTPOS"})
+UNEVALUATED = "arguments no model evaluates"    # kinds of sink (Uses.sinks)
+TARGETS = "moves' targets"
 MAX_INDEXED = 64              # an index of a bigger array: too many classes to branch over
 INERT_OPS = ("+", "-", "*")   # operations that cannot fail on a num read (no divisor)
 NUMERIC = ("NUM", "DNUM")     # types of data a raw value may be stored in and followed
@@ -60,7 +63,12 @@ class Uses:
     refusal: Optional[str] = None               # the first use that allows no default
     through: list = field(default_factory=list)  # names of the data followed, in order
     indexed: list = field(default_factory=list)  # sizes of arrays the value indexes
-    sunk: bool = False                          # a use reaches only a sink
+    sinks: list = field(default_factory=list)   # kinds of sink uses reach ("moves' targets")
+
+    def sunk(self, kind: str) -> bool:
+        if kind not in self.sinks:
+            self.sinks.append(kind)
+        return True
 
 
 Place = tuple   # (Symbol, routine index or None): data that holds the value
@@ -127,53 +135,106 @@ class InputFlow:
                 self._follow(place, uses, integral, classify, seen)
                 return
         if self.sink(read, uses, seen):
-            uses.sunk = True
             return
         uses.refusal = _at(read, found)
 
     def sink(self, read: Read, uses: Uses, seen: set) -> bool:
         """Whether the value read at ``read`` reaches nothing that can tell values apart:
         through ``+ - *`` and unary minus only into an argument no model evaluates, or
-        into data whose every read is such an argument.  A condition, index, divisor,
-        atom or operation that can fail is never a sink."""
-        node, parents = _unwrapped(read.node, list(read.parents))
-        while parents and (isinstance(parents[-1], ast.Binary) and parents[-1].op in INERT_OPS
-                           or isinstance(parents[-1], ast.Unary) and parents[-1].op == "-"):
-            node = parents.pop()
+        into data whose every read is such an argument; or into moves' targets only, when
+        nothing reads the robot's position but to move again (``robot_unobserved``).  A
+        condition, index, divisor, atom or operation that can fail is never a sink."""
+        node, parents = _inert_result(*_unwrapped(read.node, list(read.parents)))
         parent = parents[-1] if parents else None
-        if isinstance(parent, ast.Argument) and len(parents) >= 4 and \
-                isinstance(parents[-2], ast.FunctionCall) and parents[-2].name.key == "OFFS" \
-                and read.scope.lookup("OFFS") is None and parents[-2].args[0] is not parent \
-                and isinstance(parents[-3], ast.Argument) and \
-                isinstance(parents[-4], ast.ProcedureCall):
-            return self._robot_target(parents[-4], parents[-3], read.scope)
+        if self._shapes_target(node, parents, read.scope):
+            return self.robot_unobserved() and uses.sunk(TARGETS)
         if isinstance(parent, ast.Argument) and len(parents) >= 2 and \
                 isinstance(parents[-2], ast.ProcedureCall):
-            return unevaluated_argument(parents[-2], parent, read.scope)
+            return unevaluated_argument(parents[-2], parent, read.scope) and \
+                uses.sunk(UNEVALUATED)
         if isinstance(parent, ast.Assignment) and parent.value is node:
             place = self._place(_base(parent.target), read, any_type=True)
-            return place is not None and self._sink_place(place, uses, seen)
+            if place is None:
+                return False
+            if self._sink_place(place, uses, seen):
+                return uses.sunk(UNEVALUATED)
+            if self._target_place(place, set()) and self.robot_unobserved():
+                if place[0].name not in uses.through:
+                    uses.through.append(place[0].name)
+                return uses.sunk(TARGETS)
         return False
 
-    def _robot_target(self, call: ast.ProcedureCall, argument: ast.Argument, scope) -> bool:
-        """Whether ``argument`` is the target of a predefined move and nothing reads the
-        robot's position back."""
-        if call.name.key not in MOVE_ROUTINES or scope.lookup(call.name.key) is not None:
+    # --- moves' targets ----------------------------------------------------------------------
+
+    def _shapes_target(self, node, parents: list, scope) -> bool:
+        """Whether the value of ``node`` only becomes (part of) a predefined move's target:
+        its target argument, or an argument of ``Offs`` whose result does."""
+        parent = parents[-1] if parents else None
+        if not isinstance(parent, ast.Argument) or len(parents) < 2:
+            return False
+        call = parents[-2]
+        if scope.lookup(call.name.key) is not None:            # the program's own routine
+            return False
+        if isinstance(call, ast.FunctionCall) and call.name.key == "OFFS":
+            return self._shapes_target(call, parents[:-2], scope)
+        if not isinstance(call, ast.ProcedureCall) or call.name.key not in MOVE_ROUTINES:
             return False
         entry = lookup_procedure(call.name.key)
         for arg, parameter in matched_parameters(call.args, entry.signature.parameters):
-            if arg is argument:
-                return parameter is not None and parameter.key in MOVE_TARGETS and \
-                    not self.robot_observed and not self._reads_robot()
+            if arg is parent:
+                return parameter is not None and parameter.key in MOVE_TARGETS
         return False
 
-    def _reads_robot(self) -> bool:
+    def _target_place(self, place: Place, seen: set) -> bool:
+        """Data (a robtarget, a jointtarget, a num) whose every read only shapes moves'
+        targets: whole or by components, through ``+ - *``, as a target or an ``Offs``
+        argument, or stored into such data (itself included)."""
+        symbol, _ = place
+        if symbol.by_reference or symbol.storage != "VAR" or \
+                isinstance(symbol.type, ArrayType):
+            return False
+        if place in seen:
+            return True
+        seen.add(place)
+        for read in self.reads().get(place, ()):
+            node, parents = _inert_result(*_components(read.node, list(read.parents)))
+            parent = parents[-1] if parents else None
+            if self._shapes_target(node, parents, read.scope):
+                continue
+            if isinstance(parent, ast.Assignment) and parent.value is node:
+                into = self._place(_base(parent.target), read, any_type=True)
+                if into is not None and self._target_place(into, seen):
+                    continue
+            return False
+        return True
+
+    def robot_unobserved(self) -> bool:
+        """Whether no property's atom reads a robot and the code reads a robot's position
+        only to move it again (``pos := CRobT(); pos.trans.z := pos.trans.z - 250;
+        MoveL pos, ...``): where it went then tells no behaviour apart."""
+        if self.robot_observed:
+            return False
         if self._robot_read is None:
-            self._robot_read = any(
-                isinstance(node, (ast.FunctionCall, ast.ProcedureCall))
-                and node.name.key in ROBOT_READERS
-                for routine in self.routines for node, _ in ast.walk(routine.ast))
-        return self._robot_read
+            self._robot_read = not all(self._reader_only_moves(node, parents, routine)
+                                       for routine in self.routines
+                                       for node, parents in ast.walk(routine.ast)
+                                       if isinstance(node, (ast.FunctionCall, ast.ProcedureCall))
+                                       and node.name.key in ROBOT_READERS)
+        return not self._robot_read
+
+    def _reader_only_moves(self, call, parents: tuple, routine) -> bool:
+        if not isinstance(call, ast.FunctionCall) or call.name.key not in ROBOT_PARTS or \
+                routine.scope.lookup(call.name.key) is not None:
+            return False
+        node, parents = _inert_result(*_components(call, list(parents)))
+        parent = parents[-1] if parents else None
+        if self._shapes_target(node, parents, routine.scope):
+            return True
+        if isinstance(parent, ast.Assignment) and parent.value is node:
+            read = Read(node, tuple(parents), routine.scope, routine)
+            place = self._place(_base(parent.target), read, any_type=True)
+            return place is not None and self._target_place(place, set())
+        return False
 
     # --- data that holds the value --------------------------------------------------------
 
@@ -348,6 +409,35 @@ def unevaluated_argument(call: ast.ProcedureCall, argument: ast.Argument, scope)
             return unevaluated or (call.name.key in MOVE_ROUTINES and
                                    parameter.key in UNEVALUATED_BY_MOVES)
     return False
+
+
+def _inert_result(node, parents: list) -> tuple:
+    """The outermost expression ``node``'s value goes into through operations that cannot
+    fail on it: ``+ - *``, unary minus, and division by a number literal other than 0."""
+    while parents:
+        parent = parents[-1]
+        if isinstance(parent, ast.Binary) and (
+                parent.op in INERT_OPS or parent.op == "/" and parent.left is node
+                and isinstance(parent.right, ast.NumLiteral) and _nonzero(parent.right)) \
+                or isinstance(parent, ast.Unary) and parent.op == "-":
+            node = parents.pop()
+        else:
+            break
+    return node, parents
+
+
+def _nonzero(literal: ast.NumLiteral) -> bool:
+    try:
+        return float(literal.value) != 0
+    except (TypeError, ValueError):
+        return False
+
+
+def _components(node, parents: list) -> tuple:
+    """``pos.trans.z`` for a read of ``pos`` there: a part of the same data."""
+    while parents and isinstance(parents[-1], ast.Component) and parents[-1].base is node:
+        node = parents.pop()
+    return node, parents
 
 
 def _unwrapped(node, parents: list) -> tuple:
