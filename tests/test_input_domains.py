@@ -379,6 +379,17 @@ def test_a_speed_percentage_that_only_moves_read_takes_one_value(tmp_path):
     # the stored code is computed with before it is used
     (PART_CODE.replace("taken{code} := TRUE;", "taken{code + 1} := TRUE;"),
      "prog.mod:12:15 is an operand of '+'"),
+    # a call by a computed name may pass other data for the INOUT parameter
+    (PART_CODE.replace("      ready := ChoosePart(code);\n",
+                       "      ready := ChoosePart(code);\n      %\"Grab\"% spare;\n"
+                       "      picked := spare * 2 / spare;\n")
+     .replace("    VAR bool ready;\n", "    VAR bool ready;\n    VAR num spare;\n")
+     .replace("ENDMODULE", "  PROC Grab(INOUT num n)\n    n := gi_code;\n  ENDPROC\nENDMODULE"),
+     "called by a name computed at run time"),
+    # data read by a computed name: a value stored anywhere may be read unseen
+    (PART_CODE.replace("        picked := picked + 1;\n",
+                       "        picked := picked + 1;\n        GetDataVal \"code\", picked;\n"),
+     "'gi_code' at "),
     # a PERS receives the code: another task may read it
     (PART_CODE.replace("    VAR num code;\n", "").replace(
         "VAR num picked := 0;", "VAR num picked := 0;\n  PERS num code := 0;"),

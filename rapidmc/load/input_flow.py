@@ -46,6 +46,8 @@ from ..semantics.types import ArrayType
 # (it may fail) and GetSysData never may
 ROBOT_READERS = frozenset(ROBOT_PARTS) | {"CALCJOINTT", "GETSYSDATA"}
 MOVE_TARGETS = frozenset({"TOPOINT", "CIRPOINT", "TOJOINTPOS"})
+# data reached by a name computed at run time: a value stored there may be read unseen
+BY_NAME = frozenset({"GETDATAVAL", "SETDATAVAL", "SETALLDATAVAL"})
 UNEVALUATED = "arguments no model evaluates"    # kinds of sink (Uses.sinks)
 TARGETS = "moves' targets"
 MAX_INDEXED = 64              # an index of a bigger array: too many classes to branch over
@@ -97,6 +99,8 @@ class InputFlow:
         self.robot_observed = robot_observed     # a property's atom reads a robot
         self._reads: Optional[dict] = None
         self._robot_read: Optional[bool] = None
+        self._by_name = False           # data is read by a computed name somewhere
+        self._late_calls = False        # a routine is called by a computed name somewhere
 
     # --- the uses of a value --------------------------------------------------------------
 
@@ -275,6 +279,9 @@ class InputFlow:
         """The data ``target`` (a name) denotes, when the analysis may follow it."""
         if not isinstance(target, ast.NameRef):
             return None
+        self.reads()
+        if self._by_name:
+            return None
         symbol = read.scope.lookup(target.name.key)
         if symbol is None or symbol.kind not in (GLOBAL_DATA, LOCAL_DATA):
             return None
@@ -325,6 +332,10 @@ class InputFlow:
         if not (symbol.kind == LOCAL_DATA and symbol.storage in ("VAR", "INOUT")
                 and symbol.by_reference) or routine_index is None:
             return []
+        if self._late_calls:            # a call by a computed name may pass any data
+            uses.refusal = f"'{symbol.name}' is a by-reference parameter, and a routine is " \
+                "called by a name computed at run time (%...%), which may pass any data"
+            return []
         places = []
         for read in self._calls_of(routine_index):
             call = read.node
@@ -352,6 +363,10 @@ class InputFlow:
             self._calls = {}
             for routine in self.routines:
                 for node, parents in ast.walk(routine.ast):
+                    if isinstance(node, ast.LateBindingCall):
+                        self._late_calls = True
+                    if isinstance(node, ast.ProcedureCall) and node.name.key in BY_NAME:
+                        self._by_name = True
                     if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
                         callee = self._own_routine(node, routine.scope)
                         if callee is not None:
