@@ -30,7 +30,9 @@ def _weld_move(calls, compiler, call, entry):
     return move_robot(calls, compiler, call, entry, "ToPoint")
 
 
-compiled("ArcRefresh()", modelled=NO_EFFECT)(no_effect)
+# ArcRefresh applies changed weld data at once; the optional tuning arguments are those an
+# add-in's welding code (a public RobotWare add-in, survey of issue 28) passes
+compiled("ArcRefresh(\\num WeldSpeed \\num WeaveWidth)", modelled=NO_EFFECT)(no_effect)
 
 
 # --- reference coverage (issue 8, item 1): the weld moves of robots 1 and 2 (MultiMove) ------

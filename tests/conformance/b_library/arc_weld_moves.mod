@@ -1,6 +1,7 @@
 MODULE MainModule
   ! Tests: arc weld moves (ArcLStart, ArcL with \Weave, ArcCEnd) move the robot as MoveL
-  ! and MoveC do; the welding process is not modelled.
+  ! and MoveC do; the welding process is not modelled (ArcRefresh, with or without
+  ! its tuning arguments, has no effect).
   TASK PERS seamdata seam1:=[0.5,0.5,[5,0,24,120,0,0,0,0,0],0.5,1,10,0,5,[5,0,24,120,0,0,0,0,0],0,1,[5,0,24,120,0,0,0,0,0],0,0,[0,0,0,0,0,0,0,0,0],0];
   TASK PERS welddata weld1:=[6,0,[5,0,24,120,0,0,0,0,0],[0,0,0,0,0,0,0,0,0]];
   TASK PERS weavedata weave1:=[1,0,3,4,0,0,0,0,0,0,0,0,0,0,0];
@@ -11,6 +12,8 @@ MODULE MainModule
   PROC main()
     ArcLStart p10, v100, seam1, weld1, fine, tWeldGun;
     ArcL p20, v100, seam1, weld1 \Weave:=weave1, z1, tWeldGun \WObj:=wobj0;
+    ArcRefresh;
+    ArcRefresh \WeldSpeed:=12, \WeaveWidth:=3;
     ArcCEnd p20, p30, v100, seam1, weld1, fine, tWeldGun;
     TPWrite "weld done at x=" \Num:=CPos(\Tool:=tWeldGun).x;
   ENDPROC
