@@ -64,11 +64,14 @@ def report(folder: Path, top: int, tests: int) -> None:
     modules: collections.Counter = collections.Counter()
     counts: collections.Counter = collections.Counter()
     each, processes = [], 0.0
-    for path in folder.glob("*.jsonl"):
+    paths = list(folder.glob("*.jsonl"))
+    workers = any(not path.name.startswith("main-") for path in paths)
+    for path in paths:
         for line in path.read_text(encoding="utf-8").splitlines():
             record = json.loads(line)
             if not record["test"]:
-                processes += record["cpu"]
+                # under xdist the controller's children are the workers: counted once
+                processes += 0.0 if workers and path.name.startswith("main-") else record["cpu"]
                 continue
             module = record["test"].split("::")[0]
             modules[module] += record["cpu"]
