@@ -54,8 +54,11 @@ def test_generated_programs_have_the_same_coverage_and_vacuity(tmp_path):
         program.write_text(random_program(seed))
         spec = tmp_path / f"props{seed}.ltl"
         spec.write_text("\n".join(properties(seed, with_next=False)) + "\n")
+        # each of these programs' searches ends within 600 states, merged or not, but for
+        # seed 52's, which no bound up to 20,000 completes: bounded, it reports no coverage
+        # nor vacuity to compare, so a bound of 2,000 loses no comparison
         merged_somewhere += assert_same_facts(
-            [str(program), "--ltl", str(spec), "--max-states", "20000"])
+            [str(program), "--ltl", str(spec), "--max-states", "2000"])
     assert merged_somewhere >= 20                # the comparison is not between equal searches
 
 
