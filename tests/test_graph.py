@@ -27,7 +27,7 @@ READERS = {".graphml": nx.read_graphml, ".gexf": nx.read_gexf, ".dot": read_dot}
 
 
 def graph_argv(case, output: Path) -> list[str]:
-    argv = ["graph", "prog.mod"]
+    argv = ["graph", "prog.mod", *sorted(p.name for p in case.folder.glob("*.sys"))]
     if (case.folder / "env.mod").exists():
         argv += ["--env", "env.mod"]
     if (case.folder / "props.ltl").exists():

@@ -129,7 +129,9 @@ def test_stubs_shape_a_missing_type_declared_with_nested_aggregates(tmp_path):
 
 def test_signals_named_with_the_kind_last_are_configured_signals():
     program = HERE / "line_selector.mod"
-    code, _, err = cli("check", program, "--quiet")
+    code, _, err = cli("check", program, "--quiet")     # nothing reads nLine: one value
+    assert code == 0 and "Line_Gi: values 0 (stored into nLine, which no statement reads" in err
+    code, _, err = cli("check", program, "--quiet", "--formula", 'line: G !"nLine = 7"')
     assert code == 2 and "free GI input 'Line_Gi' needs a finite set of values" in err
     code, out, err = cli("check", program, "--quiet", "--input-domain", "Line_Gi=2,3",
                          "--formula", 'line: G ("Ended()" -> "nLine = 2 OR nLine = 3")',
