@@ -503,11 +503,8 @@ def test_a_pick_position_the_code_or_a_property_can_observe_has_no_default(tmp_p
     assert "no default" in _refusal_notes(tmp_path, text, props)
 
 
-def test_a_position_read_back_only_to_move_again_leaves_the_default(tmp_path):
-    """Survey (nine versions of one public program): the robot's position is read back, moved
-    down by a height from a group input and moved to; joints are read, turned and moved to.
-    Nothing but moves sees where the robot is."""
-    text = CAMERA_PICK.replace("      parts := parts + 1;\n", """      here := CRobT();
+# the robot's position and joints read back, shifted by the inputs and moved to again
+READ_BACK = CAMERA_PICK.replace("      parts := parts + 1;\n", """      here := CRobT();
       here.trans.z := here.trans.z - 250 - GInput(gi_x) / 10;
       MoveL here, v100, fine, tool0;
       joints := CJointT();
@@ -516,6 +513,13 @@ def test_a_position_read_back_only_to_move_again_leaves_the_default(tmp_path):
       parts := parts + 1;
 """).replace("  VAR num parts := 0;\n", "  VAR num parts := 0;\n  VAR robtarget here;\n"
              "  VAR jointtarget joints;\n")
+
+
+def test_a_position_read_back_only_to_move_again_leaves_the_default(tmp_path):
+    """Survey (nine versions of one public program): the robot's position is read back, moved
+    down by a height from a group input and moved to; joints are read, turned and moved to.
+    Nothing but moves sees where the robot is."""
+    text = READ_BACK
     model = api.prepare(_load(tmp_path, text), [])
     assert {a.signal.name: a.values for a in model.assumed} == {"GI_X": (0.0,), "GI_Y": (0.0,)}
 
@@ -527,15 +531,7 @@ def test_a_position_read_back_only_to_move_again_leaves_the_default(tmp_path):
     ("joints := CJointT();", "joints := CalcJointT(here, tool0);"),  # may fail: out of reach
 ])
 def test_a_position_read_back_and_observed_has_no_default(tmp_path, change):
-    text = CAMERA_PICK.replace("      parts := parts + 1;\n", """      here := CRobT();
-      here.trans.z := here.trans.z - 250 - GInput(gi_x) / 10;
-      MoveL here, v100, fine, tool0;
-      joints := CJointT();
-      joints.robax.rax_4 := joints.robax.rax_4 + gi_y * 2;
-      MoveAbsJ joints, v100, fine, tool0;
-      parts := parts + 1;
-""").replace("  VAR num parts := 0;\n", "  VAR num parts := 0;\n  VAR robtarget here;\n"
-             "  VAR jointtarget joints;\n").replace(*change)
+    text = READ_BACK.replace(*change)
     assert "no default" in _refusal_notes(tmp_path, text, [])
 
 
