@@ -177,6 +177,8 @@ class InputFlow:
         if not isinstance(parent, ast.Argument) or len(parents) < 2:
             return False
         call = parents[-2]
+        if not isinstance(call, (ast.ProcedureCall, ast.FunctionCall)):   # %name% args
+            return False
         if scope.lookup(call.name.key) is not None:            # the program's own routine
             return False
         if isinstance(call, ast.FunctionCall) and call.name.key == "OFFS":
