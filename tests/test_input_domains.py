@@ -539,3 +539,25 @@ def _refusal_notes(tmp_path, text: str, properties) -> str:
     with pytest.raises(UserError) as caught:
         api.prepare(_load(tmp_path, text), properties, api.CheckOptions())
     return " ".join(note for d in caught.value.diagnostics for note in d.notes)
+
+
+# --- review of session 5: an operation that may leave the range of num can fail ----------
+
+@pytest.mark.parametrize("scaled, default", [
+    ("AInput(ai_speed) * 0.5 + 100", True),     # at most half the largest num, plus 100
+    ("-AInput(ai_speed) / 2", True),
+    ("AInput(ai_speed) * 10", False),           # the largest num times 10: ERR_NUM_LIMIT
+    ("AInput(ai_speed) + 2E38", False),
+    ("AInput(ai_speed) / 0.5", False),
+    ("AInput(ai_speed) * MaxRobSpeed()", False),  # its fixed reading, 5000
+])
+def test_an_analog_value_scaled_beyond_the_num_range_has_no_default(tmp_path, scaled, default):
+    text = SPEED_PERCENT.replace("signalgi gi_speed", "signalai gi_speed") \
+        .replace("MaxRobSpeed() / 100 * gi_speed", scaled.replace("ai_speed", "gi_speed")) \
+        .replace("MaxRobReorientSpeed() / 100 * GInput(gi_speed) * 0.2", "100") \
+        .replace("speed \\V:=gi_speed * 2", "speed")
+    if default:
+        [assumed] = api.prepare(_load(tmp_path, text), []).assumed
+        assert assumed.values == (0.0,)
+    else:
+        assert "is an operand of" in _refusal(tmp_path, text)
