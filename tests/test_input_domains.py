@@ -265,7 +265,7 @@ SPEED_ONLY = """MODULE M
   PROC main()
     AliasIO "GI_CODE", gi_speed;
     VelSet GInput(gi_speed) * 2 - 1, 5000;
-    SpeedRefresh gi_speed;
+    AccSet gi_speed, 100;
     x := 1;
   ENDPROC
 ENDMODULE
@@ -276,6 +276,15 @@ def test_an_input_that_reaches_only_routines_with_no_effect_takes_one_value(tmp_
     model = api.prepare(_load(tmp_path, SPEED_ONLY), [])
     [assumed] = model.assumed
     assert assumed.values == (0.0,) and "reaches no condition" in assumed.reason
+
+
+def test_an_override_given_to_speed_refresh_is_compared_with_its_limits(tmp_path):
+    """SpeedRefresh raises ERR_SPEED_REFRESH_LIM outside 0-100 %: the value is compared with
+    0 and 100 (review of session 5; before, SpeedRefresh had no effect: one value)."""
+    text = SPEED_ONLY.replace("    AccSet gi_speed, 100;\n", "    SpeedRefresh gi_speed;\n")
+    [assumed] = api.prepare(_load(tmp_path, text), []).assumed
+    assert assumed.values == (0.0, 1.0, 99.0, 100.0, 101.0)
+    assert "only compared with 0, 100" in assumed.reason
 
 
 @pytest.mark.parametrize("use, found", [
