@@ -18,7 +18,10 @@ loaded module says for sure:
   (``load.shared_data.data_uses`` says what each task reads and writes);
 * **digital outputs no loaded code sets**: read back, they take either value
   (``load.outside_outputs``: a system output, a cross-connection, a task not
-  loaded).
+  loaded);
+* **interrupts not modelled**: an instruction ordering one that the check models with
+  no effect (ISignalAI, IError, TriggInt ...: ``tried_inputs.unmodelled_interrupt_orders``)
+  never interrupts the program, so its TRAP never runs.
 
 ``assumptions(program)`` lists them once; ``touched(assumption list, result)``
 keeps those a counterexample executes a statement of (the names each executed
@@ -41,8 +44,10 @@ from ..load.shared_data import data_uses, writes_data_by_name
 from ..check.result import VIOLATED
 from ..semantics.program import ENVIRONMENT_NAMESPACE, PROGRAM_NAMESPACE, Program
 from .fixed_readings import fixed_readings
+from .tried_inputs import unmodelled_interrupt_orders
 
 STUB, READING, OTHER_WRITER = "stub", "fixed reading", "other writer"
+NO_INTERRUPT = "interrupt not modelled"
 _IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 _STRING_OR_COMMENT = re.compile(r'"(?:[^"]|"")*"|!.*$')
 _HEAD_END = re.compile(r";|\b(?:THEN|DO|CASE|DEFAULT)\b", re.IGNORECASE)
@@ -52,7 +57,7 @@ _HEAD_END = re.compile(r";|\b(?:THEN|DO|CASE|DEFAULT)\b", re.IGNORECASE)
 class Assumption:
     """One thing a verdict may rest on: its kind, the name it is about, and a sentence."""
 
-    kind: str                 # STUB, READING, OTHER_WRITER
+    kind: str                 # STUB, READING, OTHER_WRITER, NO_INTERRUPT
     name: str
     text: str
 
@@ -71,6 +76,11 @@ def assumptions(program: Program) -> tuple[Assumption, ...]:
                          f"output {signal.name} is set outside the loaded code, by "
                          f"{signal.outside}; its reads take 0 or 1")
               for signal in program.signals if signal.outside]
+    found += [Assumption(NO_INTERRUPT, call.name.text,
+                         f"the interrupt {call.name.text} orders at "
+                         f"{Path(call.span.file).name}:{call.span.line} never comes: the check "
+                         "does not model it, so the TRAP it would run does not run")
+              for call in unmodelled_interrupt_orders(program)]
     return tuple(found)
 
 
