@@ -343,7 +343,7 @@ class Wait(Instruction):
     step where it would block; in ``run`` mode, virtual time decides.
     """
 
-    __slots__ = ("condition", "timeout", "flag_ref", "what")
+    __slots__ = ("condition", "timeout", "flag_ref", "what", "machine")
 
     def __init__(self, span, condition, timeout=None, flag_ref=None, what="condition"):
         super().__init__(span)
@@ -351,6 +351,10 @@ class Wait(Instruction):
         self.timeout = timeout
         self.flag_ref = flag_ref
         self.what = what
+        # what the step machine needs to run the wait (``model.packed.bytecode``), or
+        # None: the condition's and the \MaxTime's ``Compiled`` with sources (None: no
+        # \MaxTime), the store slot of the \TimeFlag (None: none)
+        self.machine = None
 
     def run(self, m: Machine) -> None:
         if self.condition(m):
