@@ -126,9 +126,10 @@ def test_the_machine_steps_one_task_of_several_as_python_does(seed, tmp_path, mo
     assert sum(table.counts()["task_machine_steps"] for table in tables) > 0
 
 
-# programs of several tasks whose waits and barriers the machine steps (WaitUntil with
-# and without \MaxTime and \TimeFlag, WaitSyncTask from a PERS task list): a
-# task backup (tests/task_backups) or a check case (tests/check) with its arguments
+# programs of several tasks whose waits, barriers and socket set-up the machine steps
+# (WaitUntil with and without \MaxTime and \TimeFlag, WaitSyncTask from a PERS task
+# list, SocketCreate/Bind/Listen/Close): a task backup (tests/task_backups), a check case
+# (tests/check) or a program of tests/step_machine_tasks, with its arguments
 WAITING_TASKS = {
     "sync_both": ["task_backups/sync_both/backup", "--ltl", "task_backups/sync_both/props.ltl"],
     "sync_skip": ["task_backups/sync_skip/backup"],
@@ -138,6 +139,9 @@ WAITING_TASKS = {
     "logger_time_out": ["check/tasks_logger_time_out/prog.mod", "--add-task",
                         "check/tasks_logger_time_out/logger.mod", "--no-socket-timeouts",
                         "--socket-messages", "run", "--socket-messages", "home"],
+    # sockets set up and closed (the machine's writes of constants), one in the wrong state
+    "sockets": ["step_machine_tasks/sockets/sockets.mod", "--add-task",
+                "step_machine_tasks/sockets/phases.mod"],
 }
 
 

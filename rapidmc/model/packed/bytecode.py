@@ -13,9 +13,10 @@ arithmetic helpers), and whatever else a source holds (a function call,
 string concatenation) compiles to ``UNSUPPORTED``: the machine gives up at
 that block and the search asks the Python step, which is the reference.
 
-Waits and barriers compile too (``_wait_block``, ``_sync_block``): run only as one
-task's step among several (TASK_ONLY), a try that does not pass is an idle step
-(WAIT), as ``Wait.run`` and ``library.tasks._barrier`` leave the task waiting.
+Waits, barriers and writes of constants (a socket's state) compile too
+(``Instruction.machine``, ``_task_block``): run only as one task's step among several
+(TASK_ONLY), a try that does not pass is an idle step (WAIT), as ``Wait.run`` and
+``library.tasks._barrier`` leave the task waiting.
 
 Atoms (``model.fused_atoms``) compile the same way, each between
 ``ATOM_BEGIN`` and ``ATOM_END`` (a RAPID error makes the atom false).
@@ -32,7 +33,8 @@ from array import array
 from typing import Callable, Optional
 
 from ...semantics.fused_step import block_targets, routine_fused
-from ...semantics.instructions import Action, Branch, ForInit, ForNext, Jump, TestDispatch, Wait
+from ...semantics.instructions import (
+    Action, Branch, ConstantWrite, ForInit, ForNext, Jump, TestDispatch, Wait)
 
 # opcodes, in the order of _packed.c's enum (from 1)
 OPCODES = ("CONST LOAD_STORE LOAD_LOCAL READ READ_DYN ADD SUB MUL DIVIDE TO_NUM TO_DNUM "
@@ -203,10 +205,8 @@ class RoutineCode:
                 continue
             expressions = ExpressionCode(value_id, {}, store_length)
             try:
-                if type(instruction) is Wait:
-                    block = _wait_block(instruction, expressions)
-                elif waits:
-                    block = _sync_block(instruction, value_id, initial_store)
+                if waits:
+                    block = _task_block(instruction, expressions, initial_store, config)
                 else:
                     block = _block(instruction, expressions, skipped)
             except Unsupported:
@@ -262,6 +262,33 @@ def _block(instruction, expressions: ExpressionCode, skipped: frozenset) -> Opti
 # idle step, which the machine keeps or drops as ``idle_steps_dropped`` does).  Their
 # blocks begin with TASK_ONLY: a program of one task steps them in Python (its general
 # step may merge runs there).
+def _task_block(instruction, expressions: ExpressionCode, initial_store, config) -> list[int]:
+    """The code of an instruction the machine runs only as one task's step among several
+    (``Instruction.machine``)."""
+    plan = instruction.machine
+    if type(instruction) is Wait:
+        return _wait_block(instruction, expressions)
+    if isinstance(plan, ConstantWrite):
+        return _constant_write_block(instruction, expressions.value_id, config)
+    return _sync_block(instruction, expressions.value_id, initial_store)
+
+
+def _constant_write_block(instruction, value_id: Callable[[object], int], config) -> list[int]:
+    """A ``ConstantWrite``: its slot checked against the values it requires (another:
+    REQUIRE gives the step to Python), then set."""
+    plan = instruction.machine
+    if plan.setup_choice and getattr(config, "socket_setup_failures", False):
+        raise Unsupported("a setup failure may be chosen")
+    code = [OP["TASK_ONLY"]]
+    for value in plan.required[:1]:
+        code += [OP["LOAD_STORE"], plan.slot, OP["CONST"], value_id(value), OP["EQ"],
+                 OP["REQUIRE"]]
+    if len(plan.required) > 1:
+        raise Unsupported("several values required")
+    return code + [OP["CONST"], value_id(plan.value), OP["SET_STORE"], plan.slot,
+                   OP["GOTO"], instruction.next]
+
+
 def _wait_block(instruction, expressions: ExpressionCode) -> list[int]:
     """``Wait.run``: the condition; where it holds the \\TimeFlag cleared and on; else,
     with \\MaxTime, its value computed, then the choice whether the wait times out

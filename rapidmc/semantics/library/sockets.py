@@ -20,7 +20,7 @@ from ...diagnostics import INPUT_EXHAUSTED, UNSUPPORTED, error
 from .. import rawbytes, values
 from ..errors import RapidError
 from ..expressions import Compiled
-from ..instructions import Action
+from ..instructions import Action, ConstantWrite
 from ..types import NUM
 from .arguments import Arguments, argument_expression
 from .data import PREDEFINED_DATA
@@ -133,7 +133,8 @@ TRANSITIONS = {
           "SocketClose(VAR socketdev Socket)")
 def _socket_transition(calls, compiler, call, entry):
     """Moves a socket from the state the instruction needs to the one it leaves."""
-    socket = Arguments(calls, compiler, call, entry).fn("Socket")
+    arguments = Arguments(calls, compiler, call, entry)
+    socket = arguments.fn("Socket")
     wanted, new = TRANSITIONS[call.name.key]
     name = call.name.text
 
@@ -148,7 +149,12 @@ def _socket_transition(calls, compiler, call, entry):
                 == ADDRESS_IN_USE:
             raise RapidError(ADDRESS_IN_USE, f"{name}: the address and port are in use")
         m.write_ref(ref, (new, b""))
-    return Action(call.span, act)
+    action = Action(call.span, act)
+    ref = arguments.global_reference("Socket")
+    if ref is not None:             # (the step machine's: a socket with no data pending)
+        action.machine = ConstantWrite(ref[1], () if wanted is None else ((wanted, b""),),
+                                       (new, b""), binds)
+    return action
 
 
 def _setup_failures(m) -> bool:

@@ -228,11 +228,7 @@ class SyncWait(ControlAction):
     ``times_out``: it has a ``\\TimeOut`` (it never waits forever); ``machine``: a
     ``SyncPlan`` when the step machine may run it (``model.packed.bytecode``), else None."""
 
-    __slots__ = ("missing", "times_out", "machine")
-
-    def __init__(self, span, fn):
-        super().__init__(span, fn)
-        self.machine = None
+    __slots__ = ("missing", "times_out")
 
 
 class SyncPlan(NamedTuple):
