@@ -142,6 +142,12 @@ WAITING_TASKS = {
     # sockets set up and closed (the machine's writes of constants), one in the wrong state
     "sockets": ["step_machine_tasks/sockets/sockets.mod", "--add-task",
                 "step_machine_tasks/sockets/phases.mod"],
+    # waits on free inputs chosen where read: a try's choices, the idle step's state
+    "free_inputs": ["step_machine_tasks/free_inputs/waits.mod", "--add-task",
+                    "step_machine_tasks/free_inputs/mover.mod"],
+    # (without time-outs of connections the machine connects too)
+    "sockets_no_timeouts": ["step_machine_tasks/sockets/sockets.mod", "--add-task",
+                            "step_machine_tasks/sockets/phases.mod", "--no-socket-timeouts"],
 }
 
 

@@ -50,15 +50,17 @@ class Instruction:
 
 
 class ConstantWrite(NamedTuple):
-    """An instruction's whole effect for the step machine: global data ``slot`` becomes
-    ``value`` and the task goes on, where the slot holds one of ``required`` (empty: any
-    value; another value: the Python step, which raises or decides).  ``setup_choice``:
-    it may fail by a choice ``CheckConfig.socket_setup_failures`` turns on."""
+    """An instruction's whole effect on the state for the step machine: global data
+    ``slot`` becomes ``value`` (unless not ``writes``) and the task goes on, where the
+    slot holds one of ``required`` (empty: any value; another value: the Python step,
+    which raises or decides).  ``choice_option``: the ``CheckConfig`` flag that, when
+    on, lets the instruction fail by a choice (then Python steps it)."""
 
     slot: int
     required: tuple
     value: Any
-    setup_choice: bool = False
+    choice_option: str = ""
+    writes: bool = True
 
 
 class Action(Instruction):

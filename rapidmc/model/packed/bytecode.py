@@ -277,16 +277,17 @@ def _constant_write_block(instruction, value_id: Callable[[object], int], config
     """A ``ConstantWrite``: its slot checked against the values it requires (another:
     REQUIRE gives the step to Python), then set."""
     plan = instruction.machine
-    if plan.setup_choice and getattr(config, "socket_setup_failures", False):
-        raise Unsupported("a setup failure may be chosen")
-    code = [OP["TASK_ONLY"]]
-    for value in plan.required[:1]:
-        code += [OP["LOAD_STORE"], plan.slot, OP["CONST"], value_id(value), OP["EQ"],
-                 OP["REQUIRE"]]
+    if plan.choice_option and getattr(config, plan.choice_option, True):
+        raise Unsupported("a failure may be chosen")
     if len(plan.required) > 1:
         raise Unsupported("several values required")
-    return code + [OP["CONST"], value_id(plan.value), OP["SET_STORE"], plan.slot,
-                   OP["GOTO"], instruction.next]
+    code = [OP["TASK_ONLY"]]
+    for value in plan.required:
+        code += [OP["LOAD_STORE"], plan.slot, OP["CONST"], value_id(value), OP["EQ"],
+                 OP["REQUIRE"]]
+    if plan.writes:
+        code += [OP["CONST"], value_id(plan.value), OP["SET_STORE"], plan.slot]
+    return code + [OP["GOTO"], instruction.next]
 
 
 def _wait_block(instruction, expressions: ExpressionCode) -> list[int]:

@@ -153,8 +153,17 @@ def _socket_transition(calls, compiler, call, entry):
     ref = arguments.global_reference("Socket")
     if ref is not None:             # (the step machine's: a socket with no data pending)
         action.machine = ConstantWrite(ref[1], () if wanted is None else ((wanted, b""),),
-                                       (new, b""), binds)
+                                       (new, b""), "socket_setup_failures" if binds else "")
     return action
+
+
+def _constant_or_absent(arguments: Arguments, call, key: str) -> bool:
+    """Whether the optional argument ``key`` is absent or a constant (its value then
+    neither fails nor chooses)."""
+    if argument_expression(call, key, -1) is None:
+        return True
+    compiled = arguments.compiled(key)
+    return compiled is not None and compiled.is_constant
 
 
 def _setup_failures(m) -> bool:
@@ -184,7 +193,12 @@ def _socket_connect(calls, compiler, call, entry):
         _require(m.read_ref(ref), SOCKET_CREATED, "SocketConnect")
         _connection(m, call, seconds, "no answer from the server")
         m.write_ref(ref, (SOCKET_CONNECTED, b""))
-    return Action(call.span, connect)
+    action = Action(call.span, connect)
+    ref = arguments.global_reference("Socket")
+    if ref is not None and _constant_or_absent(arguments, call, "Time"):
+        action.machine = ConstantWrite(ref[1], ((SOCKET_CREATED, b""),),
+                                       (SOCKET_CONNECTED, b""), "socket_timeouts")
+    return action
 
 
 @compiled("SocketAccept(VAR socketdev Socket, VAR socketdev ClientSocket "
@@ -256,7 +270,14 @@ def _socket_send(calls, compiler, call, entry):
         else:
             shown = text(m) if limit is None else text(m)[:int(limit)]
         m.output.append(f"[socket] {shown}")
-    return Action(call.span, send)
+    action = Action(call.span, send)
+    ref = arguments.global_reference("Socket")
+    if ref is not None and not is_raw and _constant_or_absent(arguments, call, "Str") and \
+            argument_expression(call, "NoOfBytes", -1) is None:
+        # (the text sent is the transition's output, which the machine's steps do not give)
+        action.machine = ConstantWrite(ref[1], ((SOCKET_CONNECTED, b""),), None,
+                                       "socket_closures", writes=False)
+    return action
 
 
 def _receive_message(m, call, seconds) -> str:
