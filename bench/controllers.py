@@ -128,10 +128,10 @@ Measured on 2026-11-29 at 07:50 (issue 27: WaitUntil, WaitSyncTask and the socke
 set-up, connection and constant sends in the step machine as one task's step among
 several; load 13-21 on 2 cores, CPU seconds, main and the branch run alternately).
 The run-time error search alone, in-process, ``--no-por``, 20,000 states: 1.66-2.61 s
--> 0.86-1.10 s (18,000-23,000 states/s; 69 bytes per state in the table), the machine
-taking 77-83 % of the single tasks' steps (22,804 of 57,399 before; 47,910 of 57,399
+-> 0.86-1.31 s (15,000-23,000 states/s; 69 bytes per state in the table), the machine
+taking 83 % of the single tasks' steps (22,804 of 57,399 before; 47,910 of 57,399
 after).  The whole command ``--max-states 5000 --no-por`` (13,109 model states): native
-3.77-3.85 s -> 2.22-2.68 s, machine 41 % -> 78 %; Python engine 4.39 s.  The default
+3.22-3.85 s -> 2.22-2.68 s, machine 41 % -> 85 %; Python engine 4.39-5.00 s.  The default
 reduced check (12,005 model states) is unchanged: native 2.55-3.59 s, Python 4.08 s,
 the machine takes none of its steps (the reduced search keeps Python's collapsed
 table).  What Python steps there now: the call of ``teach`` and its writes of array
