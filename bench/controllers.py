@@ -123,6 +123,22 @@ in that check, 0.86 -> 0.50 profiled seconds in ``StateKeys.key`` (about 3 % of 
 Of the single tasks' steps the machine leaves to Python in ``--no-por`` (5,000 states),
 WaitSyncTask is the largest share (3,618 of about 8,300), then the logger's WaitUntil
 (846) and its socket set-up, the call of ``teach`` and its element writes.
+
+Measured on 2026-11-29 at 07:50 (issue 27: WaitUntil, WaitSyncTask and the sockets'
+set-up, connection and constant sends in the step machine as one task's step among
+several; load 13-21 on 2 cores, CPU seconds, main and the branch run alternately).
+The run-time error search alone, in-process, ``--no-por``, 20,000 states: 1.66-2.61 s
+-> 0.86-1.31 s (15,000-23,000 states/s; 69 bytes per state in the table), the machine
+taking 83 % of the single tasks' steps (22,804 of 57,399 before; 47,910 of 57,399
+after).  The whole command ``--max-states 5000 --no-por`` (13,109 model states): native
+3.22-3.85 s -> 2.22-2.68 s, machine 41 % -> 85 %; Python engine 4.39-5.00 s.  The default
+reduced check (12,005 model states) is unchanged: native 2.55-3.59 s, Python 4.08 s,
+the machine takes none of its steps (the reduced search keeps Python's collapsed
+table).  What Python steps there now: the call of ``teach`` and its writes of array
+elements and record components, MoveJ, the socket receive and accept.  Counters
+(``bench/native.py --sizes 8,9``, three alternate runs): N=8 run-time error search
+0.42-0.47 s (main 0.42-0.54), whole command 1.23-1.31 s CPU (main 1.23-1.53) at 141
+bytes per state; N=9 2.36-2.84 s (main 2.17-2.54) at 81-82 bytes per state.
 """
 from __future__ import annotations
 

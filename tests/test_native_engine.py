@@ -35,6 +35,7 @@ from test_fuzz import STDIN, domains, formula_texts, fuzz_settings, write
 from test_fuzz import scratch_folder  # noqa: F401  (the folder write() writes in)
 from test_case_studies import CASES, ROOT
 from test_partial_order import write_tasks
+from test_step_machine import WAITING_TASKS, waiting_arguments
 from test_check_cases import verdict_cases
 from test_graph_reuse import COUNTERS, case_arguments, model_of, report, without_measurements
 from test_partial_order import write_tasks
@@ -268,6 +269,16 @@ def test_unreduced_task_programs_report_the_same_with_both_engines(seed, tmp_pat
     argv = write_tasks(tmp_path, seed, procedures=40 <= seed < 70, arrays=70 <= seed < 90,
                        local=seed >= 90)
     assert_same_reports(argv + ["--no-por"], monkeypatch, reuse=seed % 2 == 0)
+
+
+@needs_native
+@pytest.mark.parametrize("name", sorted(WAITING_TASKS))
+def test_unreduced_waits_and_barriers_report_the_same_with_both_engines(name, monkeypatch):
+    """Tasks that wait and meet at barriers (tests/test_step_machine.py's
+    ``WAITING_TASKS``), unreduced: the machine takes the waits' steps, idle ones
+    included, and the reports (verdicts, counts, counterexamples, coverage) are the
+    Python engine's."""
+    assert_same_reports(waiting_arguments(name) + ["--no-por"], monkeypatch)
 
 
 @needs_native

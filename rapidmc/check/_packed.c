@@ -44,7 +44,8 @@ enum {
     OP_SET_STORE, OP_SET_LOCAL, OP_SET_TEMP, OP_GET_TEMP,
     OP_GOTO, OP_BRANCH, OP_GOTO_IF, OP_RESET_CHOSEN, OP_UNSUPPORTED,
     OP_FOR_DEFAULT_STEP, OP_FOR_INIT, OP_FOR_NEXT,
-    OP_ATOM_BEGIN, OP_ATOM_END, OP_END
+    OP_ATOM_BEGIN, OP_ATOM_END, OP_END,
+    OP_TASK_ONLY, OP_JUMP_IF_FALSE, OP_REQUIRE, OP_POP, OP_CHOOSE_BOOL, OP_WAIT, OP_SYNC
 };
 
 /* what a run of code ends with */
@@ -60,6 +61,7 @@ enum { VM_DONE = 0, VM_ERROR = 1, VM_UNSUPPORTED = 2 };
 #define MAX_BLOCKS_PER_STEP 100000
 #define NUM_EXACT_INTEGER 8388608.0
 #define INT_LIMIT 4611686018427387904.0        /* 2**62: integer operands beyond it: Python */
+#define SYNC_ARRIVED 10.0       /* library/tasks.py's ARRIVED: a task waits at the barrier */
 
 typedef struct {
     int tag;
@@ -555,6 +557,8 @@ typedef struct {
     int32_t *chosen_value;
     uint32_t epoch;
     Value temps[TEMPS];
+    int tasks;                  /* a step of one task among several (waits may run) */
+    int idle;                   /* the task waits: its step leaves the state as it is */
 } Run;
 
 static inline Value load(PackedTable *table, uint32_t id)
@@ -644,6 +648,34 @@ static int truth(Value v, int *out)
         return VM_UNSUPPORTED;
     *out = v.d != 0.0;
     return VM_DONE;
+}
+
+/* Python's ``x % 3.0`` */
+static inline double modulo3(double x)
+{
+    double r = fmod(x, 3.0);
+    return r < 0 ? r + 3.0 : r;
+}
+
+/* a syncident's (generation modulo 3, arrived), as library/tasks.py's ``_generation``
+ * reads it (a value not a float: never written) */
+static inline double sync_generation(Value v, int *arrived)
+{
+    *arrived = v.tag == T_NUM && v.d >= SYNC_ARRIVED;
+    if (v.tag != T_NUM)
+        return 0.0;
+    return *arrived ? v.d - SYNC_ARRIVED : v.d;
+}
+
+/* set global data ``slot`` to ``v``: 0, -1 with an error */
+static inline int set_data(Run *run, int32_t slot, Value v)
+{
+    int32_t id = store_id(run->table, v);
+    if (id < 0)
+        return -1;
+    run->data_changed |= run->data[slot] != (uint32_t)id;
+    run->data[slot] = (uint32_t)id;
+    return 0;
 }
 
 static int integer_operands(Value a, Value b, long long *x, long long *y)
@@ -912,6 +944,73 @@ static int execute(Run *run, const int32_t *code, Py_ssize_t ip, uint64_t *bits)
         }
         case OP_END:
             return VM_DONE;
+        case OP_TASK_ONLY:          /* waits: only as one task's step among several */
+            if (!run->tasks)
+                FAIL(VM_UNSUPPORTED);
+            break;
+        case OP_JUMP_IF_FALSE: {
+            int t;
+            int32_t skip = code[ip++];
+            if ((outcome = truth(POP(), &t)) != VM_DONE)
+                goto failed;
+            if (!t)
+                ip += skip;
+            break;
+        }
+        case OP_REQUIRE: {          /* what the code was compiled for, else Python */
+            int t;
+            if ((outcome = truth(POP(), &t)) != VM_DONE)
+                goto failed;
+            if (!t)
+                FAIL(VM_UNSUPPORTED);
+            break;
+        }
+        case OP_POP:
+            top--;
+            break;
+        case OP_CHOOSE_BOOL: {      /* ``m.choose(name, (False, True))`` */
+            Py_ssize_t position = run->size_count;
+            if (position >= MAX_CHOICES)
+                FAIL(VM_UNSUPPORTED);
+            run->sizes[run->size_count++] = 2;
+            PUSH(number(T_BOOL, position < run->script_length && run->script[position]));
+            break;
+        }
+        case OP_WAIT:               /* the task waits: the pc stays */
+            run->idle = 1;
+            return VM_DONE;
+        case OP_SYNC: {             /* own slot, unshared, next pc, partners, their slots */
+            int32_t own = code[ip], unshared = code[ip + 1], next = code[ip + 2];
+            int32_t count = code[ip + 3];
+            const int32_t *partners = code + ip + 4;
+            int arrived, other;
+            double current = sync_generation(load(table, run->data[own]), &arrived);
+            double generation = arrived ? current : modulo3(current + 1.0);
+            if (unshared && count == 0 && !arrived) {
+                run->pc = next;             /* no loaded task shares it: no count kept */
+                return VM_DONE;
+            }
+            double ahead = modulo3(generation + 1.0);
+            int missing = 0;
+            for (int32_t i = 0; i < count && !missing; i++) {
+                double theirs = partners[i] < 0 ? -1.0 :
+                    sync_generation(load(table, run->data[partners[i]]), &other);
+                missing = theirs != generation && theirs != ahead;
+            }
+            if (!missing) {
+                if (set_data(run, own, number(T_NUM, generation)) < 0)
+                    return -1;
+                run->pc = next;
+                return VM_DONE;
+            }
+            if (arrived) {
+                run->idle = 1;              /* still waiting */
+                return VM_DONE;
+            }
+            if (set_data(run, own, number(T_NUM, generation + SYNC_ARRIVED)) < 0)
+                return -1;
+            return VM_DONE;                 /* arrived: the pc stays */
+        }
         default:
             PyErr_Format(PyExc_SystemError, "step machine: bad opcode %d", (int)op);
             return -1;
@@ -985,6 +1084,8 @@ typedef struct Scratch {     /* scratch space of the step machine */
     Int32Vector changed, owners;    /* several tasks: per successor, whether it changes the
                                      * state, the task that took the step (+ TASK_COUNT_MAX
                                      * when Python took it) */
+    Int32Vector waited;         /* the machine's idle steps: (successor, routine, pc) each,
+                                 * whose pc is noted as run only if the step is kept */
     uint32_t *chosen_epoch;
     int32_t *chosen_value;
     uint32_t epoch;
@@ -1013,6 +1114,7 @@ static void scratch_free(Scratch *scratch)
     vector32_free(&scratch->ran);
     vector32_free(&scratch->changed);
     vector32_free(&scratch->owners);
+    vector32_free(&scratch->waited);
     PyMem_Free(scratch->found.frames);
     PyMem_Free(scratch->found.data);
 }
@@ -1125,6 +1227,7 @@ static int start_run(Run *run, PackedTable *table, Scratch *scratch, Py_ssize_t 
     run->script_length = 0;
     run->chosen_epoch = scratch->chosen_epoch;
     run->chosen_value = scratch->chosen_value;
+    run->tasks = run->idle = 0;
     return 0;
 }
 
@@ -1263,9 +1366,10 @@ static int machine_step(PackedTable *table, Py_ssize_t id, Scratch *scratch,
 /* One task's instruction in a state of several tasks, by the machine: the block at its pc
  * once per choice script (tasks take turns one instruction each: no merged run), as
  * ``staged_step`` runs it through ``fused_step`` on a view of that task.  Its successors
- * are appended to ``found`` (``changed``: each one changes the state).  VM_UNSUPPORTED
- * (with ``found`` as it was) where Python must step the task: no block, an error, a
- * step that leaves the state as it is (Python then decides about the idle step). */
+ * are appended to ``found`` (``changed``: each one changes the state, but a wait's
+ * idle step: ``scratch->waited``).  VM_UNSUPPORTED (with ``found`` as it was) where
+ * Python must step the task: no block, an error, a step other than a wait's that leaves
+ * the state as it is. */
 static int task_machine_step(PackedTable *table, Scratch *scratch, const int32_t *info,
                              uint32_t context, const uint32_t *frame, Py_ssize_t frame_length,
                              int32_t data_id, const uint32_t *data, Py_ssize_t data_length,
@@ -1289,15 +1393,19 @@ static int task_machine_step(PackedTable *table, Scratch *scratch, const int32_t
     uint32_t *work_frame = scratch->frame, *work_data = scratch->data;
     run.locals = work_frame + where + 1;
     run.local_count = locals;
+    run.tasks = 1;
     Py_ssize_t found_before = found->count, ran_before = scratch->ran.length;
+    Py_ssize_t waited_before = scratch->waited.length;
     int outcome = VM_DONE;
     for (;;) {
         memcpy(work_frame, frame, frame_length * sizeof(uint32_t));
         memcpy(work_data, data, data_length * sizeof(uint32_t));
         run.data_changed = run.locals_changed = 0;
+        run.idle = 0;
         run.pc = start_pc;
         run.size_count = 0;
         run.epoch = ++scratch->epoch;
+        Py_ssize_t ran_here = scratch->ran.length;
         if (note_ran(table, scratch, routine_index, start_pc) < 0)
             return -1;
         outcome = execute(&run, routine->code, routine->block_start[start_pc], NULL);
@@ -1305,9 +1413,18 @@ static int task_machine_step(PackedTable *table, Scratch *scratch, const int32_t
         if (outcome < 0)
             return -1;
         if (outcome != VM_DONE || run.pc < 0 || run.pc >= routine->length ||
-                (run.pc == start_pc && !run.locals_changed && !run.data_changed)) {
+                (run.pc == start_pc && !run.locals_changed && !run.data_changed &&
+                 !run.idle)) {
             outcome = VM_UNSUPPORTED;
             break;
+        }
+        if (run.idle) {
+            /* (its line counts as run only if the idle step is kept: tasks_step) */
+            forget_ran(table, scratch, ran_here);
+            if (vector32_push(&scratch->waited, (int32_t)found->count) < 0 ||
+                    vector32_push(&scratch->waited, routine_index) < 0 ||
+                    vector32_push(&scratch->waited, start_pc) < 0)
+                return -1;
         }
         if (table->projecting)
             project(table, routine, context, &run);
@@ -1320,13 +1437,14 @@ static int task_machine_step(PackedTable *table, Scratch *scratch, const int32_t
         int32_t new_data = new_frame < 0 ? -1 : !run.data_changed ? data_id :
             vt_intern(&table->data, work_data, data_length);
         if (new_data < 0 || add_successor(found, new_frame, new_data) < 0 ||
-                vector32_push(changed, 1) < 0)
+                vector32_push(changed, !run.idle) < 0)
             return -1;
         if (run.size_count == 0 || !next_script(&run))
             return VM_DONE;
     }
     found->count = found_before;
     changed->length = found_before;
+    scratch->waited.length = waited_before;
     forget_ran(table, scratch, ran_before);
     return outcome;
 }
@@ -1379,7 +1497,7 @@ static int tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Succe
                     &frame, &data) < 0)
         return -1;
     Int32Vector *changed = &scratch->changed, *owners = &scratch->owners;
-    found->count = changed->length = owners->length = 0;
+    found->count = changed->length = owners->length = scratch->waited.length = 0;
     long long by_machine = 0, by_python = 0, running = 0;
     for (Py_ssize_t task = 0; task < tasks; task++)
         running += table->context_tasks[(context * tasks + task) * TASK_INFO] >= 0;
@@ -1423,11 +1541,17 @@ static int tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Succe
     }
     /* ``changed`` becomes, per successor, 0: the machine's, 1: Python's and dropped,
      * 2: Python's and kept */
-    Py_ssize_t kept = 0;
+    Py_ssize_t kept = 0, waited = 0;
     for (Py_ssize_t i = 0; i < found->count; i++) {
         int keep = !moving || all_moved || changed->items[i] ||
             !(moving & ~((uint64_t)1 << (owners->items[i] % TASK_COUNT_MAX)));
         changed->items[i] = owners->items[i] >= TASK_COUNT_MAX ? 1 + keep : 0;
+        if (waited < scratch->waited.length && scratch->waited.items[waited] == i) {
+            const int32_t *at = scratch->waited.items + waited;
+            if (keep && note_ran(table, scratch, at[1], at[2]) < 0)
+                return -1;
+            waited += 3;
+        }
         if (keep) {
             found->frames[kept] = found->frames[i];
             found->data[kept++] = found->data[i];

@@ -13,7 +13,7 @@ Every instruction knows
 """
 from __future__ import annotations
 
-from typing import Any, Callable, Optional
+from typing import Any, Callable, NamedTuple, Optional
 
 from .errors import ERROR_NUMBERS, RapidError, USER_ERROR_RANGE
 from .machine import ABSENT, Machine
@@ -22,7 +22,7 @@ from . import values
 
 
 class Instruction:
-    __slots__ = ("span", "next", "start", "after", "text", "reads_io", "fusion")
+    __slots__ = ("span", "next", "start", "after", "text", "reads_io", "fusion", "machine")
 
     def __init__(self, span):
         self.span = span
@@ -35,12 +35,32 @@ class Instruction:
         # ("store" or "local", slot, the value's ``Compiled``), a ForInit's FROM, TO
         # (and STEP), a TestDispatch's subject and CASE values per case
         self.fusion = None
+        # what the compiled core's step machine needs to run this instruction as one
+        # task's step among several (``model.packed.bytecode``), or None: a Wait's
+        # (the condition's and the \MaxTime's ``Compiled`` with sources, the \MaxTime's
+        # None when not given; the \TimeFlag's store slot or None), a barrier's
+        # ``SyncPlan`` (``library.tasks``), a ``ConstantWrite``
+        self.machine = None
 
     def run(self, m: Machine) -> None:
         raise NotImplementedError
 
     def describe(self) -> str:
         return type(self).__name__
+
+
+class ConstantWrite(NamedTuple):
+    """An instruction's whole effect on the state for the step machine: global data
+    ``slot`` becomes ``value`` (unless not ``writes``) and the task goes on, where the
+    slot holds one of ``required`` (empty: any value; another value: the Python step,
+    which raises or decides).  ``choice_option``: the ``CheckConfig`` flag that, when
+    on, lets the instruction fail by a choice (then Python steps it)."""
+
+    slot: int
+    required: tuple
+    value: Any
+    choice_option: str = ""
+    writes: bool = True
 
 
 class Action(Instruction):

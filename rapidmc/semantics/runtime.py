@@ -140,8 +140,8 @@ class PredefinedCalls:
             break
         return entry.impl
 
-    def bind(self, compiler, entry, args, span):
-        return bind(compiler, entry.signature.name, self.views(entry), args, span)
+    def bind(self, compiler, entry, args, span, sources=None):
+        return bind(compiler, entry.signature.name, self.views(entry), args, span, sources)
 
     # --------------------------------------------------------------- procedures
     def predefined_procedure(self, compiler: ExpressionCompiler, statement: ast.ProcedureCall,

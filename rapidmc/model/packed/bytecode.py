@@ -13,6 +13,11 @@ arithmetic helpers), and whatever else a source holds (a function call,
 string concatenation) compiles to ``UNSUPPORTED``: the machine gives up at
 that block and the search asks the Python step, which is the reference.
 
+Waits, barriers and writes of constants (a socket's state) compile too
+(``Instruction.machine``, ``_task_block``): run only as one task's step among several
+(TASK_ONLY), a try that does not pass is an idle step (WAIT), as ``Wait.run`` and
+``library.tasks._barrier`` leave the task waiting.
+
 Atoms (``model.fused_atoms``) compile the same way, each between
 ``ATOM_BEGIN`` and ``ATOM_END`` (a RAPID error makes the atom false).
 
@@ -28,13 +33,15 @@ from array import array
 from typing import Callable, Optional
 
 from ...semantics.fused_step import block_targets, routine_fused
-from ...semantics.instructions import Action, Branch, ForInit, ForNext, Jump, TestDispatch
+from ...semantics.instructions import (
+    Action, Branch, ConstantWrite, ForInit, ForNext, Jump, TestDispatch, Wait)
 
 # opcodes, in the order of _packed.c's enum (from 1)
 OPCODES = ("CONST LOAD_STORE LOAD_LOCAL READ READ_DYN ADD SUB MUL DIVIDE TO_NUM TO_DNUM "
            "INT_DIV INT_MOD NEG NOT EQ NE LT LE GT GE AND OR SET_STORE SET_LOCAL SET_TEMP "
            "GET_TEMP GOTO BRANCH GOTO_IF RESET_CHOSEN UNSUPPORTED FOR_DEFAULT_STEP FOR_INIT "
-           "FOR_NEXT ATOM_BEGIN ATOM_END END").split()
+           "FOR_NEXT ATOM_BEGIN ATOM_END END TASK_ONLY JUMP_IF_FALSE REQUIRE POP CHOOSE_BOOL "
+           "WAIT SYNC").split()
 OP = {name: number for number, name in enumerate(OPCODES, 1)}
 MAX_STACK = 48            # deeper expressions are left to Python (the machine has 64)
 
@@ -182,8 +189,10 @@ class RoutineCode:
 
     @classmethod
     def compile(cls, program, config, routine: int, value_id: Callable[[object], int],
-                store_length: int) -> Optional["RoutineCode"]:
-        """The routine's code, or None when its steps are not fused (``fused_step``)."""
+                store_length: int, initial_store=None) -> Optional["RoutineCode"]:
+        """The routine's code, or None when its steps are not fused (``fused_step``).
+        ``initial_store``: the first state's global data (a barrier's task list is
+        compiled for its value there: ``_sync_block``)."""
         fused = routine_fused(program, config, routine)
         if fused is None:
             return None
@@ -191,11 +200,15 @@ class RoutineCode:
         block_start = array("i", [-1]) * len(fused.starts)
         code = array("i")
         for pc, instruction in enumerate(program.routines[routine].code):
-            if not fused.starts[pc]:
+            waits = getattr(instruction, "machine", None) is not None
+            if not fused.starts[pc] and not waits:
                 continue
             expressions = ExpressionCode(value_id, {}, store_length)
             try:
-                block = _block(instruction, expressions, skipped)
+                if waits:
+                    block = _task_block(instruction, expressions, initial_store, config)
+                else:
+                    block = _block(instruction, expressions, skipped)
             except Unsupported:
                 block = [OP["UNSUPPORTED"]]
             if block is None:
@@ -242,6 +255,81 @@ def _block(instruction, expressions: ExpressionCode, skipped: frozenset) -> Opti
     else:
         return None
     return code
+
+
+# Waits and barriers are steps of one task among several (``staged_step``): a try that
+# finds the condition false or a partner missing leaves the state as it is (WAIT: an
+# idle step, which the machine keeps or drops as ``idle_steps_dropped`` does).  Their
+# blocks begin with TASK_ONLY: a program of one task steps them in Python (its general
+# step may merge runs there).
+def _task_block(instruction, expressions: ExpressionCode, initial_store, config) -> list[int]:
+    """The code of an instruction the machine runs only as one task's step among several
+    (``Instruction.machine``)."""
+    plan = instruction.machine
+    if type(instruction) is Wait:
+        return _wait_block(instruction, expressions)
+    if isinstance(plan, ConstantWrite):
+        return _constant_write_block(instruction, expressions.value_id, config)
+    return _sync_block(instruction, expressions.value_id, initial_store)
+
+
+def _constant_write_block(instruction, value_id: Callable[[object], int], config) -> list[int]:
+    """A ``ConstantWrite``: its slot checked against the values it requires (another:
+    REQUIRE gives the step to Python), then set."""
+    plan = instruction.machine
+    if plan.choice_option and getattr(config, plan.choice_option, True):
+        raise Unsupported("a failure may be chosen")
+    if len(plan.required) > 1:
+        raise Unsupported("several values required")
+    code = [OP["TASK_ONLY"]]
+    for value in plan.required:
+        code += [OP["LOAD_STORE"], plan.slot, OP["CONST"], value_id(value), OP["EQ"],
+                 OP["REQUIRE"]]
+    if plan.writes:
+        code += [OP["CONST"], value_id(plan.value), OP["SET_STORE"], plan.slot]
+    return code + [OP["GOTO"], instruction.next]
+
+
+def _wait_block(instruction, expressions: ExpressionCode) -> list[int]:
+    """``Wait.run``: the condition; where it holds the \\TimeFlag cleared and on; else,
+    with \\MaxTime, its value computed, then the choice whether the wait times out
+    (the flag set and on; without a flag ERR_WAIT_MAXTIME, which Python raises); else
+    the task waits."""
+    condition, limit, flag = instruction.machine
+    code = [OP["TASK_ONLY"]] + ([OP["RESET_CHOSEN"]] if instruction.reads_io else [])
+    code += _source(expressions, condition)
+    ends = ([OP["CONST"], expressions.value_id(False), OP["SET_STORE"], flag]
+            if flag is not None else []) + [OP["GOTO"], instruction.next]
+    code += [OP["JUMP_IF_FALSE"], len(ends)] + ends
+    if limit is not None:
+        code += _source(expressions, limit) + [OP["POP"]]
+        times_out = [OP["CONST"], expressions.value_id(True), OP["SET_STORE"], flag,
+                     OP["GOTO"], instruction.next] if flag is not None else [OP["UNSUPPORTED"]]
+        code += [OP["CHOOSE_BOOL"], OP["JUMP_IF_FALSE"], len(times_out)] + times_out
+    return code + [OP["WAIT"]]
+
+
+def _sync_block(instruction, value_id: Callable[[object], int], initial_store) -> list[int]:
+    """A barrier (``library.tasks._barrier`` without \\TimeOut): its partners are
+    those of the task list's first value, guarded by that value (another value: Python);
+    SYNC then reads the syncidents' generations as ``wait`` does."""
+    plan = instruction.machine
+    code = [OP["TASK_ONLY"]]
+    if plan.task_list is not None:
+        if initial_store is None or not 0 <= plan.task_list < len(initial_store):
+            raise Unsupported("task list")
+        value = initial_store[plan.task_list]
+        try:
+            partners = plan.partners(value)
+        except Exception:           # (a RapidError: Python raises it where it steps)
+            raise Unsupported("task list") from None
+        code += [OP["LOAD_STORE"], plan.task_list, OP["CONST"], value_id(value), OP["EQ"],
+                 OP["REQUIRE"]]
+    else:
+        partners = plan.partners(None)
+    slots = [plan.slots.get(number, -1) for number in partners]
+    return code + [OP["SYNC"], plan.own, int(plan.unshared), instruction.next,
+                   len(slots)] + slots
 
 
 def _source(expressions: ExpressionCode, compiled) -> list[int]:

@@ -79,6 +79,7 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         initial = system.initial_states()
         first = initial[0]
         self.store_length = len(first[1])
+        self._initial_store = first[1]
         self.io_length = len(first[2])
         self._contexts: dict[tuple, int] = {}
         self._context_values: list[tuple] = []
@@ -109,7 +110,7 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         value_id = self._value_id
         for index in range(len(program.routines)):
             code = RoutineCode.compile(program, system.config, index, value_id,
-                                       self.store_length)
+                                       self.store_length, self._initial_store)
             self._routines.append(None if code is None else code.as_tuple())
             self.compiled_routines += code is not None and \
                 any(start >= 0 for start in code.block_start)

@@ -1,14 +1,14 @@
 """What the factories of state-reading routines share: bound arguments, robot state parts."""
 from __future__ import annotations
 
-from typing import Callable
+from typing import Callable, Optional
 
 from ... import ast
 from ...diagnostics import UNKNOWN_NAME, UNKNOWN_ROUTINE, UNSUPPORTED, UserError, error
 from ..calls import REFERENCE
 from ..expressions import Compiled, constant
 from ..instructions import Action, Instruction
-from ..machine import ABSENT
+from ..machine import ABSENT, GLOBAL
 
 ROBOT_TCP, ROBOT_TOOL, ROBOT_WOBJ, ROBOT_JOINTS = range(4)
 
@@ -17,15 +17,36 @@ class Arguments:
     """The bound arguments of one call, by parameter name."""
 
     def __init__(self, calls, compiler, call, entry):
-        self.binders = calls.bind(compiler, entry, call.args, call.span)
+        sources: list = []          # per parameter: its ``Compiled`` value with a source
+        self.binders = calls.bind(compiler, entry, call.args, call.span, sources)
         self.specs = entry.signature.parameters
         self.by_key = {spec.key: binder for spec, binder in zip(self.specs, self.binders)}
+        self.sources = {spec.key: source for spec, source in zip(self.specs, sources)}
 
     def fn(self, key: str) -> Callable:
         return self.by_key[key.upper()][1]
 
     def kind(self, key: str) -> str:
         return self.by_key[key.upper()][0]
+
+    def compiled(self, key: str) -> Optional[Compiled]:
+        """The argument's ``Compiled`` value when it has a source (an IN argument given
+        as an expression the fused step can write), else None."""
+        return self.sources.get(key.upper())
+
+    def global_reference(self, key: str) -> Optional[tuple]:
+        """The reference a VAR, PERS or REF argument names when it is the same in every
+        state (global data named directly: ``(GLOBAL, slot, ())``), else None."""
+        kind, fn = self.by_key[key.upper()]
+        if kind != REFERENCE:
+            return None
+        try:
+            ref = fn(None)               # (a reference that reads the machine raises)
+        except Exception:
+            return None
+        if isinstance(ref, tuple) and len(ref) == 3 and ref[0] == GLOBAL and ref[2] == ():
+            return ref
+        return None
 
     def value(self, key: str) -> Callable:
         """fn(m) -> value of the argument (ABSENT if not given); reads through references."""

@@ -20,7 +20,7 @@ from ...diagnostics import INPUT_EXHAUSTED, UNSUPPORTED, error
 from .. import rawbytes, values
 from ..errors import RapidError
 from ..expressions import Compiled
-from ..instructions import Action
+from ..instructions import Action, ConstantWrite
 from ..types import NUM
 from .arguments import Arguments, argument_expression
 from .data import PREDEFINED_DATA
@@ -133,7 +133,8 @@ TRANSITIONS = {
           "SocketClose(VAR socketdev Socket)")
 def _socket_transition(calls, compiler, call, entry):
     """Moves a socket from the state the instruction needs to the one it leaves."""
-    socket = Arguments(calls, compiler, call, entry).fn("Socket")
+    arguments = Arguments(calls, compiler, call, entry)
+    socket = arguments.fn("Socket")
     wanted, new = TRANSITIONS[call.name.key]
     name = call.name.text
 
@@ -148,7 +149,21 @@ def _socket_transition(calls, compiler, call, entry):
                 == ADDRESS_IN_USE:
             raise RapidError(ADDRESS_IN_USE, f"{name}: the address and port are in use")
         m.write_ref(ref, (new, b""))
-    return Action(call.span, act)
+    action = Action(call.span, act)
+    ref = arguments.global_reference("Socket")
+    if ref is not None:             # (the step machine's: a socket with no data pending)
+        action.machine = ConstantWrite(ref[1], () if wanted is None else ((wanted, b""),),
+                                       (new, b""), "socket_setup_failures" if binds else "")
+    return action
+
+
+def _constant_or_absent(arguments: Arguments, call, key: str) -> bool:
+    """Whether the optional argument ``key`` is absent or a constant (its value then
+    neither fails nor chooses)."""
+    if argument_expression(call, key, -1) is None:
+        return True
+    compiled = arguments.compiled(key)
+    return compiled is not None and compiled.is_constant
 
 
 def _setup_failures(m) -> bool:
@@ -178,7 +193,12 @@ def _socket_connect(calls, compiler, call, entry):
         _require(m.read_ref(ref), SOCKET_CREATED, "SocketConnect")
         _connection(m, call, seconds, "no answer from the server")
         m.write_ref(ref, (SOCKET_CONNECTED, b""))
-    return Action(call.span, connect)
+    action = Action(call.span, connect)
+    ref = arguments.global_reference("Socket")
+    if ref is not None and _constant_or_absent(arguments, call, "Time"):
+        action.machine = ConstantWrite(ref[1], ((SOCKET_CREATED, b""),),
+                                       (SOCKET_CONNECTED, b""), "socket_timeouts")
+    return action
 
 
 @compiled("SocketAccept(VAR socketdev Socket, VAR socketdev ClientSocket "
@@ -250,7 +270,14 @@ def _socket_send(calls, compiler, call, entry):
         else:
             shown = text(m) if limit is None else text(m)[:int(limit)]
         m.output.append(f"[socket] {shown}")
-    return Action(call.span, send)
+    action = Action(call.span, send)
+    ref = arguments.global_reference("Socket")
+    if ref is not None and not is_raw and _constant_or_absent(arguments, call, "Str") and \
+            argument_expression(call, "NoOfBytes", -1) is None:
+        # (the text sent is the transition's output, which the machine's steps do not give)
+        action.machine = ConstantWrite(ref[1], ((SOCKET_CONNECTED, b""),), None,
+                                       "socket_closures", writes=False)
+    return action
 
 
 def _receive_message(m, call, seconds) -> str:

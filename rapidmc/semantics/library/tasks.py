@@ -8,6 +8,8 @@ StartLoad, WaitLoad, Save and EraseModule change nothing it observes.
 """
 from __future__ import annotations
 
+from typing import Callable, NamedTuple, Optional
+
 from ... import ast
 from ..errors import RapidError
 from ..expressions import Compiled
@@ -223,9 +225,24 @@ def _generation(value) -> tuple[float, bool]:
 
 class SyncWait(ControlAction):
     """A barrier instruction; ``missing(store, task)`` names the tasks it still waits for;
-    ``times_out``: it has a ``\\TimeOut`` (it never waits forever)."""
+    ``times_out``: it has a ``\\TimeOut`` (it never waits forever); ``machine``: a
+    ``SyncPlan`` when the step machine may run it (``model.packed.bytecode``), else None."""
 
     __slots__ = ("missing", "times_out")
+
+
+class SyncPlan(NamedTuple):
+    """What the step machine needs of a barrier without ``\\TimeOut``: the store slot
+    of the task's own syncident, each task's syncident slot by task number, whether no
+    other task declares it, the store slot of the TaskList (None: SyncMoveOff, every
+    task declaring it) and ``partners(task_list_value)``: the other tasks the barrier
+    waits for (may raise ``RapidError``)."""
+
+    own: int
+    slots: dict
+    unshared: bool
+    task_list: Optional[int]
+    partners: Callable
 
 
 def _barrier(calls, compiler, call, entry, what: str, error_name: str, listed: bool):
@@ -248,8 +265,12 @@ def _barrier(calls, compiler, call, entry, what: str, error_name: str, listed: b
     def partners(m) -> list:
         if task_list is None:
             return [number for number in slots if number != me]
+        return partners_in(task_list(m))
+
+    def partners_in(items) -> list:
+        """The other tasks a task list names (``items``: the TaskList's value)."""
         found = []
-        for item in task_list(m):
+        for item in items:
             name = (item[0] if isinstance(item, tuple) else item).strip().upper()
             number = by_name.get(name)
             if number is None:
@@ -304,6 +325,11 @@ def _barrier(calls, compiler, call, entry, what: str, error_name: str, listed: b
     instruction = SyncWait(call.span, wait)
     instruction.missing = missing
     instruction.times_out = timeout is not None
+    list_ref = arguments.global_reference("TaskList") if listed else None
+    if timeout is None and (list_ref is not None or not listed):
+        instruction.machine = SyncPlan(own, slots, unshared, list_ref and list_ref[1],
+                                       partners_in if listed else
+                                       (lambda _: partners(None)))
     return instruction
 
 

@@ -38,17 +38,29 @@ def _wait_time(calls, compiler, call, entry):
     return ControlAction(call.span, wait)
 
 
-def _wait(calls, compiler, call, entry, condition_factory, what: str) -> Instruction:
+def _wait(calls, compiler, call, entry, condition_factory, what: str,
+          condition_source=None) -> Instruction:
+    """The wait; ``condition_source(arguments)``: the condition's ``Compiled`` with a
+    source when the step machine may run the wait (``Wait.machine``), else None."""
     arguments = Arguments(calls, compiler, call, entry)
     condition = condition_factory(arguments)
     max_time = arguments.value("MaxTime")
     timeout = None
-    if argument_expression(call, "MaxTime", -1) is not None:
+    timed = argument_expression(call, "MaxTime", -1) is not None
+    if timed:
         timeout = max_time
     flag_ref = None
-    if "TIMEFLAG" in arguments.by_key and argument_expression(call, "TimeFlag", -1) is not None:
+    flagged = "TIMEFLAG" in arguments.by_key and \
+        argument_expression(call, "TimeFlag", -1) is not None
+    if flagged:
         flag_ref = arguments.fn("TimeFlag")
-    return Wait(call.span, condition, timeout, flag_ref, what)
+    wait = Wait(call.span, condition, timeout, flag_ref, what)
+    source = condition_source(arguments) if condition_source is not None else None
+    limit = arguments.compiled("MaxTime") if timed else None
+    flag = arguments.global_reference("TimeFlag") if flagged else None
+    if source is not None and (limit is not None or not timed) and (flag or not flagged):
+        wait.machine = (source, limit, flag[1] if flag else None)
+    return wait
 
 
 # RobotWare 6's \Visualize shows a FlexPendant message while the instruction waits
@@ -77,10 +89,13 @@ def _wait_until(calls, compiler, call, entry):
     def factory(arguments):
         condition = arguments.value("Cond")
         return _kept_where_it_ends(condition) if compiler.wait_choices else condition
+    def source(arguments):
+        # (a condition that keeps what it read where it ends is Python's alone)
+        return None if compiler.wait_choices else arguments.compiled("Cond")
     compiler.in_wait = True          # PERS another party writes too: the wait may end (issue 28)
     compiler.wait_choices = False
     try:
-        return _wait(calls, compiler, call, entry, factory, "WaitUntil condition")
+        return _wait(calls, compiler, call, entry, factory, "WaitUntil condition", source)
     finally:
         compiler.in_wait = False
 

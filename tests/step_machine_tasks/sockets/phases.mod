@@ -1,0 +1,9 @@
+! Task 2: moves the phase task 1 reads.
+MODULE Phases
+  PERS num phase := 0;
+  PROC main()
+    WHILE TRUE DO
+      phase := (phase + 1) MOD 3;
+    ENDWHILE
+  ENDPROC
+ENDMODULE
