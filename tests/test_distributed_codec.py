@@ -12,6 +12,7 @@ and find the violation at the depth one process finds it.
 from __future__ import annotations
 
 import gc
+from array import array
 from dataclasses import replace
 from pathlib import Path
 
@@ -180,6 +181,62 @@ def test_node_ids_sent_to_another_table_are_stored_as_the_same_states(engine):
                     [batch[field] for field in fields.tolist()]
     assert {receiver_table[i] for i in range(len(receiver_table))} == set(states)
     assert len(receiver_table) == len(states)
+
+
+@pytest.mark.parametrize("name", ["socket server", "two tasks", "run-time error"])
+def test_a_round_expanded_in_the_compiled_core_is_every_successor_once(name):
+    """``expand_keys`` (a worker's round over a packed table): each distinct successor of
+    the states in id order once, with the first state that reached it, as stepping each
+    state (``step``, else Python's ``python_successors``) gives them; the counts of
+    transitions and deadlocks; the first state where the program failed stops the round."""
+    system = system_of(name)
+    table = packed(system)
+    for state in breadth_first(system, 200):
+        table.intern(state, True)
+    first, last = 20, len(table)
+    keys, parents, transitions, deadlocks, deadlocked, failed, watched = \
+        table.expand_keys(first, last, True, None)
+    failed_ids = [i for i in range(first, last) if table.failed_at(i)]
+    end = failed_ids[0] if failed_ids else last
+    assert failed == (failed_ids[0] if failed_ids else -1) and not watched
+    expected, parent_ids, seen, steps = [], [], set(), 0
+    for state_id in range(first, end):
+        found = table.step(state_id)
+        if found is None:
+            found = table.python_successors(state_id)
+        steps += len(found)
+        for frame, data in found:
+            if (frame, data) not in seen:
+                seen.add((frame, data))
+                expected.append(frame << 32 | data)
+                parent_ids.append(state_id)
+    assert array("Q", keys).tolist() == expected and array("q", parents).tolist() == parent_ids
+    if failed < 0:
+        assert transitions == steps
+        assert deadlocked == next((i for i in range(first, end) if not table.step(i) and
+                                   not table.python_successors(i)), -1)
+    if name == "run-time error":
+        assert failed >= 0          # (the model's error is within the first 200 states)
+
+
+def test_the_compiled_round_asks_the_watch_where_the_program_may_be_stuck():
+    """``expand_keys``' watch: asked (with the state's id and its successors' parts) until
+    it says True once, and its answer returned."""
+    system = system_of("two tasks")
+    table = packed(system)
+    for state in breadth_first(system, 200):
+        table.intern(state, True)
+    asked = []
+
+    def watch(state_id, frames, data):
+        state, targets = table.stepped(state_id, frames, data)
+        assert state == table[state_id] and len(targets) == len(frames)
+        asked.append(state_id)
+        return len(asked) == 2
+    *_, watched = table.expand_keys(0, len(table), False, watch)
+    assert watched and len(asked) == 2
+    *_, watched = table.expand_keys(0, len(table), False, lambda *_: False)
+    assert not watched
 
 
 @pytest.mark.parametrize("engine", ["native", "python"])

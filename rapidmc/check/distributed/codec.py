@@ -264,8 +264,20 @@ class VectorCodec:
         (``segments_batch``), their owners computed together, and each owner's share
         written again in one call.  Returns each successor's owner."""
         np = self.np
-        keys = np.array(keys, np.uint64)
-        parents = np.array(fields, np.int64)
+        return self._route(outboxes, np.array(keys, np.uint64),
+                           np.array(fields, np.int64)).tolist()
+
+    def send_expanded(self, outboxes, keys: bytes, parents: bytes) -> list[int]:
+        """``send`` of what the table's ``expand_keys`` gave (keys and parents as bytes of
+        uint64 and int64); returns how many went to each owner."""
+        np = self.np
+        owners = self._route(outboxes, np.frombuffer(keys, np.uint64),
+                             np.frombuffer(parents, np.int64))
+        return np.bincount(owners.astype(np.int64), minlength=self.count).tolist()
+
+    def _route(self, outboxes, keys, parents):
+        """``send``'s work on arrays: the owner of each key."""
+        np = self.np
         frames, data, lengths = self._segments_batch(keys.tobytes())
         owners = self._owners_of(np.frombuffer(frames, np.uint32),
                                  np.frombuffer(data, np.uint32),
@@ -280,7 +292,7 @@ class VectorCodec:
             else:
                 outboxes[target].append((*self._segments_batch(keys[mine].tobytes()),
                                          parents[mine].tobytes()))
-        return owners.tolist()
+        return owners
 
     def owners(self, items: Sequence[tuple[bytes, bytes]]) -> list[int]:
         """The owner of each state given by its vectors (``prepare``)."""

@@ -25,6 +25,7 @@ pickled.
 from __future__ import annotations
 
 import contextlib
+import os
 import pickle
 import time
 from array import array
@@ -200,6 +201,9 @@ class Partition:
             if predicate == getattr(self.system, "failed", None) else None
         lazy = failed_at is not None and watch is None and getattr(codec, "lazy_states", False)
         outboxes = [codec.outbox() for _ in range(count)]
+        end = min(self.level_end, self.expanded + ROUND)
+        if failed_at is not None and getattr(table, "expand_keys", None) is not None:
+            return self._expand_keys(end, outboxes)
         send = codec.send
         # a successor reached again in this level is sent once (its first parent, as its
         # owner would keep): storing a state costs its owner more than encoding it here
@@ -210,7 +214,6 @@ class Partition:
         transitions = deadlocks = 0
         deadlock_target = -1
         watched = self.watched
-        end = min(self.level_end, self.expanded + ROUND)
 
         def flush():
             owners = send(outboxes, pending, pending_parents)
@@ -247,12 +250,40 @@ class Partition:
                 flush()
         if pending:
             flush()
+        self.watched = watched
+        return self._expanded(end, outboxes, sent, transitions, deadlocks, deadlock_target)
+
+    def _expand_keys(self, end: int, outboxes: list) -> tuple:
+        """``expand`` of a packed table whose predicate is its run-time error: the round's
+        steps, the predicate, the watch (asked only where the program may be stuck, as one
+        process's loop asks it) and the level's deduplication in one call into the compiled
+        core (``expand_keys``), its successors routed in one call of the codec: no Python
+        call per state but for the states Python steps."""
+        table, watch = self.table, self.watch
+        asked = None
+        if watch is not None and not self.watched:
+            def asked(state_id: int, frames: list, data: list) -> bool:
+                return watch(*table.stepped(state_id, frames, data))
+        keys, parents, transitions, deadlocks, deadlocked, failed, watched = \
+            table.expand_keys(self.expanded, end, True, asked)
+        self.watched = self.watched or watched
+        if failed >= 0:
+            self.expanded = self.level_end
+            return [*self._nothing(), (failed, self.transitions, self.deadlocks, -1,
+                                       self.watched)]
+        sent = self.codec.send_expanded(outboxes, keys, parents)
+        target = deadlocked if self.deadlock_is_target else -1
+        return self._expanded(end, outboxes, sent, transitions, deadlocks, target)
+
+    def _expanded(self, end: int, outboxes: list, sent: list, transitions: int,
+                  deadlocks: int, deadlock_target: int) -> tuple:
+        """The round's batches and figures, once its states up to ``end`` are stepped."""
+        codec, index = self.codec, self.index
         self.expanded = end
         self.transitions += transitions
         self.deadlocks += deadlocks
-        self.watched = watched
         self.sent += sum(sent) - sent[index]
-        outgoing = [codec.encode(target, outboxes[target]) for target in range(count)]
+        outgoing = [codec.encode(target, outboxes[target]) for target in range(self.count)]
         self.sent_bytes += sum(len(batch) for target, batch in enumerate(outgoing)
                                if target != index)
         return [*outgoing,
@@ -286,7 +317,7 @@ class Partition:
                 "cpu_seconds": time.process_time() - self.cpu_started,
                 "step_seconds": self.step_seconds, "sent_bytes": self.sent_bytes,
                 "start_rss_kb": self.start_rss_kb, "peak_private_kb": self.peak_private_kb,
-                "max_rss_kb": _peak_rss_kb()}
+                "max_rss_kb": _peak_rss_kb(), "pid": os.getpid()}
 
 
 def _peak_rss_kb() -> int:
