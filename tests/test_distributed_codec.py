@@ -21,7 +21,7 @@ import pytest
 from rapidmc import api
 from rapidmc.check import check_property, find_reachable, native
 from rapidmc.check.distributed.codec import NodeCodec, VectorCodec, codec_for
-from rapidmc.check.distributed.partition import link, search_here, unlink
+from rapidmc.check.distributed.partition import Links, link, search_here, unlink
 from rapidmc.check.distributed.product_partition import product_here
 from rapidmc.check.result import HOLDS, VIOLATED
 
@@ -121,9 +121,14 @@ def test_vectors_sent_to_another_table_are_stored_as_the_same_states():
             ids, new, fields = receiver.store(0, sender.encode(1, outboxes[target]))
             assert [receiver_table[i] for i in ids.tolist()] == \
                 [batch[field] for field in fields.tolist()]
-            links = receiver.store_links(0, sender.encode(1, outboxes[target]))
-            assert not links                    # (stored already: nothing new again)
-            links = [link(0, field) for field, fresh in zip(fields.tolist(), new) if fresh]
+            again = Links(2)
+            again.extend(0, receiver.store(0, sender.encode(1, outboxes[target])))
+            assert not len(again)               # (stored already: nothing new again)
+            made = Links(2)
+            made.extend(0, (ids, new, fields))
+            links = [made[i] for i in range(len(made))]
+            assert links == [link(0, field) for field, fresh in zip(fields.tolist(), new)
+                             if fresh]
             assert all(unlink(each)[0] == 0 for each in links)
             stored += [(receiver_table[state_id], batch[unlink(each)[1]]) for state_id, each
                        in zip(range(before, len(receiver_table)), links)]
@@ -181,6 +186,27 @@ def test_node_ids_sent_to_another_table_are_stored_as_the_same_states(engine):
                     [batch[field] for field in fields.tolist()]
     assert {receiver_table[i] for i in range(len(receiver_table))} == set(states)
     assert len(receiver_table) == len(states)
+
+
+@pytest.mark.parametrize("numpy_arrays", [True, False])
+def test_parent_links_take_4_bytes_until_they_need_more(numpy_arrays):
+    """A partition's parent links: 4 bytes a state while ``1 + id * partitions + sender``
+    fits in 32 bits, then 8, each link read back as ``link`` wrote it (initial: -1)."""
+    import numpy
+    links = Links(3)
+    links.initial()
+    wanted = [-1]
+    for sender, fields in ((2, [0, 5, 7]), (1, [(1 << 32) // 3 - 1]), (0, [1 << 33, 4])):
+        new = [True] * len(fields)
+        new[-1] = len(fields) == 1          # (the last one: not new, unless alone)
+        stored = (None, numpy.array(new), numpy.array(fields, numpy.int64)) if numpy_arrays \
+            else (None, new, fields)
+        links.extend(sender, stored)
+        wanted += [link(sender, field) for field, fresh in zip(fields, new) if fresh]
+        if sender == 1:
+            assert links.memory_bytes() == 4 * len(wanted)
+    assert [links[i] for i in range(len(links))] == wanted
+    assert links.memory_bytes() == 8 * len(wanted)
 
 
 @pytest.mark.parametrize("name", ["socket server", "two tasks", "run-time error"])

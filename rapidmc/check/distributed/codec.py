@@ -35,8 +35,7 @@ for the level's deduplication), ``outbox()`` (a batch being written), ``send(out
 fields)`` (a chunk of keys routed to their owners' outboxes, each with a number, its
 parent's id; returns each key's owner), ``encode(target, outbox)``, ``store(sender, data)``
 (stores the batch's states: their ids, whether each was new and their fields, in order),
-``store_links(sender, data)`` (``store``, then the links ``link(sender, field)`` of the new
-ones), ``owns(state, index)``.
+``owns(state, index)``.
 """
 from __future__ import annotations
 
@@ -205,11 +204,6 @@ class PickleCodec:
         intern = self.table.intern
         stored = [intern(state, True) for state in states]
         return array("q", [i for i, _ in stored]), [new for _, new in stored], fields
-
-    def store_links(self, sender: int, data: bytes) -> array:
-        _, new, fields = self.store(sender, data)
-        high = sender << ID_BITS
-        return array("q", [high | field for field, fresh in zip(fields, new) if fresh])
 
     def owns(self, state: Hashable, index: int) -> bool:
         return owner_of_prints(self.prints(state), self.count) == index
@@ -401,13 +395,6 @@ class VectorCodec:
         if not ids:
             return np.zeros(0, np.int64), np.zeros(0, np.bool_), parents
         return np.concatenate(ids), np.concatenate(news), parents
-
-    def store_links(self, sender: int, blob: bytes) -> array:
-        """``store``, then the links to the parents of the new states, in their order."""
-        _, new, fields = self.store(sender, blob)
-        links = array("q")
-        links.frombytes((fields[new] | self.np.int64(sender << ID_BITS)).tobytes())
-        return links
 
     def _maps(self, sender: int, values, contexts) -> tuple:
         """The arrays from ``sender``'s value and context ids to this table's, extended by
@@ -602,13 +589,6 @@ class NodeCodec:
             known = self.node_array[sender] = self.np.concatenate(
                 (known, self.np.array(mapping[len(known):], self.np.uint32)))
         return known
-
-    def store_links(self, sender: int, blob: bytes) -> array:
-        """``store``, then the links to the parents of the new states, in their order."""
-        _, new, fields = self.store(sender, blob)
-        links = array("q")
-        links.frombytes((fields[new] | self.np.int64(sender << ID_BITS)).tobytes())
-        return links
 
     def owns(self, state: Hashable, index: int) -> bool:
         return int(self._owners_of(self.np.array([self.parts_of(state)], self.np.uint32))[0]) \
