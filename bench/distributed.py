@@ -256,6 +256,8 @@ def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
             "sent_bytes": sum(f["sent_bytes"] for f in figures),
             "worker_rss_kb": [f["max_rss_kb"] for f in figures],
             "worker_start_rss_kb": [f["start_rss_kb"] for f in figures],
+            "worker_private_kb": [f["peak_private_kb"] for f in figures],
+            "worker_bytes": [f["bytes"] for f in figures],
             "worker_cpu": [f["cpu_seconds"] for f in figures],
             "worker_step_cpu": [f["step_seconds"] for f in figures],
             "worker_states": [f["states"] for f in figures]}
@@ -422,6 +424,12 @@ def print_safety(names, modulo: int, workers: int) -> None:
                            sorted(every.items(), key=lambda item: -item[1]) if seconds >= 0.005)
         print(f"{'':16} every process: {total:.2f} s of CPU, {total / single['cpu']:.2f}x one "
               f"process's ({others})", flush=True)
+        print(f"{'':16} worker memory: {_each([kb / 1024 for kb in spread['worker_start_rss_kb']], '.0f')}"
+              f" MB at the start, peak {_each([kb / 1024 for kb in spread['worker_rss_kb']], '.0f')}"
+              f" MB (anonymous and file pages, Ray's shared object store apart: "
+              f"{_each([kb / 1024 for kb in spread['worker_private_kb']], '.0f')} MB); the table "
+              f"and parent links {_each([b / 2 ** 20 for b in spread['worker_bytes']], '.0f')} MB",
+              flush=True)
         if not name.startswith("counters"):
             family["every_cpu"] = family.get("every_cpu", 0.0) + total
             family["single"] += single["seconds"]
