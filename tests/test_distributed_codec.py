@@ -102,40 +102,48 @@ def test_every_table_names_the_same_owner_whatever_its_numbering():
 
 def test_vectors_sent_to_another_table_are_stored_as_the_same_states():
     """Batches in the sender's ids, values and contexts handed over as they appear: the
-    receiver stores exactly the states sent, with their parents, once."""
+    receiver stores exactly the states sent, with their parents, once.  The share the
+    sender keeps for itself travels as its table's keys and is stored by key."""
     system = system_of("two tasks")
     states = breadth_first(system, 300)
     sender_table, receiver_table = packed(system), packed(system)
-    sender, receiver = VectorCodec(sender_table, 0, 2), VectorCodec(receiver_table, 1, 2)
+    # three partitions: the sender is the third, the receiver stores the other two shares
+    sender, receiver = VectorCodec(sender_table, 2, 3), VectorCodec(receiver_table, 1, 3)
     for state in states[100:]:              # the receiver numbered other states first
         receiver_table.intern(state, True)
-    stored = []
+    stored, kept = [], set()
     for batch in (states[:150], states[150:], states[:150]):       # the last: all known
-        outboxes = [sender.outbox(), sender.outbox()]
+        outboxes = [sender.outbox() for _ in range(3)]
         keys = [(lambda frame, data: frame << 32 | data)(*sender_table.intern_parts(
             *sender.prepare(state))) for state in batch]
         owners = sender.send(outboxes, keys, range(len(batch)))
         assert owners == sender.owners([sender.prepare(state) for state in batch])
+        own = sender.encode(2, outboxes[2])
+        ids, new, fields = sender.store(2, own)
+        assert [sender_table[i] for i in ids.tolist()] == [batch[f] for f in fields.tolist()]
+        assert len(own) == 8 + 16 * len(ids)    # (keys and parents only)
+        kept.update(sender_table[i] for i in ids.tolist())
         before = len(receiver_table)
         for target in (0, 1):         # (each owner's share, written for the receiver)
-            ids, new, fields = receiver.store(0, sender.encode(1, outboxes[target]))
+            ids, new, fields = receiver.store(2, sender.encode(1, outboxes[target]))
             assert [receiver_table[i] for i in ids.tolist()] == \
                 [batch[field] for field in fields.tolist()]
-            again = Links(2)
-            again.extend(0, receiver.store(0, sender.encode(1, outboxes[target])))
+            again = Links(3)
+            again.extend(2, receiver.store(2, sender.encode(1, outboxes[target])))
             assert not len(again)               # (stored already: nothing new again)
-            made = Links(2)
-            made.extend(0, (ids, new, fields))
+            made = Links(3)
+            made.extend(2, (ids, new, fields))
             links = [made[i] for i in range(len(made))]
-            assert links == [link(0, field) for field, fresh in zip(fields.tolist(), new)
+            assert links == [link(2, field) for field, fresh in zip(fields.tolist(), new)
                              if fresh]
-            assert all(unlink(each)[0] == 0 for each in links)
+            assert all(unlink(each)[0] == 2 for each in links)
             stored += [(receiver_table[state_id], batch[unlink(each)[1]]) for state_id, each
                        in zip(range(before, len(receiver_table)), links)]
             before = len(receiver_table)
     assert all(got == sent_state for got, sent_state in stored)
-    assert {receiver_table[i] for i in range(len(receiver_table))} == set(states)
-    assert len(receiver_table) == len(states)
+    received = {receiver_table[i] for i in range(len(receiver_table))}
+    assert kept and received | kept == set(states)
+    assert len(receiver_table) == len(received) == len(set(states[100:]) | (set(states) - kept))
     assert sender_table.context_count() >= 2    # several contexts went across
 
 

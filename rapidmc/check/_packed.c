@@ -1923,6 +1923,46 @@ done:
     return result;
 }
 
+/* ``intern_keys(keys) -> (ids, new)``: the states of these keys (bytes of uint64, frame id
+ * << 32 | data id of segments this table holds) stored: their ids (bytes of int64) and
+ * whether each was new (bytes of 0 and 1), in order; how a worker stores the successors it
+ * owns itself, whose segments its step interned already */
+static PyObject *PackedTable_intern_keys(PackedTable *self, PyObject *args)
+{
+    Py_buffer keys;
+    if (ensure_index(self) < 0 || !PyArg_ParseTuple(args, "y*", &keys))
+        return NULL;
+    PyObject *ids = NULL, *news = NULL, *result = NULL;
+    const uint64_t *key = keys.buf;
+    Py_ssize_t count = keys.len / (Py_ssize_t)sizeof(uint64_t);
+    ids = PyBytes_FromStringAndSize(NULL, count * (Py_ssize_t)sizeof(int64_t));
+    news = PyBytes_FromStringAndSize(NULL, count);
+    if (ids == NULL || news == NULL)
+        goto done;
+    int64_t *id_out = (int64_t *)PyBytes_AS_STRING(ids);
+    char *new_out = PyBytes_AS_STRING(news);
+    for (Py_ssize_t i = 0; i < count; i++) {
+        int32_t frame_id = (int32_t)(key[i] >> 32), data_id = (int32_t)(key[i] & 0xFFFFFFFFu);
+        if (frame_id < 0 || frame_id >= self->frames.count || data_id < 0 ||
+                data_id >= self->data.count) {
+            PyErr_SetString(PyExc_IndexError, "no such state part");
+            goto done;
+        }
+        int is_new = 0;
+        Py_ssize_t id = intern_key(self, frame_id, data_id, 1, &is_new);
+        if (id == -2)
+            goto done;
+        id_out[i] = id;
+        new_out[i] = (char)is_new;
+    }
+    result = PyTuple_Pack(2, ids, news);
+done:
+    Py_XDECREF(ids);
+    Py_XDECREF(news);
+    PyBuffer_Release(&keys);
+    return result;
+}
+
 /* ``resets``: None, or (offsets: bytes of int32, pairs: bytes of int32) */
 static int parse_resets(PyObject *resets, int32_t **offsets, int32_t **pairs,
                         Py_ssize_t *lists)
@@ -2462,6 +2502,8 @@ static PyMethodDef PackedTable_methods[] = {
      "segments(frame id, data id) -> (frame, data): interned segments' vectors as bytes"},
     {"segments_batch", (PyCFunction)PackedTable_segments_batch, METH_VARARGS,
      "segments_batch(keys) -> (frames, data, lengths): segments of many states"},
+    {"intern_keys", (PyCFunction)PackedTable_intern_keys, METH_VARARGS,
+     "intern_keys(keys) -> (ids, new): the states of these segment keys, stored"},
     {"intern_batch", (PyCFunction)PackedTable_intern_batch, METH_VARARGS,
      "intern_batch(frames, data, lengths) -> (ids, new): many states by their vectors"},
     {"set_program", (PyCFunction)PackedTable_set_program, METH_VARARGS,

@@ -317,7 +317,7 @@ class Partition:
             self.expanded = self.level_end
             return [*self._nothing(), (failed, self.transitions, self.deadlocks, -1,
                                        self.watched)]
-        sent = self.codec.send_expanded(outboxes, keys, parents)
+        sent = self.codec.send_expanded(outboxes, keys, parents, CHUNK)
         target = deadlocked if self.deadlock_is_target else -1
         return self._expanded(end, outboxes, sent, transitions, deadlocks, target)
 
