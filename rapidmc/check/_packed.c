@@ -1869,6 +1869,20 @@ done:
     return result;
 }
 
+/* the state (frame id, data id) stored as item ``i`` of a batch: its id into ``ids`` (bytes
+ * of int64), whether it was new into ``news`` (bytes of 0 and 1); 0 / -1 */
+static int store_item(PackedTable *self, int32_t frame_id, int32_t data_id, PyObject *ids,
+                      PyObject *news, Py_ssize_t i)
+{
+    int is_new = 0;
+    Py_ssize_t id = intern_key(self, frame_id, data_id, 1, &is_new);
+    if (id == -2)
+        return -1;
+    ((int64_t *)PyBytes_AS_STRING(ids))[i] = id;
+    PyBytes_AS_STRING(news)[i] = (char)is_new;
+    return 0;
+}
+
 /* ``intern_batch(frames, data, lengths) -> (ids, new)``: ``intern_vectors`` of many states
  * at once (the layout ``segments_batch`` writes; each data vector ``len(data) / states``
  * ids): their ids (bytes of int64) and whether each was new (bytes of 0 and 1), in order;
@@ -1896,20 +1910,12 @@ static PyObject *PackedTable_intern_batch(PackedTable *self, PyObject *args)
     news = PyBytes_FromStringAndSize(NULL, count);
     if (ids == NULL || news == NULL)
         goto done;
-    int64_t *id_out = (int64_t *)PyBytes_AS_STRING(ids);
-    char *new_out = PyBytes_AS_STRING(news);
     const uint32_t *frame = frames.buf, *row = data.buf;
     for (Py_ssize_t i = 0; i < count; i++) {
         int32_t frame_id = vt_intern(&self->frames, frame, length[i]);
         int32_t data_id = frame_id < 0 ? -1 : vt_intern(&self->data, row, width);
-        if (data_id < 0)
+        if (data_id < 0 || store_item(self, frame_id, data_id, ids, news, i) < 0)
             goto done;
-        int is_new = 0;
-        Py_ssize_t id = intern_key(self, frame_id, data_id, 1, &is_new);
-        if (id == -2)
-            goto done;
-        id_out[i] = id;
-        new_out[i] = (char)is_new;
         frame += length[i];
         row += width;
     }
@@ -1939,8 +1945,6 @@ static PyObject *PackedTable_intern_keys(PackedTable *self, PyObject *args)
     news = PyBytes_FromStringAndSize(NULL, count);
     if (ids == NULL || news == NULL)
         goto done;
-    int64_t *id_out = (int64_t *)PyBytes_AS_STRING(ids);
-    char *new_out = PyBytes_AS_STRING(news);
     for (Py_ssize_t i = 0; i < count; i++) {
         int32_t frame_id = (int32_t)(key[i] >> 32), data_id = (int32_t)(key[i] & 0xFFFFFFFFu);
         if (frame_id < 0 || frame_id >= self->frames.count || data_id < 0 ||
@@ -1948,12 +1952,8 @@ static PyObject *PackedTable_intern_keys(PackedTable *self, PyObject *args)
             PyErr_SetString(PyExc_IndexError, "no such state part");
             goto done;
         }
-        int is_new = 0;
-        Py_ssize_t id = intern_key(self, frame_id, data_id, 1, &is_new);
-        if (id == -2)
+        if (store_item(self, frame_id, data_id, ids, news, i) < 0)
             goto done;
-        id_out[i] = id;
-        new_out[i] = (char)is_new;
     }
     result = PyTuple_Pack(2, ids, news);
 done:
