@@ -10,7 +10,9 @@ Two codecs, one per kind of state table, with one interface (``Partition`` uses 
   maps the sender's ids to its own.  So a state costs its vectors' bytes on the wire (4
   bytes a value), a whole batch is translated with a few array operations, and the owner
   stores a state with one call into the table (``intern_vectors``): no Python object is
-  pickled or built per state, and a state the owner already has is never rebuilt.
+  pickled or built per state, and a state the owner already has is never rebuilt.  The
+  share a worker keeps for itself is its table's keys (its step interned their segments
+  already), stored by key (``intern_keys``).
   The owner of a state is a hash of its vectors in which every id stands for a
   fingerprint of its value (BLAKE2b of ``canonical.canonical_bytes``), the same in every
   process: equal values, equal fingerprints; so every worker agrees on the owner.
