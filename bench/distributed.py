@@ -70,6 +70,44 @@ def _start_ray(ray, workers: int) -> float:
     return time.perf_counter() - started
 
 
+def tree_cpu(root: int) -> dict[int, tuple[str, float]]:
+    """CPU seconds (user + system) of ``root`` and of every live process below it, by pid,
+    with each one's name (Linux /proc): the driver, Ray's own processes (``raylet``,
+    ``gcs_server``, its agents) and the workers, whose CPU all comes out of the same cores."""
+    import os
+    tick = os.sysconf("SC_CLK_TCK")
+    found: dict[int, tuple[int, str, float]] = {}
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry}/stat") as stat:
+                text = stat.read()
+        except OSError:
+            continue
+        name = text[text.index("(") + 1:text.rindex(")")]
+        fields = text[text.rindex(")") + 2:].split()
+        found[int(entry)] = (int(fields[1]), name, (int(fields[11]) + int(fields[12])) / tick)
+    below, grew = {root}, True
+    while grew:
+        grew = False
+        for pid, (parent, _, _) in found.items():
+            if parent in below and pid not in below:
+                below.add(pid)
+                grew = True
+    return {pid: found[pid][1:] for pid in below if pid in found}
+
+
+def cpu_by_kind(before: dict, after: dict, driver: int, workers) -> dict[str, float]:
+    """The CPU seconds each kind of process spent between two ``tree_cpu`` readings: the
+    driver, the workers, and Ray's other processes by name."""
+    spent: dict[str, float] = {}
+    for pid, (name, seconds) in after.items():
+        kind = "driver" if pid == driver else "workers" if pid in workers else name
+        spent[kind] = spent.get(kind, 0.0) + seconds - before.get(pid, (name, 0.0))[1]
+    return spent
+
+
 def model_of(name: str, modulo: int):
     """The model, partial-order reduction off as on a cluster (its cycle proviso depends on
     the search order: with it, the two searches would store different states)."""
@@ -200,20 +238,26 @@ def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
     recipe = api.system_recipe(model)        # (each worker builds the system itself)
     partitioned_reachable(ray, workers, system, "failed", budget=SearchBudget(1),
                           rebuild=recipe)
+    import os
+    cpu_before = tree_cpu(os.getpid())
     started = time.perf_counter()
     driver_cpu = time.process_time()
     result, _, figures = partitioned_reachable(ray, workers, system, "failed",
                                                budget=SearchBudget(None), rebuild=recipe)
     seconds = time.perf_counter() - started
     driver_cpu = time.process_time() - driver_cpu
+    every_cpu = cpu_by_kind(cpu_before, tree_cpu(os.getpid()), os.getpid(),
+                            {f["pid"] for f in figures})
     ray.shutdown()
     return {"verdict": result.verdict, "states": result.stats.product_states,
             "seconds": seconds, "start_seconds": start_seconds, "driver_cpu": driver_cpu,
-            "levels": result.stats.max_depth + 1,
+            "every_cpu": every_cpu, "levels": result.stats.max_depth + 1,
             "sent": sum(f["sent"] for f in figures),
             "sent_bytes": sum(f["sent_bytes"] for f in figures),
             "worker_rss_kb": [f["max_rss_kb"] for f in figures],
             "worker_start_rss_kb": [f["start_rss_kb"] for f in figures],
+            "worker_private_kb": [f["peak_private_kb"] for f in figures],
+            "worker_bytes": [f["bytes"] for f in figures],
             "worker_cpu": [f["cpu_seconds"] for f in figures],
             "worker_step_cpu": [f["step_seconds"] for f in figures],
             "worker_states": [f["states"] for f in figures]}
@@ -374,7 +418,20 @@ def print_safety(names, modulo: int, workers: int) -> None:
               f"{100 * heaviest / single['max_rss_kb']:>5.0f} "
               f"{_each([100 * n / states for n in spread['worker_states']], '.0f'):>7}",
               flush=True)
+        every = spread["every_cpu"]
+        total = sum(every.values())
+        others = ", ".join(f"{kind} {seconds:.2f}" for kind, seconds in
+                           sorted(every.items(), key=lambda item: -item[1]) if seconds >= 0.005)
+        print(f"{'':16} every process: {total:.2f} s of CPU, {total / single['cpu']:.2f}x one "
+              f"process's ({others})", flush=True)
+        print(f"{'':16} worker memory: {_each([kb / 1024 for kb in spread['worker_start_rss_kb']], '.0f')}"
+              f" MB at the start, peak {_each([kb / 1024 for kb in spread['worker_rss_kb']], '.0f')}"
+              f" MB (anonymous and file pages, Ray's shared object store apart: "
+              f"{_each([kb / 1024 for kb in spread['worker_private_kb']], '.0f')} MB); the table "
+              f"and parent links {_each([b / 2 ** 20 for b in spread['worker_bytes']], '.0f')} MB",
+              flush=True)
         if not name.startswith("counters"):
+            family["every_cpu"] = family.get("every_cpu", 0.0) + total
             family["single"] += single["seconds"]
             family["workers"] += spread["seconds"]
             family["single_cpu"] += single["cpu"]
@@ -384,7 +441,10 @@ def print_safety(names, modulo: int, workers: int) -> None:
               f"{family['workers']:.2f} s on {workers} workers: "
               f"{family['single'] / family['workers']:.2f}x wall; CPU: "
               f"{family['single_cpu']:.2f} s against {family['worker_cpu']:.2f} s of the "
-              f"busier worker: {family['single_cpu'] / family['worker_cpu']:.2f}x")
+              f"busier worker: {family['single_cpu'] / family['worker_cpu']:.2f}x; every process "
+              f"of the cluster: {family['every_cpu']:.2f} s, "
+              f"{family['every_cpu'] / family['single_cpu']:.2f}x one process's CPU (1.7x "
+              f"wall on {workers} cores needs at most {workers / 1.7:.2f}x)")
 
 
 def _each(values, form: str) -> str:

@@ -12,6 +12,7 @@ and find the violation at the depth one process finds it.
 from __future__ import annotations
 
 import gc
+from array import array
 from dataclasses import replace
 from pathlib import Path
 
@@ -20,7 +21,7 @@ import pytest
 from rapidmc import api
 from rapidmc.check import check_property, find_reachable, native
 from rapidmc.check.distributed.codec import NodeCodec, VectorCodec, codec_for
-from rapidmc.check.distributed.partition import link, search_here, unlink
+from rapidmc.check.distributed.partition import Links, link, search_here, unlink
 from rapidmc.check.distributed.product_partition import product_here
 from rapidmc.check.result import HOLDS, VIOLATED
 
@@ -101,35 +102,48 @@ def test_every_table_names_the_same_owner_whatever_its_numbering():
 
 def test_vectors_sent_to_another_table_are_stored_as_the_same_states():
     """Batches in the sender's ids, values and contexts handed over as they appear: the
-    receiver stores exactly the states sent, with their parents, once."""
+    receiver stores exactly the states sent, with their parents, once.  The share the
+    sender keeps for itself travels as its table's keys and is stored by key."""
     system = system_of("two tasks")
     states = breadth_first(system, 300)
     sender_table, receiver_table = packed(system), packed(system)
-    sender, receiver = VectorCodec(sender_table, 0, 2), VectorCodec(receiver_table, 1, 2)
+    # three partitions: the sender is the third, the receiver stores the other two shares
+    sender, receiver = VectorCodec(sender_table, 2, 3), VectorCodec(receiver_table, 1, 3)
     for state in states[100:]:              # the receiver numbered other states first
         receiver_table.intern(state, True)
-    stored = []
+    stored, kept = [], set()
     for batch in (states[:150], states[150:], states[:150]):       # the last: all known
-        outboxes = [sender.outbox(), sender.outbox()]
+        outboxes = [sender.outbox() for _ in range(3)]
         keys = [(lambda frame, data: frame << 32 | data)(*sender_table.intern_parts(
             *sender.prepare(state))) for state in batch]
         owners = sender.send(outboxes, keys, range(len(batch)))
         assert owners == sender.owners([sender.prepare(state) for state in batch])
+        own = sender.encode(2, outboxes[2])
+        ids, new, fields = sender.store(2, own)
+        assert [sender_table[i] for i in ids.tolist()] == [batch[f] for f in fields.tolist()]
+        assert len(own) == 8 + 16 * len(ids)    # (keys and parents only)
+        kept.update(sender_table[i] for i in ids.tolist())
         before = len(receiver_table)
         for target in (0, 1):         # (each owner's share, written for the receiver)
-            ids, new, fields = receiver.store(0, sender.encode(1, outboxes[target]))
+            ids, new, fields = receiver.store(2, sender.encode(1, outboxes[target]))
             assert [receiver_table[i] for i in ids.tolist()] == \
                 [batch[field] for field in fields.tolist()]
-            links = receiver.store_links(0, sender.encode(1, outboxes[target]))
-            assert not links                    # (stored already: nothing new again)
-            links = [link(0, field) for field, fresh in zip(fields.tolist(), new) if fresh]
-            assert all(unlink(each)[0] == 0 for each in links)
+            again = Links(3)
+            again.extend(2, receiver.store(2, sender.encode(1, outboxes[target])))
+            assert not len(again)               # (stored already: nothing new again)
+            made = Links(3)
+            made.extend(2, (ids, new, fields))
+            links = [made[i] for i in range(len(made))]
+            assert links == [link(2, field) for field, fresh in zip(fields.tolist(), new)
+                             if fresh]
+            assert all(unlink(each)[0] == 2 for each in links)
             stored += [(receiver_table[state_id], batch[unlink(each)[1]]) for state_id, each
                        in zip(range(before, len(receiver_table)), links)]
             before = len(receiver_table)
     assert all(got == sent_state for got, sent_state in stored)
-    assert {receiver_table[i] for i in range(len(receiver_table))} == set(states)
-    assert len(receiver_table) == len(states)
+    received = {receiver_table[i] for i in range(len(receiver_table))}
+    assert kept and received | kept == set(states)
+    assert len(receiver_table) == len(received) == len(set(states[100:]) | (set(states) - kept))
     assert sender_table.context_count() >= 2    # several contexts went across
 
 
@@ -180,6 +194,83 @@ def test_node_ids_sent_to_another_table_are_stored_as_the_same_states(engine):
                     [batch[field] for field in fields.tolist()]
     assert {receiver_table[i] for i in range(len(receiver_table))} == set(states)
     assert len(receiver_table) == len(states)
+
+
+@pytest.mark.parametrize("numpy_arrays", [True, False])
+def test_parent_links_take_4_bytes_until_they_need_more(numpy_arrays):
+    """A partition's parent links: 4 bytes a state while ``1 + id * partitions + sender``
+    fits in 32 bits, then 8, each link read back as ``link`` wrote it (initial: -1)."""
+    import numpy
+    links = Links(3)
+    links.initial()
+    wanted = [-1]
+    for sender, fields in ((2, [0, 5, 7]), (1, [(1 << 32) // 3 - 1]), (0, [1 << 33, 4])):
+        new = [True] * len(fields)
+        new[-1] = len(fields) == 1          # (the last one: not new, unless alone)
+        stored = (None, numpy.array(new), numpy.array(fields, numpy.int64)) if numpy_arrays \
+            else (None, new, fields)
+        links.extend(sender, stored)
+        wanted += [link(sender, field) for field, fresh in zip(fields, new) if fresh]
+        if sender == 1:
+            assert links.memory_bytes() == 4 * len(wanted)
+    assert [links[i] for i in range(len(links))] == wanted
+    assert links.memory_bytes() == 8 * len(wanted)
+
+
+@pytest.mark.parametrize("name", ["socket server", "two tasks", "run-time error"])
+def test_a_round_expanded_in_the_compiled_core_is_every_successor_once(name):
+    """``expand_keys`` (a worker's round over a packed table): each distinct successor of
+    the states in id order once, with the first state that reached it, as stepping each
+    state (``step``, else Python's ``python_successors``) gives them; the counts of
+    transitions and deadlocks; the first state where the program failed stops the round."""
+    system = system_of(name)
+    table = packed(system)
+    for state in breadth_first(system, 200):
+        table.intern(state, True)
+    first, last = 20, len(table)
+    keys, parents, transitions, deadlocks, deadlocked, failed, watched = \
+        table.expand_keys(first, last, True, None)
+    failed_ids = [i for i in range(first, last) if table.failed_at(i)]
+    end = failed_ids[0] if failed_ids else last
+    assert failed == (failed_ids[0] if failed_ids else -1) and not watched
+    expected, parent_ids, seen, steps = [], [], set(), 0
+    for state_id in range(first, end):
+        found = table.step(state_id)
+        if found is None:
+            found = table.python_successors(state_id)
+        steps += len(found)
+        for frame, data in found:
+            if (frame, data) not in seen:
+                seen.add((frame, data))
+                expected.append(frame << 32 | data)
+                parent_ids.append(state_id)
+    assert array("Q", keys).tolist() == expected and array("q", parents).tolist() == parent_ids
+    if failed < 0:
+        assert transitions == steps
+        assert deadlocked == next((i for i in range(first, end) if not table.step(i) and
+                                   not table.python_successors(i)), -1)
+    if name == "run-time error":
+        assert failed >= 0          # (the model's error is within the first 200 states)
+
+
+def test_the_compiled_round_asks_the_watch_where_the_program_may_be_stuck():
+    """``expand_keys``' watch: asked (with the state's id and its successors' parts) until
+    it says True once, and its answer returned."""
+    system = system_of("two tasks")
+    table = packed(system)
+    for state in breadth_first(system, 200):
+        table.intern(state, True)
+    asked = []
+
+    def watch(state_id, frames, data):
+        state, targets = table.stepped(state_id, frames, data)
+        assert state == table[state_id] and len(targets) == len(frames)
+        asked.append(state_id)
+        return len(asked) == 2
+    *_, watched = table.expand_keys(0, len(table), False, watch)
+    assert watched and len(asked) == 2
+    *_, watched = table.expand_keys(0, len(table), False, lambda *_: False)
+    assert not watched
 
 
 @pytest.mark.parametrize("engine", ["native", "python"])

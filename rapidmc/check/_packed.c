@@ -1994,6 +1994,20 @@ done:
     return result;
 }
 
+/* the state (frame id, data id) stored as item ``i`` of a batch: its id into ``ids`` (bytes
+ * of int64), whether it was new into ``news`` (bytes of 0 and 1); 0 / -1 */
+static int store_item(PackedTable *self, int32_t frame_id, int32_t data_id, PyObject *ids,
+                      PyObject *news, Py_ssize_t i)
+{
+    int is_new = 0;
+    Py_ssize_t id = intern_key(self, frame_id, data_id, 1, &is_new);
+    if (id == -2)
+        return -1;
+    ((int64_t *)PyBytes_AS_STRING(ids))[i] = id;
+    PyBytes_AS_STRING(news)[i] = (char)is_new;
+    return 0;
+}
+
 /* ``intern_batch(frames, data, lengths) -> (ids, new)``: ``intern_vectors`` of many states
  * at once (the layout ``segments_batch`` writes; each data vector ``len(data) / states``
  * ids): their ids (bytes of int64) and whether each was new (bytes of 0 and 1), in order;
@@ -2021,20 +2035,12 @@ static PyObject *PackedTable_intern_batch(PackedTable *self, PyObject *args)
     news = PyBytes_FromStringAndSize(NULL, count);
     if (ids == NULL || news == NULL)
         goto done;
-    int64_t *id_out = (int64_t *)PyBytes_AS_STRING(ids);
-    char *new_out = PyBytes_AS_STRING(news);
     const uint32_t *frame = frames.buf, *row = data.buf;
     for (Py_ssize_t i = 0; i < count; i++) {
         int32_t frame_id = vt_intern(&self->frames, frame, length[i]);
         int32_t data_id = frame_id < 0 ? -1 : vt_intern(&self->data, row, width);
-        if (data_id < 0)
+        if (data_id < 0 || store_item(self, frame_id, data_id, ids, news, i) < 0)
             goto done;
-        int is_new = 0;
-        Py_ssize_t id = intern_key(self, frame_id, data_id, 1, &is_new);
-        if (id == -2)
-            goto done;
-        id_out[i] = id;
-        new_out[i] = (char)is_new;
         frame += length[i];
         row += width;
     }
@@ -2045,6 +2051,40 @@ done:
     PyBuffer_Release(&frames);
     PyBuffer_Release(&data);
     PyBuffer_Release(&lengths);
+    return result;
+}
+
+/* ``intern_keys(keys) -> (ids, new)``: the states of these keys (bytes of uint64, frame id
+ * << 32 | data id of segments this table holds) stored: their ids (bytes of int64) and
+ * whether each was new (bytes of 0 and 1), in order; how a worker stores the successors it
+ * owns itself, whose segments its step interned already */
+static PyObject *PackedTable_intern_keys(PackedTable *self, PyObject *args)
+{
+    Py_buffer keys;
+    if (ensure_index(self) < 0 || !PyArg_ParseTuple(args, "y*", &keys))
+        return NULL;
+    PyObject *ids = NULL, *news = NULL, *result = NULL;
+    const uint64_t *key = keys.buf;
+    Py_ssize_t count = keys.len / (Py_ssize_t)sizeof(uint64_t);
+    ids = PyBytes_FromStringAndSize(NULL, count * (Py_ssize_t)sizeof(int64_t));
+    news = PyBytes_FromStringAndSize(NULL, count);
+    if (ids == NULL || news == NULL)
+        goto done;
+    for (Py_ssize_t i = 0; i < count; i++) {
+        int32_t frame_id = (int32_t)(key[i] >> 32), data_id = (int32_t)(key[i] & 0xFFFFFFFFu);
+        if (frame_id < 0 || frame_id >= self->frames.count || data_id < 0 ||
+                data_id >= self->data.count) {
+            PyErr_SetString(PyExc_IndexError, "no such state part");
+            goto done;
+        }
+        if (store_item(self, frame_id, data_id, ids, news, i) < 0)
+            goto done;
+    }
+    result = PyTuple_Pack(2, ids, news);
+done:
+    Py_XDECREF(ids);
+    Py_XDECREF(news);
+    PyBuffer_Release(&keys);
     return result;
 }
 
@@ -2292,6 +2332,208 @@ done:
     return result;
 }
 
+/* a Python list of ints (a new reference) */
+static PyObject *id_list(const int32_t *ids, Py_ssize_t count)
+{
+    PyObject *list = PyList_New(count);
+    if (list == NULL)
+        return NULL;
+    for (Py_ssize_t i = 0; i < count; i++) {
+        PyObject *number = PyLong_FromLong(ids[i]);
+        if (number == NULL) {
+            Py_DECREF(list);
+            return NULL;
+        }
+        PyList_SET_ITEM(list, i, number);
+    }
+    return list;
+}
+
+/* ``pairs`` (a sequence of (frame id, data id), as ``python_successors`` gives them) into
+ * ``found``; 0 / -1 */
+static int found_from_pairs(PyObject *pairs, Successors *found)
+{
+    PyObject *fast = PySequence_Fast(pairs, "python_successors must give a sequence");
+    if (fast == NULL)
+        return -1;
+    found->count = 0;
+    for (Py_ssize_t i = 0; i < PySequence_Fast_GET_SIZE(fast); i++) {
+        int frame, data;
+        if (!PyArg_ParseTuple(PySequence_Fast_GET_ITEM(fast, i), "ii", &frame, &data) ||
+                add_successor(found, frame, data) < 0) {
+            Py_DECREF(fast);
+            return -1;
+        }
+    }
+    Py_DECREF(fast);
+    return 0;
+}
+
+typedef struct {            /* a set of 64-bit keys, each noted once (open addressing) */
+    uint64_t *slots;        /* key + 1; 0: empty */
+    uint64_t mask;
+    Py_ssize_t count;
+} KeySet;
+
+/* whether ``key`` is new to the set (then it is added); -1 when out of memory */
+static int keyset_add(KeySet *set, uint64_t key)
+{
+    if (2 * (set->count + 1) > (Py_ssize_t)(set->mask + 1) || set->slots == NULL) {
+        uint64_t capacity = set->slots == NULL ? 4096 : 2 * (set->mask + 1);
+        uint64_t *slots = PyMem_Calloc(capacity, sizeof(uint64_t));
+        if (slots == NULL) {
+            PyErr_NoMemory();
+            return -1;
+        }
+        for (uint64_t i = 0; set->slots != NULL && i <= set->mask; i++) {
+            if (!set->slots[i])
+                continue;
+            uint64_t slot = mix64(set->slots[i] - 1) & (capacity - 1);
+            while (slots[slot])
+                slot = (slot + 1) & (capacity - 1);
+            slots[slot] = set->slots[i];
+        }
+        PyMem_Free(set->slots);
+        set->slots = slots;
+        set->mask = capacity - 1;
+    }
+    uint64_t slot = mix64(key) & set->mask;
+    while (set->slots[slot]) {
+        if (set->slots[slot] == key + 1)
+            return 0;
+        slot = (slot + 1) & set->mask;
+    }
+    set->slots[slot] = key + 1;
+    set->count++;
+    return 1;
+}
+
+/* whether ``watch(id, frames, data)`` (a state's id, its successors' parts) says True;
+ * asked, as the breadth-first loop's ``observe`` asks its stuck watch, only of a state the
+ * machine did not step, or whose context has an ended task, or whose every successor has
+ * its own call stack and data (a state where the program may be stuck); -1 on error */
+static int watch_says(PackedTable *table, PyObject *watch, Py_ssize_t id, int by_machine,
+                      const Successors *found)
+{
+    int64_t key = table->keys[id];
+    int32_t frame = (int32_t)(key >> 32), data = (int32_t)(key & 0xffffffff);
+    if (by_machine && !(table->context_runs[table->frames.arena[table->frames.offsets[frame]]] &
+                        CONTEXT_ENDED_TASK)) {
+        for (Py_ssize_t i = 0; i < found->count; i++)
+            if (found->frames[i] != frame || found->data[i] != data)
+                return 0;
+    }
+    PyObject *frames = id_list(found->frames, found->count);
+    PyObject *datas = frames == NULL ? NULL : id_list(found->data, found->count);
+    PyObject *answer = datas == NULL ? NULL :
+        PyObject_CallFunction(watch, "nOO", id, frames, datas);
+    Py_XDECREF(frames);
+    Py_XDECREF(datas);
+    if (answer == NULL)
+        return -1;
+    int says = PyObject_IsTrue(answer);
+    Py_DECREF(answer);
+    return says;
+}
+
+/* ``expand_keys(first, last, failed, watch) -> (keys, parents, transitions, deadlocks,
+ * first deadlocked id or -1, first failed id or -1, whether watch said True)``: the states
+ * ``first`` .. ``last`` - 1 stepped in id order (the machine's step, else
+ * ``python_successors``), as a worker of a distributed search expands a round
+ * (check/distributed/partition.py): their successors' keys (bytes of uint64, frame id << 32
+ * | data id), each distinct one once, the first time it is reached, with the id of the
+ * state it was reached from (bytes of int64).  With ``failed``, a state whose context says
+ * the program failed stops the loop before it is stepped: its id is the sixth number (the
+ * keys are then of the states before it).  ``watch`` (None, or as ``watch_says`` calls it)
+ * is asked until it says True once. */
+static PyObject *PackedTable_expand_keys(PackedTable *self, PyObject *args)
+{
+    Py_ssize_t first, last;
+    int failed;
+    PyObject *watch;
+    if (!PyArg_ParseTuple(args, "nnpO", &first, &last, &failed, &watch))
+        return NULL;
+    int watched = 0;
+    if (first < 0 || last > self->count || first > last)
+        return PyErr_Format(PyExc_IndexError, "no such state ids");
+    if (ensure_index(self) < 0)
+        return NULL;
+    Scratch scratch = {0};
+    Successors found = {0};
+    KeySet seen = {0};
+    uint64_t *keys = NULL;
+    int64_t *parents = NULL;
+    Py_ssize_t count = 0, keys_capacity = 0, parents_capacity = 0;
+    long long transitions = 0, deadlocks = 0;
+    Py_ssize_t deadlocked = -1, failed_at = -1;
+    PyObject *result = NULL;
+    if (scratch_init(&scratch, self) < 0)
+        goto done;
+    for (Py_ssize_t id = first; id < last; id++) {
+        if (failed) {
+            int32_t frame = (int32_t)(self->keys[id] >> 32);
+            if (self->context_runs[self->frames.arena[self->frames.offsets[frame]]] &
+                    CONTEXT_FAILED) {
+                failed_at = id;
+                break;
+            }
+        }
+        int outcome = machine_successors(self, id, &scratch, &found);
+        self->newly_executed.length = 0;
+        if (outcome < 0)
+            goto done;
+        if (outcome == VM_DONE)
+            self->machine_steps++;
+        else {
+            self->python_steps++;
+            PyObject *pairs = PyObject_CallMethod((PyObject *)self, "python_successors", "n",
+                                                  id);
+            int filled = pairs == NULL ? -1 : found_from_pairs(pairs, &found);
+            Py_XDECREF(pairs);
+            if (filled < 0)
+                goto done;
+        }
+        if (watch != Py_None && !watched &&
+                (watched = watch_says(self, watch, id, outcome == VM_DONE, &found)) < 0)
+            goto done;
+        transitions += found.count;
+        if (found.count == 0 && deadlocks++ == 0)
+            deadlocked = id;
+        for (Py_ssize_t i = 0; i < found.count; i++) {
+            uint64_t key = (uint64_t)(uint32_t)found.frames[i] << 32 | (uint32_t)found.data[i];
+            int fresh = keyset_add(&seen, key);
+            if (fresh < 0)
+                goto done;
+            if (!fresh)
+                continue;
+            uint64_t *more_keys = reserve(keys, &keys_capacity, sizeof(uint64_t), count + 1);
+            if (more_keys == NULL)
+                goto done;
+            keys = more_keys;
+            int64_t *more_parents = reserve(parents, &parents_capacity, sizeof(int64_t),
+                                            count + 1);
+            if (more_parents == NULL)
+                goto done;
+            parents = more_parents;
+            keys[count] = key;
+            parents[count++] = id;
+        }
+    }
+    result = Py_BuildValue("(y#y#LLnnO)", keys != NULL ? (const char *)keys : "",
+                           count * (Py_ssize_t)sizeof(uint64_t),
+                           parents != NULL ? (const char *)parents : "",
+                           count * (Py_ssize_t)sizeof(int64_t), transitions, deadlocks,
+                           deadlocked, failed_at, watched ? Py_True : Py_False);
+done:
+    scratch_free(&scratch);
+    PyMem_Free(found.frames);
+    PyMem_Free(found.data);
+    PyMem_Free(seen.slots);
+    PyMem_Free(keys);
+    PyMem_Free(parents);
+    return result;
+}
+
 /* ``evaluate(valuation index, id) -> int or None``: compiled atoms on a stored state */
 static PyObject *PackedTable_evaluate(PackedTable *self, PyObject *args)
 {
@@ -2385,12 +2627,18 @@ static PyMethodDef PackedTable_methods[] = {
      "segments(frame id, data id) -> (frame, data): interned segments' vectors as bytes"},
     {"segments_batch", (PyCFunction)PackedTable_segments_batch, METH_VARARGS,
      "segments_batch(keys) -> (frames, data, lengths): segments of many states"},
+    {"intern_keys", (PyCFunction)PackedTable_intern_keys, METH_VARARGS,
+     "intern_keys(keys) -> (ids, new): the states of these segment keys, stored"},
     {"intern_batch", (PyCFunction)PackedTable_intern_batch, METH_VARARGS,
      "intern_batch(frames, data, lengths) -> (ids, new): many states by their vectors"},
     {"set_program", (PyCFunction)PackedTable_set_program, METH_VARARGS,
      "set_program(store_length, io_length, routines, lazy, valuations): the compiled code"},
     {"step", (PyCFunction)PackedTable_step, METH_O,
      "step(id) -> [(frame id, data id)] or None: the step machine on a stored state"},
+    {"expand_keys", (PyCFunction)PackedTable_expand_keys, METH_VARARGS,
+     "expand_keys(first, last, failed, watch) -> (keys, parents, transitions, deadlocks, "
+     "first deadlocked id or -1, first failed id or -1, watched): a distributed worker's "
+     "round"},
     {"successor_ids", (PyCFunction)PackedTable_successor_ids, METH_VARARGS,
      "successor_ids(id, valuation) -> (ids, bits of the new ones) or None: the machine's "
      "step with the successors interned"},
@@ -2493,23 +2741,6 @@ static int note_trigger(PackedSearch *search, uint64_t bits)
     return 0;
 }
 
-/* a Python list of ints (a new reference) */
-static PyObject *id_list(const int32_t *ids, Py_ssize_t count)
-{
-    PyObject *list = PyList_New(count);
-    if (list == NULL)
-        return NULL;
-    for (Py_ssize_t i = 0; i < count; i++) {
-        PyObject *number = PyLong_FromLong(ids[i]);
-        if (number == NULL) {
-            Py_DECREF(list);
-            return NULL;
-        }
-        PyList_SET_ITEM(list, i, number);
-    }
-    return list;
-}
-
 /* the successors of ``frontier`` from Python (``step_python``, or with labels for the
  * observer ``python_labelled``, which also says whether it wants more): into ``found``;
  * 0 / -1 */
@@ -2538,21 +2769,9 @@ static int python_successors(PackedSearch *search, Py_ssize_t frontier)
         pairs = PyObject_CallFunction(search->step_python, "n", frontier);
     if (pairs == NULL)
         return -1;
-    PyObject *fast = PySequence_Fast(pairs, "python_successors must give a sequence");
+    int filled = found_from_pairs(pairs, &search->found);
     Py_DECREF(pairs);
-    if (fast == NULL)
-        return -1;
-    search->found.count = 0;
-    for (Py_ssize_t i = 0; i < PySequence_Fast_GET_SIZE(fast); i++) {
-        int frame, data;
-        if (!PyArg_ParseTuple(PySequence_Fast_GET_ITEM(fast, i), "ii", &frame, &data) ||
-                add_successor(&search->found, frame, data) < 0) {
-            Py_DECREF(fast);
-            return -1;
-        }
-    }
-    Py_DECREF(fast);
-    return 0;
+    return filled;
 }
 
 enum { GO_ON = 0, FOUND = 1, STOPPED = 2, FAILED = -1 };

@@ -10,7 +10,9 @@ Two codecs, one per kind of state table, with one interface (``Partition`` uses 
   maps the sender's ids to its own.  So a state costs its vectors' bytes on the wire (4
   bytes a value), a whole batch is translated with a few array operations, and the owner
   stores a state with one call into the table (``intern_vectors``): no Python object is
-  pickled or built per state, and a state the owner already has is never rebuilt.
+  pickled or built per state, and a state the owner already has is never rebuilt.  The
+  share a worker keeps for itself is its table's keys (its step interned their segments
+  already), stored by key (``intern_keys``).
   The owner of a state is a hash of its vectors in which every id stands for a
   fingerprint of its value (BLAKE2b of ``canonical.canonical_bytes``), the same in every
   process: equal values, equal fingerprints; so every worker agrees on the owner.
@@ -35,8 +37,7 @@ for the level's deduplication), ``outbox()`` (a batch being written), ``send(out
 fields)`` (a chunk of keys routed to their owners' outboxes, each with a number, its
 parent's id; returns each key's owner), ``encode(target, outbox)``, ``store(sender, data)``
 (stores the batch's states: their ids, whether each was new and their fields, in order),
-``store_links(sender, data)`` (``store``, then the links ``link(sender, field)`` of the new
-ones), ``owns(state, index)``.
+``owns(state, index)``.
 """
 from __future__ import annotations
 
@@ -55,6 +56,7 @@ PROTOCOL = pickle.HIGHEST_PROTOCOL
 ID_BITS = 40                       # a link: sender partition << ID_BITS | the parent's id
 ID_MASK = (1 << ID_BITS) - 1
 _SIZES = struct.Struct("<QQQQ")    # a vector batch's header, frames, data sizes; states
+_OWN = struct.Struct("<Q")         # a vector batch a worker keeps for itself: its states
 SLICE = 1 << 16                    # states of a received batch translated at a time
 
 
@@ -206,11 +208,6 @@ class PickleCodec:
         stored = [intern(state, True) for state in states]
         return array("q", [i for i, _ in stored]), [new for _, new in stored], fields
 
-    def store_links(self, sender: int, data: bytes) -> array:
-        _, new, fields = self.store(sender, data)
-        high = sender << ID_BITS
-        return array("q", [high | field for field, fresh in zip(fields, new) if fresh])
-
     def owns(self, state: Hashable, index: int) -> bool:
         return owner_of_prints(self.prints(state), self.count) == index
 
@@ -264,8 +261,27 @@ class VectorCodec:
         (``segments_batch``), their owners computed together, and each owner's share
         written again in one call.  Returns each successor's owner."""
         np = self.np
-        keys = np.array(keys, np.uint64)
-        parents = np.array(fields, np.int64)
+        return self._route(outboxes, np.array(keys, np.uint64),
+                           np.array(fields, np.int64)).tolist()
+
+    def send_expanded(self, outboxes, keys: bytes, parents: bytes,
+                      chunk: int = 4096) -> list[int]:
+        """``send`` of what the table's ``expand_keys`` gave (keys and parents as bytes of
+        uint64 and int64), ``chunk`` successors at a time (the arrays a chunk's owners are
+        computed with are several times its vectors' size); returns how many went to each
+        owner."""
+        np = self.np
+        keys, parents = np.frombuffer(keys, np.uint64), np.frombuffer(parents, np.int64)
+        sent = np.zeros(self.count, np.int64)
+        for first in range(0, len(keys), chunk):
+            owners = self._route(outboxes, keys[first:first + chunk],
+                                 parents[first:first + chunk])
+            sent += np.bincount(owners.astype(np.int64), minlength=self.count)
+        return sent.tolist()
+
+    def _route(self, outboxes, keys, parents):
+        """``send``'s work on arrays: the owner of each key."""
+        np = self.np
         frames, data, lengths = self._segments_batch(keys.tobytes())
         owners = self._owners_of(np.frombuffer(frames, np.uint32),
                                  np.frombuffer(data, np.uint32),
@@ -275,12 +291,14 @@ class VectorCodec:
             number = int(np.count_nonzero(mine))
             if not number:
                 continue
-            if number == len(keys):
+            if target == self.index:          # (this table's own keys: ``encode``)
+                outboxes[target].append((keys[mine].tobytes(), parents[mine].tobytes()))
+            elif number == len(keys):
                 outboxes[target].append((frames, data, lengths, parents.tobytes()))
             else:
                 outboxes[target].append((*self._segments_batch(keys[mine].tobytes()),
                                          parents[mine].tobytes()))
-        return owners.tolist()
+        return owners
 
     def owners(self, items: Sequence[tuple[bytes, bytes]]) -> list[int]:
         """The owner of each state given by its vectors (``prepare``)."""
@@ -335,14 +353,18 @@ class VectorCodec:
 
     def encode(self, target: int, outbox) -> bytes:
         """A batch for ``target``: the values and contexts numbered since the last batch to
-        it, then the outbox's chunks, each part joined."""
+        it, then the outbox's chunks, each part joined.  The batch for this worker itself
+        is its table's keys of the states and their parents: their segments are in the
+        table already (the step interned them), so they are stored by key
+        (``intern_keys``), not read out and hashed again."""
         table = self.table
-        values = contexts = ()
-        if target != self.index:
-            values = table.exported_values(self.sent_values[target])
-            self.sent_values[target] += len(values)
-            contexts = table.exported_contexts(self.sent_contexts[target])
-            self.sent_contexts[target] += len(contexts)
+        if target == self.index:
+            keys = b"".join(chunk[0] for chunk in outbox)
+            return b"".join([_OWN.pack(len(keys) >> 3), keys] + [chunk[1] for chunk in outbox])
+        values = table.exported_values(self.sent_values[target])
+        self.sent_values[target] += len(values)
+        contexts = table.exported_contexts(self.sent_contexts[target])
+        self.sent_contexts[target] += len(contexts)
         header = pickle.dumps((values, contexts), protocol=PROTOCOL)
         parts = [b"".join(chunk[part] for chunk in outbox) for part in range(4)]
         frames, data, lengths, parents = parts
@@ -355,6 +377,12 @@ class VectorCodec:
         and translated a slice at a time, so a large batch is not copied whole: (their ids,
         whether each was new, their fields), arrays in the batch's order."""
         np, table = self.np, self.table
+        if sender == self.index:                       # (its own keys: ``encode``)
+            count, = _OWN.unpack_from(blob)
+            keys, parents = _pieces(blob, _OWN.size, (8 * count, 8 * count))
+            ids, news = table.intern_keys(keys)
+            return (np.frombuffer(ids, np.int64), np.frombuffer(news, np.bool_),
+                    np.frombuffer(parents, np.int64))
         header_size, frames_size, data_size, count = _SIZES.unpack_from(blob)
         header, frames, data, lengths, parents = _pieces(
             blob, _SIZES.size, (header_size, frames_size, data_size, 4 * count, 8 * count))
@@ -362,9 +390,7 @@ class VectorCodec:
         frames, data, lengths = (np.frombuffer(piece, np.uint32)
                                  for piece in (frames, data, lengths))
         parents = np.frombuffer(parents, np.int64)
-        foreign = sender != self.index
-        if foreign:
-            value_map, context_map = self._maps(sender, values, contexts)
+        value_map, context_map = self._maps(sender, values, contexts)
         ends = np.cumsum(lengths, dtype=np.int64)
         width = self.data_length
         intern = self._intern_batch
@@ -375,27 +401,20 @@ class VectorCodec:
             some_frames = frames[begin:int(ends[last - 1])]
             some_data = data[first * width:last * width]
             some_lengths = lengths[first:last]
-            if foreign:                                # its ids -> this table's ids
-                starts = ends[first:last] - some_lengths - begin
-                mapped = np.take(value_map, some_frames, mode="clip") if len(value_map) \
-                    else some_frames.copy()
-                mapped[starts] = context_map[some_frames[starts]]
-                mapped[starts + 1] = some_frames[starts + 1]
-                some_frames = mapped
-                some_data = value_map[some_data] if len(some_data) else some_data
+            # its ids -> this table's ids
+            starts = ends[first:last] - some_lengths - begin
+            mapped = np.take(value_map, some_frames, mode="clip") if len(value_map) \
+                else some_frames.copy()
+            mapped[starts] = context_map[some_frames[starts]]
+            mapped[starts + 1] = some_frames[starts + 1]
+            some_frames = mapped
+            some_data = value_map[some_data] if len(some_data) else some_data
             some_ids, some_new = intern(some_frames, some_data, some_lengths)
             ids.append(np.frombuffer(some_ids, np.int64))
             news.append(np.frombuffer(some_new, np.bool_))
         if not ids:
             return np.zeros(0, np.int64), np.zeros(0, np.bool_), parents
         return np.concatenate(ids), np.concatenate(news), parents
-
-    def store_links(self, sender: int, blob: bytes) -> array:
-        """``store``, then the links to the parents of the new states, in their order."""
-        _, new, fields = self.store(sender, blob)
-        links = array("q")
-        links.frombytes((fields[new] | self.np.int64(sender << ID_BITS)).tobytes())
-        return links
 
     def _maps(self, sender: int, values, contexts) -> tuple:
         """The arrays from ``sender``'s value and context ids to this table's, extended by
@@ -590,13 +609,6 @@ class NodeCodec:
             known = self.node_array[sender] = self.np.concatenate(
                 (known, self.np.array(mapping[len(known):], self.np.uint32)))
         return known
-
-    def store_links(self, sender: int, blob: bytes) -> array:
-        """``store``, then the links to the parents of the new states, in their order."""
-        _, new, fields = self.store(sender, blob)
-        links = array("q")
-        links.frombytes((fields[new] | self.np.int64(sender << ID_BITS)).tobytes())
-        return links
 
     def owns(self, state: Hashable, index: int) -> bool:
         return int(self._owners_of(self.np.array([self.parts_of(state)], self.np.uint32))[0]) \

@@ -8,7 +8,7 @@ offers one, else the compiled one where built), each
 with the link to the state it was first reached from, which may live in another partition.
 
 A link is one number (``codec.link``): ``sender << ID_BITS | id`` (the sender partition and
-the parent's id there), -1 for an initial state, so parents cost an ``array`` slot each.
+the parent's id there), -1 for an initial state; ``Links`` keeps them in 4 bytes a state.
 
 The search runs in breadth-first levels, each in one or more rounds.  A round is one call
 of ``step``: ``receive`` stores the states the other partitions sent in the round before
@@ -25,6 +25,7 @@ pickled.
 from __future__ import annotations
 
 import contextlib
+import os
 import pickle
 import time
 from array import array
@@ -48,6 +49,52 @@ def encode_batch(batch) -> bytes:
 
 def decode_batch(data: bytes):
     return pickle.loads(data)
+
+
+class Links:
+    """Each stored state's link to its parent (the sender partition and the parent's id
+    there, ``link``), by state id, as one number ``1 + parent id * partitions + sender``
+    (0: an initial state): 4 bytes a state while the numbers fit in 32 bits (a partition's
+    ids below 2**32 / partitions), widened to 8 past that.  (``link``'s own form, the
+    sender in the high bits, would need 8 bytes from the start: half a worker's memory
+    per state beside its table.)"""
+
+    def __init__(self, count: int):
+        self.count = count
+        self.items = array("I")
+
+    def initial(self) -> None:
+        self.items.append(0)
+
+    def extend(self, sender: int, stored: tuple) -> None:
+        """The links of the states a codec's ``store`` found new (``stored``: their ids,
+        whether each was new, their fields: the parents' ids at ``sender``)."""
+        _, new, fields = stored
+        count, first = self.count, sender + 1
+        if hasattr(fields, "dtype"):              # (numpy arrays: the codecs' own)
+            numbers = fields[new].astype("uint64") * count + first
+            if len(numbers) and self.items.typecode == "I" and int(numbers.max()) >> 32:
+                self.items = array("Q", self.items)
+            self.items.frombytes(numbers.astype(
+                "uint32" if self.items.typecode == "I" else "uint64").tobytes())
+            return
+        numbers = [field * count + first for field, fresh in zip(fields, new) if fresh]
+        if numbers and self.items.typecode == "I" and max(numbers) >> 32:
+            self.items = array("Q", self.items)
+        self.items.extend(numbers)
+
+    def __getitem__(self, state_id: int) -> int:
+        number = self.items[state_id]
+        if not number:
+            return NO_PARENT
+        parent, sender = divmod(number - 1, self.count)
+        return link(sender, parent)
+
+    def __len__(self) -> int:
+        return len(self.items)
+
+    def memory_bytes(self) -> int:
+        return len(self.items) * self.items.itemsize
 
 
 class SystemSource:
@@ -98,7 +145,7 @@ class Partition:
         self.watched = False                   # whether it ever said True
         self.table = state_table(system, packed=True)
         self.codec = codec_for(self.table, index, count)
-        self.parent = array("q")
+        self.parent = Links(count)
         self.expanded = 0                      # states before this id have been expanded
         self.level_end = 0                     # the current level: ids below this one
         self.own = None                        # the batch the last round kept for this one
@@ -133,9 +180,9 @@ class Partition:
                 for state in decode_batch(batch)[0]:
                     if self.count == 1 or self.codec.owns(state, self.index):
                         if table.intern(state, True)[1]:
-                            parent.append(NO_PARENT)
+                            parent.initial()
                 continue
-            parent.extend(self.codec.store_links(sender, batch))
+            parent.extend(sender, self.codec.store(sender, batch))
         return len(table)
 
     def step(self, advance: bool, senders: Sequence[int], *batches) -> tuple:
@@ -200,6 +247,9 @@ class Partition:
             if predicate == getattr(self.system, "failed", None) else None
         lazy = failed_at is not None and watch is None and getattr(codec, "lazy_states", False)
         outboxes = [codec.outbox() for _ in range(count)]
+        end = min(self.level_end, self.expanded + ROUND)
+        if failed_at is not None and getattr(table, "expand_keys", None) is not None:
+            return self._expand_keys(end, outboxes)
         send = codec.send
         # a successor reached again in this level is sent once (its first parent, as its
         # owner would keep): storing a state costs its owner more than encoding it here
@@ -210,7 +260,6 @@ class Partition:
         transitions = deadlocks = 0
         deadlock_target = -1
         watched = self.watched
-        end = min(self.level_end, self.expanded + ROUND)
 
         def flush():
             owners = send(outboxes, pending, pending_parents)
@@ -247,12 +296,40 @@ class Partition:
                 flush()
         if pending:
             flush()
+        self.watched = watched
+        return self._expanded(end, outboxes, sent, transitions, deadlocks, deadlock_target)
+
+    def _expand_keys(self, end: int, outboxes: list) -> tuple:
+        """``expand`` of a packed table whose predicate is its run-time error: the round's
+        steps, the predicate, the watch (asked only where the program may be stuck, as one
+        process's loop asks it) and the level's deduplication in one call into the compiled
+        core (``expand_keys``), its successors routed in one call of the codec: no Python
+        call per state but for the states Python steps."""
+        table, watch = self.table, self.watch
+        asked = None
+        if watch is not None and not self.watched:
+            def asked(state_id: int, frames: list, data: list) -> bool:
+                return watch(*table.stepped(state_id, frames, data))
+        keys, parents, transitions, deadlocks, deadlocked, failed, watched = \
+            table.expand_keys(self.expanded, end, True, asked)
+        self.watched = self.watched or watched
+        if failed >= 0:
+            self.expanded = self.level_end
+            return [*self._nothing(), (failed, self.transitions, self.deadlocks, -1,
+                                       self.watched)]
+        sent = self.codec.send_expanded(outboxes, keys, parents, CHUNK)
+        target = deadlocked if self.deadlock_is_target else -1
+        return self._expanded(end, outboxes, sent, transitions, deadlocks, target)
+
+    def _expanded(self, end: int, outboxes: list, sent: list, transitions: int,
+                  deadlocks: int, deadlock_target: int) -> tuple:
+        """The round's batches and figures, once its states up to ``end`` are stepped."""
+        codec, index = self.codec, self.index
         self.expanded = end
         self.transitions += transitions
         self.deadlocks += deadlocks
-        self.watched = watched
         self.sent += sum(sent) - sent[index]
-        outgoing = [codec.encode(target, outboxes[target]) for target in range(count)]
+        outgoing = [codec.encode(target, outboxes[target]) for target in range(self.count)]
         self.sent_bytes += sum(len(batch) for target, batch in enumerate(outgoing)
                                if target != index)
         return [*outgoing,
@@ -281,12 +358,12 @@ class Partition:
         """What this partition holds: states, bytes, engine, and the process's peak memory."""
         table = self.table
         return {"states": len(table), "transitions": self.transitions, "sent": self.sent,
-                "bytes": table.memory_bytes() + len(self.parent) * self.parent.itemsize,
+                "bytes": table.memory_bytes() + self.parent.memory_bytes(),
                 "engine": engine_of(table),
                 "cpu_seconds": time.process_time() - self.cpu_started,
                 "step_seconds": self.step_seconds, "sent_bytes": self.sent_bytes,
                 "start_rss_kb": self.start_rss_kb, "peak_private_kb": self.peak_private_kb,
-                "max_rss_kb": _peak_rss_kb()}
+                "max_rss_kb": _peak_rss_kb(), "pid": os.getpid()}
 
 
 def _peak_rss_kb() -> int:

@@ -429,9 +429,12 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
 
     def observe(self, state_id: int, frames: Sequence[int], data: Sequence[int]) -> None:
         """The observer's ``states`` at a state (its successors given by their parts)."""
+        self.observer.states(*self.stepped(state_id, frames, data))
+
+    def stepped(self, state_id: int, frames: Sequence[int], data: Sequence[int]) -> tuple:
+        """(the state, its successor states) of a state just stepped, its successors given
+        by their parts (the states Python just stepped, as it gave them)."""
         if self._last_id == state_id:
-            state, targets = self._last
-        else:
-            state = self[state_id]
-            targets = [self._state(*self.parts(frame, part)) for frame, part in zip(frames, data)]
-        self.observer.states(state, targets)
+            return self._last
+        return self[state_id], [self._state(*self.parts(frame, part))
+                                for frame, part in zip(frames, data)]
