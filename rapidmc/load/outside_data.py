@@ -34,7 +34,7 @@ other writer's protocol may never produce together with the rest of the data.
 
 A read of a whole record (an argument, an assignment from it) chooses each of its
 components that has several values, together, so the record passed on holds what
-reads of its components could give (``ExpressionCompiler._outside_record``); a
+reads of its components could give (``ExpressionCompiler._outside_whole``); a
 whole array chooses each element's components likewise when their combinations are
 at most ``WHOLE_ARRAY_CHOICES`` (64), else it reads the stored value (choosing
 would multiply the successors by the elements' domains), and so do
@@ -51,7 +51,7 @@ from typing import Optional
 from .. import ast
 from ..semantics.configured_signals import COMPARISONS
 from ..semantics.program import ENVIRONMENT_NAMESPACE
-from ..semantics.scope import GLOBAL_DATA
+from ..semantics.scope import CONSTANT, GLOBAL_DATA
 from ..semantics.types import ArrayType, RapidType
 from ..semantics.values import format_value, to_dnum
 from .encrypted import from_encrypted_interface
@@ -219,17 +219,67 @@ def _note(found: dict, chosen: dict, scope, side, others: list, ordered: bool) -
     symbol = scope.lookup(ref.name.key)
     if symbol is None or symbol.slot not in chosen or symbol.kind != GLOBAL_DATA:
         return
-    entry = found.setdefault((symbol.slot, path), [set(), False, False])
-    entry[1] = entry[1] or ordered
+    part_type = _part_type(chosen[symbol.slot].type, path)
     for other in others:
-        value = _constant(other, scope)
-        if value is None:
-            entry[2] = True
-        else:
-            entry[0].add(value)
+        _spread(found, symbol.slot, path, part_type, other, scope, ordered)
+
+
+def _part_type(rapid_type, path: tuple):
+    """The type of the part of a data object under a component path (indices left out)."""
+    for key in path:
+        while isinstance(rapid_type, ArrayType):
+            rapid_type = rapid_type.element
+        components = getattr(rapid_type, "components", None) or ()
+        rapid_type = next((c.type for c in components if c.key == key), None)
+    return rapid_type
+
+
+def _spread(found: dict, slot: int, path: tuple, rapid_type, other, scope,
+            ordered: bool) -> None:
+    """Note what a part of type ``rapid_type`` is compared with, component by component:
+    ``other`` is an expression, an aggregate (``stReact = ["Ready", "Ready"]``: each element
+    is compared with its element) or a constant's value; None, unknown (a non-constant)."""
+    if isinstance(other, ast.NameRef) and isinstance(_constant(other, scope), (tuple, list)):
+        other = _constant(other, scope)          # a CONST aggregate: its value
+    if isinstance(rapid_type, ArrayType):
+        items = [other]                  # (an element read, ``a{i} = 1``, is compared whole)
+        if isinstance(other, (ast.Aggregate, tuple, list)):
+            for _ in rapid_type.dims:
+                items = [item for outer in items for item in _items(outer, None)]
+        for item in items:
+            _spread(found, slot, path, rapid_type.element, item, scope, ordered)
+        return
+    components = getattr(rapid_type, "components", None)
+    if isinstance(rapid_type, RapidType) and rapid_type.key not in VALUE_KEYS and components:
+        for component, item in zip(components, _items(other, len(components))):
+            _spread(found, slot, path + (component.key,), component.type, item, scope,
+                    ordered)
+        return
+    entry = found.setdefault((slot, path), [set(), False, False])
+    entry[1] = entry[1] or ordered
+    value = other if isinstance(other, (bool, str, float)) else \
+        _constant(other, scope) if other is not None else None
+    if value is None or isinstance(value, (tuple, list)):
+        entry[2] = True
+    else:
+        entry[0].add(value)
+
+
+def _items(other, count: Optional[int]) -> list:
+    """The parts of an aggregate or of a constant's aggregate value; else unknown parts."""
+    if isinstance(other, ast.Aggregate):
+        return list(other.items)
+    if isinstance(other, (tuple, list)):
+        return list(other)
+    return [None] * (count or 1)
 
 
 def _constant(expr, scope):
+    if isinstance(expr, ast.NameRef):
+        symbol = scope.lookup(expr.name.key)
+        if symbol is not None and symbol.kind == CONSTANT and \
+                isinstance(symbol.value, (tuple, list, str, bool)):
+            return symbol.value        # (an aggregate's value is spread by _spread)
     if isinstance(expr, ast.StringLiteral):
         return expr.value
     if isinstance(expr, ast.BoolLiteral):
