@@ -208,9 +208,11 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
                 data.slot in written:
             continue
         if chosen is not None:
+            seen = "; the properties read the value the program's last read took" \
+                if chosen.observed else ""
             yield Assumption(OTHER_WRITER, data.name,
                              f"PERS {data.name} is written outside the loaded code; its reads "
-                             f"take {chosen.describe()}{_whole_fixed(program, data)} "
+                             f"take {chosen.describe()}{_whole_fixed(program, data)}{seen} "
                              f"({_where(data.span)})")
         else:
             yield Assumption(OTHER_WRITER, data.name,

@@ -37,10 +37,14 @@ components that has several values, together, so the record passed on holds what
 reads of its components could give (``ExpressionCompiler._outside_whole``); a
 whole array chooses each element's components likewise when their combinations are
 at most ``WHOLE_ARRAY_CHOICES`` (64), else it reads the stored value (choosing
-would multiply the successors by the elements' domains), and so do
-the properties' atoms: data an atom may name keeps its initial value (the
-assumption says so).  ``check --fixed-outside-data`` keeps every such data object
-at its initial value, as before.  The verdicts name each object and its
+would multiply the successors by the elements' domains); in a wait or a poll, up to
+``WAIT_CHOICES`` (4096: the wait keeps no state for the values that do not end
+it), beyond which the assumption says the wait reads the stored value.  The
+properties' atoms read stored values: a read of data only the outside writes that
+a property names (``observed``) stores the value it took, so the program runs as it
+does unobserved and the atoms see the value its last read took (the assumption says
+so).  ``check --fixed-outside-data`` keeps every such data object at its initial
+value, as before.  The verdicts name each object and its
 values under ``assumes:`` (``findings.assumptions``).
 """
 from __future__ import annotations
@@ -77,6 +81,9 @@ class OutsideData:
     # who else writes it when loaded code writes it too (load.other_writers), else None:
     # then a read takes the stored value or any value of the domain
     also_written_by: Optional[str] = None
+    # a property's formula names it: a read of data only the outside writes keeps the value
+    # it took, so the atoms read the value the program last read (``observed_names``)
+    observed: bool = False
 
     def domain(self, path: tuple) -> Optional[tuple]:
         return self.domains.get(path)
@@ -104,10 +111,11 @@ class OutsideData:
 
 def outside_data(linker) -> dict:
     """Slot -> ``OutsideData`` for each PERS some loaded task reads and no loaded code writes
-    (the linker's routines prepared, not yet compiled), but for those a property's atom
-    may name (the linker's option ``observed_names``): atoms read stored values, so those
-    keep their initial value, as the verdicts' assumptions say.  Empty when the code writes data named
-    by a string (``SetDataVal``): then any persistent may be written."""
+    (the linker's routines prepared, not yet compiled).  Data a property's atom may name
+    (the linker's option ``observed_names``) is marked ``observed``: atoms read stored
+    values, so its reads store the value they take, and the program runs as it does when
+    no property names it.  Empty when the code writes data named by a string
+    (``SetDataVal``): then any persistent may be written."""
     routines = [r for r in linker.routines if r.namespace != ENVIRONMENT_NAMESPACE]
     if writes_data_by_name(routines):
         return {}
@@ -122,7 +130,7 @@ def outside_data(linker) -> dict:
               if data.storage == "PERS" and data.namespace != ENVIRONMENT_NAMESPACE
               and data.slot in read
               and (data.slot not in written or (data.key in writers and _shared(data)))
-              and data.span is not None and data.key not in observed
+              and data.span is not None
               and not _is_stub(data.span)}
     if not chosen:
         return {}
@@ -134,7 +142,8 @@ def outside_data(linker) -> dict:
             domains[path] = _domain(leaf_type, initial, compared.get((slot, path)))
         if domains:
             found[slot] = OutsideData(slot, data.name, data.span, domains,
-                                      writers.get(data.key) if slot in written else None)
+                                      writers.get(data.key) if slot in written else None,
+                                      data.key in observed)
     return found
 
 

@@ -22,6 +22,7 @@ from ..diagnostics import (ARGUMENT, NOT_A_REFERENCE, TYPE_MISMATCH, UNKNOWN_NAM
                            UNKNOWN_ROUTINE, error)
 from . import values
 from .errors import RapidError, placeholder_reached
+from .instructions import called_from_wait
 from .machine import ABSENT, GLOBAL, read_at, replace_at
 from .scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, Symbol
 from .types import (ATOMIC, BOOL, DNUM, NUM, ORIENT, POS, RECORD, SEMI_VALUE, STRING, AnyType,
@@ -217,6 +218,25 @@ class ExpressionCompiler:
         return getattr(self, "_" + type(expr).__name__)(expr, None)
 
     def _outside_read(self, expr, compiled: Compiled) -> Compiled:
+        """A read of outside data (``_outside_read_as``).  In a FUNC, which a WaitUntil or
+        polling condition may call, the read is the one such a condition makes when the
+        function runs for one (``called_from_wait``), else the one of other code."""
+        plain = self._outside_read_as(expr, compiled)
+        if self.in_wait or getattr(self.routine, "kind", None) != "FUNC":
+            return plain
+        saved = self.wait_choices
+        self.in_wait = True
+        try:
+            waited = self._outside_read_as(expr, compiled)
+        finally:
+            self.in_wait = False
+            self.wait_choices = saved
+        if waited is plain or waited.fn is plain.fn:
+            return plain
+        in_wait, other = waited.fn, plain.fn
+        return Compiled(lambda m: in_wait(m) if called_from_wait(m) else other(m), plain.type)
+
+    def _outside_read_as(self, expr, compiled: Compiled) -> Compiled:
         """A read of a value component of PERS data written from outside the loaded code
         (``load.outside_data``): any value of its domain, chosen afresh by each read, as
         the outside may write between any two (merged steps expand read by read).  A read
@@ -276,6 +296,18 @@ class ExpressionCompiler:
                 return taken
             return Compiled(either, compiled.type)
 
+        if outside.observed:
+            # a property names it: the value taken is stored, for the atoms to read
+            ref_fn = self.reference(expr, "read")[0]
+
+            def kept(m):
+                ref = ref_fn(m)          # (the stored read's own errors: an index out of range)
+                taken = m.choose(name, domain)
+                if taken != m.read_ref(ref):
+                    m.write_ref(ref, taken)
+                return taken
+            return Compiled(kept, compiled.type)
+
         def chosen(m):
             stored(m)                    # the stored read's own errors (an index out of range)
             return m.choose(name, domain)
@@ -313,7 +345,7 @@ class ExpressionCompiler:
             return compiled
         if not self.in_wait and elements != [()] and combinations > WHOLE_ARRAY_CHOICES:
             return compiled
-        if not also_written:
+        if not also_written and not outside.observed:
             stored = compiled.fn
 
             def chosen(m):
@@ -322,6 +354,18 @@ class ExpressionCompiler:
                     value = replace_at(value, positions, m.choose(leaf_name, domain))
                 return value
             return Compiled(chosen, compiled.type)
+        if not also_written:             # a property names it: the values taken are stored
+            ref_fn = self.reference(expr, "read")[0]
+
+            def kept(m):
+                ref = ref_fn(m)
+                value = old = m.read_ref(ref)
+                for positions, leaf_name, domain in choices:
+                    value = replace_at(value, positions, m.choose(leaf_name, domain))
+                if value != old:
+                    m.write_ref(ref, value)
+                return value
+            return Compiled(kept, compiled.type)
         ref_fn = self.reference(expr, "read")[0]
         self.wait_choices = True
 
