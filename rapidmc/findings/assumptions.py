@@ -199,6 +199,7 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
             yield Assumption(OTHER_WRITER, data.name,
                              f"PERS {data.name} is written by the loaded code and by "
                              f"{chosen.also_written_by}; its reads in WaitUntil and loop conditions "
+                             f"(and the functions they call) "
                              f"take the stored value or {chosen.describe()}, other reads the "
                              f"stored value{_whole_fixed(program, data)} ({_where(data.span)})")
             continue
