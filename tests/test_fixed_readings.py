@@ -221,3 +221,24 @@ def test_a_handler_for_a_target_out_of_reach_is_reached_by_the_readings_probe(tm
         assert (str(path), line_of(REACH, code)) in report.executed, code
     assert [w.message for w in report.warnings if w.code.code == "RMC701"] == [
         "never reached with the controller's readings fixed (CalcJointT at line 17)"]
+
+
+def test_calc_rob_t_reads_a_fixed_target_with_the_joint_targets_external_axes(tmp_path, capsys):
+    """Survey of issue 28: gantry tasks compute a robtarget from joints they read back, and
+    the check stopped at CalcRobT (no kinematics). It now reads the target the robot has (as
+    CRobT does) with the joint target's external axes, named as a fixed reading (RMC702)."""
+    path = tmp_path / "gantry.mod"
+    path.write_text("""MODULE Gantry
+  VAR jointtarget joints := [[0, 0, 0, 0, 30, 0], [1500, 9E9, 9E9, 9E9, 9E9, 9E9]];
+  VAR robtarget above;
+  PROC main()
+    MoveL [[500, 0, 400], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]], v100, fine, tool0;
+    above := CalcRobT(joints, tool0);
+    TPWrite "x " \\Num:=above.trans.x;
+    TPWrite "gantry " \\Num:=above.extax.eax_a;
+  ENDPROC
+ENDMODULE
+""")
+    assert main(["run", str(path)]) == 0
+    assert capsys.readouterr().out == "x 500\ngantry 1500\n"
+    assert warnings_of("    speed := CalcRobT(CJointT(), tool0).trans.z;\n") == [("CalcRobT", 1, 1)]

@@ -98,7 +98,13 @@ def test_a_barrier_with_a_task_name_no_task_has_is_an_error(tmp_path):
                                   "alone_wait_never_met", "alone_polling_else_goto",
                                   "alone_polling_function_index",
                                   "system_output_helpers", "system_output_in_property",
-                                  "system_output_set_through_option"])
+                                  "system_output_set_through_option",
+                                  "alone_whole_array_wait", "alone_whole_record_wait",
+                                  "alone_whole_array_outside_only",
+                                  "alone_whole_array_too_many", "alone_wait_function",
+                                  "wait_function_together", "wait_function_never_met",
+                                  "alone_whole_array_index_zero",
+                                  "alone_wait_function_socket", "alone_outside_retry"])
 def test_outputs_set_outside_same_on_both_engines(name):
     """Outputs set outside the loaded code are free inputs of both engines alike."""
     case = CASES / name

@@ -42,6 +42,7 @@ from ..load.stubs.module_text import is_stub_module
 from ..model.reduction.merging import executed_spans
 from ..load.shared_data import data_uses, writes_data_by_name
 from ..check.result import VIOLATED
+from ..semantics.expressions import WAIT_CHOICES
 from ..semantics.program import ENVIRONMENT_NAMESPACE, PROGRAM_NAMESPACE, Program
 from .fixed_readings import fixed_readings
 from .tried_inputs import unmodelled_interrupt_orders
@@ -181,6 +182,15 @@ def _reading(warning) -> Assumption:
 # --- persistents another task may write -------------------------------------------------
 
 
+def _whole_fixed(program: Program, data) -> str:
+    """What a wait reading the whole data object at once sees, when its elements have too
+    many combinations to choose (``ExpressionCompiler._outside_whole``)."""
+    if data.slot not in getattr(program, "whole_reads_fixed", ()):
+        return ""
+    return (f"; a wait or poll reading the whole of {data.name} at once reads the stored value "
+            f"(more than {WAIT_CHOICES} combinations of its elements' values)")
+
+
 def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[Assumption]:
     """PERS data that some loaded task reads and none writes (``data_uses``, shared with
     the partial-order reduction and RMC731): the values its reads take when it is written
@@ -199,8 +209,9 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
             yield Assumption(OTHER_WRITER, data.name,
                              f"PERS {data.name} is written by the loaded code and by "
                              f"{chosen.also_written_by}; its reads in WaitUntil and loop conditions "
+                             f"(and the functions they call) "
                              f"take the stored value or {chosen.describe()}, other reads the "
-                             f"stored value ({_where(data.span)})")
+                             f"stored value{_whole_fixed(program, data)} ({_where(data.span)})")
             continue
         if data.storage != "PERS" or _file(data.span) is None or \
                 (_file(data.span) in stub_files and data.slot not in outside) or \
@@ -208,9 +219,12 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
                 data.slot in written:
             continue
         if chosen is not None:
+            seen = "; the properties read the value the program's last read took" \
+                if chosen.observed else ""
             yield Assumption(OTHER_WRITER, data.name,
                              f"PERS {data.name} is written outside the loaded code; its reads "
-                             f"take {chosen.describe()} ({_where(data.span)})")
+                             f"take {chosen.describe()}{_whole_fixed(program, data)}{seen} "
+                             f"({_where(data.span)})")
         else:
             yield Assumption(OTHER_WRITER, data.name,
                              f"PERS {data.name} keeps its initial value: no loaded task writes "

@@ -45,8 +45,8 @@ from ..semantics.values import to_num
 
 # what reads the robot's position, tool or work object back: ROBOT_PARTS (CRobT, CPos,
 # CJointT, CTool, CWObj) may, when their value too only shapes moves' targets; CalcJointT
-# (it may fail) and GetSysData never may
-ROBOT_READERS = frozenset(ROBOT_PARTS) | {"CALCJOINTT", "GETSYSDATA"}
+# (it may fail), CalcRobT and GetSysData never may
+ROBOT_READERS = frozenset(ROBOT_PARTS) | {"CALCJOINTT", "CALCROBT", "GETSYSDATA"}
 MOVE_TARGETS = frozenset({"TOPOINT", "CIRPOINT", "TOJOINTPOS"})
 # data reached by a name computed at run time: a value stored there may be read unseen
 BY_NAME = frozenset({"GETDATAVAL", "SETDATAVAL", "SETALLDATAVAL"})

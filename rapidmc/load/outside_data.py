@@ -34,13 +34,17 @@ other writer's protocol may never produce together with the rest of the data.
 
 A read of a whole record (an argument, an assignment from it) chooses each of its
 components that has several values, together, so the record passed on holds what
-reads of its components could give (``ExpressionCompiler._outside_record``); a
+reads of its components could give (``ExpressionCompiler._outside_whole``); a
 whole array chooses each element's components likewise when their combinations are
 at most ``WHOLE_ARRAY_CHOICES`` (64), else it reads the stored value (choosing
-would multiply the successors by the elements' domains), and so do
-the properties' atoms: data an atom may name keeps its initial value (the
-assumption says so).  ``check --fixed-outside-data`` keeps every such data object
-at its initial value, as before.  The verdicts name each object and its
+would multiply the successors by the elements' domains); in a wait or a poll, up to
+``WAIT_CHOICES`` (4096: the wait keeps no state for the values that do not end
+it), beyond which the assumption says the wait reads the stored value.  The
+properties' atoms read stored values: a read of data only the outside writes that
+a property names (``observed``) stores the value it took, so the program runs as it
+does unobserved and the atoms see the value its last read took (the assumption says
+so).  ``check --fixed-outside-data`` keeps every such data object at its initial
+value, as before.  The verdicts name each object and its
 values under ``assumes:`` (``findings.assumptions``).
 """
 from __future__ import annotations
@@ -51,7 +55,7 @@ from typing import Optional
 from .. import ast
 from ..semantics.configured_signals import COMPARISONS
 from ..semantics.program import ENVIRONMENT_NAMESPACE
-from ..semantics.scope import GLOBAL_DATA
+from ..semantics.scope import CONSTANT, GLOBAL_DATA
 from ..semantics.types import ArrayType, RapidType
 from ..semantics.values import format_value, to_dnum
 from .encrypted import from_encrypted_interface
@@ -77,6 +81,9 @@ class OutsideData:
     # who else writes it when loaded code writes it too (load.other_writers), else None:
     # then a read takes the stored value or any value of the domain
     also_written_by: Optional[str] = None
+    # a property's formula names it: a read of data only the outside writes keeps the value
+    # it took, so the atoms read the value the program last read (``observed_names``)
+    observed: bool = False
 
     def domain(self, path: tuple) -> Optional[tuple]:
         return self.domains.get(path)
@@ -104,10 +111,11 @@ class OutsideData:
 
 def outside_data(linker) -> dict:
     """Slot -> ``OutsideData`` for each PERS some loaded task reads and no loaded code writes
-    (the linker's routines prepared, not yet compiled), but for those a property's atom
-    may name (the linker's option ``observed_names``): atoms read stored values, so those
-    keep their initial value, as the verdicts' assumptions say.  Empty when the code writes data named
-    by a string (``SetDataVal``): then any persistent may be written."""
+    (the linker's routines prepared, not yet compiled).  Data a property's atom may name
+    (the linker's option ``observed_names``) is marked ``observed``: atoms read stored
+    values, so its reads store the value they take, and the program runs as it does when
+    no property names it.  Empty when the code writes data named by a string
+    (``SetDataVal``): then any persistent may be written."""
     routines = [r for r in linker.routines if r.namespace != ENVIRONMENT_NAMESPACE]
     if writes_data_by_name(routines):
         return {}
@@ -122,7 +130,7 @@ def outside_data(linker) -> dict:
               if data.storage == "PERS" and data.namespace != ENVIRONMENT_NAMESPACE
               and data.slot in read
               and (data.slot not in written or (data.key in writers and _shared(data)))
-              and data.span is not None and data.key not in observed
+              and data.span is not None
               and not _is_stub(data.span)}
     if not chosen:
         return {}
@@ -134,7 +142,8 @@ def outside_data(linker) -> dict:
             domains[path] = _domain(leaf_type, initial, compared.get((slot, path)))
         if domains:
             found[slot] = OutsideData(slot, data.name, data.span, domains,
-                                      writers.get(data.key) if slot in written else None)
+                                      writers.get(data.key) if slot in written else None,
+                                      data.key in observed)
     return found
 
 
@@ -219,17 +228,67 @@ def _note(found: dict, chosen: dict, scope, side, others: list, ordered: bool) -
     symbol = scope.lookup(ref.name.key)
     if symbol is None or symbol.slot not in chosen or symbol.kind != GLOBAL_DATA:
         return
-    entry = found.setdefault((symbol.slot, path), [set(), False, False])
-    entry[1] = entry[1] or ordered
+    part_type = _part_type(chosen[symbol.slot].type, path)
     for other in others:
-        value = _constant(other, scope)
-        if value is None:
-            entry[2] = True
-        else:
-            entry[0].add(value)
+        _spread(found, symbol.slot, path, part_type, other, scope, ordered)
+
+
+def _part_type(rapid_type, path: tuple):
+    """The type of the part of a data object under a component path (indices left out)."""
+    for key in path:
+        while isinstance(rapid_type, ArrayType):
+            rapid_type = rapid_type.element
+        components = getattr(rapid_type, "components", None) or ()
+        rapid_type = next((c.type for c in components if c.key == key), None)
+    return rapid_type
+
+
+def _spread(found: dict, slot: int, path: tuple, rapid_type, other, scope,
+            ordered: bool) -> None:
+    """Note what a part of type ``rapid_type`` is compared with, component by component:
+    ``other`` is an expression, an aggregate (``stReact = ["Ready", "Ready"]``: each element
+    is compared with its element) or a constant's value; None, unknown (a non-constant)."""
+    if isinstance(other, ast.NameRef) and isinstance(_constant(other, scope), (tuple, list)):
+        other = _constant(other, scope)          # a CONST aggregate: its value
+    if isinstance(rapid_type, ArrayType):
+        items = [other]                  # (an element read, ``a{i} = 1``, is compared whole)
+        if isinstance(other, (ast.Aggregate, tuple, list)):
+            for _ in rapid_type.dims:
+                items = [item for outer in items for item in _items(outer, None)]
+        for item in items:
+            _spread(found, slot, path, rapid_type.element, item, scope, ordered)
+        return
+    components = getattr(rapid_type, "components", None)
+    if isinstance(rapid_type, RapidType) and rapid_type.key not in VALUE_KEYS and components:
+        for component, item in zip(components, _items(other, len(components))):
+            _spread(found, slot, path + (component.key,), component.type, item, scope,
+                    ordered)
+        return
+    entry = found.setdefault((slot, path), [set(), False, False])
+    entry[1] = entry[1] or ordered
+    value = other if isinstance(other, (bool, str, float)) else \
+        _constant(other, scope) if other is not None else None
+    if value is None or isinstance(value, (tuple, list)):
+        entry[2] = True
+    else:
+        entry[0].add(value)
+
+
+def _items(other, count: Optional[int]) -> list:
+    """The parts of an aggregate or of a constant's aggregate value; else unknown parts."""
+    if isinstance(other, ast.Aggregate):
+        return list(other.items)
+    if isinstance(other, (tuple, list)):
+        return list(other)
+    return [None] * (count or 1)
 
 
 def _constant(expr, scope):
+    if isinstance(expr, ast.NameRef):
+        symbol = scope.lookup(expr.name.key)
+        if symbol is not None and symbol.kind == CONSTANT and \
+                isinstance(symbol.value, (tuple, list, str, bool)):
+            return symbol.value        # (an aggregate's value is spread by _spread)
     if isinstance(expr, ast.StringLiteral):
         return expr.value
     if isinstance(expr, ast.BoolLiteral):

@@ -22,14 +22,18 @@ from ..diagnostics import (ARGUMENT, NOT_A_REFERENCE, TYPE_MISMATCH, UNKNOWN_NAM
                            UNKNOWN_ROUTINE, error)
 from . import values
 from .errors import RapidError, placeholder_reached
-from .machine import ABSENT, GLOBAL, replace_at
+from .instructions import called_from_wait
+from .machine import ABSENT, GLOBAL, read_at, replace_at
 from .scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, Symbol
 from .types import (ATOMIC, BOOL, DNUM, NUM, ORIENT, POS, RECORD, SEMI_VALUE, STRING, AnyType,
                     ArrayType, RapidType, is_numeric, same_type)
 
 # a whole array of data written from outside is chosen element by element up to this many
-# combinations of values (ExpressionCompiler._outside_array); a larger one keeps its value
+# combinations of values (ExpressionCompiler._outside_whole); a larger one keeps its value,
+# but in a wait or a poll, where up to WAIT_CHOICES are tried (the wait keeps the state it
+# tried only where it ends, so the successors stay few); beyond that the assumption says so
 WHOLE_ARRAY_CHOICES = 64
+WAIT_CHOICES = 4096
 
 NOT_CONSTANT = object()
 
@@ -214,11 +218,30 @@ class ExpressionCompiler:
         return getattr(self, "_" + type(expr).__name__)(expr, None)
 
     def _outside_read(self, expr, compiled: Compiled) -> Compiled:
+        """A read of outside data (``_outside_read_as``).  In a FUNC, which a WaitUntil or
+        polling condition may call, the read is the one such a condition makes when the
+        function runs for one (``called_from_wait``), else the one of other code."""
+        plain = self._outside_read_as(expr, compiled)
+        if self.in_wait or getattr(self.routine, "kind", None) != "FUNC":
+            return plain
+        saved = self.wait_choices
+        self.in_wait = True
+        try:
+            waited = self._outside_read_as(expr, compiled)
+        finally:
+            self.in_wait = False
+            self.wait_choices = saved
+        if waited is plain or waited.fn is plain.fn:
+            return plain
+        in_wait, other = waited.fn, plain.fn
+        return Compiled(lambda m: in_wait(m) if called_from_wait(m) else other(m), plain.type)
+
+    def _outside_read_as(self, expr, compiled: Compiled) -> Compiled:
         """A read of a value component of PERS data written from outside the loaded code
         (``load.outside_data``): any value of its domain, chosen afresh by each read, as
         the outside may write between any two (merged steps expand read by read).  A read
         of a whole record (``target``, ``rec.sub``) takes its components' choices together
-        (``_outside_record``), a whole array its elements' (``_outside_array``)."""
+        (``_outside_whole``), a whole array its elements' likewise."""
         whole_array = isinstance(compiled.type, ArrayType)
         if not whole_array and (not isinstance(compiled.type, RapidType) or
                                 compiled.type.kind not in (ATOMIC, RECORD)):
@@ -238,16 +261,21 @@ class ExpressionCompiler:
         outside = self.linker.outside_data.get(symbol.slot)
         if outside is None:
             return compiled
+        path = tuple(reversed(path))
+        name = symbol.name + "".join("." + part.lower() for part in path)
         if whole_array:
-            return self._outside_array(compiled, outside, tuple(reversed(path)), symbol.name +
-                                       "".join("." + part.lower() for part in reversed(path)))
-        domain = outside.domain(tuple(reversed(path)))
+            array_type = compiled.type
+            if any(d is None for d in array_type.dims):
+                return compiled
+            elements = list(itertools.product(*(range(d) for d in array_type.dims)))
+            return self._outside_whole(expr, compiled, outside, path, name,
+                                       array_type.element, elements)
+        domain = outside.domain(path)
         if domain is None and compiled.type.kind != RECORD:
             return compiled
-        name = symbol.name + "".join("." + part.lower() for part in reversed(path)) + \
-            ("{*}" if indexed else "")
+        name += "{*}" if indexed else ""
         if compiled.type.kind == RECORD:
-            return self._outside_record(compiled, outside, tuple(reversed(path)), name)
+            return self._outside_whole(expr, compiled, outside, path, name, compiled.type, [()])
         stored = compiled.fn
         if outside.also_written_by is not None:
             if not self.in_wait:
@@ -268,61 +296,92 @@ class ExpressionCompiler:
                 return taken
             return Compiled(either, compiled.type)
 
+        if outside.observed:
+            # a property names it: the value taken is stored, for the atoms to read
+            ref_fn = self.reference(expr, "read")[0]
+
+            def kept(m):
+                ref = ref_fn(m)          # (the stored read's own errors: an index out of range)
+                taken = m.choose(name, domain)
+                if taken != m.read_ref(ref):
+                    m.write_ref(ref, taken)
+                return taken
+            return Compiled(kept, compiled.type)
+
         def chosen(m):
             stored(m)                    # the stored read's own errors (an index out of range)
             return m.choose(name, domain)
         return Compiled(chosen, compiled.type)
 
-    @staticmethod
-    def _outside_record(compiled: Compiled, outside, path: tuple, name: str) -> Compiled:
-        """A whole record of outside data read at once: each value component that a read of
-        the component alone may choose (a domain of several values) is chosen here too, so
-        the record and its components tell the same story (the record passed on or copied
-        may hold any value its components may take).  Components of one value keep it; the
-        choices are as many as those the components' own reads make together."""
-        leaves = [(positions, name + suffix, domain) for positions, suffix, domain
-                  in _varying_leaves(compiled.type, outside, path)]
-        if not leaves or outside.also_written_by is not None:
-            # written by the loaded code too: elsewhere than a wait the stored value, and a
-            # wait's condition reads components, not whole records
-            return compiled
-        stored = compiled.fn
+    def _outside_whole(self, expr, compiled: Compiled, outside, path: tuple, name: str,
+                       value_type, elements: list) -> Compiled:
+        """A whole record or array of outside data read at once (``elements``: the index
+        tuples of an array's elements, ``[()]`` for a record): each value component that a
+        read of the component alone may choose (a domain of several values) is chosen here
+        too, element by element, so the whole and its parts tell the same story.
 
-        def chosen(m):
-            value = stored(m)
-            for positions, leaf_name, domain in leaves:
-                value = replace_at(value, positions, m.choose(leaf_name, domain))
-            return value
-        return Compiled(chosen, compiled.type)
-
-    @staticmethod
-    def _outside_array(compiled: Compiled, outside, path: tuple, name: str) -> Compiled:
-        """A whole array of outside data read at once (an argument, an assignment from it):
-        each element's value components of several values are chosen, as reads of each
-        element would choose them, when their combinations are at most
-        ``WHOLE_ARRAY_CHOICES``; a larger array keeps the stored value (the assumption
-        says so: ``OutsideData.describe``).  Data the loaded code writes too keeps it."""
-        array_type = compiled.type
-        if outside.also_written_by is not None or any(d is None for d in array_type.dims):
+        Data only the outside writes: every read chooses afresh, as the component reads
+        do; an array whose combinations exceed ``WHOLE_ARRAY_CHOICES`` keeps the stored
+        value outside a wait (choosing would multiply every step's successors), but not in
+        a wait, where the stored value alone would make a wait the other writer ends look
+        like a deadlock (``WAIT_CHOICES`` there).  Data the loaded code writes too: a wait
+        or a poll takes, per component, the stored value or one the other writer wrote just
+        before, and keeps what it took (``_outside_read``); other reads, the stored value."""
+        also_written = outside.also_written_by is not None
+        if also_written and not self.in_wait:
             return compiled
-        leaves = _varying_leaves(array_type.element, outside, path)
-        elements = list(itertools.product(*(range(d) for d in array_type.dims)))
-        combinations = 1
-        for _, _, domain in leaves:
-            combinations *= len(domain) ** len(elements)
-        if not leaves or combinations > WHOLE_ARRAY_CHOICES:
+        leaves = _varying_leaves(value_type, outside, path)
+        if not leaves:
             return compiled
-        stored = compiled.fn
         choices = [(element + positions,
-                    f"{name}{{{','.join(str(i + 1) for i in element)}}}{leaf_name}", domain)
+                    name + (f"{{{','.join(str(i + 1) for i in element)}}}" if element else "")
+                    + leaf_name, domain)
                    for element in elements for positions, leaf_name, domain in leaves]
+        combinations = 1
+        for _, _, domain in choices:
+            combinations *= len(domain) + also_written
+        if self.in_wait and combinations > WAIT_CHOICES:
+            self.linker.whole_reads_fixed.add(outside.slot)     # the assumption says so
+            return compiled
+        if not self.in_wait and elements != [()] and combinations > WHOLE_ARRAY_CHOICES:
+            return compiled
+        if not also_written and not outside.observed:
+            stored = compiled.fn
 
-        def chosen(m):
-            value = stored(m)
+            def chosen(m):
+                value = stored(m)
+                for positions, leaf_name, domain in choices:
+                    value = replace_at(value, positions, m.choose(leaf_name, domain))
+                return value
+            return Compiled(chosen, compiled.type)
+        if not also_written:             # a property names it: the values taken are stored
+            ref_fn = self.reference(expr, "read")[0]
+
+            def kept(m):
+                ref = ref_fn(m)
+                value = old = m.read_ref(ref)
+                for positions, leaf_name, domain in choices:
+                    value = replace_at(value, positions, m.choose(leaf_name, domain))
+                if value != old:
+                    m.write_ref(ref, value)
+                return value
+            return Compiled(kept, compiled.type)
+        ref_fn = self.reference(expr, "read")[0]
+        self.wait_choices = True
+
+        def either(m):
+            ref = ref_fn(m)
+            value = old = m.read_ref(ref)
             for positions, leaf_name, domain in choices:
-                value = replace_at(value, positions, m.choose(leaf_name, domain))
+                current = read_at(value, positions)
+                taken = m.choose(leaf_name, domain if current in domain else
+                                 (current,) + domain)
+                if taken != current:
+                    value = replace_at(value, positions, taken)
+            if value is not old:
+                m.write_ref(ref, value)
             return value
-        return Compiled(chosen, array_type)
+        return Compiled(either, compiled.type)
 
     def condition(self, expr: ast.Expr) -> Compiled:
         compiled = self.value(expr)

@@ -203,16 +203,29 @@ class TestDispatch(Instruction):
 class Call(Instruction):
     """Enter a user routine: bind the arguments, push a frame (one step)."""
 
-    __slots__ = ("routine", "binders", "result_slot", "program_routines")
+    __slots__ = ("routine", "binders", "result_slot", "program_routines", "for_wait")
 
     def __init__(self, span, routine, binders, result_slot: int = -1):
         super().__init__(span)
         self.routine = routine
         self.binders = binders
         self.result_slot = result_slot
+        # a function a WaitUntil or polling condition calls (``called_from_wait``)
+        self.for_wait = False
 
     def run(self, m: Machine) -> None:
         enter_routine(m, self.routine, [b(m) for _, b in self.binders], self.result_slot)
+
+
+def called_from_wait(m: Machine) -> bool:
+    """Whether the running function evaluates, directly or through other routines, part of
+    a WaitUntil or polling condition: a caller's frame stands at a call so marked."""
+    routines = m.program.routines
+    for frame in reversed(m.frames[:-1]):
+        code = routines[frame.routine].code
+        if 0 <= frame.pc < len(code) and getattr(code[frame.pc], "for_wait", False):
+            return True
+    return False
 
 
 def enter_routine(m: Machine, routine, arguments: list, result_slot: int = -1) -> None:
@@ -363,7 +376,7 @@ class Wait(Instruction):
     step where it would block; in ``run`` mode, virtual time decides.
     """
 
-    __slots__ = ("condition", "timeout", "flag_ref", "what")
+    __slots__ = ("condition", "timeout", "flag_ref", "what", "rerun")
 
     def __init__(self, span, condition, timeout=None, flag_ref=None, what="condition"):
         super().__init__(span)
@@ -371,9 +384,12 @@ class Wait(Instruction):
         self.timeout = timeout
         self.flag_ref = flag_ref
         self.what = what
+        self.rerun: Optional[WaitRerun] = None   # the condition calls user functions
 
     def run(self, m: Machine) -> None:
         if self.condition(m):
+            if self.rerun is not None:
+                self.rerun.forget(m)
             if self.flag_ref is not None:
                 m.write_ref(self.flag_ref(m), False)
             m.goto(self.next)
@@ -384,4 +400,45 @@ class Wait(Instruction):
                 m.goto(self.next)
                 return
             raise RapidError("ERR_WAIT_MAXTIME", f"{self.what} not met within \\MaxTime")
+        if self.rerun is not None and self.rerun.again(m, self.start):
+            return
         m.waiting = True
+
+
+class WaitRerun:
+    """A WaitUntil whose condition calls user functions (called before the wait, their
+    results read by it) calls them again, as a controller evaluates the condition at each
+    poll, when what they read may have changed (``semantics.wait_reads``): ``reads`` holds
+    the global data slots they read, whose values at their last call ``slot`` (a frame
+    temporary) keeps; None: they read what changes without a step of the program (a
+    signal, data written outside), so each try calls them again.  Going back, the calls'
+    result slots (``results``: slot -> initial value) are cleared, so the task is where it
+    was before the first call and the states before each call are the same (as they are
+    after the wait ends: ``forget``)."""
+
+    __slots__ = ("slot", "reads", "results")
+
+    def __init__(self, slot: int, reads: Optional[tuple], results: dict):
+        self.slot = slot
+        self.reads = reads
+        self.results = results
+
+    def again(self, m: Machine, start: int) -> bool:
+        """Go back to the calls (True) unless nothing they read changed since the last."""
+        if self.reads is not None:
+            seen = tuple(m.store[slot] for slot in self.reads)
+            if m.local(self.slot) == seen:
+                return False             # the same calls would answer the same: it waits
+            m.set_local(self.slot, seen)
+        for slot, initial in self.results.items():
+            m.set_local(slot, initial)
+        m.goto(start)
+        return True
+
+    def forget(self, m: Machine) -> None:
+        """The wait ends: clear what it kept, so the states after it do not differ by
+        the values its calls last answered."""
+        if m.local(self.slot) is not None:
+            m.set_local(self.slot, None)
+        for slot, initial in self.results.items():
+            m.set_local(slot, initial)

@@ -57,6 +57,8 @@ class Linker:
         self.entry_key = "MAIN"
         self.errors = ErrorCollector()
         self.outside_data: dict = {}     # slot -> load.outside_data.OutsideData
+        # slots of outside data a wait reads whole with too many combinations to choose
+        self.whole_reads_fixed: set = set()
         self.failed_names: set[str] = set()     # declarations that failed: uses stay quiet
         self.booked_errors = 0                  # BookErrNo call sites numbered so far
         # the namespace whose code is being compiled: each task has its own USER module
@@ -319,6 +321,7 @@ class Linker:
             linked.environment_react = environment_react
         linked.scopes = self
         linked.outside_data = self.outside_data
+        linked.whole_reads_fixed = frozenset(self.whole_reads_fixed)
         linked.environment_reads_io = any(
             instruction.reads_io for routine in self.routines
             if routine.namespace == P.ENVIRONMENT_NAMESPACE for instruction in routine.code)

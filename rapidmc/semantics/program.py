@@ -153,6 +153,8 @@ class Program:
     named_signals: Optional[frozenset] = None
     # PERS written from outside the loaded code, read as choices: slot -> OutsideData
     outside_data: dict = field(default_factory=dict)
+    # slots of that data a wait reads whole at its stored value (too many combinations)
+    whole_reads_fixed: frozenset = frozenset()
 
     def signal(self, key: str) -> Optional[Signal]:
         return self.signal_index.get(key)

@@ -8,6 +8,8 @@ loop body continues directly at the right place: no extra jump steps.
 """
 from __future__ import annotations
 
+import functools
+
 from typing import Optional
 
 from .. import ast
@@ -210,11 +212,14 @@ class RoutineCompiler:
         compiler.io_reader = self._note_io_read
         return compiler
 
-    def hoist(self, call: ast.FunctionCall, callee) -> int:
-        """Emit the call of a user FUNC before the statement; return the result slot."""
+    def hoist(self, call: ast.FunctionCall, callee, for_wait: bool = False) -> int:
+        """Emit the call of a user FUNC before the statement; return the result slot.
+        ``for_wait``: the call evaluates a WaitUntil or polling condition, so the function
+        reads data other parties write as the condition would (``called_from_wait``)."""
         binders = self.linker.bind_user_call(self.expressions(), callee, call.args, call.span)
         slot = self.routine.new_temporary()
-        self.emit(Call(call.span, callee, binders, slot))
+        instruction = self.emit(Call(call.span, callee, binders, slot))
+        instruction.for_wait = for_wait
         return slot
 
     # ------------------------------------------------------- simple statements
@@ -424,6 +429,8 @@ class RoutineCompiler:
         so it reads data another party writes as a WaitUntil condition does (issue 28)."""
         compiler = self.expressions()
         compiler.in_wait = polls
+        if polls:
+            compiler.hoist = functools.partial(self.hoist, for_wait=True)
         condition = compiler.condition(condition_expr)
         test = self.emit(Branch(span, condition.fn, condition_expr))
         if condition.source is not None:

@@ -11,7 +11,9 @@ changes nothing a property can observe and gives nobody else a turn:
   the controller (I/O, files, clocks: the "special" routines);
 * it is no loop head (so a step never runs around a loop).
 
-An assignment to data an atom names is *visible*.  A step that reaches a
+An assignment to data an atom names is *visible*, and so is a read of data only the
+outside writes that an atom names (the read stores the value it took:
+``load.outside_data``).  A step that reaches a
 merge point goes on executing (``semantics.step``) as long as at most one
 instruction of the step is visible (the step's first instruction counts
 as visible unless it is an invisible merge point).  Every state dropped
@@ -72,6 +74,10 @@ def merge_points(program: Program, atom_keys: set[str]) -> dict:
     are left out.
     """
     points = {}
+    # data only the outside writes that a property names: each read stores the value it
+    # took (load.outside_data), a change the atoms see
+    kept = frozenset(data.name.upper() for data in
+                     (getattr(program, "outside_data", None) or {}).values() if data.observed)
     for routine in program.routines:
         if routine.ast is None:
             continue
@@ -85,7 +91,7 @@ def merge_points(program: Program, atom_keys: set[str]) -> dict:
                 node = as_assignment(node, lookup)      # Incr x: x := x + 1
             if not _mergeable(instruction, node):
                 continue
-            visible = _visible(node, atom_keys)
+            visible = _visible(node, atom_keys, kept)
             if pc in heads:
                 if not visible:
                     kinds[pc] = LOOP_HEAD
@@ -114,8 +120,11 @@ def _targets(instruction) -> Iterator[int]:
         yield from (target for _, target in instruction.cases)
 
 
-def _visible(node, atom_keys: set[str]) -> bool:
-    return isinstance(node, ast.Assignment) and target_root(node.target).name.key in atom_keys
+def _visible(node, atom_keys: set[str], kept: frozenset = frozenset()) -> bool:
+    if isinstance(node, ast.Assignment) and target_root(node.target).name.key in atom_keys:
+        return True
+    return bool(kept) and any(isinstance(part, ast.NameRef) and part.name.key in kept
+                              for part in _walk(node))
 
 
 def _mergeable(instruction, node) -> bool:

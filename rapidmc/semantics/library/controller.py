@@ -18,8 +18,8 @@ from ..machine import ABSENT
 from ..expressions import Compiled, constant
 from ..instructions import Action, ControlAction
 from ..types import BOOL, DNUM, NUM, STRING
-from .arguments import (NAME_ONLY, ROBOT_JOINTS, Arguments, argument_expression, fixed, no_effect,
-                        not_modelled)
+from .arguments import (NAME_ONLY, ROBOT_JOINTS, ROBOT_TCP, Arguments, argument_expression,
+                        fixed, no_effect, not_modelled)
 from .configuration import FOUND, NOT_KNOWN, UNKNOWN_VALUE, Lookup, look_up
 from .data import PREDEFINED_DATA
 from .environment_model import where
@@ -31,6 +31,7 @@ from .tasks import task_number
 from .signature_parts import ACT_TAIL, AXES, JOINTS, RUN_TAIL, TRIGG_TAIL
 
 KINEMATICS = "needs the robot's kinematic model, which rapidmc does not have"
+
 # \SWVersionName (the RobotWare name, e.g. "RobotWare 6.08"): GetSysInfo of RobotWare 6.
 SYSTEM_INFO = (("SerialNo", "rapidmc-0001"), ("SWVersion", "6.0.0"), ("RobotType", "IRB 120"),
                ("CtrlId", "rapidmc"), ("LanIp", "127.0.0.1"), ("CtrlLang", "en"),
@@ -112,8 +113,19 @@ compiled("num AInput(VAR signalai Signal)",
          "num GInput(VAR signalgi Signal)")(signal_reader)
 
 
-compiled("robtarget CalcRobT(jointtarget Joint_target, PERS tooldata Tool \\PERS wobjdata WObj)",
-         modelled=NOT_MODELLED)(not_modelled(KINEMATICS))
+@compiled("robtarget CalcRobT(jointtarget Joint_target, PERS tooldata Tool \\PERS wobjdata WObj)",
+          modelled=FIXED)
+def _calc_rob_t(calls, compiler, call, entry) -> Compiled:
+    """The robtarget of joint angles, without the arm's kinematics (an assumption, said by
+    RMC702 as for every fixed reading, as CalcJointT's): the TCP target the modelled robot
+    has now (what CRobT reads) with the external axes of the joint target, which the
+    manual's result carries over.  Survey of issue 28: gantry cells compute a target from
+    joints they read back, and stopped at this call."""
+    joints = Arguments(calls, compiler, call, entry).value("Joint_target")
+
+    def robtarget(m):
+        return m.robot[ROBOT_TCP][:3] + (joints(m)[1],)
+    return Compiled(robtarget, calls.return_type(entry))
 
 
 @compiled("jointtarget CalcJointT(\\switch UseCurWObjPos, robtarget Rob_target, PERS tooldata Tool "

@@ -2,9 +2,10 @@
 from __future__ import annotations
 
 from ..errors import RapidError
-from ..instructions import ControlAction, Instruction, Wait
+from ..instructions import ControlAction, Instruction, Wait, WaitRerun
 from ..machine import ABSENT
 from ..timing import advance_to, next_event
+from ..wait_reads import global_reads
 from .arguments import Arguments, argument_expression, no_effect
 from .registry import NO_EFFECT, compiled
 
@@ -94,10 +95,27 @@ def _wait_until(calls, compiler, call, entry):
         return None if compiler.wait_choices else arguments.compiled("Cond")
     compiler.in_wait = True          # PERS another party writes too: the wait may end (issue 28)
     compiler.wait_choices = False
+    hoist, callees, results = compiler.hoist, [], {}
+    if hoist is not None:
+        def noted(function_call, callee):
+            callees.append(callee)
+            slot = hoist(function_call, callee, for_wait=True)
+            results[slot] = compiler.routine.initial[slot]
+            return slot
+        compiler.hoist = noted
     try:
-        return _wait(calls, compiler, call, entry, factory, "WaitUntil condition", source)
+        wait = _wait(calls, compiler, call, entry, factory, "WaitUntil condition", source)
     finally:
         compiler.in_wait = False
+        compiler.hoist = hoist
+    if callees:                      # called anew when what they read changes
+        condition = argument_expression(call, "Cond", 0)
+        reads = None if condition is None else \
+            global_reads(compiler.linker, condition, compiler.scope, callees)
+        wait.rerun = WaitRerun(compiler.routine.new_temporary(1, "<WaitUntil reads>", None),
+                               reads, results)
+        wait.machine = None          # the step machine does not call the functions again
+    return wait
 
 
 def _kept_where_it_ends(condition):
