@@ -3,8 +3,9 @@
 Usage: python bench/suite_cpu.py [--top 30] [--tests 20] [-- PYTEST ARGS...]
 
 Runs pytest (by default as the README's command does, ``-n auto --dist worksteal``; give
-``RAPIDMC_ENGINE=python`` and ``-m "not engine_independent"`` for .ci/run's second run) with
-this file as a plugin, which records each test's CPU time: its process's user and system
+``RAPIDMC_ENGINE=python`` and ``-m "not engine_independent"`` for .ci/run's second run, with
+the core moved aside as .ci/run moves it: while it is built, the tests that compare the two
+engines run too, which that run skips) with this file as a plugin, which records each test's CPU time: its process's user and system
 time, plus that of the child processes it waited for (pip, pre-commit, a fresh venv).  CPU
 time, unlike wall time, hardly depends on what else the machine runs, so the figures of a
 busy machine still say which tests to make cheaper.  Prints the modules and the tests that

@@ -40,7 +40,8 @@ def test_wheel_contains_grammar_and_parses_in_fresh_venv(tmp_path):
     packages = {str(init.relative_to(ROOT)) for init in (ROOT / "rapidmc").rglob("__init__.py")}
     assert packages <= set(names), f"packages missing from the wheel: {sorted(packages - set(names))}"
     environment = tmp_path / "env"
-    venv.create(environment, system_site_packages=True, with_pip=True)
+    # no pip of its own (ensurepip would cost 4 CPU s): this interpreter's pip installs into it
+    venv.create(environment, system_site_packages=True, with_pip=False)
     python = str(environment / "bin" / "python")
     # The dependencies come from wherever this interpreter has them (a CI venv or
     # the system), as plain path entries: only the wheel provides rapidmc.
@@ -49,7 +50,8 @@ def test_wheel_contains_grammar_and_parses_in_fresh_venv(tmp_path):
     dependency_dirs = {str(Path(module.__file__).resolve().parent.parent)
                        for module in (lark, pyrsistent, networkx)}
     (Path(site) / "rapidmc_test_dependencies.pth").write_text("\n".join(sorted(dependency_dirs)))
-    run(python, "-m", "pip", "install", "--no-deps", "--no-index", "-q", str(wheel), cwd=tmp_path)
+    run(sys.executable, "-m", "pip", "--python", python, "install", "--no-deps", "--no-index",
+        "-q", str(wheel), cwd=tmp_path)
     script = ("import rapidmc, sys; from rapidmc.syntax import parse_file; "
               "print(rapidmc.__file__); m = parse_file(sys.argv[1]); print(m[0].name.text)")
     location, module_name = run(python, "-c", script, str(HELLO), cwd=tmp_path).split()

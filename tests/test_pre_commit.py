@@ -98,12 +98,15 @@ def sample(tmp_path) -> Path:
 
 def _pre_commit_environment(home: Path) -> dict:
     """pre-commit's environment: the store ``home``, and a short install of the hooks'
-    environment: no native core, and no isolated build environment for pip (the hooks'
+    environment: no native core, no isolated build environment for pip (the hooks'
     virtualenv gets setuptools, which builds rapidmc there, instead of a fresh one fetched from
-    the index for each install)."""
+    the index for each install), and no byte-compiling of what pip installs (the hooks import
+    a few of those modules, compiled when imported; about 1 CPU s of each install's 9).
+    (pip reads ``PIP_NO_...=0`` as the ``--no-...`` option given.)"""
     environment = _git_environment()
     environment.update(PRE_COMMIT_HOME=str(home), RAPIDMC_NO_NATIVE="1", PRE_COMMIT_COLOR="never",
-                       PIP_NO_BUILD_ISOLATION="0", VIRTUALENV_SETUPTOOLS="bundle")
+                       PIP_NO_BUILD_ISOLATION="0", PIP_NO_COMPILE="0",
+                       VIRTUALENV_SETUPTOOLS="bundle")
     return environment
 
 

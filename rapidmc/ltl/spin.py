@@ -28,6 +28,7 @@ Example::
 from __future__ import annotations
 
 import re
+import signal
 import subprocess
 from dataclasses import dataclass
 from typing import Optional, Sequence
@@ -143,15 +144,31 @@ def _blocks(text: str) -> dict[str, tuple[bool, str, list[tuple[str, str]]]]:
 
 
 def spin_translate(formula: Formula, atoms: Optional[Sequence[str]] = None,
-                   timeout: float = 10.0, spin: str = "spin") -> Buchi:
-    """Translate with ``spin -f``; raises ``subprocess.TimeoutExpired`` on timeout."""
+                   timeout: float = 10.0, spin: str = "spin",
+                   cpu_seconds: Optional[int] = None) -> Buchi:
+    """Translate with ``spin -f``; raises ``subprocess.TimeoutExpired`` on timeout.
+
+    ``timeout`` bounds the wall time.  ``cpu_seconds`` also bounds SPIN's CPU time (``ulimit
+    -t``, whole seconds): unlike the wall time, that hardly depends on how busy the machine
+    is, so the same formulas run out of it on every run; running out counts as a timeout.
+    """
     atoms = tuple(atoms) if atoms is not None else atoms_of(formula)
-    completed = subprocess.run([spin, "-f", to_spin(formula, atoms)], capture_output=True,
-                               text=True, timeout=timeout, check=False)
+    command = [spin, "-f", to_spin(formula, atoms)]
+    if cpu_seconds:
+        # the shell sets the limit and becomes SPIN (safe beside threads, unlike preexec_fn)
+        command = ["sh", "-c", 'ulimit -t "$0" && exec "$@"', str(cpu_seconds), *command]
+    completed = subprocess.run(command, capture_output=True, text=True, timeout=timeout,
+                               check=False)
+    if cpu_seconds and completed.returncode in OUT_OF_CPU:
+        raise subprocess.TimeoutExpired(command, cpu_seconds)
     if completed.returncode != 0 or "never" not in completed.stdout:
         raise error(AUTOMATON, f"spin failed on {to_spin(formula, atoms)!r}: "
                                f"{(completed.stderr or completed.stdout).strip()}")
     return read_never_claim(completed.stdout, atoms)
+
+
+# how the kernel ends a process at its CPU limit: SIGXCPU at the soft limit, SIGKILL at the hard
+OUT_OF_CPU = (-getattr(signal, "SIGXCPU", 24), -getattr(signal, "SIGKILL", 9))
 
 
 @dataclass(frozen=True)
@@ -166,7 +183,8 @@ class CrossCheck:
 
 
 def cross_check(formula: Formula, translate_formula, atoms: Sequence[str],
-                timeout: float = 10.0, spin: str = "spin") -> CrossCheck:
+                timeout: float = 10.0, spin: str = "spin",
+                cpu_seconds: Optional[int] = None) -> CrossCheck:
     """Check A(φ) × SPIN(¬φ) and SPIN(φ) × A(¬φ) are both empty.
 
     ``translate_formula(formula, atoms) -> Buchi`` is the translator under
@@ -177,8 +195,8 @@ def cross_check(formula: Formula, translate_formula, atoms: Sequence[str],
     from .syntax import Not
     ours, ours_negated = translate_formula(formula, atoms), translate_formula(Not(formula), atoms)
     try:
-        theirs = spin_translate(formula, atoms, timeout, spin)
-        theirs_negated = spin_translate(Not(formula), atoms, timeout, spin)
+        theirs = spin_translate(formula, atoms, timeout, spin, cpu_seconds)
+        theirs_negated = spin_translate(Not(formula), atoms, timeout, spin, cpu_seconds)
     except subprocess.TimeoutExpired:
         return CrossCheck(formula, None, ours.state_count, 0, "spin timed out")
     problems = []
