@@ -18,7 +18,8 @@ from rapidmc.findings.fixed_readings import fixed_readings
 from rapidmc.semantics.link import build
 from rapidmc.syntax import parse_text
 
-HEAD = "MODULE Readings\n  VAR num speed := 0;\n  VAR clock cycle;\n  VAR string text;\n  PROC main()\n"
+HEAD = ("MODULE Readings\n  VAR num speed := 0;\n  VAR clock cycle;\n  VAR string text;\n"
+        "  VAR socketdev link;\n  PROC main()\n")
 TAIL = "  ENDPROC\nENDMODULE\n"
 FIRST_LINE = HEAD.count("\n") + 1
 
@@ -45,6 +46,11 @@ def warnings_of(body: str, extra: str = "", HEAD_ROBOT: bool = False) -> list[tu
     ('    ErrWrite "Stopped", "at " + CTime();\n', []),
     ('    text := CDate();\n', [("CDate", 1, 1)]),
     ("    speed := speed + 1;\n", []),
+    # the end point of a socket: the model's sockets never read it (the ROS drivers' bind)
+    ("    SocketBind link, GetSysInfo(\\LanIp), 11002;\n", []),
+    ('    SocketConnect link, GetSysInfo(\\LanIp), 1025 + Round(ClkRead(cycle));\n', []),
+    ("    text := GetSysInfo(\\LanIp);\n    SocketBind link, text, 11002;\n",
+     [("GetSysInfo", 1, 1)]),
 ])
 def test_fixed_and_sampled_readings(body, expected):
     assert warnings_of(body) == expected
@@ -221,3 +227,39 @@ def test_a_handler_for_a_target_out_of_reach_is_reached_by_the_readings_probe(tm
         assert (str(path), line_of(REACH, code)) in report.executed, code
     assert [w.message for w in report.warnings if w.code.code == "RMC701"] == [
         "never reached with the controller's readings fixed (CalcJointT at line 17)"]
+
+
+AXES = """MODULE Axes
+    VAR num connected := 0;
+    VAR num manual := 0;
+    PROC main()
+        VAR jointtarget joints;
+        VAR robtarget here;
+        joints := CJointT();
+        IF joints.extax.eax_a <> 9E9 THEN
+            connected := connected + 1;
+        ENDIF
+        here := CRobT(\\Tool:=tool0 \\WObj:=wobj0);
+        IF here.extax.eax_b <> 9E9 THEN
+            connected := connected + 2;
+        ENDIF
+        IF OpMode() = OP_MAN_PROG manual := 1;
+    ENDPROC
+ENDMODULE
+"""
+
+
+def test_code_for_external_axes_is_reached_by_the_readings_probe(tmp_path):
+    """The ROS modules convert each external axis unless it reads 9E9 (not connected):
+    the check's robot has none, but the driver runs on cells that have them.  The readings
+    probe lets CJointT and CRobT read the axes connected, so that code counts as reached
+    instead of "never reached under any input" once the probe freed OpMode; the verdicts
+    keep the modelled robot."""
+    path = tmp_path / "axes.mod"
+    path.write_text(AXES)
+    report = api.check(api.load_program([str(path)]))
+    assert report.verdicts == {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS"}
+    for code in ("connected := connected + 1;", "connected := connected + 2;",
+                 "manual := 1;"):
+        assert (str(path), line_of(AXES, code)) in report.executed, code
+    assert [w for w in report.warnings if w.code.code == "RMC701"] == []
