@@ -48,7 +48,8 @@ from .diagnostics.quoting import one_line, quoted
 from .findings.assumptions import assumptions, for_verdict
 from .findings.explored import ExploredFacts
 from .findings.fixed_readings import fixed_readings
-from .findings.tried_inputs import sampled_inputs, unset_digital_outputs, unwritten_pers_reads
+from .findings.tried_inputs import (sampled_inputs, tests_axes, unset_digital_outputs,
+                                    unwritten_pers_reads)
 from .load.backup import (link_options, load_tasks, resolve_program_files,
                           with_encrypted_interface)
 from .load.message_domains import (ANSWERS, FILE, PROBE_STATES, SOCKET, message_domains,
@@ -312,6 +313,7 @@ def _free_readings_config(model: Model, program: Program, atoms: AtomCompiler,
     (``_readings_probe``)."""
     config, _ = _check_config(program, atoms, options or model.options, model.messages)
     config.free_readings = True
+    config.axes_probed = tests_axes(program)
     config.lazy_inputs = {**config.lazy_inputs, **{
         signal.index: (signal.name, (0.0, 1.0)) for signal in unset_digital_outputs(program)}}
     return config

@@ -263,3 +263,22 @@ def test_code_for_external_axes_is_reached_by_the_readings_probe(tmp_path):
                  "manual := 1;"):
         assert (str(path), line_of(AXES, code)) in report.executed, code
     assert [w for w in report.warnings if w.code.code == "RMC701"] == []
+
+
+@pytest.mark.parametrize("test, named", [("<> 9E9", True), ("<> 9000000000", True),
+                                        ("< 100", False)])
+def test_only_a_program_that_tells_axes_apart_has_them_connected(tmp_path, monkeypatch,
+                                                                  test, named):
+    """Connecting the axes doubles a probe's states after each CRobT: only a program that
+    compares a value with 9E9 (the value of an axis a robot lacks) gets it, and only there
+    does a probe the bound stops leave CJointT and CRobT named."""
+    from rapidmc.findings.tried_inputs import tests_axes
+    monkeypatch.setattr(api, "PROBE_STATES", 1)
+    monkeypatch.setattr(api, "PROBE_GROWTH", 1)
+    path = tmp_path / "axes.mod"
+    path.write_text(AXES.replace("<> 9E9", test))
+    program = api.load_program([str(path)])
+    assert tests_axes(program) == named
+    warnings = [w.message for w in api.check(program).warnings if w.code.code == "RMC701"]
+    assert warnings and all(("CJointT at line 7; CRobT at line 11" in m) == named
+                            for m in warnings)

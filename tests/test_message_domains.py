@@ -601,3 +601,27 @@ def test_a_list_between_brackets_is_also_tried_with_its_last_part_malformed():
     program = api.load_program([str(CHECK / "socket_bracket_list" / "prog.mod")])
     [domain] = message_domains(program)
     assert domain.messages[:3] == ("[1,1,1]", "[1,1]", "[1,1,?]")
+
+
+AFTER_RETURN = """    FUNC num Parsed()
+        IF StrToVal(request, joints) THEN
+            IF joints{1} + joints{2} = 1234 THEN
+                RETURN 3;
+            ENDIF
+            RETURN 1;
+            state := 2;
+        ENDIF
+        RETURN 0;
+lost:
+        RETURN -1;
+    ENDFUNC"""
+
+
+def test_code_after_a_return_is_unreached_under_any_input_beside_sampled_code(tmp_path):
+    """A statement after RETURN in its own list runs under no input (unless a GOTO leads to
+    a label before it: ``lost:`` is such a label, so what follows it keeps the wording of
+    the inputs tried), while the arm that rests on a sum of parsed values no message tried
+    gives names the receive."""
+    report = check_server(tmp_path, "            state := Parsed();", extra=AFTER_RETURN)
+    tried = "never reached with the socket messages tried (SocketReceive at line 14)"
+    assert coverage(report) == [tried, "never reached under any input", tried]

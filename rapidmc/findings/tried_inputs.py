@@ -47,6 +47,7 @@ from ..semantics.program import ENVIRONMENT_NAMESPACE, PROGRAM_NAMESPACE, Progra
 from ..load.call_graph import called_routines  # noqa: F401  (coverage asks it here)
 from ..semantics.scope import GLOBAL_DATA
 from ..semantics.library.position import AXES_PROBED
+from ..semantics.values import UNCONNECTED_AXIS, to_num
 from ..semantics.library.probed_readings import DOMAINS as PROBED_READINGS, FAILING
 from .fixed_readings import reading_calls
 
@@ -197,14 +198,30 @@ def _conditions(routine_ast):
 
 def axis_reads(program: Program) -> list:
     """The calls of the program's code that read the robot's external axes (CRobT,
-    CJointT): the modelled robot has none (9E9), a cell may have some, and only the
-    readings probe connects them (``library.position``)."""
+    CJointT), in a program that tells connected axes apart (``tests_axes``): the modelled
+    robot has none (9E9), a cell may have some, and only the readings probe connects them
+    (``library.position``)."""
+    if not tests_axes(program):
+        return []
     own = {routine.key for routine in program.routines}       # (a routine of that name)
     return [node for routine in program.routines
             if routine.ast is not None and routine.namespace == PROGRAM_NAMESPACE
             for node, _ in ast.walk(routine.ast)
             if isinstance(node, ast.FunctionCall) and node.name.key in AXES_PROBED
             and node.name.key not in own]
+
+
+def tests_axes(program: Program) -> bool:
+    """Whether the program's code compares a value with 9E9 (= or <>), the value of an
+    external axis a robot lacks (``IF eax <> 9E9`` in the ROS modules).  Only then does
+    the readings probe connect external axes: each such choice doubles the states of a
+    probe after every CRobT, and a program that never tells the axes apart gains nothing."""
+    return any(isinstance(node, ast.Binary) and node.op in ("=", "<>") and any(
+               isinstance(side, ast.NumLiteral) and to_num(float(side.value)) == UNCONNECTED_AXIS
+               for side in (node.left, node.right))
+               for routine in program.routines
+               if routine.ast is not None and routine.namespace == PROGRAM_NAMESPACE
+               for node, _ in ast.walk(routine.ast))
 
 
 def unset_digital_outputs(program: Program) -> list:

@@ -123,6 +123,9 @@ class CheckConfig:
         # the coverage probe's: controller readings read any value of their domain
         # (library.probed_readings); never for verdicts
         self.free_readings = False
+        # ... and, in a program that tells them apart, CRobT and CJointT read the external
+        # axes connected too (library.position)
+        self.axes_probed = False
         # the closure probe's: SocketBind may find its port taken (library.sockets)
         self.socket_setup_failures = False
         # (routine, pc) -> visible, for instructions that join the step before them

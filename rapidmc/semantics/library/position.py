@@ -66,11 +66,13 @@ def _axes_probed(read: Callable, label: str) -> Callable:
     """``read``, but in the readings probe (``probed_readings.readings_free``) a target
     whose external axes the modelled robot lacks (9E9: not connected) may also read them
     connected, at 0: a driver written for any robot (``IF eax <> 9E9`` in the ROS
-    modules) runs its code for external axes on a cell that has them.  The verdicts keep
+    modules) runs its code for external axes on a cell that has them.  Only in a program
+    that compares a value with 9E9 (``CheckConfig.axes_probed``).  The verdicts keep
     the modelled robot, which has none."""
     def probed(robot, m=None):
         value = read(robot)
-        if m is None or not readings_free(m) or UNCONNECTED_AXIS not in value[-1]:
+        if m is None or not readings_free(m) or UNCONNECTED_AXIS not in value[-1] \
+                or not m.chooser.config.axes_probed:
             return value
         connected = tuple(0.0 if axis == UNCONNECTED_AXIS else axis for axis in value[-1])
         return m.choose(label, (value, (*value[:-1], connected)))
