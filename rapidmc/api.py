@@ -48,7 +48,8 @@ from .diagnostics.quoting import one_line, quoted
 from .findings.assumptions import assumptions, for_verdict
 from .findings.explored import ExploredFacts
 from .findings.fixed_readings import fixed_readings
-from .findings.tried_inputs import sampled_inputs, unset_digital_outputs, unwritten_pers_reads
+from .findings.tried_inputs import (sampled_inputs, tests_axes, unset_digital_outputs,
+                                    unwritten_pers_reads)
 from .load.backup import (link_options, load_tasks, resolve_program_files,
                           with_encrypted_interface)
 from .load.message_domains import (ANSWERS, FILE, PROBE_STATES, SOCKET, message_domains,
@@ -270,10 +271,7 @@ def _probed_lines(model: Model, bound: int) -> set:
             messages = tuple(replace(d, messages=(probe,)) if d is domain else d
                              for d in model.messages)
             config, _ = _check_config(model.program, model.atoms, model.options, messages)
-            watch = ExploredFacts(model.program, (), model.atoms)
-            find_reachable(RapidSystem(model.program, config, reduction.NO_PLAN), _never,
-                           observe=watch, max_states=bound)
-            lines |= watch.statements.executed
+            lines |= _probe_search(model.program, model.atoms, config, bound)[0]
     return lines
 
 
@@ -294,10 +292,7 @@ def _closure_probe(model: Model, bound: int, readings_free: bool = False) -> tup
         if readings_free else _check_config(model.program, model.atoms, options,
                                             model.messages)[0]
     config.socket_setup_failures = True      # a server's port may be taken as well
-    watch = ExploredFacts(model.program, (), model.atoms)
-    search = find_reachable(RapidSystem(model.program, config, reduction.NO_PLAN), _never,
-                            observe=watch, max_states=bound)
-    return watch.statements.executed, search.verdict == HOLDS
+    return _probe_search(model.program, model.atoms, config, bound)
 
 
 def _readings_probe(model: Model, bound: int) -> tuple:
@@ -307,11 +302,8 @@ def _readings_probe(model: Model, bound: int) -> tuple:
     or the FlexPendant's I/O view sets it), and whether that search was complete.  Each
     value is one a real controller gives, so a line this search runs is reachable; the
     verdicts keep the fixed readings (RMC702 says so).  Bounded by ``_probe_bound``."""
-    config = _free_readings_config(model, model.program, model.atoms)
-    watch = ExploredFacts(model.program, (), model.atoms)
-    search = find_reachable(RapidSystem(model.program, config, reduction.NO_PLAN), _never,
-                            observe=watch, max_states=bound)
-    return watch.statements.executed, search.verdict == HOLDS
+    return _probe_search(model.program, model.atoms,
+                         _free_readings_config(model, model.program, model.atoms), bound)
 
 
 def _free_readings_config(model: Model, program: Program, atoms: AtomCompiler,
@@ -321,6 +313,7 @@ def _free_readings_config(model: Model, program: Program, atoms: AtomCompiler,
     (``_readings_probe``)."""
     config, _ = _check_config(program, atoms, options or model.options, model.messages)
     config.free_readings = True
+    config.axes_probed = tests_axes(program)
     config.lazy_inputs = {**config.lazy_inputs, **{
         signal.index: (signal.name, (0.0, 1.0)) for signal in unset_digital_outputs(program)}}
     return config
@@ -346,13 +339,33 @@ def _shared_data_probe(model: Model, bound: int) -> set:
         return set()
     program = load_program(**arguments, other_task_writes=keys)
     atoms = AtomCompiler(program)
-    watch = ExploredFacts(program, (), atoms)
-    find_reachable(RapidSystem(program, _free_readings_config(model, program, atoms),
-                               reduction.NO_PLAN), _never, observe=watch, max_states=bound)
+    executed, _ = _probe_search(program, atoms, _free_readings_config(model, program, atoms),
+                                bound)
     # the program was loaded from absolute paths: name its lines as the checked program does
     named = {os.path.abspath(routine.ast.span.file): routine.ast.span.file
              for routine in model.program.routines if routine.ast is not None}
-    return {(named.get(file, file), line) for file, line in watch.statements.executed}
+    return {(named.get(file, file), line) for file, line in executed}
+
+
+def _probe_search(program: Program, atoms: AtomCompiler, config: CheckConfig,
+                  bound: int) -> tuple:
+    """The lines a coverage probe's search of ``program`` under ``config`` runs, and whether
+    it was complete.  One the bound stops while inputs change at every step (an interrupt
+    on each of four digital inputs multiplies each step by 16: breadth-first, the probe
+    spends its bound on the first hundred steps of a long start-up routine) searches again
+    with those inputs held (``CheckConfig.with_inputs_held``): each state of that search
+    is reachable too, so its lines count; completeness stays the first search's."""
+    watch = ExploredFacts(program, (), atoms)
+    search = find_reachable(RapidSystem(program, config, reduction.NO_PLAN), _never,
+                            observe=watch, max_states=bound)
+    executed = set(watch.statements.executed)
+    complete = search.verdict == HOLDS
+    if not complete and config.free_inputs:
+        held = ExploredFacts(program, (), atoms)
+        find_reachable(RapidSystem(program, config.with_inputs_held(), reduction.NO_PLAN),
+                       _never, observe=held, max_states=bound)
+        executed |= held.statements.executed
+    return executed, complete
 
 
 def _never(state) -> bool:

@@ -18,7 +18,8 @@ from rapidmc.findings.fixed_readings import fixed_readings
 from rapidmc.semantics.link import build
 from rapidmc.syntax import parse_text
 
-HEAD = "MODULE Readings\n  VAR num speed := 0;\n  VAR clock cycle;\n  VAR string text;\n  PROC main()\n"
+HEAD = ("MODULE Readings\n  VAR num speed := 0;\n  VAR clock cycle;\n  VAR string text;\n"
+        "  VAR socketdev link;\n  PROC main()\n")
 TAIL = "  ENDPROC\nENDMODULE\n"
 FIRST_LINE = HEAD.count("\n") + 1
 
@@ -45,6 +46,11 @@ def warnings_of(body: str, extra: str = "", HEAD_ROBOT: bool = False) -> list[tu
     ('    ErrWrite "Stopped", "at " + CTime();\n', []),
     ('    text := CDate();\n', [("CDate", 1, 1)]),
     ("    speed := speed + 1;\n", []),
+    # the end point of a socket: the model's sockets never read it (the ROS drivers' bind)
+    ("    SocketBind link, GetSysInfo(\\LanIp), 11002;\n", []),
+    ('    SocketConnect link, GetSysInfo(\\LanIp), 1025 + Round(ClkRead(cycle));\n', []),
+    ("    text := GetSysInfo(\\LanIp);\n    SocketBind link, text, 11002;\n",
+     [("GetSysInfo", 1, 1)]),
 ])
 def test_fixed_and_sampled_readings(body, expected):
     assert warnings_of(body) == expected
@@ -223,6 +229,7 @@ def test_a_handler_for_a_target_out_of_reach_is_reached_by_the_readings_probe(tm
         "never reached with the controller's readings fixed (CalcJointT at line 17)"]
 
 
+<<<<<<< HEAD
 def test_calc_rob_t_reads_a_fixed_target_with_the_joint_targets_external_axes(tmp_path, capsys):
     """Survey of issue 28: gantry tasks compute a robtarget from joints they read back, and
     the check stopped at CalcRobT (no kinematics). It now reads the target the robot has (as
@@ -242,3 +249,58 @@ ENDMODULE
     assert main(["run", str(path)]) == 0
     assert capsys.readouterr().out == "x 500\ngantry 1500\n"
     assert warnings_of("    speed := CalcRobT(CJointT(), tool0).trans.z;\n") == [("CalcRobT", 1, 1)]
+=======
+AXES = """MODULE Axes
+    VAR num connected := 0;
+    VAR num manual := 0;
+    PROC main()
+        VAR jointtarget joints;
+        VAR robtarget here;
+        joints := CJointT();
+        IF joints.extax.eax_a <> 9E9 THEN
+            connected := connected + 1;
+        ENDIF
+        here := CRobT(\\Tool:=tool0 \\WObj:=wobj0);
+        IF here.extax.eax_b <> 9E9 THEN
+            connected := connected + 2;
+        ENDIF
+        IF OpMode() = OP_MAN_PROG manual := 1;
+    ENDPROC
+ENDMODULE
+"""
+
+
+def test_code_for_external_axes_is_reached_by_the_readings_probe(tmp_path):
+    """The ROS modules convert each external axis unless it reads 9E9 (not connected):
+    the check's robot has none, but the driver runs on cells that have them.  The readings
+    probe lets CJointT and CRobT read the axes connected, so that code counts as reached
+    instead of "never reached under any input" once the probe freed OpMode; the verdicts
+    keep the modelled robot."""
+    path = tmp_path / "axes.mod"
+    path.write_text(AXES)
+    report = api.check(api.load_program([str(path)]))
+    assert report.verdicts == {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS"}
+    for code in ("connected := connected + 1;", "connected := connected + 2;",
+                 "manual := 1;"):
+        assert (str(path), line_of(AXES, code)) in report.executed, code
+    assert [w for w in report.warnings if w.code.code == "RMC701"] == []
+
+
+@pytest.mark.parametrize("test, named", [("<> 9E9", True), ("<> 9000000000", True),
+                                        ("< 100", False)])
+def test_only_a_program_that_tells_axes_apart_has_them_connected(tmp_path, monkeypatch,
+                                                                  test, named):
+    """Connecting the axes doubles a probe's states after each CRobT: only a program that
+    compares a value with 9E9 (the value of an axis a robot lacks) gets it, and only there
+    does a probe the bound stops leave CJointT and CRobT named."""
+    from rapidmc.findings.tried_inputs import tests_axes
+    monkeypatch.setattr(api, "PROBE_STATES", 1)
+    monkeypatch.setattr(api, "PROBE_GROWTH", 1)
+    path = tmp_path / "axes.mod"
+    path.write_text(AXES.replace("<> 9E9", test))
+    program = api.load_program([str(path)])
+    assert tests_axes(program) == named
+    warnings = [w.message for w in api.check(program).warnings if w.code.code == "RMC701"]
+    assert warnings and all(("CJointT at line 7; CRobT at line 11" in m) == named
+                            for m in warnings)
+>>>>>>> h-socket

@@ -445,6 +445,65 @@ def test_without_the_shared_data_probe_the_mailbox_code_is_unreached(tmp_path):
         "data (command at line 8)"]
 
 
+GUARDED_MAILBOX = """MODULE Guarded
+    PERS string command := "";
+    VAR intnum reset_int;
+    VAR intnum door_int;
+    VAR intnum stop_int;
+    VAR num picked := 0;
+    VAR num warm := 0;
+    PROC main()
+        IDelete reset_int;
+        CONNECT reset_int WITH Restart;
+        ISignalDI diReset, 1, reset_int;
+        IDelete door_int;
+        CONNECT door_int WITH Restart;
+        ISignalDI diDoor, 1, door_int;
+        IDelete stop_int;
+        CONNECT stop_int WITH Restart;
+        ISignalDI diStop, 1, stop_int;
+        FOR i FROM 1 TO 12 DO
+            warm := warm + 1;
+        ENDFOR
+        WHILE TRUE DO
+            WHILE command <> "" DO
+                IF command = "pick" THEN
+                    picked := picked + 1;
+                ENDIF
+                command := "";
+            ENDWHILE
+            WaitTime 0.1;
+        ENDWHILE
+    ENDPROC
+    TRAP Restart
+        warm := 0;
+        ExitCycle;
+    ENDTRAP
+ENDMODULE
+"""
+
+
+@pytest.mark.parametrize("probe_states, reached", [(150, True), (1, False)])
+def test_a_probe_the_inputs_make_broad_searches_again_with_them_held(
+        tmp_path, monkeypatch, probe_states, reached):
+    """Three interrupts on digital inputs (each may fire at any step) multiply every step
+    of the shared data probe by 8: breadth-first, it spends its bound on the warm-up loop
+    before the first poll of the mailbox (Hanoi TASK1's four interrupts and long start-up
+    routine).  A probe stopped by its bound searches again with those inputs held (no
+    interrupt fires: a cell whose signals stay put), and each line that search runs is
+    reachable: the command's branch counts as reached.  A bound too small for that search
+    too leaves the branch reported, naming the data."""
+    monkeypatch.setattr(api, "PROBE_STATES", probe_states)
+    monkeypatch.setattr(api, "PROBE_GROWTH", 1)          # (the bound is PROBE_STATES)
+    path = tmp_path / "guarded.mod"
+    path.write_text(GUARDED_MAILBOX)
+    report = api.check(api.load_program([str(path)]))
+    line = next(n for n, text in enumerate(GUARDED_MAILBOX.splitlines(), 1)
+                if "picked := picked + 1;" in text)
+    assert ((str(path), line) in report.executed) == reached
+    assert bool(coverage(report)) != reached
+
+
 def test_a_handler_a_closure_reaches_behind_a_wait_for_an_output_is_reached(tmp_path):
     """The Hanoi socket task connects only once an output no loaded code sets is 1, and
     handles a closed connection in ``main``'s ERROR handler.  The closure probe alone waits
@@ -560,3 +619,27 @@ def test_a_trap_only_an_unmodelled_interrupt_runs_names_the_instruction_ordering
     assert coverage(report) == [
         "never reached with no interrupt coming that the check does not model "
         "(ISignalAI at line 8) (routine OnHigh never runs)"]
+
+
+AFTER_RETURN = """    FUNC num Parsed()
+        IF StrToVal(request, joints) THEN
+            IF joints{1} + joints{2} = 1234 THEN
+                RETURN 3;
+            ENDIF
+            RETURN 1;
+            state := 2;
+        ENDIF
+        RETURN 0;
+lost:
+        RETURN -1;
+    ENDFUNC"""
+
+
+def test_code_after_a_return_is_unreached_under_any_input_beside_sampled_code(tmp_path):
+    """A statement after RETURN in its own list runs under no input (unless a GOTO leads to
+    a label before it: ``lost:`` is such a label, so what follows it keeps the wording of
+    the inputs tried), while the arm that rests on a sum of parsed values no message tried
+    gives names the receive."""
+    report = check_server(tmp_path, "            state := Parsed();", extra=AFTER_RETURN)
+    tried = "never reached with the socket messages tried (SocketReceive at line 14)"
+    assert coverage(report) == [tried, "never reached under any input", tried]

@@ -25,6 +25,7 @@ from dataclasses import dataclass
 from typing import Hashable, Optional, Sequence
 
 from ..ast import Span
+from .dead_code import lines_after_jumps
 from ..diagnostics import NEVER_REACHED, Diagnostic
 from ..model.reduction.merging import executed_spans
 from ..semantics.instructions import Call, EndRoutine, EndUndo, LateCall
@@ -120,8 +121,9 @@ def coverage_warnings(program: Program, executed: set[tuple[str, int]],
                 and called is not None and u.routine not in called]
     if len(uncalled) < 2:
         uncalled = []
+    dead = _after_jumps(program)
     warnings = [u.diagnostic(ANY_INPUT if called is not None and u.routine not in called
-                             else inputs)
+                             or _within(u, dead) else inputs)
                 for u in found if u not in idle and u not in uncalled]
     if uncalled:
         warnings.append(_uncalled_routines(uncalled))
@@ -130,6 +132,27 @@ def coverage_warnings(program: Program, executed: set[tuple[str, int]],
     else:
         warnings.extend(u.diagnostic() for u in idle)
     return warnings
+
+
+def _after_jumps(program: Program) -> dict:
+    """(file, line) -> whether it has a statement, for the statement lines of the watched
+    routines: True where that statement follows a jump in its list (``dead_code``)."""
+    lines: dict = {}
+    for routine in _watched_routines(program):
+        dead = lines_after_jumps(routine.ast) if routine.ast is not None else frozenset()
+        for key in _statement_lines(routine):
+            lines[key] = key in dead
+    return lines
+
+
+def _within(found: Unreached, dead: dict) -> bool:
+    """Whether every statement line of a stretch follows a jump (dead under any input)."""
+    if found.whole_routine:
+        return False
+    span = found.span
+    keys = [(span.file, line) for line in range(span.line, max(found.last_line, span.line) + 1)
+            if (span.file, line) in dead]
+    return bool(keys) and all(dead[key] for key in keys)
 
 
 def _uncalled_routines(uncalled: list[Unreached]) -> Diagnostic:

@@ -11,7 +11,8 @@ each such routine the program calls once, at its first call, with the
 number of calls, so that the user knows what the verdicts assume.
 
 Calls only inside the text of FlexPendant or log output (``TPWrite``,
-``ErrWrite``, ...) decide nothing and are left out.
+``ErrWrite``, ...) or the end point of a socket (``SocketBind``, ``SocketConnect``)
+decide nothing and are left out.
 """
 from __future__ import annotations
 
@@ -25,8 +26,11 @@ from ..semantics.library.configuration import STANDARD_TEXT
 from ..semantics.program import PROGRAM_NAMESPACE, Program
 from ..semantics.robots import controller_task_names, named_robot_readings, named_task
 
-# Output instructions: a reading in their arguments only ends up as text.
-OUTPUT_ONLY = frozenset({"TPWRITE", "ERRWRITE", "ERRLOG", "WRITE", "TPPRINT", "WRITESTRBIN"})
+# Output instructions: a reading in their arguments only ends up as text.  Socket setup: a
+# reading in the address or port of SocketBind or SocketConnect (``GetSysInfo(\LanIp)``
+# in the ROS drivers) names an end point, which the model's sockets never look at.
+OUTPUT_ONLY = frozenset({"TPWRITE", "ERRWRITE", "ERRLOG", "WRITE", "TPPRINT", "WRITESTRBIN",
+                         "SOCKETBIND", "SOCKETCONNECT"})
 # Readings that are not one fixed value but a few sampled ones.
 SAMPLED = {"CLKREAD": (SAMPLED_READINGS_TEXT, "those readings"),
            "READCFGDATA": (STANDARD_TEXT, "that configuration")}
@@ -110,7 +114,8 @@ def _warning(name: ast.Name, count: int) -> Diagnostic:
 
 
 def _readings(routine_ast) -> Iterator[ast.Name]:
-    """The names of routines called in a routine, outside the arguments of output instructions."""
+    """The names of routines called in a routine, outside the arguments of output and
+    socket setup instructions (``OUTPUT_ONLY``)."""
     for node, parents in ast.walk(routine_ast):
         if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) and \
                 not any(isinstance(p, ast.ProcedureCall) and p.name.key in OUTPUT_ONLY

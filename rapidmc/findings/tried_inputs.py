@@ -50,6 +50,8 @@ from ..semantics.program import ENVIRONMENT_NAMESPACE, PROGRAM_NAMESPACE, Progra
 from ..load.call_graph import called_routines  # noqa: F401  (coverage asks it here)
 from ..semantics.scope import GLOBAL_DATA
 from ..semantics.library import lookup_procedure
+from ..semantics.library.position import AXES_PROBED
+from ..semantics.values import UNCONNECTED_AXIS, to_num
 from ..semantics.library.probed_readings import DOMAINS as PROBED_READINGS, FAILING
 from ..semantics.library.registry import NO_EFFECT
 from .fixed_readings import reading_calls
@@ -130,6 +132,7 @@ def sampled_inputs(program: Program, exact: Iterable[tuple] = (),
             if has_handler and node.name.key in EGM_SESSIONS:
                 found.append(TriedInput(EGM_UP, node.name.text, node.span))
     found += [TriedInput(FIXED, name.text, name.span) for name in reading_calls(program)]
+    found += [TriedInput(FIXED, call.name.text, call.span) for call in axis_reads(program)]
     found += [TriedInput(UNSET, call.name.text, call.span)
               for call in unset_output_reads(program)]
     found += [TriedInput(UNWRITTEN, ref.name.text, ref.span)
@@ -227,6 +230,34 @@ def _conditions(routine_ast):
             yield from (argument.value for argument in node.args if argument.value is not None)
 
 
+def axis_reads(program: Program) -> list:
+    """The calls of the program's code that read the robot's external axes (CRobT,
+    CJointT), in a program that tells connected axes apart (``tests_axes``): the modelled
+    robot has none (9E9), a cell may have some, and only the readings probe connects them
+    (``library.position``)."""
+    if not tests_axes(program):
+        return []
+    own = {routine.key for routine in program.routines}       # (a routine of that name)
+    return [node for routine in program.routines
+            if routine.ast is not None and routine.namespace == PROGRAM_NAMESPACE
+            for node, _ in ast.walk(routine.ast)
+            if isinstance(node, ast.FunctionCall) and node.name.key in AXES_PROBED
+            and node.name.key not in own]
+
+
+def tests_axes(program: Program) -> bool:
+    """Whether the program's code compares a value with 9E9 (= or <>), the value of an
+    external axis a robot lacks (``IF eax <> 9E9`` in the ROS modules).  Only then does
+    the readings probe connect external axes: each such choice doubles the states of a
+    probe after every CRobT, and a program that never tells the axes apart gains nothing."""
+    return any(isinstance(node, ast.Binary) and node.op in ("=", "<>") and any(
+               isinstance(side, ast.NumLiteral) and to_num(float(side.value)) == UNCONNECTED_AXIS
+               for side in (node.left, node.right))
+               for routine in program.routines
+               if routine.ast is not None and routine.namespace == PROGRAM_NAMESPACE
+               for node, _ in ast.walk(routine.ast))
+
+
 def unset_digital_outputs(program: Program) -> list:
     """The digital outputs of ``unset_output_reads``: the readings probe lets them read 0
     or 1 (a system output, another task, the FlexPendant's I/O view may set them)."""
@@ -239,7 +270,7 @@ def probed(read: TriedInput) -> bool:
     """Whether the readings probe frees ``read``: a reading of ``probed_readings.DOMAINS``
     or a DOutput of an output no loaded code sets."""
     name = read.instruction.upper()
-    return (read.kind == FIXED and name in PROBED_READINGS) or \
+    return (read.kind == FIXED and (name in PROBED_READINGS or name in AXES_PROBED)) or \
         (read.kind == UNSET and name == "DOUTPUT")
 
 

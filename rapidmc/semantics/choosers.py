@@ -123,6 +123,9 @@ class CheckConfig:
         # the coverage probe's: controller readings read any value of their domain
         # (library.probed_readings); never for verdicts
         self.free_readings = False
+        # ... and, in a program that tells them apart, CRobT and CJointT read the external
+        # axes connected too (library.position)
+        self.axes_probed = False
         # the closure probe's: SocketBind may find its port taken (library.sockets)
         self.socket_setup_failures = False
         # (routine, pc) -> visible, for instructions that join the step before them
@@ -145,6 +148,20 @@ class CheckConfig:
         self.input_labels = tuple(
             tuple((name, value) for (_, name, _), value in zip(free, valuation))
             for valuation in self.input_valuations)
+
+    def with_inputs_held(self) -> "CheckConfig":
+        """A copy in which the inputs stored at every step (those an interrupt or a
+        property watches: ``free_inputs``) keep their present value, so no interrupt on a
+        signal fires; inputs read when read stay free.  An environment whose signals stay
+        put is one a cell allows, so every state this copy reaches is reachable: a coverage
+        probe uses it when the inputs' changes at every step make its search too broad."""
+        held = copy.copy(self)
+        held.free_inputs = ()
+        held.input_valuations = ((),)
+        held.input_assignments = ((),)
+        held.input_labels = ((),)
+        held._merge_table = held.fused = held._unmerged = held.view_steps = None
+        return held
 
     def unmerged(self) -> "CheckConfig":
         """This configuration without merge points (one instruction per step), made once

@@ -24,7 +24,7 @@ from typing import Optional
 from pyrsistent import pvector
 
 from .errors import errno_name, error_detail
-from .values import signal_value
+from .values import UNCONNECTED_AXIS, signal_value
 from .machine import Machine
 from .program import Program
 from .state import ENDED, FAILED, RUNNING, STOPPED, Frame, Interrupts, State, Transition
@@ -42,8 +42,8 @@ from .timing import apply_scheduled, enqueue
 ENVIRONMENT_STEP_LIMIT = 100_000
 
 HOME_TARGET = ((0.0, 0.0, 0.0), (1.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0),
-               (9e9, 9e9, 9e9, 9e9, 9e9, 9e9))
-HOME_JOINTS = ((0.0,) * 6, (9e9,) * 6)
+               (UNCONNECTED_AXIS,) * 6)
+HOME_JOINTS = ((0.0,) * 6, (UNCONNECTED_AXIS,) * 6)
 
 
 # ---------------------------------------------------------------------------

@@ -68,6 +68,12 @@ def to_num(x: float | int) -> float:
     return result + 0.0
 
 
+# 9E9 marks an external axis the robot lacks; as a num it is 9E9 rounded to single
+# precision, the value the literal 9E9 has in a program (the modelled robot's axes read
+# 9E9 exactly: ``IF eax <> 9E9`` is FALSE, as on a controller)
+UNCONNECTED_AXIS = to_num(9e9)
+
+
 def signal_value(kind: str, value: float) -> float:
     """A value given for a signal of ``kind`` (an input domain, ``--io``) as the signal holds
     it: analog values are nums (single precision, as AInput returns them), others as given."""

@@ -6,12 +6,17 @@ from typing import Callable, Optional
 from ... import ast
 from ..expressions import Compiled
 from ..robots import named_task
+from ..values import UNCONNECTED_AXIS
 from .arguments import (ROBOT_JOINTS, ROBOT_TCP, ROBOT_TOOL, ROBOT_WOBJ, Arguments,
                         argument_expression)
+from .environment_model import where
+from .probed_readings import readings_free
 from .registry import compiled
 from .signature_parts import TASK
 from .tasks import task_number
 
+# readings whose external axes the readings probe may connect (``_axes_probed``)
+AXES_PROBED = ("CROBT", "CJOINTT")
 # name -> (part of the robot state, component of it or None for the whole part)
 ROBOT_PARTS = {"CPOS": (ROBOT_TCP, 0), "CROBT": (ROBOT_TCP, None), "CJOINTT": (ROBOT_JOINTS, None),
           "CTOOL": (ROBOT_TOOL, None), "CWOBJ": (ROBOT_WOBJ, None)}
@@ -36,23 +41,42 @@ def _robot_part(calls, compiler, call, entry) -> Compiled:
     part, component = ROBOT_PARTS[entry.key]
     result_type = calls.return_type(entry)
     if component is None:
-        def read(robot):
+        def read(robot, m=None):
             return robot[part]
     else:
-        def read(robot):
+        def read(robot, m=None):
             return robot[part][component]
     named = _named_task(compiler, call, arguments) if entry.key != "CPOS" else None
+    if entry.key in AXES_PROBED:
+        read = _axes_probed(read, f"{call.name.text} at {where(call.span)}")
     if named is None:
-        return Compiled(lambda m: read(m.robot), result_type)
+        return Compiled(lambda m: read(m.robot, m), result_type)
     caller = task_number(compiler)
 
     def read_named(m):
         number = named(m)
         robots = m.robots
         if number is None or number == caller or robots is None:
-            return read(m.robot)
-        return read(robots[number])
+            return read(m.robot, m)
+        return read(robots[number], m)
     return Compiled(read_named, result_type)
+
+
+def _axes_probed(read: Callable, label: str) -> Callable:
+    """``read``, but in the readings probe (``probed_readings.readings_free``) a target
+    whose external axes the modelled robot lacks (9E9: not connected) may also read them
+    connected, at 0: a driver written for any robot (``IF eax <> 9E9`` in the ROS
+    modules) runs its code for external axes on a cell that has them.  Only in a program
+    that compares a value with 9E9 (``CheckConfig.axes_probed``).  The verdicts keep
+    the modelled robot, which has none."""
+    def probed(robot, m=None):
+        value = read(robot)
+        if m is None or not readings_free(m) or UNCONNECTED_AXIS not in value[-1] \
+                or not m.chooser.config.axes_probed:
+            return value
+        connected = tuple(0.0 if axis == UNCONNECTED_AXIS else axis for axis in value[-1])
+        return m.choose(label, (value, (*value[:-1], connected)))
+    return probed
 
 
 def _named_task(compiler, call, arguments: Arguments) -> Optional[Callable]:
