@@ -229,7 +229,6 @@ def test_a_handler_for_a_target_out_of_reach_is_reached_by_the_readings_probe(tm
         "never reached with the controller's readings fixed (CalcJointT at line 17)"]
 
 
-<<<<<<< HEAD
 def test_calc_rob_t_reads_a_fixed_target_with_the_joint_targets_external_axes(tmp_path, capsys):
     """Survey of issue 28: gantry tasks compute a robtarget from joints they read back, and
     the check stopped at CalcRobT (no kinematics). It now reads the target the robot has (as
@@ -249,7 +248,8 @@ ENDMODULE
     assert main(["run", str(path)]) == 0
     assert capsys.readouterr().out == "x 500\ngantry 1500\n"
     assert warnings_of("    speed := CalcRobT(CJointT(), tool0).trans.z;\n") == [("CalcRobT", 1, 1)]
-=======
+
+
 AXES = """MODULE Axes
     VAR num connected := 0;
     VAR num manual := 0;
@@ -303,4 +303,3 @@ def test_only_a_program_that_tells_axes_apart_has_them_connected(tmp_path, monke
     warnings = [w.message for w in api.check(program).warnings if w.code.code == "RMC701"]
     assert warnings and all(("CJointT at line 7; CRobT at line 11" in m) == named
                             for m in warnings)
->>>>>>> h-socket
