@@ -201,7 +201,8 @@ class InputFlow:
             return True
         seen.add(place)
         for read in self.reads().get(place, ()):
-            node, parents = _inert_result(*_components(read.node, list(read.parents)))
+            node, parents = _through_offs(
+                *_inert_result(*_components(read.node, list(read.parents))), read.scope)
             parent = parents[-1] if parents else None
             if self._shapes_target(node, parents, read.scope):
                 continue
@@ -230,7 +231,8 @@ class InputFlow:
         if not isinstance(call, ast.FunctionCall) or call.name.key not in ROBOT_PARTS or \
                 routine.scope.lookup(call.name.key) is not None:
             return False
-        node, parents = _inert_result(*_components(call, list(parents)))
+        node, parents = _through_offs(*_inert_result(*_components(call, list(parents))),
+                                      routine.scope)
         parent = parents[-1] if parents else None
         if self._shapes_target(node, parents, routine.scope):
             return True
@@ -438,6 +440,17 @@ def _inert_result(node, parents: list) -> tuple:
             node = parents.pop()
         else:
             break
+    return node, parents
+
+
+def _through_offs(node, parents: list, scope) -> tuple:
+    """The outermost ``Offs`` call ``node``'s value is an argument of (the point shifted,
+    which cannot fail), through ``+ - *`` and components in between; ``node`` itself
+    when it is no argument of the predefined ``Offs``."""
+    while len(parents) >= 2 and isinstance(parents[-1], ast.Argument) and \
+            isinstance(parents[-2], ast.FunctionCall) and parents[-2].name.key == "OFFS" and \
+            scope.lookup("OFFS") is None:
+        node, parents = _inert_result(*_components(parents[-2], parents[:-2]))
     return node, parents
 
 
