@@ -146,7 +146,7 @@ def _identifiers(text: str) -> Iterator[str]:
 UNTRACKED_ROBOT = Assumption(
     UNTRACKED, "robot position",
     "the robot's position is not tracked: nothing but moves reads it, so moves leave the "
-    "robot where it is and positions read back are its start (--track-robot tracks it)",
+    "robot where it is (a position read back is its start; --track-robot tracks it)",
     frozenset(MOVE_ROUTINES) | frozenset(ROBOT_PARTS))
 
 
