@@ -265,7 +265,7 @@ SPEED_ONLY = """MODULE M
   PROC main()
     AliasIO "GI_CODE", gi_speed;
     VelSet GInput(gi_speed) * 2 - 1, 5000;
-    SpeedRefresh gi_speed;
+    AccSet gi_speed, 100;
     x := 1;
   ENDPROC
 ENDMODULE
@@ -276,6 +276,15 @@ def test_an_input_that_reaches_only_routines_with_no_effect_takes_one_value(tmp_
     model = api.prepare(_load(tmp_path, SPEED_ONLY), [])
     [assumed] = model.assumed
     assert assumed.values == (0.0,) and "reaches no condition" in assumed.reason
+
+
+def test_an_override_given_to_speed_refresh_is_compared_with_its_limits(tmp_path):
+    """SpeedRefresh raises ERR_SPEED_REFRESH_LIM outside 0-100 %: the value is compared with
+    0 and 100 (review of session 5; before, SpeedRefresh had no effect: one value)."""
+    text = SPEED_ONLY.replace("    AccSet gi_speed, 100;\n", "    SpeedRefresh gi_speed;\n")
+    [assumed] = api.prepare(_load(tmp_path, text), []).assumed
+    assert assumed.values == (0.0, 1.0, 99.0, 100.0, 101.0)
+    assert "only compared with 0, 100" in assumed.reason
 
 
 @pytest.mark.parametrize("use, found", [
@@ -539,3 +548,25 @@ def _refusal_notes(tmp_path, text: str, properties) -> str:
     with pytest.raises(UserError) as caught:
         api.prepare(_load(tmp_path, text), properties, api.CheckOptions())
     return " ".join(note for d in caught.value.diagnostics for note in d.notes)
+
+
+# --- review of session 5: an operation that may leave the range of num can fail ----------
+
+@pytest.mark.parametrize("scaled, default", [
+    ("AInput(ai_speed) * 0.5 + 100", True),     # at most half the largest num, plus 100
+    ("-AInput(ai_speed) / 2", True),
+    ("AInput(ai_speed) * 10", False),           # the largest num times 10: ERR_NUM_LIMIT
+    ("AInput(ai_speed) + 2E38", False),
+    ("AInput(ai_speed) / 0.5", False),
+    ("AInput(ai_speed) * MaxRobSpeed()", False),  # its fixed reading, 5000
+])
+def test_an_analog_value_scaled_beyond_the_num_range_has_no_default(tmp_path, scaled, default):
+    text = SPEED_PERCENT.replace("signalgi gi_speed", "signalai gi_speed") \
+        .replace("MaxRobSpeed() / 100 * gi_speed", scaled.replace("ai_speed", "gi_speed")) \
+        .replace("MaxRobReorientSpeed() / 100 * GInput(gi_speed) * 0.2", "100") \
+        .replace("speed \\V:=gi_speed * 2", "speed")
+    if default:
+        [assumed] = api.prepare(_load(tmp_path, text), []).assumed
+        assert assumed.values == (0.0,)
+    else:
+        assert "is an operand of" in _refusal(tmp_path, text)

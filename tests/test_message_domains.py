@@ -542,3 +542,21 @@ def test_a_list_between_brackets_is_also_tried_with_its_last_part_malformed():
     program = api.load_program([str(CHECK / "socket_bracket_list" / "prog.mod")])
     [domain] = message_domains(program)
     assert domain.messages[:3] == ("[1,1,1]", "[1,1]", "[1,1,?]")
+
+
+def test_a_trap_only_an_unmodelled_interrupt_runs_names_the_instruction_ordering_it(tmp_path):
+    """ISignalAI (like IError, TriggInt ...) has no effect in the check: its interrupt never
+    comes there, while a real controller runs the TRAP once the value passes the limit, so
+    the TRAP is not unreached under any input (review of session 5)."""
+    path = tmp_path / "press.mod"
+    path.write_text(
+        "MODULE Press\n    VAR signalai ai_press;\n    VAR intnum irq;\n    VAR num hits := 0;\n"
+        "    PROC main()\n        AliasIO \"AI_PRESS\", ai_press;\n"
+        "        CONNECT irq WITH OnHigh;\n"
+        "        ISignalAI ai_press, AIO_ABOVE_HIGH, 5, 0, 0, irq;\n        WaitTime 1;\n"
+        "    ENDPROC\n    TRAP OnHigh\n        hits := hits + 1;\n    ENDTRAP\nENDMODULE\n")
+    report = api.check(api.load_program([str(path)]), (),
+                       api.CheckOptions(input_domains={"AI_PRESS": (0.0, 10.0)}))
+    assert coverage(report) == [
+        "never reached with no interrupt coming that the check does not model "
+        "(ISignalAI at line 8) (routine OnHigh never runs)"]

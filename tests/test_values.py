@@ -57,6 +57,16 @@ def test_dnum_rejects_what_a_double_cannot_hold(x):
     raises("ERR_NUM_LIMIT", to_dnum, x)
 
 
+@pytest.mark.parametrize("convert, x", [
+    (to_num, -0.0), (to_dnum, -0.0),
+    (to_num, 0.0 * -1),
+    (to_num, -1e-50),       # underflows to -0.0 in single precision
+])
+def test_no_value_holds_negative_zero(convert, x):
+    # a checked state holds -0.0 and 0.0 as one value, so no computed value may keep the sign
+    assert math.copysign(1.0, convert(x)) == 1.0
+
+
 def test_dnum_keeps_double_precision():
     assert to_dnum(0.1) == 0.1 and to_num(0.1) != 0.1
 

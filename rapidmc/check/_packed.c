@@ -634,7 +634,7 @@ static int to_num(Value *v)
             return VM_ERROR;            /* beyond the float32 range: ERR_NUM_LIMIT */
         x = (double)rounded;
     }
-    *v = number(T_NUM, x);
+    *v = number(T_NUM, x + 0.0);        /* never -0.0, as values.to_num */
     return VM_DONE;
 }
 
@@ -759,7 +759,8 @@ static int execute(Run *run, const int32_t *code, Py_ssize_t ip, uint64_t *bits)
             Value v = POP();
             if (!numeric(v))
                 FAIL(VM_UNSUPPORTED);
-            PUSH(number(v.tag == T_NUM ? T_NUM : T_INT, -v.d));
+            /* + 0.0: negation never makes -0.0, as in the Python step */
+            PUSH(number(v.tag == T_NUM ? T_NUM : T_INT, -v.d + 0.0));
             break;
         }
         case OP_NOT: {

@@ -18,7 +18,10 @@ loaded module says for sure:
   (``load.shared_data.data_uses`` says what each task reads and writes);
 * **digital outputs no loaded code sets**: read back, they take either value
   (``load.outside_outputs``: a system output, a cross-connection, a task not
-  loaded).
+  loaded);
+* **interrupts not modelled**: an instruction ordering one that the check models with
+  no effect (ISignalAI, IError, TriggInt ...: ``tried_inputs.unmodelled_interrupt_orders``)
+  never interrupts the program, so its TRAP never runs;
 * **the robot's position left out of states**: where nothing but moves reads it
   (``model.robot_tracking``), moves leave the robot where it is; the verdicts are
   those of the tracked robot, but a counterexample shows the robot at its start
@@ -47,8 +50,10 @@ from ..semantics.library.motion import MOVE_ROUTINES
 from ..semantics.library.position import ROBOT_PARTS
 from ..semantics.program import ENVIRONMENT_NAMESPACE, PROGRAM_NAMESPACE, Program
 from .fixed_readings import fixed_readings
+from .tried_inputs import unmodelled_interrupt_orders
 
 STUB, READING, OTHER_WRITER = "stub", "fixed reading", "other writer"
+NO_INTERRUPT = "interrupt not modelled"
 UNTRACKED = "untracked"
 _IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 _STRING_OR_COMMENT = re.compile(r'"(?:[^"]|"")*"|!.*$')
@@ -59,7 +64,7 @@ _HEAD_END = re.compile(r";|\b(?:THEN|DO|CASE|DEFAULT)\b", re.IGNORECASE)
 class Assumption:
     """One thing a verdict may rest on: its kind, the name it is about, and a sentence."""
 
-    kind: str                 # STUB, READING, OTHER_WRITER, UNTRACKED
+    kind: str                 # STUB, READING, OTHER_WRITER, NO_INTERRUPT, UNTRACKED
     name: str
     text: str
     # upper-case names besides ``name`` whose statements rest on it (a counterexample
@@ -86,6 +91,11 @@ def assumptions(program: Program, robot_untracked: bool = False) -> tuple[Assump
                          f"output {signal.name} is set outside the loaded code, by "
                          f"{signal.outside}; its reads take 0 or 1")
               for signal in program.signals if signal.outside]
+    found += [Assumption(NO_INTERRUPT, call.name.text,
+                         f"the interrupt {call.name.text} orders at "
+                         f"{Path(call.span.file).name}:{call.span.line} never comes: the check "
+                         "does not model it, so the TRAP it would run does not run")
+              for call in unmodelled_interrupt_orders(program)]
     if robot_untracked:
         found.append(UNTRACKED_ROBOT)
     return tuple(found)

@@ -30,7 +30,10 @@ in a program with an ERROR handler each EGM instruction that ran is named ("with
 session failing (EGMRunJoint at line 29)").  Without it, when the program
 has an ERROR handler, each such instruction that ran is named as well ("with no
 peer closing its socket (SocketSend at line 97)"): the handler's code may be
-reached by a closure the check did not try.
+reached by a closure the check did not try.  An interrupt the check does not model
+(ISignalAI, IError, TriggInt ... have no effect in it) never comes, so a TRAP only it runs
+is "never reached with no interrupt coming that the check does not model (ISignalAI at
+line 12)".
 
 An input counts when its reading instruction ran in the search (an input the
 program never reads cannot explain anything), and only for code some call could
@@ -46,7 +49,9 @@ from .. import ast
 from ..semantics.program import ENVIRONMENT_NAMESPACE, PROGRAM_NAMESPACE, Program
 from ..load.call_graph import called_routines  # noqa: F401  (coverage asks it here)
 from ..semantics.scope import GLOBAL_DATA
+from ..semantics.library import lookup_procedure
 from ..semantics.library.probed_readings import DOMAINS as PROBED_READINGS, FAILING
+from ..semantics.library.registry import NO_EFFECT
 from .fixed_readings import reading_calls
 
 # instruction or function (canonical name) -> what a check offers it only some of
@@ -81,7 +86,11 @@ EGM_UP = "no EGM session failing"              # the kind of those, in a program
 # shared PERS data a condition reads in a task checked alone: another task or a PC may write
 # it on the controller, which the check does not model
 UNWRITTEN = "no other task writing the persistent data"
-PHRASES = (PEERS_OPEN, PORT_FREE, FIXED, UNSET, UNWRITTEN, EGM_UP)   # kinds that are phrases of their own
+# instructions ordering an interrupt the check never delivers (modelled with no effect:
+# ISignalAI/AO/GI/GO, IError, TriggInt ...): a real controller may run its TRAP
+NO_INTERRUPT = "no interrupt coming that the check does not model"
+PHRASES = (PEERS_OPEN, PORT_FREE, FIXED, UNSET, UNWRITTEN, EGM_UP,
+           NO_INTERRUPT)   # kinds that are phrases of their own
 
 
 @dataclass(frozen=True)
@@ -125,6 +134,8 @@ def sampled_inputs(program: Program, exact: Iterable[tuple] = (),
               for call in unset_output_reads(program)]
     found += [TriedInput(UNWRITTEN, ref.name.text, ref.span)
               for ref in unwritten_pers_reads(program)]
+    found += [TriedInput(NO_INTERRUPT, call.name.text, call.span)
+              for call in unmodelled_interrupt_orders(program)]
     return tuple(sorted(set(found), key=lambda t: (t.span.file, t.span.line, t.span.column)))
 
 
@@ -153,6 +164,29 @@ def unset_output_reads(program: Program) -> list:
     outputs = {signal.key for signal in program.signals
                if signal.kind.endswith("O") and not signal.outside}
     return [call for name, call in reads if name in outputs and name not in passed]
+
+
+def unmodelled_interrupt_orders(program: Program) -> list:
+    """The calls (every task's code) of predefined instructions that order an interrupt
+    (an ``intnum`` parameter) and are modelled with no effect: the check never delivers
+    that interrupt, which a real controller does (an analog value above its limit, an
+    error of a domain, a trigger point passed)."""
+    calls = []
+    for routine in program.routines:
+        if routine.ast is None or routine.namespace == ENVIRONMENT_NAMESPACE:
+            continue
+        for node, _ in ast.walk(routine.ast):
+            if isinstance(node, ast.ProcedureCall) and \
+                    routine.scope.lookup(node.name.key) is None and \
+                    _orders_unmodelled_interrupt(node.name.key):
+                calls.append(node)
+    return calls
+
+
+def _orders_unmodelled_interrupt(key: str) -> bool:
+    entry = lookup_procedure(key)
+    return entry is not None and entry.modelled == NO_EFFECT and \
+        any(parameter.type_name.upper() == "INTNUM" for parameter in entry.signature.parameters)
 
 
 def unwritten_pers_reads(program: Program) -> list:

@@ -10,7 +10,8 @@ Two cases allow a default that loses no behaviour:
 * **Only compared with numbers.** When every read of the input in the code
   is one side of a comparison (``= <> < <= > >=``) with a number literal or
   a CONST num, a TEST subject whose CASE values are such numbers, or the
-  signal of ``WaitGI``/``WaitAI`` with such a (whole) number, the
+  signal of ``WaitGI``/``WaitAI`` with such a (whole) number, or the override of
+  ``SpeedRefresh`` (compared with its limits 0 and 100), the
   program sees only the outcomes of those comparisons.  The outcomes depend
   only on where the value lies among the numbers, so one value per place
   covers every outcome: for a group input each number, its integer
@@ -21,7 +22,7 @@ Two cases allow a default that loses no behaviour:
 
 * **Reaching nothing.** When every read's value goes, through ``+ - *``
   only, into an IN argument of a predefined routine modelled with no effect
-  (a PLC's speed override given to ``VelSet`` or ``SpeedRefresh``), no
+  (a PLC's speed override given to ``VelSet``), no
   behaviour depends on it: one value.
 
 * **Followed through data** (``input_flow``).  A group input's value used as
@@ -44,6 +45,7 @@ from typing import Optional, Sequence, Union
 from .. import ast
 from ..diagnostics import DOMAIN_ASSUMED, Diagnostic
 from ..semantics.configured_signals import COMPARISONS
+from ..semantics.library.motion_settings import SPEED_REFRESH_LIMITS
 from ..semantics.program import Program, Signal
 from ..semantics.scope import CONSTANT, SIGNAL
 from ..semantics.values import to_num
@@ -270,6 +272,10 @@ def compared_numbers(ref: ast.NameRef, parents: tuple, scope) -> Union[set, str]
     if isinstance(parent, ast.Argument) and len(parents) >= 2 \
             and isinstance(parents[-2], ast.ProcedureCall) and parents[-2].name.key in WAITS:
         return _waited_for(parents[-2], parent, scope)
+    if isinstance(parent, ast.Argument) and len(parents) >= 2 \
+            and isinstance(parents[-2], ast.ProcedureCall) \
+            and parents[-2].name.key == "SPEEDREFRESH" and scope.lookup("SPEEDREFRESH") is None:
+        return set(SPEED_REFRESH_LIMITS)    # (the range it checks, raising beyond it)
     if isinstance(parent, ast.Test) and parent.subject is node:
         values = [number_value(v, scope) for case in parent.cases for v in case.values]
         if any(v is None for v in values):

@@ -30,16 +30,18 @@ property's atom.  Any other use refuses the default, naming the use.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import Optional, Union
 
 from .. import ast
-from ..semantics.library import lookup_procedure
+from ..semantics.library import lookup_function, lookup_procedure
 from ..semantics.library.motion import MOVE_ROUTINES, UNEVALUATED_BY_MOVES
 from ..semantics.library.position import ROBOT_PARTS
 from ..semantics.library.registry import NO_EFFECT, matched_parameters
-from ..semantics.scope import GLOBAL_DATA, LOCAL_DATA, ROUTINE
+from ..semantics.scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL
 from ..semantics.types import ArrayType
+from ..semantics.values import to_num
 
 # what reads the robot's position, tool or work object back: ROBOT_PARTS (CRobT, CPos,
 # CJointT, CTool, CWObj) may, when their value too only shapes moves' targets; CalcJointT
@@ -51,7 +53,13 @@ BY_NAME = frozenset({"GETDATAVAL", "SETDATAVAL", "SETALLDATAVAL"})
 UNEVALUATED = "arguments no model evaluates"    # kinds of sink (Uses.sinks)
 TARGETS = "moves' targets"
 MAX_INDEXED = 64              # an index of a bigger array: too many classes to branch over
-INERT_OPS = ("+", "-", "*")   # operations that cannot fail on a num read (no divisor)
+INERT_OPS = ("+", "-", "*")   # operations that cannot fail on a num read (no divisor) ...
+NUM_MAX = 3.4028234663852886e38     # ... while results stay within num: the largest num
+ROUNDED_AWAY = 2.0 ** 102     # less than half the num spacing at NUM_MAX (2**104): rounds down
+GROUP_MAX = 2.0 ** 32 - 1     # the largest value of a group input (32 bits at most)
+# offsets of Offs at most this big leave any coordinate's overflow to the other terms: beside
+# 2**89 and more, where overflow could begin, they are far below the num spacing
+OFFSET_MAX = 2.0 ** 64
 NUMERIC = ("NUM", "DNUM")     # types of data a raw value may be stored in and followed
 WRITABLE = ("VAR", "IN", "INOUT")   # storage of data followed (not PERS, CONST, FOR)
 
@@ -138,19 +146,21 @@ class InputFlow:
             if place is not None:
                 self._follow(place, uses, integral, classify, seen)
                 return
-        if self.sink(read, uses, seen):
+        if self.sink(read, uses, seen, GROUP_MAX if integral else NUM_MAX):
             return
         uses.refusal = _at(read, found)
 
-    def sink(self, read: Read, uses: Uses, seen: set) -> bool:
-        """Whether the value read at ``read`` reaches nothing that can tell values apart:
-        through ``+ - *`` and unary minus only into an argument no model evaluates, or
-        into data whose every read is such an argument; or into moves' targets only, when
-        nothing reads the robot's position but to move again (``robot_unobserved``).  A
-        condition, index, divisor, atom or operation that can fail is never a sink."""
-        node, parents = _inert_result(*_unwrapped(read.node, list(read.parents)))
+    def sink(self, read: Read, uses: Uses, seen: set, bound: float) -> bool:
+        """Whether the value read at ``read`` (at most ``bound`` in size) reaches nothing
+        that can tell values apart: through ``+ - *`` and unary minus only into an
+        argument no model evaluates, or into data whose every read is such an argument; or
+        into moves' targets only, when nothing reads the robot's position but to move
+        again (``robot_unobserved``).  A condition, index, divisor, atom or operation that
+        can fail (one that may leave the range of num for some value) is never a sink."""
+        node, parents, bound = _inert_result(*_unwrapped(read.node, list(read.parents)),
+                                             bound, read.scope)
         parent = parents[-1] if parents else None
-        if self._shapes_target(node, parents, read.scope):
+        if self._shapes_target(node, parents, read.scope, bound):
             return self.robot_unobserved() and uses.sunk(TARGETS)
         if isinstance(parent, ast.Argument) and len(parents) >= 2 and \
                 isinstance(parents[-2], ast.ProcedureCall):
@@ -170,17 +180,22 @@ class InputFlow:
 
     # --- moves' targets ----------------------------------------------------------------------
 
-    def _shapes_target(self, node, parents: list, scope) -> bool:
-        """Whether the value of ``node`` only becomes (part of) a predefined move's target:
-        its target argument, or an argument of ``Offs`` whose result does."""
+    def _shapes_target(self, node, parents: list, scope, bound: float = NUM_MAX) -> bool:
+        """Whether the value of ``node`` (at most ``bound`` in size) only becomes (part of)
+        a predefined move's target: its target argument, or an offset of ``Offs`` too small
+        to carry a coordinate out of the num range, whose result does."""
         parent = parents[-1] if parents else None
         if not isinstance(parent, ast.Argument) or len(parents) < 2:
             return False
         call = parents[-2]
+        if not isinstance(call, (ast.ProcedureCall, ast.FunctionCall)):   # %name% args
+            return False
         if scope.lookup(call.name.key) is not None:            # the program's own routine
             return False
         if isinstance(call, ast.FunctionCall) and call.name.key == "OFFS":
-            return self._shapes_target(call, parents[:-2], scope)
+            offset = parent is not call.args[0]
+            return (not offset or bound <= OFFSET_MAX) and \
+                self._shapes_target(call, parents[:-2], scope)
         if not isinstance(call, ast.ProcedureCall) or call.name.key not in MOVE_ROUTINES:
             return False
         entry = lookup_procedure(call.name.key)
@@ -201,10 +216,11 @@ class InputFlow:
             return True
         seen.add(place)
         for read in self.reads().get(place, ()):
-            node, parents = _through_offs(
-                *_inert_result(*_components(read.node, list(read.parents))), read.scope)
+            node, parents, bound = _through_offs(
+                *_inert_result(*_components(read.node, list(read.parents)), NUM_MAX,
+                               read.scope), read.scope)
             parent = parents[-1] if parents else None
-            if self._shapes_target(node, parents, read.scope):
+            if self._shapes_target(node, parents, read.scope, bound):
                 continue
             if isinstance(parent, ast.Assignment) and parent.value is node:
                 into = self._place(_base(parent.target), read, any_type=True)
@@ -231,10 +247,11 @@ class InputFlow:
         if not isinstance(call, ast.FunctionCall) or call.name.key not in ROBOT_PARTS or \
                 routine.scope.lookup(call.name.key) is not None:
             return False
-        node, parents = _through_offs(*_inert_result(*_components(call, list(parents))),
-                                      routine.scope)
+        node, parents, bound = _through_offs(
+            *_inert_result(*_components(call, list(parents)), NUM_MAX, routine.scope),
+            routine.scope)
         parent = parents[-1] if parents else None
-        if self._shapes_target(node, parents, routine.scope):
+        if self._shapes_target(node, parents, routine.scope, bound):
             return True
         if isinstance(parent, ast.Assignment) and parent.value is node:
             read = Read(node, tuple(parents), routine.scope, routine)
@@ -428,37 +445,107 @@ def unevaluated_argument(call: ast.ProcedureCall, argument: ast.Argument, scope)
     return False
 
 
-def _inert_result(node, parents: list) -> tuple:
-    """The outermost expression ``node``'s value goes into through operations that cannot
-    fail on it: ``+ - *``, unary minus, and division by a number literal other than 0."""
+def _inert_result(node, parents: list, bound: float, scope) -> tuple:
+    """The outermost expression ``node``'s value (at most ``bound`` in size) goes into
+    through operations that cannot fail on it, and a bound of that expression's size:
+    unary minus, ``+ - *`` and division by a number literal other than 0, each while its
+    result stays within the range of num for every operand of the sizes known (an analog
+    input may hold the largest num: ``AInput(ai) * 10`` raises ERR_NUM_LIMIT)."""
     while parents:
         parent = parents[-1]
-        if isinstance(parent, ast.Binary) and (
-                parent.op in INERT_OPS or parent.op == "/" and parent.left is node
-                and isinstance(parent.right, ast.NumLiteral) and _nonzero(parent.right)) \
-                or isinstance(parent, ast.Unary) and parent.op == "-":
+        if isinstance(parent, ast.Unary) and parent.op == "-":
             node = parents.pop()
-        else:
+            continue
+        if not isinstance(parent, ast.Binary) or parent.op not in INERT_OPS + ("/",):
             break
-    return node, parents
+        other = parent.right if parent.left is node else parent.left
+        size = _magnitude(other, scope)
+        if parent.op == "/":
+            if parent.left is not node or not isinstance(other, ast.NumLiteral) or \
+                    not 0 < size < math.inf:
+                break
+            result = bound / size
+        elif parent.op == "*":
+            result = bound * size if bound and size else 0.0
+        else:
+            result = bound + size
+            if result < NUM_MAX + ROUNDED_AWAY:     # a sum this close rounds to the largest num
+                result = min(result, NUM_MAX)
+        if not result <= NUM_MAX:
+            break
+        bound = result
+        node = parents.pop()
+    return node, parents, bound
 
 
-def _through_offs(node, parents: list, scope) -> tuple:
-    """The outermost ``Offs`` call ``node``'s value is an argument of (the point shifted,
-    which cannot fail), through ``+ - *`` and components in between; ``node`` itself
-    when it is no argument of the predefined ``Offs``."""
+def _through_offs(node, parents: list, bound: float, scope) -> tuple:
+    """The outermost ``Offs`` call that ``node``'s value (at most ``bound`` in size) goes
+    into, as its point or as an offset small enough (``OFFSET_MAX``) to carry no
+    coordinate out of the num range, then through operations ``_inert_result`` lets
+    through; ``node`` itself when it is no argument of the predefined ``Offs``.  Offs only
+    shifts the point, so its result is data as inert as its arguments."""
     while len(parents) >= 2 and isinstance(parents[-1], ast.Argument) and \
             isinstance(parents[-2], ast.FunctionCall) and parents[-2].name.key == "OFFS" and \
             scope.lookup("OFFS") is None:
-        node, parents = _inert_result(*_components(parents[-2], parents[:-2]))
-    return node, parents
+        call = parents[-2]
+        if parents[-1] is not call.args[0] and bound > OFFSET_MAX:
+            break
+        node, parents, bound = _inert_result(*_components(call, parents[:-2]), NUM_MAX, scope)
+    return node, parents, bound
 
 
-def _nonzero(literal: ast.NumLiteral) -> bool:
-    try:
-        return float(literal.value) != 0
-    except (TypeError, ValueError):
-        return False
+def _magnitude(expr, scope) -> float:
+    """A bound of the size of ``expr``'s value (math.inf: unknown): a number literal or
+    CONST num, an input's reading, a function's fixed reading, any num data, and ``+ - *``,
+    unary minus and division by a number literal of such."""
+    if isinstance(expr, ast.Unary) and expr.op in ("-", "+"):
+        return _magnitude(expr.operand, scope)
+    if isinstance(expr, ast.NumLiteral):
+        try:
+            return abs(to_num(expr.value))
+        except Exception:
+            return math.inf
+    if isinstance(expr, ast.Binary) and expr.op in INERT_OPS:
+        left, right = _magnitude(expr.left, scope), _magnitude(expr.right, scope)
+        if expr.op == "*":
+            return left * right if left and right else 0.0
+        return left + right
+    if isinstance(expr, ast.Binary) and expr.op == "/" and isinstance(expr.right, ast.NumLiteral):
+        divisor = _magnitude(expr.right, scope)
+        return _magnitude(expr.left, scope) / divisor if 0 < divisor < math.inf else math.inf
+    if isinstance(expr, ast.NameRef):
+        symbol = scope.lookup(expr.name.key)
+        if symbol is not None and symbol.kind == CONSTANT and type(symbol.value) is float:
+            return abs(symbol.value)
+    if isinstance(expr, (ast.NameRef, ast.Component, ast.Index)):
+        found = _data_type(expr, scope)
+        kind = getattr(found, "signal_kind", None) or getattr(found, "key", "")
+        return {"GI": GROUP_MAX, "AI": NUM_MAX, "NUM": NUM_MAX}.get(kind, math.inf)
+    if isinstance(expr, ast.FunctionCall) and scope.lookup(expr.name.key) is None:
+        if expr.name.key in ("GINPUT", "AINPUT"):
+            return GROUP_MAX if expr.name.key == "GINPUT" else NUM_MAX
+        entry = lookup_function(expr.name.key)
+        reading = getattr(getattr(entry, "factory", None), "reading", None)
+        if type(reading) is float:
+            return abs(reading)
+    return math.inf
+
+
+def _data_type(expr, scope):
+    """The type of the data ``expr`` names (``pos.trans.z``: num), or None."""
+    if isinstance(expr, ast.NameRef):
+        symbol = scope.lookup(expr.name.key)
+        return getattr(symbol, "type", None) if symbol is not None and \
+            symbol.kind in (GLOBAL_DATA, LOCAL_DATA, CONSTANT, SIGNAL) else None
+    if isinstance(expr, ast.Index):
+        found = _data_type(expr.base, scope)
+        return found.element if isinstance(found, ArrayType) and \
+            len(expr.indices) == found.rank else None
+    if isinstance(expr, ast.Component):
+        found = _data_type(expr.base, scope)
+        components = getattr(found, "components", ())
+        return next((c.type for c in components if c.key == expr.name.key), None)
+    return None
 
 
 def _components(node, parents: list) -> tuple:

@@ -544,11 +544,13 @@ class ExpressionCompiler:
         if expr.op == "+":
             return operand
         fn = operand.fn
+        # ``- x + 0.0``: negation never makes -0.0 (values.py: no value holds it)
         if rapid_type is POS:
-            return self._fold(lambda m: tuple(-c for c in fn(m)), POS, operand)
+            return self._fold(lambda m: tuple(-c + 0.0 for c in fn(m)), POS, operand)
         if operand.is_constant:
-            return constant(-operand.constant, rapid_type)
-        return with_source(Compiled(lambda m: -fn(m), rapid_type), "(-{0})", operand)
+            return constant(-operand.constant + 0.0, rapid_type)
+        return with_source(Compiled(lambda m: -fn(m) + 0.0, rapid_type), "(-{0} + 0.0)",
+                           operand)
 
     # ----------------------------------------------------------------- binary
     def _Binary(self, expr: ast.Binary, expected) -> Compiled:

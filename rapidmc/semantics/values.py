@@ -1,7 +1,9 @@
 """RAPID values in Python: num/dnum arithmetic and the controller's text formats.
 
 ``num`` is a Python float that always holds an IEEE single-precision value
-(``to_num`` rounds), ``dnum`` a Python float (double).  Arithmetic helpers
+(``to_num`` rounds), ``dnum`` a Python float (double).  Neither holds -0.0:
+the conversions and negation turn it into 0.0, so that a value stored in a
+state (where -0.0 and 0.0 are one value) reads back as it was computed.  Arithmetic helpers
 here apply RAPID's rules (ERR_DIVZERO, ERR_NOTINTVAL, ERR_STRTOOLNG,
 ERR_NUM_LIMIT); formatting helpers produce the text of ``ValToStr``,
 ``TPWrite \\Num`` and ``NumToStr``.  Every decision not fixed by ABB's
@@ -54,7 +56,7 @@ def to_num(x: float | int) -> float:
     A result outside the float32 range, or a NaN, raises ERR_NUM_LIMIT.
     """
     if type(x) is float and x.is_integer() and -NUM_EXACT_INTEGER <= x <= NUM_EXACT_INTEGER:
-        return x                    # exact in single precision (-0.0 stays -0.0)
+        return x + 0.0              # exact in single precision; + 0.0 turns -0.0 into 0.0
     if type(x) is int and -NUM_EXACT_INTEGER <= x <= NUM_EXACT_INTEGER:
         return float(x)
     try:
@@ -63,7 +65,7 @@ def to_num(x: float | int) -> float:
         raise RapidError("ERR_NUM_LIMIT", f"{x} is outside the range of num") from None
     if result == _INFINITY or result == -_INFINITY or result != result:
         raise RapidError("ERR_NUM_LIMIT", f"{x} is outside the range of num")
-    return result
+    return result + 0.0
 
 
 def signal_value(kind: str, value: float) -> float:
@@ -85,7 +87,7 @@ def to_dnum(x: float | int) -> float:
         raise RapidError("ERR_NUM_LIMIT", f"{x} is outside the range of dnum") from None
     if result == _INFINITY or result == -_INFINITY or result != result:
         raise RapidError("ERR_NUM_LIMIT", f"{x} is outside the range of dnum")
-    return result
+    return result + 0.0
 
 
 def is_integer(x: float) -> bool:

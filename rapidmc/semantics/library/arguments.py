@@ -61,6 +61,7 @@ def fixed(value) -> Callable:
     def factory(calls, compiler, call, entry) -> Compiled:
         Arguments(calls, compiler, call, entry)
         return constant(value, calls.return_type(entry))
+    factory.reading = value        # input_flow bounds the size of values computed with it
     return factory
 
 

@@ -8,7 +8,9 @@ move time counters give one fixed, typical value (the counters read 0).
 """
 from __future__ import annotations
 
-from .arguments import NAME_ONLY, fixed, no_effect, not_modelled
+from ..errors import RapidError
+from ..instructions import Action
+from .arguments import NAME_ONLY, Arguments, fixed, no_effect, not_modelled
 from .motion import move_robot
 from .registry import FIXED, NO_EFFECT, NOT_MODELLED, ROBOT_STATE, compiled
 
@@ -23,7 +25,6 @@ compiled("GripLoad(PERS loaddata Load)",
          "CornerPathWarning(bool Status)",
          "SpeedLimAxis(mecunit MechUnit, num AxisNo, num AxisSpeed)",
          "SpeedLimCheckPoint(num RobSpeed)",
-         "SpeedRefresh(num Override)",
          "TuneServo(mecunit MecUnit, num Axis, num TuneValue \\tunetype Type)",
          "TuneReset()",
          "DitherAct(\\mecunit MechUnit, num Axis \\num Level)",
@@ -43,6 +44,26 @@ compiled("GripLoad(PERS loaddata Load)",
          "IndReset(mecunit MecUnit, num Axis \\switch RefPos | switch RefNum | switch Short "
              "| switch Fwd | switch Bwd | switch Old)",
          modelled=NO_EFFECT)(no_effect)
+
+# SpeedRefresh's override is a percentage: outside 0-100 the controller raises
+# ERR_SPEED_REFRESH_LIM (the manual's example clips it in an ERROR handler and retries);
+# within, it changes nothing rapidmc observes.  input_domains reads the call as a comparison
+# of the value with 0 and 100 (SPEED_REFRESH_LIMITS).
+SPEED_REFRESH_LIMITS = (0.0, 100.0)
+
+
+@compiled("SpeedRefresh(num Override)")
+def _speed_refresh(calls, compiler, call, entry):
+    override = Arguments(calls, compiler, call, entry).value("Override")
+    low, high = SPEED_REFRESH_LIMITS
+
+    def refresh(m):
+        value = override(m)
+        if not low <= value <= high:
+            raise RapidError("ERR_SPEED_REFRESH_LIM",
+                             f"SpeedRefresh: the override {value:g} is outside 0-100 %")
+    return Action(call.span, refresh)
+
 
 # Electronically linked motors (an option): its standard system module LINKEDM.sys, which
 # backups of controllers with the option hold, offers the service routine Linked_m, calling
