@@ -6,8 +6,9 @@ position left out (the default, which each must take) and with ``--track-robot``
 verdicts of the built-in checks and of the LTL properties must be the same wherever the
 tracked search ends.  The ``kept_*`` cases read the position where it matters (a
 condition, the program's own function, ``GetDataVal``, ``CalcJointT``, a property's atom, a
-PERS): the analysis keeps the robot there, and a test shows that each of their verdicts
-would change if it did not.  A counterexample of a check without the position replays.
+PERS, a product that may leave the range of num): the analysis keeps the robot there, and
+a test shows that each of their verdicts would change if it did not.  A counterexample of a
+check without the position replays.
 """
 from __future__ import annotations
 
