@@ -29,8 +29,8 @@ HEADER = """MODULE Prog
     [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];
   CONST jointtarget jHome := [[0, 0, 0, 0, 30, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];
 
-  PROC Nudge(num dz)
-    MoveL Offs(CRobT(\\Tool:=tool0), 0, 0, dz), v100, fine, tool0;
+  PROC Nudge()
+    MoveL Offs(CRobT(\\Tool:=tool0), 0, 0, 20), v100, fine, tool0;
   ENDPROC
 
   PROC main()
@@ -51,9 +51,9 @@ MOVES = (
     "MoveL Offs(CRobT(), -{d}, 0, 0), v100, z10, tool0;",
     "jpos := CJointT(); jpos.robax.rax_1 := jpos.robax.rax_1 + 90; "
     "MoveAbsJ jpos, v100, fine, tool0;",
-    "pos := CRobT(); pos := Offs(pos, 0, {d}, a * 10); MoveJ pos, v100, z10, tool0;",
-    "Nudge {d};",
-    "Nudge b * 5;",
+    "pos := CRobT(); pos := Offs(pos, 0, {d}, -{d}); MoveJ pos, v100, z10, tool0;",
+    "Nudge;",
+    "IF b = 1 Nudge;",
 )
 # statements on the other data: choices, errors, waits
 DATA = (
