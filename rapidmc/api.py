@@ -62,6 +62,7 @@ from .ltl.syntax import Not
 from .model import reduction
 from .model.fairness import TaskFairness, assumes_fairness, fair_or_plain_search
 from .model.inputs import free_input_domains, observed_inputs
+from .model.robot_tracking import robot_untracked
 from .model.waiting import waits_forever
 from .model.properties import AtomCompiler, Property, check_unique, parse_property, read_property_file
 from .model.rapid_system import RapidDescriber, RapidSystem, end_at_error, replay
@@ -101,6 +102,9 @@ class CheckOptions:
     reductions: reduction.Reductions = reduction.ALL   # sliced data, dead data, merged steps
     storage: Optional[tuple] = None        # None: exact; --compact / --bitstate (never HOLDS)
     fairness: bool = True                  # weak fairness between tasks (several tasks only)
+    # keep the robot's position in every state even where nothing but moves reads it
+    # (model.robot_tracking; False: moves leave the robot where it is then)
+    track_robot: bool = False
     # the property searches walk the state graph the run-time error search explored, when
     # that search was complete (False: each steps the program again; same answers)
     reuse_explored: bool = True
@@ -240,6 +244,7 @@ def _check_config(program: Program, atoms: AtomCompiler, options: CheckOptions,
     config = CheckConfig(program, options.tp_answers, options.fk_answers, domains,
                          observed=observed_inputs(program, atoms))
     config.time_check = time_check       # the running search's time limit, inside a step
+    config.robot_untracked = not options.track_robot and robot_untracked(program, atoms)
     if options.socket_messages:
         config.socket_messages = tuple(options.socket_messages)
     for kind, name in DERIVED_DOMAINS.items():
@@ -482,7 +487,7 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
                 searches.facts.closures_tried |= complete
         if searches.facts.complete and searches.facts.waits_for_other_tasks():
             searches.facts.statements.executed |= _shared_data_probe(model, bound)
-    resting_on = assumptions(model.program)
+    resting_on = assumptions(model.program, model.config.robot_untracked)
     results = [replace(r, assumes=for_verdict(resting_on, r.result, model.describer))
                for r in results]
     return CheckReport(results, _findings(model, results, searches.facts, searches.notes),

@@ -31,6 +31,7 @@ from rapidmc.cli import main
 from fuzz_invoke import assert_acceptable, invoke
 from fuzz_programs import programs
 from reduction_programs import properties, random_program
+import robot_programs
 from test_fuzz import STDIN, domains, formula_texts, fuzz_settings, write
 from test_fuzz import scratch_folder  # noqa: F401  (the folder write() writes in)
 from test_case_studies import CASES, ROOT
@@ -99,6 +100,20 @@ def test_generated_programs_report_the_same_with_both_engines(seed, tmp_path, mo
     argv = ["random.mod", "--ltl", "props.ltl", "--max-states", "20000"]
     document = assert_same_reports(argv, monkeypatch, reuse=seed % 3 != 0)
     assert document["properties"], "the program's properties were checked"
+
+
+@needs_native
+@pytest.mark.parametrize("seed", range(4))
+def test_robot_programs_without_the_position_report_the_same_with_both_engines(
+        seed, tmp_path, monkeypatch):
+    """tests/robot_programs.py: moves that leave the robot where it is (its position is read
+    back only to move again, model.robot_tracking) give both engines the same report."""
+    (tmp_path / "prog.mod").write_text(robot_programs.random_program(seed))
+    monkeypatch.chdir(tmp_path)
+    argv = ["prog.mod", *[word for text in robot_programs.properties(seed)
+                          for word in ("--formula", text)], "--max-states", "3000"]
+    document = assert_same_reports(argv, monkeypatch, reuse=seed % 2 == 0)
+    assert any(entry["assumes"] for entry in document["properties"])
 
 
 @needs_native

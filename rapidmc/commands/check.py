@@ -112,6 +112,10 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
                              "outputs only the controller or a task not loaded sets (default: "
                              "each read takes any value of its domain, as another task, an "
                              "encrypted module or a PC may write it)")
+    parser.add_argument("--track-robot", action="store_true",
+                        help="keep the robot's position in every state (default: where nothing "
+                             "but moves reads it, moves leave the robot where it is, and the "
+                             "verdicts say so under assumes:)")
     parser.add_argument("--no-fairness", action="store_true",
                         help="with several tasks: also search runs in which a task that could "
                              "go on never runs again (default: weak fairness between tasks; "
@@ -166,6 +170,7 @@ def check_options(args: argparse.Namespace) -> api.CheckOptions:
         reductions=reduction.from_arguments(args),
         storage=storage_options.storage_from_arguments(args),
         fairness=not args.no_fairness,
+        track_robot=args.track_robot,
         cluster=cluster_options.cluster_from_arguments(args))
 
 

@@ -21,9 +21,13 @@ loaded module says for sure:
   loaded);
 * **interrupts not modelled**: an instruction ordering one that the check models with
   no effect (ISignalAI, IError, TriggInt ...: ``tried_inputs.unmodelled_interrupt_orders``)
-  never interrupts the program, so its TRAP never runs.
+  never interrupts the program, so its TRAP never runs;
+* **the robot's position left out of states**: where nothing but moves reads it
+  (``model.robot_tracking``), moves leave the robot where it is; the verdicts are
+  those of the tracked robot, but a counterexample shows the robot at its start
+  and positions read back as that (``--track-robot`` keeps it).
 
-``assumptions(program)`` lists them once; ``touched(assumption list, result)``
+``assumptions(program, robot_untracked)`` lists them once; ``touched(assumption list, result)``
 keeps those a counterexample executes a statement of (the names each executed
 statement mentions, merged steps expanded), so that a VIOLATED verdict names
 only what its counterexample rests on and HOLDS names everything.
@@ -43,12 +47,15 @@ from ..model.reduction.merging import executed_spans
 from ..load.shared_data import data_uses, writes_data_by_name
 from ..check.result import VIOLATED
 from ..semantics.expressions import WAIT_CHOICES
+from ..semantics.library.motion import MOVE_ROUTINES
+from ..semantics.library.position import ROBOT_PARTS
 from ..semantics.program import ENVIRONMENT_NAMESPACE, PROGRAM_NAMESPACE, Program
 from .fixed_readings import fixed_readings
 from .tried_inputs import unmodelled_interrupt_orders
 
 STUB, READING, OTHER_WRITER = "stub", "fixed reading", "other writer"
 NO_INTERRUPT = "interrupt not modelled"
+UNTRACKED = "untracked"
 _IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 _STRING_OR_COMMENT = re.compile(r'"(?:[^"]|"")*"|!.*$')
 _HEAD_END = re.compile(r";|\b(?:THEN|DO|CASE|DEFAULT)\b", re.IGNORECASE)
@@ -58,17 +65,25 @@ _HEAD_END = re.compile(r";|\b(?:THEN|DO|CASE|DEFAULT)\b", re.IGNORECASE)
 class Assumption:
     """One thing a verdict may rest on: its kind, the name it is about, and a sentence."""
 
-    kind: str                 # STUB, READING, OTHER_WRITER, NO_INTERRUPT
+    kind: str                 # STUB, READING, OTHER_WRITER, NO_INTERRUPT, UNTRACKED
     name: str
     text: str
+    # upper-case names besides ``name`` whose statements rest on it (a counterexample
+    # that executes one names it)
+    mentions: frozenset = frozenset()
 
     @property
     def key(self) -> str:
         return self.name.upper()
 
+    def touched_by(self, names: frozenset) -> bool:
+        return self.key in names or not self.mentions.isdisjoint(names)
 
-def assumptions(program: Program) -> tuple[Assumption, ...]:
-    """Every assumption the program's verdicts may rest on, in a stable order."""
+
+def assumptions(program: Program, robot_untracked: bool = False) -> tuple[Assumption, ...]:
+    """Every assumption the program's verdicts may rest on, in a stable order;
+    ``robot_untracked``: the check leaves the robot's position out of its states
+    (``CheckConfig.robot_untracked``)."""
     stub_files = _stub_files(program)
     found = list(_stubs(program, stub_files))
     found += [_reading(warning) for warning in fixed_readings(program)]
@@ -82,6 +97,8 @@ def assumptions(program: Program) -> tuple[Assumption, ...]:
                          f"{Path(call.span.file).name}:{call.span.line} never comes: the check "
                          "does not model it, so the TRAP it would run does not run")
               for call in unmodelled_interrupt_orders(program)]
+    if robot_untracked:
+        found.append(UNTRACKED_ROBOT)
     return tuple(found)
 
 
@@ -89,7 +106,7 @@ def touched(all_assumptions: Iterable[Assumption], result: SearchResult,
             describer=None) -> tuple[Assumption, ...]:
     """The assumptions whose name a statement of the counterexample mentions."""
     names = executed_names(result, describer)
-    return tuple(a for a in all_assumptions if a.key in names)
+    return tuple(a for a in all_assumptions if a.touched_by(names))
 
 
 def for_verdict(all_assumptions: tuple[Assumption, ...], result: SearchResult,
@@ -133,6 +150,15 @@ def _statement_names(file: str, first: int, last: int) -> Iterator[str]:
 
 def _identifiers(text: str) -> Iterator[str]:
     return (word.upper() for word in _IDENTIFIER.findall(text))
+
+
+# --- the robot's position -----------------------------------------------------------------
+
+UNTRACKED_ROBOT = Assumption(
+    UNTRACKED, "robot position",
+    "the robot's position is not tracked: nothing but moves reads it, so moves leave the "
+    "robot where it is (a position read back is its start; --track-robot tracks it)",
+    frozenset(MOVE_ROUTINES) | frozenset(ROBOT_PARTS))
 
 
 # --- stubs ----------------------------------------------------------------------------

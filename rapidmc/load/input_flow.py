@@ -194,7 +194,7 @@ class InputFlow:
             return False
         if isinstance(call, ast.FunctionCall) and call.name.key == "OFFS":
             offset = parent is not call.args[0]
-            return (not offset or bound <= OFFSET_MAX) and \
+            return (bound <= OFFSET_MAX if offset else _small_offsets(call, scope)) and \
                 self._shapes_target(call, parents[:-2], scope)
         if not isinstance(call, ast.ProcedureCall) or call.name.key not in MOVE_ROUTINES:
             return False
@@ -216,8 +216,9 @@ class InputFlow:
             return True
         seen.add(place)
         for read in self.reads().get(place, ()):
-            node, parents, bound = _inert_result(*_components(read.node, list(read.parents)),
-                                                 NUM_MAX, read.scope)
+            node, parents, bound = _through_offs(
+                *_inert_result(*_components(read.node, list(read.parents)), NUM_MAX,
+                               read.scope), read.scope)
             parent = parents[-1] if parents else None
             if self._shapes_target(node, parents, read.scope, bound):
                 continue
@@ -246,8 +247,9 @@ class InputFlow:
         if not isinstance(call, ast.FunctionCall) or call.name.key not in ROBOT_PARTS or \
                 routine.scope.lookup(call.name.key) is not None:
             return False
-        node, parents, bound = _inert_result(*_components(call, list(parents)), NUM_MAX,
-                                             routine.scope)
+        node, parents, bound = _through_offs(
+            *_inert_result(*_components(call, list(parents)), NUM_MAX, routine.scope),
+            routine.scope)
         parent = parents[-1] if parents else None
         if self._shapes_target(node, parents, routine.scope, bound):
             return True
@@ -474,6 +476,30 @@ def _inert_result(node, parents: list, bound: float, scope) -> tuple:
         bound = result
         node = parents.pop()
     return node, parents, bound
+
+
+def _through_offs(node, parents: list, bound: float, scope) -> tuple:
+    """The outermost ``Offs`` call that ``node``'s value (at most ``bound`` in size) goes
+    into, as its point shifted by offsets, or as an offset, small enough (``OFFSET_MAX``)
+    to carry no coordinate out of the num range, then through operations ``_inert_result``
+    lets through; ``node`` itself when it is no argument of the predefined ``Offs``.  Offs only
+    shifts the point, so its result is data as inert as its arguments."""
+    while len(parents) >= 2 and isinstance(parents[-1], ast.Argument) and \
+            isinstance(parents[-2], ast.FunctionCall) and parents[-2].name.key == "OFFS" and \
+            scope.lookup("OFFS") is None:
+        call = parents[-2]
+        if not (_small_offsets(call, scope) if parents[-1] is call.args[0]
+                else bound <= OFFSET_MAX):
+            break
+        node, parents, bound = _inert_result(*_components(call, parents[:-2]), NUM_MAX, scope)
+    return node, parents, bound
+
+
+def _small_offsets(call: ast.FunctionCall, scope) -> bool:
+    """Whether each offset of an ``Offs`` call is at most ``OFFSET_MAX`` in size: a point
+    read back and shifted turn by turn by a bigger one may leave the range of num
+    (ERR_NUM_LIMIT), where the robot left at its start never would."""
+    return all(_magnitude(argument.value, scope) <= OFFSET_MAX for argument in call.args[1:])
 
 
 def _magnitude(expr, scope) -> float:

@@ -128,6 +128,9 @@ class CheckConfig:
         self.axes_probed = False
         # the closure probe's: SocketBind may find its port taken (library.sockets)
         self.socket_setup_failures = False
+        # moves leave the robot where it is: nothing but moves reads its position
+        # (model.robot_tracking decides; semantics.robots.robot_tracked)
+        self.robot_untracked = False
         # (routine, pc) -> visible, for instructions that join the step before them
         # (reduction.merging); empty: one instruction per step
         self.merge_points: dict = {}

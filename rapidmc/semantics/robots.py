@@ -12,6 +12,13 @@ state keeps one robot per task, in task order: ``State.robot`` is then a tuple
 of robots, and a step of task T sees T's robot as its own (``task_robot``) and
 puts it back (``with_task_robot``), so T's moves change T's robot only.  A task
 that moves nothing keeps its robot at home.
+
+A check may leave the robot's position out of its states (``robot_tracked``):
+where the analysis of ``model.robot_tracking`` proves that nothing but moves
+reads it, moves still evaluate their arguments (and raise what those raise)
+but leave the robot where it was, so every position read back is the start
+position and a program that moves relative to where it is
+(``MoveL Offs(CRobT(), 0, 0, 10)``) no longer drifts through endless states.
 """
 from __future__ import annotations
 
@@ -97,6 +104,21 @@ def named_robot_readings(routines) -> Iterator[tuple]:
                 for argument in node.args:
                     if argument.name is not None and argument.name.key in TASK_ARGUMENTS:
                         yield routine, node, argument
+
+
+def robot_tracked(m) -> bool:
+    """Whether a step's moves put the robot where they take it: always when running; when
+    checking, unless the check proved the robot's position unobserved
+    (``CheckConfig.robot_untracked``)."""
+    chooser = m.chooser
+    return not (chooser.check_mode and chooser.config.robot_untracked)
+
+
+def move_robot_to(m, robot: tuple) -> None:
+    """The machine's robot becomes ``robot`` (the moved TCP, tool, work object, joints),
+    unless the check does not track the robot's position (``robot_tracked``)."""
+    if robot_tracked(m):
+        m.robot = robot
 
 
 class NoTaskRobot:

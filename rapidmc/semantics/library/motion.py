@@ -4,6 +4,7 @@ from __future__ import annotations
 from ..errors import RapidError
 from ..instructions import ControlAction, Instruction, enter_routine
 from ..machine import ABSENT
+from ..robots import move_robot_to
 from .arguments import ROBOT_JOINTS, ROBOT_TCP, ROBOT_TOOL, ROBOT_WOBJ, Arguments, no_effect
 from .registry import EXACT, NO_EFFECT, ROBOT_STATE, compiled
 from .signals import dionum, write_signal
@@ -25,13 +26,13 @@ def _move(*texts: str, modelled: str = EXACT):
 
 def arrive(m, point, tool, wobj, joint: bool = False) -> None:
     """The robot is at ``point`` (a robtarget, or a jointtarget when ``joint``) with ``tool``
-    and, when given, ``wobj``."""
+    and, when given, ``wobj`` (when the check tracks it: ``robots.move_robot_to``)."""
     robot = list(m.robot)
     robot[ROBOT_JOINTS if joint else ROBOT_TCP] = point
     robot[ROBOT_TOOL] = tool
     if wobj is not ABSENT:
         robot[ROBOT_WOBJ] = wobj
-    m.robot = tuple(robot)
+    move_robot_to(m, tuple(robot))
 
 
 def move_robot(calls, compiler, call, entry, target_key: str, joint: bool = False,
@@ -110,7 +111,7 @@ def _move_ext_j(calls, compiler, call, entry):
     def move(m, instruction):
         robot = list(m.robot)
         robot[ROBOT_JOINTS] = (robot[ROBOT_JOINTS][0], target(m)[1])
-        m.robot = tuple(robot)
+        move_robot_to(m, tuple(robot))
         m.goto(instruction.next)
     return ControlAction(call.span, move)
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 from ..errors import RapidError
 from ..instructions import ControlAction
 from ..machine import ABSENT
+from ..robots import move_robot_to
 from .arguments import ROBOT_JOINTS, Arguments
 from .environment_model import where
 from .motion import arrive
@@ -94,7 +95,7 @@ def _search_ext_j(calls, compiler, call, entry):
         hit = _hit(m, label, signal)
         robot = list(m.robot)
         robot[ROBOT_JOINTS] = (robot[ROBOT_JOINTS][0], point[1])
-        m.robot = tuple(robot)
+        move_robot_to(m, tuple(robot))
         _miss_or_store(m, call, hit, search_point, point)
         m.goto(instruction.next)
     return ControlAction(call.span, search)
