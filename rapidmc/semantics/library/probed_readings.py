@@ -36,9 +36,10 @@ FAILING = {"CALCJOINTT": "ERR_ROBLIMIT"}
 
 
 def readings_free(m) -> bool:
-    """Whether ``m`` runs in the readings probe (``CheckConfig.free_readings``)."""
+    """Whether ``m`` runs in the readings probe (``CheckConfig.free_readings``).  A
+    property's atom reads a state with no chooser (``CRobT()`` in an atom): never."""
     chooser = m.chooser
-    return chooser.check_mode and getattr(getattr(chooser, "config", None), "free_readings",
+    return chooser is not None and chooser.check_mode and getattr(getattr(chooser, "config", None), "free_readings",
                                           False)
 
 
