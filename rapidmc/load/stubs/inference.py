@@ -395,6 +395,20 @@ class Inference:
                 record.alias_of = known.name
                 self.changed = True
 
+    def _alias_from_assigned(self, target: Optional[TypeInfo], value: Optional[TypeInfo]) -> None:
+        """A missing type whose data is assigned a single atomic value (``VAR toolno t; t :=
+        GInput(gi)``), with no component named and no aggregate seen, is an ALIAS of that
+        value's type, as one declared with such a value is (a tool changer's ``toolno`` of
+        an encrypted module): a record would refuse every use of it as a number."""
+        if target is None or value is None or target.rank or value.rank or \
+                value.key not in ATOMIC:
+            return
+        record = self.missing.get(target.key)
+        if record is not None and record.kind == TYPE and not record.alias_of and \
+                not record.named and record.shape is None:
+            record.alias_of = value.name
+            self.changed = True
+
     def _shape_record(self, record: Missing, aggregate: ast.Aggregate) -> None:
         """The positions of ``record`` from the value ``aggregate``: the first value shapes
         it; a position whose part's type is not known (a missing name) learns it from a
@@ -471,6 +485,7 @@ class Inference:
         while isinstance(root, (ast.Index, ast.Component)):
             root = root.base
         self._unify_invented(target, value)
+        self._alias_from_assigned(target, value)
         self._same_sizes(statement.target, statement.value)
         self.expect(statement.target, value, f"assigned a {value.name}" if value else "assigned")
         self.expression(statement.target)
