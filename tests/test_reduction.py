@@ -377,6 +377,29 @@ def test_liveness_of_a_local_along_the_loop():
     assert dead_at == {5, 6, 9}          # the WHILE test, t := ..., ENDPROC
 
 
+READ_BY_THE_HANDLER = """MODULE M
+  VAR num y := 0;
+  VAR bool failed := FALSE;
+  PROC main()
+    VAR num t := 0;
+    t := 5;
+    WaitTime 1;
+    t := 10 / y;
+  ERROR
+    IF t <> 5 failed := TRUE;
+    TRYNEXT;
+  ENDPROC
+ENDMODULE
+"""
+
+
+@pytest.mark.parametrize("flags", [(), ("--no-merge",), ("--no-dead",), ("--no-reduce",)])
+def test_data_a_handler_reads_stays_live_before_an_assignment_that_raises(tmp_path, flags):
+    # t := 10 / y raises and writes nothing: the handler reads the 5 before it, so t is
+    # live at that assignment (it was taken as dead there: reset to 0, 'failed' was reached)
+    assert states_of(tmp_path, READ_BY_THE_HANDLER, 'P: G "NOT failed"', *flags)[0] == "HOLDS"
+
+
 BUSY_LOOP = """MODULE M
   VAR num x := 0;
   VAR bool toggle := FALSE;

@@ -5,8 +5,10 @@ A backward live-data analysis over each routine's compiled instructions:
 An instruction *uses* the data its expressions read (found through the
 statement its span names) and *defines* the target of a plain assignment
 ``x := e``.  Every instruction of a body may also continue in the
-routine's ERROR and UNDO handlers; RETRY, TRYNEXT and instructions the
-analysis does not recognise may continue anywhere and use everything.
+routine's ERROR and UNDO handlers, having written nothing when it raised
+(what a handler reads is live before ``x := e`` too); RETRY, TRYNEXT and
+instructions the analysis does not recognise may continue anywhere and use
+everything.
 
 * Routine data (VAR data declared in the routine) not live at a frame's
   program counter is reset in the stored state: only that routine's
@@ -92,6 +94,7 @@ def _live_in(routine, tracked: set) -> list[set]:
     resolve = Resolver(routine)
     nodes = nodes_by_span(routine.ast)
     uses, defines, successors = [], [], []
+    handlers = [target for target in (routine.handler_pc, routine.undo_pc) if target >= 0]
     for pc, instruction in enumerate(code):
         used, defined = _effects(instruction, nodes.get(instruction.span), resolve, tracked)
         uses.append(used)
@@ -105,7 +108,12 @@ def _live_in(routine, tracked: set) -> list[set]:
             out = set()
             for target in successors[pc]:
                 out |= live[target]
-            new = (out - defines[pc]) | uses[pc]
+            # an instruction that raises writes nothing: what its handlers read is live
+            # before it, whatever it would have written
+            raised = set()
+            for target in handlers:
+                raised |= live[target]
+            new = (out - defines[pc]) | uses[pc] | raised
             if new != live[pc]:
                 live[pc] = new
                 changed = True
@@ -124,9 +132,6 @@ def _successors(routine, pc: int, instruction) -> list[int]:
                 targets.add(target)
         if isinstance(instruction, TestDispatch):
             targets.update(t for _, t in instruction.cases if 0 <= t < size)
-    for handler in (routine.handler_pc, routine.undo_pc):   # an error may go there
-        if handler >= 0:
-            targets.add(handler)
     return sorted(targets)
 
 
