@@ -782,7 +782,8 @@ class Inference:
                 continue
             info = self.type_of(arg.value) if arg.value is not None else None
             if info is None and isinstance(arg.value, ast.Aggregate):
-                info = _text_array(self.type_of(item) for item in arg.value.items)
+                info = _text_array(self.type_of(item) for item in arg.value.items) or \
+                    _target_shaped(arg.value)
             if info is None and isinstance(arg.value, ast.FunctionCall) \
                     and arg.value.name.key in self.missing:
                 self.feeds.setdefault(arg.value.name.key, (missing, key))
@@ -807,6 +808,25 @@ class Inference:
                 # the other calls' arguments have the type one call's argument gave
                 self.expect(arg.value, parameter.type, f"{missing.name.text} argument "
                             f"{parameter.name}" + (", num assumed" if parameter.assumed else ""))
+
+
+# the nested shapes of the motion targets written as literals (parts per component)
+TARGET_SHAPES = {(3, 4, 4, 6): TypeInfo("robtarget"), (6, 6): TypeInfo("jointtarget")}
+
+
+def _target_shaped(aggregate: ast.Aggregate) -> Optional[TypeInfo]:
+    """robtarget or jointtarget for an aggregate of number aggregates shaped like one
+    (``[[x,y,z],[q1..q4],[cf1..cfx],[e1..e6]]``: an add-in's weld instruction given a
+    target literal), else None: a plain number list could be any array."""
+    shape = []
+    for item in aggregate.items:
+        if not isinstance(item, ast.Aggregate) or not all(
+                isinstance(part, ast.NumLiteral) or
+                isinstance(part, ast.Unary) and isinstance(part.operand, ast.NumLiteral)
+                for part in item.items):
+            return None
+        shape.append(len(item.items))
+    return TARGET_SHAPES.get(tuple(shape))
 
 
 def _place_of(missing: Missing) -> tuple:
