@@ -14,7 +14,10 @@ controller would load and start:
   FOLDER``);
 * outside backups, the module files of one folder when one of them declares ``PROC main``;
   a folder where several files declare ``main`` gives a program per such file, with the
-  folder's files that declare none.  A folder of modules without ``main`` is a library:
+  folder's files that declare none; an entry module a program file (``.pgf``) of its folder
+  lists is checked with the modules that file lists, as the controller loads it (a backup's
+  HOME folder keeps several saved programs side by side).  A folder of modules without
+  ``main`` is a library:
   counted apart ("no entry"), never checked.
 
 Programs with the same module texts are counted once.  Each is checked with the default
@@ -56,7 +59,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from rapidmc.load.backup import MODULE_SUFFIXES, backup_tasks, is_backup
+from rapidmc.diagnostics import UserError
 from rapidmc.load.encrypted import is_encrypted
+from rapidmc.load.source import PROGRAM_FILE_SUFFIX, program_file_modules
 
 CONFIG_SUFFIXES = {".cfg", ".txt", ".pgf"}
 ENTRY = re.compile(rb"^\s*(LOCAL\s+)?PROC\s+main\s*\(", re.IGNORECASE | re.MULTILINE)
@@ -151,12 +156,29 @@ def find_programs(corpus: Path) -> tuple[list[Program], list[Program]]:
     for folder, files in folders.items():
         entries = [f for f in files if ENTRY.search(f.read_bytes())]
         others = [f for f in files if f not in entries]
-        groups = [files] if len(entries) <= 1 else [[entry, *others] for entry in entries]
+        listed = _program_files(folder)
+        groups = [files] if len(entries) <= 1 and not listed else \
+            [listed.get(entry) or [entry, *others] for entry in entries]
         for group in groups:
             name = str(folder.relative_to(corpus)) if len(groups) == 1 else \
                 str(group[0].relative_to(corpus))
             programs.append(Program(name, [str(f) for f in group], group))
     return _distinct(programs)
+
+
+def _program_files(folder: Path) -> dict[Path, list[Path]]:
+    """entry module -> the modules a program file (``.pgf``) of ``folder`` lists with it:
+    what the controller loads from that folder (a HOME folder of saved programs holds
+    modules of several programs side by side)."""
+    programs = {}
+    for pgf in sorted(f for f in folder.iterdir() if f.suffix.lower() == PROGRAM_FILE_SUFFIX):
+        try:
+            modules = [Path(m) for m in program_file_modules(str(pgf))]
+        except UserError:                 # lists nothing, or a module not there
+            continue
+        for entry in (m for m in modules if ENTRY.search(m.read_bytes())):
+            programs.setdefault(entry, modules)
+    return programs
 
 
 def earlier_rows(path: Path, outcomes: set[str]) -> tuple[list[Program], list[Program]]:

@@ -395,6 +395,20 @@ class Inference:
                 record.alias_of = known.name
                 self.changed = True
 
+    def _alias_from_assigned(self, target: Optional[TypeInfo], value: Optional[TypeInfo]) -> None:
+        """A missing type whose data is assigned a single atomic value (``VAR toolno t; t :=
+        GInput(gi)``), with no component named and no aggregate seen, is an ALIAS of that
+        value's type, as one declared with such a value is (a tool changer's ``toolno`` of
+        an encrypted module): a record would refuse every use of it as a number."""
+        if target is None or value is None or target.rank or value.rank or \
+                value.key not in ATOMIC:
+            return
+        record = self.missing.get(target.key)
+        if record is not None and record.kind == TYPE and not record.alias_of and \
+                not record.named and record.shape is None:
+            record.alias_of = value.name
+            self.changed = True
+
     def _shape_record(self, record: Missing, aggregate: ast.Aggregate) -> None:
         """The positions of ``record`` from the value ``aggregate``: the first value shapes
         it; a position whose part's type is not known (a missing name) learns it from a
@@ -471,6 +485,7 @@ class Inference:
         while isinstance(root, (ast.Index, ast.Component)):
             root = root.base
         self._unify_invented(target, value)
+        self._alias_from_assigned(target, value)
         self._same_sizes(statement.target, statement.value)
         self.expect(statement.target, value, f"assigned a {value.name}" if value else "assigned")
         self.expression(statement.target)
@@ -767,7 +782,8 @@ class Inference:
                 continue
             info = self.type_of(arg.value) if arg.value is not None else None
             if info is None and isinstance(arg.value, ast.Aggregate):
-                info = _text_array(self.type_of(item) for item in arg.value.items)
+                info = _text_array(self.type_of(item) for item in arg.value.items) or \
+                    _target_shaped(arg.value)
             if info is None and isinstance(arg.value, ast.FunctionCall) \
                     and arg.value.name.key in self.missing:
                 self.feeds.setdefault(arg.value.name.key, (missing, key))
@@ -792,6 +808,25 @@ class Inference:
                 # the other calls' arguments have the type one call's argument gave
                 self.expect(arg.value, parameter.type, f"{missing.name.text} argument "
                             f"{parameter.name}" + (", num assumed" if parameter.assumed else ""))
+
+
+# the nested shapes of the motion targets written as literals (parts per component)
+TARGET_SHAPES = {(3, 4, 4, 6): TypeInfo("robtarget"), (6, 6): TypeInfo("jointtarget")}
+
+
+def _target_shaped(aggregate: ast.Aggregate) -> Optional[TypeInfo]:
+    """robtarget or jointtarget for an aggregate of number aggregates shaped like one
+    (``[[x,y,z],[q1..q4],[cf1..cfx],[e1..e6]]``: an add-in's weld instruction given a
+    target literal), else None: a plain number list could be any array."""
+    shape = []
+    for item in aggregate.items:
+        if not isinstance(item, ast.Aggregate) or not all(
+                isinstance(part, ast.NumLiteral) or
+                isinstance(part, ast.Unary) and isinstance(part.operand, ast.NumLiteral)
+                for part in item.items):
+            return None
+        shape.append(len(item.items))
+    return TARGET_SHAPES.get(tuple(shape))
 
 
 def _place_of(missing: Missing) -> tuple:

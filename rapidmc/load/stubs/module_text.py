@@ -223,7 +223,7 @@ class StubWriter:
 
     def _type(self, item: Missing) -> list[str]:
         if item.alias_of:
-            return ["! declared with a value of that type", f"ALIAS {item.alias_of} {item.name.text};"]
+            return ["! declared or assigned with a value of that type", f"ALIAS {item.alias_of} {item.name.text};"]
         if not item.fields:
             return ["! its components are not known: one num component stands in for them",
                     f"RECORD {item.name.text}", "  num value;", "ENDRECORD"]
