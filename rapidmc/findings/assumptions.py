@@ -231,6 +231,14 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
         written |= task_written
     for data in program.globals:
         chosen = outside.get(data.slot)
+        if chosen is not None and chosen.awaited_at is not None:
+            yield Assumption(OTHER_WRITER, data.name,
+                             f"PERS {data.name}: no write of the loaded code ends the WaitUntil "
+                             f"at {chosen.awaited_at}, so {chosen.also_written_by} writes it "
+                             f"too; in waits and loop conditions it reads the stored value or "
+                             f"{chosen.describe()}{_whole_fixed(program, data)} "
+                             f"({_where(data.span)})")
+            continue
         if chosen is not None and chosen.also_written_by is not None:
             yield Assumption(OTHER_WRITER, data.name,
                              f"PERS {data.name} is written by the loaded code and by "

@@ -58,13 +58,15 @@ from ..semantics.program import ENVIRONMENT_NAMESPACE
 from ..semantics.scope import CONSTANT, GLOBAL_DATA
 from ..semantics.types import ArrayType, RapidType
 from ..semantics.values import format_value, to_dnum
+from .awaited_from_outside import awaited_from_outside
 from .encrypted import from_encrypted_interface
 from .input_domains import analog_points, number_value
 from .shared_data import data_uses, writes_data_by_name
 
 VALUE_KEYS = frozenset({"BOOL", "NUM", "DNUM", "STRING"})
 ORDERINGS = frozenset({"<", "<=", ">", ">="})
-MANY_COMPONENTS = 6           # a record with more is described by its varying components
+MANY_COMPONENTS = 6
+AWAITED_WRITER = "a PC or an HMI"      # assumed where no loaded write ends a wait           # a record with more is described by its varying components
 
 
 @dataclass(frozen=True)
@@ -84,6 +86,9 @@ class OutsideData:
     # a property's formula names it: a read of data only the outside writes keeps the value
     # it took, so the atoms read the value the program last read (``observed_names``)
     observed: bool = False
+    # the WaitUntil (``file:line``) that no write of the loaded code ends, when the other
+    # writer is only assumed from it (``awaited_from_outside``), else None
+    awaited_at: Optional[str] = None
 
     def domain(self, path: tuple) -> Optional[tuple]:
         return self.domains.get(path)
@@ -126,10 +131,12 @@ def outside_data(linker) -> dict:
         written |= task_written
     observed = linker.options.get("observed_names", frozenset())
     writers = linker.options.get("outside_writers") or {}
+    awaited = awaited_from_outside(linker, routines)      # a wait only a client ends
     chosen = {data.slot: data for data in linker.globals
               if data.storage == "PERS" and data.namespace != ENVIRONMENT_NAMESPACE
               and data.slot in read
-              and (data.slot not in written or (data.key in writers and _shared(data)))
+              and (data.slot not in written or (data.key in writers and _shared(data))
+                   or (data.slot in awaited and _shared(data)))
               and data.span is not None
               and not _is_stub(data.span)}
     if not chosen:
@@ -141,9 +148,13 @@ def outside_data(linker) -> dict:
         for path, leaf_type, initial in _leaves(data.type, data.initial):
             domains[path] = _domain(leaf_type, initial, compared.get((slot, path)))
         if domains:
+            # a known writer left out names itself; else a wait only a client ends names one
+            awaited_at = awaited.get(slot) if slot in written and data.key not in writers \
+                else None
+            writer = writers.get(data.key) or (AWAITED_WRITER if awaited_at else None)
             found[slot] = OutsideData(slot, data.name, data.span, domains,
-                                      writers.get(data.key) if slot in written else None,
-                                      data.key in observed)
+                                      writer if slot in written else None,
+                                      data.key in observed, awaited_at)
     return found
 
 

@@ -1,0 +1,136 @@
+"""PERS data a wait awaits a value of that no loaded code ever writes (issue 28).
+
+A command loop that a PC or an HMI drives clears its command and waits for the next
+one::
+
+    nCmdInput := 0;
+    WaitUntil nCmdInput <> 0;
+
+The loaded code writes only 0, so within it the wait can never end: only a client
+outside the controller's programs (a PC through Robot Web Services or the PC SDK, an
+HMI, a task that is not in the backup) ends it.  Reporting that wait as a deadlock is
+a false alarm a cell engineer learns to ignore.  This module names such data as also
+written by an outside client, so that ``outside_data`` chooses its value where a
+wait reads it (as for data a task not loaded writes) and the verdicts say so under
+``assumes:``.
+
+The rule is narrow, so that it never hides a wait the loaded code could end:
+
+* the WaitUntil condition is ``name op constant`` (either side; ``op`` a comparison),
+  ``name`` or ``NOT name``, where ``name`` is a whole PERS data object of type num,
+  dnum, bool or string, shared between tasks (a TASK PERS or a LOCAL one is the task's
+  own: ``outside_data`` leaves it alone);
+* every write of that data object in the loaded code is an assignment of a constant
+  to the whole object (a write through a component, an element, a by-reference
+  argument or of a computed value leaves the data alone: that code might write a
+  value that ends the wait);
+* none of the written constants ends the wait.
+
+The data object's initial value does not count: a PERS's initial value in a backup is
+the value it held when the backup was taken, not a write of the program.
+"""
+from __future__ import annotations
+
+import operator
+from pathlib import Path
+from typing import Callable, Iterable, Optional
+
+from .. import ast
+from ..semantics.scope import GLOBAL_DATA
+from .shared_data import _parameter_modes, _root, walk_routine
+
+VALUE_KEYS = frozenset({"BOOL", "NUM", "DNUM", "STRING"})
+_COMPARE: dict[str, Callable] = {
+    "=": operator.eq, "<>": operator.ne, "<": operator.lt, "<=": operator.le,
+    ">": operator.gt, ">=": operator.ge}
+_MIRRORED = {"=": "=", "<>": "<>", "<": ">", "<=": ">=", ">": "<", ">=": "<="}
+UNKNOWN = object()          # a write whose value the rule cannot know
+
+
+def constant_value(expr) -> object:
+    """The value of a literal (``-`` a number included), else ``UNKNOWN``."""
+    if isinstance(expr, (ast.NumLiteral, ast.StringLiteral, ast.BoolLiteral)):
+        return float(expr.value) if isinstance(expr, ast.NumLiteral) else expr.value
+    if isinstance(expr, ast.Unary) and expr.op == "-" and isinstance(expr.operand,
+                                                                      ast.NumLiteral):
+        return -float(expr.operand.value) + 0.0
+    return UNKNOWN
+
+
+def _awaited(condition) -> Optional[tuple]:
+    """(the NameRef a wait condition tests, the test a value must pass to end it)."""
+    if isinstance(condition, ast.NameRef):
+        return condition, lambda v: v is True
+    if isinstance(condition, ast.Unary) and condition.op == "NOT" \
+            and isinstance(condition.operand, ast.NameRef):
+        return condition.operand, lambda v: v is False
+    if isinstance(condition, ast.Binary) and condition.op in _COMPARE:
+        for side, other, op in ((condition.left, condition.right, condition.op),
+                                (condition.right, condition.left, _MIRRORED[condition.op])):
+            value = constant_value(other)
+            if isinstance(side, ast.NameRef) and value is not UNKNOWN:
+                compare = _COMPARE[op]
+                return side, (lambda v, c=value, f=compare: _safe(f, v, c))
+    return None
+
+
+def _safe(compare: Callable, value, constant) -> bool:
+    try:
+        return bool(compare(value, constant))
+    except TypeError:                   # a value of another type: it does not end the wait
+        return False
+
+
+def awaited_from_outside(program, routines: Iterable) -> dict:
+    """Slot -> the place (``file:line``) of a WaitUntil of ``routines`` that awaits a value
+    of the PERS data object in that slot that no write of the loaded code gives."""
+    routines = [r for r in routines if r.ast is not None]
+    waits: dict = {}                    # slot -> [(test, span)]
+    writes: dict = {}                   # slot -> values written, UNKNOWN among them
+    for routine in routines:
+        lookup = routine.scope.lookup
+        for node in walk_routine(routine.ast):
+            if isinstance(node, ast.ProcedureCall) and node.name.key == "WAITUNTIL" \
+                    and node.args and node.args[0].value is not None:
+                found = _awaited(node.args[0].value)
+                slot = found and _global_slot(lookup, found[0])
+                if slot is not None:
+                    waits.setdefault(slot, []).append((found[1], node.span))
+            elif isinstance(node, (ast.Assignment, ast.Connect)):
+                slot = _global_slot(lookup, _root(node.target))
+                if slot is not None:
+                    whole = isinstance(node, ast.Assignment) \
+                        and isinstance(node.target, ast.NameRef)
+                    writes.setdefault(slot, []).append(
+                        constant_value(node.value) if whole else UNKNOWN)
+            elif isinstance(node, ast.LateBindingCall):
+                for arg in node.args:
+                    slot = _global_slot(lookup, _root(arg.value))
+                    if slot is not None:
+                        writes.setdefault(slot, []).append(UNKNOWN)
+            elif isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
+                for arg, mode in zip(node.args, _parameter_modes(program, lookup, node)):
+                    slot = _global_slot(lookup, _root(arg.value))
+                    if slot is not None and mode != "IN":
+                        writes.setdefault(slot, []).append(UNKNOWN)
+    data = {d.slot: d for d in program.globals}
+    found = {}
+    for slot, tests in sorted(waits.items()):
+        declared = data.get(slot)
+        values = writes.get(slot)
+        if declared is None or declared.storage != "PERS" or not values \
+                or getattr(declared.type, "key", None) not in VALUE_KEYS \
+                or any(v is UNKNOWN for v in values):
+            continue
+        for test, span in tests:
+            if not any(test(v) for v in values):
+                found[slot] = f"{Path(span.file).name}:{span.line}"
+                break
+    return found
+
+
+def _global_slot(lookup, name_ref) -> Optional[int]:
+    if name_ref is None:
+        return None
+    symbol = lookup(name_ref.name.key)
+    return symbol.slot if symbol is not None and symbol.kind == GLOBAL_DATA else None
