@@ -434,7 +434,8 @@ def analog_reached(source: tuple, value) -> tuple:
 
 
 def aio_condition_met(condition: int, high: float, low: float, value) -> bool:
-    """aiotrigg ``condition`` (AIO_ABOVE_HIGH = 1 ... AIO_ALWAYS = 7) at ``value``."""
+    """aiotrigg ``condition`` (AIO_ABOVE_HIGH = 1 ... AIO_ALWAYS = 7) at ``value``; a
+    number outside them counts as AIO_ALWAYS, the condition that orders the most."""
     if condition == 1:
         return value > high
     if condition == 2:
