@@ -7,6 +7,8 @@ import pytest
 
 from rapidmc.semantics.staged_step import analog_reached, aio_condition_met
 
+pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
+
 ABOVE_HIGH, BELOW_HIGH, ABOVE_LOW, BELOW_LOW, BETWEEN, OUTSIDE, ALWAYS = range(1, 8)
 
 
