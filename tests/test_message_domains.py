@@ -604,21 +604,41 @@ def test_a_list_between_brackets_is_also_tried_with_its_last_part_malformed():
 
 
 def test_a_trap_only_an_unmodelled_interrupt_runs_names_the_instruction_ordering_it(tmp_path):
-    """ISignalAI (like IError, TriggInt ...) has no effect in the check: its interrupt never
-    comes there, while a real controller runs the TRAP once the value passes the limit, so
+    """IError (like ISignalGI, TriggInt ...) has no effect in the check: its interrupt never
+    comes there, while a real controller runs the TRAP once such an error is logged, so
     the TRAP is not unreached under any input (review of session 5)."""
     path = tmp_path / "press.mod"
     path.write_text(
-        "MODULE Press\n    VAR signalai ai_press;\n    VAR intnum irq;\n    VAR num hits := 0;\n"
-        "    PROC main()\n        AliasIO \"AI_PRESS\", ai_press;\n"
-        "        CONNECT irq WITH OnHigh;\n"
-        "        ISignalAI ai_press, AIO_ABOVE_HIGH, 5, 0, 0, irq;\n        WaitTime 1;\n"
-        "    ENDPROC\n    TRAP OnHigh\n        hits := hits + 1;\n    ENDTRAP\nENDMODULE\n")
-    report = api.check(api.load_program([str(path)]), (),
-                       api.CheckOptions(input_domains={"AI_PRESS": (0.0, 10.0)}))
+        "MODULE Press\n    VAR intnum irq;\n    VAR num hits := 0;\n"
+        "    PROC main()\n        CONNECT irq WITH OnError;\n"
+        "        IError COMMON_ERR, TYPE_ALL, irq;\n        WaitTime 1;\n"
+        "    ENDPROC\n    TRAP OnError\n        hits := hits + 1;\n    ENDTRAP\nENDMODULE\n")
+    report = api.check(api.load_program([str(path)]), (), api.CheckOptions())
     assert coverage(report) == [
         "never reached with no interrupt coming that the check does not model "
-        "(ISignalAI at line 8) (routine OnHigh never runs)"]
+        "(IError at line 6) (routine OnError never runs)"]
+
+
+PRESS = ("MODULE Press\n    VAR signalai ai_press;\n    VAR intnum irq;\n    VAR num hits := 0;\n"
+         "    PROC main()\n        AliasIO \"AI_PRESS\", ai_press;\n"
+         "        CONNECT irq WITH OnHigh;\n"
+         "        ISignalAI ai_press, AIO_ABOVE_HIGH, {limit}, 0, 0, irq;\n        WaitTime 1;\n"
+         "    ENDPROC\n    TRAP OnHigh\n        hits := hits + 1;\n    ENDTRAP\nENDMODULE\n")
+
+
+@pytest.mark.parametrize("limit, expected", [
+    (5, []),
+    (50, ["never reached under any input (routine OnHigh never runs)"])])
+def test_an_isignalai_trap_is_unreached_only_when_no_value_of_the_domain_meets_it(
+        tmp_path, limit, expected):
+    """ISignalAI is modelled (ABB's aiotrigg rule): over {0, 10} the TRAP of an interrupt
+    above 5 runs, and one above 50 never does, which the coverage warning says without
+    blaming an unmodelled interrupt (review of session 5)."""
+    path = tmp_path / "press.mod"
+    path.write_text(PRESS.format(limit=limit))
+    report = api.check(api.load_program([str(path)]), (),
+                       api.CheckOptions(input_domains={"AI_PRESS": (0.0, 10.0)}))
+    assert coverage(report) == expected
 
 
 AFTER_RETURN = """    FUNC num Parsed()

@@ -128,6 +128,16 @@ def case_arguments(case: Path) -> list[str]:
     return shlex.split(" ".join(lines))
 
 
+def input_domains(argv: list[str]) -> dict:
+    """The ``--input-domain NAME=v1,v2`` options of a case's arguments."""
+    domains = {}
+    for option, value in zip(argv, argv[1:]):
+        if option == "--input-domain":
+            name, values = value.split("=")
+            domains[name] = tuple(float(v) for v in values.split(","))
+    return domains
+
+
 STAGED_CASES = sorted(case for case in CHECK.iterdir()
                       if (case / "prog.mod").is_file() and (case / "props.ltl").is_file() and
                       ("--add-task" in case_arguments(case) or
@@ -145,8 +155,9 @@ def test_check_cases_agree(case):
     tasks = [str(case / argv[i + 1]) for i, arg in enumerate(argv) if arg == "--add-task"]
     program = api.load_program([str(case / "prog.mod")], add_tasks=tasks)
     props = api.read_properties(str(case / "props.ltl"))
+    options = {"input_domains": input_domains(argv)}
     for reductions in (ALL, NONE):
-        staged, answered = compare_staged(program, props, reductions)
+        staged, answered = compare_staged(program, props, reductions, options)
         # a task reading another's robot (tasks_crobt_named_task) steps through the general
         # driver only: a view carries its own task's robot
         assert (staged == 0) if program.reads_task_robots else (staged > 0)

@@ -20,7 +20,7 @@ loaded module says for sure:
   (``load.outside_outputs``: a system output, a cross-connection, a task not
   loaded);
 * **interrupts not modelled**: an instruction ordering one that the check models with
-  no effect (ISignalAI, IError, TriggInt ...: ``tried_inputs.unmodelled_interrupt_orders``)
+  no effect (ISignalGI, IError, TriggInt ...: ``tried_inputs.unmodelled_interrupt_orders``)
   never interrupts the program, so its TRAP never runs;
 * **the robot's position left out of states**: where nothing but moves reads it
   (``model.robot_tracking``), moves leave the robot where it is; the verdicts are

@@ -31,8 +31,8 @@ session failing (EGMRunJoint at line 29)").  Without it, when the program
 has an ERROR handler, each such instruction that ran is named as well ("with no
 peer closing its socket (SocketSend at line 97)"): the handler's code may be
 reached by a closure the check did not try.  An interrupt the check does not model
-(ISignalAI, IError, TriggInt ... have no effect in it) never comes, so a TRAP only it runs
-is "never reached with no interrupt coming that the check does not model (ISignalAI at
+(ISignalGI, IError, TriggInt ... have no effect in it) never comes, so a TRAP only it runs
+is "never reached with no interrupt coming that the check does not model (IError at
 line 12)".
 
 An input counts when its reading instruction ran in the search (an input the
@@ -89,7 +89,7 @@ EGM_UP = "no EGM session failing"              # the kind of those, in a program
 # it on the controller, which the check does not model
 UNWRITTEN = "no other task writing the persistent data"
 # instructions ordering an interrupt the check never delivers (modelled with no effect:
-# ISignalAI/AO/GI/GO, IError, TriggInt ...): a real controller may run its TRAP
+# ISignalGI/GO, IError, TriggInt ...): a real controller may run its TRAP
 NO_INTERRUPT = "no interrupt coming that the check does not model"
 PHRASES = (PEERS_OPEN, PORT_FREE, FIXED, UNSET, UNWRITTEN, EGM_UP,
            NO_INTERRUPT)   # kinds that are phrases of their own
@@ -172,8 +172,8 @@ def unset_output_reads(program: Program) -> list:
 def unmodelled_interrupt_orders(program: Program) -> list:
     """The calls (every task's code) of predefined instructions that order an interrupt
     (an ``intnum`` parameter) and are modelled with no effect: the check never delivers
-    that interrupt, which a real controller does (an analog value above its limit, an
-    error of a domain, a trigger point passed)."""
+    that interrupt, which a real controller does (a group signal changing, an error of a
+    domain, a trigger point passed)."""
     calls = []
     for routine in program.routines:
         if routine.ast is None or routine.namespace == ENVIRONMENT_NAMESPACE:

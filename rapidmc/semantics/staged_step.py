@@ -51,7 +51,7 @@ def is_staged(program, state: State, config: CheckConfig) -> bool:
     if lazy:                             # an edge on an input chosen where read: not here
         for entry in interrupts[0]:
             source = entry[2]
-            if source and source[0] == "signal" and source[1] in lazy:
+            if source and source[0] in ("signal", "analog") and source[1] in lazy:
                 return False
     return True
 
@@ -391,20 +391,64 @@ def _with_edges(after: State, before) -> State:
 def signal_edges_pending(interrupts: Interrupts, before, now) -> Interrupts:
     """``interrupts`` with each active interrupt ordered on a signal whose change from
     ``before`` to ``now`` is its edge (ISignalDI's trigger: 0 falling, 1 rising,
-    2 both) queued, in table order (an interrupt already pending stays once)."""
+    2 both) or meets its analog condition (ISignalAI: ``analog_reached``) queued, in
+    table order (an interrupt already pending stays once)."""
     pending = interrupts[1]
-    for entry in interrupts[0]:
+    table = interrupts[0]
+    for position, entry in enumerate(interrupts[0]):
         source = entry[2]
-        if not entry[3] or not source or source[0] != "signal":
+        if not entry[3] or not source or source[0] not in ("signal", "analog"):
             continue
-        _, index, trigger, _ = source
+        index = source[1]
         old, new = before[index], now[index]
         if old == new:
             continue
-        if trigger == 2 or (trigger == 1 and new == 1) or (trigger == 0 and new == 0):
-            if entry[0] not in pending:
-                pending = pending + (entry[0],)
-    return interrupts if pending is interrupts[1] else interrupts._replace(pending=pending)
+        if source[0] == "analog":
+            reached, source = analog_reached(source, new)
+            if source is not entry[2]:
+                table = table[:position] + (entry._replace(source=source),) + \
+                    table[position + 1:]
+            if not reached:
+                continue
+        elif not (source[2] == 2 or (source[2] == 1 and new == 1) or
+                  (source[2] == 0 and new == 0)):
+            continue
+        if entry[0] not in pending:
+            pending = pending + (entry[0],)
+    if pending is interrupts[1] and table is interrupts[0]:
+        return interrupts
+    return interrupts._replace(table=table, pending=pending)
+
+
+def analog_reached(source: tuple, value) -> tuple:
+    """Whether the analog ``value`` orders the ISignalAI/AO interrupt of ``source``
+    (``("analog", index, condition, high, low, delta, direction, reference, once)``), and
+    the source with its new reference: ABB's rule, the condition holds and the value
+    differs from the reference by more than DeltaValue; the reference then becomes the
+    value, and the direction (1 \\DPos, -1 \\DNeg, 0 either) must match."""
+    _, _, condition, high, low, delta, direction, reference, _ = source
+    if not aio_condition_met(condition, high, low, value) or abs(value - reference) <= delta:
+        return False, source
+    moved = source[:7] + (value,) + source[8:]
+    return direction == 0 or (value - reference) * direction > 0, moved
+
+
+def aio_condition_met(condition: int, high: float, low: float, value) -> bool:
+    """aiotrigg ``condition`` (AIO_ABOVE_HIGH = 1 ... AIO_ALWAYS = 7) at ``value``; a
+    number outside them counts as AIO_ALWAYS, the condition that orders the most."""
+    if condition == 1:
+        return value > high
+    if condition == 2:
+        return value < high
+    if condition == 3:
+        return value > low
+    if condition == 4:
+        return value < low
+    if condition == 5:
+        return low <= value <= high
+    if condition == 6:
+        return value < low or value > high
+    return True
 
 
 def in_trap(program, frames) -> bool:

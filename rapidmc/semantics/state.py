@@ -49,7 +49,8 @@ class Frame(NamedTuple):
 class Interrupt(NamedTuple):
     number: int             # the intnum value handed out by CONNECT
     trap: int               # routine index of the TRAP
-    source: tuple = ()      # () not ordered; ("timer", period, single); ("signal", index, trigger, single)
+    source: tuple = ()      # () not ordered; ("timer", period, single); ("signal", index, trigger, single);
+    # ("analog", index, condition, high, low, delta, direction, reference, single): ISignalAI/AO
     active: bool = True     # False after ISleep
     due: float = 0.0        # next firing time of a timer in run mode
 

@@ -1,4 +1,4 @@
-"""Interrupts: CONNECT, ordering (ISignalDI, ITimer ...), enabling."""
+"""Interrupts: CONNECT, ordering (ISignalDI, ISignalAI, ITimer ...), enabling."""
 from __future__ import annotations
 
 from ... import ast
@@ -52,6 +52,13 @@ def _update_interrupt(m, number: float, change) -> None:
                      "connected")
 
 
+def _single(arguments: Arguments):
+    """Whether an order is for one interrupt only (\\Single or \\SingleSafe), from the machine."""
+    single = arguments.value("Single")
+    single_safe = arguments.value("SingleSafe")
+    return lambda m: single(m) is True or single_safe(m) is True
+
+
 @compiled("ISignalDI(\\switch Single | switch SingleSafe, VAR signaldi Signal, dionum TriggValue, "
               "VAR intnum Interrupt)",
           "ISignalDO(\\switch Single | switch SingleSafe, VAR signaldo Signal, dionum TriggValue, "
@@ -60,13 +67,44 @@ def _isignal(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     signal = arguments.fn("Signal")
     trigger = arguments.value("TriggValue")
-    single = arguments.value("Single")
-    single_safe = arguments.value("SingleSafe")
+    once = _single(arguments)
     interrupt = arguments.value("Interrupt")
 
     def order(m):
-        once = single(m) is True or single_safe(m) is True
-        source = ("signal", signal(m), trigger(m), once)
+        source = ("signal", signal(m), trigger(m), once(m))
+        _update_interrupt(m, interrupt(m), lambda e: e._replace(source=source, active=True))
+    return Action(call.span, order)
+
+
+# ISignalAI/AO (ABB's rule): ordering stores the signal's value as the reference; at each
+# value where the condition (aiotrigg: 1 above HighValue, 2 below HighValue, 3 above LowValue,
+# 4 below LowValue, 5 between the limits, 6 outside them, 7 always) holds and the value
+# differs from the reference by more than DeltaValue, the reference becomes that value and,
+# unless \DPos or \DNeg excludes the direction, the interrupt is ordered
+# (staged_step.signal_edges_pending).  So a DeltaValue of 0 means any change.
+@compiled("ISignalAI(\\switch Single | switch SingleSafe, VAR signalai Signal, aiotrigg Condition, "
+              "num HighValue, num LowValue, num DeltaValue \\switch DPos | switch DNeg, "
+              "VAR intnum Interrupt)",
+          "ISignalAO(\\switch Single | switch SingleSafe, VAR signalao Signal, aiotrigg Condition, "
+              "num HighValue, num LowValue, num DeltaValue \\switch DPos | switch DNeg, "
+              "VAR intnum Interrupt)")
+def _isignal_analog(calls, compiler, call, entry):
+    arguments = Arguments(calls, compiler, call, entry)
+    signal = arguments.fn("Signal")
+    condition = arguments.value("Condition")
+    high = arguments.value("HighValue")
+    low = arguments.value("LowValue")
+    delta = arguments.value("DeltaValue")
+    positive = arguments.value("DPos")
+    negative = arguments.value("DNeg")
+    once = _single(arguments)
+    interrupt = arguments.value("Interrupt")
+
+    def order(m):
+        index = signal(m)
+        direction = 1 if positive(m) is True else -1 if negative(m) is True else 0
+        source = ("analog", index, int(condition(m)), high(m), low(m), delta(m), direction,
+                  m.io[index], once(m))
         _update_interrupt(m, interrupt(m), lambda e: e._replace(source=source, active=True))
     return Action(call.span, order)
 
@@ -75,14 +113,12 @@ def _isignal(calls, compiler, call, entry):
 def _itimer(calls, compiler, call, entry):
     arguments = Arguments(calls, compiler, call, entry)
     seconds = arguments.value("Time")
-    single = arguments.value("Single")
-    single_safe = arguments.value("SingleSafe")
+    once = _single(arguments)
     interrupt = arguments.value("Interrupt")
 
     def order(m):
         period = seconds(m)
-        once = single(m) is True or single_safe(m) is True
-        source = ("timer", period, once)
+        source = ("timer", period, once(m))
         _update_interrupt(m, interrupt(m), lambda e: e._replace(
             source=source, active=True, due=m.clock + period))
     return Action(call.span, order)

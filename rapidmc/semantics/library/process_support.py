@@ -1,11 +1,11 @@
 """Process support that acts while the robot moves: triggers, path correction, the sensor
-interface, independent axes, interrupts on analog and group signals, I/O units.
+interface, independent axes, interrupts on group signals, I/O units.
 
 rapidmc follows no path between targets and no external sensor, so these are
 checked against their signatures and change nothing it observes: trigger
 events and correction offsets never happen, an independent axis is always in
-position, an interrupt on an analog or group signal never occurs (ISignalDI/DO
-interrupts are modelled), I/O units are always running.
+position, an interrupt on a group signal never occurs (ISignalDI/DO and ISignalAI/AO
+interrupts are modelled: interrupts.py), I/O units are always running.
 """
 from __future__ import annotations
 
@@ -14,9 +14,6 @@ from .registry import FIXED, NO_EFFECT, NOT_MODELLED, compiled
 
 _SIGNAL_OUT = "\\VAR signaldo DOp | VAR signalgo GOp | VAR signalao AOp | num ProcID"
 _INDEPENDENT = "mecunit MecUnit, num Axis"
-# The limits are required (ABB's example: `ISignalAI ai1, AIO_BETWEEN, 1.5, 0.5, 0.1, sig1int;`).
-_AIO = ("aiotrigg Condition, num HighValue, num LowValue, num DeltaValue "
-        "\\switch DPos | switch DNeg, VAR intnum Interrupt")
 
 compiled("TriggInt(VAR triggdata TriggData, num Distance \\switch Start | switch Time, "
              "VAR intnum Interrupt)",
@@ -40,8 +37,6 @@ compiled("TriggInt(VAR triggdata TriggData, num Distance \\switch Start | switch
          f"IndDMove({_INDEPENDENT}, num Delta, num Speed \\switch Ramp)",
          f"IndRMove({_INDEPENDENT} \\num ToRelPos | jointtarget ToAbsNum \\switch Short "
              "| switch Fwd | switch Bwd, num Speed \\switch Ramp)",
-         f"ISignalAI(\\switch Single | switch SingleSafe, VAR signalai Signal, {_AIO})",
-         f"ISignalAO(\\switch Single | switch SingleSafe, VAR signalao Signal, {_AIO})",
          "ISignalGI(\\switch Single | switch SingleSafe, VAR signalgi Signal, VAR intnum Interrupt)",
          "ISignalGO(\\switch Single | switch SingleSafe, VAR signalgo Signal, VAR intnum Interrupt)",
          "IOEnable(string UnitName, num MaxTime)",

@@ -1,8 +1,10 @@
 MODULE prog
   ! ISignalAI orders an interrupt when the analog input rises above 5. With the input free
   ! over {0, 10}, a real controller runs OnHigh once the pressure reads 10, so 'hits'
-  ! becomes 1. rapidmc models ISignalAI with no effect: OnHigh never runs, 'quiet' came out
-  ! HOLDS and the TRAP was reported 'never reached under any input' (RMC701).
+  ! becomes 1 ('quiet' is violated). ABB's rule keeps a reference value: the interrupt comes
+  ! when the condition holds and the value differs from the reference (DeltaValue 0), and the
+  ! reference then becomes that value; back at 0 (condition unmet, reference stays 10) and up
+  ! to 10 again is no difference, so OnHigh runs once only ('once' holds).
   VAR signalai ai_press;
   VAR intnum irq;
   VAR num hits := 0;
