@@ -1,4 +1,5 @@
-"""Code after a jump is "never reached under any input" only where no input reaches it.
+"""Code after a jump, or a procedure named by a string, is "never reached under any input"
+only where no input reaches it.
 
 Data-driven on tests/dead_code/ (its README gives the layout): each case's coverage
 warnings (RMC701) are compared, line and message, with its ``expected`` file.  A RETURN
