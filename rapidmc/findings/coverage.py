@@ -24,11 +24,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Hashable, Optional, Sequence
 
+from .. import ast
 from ..ast import Span
 from .dead_code import lines_after_jumps
 from ..diagnostics import NEVER_REACHED, Diagnostic
 from ..model.reduction.merging import executed_spans
 from ..semantics.instructions import Call, EndRoutine, EndUndo, LateCall
+from ..semantics.library.program_control import CALLS_BY_NAME
 from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
 
 NOT_STATEMENTS = (EndRoutine, EndUndo)      # ENDPROC / end of UNDO: not a line to run
@@ -178,7 +180,11 @@ def _idle_service_routines(idle: list[Unreached]) -> Diagnostic:
 
 def service_routines(program: Program) -> list:
     """The procedures without parameters that no routine calls (by name or as a
-    late-bound call's candidate) and that are no task's entry, in program order."""
+    late-bound call's candidate) and that are no task's entry, in program order; none
+    when the program calls a procedure named by a string (CallByVar, MoveLSync ...: any
+    procedure without parameters may be the one)."""
+    if _calls_by_name(program):
+        return []
     called = {program.entry, *program.task_entries}
     for routine in program.routines:
         for instruction in routine.code:
@@ -190,6 +196,12 @@ def service_routines(program: Program) -> list:
     return [routine for routine in _watched_routines(program)
             if routine.kind == "PROC" and not routine.parameters
             and routine.index not in called]
+
+
+def _calls_by_name(program: Program) -> bool:
+    return any(isinstance(node, ast.ProcedureCall) and node.name.key in CALLS_BY_NAME
+               for routine in program.routines if routine.ast is not None
+               for node, _ in ast.walk(routine.ast))
 
 
 def unreached(program: Program, executed: set[tuple[str, int]]) -> list[Unreached]:

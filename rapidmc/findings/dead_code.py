@@ -9,7 +9,9 @@ tried (the second ``RETURN robtarget_string;`` of a MARC-HT25 function).  Covera
 other unreached code rests on the inputs tried.
 
 A RAISE in a routine with its own ERROR handler may come back (TRYNEXT goes on after it),
-and Stop lets the program go on: neither ends the list here.
+and so may a RETURN there whose value can raise an error (``RETURN 10 / d;``: ERR_DIVZERO,
+then TRYNEXT runs the statement after the RETURN); Stop lets the program go on: none of
+them ends the list here.
 """
 from __future__ import annotations
 
@@ -39,11 +41,20 @@ def lines_after_jumps(routine_ast) -> frozenset:
 
 
 def _ends_list(statement, handled: bool) -> bool:
+    if isinstance(statement, ast.Return) and handled:
+        return not _may_raise(statement.value)
     if isinstance(statement, JUMPS):
         return True
     if isinstance(statement, ast.Raise):
         return not handled
     return isinstance(statement, ast.ProcedureCall) and statement.name.key in ENDING_CALLS
+
+
+def _may_raise(value) -> bool:
+    """Whether evaluating a RETURN's value may raise an error: anything but nothing, a
+    literal or a name (an index may be out of range, a call or an operation may fail)."""
+    return value is not None and \
+        not isinstance(value, (ast.NumLiteral, ast.StringLiteral, ast.BoolLiteral, ast.NameRef))
 
 
 def _statement_lists(routine_ast):

@@ -9,6 +9,7 @@ from __future__ import annotations
 from typing import Optional
 
 from .. import ast
+from ..semantics.library.program_control import CALLS_BY_NAME
 from ..semantics.program import Program
 
 
@@ -31,7 +32,7 @@ def called_routines(program: Program) -> Optional[frozenset]:
         seen.add(routine.index)
         for node, _ in ast.walk(routine.ast):
             if isinstance(node, ast.LateBindingCall) or (
-                    isinstance(node, ast.ProcedureCall) and node.name.key == "CALLBYVAR"):
+                    isinstance(node, ast.ProcedureCall) and node.name.key in CALLS_BY_NAME):
                 return None
             if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
                 pending.extend(by_name.get(node.name.key, ()))

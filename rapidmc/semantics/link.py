@@ -290,6 +290,9 @@ class Linker:
         # the names GetTaskName answers: a backup's (T_ROB1 ...), else T_ROB1 for the main task
         self.task_names = (self.options.get("main_task_name") or "T_ROB1",) + tuple(
             task.name for _, task in task_namespaces)
+        # the names the check shows (traces, waits, properties): "main task" unless named
+        self.shown_task_names = (self.options.get("main_task_name") or "main task",) + \
+            self.task_names[1:]
         for routine in self.routines:
             compiler = RoutineCompiler(self, routine, routine.scope)
             self.compiling_namespace = routine.namespace
@@ -308,8 +311,7 @@ class Linker:
         linked.named_signals = (None if self.named_signals is None
                                 else frozenset(self.named_signals))
         linked.task_entries = task_entries
-        linked.task_names = (self.options.get("main_task_name") or "main task",) + \
-            self.task_names[1:]
+        linked.task_names = self.shown_task_names
         linked.motion_tasks = motion_task_numbers(self, self.task_names,
                                                   self.options.get("motion_tasks", ()))
         linked.robot_per_task = len(linked.motion_tasks) > 1

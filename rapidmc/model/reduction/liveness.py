@@ -35,6 +35,7 @@ from ...semantics.instructions import (Action, Branch, Call, ControlAction, EndR
                                       ExitProgram, ForInit, ForNext, Jump, Retry, Return,
                                       TestDispatch, TryNext)
 from ...semantics.program import PROGRAM_NAMESPACE, Program
+from ...semantics.library.program_control import CALLS_BY_NAME, RESTARTS_CYCLE
 from ...semantics.scope import ROUTINE
 from .merging import JUMP_FIELDS, nodes_by_span
 from .relevance import DATA_BY_NAME, Resolver, is_value, routine_data
@@ -98,7 +99,9 @@ def _global_candidates(program: Program, atom_keys: set[str], skip: set) -> list
 
 def _global_reads(program: Program) -> dict[int, Optional[frozenset]]:
     """routine index -> the global keys it or a routine it calls names anywhere (None: any
-    global, as when it calls a routine by a computed name or reaches data by name)."""
+    global, as when it calls a routine by a computed name (``%name%``, CallByVar,
+    MoveLSync), reaches data by name, or ends the cycle (ExitCycle: the entry routine
+    starts again, reading what is live at its start))."""
     names: dict[int, set] = {}
     callees: dict[int, Optional[set]] = {}
     for routine in program.routines:
@@ -108,7 +111,7 @@ def _global_reads(program: Program) -> dict[int, Optional[frozenset]]:
         names[routine.index] = {key for key in resolve.keys(routine.ast) if key[0] == "G"}
         called: Optional[set] = set()
         for call in _calls(routine.ast):
-            if isinstance(call, ast.LateBindingCall) or call.name.key in DATA_BY_NAME:
+            if isinstance(call, ast.LateBindingCall) or call.name.key in _UNKNOWN_READS:
                 called = None
                 break
             symbol = resolve.symbol(call.name)
@@ -129,6 +132,10 @@ def _global_reads(program: Program) -> dict[int, Optional[frozenset]]:
                 todo.append(callee)
         reads[index] = None if keys is None else frozenset(keys)
     return reads
+
+
+# calls after which a routine's call may read any global
+_UNKNOWN_READS = DATA_BY_NAME | CALLS_BY_NAME | RESTARTS_CYCLE
 
 
 def _calls(node) -> Iterator:

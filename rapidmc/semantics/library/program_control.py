@@ -15,6 +15,12 @@ from .registry import compiled
 STOP_CHOICE = "Stop"
 STOPS_PROGRAM = "the program stops"
 TASK_STOPS_FOR_GOOD = "this task stops for good, the others go on"
+# predefined procedures that call a procedure of the program named by a string at run time
+# (CallByVar; MoveJSync, MoveLSync and MoveCSync at the target), and ExitCycle, which goes
+# on at the start of the task's entry routine: after a call of a routine that reaches one,
+# any routine or any statement of the entry routine may run next
+CALLS_BY_NAME = frozenset({"CALLBYVAR", "MOVEJSYNC", "MOVELSYNC", "MOVECSYNC"})
+RESTARTS_CYCLE = frozenset({"EXITCYCLE"})
 
 
 @compiled("Stop(\\switch NoRegain | switch AllMoveTasks)", "Break()")

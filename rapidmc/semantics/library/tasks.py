@@ -318,7 +318,10 @@ def _barrier(calls, compiler, call, entry, what: str, error_name: str, listed: b
             among = partners(_StoreView(store))
         except Exception:              # a task list in routine data: not readable here
             return []
-        return [names[number] for number in missing_from(store, generation, among)]
+        # named as the program's task_names show them (the main task: "main task", not
+        # the T_ROB1 that GetTaskName and task lists use), which callers look up
+        shown = compiler.linker.shown_task_names
+        return [shown[number] for number in missing_from(store, generation, among)]
 
     if own is None:                    # (the linker reports a syncident it cannot find)
         return Action(call.span, lambda m: None)
