@@ -193,7 +193,7 @@ class ReadCollector:
                  robot_observed: bool = True):
         self.program = program
         self.routines = [r for r in program.routines if r.ast is not None]
-        self.flow = InputFlow(self.routines, atom_data, robot_observed)
+        self.flow = InputFlow(self.routines, atom_data, robot_observed, tuple(program.globals))
         self.uses: dict[int, Uses] = {}           # signal index -> what its reads amount to
         self.aliases: dict[str, set] = {}         # signal variable key -> signal indices
         self.computed_alias: Optional[ast.Span] = None

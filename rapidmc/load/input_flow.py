@@ -101,8 +101,10 @@ class InputFlow:
     (``None``: unknown, so no data is followed)."""
 
     def __init__(self, routines, observed_names: Optional[frozenset],
-                 robot_observed: bool = True):
+                 robot_observed: bool = True, module_data: tuple = ()):
         self.routines = routines
+        self.module_data = module_data         # the program's GlobalData, by store slot
+        self._fixed: Optional[dict] = None
         self.observed_names = observed_names
         self.robot_observed = robot_observed     # a property's atom reads a robot
         self._reads: Optional[dict] = None
@@ -158,7 +160,7 @@ class InputFlow:
         again (``robot_unobserved``).  A condition, index, divisor, atom or operation that
         can fail (one that may leave the range of num for some value) is never a sink."""
         node, parents, bound = _inert_result(*_unwrapped(read.node, list(read.parents)),
-                                             bound, read.scope)
+                                             bound, read.scope, self.fixed_data())
         parent = parents[-1] if parents else None
         if self._shapes_target(node, parents, read.scope, bound):
             return self.robot_unobserved() and uses.sunk(TARGETS)
@@ -194,7 +196,8 @@ class InputFlow:
             return False
         if isinstance(call, ast.FunctionCall) and call.name.key == "OFFS":
             offset = parent is not call.args[0]
-            return (bound <= OFFSET_MAX if offset else _small_offsets(call, scope)) and \
+            return (bound <= OFFSET_MAX if offset else
+                    _small_offsets(call, parents, scope, self.fixed_data())) and \
                 self._shapes_target(call, parents[:-2], scope)
         if not isinstance(call, ast.ProcedureCall) or call.name.key not in MOVE_ROUTINES:
             return False
@@ -218,7 +221,7 @@ class InputFlow:
         for read in self.reads().get(place, ()):
             node, parents, bound = _through_offs(
                 *_inert_result(*_components(read.node, list(read.parents)), NUM_MAX,
-                               read.scope), read.scope)
+                               read.scope, self.fixed_data()), read.scope, self.fixed_data())
             parent = parents[-1] if parents else None
             if self._shapes_target(node, parents, read.scope, bound):
                 continue
@@ -248,8 +251,8 @@ class InputFlow:
                 routine.scope.lookup(call.name.key) is not None:
             return False
         node, parents, bound = _through_offs(
-            *_inert_result(*_components(call, list(parents)), NUM_MAX, routine.scope),
-            routine.scope)
+            *_inert_result(*_components(call, list(parents)), NUM_MAX, routine.scope,
+                           self.fixed_data()), routine.scope, self.fixed_data())
         parent = parents[-1] if parents else None
         if self._shapes_target(node, parents, routine.scope, bound):
             return True
@@ -401,6 +404,28 @@ class InputFlow:
                         Read(node, parents, routine.scope, routine))
         return self._reads
 
+    def fixed_data(self) -> dict:
+        """Store slot -> size of the initial value, for each module ``VAR num`` that no
+        routine may write (``_may_write``) and that no routine writes by name
+        (``SetDataVal``): it holds its initial value all along.  Routines of another
+        namespace (an environment) resolve names to data of their own."""
+        if self._fixed is None:
+            self.reads()
+            written = set()
+            for routine in self.routines:
+                for node, parents in ast.walk(routine.ast):
+                    if isinstance(node, ast.NameRef) and \
+                            _may_write(node, parents, routine.scope):
+                        symbol = routine.scope.lookup(node.name.key)
+                        if symbol is not None and symbol.kind == GLOBAL_DATA:
+                            written.add(symbol.slot)
+            self._fixed = {} if self._by_name else {
+                data.slot: abs(float(data.initial)) for data in self.module_data
+                if data.storage == "VAR" and data.slot not in written and
+                getattr(data.type, "key", "") in NUMERIC and
+                type(data.initial) in (int, float)}
+        return self._fixed
+
     def _calls_of(self, routine_index: int) -> list:
         self.reads()
         return self._calls.get(routine_index, [])
@@ -445,7 +470,7 @@ def unevaluated_argument(call: ast.ProcedureCall, argument: ast.Argument, scope)
     return False
 
 
-def _inert_result(node, parents: list, bound: float, scope) -> tuple:
+def _inert_result(node, parents: list, bound: float, scope, fixed: dict) -> tuple:
     """The outermost expression ``node``'s value (at most ``bound`` in size) goes into
     through operations that cannot fail on it, and a bound of that expression's size:
     unary minus, ``+ - *`` and division by a number literal other than 0, each while its
@@ -459,7 +484,7 @@ def _inert_result(node, parents: list, bound: float, scope) -> tuple:
         if not isinstance(parent, ast.Binary) or parent.op not in INERT_OPS + ("/",):
             break
         other = parent.right if parent.left is node else parent.left
-        size = _magnitude(other, scope)
+        size = _magnitude(other, scope, tuple(parents), fixed)
         if parent.op == "/":
             if parent.left is not node or not isinstance(other, ast.NumLiteral) or \
                     not 0 < size < math.inf:
@@ -478,7 +503,7 @@ def _inert_result(node, parents: list, bound: float, scope) -> tuple:
     return node, parents, bound
 
 
-def _through_offs(node, parents: list, bound: float, scope) -> tuple:
+def _through_offs(node, parents: list, bound: float, scope, fixed: dict) -> tuple:
     """The outermost ``Offs`` call that ``node``'s value (at most ``bound`` in size) goes
     into, as its point shifted by offsets, or as an offset, small enough (``OFFSET_MAX``)
     to carry no coordinate out of the num range, then through operations ``_inert_result``
@@ -488,43 +513,61 @@ def _through_offs(node, parents: list, bound: float, scope) -> tuple:
             isinstance(parents[-2], ast.FunctionCall) and parents[-2].name.key == "OFFS" and \
             scope.lookup("OFFS") is None:
         call = parents[-2]
-        if not (_small_offsets(call, scope) if parents[-1] is call.args[0]
+        if not (_small_offsets(call, parents, scope, fixed) if parents[-1] is call.args[0]
                 else bound <= OFFSET_MAX):
             break
-        node, parents, bound = _inert_result(*_components(call, parents[:-2]), NUM_MAX, scope)
+        node, parents, bound = _inert_result(*_components(call, parents[:-2]), NUM_MAX, scope,
+                                             fixed)
     return node, parents, bound
 
 
-def _small_offsets(call: ast.FunctionCall, scope) -> bool:
-    """Whether each offset of an ``Offs`` call is at most ``OFFSET_MAX`` in size: a point
-    read back and shifted turn by turn by a bigger one may leave the range of num
-    (ERR_NUM_LIMIT), where the robot left at its start never would."""
-    return all(_magnitude(argument.value, scope) <= OFFSET_MAX for argument in call.args[1:])
+def _small_offsets(call: ast.FunctionCall, parents, scope, fixed: dict) -> bool:
+    """Whether each offset of an ``Offs`` call (below ``parents``) is at most ``OFFSET_MAX``
+    in size: a point read back and shifted turn by turn by a bigger one may leave the range
+    of num (ERR_NUM_LIMIT), where the robot left at its start never would."""
+    inner = tuple(parents) + (call,)
+    return all(_magnitude(argument.value, scope, inner, fixed) <= OFFSET_MAX
+               for argument in call.args[1:])
 
 
-def _magnitude(expr, scope) -> float:
+def _magnitude(expr, scope, parents: tuple = (), fixed: Optional[dict] = None) -> float:
     """A bound of the size of ``expr``'s value (math.inf: unknown): a number literal or
-    CONST num, an input's reading, a function's fixed reading, any num data, and ``+ - *``,
-    unary minus and division by a number literal of such."""
+    CONST num, an input's reading, a function's fixed reading, a FOR variable
+    (``_loop_size``), routine data nothing writes (``_initial_size``), module data nothing
+    writes (``fixed``: its store slot -> its size, ``InputFlow.fixed_data``), any num data,
+    and ``+ - *``, unary minus and division by a number literal of such.  ``parents``: the
+    ancestors of ``expr`` in its routine, outermost (the routine) first."""
+    fixed = {} if fixed is None else fixed
+    inner = parents + (expr,)
     if isinstance(expr, ast.Unary) and expr.op in ("-", "+"):
-        return _magnitude(expr.operand, scope)
+        return _magnitude(expr.operand, scope, inner, fixed)
     if isinstance(expr, ast.NumLiteral):
         try:
             return abs(to_num(expr.value))
         except Exception:
             return math.inf
     if isinstance(expr, ast.Binary) and expr.op in INERT_OPS:
-        left, right = _magnitude(expr.left, scope), _magnitude(expr.right, scope)
+        left, right = (_magnitude(expr.left, scope, inner, fixed),
+                       _magnitude(expr.right, scope, inner, fixed))
         if expr.op == "*":
             return left * right if left and right else 0.0
         return left + right
     if isinstance(expr, ast.Binary) and expr.op == "/" and isinstance(expr.right, ast.NumLiteral):
-        divisor = _magnitude(expr.right, scope)
-        return _magnitude(expr.left, scope) / divisor if 0 < divisor < math.inf else math.inf
+        divisor = _magnitude(expr.right, scope, inner, fixed)
+        return _magnitude(expr.left, scope, inner, fixed) / divisor \
+            if 0 < divisor < math.inf else math.inf
     if isinstance(expr, ast.NameRef):
+        loop = _enclosing_loop(expr, parents)
+        if loop is not None:
+            return _loop_size(*loop, scope, fixed)
         symbol = scope.lookup(expr.name.key)
         if symbol is not None and symbol.kind == CONSTANT and type(symbol.value) is float:
             return abs(symbol.value)
+        initial = _initial_size(symbol, parents, scope)
+        if initial is not None:
+            return initial
+        if symbol is not None and symbol.kind == GLOBAL_DATA and symbol.slot in fixed:
+            return fixed[symbol.slot]
     if isinstance(expr, (ast.NameRef, ast.Component, ast.Index)):
         found = _data_type(expr, scope)
         kind = getattr(found, "signal_kind", None) or getattr(found, "key", "")
@@ -537,6 +580,79 @@ def _magnitude(expr, scope) -> float:
         if type(reading) is float:
             return abs(reading)
     return math.inf
+
+
+def _enclosing_loop(name: ast.NameRef, parents: tuple) -> Optional[tuple]:
+    """The innermost FOR whose body ``name`` is in and whose variable it names, with the
+    FOR's own ancestors; None when ``name`` is no FOR variable there.  A name in a FOR's
+    FROM, TO or STEP is not its variable."""
+    chain = tuple(parents) + (name,)
+    for position in range(len(chain) - 2, -1, -1):
+        loop = chain[position]
+        if isinstance(loop, ast.For) and loop.variable.key == name.name.key and \
+                any(statement is chain[position + 1] for statement in loop.body):
+            return loop, chain[:position]
+    return None
+
+
+def _loop_size(loop: ast.For, parents: tuple, scope, fixed: dict) -> float:
+    """A bound of a FOR variable's size in its body: FROM, TO and STEP are evaluated once
+    on entry, and the body runs only with the variable between FROM and TO (ForInit,
+    ForNext), so the larger of their sizes; STEP only chooses which values between."""
+    inner = parents + (loop,)
+    return max(_magnitude(loop.start, scope, inner, fixed),
+               _magnitude(loop.stop, scope, inner, fixed))
+
+
+def _initial_size(symbol, parents: tuple, scope) -> Optional[float]:
+    """The size of the initial value of routine data ``symbol`` (a ``VAR num`` of the routine
+    ``parents`` begins with) when nothing in that routine may write it: no assignment to it,
+    no ``CONNECT`` to it, and no argument of it but for an IN parameter of a predefined
+    routine.  Routine data lives in its routine's frame: no other routine names it, and
+    ``SetDataVal`` reaches only global data.  None: unknown."""
+    if symbol is None or symbol.kind != LOCAL_DATA or symbol.storage != "VAR" or \
+            symbol.by_reference or getattr(symbol.type, "key", "") not in NUMERIC or \
+            not parents or not isinstance(parents[0], ast.Routine):
+        return None
+    routine = parents[0]
+    declaration = next((d for d in routine.data if d.name.key == symbol.name.upper()), None)
+    if declaration is None or declaration.dims:
+        return None
+    for node, ancestors in ast.walk(routine):
+        if isinstance(node, ast.NameRef) and node.name.key == declaration.name.key and \
+                _may_write(node, ancestors, scope):
+            return None
+    if declaration.init is None:
+        return 0.0
+    return _magnitude(declaration.init, scope, (routine,))
+
+
+def _may_write(node: ast.NameRef, parents: tuple, scope) -> bool:
+    """Whether ``node`` (or the data it is the base of) may be written where it stands: an
+    assignment's or CONNECT's target, or an argument of anything but an IN parameter of a
+    predefined routine (the program's own routines are not looked into)."""
+    child = node
+    for position in range(len(parents) - 1, -1, -1):
+        parent = parents[position]
+        if isinstance(parent, (ast.Component, ast.Index)) and parent.base is child:
+            child = parent
+            continue
+        if isinstance(parent, (ast.Assignment, ast.Connect)):
+            return parent.target is child
+        if not isinstance(parent, ast.Argument):
+            return False
+        call = parents[position - 1] if position else None
+        if not isinstance(call, (ast.ProcedureCall, ast.FunctionCall)) or \
+                scope.lookup(call.name.key) is not None:
+            return True
+        entry = lookup_procedure(call.name.key) if isinstance(call, ast.ProcedureCall) \
+            else lookup_function(call.name.key)
+        if entry is None:
+            return True
+        return not any(arg is parent and parameter is not None and not parameter.by_reference
+                       for arg, parameter in matched_parameters(call.args,
+                                                                entry.signature.parameters))
+    return False
 
 
 def _data_type(expr, scope):

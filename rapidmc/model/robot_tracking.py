@@ -40,4 +40,5 @@ def robot_untracked(program: Program, atoms: AtomCompiler) -> bool:
         return False                 # no task moves a robot: nothing to leave out
     observed = None if atoms.observed_data is None else frozenset(atoms.observed_data)
     routines = [routine for routine in program.routines if routine.ast is not None]
-    return InputFlow(routines, observed, atoms.observes_robot).robot_unobserved()
+    return InputFlow(routines, observed, atoms.observes_robot,
+                     tuple(program.globals)).robot_unobserved()
