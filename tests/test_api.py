@@ -15,9 +15,8 @@ import pytest
 
 from rapidmc import api
 from rapidmc.report.results import property_json
-from rapidmc.cli import main
 from rapidmc.diagnostics import UserError
-from test_check_cases import verdict_cases
+from test_check_cases import run_check, verdict_cases
 
 ROOT = Path(__file__).resolve().parent.parent
 DOC = ROOT / "docs" / "api.md"
@@ -50,11 +49,10 @@ PLAIN_CASES = [case for case in verdict_cases()
 
 
 @pytest.mark.parametrize("case", PLAIN_CASES, ids=lambda case: case.name)
-def test_the_api_reports_what_the_command_reports(case, monkeypatch, capsys):
-    """Same verdicts, traces and warnings through the command line and through the API."""
-    monkeypatch.chdir(case.folder)
-    main(case.argv())
-    document = json.loads(capsys.readouterr().out)
+def test_the_api_reports_what_the_command_reports(case, monkeypatch):
+    """Same verdicts, traces and warnings through the command line (the run other modules
+    share) and through the API."""
+    document = json.loads(run_check(case, monkeypatch)[1])         # (in the case's folder)
     env = ["env.mod"] if (case.folder / "env.mod").exists() else []
     report = api.check(api.load_program(["prog.mod"], env=env), api.read_properties("props.ltl"))
     through_api = [property_json(r, report.describer) for r in report.results]

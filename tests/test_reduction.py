@@ -11,7 +11,6 @@ from __future__ import annotations
 import contextlib
 import io
 import json
-import shlex
 from pathlib import Path
 
 import pytest
@@ -31,11 +30,11 @@ from rapidmc.syntax import parse_text
 
 from fuzz_programs import programs
 from reduction_programs import properties, random_program
-from test_check_cases import _data_lines, verdict_cases
+from test_check_cases import run_check, verdict_cases
 
 ROOT = Path(__file__).resolve().parent.parent
 # the data-driven cases that expect verdicts (not input errors) and have a property file
-CHECK_CASES = [case.folder for case in verdict_cases() if (case.folder / "props.ltl").is_file()]
+CHECK_CASES = [case for case in verdict_cases() if (case.folder / "props.ltl").is_file()]
 UNKNOWN = "UNKNOWN"
 
 
@@ -187,22 +186,15 @@ def test_fuzz_programs_keep_their_verdicts(tmp_path_factory, program, rnd):
     assert_same_verdicts(reduced, check_json(argv + ["--no-reduce"]))
 
 
-@pytest.mark.parametrize("case", CHECK_CASES, ids=lambda path: path.name)
+@pytest.mark.parametrize("case", CHECK_CASES, ids=lambda case: case.name)
 def test_check_cases_keep_their_verdicts(case, monkeypatch):
     # with the case's own options (its bound, further tasks, input and message domains), from
-    # its folder as tests/test_check_cases.py runs it: without its bound, a case whose
-    # unreduced program grows without end searched to the default bound (minutes)
-    monkeypatch.chdir(case)
-    argv = [str(case / "prog.mod"), "--ltl", str(case / "props.ltl")]
-    argv += [word for line in _data_lines(case / "args") for word in shlex.split(line)]
-    for extra in ("env.mod", "env"):
-        if (case / extra).is_file():
-            argv += ["--env", str(case / extra)]
-    try:
-        reduced = check_json(argv)
-    except (SystemExit, json.JSONDecodeError):
-        pytest.skip("an input error, not a verdict")
-    assert_same_verdicts(reduced, check_json(argv + ["--no-reduce"]))
+    # its folder as tests/test_check_cases.py runs it (the reduced side is that very run,
+    # shared): without its bound, a case whose unreduced program grows without end searched
+    # to the default bound (minutes)
+    _, stdout, _ = run_check(case, monkeypatch)
+    reduced = {p["name"]: p["verdict"] for p in json.loads(stdout)["properties"]}
+    assert_same_verdicts(reduced, check_json([*case.argv()[1:], "--no-reduce"]))
 
 
 @pytest.mark.parametrize("program, env, spec", [

@@ -24,7 +24,7 @@ from rapidmc.semantics.state import RUNNING
 
 from reduction_programs import properties, random_program
 from test_check_cases import verdict_cases
-from test_graph_reuse import COUNTERS, case_arguments, model_of, report
+from test_graph_reuse import COUNTERS, case_arguments, default_report, model_of, report
 
 DEAD_CODE = """MODULE Dead
   VAR num x := 0;
@@ -56,7 +56,7 @@ def labelled_report(argv, monkeypatch):
 @pytest.mark.parametrize("case", verdict_cases(), ids=lambda case: case.name)
 def test_check_cases_report_the_same_with_and_without_labels(case, monkeypatch):
     argv = case_arguments(case, monkeypatch)
-    assert report(argv, monkeypatch, True) == labelled_report(argv, monkeypatch)
+    assert default_report(case, monkeypatch) == labelled_report(argv, monkeypatch)
 
 
 @pytest.mark.parametrize("seed", range(12))
