@@ -41,7 +41,10 @@ ENDMODULE
 
 
 def stuck_by_masking(system: RapidSystem, state, targets) -> bool:
-    """``stuck_at`` as it was: every successor's inputs masked and compared."""
+    """``stuck_at`` as it was: every successor's inputs masked and compared (after the
+    barrier rule both keep: a task waiting at a barrier for a task that has ended)."""
+    if state.status == RUNNING and state[10] and system.blocked_at_barrier(state):
+        return True
     return state.status == RUNNING and system._same_but_inputs(state, targets)
 
 

@@ -7,6 +7,5 @@ MODULE Hmi
     nCmdInput := 0;
     nCmdInput := nCmdInput * 2;
     WaitUntil nCmdInput <> 0;
-    nCmdInput := 0;
   ENDPROC
 ENDMODULE
