@@ -96,7 +96,7 @@ def test_generated_programs_agree(tmp_path, seed):
     assert compare_valuations(program, formulas(*properties(seed))) > 0
 
 
-@pytest.mark.parametrize("case", CHECK_CASES, ids=lambda path: path.name)
+@pytest.mark.parametrize("case", CHECK_CASES, ids=lambda case: case.name)
 def test_check_cases_agree(case):
     compare_valuations(*load_check_case(case))
 

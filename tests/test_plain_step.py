@@ -191,10 +191,11 @@ def load_fuzz_program(folder: Path, program):
     return linked, props
 
 
-def load_check_case(case: Path):
-    """The program and properties of a data-driven check case (skipped when it loads only
-    with the options of its ``args`` file, e.g. ``--input-domain``, which this loader
-    does not read)."""
+def load_check_case(case):
+    """The program and properties of a data-driven check case (``test_check_cases.Case``;
+    skipped when it loads only with the options of its ``args`` file, e.g.
+    ``--input-domain``, which this loader does not read)."""
+    case = case.folder
     env = next((str(case / name) for name in ("env.mod", "env") if (case / name).is_file()),
                None)
     try:
@@ -207,7 +208,7 @@ def load_check_case(case: Path):
     return program, props
 
 
-@pytest.mark.parametrize("case", CHECK_CASES, ids=lambda path: path.name)
+@pytest.mark.parametrize("case", CHECK_CASES, ids=lambda case: case.name)
 def test_check_cases_agree(case):
     program, props = load_check_case(case)
     for reductions in (ALL, NONE):
