@@ -1839,17 +1839,25 @@ static PyObject *PackedTable_intern_vectors(PackedTable *self, PyObject *args)
     return result;
 }
 
-/* (context, pc, locals, data values) of the segments ``frame_id`` and ``data_id`` */
-/* the items of a frame segment and a data segment (-1 and IndexError: no such segment) */
-static int segment_items(PackedTable *self, int32_t frame_id, int32_t data_id,
-                         const uint32_t **frame, Py_ssize_t *frame_length,
-                         const uint32_t **data, Py_ssize_t *data_length)
+/* 0 when ``frame_id`` and ``data_id`` name stored segments, else -1 and IndexError */
+static int check_part_ids(PackedTable *self, int32_t frame_id, int32_t data_id)
 {
     if (frame_id < 0 || frame_id >= self->frames.count || data_id < 0 ||
             data_id >= self->data.count) {
         PyErr_SetString(PyExc_IndexError, "no such state part");
         return -1;
     }
+    return 0;
+}
+
+/* (context, pc, locals, data values) of the segments ``frame_id`` and ``data_id`` */
+/* the items of a frame segment and a data segment (-1 and IndexError: no such segment) */
+static int segment_items(PackedTable *self, int32_t frame_id, int32_t data_id,
+                         const uint32_t **frame, Py_ssize_t *frame_length,
+                         const uint32_t **data, Py_ssize_t *data_length)
+{
+    if (check_part_ids(self, frame_id, data_id) < 0)
+        return -1;
     *frame = vt_items(&self->frames, frame_id, frame_length);
     *data = vt_items(&self->data, data_id, data_length);
     return 0;
@@ -1958,11 +1966,8 @@ static PyObject *PackedTable_segments_batch(PackedTable *self, PyObject *args)
     PyObject *frames = NULL, *data = NULL, *lengths = NULL, *result = NULL;
     for (Py_ssize_t i = 0; i < count; i++) {
         int32_t frame_id = (int32_t)(key[i] >> 32), data_id = (int32_t)(key[i] & 0xFFFFFFFFu);
-        if (frame_id < 0 || frame_id >= self->frames.count || data_id < 0 ||
-                data_id >= self->data.count) {
-            PyErr_SetString(PyExc_IndexError, "no such state part");
+        if (check_part_ids(self, frame_id, data_id) < 0)
             goto done;
-        }
         vt_items(&self->frames, frame_id, &length);
         frame_total += length;
         vt_items(&self->data, data_id, &length);
@@ -2072,11 +2077,8 @@ static PyObject *PackedTable_intern_keys(PackedTable *self, PyObject *args)
         goto done;
     for (Py_ssize_t i = 0; i < count; i++) {
         int32_t frame_id = (int32_t)(key[i] >> 32), data_id = (int32_t)(key[i] & 0xFFFFFFFFu);
-        if (frame_id < 0 || frame_id >= self->frames.count || data_id < 0 ||
-                data_id >= self->data.count) {
-            PyErr_SetString(PyExc_IndexError, "no such state part");
+        if (check_part_ids(self, frame_id, data_id) < 0)
             goto done;
-        }
         if (store_item(self, frame_id, data_id, ids, news, i) < 0)
             goto done;
     }
