@@ -8,10 +8,13 @@ tried (the second ``RETURN robtarget_string;`` of a MARC-HT25 function).  Covera
 (``coverage_warnings``) says "under any input" for a stretch of such statements even when
 other unreached code rests on the inputs tried.
 
-A RAISE in a routine with its own ERROR handler may come back (TRYNEXT goes on after it),
-and so may a RETURN there whose value can raise an error (``RETURN 10 / d;``: ERR_DIVZERO,
-then TRYNEXT runs the statement after the RETURN); Stop lets the program go on: none of
-them ends the list here.
+A RAISE in a routine whose ERROR handler holds a TRYNEXT may come back (TRYNEXT goes on
+with the statement after it), and so may a RETURN there whose value can raise an error
+(``RETURN 10 / d;``: ERR_DIVZERO, then TRYNEXT runs the statement after the RETURN).  A
+handler without TRYNEXT never comes back after the statement that raised (RETRY runs it
+again, RAISE passes the error on, the handler's end leaves the routine), and an error
+raised inside the handler itself goes to the caller.  Stop lets the program go on: it does
+not end the list.
 """
 from __future__ import annotations
 
@@ -25,9 +28,8 @@ JUMPS = (ast.Return, ast.Exit, ast.Goto, ast.Retry, ast.TryNext)
 def lines_after_jumps(routine_ast) -> frozenset:
     """(file, line) of every statement of the routine (nested ones included) that follows
     a jump in its statement list with no label in between."""
-    handled = routine_ast.error is not None
     dead: set = set()
-    for statements in _statement_lists(routine_ast):
+    for statements, comes_back in _statement_lists(routine_ast):
         ended = False
         for statement in statements:
             if any(isinstance(node, ast.Label) for node, _ in ast.walk(statement)):
@@ -35,18 +37,29 @@ def lines_after_jumps(routine_ast) -> frozenset:
             elif ended:
                 dead.update((node.span.file, node.span.line) for node, _ in ast.walk(statement)
                             if getattr(node, "span", None) is not None)
-            elif _ends_list(statement, handled):
+            elif leaves_list(statement, comes_back):
                 ended = True
     return frozenset(dead)
 
 
-def _ends_list(statement, handled: bool) -> bool:
-    if isinstance(statement, ast.Return) and handled:
+def errors_come_back(routine_ast) -> bool:
+    """Whether an error raised in the routine's body (not in its handler) may go on with the
+    statement after the one that raised: its ERROR handler holds a TRYNEXT."""
+    handler = routine_ast.error
+    return handler is not None and any(isinstance(node, ast.TryNext)
+                                       for statement in handler.body
+                                       for node, _ in ast.walk(statement))
+
+
+def leaves_list(statement, comes_back: bool) -> bool:
+    """Whether execution never goes on with the statement after this one in its list;
+    ``comes_back``: errors raised here may come back by TRYNEXT (``errors_come_back``)."""
+    if isinstance(statement, ast.Return) and comes_back:
         return not _may_raise(statement.value)
     if isinstance(statement, JUMPS):
         return True
     if isinstance(statement, ast.Raise):
-        return not handled
+        return not comes_back
     return isinstance(statement, ast.ProcedureCall) and statement.name.key in ENDING_CALLS
 
 
@@ -58,15 +71,20 @@ def _may_raise(value) -> bool:
 
 
 def _statement_lists(routine_ast):
-    """Every statement list of the routine: its body, its handlers', and each nested one."""
-    for part in (routine_ast.body, routine_ast.backward, routine_ast.undo,
-                 routine_ast.error.body if routine_ast.error is not None else None):
+    """Every statement list of the routine (its body, its handlers', and each nested one),
+    each with whether an error raised in it may come back by TRYNEXT."""
+    comes_back = errors_come_back(routine_ast)
+    for part, part_comes_back in ((routine_ast.body, comes_back),
+                                  (routine_ast.backward, comes_back),
+                                  (routine_ast.undo, comes_back),
+                                  (routine_ast.error.body if routine_ast.error is not None
+                                   else None, False)):
         if part is None:
             continue
-        yield tuple(part)
+        yield tuple(part), part_comes_back
         for statement in part:
             for node, _ in ast.walk(statement):
                 for name in ("body", "else_body", "default"):
                     inner = getattr(node, name, None)
                     if isinstance(inner, tuple) and not isinstance(node, ast.Routine):
-                        yield inner
+                        yield inner, part_comes_back

@@ -14,6 +14,8 @@ MODULE Unreachable
     Stop;
     n := 5;
     Leave;
+    Skip;
+    n := Ratio(n);
   ENDPROC
 
   PROC Leave()
@@ -23,9 +25,28 @@ MODULE Unreachable
     ELSE
       EXIT;
     ENDIF
-    k := 1;  ! expect: RMC808
+    k := 1;  ! TRYNEXT below goes on after the RAISE, so this runs
   ERROR
     TRYNEXT;
     k := 2;  ! expect: RMC808
   ENDPROC
+
+  PROC Skip()
+    VAR num k := 0;
+    RAISE ERR_DIVZERO;
+    k := 1;  ! expect: RMC808
+  ERROR
+    k := 3;
+    RAISE;
+    k := 4;  ! expect: RMC808
+  ENDPROC
+
+  FUNC num Ratio(num d)
+    RETURN 10 / d;
+    TPWrite "after a division that may raise";
+    RETURN 1;
+    TPWrite "after a plain RETURN";  ! expect: RMC808
+  ERROR
+    TRYNEXT;
+  ENDFUNC
 ENDMODULE
