@@ -20,6 +20,13 @@ property's ``names`` -- and keeps:
   chooses an input, or raises an error (the next step starts an ERROR handler:
   the caller names the handlers' first lines).
 
+A routine call the run came back from, to the statement after the call, is left
+out whole -- its control steps and chosen inputs too -- when no step inside it
+writes what a kept step reads or changes ERRNO or the program's status: its path
+inside decided nothing but its own data (a homing routine's checks of the robot's
+position before a later index error).  A call whose statement runs again after the
+return (a FUNC's value in an expression) is kept as above: its value is read.
+
 What a statement reads is taken from its source text (every identifier of
 every statement a merged step ran), what it writes from the data the step
 changed.  Both are over-approximations (an identifier is taken to name every
@@ -151,16 +158,61 @@ def needed_steps(trace: Trace, names: Iterable[str] = (),
     elif trace.prefix:
         needed.add(trace.prefix[-1].index)
     single = _plain_names(steps)
-    for number in range(len(trace.prefix) - 1, -1, -1):
+    returned = _returned_calls(steps[:len(trace.prefix)], handler_starts)
+    number = len(trace.prefix) - 1
+    while number >= 0:
+        start = returned.get(number)
+        if start is not None and not any(_needed_inside(step, needed, read)
+                                         for step in steps[start:number + 1]):
+            number = start - 1          # the whole call: nothing kept reads what it did
+            continue
         step = steps[number]
-        if step.index in needed or is_control(step, _raises(steps, number, handler_starts)) \
+        number -= 1
+        if step.index in needed or is_control(step, _raises(steps, number + 1, handler_starts)) \
                 or not read.isdisjoint(writes_of(step)):
             needed.add(step.index)
             reads = reads_of(step)
             read -= (_whole_assigned(step) & single) - reads
             read |= reads
-            needed.update(call.index for call in _entering_calls(steps, number))
+            needed.update(call.index for call in _entering_calls(steps, number + 1))
     return frozenset(needed)
+
+
+def _needed_inside(step: TraceStep, needed: set, read: set) -> bool:
+    """Whether a step inside a returned call keeps the call: it is kept already, writes
+    what a kept step reads, or changes ERRNO or the program's status."""
+    return step.index in needed or not read.isdisjoint(writes_of(step)) or \
+        any(change.name in ALWAYS_KEPT or names_errno(change.name) for change in step.changes)
+
+
+def _returned_calls(steps: Sequence[TraceStep], handler_starts: frozenset) -> dict:
+    """Routine calls the run came back from, as {number of the last step inside: number of
+    the first}: the step after the last one is back in the calling routine, at another
+    statement than the call (not an ERROR handler's start, not the call's statement run
+    again for a FUNC's value), before the path's last step.  One task only (the stack of
+    a run with several tasks holds every task's frames)."""
+    if any(frame.task for step in steps for frame in step.stack):
+        return {}
+    found: dict[int, int] = {}
+    last = len(steps) - 1
+    for number in range(1, last):
+        call, first = steps[number], steps[number + 1]
+        depth = len(call.stack)
+        if call.transition is None or first.transition is None or \
+                len(first.stack) != depth + 1 or first.stack[:depth - 1] != call.stack[:-1]:
+            continue
+        end = number + 1
+        while end < last and len(steps[end + 1].stack) > depth:
+            end += 1
+        back = steps[end + 1] if end < last else None
+        if back is None or back.transition is None or len(back.stack) != depth or \
+                back.stack[-1].routine != call.stack[-1].routine or \
+                (back.transition.file, back.transition.line) == \
+                (call.transition.file, call.transition.line) or \
+                (back.transition.file, back.transition.line) in handler_starts:
+            continue
+        found.setdefault(end, number + 1)
+    return found
 
 
 def _raises(steps: Sequence[TraceStep], number: int, handler_starts: frozenset) -> bool:
