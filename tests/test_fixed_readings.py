@@ -293,7 +293,12 @@ def test_only_a_program_that_tells_axes_apart_has_them_connected(tmp_path, monke
     """Connecting the axes doubles a probe's states after each CRobT: only a program that
     compares a value with 9E9 (the value of an axis a robot lacks) gets it, and only there
     does a probe the bound stops leave CJointT and CRobT named."""
+    from rapidmc.findings import tried_inputs
     from rapidmc.findings.tried_inputs import tests_axes
+    # (the reads compared with 100 also rest on the robot's start position, which names
+    # CJointT and CRobT under a phrase of its own: left out here, pinned in
+    # test_a_branch_on_a_position_read_back_names_the_start_position)
+    monkeypatch.setattr(tried_inputs, "start_position_reads", lambda program: [])
     monkeypatch.setattr(api, "PROBE_STATES", 1)
     monkeypatch.setattr(api, "PROBE_GROWTH", 1)
     path = tmp_path / "axes.mod"
@@ -303,3 +308,37 @@ def test_only_a_program_that_tells_axes_apart_has_them_connected(tmp_path, monke
     warnings = [w.message for w in api.check(program).warnings if w.code.code == "RMC701"]
     assert warnings and all(("CJointT at line 7; CRobT at line 11" in m) == named
                             for m in warnings)
+
+
+START = """
+MODULE Start
+    VAR num steps := 0;
+    PROC main()
+        VAR robtarget here;
+        here := CRobT();
+        IF here.trans.z < 500 THEN
+            steps := steps + 1;
+        ELSE
+            steps := steps + 2;
+        ENDIF
+        MoveL Offs(CRobT(), 0, 0, 10), v100, fine, tool0;
+    ENDPROC
+ENDMODULE
+"""
+
+
+def test_a_branch_on_a_position_read_back_names_the_start_position(tmp_path):
+    """The check's robot starts at its home position, a real one wherever it was left: a
+    branch on a position read back is not "never reached under any input", and the
+    verdicts say what they assume.  A read that only shapes a move's target (line 12) is
+    not named."""
+    path = tmp_path / "start.mod"
+    path.write_text(START)
+    report = api.check(api.load_program([str(path)]))
+    warnings = [w.message for w in report.warnings if w.code.code == "RMC701"]
+    assert warnings == ["never reached with the robot starting at the check's home "
+                        "position (CRobT at line 6)"]
+    result = next(r for r in report.results if r.name == "no_runtime_error")
+    assert list(result.assumes) == [
+        "the robot starts at the check's home position (every coordinate 0); CRobT at "
+        "start.mod:6 reads where it is"]

@@ -22,6 +22,9 @@ loaded module says for sure:
 * **interrupts not modelled**: an instruction ordering one that the check models with
   no effect (ISignalGI, IError, TriggInt ...: ``tried_inputs.unmodelled_interrupt_orders``)
   never interrupts the program, so its TRAP never runs;
+* **the robot's start position**: the check's robot starts at its home (every coordinate
+  0), a real one wherever it was left; where the code reads a position back for more than
+  a move's target (``tried_inputs.start_position_reads``), the verdict says so;
 * **the robot's position left out of states**: where nothing but moves reads it
   (``model.robot_tracking``), moves leave the robot where it is; the verdicts are
   those of the tracked robot, but a counterexample shows the robot at its start
@@ -51,7 +54,7 @@ from ..semantics.library.motion import MOVE_ROUTINES
 from ..semantics.library.position import ROBOT_PARTS
 from ..semantics.program import ENVIRONMENT_NAMESPACE, PROGRAM_NAMESPACE, Program
 from .fixed_readings import fixed_readings
-from .tried_inputs import unmodelled_interrupt_orders
+from .tried_inputs import start_position_reads, unmodelled_interrupt_orders
 
 STUB, READING, OTHER_WRITER = "stub", "fixed reading", "other writer"
 NO_INTERRUPT = "interrupt not modelled"
@@ -99,7 +102,24 @@ def assumptions(program: Program, robot_untracked: bool = False) -> tuple[Assump
               for call in unmodelled_interrupt_orders(program)]
     if robot_untracked:
         found.append(UNTRACKED_ROBOT)
+    found += _robot_start(program)
     return tuple(found)
+
+
+def _robot_start(program: Program) -> list[Assumption]:
+    """The robot's start position, where the code reads a position back for more than a
+    move's target (``tried_inputs.start_position_reads``): the check's robot starts at its
+    home, a real one wherever it was left."""
+    reads = start_position_reads(program)
+    if not reads:
+        return []
+    first = reads[0]
+    others = len(reads) - 1
+    more = f" (and {others} more {'read' if others == 1 else 'reads'})" if others else ""
+    return [Assumption(READING, first.name.text,
+                       f"the robot starts at the check's home position (every coordinate 0); "
+                       f"{first.name.text} at {_where(first.span)} reads where it is{more}",
+                       frozenset(call.name.key for call in reads))]
 
 
 def touched(all_assumptions: Iterable[Assumption], result: SearchResult,

@@ -33,7 +33,10 @@ peer closing its socket (SocketSend at line 97)"): the handler's code may be
 reached by a closure the check did not try.  An interrupt the check does not model
 (ISignalGI, IError, TriggInt ... have no effect in it) never comes, so a TRAP only it runs
 is "never reached with no interrupt coming that the check does not model (IError at
-line 12)".
+line 12)".  The check's robot starts at its home position (every coordinate 0), a real one
+wherever it was left: code that branches on a position read back (``IF CRobT().trans.z
+< 500``, not a move relative to it) is "never reached with the robot starting at the
+check's home position (CRobT at line 5)".
 
 An input counts when its reading instruction ran in the search (an input the
 program never reads cannot explain anything), and only for code some call could
@@ -48,6 +51,7 @@ from typing import Iterable, Sequence
 from .. import ast
 from ..semantics.program import ENVIRONMENT_NAMESPACE, PROGRAM_NAMESPACE, Program
 from ..load.call_graph import called_routines  # noqa: F401  (coverage asks it here)
+from ..load.input_flow import InputFlow
 from ..semantics.scope import GLOBAL_DATA
 from ..semantics.library import lookup_procedure
 from ..semantics.library.position import AXES_PROBED
@@ -91,8 +95,11 @@ UNWRITTEN = "no other task writing the persistent data"
 # instructions ordering an interrupt the check never delivers (modelled with no effect:
 # ISignalGI/GO, IError, TriggInt ...): a real controller may run its TRAP
 NO_INTERRUPT = "no interrupt coming that the check does not model"
+# a read of the robot's position that does more than shape a move's target: the check's
+# robot starts at its home position, a real one wherever the last program left it
+START = "the robot starting at the check's home position"
 PHRASES = (PEERS_OPEN, PORT_FREE, FIXED, UNSET, UNWRITTEN, EGM_UP,
-           NO_INTERRUPT)   # kinds that are phrases of their own
+           NO_INTERRUPT, START)   # kinds that are phrases of their own
 
 
 @dataclass(frozen=True)
@@ -139,7 +146,20 @@ def sampled_inputs(program: Program, exact: Iterable[tuple] = (),
               for ref in unwritten_pers_reads(program)]
     found += [TriedInput(NO_INTERRUPT, call.name.text, call.span)
               for call in unmodelled_interrupt_orders(program)]
+    found += [TriedInput(START, call.name.text, call.span)
+              for call in start_position_reads(program)]
     return tuple(sorted(set(found), key=lambda t: (t.span.file, t.span.line, t.span.column)))
+
+
+def start_position_reads(program: Program) -> list:
+    """The calls (every task's code) of CRobT, CPos and CJointT whose value does more than
+    shape moves' targets (``InputFlow.position_reads_kept``): until a move puts the
+    robot somewhere, they read the check's home position, where a real robot may be
+    anywhere."""
+    routines = [routine for routine in program.routines
+                if routine.ast is not None and routine.namespace != ENVIRONMENT_NAMESPACE]
+    return InputFlow(routines, frozenset(), False,
+                     tuple(program.globals)).position_reads_kept()
 
 
 def unset_output_reads(program: Program) -> list:

@@ -47,6 +47,8 @@ from ..semantics.values import to_num
 # CJointT, CTool, CWObj) may, when their value too only shapes moves' targets; CalcJointT
 # (it may fail), CalcRobT and GetSysData never may
 ROBOT_READERS = frozenset(ROBOT_PARTS) | {"CALCJOINTT", "CALCROBT", "GETSYSDATA"}
+# what reads where the robot is (not its tool or work object)
+POSITION_READERS = frozenset({"CROBT", "CPOS", "CJOINTT"})
 MOVE_TARGETS = frozenset({"TOPOINT", "CIRPOINT", "TOJOINTPOS"})
 # data reached by a name computed at run time: a value stored there may be read unseen
 BY_NAME = frozenset({"GETDATAVAL", "SETDATAVAL", "SETALLDATAVAL"})
@@ -245,6 +247,15 @@ class InputFlow:
                                        if isinstance(node, (ast.FunctionCall, ast.ProcedureCall))
                                        and node.name.key in ROBOT_READERS)
         return not self._robot_read
+
+    def position_reads_kept(self) -> list:
+        """The calls of CRobT, CPos and CJointT in the code whose value does more than shape
+        moves' targets (a condition, an index, an argument ...): what the program does there
+        may depend on where the robot is, and so on where it started."""
+        return [node for routine in self.routines for node, parents in ast.walk(routine.ast)
+                if isinstance(node, ast.FunctionCall) and node.name.key in POSITION_READERS
+                and routine.scope.lookup(node.name.key) is None
+                and not self._reader_only_moves(node, parents, routine)]
 
     def _reader_only_moves(self, call, parents: tuple, routine) -> bool:
         if not isinstance(call, ast.FunctionCall) or call.name.key not in ROBOT_PARTS or \
