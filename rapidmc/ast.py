@@ -555,6 +555,18 @@ def names_used(statement) -> list:
     return sorted(found, key=lambda item: (item[0].span.line, item[0].span.column))
 
 
+def statement_lists(statements: tuple) -> Iterator[tuple]:
+    """``statements`` and every statement list nested in them (IF, ELSEIF and ELSE bodies,
+    FOR and WHILE bodies, TEST cases and DEFAULT), in source order."""
+    yield tuple(statements)
+    for statement in statements:
+        for node, _ in walk(statement):
+            for name in ("body", "else_body", "default"):
+                inner = getattr(node, name, None)
+                if isinstance(inner, tuple) and not isinstance(node, Routine):
+                    yield inner
+
+
 def walk(node, parents: tuple = ()) -> Iterator[tuple[object, tuple]]:
     """(node, its ancestors) for every syntax node under ``node`` (itself included), in
     source order; spans and names are leaves, not nodes."""

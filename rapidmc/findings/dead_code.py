@@ -81,10 +81,5 @@ def _statement_lists(routine_ast):
                                    else None, False)):
         if part is None:
             continue
-        yield tuple(part), part_comes_back
-        for statement in part:
-            for node, _ in ast.walk(statement):
-                for name in ("body", "else_body", "default"):
-                    inner = getattr(node, name, None)
-                    if isinstance(inner, tuple) and not isinstance(node, ast.Routine):
-                        yield inner, part_comes_back
+        for statements in ast.statement_lists(part):
+            yield statements, part_comes_back

@@ -15,6 +15,7 @@ from typing import Hashable, Mapping, Optional, Sequence
 
 from pyrsistent import pvector
 
+from .. import ast
 from ..check import TransitionInfo
 from ..check.trace import CallFrame
 from ..check.result import LassoStep, SearchResult
@@ -301,6 +302,11 @@ def _local_types(routine) -> dict:
             if symbol.kind == LOCAL_DATA and symbol.type is not None}
 
 
+# statements a run may leave for the one after them, with steps between that a
+# counterexample may tell in one line (``RapidDescriber.compound_exits``)
+COMPOUNDS = (ast.If, ast.For, ast.While, ast.Test)
+
+
 class RapidDescriber:
     """Printable views of states and transitions, in RAPID terms."""
 
@@ -322,6 +328,7 @@ class RapidDescriber:
         self._stub_data: Optional[frozenset] = None
         self._texts: dict[int, tuple] = {}      # slot -> (value, its text), the latest
         self._slot_types: dict[int, dict] = {}  # routine index -> its frame slots' types
+        self._compound_exits: Optional[dict] = None
 
     def _local_types(self, routine) -> dict:
         types = self._slot_types.get(routine.index)
@@ -381,6 +388,31 @@ class RapidDescriber:
                 if span is not None:
                     starts.add((span.file, span.line))
         return frozenset(starts)
+
+    @property
+    def compound_exits(self) -> Mapping[tuple, tuple]:
+        """{(file, line) of an IF, FOR, WHILE or TEST: (its last line, (file, line) of the
+        statement after it)} for each such statement that another follows in its statement
+        list: a run that goes from the one to the other left it without a jump, so the
+        steps between decided nothing but what they wrote (a counterexample may tell them
+        in one line)."""
+        if self._compound_exits is None:
+            exits = {}
+            for routine in self.program.routines:
+                if routine.ast is None:
+                    continue
+                parts = (routine.ast.body, routine.ast.backward, routine.ast.undo,
+                         routine.ast.error.body if routine.ast.error is not None else None)
+                for statements in (listed for part in parts if part
+                                   for listed in ast.statement_lists(part)):
+                    for statement, after in zip(statements, statements[1:]):
+                        span, next_span = statement.span, after.span
+                        if isinstance(statement, COMPOUNDS) and span.end_line and \
+                                next_span.line > span.end_line:
+                            exits[(span.file, span.line)] = \
+                                (span.end_line, (next_span.file, next_span.line))
+            self._compound_exits = exits
+        return self._compound_exits
 
     def describe_state(self, state: State) -> Mapping[str, str]:
         view: dict[str, str] = {}

@@ -83,8 +83,8 @@ def counterexample_lines(trace: Trace, options: TextOptions = TextOptions()) -> 
     lines = headline_lines(trace, options)
     lines.extend(f"  {line}" for line in options.files.legend())
     lines.append(head)
-    items = _prefix_items(trace, needed_steps(trace, options.names, options.handler_starts),
-                          options)
+    items = _prefix_items(trace, needed_steps(trace, options.names, options.handler_starts,
+                                              options.compound_exits), options)
     hidden = {step.index for item in items if isinstance(item, SlicedAway) for step in item.steps}
     shown = [step for step in [*trace.prefix, *trace.cycle] if step.index not in hidden]
     read = options.names | frozenset().union(*map(reads_of, shown))
@@ -111,6 +111,9 @@ def _prefix_items(trace: Trace, needed: frozenset, options: TextOptions) -> list
     for item in [*folded, None]:
         if isinstance(item, TraceStep) and item.index not in needed:
             run.append(item)
+            continue
+        if isinstance(item, Folded) and not any(step.index in needed for step in item.hidden):
+            run.extend(item.hidden)         # repeats of steps the violation does not need
             continue
         items.extend(run if len(run) < 2 else [SlicedAway(tuple(run), reader)])
         run = []

@@ -160,7 +160,8 @@ def text_options(checked: PropertyResult, describer: TraceDescriber,
     """How ``checked``'s counterexample is written: the names its formula uses are shown."""
     names = with_robot({word.upper() for word in IDENTIFIER.findall(checked.formula)})
     return TextOptions(full, names, frozenset(getattr(describer, "stub_data", ())),
-                       handler_starts=frozenset(getattr(describer, "handler_starts", ())))
+                       handler_starts=frozenset(getattr(describer, "handler_starts", ())),
+                       compound_exits=getattr(describer, "compound_exits", {}))
 
 
 def vacuity_text(trigger: str, inputs: str = "") -> str:

@@ -20,12 +20,15 @@ property's ``names`` -- and keeps:
   chooses an input, or raises an error (the next step starts an ERROR handler:
   the caller names the handlers' first lines).
 
-A routine call the run came back from, to the statement after the call, is left
-out whole -- its control steps and chosen inputs too -- when no step inside it
-writes what a kept step reads or changes ERRNO or the program's status: its path
-inside decided nothing but its own data (a homing routine's checks of the robot's
-position before a later index error).  A call whose statement runs again after the
-return (a FUNC's value in an expression) is kept as above: its value is read.
+A stretch the run left for the statement after it without a jump is left out whole
+-- its control steps and chosen inputs too -- when no step inside it writes what a
+kept step reads or changes ERRNO or the program's status: its path inside decided
+nothing but its own data.  Such stretches are a routine call the run came back from,
+to the statement after the call (a homing routine's checks of the robot's position
+before a later index error), and an IF, FOR, WHILE or TEST the run went on from to the
+statement after it (``compound_exits``: FOR loops filling arrays of positions).  A
+call whose statement runs again after the return (a FUNC's value in an expression) is
+kept as above: its value is read.
 
 What a statement reads is taken from its source text (every identifier of
 every statement a merged step ran), what it writes from the data the step
@@ -36,7 +39,7 @@ read: the slice is sound, not minimal.
 from __future__ import annotations
 
 import re
-from typing import Iterable, Sequence
+from typing import Iterable, Mapping, Optional, Sequence
 
 from ..check.trace import INITIAL, TRANSITION, Trace, TraceStep
 from ..semantics.robots import ROBOT_TCP
@@ -137,7 +140,8 @@ def is_control(step: TraceStep, raised: bool = False) -> bool:
 
 
 def needed_steps(trace: Trace, names: Iterable[str] = (),
-                 handler_starts: frozenset = frozenset()) -> frozenset:
+                 handler_starts: frozenset = frozenset(),
+                 compound_exits: Mapping = {}) -> frozenset:
     """The indexes of the steps the violation depends on (see the module's docstring).
 
     One walk back over the prefix: a kept step adds what it reads and marks the calls
@@ -158,13 +162,16 @@ def needed_steps(trace: Trace, names: Iterable[str] = (),
     elif trace.prefix:
         needed.add(trace.prefix[-1].index)
     single = _plain_names(steps)
-    returned = _returned_calls(steps[:len(trace.prefix)], handler_starts)
+    prefix = steps[:len(trace.prefix)]
+    left = _returned_calls(prefix, handler_starts)
+    for end, start in _left_compounds(prefix, compound_exits).items():
+        left[end] = min(start, left.get(end, start))
     number = len(trace.prefix) - 1
     while number >= 0:
-        start = returned.get(number)
+        start = left.get(number)
         if start is not None and not any(_needed_inside(step, needed, read)
                                          for step in steps[start:number + 1]):
-            number = start - 1          # the whole call: nothing kept reads what it did
+            number = start - 1          # the whole stretch: nothing kept reads what it did
             continue
         step = steps[number]
         number -= 1
@@ -183,6 +190,45 @@ def _needed_inside(step: TraceStep, needed: set, read: set) -> bool:
     what a kept step reads, or changes ERRNO or the program's status."""
     return step.index in needed or not read.isdisjoint(writes_of(step)) or \
         any(change.name in ALWAYS_KEPT or names_errno(change.name) for change in step.changes)
+
+
+def _left_compounds(steps: Sequence[TraceStep], exits: Mapping) -> dict:
+    """IF, FOR, WHILE and TEST statements the run entered and went on from to the statement
+    after them (``exits``: ``RapidDescriber.compound_exits``), as {number of the last step
+    inside: number of the first (the statement's own)}: every step between is the
+    statement's (its lines, in the same routine) or deeper in a call, before the path's
+    last step."""
+    found: dict[int, int] = {}
+    last = len(steps) - 1
+    for number in range(last):
+        step = steps[number]
+        where = _place(step)
+        exit_ = exits.get(where) if where is not None else None
+        if exit_ is None:
+            continue
+        end_line, after = exit_
+        depth, routine = len(step.stack), step.stack[-1].routine if step.stack else None
+
+        def inside(other: TraceStep) -> bool:
+            place = _place(other)
+            return place is not None and (len(other.stack) > depth or (
+                len(other.stack) == depth and other.stack[-1].routine == routine and
+                place[0] == where[0] and where[1] <= place[1] <= end_line))
+        if number > 0 and inside(steps[number - 1]) and len(steps[number - 1].stack) == depth:
+            continue                    # a later round of a loop, not its entry
+        end = number
+        while end < last and inside(steps[end + 1]):
+            end += 1
+        if end < last and len(steps[end + 1].stack) == depth and \
+                _place(steps[end + 1]) == after:
+            found.setdefault(end, number)
+    return found
+
+
+def _place(step: TraceStep) -> Optional[tuple]:
+    transition = step.transition
+    return None if transition is None or not transition.file else \
+        (transition.file, transition.line)
 
 
 def _returned_calls(steps: Sequence[TraceStep], handler_starts: frozenset) -> dict:

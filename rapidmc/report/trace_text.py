@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import os
 import re
-from dataclasses import dataclass
-from typing import Optional, Sequence
+from dataclasses import dataclass, field
+from typing import Mapping, Optional, Sequence
 
 from ..check.trace import TransitionInfo
 
@@ -109,6 +109,9 @@ class TextOptions:
     stub_data: frozenset = frozenset()
     files: FileNames = FileNames()        # how files are named
     handler_starts: frozenset = frozenset()   # (file, line) of each ERROR handler's start
+    # (file, line) of an IF/FOR/WHILE/TEST -> (its last line, (file, line) of the statement
+    # after it): ``RapidDescriber.compound_exits``
+    compound_exits: Mapping = field(default_factory=dict)
 
 
 # --- names ---------------------------------------------------------------------------

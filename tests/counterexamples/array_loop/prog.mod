@@ -10,6 +10,6 @@ MODULE ArrayLoop
             waypoints{i} := [[932.4 + i, 1557.5, 2189.5], [1, 0, 0, 0], [0, 0, 0, 0],
                              [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];
         ENDFOR
-        waypoints{count + 1}.trans.x := 0;
+        waypoints{count + 1} := waypoints{count};
     ENDPROC
 ENDMODULE

@@ -16,6 +16,6 @@ MODULE LongValues
         IF divisor > 0 THEN
             message := "part 1" + "part 2" + "part 3" + "part 4" + "part 5" + "part 6" + "part 7" + "part 8" + "part 9" + "part 10" + "part 11" + "part 12" + "part 13" + "part 14" + "part 15" + "part 16" + "part 17" + "part 18" + "part 19" + "part 20" + "part 21" + "part 22" + "part 23" + "part 24" + "part 25" + "part 26" + "part 27" + "part 28" + "part 29" + "part 30" + "part 31" + "part 32" + "part 33" + "part 34" + "part 35" + "part 36" + "part 37" + "part 38" + "part 39";
         ENDIF
-        table{1} := table{1} / divisor;
+        table{1} := table{1} / (divisor + StrLen(message) - 72);
     ENDPROC
 ENDMODULE
