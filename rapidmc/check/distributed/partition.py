@@ -338,6 +338,19 @@ class Partition:
     def _targets(self, state) -> list:
         return [successor for _, successor in self.system.successors(state)]
 
+    def lead(self, peers: Sequence, initial: bytes, max_states, per_level: bool) -> None:
+        """Drive the search's rounds from here (``rounds`` module docstring): this is the
+        first partition, ``peers`` the others (actors, or ``_Here`` in one process)."""
+        from .rounds import Levels, local_values, ray_values
+        here = {0} | {index for index, peer in enumerate(peers, 1) if isinstance(peer, _Here)}
+        get = local_values if len(here) == self.count else ray_values
+        self.levels = Levels([_Here(self), *peers], here, get, max_states, per_level)
+        self.levels.begin(initial)
+
+    def rounds(self, seconds: float) -> dict:
+        """The leader's rounds for about ``seconds`` (``rounds.Levels.run``)."""
+        return self.levels.run(seconds)
+
     def step_back(self, state_id: int) -> tuple[Hashable, int]:
         """The state with this id and the link to its parent (``NO_PARENT`` for an initial one)."""
         return self.table[state_id], self.parent[state_id]

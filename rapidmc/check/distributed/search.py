@@ -32,6 +32,7 @@ from ..budget import SearchBudget
 from ..result import HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep, SearchResult, SearchStats
 from ..transition_system import TransitionSystem, transition_label
 from .partition import NO_PARENT, SystemSource, encode_batch, unlink
+from .rounds import AT_LIMIT, FOUND, HOLDS_ALL, SLICE_SECONDS
 from .worker import SAFETY, Worker, call
 
 ENGINE = "distributed"
@@ -113,8 +114,10 @@ def _worker_lost(exc: Exception):
 
 
 class _Rounds:
-    """Drives the partitions' rounds (``partition`` module docstring): each round's batches
-    go from actor to actor, and a level ends once every partition expanded its share."""
+    """Drives the search from the check's process: the first worker runs the rounds
+    (``rounds.Levels``), each round's batches going from actor to actor; this process asks
+    it for a slice of rounds at a time, checks the time limit and reports progress between
+    slices, and rebuilds the counterexample."""
 
     def __init__(self, ray, actors, system, budget: SearchBudget, on_level):
         self.ray, self.actors, self.system = ray, actors, system
@@ -127,31 +130,25 @@ class _Rounds:
         self.target: Optional[tuple[int, int]] = None   # (partition, id) the predicate marked
 
     def run(self) -> tuple:
-        ray, count = self.ray, self.count
+        ray, leader = self.ray, self.actors[0]
         # every partition is sent the initial states and keeps those it owns
         initial = encode_batch((list(self.system.initial_states()), []))
-        stepped = [call(actor, SAFETY, "step", True, [-1], initial, returns=count + 1)
-                   for actor in self.actors]
-        advanced = True
+        ray.get(call(leader, SAFETY, "lead", self.actors[1:], initial, self.budget.max_states,
+                     self.on_level is not None))
         while True:
-            figures = ray.get([refs[count] for refs in stepped])
-            self.stored = [f[0] for f in figures]
-            for index, f in enumerate(figures):
-                if f[2] >= 0:
-                    self.target = index, f[2]
-                    return self._result(VIOLATED, self._path(index, f[2]))
-            self.transitions = sum(f[3] for f in figures)
-            self.deadlocks = sum(f[4] for f in figures)
-            self.watched = self.watched or any(f[6] for f in figures)
-            for index, f in enumerate(figures):
-                if f[5] >= 0:
-                    return self._result(VIOLATED, self._path(index, f[5]))
-            if advanced:
-                if sum(f[1] for f in figures) == 0:
-                    return self._result(HOLDS)
-                self.depth += 1
+            answer = ray.get(call(leader, SAFETY, "rounds", SLICE_SECONDS))
+            self.stored = answer["stored"]
+            self.transitions, self.deadlocks = answer["transitions"], answer["deadlocks"]
+            self.depth = answer["depth"]
+            self.watched = answer["watched"]
+            outcome = answer["outcome"]
+            if outcome == FOUND:
+                self.target = answer["target"]
+                return self._result(VIOLATED, self._path(*self.target))
+            if outcome == HOLDS_ALL:
+                return self._result(HOLDS)
             self._note_balance()
-            if sum(self.stored) > self.budget.max_states:
+            if outcome == AT_LIMIT:
                 self.budget.reason = f"state limit {self.budget.max_states} reached"
             elif not self.budget.checkpoint(sum(self.stored), self.transitions, self.depth):
                 pass                                  # (the time limit: reason is set)
@@ -159,13 +156,6 @@ class _Rounds:
                 return self._result(UNKNOWN)
             if self.on_level is not None:
                 self.on_level(self.actors)
-            # the next level once every partition expanded all of this one
-            advanced = not any(f[7] for f in figures)
-            stepped = [call(actor, SAFETY, "step", advanced,
-                            [sender for sender in range(count) if sender != target],
-                            *[refs[target] for sender, refs in enumerate(stepped)
-                              if sender != target],
-                            returns=count + 1) for target, actor in enumerate(self.actors)]
 
     def _note_balance(self) -> None:
         """The progress line's per-worker balance: each worker's share of the states."""
