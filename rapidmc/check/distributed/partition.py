@@ -33,7 +33,7 @@ from typing import Callable, Hashable, Optional, Sequence
 
 from ..collector import freeze_survivors, frozen_while_searching
 from ..native import engine_of, state_table
-from .codec import codec_for, link, unlink  # noqa: F401  (search's links)
+from .codec import codec_for, data_owners_fit, link, unlink  # noqa: F401  (search's links)
 
 CHUNK = 4096            # successors whose owners are computed together (``codec.send``)
 ROUND = 1 << 13         # states a worker expands in one round at most (module docstring)
@@ -133,8 +133,11 @@ class Partition:
         self._frozen: Optional[contextlib.ExitStack] = None
 
     def start(self, index: int, count: int, source: "SystemSource", predicate: str,
-              deadlock_is_target: bool, watch: Optional[str] = None) -> None:
-        """Begin a search (an actor serves the searches of one check one after another)."""
+              deadlock_is_target: bool, watch: Optional[str] = None,
+              by_data: bool = False) -> None:
+        """Begin a search (an actor serves the searches of one check one after another);
+        ``by_data``: a packed model's states are owned by their data segment
+        (``codec.data_owners_fit``)."""
         self.index, self.count = index, count
         system = source.build()
         self.system = system
@@ -144,7 +147,7 @@ class Partition:
         self.watch = getattr(system, watch) if watch is not None else None
         self.watched = False                   # whether it ever said True
         self.table = state_table(system, packed=True)
-        self.codec = codec_for(self.table, index, count)
+        self.codec = codec_for(self.table, index, count, by_data)
         self.parent = Links(count)
         self.expanded = 0                      # states before this id have been expanded
         self.level_end = 0                     # the current level: ids below this one
@@ -234,6 +237,7 @@ class Partition:
         ``watch`` said True).  Once the predicate marks a state the level is dropped (the
         search ends there, with the figures of the levels before)."""
         table, count, index, codec = self.table, self.count, self.index, self.codec
+        codec.new_round()
         successors_of = getattr(self.system, "successor_states", None)
         if successors_of is None:
             successors_of = self._targets
@@ -391,9 +395,10 @@ def search_here(system, count: int, predicate: str = "failed") -> tuple[list, in
     or None)."""
     from .search import _Rounds
     from ..budget import SearchBudget
+    by_data = data_owners_fit(system, state_table(system, packed=True), count)
     parts = [Partition() for _ in range(count)]
     for index, part in enumerate(parts):
-        part.start(index, count, SystemSource(system), predicate, False)
+        part.start(index, count, SystemSource(system), predicate, False, None, by_data)
     try:
         rounds = _Rounds(_HERE, [_Here(part) for part in parts], system, SearchBudget(None),
                          None)

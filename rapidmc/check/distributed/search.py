@@ -31,6 +31,8 @@ from ...diagnostics import EXIT_WORKER_LOST, WORKER_LOST, error
 from ..budget import SearchBudget
 from ..result import HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep, SearchResult, SearchStats
 from ..transition_system import TransitionSystem, transition_label
+from ..native import state_table
+from .codec import data_owners_fit
 from .partition import NO_PARENT, SystemSource, encode_batch, unlink
 from .rounds import AT_LIMIT, FOUND, HOLDS_ALL, SLICE_SECONDS
 from .worker import SAFETY, Worker, call
@@ -51,12 +53,13 @@ def partitioned_reachable(ray, partitions: int, system: TransitionSystem, predic
     the system itself is pickled to the workers).
     """
     budget = budget if budget is not None else SearchBudget()
+    by_data = data_owners_fit(system, state_table(system, packed=True), partitions)
     actors = actors_of(ray, partitions)
     shared = ray.put(SystemSource(system if rebuild is None else None, rebuild))
     try:
         with worker_failures(ray):
             ray.get([call(actor, SAFETY, "start", index, partitions, shared, predicate,
-                                        deadlock_is_target, watch)
+                          deadlock_is_target, watch, by_data)
                      for index, actor in enumerate(actors)])
             return _Rounds(ray, actors, system, budget, on_level).run()
     except BaseException:
