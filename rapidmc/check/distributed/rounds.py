@@ -45,6 +45,7 @@ class Levels:
         self.advanced = True            # the round asked for began a level
         self.stepped: list = []         # per partition: its batches, then its figures
         self.consumed = True            # the figures of ``stepped`` were read
+        self.fetched: dict = {}         # (sender, local target): the batch, fetched
 
     def begin(self, initial: bytes) -> None:
         """The first round: every partition is sent the initial states (sender -1)."""
@@ -67,11 +68,12 @@ class Levels:
         return stepped
 
     def _next_round(self) -> list:
-        count, previous = self.count, self.stepped
+        count, previous, fetched = self.count, self.stepped, self.fetched
 
         def batches_for(target: int):
             senders = [sender for sender in range(count) if sender != target]
-            return senders, [previous[sender][target] for sender in senders]
+            return senders, [fetched.get((sender, target), previous[sender][target])
+                             for sender in senders]
         return self._submit(self.advanced, batches_for)
 
     def run(self, seconds: float) -> dict:
@@ -84,7 +86,13 @@ class Levels:
             if self.consumed:
                 self.stepped = self._next_round()
                 self.consumed = False
-            figures = self.get([refs[count] for refs in self.stepped])
+            # the figures, and with them the batches other processes sent this one's
+            # partitions (one wait instead of two)
+            pairs = [(sender, target) for target in sorted(self.local)
+                     for sender in range(count) if sender not in self.local]
+            got = self.get([refs[count] for refs in self.stepped] +
+                           [self.stepped[sender][target] for sender, target in pairs])
+            figures, self.fetched = got[:count], dict(zip(pairs, got[count:]))
             self.consumed = True
             self.stored = [f[0] for f in figures]
             for index, f in enumerate(figures):
