@@ -84,34 +84,39 @@ def codec_for(table, index: int, count: int, by_data: bool = False):
 
 
 SAMPLE_STATES = 1000       # states ``data_owners_fit`` looks at (at least)
-SEGMENTS_PER_WORKER = 16   # distinct data segments among them it asks for, per worker
+SEGMENTS_PER_WORKER = 16   # distinct data segments among them it asks for, per worker,
+SEGMENTS_PER_STATE = 0.25  # and per state looked at
 
 
 def data_owners_fit(system, table, count: int) -> bool:
     """Whether the states of a packed model (``table``: a packed table of ``system``) may be
     owned by their data segment alone (``VectorCodec``): a worker then stores only its own
     share of the data segments, and a step that changes no global data stays with its
-    worker, but the balance rests on the number of data segments.  So this looks at the
-    first ``SAMPLE_STATES`` (or ``32 * count``) states in breadth-first order and asks for
-    ``SEGMENTS_PER_WORKER * count`` distinct data segments among them; else the owner is a
-    hash of the whole state.  (The ROS server of bench/tasks.py has 17 among its first
-    1,000 states and 283 in all, 43-57 % a worker by data segment; the counters 392.)  The
-    check's process decides, once, and tells every worker."""
+    worker, but the balance rests on the number of data segments and their sizes.  So this
+    looks at the first ``SAMPLE_STATES`` (or ``32 * count``) states in breadth-first order
+    and asks for ``SEGMENTS_PER_WORKER * count`` distinct data segments among them and one
+    for every four states (most steps change global data: the segments are then many and
+    small); else the owner is a hash of the whole state.  (Among their first 1,000
+    states, the counters have 392 data segments; bench/tasks.py's socket server 189 (1,093
+    in all, which split 44/56 between two workers), two tasks 102, the ROS server 17 (283
+    in all: 43/57 to 57/43 by the hash's seed).)  The check's process decides, once, and
+    tells every worker."""
     vectors_of = getattr(table, "vectors_of", None)
     if vectors_of is None or count < 2:
         return False
     limit, wanted = max(SAMPLE_STATES, 32 * count), SEGMENTS_PER_WORKER * count
     frontier = list(system.initial_states())
     seen, segments = set(frontier), set()
-    for state in frontier:
-        if len(segments) >= wanted or len(seen) > limit:
-            break
+    expanded = 0
+    while expanded < min(len(frontier), limit):     # (the frontier grows meanwhile)
+        state = frontier[expanded]
+        expanded += 1
         segments.add(vectors_of(state)[1])
         for after in system.successor_states(state):
             if after not in seen:
                 seen.add(after)
                 frontier.append(after)
-    return len(segments) >= wanted
+    return len(segments) >= max(wanted, SEGMENTS_PER_STATE * expanded)
 
 
 # odd 64-bit constants of the owner hash (any fixed ones do; these are splitmix64's)
