@@ -15,12 +15,13 @@ of ``step``: ``receive`` stores the states the other partitions sent in the roun
 (and the batch this one kept for itself), and ``expand`` steps at most ``ROUND`` states of
 the current level (asking the predicate of each first: the first one it marks ends the
 search) and sorts their successors into one batch per owner.  A round that ``advance``s
-begins the next level with the states stored since the last one began; the driver asks for
-it once every partition has expanded its whole level, so a state is stored at its depth.
+begins the next level with the states stored since the last one began; the leader
+(``rounds.Levels``, run by the first partition: ``lead``, ``rounds``) asks for it once every
+partition has expanded its whole level, so a state is stored at its depth.
 Rounds bound what a worker holds at once: the successors of ``ROUND`` states and their
 batches, not a whole level's.  The worker's ``codec`` (``codec.py``) decides the owner of a
-state and how states travel: as the packed table's vectors where the model has one, else
-pickled.
+state and how states travel: as the packed table's vectors where the model has one (owned
+by their data segment where ``codec.data_owners_fit``), else as node ids or pickled.
 """
 from __future__ import annotations
 

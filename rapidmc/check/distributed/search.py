@@ -8,16 +8,17 @@ what it was sent in the round before and expands at most ``partition.ROUND`` sta
 current level, sorting their successors by owner (one batch per owner, handed from actor to
 actor through Ray's object store, never through this process; the batch for itself it
 keeps).  A level ends once every partition expanded its share; a level that stores nothing
-new ends a complete search.
+new ends a complete search.  The first partition's worker drives the rounds
+(``rounds.Levels``); this process asks it for a slice of rounds at a time.
 
 A violation is found in the level of its depth, as in the one-process search, so the path is
 as short; it is rebuilt by following parent links from partition to partition, and its
 labels by stepping the model along it here (as ``reachability`` does), so it replays.
 
 A complete search stores exactly the reachable states and counts each transition once: the
-same states, transitions, deadlocks and depth as one process.  The state and time limits
-are checked after each round (a round may store more than the limit before the search
-stops: UNKNOWN either way).
+same states, transitions, deadlocks and depth as one process.  The state limit is checked
+after each round, the time limit after each slice of rounds (a round may store more than
+the limit before the search stops: UNKNOWN either way).
 
 A worker that dies (killed, out of memory, crashed node) ends the search with the
 ``WORKER_LOST`` diagnostic and its exit code: never with a verdict.
