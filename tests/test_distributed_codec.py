@@ -285,6 +285,30 @@ def test_a_sparing_table_keeps_new_data_segments_apart_until_a_state_needs_them(
     assert all(state in set(breadth_first(system, 400)) for state in states)
 
 
+@pytest.mark.parametrize("by_data", [False, True])
+@pytest.mark.parametrize("name", ["socket server", "two tasks"])
+def test_the_compiled_owner_of_a_key_is_the_owner_of_its_vectors(name, by_data):
+    """``key_owners`` (the compiled core's ``owners``, which routes successors by key) names
+    the owner ``_owners_of`` names from the same states' vectors (which decides the initial
+    states', ``owns``), for three workers, by whole state and by data segment."""
+    if not native.available():
+        pytest.skip("the native core is not built here")
+    np = pytest.importorskip("numpy")
+    system = system_of(name)
+    table = packed(system)
+    for state in breadth_first(system, 300):
+        table.intern(state, True)
+    codec = VectorCodec(table, 0, 3, by_data)
+    keys = np.frombuffer(table.expand_keys(0, len(table), False, None)[0], np.uint64)
+    frames, data, lengths = (np.frombuffer(part, np.uint32)
+                             for part in table.segments_batch(keys.tobytes()))
+    by_vectors = codec._owners_of(frames, data, lengths)
+    by_keys = codec.key_owners(keys)
+    assert len(keys) > 100 and by_keys.tolist() == by_vectors.tolist()
+    if not by_data or name == "socket server":     # (two tasks: two data segments)
+        assert len(set(by_keys.tolist())) > 1
+
+
 @pytest.mark.parametrize("name, by_data", [("socket server", True), ("two tasks", False)])
 def test_a_data_segment_has_one_owner_where_the_model_has_enough_of_them(name, by_data):
     """Owners by data segment (``data_owners_fit``: enough distinct segments among the

@@ -2066,6 +2066,73 @@ done:
     return result;
 }
 
+/* ``owners(keys, value_prints, context_prints, count, by_data) -> bytes of uint32``: the
+ * owner of each key's state (keys as ``segments_batch`` takes them) among ``count`` workers
+ * of a distributed search (check/distributed/codec.py, ``VectorCodec._owners_of``, which
+ * computes the same with numpy): the fingerprints (uint64) of the values and contexts by
+ * id mixed position by position, the frame's (its context, its pc, its locals) with one
+ * constant and the data's with another, the two sums xor-ed (``by_data``: the data's
+ * alone), splitmix64's finaliser, modulo ``count``.  In one call, where numpy's two dozen
+ * array operations cost a round of a few hundred states more than the stepping's share */
+static PyObject *PackedTable_owners(PackedTable *self, PyObject *args)
+{
+    Py_buffer keys, values, contexts;
+    Py_ssize_t count;
+    int by_data;
+    if (!PyArg_ParseTuple(args, "y*y*y*np", &keys, &values, &contexts, &count, &by_data))
+        return NULL;
+    PyObject *result = NULL;
+    const uint64_t *key = keys.buf, *value_print = values.buf, *context_print = contexts.buf;
+    Py_ssize_t states = keys.len / (Py_ssize_t)sizeof(uint64_t);
+    Py_ssize_t value_count = values.len / (Py_ssize_t)sizeof(uint64_t);
+    Py_ssize_t context_count = contexts.len / (Py_ssize_t)sizeof(uint64_t);
+    if (count < 1) {
+        PyErr_SetString(PyExc_ValueError, "owners: no workers");
+        goto done;
+    }
+    result = PyBytes_FromStringAndSize(NULL, states * (Py_ssize_t)sizeof(uint32_t));
+    if (result == NULL)
+        goto done;
+    uint32_t *owner = (uint32_t *)PyBytes_AS_STRING(result);
+    for (Py_ssize_t i = 0; i < states; i++) {
+        int32_t frame_id = (int32_t)(key[i] >> 32), data_id = (int32_t)(key[i] & 0xFFFFFFFFu);
+        Py_ssize_t frame_length, data_length;
+        const uint32_t *frame, *data;
+        if (segment_items(self, frame_id, data_id, &frame, &frame_length, &data,
+                          &data_length) < 0)
+            goto failed;
+        uint64_t mixed = 0, data_mixed = 0;
+        for (Py_ssize_t j = 0; j < data_length; j++) {
+            if ((Py_ssize_t)data[j] >= value_count)
+                goto unknown;
+            data_mixed += value_print[data[j]] * (2 * (uint64_t)j + 1) * 0x94D049BB133111EBULL;
+        }
+        if (!by_data) {
+            if (frame_length < 2 || (Py_ssize_t)frame[0] >= context_count)
+                goto unknown;
+            mixed = context_print[frame[0]] * 0xBF58476D1CE4E5B9ULL +
+                (uint64_t)frame[1] * 0x9E3779B97F4A7C15ULL * 3 * 0xBF58476D1CE4E5B9ULL;
+            for (Py_ssize_t j = 2; j < frame_length; j++) {
+                if ((Py_ssize_t)frame[j] >= value_count)
+                    goto unknown;
+                mixed += value_print[frame[j]] * (2 * (uint64_t)j + 1) * 0xBF58476D1CE4E5B9ULL;
+            }
+        }
+        owner[i] = (uint32_t)(mix64(by_data ? data_mixed : mixed ^ data_mixed) %
+                              (uint64_t)count);
+    }
+    goto done;
+unknown:
+    PyErr_SetString(PyExc_IndexError, "owners: a value or context without a fingerprint");
+failed:
+    Py_CLEAR(result);
+done:
+    PyBuffer_Release(&keys);
+    PyBuffer_Release(&values);
+    PyBuffer_Release(&contexts);
+    return result;
+}
+
 /* the state (frame id, data id) stored as item ``i`` of a batch: its id into ``ids`` (bytes
  * of int64), whether it was new into ``news`` (bytes of 0 and 1); 0 / -1 */
 static int store_item(PackedTable *self, int32_t frame_id, int32_t data_id, PyObject *ids,
@@ -2720,6 +2787,9 @@ static PyMethodDef PackedTable_methods[] = {
      "segments(frame id, data id) -> (frame, data): interned segments' vectors as bytes"},
     {"segments_batch", (PyCFunction)PackedTable_segments_batch, METH_VARARGS,
      "segments_batch(keys) -> (frames, data, lengths): segments of many states"},
+    {"owners", (PyCFunction)PackedTable_owners, METH_VARARGS,
+     "owners(keys, value_prints, context_prints, count, by_data) -> bytes of uint32: the "
+     "owner of each key's state in a distributed search"},
     {"intern_keys", (PyCFunction)PackedTable_intern_keys, METH_VARARGS,
      "intern_keys(keys) -> (ids, new): the states of these segment keys, stored"},
     {"intern_batch", (PyCFunction)PackedTable_intern_batch, METH_VARARGS,

@@ -326,25 +326,31 @@ class VectorCodec:
         return sent.tolist()
 
     def _route(self, outboxes, keys, parents):
-        """``send``'s work on arrays: the owner of each key."""
+        """``send``'s work on arrays: the owner of each key (``key_owners``); the segments of
+        the keys other workers own read out of the table for them."""
         np = self.np
-        frames, data, lengths = self._segments_batch(keys.tobytes())
-        owners = self._owners_of(np.frombuffer(frames, np.uint32),
-                                 np.frombuffer(data, np.uint32),
-                                 np.frombuffer(lengths, np.uint32))
+        owners = self.key_owners(keys)
         for target in range(self.count):
             mine = owners == target
             number = int(np.count_nonzero(mine))
             if not number:
                 continue
+            some = (keys, parents) if number == len(keys) else (keys[mine], parents[mine])
             if target == self.index:          # (this table's own keys: ``encode``)
-                outboxes[target].append((keys[mine].tobytes(), parents[mine].tobytes()))
-            elif number == len(keys):
-                outboxes[target].append((frames, data, lengths, parents.tobytes()))
+                outboxes[target].append((some[0].tobytes(), some[1].tobytes()))
             else:
-                outboxes[target].append((*self._segments_batch(keys[mine].tobytes()),
-                                         parents[mine].tobytes()))
+                outboxes[target].append((*self._segments_batch(some[0].tobytes()),
+                                         some[1].tobytes()))
         return owners
+
+    def key_owners(self, keys):
+        """The owners of states given by their keys in this table (a uint64 array): what
+        ``_owners_of`` says of their vectors, in one call into the compiled core
+        (``owners``)."""
+        self._fingerprint_new()
+        owners = self.table.owners(keys.tobytes(), self.value_print, self.context_print,
+                                   self.count, self.by_data)
+        return self.np.frombuffer(owners, self.np.uint32)
 
     def owners(self, items: Sequence[tuple[bytes, bytes]]) -> list[int]:
         """The owner of each state given by its vectors (``prepare``)."""
