@@ -34,11 +34,13 @@ workers (``owcty``), with the one process's CPU seconds against the busier worke
 their CPU seconds together against one process's, and the bytes they sent per state.
 
 ``--rounds``: Ray's own cost of a round, without a model: two actors exchange a batch of
-``--payload`` bytes per round, (a) as the search does (the driver calls each actor with
-the other's batch, an object the driver owns, as its argument) and (b) from actor to actor
-(each actor calls the other's ``deliver``, an asyncio actor waits in ``step`` until its
-batch arrived; the driver calls ``step`` only): wall, driver and worker CPU milliseconds per
-round.
+``--payload`` bytes per round, (a) relayed by the driver (it calls each actor with the
+other's batch, an object the driver owns, as its argument: the search before
+``rounds.Levels``), (b) from actor to actor (each actor calls the other's ``deliver``, an
+asyncio actor waits in ``step`` until its batch arrived; the driver calls ``step`` only) and
+(c) driven by a worker, as the search does now (the first actor calls the other's ``step``
+and steps its own share meanwhile; the driver calls it once): wall, driver and worker CPU
+milliseconds per round.
 """
 from __future__ import annotations
 
@@ -303,29 +305,52 @@ class _Pushed:
         return expected
 
 
+class _Leading(_Relayed):
+    """(c) a round as the search runs it now (``rounds.Levels``): the first actor calls the
+    other's ``step`` with its batch, steps its own share meanwhile, and takes the other's
+    batch from the answer; the driver calls ``lead`` once."""
+
+    def meet(self, peer) -> None:
+        self.peer = peer
+
+    def lead(self, rounds: int) -> int:
+        import ray
+        stepped = self.peer.step.options(num_returns=3).remote()
+        mine = self.step()
+        for _ in range(rounds):
+            ray.get(stepped[2])
+            batch = ray.get(stepped[0])
+            stepped = self.peer.step.options(num_returns=3).remote(mine[0])
+            mine = self.step(batch)
+        ray.get(stepped[2])
+        return rounds
+
+
 def measure_rounds(payload: int, rounds: int = 300) -> None:
     import ray
     _start_ray(ray, 2)
-    for name in ("relayed by the driver", "actor to actor", "relayed by the driver",
-                 "actor to actor"):
-        pushed = name == "actor to actor"
-        actor_class = ray.remote(num_cpus=1)(_Pushed if pushed else _Relayed)
+    for name in ("relayed by the driver", "actor to actor", "driven by a worker") * 2:
+        pushed, leading = name == "actor to actor", name == "driven by a worker"
+        actor_class = ray.remote(num_cpus=1)(
+            _Pushed if pushed else _Leading if leading else _Relayed)
         actors = [actor_class.remote(payload) for _ in range(2)]
-        if pushed:
+        if pushed or leading:
             ray.get([actor.meet.remote(actors[1 - i]) for i, actor in enumerate(actors)])
         ray.get([actor.step.remote(0) if pushed else actor.cpu.remote() for actor in actors])
         cpu = ray.get([actor.cpu.remote() for actor in actors])
         driver, started = time.process_time(), time.perf_counter()
         stepped = [actor.step.options(num_returns=3).remote() for actor in actors] \
-            if not pushed else None
-        for _ in range(rounds):
+            if not (pushed or leading) else None
+        if leading:
+            ray.get(actors[0].lead.remote(rounds))
+        for _ in range(0 if leading else rounds):
             if pushed:
                 ray.get([actor.step.remote(1) for actor in actors])
                 continue
             ray.get([refs[2] for refs in stepped])
             stepped = [actor.step.options(num_returns=3).remote(stepped[1 - i][0])
                        for i, actor in enumerate(actors)]
-        if not pushed:
+        if stepped is not None:
             ray.get([refs[2] for refs in stepped])
         wall, driver = time.perf_counter() - started, time.process_time() - driver
         workers = [after - before for before, after in

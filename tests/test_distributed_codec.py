@@ -20,7 +20,8 @@ import pytest
 
 from rapidmc import api
 from rapidmc.check import check_property, find_reachable, native
-from rapidmc.check.distributed.codec import NodeCodec, VectorCodec, codec_for
+from rapidmc.check.distributed.codec import NodeCodec, VectorCodec, codec_for, \
+    data_owners_fit
 from rapidmc.check.distributed.partition import Links, link, search_here, unlink
 from rapidmc.check.distributed.product_partition import product_here
 from rapidmc.check.result import HOLDS, VIOLATED
@@ -251,6 +252,81 @@ def test_a_round_expanded_in_the_compiled_core_is_every_successor_once(name):
                                    not table.python_successors(i)), -1)
     if name == "run-time error":
         assert failed >= 0          # (the model's error is within the first 200 states)
+
+
+def test_a_sparing_table_keeps_new_data_segments_apart_until_a_state_needs_them():
+    """``spare_data``: the data segments a step makes go to the spare table (ids with bit
+    30), read as any other (``segments_batch``); storing a state by its key moves its data
+    segment into the table (``intern_keys``); ``clear_spare`` forgets the rest, and the
+    stored states still read the same."""
+    if not native.available():
+        pytest.skip("the native core is not built here")
+    system = system_of("socket server")
+    plain, sparing = packed(system), packed(system)
+    for state in breadth_first(system, 50):
+        plain.intern(state, True)
+        sparing.intern(state, True)
+    sparing.spare_data(True)
+    data_before = sparing.counts()["data"]
+    plain_keys, *_ = plain.expand_keys(0, 50, False, None)
+    spare_keys, *_ = sparing.expand_keys(0, 50, False, None)
+    plain_keys, spare_keys = array("Q", plain_keys), array("Q", spare_keys)
+    spare = [key for key in spare_keys if key & (1 << 30)]
+    assert spare and sparing.counts()["data"] == data_before
+    assert sparing.segments_batch(spare_keys.tobytes()) == \
+        plain.segments_batch(plain_keys.tobytes())
+    kept = array("Q", spare[:3])
+    ids, news = sparing.intern_keys(kept.tobytes())
+    assert sparing.counts()["data"] == data_before + len({key & 0xFFFFFFFF for key in kept})
+    stored = array("q", ids).tolist()
+    states = [sparing[state_id] for state_id in stored]
+    sparing.clear_spare()
+    assert [sparing[state_id] for state_id in stored] == states
+    assert all(state in set(breadth_first(system, 400)) for state in states)
+
+
+@pytest.mark.parametrize("by_data", [False, True])
+@pytest.mark.parametrize("name", ["socket server", "two tasks"])
+def test_the_compiled_owner_of_a_key_is_the_owner_of_its_vectors(name, by_data):
+    """``key_owners`` (the compiled core's ``owners``, which routes successors by key) names
+    the owner ``_owners_of`` names from the same states' vectors (which decides the initial
+    states', ``owns``), for three workers, by whole state and by data segment."""
+    if not native.available():
+        pytest.skip("the native core is not built here")
+    np = pytest.importorskip("numpy")
+    system = system_of(name)
+    table = packed(system)
+    for state in breadth_first(system, 300):
+        table.intern(state, True)
+    codec = VectorCodec(table, 0, 3, by_data)
+    keys = np.frombuffer(table.expand_keys(0, len(table), False, None)[0], np.uint64)
+    frames, data, lengths = (np.frombuffer(part, np.uint32)
+                             for part in table.segments_batch(keys.tobytes()))
+    by_vectors = codec._owners_of(frames, data, lengths)
+    by_keys = codec.key_owners(keys)
+    assert len(keys) > 100 and by_keys.tolist() == by_vectors.tolist()
+    if not by_data or name == "socket server":     # (two tasks: two data segments)
+        assert len(set(by_keys.tolist())) > 1
+
+
+@pytest.mark.parametrize("name, by_data", [("socket server", True), ("two tasks", False)])
+def test_a_data_segment_has_one_owner_where_the_model_has_enough_of_them(name, by_data):
+    """Owners by data segment (``data_owners_fit``: enough distinct segments among the
+    first states): the partitions hold the one process's data segments between them, each
+    once, and count its states; a model of two data segments keeps owners by whole state."""
+    if not native.available():
+        pytest.skip("the native core is not built here")
+    system = system_of(name)
+    assert data_owners_fit(system, packed(system), 2) is by_data
+    one = find_reachable(system, system.failed, max_states=None)
+    parts, _, _ = search_here(system, 2)
+    assert all(part.codec.by_data is by_data for part in parts)
+    assert sum(len(part.table) for part in parts) == one.stats.product_states
+    if by_data:
+        whole = packed(system)
+        for state in breadth_first(system, one.stats.product_states):
+            whole.intern(state, True)
+        assert sum(part.table.counts()["data"] for part in parts) == whole.counts()["data"]
 
 
 def test_the_compiled_round_asks_the_watch_where_the_program_may_be_stuck():

@@ -119,6 +119,10 @@ typedef struct {
     int32_t id_cache_id[ID_CACHE];
     /* segments and states */
     VectorTable frames, data;
+    /* a distributed worker's spare data segments (``spare_data``): those its steps made in
+     * this round that ``data`` does not hold, numbered SPARE | index */
+    VectorTable spare;
+    int sparing;
     int64_t *keys;              /* by state id: frame id << 32 | data id */
     Py_ssize_t count, key_capacity;
     int32_t *slots;
@@ -233,13 +237,14 @@ static int vt_grow(VectorTable *table)
     return 0;
 }
 
-/* the id of the vector ``items`` (stored when new); -1 with an error */
-static int32_t vt_intern(VectorTable *table, const uint32_t *items, Py_ssize_t length)
+/* the id of the vector ``items`` (hashed ``hash``) in ``table``, else -1 with ``*position``
+ * the free slot where it would go */
+static int32_t vt_probe(const VectorTable *table, const uint32_t *items, Py_ssize_t length,
+                        uint32_t hash, uint64_t *position)
 {
-    uint32_t hash = (uint32_t)hash_vector(items, length);
-    uint64_t position = mix64(hash) & table->mask;
+    uint64_t at = mix64(hash) & table->mask;
     for (;;) {
-        int32_t id = table->slots[position];
+        int32_t id = table->slots[at];
         if (id == EMPTY)
             break;
         if (table->hashes[id] == hash) {
@@ -248,8 +253,20 @@ static int32_t vt_intern(VectorTable *table, const uint32_t *items, Py_ssize_t l
             if (stored_length == length && same_items(stored, items, length))
                 return id;
         }
-        position = (position + 1) & table->mask;
+        at = (at + 1) & table->mask;
     }
+    *position = at;
+    return -1;
+}
+
+/* the id of the vector ``items`` (stored when new); -1 with an error */
+static int32_t vt_intern(VectorTable *table, const uint32_t *items, Py_ssize_t length)
+{
+    uint32_t hash = (uint32_t)hash_vector(items, length);
+    uint64_t position = 0;
+    int32_t found = vt_probe(table, items, length, hash, &position);
+    if (found >= 0)
+        return found;
     if (table->count >= INT32_MAX - 1) {
         PyErr_SetString(PyExc_OverflowError, "more than 2**31 distinct state parts");
         return -1;
@@ -312,6 +329,13 @@ static Py_ssize_t vt_bytes(const VectorTable *table)
     return table->arena_capacity * sizeof(uint32_t) + table->offsets_capacity * sizeof(int64_t)
         + table->hashes_capacity * sizeof(uint32_t) +
         (table->slots != NULL ? (table->mask + 1) * sizeof(int32_t) : 0);
+}
+
+/* the id of the vector ``items`` in ``table``, -1 when it holds none such */
+static int32_t vt_find(const VectorTable *table, const uint32_t *items, Py_ssize_t length)
+{
+    uint64_t position;
+    return vt_probe(table, items, length, (uint32_t)hash_vector(items, length), &position);
 }
 
 /* ======================================================================= values */
@@ -534,6 +558,47 @@ static Py_ssize_t intern_key(PackedTable *self, int32_t frame, int32_t data, int
     if ((uint64_t)self->count * 4 > (self->mask + 1) * 3 && grow_states(self) < 0)
         return -2;
     return id;
+}
+
+/* ================================================================ spare data
+ * A distributed worker steps states whose successors mostly belong to other workers; their
+ * data segments, interned in ``data``, would stay there for good, so that every worker held
+ * nearly every data segment of the whole search.  While ``sparing``, a step's new data
+ * segment goes to ``spare`` instead (id SPARE | index), which the worker empties each round
+ * (``clear_spare``) once it has sent those successors; the ones it keeps move to ``data``
+ * when stored (``intern_keys``). */
+#define SPARE 0x40000000
+
+static int32_t data_intern(PackedTable *table, const uint32_t *items, Py_ssize_t length)
+{
+    if (!table->sparing)
+        return vt_intern(&table->data, items, length);
+    int32_t id = vt_find(&table->data, items, length);
+    if (id >= 0)
+        return id;
+    if (table->data.count >= SPARE || table->spare.count >= SPARE) {
+        PyErr_SetString(PyExc_OverflowError, "more than 2**30 distinct data segments");
+        return -1;
+    }
+    id = vt_intern(&table->spare, items, length);
+    return id < 0 ? -1 : (SPARE | id);
+}
+
+static inline const uint32_t *data_items(const PackedTable *table, int32_t id,
+                                         Py_ssize_t *length)
+{
+    return id & SPARE ? vt_items(&table->spare, id & ~SPARE, length) :
+        vt_items(&table->data, id, length);
+}
+
+/* the data id ``id`` as ``data`` numbers it (a spare segment moved there); -1 */
+static int32_t settled_data(PackedTable *table, int32_t id)
+{
+    if (!(id & SPARE))
+        return id;
+    Py_ssize_t length;
+    const uint32_t *items = vt_items(&table->spare, id & ~SPARE, &length);
+    return vt_intern(&table->data, items, length);
 }
 
 /* ============================================================== the step machine */
@@ -1185,7 +1250,7 @@ static void stored_state(PackedTable *table, Py_ssize_t id, Stored *stored)
     stored->frame_id = (int32_t)(key >> 32);
     stored->data_id = (int32_t)(key & 0xffffffff);
     stored->frame = vt_items(&table->frames, stored->frame_id, &stored->frame_length);
-    stored->data = vt_items(&table->data, stored->data_id, &stored->data_length);
+    stored->data = data_items(table, stored->data_id, &stored->data_length);
 }
 
 /* The stepped state's vectors copied out of the tables (interning a successor may move
@@ -1355,7 +1420,7 @@ static int machine_step(PackedTable *table, Py_ssize_t id, Scratch *scratch,
         else            /* the same context and locals at another pc: often seen before */
             new_frame = frame_at(table, frame_id, frame, frame_length, run.pc, work_frame);
         int32_t new_data = new_frame < 0 ? -1 : !run.data_changed ? data_id :
-            vt_intern(&table->data, work_data, data_length);
+            data_intern(table, work_data, data_length);
         if (new_data < 0 || add_successor(found, new_frame, new_data) < 0)
             return -1;
         if (run.size_count == 0 || !next_script(&run))
@@ -1435,7 +1500,7 @@ static int task_machine_step(PackedTable *table, Scratch *scratch, const int32_t
         work_frame[where] = (uint32_t)new_pc;
         int32_t new_frame = vt_intern(&table->frames, work_frame, frame_length);
         int32_t new_data = new_frame < 0 ? -1 : !run.data_changed ? data_id :
-            vt_intern(&table->data, work_data, data_length);
+            data_intern(table, work_data, data_length);
         if (new_data < 0 || add_successor(found, new_frame, new_data) < 0 ||
                 vector32_push(changed, !run.idle) < 0)
             return -1;
@@ -1583,7 +1648,7 @@ static int machine_valuation(PackedTable *table, Py_ssize_t index, Py_ssize_t id
     int64_t key = table->keys[id];
     Py_ssize_t frame_length, data_length;
     const uint32_t *frame = vt_items(&table->frames, (int32_t)(key >> 32), &frame_length);
-    const uint32_t *data = vt_items(&table->data, (int32_t)(key & 0xffffffff), &data_length);
+    const uint32_t *data = data_items(table, (int32_t)(key & 0xffffffff), &data_length);
     Run run;
     run.table = table;
     run.locals = (uint32_t *)frame + 2;        /* (atoms read global data only) */
@@ -1611,7 +1676,7 @@ static PyObject *PackedTable_new(PyTypeObject *type, PyObject *args, PyObject *k
     self->slots = new_slots(FIRST_CAPACITY);
     self->value_slots = new_slots(FIRST_CAPACITY);
     if (self->object_ids == NULL || self->slots == NULL || self->value_slots == NULL ||
-            vt_init(&self->frames) < 0 || vt_init(&self->data) < 0 ||
+            vt_init(&self->frames) < 0 || vt_init(&self->data) < 0 || vt_init(&self->spare) < 0 ||
             vt_init(&self->signals) < 0) {
         Py_DECREF(self);
         return PyErr_Occurred() ? NULL : PyErr_NoMemory();
@@ -1692,6 +1757,7 @@ static void PackedTable_dealloc(PackedTable *self)
     PyMem_Free(self->value_slots);
     vt_free(&self->frames);
     vt_free(&self->data);
+    vt_free(&self->spare);
     vt_free(&self->signals);
     PyMem_Free(self->context_io);
     vector32_free(&self->newly_executed);
@@ -1842,8 +1908,9 @@ static PyObject *PackedTable_intern_vectors(PackedTable *self, PyObject *args)
 /* 0 when ``frame_id`` and ``data_id`` name stored segments, else -1 and IndexError */
 static int check_part_ids(PackedTable *self, int32_t frame_id, int32_t data_id)
 {
+    int spare = data_id >= 0 && (data_id & SPARE);
     if (frame_id < 0 || frame_id >= self->frames.count || data_id < 0 ||
-            data_id >= self->data.count) {
+            (spare ? (data_id & ~SPARE) >= self->spare.count : data_id >= self->data.count)) {
         PyErr_SetString(PyExc_IndexError, "no such state part");
         return -1;
     }
@@ -1859,7 +1926,7 @@ static int segment_items(PackedTable *self, int32_t frame_id, int32_t data_id,
     if (check_part_ids(self, frame_id, data_id) < 0)
         return -1;
     *frame = vt_items(&self->frames, frame_id, frame_length);
-    *data = vt_items(&self->data, data_id, data_length);
+    *data = data_items(self, data_id, data_length);
     return 0;
 }
 
@@ -1924,7 +1991,7 @@ static PyObject *PackedTable_intern_parts(PackedTable *self, PyObject *args)
         return NULL;
     int32_t frame_id = vt_intern(&self->frames, frame.buf, frame.len / sizeof(uint32_t));
     int32_t data_id = frame_id < 0 ? -1 :
-        vt_intern(&self->data, data.buf, data.len / sizeof(uint32_t));
+        data_intern(self, data.buf, data.len / sizeof(uint32_t));
     PyBuffer_Release(&frame);
     PyBuffer_Release(&data);
     if (data_id < 0)
@@ -1970,7 +2037,7 @@ static PyObject *PackedTable_segments_batch(PackedTable *self, PyObject *args)
             goto done;
         vt_items(&self->frames, frame_id, &length);
         frame_total += length;
-        vt_items(&self->data, data_id, &length);
+        data_items(self, data_id, &length);
         data_total += length;
     }
     frames = PyBytes_FromStringAndSize(NULL, frame_total * (Py_ssize_t)sizeof(uint32_t));
@@ -1986,7 +2053,7 @@ static PyObject *PackedTable_segments_batch(PackedTable *self, PyObject *args)
         memcpy(frame_out, items, length * sizeof(uint32_t));
         frame_out += length;
         length_out[i] = (uint32_t)length;
-        items = vt_items(&self->data, (int32_t)(key[i] & 0xFFFFFFFFu), &length);
+        items = data_items(self, (int32_t)(key[i] & 0xFFFFFFFFu), &length);
         memcpy(data_out, items, length * sizeof(uint32_t));
         data_out += length;
     }
@@ -1996,6 +2063,73 @@ done:
     Py_XDECREF(data);
     Py_XDECREF(lengths);
     PyBuffer_Release(&keys);
+    return result;
+}
+
+/* ``owners(keys, value_prints, context_prints, count, by_data) -> bytes of uint32``: the
+ * owner of each key's state (keys as ``segments_batch`` takes them) among ``count`` workers
+ * of a distributed search (check/distributed/codec.py, ``VectorCodec._owners_of``, which
+ * computes the same with numpy): the fingerprints (uint64) of the values and contexts by
+ * id mixed position by position, the frame's (its context, its pc, its locals) with one
+ * constant and the data's with another, the two sums xor-ed (``by_data``: the data's
+ * alone), splitmix64's finaliser, modulo ``count``.  In one call, where numpy's two dozen
+ * array operations cost a round of a few hundred states more than the stepping's share */
+static PyObject *PackedTable_owners(PackedTable *self, PyObject *args)
+{
+    Py_buffer keys, values, contexts;
+    Py_ssize_t count;
+    int by_data;
+    if (!PyArg_ParseTuple(args, "y*y*y*np", &keys, &values, &contexts, &count, &by_data))
+        return NULL;
+    PyObject *result = NULL;
+    const uint64_t *key = keys.buf, *value_print = values.buf, *context_print = contexts.buf;
+    Py_ssize_t states = keys.len / (Py_ssize_t)sizeof(uint64_t);
+    Py_ssize_t value_count = values.len / (Py_ssize_t)sizeof(uint64_t);
+    Py_ssize_t context_count = contexts.len / (Py_ssize_t)sizeof(uint64_t);
+    if (count < 1) {
+        PyErr_SetString(PyExc_ValueError, "owners: no workers");
+        goto done;
+    }
+    result = PyBytes_FromStringAndSize(NULL, states * (Py_ssize_t)sizeof(uint32_t));
+    if (result == NULL)
+        goto done;
+    uint32_t *owner = (uint32_t *)PyBytes_AS_STRING(result);
+    for (Py_ssize_t i = 0; i < states; i++) {
+        int32_t frame_id = (int32_t)(key[i] >> 32), data_id = (int32_t)(key[i] & 0xFFFFFFFFu);
+        Py_ssize_t frame_length, data_length;
+        const uint32_t *frame, *data;
+        if (segment_items(self, frame_id, data_id, &frame, &frame_length, &data,
+                          &data_length) < 0)
+            goto failed;
+        uint64_t mixed = 0, data_mixed = 0;
+        for (Py_ssize_t j = 0; j < data_length; j++) {
+            if ((Py_ssize_t)data[j] >= value_count)
+                goto unknown;
+            data_mixed += value_print[data[j]] * (2 * (uint64_t)j + 1) * 0x94D049BB133111EBULL;
+        }
+        if (!by_data) {
+            if (frame_length < 2 || (Py_ssize_t)frame[0] >= context_count)
+                goto unknown;
+            mixed = context_print[frame[0]] * 0xBF58476D1CE4E5B9ULL +
+                (uint64_t)frame[1] * 0x9E3779B97F4A7C15ULL * 3 * 0xBF58476D1CE4E5B9ULL;
+            for (Py_ssize_t j = 2; j < frame_length; j++) {
+                if ((Py_ssize_t)frame[j] >= value_count)
+                    goto unknown;
+                mixed += value_print[frame[j]] * (2 * (uint64_t)j + 1) * 0xBF58476D1CE4E5B9ULL;
+            }
+        }
+        owner[i] = (uint32_t)(mix64(by_data ? data_mixed : mixed ^ data_mixed) %
+                              (uint64_t)count);
+    }
+    goto done;
+unknown:
+    PyErr_SetString(PyExc_IndexError, "owners: a value or context without a fingerprint");
+failed:
+    Py_CLEAR(result);
+done:
+    PyBuffer_Release(&keys);
+    PyBuffer_Release(&values);
+    PyBuffer_Release(&contexts);
     return result;
 }
 
@@ -2077,7 +2211,8 @@ static PyObject *PackedTable_intern_keys(PackedTable *self, PyObject *args)
         goto done;
     for (Py_ssize_t i = 0; i < count; i++) {
         int32_t frame_id = (int32_t)(key[i] >> 32), data_id = (int32_t)(key[i] & 0xFFFFFFFFu);
-        if (check_part_ids(self, frame_id, data_id) < 0)
+        if (check_part_ids(self, frame_id, data_id) < 0 ||
+                (data_id = settled_data(self, data_id)) < 0)
             goto done;
         if (store_item(self, frame_id, data_id, ids, news, i) < 0)
             goto done;
@@ -2568,11 +2703,34 @@ static PyObject *PackedTable_release_index(PackedTable *self, PyObject *unused)
     Py_RETURN_NONE;
 }
 
+/* ``spare_data(on)``: whether steps put the new data segments in the spare table (a
+ * distributed worker's, ``data_intern``) */
+static PyObject *PackedTable_spare_data(PackedTable *self, PyObject *argument)
+{
+    int on = PyObject_IsTrue(argument);
+    if (on < 0)
+        return NULL;
+    self->sparing = on;
+    Py_RETURN_NONE;
+}
+
+/* ``clear_spare()``: forget the spare data segments (their ids name nothing after it) */
+static PyObject *PackedTable_clear_spare(PackedTable *self, PyObject *unused)
+{
+    if (self->spare.count == 0)
+        Py_RETURN_NONE;
+    vt_free(&self->spare);
+    memset(&self->spare, 0, sizeof(VectorTable));
+    if (vt_init(&self->spare) < 0)
+        return NULL;
+    Py_RETURN_NONE;
+}
+
 static PyObject *PackedTable_native_bytes(PackedTable *self, PyObject *unused)
 {
     Py_ssize_t bytes = self->key_capacity * sizeof(int64_t) +
         (self->slots != NULL ? (self->mask + 1) * sizeof(int32_t) : 0)
-        + vt_bytes(&self->frames) + vt_bytes(&self->data)
+        + vt_bytes(&self->frames) + vt_bytes(&self->data) + vt_bytes(&self->spare)
         + self->value_capacity * (1 + sizeof(double) + sizeof(PyObject *))
         + (self->value_mask + 1) * sizeof(int32_t)
         + vt_bytes(&self->signals) + self->context_capacity * (2 * sizeof(int32_t) + 1)
@@ -2629,6 +2787,9 @@ static PyMethodDef PackedTable_methods[] = {
      "segments(frame id, data id) -> (frame, data): interned segments' vectors as bytes"},
     {"segments_batch", (PyCFunction)PackedTable_segments_batch, METH_VARARGS,
      "segments_batch(keys) -> (frames, data, lengths): segments of many states"},
+    {"owners", (PyCFunction)PackedTable_owners, METH_VARARGS,
+     "owners(keys, value_prints, context_prints, count, by_data) -> bytes of uint32: the "
+     "owner of each key's state in a distributed search"},
     {"intern_keys", (PyCFunction)PackedTable_intern_keys, METH_VARARGS,
      "intern_keys(keys) -> (ids, new): the states of these segment keys, stored"},
     {"intern_batch", (PyCFunction)PackedTable_intern_batch, METH_VARARGS,
@@ -2648,6 +2809,10 @@ static PyMethodDef PackedTable_methods[] = {
      "evaluate(valuation, id) -> bits or None: compiled atoms on a stored state"},
     {"release_index", (PyCFunction)PackedTable_release_index, METH_NOARGS,
      "release_index(): drop the hash indexes until the next interning needs them"},
+    {"spare_data", (PyCFunction)PackedTable_spare_data, METH_O,
+     "spare_data(on): a step's new data segments go to a spare table (distributed workers)"},
+    {"clear_spare", (PyCFunction)PackedTable_clear_spare, METH_NOARGS,
+     "clear_spare(): forget the spare data segments"},
     {"native_bytes", (PyCFunction)PackedTable_native_bytes, METH_NOARGS,
      "native_bytes() -> int: bytes of the native arrays"},
     {"set_tasks", (PyCFunction)PackedTable_set_tasks, METH_O,

@@ -2,7 +2,8 @@
 
 * ``search.partitioned_reachable``: the breadth-first reachability search of the built-in
   checks, with the states split among workers by canonical hash (``canonical``), one Ray
-  actor per partition (``partition``): the same verdicts and counts as one process.
+  actor per partition (``partition``), its rounds driven by the first worker
+  (``rounds``): the same verdicts and counts as one process.
 * ``owcty.partitioned_accepting_cycle``: an LTL property's search for an accepting cycle
   of model × automaton, partitioned the same way (``product_partition``), by OWCTY: the
   same verdicts and product state counts as one process, and a lasso that replays.

@@ -68,18 +68,55 @@ def unlink(parent: int) -> tuple[int, int]:
     return parent >> ID_BITS, parent & ID_MASK
 
 
-def codec_for(table, index: int, count: int):
+def codec_for(table, index: int, count: int, by_data: bool = False):
     """The codec for a worker's table: vectors where the table offers them, node ids where
-    it collapses states into parts (both need numpy, which Ray brings), else pickles."""
+    it collapses states into parts (both need numpy, which Ray brings), else pickles.
+    ``by_data``: vectors owned by their data segment (``data_owners_fit``)."""
     try:
         import numpy  # noqa: F401
     except ImportError:
         return PickleCodec(table, count)
     if getattr(table, "vectors_of", None) is not None:
-        return VectorCodec(table, index, count)
+        return VectorCodec(table, index, count, by_data)
     if getattr(table, "collapsed", False):
         return NodeCodec(table, index, count)
     return PickleCodec(table, count)
+
+
+SAMPLE_STATES = 1000       # states ``data_owners_fit`` looks at (at least)
+SEGMENTS_PER_WORKER = 16   # distinct data segments among them it asks for, per worker,
+SEGMENTS_PER_STATE = 0.25  # and per state looked at
+
+
+def data_owners_fit(system, table, count: int) -> bool:
+    """Whether the states of a packed model (``table``: a packed table of ``system``) may be
+    owned by their data segment alone (``VectorCodec``): a worker then stores only its own
+    share of the data segments, and a step that changes no global data stays with its
+    worker, but the balance rests on the number of data segments and their sizes.  So this
+    looks at the first ``SAMPLE_STATES`` (or ``32 * count``) states in breadth-first order
+    and asks for ``SEGMENTS_PER_WORKER * count`` distinct data segments among them and one
+    for every four states (most steps change global data: the segments are then many and
+    small); else the owner is a hash of the whole state.  (Among their first 1,000
+    states, the counters have 392 data segments; bench/tasks.py's socket server 189 (1,093
+    in all, which split 44/56 between two workers), two tasks 102, the ROS server 17 (283
+    in all: 43/57 to 57/43 by the hash's seed).)  The check's process decides, once, and
+    tells every worker."""
+    vectors_of = getattr(table, "vectors_of", None)
+    if vectors_of is None or count < 2:
+        return False
+    limit, wanted = max(SAMPLE_STATES, 32 * count), SEGMENTS_PER_WORKER * count
+    frontier = list(system.initial_states())
+    seen, segments = set(frontier), set()
+    expanded = 0
+    while expanded < min(len(frontier), limit):     # (the frontier grows meanwhile)
+        state = frontier[expanded]
+        expanded += 1
+        segments.add(vectors_of(state)[1])
+        for after in system.successor_states(state):
+            if after not in seen:
+                seen.add(after)
+                frontier.append(after)
+    return len(segments) >= max(wanted, SEGMENTS_PER_STATE * expanded)
 
 
 # odd 64-bit constants of the owner hash (any fixed ones do; these are splitmix64's)
@@ -186,6 +223,9 @@ class PickleCodec:
         prints = self.prints
         return [_Keyed(prints(successor), successor) for successor in successors]
 
+    def new_round(self) -> None:
+        """(Nothing to let go between rounds.)"""
+
     def outbox(self) -> tuple[list, array]:
         return [], array("q")
 
@@ -217,11 +257,12 @@ class VectorCodec:
 
     lazy_states = True          # ``successor_keys`` takes a state id without its state
 
-    def __init__(self, table, index: int, count: int):
+    def __init__(self, table, index: int, count: int, by_data: bool = False):
         import numpy
         self.np = numpy
         self.table, self.index, self.count = table, index, count
         self.data_length = table.store_length
+        self.by_data = by_data and self.data_length > 0
         self.value_print = numpy.zeros(0, numpy.uint64)      # by value id: fingerprint
         self.context_print = numpy.zeros(0, numpy.uint64)    # by context id: fingerprint
         self.sent_values = [0] * count       # per owner: values handed over (ids below it)
@@ -232,6 +273,11 @@ class VectorCodec:
         self._intern_parts = table.intern_parts
         self._segments_batch, self._intern_batch = table.segments_batch, table.intern_batch
         self._machine = table.step                 # (None: the state is Python's to step)
+        # owned by data segment (``_owners_of``), the data segments of successors this
+        # worker's steps make go to a spare table, emptied each round (``new_round``), and
+        # move into the table only for the successors it owns (``intern_keys``): a worker
+        # then holds only its own share of the data segments, not all of them
+        table.spare_data(self.by_data)
 
     # ---------------------------------------------------------------- sending
     # A successor's key is its interned segments, ``frame id << 32 | data id`` in this table
@@ -280,25 +326,31 @@ class VectorCodec:
         return sent.tolist()
 
     def _route(self, outboxes, keys, parents):
-        """``send``'s work on arrays: the owner of each key."""
+        """``send``'s work on arrays: the owner of each key (``key_owners``); the segments of
+        the keys other workers own read out of the table for them."""
         np = self.np
-        frames, data, lengths = self._segments_batch(keys.tobytes())
-        owners = self._owners_of(np.frombuffer(frames, np.uint32),
-                                 np.frombuffer(data, np.uint32),
-                                 np.frombuffer(lengths, np.uint32))
+        owners = self.key_owners(keys)
         for target in range(self.count):
             mine = owners == target
             number = int(np.count_nonzero(mine))
             if not number:
                 continue
+            some = (keys, parents) if number == len(keys) else (keys[mine], parents[mine])
             if target == self.index:          # (this table's own keys: ``encode``)
-                outboxes[target].append((keys[mine].tobytes(), parents[mine].tobytes()))
-            elif number == len(keys):
-                outboxes[target].append((frames, data, lengths, parents.tobytes()))
+                outboxes[target].append((some[0].tobytes(), some[1].tobytes()))
             else:
-                outboxes[target].append((*self._segments_batch(keys[mine].tobytes()),
-                                         parents[mine].tobytes()))
+                outboxes[target].append((*self._segments_batch(some[0].tobytes()),
+                                         some[1].tobytes()))
         return owners
+
+    def key_owners(self, keys):
+        """The owners of states given by their keys in this table (a uint64 array): what
+        ``_owners_of`` says of their vectors, in one call into the compiled core
+        (``owners``)."""
+        self._fingerprint_new()
+        owners = self.table.owners(keys.tobytes(), self.value_print, self.context_print,
+                                   self.count, self.by_data)
+        return self.np.frombuffer(owners, self.np.uint32)
 
     def owners(self, items: Sequence[tuple[bytes, bytes]]) -> list[int]:
         """The owner of each state given by its vectors (``prepare``)."""
@@ -311,9 +363,15 @@ class VectorCodec:
     def _owners_of(self, frames, data, lengths):
         """The owners of states (their frame vectors end to end, their data vectors end to
         end, the frames' lengths): a hash over the fingerprints of each one's context,
-        program counter and values, position by position."""
+        program counter and values, position by position; ``by_data``: of the values of its
+        data segment alone, so that all states of a data segment have one owner, which
+        alone stores that segment, and a step that changes no global data (a jump, a test,
+        a wait) leads to a state of the same worker."""
         np = self.np
         self._fingerprint_new()
+        data_mixed = self._data_mixed(data, len(lengths)) if self.data_length else None
+        if self.by_data:
+            return _finish_all(np, data_mixed) % np.uint64(self.count)
         lengths = lengths.astype(np.int64)
         starts = np.cumsum(lengths) - lengths
         with np.errstate(over="ignore"):
@@ -324,12 +382,14 @@ class VectorCodec:
                 np.repeat(starts, lengths).astype(np.uint64)
             mixed = np.add.reduceat(prints * (positions * np.uint64(2) + np.uint64(1))
                                     * np.uint64(_MIX1), starts)
-            if self.data_length:
-                data = self.value_print[data].reshape(len(lengths), self.data_length)
-                weights = (np.arange(self.data_length, dtype=np.uint64) * np.uint64(2) +
-                           np.uint64(1)) * np.uint64(_MIX2)
-                mixed ^= (data * weights).sum(axis=1, dtype=np.uint64)
+            if data_mixed is not None:
+                mixed ^= data_mixed
         return _finish_all(np, mixed) % np.uint64(self.count)
+
+    def _data_mixed(self, data, count: int):
+        """Per state, a hash of its data vector's fingerprints, position by position."""
+        np = self.np
+        return _rows_mixed(np, self.value_print[data].reshape(count, self.data_length), _MIX2)
 
     def _fingerprint_new(self) -> None:
         """Fingerprints of the values and contexts the table numbered since the last call."""
@@ -345,6 +405,12 @@ class VectorCodec:
             self.context_print = np.concatenate(
                 (self.context_print, np.fromiter(map(fingerprint, contexts), np.uint64,
                                                  len(contexts))))
+
+    def new_round(self) -> None:
+        """Forget the spare data segments of the round before (``__init__``): its batches
+        are written and its own successors stored."""
+        if self.by_data:
+            self.table.clear_spare()
 
     def outbox(self) -> list:
         """A batch being written: chunks of (frame vectors, data vectors, the frames'
@@ -446,6 +512,14 @@ def _pieces(blob: bytes, at: int, sizes) -> list:
     return pieces
 
 
+def _rows_mixed(np, prints, mix: int):
+    """Per row of a 2-D uint64 array of fingerprints, their sum weighted by position."""
+    weights = (np.arange(prints.shape[1], dtype=np.uint64) * np.uint64(2) + np.uint64(1)) * \
+        np.uint64(mix)
+    with np.errstate(over="ignore"):
+        return (prints * weights).sum(axis=1, dtype=np.uint64)
+
+
 def _finish_all(np, mixed):
     """``_finish`` of each number of a uint64 array (in place; the array)."""
     with np.errstate(over="ignore"):
@@ -484,6 +558,9 @@ class NodeCodec:
         parts_of = self.parts_of
         return [parts_of(successor) for successor in successors]
 
+    def new_round(self) -> None:
+        """(Nothing to let go between rounds.)"""
+
     def outbox(self) -> list:
         """A batch being written: chunks of (the states' rows of node ids, their parents)."""
         return []
@@ -509,11 +586,7 @@ class NodeCodec:
         fingerprints, position by position."""
         np = self.np
         self._fingerprint_new()
-        width = rows.shape[1]
-        with np.errstate(over="ignore"):
-            weights = (np.arange(width, dtype=np.uint64) * np.uint64(2) + np.uint64(1)) * \
-                np.uint64(_MIX1)
-            mixed = (self.prints[rows] * weights).sum(axis=1, dtype=np.uint64)
+        mixed = _rows_mixed(np, self.prints[rows], _MIX1)
         return _finish_all(np, mixed) % np.uint64(self.count)
 
     def _fingerprint_new(self) -> None:

@@ -15,12 +15,13 @@ of ``step``: ``receive`` stores the states the other partitions sent in the roun
 (and the batch this one kept for itself), and ``expand`` steps at most ``ROUND`` states of
 the current level (asking the predicate of each first: the first one it marks ends the
 search) and sorts their successors into one batch per owner.  A round that ``advance``s
-begins the next level with the states stored since the last one began; the driver asks for
-it once every partition has expanded its whole level, so a state is stored at its depth.
+begins the next level with the states stored since the last one began; the leader
+(``rounds.Levels``, run by the first partition: ``lead``, ``rounds``) asks for it once every
+partition has expanded its whole level, so a state is stored at its depth.
 Rounds bound what a worker holds at once: the successors of ``ROUND`` states and their
 batches, not a whole level's.  The worker's ``codec`` (``codec.py``) decides the owner of a
-state and how states travel: as the packed table's vectors where the model has one, else
-pickled.
+state and how states travel: as the packed table's vectors where the model has one (owned
+by their data segment where ``codec.data_owners_fit``), else as node ids or pickled.
 """
 from __future__ import annotations
 
@@ -33,10 +34,11 @@ from typing import Callable, Hashable, Optional, Sequence
 
 from ..collector import freeze_survivors, frozen_while_searching
 from ..native import engine_of, state_table
-from .codec import codec_for, link, unlink  # noqa: F401  (search's links)
+from .codec import codec_for, data_owners_fit, link, unlink  # noqa: F401  (search's links)
 
 CHUNK = 4096            # successors whose owners are computed together (``codec.send``)
 ROUND = 1 << 13         # states a worker expands in one round at most (module docstring)
+MEMORY_EVERY = 0.05     # seconds between two readings of the memory (``_note_memory``)
 NO_PARENT = -1
 
 
@@ -133,8 +135,11 @@ class Partition:
         self._frozen: Optional[contextlib.ExitStack] = None
 
     def start(self, index: int, count: int, source: "SystemSource", predicate: str,
-              deadlock_is_target: bool, watch: Optional[str] = None) -> None:
-        """Begin a search (an actor serves the searches of one check one after another)."""
+              deadlock_is_target: bool, watch: Optional[str] = None,
+              by_data: bool = False) -> None:
+        """Begin a search (an actor serves the searches of one check one after another);
+        ``by_data``: a packed model's states are owned by their data segment
+        (``codec.data_owners_fit``)."""
         self.index, self.count = index, count
         system = source.build()
         self.system = system
@@ -144,7 +149,7 @@ class Partition:
         self.watch = getattr(system, watch) if watch is not None else None
         self.watched = False                   # whether it ever said True
         self.table = state_table(system, packed=True)
-        self.codec = codec_for(self.table, index, count)
+        self.codec = codec_for(self.table, index, count, by_data)
         self.parent = Links(count)
         self.expanded = 0                      # states before this id have been expanded
         self.level_end = 0                     # the current level: ids below this one
@@ -163,6 +168,7 @@ class Partition:
         self.sent_bytes = 0                    # bytes of the batches to other partitions
         self.start_rss_kb = _peak_rss_kb()      # the process's peak before this search
         self.peak_private_kb = 0               # (``_note_memory``)
+        self.memory_noted = 0.0
 
     def receive(self, senders: Sequence[int], *batches) -> int:
         """Store the new states of the batches (``senders[i]`` sent ``batches[i]``, written
@@ -201,10 +207,16 @@ class Partition:
             self.step_seconds += time.process_time() - started
             self._note_memory()
 
-    def _note_memory(self) -> None:
+    def _note_memory(self, always: bool = False) -> None:
         """The largest memory of this process not shared with Ray's object store, after
-        each level (Linux: /proc; the peak RSS counts the store's pages this process
-        mapped, which the one-process search has none of)."""
+        a round at most every ``MEMORY_EVERY`` seconds and at the end (Linux: /proc; the
+        peak RSS counts the store's pages this process mapped, which the one-process search
+        has none of).  (Reading /proc after every round cost a narrow level's round a
+        tenth of a millisecond.)"""
+        now = time.monotonic()
+        if not always and now - self.memory_noted < MEMORY_EVERY:
+            return
+        self.memory_noted = now
         try:
             with open("/proc/self/status") as status:
                 fields = dict(line.split(":", 1) for line in status)
@@ -234,6 +246,7 @@ class Partition:
         ``watch`` said True).  Once the predicate marks a state the level is dropped (the
         search ends there, with the figures of the levels before)."""
         table, count, index, codec = self.table, self.count, self.index, self.codec
+        codec.new_round()
         successors_of = getattr(self.system, "successor_states", None)
         if successors_of is None:
             successors_of = self._targets
@@ -338,6 +351,19 @@ class Partition:
     def _targets(self, state) -> list:
         return [successor for _, successor in self.system.successors(state)]
 
+    def lead(self, peers: Sequence, initial: bytes, max_states, per_level: bool) -> None:
+        """Drive the search's rounds from here (``rounds`` module docstring): this is the
+        first partition, ``peers`` the others (actors, or ``_Here`` in one process)."""
+        from .rounds import Levels, local_values, ray_values
+        here = {0} | {index for index, peer in enumerate(peers, 1) if isinstance(peer, _Here)}
+        get = local_values if len(here) == self.count else ray_values
+        self.levels = Levels([_Here(self), *peers], here, get, max_states, per_level)
+        self.levels.begin(initial)
+
+    def rounds(self, seconds: float) -> dict:
+        """The leader's rounds for about ``seconds`` (``rounds.Levels.run``)."""
+        return self.levels.run(seconds)
+
     def step_back(self, state_id: int) -> tuple[Hashable, int]:
         """The state with this id and the link to its parent (``NO_PARENT`` for an initial one)."""
         return self.table[state_id], self.parent[state_id]
@@ -356,6 +382,7 @@ class Partition:
 
     def figures(self) -> dict:
         """What this partition holds: states, bytes, engine, and the process's peak memory."""
+        self._note_memory(always=True)
         table = self.table
         return {"states": len(table), "transitions": self.transitions, "sent": self.sent,
                 "bytes": table.memory_bytes() + self.parent.memory_bytes(),
@@ -378,9 +405,10 @@ def search_here(system, count: int, predicate: str = "failed") -> tuple[list, in
     or None)."""
     from .search import _Rounds
     from ..budget import SearchBudget
+    by_data = data_owners_fit(system, state_table(system, packed=True), count)
     parts = [Partition() for _ in range(count)]
     for index, part in enumerate(parts):
-        part.start(index, count, SystemSource(system), predicate, False)
+        part.start(index, count, SystemSource(system), predicate, False, None, by_data)
     try:
         rounds = _Rounds(_HERE, [_Here(part) for part in parts], system, SearchBudget(None),
                          None)

@@ -8,16 +8,17 @@ what it was sent in the round before and expands at most ``partition.ROUND`` sta
 current level, sorting their successors by owner (one batch per owner, handed from actor to
 actor through Ray's object store, never through this process; the batch for itself it
 keeps).  A level ends once every partition expanded its share; a level that stores nothing
-new ends a complete search.
+new ends a complete search.  The first partition's worker drives the rounds
+(``rounds.Levels``); this process asks it for a slice of rounds at a time.
 
 A violation is found in the level of its depth, as in the one-process search, so the path is
 as short; it is rebuilt by following parent links from partition to partition, and its
 labels by stepping the model along it here (as ``reachability`` does), so it replays.
 
 A complete search stores exactly the reachable states and counts each transition once: the
-same states, transitions, deadlocks and depth as one process.  The state and time limits
-are checked after each round (a round may store more than the limit before the search
-stops: UNKNOWN either way).
+same states, transitions, deadlocks and depth as one process.  The state limit is checked
+after each round, the time limit after each slice of rounds (a round may store more than
+the limit before the search stops: UNKNOWN either way).
 
 A worker that dies (killed, out of memory, crashed node) ends the search with the
 ``WORKER_LOST`` diagnostic and its exit code: never with a verdict.
@@ -31,7 +32,10 @@ from ...diagnostics import EXIT_WORKER_LOST, WORKER_LOST, error
 from ..budget import SearchBudget
 from ..result import HOLDS, NO_AUTOMATON, UNKNOWN, VIOLATED, LassoStep, SearchResult, SearchStats
 from ..transition_system import TransitionSystem, transition_label
+from ..native import state_table
+from .codec import data_owners_fit
 from .partition import NO_PARENT, SystemSource, encode_batch, unlink
+from .rounds import AT_LIMIT, FOUND, HOLDS_ALL, SLICE_SECONDS
 from .worker import SAFETY, Worker, call
 
 ENGINE = "distributed"
@@ -50,12 +54,13 @@ def partitioned_reachable(ray, partitions: int, system: TransitionSystem, predic
     the system itself is pickled to the workers).
     """
     budget = budget if budget is not None else SearchBudget()
+    by_data = data_owners_fit(system, state_table(system, packed=True), partitions)
     actors = actors_of(ray, partitions)
     shared = ray.put(SystemSource(system if rebuild is None else None, rebuild))
     try:
         with worker_failures(ray):
             ray.get([call(actor, SAFETY, "start", index, partitions, shared, predicate,
-                                        deadlock_is_target, watch)
+                          deadlock_is_target, watch, by_data)
                      for index, actor in enumerate(actors)])
             return _Rounds(ray, actors, system, budget, on_level).run()
     except BaseException:
@@ -113,8 +118,10 @@ def _worker_lost(exc: Exception):
 
 
 class _Rounds:
-    """Drives the partitions' rounds (``partition`` module docstring): each round's batches
-    go from actor to actor, and a level ends once every partition expanded its share."""
+    """Drives the search from the check's process: the first worker runs the rounds
+    (``rounds.Levels``), each round's batches going from actor to actor; this process asks
+    it for a slice of rounds at a time, checks the time limit and reports progress between
+    slices, and rebuilds the counterexample."""
 
     def __init__(self, ray, actors, system, budget: SearchBudget, on_level):
         self.ray, self.actors, self.system = ray, actors, system
@@ -127,31 +134,25 @@ class _Rounds:
         self.target: Optional[tuple[int, int]] = None   # (partition, id) the predicate marked
 
     def run(self) -> tuple:
-        ray, count = self.ray, self.count
+        ray, leader = self.ray, self.actors[0]
         # every partition is sent the initial states and keeps those it owns
         initial = encode_batch((list(self.system.initial_states()), []))
-        stepped = [call(actor, SAFETY, "step", True, [-1], initial, returns=count + 1)
-                   for actor in self.actors]
-        advanced = True
+        ray.get(call(leader, SAFETY, "lead", self.actors[1:], initial, self.budget.max_states,
+                     self.on_level is not None))
         while True:
-            figures = ray.get([refs[count] for refs in stepped])
-            self.stored = [f[0] for f in figures]
-            for index, f in enumerate(figures):
-                if f[2] >= 0:
-                    self.target = index, f[2]
-                    return self._result(VIOLATED, self._path(index, f[2]))
-            self.transitions = sum(f[3] for f in figures)
-            self.deadlocks = sum(f[4] for f in figures)
-            self.watched = self.watched or any(f[6] for f in figures)
-            for index, f in enumerate(figures):
-                if f[5] >= 0:
-                    return self._result(VIOLATED, self._path(index, f[5]))
-            if advanced:
-                if sum(f[1] for f in figures) == 0:
-                    return self._result(HOLDS)
-                self.depth += 1
+            answer = ray.get(call(leader, SAFETY, "rounds", SLICE_SECONDS))
+            self.stored = answer["stored"]
+            self.transitions, self.deadlocks = answer["transitions"], answer["deadlocks"]
+            self.depth = answer["depth"]
+            self.watched = answer["watched"]
+            outcome = answer["outcome"]
+            if outcome == FOUND:
+                self.target = answer["target"]
+                return self._result(VIOLATED, self._path(*self.target))
+            if outcome == HOLDS_ALL:
+                return self._result(HOLDS)
             self._note_balance()
-            if sum(self.stored) > self.budget.max_states:
+            if outcome == AT_LIMIT:
                 self.budget.reason = f"state limit {self.budget.max_states} reached"
             elif not self.budget.checkpoint(sum(self.stored), self.transitions, self.depth):
                 pass                                  # (the time limit: reason is set)
@@ -159,13 +160,6 @@ class _Rounds:
                 return self._result(UNKNOWN)
             if self.on_level is not None:
                 self.on_level(self.actors)
-            # the next level once every partition expanded all of this one
-            advanced = not any(f[7] for f in figures)
-            stepped = [call(actor, SAFETY, "step", advanced,
-                            [sender for sender in range(count) if sender != target],
-                            *[refs[target] for sender, refs in enumerate(stepped)
-                              if sender != target],
-                            returns=count + 1) for target, actor in enumerate(self.actors)]
 
     def _note_balance(self) -> None:
         """The progress line's per-worker balance: each worker's share of the states."""
