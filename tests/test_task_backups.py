@@ -119,3 +119,18 @@ def test_outputs_set_outside_same_on_both_engines(name):
                             p["stats"]["transitions"], len(p.get("trace") or ()))
                            for p in json.loads(out.getvalue())["properties"]]
     assert reports["native"] == reports["python"]
+
+
+def test_a_waiting_task_is_named_by_its_file_as_the_steps_name_it(monkeypatch, tmp_path):
+    # the backup by its absolute path, checked from elsewhere: T_ROB1 never steps in the
+    # counterexample, yet its wait names TASK1/PROGMOD/Rob1.mod:5 relative to the folder the
+    # steps are named from, never by the absolute path
+    monkeypatch.chdir(tmp_path)
+    backup = CASES / "sync_skip" / "backup"
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
+        main(["check", str(backup)])
+    text = out.getvalue()
+    assert "  waits forever: T_ROB1 waits at TASK1/PROGMOD/Rob1.mod:5 (WaitSyncTask" in text
+    assert f"  (files relative to {backup / 'RAPID'})" in text
+    assert f"{backup}/RAPID/TASK1" not in text

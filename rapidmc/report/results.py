@@ -28,10 +28,10 @@ from ..diagnostics import MORE_ERRORS, Diagnostic
 from ..diagnostics.error_report import omitted_count
 from ..check.result import UNKNOWN, VIOLATED, SearchResult, SearchStats
 from ..check.trace import Trace, TraceDescriber, TraceStep, build_trace
-from .counterexample import chosen_inputs_only, counterexample_lines
+from .counterexample import chosen_inputs_only, counterexample_lines, trace_files
 from .headline import read_data
 from .line_width import wrapped
-from .trace_text import IDENTIFIER, TextOptions
+from .trace_text import IDENTIFIER, TextOptions, file_names
 from .trace_slice import with_robot
 
 SCHEMA = "rapidmc-check/1"
@@ -83,11 +83,23 @@ def format_text(results: Sequence[PropertyResult], describer: TraceDescriber,
             lines.append(f"  formula: {checked.formula}")
             if checked.atom_tasks:
                 lines.append(f"  {atoms_text(checked.atom_tasks)}")
+            trace = build_trace(checked.result, describer)
             if checked.result.reason:
-                lines.append(f"  {checked.result.reason}")
-            lines.extend(counterexample_lines(build_trace(checked.result, describer),
-                                              text_options(checked, describer, full)))
+                lines.append(f"  {files_shown(checked.result.reason, trace)}")
+            lines.extend(counterexample_lines(trace, text_options(checked, describer, full)))
     return wrapped("\n".join(lines)) + "\n"
+
+
+# ``T_ROB1 waits at FILE:LINE (statement)`` in a reason (``RapidDescriber.describe_waits``)
+WAIT_PLACE = re.compile(r"(?<= at )(.+?)(?=:\d+ \()")
+
+
+def files_shown(text: str, trace: Trace) -> str:
+    """``text`` (a reason naming ``FILE:LINE``) with its files named as the trace's
+    counterexample names them (``TASK1/PROGMOD/Rob1.mod:64``, not the absolute path); a
+    task that never stepped in the trace waits in a file of its own, named the same way."""
+    names = file_names(trace_files(trace))
+    return WAIT_PLACE.sub(lambda found: names.shown(found.group(1)), text)
 
 
 def described_formula(checked: PropertyResult) -> str:
