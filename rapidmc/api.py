@@ -41,6 +41,7 @@ from .check import native
 from .check.budget import DEFAULT_MAX_STATES, time_check
 from .check.distributed import Cluster
 from .check.trace import Trace, build_trace
+from .check.walks import random_walks
 from .diagnostics import (AUTOMATON, DISTRIBUTED_SCOPE, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED,
                           TRACE_REPLAY, USAGE, Diagnostic, SourceCache,
                           error)
@@ -80,6 +81,8 @@ BUILTIN_RUNTIME = "no_runtime_error"
 BUILTIN_DEADLOCK = "no_deadlock"
 # a coverage probe's bound grows with the check's own search up to this many PROBE_STATES
 PROBE_GROWTH = 3.5
+# a probe its bound stops walks at random (check.walks) this many steps per state of the bound
+WALK_STEPS = 5
 # who else writes shared PERS data in the shared data probe (a one-task program's coverage)
 ANOTHER_TASK = "another task"
 
@@ -365,12 +368,37 @@ def _probe_search(program: Program, atoms: AtomCompiler, config: CheckConfig,
                             observe=watch, max_states=bound)
     executed = set(watch.statements.executed)
     complete = search.verdict == HOLDS
-    if not complete and config.free_inputs:
+    if complete:
+        return executed, complete
+    configs = [config]
+    if config.free_inputs:
         held = ExploredFacts(program, (), atoms)
-        find_reachable(RapidSystem(program, config.with_inputs_held(), reduction.NO_PLAN),
+        configs.insert(0, config.with_inputs_held())
+        find_reachable(RapidSystem(program, configs[0], reduction.NO_PLAN),
                        _never, observe=held, max_states=bound)
         executed |= held.statements.executed
+    for walked in configs:
+        executed |= _walked_lines(program, atoms, walked, bound * WALK_STEPS // len(configs))
     return executed, complete
+
+
+def _walked_lines(program: Program, atoms: AtomCompiler, config: CheckConfig,
+                  steps: int) -> set:
+    """The lines random walks of ``steps`` steps in all run (``check.walks``): where a
+    bounded breadth-first probe stops shallow, a walk goes as deep as it is long (a counter
+    wrapping after 98 messages, a command branch behind a long start-up).  Every step
+    is one of the program's under ``config``, so each line counts as reached."""
+    watch = ExploredFacts(program, (), atoms)
+    lines = watch.statements
+    random_walks(RapidSystem(program, config, reduction.NO_PLAN), lines, steps,
+                 _step_choices, lambda: len(lines.executed), enough=lambda: lines.saturated)
+    return watch.statements.executed
+
+
+def _step_choices(label) -> tuple:
+    """The environment's choices a step's label names (input, reading or message name,
+    value), for the walks' preferences; none for a stutter step."""
+    return label[0] if isinstance(label, tuple) else ()
 
 
 def _never(state) -> bool:

@@ -225,6 +225,7 @@ def _compared_constants(routines, chosen: dict) -> dict:
             if isinstance(node, ast.Binary) and node.op in COMPARISONS:
                 for side, other in ((node.left, node.right), (node.right, node.left)):
                     _note(found, chosen, scope, side, [other], node.op in ORDERINGS)
+                    _note_part(found, chosen, scope, side, other)
             elif isinstance(node, ast.Test):
                 _note(found, chosen, scope, node.subject,
                       [value for case in node.cases for value in case.values], False)
@@ -242,6 +243,24 @@ def _note(found: dict, chosen: dict, scope, side, others: list, ordered: bool) -
     part_type = _part_type(chosen[symbol.slot].type, path)
     for other in others:
         _spread(found, symbol.slot, path, part_type, other, scope, ordered)
+
+
+def _note_part(found: dict, chosen: dict, scope, side, other) -> None:
+    """``StrPart(data, start, length) = "text"`` with constant numbers and a text of that
+    length: the data holding the text at ``start`` (spaces before it) is one value to
+    offer, the value that makes the part equal (``WaitUntil StrPart(SocketStr,1,10) =
+    "workoffset"``: a command with its parameters after the word)."""
+    if not (isinstance(side, ast.FunctionCall) and side.name.key == "STRPART"):
+        return
+    values = [a.value for a in side.args if a.kind == ast.REQUIRED]
+    if len(values) != 3:
+        return
+    start, length = number_value(values[1], scope), number_value(values[2], scope)
+    text = _constant(other, scope)
+    if not isinstance(text, str) or start is None or length is None or start < 1 \
+            or start != int(start) or len(text) != length:
+        return
+    _note(found, chosen, scope, values[0], [" " * (int(start) - 1) + text], False)
 
 
 def _part_type(rapid_type, path: tuple):
