@@ -12,8 +12,9 @@ element type (arrays), for the value types only:
 
 * bool: both values;
 * num, dnum and string: the initial values and the constants the code
-  compares the component with (``= <>``, TEST ... CASE), plus one other
-  value; with an ordering comparison (``< <= > >=``), one value per place
+  compares the component with (``= <>``, TEST ... CASE; a string compared
+  through ``StrPart(data, start, n) = "text"``: the text at that start), plus
+  one other value; with an ordering comparison (``< <= > >=``), one value per place
   among those numbers (each number, one between each two, one beyond each
   end), as for the free analog inputs of ``input_domains``.  A component the
   code never compares with anything keeps its initial value: no branch of the
