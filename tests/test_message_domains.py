@@ -719,3 +719,36 @@ def test_code_after_a_return_is_unreached_under_any_input_beside_sampled_code(tm
     report = check_server(tmp_path, "            state := Parsed();", extra=AFTER_RETURN)
     tried = "never reached with the socket messages tried (SocketReceive at line 14)"
     assert coverage(report) == [tried, "never reached under any input", tried]
+
+
+@pytest.mark.parametrize("condition, wording", [
+    # cut by StrMatch: a PC may write "move ..." although no value tried starts so
+    ('StrMatch(command, 1, "move") = 1', "never reached with the values written from "
+     'outside tried (command at lines 7, 8, 10)'),
+    # compared with constants only: the domain tells every branch apart, and the second
+    # test of "a" is dead whatever a PC writes
+    ('command = "a"', "never reached under any input")])
+def test_code_unreached_with_data_written_from_outside_names_it_when_its_domain_is_a_sample(
+        tmp_path, condition, wording):
+    """A PC writes ``command`` (no loaded write ends the wait, ``awaited_from_outside``);
+    its domain is the texts the code compares it with and one other.  Where the code
+    does more with it than compare (StrMatch, StrPart, StrFind, StrToVal, arithmetic),
+    that domain is a sample, so code it leaves unreached is not "under any input": the
+    warning names the data's reads."""
+    path = tmp_path / "pc.mod"
+    path.write_text(f"""MODULE Pc
+    PERS string command := "";
+    VAR num moved := 0;
+    PROC main()
+        command := "";
+        moved := 0;
+        WaitUntil command <> "";
+        IF {condition} THEN
+            moved := 1;
+        ELSEIF command = "a" THEN
+            moved := 2;
+        ENDIF
+    ENDPROC
+ENDMODULE
+""")
+    assert coverage(api.check(api.load_program([str(path)])))[0] == wording
