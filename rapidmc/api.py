@@ -41,6 +41,7 @@ from .check import native
 from .check.budget import DEFAULT_MAX_STATES, time_check
 from .check.distributed import Cluster
 from .check.trace import Trace, build_trace
+from .check.walks import random_walks
 from .diagnostics import (AUTOMATON, DISTRIBUTED_SCOPE, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED,
                           TRACE_REPLAY, USAGE, Diagnostic, SourceCache,
                           error)
@@ -80,6 +81,11 @@ BUILTIN_RUNTIME = "no_runtime_error"
 BUILTIN_DEADLOCK = "no_deadlock"
 # a coverage probe's bound grows with the check's own search up to this many PROBE_STATES
 PROBE_GROWTH = 3.5
+# a probe its bound stops walks at random (check.walks) this many steps per state of the
+# bound, at most WALK_LIMIT steps in all (a walk's step costs about what a state of the
+# breadth-first search costs; a program with several stopped probes pays for each)
+WALK_STEPS = 5
+WALK_LIMIT = 60_000
 # who else writes shared PERS data in the shared data probe (a one-task program's coverage)
 ANOTHER_TASK = "another task"
 
@@ -276,7 +282,7 @@ def _probed_lines(model: Model, bound: int) -> set:
             messages = tuple(replace(d, messages=(probe,)) if d is domain else d
                              for d in model.messages)
             config, _ = _check_config(model.program, model.atoms, model.options, messages)
-            lines |= _probe_search(model.program, model.atoms, config, bound)[0]
+            lines |= _probe_search(model.program, model.atoms, config, bound, walks=False)[0]
     return lines
 
 
@@ -353,24 +359,52 @@ def _shared_data_probe(model: Model, bound: int) -> set:
 
 
 def _probe_search(program: Program, atoms: AtomCompiler, config: CheckConfig,
-                  bound: int) -> tuple:
+                  bound: int, walks: bool = True) -> tuple:
     """The lines a coverage probe's search of ``program`` under ``config`` runs, and whether
     it was complete.  One the bound stops while inputs change at every step (an interrupt
     on each of four digital inputs multiplies each step by 16: breadth-first, the probe
     spends its bound on the first hundred steps of a long start-up routine) searches again
     with those inputs held (``CheckConfig.with_inputs_held``): each state of that search
-    is reachable too, so its lines count; completeness stays the first search's."""
+    is reachable too, so its lines count; completeness stays the first search's.  Then,
+    unless ``walks`` is False (the many small per-message probes), it walks the program
+    at random, held and not (``_walked_lines``)."""
     watch = ExploredFacts(program, (), atoms)
     search = find_reachable(RapidSystem(program, config, reduction.NO_PLAN), _never,
                             observe=watch, max_states=bound)
     executed = set(watch.statements.executed)
     complete = search.verdict == HOLDS
-    if not complete and config.free_inputs:
+    if complete:
+        return executed, complete
+    configs = [config]
+    if config.free_inputs:
         held = ExploredFacts(program, (), atoms)
-        find_reachable(RapidSystem(program, config.with_inputs_held(), reduction.NO_PLAN),
+        configs.insert(0, config.with_inputs_held())
+        find_reachable(RapidSystem(program, configs[0], reduction.NO_PLAN),
                        _never, observe=held, max_states=bound)
         executed |= held.statements.executed
+    steps = min(bound * WALK_STEPS, WALK_LIMIT) if walks else 0
+    for walked in configs:
+        executed |= _walked_lines(program, atoms, walked, steps // len(configs))
     return executed, complete
+
+
+def _walked_lines(program: Program, atoms: AtomCompiler, config: CheckConfig,
+                  steps: int) -> set:
+    """The lines random walks of ``steps`` steps in all run (``check.walks``): where a
+    bounded breadth-first probe stops shallow, a walk goes as deep as it is long (a counter
+    wrapping after 98 messages, a command branch behind a long start-up).  Every step
+    is one of the program's under ``config``, so each line counts as reached."""
+    watch = ExploredFacts(program, (), atoms)
+    lines = watch.statements
+    random_walks(RapidSystem(program, config, reduction.NO_PLAN), lines, steps,
+                 _step_choices, lambda: len(lines.executed), enough=lambda: lines.saturated)
+    return watch.statements.executed
+
+
+def _step_choices(label) -> tuple:
+    """The environment's choices a step's label names (input, reading or message name,
+    value), for the walks' preferences; none for a stutter step."""
+    return label[0] if isinstance(label, tuple) else ()
 
 
 def _never(state) -> bool:

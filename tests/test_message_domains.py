@@ -341,6 +341,7 @@ def test_an_output_no_loaded_code_sets_is_an_input(tmp_path, monkeypatch, setter
     calls), the output is no input: the code after the wait is dead."""
     monkeypatch.setattr(api, "PROBE_STATES", probe_states)
     monkeypatch.setattr(api, "PROBE_GROWTH", 1)          # (the bound is PROBE_STATES)
+    monkeypatch.setattr(api, "WALK_STEPS", 0)            # (no walks after a stopped probe)
     path = tmp_path / "cell.mod"
     path.write_text("MODULE Cell\n    VAR num state := 0;\n    PROC main()\n"
                     "        WaitUntil DOutput(doCycleOn) = 1;\n        state := 1;\n"
@@ -506,6 +507,59 @@ def test_a_probe_the_inputs_make_broad_searches_again_with_them_held(
     assert bool(coverage(report)) != reached
 
 
+RELAY = """MODULE Relay
+    PERS string command := "";
+    PERS string logged{30} := ["","","","","","","","","","","","","","","",
+                               "","","","","","","","","","","","","","",""];
+    VAR num count := 1;
+    VAR socketdev client;
+    VAR string received;
+    PROC main()
+        SocketCreate client;
+        SocketConnect client, "10.0.0.2", 5000 \\Time:=WAIT_MAX;
+        WHILE TRUE DO
+            WHILE command = "" DO
+                SocketReceive client \\Str:=received \\Time:=WAIT_MAX;
+                command := received + "#";
+                count := count + 1;
+                logged{count} := received;
+                IF count > 24 THEN
+                    count := 1;
+                    TPWrite "first logged: " + logged{1};
+                ENDIF
+                IF received = "stop" OR received = "home" THEN
+                    TPWrite "command " + received;
+                ENDIF
+            ENDWHILE
+            WaitTime 0.1;
+        ENDWHILE
+    ENDPROC
+ENDMODULE
+"""
+
+
+@pytest.mark.parametrize("walk_steps, reached", [(api.WALK_STEPS, True), (0, False)])
+def test_a_counter_wrapping_after_many_messages_is_reached_by_the_probes_walks(
+        tmp_path, monkeypatch, walk_steps, reached):
+    """The Hanoi socket task's pattern: each message goes into a mailbox another task
+    empties, and into a log whose counter wraps after 24 messages.  Checked alone, the
+    task stops after one message; the shared data probe lets the mailbox's poll see it
+    emptied, but the log keeps every message, so its breadth-first search spends its
+    20,000 states on the first few messages.  Random walks (``check.walks``) then go
+    as deep as they are long, and the wrap-around runs.  Without the walks it stays
+    reported, naming the messages and the data the probe chose."""
+    monkeypatch.setattr(api, "WALK_STEPS", walk_steps)
+    path = tmp_path / "relay.mod"
+    path.write_text(RELAY)
+    report = api.check(api.load_program([str(path)]))
+    line = next(n for n, text in enumerate(RELAY.splitlines(), 1) if text.strip() == "count := 1;")
+    assert ((str(path), line) in report.executed) == reached
+    assert coverage(report) == ([] if reached else [
+        f"lines {line}-{line + 1} of main are never reached with the socket messages tried "
+        "and no other task writing the persistent data (command at line 12; SocketReceive "
+        "at line 13)"])
+
+
 def test_a_handler_a_closure_reaches_behind_a_wait_for_an_output_is_reached(tmp_path):
     """The Hanoi socket task connects only once an output no loaded code sets is 1, and
     handles a closed connection in ``main``'s ERROR handler.  The closure probe alone waits
@@ -665,3 +719,36 @@ def test_code_after_a_return_is_unreached_under_any_input_beside_sampled_code(tm
     report = check_server(tmp_path, "            state := Parsed();", extra=AFTER_RETURN)
     tried = "never reached with the socket messages tried (SocketReceive at line 14)"
     assert coverage(report) == [tried, "never reached under any input", tried]
+
+
+@pytest.mark.parametrize("condition, wording", [
+    # cut by StrMatch: a PC may write "move ..." although no value tried starts so
+    ('StrMatch(command, 1, "move") = 1', "never reached with the values written from "
+     'outside tried (command at lines 7, 8, 10)'),
+    # compared with constants only: the domain tells every branch apart, and the second
+    # test of "a" is dead whatever a PC writes
+    ('command = "a"', "never reached under any input")])
+def test_code_unreached_with_data_written_from_outside_names_it_when_its_domain_is_a_sample(
+        tmp_path, condition, wording):
+    """A PC writes ``command`` (no loaded write ends the wait, ``awaited_from_outside``);
+    its domain is the texts the code compares it with and one other.  Where the code
+    does more with it than compare (StrMatch, StrPart, StrFind, StrToVal, arithmetic),
+    that domain is a sample, so code it leaves unreached is not "under any input": the
+    warning names the data's reads."""
+    path = tmp_path / "pc.mod"
+    path.write_text(f"""MODULE Pc
+    PERS string command := "";
+    VAR num moved := 0;
+    PROC main()
+        command := "";
+        moved := 0;
+        WaitUntil command <> "";
+        IF {condition} THEN
+            moved := 1;
+        ELSEIF command = "a" THEN
+            moved := 2;
+        ENDIF
+    ENDPROC
+ENDMODULE
+""")
+    assert coverage(api.check(api.load_program([str(path)])))[0] == wording

@@ -98,6 +98,9 @@ NO_INTERRUPT = "no interrupt coming that the check does not model"
 # a read of the robot's position that does more than shape a move's target: the check's
 # robot starts at its home position, a real one wherever the last program left it
 START = "the robot starting at the check's home position"
+# data written from outside (load.outside_data) that the code does more with than compare
+# with constants: its domain (the constants compared, one other value, ...) is a sample
+OUTSIDE_VALUES = "values written from outside"
 PHRASES = (PEERS_OPEN, PORT_FREE, FIXED, UNSET, UNWRITTEN, EGM_UP,
            NO_INTERRUPT, START)   # kinds that are phrases of their own
 
@@ -148,6 +151,8 @@ def sampled_inputs(program: Program, exact: Iterable[tuple] = (),
               for call in unmodelled_interrupt_orders(program)]
     found += [TriedInput(START, call.name.text, call.span)
               for call in start_position_reads(program)]
+    found += [TriedInput(OUTSIDE_VALUES, ref.name.text, ref.span)
+              for ref in sampled_outside_reads(program)]
     return tuple(sorted(set(found), key=lambda t: (t.span.file, t.span.line, t.span.column)))
 
 
@@ -237,6 +242,65 @@ def unwritten_pers_reads(program: Program) -> list:
                         and data.slot not in outside:
                     reads.append(ref)
     return reads
+
+
+def sampled_outside_reads(program: Program) -> list:
+    """The reads of PERS data the check chooses as written from outside
+    (``Program.outside_data``) whose domain is a sample: data of a string or number
+    component that some read does more with than compare with a constant (``=``, ``<>``,
+    an ordering, TEST ... CASE): cut with StrPart, searched with StrFind, parsed, computed
+    with.  Its domain holds the constants compared and a few texts built for such reads
+    (``load.outside_data``); a PC may write any other, and code unreached with the values
+    tried may run with one of those (``IF StrMatch(command, 1, "move") = 1``).  Every
+    read of such data is named; data only compared with constants (or bool) has an exact
+    domain and is not."""
+    outside = getattr(program, "outside_data", None) or {}
+    if not outside:
+        return []
+    reads: dict = {}                 # slot -> its reads
+    sampled = set()
+    for routine in program.routines:
+        if routine.ast is None or routine.namespace == ENVIRONMENT_NAMESPACE:
+            continue
+        for node, parents in ast.walk(routine.ast):
+            if not isinstance(node, ast.NameRef):
+                continue
+            symbol = routine.scope.lookup(node.name.key)
+            if symbol is None or symbol.kind != GLOBAL_DATA or symbol.slot not in outside:
+                continue
+            outer, above = _whole_read(node, parents)
+            if isinstance(above, ast.Assignment) and above.target is outer:
+                continue                                    # (a write)
+            reads.setdefault(symbol.slot, []).append(node)
+            if not _compared_with_constant(outer, above) and \
+                    any(values and not isinstance(values[0], bool)
+                        for values in outside[symbol.slot].domains.values()):
+                sampled.add(symbol.slot)
+    return [ref for slot in sorted(sampled) for ref in reads[slot]]
+
+
+def _whole_read(node, parents: tuple) -> tuple:
+    """The data path expression a name starts (``name.c{i}``) and the node above it."""
+    index = len(parents)
+    outer = node
+    while index and isinstance(parents[index - 1], (ast.Component, ast.Index)) and \
+            parents[index - 1].base is outer:
+        outer = parents[index - 1]
+        index -= 1
+    return outer, parents[index - 1] if index else None
+
+
+def _compared_with_constant(outer, above) -> bool:
+    """Whether the read ``outer`` is a side of a comparison with a literal, or what a TEST
+    tells apart."""
+    if isinstance(above, ast.Test):
+        return above.subject is outer
+    if isinstance(above, ast.Binary) and above.op in ("=", "<>", "<", "<=", ">", ">="):
+        other = above.right if above.left is outer else above.left
+        if isinstance(other, ast.Unary) and other.op in ("-", "+"):
+            other = other.operand
+        return isinstance(other, (ast.NumLiteral, ast.StringLiteral, ast.BoolLiteral))
+    return False
 
 
 def _conditions(routine_ast):

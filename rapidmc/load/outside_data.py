@@ -12,8 +12,10 @@ element type (arrays), for the value types only:
 
 * bool: both values;
 * num, dnum and string: the initial values and the constants the code
-  compares the component with (``= <>``, TEST ... CASE), plus one other
-  value; with an ordering comparison (``< <= > >=``), one value per place
+  compares the component with (``= <>``, TEST ... CASE; a string compared
+  through ``StrPart(data, start, n) = "text"``: the text at that start; one
+  cut at a separator with StrFind: a text of that many fields, ``_note_fields``),
+  plus one other value; with an ordering comparison (``< <= > >=``), one value per place
   among those numbers (each number, one between each two, one beyond each
   end), as for the free analog inputs of ``input_domains``.  A component the
   code never compares with anything keeps its initial value: no branch of the
@@ -217,6 +219,7 @@ def _elements(value, rank: int) -> list:
 def _compared_constants(routines, chosen: dict) -> dict:
     """(slot, path) -> [constants, ordered?, compared with a non-constant?] from the code."""
     found: dict = {}
+    words: dict = {}            # (slot, path) -> the words StrPart compares at the start
     for routine in routines:
         if routine.ast is None:
             continue
@@ -225,9 +228,11 @@ def _compared_constants(routines, chosen: dict) -> dict:
             if isinstance(node, ast.Binary) and node.op in COMPARISONS:
                 for side, other in ((node.left, node.right), (node.right, node.left)):
                     _note(found, chosen, scope, side, [other], node.op in ORDERINGS)
+                    _note_part(found, words, chosen, scope, side, other)
             elif isinstance(node, ast.Test):
                 _note(found, chosen, scope, node.subject,
                       [value for case in node.cases for value in case.values], False)
+    _note_fields(found, words, routines, chosen)
     return found
 
 
@@ -242,6 +247,88 @@ def _note(found: dict, chosen: dict, scope, side, others: list, ordered: bool) -
     part_type = _part_type(chosen[symbol.slot].type, path)
     for other in others:
         _spread(found, symbol.slot, path, part_type, other, scope, ordered)
+
+
+def _note_part(found: dict, words: dict, chosen: dict, scope, side, other) -> None:
+    """``StrPart(data, start, length) = "text"`` with constant numbers and a text of that
+    length: the data holding the text at ``start`` (spaces before it) is one value to
+    offer, the value that makes the part equal (``WaitUntil StrPart(SocketStr,1,10) =
+    "workoffset"``: a command with its parameters after the word)."""
+    if not (isinstance(side, ast.FunctionCall) and side.name.key == "STRPART"):
+        return
+    values = [a.value for a in side.args if a.kind == ast.REQUIRED]
+    if len(values) != 3:
+        return
+    start, length = number_value(values[1], scope), number_value(values[2], scope)
+    text = _constant(other, scope)
+    if not isinstance(text, str) or start is None or length is None or start < 1 \
+            or start != int(start) or len(text) != length:
+        return
+    _note(found, chosen, scope, values[0], [" " * (int(start) - 1) + text], False)
+    located = data_path(values[0])
+    symbol = scope.lookup(located[0].name.key) if located is not None else None
+    if start == 1 and symbol is not None and symbol.slot in chosen:
+        words.setdefault((symbol.slot, located[1]), set()).add(text)
+
+
+MAX_FIELDS = 12           # the most separators a value offered for a parsed text holds
+
+
+def _note_fields(found: dict, words: dict, routines, chosen: dict) -> None:
+    """A string the code cuts into fields (``StrFind(data, start, ",")``, then StrPart
+    and StrToVal at the positions found) also takes a text of that many fields: "1"
+    after each separator, as many as the routine that searches most for it looks for
+    (a search in a FOR loop of constant bounds counts once per round), after each word
+    a StrPart compares at the start (``workoffset,1,1,1,1,1,1``) and alone
+    (``1,1,1``).  Without it every value of the domain lacks the separators, and the
+    parse after a wait raises where a PC's message would not."""
+    searched: dict = {}              # (slot, path, separator) -> most searches in a routine
+    for routine in routines:
+        if routine.ast is None:
+            continue
+        counts: dict = {}
+        for node, parents in ast.walk(routine.ast):
+            key = _field_search(node, chosen, routine.scope)
+            if key is not None:
+                rounds = 1
+                for parent in parents:
+                    if isinstance(parent, ast.For):
+                        rounds *= _rounds(parent, routine.scope)
+                counts[key] = counts.get(key, 0) + rounds
+        for key, count in counts.items():
+            searched[key] = max(searched.get(key, 0), count)
+    for (slot, path, separator), count in searched.items():
+        entry = found.setdefault((slot, path), [set(), False, False])
+        fields = (separator + "1") * min(count, MAX_FIELDS)
+        entry[0].update({"1" + fields} | {word + fields for word in words.get((slot, path), ())
+                                          if separator not in word})
+
+
+def _field_search(node, chosen: dict, scope) -> Optional[tuple]:
+    """(slot, path, separator) for ``StrFind(data, start, "c")`` on chosen string data."""
+    if not (isinstance(node, ast.FunctionCall) and node.name.key == "STRFIND"):
+        return None
+    values = [a.value for a in node.args if a.kind == ast.REQUIRED]
+    if len(values) != 3:
+        return None
+    separator = _constant(values[2], scope)
+    located = data_path(values[0])
+    if not isinstance(separator, str) or len(separator) != 1 or located is None:
+        return None
+    ref, path = located
+    symbol = scope.lookup(ref.name.key)
+    if symbol is None or symbol.slot not in chosen or symbol.kind != GLOBAL_DATA:
+        return None
+    return symbol.slot, path, separator
+
+
+def _rounds(loop, scope) -> int:
+    """The rounds of a FOR loop with constant bounds (1 when not constant)."""
+    start, stop = number_value(loop.start, scope), number_value(loop.stop, scope)
+    step = number_value(loop.step, scope) if loop.step is not None else 1.0
+    if start is None or stop is None or not step:
+        return 1
+    return max(1, int((stop - start) / step) + 1)
 
 
 def _part_type(rapid_type, path: tuple):

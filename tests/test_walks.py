@@ -1,0 +1,68 @@
+"""Random walks over a transition system (``rapidmc.check.walks``): the coverage probes'
+look beyond a bounded breadth-first search.  A walk observes only states it reaches by
+the system's own steps, keeps to the environment's first choices within a walk (so a
+choice that undoes progress at every step still lets some walk go deep), and repeats
+itself for the same seed."""
+from __future__ import annotations
+
+import pytest
+
+from rapidmc.check import walks
+from rapidmc.check.walks import random_walks
+
+pytestmark = pytest.mark.engine_independent      # no RAPID search: see tests/conftest.py
+
+DEPTH = 200
+
+
+class Ladder:
+    """A counter that a signal read at every step moves up (1) or resets (0); a wait that
+    stays put is offered too.  Depth 200 needs 200 ups in a row: a uniform choice at each
+    step gets there with chance 2**-200."""
+
+    def initial_states(self):
+        return (0,)
+
+    def successors(self, state):
+        if state == DEPTH:
+            return ((((), "top"), state),)          # ended: its only step stays put
+        return (((("signal", 1.0),), "up"), state + 1), \
+            (((("signal", 0.0),), "reset"), 0), \
+            ((("wait",), "wait"), state)
+
+
+def seen_by(steps: int, seed: int = 0) -> list:
+    """The states the walks observe, in order; a walk found something when it went
+    higher than any before."""
+    seen: list = []
+    highest = [0]
+
+    def observe(state, successors):
+        seen.append(state)
+        highest[0] = max(highest[0], state)
+
+    random_walks(Ladder(), observe, steps,
+                 lambda label: label[0] if label[0] and label[0][0] != "wait" else (),
+                 lambda: highest[0], seed=seed)
+    return seen
+
+
+def test_sticky_choices_let_a_walk_reach_what_uniform_choices_never_do(monkeypatch):
+    assert DEPTH in seen_by(40000)         # (about one walk in six keeps to "up")
+    monkeypatch.setattr(walks, "STICKINESS", (0.0,))
+    assert max(seen_by(40000)) < 40
+
+
+def test_a_walk_moves_by_the_systems_steps_or_starts_where_walks_went_before():
+    seen = seen_by(3000)
+    assert seen[0] == 0
+    for number, (before, after) in enumerate(zip(seen, seen[1:])):
+        # up, reset, or a new walk from the start or from a state seen before (a state
+        # some walk reached)
+        assert after in (before + 1, 0) or after in seen[:number + 1]
+
+
+def test_walks_repeat_themselves_for_a_seed_and_stop_at_their_steps():
+    assert seen_by(2000, seed=3) == seen_by(2000, seed=3)
+    assert seen_by(2000, seed=3) != seen_by(2000, seed=4)
+    assert len(seen_by(777)) == 777
