@@ -32,6 +32,7 @@ from rapidmc.commands.check import prepare_model
 
 from dead_data_programs import dead_data_program, dead_data_properties
 from test_check_cases import verdict_cases
+from test_reduction import DEAD_DATA_PATHS
 
 REACHED_STATES = 3000      # plain states compared per program (breadth first)
 SEEDS = range(30)
@@ -182,30 +183,16 @@ def test_a_request_read_again_after_trynext_stays_live(tmp_path):
     assert "reply" in dead[RECEIVE_LINE]
 
 
-CALLED = """MODULE M
-  VAR num g := 0;
-  VAR num h := 0;
-  VAR bool failed := FALSE;
-  PROC look()
-    IF g = 5 failed := TRUE;
-  ENDPROC
-  PROC outer()
-    look;
-  ENDPROC
-  PROC main()
-    g := 5;
-    h := 1;
-    outer;
-    h := 0;
-    g := 0;
-  ENDPROC
-ENDMODULE
-"""
+# test_reduction's program whose property fails when a call forgets what a routine it calls
+# reads, with a global h no routine names, written again after the call
+CALLED = DEAD_DATA_PATHS["call"].replace("  VAR num g := 0;\n", "  VAR num g := 0;\n  VAR num h := 0;\n") \
+    .replace("    outer;\n", "    h := 1;\n    outer;\n    h := 0;\n")
+CALL_LINE = CALLED.splitlines().index("    outer;") + 1
 
 
 def test_a_call_keeps_what_its_routines_read_and_forgets_the_rest(tmp_path):
     dead = dead_globals_by_line(CALLED, tmp_path, {"FAILED"})
-    assert dead[14] == {"h"}           # outer; reads g through look, never h
+    assert dead[CALL_LINE] == {"h"}           # outer; reads g through look, never h
     late = dead_globals_by_line(CALLED.replace("    outer;", '    %"outer"%;'), tmp_path,
                                 {"FAILED"})
-    assert late[14] == set()           # a routine called by a computed name may read any
+    assert late[CALL_LINE] == set()           # a routine called by a computed name may read any
