@@ -6,9 +6,17 @@ re-executed step by step by the plain step function: each reduced
 transition becomes the unreduced steps that execute the same lines with
 the same choices and end in a state the projection maps onto the reduced
 one.  The trace then lists every RAPID line executed and the actual value
-of every sliced data object.  The loop closes onto a state equal to the
-loop's first state in everything but sliced data (a cycle counter, say,
-keeps counting).
+of every sliced data object.
+
+The reduced loop may close onto a plain state that differs from the loop's
+first plain state in data the projection resets (a reply string written in
+the loop and dead where the loop starts holds its initial value the first
+time round and the last reply after).  The loop is then followed again, up
+to ``UNROLLINGS`` times, until it comes back to the plain state at the
+start of one of its rounds; the rounds before that one join the prefix.
+Only a loop that never closes so (a sliced cycle counter that keeps
+counting) closes onto the first round's state, equal in all but the data
+the projection resets.
 """
 from __future__ import annotations
 
@@ -42,16 +50,51 @@ def expand_lasso(system, result: SearchResult) -> None:
             loop_start = len(expanded) - 1
     closing = result.closing_label
     if result.cycle:
-        path = _follow(plain, expanded[-1].state, closing, result.cycle[0].state, project)
-        if path is None:
+        closed = _close(plain, expanded, loop_start, result, project)
+        if closed is None:
             return
-        automaton = result.cycle[-1].automaton_state
-        expanded.extend(LassoStep(label, state, automaton) for label, state in path[:-1])
-        closing = path[-1][0]
+        expanded, loop_start, closing = closed
         result.prefix, result.cycle = expanded[:loop_start], expanded[loop_start:]
     else:
         result.prefix, result.cycle = expanded, []
     result.closing_label = closing
+
+
+UNROLLINGS = 8      # further rounds of a reduced loop followed to close it on plain states
+
+
+def _close(plain, expanded: list, loop_start: int, result: SearchResult,
+           project: Callable) -> Optional[tuple[list, int, Hashable]]:
+    """(steps, index of the loop's first step, closing label): ``expanded`` (which ends
+    after the loop's last step) with the loop followed again until its closing step comes
+    back to the plain state of a round's start; None when a step cannot be followed."""
+    cycle = result.cycle
+    rounds = {expanded[loop_start].state: loop_start}     # plain state -> its round's index
+    automaton = cycle[-1].automaton_state
+    first_closing = None
+    for _ in range(UNROLLINGS + 1):
+        path = _follow(plain, expanded[-1].state, result.closing_label, cycle[0].state, project)
+        if path is None:
+            return None
+        if first_closing is None:
+            first_closing = expanded, path
+        start = rounds.get(path[-1][1])
+        if start is None and len(rounds) > UNROLLINGS:
+            # it closes in all but data projected away only (a counter that keeps counting)
+            (expanded, path), start = first_closing, loop_start
+        if start is not None:
+            steps = expanded + [LassoStep(label, state, automaton) for label, state in path[:-1]]
+            return steps, start, path[-1][0]
+        expanded = expanded + [LassoStep(label, state, automaton) for label, state in path[:-1]]
+        expanded.append(LassoStep(path[-1][0], path[-1][1], cycle[0].automaton_state))
+        rounds[path[-1][1]] = len(expanded) - 1
+        for step in cycle[1:]:
+            path = _follow(plain, expanded[-1].state, step.label, step.state, project)
+            if path is None:
+                return None
+            expanded.extend(LassoStep(label, state, step.automaton_state)
+                            for label, state in path)
+    return None
 
 
 def _follow(plain, state, label, target, project: Callable) -> Optional[Path]:

@@ -6,13 +6,22 @@ state.  Sliced data (``relevance``) is reset everywhere; dead data
 it is read.  The program still computes those values while a step runs
 (from the reset values); the analyses guarantee that nothing observable
 depends on them, so the next stored state is the same whatever they were.
+
+The resets must also agree along every step: data reset in a state and
+not written by the step is reset again in the state after it, or the
+stored successor of a projected state would differ from the projection of
+the program's own successor, and a counterexample rebuilt on the plain
+program (``expansion``) would not reach it.  Dead globals therefore go by
+main's program counter whatever runs above main (main waits at its call,
+where dead data stays dead until the call returns), not only while main
+runs alone.
 """
 from __future__ import annotations
 
 from typing import Optional
 
 from ...semantics.program import Program
-from ...semantics.state import Frame, State
+from ...semantics.state import IN_HANDLER, Frame, State
 from .liveness import DeadData
 from .relevance import Slicing
 
@@ -31,23 +40,32 @@ class Projection:
         self._equal_initial: dict[int, object] = {}
         self.main = program.entry
         self.main_resets: list[tuple] = []
+        # main in its ERROR handler: per (pc, start of the statement that raised)
+        self.main_handler_resets: dict[tuple, tuple] = {}
         self.final_resets: tuple = self.global_resets
         if dead is not None and dead.globals:
             self.main_resets = [_resets(sliced | set(slots), initial_global)
                                 for slots in dead.globals]
+            self.main_handler_resets = {node: _resets(sliced | set(slots), initial_global)
+                                        for node, slots in dead.handler_globals.items()}
         if dead is not None and dead.final_globals:
             self.final_resets = _resets(sliced | set(dead.final_globals), initial_global)
         self.frame_resets: dict[int, list[tuple]] = {}
+        self.handler_frame_resets: dict[int, dict[tuple, tuple]] = {}
         for routine in program.routines:
             always = set(slicing.locals.get(routine.index, ()))
             per_pc = dead.locals.get(routine.index) if dead is not None else None
-            if not always and not per_pc:
+            per_node = dead.handler_locals.get(routine.index, {}) if dead is not None else {}
+            if not always and not per_pc and not per_node:
                 continue
             initial = routine.initial_locals
             per_pc_resets = [_resets(always | set(per_pc[pc] if per_pc else ()), initial)
                              for pc in range(max(len(routine.code), 1))]
-            if any(per_pc_resets):
+            handler_resets = {node: _resets(always | set(slots), initial)
+                              for node, slots in per_node.items()}
+            if any(per_pc_resets) or any(handler_resets.values()):
                 self.frame_resets[routine.index] = per_pc_resets
+                self.handler_frame_resets[routine.index] = handler_resets
 
     def keeps_fused_targets(self, sliced: set, written: set, main_stops: set) -> bool:
         """Whether the fused step's targets from projected states are projected already:
@@ -68,8 +86,11 @@ class Projection:
         frames, store, tasks = state[0], state[1], state[10]
         if not frames:
             resets = self.final_resets
-        elif self.main_resets and len(frames) == 1 and not tasks and frames[0][0] == self.main:
-            resets = self.main_resets[frames[0][1]]
+        elif self.main_resets and not tasks and frames[0][0] == self.main:
+            bottom = frames[0]
+            resets = self.main_resets[bottom[1]]
+            if bottom[3] == IN_HANDLER:
+                resets = self.main_handler_resets.get((bottom[1], bottom[4]), resets)
         else:
             resets = self.global_resets
         equal = self._equal_initial
@@ -114,6 +135,9 @@ class Projection:
             per_pc = self.frame_resets.get(frame[0])
             if per_pc:
                 resets = per_pc[frame[1]] if 0 <= frame[1] < len(per_pc) else ()
+                if frame[3] == IN_HANDLER:
+                    resets = self.handler_frame_resets[frame[0]].get((frame[1], frame[4]),
+                                                                     resets)
                 values = frame[2]
                 if any(values[slot] != initial for slot, initial in resets):
                     values = list(values)
