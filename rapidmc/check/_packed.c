@@ -185,6 +185,14 @@ typedef struct {
     StateIndex own;
     /* the reduction's numbering of states (``PartialOrder``'s C3): every search's */
     StateIndex places;
+    /* the successors of the reduced steps by the state's number, kept for the check's
+     * later searches (a state's ample set is the same whenever asked): row_at[place] is
+     * where its row starts in row_keys (a count, then the successors' keys), -1: none */
+    int64_t *row_at;
+    Py_ssize_t row_at_capacity;
+    int64_t *row_keys;
+    Py_ssize_t row_length, row_capacity;
+    long long rows_reused;
 } PackedTable;
 
 typedef struct {
@@ -1874,6 +1882,56 @@ static int number_targets(PackedTable *table, Scratch *scratch, Successors *foun
     return VM_DONE;
 }
 
+/* The row kept for the state numbered ``place`` into ``found``: 1, or 0 (none kept), -1. */
+static int row_recall(PackedTable *table, Py_ssize_t place, Successors *found)
+{
+    if (place >= table->row_at_capacity || table->row_at[place] < 0)
+        return 0;
+    const int64_t *row = table->row_keys + table->row_at[place];
+    found->count = 0;
+    for (int64_t i = 1; i <= row[0]; i++)
+        if (add_successor(found, (int32_t)(row[i] >> 32), (int32_t)(row[i] & 0xffffffff)) < 0)
+            return -1;
+    return 1;
+}
+
+/* Keep ``found`` as the row of the state numbered ``place`` (once).  0 or -1. */
+static int row_keep(PackedTable *table, Py_ssize_t place, const Successors *found)
+{
+    if (place >= table->row_at_capacity) {
+        Py_ssize_t capacity = table->row_at_capacity;
+        int64_t *at = reserve(table->row_at, &capacity, sizeof(int64_t), place + 1);
+        if (at == NULL)
+            return -1;
+        for (Py_ssize_t i = table->row_at_capacity; i < capacity; i++)
+            at[i] = -1;
+        table->row_at = at;
+        table->row_at_capacity = capacity;
+    }
+    if (table->row_at[place] >= 0)
+        return 0;
+    int64_t *keys = reserve(table->row_keys, &table->row_capacity, sizeof(int64_t),
+                            table->row_length + 1 + found->count);
+    if (keys == NULL)
+        return -1;
+    table->row_keys = keys;
+    table->row_at[place] = table->row_length;
+    keys[table->row_length++] = found->count;
+    for (Py_ssize_t i = 0; i < found->count; i++)
+        keys[table->row_length++] = state_key(found->frames[i], found->data[i]);
+    return 0;
+}
+
+/* the number of stored state ``id`` (-1: none, -2: an error), where rows are kept: reduced
+ * steps, and no observer wants the lines steps run (a kept row names none) */
+static Py_ssize_t row_place(PackedTable *table, Py_ssize_t id, int labels_wanted)
+{
+    if (!table->reduced || labels_wanted)
+        return -1;
+    int64_t key = table->states.keys[id];
+    return place_of(table, (int32_t)(key >> 32), (int32_t)(key & 0xffffffff), 0);
+}
+
 /* ``machine_step`` for a program of several tasks (``staged_step.staged_successors``
  * without interrupts, stored inputs or an environment): each running task's
  * instruction in task order, by the machine where it can and else by Python for that
@@ -1883,7 +1941,30 @@ static int number_targets(PackedTable *table, Scratch *scratch, Successors *foun
  * one task is kept where there is one.  VM_UNSUPPORTED: Python steps the whole state (a
  * context the machine does not run in, or Python asked for it, or decides the ample
  * set). */
+static int tasks_step_anew(PackedTable *table, Py_ssize_t id, Scratch *scratch,
+                           Successors *found);
+
+/* ``tasks_step_anew``, or the row an earlier step of the state kept (reduced) */
 static int tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Successors *found)
+{
+    Py_ssize_t place = row_place(table, id, table->labels_wanted);
+    if (place == -2)
+        return -1;
+    int recalled = place >= 0 ? row_recall(table, place, found) : 0;
+    if (recalled != 0) {
+        table->rows_reused += recalled > 0;
+        return recalled > 0 ? VM_DONE : -1;
+    }
+    int outcome = tasks_step_anew(table, id, scratch, found);
+    if (outcome == VM_DONE && place == -1 && table->reduced && !table->labels_wanted)
+        place = row_place(table, id, 0);        /* (numbered by this step) */
+    if (outcome == VM_DONE && place >= 0 && row_keep(table, place, found) < 0)
+        return -1;
+    return place == -2 ? -1 : outcome;
+}
+
+static int tasks_step_anew(PackedTable *table, Py_ssize_t id, Scratch *scratch,
+                           Successors *found)
 {
     scratch->numbered = 0;
     if (table->reduced) {
@@ -2031,6 +2112,8 @@ static void PackedTable_dealloc(PackedTable *self)
     PyObject_GC_UnTrack(self);
     select_states(self, NULL);          /* (the selected set keeps its own index) */
     index_free(&self->places);
+    PyMem_Free(self->row_at);
+    PyMem_Free(self->row_keys);
     PackedTable_clear(self);
     free_program(self);
     PyMem_Free(self->value_tag);
@@ -2926,18 +3009,23 @@ static PyObject *PackedTable_native_bytes(PackedTable *self, PyObject *unused)
         + self->value_capacity * (1 + sizeof(double) + sizeof(PyObject *))
         + (self->value_mask + 1) * sizeof(int32_t)
         + vt_bytes(&self->signals) + self->context_capacity * (2 * sizeof(int32_t) + 1)
-        + self->context_tasks_capacity * self->task_count * TASK_INFO * sizeof(int32_t);
+        + self->context_tasks_capacity * self->task_count * TASK_INFO * sizeof(int32_t)
+        + self->places.key_capacity * sizeof(int64_t)      /* (the reduction's numbers) */
+        + (self->places.slots != NULL ? (self->places.mask + 1) * sizeof(int32_t) : 0)
+        + (self->row_at_capacity + self->row_capacity) * sizeof(int64_t);
     return PyLong_FromSsize_t(bytes);
 }
 
 static PyObject *PackedTable_counts(PackedTable *self, PyObject *unused)
 {
-    return Py_BuildValue("{s:n,s:n,s:n,s:n,s:L,s:L,s:L,s:L}", "states", self->states.count,
+    return Py_BuildValue("{s:n,s:n,s:n,s:n,s:L,s:L,s:L,s:L,s:L,s:n}", "states",
+                         self->states.count,
                          "frames", self->frames.count, "data", self->data.count,
                          "values", self->values, "machine_steps", self->machine_steps,
                          "python_steps", self->python_steps,
                          "task_machine_steps", self->task_machine_steps,
-                         "task_python_steps", self->task_python_steps);
+                         "task_python_steps", self->task_python_steps,
+                         "rows_reused", self->rows_reused, "places", self->places.count);
 }
 
 /* ``set_tasks(count)``: the program's tasks (2-64: each context then says where each
@@ -3041,6 +3129,7 @@ static void select_states(PackedTable *self, PyObject *chosen)
     self->states = chosen != NULL ? ((StateSet *)chosen)->index : self->own;
     Py_XINCREF(chosen);
     Py_XSETREF(self->selected, chosen);
+    self->labels_wanted = 0;            /* (the search that wanted lines is not this one) */
 }
 
 /* ``new_states() -> StateSet``: an empty set of states for a new search of the check
@@ -3263,6 +3352,12 @@ static int python_successors(PackedSearch *search, Py_ssize_t frontier)
         return -1;
     int filled = found_from_pairs(pairs, &search->found);
     Py_DECREF(pairs);
+    if (filled < 0)
+        return filled;
+    /* (Python's row of a reduced step, kept for the later searches as the machine's are) */
+    Py_ssize_t place = row_place(search->table, frontier, search->labels_wanted);
+    if (place == -2 || (place >= 0 && row_keep(search->table, place, &search->found) < 0))
+        return -1;
     return filled;
 }
 

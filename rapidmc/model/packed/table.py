@@ -54,6 +54,7 @@ ORDER_CANDIDATE = 1                    # per task and instruction (``_order_flag
 ORDER_NEVER_WAITS = 2
 ORDER_MERGEABLE = 4
 MAX_TASKS = 64
+REMEMBERED_VECTORS = 256               # states whose vectors are remembered (reduced search)
 
 
 def packed_table(system) -> Optional["PackedStateTable"]:
@@ -92,6 +93,9 @@ def reduced_packing(system) -> Optional["PackedPlaces"]:
     if table is None:
         return None
     table.set_order(table.order_flags())
+    # (the proviso packs a successor to ask for its number, and the search then stores it)
+    table.remembered = {}
+    table._vectors = table._remembered_vectors
     return PackedPlaces(table)
 
 
@@ -338,6 +342,19 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
     # context is each task's frames below, its top frame's routine, handler fields and
     # number of locals (None: the task has ended), the signals and the rest of the state
     # but the tasks.
+    def _remembered_vectors(self, state: State) -> tuple[bytes, bytes]:
+        """``_task_vectors``, remembered for the states packed last (by identity, each kept
+        alive while it is remembered)."""
+        remembered = self.remembered
+        known = remembered.get(id(state))
+        if known is not None and known[0] is state:
+            return known[1]
+        if len(remembered) >= REMEMBERED_VECTORS:
+            remembered.clear()
+        vectors = self._task_vectors(state)
+        remembered[id(state)] = (state, vectors)
+        return vectors
+
     def _task_vectors(self, state: State) -> tuple[bytes, bytes]:
         shapes = []
         items: list = []
