@@ -20,6 +20,12 @@ the valuations the search keeps.  It answers the machine's calls back for
 the states it leaves to Python (``python_successors``, ``python_valuation``,
 ``predicate_holds``, ``observe``).
 
+Under the partial-order reduction one table serves every search of a check
+(``reduced_packing``): each search keeps its states in a ``_native.StateSet`` of its own
+(``PackedSearch``), the proviso numbers states in the table (``PackedPlaces``), and the
+machine chooses the ample sets ``PartialOrder`` would, keeping each reduced step's
+successors by the state's number for the later searches.
+
 Two states are the same stored state exactly when the Python table
 (``check.states``) says so: equal contexts (tuples compared by ``==``) and
 equal values (ids by ``==``, as ``_packed.c`` interns them).  tests/
