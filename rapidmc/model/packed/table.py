@@ -123,9 +123,9 @@ class PackedPlaces:
 
 class PackedSearch:
     """One search's states in a check's shared packed table: its own ids and count
-    (``_native.StateSet``), the table's values, segments, contexts and step machine, and
-    its numbering of states for the reduction's proviso.  Every call selects the
-    search's set first (``machine_table``)."""
+    (``_native.StateSet``, as a table of its own would give them), with the table's
+    values, segments, contexts, step machine, kept rows and the reduction's numbering of
+    states.  Every call selects the search's set first (``machine_table``)."""
 
     collapsed = True
     known_ids: dict = {}
