@@ -139,6 +139,24 @@ elements and record components, MoveJ, the socket receive and accept.  Counters
 (``bench/native.py --sizes 8,9``, three alternate runs): N=8 run-time error search
 0.42-0.47 s (main 0.42-0.54), whole command 1.23-1.31 s CPU (main 1.23-1.53) at 141
 bytes per state; N=9 2.36-2.84 s (main 2.17-2.54) at 81-82 bytes per state.
+
+Measured on 2026-11-29 at 11:15 (issue 27: one packed table per check under the
+partial-order reduction, the default; each search its own set of states, the machine
+choosing ample sets, the proviso numbering states in the table, rows of reduced steps
+kept for later searches; load 12-17 on 2 cores, CPU seconds, the base 7abe0dd and the
+branch run alternately).  The default check, ``--max-states 20000`` (20,000 + 20,000 +
+46,488 model states before, 46,825 for the property after: the numbering expands a few
+more states fully), both engines' JSON reports identical: native 10.93 s -> 6.11-6.58 s
+(7,500-7,900 model states per CPU second over the check's 86,825), Python engine 18.6 ->
+21.2 s (it numbers the targets of each step too).  ``--max-states 5000`` (12,005 both):
+1.98-2.28 s either way, start-up and loading dominate.  The reduced run-time error search
+alone, in-process, 20,000 states: 3.37-3.65 -> 2.14-2.48 s (8,100-9,300 states/s), 216 ->
+155 bytes per state in the table (its numbers and kept rows included); the machine takes
+64 % of the single tasks' steps there (none before).  The rest are Python's: a state
+where one task calls ``teach``, writes array elements or record components, moves or
+receives is stepped whole in Python (its row kept all the same).  Counters N=8
+(``bench/native.py``, three alternate runs): run-time error search 0.40-0.66 s before,
+0.41-0.63 after; whole command 1.21-1.37 / 1.30-1.38 s at 141 bytes per state.
 """
 from __future__ import annotations
 

@@ -205,6 +205,46 @@ def test_the_machine_takes_most_steps_of_the_controller_family(tmp_path, monkeyp
     assert machine > 2 * python, (machine, python)
 
 
+REDUCED_SEEDS = [0, 2, 6, 41, 71, 90, 91, 93, 95, 97]
+REDUCED_STEPS: dict[int, int] = {}
+
+
+@needs_native
+@pytest.mark.parametrize("seed", REDUCED_SEEDS)
+def test_the_machine_chooses_the_ample_sets_python_chooses(seed, tmp_path, monkeypatch):
+    """Programs of several tasks with the partial-order reduction (the default): every
+    search of the check keeps its states in one shared packed table, and in every state
+    each search stored, the machine's successors (the ample set of one task, its steps
+    run on through its local instructions, or every task's) are those the Python step and
+    ``PartialOrder`` give, under the one numbering of states the proviso reads."""
+    argv = write_tasks(tmp_path, seed, procedures=40 <= seed < 70, arrays=70 <= seed < 90,
+                       local=seed >= 90)
+    monkeypatch.chdir(tmp_path)
+
+    def check():
+        with contextlib.redirect_stdout(io.StringIO()):
+            main(["check", *argv, "--engine", "native", "--format", "json"])
+    tables = tables_of(check)
+    assert tables and all(isinstance(table, packed.PackedSearch) for table in tables)
+    assert len({id(table.table) for table in tables}) == 1     # one table per check
+    for table in tables:
+        STEPS_TAKEN[f"reduced {seed}"] = machine_agrees(table)
+    counts = tables[0].counts()
+    REDUCED_STEPS[seed] = (counts["task_machine_steps"], counts["rows_reused"])
+
+
+@needs_native
+def test_the_machine_chose_ample_sets_in_the_local_programs():
+    """(After the test above.)  The programs mostly on the tasks' own data (seeds 90 on)
+    have states whose ample set the machine chose and stepped itself, and later searches
+    of a check took rows an earlier one kept instead of stepping again."""
+    local = [steps for seed, steps in REDUCED_STEPS.items() if seed >= 90]
+    if not local:
+        pytest.skip("the reduced programs were not run")
+    assert sum(machine for machine, _ in local) > 0
+    assert sum(reused for _, reused in REDUCED_STEPS.values()) > 0
+
+
 @needs_native
 def test_the_counters_are_stepped_by_the_machine_alone_but_for_aliasio(tmp_path):
     """The benchmark's family: every state but the AliasIO calls' is the machine's, and the

@@ -35,6 +35,10 @@ enum { T_NUM = 0, T_BOOL = 1, T_INT = 2, T_OBJ = 3 };
 enum { CONTEXT_RUNS = 1, CONTEXT_FAILED = 2, CONTEXT_MAIN_ALONE = 4, CONTEXT_ENDED_TASK = 8 };
 /* what a context says of one of several tasks: the machine may step its top frame */
 enum { TASK_RUNS = 1 };
+/* what the partial-order reduction says of a task's instruction (model/packed/table.py's
+ * ``_order_flags``): independent and invisible (an ample candidate); its step always
+ * changes the state; it joins the step of its task before it (a merged local run) */
+enum { ORDER_CANDIDATE = 1, ORDER_NEVER_WAITS = 2, ORDER_MERGEABLE = 4 };
 
 /* opcodes of the step machine (mirrored in rapidmc/model/packed/bytecode.py) */
 enum {
@@ -97,6 +101,16 @@ typedef struct {        /* resets of global data: one list, or one per pc of mai
     Py_ssize_t lists;
 } Resets;
 
+/* a set of states by key (frame id << 32 | data id), each with its id, the order it came
+ * in: a search's stored states (the table's own, or a ``StateSet``'s: one per search of a
+ * check, ``new_states``), or the numbering of the reduction's cycle proviso (``places``) */
+typedef struct {
+    int64_t *keys;              /* by id */
+    Py_ssize_t count, key_capacity;
+    int32_t *slots;             /* the hash index (NULL: released, made again when asked) */
+    uint64_t mask;
+} StateIndex;
+
 typedef struct {        /* compiled atoms of one valuation */
     int32_t *code;
     Py_ssize_t code_length;
@@ -117,16 +131,13 @@ typedef struct {
      * objects, and hashing a 512-element array again costs what the lookup saves */
     PyObject *id_cache_object[ID_CACHE];
     int32_t id_cache_id[ID_CACHE];
-    /* segments and states */
+    /* segments and states (``states``: the selected search's, see ``selected`` below) */
     VectorTable frames, data;
     /* a distributed worker's spare data segments (``spare_data``): those its steps made in
      * this round that ``data`` does not hold, numbered SPARE | index */
     VectorTable spare;
     int sparing;
-    int64_t *keys;              /* by state id: frame id << 32 | data id */
-    Py_ssize_t count, key_capacity;
-    int32_t *slots;
-    uint64_t mask;
+    StateIndex states;
     /* contexts (by context id): the routine of the top frame (-1: none), whether the
      * step machine may run there */
     int32_t *context_routine;
@@ -163,7 +174,35 @@ typedef struct {
     /* the search's observer still wants the lines steps run: Python's steps of single
      * tasks then tell it theirs (``note_python_spans``) */
     int labels_wanted;
+    /* the partial-order reduction (``set_order``): per (task, routine) the ORDER_ flags of
+     * each pc, order_flags[order_offsets[task * order_routines + routine] + pc] (offset -1:
+     * none); ``reduced``: steps of several tasks keep the ample set of one task */
+    uint8_t *order_flags;
+    int64_t *order_offsets;
+    int64_t *order_lengths;
+    Py_ssize_t order_routines;
+    int reduced;
+    /* the searches of one check share the table (values, segments, contexts, the program):
+     * each stores its states in a ``StateSet`` of its own, whose index is in the fields
+     * above (keys ... mask) while it is ``selected`` (NULL: the table's ``own`` is) */
+    PyObject *selected;
+    StateIndex own;
+    /* the reduction's numbering of states (``PartialOrder``'s C3): every search's */
+    StateIndex places;
+    /* the successors of the reduced steps by the state's number, kept for the check's
+     * later searches (a state's ample set is the same whenever asked): row_at[place] is
+     * where its row starts in row_keys (a count, then the successors' keys), -1: none */
+    int64_t *row_at;
+    Py_ssize_t row_at_capacity;
+    int64_t *row_keys;
+    Py_ssize_t row_length, row_capacity;
+    long long rows_reused;
 } PackedTable;
+
+typedef struct {
+    PyObject_HEAD
+    StateIndex index;           /* (while selected, the table's fields hold it) */
+} StateSet;
 
 /* ================================================================ vector tables */
 
@@ -495,22 +534,85 @@ static PyObject *value_object(PackedTable *self, int32_t id)
 
 /* ======================================================================== states */
 
-static int grow_states(PackedTable *self)
+static int index_grow(StateIndex *index)
 {
-    uint64_t capacity = (self->mask + 1) * 2;
+    uint64_t capacity = (index->mask + 1) * 2;
     int32_t *slots = new_slots(capacity);
     if (slots == NULL)
         return -1;
-    for (Py_ssize_t id = 0; id < self->count; id++) {
-        uint64_t position = mix64((uint64_t)self->keys[id]) & (capacity - 1);
+    for (Py_ssize_t id = 0; id < index->count; id++) {
+        uint64_t position = mix64((uint64_t)index->keys[id]) & (capacity - 1);
         while (slots[position] != EMPTY)
             position = (position + 1) & (capacity - 1);
         slots[position] = (int32_t)id;
     }
-    PyMem_Free(self->slots);
-    self->slots = slots;
-    self->mask = capacity - 1;
+    PyMem_Free(index->slots);
+    index->slots = slots;
+    index->mask = capacity - 1;
     return 0;
+}
+
+/* an empty set of states */
+static int index_init(StateIndex *index)
+{
+    memset(index, 0, sizeof(StateIndex));
+    index->slots = new_slots(FIRST_CAPACITY);
+    index->mask = FIRST_CAPACITY - 1;
+    return index->slots != NULL ? 0 : -1;
+}
+
+static void index_free(StateIndex *index)
+{
+    PyMem_Free(index->keys);
+    PyMem_Free(index->slots);
+    memset(index, 0, sizeof(StateIndex));
+}
+
+/* the hash index of a set whose index was released, made again */
+static int index_ensure(StateIndex *index)
+{
+    if (index->slots != NULL)
+        return 0;
+    uint64_t capacity = FIRST_CAPACITY;
+    while ((uint64_t)index->count * 4 > capacity * 3)
+        capacity *= 2;
+    index->mask = capacity / 2 - 1;
+    return index_grow(index);          /* (fills a new table twice that size) */
+}
+
+/* the id of ``key`` in ``index``, ``*is_new``; -1: new and not ``add``; -2 with an error */
+static Py_ssize_t index_intern(StateIndex *index, int64_t key, int add, int *is_new)
+{
+    uint64_t position = mix64((uint64_t)key) & index->mask;
+    for (;;) {
+        int32_t id = index->slots[position];
+        if (id == EMPTY)
+            break;
+        if (index->keys[id] == key) {
+            *is_new = 0;
+            return id;
+        }
+        position = (position + 1) & index->mask;
+    }
+    *is_new = 1;
+    if (!add)
+        return -1;
+    int64_t *keys = reserve(index->keys, &index->key_capacity, sizeof(int64_t),
+                            index->count + 1);
+    if (keys == NULL)
+        return -2;
+    index->keys = keys;
+    Py_ssize_t id = index->count++;
+    index->keys[id] = key;
+    index->slots[position] = (int32_t)id;
+    if ((uint64_t)index->count * 4 > (index->mask + 1) * 3 && index_grow(index) < 0)
+        return -2;
+    return id;
+}
+
+static inline int64_t state_key(int32_t frame, int32_t data)
+{
+    return ((int64_t)frame << 32) | (uint32_t)data;
 }
 
 /* the indexes (slots) of the states and their parts, made again when released */
@@ -519,45 +621,30 @@ static int ensure_index(PackedTable *self)
     if (vt_index(&self->frames) < 0 || vt_index(&self->data) < 0 ||
             vt_index(&self->signals) < 0)
         return -1;
-    if (self->slots != NULL)
-        return 0;
-    uint64_t capacity = FIRST_CAPACITY;
-    while ((uint64_t)self->count * 4 > capacity * 3)
-        capacity *= 2;
-    self->mask = capacity / 2 - 1;
-    return grow_states(self);          /* (fills a new table twice that size) */
+    return index_ensure(&self->states);
 }
 
-/* the id of the state (frame id, data id), ``*is_new``; -1: new and not ``add``;
- * -2 with an error */
-static Py_ssize_t intern_key(PackedTable *self, int32_t frame, int32_t data, int add,
-                             int *is_new)
+/* the id of the state (frame id, data id) in the selected search's set, ``*is_new``; -1:
+ * new and not ``add``; -2 with an error */
+static inline Py_ssize_t intern_key(PackedTable *self, int32_t frame, int32_t data, int add,
+                                    int *is_new)
 {
-    int64_t key = ((int64_t)frame << 32) | (uint32_t)data;
-    uint64_t position = mix64((uint64_t)key) & self->mask;
-    for (;;) {
-        int32_t id = self->slots[position];
-        if (id == EMPTY)
-            break;
-        if (self->keys[id] == key) {
-            *is_new = 0;
-            return id;
-        }
-        position = (position + 1) & self->mask;
+    return index_intern(&self->states, state_key(frame, data), add, is_new);
+}
+
+/* The reduction's number of the state (frame id, data id) (``PartialOrder``'s C3), given
+ * now when it has none and ``number``; -1: none; -2 with an error */
+static Py_ssize_t place_of(PackedTable *self, int32_t frame, int32_t data, int number)
+{
+    if (self->places.slots == NULL && index_init(&self->places) < 0) {
+        PyErr_NoMemory();
+        return -2;
     }
-    *is_new = 1;
-    if (!add)
-        return -1;
-    int64_t *keys = reserve(self->keys, &self->key_capacity, sizeof(int64_t), self->count + 1);
-    if (keys == NULL)
-        return -2;
-    self->keys = keys;
-    Py_ssize_t id = self->count++;
-    self->keys[id] = key;
-    self->slots[position] = (int32_t)id;
-    if ((uint64_t)self->count * 4 > (self->mask + 1) * 3 && grow_states(self) < 0)
-        return -2;
-    return id;
+    int is_new;
+    Py_ssize_t place = index_intern(&self->places, state_key(frame, data), number, &is_new);
+    if (place == -2)
+        PyErr_NoMemory();
+    return place;
 }
 
 /* ================================================================ spare data
@@ -1154,6 +1241,17 @@ typedef struct Scratch {     /* scratch space of the step machine */
     uint32_t *chosen_epoch;
     int32_t *chosen_value;
     uint32_t epoch;
+    /* the reduced step (``ample_step``): the (routine, pc, task) triples its runs
+     * noted, told once the ample set is known (``defer``); no notes (``silent``) while it
+     * probes whether a task goes on; a successor's vectors copied out while it runs on */
+    int defer, silent;
+    int32_t defer_task;
+    int numbered;               /* ``tasks_step`` numbered the state it steps */
+    Int32Vector pending;
+    uint32_t *probe_source;
+    Py_ssize_t probe_capacity;
+    Successors probe;
+    Int32Vector probe_changed;
 } Scratch;
 
 static int scratch_init(Scratch *scratch, PackedTable *table)
@@ -1180,6 +1278,11 @@ static void scratch_free(Scratch *scratch)
     vector32_free(&scratch->changed);
     vector32_free(&scratch->owners);
     vector32_free(&scratch->waited);
+    vector32_free(&scratch->pending);
+    vector32_free(&scratch->probe_changed);
+    PyMem_Free(scratch->probe_source);
+    PyMem_Free(scratch->probe.frames);
+    PyMem_Free(scratch->probe.data);
     PyMem_Free(scratch->found.frames);
     PyMem_Free(scratch->found.data);
 }
@@ -1246,7 +1349,7 @@ typedef struct {            /* a stored state's segments, as the tables hold the
 
 static void stored_state(PackedTable *table, Py_ssize_t id, Stored *stored)
 {
-    int64_t key = table->keys[id];
+    int64_t key = table->states.keys[id];
     stored->frame_id = (int32_t)(key >> 32);
     stored->data_id = (int32_t)(key & 0xffffffff);
     stored->frame = vt_items(&table->frames, stored->frame_id, &stored->frame_length);
@@ -1306,6 +1409,12 @@ static int tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Succe
 /* note (routine, pc) as run by a step in progress (known once the step is done) */
 static inline int note_ran(PackedTable *table, Scratch *scratch, int32_t routine, int32_t pc)
 {
+    if (scratch->silent)
+        return 0;
+    if (scratch->defer)
+        return vector32_push(&scratch->pending, routine) < 0 ||
+            vector32_push(&scratch->pending, pc) < 0 ||
+            vector32_push(&scratch->pending, scratch->defer_task) < 0 ? -1 : 0;
     uint8_t *executed = &table->routines[routine].executed[pc];
     if (*executed)
         return 0;
@@ -1461,6 +1570,7 @@ static int task_machine_step(PackedTable *table, Scratch *scratch, const int32_t
     run.tasks = 1;
     Py_ssize_t found_before = found->count, ran_before = scratch->ran.length;
     Py_ssize_t waited_before = scratch->waited.length;
+    Py_ssize_t pending_before = scratch->pending.length;
     int outcome = VM_DONE;
     for (;;) {
         memcpy(work_frame, frame, frame_length * sizeof(uint32_t));
@@ -1511,6 +1621,7 @@ static int task_machine_step(PackedTable *table, Scratch *scratch, const int32_t
     changed->length = found_before;
     scratch->waited.length = waited_before;
     forget_ran(table, scratch, ran_before);
+    scratch->pending.length = pending_before;
     return outcome;
 }
 
@@ -1543,13 +1654,83 @@ static int task_python_step(PackedTable *table, Py_ssize_t id, Py_ssize_t task,
     return 0;
 }
 
-/* ``machine_step`` for a program of several tasks (``staged_step.staged_successors``
- * without interrupts, stored inputs or an environment): each running task's
- * instruction in task order, by the machine where it can and else by Python for that
- * task alone; then a task whose step changes nothing gives up its turn when another
- * can go on (``staged_step.idle_steps_dropped``).  VM_UNSUPPORTED: Python steps the
- * whole state (a context the machine does not run in, or Python asked for it). */
-static int tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Successors *found)
+/* the ORDER_ flags of ``task``'s instruction ``pc`` of ``routine`` (0: none known) */
+static inline int order_flags(PackedTable *table, Py_ssize_t task, int32_t routine, int64_t pc)
+{
+    if (table->order_offsets == NULL || routine < 0 || routine >= table->order_routines)
+        return 0;
+    Py_ssize_t at = task * table->order_routines + routine;
+    int64_t offset = table->order_offsets[at];
+    if (offset < 0 || pc < 0 || pc >= table->order_lengths[at])
+        return 0;
+    return table->order_flags[offset + pc];
+}
+
+/* the program counter of the task whose frame starts at ``where`` in frame segment
+ * ``frame_id`` (-1: not a pc) */
+static int64_t task_pc(PackedTable *table, int32_t frame_id, int32_t where)
+{
+    Py_ssize_t length;
+    const uint32_t *frame = vt_items(&table->frames, frame_id, &length);
+    if (where < 1 || where >= length)
+        return -1;
+    uint32_t pc_id = frame[where];
+    if (pc_id >= table->values || table->value_tag[pc_id] != T_INT)
+        return -1;
+    return (int64_t)table->value_number[pc_id];
+}
+
+/* One step of the task ``info`` describes from the segments (frame_id, data_id), not a
+ * stored state, into ``scratch->probe``: the machine's outcome */
+static int probe_step(PackedTable *table, Scratch *scratch, const int32_t *info,
+                      uint32_t context, int32_t frame_id, int32_t data_id)
+{
+    Py_ssize_t frame_length, data_length;
+    const uint32_t *frame = vt_items(&table->frames, frame_id, &frame_length);
+    const uint32_t *data = vt_items(&table->data, data_id, &data_length);
+    uint32_t *source = reserve(scratch->probe_source, &scratch->probe_capacity,
+                               sizeof(uint32_t), frame_length + data_length + 1);
+    if (source == NULL)
+        return -1;
+    scratch->probe_source = source;
+    memcpy(source, frame, frame_length * sizeof(uint32_t));
+    memcpy(source + frame_length, data, data_length * sizeof(uint32_t));
+    scratch->probe.count = scratch->probe_changed.length = 0;
+    return task_machine_step(table, scratch, info, context, source, frame_length, data_id,
+                             source + frame_length, data_length, &scratch->probe,
+                             &scratch->probe_changed);
+}
+
+/* A machine step of ``task`` run on through its merged local instructions, as
+ * ``reduction.local_runs`` runs it: while the next instruction is mergeable and has one
+ * transition (the machine's steps keep the context: running, ERRNO, the frames' depth
+ * and mode; each one changes the state).  VM_DONE (the successor's segments updated),
+ * VM_UNSUPPORTED (the machine does not take a step on the way: Python decides), -1. */
+static int run_on(PackedTable *table, Scratch *scratch, const int32_t *info, uint32_t context,
+                  Py_ssize_t task, int32_t *frame_id, int32_t *data_id)
+{
+    for (;;) {
+        int64_t pc = task_pc(table, *frame_id, info[1]);
+        if (!(order_flags(table, task, info[0], pc) & ORDER_MERGEABLE))
+            return VM_DONE;
+        int outcome = probe_step(table, scratch, info, context, *frame_id, *data_id);
+        if (outcome != VM_DONE)
+            return outcome;
+        if (scratch->probe.count != 1)
+            return VM_DONE;
+        *frame_id = scratch->probe.frames[0];
+        *data_id = scratch->probe.data[0];
+    }
+}
+
+/* Every running task's transitions (``all_tasks_step``, the steps of the machine run on
+ * through their local instructions when reduced), in task order, idle steps dropped:
+ * ``found``, with ``scratch->owners`` (the task of each, + TASK_COUNT_MAX when Python's)
+ * and ``scratch->changed`` (per transition before the idle ones were dropped: 0 the
+ * machine's, 1 Python's and dropped, 2 Python's and kept); ``*before_drop``: their
+ * count before.  VM_UNSUPPORTED: Python steps the whole state. */
+static int all_tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch,
+                          Successors *found, Py_ssize_t *before_drop)
 {
     Stored at;
     stored_state(table, id, &at);
@@ -1577,10 +1758,28 @@ static int tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Succe
         if (outcome < 0)
             return -1;
         int owner = (int)task;
-        if (outcome == VM_DONE)
+        if (outcome == VM_DONE) {
             by_machine++;
+            for (Py_ssize_t i = before; table->reduced && i < found->count; i++) {
+                outcome = run_on(table, scratch, info, context, task, &found->frames[i],
+                                 &found->data[i]);
+                if (outcome < 0)
+                    return -1;
+                if (outcome != VM_DONE) {
+                    table->task_python_steps += running;
+                    return VM_UNSUPPORTED;
+                }
+                info = table->context_tasks + (context * tasks + task) * TASK_INFO;
+            }
+        }
         else {
             owner += TASK_COUNT_MAX;            /* (Python's step) */
+            if (table->reduced) {
+                /* (the Python step of the whole state shares its work between the tasks
+                 * and is remembered for the other searches: cheaper than task by task) */
+                table->task_python_steps += running;
+                return VM_UNSUPPORTED;
+            }
             outcome = task_python_step(table, id, task, found, changed);
             if (outcome < 0)
                 return -1;
@@ -1619,13 +1818,238 @@ static int tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Succe
         }
         if (keep) {
             found->frames[kept] = found->frames[i];
-            found->data[kept++] = found->data[i];
+            found->data[kept] = found->data[i];
+            owners->items[kept++] = owners->items[i];
         }
     }
-    Py_ssize_t before_drop = found->count;
+    *before_drop = found->count;
     found->count = kept;
+    owners->length = kept;
     table->task_machine_steps += by_machine;
     table->task_python_steps += by_python;
+    return VM_DONE;
+}
+
+/* Whether the machine's transition of ``task`` from state ``id`` into the segments
+ * (frame_id, data_id) may be in an ample set, as ``PartialOrder._invisible_step`` decides
+ * (its context is the state's: running, ERRNO, frames as they were): it changes the
+ * state, its target was not numbered before the state, whose number is ``here`` (the
+ * proviso), and the task can go on there.  1, 0, VM_UNSUPPORTED (Python decides: the machine does not take the task's
+ * next step), -1. */
+static int invisible_step(PackedTable *table, Scratch *scratch, Py_ssize_t id,
+                          Py_ssize_t here, const int32_t *info, uint32_t context,
+                          Py_ssize_t task, int32_t frame_id, int32_t data_id)
+{
+    int64_t key = table->states.keys[id];
+    if (frame_id == (int32_t)(key >> 32) && data_id == (int32_t)(key & 0xffffffff))
+        return 0;
+    Py_ssize_t place = place_of(table, frame_id, data_id, 0);
+    if (place == -2)
+        return -1;
+    if (place >= 0 && place <= here)
+        return 0;                               /* (numbered before the state: C3) */
+    if (order_flags(table, task, info[0], task_pc(table, frame_id, info[1])) &
+            ORDER_NEVER_WAITS)
+        return 1;
+    scratch->silent = 1;                        /* (a probe: nothing it runs is noted) */
+    int outcome = probe_step(table, scratch, info, context, frame_id, data_id);
+    scratch->silent = 0;
+    if (outcome < 0)
+        return -1;
+    if (outcome != VM_DONE)
+        return VM_UNSUPPORTED;
+    for (Py_ssize_t i = 0; i < scratch->probe_changed.length; i++)
+        if (scratch->probe_changed.items[i])
+            return 1;                           /* (a step that moves: not a wait's try) */
+    return 0;
+}
+
+/* The ample set of state ``id``, as ``PartialOrder.choose`` picks it, into ``found``: the
+ * transitions of the first running task whose instruction is a candidate and each of
+ * whose transitions (run on through its local instructions) is invisible.  Only that
+ * task is stepped: the machine's steps always change the state, so no idle step of its
+ * is dropped whatever the others do.  VM_DONE (found), NO_AMPLE (none: every task's
+ * transitions are kept), VM_UNSUPPORTED (Python decides: a candidate the machine does
+ * not step, or a probe it cannot take), -1.  Where it tries a choice it numbers the state
+ * (``scratch->numbered``), as ``PartialOrder.ample`` does. */
+enum { NO_AMPLE = 3 };
+static int ample_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Successors *found)
+{
+    Stored at;
+    stored_state(table, id, &at);
+    uint32_t context = at.frame[0];
+    Py_ssize_t tasks = table->task_count, running = 0;
+    if (!(table->context_runs[context] & CONTEXT_RUNS) || table->context_tasks == NULL)
+        return VM_UNSUPPORTED;
+    for (Py_ssize_t task = 0; task < tasks; task++)
+        running += table->context_tasks[(context * tasks + task) * TASK_INFO] >= 0;
+    if (running < 2)
+        return NO_AMPLE;
+    /* a choice is tried: the state is numbered first (``PartialOrder.ample``) */
+    Py_ssize_t here = place_of(table, at.frame_id, at.data_id, 1);
+    if (here < 0)
+        return -1;
+    scratch->numbered = 1;
+    const uint32_t *frame, *data;
+    if (copy_source(scratch, at.frame, at.frame_length, at.data, at.data_length,
+                    &frame, &data) < 0)
+        return -1;
+    for (Py_ssize_t task = 0; task < tasks; task++) {
+        const int32_t *info = table->context_tasks + (context * tasks + task) * TASK_INFO;
+        if (info[0] < 0 || !(order_flags(table, task, info[0],
+                                         task_pc(table, at.frame_id, info[1])) &
+                             ORDER_CANDIDATE))
+            continue;
+        found->count = scratch->changed.length = scratch->pending.length = 0;
+        scratch->defer = 1;
+        scratch->defer_task = (int32_t)task;
+        int outcome = task_machine_step(table, scratch, info, context, frame, at.frame_length,
+                                        at.data_id, data, at.data_length, found,
+                                        &scratch->changed);
+        for (Py_ssize_t i = 0; outcome == VM_DONE && i < found->count; i++)
+            outcome = run_on(table, scratch, info, context, task, &found->frames[i],
+                             &found->data[i]);
+        scratch->defer = 0;
+        int invisible = 1;
+        for (Py_ssize_t i = 0; outcome == VM_DONE && invisible == 1 && i < found->count; i++)
+            invisible = invisible_step(table, scratch, id, here, info, context, task,
+                                       found->frames[i], found->data[i]);
+        if (outcome == VM_DONE && invisible != 1 && invisible != 0)
+            outcome = invisible;
+        if (outcome != VM_DONE) {
+            scratch->pending.length = 0;
+            found->count = 0;
+            return outcome;
+        }
+        if (invisible == 1) {
+            for (Py_ssize_t i = 0; i + 2 < scratch->pending.length; i += 3)
+                if (note_ran(table, scratch, scratch->pending.items[i],
+                             scratch->pending.items[i + 1]) < 0)
+                    return -1;
+            scratch->pending.length = 0;
+            table->task_machine_steps++;
+            return VM_DONE;
+        }
+        scratch->pending.length = 0;
+    }
+    found->count = 0;
+    return NO_AMPLE;
+}
+
+/* Where a choice was tried (``scratch->numbered``), the targets of the transitions kept
+ * are numbered in order, each when it has none (``PartialOrder.ample``): an ample
+ * transition then leads to a state numbered after its source.  VM_DONE or -1. */
+static int number_targets(PackedTable *table, Scratch *scratch, Successors *found)
+{
+    for (Py_ssize_t i = 0; scratch->numbered && i < found->count; i++)
+        if (place_of(table, found->frames[i], found->data[i], 1) < 0)
+            return -1;
+    return VM_DONE;
+}
+
+/* The row kept for the state numbered ``place`` into ``found``: 1, or 0 (none kept), -1. */
+static int row_recall(PackedTable *table, Py_ssize_t place, Successors *found)
+{
+    if (place >= table->row_at_capacity || table->row_at[place] < 0)
+        return 0;
+    const int64_t *row = table->row_keys + table->row_at[place];
+    found->count = 0;
+    for (int64_t i = 1; i <= row[0]; i++)
+        if (add_successor(found, (int32_t)(row[i] >> 32), (int32_t)(row[i] & 0xffffffff)) < 0)
+            return -1;
+    return 1;
+}
+
+/* Keep ``found`` as the row of the state numbered ``place`` (once).  0 or -1. */
+static int row_keep(PackedTable *table, Py_ssize_t place, const Successors *found)
+{
+    if (place >= table->row_at_capacity) {
+        Py_ssize_t capacity = table->row_at_capacity;
+        int64_t *at = reserve(table->row_at, &capacity, sizeof(int64_t), place + 1);
+        if (at == NULL)
+            return -1;
+        for (Py_ssize_t i = table->row_at_capacity; i < capacity; i++)
+            at[i] = -1;
+        table->row_at = at;
+        table->row_at_capacity = capacity;
+    }
+    if (table->row_at[place] >= 0)
+        return 0;
+    int64_t *keys = reserve(table->row_keys, &table->row_capacity, sizeof(int64_t),
+                            table->row_length + 1 + found->count);
+    if (keys == NULL)
+        return -1;
+    table->row_keys = keys;
+    table->row_at[place] = table->row_length;
+    keys[table->row_length++] = found->count;
+    for (Py_ssize_t i = 0; i < found->count; i++)
+        keys[table->row_length++] = state_key(found->frames[i], found->data[i]);
+    return 0;
+}
+
+/* the number of stored state ``id`` (-1: none, -2: an error), where rows are kept: reduced
+ * steps, and no observer wants the lines steps run (a kept row names none) */
+static Py_ssize_t row_place(PackedTable *table, Py_ssize_t id, int labels_wanted)
+{
+    if (!table->reduced || labels_wanted)
+        return -1;
+    int64_t key = table->states.keys[id];
+    return place_of(table, (int32_t)(key >> 32), (int32_t)(key & 0xffffffff), 0);
+}
+
+/* ``machine_step`` for a program of several tasks (``staged_step.staged_successors``
+ * without interrupts, stored inputs or an environment): each running task's
+ * instruction in task order, by the machine where it can and else by Python for that
+ * task alone; then a task whose step changes nothing gives up its turn when another
+ * can go on (``staged_step.idle_steps_dropped``); reduced (``set_order``), each of the
+ * machine's steps runs on through its task's local instructions and the ample set of
+ * one task is kept where there is one.  VM_UNSUPPORTED: Python steps the whole state (a
+ * context the machine does not run in, or Python asked for it, or decides the ample
+ * set). */
+static int tasks_step_anew(PackedTable *table, Py_ssize_t id, Scratch *scratch,
+                           Successors *found);
+
+/* ``tasks_step_anew``, or the row an earlier step of the state kept (reduced) */
+static int tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Successors *found)
+{
+    Py_ssize_t place = row_place(table, id, table->labels_wanted);
+    if (place == -2)
+        return -1;
+    int recalled = place >= 0 ? row_recall(table, place, found) : 0;
+    if (recalled != 0) {
+        table->rows_reused += recalled > 0;
+        return recalled > 0 ? VM_DONE : -1;
+    }
+    int outcome = tasks_step_anew(table, id, scratch, found);
+    if (outcome == VM_DONE && place == -1 && table->reduced && !table->labels_wanted)
+        place = row_place(table, id, 0);        /* (numbered by this step) */
+    if (outcome == VM_DONE && place >= 0 && row_keep(table, place, found) < 0)
+        return -1;
+    return place == -2 ? -1 : outcome;
+}
+
+static int tasks_step_anew(PackedTable *table, Py_ssize_t id, Scratch *scratch,
+                           Successors *found)
+{
+    scratch->numbered = 0;
+    if (table->reduced) {
+        int outcome = ample_step(table, id, scratch, found);
+        if (outcome == VM_DONE)
+            return number_targets(table, scratch, found);
+        if (outcome != NO_AMPLE)
+            return outcome;
+    }
+    Py_ssize_t before_drop = 0;
+    scratch->defer = 0;
+    int outcome = all_tasks_step(table, id, scratch, found, &before_drop);
+    if (outcome != VM_DONE)
+        return outcome;
+    if (number_targets(table, scratch, found) < 0)
+        return -1;
+    Int32Vector *changed = &scratch->changed;
+    int by_python = 0;
+    for (Py_ssize_t i = 0; i < before_drop; i++)
+        by_python |= changed->items[i] != 0;
     if (by_python && table->labels_wanted) {
         /* the observer hears the lines of Python's steps that were kept */
         PyObject *answer = PyObject_CallMethod(
@@ -1645,7 +2069,7 @@ static int tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Succe
 static int machine_valuation(PackedTable *table, Py_ssize_t index, Py_ssize_t id,
                              Scratch *scratch, uint64_t *bits)
 {
-    int64_t key = table->keys[id];
+    int64_t key = table->states.keys[id];
     Py_ssize_t frame_length, data_length;
     const uint32_t *frame = vt_items(&table->frames, (int32_t)(key >> 32), &frame_length);
     const uint32_t *data = data_items(table, (int32_t)(key & 0xffffffff), &data_length);
@@ -1673,15 +2097,15 @@ static PyObject *PackedTable_new(PyTypeObject *type, PyObject *args, PyObject *k
     if (self == NULL)
         return NULL;
     self->object_ids = PyDict_New();
-    self->slots = new_slots(FIRST_CAPACITY);
+    self->states.slots = new_slots(FIRST_CAPACITY);
     self->value_slots = new_slots(FIRST_CAPACITY);
-    if (self->object_ids == NULL || self->slots == NULL || self->value_slots == NULL ||
+    if (self->object_ids == NULL || self->states.slots == NULL || self->value_slots == NULL ||
             vt_init(&self->frames) < 0 || vt_init(&self->data) < 0 || vt_init(&self->spare) < 0 ||
             vt_init(&self->signals) < 0) {
         Py_DECREF(self);
         return PyErr_Occurred() ? NULL : PyErr_NoMemory();
     }
-    self->mask = self->value_mask = FIRST_CAPACITY - 1;
+    self->states.mask = self->value_mask = FIRST_CAPACITY - 1;
     return (PyObject *)self;
 }
 
@@ -1746,9 +2170,15 @@ static void free_program(PackedTable *self)
     self->projecting = 0;
 }
 
+static void select_states(PackedTable *self, PyObject *chosen);
+
 static void PackedTable_dealloc(PackedTable *self)
 {
     PyObject_GC_UnTrack(self);
+    select_states(self, NULL);          /* (the selected set keeps its own index) */
+    index_free(&self->places);
+    PyMem_Free(self->row_at);
+    PyMem_Free(self->row_keys);
     PackedTable_clear(self);
     free_program(self);
     PyMem_Free(self->value_tag);
@@ -1761,11 +2191,14 @@ static void PackedTable_dealloc(PackedTable *self)
     vt_free(&self->signals);
     PyMem_Free(self->context_io);
     vector32_free(&self->newly_executed);
-    PyMem_Free(self->keys);
-    PyMem_Free(self->slots);
+    PyMem_Free(self->states.keys);
+    PyMem_Free(self->states.slots);
     PyMem_Free(self->context_routine);
     PyMem_Free(self->context_runs);
     PyMem_Free(self->context_tasks);
+    PyMem_Free(self->order_flags);
+    PyMem_Free(self->order_offsets);
+    PyMem_Free(self->order_lengths);
     Py_TYPE(self)->tp_free((PyObject *)self);
 }
 
@@ -1952,11 +2385,11 @@ static PyObject *PackedTable_vectors(PackedTable *self, PyObject *argument)
     Py_ssize_t id = PyLong_AsSsize_t(argument);
     if (id == -1 && PyErr_Occurred())
         return NULL;
-    if (id < 0 || id >= self->count) {
+    if (id < 0 || id >= self->states.count) {
         PyErr_SetString(PyExc_IndexError, "no such state id");
         return NULL;
     }
-    int64_t key = self->keys[id];
+    int64_t key = self->states.keys[id];
     return parts_of(self, (int32_t)(key >> 32), (int32_t)(key & 0xffffffff));
 }
 
@@ -1966,9 +2399,9 @@ static PyObject *PackedTable_key(PackedTable *self, PyObject *argument)
     Py_ssize_t id = PyLong_AsSsize_t(argument);
     if (id == -1 && PyErr_Occurred())
         return NULL;
-    if (id < 0 || id >= self->count)
+    if (id < 0 || id >= self->states.count)
         return PyErr_Format(PyExc_IndexError, "no such state id");
-    int64_t key = self->keys[id];
+    int64_t key = self->states.keys[id];
     int32_t frame = (int32_t)(key >> 32);
     return Py_BuildValue("(iiI)", frame, (int32_t)(key & 0xffffffff),
                          self->frames.arena[self->frames.offsets[frame]]);
@@ -2377,7 +2810,7 @@ static PyObject *PackedTable_step(PackedTable *self, PyObject *argument)
     Py_ssize_t id = PyLong_AsSsize_t(argument);
     if (id == -1 && PyErr_Occurred())
         return NULL;
-    if (id < 0 || id >= self->count)
+    if (id < 0 || id >= self->states.count)
         return PyErr_Format(PyExc_IndexError, "no such state id");
     if (ensure_index(self) < 0)
         return NULL;
@@ -2408,7 +2841,7 @@ static PyObject *PackedTable_successor_ids(PackedTable *self, PyObject *args)
     Py_ssize_t id, valuation;
     if (!PyArg_ParseTuple(args, "nn", &id, &valuation))
         return NULL;
-    if (id < 0 || id >= self->count || valuation >= self->valuation_count)
+    if (id < 0 || id >= self->states.count || valuation >= self->valuation_count)
         return PyErr_Format(PyExc_IndexError, "no such state or valuation");
     if (ensure_index(self) < 0)
         return NULL;
@@ -2552,7 +2985,7 @@ static int keyset_add(KeySet *set, uint64_t key)
 static int watch_says(PackedTable *table, PyObject *watch, Py_ssize_t id, int by_machine,
                       const Successors *found)
 {
-    int64_t key = table->keys[id];
+    int64_t key = table->states.keys[id];
     int32_t frame = (int32_t)(key >> 32), data = (int32_t)(key & 0xffffffff);
     if (by_machine && !(table->context_runs[table->frames.arena[table->frames.offsets[frame]]] &
                         CONTEXT_ENDED_TASK)) {
@@ -2591,7 +3024,7 @@ static PyObject *PackedTable_expand_keys(PackedTable *self, PyObject *args)
     if (!PyArg_ParseTuple(args, "nnpO", &first, &last, &failed, &watch))
         return NULL;
     int watched = 0;
-    if (first < 0 || last > self->count || first > last)
+    if (first < 0 || last > self->states.count || first > last)
         return PyErr_Format(PyExc_IndexError, "no such state ids");
     if (ensure_index(self) < 0)
         return NULL;
@@ -2608,7 +3041,7 @@ static PyObject *PackedTable_expand_keys(PackedTable *self, PyObject *args)
         goto done;
     for (Py_ssize_t id = first; id < last; id++) {
         if (failed) {
-            int32_t frame = (int32_t)(self->keys[id] >> 32);
+            int32_t frame = (int32_t)(self->states.keys[id] >> 32);
             if (self->context_runs[self->frames.arena[self->frames.offsets[frame]]] &
                     CONTEXT_FAILED) {
                 failed_at = id;
@@ -2677,7 +3110,7 @@ static PyObject *PackedTable_evaluate(PackedTable *self, PyObject *args)
     Py_ssize_t index, id;
     if (!PyArg_ParseTuple(args, "nn", &index, &id))
         return NULL;
-    if (index < 0 || index >= self->valuation_count || id < 0 || id >= self->count)
+    if (index < 0 || index >= self->valuation_count || id < 0 || id >= self->states.count)
         return PyErr_Format(PyExc_IndexError, "no such valuation or state");
     Scratch scratch = {0};
     if (scratch_init(&scratch, self) < 0)
@@ -2696,8 +3129,8 @@ static PyObject *PackedTable_evaluate(PackedTable *self, PyObject *args)
  * machine stay; the next interning makes them again) */
 static PyObject *PackedTable_release_index(PackedTable *self, PyObject *unused)
 {
-    PyMem_Free(self->slots);
-    self->slots = NULL;
+    PyMem_Free(self->states.slots);
+    self->states.slots = NULL;
     vt_release_index(&self->frames);
     vt_release_index(&self->data);
     Py_RETURN_NONE;
@@ -2728,24 +3161,29 @@ static PyObject *PackedTable_clear_spare(PackedTable *self, PyObject *unused)
 
 static PyObject *PackedTable_native_bytes(PackedTable *self, PyObject *unused)
 {
-    Py_ssize_t bytes = self->key_capacity * sizeof(int64_t) +
-        (self->slots != NULL ? (self->mask + 1) * sizeof(int32_t) : 0)
+    Py_ssize_t bytes = self->states.key_capacity * sizeof(int64_t) +
+        (self->states.slots != NULL ? (self->states.mask + 1) * sizeof(int32_t) : 0)
         + vt_bytes(&self->frames) + vt_bytes(&self->data) + vt_bytes(&self->spare)
         + self->value_capacity * (1 + sizeof(double) + sizeof(PyObject *))
         + (self->value_mask + 1) * sizeof(int32_t)
         + vt_bytes(&self->signals) + self->context_capacity * (2 * sizeof(int32_t) + 1)
-        + self->context_tasks_capacity * self->task_count * TASK_INFO * sizeof(int32_t);
+        + self->context_tasks_capacity * self->task_count * TASK_INFO * sizeof(int32_t)
+        + self->places.key_capacity * sizeof(int64_t)      /* (the reduction's numbers) */
+        + (self->places.slots != NULL ? (self->places.mask + 1) * sizeof(int32_t) : 0)
+        + (self->row_at_capacity + self->row_capacity) * sizeof(int64_t);
     return PyLong_FromSsize_t(bytes);
 }
 
 static PyObject *PackedTable_counts(PackedTable *self, PyObject *unused)
 {
-    return Py_BuildValue("{s:n,s:n,s:n,s:n,s:L,s:L,s:L,s:L}", "states", self->count,
+    return Py_BuildValue("{s:n,s:n,s:n,s:n,s:L,s:L,s:L,s:L,s:L,s:n}", "states",
+                         self->states.count,
                          "frames", self->frames.count, "data", self->data.count,
                          "values", self->values, "machine_steps", self->machine_steps,
                          "python_steps", self->python_steps,
                          "task_machine_steps", self->task_machine_steps,
-                         "task_python_steps", self->task_python_steps);
+                         "task_python_steps", self->task_python_steps,
+                         "rows_reused", self->rows_reused, "places", self->places.count);
 }
 
 /* ``set_tasks(count)``: the program's tasks (2-64: each context then says where each
@@ -2761,12 +3199,153 @@ static PyObject *PackedTable_set_tasks(PackedTable *self, PyObject *argument)
     Py_RETURN_NONE;
 }
 
+/* ``set_order(flags)``: the partial-order reduction of a program of several tasks
+ * (model/packed/table.py's ``_order_flags``): per task, per routine, None or bytes of
+ * ORDER_ flags by pc.  From then on the machine's steps of several tasks run on
+ * through local instructions and keep one task's ample set (``tasks_step``). */
+static PyObject *PackedTable_set_order(PackedTable *self, PyObject *flags)
+{
+    if (!PyList_Check(flags) || PyList_GET_SIZE(flags) != self->task_count)
+        return PyErr_Format(PyExc_ValueError, "set_order: a list of one entry per task");
+    Py_ssize_t routines = -1, total = 0;
+    for (Py_ssize_t task = 0; task < self->task_count; task++) {
+        PyObject *per_routine = PyList_GET_ITEM(flags, task);
+        if (!PyList_Check(per_routine) ||
+                (routines >= 0 && PyList_GET_SIZE(per_routine) != routines))
+            return PyErr_Format(PyExc_ValueError, "set_order: a list per task, one per routine");
+        routines = PyList_GET_SIZE(per_routine);
+        for (Py_ssize_t r = 0; r < routines; r++) {
+            PyObject *entry = PyList_GET_ITEM(per_routine, r);
+            if (entry != Py_None && !PyBytes_Check(entry))
+                return PyErr_Format(PyExc_TypeError, "set_order: bytes or None per routine");
+            if (entry != Py_None)
+                total += PyBytes_GET_SIZE(entry);
+        }
+    }
+    Py_ssize_t pairs = self->task_count * (routines > 0 ? routines : 0);
+    uint8_t *bytes = PyMem_Malloc(total + 1);
+    int64_t *offsets = PyMem_Malloc((pairs + 1) * sizeof(int64_t));
+    int64_t *lengths = PyMem_Malloc((pairs + 1) * sizeof(int64_t));
+    if (bytes == NULL || offsets == NULL || lengths == NULL) {
+        PyMem_Free(bytes);
+        PyMem_Free(offsets);
+        PyMem_Free(lengths);
+        return PyErr_NoMemory();
+    }
+    int64_t at = 0;
+    for (Py_ssize_t task = 0; task < self->task_count; task++) {
+        PyObject *per_routine = PyList_GET_ITEM(flags, task);
+        for (Py_ssize_t r = 0; r < routines; r++) {
+            PyObject *entry = PyList_GET_ITEM(per_routine, r);
+            Py_ssize_t pair = task * routines + r;
+            offsets[pair] = entry == Py_None ? -1 : at;
+            lengths[pair] = entry == Py_None ? 0 : PyBytes_GET_SIZE(entry);
+            if (entry != Py_None) {
+                memcpy(bytes + at, PyBytes_AS_STRING(entry), PyBytes_GET_SIZE(entry));
+                at += PyBytes_GET_SIZE(entry);
+            }
+        }
+    }
+    PyMem_Free(self->order_flags);
+    PyMem_Free(self->order_offsets);
+    PyMem_Free(self->order_lengths);
+    self->order_flags = bytes;
+    self->order_offsets = offsets;
+    self->order_lengths = lengths;
+    self->order_routines = routines > 0 ? routines : 0;
+    self->reduced = 1;
+    Py_RETURN_NONE;
+}
+
+/* ============================================================ a check's searches */
+
+static void StateSet_dealloc(StateSet *self)
+{
+    index_free(&self->index);
+    Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+static PyTypeObject StateSetType = {
+    PyVarObject_HEAD_INIT(NULL, 0)
+    .tp_name = "rapidmc.check._native.StateSet",
+    .tp_doc = "The states one search of a check stored in a shared PackedTable (new_states).",
+    .tp_basicsize = sizeof(StateSet),
+    .tp_flags = Py_TPFLAGS_DEFAULT,
+    .tp_dealloc = (destructor)StateSet_dealloc,
+};
+
+/* Make ``chosen`` (a StateSet, or NULL: the table's own) the set whose states ids name:
+ * the index in the table's fields goes back to the set it belongs to, and ``chosen``'s
+ * comes in (the table holds the selected set, so it lives while its index is here). */
+static void select_states(PackedTable *self, PyObject *chosen)
+{
+    if (chosen == self->selected)
+        return;
+    StateIndex *from = self->selected != NULL ? &((StateSet *)self->selected)->index :
+        &self->own;
+    *from = self->states;
+    self->states = chosen != NULL ? ((StateSet *)chosen)->index : self->own;
+    Py_XINCREF(chosen);
+    Py_XSETREF(self->selected, chosen);
+    self->labels_wanted = 0;            /* (the search that wanted lines is not this one) */
+}
+
+/* ``new_states() -> StateSet``: an empty set of states for a new search of the check
+ * (``select`` it); the lines the machine ran are forgotten (the new search's observer
+ * hears them again) */
+static PyObject *PackedTable_new_states(PackedTable *self, PyObject *unused)
+{
+    StateSet *set = PyObject_New(StateSet, &StateSetType);
+    if (set == NULL)
+        return NULL;
+    if (index_init(&set->index) < 0) {
+        set->index.keys = NULL;
+        Py_DECREF(set);
+        return PyErr_NoMemory();
+    }
+    for (Py_ssize_t r = 0; r < self->routine_count; r++)
+        if (self->routines[r].executed != NULL)
+            memset(self->routines[r].executed, 0, self->routines[r].length + 1);
+    self->newly_executed.length = 0;
+    return (PyObject *)set;
+}
+
+/* ``select(states)``: ids name the states of ``states`` (a StateSet of this table's
+ * ``new_states``, or None: the table's own) from now on */
+static PyObject *PackedTable_select(PackedTable *self, PyObject *chosen)
+{
+    if (chosen != Py_None && !PyObject_TypeCheck(chosen, &StateSetType))
+        return PyErr_Format(PyExc_TypeError, "select: a StateSet or None");
+    select_states(self, chosen == Py_None ? NULL : chosen);
+    Py_RETURN_NONE;
+}
+
+/* ``place(frame id, data id, number) -> int``: the reduction's number of the state with
+ * these segments (``PartialOrder``'s C3), given now when it has none and ``number``; -1:
+ * none */
+static PyObject *PackedTable_place(PackedTable *self, PyObject *args)
+{
+    int frame_id, data_id, number;
+    if (!PyArg_ParseTuple(args, "iip", &frame_id, &data_id, &number))
+        return NULL;
+    Py_ssize_t place = place_of(self, frame_id, data_id, number);
+    return place == -2 ? NULL : PyLong_FromSsize_t(place);
+}
+
 static Py_ssize_t PackedTable_length(PackedTable *self)
 {
-    return self->count;
+    return self->states.count;
 }
 
 static PyMethodDef PackedTable_methods[] = {
+    {"new_states", (PyCFunction)PackedTable_new_states, METH_NOARGS,
+     "new_states() -> StateSet: the states of a new search of the check (select it)"},
+    {"select", (PyCFunction)PackedTable_select, METH_O,
+     "select(states): ids name the states of this StateSet (None: the table's own)"},
+    {"place", (PyCFunction)PackedTable_place, METH_VARARGS,
+     "place(frame id, data id, number) -> int: the reduction's number of the state"},
+    {"set_order", (PyCFunction)PackedTable_set_order, METH_O,
+     "set_order(flags): the partial-order reduction's flags per task, routine and pc"},
     {"value_ids", (PyCFunction)PackedTable_value_ids, METH_O,
      "value_ids(values) -> bytes: the 32-bit ids of the values (stored when new)"},
     {"values", (PyCFunction)PackedTable_values, METH_O,
@@ -2938,6 +3517,12 @@ static int python_successors(PackedSearch *search, Py_ssize_t frontier)
         return -1;
     int filled = found_from_pairs(pairs, &search->found);
     Py_DECREF(pairs);
+    if (filled < 0)
+        return filled;
+    /* (Python's row of a reduced step, kept for the later searches as the machine's are) */
+    Py_ssize_t place = row_place(search->table, frontier, search->labels_wanted);
+    if (place == -2 || (place >= 0 && row_keep(search->table, place, &search->found) < 0))
+        return -1;
     return filled;
 }
 
@@ -2947,7 +3532,7 @@ enum { GO_ON = 0, FOUND = 1, STOPPED = 2, FAILED = -1 };
 static int visit(PackedSearch *search, Py_ssize_t frontier, Py_ssize_t i, Py_ssize_t *id)
 {
     PackedTable *table = search->table;
-    Py_ssize_t stored = table->count;
+    Py_ssize_t stored = table->states.count;
     int is_new = 0;
     *id = intern_key(table, search->found.frames[i], search->found.data[i],
                      stored < search->max_states, &is_new);
@@ -3056,7 +3641,7 @@ static int observe(PackedSearch *search, Py_ssize_t frontier, int by_machine)
     if (search->python_observe == Py_None)
         return 0;
     PackedTable *table = search->table;
-    int64_t key = table->keys[frontier];
+    int64_t key = table->states.keys[frontier];
     int32_t frame = (int32_t)(key >> 32), data = (int32_t)(key & 0xffffffff);
     /* (a task at a barrier waiting for one that has ended is stuck whatever the others
      * do: Python's stuck check says so) */
@@ -3192,12 +3777,12 @@ static PyObject *packed_breadth_first(PyObject *module, PyObject *args)
     if (search.max_states < 0 || search.next_checkpoint < 0)
         goto done;
     if (search.level_end <= frontier)
-        search.level_end = search.table->count;
+        search.level_end = search.table->states.count;
     outcome = GO_ON;
-    while (outcome == GO_ON && frontier < search.table->count) {
+    while (outcome == GO_ON && frontier < search.table->states.count) {
         if (frontier == search.level_end) {
             search.depth_now++;
-            search.level_end = search.table->count;
+            search.level_end = search.table->states.count;
         }
         outcome = expand(&search, frontier, &target);
         if (outcome == GO_ON) {
@@ -3253,7 +3838,10 @@ PyMethodDef packed_functions[] = {
 
 int packed_register(PyObject *module)
 {
-    if (PyType_Ready(&PackedTableType) < 0)
+    if (PyType_Ready(&PackedTableType) < 0 || PyType_Ready(&StateSetType) < 0)
+        return -1;
+    Py_INCREF(&StateSetType);
+    if (PyModule_AddObject(module, "StateSet", (PyObject *)&StateSetType) < 0)
         return -1;
     Py_INCREF(&PackedTableType);
     if (PyModule_AddObject(module, "PackedTable", (PyObject *)&PackedTableType) < 0)

@@ -117,7 +117,8 @@ def part_hashes(limit: int):
 def engine_of(table: StateTable) -> str:
     """The engine a search with this state table runs on."""
     native = NativeStateTable is not None and isinstance(table, NativeStateTable) or \
-        _native is not None and isinstance(table, _native.PackedTable)
+        _native is not None and isinstance(getattr(table, "machine_table", lambda: None)(),
+                                            _native.PackedTable)
     return NATIVE if native else PYTHON
 
 

@@ -277,7 +277,8 @@ class _BreadthFirst:
         the rows of the graph and their valuations, and the observer's stuck check and
         trigger atoms are computed there; Python is called for the rest (the Python step,
         with labels for the observer while it wants them: ``labels_wanted``)."""
-        table, observe, graph = self.states, self.observe, self.graph
+        observe, graph = self.observe, self.graph
+        table = self.states.machine_table()      # (a check's shared table: this search's)
         table.predicate = self.predicate
         table.observer = observe
         watch = getattr(observe, "packed_watch", None)

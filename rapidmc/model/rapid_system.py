@@ -17,6 +17,7 @@ from pyrsistent import pvector
 
 from .. import ast
 from ..check import TransitionInfo
+from ..check.native import native_search
 from ..check.trace import CallFrame
 from ..check.result import LassoStep, SearchResult
 from ..diagnostics import TRACE_REPLAY, SourceCache, error
@@ -41,6 +42,7 @@ from .task_atoms import task_qualifier
 from .value_text import DESCRIBED_TYPES, OPAQUE_KINDS, untyped_text, value_text
 from .reduction.expansion import expand_lasso
 from .reduction.merging import executed_spans
+from .reduction.partial_order import PartialOrder, StatePlaces
 
 
 _new_tuple = tuple.__new__
@@ -87,6 +89,8 @@ class RapidSystem:
         if getattr(self.order, "keys", None) is not None:
             # (its proviso keys the very states this cache does: one memory of their parts)
             self.order.keys = self._keys
+        if isinstance(self.order, PartialOrder):
+            self.order.places_made = self._reduction_places
         self._full: Optional["RapidSystem"] = None      # see full_interleaving
 
     @staticmethod
@@ -106,6 +110,15 @@ class RapidSystem:
         (``model.packed``), or None when the core is not built or cannot take them."""
         from .packed.table import packed_table
         return packed_table(self)
+
+    def _reduction_places(self):
+        """Where the partial-order reduction's proviso numbers states: in a packed table
+        that every search of the check shares when the compiled core searches now and its
+        step machine takes the system's steps (``packed.table.reduced_packing``), else by
+        key in Python (``StatePlaces``)."""
+        from .packed.table import reduced_packing
+        places = reduced_packing(self) if native_search() else None
+        return places if places is not None else StatePlaces(self._keys)
 
     def unreduced(self) -> "RapidSystem":
         """The same program and configuration without reductions."""

@@ -20,6 +20,12 @@ the valuations the search keeps.  It answers the machine's calls back for
 the states it leaves to Python (``python_successors``, ``python_valuation``,
 ``predicate_holds``, ``observe``).
 
+Under the partial-order reduction one table serves every search of a check
+(``reduced_packing``): each search keeps its states in a ``_native.StateSet`` of its own
+(``PackedSearch``), the proviso numbers states in the table (``PackedPlaces``), and the
+machine chooses the ample sets ``PartialOrder`` would, keeping each reduced step's
+successors by the state's number for the later searches.
+
 Two states are the same stored state exactly when the Python table
 (``check.states``) says so: equal contexts (tuples compared by ``==``) and
 equal values (ids by ``==``, as ``_packed.c`` interns them).  tests/
@@ -38,6 +44,7 @@ from ...check.native import _native
 from ...semantics.plain_step import is_plain
 from ...semantics.staged_step import task_transitions
 from ..reduction.merging import executed_spans
+from ..reduction.partial_order import PartialOrder
 from ...semantics.state import FAILED, RUNNING, Frame, State
 from ..reduction.projection import Projection
 from .bytecode import RoutineCode, atom_code
@@ -49,15 +56,31 @@ HAS_FAILED = 2
 MAIN_ALONE = 4                         # one frame, of the projection's main routine
 ENDED_TASK = 8                         # several tasks, one of them has ended
 TASK_RUNS = 1                          # per task of a context: the machine may step it
+ORDER_CANDIDATE = 1                    # per task and instruction (``_order_flags``)
+ORDER_NEVER_WAITS = 2
+ORDER_MERGEABLE = 4
 MAX_TASKS = 64
+REMEMBERED_VECTORS = 256               # states whose vectors are remembered (reduced search)
 
 
 def packed_table(system) -> Optional["PackedStateTable"]:
     """A packed table for ``system``'s states when the compiled core is built and its
-    step machine can take the system's fused steps, else None."""
+    step machine can take the system's fused steps, else None.  Reduced between tasks
+    (``PartialOrder``), the searches of a check share one table (``PackedSearch``: a set
+    of states each) when the reduction numbers its states in it (``reduced_packing``)."""
+    order = system.order
+    if isinstance(order, PartialOrder):
+        places = order.places()
+        return PackedSearch(places.table) if isinstance(places, PackedPlaces) else None
+    if order is not None:
+        return None
+    return _new_table(system)
+
+
+def _new_table(system) -> Optional["PackedStateTable"]:
     tasks = len(system.program.task_names)
     projection = system.project if tasks > 1 else system.project_fused
-    if _native is None or system.order is not None or tasks > MAX_TASKS or \
+    if _native is None or tasks > MAX_TASKS or \
             projection is not None and not isinstance(projection, Projection):
         return None
     config = system.config
@@ -65,6 +88,76 @@ def packed_table(system) -> Optional["PackedStateTable"]:
         return None
     table = PackedStateTable(system)
     return table if table.compiled_routines else None
+
+
+def reduced_packing(system) -> Optional["PackedPlaces"]:
+    """The numbering of the partial-order reduction's proviso in a packed table of the
+    system's states, which every search of the check then shares, so the step machine
+    chooses the ample sets Python would (``_packed.c``'s ``ample_step``); None when the
+    table cannot serve (the Python engine, or a system the machine does not take)."""
+    table = _new_table(system) if system.program.task_names[1:] else None
+    if table is None:
+        return None
+    table.set_order(table.order_flags())
+    # (the proviso packs a successor to ask for its number, and the search then stores it)
+    table.remembered = {}
+    table._vectors = table._remembered_vectors
+    return PackedPlaces(table)
+
+
+class PackedPlaces:
+    """``partial_order.StatePlaces`` kept in a packed table (its states' segments: exact),
+    where the step machine numbers the states it steps."""
+
+    def __init__(self, table: "PackedStateTable"):
+        self.table = table
+
+    def place(self, state: State) -> int:
+        table = self.table
+        return table.place(*table.intern_parts(*table.vectors_of(state)), False)
+
+    def number(self, state: State) -> int:
+        table = self.table
+        return table.place(*table.intern_parts(*table.vectors_of(state)), True)
+
+
+class PackedSearch:
+    """One search's states in a check's shared packed table: its own ids and count
+    (``_native.StateSet``, as a table of its own would give them), with the table's
+    values, segments, contexts, step machine, kept rows and the reduction's numbering of
+    states.  Every call selects the search's set first (``machine_table``)."""
+
+    collapsed = True
+    known_ids: dict = {}
+
+    def __init__(self, table: "PackedStateTable"):
+        object.__setattr__(self, "table", table)
+        object.__setattr__(self, "states", table.new_states())
+
+    def machine_table(self) -> "PackedStateTable":
+        """The shared table, with this search's states selected."""
+        table = self.table
+        if table.selected_states is not self.states:
+            table.select_search(self.states)
+        return table
+
+    def intern(self, state: Hashable, add: bool = True) -> tuple[int, bool]:
+        return self.machine_table().intern(state, add)
+
+    def __getitem__(self, state_id: int) -> State:
+        return self.machine_table()[state_id]
+
+    def __len__(self) -> int:
+        return len(self.machine_table())
+
+    def successor_ids(self, state_id: int, valuation: int):
+        return self.machine_table().successor_ids(state_id, valuation)
+
+    def __getattr__(self, name: str):
+        return getattr(self.machine_table(), name)
+
+    def __setattr__(self, name: str, value) -> None:
+        setattr(self.table, name, value)
 
 
 class PackedStateTable(_native.PackedTable if _native is not None else object):
@@ -164,6 +257,41 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
             self._send_program()
         return len(self._valuations) - 1 if code is not None else -1
 
+    def order_flags(self) -> list:
+        """Per task, per routine, the partial-order reduction's facts about each instruction
+        (``_packed.c``'s ORDER_ flags): an ample candidate (``is_ample_candidate``), it
+        never waits (``never_waits``), it joins its task's step before it (``local_runs``).
+        Every routine's: the machine decides a state's ample set only where it knows
+        every running task's instruction."""
+        order, routines = self.system.order, self.program.routines
+        runs = order.runs
+        flags = []
+        for task in range(self.tasks):
+            per_routine = []
+            for index, routine in enumerate(routines):
+                per_routine.append(bytes(
+                    (ORDER_CANDIDATE if order.is_ample_candidate(task, index, pc) else 0) |
+                    (ORDER_NEVER_WAITS if order.never_waits(index, pc) else 0) |
+                    (ORDER_MERGEABLE if runs is not None and runs.mergeable(task, index, pc)
+                     else 0)
+                    for pc in range(len(routine.code))))
+            flags.append(per_routine)
+        return flags
+
+    def machine_table(self) -> "PackedStateTable":
+        """The table the compiled search loops run on: this one."""
+        return self
+
+    selected_states = None           # (``PackedSearch``: the search whose ids are meant)
+
+    def select_search(self, states) -> None:
+        """Ids name the states of ``states`` (a ``new_states()``) from now on; what was
+        remembered by id is forgotten."""
+        self.select(states)
+        self.selected_states = states
+        self._stepping, self._python_spans = (-1, None), []
+        self._last_id, self._last = -1, ()
+
     # ------------------------------------------------------ StateTable protocol
     def intern(self, state: Hashable, add: bool = True) -> tuple[int, bool]:
         frame, data = self._vectors(state)
@@ -220,6 +348,19 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
     # context is each task's frames below, its top frame's routine, handler fields and
     # number of locals (None: the task has ended), the signals and the rest of the state
     # but the tasks.
+    def _remembered_vectors(self, state: State) -> tuple[bytes, bytes]:
+        """``_task_vectors``, remembered for the states packed last (by identity, each kept
+        alive while it is remembered)."""
+        remembered = self.remembered
+        known = remembered.get(id(state))
+        if known is not None and known[0] is state:
+            return known[1]
+        if len(remembered) >= REMEMBERED_VECTORS:
+            remembered.clear()
+        vectors = self._task_vectors(state)
+        remembered[id(state)] = (state, vectors)
+        return vectors
+
     def _task_vectors(self, state: State) -> tuple[bytes, bytes]:
         shapes = []
         items: list = []
@@ -370,6 +511,7 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
     def python_successors(self, state_id: int) -> list[tuple[int, int]]:
         """The successors of a state the machine left to Python, as interned parts."""
         state = self[state_id]
+        self._stepping, self._python_spans = (-1, None), []   # (what the machine began)
         targets = self.system.successor_states(state)
         self._last_id, self._last = state_id, (state, targets)
         return [self.intern_parts(*self._vectors(target)) for target in targets]
@@ -378,6 +520,7 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         """``python_successors`` for an observer that wants the labels: it sees them; and
         whether it wants more."""
         state = self[state_id]
+        self._stepping, self._python_spans = (-1, None), []   # (what the machine began)
         labelled = list(self.system.successors(state))
         self.observer(state, labelled)
         targets = [target for _, target in labelled]

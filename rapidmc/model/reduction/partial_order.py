@@ -25,14 +25,21 @@ Checking*, ch. 10) is every transition of one task ``t`` when
   instruction whose step always changes the state, ``never_waits``, or one
   of its steps from there does), so ``waits(task)``, the atom of
   ``no_deadlock``'s search (``model.waiting``), stays false;
-* C3 cycle proviso: no successor it leads to has been expanded before.  Along
-  a cycle of the reduced graph, the state whose successors were computed last
-  has a successor computed earlier, so it is expanded fully: every cycle has
-  a fully expanded state, whatever the search order (the breadth-first safety
-  searches, the depth-first product search of an LTL property, several
-  searches over one system whose successors are remembered).  States are
-  remembered by key (``model.state_keys``: equal states, equal keys, computed
-  from the parts a step handed on unchanged): a collision only expands fully.
+* C3 cycle proviso: no successor it leads to was numbered before the state.
+  The system numbers states as it hands them out (``StatePlaces``): wherever a
+  choice is tried (several tasks running, no interrupt), the state first, then
+  the targets of the transitions it keeps, in order, each when it has no number
+  yet.  An ample transition thus always leads to a state numbered after its
+  source, so along a cycle of the reduced graph the numbers cannot grow all the
+  way round: some state on it is expanded fully, whatever the search order (the
+  breadth-first safety searches, the depth-first product search of an LTL
+  property, several searches over one system).  A state's number never changes,
+  so its ample set is the same whenever it is asked for, by any search and by
+  either engine: the compiled core's step machine numbers the states it steps
+  in its packed table (``model.packed``), and a later search takes the very
+  transitions an earlier one took.  Numbers are kept by key (``model.state_keys``:
+  equal states, equal keys); a successor whose key has a number no greater than
+  the state's counts as numbered before it (a collision only expands fully).
 
 Otherwise the state is expanded fully.  With merged steps on, each transition
 then runs on through its task's next independent, invisible instructions
@@ -134,8 +141,12 @@ class PartialOrder:
                             for routine in program.routines for instruction in routine.code)
         self._local: dict = {}          # (task, routine, pc) -> bool
         self._loops: dict = {}          # routine index -> names of its FOR variables
-        self.expanded: set[int] = set()  # keys of the states expanded (cycle proviso)
         self.keys = StateKeys()
+        # the cycle proviso's numbering of states (``StatePlaces``), made when first asked:
+        # ``places_made`` gives it (a system sets it: its packed table's, in the compiled
+        # core, when the step machine takes the reduced steps)
+        self._places: Optional["StatePlaces"] = None
+        self.places_made = lambda: StatePlaces(self.keys)
         # a task's step goes on through its local instructions (``local_runs``)
         self.runs = LocalRuns(program, self, visible_names, project) if merge else None
 
@@ -148,20 +159,32 @@ class PartialOrder:
         """``successors`` (labelled, as ``RapidSystem.successors`` gives them) or the
         ample subset of one task's transitions (``config``: the system's, with which a
         task's steps are computed to tell whether it waits)."""
-        expanded = self.expanded
-        chosen = None
-        if state[7] == RUNNING and not _has_interrupts(state[4]):
-            stacks = (state[0],) + state[10]
-            running = [task for task, stack in enumerate(stacks) if stack]
-            if len(running) > 1:
-                chosen = self._choose(state, stacks, running, successors, config)
-        expanded.add(self.keys.key(state))
-        if chosen is not None:
-            return chosen
-        return successors if self.runs is None else self.runs.extend(state, successors, config)
+        if state[7] != RUNNING or _has_interrupts(state[4]):
+            return successors if self.runs is None else self.runs.extend(state, successors,
+                                                                         config)
+        stacks = (state[0],) + state[10]
+        running = [task for task, stack in enumerate(stacks) if stack]
+        if len(running) < 2:
+            return successors if self.runs is None else self.runs.extend(state, successors,
+                                                                         config)
+        places = self.places()
+        here = places.number(state)
+        chosen = self._choose(state, stacks, running, successors, config, here)
+        if chosen is None:
+            chosen = successors if self.runs is None else self.runs.extend(state, successors,
+                                                                           config)
+        for _, after in chosen:
+            places.number(after)
+        return chosen
+
+    def places(self) -> "StatePlaces":
+        """The numbering of states the proviso reads (made when first asked)."""
+        if self._places is None:
+            self._places = self.places_made()
+        return self._places
 
     def _choose(self, state: State, stacks: tuple, running: list, successors: list,
-                config) -> Optional[list]:
+                config, here: int) -> Optional[list]:
         for task in running:
             frame = stacks[task][-1]
             if not self.is_ample_candidate(task, frame[0], frame[1]):
@@ -170,19 +193,21 @@ class PartialOrder:
             mine = [entry for entry in successors if (TASK_CHOICE, name) in entry[0][0]]
             if self.runs is not None:
                 mine = self.runs.extend(state, mine, config)
-            if mine and all(self._invisible_step(task, state, after, config)
+            if mine and all(self._invisible_step(task, state, after, config, here)
                             for _, after in mine):
                 return mine
         return None
 
-    def _invisible_step(self, task: int, state: State, after: State, config) -> bool:
+    def _invisible_step(self, task: int, state: State, after: State, config,
+                        here: int) -> bool:
         """Whether a step of ``task`` from ``state`` to ``after`` may be ample: it did what
         its instruction does without an error (ERRNO is every task's, and a handler or an
         unwinding changes the task's frames), the task can go on in ``after`` (so
         ``waits(task)`` of ``no_deadlock``'s search stays false, as in ``state``, where
-        its instruction was independent), and ``after`` is new to the search (C3)."""
+        its instruction was independent), and ``after`` was not numbered before the state,
+        whose number is ``here`` (C3)."""
         if after[7] != RUNNING or after == state or after[5] != state[5] or \
-                after[6] != state[6] or self.keys.key(after) in self.expanded:
+                after[6] != state[6] or 0 <= self.places().place(after) <= here:
             return False
         before = state[0] if task == 0 else state[10][task - 1]
         stack = after[0] if task == 0 else after[10][task - 1]
@@ -331,6 +356,25 @@ class PartialOrder:
     def _visible_local(self, routine, slot: int) -> bool:
         name = routine.local_names[slot] if slot < len(routine.local_names) else ""
         return name.upper() in self.visible or routine.name.upper() in self.visible
+
+
+class StatePlaces:
+    """The proviso's numbering of states, by key (``model.state_keys``), in the order the
+    system numbered them (the module docstring, C3); the Python engine's, and the compiled
+    core's where its step machine does not take the reduced steps."""
+
+    def __init__(self, keys: StateKeys):
+        self.keys = keys
+        self._numbers: dict[int, int] = {}
+
+    def place(self, state: State) -> int:
+        """The state's number, -1 when it has none."""
+        return self._numbers.get(self.keys.key(state), -1)
+
+    def number(self, state: State) -> int:
+        """The state's number, given now when it has none."""
+        numbers = self._numbers
+        return numbers.setdefault(self.keys.key(state), len(numbers))
 
 
 class EveryOrder:
