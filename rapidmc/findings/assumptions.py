@@ -46,6 +46,7 @@ from ..load.stubs.module_text import is_stub_module
 from ..model.reduction.merging import executed_spans
 from ..load.shared_data import data_uses, writes_data_by_name
 from ..check.result import VIOLATED
+from ..load.outside_data import UNSET_VALUE_TEXT
 from ..semantics.expressions import WAIT_CHOICES
 from ..semantics.library.motion import MOVE_ROUTINES
 from ..semantics.library.position import ROBOT_PARTS
@@ -217,6 +218,17 @@ def _whole_fixed(program: Program, data) -> str:
             f"(more than {WAIT_CHOICES} combinations of its elements' values)")
 
 
+def _value_origin(data, chosen) -> str:
+    """Where the value of data written outside comes from when no loaded declaration
+    gives one: another task's declaration, or a valid value in place of zeros."""
+    if data.initial_from is not None:
+        return f"; declared here without a value, it starts with the value " \
+               f"{data.initial_from} declares, as on the controller"
+    if chosen.unset:
+        return f" and declared without a value: {UNSET_VALUE_TEXT}"
+    return ""
+
+
 def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[Assumption]:
     """PERS data that some loaded task reads and none writes (``data_uses``, shared with
     the partial-order reduction and RMC731): the values its reads take when it is written
@@ -231,6 +243,12 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
         written |= task_written
     for data in program.globals:
         chosen = outside.get(data.slot)
+        if data.initial_from is not None and (chosen is None or chosen.also_written_by) \
+                and data.slot in read:
+            yield Assumption(OTHER_WRITER, data.name,
+                             f"PERS {data.name}, declared here without a value, starts with the "
+                             f"value {data.initial_from} declares, as on the controller "
+                             f"({_where(data.span)})")
         if chosen is not None and chosen.awaited_at is not None:
             yield Assumption(OTHER_WRITER, data.name,
                              f"PERS {data.name}: no write of the loaded code ends the WaitUntil "
@@ -256,8 +274,9 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
             seen = "; the properties read the value the program's last read took" \
                 if chosen.observed else ""
             yield Assumption(OTHER_WRITER, data.name,
-                             f"PERS {data.name} is written outside the loaded code; its reads "
-                             f"take {chosen.describe()}{_whole_fixed(program, data)}{seen} "
+                             f"PERS {data.name} is written outside the loaded code"
+                             f"{_value_origin(data, chosen)}; its reads take "
+                             f"{chosen.describe()}{_whole_fixed(program, data)}{seen} "
                              f"({_where(data.span)})")
         else:
             yield Assumption(OTHER_WRITER, data.name,

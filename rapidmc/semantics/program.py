@@ -36,6 +36,9 @@ class GlobalData:
     initial: Any = None           # initial value (computed at link time)
     declared_without_value: bool = False
     task_local: bool = False      # TASK PERS: not shared with other tasks
+    # where its value comes from when another task's declaration gives it (``task T
+    # (file:line)``: a task not loaded, ``Linker._values_declared_elsewhere``), else None
+    initial_from: Optional[str] = None
 
 
 @dataclass
