@@ -22,6 +22,9 @@ loaded module says for sure:
 * **interrupts not modelled**: an instruction ordering one that the check models with
   no effect (ISignalGI, IError, TriggInt ...: ``tried_inputs.unmodelled_interrupt_orders``)
   never interrupts the program, so its TRAP never runs;
+* **barriers naming tasks not loaded**: a WaitSyncTask or SyncMoveOn whose task list
+  names a task the check does not load takes it as arrived at once
+  (``absent_partners``);
 * **the robot's position left out of states**: where nothing but moves reads it
   (``model.robot_tracking``), moves leave the robot where it is; the verdicts are
   those of the tracked robot, but a counterexample shows the robot at its start
@@ -51,11 +54,13 @@ from ..semantics.expressions import WAIT_CHOICES
 from ..semantics.library.motion import MOVE_ROUTINES
 from ..semantics.library.position import ROBOT_PARTS
 from ..semantics.program import ENVIRONMENT_NAMESPACE, PROGRAM_NAMESPACE, Program
+from .absent_partners import absent_partners
 from .fixed_readings import fixed_readings
 from .tried_inputs import unmodelled_interrupt_orders
 
 STUB, READING, OTHER_WRITER = "stub", "fixed reading", "other writer"
 NO_INTERRUPT = "interrupt not modelled"
+ABSENT_TASK = "task not loaded"
 UNTRACKED = "untracked"
 _IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 _STRING_OR_COMMENT = re.compile(r'"(?:[^"]|"")*"|!.*$')
@@ -66,7 +71,7 @@ _HEAD_END = re.compile(r";|\b(?:THEN|DO|CASE|DEFAULT)\b", re.IGNORECASE)
 class Assumption:
     """One thing a verdict may rest on: its kind, the name it is about, and a sentence."""
 
-    kind: str                 # STUB, READING, OTHER_WRITER, NO_INTERRUPT, UNTRACKED
+    kind: str                 # STUB, READING, OTHER_WRITER, NO_INTERRUPT, UNTRACKED, ABSENT_TASK
     name: str
     text: str
     # upper-case names besides ``name`` whose statements rest on it (a counterexample
@@ -98,9 +103,27 @@ def assumptions(program: Program, robot_untracked: bool = False) -> tuple[Assump
                          f"{Path(call.span.file).name}:{call.span.line} never comes: the check "
                          "does not model it, so the TRAP it would run does not run")
               for call in unmodelled_interrupt_orders(program)]
+    found += list(_barriers_without_partners(program))
     if robot_untracked:
         found.append(UNTRACKED_ROBOT)
     return tuple(found)
+
+
+def _barriers_without_partners(program: Program) -> Iterator[Assumption]:
+    """A WaitSyncTask or SyncMoveOn naming tasks that are not loaded: they are taken as
+    arrived at once (``absent_partners``)."""
+    places: dict = {}                   # (what, absent) -> the barriers' places, in order
+    for barrier in absent_partners(program):
+        places.setdefault((barrier.what, barrier.absent), []).append(_where(barrier.span))
+    for (what, absent), where in places.items():
+        who = "the tasks its list names that are not loaded" if absent is None \
+            else "task " + ", ".join(absent) if len(absent) == 1 \
+            else "tasks " + ", ".join(absent)
+        is_are = "is" if absent is not None and len(absent) == 1 else "are"
+        shown = ", ".join(where[:3]) + (f" and {len(where) - 3} more" if len(where) > 3 else "")
+        yield Assumption(ABSENT_TASK, what,
+                         f"{what} ({shown}) waits for {who}, which {is_are} not loaded: taken "
+                         f"as arriving at once (check the tasks together to follow them)")
 
 
 def touched(all_assumptions: Iterable[Assumption], result: SearchResult,
