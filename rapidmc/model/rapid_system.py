@@ -345,7 +345,7 @@ class RapidDescriber:
         """``<signaldo: doReady>`` for a signal parameter: the signal its caller passed (it
         holds the signal's index), so that a wait in a helper routine (``WaitDO s, 1``)
         says which signal it waits for; None for other data."""
-        if getattr(rapid_type, "signal_kind", None) is None or isinstance(value, bool) or \
+        if not getattr(rapid_type, "signal_kind", "") or isinstance(value, bool) or \
                 not isinstance(value, (int, float)) or not 0 <= value < len(self.program.signals):
             return None
         return f"<{rapid_type.name}: {self.program.signals[int(value)].name}>"
