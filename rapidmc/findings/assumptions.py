@@ -18,7 +18,7 @@ loaded module says for sure:
   (``load.shared_data.data_uses`` says what each task reads and writes);
 * **digital outputs no loaded code sets**: read back, they take either value
   (``load.outside_outputs``: a system output, a cross-connection, a task not
-  loaded);
+  loaded); one the loaded code sets too may end a WaitDO at any try;
 * **interrupts not modelled**: an instruction ordering one that the check models with
   no effect (ISignalGI, IError, TriggInt ...: ``tried_inputs.unmodelled_interrupt_orders``)
   never interrupts the program, so its TRAP never runs;
@@ -98,6 +98,11 @@ def assumptions(program: Program, robot_untracked: bool = False) -> tuple[Assump
                          f"output {signal.name} is set outside the loaded code, by "
                          f"{signal.outside}; its reads take 0 or 1")
               for signal in program.signals if signal.outside]
+    found += [Assumption(OTHER_WRITER, signal.name,
+                         f"output {signal.name} is set by the loaded code and by "
+                         f"{signal.also_set_by}; a WaitDO on it may end at any try, as if "
+                         f"that party set the awaited value just before")
+              for signal in program.signals if signal.also_set_by]
     found += [Assumption(NO_INTERRUPT, call.name.text,
                          f"the interrupt {call.name.text} orders at "
                          f"{Path(call.span.file).name}:{call.span.line} never comes: the check "

@@ -291,6 +291,9 @@ class Linker:
         finder = self.options.get("outside_outputs")
         for index, who in (finder(self) if finder is not None and not self.errors else {}).items():
             self.signals[index].outside = who
+        finder = self.options.get("outputs_set_by_both")
+        for index, who in (finder(self) if finder is not None and not self.errors else {}).items():
+            self.signals[index].also_set_by = who
         # the names GetTaskName answers: a backup's (T_ROB1 ...), else T_ROB1 for the main task
         self.task_names = (self.options.get("main_task_name") or "T_ROB1",) + tuple(
             task.name for _, task in task_namespaces)

@@ -125,6 +125,9 @@ class Signal:
     span: Optional[Span] = None
     # an output no loaded code sets, read like a free input: who sets it (load.outside_outputs)
     outside: Optional[str] = None
+    # an output the loaded code sets and a party left out sets too: who (a WaitDO on it may
+    # end at any try: load.outside_outputs.outputs_set_by_both), else None
+    also_set_by: Optional[str] = None
 
 
 @dataclass
