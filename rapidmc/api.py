@@ -56,6 +56,7 @@ from .load.backup import (link_options, load_tasks, resolve_program_files,
 from .load.message_domains import (ANSWERS, FILE, PROBE_STATES, SOCKET, message_domains,
                                    site_key)
 from .load.outside_data import observed_names, outside_data as find_outside_data
+from .load.outside_outputs import outputs_set_by_both
 from .load.outside_outputs import outside_outputs as find_outside_outputs
 from .load.shared_data import pers_warnings
 from .ltl import read_hoa, to_buchi
@@ -153,6 +154,7 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
     if outside_data:
         options["outside_data"] = find_outside_data
         options["outside_outputs"] = find_outside_outputs
+        options["outputs_set_by_both"] = outputs_set_by_both
         options["observed_names"] = observed_names(properties)
     if flows:
         from .findings.lint.marks import instrument as instrument_flows  # (only for --flows)

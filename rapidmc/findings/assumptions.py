@@ -18,13 +18,16 @@ loaded module says for sure:
   (``load.shared_data.data_uses`` says what each task reads and writes);
 * **digital outputs no loaded code sets**: read back, they take either value
   (``load.outside_outputs``: a system output, a cross-connection, a task not
-  loaded);
+  loaded); one the loaded code sets too may end a WaitDO at any try;
 * **interrupts not modelled**: an instruction ordering one that the check models with
   no effect (ISignalGI, IError, TriggInt ...: ``tried_inputs.unmodelled_interrupt_orders``)
   never interrupts the program, so its TRAP never runs;
 * **the robot's start position**: the check's robot starts at its home (every coordinate
   0), a real one wherever it was left; where the code reads a position back for more than
   a move's target (``tried_inputs.start_position_reads``), the verdict says so;
+* **barriers naming tasks not loaded**: a WaitSyncTask or SyncMoveOn whose task list
+  names a task the check does not load takes it as arrived at once
+  (``absent_partners``);
 * **the robot's position left out of states**: where nothing but moves reads it
   (``model.robot_tracking``), moves leave the robot where it is; the verdicts are
   those of the tracked robot, but a counterexample shows the robot at its start
@@ -49,15 +52,18 @@ from ..load.stubs.module_text import is_stub_module
 from ..model.reduction.merging import executed_spans
 from ..load.shared_data import data_uses, writes_data_by_name
 from ..check.result import VIOLATED
+from ..load.outside_data import UNSET_VALUE_TEXT
 from ..semantics.expressions import WAIT_CHOICES
 from ..semantics.library.motion import MOVE_ROUTINES
 from ..semantics.library.position import ROBOT_PARTS
 from ..semantics.program import ENVIRONMENT_NAMESPACE, PROGRAM_NAMESPACE, Program
+from .absent_partners import absent_partners
 from .fixed_readings import fixed_readings
 from .tried_inputs import start_position_reads, unmodelled_interrupt_orders
 
 STUB, READING, OTHER_WRITER = "stub", "fixed reading", "other writer"
 NO_INTERRUPT = "interrupt not modelled"
+ABSENT_TASK = "task not loaded"
 UNTRACKED = "untracked"
 _IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 _STRING_OR_COMMENT = re.compile(r'"(?:[^"]|"")*"|!.*$')
@@ -68,7 +74,7 @@ _HEAD_END = re.compile(r";|\b(?:THEN|DO|CASE|DEFAULT)\b", re.IGNORECASE)
 class Assumption:
     """One thing a verdict may rest on: its kind, the name it is about, and a sentence."""
 
-    kind: str                 # STUB, READING, OTHER_WRITER, NO_INTERRUPT, UNTRACKED
+    kind: str                 # STUB, READING, OTHER_WRITER, NO_INTERRUPT, UNTRACKED, ABSENT_TASK
     name: str
     text: str
     # upper-case names besides ``name`` whose statements rest on it (a counterexample
@@ -95,11 +101,17 @@ def assumptions(program: Program, robot_untracked: bool = False) -> tuple[Assump
                          f"output {signal.name} is set outside the loaded code, by "
                          f"{signal.outside}; its reads take 0 or 1")
               for signal in program.signals if signal.outside]
+    found += [Assumption(OTHER_WRITER, signal.name,
+                         f"output {signal.name} is set by the loaded code and by "
+                         f"{signal.also_set_by}; a WaitDO on it may end at any try, as if "
+                         f"that party set the awaited value just before")
+              for signal in program.signals if signal.also_set_by]
     found += [Assumption(NO_INTERRUPT, call.name.text,
                          f"the interrupt {call.name.text} orders at "
                          f"{Path(call.span.file).name}:{call.span.line} never comes: the check "
                          "does not model it, so the TRAP it would run does not run")
               for call in unmodelled_interrupt_orders(program)]
+    found += list(_barriers_without_partners(program))
     if robot_untracked:
         found.append(UNTRACKED_ROBOT)
     found += _robot_start(program)
@@ -120,6 +132,23 @@ def _robot_start(program: Program) -> list[Assumption]:
                        f"the robot starts at the check's home position (every coordinate 0); "
                        f"{first.name.text} at {_where(first.span)} reads where it is{more}",
                        frozenset(call.name.key for call in reads))]
+
+
+def _barriers_without_partners(program: Program) -> Iterator[Assumption]:
+    """A WaitSyncTask or SyncMoveOn naming tasks that are not loaded: they are taken as
+    arrived at once (``absent_partners``)."""
+    places: dict = {}                   # (what, absent) -> the barriers' places, in order
+    for barrier in absent_partners(program):
+        places.setdefault((barrier.what, barrier.absent), []).append(_where(barrier.span))
+    for (what, absent), where in places.items():
+        who = "the tasks its list names that are not loaded" if absent is None \
+            else "task " + ", ".join(absent) if len(absent) == 1 \
+            else "tasks " + ", ".join(absent)
+        is_are = "is" if absent is not None and len(absent) == 1 else "are"
+        shown = ", ".join(where[:3]) + (f" and {len(where) - 3} more" if len(where) > 3 else "")
+        yield Assumption(ABSENT_TASK, what,
+                         f"{what} ({shown}) waits for {who}, which {is_are} not loaded: taken "
+                         f"as arriving at once (check the tasks together to follow them)")
 
 
 def touched(all_assumptions: Iterable[Assumption], result: SearchResult,
@@ -237,6 +266,17 @@ def _whole_fixed(program: Program, data) -> str:
             f"(more than {WAIT_CHOICES} combinations of its elements' values)")
 
 
+def _value_origin(data, chosen) -> str:
+    """Where the value of data written outside comes from when no loaded declaration
+    gives one: another task's declaration, or a valid value in place of zeros."""
+    if data.initial_from is not None:
+        return f"; declared here without a value, it starts with the value " \
+               f"{data.initial_from} declares, as on the controller"
+    if chosen.unset:
+        return f" and declared without a value: {UNSET_VALUE_TEXT}"
+    return ""
+
+
 def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[Assumption]:
     """PERS data that some loaded task reads and none writes (``data_uses``, shared with
     the partial-order reduction and RMC731): the values its reads take when it is written
@@ -251,6 +291,12 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
         written |= task_written
     for data in program.globals:
         chosen = outside.get(data.slot)
+        if data.initial_from is not None and (chosen is None or chosen.also_written_by) \
+                and data.slot in read:
+            yield Assumption(OTHER_WRITER, data.name,
+                             f"PERS {data.name}, declared here without a value, starts with the "
+                             f"value {data.initial_from} declares, as on the controller "
+                             f"({_where(data.span)})")
         if chosen is not None and chosen.awaited_at is not None:
             yield Assumption(OTHER_WRITER, data.name,
                              f"PERS {data.name}: no write of the loaded code ends the WaitUntil "
@@ -276,8 +322,9 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
             seen = "; the properties read the value the program's last read took" \
                 if chosen.observed else ""
             yield Assumption(OTHER_WRITER, data.name,
-                             f"PERS {data.name} is written outside the loaded code; its reads "
-                             f"take {chosen.describe()}{_whole_fixed(program, data)}{seen} "
+                             f"PERS {data.name} is written outside the loaded code"
+                             f"{_value_origin(data, chosen)}; its reads take "
+                             f"{chosen.describe()}{_whole_fixed(program, data)}{seen} "
                              f"({_where(data.span)})")
         else:
             yield Assumption(OTHER_WRITER, data.name,

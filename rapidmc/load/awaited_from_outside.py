@@ -17,8 +17,9 @@ wait reads it (as for data a task not loaded writes) and the verdicts say so und
 The rule is narrow, so that it never hides a wait the loaded code could end:
 
 * the WaitUntil condition is ``name op constant`` (either side; ``op`` a comparison),
-  ``name`` or ``NOT name``, where ``name`` is a whole PERS data object of type num,
-  dnum, bool or string, shared between tasks (a TASK PERS or a LOCAL one is the task's
+  ``name`` or ``NOT name``, or such tests of one name joined by OR and AND
+  (``WaitUntil nCmdMatch = 1 OR nCmdMatch = -1``), where ``name`` is a whole PERS data
+  object of type num, dnum, bool or string, shared between tasks (a TASK PERS or a LOCAL one is the task's
   own: ``outside_data`` leaves it alone);
 * every write of that data object in the loaded code is an assignment of a constant
   to the whole object (a write through a component, an element, a by-reference
@@ -45,6 +46,7 @@ _COMPARE: dict[str, Callable] = {
     ">": operator.gt, ">=": operator.ge}
 _MIRRORED = {"=": "=", "<>": "<>", "<": ">", "<=": ">=", ">": "<", ">=": "<="}
 UNKNOWN = object()          # a write whose value the rule cannot know
+_JOINED: dict[str, Callable] = {"OR": lambda a, b: a or b, "AND": lambda a, b: a and b}
 
 
 def constant_value(expr) -> object:
@@ -58,7 +60,15 @@ def constant_value(expr) -> object:
 
 
 def _awaited(condition) -> Optional[tuple]:
-    """(the NameRef a wait condition tests, the test a value must pass to end it)."""
+    """(the NameRef a wait condition tests, the test a value must pass to end it); the
+    tests of one data object joined by OR or AND (``nCmdMatch=1 OR nCmdMatch=-1``) are one
+    test."""
+    if isinstance(condition, ast.Binary) and condition.op in _JOINED:
+        left, right = _awaited(condition.left), _awaited(condition.right)
+        if left is None or right is None or left[0].name.key != right[0].name.key:
+            return None
+        join = _JOINED[condition.op]
+        return left[0], (lambda v, a=left[1], b=right[1], j=join: j(a(v), b(v)))
     if isinstance(condition, ast.NameRef):
         return condition, lambda v: v is True
     if isinstance(condition, ast.Unary) and condition.op == "NOT" \

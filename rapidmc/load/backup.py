@@ -25,7 +25,7 @@ from ..diagnostics import (EXIT_OK, FILE_NOT_FOUND, NO_PROGRAM, PROGRAM_FILE, TA
                            Diagnostic, SourceCache, UserError, error)
 from .config_file import instances
 from .encrypted import interface_module, is_encrypted, only_encrypted_note, skipped_note
-from .other_writers import other_writers, task_output_writers
+from .other_writers import declared_values, other_writers, task_output_writers
 from .outside_outputs import controller_writers
 from .task_config import BackupTask, config_file, read_tasks, task_names
 from ..semantics.library.configuration import Configuration
@@ -206,6 +206,9 @@ class ProgramFiles:
     task_names: tuple = ()              # every task of the backups (their taskid T_ROB1Id ...)
     # upper-case output name -> who sets it outside the loaded code (load.outside_outputs)
     output_writers: Optional[dict] = None
+    # upper-case PERS name -> (a task not loaded's declaration with a value, where): the
+    # value a loaded declaration without one takes (load.other_writers.declared_values)
+    persistent_values: Optional[dict] = None
 
 
 def resolve_program_files(args) -> ProgramFiles:
@@ -219,6 +222,7 @@ def resolve_program_files(args) -> ProgramFiles:
     encrypted: dict = {}
     writers: dict = {}
     output_writers: dict = {}
+    values: dict = {}
     configuration = None
     motion_tasks: list[str] = []
     names: list[str] = []
@@ -252,6 +256,8 @@ def resolve_program_files(args) -> ProgramFiles:
         for key, who in outside_writers.items():
             writers.setdefault(key, who)
         notes.extend(unparsed)
+        for key, found in declared_values(path, [t.name for t in chosen]).items():
+            values.setdefault(key, found)
         for key, who in task_output_writers(path, [t.name for t in chosen]).items():
             output_writers.setdefault(key, who)
         if becomes_main:
@@ -282,7 +288,7 @@ def resolve_program_files(args) -> ProgramFiles:
             output_writers.setdefault(key, who)
     return ProgramFiles(paths, tasks, signals, main_task, main_entry, tuple(notes), alone,
                         configuration, encrypted, tuple(motion_tasks), writers,
-                        tuple(dict.fromkeys(names)), output_writers)
+                        tuple(dict.fromkeys(names)), output_writers, values)
 
 
 def _readable_files(paths: list[str]) -> tuple[list[str], list[str]]:
@@ -369,7 +375,8 @@ def link_options(files: ProgramFiles) -> dict:
             "all_tasks_loaded": files.main_task is not None and files.alone is None,
             "configuration": files.configuration, "motion_tasks": files.motion_tasks,
             "outside_writers": files.outside_writers or {}, "task_names": files.task_names,
-            "output_writers": files.output_writers or {}}
+            "output_writers": files.output_writers or {},
+            "persistent_values": files.persistent_values or {}}
 
 
 def load_tasks(files: ProgramFiles) -> list:

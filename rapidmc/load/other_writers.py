@@ -22,12 +22,18 @@ parse and in its own declarations (lines ``PERS type name``); a note (RMC730)
 names it, since its writes are not known but assumed.
 The reads of the named data take the stored value or any value of the domain
 (``outside_data``); the verdicts name the writer under ``assumes:``.
+
+``declared_values`` gives, for a task checked alone, the declarations with a value that
+tasks not loaded hold of shared PERS: one persistent declared in several tasks is one
+object, and a declaration without a value takes the value of another that has one (as
+the controller does; the linker applies it: ``Linker._values_declared_elsewhere``).
 """
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 from pathlib import Path
-from typing import Iterable, Optional
+from typing import Iterable, Iterator, Optional
 
 from .. import ast
 from ..diagnostics import TASKS_LOADED, Diagnostic, UserError
@@ -82,17 +88,28 @@ def other_writers(path: Path, loaded: Iterable[str]) -> tuple[dict, list]:
     return found, notes
 
 
+def declared_values(path: Path, loaded: Iterable[str]) -> dict:
+    """Upper-case PERS name -> (its declaration with a value, where: ``task T (file:line)``)
+    for each shared PERS that a task of the backup at ``path`` not among ``loaded``
+    declares with a value (the first such task in the backup's order)."""
+    found: dict = {}
+    for task, programs in _tasks_left_out(path, loaded):
+        for program in programs:
+            for module in program.modules:
+                for data in module.data:
+                    if data.storage == ast.PERS and data.init is not None and \
+                            data.scope not in (ast.LOCAL, ast.TASK):
+                        found.setdefault(data.name.key, (data, f"task {task.name} "
+                                         f"({Path(data.span.file).name}:{data.span.line})"))
+    return found
+
+
 def task_output_writers(path: Path, loaded: Iterable[str]) -> dict:
     """Upper-case signal name -> the task not loaded whose code may set it (passes it to a
     call other than a reading one: ``outside_outputs.written_signals``)."""
-    from .backup import backup_tasks, task_modules_readable, task_modules
     from .outside_outputs import written_signals
-    loaded = set(loaded)
     found: dict = {}
-    for task in backup_tasks(path):
-        if task.name in loaded or not task_modules_readable(task):
-            continue
-        programs, _ = _parsed_modules(task_modules(path, task))
+    for task, programs in _tasks_left_out(path, loaded):
         trees = [routine for program in programs for module in program.modules
                  for routine in module.routines]
         for key in sorted(written_signals(trees) or ()):
@@ -100,9 +117,34 @@ def task_output_writers(path: Path, loaded: Iterable[str]) -> dict:
     return found
 
 
+def _tasks_left_out(path: Path, loaded: Iterable[str]) -> Iterator[tuple]:
+    """(task, its modules that parse) for each readable task of the backup not loaded."""
+    from .backup import backup_tasks, task_modules_readable, task_modules
+    loaded = set(loaded)
+    for task in backup_tasks(path):
+        if task.name not in loaded and task_modules_readable(task):
+            yield task, _parsed_modules(task_modules(path, task))[0]
+
+
 def _parsed_modules(modules: list) -> tuple[list, list]:
     """The task's modules parsed (all at once, else one by one), and the modules that
-    cannot be parsed."""
+    cannot be parsed (parsed once per list of unchanged files: the readers of a task not
+    loaded share them, and the trees are immutable)."""
+    stamps = tuple((module, _stamp(module)) for module in modules)
+    return _parsed_module_list(tuple(modules), stamps)
+
+
+def _stamp(module) -> tuple:
+    try:
+        found = Path(module).stat()
+    except OSError:
+        return ()
+    return found.st_mtime_ns, found.st_size
+
+
+@lru_cache(maxsize=32)
+def _parsed_module_list(modules: tuple, stamps: tuple) -> tuple[list, list]:
+    del stamps                           # (part of the cache's key only)
     from ..syntax import load_program
     try:
         return [load_program(modules)], []

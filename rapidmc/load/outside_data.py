@@ -20,7 +20,16 @@ element type (arrays), for the value types only:
   end), as for the free analog inputs of ``input_domains``.  A component the
   code never compares with anything keeps its initial value: no branch of the
   program can tell its values apart, and inventing values for an index or a
-  divisor would report errors the data never causes.
+  divisor would report errors the data never causes.  In an array, each element
+  keeps its own (its stored value is read), never a mix of the elements' values.
+
+Data only the outside writes that is declared without a value, in the loaded
+code and in the tasks of the backup left out (``Linker._values_declared_elsewhere``
+takes such a task's value first), holds zeros no writer gave: it starts with a valid
+value instead (``unset_value``: 1 for each number, the identity rotation for each
+orientation), so that no index 0, divisor 0 or zero quaternion is reported that
+rests only on the missing value; ``--fixed-outside-data`` keeps the zeros.  Data
+the loaded code writes is its own: declared without a value, it starts at zero.
 
 PERS data the loaded code writes too, when a party left out may also write it
 (``other_writers``: a task not loaded, a task's encrypted modules), is chosen
@@ -58,7 +67,7 @@ from .. import ast
 from ..semantics.configured_signals import COMPARISONS
 from ..semantics.program import ENVIRONMENT_NAMESPACE
 from ..semantics.scope import CONSTANT, GLOBAL_DATA
-from ..semantics.types import ArrayType, RapidType
+from ..semantics.types import RECORD, ArrayType, RapidType, default_value
 from ..semantics.values import format_value, to_dnum
 from .awaited_from_outside import awaited_from_outside
 from .encrypted import from_encrypted_interface
@@ -67,8 +76,12 @@ from .shared_data import data_uses, writes_data_by_name
 
 VALUE_KEYS = frozenset({"BOOL", "NUM", "DNUM", "STRING"})
 ORDERINGS = frozenset({"<", "<=", ">", ">="})
-MANY_COMPONENTS = 6
-AWAITED_WRITER = "a PC or an HMI"      # assumed where no loaded write ends a wait           # a record with more is described by its varying components
+MANY_COMPONENTS = 6              # a record with more is described by its varying components
+AWAITED_WRITER = "a PC or an HMI"      # assumed where no loaded write ends a wait
+IDENTITY_ROTATION = (1.0, 0.0, 0.0, 0.0)
+# what the verdicts say of data written only outside and declared without a value
+UNSET_VALUE_TEXT = ("it starts with 1 for each number and identity rotations, not zeros "
+                    "(--fixed-outside-data keeps zeros)")
 
 
 @dataclass(frozen=True)
@@ -76,7 +89,8 @@ class OutsideData:
     """One PERS data object written from outside: the domain of each value component.
 
     ``domains``: component path (upper-case component names from the data object,
-    array indices left out) -> the values a read of that component may give."""
+    array indices left out) -> the values a read of that component may give (None: the
+    stored value, ``domain``)."""
 
     slot: int
     name: str
@@ -91,8 +105,14 @@ class OutsideData:
     # the WaitUntil (``file:line``) that no write of the loaded code ends, when the other
     # writer is only assumed from it (``awaited_from_outside``), else None
     awaited_at: Optional[str] = None
+    # declared without a value (here and in every task read) and written only outside:
+    # it starts with ``unset_value`` instead of the type's zeros (the linker stores it)
+    unset: bool = False
+    initial: object = None
 
     def domain(self, path: tuple) -> Optional[tuple]:
+        """The values a read of the component may take; None: the stored value (a
+        component no code compares, whose elements hold different values)."""
         return self.domains.get(path)
 
     def describe(self) -> str:
@@ -102,9 +122,10 @@ class OutsideData:
         shown_paths = self.domains
         if len(self.domains) > MANY_COMPONENTS:
             shown_paths = {path: values for path, values in self.domains.items()
-                           if len(values) > 1}
+                           if values is not None and len(values) > 1}
         for path, values in shown_paths.items():
-            shown = " or ".join(format_value(v) for v in values) if len(values) <= 8 else \
+            shown = "each element's initial value" if values is None else \
+                " or ".join(format_value(v) for v in values) if len(values) <= 8 else \
                 f"{len(values)} values from {format_value(values[0])} to {format_value(values[-1])}"
             parts.append(f"{self.name}{''.join('.' + p.lower() for p in path)}: {shown}"
                          if path else shown)
@@ -147,7 +168,10 @@ def outside_data(linker) -> dict:
     found = {}
     for slot, data in chosen.items():
         domains = {}
-        for path, leaf_type, initial in _leaves(data.type, data.initial):
+        start = unset_value(data.type) if data.declared_without_value \
+            and slot not in written else data.initial
+        unset = start != data.initial          # (numbers or orientations in place of zeros)
+        for path, leaf_type, initial in _leaves(data.type, start):
             domains[path] = _domain(leaf_type, initial, compared.get((slot, path)))
         if domains:
             # a known writer left out names itself; else a wait only a client ends names one
@@ -156,8 +180,37 @@ def outside_data(linker) -> dict:
             writer = writers.get(data.key) or (AWAITED_WRITER if awaited_at else None)
             found[slot] = OutsideData(slot, data.name, data.span, domains,
                                       writer if slot in written else None,
-                                      data.key in observed, awaited_at)
+                                      data.key in observed, awaited_at, unset,
+                                      start if unset else None)
     return found
+
+
+def unset_value(rapid_type):
+    """The value data written only from outside and declared without a value starts with:
+    a valid value of its type, not its zeros.  The zeros are no value the writer gave
+    (the backup holds none), and an index 0, a divisor 0 or a zero quaternion fails where
+    the written data would not: each number is 1 (an index of every array, a non-zero
+    divisor, a positive mass), each orientation the identity rotation; bool and string
+    keep FALSE and ""."""
+    if isinstance(rapid_type, ArrayType):
+        return _unset_array(rapid_type.element, rapid_type.dims)
+    if not isinstance(rapid_type, RapidType):
+        return default_value(rapid_type)
+    if rapid_type.key == "ORIENT":
+        return IDENTITY_ROTATION
+    if rapid_type.key == "NUM":
+        return 1.0
+    if rapid_type.key == "DNUM":
+        return to_dnum(1.0)
+    if rapid_type.kind == RECORD and rapid_type.components:
+        return tuple(unset_value(component.type) for component in rapid_type.components)
+    return default_value(rapid_type)
+
+
+def _unset_array(element, dims: tuple) -> tuple:
+    if len(dims) == 1:
+        return tuple(unset_value(element) for _ in range(dims[0] or 0))
+    return tuple(_unset_array(element, dims[1:]) for _ in range(dims[0] or 0))
 
 
 def _shared(data) -> bool:
@@ -394,9 +447,15 @@ def _constant(expr, scope):
     return number_value(expr, scope)
 
 
-def _domain(leaf_type: RapidType, initial: set, compared) -> tuple:
+def _domain(leaf_type: RapidType, initial: set, compared) -> Optional[tuple]:
+    """The values a read of a component may take.  A number or string no code compares
+    keeps its initial value: where an array's elements hold different ones, None (each
+    read takes its element's stored value; choosing among all the elements' values would
+    read combinations no element holds, a zero rotation of two valid ones)."""
     if leaf_type.key == "BOOL":
         return (False, True)
+    if compared is None and len(initial) > 1:
+        return None
     constants, ordered, open_ended = compared if compared is not None else (set(), False, False)
     if leaf_type.key == "STRING":
         values = set(initial) | {c for c in constants if isinstance(c, str)}

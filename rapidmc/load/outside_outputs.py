@@ -23,6 +23,11 @@ binds, or names it in a string given to ``AliasIO``; an
 then every output keeps the stored reading.  Group and analog outputs keep it
 too: their values have no finite domain here (a gap the verdict's assumption
 names).  ``check --fixed-outside-data`` keeps every output stored, as before.
+
+An output the loaded code sets and a party left out sets too (``outputs_set_by_both``:
+a robot task pulsing the other arm's "in position" output, checked alone) keeps the
+loaded code's writes; a WaitDO on it may end at any try, taking the value it waits for
+(the other party set it just before), so it is no deadlock; the verdicts say so.
 """
 from __future__ import annotations
 
@@ -151,6 +156,26 @@ def controller_writers(eio_path: Optional[str]) -> dict:
 def outside_outputs(linker) -> dict:
     """Signal index -> who writes it, for each digital output some loaded code reads and
     no loaded code (nor the environment model) sets (``linker``: routines prepared)."""
+    # (an output a property's atom reads too is kept in the state, as an input an atom
+    # reads is: semantics.choosers.CheckConfig; the atom and the code read the same value)
+    return _outputs_set_outside(linker, set_by_loaded_code=False)
+
+
+def outputs_set_by_both(linker) -> dict:
+    """Signal index -> who else sets it, for each digital output some loaded code waits
+    for (WaitDO) and sets, and a party left out sets too (a task of the backup not loaded, the
+    controller): a WaitDO on it may end at any try (``library.waits``), as a WaitUntil on
+    PERS data written by both may (``outside_data``); other reads take the stored value."""
+    waited = {node.args[0].value.name.key for routine in linker.routines
+              if routine.ast is not None for node in walk_routine(routine.ast)
+              if isinstance(node, ast.ProcedureCall) and node.name.key == "WAITDO"
+              and node.args and isinstance(node.args[0].value, ast.NameRef)}
+    return {index: who for index, who in
+            _outputs_set_outside(linker, set_by_loaded_code=True).items()
+            if linker.signals[index].key in waited}
+
+
+def _outputs_set_outside(linker, set_by_loaded_code: bool) -> dict:
     from ..semantics.program import ENVIRONMENT_NAMESPACE
     trees = [routine.ast for routine in linker.routines if routine.ast is not None]
     written = written_signals(trees)
@@ -159,11 +184,9 @@ def outside_outputs(linker) -> dict:
     read = named_signals(routine.ast for routine in linker.routines
                          if routine.ast is not None and routine.namespace != ENVIRONMENT_NAMESPACE)
     writers = linker.options.get("output_writers") or {}
-    # (an output a property's atom reads too is kept in the state, as an input an atom
-    # reads is: semantics.choosers.CheckConfig; the atom and the code read the same value)
     return {signal.index: writers[signal.key] for signal in linker.signals
             if signal.kind == "DO" and signal.key in writers and signal.key in read
-            and signal.key not in written}
+            and (signal.key in written) == set_by_loaded_code}
 
 
 def named_signals(routines: Iterable) -> set:

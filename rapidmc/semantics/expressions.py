@@ -167,7 +167,7 @@ def _varying_leaves(value_type, outside, path: tuple) -> list:
     several values."""
     leaves = []
     for leaf_path, domain in outside.domains.items():
-        if leaf_path[:len(path)] != path or len(domain) < 2:
+        if leaf_path[:len(path)] != path or domain is None or len(domain) < 2:
             continue
         positions = _component_positions(value_type, leaf_path[len(path):])
         if positions is not None:

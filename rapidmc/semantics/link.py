@@ -33,7 +33,7 @@ from .scope import (CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, SYSTEM_V
                     Symbol)
 from .statements import RoutineCompiler
 from .types import (ANYTYPE, DNUM, NUM, PREDEFINED_ALIASES, PREDEFINED_TYPES, RECORD,
-                    SEMI_VALUE, ArrayType, ComponentType, RapidType, default_value)
+                    SEMI_VALUE, ArrayType, ComponentType, RapidType, default_value, element_type)
 from . import values
 
 MAX_DIMENSION = 100_000
@@ -275,6 +275,7 @@ class Linker:
             self._declare_routines(modules, namespace)
         for namespace, modules in groups:
             self._declare_data(modules, namespace)
+        self._values_declared_elsewhere()
         self._configured_signals([m for namespace, modules in groups
                                   if namespace != P.ENVIRONMENT_NAMESPACE for m in modules])
         self._task_identities()
@@ -283,10 +284,16 @@ class Linker:
         # PERS written from outside the loaded code, read as choices (load.outside_data)
         finder = self.options.get("outside_data")
         self.outside_data = finder(self) if finder is not None and not self.errors else {}
+        for found in self.outside_data.values():
+            if found.unset:             # declared without a value: a valid one, not zeros
+                self.globals[found.slot].initial = found.initial
         # outputs no loaded code sets, read like free inputs (load.outside_outputs)
         finder = self.options.get("outside_outputs")
         for index, who in (finder(self) if finder is not None and not self.errors else {}).items():
             self.signals[index].outside = who
+        finder = self.options.get("outputs_set_by_both")
+        for index, who in (finder(self) if finder is not None and not self.errors else {}).items():
+            self.signals[index].also_set_by = who
         # the names GetTaskName answers: a backup's (T_ROB1 ...), else T_ROB1 for the main task
         self.task_names = (self.options.get("main_task_name") or "T_ROB1",) + tuple(
             task.name for _, task in task_namespaces)
@@ -452,6 +459,33 @@ class Linker:
                     self._failed_global(exc, module, scope, decl, namespace)
                 return
             pending = retry
+
+    def _values_declared_elsewhere(self) -> None:
+        """A shared PERS declared without a value takes the value of a declaration of a task
+        not loaded (``persistent_values``: a task checked alone), as the controller gives one
+        persistent object the value of the declaration that has one.  A value that does not
+        compile here (another type, a constant of that task) leaves the default value."""
+        declared = self.options.get("persistent_values") or {}
+        for data in self.globals:
+            found = declared.get(data.key)
+            if found is None or data.storage != "PERS" or not data.declared_without_value \
+                    or data.local or data.task_local or data.type is None:
+                continue
+            decl, where = found
+            module_key = data.module.upper()
+            scope = self.module_scopes.get((data.namespace, module_key))
+            if scope is None or len(decl.dims) != len(getattr(data.type, "dims", ())):
+                continue
+            try:
+                if self.resolve_type(decl.type, data.namespace, module_key) \
+                        != element_type(data.type):
+                    continue
+                value = self.initial_value(decl, data.type, scope)
+            except UserError:
+                continue
+            data.initial = value
+            data.declared_without_value = False
+            data.initial_from = where
 
     def _failed_global(self, failure: UserError, module, scope: Scope, decl,
                        namespace: int) -> None:

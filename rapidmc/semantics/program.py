@@ -36,6 +36,9 @@ class GlobalData:
     initial: Any = None           # initial value (computed at link time)
     declared_without_value: bool = False
     task_local: bool = False      # TASK PERS: not shared with other tasks
+    # where its value comes from when another task's declaration gives it (``task T
+    # (file:line)``: a task not loaded, ``Linker._values_declared_elsewhere``), else None
+    initial_from: Optional[str] = None
 
 
 @dataclass
@@ -122,6 +125,9 @@ class Signal:
     span: Optional[Span] = None
     # an output no loaded code sets, read like a free input: who sets it (load.outside_outputs)
     outside: Optional[str] = None
+    # an output the loaded code sets and a party left out sets too: who (a WaitDO on it may
+    # end at any try: load.outside_outputs.outputs_set_by_both), else None
+    also_set_by: Optional[str] = None
 
 
 @dataclass

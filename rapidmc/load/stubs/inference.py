@@ -92,6 +92,8 @@ class Inference:
         self.local: dict[str, TypeInfo] = {}
         self.routine: Optional[ast.Routine] = None
         self.in_declaration = False           # declaration values and sizes are constant
+        # FOR variable -> the largest value its literal bounds reach (None: not literal)
+        self.loop_bounds: dict = {}
         # a missing function whose value is an argument of a missing routine: that
         # routine and the parameter's key (both untyped until one of them is known)
         self.feeds: dict[str, tuple[Missing, str]] = {}
@@ -278,8 +280,13 @@ class Inference:
         while len(missing.dims) < len(expr.indices):
             missing.dims.append(1)
         for number, index in enumerate(expr.indices):
-            if isinstance(index, ast.NumLiteral) and int(index.value) > missing.dims[number]:
-                missing.dims[number] = int(index.value)
+            # a literal index, or a FOR variable whose literal bounds it runs to
+            # (``FOR i FROM 1 TO 11 DO stVideo{i}``: 11 elements, not the default 10)
+            reach = int(index.value) if isinstance(index, ast.NumLiteral) else \
+                self.loop_bounds.get(index.name.key) if isinstance(index, ast.NameRef) \
+                else None
+            if reach is not None and reach > missing.dims[number]:
+                missing.dims[number] = reach
 
     def undeclared_data(self, name: ast.Name) -> bool:
         return not self.names.is_data(name.key, self.local) and name.key not in self.names.routines
@@ -623,9 +630,12 @@ class Inference:
                 self.expect(bound, NUM, "FOR bound")
                 self.expression(bound)
         saved = dict(self.local)
+        saved_bounds = dict(self.loop_bounds)
         self.local[statement.variable.key] = NUM
+        self.loop_bounds[statement.variable.key] = _loop_reach(statement)
         self.statements(statement.body)
         self.local = saved
+        self.loop_bounds = saved_bounds
 
     def _Test(self, statement: ast.Test) -> None:
         values = [v for case in statement.cases for v in case.values]
@@ -899,3 +909,14 @@ def _compared_with(condition) -> Optional[tuple]:
 # The optional parameters every motion instruction of ABB's and of its options has
 # (``PaintL ... \WObj:=woPanel``): a missing routine called with them takes these types.
 CONVENTIONAL_PARAMETERS = {"WOBJ": "wobjdata", "TOOL": "tooldata", "TLOAD": "loaddata"}
+
+
+def _loop_reach(loop: ast.For) -> Optional[int]:
+    """The largest index a FOR loop's variable takes when its bounds are positive integer
+    literals, else None."""
+    bounds = [bound for bound in (loop.start, loop.stop)
+              if isinstance(bound, ast.NumLiteral) and float(bound.value) == int(bound.value)]
+    if len(bounds) != 2 or (loop.step is not None and not isinstance(loop.step, ast.NumLiteral)):
+        return None
+    reach = max(int(bound.value) for bound in bounds)
+    return reach if reach >= 1 else None

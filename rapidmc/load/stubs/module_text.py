@@ -165,7 +165,8 @@ class StubWriter:
             value = array_literal(value, sizes)
             notes.append(f"an array argument: size {MIN_ARRAY_SIZE} assumed" if item.array_argument
                          else "size: the elements of the aggregate assigned" if item.exact_dims
-                         else f"size: the largest constant index used, at least {MIN_ARRAY_SIZE}")
+                         else f"size: the largest constant index or FOR bound used, at least "
+                         f"{MIN_ARRAY_SIZE}")
         if item.sizes_array and item.array_size is not None:
             size, array = item.array_size
             value = str(size)

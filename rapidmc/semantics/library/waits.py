@@ -1,13 +1,16 @@
 """Waiting: for a time, a signal or a condition."""
 from __future__ import annotations
 
+from ... import ast
 from ..errors import RapidError
 from ..instructions import ControlAction, Instruction, Wait, WaitRerun
 from ..machine import ABSENT
 from ..timing import advance_to, next_event
 from ..wait_reads import global_reads
 from .arguments import Arguments, argument_expression, no_effect
+from ..scope import SIGNAL
 from .registry import NO_EFFECT, compiled
+from .signals import write_signal
 
 
 @compiled("WaitTime(\\switch InPos, num Time)")
@@ -77,11 +80,42 @@ _VISUALIZE = ("\\switch Visualize \\string Header \\string Message | string MsgA
           "WaitDO(VAR signaldo Signal, dionum Value \\num MaxTime \\VAR bool TimeFlag "
           f"{_VISUALIZE})")
 def _wait_signal(calls, compiler, call, entry):
+    also = _set_by_both(compiler, call) if call.name.key == "WAITDO" else None
+
     def factory(arguments):
         signal = arguments.fn("Signal")
         value = arguments.value("Value")
-        return lambda m: m.io[signal(m)] == value(m)
+        if also is None:
+            return lambda m: m.io[signal(m)] == value(m)
+        label = f"{also.name} (set by {also.also_set_by})"
+
+        def met(m):
+            # an output a party left out sets too: it may have set the awaited value just
+            # before; the wait then keeps it, so the code after reads what the wait saw
+            index, wanted = signal(m), value(m)
+            current = m.io[index]
+            if current == wanted:
+                return True
+            if m.choose(label, (current, wanted)) != wanted:
+                return False
+            write_signal(m, index, wanted)
+            return True
+        return met
     return _wait(calls, compiler, call, entry, factory, f"{call.name.text} condition")
+
+
+def _set_by_both(compiler, call):
+    """The output a WaitDO waits on when the loaded code and a party left out both set it
+    (``Signal.also_set_by``), else None."""
+    target = argument_expression(call, "Signal", 0)
+    if not isinstance(target, ast.NameRef):
+        return None
+    symbol = compiler.scope.lookup(target.name.key) or \
+        compiler.linker.system_symbol(target.name)
+    if symbol is None or symbol.kind != SIGNAL:
+        return None
+    signal = compiler.linker.signals[symbol.slot]
+    return signal if signal.also_set_by else None
 
 
 @compiled("WaitUntil(\\switch InPos, bool Cond \\num PollRate \\num MaxTime \\VAR bool TimeFlag "
