@@ -34,7 +34,9 @@ declares is checked again with the module ``rapidmc stubs`` writes for it.  Outc
   system modules only (RMC736); ``encrypted``: every module of the program is encrypted;
 * ``internal``: exit 4.
 
-It prints the counts per outcome and per load-error code, and the share of programs reaching
+Each row also keeps the most model states a property's search of the program explored and
+the CPU seconds of its rapidmc commands (the children's own, whatever ``--jobs``), shown on
+the progress lines.  It prints the counts per outcome and per load-error code, and the share of programs reaching
 a verdict among those that can: every program but the encrypted ones, those without program
 or entry, and those with an error of their own.  ``--list`` prints a row per program,
 ``--json`` writes the rows; ``--recheck ROWS.json`` reads them back and checks again only
@@ -48,6 +50,7 @@ from __future__ import annotations
 import argparse
 import hashlib
 import json
+import os
 import re
 import resource
 import subprocess
@@ -57,6 +60,7 @@ from collections import Counter
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Optional
 
 from rapidmc.load.backup import MODULE_SUFFIXES, backup_tasks, is_backup
 from rapidmc.diagnostics import UserError
@@ -100,6 +104,8 @@ class Program:
     codes: list[str] = field(default_factory=list)
     stubbed: bool = False
     duplicates: int = 0
+    states: int = 0            # the most model states a property's search explored
+    cpu: float = 0.0           # CPU seconds of the program's rapidmc commands
 
 
 def extract(mirrors: Path, corpus: Path) -> None:
@@ -222,30 +228,39 @@ def _distinct(programs: list[Program]) -> tuple[list[Program], list[Program]]:
     return to_check, settled
 
 
-def rapidmc(words: list[str], cpu: int) -> tuple[int, dict]:
-    """Exit code and JSON report of one rapidmc command under a CPU limit (-1: reached)."""
+def rapidmc(words: list[str], cpu: int, program: Optional[Program] = None) -> tuple[int, dict]:
+    """Exit code and JSON report of one rapidmc command under a CPU limit (-1: reached);
+    its CPU seconds are added to ``program.cpu``."""
     def limit() -> None:
         resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 1))
-    done = subprocess.run([sys.executable, "-m", "rapidmc", *words], capture_output=True,
-                          text=True, errors="replace", preexec_fn=limit)
-    if done.returncode < 0:
+    child = subprocess.Popen([sys.executable, "-m", "rapidmc", *words], stdout=subprocess.PIPE,
+                             stderr=subprocess.DEVNULL, text=True, errors="replace",
+                             preexec_fn=limit)
+    output = child.stdout.read()
+    child.stdout.close()
+    _, status, usage = os.wait4(child.pid, 0)        # the child's own CPU time, not the jobs'
+    child.returncode = os.waitstatus_to_exitcode(status)
+    if program is not None:
+        program.cpu += usage.ru_utime + usage.ru_stime
+    if child.returncode < 0:
         return -1, {}
     try:
-        return done.returncode, json.loads(done.stdout)
+        return child.returncode, json.loads(output)
     except ValueError:
-        return done.returncode, {}
+        return child.returncode, {}
 
 
 def survey(program: Program, options: list[str], cpu: int, stubs: bool) -> Program:
     check = ["check", *program.command, "--quiet", "--format", "json", *options]
-    code, report = rapidmc(check, cpu)
+    program.cpu = 0.0
+    code, report = rapidmc(check, cpu, program)
     if code == 2 and stubs and _stubbable(report):
         with tempfile.TemporaryDirectory() as scratch:
             missing = str(Path(scratch) / "Missing.mod")
-            rapidmc(["stubs", *program.command, "-o", missing], cpu)
+            rapidmc(["stubs", *program.command, "-o", missing], cpu, program)
             if Path(missing).is_file():
                 code, report = rapidmc(["check", *_with(program.command, missing), "--quiet",
-                                        "--format", "json", *options], cpu)
+                                        "--format", "json", *options], cpu, program)
                 program.stubbed = True
     _classify(program, code, report)
     return program
@@ -265,6 +280,8 @@ def _with(command: list[str], extra: str) -> list[str]:
 def _classify(program: Program, code: int, report: dict) -> None:
     errors = report.get("errors", [])
     program.codes = sorted({e.get("code", "?") for e in errors})
+    program.states = max((p.get("stats", {}).get("model_states") or 0
+                          for p in report.get("properties", ())), default=0)
     notes = {w.get("code") for w in report.get("warnings", ())}
     if code == -1:
         program.outcome = "cpu limit"
@@ -328,8 +345,8 @@ def main() -> int:
 
     def one(program: Program) -> Program:
         survey(program, options, args.cpu, not args.no_stubs)
-        print(f"[{next(done)}/{len(to_check)}] {program.outcome}: {program.name}",
-              file=sys.stderr, flush=True)
+        print(f"[{next(done)}/{len(to_check)}] {program.outcome} ({program.states:,} states, "
+              f"{program.cpu:.1f} CPU s): {program.name}", file=sys.stderr, flush=True)
         return program
 
     with ThreadPoolExecutor(args.jobs) as pool:

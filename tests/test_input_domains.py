@@ -544,6 +544,79 @@ def test_a_position_read_back_and_observed_has_no_default(tmp_path, change):
     assert "no default" in _refusal_notes(tmp_path, text, [])
 
 
+# Survey (sss.mod of the public program above): the turn and the offsets are stored into module
+# data first, ``GInput(gi) / 10`` and ``GInput(gi)``; module data every write of which has a
+# known size keeps it, so the sums stay within num and nothing but moves sees the position.
+STORED_TURN = READ_BACK.replace("joints.robax.rax_4 + gi_y * 2", "joints.robax.rax_4 + turn") \
+    .replace("      pick_x := GInput(gi_x);\n", "      pick_x := GInput(gi_x) / 10;\n"
+             "      turn := GInput(gi_y);\n") \
+    .replace("  VAR num parts := 0;\n", "  VAR num parts := 0;\n  VAR num turn := 0;\n")
+
+
+def test_an_input_stored_into_module_data_of_a_known_size_leaves_the_default(tmp_path):
+    model = api.prepare(_load(tmp_path, STORED_TURN), [])
+    assert {a.signal.name: a.values for a in model.assumed} == {"GI_X": (0.0,), "GI_Y": (0.0,)}
+    assert model.config.robot_untracked
+
+
+@pytest.mark.parametrize("change", [
+    ("      turn := GInput(gi_y);\n", "      turn := GInput(gi_y);\n      turn := turn * 2;\n"),
+    ("      turn := GInput(gi_y);\n", "      turn := GInput(gi_y);\n      Add turn, 1;\n"),
+    ("  VAR num turn := 0;\n", "  PERS num turn := 0;\n"),   # another task may write it
+])
+def test_module_data_written_beyond_a_known_size_has_no_default(tmp_path, change):
+    """A write that reads the data itself, a write through a reference (``Add``) or a PERS:
+    the size is unknown, and the sum with a joint read back may leave the range of num."""
+    assert "no default" in _refusal_notes(tmp_path, STORED_TURN.replace(*change), [])
+
+
+# two cycles, so that the search with the robot tracked ends too; an error at the end
+TWO_PICKS = """MODULE M
+  VAR signalgi gi_x;
+  VAR signalgi gi_turn;
+  VAR num pick_x := 0;
+  VAR num turn := 0;
+  VAR num parts := 0;
+  VAR robtarget here;
+  VAR jointtarget joints;
+  CONST robtarget table := [[500, 0, 600], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];
+  PROC main()
+    AliasIO "GI_X", gi_x;
+    AliasIO "GI_TURN", gi_turn;
+    FOR k FROM 1 TO 2 DO
+      pick_x := GInput(gi_x) / 10;
+      turn := GInput(gi_turn);
+      MoveL Offs(table, pick_x, 0, 250), v1000, z10, tool0;
+      here := CRobT();
+      here.trans.z := here.trans.z - 250;
+      MoveL here, v100, fine, tool0;
+      joints := CJointT();
+      joints.robax.rax_4 := joints.robax.rax_4 + turn;
+      MoveAbsJ joints, v100, fine, tool0;
+      parts := parts + 1;
+    ENDFOR
+    IF parts = 2 parts := 10 / (parts - 2);
+  ENDPROC
+ENDMODULE
+"""
+
+
+def test_inputs_stored_into_module_data_keep_the_verdicts_of_the_tracked_robot(tmp_path):
+    """The default (one value each, the robot untracked) against four values each over the
+    whole 4-bit width with the robot tracked: the same verdicts, the error included."""
+    derived = api.prepare(_load(tmp_path, TWO_PICKS), [])
+    assert {a.signal.name: a.values for a in derived.assumed} == \
+        {"GI_X": (0.0,), "GI_TURN": (0.0,)}
+    assert derived.config.robot_untracked
+    spread = (0.0, 5.0, 10.0, 15.0)
+    full = api.prepare(_load(tmp_path, TWO_PICKS), [], api.CheckOptions(
+        input_domains={"GI_X": spread, "GI_TURN": spread}, track_robot=True))
+    assert not full.config.robot_untracked
+    derived, full = api.check_model(derived), api.check_model(full)
+    assert derived.verdicts == full.verdicts == \
+        {"no_runtime_error": "VIOLATED", "no_deadlock": "HOLDS"}
+
+
 def _refusal_notes(tmp_path, text: str, properties) -> str:
     with pytest.raises(UserError) as caught:
         api.prepare(_load(tmp_path, text), properties, api.CheckOptions())

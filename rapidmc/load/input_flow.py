@@ -220,9 +220,11 @@ class InputFlow:
         if place in seen:
             return True
         seen.add(place)
+        size = self.fixed_data().get(symbol.slot, NUM_MAX) if symbol.kind == GLOBAL_DATA \
+            else NUM_MAX                # module data of a known size (a GI's reading / 10)
         for read in self.reads().get(place, ()):
             node, parents, bound = _through_offs(
-                *_inert_result(*_components(read.node, list(read.parents)), NUM_MAX,
+                *_inert_result(*_components(read.node, list(read.parents)), size,
                                read.scope, self.fixed_data()), read.scope, self.fixed_data())
             parent = parents[-1] if parents else None
             if self._shapes_target(node, parents, read.scope, bound):
@@ -416,25 +418,33 @@ class InputFlow:
         return self._reads
 
     def fixed_data(self) -> dict:
-        """Store slot -> size of the initial value, for each module ``VAR num`` that no
-        routine may write (``_may_write``) and that no routine writes by name
-        (``SetDataVal``): it holds its initial value all along.  Routines of another
-        namespace (an environment) resolve names to data of their own."""
+        """Store slot -> a bound of the size, for each module ``VAR num`` whose value is
+        known to stay small: no routine may write it (``_may_write``), so it holds its
+        initial value all along, or every write is a whole assignment ``x := e`` whose
+        ``e`` has a size bound (``_magnitude``) from what is already known here (a group
+        input's reading, a constant, other such data; ``x`` itself never, so a write that
+        grows it keeps it unknown), and the bound is the largest of them and the initial
+        value.  Nothing is known when a routine writes data by name (``SetDataVal``).
+        Routines of another namespace (an environment) resolve names to data of their
+        own."""
         if self._fixed is None:
             self.reads()
-            written = set()
+            writes: dict = {}                   # slot -> [(value, scope, parents)] or None
             for routine in self.routines:
                 for node, parents in ast.walk(routine.ast):
                     if isinstance(node, ast.NameRef) and \
                             _may_write(node, parents, routine.scope):
                         symbol = routine.scope.lookup(node.name.key)
-                        if symbol is not None and symbol.kind == GLOBAL_DATA:
-                            written.add(symbol.slot)
-            self._fixed = {} if self._by_name else {
-                data.slot: abs(float(data.initial)) for data in self.module_data
-                if data.storage == "VAR" and data.slot not in written and
-                getattr(data.type, "key", "") in NUMERIC and
-                type(data.initial) in (int, float)}
+                        if symbol is None or symbol.kind != GLOBAL_DATA:
+                            continue
+                        parent = parents[-1] if parents else None
+                        whole = isinstance(parent, ast.Assignment) and parent.target is node
+                        if whole and writes.get(symbol.slot, []) is not None:
+                            writes.setdefault(symbol.slot, []).append(
+                                (parent.value, routine.scope, tuple(parents)))
+                        else:
+                            writes[symbol.slot] = None      # a part, a reference: unknown
+            self._fixed = {} if self._by_name else _bounded_data(self.module_data, writes)
         return self._fixed
 
     def _calls_of(self, routine_index: int) -> list:
@@ -461,6 +471,32 @@ class InputFlow:
         position = next(k for k, i in enumerate(index.indices) if i is node)
         size = kind.dims[position] if position < len(kind.dims) else None
         return size if size is not None and size <= MAX_INDEXED else None
+
+
+def _bounded_data(module_data, writes: dict) -> dict:
+    """Store slot -> size bound of the module ``VAR num`` data ``writes`` (slot -> the
+    whole assignments to it, or None when it is written otherwise) lets be bounded: data
+    never written has its initial value's size; data every write of which has a bound
+    below the largest num from the bounds found so far gets the largest of them and its
+    initial value's, round after round until no more is found.  Each bound holds in
+    every state: the initial value meets it, and each write stores a value within it,
+    computed from data whose bounds were proven before (never from its own)."""
+    candidates = {data.slot: abs(float(data.initial)) for data in module_data
+                  if data.storage == "VAR" and getattr(data.type, "key", "") in NUMERIC and
+                  type(data.initial) in (int, float) and writes.get(data.slot, []) is not None}
+    sizes = {slot: size for slot, size in candidates.items() if slot not in writes}
+    found = True
+    while found:
+        found = False
+        for slot, initial in candidates.items():
+            if slot in sizes:
+                continue
+            bound = max([initial] + [_magnitude(value, scope, parents, sizes)
+                                     for value, scope, parents in writes[slot]])
+            if bound < NUM_MAX:
+                sizes[slot] = bound
+                found = True
+    return sizes
 
 
 def unevaluated_argument(call: ast.ProcedureCall, argument: ast.Argument, scope) -> bool:
@@ -544,8 +580,8 @@ def _small_offsets(call: ast.FunctionCall, parents, scope, fixed: dict) -> bool:
 def _magnitude(expr, scope, parents: tuple = (), fixed: Optional[dict] = None) -> float:
     """A bound of the size of ``expr``'s value (math.inf: unknown): a number literal or
     CONST num, an input's reading, a function's fixed reading, a FOR variable
-    (``_loop_size``), routine data nothing writes (``_initial_size``), module data nothing
-    writes (``fixed``: its store slot -> its size, ``InputFlow.fixed_data``), any num data,
+    (``_loop_size``), routine data nothing writes (``_initial_size``), module data of a
+    known size (``fixed``: its store slot -> its size, ``InputFlow.fixed_data``), any num data,
     and ``+ - *``, unary minus and division by a number literal of such.  ``parents``: the
     ancestors of ``expr`` in its routine, outermost (the routine) first."""
     fixed = {} if fixed is None else fixed
