@@ -118,7 +118,14 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         if args.command is None:
             parser.print_help(sys.stderr)
             return EXIT_INPUT_ERROR
-        return _command_module(args.command).execute(args)
+        command = _command_module(args.command)
+        if getattr(args, "engine", None) is None:
+            return command.execute(args)
+        # --engine holds for this command only: a caller in this process (a test, an
+        # editor's server) keeps the engine it had
+        from .check import native
+        with native.engine_kept():
+            return command.execute(args)
     except UserError as exc:
         sys.stdout.flush()
         print(render_all(exc.diagnostics), file=sys.stderr)

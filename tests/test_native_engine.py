@@ -245,6 +245,16 @@ def test_engine_native_without_the_core_is_a_diagnostic(monkeypatch, tmp_path):
     assert "[RMC750]" in err.getvalue() and "--engine python" in err.getvalue()
 
 
+def test_engine_holds_for_its_command_only(tmp_path):
+    # rapidmc check --engine python, called in this process (as tests and editors do),
+    # leaves the engine the process had: a later search in it is not silently on Python
+    (tmp_path / "prog.mod").write_text(COUNTERS)
+    before = native.engine()
+    with contextlib.redirect_stdout(io.StringIO()):
+        main(["check", str(tmp_path / "prog.mod"), "--engine", native.PYTHON, "--quiet"])
+    assert native.engine() == before
+
+
 def test_the_python_engine_is_named_in_the_json_stats(tmp_path):
     (tmp_path / "prog.mod").write_text(COUNTERS)
     out = io.StringIO()

@@ -79,6 +79,17 @@ def engine_used(name: str) -> Iterator[None]:
         use_engine(before)
 
 
+@contextmanager
+def engine_kept() -> Iterator[None]:
+    """Whatever the block chooses (``use_engine``), the engine chosen before afterwards."""
+    global _engine
+    before = _engine
+    try:
+        yield
+    finally:
+        _engine = before
+
+
 def description() -> str:
     """For ``--version``: the engine in use and whether the compiled core is built."""
     built = "built" if available() else "not built"
