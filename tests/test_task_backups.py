@@ -7,7 +7,9 @@ SYSPAR, RAPID/TASKn), checked from the repository root:
 * ``expected`` — ``NAME VERDICT`` per property, the built-in checks included;
 * ``waiting`` — text the reason of a violated ``no_deadlock`` must contain, one piece a line;
 * ``warnings`` — ``RMCnnn text`` per warning or note the report must contain;
+* ``not_warned`` — ``RMCnnn text`` per warning or note the report may not contain;
 * ``assumes`` — text each verdict's ``assumes:`` must contain, one piece a line;
+* ``not_assumed`` — text no verdict's ``assumes:`` may contain, one piece a line;
 * ``error`` — text the last step of the ``no_runtime_error`` counterexample must contain
   (the error it stops with).
 
@@ -66,9 +68,16 @@ def test_task_backup_case(case):
     for piece in lines(case / "assumes"):
         for name, p in found.items():
             assert any(piece in line for line in p.get("assumes") or ()), (name, p.get("assumes"))
+    for piece in lines(case / "not_assumed"):
+        for name, p in found.items():
+            assert not any(piece in line for line in p.get("assumes") or ()), \
+                (name, p.get("assumes"))
     for line in lines(case / "warnings"):
         code_text, _, text = line.partition(" ")
         assert any(code_text in row and text in row for row in err.splitlines()), err
+    for line in lines(case / "not_warned"):
+        code_text, _, text = line.partition(" ")
+        assert not any(code_text in row and text in row for row in err.splitlines()), err
 
 
 def test_without_its_barrier_robot_1_runs_ahead(tmp_path):

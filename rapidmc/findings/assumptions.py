@@ -313,7 +313,8 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
                              f"take the stored value or {chosen.describe()}, other reads the "
                              f"stored value{_whole_fixed(program, data)} ({_where(data.span)})")
             continue
-        if data.storage != "PERS" or _file(data.span) is None or \
+        # (a barrier whose partners are not loaded has its own assumption)
+        if data.storage != "PERS" or _file(data.span) is None or data.is_task_list or \
                 (_file(data.span) in stub_files and data.slot not in outside) or \
                 data.namespace == ENVIRONMENT_NAMESPACE or data.slot not in read or \
                 data.slot in written:

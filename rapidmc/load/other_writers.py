@@ -38,7 +38,7 @@ from typing import Iterable, Iterator, Optional
 from .. import ast
 from ..diagnostics import TASKS_LOADED, Diagnostic, UserError
 from ..semantics.library import lookup_function, lookup_procedure
-from ..semantics.library.registry import matched_parameters
+from ..semantics.library.registry import matched_parameters, mode_may_write
 from .shared_data import trees_write_by_name
 
 
@@ -208,7 +208,7 @@ def _may_write(call, argument, routines: dict) -> bool:
         parameters = entry.signature.parameters
     for arg, parameter in matched_parameters(call.args, parameters):
         if arg is argument:
-            return parameter is None or parameter.mode.upper() != ast.IN
+            return parameter is None or mode_may_write(parameter.mode)
     return True
 
 

@@ -17,7 +17,7 @@ from ..diagnostics.quoting import quoted
 from ..semantics.configured_signals import walk_routine
 from ..semantics.program import PROGRAM_NAMESPACE
 from ..semantics.library import lookup_function, lookup_procedure
-from ..semantics.library.registry import matched_parameters
+from ..semantics.library.registry import matched_parameters, mode_may_write
 from ..semantics.scope import GLOBAL_DATA, ROUTINE
 from ..semantics.values import format_value
 
@@ -34,7 +34,7 @@ def pers_warnings(program, files) -> tuple:
     found = []
     for data in program.globals:
         if data.namespace != PROGRAM_NAMESPACE or data.storage != "PERS" or data.task_local \
-                or data.slot not in read or data.slot in written:
+                or data.is_task_list or data.slot not in read or data.slot in written:
             continue
         chosen = (getattr(program, "outside_data", None) or {}).get(data.slot)
         reading = f"its reads take {chosen.describe()}, as data written outside the loaded " \
@@ -70,7 +70,7 @@ def data_uses(program, namespace: int = PROGRAM_NAMESPACE) -> tuple[set, set]:
                 modes = _parameter_modes(program, lookup, node)
                 written.update(_slot(lookup, _root(arg.value))
                                for arg, mode in zip(node.args, modes)
-                               if arg.value is not None and mode != "IN")
+                               if arg.value is not None and mode_may_write(mode))
     read.discard(None)
     written.discard(None)
     return read, written

@@ -40,6 +40,12 @@ class GlobalData:
     # (file:line)``: a task not loaded, ``Linker._values_declared_elsewhere``), else None
     initial_from: Optional[str] = None
 
+    @property
+    def is_task_list(self) -> bool:
+        """A list of tasks (``tasks``): it names the controller's tasks for a barrier, and
+        no PC or task rewrites it in a running cell."""
+        return getattr(self.type, "element", self.type).key == "TASKS"
+
 
 @dataclass
 class Parameter:

@@ -78,6 +78,14 @@ PROCEDURE = "procedure"
 
 IN, VAR, PERS, INOUT, REF = "IN", "VAR", "PERS", "INOUT", "REF"
 MODES = (VAR, PERS, INOUT, REF)
+
+
+def mode_may_write(mode: Optional[str]) -> bool:
+    """Whether an argument bound to a parameter of ``mode`` may be written by the call.
+    REF is the manuals' reference that a predefined routine only reads (``Present``,
+    ``Dim``, a ``TaskRef``, WaitSyncTask's task list); an unknown mode (None: a routine
+    not declared) may write."""
+    return mode is None or mode.upper() not in (IN, REF)
 ANYTYPE = "anytype"
 ANYNUM = "anynum"
 SWITCH = "switch"
