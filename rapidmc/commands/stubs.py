@@ -78,7 +78,7 @@ def summary(target: str, stubs: Stubs) -> str:
     text = f"{target}: {len(stubs.declared)} declarations ({parts or 'none'})"
     if stubs.undeclared:
         names = ", ".join(item.name.text for item in stubs.undeclared)
-        text += f"; type not inferred, left to you: {names}"
+        text += f"; left to you (type not inferred, or an array too large to write): {names}"
     return text
 
 

@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import Optional
 
 from ...diagnostics import SourceCache
+from ...semantics.link import MAX_DIMENSION
 from ...semantics.library.data import PREDEFINED_DATA
 from ...semantics.types import NON_VALUE, PREDEFINED_ALIASES, PREDEFINED_TYPES, SEMI_VALUE
 from .inference import DATA, FUNCTION, PROCEDURE, TRAP, TYPE, Missing
@@ -26,6 +27,8 @@ KNOWN_VALUES = {"TOOLDATA": "tool0", "WOBJDATA": "wobj0", "LOADDATA": "load0",
 MIN_ARRAY_SIZE = 10
 UNUSED_AXIS = 9e9
 MAX_ARRAY_LITERAL = 1000
+# neutral values that are also what a declaration without a value starts with
+DEFAULT_VALUE_TEXTS = ("0", "FALSE", '""')
 # The header comment that marks a module as written by ``rapidmc stubs``: findings.assumptions
 # recognises stub declarations by it, and a trace names the values they give.
 STUB_MARKER = "Declarations written by 'rapidmc stubs'"
@@ -121,6 +124,7 @@ class StubWriter:
         self.neutral = Neutral(names)
         self.declared: list[Missing] = []
         self.undeclared: list[Missing] = []
+        self.too_large: set = set()        # ids of the undeclared arrays too large to write
 
     def module(self, module_name: str, missing: list[Missing]) -> str:
         self.neutral.records = {item.name.key: record_components(item)
@@ -143,6 +147,10 @@ class StubWriter:
         text = getattr(self, "_" + item.kind)(item)
         if text is None:
             self.undeclared.append(item)
+            if id(item) in self.too_large:
+                return [f"! {item.name.text}: first use {where(item)} ({item.use}); an array of "
+                        f"more than {MAX_ARRAY_LITERAL} elements of {item.type.name}, too large "
+                        "for a written value: declare it here"]
             return [f"! {item.name.text}: first use {where(item)} ({item.use}); its type could "
                     "not be inferred from its uses: declare it here"]
         self.declared.append(item)
@@ -159,8 +167,10 @@ class StubWriter:
         if not self.neutral.is_value_type(type_name):
             return [f"VAR {type_name} {item.name.text}{dims};" + _comment(notes)]
         value = self.neutral.literal(type_name)
-        if value is None or _size(sizes) > MAX_ARRAY_LITERAL:
+        if value is None:
             return None
+        if _size(sizes) > MAX_ARRAY_LITERAL:
+            return self._large_array(item, type_name, sizes, dims, value, notes)
         if sizes:
             value = array_literal(value, sizes)
             notes.append(f"an array argument: size {MIN_ARRAY_SIZE} assumed" if item.array_argument
@@ -184,6 +194,20 @@ class StubWriter:
         storage = "VAR" if item.storage == "VAR" else \
             "CONST" if item.storage == "CONST" and not item.assigned else "PERS"
         return [f"{storage} {type_name} {item.name.text}{dims} := {value};" + _comment(notes)]
+
+    def _large_array(self, item: Missing, type_name: str, sizes: list, dims: str,
+                     value: str, notes: list) -> Optional[list[str]]:
+        """An array too large for a written value: declared without one where its elements'
+        default (zero, FALSE, empty) is the neutral value, as a VAR (a PERS declared
+        without a value would count as data written outside, ``load.outside_data``);
+        else left to the user (``too_large``)."""
+        if value not in DEFAULT_VALUE_TEXTS or item.storage == "CONST" or \
+                _size(sizes) > MAX_DIMENSION:     # (an index far beyond any real array)
+            self.too_large.add(id(item))
+            return None
+        notes.append(f"more than {MAX_ARRAY_LITERAL} elements: declared without a value, "
+                     f"each element starts at {value}")
+        return [f"VAR {type_name} {item.name.text}{dims};" + _comment(notes)]
 
     def _parameters(self, item: Missing) -> tuple[str, list[str]]:
         texts, guessed = [], []
