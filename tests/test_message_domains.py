@@ -192,7 +192,7 @@ OTHER_MESSAGES = ("", " ", "0", "1", "-1", "3", "99", "1.5", "a", "A", "B", "pnp
                   "2 #", "2 1 #", "3 3 #", "99 99 #", "# # #", "#", ",", "?")
 
 TEXT_SERVERS = ["socket_test_cases", "socket_parsed_code", "socket_strtoval_array",
-                "socket_field_count", "defect_socket_receive_no_time"]
+                "socket_field_count", "defect_socket_receive_no_time", "socket_matched_words"]
 
 
 def unreached_under_any_input(report: api.CheckReport) -> set:
@@ -657,6 +657,17 @@ def test_a_list_between_brackets_is_also_tried_with_its_last_part_malformed():
     program = api.load_program([str(CHECK / "socket_bracket_list" / "prog.mod")])
     [domain] = message_domains(program)
     assert domain.messages[:3] == ("[1,1,1]", "[1,1]", "[1,1,?]")
+
+
+def test_words_matched_at_the_start_are_tried_alone_and_heading_a_list_of_numbers():
+    """``StrMatch(cmd, 1, "PICK,") = 1`` names a command, not a field separator: the
+    messages hold each word alone ("HOME") and heading as many numbers as the command's
+    routine parses ("PICK,1,1"); before, the words were taken as separators and the
+    24 messages' cap left none starting with a word, so no command's code was reached."""
+    [(_, _, messages, exact)] = domains_of("socket_matched_words")
+    assert {"HOME", "PICK,", "PAUSE", "PICK,1,1", "PICK,1,?"} <= set(messages) and not exact
+    program = api.load_program([str(CHECK / "socket_matched_words" / "prog.mod")])
+    assert coverage(api.check(program)) == []
 
 
 def test_a_trap_only_an_unmodelled_interrupt_runs_names_the_instruction_ordering_it(tmp_path):

@@ -676,9 +676,13 @@ class Uses:
             wanted += [(view, text) for text in ((good,) if good is not None else ())
                        + (MALFORMED,)]
         # each value's likeliest message first, then the next of each (the cap keeps the first)
-        ranked = [list(_placed(view, text, self.searched, heads)) for view, text in wanted]
-        # a list of as many numbers as a routine parses from parts it cuts ('[1,1,1]')
-        ranked[1:1] = [[form] for form in self._list_forms()]
+        # a word the code matches (``StrMatch(cmd, 1, "MOVE,")``) names a command, not
+        # where fields end: fields are split at the characters it seeks
+        separators = [text for text in self.searched if len(text) == 1]
+        ranked = [list(_placed(view, text, separators, heads)) for view, text in wanted]
+        # a list of as many numbers as a routine parses from parts it cuts ('[1,1,1]'),
+        # and each word matched, alone and heading such a list ('MOVE,1,1')
+        ranked[1:1] = [[form] for form in self._patterns() + self._list_forms()]
         messages = [forms[rank] for rank in range(max(map(len, ranked), default=0))
                     for forms in ranked if rank < len(forms)]
         messages.extend(self.searched)
@@ -700,21 +704,32 @@ class Uses:
         first, then each shorter one, then the longest with its last part malformed
         (``[1,1,?]``)."""
         others = [text for text in _ordered(self.searched) if text not in BRACKETS.values()
-                  and text not in BRACKETS]
-        if not others or len(others[0]) != 1:
+                  and text not in BRACKETS and len(text) == 1]
+        if not others:
             return []
         opener = next((text for text in self.searched if text in BRACKETS), "")
-        if not opener:
-            return []               # (a list the code reads between brackets only)
-        closer = BRACKETS[opener] if BRACKETS[opener] in self.searched else ""
+        closer = BRACKETS[opener] if opener and BRACKETS[opener] in self.searched else ""
+        # without a bracket, a list follows each word the code matches ('MOVE,1,1' for
+        # 'StrMatch(cmd, 1, "MOVE,")'), with the separator between them
+        openers = [opener] if opener else \
+            [word if word.endswith(others[0]) else word + others[0] for word in self._words()]
         # and each shorter list, whose missing part fails to parse ('[1,1]'), and the
         # longest with its last part malformed ('[1,1,?]'): the last parse's failure
         longest = max(self.lists.values(), default=0)
         if longest <= 1:
             return []
-        return [opener + others[0].join(["1"] * count) + closer
+        return [head + others[0].join(["1"] * count) + closer for head in openers
                 for count in range(longest, 1, -1)] + \
-            [opener + others[0].join(["1"] * (longest - 1) + [UNEXPECTED]) + closer]
+            [head + others[0].join(["1"] * (longest - 1) + [UNEXPECTED]) + closer
+             for head in openers]
+
+    def _words(self) -> list:
+        """The texts of more than one character the code matches (StrMatch), in order."""
+        return [text for text in dict.fromkeys(self.searched) if len(text) > 1]
+
+    def _patterns(self) -> list:
+        """Each word the code matches, as a message of its own ('STOP')."""
+        return self._words()
 
     def _length_forms(self) -> list:
         """Per number the message's length is compared with (``StrLen(msg) > 72``), a
