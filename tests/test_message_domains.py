@@ -327,29 +327,32 @@ def test_a_routine_no_call_reaches_gives_no_values(tmp_path):
     assert domain.messages == ("A", "B", "?")
 
 
+@pytest.mark.parametrize("read", ["DOutput(doCycleOn)", "doCycleOn"])
 @pytest.mark.parametrize("setter, probe_states, wording", [
     ("", 20_000, []),
     ("", 1, ["never reached with the outputs no loaded code sets at their first value "
-             "(DOutput at line 4)"]),
+             "({reader} at line 4)"]),
     ("        Set doCycleOn;\n", 20_000, ["never reached under any input"])])
 def test_an_output_no_loaded_code_sets_is_an_input(tmp_path, monkeypatch, setter,
-                                                     probe_states, wording):
+                                                     probe_states, wording, read):
     """A task that waits for an output the controller sets (a system output: cycle on) or
     another task sets reads its first value in the check; the readings probe reads it at 0
     and 1, so the code after the wait counts as reached (while a probe the bound stops
     leaves the warning naming the read).  Set by the program itself (in a routine nothing
-    calls), the output is no input: the code after the wait is dead."""
+    calls), the output is no input: the code after the wait is dead.  Read by name
+    (``WaitUntil doCycleOn = 1``, a world zone's output in public code) as by DOutput."""
     monkeypatch.setattr(api, "PROBE_STATES", probe_states)
     monkeypatch.setattr(api, "PROBE_GROWTH", 1)          # (the bound is PROBE_STATES)
     monkeypatch.setattr(api, "WALK_STEPS", 0)            # (no walks after a stopped probe)
     path = tmp_path / "cell.mod"
     path.write_text("MODULE Cell\n    VAR num state := 0;\n    PROC main()\n"
-                    "        WaitUntil DOutput(doCycleOn) = 1;\n        state := 1;\n"
+                    f"        WaitUntil {read} = 1;\n        state := 1;\n"
                     f"    ENDPROC\n    PROC Start()\n{setter}        state := 2;\n"
                     "    ENDPROC\nENDMODULE\n")
     messages = [m for m in coverage(api.check(api.load_program([str(path)])))
                 if "Start" not in m]
-    assert messages == wording
+    reader = read.partition("(")[0]
+    assert messages == [text.format(reader=reader) for text in wording]
 
 
 def test_a_handler_an_egm_session_failure_reaches_names_the_egm_instructions(tmp_path):

@@ -143,8 +143,8 @@ def sampled_inputs(program: Program, exact: Iterable[tuple] = (),
                 found.append(TriedInput(EGM_UP, node.name.text, node.span))
     found += [TriedInput(FIXED, name.text, name.span) for name in reading_calls(program)]
     found += [TriedInput(FIXED, call.name.text, call.span) for call in axis_reads(program)]
-    found += [TriedInput(UNSET, call.name.text, call.span)
-              for call in unset_output_reads(program)]
+    found += [TriedInput(UNSET, read.name.text, read.span)
+              for read in unset_output_reads(program)]
     found += [TriedInput(UNWRITTEN, ref.name.text, ref.span)
               for ref in unwritten_pers_reads(program)]
     found += [TriedInput(NO_INTERRUPT, call.name.text, call.span)
@@ -168,7 +168,8 @@ def start_position_reads(program: Program) -> list:
 
 
 def unset_output_reads(program: Program) -> list:
-    """The reads (DOutput, GOutput, AOutput) of an output signal that no loaded code sets.
+    """The reads (DOutput, GOutput, AOutput calls; a digital output read by name, ``IF
+    doZone = 1``: its NameRef) of an output signal that no loaded code sets.
 
     The controller sets such an output itself (a system output: motors on, cycle on,
     execution error) or another task does; the check reads the value it started with.  A
@@ -176,10 +177,15 @@ def unset_output_reads(program: Program) -> list:
     passes it by name as an argument, to Set, SetDO, PulseDO, a routine of the program's own
     taking a signal parameter, or anything but the reads themselves."""
     reads, passed = [], set()
+    digital = {signal.key for signal in program.signals if signal.kind == "DO"}
     for routine in program.routines:
         if routine.ast is None:
             continue
-        for node, _ in ast.walk(routine.ast):
+        for node, parents in ast.walk(routine.ast):
+            if isinstance(node, ast.NameRef) and node.name.key in digital and \
+                    routine.namespace != ENVIRONMENT_NAMESPACE and \
+                    not isinstance(parents[-1] if parents else None, ast.Argument):
+                reads.append((node.name.key, node))       # read by name: IF doZone = 1
             if not isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
                 continue
             names = [a.value.name.key for a in node.args if isinstance(a.value, ast.NameRef)]
@@ -191,7 +197,7 @@ def unset_output_reads(program: Program) -> list:
     # (an output read as set outside the loaded code takes both values: load.outside_outputs)
     outputs = {signal.key for signal in program.signals
                if signal.kind.endswith("O") and not signal.outside}
-    return [call for name, call in reads if name in outputs and name not in passed]
+    return [read for name, read in reads if name in outputs and name not in passed]
 
 
 def unmodelled_interrupt_orders(program: Program) -> list:
@@ -345,8 +351,9 @@ def tests_axes(program: Program) -> bool:
 def unset_digital_outputs(program: Program) -> list:
     """The digital outputs of ``unset_output_reads``: the readings probe lets them read 0
     or 1 (a system output, another task, the FlexPendant's I/O view may set them)."""
-    keys = {call.args[0].value.name.key for call in unset_output_reads(program)
-            if call.name.key == "DOUTPUT"}
+    keys = {read.name.key if isinstance(read, ast.NameRef) else read.args[0].value.name.key
+            for read in unset_output_reads(program)
+            if isinstance(read, ast.NameRef) or read.name.key == "DOUTPUT"}
     return [signal for signal in program.signals if signal.key in keys]
 
 
@@ -355,7 +362,7 @@ def probed(read: TriedInput) -> bool:
     or a DOutput of an output no loaded code sets."""
     name = read.instruction.upper()
     return (read.kind == FIXED and (name in PROBED_READINGS or name in AXES_PROBED)) or \
-        (read.kind == UNSET and name == "DOUTPUT")
+        (read.kind == UNSET and name not in OUTPUT_READS[1:])   # (DOutput, or a DO by name)
 
 
 def varied(read: TriedInput) -> bool:
