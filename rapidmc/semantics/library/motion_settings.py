@@ -41,8 +41,10 @@ compiled("GripLoad(PERS loaddata Load)",
          "PDispOff()",
          "ResetAxisDistance(mecunit MechUnit, num AxisNo)",
          "ResetAxisMoveTime(mecunit MechUnit, num AxisNo)",
-         "IndReset(mecunit MecUnit, num Axis \\switch RefPos | switch RefNum | switch Short "
-             "| switch Fwd | switch Bwd | switch Old)",
+         # (the manual: the reference is a robtarget or a num of degrees, then how the
+         # axis gets there; public code writes 'IndReset STN1, 1 \\RefNum:=0 \\Short')
+         "IndReset(mecunit MecUnit, num Axis \\robtarget RefPos | num RefNum "
+             "\\switch Short | switch Fwd | switch Bwd | switch Old)",
          modelled=NO_EFFECT)(no_effect)
 
 # SpeedRefresh's override is a percentage: outside 0-100 the controller raises
