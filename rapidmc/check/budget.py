@@ -37,6 +37,23 @@ MAX_CHECKPOINT_DISTANCE = 1 << 16
 default_clock: Callable[[], float] = time.monotonic
 
 
+# why every search stops now (``request_stop``: the user interrupted the check), else None
+stop_requested: Optional[str] = None
+
+
+def request_stop(reason: str) -> None:
+    """End the running search and every later one at their next clock reading, each with
+    ``reason`` as its bound (UNKNOWN): what a first interrupt does, so the verdicts already
+    reached are still reported."""
+    global stop_requested
+    stop_requested = reason
+
+
+def clear_stop() -> None:
+    global stop_requested
+    stop_requested = None
+
+
 class OutOfTime(Exception):
     """The running search's time limit is over (raised by ``time_check``)."""
 
@@ -76,6 +93,9 @@ class SearchBudget:
         self.next_checkpoint = stored + self.distance
         if self.progress is not None:
             self.progress.update(stored, transitions, depth)
+        if stop_requested is not None:
+            self.reason = stop_requested
+            return False
         if self.max_seconds is not None and now - self.started >= self.max_seconds:
             self.reason = f"time limit {self.max_seconds:g} s reached"
             return False
@@ -88,7 +108,10 @@ class SearchBudget:
         self.distance = max(1, min(wanted, self.distance * 4, MAX_CHECKPOINT_DISTANCE))
 
     def over_time(self) -> bool:
-        """Whether the time limit is over (``reason`` set then); reads the clock."""
+        """Whether the time limit is over or a stop was requested (``reason`` set then);
+        reads the clock."""
+        if stop_requested is not None and self.reason is None:
+            self.reason = stop_requested
         if self.max_seconds is None or self.reason is not None:
             return self.reason is not None
         if self.clock() - self.started >= self.max_seconds:
@@ -109,10 +132,12 @@ _running: Optional[SearchBudget] = None     # the budget of the search running i
 
 
 def time_check() -> None:
-    """Raise ``OutOfTime`` when the running search has a time limit and it is over: what a
-    model's successor generation calls between two runs of a step."""
+    """Raise ``OutOfTime`` when the running search has a time limit and it is over, or a
+    stop was requested: what a model's successor generation calls between two runs of a
+    step."""
     budget = _running
-    if budget is not None and budget.max_seconds is not None and budget.over_time():
+    if budget is not None and (budget.max_seconds is not None or stop_requested is not None) \
+            and budget.over_time():
         raise OutOfTime(budget.reason)
 
 

@@ -26,6 +26,7 @@ from ..ltl import BACKENDS
 from ..load.backup import add_program_arguments
 from ..model.properties import Property, check_unique, read_property_file
 from ..model import reduction
+from .interrupts import stop_on_interrupt
 from . import cluster_options, entries, storage_options
 from ..diagnostics.quoting import quoted, routine_name
 from .report_file import check_report_target, unwritable_reason, write_report
@@ -192,7 +193,8 @@ def prepare_model(args: argparse.Namespace) -> api.Model:
 
 def execute(args: argparse.Namespace) -> int:
     try:
-        return _check(args)
+        with stop_on_interrupt():
+            return _check(args)
     except UserError as exc:
         if args.junit:
             from ..report.junit import format_junit_diagnostics   # (reports load on demand)
