@@ -142,16 +142,21 @@ class JsonReports(dict):
         return self[key]
 
 
-@pytest.fixture(scope="module")
+# One of each per process: pytest-xdist's work stealing can run a module's tests on a worker
+# in several stretches, and a module-scoped fixture would run the cases again for each.
+TEXT_OUTPUTS, JSON_REPORTS = Outputs(), JsonReports()
+
+
+@pytest.fixture
 def text_outputs() -> Outputs:
-    """The text report of every case, run once per test module and worker."""
-    return Outputs()
+    """The text report of every case, run once per worker."""
+    return TEXT_OUTPUTS
 
 
-@pytest.fixture(scope="module")
+@pytest.fixture
 def json_reports() -> JsonReports:
-    """The JSON report of every case and its exit code, run once per test module and worker."""
-    return JsonReports()
+    """The JSON report of every case and its exit code, run once per worker."""
+    return JSON_REPORTS
 
 
 def verdicts_in_text(output: str) -> dict[str, str]:
