@@ -106,24 +106,57 @@ def at_root(monkeypatch):
     monkeypatch.chdir(ROOT)
 
 
-@pytest.fixture(scope="module")
-def json_reports() -> dict[str, dict]:
-    """The JSON report of every case and its exit code ("exit code"), computed once per
-    test module."""
-    reports = {}
-    previous = os.getcwd()
-    os.chdir(ROOT)
-    try:
-        for key, case in CASES.items():
-            out = io.StringIO()
+class Outputs(dict):
+    """(exit code, stdout) of ``rapidmc check`` with ``extra`` on each case, run from the
+    repository root when a test first asks for that case: several tests read the same run,
+    and under pytest-xdist a worker runs only the cases its tests ask for."""
+
+    def __init__(self, *extra: str):
+        super().__init__()
+        self.extra = extra
+
+    def __missing__(self, key: str) -> tuple[int, str]:
+        out, previous = io.StringIO(), os.getcwd()
+        os.chdir(ROOT)
+        try:
             with contextlib.redirect_stdout(out):
-                code = main(case.argv("--format", "json"))
-            assert out.getvalue(), f"{key}: rapidmc check printed no report (exit code {code})"
-            reports[key] = json.loads(out.getvalue())
-            reports[key]["exit code"] = code        # (not a field of the report)
-    finally:
-        os.chdir(previous)
-    return reports
+                code = main(CASES[key].argv(*self.extra))
+        finally:
+            os.chdir(previous)
+        self[key] = code, out.getvalue()
+        return self[key]
+
+
+class JsonReports(dict):
+    """The JSON report of each case, its exit code as the field "exit code"."""
+
+    def __init__(self):
+        super().__init__()
+        self.outputs = Outputs("--format", "json")
+
+    def __missing__(self, key: str) -> dict:
+        code, output = self.outputs[key]
+        assert output, f"{key}: rapidmc check printed no report (exit code {code})"
+        self[key] = json.loads(output)
+        self[key]["exit code"] = code        # (not a field of the report)
+        return self[key]
+
+
+# One of each per process: pytest-xdist's work stealing can run a module's tests on a worker
+# in several stretches, and a module-scoped fixture would run the cases again for each.
+TEXT_OUTPUTS, JSON_REPORTS = Outputs(), JsonReports()
+
+
+@pytest.fixture
+def text_outputs() -> Outputs:
+    """The text report of every case, run once per worker."""
+    return TEXT_OUTPUTS
+
+
+@pytest.fixture
+def json_reports() -> JsonReports:
+    """The JSON report of every case and its exit code, run once per worker."""
+    return JSON_REPORTS
 
 
 def verdicts_in_text(output: str) -> dict[str, str]:
@@ -277,10 +310,10 @@ def step_line(step: dict) -> int | None:
 
 
 @pytest.mark.parametrize("key", CASES)
-def test_text_report_gives_the_expected_verdicts_and_exit_code(key, capsys, at_root):
+def test_text_report_gives_the_expected_verdicts_and_exit_code(key, text_outputs):
     """The spec's verdicts as expected; the built-in checks (run-time errors, deadlocks) hold."""
     case = CASES[key]
-    code, output = run_check(case, capsys)
+    code, output = text_outputs[key]
     ours, built_in = split_verdicts(case, verdicts_in_text(output))
     assert ours == case.verdicts
     assert built_in == {HOLDS}
@@ -410,16 +443,16 @@ def test_sorter_readme_first_command_is_a_check_with_the_plant():
 @pytest.mark.parametrize("readme, key", [(SORTER / "README.md", "sorter_b"),
                                          (SORTER / "README.md", "sorter_c"),
                                          (DOOR / "README.md", "door_race")])
-def test_readme_shows_the_counterexamples_in_full_as_printed(readme, key, capsys, at_root):
-    _, output = run_check(CASES[key], capsys)
+def test_readme_shows_the_counterexamples_in_full_as_printed(readme, key, text_outputs):
+    _, output = text_outputs[key]
     assert normalise_times(output) in normalise_times(readme.read_text())
 
 
-def test_multimove_readme_excerpt_is_printed_in_order(capsys, at_root):
+def test_multimove_readme_excerpt_is_printed_in_order(text_outputs):
     """The README's zone_mutex excerpt: its lines are the check's output, in order."""
     readme = (MULTIMOVE / "README.md").read_text()
     block = re.search(r"```\n(zone_mutex: VIOLATED.*?)```", readme, re.DOTALL).group(1)
-    _, output = run_check(CASES["multimove_faulty"], capsys)
+    _, output = text_outputs["multimove_faulty"]
     lines = normalise_times(output).splitlines()
     position = 0
     for line in normalise_times(block).splitlines():

@@ -24,7 +24,8 @@ TESTS = ROOT / "tests"
 
 pytestmark = pytest.mark.engine_independent
 
-# marked modules that start processes, and why those processes' engine is not the run's
+# modules with marked tests that start processes, and why those processes' engine is not the
+# run's (a module that marks single tests is held to it as one that marks them all)
 STARTED_PROCESSES = {
     "test_pre_commit.py": "pre-commit installs its own rapidmc without the core "
                           "(RAPIDMC_NO_NATIVE=1): its hooks search on the Python engine in "
@@ -88,15 +89,17 @@ def test_probe_fails_a_marked_test_that_searches_and_passes_the_others(tmp_path)
 
 
 def marked_modules() -> list[Path]:
-    marked = []
-    for path in sorted(TESTS.glob("test_*.py")):
-        tree = ast.parse(path.read_text(encoding="utf-8"))
-        for node in tree.body:
-            if isinstance(node, ast.Assign) and any(
-                    isinstance(t, ast.Name) and t.id == "pytestmark" for t in node.targets) \
-                    and "engine_independent" in ast.unparse(node.value):
-                marked.append(path)
-    return marked
+    """The modules that mark all their tests (``pytestmark``) or some of them (a decorator,
+    or ``pytest.mark.engine_independent(test)`` as test_fuzz does)."""
+    return [path for path in sorted(TESTS.glob("test_*.py"))
+            if any(isinstance(node, ast.Attribute) and node.attr == "engine_independent"
+                   and isinstance(node.value, ast.Attribute) and node.value.attr == "mark"
+                   for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))))]
+
+
+def test_modules_that_mark_single_tests_are_among_the_marked_modules():
+    names = {path.name for path in marked_modules()}
+    assert {"test_fuzz.py", "test_staged_step.py", "test_ltl_spin.py"} <= names, names
 
 
 def test_marked_modules_that_start_processes_say_why_their_engine_is_not_the_runs():
