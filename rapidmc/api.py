@@ -49,8 +49,9 @@ from .diagnostics.quoting import one_line, quoted
 from .findings.assumptions import assumptions, for_verdict
 from .findings.explored import ExploredFacts
 from .findings.fixed_readings import fixed_readings
-from .findings.tried_inputs import (sampled_inputs, tests_axes, unset_digital_outputs,
-                                    unwritten_pers_reads)
+from .findings.start_positions import named_targets
+from .findings.tried_inputs import (sampled_inputs, start_position_reads, tests_axes,
+                                    unset_digital_outputs, unwritten_pers_reads)
 from .load.backup import (link_options, load_tasks, resolve_program_files,
                           with_encrypted_interface)
 from .load.message_domains import (ANSWERS, FILE, PROBE_STATES, SOCKET, message_domains,
@@ -314,9 +315,15 @@ def _readings_probe(model: Model, bound: int) -> tuple:
     DOutput of an output no loaded code sets reads 0 or 1 (the controller, another task
     or the FlexPendant's I/O view sets it), and whether that search was complete.  Each
     value is one a real controller gives, so a line this search runs is reachable; the
-    verdicts keep the fixed readings (RMC702 says so).  Bounded by ``_probe_bound``."""
-    return _probe_search(model.program, model.atoms,
-                         _free_readings_config(model, model.program, model.atoms), bound)
+    verdicts keep the fixed readings (RMC702 says so).  Where the code reads the robot's
+    position back for more than a move's target, the robot may also start at each target
+    the code names (``findings.start_positions``: a real robot starts anywhere); only in
+    this probe, whose walks would otherwise share out their steps among those starts.
+    Bounded by ``_probe_bound``."""
+    config = _free_readings_config(model, model.program, model.atoms)
+    if start_position_reads(model.program):   # a robot may start where the program names
+        config.start_targets = named_targets(model.program)
+    return _probe_search(model.program, model.atoms, config, bound)
 
 
 def _free_readings_config(model: Model, program: Program, atoms: AtomCompiler,

@@ -1,0 +1,62 @@
+"""Where a coverage probe lets the robot start: the positions the program itself names.
+
+The check's robot starts at its home position (every coordinate 0); a real one starts
+wherever the last program, a jog or a power failure left it.  A start-up routine that
+finds out where the robot is before it moves home (``IF bCurPos(pPick, ...) THEN MoveJ
+Offs(pPick, 0, 0, 20) ...``: Hanoi's ``rMoveHome``) runs the branch for a taught position
+only for a robot that starts there, which the check's never does: each branch was
+reported "never reached with the robot starting at the check's home position".
+
+A robot can start at any position, so a run that starts at one of the program's own
+targets is a real run, and a line it runs is reachable.  The readings probe
+(``api._readings_probe``) starts the robot at the home position and at each target the
+code names (robtarget data and constants, at their stored or declared value), at most
+``START_TARGETS`` of them, in the order the code first names them
+(``CheckConfig.start_targets``; ``RapidSystem.initial_states`` starts there).  Only in a
+program that reads the position back for more than a move's target
+(``tried_inputs.start_position_reads``): elsewhere where the robot starts changes
+nothing.  Only the TCP starts there: CJointT still reads the home joints (the check has
+no kinematics to find a target's joints).  The verdicts keep the home start
+(``assumes:`` says so), and the warnings for what no probe reached still name the start
+("with the robot starting at the check's home position"): the targets are a sample of
+the places a robot may be.
+"""
+from __future__ import annotations
+
+from .. import ast
+from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
+from ..semantics.scope import CONSTANT, GLOBAL_DATA
+from ..semantics.types import RapidType
+
+START_TARGETS = 32      # start positions a probe tries besides home (each one more start)
+
+
+def named_targets(program: Program) -> tuple:
+    """The distinct robtarget values the program's code names (a data object's stored
+    value, a constant's), in the order first named, at most ``START_TARGETS``."""
+    found: dict = {}
+    for routine in program.routines:
+        if routine.ast is None or routine.namespace == ENVIRONMENT_NAMESPACE:
+            continue
+        for node, _ in ast.walk(routine.ast):
+            if not isinstance(node, ast.NameRef):
+                continue
+            symbol = routine.scope.lookup(node.name.key)
+            if symbol is None or not _is_robtarget(symbol.type):
+                continue
+            if symbol.kind == CONSTANT:
+                value = symbol.value
+            elif symbol.kind == GLOBAL_DATA:
+                value = program.globals[symbol.slot].initial
+            else:
+                continue
+            if value is not None:
+                found.setdefault(value, None)
+            if len(found) >= START_TARGETS:
+                return tuple(found)
+    return tuple(found)
+
+
+def _is_robtarget(rapid_type) -> bool:
+    return isinstance(rapid_type, RapidType) and rapid_type.key == "ROBTARGET"
+
