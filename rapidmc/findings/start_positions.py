@@ -23,10 +23,10 @@ the places a robot may be.
 """
 from __future__ import annotations
 
-from .. import ast
-from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
+from ..semantics.program import Program
 from ..semantics.scope import CONSTANT, GLOBAL_DATA
 from ..semantics.types import RapidType
+from .tried_inputs import named_in_code
 
 START_TARGETS = 32      # start positions a probe tries besides home (each one more start)
 
@@ -35,25 +35,19 @@ def named_targets(program: Program) -> tuple:
     """The distinct robtarget values the program's code names (a data object's stored
     value, a constant's), in the order first named, at most ``START_TARGETS``."""
     found: dict = {}
-    for routine in program.routines:
-        if routine.ast is None or routine.namespace == ENVIRONMENT_NAMESPACE:
+    for _, _, symbol in named_in_code(program):
+        if not _is_robtarget(symbol.type):
             continue
-        for node, _ in ast.walk(routine.ast):
-            if not isinstance(node, ast.NameRef):
-                continue
-            symbol = routine.scope.lookup(node.name.key)
-            if symbol is None or not _is_robtarget(symbol.type):
-                continue
-            if symbol.kind == CONSTANT:
-                value = symbol.value
-            elif symbol.kind == GLOBAL_DATA:
-                value = program.globals[symbol.slot].initial
-            else:
-                continue
-            if value is not None:
-                found.setdefault(value, None)
-            if len(found) >= START_TARGETS:
-                return tuple(found)
+        if symbol.kind == CONSTANT:
+            value = symbol.value
+        elif symbol.kind == GLOBAL_DATA:
+            value = program.globals[symbol.slot].initial
+        else:
+            continue
+        if value is not None:
+            found.setdefault(value, None)
+        if len(found) >= START_TARGETS:
+            break
     return tuple(found)
 
 
