@@ -199,11 +199,13 @@ REACH = """MODULE Reach
         WHILE TRUE DO
             WaitTime 1;
         ENDWHILE
-        failures := -1;
     ENDPROC
     FUNC bool MoveTo(robtarget target)
         VAR jointtarget joints;
         joints := CalcJointT(target, tool0 \\WObj:=wobj0);
+        IF joints.robax.rax_1 > 90 THEN
+            failures := -1;
+        ENDIF
         MoveAbsJ joints, v100, z100, tool0;
         RETURN TRUE;
     ERROR
@@ -220,7 +222,7 @@ def test_a_handler_for_a_target_out_of_reach_is_reached_by_the_readings_probe(tm
     CalcJointT for one out of reach.  The readings probe lets each call fail, so the
     handler and the branch its answer feeds count as reached, while the verdicts keep
     reachable targets.  CalcJointT's value stays fixed when it succeeds (no kinematics),
-    so code the probe still does not reach keeps naming it."""
+    so code that depends on the joints it computes keeps naming it."""
     path = tmp_path / "reach.mod"
     path.write_text(REACH)
     report = api.check(api.load_program([str(path)]))
@@ -228,7 +230,7 @@ def test_a_handler_for_a_target_out_of_reach_is_reached_by_the_readings_probe(tm
     for code in ("failures := failures + 1;", "RETURN FALSE;"):
         assert (str(path), line_of(REACH, code)) in report.executed, code
     assert [w.message for w in report.warnings if w.code.code == "RMC701"] == [
-        "never reached with the controller's readings fixed (CalcJointT at line 17)"]
+        "never reached with the controller's readings fixed (CalcJointT at line 16)"]
 
 
 def test_calc_rob_t_reads_a_fixed_target_with_the_joint_targets_external_axes(tmp_path, capsys):
