@@ -12,6 +12,7 @@ frame slot where the result will be; the expression just reads that slot.
 """
 from __future__ import annotations
 
+import functools
 import itertools
 import operator
 from dataclasses import dataclass, replace
@@ -176,6 +177,15 @@ def _varying_leaves(value_type, outside, path: tuple) -> list:
     return leaves
 
 
+@functools.lru_cache(maxsize=4096)
+def stored_first(stored, domain: tuple) -> tuple:
+    """The values a wait's read of data another party writes too may take: the stored
+    value first, then the others of the domain.  The order is the order of the successors:
+    a shortest counterexample then shows the value the data kept (the command a wait before
+    saw) wherever that value alone leads there, not one the other party wrote again."""
+    return (stored,) + tuple(value for value in domain if value != stored)
+
+
 class ExpressionCompiler:
     """Compiles expressions in one scope (a routine body, a data initialiser, an atom)."""
 
@@ -290,7 +300,7 @@ class ExpressionCompiler:
             def either(m):
                 ref = ref_fn(m)
                 value = m.read_ref(ref)
-                taken = m.choose(name, domain if value in domain else (value,) + domain)
+                taken = m.choose(name, stored_first(value, domain))
                 if taken != value:
                     m.write_ref(ref, taken)
                 return taken
@@ -374,8 +384,7 @@ class ExpressionCompiler:
             value = old = m.read_ref(ref)
             for positions, leaf_name, domain in choices:
                 current = read_at(value, positions)
-                taken = m.choose(leaf_name, domain if current in domain else
-                                 (current,) + domain)
+                taken = m.choose(leaf_name, stored_first(current, domain))
                 if taken != current:
                     value = replace_at(value, positions, taken)
             if value is not old:
