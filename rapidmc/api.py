@@ -29,6 +29,7 @@ Input errors raise ``rapidmc.diagnostics.UserError`` carrying diagnostics.
 from __future__ import annotations
 
 import contextlib
+import copy
 import functools
 import os
 from dataclasses import dataclass, field, replace
@@ -318,7 +319,7 @@ def _readings_probe(model: Model, bound: int) -> tuple:
     verdicts keep the fixed readings (RMC702 says so).  Where the code reads the robot's
     position back for more than a move's target, the robot may also start at each target
     the code names (``findings.start_positions``: a real robot starts anywhere); only in
-    this probe, whose walks would otherwise share out their steps among those starts.
+    this probe's breadth-first search: its walks start where the check's robot does.
     Bounded by ``_probe_bound``."""
     config = _free_readings_config(model, model.program, model.atoms)
     if start_position_reads(model.program):   # a robot may start where the program names
@@ -403,6 +404,11 @@ def _walked_lines(program: Program, atoms: AtomCompiler, config: CheckConfig,
     bounded breadth-first probe stops shallow, a walk goes as deep as it is long (a counter
     wrapping after 98 messages, a command branch behind a long start-up).  Every step
     is one of the program's under ``config``, so each line counts as reached."""
+    if config.start_targets:
+        # the walks start where the check's robot does: spread over every start, they went
+        # less deep (MARC-HT25's retry loops); the breadth-first probe tries the starts
+        config = copy.copy(config)
+        config.start_targets = ()
     watch = ExploredFacts(program, (), atoms)
     lines = watch.statements
     random_walks(RapidSystem(program, config, reduction.NO_PLAN), lines, steps,
