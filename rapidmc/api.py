@@ -29,7 +29,6 @@ Input errors raise ``rapidmc.diagnostics.UserError`` carrying diagnostics.
 from __future__ import annotations
 
 import contextlib
-import copy
 import functools
 import os
 from dataclasses import dataclass, field, replace
@@ -51,8 +50,8 @@ from .findings.assumptions import assumptions, for_verdict
 from .findings.explored import ExploredFacts
 from .findings.fixed_readings import fixed_readings
 from .findings.start_positions import named_targets
-from .findings.tried_inputs import (sampled_inputs, start_position_reads, tests_axes,
-                                    unset_digital_outputs, unwritten_pers_reads)
+from .findings.tried_inputs import (sampled_inputs, tests_axes, unset_digital_outputs,
+                                    unwritten_pers_reads)
 from .load.backup import (link_options, load_tasks, resolve_program_files,
                           with_encrypted_interface)
 from .load.message_domains import (ANSWERS, FILE, PROBE_STATES, SOCKET, message_domains,
@@ -82,6 +81,8 @@ __all__ = ["CheckOptions", "CheckReport", "Model", "check", "check_model", "flow
 
 BUILTIN_RUNTIME = "no_runtime_error"
 BUILTIN_DEADLOCK = "no_deadlock"
+# the states of the probe whose robot starts at the program's targets (_start_probe)
+START_PROBE_STATES = 2000
 # a coverage probe's bound grows with the check's own search up to this many PROBE_STATES
 PROBE_GROWTH = 3.5
 # a probe its bound stops walks at random (check.walks) this many steps per state of the
@@ -316,15 +317,25 @@ def _readings_probe(model: Model, bound: int) -> tuple:
     DOutput of an output no loaded code sets reads 0 or 1 (the controller, another task
     or the FlexPendant's I/O view sets it), and whether that search was complete.  Each
     value is one a real controller gives, so a line this search runs is reachable; the
-    verdicts keep the fixed readings (RMC702 says so).  Where the code reads the robot's
-    position back for more than a move's target, the robot may also start at each target
-    the code names (``findings.start_positions``: a real robot starts anywhere); only in
-    this probe's breadth-first search: its walks start where the check's robot does.
-    Bounded by ``_probe_bound``."""
+    verdicts keep the fixed readings (RMC702 says so).  Bounded by ``_probe_bound``."""
+    return _probe_search(model.program, model.atoms,
+                         _free_readings_config(model, model.program, model.atoms), bound)
+
+
+def _start_probe(model: Model) -> set:
+    """The lines a search runs whose robot starts at home or at one of the targets the code
+    names (``findings.start_positions``: a real robot starts anywhere, so each run is
+    real), with the readings free as in ``_readings_probe``: a start-up routine's branch
+    for a robot found at a taught position.  Breadth-first only, at most
+    ``START_PROBE_STATES``: such a branch comes early, and a bigger or walking probe would
+    share its steps among the starts."""
+    targets = named_targets(model.program)
+    if not targets:
+        return set()
     config = _free_readings_config(model, model.program, model.atoms)
-    if start_position_reads(model.program):   # a robot may start where the program names
-        config.start_targets = named_targets(model.program)
-    return _probe_search(model.program, model.atoms, config, bound)
+    config.start_targets = targets
+    return _probe_search(model.program, model.atoms, config, START_PROBE_STATES,
+                         walks=False)[0]
 
 
 def _free_readings_config(model: Model, program: Program, atoms: AtomCompiler,
@@ -404,11 +415,6 @@ def _walked_lines(program: Program, atoms: AtomCompiler, config: CheckConfig,
     bounded breadth-first probe stops shallow, a walk goes as deep as it is long (a counter
     wrapping after 98 messages, a command branch behind a long start-up).  Every step
     is one of the program's under ``config``, so each line counts as reached."""
-    if config.start_targets:
-        # the walks start where the check's robot does: spread over every start, they went
-        # less deep (MARC-HT25's retry loops); the breadth-first probe tries the starts
-        config = copy.copy(config)
-        config.start_targets = ()
     watch = ExploredFacts(program, (), atoms)
     lines = watch.statements
     random_walks(RapidSystem(program, config, reduction.NO_PLAN), lines, steps,
@@ -534,6 +540,8 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
                 lines, complete = _closure_probe(model, bound, readings_free=True)
                 searches.facts.statements.executed |= lines
                 searches.facts.closures_tried |= complete
+        if searches.facts.complete and searches.facts.waits_for_start():
+            searches.facts.statements.executed |= _start_probe(model)
         if searches.facts.complete and searches.facts.waits_for_other_tasks():
             searches.facts.statements.executed |= _shared_data_probe(model, bound)
     resting_on = assumptions(model.program, model.config.robot_untracked)

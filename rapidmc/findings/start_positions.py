@@ -8,9 +8,9 @@ only for a robot that starts there, which the check's never does: each branch wa
 reported "never reached with the robot starting at the check's home position".
 
 A robot can start at any position, so a run that starts at one of the program's own
-targets is a real run, and a line it runs is reachable.  The readings probe
-(``api._readings_probe``) starts the robot at the home position and at each target the
-code names (robtarget data and constants, at their stored or declared value), at most
+targets is a real run, and a line it runs is reachable.  A small breadth-first probe
+(``api._start_probe``, with the readings free) starts the robot at the home position and
+at each target the code names (robtarget data and constants, at their stored or declared value), at most
 ``START_TARGETS`` of them, in the order the code first names them
 (``CheckConfig.start_targets``; ``RapidSystem.initial_states`` starts there).  Only in a
 program that reads the position back for more than a move's target

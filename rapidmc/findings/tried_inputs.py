@@ -366,11 +366,9 @@ def probed(read: TriedInput) -> bool:
 
 
 def varied(read: TriedInput) -> bool:
-    """Whether the readings probe varies ``read``: those it frees (``probed``), those
-    it lets fail (``probed_readings.FAILING``: CalcJointT out of reach) and the position
-    read back, whose robot may start at the program's targets (``start_positions``)."""
-    return probed(read) or read.kind == START or \
-        (read.kind == FIXED and read.instruction.upper() in FAILING)
+    """Whether the readings probe varies ``read``: those it frees (``probed``) and those
+    it lets fail (``probed_readings.FAILING``: CalcJointT out of reach)."""
+    return probed(read) or (read.kind == FIXED and read.instruction.upper() in FAILING)
 
 
 def reached(inputs: Sequence[TriedInput], executed: set) -> tuple:
