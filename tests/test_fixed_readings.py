@@ -355,7 +355,7 @@ MODULE Taught
     PROC main()
         VAR robtarget here;
         here := CRobT();
-        IF here.trans.z > 700 THEN
+        IF here.trans.z > pPick.trans.z - 100 THEN
             steps := 1;
         ELSEIF here.trans.z < -100 THEN
             steps := 3;
@@ -371,8 +371,9 @@ def test_a_robot_starting_at_a_named_target_reaches_its_branch(tmp_path, monkeyp
                                                                targets_tried):
     """A start-up routine's branch for a robot found at a taught position (Hanoi's
     ``rMoveHome``) runs when the readings probe starts the robot at the targets the program
-    names (``start_positions``): only the branch no named target reaches is left, still
-    naming the start.  Without the targets both branches are reported."""
+    compares a position with (``start_positions``): only the branch no such target
+    reaches is left, still naming the start.  Without the targets both branches are
+    reported."""
     if not targets_tried:
         monkeypatch.setattr(api, "named_targets", lambda program: ())
     path = tmp_path / "taught.mod"
