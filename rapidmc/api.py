@@ -325,14 +325,15 @@ def _readings_probe(model: Model, bound: int) -> tuple:
 def _start_probe(model: Model) -> set:
     """The lines a search runs whose robot starts at home or at one of the targets the code
     names (``findings.start_positions``: a real robot starts anywhere, so each run is
-    real), with the readings free as in ``_readings_probe``: a start-up routine's branch
-    for a robot found at a taught position.  Breadth-first only, at most
+    real), with the readings free as in ``_readings_probe`` and the inputs held (a cell
+    whose signals stay put: no interrupt multiplies the steps): a start-up routine's
+    branch for a robot found at a taught position.  Breadth-first only, at most
     ``START_PROBE_STATES``: such a branch comes early, and a bigger or walking probe would
     share its steps among the starts."""
     targets = named_targets(model.program)
     if not targets:
         return set()
-    config = _free_readings_config(model, model.program, model.atoms)
+    config = _free_readings_config(model, model.program, model.atoms).with_inputs_held()
     config.start_targets = targets
     return _probe_search(model.program, model.atoms, config, START_PROBE_STATES,
                          walks=False)[0]
