@@ -49,6 +49,7 @@ from .diagnostics.quoting import one_line, quoted
 from .findings.assumptions import assumptions, for_verdict
 from .findings.explored import ExploredFacts
 from .findings.fixed_readings import fixed_readings
+from .findings.start_positions import named_targets
 from .findings.tried_inputs import (sampled_inputs, tests_axes, unset_digital_outputs,
                                     unwritten_pers_reads)
 from .load.backup import (link_options, load_tasks, resolve_program_files,
@@ -80,6 +81,8 @@ __all__ = ["CheckOptions", "CheckReport", "Model", "check", "check_model", "flow
 
 BUILTIN_RUNTIME = "no_runtime_error"
 BUILTIN_DEADLOCK = "no_deadlock"
+# the states of the probe whose robot starts at the program's targets (_start_probe)
+START_PROBE_STATES = 2000
 # a coverage probe's bound grows with the check's own search up to this many PROBE_STATES
 PROBE_GROWTH = 3.5
 # a probe its bound stops walks at random (check.walks) this many steps per state of the
@@ -319,6 +322,23 @@ def _readings_probe(model: Model, bound: int) -> tuple:
                          _free_readings_config(model, model.program, model.atoms), bound)
 
 
+def _start_probe(model: Model) -> set:
+    """The lines a search runs whose robot starts at home or at one of the targets the code
+    names (``findings.start_positions``: a real robot starts anywhere, so each run is
+    real), with the readings free as in ``_readings_probe`` and the inputs held (a cell
+    whose signals stay put: no interrupt multiplies the steps): a start-up routine's
+    branch for a robot found at a taught position.  Breadth-first only, at most
+    ``START_PROBE_STATES``: such a branch comes early, and a bigger or walking probe would
+    share its steps among the starts."""
+    targets = named_targets(model.program)
+    if not targets:
+        return set()
+    config = _free_readings_config(model, model.program, model.atoms).with_inputs_held()
+    config.start_targets = targets
+    return _probe_search(model.program, model.atoms, config, START_PROBE_STATES,
+                         walks=False)[0]
+
+
 def _free_readings_config(model: Model, program: Program, atoms: AtomCompiler,
                           options: Optional[CheckOptions] = None) -> CheckConfig:
     """The check's environment for ``program`` (with ``options``, else the model's) with
@@ -521,6 +541,8 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
                 lines, complete = _closure_probe(model, bound, readings_free=True)
                 searches.facts.statements.executed |= lines
                 searches.facts.closures_tried |= complete
+        if searches.facts.complete and searches.facts.waits_for_start():
+            searches.facts.statements.executed |= _start_probe(model)
         if searches.facts.complete and searches.facts.waits_for_other_tasks():
             searches.facts.statements.executed |= _shared_data_probe(model, bound)
     resting_on = assumptions(model.program, model.config.robot_untracked)

@@ -15,6 +15,8 @@ import pytest
 from rapidmc import api, ast
 from rapidmc.cli import main
 from rapidmc.findings.fixed_readings import fixed_readings
+from rapidmc.findings.start_positions import named_targets
+from rapidmc.semantics.values import UNCONNECTED_AXIS
 from rapidmc.semantics.link import build
 from rapidmc.syntax import parse_text
 
@@ -197,11 +199,13 @@ REACH = """MODULE Reach
         WHILE TRUE DO
             WaitTime 1;
         ENDWHILE
-        failures := -1;
     ENDPROC
     FUNC bool MoveTo(robtarget target)
         VAR jointtarget joints;
         joints := CalcJointT(target, tool0 \\WObj:=wobj0);
+        IF joints.robax.rax_1 > 90 THEN
+            failures := -1;
+        ENDIF
         MoveAbsJ joints, v100, z100, tool0;
         RETURN TRUE;
     ERROR
@@ -218,7 +222,7 @@ def test_a_handler_for_a_target_out_of_reach_is_reached_by_the_readings_probe(tm
     CalcJointT for one out of reach.  The readings probe lets each call fail, so the
     handler and the branch its answer feeds count as reached, while the verdicts keep
     reachable targets.  CalcJointT's value stays fixed when it succeeds (no kinematics),
-    so code the probe still does not reach keeps naming it."""
+    so code that depends on the joints it computes keeps naming it."""
     path = tmp_path / "reach.mod"
     path.write_text(REACH)
     report = api.check(api.load_program([str(path)]))
@@ -226,7 +230,7 @@ def test_a_handler_for_a_target_out_of_reach_is_reached_by_the_readings_probe(tm
     for code in ("failures := failures + 1;", "RETURN FALSE;"):
         assert (str(path), line_of(REACH, code)) in report.executed, code
     assert [w.message for w in report.warnings if w.code.code == "RMC701"] == [
-        "never reached with the controller's readings fixed (CalcJointT at line 17)"]
+        "never reached with the controller's readings fixed (CalcJointT at line 16)"]
 
 
 def test_calc_rob_t_reads_a_fixed_target_with_the_joint_targets_external_axes(tmp_path, capsys):
@@ -342,3 +346,45 @@ def test_a_branch_on_a_position_read_back_names_the_start_position(tmp_path):
     assert list(result.assumes) == [
         "the robot starts at the check's home position (every coordinate 0); CRobT at "
         "start.mod:6 reads where it is"]
+
+
+TAUGHT = """
+MODULE Taught
+    CONST robtarget pPick := [[100,0,800],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+    VAR num steps := 0;
+    PROC main()
+        VAR robtarget here;
+        here := CRobT();
+        IF here.trans.z > pPick.trans.z - 100 THEN
+            steps := 1;
+        ELSEIF here.trans.z < -100 THEN
+            steps := 3;
+        ENDIF
+        MoveL pPick, v100, fine, tool0;
+    ENDPROC
+ENDMODULE
+"""
+
+
+@pytest.mark.parametrize("targets_tried", [True, False])
+def test_a_robot_starting_at_a_named_target_reaches_its_branch(tmp_path, monkeypatch,
+                                                               targets_tried):
+    """A start-up routine's branch for a robot found at a taught position (Hanoi's
+    ``rMoveHome``) runs when the readings probe starts the robot at the targets the program
+    compares a position with (``start_positions``): only the branch no such target
+    reaches is left, still naming the start.  Without the targets both branches are
+    reported."""
+    if not targets_tried:
+        monkeypatch.setattr(api, "named_targets", lambda program: ())
+    path = tmp_path / "taught.mod"
+    path.write_text(TAUGHT)
+    report = api.check(api.load_program([str(path)]))
+    warnings = [(w.span.line, w.message) for w in report.warnings if w.code.code == "RMC701"]
+    left = [(11, "never reached with the robot starting at the check's home position "
+                 "(CRobT at line 7)")]
+    expected = left if targets_tried else [
+        (9, "never reached with the robot starting at the check's home position "
+            "(CRobT at line 7)")] + left
+    assert warnings == expected
+    assert named_targets(api.load_program([str(path)])) == (
+        ((100.0, 0.0, 800.0), (1.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0), (UNCONNECTED_AXIS,) * 6),)

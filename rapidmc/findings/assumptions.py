@@ -301,7 +301,8 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
             yield Assumption(OTHER_WRITER, data.name,
                              f"PERS {data.name}: no write of the loaded code ends the WaitUntil "
                              f"at {chosen.awaited_at}, so {chosen.also_written_by} writes it "
-                             f"too; in waits and loop conditions it reads the stored value or "
+                             f"too (not the values the loaded code writes); in waits and loop "
+                             f"conditions it reads the stored value or "
                              f"{chosen.describe()}{_whole_fixed(program, data)} "
                              f"({_where(data.span)})")
             continue

@@ -2,7 +2,9 @@
 
 A statement that follows, in the same statement list, one that always leaves that list
 (RETURN, EXIT, ExitCycle, GOTO, RETRY, TRYNEXT, and RAISE in a routine without an ERROR
-handler of its own) runs only if a GOTO leads to a label between them (or inside it):
+handler of its own; a ``WHILE TRUE`` loop with no GOTO inside: RAPID's EXIT ends the
+program, so only a GOTO leaves such a loop) runs only if a GOTO leads to a label between
+them (or inside it):
 without such a label it is dead code under any input, whatever messages, answers or readings a check
 tried (the second ``RETURN robtarget_string;`` of a MARC-HT25 function).  Coverage
 (``coverage_warnings``) says "under any input" for a stretch of such statements even when
@@ -60,7 +62,18 @@ def leaves_list(statement, comes_back: bool) -> bool:
         return True
     if isinstance(statement, ast.Raise):
         return not comes_back
+    if isinstance(statement, ast.While):
+        return endless(statement)
     return isinstance(statement, ast.ProcedureCall) and statement.name.key in ENDING_CALLS
+
+
+def endless(loop) -> bool:
+    """Whether a WHILE loop never lets its list go on: its condition is the literal TRUE
+    and no GOTO inside may jump out (an error raised inside comes back, by RETRY or
+    TRYNEXT, inside the loop, or leaves the routine)."""
+    return isinstance(loop.condition, ast.BoolLiteral) and loop.condition.value is True \
+        and not any(isinstance(node, ast.Goto) for statement in loop.body
+                    for node, _ in ast.walk(statement))
 
 
 def _may_raise(value) -> bool:

@@ -19,8 +19,8 @@ from ..check import HOLDS, VIOLATED, find_reachable
 from ..check.result import SearchResult
 from .vacuity import TriggerWatch, to_text
 from .coverage import StatementWatch, coverage_warnings
-from .tried_inputs import (PEERS_OPEN, PORT_FREE, UNWRITTEN, TriedInput, called_routines, probed, qualifier,
-                           reached, varied)
+from .tried_inputs import (PEERS_OPEN, PORT_FREE, START, UNWRITTEN, TriedInput,
+                           called_routines, probed, qualifier, reached, varied)
 from ..diagnostics import Diagnostic
 from ..ltl import Formula
 from ..model.properties import AtomCompiler
@@ -120,6 +120,12 @@ class ExploredFacts:
         """Whether some unreached-code warning would rest on a reading the readings probe
         varies (``tried_inputs.varied``: OpMode, an output no loaded code sets, ...)."""
         return any(varied(t) for t in reached(self.sampled, self.statements.executed))
+
+    def waits_for_start(self) -> bool:
+        """Whether some unreached-code warning would rest on where the robot starts (a
+        position read back for more than a move's target ran: ``tried_inputs.START``)."""
+        return any(t.kind == START for t in reached(self.sampled, self.statements.executed)) \
+            and bool(self.warnings())
 
     def waits_for_other_tasks(self) -> bool:
         """Whether some unreached-code warning would rest on no other task writing shared

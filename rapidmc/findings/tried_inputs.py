@@ -265,24 +265,31 @@ def sampled_outside_reads(program: Program) -> list:
         return []
     reads: dict = {}                 # slot -> its reads
     sampled = set()
+    for node, parents, symbol in named_in_code(program):
+        if symbol.kind != GLOBAL_DATA or symbol.slot not in outside:
+            continue
+        outer, above = _whole_read(node, parents)
+        if isinstance(above, ast.Assignment) and above.target is outer:
+            continue                                    # (a write)
+        reads.setdefault(symbol.slot, []).append(node)
+        if not _compared_with_constant(outer, above) and \
+                any(values and not isinstance(values[0], bool)
+                    for values in outside[symbol.slot].domains.values()):
+            sampled.add(symbol.slot)
+    return [ref for slot in sorted(sampled) for ref in reads[slot]]
+
+
+def named_in_code(program: Program):
+    """(NameRef, its parents, the symbol it names) for each name of the program's code
+    (every task's, not the environment model's) that its routine's scope resolves."""
     for routine in program.routines:
         if routine.ast is None or routine.namespace == ENVIRONMENT_NAMESPACE:
             continue
         for node, parents in ast.walk(routine.ast):
-            if not isinstance(node, ast.NameRef):
-                continue
-            symbol = routine.scope.lookup(node.name.key)
-            if symbol is None or symbol.kind != GLOBAL_DATA or symbol.slot not in outside:
-                continue
-            outer, above = _whole_read(node, parents)
-            if isinstance(above, ast.Assignment) and above.target is outer:
-                continue                                    # (a write)
-            reads.setdefault(symbol.slot, []).append(node)
-            if not _compared_with_constant(outer, above) and \
-                    any(values and not isinstance(values[0], bool)
-                        for values in outside[symbol.slot].domains.values()):
-                sampled.add(symbol.slot)
-    return [ref for slot in sorted(sampled) for ref in reads[slot]]
+            if isinstance(node, ast.NameRef):
+                symbol = routine.scope.lookup(node.name.key)
+                if symbol is not None:
+                    yield node, parents, symbol
 
 
 def _whole_read(node, parents: tuple) -> tuple:

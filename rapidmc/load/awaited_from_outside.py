@@ -92,8 +92,9 @@ def _safe(compare: Callable, value, constant) -> bool:
 
 
 def awaited_from_outside(program, routines: Iterable) -> dict:
-    """Slot -> the place (``file:line``) of a WaitUntil of ``routines`` that awaits a value
-    of the PERS data object in that slot that no write of the loaded code gives."""
+    """Slot -> (the place, ``file:line``, of a WaitUntil of ``routines`` that awaits a value
+    of the PERS data object in that slot that no write of the loaded code gives; the
+    constants the loaded code writes to it)."""
     routines = [r for r in routines if r.ast is not None]
     waits: dict = {}                    # slot -> [(test, span)]
     writes: dict = {}                   # slot -> values written, UNKNOWN among them
@@ -134,7 +135,7 @@ def awaited_from_outside(program, routines: Iterable) -> dict:
             continue
         for test, span in tests:
             if not any(test(v) for v in values):
-                found[slot] = f"{Path(span.file).name}:{span.line}"
+                found[slot] = (f"{Path(span.file).name}:{span.line}", frozenset(values))
                 break
     return found
 

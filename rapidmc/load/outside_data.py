@@ -39,7 +39,11 @@ polling loop (WHILE; IF ... GOTO back, in a branch or the ELSE:
 value or any value of the same domain, so the wait may end, and stores a value
 other than the stored one (the other party wrote it just before: the code after the
 wait reads what the wait saw; a WaitUntil keeps it only where it ends, so a wait no
-value ends stays a deadlock: ``library.waits``); every other read takes the
+value ends stays a deadlock: ``library.waits``); the stored value comes first among the
+choices (``expressions.stored_first``), and where the other party is only assumed from a
+wait no loaded write ends (``awaited_from_outside``), its values leave out the constants
+the loaded code writes (``_client_writes``: a client fills the mailbox, the task empties
+it); every other read takes the
 stored value (the loaded code's own protocol), so no branch runs on values the
 other writer's protocol may never produce together with the rest of the data.
 
@@ -175,14 +179,29 @@ def outside_data(linker) -> dict:
             domains[path] = _domain(leaf_type, initial, compared.get((slot, path)))
         if domains:
             # a known writer left out names itself; else a wait only a client ends names one
-            awaited_at = awaited.get(slot) if slot in written and data.key not in writers \
-                else None
+            awaited_at = None
+            if slot in written and data.key not in writers and slot in awaited:
+                awaited_at, own = awaited[slot]
+                domains = _client_writes(domains, own)
             writer = writers.get(data.key) or (AWAITED_WRITER if awaited_at else None)
             found[slot] = OutsideData(slot, data.name, data.span, domains,
                                       writer if slot in written else None,
                                       data.key in observed, awaited_at, unset,
                                       start if unset else None)
     return found
+
+
+def _client_writes(domains: dict, own: frozenset) -> dict:
+    """The domain of data a client is only assumed to write (a wait no loaded write ends,
+    ``awaited_from_outside``): not the constants the loaded code writes to it itself (the
+    mailbox's "empty", which the task writes back once it has taken a command).  A wait's
+    read still takes the stored value, which may be one of those; without them a wait
+    after another (``WaitUntil cmd <> ""; WaitUntil StrPart(cmd, 1, 10) = "workoffset"``)
+    no longer sees the client empty the data in between, which no client filling a
+    mailbox does (the value the first wait saw stays a choice: ``stored_first``)."""
+    kept = {path: tuple(v for v in values if v not in own) if values is not None else None
+            for path, values in domains.items()}
+    return kept if all(values is None or values for values in kept.values()) else domains
 
 
 def unset_value(rapid_type):

@@ -150,6 +150,12 @@ class RapidSystem:
 
     def initial_states(self) -> list[State]:
         states = initial_states(self.program, lambda script: ScriptChooser(script, self.config))
+        if self.config.start_targets and not self.program.robot_per_task:
+            # a coverage probe's robot may also start at a target the program names
+            # (findings.start_positions): only the TCP, the rest as at home
+            states = list(dict.fromkeys(
+                start._replace(robot=(target,) + tuple(start.robot[1:]))
+                for start in states for target in (start.robot[0],) + self.config.start_targets))
         project = self.project
         return states if project is None else list(dict.fromkeys(map(project, states)))
 

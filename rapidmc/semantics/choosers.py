@@ -126,6 +126,9 @@ class CheckConfig:
         # ... and, in a program that tells them apart, CRobT and CJointT read the external
         # axes connected too (library.position)
         self.axes_probed = False
+        # the readings probes': the robot may start at these robtargets besides home
+        # (findings.start_positions; model.rapid_system.RapidSystem.initial_states)
+        self.start_targets: tuple = ()
         # the closure probe's: SocketBind may find its port taken (library.sockets)
         self.socket_setup_failures = False
         # moves leave the robot where it is: nothing but moves reads its position

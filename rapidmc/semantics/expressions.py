@@ -176,6 +176,27 @@ def _varying_leaves(value_type, outside, path: tuple) -> list:
     return leaves
 
 
+ORDERS_KEPT = 256        # stored values whose choice order one read remembers
+
+
+def stored_first(domain: tuple) -> Callable:
+    """fn(stored) -> the values a wait's read of data another party writes too may take:
+    the stored value first, then the others of ``domain``.  The order is the order of the
+    successors: a shortest counterexample then shows the value the data kept (the command
+    a wait before saw) wherever that value alone leads there, not one the other party
+    wrote again.  Each order is made once per stored value (a wait reads at every poll)."""
+    orders: dict = {}
+
+    def order(stored) -> tuple:
+        found = orders.get(stored)
+        if found is None:
+            found = (stored,) + tuple(value for value in domain if value != stored)
+            if len(orders) < ORDERS_KEPT:
+                orders[stored] = found
+        return found
+    return order
+
+
 class ExpressionCompiler:
     """Compiles expressions in one scope (a routine body, a data initialiser, an atom)."""
 
@@ -286,11 +307,12 @@ class ExpressionCompiler:
             # (the reference's indexes are evaluated once: the value is read through it)
             ref_fn = self.reference(expr, "read")[0]
             self.wait_choices = True
+            ordered = stored_first(domain)
 
             def either(m):
                 ref = ref_fn(m)
                 value = m.read_ref(ref)
-                taken = m.choose(name, domain if value in domain else (value,) + domain)
+                taken = m.choose(name, ordered(value))
                 if taken != value:
                     m.write_ref(ref, taken)
                 return taken
@@ -368,14 +390,15 @@ class ExpressionCompiler:
             return Compiled(kept, compiled.type)
         ref_fn = self.reference(expr, "read")[0]
         self.wait_choices = True
+        ordered_choices = [(positions, leaf_name, stored_first(domain))
+                           for positions, leaf_name, domain in choices]
 
         def either(m):
             ref = ref_fn(m)
             value = old = m.read_ref(ref)
-            for positions, leaf_name, domain in choices:
+            for positions, leaf_name, ordered in ordered_choices:
                 current = read_at(value, positions)
-                taken = m.choose(leaf_name, domain if current in domain else
-                                 (current,) + domain)
+                taken = m.choose(leaf_name, ordered(current))
                 if taken != current:
                     value = replace_at(value, positions, taken)
             if value is not old:

@@ -16,6 +16,8 @@ MODULE Unreachable
     Leave;
     Skip;
     n := Ratio(n);
+    Serve;
+    Poll;
   ENDPROC
 
   PROC Leave()
@@ -39,6 +41,28 @@ MODULE Unreachable
     k := 3;
     RAISE;
     k := 4;  ! expect: RMC808
+  ENDPROC
+
+  PROC Serve()
+    VAR num k := 0;
+    WHILE TRUE DO
+      WaitTime 1;
+      k := k + 1;
+      IF k > 3 EXIT;  ! (EXIT ends the program: it does not leave the loop)
+    ENDWHILE
+    k := 0;  ! expect: RMC808
+  ENDPROC
+
+  PROC Poll()
+    VAR num k := 0;
+    WHILE TRUE DO
+      WaitTime 1;
+      k := k + 1;
+      IF k > 3 GOTO done;
+    ENDWHILE
+    k := 5;  ! a GOTO inside may leave the loop: not reported
+  done:
+    k := 0;
   ENDPROC
 
   FUNC num Ratio(num d)

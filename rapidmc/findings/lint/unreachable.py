@@ -1,5 +1,6 @@
 """RMC808: statements no execution reaches, after RETURN, EXIT, RAISE, ExitCycle, GOTO
-(and RETRY or TRYNEXT in an ERROR handler), up to the next label.
+(and RETRY or TRYNEXT in an ERROR handler) or a ``WHILE TRUE`` loop no GOTO leaves, up
+to the next label.
 
 ``Stop`` does not end a block: the operator may start the program again, and it goes
 on with the statement after the Stop (``rapidmc run`` does the same).  Where the routine's
@@ -80,4 +81,6 @@ def _describe(statement) -> str:
         return statement.name.text
     if kind in (ast.If, ast.Test):
         return f"{kind.__name__.upper()} whose every branch leaves"
+    if kind is ast.While:
+        return "WHILE TRUE loop (no GOTO leaves it)"
     return kind.__name__.upper()

@@ -7,8 +7,8 @@ MODULE OutsideFields
     ! looks for, after the word ("move,1,1"): the parse runs and moved becomes 1. Before,
     ! every value lacked the commas, so the second StrFind started past the end of
     ! "move" (ERR_ARGVALERR) and no run reached moved := 1.
-    ! (no_runtime_error stays VIOLATED: each read in a wait chooses afresh, and StrPart of
-    ! an emptied command raises, as in outside_pers_part_prefix.)
+    ! (no_runtime_error stays VIOLATED, for a real reason as in outside_pers_part_prefix: a
+    ! command that ends the waits without the two commas makes StrFind or StrPart raise.)
     PERS string command := "";
     VAR num found{2};
     VAR num position := 0;

@@ -5,9 +5,11 @@ MODULE OutsidePartPrefix
     ! a PC writes command (awaited from outside); its domain holds the text that makes
     ! each part equal, so the waits may end and the code after them runs (without it the
     ! domain was "" and one other text, neither StrPart wait ever ended, and the code
-    ! after the first was "never reached under any input"). Each read in a wait chooses
-    ! afresh, so the PC may have emptied command again: StrPart of "" raises
-    ! ERR_ARGVALERR (no_runtime_error VIOLATED, as before).
+    ! after the first was "never reached under any input"). no_runtime_error is VIOLATED
+    ! for a real reason: a command shorter than 10 characters that ends the first wait
+    ! ("  guide", kept: a wait's read offers the stored value first, so the counterexample
+    ! shows it rather than a command the PC emptied again) makes StrPart raise
+    ! ERR_ARGVALERR in the second.
     PERS string command := "";
     VAR num offsets := 0;
     VAR num guided := 0;
