@@ -1752,34 +1752,31 @@ static int all_tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch,
         const int32_t *info = table->context_tasks + (context * tasks + task) * TASK_INFO;
         if (info[0] < 0)
             continue;                           /* (ended) */
-        Py_ssize_t before = found->count;
+        Py_ssize_t before = found->count, ran_before = scratch->ran.length;
+        Py_ssize_t waited_before = scratch->waited.length;
         int outcome = task_machine_step(table, scratch, info, context, frame, at.frame_length,
                                         at.data_id, data, at.data_length, found, changed);
         if (outcome < 0)
             return -1;
         int owner = (int)task;
-        if (outcome == VM_DONE) {
-            by_machine++;
-            for (Py_ssize_t i = before; table->reduced && i < found->count; i++) {
-                outcome = run_on(table, scratch, info, context, task, &found->frames[i],
-                                 &found->data[i]);
-                if (outcome < 0)
-                    return -1;
-                if (outcome != VM_DONE) {
-                    table->task_python_steps += running;
-                    return VM_UNSUPPORTED;
-                }
-                info = table->context_tasks + (context * tasks + task) * TASK_INFO;
-            }
+        for (Py_ssize_t i = before; outcome == VM_DONE && table->reduced && i < found->count;
+             i++) {
+            outcome = run_on(table, scratch, info, context, task, &found->frames[i],
+                             &found->data[i]);
+            if (outcome < 0)
+                return -1;
+            info = table->context_tasks + (context * tasks + task) * TASK_INFO;
         }
+        if (outcome == VM_DONE)
+            by_machine++;
         else {
+            /* Python steps this task (a step on the way of its run is Python's: the whole
+             * run is then taken there) */
+            found->count = before;
+            changed->length = before;
+            scratch->waited.length = waited_before;
+            forget_ran(table, scratch, ran_before);
             owner += TASK_COUNT_MAX;            /* (Python's step) */
-            if (table->reduced) {
-                /* (the Python step of the whole state shares its work between the tasks
-                 * and is remembered for the other searches: cheaper than task by task) */
-                table->task_python_steps += running;
-                return VM_UNSUPPORTED;
-            }
             outcome = task_python_step(table, id, task, found, changed);
             if (outcome < 0)
                 return -1;
@@ -1873,6 +1870,45 @@ static int invisible_step(PackedTable *table, Scratch *scratch, Py_ssize_t id,
  * not step, or a probe it cannot take), -1.  Where it tries a choice it numbers the state
  * (``scratch->numbered``), as ``PartialOrder.ample`` does. */
 enum { NO_AMPLE = 3 };
+
+/* The observer is told the lines of the steps Python took at the state just stepped that
+ * were kept (``note_python_spans``; ``kinds``: per successor 0 the machine's, 1 Python's
+ * and dropped, 2 Python's and kept), and ``labels_wanted`` becomes whether it wants more.
+ * 0 or -1. */
+static int tell_python_spans(PackedTable *table, const Int32Vector *kinds, Py_ssize_t count)
+{
+    PyObject *answer = PyObject_CallMethod((PyObject *)table, "note_python_spans", "y#",
+                                           (const char *)kinds->items,
+                                           count * (Py_ssize_t)sizeof(int32_t));
+    if (answer == NULL)
+        return -1;
+    table->labels_wanted = PyObject_IsTrue(answer);
+    Py_DECREF(answer);
+    return table->labels_wanted < 0 ? -1 : 0;
+}
+
+static int found_from_pairs(PyObject *pairs, Successors *found);
+
+/* Whether the transitions of ``task`` at state ``id`` (numbered ``here``) are its ample
+ * set, decided by Python (``python_task_ample``) where the machine does not take the
+ * task's step: VM_DONE (``found``: the ample set), NO_AMPLE (they are not), VM_UNSUPPORTED
+ * (Python steps the whole state), -1. */
+static int task_python_ample(PackedTable *table, Py_ssize_t id, Py_ssize_t task,
+                             Py_ssize_t here, Successors *found)
+{
+    PyObject *answer = PyObject_CallMethod((PyObject *)table, "python_task_ample", "nnn",
+                                           id, task, here);
+    if (answer == NULL)
+        return -1;
+    if (answer == Py_None || answer == Py_False) {
+        Py_DECREF(answer);
+        return answer == Py_None ? VM_UNSUPPORTED : NO_AMPLE;
+    }
+    int outcome = found_from_pairs(answer, found);
+    Py_DECREF(answer);
+    return outcome < 0 ? -1 : VM_DONE;
+}
+
 static int ample_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Successors *found)
 {
     Stored at;
@@ -1919,7 +1955,24 @@ static int ample_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Succe
         if (outcome != VM_DONE) {
             scratch->pending.length = 0;
             found->count = 0;
-            return outcome;
+            if (outcome != VM_UNSUPPORTED)
+                return outcome;
+            /* the machine does not take the task's step or run: Python decides for it */
+            outcome = task_python_ample(table, id, task, here, found);
+            if (outcome == VM_DONE) {
+                table->task_python_steps++;
+                /* (the observer hears the lines they ran: each one kept) */
+                scratch->changed.length = 0;
+                for (Py_ssize_t i = 0; table->labels_wanted && i < found->count; i++)
+                    if (vector32_push(&scratch->changed, 2) < 0)
+                        return -1;
+                if (table->labels_wanted &&
+                        tell_python_spans(table, &scratch->changed, found->count) < 0)
+                    return -1;
+            }
+            if (outcome != NO_AMPLE)
+                return outcome;
+            continue;
         }
         if (invisible == 1) {
             for (Py_ssize_t i = 0; i + 2 < scratch->pending.length; i += 3)
@@ -2050,18 +2103,9 @@ static int tasks_step_anew(PackedTable *table, Py_ssize_t id, Scratch *scratch,
     int by_python = 0;
     for (Py_ssize_t i = 0; i < before_drop; i++)
         by_python |= changed->items[i] != 0;
-    if (by_python && table->labels_wanted) {
-        /* the observer hears the lines of Python's steps that were kept */
-        PyObject *answer = PyObject_CallMethod(
-            (PyObject *)table, "note_python_spans", "y#", (const char *)changed->items,
-            before_drop * (Py_ssize_t)sizeof(int32_t));
-        if (answer == NULL)
-            return -1;
-        table->labels_wanted = PyObject_IsTrue(answer);
-        Py_DECREF(answer);
-        if (table->labels_wanted < 0)
-            return -1;
-    }
+    /* the observer hears the lines of Python's steps that were kept */
+    if (by_python && table->labels_wanted && tell_python_spans(table, changed, before_drop) < 0)
+        return -1;
     return VM_DONE;
 }
 

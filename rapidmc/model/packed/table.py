@@ -99,6 +99,7 @@ def reduced_packing(system) -> Optional["PackedPlaces"]:
     if table is None:
         return None
     table.set_order(table.order_flags())
+    table.runs = system.order.runs
     # (the proviso packs a successor to ask for its number, and the search then stores it)
     table.remembered = {}
     table._vectors = table._remembered_vectors
@@ -283,6 +284,7 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         return self
 
     selected_states = None           # (``PackedSearch``: the search whose ids are meant)
+    runs = None                      # reduced (``reduced_packing``): the tasks' local runs
 
     def select_search(self, states) -> None:
         """Ids name the states of ``states`` (a ``new_states()``) from now on; what was
@@ -432,30 +434,75 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
     def python_task_successors(self, state_id: int, task: int) -> Optional[list]:
         """The transitions of ``task`` alone at a state of several tasks, for the machine
         that takes the others' (``_packed.c``'s ``tasks_step``): (frame id, data id,
-        whether it changes the state) each, projected; None to have the whole state
-        stepped by Python (an observer that still wants the labels sees them there)."""
-        if self._stepping[0] == state_id:
-            state = self._stepping[1]
-        else:
-            state = self[state_id]
-            self._stepping = (state_id, state)
-            self._python_spans = []
+        whether it changes the state) each, projected and, reduced, run on through the
+        task's local instructions (``LocalRuns.run_on``, as ``PartialOrder`` extends the
+        transitions it keeps); None to have the whole state stepped by Python (an
+        observer that still wants the labels sees them there)."""
+        state = self._stepped_state(state_id)
         found = task_transitions(self.program, state, task, self.system.config)
         if found is None:
             return None
-        observer = self.observer
-        if observer is not None and observer.labels_wanted:
+        targets = self._task_targets(state, task, found)
+        if self._labels_wanted():
             # (the lines each one ran, told once the idle steps are dropped)
-            self._python_spans += [executed_spans(transition[1]) for transition in found]
-        project = self.system.project
-        result = []
+            self._python_spans += [spans for _, _, spans in targets]
+        return [self.intern_parts(*self._vectors(after)) + (moved,)
+                for after, moved, _ in targets]
+
+    def python_task_ample(self, state_id: int, task: int, here: int):
+        """Whether the transitions of ``task`` at a state of several tasks, numbered
+        ``here``, are its ample set, for the machine where it does not take that task's
+        step (``_packed.c``'s ``ample_step``): their parts (frame id, data id) when
+        they are, as ``PartialOrder._choose`` decides (projected, run on through the
+        task's local instructions, each one invisible), False when they are not, None to
+        have the whole state stepped by Python (the task cannot be stepped alone, or it
+        has an idle step, which only the other tasks' steps tell to keep or drop)."""
+        state = self._stepped_state(state_id)
+        config = self.system.config
+        found = task_transitions(self.program, state, task, config)
+        if found is None or any(transition[2] == state for transition in found):
+            return None
+        targets = self._task_targets(state, task, found)
+        order = self.system.order
+        if targets and all(order._invisible_step(task, state, after, config, here)
+                           for after, _, _ in targets):
+            if self._labels_wanted():
+                # (the lines they ran: ``_packed.c`` tells them as kept, ``note_python_spans``)
+                self._python_spans = [spans for _, _, spans in targets]
+            return [self.intern_parts(*self._vectors(after)) for after, _, _ in targets]
+        return False
+
+    def _labels_wanted(self) -> bool:
+        observer = self.observer
+        return observer is not None and observer.labels_wanted
+
+    def _stepped_state(self, state_id: int) -> State:
+        """The stored state ``state_id``, rebuilt once for the calls of one step."""
+        if self._stepping[0] == state_id:
+            return self._stepping[1]
+        state = self[state_id]
+        self._stepping = (state_id, state)
+        self._python_spans = []
+        return state
+
+    def _task_targets(self, state: State, task: int, found: list) -> list:
+        """(target, whether the step changed the state, the spans of the instructions it
+        ran) of one task's transitions ``found``: projected, and reduced, run on through
+        the task's local instructions (``python_task_successors``)."""
+        project, runs, config = self.system.project, self.runs, self.system.config
+        targets = []
         for transition in found:
             after = transition[2]
             moved = after != state
+            spans = executed_spans(transition[1])
             if project is not None:
                 after = project(after)
-            result.append(self.intern_parts(*self._vectors(after)) + (moved,))
-        return result
+            if runs is not None:
+                after, steps = runs.run_on(state, task, after, config)
+                for _, span, _ in steps:
+                    spans += executed_spans(span)
+            targets.append((after, moved, spans))
+        return targets
 
     def note_python_spans(self, kinds: bytes) -> bool:
         """The observer is told the lines of the steps ``python_task_successors`` gave at
