@@ -2041,10 +2041,11 @@ static int row_keep(PackedTable *table, Py_ssize_t place, const Successors *foun
 }
 
 /* the number of stored state ``id`` (-1: none, -2: an error), where rows are kept: reduced
- * steps, and no observer wants the lines steps run (a kept row names none) */
-static Py_ssize_t row_place(PackedTable *table, Py_ssize_t id, int labels_wanted)
+ * steps (kept also while an observer wants the lines steps run, and recalled only when
+ * none does: a kept row names no lines) */
+static Py_ssize_t row_place(PackedTable *table, Py_ssize_t id)
 {
-    if (!table->reduced || labels_wanted)
+    if (!table->reduced)
         return -1;
     int64_t key = table->states.keys[id];
     return place_of(table, (int32_t)(key >> 32), (int32_t)(key & 0xffffffff), 0);
@@ -2065,17 +2066,17 @@ static int tasks_step_anew(PackedTable *table, Py_ssize_t id, Scratch *scratch,
 /* ``tasks_step_anew``, or the row an earlier step of the state kept (reduced) */
 static int tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Successors *found)
 {
-    Py_ssize_t place = row_place(table, id, table->labels_wanted);
+    Py_ssize_t place = row_place(table, id);
     if (place == -2)
         return -1;
-    int recalled = place >= 0 ? row_recall(table, place, found) : 0;
+    int recalled = place >= 0 && !table->labels_wanted ? row_recall(table, place, found) : 0;
     if (recalled != 0) {
         table->rows_reused += recalled > 0;
         return recalled > 0 ? VM_DONE : -1;
     }
     int outcome = tasks_step_anew(table, id, scratch, found);
-    if (outcome == VM_DONE && place == -1 && table->reduced && !table->labels_wanted)
-        place = row_place(table, id, 0);        /* (numbered by this step) */
+    if (outcome == VM_DONE && place == -1 && table->reduced)
+        place = row_place(table, id);           /* (numbered by this step) */
     if (outcome == VM_DONE && place >= 0 && row_keep(table, place, found) < 0)
         return -1;
     return place == -2 ? -1 : outcome;
@@ -3564,7 +3565,7 @@ static int python_successors(PackedSearch *search, Py_ssize_t frontier)
     if (filled < 0)
         return filled;
     /* (Python's row of a reduced step, kept for the later searches as the machine's are) */
-    Py_ssize_t place = row_place(search->table, frontier, search->labels_wanted);
+    Py_ssize_t place = row_place(search->table, frontier);
     if (place == -2 || (place >= 0 && row_keep(search->table, place, &search->found) < 0))
         return -1;
     return filled;
