@@ -336,3 +336,22 @@ def test_the_machine_took_steps_in_most_check_cases():
         pytest.skip("run with the whole file")
     stepped = [name for name, steps in STEPS_TAKEN.items() if steps]
     assert len(stepped) >= len(STEPS_TAKEN) // 2, sorted(set(STEPS_TAKEN) - set(stepped))
+
+
+@needs_native
+def test_arrays_are_one_value_exactly_when_equal():
+    """The packed table finds a tuple of 32 items or more (an array) by its items' hashes,
+    each remembered by address: equal arrays (other objects, numbers equal by ``==``, an
+    element written and written back) are one value, and one written element another."""
+    table = native._native.PackedTable()
+
+    def ids(*values) -> list[int]:
+        return list(array("I", table.value_ids(values)))
+    row = tuple((float(i), (0.0, 1.0)) for i in range(512))
+    same = tuple((float(i), (0.0, 1.0)) for i in range(512))
+    ints = tuple((i, (0, True)) for i in range(512))
+    written = row[:7] + ((7.5, (0.0, 1.0)),) + row[8:]
+    back = written[:7] + (row[7],) + written[8:]
+    first, equal, by_number, other, again = ids(row, same, ints, written, back)
+    assert first == equal == by_number == again != other
+    assert table.values(array("I", [first, other]).tobytes()) == (row, written)

@@ -131,6 +131,16 @@ typedef struct {
      * objects, and hashing a 512-element array again costs what the lookup saves */
     PyObject *id_cache_object[ID_CACHE];
     int32_t id_cache_id[ID_CACHE];
+    /* tuples of BIG_TUPLE items or more (arrays): found by a hash of their items' hashes,
+     * each item's hash remembered by address (held, as above), so a new array that shares
+     * most items with one met before (an element written) is hashed in one pass over
+     * addresses, not element by element down to the numbers; equal by ``==`` as the dict's */
+    PyObject **item_memo_object;
+    Py_hash_t *item_memo_hash;
+    int32_t *big_slots;         /* -> value id (EMPTY: free), with the tuple's hash */
+    uint64_t *big_hashes;
+    uint64_t big_mask;
+    Py_ssize_t big_count;
     /* segments and states (``states``: the selected search's, see ``selected`` below) */
     VectorTable frames, data;
     /* a distributed worker's spare data segments (``spare_data``): those its steps made in
@@ -469,6 +479,107 @@ static int32_t number_id(PackedTable *self, int tag, double d, PyObject *object)
     return id;
 }
 
+#define BIG_TUPLE 32             /* tuples at least this long: ``big_tuple_id`` */
+#define ITEM_MEMO 16384          /* items' hashes remembered by address */
+
+/* the hash of a big tuple from its items' hashes (equal tuples: equal items, equal
+ * hashes), -1 with an error */
+static int big_tuple_hash(PackedTable *self, PyObject *tuple, uint64_t *out)
+{
+    if (self->item_memo_object == NULL) {
+        self->item_memo_object = PyMem_Calloc(ITEM_MEMO, sizeof(PyObject *));
+        self->item_memo_hash = PyMem_Calloc(ITEM_MEMO, sizeof(Py_hash_t));
+        if (self->item_memo_object == NULL || self->item_memo_hash == NULL) {
+            PyErr_NoMemory();
+            return -1;
+        }
+    }
+    Py_ssize_t length = PyTuple_GET_SIZE(tuple);
+    uint64_t hash = 0x9e3779b97f4a7c15ULL ^ (uint64_t)length;
+    for (Py_ssize_t i = 0; i < length; i++) {
+        PyObject *item = PyTuple_GET_ITEM(tuple, i);
+        Py_hash_t item_hash;
+        if (PyTuple_Check(item)) {
+            uint64_t at = mix64((uint64_t)(uintptr_t)item) & (ITEM_MEMO - 1);
+            if (self->item_memo_object[at] == item)
+                item_hash = self->item_memo_hash[at];
+            else {
+                item_hash = PyObject_Hash(item);
+                if (item_hash == -1)
+                    return -1;
+                Py_INCREF(item);
+                Py_XSETREF(self->item_memo_object[at], item);
+                self->item_memo_hash[at] = item_hash;
+            }
+        }
+        else if ((item_hash = PyObject_Hash(item)) == -1)
+            return -1;
+        hash = (hash ^ (uint64_t)item_hash) * 0x100000001b3ULL;
+    }
+    *out = mix64(hash);
+    return 0;
+}
+
+static int big_grow(PackedTable *self)
+{
+    uint64_t capacity = self->big_slots == NULL ? 1024 : (self->big_mask + 1) * 2;
+    int32_t *slots = PyMem_Malloc(capacity * sizeof(int32_t));
+    uint64_t *hashes = PyMem_Malloc(capacity * sizeof(uint64_t));
+    if (slots == NULL || hashes == NULL) {
+        PyMem_Free(slots);
+        PyMem_Free(hashes);
+        PyErr_NoMemory();
+        return -1;
+    }
+    for (uint64_t i = 0; i < capacity; i++)
+        slots[i] = EMPTY;
+    for (uint64_t i = 0; self->big_slots != NULL && i <= self->big_mask; i++) {
+        if (self->big_slots[i] == EMPTY)
+            continue;
+        uint64_t at = self->big_hashes[i] & (capacity - 1);
+        while (slots[at] != EMPTY)
+            at = (at + 1) & (capacity - 1);
+        slots[at] = self->big_slots[i];
+        hashes[at] = self->big_hashes[i];
+    }
+    PyMem_Free(self->big_slots);
+    PyMem_Free(self->big_hashes);
+    self->big_slots = slots;
+    self->big_hashes = hashes;
+    self->big_mask = capacity - 1;
+    return 0;
+}
+
+/* the id of a tuple of BIG_TUPLE items or more (stored when new); -1 with an error */
+static int32_t big_tuple_id(PackedTable *self, PyObject *tuple)
+{
+    uint64_t hash;
+    if (big_tuple_hash(self, tuple, &hash) < 0 || (self->big_slots == NULL && big_grow(self) < 0))
+        return -1;
+    uint64_t at = hash & self->big_mask;
+    for (;;) {
+        int32_t id = self->big_slots[at];
+        if (id == EMPTY)
+            break;
+        if (self->big_hashes[at] == hash) {
+            int same = PyObject_RichCompareBool(tuple, self->value_object[id], Py_EQ);
+            if (same < 0)
+                return -1;
+            if (same)
+                return id;
+        }
+        at = (at + 1) & self->big_mask;
+    }
+    int32_t id = add_value(self, T_OBJ, 0.0, tuple);
+    if (id < 0)
+        return -1;
+    self->big_slots[at] = id;
+    self->big_hashes[at] = hash;
+    if ((uint64_t)++self->big_count * 2 > self->big_mask + 1 && big_grow(self) < 0)
+        return -1;
+    return id;
+}
+
 /* the id of any Python value; -1 with an error */
 static int32_t value_id(PackedTable *self, PyObject *object)
 {
@@ -489,8 +600,12 @@ static int32_t value_id(PackedTable *self, PyObject *object)
     if (self->id_cache_object[cached] == object)
         return self->id_cache_id[cached];
     int32_t id;
-    PyObject *known = PyDict_GetItemWithError(self->object_ids, object);
-    if (known != NULL)
+    PyObject *known = NULL;
+    if (PyTuple_Check(object) && PyTuple_GET_SIZE(object) >= BIG_TUPLE) {
+        if ((id = big_tuple_id(self, object)) < 0)
+            return -1;
+    }
+    else if ((known = PyDict_GetItemWithError(self->object_ids, object)) != NULL)
         id = (int32_t)PyLong_AsLong(known);
     else {
         if (PyErr_Occurred())
@@ -2161,6 +2276,8 @@ static int PackedTable_traverse(PackedTable *self, visitproc visit, void *arg)
         Py_VISIT(self->value_object[i]);
     for (Py_ssize_t i = 0; i < ID_CACHE; i++)
         Py_VISIT(self->id_cache_object[i]);
+    for (Py_ssize_t i = 0; self->item_memo_object != NULL && i < ITEM_MEMO; i++)
+        Py_VISIT(self->item_memo_object[i]);
     return 0;
 }
 
@@ -2171,6 +2288,8 @@ static int PackedTable_clear(PackedTable *self)
         Py_CLEAR(self->value_object[i]);
     for (Py_ssize_t i = 0; i < ID_CACHE; i++)
         Py_CLEAR(self->id_cache_object[i]);
+    for (Py_ssize_t i = 0; self->item_memo_object != NULL && i < ITEM_MEMO; i++)
+        Py_CLEAR(self->item_memo_object[i]);
     return 0;
 }
 
@@ -2225,6 +2344,10 @@ static void PackedTable_dealloc(PackedTable *self)
     PyMem_Free(self->row_at);
     PyMem_Free(self->row_keys);
     PackedTable_clear(self);
+    PyMem_Free(self->item_memo_object);
+    PyMem_Free(self->item_memo_hash);
+    PyMem_Free(self->big_slots);
+    PyMem_Free(self->big_hashes);
     free_program(self);
     PyMem_Free(self->value_tag);
     PyMem_Free(self->value_number);
@@ -3215,7 +3338,11 @@ static PyObject *PackedTable_native_bytes(PackedTable *self, PyObject *unused)
         + self->context_tasks_capacity * self->task_count * TASK_INFO * sizeof(int32_t)
         + self->places.key_capacity * sizeof(int64_t)      /* (the reduction's numbers) */
         + (self->places.slots != NULL ? (self->places.mask + 1) * sizeof(int32_t) : 0)
-        + (self->row_at_capacity + self->row_capacity) * sizeof(int64_t);
+        + (self->row_at_capacity + self->row_capacity) * sizeof(int64_t)
+        + (self->big_slots != NULL ? (self->big_mask + 1) * (sizeof(int32_t) + sizeof(uint64_t))
+           : 0);
+    /* (the caches of a fixed size, ``id_cache_*`` and ``item_memo_*``, 304 KB in all, are
+     * not counted: they hold no state) */
     return PyLong_FromSsize_t(bytes);
 }
 
