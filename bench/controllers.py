@@ -173,9 +173,16 @@ of ``memory_bytes``, 0.000 % of the profiled check.  Python's single-task steps 
 of the check's CPU (in-process, timed around ``_task_step``): ``teach``'s call, its element
 and component writes (each interns a new 512-element tuple, hashed whole: about 75 us),
 MoveJ and SocketReceive.  The Python engine: 17.6-18.2 s either way.  Counters
-(``bench/native.py --sizes 8,9``, two alternate runs each): N=8 whole command 1.27-1.28 s
+(``bench/native.py --sizes 8,9``, two alternate runs each; before the array hashing below,
+which the counters never reach): N=8 whole command 1.27-1.28 s
 (base 1.30-1.42), 141 bytes per state; N=9 run-time error search 2.31-3.05 s (base
 2.47-2.60), whole command 4.24-5.52 s (base 4.68-5.02), 83 bytes per state (base 84).
+Then (13:55, load 12-16): arrays found by their items' hashes in the packed table
+(``big_tuple_id``; ``value_ids`` took 1.41 of the 4.59 s of the in-process check, now
+0.20): whole command 5.93, 6.39, 6.63 s on the base -> 2.87, 2.98, 3.03 s (28,700-30,200
+model states per CPU second), the run-time error search alone 1.54-1.87 -> 0.67-0.69 s
+(28,800-29,800 states/s), 152 bytes per state in the table; Python's single-task steps
+are 65 % of the check (2.0 of 3.06 s).
 """
 from __future__ import annotations
 

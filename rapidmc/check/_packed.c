@@ -523,16 +523,12 @@ static int big_tuple_hash(PackedTable *self, PyObject *tuple, uint64_t *out)
 static int big_grow(PackedTable *self)
 {
     uint64_t capacity = self->big_slots == NULL ? 1024 : (self->big_mask + 1) * 2;
-    int32_t *slots = PyMem_Malloc(capacity * sizeof(int32_t));
-    uint64_t *hashes = PyMem_Malloc(capacity * sizeof(uint64_t));
-    if (slots == NULL || hashes == NULL) {
+    int32_t *slots = new_slots((Py_ssize_t)capacity);
+    uint64_t *hashes = slots == NULL ? NULL : PyMem_Malloc(capacity * sizeof(uint64_t));
+    if (hashes == NULL) {
         PyMem_Free(slots);
-        PyMem_Free(hashes);
-        PyErr_NoMemory();
-        return -1;
+        return PyErr_Occurred() ? -1 : (PyErr_NoMemory(), -1);
     }
-    for (uint64_t i = 0; i < capacity; i++)
-        slots[i] = EMPTY;
     for (uint64_t i = 0; self->big_slots != NULL && i <= self->big_mask; i++) {
         if (self->big_slots[i] == EMPTY)
             continue;
