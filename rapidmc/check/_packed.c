@@ -2167,10 +2167,12 @@ static Py_ssize_t row_place(PackedTable *table, Py_ssize_t id)
  * instruction in task order, by the machine where it can and else by Python for that
  * task alone; then a task whose step changes nothing gives up its turn when another
  * can go on (``staged_step.idle_steps_dropped``); reduced (``set_order``), each of the
- * machine's steps runs on through its task's local instructions and the ample set of
- * one task is kept where there is one.  VM_UNSUPPORTED: Python steps the whole state (a
- * context the machine does not run in, or Python asked for it, or decides the ample
- * set). */
+ * machine's steps runs on through its task's local instructions (a task whose step or
+ * run the machine does not take is Python's, run on there) and the ample set of one task
+ * is kept where there is one (Python deciding it for a candidate the machine does not
+ * step, ``python_task_ample``).  VM_UNSUPPORTED: Python steps the whole state (a context
+ * the machine does not run in, or Python asked for it: a task it cannot step alone, an
+ * ample candidate with an idle step). */
 static int tasks_step_anew(PackedTable *table, Py_ssize_t id, Scratch *scratch,
                            Successors *found);
 
