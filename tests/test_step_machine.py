@@ -354,4 +354,7 @@ def test_arrays_are_one_value_exactly_when_equal():
     back = written[:7] + (row[7],) + written[8:]
     first, equal, by_number, other, again = ids(row, same, ints, written, back)
     assert first == equal == by_number == again != other
+    numbers = ids(tuple(float(i) for i in range(64)), tuple(float(i) for i in range(64)),
+                  tuple(range(64)), tuple(float(i) for i in range(1, 65)))
+    assert numbers[0] == numbers[1] == numbers[2] != numbers[3]
     assert table.values(array("I", [first, other]).tobytes()) == (row, written)
