@@ -157,6 +157,32 @@ where one task calls ``teach``, writes array elements or record components, move
 receives is stepped whole in Python (its row kept all the same).  Counters N=8
 (``bench/native.py``, three alternate runs): run-time error search 0.40-0.66 s before,
 0.41-0.63 after; whole command 1.21-1.37 / 1.30-1.38 s at 141 bytes per state.
+
+Measured on 2026-11-29 at 13:45 (issue 27: a reduced state stepped task by task, Python
+taking only the tasks the machine does not, ``python_task_successors`` and
+``python_task_ample``; one task's Python answers kept by the state's segments; rows kept
+while the coverage watch wants lines; load 13-20 on 2 cores, CPU seconds, the base
+ec2abec and the branch run alternately).  ``--max-states 20000`` (86,825 model states,
+JSON reports identical to the base's and to the Python engine's): whole command 6.09,
+8.07, 6.32 s -> 4.91, 4.53, 3.76 s (17,700-23,100 model states per CPU second); no state
+is stepped whole in Python any more (18,873 in the property search and 7,084 in the
+run-time error search before).  The run-time error search alone, in-process: 1.48-1.97
+-> 0.97-1.06 s (18,900-20,600 states/s), the machine's share of the single tasks' steps
+62 -> 81 %, 152 bytes per state in the table (unchanged).  The memory statistic: 3 calls
+of ``memory_bytes``, 0.000 % of the profiled check.  Python's single-task steps take 74 %
+of the check's CPU (in-process, timed around ``_task_step``): ``teach``'s call, its element
+and component writes (each interns a new 512-element tuple, hashed whole: about 75 us),
+MoveJ and SocketReceive.  The Python engine: 17.6-18.2 s either way.  Counters
+(``bench/native.py --sizes 8,9``, two alternate runs each; before the array hashing below,
+which the counters never reach): N=8 whole command 1.27-1.28 s
+(base 1.30-1.42), 141 bytes per state; N=9 run-time error search 2.31-3.05 s (base
+2.47-2.60), whole command 4.24-5.52 s (base 4.68-5.02), 83 bytes per state (base 84).
+Then (13:55, load 12-16): arrays found by their items' hashes in the packed table
+(``big_tuple_id``; ``value_ids`` took 1.41 of the 4.59 s of the in-process check, now
+0.20): whole command 5.93, 6.39, 6.63 s on the base -> 2.87, 2.98, 3.03 s (28,700-30,200
+model states per CPU second), the run-time error search alone 1.54-1.87 -> 0.67-0.69 s
+(28,800-29,800 states/s), 152 bytes per state in the table; Python's single-task steps
+are 65 % of the check (2.0 of 3.06 s).
 """
 from __future__ import annotations
 

@@ -179,11 +179,9 @@ def test_the_machine_steps_waits_and_barriers_as_python_does(name):
         assert waits, "no wait or barrier compiled for the machine"
 
 
-@needs_native
-def test_the_machine_takes_most_steps_of_the_controller_family(tmp_path, monkeypatch):
-    """bench/controllers.py's family, unreduced: with the barriers and the logger's timed
-    wait in the machine, it takes most single tasks' steps (before: 41 %), each as the
-    Python step takes it."""
+def controller_family_tables(tmp_path, reduced: bool) -> list:
+    """The packed tables of a check of bench/controllers.py's family (buffers of 4, the
+    three kinds of command, 2,000 states per search), reduced or not."""
     sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "bench"))
     try:
         from controllers import family_arguments, family_property, write_backup
@@ -191,18 +189,45 @@ def test_the_machine_takes_most_steps_of_the_controller_family(tmp_path, monkeyp
         sys.path.remove(str(Path(__file__).resolve().parent.parent / "bench"))
     write_backup(tmp_path / "cell", 4)
     (tmp_path / "cell.ltl").write_text(f"moves: {family_property(2)}\n")
-    argv = ["check", str(tmp_path / "cell"), *family_arguments(3, reduced=False), "--ltl",
+    argv = ["check", str(tmp_path / "cell"), *family_arguments(3, reduced=reduced), "--ltl",
             str(tmp_path / "cell.ltl"), "--max-states", "2000", "--engine", "native",
             "--format", "json"]
 
     def check():
         with contextlib.redirect_stdout(io.StringIO()):
             main(argv)
-    tables = tables_of(check)
+    return tables_of(check)
+
+
+@needs_native
+def test_the_machine_takes_most_steps_of_the_controller_family(tmp_path):
+    """bench/controllers.py's family, unreduced: with the barriers and the logger's timed
+    wait in the machine, it takes most single tasks' steps (before: 41 %), each as the
+    Python step takes it."""
+    tables = controller_family_tables(tmp_path, reduced=False)
     assert sum(machine_agrees(table) for table in tables) > 0
     machine = sum(table.counts()["task_machine_steps"] for table in tables)
     python = sum(table.counts()["task_python_steps"] for table in tables)
     assert machine > 2 * python, (machine, python)
+
+
+@needs_native
+def test_the_reduced_controller_family_steps_task_by_task(tmp_path):
+    """The family with the partial-order reduction (the default): where one task calls
+    ``teach``, writes array elements or record components, moves or receives (steps the
+    machine leaves to Python), Python steps that task alone, runs it on through its local
+    instructions and, where it is an ample candidate, decides its ample set
+    (``python_task_successors``, ``python_task_ample``); the machine takes the other
+    tasks' steps.  No state is stepped whole in Python (before: 36 % of the single tasks'
+    steps were taken so), and in every state of every search the successors are those
+    of the Python step and ``PartialOrder``."""
+    tables = controller_family_tables(tmp_path, reduced=True)
+    assert tables and all(isinstance(table, packed.PackedSearch) for table in tables)
+    counts = tables[0].counts()
+    assert counts["python_steps"] == 0, counts
+    assert counts["task_python_steps"] > 0 and counts["task_machine_steps"] > 0, counts
+    assert sum(machine_agrees(table) for table in tables) == \
+        sum(len(table) for table in tables)
 
 
 REDUCED_SEEDS = [0, 2, 6, 41, 71, 90, 91, 93, 95, 97]
@@ -311,3 +336,25 @@ def test_the_machine_took_steps_in_most_check_cases():
         pytest.skip("run with the whole file")
     stepped = [name for name, steps in STEPS_TAKEN.items() if steps]
     assert len(stepped) >= len(STEPS_TAKEN) // 2, sorted(set(STEPS_TAKEN) - set(stepped))
+
+
+@needs_native
+def test_arrays_are_one_value_exactly_when_equal():
+    """The packed table finds a tuple of 32 items or more (an array) by its items' hashes,
+    each remembered by address: equal arrays (other objects, numbers equal by ``==``, an
+    element written and written back) are one value, and one written element another."""
+    table = native._native.PackedTable()
+
+    def ids(*values) -> list[int]:
+        return list(array("I", table.value_ids(values)))
+    row = tuple((float(i), (0.0, 1.0)) for i in range(512))
+    same = tuple((float(i), (0.0, 1.0)) for i in range(512))
+    ints = tuple((i, (0, True)) for i in range(512))
+    written = row[:7] + ((7.5, (0.0, 1.0)),) + row[8:]
+    back = written[:7] + (row[7],) + written[8:]
+    first, equal, by_number, other, again = ids(row, same, ints, written, back)
+    assert first == equal == by_number == again != other
+    numbers = ids(tuple(float(i) for i in range(64)), tuple(float(i) for i in range(64)),
+                  tuple(range(64)), tuple(float(i) for i in range(1, 65)))
+    assert numbers[0] == numbers[1] == numbers[2] != numbers[3]
+    assert table.values(array("I", [first, other]).tobytes()) == (row, written)

@@ -131,6 +131,16 @@ typedef struct {
      * objects, and hashing a 512-element array again costs what the lookup saves */
     PyObject *id_cache_object[ID_CACHE];
     int32_t id_cache_id[ID_CACHE];
+    /* tuples of BIG_TUPLE items or more (arrays): found by a hash of their items' hashes,
+     * each item's hash remembered by address (held, as above), so a new array that shares
+     * most items with one met before (an element written) is hashed in one pass over
+     * addresses, not element by element down to the numbers; equal by ``==`` as the dict's */
+    PyObject **item_memo_object;
+    Py_hash_t *item_memo_hash;
+    int32_t *big_slots;         /* -> value id (EMPTY: free), with the tuple's hash */
+    uint64_t *big_hashes;
+    uint64_t big_mask;
+    Py_ssize_t big_count;
     /* segments and states (``states``: the selected search's, see ``selected`` below) */
     VectorTable frames, data;
     /* a distributed worker's spare data segments (``spare_data``): those its steps made in
@@ -469,6 +479,103 @@ static int32_t number_id(PackedTable *self, int tag, double d, PyObject *object)
     return id;
 }
 
+#define BIG_TUPLE 32             /* tuples at least this long: ``big_tuple_id`` */
+#define ITEM_MEMO 16384          /* items' hashes remembered by address */
+
+/* the hash of a big tuple from its items' hashes (equal tuples: equal items, equal
+ * hashes), -1 with an error */
+static int big_tuple_hash(PackedTable *self, PyObject *tuple, uint64_t *out)
+{
+    if (self->item_memo_object == NULL) {
+        self->item_memo_object = PyMem_Calloc(ITEM_MEMO, sizeof(PyObject *));
+        self->item_memo_hash = PyMem_Calloc(ITEM_MEMO, sizeof(Py_hash_t));
+        if (self->item_memo_object == NULL || self->item_memo_hash == NULL) {
+            PyErr_NoMemory();
+            return -1;
+        }
+    }
+    Py_ssize_t length = PyTuple_GET_SIZE(tuple);
+    uint64_t hash = 0x9e3779b97f4a7c15ULL ^ (uint64_t)length;
+    for (Py_ssize_t i = 0; i < length; i++) {
+        PyObject *item = PyTuple_GET_ITEM(tuple, i);
+        Py_hash_t item_hash;
+        if (PyTuple_Check(item)) {
+            uint64_t at = mix64((uint64_t)(uintptr_t)item) & (ITEM_MEMO - 1);
+            if (self->item_memo_object[at] == item)
+                item_hash = self->item_memo_hash[at];
+            else {
+                item_hash = PyObject_Hash(item);
+                if (item_hash == -1)
+                    return -1;
+                Py_INCREF(item);
+                Py_XSETREF(self->item_memo_object[at], item);
+                self->item_memo_hash[at] = item_hash;
+            }
+        }
+        else if ((item_hash = PyObject_Hash(item)) == -1)
+            return -1;
+        hash = (hash ^ (uint64_t)item_hash) * 0x100000001b3ULL;
+    }
+    *out = mix64(hash);
+    return 0;
+}
+
+static int big_grow(PackedTable *self)
+{
+    uint64_t capacity = self->big_slots == NULL ? 1024 : (self->big_mask + 1) * 2;
+    int32_t *slots = new_slots((Py_ssize_t)capacity);
+    uint64_t *hashes = slots == NULL ? NULL : PyMem_Malloc(capacity * sizeof(uint64_t));
+    if (hashes == NULL) {
+        PyMem_Free(slots);
+        return PyErr_Occurred() ? -1 : (PyErr_NoMemory(), -1);
+    }
+    for (uint64_t i = 0; self->big_slots != NULL && i <= self->big_mask; i++) {
+        if (self->big_slots[i] == EMPTY)
+            continue;
+        uint64_t at = self->big_hashes[i] & (capacity - 1);
+        while (slots[at] != EMPTY)
+            at = (at + 1) & (capacity - 1);
+        slots[at] = self->big_slots[i];
+        hashes[at] = self->big_hashes[i];
+    }
+    PyMem_Free(self->big_slots);
+    PyMem_Free(self->big_hashes);
+    self->big_slots = slots;
+    self->big_hashes = hashes;
+    self->big_mask = capacity - 1;
+    return 0;
+}
+
+/* the id of a tuple of BIG_TUPLE items or more (stored when new); -1 with an error */
+static int32_t big_tuple_id(PackedTable *self, PyObject *tuple)
+{
+    uint64_t hash;
+    if (big_tuple_hash(self, tuple, &hash) < 0 || (self->big_slots == NULL && big_grow(self) < 0))
+        return -1;
+    uint64_t at = hash & self->big_mask;
+    for (;;) {
+        int32_t id = self->big_slots[at];
+        if (id == EMPTY)
+            break;
+        if (self->big_hashes[at] == hash) {
+            int same = PyObject_RichCompareBool(tuple, self->value_object[id], Py_EQ);
+            if (same < 0)
+                return -1;
+            if (same)
+                return id;
+        }
+        at = (at + 1) & self->big_mask;
+    }
+    int32_t id = add_value(self, T_OBJ, 0.0, tuple);
+    if (id < 0)
+        return -1;
+    self->big_slots[at] = id;
+    self->big_hashes[at] = hash;
+    if ((uint64_t)++self->big_count * 2 > self->big_mask + 1 && big_grow(self) < 0)
+        return -1;
+    return id;
+}
+
 /* the id of any Python value; -1 with an error */
 static int32_t value_id(PackedTable *self, PyObject *object)
 {
@@ -489,8 +596,12 @@ static int32_t value_id(PackedTable *self, PyObject *object)
     if (self->id_cache_object[cached] == object)
         return self->id_cache_id[cached];
     int32_t id;
-    PyObject *known = PyDict_GetItemWithError(self->object_ids, object);
-    if (known != NULL)
+    PyObject *known = NULL;
+    if (PyTuple_Check(object) && PyTuple_GET_SIZE(object) >= BIG_TUPLE) {
+        if ((id = big_tuple_id(self, object)) < 0)
+            return -1;
+    }
+    else if ((known = PyDict_GetItemWithError(self->object_ids, object)) != NULL)
         id = (int32_t)PyLong_AsLong(known);
     else {
         if (PyErr_Occurred())
@@ -1752,34 +1863,31 @@ static int all_tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch,
         const int32_t *info = table->context_tasks + (context * tasks + task) * TASK_INFO;
         if (info[0] < 0)
             continue;                           /* (ended) */
-        Py_ssize_t before = found->count;
+        Py_ssize_t before = found->count, ran_before = scratch->ran.length;
+        Py_ssize_t waited_before = scratch->waited.length;
         int outcome = task_machine_step(table, scratch, info, context, frame, at.frame_length,
                                         at.data_id, data, at.data_length, found, changed);
         if (outcome < 0)
             return -1;
         int owner = (int)task;
-        if (outcome == VM_DONE) {
-            by_machine++;
-            for (Py_ssize_t i = before; table->reduced && i < found->count; i++) {
-                outcome = run_on(table, scratch, info, context, task, &found->frames[i],
-                                 &found->data[i]);
-                if (outcome < 0)
-                    return -1;
-                if (outcome != VM_DONE) {
-                    table->task_python_steps += running;
-                    return VM_UNSUPPORTED;
-                }
-                info = table->context_tasks + (context * tasks + task) * TASK_INFO;
-            }
+        for (Py_ssize_t i = before; outcome == VM_DONE && table->reduced && i < found->count;
+             i++) {
+            outcome = run_on(table, scratch, info, context, task, &found->frames[i],
+                             &found->data[i]);
+            if (outcome < 0)
+                return -1;
+            info = table->context_tasks + (context * tasks + task) * TASK_INFO;
         }
+        if (outcome == VM_DONE)
+            by_machine++;
         else {
+            /* Python steps this task (a step on the way of its run is Python's: the whole
+             * run is then taken there) */
+            found->count = before;
+            changed->length = before;
+            scratch->waited.length = waited_before;
+            forget_ran(table, scratch, ran_before);
             owner += TASK_COUNT_MAX;            /* (Python's step) */
-            if (table->reduced) {
-                /* (the Python step of the whole state shares its work between the tasks
-                 * and is remembered for the other searches: cheaper than task by task) */
-                table->task_python_steps += running;
-                return VM_UNSUPPORTED;
-            }
             outcome = task_python_step(table, id, task, found, changed);
             if (outcome < 0)
                 return -1;
@@ -1873,6 +1981,45 @@ static int invisible_step(PackedTable *table, Scratch *scratch, Py_ssize_t id,
  * not step, or a probe it cannot take), -1.  Where it tries a choice it numbers the state
  * (``scratch->numbered``), as ``PartialOrder.ample`` does. */
 enum { NO_AMPLE = 3 };
+
+/* The observer is told the lines of the steps Python took at the state just stepped that
+ * were kept (``note_python_spans``; ``kinds``: per successor 0 the machine's, 1 Python's
+ * and dropped, 2 Python's and kept), and ``labels_wanted`` becomes whether it wants more.
+ * 0 or -1. */
+static int tell_python_spans(PackedTable *table, const Int32Vector *kinds, Py_ssize_t count)
+{
+    PyObject *answer = PyObject_CallMethod((PyObject *)table, "note_python_spans", "y#",
+                                           (const char *)kinds->items,
+                                           count * (Py_ssize_t)sizeof(int32_t));
+    if (answer == NULL)
+        return -1;
+    table->labels_wanted = PyObject_IsTrue(answer);
+    Py_DECREF(answer);
+    return table->labels_wanted < 0 ? -1 : 0;
+}
+
+static int found_from_pairs(PyObject *pairs, Successors *found);
+
+/* Whether the transitions of ``task`` at state ``id`` (numbered ``here``) are its ample
+ * set, decided by Python (``python_task_ample``) where the machine does not take the
+ * task's step: VM_DONE (``found``: the ample set), NO_AMPLE (they are not), VM_UNSUPPORTED
+ * (Python steps the whole state), -1. */
+static int task_python_ample(PackedTable *table, Py_ssize_t id, Py_ssize_t task,
+                             Py_ssize_t here, Successors *found)
+{
+    PyObject *answer = PyObject_CallMethod((PyObject *)table, "python_task_ample", "nnn",
+                                           id, task, here);
+    if (answer == NULL)
+        return -1;
+    if (answer == Py_None || answer == Py_False) {
+        Py_DECREF(answer);
+        return answer == Py_None ? VM_UNSUPPORTED : NO_AMPLE;
+    }
+    int outcome = found_from_pairs(answer, found);
+    Py_DECREF(answer);
+    return outcome < 0 ? -1 : VM_DONE;
+}
+
 static int ample_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Successors *found)
 {
     Stored at;
@@ -1919,7 +2066,24 @@ static int ample_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Succe
         if (outcome != VM_DONE) {
             scratch->pending.length = 0;
             found->count = 0;
-            return outcome;
+            if (outcome != VM_UNSUPPORTED)
+                return outcome;
+            /* the machine does not take the task's step or run: Python decides for it */
+            outcome = task_python_ample(table, id, task, here, found);
+            if (outcome == VM_DONE) {
+                table->task_python_steps++;
+                /* (the observer hears the lines they ran: each one kept) */
+                scratch->changed.length = 0;
+                for (Py_ssize_t i = 0; table->labels_wanted && i < found->count; i++)
+                    if (vector32_push(&scratch->changed, 2) < 0)
+                        return -1;
+                if (table->labels_wanted &&
+                        tell_python_spans(table, &scratch->changed, found->count) < 0)
+                    return -1;
+            }
+            if (outcome != NO_AMPLE)
+                return outcome;
+            continue;
         }
         if (invisible == 1) {
             for (Py_ssize_t i = 0; i + 2 < scratch->pending.length; i += 3)
@@ -1988,10 +2152,11 @@ static int row_keep(PackedTable *table, Py_ssize_t place, const Successors *foun
 }
 
 /* the number of stored state ``id`` (-1: none, -2: an error), where rows are kept: reduced
- * steps, and no observer wants the lines steps run (a kept row names none) */
-static Py_ssize_t row_place(PackedTable *table, Py_ssize_t id, int labels_wanted)
+ * steps (kept also while an observer wants the lines steps run, and recalled only when
+ * none does: a kept row names no lines) */
+static Py_ssize_t row_place(PackedTable *table, Py_ssize_t id)
 {
-    if (!table->reduced || labels_wanted)
+    if (!table->reduced)
         return -1;
     int64_t key = table->states.keys[id];
     return place_of(table, (int32_t)(key >> 32), (int32_t)(key & 0xffffffff), 0);
@@ -2002,27 +2167,29 @@ static Py_ssize_t row_place(PackedTable *table, Py_ssize_t id, int labels_wanted
  * instruction in task order, by the machine where it can and else by Python for that
  * task alone; then a task whose step changes nothing gives up its turn when another
  * can go on (``staged_step.idle_steps_dropped``); reduced (``set_order``), each of the
- * machine's steps runs on through its task's local instructions and the ample set of
- * one task is kept where there is one.  VM_UNSUPPORTED: Python steps the whole state (a
- * context the machine does not run in, or Python asked for it, or decides the ample
- * set). */
+ * machine's steps runs on through its task's local instructions (a task whose step or
+ * run the machine does not take is Python's, run on there) and the ample set of one task
+ * is kept where there is one (Python deciding it for a candidate the machine does not
+ * step, ``python_task_ample``).  VM_UNSUPPORTED: Python steps the whole state (a context
+ * the machine does not run in, or Python asked for it: a task it cannot step alone, an
+ * ample candidate with an idle step). */
 static int tasks_step_anew(PackedTable *table, Py_ssize_t id, Scratch *scratch,
                            Successors *found);
 
 /* ``tasks_step_anew``, or the row an earlier step of the state kept (reduced) */
 static int tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Successors *found)
 {
-    Py_ssize_t place = row_place(table, id, table->labels_wanted);
+    Py_ssize_t place = row_place(table, id);
     if (place == -2)
         return -1;
-    int recalled = place >= 0 ? row_recall(table, place, found) : 0;
+    int recalled = place >= 0 && !table->labels_wanted ? row_recall(table, place, found) : 0;
     if (recalled != 0) {
         table->rows_reused += recalled > 0;
         return recalled > 0 ? VM_DONE : -1;
     }
     int outcome = tasks_step_anew(table, id, scratch, found);
-    if (outcome == VM_DONE && place == -1 && table->reduced && !table->labels_wanted)
-        place = row_place(table, id, 0);        /* (numbered by this step) */
+    if (outcome == VM_DONE && place == -1 && table->reduced)
+        place = row_place(table, id);           /* (numbered by this step) */
     if (outcome == VM_DONE && place >= 0 && row_keep(table, place, found) < 0)
         return -1;
     return place == -2 ? -1 : outcome;
@@ -2050,18 +2217,9 @@ static int tasks_step_anew(PackedTable *table, Py_ssize_t id, Scratch *scratch,
     int by_python = 0;
     for (Py_ssize_t i = 0; i < before_drop; i++)
         by_python |= changed->items[i] != 0;
-    if (by_python && table->labels_wanted) {
-        /* the observer hears the lines of Python's steps that were kept */
-        PyObject *answer = PyObject_CallMethod(
-            (PyObject *)table, "note_python_spans", "y#", (const char *)changed->items,
-            before_drop * (Py_ssize_t)sizeof(int32_t));
-        if (answer == NULL)
-            return -1;
-        table->labels_wanted = PyObject_IsTrue(answer);
-        Py_DECREF(answer);
-        if (table->labels_wanted < 0)
-            return -1;
-    }
+    /* the observer hears the lines of Python's steps that were kept */
+    if (by_python && table->labels_wanted && tell_python_spans(table, changed, before_drop) < 0)
+        return -1;
     return VM_DONE;
 }
 
@@ -2116,6 +2274,8 @@ static int PackedTable_traverse(PackedTable *self, visitproc visit, void *arg)
         Py_VISIT(self->value_object[i]);
     for (Py_ssize_t i = 0; i < ID_CACHE; i++)
         Py_VISIT(self->id_cache_object[i]);
+    for (Py_ssize_t i = 0; self->item_memo_object != NULL && i < ITEM_MEMO; i++)
+        Py_VISIT(self->item_memo_object[i]);
     return 0;
 }
 
@@ -2126,6 +2286,8 @@ static int PackedTable_clear(PackedTable *self)
         Py_CLEAR(self->value_object[i]);
     for (Py_ssize_t i = 0; i < ID_CACHE; i++)
         Py_CLEAR(self->id_cache_object[i]);
+    for (Py_ssize_t i = 0; self->item_memo_object != NULL && i < ITEM_MEMO; i++)
+        Py_CLEAR(self->item_memo_object[i]);
     return 0;
 }
 
@@ -2180,6 +2342,10 @@ static void PackedTable_dealloc(PackedTable *self)
     PyMem_Free(self->row_at);
     PyMem_Free(self->row_keys);
     PackedTable_clear(self);
+    PyMem_Free(self->item_memo_object);
+    PyMem_Free(self->item_memo_hash);
+    PyMem_Free(self->big_slots);
+    PyMem_Free(self->big_hashes);
     free_program(self);
     PyMem_Free(self->value_tag);
     PyMem_Free(self->value_number);
@@ -3170,7 +3336,11 @@ static PyObject *PackedTable_native_bytes(PackedTable *self, PyObject *unused)
         + self->context_tasks_capacity * self->task_count * TASK_INFO * sizeof(int32_t)
         + self->places.key_capacity * sizeof(int64_t)      /* (the reduction's numbers) */
         + (self->places.slots != NULL ? (self->places.mask + 1) * sizeof(int32_t) : 0)
-        + (self->row_at_capacity + self->row_capacity) * sizeof(int64_t);
+        + (self->row_at_capacity + self->row_capacity) * sizeof(int64_t)
+        + (self->big_slots != NULL ? (self->big_mask + 1) * (sizeof(int32_t) + sizeof(uint64_t))
+           : 0);
+    /* (the caches of a fixed size, ``id_cache_*`` and ``item_memo_*``, 304 KB in all, are
+     * not counted: they hold no state) */
     return PyLong_FromSsize_t(bytes);
 }
 
@@ -3520,7 +3690,7 @@ static int python_successors(PackedSearch *search, Py_ssize_t frontier)
     if (filled < 0)
         return filled;
     /* (Python's row of a reduced step, kept for the later searches as the machine's are) */
-    Py_ssize_t place = row_place(search->table, frontier, search->labels_wanted);
+    Py_ssize_t place = row_place(search->table, frontier);
     if (place == -2 || (place >= 0 && row_keep(search->table, place, &search->found) < 0))
         return -1;
     return filled;

@@ -61,6 +61,7 @@ ORDER_NEVER_WAITS = 2
 ORDER_MERGEABLE = 4
 MAX_TASKS = 64
 REMEMBERED_VECTORS = 256               # states whose vectors are remembered (reduced search)
+TASK_STEPS_KEPT = 1 << 13              # one task's Python steps kept (``_task_step``)
 
 
 def packed_table(system) -> Optional["PackedStateTable"]:
@@ -99,6 +100,7 @@ def reduced_packing(system) -> Optional["PackedPlaces"]:
     if table is None:
         return None
     table.set_order(table.order_flags())
+    table.runs = system.order.runs
     # (the proviso packs a successor to ask for its number, and the search then stores it)
     table.remembered = {}
     table._vectors = table._remembered_vectors
@@ -189,6 +191,7 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
             self._state = self._task_state
             self._new_context = self._new_task_context
         self._stepping: tuple = (-1, None)      # (id, state) of python_task_successors
+        self._task_steps: dict = {}             # (frame, data, task, ample) -> _task_step's
         self._python_spans: list = []           # the lines its steps there ran
         self._compile()
         # what the search in progress hands over (``prepare_search``)
@@ -283,6 +286,7 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         return self
 
     selected_states = None           # (``PackedSearch``: the search whose ids are meant)
+    runs = None                      # reduced (``reduced_packing``): the tasks' local runs
 
     def select_search(self, states) -> None:
         """Ids name the states of ``states`` (a ``new_states()``) from now on; what was
@@ -432,30 +436,91 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
     def python_task_successors(self, state_id: int, task: int) -> Optional[list]:
         """The transitions of ``task`` alone at a state of several tasks, for the machine
         that takes the others' (``_packed.c``'s ``tasks_step``): (frame id, data id,
-        whether it changes the state) each, projected; None to have the whole state
-        stepped by Python (an observer that still wants the labels sees them there)."""
-        if self._stepping[0] == state_id:
-            state = self._stepping[1]
-        else:
-            state = self[state_id]
-            self._stepping = (state_id, state)
-            self._python_spans = []
-        found = task_transitions(self.program, state, task, self.system.config)
-        if found is None:
-            return None
+        whether it changes the state) each, projected and, reduced, run on through the
+        task's local instructions (``LocalRuns.run_on``, as ``PartialOrder`` extends the
+        transitions it keeps); None to have the whole state stepped by Python (an
+        observer that still wants the labels sees them there)."""
+        return self._task_step(state_id, task, -1)
+
+    def python_task_ample(self, state_id: int, task: int, here: int):
+        """Whether the transitions of ``task`` at a state of several tasks, numbered
+        ``here``, are its ample set, for the machine where it does not take that task's
+        step (``_packed.c``'s ``ample_step``): their parts (frame id, data id) when
+        they are, as ``PartialOrder._choose`` decides (projected, run on through the
+        task's local instructions, each one invisible), False when they are not, None to
+        have the whole state stepped by Python (the task cannot be stepped alone, or it
+        has an idle step, which only the other tasks' steps tell to keep or drop)."""
+        return self._task_step(state_id, task, here)
+
+    def _task_step(self, state_id: int, task: int, here: int):
+        """``python_task_successors`` (``here`` -1) or ``python_task_ample``, kept by the
+        state's segments: a state is stepped again where an earlier step kept no row (the
+        deadlock search's test whether it is stuck, an observer that wants the lines),
+        and its answer is the same (a number only grows: a target not numbered before
+        the state when first asked never is)."""
+        if self._stepping[0] != state_id:
+            self._stepping, self._python_spans = (state_id, None), []
+        key = self.key(state_id)[:2] + (task, here >= 0)
+        kept = self._task_steps.get(key)
+        if kept is None:
+            kept = self._task_answer(task, here)
+            if len(self._task_steps) >= TASK_STEPS_KEPT:
+                self._task_steps.clear()
+            self._task_steps[key] = kept
+        answer, spans = kept
+        if spans and self._labels_wanted():
+            # (the lines each one ran: told once the idle steps are dropped, an ample
+            # set's as kept, ``note_python_spans``)
+            if here >= 0:
+                self._python_spans = list(spans)
+            else:
+                self._python_spans += spans
+        return answer
+
+    def _task_answer(self, task: int, here: int) -> tuple:
+        """(``_task_step``'s answer, the spans each of its transitions ran) at the state
+        being stepped."""
+        state = self._stepping[1]
+        if state is None:
+            state = self[self._stepping[0]]
+            self._stepping = (self._stepping[0], state)
+        config = self.system.config
+        found = task_transitions(self.program, state, task, config)
+        if found is None or here >= 0 and any(transition[2] == state for transition in found):
+            return None, ()
+        targets = self._task_targets(state, task, found)
+        spans = tuple(spans for _, _, spans in targets)
+        if here < 0:
+            return [self.intern_parts(*self._vectors(after)) + (moved,)
+                    for after, moved, _ in targets], spans
+        order = self.system.order
+        if targets and all(order._invisible_step(task, state, after, config, here)
+                           for after, _, _ in targets):
+            return [self.intern_parts(*self._vectors(after)) for after, _, _ in targets], spans
+        return False, ()
+
+    def _labels_wanted(self) -> bool:
         observer = self.observer
-        if observer is not None and observer.labels_wanted:
-            # (the lines each one ran, told once the idle steps are dropped)
-            self._python_spans += [executed_spans(transition[1]) for transition in found]
-        project = self.system.project
-        result = []
+        return observer is not None and observer.labels_wanted
+
+    def _task_targets(self, state: State, task: int, found: list) -> list:
+        """(target, whether the step changed the state, the spans of the instructions it
+        ran) of one task's transitions ``found``: projected, and reduced, run on through
+        the task's local instructions (``python_task_successors``)."""
+        project, runs, config = self.system.project, self.runs, self.system.config
+        targets = []
         for transition in found:
             after = transition[2]
             moved = after != state
+            spans = executed_spans(transition[1])
             if project is not None:
                 after = project(after)
-            result.append(self.intern_parts(*self._vectors(after)) + (moved,))
-        return result
+            if runs is not None:
+                after, steps = runs.run_on(state, task, after, config)
+                for _, span, _ in steps:
+                    spans += executed_spans(span)
+            targets.append((after, moved, spans))
+        return targets
 
     def note_python_spans(self, kinds: bytes) -> bool:
         """The observer is told the lines of the steps ``python_task_successors`` gave at

@@ -77,7 +77,20 @@ class LocalRuns:
         task = self._task(state, choices)
         if task is None:
             return entry
-        spans = None
+        after, steps = self.run_on(state, task, after, config)
+        if not steps:
+            return entry
+        spans = (span,) + tuple(step_span for _, step_span, _ in steps)
+        for label, _, step_output in steps:
+            choices = choices + label
+            output = output + step_output
+        return (choices, spans, output), after
+
+    def run_on(self, state: State, task: int, after: State, config) -> tuple[State, list]:
+        """A transition of ``task`` from ``state`` into ``after`` run on through the task's
+        merged instructions: the state it ends in, and (label, span, output) of each step
+        it took on the way (the compiled core asks for one task's transitions alone)."""
+        steps: list = []
         while after[7] == RUNNING and after[5] == state[5] and after[6] == state[6]:
             stack = after[0] if task == 0 else after[10][task - 1]
             if not stack:
@@ -96,15 +109,9 @@ class LocalRuns:
             moved = then[0] if task == 0 else then[10][task - 1]
             if len(moved) != len(stack) or moved[-1][3] != frame[3] or then == after:
                 break
-            if spans is None:
-                spans = [span]
-            spans.append(step_span)
-            choices = choices + label
-            output = output + step_output
+            steps.append((label, step_span, step_output))
             after = then
-        if spans is None:
-            return entry
-        return (choices, tuple(spans), output), after
+        return after, steps
 
     def _task(self, state: State, choices: tuple) -> Optional[int]:
         """The task that takes the step: the one its choices name, else the only one
