@@ -23,8 +23,9 @@ controller would load and start:
 
 ``--whole`` surveys controller backups instead, each as a controller loads it: every task
 together with the backup's SYSPAR (``rapidmc check BACKUP``), at ``rapidmc check``'s own state
-bound unless ``--max-states`` is given, and without stubs (what the backup lacks is its own
-matter).  Backups whose RAPID and SYSPAR files have the same texts are counted once.
+bound unless ``--max-states`` is given; one that stops at names no module of a task declares
+(an installed option's, whose modules a backup does not hold) is checked again with
+``--stubs``.  Backups whose RAPID and SYSPAR files have the same texts are counted once.
 
 Programs with the same module texts are counted once.  Each is checked with the default
 properties, ``--max-states`` (20,000) and a limit of ``--cpu`` CPU seconds (20) per
@@ -62,6 +63,7 @@ import resource
 import subprocess
 import sys
 import tempfile
+import threading
 from collections import Counter
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
@@ -95,6 +97,8 @@ OWN_ERRORS = {
     ("Expiremental/BG_Module", "RMC101"): "ENDIF; (a semicolon after ENDIF)",
     ("Expiremental/Test_mod", "RMC101"): "a declaration inside IF, indexing with [ ]",
     ("Expiremental/multitasking_scripts", "RMC101"): "a text document, not a module",
+    ("Controller_Pintura_220623-230315", "RMC008"):
+        "no task declares its entry routine main (T_ROB1's program starts at mainm4)",
     ("ravenorb+abb-robot-welder/RAPID/PROGMOD", "RMC205"):
         "TPWrite given three positional arguments",
 }
@@ -277,7 +281,10 @@ def survey(program: Program, options: list[str], cpu: int, stubs: bool) -> Progr
     check = ["check", *program.command, "--quiet", "--format", "json", *options]
     program.cpu = 0.0
     code, report = rapidmc(check, cpu, program)
-    if code == 2 and stubs and _stubbable(report):
+    if code == 2 and stubs and _stubbable(report) and _whole(program):
+        code, report = rapidmc([*check, "--stubs"], cpu, program)    # each task's own stubs
+        program.stubbed = True
+    elif code == 2 and stubs and _stubbable(report):
         with tempfile.TemporaryDirectory() as scratch:
             missing = str(Path(scratch) / "Missing.mod")
             rapidmc(["stubs", *program.command, "-o", missing], cpu, program)
@@ -287,6 +294,11 @@ def survey(program: Program, options: list[str], cpu: int, stubs: bool) -> Progr
                 program.stubbed = True
     _classify(program, code, report)
     return program
+
+
+def _whole(program: Program) -> bool:
+    """Whether ``program`` is a whole backup (``find_backups``)."""
+    return len(program.command) == 1 and _is_backup(Path(program.command[0]))
 
 
 def _stubbable(report: dict) -> bool:
@@ -372,19 +384,33 @@ def main() -> int:
     options = ["--max-states", bound] if bound else []
     done = iter(range(1, len(to_check) + 1))
 
+    finished: list[Program] = []
+    writing = threading.Lock()
+
     def one(program: Program) -> Program:
-        survey(program, options, args.cpu, not (args.no_stubs or args.whole))
+        survey(program, options, args.cpu, not args.no_stubs)
         print(f"[{next(done)}/{len(to_check)}] {program.outcome} ({program.states:,} states, "
               f"{program.cpu:.1f} CPU s): {program.name}", file=sys.stderr, flush=True)
+        with writing:
+            finished.append(program)
+            if args.json is not None:    # the rows so far: an interrupted run keeps them
+                write_rows(args.json, finished + settled)
         return program
 
     with ThreadPoolExecutor(args.jobs) as pool:
         checked = list(pool.map(one, to_check))
     report(checked + settled, corpus, args.list)
     if args.json is not None:
-        args.json.write_text(json.dumps([vars(p) | {"files": [str(f) for f in p.files]}
-                                         for p in checked + settled], indent=1, default=str))
+        write_rows(args.json, checked + settled)
     return 0
+
+
+def write_rows(path: Path, programs: list[Program]) -> None:
+    text = json.dumps([vars(p) | {"files": [str(f) for f in p.files]} for p in programs],
+                      indent=1, default=str)
+    scratch = path.with_name(path.name + ".part")
+    scratch.write_text(text)
+    scratch.replace(path)
 
 
 OUTSIDE = ("encrypted", "no entry", "no program", "own error")
@@ -399,7 +425,7 @@ def report(programs: list[Program], corpus: Path, rows: bool) -> None:
         print()
     outcomes = Counter(p.outcome for p in programs)
     tasks = [p for p in programs if "--task" in p.command]
-    whole = [p for p in programs if len(p.command) == 1 and _is_backup(Path(p.command[0]))]
+    whole = [p for p in programs if _whole(p)]
     print(f"corpus {corpus}: {len(programs)} distinct programs "
           f"({len(whole)} whole backups, {len(tasks)} backup tasks, "
           f"{len(programs) - len(tasks) - len(whole)} module folders); "
