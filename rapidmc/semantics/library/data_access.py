@@ -60,7 +60,8 @@ def _get_data_val(calls, compiler, call, entry):
     name = arguments.value("Object")
     value_ref, value_type, _ = _value_reference(compiler, call, "written by GetDataVal")
     scope = compiler.scope
-    if isinstance(value_type, RapidType) and value_type.kind == SEMI_VALUE:
+    if isinstance(value_type, RapidType) and value_type.kind == SEMI_VALUE and \
+            value_type.signal_kind:
         signal = _named_signal(compiler, call, value_type)
 
         def get_signal(m):
