@@ -2,6 +2,7 @@
 
 Usage: python bench/survey_programs.py CORPUS [--max-states N] [--cpu S] [--jobs N]
                                        [--no-stubs] [--list] [--only TEXT] [--json FILE]
+       python bench/survey_programs.py CORPUS --whole [--cpu S] [--jobs N] [--list] [--json FILE]
        python bench/survey_programs.py CORPUS --recheck ROWS.json [--outcomes LIST]
        python bench/survey_programs.py CORPUS --extract MIRRORS
 
@@ -19,6 +20,12 @@ controller would load and start:
   HOME folder keeps several saved programs side by side).  A folder of modules without
   ``main`` is a library:
   counted apart ("no entry"), never checked.
+
+``--whole`` surveys controller backups instead, each as a controller loads it: every task
+together with the backup's SYSPAR (``rapidmc check BACKUP``), at ``rapidmc check``'s own state
+bound unless ``--max-states`` is given; one that stops at names no module of a task declares
+(an installed option's, whose modules a backup does not hold) is checked again with
+``--stubs``.  Backups whose RAPID and SYSPAR files have the same texts are counted once.
 
 Programs with the same module texts are counted once.  Each is checked with the default
 properties, ``--max-states`` (20,000) and a limit of ``--cpu`` CPU seconds (20) per
@@ -56,6 +63,7 @@ import resource
 import subprocess
 import sys
 import tempfile
+import threading
 from collections import Counter
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
@@ -89,6 +97,8 @@ OWN_ERRORS = {
     ("Expiremental/BG_Module", "RMC101"): "ENDIF; (a semicolon after ENDIF)",
     ("Expiremental/Test_mod", "RMC101"): "a declaration inside IF, indexing with [ ]",
     ("Expiremental/multitasking_scripts", "RMC101"): "a text document, not a module",
+    ("Controller_Pintura_220623-230315", "RMC008"):
+        "no task declares its entry routine main (T_ROB1's program starts at mainm4)",
     ("ravenorb+abb-robot-welder/RAPID/PROGMOD", "RMC205"):
         "TPWrite given three positional arguments",
 }
@@ -172,6 +182,22 @@ def find_programs(corpus: Path) -> tuple[list[Program], list[Program]]:
     return _distinct(programs)
 
 
+def find_backups(corpus: Path) -> tuple[list[Program], list[Program]]:
+    """(whole backups to check, backups classified without a check), one per distinct text
+    of its RAPID and SYSPAR files; a backup nested in another's HOME folder is one of its own."""
+    programs = []
+    for rapid in sorted(p for p in corpus.rglob("RAPID") if p.is_dir() and _is_backup(p.parent)):
+        backup = rapid.parent
+        files = sorted(f for f in rapid.rglob("*")
+                       if f.is_file() and f.suffix.lower() in MODULE_SUFFIXES)
+        syspar = next((d for d in backup.iterdir() if d.is_dir() and d.name.upper() == "SYSPAR"),
+                      None)
+        configuration = sorted(f for f in syspar.rglob("*") if f.is_file()) if syspar else []
+        programs.append(Program(str(backup.relative_to(corpus)), [str(backup)],
+                                files + configuration))
+    return _distinct(programs, libraries=False)
+
+
 def _program_files(folder: Path) -> dict[Path, list[Path]]:
     """entry module -> the modules a program file (``.pgf``) of ``folder`` lists with it:
     what the controller loads from that folder (a HOME folder of saved programs holds
@@ -208,7 +234,7 @@ def _is_backup(folder: Path) -> bool:
         for part in ("SYSMOD", "PROGMOD", "sysmod", "progmod"))
 
 
-def _distinct(programs: list[Program]) -> tuple[list[Program], list[Program]]:
+def _distinct(programs: list[Program], libraries: bool = True) -> tuple[list[Program], list[Program]]:
     seen: dict[str, Program] = {}
     to_check, settled = [], []
     for program in programs:
@@ -218,10 +244,11 @@ def _distinct(programs: list[Program]) -> tuple[list[Program], list[Program]]:
             seen[digest].duplicates += 1
             continue
         seen[digest] = program
-        readable = [f for f in program.files if not is_encrypted(str(f))]
-        if program.files and not readable:
+        modules = [f for f in program.files if f.suffix.lower() in MODULE_SUFFIXES]
+        readable = [f for f in modules if not is_encrypted(str(f))]
+        if modules and not readable:
             program.outcome = "encrypted"
-        elif "--task" not in program.command and \
+        elif libraries and "--task" not in program.command and \
                 not any(ENTRY.search(f.read_bytes()) for f in program.files):
             program.outcome, program.detail = "no entry", "library: no module declares main"
         (settled if program.outcome else to_check).append(program)
@@ -254,7 +281,10 @@ def survey(program: Program, options: list[str], cpu: int, stubs: bool) -> Progr
     check = ["check", *program.command, "--quiet", "--format", "json", *options]
     program.cpu = 0.0
     code, report = rapidmc(check, cpu, program)
-    if code == 2 and stubs and _stubbable(report):
+    if code == 2 and stubs and _stubbable(report) and _whole(program):
+        code, report = rapidmc([*check, "--stubs"], cpu, program)    # each task's own stubs
+        program.stubbed = True
+    elif code == 2 and stubs and _stubbable(report):
         with tempfile.TemporaryDirectory() as scratch:
             missing = str(Path(scratch) / "Missing.mod")
             rapidmc(["stubs", *program.command, "-o", missing], cpu, program)
@@ -264,6 +294,11 @@ def survey(program: Program, options: list[str], cpu: int, stubs: bool) -> Progr
                 program.stubbed = True
     _classify(program, code, report)
     return program
+
+
+def _whole(program: Program) -> bool:
+    """Whether ``program`` is a whole backup (``find_backups``)."""
+    return len(program.command) == 1 and _is_backup(Path(program.command[0]))
 
 
 def _stubbable(report: dict) -> bool:
@@ -316,7 +351,10 @@ def main() -> int:
     parser.add_argument("corpus", type=Path)
     parser.add_argument("--extract", type=Path, metavar="MIRRORS",
                         help="first fill CORPUS from the git mirrors in MIRRORS")
-    parser.add_argument("--max-states", default="20000")
+    parser.add_argument("--whole", action="store_true",
+                        help="check each controller backup whole, all its tasks together")
+    parser.add_argument("--max-states", default=None,
+                        help="the state bound (20,000; with --whole: rapidmc check's own)")
     parser.add_argument("--cpu", type=int, default=20, help="CPU seconds per command")
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--no-stubs", action="store_true")
@@ -335,27 +373,44 @@ def main() -> int:
         return 0
     if args.recheck is not None:
         to_check, settled = earlier_rows(args.recheck, set(args.outcomes.split(",")))
+    elif args.whole:
+        to_check, settled = find_backups(corpus)
     else:
         to_check, settled = find_programs(corpus)
     if args.only:
         to_check = [p for p in to_check if args.only in p.name]
         settled = [p for p in settled if args.only in p.name]
-    options = ["--max-states", args.max_states]
+    bound = args.max_states or (None if args.whole else "20000")
+    options = ["--max-states", bound] if bound else []
     done = iter(range(1, len(to_check) + 1))
+
+    finished: list[Program] = []
+    writing = threading.Lock()
 
     def one(program: Program) -> Program:
         survey(program, options, args.cpu, not args.no_stubs)
         print(f"[{next(done)}/{len(to_check)}] {program.outcome} ({program.states:,} states, "
               f"{program.cpu:.1f} CPU s): {program.name}", file=sys.stderr, flush=True)
+        with writing:
+            finished.append(program)
+            if args.json is not None:    # the rows so far: an interrupted run keeps them
+                write_rows(args.json, finished + settled)
         return program
 
     with ThreadPoolExecutor(args.jobs) as pool:
         checked = list(pool.map(one, to_check))
     report(checked + settled, corpus, args.list)
     if args.json is not None:
-        args.json.write_text(json.dumps([vars(p) | {"files": [str(f) for f in p.files]}
-                                         for p in checked + settled], indent=1, default=str))
+        write_rows(args.json, checked + settled)
     return 0
+
+
+def write_rows(path: Path, programs: list[Program]) -> None:
+    text = json.dumps([vars(p) | {"files": [str(f) for f in p.files]} for p in programs],
+                      indent=1, default=str)
+    scratch = path.with_name(path.name + ".part")
+    scratch.write_text(text)
+    scratch.replace(path)
 
 
 OUTSIDE = ("encrypted", "no entry", "no program", "own error")
@@ -370,8 +425,10 @@ def report(programs: list[Program], corpus: Path, rows: bool) -> None:
         print()
     outcomes = Counter(p.outcome for p in programs)
     tasks = [p for p in programs if "--task" in p.command]
+    whole = [p for p in programs if _whole(p)]
     print(f"corpus {corpus}: {len(programs)} distinct programs "
-          f"({len(tasks)} backup tasks, {len(programs) - len(tasks)} module folders); "
+          f"({len(whole)} whole backups, {len(tasks)} backup tasks, "
+          f"{len(programs) - len(tasks) - len(whole)} module folders); "
           f"{sum(p.duplicates for p in programs)} duplicates left out")
     for outcome, count in outcomes.most_common():
         stubbed = sum(1 for p in programs if p.outcome == outcome and p.stubbed)

@@ -131,7 +131,7 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
                  add_tasks: Sequence[str] = (), eio: Optional[str] = None,
                  flows: bool = False, outside_data: bool = True,
                  properties: Sequence[Property] = (),
-                 other_task_writes: Sequence[str] = ()) -> Program:
+                 other_task_writes: Sequence[str] = (), stubs: bool = False) -> Program:
     """Parse and link a program: module files or a controller backup folder, as ``check`` takes.
 
     ``env``: environment model modules; ``task``/``all_tasks``: which tasks of a
@@ -142,12 +142,13 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
     (load.outside_data), else it keeps its initial value (``--fixed-outside-data``), as
     it does when one of ``properties`` may name it (atoms read stored values);
     ``other_task_writes``: upper-case names of shared PERS data that a task not loaded
-    may write too (the shared data probe, ``_shared_data_probe``).
+    may write too (the shared data probe, ``_shared_data_probe``); ``stubs``: each task's
+    names that none of its modules declares are declared from their uses (``--stubs``).
     """
     files_given = list(files)
     files = resolve_program_files(SimpleNamespace(files=list(files), task=task, eio=eio,
                                                   all_tasks=all_tasks, add_task=list(add_tasks),
-                                                  entry=entry))
+                                                  entry=entry, stubs=stubs))
     environment = _parse_files(list(env)) if env else None
     parsed = with_encrypted_interface(_parse_files(files.modules), files, None)
     options = link_options(files)
@@ -172,7 +173,7 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
         entry=entry, task=task, all_tasks=all_tasks, add_tasks=[
             ",".join(os.path.abspath(path) for path in group.split(",")) for group in add_tasks],
         eio=os.path.abspath(eio) if eio is not None else None, flows=flows,
-        outside_data=outside_data, properties=tuple(properties))
+        outside_data=outside_data, properties=tuple(properties), stubs=stubs)
     return program
 
 

@@ -185,7 +185,7 @@ def prepare_model(args: argparse.Namespace) -> api.Model:
                                all_tasks=args.all_tasks, add_tasks=args.add_task, eio=args.eio,
                                flows=flows,
                                outside_data=not getattr(args, "fixed_outside_data", False),
-                               properties=properties)
+                               properties=properties, stubs=getattr(args, "stubs", False))
     if flows:
         properties.append(api.flow_property(program))
     return api.prepare(program, properties, options)

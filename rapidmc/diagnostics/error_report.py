@@ -26,7 +26,8 @@ from . import (MORE_ERRORS, UNKNOWN_NAME, UNKNOWN_ROUTINE, UNKNOWN_TYPE, Diagnos
 MAX_REPORTED = 50
 UNKNOWN_CODES = (UNKNOWN_NAME, UNKNOWN_ROUTINE, UNKNOWN_TYPE)
 STUBS_HINT = ("'rapidmc stubs FILES... -o Missing.mod' writes a module declaring every name "
-              "the program uses and no module declares")
+              "the program uses and no module declares ('check --stubs' declares them in "
+              "every task of a backup)")
 
 
 def position(diagnostic: Diagnostic) -> tuple:

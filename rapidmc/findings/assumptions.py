@@ -56,7 +56,7 @@ from ..load.outside_data import UNSET_VALUE_TEXT
 from ..semantics.expressions import WAIT_CHOICES
 from ..semantics.library.motion import MOVE_ROUTINES
 from ..semantics.library.position import ROBOT_PARTS
-from ..semantics.program import ENVIRONMENT_NAMESPACE, PROGRAM_NAMESPACE, Program
+from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
 from .absent_partners import absent_partners
 from .fixed_readings import fixed_readings
 from .tried_inputs import start_position_reads, unmodelled_interrupt_orders
@@ -227,13 +227,13 @@ def _file(span) -> Optional[str]:
 
 def _stubs(program: Program, stub_files: frozenset) -> Iterator[Assumption]:
     for routine in program.routines:
-        if _file(routine.span) in stub_files and routine.namespace == PROGRAM_NAMESPACE:
+        if _file(routine.span) in stub_files and routine.namespace != ENVIRONMENT_NAMESPACE:
             does = "returns a neutral value" if routine.kind == "FUNC" else "is empty"
             yield Assumption(STUB, routine.name,
                              f"stub {routine.name} {does} ({_where(routine.span)})")
     outside = getattr(program, "outside_data", None) or {}
     for data in program.globals:          # (an encrypted module's PERS: written outside)
-        if _file(data.span) in stub_files and data.namespace == PROGRAM_NAMESPACE and \
+        if _file(data.span) in stub_files and data.namespace != ENVIRONMENT_NAMESPACE and \
                 data.slot not in outside:
             yield Assumption(STUB, data.name,
                              f"stub {data.name} keeps its neutral value ({_where(data.span)})")

@@ -24,7 +24,8 @@ from ..ast import Span
 from ..diagnostics import (EXIT_OK, FILE_NOT_FOUND, NO_PROGRAM, PROGRAM_FILE, TASKS_LOADED,
                            Diagnostic, SourceCache, UserError, error)
 from .config_file import instances
-from .encrypted import interface_module, is_encrypted, only_encrypted_note, skipped_note
+from .encrypted import (interface_module, is_encrypted, missing_module, only_encrypted_note,
+                        skipped_note)
 from .other_writers import declared_values, other_writers, task_output_writers
 from .outside_outputs import controller_writers
 from .task_config import BackupTask, config_file, read_tasks, task_names
@@ -184,6 +185,10 @@ def add_program_arguments(parser) -> None:
     parser.add_argument("--eio", metavar="EIO.cfg",
                         help="I/O configuration whose signals the program uses by name "
                              "(a backup's SYSPAR/EIO.cfg is read automatically)")
+    parser.add_argument("--stubs", action="store_true",
+                        help="declare what each task uses and none of its modules declares, "
+                             "as 'rapidmc stubs' would (the modules of options a backup does "
+                             "not hold); each declaration is named under assumes:")
 
 
 @dataclass(frozen=True)
@@ -209,6 +214,8 @@ class ProgramFiles:
     # upper-case PERS name -> (a task not loaded's declaration with a value, where): the
     # value a loaded declaration without one takes (load.other_writers.declared_values)
     persistent_values: Optional[dict] = None
+    # --stubs: each task's missing names declared from their uses (``with_interfaces``)
+    stub_missing: bool = False
 
 
 def resolve_program_files(args) -> ProgramFiles:
@@ -288,7 +295,8 @@ def resolve_program_files(args) -> ProgramFiles:
             output_writers.setdefault(key, who)
     return ProgramFiles(paths, tasks, signals, main_task, main_entry, tuple(notes), alone,
                         configuration, encrypted, tuple(motion_tasks), writers,
-                        tuple(dict.fromkeys(names)), output_writers, values)
+                        tuple(dict.fromkeys(names)), output_writers, values,
+                        bool(getattr(args, "stubs", False)))
 
 
 def _readable_files(paths: list[str]) -> tuple[list[str], list[str]]:
@@ -389,13 +397,18 @@ def load_tasks(files: ProgramFiles) -> list:
 
 def with_encrypted_interface(parsed, files: ProgramFiles, task: Optional[str]):
     """``parsed`` (the modules of ``task``, None: the main task) with the interface of the
-    task's encrypted modules taken from their uses (``load.encrypted``)."""
+    task's encrypted modules taken from their uses (``load.encrypted``); with ``--stubs``,
+    else with what the task uses and none of its modules declares (``load.stubs``)."""
     from .. import ast
     sealed = (files.encrypted or {}).get(task)
-    if not sealed:
-        return parsed
     signals = frozenset(signal.name.upper() for signal in files.signals)
-    return ast.Program(tuple(parsed.modules) + interface_module(parsed.modules, sealed, signals))
+    if sealed:
+        added = interface_module(parsed.modules, sealed, signals)
+    elif files.stub_missing and parsed.modules:
+        added = missing_module(parsed.modules, signals)
+    else:
+        return parsed
+    return ast.Program(tuple(parsed.modules) + added)
 
 
 def every_task(path: Path) -> list[tuple[str, list[str]]]:

@@ -66,18 +66,36 @@ def interface_module(modules: Sequence[ast.Module], encrypted: Sequence[str],
                      signals: frozenset) -> tuple[ast.Module, ...]:
     """The modules declaring what ``modules`` use and nobody declares, taken as the
     interface of the ``encrypted`` module files (empty when nothing is missing)."""
+    names = ", ".join(Path(p).name for p in encrypted)
+    return _declared_from_uses(
+        modules, "Encrypted_interface", signals,
+        lambda name: str(Path(encrypted[0]).with_name(f"{Path(encrypted[0]).name} (interface)")),
+        f"! {ENCRYPTED_MARKER} ({names}), taken from their uses\n")
+
+
+def missing_module(modules: Sequence[ast.Module], signals: frozenset) -> tuple[ast.Module, ...]:
+    """``check --stubs``: the module ``rapidmc stubs`` writes for ``modules`` (a task's),
+    beside their first file (empty when nothing is missing); its marker names each
+    declaration under ``assumes:``."""
+    return _declared_from_uses(
+        modules, "Missing", signals,
+        lambda name: str(Path(modules[0].span.file).with_name(f"{name}.mod (stubs)")))
+
+
+def _declared_from_uses(modules, name: str, signals: frozenset, path_for,
+                        header: str = "") -> tuple[ast.Module, ...]:
+    """The module of stubs (``load.stubs``) named ``name`` (or a free variant) for what
+    ``modules`` use and nobody declares, at ``path_for(name)``; empty when nothing is."""
     from ..syntax import parse_text
     from .stubs import stub_module
     taken = {module.name.key for module in modules}
-    name = "Encrypted_interface"
     while name.upper() in taken:
         name += "_"
     stubs = stub_module(tuple(modules), name, signals)
     if not stubs.declared:
         return ()
-    names = ", ".join(Path(p).name for p in encrypted)
-    text = f"! {ENCRYPTED_MARKER} ({names}), taken from their uses\n" + stubs.text
-    path = str(Path(encrypted[0]).with_name(f"{Path(encrypted[0]).name} (interface)"))
+    path = path_for(name)
+    text = header + stubs.text
     SourceCache.remember(path, text)
     return parse_text(text, path)
 

@@ -5,6 +5,17 @@ routine's data, the module's, then the task's global data and the
 predefined ones.  A name that is not data there raises ERR_SYM_ACCESS; data
 of another type than the argument's raises ERR_SYMBOL_TYPE.
 
+GetDataVal into signal data also finds the I/O signals of the controller's
+configuration, as AliasIO does: ``GetDataVal "c"+ValToStr(n)+"DropWObj", doDrop``
+connects ``doDrop`` to that configured output (ABB's own conveyor-tracking
+modules name their ``c1..c6`` signals so).  With the backup's EIO.cfg loaded,
+a name it does not configure raises ERR_SYM_ACCESS.  Without one, which
+names are configured is not known: a name computed at run time that no
+known signal has connects to a stand-in signal of that call, an input read
+as a free one and a digital output read as one set outside the loaded code
+(either value), so the verdicts rest on no value of it; the stand-in is
+named under ``assumes:``.
+
 Type names the data type of its argument, known when the program is linked; ArgName and
 SetAllDataVal, which need the names of data at run time, stop the run (RMC305).
 """
@@ -15,9 +26,9 @@ from ...diagnostics import ARGUMENT, error
 from ..errors import RapidError
 from ..instructions import Action
 from ..machine import ABSENT, GLOBAL
-from ..scope import CONSTANT, GLOBAL_DATA
+from ..scope import CONSTANT, GLOBAL_DATA, SIGNAL
 from ..expressions import constant
-from ..types import STRING, element_type, same_type
+from ..types import SEMI_VALUE, STRING, RapidType, element_type, same_type
 from .arguments import Arguments, argument_expression, fixed, no_effect, not_modelled
 from .registry import FIXED, NO_EFFECT, NOT_MODELLED, compiled
 
@@ -49,11 +60,58 @@ def _get_data_val(calls, compiler, call, entry):
     name = arguments.value("Object")
     value_ref, value_type, _ = _value_reference(compiler, call, "written by GetDataVal")
     scope = compiler.scope
+    if isinstance(value_type, RapidType) and value_type.kind == SEMI_VALUE and \
+            value_type.signal_kind:
+        signal = _named_signal(compiler, call, value_type)
+
+        def get_signal(m):
+            m.write_ref(value_ref(m), signal(m, name(m)))
+        return Action(call.span, get_signal)
 
     def get(m):
         symbol, ref = named_data(scope, name(m), value_type, "GetDataVal")
         m.write_ref(value_ref(m), symbol.value if ref is None else m.read_ref(ref))
     return Action(call.span, get)
+
+
+def _named_signal(compiler, call, signal_type: RapidType):
+    """``(m, name) -> signal index`` for GetDataVal into data of ``signal_type``: signal data
+    of that name, else the configured signal, else (no EIO.cfg loaded, a name computed at
+    run time) the call's stand-in signal; ERR_SYM_ACCESS when none is."""
+    linker, scope, kind = compiler.linker, compiler.scope, signal_type.signal_kind
+    configured = bool(linker.options.get("configured_signals"))
+    source = compiler.value(argument_expression(call, "Object", 0))
+    stand_in = None
+    if source.is_constant:
+        symbol = scope.lookup(source.constant.upper())
+        if symbol is None and not configured:      # a name used as a signal: configured
+            linker.note_signal_named(linker.physical_signal(source.constant, kind,
+                                                            call.span).index)
+        elif symbol is not None and symbol.kind == SIGNAL:
+            linker.note_signal_named(symbol.slot)
+    elif configured:
+        linker.note_signal_named(None)             # any configured signal may be named
+    else:
+        where = f"{call.span.file.rsplit('/', 1)[-1]}:{call.span.line}"
+        stand_in = linker.physical_signal(f"[GetDataVal at {where}]", kind, call.span)
+        if kind == "DO":
+            stand_in.outside = ("whichever configured signal that call names at run time "
+                                "(no EIO.cfg is loaded)")
+        linker.note_signal_named(stand_in.index)
+
+    def index(m, name: str) -> int:
+        symbol = scope.lookup(name.upper())
+        if symbol is not None and symbol.kind == SIGNAL:
+            found = m.program.signal_index.get(name.upper())
+            if found.kind != kind:
+                raise RapidError("ERR_SYMBOL_TYPE", f"GetDataVal: signal {found.name} is a "
+                                 f"{found.kind}, not a {kind}")
+            return found.index
+        if symbol is None and stand_in is not None:
+            return stand_in.index
+        found, ref = named_data(scope, name, signal_type, "GetDataVal")
+        return found.value if ref is None else m.read_ref(ref)
+    return index
 
 
 @compiled(f"SetDataVal({_WHERE}, anytype Value)")
