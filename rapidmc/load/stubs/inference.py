@@ -103,6 +103,9 @@ class Inference:
         self.component_feeds: dict[str, tuple[Missing, str]] = {}
         # TEST statements whose subject and CASE values are all missing names: the keys
         self.untyped_tests: list[tuple[str, ...]] = []
+        # datum key -> the bare names it is given or compared with (``Status := NG``,
+        # ``VAR num Res := OK``, ``WHILE Status <> OK``): status codes (``_codes``)
+        self.codes: dict[str, list] = {}
 
     # ------------------------------------------------------------ bookkeeping
     def note(self, name: ast.Name, kind: str, use: str) -> Missing:
@@ -343,6 +346,7 @@ class Inference:
 
     # -------------------------------------------------------------- the walk
     def walk(self) -> None:
+        self.codes = {}
         for module in self.modules:
             for definition in module.types:
                 self._record_components(definition)
@@ -351,6 +355,15 @@ class Inference:
                 self._declaration(decl)
             for routine in module.routines:
                 self._routine(routine)
+        for names in self.codes.values():
+            self._alternatives(names)
+
+    def _code(self, subject, value) -> None:
+        """Note that datum ``subject`` is given, or compared with, ``value`` when both are
+        bare names: missing names one datum holds in turn are codes of different values
+        (``Status := NG; WHILE Status <> OK``: with both 0 the loop never runs)."""
+        if isinstance(subject, ast.NameRef) and isinstance(value, ast.NameRef):
+            self.codes.setdefault(subject.name.key, []).append(value.name)
 
     def _record_components(self, definition) -> None:
         """A RECORD of the program whose component has a type no module declares."""
@@ -378,6 +391,7 @@ class Inference:
             self.expect(dim, NUM, f"array size of {decl.name.text}")
             self.expression(dim)
         if decl.init is not None:
+            self._code(ast.NameRef(decl.name, decl.span), decl.init)
             self._type_from_value(decl)
             self.expect(decl.init, TypeInfo(decl.type.name.text), f"value of {decl.name.text}")
             self.expression(decl.init)
@@ -491,6 +505,7 @@ class Inference:
         root = statement.target
         while isinstance(root, (ast.Index, ast.Component)):
             root = root.base
+        self._code(statement.target, statement.value)
         self._unify_invented(target, value)
         self._alias_from_assigned(target, value)
         self._same_sizes(statement.target, statement.value)
@@ -719,6 +734,9 @@ class Inference:
             self.expect(expr.left, BOOL, f"operand of {expr.op}")
             self.expect(expr.right, BOOL, f"operand of {expr.op}")
         elif expr.op in COMPARISONS or expr.op in ARITHMETIC:
+            if expr.op in ("=", "<>"):
+                self._code(expr.left, expr.right)
+                self._code(expr.right, expr.left)
             left, right = self.type_of(expr.left), self.type_of(expr.right)
             what = "compared with" if expr.op in COMPARISONS else "combined with"
             if right is not None:
