@@ -231,6 +231,16 @@ class Inference:
                 self._arrange(owner)
         self.changed = True
 
+    def _shape_assigned(self, target: Optional[TypeInfo], value) -> None:
+        """An aggregate assigned whole to data of a missing record type shapes it as a
+        declared value does (``pack.Header := [PACK_HEADER, 96, 1, 0, 0, 0, 0]``: seven
+        components, which the names the code reads then take)."""
+        record = self.missing.get(target.key) if target is not None and not target.rank \
+            else None
+        if record is not None and record.kind == TYPE and not record.alias_of and \
+                isinstance(value, ast.Aggregate) and value.items:
+            self._shape_record(record, value)
+
     def _unify_invented(self, target: Optional[TypeInfo], value: Optional[TypeInfo]) -> None:
         """Data of two record types the stubs invented (``bufA{i} := bmEmpty`` and ``bufB{i}
         := bmEmpty``, each array's ``<data>_rec``) assigned one to the other: one type, the
@@ -506,6 +516,7 @@ class Inference:
         while isinstance(root, (ast.Index, ast.Component)):
             root = root.base
         self._code(statement.target, statement.value)
+        self._shape_assigned(target, statement.value)
         self._unify_invented(target, value)
         self._alias_from_assigned(target, value)
         self._same_sizes(statement.target, statement.value)
