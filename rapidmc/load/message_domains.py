@@ -710,9 +710,11 @@ class Uses:
         opener = next((text for text in self.searched if text in BRACKETS), "")
         closer = BRACKETS[opener] if opener and BRACKETS[opener] in self.searched else ""
         # without a bracket, a list follows each word the code matches ('MOVE,1,1' for
-        # 'StrMatch(cmd, 1, "MOVE,")'), with the separator between them
+        # 'StrMatch(cmd, 1, "MOVE,")'), with the separator between them; with no word
+        # either, the list is the whole message ('1,1,1' for "x,y,z")
         openers = [opener] if opener else \
-            [word if word.endswith(others[0]) else word + others[0] for word in self._words()]
+            [word if word.endswith(others[0]) else word + others[0]
+             for word in self._words()] or [""]
         # and each shorter list, whose missing part fails to parse ('[1,1]'), and the
         # longest with its last part malformed ('[1,1,?]'): the last parse's failure
         longest = max(self.lists.values(), default=0)
