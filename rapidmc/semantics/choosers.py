@@ -184,7 +184,8 @@ class CheckConfig:
 
     def merge_table(self, program: Program) -> dict:
         """``merge_points`` with what a merged run looks up per pc: routine index ->
-        (kinds, code), where a kind gains 4 when its instruction may read a signal.
+        (kinds, code), where a kind gains 4 when its instruction may read a signal or
+        choose a value of data written from outside (``Instruction.chooses``).
         Derived once per merge points and program (copies of the config that change
         ``merge_points`` derive their own)."""
         cached = self._merge_table
@@ -193,7 +194,8 @@ class CheckConfig:
         table = {}
         for index, kinds in self.merge_points.items():
             code = program.routines[index].code
-            table[index] = (bytes(kind | (4 if instruction.reads_io else 0)
+            table[index] = (bytes(kind | (4 if instruction.reads_io or instruction.chooses
+                                          else 0)
                                   for kind, instruction in zip(kinds, code)), code)
         self._merge_table = (self.merge_points, program, table)
         return table

@@ -208,6 +208,7 @@ class ExpressionCompiler:
         self.constant_only = constant_only  # CONST/VAR initialisers: no variables, no calls
         self.routine = routine
         self.io_reader = None               # callable noting that the code reads signals
+        self.choice_noter = None            # callable noting a read of outside data that chooses
         self.in_wait = False                # compiling a WaitUntil or polling condition (_outside_read)
         # a read compiled while ``in_wait`` chose a value another writer wrote and stores it
         # (``_outside_read``; WaitUntil keeps it only where the wait ends: library.waits)
@@ -226,7 +227,10 @@ class ExpressionCompiler:
         compiled = method(expr, expected)
         if self.routine is not None and self.linker.outside_data and \
                 isinstance(expr, (ast.NameRef, ast.Component, ast.Index)):
-            compiled = self._outside_read(expr, compiled)
+            read = self._outside_read(expr, compiled)
+            if read is not compiled and self.choice_noter is not None:
+                self.choice_noter()
+            compiled = read
         if expected is not None and compiled.type is not None:
             self.check_assignable(compiled.type, expected, expr.span)
             compiled = self.convert(compiled, expected)

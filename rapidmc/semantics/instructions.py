@@ -22,7 +22,8 @@ from . import values
 
 
 class Instruction:
-    __slots__ = ("span", "next", "start", "after", "text", "reads_io", "fusion", "machine")
+    __slots__ = ("span", "next", "start", "after", "text", "reads_io", "chooses", "fusion",
+                 "machine")
 
     def __init__(self, span):
         self.span = span
@@ -30,6 +31,9 @@ class Instruction:
         self.start = -1
         self.after = -1
         self.reads_io = False       # may read a signal value (inputs matter to this step)
+        # may choose a value of data written from outside the loaded code
+        # (``load.outside_data``): a merged step stops before it once a choice was made
+        self.chooses = False
         # what ``fused_step`` needs to run this instruction as Python source, or None:
         # a Branch's condition (a ``Compiled`` with a source), an Action's assignment
         # ("store" or "local", slot, the value's ``Compiled``), a ForInit's FROM, TO

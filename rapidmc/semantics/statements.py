@@ -60,6 +60,7 @@ class RoutineCompiler:
         self.statement_start: Optional[Label] = None
         self.statement_after: Optional[Label] = None
         self.statement_reads_io = False
+        self.statement_chooses = False
         self.statement_code: list[Instruction] = []
 
     # --------------------------------------------------------------- emission
@@ -189,27 +190,36 @@ class RoutineCompiler:
 
     def statement(self, statement, follow: Label) -> None:
         saved = (self.statement_start, self.statement_after, self.statement_reads_io,
-                 self.statement_code)
+                 self.statement_chooses, self.statement_code)
         self.statement_start = self.here()
         self.statement_after = follow
         self.statement_reads_io = False
+        self.statement_chooses = False
         self.statement_code = []
         try:
             getattr(self, "_" + type(statement).__name__)(statement, follow)
             if self.statement_reads_io:
                 for instruction in self.statement_code:
                     instruction.reads_io = True
+            if self.statement_chooses:
+                for instruction in self.statement_code:
+                    # (a jump evaluates nothing: the merged run goes on through it)
+                    instruction.chooses = type(instruction) not in (Jump, ForNext)
         finally:
             (self.statement_start, self.statement_after, self.statement_reads_io,
-             self.statement_code) = saved
+             self.statement_chooses, self.statement_code) = saved
 
     def _note_io_read(self) -> None:
         self.statement_reads_io = True
+
+    def _note_choice(self) -> None:
+        self.statement_chooses = True
 
     def expressions(self, scope: Optional[Scope] = None) -> ExpressionCompiler:
         compiler = ExpressionCompiler(self.linker, scope or self.scope, hoist=self.hoist,
                                       routine=self.routine)
         compiler.io_reader = self._note_io_read
+        compiler.choice_noter = self._note_choice
         return compiler
 
     def hoist(self, call: ast.FunctionCall, callee, for_wait: bool = False) -> int:
