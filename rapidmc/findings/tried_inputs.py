@@ -369,7 +369,7 @@ def probed(read: TriedInput) -> bool:
     or a DOutput of an output no loaded code sets."""
     name = read.instruction.upper()
     return (read.kind == FIXED and (name in PROBED_READINGS or name in AXES_PROBED)) or \
-        (read.kind == UNSET and name not in OUTPUT_READS[1:])   # (DOutput, or a DO by name)
+        (read.kind == UNSET and (name == "DOUTPUT" or name not in OUTPUT_READS))   # (a DO by name)
 
 
 def varied(read: TriedInput) -> bool:

@@ -682,7 +682,7 @@ class Uses:
         ranked = [list(_placed(view, text, separators, heads)) for view, text in wanted]
         # a list of as many numbers as a routine parses from parts it cuts ('[1,1,1]'),
         # and each word matched, alone and heading such a list ('MOVE,1,1')
-        ranked[1:1] = [[form] for form in self._patterns() + self._list_forms()]
+        ranked[1:1] = [[form] for form in self._words() + self._list_forms()]
         messages = [forms[rank] for rank in range(max(map(len, ranked), default=0))
                     for forms in ranked if rank < len(forms)]
         messages.extend(self.searched)
@@ -728,10 +728,6 @@ class Uses:
     def _words(self) -> list:
         """The texts of more than one character the code matches (StrMatch), in order."""
         return [text for text in dict.fromkeys(self.searched) if len(text) > 1]
-
-    def _patterns(self) -> list:
-        """Each word the code matches, as a message of its own ('STOP')."""
-        return self._words()
 
     def _length_forms(self) -> list:
         """Per number the message's length is compared with (``StrLen(msg) > 72``), a
