@@ -92,6 +92,14 @@ class StatementWatch:
     def __call__(self, state: Hashable, successors: Sequence[tuple[Hashable, Hashable]]) -> None:
         self.note_spans([one for (_, span, _), _ in successors for one in executed_spans(span)])
 
+    def novel(self, successors: Sequence[tuple[Hashable, Hashable]]) -> list:
+        """The successors whose step runs a line not executed yet (``check.walks``: a walk
+        takes such a step first)."""
+        executed = self.executed
+        return [one for one in successors
+                if any(span is not None and (span.file, span.line) not in executed
+                       for span in executed_spans(one[0][1]))]
+
     def note_spans(self, spans: Sequence) -> None:
         """Mark the lines of ``spans`` executed (a search that runs steps without labels
         names the instructions it ran)."""
