@@ -95,9 +95,10 @@ class StatementWatch:
     def novel(self, successors: Sequence[tuple[Hashable, Hashable]]) -> list:
         """The successors whose step runs a line not executed yet (``check.walks``: a walk
         takes such a step first)."""
-        executed = self.executed
+        executed, recorded = self.executed, self._recorded
         return [one for one in successors
-                if any(span is not None and (span.file, span.line) not in executed
+                if any(span is not None and id(span) not in recorded
+                       and (span.file, span.line) not in executed
                        for span in executed_spans(one[0][1]))]
 
     def note_spans(self, spans: Sequence) -> None:
