@@ -26,7 +26,7 @@ from typing import Hashable, Optional, Sequence
 
 from .. import ast
 from ..ast import Span
-from .dead_code import lines_after_jumps
+from .dead_code import lines_after_jumps, lines_behind_absent_options
 from ..diagnostics import NEVER_REACHED, Diagnostic
 from ..model.reduction.merging import executed_spans
 from ..semantics.instructions import Call, EndRoutine, EndUndo, LateCall
@@ -150,12 +150,15 @@ def coverage_warnings(program: Program, executed: set[tuple[str, int]],
 
 def _after_jumps(program: Program) -> dict:
     """(file, line) -> whether it has a statement, for the statement lines of the watched
-    routines: True where that statement follows a jump in its list (``dead_code``)."""
+    routines: True where that statement follows a jump in its list, or lies in an ``IF
+    Present(p)`` branch that no call gives ``p`` (``dead_code``)."""
     lines: dict = {}
+    absent = lines_behind_absent_options([routine.ast for routine in program.routines
+                                          if routine.ast is not None])
     for routine in _watched_routines(program):
         dead = lines_after_jumps(routine.ast) if routine.ast is not None else frozenset()
         for key in _statement_lines(routine):
-            lines[key] = key in dead
+            lines[key] = key in dead or key in absent
     return lines
 
 
