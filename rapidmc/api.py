@@ -420,7 +420,8 @@ def _walked_lines(program: Program, atoms: AtomCompiler, config: CheckConfig,
     watch = ExploredFacts(program, (), atoms)
     lines = watch.statements
     random_walks(RapidSystem(program, config, reduction.NO_PLAN), lines, steps,
-                 _step_choices, lambda: len(lines.executed), enough=lambda: lines.saturated)
+                 _step_choices, lambda: len(lines.executed), enough=lambda: lines.saturated,
+                 novel=lines.novel)
     return watch.statements.executed
 
 

@@ -66,3 +66,45 @@ def test_walks_repeat_themselves_for_a_seed_and_stop_at_their_steps():
     assert seen_by(2000, seed=3) == seen_by(2000, seed=3)
     assert seen_by(2000, seed=3) != seen_by(2000, seed=4)
     assert len(seen_by(777)) == 777
+
+
+class Mailbox:
+    """Two chains of waits behind a fork, each stage ended by one value of ``VALUES`` (the
+    others send the cell back to the start: a command it does not expect): the value
+    differs stage by stage, so neither uniform nor sticky choices get far.  A state is
+    (chain, stage)."""
+
+    VALUES = 5
+    STAGES = 30
+
+    def initial_states(self):
+        return (("fork", 0),)
+
+    def successors(self, state):
+        chain, stage = state
+        if chain == "fork":
+            return (((("branch", "a"),), "a"), ("a", 0)), (((("branch", "b"),), "b"), ("b", 0))
+        if stage == self.STAGES:
+            return ((((), "end"), state),)
+        return tuple((((("mailbox", value),), "read"),
+                      (chain, stage + 1) if value == stage % self.VALUES else ("fork", 0))
+                     for value in range(self.VALUES))
+
+
+def walked_by(steps: int, guided: bool) -> set:
+    """The states the walks observe on ``Mailbox``; with ``guided``, they are told which
+    successors lead to a state not observed yet (``novel``)."""
+    seen: set = set()
+    random_walks(Mailbox(), lambda state, successors: seen.add(state), steps,
+                 lambda label: label[0], lambda: len(seen),
+                 novel=(lambda successors: [one for one in successors if one[1] not in seen])
+                 if guided else None)
+    return seen
+
+
+def test_a_walk_takes_the_steps_that_show_something_new():
+    ends = {("a", Mailbox.STAGES), ("b", Mailbox.STAGES)}
+    # each end is 31 right values in a row (chance 5**-30 per try unguided)
+    assert not ends & walked_by(20000, guided=False)
+    # guided: a walk climbs one chain, a later one the other
+    assert ends <= walked_by(1000, guided=True)

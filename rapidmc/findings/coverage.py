@@ -26,7 +26,7 @@ from typing import Hashable, Optional, Sequence
 
 from .. import ast
 from ..ast import Span
-from .dead_code import lines_after_jumps
+from .dead_code import lines_after_jumps, lines_behind_absent_options
 from ..diagnostics import NEVER_REACHED, Diagnostic
 from ..model.reduction.merging import executed_spans
 from ..semantics.instructions import Call, EndRoutine, EndUndo, LateCall
@@ -92,6 +92,15 @@ class StatementWatch:
     def __call__(self, state: Hashable, successors: Sequence[tuple[Hashable, Hashable]]) -> None:
         self.note_spans([one for (_, span, _), _ in successors for one in executed_spans(span)])
 
+    def novel(self, successors: Sequence[tuple[Hashable, Hashable]]) -> list:
+        """The successors whose step runs a line not executed yet (``check.walks``: a walk
+        takes such a step first)."""
+        executed, recorded = self.executed, self._recorded
+        return [one for one in successors
+                if any(span is not None and id(span) not in recorded
+                       and (span.file, span.line) not in executed
+                       for span in executed_spans(one[0][1]))]
+
     def note_spans(self, spans: Sequence) -> None:
         """Mark the lines of ``spans`` executed (a search that runs steps without labels
         names the instructions it ran)."""
@@ -124,8 +133,11 @@ def coverage_warnings(program: Program, executed: set[tuple[str, int]],
     if len(uncalled) < 2:
         uncalled = []
     dead = _after_jumps(program)
+    only_dead_callers = _called_from_dead_code(program, dead, called)
     warnings = [u.diagnostic(ANY_INPUT if called is not None and u.routine not in called
-                             or _within(u, dead) else inputs)
+                             or _within(u, dead)
+                             or u.whole_routine and u.routine in only_dead_callers
+                             else inputs)
                 for u in found if u not in idle and u not in uncalled]
     if uncalled:
         warnings.append(_uncalled_routines(uncalled))
@@ -138,13 +150,54 @@ def coverage_warnings(program: Program, executed: set[tuple[str, int]],
 
 def _after_jumps(program: Program) -> dict:
     """(file, line) -> whether it has a statement, for the statement lines of the watched
-    routines: True where that statement follows a jump in its list (``dead_code``)."""
+    routines: True where that statement follows a jump in its list, or lies in an ``IF
+    Present(p)`` branch that no call gives ``p`` (``dead_code``)."""
     lines: dict = {}
+    absent = lines_behind_absent_options([routine.ast for routine in program.routines
+                                          if routine.ast is not None])
     for routine in _watched_routines(program):
         dead = lines_after_jumps(routine.ast) if routine.ast is not None else frozenset()
         for key in _statement_lines(routine):
-            lines[key] = key in dead
+            lines[key] = key in dead or key in absent
     return lines
+
+
+def _called_from_dead_code(program: Program, dead: dict, called: Optional[frozenset]
+                           ) -> frozenset:
+    """The names of the procedures every call of which is dead under any input: after a
+    jump (``dead``), or in a routine no chain of calls reaches (outside ``called``) or
+    itself called from dead code only (dtcameron's ``CloseConnection``, called once after
+    ``WHILE TRUE``).  Such a routine never runs whatever the inputs.  None when the
+    program calls procedures by name (any may be the one) or ``called`` is unknown; a
+    TRAP or a function (called from expressions, by CONNECT) is never counted."""
+    if called is None or _calls_by_name(program):
+        return frozenset()
+    sites: dict = {}                 # routine key -> [(calling routine's name, file, line)]
+    for routine in _watched_routines(program):
+        if routine.ast is None:
+            continue
+        for node, _ in ast.walk(routine.ast):
+            if isinstance(node, (ast.ProcedureCall, ast.FunctionCall, ast.Connect)):
+                key = node.trap.key if isinstance(node, ast.Connect) else node.name.key
+                sites.setdefault(key, []).append(
+                    (routine.name, node.span.file, node.span.line))
+    procedures = {routine.key: routine.name for routine in _watched_routines(program)
+                  if routine.kind == "PROC"}
+    if len(procedures) != len({r.name for r in _watched_routines(program)
+                               if r.kind == "PROC"}):
+        return frozenset()           # (a name twice: LOCAL routines of several modules)
+    found: set = set()
+    changed = True
+    while changed:
+        changed = False
+        for key, name in procedures.items():
+            if name in found or name not in called or not sites.get(key):
+                continue
+            if all(caller not in called or caller in found or dead.get((file, line), False)
+                   for caller, file, line in sites[key]):
+                found.add(name)
+                changed = True
+    return frozenset(found)
 
 
 def _within(found: Unreached, dead: dict) -> bool:

@@ -17,10 +17,16 @@ handler without TRYNEXT never comes back after the statement that raised (RETRY 
 again, RAISE passes the error on, the handler's end leaves the routine), and an error
 raised inside the handler itself goes to the caller.  Stop lets the program go on: it does
 not end the list.
+
+Likewise the statements of an ``IF Present(p)`` branch, in a procedure whose every call
+(there is at least one) leaves the optional parameter ``p`` out: no call passes it, so
+``Present(p)`` is FALSE whatever the inputs (``ROS_receive_msg_joint_traj_pt``'s branch
+for a ``\wait_time`` that the motion server never gives; ``lines_behind_absent_options``).
 """
 from __future__ import annotations
 
 from .. import ast
+from ..semantics.library.program_control import CALLS_BY_NAME
 
 # instructions, as procedure calls, that never let their statement list go on
 ENDING_CALLS = frozenset({"EXITCYCLE"})
@@ -96,3 +102,41 @@ def _statement_lists(routine_ast):
             continue
         for statements in ast.statement_lists(part):
             yield statements, part_comes_back
+
+
+def lines_behind_absent_options(routines) -> frozenset:
+    """(file, line) of the statements of each ``IF Present(p)`` (or ELSEIF) branch of a
+    procedure that some call reaches and whose every call, among ``routines`` (the ASTs
+    of every routine of the program), leaves the optional parameter ``p`` out (a
+    conditional argument ``\\p?q`` passes it).  Empty when a procedure may be called by
+    a name computed at run time (a late-bound call, CallByVar ...)."""
+    calls: dict = {}                  # procedure key -> the parameter keys some call passes
+    for routine_ast in routines:
+        for node, _ in ast.walk(routine_ast):
+            if isinstance(node, ast.LateBindingCall) or (
+                    isinstance(node, ast.ProcedureCall) and node.name.key in CALLS_BY_NAME):
+                return frozenset()
+            if isinstance(node, ast.ProcedureCall):
+                calls.setdefault(node.name.key, set()).update(
+                    argument.name.key for argument in node.args if argument.name is not None)
+    dead: set = set()
+    for routine_ast in routines:
+        passed = calls.get(routine_ast.name.key)
+        if passed is None:
+            continue                      # (not called: an entry, or no call reaches it)
+        absent = {parameter.name.key for parameter in routine_ast.parameters
+                  if parameter.optional} - passed
+        for node, _ in ast.walk(routine_ast):
+            if isinstance(node, ast.IfBranch) and _presence_of(node.condition) in absent:
+                dead.update((inner.span.file, inner.span.line)
+                            for statement in node.body for inner, _ in ast.walk(statement)
+                            if getattr(inner, "span", None) is not None)
+    return frozenset(dead)
+
+
+def _presence_of(condition):
+    """The parameter key of a condition ``Present(p)``, else None."""
+    if isinstance(condition, ast.FunctionCall) and condition.name.key == "PRESENT" and \
+            len(condition.args) == 1 and isinstance(condition.args[0].value, ast.NameRef):
+        return condition.args[0].value.name.key
+    return None
