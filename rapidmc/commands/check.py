@@ -90,6 +90,11 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--input-domain", action="append", default=[], metavar="NAME=LIST",
                         help="finite values a free analog or group input may take, e.g. "
                              "AI1=0,5,10 (repeatable)")
+    parser.add_argument("--exact-input-domains", action="store_true",
+                        help="refuse (RMC502) a free analog or group input whose values the "
+                             "program does not fix exactly (default: it takes the numbers the "
+                             "code compares it with, their neighbours and its configured ends, "
+                             "and the verdicts say so under assumes:)")
     parser.add_argument("--socket-messages", action="append", default=[], metavar="TEXT",
                         help="a message SocketReceive may deliver (repeatable; default: one "
                              "empty message)")
@@ -164,6 +169,7 @@ def check_options(args: argparse.Namespace) -> api.CheckOptions:
         fk_answers=_numbers(args.fk_answers, "--fk-answers"),
         input_domains={name.upper(): _numbers(values, "--input-domain")
                        for name, values in _pairs(args.input_domain, "--input-domain").items()},
+        exact_input_domains=getattr(args, "exact_input_domains", False),
         socket_messages=tuple(args.socket_messages), socket_closures=args.socket_closures,
         socket_timeouts=not args.no_socket_timeouts, file_lines=tuple(args.file_lines),
         automata=_pairs(args.automaton, "--automaton"), backend=args.backend,
