@@ -604,8 +604,9 @@ class _Searches:
                            storage=options.storage)
         exact = [site_key(d.site) for d in model.messages if d.exact]
         self.facts = ExploredFacts(model.program, [prop.formula for prop in model.properties],
-                                   model.atoms, sampled_inputs(model.program, exact,
-                                                                  options.socket_closures))
+                                   model.atoms, sampled_inputs(
+                                       model.program, exact, options.socket_closures,
+                                       frozenset().union(*(a.read_as for a in model.assumed))))
         # Coverage and vacuity watch the run-time error search (merged steps name every line
         # they run); --compact / --bitstate searches are never complete, so they watch nothing;
         # nor do distributed searches (their states are expanded in other processes).

@@ -71,6 +71,7 @@ class Assumed:
     # verdict covers only them
     exact: bool = True
     mentions: frozenset = frozenset()    # upper-case names whose statements read it
+    read_as: frozenset = frozenset()     # upper-case names reading it: its own, signal data
 
     def note(self) -> Diagnostic:
         return Diagnostic(DOMAIN_ASSUMED, f"{self.signal.name}: {describe(self.values)} "
@@ -107,14 +108,15 @@ def describe(values: Sequence[float]) -> str:
 
 def default_domains(program: Program, signals: Sequence[Signal], atom_reads,
                     atom_data: Optional[frozenset] = None, robot_observed: bool = True,
-                    exact_only: bool = False) -> dict:
+                    exact_only: bool = False, atom_exprs: tuple = (), atom_scope=None) -> dict:
     """Signal key -> ``Assumed`` or ``Refused`` for each of ``signals`` (free AI/GI inputs).
 
     ``atom_reads``: indices of the signals properties read (None: any of them);
     ``atom_data``: upper-case names of the data they read (None: unknown, so an input's
     value is not followed through data); ``robot_observed``: whether they read a robot's
     position; ``exact_only``: refuse where no exact default exists (else the domain of
-    ``stated_domains``, not exact).
+    ``stated_domains``, not exact, which also takes the numbers the properties' atoms
+    ``atom_exprs`` compare with, read in ``atom_scope``).
     """
     if not signals:
         return {}
@@ -126,17 +128,18 @@ def default_domains(program: Program, signals: Sequence[Signal], atom_reads,
     for signal in signals:
         outcome = _default(signal, widths.get(signal.key), reads, atom_reads)
         if isinstance(outcome, Refused) and not exact_only:
-            outcome = stated(program, signal, outcome, reads)
+            outcome = stated(program, signal, outcome, reads, atom_exprs, atom_scope)
         outcomes[signal.key] = outcome
     return outcomes
 
 
-def stated(program: Program, signal: Signal, refused: Refused, reads: "ReadCollector") -> Assumed:
+def stated(program: Program, signal: Signal, refused: Refused, reads: "ReadCollector",
+           atom_exprs: tuple = (), atom_scope=None) -> Assumed:
     """The values ``stated_domains`` singles out for an input with no exact default, and
     why there is none."""
     bound = frozenset(name for name, indices in reads.aliases.items() if signal.index in indices)
     names = carriers(program, signal, bound)
-    numbers = compared_constants(program, names, number_value)
+    numbers = compared_constants(program, names, number_value, atom_exprs, atom_scope)
     limits = configured_range(program, signal)
     ends = {end for end in (limits.low, limits.high) if end is not None}
     if signal.kind == "GI":
@@ -152,7 +155,8 @@ def stated(program: Program, signal: Signal, refused: Refused, reads: "ReadColle
         if limits.low is not None and limits.high is not None else ""
     reason = (f"assumed, not exact: {refused.reason.split(';')[0]}; it or data computed from it "
               f"is {origin}{configured}")
-    return Assumed(signal, values, reason, exact=False, mentions=roots(names))
+    return Assumed(signal, values, reason, exact=False, mentions=roots(names),
+                   read_as=bound | {signal.key})
 
 
 def _default(signal: Signal, width: Optional[int], reads: "ReadCollector",

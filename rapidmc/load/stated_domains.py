@@ -9,9 +9,9 @@ backups and three held-out programs stopped at RMC502), and a safety engineer
 expects the check to go on with the values the program itself singles out and
 to say so, as a test plan would:
 
-* the numbers the input, or any data computed from it, is compared with
-  (``=`` ``<>`` ``<`` ``<=`` ``>`` ``>=`` with a literal or CONST num, TEST
-  CASE values, WaitAI/WaitGI values): for a group input each number, its
+* the numbers the input, or any data computed from it, is compared with in the
+  code or in a property's atom (``=`` ``<>`` ``<`` ``<=`` ``>`` ``>=`` with a
+  literal or CONST num, TEST CASE values, WaitAI/WaitGI values): for a group input each number, its
   integer neighbours and 0; for an analog input each number, one value
   between neighbours, one beyond each end, and 0 (what an unconnected input
   reads);
@@ -120,29 +120,36 @@ def roots(names: frozenset) -> frozenset:
     return frozenset(name.split(".", 1)[0] for name in names)
 
 
-def compared_constants(program: Program, names: frozenset, number_value) -> set:
+def compared_constants(program: Program, names: frozenset, number_value,
+                       atoms: tuple = (), atom_scope=None) -> set:
     """The numbers an expression mentioning ``names`` is compared with anywhere in the code
-    (``number_value(expr, scope)``: the num a literal or CONST denotes, else None)."""
+    or in a property's atom (``atoms``, read in ``atom_scope``); ``number_value(expr,
+    scope)``: the num a literal or CONST denotes, else None."""
     numbers: set = set()
     for routine in program.routines:
-        if routine.ast is None:
-            continue
-        scope = routine.scope
-        for node, _ in ast.walk(routine.ast):
-            if isinstance(node, ast.Binary) and node.op in COMPARISONS:
-                for side, other in ((node.left, node.right), (node.right, node.left)):
-                    value = number_value(other, scope)
-                    if value is not None and mentions(side, names):
-                        numbers.add(value)
-            elif isinstance(node, ast.Test) and mentions(node.subject, names):
-                values = (number_value(v, scope) for case in node.cases for v in case.values)
-                numbers.update(v for v in values if v is not None)
-            elif isinstance(node, ast.ProcedureCall) and node.name.key in WAITS:
-                values = [arg.value for arg in node.args
-                          if arg.kind == ast.REQUIRED and arg.name is None]
-                if len(values) == 2 and mentions(values[0], names):
-                    value = number_value(values[1], scope)
-                    if value is not None:
-                        numbers.add(value)
+        if routine.ast is not None:
+            numbers |= _constants_in(routine.ast, routine.scope, names, number_value)
+    for expr in atoms:
+        numbers |= _constants_in(expr, atom_scope, names, number_value)
     return numbers
 
+
+def _constants_in(root, scope, names: frozenset, number_value) -> set:
+    numbers: set = set()
+    for node, _ in ast.walk(root):
+        if isinstance(node, ast.Binary) and node.op in COMPARISONS:
+            for side, other in ((node.left, node.right), (node.right, node.left)):
+                value = number_value(other, scope)
+                if value is not None and mentions(side, names):
+                    numbers.add(value)
+        elif isinstance(node, ast.Test) and mentions(node.subject, names):
+            values = (number_value(v, scope) for case in node.cases for v in case.values)
+            numbers.update(v for v in values if v is not None)
+        elif isinstance(node, ast.ProcedureCall) and node.name.key in WAITS:
+            values = [arg.value for arg in node.args
+                      if arg.kind == ast.REQUIRED and arg.name is None]
+            if len(values) == 2 and mentions(values[0], names):
+                value = number_value(values[1], scope)
+                if value is not None:
+                    numbers.add(value)
+    return numbers

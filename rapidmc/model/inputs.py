@@ -108,7 +108,7 @@ def _check_domains(program: Program, domains: dict, read: Optional[frozenset],
     atom_reads = None if atoms.observes_signal_data else frozenset(atoms.observed)
     atom_data = None if atoms.observed_data is None else frozenset(atoms.observed_data)
     defaults = default_domains(program, needed, atom_reads, atom_data, atoms.observes_robot,
-                               exact_only)
+                               exact_only, tuple(atoms.expressions), atoms.scope)
     missing = [Diagnostic(DOMAIN, f"free {signal.kind} input '{signal.name}' needs a finite set "
                           f"of values: give --input-domain {signal.name}=v1,v2,... (or drive it "
                           "from an environment model)", signal.span,
