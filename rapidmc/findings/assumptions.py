@@ -311,8 +311,8 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
                              f"({_where(data.span)})")
         if chosen is not None and chosen.awaited_at is not None:
             yield Assumption(OTHER_WRITER, data.name,
-                             f"PERS {data.name}: no write of the loaded code ends the WaitUntil "
-                             f"at {chosen.awaited_at}, so {chosen.also_written_by} writes it "
+                             f"PERS {data.name}: no write of the loaded code ends the "
+                             f"{chosen.awaited_at}, so {chosen.also_written_by} writes it "
                              f"too (not the values the loaded code writes); in waits and loop "
                              f"conditions it reads the stored value or "
                              f"{chosen.describe()}{_whole_fixed(program, data)} "
