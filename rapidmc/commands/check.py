@@ -225,7 +225,13 @@ def _check(args: argparse.Namespace) -> int:
     if entries.every_entry(args):
         return _check_every_entry(args)
     known = baseline_options.read_known(args, "check")
-    report = api.check_model(prepare_model(args), progress=lambda: _progress(args.quiet))
+    try:
+        model = prepare_model(args)
+    except UserError as exc:       # a library (no main): each routine is an entry
+        if args.entry != "main" or not entries.missing_main(exc) or not entries.is_library(args):
+            raise
+        return _check_every_entry(args)
+    report = api.check_model(model, progress=lambda: _progress(args.quiet))
     results, describer, warnings = report.results, report.describer, report.warnings
     gated, known_sources = _new_findings(args, report, known)
     # the gates (exit code, SARIF, Code Quality, JUnit) leave out what the baseline records;
