@@ -163,3 +163,18 @@ def test_a_library_routine_a_main_program_calls_is_no_entry(tmp_path):
     code, out, _ = run(["check", str(program), "--entry", "all", "--format", "json", "--quiet"])
     assert code == 0
     assert [e["entry"] for e in json.loads(out)["entries"]] == ["main", "Half"]
+
+
+def test_procedures_without_main_are_each_an_entry_by_default(tmp_path):
+    """Module files without main, whose procedures an operator starts by hand: each
+    procedure no routine calls is an entry (as with --entry all), instead of RMC211."""
+    program = tmp_path / "prog.mod"
+    program.write_text("MODULE M\n  VAR num n := 0;\n  PROC rPick()\n    n := 1;\n  ENDPROC\n"
+                       "  PROC rPlace()\n    n := 1 / n;\n  ENDPROC\nENDMODULE\n")
+    code, out, err = run(["check", str(program), "--quiet"])
+    assert code == 1, err                   # rPlace divides by the 0 n starts with
+    headings = [line for line in out.splitlines() if line.startswith("entry ")]
+    assert headings == ["entry rPick:", "entry rPlace:"]
+    # --entry names one of them as before
+    code, out, _ = run(["check", str(program), "--entry", "rPick", "--quiet"])
+    assert code == 0 and "entry " not in out

@@ -12,7 +12,8 @@ reached only when no entry's search ran it, and only when every search was compl
 Library routines (FUNCs, procedures with parameters) that no routine calls are entries
 too, each through a driver procedure that chooses its arguments as inputs
 (``library_entries``), after the service routines; a program of module files without a
-``main`` is checked this way by default (a library), every routine an entry.
+``main`` is checked this way by default, every routine no routine calls an entry (a
+library, or procedures an operator starts by hand).
 """
 from __future__ import annotations
 
@@ -26,7 +27,7 @@ from ..diagnostics import (EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED, NEVER_REACHED, 
                            Diagnostic, UserError)
 from ..findings.coverage import ANY_INPUT, coverage_warnings, service_routines
 from ..findings.tried_inputs import called_routines
-from .library_entries import library_entries, write_driver
+from .library_entries import library_entries, start_procedures, write_driver
 
 EVERY_ENTRY = "ALL"
 
@@ -64,10 +65,12 @@ def check_every_entry(args: argparse.Namespace,
     try:
         first = prepare(_with_entry(args, "main"))
     except UserError as exc:
-        if not checked or not missing_main(exc):
+        if not missing_main(exc) or not is_library(args):
             raise
-        first = None                                  # a library: no main
+        first = None                          # no main: every routine an entry
     starts = [(entry.routine, entry.driver) for entry in checked]
+    if first is None:
+        starts = [(name, name) for name in start_procedures(args.files)] + starts
     if first is not None:
         program = first.program
         entry = program.routines[program.entry]
@@ -98,8 +101,9 @@ def missing_main(exc: UserError) -> bool:
 
 def is_library(args: argparse.Namespace) -> bool:
     """Module files without ``main`` whose routines can be checked one by one (the default
-    of ``check`` for a library)."""
-    return bool(library_entries(args.files))
+    of ``check`` for a library, or for procedures an operator starts by hand)."""
+    return any(entry.driver for entry in library_entries(args.files)) \
+        or bool(start_procedures(args.files))
 
 
 def _with_entry(args: argparse.Namespace, entry: str) -> argparse.Namespace:

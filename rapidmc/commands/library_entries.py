@@ -55,16 +55,32 @@ class LibraryEntry:
 def library_entries(files: list) -> list[LibraryEntry]:
     """The library routines of the module ``files`` (none for a backup folder), in
     program order."""
+    return [_entry(routine) for routine in _uncalled(files)
+            if routine.kind == ast.FUNC or (routine.kind == ast.PROC and any(
+                not p.optional for p in routine.parameters))]
+
+
+def start_procedures(files: list) -> list[str]:
+    """The global procedures without parameters of the module ``files`` that no routine
+    calls (what a program without ``main`` is started from by hand), in program order."""
+    return [routine.name.text for routine in _uncalled(files)
+            if routine.kind == ast.PROC and not any(not p.optional for p in routine.parameters)]
+
+
+def _uncalled(files: list) -> list:
+    """The global routines of the module ``files`` that no routine calls by name (none for
+    a backup folder, whose tasks ``--entry`` does not range over)."""
     if any(Path(path).is_dir() for path in files):
         return []
     modules = [module for path in files for module in parse_file(path)]
     routines = [routine for module in modules for routine in module.routines]
     called = {node.name.key for routine in routines for node, _ in ast.walk(routine)
               if isinstance(node, (ast.ProcedureCall, ast.FunctionCall))}
-    return [_entry(routine) for routine in routines
-            if not routine.local and routine.name.key not in called
-            and (routine.kind == ast.FUNC or (routine.kind == ast.PROC and any(
-                not p.optional for p in routine.parameters)))]
+    late = any(isinstance(node, ast.LateBindingCall) for routine in routines
+               for node, _ in ast.walk(routine))
+    return [routine for routine in routines
+            if not routine.local and routine.name.key not in called and routine.kind != ast.TRAP
+            and not (late and routine.kind == ast.PROC)]
 
 
 def _entry(routine: ast.Routine) -> LibraryEntry:

@@ -255,7 +255,7 @@ def _data_domain(routines, call) -> Optional[MessageDomain]:
                 if isinstance(node, ast.Test) else ()
             for side, other in pairs:
                 element = _literal_element(side, target.name.key)
-                number = number_value(other, routine.scope)
+                number = _byte_value(other, routine.scope)
                 if element is not None and number is not None:
                     compared.setdefault(element, set()).add(number)
     wanted = _literal_number(_named_argument(call, "READNOOFBYTES"))
@@ -277,6 +277,28 @@ def _data_domain(routines, call) -> Optional[MessageDomain]:
         f"; {length} bytes, the others 0, and one message of bytes ff"
     return MessageDomain(call.span, RECEIVES[call.name.key], SOCKET, tuple(dict.fromkeys(messages)),
                          False, reason)
+
+
+BYTE_BASES = {"CHAR": None, "HEX": 16, "OKT": 8, "BIN": 2}    # StrToByte's switches
+
+
+def _byte_value(expr, scope) -> Optional[float]:
+    """The number a literal or CONST denotes, or that ``StrToByte("c" \\Char)`` of a string
+    literal gives (the character's code; ``\\Hex``, ``\\Okt``, ``\\Bin``: the digits in that
+    base; else decimal digits), as byte protocols write their commands."""
+    value = number_value(expr, scope)
+    if value is not None or not (isinstance(expr, ast.FunctionCall)
+                                 and expr.name.key == "STRTOBYTE" and expr.args):
+        return value
+    text = expr.args[0].value
+    if not isinstance(text, ast.StringLiteral):
+        return None
+    switches = [a.name.key for a in expr.args[1:] if a.name is not None]
+    base = next((BYTE_BASES[key] for key in switches if key in BYTE_BASES), 10)
+    try:
+        return float(ord(text.value)) if base is None else float(int(text.value, base))
+    except (TypeError, ValueError):
+        return None
 
 
 def _literal_element(expr, name: str) -> Optional[int]:

@@ -1,12 +1,14 @@
 MODULE DataServer
     ! A server reads a 2-byte command into an array of byte: byte 1 is the command
-    ! (1: pick, 2: place), byte 2 a count; it answers with a 3-byte status.
+    ! (1: pick, 2: place, "s" written as StrToByte: stop), byte 2 a count; it answers with
+    ! a 3-byte status.
     VAR socketdev server;
     VAR socketdev client;
     VAR byte request{4};
     VAR byte reply{3} := [0, 0, 0];
     VAR num picked := 0;
     VAR num placed := 0;
+    VAR num stopped := 0;
 
     PROC main()
         SocketCreate server;
@@ -22,6 +24,8 @@ MODULE DataServer
             ELSEIF request{1} = 2 THEN
                 placed := 1;
                 reply{1} := 2;
+            ELSEIF request{1} = StrToByte("s" \Char) THEN
+                stopped := 1;
             ELSE
                 reply{1} := 255;
             ENDIF
