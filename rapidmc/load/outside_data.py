@@ -172,6 +172,8 @@ def outside_data(linker) -> dict:
     if not chosen:
         return {}
     compared = _compared_constants(routines, chosen)
+    chosen = {slot: data for slot, data in chosen.items()
+              if not _is_stub(data.span) or _awaits_values(data, compared.get((slot, ())))}
     found = {}
     for slot, data in chosen.items():
         domains = {}
@@ -247,6 +249,15 @@ def _flag_like(data) -> bool:
     record (a tooldata, a wobjdata, a robtarget) is the cell's configuration: it keeps its
     neutral value, or every bool component would double the states."""
     return getattr(data.type, "key", None) in VALUE_KEYS
+
+
+def _awaits_values(data, compared: Optional[list]) -> bool:
+    """Whether a stub's flag-like PERS is data another party writes rather than a named
+    constant of a module not given: a bool, or a num or string the code compares with a
+    constant (``smIndx = "d"``, ``TEST pathChoice CASE 1``).  One compared only with other
+    data (``IF nAxis = axisX``, ``CASE STATION_LOAD:``) stands for a constant: it keeps the
+    value the stubs gave it (``stubs``: distinct numbers for names compared in turn)."""
+    return getattr(data.type, "key", None) == "BOOL" or bool(compared and compared[0])
 
 
 def _is_stub(span) -> bool:
