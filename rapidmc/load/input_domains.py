@@ -82,9 +82,9 @@ class Assumed:
         """The sentence beside a verdict for a stated domain (``findings.assumptions``)."""
         span = self.signal.span
         place = f" ({Path(span.file).name}:{span.line})" if span is not None else ""
-        return (f"input {self.signal.name} takes only {describe(self.values)}: singled out "
-                f"from the code, not every value it may have (RMC515 says why); "
-                f"--input-domain gives others{place}")
+        return (f"input {self.signal.name} takes only {describe(self.values)}: the verdict "
+                f"covers these values, singled out from the code, not every value it may have "
+                f"(RMC515 says why; --input-domain gives others){place}")
 
 
 @dataclass(frozen=True)
