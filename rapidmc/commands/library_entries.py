@@ -32,7 +32,7 @@ from ..diagnostics import DOMAIN_ASSUMED, Diagnostic
 from ..syntax import parse_file
 
 DRIVER_FILE = "rapidmc_entries.mod"
-DRIVER_PREFIX = "rapidmc_entry_"
+DRIVER_PREFIX = "rapidmc_entry"
 ANALOG = ("NUM", "DNUM")
 
 
@@ -55,16 +55,16 @@ class LibraryEntry:
 def library_entries(files: list) -> list[LibraryEntry]:
     """The library routines of the module ``files`` (none for a backup folder), in
     program order."""
-    return [_entry(routine) for routine in _uncalled(files)
-            if routine.kind == ast.FUNC or (routine.kind == ast.PROC and any(
-                not p.optional for p in routine.parameters))]
+    chosen = [routine for routine in _uncalled(files)
+              if routine.kind == ast.FUNC or (routine.kind == ast.PROC and routine.parameters)]
+    return [_entry(routine, number) for number, routine in enumerate(chosen, 1)]
 
 
 def start_procedures(files: list) -> list[str]:
     """The global procedures without parameters of the module ``files`` that no routine
     calls (what a program without ``main`` is started from by hand), in program order."""
     return [routine.name.text for routine in _uncalled(files)
-            if routine.kind == ast.PROC and not any(not p.optional for p in routine.parameters)]
+            if routine.kind == ast.PROC and not routine.parameters]
 
 
 def _uncalled(files: list) -> list:
@@ -83,7 +83,10 @@ def _uncalled(files: list) -> list:
             and not (late and routine.kind == ast.PROC)]
 
 
-def _entry(routine: ast.Routine) -> LibraryEntry:
+def _entry(routine: ast.Routine, number: int) -> LibraryEntry:
+    """The driver of ``routine``, the ``number``-th library entry (RAPID names are at most
+    32 characters: the driver's own names are numbered, the signals named after the
+    routine and its parameter)."""
     name = routine.name.text
     refused = [p for p in routine.parameters if not p.optional
                and (p.mode == "PERS" or p.array_rank > 0)]
@@ -93,14 +96,14 @@ def _entry(routine: ast.Routine) -> LibraryEntry:
         return LibraryEntry(name, None, (), "", f"not checked: {p.name.text} is {why}, which "
                             "no driver can pass", routine.span)
     signals, lines, passed, said = [], [], [], []
-    for p in (p for p in routine.parameters if not p.optional):
-        local = f"arg_{p.name.text}"
+    for position, p in enumerate((p for p in routine.parameters if not p.optional), 1):
+        local = f"arg{position}"
         type_name = p.type.name.text
         lines.append(f"    VAR {type_name} {local};")
         signal = f"{name}_{p.name.text}"
         key = p.type.name.key
         if key in ANALOG or key == "BOOL":
-            variable = f"sig_{name}_{p.name.text}"
+            variable = f"sig{number}_{position}"
             signals.append(f"  VAR {'signaldi' if key == 'BOOL' else 'signalai'} {variable};")
             lines.append(f"    AliasIO \"{signal}\", {variable};")
             value = f"DInput({variable}) = 1" if key == "BOOL" else \
@@ -117,7 +120,7 @@ def _entry(routine: ast.Routine) -> LibraryEntry:
         lines.append(f"    result := {name}({arguments});")
     else:
         lines.append(f"    {name}{' ' + arguments if arguments else ''};")
-    driver = DRIVER_PREFIX + name
+    driver = f"{DRIVER_PREFIX}{number}"
     declarations = [line for line in lines if line.lstrip().startswith("VAR ")]
     statements = [line for line in lines if not line.lstrip().startswith("VAR ")]
     text = "\n".join([f"  PROC {driver}()"] + declarations + statements + ["  ENDPROC"])
