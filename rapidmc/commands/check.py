@@ -269,6 +269,14 @@ def _check_every_entry(args: argparse.Namespace) -> int:
         raise error(USAGE, "--entry all gives a verdict table per entry; it does not combine "
                     "with baselines (check each entry with --entry NAME for those)")
     checked = entries.check_every_entry(args, prepare_model, lambda: _progress(args.quiet))
+    try:
+        return _report_every_entry(args, checked)
+    finally:
+        checked.remove_drivers()
+
+
+def _report_every_entry(args: argparse.Namespace, checked: "entries.EntryChecks") -> int:
+    """The reports of ``--entry all``, in every format asked for; the exit code."""
     tables, warnings = checked.tables(), checked.warnings
     exit_code = checked.exit_code(args.fail_on_vacuous)
     if args.html:

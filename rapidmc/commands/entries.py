@@ -18,6 +18,7 @@ library, or procedures an operator starts by hand).
 from __future__ import annotations
 
 import argparse
+import shutil
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
@@ -44,6 +45,12 @@ class EntryChecks:
 
     entries: list[tuple[str, api.CheckReport]]
     warnings: list[Diagnostic]
+    drivers: tuple = ()          # the library entries' driver modules (removed when reported)
+
+    def remove_drivers(self) -> None:
+        """Remove the drivers' temporary folders, once every report is written."""
+        for path in self.drivers:
+            shutil.rmtree(Path(path).parent, ignore_errors=True)
 
     def exit_code(self, fail_on_vacuous: bool = False) -> int:
         codes = {report.exit_code(fail_on_vacuous) for _, report in self.entries}
@@ -84,7 +91,8 @@ def check_every_entry(args: argparse.Namespace,
         entries.append((name, api.check_model(model, progress=progress)))
     program = programs[0]
     notes = [library_entry.note() for library_entry in library]
-    return EntryChecks(entries, notes + _merged_warnings(program, entries))
+    return EntryChecks(entries, notes + _merged_warnings(program, entries),
+                       tuple(drivers.values()))
 
 
 def _with_driver(args: argparse.Namespace, start: str, drivers: dict) -> argparse.Namespace:
