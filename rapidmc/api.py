@@ -46,7 +46,7 @@ from .diagnostics import (AUTOMATON, DISTRIBUTED_SCOPE, ENVIRONMENT, EXIT_OK, EX
                           TRACE_REPLAY, USAGE, Diagnostic, SourceCache,
                           error)
 from .diagnostics.quoting import one_line, quoted
-from .findings.assumptions import assumptions, for_verdict
+from .findings.assumptions import assumptions, for_verdict, stated_domains
 from .findings.explored import ExploredFacts
 from .findings.fixed_readings import fixed_readings
 from .findings.start_positions import named_targets
@@ -101,6 +101,9 @@ class CheckOptions:
     tp_answers: tuple = (1.0, 2.0, 3.0)
     fk_answers: tuple = (1.0, 2.0, 3.0, 4.0, 5.0)
     input_domains: Mapping[str, tuple] = field(default_factory=dict)   # signal -> values
+    # refuse (RMC502) a free AI/GI input with no exact default, instead of taking the
+    # values the program singles out as a stated assumption (load.stated_domains)
+    exact_input_domains: bool = False
     socket_messages: tuple = ()            # () keeps the default: one empty message
     socket_closures: bool = False
     socket_timeouts: bool = True
@@ -252,7 +255,8 @@ def _check_config(program: Program, atoms: AtomCompiler, options: CheckOptions,
                   messages: tuple) -> tuple:
     """The environment a check offers the program: the options' inputs and answers, the
     derived ``messages`` per reading site; and the default input domains assumed."""
-    domains, assumed = free_input_domains(program, atoms, options.input_domains)
+    domains, assumed = free_input_domains(program, atoms, options.input_domains,
+                                          options.exact_input_domains)
     config = CheckConfig(program, options.tp_answers, options.fk_answers, domains,
                          observed=observed_inputs(program, atoms))
     config.time_check = time_check       # the running search's time limit, inside a step
@@ -547,7 +551,8 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
             searches.facts.statements.executed |= _start_probe(model)
         if searches.facts.complete and searches.facts.waits_for_other_tasks():
             searches.facts.statements.executed |= _shared_data_probe(model, bound)
-    resting_on = assumptions(model.program, model.config.robot_untracked)
+    resting_on = stated_domains(model.assumed) \
+        + assumptions(model.program, model.config.robot_untracked)
     results = [replace(r, assumes=for_verdict(resting_on, r.result, model.describer))
                for r in results]
     return CheckReport(results, _findings(model, results, searches.facts, searches.notes),
@@ -600,8 +605,9 @@ class _Searches:
                            storage=options.storage)
         exact = [site_key(d.site) for d in model.messages if d.exact]
         self.facts = ExploredFacts(model.program, [prop.formula for prop in model.properties],
-                                   model.atoms, sampled_inputs(model.program, exact,
-                                                                  options.socket_closures))
+                                   model.atoms, sampled_inputs(
+                                       model.program, exact, options.socket_closures,
+                                       frozenset().union(*(a.read_as for a in model.assumed))))
         # Coverage and vacuity watch the run-time error search (merged steps name every line
         # they run); --compact / --bitstate searches are never complete, so they watch nothing;
         # nor do distributed searches (their states are expanded in other processes).

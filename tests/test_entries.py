@@ -17,7 +17,9 @@ from rapidmc.cli import main
 ROOT = Path(__file__).resolve().parent.parent
 PROGRAM = ROOT / "tests" / "entries" / "service_routines.mod"
 JUNIT_SCHEMA = xmlschema.XMLSchema(str(ROOT / "tests" / "data" / "jenkins-junit.xsd"))
-ENTRIES = ["main", "CalibrateCamera", "TestGripper"]
+# the entry, the service routines, then the routine with a parameter no routine calls
+# (a library routine: commands/library_entries.py)
+ENTRIES = ["main", "CalibrateCamera", "TestGripper", "Unused"]
 
 
 def run(argv: list[str]) -> tuple[int, str, str]:
@@ -50,8 +52,10 @@ def test_every_entry_gets_its_own_verdict_table():
     calibrate = out.split("entry CalibrateCamera:")[1].split("entry TestGripper:")[0]
     assert "no_runtime_error: VIOLATED" in calibrate
     assert "no_runtime_error: HOLDS" in out.split("entry CalibrateCamera:")[0]
-    # coverage over every entry together: only the routine no entry runs is left
-    assert err.count("[RMC701]") == 1 and "routine Unused never runs" in err
+    # coverage over every entry together: Unused is an entry too, so every line runs
+    assert "[RMC701]" not in err
+    assert "note: entry Unused: called once with offset the free analog input Unused_offset" \
+        in err
 
 
 def test_entry_all_in_json():
@@ -63,8 +67,9 @@ def test_entry_all_in_json():
                 for entry in document["entries"]}
     assert verdicts["CalibrateCamera"]["no_runtime_error"] == "VIOLATED"
     assert verdicts["TestGripper"] == {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS"}
-    assert [w["message"] for w in document["warnings"]] == [
-        "never reached under any input (routine Unused never runs)"]
+    assert [w["message"] for w in document["warnings"] if w["code"] == "RMC701"] == []
+    assert "entry Unused: called once with offset the free analog input Unused_offset" in [
+        w["message"] for w in document["warnings"]]
 
 
 def test_entry_all_in_sarif_is_a_run_per_entry():
@@ -73,7 +78,7 @@ def test_entry_all_in_sarif_is_a_run_per_entry():
     assert code == 1
     assert [run["automationDetails"]["id"] for run in runs] == [f"entry/{n}" for n in ENTRIES]
     failed = [[r["ruleId"] for r in run["results"] if r["level"] == "error"] for run in runs]
-    assert failed == [[], ["no_runtime_error"], []]
+    assert failed == [[], ["no_runtime_error"], [], []]
 
 
 def test_entry_all_in_junit_is_a_valid_suite_per_entry(tmp_path):
@@ -84,15 +89,16 @@ def test_entry_all_in_junit_is_a_valid_suite_per_entry(tmp_path):
     suites = root.findall("testsuite")
     assert [s.get("name") for s in suites] == [
         f"{PROGRAM.name} (entry {name})" for name in ENTRIES]
-    assert [s.get("failures") for s in suites] == ["0", "1", "0"]
-    assert root.get("tests") == "6" and root.get("failures") == "1"
+    assert [s.get("failures") for s in suites] == ["0", "1", "0", "0"]
+    assert root.get("tests") == "8" and root.get("failures") == "1"
 
 
 def test_entry_all_writes_a_page_per_entry(tmp_path):
     page = tmp_path / "report.html"
     run(["check", PROGRAM.name, "--entry", "all", "--html", str(page), "--quiet"])
     written = sorted(p.name for p in tmp_path.iterdir())
-    assert written == ["report.CalibrateCamera.html", "report.TestGripper.html", "report.html"]
+    assert written == ["report.CalibrateCamera.html", "report.TestGripper.html",
+                       "report.Unused.html", "report.html"]
 
 
 def test_a_backups_service_routines_are_its_main_tasks():
@@ -115,3 +121,60 @@ def test_entry_all_in_code_quality_names_the_entry_of_each_issue():
     assert violated == ["entry CalibrateCamera: no_runtime_error is violated: no reachable "
                         "uncaught run-time error"]
     assert len({i["fingerprint"] for i in issues}) == len(issues)
+
+
+LIBRARY = ROOT / "tests" / "entries" / "library" / "PartLib.mod"
+LIBRARY_ENTRIES = ["Ratio", "Slot", "Label", "Ready"]
+
+
+@pytest.mark.parametrize("entry", [[], ["--entry", "all"]])
+def test_a_library_without_main_is_checked_routine_by_routine(entry):
+    """A module of FUNCs and procedures with parameters (no main): each is an entry, called
+    by a driver with its arguments as free inputs; the default and --entry all agree."""
+    code, out, err = run(["check", str(LIBRARY), "--format", "json", "--quiet", *entry])
+    document = json.loads(out)
+    assert code == 1                        # Ratio divides by a width of 0
+    assert [e["entry"] for e in document["entries"]] == LIBRARY_ENTRIES
+    verdicts = {e["entry"]: {p["name"]: p["verdict"] for p in e["properties"]}
+                for e in document["entries"]}
+    assert verdicts["Ratio"]["no_runtime_error"] == "VIOLATED"
+    assert all(v == {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS"}
+               for name, v in verdicts.items() if name != "Ratio")
+    ratio = document["entries"][0]["properties"][0]
+    assert "ERR_DIVZERO" in json.dumps(ratio["trace"]) or "ERR_DIVZERO" in ratio["reason"]
+    notes = [w["message"] for w in document["warnings"] if w["code"] == "RMC515"]
+    # how each entry's arguments were chosen, and the routine that could not be driven
+    assert "entry Label: called once with large the free digital input Label_large; name " \
+        "its string's neutral value" in notes
+    assert "entry Ready: called once, with no arguments" in notes
+    assert "entry Reset: not checked: counter is a PERS parameter, which no driver can pass" \
+        in notes
+    # the width's values are stated beside the verdicts (no exact default: a divisor)
+    assert any(a.startswith("input Ratio_width takes only values -1..1")
+               for a in ratio["assumes"])
+
+
+def test_a_library_routine_a_main_program_calls_is_no_entry(tmp_path):
+    """A FUNC the program's own code calls is checked through that code, not again."""
+    program = tmp_path / "prog.mod"
+    program.write_text("MODULE M\n  VAR num x := 0;\n  PROC main()\n    x := Twice(2);\n"
+                       "  ENDPROC\n  FUNC num Twice(num v)\n    RETURN 2 * v;\n  ENDFUNC\n"
+                       "  FUNC num Half(num v)\n    RETURN v / 2;\n  ENDFUNC\nENDMODULE\n")
+    code, out, _ = run(["check", str(program), "--entry", "all", "--format", "json", "--quiet"])
+    assert code == 0
+    assert [e["entry"] for e in json.loads(out)["entries"]] == ["main", "Half"]
+
+
+def test_procedures_without_main_are_each_an_entry_by_default(tmp_path):
+    """Module files without main, whose procedures an operator starts by hand: each
+    procedure no routine calls is an entry (as with --entry all), instead of RMC211."""
+    program = tmp_path / "prog.mod"
+    program.write_text("MODULE M\n  VAR num n := 0;\n  PROC rPick()\n    n := 1;\n  ENDPROC\n"
+                       "  PROC rPlace()\n    n := 1 / n;\n  ENDPROC\nENDMODULE\n")
+    code, out, err = run(["check", str(program), "--quiet"])
+    assert code == 1, err                   # rPlace divides by the 0 n starts with
+    headings = [line for line in out.splitlines() if line.startswith("entry ")]
+    assert headings == ["entry rPick:", "entry rPlace:"]
+    # --entry names one of them as before
+    code, out, _ = run(["check", str(program), "--entry", "rPick", "--quiet"])
+    assert code == 0 and "entry " not in out

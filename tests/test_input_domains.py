@@ -113,8 +113,11 @@ ENDMODULE
 
 
 def _refusal(tmp_path, text: str, properties=(), **options) -> str:
+    """The note of the RMC502 an input with no exact default gets with --exact-input-domains
+    (without it, the values of ``stated_domains``: tests/test_stated_domains.py)."""
     with pytest.raises(UserError) as caught:
-        api.prepare(_load(tmp_path, text), properties, api.CheckOptions(**options))
+        api.prepare(_load(tmp_path, text), properties,
+                    api.CheckOptions(exact_input_domains=True, **options))
     [diagnostic] = caught.value.diagnostics
     assert diagnostic.code.code == "RMC502"
     [note] = diagnostic.notes
@@ -619,7 +622,7 @@ def test_inputs_stored_into_module_data_keep_the_verdicts_of_the_tracked_robot(t
 
 def _refusal_notes(tmp_path, text: str, properties) -> str:
     with pytest.raises(UserError) as caught:
-        api.prepare(_load(tmp_path, text), properties, api.CheckOptions())
+        api.prepare(_load(tmp_path, text), properties, api.CheckOptions(exact_input_domains=True))
     return " ".join(note for d in caught.value.diagnostics for note in d.notes)
 
 

@@ -438,17 +438,21 @@ def test_a_mailbox_another_task_fills_is_reached_by_the_shared_data_probe(tmp_pa
     assert coverage(report) == ["never reached under any input"]
 
 
-def test_without_the_shared_data_probe_the_mailbox_code_is_unreached(tmp_path):
+def test_without_the_shared_data_probe_the_mailbox_polls_are_the_clients(tmp_path):
     """The same program built without ``load_program`` (no files to load again): the
-    probe cannot run, and the warning names the data the code waits for (the code after
-    the endless loop is dead whatever it holds)."""
+    probe cannot run, yet the mailbox code is reached.  The IFs in the loop poll
+    ``command`` for "pick" and "place", which no write of the loaded code gives (it writes
+    only ""), so the check itself takes a client as writing it too
+    (``load.awaited_from_outside``: a poll), as for the WaitUntil on ``reply``; only the
+    code after the endless loop stays dead."""
     path = tmp_path / "mailbox.mod"
     path.write_text(MAILBOX)
     program = api.load_program([str(path)])
     program.load_arguments = None
-    assert coverage(api.check(program)) == [
-        "lines 9-19 of main are never reached with no other task writing the persistent "
-        "data (command at line 8)", "never reached under any input"]
+    report = api.check(program)
+    assert coverage(report) == ["never reached under any input"]
+    assert any("PERS command: no write of the loaded code ends the poll at mailbox.mod:9"
+               in text for text in report.results[0].assumes), report.results[0].assumes
 
 
 GUARDED_MAILBOX = """MODULE Guarded
@@ -476,7 +480,7 @@ GUARDED_MAILBOX = """MODULE Guarded
                 IF command = "pick" THEN
                     picked := picked + 1;
                 ENDIF
-                command := "";
+                command := StrPart(command, 1, 0);
             ENDWHILE
             WaitTime 0.1;
         ENDWHILE
@@ -498,7 +502,9 @@ def test_a_probe_the_inputs_make_broad_searches_again_with_them_held(
     routine).  A probe stopped by its bound searches again with those inputs held (no
     interrupt fires: a cell whose signals stay put), and each line that search runs is
     reachable: the command's branch counts as reached.  A bound too small for that search
-    too leaves the branch reported, naming the data."""
+    too leaves the branch reported, naming the data.  (The mailbox is emptied by a computed
+    write, ``StrPart(command, 1, 0)``, so ``awaited_from_outside`` does not take its polls
+    as a client's: only the probe reaches the branch.)"""
     monkeypatch.setattr(api, "PROBE_STATES", probe_states)
     monkeypatch.setattr(api, "PROBE_GROWTH", 1)          # (the bound is PROBE_STATES)
     path = tmp_path / "guarded.mod"

@@ -41,7 +41,8 @@ def verdicts(out: str) -> dict[str, str]:
 
 
 def test_every_group_input_without_a_domain_is_named_in_one_run():
-    code, out, err = cli("check", HERE / "layer_palletizer.mod", "--quiet")
+    code, out, err = cli("check", HERE / "layer_palletizer.mod", "--quiet",
+                         "--exact-input-domains")
     assert code == 2 and out == ""
     named = [line for line in err.splitlines() if "[RMC502]" in line]
     assert len(named) == 3

@@ -83,7 +83,7 @@ def test_only_inputs_the_code_reads_need_a_domain():
     assert len(named) == 1 and "giPartType: values 0..15 (4-bit" in named[0]   # not giRecipe
     # a property that reads the unused input makes it needed again
     code, _, err = cli("check", BACKUP, "--all-tasks", "--quiet",
-                       "--input-domain", "giPartType=1",
+                       "--input-domain", "giPartType=1", "--exact-input-domains",
                        "--formula", 'no_recipe: G "giRecipe = 0"')
     assert code == 2 and "giRecipe" in err and "[RMC502]" in err
 

@@ -90,6 +90,11 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--input-domain", action="append", default=[], metavar="NAME=LIST",
                         help="finite values a free analog or group input may take, e.g. "
                              "AI1=0,5,10 (repeatable)")
+    parser.add_argument("--exact-input-domains", action="store_true",
+                        help="refuse (RMC502) a free analog or group input whose values the "
+                             "program does not fix exactly (default: it takes the numbers the "
+                             "code compares it with, their neighbours and its configured ends, "
+                             "and the verdicts say so under assumes:)")
     parser.add_argument("--socket-messages", action="append", default=[], metavar="TEXT",
                         help="a message SocketReceive may deliver (repeatable; default: one "
                              "empty message)")
@@ -164,6 +169,7 @@ def check_options(args: argparse.Namespace) -> api.CheckOptions:
         fk_answers=_numbers(args.fk_answers, "--fk-answers"),
         input_domains={name.upper(): _numbers(values, "--input-domain")
                        for name, values in _pairs(args.input_domain, "--input-domain").items()},
+        exact_input_domains=getattr(args, "exact_input_domains", False),
         socket_messages=tuple(args.socket_messages), socket_closures=args.socket_closures,
         socket_timeouts=not args.no_socket_timeouts, file_lines=tuple(args.file_lines),
         automata=_pairs(args.automaton, "--automaton"), backend=args.backend,
@@ -219,7 +225,13 @@ def _check(args: argparse.Namespace) -> int:
     if entries.every_entry(args):
         return _check_every_entry(args)
     known = baseline_options.read_known(args, "check")
-    report = api.check_model(prepare_model(args), progress=lambda: _progress(args.quiet))
+    try:
+        model = prepare_model(args)
+    except UserError as exc:       # a library (no main): each routine is an entry
+        if args.entry != "main" or not entries.missing_main(exc) or not entries.is_library(args):
+            raise
+        return _check_every_entry(args)
+    report = api.check_model(model, progress=lambda: _progress(args.quiet))
     results, describer, warnings = report.results, report.describer, report.warnings
     gated, known_sources = _new_findings(args, report, known)
     # the gates (exit code, SARIF, Code Quality, JUnit) leave out what the baseline records;
@@ -257,6 +269,14 @@ def _check_every_entry(args: argparse.Namespace) -> int:
         raise error(USAGE, "--entry all gives a verdict table per entry; it does not combine "
                     "with baselines (check each entry with --entry NAME for those)")
     checked = entries.check_every_entry(args, prepare_model, lambda: _progress(args.quiet))
+    try:
+        return _report_every_entry(args, checked)
+    finally:
+        checked.remove_drivers()
+
+
+def _report_every_entry(args: argparse.Namespace, checked: "entries.EntryChecks") -> int:
+    """The reports of ``--entry all``, in every format asked for; the exit code."""
     tables, warnings = checked.tables(), checked.warnings
     exit_code = checked.exit_code(args.fail_on_vacuous)
     if args.html:

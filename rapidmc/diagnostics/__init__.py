@@ -103,9 +103,12 @@ AMBIGUOUS_NAME = _code("RMC406", "ambiguous-name",
 
 # --- model checking (5xx) ---------------------------------------------------------
 STATE_LIMIT = _code("RMC501", "state-limit", "the search reached --max-states or --max-seconds")
-DOMAIN = _code("RMC502", "domain", "a nondeterministic input has no finite domain")
+DOMAIN = _code("RMC502", "domain", "a nondeterministic input has no finite domain (free AI/GI "
+               "inputs: with `--exact-input-domains` only)")
 DOMAIN_ASSUMED = _code("RMC515", "domain-assumed",
-                       "a free input's values were derived (its width, or the numbers it is compared with)")
+                       "a free input's values were derived (its width, or the numbers it is "
+                       "compared with), or, not exact, singled out from the program (named "
+                       "under `assumes:` too)")
 ENVIRONMENT = _code("RMC503", "environment", "the environment model is invalid")
 TRACE_REPLAY = _code("RMC504", "trace-replay", "a counterexample did not replay (internal)")
 OUTPUT_FILE = _code("RMC506", "output-file", "a report file (--junit, graph -o) cannot be written")

@@ -28,6 +28,9 @@ loaded module says for sure:
 * **barriers naming tasks not loaded**: a WaitSyncTask or SyncMoveOn whose task list
   names a task the check does not load takes it as arrived at once
   (``absent_partners``);
+* **free inputs' values singled out from the program**: an analog or group input with no
+  exact default takes the numbers the code compares it (or data computed from it) with,
+  their neighbours and its configured ends (``load.stated_domains``; ``stated_domains``);
 * **the robot's position left out of states**: where nothing but moves reads it
   (``model.robot_tracking``), moves leave the robot where it is; the verdicts are
   those of the tracked robot, but a counterexample shows the robot at its start
@@ -64,6 +67,7 @@ from .tried_inputs import start_position_reads, unmodelled_interrupt_orders
 STUB, READING, OTHER_WRITER = "stub", "fixed reading", "other writer"
 NO_INTERRUPT = "interrupt not modelled"
 ABSENT_TASK = "task not loaded"
+INPUT_DOMAIN = "input domain"
 UNTRACKED = "untracked"
 _IDENTIFIER = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
 _STRING_OR_COMMENT = re.compile(r'"(?:[^"]|"")*"|!.*$')
@@ -74,7 +78,7 @@ _HEAD_END = re.compile(r";|\b(?:THEN|DO|CASE|DEFAULT)\b", re.IGNORECASE)
 class Assumption:
     """One thing a verdict may rest on: its kind, the name it is about, and a sentence."""
 
-    kind: str                 # STUB, READING, OTHER_WRITER, NO_INTERRUPT, UNTRACKED, ABSENT_TASK
+    kind: str      # STUB, READING, OTHER_WRITER, NO_INTERRUPT, UNTRACKED, ABSENT_TASK, INPUT_DOMAIN
     name: str
     text: str
     # upper-case names besides ``name`` whose statements rest on it (a counterexample
@@ -116,6 +120,14 @@ def assumptions(program: Program, robot_untracked: bool = False) -> tuple[Assump
         found.append(UNTRACKED_ROBOT)
     found += _robot_start(program)
     return tuple(found)
+
+
+def stated_domains(assumed: tuple) -> tuple[Assumption, ...]:
+    """The free inputs whose values were not exact but singled out from the program
+    (``load.stated_domains``; ``input_domains.Assumed`` with ``exact`` False): a verdict
+    covers only those values."""
+    return tuple(Assumption(INPUT_DOMAIN, a.signal.name, a.assumption, a.mentions)
+                 for a in assumed if not a.exact)
 
 
 def _robot_start(program: Program) -> list[Assumption]:
@@ -299,8 +311,8 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
                              f"({_where(data.span)})")
         if chosen is not None and chosen.awaited_at is not None:
             yield Assumption(OTHER_WRITER, data.name,
-                             f"PERS {data.name}: no write of the loaded code ends the WaitUntil "
-                             f"at {chosen.awaited_at}, so {chosen.also_written_by} writes it "
+                             f"PERS {data.name}: no write of the loaded code ends the "
+                             f"{chosen.awaited_at}, so {chosen.also_written_by} writes it "
                              f"too (not the values the loaded code writes); in waits and loop "
                              f"conditions it reads the stored value or "
                              f"{chosen.describe()}{_whole_fixed(program, data)} "

@@ -101,6 +101,9 @@ START = "the robot starting at the check's home position"
 # data written from outside (load.outside_data) that the code does more with than compare
 # with constants: its domain (the constants compared, one other value, ...) is a sample
 OUTSIDE_VALUES = "values written from outside"
+# a free analog or group input with no exact default (load.stated_domains): the values the
+# code singles out are a sample of those it may read
+STATED = "assumed input values"
 PHRASES = (PEERS_OPEN, PORT_FREE, FIXED, UNSET, UNWRITTEN, EGM_UP,
            NO_INTERRUPT, START)   # kinds that are phrases of their own
 
@@ -115,12 +118,13 @@ class TriedInput:
 
 
 def sampled_inputs(program: Program, exact: Iterable[tuple] = (),
-                   closures: bool = False) -> tuple:
+                   closures: bool = False, stated: frozenset = frozenset()) -> tuple:
     """Every reading instruction of the program's code whose input is sampled, in source
     order; ``exact``: (file, line, column) of sites whose domain covers every value;
     ``closures``: whether the check lets peers close their sockets (else the socket
     instructions that would raise ERR_SOCK_CLOSED are named, when an ERROR handler could
-    catch it)."""
+    catch it); ``stated``: upper-case names that read an input whose values are assumed,
+    not exact (``load.stated_domains``)."""
     exact = set(exact)
     routines = [routine for routine in program.routines
                 if routine.ast is not None and routine.namespace != ENVIRONMENT_NAMESPACE]
@@ -129,8 +133,12 @@ def sampled_inputs(program: Program, exact: Iterable[tuple] = (),
     handled = not closures and has_handler
     found = []
     for routine in routines:
-        for node, _ in ast.walk(routine.ast):
-            if not isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
+        for node, parents in ast.walk(routine.ast):
+            if not isinstance(node, (ast.ProcedureCall, ast.FunctionCall, ast.NameRef)):
+                continue
+            if isinstance(node, ast.NameRef):
+                if node.name.key in stated and not _binds_signal(parents):
+                    found.append(TriedInput(STATED, node.name.text, node.span))
                 continue
             if node.name.key in SAMPLED \
                     and (node.span.file, node.span.line, node.span.column) not in exact:
@@ -154,6 +162,11 @@ def sampled_inputs(program: Program, exact: Iterable[tuple] = (),
     found += [TriedInput(OUTSIDE_VALUES, ref.name.text, ref.span)
               for ref in sampled_outside_reads(program)]
     return tuple(sorted(set(found), key=lambda t: (t.span.file, t.span.line, t.span.column)))
+
+
+def _binds_signal(parents: tuple) -> bool:
+    """Whether a name is an argument of AliasIO (which binds signal data, reading nothing)."""
+    return any(isinstance(p, ast.ProcedureCall) and p.name.key == "ALIASIO" for p in parents)
 
 
 def start_position_reads(program: Program) -> list:

@@ -14,9 +14,24 @@ written by an outside client, so that ``outside_data`` chooses its value where a
 wait reads it (as for data a task not loaded writes) and the verdicts say so under
 ``assumes:``.
 
+A handshake flag polled in an endless loop is awaited the same way (held-out survey,
+issue 28: seven false "never reached" warnings in one program)::
+
+    WHILE TRUE DO
+        IF newTarget = TRUE THEN
+            newTarget := FALSE;
+            ...
+        ENDIF
+        WaitTime 0.25;
+    ENDWHILE
+
+The condition of an IF or ELSEIF (or a compact IF) inside a WHILE is a poll
+(``polled``): ``statements`` reads such data there as it reads a WaitUntil condition
+(``OutsideData.polled_at`` names those conditions).
+
 The rule is narrow, so that it never hides a wait the loaded code could end:
 
-* the WaitUntil condition is ``name op constant`` (either side; ``op`` a comparison),
+* the WaitUntil (or poll) condition is ``name op constant`` (either side; ``op`` a comparison),
   ``name`` or ``NOT name``, or such tests of one name joined by OR and AND
   (``WaitUntil nCmdMatch = 1 OR nCmdMatch = -1``), where ``name`` is a whole PERS data
   object of type num, dnum, bool or string, shared between tasks (a TASK PERS or a LOCAL one is the task's
@@ -92,21 +107,28 @@ def _safe(compare: Callable, value, constant) -> bool:
 
 
 def awaited_from_outside(program, routines: Iterable) -> dict:
-    """Slot -> (the place, ``file:line``, of a WaitUntil of ``routines`` that awaits a value
-    of the PERS data object in that slot that no write of the loaded code gives; the
-    constants the loaded code writes to it)."""
+    """Slot -> (``WaitUntil at file:line`` or ``poll at file:line``: a wait of ``routines`` that awaits
+    a value of the PERS data object in that slot that no write of the loaded code gives; the
+    constants the loaded code writes to it; the (file, line, column) of every poll of it)."""
     routines = [r for r in routines if r.ast is not None]
-    waits: dict = {}                    # slot -> [(test, span)]
+    waits: dict = {}                    # slot -> [(test, span, kind)]
+    polls: dict = {}                    # slot -> {(file, line, column)} of its polls
     writes: dict = {}                   # slot -> values written, UNKNOWN among them
     for routine in routines:
         lookup = routine.scope.lookup
+        for condition, span in polled(routine.ast):
+            found = _awaited(condition)
+            slot = found and _global_slot(lookup, found[0])
+            if slot is not None:
+                waits.setdefault(slot, []).append((found[1], span, "poll"))
+                polls.setdefault(slot, set()).add((span.file, span.line, span.column))
         for node in walk_routine(routine.ast):
             if isinstance(node, ast.ProcedureCall) and node.name.key == "WAITUNTIL" \
                     and node.args and node.args[0].value is not None:
                 found = _awaited(node.args[0].value)
                 slot = found and _global_slot(lookup, found[0])
                 if slot is not None:
-                    waits.setdefault(slot, []).append((found[1], node.span))
+                    waits.setdefault(slot, []).append((found[1], node.span, "WaitUntil"))
             elif isinstance(node, (ast.Assignment, ast.Connect)):
                 slot = _global_slot(lookup, _root(node.target))
                 if slot is not None:
@@ -133,11 +155,25 @@ def awaited_from_outside(program, routines: Iterable) -> dict:
                 or getattr(declared.type, "key", None) not in VALUE_KEYS \
                 or any(v is UNKNOWN for v in values):
             continue
-        for test, span in tests:
+        for test, span, kind in sorted(tests, key=lambda t: (t[1].file, t[1].line, t[1].column)):
             if not any(test(v) for v in values):
-                found[slot] = (f"{Path(span.file).name}:{span.line}", frozenset(values))
+                found[slot] = (f"{kind} at {Path(span.file).name}:{span.line}", frozenset(values),
+                               frozenset(polls.get(slot, ())))
                 break
     return found
+
+
+def polled(routine: ast.Routine):
+    """(condition, span) of each IF, ELSEIF and compact IF inside a WHILE of the routine:
+    a test the loop repeats, as a wait does."""
+    for node, parents in ast.walk(routine):
+        if not any(isinstance(p, ast.While) for p in parents):
+            continue
+        if isinstance(node, ast.If):
+            for branch in node.branches:
+                yield branch.condition, branch.span
+        elif isinstance(node, ast.CompactIf):
+            yield node.condition, node.span
 
 
 def _global_slot(lookup, name_ref) -> Optional[int]:

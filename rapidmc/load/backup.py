@@ -42,6 +42,8 @@ class ConfiguredSignal:
     kind: str                  # DI, DO, AI, AO, GI, GO
     span: Span
     width: Optional[int] = None   # bits of a group signal's device map ("0-3": 4)
+    low: Optional[float] = None   # an analog signal's logical range (-MinLog, -MaxLog)
+    high: Optional[float] = None
 
 
 def is_backup(path: Path) -> bool:
@@ -152,8 +154,16 @@ def read_eio(path: str) -> list[ConfiguredSignal]:
         if name and kind in SIGNAL_KINDS:
             mapping = attributes.get("DEVICEMAP") or attributes.get("UNITMAP")
             signals.append(ConfiguredSignal(name, kind, Span(path, number, 1),
-                                            map_width(mapping)))
+                                            map_width(mapping), _number(attributes.get("MINLOG")),
+                                            _number(attributes.get("MAXLOG"))))
     return signals
+
+
+def _number(text: Optional[str]) -> Optional[float]:
+    try:
+        return float(text) if text is not None else None
+    except ValueError:
+        return None
 
 
 def map_width(mapping: Optional[str]) -> Optional[int]:

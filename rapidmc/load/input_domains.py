@@ -39,6 +39,7 @@ first such use.  An explicit ``--input-domain`` always wins.
 from __future__ import annotations
 
 import math
+from pathlib import Path
 from dataclasses import dataclass
 from typing import Optional, Sequence, Union
 
@@ -51,6 +52,7 @@ from ..semantics.scope import CONSTANT, SIGNAL
 from ..semantics.values import to_num
 from ..diagnostics.quoting import quoted
 from .input_flow import InputFlow, Read, Uses
+from .stated_domains import carriers, compared_constants, configured_range, roots
 
 FULL_RANGE_BITS = 5           # a group input of at most 5 bits: every value (at most 32)
 MAX_GROUP_BITS = 32           # the widest group input a controller configures
@@ -65,10 +67,24 @@ class Assumed:
     signal: Signal
     values: tuple                 # floats, ascending
     reason: str                   # "4-bit group input from EIO.cfg"
+    # False: no exact default exists; the values are stated (``stated_domains``), and a
+    # verdict covers only them
+    exact: bool = True
+    mentions: frozenset = frozenset()    # upper-case names whose statements read it
+    read_as: frozenset = frozenset()     # upper-case names reading it: its own, signal data
 
     def note(self) -> Diagnostic:
         return Diagnostic(DOMAIN_ASSUMED, f"{self.signal.name}: {describe(self.values)} "
                           f"({self.reason})", self.signal.span, severity="note")
+
+    @property
+    def assumption(self) -> str:
+        """The sentence beside a verdict for a stated domain (``findings.assumptions``)."""
+        span = self.signal.span
+        place = f" ({Path(span.file).name}:{span.line})" if span is not None else ""
+        return (f"input {self.signal.name} takes only {describe(self.values)}: the verdict "
+                f"covers these values, singled out from the code, not every value it may have "
+                f"(RMC515 says why; --input-domain gives others){place}")
 
 
 @dataclass(frozen=True)
@@ -91,13 +107,16 @@ def describe(values: Sequence[float]) -> str:
 
 
 def default_domains(program: Program, signals: Sequence[Signal], atom_reads,
-                    atom_data: Optional[frozenset] = None, robot_observed: bool = True) -> dict:
+                    atom_data: Optional[frozenset] = None, robot_observed: bool = True,
+                    exact_only: bool = False, atom_exprs: tuple = (), atom_scope=None) -> dict:
     """Signal key -> ``Assumed`` or ``Refused`` for each of ``signals`` (free AI/GI inputs).
 
     ``atom_reads``: indices of the signals properties read (None: any of them);
     ``atom_data``: upper-case names of the data they read (None: unknown, so an input's
     value is not followed through data); ``robot_observed``: whether they read a robot's
-    position.
+    position; ``exact_only``: refuse where no exact default exists (else the domain of
+    ``stated_domains``, not exact, which also takes the numbers the properties' atoms
+    ``atom_exprs`` compare with, read in ``atom_scope``).
     """
     if not signals:
         return {}
@@ -107,8 +126,37 @@ def default_domains(program: Program, signals: Sequence[Signal], atom_reads,
     reads.collect()
     outcomes = {}
     for signal in signals:
-        outcomes[signal.key] = _default(signal, widths.get(signal.key), reads, atom_reads)
+        outcome = _default(signal, widths.get(signal.key), reads, atom_reads)
+        if isinstance(outcome, Refused) and not exact_only:
+            outcome = stated(program, signal, outcome, reads, atom_exprs, atom_scope)
+        outcomes[signal.key] = outcome
     return outcomes
+
+
+def stated(program: Program, signal: Signal, refused: Refused, reads: "ReadCollector",
+           atom_exprs: tuple = (), atom_scope=None) -> Assumed:
+    """The values ``stated_domains`` singles out for an input with no exact default, and
+    why there is none."""
+    bound = frozenset(name for name, indices in reads.aliases.items() if signal.index in indices)
+    names = carriers(program, signal, bound)
+    numbers = compared_constants(program, names, number_value, atom_exprs, atom_scope)
+    limits = configured_range(program, signal)
+    ends = {end for end in (limits.low, limits.high) if end is not None}
+    if signal.kind == "GI":
+        top = limits.high if limits.high is not None else 2 ** MAX_GROUP_BITS - 1
+        values = group_points(sorted(numbers | ends), int(top))
+    else:
+        values = analog_points(sorted(numbers | ends | {0.0}))
+        values = tuple(v for v in values if (limits.low is None or v >= limits.low)
+                       and (limits.high is None or v <= limits.high))
+    origin = f"compared with {_listing(sorted(numbers))}" if numbers else \
+        "compared with no number"
+    configured = f", configured {_listing([limits.low])}..{_listing([limits.high])}" \
+        if limits.low is not None and limits.high is not None else ""
+    reason = (f"assumed, not exact: {refused.reason.split(';')[0]}; it or data computed from it "
+              f"is {origin}{configured}")
+    return Assumed(signal, values, reason, exact=False, mentions=roots(names),
+                   read_as=bound | {signal.key})
 
 
 def _default(signal: Signal, width: Optional[int], reads: "ReadCollector",

@@ -139,6 +139,9 @@ def _bounded(domains: list) -> list:
 
 def _site_domain(program, routines, node, routine=None) -> Optional[MessageDomain]:
     """The domain of ``node`` when it reads from the environment into named data."""
+    if isinstance(node, ast.ProcedureCall) and node.name.key in RECEIVES \
+            and _named_argument(node, "DATA") is not None:
+        return _data_domain(routines, node)
     if isinstance(node, ast.ProcedureCall) and node.name.key in RECEIVES:
         raw = _named_argument(node, "RAWDATA")
         target = raw if raw is not None else _named_argument(node, "STR")
@@ -233,6 +236,78 @@ def _followed(program, routines, target) -> Optional["Uses"]:
 def _number_points(numbers) -> tuple:
     """One number per class of the comparisons with ``numbers``."""
     return analog_points(sorted(numbers))
+
+
+def _data_domain(routines, call) -> Optional[MessageDomain]:
+    """A receive into an array of byte (``\\Data:=request``): messages of bytes, one per
+    class of each element the code compares with numbers (``request{1} = 2``: the element
+    written as a literal index), the other bytes 0; one of zeros and one of bytes ff.  The
+    message is as long as the largest element compared or ``\\ReadNoOfBytes`` (a literal)."""
+    target = _named_argument(call, "DATA")
+    if not isinstance(target, ast.NameRef):
+        return None
+    compared: dict = {}                 # element (1-based) -> numbers it is compared with
+    for routine in routines:
+        for node, _ in ast.walk(routine.ast):
+            pairs = ((node.left, node.right), (node.right, node.left)) \
+                if isinstance(node, ast.Binary) and node.op in NUMBER_COMPARISONS else \
+                [(node.subject, value) for case in node.cases for value in case.values] \
+                if isinstance(node, ast.Test) else ()
+            for side, other in pairs:
+                element = _literal_element(side, target.name.key)
+                number = _byte_value(other, routine.scope)
+                if element is not None and number is not None:
+                    compared.setdefault(element, set()).add(number)
+    wanted = _literal_number(_named_argument(call, "READNOOFBYTES"))
+    length = int(max([wanted or 1] + list(compared)))
+    length = min(length, rawbytes.MAX_BYTES)
+    base = bytes(length)
+    messages = [rawbytes.to_text(base)]
+    for element, numbers in sorted(compared.items()):
+        for value in group_points(sorted(numbers), 255):
+            if element <= length:
+                data = base[:element - 1] + bytes([int(value)]) + base[element:]
+                messages.append(rawbytes.to_text(data))
+    messages = list(dict.fromkeys(messages))[:MAX_MESSAGES - 1]
+    messages.append(rawbytes.to_text(bytes([0xFF] * length)))
+    shown = "; ".join(f"byte {element} compared with "
+                      + ", ".join(_number_text(n) for n in sorted(numbers))
+                      for element, numbers in sorted(compared.items()))
+    reason = (shown or "no byte of the array compared with a number") + \
+        f"; {length} bytes, the others 0, and one message of bytes ff"
+    return MessageDomain(call.span, RECEIVES[call.name.key], SOCKET, tuple(dict.fromkeys(messages)),
+                         False, reason)
+
+
+BYTE_BASES = {"CHAR": None, "HEX": 16, "OKT": 8, "BIN": 2}    # StrToByte's switches
+
+
+def _byte_value(expr, scope) -> Optional[float]:
+    """The number a literal or CONST denotes, or that ``StrToByte("c" \\Char)`` of a string
+    literal gives (the character's code; ``\\Hex``, ``\\Okt``, ``\\Bin``: the digits in that
+    base; else decimal digits), as byte protocols write their commands."""
+    value = number_value(expr, scope)
+    if value is not None or not (isinstance(expr, ast.FunctionCall)
+                                 and expr.name.key == "STRTOBYTE" and expr.args):
+        return value
+    text = expr.args[0].value
+    if not isinstance(text, ast.StringLiteral):
+        return None
+    switches = [a.name.key for a in expr.args[1:] if a.name is not None]
+    base = next((BYTE_BASES[key] for key in switches if key in BYTE_BASES), 10)
+    try:
+        return float(ord(text.value)) if base is None else float(int(text.value, base))
+    except (TypeError, ValueError):
+        return None
+
+
+def _literal_element(expr, name: str) -> Optional[int]:
+    """``k`` of ``name{k}`` with a literal whole index, else None."""
+    if not (isinstance(expr, ast.Index) and isinstance(expr.base, ast.NameRef)
+            and expr.base.name.key == name and len(expr.indices) == 1):
+        return None
+    index = _literal_number(expr.indices[0])
+    return int(index) if index is not None and index == int(index) and index >= 1 else None
 
 
 def _named_argument(call, key: str):

@@ -73,7 +73,7 @@ from ..semantics.program import ENVIRONMENT_NAMESPACE
 from ..semantics.scope import CONSTANT, GLOBAL_DATA
 from ..semantics.types import RECORD, ArrayType, RapidType, default_value
 from ..semantics.values import format_value, to_dnum
-from .awaited_from_outside import awaited_from_outside
+from .awaited_from_outside import VALUE_KEYS, awaited_from_outside
 from .encrypted import from_encrypted_interface
 from .input_domains import analog_points, number_value
 from .shared_data import data_uses, writes_data_by_name
@@ -106,13 +106,16 @@ class OutsideData:
     # a property's formula names it: a read of data only the outside writes keeps the value
     # it took, so the atoms read the value the program last read (``observed_names``)
     observed: bool = False
-    # the WaitUntil (``file:line``) that no write of the loaded code ends, when the other
-    # writer is only assumed from it (``awaited_from_outside``), else None
+    # the WaitUntil or poll (``WaitUntil at file:line``) that no write of the loaded code
+    # ends, when the other writer is only assumed from it (``awaited_from_outside``), else None
     awaited_at: Optional[str] = None
     # declared without a value (here and in every task read) and written only outside:
     # it starts with ``unset_value`` instead of the type's zeros (the linker stores it)
     unset: bool = False
     initial: object = None
+    # (file, line, column) of the IF conditions in loops that poll it, when the other writer
+    # is only assumed (``awaited_from_outside.polled``): read there as in a wait
+    polled_at: frozenset = frozenset()
 
     def domain(self, path: tuple) -> Optional[tuple]:
         """The values a read of the component may take; None: the stored value (a
@@ -165,10 +168,12 @@ def outside_data(linker) -> dict:
               and (data.slot not in written or (data.key in writers and _shared(data))
                    or (data.slot in awaited and _shared(data)))
               and data.span is not None
-              and not _is_stub(data.span)}
+              and (not _is_stub(data.span) or _flag_like(data))}
     if not chosen:
         return {}
     compared = _compared_constants(routines, chosen)
+    chosen = {slot: data for slot, data in chosen.items()
+              if not _is_stub(data.span) or _awaits_values(data, compared.get((slot, ())))}
     found = {}
     for slot, data in chosen.items():
         domains = {}
@@ -179,15 +184,15 @@ def outside_data(linker) -> dict:
             domains[path] = _domain(leaf_type, initial, compared.get((slot, path)))
         if domains:
             # a known writer left out names itself; else a wait only a client ends names one
-            awaited_at = None
+            awaited_at, polled_at = None, frozenset()
             if slot in written and data.key not in writers and slot in awaited:
-                awaited_at, own = awaited[slot]
+                awaited_at, own, polled_at = awaited[slot]
                 domains = _client_writes(domains, own)
             writer = writers.get(data.key) or (AWAITED_WRITER if awaited_at else None)
             found[slot] = OutsideData(slot, data.name, data.span, domains,
                                       writer if slot in written else None,
                                       data.key in observed, awaited_at, unset,
-                                      start if unset else None)
+                                      start if unset else None, polled_at)
     return found
 
 
@@ -235,6 +240,24 @@ def _unset_array(element, dims: tuple) -> tuple:
 def _shared(data) -> bool:
     """Whether other tasks see the data object: neither TASK PERS nor LOCAL to its module."""
     return not data.task_local and not data.local
+
+
+def _flag_like(data) -> bool:
+    """A stub's PERS of type bool, num, dnum or string: a handshake flag or a command
+    another task or a PC writes (held-out survey, issue 28: ``IF newTarget = TRUE`` polled
+    in a loop, declared by the stubs since the task that sets it is not loaded).  A stub's
+    record (a tooldata, a wobjdata, a robtarget) is the cell's configuration: it keeps its
+    neutral value, or every bool component would double the states."""
+    return getattr(data.type, "key", None) in VALUE_KEYS
+
+
+def _awaits_values(data, compared: Optional[list]) -> bool:
+    """Whether a stub's flag-like PERS is data another party writes rather than a named
+    constant of a module not given: a bool, or a num or string the code compares with a
+    constant (``smIndx = "d"``, ``TEST pathChoice CASE 1``).  One compared only with other
+    data (``IF nAxis = axisX``, ``CASE STATION_LOAD:``) stands for a constant: it keeps the
+    value the stubs gave it (``stubs``: distinct numbers for names compared in turn)."""
+    return getattr(data.type, "key", None) == "BOOL" or bool(compared and compared[0])
 
 
 def _is_stub(span) -> bool:
@@ -292,20 +315,78 @@ def _compared_constants(routines, chosen: dict) -> dict:
     """(slot, path) -> [constants, ordered?, compared with a non-constant?] from the code."""
     found: dict = {}
     words: dict = {}            # (slot, path) -> the words StrPart compares at the start
+    passed = _passed_whole(routines, chosen)
     for routine in routines:
         if routine.ast is None:
             continue
         scope = routine.scope
+        held = {name: slot for (key, name), slots in passed.items() if key == routine.key
+                for slot in slots}
         for node, _ in ast.walk(routine.ast):
             if isinstance(node, ast.Binary) and node.op in COMPARISONS:
                 for side, other in ((node.left, node.right), (node.right, node.left)):
                     _note(found, chosen, scope, side, [other], node.op in ORDERINGS)
                     _note_part(found, words, chosen, scope, side, other)
+                    _note_held(found, chosen, held, scope, side, [other], node.op in ORDERINGS)
             elif isinstance(node, ast.Test):
-                _note(found, chosen, scope, node.subject,
-                      [value for case in node.cases for value in case.values], False)
+                cases = [value for case in node.cases for value in case.values]
+                _note(found, chosen, scope, node.subject, cases, False)
+                _note_held(found, chosen, held, scope, node.subject, cases, False)
     _note_fields(found, words, routines, chosen)
     return found
+
+
+def _passed_whole(routines, chosen: dict) -> dict:
+    """(routine key, parameter key) -> slots of chosen value data (bool, num, dnum,
+    string) passed whole to that parameter, directly or through parameters of other
+    routines (``executeState pathChoice, stateChoice, ...``, then ``findState(stateChoice)``
+    compares it with 1 and 2): each such comparison is one with the data."""
+    own = {r.key: r for r in routines if r.ast is not None}
+    held: dict = {}
+    changed = True
+    while changed:
+        changed = False
+        for routine in own.values():
+            mine = {name: slots for (key, name), slots in held.items() if key == routine.key}
+            for node, _ in ast.walk(routine.ast):
+                if not isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) \
+                        or node.name.key not in own:
+                    continue
+                required = [p.name.key for p in own[node.name.key].ast.parameters
+                            if not p.optional]
+                positional = [a for a in node.args if a.name is None]
+                for position, arg in enumerate(positional[:len(required)]):
+                    slots = _whole_slots(arg.value, routine.scope, chosen) \
+                        | mine.get(getattr(getattr(arg.value, "name", None), "key", None),
+                                   frozenset())
+                    key = (node.name.key, required[position])
+                    if slots - held.get(key, frozenset()):
+                        held[key] = held.get(key, frozenset()) | slots
+                        changed = True
+    return held
+
+
+def _whole_slots(expr, scope, chosen: dict) -> frozenset:
+    if not isinstance(expr, ast.NameRef):
+        return frozenset()
+    symbol = scope.lookup(expr.name.key)
+    if symbol is None or symbol.kind != GLOBAL_DATA or symbol.slot not in chosen \
+            or getattr(chosen[symbol.slot].type, "key", None) not in VALUE_KEYS:
+        return frozenset()
+    return frozenset({symbol.slot})
+
+
+def _note_held(found: dict, chosen: dict, held: dict, scope, side, others: list,
+               ordered: bool) -> None:
+    """A comparison of a parameter that holds chosen data (``_passed_whole``)."""
+    if not isinstance(side, ast.NameRef) or side.name.key not in held:
+        return
+    symbol = scope.lookup(side.name.key)
+    if symbol is None or symbol.kind == GLOBAL_DATA:
+        return
+    slot = held[side.name.key]
+    for other in others:
+        _spread(found, slot, (), chosen[slot].type, other, scope, ordered)
 
 
 def _note(found: dict, chosen: dict, scope, side, others: list, ordered: bool) -> None:

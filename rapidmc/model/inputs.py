@@ -76,21 +76,23 @@ def _read_inputs(program: Program, atoms: AtomCompiler) -> Optional[frozenset]:
 
 
 def free_input_domains(program: Program, atoms: AtomCompiler,
-                       explicit: Mapping[str, tuple] = {}) -> tuple[dict, tuple]:
+                       explicit: Mapping[str, tuple] = {},
+                       exact_only: bool = False) -> tuple[dict, tuple]:
     """Signal key -> values for the free analog and group inputs (``explicit`` ones as given,
     the others' defaults from input_domains), and the defaults (``Assumed``) chosen.
 
     ``atoms`` must have compiled the properties' atoms (it knows the signals they read).
-    Raises RMC502 for an input that needs a domain and has no sound default.
+    An input with no exact default takes the values ``stated_domains`` singles out (not
+    exact: the verdicts name them); with ``exact_only`` it raises RMC502 instead.
     """
     domains = {name.upper(): tuple(values) for name, values in explicit.items()}
-    assumed = _check_domains(program, domains, _read_inputs(program, atoms), atoms)
+    assumed = _check_domains(program, domains, _read_inputs(program, atoms), atoms, exact_only)
     domains.update({a.signal.key: a.values for a in assumed})
     return domains, assumed
 
 
 def _check_domains(program: Program, domains: dict, read: Optional[frozenset],
-                   atoms: AtomCompiler) -> tuple:
+                   atoms: AtomCompiler, exact_only: bool) -> tuple:
     """The default domains of the free inputs that need one and have no --input-domain
     (input_domains); RMC502 for those without a sound default, saying why."""
     for key in domains:
@@ -105,7 +107,8 @@ def _check_domains(program: Program, domains: dict, read: Optional[frozenset],
               and (read is None or signal.index in read)]
     atom_reads = None if atoms.observes_signal_data else frozenset(atoms.observed)
     atom_data = None if atoms.observed_data is None else frozenset(atoms.observed_data)
-    defaults = default_domains(program, needed, atom_reads, atom_data, atoms.observes_robot)
+    defaults = default_domains(program, needed, atom_reads, atom_data, atoms.observes_robot,
+                               exact_only, tuple(atoms.expressions), atoms.scope)
     missing = [Diagnostic(DOMAIN, f"free {signal.kind} input '{signal.name}' needs a finite set "
                           f"of values: give --input-domain {signal.name}=v1,v2,... (or drive it "
                           "from an environment model)", signal.span,

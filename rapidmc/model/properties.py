@@ -214,6 +214,7 @@ class AtomCompiler:
         # the program's own functions (which may read any data)
         self.observed_data: Optional[set] = set()
         self.observes_robot = False           # an atom reads a robot's position (CRobT ...)
+        self.expressions: list = []           # the atoms compiled, as expressions
 
     def _note_signals(self, expr: ast.Expr) -> None:
         for symbol in self.symbols(expr):
@@ -255,6 +256,7 @@ class AtomCompiler:
         expr = parse_atom_expression(atom, where)
         self.tasks.check_unambiguous(expr, where, atom)
         self._note_signals(expr)
+        self.expressions.append(expr)
         try:
             compiled = self._compile(expr)
         except UserError as exc:

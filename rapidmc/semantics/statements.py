@@ -410,7 +410,8 @@ class RoutineCompiler:
         for branch in statement.branches:
             otherwise = Label()
             self.branch(branch.condition, branch.span, otherwise, polls=else_polls or
-                        self._jumps_back(branch.body[-1] if branch.body else None))
+                        self._jumps_back(branch.body[-1] if branch.body else None)
+                        or self._polls_client(branch.span))
             self.block(branch.body, follow)
             self.place(otherwise)
         if statement.else_body is not None:
@@ -420,7 +421,8 @@ class RoutineCompiler:
 
     def _CompactIf(self, statement: ast.CompactIf, follow: Label) -> None:
         self.branch(statement.condition, statement.span, follow,
-                    polls=self._jumps_back(statement.statement))
+                    polls=self._jumps_back(statement.statement)
+                    or self._polls_client(statement.span))
         self.statement(statement.statement, follow)
         self.end_block(follow)
 
@@ -428,6 +430,13 @@ class RoutineCompiler:
         head = self.here()
         self.branch(statement.condition, statement.span, follow, polls=True)
         self.block(statement.body, head)
+
+    def _polls_client(self, span) -> bool:
+        """Whether an IF in a loop polls data a client is only assumed to write, since no
+        loaded write gives the value it awaits (``load.awaited_from_outside``: a handshake
+        flag another party sets and this task clears)."""
+        where = (span.file, span.line, span.column)
+        return any(where in data.polled_at for data in self.linker.outside_data.values())
 
     def _jumps_back(self, statement) -> bool:
         """Whether ``statement`` is a GOTO to a label placed before it (a polling loop)."""

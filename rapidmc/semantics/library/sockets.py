@@ -13,15 +13,24 @@ comes from the same source; its sender is not modelled.  docs/semantics.md,
 A ``socketdev`` variable holds ``None`` (never created: SOCKET_CLOSED) or a
 pair ``(status, pending)``: the socketstatus number and the received
 bytes not read yet (``\\ReadNoOfBytes`` reads a stream, not messages).
+
+``\\Data`` (an array of byte) sends and receives bytes as ``\\RawData`` does, one
+element a byte: SocketSend sends the array's elements (the first ``\\NoOfBytes`` of
+them), each a byte 0..255 (else ERR_ARGVALERR); SocketReceive stores the bytes received
+from the first element on, at most as many as the array holds (1,024 at most, the
+manual's limit) or ``\\ReadNoOfBytes`` exactly, and leaves the elements after them and
+the bytes not read as they are (the rest of the stream stays pending).
 """
 from __future__ import annotations
 
-from ...diagnostics import INPUT_EXHAUSTED, UNSUPPORTED, error
+from typing import Optional
+
+from ...diagnostics import INPUT_EXHAUSTED, TYPE_MISMATCH, UNSUPPORTED, error
 from .. import rawbytes, values
 from ..errors import RapidError
 from ..expressions import Compiled
 from ..instructions import Action, ConstantWrite
-from ..types import NUM
+from ..types import NUM, ArrayType, is_numeric
 from .arguments import Arguments, argument_expression
 from .data import PREDEFINED_DATA
 from .environment_model import site_domain, where
@@ -240,23 +249,50 @@ def _socket_peek(calls, compiler, call, entry) -> Compiled:
 # Sending and receiving
 # ===========================================================================
 
-def _no_data(call) -> None:
-    if argument_expression(call, "Data", -1) is not None:
-        raise error(UNSUPPORTED, f"{call.name.text} \\Data (any data in binary form) is not "
-                    "modelled by rapidmc; use \\Str or \\RawData", call.span)
+def _data_size(compiler, call) -> Optional[int]:
+    """None without ``\\Data``; else the number of elements of its array of byte (0 for a
+    conformant ``{*}`` parameter, known only when the call runs)."""
+    expr = argument_expression(call, "Data", -1)
+    if expr is None:
+        return None
+    rapid_type = compiler.reference(expr, "read")[1]
+    if not (isinstance(rapid_type, ArrayType) and rapid_type.rank == 1
+            and is_numeric(rapid_type.element)):
+        raise error(TYPE_MISMATCH, f"{call.name.text} \\Data needs an array of byte, not "
+                    f"{rapid_type}", expr.span)
+    return rapid_type.dims[0] or 0
+
+
+def _bytes_of(elements: tuple, count, instruction: str) -> bytes:
+    """The bytes SocketSend \\Data sends: the array's elements, the first ``count`` of them."""
+    size = len(elements) if count is None else count
+    if size != int(size) or not 1 <= size <= min(len(elements), rawbytes.MAX_BYTES):
+        raise RapidError("ERR_ARGVALERR", f"{instruction}: NoOfBytes {values.format_num(size)} "
+                         f"is outside 1..{min(len(elements), rawbytes.MAX_BYTES)}")
+    chosen = elements[:int(size)]
+    for value in chosen:
+        if value != int(value) or not 0 <= value <= 255:
+            raise RapidError("ERR_ARGVALERR", f"{instruction}: \\Data holds "
+                             f"{values.format_num(value)}, not a byte 0..255")
+    return bytes(int(value) for value in chosen)
+
+
+def _stored(elements: tuple, data: bytes) -> tuple:
+    """The array after SocketReceive \\Data: the bytes from its first element on."""
+    return tuple(float(b) for b in data) + tuple(elements[len(data):])
 
 
 @compiled("SocketSend(VAR socketdev Socket \\string Str | VAR rawbytes RawData | VAR anytype Data "
               "\\num NoOfBytes)",
           modelled=CHOICE)
 def _socket_send(calls, compiler, call, entry):
-    _no_data(call)
+    has_data = _data_size(compiler, call) is not None
     arguments = Arguments(calls, compiler, call, entry)
     socket, text, raw = arguments.fn("Socket"), arguments.value("Str"), arguments.value("RawData")
-    count = arguments.value("NoOfBytes")
+    count, array = arguments.value("NoOfBytes"), arguments.value("Data")
     is_raw = argument_expression(call, "RawData", -1) is not None
-    if not is_raw and argument_expression(call, "Str", -1) is None:
-        raise error(UNSUPPORTED, "SocketSend needs \\Str or \\RawData", call.span)
+    if not is_raw and not has_data and argument_expression(call, "Str", -1) is None:
+        raise error(UNSUPPORTED, "SocketSend needs \\Str, \\RawData or \\Data", call.span)
 
     def send(m):
         _require(m.read_ref(socket(m)), SOCKET_CONNECTED, "SocketSend")
@@ -264,7 +300,9 @@ def _socket_send(calls, compiler, call, entry):
         if may_fail(m, "SocketSend", call.span, _closures(m)) != RECEIVED:
             raise RapidError("ERR_SOCK_CLOSED", "SocketSend: the peer closed the connection")
         limit = _optional(count(m))
-        if is_raw:
+        if has_data:
+            shown = rawbytes.to_text(_bytes_of(array(m), limit, "SocketSend"))
+        elif is_raw:
             data = rawbytes.as_bytes(raw(m))
             shown = rawbytes.to_text(data if limit is None else data[:int(limit)])
         else:
@@ -272,7 +310,8 @@ def _socket_send(calls, compiler, call, entry):
         m.output.append(f"[socket] {shown}")
     action = Action(call.span, send)
     ref = arguments.global_reference("Socket")
-    if ref is not None and not is_raw and _constant_or_absent(arguments, call, "Str") and \
+    if ref is not None and not is_raw and not has_data \
+            and _constant_or_absent(arguments, call, "Str") and \
             argument_expression(call, "NoOfBytes", -1) is None:
         # (the text sent is the transition's output, which the machine's steps do not give)
         action.machine = ConstantWrite(ref[1], ((SOCKET_CONNECTED, b""),), None,
@@ -300,31 +339,38 @@ def _receive_message(m, call, seconds) -> str:
               f"VAR anytype Data \\num ReadNoOfBytes \\VAR num NoRecBytes {TIME})",
           modelled=CHOICE)
 def _socket_receive(calls, compiler, call, entry):
-    _no_data(call)
+    has_data = _data_size(compiler, call) is not None
     arguments = Arguments(calls, compiler, call, entry)
     socket, text_ref, raw_ref = arguments.fn("Socket"), arguments.fn("Str"), arguments.fn("RawData")
+    data_ref = arguments.fn("Data")
     wanted, received, seconds = (arguments.value("ReadNoOfBytes"), arguments.fn("NoRecBytes"),
                                  arguments.value("Time"))
     is_raw = argument_expression(call, "RawData", -1) is not None
     counts = argument_expression(call, "NoRecBytes", -1) is not None
-    if not is_raw and argument_expression(call, "Str", -1) is None:
-        raise error(UNSUPPORTED, "SocketReceive needs \\Str or \\RawData", call.span)
+    if not is_raw and not has_data and argument_expression(call, "Str", -1) is None:
+        raise error(UNSUPPORTED, "SocketReceive needs \\Str, \\RawData or \\Data", call.span)
 
     def receive(m):
         ref = socket(m)
         value = m.read_ref(ref)
         _require(value, SOCKET_CONNECTED, "SocketReceive")
         pending, limit, time = value[1], _optional(wanted(m)), _optional(seconds(m))
-        _readable_count(limit, rawbytes.MAX_BYTES if is_raw else values.STRING_MAX, "SocketReceive")
-        if is_raw:
+        elements = m.read_ref(data_ref(m)) if has_data else ()
+        capacity = min(len(elements), rawbytes.MAX_BYTES) if has_data \
+            else rawbytes.MAX_BYTES if is_raw else values.STRING_MAX
+        _readable_count(limit, capacity, "SocketReceive")
+        if is_raw or has_data:
             while not pending or (limit is not None and len(pending) < limit):
                 more = rawbytes.from_text(_receive_message(m, call, time))
                 if not more:
                     raise RapidError("ERR_SOCK_TIMEOUT", "SocketReceive: the message was empty")
                 pending += more
-            size = len(pending) if limit is None else int(limit)
+            size = min(len(pending), capacity) if limit is None else int(limit)
             data, pending = pending[:size], pending[size:]
-            m.write_ref(raw_ref(m), data)
+            if has_data:
+                m.write_ref(data_ref(m), _stored(elements, data))
+            else:
+                m.write_ref(raw_ref(m), data)
         else:
             data = (pending.decode("latin-1") if pending
                     else _receive_message(m, call, time))[:80]
@@ -350,23 +396,31 @@ def _socket_receive_from(calls, compiler, call, entry):
     """One datagram on a bound UDP socket, from the same source as SocketReceive's messages
     (a line of standard input in ``run``, a configured message or a timeout when model
     checking).  The sender is not modelled: RemoteAddress reads "127.0.0.1" and RemotePort 0."""
-    _no_data(call)
+    has_data = _data_size(compiler, call) is not None
     arguments = Arguments(calls, compiler, call, entry)
     socket, text_ref, raw_ref = arguments.fn("Socket"), arguments.fn("Str"), arguments.fn("RawData")
+    data_ref = arguments.fn("Data")
     wanted, received, seconds = (arguments.value("ReadNoOfBytes"), arguments.fn("NoRecBytes"),
                                  arguments.value("Time"))
     address, port = arguments.fn("RemoteAddress"), arguments.fn("RemotePort")
     is_raw = argument_expression(call, "RawData", -1) is not None
     counts = argument_expression(call, "NoRecBytes", -1) is not None
-    if not is_raw and argument_expression(call, "Str", -1) is None:
-        raise error(UNSUPPORTED, "SocketReceiveFrom needs \\Str or \\RawData", call.span)
+    if not is_raw and not has_data and argument_expression(call, "Str", -1) is None:
+        raise error(UNSUPPORTED, "SocketReceiveFrom needs \\Str, \\RawData or \\Data",
+                    call.span)
 
     def receive(m):
         _require(m.read_ref(socket(m)), SOCKET_BOUND, "SocketReceiveFrom")
         limit = _optional(wanted(m))
-        _readable_count(limit, rawbytes.MAX_BYTES if is_raw else values.STRING_MAX, "SocketReceiveFrom")
+        elements = m.read_ref(data_ref(m)) if has_data else ()
+        capacity = min(len(elements), rawbytes.MAX_BYTES) if has_data \
+            else rawbytes.MAX_BYTES if is_raw else values.STRING_MAX
+        _readable_count(limit, capacity, "SocketReceiveFrom")
         text = _receive_message(m, call, _optional(seconds(m)))
-        if is_raw:
+        if has_data:              # (a datagram: what the array cannot hold is lost)
+            data = rawbytes.from_text(text)[:capacity if limit is None else int(limit)]
+            m.write_ref(data_ref(m), _stored(elements, data))
+        elif is_raw:
             data = rawbytes.from_text(text)
             data = data if limit is None else data[:int(limit)]
             m.write_ref(raw_ref(m), data)
