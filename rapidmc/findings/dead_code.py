@@ -21,7 +21,7 @@ not end the list.
 Likewise the statements of an ``IF Present(p)`` branch, in a procedure whose every call
 (there is at least one) leaves the optional parameter ``p`` out: no call passes it, so
 ``Present(p)`` is FALSE whatever the inputs (``ROS_receive_msg_joint_traj_pt``'s branch
-for a ``\wait_time`` that the motion server never gives; ``lines_behind_absent_options``).
+for a ``\\wait_time`` that the motion server never gives; ``lines_behind_absent_options``).
 """
 from __future__ import annotations
 
