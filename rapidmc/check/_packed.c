@@ -49,7 +49,8 @@ enum {
     OP_GOTO, OP_BRANCH, OP_GOTO_IF, OP_RESET_CHOSEN, OP_UNSUPPORTED,
     OP_FOR_DEFAULT_STEP, OP_FOR_INIT, OP_FOR_NEXT,
     OP_ATOM_BEGIN, OP_ATOM_END, OP_END,
-    OP_TASK_ONLY, OP_JUMP_IF_FALSE, OP_REQUIRE, OP_POP, OP_CHOOSE_BOOL, OP_WAIT, OP_SYNC
+    OP_TASK_ONLY, OP_JUMP_IF_FALSE, OP_REQUIRE, OP_POP, OP_CHOOSE_BOOL, OP_WAIT, OP_SYNC,
+    OP_CHOOSE_CONST, OP_CHECK_INDEX
 };
 
 /* what a run of code ends with */
@@ -1237,6 +1238,28 @@ static int execute(Run *run, const int32_t *code, Py_ssize_t ip, uint64_t *bits)
                 FAIL(VM_UNSUPPORTED);
             run->sizes[run->size_count++] = 2;
             PUSH(number(T_BOOL, position < run->script_length && run->script[position]));
+            break;
+        }
+        case OP_CHOOSE_CONST: {     /* ``m.choose(name, domain)``: count, the values' ids */
+            Py_ssize_t position = run->size_count;
+            int32_t count = code[ip];
+            if (position >= MAX_CHOICES || count <= 0)
+                FAIL(VM_UNSUPPORTED);
+            run->sizes[run->size_count++] = count;
+            int32_t chosen = position < run->script_length ? run->script[position] : 0;
+            PUSH(load(table, (uint32_t)code[ip + 1 + chosen]));
+            ip += 1 + count;
+            break;
+        }
+        case OP_CHECK_INDEX: {      /* an index of the array in global data ``slot`` */
+            Value index = POP();
+            PyObject *array = table->value_object[run->data[code[ip++]]];
+            if (!numeric(index) || index.tag == T_BOOL || array == NULL ||
+                    !PyTuple_Check(array))
+                FAIL(VM_UNSUPPORTED);
+            if (!integral(index.d) || index.d < 1.0 ||
+                    index.d > (double)PyTuple_GET_SIZE(array))
+                FAIL(VM_ERROR);             /* ERR_OUTOFBND: Python raises */
             break;
         }
         case OP_WAIT:               /* the task waits: the pc stays */

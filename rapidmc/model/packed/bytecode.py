@@ -13,7 +13,9 @@ arithmetic helpers), and whatever else a source holds (a function call,
 string concatenation) compiles to ``UNSUPPORTED``: the machine gives up at
 that block and the search asks the Python step, which is the reference.
 
-Waits, barriers and writes of constants (a socket's state) compile too
+Waits, barriers, writes of constants (a socket's state), a received message chosen from
+its site's domain (CHOOSE_CONST) and moves where the robot's position is left out (their
+arguments evaluated, array indexes checked: CHECK_INDEX) compile too
 (``Instruction.machine``, ``_task_block``): run only as one task's step among several
 (TASK_ONLY), a try that does not pass is an idle step (WAIT), as ``Wait.run`` and
 ``library.tasks._barrier`` leave the task waiting.
@@ -34,14 +36,14 @@ from typing import Callable, Optional
 
 from ...semantics.fused_step import block_targets, routine_fused
 from ...semantics.instructions import (
-    Action, Branch, ConstantWrite, ForInit, ForNext, Jump, TestDispatch, Wait)
+    Action, Branch, CheckedReads, ChosenWrite, ConstantWrite, ForInit, ForNext, Jump, TestDispatch, Wait)
 
 # opcodes, in the order of _packed.c's enum (from 1)
 OPCODES = ("CONST LOAD_STORE LOAD_LOCAL READ READ_DYN ADD SUB MUL DIVIDE TO_NUM TO_DNUM "
            "INT_DIV INT_MOD NEG NOT EQ NE LT LE GT GE AND OR SET_STORE SET_LOCAL SET_TEMP "
            "GET_TEMP GOTO BRANCH GOTO_IF RESET_CHOSEN UNSUPPORTED FOR_DEFAULT_STEP FOR_INIT "
            "FOR_NEXT ATOM_BEGIN ATOM_END END TASK_ONLY JUMP_IF_FALSE REQUIRE POP CHOOSE_BOOL "
-           "WAIT SYNC").split()
+           "WAIT SYNC CHOOSE_CONST CHECK_INDEX").split()
 OP = {name: number for number, name in enumerate(OPCODES, 1)}
 MAX_STACK = 48            # deeper expressions are left to Python (the machine has 64)
 
@@ -270,6 +272,10 @@ def _task_block(instruction, expressions: ExpressionCode, initial_store, config)
         return _wait_block(instruction, expressions)
     if isinstance(plan, ConstantWrite):
         return _constant_write_block(instruction, expressions.value_id, config)
+    if isinstance(plan, ChosenWrite):
+        return _chosen_write_block(instruction, expressions.value_id, config)
+    if isinstance(plan, CheckedReads):
+        return _checked_reads_block(instruction, expressions, config)
     return _sync_block(instruction, expressions.value_id, initial_store)
 
 
@@ -287,6 +293,35 @@ def _constant_write_block(instruction, value_id: Callable[[object], int], config
                  OP["REQUIRE"]]
     if plan.writes:
         code += [OP["CONST"], value_id(plan.value), OP["SET_STORE"], plan.slot]
+    return code + [OP["GOTO"], instruction.next]
+
+
+def _chosen_write_block(instruction, value_id: Callable[[object], int], config) -> list[int]:
+    """A ``ChosenWrite``: its guard checked (another value: REQUIRE gives the step to
+    Python), then one of the domain's values chosen (CHOOSE_CONST, a choice of as many
+    as the domain has, in its order) and set."""
+    plan = instruction.machine
+    domain = plan.domain(config)
+    if not domain:
+        raise Unsupported("a failure may be chosen")
+    return [OP["TASK_ONLY"], OP["LOAD_STORE"], plan.guard, OP["CONST"],
+            value_id(plan.required), OP["EQ"], OP["REQUIRE"],
+            OP["CHOOSE_CONST"], len(domain), *(value_id(value) for value in domain),
+            OP["SET_STORE"], plan.slot, OP["GOTO"], instruction.next]
+
+
+def _checked_reads_block(instruction, expressions: ExpressionCode, config) -> list[int]:
+    """A ``CheckedReads`` where its option is on: each value computed and dropped, each
+    element's index checked against its array (CHECK_INDEX: a raise is Python's), then
+    on."""
+    plan = instruction.machine
+    if not getattr(config, plan.option, False):
+        raise Unsupported(f"{plan.option} is off")
+    code = [OP["TASK_ONLY"]]
+    for compiled in plan.sources:
+        code += _source(expressions, compiled) + [OP["POP"]]
+    for slot, index in plan.elements:
+        code += _source(expressions, index) + [OP["CHECK_INDEX"], slot]
     return code + [OP["GOTO"], instruction.next]
 
 
