@@ -202,7 +202,8 @@ typedef struct {
     StateIndex places;
     /* the successors of the reduced steps by the state's number, kept for the check's
      * later searches (a state's ample set is the same whenever asked): row_at[place] is
-     * where its row starts in row_keys (a count, then the successors' keys), -1: none */
+     * its row's count of successors (above ROW_OFFSET_BITS) and where their keys start in
+     * row_keys, -1: none */
     int64_t *row_at;
     Py_ssize_t row_at_capacity;
     int64_t *row_keys;
@@ -2134,14 +2135,21 @@ static int number_targets(PackedTable *table, Scratch *scratch, Successors *foun
     return VM_DONE;
 }
 
+/* a row's count and offset in one int64 of row_at (rows of more successors, or beyond
+ * that offset, are not kept: the state is stepped again) */
+#define ROW_OFFSET_BITS 40
+#define ROW_COUNT_LIMIT ((int64_t)1 << (62 - ROW_OFFSET_BITS))
+
 /* The row kept for the state numbered ``place`` into ``found``: 1, or 0 (none kept), -1. */
 static int row_recall(PackedTable *table, Py_ssize_t place, Successors *found)
 {
     if (place >= table->row_at_capacity || table->row_at[place] < 0)
         return 0;
-    const int64_t *row = table->row_keys + table->row_at[place];
+    int64_t at = table->row_at[place];
+    const int64_t *row = table->row_keys + (at & (((int64_t)1 << ROW_OFFSET_BITS) - 1));
+    int64_t count = at >> ROW_OFFSET_BITS;
     found->count = 0;
-    for (int64_t i = 1; i <= row[0]; i++)
+    for (int64_t i = 0; i < count; i++)
         if (add_successor(found, (int32_t)(row[i] >> 32), (int32_t)(row[i] & 0xffffffff)) < 0)
             return -1;
     return 1;
@@ -2160,15 +2168,15 @@ static int row_keep(PackedTable *table, Py_ssize_t place, const Successors *foun
         table->row_at = at;
         table->row_at_capacity = capacity;
     }
-    if (table->row_at[place] >= 0)
+    if (table->row_at[place] >= 0 || found->count >= ROW_COUNT_LIMIT ||
+            table->row_length + found->count >= ((int64_t)1 << ROW_OFFSET_BITS))
         return 0;
     int64_t *keys = reserve(table->row_keys, &table->row_capacity, sizeof(int64_t),
-                            table->row_length + 1 + found->count);
+                            table->row_length + found->count);
     if (keys == NULL)
         return -1;
     table->row_keys = keys;
-    table->row_at[place] = table->row_length;
-    keys[table->row_length++] = found->count;
+    table->row_at[place] = ((int64_t)found->count << ROW_OFFSET_BITS) | table->row_length;
     for (Py_ssize_t i = 0; i < found->count; i++)
         keys[table->row_length++] = state_key(found->frames[i], found->data[i]);
     return 0;
@@ -3369,14 +3377,15 @@ static PyObject *PackedTable_native_bytes(PackedTable *self, PyObject *unused)
 
 static PyObject *PackedTable_counts(PackedTable *self, PyObject *unused)
 {
-    return Py_BuildValue("{s:n,s:n,s:n,s:n,s:L,s:L,s:L,s:L,s:L,s:n}", "states",
+    return Py_BuildValue("{s:n,s:n,s:n,s:n,s:L,s:L,s:L,s:L,s:L,s:n,s:n}", "states",
                          self->states.count,
                          "frames", self->frames.count, "data", self->data.count,
                          "values", self->values, "machine_steps", self->machine_steps,
                          "python_steps", self->python_steps,
                          "task_machine_steps", self->task_machine_steps,
                          "task_python_steps", self->task_python_steps,
-                         "rows_reused", self->rows_reused, "places", self->places.count);
+                         "rows_reused", self->rows_reused, "places", self->places.count,
+                         "row_keys", self->row_length);
 }
 
 /* ``set_tasks(count)``: the program's tasks (2-64: each context then says where each
