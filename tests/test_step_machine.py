@@ -25,7 +25,7 @@ from rapidmc.check import find_reachable, native
 from rapidmc.cli import main
 from rapidmc.model.packed import table as packed
 from rapidmc.model.packed.bytecode import OP, ExpressionCode, Unsupported, atom_code
-from rapidmc.semantics.instructions import CheckedReads, ChosenWrite
+from rapidmc.semantics.instructions import CheckedReads, ChosenWrite, ElementWrite
 
 from reduction_programs import properties, random_program
 from test_check_cases import verdict_cases
@@ -205,6 +205,10 @@ MACHINE_KINDS = {
     # checked; a target computed by a function call is Python's)
     "moves": (CheckedReads, ["step_machine_tasks/moves/mover.mod", "--add-task",
                              "step_machine_tasks/sockets/phases.mod"], 3),
+    # writes of array elements (a small array and one of 32 or more items, found by its
+    # items' hashes), one out of range; a component of an element is Python's
+    "elements": (ElementWrite, ["step_machine_tasks/elements/writer.mod", "--add-task",
+                                "step_machine_tasks/sockets/phases.mod"], 4),
 }
 
 

@@ -50,7 +50,7 @@ enum {
     OP_FOR_DEFAULT_STEP, OP_FOR_INIT, OP_FOR_NEXT,
     OP_ATOM_BEGIN, OP_ATOM_END, OP_END,
     OP_TASK_ONLY, OP_JUMP_IF_FALSE, OP_REQUIRE, OP_POP, OP_CHOOSE_BOOL, OP_WAIT, OP_SYNC,
-    OP_CHOOSE_CONST, OP_CHECK_INDEX
+    OP_CHOOSE_CONST, OP_CHECK_INDEX, OP_SET_ELEMENT
 };
 
 /* what a run of code ends with */
@@ -1261,6 +1261,40 @@ static int execute(Run *run, const int32_t *code, Py_ssize_t ip, uint64_t *bits)
             if (!integral(index.d) || index.d < 1.0 ||
                     index.d > (double)PyTuple_GET_SIZE(array))
                 FAIL(VM_ERROR);             /* ERR_OUTOFBND: Python raises */
+            break;
+        }
+        case OP_SET_ELEMENT: {      /* element (index, value) of the array in ``slot`` */
+            Value value = POP(), index = POP();
+            int32_t slot = code[ip++];
+            PyObject *array = table->value_object[run->data[slot]];
+            if (!numeric(index) || index.tag == T_BOOL || array == NULL ||
+                    !PyTuple_Check(array))
+                FAIL(VM_UNSUPPORTED);
+            Py_ssize_t length = PyTuple_GET_SIZE(array);
+            if (!integral(index.d) || index.d < 1.0 || index.d > (double)length)
+                FAIL(VM_ERROR);             /* ERR_OUTOFBND: Python raises */
+            int32_t value_id_ = store_id(table, value);
+            if (value_id_ < 0)
+                return -1;
+            PyObject *item = value_object(table, value_id_);
+            PyObject *changed = item == NULL ? NULL : PyTuple_New(length);
+            if (changed == NULL) {
+                Py_XDECREF(item);
+                return -1;
+            }
+            Py_ssize_t at = (Py_ssize_t)index.d - 1;
+            for (Py_ssize_t i = 0; i < length; i++) {
+                PyObject *kept = i == at ? item : PyTuple_GET_ITEM(array, i);
+                if (i != at)
+                    Py_INCREF(kept);
+                PyTuple_SET_ITEM(changed, i, kept);
+            }
+            int32_t id = value_id(table, changed);
+            Py_DECREF(changed);
+            if (id < 0)
+                return -1;
+            run->data_changed |= run->data[slot] != (uint32_t)id;
+            run->data[slot] = (uint32_t)id;
             break;
         }
         case OP_WAIT:               /* the task waits: the pc stays */

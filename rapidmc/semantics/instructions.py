@@ -93,6 +93,17 @@ class CheckedReads(NamedTuple):
     option: str
 
 
+class ElementWrite(NamedTuple):
+    """An assignment's whole effect on the state for the step machine: element ``index``
+    (a ``Compiled`` with a source) of the array in global data ``slot`` becomes ``value``
+    (a ``Compiled`` with a source).  An index not an integer in 1..the array's length
+    is the Python step's (it raises ERR_OUTOFBND)."""
+
+    slot: int
+    index: Any
+    value: Any
+
+
 class Action(Instruction):
     """A simple statement: ``fn(machine)``, then continue with ``next``."""
 

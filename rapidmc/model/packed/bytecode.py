@@ -14,9 +14,10 @@ string concatenation) compiles to ``UNSUPPORTED``: the machine gives up at
 that block and the search asks the Python step, which is the reference.
 
 Waits, barriers, writes of constants (a socket's state), a received message chosen from
-its site's domain (CHOOSE_CONST) and moves where the robot's position is left out (their
-arguments evaluated, array indexes checked: CHECK_INDEX) compile too
-(``Instruction.machine``, ``_task_block``): run only as one task's step among several
+its site's domain (CHOOSE_CONST), moves where the robot's position is left out (their
+arguments evaluated, array indexes checked: CHECK_INDEX) and writes of elements of
+global arrays (SET_ELEMENT) compile too (``Instruction.machine``, ``_task_block``; a
+routine with no fused block gets code for them alone): run only as one task's step among several
 (TASK_ONLY), a try that does not pass is an idle step (WAIT), as ``Wait.run`` and
 ``library.tasks._barrier`` leave the task waiting.
 
@@ -34,16 +35,16 @@ import ast as python_ast
 from array import array
 from typing import Callable, Optional
 
-from ...semantics.fused_step import block_targets, routine_fused
+from ...semantics.fused_step import NEVER_JOINS, block_targets, routine_fused
 from ...semantics.instructions import (
-    Action, Branch, CheckedReads, ChosenWrite, ConstantWrite, ForInit, ForNext, Jump, TestDispatch, Wait)
+    Action, Branch, CheckedReads, ChosenWrite, ConstantWrite, ElementWrite, ForInit, ForNext, Jump, TestDispatch, Wait)
 
 # opcodes, in the order of _packed.c's enum (from 1)
 OPCODES = ("CONST LOAD_STORE LOAD_LOCAL READ READ_DYN ADD SUB MUL DIVIDE TO_NUM TO_DNUM "
            "INT_DIV INT_MOD NEG NOT EQ NE LT LE GT GE AND OR SET_STORE SET_LOCAL SET_TEMP "
            "GET_TEMP GOTO BRANCH GOTO_IF RESET_CHOSEN UNSUPPORTED FOR_DEFAULT_STEP FOR_INIT "
            "FOR_NEXT ATOM_BEGIN ATOM_END END TASK_ONLY JUMP_IF_FALSE REQUIRE POP CHOOSE_BOOL "
-           "WAIT SYNC CHOOSE_CONST CHECK_INDEX").split()
+           "WAIT SYNC CHOOSE_CONST CHECK_INDEX SET_ELEMENT").split()
 OP = {name: number for number, name in enumerate(OPCODES, 1)}
 MAX_STACK = 48            # deeper expressions are left to Python (the machine has 64)
 
@@ -196,14 +197,23 @@ class RoutineCode:
         ``initial_store``: the first state's global data (a barrier's task list is
         compiled for its value there: ``_sync_block``)."""
         fused = routine_fused(program, config, routine)
-        if fused is None:
+        instructions = program.routines[routine].code
+        if fused is not None:
+            starts, kinds, first_visible = fused.starts, fused.kinds, fused.first_visible
+        elif any(getattr(instruction, "machine", None) is not None
+                 for instruction in instructions):
+            # (no fused block, but steps of one task among several: each its own step)
+            starts = bytes(len(instructions))
+            kinds, first_visible = bytes([NEVER_JOINS]) * len(instructions), \
+                bytes([1]) * len(instructions)
+        else:
             return None
         skipped = config.skipped_writes
-        block_start = array("i", [-1]) * len(fused.starts)
+        block_start = array("i", [-1]) * len(starts)
         code = array("i")
-        for pc, instruction in enumerate(program.routines[routine].code):
+        for pc, instruction in enumerate(instructions):
             waits = getattr(instruction, "machine", None) is not None
-            if not fused.starts[pc] and not waits:
+            if not starts[pc] and not waits:
                 continue
             expressions = ExpressionCode(value_id, {}, store_length)
             try:
@@ -217,7 +227,7 @@ class RoutineCode:
                 continue
             block_start[pc] = len(code)
             code.extend(block)
-        return cls(fused.kinds, fused.first_visible, block_start, code)
+        return cls(kinds, first_visible, block_start, code)
 
 
 def _block(instruction, expressions: ExpressionCode, skipped: frozenset) -> Optional[list[int]]:
@@ -276,6 +286,8 @@ def _task_block(instruction, expressions: ExpressionCode, initial_store, config)
         return _chosen_write_block(instruction, expressions.value_id, config)
     if isinstance(plan, CheckedReads):
         return _checked_reads_block(instruction, expressions, config)
+    if isinstance(plan, ElementWrite):
+        return _element_write_block(instruction, expressions)
     return _sync_block(instruction, expressions.value_id, initial_store)
 
 
@@ -323,6 +335,17 @@ def _checked_reads_block(instruction, expressions: ExpressionCode, config) -> li
     for slot, index in plan.elements:
         code += _source(expressions, index) + [OP["CHECK_INDEX"], slot]
     return code + [OP["GOTO"], instruction.next]
+
+
+def _element_write_block(instruction, expressions: ExpressionCode) -> list[int]:
+    """An ``ElementWrite`` (as ``assign_element`` runs it: the index first, then the
+    value): SET_ELEMENT makes the array with that element (an index out of range is
+    Python's).  Written even where the data is sliced (the projection resets it): the
+    index may raise."""
+    plan = instruction.machine
+    return [OP["TASK_ONLY"], *_source(expressions, plan.index),
+            *_source(expressions, plan.value), OP["SET_ELEMENT"], plan.slot,
+            OP["GOTO"], instruction.next]
 
 
 def _wait_block(instruction, expressions: ExpressionCode) -> list[int]:
