@@ -184,7 +184,7 @@ model states per CPU second), the run-time error search alone 1.54-1.87 -> 0.67-
 (28,800-29,800 states/s), 152 bytes per state in the table; Python's single-task steps
 are 65 % of the check (2.0 of 3.06 s).
 
-Measured on 2026-11-29 at 16:10 (issue 27: SocketReceive \\Str, moves where the robot's
+Measured on 2026-11-29 at 16:10 (issue 27: SocketReceive \Str, moves where the robot's
 position is left out and writes of array elements in the step machine as one task's
 step among several; a routine without a fused block, the family's ``teach``, gets code
 for them; load 13-15 on 2 cores, CPU seconds, main bc3fc6c and the branch run
