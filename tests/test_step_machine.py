@@ -206,9 +206,10 @@ MACHINE_KINDS = {
     "moves": (CheckedReads, ["step_machine_tasks/moves/mover.mod", "--add-task",
                              "step_machine_tasks/sockets/phases.mod"], 3),
     # writes of array elements (a small array and one of 32 or more items, found by its
-    # items' hashes), one out of range; a component of an element is Python's
+    # items' hashes; an aggregate computed), one out of range; a component of an element
+    # is Python's
     "elements": (ElementWrite, ["step_machine_tasks/elements/writer.mod", "--add-task",
-                                "step_machine_tasks/sockets/phases.mod"], 4),
+                                "step_machine_tasks/sockets/phases.mod"], 5),
 }
 
 
@@ -365,6 +366,10 @@ def test_expression_sources_compile_to_the_machines_code():
     assert code.compile("(_read(cx, store[0]) == _k1)") == [
         OP["LOAD_STORE"], 0, OP["READ_DYN"], OP["CONST"], 0, OP["EQ"]]
     assert code.compile("bool((not locals_[1]) | (-store[1] < _k1))")[-1] == OP["OR"]
+    # an aggregate (``expressions._Aggregate``'s source): its items, then the tuple
+    assert code.compile("((_to_num(locals_[0]), _k1, ), store[1], )") == [
+        OP["LOAD_LOCAL"], 0, OP["TO_NUM"], OP["CONST"], 0, OP["BUILD_TUPLE"], 2,
+        OP["LOAD_STORE"], 1, OP["BUILD_TUPLE"], 2]
     for source in ("_concat(store[0], store[1])", "_k1(store[0])", "store[9]", "store[0].x",
                    "store[0] if store[1] else store[2]", "unknown_name"):
         with pytest.raises(Unsupported):

@@ -50,7 +50,7 @@ enum {
     OP_FOR_DEFAULT_STEP, OP_FOR_INIT, OP_FOR_NEXT,
     OP_ATOM_BEGIN, OP_ATOM_END, OP_END,
     OP_TASK_ONLY, OP_JUMP_IF_FALSE, OP_REQUIRE, OP_POP, OP_CHOOSE_BOOL, OP_WAIT, OP_SYNC,
-    OP_CHOOSE_CONST, OP_CHECK_INDEX, OP_SET_ELEMENT
+    OP_CHOOSE_CONST, OP_CHECK_INDEX, OP_SET_ELEMENT, OP_BUILD_TUPLE
 };
 
 /* what a run of code ends with */
@@ -1295,6 +1295,30 @@ static int execute(Run *run, const int32_t *code, Py_ssize_t ip, uint64_t *bits)
                 return -1;
             run->data_changed |= run->data[slot] != (uint32_t)id;
             run->data[slot] = (uint32_t)id;
+            break;
+        }
+        case OP_BUILD_TUPLE: {      /* an aggregate of the top ``count`` values */
+            int32_t count = code[ip++];
+            if (count <= 0 || count > top)
+                FAIL(VM_UNSUPPORTED);
+            PyObject *tuple = PyTuple_New(count);
+            if (tuple == NULL)
+                return -1;
+            top -= count;
+            for (int32_t i = 0; i < count; i++) {
+                int32_t item_id = store_id(table, stack[top + i]);
+                PyObject *item = item_id < 0 ? NULL : value_object(table, item_id);
+                if (item == NULL) {
+                    Py_DECREF(tuple);
+                    return -1;
+                }
+                PyTuple_SET_ITEM(tuple, i, item);
+            }
+            int32_t id = value_id(table, tuple);
+            Py_DECREF(tuple);
+            if (id < 0)
+                return -1;
+            PUSH(load(table, (uint32_t)id));
             break;
         }
         case OP_WAIT:               /* the task waits: the pc stays */

@@ -7,7 +7,7 @@ left out, as the unlabelled entries do), run by the machine with the
 routine's merge kinds exactly as ``FusedRoutine.run`` runs them.  The
 expressions are compiled from their Python sources (``Compiled.source``,
 read with the ``ast`` module): the vocabulary is small and fixed
-(``store[i]``, ``locals_[i]``, ``_read(cx, i)``, constants, comparisons,
+(``store[i]``, ``locals_[i]``, ``_read(cx, i)``, constants, aggregates, comparisons,
 ``bool(a & b)``, ``not``, ``-``, ``+ - *``, ``_to_num`` and the other
 arithmetic helpers), and whatever else a source holds (a function call,
 string concatenation) compiles to ``UNSUPPORTED``: the machine gives up at
@@ -44,7 +44,7 @@ OPCODES = ("CONST LOAD_STORE LOAD_LOCAL READ READ_DYN ADD SUB MUL DIVIDE TO_NUM 
            "INT_DIV INT_MOD NEG NOT EQ NE LT LE GT GE AND OR SET_STORE SET_LOCAL SET_TEMP "
            "GET_TEMP GOTO BRANCH GOTO_IF RESET_CHOSEN UNSUPPORTED FOR_DEFAULT_STEP FOR_INIT "
            "FOR_NEXT ATOM_BEGIN ATOM_END END TASK_ONLY JUMP_IF_FALSE REQUIRE POP CHOOSE_BOOL "
-           "WAIT SYNC CHOOSE_CONST CHECK_INDEX SET_ELEMENT").split()
+           "WAIT SYNC CHOOSE_CONST CHECK_INDEX SET_ELEMENT BUILD_TUPLE").split()
 OP = {name: number for number, name in enumerate(OPCODES, 1)}
 MAX_STACK = 48            # deeper expressions are left to Python (the machine has 64)
 
@@ -124,6 +124,12 @@ class ExpressionCode:
                                   _ARITHMETIC[type(node.op)])
         if kind is python_ast.Call:
             return self._call(node, code, depth)
+        if kind is python_ast.Tuple:            # an aggregate: its items in order
+            deepest = depth + 1
+            for position, item in enumerate(node.elts):
+                deepest = max(deepest, self._emit(item, code, depth + position))
+            code += [OP["BUILD_TUPLE"], len(node.elts)]
+            return deepest
         raise Unsupported(type(node).__name__)
 
     def _constant(self, value, code: list[int], depth: int) -> int:
