@@ -204,6 +204,13 @@ two growths).  Counters (``bench/native.py --sizes 8,9 --engines native``, two a
 runs): N=8 run-time error search 0.44, 0.70 s -> 0.46, 0.45 s, whole command 2.02, 1.37
 -> 1.27, 1.31 s CPU, 142 -> 137 bytes per state; N=9 search 3.59, 2.73 -> 2.28, 2.73 s,
 whole command 4.97, 5.41 -> 6.11, 4.45 s CPU, 83 -> 85 bytes per state.
+Then (16:30, aggregates with a source, built by the machine; load 7-12): whole command
+2.61, 3.61, 2.82, 3.07 s on main -> 1.65, 2.47, 1.61, 1.94 s (44,800-54,100 model states
+per CPU second, one run of 35,200), the machine's share of the single tasks' steps in
+the run-time error search 92 % (42,049 of 45,590).  Python's steps left: ``teach``'s
+call and return and the component write, about a third of the in-process check.  (A
+Python-engine row with fewer model states than the native one is its ``--max-seconds``
+wall-clock limit under load: the Python engine needs 18 CPU s here.)
 """
 from __future__ import annotations
 
