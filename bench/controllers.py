@@ -183,6 +183,34 @@ Then (13:55, load 12-16): arrays found by their items' hashes in the packed tabl
 model states per CPU second), the run-time error search alone 1.54-1.87 -> 0.67-0.69 s
 (28,800-29,800 states/s), 152 bytes per state in the table; Python's single-task steps
 are 65 % of the check (2.0 of 3.06 s).
+
+Measured on 2026-11-29 at 16:10 (issue 27: SocketReceive \Str, moves where the robot's
+position is left out and writes of array elements in the step machine as one task's
+step among several; a routine without a fused block, the family's ``teach``, gets code
+for them; load 13-15 on 2 cores, CPU seconds, main bc3fc6c and the branch run
+alternately).  ``--max-states 20000`` (86,825 model states; the JSON reports of both
+engines identical but for the engine's name, as on main): whole command 3.17, 2.58,
+2.81 s -> 1.81, 1.65, 1.75 s (27,400-33,700 -> 47,900-52,700 model states per CPU
+second); maximum RSS 63 -> 61-62 MB.  In-process, timed around each Python single-task
+step (``_task_answer``): Python's single-task steps 20,659 -> 8,840, 58 % -> 33-40 % of
+the check; the machine's share of the single tasks' steps in the run-time error search
+81 -> 90 % (40,963 of 45,590).  What Python still steps: ``teach``'s call (with its
+argument) and return, the write of a component of an element (``targets{slot}.trans.x``)
+and the aggregate written to ``joints{slot}``, each 45-95 us.  The table's bytes per
+state in the run-time error search alone (20,000 states): 152.4 -> 110.8 (a kept row's
+count beside its offset; arrays grown by half, not doubled: 125.5 -> 133.0 at 16,000
+states, 110.3 -> 112.1 at 30,000, the figure moves with where the bound falls between
+two growths).  Counters (``bench/native.py --sizes 8,9 --engines native``, two alternate
+runs): N=8 run-time error search 0.44, 0.70 s -> 0.46, 0.45 s, whole command 2.02, 1.37
+-> 1.27, 1.31 s CPU, 142 -> 137 bytes per state; N=9 search 3.59, 2.73 -> 2.28, 2.73 s,
+whole command 4.97, 5.41 -> 6.11, 4.45 s CPU, 83 -> 85 bytes per state.
+Then (16:30, aggregates with a source, built by the machine; load 7-12): whole command
+2.61, 3.61, 2.82, 3.07 s on main -> 1.65, 2.47, 1.61, 1.94 s (44,800-54,100 model states
+per CPU second, one run of 35,200), the machine's share of the single tasks' steps in
+the run-time error search 92 % (42,049 of 45,590).  Python's steps left: ``teach``'s
+call and return and the component write, about a third of the in-process check.  (A
+Python-engine row with fewer model states than the native one is its ``--max-seconds``
+wall-clock limit under load: the Python engine needs 18 CPU s here.)
 """
 from __future__ import annotations
 

@@ -25,6 +25,7 @@ from rapidmc.check import find_reachable, native
 from rapidmc.cli import main
 from rapidmc.model.packed import table as packed
 from rapidmc.model.packed.bytecode import OP, ExpressionCode, Unsupported, atom_code
+from rapidmc.semantics.instructions import CheckedReads, ChosenWrite, ElementWrite
 
 from reduction_programs import properties, random_program
 from test_check_cases import verdict_cases
@@ -179,6 +180,61 @@ def test_the_machine_steps_waits_and_barriers_as_python_does(name):
         assert waits, "no wait or barrier compiled for the machine"
 
 
+def compiled_plans(tables: list, kind: type) -> list:
+    """(routine, pc) of the instructions whose machine plan is a ``kind`` and compiled to
+    the machine's code (not UNSUPPORTED) in ``tables``."""
+    return [(routine, pc) for table in tables for routine, code in enumerate(table._routines)
+            if code is not None for pc, instruction in
+            enumerate(table.program.routines[routine].code)
+            if isinstance(getattr(instruction, "machine", None), kind) and
+            array("i", code[2])[pc] >= 0 and
+            array("i", code[3])[array("i", code[2])[pc]] != OP["UNSUPPORTED"]]
+
+
+# programs of several tasks with one kind of statement the machine steps beside Python's
+# (tests/step_machine_tasks): the kind's machine plan, the program's arguments, how many
+# of its statements compile for the machine
+MACHINE_KINDS = {
+    # SocketReceive \Str (a message chosen from the site's domain, on a connected socket
+    # only; with \Time Python's, which may time out)
+    "receive": (ChosenWrite, ["step_machine_tasks/receive/server.mod", "--add-task",
+                              "step_machine_tasks/sockets/phases.mod", "--no-socket-timeouts",
+                              "--socket-messages", "go", "--socket-messages", "stop",
+                              "--socket-messages", "x"], 2),
+    # moves where the robot's position is left out (arguments evaluated, elements' indexes
+    # checked; a target computed by a function call is Python's)
+    "moves": (CheckedReads, ["step_machine_tasks/moves/mover.mod", "--add-task",
+                             "step_machine_tasks/sockets/phases.mod"], 3),
+    # writes of array elements (a small array and one of 32 or more items, found by its
+    # items' hashes; an aggregate computed), one out of range; a component of an element
+    # is Python's
+    "elements": (ElementWrite, ["step_machine_tasks/elements/writer.mod", "--add-task",
+                                "step_machine_tasks/sockets/phases.mod"], 5),
+}
+
+
+@needs_native
+@pytest.mark.parametrize("name", sorted(MACHINE_KINDS))
+@pytest.mark.parametrize("reduced", [False, True], ids=["unreduced", "reduced"])
+def test_the_machine_steps_each_kind_it_takes_as_python_does(name, reduced):
+    """The statements of the kind compile for the machine, and in every state of every
+    search, reduced or not, where the machine steps, its successors are the Python step's
+    (and ``PartialOrder``'s)."""
+    kind, arguments, count = MACHINE_KINDS[name]
+    here = Path(__file__).resolve().parent
+    argv = ["check", *(str(here / arg) if "/" in arg else arg for arg in arguments),
+            "--engine", "native", "--format", "json"] + ([] if reduced else ["--no-por"])
+
+    def check():
+        with contextlib.redirect_stdout(io.StringIO()):
+            main(argv)
+    tables = tables_of(check)
+    assert tables and all(table.tasks > 1 for table in tables)
+    assert len(set(compiled_plans(tables, kind))) == count
+    assert sum(machine_agrees(table) for table in tables) > 0
+    assert sum(table.counts()["task_machine_steps"] for table in tables) > 0
+
+
 def controller_family_tables(tmp_path, reduced: bool) -> list:
     """The packed tables of a check of bench/controllers.py's family (buffers of 4, the
     three kinds of command, 2,000 states per search), reduced or not."""
@@ -310,6 +366,10 @@ def test_expression_sources_compile_to_the_machines_code():
     assert code.compile("(_read(cx, store[0]) == _k1)") == [
         OP["LOAD_STORE"], 0, OP["READ_DYN"], OP["CONST"], 0, OP["EQ"]]
     assert code.compile("bool((not locals_[1]) | (-store[1] < _k1))")[-1] == OP["OR"]
+    # an aggregate (``expressions._Aggregate``'s source): its items, then the tuple
+    assert code.compile("((_to_num(locals_[0]), _k1, ), store[1], )") == [
+        OP["LOAD_LOCAL"], 0, OP["TO_NUM"], OP["CONST"], 0, OP["BUILD_TUPLE"], 2,
+        OP["LOAD_STORE"], 1, OP["BUILD_TUPLE"], 2]
     for source in ("_concat(store[0], store[1])", "_k1(store[0])", "store[9]", "store[0].x",
                    "store[0] if store[1] else store[2]", "unknown_name"):
         with pytest.raises(Unsupported):

@@ -25,14 +25,16 @@ static inline uint64_t mix64(uint64_t x)
 /* ------------------------------------------------------------- growable arrays */
 
 /* ``items`` (``*capacity`` items of ``size`` bytes) with room for ``wanted`` items, moved
- * when they are doubled (from 256) until they fit; NULL when out of memory. */
+ * when they grow by half (from 256) until they fit: at most a third of the room is ever
+ * spare, where doubling left up to half (the stored states' arrays are most of a search's
+ * memory); NULL when out of memory. */
 static inline void *reserve(void *items, Py_ssize_t *capacity, size_t size, Py_ssize_t wanted)
 {
     if (wanted <= *capacity)
         return items;
     Py_ssize_t grown = *capacity ? *capacity : 256;
     while (grown < wanted)
-        grown *= 2;
+        grown += grown / 2;
     void *moved = PyMem_Realloc(items, grown * size);
     if (moved == NULL)
         return PyErr_NoMemory();

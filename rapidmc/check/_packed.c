@@ -49,7 +49,8 @@ enum {
     OP_GOTO, OP_BRANCH, OP_GOTO_IF, OP_RESET_CHOSEN, OP_UNSUPPORTED,
     OP_FOR_DEFAULT_STEP, OP_FOR_INIT, OP_FOR_NEXT,
     OP_ATOM_BEGIN, OP_ATOM_END, OP_END,
-    OP_TASK_ONLY, OP_JUMP_IF_FALSE, OP_REQUIRE, OP_POP, OP_CHOOSE_BOOL, OP_WAIT, OP_SYNC
+    OP_TASK_ONLY, OP_JUMP_IF_FALSE, OP_REQUIRE, OP_POP, OP_CHOOSE_BOOL, OP_WAIT, OP_SYNC,
+    OP_CHOOSE_CONST, OP_CHECK_INDEX, OP_SET_ELEMENT, OP_BUILD_TUPLE
 };
 
 /* what a run of code ends with */
@@ -201,7 +202,8 @@ typedef struct {
     StateIndex places;
     /* the successors of the reduced steps by the state's number, kept for the check's
      * later searches (a state's ample set is the same whenever asked): row_at[place] is
-     * where its row starts in row_keys (a count, then the successors' keys), -1: none */
+     * its row's count of successors (above ROW_OFFSET_BITS) and where their keys start in
+     * row_keys, -1: none */
     int64_t *row_at;
     Py_ssize_t row_at_capacity;
     int64_t *row_keys;
@@ -1239,6 +1241,86 @@ static int execute(Run *run, const int32_t *code, Py_ssize_t ip, uint64_t *bits)
             PUSH(number(T_BOOL, position < run->script_length && run->script[position]));
             break;
         }
+        case OP_CHOOSE_CONST: {     /* ``m.choose(name, domain)``: count, the values' ids */
+            Py_ssize_t position = run->size_count;
+            int32_t count = code[ip];
+            if (position >= MAX_CHOICES || count <= 0)
+                FAIL(VM_UNSUPPORTED);
+            run->sizes[run->size_count++] = count;
+            int32_t chosen = position < run->script_length ? run->script[position] : 0;
+            PUSH(load(table, (uint32_t)code[ip + 1 + chosen]));
+            ip += 1 + count;
+            break;
+        }
+        case OP_CHECK_INDEX: {      /* an index of the array in global data ``slot`` */
+            Value index = POP();
+            PyObject *array = table->value_object[run->data[code[ip++]]];
+            if (!numeric(index) || index.tag == T_BOOL || array == NULL ||
+                    !PyTuple_Check(array))
+                FAIL(VM_UNSUPPORTED);
+            if (!integral(index.d) || index.d < 1.0 ||
+                    index.d > (double)PyTuple_GET_SIZE(array))
+                FAIL(VM_ERROR);             /* ERR_OUTOFBND: Python raises */
+            break;
+        }
+        case OP_SET_ELEMENT: {      /* element (index, value) of the array in ``slot`` */
+            Value value = POP(), index = POP();
+            int32_t slot = code[ip++];
+            PyObject *array = table->value_object[run->data[slot]];
+            if (!numeric(index) || index.tag == T_BOOL || array == NULL ||
+                    !PyTuple_Check(array))
+                FAIL(VM_UNSUPPORTED);
+            Py_ssize_t length = PyTuple_GET_SIZE(array);
+            if (!integral(index.d) || index.d < 1.0 || index.d > (double)length)
+                FAIL(VM_ERROR);             /* ERR_OUTOFBND: Python raises */
+            int32_t value_id_ = store_id(table, value);
+            if (value_id_ < 0)
+                return -1;
+            PyObject *item = value_object(table, value_id_);
+            PyObject *changed = item == NULL ? NULL : PyTuple_New(length);
+            if (changed == NULL) {
+                Py_XDECREF(item);
+                return -1;
+            }
+            Py_ssize_t at = (Py_ssize_t)index.d - 1;
+            for (Py_ssize_t i = 0; i < length; i++) {
+                PyObject *kept = i == at ? item : PyTuple_GET_ITEM(array, i);
+                if (i != at)
+                    Py_INCREF(kept);
+                PyTuple_SET_ITEM(changed, i, kept);
+            }
+            int32_t id = value_id(table, changed);
+            Py_DECREF(changed);
+            if (id < 0)
+                return -1;
+            run->data_changed |= run->data[slot] != (uint32_t)id;
+            run->data[slot] = (uint32_t)id;
+            break;
+        }
+        case OP_BUILD_TUPLE: {      /* an aggregate of the top ``count`` values */
+            int32_t count = code[ip++];
+            if (count <= 0 || count > top)
+                FAIL(VM_UNSUPPORTED);
+            PyObject *tuple = PyTuple_New(count);
+            if (tuple == NULL)
+                return -1;
+            top -= count;
+            for (int32_t i = 0; i < count; i++) {
+                int32_t item_id = store_id(table, stack[top + i]);
+                PyObject *item = item_id < 0 ? NULL : value_object(table, item_id);
+                if (item == NULL) {
+                    Py_DECREF(tuple);
+                    return -1;
+                }
+                PyTuple_SET_ITEM(tuple, i, item);
+            }
+            int32_t id = value_id(table, tuple);
+            Py_DECREF(tuple);
+            if (id < 0)
+                return -1;
+            PUSH(load(table, (uint32_t)id));
+            break;
+        }
         case OP_WAIT:               /* the task waits: the pc stays */
             run->idle = 1;
             return VM_DONE;
@@ -2111,14 +2193,21 @@ static int number_targets(PackedTable *table, Scratch *scratch, Successors *foun
     return VM_DONE;
 }
 
+/* a row's count and offset in one int64 of row_at (rows of more successors, or beyond
+ * that offset, are not kept: the state is stepped again) */
+#define ROW_OFFSET_BITS 40
+#define ROW_COUNT_LIMIT ((int64_t)1 << (62 - ROW_OFFSET_BITS))
+
 /* The row kept for the state numbered ``place`` into ``found``: 1, or 0 (none kept), -1. */
 static int row_recall(PackedTable *table, Py_ssize_t place, Successors *found)
 {
     if (place >= table->row_at_capacity || table->row_at[place] < 0)
         return 0;
-    const int64_t *row = table->row_keys + table->row_at[place];
+    int64_t at = table->row_at[place];
+    const int64_t *row = table->row_keys + (at & (((int64_t)1 << ROW_OFFSET_BITS) - 1));
+    int64_t count = at >> ROW_OFFSET_BITS;
     found->count = 0;
-    for (int64_t i = 1; i <= row[0]; i++)
+    for (int64_t i = 0; i < count; i++)
         if (add_successor(found, (int32_t)(row[i] >> 32), (int32_t)(row[i] & 0xffffffff)) < 0)
             return -1;
     return 1;
@@ -2137,15 +2226,15 @@ static int row_keep(PackedTable *table, Py_ssize_t place, const Successors *foun
         table->row_at = at;
         table->row_at_capacity = capacity;
     }
-    if (table->row_at[place] >= 0)
+    if (table->row_at[place] >= 0 || found->count >= ROW_COUNT_LIMIT ||
+            table->row_length + found->count >= ((int64_t)1 << ROW_OFFSET_BITS))
         return 0;
     int64_t *keys = reserve(table->row_keys, &table->row_capacity, sizeof(int64_t),
-                            table->row_length + 1 + found->count);
+                            table->row_length + found->count);
     if (keys == NULL)
         return -1;
     table->row_keys = keys;
-    table->row_at[place] = table->row_length;
-    keys[table->row_length++] = found->count;
+    table->row_at[place] = ((int64_t)found->count << ROW_OFFSET_BITS) | table->row_length;
     for (Py_ssize_t i = 0; i < found->count; i++)
         keys[table->row_length++] = state_key(found->frames[i], found->data[i]);
     return 0;
@@ -3346,14 +3435,15 @@ static PyObject *PackedTable_native_bytes(PackedTable *self, PyObject *unused)
 
 static PyObject *PackedTable_counts(PackedTable *self, PyObject *unused)
 {
-    return Py_BuildValue("{s:n,s:n,s:n,s:n,s:L,s:L,s:L,s:L,s:L,s:n}", "states",
+    return Py_BuildValue("{s:n,s:n,s:n,s:n,s:L,s:L,s:L,s:L,s:L,s:n,s:n}", "states",
                          self->states.count,
                          "frames", self->frames.count, "data", self->data.count,
                          "values", self->values, "machine_steps", self->machine_steps,
                          "python_steps", self->python_steps,
                          "task_machine_steps", self->task_machine_steps,
                          "task_python_steps", self->task_python_steps,
-                         "rows_reused", self->rows_reused, "places", self->places.count);
+                         "rows_reused", self->rows_reused, "places", self->places.count,
+                         "row_keys", self->row_length);
 }
 
 /* ``set_tasks(count)``: the program's tasks (2-64: each context then says where each

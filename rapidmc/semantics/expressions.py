@@ -608,7 +608,9 @@ class ExpressionCompiler:
         if all(i.is_constant for i in items):
             return constant(tuple(i.constant for i in items), result_type)
         fns = [i.fn for i in items]
-        return Compiled(lambda m: tuple(fn(m) for fn in fns), result_type)
+        return with_source(Compiled(lambda m: tuple(fn(m) for fn in fns), result_type),
+                           "(" + "".join(f"{{{i}}}, " for i in range(len(items))) + ")",
+                           *items)
 
     # ------------------------------------------------------------------ unary
     def _Unary(self, expr: ast.Unary, expected) -> Compiled:

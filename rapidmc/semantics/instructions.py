@@ -67,6 +67,43 @@ class ConstantWrite(NamedTuple):
     writes: bool = True
 
 
+class ChosenWrite(NamedTuple):
+    """An instruction's whole effect on the state for the step machine: global data
+    ``slot`` becomes one of the values ``domain(config)`` gives, chosen in their order
+    (one transition each, as ``Machine.choose`` gives them), and the task goes on, where
+    global data ``guard`` holds ``required`` (another value: the Python step).
+    ``domain`` gives None where the check's configuration lets the instruction fail by a
+    choice (then Python steps it)."""
+
+    slot: int
+    guard: int
+    required: Any
+    domain: Callable
+
+
+class CheckedReads(NamedTuple):
+    """An instruction's whole effect on the state for the step machine, where the check
+    configuration's flag ``option`` is on: it reads data and goes on.  ``sources``: the
+    ``Compiled`` values (with sources) it evaluates; ``elements``: (global data slot of an
+    array, the index's ``Compiled`` with a source) of the elements it reads.  A read that
+    raises (an index not an integer in 1..the array's length) is the Python step's."""
+
+    sources: tuple
+    elements: tuple
+    option: str
+
+
+class ElementWrite(NamedTuple):
+    """An assignment's whole effect on the state for the step machine: element ``index``
+    (a ``Compiled`` with a source) of the array in global data ``slot`` becomes ``value``
+    (a ``Compiled`` with a source).  An index not an integer in 1..the array's length
+    is the Python step's (it raises ERR_OUTOFBND)."""
+
+    slot: int
+    index: Any
+    value: Any
+
+
 class Action(Instruction):
     """A simple statement: ``fn(machine)``, then continue with ``next``."""
 

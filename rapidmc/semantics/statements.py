@@ -18,7 +18,7 @@ from ..diagnostics import (ASSIGN_CONST, BAD_CONTROL, DUPLICATE, TYPE_MISMATCH, 
 from ..diagnostics.error_report import UNKNOWN_CODES
 from .library import registry
 from .expressions import ExpressionCompiler, _check_index as check_index
-from .instructions import (Action, Branch, Call, EndRoutine, EndUndo, ExitProgram,
+from .instructions import (Action, Branch, Call, ElementWrite, EndRoutine, EndUndo, ExitProgram,
                            ForInit, ForNext, Instruction, Jump, LateCall, Raise, Retry,
                            Return, TestDispatch, TryNext)
 from .errors import placeholder_reached
@@ -263,7 +263,7 @@ class RoutineCompiler:
                         f"SetDO/Set/Reset (or AliasIO to bind it)", statement.span)
         value = compiler.value(statement.value, target_type)
         value_fn = value.fn
-        fusion = None
+        fusion = element = None
         if isinstance(target, ast.NameRef) and root.kind == GLOBAL_DATA:
             slot = root.slot
 
@@ -283,8 +283,11 @@ class RoutineCompiler:
         elif (isinstance(target, ast.Index) and len(target.indices) == 1 and
               isinstance(target.base, ast.NameRef) and root.kind == GLOBAL_DATA):
             slot = root.slot
-            index_fn = compiler.value(target.indices[0], NUM).fn
+            index = compiler.value(target.indices[0], NUM)
+            index_fn = index.fn
             span = target.span
+            if index.source is not None and value.source is not None:
+                element = ElementWrite(slot, index, value)
 
             def assign_element(m):
                 array = m.store[slot]
@@ -300,6 +303,7 @@ class RoutineCompiler:
         action = self.emit(Action(statement.span, fn))
         if fusion is not None and value.source is not None:
             action.fusion = fusion
+        action.machine = element
 
     def _ProcedureCall(self, statement: ast.ProcedureCall, follow: Label) -> None:
         compiler = self.expressions()

@@ -7,14 +7,17 @@ left out, as the unlabelled entries do), run by the machine with the
 routine's merge kinds exactly as ``FusedRoutine.run`` runs them.  The
 expressions are compiled from their Python sources (``Compiled.source``,
 read with the ``ast`` module): the vocabulary is small and fixed
-(``store[i]``, ``locals_[i]``, ``_read(cx, i)``, constants, comparisons,
+(``store[i]``, ``locals_[i]``, ``_read(cx, i)``, constants, aggregates, comparisons,
 ``bool(a & b)``, ``not``, ``-``, ``+ - *``, ``_to_num`` and the other
 arithmetic helpers), and whatever else a source holds (a function call,
 string concatenation) compiles to ``UNSUPPORTED``: the machine gives up at
 that block and the search asks the Python step, which is the reference.
 
-Waits, barriers and writes of constants (a socket's state) compile too
-(``Instruction.machine``, ``_task_block``): run only as one task's step among several
+Waits, barriers, writes of constants (a socket's state), a received message chosen from
+its site's domain (CHOOSE_CONST), moves where the robot's position is left out (their
+arguments evaluated, array indexes checked: CHECK_INDEX) and writes of elements of
+global arrays (SET_ELEMENT) compile too (``Instruction.machine``, ``_task_block``; a
+routine with no fused block gets code for them alone): run only as one task's step among several
 (TASK_ONLY), a try that does not pass is an idle step (WAIT), as ``Wait.run`` and
 ``library.tasks._barrier`` leave the task waiting.
 
@@ -32,16 +35,16 @@ import ast as python_ast
 from array import array
 from typing import Callable, Optional
 
-from ...semantics.fused_step import block_targets, routine_fused
+from ...semantics.fused_step import NEVER_JOINS, block_targets, routine_fused
 from ...semantics.instructions import (
-    Action, Branch, ConstantWrite, ForInit, ForNext, Jump, TestDispatch, Wait)
+    Action, Branch, CheckedReads, ChosenWrite, ConstantWrite, ElementWrite, ForInit, ForNext, Jump, TestDispatch, Wait)
 
 # opcodes, in the order of _packed.c's enum (from 1)
 OPCODES = ("CONST LOAD_STORE LOAD_LOCAL READ READ_DYN ADD SUB MUL DIVIDE TO_NUM TO_DNUM "
            "INT_DIV INT_MOD NEG NOT EQ NE LT LE GT GE AND OR SET_STORE SET_LOCAL SET_TEMP "
            "GET_TEMP GOTO BRANCH GOTO_IF RESET_CHOSEN UNSUPPORTED FOR_DEFAULT_STEP FOR_INIT "
            "FOR_NEXT ATOM_BEGIN ATOM_END END TASK_ONLY JUMP_IF_FALSE REQUIRE POP CHOOSE_BOOL "
-           "WAIT SYNC").split()
+           "WAIT SYNC CHOOSE_CONST CHECK_INDEX SET_ELEMENT BUILD_TUPLE").split()
 OP = {name: number for number, name in enumerate(OPCODES, 1)}
 MAX_STACK = 48            # deeper expressions are left to Python (the machine has 64)
 
@@ -121,6 +124,12 @@ class ExpressionCode:
                                   _ARITHMETIC[type(node.op)])
         if kind is python_ast.Call:
             return self._call(node, code, depth)
+        if kind is python_ast.Tuple:            # an aggregate: its items in order
+            deepest = depth + 1
+            for position, item in enumerate(node.elts):
+                deepest = max(deepest, self._emit(item, code, depth + position))
+            code += [OP["BUILD_TUPLE"], len(node.elts)]
+            return deepest
         raise Unsupported(type(node).__name__)
 
     def _constant(self, value, code: list[int], depth: int) -> int:
@@ -194,14 +203,23 @@ class RoutineCode:
         ``initial_store``: the first state's global data (a barrier's task list is
         compiled for its value there: ``_sync_block``)."""
         fused = routine_fused(program, config, routine)
-        if fused is None:
+        instructions = program.routines[routine].code
+        if fused is not None:
+            starts, kinds, first_visible = fused.starts, fused.kinds, fused.first_visible
+        elif any(getattr(instruction, "machine", None) is not None
+                 for instruction in instructions):
+            # (no fused block, but steps of one task among several: each its own step)
+            starts = bytes(len(instructions))
+            kinds, first_visible = bytes([NEVER_JOINS]) * len(instructions), \
+                bytes([1]) * len(instructions)
+        else:
             return None
         skipped = config.skipped_writes
-        block_start = array("i", [-1]) * len(fused.starts)
+        block_start = array("i", [-1]) * len(starts)
         code = array("i")
-        for pc, instruction in enumerate(program.routines[routine].code):
+        for pc, instruction in enumerate(instructions):
             waits = getattr(instruction, "machine", None) is not None
-            if not fused.starts[pc] and not waits:
+            if not starts[pc] and not waits:
                 continue
             expressions = ExpressionCode(value_id, {}, store_length)
             try:
@@ -215,7 +233,7 @@ class RoutineCode:
                 continue
             block_start[pc] = len(code)
             code.extend(block)
-        return cls(fused.kinds, fused.first_visible, block_start, code)
+        return cls(kinds, first_visible, block_start, code)
 
 
 def _block(instruction, expressions: ExpressionCode, skipped: frozenset) -> Optional[list[int]]:
@@ -270,6 +288,12 @@ def _task_block(instruction, expressions: ExpressionCode, initial_store, config)
         return _wait_block(instruction, expressions)
     if isinstance(plan, ConstantWrite):
         return _constant_write_block(instruction, expressions.value_id, config)
+    if isinstance(plan, ChosenWrite):
+        return _chosen_write_block(instruction, expressions.value_id, config)
+    if isinstance(plan, CheckedReads):
+        return _checked_reads_block(instruction, expressions, config)
+    if isinstance(plan, ElementWrite):
+        return _element_write_block(instruction, expressions)
     return _sync_block(instruction, expressions.value_id, initial_store)
 
 
@@ -288,6 +312,46 @@ def _constant_write_block(instruction, value_id: Callable[[object], int], config
     if plan.writes:
         code += [OP["CONST"], value_id(plan.value), OP["SET_STORE"], plan.slot]
     return code + [OP["GOTO"], instruction.next]
+
+
+def _chosen_write_block(instruction, value_id: Callable[[object], int], config) -> list[int]:
+    """A ``ChosenWrite``: its guard checked (another value: REQUIRE gives the step to
+    Python), then one of the domain's values chosen (CHOOSE_CONST, a choice of as many
+    as the domain has, in its order) and set."""
+    plan = instruction.machine
+    domain = plan.domain(config)
+    if not domain:
+        raise Unsupported("a failure may be chosen")
+    return [OP["TASK_ONLY"], OP["LOAD_STORE"], plan.guard, OP["CONST"],
+            value_id(plan.required), OP["EQ"], OP["REQUIRE"],
+            OP["CHOOSE_CONST"], len(domain), *(value_id(value) for value in domain),
+            OP["SET_STORE"], plan.slot, OP["GOTO"], instruction.next]
+
+
+def _checked_reads_block(instruction, expressions: ExpressionCode, config) -> list[int]:
+    """A ``CheckedReads`` where its option is on: each value computed and dropped, each
+    element's index checked against its array (CHECK_INDEX: a raise is Python's), then
+    on."""
+    plan = instruction.machine
+    if not getattr(config, plan.option, False):
+        raise Unsupported(f"{plan.option} is off")
+    code = [OP["TASK_ONLY"]]
+    for compiled in plan.sources:
+        code += _source(expressions, compiled) + [OP["POP"]]
+    for slot, index in plan.elements:
+        code += _source(expressions, index) + [OP["CHECK_INDEX"], slot]
+    return code + [OP["GOTO"], instruction.next]
+
+
+def _element_write_block(instruction, expressions: ExpressionCode) -> list[int]:
+    """An ``ElementWrite`` (as ``assign_element`` runs it: the index first, then the
+    value): SET_ELEMENT makes the array with that element (an index out of range is
+    Python's).  Written even where the data is sliced (the projection resets it): the
+    index may raise."""
+    plan = instruction.machine
+    return [OP["TASK_ONLY"], *_source(expressions, plan.index),
+            *_source(expressions, plan.value), OP["SET_ELEMENT"], plan.slot,
+            OP["GOTO"], instruction.next]
 
 
 def _wait_block(instruction, expressions: ExpressionCode) -> list[int]:

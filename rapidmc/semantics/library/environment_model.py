@@ -19,7 +19,12 @@ def site_domain(m, span, given, derived: str, default: tuple) -> tuple:
     domain an option gave (``config.<given>``) when there is one, else the site's domain
     derived from the program (``config.<derived>``, ``load.message_domains``), else
     ``default``."""
-    config = getattr(m.chooser, "config", None)
+    return configured_site_domain(getattr(m.chooser, "config", None), span, given, derived,
+                                  default)
+
+
+def configured_site_domain(config, span, given, derived: str, default: tuple) -> tuple:
+    """``site_domain`` under the check configuration ``config``."""
     explicit = tuple(getattr(config, given, ())) if given else ()
     if explicit:
         return explicit

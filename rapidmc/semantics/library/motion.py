@@ -2,10 +2,14 @@
 from __future__ import annotations
 
 from ..errors import RapidError
-from ..instructions import ControlAction, Instruction, enter_routine
+from ... import ast
+from ..instructions import CheckedReads, ControlAction, Instruction, enter_routine
+from ..scope import CONSTANT, GLOBAL_DATA
+from ..types import NUM, SEMI_VALUE
 from ..machine import ABSENT
 from ..robots import move_robot_to
-from .arguments import ROBOT_JOINTS, ROBOT_TCP, ROBOT_TOOL, ROBOT_WOBJ, Arguments, no_effect
+from .arguments import (ROBOT_JOINTS, ROBOT_TCP, ROBOT_TOOL, ROBOT_WOBJ, Arguments,
+                        argument_expression, no_effect)
 from .registry import EXACT, NO_EFFECT, ROBOT_STATE, compiled
 from .signals import dionum, write_signal
 from .signature_parts import MOVE_DO_TAIL, MOVE_TAIL
@@ -63,7 +67,48 @@ def move_robot(calls, compiler, call, entry, target_key: str, joint: bool = Fals
             enter_routine(m, callee, [])     # the caller goes on after the move when it returns
         else:
             m.goto(instruction.next)
-    return ControlAction(call.span, move)
+    action = ControlAction(call.span, move)
+    if not signal and not sync:
+        action.machine = _untracked_move(arguments, compiler, call, entry,
+                                         (target_key, "Tool", "WObj"))
+    return action
+
+
+def _untracked_move(arguments: Arguments, compiler, call, entry, keys: tuple):
+    """The step machine's plan of a move where the check leaves the robot's position out
+    (``CheckConfig.robot_untracked``): it evaluates the arguments ``keys`` and goes on.
+    Each given argument must have a source, name global data (a PERS tool) or be an
+    element of global array data with an index that has one; else None (Python steps the
+    move)."""
+    required = [spec.key for spec in entry.signature.parameters if not spec.optional]
+    sources, elements = [], []
+    for key in keys:
+        position = required.index(key.upper()) if key.upper() in required else -1
+        expression = argument_expression(call, key, position)
+        if expression is None:
+            continue                        # (an optional argument left out: ABSENT)
+        compiled_ = arguments.compiled(key)
+        if compiled_ is not None:
+            sources.append(compiled_)
+            continue
+        if isinstance(expression, ast.NameRef):
+            symbol = compiler.scope.lookup(expression.name.key) or \
+                compiler.linker.system_symbol(expression.name)
+            if symbol is not None and symbol.kind in (GLOBAL_DATA, CONSTANT) and \
+                    getattr(symbol.type, "kind", None) != SEMI_VALUE:
+                continue                    # (data named directly: its read never raises)
+            return None
+        if not (isinstance(expression, ast.Index) and len(expression.indices) == 1 and
+                isinstance(expression.base, ast.NameRef)):
+            return None
+        symbol = compiler.scope.lookup(expression.base.name.key)
+        if symbol is None or symbol.kind != GLOBAL_DATA:
+            return None
+        index = compiler.value(expression.indices[0], NUM)
+        if index.source is None:
+            return None
+        elements.append((symbol.slot, index))
+    return CheckedReads(tuple(sources), tuple(elements), "robot_untracked")
 
 
 @_move(f"MoveJ(\\switch Conc, robtarget ToPoint \\identno ID, {MOVE_TAIL} \\PERS loaddata TLoad)",

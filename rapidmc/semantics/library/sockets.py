@@ -29,11 +29,11 @@ from ...diagnostics import INPUT_EXHAUSTED, TYPE_MISMATCH, UNSUPPORTED, error
 from .. import rawbytes, values
 from ..errors import RapidError
 from ..expressions import Compiled
-from ..instructions import Action, ConstantWrite
+from ..instructions import Action, ChosenWrite, ConstantWrite
 from ..types import NUM, ArrayType, is_numeric
 from .arguments import Arguments, argument_expression
 from .data import PREDEFINED_DATA
-from .environment_model import site_domain, where
+from .environment_model import configured_site_domain, site_domain, where
 from .registry import CHOICE, compiled
 from .signature_parts import TIME
 
@@ -77,16 +77,22 @@ def may_fail(m, kind: str, span, outcomes: tuple) -> str:
 
 
 def _timeouts(m, seconds) -> tuple:
+    return _configured_timeouts(getattr(m.chooser, "config", None), seconds)
+
+
+def _configured_timeouts(config, seconds) -> tuple:
     """ERR_SOCK_TIMEOUT is possible when the time limit is finite and timeouts are modelled."""
     limit = DEFAULT_TIMEOUT if seconds is None else seconds
-    config = getattr(m.chooser, "config", None)
     if limit < WAIT_MAX and getattr(config, "socket_timeouts", True):
         return (TIMEOUT,)
     return ()
 
 
 def _closures(m) -> tuple:
-    config = getattr(m.chooser, "config", None)
+    return _configured_closures(getattr(m.chooser, "config", None))
+
+
+def _configured_closures(config) -> tuple:
     return (CLOSED,) if getattr(config, "socket_closures", False) else ()
 
 
@@ -379,7 +385,20 @@ def _socket_receive(calls, compiler, call, entry):
         m.write_ref(ref, (SOCKET_CONNECTED, pending))
         if counts:
             m.write_ref(received(m), float(len(data)))
-    return Action(call.span, receive)
+    action = Action(call.span, receive)
+    socket_ref, text_ref_ = arguments.global_reference("Socket"), arguments.global_reference("Str")
+    if socket_ref is not None and text_ref_ is not None and not is_raw and not counts and all(
+            argument_expression(call, key, -1) is None for key in ("ReadNoOfBytes", "Time")):
+        # (the step machine's: a connected socket with no data pending receives a message
+        # of the site's domain, unless the check lets the receive fail)
+        def texts(config) -> Optional[tuple]:
+            if _configured_timeouts(config, None) or _configured_closures(config):
+                return None
+            return tuple(text[:80] for text in configured_site_domain(
+                config, call.span, "socket_messages", "socket_domains", ("",)))
+        action.machine = ChosenWrite(text_ref_[1], socket_ref[1], (SOCKET_CONNECTED, b""),
+                                     texts)
+    return action
 
 
 # Files, serial channels, rawbytes and controller routines register themselves

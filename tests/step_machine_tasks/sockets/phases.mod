@@ -1,4 +1,4 @@
-! Task 2: moves the phase task 1 reads.
+! Task 2: moves the phase task 1 reads (also the second task of receive/ and moves/).
 MODULE Phases
   PERS num phase := 0;
   PROC main()
