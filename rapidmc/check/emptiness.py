@@ -23,18 +23,27 @@ logic", FM 1999; the single-acceptance-set form of Geldenhuys & Valmari.
 from __future__ import annotations
 
 from array import array
+from typing import Optional
 
 from .budget import SearchBudget, stopped_in_time
-from .lasso import build_lasso
+from .lasso import build_bad_prefix, build_lasso
 from .native import NATIVE, _native, native_search
 from .product import Product
-from .result import HOLDS, UNKNOWN, VIOLATED, SearchResult, SearchStats
+from .result import BAD_PREFIX, HOLDS, UNKNOWN, VIOLATED, SearchResult, SearchStats
 
 UNSEEN = array("i", [-1])
 
 
 def search_accepting_cycle(product: Product, budget: SearchBudget) -> SearchResult:
-    """HOLDS if no accepting cycle is reachable, VIOLATED with a lasso, or UNKNOWN."""
+    """HOLDS if no accepting cycle is reachable, VIOLATED with a lasso, or UNKNOWN.
+
+    A search that stops at its bound after reaching a state from which every run violates
+    the property (a bad prefix: ``Product.universal``) is VIOLATED with that finite path,
+    which ends in the words ``BAD_PREFIX``: a safety property broken by a model that never
+    repeats a state afterwards (a cycle counter) has no lasso to find.  A complete search
+    never reports one: on a finite model every bad prefix leads on to an accepting cycle,
+    which the search finds, so its verdicts, counts and lassos are unchanged.
+    """
     search = _NativeCycleSearch(product, budget) if native_search() else \
         _CycleSearch(product, budget)
     found = None
@@ -46,6 +55,10 @@ def search_accepting_cycle(product: Product, budget: SearchBudget) -> SearchResu
         prefix, cycle, closing = build_lasso(product, *found, search.explored())
         return SearchResult(VIOLATED, None, prefix, cycle, stats, closing)
     if budget.reason is not None:
+        bad_path = search.bad_path
+        if bad_path is not None:
+            prefix = build_bad_prefix(product, bad_path, search.explored())
+            return SearchResult(VIOLATED, None, prefix, stats=stats, ending=BAD_PREFIX)
         return SearchResult(UNKNOWN, budget.reason, stats=stats)
     return SearchResult(HOLDS, stats=stats)
 
@@ -63,6 +76,8 @@ class _CycleSearch:
         self.root_accepting = bytearray()     # parallel to roots
         self.transitions = 0
         self.max_depth = 0
+        # the DFS path to the first state seen that ends a bad prefix (``Product.universal``)
+        self.bad_path: Optional[list[int]] = None
 
     def stats(self) -> SearchStats:
         stored = len(self.dead)
@@ -105,6 +120,7 @@ class _CycleSearch:
         number, dead, active = self.number, self.dead, self.active
         roots, root_accepting = self.roots, self.root_accepting
         accepting, width = self.product.accepting, self.product.width
+        watching = self.bad_path is None and any(self.product.universal)
         successor_keys = self.product.successor_keys
         budget = self.budget
         max_states = budget.max_states
@@ -136,6 +152,8 @@ class _CycleSearch:
                     path_keys.append(key)
                     if len(path_keys) > max_depth:
                         max_depth = len(path_keys)
+                    if watching:
+                        watching = self._watch(path_keys, pending, path_starts[-1])
                     key = -1
                 elif not path_keys:
                     return None
@@ -170,6 +188,21 @@ class _CycleSearch:
         finally:
             self.transitions, self.max_depth = transitions, max_depth
 
+    def _watch(self, path_keys: list[int], pending: list[int], start: int) -> bool:
+        """Note ``bad_path`` when the state just pushed (an initial one) or one of its
+        successors (``pending[start:]``, reversed) ends a bad prefix: noted when seen, not
+        when pushed, since the depth-first search may never come back to a successor of a
+        model that keeps making new states.  Whether to watch on."""
+        universal, width = self.product.universal, self.product.width
+        if universal[path_keys[-1] % width]:
+            self.bad_path = list(path_keys)
+            return False
+        for position in range(len(pending) - 1, start - 1, -1):
+            if universal[pending[position] % width]:
+                self.bad_path = path_keys + [pending[position]]
+                return False
+        return True
+
     def _violation(self, path_keys: list[int]):
         """The DFS path up to the accepting component's root, and the component's keys."""
         root = self.roots[-1]
@@ -200,7 +233,14 @@ class _NativeCycleSearch:
         self.budget = budget
         self.graph = product.native_successors()
         self.search = _native.CycleSearch(product.successor_keys, bytes(product.accepting),
-                                          product.width, budget, self.graph)
+                                          product.width, budget, self.graph,
+                                          bytes(product.universal))
+
+    @property
+    def bad_path(self) -> Optional[list[int]]:
+        """``_CycleSearch.bad_path``: the DFS path to the first state pushed that ends a
+        bad prefix."""
+        return self.search.bad_path()
 
     def stats(self) -> SearchStats:
         counts = self.search.counts()
