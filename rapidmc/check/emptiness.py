@@ -63,6 +63,16 @@ def search_accepting_cycle(product: Product, budget: SearchBudget) -> SearchResu
     return SearchResult(HOLDS, stats=stats)
 
 
+def initial_bad_end(product: Product, initial_keys: list[int]) -> Optional[list[int]]:
+    """``[key]`` of the first initial product state that ends a bad prefix, else None: the
+    search may never come back to the initial states after the first one (a model that
+    keeps making new states), so they are looked at before it starts."""
+    for key in initial_keys:
+        if product.is_universal(key):
+            return [key]
+    return None
+
+
 class _CycleSearch:
     """The state of one Couvreur search (see the module docstring)."""
 
@@ -97,7 +107,9 @@ class _CycleSearch:
 
     def run(self):
         """None when no accepting cycle was found; else (DFS path keys, component keys)."""
-        for key in self.product.initial_keys():
+        initial_keys = self.product.initial_keys()
+        self.bad_path = initial_bad_end(self.product, initial_keys)
+        for key in initial_keys:
             if self._number_of(key) >= 0:
                 continue
             if not self.budget.may_store(len(self.dead)):
@@ -232,15 +244,16 @@ class _NativeCycleSearch:
         self.product = product
         self.budget = budget
         self.graph = product.native_successors()
+        self.initial_bad_path: Optional[list[int]] = None
         self.search = _native.CycleSearch(product.successor_keys, bytes(product.accepting),
                                           product.width, budget, self.graph,
                                           bytes(product.universal))
 
     @property
     def bad_path(self) -> Optional[list[int]]:
-        """``_CycleSearch.bad_path``: the DFS path to the first state pushed that ends a
-        bad prefix."""
-        return self.search.bad_path()
+        """``_CycleSearch.bad_path``: an initial state that ends a bad prefix, else the DFS
+        path to the first state the search saw that does."""
+        return self.initial_bad_path or self.search.bad_path()
 
     def stats(self) -> SearchStats:
         counts = self.search.counts()
@@ -258,7 +271,9 @@ class _NativeCycleSearch:
     def run(self):
         """None when no accepting cycle was found; else (DFS path keys, component keys)."""
         search = self.search
-        for key in self.product.initial_keys():
+        initial_keys = self.product.initial_keys()
+        self.initial_bad_path = initial_bad_end(self.product, initial_keys)
+        for key in initial_keys:
             if search.contains_key(key):
                 continue
             if not self.budget.may_store(search.counts()["stored"]):
