@@ -841,24 +841,20 @@ static int explore_from(CycleSearch *self, int64_t initial_key, GraphView *view)
                 return -1;
             if (self->path_keys.length > self->max_depth)
                 self->max_depth = self->path_keys.length;
-            if (universal != NULL) {     /* emptiness.py's ``_watch`` */
-                int64_t bad = -1;
-                if (universal[key % width])
-                    bad = key;
+            if (universal != NULL) {     /* emptiness.py's ``watching``: successors in order */
                 Py_ssize_t start = self->path_starts.items[self->path_starts.length - 1];
-                for (Py_ssize_t i = self->pending.length - 1; bad < 0 && i >= start; i--)
-                    if (universal[self->pending.items[i] % width])
-                        bad = self->pending.items[i];
-                if (bad >= 0) {
-                    if (bad != key && vector32_push(&self->path_keys, bad) < 0)
-                        return -1;
-                    self->bad_path = keys_list(self->path_keys.items, self->path_keys.length);
-                    if (bad != key)
+                for (Py_ssize_t i = self->pending.length - 1; i >= start; i--)
+                    if (universal[self->pending.items[i] % width]) {
+                        if (vector32_push(&self->path_keys, self->pending.items[i]) < 0)
+                            return -1;
+                        self->bad_path = keys_list(self->path_keys.items,
+                                                   self->path_keys.length);
                         self->path_keys.length--;
-                    if (self->bad_path == NULL)
-                        return -1;
-                    universal = NULL;
-                }
+                        if (self->bad_path == NULL)
+                            return -1;
+                        universal = NULL;
+                        break;
+                    }
             }
             key = -1;
         }

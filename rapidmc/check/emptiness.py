@@ -132,7 +132,11 @@ class _CycleSearch:
         number, dead, active = self.number, self.dead, self.active
         roots, root_accepting = self.roots, self.root_accepting
         accepting, width = self.product.accepting, self.product.width
-        watching = self.bad_path is None and any(self.product.universal)
+        # whether to look for a bad prefix's end among the successors of each state pushed:
+        # noted when seen, not when pushed, since the depth-first search may never come back
+        # to a successor of a model that keeps making new states (initial states: ``run``)
+        universal = self.product.universal
+        watching = self.bad_path is None and any(universal)
         successor_keys = self.product.successor_keys
         budget = self.budget
         max_states = budget.max_states
@@ -159,13 +163,17 @@ class _CycleSearch:
                         last = max(successors)
                         if last >= len(number):
                             number.extend(UNSEEN * (last + 1 - len(number) + len(number) // 8))
+                        if watching:       # the first successor that ends a bad prefix
+                            for successor in successors:
+                                if universal[successor % width]:
+                                    self.bad_path = path_keys + [key, successor]
+                                    watching = False
+                                    break
                         successors.reverse()
                         pending.extend(successors)
                     path_keys.append(key)
                     if len(path_keys) > max_depth:
                         max_depth = len(path_keys)
-                    if watching:
-                        watching = self._watch(path_keys, pending, path_starts[-1])
                     key = -1
                 elif not path_keys:
                     return None
@@ -199,21 +207,6 @@ class _CycleSearch:
                             dead[active.pop()] = 1
         finally:
             self.transitions, self.max_depth = transitions, max_depth
-
-    def _watch(self, path_keys: list[int], pending: list[int], start: int) -> bool:
-        """Note ``bad_path`` when the state just pushed (an initial one) or one of its
-        successors (``pending[start:]``, reversed) ends a bad prefix: noted when seen, not
-        when pushed, since the depth-first search may never come back to a successor of a
-        model that keeps making new states.  Whether to watch on."""
-        universal, width = self.product.universal, self.product.width
-        if universal[path_keys[-1] % width]:
-            self.bad_path = list(path_keys)
-            return False
-        for position in range(len(pending) - 1, start - 1, -1):
-            if universal[pending[position] % width]:
-                self.bad_path = path_keys + [pending[position]]
-                return False
-        return True
 
     def _violation(self, path_keys: list[int]):
         """The DFS path up to the accepting component's root, and the component's keys."""
