@@ -4,9 +4,11 @@ the automaton states of ``ltl.universal``).
 
 * On a model that never repeats a state after the bad one (a cycle counter) the search
   closes no loop: the verdict was UNKNOWN, now VIOLATED with the path and no cycle, the
-  same on both engines.
-* Complete searches are unchanged (verdict, lasso and counts), checked against the search
-  without the automaton's universal states on random models and formulas.
+  same on both engines; without a state bound it stops ``BAD_PREFIX_GRACE`` states after
+  seeing the bad prefix.
+* Searches that complete within the grace are unchanged (verdict, lasso and counts),
+  checked against the search without the automaton's universal states on random models
+  and formulas.
 * Every bad prefix reported is one: the formula is false on the prefix's word followed by
   any continuation (``holds_on_lasso``, which uses no automaton).
 * The universal states accept every word (``accepts_lasso`` from each of them).
@@ -22,12 +24,13 @@ from hypothesis import strategies as st
 
 from rapidmc.check import native
 from rapidmc.check import product as product_module
+from rapidmc.check.budget import BAD_PREFIX_GRACE
 from rapidmc.check.result import BAD_PREFIX
 from rapidmc.ltl import parse_formula, to_buchi
 from rapidmc.ltl.lasso import accepts_lasso, holds_on_lasso
 from rapidmc.ltl.universal import covers_everything, universal_states
 from test_engine_ltl import check_formula, formulas, letters
-from test_engine_models import Graph, automaton_moves, model_successors
+from test_engine_models import Counter, Graph, automaton_moves, model_successors
 
 ENGINES = native.ENGINES if native.available() else (native.PYTHON,)
 LETTERS = [frozenset(), frozenset({"p"}), frozenset({"r"}), frozenset({"p", "r"})]
@@ -77,6 +80,29 @@ def test_a_safety_violation_on_an_unbounded_counter_is_a_bad_prefix(engine):
     # the search went on to its bound, as before: the same counts
     assert result.stats.product_states == before.stats.product_states == 100
     assert result.stats.transitions == before.stats.transitions
+
+
+@pytest.mark.parametrize("engine", ENGINES)
+def test_a_search_without_a_bound_stops_a_grace_after_the_bad_prefix(engine):
+    """Without a state bound the search of a model that never ends would never end; after a
+    bad prefix it goes on for ``BAD_PREFIX_GRACE`` states (to find a loop), then stops."""
+    atoms = {"p": lambda x: x != 5}
+    _, _, result = search(Unbounded(), atoms, "G p", engine, max_states=None)
+    assert result.verdict == "VIOLATED" and not result.cycle
+    assert [step.state for step in result.prefix] == [0, 1, 2, 3, 4, 5]
+    # seen when x = 4 was stored, its successor 5 being the bad state
+    assert result.stats.product_states == 5 + BAD_PREFIX_GRACE
+    _, _, initial = search(Unbounded(), {"p": lambda x: x > 0}, "G p", engine, max_states=None)
+    assert [step.state for step in initial.prefix] == [0]
+    assert initial.stats.product_states == BAD_PREFIX_GRACE
+
+
+@pytest.mark.parametrize("engine", ENGINES)
+def test_a_loop_found_within_the_grace_is_kept(engine):
+    """A finite model whose loop closes after the bad state: the lasso, as before."""
+    atoms = {"p": lambda x: x != 5}
+    _, _, result = search(Counter(40), atoms, "G p", engine, max_states=None)
+    assert result.verdict == "VIOLATED" and result.cycle and result.ending is None
 
 
 @pytest.mark.parametrize("engine", ENGINES)

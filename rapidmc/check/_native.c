@@ -850,7 +850,11 @@ static int explore_from(CycleSearch *self, int64_t initial_key, GraphView *view)
                         self->bad_path = keys_list(self->path_keys.items,
                                                    self->path_keys.length);
                         self->path_keys.length--;
-                        if (self->bad_path == NULL)
+                        if (self->bad_path == NULL || budget_says(self, "saw_bad_prefix", "(L)",
+                                                                  (long long)self->stored) < 0)
+                            return -1;
+                        max_states = integer_attribute(self->budget, "max_states");
+                        if (max_states < 0)
                             return -1;
                         universal = NULL;
                         break;

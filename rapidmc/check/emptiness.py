@@ -37,12 +37,14 @@ UNSEEN = array("i", [-1])
 def search_accepting_cycle(product: Product, budget: SearchBudget) -> SearchResult:
     """HOLDS if no accepting cycle is reachable, VIOLATED with a lasso, or UNKNOWN.
 
-    A search that stops at its bound after reaching a state from which every run violates
-    the property (a bad prefix: ``Product.universal``) is VIOLATED with that finite path,
-    which ends in the words ``BAD_PREFIX``: a safety property broken by a model that never
-    repeats a state afterwards (a cycle counter) has no lasso to find.  A complete search
-    never reports one: on a finite model every bad prefix leads on to an accepting cycle,
-    which the search finds, so its verdicts, counts and lassos are unchanged.
+    A search that stops after seeing a state from which every run violates the property (a
+    bad prefix: ``Product.universal``) is VIOLATED with that finite path, which ends in the
+    words ``BAD_PREFIX``: a safety property broken by a model that never repeats a state
+    afterwards (a cycle counter) has no lasso to find.  It stops at its bound, or
+    ``BAD_PREFIX_GRACE`` states after it saw the bad prefix (``SearchBudget.saw_bad_prefix``),
+    whichever comes first.  On a finite model every bad prefix leads on to an accepting
+    cycle, which the search finds as before when it does within the grace: the verdict is
+    the same either way.
     """
     search = _NativeCycleSearch(product, budget) if native_search() else \
         _CycleSearch(product, budget)
@@ -109,6 +111,8 @@ class _CycleSearch:
         """None when no accepting cycle was found; else (DFS path keys, component keys)."""
         initial_keys = self.product.initial_keys()
         self.bad_path = initial_bad_end(self.product, initial_keys)
+        if self.bad_path is not None:
+            self.budget.saw_bad_prefix(0)
         for key in initial_keys:
             if self._number_of(key) >= 0:
                 continue
@@ -168,6 +172,8 @@ class _CycleSearch:
                                 if universal[successor % width]:
                                     self.bad_path = path_keys + [key, successor]
                                     watching = False
+                                    budget.saw_bad_prefix(len(dead))
+                                    max_states = budget.max_states
                                     break
                         successors.reverse()
                         pending.extend(successors)
@@ -266,6 +272,8 @@ class _NativeCycleSearch:
         search = self.search
         initial_keys = self.product.initial_keys()
         self.initial_bad_path = initial_bad_end(self.product, initial_keys)
+        if self.initial_bad_path is not None:
+            self.budget.saw_bad_prefix(0)
         for key in initial_keys:
             if search.contains_key(key):
                 continue
