@@ -92,3 +92,37 @@ def test_replay_follows_the_prefix_and_says_any_run_goes_on(in_case, tmp_path):
     code, _, err = run(["replay", str(saved), "--property", NAME, "--quiet"])
     assert code == 0, err
     assert f"{NAME}: the counterexample replays: 23 steps, then any run: {BAD_PREFIX}" in err
+
+
+def report_without_times(argv: list[str]) -> tuple[int, dict]:
+    code, out, _ = run([*argv, "--format", "json", "--quiet"])
+    document = json.loads(out)
+    for entry in document["properties"]:
+        for measured in ("seconds", "states_per_second", "bytes_per_state"):
+            entry["stats"].pop(measured)
+    return code, document
+
+
+ROOT = CASE.parent.parent.parent
+FINITE = {
+    # LTL check cases whose state space the search covers: safety properties VIOLATED by a
+    # lasso, others that hold, several tasks under fairness
+    **{name: ["check", "prog.mod", *extra, "--ltl", "props.ltl"] for name, extra in [
+        ("loop_mod_counter", []), ("ltl_until_release", []), ("ltl_next_call", []),
+        ("tasks_fairness", ["--add-task", "b.mod"])]},
+    "sorter_b": ["check", str(ROOT / "case_studies/sorter/sorter_b.mod"), "--env",
+                 str(ROOT / "case_studies/sorter/plant.mod"), "--ltl",
+                 str(ROOT / "specs/sorter.ltl")],
+}
+
+
+@pytest.mark.parametrize("name", FINITE)
+def test_finite_models_report_as_without_bad_prefixes(name, monkeypatch):
+    """On a finite state space a bad prefix leads on to a loop the search finds: the whole
+    report (verdicts, lassos, counts) is the one of the search without the automaton's
+    universal states (the search before bad prefixes)."""
+    monkeypatch.chdir(CASE.parent / name if (CASE.parent / name).is_dir() else ROOT)
+    with_prefixes = report_without_times(FINITE[name])
+    monkeypatch.setattr("rapidmc.check.product.universal_states", lambda buchi: frozenset())
+    assert with_prefixes == report_without_times(FINITE[name])
+    assert "VIOLATED" in {entry["verdict"] for entry in with_prefixes[1]["properties"]}
