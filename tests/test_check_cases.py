@@ -19,7 +19,8 @@ folder (so file names in the output and in ``args`` are the folder's own):
 * ``exit`` — the exit code; by default 2 for an ERROR case, else 1 if any
   verdict is VIOLATED, 3 if any is UNKNOWN, 0 otherwise.
 
-A VIOLATED verdict must come with a lasso: a non-empty cycle, and every step
+A VIOLATED verdict must come with a lasso: a non-empty cycle (or, for a property, a
+bad prefix: a path after whose last step every run violates it), and every step
 that names a source line names a real line of prog.mod with its text.
 
 A case whose verdict shows a checker bug carries a file ``xfail`` saying
@@ -186,8 +187,13 @@ def assert_real_lasso(name: str, trace: Optional[dict], folder: Path) -> None:
         assert not trace["cycle"] and trace["closing"] is None and trace["loop_start"] is None
         assert trace["error"]["step"] == trace["prefix"][-1]["index"], name
         assert trace["prefix"][-1]["location"] is not None, f"{name}: the error has no line"
+    elif not trace["cycle"]:
+        # a property's bad prefix: every run that goes on from its last step violates it
+        assert trace["closing"] is None and trace["loop_start"] is None
+        assert trace["error"]["bad_prefix"], f"{name}: the trace has an empty cycle " \
+                                             "(not a lasso) and is no bad prefix"
+        assert trace["error"]["step"] == trace["prefix"][-1]["index"], name
     else:
-        assert trace["cycle"], f"{name}: the trace has an empty cycle (not a lasso)"
         assert trace["loop_start"] == trace["cycle"][0]["index"]
         assert trace["error"] is None
     steps = trace["prefix"] + trace["cycle"] + [trace["closing"]]

@@ -439,3 +439,24 @@ def test_a_path_to_an_error_says_the_error_and_unreached_stretches_are_shaded(br
         "return [...document.querySelectorAll('.source .line.unreached')]"
         ".map((line) => line.dataset.line)")]
     assert set(range(9, 72)) <= set(shaded) and 73 not in shaded and 8 not in shaded
+
+
+def test_a_bad_prefix_says_that_any_run_goes_on_and_shows_no_loop(browser, tmp_path):
+    """tests/check/ltl_safety_unbounded_counter: G !(gripper_open & moving) broken at step 23
+    of a loop that counts for ever: a finite counterexample, no loop."""
+    require_browser()
+    from selenium.webdriver.common.keys import Keys
+    folder = ROOT / "tests" / "check" / "ltl_safety_unbounded_counter"
+    path = tmp_path / "prefix.html"
+    done = rapidmc("check", "prog.mod", "--ltl", "props.ltl", "--max-states", "3000", "--quiet",
+                   "--html", str(path), cwd=folder)
+    assert done.returncode == 1, done.stderr
+    page = Page(browser, path)
+    page.click("#property-2 button.show-trace")
+    assert page.find("#trace-shape").text == (
+        "23 steps, then any run: every run that goes on from this step violates the property "
+        "(no loop needed).")
+    page.keys(Keys.END)
+    shown = page.shown()
+    assert shown["step"] == 23 and shown["lineText"] == "gripper_open := TRUE;"
+    assert not shown["loopBadge"]

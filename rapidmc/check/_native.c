@@ -516,17 +516,20 @@ typedef struct {
     int32_t *move_starts, *moves;    /* moves of (q, v): moves[move_starts[q * (read + 1) + v] ..] */
     int64_t read;
     Int32Vector found;               /* the successors of the state pushed last */
+    /* bytes-like: by automaton state, 1 if every word is accepted from it (a product state
+     * there ends a bad prefix), or NULL; the DFS path to the first such state seen */
+    PyObject *universal, *bad_path;
 } CycleSearch;
 
 static PyObject *CycleSearch_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
 {
-    PyObject *successor_keys, *accepting, *budget, *graph = Py_None;
+    PyObject *successor_keys, *accepting, *budget, *graph = Py_None, *universal = Py_None;
     Py_ssize_t width;
-    if (!PyArg_ParseTuple(args, "OOnO|O", &successor_keys, &accepting, &width, &budget,
-                          &graph))
+    if (!PyArg_ParseTuple(args, "OOnO|OO", &successor_keys, &accepting, &width, &budget,
+                          &graph, &universal))
         return NULL;
-    if (!PyBytes_Check(accepting)) {
-        PyErr_SetString(PyExc_TypeError, "accepting must be bytes");
+    if (!PyBytes_Check(accepting) || (universal != Py_None && !PyBytes_Check(universal))) {
+        PyErr_SetString(PyExc_TypeError, "accepting and universal must be bytes");
         return NULL;
     }
     CycleSearch *self = (CycleSearch *)type->tp_alloc(type, 0);
@@ -539,6 +542,10 @@ static PyObject *CycleSearch_new(PyTypeObject *type, PyObject *args, PyObject *k
     Py_INCREF(budget);
     self->budget = budget;
     self->width = width;
+    if (universal != Py_None) {
+        Py_INCREF(universal);
+        self->universal = universal;
+    }
     if (graph != Py_None) {
         PyObject *rows, *move_starts, *moves;
         long long read;
@@ -569,6 +576,8 @@ static int CycleSearch_traverse(CycleSearch *self, visitproc visit, void *arg)
     Py_VISIT(self->budget);
     Py_VISIT(self->accepting);
     Py_VISIT(self->graph);
+    Py_VISIT(self->universal);
+    Py_VISIT(self->bad_path);
     return 0;
 }
 
@@ -578,6 +587,8 @@ static int CycleSearch_clear(CycleSearch *self)
     Py_CLEAR(self->budget);
     Py_CLEAR(self->accepting);
     Py_CLEAR(self->graph);
+    Py_CLEAR(self->universal);
+    Py_CLEAR(self->bad_path);
     return 0;
 }
 
@@ -737,6 +748,23 @@ static int graph_successors(CycleSearch *self, GraphView *view, int64_t key)
     return 0;
 }
 
+/* A list of the ints ``items[0 .. length - 1]`` */
+static PyObject *keys_list(const int32_t *items, Py_ssize_t length)
+{
+    PyObject *list = PyList_New(length);
+    if (list == NULL)
+        return NULL;
+    for (Py_ssize_t i = 0; i < length; i++) {
+        PyObject *key = PyLong_FromLong(items[i]);
+        if (key == NULL) {
+            Py_DECREF(list);
+            return NULL;
+        }
+        PyList_SET_ITEM(list, i, key);
+    }
+    return list;
+}
+
 /* The search from one initial key: 1 when an accepting cycle closed (the path is left in
  * path_keys and the component on roots), 0 when done or stopped by the budget, -1 on error.
  * One loop, step for step emptiness.py's ``_explore_from`` (push, try the next pending
@@ -745,6 +773,15 @@ static int explore_from(CycleSearch *self, int64_t initial_key, GraphView *view)
 {
     const uint8_t *accepting = (const uint8_t *)PyBytes_AS_STRING(self->accepting);
     int64_t width = self->width;
+    /* emptiness.py's ``watching``: no bad prefix found yet, and the automaton has states
+     * that end one */
+    const uint8_t *universal = NULL;
+    if (self->universal != NULL && self->bad_path == NULL) {
+        const char *flags = PyBytes_AS_STRING(self->universal);
+        for (Py_ssize_t q = 0; q < PyBytes_GET_SIZE(self->universal); q++)
+            if (flags[q])
+                universal = (const uint8_t *)flags;
+    }
     int64_t max_states = integer_attribute(self->budget, "max_states");
     int64_t next_checkpoint = integer_attribute(self->budget, "next_checkpoint");
     if (max_states < 0 || next_checkpoint < 0 || cover_key(self, initial_key) < 0)
@@ -804,6 +841,25 @@ static int explore_from(CycleSearch *self, int64_t initial_key, GraphView *view)
                 return -1;
             if (self->path_keys.length > self->max_depth)
                 self->max_depth = self->path_keys.length;
+            if (universal != NULL) {     /* emptiness.py's ``watching``: successors in order */
+                Py_ssize_t start = self->path_starts.items[self->path_starts.length - 1];
+                for (Py_ssize_t i = self->pending.length - 1; i >= start; i--)
+                    if (universal[self->pending.items[i] % width]) {
+                        if (vector32_push(&self->path_keys, self->pending.items[i]) < 0)
+                            return -1;
+                        self->bad_path = keys_list(self->path_keys.items,
+                                                   self->path_keys.length);
+                        self->path_keys.length--;
+                        if (self->bad_path == NULL || budget_says(self, "saw_bad_prefix", "(L)",
+                                                                  (long long)self->stored) < 0)
+                            return -1;
+                        max_states = integer_attribute(self->budget, "max_states");
+                        if (max_states < 0)
+                            return -1;
+                        universal = NULL;
+                        break;
+                    }
+            }
             key = -1;
         }
         else if (self->path_keys.length == 0)
@@ -926,6 +982,13 @@ static PyObject *CycleSearch_number_of(CycleSearch *self, PyObject *argument)
     return PyLong_FromLong(key >= 0 && key < self->number_length ? self->number[key] : -1);
 }
 
+static PyObject *CycleSearch_bad_path(CycleSearch *self, PyObject *unused)
+{
+    PyObject *found = self->bad_path != NULL ? self->bad_path : Py_None;
+    Py_INCREF(found);
+    return found;
+}
+
 static PyObject *CycleSearch_counts(CycleSearch *self, PyObject *unused)
 {
     size_t bytes = self->number_length * sizeof(int32_t) + self->dead_capacity +
@@ -944,6 +1007,8 @@ static PyMethodDef CycleSearch_methods[] = {
      "Whether the search has stored the product key."},
     {"number_of", (PyCFunction)CycleSearch_number_of, METH_O,
      "The discovery number of a product key (-1: unseen)."},
+    {"bad_path", (PyCFunction)CycleSearch_bad_path, METH_NOARGS,
+     "The DFS path to the first state pushed that ends a bad prefix, or None."},
     {"counts", (PyCFunction)CycleSearch_counts, METH_NOARGS,
      "{stored, transitions, max_depth, bytes} of the search so far."},
     {NULL}

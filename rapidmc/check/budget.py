@@ -32,6 +32,7 @@ DEFAULT_MAX_STATES = 1_000_000
 FIRST_CHECKPOINT = 16
 CHECKPOINT_SECONDS = 0.1
 MAX_CHECKPOINT_DISTANCE = 1 << 16
+BAD_PREFIX_GRACE = 10_000       # states a search goes on storing after it saw a bad prefix
 
 # the clock of budgets made without one (tests put a counter here)
 default_clock: Callable[[], float] = time.monotonic
@@ -83,6 +84,13 @@ class SearchBudget:
             return True
         self.reason = f"state limit {self.max_states} reached"
         return False
+
+    def saw_bad_prefix(self, stored: int) -> None:
+        """A property search with ``stored`` states saw a bad prefix (``check.emptiness``):
+        it goes on for at most ``BAD_PREFIX_GRACE`` more states, to find a loop (a lasso
+        as before: on a finite state space one follows), then stops with the finite path
+        instead of searching a model that keeps making new states to its bound."""
+        self.max_states = min(self.max_states, stored + BAD_PREFIX_GRACE)
 
     def checkpoint(self, stored: int, transitions: int, depth: int) -> bool:
         """Report progress; False (and ``reason`` set) once the time limit is over."""

@@ -23,18 +23,29 @@ logic", FM 1999; the single-acceptance-set form of Geldenhuys & Valmari.
 from __future__ import annotations
 
 from array import array
+from typing import Optional
 
 from .budget import SearchBudget, stopped_in_time
-from .lasso import build_lasso
+from .lasso import build_bad_prefix, build_lasso
 from .native import NATIVE, _native, native_search
 from .product import Product
-from .result import HOLDS, UNKNOWN, VIOLATED, SearchResult, SearchStats
+from .result import BAD_PREFIX, HOLDS, UNKNOWN, VIOLATED, SearchResult, SearchStats
 
 UNSEEN = array("i", [-1])
 
 
 def search_accepting_cycle(product: Product, budget: SearchBudget) -> SearchResult:
-    """HOLDS if no accepting cycle is reachable, VIOLATED with a lasso, or UNKNOWN."""
+    """HOLDS if no accepting cycle is reachable, VIOLATED with a lasso, or UNKNOWN.
+
+    A search that stops after seeing a state from which every run violates the property (a
+    bad prefix: ``Product.universal``) is VIOLATED with that finite path, which ends in the
+    words ``BAD_PREFIX``: a safety property broken by a model that never repeats a state
+    afterwards (a cycle counter) has no lasso to find.  It stops at its bound, or
+    ``BAD_PREFIX_GRACE`` states after it saw the bad prefix (``SearchBudget.saw_bad_prefix``),
+    whichever comes first.  On a finite model every bad prefix leads on to an accepting
+    cycle, which the search finds as before when it does within the grace: the verdict is
+    the same either way.
+    """
     search = _NativeCycleSearch(product, budget) if native_search() else \
         _CycleSearch(product, budget)
     found = None
@@ -46,8 +57,22 @@ def search_accepting_cycle(product: Product, budget: SearchBudget) -> SearchResu
         prefix, cycle, closing = build_lasso(product, *found, search.explored())
         return SearchResult(VIOLATED, None, prefix, cycle, stats, closing)
     if budget.reason is not None:
+        bad_path = search.bad_path
+        if bad_path is not None:
+            prefix = build_bad_prefix(product, bad_path, search.explored())
+            return SearchResult(VIOLATED, None, prefix, stats=stats, ending=BAD_PREFIX)
         return SearchResult(UNKNOWN, budget.reason, stats=stats)
     return SearchResult(HOLDS, stats=stats)
+
+
+def initial_bad_end(product: Product, initial_keys: list[int]) -> Optional[list[int]]:
+    """``[key]`` of the first initial product state that ends a bad prefix, else None: the
+    search may never come back to the initial states after the first one (a model that
+    keeps making new states), so they are looked at before it starts."""
+    for key in initial_keys:
+        if product.is_universal(key):
+            return [key]
+    return None
 
 
 class _CycleSearch:
@@ -63,6 +88,8 @@ class _CycleSearch:
         self.root_accepting = bytearray()     # parallel to roots
         self.transitions = 0
         self.max_depth = 0
+        # the DFS path to the first state seen that ends a bad prefix (``Product.universal``)
+        self.bad_path: Optional[list[int]] = None
 
     def stats(self) -> SearchStats:
         stored = len(self.dead)
@@ -82,7 +109,11 @@ class _CycleSearch:
 
     def run(self):
         """None when no accepting cycle was found; else (DFS path keys, component keys)."""
-        for key in self.product.initial_keys():
+        initial_keys = self.product.initial_keys()
+        self.bad_path = initial_bad_end(self.product, initial_keys)
+        if self.bad_path is not None:
+            self.budget.saw_bad_prefix(0)
+        for key in initial_keys:
             if self._number_of(key) >= 0:
                 continue
             if not self.budget.may_store(len(self.dead)):
@@ -105,6 +136,11 @@ class _CycleSearch:
         number, dead, active = self.number, self.dead, self.active
         roots, root_accepting = self.roots, self.root_accepting
         accepting, width = self.product.accepting, self.product.width
+        # whether to look for a bad prefix's end among the successors of each state pushed:
+        # noted when seen, not when pushed, since the depth-first search may never come back
+        # to a successor of a model that keeps making new states (initial states: ``run``)
+        universal = self.product.universal
+        watching = self.bad_path is None and any(universal)
         successor_keys = self.product.successor_keys
         budget = self.budget
         max_states = budget.max_states
@@ -131,6 +167,14 @@ class _CycleSearch:
                         last = max(successors)
                         if last >= len(number):
                             number.extend(UNSEEN * (last + 1 - len(number) + len(number) // 8))
+                        if watching:       # the first successor that ends a bad prefix
+                            for successor in successors:
+                                if universal[successor % width]:
+                                    self.bad_path = path_keys + [key, successor]
+                                    watching = False
+                                    budget.saw_bad_prefix(len(dead))
+                                    max_states = budget.max_states
+                                    break
                         successors.reverse()
                         pending.extend(successors)
                     path_keys.append(key)
@@ -199,8 +243,16 @@ class _NativeCycleSearch:
         self.product = product
         self.budget = budget
         self.graph = product.native_successors()
+        self.initial_bad_path: Optional[list[int]] = None
         self.search = _native.CycleSearch(product.successor_keys, bytes(product.accepting),
-                                          product.width, budget, self.graph)
+                                          product.width, budget, self.graph,
+                                          bytes(product.universal))
+
+    @property
+    def bad_path(self) -> Optional[list[int]]:
+        """``_CycleSearch.bad_path``: an initial state that ends a bad prefix, else the DFS
+        path to the first state the search saw that does."""
+        return self.initial_bad_path or self.search.bad_path()
 
     def stats(self) -> SearchStats:
         counts = self.search.counts()
@@ -218,7 +270,11 @@ class _NativeCycleSearch:
     def run(self):
         """None when no accepting cycle was found; else (DFS path keys, component keys)."""
         search = self.search
-        for key in self.product.initial_keys():
+        initial_keys = self.product.initial_keys()
+        self.initial_bad_path = initial_bad_end(self.product, initial_keys)
+        if self.initial_bad_path is not None:
+            self.budget.saw_bad_prefix(0)
+        for key in initial_keys:
             if search.contains_key(key):
                 continue
             if not self.budget.may_store(search.counts()["stored"]):

@@ -79,7 +79,39 @@ def build_lasso(product: Product, dfs_path: list[int], component: Collection[int
     return prefix, cycle, back[-1][0]
 
 
-def shortest_entry(product: Product, dfs_path: list[int], component: Collection[int],
+def build_bad_prefix(product: Product, dfs_path: list[int],
+                     explored: Container[int]) -> list[LassoStep]:
+    """The steps of a bad prefix: a shortest path through explored states to a state from
+    which every run violates the property (``Product.universal``), else ``dfs_path``, which
+    ends in one."""
+    ends_bad = _BadEnds(product)
+    return [product.lasso_step(key, label) for label, key in
+            shortest_entry(product, dfs_path, ends_bad, _ExploredOrBadEnd(explored, ends_bad))]
+
+
+class _BadEnds:
+    """``key in ends_bad``: a product state that ends a bad prefix."""
+
+    def __init__(self, product: Product):
+        self.product = product
+
+    def __contains__(self, key: int) -> bool:
+        return self.product.is_universal(key)
+
+
+class _ExploredOrBadEnd:
+    """Where the path to a bad end may go: explored states, and the bad end itself (the
+    search notes one when it sees it, before storing it)."""
+
+    def __init__(self, explored: Container[int], ends_bad: _BadEnds):
+        self.explored = explored
+        self.ends_bad = ends_bad
+
+    def __contains__(self, key: int) -> bool:
+        return key in self.explored or key in self.ends_bad
+
+
+def shortest_entry(product: Product, dfs_path: list[int], component: Container[int],
                     explored: Container[int]) -> list[LabelledKey]:
     """A shortest path through explored states into the component, else the DFS path.
 

@@ -15,6 +15,7 @@ from __future__ import annotations
 from array import array
 from typing import Hashable, Optional
 
+from ..ltl.universal import universal_states
 from .result import LassoStep
 from .store import ModelStore
 
@@ -36,6 +37,11 @@ class Product:
         self.accepting = bytearray(self.width)
         for q in buchi.accepting:
             self.accepting[q] = 1
+        # automaton states from which every continuation is accepted: a product state there
+        # ends a bad prefix (``ltl.universal``)
+        self.universal = bytearray(self.width)
+        for q in universal_states(buchi):
+            self.universal[q] = 1
         # the guard tables: per automaton state, indexed by a valuation's bits that some
         # guard reads (``valuation & read``), the distinct targets (``moves``); None when
         # the guards read too many bits, to keep the tables small
@@ -55,6 +61,10 @@ class Product:
 
     def is_accepting(self, key: int) -> bool:
         return bool(self.accepting[key % self.width])
+
+    def is_universal(self, key: int) -> bool:
+        """Whether every run that goes on from ``key`` violates the property."""
+        return bool(self.universal[key % self.width])
 
     def targets(self, automaton_state: int, valuation: int) -> list[int]:
         """Automaton states reached from ``automaton_state`` reading ``valuation``, in edge order."""

@@ -7,7 +7,9 @@ state to ``cycle[0]``; the successor of ``cycle[-1]`` is ``cycle[0]``,
 reached by the transition labelled ``closing_label``.  Reachability
 results have an empty cycle and ``closing_label`` None; their ``ending`` may
 say, in words, what is wrong in the last state (an uncaught error, a wait
-that never ends).
+that never ends).  So does a property's bad prefix: an empty cycle, and
+``ending`` ``BAD_PREFIX`` (every run that goes on from its last state violates
+the property).
 """
 from __future__ import annotations
 
@@ -17,6 +19,10 @@ from typing import Hashable, Optional
 HOLDS = "HOLDS"
 VIOLATED = "VIOLATED"
 UNKNOWN = "UNKNOWN"
+
+BAD_PREFIX = "every run that goes on from this step violates the property"
+"""``SearchResult.ending`` of a property violated by a finite path (a bad prefix): the
+automaton of its negation accepts whatever follows (``check.emptiness``)."""
 
 NO_AUTOMATON = -1
 """``LassoStep.automaton_state`` of paths found without an automaton (reachability)."""

@@ -23,7 +23,7 @@ from typing import Hashable, Mapping, Optional, Protocol
 
 from .fold import fold_lasso
 from .transition_system import STUTTER
-from .result import LassoStep, SearchResult
+from .result import BAD_PREFIX, LassoStep, SearchResult
 
 INITIAL = "initial"
 TRANSITION = "transition"
@@ -134,6 +134,12 @@ class Trace:
     def loop_start(self) -> Optional[int]:
         """The index of the first cycle step, or None for a finite path."""
         return self.cycle[0].index if self.cycle else None
+
+    @property
+    def bad_prefix(self) -> bool:
+        """Whether this is a property's finite counterexample: a path after whose last step
+        every run violates the property (``result.BAD_PREFIX``), no loop."""
+        return not self.cycle and self.ending == BAD_PREFIX
 
 
 def changes_between(before: Optional[Mapping[str, str]], after: Mapping[str, str],

@@ -7,6 +7,9 @@ step: each step on stderr as ``check`` prints it, FlexPendant output on
 stdout as ``run`` prints it.  A program that no longer follows the trace
 (edited since) stops the replay with a diagnostic at the step that broke.
 
+A property's bad prefix (a finite path after which every run violates the
+property: no loop) replays to its last step and says so.
+
 Exit codes: 0 the counterexample replays to its end (its loop closes);
 2 the trace file is unusable or the program no longer follows it.
 """
@@ -53,7 +56,9 @@ def execute(args: argparse.Namespace) -> int:
         sys.stdout.flush()
         raise _diverged(entry["name"], exc) from None
     sys.stdout.flush()
-    loop = f", the loop back to step {trace.loop_start} closes" if trace.loop_start else ""
+    ending = (entry["trace"].get("error") or {}) if not trace.loop_start else {}
+    loop = f", the loop back to step {trace.loop_start} closes" if trace.loop_start else \
+        f", then any run: {ending['message']}" if ending.get("bad_prefix") else ""
     print(f"{entry['name']}: the counterexample replays: {count} steps{loop}", file=sys.stderr)
     return EXIT_OK
 

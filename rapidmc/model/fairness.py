@@ -65,7 +65,11 @@ class TaskFairness:
 
     def unfair_tasks(self, steps: list, closing_label: Hashable) -> list[str]:
         """The tasks a lasso's cycle starves: able to go on in each of its states, never
-        stepping (``steps``: the cycle's ``LassoStep``s).  Empty for a fair cycle."""
+        stepping (``steps``: the cycle's ``LassoStep``s).  Empty for a fair cycle, and for a
+        bad prefix (no cycle): every run that goes on from its end violates the property,
+        the runs fair to every task among them."""
+        if not steps:
+            return []
         states = [step.state for step in steps]
         labels = [step.label for step in steps[1:]] + [closing_label]
         met = {self.taken(state, label) for state, label in zip(states, labels)}

@@ -75,6 +75,8 @@ def counterexample_lines(trace: Trace, options: TextOptions = TextOptions()) -> 
     if trace.cycle:
         head = (f"  counterexample: {_steps(len(trace.prefix))}, "
                 f"then a loop of {_steps(len(trace.cycle))}")
+    elif trace.bad_prefix:
+        head = f"  counterexample: {_steps(count)}, then any run (no loop needed)"
     else:
         head = f"  counterexample: {_steps(count)}"
     if not options.full:
@@ -105,7 +107,8 @@ def _prefix_items(trace: Trace, needed: frozenset, options: TextOptions) -> list
     folded = _folded(trace.prefix, options)
     if options.full or not (trace.cycle or trace.ending):
         return folded                          # an ending of unknown reads: all of it
-    reader = "the loop or the property" if trace.cycle else "the error"
+    reader = "the loop or the property" if trace.cycle else \
+        "the property" if trace.bad_prefix else "the error"
     items: list = []
     run: list[TraceStep] = []
     for item in [*folded, None]:

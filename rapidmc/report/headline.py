@@ -23,11 +23,12 @@ NOT_CALLED = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?![A-Za-z0-9_]|\s*\()")   # no f
 
 
 def headline_lines(trace: Trace, options: TextOptions = TextOptions()) -> list[str]:
-    """For a path that ends in an error: the error, where, and the data its line reads."""
+    """For a path that ends in an error: the error, where, and the data its line reads (for
+    a property's bad prefix: that every run going on from its last step violates it)."""
     if trace.cycle or not trace.ending:
         return []
     steps = list(trace.prefix)
-    lines = [f"  error: {trace.ending}"]
+    lines = [f"  {'violated' if trace.bad_prefix else 'error'}: {trace.ending}"]
     last = steps[-1]
     if last.transition is None or not last.transition.location:
         return lines

@@ -297,7 +297,8 @@ def error_json_of(trace: Trace, stub_data: frozenset = frozenset()) -> Optional[
     reads = [{"name": name, "value": value, "origin": origin}
              for name, value, origin in read_data(trace.prefix, stub_data)] \
         if last.transition is not None and last.transition.location else []
-    return {"message": trace.ending, "step": last.index, "reads": reads}
+    return {"message": trace.ending, "step": last.index, "reads": reads,
+            "bad_prefix": trace.bad_prefix}
 
 
 def step_json(step: TraceStep) -> dict:

@@ -153,13 +153,17 @@ def _violation(index: int, checked: PropertyResult, trace: Trace) -> dict:
 
 def _shape(trace: Trace) -> str:
     """``counterexample: 3 steps, then a loop of 2 steps``, or for a path ending in an error
-    ``counterexample: 5 steps to uncaught ERR_DIVZERO: division by zero, reading n = 0``."""
+    ``counterexample: 5 steps to uncaught ERR_DIVZERO: division by zero, reading n = 0``, or
+    for a property's bad prefix ``counterexample: 5 steps, then any run: every run ...``."""
     if trace.cycle or not trace.ending:
         return f"counterexample: {len(trace.prefix)} steps, then a loop of " \
                f"{len(trace.cycle)} steps"
     read = read_data(trace.prefix) if trace.prefix[-1].transition is not None else []
     reads = ", ".join(f"{name} = {shorten(value, WIDTH)} ({origin})"
                       for name, value, origin in read)
+    if trace.bad_prefix:
+        return f"counterexample: {len(trace.prefix)} steps, then any run: {trace.ending}" + \
+            (f"; step {trace.prefix[-1].index} reads {reads}" if reads else "")
     return f"counterexample: {len(trace.prefix)} steps to {trace.ending}" + \
         (f", reading {reads}" if reads else "")
 

@@ -152,8 +152,15 @@
       (reads.length ? ", reading " + reads.join(", ") : "") + ".";
   }
 
+  // "23 steps, then any run: every run that goes on from this step violates the property."
+  function badPrefixText(total, error) {
+    return plural(total, "step") + ", then any run: " + error.message + " (no loop needed).";
+  }
+
   function traceShape(trace) {
     const total = trace.steps.length;
+    if (trace.loop_start === null && trace.error && trace.error.bad_prefix)
+      return badPrefixText(total, trace.error);
     if (trace.loop_start === null && trace.error) return errorText(total, trace.error);
     if (trace.loop_start === null) return plural(total, "step") + " to the state that violates it.";
     const prefix = trace.loop_start - 1;
