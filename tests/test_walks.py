@@ -66,3 +66,13 @@ def test_walks_repeat_themselves_for_a_seed_and_stop_at_their_steps():
     assert seen_by(2000, seed=3) == seen_by(2000, seed=3)
     assert seen_by(2000, seed=3) != seen_by(2000, seed=4)
     assert len(seen_by(777)) == 777
+
+
+def test_a_stop_requested_ends_the_walks(monkeypatch):
+    # the coverage probes walk after the verdicts; a first interrupt (a CPU time limit's
+    # SIGXCPU) ends the walks at once, so the report of the verdicts reached comes first
+    from rapidmc.check import budget
+    monkeypatch.setattr(budget, "stop_requested", "interrupted by SIGXCPU")
+    assert seen_by(3000) == []
+    monkeypatch.setattr(budget, "stop_requested", None)
+    assert len(seen_by(3000)) == 3000

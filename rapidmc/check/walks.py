@@ -33,6 +33,7 @@ from __future__ import annotations
 import random
 from typing import Callable, Hashable, Iterable, Optional, Sequence
 
+from . import budget
 from .transition_system import TransitionSystem, labelled_successors
 
 # per walk, the probability of keeping to the values chosen before (one drawn per walk)
@@ -56,13 +57,16 @@ def random_walks(system: TransitionSystem, observe: Observer, steps: int,
     initial = list(system.initial_states())
     fruitful: list = []                    # states after which found() grew, in order
     taken = walks = 0
-    while taken < steps and initial and not (enough is not None and enough()):
+    while taken < steps and initial and not (enough is not None and enough()) \
+            and budget.stop_requested is None:          # (a first interrupt ends the walks)
         walks += 1
         starts = fruitful if fruitful and walks % 2 == 0 else initial
         state = starts[rng.randrange(len(starts))]
         preferred: dict = {}
         stickiness = STICKINESS[rng.randrange(len(STICKINESS))]
         for _ in range(min(length, steps - taken)):
+            if budget.stop_requested is not None:
+                break
             successors = labelled_successors(system, state)
             before = found()
             observe(state, successors)
