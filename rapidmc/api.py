@@ -37,7 +37,7 @@ from typing import Callable, Iterable, Mapping, Optional, Sequence
 
 from . import ast
 from .check import HOLDS, UNKNOWN, VIOLATED, Progress, SearchResult, find_reachable
-from .check import native
+from .check import budget, native
 from .check.budget import DEFAULT_MAX_STATES, time_check
 from .check.distributed import Cluster
 from .check.trace import Trace, build_trace
@@ -533,13 +533,13 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
             searches = _Searches(model, progress, ray)
             results = searches.builtin_checks() + [searches.property(*job) for job in model.jobs]
         bound = _probe_bound(results)
-        if searches.facts.complete and any(d.probes for d in model.messages):
+        if _probing(searches) and any(d.probes for d in model.messages):
             searches.facts.statements.executed |= _probed_lines(model, bound)
-        if searches.facts.complete and searches.facts.waits_for_closures():
+        if _probing(searches) and searches.facts.waits_for_closures():
             lines, complete = _closure_probe(model, bound)
             searches.facts.statements.executed |= lines
             searches.facts.closures_tried = complete
-        if searches.facts.complete and searches.facts.waits_for_readings():
+        if _probing(searches) and searches.facts.waits_for_readings():
             lines, complete = _readings_probe(model, bound)
             searches.facts.statements.executed |= lines
             searches.facts.readings_tried = complete
@@ -547,9 +547,9 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
                 lines, complete = _closure_probe(model, bound, readings_free=True)
                 searches.facts.statements.executed |= lines
                 searches.facts.closures_tried |= complete
-        if searches.facts.complete and searches.facts.waits_for_start():
+        if _probing(searches) and searches.facts.waits_for_start():
             searches.facts.statements.executed |= _start_probe(model)
-        if searches.facts.complete and searches.facts.waits_for_other_tasks():
+        if _probing(searches) and searches.facts.waits_for_other_tasks():
             searches.facts.statements.executed |= _shared_data_probe(model, bound)
     resting_on = stated_domains(model.assumed) \
         + assumptions(model.program, model.config.robot_untracked)
@@ -557,6 +557,14 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
                for r in results]
     return CheckReport(results, _findings(model, results, searches.facts, searches.notes),
                        model.describer, searches.facts.executed(), searches.facts.inputs_tried())
+
+
+def _probing(searches: "_Searches") -> bool:
+    """Whether the coverage probes go on: the check's facts are complete and no interrupt
+    asked to stop (its verdicts are reached: the report comes first).  Probes only add
+    lines that run, so a warning left by a probe not run keeps its qualifier (``with the
+    readings fixed``): it stays true of the inputs it names."""
+    return searches.facts.complete and budget.stop_requested is None
 
 
 @contextlib.contextmanager

@@ -43,7 +43,8 @@ def run_interrupted(monkeypatch, signals: list, after: int = 20_000) -> tuple[in
     return code, out.getvalue(), err.getvalue()
 
 
-@pytest.mark.parametrize("sent, name", [(signal.SIGTERM, "SIGTERM"), (signal.SIGINT, "SIGINT")])
+@pytest.mark.parametrize("sent, name", [(signal.SIGTERM, "SIGTERM"), (signal.SIGINT, "SIGINT"),
+                                        (signal.SIGXCPU, "SIGXCPU")])
 def test_a_first_interrupt_keeps_the_verdicts_reached_and_stops_the_rest(monkeypatch, sent,
                                                                          name):
     before = signal.getsignal(signal.SIGTERM)     # (a test run's own, or Ray's, or none)
@@ -60,6 +61,15 @@ def test_a_first_interrupt_keeps_the_verdicts_reached_and_stops_the_rest(monkeyp
 def test_a_second_interrupt_ends_the_command_at_once(monkeypatch):
     code, out, err = run_interrupted(monkeypatch, [signal.SIGTERM, signal.SIGTERM])
     assert code == 130 and "rapidmc: interrupted" in err and out == ""
+
+
+def test_a_cpu_limit_repeating_its_signal_still_gets_the_report(monkeypatch):
+    # the kernel sends SIGXCPU again each second past the soft limit (ulimit -t): only the
+    # hard limit may end the command, so the report of the verdicts reached is written
+    code, out, err = run_interrupted(monkeypatch, [signal.SIGXCPU, signal.SIGXCPU])
+    found = {p["name"]: p for p in json.loads(out)["properties"]}
+    assert found["no_deadlock"]["reason"] == "interrupted by SIGXCPU"
+    assert code == 1, err
 
 
 def test_outside_a_command_the_handlers_are_the_callers():

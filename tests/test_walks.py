@@ -108,3 +108,13 @@ def test_a_walk_takes_the_steps_that_show_something_new():
     assert not ends & walked_by(20000, guided=False)
     # guided: a walk climbs one chain, a later one the other
     assert ends <= walked_by(1000, guided=True)
+
+
+def test_a_stop_requested_ends_the_walks(monkeypatch):
+    # the coverage probes walk after the verdicts; a first interrupt (a CPU time limit's
+    # SIGXCPU) ends the walks at once, so the report of the verdicts reached comes first
+    from rapidmc.check import budget
+    monkeypatch.setattr(budget, "stop_requested", "interrupted by SIGXCPU")
+    assert seen_by(3000) == []
+    monkeypatch.setattr(budget, "stop_requested", None)
+    assert len(seen_by(3000)) == 3000

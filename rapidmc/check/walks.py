@@ -41,6 +41,7 @@ from __future__ import annotations
 import random
 from typing import Callable, Hashable, Iterable, Optional, Sequence
 
+from . import budget
 from .transition_system import TransitionSystem, labelled_successors
 
 # per walk, the probability of keeping to the values chosen before (one drawn per walk)
@@ -70,7 +71,8 @@ def random_walks(system: TransitionSystem, observe: Observer, steps: int,
     fruitful: list = []                    # states after which found() grew, in order
     frontier: list = []                    # targets of new steps no walk has gone on from
     taken = walks = 0
-    while taken < steps and initial and not (enough is not None and enough()):
+    while taken < steps and initial and not (enough is not None and enough()) \
+            and budget.stop_requested is None:          # (a first interrupt ends the walks)
         walks += 1
         if frontier:
             state = frontier.pop()          # the latest discovery first: deepest code
@@ -81,6 +83,8 @@ def random_walks(system: TransitionSystem, observe: Observer, steps: int,
         stickiness = STICKINESS[rng.randrange(len(STICKINESS))]
         idle = 0
         for _ in range(min(length, steps - taken)):
+            if budget.stop_requested is not None:
+                break
             successors = labelled_successors(system, state)
             fresh = [one for one in novel(successors) if one[1] != state] \
                 if novel is not None else []

@@ -278,6 +278,15 @@ def _whole_fixed(program: Program, data) -> str:
             f"(more than {WAIT_CHOICES} combinations of its elements' values)")
 
 
+def _only_tasks(chosen) -> str:
+    """That the tasks left out are taken to be the only writers, with the values their code
+    writes, when that narrowed the domain (``OutsideData.written_by_tasks``)."""
+    if chosen.written_by_tasks is None:
+        return ""
+    return (f", only by {chosen.written_by_tasks} with the values their code assigns "
+            f"(no PC or HMI writes it)")
+
+
 def _value_origin(data, chosen) -> str:
     """Where the value of data written outside comes from when no loaded declaration
     gives one: another task's declaration, or a valid value in place of zeros."""
@@ -321,7 +330,7 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
         if chosen is not None and chosen.also_written_by is not None:
             yield Assumption(OTHER_WRITER, data.name,
                              f"PERS {data.name} is written by the loaded code and by "
-                             f"{chosen.also_written_by}; its reads in WaitUntil and loop conditions "
+                             f"{chosen.also_written_by}{_only_tasks(chosen)}; its reads in WaitUntil and loop conditions "
                              f"(and the functions they call) "
                              f"take the stored value or {chosen.describe()}, other reads the "
                              f"stored value{_whole_fixed(program, data)} ({_where(data.span)})")
@@ -337,7 +346,7 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
                 if chosen.observed else ""
             yield Assumption(OTHER_WRITER, data.name,
                              f"PERS {data.name} is written outside the loaded code"
-                             f"{_value_origin(data, chosen)}; its reads take "
+                             f"{_only_tasks(chosen)}{_value_origin(data, chosen)}; its reads take "
                              f"{chosen.describe()}{_whole_fixed(program, data)}{seen} "
                              f"({_where(data.span)})")
         else:

@@ -26,7 +26,8 @@ from ..diagnostics import (EXIT_OK, FILE_NOT_FOUND, NO_PROGRAM, PROGRAM_FILE, TA
 from .config_file import instances
 from .encrypted import (interface_module, is_encrypted, missing_module, only_encrypted_note,
                         skipped_note)
-from .other_writers import declared_values, other_writers, task_output_writers
+from .other_writers import (declared_values, other_writers, task_output_writers,
+                            written_constants)
 from .outside_outputs import controller_writers
 from .task_config import BackupTask, config_file, read_tasks, task_names
 from ..semantics.library.configuration import Configuration
@@ -226,6 +227,9 @@ class ProgramFiles:
     persistent_values: Optional[dict] = None
     # --stubs: each task's missing names declared from their uses (``with_interfaces``)
     stub_missing: bool = False
+    # upper-case PERS name -> what the tasks not loaded write to it, when known
+    # (load.other_writers.written_constants; None: unknown)
+    written_constants: Optional[dict] = None
 
 
 def resolve_program_files(args) -> ProgramFiles:
@@ -238,6 +242,7 @@ def resolve_program_files(args) -> ProgramFiles:
     main_task, main_entry, notes, alone = None, "main", [], None
     encrypted: dict = {}
     writers: dict = {}
+    constants: dict = {}
     output_writers: dict = {}
     values: dict = {}
     configuration = None
@@ -273,6 +278,8 @@ def resolve_program_files(args) -> ProgramFiles:
         for key, who in outside_writers.items():
             writers.setdefault(key, who)
         notes.extend(unparsed)
+        for key, found in written_constants(path, [t.name for t in chosen]).items():
+            constants.setdefault(key, found)
         for key, found in declared_values(path, [t.name for t in chosen]).items():
             values.setdefault(key, found)
         for key, who in task_output_writers(path, [t.name for t in chosen]).items():
@@ -306,7 +313,7 @@ def resolve_program_files(args) -> ProgramFiles:
     return ProgramFiles(paths, tasks, signals, main_task, main_entry, tuple(notes), alone,
                         configuration, encrypted, tuple(motion_tasks), writers,
                         tuple(dict.fromkeys(names)), output_writers, values,
-                        bool(getattr(args, "stubs", False)))
+                        bool(getattr(args, "stubs", False)), written_constants=constants)
 
 
 def _readable_files(paths: list[str]) -> tuple[list[str], list[str]]:
@@ -393,6 +400,7 @@ def link_options(files: ProgramFiles) -> dict:
             "all_tasks_loaded": files.main_task is not None and files.alone is None,
             "configuration": files.configuration, "motion_tasks": files.motion_tasks,
             "outside_writers": files.outside_writers or {}, "task_names": files.task_names,
+            "written_constants": files.written_constants or {},
             "output_writers": files.output_writers or {},
             "persistent_values": files.persistent_values or {}}
 

@@ -112,10 +112,11 @@ def message_domains(program: Program) -> tuple:
     """A ``MessageDomain`` per reading site of the program's own code, in source order:
     socket receives, ``x := ReadStr(...)`` / ``x := ReadNum(...)``, ``TPReadNum``."""
     found = []
+    shared = _Walked(program)
     for routines in task_routines(program):       # each task's code apart: names are its own
         for routine in routines:
-            for node, _ in ast.walk(routine.ast):
-                domain = _site_domain(program, routines, node, routine.ast)
+            for node, _ in shared.nodes(routine):
+                domain = _site_domain(program, routines, node, routine.ast, shared)
                 if domain is not None:
                     found.append(domain)
     return tuple(sorted(_bounded(found), key=lambda d: (d.site.file, d.site.line,
@@ -137,7 +138,57 @@ def _bounded(domains: list) -> list:
             if d.narrower else d for d in domains]
 
 
-def _site_domain(program, routines, node, routine=None) -> Optional[MessageDomain]:
+# the nodes ``Uses._spread`` acts on (``_incremented``'s too: an assignment or Incr)
+SPREADING = (ast.Assignment, ast.Return, ast.ProcedureCall, ast.FunctionCall)
+
+
+class _Walked:
+    """What every reading site's ``Uses`` reads of one program, computed once: the
+    routines some call reaches, and each routine's syntax nodes with their ancestors (a
+    menu program with hundreds of TPReadNum sites walked its whole code for each, many
+    times over: 40 CPU s before a search started)."""
+
+    def __init__(self, program: Program):
+        self.called = called_routines(program)
+        self._nodes: dict[int, tuple] = {}
+        self._names: dict[int, tuple] = {}
+        self._spreading: dict[int, tuple] = {}       # (routine.ast kept by ``_nodes``)
+
+    def nodes(self, routine) -> tuple:
+        """``ast.walk(routine.ast)`` as a tuple (the trees are immutable)."""
+        return self.under(routine.ast)
+
+    def under(self, tree) -> tuple:
+        """``ast.walk(tree)`` as a tuple, kept by the tree's identity (the tree is kept too,
+        so no other object takes its id)."""
+        found = self._nodes.get(id(tree))
+        if found is None:
+            found = self._nodes[id(tree)] = (tree, tuple(ast.walk(tree)))
+        return found[1]
+
+    def spreading(self, routine) -> tuple:
+        """The (node, ancestors) of ``routine`` that ``Uses._spread`` acts on: assignments,
+        RETURNs and calls (the rest it passes over, at each round of its fixpoint)."""
+        found = self._spreading.get(id(routine.ast))
+        if found is None:
+            found = self._spreading[id(routine.ast)] = tuple(
+                (node, parents) for node, parents in self.nodes(routine)
+                if isinstance(node, SPREADING))
+        return found
+
+    def names(self, expr) -> tuple:
+        """(the upper-case names, the functions called) in ``expr``."""
+        found = self._names.get(id(expr))
+        if found is None:
+            nodes = [node for node, _ in self.under(expr)]
+            found = self._names[id(expr)] = (
+                frozenset(n.name.key for n in nodes if isinstance(n, ast.NameRef)),
+                frozenset(n.name.key for n in nodes if isinstance(n, ast.FunctionCall)))
+        return found
+
+
+def _site_domain(program, routines, node, routine=None,
+                 shared: Optional[_Walked] = None) -> Optional[MessageDomain]:
     """The domain of ``node`` when it reads from the environment into named data."""
     if isinstance(node, ast.ProcedureCall) and node.name.key in RECEIVES \
             and _named_argument(node, "DATA") is not None:
@@ -145,7 +196,7 @@ def _site_domain(program, routines, node, routine=None) -> Optional[MessageDomai
     if isinstance(node, ast.ProcedureCall) and node.name.key in RECEIVES:
         raw = _named_argument(node, "RAWDATA")
         target = raw if raw is not None else _named_argument(node, "STR")
-        uses = _followed(program, routines, target)
+        uses = _followed(program, routines, target, shared)
         if uses is None:
             return None
         wanted = _literal_number(_named_argument(node, "READNOOFBYTES"))
@@ -162,14 +213,14 @@ def _site_domain(program, routines, node, routine=None) -> Optional[MessageDomai
                              uses.probe_messages() if raw is None else ())
     if isinstance(node, ast.ProcedureCall) and node.name.key in NUMBER_ANSWERS:
         positional = [a.value for a in node.args if a.kind == ast.REQUIRED and a.name is None]
-        uses = _followed(program, routines, positional[0] if positional else None)
+        uses = _followed(program, routines, positional[0] if positional else None, shared)
         if uses is None or not uses.numbers:
             return None
         return MessageDomain(node.span, NUMBER_ANSWERS[node.name.key], ANSWERS,
                              _number_points(uses.numbers), uses.exact, uses.number_reason())
     if isinstance(node, ast.Assignment) and isinstance(node.value, ast.FunctionCall):
         call = node.value
-        uses = _followed(program, routines, node.target) \
+        uses = _followed(program, routines, node.target, shared) \
             if call.name.key in TEXT_FILES or call.name.key in NUMBER_FILES else None
         if uses is None:
             return None
@@ -225,10 +276,10 @@ def _framed(messages: tuple, encoding: tuple, network: bool) -> tuple:
     return tuple(dict.fromkeys(frames))
 
 
-def _followed(program, routines, target) -> Optional["Uses"]:
+def _followed(program, routines, target, shared: Optional[_Walked] = None) -> Optional["Uses"]:
     if not isinstance(target, ast.NameRef):
         return None
-    uses = Uses(program, routines)
+    uses = Uses(program, routines, shared)
     uses.follow({target.name.key: {IDENTITY}})
     return uses
 
@@ -328,8 +379,9 @@ class Uses:
     of the same name are one): following too much only adds messages.
     """
 
-    def __init__(self, program: Program, routines: list):
+    def __init__(self, program: Program, routines: list, shared: Optional[_Walked] = None):
         self.program, self.routines = program, routines
+        self.walked = shared if shared is not None else _Walked(program)
         self.views: dict[str, set] = {}          # name key -> how it was taken from the message
         self.functions: set[str] = set()         # FUNCs returning data from the message
         self.compared: list[tuple] = []          # (view, string) compared
@@ -347,7 +399,7 @@ class Uses:
         self.exact = True                        # every read tells apart only what was tried
         self.string_arrays: set = set()          # string arrays the message's fields go into
         # what a routine no call reaches compares chooses nothing a search can reach
-        self.called = called_routines(program)
+        self.called = self.walked.called
 
     def follow(self, start: dict) -> None:
         """Every name and function the data reaches, to a fixpoint, then what is done there."""
@@ -357,7 +409,7 @@ class Uses:
         while size != self._size():
             size = self._size()
             for routine in self.routines:
-                for node, parents in ast.walk(routine.ast):
+                for node, parents in self.walked.spreading(routine):
                     self._spread(node, parents, routine)
         for routine in self.routines:
             for key in self.views:
@@ -368,7 +420,7 @@ class Uses:
         for routine in self.routines:
             if self.called is not None and routine.name not in self.called:
                 continue
-            for node, parents in ast.walk(routine.ast):
+            for node, parents in self.walked.nodes(routine):
                 self._observe(node, parents, routine)
 
     def _size(self) -> int:
@@ -409,7 +461,7 @@ class Uses:
             isinstance(node, ast.FunctionCall) and node.name.key in SCANS and node.args
             and isinstance(node.args[0].value, ast.NameRef)
             and IDENTITY in self.views.get(node.args[0].value.name.key, ())
-            for node, _ in ast.walk(loop))
+            for node, _ in self.walked.under(loop))
 
     def _flow(self, value, target) -> None:
         base = _base_name(target)
@@ -520,12 +572,10 @@ class Uses:
 
     def carries(self, expr) -> bool:
         """Whether ``expr`` holds data taken from the message."""
-        for node, _ in ast.walk(expr):
-            if isinstance(node, ast.NameRef) and node.name.key in self.views:
-                return True
-            if isinstance(node, ast.FunctionCall) and node.name.key in self.functions:
-                return True
-        return False
+        if expr is None:
+            return False
+        names, functions = self.walked.names(expr)
+        return not names.isdisjoint(self.views) or not functions.isdisjoint(self.functions)
 
     def view_of(self, expr) -> set:
         """How ``expr``'s value was taken from the message: the views of a name, a
@@ -706,7 +756,7 @@ class Uses:
             return []
         found = []
         for caller in self.routines:
-            for node, _ in ast.walk(caller.ast):
+            for node, _ in self.walked.nodes(caller):
                 if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) \
                         and node.name.key == routine.key:
                     positional = [a.value for a in node.args

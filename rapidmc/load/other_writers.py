@@ -23,6 +23,14 @@ names it, since its writes are not known but assumed.
 The reads of the named data take the stored value or any value of the domain
 (``outside_data``); the verdicts name the writer under ``assumes:``.
 
+``written_constants`` gives, for the PERS data the tasks not loaded write, the values
+they write, when each write assigns a constant (``nRunningStep{1} := 3``): the reads
+of such data then take its initial value or one of those (``outside_data``), not a
+domain from the comparisons, which would offer values no task ever writes (an index
+below 1 where every task writes 1 to 8).  Any other write (a computed value, a
+routine's argument by reference, SetDataVal, an encrypted or unparsable module, a
+task rapidmc cannot read) leaves the data's values unknown.
+
 ``declared_values`` gives, for a task checked alone, the declarations with a value that
 tasks not loaded hold of shared PERS: one persistent declared in several tasks is one
 object, and a declaration without a value takes the value of another that has one (as
@@ -31,6 +39,7 @@ the controller does; the linker applies it: ``Linker._values_declared_elsewhere`
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 from typing import Iterable, Iterator, Optional
@@ -39,6 +48,7 @@ from .. import ast
 from ..diagnostics import TASKS_LOADED, Diagnostic, UserError
 from ..semantics.library import lookup_function, lookup_procedure
 from ..semantics.library.registry import matched_parameters, mode_may_write
+from ..semantics.values import to_num
 from .shared_data import trees_write_by_name
 
 
@@ -86,6 +96,147 @@ def other_writers(path: Path, loaded: Iterable[str]) -> tuple[dict, list]:
                 "cannot be parsed: every shared PERS its task declares counts as data it "
                 "may write", ast.Span(module, 0, 0), severity="note"))
     return found, notes
+
+
+@dataclass(frozen=True)
+class Counting:
+    """The values a FOR loop's variable takes, written where its bounds are not all
+    constant: ``start``, ``start + step``, ... (each a whole number when both are)."""
+
+    start: float
+    step: float
+
+    def holds(self, value) -> bool:
+        if not isinstance(value, float):
+            return False
+        steps = (value - self.start) / self.step
+        return steps >= 0 and steps == int(steps)
+
+
+@dataclass(frozen=True)
+class TaskWrites:
+    """What the tasks not loaded write to one shared PERS: ``tasks``, their names;
+    ``pairs``, (component path with indices left out, a constant or a ``Counting``)."""
+
+    tasks: tuple
+    pairs: tuple
+
+    def writers(self) -> str:
+        return " and ".join(f"task {name}" for name in self.tasks) + " (not loaded)"
+
+
+MAX_COUNTED = 64          # a FOR loop of constant bounds with more rounds writes a Counting
+
+
+def written_constants(path: Path, loaded: Iterable[str]) -> dict:
+    """Upper-case PERS name -> ``TaskWrites``: what the tasks of the backup at ``path``
+    not among ``loaded`` assign to it, each value a constant (a number, string, bool or
+    an aggregate of them) or a FOR loop's variable (``Counting``), for each shared PERS
+    they write; None for one that some write, or some party whose code is not read,
+    may give another value.  Empty when a task cannot be read at all."""
+    from .backup import backup_tasks, task_encrypted, task_modules_readable, task_modules
+    loaded = set(loaded)
+    found: dict = {}
+    for task in backup_tasks(path):
+        if not task_modules_readable(task):
+            return {}                    # a task of encrypted code only: it may write any
+        if task.name in loaded and not task_encrypted(task):
+            continue
+        programs, unparsable = _parsed_modules(task_modules(path, task))
+        if unparsable:
+            return {}                    # (its declarations and writes are not all known)
+        shared = set().union(*(_shared_persistents(program) for program in programs))
+        if task_encrypted(task):
+            found.update((key, None) for key in shared)
+            continue
+        written = set().union(*(written_names(program) for program in programs)) & shared
+        if trees_write_by_name(routine for program in programs
+                               for module in program.modules for routine in module.routines):
+            written = shared             # SetDataVal: any value
+        assigned = _constant_assignments(programs, written)
+        for key in sorted(written):
+            pairs, before = assigned.get(key), found.get(key, TaskWrites((), ()))
+            found[key] = None if pairs is None or before is None else \
+                TaskWrites((*before.tasks, task.name),
+                           tuple(sorted({*before.pairs, *pairs}, key=repr)))
+    return found
+
+
+def _constant_assignments(programs: list, names: set) -> dict:
+    """Upper-case name -> the (component path, value) pairs of its assignments, for the
+    ``names`` every write of which (``written_names``) assigns a constant or a FOR loop's
+    variable; a name written any other way, or assigned another value, is left out."""
+    routines = {routine.name.key: routine for program in programs for module in program.modules
+                for routine in module.routines}
+    pairs: dict = {}
+    unknown: set = set()
+    for routine in routines.values():
+        for node, parents in ast.walk(routine):
+            if isinstance(node, ast.Assignment):
+                target = _target_path(node.target)
+                if target is None or target[0] not in names:
+                    continue
+                values = _assigned_values(node.value, parents)
+                if values is None:
+                    unknown.add(target[0])
+                else:
+                    pairs.setdefault(target[0], set()).update((target[1], v) for v in values)
+            else:
+                unknown |= _written_otherwise(node, routines)
+    return {name: frozenset(found) for name, found in pairs.items() if name not in unknown}
+
+
+def _assigned_values(value, parents) -> Optional[tuple]:
+    """The values an assignment's right side may give: a constant; the variable of an
+    enclosing FOR loop with a constant start and step (each round's value, or a
+    ``Counting`` when the loop's end is not constant or far); None: unknown."""
+    constant = constant_value(value)
+    if constant is not None:
+        return (constant,)
+    if not isinstance(value, ast.NameRef):
+        return None
+    loop = next((p for p in reversed(parents) if isinstance(p, ast.For)
+                 and p.variable.key == value.name.key), None)
+    if loop is None:
+        return None
+    start, stop = constant_value(loop.start), constant_value(loop.stop)
+    step = constant_value(loop.step) if loop.step is not None else 1.0
+    if not isinstance(start, float) or not isinstance(step, float) or step == 0:
+        return None
+    if isinstance(stop, float) and 0 <= (stop - start) / step < MAX_COUNTED:
+        return tuple(start + k * step for k in range(int((stop - start) / step) + 1))
+    return (Counting(start, step),)
+
+
+def _target_path(expr) -> Optional[tuple]:
+    """(upper-case root name, component path with indices left out) of an assignment's
+    target ``name``, ``name{i}``, ``name{i}.c``, ...; None for any other target."""
+    path = []
+    while isinstance(expr, (ast.Component, ast.Index)):
+        if isinstance(expr, ast.Component):
+            path.append(expr.name.key)
+        expr = expr.base
+    return (expr.name.key, tuple(reversed(path))) if isinstance(expr, ast.NameRef) else None
+
+
+def constant_value(expr):
+    """The value a literal denotes (a number with its sign, a string, a bool, an aggregate
+    of those as a tuple); None for any other expression."""
+    if isinstance(expr, ast.Unary) and expr.op in ("-", "+") and \
+            isinstance(expr.operand, ast.NumLiteral):
+        value = constant_value(expr.operand)
+        return -value if expr.op == "-" and value is not None else value
+    if isinstance(expr, ast.NumLiteral):
+        try:
+            return to_num(expr.value)
+        except Exception:           # beyond the num range: the write raises, no value
+            return None
+    if isinstance(expr, (ast.StringLiteral, ast.BoolLiteral)):
+        return expr.value
+    if isinstance(expr, ast.Aggregate):
+        items = tuple(constant_value(item) for item in expr.items)
+        return None if any(item is None for item in items) else items
+    return None
 
 
 def declared_values(path: Path, loaded: Iterable[str]) -> dict:
@@ -174,15 +325,25 @@ def written_names(program: ast.Program) -> set:
     for module in program.modules:
         for routine in module.routines:
             for node, _ in ast.walk(routine):
-                if isinstance(node, (ast.Assignment, ast.Connect)):
+                if isinstance(node, ast.Assignment):
                     written.add(_root(node.target))
-                elif isinstance(node, ast.LateBindingCall):
-                    written.update(_root(arg.value) for arg in node.args)
-                elif isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
-                    written.update(_root(arg.value) for arg in node.args
-                                   if _may_write(node, arg, routines))
+                else:
+                    written |= _written_otherwise(node, routines)
     written.discard(None)
     return written
+
+
+def _written_otherwise(node, routines: dict) -> set:
+    """The upper-case roots a node other than an assignment may write: a CONNECT's target,
+    the arguments of a late-bound call, those a routine may write (by reference, or the
+    routine is not declared)."""
+    if isinstance(node, ast.Connect):
+        return {_root(node.target)}
+    if isinstance(node, ast.LateBindingCall):
+        return {_root(arg.value) for arg in node.args}
+    if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
+        return {_root(arg.value) for arg in node.args if _may_write(node, arg, routines)}
+    return set()
 
 
 class _Named:

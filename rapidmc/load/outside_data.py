@@ -64,6 +64,7 @@ values under ``assumes:`` (``findings.assumptions``).
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Optional
 
@@ -74,11 +75,11 @@ from ..semantics.scope import CONSTANT, GLOBAL_DATA
 from ..semantics.types import RECORD, ArrayType, RapidType, default_value
 from ..semantics.values import format_value, to_dnum
 from .awaited_from_outside import VALUE_KEYS, awaited_from_outside
+from .other_writers import Counting
 from .encrypted import from_encrypted_interface
 from .input_domains import analog_points, number_value
 from .shared_data import data_uses, writes_data_by_name
 
-VALUE_KEYS = frozenset({"BOOL", "NUM", "DNUM", "STRING"})
 ORDERINGS = frozenset({"<", "<=", ">", ">="})
 MANY_COMPONENTS = 6              # a record with more is described by its varying components
 AWAITED_WRITER = "a PC or an HMI"      # assumed where no loaded write ends a wait
@@ -116,6 +117,10 @@ class OutsideData:
     # (file, line, column) of the IF conditions in loops that poll it, when the other writer
     # is only assumed (``awaited_from_outside.polled``): read there as in a wait
     polled_at: frozenset = frozenset()
+    # the tasks left out that write it, when each of their writes is a constant or a FOR
+    # loop's count (``other_writers.written_constants``): its domain holds only what they
+    # write, so the verdicts assume that no other party (a PC, an HMI) writes it
+    written_by_tasks: Optional[str] = None
 
     def domain(self, path: tuple) -> Optional[tuple]:
         """The values a read of the component may take; None: the stored value (a
@@ -161,6 +166,7 @@ def outside_data(linker) -> dict:
         written |= task_written
     observed = linker.options.get("observed_names", frozenset())
     writers = linker.options.get("outside_writers") or {}
+    task_writes = linker.options.get("written_constants") or {}
     awaited = awaited_from_outside(linker, routines)      # a wait only a client ends
     chosen = {data.slot: data for data in linker.globals
               if data.storage == "PERS" and data.namespace != ENVIRONMENT_NAMESPACE
@@ -177,11 +183,17 @@ def outside_data(linker) -> dict:
     found = {}
     for slot, data in chosen.items():
         domains = {}
+        known = task_writes.get(data.key)     # the tasks left out write only these values
+        writes = _written_leaves(data.type, known.pairs) if known is not None else {}
         start = unset_value(data.type) if data.declared_without_value \
-            and slot not in written else data.initial
+            and slot not in written and known is None else data.initial
         unset = start != data.initial          # (numbers or orientations in place of zeros)
         for path, leaf_type, initial in _leaves(data.type, start):
-            domains[path] = _domain(leaf_type, initial, compared.get((slot, path)))
+            if known is not None and writes.get(path, ((), (), False))[2] is False:
+                domains[path] = _written_domain(leaf_type, initial, compared.get((slot, path)),
+                                                writes.get(path, ((), (), False)))
+            else:
+                domains[path] = _domain(leaf_type, initial, compared.get((slot, path)))
         if domains:
             # a known writer left out names itself; else a wait only a client ends names one
             awaited_at, polled_at = None, frozenset()
@@ -192,7 +204,8 @@ def outside_data(linker) -> dict:
             found[slot] = OutsideData(slot, data.name, data.span, domains,
                                       writer if slot in written else None,
                                       data.key in observed, awaited_at, unset,
-                                      start if unset else None, polled_at)
+                                      start if unset else None, polled_at,
+                                      known.writers() if known is not None else None)
     return found
 
 
@@ -571,6 +584,70 @@ def _domain(leaf_type: RapidType, initial: set, compared) -> Optional[tuple]:
     if numbers or open_ended:
         values.add(convert(max(values, default=0.0) + 1))
     return tuple(sorted(values)) or (convert(0),)
+
+
+def _written_leaves(rapid_type, pairs: tuple) -> dict:
+    """Component path -> (constants, ``Counting``s, unknown?) that the writes ``pairs``
+    (``other_writers.TaskWrites``) give each value component of data of ``rapid_type``."""
+    found: dict = {}
+    for path, value in pairs:
+        part_type = _part_type(rapid_type, path)
+        if isinstance(value, Counting):
+            while isinstance(part_type, ArrayType):      # (an element assigned the count)
+                part_type = part_type.element
+            key = getattr(part_type, "key", None)
+            entry = found.setdefault((0, path), [set(), False, False])
+            if key in ("NUM", "DNUM"):
+                entry[0].add(value)
+            else:
+                entry[2] = True
+        elif part_type is not None:
+            _spread(found, 0, path, part_type, value, None, False)
+    leaves = {}
+    for (_, path), (values, _, unknown) in found.items():
+        counted = tuple(v for v in values if isinstance(v, Counting))
+        leaves[path] = (tuple(v for v in values if not isinstance(v, Counting)), counted,
+                        unknown)
+    return leaves
+
+
+def _written_domain(leaf_type: RapidType, initial: set, compared, writes: tuple) -> tuple:
+    """The values a read of a component may take when the tasks left out write it only
+    with ``writes`` (constants, ``Counting``s): its initial values and one written value
+    for each set of values the code's comparisons cannot tell apart (each value a
+    constant compared with; the rest, split by the ordering comparisons), so no read
+    takes a value no task writes."""
+    constants, counted = writes[0], writes[1]
+    if leaf_type.key == "BOOL":
+        return tuple(sorted(set(initial) | set(constants)))
+    if compared is None or leaf_type.key == "DNUM":
+        return _domain(leaf_type, initial, compared)     # (as when the writes are unknown)
+    points, ordered, open_ended = compared
+    if open_ended and not counted:
+        return tuple(sorted(set(initial) | set(constants)))
+    if open_ended:
+        return _domain(leaf_type, initial, compared)     # (a count compared with data)
+    candidates = sorted(constants)
+    if counted:
+        near = sorted({p for p in points if isinstance(p, float)} |
+                      {c.start for c in counted})
+        candidates += [v for point in analog_points(near)
+                       for v in (point, math.floor(point) + 0.0, math.ceil(point) + 0.0)
+                       if any(c.holds(v) for c in counted)]
+    chosen = {_region(v, points, ordered): v for v in reversed(candidates)}
+    for value in initial:
+        chosen[_region(value, points, ordered)] = value
+    return tuple(sorted(set(chosen.values()) | set(initial)))
+
+
+def _region(value, points: set, ordered: bool) -> tuple:
+    """Which values the comparisons with ``points`` cannot tell apart from ``value``:
+    equal to one of them, else (ordered) between the same two."""
+    if value in points:
+        return ("equal", value)
+    if not ordered or not isinstance(value, float):
+        return ("other",)
+    return ("between", sum(1 for p in points if isinstance(p, float) and p < value))
 
 
 def _other_string(values: set) -> str:
