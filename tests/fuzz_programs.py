@@ -11,7 +11,9 @@ statement and operator, predefined routines, error handlers, interrupts, signals
 """
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field
+from typing import Callable
 
 from hypothesis import strategies as st
 
@@ -61,54 +63,108 @@ class Program:
     atoms: tuple[str, ...]
 
 
+# ---------------------------------------------------------------- strategies made once
+# Hypothesis checks each new strategy object before its first draw (emptiness, labels);
+# made afresh at every draw, that was about half the time of drawing a program.  Made once
+# per distinct arguments, they draw the same programs.
+
+MADE_KEPT = 4096            # composite strategies kept, at most
+
+
+def composite(function) -> Callable[..., st.SearchStrategy]:
+    """``st.composite``, whose strategy for the same arguments (a scope by identity) is
+    made once."""
+    make = st.composite(function)
+    made: dict = {}
+
+    @functools.wraps(function)
+    def strategy(*arguments, **keywords) -> st.SearchStrategy:
+        key = tuple(id(argument) if isinstance(argument, Scope) else argument
+                    for argument in arguments) + tuple(sorted(keywords.items()))
+        try:
+            found = made.get(key)
+        except TypeError:                       # (an argument that cannot be a key)
+            return make(*arguments, **keywords)
+        if found is None:
+            if len(made) >= MADE_KEPT:
+                made.clear()                    # (the scopes of earlier programs)
+            # (the arguments are kept with it: an id stays that scope's)
+            found = made[key] = (arguments, make(*arguments, **keywords))
+        return found[1]
+    return strategy
+
+
+def sampled(elements) -> st.SearchStrategy:
+    """``st.sampled_from(elements)``, made once per distinct elements."""
+    return _sampled(tuple(elements))
+
+
+@functools.lru_cache(maxsize=None)
+def _sampled(elements: tuple) -> st.SearchStrategy:
+    return st.sampled_from(elements)
+
+
+@functools.lru_cache(maxsize=None)
+def one_of(*strategies: st.SearchStrategy) -> st.SearchStrategy:
+    """``st.one_of(*strategies)``, made once for the same strategy objects."""
+    return st.one_of(*strategies)
+
+
+@functools.lru_cache(maxsize=None)
+def integers(low: int, high: int) -> st.SearchStrategy:
+    """``st.integers(low, high)``, made once."""
+    return st.integers(low, high)
+
+
 # ---------------------------------------------------------------- expressions
 
-@st.composite
+@composite
 def expression(draw, scope: Scope, rapid_type: str, depth: int = 2) -> str:
     """An expression of ``rapid_type`` (most of the time) over the names in ``scope``."""
     names = scope.readable.get(rapid_type, [])
     leaves = [_literal(rapid_type)]
     if names:
-        leaves.append(st.sampled_from(names))
+        leaves.append(sampled(names))
     if depth <= 0:
-        return draw(st.one_of(*leaves))
+        return draw(one_of(*leaves))
     builders = {NUM: _num_expression, DNUM: _dnum_expression, BOOL: _bool_expression,
                 STRING: _string_expression, POS: _pos_expression}
     build = builders.get(rapid_type)
-    if build is None or draw(st.integers(0, 3)) == 0:
-        return draw(st.one_of(*leaves))
+    if build is None or draw(integers(0, 3)) == 0:
+        return draw(one_of(*leaves))
     return draw(build(scope, depth - 1))
 
 
+@functools.lru_cache(maxsize=None)
 def _literal(rapid_type: str):
-    num = st.sampled_from(NUM_LITERALS)
+    num = sampled(NUM_LITERALS)
     if rapid_type in (NUM, DNUM):
         return num
     if rapid_type == BOOL:
-        return st.sampled_from(("TRUE", "FALSE"))
+        return sampled(("TRUE", "FALSE"))
     if rapid_type == STRING:
-        return st.sampled_from(STRING_LITERALS)
+        return sampled(STRING_LITERALS)
     if rapid_type == POS:
         return st.tuples(num, num, num).map(lambda t: "[" + ", ".join(t) + "]")
     if rapid_type == ORIENT:
-        return st.sampled_from(("[1, 0, 0, 0]", "[0, 0, 0, 1]", "[0.7071, 0, 0.7071, 0]"))
-    return st.tuples(num, st.sampled_from(("TRUE", "FALSE")), st.sampled_from(STRING_LITERALS)) \
+        return sampled(("[1, 0, 0, 0]", "[0, 0, 0, 1]", "[0.7071, 0, 0.7071, 0]"))
+    return st.tuples(num, sampled(("TRUE", "FALSE")), sampled(STRING_LITERALS)) \
         .map(lambda t: "[" + ", ".join(t) + "]")
 
 
-@st.composite
+@composite
 def _num_expression(draw, scope: Scope, depth: int) -> str:
     sub = lambda t=NUM: expression(scope, t, depth)  # noqa: E731
-    choice = draw(st.integers(0, 11))
+    choice = draw(integers(0, 11))
     if choice == 0:
-        return f"({draw(sub())} {draw(st.sampled_from(ARITHMETIC))} {draw(sub())})"
+        return f"({draw(sub())} {draw(sampled(ARITHMETIC))} {draw(sub())})"
     if choice == 1:
         return f"(-({draw(sub())}))"
     if choice == 2:
-        function = draw(st.sampled_from(("Abs", "Sqrt", "Exp", "Trunc", "Round", "Sin", "ACos")))
+        function = draw(sampled(("Abs", "Sqrt", "Exp", "Trunc", "Round", "Sin", "ACos")))
         return f"{function}({draw(sub())})"
     if choice == 3:
-        return f"Round({draw(sub())}\\Dec:={draw(st.integers(-1, 7))})"
+        return f"Round({draw(sub())}\\Dec:={draw(integers(-1, 7))})"
     if choice == 4:
         return f"StrLen({draw(sub(STRING))})"
     if choice == 5:
@@ -116,14 +172,14 @@ def _num_expression(draw, scope: Scope, depth: int) -> str:
             return f"arr{{{draw(sub())}}}"
         return f"grid{{{draw(sub())}, {draw(sub())}}}"
     if choice == 6:
-        return f"{draw(st.sampled_from(scope.readable[POS]))}.{draw(st.sampled_from('xyz'))}"
+        return f"{draw(sampled(scope.readable[POS]))}.{draw(sampled('xyz'))}"
     if choice == 7:
-        return f"{draw(st.sampled_from(('Pow', 'ATan2', 'BitAnd', 'BitLSh', 'BitXOr')))}" \
+        return f"{draw(sampled(('Pow', 'ATan2', 'BitAnd', 'BitLSh', 'BitXOr')))}" \
                f"({draw(sub())}, {draw(sub())})"
     if choice == 8 and scope.functions:
-        return f"{draw(st.sampled_from(scope.functions))}({draw(sub())})"
+        return f"{draw(sampled(scope.functions))}({draw(sub())})"
     if choice == 9:
-        return draw(st.sampled_from(("DInput(diStart)", "DOutput(doLamp)", "DInput(DI1)",
+        return draw(sampled(("DInput(diStart)", "DOutput(doLamp)", "DInput(DI1)",
                                      "DOutput(DO1)", "AInput(AI1)", "GInput(GI1)",
                                      "ClkRead(clk)", "Dim(arr, 1)", "Dim(grid, 2)", "ERRNO",
                                      "INTNO", "rec.id", "StrFind(\"abc\", 1, \"b\")",
@@ -133,63 +189,63 @@ def _num_expression(draw, scope: Scope, depth: int) -> str:
     return draw(_literal(NUM))
 
 
-@st.composite
+@composite
 def _dnum_expression(draw, scope: Scope, depth: int) -> str:
     left, right = draw(expression(scope, DNUM, depth)), draw(expression(scope, DNUM, depth))
-    return draw(st.sampled_from((f"({left} {draw(st.sampled_from(ARITHMETIC))} {right})",
+    return draw(sampled((f"({left} {draw(sampled(ARITHMETIC))} {right})",
                                  f"NumToDnum({draw(expression(scope, NUM, depth))})",
                                  "4294967295")))
 
 
-@st.composite
+@composite
 def _bool_expression(draw, scope: Scope, depth: int) -> str:
-    choice = draw(st.integers(0, 6))
+    choice = draw(integers(0, 6))
     if choice == 0:
-        rapid_type = draw(st.sampled_from((NUM, NUM, STRING, DNUM, BOOL)))
+        rapid_type = draw(sampled((NUM, NUM, STRING, DNUM, BOOL)))
         relations = RELATIONS if rapid_type in (NUM, DNUM) else ("=", "<>")
         left, right = (draw(expression(scope, rapid_type, depth)) for _ in range(2))
-        return f"({left} {draw(st.sampled_from(relations))} {right})"
+        return f"({left} {draw(sampled(relations))} {right})"
     if choice == 1:
-        return (f"({draw(expression(scope, BOOL, depth))} {draw(st.sampled_from(LOGICAL))} "
+        return (f"({draw(expression(scope, BOOL, depth))} {draw(sampled(LOGICAL))} "
                 f"{draw(expression(scope, BOOL, depth))})")
     if choice == 2:
         return f"(NOT {draw(expression(scope, BOOL, depth))})"
     if choice == 3 and scope.optional:
-        return f"Present({draw(st.sampled_from(scope.optional))})"
+        return f"Present({draw(sampled(scope.optional))})"
     if choice == 4:
-        return draw(st.sampled_from(("rec.ok", "StrToVal(\"3\", numVar)", "IsPers(numVar)",
+        return draw(sampled(("rec.ok", "StrToVal(\"3\", numVar)", "IsPers(numVar)",
                                      "(OpMode() = OP_AUTO)", "ValidIO(diStart)")))
     if choice == 5:
         return f"({draw(expression(scope, POS, depth))} = {draw(expression(scope, POS, depth))})"
     return draw(_literal(BOOL))
 
 
-@st.composite
+@composite
 def _string_expression(draw, scope: Scope, depth: int) -> str:
-    choice = draw(st.integers(0, 5))
+    choice = draw(integers(0, 5))
     if choice == 0:
         return f"{draw(expression(scope, STRING, depth))} + {draw(expression(scope, STRING, depth))}"
     if choice == 1:
-        return f"NumToStr({draw(expression(scope, NUM, depth))}, {draw(st.integers(-1, 7))})"
+        return f"NumToStr({draw(expression(scope, NUM, depth))}, {draw(integers(-1, 7))})"
     if choice == 2:
-        rapid_type = draw(st.sampled_from(VALUE_TYPES))
+        rapid_type = draw(sampled(VALUE_TYPES))
         return f"ValToStr({draw(expression(scope, rapid_type, depth))})"
     if choice == 3:
         return (f"StrPart({draw(expression(scope, STRING, depth))}, "
                 f"{draw(expression(scope, NUM, depth))}, {draw(expression(scope, NUM, depth))})")
     if choice == 4:
-        return draw(st.sampled_from(("rec.name", "StrMap(\"abc\", \"a\", \"b\")", "CTime()",
+        return draw(sampled(("rec.name", "StrMap(\"abc\", \"a\", \"b\")", "CTime()",
                                      "GetSysInfo(\\SerialNo)",
                                      "ByteToStr(12)")))
     return draw(_literal(STRING))
 
 
-@st.composite
+@composite
 def _pos_expression(draw, scope: Scope, depth: int) -> str:
-    choice = draw(st.integers(0, 3))
-    left = draw(st.sampled_from(scope.readable[POS]))       # aggregates have no type here
+    choice = draw(integers(0, 3))
+    left = draw(sampled(scope.readable[POS]))       # aggregates have no type here
     if choice == 0:
-        return f"({left} {draw(st.sampled_from(('+', '-')))} {draw(st.sampled_from(scope.readable[POS]))})"
+        return f"({left} {draw(sampled(('+', '-')))} {draw(sampled(scope.readable[POS]))})"
     if choice == 1:
         return f"({left} * {draw(expression(scope, NUM, depth))})"
     if choice == 2:
@@ -199,50 +255,50 @@ def _pos_expression(draw, scope: Scope, depth: int) -> str:
 
 # ------------------------------------------------------------------ statements
 
-@st.composite
+@composite
 def statements(draw, scope: Scope, depth: int, count: tuple[int, int] = (1, 6)) -> list[str]:
-    return [draw(statement(scope, depth)) for _ in range(draw(st.integers(*count)))]
+    return [draw(statement(scope, depth)) for _ in range(draw(integers(*count)))]
 
 
-@st.composite
+@composite
 def statement(draw, scope: Scope, depth: int) -> str:
     kinds = ["predefined", "predefined", "assign", "assign", "call", "call", "write", "read", "wait", "io", "interrupt",
              "raise", "misc"]
     if depth > 0:
         kinds += ["if", "compact_if", "for", "while", "test"]
-    kind = draw(st.sampled_from(kinds))
+    kind = draw(sampled(kinds))
     return draw(STATEMENTS[kind](scope, depth))
 
 
-@st.composite
+@composite
 def _assign(draw, scope: Scope, depth: int) -> str:
-    rapid_type = draw(st.sampled_from([t for t in scope.writable if scope.writable[t]]))
-    target = draw(st.sampled_from(scope.writable[rapid_type]))
+    rapid_type = draw(sampled([t for t in scope.writable if scope.writable[t]]))
+    target = draw(sampled(scope.writable[rapid_type]))
     return f"{target} := {draw(expression(scope, rapid_type))};"
 
 
-@st.composite
+@composite
 def _call(draw, scope: Scope, depth: int) -> str:
     num = lambda: draw(expression(scope, NUM, 1))  # noqa: E731
-    target = draw(st.sampled_from(scope.writable[NUM]))
-    variable = draw(st.sampled_from(("numVar", "arr{2}", "rec.id")))    # VAR, not PERS
+    target = draw(sampled(scope.writable[NUM]))
+    variable = draw(sampled(("numVar", "arr{2}", "rec.id")))    # VAR, not PERS
     calls = [f"Incr {target};", f"Decr {target};", f"Add {target}, {num()};",
              f"Clear {target};", f"numVar := {target};", "ClkStart clk;", "ClkStop clk;",
-             "ClkReset clk;", f"WaitTime {draw(st.sampled_from(('0', '0.1', '1', '-1')))};",
+             "ClkReset clk;", f"WaitTime {draw(sampled(('0', '0.1', '1', '-1')))};",
              f"ErrWrite \\W, \"head\", {draw(expression(scope, STRING, 1))};",
              "TPErase;", f"BitSet byteVar, {num()};", f"BitClear byteVar, {num()};"]
     if scope.procedures:
-        calls.extend(draw(st.sampled_from(scope.procedures)).format(
+        calls.extend(draw(sampled(scope.procedures)).format(
             num=num(), var=variable, bool=draw(expression(scope, BOOL, 1))) for _ in range(2))
     calls += [f"%\"work\" + NumToStr({num()}, 0)%;", "CallByVar \"work\", 1;",
               f"%{draw(expression(scope, STRING, 1))}%;", f"CallByVar strVar, {num()};"]
-    return draw(st.sampled_from(calls))
+    return draw(sampled(calls))
 
 
-@st.composite
+@composite
 def _write(draw, scope: Scope, depth: int) -> str:
     text = draw(expression(scope, STRING, 1))
-    option = draw(st.sampled_from(("", "\\Num:=", "\\Bool:=", "\\Pos:=", "\\Orient:=",
+    option = draw(sampled(("", "\\Num:=", "\\Bool:=", "\\Pos:=", "\\Orient:=",
                                    "\\Dnum:=")))
     if not option:
         return f"TPWrite {text};"
@@ -251,10 +307,10 @@ def _write(draw, scope: Scope, depth: int) -> str:
     return f"TPWrite {text}{option}{draw(expression(scope, rapid_type, 2))};"
 
 
-@st.composite
+@composite
 def _read(draw, scope: Scope, depth: int) -> str:
-    target = draw(st.sampled_from(scope.writable[NUM]))
-    return draw(st.sampled_from((
+    target = draw(sampled(scope.writable[NUM]))
+    return draw(sampled((
         f"TPReadNum {target}, \"number?\";",
         f"TPReadFK {target}, \"key?\", \"A\", \"B\", stEmpty, stEmpty, \"E\";",
         f"TPReadFK {target}, \"key?\", stEmpty, stEmpty, stEmpty, stEmpty, \"E\""
@@ -262,38 +318,38 @@ def _read(draw, scope: Scope, depth: int) -> str:
         "TPReadDnum dnumVar, \"dnum?\";")))
 
 
-@st.composite
+@composite
 def _wait(draw, scope: Scope, depth: int) -> str:
     condition = draw(expression(scope, BOOL, 1))
-    limit = draw(st.sampled_from(("", " \\MaxTime:=1", " \\MaxTime:=0.5 \\TimeFlag:=flag")))
-    return draw(st.sampled_from((f"WaitUntil {condition}{limit};",
-                                 f"WaitDI {draw(st.sampled_from(('diStart', 'DI1')))}, "
-                                 f"{draw(st.sampled_from(('0', '1')))}{limit};",
+    limit = draw(sampled(("", " \\MaxTime:=1", " \\MaxTime:=0.5 \\TimeFlag:=flag")))
+    return draw(sampled((f"WaitUntil {condition}{limit};",
+                                 f"WaitDI {draw(sampled(('diStart', 'DI1')))}, "
+                                 f"{draw(sampled(('0', '1')))}{limit};",
                                  f"WaitDO doLamp, 1{limit};",
-                                 f"WaitTime {draw(st.sampled_from(('0.1', '2')))};")))
+                                 f"WaitTime {draw(sampled(('0.1', '2')))};")))
 
 
-@st.composite
+@composite
 def _io(draw, scope: Scope, depth: int) -> str:
-    output = draw(st.sampled_from(("doLamp", "DO1", "do2")))
-    return draw(st.sampled_from((
+    output = draw(sampled(("doLamp", "DO1", "do2")))
+    return draw(sampled((
         f"Set {output};", f"Reset {output};",
-        f"SetDO {output}, {draw(st.sampled_from(('0', '1', '2', 'high')))};",
+        f"SetDO {output}, {draw(sampled(('0', '1', '2', 'high')))};",
         f"PulseDO \\PLength:=0.2, {output};", f"InvertDO {output};",
-        f"AliasIO {draw(st.sampled_from(ALIAS_NAMES))}, diStart;",
+        f"AliasIO {draw(sampled(ALIAS_NAMES))}, diStart;",
         "AliasIO \"DO1\", doLamp;", "AliasIOReset doLamp;",
         f"SetGO GO1, {draw(expression(scope, NUM, 1))};")))
 
 
-@st.composite
+@composite
 def _interrupt(draw, scope: Scope, depth: int) -> str:
-    return draw(st.sampled_from((
+    return draw(sampled((
         "IDelete ir;", "CONNECT ir WITH onTick;", "ITimer 0.5, ir;", "ITimer \\Single, 1, ir;",
         "ISignalDI diStart, 1, ir;", "ISignalDI \\Single, DI1, 0, ir;", "ISleep ir;",
         "IWatch ir;", "IDisable;", "IEnable;", "ISignalDO doLamp, 1, ir;")))
 
 
-@st.composite
+@composite
 def _raise(draw, scope: Scope, depth: int) -> str:
     options = ["RAISE ERR_MINE;", "RAISE ERR_DIVZERO;", "RAISE 55;",
                f"RAISE {draw(expression(scope, NUM, 0))};", "BookErrNo ERR_MINE;",
@@ -303,13 +359,13 @@ def _raise(draw, scope: Scope, depth: int) -> str:
     if scope.in_handler:
         options += ["RETRY;", "TRYNEXT;", "RAISE;", "SkipWarn;", "ERRNO := 1;"]
     if scope.labels:
-        options.append(f"GOTO {draw(st.sampled_from(scope.labels))};")
-    return draw(st.sampled_from(options))
+        options.append(f"GOTO {draw(sampled(scope.labels))};")
+    return draw(sampled(options))
 
 
-@st.composite
+@composite
 def _misc(draw, scope: Scope, depth: int) -> str:
-    return draw(st.sampled_from((
+    return draw(sampled((
         f"strVar := StrPart({draw(expression(scope, STRING, 1))}, 1, 2);",
         f"ok := StrToVal({draw(expression(scope, STRING, 0))}, numVar);",
         "posVar := Offs(target, 1, 2, 3).trans;", "grid{1, 2} := arr{3};",
@@ -319,10 +375,10 @@ def _misc(draw, scope: Scope, depth: int) -> str:
         "ok := IsPers(count);", "level1 := level1 + 1;")))
 
 
-@st.composite
+@composite
 def _if(draw, scope: Scope, depth: int) -> str:
     lines = [f"IF {draw(expression(scope, BOOL))} THEN", *draw(statements(scope, depth - 1))]
-    for _ in range(draw(st.integers(0, 2))):
+    for _ in range(draw(integers(0, 2))):
         lines += [f"ELSEIF {draw(expression(scope, BOOL))} THEN",
                   *draw(statements(scope, depth - 1))]
     if draw(st.booleans()):
@@ -330,37 +386,37 @@ def _if(draw, scope: Scope, depth: int) -> str:
     return "\n".join(lines + ["ENDIF"])
 
 
-@st.composite
+@composite
 def _compact_if(draw, scope: Scope, depth: int) -> str:
-    simple = draw(st.one_of(_assign(scope, 0), _call(scope, 0), _raise(scope, 0),
+    simple = draw(one_of(_assign(scope, 0), _call(scope, 0), _raise(scope, 0),
                             _write(scope, 0)))
     return f"IF {draw(expression(scope, BOOL))} {simple}"
 
 
-@st.composite
+@composite
 def _for(draw, scope: Scope, depth: int) -> str:
     inner = scope.child()
-    variable = draw(st.sampled_from(("i", "k", "j")))
+    variable = draw(sampled(("i", "k", "j")))
     inner.add(NUM, variable, writable=False)
-    step = draw(st.sampled_from(("", " STEP 2", " STEP -1", " STEP 0.5")))
+    step = draw(sampled(("", " STEP 2", " STEP -1", " STEP 0.5")))
     return "\n".join([f"FOR {variable} FROM {draw(expression(scope, NUM, 1))} TO "
                       f"{draw(expression(scope, NUM, 1))}{step} DO",
                       *draw(statements(inner, depth - 1)), "ENDFOR"])
 
 
-@st.composite
+@composite
 def _while(draw, scope: Scope, depth: int) -> str:
     return "\n".join([f"WHILE {draw(expression(scope, BOOL))} DO",
                       *draw(statements(scope, depth - 1)), "ENDWHILE"])
 
 
-@st.composite
+@composite
 def _test(draw, scope: Scope, depth: int) -> str:
-    rapid_type = draw(st.sampled_from((NUM, NUM, STRING, BOOL)))
+    rapid_type = draw(sampled((NUM, NUM, STRING, BOOL)))
     lines = [f"TEST {draw(expression(scope, rapid_type, 1))}"]
-    for _ in range(draw(st.integers(0, 3))):
+    for _ in range(draw(integers(0, 3))):
         values = ", ".join(draw(expression(scope, rapid_type, 0))
-                           for _ in range(draw(st.integers(1, 3))))
+                           for _ in range(draw(integers(1, 3))))
         lines += [f"CASE {values}:", *draw(statements(scope, depth - 1, (0, 3)))]
     if draw(st.booleans()):
         lines += ["DEFAULT:", *draw(statements(scope, depth - 1, (0, 3)))]
@@ -398,21 +454,21 @@ def _predefined_entries():
 PREDEFINED = _predefined_entries()
 
 
-@st.composite
+@composite
 def _argument(draw, scope: Scope, parameter) -> str:
     type_name = parameter.type_name
     if type_name == "anytype":
-        type_name = draw(st.sampled_from(("num", "bool", "string", "pos", "robtarget")))
+        type_name = draw(sampled(("num", "bool", "string", "pos", "robtarget")))
     rapid_type = EXPRESSION_TYPE.get(type_name)
     if rapid_type is None:
-        return draw(st.sampled_from(DATA_OF_TYPE[type_name]))
+        return draw(sampled(DATA_OF_TYPE[type_name]))
     if parameter.by_reference:
         names = scope.writable.get(rapid_type) or scope.readable.get(rapid_type) or ["numVar"]
-        return draw(st.sampled_from(names))
+        return draw(sampled(names))
     return draw(expression(scope, rapid_type, 1))
 
 
-@st.composite
+@composite
 def _arguments(draw, scope: Scope, signature) -> str:
     """Required arguments in order (first of each required group), some optional ones."""
     parts, groups_used = [], set()
@@ -421,7 +477,7 @@ def _arguments(draw, scope: Scope, signature) -> str:
         if group is not None and group in groups_used:
             continue
         if parameter.optional:
-            if draw(st.integers(0, 2)) != 0:
+            if draw(integers(0, 2)) != 0:
                 continue
             value = "" if parameter.is_switch else ":=" + draw(_argument(scope, parameter))
             parts.append(f" \\{parameter.name}{value}")
@@ -432,10 +488,10 @@ def _arguments(draw, scope: Scope, signature) -> str:
     return "".join(parts).lstrip(", ")
 
 
-@st.composite
+@composite
 def _predefined(draw, scope: Scope, depth: int) -> str:
     """A call of any predefined routine the generator can fill, with random arguments."""
-    signature = draw(st.sampled_from(PREDEFINED))
+    signature = draw(sampled(PREDEFINED))
     arguments = draw(_arguments(scope, signature))
     if signature.kind == "function":
         return f"strVar := ValToStr({signature.name}({arguments}));"
@@ -505,24 +561,24 @@ def global_scope() -> Scope:
     return scope
 
 
-@st.composite
+@composite
 def _routine(draw, header: str, footer: str, scope: Scope, handler: bool = True,
              local_data: tuple[str, ...] = ()) -> str:
     body = draw(statements(scope, 2))
     if scope.labels:
-        body.insert(draw(st.integers(0, len(body))), f"{scope.labels[0]}:")
+        body.insert(draw(integers(0, len(body))), f"{scope.labels[0]}:")
     lines = [header, *local_data, *body]
     if handler and draw(st.booleans()):
         handler_scope = scope.child()
         handler_scope.in_handler = True
-        errors = draw(st.sampled_from(("", "", " (ERR_DIVZERO, 55)", " (LONG_JMP_ALL_ERR)")))
+        errors = draw(sampled(("", "", " (ERR_DIVZERO, 55)", " (LONG_JMP_ALL_ERR)")))
         lines += [f"ERROR{errors}", *draw(statements(handler_scope, 1, (1, 3)))]
-    if handler and not scope.in_function and draw(st.integers(0, 4)) == 0:
+    if handler and not scope.in_function and draw(integers(0, 4)) == 0:
         lines += ["UNDO", "count := count + 1;"]
     return "\n".join(lines + [footer])
 
 
-@st.composite
+@composite
 def programs(draw) -> Program:
     """A module with main, two procedures, a function and a trap, over fixed global data."""
     scope = global_scope()
@@ -541,8 +597,8 @@ def programs(draw) -> Program:
     trap = scope.child()
     trap.procedures = []
     setup = ["AliasIO \"DI1\", diStart;", "AliasIO \"DO1\", doLamp;",
-             "CONNECT ir WITH onTick;"][:draw(st.integers(0, 3))]
-    setup += draw(st.lists(st.sampled_from((
+             "CONNECT ir WITH onTick;"][:draw(integers(0, 3))]
+    setup += draw(st.lists(sampled((
         "AliasIO \"DI1\", diStart;", "AliasIO \"DO1\", doLamp;", "CONNECT ir WITH onTick;",
         "ISignalDI diStart, 1, ir;", "ITimer 1, ir;", "AliasIO \"di2\", diStart;",
         "BookErrNo ERR_MINE;")),
@@ -561,8 +617,8 @@ def programs(draw) -> Program:
     return Program(text, atoms)
 
 
-@st.composite
+@composite
 def _atom(draw, scope: Scope) -> str:
-    template = draw(st.sampled_from(ATOM_TEMPLATES))
-    return template.format(bool=draw(st.sampled_from(scope.readable[BOOL][:2])),
-                           num=draw(st.sampled_from(("0", "1", "2.5"))))
+    template = draw(sampled(ATOM_TEMPLATES))
+    return template.format(bool=draw(sampled(scope.readable[BOOL][:2])),
+                           num=draw(sampled(("0", "1", "2.5"))))

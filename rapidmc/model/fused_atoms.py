@@ -16,7 +16,7 @@ from __future__ import annotations
 from typing import Callable, Optional
 
 from ..semantics.errors import RapidError
-from ..semantics.fused_step import HELPERS
+from ..semantics.fused_step import HELPERS, define
 from ..semantics.state import State
 
 NO_LAZY_INPUTS: dict = {}       # every signal is read from the state itself
@@ -41,7 +41,7 @@ def fused_valuation(atoms: list[tuple[int, str, dict]],
                   "    except RapidError:",
                   "        pass"]
     lines.append("    return bits" if others is None else "    return bits | _others(state)")
-    exec(compile("\n".join(lines) + "\n", "<fused atoms>", "exec"), names)
+    define(lines, "<fused atoms>", names)
     valuation = names["valuation"]
     # what the compiled core's step machine compiles (model/packed/bytecode.py)
     valuation.fused_atoms = None if others is not None else list(atoms)

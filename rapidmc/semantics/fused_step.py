@@ -26,6 +26,7 @@ tests/test_plain_step.py compares the drivers on whole state graphs.
 """
 from __future__ import annotations
 
+import functools
 from typing import Optional
 
 from . import values
@@ -85,6 +86,19 @@ HELPERS = {"_read": _read, "_with": _with, "_fallback": _fallback,
            "_int_div": values.int_div, "_int_mod": values.int_mod, "_concat": values.concat}
 
 
+def define(lines: list, filename: str, namespace: dict) -> None:
+    """Run the generated source ``lines`` (definitions) in ``namespace``.  The compiled code
+    is kept per source text: the checks of one process (reduced and not, each property's
+    search, a test suite's) write the same functions again, and compiling them was about
+    a fiftieth of a check's time."""
+    exec(_compiled("\n".join(lines) + "\n", filename), namespace)
+
+
+@functools.lru_cache(maxsize=4096)
+def _compiled(source: str, filename: str):
+    return compile(source, filename, "exec")
+
+
 class FusedRoutine:
     """One routine's generated step functions and the pcs they can start from.
 
@@ -126,7 +140,7 @@ class FusedRoutine:
             lines = [line for line in lines if not line.lstrip().startswith("spans.append(")]
         names = dict(self._names, _run=self.run if labelled else self.quiet_run,
                      _kinds=self.kinds)
-        exec(compile("\n".join(lines) + "\n", f"<fused {self._name} from {pc}>", "exec"), names)
+        define(lines, f"<fused {self._name} from {pc}>", names)
         entries = self.labelled_entries if labelled else self.entries
         enter = entries[pc] = names["enter"]
         return enter
@@ -195,7 +209,7 @@ def _run_function(blocks: list, names: dict, name: str):
               "            break",
               "    return pc, store, locals_"]
     namespace = dict(names)
-    exec(compile("\n".join(lines) + "\n", f"<fused {name}>", "exec"), namespace)
+    define(lines, f"<fused {name}>", namespace)
     return namespace["run"]
 
 
