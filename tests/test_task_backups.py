@@ -114,7 +114,8 @@ def test_a_barrier_with_a_task_name_no_task_has_is_an_error(tmp_path):
                                   "wait_function_together", "wait_function_never_met",
                                   "alone_whole_array_index_zero",
                                   "alone_wait_function_socket", "alone_outside_retry",
-                                  "alone_written_constants", "alone_written_computed"])
+                                  "alone_written_constants", "alone_written_computed",
+                                  "alone_written_constants_awaited"])
 def test_outputs_set_outside_same_on_both_engines(name):
     """Outputs set outside the loaded code are free inputs of both engines alike."""
     case = CASES / name

@@ -183,7 +183,10 @@ def outside_data(linker) -> dict:
     found = {}
     for slot, data in chosen.items():
         domains = {}
-        known = task_writes.get(data.key)     # the tasks left out write only these values
+        # the tasks left out write only these values; not for a wait no loaded write ends
+        # (``awaited_from_outside``): where their constants are all the loaded code's are
+        # too (a command word both tasks clear), the value that ends it comes from a client
+        known = task_writes.get(data.key) if slot not in awaited else None
         writes = _written_leaves(data.type, known.pairs) if known is not None else {}
         start = unset_value(data.type) if data.declared_without_value \
             and slot not in written and known is None else data.initial
