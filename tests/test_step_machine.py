@@ -206,10 +206,9 @@ MACHINE_KINDS = {
     "moves": (CheckedReads, ["step_machine_tasks/moves/mover.mod", "--add-task",
                              "step_machine_tasks/sockets/phases.mod"], 3),
     # writes of array elements (a small array and one of 32 or more items, found by its
-    # items' hashes; an aggregate computed), one out of range; a component of an element
-    # is Python's
+    # items' hashes; an aggregate computed), one out of range; components of elements
     "elements": (ElementWrite, ["step_machine_tasks/elements/writer.mod", "--add-task",
-                                "step_machine_tasks/sockets/phases.mod"], 5),
+                                "step_machine_tasks/sockets/phases.mod"], 7),
 }
 
 

@@ -958,6 +958,38 @@ static int integer_operands(Value a, Value b, long long *x, long long *y)
 
 /* Run ``code`` from ``ip`` until the block sets the pc (VM_DONE), an error (VM_ERROR) or
  * what Python must do (VM_UNSUPPORTED).  Atom code (``bits``) runs to OP_END. */
+#define MAX_PATH 16              /* component offsets of one element write */
+
+/* ``value`` with its part at ``path`` (``depth`` offsets) replaced by ``item``, the tuples
+ * along the path rebuilt (``machine.replace_at``): a new reference; NULL with an error
+ * set, or NULL without one where a part on the path is not a tuple that long */
+static PyObject *replaced_at(PyObject *value, const int32_t *path, int32_t depth,
+                             PyObject *item)
+{
+    if (depth == 0) {
+        Py_INCREF(item);
+        return item;
+    }
+    if (!PyTuple_Check(value) || path[0] < 0 || path[0] >= PyTuple_GET_SIZE(value))
+        return NULL;
+    PyObject *inner = replaced_at(PyTuple_GET_ITEM(value, path[0]), path + 1, depth - 1, item);
+    if (inner == NULL)
+        return NULL;
+    Py_ssize_t length = PyTuple_GET_SIZE(value);
+    PyObject *changed = PyTuple_New(length);
+    if (changed == NULL) {
+        Py_DECREF(inner);
+        return NULL;
+    }
+    for (Py_ssize_t i = 0; i < length; i++) {
+        PyObject *kept = i == path[0] ? inner : PyTuple_GET_ITEM(value, i);
+        if (i != path[0])
+            Py_INCREF(kept);
+        PyTuple_SET_ITEM(changed, i, kept);
+    }
+    return changed;
+}
+
 static int execute(Run *run, const int32_t *code, Py_ssize_t ip, uint64_t *bits)
 {
     PackedTable *table = run->table;
@@ -1263,31 +1295,34 @@ static int execute(Run *run, const int32_t *code, Py_ssize_t ip, uint64_t *bits)
                 FAIL(VM_ERROR);             /* ERR_OUTOFBND: Python raises */
             break;
         }
-        case OP_SET_ELEMENT: {      /* element (index, value) of the array in ``slot`` */
+        case OP_SET_ELEMENT: {      /* element (index, value) of the array in ``slot``, or
+                                     * the component at the path's offsets of that element */
             Value value = POP(), index = POP();
-            int32_t slot = code[ip++];
+            int32_t slot = code[ip], depth = code[ip + 1];
+            const int32_t *offsets = code + ip + 2;
+            ip += 2 + depth;
             PyObject *array = table->value_object[run->data[slot]];
             if (!numeric(index) || index.tag == T_BOOL || array == NULL ||
-                    !PyTuple_Check(array))
+                    !PyTuple_Check(array) || depth < 0 || depth >= MAX_PATH)
                 FAIL(VM_UNSUPPORTED);
-            Py_ssize_t length = PyTuple_GET_SIZE(array);
-            if (!integral(index.d) || index.d < 1.0 || index.d > (double)length)
+            if (!integral(index.d) || index.d < 1.0 ||
+                    index.d > (double)PyTuple_GET_SIZE(array))
                 FAIL(VM_ERROR);             /* ERR_OUTOFBND: Python raises */
+            int32_t path[MAX_PATH + 1];
+            path[0] = (int32_t)index.d - 1;
+            memcpy(path + 1, offsets, depth * sizeof(int32_t));
             int32_t value_id_ = store_id(table, value);
             if (value_id_ < 0)
                 return -1;
             PyObject *item = value_object(table, value_id_);
-            PyObject *changed = item == NULL ? NULL : PyTuple_New(length);
-            if (changed == NULL) {
-                Py_XDECREF(item);
+            if (item == NULL)
                 return -1;
-            }
-            Py_ssize_t at = (Py_ssize_t)index.d - 1;
-            for (Py_ssize_t i = 0; i < length; i++) {
-                PyObject *kept = i == at ? item : PyTuple_GET_ITEM(array, i);
-                if (i != at)
-                    Py_INCREF(kept);
-                PyTuple_SET_ITEM(changed, i, kept);
+            PyObject *changed = replaced_at(array, path, depth + 1, item);
+            Py_DECREF(item);
+            if (changed == NULL) {
+                if (PyErr_Occurred())
+                    return -1;
+                FAIL(VM_UNSUPPORTED);       /* (not a record of that shape: Python's) */
             }
             int32_t id = value_id(table, changed);
             Py_DECREF(changed);

@@ -96,12 +96,14 @@ class CheckedReads(NamedTuple):
 class ElementWrite(NamedTuple):
     """An assignment's whole effect on the state for the step machine: element ``index``
     (a ``Compiled`` with a source) of the array in global data ``slot`` becomes ``value``
-    (a ``Compiled`` with a source).  An index not an integer in 1..the array's length
-    is the Python step's (it raises ERR_OUTOFBND)."""
+    (a ``Compiled`` with a source), or, with a ``path`` of record component offsets, that
+    component of the element (``targets{i}.trans.x``: the path (0, 0)).  An index not an
+    integer in 1..the array's length is the Python step's (it raises ERR_OUTOFBND)."""
 
     slot: int
     index: Any
     value: Any
+    path: tuple = ()
 
 
 class Action(Instruction):

@@ -25,7 +25,7 @@ from .errors import placeholder_reached
 from .machine import GLOBAL, with_locals
 from .scope import (CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SYSTEM_VARIABLES, Scope,
                     Symbol)
-from .types import NUM, SEMI_VALUE, STRING, RapidType
+from .types import NUM, SEMI_VALUE, STRING, ArrayType, RapidType
 
 TARGET_FIELDS = ("next", "start", "after", "target_true", "target_false", "target", "exit",
                  "body", "default")
@@ -296,6 +296,8 @@ class RoutineCompiler:
                 m.store = m.store.set(slot, array[:i] + (value,) + array[i + 1:])
             fn = assign_element
         else:
+            element = self._component_write(compiler, target, root, value)
+
             def assign(m):
                 ref = ref_fn(m)
                 m.write_ref(ref, value_fn(m))
@@ -304,6 +306,28 @@ class RoutineCompiler:
         if fusion is not None and value.source is not None:
             action.fusion = fusion
         action.machine = element
+
+    @staticmethod
+    def _component_write(compiler: ExpressionCompiler, target, root, value) -> Optional[ElementWrite]:
+        """The machine's plan of a write of a record component of a global array's element
+        (``targets{i}.trans.x := v``: the index evaluated and checked first, then the value,
+        as ``reference`` and ``assign`` run it), None for another target."""
+        names = []
+        while isinstance(target, ast.Component):
+            names.append(target.name)
+            target = target.base
+        if not names or root.kind != GLOBAL_DATA or not isinstance(target, ast.Index) or \
+                len(target.indices) != 1 or not isinstance(target.base, ast.NameRef) or \
+                not isinstance(root.type, ArrayType) or len(root.type.dims) != 1:
+            return None
+        record, path = root.type.element, []
+        for name in reversed(names):
+            offset, record = compiler.component_offset(record, name)
+            path.append(offset)
+        index = compiler.value(target.indices[0], NUM)
+        if index.source is None or value.source is None:
+            return None
+        return ElementWrite(root.slot, index, value, tuple(path))
 
     def _ProcedureCall(self, statement: ast.ProcedureCall, follow: Label) -> None:
         compiler = self.expressions()

@@ -47,6 +47,7 @@ OPCODES = ("CONST LOAD_STORE LOAD_LOCAL READ READ_DYN ADD SUB MUL DIVIDE TO_NUM 
            "WAIT SYNC CHOOSE_CONST CHECK_INDEX SET_ELEMENT BUILD_TUPLE").split()
 OP = {name: number for number, name in enumerate(OPCODES, 1)}
 MAX_STACK = 48            # deeper expressions are left to Python (the machine has 64)
+MAX_PATH = 16             # element writes with deeper components are Python's (_packed.c)
 
 _COMPARISONS = {python_ast.Eq: "EQ", python_ast.NotEq: "NE", python_ast.Lt: "LT",
                 python_ast.LtE: "LE", python_ast.Gt: "GT", python_ast.GtE: "GE"}
@@ -345,13 +346,15 @@ def _checked_reads_block(instruction, expressions: ExpressionCode, config) -> li
 
 def _element_write_block(instruction, expressions: ExpressionCode) -> list[int]:
     """An ``ElementWrite`` (as ``assign_element`` runs it: the index first, then the
-    value): SET_ELEMENT makes the array with that element (an index out of range is
-    Python's).  Written even where the data is sliced (the projection resets it): the
-    index may raise."""
+    value): SET_ELEMENT makes the array with that element, or with that component of it
+    (the path's offsets; an index out of range is Python's).  Written even where the data
+    is sliced (the projection resets it): the index may raise."""
     plan = instruction.machine
+    if len(plan.path) >= MAX_PATH:
+        raise Unsupported("a deep component")
     return [OP["TASK_ONLY"], *_source(expressions, plan.index),
             *_source(expressions, plan.value), OP["SET_ELEMENT"], plan.slot,
-            OP["GOTO"], instruction.next]
+            len(plan.path), *plan.path, OP["GOTO"], instruction.next]
 
 
 def _wait_block(instruction, expressions: ExpressionCode) -> list[int]:
