@@ -106,6 +106,25 @@ class ElementWrite(NamedTuple):
     path: tuple = ()
 
 
+class CallPlan(NamedTuple):
+    """A procedure call's whole effect for the step machine (``enter_routine``): a frame
+    of ``routine`` pushed on the task's stack, its locals the routine's initial ones with
+    each parameter's the value of its argument (``arguments``: per parameter, in order,
+    an IN argument's ``Compiled`` with a source; a num parameter rounds a num to single
+    precision, as ``Parameter.convert`` does)."""
+
+    routine: int
+    arguments: tuple
+
+
+class LeavePlan(NamedTuple):
+    """The end of a procedure (ENDPROC, RETURN without a value) for the step machine
+    (``leave_routine``): the task's frame of ``routine`` popped, its caller going on after
+    the call.  The last frame of a task, a trap's or a function's are Python's."""
+
+    routine: int
+
+
 class Action(Instruction):
     """A simple statement: ``fn(machine)``, then continue with ``next``."""
 

@@ -18,9 +18,9 @@ from ..diagnostics import (ASSIGN_CONST, BAD_CONTROL, DUPLICATE, TYPE_MISMATCH, 
 from ..diagnostics.error_report import UNKNOWN_CODES
 from .library import registry
 from .expressions import ExpressionCompiler, _check_index as check_index
-from .instructions import (Action, Branch, Call, ElementWrite, EndRoutine, EndUndo, ExitProgram,
-                           ForInit, ForNext, Instruction, Jump, LateCall, Raise, Retry,
-                           Return, TestDispatch, TryNext)
+from .instructions import (Action, Branch, Call, CallPlan, ElementWrite, EndRoutine, EndUndo,
+                           ExitProgram, ForInit, ForNext, Instruction, Jump, LateCall,
+                           LeavePlan, Raise, Retry, Return, TestDispatch, TryNext)
 from .errors import placeholder_reached
 from .machine import GLOBAL, with_locals
 from .scope import (CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SYSTEM_VARIABLES, Scope,
@@ -95,7 +95,10 @@ class RoutineCompiler:
         end = Label()
         self.block(decl.body, end)
         self.place(end)
-        self.emit_end(EndRoutine(decl.end_span, decl.kind == "FUNC", decl.name.text))
+        end_routine = EndRoutine(decl.end_span, decl.kind == "FUNC", decl.name.text)
+        self.emit_end(end_routine)
+        if decl.kind == "PROC":
+            end_routine.machine = LeavePlan(self.routine.index)
         if decl.error is not None:
             self.section = "error"
             self.routine.handler_pc = len(self.code)
@@ -339,8 +342,14 @@ class RoutineCompiler:
                     "trap routine (traps run on interrupts: use CONNECT)"
                 raise error(TYPE_MISMATCH, f"'{statement.name.text}' is a {what}, not a "
                             "procedure", statement.span)
-            binders = self.linker.bind_user_call(compiler, callee, statement.args, statement.span)
-            self.emit(Call(statement.span, callee, binders))
+            sources: list = []
+            binders = self.linker.bind_user_call(compiler, callee, statement.args, statement.span,
+                                                 sources)
+            call = self.emit(Call(statement.span, callee, binders))
+            if all(param.mode == "IN" and not param.optional and not param.is_switch and
+                   compiled is not None for param, compiled in zip(callee.parameters, sources)) \
+                    and len(sources) == len(callee.parameters):
+                call.machine = CallPlan(callee.index, tuple(sources))
             return
         if symbol is not None:
             raise error(TYPE_MISMATCH, f"'{statement.name.text}' is data, not a procedure",
@@ -385,7 +394,9 @@ class RoutineCompiler:
         elif statement.value is not None:
             raise error(BAD_CONTROL, f"RETURN in {self.routine.kind} {self.routine.name} "
                         "cannot have a value", statement.span)
-        self.emit(Return(statement.span, value_fn))
+        returns = self.emit(Return(statement.span, value_fn))
+        if self.routine.kind == "PROC" and self.section == "body":
+            returns.machine = LeavePlan(self.routine.index)
 
     def _Raise(self, statement: ast.Raise, follow: Label) -> None:
         value_fn = None
