@@ -3889,7 +3889,11 @@ typedef struct {                 /* one run of the packed breadth-first loop */
     PyObject *budget, *sink;
     int observe_natively;        /* stuck check and triggers here; Python for candidates */
     Py_ssize_t trigger_valuation;   /* -1: none */
-    int predicate_is_failed, deadlock_is_target, recording;
+    /* the predicate: 0 Python's (``predicate_holds``), PREDICATE_FAILED the program failed
+     * (the context says), PREDICATE_STUCK several tasks' ``RapidSystem.stuck`` (the
+     * machine's step says, as ``PackedStateTable._stuck``; else Python) */
+    int predicate_is_failed;
+    int deadlock_is_target, recording;
     int labels_wanted;           /* the observer still wants the lines steps run */
     Py_ssize_t *valuations;      /* per recorded valuation: its compiled index or -1 */
     Py_ssize_t valuation_count;
@@ -3909,7 +3913,34 @@ typedef struct {                 /* one run of the packed breadth-first loop */
     Py_ssize_t trigger_count, trigger_capacity;
     Scratch scratch;
     Successors found;
+    Scratch stuck;               /* (``machine_stuck``'s step of a new state) */
 } PackedSearch;
+
+enum { PREDICATE_FAILED = 1, PREDICATE_STUCK = 2 };
+
+/* ``PackedStateTable._stuck`` here: whether new state ``id`` of several tasks is stuck,
+ * every successor of the machine's step (its own steps and Python's of single tasks)
+ * being the state itself: 1, 0, VM_UNSUPPORTED (Python decides: the machine does not step
+ * there, a task has ended, or the observer wants the lines steps run), -1 */
+static int machine_stuck(PackedSearch *search, Py_ssize_t id)
+{
+    PackedTable *table = search->table;
+    if (search->labels_wanted || table->labels_wanted || table->task_count < 2)
+        return VM_UNSUPPORTED;
+    Stored at;
+    stored_state(table, id, &at);
+    if (table->context_runs[at.frame[0]] & CONTEXT_ENDED_TASK)
+        return VM_UNSUPPORTED;
+    int32_t frame_id = at.frame_id, data_id = at.data_id;
+    Successors *found = &search->stuck.found;
+    int outcome = machine_successors(table, id, &search->stuck, found);
+    if (outcome != VM_DONE)
+        return outcome;
+    for (Py_ssize_t i = 0; i < found->count; i++)
+        if (found->frames[i] != frame_id || found->data[i] != data_id)
+            return 0;
+    return 1;
+}
 
 static int flush(PackedSearch *search)
 {
@@ -4018,9 +4049,17 @@ static int visit(PackedSearch *search, Py_ssize_t frontier, Py_ssize_t i, Py_ssi
             return FAILED;
     }
     /* the run-time error predicate (the program failed) is the context's to say */
-    if (search->predicate_is_failed) {
+    int stuck = search->predicate_is_failed == PREDICATE_STUCK ? machine_stuck(search, *id) :
+        VM_UNSUPPORTED;
+    if (stuck < 0)
+        return FAILED;
+    if (search->predicate_is_failed == PREDICATE_FAILED) {
         uint32_t context = table->frames.arena[table->frames.offsets[search->found.frames[i]]];
         if (table->context_runs[context] & CONTEXT_FAILED)
+            return FOUND;
+    }
+    else if (stuck != VM_UNSUPPORTED) {
+        if (stuck)
             return FOUND;
     }
     else {
@@ -4202,7 +4241,7 @@ static PyObject *packed_breadth_first(PyObject *module, PyObject *args)
     Py_ssize_t frontier;
     PyObject *valuations;
     int recording;
-    if (!PyArg_ParseTuple(args, "O!nOOpnpppOOO!LLlnLp", &PackedTableType, &search.table,
+    if (!PyArg_ParseTuple(args, "O!nOOpnippOOO!LLlnLp", &PackedTableType, &search.table,
                           &frontier, &search.step_python, &search.python_observe,
                           &search.observe_natively, &search.trigger_valuation,
                           &search.predicate_is_failed, &search.deadlock_is_target, &recording,
@@ -4228,7 +4267,8 @@ static PyObject *packed_breadth_first(PyObject *module, PyObject *args)
         if (search.valuations[i] == -1 && PyErr_Occurred())
             goto done;
     }
-    if (scratch_init(&search.scratch, search.table) < 0)
+    if (scratch_init(&search.scratch, search.table) < 0 ||
+            scratch_init(&search.stuck, search.table) < 0)
         goto done;
     search.max_states = integer_attribute(search.budget, "max_states");
     search.next_checkpoint = integer_attribute(search.budget, "next_checkpoint");
@@ -4264,6 +4304,7 @@ done:
     PyMem_Free(search.found.frames);
     PyMem_Free(search.found.data);
     scratch_free(&search.scratch);
+    scratch_free(&search.stuck);
     if (outcome == FAILED) {
         PyMem_Free(search.triggers);
         return NULL;
