@@ -961,8 +961,6 @@ static int integer_operands(Value a, Value b, long long *x, long long *y)
     return VM_DONE;
 }
 
-/* Run ``code`` from ``ip`` until the block sets the pc (VM_DONE), an error (VM_ERROR) or
- * what Python must do (VM_UNSUPPORTED).  Atom code (``bits``) runs to OP_END. */
 #define MAX_PATH 16              /* component offsets of one element write */
 
 /* ``value`` with its part at ``path`` (``depth`` offsets) replaced by ``item``, the tuples
@@ -995,6 +993,8 @@ static PyObject *replaced_at(PyObject *value, const int32_t *path, int32_t depth
     return changed;
 }
 
+/* Run ``code`` from ``ip`` until the block sets the pc (VM_DONE), an error (VM_ERROR) or
+ * what Python must do (VM_UNSUPPORTED).  Atom code (``bits``) runs to OP_END. */
 static int execute(Run *run, const int32_t *code, Py_ssize_t ip, uint64_t *bits)
 {
     PackedTable *table = run->table;
@@ -1794,13 +1794,6 @@ static int machine_step(PackedTable *table, Py_ssize_t id, Scratch *scratch,
     }
 }
 
-/* One task's instruction in a state of several tasks, by the machine: the block at its pc
- * once per choice script (tasks take turns one instruction each: no merged run), as
- * ``staged_step`` runs it through ``fused_step`` on a view of that task.  Its successors
- * are appended to ``found`` (``changed``: each one changes the state, but a wait's
- * idle step: ``scratch->waited``).  VM_UNSUPPORTED (with ``found`` as it was) where
- * Python must step the task: no block, an error, a step other than a wait's that leaves
- * the state as it is. */
 /* The TASK_INFO numbers of ``task`` in the context of frame segment ``frame_id`` (its
  * first item), which goes to ``*context`` */
 static const int32_t *task_info_at(PackedTable *table, int32_t frame_id, Py_ssize_t task,
@@ -1895,6 +1888,9 @@ static int frame_step(PackedTable *table, Scratch *scratch, Run *run, const int3
                 return -1;
             top_locals[slot] = (uint32_t)id;
         }
+        for (int32_t k = 0; k < count; k++)
+            if (top_locals[k] == (uint32_t)-1)
+                return VM_UNSUPPORTED;      /* (a parameter without its argument) */
     }
     int32_t pc_id = number_id(table, T_INT, (double)new_pc, NULL);
     if (pc_id < 0)
@@ -1915,6 +1911,13 @@ static int frame_step(PackedTable *table, Scratch *scratch, Run *run, const int3
     return VM_DONE;
 }
 
+/* One task's instruction in a state of several tasks, by the machine: the block at its pc
+ * once per choice script (tasks take turns one instruction each: no merged run), as
+ * ``staged_step`` runs it through ``fused_step`` on a view of that task.  Its successors
+ * are appended to ``found`` (``changed``: each one changes the state, but a wait's
+ * idle step: ``scratch->waited``).  VM_UNSUPPORTED (with ``found`` as it was) where
+ * Python must step the task: no block, an error, a step other than a wait's that leaves
+ * the state as it is. */
 static int task_machine_step(PackedTable *table, Scratch *scratch, const int32_t *info,
                              uint32_t context, const uint32_t *frame, Py_ssize_t frame_length,
                              int32_t data_id, const uint32_t *data, Py_ssize_t data_length,

@@ -376,8 +376,14 @@ def _call_block(plan: CallPlan, expressions: ExpressionCode, program) -> list[in
     code = [OP["TASK_ONLY"]]
     for compiled in plan.arguments:
         code += _source(expressions, compiled)
+    # (a parameter's slot: -1, the argument's value goes there; its initial value, which
+    # may be the marker of an absent argument, is no value of the table)
+    slots = {param.slot for param in callee.parameters}
     initial = []
-    for value in callee.initial_locals:
+    for slot, value in enumerate(callee.initial_locals):
+        if slot in slots:
+            initial.append(-1)
+            continue
         try:
             hash(value)
         except TypeError:
