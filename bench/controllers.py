@@ -211,6 +211,26 @@ the run-time error search 92 % (42,049 of 45,590).  Python's steps left: ``teach
 call and return and the component write, about a third of the in-process check.  (A
 Python-engine row with fewer model states than the native one is its ``--max-seconds``
 wall-clock limit under load: the Python engine needs 18 CPU s here.)
+
+Measured on 2026-11-29 at 19:35 (issue 27: calls of procedures with IN arguments and
+procedures' ends, and writes of a record component of an array element, in the step
+machine; the deadlock search's stuck check in the packed loop; load 10-11 on 2 cores, CPU
+seconds, main a6b2411 and the branch run alternately).  ``--max-states 20000 --engines
+native`` (86,825 model states over the check; 46,825 in the property search, the row's
+figure), whole command: 1.25, 1.30, 1.32 s on main -> 0.83, 0.84, 0.83 s (65,800-69,500
+-> 103,400-104,600 model states per CPU second; the row: 35,500-37,400 -> 55,800-56,800),
+the machine's share of the single tasks' steps in the run-time error search 92 -> 100 %
+(45,576 of 45,590: what is left is the socket's accept).  The JSON reports of both
+engines are the same but for the engine's name.  In-process: the run-time error search
+alone (20,000 states) 0.254 -> 0.062 s, 110.8 bytes per state in the table either way,
+``memory_bytes`` under 0.1 ms; the run-time error and deadlock searches together 0.17 s
+before the native stuck check (calls already in the machine), 0.06 s after; the whole
+``cli.main`` about 0.33 s, of which loading the backup is 0.11.  Of the
+whole command's 0.83 s, importing rapidmc takes about 0.45 s (many modules, none large)
+and is now the largest share; the property search's per-state Python calls
+(``Product.successor_keys`` through ``ModelStore.successor_ids``) are the largest part of
+the searches left.  Counters, run-time error search in-process, N=9, four alternate runs:
+1.84, 1.78, 1.88, 1.90 s on main, 1.81, 1.71, 2.01, 1.74 s on the branch.
 """
 from __future__ import annotations
 

@@ -332,3 +332,29 @@ def test_a_whole_controller_reports_the_same_with_both_engines(tmp_path, monkeyp
     assert_same_reports(argv, monkeypatch)
     # unreduced: on the packed table, the machine stepping the tasks it can
     assert_same_reports(argv + ["--no-por"], monkeypatch)
+
+
+@needs_native
+@pytest.mark.parametrize("reduced", [False, True], ids=["unreduced", "reduced"])
+def test_the_packed_loop_finds_a_deadlock_of_tasks_as_python_does(reduced, monkeypatch):
+    """Two tasks that call procedures and then wait for each other's flag
+    (tests/step_machine_tasks/stuck), the graph not reused: the deadlock search tests each
+    new state in the packed loop (``machine_stuck``: every successor of the machine's step
+    is the state itself), asking Python's predicate only where the machine does not step;
+    the report (the deadlock, its counterexample, the counts) is the Python engine's."""
+    from rapidmc.model.packed import table as packed
+    asked: list[int] = []
+    holds = packed.PackedStateTable.predicate_holds
+
+    def counted(table, state_id):
+        asked.append(state_id)
+        return holds(table, state_id)
+    monkeypatch.setattr(packed.PackedStateTable, "predicate_holds", counted)
+    here = ROOT / "tests" / "step_machine_tasks" / "stuck"
+    argv = [str(here / "first.mod"), "--add-task", str(here / "second.mod")] + \
+        ([] if reduced else ["--no-por"])
+    document = assert_same_reports(argv, monkeypatch, reuse=False)
+    verdicts = {entry["name"]: entry for entry in document["properties"]}
+    assert verdicts["no_deadlock"]["verdict"] == "VIOLATED"
+    states = verdicts["no_deadlock"]["stats"]["model_states"]
+    assert len(asked) < states / 2, (len(asked), states)     # (every state: Python decides)

@@ -25,7 +25,8 @@ from rapidmc.check import find_reachable, native
 from rapidmc.cli import main
 from rapidmc.model.packed import table as packed
 from rapidmc.model.packed.bytecode import OP, ExpressionCode, Unsupported, atom_code
-from rapidmc.semantics.instructions import CheckedReads, ChosenWrite, ElementWrite
+from rapidmc.semantics.instructions import (CallPlan, CheckedReads, ChosenWrite, ElementWrite,
+                                           LeavePlan)
 
 from reduction_programs import properties, random_program
 from test_check_cases import verdict_cases
@@ -206,10 +207,14 @@ MACHINE_KINDS = {
     "moves": (CheckedReads, ["step_machine_tasks/moves/mover.mod", "--add-task",
                              "step_machine_tasks/sockets/phases.mod"], 3),
     # writes of array elements (a small array and one of 32 or more items, found by its
-    # items' hashes; an aggregate computed), one out of range; a component of an element
-    # is Python's
+    # items' hashes; an aggregate computed), one out of range; components of elements
     "elements": (ElementWrite, ["step_machine_tasks/elements/writer.mod", "--add-task",
-                                "step_machine_tasks/sockets/phases.mod"], 5),
+                                "step_machine_tasks/sockets/phases.mod"], 7),
+    # calls of procedures with IN arguments (a num rounded, a bool, a string; from a FOR
+    # loop; two deep) and their ends (ENDPROC, RETURN): the machine pushes and pops the
+    # task's frame; a VAR or optional parameter and a function are Python's
+    "calls": ((CallPlan, LeavePlan), ["step_machine_tasks/calls/caller.mod", "--add-task",
+                                      "step_machine_tasks/sockets/phases.mod"], 11),
 }
 
 

@@ -50,8 +50,11 @@ enum {
     OP_FOR_DEFAULT_STEP, OP_FOR_INIT, OP_FOR_NEXT,
     OP_ATOM_BEGIN, OP_ATOM_END, OP_END,
     OP_TASK_ONLY, OP_JUMP_IF_FALSE, OP_REQUIRE, OP_POP, OP_CHOOSE_BOOL, OP_WAIT, OP_SYNC,
-    OP_CHOOSE_CONST, OP_CHECK_INDEX, OP_SET_ELEMENT, OP_BUILD_TUPLE
+    OP_CHOOSE_CONST, OP_CHECK_INDEX, OP_SET_ELEMENT, OP_BUILD_TUPLE, OP_CALL, OP_LEAVE
 };
+
+/* a step that changes the task's frames (``Run.frame_op``): a call, a procedure's end */
+enum { FRAME_KEPT = 0, FRAME_CALL = 1, FRAME_LEAVE = 2 };
 
 /* what a run of code ends with */
 enum { VM_DONE = 0, VM_ERROR = 1, VM_UNSUPPORTED = 2 };
@@ -824,6 +827,8 @@ typedef struct {
     Value temps[TEMPS];
     int tasks;                  /* a step of one task among several (waits may run) */
     int idle;                   /* the task waits: its step leaves the state as it is */
+    int frame_op;               /* FRAME_ (``frame_step``): CALL's operands at ``call_at`` */
+    Py_ssize_t call_at;
 } Run;
 
 static inline Value load(PackedTable *table, uint32_t id)
@@ -954,6 +959,38 @@ static int integer_operands(Value a, Value b, long long *x, long long *y)
     *x = (long long)a.d;
     *y = (long long)b.d;
     return VM_DONE;
+}
+
+#define MAX_PATH 16              /* component offsets of one element write */
+
+/* ``value`` with its part at ``path`` (``depth`` offsets) replaced by ``item``, the tuples
+ * along the path rebuilt (``machine.replace_at``): a new reference; NULL with an error
+ * set, or NULL without one where a part on the path is not a tuple that long */
+static PyObject *replaced_at(PyObject *value, const int32_t *path, int32_t depth,
+                             PyObject *item)
+{
+    if (depth == 0) {
+        Py_INCREF(item);
+        return item;
+    }
+    if (!PyTuple_Check(value) || path[0] < 0 || path[0] >= PyTuple_GET_SIZE(value))
+        return NULL;
+    PyObject *inner = replaced_at(PyTuple_GET_ITEM(value, path[0]), path + 1, depth - 1, item);
+    if (inner == NULL)
+        return NULL;
+    Py_ssize_t length = PyTuple_GET_SIZE(value);
+    PyObject *changed = PyTuple_New(length);
+    if (changed == NULL) {
+        Py_DECREF(inner);
+        return NULL;
+    }
+    for (Py_ssize_t i = 0; i < length; i++) {
+        PyObject *kept = i == path[0] ? inner : PyTuple_GET_ITEM(value, i);
+        if (i != path[0])
+            Py_INCREF(kept);
+        PyTuple_SET_ITEM(changed, i, kept);
+    }
+    return changed;
 }
 
 /* Run ``code`` from ``ip`` until the block sets the pc (VM_DONE), an error (VM_ERROR) or
@@ -1263,31 +1300,34 @@ static int execute(Run *run, const int32_t *code, Py_ssize_t ip, uint64_t *bits)
                 FAIL(VM_ERROR);             /* ERR_OUTOFBND: Python raises */
             break;
         }
-        case OP_SET_ELEMENT: {      /* element (index, value) of the array in ``slot`` */
+        case OP_SET_ELEMENT: {      /* element (index, value) of the array in ``slot``, or
+                                     * the component at the path's offsets of that element */
             Value value = POP(), index = POP();
-            int32_t slot = code[ip++];
+            int32_t slot = code[ip], depth = code[ip + 1];
+            const int32_t *offsets = code + ip + 2;
+            ip += 2 + depth;
             PyObject *array = table->value_object[run->data[slot]];
             if (!numeric(index) || index.tag == T_BOOL || array == NULL ||
-                    !PyTuple_Check(array))
+                    !PyTuple_Check(array) || depth < 0 || depth >= MAX_PATH)
                 FAIL(VM_UNSUPPORTED);
-            Py_ssize_t length = PyTuple_GET_SIZE(array);
-            if (!integral(index.d) || index.d < 1.0 || index.d > (double)length)
+            if (!integral(index.d) || index.d < 1.0 ||
+                    index.d > (double)PyTuple_GET_SIZE(array))
                 FAIL(VM_ERROR);             /* ERR_OUTOFBND: Python raises */
+            int32_t path[MAX_PATH + 1];
+            path[0] = (int32_t)index.d - 1;
+            memcpy(path + 1, offsets, depth * sizeof(int32_t));
             int32_t value_id_ = store_id(table, value);
             if (value_id_ < 0)
                 return -1;
             PyObject *item = value_object(table, value_id_);
-            PyObject *changed = item == NULL ? NULL : PyTuple_New(length);
-            if (changed == NULL) {
-                Py_XDECREF(item);
+            if (item == NULL)
                 return -1;
-            }
-            Py_ssize_t at = (Py_ssize_t)index.d - 1;
-            for (Py_ssize_t i = 0; i < length; i++) {
-                PyObject *kept = i == at ? item : PyTuple_GET_ITEM(array, i);
-                if (i != at)
-                    Py_INCREF(kept);
-                PyTuple_SET_ITEM(changed, i, kept);
+            PyObject *changed = replaced_at(array, path, depth + 1, item);
+            Py_DECREF(item);
+            if (changed == NULL) {
+                if (PyErr_Occurred())
+                    return -1;
+                FAIL(VM_UNSUPPORTED);       /* (not a record of that shape: Python's) */
             }
             int32_t id = value_id(table, changed);
             Py_DECREF(changed);
@@ -1321,6 +1361,27 @@ static int execute(Run *run, const int32_t *code, Py_ssize_t ip, uint64_t *bits)
             PUSH(load(table, (uint32_t)id));
             break;
         }
+        case OP_CALL: {             /* callee, its locals' count and initial ids, the
+                                     * arguments' count and (slot, num) of each */
+            int32_t locals = code[ip + 1], count = code[ip + 2 + locals];
+            const int32_t *params = code + ip + 3 + locals;
+            if (count < 0 || count > TEMPS || count > top)
+                FAIL(VM_UNSUPPORTED);
+            for (int32_t k = count - 1; k >= 0; k--) {
+                Value v = POP();
+                /* (``Parameter.convert``: a num argument rounded to single precision) */
+                if (params[2 * k + 1] && v.tag == T_NUM &&
+                        (outcome = to_num(&v)) != VM_DONE)
+                    goto failed;
+                run->temps[k] = v;
+            }
+            run->frame_op = FRAME_CALL;
+            run->call_at = ip;
+            return VM_DONE;
+        }
+        case OP_LEAVE:
+            run->frame_op = FRAME_LEAVE;
+            return VM_DONE;
         case OP_WAIT:               /* the task waits: the pc stays */
             run->idle = 1;
             return VM_DONE;
@@ -1445,6 +1506,8 @@ typedef struct Scratch {     /* scratch space of the step machine */
     Py_ssize_t probe_capacity;
     Successors probe;
     Int32Vector probe_changed;
+    uint32_t *called;           /* the frame vector a call or a return makes */
+    Py_ssize_t called_capacity;
 } Scratch;
 
 static int scratch_init(Scratch *scratch, PackedTable *table)
@@ -1474,6 +1537,7 @@ static void scratch_free(Scratch *scratch)
     vector32_free(&scratch->pending);
     vector32_free(&scratch->probe_changed);
     PyMem_Free(scratch->probe_source);
+    PyMem_Free(scratch->called);
     PyMem_Free(scratch->probe.frames);
     PyMem_Free(scratch->probe.data);
     PyMem_Free(scratch->found.frames);
@@ -1730,6 +1794,123 @@ static int machine_step(PackedTable *table, Py_ssize_t id, Scratch *scratch,
     }
 }
 
+/* The TASK_INFO numbers of ``task`` in the context of frame segment ``frame_id`` (its
+ * first item), which goes to ``*context`` */
+static const int32_t *task_info_at(PackedTable *table, int32_t frame_id, Py_ssize_t task,
+                                   uint32_t *context)
+{
+    Py_ssize_t length;
+    *context = vt_items(&table->frames, frame_id, &length)[0];
+    return table->context_tasks + ((Py_ssize_t)*context * table->task_count + task) * TASK_INFO;
+}
+
+/* The successor of a step that changes the task's frames (``run->frame_op``): CALL pushes
+ * the callee's frame (``enter_routine``), LEAVE pops the task's frame and its caller goes
+ * on after the call (``leave_routine``).  The frames below the top are the context's:
+ * Python gives the context entered (``called_context``, ``left_context``), and the
+ * task's segment of the frame vector becomes the new top frame's pc and locals, projected.
+ * ``task``'s frame starts at ``where`` in ``frame`` with ``locals`` values, at ``pc``.
+ * VM_DONE (added to ``found``), VM_UNSUPPORTED (Python steps it), -1. */
+static int frame_step(PackedTable *table, Scratch *scratch, Run *run, const int32_t *code,
+                      Py_ssize_t task, int32_t where, int32_t locals, int32_t pc,
+                      uint32_t context, const uint32_t *frame, Py_ssize_t frame_length,
+                      int32_t data_id, Py_ssize_t data_length, Successors *found,
+                      Int32Vector *changed)
+{
+    const int32_t *call = code + run->call_at;
+    PyObject *answer;
+    if (run->frame_op == FRAME_CALL)
+        answer = PyObject_CallMethod((PyObject *)table, "called_context", "nnnny#",
+                                     (Py_ssize_t)context, task, (Py_ssize_t)pc,
+                                     (Py_ssize_t)call[0], (const char *)(frame + where + 1),
+                                     (Py_ssize_t)(locals * sizeof(uint32_t)));
+    else
+        answer = PyObject_CallMethod((PyObject *)table, "left_context", "nn",
+                                     (Py_ssize_t)context, task);
+    if (answer == NULL)
+        return -1;
+    if (answer == Py_None) {
+        Py_DECREF(answer);
+        return VM_UNSUPPORTED;
+    }
+    long entered;
+    int32_t new_pc = 0;
+    const char *kept = NULL;            /* the caller's locals (a return) */
+    Py_ssize_t kept_size = 0;
+    int parsed = run->frame_op == FRAME_CALL ?
+        (entered = PyLong_AsLong(answer), !(entered == -1 && PyErr_Occurred())) :
+        PyArg_ParseTuple(answer, "liy#", &entered, &new_pc, &kept, &kept_size);
+    if (!parsed) {
+        Py_DECREF(answer);
+        return -1;
+    }
+    if (entered < 0 || entered >= table->contexts) {
+        Py_DECREF(answer);
+        return VM_UNSUPPORTED;
+    }
+    /* (the context tables may have moved: Python added a context) */
+    const int32_t *info = table->context_tasks + (entered * table->task_count + task) * TASK_INFO;
+    int32_t top = info[0], count = info[2];
+    if (top < 0 || top >= table->routine_count ||
+            info[1] != where || new_pc < 0 || new_pc >= table->routines[top].length ||
+            (table->projecting && table->routines[top].code == NULL) ||
+            (kept != NULL && kept_size != count * (Py_ssize_t)sizeof(uint32_t))) {
+        Py_DECREF(answer);
+        return VM_UNSUPPORTED;
+    }
+    Py_ssize_t length = frame_length - locals + count, after = where + 1 + locals;
+    uint32_t *made = reserve(scratch->called, &scratch->called_capacity, sizeof(uint32_t),
+                             length + 1);
+    if (made == NULL) {
+        Py_DECREF(answer);
+        return -1;
+    }
+    scratch->called = made;
+    memcpy(made, frame, where * sizeof(uint32_t));
+    made[0] = (uint32_t)entered;
+    memcpy(made + where + 1 + count, frame + after, (frame_length - after) * sizeof(uint32_t));
+    uint32_t *top_locals = made + where + 1;
+    if (kept != NULL)
+        memcpy(top_locals, kept, kept_size);
+    Py_DECREF(answer);
+    if (run->frame_op == FRAME_CALL) {
+        int32_t initial = call[1], arguments = call[2 + initial];
+        const int32_t *params = call + 3 + initial;
+        if (initial != count)
+            return VM_UNSUPPORTED;
+        memcpy(top_locals, call + 2, count * sizeof(uint32_t));
+        for (int32_t k = 0; k < arguments; k++) {
+            int32_t slot = params[2 * k];
+            if (slot < 0 || slot >= count)
+                return VM_UNSUPPORTED;
+            int32_t id = store_id(table, run->temps[k]);
+            if (id < 0)
+                return -1;
+            top_locals[slot] = (uint32_t)id;
+        }
+        for (int32_t k = 0; k < count; k++)
+            if (top_locals[k] == (uint32_t)-1)
+                return VM_UNSUPPORTED;      /* (a parameter without its argument) */
+    }
+    int32_t pc_id = number_id(table, T_INT, (double)new_pc, NULL);
+    if (pc_id < 0)
+        return -1;
+    made[where] = (uint32_t)pc_id;
+    if (table->projecting) {
+        run->locals = top_locals;
+        run->local_count = count;
+        run->pc = new_pc;
+        project(table, &table->routines[top], (uint32_t)entered, run);
+    }
+    int32_t new_frame = vt_intern(&table->frames, made, length);
+    int32_t new_data = new_frame < 0 ? -1 : !run->data_changed ? data_id :
+        data_intern(table, run->data, data_length);
+    if (new_data < 0 || add_successor(found, new_frame, new_data) < 0 ||
+            vector32_push(changed, 1) < 0)
+        return -1;
+    return VM_DONE;
+}
+
 /* One task's instruction in a state of several tasks, by the machine: the block at its pc
  * once per choice script (tasks take turns one instruction each: no merged run), as
  * ``staged_step`` runs it through ``fused_step`` on a view of that task.  Its successors
@@ -1770,6 +1951,7 @@ static int task_machine_step(PackedTable *table, Scratch *scratch, const int32_t
         memcpy(work_data, data, data_length * sizeof(uint32_t));
         run.data_changed = run.locals_changed = 0;
         run.idle = 0;
+        run.frame_op = FRAME_KEPT;
         run.pc = start_pc;
         run.size_count = 0;
         run.epoch = ++scratch->epoch;
@@ -1780,6 +1962,18 @@ static int task_machine_step(PackedTable *table, Scratch *scratch, const int32_t
         scratch->epoch = run.epoch;
         if (outcome < 0)
             return -1;
+        if (outcome == VM_DONE && run.frame_op != FRAME_KEPT) {
+            Py_ssize_t task = (info - table->context_tasks) / TASK_INFO -
+                (Py_ssize_t)context * table->task_count;
+            outcome = frame_step(table, scratch, &run, routine->code, task, where, locals,
+                                 start_pc, context, frame, frame_length, data_id, data_length,
+                                 found, changed);
+            if (outcome < 0)
+                return -1;
+            if (outcome == VM_DONE)
+                return VM_DONE;
+            break;
+        }
         if (outcome != VM_DONE || run.pc < 0 || run.pc >= routine->length ||
                 (run.pc == start_pc && !run.locals_changed && !run.data_changed &&
                  !run.idle)) {
@@ -1899,18 +2093,24 @@ static int probe_step(PackedTable *table, Scratch *scratch, const int32_t *info,
  * transition (the machine's steps keep the context: running, ERRNO, the frames' depth
  * and mode; each one changes the state).  VM_DONE (the successor's segments updated),
  * VM_UNSUPPORTED (the machine does not take a step on the way: Python decides), -1. */
-static int run_on(PackedTable *table, Scratch *scratch, const int32_t *info, uint32_t context,
-                  Py_ssize_t task, int32_t *frame_id, int32_t *data_id)
+static int run_on(PackedTable *table, Scratch *scratch, Py_ssize_t task, int32_t *frame_id,
+                  int32_t *data_id)
 {
     for (;;) {
+        /* (the context of the step's target: a call or a return changes it) */
+        uint32_t context, reached;
+        const int32_t *info = task_info_at(table, *frame_id, task, &context);
         int64_t pc = task_pc(table, *frame_id, info[1]);
-        if (!(order_flags(table, task, info[0], pc) & ORDER_MERGEABLE))
+        if (info[0] < 0 || !(order_flags(table, task, info[0], pc) & ORDER_MERGEABLE))
             return VM_DONE;
         int outcome = probe_step(table, scratch, info, context, *frame_id, *data_id);
         if (outcome != VM_DONE)
             return outcome;
         if (scratch->probe.count != 1)
             return VM_DONE;
+        task_info_at(table, scratch->probe.frames[0], task, &reached);
+        if (reached != context)
+            return VM_DONE;             /* (the frames' depth changed: no merge) */
         *frame_id = scratch->probe.frames[0];
         *data_id = scratch->probe.data[0];
     }
@@ -1954,8 +2154,7 @@ static int all_tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch,
         int owner = (int)task;
         for (Py_ssize_t i = before; outcome == VM_DONE && table->reduced && i < found->count;
              i++) {
-            outcome = run_on(table, scratch, info, context, task, &found->frames[i],
-                             &found->data[i]);
+            outcome = run_on(table, scratch, task, &found->frames[i], &found->data[i]);
             if (outcome < 0)
                 return -1;
             info = table->context_tasks + (context * tasks + task) * TASK_INFO;
@@ -2027,8 +2226,7 @@ static int all_tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch,
  * proviso), and the task can go on there.  1, 0, VM_UNSUPPORTED (Python decides: the machine does not take the task's
  * next step), -1. */
 static int invisible_step(PackedTable *table, Scratch *scratch, Py_ssize_t id,
-                          Py_ssize_t here, const int32_t *info, uint32_t context,
-                          Py_ssize_t task, int32_t frame_id, int32_t data_id)
+                          Py_ssize_t here, Py_ssize_t task, int32_t frame_id, int32_t data_id)
 {
     int64_t key = table->states.keys[id];
     if (frame_id == (int32_t)(key >> 32) && data_id == (int32_t)(key & 0xffffffff))
@@ -2038,6 +2236,10 @@ static int invisible_step(PackedTable *table, Scratch *scratch, Py_ssize_t id,
         return -1;
     if (place >= 0 && place <= here)
         return 0;                               /* (numbered before the state: C3) */
+    uint32_t context;                           /* (the target's: a call changes it) */
+    const int32_t *info = task_info_at(table, frame_id, task, &context);
+    if (info[0] < 0)
+        return VM_UNSUPPORTED;
     if (order_flags(table, task, info[0], task_pc(table, frame_id, info[1])) &
             ORDER_NEVER_WAITS)
         return 1;
@@ -2136,13 +2338,12 @@ static int ample_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Succe
                                         at.data_id, data, at.data_length, found,
                                         &scratch->changed);
         for (Py_ssize_t i = 0; outcome == VM_DONE && i < found->count; i++)
-            outcome = run_on(table, scratch, info, context, task, &found->frames[i],
-                             &found->data[i]);
+            outcome = run_on(table, scratch, task, &found->frames[i], &found->data[i]);
         scratch->defer = 0;
         int invisible = 1;
         for (Py_ssize_t i = 0; outcome == VM_DONE && invisible == 1 && i < found->count; i++)
-            invisible = invisible_step(table, scratch, id, here, info, context, task,
-                                       found->frames[i], found->data[i]);
+            invisible = invisible_step(table, scratch, id, here, task, found->frames[i],
+                                       found->data[i]);
         if (outcome == VM_DONE && invisible != 1 && invisible != 0)
             outcome = invisible;
         if (outcome != VM_DONE) {
@@ -3691,7 +3892,11 @@ typedef struct {                 /* one run of the packed breadth-first loop */
     PyObject *budget, *sink;
     int observe_natively;        /* stuck check and triggers here; Python for candidates */
     Py_ssize_t trigger_valuation;   /* -1: none */
-    int predicate_is_failed, deadlock_is_target, recording;
+    /* the predicate: 0 Python's (``predicate_holds``), PREDICATE_FAILED the program failed
+     * (the context says), PREDICATE_STUCK several tasks' ``RapidSystem.stuck`` (the
+     * machine's step says, as ``PackedStateTable._stuck``; else Python) */
+    int predicate_is_failed;
+    int deadlock_is_target, recording;
     int labels_wanted;           /* the observer still wants the lines steps run */
     Py_ssize_t *valuations;      /* per recorded valuation: its compiled index or -1 */
     Py_ssize_t valuation_count;
@@ -3711,7 +3916,34 @@ typedef struct {                 /* one run of the packed breadth-first loop */
     Py_ssize_t trigger_count, trigger_capacity;
     Scratch scratch;
     Successors found;
+    Scratch stuck;               /* (``machine_stuck``'s step of a new state) */
 } PackedSearch;
+
+enum { PREDICATE_FAILED = 1, PREDICATE_STUCK = 2 };
+
+/* ``PackedStateTable._stuck`` here: whether new state ``id`` of several tasks is stuck,
+ * every successor of the machine's step (its own steps and Python's of single tasks)
+ * being the state itself: 1, 0, VM_UNSUPPORTED (Python decides: the machine does not step
+ * there, a task has ended, or the observer wants the lines steps run), -1 */
+static int machine_stuck(PackedSearch *search, Py_ssize_t id)
+{
+    PackedTable *table = search->table;
+    if (search->labels_wanted || table->labels_wanted || table->task_count < 2)
+        return VM_UNSUPPORTED;
+    Stored at;
+    stored_state(table, id, &at);
+    if (table->context_runs[at.frame[0]] & CONTEXT_ENDED_TASK)
+        return VM_UNSUPPORTED;
+    int32_t frame_id = at.frame_id, data_id = at.data_id;
+    Successors *found = &search->stuck.found;
+    int outcome = machine_successors(table, id, &search->stuck, found);
+    if (outcome != VM_DONE)
+        return outcome;
+    for (Py_ssize_t i = 0; i < found->count; i++)
+        if (found->frames[i] != frame_id || found->data[i] != data_id)
+            return 0;
+    return 1;
+}
 
 static int flush(PackedSearch *search)
 {
@@ -3820,9 +4052,17 @@ static int visit(PackedSearch *search, Py_ssize_t frontier, Py_ssize_t i, Py_ssi
             return FAILED;
     }
     /* the run-time error predicate (the program failed) is the context's to say */
-    if (search->predicate_is_failed) {
+    int stuck = search->predicate_is_failed == PREDICATE_STUCK ? machine_stuck(search, *id) :
+        VM_UNSUPPORTED;
+    if (stuck < 0)
+        return FAILED;
+    if (search->predicate_is_failed == PREDICATE_FAILED) {
         uint32_t context = table->frames.arena[table->frames.offsets[search->found.frames[i]]];
         if (table->context_runs[context] & CONTEXT_FAILED)
+            return FOUND;
+    }
+    else if (stuck != VM_UNSUPPORTED) {
+        if (stuck)
             return FOUND;
     }
     else {
@@ -4004,7 +4244,7 @@ static PyObject *packed_breadth_first(PyObject *module, PyObject *args)
     Py_ssize_t frontier;
     PyObject *valuations;
     int recording;
-    if (!PyArg_ParseTuple(args, "O!nOOpnpppOOO!LLlnLp", &PackedTableType, &search.table,
+    if (!PyArg_ParseTuple(args, "O!nOOpnippOOO!LLlnLp", &PackedTableType, &search.table,
                           &frontier, &search.step_python, &search.python_observe,
                           &search.observe_natively, &search.trigger_valuation,
                           &search.predicate_is_failed, &search.deadlock_is_target, &recording,
@@ -4030,7 +4270,8 @@ static PyObject *packed_breadth_first(PyObject *module, PyObject *args)
         if (search.valuations[i] == -1 && PyErr_Occurred())
             goto done;
     }
-    if (scratch_init(&search.scratch, search.table) < 0)
+    if (scratch_init(&search.scratch, search.table) < 0 ||
+            scratch_init(&search.stuck, search.table) < 0)
         goto done;
     search.max_states = integer_attribute(search.budget, "max_states");
     search.next_checkpoint = integer_attribute(search.budget, "next_checkpoint");
@@ -4066,6 +4307,7 @@ done:
     PyMem_Free(search.found.frames);
     PyMem_Free(search.found.data);
     scratch_free(&search.scratch);
+    scratch_free(&search.stuck);
     if (outcome == FAILED) {
         PyMem_Free(search.triggers);
         return NULL;

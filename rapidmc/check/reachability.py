@@ -127,6 +127,17 @@ def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], boo
     return SearchResult(HOLDS, stats=stats)
 
 
+def _packed_predicate(predicate, system, table) -> int:
+    """How the packed loop tests its predicate: 1 the program failed (the state's context
+    says), 2 several tasks stuck (the step machine's step says where it takes it:
+    ``PackedStateTable._stuck``), 0 Python's ``predicate_holds``."""
+    if predicate == getattr(system, "failed", None):
+        return 1
+    if predicate == getattr(system, "stuck", None) and getattr(table, "tasks", 1) > 1:
+        return 2
+    return 0
+
+
 class _BreadthFirst:
     """States by id, each with the id of the state it was first reached from."""
 
@@ -297,7 +308,7 @@ class _BreadthFirst:
                 table, frontier, table.python_successors,
                 table.observe if observe is not None else None,
                 watch is not None and (seen is None or trigger_index >= 0), trigger_index,
-                self.predicate == getattr(self.system, "failed", None),
+                _packed_predicate(self.predicate, self.system, table),
                 self.deadlock_is_target, graph is not None, self.budget, sink, indices,
                 self.transitions, self.deadlocks, depth_now, level_end,
                 len(graph.targets) if graph is not None else 0, labels_wanted)

@@ -136,15 +136,20 @@ class ModelStore:
                         limit = 1 << 8 * valuations.itemsize if type(valuations) is array \
                             else 0
                 ids.append(target_id)
-            if len(ids) == 1 or len(ids) == 2 and ids[0] != ids[1]:
-                result = tuple(ids)
-            else:
-                result = tuple(dict.fromkeys(ids))
+            result = distinct(ids)
         return self._expanded(state_id, result)
 
     def _machine_stepped(self, state_id: int, ids: list[int], bits) -> tuple[int, ...]:
         """``successor_ids`` from the step machine's ids and the new states' valuations
         (None where its atoms gave up, or all of them when they are not compiled)."""
+        valuations = self.valuations
+        if bits and type(valuations) is array and None not in bits:
+            try:        # (the usual: the machine valued every new state; it fits the array)
+                valuations.extend(array(valuations.typecode, bits))
+            except OverflowError:
+                pass
+            else:
+                return self._expanded(state_id, distinct(ids))
         first_new = len(self.valuations)
         new_ids = range(first_new, len(self.states))
         if bits is None:
@@ -157,9 +162,7 @@ class ModelStore:
             except OverflowError:
                 self.valuations = wider(self.valuations, value)
                 self.valuations.append(value)
-        result = tuple(ids) if len(ids) == 1 or len(ids) == 2 and ids[0] != ids[1] \
-            else tuple(dict.fromkeys(ids))
-        return self._expanded(state_id, result)
+        return self._expanded(state_id, distinct(ids))
 
     def _expanded(self, state_id: int, result: tuple[int, ...]) -> tuple[int, ...]:
         """Book-keeping after a state's successors were found: the cache and its review."""
@@ -220,6 +223,13 @@ def wider(valuations, valuation: int):
         if valuation < 1 << 8 * array(typecode).itemsize:
             return array(typecode, valuations)
     return list(valuations)
+
+
+def distinct(ids: list[int]) -> tuple[int, ...]:
+    """``ids`` without repeats, as a tuple, first occurrences kept in order."""
+    if len(ids) == 1 or len(ids) == 2 and ids[0] != ids[1]:
+        return tuple(ids)
+    return tuple(dict.fromkeys(ids))
 
 
 def unique(items: list[int]) -> list[int]:

@@ -96,12 +96,33 @@ class CheckedReads(NamedTuple):
 class ElementWrite(NamedTuple):
     """An assignment's whole effect on the state for the step machine: element ``index``
     (a ``Compiled`` with a source) of the array in global data ``slot`` becomes ``value``
-    (a ``Compiled`` with a source).  An index not an integer in 1..the array's length
-    is the Python step's (it raises ERR_OUTOFBND)."""
+    (a ``Compiled`` with a source), or, with a ``path`` of record component offsets, that
+    component of the element (``targets{i}.trans.x``: the path (0, 0)).  An index not an
+    integer in 1..the array's length is the Python step's (it raises ERR_OUTOFBND)."""
 
     slot: int
     index: Any
     value: Any
+    path: tuple = ()
+
+
+class CallPlan(NamedTuple):
+    """A procedure call's whole effect for the step machine (``enter_routine``): a frame
+    of ``routine`` pushed on the task's stack, its locals the routine's initial ones with
+    each parameter's the value of its argument (``arguments``: per parameter, in order,
+    an IN argument's ``Compiled`` with a source; a num parameter rounds a num to single
+    precision, as ``Parameter.convert`` does)."""
+
+    routine: int
+    arguments: tuple
+
+
+class LeavePlan(NamedTuple):
+    """The end of a procedure (ENDPROC, RETURN without a value) for the step machine
+    (``leave_routine``): the task's frame of ``routine`` popped, its caller going on after
+    the call.  The last frame of a task, a trap's or a function's are Python's."""
+
+    routine: int
 
 
 class Action(Instruction):

@@ -685,8 +685,9 @@ class Linker:
                                        p.is_switch, types, p.rank))
         return views
 
-    def bind_user_call(self, compiler, routine: P.Routine, args, span):
-        return bind(compiler, routine.name, self.parameter_views(routine), args, span)
+    def bind_user_call(self, compiler, routine: P.Routine, args, span,
+                       sources: Optional[list] = None):
+        return bind(compiler, routine.name, self.parameter_views(routine), args, span, sources)
 
     def procedures_visible(self, routine: P.Routine):
         for candidate in self.routines:

@@ -18,14 +18,14 @@ from ..diagnostics import (ASSIGN_CONST, BAD_CONTROL, DUPLICATE, TYPE_MISMATCH, 
 from ..diagnostics.error_report import UNKNOWN_CODES
 from .library import registry
 from .expressions import ExpressionCompiler, _check_index as check_index
-from .instructions import (Action, Branch, Call, ElementWrite, EndRoutine, EndUndo, ExitProgram,
-                           ForInit, ForNext, Instruction, Jump, LateCall, Raise, Retry,
-                           Return, TestDispatch, TryNext)
+from .instructions import (Action, Branch, Call, CallPlan, ElementWrite, EndRoutine, EndUndo,
+                           ExitProgram, ForInit, ForNext, Instruction, Jump, LateCall,
+                           LeavePlan, Raise, Retry, Return, TestDispatch, TryNext)
 from .errors import placeholder_reached
 from .machine import GLOBAL, with_locals
 from .scope import (CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SYSTEM_VARIABLES, Scope,
                     Symbol)
-from .types import NUM, SEMI_VALUE, STRING, RapidType
+from .types import NUM, SEMI_VALUE, STRING, ArrayType, RapidType
 
 TARGET_FIELDS = ("next", "start", "after", "target_true", "target_false", "target", "exit",
                  "body", "default")
@@ -95,7 +95,10 @@ class RoutineCompiler:
         end = Label()
         self.block(decl.body, end)
         self.place(end)
-        self.emit_end(EndRoutine(decl.end_span, decl.kind == "FUNC", decl.name.text))
+        end_routine = EndRoutine(decl.end_span, decl.kind == "FUNC", decl.name.text)
+        self.emit_end(end_routine)
+        if decl.kind == "PROC":
+            end_routine.machine = LeavePlan(self.routine.index)
         if decl.error is not None:
             self.section = "error"
             self.routine.handler_pc = len(self.code)
@@ -296,6 +299,8 @@ class RoutineCompiler:
                 m.store = m.store.set(slot, array[:i] + (value,) + array[i + 1:])
             fn = assign_element
         else:
+            element = self._component_write(compiler, target, root, value)
+
             def assign(m):
                 ref = ref_fn(m)
                 m.write_ref(ref, value_fn(m))
@@ -304,6 +309,28 @@ class RoutineCompiler:
         if fusion is not None and value.source is not None:
             action.fusion = fusion
         action.machine = element
+
+    @staticmethod
+    def _component_write(compiler: ExpressionCompiler, target, root, value) -> Optional[ElementWrite]:
+        """The machine's plan of a write of a record component of a global array's element
+        (``targets{i}.trans.x := v``: the index evaluated and checked first, then the value,
+        as ``reference`` and ``assign`` run it), None for another target."""
+        names = []
+        while isinstance(target, ast.Component):
+            names.append(target.name)
+            target = target.base
+        if not names or root.kind != GLOBAL_DATA or not isinstance(target, ast.Index) or \
+                len(target.indices) != 1 or not isinstance(target.base, ast.NameRef) or \
+                not isinstance(root.type, ArrayType) or len(root.type.dims) != 1:
+            return None
+        record, path = root.type.element, []
+        for name in reversed(names):
+            offset, record = compiler.component_offset(record, name)
+            path.append(offset)
+        index = compiler.value(target.indices[0], NUM)
+        if index.source is None or value.source is None:
+            return None
+        return ElementWrite(root.slot, index, value, tuple(path))
 
     def _ProcedureCall(self, statement: ast.ProcedureCall, follow: Label) -> None:
         compiler = self.expressions()
@@ -315,8 +342,14 @@ class RoutineCompiler:
                     "trap routine (traps run on interrupts: use CONNECT)"
                 raise error(TYPE_MISMATCH, f"'{statement.name.text}' is a {what}, not a "
                             "procedure", statement.span)
-            binders = self.linker.bind_user_call(compiler, callee, statement.args, statement.span)
-            self.emit(Call(statement.span, callee, binders))
+            sources: list = []
+            binders = self.linker.bind_user_call(compiler, callee, statement.args, statement.span,
+                                                 sources)
+            call = self.emit(Call(statement.span, callee, binders))
+            if all(param.mode == "IN" and not param.optional and not param.is_switch and
+                   compiled is not None for param, compiled in zip(callee.parameters, sources)) \
+                    and len(sources) == len(callee.parameters):
+                call.machine = CallPlan(callee.index, tuple(sources))
             return
         if symbol is not None:
             raise error(TYPE_MISMATCH, f"'{statement.name.text}' is data, not a procedure",
@@ -361,7 +394,9 @@ class RoutineCompiler:
         elif statement.value is not None:
             raise error(BAD_CONTROL, f"RETURN in {self.routine.kind} {self.routine.name} "
                         "cannot have a value", statement.span)
-        self.emit(Return(statement.span, value_fn))
+        returns = self.emit(Return(statement.span, value_fn))
+        if self.routine.kind == "PROC" and self.section == "body":
+            returns.machine = LeavePlan(self.routine.index)
 
     def _Raise(self, statement: ast.Raise, follow: Label) -> None:
         value_fn = None

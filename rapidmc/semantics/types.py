@@ -289,9 +289,10 @@ def default_value(t: AnyType):
 
 
 def _default_array(element: RapidType, dims: tuple) -> tuple:
-    if len(dims) == 1:
-        return tuple(default_value(element) for _ in range(dims[0] or 0))
-    return tuple(_default_array(element, dims[1:]) for _ in range(dims[0] or 0))
+    # (one default element, shared: values are immutable, and a 512-element array of
+    # records is then built in one step, not element by element)
+    item = default_value(element) if len(dims) == 1 else _default_array(element, dims[1:])
+    return (item,) * (dims[0] or 0)
 
 
 def element_type(t: AnyType) -> AnyType:

@@ -37,16 +37,19 @@ from typing import Callable, Optional
 
 from ...semantics.fused_step import NEVER_JOINS, block_targets, routine_fused
 from ...semantics.instructions import (
-    Action, Branch, CheckedReads, ChosenWrite, ConstantWrite, ElementWrite, ForInit, ForNext, Jump, TestDispatch, Wait)
+    Action, Branch, CallPlan, CheckedReads, ChosenWrite, ConstantWrite, ElementWrite, ForInit,
+    ForNext, Jump, LeavePlan, TestDispatch, Wait)
 
 # opcodes, in the order of _packed.c's enum (from 1)
 OPCODES = ("CONST LOAD_STORE LOAD_LOCAL READ READ_DYN ADD SUB MUL DIVIDE TO_NUM TO_DNUM "
            "INT_DIV INT_MOD NEG NOT EQ NE LT LE GT GE AND OR SET_STORE SET_LOCAL SET_TEMP "
            "GET_TEMP GOTO BRANCH GOTO_IF RESET_CHOSEN UNSUPPORTED FOR_DEFAULT_STEP FOR_INIT "
            "FOR_NEXT ATOM_BEGIN ATOM_END END TASK_ONLY JUMP_IF_FALSE REQUIRE POP CHOOSE_BOOL "
-           "WAIT SYNC CHOOSE_CONST CHECK_INDEX SET_ELEMENT BUILD_TUPLE").split()
+           "WAIT SYNC CHOOSE_CONST CHECK_INDEX SET_ELEMENT BUILD_TUPLE CALL LEAVE").split()
 OP = {name: number for number, name in enumerate(OPCODES, 1)}
 MAX_STACK = 48            # deeper expressions are left to Python (the machine has 64)
+MAX_PATH = 16             # element writes with deeper components are Python's (_packed.c)
+MAX_ARGUMENTS = 8         # calls with more arguments are Python's (the machine's temps)
 
 _COMPARISONS = {python_ast.Eq: "EQ", python_ast.NotEq: "NE", python_ast.Lt: "LT",
                 python_ast.LtE: "LE", python_ast.Gt: "GT", python_ast.GtE: "GE"}
@@ -224,7 +227,8 @@ class RoutineCode:
             expressions = ExpressionCode(value_id, {}, store_length)
             try:
                 if waits:
-                    block = _task_block(instruction, expressions, initial_store, config)
+                    block = _task_block(instruction, expressions, initial_store, config,
+                                        program)
                 else:
                     block = _block(instruction, expressions, skipped)
             except Unsupported:
@@ -280,7 +284,8 @@ def _block(instruction, expressions: ExpressionCode, skipped: frozenset) -> Opti
 # idle step, which the machine keeps or drops as ``idle_steps_dropped`` does).  Their
 # blocks begin with TASK_ONLY: a program of one task steps them in Python (its general
 # step may merge runs there).
-def _task_block(instruction, expressions: ExpressionCode, initial_store, config) -> list[int]:
+def _task_block(instruction, expressions: ExpressionCode, initial_store, config,
+                program) -> list[int]:
     """The code of an instruction the machine runs only as one task's step among several
     (``Instruction.machine``)."""
     plan = instruction.machine
@@ -294,6 +299,10 @@ def _task_block(instruction, expressions: ExpressionCode, initial_store, config)
         return _checked_reads_block(instruction, expressions, config)
     if isinstance(plan, ElementWrite):
         return _element_write_block(instruction, expressions)
+    if isinstance(plan, CallPlan):
+        return _call_block(plan, expressions, program)
+    if isinstance(plan, LeavePlan):
+        return [OP["TASK_ONLY"], OP["LEAVE"]]
     return _sync_block(instruction, expressions.value_id, initial_store)
 
 
@@ -345,13 +354,45 @@ def _checked_reads_block(instruction, expressions: ExpressionCode, config) -> li
 
 def _element_write_block(instruction, expressions: ExpressionCode) -> list[int]:
     """An ``ElementWrite`` (as ``assign_element`` runs it: the index first, then the
-    value): SET_ELEMENT makes the array with that element (an index out of range is
-    Python's).  Written even where the data is sliced (the projection resets it): the
-    index may raise."""
+    value): SET_ELEMENT makes the array with that element, or with that component of it
+    (the path's offsets; an index out of range is Python's).  Written even where the data
+    is sliced (the projection resets it): the index may raise."""
     plan = instruction.machine
+    if len(plan.path) >= MAX_PATH:
+        raise Unsupported("a deep component")
     return [OP["TASK_ONLY"], *_source(expressions, plan.index),
             *_source(expressions, plan.value), OP["SET_ELEMENT"], plan.slot,
-            OP["GOTO"], instruction.next]
+            len(plan.path), *plan.path, OP["GOTO"], instruction.next]
+
+
+def _call_block(plan: CallPlan, expressions: ExpressionCode, program) -> list[int]:
+    """A ``CallPlan``: the arguments computed in order, then CALL pushes the callee's frame
+    (its initial locals' ids, then per argument its parameter's slot and whether a num is
+    rounded to single precision); the machine asks Python once for each context it
+    enters (``PackedStateTable.called_context``)."""
+    callee = program.routines[plan.routine]
+    if len(plan.arguments) > MAX_ARGUMENTS:
+        raise Unsupported("many arguments")
+    code = [OP["TASK_ONLY"]]
+    for compiled in plan.arguments:
+        code += _source(expressions, compiled)
+    # (a parameter's slot: -1, the argument's value goes there; its initial value, which
+    # may be the marker of an absent argument, is no value of the table)
+    slots = {param.slot for param in callee.parameters}
+    initial = []
+    for slot, value in enumerate(callee.initial_locals):
+        if slot in slots:
+            initial.append(-1)
+            continue
+        try:
+            hash(value)
+        except TypeError:
+            raise Unsupported("unhashable local") from None
+        initial.append(expressions.value_id(value))
+    code += [OP["CALL"], plan.routine, len(initial), *initial, len(plan.arguments)]
+    for param in callee.parameters:
+        code += [param.slot, int(getattr(param.type, "key", "") == "NUM")]
+    return code
 
 
 def _wait_block(instruction, expressions: ExpressionCode) -> list[int]:

@@ -45,7 +45,7 @@ from ...semantics.plain_step import is_plain
 from ...semantics.staged_step import task_transitions
 from ..reduction.merging import executed_spans
 from ..reduction.partial_order import PartialOrder
-from ...semantics.state import FAILED, RUNNING, Frame, State
+from ...semantics.state import FAILED, NORMAL, RUNNING, Frame, State
 from ..reduction.projection import Projection
 from .bytecode import RoutineCode, atom_code
 
@@ -62,6 +62,8 @@ ORDER_MERGEABLE = 4
 MAX_TASKS = 64
 REMEMBERED_VECTORS = 256               # states whose vectors are remembered (reduced search)
 TASK_STEPS_KEPT = 1 << 13              # one task's Python steps kept (``_task_step``)
+MAX_FRAMES = 512                       # a deeper call raises (``instructions.enter_routine``)
+ENTERED = (NORMAL, -1, 0, -1)          # a called procedure's frame: mode ... result slot
 
 
 def packed_table(system) -> Optional["PackedStateTable"]:
@@ -432,6 +434,51 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
             stacks.append(below + (top,))
             position = start + count
         return _new_tuple(State, (stacks[0], pvector(data), io) + rest + (tuple(stacks[1:]),))
+
+    # A call or a procedure's end changes a task's frames below its top, which the context
+    # holds: the machine (``_packed.c``'s ``frame_step``) asks here for the context entered
+    # and makes the frame vector itself.  Running, the interrupts and the other tasks are
+    # as they were, so the context's flags are too.
+    def called_context(self, context_id: int, task: int, pc: int, callee: int,
+                       caller_locals: bytes) -> Optional[int]:
+        """The context where ``task``, at the call in ``pc`` of its top frame (whose locals
+        have the value ids ``caller_locals``), has entered routine ``callee``: the caller's
+        frame below the callee's (``enter_routine``); None where Python calls (the stack
+        is full: ERR_STACK_OVERFLOW)."""
+        shapes, io, rest = self._context_values[context_id]
+        below, routine, handling, _ = shapes[task]
+        if len(below) + 1 >= MAX_FRAMES:
+            return None
+        caller = _new_tuple(Frame, (routine, pc, self.values(caller_locals)) + handling)
+        entered = (below + (caller,), callee, ENTERED,
+                   len(self.program.routines[callee].initial_locals))
+        return self._task_context(shapes[:task] + (entered,) + shapes[task + 1:], io, rest,
+                                  context_id)
+
+    def left_context(self, context_id: int, task: int) -> Optional[tuple]:
+        """(the context, the pc and the locals' value ids of the caller going on) where
+        ``task``'s top frame, a procedure's, has ended (``leave_routine``); None where
+        Python steps it: the task's last frame, a trap's or a function's, a caller counting
+        RETRYs (``Machine.goto`` may reset them)."""
+        shapes, io, rest = self._context_values[context_id]
+        below, routine, handling, _ = shapes[task]
+        if not below or handling[3] >= 0 or self.program.routines[routine].kind == "TRAP":
+            return None
+        caller = below[-1]
+        if caller[5]:
+            return None
+        returned = (below[:-1], caller[0], caller[3:], len(caller[2]))
+        entered = self._task_context(shapes[:task] + (returned,) + shapes[task + 1:], io, rest,
+                                     context_id)
+        after = self.program.routines[caller[0]].code[caller[1]].next
+        return entered, after, self.value_ids(caller[2])
+
+    def _task_context(self, shapes: tuple, io, rest, like: int) -> int:
+        """The id of a context of several tasks whose flags are those of context ``like``."""
+        context = (shapes, io, rest)
+        known = self._contexts.get(context)
+        return known if known is not None else \
+            self._new_task_context(context, self._context_flags[like])
 
     def python_task_successors(self, state_id: int, task: int) -> Optional[list]:
         """The transitions of ``task`` alone at a state of several tasks, for the machine
