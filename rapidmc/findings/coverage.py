@@ -27,6 +27,7 @@ from typing import Hashable, Optional, Sequence
 from .. import ast
 from ..ast import Span
 from .dead_code import lines_after_jumps, lines_behind_absent_options
+from .unreached_causes import group_by_cause
 from ..diagnostics import NEVER_REACHED, Diagnostic
 from ..model.reduction.merging import executed_spans
 from ..semantics.instructions import Call, EndRoutine, EndUndo, LateCall
@@ -125,20 +126,19 @@ def coverage_warnings(program: Program, executed: set[tuple[str, int]],
     ``inputs`` says which inputs a warning holds for (``tried_inputs.qualifier``); a
     routine outside ``called`` (those a chain of calls reaches) is unreached under any
     input whatever was tried."""
-    found = unreached(program, executed)
+    dead = _after_jumps(program)
+    found = unreached(program, executed, dead)
     service = {routine.span for routine in service_routines(program)}
     idle = [u for u in found if u.whole_routine and u.span in service]
     uncalled = [u for u in found if u.whole_routine and u not in idle
                 and called is not None and u.routine not in called]
     if len(uncalled) < 2:
         uncalled = []
-    dead = _after_jumps(program)
     only_dead_callers = _called_from_dead_code(program, dead, called)
-    warnings = [u.diagnostic(ANY_INPUT if called is not None and u.routine not in called
-                             or _within(u, dead)
-                             or u.whole_routine and u.routine in only_dead_callers
-                             else inputs)
-                for u in found if u not in idle and u not in uncalled]
+    left = [u for u in found if u not in idle and u not in uncalled]
+    warnings = group_by_cause(program, left, [
+        ANY_INPUT if called is not None and u.routine not in called or _within(u, dead)
+        or u.whole_routine and u.routine in only_dead_callers else inputs for u in left])
     if uncalled:
         warnings.append(_uncalled_routines(uncalled))
     if len(idle) > 1:
@@ -257,8 +257,11 @@ def _calls_by_name(program: Program) -> bool:
                for node, _ in ast.walk(routine.ast))
 
 
-def unreached(program: Program, executed: set[tuple[str, int]]) -> list[Unreached]:
-    """The program's statements on lines never executed, in source order, one per stretch."""
+def unreached(program: Program, executed: set[tuple[str, int]],
+              dead: Optional[dict] = None) -> list[Unreached]:
+    """The program's statements on lines never executed, in source order, one per stretch;
+    given ``dead`` (``_after_jumps``), a stretch also ends where the lines after a jump
+    begin or end (the code after an endless loop is not the loop's last unreached arm)."""
     found: list[Unreached] = []
     for routine in _watched_routines(program):
         lines = _statement_lines(routine)
@@ -266,19 +269,22 @@ def unreached(program: Program, executed: set[tuple[str, int]]) -> list[Unreache
         if lines and len(missed) == len(lines):
             found.append(Unreached(routine.span, routine.name, True))
         else:
-            found.extend(_stretches(routine.name, lines, executed))
+            found.extend(_stretches(routine.name, lines, executed, dead or {}))
     return sorted(found, key=lambda u: (u.span.file, u.span.line, u.span.column))
 
 
 def _stretches(routine: str, lines: dict[tuple[str, int], Span],
-               executed: set[tuple[str, int]]) -> list[Unreached]:
-    """The unreached statement lines of a routine, runs without a reached line between them."""
+               executed: set[tuple[str, int]], dead: dict) -> list[Unreached]:
+    """The unreached statement lines of a routine, runs without a reached line between them
+    and all after a jump or none (``dead``)."""
     stretches: list[Unreached] = []
     first: Optional[Span] = None
     last_line = 0
     for key in sorted(lines):
         span = lines[key]
-        if key in executed or (first is not None and span.file != first.file):
+        if key in executed or (first is not None and (
+                span.file != first.file or
+                dead.get(key, False) != dead.get((first.file, first.line), False))):
             if first is not None:
                 stretches.append(Unreached(first, routine, False, last_line))
             first = None
