@@ -16,7 +16,8 @@ The cause of a stretch is read from where its first statement sits:
 * first in an arm of an IF, TEST, WHILE, FOR or compact IF (the compound statement ran,
   the arm did not): that statement, whose line the warning names;
 * first in an ERROR handler: "no error enters the handler", one cause for all of a
-  program's handlers (as ``coverage`` gives all routines no call reaches one warning);
+  program's handlers (as ``coverage`` gives all routines no call reaches one warning),
+  and likewise first in an UNDO handler (``coverage.UNDO_NOT_FOLLOWED``);
 * after a statement that ran but never went on: that statement.
 
 A routine that never runs, every call of which (at least one) lies in unreached code of
@@ -36,16 +37,18 @@ from ..semantics.library.program_control import CALLS_BY_NAME
 from .dead_code import jumps_before
 
 HANDLERS = ("handler",)       # the cause shared by every ERROR handler no error enters
+UNDO = ("undo",)              # ... and by every UNDO handler coverage does not follow
 
 
 @dataclass(frozen=True)
 class Seat:
     """Where a statement sits: the compound statement whose arm it opens (None: a
-    routine's body, UNDO or backward list), whether that list is an ERROR handler, and
-    the statement before it in its list (None: it comes first)."""
+    routine's body, UNDO, ERROR or backward list), which list of the routine holds it
+    ("body", "error", "undo"), and the statement before it in its list (None: it comes
+    first)."""
 
     owner: object
-    handler: bool
+    part: str
     previous: object
 
 
@@ -124,8 +127,10 @@ def _cause(span: Span, seats: dict, jumps: dict) -> Optional[Cause]:
     if seat.previous is None and seat.owner is not None:
         return Cause(("arm", _where(seat.owner)), f"the code the {_compound_text(seat.owner)} at "
                                                   f"line {seat.owner.span.line} never enters")
-    if seat.previous is None and seat.handler:
+    if seat.previous is None and seat.part == "error":
         return Cause(HANDLERS, "ERROR handlers no error enters")
+    if seat.previous is None and seat.part == "undo":
+        return Cause(UNDO, "UNDO handlers")
     if seat.previous is not None:
         return Cause(("after", _where(seat.previous)),
                      f"the code after line {seat.previous.span.line}, which never goes on")
@@ -155,20 +160,20 @@ def _seats(routines) -> dict:
     seats: dict = {}
     for routine in routines:
         tree = routine.ast
-        lists = [(tree.body, None, False), (tree.backward, None, False),
-                 (tree.undo, None, False),
-                 (tree.error.body if tree.error is not None else None, None, True)]
+        lists = [(tree.body, None, "body"), (tree.backward, None, "body"),
+                 (tree.undo, None, "undo"),
+                 (tree.error.body if tree.error is not None else None, None, "error")]
         while lists:
-            statements, owner, handler = lists.pop()
+            statements, owner, part = lists.pop()
             if not statements:
                 continue
             previous = None
             for statement in statements:
-                _seat(seats, statement.span, Seat(owner, handler, previous))
+                _seat(seats, statement.span, Seat(owner, part, previous))
                 previous = statement
-                lists.extend(_arms(statement))
+                lists.extend((inner, compound, part) for inner, compound in _arms(statement))
                 for arm in getattr(statement, "branches", ())[1:] + getattr(statement, "cases", ()):
-                    _seat(seats, arm.span, Seat(statement, False, None))   # ELSEIF, CASE
+                    _seat(seats, arm.span, Seat(statement, part, None))   # ELSEIF, CASE
     return seats
 
 
@@ -178,18 +183,18 @@ def _seat(seats: dict, span: Optional[Span], seat: Seat) -> None:
 
 
 def _arms(statement) -> list:
-    """The statement lists ``statement`` opens, each as (list, owner, False)."""
+    """The statement lists ``statement`` opens, each as (list, ``statement``)."""
     if isinstance(statement, ast.If):
-        return [(branch.body, statement, False) for branch in statement.branches] + \
-            [(statement.else_body, statement, False)]
-    if isinstance(statement, ast.Test):
-        return [(case.body, statement, False) for case in statement.cases] + \
-            [(statement.default, statement, False)]
-    if isinstance(statement, (ast.While, ast.For)):
-        return [(statement.body, statement, False)]
-    if isinstance(statement, ast.CompactIf):
-        return [((statement.statement,), statement, False)]
-    return []
+        lists = [branch.body for branch in statement.branches] + [statement.else_body]
+    elif isinstance(statement, ast.Test):
+        lists = [case.body for case in statement.cases] + [statement.default]
+    elif isinstance(statement, (ast.While, ast.For)):
+        lists = [statement.body]
+    elif isinstance(statement, ast.CompactIf):
+        lists = [(statement.statement,)]
+    else:
+        lists = []
+    return [(inner, statement) for inner in lists]
 
 
 def _routines_share_callers_cause(routines, found: Sequence, causes: list) -> None:
