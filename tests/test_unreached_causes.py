@@ -181,3 +181,20 @@ def test_json_sarif_and_text_carry_every_place(tmp_path, monkeypatch, capsys):
         == [18, 23]
     main(["check", "prog.mod", "--quiet"])
     assert "note: 2 more places: prog.mod lines 18, 23" in capsys.readouterr().err
+
+
+def test_routines_worded_apart_from_the_code_that_calls_them_are_one_warning(tmp_path):
+    """Two functions called only after the endless loop: they share its cause, but a
+    function called only from dead code keeps the wording of the inputs tried
+    (``coverage._called_from_dead_code`` counts procedures only), so they are a warning
+    of their own that names the code calling them."""
+    text = TEST_ARMS.replace(
+        "    SocketClose client;\n    Report;\n",
+        "    SocketClose client;\n    Report;\n    state := Half(Twice(state));\n").replace(
+        "  PROC Clean()", "  FUNC num Twice(num x)\n    RETURN 2 * x;\n  ENDFUNC\n"
+                          "  FUNC num Half(num x)\n    RETURN x / 2;\n  ENDFUNC\n  PROC Clean()")
+    warnings = {w.span.line: w for w in unreached(check(tmp_path, text))}
+    assert warnings[36].message == (
+        "never reached with the socket messages tried (SocketReceive at line 12): routines "
+        "Twice, Half, called only in the code after the endless WHILE loop at line 11")
+    assert [(p.line, p.end_line) for p in warnings[36].places] == [(39, 41)]

@@ -97,10 +97,14 @@ def _grouped(items: list, inputs: str, cause: Cause) -> Diagnostic:
     spans = [u.diagnostic(inputs).span for u in ordered]
     listed = "; ".join(_lines_of(routine, [u for u in stretches if u.routine == routine])
                        for routine in dict.fromkeys(u.routine for u in stretches))
+    names = ", ".join(u.routine for u in whole)
+    if not stretches:       # (the code calling them is worded otherwise: another warning)
+        return Diagnostic(NEVER_REACHED, f"never reached {inputs}: routines {names}, called "
+                          f"only in {cause.text or 'unreached code'}", spans[0],
+                          severity="warning", places=tuple(spans[1:]))
     message = f"never reached {inputs}: {cause.text} ({listed})" if cause.text else \
         f"never reached {inputs}: {listed}"
     if whole:
-        names = ", ".join(u.routine for u in whole)
         message += f" and the routine{'s' if len(whole) > 1 else ''} only that code " \
                    f"calls ({names})"
     return Diagnostic(NEVER_REACHED, message, spans[0], severity="warning",
