@@ -147,5 +147,5 @@ def test_unreached_code_beside_a_counterexample_is_one_line_each_then_a_count(
         lines = err.getvalue().splitlines()
         assert sum(line.endswith("[RMC701]") for line in lines) == shown
         assert ("                total := 2;" in lines) == bool(extra)
-        assert (lines[-1] == "rapidmc: and 2 more unreached stretches [RMC701] (--full-trace, "
+        assert (lines[-1] == "rapidmc: and 2 more unreached-code warnings [RMC701] (--full-trace, "
                 "--format json or --html shows each)") != bool(extra)

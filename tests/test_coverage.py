@@ -3,6 +3,8 @@
 Data-driven on tests/check/: a case's ``unreached`` file lists the lines
 (``13``) and stretches of lines (``13-14``: one warning) expected to be
 reported, in prog.mod or, written ``reader.mod:6``, in another module of the case (a routine that never runs is reported once, at its declaration);
+the places of one warning given once per cause (``findings/unreached_causes.py``) are
+joined by `` + `` (``11 + 14-17``: the UNDO line and the routine only it calls);
 every other case must report none.  The case studies pin
 the one dead statement of sorter B, and the three output formats are
 checked to carry the same warnings.
@@ -34,9 +36,11 @@ def test_unreached_lines_of_every_check_case(name, monkeypatch):
     warnings = [w for w in document["warnings"]
                 if w["code"] not in ("RMC515", "RMC702", "RMC735", "RMC820")]
     assert all(w["code"] == "RMC701" for w in warnings)
-    expected = [_stretch(line) for line in _data_lines(case.folder / "unreached")]
-    assert [(w["location"]["file"], w["location"]["line"], w["location"]["end_line"])
+    expected = [tuple(_stretch(place) for place in line.split(" + "))
+                for line in _data_lines(case.folder / "unreached")]
+    assert [tuple((one["file"], one["line"], one["end_line"]) for one in w["lines"])
             for w in warnings] == expected
+    assert all(w["lines"][0]["line"] == w["location"]["line"] for w in warnings)
     assert code == case.exit_code            # warnings never change the exit code
 
 

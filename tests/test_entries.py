@@ -39,7 +39,7 @@ def test_routines_nobody_calls_are_one_warning_naming_them_all():
     assert code == 0
     assert err.count("[RMC701]") == 2
     assert "warning: 2 routines never run: CalibrateCamera, TestGripper [RMC701]" in err
-    assert "note: 1 more place: service_routines.mod line 23" in err
+    assert "note: 1 more place: service_routines.mod lines 23-25" in err
     # a routine with parameters is no service routine: its own warning, as before
     assert "routine Unused never runs" in err
 

@@ -382,9 +382,10 @@ def test_a_robot_starting_at_a_named_target_reaches_its_branch(tmp_path, monkeyp
     warnings = [(w.span.line, w.message) for w in report.warnings if w.code.code == "RMC701"]
     left = [(11, "never reached with the robot starting at the check's home position "
                  "(CRobT at line 7)")]
+    # without the targets, both arms of one IF: one warning (one cause) naming each
     expected = left if targets_tried else [
         (9, "never reached with the robot starting at the check's home position "
-            "(CRobT at line 7)")] + left
+            "(CRobT at line 7): the code the IF at line 8 never enters (lines 9, 11 of main)")]
     assert warnings == expected
     assert named_targets(api.load_program([str(path)])) == (
         ((100.0, 0.0, 800.0), (1.0, 0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 0.0), (UNCONNECTED_AXIS,) * 6),)

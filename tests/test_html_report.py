@@ -423,8 +423,9 @@ def test_with_several_tasks_the_table_says_fairness_was_assumed(browser, tmp_pat
 
 
 def test_a_path_to_an_error_says_the_error_and_unreached_stretches_are_shaded(browser, tmp_path):
-    """tests/counterexamples/many_unreached: a division by zero at line 73 after a branch
-    (lines 9-71) and three routines that never run."""
+    """tests/counterexamples/many_unreached: a division by zero at line 74 after a branch
+    (lines 10-72) and three routines that never run, only the branch calling them: one
+    warning (one cause), every place of which is shaded."""
     require_browser()
     path = tmp_path / "error.html"
     done = rapidmc("check", "tests/counterexamples/many_unreached/prog.mod", "--quiet",
@@ -438,7 +439,8 @@ def test_a_path_to_an_error_says_the_error_and_unreached_stretches_are_shaded(br
     shaded = [int(n) for n in page.driver.execute_script(
         "return [...document.querySelectorAll('.source .line.unreached')]"
         ".map((line) => line.dataset.line)")]
-    assert set(range(9, 72)) <= set(shaded) and 73 not in shaded and 8 not in shaded
+    assert set(range(10, 73)) <= set(shaded) and 74 not in shaded and 9 not in shaded
+    assert set(range(77, 119)) | set(range(163, 205)) <= set(shaded)
 
 
 def test_a_bad_prefix_says_that_any_run_goes_on_and_shows_no_loop(browser, tmp_path):

@@ -356,7 +356,7 @@ def warnings_text(warnings, brief_coverage: bool = False, every: bool = False) -
                 lines.append(render(warning, names.shown, source=False))
                 shown += 1
     if coverage > COVERAGE_SHOWN:
-        lines.append(f"rapidmc: and {coverage - COVERAGE_SHOWN} more unreached stretches "
+        lines.append(f"rapidmc: and {coverage - COVERAGE_SHOWN} more unreached-code warnings "
                      "[RMC701] (--full-trace, --format json or --html shows each)")
     if left_out:
         counts = ", ".join(f"{count} {code}" for code, count in sorted(left_out.items()))

@@ -244,7 +244,7 @@ def render(diagnostic: Diagnostic, file_name: Optional[Callable[[str], str]] = N
             out.append("    " + " " * column + "^" + "~" * (width - 1))
     out.extend(f"  note: {note}" for note in diagnostic.notes)
     if diagnostic.places:
-        out.append(f"  note: {places_text(diagnostic.places)}")
+        out.append(f"  note: {places_text(diagnostic.places, file_name)}")
     return "\n".join(out)
 
 
@@ -271,15 +271,16 @@ def source_window(source: str, column: int) -> tuple[str, int]:
     return lead + source[first:first + SOURCE_SHOWN] + tail, column - first + len(lead)
 
 
-def places_text(places) -> str:
-    """The other places of a finding given once per cause, by file:
-    ``3 more places: m.mod lines 14, 22; n.mod line 5``."""
-    by_file: dict[str, list[int]] = {}
+def places_text(places, file_name: Optional[Callable[[str], str]] = None) -> str:
+    """The other places of a finding given once per cause, by file, a place of several
+    lines as its first and last: ``3 more places: m.mod lines 14-16, 22; n.mod line 5``."""
+    by_file: dict[str, list[str]] = {}
     for span in places:
-        lines = by_file.setdefault(span.file, [])
-        if span.line not in lines:
-            lines.append(span.line)
-    parts = [f"{file} line{'s' if len(lines) > 1 else ''} {', '.join(map(str, lines))}"
+        lines = by_file.setdefault(file_name(span.file) if file_name else span.file, [])
+        shown = f"{span.line}-{span.end_line}" if span.end_line > span.line else f"{span.line}"
+        if shown not in lines:
+            lines.append(shown)
+    parts = [f"{file} line{'s' if len(lines) > 1 or '-' in lines[0] else ''} {', '.join(lines)}"
              for file, lines in by_file.items()]
     count = len(places)
     return f"{count} more place{'s' if count != 1 else ''}: {'; '.join(parts)}"

@@ -27,6 +27,7 @@ from typing import Hashable, Optional, Sequence
 from .. import ast
 from ..ast import Span
 from .dead_code import lines_after_jumps, lines_behind_absent_options
+from .unreached_causes import group_by_cause
 from ..diagnostics import NEVER_REACHED, Diagnostic
 from ..model.reduction.merging import executed_spans
 from ..semantics.instructions import Call, EndRoutine, EndUndo, LateCall
@@ -35,6 +36,10 @@ from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
 
 NOT_STATEMENTS = (EndRoutine, EndUndo)      # ENDPROC / end of UNDO: not a line to run
 ANY_INPUT = "under any input"
+# an UNDO handler runs when its routine is left by EXIT, a reset or a moved program pointer
+# (and inside the step of the EXIT that ends the program, where no state shows its lines)
+UNDO_NOT_FOLLOWED = "with UNDO handlers not followed (one runs when EXIT, a reset or a " \
+                    "moved program pointer leaves its routine)"
 
 
 @dataclass(frozen=True)
@@ -125,20 +130,23 @@ def coverage_warnings(program: Program, executed: set[tuple[str, int]],
     ``inputs`` says which inputs a warning holds for (``tried_inputs.qualifier``); a
     routine outside ``called`` (those a chain of calls reaches) is unreached under any
     input whatever was tried."""
-    found = unreached(program, executed)
+    dead = _after_jumps(program)
+    undo = _undo_lines(program)
+    found = unreached(program, executed, {key: (value, key in undo) for key, value in dead.items()})
     service = {routine.span for routine in service_routines(program)}
     idle = [u for u in found if u.whole_routine and u.span in service]
     uncalled = [u for u in found if u.whole_routine and u not in idle
                 and called is not None and u.routine not in called]
     if len(uncalled) < 2:
         uncalled = []
-    dead = _after_jumps(program)
     only_dead_callers = _called_from_dead_code(program, dead, called)
-    warnings = [u.diagnostic(ANY_INPUT if called is not None and u.routine not in called
-                             or _within(u, dead)
-                             or u.whole_routine and u.routine in only_dead_callers
-                             else inputs)
-                for u in found if u not in idle and u not in uncalled]
+    only_undo_callers = _called_only_where(program, lambda caller, key: key in undo)
+    left = [u for u in found if u not in idle and u not in uncalled]
+    warnings = group_by_cause(program, left, [
+        UNDO_NOT_FOLLOWED if _within(u, dict.fromkeys(undo, True))
+        or u.whole_routine and u.routine in only_undo_callers
+        else ANY_INPUT if called is not None and u.routine not in called or _within(u, dead)
+        or u.whole_routine and u.routine in only_dead_callers else inputs for u in left])
     if uncalled:
         warnings.append(_uncalled_routines(uncalled))
     if len(idle) > 1:
@@ -162,6 +170,14 @@ def _after_jumps(program: Program) -> dict:
     return lines
 
 
+def _undo_lines(program: Program) -> frozenset:
+    """(file, line) of the statements of the watched routines' UNDO handlers."""
+    return frozenset((node.span.file, node.span.line) for routine in _watched_routines(program)
+                     if routine.ast is not None and routine.ast.undo
+                     for statement in routine.ast.undo for node, _ in ast.walk(statement)
+                     if getattr(node, "span", None) is not None)
+
+
 def _called_from_dead_code(program: Program, dead: dict, called: Optional[frozenset]
                            ) -> frozenset:
     """The names of the procedures every call of which is dead under any input: after a
@@ -170,7 +186,19 @@ def _called_from_dead_code(program: Program, dead: dict, called: Optional[frozen
     ``WHILE TRUE``).  Such a routine never runs whatever the inputs.  None when the
     program calls procedures by name (any may be the one) or ``called`` is unknown; a
     TRAP or a function (called from expressions, by CONNECT) is never counted."""
-    if called is None or _calls_by_name(program):
+    if called is None:
+        return frozenset()
+    return _called_only_where(program, lambda caller, key: caller not in called
+                              or dead.get(key, False), called)
+
+
+def _called_only_where(program: Program, where, eligible: Optional[frozenset] = None
+                       ) -> frozenset:
+    """The names of the procedures (of ``eligible``, when given) that some call reaches
+    and every call of which is ``where(calling routine's name, (file, line))`` or in a
+    procedure so found; none when a procedure may be called by a name computed at run
+    time, or a name is twice (LOCAL routines of several modules)."""
+    if _calls_by_name(program):
         return frozenset()
     sites: dict = {}                 # routine key -> [(calling routine's name, file, line)]
     for routine in _watched_routines(program):
@@ -185,15 +213,16 @@ def _called_from_dead_code(program: Program, dead: dict, called: Optional[frozen
                   if routine.kind == "PROC"}
     if len(procedures) != len({r.name for r in _watched_routines(program)
                                if r.kind == "PROC"}):
-        return frozenset()           # (a name twice: LOCAL routines of several modules)
+        return frozenset()
     found: set = set()
     changed = True
     while changed:
         changed = False
         for key, name in procedures.items():
-            if name in found or name not in called or not sites.get(key):
+            if name in found or (eligible is not None and name not in eligible) \
+                    or not sites.get(key):
                 continue
-            if all(caller not in called or caller in found or dead.get((file, line), False)
+            if all(caller in found or where(caller, (file, line))
                    for caller, file, line in sites[key]):
                 found.add(name)
                 changed = True
@@ -257,8 +286,12 @@ def _calls_by_name(program: Program) -> bool:
                for node, _ in ast.walk(routine.ast))
 
 
-def unreached(program: Program, executed: set[tuple[str, int]]) -> list[Unreached]:
-    """The program's statements on lines never executed, in source order, one per stretch."""
+def unreached(program: Program, executed: set[tuple[str, int]],
+              regions: Optional[dict] = None) -> list[Unreached]:
+    """The program's statements on lines never executed, in source order, one per stretch;
+    given ``regions`` ((file, line) -> a value), a stretch also ends where the value
+    changes (``coverage_warnings``: the lines after a jump, an UNDO handler: the code after
+    an endless loop is not the loop's last unreached arm)."""
     found: list[Unreached] = []
     for routine in _watched_routines(program):
         lines = _statement_lines(routine)
@@ -266,19 +299,22 @@ def unreached(program: Program, executed: set[tuple[str, int]]) -> list[Unreache
         if lines and len(missed) == len(lines):
             found.append(Unreached(routine.span, routine.name, True))
         else:
-            found.extend(_stretches(routine.name, lines, executed))
+            found.extend(_stretches(routine.name, lines, executed, regions or {}))
     return sorted(found, key=lambda u: (u.span.file, u.span.line, u.span.column))
 
 
 def _stretches(routine: str, lines: dict[tuple[str, int], Span],
-               executed: set[tuple[str, int]]) -> list[Unreached]:
-    """The unreached statement lines of a routine, runs without a reached line between them."""
+               executed: set[tuple[str, int]], regions: dict) -> list[Unreached]:
+    """The unreached statement lines of a routine, runs without a reached line between them
+    and all of one region (``unreached``)."""
     stretches: list[Unreached] = []
     first: Optional[Span] = None
     last_line = 0
     for key in sorted(lines):
         span = lines[key]
-        if key in executed or (first is not None and span.file != first.file):
+        if key in executed or (first is not None and (
+                span.file != first.file or
+                regions.get(key) != regions.get((first.file, first.line)))):
             if first is not None:
                 stretches.append(Unreached(first, routine, False, last_line))
             first = None

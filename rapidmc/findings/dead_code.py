@@ -36,18 +36,25 @@ JUMPS = (ast.Return, ast.Exit, ast.Goto, ast.Retry, ast.TryNext)
 def lines_after_jumps(routine_ast) -> frozenset:
     """(file, line) of every statement of the routine (nested ones included) that follows
     a jump in its statement list with no label in between."""
-    dead: set = set()
+    return frozenset(jumps_before(routine_ast))
+
+
+def jumps_before(routine_ast) -> dict:
+    """(file, line) -> the jump statement it follows, for every line of
+    ``lines_after_jumps`` (the cause a coverage warning names: ``unreached_causes``)."""
+    dead: dict = {}
     for statements, comes_back in _statement_lists(routine_ast):
-        ended = False
+        ended = None
         for statement in statements:
             if any(isinstance(node, ast.Label) for node, _ in ast.walk(statement)):
-                ended = False             # a GOTO may lead here (or inside: kept, to be safe)
-            elif ended:
-                dead.update((node.span.file, node.span.line) for node, _ in ast.walk(statement)
-                            if getattr(node, "span", None) is not None)
+                ended = None              # a GOTO may lead here (or inside: kept, to be safe)
+            elif ended is not None:
+                for node, _ in ast.walk(statement):
+                    if getattr(node, "span", None) is not None:
+                        dead.setdefault((node.span.file, node.span.line), ended)
             elif leaves_list(statement, comes_back):
-                ended = True
-    return frozenset(dead)
+                ended = statement
+    return dead
 
 
 def errors_come_back(routine_ast) -> bool:

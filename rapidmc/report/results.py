@@ -256,16 +256,21 @@ def property_json(checked: PropertyResult, describer: TraceDescriber) -> dict:
 
 
 def warning_json(warning: Diagnostic) -> dict:
-    """A warning; its ``end_line`` is the last line of a stretch of unreached lines."""
+    """A warning; its ``end_line`` is the last line of a stretch of unreached lines.  A
+    finding given once per cause lists its other places; ``lines`` gives every place
+    (its own first) as file and first and last line, so that a reader counting unreached
+    lines need not join the two."""
     span = warning.span
     location = None
     if span:
         location = {"file": span.file, "line": span.line, "column": span.column,
                     "end_line": max(span.end_line, span.line)}
+    places = [{"file": place.file, "line": place.line, "column": place.column,
+               "end_line": max(place.end_line, place.line)} for place in warning.places]
     return {"code": warning.code.code, "message": warning.message, "location": location,
-            "places": [{"file": place.file, "line": place.line, "column": place.column,
-                        "end_line": max(place.end_line, place.line)}
-                       for place in warning.places]}
+            "places": places,
+            "lines": [{"file": one["file"], "line": one["line"], "end_line": one["end_line"]}
+                      for one in ([location] if location else []) + places]}
 
 
 def error_json(diagnostic: Diagnostic) -> dict:

@@ -98,7 +98,8 @@ def _diagnostic_results(diagnostics: Sequence[Diagnostic], rules: list, results:
         if diagnostic.places:           # a finding given once per cause: its other places
             result["relatedLocations"] = [
                 dict(id=number, message={"text": "the same finding"},
-                     **_location(span.file, span.line, span.column))
+                     **_location(span.file, span.line, span.column,
+                                 span.end_line if span.end_line > span.line else 0))
                 for number, span in enumerate(diagnostic.places, start=1)]
         if diagnostic.omitted:          # the last result of a capped report counts the rest
             result["properties"] = {"errorsNotShown": diagnostic.omitted}

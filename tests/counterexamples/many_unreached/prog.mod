@@ -1,6 +1,7 @@
 MODULE ManyUnreached
     ! A service menu behind a mode that is never 2: 3 routines of 40 statements each
-    ! never run, and a long branch of main never runs; each is one warning.
+    ! never run, and a long branch of main that calls them never runs: one warning (one
+    ! cause, the IF) with the four places.
     VAR num mode := 1;
     VAR num total := 0;
 
