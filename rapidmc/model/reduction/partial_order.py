@@ -196,11 +196,12 @@ class PartialOrder:
         stack = after[0] if task == 0 else after[10][task - 1]
         if not stack:
             return True              # the task ended (its EndRoutine was local: no barrier)
-        # the frame that went on (the caller's after a call or a return) keeps its mode:
-        # an error would have sent it into its handler
-        depth = len(stack) - len(before)
-        if depth not in (-1, 0, 1) or \
-                stack[-1 - max(depth, 0)][3] != before[min(depth, 0) - 1][3]:
+        # the frames that went on keep their modes and the ones the step (run on
+        # through calls and returns) pushed are normal: an error would have sent a frame
+        # into its handler
+        kept = min(len(stack), len(before))
+        if any(stack[i][3] != before[i][3] for i in range(kept)) or \
+                any(frame[3] != 0 for frame in stack[kept:]):
             return False
         return self.never_waits(stack[-1][0], stack[-1][1]) or \
             self._goes_on(task, after, config)
