@@ -9,6 +9,11 @@ Models:
   K iterations (K = ``--iterations``); property ``G "count1 <= K"``.  The
   orders of the tasks' steps are K^N-fold different paths to the same few
   states: what partial-order reduction is for.
+* ``statements N``: the same count, each iteration also writing an element of
+  its own array with a function's result, a component of its own record,
+  the count through a procedure's INOUT parameter, and a TPWrite: the
+  instructions whose independence is read from their syntax
+  (``reduction/syntax_footprint.py``); N is the largest of ``--tasks``.
 * ``handover``: a robot task and a feeder task handing three parts over
   through a shared PERS flag (bench/programs/handover_*.mod), property
   ``F "parts = 3"``: most steps touch shared data, so little can be left out.
@@ -48,6 +53,28 @@ INDEPENDENT = """MODULE Independent{n}
   ENDPROC
 ENDMODULE
 """
+
+STATEMENTS = """MODULE Statements{n}
+  VAR num count{n} := 0;
+  VAR num buffer{n}{{{k}}};
+  VAR pos spot{n};
+  PROC main()
+    FOR i FROM 1 TO {k} DO
+      buffer{n}{{i}} := Twice(i);
+      spot{n}.x := spot{n}.x + 1;
+      Bump count{n};
+      TPWrite "part ", \\Num:=i;
+    ENDFOR
+  ENDPROC
+  PROC Bump(INOUT num value)
+    value := value + 1;
+  ENDPROC
+  FUNC num Twice(num value)
+    RETURN 2 * value;
+  ENDFUNC
+ENDMODULE
+"""
+
 
 def write_modules(folder: Path, texts: list[str]) -> list[str]:
     paths = []
@@ -149,6 +176,11 @@ def main() -> None:
             print(row, flush=True)
             if spin:
                 print(spin_row(tasks, args.iterations), flush=True)
+        largest = max(reduced_states)
+        paths = write_modules(folder, [STATEMENTS.format(n=n, k=args.iterations)
+                                       for n in range(1, largest + 1)])
+        print(rapidmc_row(f"statements {largest}", paths, formula, args.max_states)[0],
+              flush=True)
         paths = [str(PROGRAMS / "handover_robot.mod"), str(PROGRAMS / "handover_feeder.mod")]
         print(rapidmc_row("handover", paths, 'done: F "parts = 3"', args.max_states)[0])
     if 5 in reduced_states and args.iterations == 12:

@@ -22,7 +22,7 @@ from __future__ import annotations
 import contextlib
 import io
 import json
-from collections import Counter, deque
+from collections import Counter
 from pathlib import Path
 
 import pytest
@@ -31,6 +31,7 @@ from rapidmc.cli import build_parser, main
 from rapidmc.commands.check import prepare_model
 
 from dead_data_programs import dead_data_program, dead_data_properties
+from reached_states import breadth_first
 from test_check_cases import verdict_cases
 from test_reduction import DEAD_DATA_PATHS
 
@@ -46,21 +47,14 @@ def commuting_failures(argv: list[str], limit: int = REACHED_STATES) -> tuple[in
     project = system.project
     if project is None:
         return 0, []
-    plain = system.unreduced()
-    seen: set = set()
-    pending = deque(plain.initial_states())
     failures = []
-    while pending and len(seen) < limit:
-        state = pending.popleft()
-        if state in seen:
-            continue
-        seen.add(state)
-        successors = plain.successors(state)
+    compared = 0
+    for state, successors in breadth_first(system.unreduced(), limit):
+        compared += 1
         projected = Counter((label, project(after)) for label, after in successors)
         if projected != Counter(system.successors(project(state))):
             failures.append(state)
-        pending.extend(after for _, after in successors)
-    return len(seen), failures
+    return compared, failures
 
 
 def check_report(argv: list[str]) -> dict:

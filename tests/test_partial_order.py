@@ -47,9 +47,10 @@ def states(document: dict) -> dict[str, int]:
 
 
 def write_tasks(folder: Path, seed: int, procedures: bool = False,
-                arrays: bool = False, local: bool = False) -> list[str]:
+                arrays: bool = False, local: bool = False, calls: bool = False) -> list[str]:
     argv = []
-    for number, text in enumerate(random_tasks(seed, procedures, arrays, local), start=1):
+    for number, text in enumerate(random_tasks(seed, procedures, arrays, local, calls),
+                                  start=1):
         path = folder / f"task{number}.mod"
         path.write_text(text)
         argv += [str(path)] if number == 1 else ["--add-task", str(path)]
@@ -98,6 +99,15 @@ def test_generated_tasks_mostly_on_their_own_data_keep_their_verdicts(tmp_path, 
     steps (a reduction without it loses states here), and steps run on through several
     local instructions (``local_runs``), stopping before one that fails."""
     argv = write_tasks(tmp_path, seed, local=True)
+    assert_reduced_search_agrees(argv, seed)
+
+
+@pytest.mark.parametrize("seed", range(120, 160))
+def test_generated_tasks_with_calls_and_updates_keep_their_verdicts(tmp_path, seed):
+    """Instructions judged from their syntax (``syntax_footprint``): element and component
+    writes, Incr, calls with arguments by value and by reference (a write through a
+    reference to shared data stays dependent), functions, TPWrite, WaitTime."""
+    argv = write_tasks(tmp_path, seed, calls=True)
     assert_reduced_search_agrees(argv, seed)
 
 

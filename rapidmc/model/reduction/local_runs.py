@@ -6,13 +6,16 @@ other process can see the states in between.  Here a transition of task ``t``
 goes on with ``t``'s next instruction while that instruction
 
 * is a merge point of ``reduction.merging`` (a condition, FOR entry or step,
-  GOTO or assignment, no special function, no loop head, so the program
-  counter only grows and a run is finite), invisible to every atom;
+  GOTO or assignment, no special function, no loop head), invisible to every
+  atom, or a call, RETURN or ENDPROC that is no loop head (a frame of the
+  task's own pushed or popped, as SPIN inlines): the call stack read as a
+  sequence of program counters only grows, so a run is finite;
 * is independent of every other task (``PartialOrder.footprint`` LOCAL: it
   reads only data no other task writes, writes only data no other task can
   name, reads no signal);
-* has one transition from there, which leaves the program running, ERRNO,
-  the task's frames' depth and mode as they were, and changes the state.
+* has one transition from there, which leaves the program running, ERRNO
+  and the modes of the task's frames as they were (``_went_on``), and changes
+  the state.
 
 The state in between is dropped.  It is the state where the ample set of
 ``partial_order`` would be that one instruction (C0-C2 hold: it is enabled,
@@ -33,7 +36,10 @@ from typing import Callable, Optional
 
 from ...semantics.staged_step import task_transitions
 from ...semantics.state import RUNNING, State
-from .merging import INVISIBLE, merge_points
+from ...semantics.instructions import Call, EndRoutine, Return
+from .merging import INVISIBLE, loop_heads, merge_points
+
+FRAME_STEPS = (Call, Return, EndRoutine)
 
 
 class LocalRuns:
@@ -48,6 +54,7 @@ class LocalRuns:
         self.project = project
         self.names = program.task_names
         self._mergeable: dict = {}           # (task, routine, pc) -> bool
+        self._heads: dict = {}               # routine -> its loop heads
 
     def mergeable(self, task: int, routine: int, pc: int) -> bool:
         """Whether the instruction at ``pc`` of ``routine`` may join the step of ``task``
@@ -56,9 +63,20 @@ class LocalRuns:
         found = self._mergeable.get(key)
         if found is None:
             kinds = self.points.get(routine)
-            found = self._mergeable[key] = kinds is not None and pc < len(kinds) and \
-                kinds[pc] == INVISIBLE and self.order.is_ample_candidate(task, routine, pc)
+            point = kinds is not None and pc < len(kinds) and kinds[pc] == INVISIBLE
+            found = self._mergeable[key] = (point or self._frame_step(routine, pc)) and \
+                self.order.is_ample_candidate(task, routine, pc)
         return found
+
+    def _frame_step(self, routine: int, pc: int) -> bool:
+        """Whether the instruction is a call, RETURN or ENDPROC that is no loop head: it
+        only pushes or pops a frame of the task's own (as SPIN inlines), and a run still
+        never goes round a loop."""
+        heads = self._heads.get(routine)
+        if heads is None:
+            heads = self._heads[routine] = loop_heads(self.program.routines[routine].code)
+        instruction = self.program.routines[routine].code[pc]
+        return type(instruction) in FRAME_STEPS and pc not in heads
 
     def extend(self, state: State, successors: list, config) -> list:
         """``successors`` (labelled, as ``RapidSystem.successors`` gives them) with each
@@ -107,7 +125,7 @@ class LocalRuns:
             if then[7] != RUNNING or then[5] != after[5] or then[6] != after[6]:
                 break                    # (a failed step's state keeps no other task)
             moved = then[0] if task == 0 else then[10][task - 1]
-            if len(moved) != len(stack) or moved[-1][3] != frame[3] or then == after:
+            if then == after or not _went_on(stack, moved):
                 break
             steps.append((label, step_span, step_output))
             after = then
@@ -122,3 +140,15 @@ class LocalRuns:
         stacks = (state[0],) + state[10]
         running = [task for task, stack in enumerate(stacks) if stack]
         return running[0] if len(running) == 1 else None
+
+
+def _went_on(stack: tuple, moved: tuple) -> bool:
+    """Whether one step took the task's frames from ``stack`` to ``moved`` without an
+    error: the frames it kept keep their modes (an error sends a frame into its handler
+    or unwinds it), and a frame it pushed is a normal one."""
+    depth = len(moved) - len(stack)
+    if depth not in (-1, 0, 1):
+        return False
+    kept = min(len(stack), len(moved))
+    return all(moved[i][3] == stack[i][3] for i in range(kept)) and \
+        (depth < 1 or moved[-1][3] == 0)

@@ -89,7 +89,7 @@ def merge_points(program: Program, atom_keys: set[str]) -> dict:
             continue
         nodes = nodes_by_span(routine.ast)
         lookup = routine.scope.lookup if getattr(routine, "scope", None) is not None else None
-        heads = _loop_heads(routine.code)
+        heads = loop_heads(routine.code)
         kinds = bytearray([NEVER]) * len(routine.code)
         for pc, instruction in enumerate(routine.code):
             node = nodes.get(instruction.span)
@@ -108,7 +108,8 @@ def merge_points(program: Program, atom_keys: set[str]) -> dict:
     return points
 
 
-def _loop_heads(code: list) -> set[int]:
+def loop_heads(code: list) -> set[int]:
+    """The pcs a jump goes back to (or stays at)."""
     heads = set()
     for pc, instruction in enumerate(code):
         for target in _targets(instruction):

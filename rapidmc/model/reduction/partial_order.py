@@ -59,13 +59,13 @@ the verdicts against the unreduced search.
 from __future__ import annotations
 
 import re
-from typing import NamedTuple, Optional
+from typing import Optional
 
 from ... import ast
 from ...load.shared_data import data_uses
 from ...semantics.configured_signals import walk_routine
-from ...semantics.instructions import (Action, Branch, Call, EndRoutine, ForInit, ForNext,
-                                       Jump, Return)
+from ...semantics.instructions import (Action, Branch, Call, ControlAction, EndRoutine,
+                                       ForInit, ForNext, Jump, Return)
 from ...semantics.library.tasks import SyncWait
 from ...semantics.program import ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE, Program
 from ...semantics.scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA
@@ -75,34 +75,13 @@ from ...semantics.step import successors as semantic_successors
 from ..state_keys import StateKeys
 from .local_runs import LocalRuns
 from .relevance import DATA_BY_NAME
+from .syntax_footprint import (LOCAL, SHARED, VISIBLE, Footprint, ReferenceParameters,
+                               StatementFootprints, SyntaxReads)
 
 _STORE_READ = re.compile(r"\bstore\[(\d+)\]")
 TASK_CHOICE = "task"
 _OWN_TASK_BY_NAME = frozenset({"GETDATAVAL", "SETDATAVAL"})
-# syntax that reads nothing but the data it names
-_PLAIN_EXPRESSIONS = frozenset({ast.NumLiteral, ast.StringLiteral, ast.BoolLiteral,
-                                ast.Index, ast.Component, ast.Unary, ast.Binary,
-                                ast.Aggregate})
 
-
-class Footprint(NamedTuple):
-    """What one instruction of a task touches, decided from its code alone.
-
-    ``independent``: it reads only data no other task writes and writes only data
-    no other task's code names (its own VAR data, TASK PERS, routine data, its own
-    frames), reads no signal and waits for nothing: every step of another task
-    commutes with it and neither enables nor disables it, as SPIN treats a
-    statement on local variables.  ``visible``: it may change the value of an atom
-    of the check (it writes data an atom names).
-    """
-
-    independent: bool
-    visible: bool
-
-
-LOCAL = Footprint(True, False)
-VISIBLE = Footprint(True, True)
-SHARED = Footprint(False, True)
 
 
 class PartialOrder:
@@ -140,7 +119,11 @@ class PartialOrder:
         self.barriers = any(isinstance(instruction, SyncWait)
                             for routine in program.routines for instruction in routine.code)
         self._local: dict = {}          # (task, routine, pc) -> bool
-        self._loops: dict = {}          # routine index -> names of its FOR variables
+        # data written outside the loaded code (PERS a PC writes): each read a choice
+        outside = getattr(program, "outside_data", None) or {}
+        reads = SyntaxReads(self.stable, outside, ReferenceParameters(program))
+        self.syntax = StatementFootprints(reads, self.own, visible_names, self._visible_local,
+                                          [data.key for data in program.globals])
         self.keys = StateKeys()
         # the cycle proviso's numbering of states (``StatePlaces``), made when first asked:
         # ``places_made`` gives it (a system sets it: its packed table's, in the compiled
@@ -213,11 +196,12 @@ class PartialOrder:
         stack = after[0] if task == 0 else after[10][task - 1]
         if not stack:
             return True              # the task ended (its EndRoutine was local: no barrier)
-        # the frame that went on (the caller's after a call or a return) keeps its mode:
-        # an error would have sent it into its handler
-        depth = len(stack) - len(before)
-        if depth not in (-1, 0, 1) or \
-                stack[-1 - max(depth, 0)][3] != before[min(depth, 0) - 1][3]:
+        # the frames that went on keep their modes and the ones the step (run on
+        # through calls and returns) pushed are normal: an error would have sent a frame
+        # into its handler
+        kept = min(len(stack), len(before))
+        if any(stack[i][3] != before[i][3] for i in range(kept)) or \
+                any(frame[3] != 0 for frame in stack[kept:]):
             return False
         return self.never_waits(stack[-1][0], stack[-1][1]) or \
             self._goes_on(task, after, config)
@@ -261,16 +245,19 @@ class PartialOrder:
         if kind is Branch:
             if pc in (instruction.target_true, instruction.target_false):
                 return SHARED
-            if instruction.fusion is not None:
-                return LOCAL if self._reads_allowed(task, instruction.fusion) else SHARED
-            # a condition the fused step does not take (an indexed array ...): what it
-            # reads, from its syntax
-            return LOCAL if self._syntax_reads_allowed(task, routine,
-                                                       instruction.expression) else SHARED
+            if instruction.fusion is not None and self._reads_allowed(task, instruction.fusion):
+                return LOCAL
+            # a condition the fused step does not take (an indexed array ...) or whose
+            # compiled form reads through a reference: what it reads, from its syntax
+            return LOCAL if self.syntax.reads.allowed(task, routine,
+                                                      instruction.expression) else SHARED
         if kind is Call:
             # entering a procedure without arguments pushes a frame of the task's own
-            return LOCAL if not instruction.binders and instruction.routine.kind == "PROC" \
-                else SHARED
+            if not instruction.binders and instruction.routine.kind == "PROC":
+                return LOCAL
+            return self.syntax.call(task, routine, instruction)
+        if kind is Return and instruction.value_fn is not None:
+            return self.syntax.returned(task, routine, instruction)
         if kind is EndRoutine or kind is Return and instruction.value_fn is None:
             # leaving a procedure writes only the task's frames; the task's last one ends
             # the task, which a barrier waiting for it observes (``blocked_at_barrier``)
@@ -280,13 +267,16 @@ class PartialOrder:
             return SHARED if ends_task and self.barriers else LOCAL
         if kind is Action and instruction.fusion is not None:
             where, slot, value = instruction.fusion
-            if not self._reads_allowed(task, value):
-                return SHARED
-            if where == "store":
-                if slot not in self.own[task]:
-                    return SHARED
-                return VISIBLE if self.program.globals[slot].key in self.visible else LOCAL
-            return self._local_write(routine, slot)
+            if self._reads_allowed(task, value):
+                if where != "store":
+                    return self._local_write(routine, slot)
+                if slot in self.own[task]:
+                    return VISIBLE if self.program.globals[slot].key in self.visible \
+                        else LOCAL
+        if kind is Action or kind is ControlAction:
+            # an element or component, Incr, a call's output, a read through a reference
+            # ... (``syntax_footprint``)
+            return self.syntax.statement(task, routine, instruction)
         return SHARED
 
     def never_waits(self, routine_index: int, pc: int) -> bool:
@@ -318,40 +308,6 @@ class PartialOrder:
                 if int(slot) not in self.stable[task]:
                     return False
         return True
-
-    def _syntax_reads_allowed(self, task: int, routine, expression) -> bool:
-        """Whether an expression reads only data no other task writes: constants, the
-        routine's own data and parameters passed by value, and global data in
-        ``stable`` that is not written outside the loaded code; no function (it may read
-        or wait for anything), no signal."""
-        if expression is None:
-            return False
-        lookup = routine.scope.lookup
-        # PERS data written outside the loaded code: each read a choice, as an input's
-        outside = getattr(self.program, "outside_data", None) or {}
-        for node, _ in ast.walk(expression):
-            kind = type(node)
-            if kind is ast.NameRef:
-                symbol = lookup(node.name.key)
-                if symbol is None and node.name.key in self._loop_variables(routine):
-                    continue             # a FOR variable (its scope is the loop's)
-                if symbol is None or not (
-                        symbol.kind == CONSTANT or
-                        symbol.kind == LOCAL_DATA and not symbol.by_reference or
-                        symbol.kind == GLOBAL_DATA and symbol.slot in self.stable[task]
-                        and symbol.slot not in outside):
-                    return False
-            elif kind not in _PLAIN_EXPRESSIONS:
-                return False
-        return True
-
-    def _loop_variables(self, routine) -> frozenset:
-        found = self._loops.get(routine.index)
-        if found is None:
-            found = self._loops[routine.index] = frozenset(
-                node.variable.key for node, _ in ast.walk(routine.ast)
-                if isinstance(node, ast.For)) if routine.ast is not None else frozenset()
-        return found
 
     def _visible_local(self, routine, slot: int) -> bool:
         name = routine.local_names[slot] if slot < len(routine.local_names) else ""

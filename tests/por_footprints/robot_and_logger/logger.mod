@@ -12,7 +12,7 @@ MODULE Logger
       status := lines;                   ! SHARED
       handshake := 0;                    ! SHARED
       ready{2} := TRUE;                  ! SHARED
-      Report lines;                      ! SHARED
+      Report lines;                      ! LOCAL
     ENDWHILE
   ENDPROC                                ! LOCAL
   PROC Report(num what)

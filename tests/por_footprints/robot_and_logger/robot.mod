@@ -31,7 +31,8 @@ MODULE Robot
         count := 0;                      ! LOCAL
       ENDIF
       WaitUntil handshake = 0;           ! SHARED
-      TPWrite "cycle";                   ! SHARED
+      TPWrite "cycle";                   ! LOCAL
+      TPWrite "status ", \Num:=status;   ! SHARED
       IF DInput(diReady) = 1 THEN        ! SHARED
         done := FALSE;                   ! LOCAL
       ENDIF

@@ -1,0 +1,331 @@
+"""What an instruction touches, read from its syntax where its compiled form does not say.
+
+The partial-order reduction (``partial_order``) decides per instruction whether
+it is independent of every other task.  Assignments of plain data and
+conditions carry their compiled form (``fusion``), whose reads are plain; the
+rest is judged here from the statement the instruction was compiled from,
+found by its span:
+
+* an assignment to an element or a component (``buf{i} := x``, ``p.x := 0``),
+  and ``Incr``, ``Decr``, ``Clear`` and ``Add`` read as their assignments
+  (``numeric_updates``), writes the data under the target: independent when
+  that is the task's own (global data no other task's code names, routine data
+  not passed by reference) and every expression it evaluates reads only data
+  no other task writes;
+* a call of a user procedure or function with arguments evaluates them: the
+  call is independent when they read only such data (an argument passed by
+  reference binds a reference and reads the data of its indices; the callee's
+  writes through it are judged where they are written).  A function a wait's
+  condition calls is not (it reads what others write, ``Call.for_wait``);
+* RETURN with a value writes the caller's temporary: independent when the
+  value reads only such data;
+* ``TPWrite`` writes a line to the transition's output, which no other task
+  reads and no atom names, and ``WaitTime`` is one step when checking
+  (``library.waits``): independent when their arguments read only such data.
+
+"Reads only data no other task writes" (``SyntaxReads.allowed``): constants,
+routine data and parameters passed by value, FOR variables, global data no
+other task writes and nobody outside the loaded code writes, through operators,
+indices, components, aggregates and predefined functions that are not
+"special" (those compute from their arguments alone: Abs, NumToStr, StrPart,
+Offs ...), and user functions, which run before the instruction (hoisted: it reads
+their result from its frame, and the call is judged as above).  A signal or
+anything else is not.  Whether the
+instruction raises an error is not decided here: the reduction checks each
+step it leaves alone (``PartialOrder._invisible_step``).
+"""
+from __future__ import annotations
+
+from typing import Callable, NamedTuple, Optional
+
+from ... import ast
+from ...semantics.instructions import Call, LateCall
+from ...semantics.library import registry
+from ...semantics.scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE
+from .merging import _walk
+from .numeric_updates import as_assignment, target_root
+
+
+class Footprint(NamedTuple):
+    """What one instruction of a task touches, decided from its code alone.
+
+    ``independent``: it reads only data no other task writes and writes only data
+    no other task's code names (its own VAR data, TASK PERS, routine data, its own
+    frames), reads no signal and waits for nothing: every step of another task
+    commutes with it and neither enables nor disables it, as SPIN treats a
+    statement on local variables.  ``visible``: it may change the value of an atom
+    of the check (it writes data an atom names).
+    """
+
+    independent: bool
+    visible: bool
+
+
+LOCAL = Footprint(True, False)
+VISIBLE = Footprint(True, True)
+SHARED = Footprint(False, True)
+
+# syntax that reads nothing but the data it names
+_PLAIN_EXPRESSIONS = frozenset({ast.NumLiteral, ast.StringLiteral, ast.BoolLiteral,
+                                ast.Index, ast.Component, ast.Unary, ast.Binary,
+                                ast.Aggregate})
+# predefined procedures whose only effect is on the transition's output, or none
+# when checking, besides reading their arguments
+_QUIET_PROCEDURES = frozenset({"TPWRITE", "WAITTIME"})
+# statements and calls an instruction may be compiled from, found by span
+_STATEMENTS = (ast.Assignment, ast.ProcedureCall, ast.FunctionCall, ast.Return)
+
+
+class SyntaxReads:
+    """Whether expressions of a task read only data no other task writes, from their
+    syntax (see the module docstring): ``stable[task]``, the global slots no other
+    task writes; ``outside``, the global slots written outside the loaded code."""
+
+    def __init__(self, stable: list, outside, references: "ReferenceParameters"):
+        self.stable = stable
+        self.outside = outside
+        self.references = references
+        self._loops: dict = {}          # routine index -> names of its FOR variables
+
+    def allowed(self, task: int, routine, expression) -> bool:
+        if expression is None:
+            return False
+        lookup = routine.scope.lookup
+        work = [expression]
+        while work:
+            node = work.pop()
+            kind = type(node)
+            if kind is ast.NameRef:
+                symbol = lookup(node.name.key)
+                if symbol is None and node.name.key in self.loop_variables(routine):
+                    continue             # a FOR variable (its scope is the loop's)
+                if symbol is None or not (
+                        symbol.kind == CONSTANT or
+                        symbol.kind == LOCAL_DATA and not symbol.by_reference or
+                        symbol.kind == GLOBAL_DATA and self.readable(task, symbol.slot) or
+                        symbol.kind == LOCAL_DATA and self._referents_readable(
+                            task, routine, symbol)):
+                    return False
+                continue
+            if kind is ast.FunctionCall:
+                symbol = lookup(node.name.key)
+                if symbol is not None and symbol.kind == ROUTINE:
+                    # a user function: hoisted before the instruction, which reads the
+                    # result from the frame (its arguments are the call's to judge)
+                    continue
+                if not _pure_function(node, lookup):
+                    return False
+                work.extend(argument for argument in node.args)
+            elif kind is ast.Argument:
+                if node.kind == ast.CONDITIONAL:
+                    return False
+            elif kind not in _PLAIN_EXPRESSIONS:
+                return False
+            for field in node.__dataclass_fields__:
+                if field not in ("span", "name") and not (kind is ast.FunctionCall):
+                    value = getattr(node, field)
+                    if isinstance(value, (tuple, list)):
+                        work.extend(item for item in value if item is not None)
+                    elif hasattr(value, "__dataclass_fields__"):
+                        work.append(value)
+        return True
+
+    def readable(self, task: int, slot: int) -> bool:
+        """Whether global data ``slot`` is written by no other task and not outside."""
+        return slot in self.stable[task] and slot not in self.outside
+
+    def _referents_readable(self, task: int, routine, symbol) -> bool:
+        """A parameter passed by reference: whether every datum a call passes is."""
+        referents = self.references.referents(routine.index, symbol)
+        return referents is not None and all(
+            where is not None or self.readable(task, slot) for where, slot in referents)
+
+    def loop_variables(self, routine) -> frozenset:
+        found = self._loops.get(routine.index)
+        if found is None:
+            found = self._loops[routine.index] = frozenset(
+                node.variable.key for node in _walk(routine.ast)
+                if isinstance(node, ast.For)) if routine.ast is not None else frozenset()
+        return found
+
+
+class StatementFootprints:
+    """Footprints of the instructions ``fusion`` does not describe, from the statements
+    they were compiled from (see the module docstring).  ``own[task]``: the global slots
+    only that task's code names; ``visible_local(routine, slot)``: whether an atom names
+    that routine datum; ``visible``: the global data keys atoms name."""
+
+    def __init__(self, reads: SyntaxReads, own: list, visible: set,
+                 visible_local: Callable, global_keys: list):
+        self.reads = reads
+        self.global_keys = global_keys  # global slot -> its data's key (upper case)
+        self.own = own
+        self.visible = visible
+        self.visible_local = visible_local
+        self._nodes: dict = {}          # routine index -> span -> statement or call
+
+    def statement(self, task: int, routine, instruction) -> Footprint:
+        """An Action or ControlAction: an assignment, a numeric update, TPWrite, WaitTime."""
+        node = self._node(routine, instruction.span)
+        lookup = routine.scope.lookup
+        if isinstance(node, ast.ProcedureCall):
+            update = as_assignment(node, lookup)
+            if update is None:
+                quiet = node.name.key in _QUIET_PROCEDURES and lookup(node.name.key) is None
+                return LOCAL if quiet and self._arguments_allowed(task, routine, node) \
+                    else SHARED
+            node = update
+        if not isinstance(node, ast.Assignment):
+            return SHARED
+        if not (self.reads.allowed(task, routine, node.target) and
+                self.reads.allowed(task, routine, node.value)):
+            return SHARED
+        root = target_root(node.target)
+        symbol = lookup(root.name.key) if isinstance(root, ast.NameRef) else None
+        if symbol is None:
+            return SHARED
+        if symbol.kind == GLOBAL_DATA:
+            if symbol.slot not in self.own[task] or symbol.slot in self.reads.outside:
+                return SHARED
+            return VISIBLE if self.global_keys[symbol.slot] in self.visible else LOCAL
+        if symbol.kind == LOCAL_DATA and not symbol.by_reference and not symbol.optional:
+            return VISIBLE if self.visible_local(routine, symbol.slot) else LOCAL
+        if symbol.kind == LOCAL_DATA:
+            return self._through_reference(task, routine, symbol)
+        return SHARED
+
+    def _through_reference(self, task: int, routine, symbol) -> Footprint:
+        """A write through a parameter passed by reference: to whatever its calls pass,
+        each of which must be the task's own."""
+        referents = self.reads.references.referents(routine.index, symbol)
+        if referents is None:
+            return SHARED
+        visible = self.visible_local(routine, symbol.slot)
+        for where, slot in referents:
+            if where is None:
+                if slot not in self.own[task] or slot in self.reads.outside:
+                    return SHARED
+                visible = visible or self.global_keys[slot] in self.visible
+            else:
+                visible = visible or self.visible_local(where, slot)
+        return VISIBLE if visible else LOCAL
+
+    def call(self, task: int, routine, instruction) -> Footprint:
+        """A Call with arguments (of a procedure, or a function hoisted before its
+        statement): it binds them and pushes a frame of the task's own."""
+        callee = instruction.routine
+        if instruction.for_wait or callee.kind not in ("PROC", "FUNC"):
+            return SHARED
+        node = self._node(routine, instruction.span)
+        if not isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) or \
+                node.name.key != callee.name.upper():
+            return SHARED
+        return LOCAL if self._arguments_allowed(task, routine, node) else SHARED
+
+    def returned(self, task: int, routine, instruction) -> Footprint:
+        """RETURN with a value: it writes the caller's temporary and pops the frame."""
+        node = self._node(routine, instruction.span)
+        if routine.kind != "FUNC" or not isinstance(node, ast.Return) or node.value is None:
+            return SHARED
+        return LOCAL if self.reads.allowed(task, routine, node.value) else SHARED
+
+    def _arguments_allowed(self, task: int, routine, call) -> bool:
+        return all(argument.kind != ast.CONDITIONAL and
+                   (argument.value is None or
+                    self.reads.allowed(task, routine, argument.value))
+                   for argument in call.args)
+
+    def _node(self, routine, span):
+        nodes = self._nodes.get(routine.index)
+        if nodes is None:
+            nodes = self._nodes[routine.index] = statement_nodes(routine)
+        return nodes.get(span)
+
+
+def statement_nodes(routine) -> dict:
+    """The assignments, calls and RETURNs of a routine by span (the outermost first)."""
+    nodes: dict = {}
+    decl = routine.ast
+    if decl is not None:
+        for node in _walk((decl.body, decl.error, decl.undo, decl.backward)):
+            if isinstance(node, _STATEMENTS):
+                nodes.setdefault(node.span, node)
+    return nodes
+
+
+class ReferenceParameters:
+    """What the parameters passed by reference (VAR, INOUT, PERS) of each routine stand
+    for: the roots of the arguments every call of the routine passes, each (None, global
+    slot) or (calling routine, its own datum's slot); unknown (None) when some call
+    passes anything else (a parameter passed on by reference, an optional one), names
+    its arguments or leaves one out, or a late-bound call (``%name%``) may reach the
+    routine.  Calls pass arguments only so (``Call``, ``LateCall``): an entry, a trap
+    and a routine a move runs take none."""
+
+    def __init__(self, program):
+        self.program = program
+        self._passed: Optional[dict] = None   # (routine, slot) -> set of roots, or None
+
+    def referents(self, routine_index: int, symbol) -> Optional[frozenset]:
+        """The roots ``symbol`` (a by-reference parameter of the routine) stands for."""
+        if self._passed is None:
+            self._passed = self._find()
+        found = self._passed.get((routine_index, symbol.slot))
+        return None if not found or symbol.optional else frozenset(found)
+
+    def _find(self) -> dict:
+        passed: dict = {}
+        for caller in self.program.routines:
+            nodes = None
+            for instruction in caller.code:
+                if isinstance(instruction, LateCall):
+                    for callee, _ in instruction.candidates.values():
+                        for parameter in callee.parameters:
+                            passed[(callee.index, parameter.slot)] = None
+                    continue
+                if not isinstance(instruction, Call):
+                    continue
+                callee = instruction.routine
+                if nodes is None:
+                    nodes = statement_nodes(caller)
+                node = nodes.get(instruction.span)
+                args = getattr(node, "args", None)
+                plain = args is not None and len(args) == len(callee.parameters) and all(
+                    argument.kind == ast.REQUIRED and argument.name is None
+                    for argument in args)
+                for position, parameter in enumerate(callee.parameters):
+                    if not parameter.by_reference:
+                        continue
+                    key = (callee.index, parameter.slot)
+                    root = _root(caller, args[position].value) if plain else None
+                    if root is None or passed.get(key, set()) is None:
+                        passed[key] = None
+                    else:
+                        passed.setdefault(key, set()).add(root)
+        return passed
+
+
+def _root(caller, argument) -> Optional[tuple]:
+    """(None, global slot) or (caller, slot) of the datum under an argument passed by
+    reference; None for anything else."""
+    root = target_root(argument)
+    if not isinstance(root, ast.NameRef):
+        return None
+    symbol = caller.scope.lookup(root.name.key)
+    if symbol is None:
+        return None
+    if symbol.kind == GLOBAL_DATA:
+        return None, symbol.slot
+    if symbol.kind == LOCAL_DATA and not symbol.by_reference and not symbol.optional:
+        return caller, symbol.slot
+    return None
+
+
+def _pure_function(call, lookup) -> bool:
+    """A predefined function that computes from its arguments alone (not "special", none
+    passed by reference)."""
+    if lookup(call.name.key) is not None:
+        return False                     # (data of that name: not a function)
+    entry = registry.lookup_function(call.name.key)
+    return entry is not None and not entry.special and \
+        not any(parameter.by_reference for parameter in entry.signature.parameters)
