@@ -2090,9 +2090,10 @@ static int probe_step(PackedTable *table, Scratch *scratch, const int32_t *info,
 
 /* A machine step of ``task`` run on through its merged local instructions, as
  * ``reduction.local_runs`` runs it: while the next instruction is mergeable and has one
- * transition (the machine's steps keep the context: running, ERRNO, the frames' depth
- * and mode; each one changes the state).  VM_DONE (the successor's segments updated),
- * VM_UNSUPPORTED (the machine does not take a step on the way: Python decides), -1. */
+ * transition that keeps the context (running, ERRNO, the frames' depth and modes; each
+ * step changes the state).  VM_DONE (the successor's segments updated), VM_UNSUPPORTED
+ * (the machine does not take a step on the way, or the run goes through a call or a
+ * return: Python decides), -1. */
 static int run_on(PackedTable *table, Scratch *scratch, Py_ssize_t task, int32_t *frame_id,
                   int32_t *data_id)
 {
@@ -2110,7 +2111,9 @@ static int run_on(PackedTable *table, Scratch *scratch, Py_ssize_t task, int32_t
             return VM_DONE;
         task_info_at(table, scratch->probe.frames[0], task, &reached);
         if (reached != context)
-            return VM_DONE;             /* (the frames' depth changed: no merge) */
+            /* a call or a return on the way: ``local_runs`` goes on through it where the
+             * frames kept keep their modes (``_went_on``); Python takes such a run */
+            return VM_UNSUPPORTED;
         *frame_id = scratch->probe.frames[0];
         *data_id = scratch->probe.data[0];
     }
