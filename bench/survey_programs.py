@@ -101,6 +101,8 @@ OWN_ERRORS = {
         "no task declares its entry routine main (T_ROB1's program starts at mainm4)",
     ("ravenorb+abb-robot-welder/RAPID/PROGMOD", "RMC205"):
         "TPWrite given three positional arguments",
+    ("Sensor-Based Automatic Unloading and Arrangement System", "RMC204"):
+        "two modules of TASK1 declare main (MainModule, ProgramSelector)",
 }
 
 
