@@ -15,8 +15,9 @@ controller would load and start:
   FOLDER``);
 * outside backups, the module files of one folder when one of them declares ``PROC main``;
   a folder where several files declare ``main`` gives a program per such file, with the
-  folder's files that declare none; an entry module a program file (``.pgf``) of its folder
-  lists is checked with the modules that file lists, as the controller loads it (a backup's
+  folder's files that declare none (of files declaring the same global names, copies for
+  two tasks, the one whose file name shares most words with the entry module's); an entry
+  module a program file (``.pgf``) of its folder lists is checked with the modules that file lists, as the controller loads it (a backup's
   HOME folder keeps several saved programs side by side).  A folder of modules without
   ``main`` is a library:
   counted apart ("no entry"), never checked.
@@ -101,6 +102,8 @@ OWN_ERRORS = {
         "no task declares its entry routine main (T_ROB1's program starts at mainm4)",
     ("ravenorb+abb-robot-welder/RAPID/PROGMOD", "RMC205"):
         "TPWrite given three positional arguments",
+    ("Sensor-Based Automatic Unloading and Arrangement System", "RMC204"):
+        "two modules of TASK1 declare main (MainModule, ProgramSelector)",
 }
 
 
@@ -174,12 +177,53 @@ def find_programs(corpus: Path) -> tuple[list[Program], list[Program]]:
         others = [f for f in files if f not in entries]
         listed = _program_files(folder)
         groups = [files] if len(entries) <= 1 and not listed else \
-            [listed.get(entry) or [entry, *others] for entry in entries]
+            [listed.get(entry) or [entry, *_sides_of(entry, others)] for entry in entries]
         for group in groups:
             name = str(folder.relative_to(corpus)) if len(groups) == 1 else \
                 str(group[0].relative_to(corpus))
             programs.append(Program(name, [str(f) for f in group], group))
     return _distinct(programs)
+
+
+def _sides_of(entry: Path, others: list[Path]) -> list[Path]:
+    """The modules without main that go with ``entry`` in a folder holding several
+    programs: all of them, except that of modules declaring the same global names (copies
+    of one driver for two tasks: ``HandDriver_left.sys``, ``HandDriver_right.sys``), which
+    no task loads together, only the one sharing most words of its file name with the
+    entry module's (``ROS_motion_left.mod``); all of them when that one is not single."""
+    names = {path: _global_names(path) for path in others}
+    words = _words(entry)
+    kept = []
+    for path in others:
+        rivals = [other for other in others
+                  if other != path and names[path] & names[other]]
+        if not rivals:
+            kept.append(path)
+            continue
+        shared = {other: len(words & _words(other)) for other in [path, *rivals]}
+        best = max(shared.values())
+        if [other for other, count in shared.items() if count == best] == [path] or \
+                list(shared.values()).count(best) > 1:
+            kept.append(path)
+    return kept
+
+
+def _words(path: Path) -> set[str]:
+    return {word for word in re.split(r"[^a-z0-9]+", path.stem.lower()) if word}
+
+
+def _global_names(path: Path) -> set[str]:
+    """The names a module declares for the whole task (not LOCAL), upper case; none
+    when it does not parse."""
+    from rapidmc.syntax import parse_file
+    try:
+        modules = parse_file(str(path))
+    except Exception:
+        return set()
+    return {declaration.name.key for module in modules
+            for declaration in (*module.data, *module.routines)
+            if not getattr(declaration, "local", False)
+            and getattr(declaration, "scope", "") != "LOCAL"}
 
 
 def find_backups(corpus: Path) -> tuple[list[Program], list[Program]]:

@@ -133,6 +133,7 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
                  task: Optional[str] = None, all_tasks: bool = False,
                  add_tasks: Sequence[str] = (), eio: Optional[str] = None,
                  flows: bool = False, outside_data: bool = True,
+                 outside_writes_anytime: bool = False,
                  properties: Sequence[Property] = (),
                  other_task_writes: Sequence[str] = (), stubs: bool = False) -> Program:
     """Parse and link a program: module files or a controller backup folder, as ``check`` takes.
@@ -144,6 +145,8 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
     each read of PERS data no loaded code writes takes any value of its domain
     (load.outside_data), else it keeps its initial value (``--fixed-outside-data``), as
     it does when one of ``properties`` may name it (atoms read stored values);
+    ``outside_writes_anytime``: such data changes between any two reads, also where a wait
+    reads it (else only while a task waits for it, ``load.waited_data``);
     ``other_task_writes``: upper-case names of shared PERS data that a task not loaded
     may write too (the shared data probe, ``_shared_data_probe``); ``stubs``: each task's
     names that none of its modules declares are declared from their uses (``--stubs``).
@@ -163,6 +166,7 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
         options["outside_outputs"] = find_outside_outputs
         options["outputs_set_by_both"] = outputs_set_by_both
         options["observed_names"] = observed_names(properties)
+        options["outside_writes_anytime"] = outside_writes_anytime
     if flows:
         from .findings.lint.marks import instrument as instrument_flows  # (only for --flows)
         marks = instrument_flows(parsed)
@@ -176,7 +180,8 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
         entry=entry, task=task, all_tasks=all_tasks, add_tasks=[
             ",".join(os.path.abspath(path) for path in group.split(",")) for group in add_tasks],
         eio=os.path.abspath(eio) if eio is not None else None, flows=flows,
-        outside_data=outside_data, properties=tuple(properties), stubs=stubs)
+        outside_data=outside_data, outside_writes_anytime=outside_writes_anytime,
+        properties=tuple(properties), stubs=stubs)
     return program
 
 

@@ -118,6 +118,11 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
                              "outputs only the controller or a task not loaded sets (default: "
                              "each read takes any value of its domain, as another task, an "
                              "encrypted module or a PC may write it)")
+    parser.add_argument("--outside-writes-anytime", action="store_true",
+                        help="PERS data only the outside writes may change between any two "
+                             "reads (default: where a wait of the loaded code reads it, it "
+                             "changes only while a task waits or polls for it, and other reads "
+                             "take the value the last wait took)")
     parser.add_argument("--track-robot", action="store_true",
                         help="keep the robot's position in every state (default: where nothing "
                              "but moves reads it, moves leave the robot where it is, and the "
@@ -191,6 +196,8 @@ def prepare_model(args: argparse.Namespace) -> api.Model:
                                all_tasks=args.all_tasks, add_tasks=args.add_task, eio=args.eio,
                                flows=flows,
                                outside_data=not getattr(args, "fixed_outside_data", False),
+                               outside_writes_anytime=getattr(args, "outside_writes_anytime",
+                                                              False),
                                properties=properties, stubs=getattr(args, "stubs", False))
     if flows:
         properties.append(api.flow_property(program))

@@ -13,7 +13,8 @@ loaded module says for sure:
   loaded task reads and no loaded task (nor the environment) can write is
   written, if at all, outside the loaded code (another task, an encrypted
   module, a PC): the reads of its value components take the values of a finite
-  domain (``load.outside_data``), or it keeps its initial value with
+  domain (``load.outside_data``; where a wait reads it, only while a task waits for
+  it: ``load.waited_data``), or it keeps its initial value with
   ``--fixed-outside-data``; the verdict names it and its values either way
   (``load.shared_data.data_uses`` says what each task reads and writes);
 * **digital outputs no loaded code sets**: read back, they take either value
@@ -287,6 +288,16 @@ def _only_tasks(chosen) -> str:
             f"(no PC or HMI writes it)")
 
 
+def _waited(chosen) -> str:
+    """That the components of data only the outside writes that a wait reads change only
+    while a task waits for them (``OutsideData.waited_paths``, ``load.waited_data``)."""
+    names = " and ".join(sorted(chosen.name + "".join("." + part.lower() for part in path)
+                                for path in chosen.waited_paths))
+    return (f"PERS {names} changes only while a task waits for it ({chosen.waited_at}): "
+            f"other reads keep the last wait's value (--outside-writes-anytime: any read "
+            f"may change it; {_where(chosen.span)})")
+
+
 def _value_origin(data, chosen) -> str:
     """Where the value of data written outside comes from when no loaded declaration
     gives one: another task's declaration, or a valid value in place of zeros."""
@@ -349,6 +360,8 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
                              f"{_only_tasks(chosen)}{_value_origin(data, chosen)}; its reads take "
                              f"{chosen.describe()}{_whole_fixed(program, data)}{seen} "
                              f"({_where(data.span)})")
+            if chosen.waited_paths:
+                yield Assumption(OTHER_WRITER, data.name, _waited(chosen))
         else:
             yield Assumption(OTHER_WRITER, data.name,
                              f"PERS {data.name} keeps its initial value: no loaded task writes "

@@ -31,9 +31,12 @@ The condition of an IF or ELSEIF (or a compact IF) inside a WHILE is a poll
 
 The rule is narrow, so that it never hides a wait the loaded code could end:
 
-* the WaitUntil (or poll) condition is ``name op constant`` (either side; ``op`` a comparison),
+* the WaitUntil (or poll) condition is ``name op constant`` (either side; ``op`` a comparison;
+  the constant a literal or a CONST: ``GlbCommandId = INST_UNKNOWN``),
   ``name`` or ``NOT name``, or such tests of one name joined by OR and AND
-  (``WaitUntil nCmdMatch = 1 OR nCmdMatch = -1``), where ``name`` is a whole PERS data
+  (``WaitUntil nCmdMatch = 1 OR nCmdMatch = -1``), or such tests of several names joined
+  by AND, each of which must hold (``WaitUntil GlbCommandId = INST_UNKNOWN AND FlagRltAck
+  = TRUE``: each name's test counts alone), where ``name`` is a whole PERS data
   object of type num, dnum, bool or string, shared between tasks (a TASK PERS or a LOCAL one is the task's
   own: ``outside_data`` leaves it alone);
 * every write of that data object in the loaded code is an assignment of a constant
@@ -52,7 +55,7 @@ from pathlib import Path
 from typing import Callable, Iterable, Optional
 
 from .. import ast
-from ..semantics.scope import GLOBAL_DATA
+from ..semantics.scope import CONSTANT, GLOBAL_DATA
 from .shared_data import _parameter_modes, _root, walk_routine
 
 VALUE_KEYS = frozenset({"BOOL", "NUM", "DNUM", "STRING"})
@@ -64,22 +67,48 @@ UNKNOWN = object()          # a write whose value the rule cannot know
 _JOINED: dict[str, Callable] = {"OR": lambda a, b: a or b, "AND": lambda a, b: a and b}
 
 
-def constant_value(expr) -> object:
-    """The value of a literal (``-`` a number included), else ``UNKNOWN``."""
+def constant_value(expr, lookup: Optional[Callable] = None) -> object:
+    """The value of a literal (``-`` a number included) or, given the scope's ``lookup``,
+    of a CONST of type num, string or bool (``INST_UNKNOWN``), else ``UNKNOWN``."""
     if isinstance(expr, (ast.NumLiteral, ast.StringLiteral, ast.BoolLiteral)):
         return float(expr.value) if isinstance(expr, ast.NumLiteral) else expr.value
-    if isinstance(expr, ast.Unary) and expr.op == "-" and isinstance(expr.operand,
-                                                                      ast.NumLiteral):
-        return -float(expr.operand.value) + 0.0
+    if isinstance(expr, ast.Unary) and expr.op == "-":
+        value = constant_value(expr.operand, lookup)
+        return -value + 0.0 if type(value) is float else UNKNOWN
+    if lookup is not None and isinstance(expr, ast.NameRef):
+        symbol = lookup(expr.name.key)
+        if symbol is not None and symbol.kind == CONSTANT and \
+                type(symbol.value) in (float, str, bool):
+            return symbol.value
     return UNKNOWN
 
 
-def _awaited(condition) -> Optional[tuple]:
+def _conjuncts(condition) -> list:
+    """The tests a condition joins by AND at its top (each must hold for it to hold)."""
+    if isinstance(condition, ast.Binary) and condition.op == "AND":
+        return _conjuncts(condition.left) + _conjuncts(condition.right)
+    return [condition]
+
+
+def _awaited_each(condition, lookup) -> list:
+    """(NameRef, test) per data object a wait condition tests, each test one the value must
+    pass for the condition to hold: the condition itself when it tests one data object
+    (``_awaited``), else each of the tests it joins by AND that tests one
+    (``GlbCommandId = INST_UNKNOWN AND FlagRltAck = TRUE``: neither can end the wait alone,
+    and a value that fails one keeps the wait going whatever the other holds)."""
+    whole = _awaited(condition, lookup)
+    if whole is not None:
+        return [whole]
+    return [found for found in (_awaited(part, lookup) for part in _conjuncts(condition))
+            if found is not None]
+
+
+def _awaited(condition, lookup=None) -> Optional[tuple]:
     """(the NameRef a wait condition tests, the test a value must pass to end it); the
     tests of one data object joined by OR or AND (``nCmdMatch=1 OR nCmdMatch=-1``) are one
     test."""
     if isinstance(condition, ast.Binary) and condition.op in _JOINED:
-        left, right = _awaited(condition.left), _awaited(condition.right)
+        left, right = _awaited(condition.left, lookup), _awaited(condition.right, lookup)
         if left is None or right is None or left[0].name.key != right[0].name.key:
             return None
         join = _JOINED[condition.op]
@@ -92,7 +121,7 @@ def _awaited(condition) -> Optional[tuple]:
     if isinstance(condition, ast.Binary) and condition.op in _COMPARE:
         for side, other, op in ((condition.left, condition.right, condition.op),
                                 (condition.right, condition.left, _MIRRORED[condition.op])):
-            value = constant_value(other)
+            value = constant_value(other, lookup)
             if isinstance(side, ast.NameRef) and value is not UNKNOWN:
                 compare = _COMPARE[op]
                 return side, (lambda v, c=value, f=compare: _safe(f, v, c))
@@ -117,25 +146,25 @@ def awaited_from_outside(program, routines: Iterable) -> dict:
     for routine in routines:
         lookup = routine.scope.lookup
         for condition, span in polled(routine.ast):
-            found = _awaited(condition)
-            slot = found and _global_slot(lookup, found[0])
-            if slot is not None:
-                waits.setdefault(slot, []).append((found[1], span, "poll"))
-                polls.setdefault(slot, set()).add((span.file, span.line, span.column))
+            for name_ref, test in _awaited_each(condition, lookup):
+                slot = _global_slot(lookup, name_ref)
+                if slot is not None:
+                    waits.setdefault(slot, []).append((test, span, "poll"))
+                    polls.setdefault(slot, set()).add((span.file, span.line, span.column))
         for node in walk_routine(routine.ast):
             if isinstance(node, ast.ProcedureCall) and node.name.key == "WAITUNTIL" \
                     and node.args and node.args[0].value is not None:
-                found = _awaited(node.args[0].value)
-                slot = found and _global_slot(lookup, found[0])
-                if slot is not None:
-                    waits.setdefault(slot, []).append((found[1], node.span, "WaitUntil"))
+                for name_ref, test in _awaited_each(node.args[0].value, lookup):
+                    slot = _global_slot(lookup, name_ref)
+                    if slot is not None:
+                        waits.setdefault(slot, []).append((test, node.span, "WaitUntil"))
             elif isinstance(node, (ast.Assignment, ast.Connect)):
                 slot = _global_slot(lookup, _root(node.target))
                 if slot is not None:
                     whole = isinstance(node, ast.Assignment) \
                         and isinstance(node.target, ast.NameRef)
                     writes.setdefault(slot, []).append(
-                        constant_value(node.value) if whole else UNKNOWN)
+                        constant_value(node.value, lookup) if whole else UNKNOWN)
             elif isinstance(node, ast.LateBindingCall):
                 for arg in node.args:
                     slot = _global_slot(lookup, _root(arg.value))

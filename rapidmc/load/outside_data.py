@@ -79,6 +79,7 @@ from .other_writers import Counting
 from .encrypted import from_encrypted_interface
 from .input_domains import analog_points, number_value
 from .shared_data import data_uses, writes_data_by_name
+from .waited_data import waited_reads
 
 ORDERINGS = frozenset({"<", "<=", ">", ">="})
 MANY_COMPONENTS = 6              # a record with more is described by its varying components
@@ -121,6 +122,25 @@ class OutsideData:
     # loop's count (``other_writers.written_constants``): its domain holds only what they
     # write, so the verdicts assume that no other party (a PC, an HMI) writes it
     written_by_tasks: Optional[str] = None
+    # data only the outside writes that a wait of the loaded code reads (``waited_data``):
+    # the first such wait (``WaitUntil at file:line``), and the component paths the waits
+    # read.  Those change only while a task waits or polls for them: a wait's read chooses
+    # and stores, other reads take the stored value (``check --outside-writes-anytime``:
+    # None, every read chooses)
+    waited_at: Optional[str] = None
+    waited_paths: frozenset = frozenset()
+
+    @property
+    def written_by_waits(self) -> bool:
+        """Whether some wait's read stores the value it takes: data the loaded code
+        writes too, or data a wait of it reads."""
+        return self.also_written_by is not None or bool(self.waited_paths)
+
+    def stored_by_waits(self, path: tuple) -> bool:
+        """Whether a wait's read of the component at ``path`` stores the value it takes,
+        and other reads take the stored value (else every read chooses afresh)."""
+        return self.also_written_by is not None or \
+            any(path[:len(waited)] == waited for waited in self.waited_paths)
 
     def domain(self, path: tuple) -> Optional[tuple]:
         """The values a read of the component may take; None: the stored value (a
@@ -168,6 +188,9 @@ def outside_data(linker) -> dict:
     writers = linker.options.get("outside_writers") or {}
     task_writes = linker.options.get("written_constants") or {}
     awaited = awaited_from_outside(linker, routines)      # a wait only a client ends
+    # data only the outside writes that a wait reads: it changes only in waits and polls
+    waited = {} if linker.options.get("outside_writes_anytime") else \
+        waited_reads(routines, read - written)
     chosen = {data.slot: data for data in linker.globals
               if data.storage == "PERS" and data.namespace != ENVIRONMENT_NAMESPACE
               and data.slot in read
@@ -204,11 +227,16 @@ def outside_data(linker) -> dict:
                 awaited_at, own, polled_at = awaited[slot]
                 domains = _client_writes(domains, own)
             writer = writers.get(data.key) or (AWAITED_WRITER if awaited_at else None)
+            waited_at, waited_paths = None, frozenset()
+            # (not data a task of the backup left out writes: a task writes at any time)
+            if slot not in written and slot in waited and data.key not in writers:
+                waited_at, waited_paths, polled_at = waited[slot]
             found[slot] = OutsideData(slot, data.name, data.span, domains,
                                       writer if slot in written else None,
                                       data.key in observed, awaited_at, unset,
                                       start if unset else None, polled_at,
-                                      known.writers() if known is not None else None)
+                                      known.writers() if known is not None else None,
+                                      waited_at, waited_paths)
     return found
 
 

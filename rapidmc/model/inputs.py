@@ -16,6 +16,8 @@ from ..load.input_domains import Assumed, default_domains
 from ..semantics.configured_signals import walk_routine
 from ..semantics.library.arguments import argument_expression
 from ..semantics.program import Program
+from ..semantics.scope import GLOBAL_DATA
+from .alias_bindings import alias_bindings
 from .properties import AtomCompiler
 
 INTERRUPT_ORDERS = {"ISIGNALDI", "ISIGNALDO", "ISIGNALAI", "ISIGNALAO", "ISIGNALGI", "ISIGNALGO"}
@@ -30,23 +32,44 @@ def observed_inputs(program: Program, atoms: AtomCompiler):
     interrupt; the other inputs stay chosen where read (a backup with eleven
     digital inputs and one ``ISignalDI`` offered 2,048 input valuations per
     step before).  An atom that reads signal data (bound at run time), an
-    interrupt ordered on signal data or a routine's parameter makes every input
-    observed.  A late-bound call (``%name%``) binds to user procedures only
+    interrupt ordered on a routine's parameter, or on signal data that an AliasIO
+    binds to a signal ``alias_bindings`` cannot read, makes every input observed (signal
+    data whose AliasIO calls name their signals watches those).  A late-bound call (``%name%``) binds to user procedures only
     (``statements._LateBindingCall``), whose orders this walk sees.
     """
     if atoms.observes_signal_data:
         return None
     observed = set(atoms.observed)
+    bindings: Optional[dict] = {}           # (read when an order names signal data)
     for routine in program.routines:
         if routine.ast is None:
             continue
         for node in walk_routine(routine.ast):      # every task's and model's, handlers too
             if isinstance(node, ast.ProcedureCall) and node.name.key in INTERRUPT_ORDERS:
                 signal = _ordered_signal(program, routine, node)
-                if signal is None:
+                if signal is not None:
+                    observed.add(signal.index)
+                    continue
+                if bindings == {}:
+                    bindings = alias_bindings(program)
+                bound = _bound_signals(routine, node, bindings)
+                if bound is None:
                     return None
-                observed.add(signal.index)
+                observed |= bound
     return observed
+
+
+def _bound_signals(routine, call: ast.ProcedureCall, bindings: Optional[dict]):
+    """The configured signals the global signal data an interrupt order names may be
+    bound to by the program's AliasIO calls (``alias_bindings``), else None."""
+    expr = argument_expression(call, "Signal", 0)
+    if bindings is None or not isinstance(expr, ast.NameRef) or \
+            getattr(routine, "scope", None) is None:
+        return None
+    symbol = routine.scope.lookup(expr.name.key)
+    if symbol is None or symbol.kind != GLOBAL_DATA:
+        return None
+    return bindings.get(symbol.slot)
 
 
 def _ordered_signal(program: Program, routine, call: ast.ProcedureCall):

@@ -162,9 +162,9 @@ def _component_positions(record_type, names: tuple) -> Optional[tuple]:
 
 
 def _varying_leaves(value_type, outside, path: tuple) -> list:
-    """(positions in a value of ``value_type``, ``.component`` names, domain) of each value
-    component under ``path`` of outside data (``load.outside_data``) whose reads may take
-    several values."""
+    """(positions in a value of ``value_type``, ``.component`` names, domain, the component's
+    path in the data object) of each value component under ``path`` of outside data
+    (``load.outside_data``) whose reads may take several values."""
     leaves = []
     for leaf_path, domain in outside.domains.items():
         if leaf_path[:len(path)] != path or domain is None or len(domain) < 2:
@@ -172,7 +172,7 @@ def _varying_leaves(value_type, outside, path: tuple) -> list:
         positions = _component_positions(value_type, leaf_path[len(path):])
         if positions is not None:
             leaves.append((positions, "".join("." + p.lower() for p in leaf_path[len(path):]),
-                           domain))
+                           domain, leaf_path))
     return leaves
 
 
@@ -264,7 +264,9 @@ class ExpressionCompiler:
     def _outside_read_as(self, expr, compiled: Compiled) -> Compiled:
         """A read of a value component of PERS data written from outside the loaded code
         (``load.outside_data``): any value of its domain, chosen afresh by each read, as
-        the outside may write between any two (merged steps expand read by read).  A read
+        the outside may write between any two (merged steps expand read by read); data a
+        wait reads as well changes only in waits (``load.waited_data``), as data the loaded
+        code writes too does: a wait's read chooses and stores, others read it.  A read
         of a whole record (``target``, ``rec.sub``) takes its components' choices together
         (``_outside_whole``), a whole array its elements' likewise."""
         whole_array = isinstance(compiled.type, ArrayType)
@@ -302,12 +304,13 @@ class ExpressionCompiler:
         if compiled.type.kind == RECORD:
             return self._outside_whole(expr, compiled, outside, path, name, compiled.type, [()])
         stored = compiled.fn
-        if outside.also_written_by is not None:
+        if outside.stored_by_waits(path):
             if not self.in_wait:
-                return compiled          # elsewhere the value the loaded code stored
-            # a wait or a poll: the value the loaded code stored, or one the other writer
-            # wrote just before; a value it wrote stays, so the code after the wait or in
-            # the loop's body reads what the condition saw
+                return compiled          # elsewhere the value stored (the last wait's)
+            # a wait or a poll: the value stored, or one the other writer wrote just
+            # before; a value it wrote stays, so the code after the wait or in the loop's
+            # body reads what the condition saw (data only the outside writes that a wait
+            # reads changes only there: ``load.waited_data``)
             # (the reference's indexes are evaluated once: the value is read through it)
             ref_fn = self.reference(expr, "read")[0]
             self.wait_choices = True
@@ -346,67 +349,81 @@ class ExpressionCompiler:
         read of the component alone may choose (a domain of several values) is chosen here
         too, element by element, so the whole and its parts tell the same story.
 
-        Data only the outside writes: every read chooses afresh, as the component reads
-        do; an array whose combinations exceed ``WHOLE_ARRAY_CHOICES`` keeps the stored
-        value outside a wait (choosing would multiply every step's successors), but not in
-        a wait, where the stored value alone would make a wait the other writer ends look
-        like a deadlock (``WAIT_CHOICES`` there).  Data the loaded code writes too: a wait
-        or a poll takes, per component, the stored value or one the other writer wrote just
-        before, and keeps what it took (``_outside_read``); other reads, the stored value."""
-        also_written = outside.also_written_by is not None
-        if also_written and not self.in_wait:
-            return compiled
-        leaves = _varying_leaves(value_type, outside, path)
+        Components of data only the outside writes that no wait reads: every read chooses
+        afresh, as the component reads do; an array whose combinations exceed
+        ``WHOLE_ARRAY_CHOICES`` keeps the stored value outside a wait (choosing would
+        multiply every step's successors), but not in a wait, where the stored value alone
+        would make a wait the other writer ends look like a deadlock (``WAIT_CHOICES``
+        there).  Components of data the loaded code writes too, or that a wait reads
+        (``OutsideData.stored_by_waits``): a wait or a poll takes the stored value or one
+        the other writer wrote just before, and keeps what it took (``_outside_read``);
+        other reads, the stored value."""
+        leaves = [(positions, leaf_name, domain, outside.stored_by_waits(leaf_path))
+                  for positions, leaf_name, domain, leaf_path
+                  in _varying_leaves(value_type, outside, path)]
+        if not self.in_wait:             # (elsewhere a stored component is read as stored)
+            leaves = [leaf for leaf in leaves if not leaf[3]]
         if not leaves:
             return compiled
         choices = [(element + positions,
                     name + (f"{{{','.join(str(i + 1) for i in element)}}}" if element else "")
-                    + leaf_name, domain)
-                   for element in elements for positions, leaf_name, domain in leaves]
+                    + leaf_name, domain, keeps)
+                   for element in elements for positions, leaf_name, domain, keeps in leaves]
         combinations = 1
-        for _, _, domain in choices:
-            combinations *= len(domain) + also_written
+        for _, _, domain, keeps in choices:
+            combinations *= len(domain) + keeps
         if self.in_wait and combinations > WAIT_CHOICES:
             self.linker.whole_reads_fixed.add(outside.slot)     # the assumption says so
             return compiled
         if not self.in_wait and elements != [()] and combinations > WHOLE_ARRAY_CHOICES:
             return compiled
-        if not also_written and not outside.observed:
+        stores = any(keeps for _, _, _, keeps in choices)
+        if not stores and not outside.observed:
             stored = compiled.fn
 
             def chosen(m):
                 value = stored(m)
-                for positions, leaf_name, domain in choices:
+                for positions, leaf_name, domain, _ in choices:
                     value = replace_at(value, positions, m.choose(leaf_name, domain))
                 return value
             return Compiled(chosen, compiled.type)
-        if not also_written:             # a property names it: the values taken are stored
+        if not stores:                   # a property names it: the values taken are stored
             ref_fn = self.reference(expr, "read")[0]
 
             def kept(m):
                 ref = ref_fn(m)
                 value = old = m.read_ref(ref)
-                for positions, leaf_name, domain in choices:
+                for positions, leaf_name, domain, _ in choices:
                     value = replace_at(value, positions, m.choose(leaf_name, domain))
                 if value != old:
                     m.write_ref(ref, value)
                 return value
             return Compiled(kept, compiled.type)
+        # a wait or a poll: a stored component takes the stored value or another, and keeps
+        # it; any other one is chosen afresh (and kept where a property names the data)
         ref_fn = self.reference(expr, "read")[0]
         self.wait_choices = True
-        ordered_choices = [(positions, leaf_name, stored_first(domain))
-                           for positions, leaf_name, domain in choices]
+        observed = outside.observed
+        ordered_choices = [(positions, leaf_name, stored_first(domain) if keeps else domain,
+                            keeps) for positions, leaf_name, domain, keeps in choices]
 
         def either(m):
             ref = ref_fn(m)
-            value = old = m.read_ref(ref)
-            for positions, leaf_name, ordered in ordered_choices:
-                current = read_at(value, positions)
-                taken = m.choose(leaf_name, ordered(current))
-                if taken != current:
+            value = old = keep = m.read_ref(ref)
+            for positions, leaf_name, domains, keeps in ordered_choices:
+                if keeps:
+                    current = read_at(keep, positions)
+                    taken = m.choose(leaf_name, domains(current))
+                    if taken != current:
+                        keep = replace_at(keep, positions, taken)
+                else:
+                    taken = m.choose(leaf_name, domains)
+                    if observed and taken != read_at(keep, positions):
+                        keep = replace_at(keep, positions, taken)
+                if taken != read_at(value, positions):
                     value = replace_at(value, positions, taken)
-            if value is not old:
-                m.write_ref(ref, value)
+            if keep is not old:
+                m.write_ref(ref, keep)
             return value
         return Compiled(either, compiled.type)
 

@@ -103,6 +103,8 @@ class Inference:
         self.component_feeds: dict[str, tuple[Missing, str]] = {}
         # TEST statements whose subject and CASE values are all missing names: the keys
         self.untyped_tests: list[tuple[str, ...]] = []
+        # two missing names compared with each other (= or <>), neither typed there
+        self.untyped_comparisons: list[tuple[str, str]] = []
         # datum key -> the bare names it is given or compared with (``Status := NG``,
         # ``VAR num Res := OK``, ``WHILE Status <> OK``): status codes (``_codes``)
         self.codes: dict[str, list] = {}
@@ -750,6 +752,13 @@ class Inference:
                 self._code(expr.right, expr.left)
             left, right = self.type_of(expr.left), self.type_of(expr.right)
             what = "compared with" if expr.op in COMPARISONS else "combined with"
+            if expr.op in ("=", "<>") and left is None and right is None and \
+                    isinstance(expr.left, ast.NameRef) and isinstance(expr.right, ast.NameRef):
+                # two names compared with each other, as a TEST compares its CASE values
+                # (``PM_PROJECT_STATUS = PM_PROJECT_STOPPED``): ``_types_of_tests``
+                keys = (expr.left.name.key, expr.right.name.key)
+                if keys not in self.untyped_comparisons:
+                    self.untyped_comparisons.append(keys)
             if right is not None:
                 self.expect(expr.left, right, f"{what} {right.name}")
             if left is not None:

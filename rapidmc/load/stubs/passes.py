@@ -353,13 +353,18 @@ _ATOMIC_NAMES = {"NUM": "num", "DNUM": "dnum", "STRING": "string", "BOOL": "bool
 def _types_of_tests(inference: Inference) -> bool:
     """``TEST nResume CASE RESUME_KILL: ...`` where the subject and every CASE value are missing
     names that nothing else types: num, the type TEST is mostly used with, assumed and said
-    so in their comments (the values then get 1, 2 ... as names compared in turn)."""
+    so in their comments (the values then get 1, 2 ... as names compared in turn); so too
+    two missing names compared with ``=`` or ``<>`` and typed by nothing else
+    (``IF PM_PROJECT_STATUS = PM_PROJECT_STOPPED``: a PickMaster status and its codes)."""
     changed = False
-    for keys in inference.untyped_tests:
+    groups = [(keys, "TEST subject or CASE value, nothing else tells the type")
+              for keys in inference.untyped_tests] + \
+        [(keys, "compared only with names nothing types") for keys in
+         inference.untyped_comparisons]
+    for keys, use in groups:
         group = [inference.missing.get(key) for key in keys]
         if any(m is None or m.kind != DATA or m.type is not None for m in group):
             continue
         for missing in group:
-            changed |= missing.learn(NUM, "TEST subject or CASE value, nothing else tells the "
-                                     "type: num assumed")
+            changed |= missing.learn(NUM, f"{use}: num assumed")
     return changed

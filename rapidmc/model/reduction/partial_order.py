@@ -12,7 +12,9 @@ Checking*, ch. 10) is every transition of one task ``t`` when
   assignment, condition, FOR step, jump (``fusion`` metadata: the instruction
   as Python over ``store`` and ``locals_``), a call of a procedure without
   arguments or the end of a procedure (ENDPROC, RETURN), that
-  reads only data no other task writes and writes only data no other task's
+  reads only data no other task writes (a wait that keeps the value it read of data
+  written outside the loaded code, ``OutsideData.written_by_waits``, writes it for
+  every task that reads it) and writes only data no other task's
   code names (its own VAR data, TASK PERS, routine data, its own frames, shared
   PERS that the other tasks declare but never use; a task with GetDataVal or
   SetDataVal names all it can), reads no signal and calls nothing.  No step of another task depends on it or changes
@@ -97,6 +99,14 @@ class PartialOrder:
         uses = [data_uses(program, _namespace(task)) for task in range(tasks)]
         written = [found[1] for found in uses]
         used = [found[0] | found[1] for found in uses]
+        # a wait's read of data another party writes stores the value it took
+        # (``OutsideData.written_by_waits``: a WaitUntil, a WHILE, a polled IF): a write by
+        # the task waiting, which no assignment shows; every task reading it may wait for it
+        for data in (getattr(program, "outside_data", None) or {}).values():
+            if data.written_by_waits:
+                for task in range(tasks):
+                    if data.slot in uses[task][0]:
+                        written[task] = written[task] | {data.slot}
         by_name = tasks_calling(program, "SETDATAVAL")
         for task in by_name:
             # SetDataVal looks the name up where the call is: any data its task can name
