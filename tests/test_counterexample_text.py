@@ -24,6 +24,7 @@ from pathlib import Path
 import pytest
 
 from rapidmc.cli import main
+from cli_capture import run_cli
 
 CASES_DIR = Path(__file__).resolve().parent / "counterexamples"
 CASES = sorted(path.name for path in CASES_DIR.iterdir() if (path / "prog.mod").exists())
@@ -42,10 +43,7 @@ def command(case: str, *extra: str) -> list[str]:
 
 def run(case: str, monkeypatch, *extra: str) -> tuple[int, str, str]:
     monkeypatch.chdir(CASES_DIR / case)
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = main(command(case, *extra))
-    return code, out.getvalue(), err.getvalue()
+    return run_cli(command(case, *extra))
 
 
 @pytest.mark.parametrize("case", CASES)
