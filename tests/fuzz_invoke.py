@@ -8,17 +8,14 @@ notes) and the check command's progress lines are allowed.
 """
 from __future__ import annotations
 
-import contextlib
-import io
 import re
-import sys
 import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
 
-from rapidmc.cli import main
+from cli_capture import run_cli
 
 class ScratchFolder:
     """A temporary folder for the files a test module writes (``folder / name``).  The module
@@ -80,15 +77,7 @@ class Outcome:
 
 def invoke(argv: list[str], stdin_text: str = "") -> Outcome:
     """Run ``rapidmc ARGV`` in this process with the given standard input."""
-    out, err = io.StringIO(), io.StringIO()
-    saved_stdin = sys.stdin
-    sys.stdin = io.StringIO(stdin_text)
-    try:
-        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-            code = main(argv)
-    finally:
-        sys.stdin = saved_stdin
-    return Outcome(tuple(argv), code, out.getvalue(), err.getvalue())
+    return Outcome(tuple(argv), *run_cli(argv, stdin=stdin_text))
 
 
 def assert_acceptable(outcome: Outcome) -> None:

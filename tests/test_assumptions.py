@@ -7,10 +7,7 @@ of the result), JUnit (``<system-out>``) and the HTML report's data.
 """
 from __future__ import annotations
 
-import contextlib
-import io
 import json
-import os
 import re
 import shlex
 import xml.etree.ElementTree as ET
@@ -18,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from rapidmc.cli import main
+from cli_capture import run_cli
 
 CASES = Path(__file__).resolve().parent / "assumptions"
 VERDICT = re.compile(r"^(\S+): (HOLDS|VIOLATED|UNKNOWN)\b")
@@ -31,15 +28,8 @@ def run(folder: Path, *extra: str) -> tuple[int, str]:
 
 def check_in_folder(folder: Path, *argv: str) -> tuple[int, str]:
     """Exit code and stdout of ``rapidmc check ARGV --quiet`` run from inside ``folder``."""
-    out = io.StringIO()
-    cwd = os.getcwd()
-    os.chdir(folder)
-    try:
-        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
-            code = main(["check", *argv, "--quiet"])
-    finally:
-        os.chdir(cwd)
-    return code, out.getvalue()
+    code, out, _ = run_cli(["check", *argv, "--quiet"], cwd=folder)
+    return code, out
 
 
 def expected(folder: Path) -> dict[str, list[str]]:

@@ -8,8 +8,6 @@ goes on after the path; the HTML page is tests/test_html_report.py's.
 """
 from __future__ import annotations
 
-import contextlib
-import io
 import json
 import xml.etree.ElementTree as ET
 from pathlib import Path
@@ -17,18 +15,11 @@ from pathlib import Path
 import pytest
 
 from rapidmc.check.result import BAD_PREFIX
-from rapidmc.cli import main
+from cli_capture import run_cli
 
 CASE = Path(__file__).resolve().parent / "check" / "ltl_safety_unbounded_counter"
 CHECK = ["check", "prog.mod", "--ltl", "props.ltl", "--max-states", "3000", "--quiet"]
 NAME = "never_open_while_moving"
-
-
-def run(argv: list[str]) -> tuple[int, str, str]:
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = main(argv)
-    return code, out.getvalue(), err.getvalue()
 
 
 @pytest.fixture
@@ -37,7 +28,7 @@ def in_case(monkeypatch):
 
 
 def test_the_text_says_violated_and_any_run_and_shows_no_loop(in_case):
-    code, out, _ = run(CHECK)
+    code, out, _ = run_cli(CHECK)
     assert code == 1
     block = out[out.index(f"{NAME}: VIOLATED"):out.index("count_not_negative")]
     assert f"  violated: {BAD_PREFIX}\n    at step 23, prog.mod:13:  gripper_open := TRUE;" \
@@ -48,7 +39,7 @@ def test_the_text_says_violated_and_any_run_and_shows_no_loop(in_case):
 
 
 def test_the_json_trace_is_a_prefix_whose_error_is_the_bad_prefix(in_case):
-    code, out, _ = run([*CHECK, "--format", "json"])
+    code, out, _ = run_cli([*CHECK, "--format", "json"])
     entry = next(p for p in json.loads(out)["properties"] if p["name"] == NAME)
     trace = entry["trace"]
     assert (entry["verdict"], entry["reason"]) == ("VIOLATED", None)
@@ -61,13 +52,13 @@ def test_the_json_trace_is_a_prefix_whose_error_is_the_bad_prefix(in_case):
 
 def test_a_built_in_safety_violation_is_no_bad_prefix(monkeypatch):
     monkeypatch.chdir(CASE.parent / "runtime_div_input")
-    _, out, _ = run(["check", "prog.mod", "--quiet", "--format", "json"])
+    _, out, _ = run_cli(["check", "prog.mod", "--quiet", "--format", "json"])
     entry = next(p for p in json.loads(out)["properties"] if p["name"] == "no_runtime_error")
     assert entry["trace"]["error"]["bad_prefix"] is False
 
 
 def test_sarif_says_any_run_goes_on(in_case):
-    _, out, _ = run([*CHECK, "--format", "sarif"])
+    _, out, _ = run_cli([*CHECK, "--format", "sarif"])
     result = next(r for r in json.loads(out)["runs"][0]["results"] if r["ruleId"] == NAME)
     assert result["message"]["text"].endswith(
         f"(counterexample: 23 steps, then any run: {BAD_PREFIX})")
@@ -76,7 +67,7 @@ def test_sarif_says_any_run_goes_on(in_case):
 
 
 def test_junit_fails_with_the_bad_prefix(in_case, tmp_path):
-    run([*CHECK, "--junit", str(tmp_path / "report.xml")])
+    run_cli([*CHECK, "--junit", str(tmp_path / "report.xml")])
     case = next(c for c in ET.parse(tmp_path / "report.xml").iter("testcase")
                 if c.get("name") == NAME)
     failure = case.find("failure")
@@ -86,16 +77,16 @@ def test_junit_fails_with_the_bad_prefix(in_case, tmp_path):
 
 
 def test_replay_follows_the_prefix_and_says_any_run_goes_on(in_case, tmp_path):
-    _, out, _ = run([*CHECK, "--format", "json"])
+    _, out, _ = run_cli([*CHECK, "--format", "json"])
     saved = tmp_path / "trace.json"
     saved.write_text(out)
-    code, _, err = run(["replay", str(saved), "--property", NAME, "--quiet"])
+    code, _, err = run_cli(["replay", str(saved), "--property", NAME, "--quiet"])
     assert code == 0, err
     assert f"{NAME}: the counterexample replays: 23 steps, then any run: {BAD_PREFIX}" in err
 
 
 def report_without_times(argv: list[str]) -> tuple[int, dict]:
-    code, out, _ = run([*argv, "--format", "json", "--quiet"])
+    code, out, _ = run_cli([*argv, "--format", "json", "--quiet"])
     document = json.loads(out)
     for entry in document["properties"]:
         for measured in ("seconds", "states_per_second", "bytes_per_state"):

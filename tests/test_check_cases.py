@@ -29,8 +29,6 @@ the bug is fixed.
 """
 from __future__ import annotations
 
-import contextlib
-import io
 import json
 import re
 import shlex
@@ -41,7 +39,7 @@ from typing import Optional
 import pytest
 
 from rapidmc.check import native
-from rapidmc.cli import main
+from cli_capture import run_cli
 
 CASES_DIR = Path(__file__).resolve().parent / "check"
 VERDICTS = ("HOLDS", "VIOLATED", "UNKNOWN")
@@ -165,10 +163,7 @@ def run_check(case: Case, monkeypatch) -> tuple[int, str, str]:
     argv = case.argv()
     key = (case.folder, tuple(argv), native.engine())
     if key not in _DEFAULT_RUNS:
-        out, err = io.StringIO(), io.StringIO()
-        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-            code = main(argv)
-        _DEFAULT_RUNS[key] = (code, out.getvalue(), err.getvalue())
+        _DEFAULT_RUNS[key] = tuple(run_cli(argv))
     return _DEFAULT_RUNS[key]
 
 

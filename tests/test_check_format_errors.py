@@ -3,13 +3,11 @@ machine format on stdout (all of them, with the count of those a capped report l
 the text diagnostics still on stderr, and the exit code of text output (2)."""
 from __future__ import annotations
 
-import contextlib
-import io
 import json
 
 import pytest
 
-from rapidmc.cli import main
+from cli_capture import run_cli
 
 # (name, module text, expected (code, line, column) of every error, in order)
 PROGRAMS = [
@@ -23,10 +21,7 @@ PROGRAMS = [
 
 
 def cli(*argv) -> tuple[int, str, str]:
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = main(list(argv))
-    return code, out.getvalue(), err.getvalue()
+    return run_cli(argv)
 
 
 def write(tmp_path, text: str) -> str:

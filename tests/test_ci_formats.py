@@ -6,8 +6,6 @@ findings it records, even moved by such an edit, and not a new one.
 """
 from __future__ import annotations
 
-import contextlib
-import io
 import json
 import re
 import shutil
@@ -17,7 +15,7 @@ import jsonschema
 import pytest
 import yaml
 
-from rapidmc.cli import main
+from cli_capture import run_cli
 
 ROOT = Path(__file__).resolve().parent.parent
 SAMPLES = ROOT / "tests" / "ci"
@@ -28,13 +26,6 @@ QUALITY = jsonschema.Draft7Validator(json.loads(
 EDIT_ABOVE = "  ! a note a colleague added above everything\n  ! (two lines of it)\n\n"
 # A second unreachable statement, and a property the program violates too.
 NEW_UNREACHABLE = ("  PROC Helper(num times)\n    RETURN;\n    TPWrite \"never\";\n  ENDPROC\n")
-
-
-def run(argv: list[str]) -> tuple[int, str, str]:
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = main(argv)
-    return code, out.getvalue(), err.getvalue()
 
 
 @pytest.fixture
@@ -56,7 +47,7 @@ CHECK = ["check", "cell.mod", "--ltl", "cell.ltl", "--quiet"]
 
 
 def quality(argv: list[str]) -> tuple[int, list[dict]]:
-    code, out, _ = run([*argv, "--format", "codeclimate"])
+    code, out, _ = run_cli([*argv, "--format", "codeclimate"])
     issues = json.loads(out)
     QUALITY.validate(issues)
     return code, issues
@@ -117,10 +108,10 @@ def test_an_unknown_property_is_a_major_issue_whatever_the_bound(program):
 
 
 def test_lint_baseline_hides_old_findings_moved_by_an_edit_and_shows_a_new_one(program):
-    code, _, err = run([*LINT, "--write-baseline", "baseline.json"])
+    code, _, err = run_cli([*LINT, "--write-baseline", "baseline.json"])
     assert code == 0 and "wrote 1 finding" in err
     edit(program, above=EDIT_ABOVE)
-    code, out, err = run([*LINT, "--baseline", "baseline.json"])
+    code, out, err = run_cli([*LINT, "--baseline", "baseline.json"])
     assert (code, "RMC808" in out) == (0, False), out
     assert "1 finding(s) recorded in the baseline" in err
 
@@ -133,10 +124,10 @@ def test_lint_baseline_hides_old_findings_moved_by_an_edit_and_shows_a_new_one(p
 
 
 def test_check_baseline_hides_a_known_violation_and_shows_a_new_one(program):
-    code, _, _ = run([*CHECK, "--write-baseline", "baseline.json"])
+    code, _, _ = run_cli([*CHECK, "--write-baseline", "baseline.json"])
     assert code == 0
     edit(program, above=EDIT_ABOVE)
-    code, out, _ = run([*CHECK, "--baseline", "baseline.json"])
+    code, out, _ = run_cli([*CHECK, "--baseline", "baseline.json"])
     assert code == 0
     assert "at_most_three: VIOLATED" in out          # the text still shows every verdict
 
@@ -144,7 +135,7 @@ def test_check_baseline_hides_a_known_violation_and_shows_a_new_one(program):
     code, issues = quality([*CHECK, *new_property, "--baseline", "baseline.json"])
     assert code == 1
     assert [i["check_name"] for i in issues] == ["at_most_four"]
-    code, out, _ = run([*CHECK, *new_property, "--baseline", "baseline.json", "--format", "sarif"])
+    code, out, _ = run_cli([*CHECK, *new_property, "--baseline", "baseline.json", "--format", "sarif"])
     assert [r["ruleId"] for r in json.loads(out)["runs"][0]["results"]] == ["at_most_four"]
 
 
@@ -159,13 +150,13 @@ def test_check_baseline_hides_a_known_violation_and_shows_a_new_one(program):
 ])
 def test_a_bad_baseline_is_an_input_error(program, text, says):
     Path("baseline.json").write_text(text)
-    code, _, err = run([*CHECK, "--baseline", "baseline.json"])
+    code, _, err = run_cli([*CHECK, "--baseline", "baseline.json"])
     assert code == 2
     assert "[RMC509]" in err and says in err
 
 
 def test_a_missing_baseline_is_an_input_error_before_the_search(program):
-    code, out, err = run([*LINT, "--baseline", "missing.json"])
+    code, out, err = run_cli([*LINT, "--baseline", "missing.json"])
     assert code == 2 and "[RMC509]" in err and "cannot read the baseline" in err
 
 

@@ -14,8 +14,6 @@ replays.
 """
 from __future__ import annotations
 
-import contextlib
-import io
 import json
 import re
 import shlex
@@ -24,6 +22,7 @@ from pathlib import Path
 import pytest
 
 from rapidmc.cli import main
+from cli_capture import run_cli
 
 CASES_DIR = Path(__file__).resolve().parent / "counterexamples"
 CASES = sorted(path.name for path in CASES_DIR.iterdir() if (path / "prog.mod").exists())
@@ -42,10 +41,7 @@ def command(case: str, *extra: str) -> list[str]:
 
 def run(case: str, monkeypatch, *extra: str) -> tuple[int, str, str]:
     monkeypatch.chdir(CASES_DIR / case)
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = main(command(case, *extra))
-    return code, out.getvalue(), err.getvalue()
+    return run_cli(command(case, *extra))
 
 
 @pytest.mark.parametrize("case", CASES)
@@ -103,13 +99,11 @@ def test_files_given_by_absolute_path_are_shown_relative_to_the_current_folder(m
     # as counterexamples/many_unreached/prog.mod from tests/, never by its absolute path
     monkeypatch.chdir(CASES_DIR.parent)
     program = CASES_DIR / "many_unreached" / "prog.mod"
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        main(["check", str(program), "--quiet"])
-    text = out.getvalue() + err.getvalue()
+    _, out, err = run_cli(["check", program, "--quiet"])
+    text = out + err
     assert str(CASES_DIR) not in text
-    assert "counterexamples/many_unreached/prog.mod:" in out.getvalue()
-    assert err.getvalue().startswith("counterexamples/many_unreached/prog.mod:")
+    assert "counterexamples/many_unreached/prog.mod:" in out
+    assert err.startswith("counterexamples/many_unreached/prog.mod:")
 
 
 def test_a_program_given_by_absolute_path_outside_the_current_folder_reads_by_file_name(
@@ -120,10 +114,7 @@ def test_a_program_given_by_absolute_path_outside_the_current_folder_reads_by_fi
     monkeypatch.chdir(tmp_path)
     case = CASES_DIR / "stub_reraise"
     (tmp_path / "Missing.mod").write_text((case / "Missing.mod").read_text())
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        main(["check", str(case / "prog.mod"), "Missing.mod", "--quiet"])
-    text = out.getvalue()
+    text = run_cli(["check", case / "prog.mod", "Missing.mod", "--quiet"]).out
     assert text.count(str(case)) == 1
     assert f"  (files in {case}: prog.mod; in {tmp_path}: Missing.mod)" in text
     assert "    at step 6, prog.mod:13:  RAISE;" in text
@@ -141,10 +132,9 @@ def test_unreached_code_beside_a_counterexample_is_one_line_each_then_a_count(
         f"    PROC main()\n{branches}        total := 1 / total;\n    ENDPROC\nENDMODULE\n")
     monkeypatch.chdir(tmp_path)
     for extra, shown in (((), 5), (("--full-trace",), 7)):
-        out, err = io.StringIO(), io.StringIO()
-        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-            assert main(["check", "prog.mod", "--quiet", *extra]) == 1
-        lines = err.getvalue().splitlines()
+        code, _, err = run_cli(["check", "prog.mod", "--quiet", *extra])
+        assert code == 1
+        lines = err.splitlines()
         assert sum(line.endswith("[RMC701]") for line in lines) == shown
         assert ("                total := 2;" in lines) == bool(extra)
         assert (lines[-1] == "rapidmc: and 2 more unreached-code warnings [RMC701] (--full-trace, "

@@ -9,16 +9,14 @@ the check cases and the case studies.
 """
 from __future__ import annotations
 
-import contextlib
-import io
 import json
 from pathlib import Path
 
 import pytest
 
-from rapidmc.cli import main
 from reduction_programs import properties, random_program
 from test_check_cases import run_check, verdict_cases
+from cli_capture import run_cli
 
 ROOT = Path(__file__).resolve().parent.parent
 CHECK_CASES = [case for case in verdict_cases() if (case.folder / "props.ltl").is_file()]
@@ -26,10 +24,8 @@ CHECK_CASES = [case for case in verdict_cases() if (case.folder / "props.ltl").i
 
 def explored_facts(argv: list[str]) -> tuple[list, dict, int]:
     """(unreached lines, vacuous trigger per property, states of the run-time error search)."""
-    out = io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
-        main(["check", *argv, "--format", "json", "--quiet"])      # the last options count
-    return facts_of(out.getvalue())
+    # the last options count
+    return facts_of(run_cli(["check", *argv, "--format", "json", "--quiet"]).out)
 
 
 def facts_of(stdout: str) -> tuple[list, dict, int]:

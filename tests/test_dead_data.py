@@ -34,6 +34,7 @@ from dead_data_programs import dead_data_program, dead_data_properties
 from reached_states import breadth_first
 from test_check_cases import verdict_cases
 from test_reduction import DEAD_DATA_PATHS
+from cli_capture import run_cli
 
 REACHED_STATES = 3000      # plain states compared per program (breadth first)
 SEEDS = range(30)
@@ -58,10 +59,7 @@ def commuting_failures(argv: list[str], limit: int = REACHED_STATES) -> tuple[in
 
 
 def check_report(argv: list[str]) -> dict:
-    out = io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
-        main(["check", *argv, "--format", "json", "--quiet"])
-    return json.loads(out.getvalue())
+    return json.loads(run_cli(["check", *argv, "--format", "json", "--quiet"]).out)
 
 
 def verdicts(report: dict) -> dict[str, str]:

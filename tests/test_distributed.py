@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import contextlib
 import functools
-import io
 import json
 import logging
 import os
@@ -35,13 +34,13 @@ import pytest
 from rapidmc.check import check_property, find_reachable
 from rapidmc.check.budget import SearchBudget
 from rapidmc.check.result import HOLDS, VIOLATED
-from rapidmc.cli import main
 from rapidmc.check.transition_system import labelled_successors
 from rapidmc.diagnostics import EXIT_WORKER_LOST, UserError
 from rapidmc.ltl import parse_formula, to_buchi
 from rapidmc.ltl.lasso import holds_on_lasso
 from test_check_cases import SAFETY, load_case, report_of, CASES_DIR
 from tool_requirements import require_tool
+from cli_capture import run_cli
 
 try:
     import ray
@@ -235,7 +234,7 @@ def test_counterexample_of_two_workers_replays(cluster, name, check, tmp_path, m
     assert _verdicts(report)[check] == "VIOLATED"
     trace = tmp_path / "trace.json"
     trace.write_text(json.dumps(report))
-    code, out, err = _run(["replay", str(trace), "--property", check])
+    code, out, err = run_cli(["replay", str(trace), "--property", check])
     assert code == 0, out + err
 
 
@@ -252,7 +251,7 @@ def test_lasso_below_many_accepting_states_on_no_cycle_replays(cluster, tmp_path
     assert (found["verdict"], found["stats"]["engine"]) == ("VIOLATED", "distributed-owcty")
     trace = tmp_path / "trace.json"
     trace.write_text(json.dumps(report))
-    code, out, err = _run(["replay", str(trace), "--property", "finally_done"])
+    code, out, err = run_cli(["replay", str(trace), "--property", "finally_done"])
     assert code == 0, out + err
     assert "the counterexample replays" in out + err
 
@@ -274,7 +273,7 @@ def test_without_ray_the_options_name_the_extra(monkeypatch):
     monkeypatch.setitem(sys.modules, "ray", None)            # import ray fails
     program = str(CASES_DIR / "runtime_div_input" / "prog.mod")
     for option in (["--workers", "2"], ["--ray", "auto"], ["--swarm", "3"]):
-        code, _, err = _run(["check", program, "--quiet", *option])
+        code, _, err = run_cli(["check", program, "--quiet", *option])
         assert code == 2 and "[RMC751]" in err and "pip install 'rapidmc[ray]'" in err, err
 
 
@@ -308,16 +307,9 @@ def _verdicts(report: dict) -> dict:
 
 
 def _json(argv: list[str]) -> dict:
-    code, out, err = _run(argv)
+    code, out, err = run_cli(argv)
     assert code in (0, 1, 3), err
     return json.loads(out)
-
-
-def _run(argv: list[str]) -> tuple[int, str, str]:
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = main(argv)
-    return code, out.getvalue(), err.getvalue()
 
 
 def test_a_cycle_that_starves_a_task_is_searched_again_fairly_with_a_note(cluster,
@@ -325,8 +317,8 @@ def test_a_cycle_that_starves_a_task_is_searched_again_fairly_with_a_note(cluste
     """Weak fairness between tasks is never dropped on a cluster: the unfair cycles the
     workers find are searched again in one process, and a note names the property."""
     monkeypatch.chdir(CASES_DIR / "tasks_fairness")
-    code, out, err = _run(["check", "prog.mod", "--ltl", "props.ltl", "--add-task", "b.mod",
-                           "--workers", "2", "--quiet"])
+    code, out, err = run_cli(["check", "prog.mod", "--ltl", "props.ltl", "--add-task", "b.mod",
+                              "--workers", "2", "--quiet"])
     assert code == 1, err
     assert "the cycle the cluster found for seen_again starves a task" in err
     assert "[RMC753]" in err

@@ -3,8 +3,6 @@ own with ``check --entry all`` (commands/entries.py), a verdict table per entry 
 output format."""
 from __future__ import annotations
 
-import contextlib
-import io
 import json
 import xml.etree.ElementTree as ET
 from pathlib import Path
@@ -12,7 +10,7 @@ from pathlib import Path
 import pytest
 import xmlschema
 
-from rapidmc.cli import main
+from cli_capture import run_cli
 
 ROOT = Path(__file__).resolve().parent.parent
 PROGRAM = ROOT / "tests" / "entries" / "service_routines.mod"
@@ -22,20 +20,13 @@ JUNIT_SCHEMA = xmlschema.XMLSchema(str(ROOT / "tests" / "data" / "jenkins-junit.
 ENTRIES = ["main", "CalibrateCamera", "TestGripper", "Unused"]
 
 
-def run(argv: list[str]) -> tuple[int, str, str]:
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = main(argv)
-    return code, out.getvalue(), err.getvalue()
-
-
 @pytest.fixture(autouse=True)
 def in_the_cases_folder(monkeypatch):
     monkeypatch.chdir(PROGRAM.parent)
 
 
 def test_routines_nobody_calls_are_one_warning_naming_them_all():
-    code, out, err = run(["check", PROGRAM.name, "--quiet"])
+    code, out, err = run_cli(["check", PROGRAM.name, "--quiet"])
     assert code == 0
     assert err.count("[RMC701]") == 2
     assert "warning: 2 routines never run: CalibrateCamera, TestGripper [RMC701]" in err
@@ -45,7 +36,7 @@ def test_routines_nobody_calls_are_one_warning_naming_them_all():
 
 
 def test_every_entry_gets_its_own_verdict_table():
-    code, out, err = run(["check", PROGRAM.name, "--entry", "all", "--quiet"])
+    code, out, err = run_cli(["check", PROGRAM.name, "--entry", "all", "--quiet"])
     assert code == 1                        # CalibrateCamera divides by zero
     headings = [line for line in out.splitlines() if line.startswith("entry ")]
     assert headings == [f"entry {name}:" for name in ENTRIES]
@@ -59,7 +50,7 @@ def test_every_entry_gets_its_own_verdict_table():
 
 
 def test_entry_all_in_json():
-    code, out, _ = run(["check", PROGRAM.name, "--entry", "ALL", "--format", "json", "--quiet"])
+    code, out, _ = run_cli(["check", PROGRAM.name, "--entry", "ALL", "--format", "json", "--quiet"])
     document = json.loads(out)
     assert code == 1 and "properties" not in document
     assert [entry["entry"] for entry in document["entries"]] == ENTRIES
@@ -73,7 +64,7 @@ def test_entry_all_in_json():
 
 
 def test_entry_all_in_sarif_is_a_run_per_entry():
-    code, out, _ = run(["check", PROGRAM.name, "--entry", "all", "--format", "sarif", "--quiet"])
+    code, out, _ = run_cli(["check", PROGRAM.name, "--entry", "all", "--format", "sarif", "--quiet"])
     runs = json.loads(out)["runs"]
     assert code == 1
     assert [run["automationDetails"]["id"] for run in runs] == [f"entry/{n}" for n in ENTRIES]
@@ -83,7 +74,7 @@ def test_entry_all_in_sarif_is_a_run_per_entry():
 
 def test_entry_all_in_junit_is_a_valid_suite_per_entry(tmp_path):
     report = tmp_path / "report.xml"
-    run(["check", PROGRAM.name, "--entry", "all", "--junit", str(report), "--quiet"])
+    run_cli(["check", PROGRAM.name, "--entry", "all", "--junit", str(report), "--quiet"])
     JUNIT_SCHEMA.validate(str(report))
     root = ET.parse(report).getroot()
     suites = root.findall("testsuite")
@@ -95,7 +86,7 @@ def test_entry_all_in_junit_is_a_valid_suite_per_entry(tmp_path):
 
 def test_entry_all_writes_a_page_per_entry(tmp_path):
     page = tmp_path / "report.html"
-    run(["check", PROGRAM.name, "--entry", "all", "--html", str(page), "--quiet"])
+    run_cli(["check", PROGRAM.name, "--entry", "all", "--html", str(page), "--quiet"])
     written = sorted(p.name for p in tmp_path.iterdir())
     assert written == ["report.CalibrateCamera.html", "report.TestGripper.html",
                        "report.Unused.html", "report.html"]
@@ -104,7 +95,7 @@ def test_entry_all_writes_a_page_per_entry(tmp_path):
 def test_a_backups_service_routines_are_its_main_tasks():
     """In a backup, --entry names routines of the main task: its service routine is an
     entry, the PLC task's stays a coverage warning."""
-    code, out, err = run(["check", "backup", "--entry", "all", "--format", "json", "--quiet"])
+    code, out, err = run_cli(["check", "backup", "--entry", "all", "--format", "json", "--quiet"])
     document = json.loads(out)
     assert code == 0
     assert [entry["entry"] for entry in document["entries"]] == ["main", "ServicePosition"]
@@ -113,8 +104,8 @@ def test_a_backups_service_routines_are_its_main_tasks():
 
 
 def test_entry_all_in_code_quality_names_the_entry_of_each_issue():
-    code, out, _ = run(["check", PROGRAM.name, "--entry", "all", "--format", "codeclimate",
-                        "--quiet"])
+    code, out, _ = run_cli(["check", PROGRAM.name, "--entry", "all", "--format", "codeclimate",
+                            "--quiet"])
     issues = json.loads(out)
     assert code == 1
     violated = [i["description"] for i in issues if i["severity"] == "critical"]
@@ -131,7 +122,7 @@ LIBRARY_ENTRIES = ["Ratio", "Slot", "Label", "Ready"]
 def test_a_library_without_main_is_checked_routine_by_routine(entry):
     """A module of FUNCs and procedures with parameters (no main): each is an entry, called
     by a driver with its arguments as free inputs; the default and --entry all agree."""
-    code, out, err = run(["check", str(LIBRARY), "--format", "json", "--quiet", *entry])
+    code, out, err = run_cli(["check", str(LIBRARY), "--format", "json", "--quiet", *entry])
     document = json.loads(out)
     assert code == 1                        # Ratio divides by a width of 0
     assert [e["entry"] for e in document["entries"]] == LIBRARY_ENTRIES
@@ -160,7 +151,7 @@ def test_a_library_routine_a_main_program_calls_is_no_entry(tmp_path):
     program.write_text("MODULE M\n  VAR num x := 0;\n  PROC main()\n    x := Twice(2);\n"
                        "  ENDPROC\n  FUNC num Twice(num v)\n    RETURN 2 * v;\n  ENDFUNC\n"
                        "  FUNC num Half(num v)\n    RETURN v / 2;\n  ENDFUNC\nENDMODULE\n")
-    code, out, _ = run(["check", str(program), "--entry", "all", "--format", "json", "--quiet"])
+    code, out, _ = run_cli(["check", str(program), "--entry", "all", "--format", "json", "--quiet"])
     assert code == 0
     assert [e["entry"] for e in json.loads(out)["entries"]] == ["main", "Half"]
 
@@ -171,10 +162,10 @@ def test_procedures_without_main_are_each_an_entry_by_default(tmp_path):
     program = tmp_path / "prog.mod"
     program.write_text("MODULE M\n  VAR num n := 0;\n  PROC rPick()\n    n := 1;\n  ENDPROC\n"
                        "  PROC rPlace()\n    n := 1 / n;\n  ENDPROC\nENDMODULE\n")
-    code, out, err = run(["check", str(program), "--quiet"])
+    code, out, err = run_cli(["check", str(program), "--quiet"])
     assert code == 1, err                   # rPlace divides by the 0 n starts with
     headings = [line for line in out.splitlines() if line.startswith("entry ")]
     assert headings == ["entry rPick:", "entry rPlace:"]
     # --entry names one of them as before
-    code, out, _ = run(["check", str(program), "--entry", "rPick", "--quiet"])
+    code, out, _ = run_cli(["check", str(program), "--entry", "rPick", "--quiet"])
     assert code == 0 and "entry " not in out

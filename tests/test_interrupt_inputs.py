@@ -8,17 +8,14 @@ the expected ones both ways, and the reduced search may not store more states.
 """
 from __future__ import annotations
 
-import contextlib
-import io
 import json
-import os
 import shlex
 from pathlib import Path
 
 import pytest
 
 import rapidmc.api
-from rapidmc.cli import main
+from cli_capture import run_cli
 from rapidmc.model.inputs import observed_inputs
 from rapidmc.model.properties import AtomCompiler
 
@@ -33,15 +30,8 @@ def lines(path: Path) -> list[str]:
 def run(case: Path) -> dict:
     argv = ["check", "prog.mod", "--ltl", "props.ltl", "--format", "json", "--quiet"]
     argv += [arg for line in lines(case / "args") for arg in shlex.split(line)]
-    out = io.StringIO()
-    cwd = os.getcwd()
-    os.chdir(case)
-    try:
-        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
-            main(argv)
-    finally:
-        os.chdir(cwd)
-    return {p["name"]: p for p in json.loads(out.getvalue())["properties"]}
+    out = run_cli(argv, cwd=case).out
+    return {p["name"]: p for p in json.loads(out)["properties"]}
 
 
 @pytest.mark.parametrize("case", sorted(p for p in CASES.iterdir() if p.is_dir()),

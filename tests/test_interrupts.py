@@ -8,8 +8,6 @@ so the test does not depend on timing.
 """
 from __future__ import annotations
 
-import contextlib
-import io
 import json
 import os
 import signal
@@ -18,8 +16,8 @@ from pathlib import Path
 import pytest
 
 from rapidmc.check import budget
-from rapidmc.cli import main
 from rapidmc.commands.interrupts import stop_on_interrupt
+from cli_capture import run_cli
 
 COUNTING = Path(__file__).resolve().parent / "interrupts" / "counting.mod"
 
@@ -36,11 +34,8 @@ def run_interrupted(monkeypatch, signals: list, after: int = 20_000) -> tuple[in
         return checkpoint(self, stored, transitions, depth)
 
     monkeypatch.setattr(budget.SearchBudget, "checkpoint", interrupting)
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = main(["check", str(COUNTING), "--max-states", "100000000", "--format", "json",
-                     "--quiet"])
-    return code, out.getvalue(), err.getvalue()
+    return run_cli(["check", COUNTING, "--max-states", "100000000", "--format", "json",
+                    "--quiet"])
 
 
 @pytest.mark.parametrize("sent, name", [(signal.SIGTERM, "SIGTERM"), (signal.SIGINT, "SIGINT"),

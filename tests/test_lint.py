@@ -6,8 +6,6 @@ comments on the offending lines (tests/lint/README.md).
 """
 from __future__ import annotations
 
-import contextlib
-import io
 import json
 import re
 from pathlib import Path
@@ -15,25 +13,18 @@ from pathlib import Path
 import pytest
 
 from rapidmc import ast
-from rapidmc.cli import main
 from rapidmc.diagnostics import REGISTRY
 from rapidmc.findings.lint import RULES, lint_program
 from rapidmc.findings.lint import documentation as lint_doc
 from rapidmc.findings.lint.config import LintConfig, make_config
 from rapidmc.syntax import parse_file, parse_text
+from cli_capture import run_cli
 
 pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
 
 ROOT = Path(__file__).resolve().parent.parent
 CASES = sorted((ROOT / "tests" / "lint").glob("*.mod"))
 EXPECT = re.compile(r"!\s*expect:\s*(RMC\d{3}(?:\s*,\s*RMC\d{3})*)")
-
-
-def run(argv: list[str]) -> tuple[int, str, str]:
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = main(argv)
-    return code, out.getvalue(), err.getvalue()
 
 
 EVERY_RULE = LintConfig(select=("RMC8",))      # opt-in rules too
@@ -90,7 +81,7 @@ def test_lint_case(path):
 
 def test_sorter_a_reports_the_not_chain_on_line_73(monkeypatch):
     monkeypatch.chdir(ROOT)
-    code, out, _ = run(["lint", "case_studies/sorter/sorter_a.mod"])
+    code, out, _ = run_cli(["lint", "case_studies/sorter/sorter_a.mod"])
     assert code == 1
     assert "case_studies/sorter/sorter_a.mod:73:34: warning: NOT negates" in out
     assert out.rstrip().endswith("1 file, 97 lines: 1 finding (1 warning)")
@@ -99,14 +90,14 @@ def test_sorter_a_reports_the_not_chain_on_line_73(monkeypatch):
 def test_select_ignore_and_severity_decide_findings_and_exit_code(monkeypatch, tmp_path):
     monkeypatch.chdir(tmp_path)
     case = str(ROOT / "tests" / "lint" / "unused.mod")
-    assert run(["lint", case, "--select", "RMC801"])[0] == 0
-    code, out, _ = run(["lint", case, "--select", "unused-data,unused-routine"])
+    assert run_cli(["lint", case, "--select", "RMC801"])[0] == 0
+    code, out, _ = run_cli(["lint", case, "--select", "unused-data,unused-routine"])
     assert code == 0 and "4 findings (4 notes)" in out          # notes stay below warning
-    assert run(["lint", case, "--severity", "note"])[0] == 1
-    code, out, _ = run(["lint", case, "--ignore", "RMC806"])
+    assert run_cli(["lint", case, "--severity", "note"])[0] == 1
+    code, out, _ = run_cli(["lint", case, "--ignore", "RMC806"])
     assert "RMC806" not in out and "RMC807" in out
-    code, out, _ = run(["lint", str(ROOT / "tests" / "lint" / "tool_not_pers.mod"),
-                        "--severity", "error"])
+    code, out, _ = run_cli(["lint", str(ROOT / "tests" / "lint" / "tool_not_pers.mod"),
+                            "--severity", "error"])
     assert code == 1 and "error:" in out
 
 
@@ -115,19 +106,19 @@ def test_opt_in_rules_run_only_when_selected(monkeypatch):
     a select names them (their code, a prefix of it, or their name)."""
     monkeypatch.chdir(ROOT)
     case = "tests/lint/unused.mod"
-    assert "RMC806" not in run(["lint", case])[1]
-    assert run(["lint", case, "--select", "unused-data"])[1].count("[RMC806]") == 3
-    assert run(["lint", case, "--select", "RMC8"])[1].count("[RMC806]") == 3
+    assert "RMC806" not in run_cli(["lint", case])[1]
+    assert run_cli(["lint", case, "--select", "unused-data"])[1].count("[RMC806]") == 3
+    assert run_cli(["lint", case, "--select", "RMC8"])[1].count("[RMC806]") == 3
     assert not RULES["RMC806"].default and not RULES["RMC803"].default
 
 
 def test_unknown_rule_or_bad_configuration_is_an_input_error(monkeypatch, tmp_path):
     monkeypatch.chdir(tmp_path)
     case = str(ROOT / "tests" / "lint" / "unused.mod")
-    code, _, err = run(["lint", case, "--select", "RMC999"])
+    code, _, err = run_cli(["lint", case, "--select", "RMC999"])
     assert code == 2 and "[RMC840]" in err
     (tmp_path / "pyproject.toml").write_text('[tool.rapidmc.lint]\nseverity = "loud"\n')
-    code, _, err = run(["lint", case])
+    code, _, err = run_cli(["lint", case])
     assert code == 2 and "severity 'loud'" in err and "[RMC840]" in err
 
 
@@ -137,12 +128,12 @@ def test_pyproject_configuration_is_read_from_the_current_folder_upward(monkeypa
     inner = tmp_path / "cell"
     inner.mkdir()
     monkeypatch.chdir(inner)
-    code, out, _ = run(["lint", str(ROOT / "tests" / "lint" / "unused.mod")])
+    code, out, _ = run_cli(["lint", str(ROOT / "tests" / "lint" / "unused.mod")])
     assert code == 1 and "error: procedure Forgotten is never called [RMC807]" in out
-    code, out, _ = run(["lint", str(ROOT / "case_studies" / "sorter" / "sorter_a.mod")])
+    code, out, _ = run_cli(["lint", str(ROOT / "case_studies" / "sorter" / "sorter_a.mod")])
     assert code == 0 and "no findings" in out
-    code, out, _ = run(["lint", str(ROOT / "case_studies" / "sorter" / "sorter_a.mod"),
-                        "--select", "RMC801"])
+    code, out, _ = run_cli(["lint", str(ROOT / "case_studies" / "sorter" / "sorter_a.mod"),
+                            "--select", "RMC801"])
     # --select replaces the file's select; the file's ignore list still applies
     assert code == 0 and "RMC801" not in out
 
@@ -165,7 +156,7 @@ def test_no_two_findings_say_the_same_thing(path):
 
 def test_a_repeated_finding_is_one_finding_with_its_places(monkeypatch):
     monkeypatch.chdir(ROOT)
-    code, out, _ = run(["lint", "tests/lint/shared_index.mod", "--select", "RMC809"])
+    code, out, _ = run_cli(["lint", "tests/lint/shared_index.mod", "--select", "RMC809"])
     assert code == 1
     assert out.count("PERS 'count' is used as an index") == 1
     assert "note: 1 more place: tests/lint/shared_index.mod line 36" in out
@@ -190,7 +181,7 @@ def test_a_shared_index_another_task_changes_is_found_in_a_backup(monkeypatch, t
         (backup / "BACKINFO").mkdir()
         (backup / "BACKINFO" / "backinfo.txt").write_text(
             ">>SYSTEM_ID:\ncell\n>>PRODUCTS_ID:\n>>TASK1: (T_ROB1,,)\n>>TASK2: (T_PLC,,)\n")
-        code, out, err = run(["lint", str(backup), "--select", "RMC809", "--task", "T_ROB1"])
+        code, out, err = run_cli(["lint", str(backup), "--select", "RMC809", "--task", "T_ROB1"])
         found[change] = (code, out.count("[RMC809]"))
     assert found == {"Incr slot;": (1, 1), "slot := 2;": (0, 0)}
 
@@ -198,7 +189,7 @@ def test_a_shared_index_another_task_changes_is_found_in_a_backup(monkeypatch, t
 def test_json_and_sarif_reports(monkeypatch):
     monkeypatch.chdir(ROOT)
     case = "tests/lint/flows.mod"
-    code, out, _ = run(["lint", case, "--format", "json"])
+    code, out, _ = run_cli(["lint", case, "--format", "json"])
     document = json.loads(out)
     assert code == document["exit_code"] == 1
     flows = [f for f in document["findings"] if f["code"] == "RMC820"]
@@ -209,7 +200,7 @@ def test_json_and_sarif_reports(monkeypatch):
     assert first["flow"][-1]["line"] == 16
     assert [p["line"] for p in first["places"]] == [17]
     assert all(f["places"] == [] for f in flows[1:])
-    code, out, _ = run(["lint", case, "--format", "sarif"])
+    code, out, _ = run_cli(["lint", case, "--format", "sarif"])
     sarif = json.loads(out)
     results = sarif["runs"][0]["results"]
     assert len(results) == 5 and all(r["level"] == "warning" for r in results)
@@ -222,7 +213,7 @@ def test_json_and_sarif_reports(monkeypatch):
 def test_a_syntax_error_is_reported_not_linted(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     (tmp_path / "bad.mod").write_text("MODULE Bad\n  PROC main()\n    x := ;\n  ENDPROC\nENDMODULE\n")
-    code, out, err = run(["lint", "bad.mod"])
+    code, out, err = run_cli(["lint", "bad.mod"])
     assert code == 2 and "bad.mod:3" in err and "[RMC101]" in err and out == ""
 
 
@@ -231,7 +222,7 @@ def test_a_syntax_error_is_a_finding_of_a_machine_readable_report(tmp_path, monk
     # a CI step uploads the report whatever the exit code: it must be a report, not nothing
     monkeypatch.chdir(tmp_path)
     (tmp_path / "bad.mod").write_text("MODULE Bad\n  PROC main()\n    x := ;\n  ENDPROC\nENDMODULE\n")
-    code, out, err = run(["lint", "bad.mod", "--format", form])
+    code, out, err = run_cli(["lint", "bad.mod", "--format", form])
     assert code == 2 and "[RMC101]" in err
     document = json.loads(out)
     if form == "json":
@@ -253,9 +244,9 @@ def test_a_backup_is_linted_task_by_task(monkeypatch, tmp_path):
         folder = tmp_path / "backup" / "RAPID" / task / "PROGMOD"
         folder.mkdir(parents=True)
         (folder / f"{task}.mod").write_text(text)
-    code, out, _ = run(["lint", "backup"])
+    code, out, _ = run_cli(["lint", "backup"])
     assert code == 1 and "[RMC801]" in out and "[RMC805]" in out
-    code, out, _ = run(["lint", "backup", "--task", "T_BG"])
+    code, out, _ = run_cli(["lint", "backup", "--task", "T_BG"])
     assert "[RMC801]" not in out and "[RMC805]" in out
 
 

@@ -11,8 +11,6 @@ states as SPIN stores.
 """
 from __future__ import annotations
 
-import contextlib
-import io
 import json
 import re
 from pathlib import Path
@@ -20,22 +18,19 @@ from pathlib import Path
 import pytest
 
 from rapidmc.api import load_program
-from rapidmc.cli import main
 from rapidmc.model.reduction.partial_order import LOCAL, SHARED, VISIBLE, PartialOrder
 from rapidmc.model.reduction.relevance import atom_keys_of
 
 from task_programs import random_tasks, task_properties
 from test_check_cases import run_check, verdict_cases
 from test_task_backups import CASES as BACKUP_CASES, run_check as run_backup_check
+from cli_capture import run_cli
 
 MULTI_TASK_CASES = [case for case in verdict_cases() if "--add-task" in case.extra_args]
 
 
 def check_json(argv: list[str]) -> dict:
-    out = io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
-        main(["check", *argv, "--format", "json", "--quiet"])
-    return json.loads(out.getvalue())
+    return json.loads(run_cli(["check", *argv, "--format", "json", "--quiet"]).out)
 
 
 def verdicts(document: dict) -> dict[str, str]:

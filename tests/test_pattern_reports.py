@@ -3,8 +3,6 @@
 shows the pattern beside its LTL translation."""
 from __future__ import annotations
 
-import contextlib
-import io
 import json
 import os
 import xml.etree.ElementTree as ET
@@ -13,7 +11,7 @@ from pathlib import Path
 import pytest
 
 from rapidmc import api
-from rapidmc.cli import main
+from cli_capture import run_cli
 
 ROOT = Path(__file__).resolve().parent.parent
 SORTER = "case_studies/sorter"
@@ -44,11 +42,9 @@ def test_the_patterns_give_the_verdicts_of_the_ltl_properties(program, plant):
 
 
 def run(*arguments: str) -> tuple[int, str]:
-    out = io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
-        code = main(["check", f"{SORTER}/sorter_b.mod", "--env", f"{SORTER}/plant.mod",
-                     "--ltl", "specs/sorter_patterns.ltl", *arguments])
-    return code, out.getvalue()
+    code, out, _ = run_cli(["check", f"{SORTER}/sorter_b.mod", "--env", f"{SORTER}/plant.mod",
+                            "--ltl", "specs/sorter_patterns.ltl", *arguments])
+    return code, out
 
 
 def test_text_shows_the_pattern_above_the_formula(at_root):

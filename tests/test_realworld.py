@@ -11,18 +11,16 @@ messages, which the CLI does not offer yet.
 """
 from __future__ import annotations
 
-import contextlib
-import io
 from pathlib import Path
 
 import pytest
 
 from rapidmc.check import find_reachable
-from rapidmc.cli import main
 from rapidmc.model.rapid_system import RapidDescriber, RapidSystem
 from rapidmc.semantics.link import build
 from rapidmc.semantics.step import CheckConfig
 from rapidmc.syntax import load_program
+from cli_capture import run_cli
 
 HERE = Path(__file__).resolve().parent / "realworld"
 SERVER = [str(HERE / "socket_server" / "RobotServer.mod")]
@@ -35,15 +33,7 @@ COMPARED = [str(SURVEY2 / "compared_signals.mod")]
 
 
 def cli(argv, stdin: str = "") -> tuple[int, str, str]:
-    out, err = io.StringIO(), io.StringIO()
-    old = __import__("sys").stdin
-    __import__("sys").stdin = io.StringIO(stdin)
-    try:
-        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-            code = main(argv)
-    finally:
-        __import__("sys").stdin = old
-    return code, out.getvalue(), err.getvalue()
+    return run_cli(argv, stdin=stdin)
 
 
 @pytest.mark.parametrize("files", [SERVER, ROS, BACKUP, LIBRARY], ids=["server", "ros", "backup",

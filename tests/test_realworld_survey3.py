@@ -13,13 +13,11 @@ own, named after the record and the component, unless a known record (a jointtar
 """
 from __future__ import annotations
 
-import contextlib
-import io
 from pathlib import Path
 
 import pytest
 
-from rapidmc.cli import main
+from cli_capture import run_cli
 
 HERE = Path(__file__).resolve().parent / "realworld" / "survey3"
 
@@ -39,28 +37,21 @@ DECLARED = [
 ]
 
 
-def cli(argv) -> tuple[int, str, str]:
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = main(argv)
-    return code, out.getvalue(), err.getvalue()
-
-
 @pytest.mark.parametrize("name, declarations", DECLARED, ids=[d[0] for d in DECLARED])
 def test_stubs_make_the_program_reach_a_verdict(name, declarations, tmp_path):
     program = str(HERE / name)
-    code, _, err = cli(["check", program, "--quiet"])
+    code, _, err = run_cli(["check", program, "--quiet"])
     assert code == 2, err                              # on its own it does not link
     stubs = tmp_path / "Missing.mod"
-    code, _, err = cli(["stubs", program, "-o", str(stubs)])
+    code, _, err = run_cli(["stubs", program, "-o", str(stubs)])
     assert code == 0, err
     text = stubs.read_text(encoding="latin-1")
     for declaration in declarations:
         assert declaration in text, text
     assert "could not be inferred" not in text
     assert "_robax" not in text and "_extax" not in text      # no records for a jointtarget's parts
-    code, out, err = cli(["check", program, str(stubs), "--max-states", "20000", "--quiet",
-                          "--formula", "p: G true"])
+    code, out, err = run_cli(["check", program, str(stubs), "--max-states", "20000", "--quiet",
+                              "--formula", "p: G true"])
     assert code == 0, out + err
     assert "no_runtime_error: HOLDS" in out and "p: HOLDS" in out
 
@@ -71,6 +62,6 @@ def test_a_record_that_contains_itself_is_a_diagnostic_not_a_crash(tmp_path):
     program.write_text("MODULE m\n  RECORD part_a\n    part_b inner;\n  ENDRECORD\n"
                        "  RECORD part_b\n    part_a outer;\n  ENDRECORD\n"
                        "  VAR part_a x;\n  PROC main()\n  ENDPROC\nENDMODULE\n")
-    code, _, err = cli(["check", str(program), "--quiet"])
+    code, _, err = run_cli(["check", str(program), "--quiet"])
     assert code == 2
     assert "defined in terms of itself" in err and "internal error" not in err

@@ -18,21 +18,16 @@ RAPID code surveyed, one per cause of a program that did not reach a verdict.
 """
 from __future__ import annotations
 
-import contextlib
-import io
 from pathlib import Path
 
-from rapidmc.cli import main
+from cli_capture import run_cli
 
 HERE = Path(__file__).resolve().parent / "realworld" / "survey4"
 GROUP_INPUTS = ("giBoxHeight", "giLayers", "giBoxesPerLayer")
 
 
 def cli(*argv) -> tuple[int, str, str]:
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = main([str(a) for a in argv])
-    return code, out.getvalue(), err.getvalue()
+    return run_cli(argv)
 
 
 def verdicts(out: str) -> dict[str, str]:

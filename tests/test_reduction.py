@@ -31,6 +31,7 @@ from rapidmc.syntax import parse_text
 from fuzz_programs import programs
 from reduction_programs import properties, random_program
 from test_check_cases import SAFETY, run_check, verdict_cases
+from cli_capture import run_cli
 
 ROOT = Path(__file__).resolve().parent.parent
 # the data-driven cases that expect verdicts (not input errors) and have a property file
@@ -40,10 +41,7 @@ UNKNOWN = "UNKNOWN"
 
 def check_json(argv: list[str]) -> dict[str, str]:
     """Verdict per property of one in-process ``rapidmc check --format json`` run."""
-    out = io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
-        main(["check", *argv, "--format", "json", "--quiet"])
-    document = json.loads(out.getvalue())
+    document = json.loads(run_cli(["check", *argv, "--format", "json", "--quiet"]).out)
     return {p["name"]: p["verdict"] for p in document["properties"]}
 
 

@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 
 from rapidmc.cli import main
+from cli_capture import run_cli
 
 BACKUP = Path(__file__).resolve().parent / "task_backups" / "qualified" / "backup"
 
@@ -21,10 +22,8 @@ BACKUP = Path(__file__).resolve().parent / "task_backups" / "qualified" / "backu
 def run(tmp_path: Path, formula: str) -> tuple[int, str]:
     props = tmp_path / "props.ltl"
     props.write_text(f"p: {formula}\n")
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = main(["check", str(BACKUP), "--ltl", str(props), "--quiet"])
-    return code, out.getvalue() + err.getvalue()
+    code, out, err = run_cli(["check", BACKUP, "--ltl", props, "--quiet"])
+    return code, out + err
 
 
 @pytest.mark.parametrize("formula, name, candidates", [

@@ -17,8 +17,6 @@ Besides, a barrier removed from a case that needs it must break the property it 
 """
 from __future__ import annotations
 
-import contextlib
-import io
 import json
 import shlex
 import shutil
@@ -27,7 +25,7 @@ from pathlib import Path
 import pytest
 
 from rapidmc.check import native
-from rapidmc.cli import main
+from cli_capture import run_cli
 
 CASES = Path(__file__).resolve().parent / "task_backups"
 
@@ -44,12 +42,10 @@ def run_check(case: Path, backup: Path) -> tuple[int, dict, str]:
     if (case / "props.ltl").exists():
         argv += ["--ltl", str(case / "props.ltl")]
     argv += [arg for line in lines(case / "args") for arg in shlex.split(line)]
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = main(argv)
-    report = json.loads(out.getvalue())
+    code, out, err = run_cli(argv)
+    report = json.loads(out)
     warnings = "\n".join(f"{w['code']} {w['message']}" for w in report.get("warnings") or ())
-    return code, {p["name"]: p for p in report["properties"]}, err.getvalue() + warnings
+    return code, {p["name"]: p for p in report["properties"]}, err + warnings
 
 
 @pytest.mark.parametrize("case", sorted(p for p in CASES.iterdir() if p.is_dir()),
@@ -123,12 +119,9 @@ def test_outputs_set_outside_same_on_both_engines(name):
     for engine in ("native", "python"):
         argv = ["check", str(case / "backup"), "--format", "json", "--quiet", "--engine", engine]
         argv += [arg for line in lines(case / "args") for arg in shlex.split(line)]
-        out = io.StringIO()
-        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
-            main(argv)
         reports[engine] = [(p["name"], p["verdict"], p["stats"]["model_states"],
                             p["stats"]["transitions"], len(p.get("trace") or ()))
-                           for p in json.loads(out.getvalue())["properties"]]
+                           for p in json.loads(run_cli(argv).out)["properties"]]
     assert reports["native"] == reports["python"]
 
 
@@ -138,10 +131,7 @@ def test_a_waiting_task_is_named_by_its_file_as_the_steps_name_it(monkeypatch, t
     # steps are named from, never by the absolute path
     monkeypatch.chdir(tmp_path)
     backup = CASES / "sync_skip" / "backup"
-    out = io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(io.StringIO()):
-        main(["check", str(backup)])
-    text = out.getvalue()
+    text = run_cli(["check", backup]).out
     assert "  waits forever: T_ROB1 waits at TASK1/PROGMOD/Rob1.mod:5 (WaitSyncTask" in text
     assert f"  (files relative to {backup / 'RAPID'})" in text
     assert f"{backup}/RAPID/TASK1" not in text

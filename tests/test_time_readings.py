@@ -7,22 +7,17 @@ while a clock that never ran since its reset still reads 0, a real error when di
 GetTime's weekday is one of 1..7."""
 from __future__ import annotations
 
-import contextlib
-import io
 from pathlib import Path
 
 import pytest
 
-from rapidmc.cli import main
+from cli_capture import run_cli
 
 CYCLE_RATE = Path(__file__).resolve().parent / "realworld" / "survey4" / "cycle_rate.mod"
 
 
 def cli(*argv) -> tuple[int, str, str]:
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = main(list(argv))
-    return code, out.getvalue(), err.getvalue()
+    return run_cli(argv)
 
 
 def verdicts(out: str) -> dict[str, str]:

@@ -80,30 +80,39 @@ class NodeTable:
         node_id = self._by_identity.get(id(value))
         if node_id is not None:
             return node_id
+        return self._node_of_other(value)
+
+    def _node_of_other(self, value) -> int:
+        """``node`` of a value that is no canonical object (the search's hot path: each
+        explored transition interns its successor's parts)."""
         kind = type(value)
         if kind is not tuple and kind is not _PVECTOR and not isinstance(value, tuple):
             # a leaf: found by its value (cheaper than remembering the object)
             key = (kind, value)
             node_id = self._by_key.get(key)
             return node_id if node_id is not None else self._add(key, kind, value, None)
-        alias = self._aliases.get(id(value))
-        if alias is not None and alias[0] is value:
-            return alias[1]
+        aliases = self._aliases
+        alias = aliases.get(id(value))
+        if alias is not None:
+            return alias[1]        # (the cache keeps ``value`` alive: the id is still its own)
         # children handed on unchanged are canonical objects: their ids in one pass
         # at C speed (a canonical object lives as long as the table, so its id is
         # no other object's); the others recursively
         children = tuple(map(self._by_identity.get, map(id, value)))
         if None in children:
-            node = self.node
-            children = tuple([known if known is not None else node(child)
+            other = self._node_of_other
+            children = tuple([known if known is not None else other(child)
                               for known, child in zip(children, value)])
         key = children if kind is tuple else (kind, children)
         node_id = self._by_key.get(key)
         if node_id is None:
             return self._add(key, kind, value, children)
         # an equal object met again (a program's initial value a reset writes back, a
-        # constant): known by identity from now on
-        self._alias(value, node_id)
+        # constant): known by identity from now on (``_alias``, inlined: most explored
+        # transitions lead to a state met before and end here)
+        if len(aliases) >= ALIAS_LIMIT:
+            aliases.clear()
+        aliases[id(value)] = (value, node_id)
         return node_id
 
     def _alias(self, value, node_id: int) -> None:
@@ -137,8 +146,14 @@ class NodeTable:
 
     def ids(self, values) -> tuple:
         """The node id of each of ``values``."""
-        node = self.node
-        return tuple([node(value) for value in values])
+        # the values handed on unchanged (most of a successor's parts) are canonical
+        # objects: their ids in one pass at C speed, as for a node's children
+        known = tuple(map(self._by_identity.get, map(id, values)))
+        if None not in known:
+            return known
+        other = self._node_of_other
+        return tuple([node_id if node_id is not None else other(value)
+                      for node_id, value in zip(known, values)])
 
     def values(self, ids) -> tuple:
         """The canonical object of each node id."""

@@ -14,6 +14,7 @@ from typing import Sequence, TypeVar
 
 from ..diagnostics import BASELINE_FILE, error
 from .ci_findings import Finding
+from . import indented_json
 
 SCHEMA = "rapidmc-baseline/1"
 
@@ -25,7 +26,7 @@ def format_baseline(command: str, findings: Sequence[Finding]) -> str:
     entries = [{"rule": rule, "file": path, "message": message, "count": count}
                for (rule, path, message), count in sorted(counts.items())]
     document = {"schema": SCHEMA, "command": command, "findings": entries}
-    return json.dumps(document, indent=1, ensure_ascii=False) + "\n"
+    return indented_json.dumps(document, 1) + "\n"
 
 
 def read_baseline(path: str, command: str) -> Counter:

@@ -7,11 +7,11 @@ critical, blocker) and ``location`` (``path`` relative to the working folder, ``
 """
 from __future__ import annotations
 
-import json
 from typing import Sequence
 
 from ..diagnostics import Diagnostic
 from .ci_findings import Finding, fingerprints, from_diagnostics
+from . import indented_json
 
 
 def format_codeclimate(findings: Sequence[Finding]) -> str:
@@ -24,7 +24,7 @@ def format_codeclimate(findings: Sequence[Finding]) -> str:
         "fingerprint": fingerprint,
         "location": {"path": finding.path, "lines": {"begin": finding.line}},
     } for finding, fingerprint in zip(findings, fingerprints(findings))]
-    return json.dumps(issues, indent=1, ensure_ascii=False) + "\n"
+    return indented_json.dumps(issues, 1) + "\n"
 
 
 def format_codeclimate_errors(diagnostics: Sequence[Diagnostic], first_file: str) -> str:

@@ -3,12 +3,12 @@ JSON and SARIF (``sarif.format_sarif_diagnostics``: one result per finding, a fl
 steps as its code flow)."""
 from __future__ import annotations
 
-import json
 from collections import Counter
 from typing import Sequence
 
 from ..diagnostics import Diagnostic, render
 from .sarif import format_sarif_diagnostics
+from . import indented_json
 
 
 def format_lint_text(findings: Sequence[Diagnostic], lines: int, files: int) -> str:
@@ -53,7 +53,7 @@ def format_lint_json(findings: Sequence[Diagnostic], exit_code: int, lines: int)
     document = {"findings": [finding_json(f) for f in findings],
                 "summary": {level: counts[level] for level in ("error", "warning", "note")},
                 "lines": lines, "exit_code": exit_code}
-    return json.dumps(document, indent=1, ensure_ascii=False) + "\n"
+    return indented_json.dumps(document, 1) + "\n"
 
 
 def format_lint_sarif(findings: Sequence[Diagnostic], exit_code: int) -> str:

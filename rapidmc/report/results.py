@@ -33,6 +33,7 @@ from .headline import read_data
 from .line_width import wrapped
 from .trace_text import IDENTIFIER, TextOptions, file_names
 from .trace_slice import with_robot
+from . import indented_json
 
 SCHEMA = "rapidmc-check/1"
 
@@ -214,7 +215,7 @@ def format_json(results: Sequence[PropertyResult], describer: Optional[TraceDesc
                 "warnings": [warning_json(warning) for warning in warnings],
                 "errors": [error_json(e) for e in errors if e.code != MORE_ERRORS],
                 "errors_not_shown": omitted_count(errors)}
-    return json.dumps(document, indent=2, ensure_ascii=False) + "\n"
+    return indented_json.dumps(document, 2) + "\n"
 
 
 def format_json_entries(entries: Sequence[tuple[str, Sequence[PropertyResult], Optional[TraceDescriber]]],
@@ -230,7 +231,7 @@ def format_json_entries(entries: Sequence[tuple[str, Sequence[PropertyResult], O
                             for entry, results, describer in entries],
                 "warnings": [warning_json(warning) for warning in warnings],
                 "errors": [], "errors_not_shown": 0}
-    return json.dumps(document, indent=2, ensure_ascii=False) + "\n"
+    return indented_json.dumps(document, 2) + "\n"
 
 
 def format_json_errors(errors: Sequence[Diagnostic], command: Optional[Sequence[str]]) -> str:

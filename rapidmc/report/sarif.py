@@ -24,6 +24,7 @@ from .ci_findings import violation_anchor
 from .results import PropertyResult, described_formula
 from ..check.result import UNKNOWN, VIOLATED
 from ..check.trace import Trace, TraceDescriber, TraceStep, build_trace
+from . import indented_json
 
 SARIF_SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 
@@ -59,7 +60,7 @@ def format_sarif_entries(entries: Sequence[tuple[str, Sequence[PropertyResult], 
         runs.append(run)
     document = json.loads(_document([], [], exit_code))
     document["runs"] = runs
-    return json.dumps(document, indent=2, ensure_ascii=False) + "\n"
+    return indented_json.dumps(document, 2) + "\n"
 
 
 def _assumptions(results: Sequence[PropertyResult], rules: list, sarif_results: list) -> None:
@@ -127,7 +128,7 @@ def _document(rules: list, results: list, exit_code: int) -> str:
                              "exitCode": exit_code}],
         }],
     }
-    return json.dumps(document, indent=2, ensure_ascii=False) + "\n"
+    return indented_json.dumps(document, 2) + "\n"
 
 
 def _rule(name: str, description: str) -> dict:

@@ -1,0 +1,44 @@
+"""``rapidmc ARGV`` run in this process, its output captured: the tests' one way to do it.
+
+A test that asks for what a user sees (exit code, report, diagnostics) calls ``rapidmc.cli.main``
+in the test's own process, which is much cheaper than starting a fresh interpreter, with
+standard output and standard error read into strings.  Optionally it gives the command a
+standard input (``rapidmc run`` reads socket messages and file lines from it) or a working
+folder (a case's ``args`` name files relative to its folder); both are restored afterwards,
+also when the command raises.
+"""
+from __future__ import annotations
+
+import contextlib
+import io
+import os
+import sys
+from pathlib import Path
+from typing import NamedTuple
+
+from rapidmc.cli import main
+
+
+class Captured(NamedTuple):
+    code: int
+    out: str
+    err: str
+
+
+def run_cli(argv, *, stdin: str | None = None, cwd: Path | str | None = None) -> Captured:
+    """Exit code, standard output and standard error of ``rapidmc ARGV`` (each argument made a
+    string), run with ``stdin`` as standard input and from inside ``cwd`` when given."""
+    out, err = io.StringIO(), io.StringIO()
+    saved_stdin, saved_cwd = sys.stdin, os.getcwd()
+    if stdin is not None:
+        sys.stdin = io.StringIO(stdin)
+    if cwd is not None:
+        os.chdir(cwd)
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            code = main([str(argument) for argument in argv])
+    finally:
+        sys.stdin = saved_stdin
+        if cwd is not None:
+            os.chdir(saved_cwd)
+    return Captured(code, out.getvalue(), err.getvalue())
