@@ -190,6 +190,16 @@ def test_rawbytes_pack_and_unpack_follow_byte_order_and_sizes():
     assert rawbytes.from_text("0a 1F") == b"\n\x1f" and rawbytes.from_text("hi") == b"hi"
 
 
+def test_rawbytes_pack_past_the_bytes_held_leaves_a_gap_of_zeros():
+    from rapidmc.semantics import rawbytes
+    from rapidmc.semantics.errors import RapidError
+    assert rawbytes.pack(b"\x01", 4, 2.0, ("int", 1)) == b"\x01\x00\x00\x02"
+    assert rawbytes.pack(b"", 1024, 7.0, ("int", 1)) == bytes(1023) + b"\x07"
+    for start, value in ((1025, 1.0), (1024, 258.0), (0, 1.0)):
+        with pytest.raises(RapidError, match="ERR_OUTOFBND"):
+            rawbytes.pack(b"", start, value, ("int", 2) if value > 255 else ("int", 1))
+
+
 # --- gaps found in real code, now closed -------------------------------------------------
 
 def _link_error(tmp_path, text: str) -> str:

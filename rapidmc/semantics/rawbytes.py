@@ -72,10 +72,17 @@ def encode(value, encoding: tuple, network: bool) -> bytes:
 
 
 def pack(buffer, start: float, value, encoding: tuple, network: bool = False) -> bytes:
-    """``buffer`` with ``value`` written from byte ``start`` on (PackRawBytes)."""
+    """``buffer`` with ``value`` written from byte ``start`` on (PackRawBytes).
+
+    ``start`` may lie past the bytes held: the bytes skipped count as zeros and the
+    length grows to the end of ``value``; StartIndex stays within 1..1024.  The ROS
+    driver of ABB's YuMi packs a message's last joints past a gap (``PackRawBytes 0,
+    raw_message.data, 33+i*4`` after 32 bytes) in the backups of controllers that ran
+    it, so packing past the end is taken as no error (not verified on a controller)."""
     data = as_bytes(buffer)
-    index = _check_index(start, len(data), "StartIndex")
+    index = _check_index(start, MAX_BYTES - 1, "StartIndex")
     chunk = encode(value, encoding, network)
+    data = data + bytes(max(0, index - 1 - len(data)))
     result = data[:index - 1] + chunk + data[index - 1 + len(chunk):]
     if len(result) > MAX_BYTES:
         raise RapidError("ERR_OUTOFBND", f"rawbytes hold at most {MAX_BYTES} bytes")

@@ -2,6 +2,11 @@
 
 The byte layouts live in ``rapidmc.semantics.rawbytes``; this module binds
 the arguments and reads and writes the variables.
+
+PackRawBytes may start past the bytes held (StartIndex 1..1024): the
+bytes skipped are zeros. This is our reading, not verified on a controller; ABB YuMi's ROS
+driver packs a message's last joints past such a gap. UnpackRawBytes and CopyRawBytes past
+the bytes held raise ERR_OUTOFBND.
 """
 from __future__ import annotations
 
