@@ -207,7 +207,8 @@ class StatementFootprints:
                     return SHARED
                 visible = visible or self.global_keys[slot] in self.visible
             else:
-                visible = visible or self.visible_local(where, slot)
+                visible = visible or self.visible_local(
+                    self.reads.references.program.routines[where], slot)
         return VISIBLE if visible else LOCAL
 
     def call(self, task: int, routine, instruction) -> Footprint:
@@ -256,7 +257,7 @@ def statement_nodes(routine) -> dict:
 class ReferenceParameters:
     """What the parameters passed by reference (VAR, INOUT, PERS) of each routine stand
     for: the roots of the arguments every call of the routine passes, each (None, global
-    slot) or (calling routine, its own datum's slot); unknown (None) when some call
+    slot) or (calling routine's index, its own datum's slot); unknown (None) when some call
     passes anything else (a parameter passed on by reference, an optional one), names
     its arguments or leaves one out, or a late-bound call (``%name%``) may reach the
     routine.  Calls pass arguments only so (``Call``, ``LateCall``): an entry, a trap
@@ -306,8 +307,8 @@ class ReferenceParameters:
 
 
 def _root(caller, argument) -> Optional[tuple]:
-    """(None, global slot) or (caller, slot) of the datum under an argument passed by
-    reference; None for anything else."""
+    """(None, global slot) or (the caller's index, slot) of the datum under an argument
+    passed by reference; None for anything else."""
     root = target_root(argument)
     if not isinstance(root, ast.NameRef):
         return None
@@ -317,7 +318,7 @@ def _root(caller, argument) -> Optional[tuple]:
     if symbol.kind == GLOBAL_DATA:
         return None, symbol.slot
     if symbol.kind == LOCAL_DATA and not symbol.by_reference and not symbol.optional:
-        return caller, symbol.slot
+        return caller.index, symbol.slot
     return None
 
 
