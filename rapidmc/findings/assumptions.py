@@ -111,6 +111,12 @@ def assumptions(program: Program, robot_untracked: bool = False) -> tuple[Assump
                          f"{signal.also_set_by}; a WaitDO on it may end at any try, as if "
                          f"that party set the awaited value just before")
               for signal in program.signals if signal.also_set_by]
+    found += [Assumption(READING, signal.name,
+                         f"no I/O configuration is loaded: the signal AliasIO names at run "
+                         f"time at {signal.named_at_run_time} is taken as configured, a "
+                         f"{signal.kind} shown as {signal.name} (give the controller's EIO.cfg, "
+                         f"--eio, to check the name)", frozenset({"ALIASIO"}))
+              for signal in program.signals if signal.named_at_run_time]
     found += [Assumption(NO_INTERRUPT, call.name.text,
                          f"the interrupt {call.name.text} orders at "
                          f"{Path(call.span.file).name}:{call.span.line} never comes: the check "

@@ -134,6 +134,10 @@ class Signal:
     # an output the loaded code sets and a party left out sets too: who (a WaitDO on it may
     # end at any try: load.outside_outputs.outputs_set_by_both), else None
     also_set_by: Optional[str] = None
+    # with no I/O configuration loaded, the signal an AliasIO names only at run time
+    # (``AliasIO prefix + side, alias``) when the name is no signal the program names:
+    # the name expression's place, ``file:line`` (``library.signals``), else None
+    named_at_run_time: Optional[str] = None
 
 
 @dataclass
