@@ -322,6 +322,8 @@ def _local_types(routine) -> dict:
 
 
 # statements a run may leave for the one after them, with steps between that a
+DATA_CHOICE = re.compile(r"[^.{]*")    # the datum a choice of a datum's value names
+
 # counterexample may tell in one line (``RapidDescriber.compound_exits``)
 COMPOUNDS = (ast.If, ast.For, ast.While, ast.Test)
 
@@ -348,6 +350,7 @@ class RapidDescriber:
         self._texts: dict[int, tuple] = {}      # slot -> (value, its text), the latest
         self._slot_types: dict[int, dict] = {}  # routine index -> its frame slots' types
         self._compound_exits: Optional[dict] = None
+        self._data_names: Optional[frozenset] = None
 
     def _local_types(self, routine) -> dict:
         types = self._slot_types.get(routine.index)
@@ -507,9 +510,16 @@ class RapidDescriber:
                 sources[file] = lines
         return sources
 
+    def _data_choice(self, name: str) -> bool:
+        """Whether the choice ``name`` is a read of the program's data (``stCommand``,
+        ``nRunningStep{*}``, ``pk.code``), whose strings are values, not names."""
+        if self._data_names is None:
+            self._data_names = frozenset(g.name for g in self.program.globals)
+        return DATA_CHOICE.match(name).group(0) in self._data_names
+
     def describe_transition(self, label) -> TransitionInfo:
         choices, span, output = label
-        inputs = {name: _choice_text(value) for name, value in choices}
+        inputs = {name: _choice_text(value, self._data_choice(name)) for name, value in choices}
         spans = executed_spans(span)
         span = spans[0]                      # a merged step is shown at its first statement
         if span is None:
@@ -567,9 +577,10 @@ def _frame_span(routine, pc: int):
     return routine.end_span or routine.span
 
 
-def _choice_text(value) -> str:
-    """A chosen value as RAPID writes it; names (tasks, outcomes, messages) as they are."""
-    return value if isinstance(value, str) else format_value(value)
+def _choice_text(value, of_data: bool = False) -> str:
+    """A chosen value as RAPID writes it; names (tasks, outcomes, messages) as they are, a
+    string read from data (``of_data``: PERS written outside the loaded code) quoted."""
+    return value if isinstance(value, str) and not of_data else format_value(value)
 
 
 def end_at_error(system: RapidSystem, result: SearchResult) -> SearchResult:

@@ -13,7 +13,14 @@
   leaves behind;
 * a run of steps the violation does not depend on (``trace_slice``: they
   write only data that no step kept, no error line and no atom reads) told
-  in one line (``steps 2-18: waypoints{1..17} assigned, not read by the error``).
+  in one line (``steps 2-18: waypoints{1..17} assigned, not read by the error``);
+* a step that changes nothing on the line of the step after it (a one-line
+  ``IF cond statement``: its test, then its statement) shown with that step
+  (``steps 26-27``);
+* of a call's new routine data, what the steps shown read (the rest counted);
+  routine data that ends with a return is not listed (the ENDPROC says so);
+* an input chosen by the statement of its own step without the ``at file:line:col``
+  its name carries (the step's line says where).
 
 Files are named relative to the current folder when they are under it, else
 relative to the folder that holds them all, named once above the steps.
@@ -25,6 +32,7 @@ step and full values; the names are the same.
 from __future__ import annotations
 
 import json
+import os
 from dataclasses import dataclass, replace
 from typing import Iterable, Optional, Sequence, Union
 
@@ -55,6 +63,15 @@ class Folded:
     last: int
     times: int
     hidden: tuple[TraceStep, ...]
+
+
+@dataclass(frozen=True)
+class Joined:
+    """Step ``step`` shown with the step ``first`` before it, on the same line, which
+    changed nothing (``steps 26-27``)."""
+
+    first: int
+    step: TraceStep
 
 
 @dataclass(frozen=True)
@@ -90,11 +107,11 @@ def counterexample_lines(trace: Trace, options: TextOptions = TextOptions()) -> 
     hidden = {step.index for item in items if isinstance(item, SlicedAway) for step in item.steps}
     shown = [step for step in [*trace.prefix, *trace.cycle] if step.index not in hidden]
     read = options.names | frozenset().union(*map(reads_of, shown))
-    for item in items:
+    for item in _joined(items, options, trace.loop_start):
         lines.extend(_item_lines(item, options, read))
     if trace.cycle:
         lines.append("  " + LOOP_STARTS)
-        for item in _folded(trace.cycle, options):
+        for item in _joined(_folded(trace.cycle, options), options, trace.loop_start):
             lines.extend(_item_lines(item, options, read))
         lines.extend(step_lines(trace.closing, options))
         lines.append(f"  -- loop closes: back to the state of step {trace.loop_start} --")
@@ -123,6 +140,39 @@ def _prefix_items(trace: Trace, needed: frozenset, options: TextOptions) -> list
         if item is not None:
             items.append(item)
     return items
+
+
+def _joined(items: list, options: TextOptions, loop_start: Optional[int]) -> list:
+    """The items with each step that changed nothing, chose nothing and wrote nothing joined
+    to the step after it on the same line (unless ``options.full``, or it is where the loop
+    starts again)."""
+    if options.full:
+        return items
+    joined: list = []
+    skipped: Optional[TraceStep] = None
+    for item in items:
+        if skipped is not None:
+            if isinstance(item, TraceStep) and _same_line(skipped, item):
+                joined.append(Joined(skipped.index, item))
+                skipped = None
+                continue
+            joined.append(skipped)
+            skipped = None
+        if isinstance(item, TraceStep) and item.kind != INITIAL and item.transition is not None \
+                and not (item.changes or item.transition.inputs or item.transition.output) \
+                and item.index != loop_start:
+            skipped = item
+            continue
+        joined.append(item)
+    if skipped is not None:
+        joined.append(skipped)
+    return joined
+
+
+def _same_line(first: TraceStep, then: TraceStep) -> bool:
+    a, b = first.transition, then.transition
+    return b is not None and then.kind == first.kind and \
+        (a.file, a.line, a.source) == (b.file, b.line, b.source)
 
 
 def trace_files(trace: Trace) -> list[str]:
@@ -165,22 +215,30 @@ def _folded(steps: Sequence[TraceStep], options: TextOptions) -> list:
     return list(steps) if options.full else fold_repeats(steps)
 
 
-def _item_lines(item: Union[TraceStep, Folded, SlicedAway], options: TextOptions,
+def _item_lines(item: Union[TraceStep, Folded, SlicedAway, Joined], options: TextOptions,
                 read: frozenset) -> list[str]:
     if isinstance(item, Folded):
         return [folded_line(item)]
     if isinstance(item, SlicedAway):
         return [sliced_line(item)]
+    if isinstance(item, Joined):
+        return step_lines(item.step, options, read, first=item.first)
     if item.kind == INITIAL and not options.full:
         return initial_lines(item, read)
-    return step_lines(item, options)
+    return step_lines(item, options, read)
 
 
 # --- one step ----------------------------------------------------------------------
 
 
-def step_lines(step: TraceStep, options: TextOptions = TextOptions()) -> list[str]:
-    """One step: number, location and source, then inputs, output and changed values."""
+def step_lines(step: TraceStep, options: TextOptions = TextOptions(),
+               read: Optional[frozenset] = None, first: Optional[int] = None) -> list[str]:
+    """One step: number, location and source, then inputs, output and changed values.
+
+    Unless ``options.full``: routine data that ends (a return, the program stopping) is
+    not listed, and when the names the shown steps ``read`` are given, a call's new
+    routine data only where they read it (the rest counted).  ``first``: the number of
+    the step joined to this one (``steps 26-27``)."""
     transition = step.transition
     width = None if options.full else SOURCE_WIDTH
     if step.kind == INITIAL:
@@ -189,20 +247,48 @@ def step_lines(step: TraceStep, options: TextOptions = TextOptions()) -> list[st
         source = shorten(transition.source, width)
         location = shown_location(transition, options.files)
         head = f"{location}  {source}" if location else source
-    lines = [f"    step {step.index}  {head}".rstrip()]
+    number = f"steps {first}-{step.index}" if first is not None else f"step {step.index}"
+    lines = [f"    {number}  {head}".rstrip()]
     if transition is not None:
-        lines.extend(f"        input: {name} = {shorten(value, width)}"
+        lines.extend(f"        input: {_input_name(name, transition, options)} = "
+                     f"{shorten(value, None if options.full else WIDTH)}"
                      for name, value in transition.inputs.items())
         if transition.output:
             output = json.dumps(transition.output, ensure_ascii=False)
             lines.append(f"        output: {shorten(output, width)}")
     changes = step.changes
-    if not options.full and any(change.name == "program" for change in changes):
-        # the program stopped, ended or restarted: routine data that goes with it is not
-        # listed one by one (--full-trace lists it)
+    unread = 0
+    if not options.full:
         changes = tuple(change for change in changes if change.new is not None)
+        if read is not None and step.kind != INITIAL:
+            kept = tuple(change for change in changes
+                         if change.old is not None or _new_data_read(change.name, read))
+            unread, changes = len(changes) - len(kept), kept
     lines.extend(f"        {change_text(change, options.full)}" for change in changes)
+    if unread:
+        lines.append(f"        ({unread} more new {'value' if unread == 1 else 'values'} the "
+                     "trace does not read)")
     return lines
+
+
+def _input_name(name: str, transition, options: TextOptions) -> str:
+    """An input's name, without the ``at file:line:col`` of the step's own line (unless
+    ``options.full``)."""
+    if options.full or not transition.file:
+        return name
+    own = f" at {os.path.basename(transition.file)}:{transition.line}:"
+    at = name.rfind(own)
+    if at > 0 and name[at + len(own):].isdigit():
+        return name[:at]
+    return name
+
+
+def _new_data_read(name: str, read: frozenset) -> bool:
+    """Whether the steps shown read a call's new datum ``routine.name`` (by its own name:
+    the call's line names the routine, not its data)."""
+    names = data_names(name)
+    own = names[1:] if len(names) > 1 else names
+    return name in ALWAYS_SHOWN or names_errno(name) or not read.isdisjoint(own)
 
 
 def change_text(change: Change, full: bool = False) -> str:

@@ -19,6 +19,7 @@ from .trace_slice import read_part, statements_of, whole_assignments, words_of
 from .trace_text import (INDEX, SOURCE_WIDTH, STRING_WIDTH, WIDTH, TextOptions, data_names,
                          datum_of, shorten, shown_location, shown_value)
 
+INPUT_WIDTH = 40       # an input's value where it tells where a value came from
 NOT_CALLED = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?![A-Za-z0-9_]|\s*\()")   # no function's name
 
 
@@ -166,7 +167,7 @@ def _latest_values(steps: Sequence[TraceStep], word: str, words: Sequence[str],
             rewritten = step.index
         if transition is not None:             # the failing step reads what it chose
             for name, value in transition.inputs.items():
-                if name.upper() == word:
+                if name.upper() == word or name.upper() == word + "{*}":
                     return list(found.values()) + [(name, value, f"input chosen at step "
                                                     f"{step.index}" + _read_before(
                                                         steps, step, name, value))]
@@ -224,6 +225,7 @@ def _inputs_text(step: TraceStep, first: TraceStep) -> str:
             if name != TASK_CHOICE and (name not in kept or name.upper() in words)}
     text = f" by {inputs[TASK_CHOICE]}" if TASK_CHOICE in inputs else ""
     if read:
-        chosen = ", ".join(f"{name} = {value}" for name, value in read.items())
+        chosen = ", ".join(f"{name} = {shorten(value, INPUT_WIDTH)}"
+                           for name, value in read.items())
         text += f" from the input {chosen}" if len(read) == 1 else f" from the inputs {chosen}"
     return text
