@@ -27,12 +27,12 @@ from typing import Optional, Sequence
 from ..diagnostics import MORE_ERRORS, Diagnostic
 from ..diagnostics.error_report import omitted_count
 from ..check.result import UNKNOWN, VIOLATED, SearchResult, SearchStats
-from ..check.trace import Trace, TraceDescriber, TraceStep, build_trace
+from ..check.trace import INITIAL, Trace, TraceDescriber, TraceStep, build_trace
 from .counterexample import chosen_inputs_only, counterexample_lines, trace_files
 from .headline import read_data
 from .line_width import wrapped
-from .trace_text import IDENTIFIER, TextOptions, file_names
-from .trace_slice import with_robot
+from .trace_text import IDENTIFIER, TextOptions, data_names, file_names
+from .trace_slice import needed_steps, reads_of, with_robot
 from . import indented_json
 
 SCHEMA = "rapidmc-check/1"
@@ -71,7 +71,11 @@ def format_text(results: Sequence[PropertyResult], describer: TraceDescriber,
     lines: list[str] = []
     for checked in results:
         lines.append(verdict_line(checked))
-        lines.extend(assumption_lines(checked))
+        trace = build_trace(checked.result, describer) \
+            if checked.result.verdict == VIOLATED else None
+        options = text_options(checked, describer, full)
+        lines.extend(assumption_lines(checked, trace_words(trace, options)
+                                      if trace is not None and not full else None))
         if checked.fair_tasks:
             lines.append(f"  {fairness_text(checked.fair_tasks)}")
         stats = checked.result.stats
@@ -84,10 +88,9 @@ def format_text(results: Sequence[PropertyResult], describer: TraceDescriber,
             lines.append(f"  formula: {checked.formula}")
             if checked.atom_tasks:
                 lines.append(f"  {atoms_text(checked.atom_tasks)}")
-            trace = build_trace(checked.result, describer)
             if checked.result.reason:
                 lines.append(f"  {files_shown(checked.result.reason, trace)}")
-            lines.extend(counterexample_lines(trace, text_options(checked, describer, full)))
+            lines.extend(counterexample_lines(trace, options))
     return wrapped("\n".join(lines)) + "\n"
 
 
@@ -143,16 +146,76 @@ ASSUMPTION_WIDTH = 240
 PLACE = re.compile(r" \([^()]*:\d+\)$")       # `` (Teaching.mod:25)`` ending an assumption
 
 
-def assumption_lines(checked: PropertyResult) -> list[str]:
+def assumption_lines(checked: PropertyResult, read: Optional[frozenset] = None) -> list[str]:
     """``  assumes: stub GripOpen is empty (Missing.mod:12)``, one line each, at most
     ``MAX_ASSUMPTIONS_SHOWN`` and a count of the rest, each within about
-    ``ASSUMPTION_WIDTH`` characters (JSON lists them all, in full)."""
-    shown = [f"  assumes: {short_assumption(text)}"
-             for text in checked.assumes[:MAX_ASSUMPTIONS_SHOWN]]
-    rest = len(checked.assumes) - MAX_ASSUMPTIONS_SHOWN
+    ``ASSUMPTION_WIDTH`` characters (JSON lists them all, in full).
+
+    Under a counterexample (``read``: the names its steps use, ``trace_words``) the
+    assumptions about what it uses come first, and of the others only as many are shown
+    as make ``MAX_ASSUMPTIONS_SHOWN_BESIDE_TRACE`` in all (the rest counted)."""
+    assumes = merged_assumptions(checked.assumes)
+    limit = MAX_ASSUMPTIONS_SHOWN
+    about = 0
+    if read is not None:
+        used = [text for text in assumes if assumption_subject(text) in read]
+        assumes = used + [text for text in assumes if assumption_subject(text) not in read]
+        about = len(used)
+        limit = min(MAX_ASSUMPTIONS_SHOWN, max(about, MAX_ASSUMPTIONS_SHOWN_BESIDE_TRACE))
+    shown = [f"  assumes: {short_assumption(text)}" for text in assumes[:limit]]
+    rest = len(assumes) - limit
     if rest > 0:
-        shown.append(f"  assumes: ... and {rest} more (--format json lists them all)")
+        others = " on what this counterexample does not use" if about <= limit and \
+            read is not None else ""
+        shown.append(f"  assumes: ... and {rest} more{others} (--format json lists them all)")
     return shown
+
+
+MAX_ASSUMPTIONS_SHOWN_BESIDE_TRACE = 3
+QUOTED = re.compile(r'"(?:[^"]|"")*"')
+
+
+def merged_assumptions(texts: Sequence[str]) -> list[str]:
+    """The assumptions with those that differ only in the one string they quote told in
+    one (``CRobT reads the calling task's robot for \\TaskName:="T_ROB1", "T_ROB2", which
+    names no loaded task``), at the place of the first."""
+    groups: dict[str, list[str]] = {}
+    for text in texts:
+        quoted = QUOTED.findall(text)
+        key = QUOTED.sub('""', text) if len(quoted) == 1 else text
+        groups.setdefault(key, []).append(text)
+    merged = []
+    for key, members in groups.items():
+        if len(members) == 1:
+            merged.append(members[0])
+            continue
+        strings = ", ".join(dict.fromkeys(QUOTED.search(text).group(0) for text in members))
+        merged.append(key.replace('""', strings, 1))
+    return merged
+SUBJECT = re.compile(r"^(?:PERS |stub |the )?([A-Za-z][A-Za-z0-9_]*)")
+
+
+def assumption_subject(text: str) -> str:
+    """What an assumption is about, upper case: the PERS, the stub or the routine it names
+    first (``PERS nRunningStep is written outside ...``: NRUNNINGSTEP; ``CRobT reads ...``:
+    CROBT)."""
+    found = SUBJECT.match(text)
+    return found.group(1).upper() if found else ""
+
+
+def trace_words(trace: Trace, options: TextOptions) -> frozenset:
+    """The names a counterexample uses: every identifier of the statements of the steps
+    the violation depends on (``trace_slice``) and of the data they change, upper case."""
+    words = set(options.names)
+    needed = needed_steps(trace, options.names, options.handler_starts, options.compound_exits)
+    for step in [*trace.prefix, *trace.cycle, *([trace.closing] if trace.closing else [])]:
+        if step.index not in needed and step is not trace.closing:
+            continue
+        words.update(reads_of(step))
+        if step.kind != INITIAL:           # (the initial state holds every datum)
+            for change in step.changes:
+                words.update(data_names(change.name))
+    return frozenset(words)
 
 
 def short_assumption(text: str) -> str:
