@@ -265,6 +265,39 @@ def test_slice_keeps_a_step_that_raised_an_error_and_one_that_chose_an_input():
         [1, 2, 3, 9, 11, 13]
 
 
+def test_slice_tells_one_routines_data_from_anothers_of_the_same_name():
+    # Main's loop counter i is not Fill's i: the error in Fill reads Fill's own, so Main's
+    # writes are left out; a routine without an i of its own reads the global one
+    from rapidmc.check.trace import CallFrame, Trace
+    from rapidmc.report.trace_slice import needed_steps
+
+    def in_(routines, index, source, *changed):
+        frames = tuple(CallFrame(name, "p.mod", line) for name, line in routines)
+        return TraceStep(index, TRANSITION, TransitionInfo("p.mod", index, source),
+                         tuple(Change(name, "0", "1") for name in changed), frames)
+    main, fill = ("Main", 4), ("Fill", 6)
+    steps = (TraceStep(1, INITIAL, None, ()),
+             in_([main], 2, "i := 1;", "Main.i"),
+             in_([main], 3, "i := 2;", "Main.i"),
+             in_([main], 4, "Fill;", "Fill.i"),
+             in_([main, fill], 5, "i := 0;", "Fill.i"),
+             in_([main, fill], 6, "y := 1 / i;"))
+    assert sorted(needed_steps(Trace(steps, (), None, "uncaught ERR_DIVZERO"))) == [1, 4, 5, 6]
+    # Show has no i of its own: the i it reads is a global one, which a write of the
+    # global i keeps and Main's writes do not
+    show = ("Show", 6)
+    shown = steps[:3] + (in_([main], 4, "i := 3;", "i"), in_([main], 5, "Show;"),
+                         in_([("Main", 5), show], 6, "y := 1 / i;"))
+    assert sorted(needed_steps(Trace(shown, (), None, "uncaught ERR_DIVZERO"))) == \
+        [1, 4, 5, 6]
+    # with several tasks the names stay plain (every task's frames are in the stack)
+    tasks = tuple(TraceStep(s.index, s.kind, s.transition, s.changes,
+                            tuple(CallFrame(f.routine, f.file, f.line, "T_ROB1") for f in s.stack))
+                  for s in steps)
+    assert sorted(needed_steps(Trace(tasks, (), None, "uncaught ERR_DIVZERO"))) == \
+        [1, 2, 3, 4, 5, 6]
+
+
 def test_a_long_assumption_is_cut_with_its_place_kept():
     from rapidmc.report.results import short_assumption
     text = "PERS Welds1 is written outside the loaded code; its reads take " + \

@@ -89,17 +89,41 @@ def read_part(source: str) -> str:
     return " ".join(re.findall(r"\{([^}]*)\}", target)) + " " + value
 
 
-def reads_of(step: TraceStep) -> frozenset:
+def reads_of(step: TraceStep, scoped: frozenset = frozenset()) -> frozenset:
     """What the step may read: every identifier its statements name, an assignment's target
     left out (not its indexes), and the robot's position when a statement calls a function
-    that reads it."""
+    that reads it.  ``scoped`` (``routine_data``): an identifier that names data of the
+    routine the step runs in is that datum, ``ROUTINE.NAME``."""
     words = set()
     for text in statements_of(step):
         named = words_of(text)
         if named and named[0] not in CONTROL_WORDS and not LABEL.match(text):
             named = words_of(read_part(text))
         words.update(named)
-    return with_robot(words)
+    return with_robot(_in_scope(words, step, scoped))
+
+
+def routine_data(steps: Sequence[TraceStep]) -> frozenset:
+    """``ROUTINE.NAME`` of each routine datum the trace changes (``Main.i``), for a run of
+    one task: a name its routine's statements use means that datum and no other (RAPID's
+    routine data are seen by their routine alone).  Empty with several tasks."""
+    if any(frame.task for step in steps for frame in step.stack):
+        return frozenset()
+    routines = {frame.routine.upper() for step in steps for frame in step.stack}
+    found = set()
+    for step in steps:
+        for change in step.changes:
+            parts = INDEX.sub("", change.name).upper().split(".")
+            if len(parts) > 1 and parts[0] in routines:
+                found.add(f"{parts[0]}.{parts[1]}")
+    return frozenset(found)
+
+
+def _in_scope(words, step: TraceStep, scoped: frozenset) -> set:
+    if not scoped or not step.stack:
+        return set(words)
+    routine = step.stack[-1].routine.upper()
+    return {f"{routine}.{word}" if f"{routine}.{word}" in scoped else word for word in words}
 
 
 def with_robot(words) -> frozenset:
@@ -107,18 +131,23 @@ def with_robot(words) -> frozenset:
     return frozenset(words | {ROBOT} if ROBOT_READERS.intersection(words) else words)
 
 
-def writes_of(step: TraceStep) -> frozenset:
+def writes_of(step: TraceStep, scoped: frozenset = frozenset()) -> frozenset:
     """Every identifier a changed name may be about (``main.reg1{2}``: MAIN and REG1), and
     the datum of each assignment's target (an assignment of the value it had changes
-    nothing, yet the value read after it comes from it)."""
+    nothing, yet the value read after it comes from it).  ``scoped`` (``routine_data``):
+    a routine's datum is ``ROUTINE.NAME`` alone."""
     found = set()
     for text in statements_of(step):
         target, assigns, _ = text.partition(":=")
         if assigns and ASSIGNED.match(target):
             found.add(IDENTIFIER.match(target.strip()).group().upper())
+    found = _in_scope(found, step, scoped)
     for change in step.changes:
-        name = change.name.removeprefix("signal ")
-        found.update(part.upper() for part in INDEX.sub("", name).split(".")[:2])
+        parts = INDEX.sub("", change.name.removeprefix("signal ")).upper().split(".")
+        if len(parts) > 1 and f"{parts[0]}.{parts[1]}" in scoped:
+            found.add(f"{parts[0]}.{parts[1]}")
+        else:
+            found.update(parts[:2])
     return frozenset(found)
 
 
@@ -162,6 +191,9 @@ def needed_steps(trace: Trace, names: Iterable[str] = (),
     elif trace.prefix:
         needed.add(trace.prefix[-1].index)
     single = _plain_names(steps)
+    # routine data by routine (a loop counter i of one routine is not another's i), for a
+    # path that ends in an error: a cycle's and a property's reads stay plain names
+    scoped = routine_data(steps) if not (trace.cycle or trace.bad_prefix) else frozenset()
     prefix = steps[:len(trace.prefix)]
     left = _returned_calls(prefix, handler_starts)
     for end, start in _left_compounds(prefix, compound_exits).items():
@@ -169,26 +201,26 @@ def needed_steps(trace: Trace, names: Iterable[str] = (),
     number = len(trace.prefix) - 1
     while number >= 0:
         start = left.get(number)
-        if start is not None and not any(_needed_inside(step, needed, read)
+        if start is not None and not any(_needed_inside(step, needed, read, scoped)
                                          for step in steps[start:number + 1]):
             number = start - 1          # the whole stretch: nothing kept reads what it did
             continue
         step = steps[number]
         number -= 1
         if step.index in needed or is_control(step, _raises(steps, number + 1, handler_starts)) \
-                or not read.isdisjoint(writes_of(step)):
+                or not read.isdisjoint(writes_of(step, scoped)):
             needed.add(step.index)
-            reads = reads_of(step)
+            reads = reads_of(step, scoped)
             read -= (_whole_assigned(step) & single) - reads
             read |= reads
             needed.update(call.index for call in _entering_calls(steps, number + 1))
     return frozenset(needed)
 
 
-def _needed_inside(step: TraceStep, needed: set, read: set) -> bool:
+def _needed_inside(step: TraceStep, needed: set, read: set, scoped: frozenset) -> bool:
     """Whether a step inside a returned call keeps the call: it is kept already, writes
     what a kept step reads, or changes ERRNO or the program's status."""
-    return step.index in needed or not read.isdisjoint(writes_of(step)) or \
+    return step.index in needed or not read.isdisjoint(writes_of(step, scoped)) or \
         any(change.name in ALWAYS_KEPT or names_errno(change.name) for change in step.changes)
 
 
