@@ -438,7 +438,10 @@ def net_changes(steps: Iterable[TraceStep]) -> list[Change]:
 def sliced_line(sliced: SlicedAway) -> str:
     """``-- steps 2-18: waypoints{1..17} assigned, not read by the error --``."""
     steps = sliced.steps
-    names = list(dict.fromkeys(change.name for step in steps for change in step.changes))
+    changes = [change for step in steps for change in step.changes]
+    names = list(dict.fromkeys(change.name for change in changes if change.new is not None))
+    ended = list(dict.fromkeys(change.name.split(".")[0] for change in changes
+                               if change.new is None and "." in change.name))
     robots = [name for name in names if name.endswith(ROBOT_TCP)]
     entries = _name_ranges([name for name in names if name not in robots])
     what = []
@@ -446,6 +449,8 @@ def sliced_line(sliced: SlicedAway) -> str:
         more = len(entries) - SLICED_SHOWN
         what.append(", ".join(entries[:SLICED_SHOWN]) + (f" and {more} more" if more > 0
                                                         else "") + " assigned")
+    if ended:
+        what.append(f"{', '.join(ended)} returned")
     if robots:
         what.append("the robot moved" if len(robots) == 1 else "the robots moved")
     what.extend(_outputs_written(steps))
