@@ -216,9 +216,9 @@ def _counters(inputs: int) -> str:
 
 
 def test_a_local_clusters_batches_pass_outside_the_object_store(cluster, tmp_path):
-    """Counters N=7 (114,695 states): a round's batches reach about 0.4 MB, above Ray's
-    default 100 KiB for objects passed inline, so by default each went through the shared
-    object store and each worker mapped about 3.5 MB of its pages (measured).  The local
+    """Counters N=7 (114,695 states): the wide levels' batches are above Ray's default
+    100 KiB for objects passed inline, so by default they went through the shared object
+    store and each worker mapped about 3.5 MB of its pages (measured).  The local
     cluster's settings (``LOCAL_SYSTEM_CONFIG``, as ``--workers N`` starts it) pass them in
     the calls' messages: the same states, and no more than a few pages mapped."""
     from dataclasses import replace

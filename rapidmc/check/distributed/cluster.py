@@ -37,10 +37,10 @@ CONNECT_SECONDS = 20      # how long --ray ADDRESS may take to answer
 # A local cluster passes objects of up to 16 MiB inline, in the gRPC message of the call
 # that returns or takes them, instead of through the shared object store (Ray's default:
 # above 100 KiB).  A round's batches are mostly above 100 KiB on big models (counters
-# N=10: about 0.8 MB); through the store each one cost the raylet CPU (its creation,
+# N=10: 0.4 MB on average); through the store each one cost the raylet CPU (its creation,
 # sealing and release: 2.4 s of CPU at counters N=10) and left the store's pages a worker
 # read mapped in its memory (about 28 MB per worker there).  (A joined cluster keeps its
-# own settings: ``ray start --system-config`` sets them there, docs/distributed.md.)
+# own settings: the same ones as ``RAY_`` variables of ``ray start``, docs/distributed.md.)
 LOCAL_SYSTEM_CONFIG = {"max_direct_call_object_size": 16 << 20,
                        "task_rpc_inlined_bytes_limit": 64 << 20}
 
