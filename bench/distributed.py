@@ -67,8 +67,9 @@ from rapidmc import api  # noqa: E402
 def _start_ray(ray, workers: int) -> float:
     """Start a local Ray cluster of ``workers`` CPUs, quietly; the seconds it took."""
     started = time.perf_counter()
+    from rapidmc.check.distributed.cluster import LOCAL_SYSTEM_CONFIG   # (as --workers N)
     ray.init(num_cpus=workers, include_dashboard=False, logging_level=logging.ERROR,
-             log_to_driver=False)
+             log_to_driver=False, _system_config=LOCAL_SYSTEM_CONFIG)
     return time.perf_counter() - started
 
 

@@ -33,6 +33,7 @@ import pytest
 
 from rapidmc.check import check_property, find_reachable
 from rapidmc.check.budget import SearchBudget
+from rapidmc.check.distributed.cluster import LOCAL_SYSTEM_CONFIG
 from rapidmc.check.result import HOLDS, VIOLATED
 from rapidmc.check.transition_system import labelled_successors
 from rapidmc.diagnostics import EXIT_WORKER_LOST, UserError
@@ -61,7 +62,7 @@ def cluster():
     require_tool(ray is not None, "RAPIDMC_REQUIRE_RAY", "Ray is not installed (the 'ray' extra)")
     ray.cloudpickle.register_pickle_by_value(sys.modules[__name__])   # (the toy model below)
     ray.init(num_cpus=2, include_dashboard=False, logging_level=logging.ERROR,
-             log_to_driver=False)
+             log_to_driver=False, _system_config=LOCAL_SYSTEM_CONFIG)   # (as --workers 2)
     yield ray
     ray.shutdown()
 
@@ -201,6 +202,41 @@ def test_a_killed_worker_ends_the_search_without_a_verdict(cluster):
     # the next search starts afresh on new workers
     again, _, _ = _partitioned(cluster, grid, "never")
     assert again.verdict == HOLDS and again.stats.product_states == 1600
+
+
+def _counters(inputs: int) -> str:
+    """RAPID: ``inputs`` counters modulo 4, each stepped while its input is 1."""
+    lines = ["MODULE Counters"]
+    lines += [f"  VAR signaldi in{i};\n  VAR num c{i} := 0;" for i in range(inputs)]
+    lines += ["  PROC main()"] + [f'    AliasIO "IN{i}", in{i};' for i in range(inputs)]
+    lines += ["    WHILE TRUE DO"]
+    lines += [f"      IF in{i} = 1 c{i} := (c{i} + 1) MOD 4;" for i in range(inputs)]
+    lines += ["    ENDWHILE", "  ENDPROC", "ENDMODULE", ""]
+    return "\n".join(lines)
+
+
+def test_a_local_clusters_batches_pass_outside_the_object_store(cluster, tmp_path):
+    """Counters N=7 (114,695 states): the wide levels' batches are above Ray's default
+    100 KiB for objects passed inline, so by default they went through the shared object
+    store and each worker mapped about 3.5 MB of its pages (measured).  The local
+    cluster's settings (``LOCAL_SYSTEM_CONFIG``, as ``--workers N`` starts it) pass them in
+    the calls' messages: the same states, and no more than a few pages mapped."""
+    from dataclasses import replace
+    from rapidmc import api
+    from rapidmc.check.distributed.search import partitioned_reachable
+    path = tmp_path / "counters.mod"
+    path.write_text(_counters(7))
+    options = api.CheckOptions()
+    options = replace(options, reductions=replace(options.reductions, partial_order=False))
+    model = api.prepare(api.load_program([str(path)]), [], options)
+    one = find_reachable(model.system, model.system.failed, max_states=None)
+    spread, _, figures = partitioned_reachable(cluster, 2, model.system, "failed",
+                                               budget=SearchBudget(None),
+                                               rebuild=api.system_recipe(model))
+    assert spread.verdict == one.verdict == HOLDS
+    assert spread.stats.product_states == one.stats.product_states == 114_695
+    assert all(f["sent_bytes"] > 1_000_000 for f in figures)
+    assert all(f["peak_shared_kb"] < 1024 for f in figures), figures
 
 
 @pytest.mark.parametrize("name", CASES)

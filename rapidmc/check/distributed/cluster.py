@@ -34,6 +34,16 @@ EXTRA_HINT = "install it with: pip install 'rapidmc[ray]'"
 START_HINT = "start one with: ray start --head --port=6379"
 CONNECT_SECONDS = 20      # how long --ray ADDRESS may take to answer
 
+# A local cluster passes objects of up to 16 MiB inline, in the gRPC message of the call
+# that returns or takes them, instead of through the shared object store (Ray's default:
+# above 100 KiB).  A round's batches are mostly above 100 KiB on big models (counters
+# N=10: 0.4 MB on average); through the store each one cost the raylet CPU (its creation,
+# sealing and release: 2.4 s of CPU at counters N=10) and left the store's pages a worker
+# read mapped in its memory (about 28 MB per worker there).  (A joined cluster keeps its
+# own settings: the same ones as ``RAY_`` variables of ``ray start``, docs/distributed.md.)
+LOCAL_SYSTEM_CONFIG = {"max_direct_call_object_size": 16 << 20,
+                       "task_rpc_inlined_bytes_limit": 64 << 20}
+
 
 def require_ray(option: str):
     """The ``ray`` module, or the diagnostic saying how to get it."""
@@ -79,7 +89,7 @@ class Cluster:
         else:
             cpus = self.workers if self.workers is not None else \
                 min(self.swarm, os.cpu_count() or 1)
-            ray.init(num_cpus=cpus, **options)
+            ray.init(num_cpus=cpus, _system_config=LOCAL_SYSTEM_CONFIG, **options)
         try:
             yield ray
         finally:

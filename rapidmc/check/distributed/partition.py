@@ -168,6 +168,7 @@ class Partition:
         self.sent_bytes = 0                    # bytes of the batches to other partitions
         self.start_rss_kb = _peak_rss_kb()      # the process's peak before this search
         self.peak_private_kb = 0               # (``_note_memory``)
+        self.peak_shared_kb = 0                # ... of the object store's pages mapped here
         self.memory_noted = 0.0
 
     def receive(self, senders: Sequence[int], *batches) -> int:
@@ -208,10 +209,11 @@ class Partition:
             self._note_memory()
 
     def _note_memory(self, always: bool = False) -> None:
-        """The largest memory of this process not shared with Ray's object store, after
-        a round at most every ``MEMORY_EVERY`` seconds and at the end (Linux: /proc; the
-        peak RSS counts the store's pages this process mapped, which the one-process search
-        has none of).  (Reading /proc after every round cost a narrow level's round a
+        """The largest memory of this process not shared with Ray's object store, and the
+        largest share of the store's pages it mapped (which the one-process search has
+        none of: ``cluster.LOCAL_SYSTEM_CONFIG`` keeps a local cluster's batches out of
+        the store), after a round at most every ``MEMORY_EVERY`` seconds and at the end
+        (Linux: /proc).  (Reading /proc after every round cost a narrow level's round a
         tenth of a millisecond.)"""
         now = time.monotonic()
         if not always and now - self.memory_noted < MEMORY_EVERY:
@@ -221,9 +223,11 @@ class Partition:
             with open("/proc/self/status") as status:
                 fields = dict(line.split(":", 1) for line in status)
             private = int(fields["RssAnon"].split()[0]) + int(fields["RssFile"].split()[0])
+            shared = int(fields["RssShmem"].split()[0])
         except (OSError, KeyError, ValueError):
             return
         self.peak_private_kb = max(self.peak_private_kb, private)
+        self.peak_shared_kb = max(self.peak_shared_kb, shared)
 
     def _step(self, advance: bool, senders: Sequence[int], batches) -> tuple:
         stored = self.receive(senders, *batches)
@@ -390,6 +394,7 @@ class Partition:
                 "cpu_seconds": time.process_time() - self.cpu_started,
                 "step_seconds": self.step_seconds, "sent_bytes": self.sent_bytes,
                 "start_rss_kb": self.start_rss_kb, "peak_private_kb": self.peak_private_kb,
+                "peak_shared_kb": self.peak_shared_kb,
                 "max_rss_kb": _peak_rss_kb(), "pid": os.getpid()}
 
 
