@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 from dataclasses import dataclass, replace
 from typing import Iterable, Optional, Sequence, Union
 
@@ -72,6 +73,14 @@ class Joined:
 
     first: int
     step: TraceStep
+
+
+@dataclass(frozen=True)
+class Tested:
+    """Steps ``steps``: an IF's condition and the ELSEIF conditions after it, each false,
+    none changing anything (shown as the first with a count)."""
+
+    steps: tuple[TraceStep, ...]
 
 
 @dataclass(frozen=True)
@@ -148,6 +157,7 @@ def _joined(items: list, options: TextOptions, loop_start: Optional[int]) -> lis
     starts again)."""
     if options.full:
         return items
+    items = _tests_told_once(items)
     joined: list = []
     skipped: Optional[TraceStep] = None
     for item in items:
@@ -167,6 +177,58 @@ def _joined(items: list, options: TextOptions, loop_start: Optional[int]) -> lis
     if skipped is not None:
         joined.append(skipped)
     return joined
+
+
+ELSEIF = re.compile(r"^ELSEIF\b", re.IGNORECASE)
+FEWEST_TESTS = 3       # an IF and its ELSEIFs told in one line from this many on
+
+
+def _tests_told_once(items: list) -> list:
+    """The items with each run of steps that test an IF's conditions one after another
+    (its IF, then ELSEIFs, or ELSEIFs alone), each changing, choosing and writing nothing,
+    told as one ``Tested`` when ``FEWEST_TESTS`` or more of them are followed by another
+    test of the chain (so each of those was false); the last test stays a step."""
+    told: list = []
+    run: list[TraceStep] = []
+
+    def flush():
+        # each test but the last was false (an ELSEIF of its chain followed it); the last
+        # may have held: it stays a step of its own
+        if len(run) - 1 >= FEWEST_TESTS:
+            told.append(Tested(tuple(run[:-1])))
+            told.append(run[-1])
+        else:
+            told.extend(run)
+        run.clear()
+    for item in items:
+        if isinstance(item, TraceStep) and _a_silent_test(item) and (
+                ELSEIF.match(item.transition.source) if run else True) and (
+                not run or item.transition.file == run[-1].transition.file):
+            if not run and not re.match(r"^(ELSE)?IF\b", item.transition.source, re.IGNORECASE):
+                told.append(item)
+                continue
+            run.append(item)
+            continue
+        flush()
+        told.append(item)
+    flush()
+    return told
+
+
+def _a_silent_test(step: TraceStep) -> bool:
+    transition = step.transition
+    return step.kind != INITIAL and transition is not None and not (
+        step.changes or transition.inputs or transition.output)
+
+
+def tested_line(tested: Tested, options: TextOptions) -> str:
+    """``steps 44-51  LogicZ.mod:76-98  IF A_onlySide1 = TRUE THEN  (and 7 ELSEIF tests
+    after it: all false)``."""
+    first, last = tested.steps[0], tested.steps[-1]
+    location = shown_location(first.transition, options.files)
+    source = shorten(first.transition.source, SOURCE_WIDTH)
+    return (f"    steps {first.index}-{last.index}  {location}-{last.transition.line}  {source}"
+            f"  (and {len(tested.steps) - 1} ELSEIF tests after it: all false)")
 
 
 def _same_line(first: TraceStep, then: TraceStep) -> bool:
@@ -215,7 +277,7 @@ def _folded(steps: Sequence[TraceStep], options: TextOptions) -> list:
     return list(steps) if options.full else fold_repeats(steps)
 
 
-def _item_lines(item: Union[TraceStep, Folded, SlicedAway, Joined], options: TextOptions,
+def _item_lines(item: Union[TraceStep, Folded, SlicedAway, Joined, Tested], options: TextOptions,
                 read: frozenset) -> list[str]:
     if isinstance(item, Folded):
         return [folded_line(item)]
@@ -223,6 +285,8 @@ def _item_lines(item: Union[TraceStep, Folded, SlicedAway, Joined], options: Tex
         return [sliced_line(item)]
     if isinstance(item, Joined):
         return step_lines(item.step, options, read, first=item.first)
+    if isinstance(item, Tested):
+        return [tested_line(item, options)]
     if item.kind == INITIAL and not options.full:
         return initial_lines(item, read)
     return step_lines(item, options, read)
