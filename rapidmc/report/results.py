@@ -142,7 +142,7 @@ def verdict_line(checked: PropertyResult) -> str:
 MAX_ASSUMPTIONS_SHOWN = 6
 
 
-ASSUMPTION_WIDTH = 240
+ASSUMPTION_WIDTH = 160
 PLACE = re.compile(r" \([^()]*:\d+\)$")       # `` (Teaching.mod:25)`` ending an assumption
 
 
@@ -227,6 +227,8 @@ def short_assumption(text: str) -> str:
     place = PLACE.search(text)
     body = text[:place.start()] if place else text
     cut = body.rfind("; ", 0, ASSUMPTION_WIDTH)
+    if cut <= 0:
+        cut = body.rfind(" ", 0, ASSUMPTION_WIDTH) - 1     # at a word's end
     return (body[:cut + 1] if cut > 0 else body[:ASSUMPTION_WIDTH]) + " ... " \
         "(--format json lists it whole)" + (place.group(0) if place else "")
 
