@@ -142,7 +142,7 @@ def verdict_line(checked: PropertyResult) -> str:
 MAX_ASSUMPTIONS_SHOWN = 6
 
 
-ASSUMPTION_WIDTH = 160
+ASSUMPTION_WIDTH = 240
 PLACE = re.compile(r" \([^()]*:\d+\)$")       # `` (Teaching.mod:25)`` ending an assumption
 
 
