@@ -50,7 +50,7 @@ LOOP_STARTS = "-- loop starts here (repeats forever) --"
 LONGEST_PERIOD = 40    # the longest stretch of steps looked for as a repeat
 FEWEST_REPEATS = 3     # a stretch folds when it runs at least this many times in a row
 NET_SHOWN = 4          # values listed after a folded stretch (then a count)
-SLICED_SHOWN = 6       # data named in a line of steps left out (then a count)
+SLICED_SHOWN = 4       # data named in a line of steps left out (then a count)
 FOLDED_WIDTH = 40      # each of them, at most
 ELEMENTS_SHOWN = 4     # changed elements of a long array listed in a step (then a count)
 ALWAYS_SHOWN = ("program", "ERRNO")
@@ -398,9 +398,12 @@ def initial_lines(step: TraceStep, read: frozenset) -> list[str]:
     """The initial state: the values of the data the trace reads, and a count of the rest."""
     shown = [change for change in step.changes
              if change.name in ALWAYS_SHOWN or names_errno(change.name) or not read.isdisjoint(data_names(change.name))]
+    rest = len(step.changes) - len(shown)
+    if rest and not shown:
+        return [f"    step {step.index}  initial state ({rest} {'value' if rest == 1 else 'values'}"
+                ", none read by the trace: --full-trace shows them)"]
     lines = [f"    step {step.index}  initial state"]
     lines.extend(f"        {change_text(change)}" for change in shown)
-    rest = len(step.changes) - len(shown)
     if rest:
         lines.append(f"        ({rest} more {'value' if rest == 1 else 'values'} the trace "
                      "does not read: --full-trace shows them)")
@@ -507,14 +510,19 @@ def sliced_line(sliced: SlicedAway) -> str:
     ended = list(dict.fromkeys(change.name.split(".")[0] for change in changes
                                if change.new is None and "." in change.name))
     robots = [name for name in names if name.endswith(ROBOT_TCP)]
-    entries = _name_ranges([name for name in names if name not in robots])
+    routines = {frame.routine for step in steps for frame in step.stack}
+    # the cell's data first, the routines' own (``HomeReturn.nActPos``) after them
+    names = sorted((name for name in names if name not in robots),
+                   key=lambda name: name.split(".")[0] in routines)
+    entries = _name_ranges(names)
     what = []
     if entries:
         more = len(entries) - SLICED_SHOWN
         what.append(", ".join(entries[:SLICED_SHOWN]) + (f" and {more} more" if more > 0
                                                         else "") + " assigned")
     if ended:
-        what.append(f"{', '.join(ended)} returned")
+        what.append(f"{', '.join(ended)} returned" if len(ended) <= 2 else
+                    f"{len(ended)} routines returned")
     if robots:
         what.append("the robot moved" if len(robots) == 1 else "the robots moved")
     what.extend(_outputs_written(steps))
