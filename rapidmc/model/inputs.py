@@ -32,9 +32,10 @@ def observed_inputs(program: Program, atoms: AtomCompiler):
     interrupt; the other inputs stay chosen where read (a backup with eleven
     digital inputs and one ``ISignalDI`` offered 2,048 input valuations per
     step before).  An atom that reads signal data (bound at run time), an
-    interrupt ordered on a routine's parameter, or on signal data that an AliasIO
-    binds to a signal ``alias_bindings`` cannot read, makes every input observed (signal
-    data whose AliasIO calls name their signals watches those).  A late-bound call (``%name%``) binds to user procedures only
+    interrupt ordered on a routine's parameter, or on signal data that a binding
+    ``alias_bindings`` cannot read gives a signal, makes every input observed (signal
+    data whose AliasIO calls name their signals, or name them at run time, watches
+    those: ``alias_bindings``).  A late-bound call (``%name%``) binds to user procedures only
     (``statements._LateBindingCall``), whose orders this walk sees.
     """
     if atoms.observes_signal_data:

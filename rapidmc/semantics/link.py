@@ -49,6 +49,9 @@ class Linker:
         # names one at run time (any signal may then be read)
         self.named_signals: Optional[set] = set()
         self.signal_by_key: dict[str, P.Signal] = {}
+        # each AliasIO call's (file, line, column) -> (the target's signal kind, the index of
+        # its stand-in signal or None, whether its source is a string): model.alias_bindings
+        self.alias_sources: dict[tuple, tuple] = {}
         self.system = Scope()
         self.namespaces: dict[int, Scope] = {}
         self.module_scopes: dict[tuple[int, str], Scope] = {}
@@ -315,6 +318,7 @@ class Linker:
         self.errors.raise_if_any()
         linked = P.Program(self.routines, self.globals, self.signals, entry_index,
                            options=self.options, signal_index=self.signal_by_key)
+        linked.alias_sources = self.alias_sources
         linked.named_signals = (None if self.named_signals is None
                                 else frozenset(self.named_signals))
         linked.task_entries = task_entries

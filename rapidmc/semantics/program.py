@@ -151,6 +151,7 @@ class Program:
     files: tuple = ()
     options: dict = field(default_factory=dict)
     signal_index: dict = field(default_factory=dict)       # key -> Signal
+    alias_sources: dict = field(default_factory=dict)      # AliasIO calls (link.Linker)
     routine_index: dict = field(default_factory=dict)      # (namespace, key) -> routine index (global)
     scopes: Any = None                                     # name resolution for atoms
     environment_reads_io: bool = False                     # some environment code reads signals

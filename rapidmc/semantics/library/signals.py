@@ -174,6 +174,8 @@ def _alias_io(calls, compiler, call, entry):
 
         def source_index(m):
             signal = m.program.signal_index.get(name_fn(m).upper())
+            if signal is not None and signal.named_at_run_time:
+                signal = None           # (a stand-in is no configured name)
             if signal is None and stand_in is not None:
                 return stand_in.index
             if signal is None:
@@ -185,10 +187,18 @@ def _alias_io(calls, compiler, call, entry):
     else:
         from ..calls import signal_designator
         source_index = signal_designator(compiler, source, target_type)
+        stand_in = None
+    linker.alias_sources[span_key(call.span)] = (kind, None if stand_in is None else
+                                                 stand_in.index, source_value.type is STRING)
 
     def alias(m):
         m.write_ref(target_ref(m), source_index(m))
     return Action(call.span, alias)
+
+
+def span_key(span) -> tuple:
+    """What an AliasIO call is recorded under (``Linker.alias_sources``)."""
+    return (span.file, span.line, span.column)
 
 
 def _run_time_signal(linker, source, kind: str):
