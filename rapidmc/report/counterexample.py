@@ -41,7 +41,7 @@ from ..check.trace import INITIAL, Change, Trace, TraceStep
 from ..semantics.robots import ROBOT_TCP
 from ..semantics.task_registers import names_errno
 from .headline import headline_lines
-from .trace_slice import needed_steps, reads_of
+from .trace_slice import _returned_calls, needed_steps, reads_of
 from .trace_text import (INDEX, SOURCE_WIDTH, STRING_WIDTH, WAS_WIDTH, WIDTH,
                          TextOptions, array_elements, data_names, file_names, shorten,
                          shown_location, shown_value)
@@ -84,6 +84,15 @@ class Tested:
 
 
 @dataclass(frozen=True)
+class RanThrough:
+    """Steps ``steps``: the whole run of a routine ``routine`` the path called and came back
+    from, choosing no input and raising no error inside (shown as what it left behind)."""
+
+    routine: str
+    steps: tuple[TraceStep, ...]
+
+
+@dataclass(frozen=True)
 class SlicedAway:
     """Steps ``steps`` (two or more in a row) that the violation does not depend on, ``reader``
     naming what does (``the error``)."""
@@ -113,6 +122,7 @@ def counterexample_lines(trace: Trace, options: TextOptions = TextOptions()) -> 
     lines.append(head)
     items = _prefix_items(trace, needed_steps(trace, options.names, options.handler_starts,
                                               options.compound_exits), options)
+    items = _calls_told_once(items, trace, options)
     hidden = {step.index for item in items if isinstance(item, SlicedAway) for step in item.steps}
     shown = [step for step in [*trace.prefix, *trace.cycle] if step.index not in hidden]
     read = options.names | frozenset().union(*map(reads_of, shown))
@@ -149,6 +159,74 @@ def _prefix_items(trace: Trace, needed: frozenset, options: TextOptions) -> list
         if item is not None:
             items.append(item)
     return items
+
+
+FEWEST_CALL_STEPS = 3   # a call's run told in one line from this many steps on
+
+
+def _calls_told_once(items: list, trace: Trace, options: TextOptions) -> list:
+    """The prefix's items with each routine call the path came back from told in one
+    ``RanThrough`` (the call's own step stays): where no step inside chose an input or set
+    ERRNO or the program's status, the run inside followed from the state at the call, so
+    what it left behind says all of it.  The outermost such call, ``FEWEST_CALL_STEPS`` or
+    more steps long, and only where no item reaches out of it; not with ``options.full``
+    or several tasks (``trace_slice._returned_calls``)."""
+    if options.full or not items:
+        return items
+    prefix = trace.prefix
+    chosen: list[tuple[int, int]] = []          # (first, last) step indexes
+    for end, start in sorted(_returned_calls(prefix, options.handler_starts).items(),
+                             key=lambda pair: (pair[1], -pair[0])):
+        inside = prefix[start:end + 1]
+        first, last = inside[0].index, inside[-1].index
+        if len(inside) < FEWEST_CALL_STEPS or any(a <= first and last <= b for a, b in chosen):
+            continue
+        if any(step.transition is None or step.transition.inputs or any(
+                change.name in ALWAYS_SHOWN or names_errno(change.name)
+                for change in step.changes) for step in inside):
+            continue
+        chosen.append((first, last))
+    if not chosen:
+        return items
+    spans = [_index_span(item) for item in items]
+    kept = [(a, b) for a, b in chosen
+            if all(b < lo or hi < a or (a <= lo and hi <= b) for lo, hi in spans)]
+    told: list = []
+    by_first = {step.index: step for step in prefix}
+    for item, (lo, hi) in zip(items, spans):
+        around = next(((a, b) for a, b in kept if a <= lo and hi <= b), None)
+        if around is None:
+            told.append(item)
+        elif lo == around[0] or not told or not isinstance(told[-1], RanThrough) or \
+                told[-1].steps[0].index != around[0]:
+            steps = tuple(step for step in prefix if around[0] <= step.index <= around[1])
+            routine = by_first[around[0]].stack[-1].routine if by_first[around[0]].stack else "?"
+            told.append(RanThrough(routine, steps))
+    return told
+
+
+def _index_span(item) -> tuple[int, int]:
+    """The first and last step numbers an item of the prefix covers."""
+    if isinstance(item, TraceStep):
+        return item.index, item.index
+    steps = item.hidden if isinstance(item, Folded) else item.steps
+    return steps[0].index, steps[-1].index
+
+
+def ran_through_line(ran: RanThrough) -> str:
+    """``-- steps 4-10: ROS_init_socket ran (no input chosen); after it: server_socket =
+    <socketdev: listening> --``."""
+    steps = ran.steps
+    what = f"steps {steps[0].index}-{steps[-1].index}: {ran.routine} ran (no input chosen)"
+    said = _outputs_written(steps)
+    if said:
+        what += ", " + ", ".join(said)
+    net = _grouped(net_changes(steps))
+    if net:
+        more = len(net) - NET_SHOWN
+        what += f"; after it: {', '.join(net[:NET_SHOWN])}" + \
+            (f" and {more} more" if more > 0 else "")
+    return f"    -- {what} --"
 
 
 def _joined(items: list, options: TextOptions, loop_start: Optional[int]) -> list:
@@ -277,7 +355,7 @@ def _folded(steps: Sequence[TraceStep], options: TextOptions) -> list:
     return list(steps) if options.full else fold_repeats(steps)
 
 
-def _item_lines(item: Union[TraceStep, Folded, SlicedAway, Joined, Tested], options: TextOptions,
+def _item_lines(item: Union[TraceStep, Folded, SlicedAway, Joined, Tested, RanThrough], options: TextOptions,
                 read: frozenset) -> list[str]:
     if isinstance(item, Folded):
         return [folded_line(item)]
@@ -287,6 +365,8 @@ def _item_lines(item: Union[TraceStep, Folded, SlicedAway, Joined, Tested], opti
         return step_lines(item.step, options, read, first=item.first)
     if isinstance(item, Tested):
         return [tested_line(item, options)]
+    if isinstance(item, RanThrough):
+        return [ran_through_line(item)]
     if item.kind == INITIAL and not options.full:
         return initial_lines(item, read)
     return step_lines(item, options, read)

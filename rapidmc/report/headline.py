@@ -71,10 +71,19 @@ def read_data(steps: Sequence[TraceStep], stub_data: frozenset = frozenset()) ->
         candidates = _latest_values(steps, word, words, stub_data)
         named = [c for c in candidates if INDEX.sub("", c[0]).replace(" ", "").upper() in written
                  and "." in c[0] and datum_of(c[0], words) == data_names(c[0])[0]]
+        path = _component_path(read_part(source), word)
+        by_number = bool(path) and path[0].startswith("{")
+        element = [c for c in candidates if by_number and
+                   c[0].replace(" ", "").upper() == word + path[0].upper()]
         if named:
             found.append(named[0])
+        elif element:
+            found.append(element[0])           # the element the line names, by number
         elif candidates:
-            found.append(_part_read(candidates, _component_path(source, word), word) or candidates[0])
+            # of an element read by number, what other elements' changes do not tell: the
+            # latest value of the whole datum (or a component) holding it
+            pool = [c for c in candidates if "{" not in c[0]] if by_number else candidates
+            found.append(_part_read(pool, path, word) or candidates[0])
     return found
 
 
