@@ -184,13 +184,11 @@ def _fill(program: Program, report: dict) -> None:
 
 
 def _span(warning: dict) -> int:
-    """Lines a warning spans: its own and its places' (each place counted once)."""
-    spans = {(p["location"]["file"], p["location"]["line"], p["location"].get("end_line"))
-             for p in warning.get("places") or [] if p.get("location")}
-    if warning.get("location"):
-        at = warning["location"]
-        spans.add((at["file"], at["line"], at.get("end_line")))
-    return sum((end or line) - line + 1 for _, line, end in spans)
+    """Lines a warning spans: its own and its places' (each place counted once; a place is
+    a flat location, as the warning's own)."""
+    spans = {(at["file"], at["line"], at.get("end_line"))
+             for at in [warning.get("location"), *(warning.get("places") or [])] if at}
+    return sum(max(end or line, line) - line + 1 for _, line, end in spans)
 
 
 def cell(program: Program) -> str:

@@ -90,6 +90,8 @@ PROBE_GROWTH = 3.5
 # breadth-first search costs; a program with several stopped probes pays for each)
 WALK_STEPS = 5
 WALK_LIMIT = 60_000
+# the message probes of a check visit at most this many times a probe's bound in all
+PROBE_TOTAL = 12
 # who else writes shared PERS data in the shared data probe (a one-task program's coverage)
 ANOTHER_TASK = "another task"
 
@@ -290,14 +292,20 @@ def _probed_lines(model: Model, bound: int) -> set:
     """The lines that searches offering one probe message at a site (each site's other
     messages as derived) run: each search is small where the derived messages together
     multiply the states (``MessageDomain.probes``).  A line one of them runs is reachable,
-    complete or not, so its lines count even when ``_probe_bound`` stops it."""
+    complete or not, so its lines count even when ``_probe_bound`` stops it.  The probes
+    visit at most ``PROBE_TOTAL`` times ``bound`` states in all: the rest are not tried
+    (their lines keep the wording of the messages tried)."""
     lines: set = set()
+    spent: list = []
     for domain in model.messages:
         for probe in domain.probes:
+            if sum(spent) >= PROBE_TOTAL * bound:
+                return lines
             messages = tuple(replace(d, messages=(probe,)) if d is domain else d
                              for d in model.messages)
             config, _ = _check_config(model.program, model.atoms, model.options, messages)
-            lines |= _probe_search(model.program, model.atoms, config, bound, walks=False)[0]
+            lines |= _probe_search(model.program, model.atoms, config, bound, walks=False,
+                                   spent=spent)[0]
     return lines
 
 
@@ -391,7 +399,7 @@ def _shared_data_probe(model: Model, bound: int) -> set:
 
 
 def _probe_search(program: Program, atoms: AtomCompiler, config: CheckConfig,
-                  bound: int, walks: bool = True) -> tuple:
+                  bound: int, walks: bool = True, spent: Optional[list] = None) -> tuple:
     """The lines a coverage probe's search of ``program`` under ``config`` runs, and whether
     it was complete.  One the bound stops while inputs change at every step (an interrupt
     on each of four digital inputs multiplies each step by 16: breadth-first, the probe
@@ -399,10 +407,13 @@ def _probe_search(program: Program, atoms: AtomCompiler, config: CheckConfig,
     with those inputs held (``CheckConfig.with_inputs_held``): each state of that search
     is reachable too, so its lines count; completeness stays the first search's.  Then,
     unless ``walks`` is False (the many small per-message probes), it walks the program
-    at random, held and not (``_walked_lines``)."""
+    at random, held and not (``_walked_lines``).  ``spent``: a list the states of each
+    breadth-first search are appended to."""
+    spent = spent if spent is not None else []
     watch = ExploredFacts(program, (), atoms)
     search = find_reachable(RapidSystem(program, config, reduction.NO_PLAN), _never,
                             observe=watch, max_states=bound)
+    spent.append(search.stats.model_states)
     executed = set(watch.statements.executed)
     complete = search.verdict == HOLDS
     if complete:
@@ -411,8 +422,9 @@ def _probe_search(program: Program, atoms: AtomCompiler, config: CheckConfig,
     if config.free_inputs:
         held = ExploredFacts(program, (), atoms)
         configs.insert(0, config.with_inputs_held())
-        find_reachable(RapidSystem(program, configs[0], reduction.NO_PLAN),
-                       _never, observe=held, max_states=bound)
+        again = find_reachable(RapidSystem(program, configs[0], reduction.NO_PLAN),
+                               _never, observe=held, max_states=bound)
+        spent.append(again.stats.model_states)
         executed |= held.statements.executed
     steps = min(bound * WALK_STEPS, WALK_LIMIT) if walks else 0
     for walked in configs:

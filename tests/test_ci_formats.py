@@ -173,3 +173,27 @@ def test_the_gitlab_example_writes_the_reports_it_declares():
         if "junit" in reports:
             assert f"--junit {reports['junit']}" in script
         assert job["artifacts"]["when"] == "always"
+
+
+def test_a_warning_given_once_per_cause_carries_every_place(tmp_path, monkeypatch):
+    """An RMC701 warning grouping several stretches (findings/unreached_causes.py) has each
+    of them in the Code Quality issue, its stretch's last line as ``lines.end``: the lines
+    SARIF's relatedLocations and the JSON report's places name."""
+    case = ROOT / "tests" / "dead_code" / "routine_called_from_dead_code_only"
+    shutil.copy(case / "prog.mod", tmp_path / "prog.mod")
+    monkeypatch.chdir(tmp_path)
+    argv = ["check", "prog.mod", "--quiet"]
+    _, issues = quality(argv)
+    _, out, _ = run_cli([*argv, "--format", "json"])
+    (grouped,) = [w for w in json.loads(out)["warnings"] if w["code"] == "RMC701" and w["places"]]
+    (issue,) = [i for i in issues if i["description"] == grouped["message"]]
+
+    def lines(place: dict) -> tuple:
+        return place["line"], max(place["line"], place.get("end_line") or 0)
+    assert issue["location"]["path"] == "prog.mod"
+    assert (issue["location"]["lines"]["begin"], issue["location"]["lines"].get(
+        "end", issue["location"]["lines"]["begin"])) == lines(grouped["location"])
+    assert [(o["path"], o["lines"]["begin"], o["lines"].get("end", o["lines"]["begin"]))
+            for o in issue["other_locations"]] == \
+        [("prog.mod", *lines(place)) for place in grouped["places"]]
+    assert len(issue["other_locations"]) == 2

@@ -185,6 +185,54 @@ def test_probe_messages_reach_the_branches_coverage_would_report(monkeypatch):
         "never reached with the socket messages tried (SocketReceive at line 53)"]
 
 
+def test_probes_try_an_extra_field_the_values_compared_and_a_pose():
+    """mcubelab's pattern: an id field before the counted parameters, a parameter compared
+    with 1 (its ELSE), a pose whose quaternion must be a unit one: each is a probe."""
+    program = api.load_program([str(CHECK / "socket_field_values" / "prog.mod")])
+    [domain] = message_domains(program)
+    assert {"9 1 1 1 1 1 #", "9 1 2 1 1 1 #", "12 1 1 1 1 1 1 1 1 #",
+            "12 1 0 0 0 1 0 0 0 #"} <= set(domain.probes)
+    assert not set(domain.probes) & set(domain.messages)
+
+
+def test_without_the_probes_the_branches_are_reported(monkeypatch):
+    """The probes reach both branches of each command (the case has no ``unreached``
+    file); with no probe tried (``PROBE_TOTAL`` 0: the probes' budget spent at once), the
+    loop over the parameters and each command's inner branches are reported, with the
+    messages tried."""
+    program = api.load_program([str(CHECK / "socket_field_values" / "prog.mod")])
+    assert coverage(api.check(program)) == []
+    monkeypatch.setattr(api, "PROBE_TOTAL", 0)
+    assert coverage(api.check(program)) == [
+        "lines 46-48 of Parse are never reached with the socket messages tried "
+        "(SocketReceive at line 61)",
+        "lines 67-70 of main are never reached with the socket messages tried "
+        "(SocketReceive at line 61)",
+        "lines 75-79 of main are never reached with the socket messages tried "
+        "(SocketReceive at line 61)"]
+
+
+def test_messages_the_cap_leaves_out_are_probes(tmp_path):
+    """Thirty commands' numbers fill the domain (``MAX_MESSAGES``); the texts left out,
+    the malformed code among them ('#### ': ``IF NOT StrToVal(...)``), are probes, and
+    reach the branch no message of the domain does."""
+    cases = "\n".join(f"            CASE {n}:\n                state := {n};"
+                      for n in range(1, 31))
+    body = ("            IF StrMatch(request, 1, \"#\") > StrLen(request) THEN\n"
+            "                state := -1;\n"
+            "            ELSEIF NOT StrToVal(StrPart(request, 1, StrMatch(request, 1, \" \") - 1),"
+            " state) OR StrMatch(request, 1, \" \") = 0 THEN\n                state := -2;\n"
+            "            ELSE\n"
+            f"            TEST state\n{cases}\n            ENDTEST\n            ENDIF")
+    (tmp_path / "server.mod").write_text(SERVER.format(body=body, extra=""))
+    [domain] = message_domains(derived_program(tmp_path))
+    malformed = [text for text in domain.probes if set(text) <= {"#", " "}]
+    assert len(domain.messages) == 24 and malformed
+    assert not set(malformed) & set(domain.messages)
+    report = api.check(derived_program(tmp_path))
+    assert coverage(report) == []
+
+
 # Texts a peer might send besides the derived ones: empty, numbers, each CASE word in other
 # cases and with more after it, lists, parameters after a code, separators alone.
 OTHER_MESSAGES = ("", " ", "0", "1", "-1", "3", "99", "1.5", "a", "A", "B", "pnp", "PNP ",
@@ -192,7 +240,8 @@ OTHER_MESSAGES = ("", " ", "0", "1", "-1", "3", "99", "1.5", "a", "A", "B", "pnp
                   "2 #", "2 1 #", "3 3 #", "99 99 #", "# # #", "#", ",", "?")
 
 TEXT_SERVERS = ["socket_test_cases", "socket_parsed_code", "socket_strtoval_array",
-                "socket_field_count", "defect_socket_receive_no_time", "socket_matched_words"]
+                "socket_field_count", "defect_socket_receive_no_time", "socket_matched_words",
+                "socket_field_values"]
 
 
 def unreached_under_any_input(report: api.CheckReport) -> set:

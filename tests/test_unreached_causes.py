@@ -183,18 +183,38 @@ def test_json_sarif_and_text_carry_every_place(tmp_path, monkeypatch, capsys):
     assert "note: 2 more places: prog.mod lines 18, 23" in capsys.readouterr().err
 
 
-def test_routines_worded_apart_from_the_code_that_calls_them_are_one_warning(tmp_path):
-    """Two functions called only after the endless loop: they share its cause, but a
-    function called only from dead code keeps the wording of the inputs tried
-    (``coverage._called_from_dead_code`` counts procedures only), so they are a warning
-    of their own that names the code calling them."""
-    text = TEST_ARMS.replace(
-        "    SocketClose client;\n    Report;\n",
-        "    SocketClose client;\n    Report;\n    state := Half(Twice(state));\n").replace(
-        "  PROC Clean()", "  FUNC num Twice(num x)\n    RETURN 2 * x;\n  ENDFUNC\n"
-                          "  FUNC num Half(num x)\n    RETURN x / 2;\n  ENDFUNC\n  PROC Clean()")
+def after_the_loop(code: str, data: str, routines: str) -> str:
+    """TEST_ARMS with ``code`` after the endless loop's code, ``data`` declared after
+    ``state`` and ``routines`` before Clean."""
+    return TEST_ARMS.replace("    Report;\n", "    Report;\n" + code).replace(
+        "  VAR num state := 0;\n", "  VAR num state := 0;\n" + data).replace(
+        "  PROC Clean()", routines + "  PROC Clean()")
+
+
+def test_functions_called_only_after_the_endless_loop_join_its_warning(tmp_path):
+    """Two functions called only after the endless loop never run whatever a client
+    sends, as Report does: one warning "under any input" with the loop's other code
+    (``coverage._called_from_dead_code`` counts functions as well as procedures)."""
+    text = after_the_loop("    state := Half(Twice(state));\n", "",
+                          "  FUNC num Twice(num x)\n    RETURN 2 * x;\n  ENDFUNC\n"
+                          "  FUNC num Half(num x)\n    RETURN x / 2;\n  ENDFUNC\n")
     warnings = {w.span.line: w for w in unreached(check(tmp_path, text))}
-    assert warnings[36].message == (
-        "never reached with the socket messages tried (SocketReceive at line 12): routines "
-        "Twice, Half, called only in the code after the endless WHILE loop at line 11")
-    assert [(p.line, p.end_line) for p in warnings[36].places] == [(39, 41)]
+    assert warnings[32].message == (
+        "never reached under any input: the code after the endless WHILE loop at line 11 "
+        "(lines 32-34 of main) and the routines only that code calls (Twice, Half, Report)")
+    assert [(p.line, p.end_line) for p in warnings[32].places] == [(36, 38), (39, 41), (45, 49)]
+
+
+def test_routines_worded_apart_from_the_code_that_calls_them_are_one_warning(tmp_path):
+    """Two TRAPs connected only after the endless loop share its cause, but keep the
+    wording of the inputs tried (``coverage`` never counts a TRAP as called only from dead
+    code), so they are a warning of their own that names the code connecting them."""
+    text = after_the_loop("    CONNECT tick WITH OnTick;\n    CONNECT tock WITH OnTock;\n",
+                          "  VAR intnum tick;\n  VAR intnum tock;\n",
+                          "  TRAP OnTick\n    state := 7;\n  ENDTRAP\n"
+                          "  TRAP OnTock\n    state := 8;\n  ENDTRAP\n")
+    warnings = {w.span.line: w for w in unreached(check(tmp_path, text))}
+    assert warnings[39].message == (
+        "never reached with the socket messages tried (SocketReceive at line 14): routines "
+        "OnTick, OnTock, called only in the code after the endless WHILE loop at line 13")
+    assert [(p.line, p.end_line) for p in warnings[39].places] == [(42, 44)]

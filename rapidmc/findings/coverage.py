@@ -35,6 +35,7 @@ from ..semantics.library.program_control import CALLS_BY_NAME
 from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
 
 NOT_STATEMENTS = (EndRoutine, EndUndo)      # ENDPROC / end of UNDO: not a line to run
+CALLED = ("PROC", "FUNC")       # routines that run only where a call of them does (not TRAPs)
 ANY_INPUT = "under any input"
 # an UNDO handler runs when its routine is left by EXIT, a reset or a moved program pointer
 # (and inside the step of the EXIT that ends the program, where no state shows its lines)
@@ -180,12 +181,13 @@ def _undo_lines(program: Program) -> frozenset:
 
 def _called_from_dead_code(program: Program, dead: dict, called: Optional[frozenset]
                            ) -> frozenset:
-    """The names of the procedures every call of which is dead under any input: after a
-    jump (``dead``), or in a routine no chain of calls reaches (outside ``called``) or
-    itself called from dead code only (dtcameron's ``CloseConnection``, called once after
-    ``WHILE TRUE``).  Such a routine never runs whatever the inputs.  None when the
-    program calls procedures by name (any may be the one) or ``called`` is unknown; a
-    TRAP or a function (called from expressions, by CONNECT) is never counted."""
+    """The names of the procedures and functions every call of which is dead under any
+    input: after a jump (``dead``), or in a routine no chain of calls reaches (outside
+    ``called``) or itself called from dead code only (dtcameron's ``CloseConnection``,
+    called once after ``WHILE TRUE``; a checksum function called only there).  Such a
+    routine never runs whatever the inputs.  None when the program calls procedures by
+    name (any may be the one) or ``called`` is unknown; a TRAP (run by an interrupt a
+    CONNECT orders, wherever that is) is never counted."""
     if called is None:
         return frozenset()
     return _called_only_where(program, lambda caller, key: caller not in called
@@ -194,25 +196,29 @@ def _called_from_dead_code(program: Program, dead: dict, called: Optional[frozen
 
 def _called_only_where(program: Program, where, eligible: Optional[frozenset] = None
                        ) -> frozenset:
-    """The names of the procedures (of ``eligible``, when given) that some call reaches
-    and every call of which is ``where(calling routine's name, (file, line))`` or in a
-    procedure so found; none when a procedure may be called by a name computed at run
-    time, or a name is twice (LOCAL routines of several modules)."""
-    if _calls_by_name(program):
+    """The names of the procedures and functions (of ``eligible``, when given) that some
+    call reaches and every call of which is ``where(calling routine's name, (file, line))``
+    or in a routine so found; none when a procedure may be called by a name computed at
+    run time, or a name is twice (LOCAL routines of several modules).  Calls are read in
+    every routine, the environment model's too (a call there is no dead code)."""
+    if _calls_by_name(program) or any(
+            isinstance(node, ast.LateBindingCall) for routine in program.routines
+            if routine.ast is not None for node, _ in ast.walk(routine.ast)):
         return frozenset()
     sites: dict = {}                 # routine key -> [(calling routine's name, file, line)]
-    for routine in _watched_routines(program):
+    for routine in program.routines:
         if routine.ast is None:
             continue
         for node, _ in ast.walk(routine.ast):
             if isinstance(node, (ast.ProcedureCall, ast.FunctionCall, ast.Connect)):
                 key = node.trap.key if isinstance(node, ast.Connect) else node.name.key
                 sites.setdefault(key, []).append(
-                    (routine.name, node.span.file, node.span.line))
+                    (None if routine.namespace == ENVIRONMENT_NAMESPACE else routine.name,
+                     node.span.file, node.span.line))
     procedures = {routine.key: routine.name for routine in _watched_routines(program)
-                  if routine.kind == "PROC"}
+                  if routine.kind in CALLED}
     if len(procedures) != len({r.name for r in _watched_routines(program)
-                               if r.kind == "PROC"}):
+                               if r.kind in CALLED}):
         return frozenset()
     found: set = set()
     changed = True
@@ -222,7 +228,7 @@ def _called_only_where(program: Program, where, eligible: Optional[frozenset] = 
             if name in found or (eligible is not None and name not in eligible) \
                     or not sites.get(key):
                 continue
-            if all(caller in found or where(caller, (file, line))
+            if all(caller is not None and (caller in found or where(caller, (file, line)))
                    for caller, file, line in sites[key]):
                 found.add(name)
                 changed = True

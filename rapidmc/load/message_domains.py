@@ -67,7 +67,9 @@ SCANS = ("STRFIND", "STRMATCH", "STRPART", "STRTOVAL")   # what a loop over fiel
 BRACKETS = {"[": "]", "(": ")", "{": "}", "<": ">"}   # around a list the code reads
 TEXT_LIMIT = 80               # characters a string holds (a longer message is cut)
 MAX_FIELDS = 16               # the fields of a split message a use may name (parts{16})
-MAX_PROBES = 64               # per receiving site: each is one small search for coverage
+MAX_PROBES = 128              # per receiving site: each is one small search for coverage
+MAX_VARIANTS = 16             # per command, the fields' values a probe tries together
+MAX_CUT = 32                  # probes for the values the domain's cap leaves out
 PROBE_STATES = 20000          # states a probe's search may visit (its lines count even so)
 
 
@@ -394,6 +396,9 @@ class Uses:
         self.parsed_numbers: list = []           # (view of the text, number) parsed, compared
         self.lengths: set = set()                # numbers the message's length is compared with
         self.counted: list = []                  # (dispatch, number): a count of fields compared
+        # (dispatch, k, op, number): element k of an array the fields are parsed into,
+        # compared (``IF params{1} = 1`` in ``CASE 9``)
+        self.elements: list = []
         self.lists: dict[str, int] = {}          # routine -> StrToVal calls on parts cut at run time
         self.paths: dict[tuple, set] = {}        # (name, component, ...) -> views of that part
         self.exact = True                        # every read tells apart only what was tried
@@ -644,6 +649,10 @@ class Uses:
                 self.extent = max(self.extent, int(offset + number))
                 self.bounds.add(int(offset + number))
         text = _string_value(other, scope)
+        element = self._parsed_element(carried)
+        if element is not None and number_value(other, scope) is not None:
+            self.elements.append((self._dispatch(parents, scope), element, op,
+                                  number_value(other, scope)))
         views = {self._in_branches(view, parents, scope) for view in self.view_of(carried)}
         if text is not None and op in EQUALITY:
             self.compared.extend((view, text) for view in views)
@@ -666,6 +675,19 @@ class Uses:
                 self.parsed_numbers.append((view[1], number))
             elif view == COUNT and number >= 0 and number == int(number):
                 self.counted.append((self._dispatch(parents, scope), int(number)))
+
+    def _parsed_element(self, expr) -> Optional[int]:
+        """``k`` when ``expr`` is ``name{k}`` (a literal whole index) of an array that
+        fields of the message are parsed into (``StrToVal(part, params{i})``)."""
+        if not (isinstance(expr, ast.Index) and isinstance(expr.base, ast.NameRef)
+                and len(expr.indices) == 1):
+            return None
+        if not any(view is not None and view[0] == "parsed"
+                   for view in self.views.get(expr.base.name.key, ())):
+            return None
+        index = _literal_number(expr.indices[0])
+        return int(index) if index is not None and index == int(index) \
+            and 1 <= index <= MAX_FIELDS else None
 
     def _dispatch(self, parents, scope) -> Optional[tuple]:
         """The innermost choice on a value taken from the message that the node (the last
@@ -788,6 +810,20 @@ class Uses:
 
     def text_messages(self) -> tuple[tuple, str]:
         """The string messages that tell the code's choices apart, and what they come from."""
+        messages = self._in_order()
+        bounded = messages[:MAX_MESSAGES - 1]
+        if self.compared or self.searched or not self.parsed:
+            # (data only parsed: the malformed text is already one nothing expects)
+            unexpected = UNEXPECTED
+            while unexpected in messages:
+                unexpected += UNEXPECTED
+            bounded.append(unexpected)
+        return tuple(bounded), self._reason()
+
+    def _ranked_forms(self) -> list:
+        """Per value the code tells apart, the messages that give it, likeliest first (the
+        domain keeps the first ``MAX_MESSAGES`` - 1 of ``_rank_major``'s order; values left
+        without a message there get probes)."""
         heads = [text for view, text in self.compared if view in (IDENTITY, ("part", 1))]
         wanted = [(view, text) for view, text in self.compared]
         wanted += [(view, format_num(number)) for view, number in self.parsed_numbers]
@@ -808,18 +844,13 @@ class Uses:
         # a list of as many numbers as a routine parses from parts it cuts ('[1,1,1]'),
         # and each word matched, alone and heading such a list ('MOVE,1,1')
         ranked[1:1] = [[form] for form in self._words() + self._list_forms()]
-        messages = [forms[rank] for rank in range(max(map(len, ranked), default=0))
-                    for forms in ranked if rank < len(forms)]
-        messages.extend(self.searched)
-        messages.extend(self._length_forms())
-        bounded = list(dict.fromkeys(messages))[:MAX_MESSAGES - 1]
-        if self.compared or self.searched or not self.parsed:
-            # (data only parsed: the malformed text is already one nothing expects)
-            unexpected = UNEXPECTED
-            while unexpected in messages:
-                unexpected += UNEXPECTED
-            bounded.append(unexpected)
-        return tuple(bounded), self._reason()
+        return ranked
+
+    def _in_order(self) -> list:
+        """Every message of ``_ranked_forms`` in ``_rank_major``'s order, then the texts
+        searched for and the lengths compared, each once."""
+        return list(dict.fromkeys(_rank_major(self._ranked_forms()) + self.searched
+                                  + self._length_forms()))
 
     def _list_forms(self) -> list:
         """Per number of parts a routine cuts and parses, a list of that many "1"s after the
@@ -867,17 +898,34 @@ class Uses:
     def probe_messages(self) -> tuple:
         """Messages that reach the branches comparing a count of fields (``IF nParams =
         7`` in ``CASE 1``), each the dispatch's text followed by that many fields "1", and
-        one with another count per dispatch.  They are probes: tried one at a time, for
-        coverage only, since the settings such branches store multiply the states of a
-        search offered them all together."""
+        one with another count per dispatch (``_counted``: and their variants); and the
+        messages the domain's cap (``MAX_MESSAGES``) leaves out.  They are probes: tried
+        one at a time, for coverage only, since the settings such branches store multiply
+        the states of a search offered them all together."""
         counts, forms = self._counts(), []
         for view, text in self._parsed_texts():
             if view is None and counts:
                 numbers = counts.get((view, text), set())
                 other = next(n for n in range(len(numbers) + 1) if n not in numbers)
-                forms += self._counted(text, sorted(numbers) + [other])
-        forms += self._counted("1", sorted(counts.get(None, ())))
-        return tuple(sorted(dict.fromkeys(forms), key=_natural))[:MAX_PROBES]
+                forms += self._counted(text, sorted(numbers) + [other], (view, text))
+        forms += self._counted("1", sorted(counts.get(None, ())), None)
+        # and, first, the likeliest two messages of each value the domain's cap
+        # (``MAX_MESSAGES``) leaves without one (the malformed code after twenty commands'
+        # numbers): each tells a choice of the code apart
+        ranked = self._ranked_forms() + [[text] for text in self.searched
+                                         + self._length_forms()]
+        offered = set(self._in_order()[:MAX_MESSAGES - 1])
+        texts = {text for _, text in forms}
+        cut = [text for value in ranked if offered.isdisjoint(value)
+               for text in value[:2] if text not in texts]
+        cut = list(dict.fromkeys(cut))[:MAX_CUT]
+        # the counted forms by kind (every command's count first, then values, extra
+        # fields, zeros), as many as the cap leaves room for, in the commands' order
+        tiers = {text: tier for tier, text in sorted(forms, reverse=True)
+                 if text not in offered}
+        kept = sorted(tiers.items(),
+                      key=lambda item: (item[1], _natural(item[0])))[:MAX_PROBES - len(cut)]
+        return tuple(cut) + tuple(sorted((text for text, _ in kept), key=_natural))
 
     def _counts(self) -> dict:
         """The counts of fields compared, by the dispatch whose branch compares them
@@ -889,11 +937,62 @@ class Uses:
             counts.setdefault(dispatch, set()).add(count)
         return counts
 
-    def _counted(self, head: str, counts: list) -> list:
-        """``head`` followed by each count of fields, as the code splits them."""
+    def _counted(self, head: str, counts: list, dispatch) -> list:
+        """``head`` followed by each count of fields "1", as the code splits them, and by
+        one field more (a field the code reads before those it counts: mcubelab's id
+        code); and, per element of the array the fields are parsed into that the
+        dispatch's branch compares with numbers (``IF params{1} = 1``), the fields with
+        that element at each class of those comparisons (``ELSE``: '9 2 1 1 1 #')."""
         separator, last = _separators(self.searched)
-        forms = (head + (separator + "1") * count + separator + last for count in counts)
-        return [form for form in forms if len(form) <= TEXT_LIMIT]
+        variants = self._element_variants(dispatch)
+        forms = []                  # (tier, text): the likelier kinds first
+        for count in counts:
+            for before in (0, 1):
+                for number, values in enumerate(variants):
+                    fields = ["1"] * (before + count)
+                    for k, value in values.items():
+                        if k <= count:
+                            fields[before + k - 1] = format_num(value)
+                    forms.append((before * 2 + (number > 0),
+                                  head + "".join(separator + f for f in fields)
+                                  + separator + last))
+                # and zeros (joints a command may check against limits), and zeros ending
+                # in the identity rotation (1 0 0 0) when there are four fields or more: a
+                # pose a command may check for a unit quaternion
+                zeros = ["1"] * before + ["0"] * count
+                pose = zeros[:-4] + ["1", "0", "0", "0"] if count >= 4 else zeros
+                forms += [(4, head + "".join(separator + f for f in fields) + separator + last)
+                          for fields in (zeros, pose)]
+        return [(tier, form) for tier, form in forms if len(form) <= TEXT_LIMIT]
+
+    def _element_variants(self, dispatch) -> list:
+        """The element values to try together in a probe of ``dispatch`` (element k ->
+        value; {} first: every field "1"): one per class of the comparisons of each element
+        (its numbers, and one other where they are only = and <>; else a number between
+        and beyond them), every combination when there are at most ``MAX_VARIANTS``, else
+        each element's alone."""
+        compared: dict = {}
+        for where, k, op, number in self.elements:
+            if where == dispatch:
+                compared.setdefault(k, []).append((op, number))
+        points = {}
+        for k, uses in sorted(compared.items()):
+            numbers = sorted({number for _, number in uses})
+            if all(op in EQUALITY for op, _ in uses):
+                points[k] = tuple(numbers) + (_unnamed(set(numbers)),)
+            else:
+                points[k] = analog_points(numbers)
+        combinations = [{}]
+        total = 1
+        for values in points.values():
+            total *= len(values)
+        if total <= MAX_VARIANTS:
+            for k, values in points.items():
+                combinations = [dict(c, **{str(k): v}) for c in combinations for v in values]
+            combinations = [{int(k): v for k, v in c.items()} for c in combinations]
+        else:
+            combinations += [{k: v} for k, values in points.items() for v in values]
+        return [{}] + [c for c in combinations if c and any(v != 1 for v in c.values())]
 
     def _reason(self) -> str:
         parts = []
@@ -988,6 +1087,14 @@ class Uses:
                     and len(text) == view[2][1]:
                 found.append((view[1], view[2][1], text))
         return list(dict.fromkeys(found))
+
+
+def _rank_major(ranked: list) -> list:
+    """The messages of ``ranked`` (per value, its messages): each value's first, then each
+    one's second, and so on, each once."""
+    messages = [forms[rank] for rank in range(max(map(len, ranked), default=0))
+                for forms in ranked if rank < len(forms)]
+    return list(dict.fromkeys(messages))
 
 
 def _placed(view, text: str, separators: list, heads: list) -> Iterator[str]:

@@ -43,6 +43,9 @@ class Finding:
     # the file the finding belongs to: its own for a diagnostic, none ("") for a property,
     # which is about the whole program wherever its counterexample ends
     owner: str = ""
+    end_line: int = 0          # the last line of a finding over several (0: ``line`` alone)
+    # a finding given once per cause: its other places, (path, first line, last line) each
+    places: tuple = ()
 
     def key(self) -> tuple[str, str, str]:
         """What makes two findings of two runs the same one (no line number)."""
@@ -73,8 +76,17 @@ def from_diagnostics(diagnostics: Sequence[Diagnostic], default_path: str,
         path = relative_path(span.file if located else default_path)
         found.append(Finding(rule=diagnostic.code.code, path=path,
                              line=span.line if located else 1, message=diagnostic.message,
-                             severity=severity_of(diagnostic.severity), owner=path))
+                             severity=severity_of(diagnostic.severity), owner=path,
+                             end_line=_last_line(span) if located else 0,
+                             places=tuple((relative_path(place.file), place.line,
+                                           _last_line(place))
+                                          for place in diagnostic.places if place.line > 0)))
     return found
+
+
+def _last_line(span) -> int:
+    """The last line of ``span`` when it covers several, else 0."""
+    return span.end_line if span.end_line > span.line else 0
 
 
 def from_results(results: Sequence[PropertyResult], describer: TraceDescriber,
