@@ -212,6 +212,8 @@ typedef struct {
     int64_t *row_keys;
     Py_ssize_t row_length, row_capacity;
     long long rows_reused;
+    /* calls and returns the machine's local runs went on through (``run_on``) */
+    long long run_frame_steps;
 } PackedTable;
 
 typedef struct {
@@ -2090,16 +2092,18 @@ static int probe_step(PackedTable *table, Scratch *scratch, const int32_t *info,
 
 /* A machine step of ``task`` run on through its merged local instructions, as
  * ``reduction.local_runs`` runs it: while the next instruction is mergeable and has one
- * transition that keeps the context (running, ERRNO, the frames' depth and modes; each
- * step changes the state).  VM_DONE (the successor's segments updated), VM_UNSUPPORTED
- * (the machine does not take a step on the way, or the run goes through a call or a
- * return: Python decides), -1. */
+ * transition that keeps running, ERRNO and the modes of the task's frames, and changes
+ * the state.  The machine's steps keep the first three, and each one it takes changes the
+ * state; its own calls and returns (``frame_step``) push a normal frame or pop the top
+ * one and keep the modes of the frames below, so a run goes on through them as
+ * ``_went_on`` lets it.  VM_DONE (the successor's segments updated), VM_UNSUPPORTED (the
+ * machine does not take a step on the way: Python decides), -1. */
 static int run_on(PackedTable *table, Scratch *scratch, Py_ssize_t task, int32_t *frame_id,
                   int32_t *data_id)
 {
     for (;;) {
         /* (the context of the step's target: a call or a return changes it) */
-        uint32_t context, reached;
+        uint32_t context;
         const int32_t *info = task_info_at(table, *frame_id, task, &context);
         int64_t pc = task_pc(table, *frame_id, info[1]);
         if (info[0] < 0 || !(order_flags(table, task, info[0], pc) & ORDER_MERGEABLE))
@@ -2109,11 +2113,9 @@ static int run_on(PackedTable *table, Scratch *scratch, Py_ssize_t task, int32_t
             return outcome;
         if (scratch->probe.count != 1)
             return VM_DONE;
+        uint32_t reached;
         task_info_at(table, scratch->probe.frames[0], task, &reached);
-        if (reached != context)
-            /* a call or a return on the way: ``local_runs`` goes on through it where the
-             * frames kept keep their modes (``_went_on``); Python takes such a run */
-            return VM_UNSUPPORTED;
+        table->run_frame_steps += reached != context;
         *frame_id = scratch->probe.frames[0];
         *data_id = scratch->probe.data[0];
     }
@@ -3639,7 +3641,7 @@ static PyObject *PackedTable_native_bytes(PackedTable *self, PyObject *unused)
 
 static PyObject *PackedTable_counts(PackedTable *self, PyObject *unused)
 {
-    return Py_BuildValue("{s:n,s:n,s:n,s:n,s:L,s:L,s:L,s:L,s:L,s:n,s:n}", "states",
+    return Py_BuildValue("{s:n,s:n,s:n,s:n,s:L,s:L,s:L,s:L,s:L,s:n,s:n,s:L}", "states",
                          self->states.count,
                          "frames", self->frames.count, "data", self->data.count,
                          "values", self->values, "machine_steps", self->machine_steps,
@@ -3647,7 +3649,8 @@ static PyObject *PackedTable_counts(PackedTable *self, PyObject *unused)
                          "task_machine_steps", self->task_machine_steps,
                          "task_python_steps", self->task_python_steps,
                          "rows_reused", self->rows_reused, "places", self->places.count,
-                         "row_keys", self->row_length);
+                         "row_keys", self->row_length,
+                         "run_frame_steps", self->run_frame_steps);
 }
 
 /* ``set_tasks(count)``: the program's tasks (2-64: each context then says where each
