@@ -3293,91 +3293,103 @@ static PyObject *PackedTable_step(PackedTable *self, PyObject *argument)
     return result;
 }
 
-/* ``successor_ids(id, valuation) -> (ids, bits) or None``: the machine's step of a stored
- * state with its successors interned: their ids in model order, and the valuation's bits
- * of each new one in id order (None when the valuation is not compiled, -1); None when
- * the machine leaves the state to Python (``check.store.ModelStore``'s fast path) */
+static PyTypeObject PackedTableType;
+
+int packed_check(PyObject *object)
+{
+    return PyObject_TypeCheck(object, &PackedTableType);
+}
+
+int packed_successor_ids(PyObject *object, Py_ssize_t id, Py_ssize_t valuation,
+                         Int32Vector *ids, Uint64Vector *bits, Int32Vector *valued)
+{
+    PackedTable *self = (PackedTable *)object;
+    ids->length = bits->length = valued->length = 0;
+    if (id < 0 || id >= self->states.count || valuation >= self->valuation_count) {
+        PyErr_Format(PyExc_IndexError, "no such state or valuation");
+        return -1;
+    }
+    if (ensure_index(self) < 0)
+        return -1;
+    if (self->scratch == NULL) {
+        self->scratch = PyMem_Calloc(1, sizeof(Scratch));
+        if (self->scratch == NULL) {
+            PyErr_NoMemory();
+            return -1;
+        }
+        if (scratch_init(self->scratch, self) < 0) {
+            PyMem_Free(self->scratch);
+            self->scratch = NULL;
+            return -1;
+        }
+    }
+    Scratch *scratch = self->scratch;
+    Successors *found = &scratch->found;
+    int outcome = machine_successors(self, id, scratch, found);
+    self->newly_executed.length = 0;
+    if (outcome < 0)
+        return -1;
+    if (outcome != VM_DONE) {
+        self->python_steps++;
+        return PACKED_UNSUPPORTED;
+    }
+    self->machine_steps++;
+    for (Py_ssize_t i = 0; i < found->count; i++) {
+        int is_new = 0;
+        Py_ssize_t successor = intern_key(self, found->frames[i], found->data[i], 1, &is_new);
+        if (successor < 0 || vector32_push(ids, successor) < 0)
+            return -1;
+        if (is_new) {
+            uint64_t value = 0;
+            int valued_here = valuation < 0 ? VM_UNSUPPORTED :
+                machine_valuation(self, valuation, successor, scratch, &value);
+            if (valued_here < 0 || vector64_push(bits, value) < 0 ||
+                    vector32_push(valued, valued_here == VM_DONE) < 0)
+                return -1;
+        }
+    }
+    return PACKED_STEPPED;
+}
+
+/* ``successor_ids(id, valuation) -> (ids, bits) or None``: ``packed_successor_ids`` for
+ * Python: the successors' ids in model order, and the valuation's bits of each new one in
+ * id order (None where the machine did not value it; all None when the valuation is not
+ * compiled, -1); None when the machine leaves the state to Python
+ * (``check.store.ModelStore``'s fast path) */
 static PyObject *PackedTable_successor_ids(PackedTable *self, PyObject *args)
 {
     Py_ssize_t id, valuation;
     if (!PyArg_ParseTuple(args, "nn", &id, &valuation))
         return NULL;
-    if (id < 0 || id >= self->states.count || valuation >= self->valuation_count)
-        return PyErr_Format(PyExc_IndexError, "no such state or valuation");
-    if (ensure_index(self) < 0)
-        return NULL;
-    if (self->scratch == NULL) {
-        self->scratch = PyMem_Calloc(1, sizeof(Scratch));
-        if (self->scratch == NULL)
-            return PyErr_NoMemory();
-        if (scratch_init(self->scratch, self) < 0) {
-            PyMem_Free(self->scratch);
-            self->scratch = NULL;
-            return NULL;
-        }
-    }
-    Scratch *scratch = self->scratch;
-    Successors *found = &scratch->found;
-    PyObject *ids = NULL, *bits = NULL, *result = NULL;
-    int outcome = machine_successors(self, id, scratch, found);
-    self->newly_executed.length = 0;
+    Int32Vector ids = {0}, valued = {0};
+    Uint64Vector bits = {0};
+    PyObject *id_items = NULL, *bit_items = NULL, *result = NULL;
+    int outcome = packed_successor_ids((PyObject *)self, id, valuation, &ids, &bits, &valued);
     if (outcome < 0)
         goto done;
-    if (outcome != VM_DONE) {
-        self->python_steps++;
+    if (outcome != PACKED_STEPPED) {
         result = Py_NewRef(Py_None);
         goto done;
     }
-    self->machine_steps++;
-    ids = PyList_New(found->count);
-    bits = valuation >= 0 ? PyList_New(0) : Py_NewRef(Py_None);
-    if (ids == NULL || bits == NULL)
+    id_items = int32_list(ids.items, ids.length);
+    bit_items = valuation >= 0 ? PyList_New(bits.length) : Py_NewRef(Py_None);
+    if (id_items == NULL || bit_items == NULL)
         goto done;
-    for (Py_ssize_t i = 0; i < found->count; i++) {
-        int is_new = 0;
-        Py_ssize_t successor = intern_key(self, found->frames[i], found->data[i], 1, &is_new);
-        if (successor < 0)
+    for (Py_ssize_t i = 0; valuation >= 0 && i < bits.length; i++) {
+        PyObject *item = valued.items[i] ? PyLong_FromUnsignedLongLong(bits.items[i]) :
+            Py_NewRef(Py_None);              /* (None: Python values this one) */
+        if (item == NULL)
             goto done;
-        PyObject *number = PyLong_FromSsize_t(successor);
-        if (number == NULL)
-            goto done;
-        PyList_SET_ITEM(ids, i, number);
-        if (is_new && valuation >= 0) {
-            uint64_t value = 0;
-            int valued = machine_valuation(self, valuation, successor, scratch, &value);
-            if (valued < 0)
-                goto done;
-            PyObject *item = valued == VM_DONE ? PyLong_FromUnsignedLongLong(value) :
-                Py_NewRef(Py_None);          /* (None: Python values this one) */
-            if (item == NULL || PyList_Append(bits, item) < 0) {
-                Py_XDECREF(item);
-                goto done;
-            }
-            Py_DECREF(item);
-        }
+        PyList_SET_ITEM(bit_items, i, item);
     }
-    result = PyTuple_Pack(2, ids, bits);
+    result = PyTuple_Pack(2, id_items, bit_items);
 done:
-    Py_XDECREF(ids);
-    Py_XDECREF(bits);
+    Py_XDECREF(id_items);
+    Py_XDECREF(bit_items);
+    vector32_free(&ids);
+    vector32_free(&valued);
+    vector64_free(&bits);
     return result;
-}
-
-/* a Python list of ints (a new reference) */
-static PyObject *id_list(const int32_t *ids, Py_ssize_t count)
-{
-    PyObject *list = PyList_New(count);
-    if (list == NULL)
-        return NULL;
-    for (Py_ssize_t i = 0; i < count; i++) {
-        PyObject *number = PyLong_FromLong(ids[i]);
-        if (number == NULL) {
-            Py_DECREF(list);
-            return NULL;
-        }
-        PyList_SET_ITEM(list, i, number);
-    }
-    return list;
 }
 
 /* ``pairs`` (a sequence of (frame id, data id), as ``python_successors`` gives them) into
@@ -3454,8 +3466,8 @@ static int watch_says(PackedTable *table, PyObject *watch, Py_ssize_t id, int by
             if (found->frames[i] != frame || found->data[i] != data)
                 return 0;
     }
-    PyObject *frames = id_list(found->frames, found->count);
-    PyObject *datas = frames == NULL ? NULL : id_list(found->data, found->count);
+    PyObject *frames = int32_list(found->frames, found->count);
+    PyObject *datas = frames == NULL ? NULL : int32_list(found->data, found->count);
     PyObject *answer = datas == NULL ? NULL :
         PyObject_CallFunction(watch, "nOO", id, frames, datas);
     Py_XDECREF(frames);
@@ -4169,8 +4181,8 @@ static int observe(PackedSearch *search, Py_ssize_t frontier, int by_machine)
                 return note_trigger(search, bits);
         }
     }
-    PyObject *frames = id_list(search->found.frames, search->found.count);
-    PyObject *datas = frames == NULL ? NULL : id_list(search->found.data, search->found.count);
+    PyObject *frames = int32_list(search->found.frames, search->found.count);
+    PyObject *datas = frames == NULL ? NULL : int32_list(search->found.data, search->found.count);
     PyObject *answer = datas == NULL ? NULL :
         PyObject_CallFunction(search->python_observe, "nOO", frontier, frames, datas);
     Py_XDECREF(frames);
