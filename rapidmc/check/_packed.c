@@ -214,7 +214,15 @@ typedef struct {
     long long rows_reused;
     /* calls and returns the machine's local runs went on through (``run_on``) */
     long long run_frame_steps;
+    /* what Python answered ``frame_step`` (``entered_context``), kept: per question (a
+     * vector of ``frame_questions``: FRAME_CALL, context, task, pc, callee, the caller's
+     * locals; or FRAME_LEAVE, context, task) the id of its answer in ``frame_answers``
+     * (entered context, pc, the caller's locals), NO_ANSWER where Python steps it */
+    VectorTable frame_questions, frame_answers;
+    Int32Vector answer_of;
 } PackedTable;
+
+#define NO_ANSWER (-1)
 
 typedef struct {
     PyObject_HEAD
@@ -1510,6 +1518,8 @@ typedef struct Scratch {     /* scratch space of the step machine */
     Int32Vector probe_changed;
     uint32_t *called;           /* the frame vector a call or a return makes */
     Py_ssize_t called_capacity;
+    uint32_t *question;         /* a question of ``entered_context``, then its answer */
+    Py_ssize_t question_capacity;
 } Scratch;
 
 static int scratch_init(Scratch *scratch, PackedTable *table)
@@ -1540,6 +1550,7 @@ static void scratch_free(Scratch *scratch)
     vector32_free(&scratch->probe_changed);
     PyMem_Free(scratch->probe_source);
     PyMem_Free(scratch->called);
+    PyMem_Free(scratch->question);
     PyMem_Free(scratch->probe.frames);
     PyMem_Free(scratch->probe.data);
     PyMem_Free(scratch->found.frames);
@@ -1806,6 +1817,77 @@ static const int32_t *task_info_at(PackedTable *table, int32_t frame_id, Py_ssiz
     return table->context_tasks + ((Py_ssize_t)*context * table->task_count + task) * TASK_INFO;
 }
 
+/* The answer (an id of ``frame_answers``: entered context, pc, the caller's locals) to a
+ * step that changes ``task``'s frames in ``context``: its call (``op`` FRAME_CALL, at
+ * ``pc``, of routine ``callee``, the caller's ``locals`` value ids at ``caller``) or its
+ * return (FRAME_LEAVE).  Python answers each question once (``called_context``,
+ * ``left_context``: a function of the context and the caller's locals); the answer is
+ * kept.  NO_ANSWER where Python steps it, -2 with an error. */
+static int32_t entered_context(PackedTable *table, Scratch *scratch, int op, uint32_t context,
+                               Py_ssize_t task, int32_t pc, int32_t callee,
+                               const uint32_t *caller, int32_t locals)
+{
+    Py_ssize_t length = op == FRAME_CALL ? 5 + locals : 3;
+    uint32_t *question = reserve(scratch->question, &scratch->question_capacity,
+                                 sizeof(uint32_t), length);
+    if (question == NULL)
+        return -2;
+    scratch->question = question;
+    question[0] = (uint32_t)op;
+    question[1] = context;
+    question[2] = (uint32_t)task;
+    if (op == FRAME_CALL) {
+        question[3] = (uint32_t)pc;
+        question[4] = (uint32_t)callee;
+        memcpy(question + 5, caller, locals * sizeof(uint32_t));
+    }
+    if (vt_index(&table->frame_questions) < 0 || vt_index(&table->frame_answers) < 0)
+        return -2;
+    int32_t asked = vt_intern(&table->frame_questions, question, length);
+    if (asked < 0)
+        return -2;
+    if (asked < table->answer_of.length)
+        return table->answer_of.items[asked];
+    PyObject *answer = op == FRAME_CALL ?
+        PyObject_CallMethod((PyObject *)table, "called_context", "nnnny#", (Py_ssize_t)context,
+                            task, (Py_ssize_t)pc, (Py_ssize_t)callee, (const char *)caller,
+                            (Py_ssize_t)(locals * sizeof(uint32_t))) :
+        PyObject_CallMethod((PyObject *)table, "left_context", "nn", (Py_ssize_t)context, task);
+    if (answer == NULL)
+        return -2;
+    int32_t answer_id = NO_ANSWER;
+    long entered = 0;
+    int new_pc = 0;
+    const char *kept = NULL;
+    Py_ssize_t kept_size = 0;
+    if (answer != Py_None) {
+        int parsed = op == FRAME_CALL ?
+            (entered = PyLong_AsLong(answer), !(entered == -1 && PyErr_Occurred())) :
+            PyArg_ParseTuple(answer, "liy#", &entered, &new_pc, &kept, &kept_size);
+        if (!parsed) {
+            Py_DECREF(answer);
+            return -2;
+        }
+        Py_ssize_t kept_count = kept_size / (Py_ssize_t)sizeof(uint32_t);
+        uint32_t *made = reserve(scratch->question, &scratch->question_capacity,
+                                 sizeof(uint32_t), 2 + kept_count);
+        if (made == NULL) {
+            Py_DECREF(answer);
+            return -2;
+        }
+        scratch->question = made;
+        made[0] = (uint32_t)entered;            /* (-1 and beyond: no context, checked) */
+        made[1] = (uint32_t)new_pc;
+        if (kept_count)
+            memcpy(made + 2, kept, kept_count * sizeof(uint32_t));
+        answer_id = vt_intern(&table->frame_answers, made, 2 + kept_count);
+    }
+    Py_DECREF(answer);
+    if (answer_id == -1 && PyErr_Occurred())
+        return -2;
+    return vector32_push(&table->answer_of, answer_id) < 0 ? -2 : answer_id;
+}
+
 /* The successor of a step that changes the task's frames (``run->frame_op``): CALL pushes
  * the callee's frame (``enter_routine``), LEAVE pops the task's frame and its caller goes
  * on after the call (``leave_routine``).  The frames below the top are the context's:
@@ -1819,62 +1901,40 @@ static int frame_step(PackedTable *table, Scratch *scratch, Run *run, const int3
                       int32_t data_id, Py_ssize_t data_length, Successors *found,
                       Int32Vector *changed)
 {
-    const int32_t *call = code + run->call_at;
-    PyObject *answer;
-    if (run->frame_op == FRAME_CALL)
-        answer = PyObject_CallMethod((PyObject *)table, "called_context", "nnnny#",
-                                     (Py_ssize_t)context, task, (Py_ssize_t)pc,
-                                     (Py_ssize_t)call[0], (const char *)(frame + where + 1),
-                                     (Py_ssize_t)(locals * sizeof(uint32_t)));
-    else
-        answer = PyObject_CallMethod((PyObject *)table, "left_context", "nn",
-                                     (Py_ssize_t)context, task);
-    if (answer == NULL)
-        return -1;
-    if (answer == Py_None) {
-        Py_DECREF(answer);
+    const int32_t *call = code + run->call_at;      /* (a call's only) */
+    int32_t answer_id = entered_context(table, scratch, run->frame_op, context, task, pc,
+                                        run->frame_op == FRAME_CALL ? call[0] : -1,
+                                        frame + where + 1, locals);
+    if (answer_id < 0)
+        return answer_id == NO_ANSWER ? VM_UNSUPPORTED : -1;
+    Py_ssize_t answer_length;
+    const uint32_t *answer = vt_items(&table->frame_answers, answer_id, &answer_length);
+    int64_t entered = answer[0];
+    int32_t new_pc = (int32_t)answer[1];
+    const uint32_t *kept = answer + 2;          /* the caller's locals (a return) */
+    Py_ssize_t kept_count = answer_length - 2;
+    if (entered < 0 || entered >= table->contexts)
         return VM_UNSUPPORTED;
-    }
-    long entered;
-    int32_t new_pc = 0;
-    const char *kept = NULL;            /* the caller's locals (a return) */
-    Py_ssize_t kept_size = 0;
-    int parsed = run->frame_op == FRAME_CALL ?
-        (entered = PyLong_AsLong(answer), !(entered == -1 && PyErr_Occurred())) :
-        PyArg_ParseTuple(answer, "liy#", &entered, &new_pc, &kept, &kept_size);
-    if (!parsed) {
-        Py_DECREF(answer);
-        return -1;
-    }
-    if (entered < 0 || entered >= table->contexts) {
-        Py_DECREF(answer);
-        return VM_UNSUPPORTED;
-    }
     /* (the context tables may have moved: Python added a context) */
     const int32_t *info = table->context_tasks + (entered * table->task_count + task) * TASK_INFO;
     int32_t top = info[0], count = info[2];
     if (top < 0 || top >= table->routine_count ||
             info[1] != where || new_pc < 0 || new_pc >= table->routines[top].length ||
             (table->projecting && table->routines[top].code == NULL) ||
-            (kept != NULL && kept_size != count * (Py_ssize_t)sizeof(uint32_t))) {
-        Py_DECREF(answer);
+            (run->frame_op == FRAME_LEAVE && kept_count != count))
         return VM_UNSUPPORTED;
-    }
     Py_ssize_t length = frame_length - locals + count, after = where + 1 + locals;
     uint32_t *made = reserve(scratch->called, &scratch->called_capacity, sizeof(uint32_t),
                              length + 1);
-    if (made == NULL) {
-        Py_DECREF(answer);
+    if (made == NULL)
         return -1;
-    }
     scratch->called = made;
     memcpy(made, frame, where * sizeof(uint32_t));
     made[0] = (uint32_t)entered;
     memcpy(made + where + 1 + count, frame + after, (frame_length - after) * sizeof(uint32_t));
     uint32_t *top_locals = made + where + 1;
-    if (kept != NULL)
-        memcpy(top_locals, kept, kept_size);
-    Py_DECREF(answer);
+    if (run->frame_op == FRAME_LEAVE)
+        memcpy(top_locals, kept, kept_count * sizeof(uint32_t));
     if (run->frame_op == FRAME_CALL) {
         int32_t initial = call[1], arguments = call[2 + initial];
         const int32_t *params = call + 3 + initial;
@@ -2554,7 +2614,8 @@ static PyObject *PackedTable_new(PyTypeObject *type, PyObject *args, PyObject *k
     self->value_slots = new_slots(FIRST_CAPACITY);
     if (self->object_ids == NULL || self->states.slots == NULL || self->value_slots == NULL ||
             vt_init(&self->frames) < 0 || vt_init(&self->data) < 0 || vt_init(&self->spare) < 0 ||
-            vt_init(&self->signals) < 0) {
+            vt_init(&self->signals) < 0 || vt_init(&self->frame_questions) < 0 ||
+            vt_init(&self->frame_answers) < 0) {
         Py_DECREF(self);
         return PyErr_Occurred() ? NULL : PyErr_NoMemory();
     }
@@ -2650,6 +2711,9 @@ static void PackedTable_dealloc(PackedTable *self)
     vt_free(&self->data);
     vt_free(&self->spare);
     vt_free(&self->signals);
+    vt_free(&self->frame_questions);
+    vt_free(&self->frame_answers);
+    vector32_free(&self->answer_of);
     PyMem_Free(self->context_io);
     vector32_free(&self->newly_executed);
     PyMem_Free(self->states.keys);
@@ -3640,6 +3704,8 @@ static PyObject *PackedTable_native_bytes(PackedTable *self, PyObject *unused)
         + self->value_capacity * (1 + sizeof(double) + sizeof(PyObject *))
         + (self->value_mask + 1) * sizeof(int32_t)
         + vt_bytes(&self->signals) + self->context_capacity * (2 * sizeof(int32_t) + 1)
+        + vt_bytes(&self->frame_questions) + vt_bytes(&self->frame_answers)
+        + self->answer_of.capacity * sizeof(int32_t)
         + self->context_tasks_capacity * self->task_count * TASK_INFO * sizeof(int32_t)
         + self->places.key_capacity * sizeof(int64_t)      /* (the reduction's numbers) */
         + (self->places.slots != NULL ? (self->places.mask + 1) * sizeof(int32_t) : 0)
