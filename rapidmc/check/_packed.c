@@ -143,6 +143,10 @@ typedef struct {
     Py_hash_t *item_memo_hash;
     int32_t *big_slots;         /* -> value id (EMPTY: free), with the tuple's hash */
     uint64_t *big_hashes;
+    /* by value id, of a big tuple: the sum of its items' parts (``big_part``), from which
+     * its hash is made, so that a tuple with one item replaced is hashed in one step */
+    uint64_t *big_sums;
+    Py_ssize_t big_sums_capacity;
     uint64_t big_mask;
     Py_ssize_t big_count;
     /* segments and states (``states``: the selected search's, see ``selected`` below) */
@@ -497,10 +501,12 @@ static int32_t number_id(PackedTable *self, int tag, double d, PyObject *object)
 #define BIG_TUPLE 32             /* tuples at least this long: ``big_tuple_id`` */
 #define ITEM_MEMO 16384          /* items' hashes remembered by address */
 
-/* the hash of a big tuple from its items' hashes (equal tuples: equal items, equal
- * hashes), -1 with an error */
-static int big_tuple_hash(PackedTable *self, PyObject *tuple, uint64_t *out)
+/* The hash of ``item`` as an item of a big tuple: a tuple's remembered by address (held,
+ * so that no other object takes the address while it is remembered).  0 or -1. */
+static int big_item_hash(PackedTable *self, PyObject *item, Py_hash_t *out)
 {
+    if (!PyTuple_Check(item))
+        return (*out = PyObject_Hash(item)) == -1 ? -1 : 0;
     if (self->item_memo_object == NULL) {
         self->item_memo_object = PyMem_Calloc(ITEM_MEMO, sizeof(PyObject *));
         self->item_memo_hash = PyMem_Calloc(ITEM_MEMO, sizeof(Py_hash_t));
@@ -509,29 +515,46 @@ static int big_tuple_hash(PackedTable *self, PyObject *tuple, uint64_t *out)
             return -1;
         }
     }
-    Py_ssize_t length = PyTuple_GET_SIZE(tuple);
-    uint64_t hash = 0x9e3779b97f4a7c15ULL ^ (uint64_t)length;
-    for (Py_ssize_t i = 0; i < length; i++) {
-        PyObject *item = PyTuple_GET_ITEM(tuple, i);
-        Py_hash_t item_hash;
-        if (PyTuple_Check(item)) {
-            uint64_t at = mix64((uint64_t)(uintptr_t)item) & (ITEM_MEMO - 1);
-            if (self->item_memo_object[at] == item)
-                item_hash = self->item_memo_hash[at];
-            else {
-                item_hash = PyObject_Hash(item);
-                if (item_hash == -1)
-                    return -1;
-                Py_INCREF(item);
-                Py_XSETREF(self->item_memo_object[at], item);
-                self->item_memo_hash[at] = item_hash;
-            }
-        }
-        else if ((item_hash = PyObject_Hash(item)) == -1)
-            return -1;
-        hash = (hash ^ (uint64_t)item_hash) * 0x100000001b3ULL;
+    uint64_t at = mix64((uint64_t)(uintptr_t)item) & (ITEM_MEMO - 1);
+    if (self->item_memo_object[at] == item) {
+        *out = self->item_memo_hash[at];
+        return 0;
     }
-    *out = mix64(hash);
+    Py_hash_t hash = PyObject_Hash(item);
+    if (hash == -1)
+        return -1;
+    Py_INCREF(item);
+    Py_XSETREF(self->item_memo_object[at], item);
+    self->item_memo_hash[at] = hash;
+    *out = hash;
+    return 0;
+}
+
+/* item ``index``'s part (its hash ``hash``) in the sum a big tuple's hash is made of: a sum,
+ * so that replacing one item changes it by two parts */
+static inline uint64_t big_part(Py_ssize_t index, Py_hash_t hash)
+{
+    return mix64((uint64_t)hash + (uint64_t)index * 0x9e3779b97f4a7c15ULL);
+}
+
+/* the hash of a big tuple of ``length`` items whose parts sum to ``sum`` */
+static inline uint64_t big_key(uint64_t sum, Py_ssize_t length)
+{
+    return mix64(sum ^ (uint64_t)length);
+}
+
+/* the sum of a big tuple's parts (equal tuples: equal items, equal sums), -1 with an
+ * error */
+static int big_tuple_sum(PackedTable *self, PyObject *tuple, uint64_t *out)
+{
+    uint64_t sum = 0;
+    for (Py_ssize_t i = 0; i < PyTuple_GET_SIZE(tuple); i++) {
+        Py_hash_t item_hash;
+        if (big_item_hash(self, PyTuple_GET_ITEM(tuple, i), &item_hash) < 0)
+            return -1;
+        sum += big_part(i, item_hash);
+    }
+    *out = sum;
     return 0;
 }
 
@@ -561,19 +584,44 @@ static int big_grow(PackedTable *self)
     return 0;
 }
 
-/* the id of a tuple of BIG_TUPLE items or more (stored when new); -1 with an error */
-static int32_t big_tuple_id(PackedTable *self, PyObject *tuple)
+/* Whether ``stored`` equals ``base`` with item ``index`` replaced by ``item`` (``item``
+ * NULL: ``base`` itself), item by item as ``==`` compares tuples: 1, 0, -1 */
+static int big_equal(PyObject *stored, PyObject *base, Py_ssize_t index, PyObject *item)
 {
-    uint64_t hash;
-    if (big_tuple_hash(self, tuple, &hash) < 0 || (self->big_slots == NULL && big_grow(self) < 0))
+    Py_ssize_t length = PyTuple_GET_SIZE(base);
+    if (!PyTuple_Check(stored) || PyTuple_GET_SIZE(stored) != length)
+        return 0;
+    for (Py_ssize_t i = 0; i < length; i++) {
+        PyObject *mine = item != NULL && i == index ? item : PyTuple_GET_ITEM(base, i);
+        PyObject *theirs = PyTuple_GET_ITEM(stored, i);
+        if (mine == theirs)
+            continue;
+        int same = PyObject_RichCompareBool(mine, theirs, Py_EQ);
+        if (same <= 0)
+            return same;
+    }
+    return 1;
+}
+
+static PyObject *replaced_at(PyObject *value, const int32_t *path, int32_t depth,
+                             PyObject *item);
+
+/* The id of the tuple of BIG_TUPLE items or more that is ``base`` with item ``index``
+ * replaced by ``item`` (``item`` NULL: ``base`` itself), whose items' parts sum to
+ * ``sum``; stored when new (the tuple made then).  -1 with an error. */
+static int32_t big_tuple_find(PackedTable *self, PyObject *base, Py_ssize_t index,
+                              PyObject *item, uint64_t sum)
+{
+    if (self->big_slots == NULL && big_grow(self) < 0)
         return -1;
+    uint64_t hash = big_key(sum, PyTuple_GET_SIZE(base));
     uint64_t at = hash & self->big_mask;
     for (;;) {
         int32_t id = self->big_slots[at];
         if (id == EMPTY)
             break;
         if (self->big_hashes[at] == hash) {
-            int same = PyObject_RichCompareBool(tuple, self->value_object[id], Py_EQ);
+            int same = big_equal(self->value_object[id], base, index, item);
             if (same < 0)
                 return -1;
             if (same)
@@ -581,14 +629,47 @@ static int32_t big_tuple_id(PackedTable *self, PyObject *tuple)
         }
         at = (at + 1) & self->big_mask;
     }
+    int32_t path = (int32_t)index;
+    PyObject *tuple = item == NULL ? Py_NewRef(base) : replaced_at(base, &path, 1, item);
+    if (tuple == NULL)
+        return -1;
     int32_t id = add_value(self, T_OBJ, 0.0, tuple);
+    Py_DECREF(tuple);                           /* (the table holds it) */
     if (id < 0)
         return -1;
+    uint64_t *sums = reserve(self->big_sums, &self->big_sums_capacity, sizeof(uint64_t),
+                             id + 1);
+    if (sums == NULL)
+        return -1;
+    self->big_sums = sums;
+    self->big_sums[id] = sum;
     self->big_slots[at] = id;
     self->big_hashes[at] = hash;
     if ((uint64_t)++self->big_count * 2 > self->big_mask + 1 && big_grow(self) < 0)
         return -1;
     return id;
+}
+
+/* the id of a tuple of BIG_TUPLE items or more (stored when new); -1 with an error */
+static int32_t big_tuple_id(PackedTable *self, PyObject *tuple)
+{
+    uint64_t sum;
+    return big_tuple_sum(self, tuple, &sum) < 0 ? -1 : big_tuple_find(self, tuple, 0, NULL, sum);
+}
+
+/* The id of the big tuple ``array`` (id ``array_id``) with item ``index`` replaced by
+ * ``item``, its sum changed by that item's two parts: the cost of a write of one element
+ * of a 512-element array does not grow with the array, and no tuple is made where the
+ * table holds it already.  -1 with an error. */
+static int32_t big_replaced_id(PackedTable *self, int32_t array_id, PyObject *array,
+                               Py_ssize_t index, PyObject *item)
+{
+    Py_hash_t before, after;
+    if (big_item_hash(self, PyTuple_GET_ITEM(array, index), &before) < 0 ||
+            big_item_hash(self, item, &after) < 0)
+        return -1;
+    uint64_t sum = self->big_sums[array_id] - big_part(index, before) + big_part(index, after);
+    return big_tuple_find(self, array, index, item, sum);
 }
 
 /* the id of any Python value; -1 with an error */
@@ -973,6 +1054,24 @@ static int integer_operands(Value a, Value b, long long *x, long long *y)
 
 #define MAX_PATH 16              /* component offsets of one element write */
 
+/* Whether the cycle collector may leave ``object`` alone: an object it does not track (a
+ * number, a string, a tuple it has found holds no such object) */
+static inline int untracked(PyObject *object)
+{
+    return !PyObject_IS_GC(object) || !PyObject_GC_IsTracked(object);
+}
+
+/* A tuple the machine made out of untracked items, out of the collector's reach as the
+ * collector itself would put it at its next pass (``_PyTuple_MaybeUntrack``): the arrays
+ * of 512 records a step writes would otherwise each be walked by the next collections. */
+static inline void untrack_tuple(PyObject *tuple)
+{
+    for (Py_ssize_t i = 0; i < PyTuple_GET_SIZE(tuple); i++)
+        if (!untracked(PyTuple_GET_ITEM(tuple, i)))
+            return;
+    PyObject_GC_UnTrack(tuple);
+}
+
 /* ``value`` with its part at ``path`` (``depth`` offsets) replaced by ``item``, the tuples
  * along the path rebuilt (``machine.replace_at``): a new reference; NULL with an error
  * set, or NULL without one where a part on the path is not a tuple that long */
@@ -1000,6 +1099,9 @@ static PyObject *replaced_at(PyObject *value, const int32_t *path, int32_t depth
             Py_INCREF(kept);
         PyTuple_SET_ITEM(changed, i, kept);
     }
+    /* (the other items are those of ``value``: untracked where it is) */
+    if (untracked(value) && untracked(inner))
+        PyObject_GC_UnTrack(changed);
     return changed;
 }
 
@@ -1323,24 +1425,32 @@ static int execute(Run *run, const int32_t *code, Py_ssize_t ip, uint64_t *bits)
             if (!integral(index.d) || index.d < 1.0 ||
                     index.d > (double)PyTuple_GET_SIZE(array))
                 FAIL(VM_ERROR);             /* ERR_OUTOFBND: Python raises */
-            int32_t path[MAX_PATH + 1];
-            path[0] = (int32_t)index.d - 1;
-            memcpy(path + 1, offsets, depth * sizeof(int32_t));
+            int32_t element = (int32_t)index.d - 1;
             int32_t value_id_ = store_id(table, value);
             if (value_id_ < 0)
                 return -1;
             PyObject *item = value_object(table, value_id_);
             if (item == NULL)
                 return -1;
-            PyObject *changed = replaced_at(array, path, depth + 1, item);
+            /* the element written: the value, or the element with its component replaced */
+            PyObject *written = replaced_at(PyTuple_GET_ITEM(array, element), offsets, depth,
+                                            item);
             Py_DECREF(item);
-            if (changed == NULL) {
+            if (written == NULL) {
                 if (PyErr_Occurred())
                     return -1;
                 FAIL(VM_UNSUPPORTED);       /* (not a record of that shape: Python's) */
             }
-            int32_t id = value_id(table, changed);
-            Py_DECREF(changed);
+            int32_t id;
+            if (PyTuple_GET_SIZE(array) >= BIG_TUPLE &&
+                    run->data[slot] < (uint32_t)table->big_sums_capacity)
+                id = big_replaced_id(table, (int32_t)run->data[slot], array, element, written);
+            else {
+                PyObject *changed = replaced_at(array, &element, 1, written);
+                id = changed == NULL ? -1 : value_id(table, changed);
+                Py_XDECREF(changed);
+            }
+            Py_DECREF(written);
             if (id < 0)
                 return -1;
             run->data_changed |= run->data[slot] != (uint32_t)id;
@@ -1364,6 +1474,7 @@ static int execute(Run *run, const int32_t *code, Py_ssize_t ip, uint64_t *bits)
                 }
                 PyTuple_SET_ITEM(tuple, i, item);
             }
+            untrack_tuple(tuple);
             int32_t id = value_id(table, tuple);
             Py_DECREF(tuple);
             if (id < 0)
@@ -2702,6 +2813,7 @@ static void PackedTable_dealloc(PackedTable *self)
     PyMem_Free(self->item_memo_hash);
     PyMem_Free(self->big_slots);
     PyMem_Free(self->big_hashes);
+    PyMem_Free(self->big_sums);
     free_program(self);
     PyMem_Free(self->value_tag);
     PyMem_Free(self->value_number);
@@ -3710,6 +3822,7 @@ static PyObject *PackedTable_native_bytes(PackedTable *self, PyObject *unused)
         + self->places.key_capacity * sizeof(int64_t)      /* (the reduction's numbers) */
         + (self->places.slots != NULL ? (self->places.mask + 1) * sizeof(int32_t) : 0)
         + (self->row_at_capacity + self->row_capacity) * sizeof(int64_t)
+        + self->big_sums_capacity * sizeof(uint64_t)
         + (self->big_slots != NULL ? (self->big_mask + 1) * (sizeof(int32_t) + sizeof(uint64_t))
            : 0);
     /* (the caches of a fixed size, ``id_cache_*`` and ``item_memo_*``, 304 KB in all, are
