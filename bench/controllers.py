@@ -231,6 +231,28 @@ and is now the largest share; the property search's per-state Python calls
 (``Product.successor_keys`` through ``ModelStore.successor_ids``) are the largest part of
 the searches left.  Counters, run-time error search in-process, N=9, four alternate runs:
 1.84, 1.78, 1.88, 1.90 s on main, 1.81, 1.71, 2.01, 1.74 s on the branch.
+
+Measured on 2026-11-29 at 22:30 (issue 27: the machine's local runs go on through its
+calls and returns; the property search steps the machine in C; Python's answers for a
+call's or a return's context kept; an element write of a big array hashed in one step
+and its tuple untracked; load 8-10 on 2 cores, CPU seconds, main 5412ce9 in a clone of
+its own and the branch run alternately, three rounds).  ``--engines native --max-states
+20000 --no-counters --no-sorter --no-costs``, the row (48,040 model states in the
+property search): with the modules' bytecode cached, as an installed package has it,
+0.77-0.81 s on main -> 0.35-0.36 s (59,600-62,100 -> 133,100-137,600 states/s); in this
+environment, whose ``PYTHONDONTWRITEBYTECODE=1`` and editable install make every start
+compile rapidmc's 211 modules (about 1.9 MB of source, 0.55 s) again, 1.35-1.43 ->
+0.92-0.93 s (33,600-35,600 -> 51,500-52,400).  The machine takes 100 % of the single
+tasks' steps of the run-time error search (98 % on main: a run through ``teach``'s call
+was Python's).  Split of the in-process check (bytecode cached): loading 0.07-0.08 s,
+run-time error search 0.05 -> 0.035 s, deadlock search 0.006 s, property search 0.13 ->
+0.058 s; what is left is start-up (importing rapidmc, about 0.17 s) and loading.  Both
+engines give the same verdicts and counts (N=8: 32,763 states; N=512: 48,040); the
+memory statistic 0.0 % of the profiled check; 146 bytes per state in the table for the
+run-time error search (141 on main).  Counters (``bench/native.py --sizes 8,9 --engines
+native``, alternate runs): N=9 run-time error search 2.06, 2.23, 2.27 s on main, 2.04,
+2.30, 2.20 s on the branch, whole command 3.49-4.07 / 3.74-4.07 s, 88 / 82-89 bytes per
+state; the property search that steps the program itself 8.0 -> 3.5 s (N=8: 1.5 -> 0.6).
 """
 from __future__ import annotations
 

@@ -316,22 +316,76 @@ def test_unreduced_waits_and_barriers_report_the_same_with_both_engines(name, mo
     assert_same_reports(waiting_arguments(name) + ["--no-por"], monkeypatch)
 
 
-@needs_native
-def test_a_whole_controller_reports_the_same_with_both_engines(tmp_path, monkeypatch):
-    """bench/controllers.py's family (two motion tasks with buffers of records, a logger,
-    PERS flags and barriers), reduced, bounded by states: the same report on both engines."""
+def family_check(folder, size: int, max_states: int) -> list[str]:
+    """The arguments of a check of bench/controllers.py's family (buffers of ``size``,
+    three kinds of command, its LTL property), the backup written into ``folder``."""
     sys.path.insert(0, str(ROOT / "bench"))
     try:
         from controllers import family_arguments, family_property, write_backup
     finally:
         sys.path.remove(str(ROOT / "bench"))
-    write_backup(tmp_path / "cell", 16)
-    (tmp_path / "cell.ltl").write_text(f"moves: {family_property(2)}\n")
-    argv = [str(tmp_path / "cell"), *family_arguments(3), "--ltl", str(tmp_path / "cell.ltl"),
-            "--max-states", "3000"]
+    write_backup(folder / "cell", size)
+    (folder / "cell.ltl").write_text(f"moves: {family_property(2)}\n")
+    return [str(folder / "cell"), *family_arguments(3), "--ltl", str(folder / "cell.ltl"),
+            "--max-states", str(max_states)]
+
+
+@needs_native
+def test_a_whole_controller_reports_the_same_with_both_engines(tmp_path, monkeypatch):
+    """bench/controllers.py's family (two motion tasks with buffers of records, a logger,
+    PERS flags and barriers), reduced, bounded by states: the same report on both engines."""
+    argv = family_check(tmp_path, 16, 3000)
     assert_same_reports(argv, monkeypatch)
     # unreduced: on the packed table, the machine stepping the tasks it can
     assert_same_reports(argv + ["--no-por"], monkeypatch)
+
+
+# one task that calls a procedure: the single task's machine leaves the call and its end
+# to Python, half of the states
+ONE_TASK_CALLS = """MODULE One
+  VAR num n := 0;
+  VAR num total := 0;
+  PROC main()
+    WHILE TRUE DO
+      n := (n + 1) MOD 4;
+      bump n;
+    ENDWHILE
+  ENDPROC
+  PROC bump(num k)
+    total := (total + k) MOD 5;
+  ENDPROC
+ENDMODULE
+"""
+
+
+@needs_native
+@pytest.mark.parametrize("program", ["family", "calls"])
+def test_the_cycle_search_steps_the_machine_in_the_compiled_core(program, tmp_path,
+                                                                 monkeypatch):
+    """A property search over a packed table computes the product's successors in C
+    (``Product.native_machine``): Python's ``successor_keys`` is never asked, and
+    ``python_successor_keys`` only for the states the machine leaves to Python (a call
+    in a program of one task); the graph not reused, the report is the Python
+    engine's."""
+    from rapidmc.check.product import Product
+    if program == "family":
+        argv = family_check(tmp_path, 8, 2000)
+    else:
+        (tmp_path / "one.mod").write_text(ONE_TASK_CALLS)
+        argv = [str(tmp_path / "one.mod"), "--formula", 'low: G "total < 10"']
+    asked = {"successor_keys": 0, "python_successor_keys": 0}
+    for name in asked:
+        original = getattr(Product, name)
+
+        def counted(self, key, original=original, name=name):
+            asked[name] += 1
+            return original(self, key)
+        monkeypatch.setattr(Product, name, counted)
+    code, document = engine_report(argv, monkeypatch, native.NATIVE, reuse=False)
+    assert asked["successor_keys"] == 0, asked
+    assert (asked["python_successor_keys"] > 0) == (program == "calls"), asked
+    monkeypatch.undo()
+    assert (code, document) == engine_report(argv, monkeypatch, native.PYTHON, reuse=False)
 
 
 @needs_native

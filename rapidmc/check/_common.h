@@ -77,6 +77,46 @@ static inline void vector32_free(Int32Vector *vector)
     vector->length = vector->capacity = 0;
 }
 
+/* a Python list of the ints ``items[0 .. length - 1]`` (a new reference) */
+static inline PyObject *int32_list(const int32_t *items, Py_ssize_t length)
+{
+    PyObject *list = PyList_New(length);
+    if (list == NULL)
+        return NULL;
+    for (Py_ssize_t i = 0; i < length; i++) {
+        PyObject *number = PyLong_FromLong(items[i]);
+        if (number == NULL) {
+            Py_DECREF(list);
+            return NULL;
+        }
+        PyList_SET_ITEM(list, i, number);
+    }
+    return list;
+}
+
+typedef struct {          /* a growable array of 64-bit numbers */
+    uint64_t *items;
+    Py_ssize_t length, capacity;
+} Uint64Vector;
+
+static inline int vector64_push(Uint64Vector *vector, uint64_t item)
+{
+    uint64_t *items = reserve(vector->items, &vector->capacity, sizeof(uint64_t),
+                              vector->length + 1);
+    if (items == NULL)
+        return -1;
+    vector->items = items;
+    vector->items[vector->length++] = item;
+    return 0;
+}
+
+static inline void vector64_free(Uint64Vector *vector)
+{
+    PyMem_Free(vector->items);
+    vector->items = NULL;
+    vector->length = vector->capacity = 0;
+}
+
 /* an integer attribute of ``object``; INT64_MAX for infinity (a float); -1 with an error */
 static inline int64_t integer_attribute(PyObject *object, const char *name)
 {
@@ -106,6 +146,19 @@ static inline int budget_stopped(PyObject *budget)
 
 /* registers NodeTable and PartHashes (_nodes.c) in the module */
 int nodes_register(PyObject *module);
+
+/* The step machine of a PackedTable (_packed.c) for a search loop of another file
+ * (_native.c's CycleSearch): ``packed_check(object)``: whether it is a PackedTable;
+ * ``packed_successor_ids``: the machine's step of stored state ``id`` with its successors
+ * interned, as the method ``successor_ids`` gives it: their ids in model order into
+ * ``ids``, and per new one, in id order, the bits of valuation ``valuation`` (``bits``)
+ * and whether the machine valued it (``valued``: 0 where Python must; every one where
+ * ``valuation`` is -1, not compiled).  PACKED_STEPPED,
+ * PACKED_UNSUPPORTED (Python steps the state; nothing was interned), -1 with an error. */
+enum { PACKED_STEPPED = 0, PACKED_UNSUPPORTED = 1 };
+int packed_check(PyObject *object);
+int packed_successor_ids(PyObject *table, Py_ssize_t id, Py_ssize_t valuation,
+                         Int32Vector *ids, Uint64Vector *bits, Int32Vector *valued);
 
 /* registers PackedTable and packed_breadth_first (_packed.c) in the module */
 int packed_register(PyObject *module);

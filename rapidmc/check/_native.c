@@ -15,8 +15,10 @@
  * per state in Python objects.
  *
  * CycleSearch: Couvreur's emptiness check (emptiness.py's ``_explore_from``) with its
- * numbers, dead flags, stacks and path in native arrays; the product's successors still
- * come from the Python ``successor_keys``.
+ * numbers, dead flags, stacks and path in native arrays; the product's successors come
+ * from the Python ``successor_keys``, or are computed here over an explored graph or a
+ * packed table's step machine (_packed.c), Python stepping the states the machine
+ * leaves to it.
  *
  * breadth_first: reachability.py's unlabelled loop (the run-time error search) over a
  * Table; the model's step, the predicate, the observer and the graph's rows stay Python
@@ -519,14 +521,47 @@ typedef struct {
     /* bytes-like: by automaton state, 1 if every word is accepted from it (a product state
      * there ends a bad prefix), or NULL; the DFS path to the first such state seen */
     PyObject *universal, *bad_path;
+    /* the product over a packed table's step machine, computed here
+     * (``Product.native_machine``): the ModelStore, ``successor_keys`` that steps in
+     * Python (for the states the machine leaves to it), the table the store selects
+     * (``machine_table``, NULL: none taken yet, or the machine is not used), the index
+     * of the machine's atoms; the valuations of the store's states are in the store's
+     * array up to id ``flushed``, those of the next ones in ``unflushed`` (added to
+     * the array before Python runs and every UNFLUSHED_VALUES: ``flush_values``); the
+     * machine's answer for one state */
+    PyObject *store, *python_keys, *table;
+    Py_ssize_t valuation, flushed;
+    Uint64Vector unflushed, bits;
+    Int32Vector ids, valued;
 } CycleSearch;
+
+#define UNFLUSHED_VALUES 4096
+
+/* the guard tables of ``Product.native_successors`` / ``native_machine`` into ``self`` */
+static int take_moves(CycleSearch *self, PyObject *move_starts, PyObject *moves,
+                      long long read)
+{
+    Py_ssize_t starts_size = PyBytes_GET_SIZE(move_starts);
+    Py_ssize_t moves_size = PyBytes_GET_SIZE(moves);
+    self->move_starts = PyMem_Malloc(starts_size + 1);
+    self->moves = PyMem_Malloc(moves_size + 1);
+    if (self->move_starts == NULL || self->moves == NULL) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    memcpy(self->move_starts, PyBytes_AS_STRING(move_starts), starts_size);
+    memcpy(self->moves, PyBytes_AS_STRING(moves), moves_size);
+    self->read = read;
+    return 0;
+}
 
 static PyObject *CycleSearch_new(PyTypeObject *type, PyObject *args, PyObject *kwargs)
 {
     PyObject *successor_keys, *accepting, *budget, *graph = Py_None, *universal = Py_None;
+    PyObject *machine = Py_None;
     Py_ssize_t width;
-    if (!PyArg_ParseTuple(args, "OOnO|OO", &successor_keys, &accepting, &width, &budget,
-                          &graph, &universal))
+    if (!PyArg_ParseTuple(args, "OOnO|OOO", &successor_keys, &accepting, &width, &budget,
+                          &graph, &universal, &machine))
         return NULL;
     if (!PyBytes_Check(accepting) || (universal != Py_None && !PyBytes_Check(universal))) {
         PyErr_SetString(PyExc_TypeError, "accepting and universal must be bytes");
@@ -549,23 +584,25 @@ static PyObject *CycleSearch_new(PyTypeObject *type, PyObject *args, PyObject *k
     if (graph != Py_None) {
         PyObject *rows, *move_starts, *moves;
         long long read;
-        if (!PyArg_ParseTuple(graph, "OSSL", &rows, &move_starts, &moves, &read)) {
+        if (!PyArg_ParseTuple(graph, "OSSL", &rows, &move_starts, &moves, &read) ||
+                take_moves(self, move_starts, moves, read) < 0) {
             Py_DECREF(self);
             return NULL;
         }
-        Py_ssize_t starts_size = PyBytes_GET_SIZE(move_starts);
-        Py_ssize_t moves_size = PyBytes_GET_SIZE(moves);
-        self->move_starts = PyMem_Malloc(starts_size + 1);
-        self->moves = PyMem_Malloc(moves_size + 1);
-        if (self->move_starts == NULL || self->moves == NULL) {
-            Py_DECREF(self);
-            return PyErr_NoMemory();
-        }
-        memcpy(self->move_starts, PyBytes_AS_STRING(move_starts), starts_size);
-        memcpy(self->moves, PyBytes_AS_STRING(moves), moves_size);
-        self->read = read;
         Py_INCREF(rows);
         self->graph = rows;
+    }
+    else if (machine != Py_None) {
+        PyObject *store, *python_keys, *move_starts, *moves;
+        long long read;
+        if (!PyArg_ParseTuple(machine, "OOnSSL", &store, &python_keys, &self->valuation,
+                              &move_starts, &moves, &read) ||
+                take_moves(self, move_starts, moves, read) < 0) {
+            Py_DECREF(self);
+            return NULL;
+        }
+        self->store = Py_NewRef(store);
+        self->python_keys = Py_NewRef(python_keys);
     }
     return (PyObject *)self;
 }
@@ -578,6 +615,9 @@ static int CycleSearch_traverse(CycleSearch *self, visitproc visit, void *arg)
     Py_VISIT(self->graph);
     Py_VISIT(self->universal);
     Py_VISIT(self->bad_path);
+    Py_VISIT(self->store);
+    Py_VISIT(self->python_keys);
+    Py_VISIT(self->table);
     return 0;
 }
 
@@ -589,6 +629,9 @@ static int CycleSearch_clear(CycleSearch *self)
     Py_CLEAR(self->graph);
     Py_CLEAR(self->universal);
     Py_CLEAR(self->bad_path);
+    Py_CLEAR(self->store);
+    Py_CLEAR(self->python_keys);
+    Py_CLEAR(self->table);
     return 0;
 }
 
@@ -607,6 +650,10 @@ static void CycleSearch_dealloc(CycleSearch *self)
     vector32_free(&self->found);
     PyMem_Free(self->move_starts);
     PyMem_Free(self->moves);
+    vector64_free(&self->unflushed);
+    vector64_free(&self->bits);
+    vector32_free(&self->ids);
+    vector32_free(&self->valued);
     Py_TYPE(self)->tp_free((PyObject *)self);
 }
 
@@ -651,9 +698,14 @@ static int push_dead(CycleSearch *self)
     return 0;
 }
 
-/* budget.<name>(args...) as a truth value (-1 on an error) */
+static int flush_values(CycleSearch *self);
+
+/* budget.<name>(args...) as a truth value (-1 on an error); the store's valuations are
+ * complete while it runs */
 static int budget_says(CycleSearch *self, const char *name, const char *format, ...)
 {
+    if (flush_values(self) < 0)
+        return -1;
     PyObject *method = PyObject_GetAttrString(self->budget, name);
     if (method == NULL)
         return -1;
@@ -714,6 +766,35 @@ static int hold_graph(CycleSearch *self, GraphView *view)
     return 0;
 }
 
+/* item ``index`` of an array of unsigned numbers of ``size`` bytes */
+static inline uint64_t unsigned_item(const char *items, Py_ssize_t size, Py_ssize_t index)
+{
+    switch (size) {
+    case 1: return ((const uint8_t *)items)[index];
+    case 2: return ((const uint16_t *)items)[index];
+    case 4: return ((const uint32_t *)items)[index];
+    default: return ((const uint64_t *)items)[index];
+    }
+}
+
+/* the product successors of (q, model state ``target`` with ``valuation``) appended to
+ * ``self->found``, in the guard table's order */
+static int add_moves(CycleSearch *self, int64_t q, int64_t target, uint64_t valuation)
+{
+    int64_t row = q * (self->read + 1) + (int64_t)(valuation & (uint64_t)self->read);
+    for (int32_t m = self->move_starts[row]; m < self->move_starts[row + 1]; m++) {
+        int64_t successor = target * self->width + self->moves[m];
+        if (successor > INT32_MAX) {
+            PyErr_SetString(PyExc_OverflowError, "product key beyond 2**31 "
+                            "(the Python engine takes it: --engine python)");
+            return -1;
+        }
+        if (vector32_push(&self->found, successor) < 0)
+            return -1;
+    }
+    return 0;
+}
+
 /* ``Product.successor_keys`` over the explored graph: into ``self->found`` */
 static int graph_successors(CycleSearch *self, GraphView *view, int64_t key)
 {
@@ -722,47 +803,171 @@ static int graph_successors(CycleSearch *self, GraphView *view, int64_t key)
     const int32_t *starts = view->starts.buf, *targets = view->targets.buf;
     ((uint8_t *)view->expanded.buf)[state] = 1;
     self->found.length = 0;
-    Py_ssize_t size = view->valuations.itemsize;
-    const char *values = view->valuations.buf;
-    for (int32_t at = starts[state]; at < starts[state + 1]; at++) {
-        int64_t target = targets[at];
-        uint64_t valuation;
-        switch (size) {
-        case 1: valuation = ((const uint8_t *)values)[target]; break;
-        case 2: valuation = ((const uint16_t *)values)[target]; break;
-        case 4: valuation = ((const uint32_t *)values)[target]; break;
-        default: valuation = ((const uint64_t *)values)[target]; break;
-        }
-        int64_t row = q * (self->read + 1) + (int64_t)(valuation & (uint64_t)self->read);
-        for (int32_t m = self->move_starts[row]; m < self->move_starts[row + 1]; m++) {
-            int64_t successor = target * width + self->moves[m];
-            if (successor > INT32_MAX) {
-                PyErr_SetString(PyExc_OverflowError, "product key beyond 2**31 "
-                                "(the Python engine takes it: --engine python)");
-                return -1;
-            }
-            if (vector32_push(&self->found, successor) < 0)
-                return -1;
-        }
-    }
+    for (int32_t at = starts[state]; at < starts[state + 1]; at++)
+        if (add_moves(self, q, targets[at], unsigned_item(view->valuations.buf,
+                                                          view->valuations.itemsize,
+                                                          targets[at])) < 0)
+            return -1;
     return 0;
 }
 
-/* A list of the ints ``items[0 .. length - 1]`` */
-static PyObject *keys_list(const int32_t *items, Py_ssize_t length)
+/* ``successor_keys(key)`` (a Python callable giving a list) into ``self->found`` */
+static int python_successors(CycleSearch *self, PyObject *successor_keys, int64_t key)
 {
-    PyObject *list = PyList_New(length);
-    if (list == NULL)
-        return NULL;
-    for (Py_ssize_t i = 0; i < length; i++) {
-        PyObject *key = PyLong_FromLong(items[i]);
-        if (key == NULL) {
-            Py_DECREF(list);
-            return NULL;
-        }
-        PyList_SET_ITEM(list, i, key);
+    PyObject *successors = PyObject_CallFunction(successor_keys, "L", (long long)key);
+    if (successors == NULL)
+        return -1;
+    if (!PyList_CheckExact(successors)) {
+        Py_DECREF(successors);
+        PyErr_SetString(PyExc_TypeError, "successor_keys must return a list");
+        return -1;
     }
-    return list;
+    self->found.length = 0;
+    for (Py_ssize_t i = 0; i < PyList_GET_SIZE(successors); i++) {
+        int64_t successor = PyLong_AsLongLong(PyList_GET_ITEM(successors, i));
+        if (successor > INT32_MAX && !PyErr_Occurred())
+            PyErr_SetString(PyExc_OverflowError, "product key beyond 2**31 "
+                            "(the Python engine takes it: --engine python)");
+        if (PyErr_Occurred() || vector32_push(&self->found, successor) < 0) {
+            Py_DECREF(successors);
+            return -1;
+        }
+    }
+    Py_DECREF(successors);
+    return 0;
+}
+
+/* The valuations the machine gave since the last flush added to the store's array
+ * (``ModelStore.add_valuations``): before any Python code runs that may read them. */
+static int flush_values(CycleSearch *self)
+{
+    if (self->store == NULL || self->unflushed.length == 0)
+        return 0;
+    PyObject *answer = PyObject_CallMethod(
+        self->store, "add_valuations", "y#", (const char *)self->unflushed.items,
+        (Py_ssize_t)(self->unflushed.length * sizeof(uint64_t)));
+    if (answer == NULL)
+        return -1;
+    Py_DECREF(answer);
+    self->flushed += self->unflushed.length;
+    self->unflushed.length = 0;
+    return 0;
+}
+
+/* The store's valuations as a buffer of unsigned numbers into ``view``: 1, 0 where they
+ * are not (beyond 64 atoms, a list), -1 */
+static int hold_values(CycleSearch *self, Py_buffer *view)
+{
+    PyObject *valuations = PyObject_GetAttrString(self->store, "valuations");
+    if (valuations == NULL)
+        return -1;
+    int held = PyObject_CheckBuffer(valuations) &&
+        PyObject_GetBuffer(valuations, view, PyBUF_FORMAT) == 0;
+    Py_DECREF(valuations);
+    if (!held)
+        return 0;
+    const char *format = view->format != NULL ? view->format : "B";
+    if (strchr("BHILQ", format[0]) == NULL || format[1] != 0 || view->itemsize > 8) {
+        PyBuffer_Release(view);
+        return 0;
+    }
+    return 1;
+}
+
+/* After Python ran (the valuations flushed before): the table the store selects
+ * (``machine_table``) and how many valuations its array holds.  Where they are not
+ * unsigned numbers, the machine is no longer used here (``self->table`` NULL):
+ * Python's ``successor_keys`` gives every state's successors. */
+static int sync_values(CycleSearch *self)
+{
+    Py_CLEAR(self->table);
+    PyObject *table = PyObject_CallMethod(self->store, "machine_table", NULL);
+    if (table == NULL)
+        return -1;
+    Py_buffer view;
+    int held = packed_check(table) ? hold_values(self, &view) : 0;
+    if (held > 0) {
+        self->flushed = view.len / view.itemsize;
+        self->table = table;
+        PyBuffer_Release(&view);
+    }
+    else
+        Py_DECREF(table);
+    return held < 0 ? -1 : 0;
+}
+
+/* ``Product.successor_keys`` over the step machine into ``self->found``: the machine's
+ * successors of the model state, distinct, in model order (``ModelStore.successor_ids``),
+ * each with its valuation (the machine's for a new state, else Python's:
+ * ``ModelStore.valuation_of``); where the machine leaves the state to Python, Python's
+ * ``successor_keys`` without the machine (``python_keys``).  0 or -1. */
+static int machine_product_successors(CycleSearch *self, int64_t key)
+{
+    int64_t state = key / self->width, q = key % self->width;
+    int outcome = PACKED_UNSUPPORTED;
+    if (self->table != NULL)
+        outcome = packed_successor_ids(self->table, state, self->valuation, &self->ids,
+                                       &self->bits, &self->valued);
+    if (outcome < 0)
+        return -1;
+    if (outcome != PACKED_STEPPED) {
+        if (flush_values(self) < 0 ||
+                python_successors(self, self->table != NULL ? self->python_keys :
+                                  self->successor_keys, key) < 0)
+            return -1;
+        return sync_values(self);
+    }
+    for (Py_ssize_t i = 0; i < self->bits.length; i++) {
+        uint64_t value = self->bits.items[i];
+        if (!self->valued.items[i]) {
+            if (flush_values(self) < 0)
+                return -1;
+            PyObject *answer = PyObject_CallMethod(self->store, "valuation_of", "n",
+                                                   self->flushed);
+            if (answer == NULL)
+                return -1;
+            value = PyLong_AsUnsignedLongLong(answer);
+            Py_DECREF(answer);
+            if (value == (uint64_t)-1 && PyErr_Occurred())
+                return -1;
+        }
+        if (vector64_push(&self->unflushed, value) < 0)
+            return -1;
+    }
+    Py_buffer view;
+    int held = 0;
+    self->found.length = 0;
+    const int32_t *ids = self->ids.items;
+    for (Py_ssize_t i = 0; i < self->ids.length; i++) {
+        Py_ssize_t j = 0;
+        while (j < i && ids[j] != ids[i])
+            j++;
+        if (j < i)
+            continue;                           /* (a repeat: ``distinct``) */
+        uint64_t value;
+        if (ids[i] >= self->flushed) {
+            if (ids[i] - self->flushed >= self->unflushed.length) {
+                PyErr_SetString(PyExc_RuntimeError, "a model state without its valuation");
+                break;
+            }
+            value = self->unflushed.items[ids[i] - self->flushed];
+        }
+        else {
+            if (!held && (held = hold_values(self, &view)) <= 0) {
+                if (held == 0)
+                    PyErr_SetString(PyExc_TypeError, "the valuations are no numbers");
+                return -1;
+            }
+            value = unsigned_item(view.buf, view.itemsize, ids[i]);
+        }
+        if (add_moves(self, q, ids[i], value) < 0)
+            break;
+    }
+    if (held)
+        PyBuffer_Release(&view);
+    if (PyErr_Occurred())
+        return -1;
+    return self->unflushed.length >= UNFLUSHED_VALUES ? flush_values(self) : 0;
 }
 
 /* The search from one initial key: 1 when an accepting cycle closed (the path is left in
@@ -795,48 +1000,16 @@ static int explore_from(CycleSearch *self, int64_t initial_key, GraphView *view)
             if (push_dead(self) < 0 || vector32_push(&self->active, index) < 0 ||
                 push_root(self, index, accepting[key % width]) < 0)
                 return -1;
-            if (self->graph != NULL) {
-                if (graph_successors(self, view, key) < 0 ||
-                    vector32_push(&self->path_starts, self->pending.length) < 0)
+            int got = self->graph != NULL ? graph_successors(self, view, key) :
+                self->store != NULL ? machine_product_successors(self, key) :
+                python_successors(self, self->successor_keys, key);
+            if (got < 0 || vector32_push(&self->path_starts, self->pending.length) < 0)
+                return -1;
+            self->transitions += self->found.length;
+            for (Py_ssize_t i = self->found.length - 1; i >= 0; i--)
+                if (cover_key(self, self->found.items[i]) < 0 ||
+                    vector32_push(&self->pending, self->found.items[i]) < 0)
                     return -1;
-                self->transitions += self->found.length;
-                for (Py_ssize_t i = self->found.length - 1; i >= 0; i--)
-                    if (cover_key(self, self->found.items[i]) < 0 ||
-                        vector32_push(&self->pending, self->found.items[i]) < 0)
-                        return -1;
-            }
-            else {
-                PyObject *number = PyLong_FromLongLong(key);
-                if (number == NULL)
-                    return -1;
-                PyObject *successors = PyObject_CallOneArg(self->successor_keys, number);
-                Py_DECREF(number);
-                if (successors == NULL)
-                    return -1;
-                if (!PyList_CheckExact(successors)) {
-                    Py_DECREF(successors);
-                    PyErr_SetString(PyExc_TypeError, "successor_keys must return a list");
-                    return -1;
-                }
-                if (vector32_push(&self->path_starts, self->pending.length) < 0) {
-                    Py_DECREF(successors);
-                    return -1;
-                }
-                Py_ssize_t count = PyList_GET_SIZE(successors);
-                self->transitions += count;
-                for (Py_ssize_t i = count - 1; i >= 0; i--) {
-                    int64_t successor = PyLong_AsLongLong(PyList_GET_ITEM(successors, i));
-                    if (successor > INT32_MAX && !PyErr_Occurred())
-                        PyErr_SetString(PyExc_OverflowError, "product key beyond 2**31 "
-                                        "(the Python engine takes it: --engine python)");
-                    if (PyErr_Occurred() || cover_key(self, successor) < 0 ||
-                        vector32_push(&self->pending, successor) < 0) {
-                        Py_DECREF(successors);
-                        return -1;
-                    }
-                }
-                Py_DECREF(successors);
-            }
             if (vector32_push(&self->path_keys, key) < 0)
                 return -1;
             if (self->path_keys.length > self->max_depth)
@@ -847,7 +1020,7 @@ static int explore_from(CycleSearch *self, int64_t initial_key, GraphView *view)
                     if (universal[self->pending.items[i] % width]) {
                         if (vector32_push(&self->path_keys, self->pending.items[i]) < 0)
                             return -1;
-                        self->bad_path = keys_list(self->path_keys.items,
+                        self->bad_path = int32_list(self->path_keys.items,
                                                    self->path_keys.length);
                         self->path_keys.length--;
                         if (self->bad_path == NULL || budget_says(self, "saw_bad_prefix", "(L)",
@@ -957,9 +1130,11 @@ static PyObject *CycleSearch_explore_from(CycleSearch *self, PyObject *argument)
     GraphView view;
     if (hold_graph(self, &view) < 0)
         return NULL;
-    int found = explore_from(self, key, &view);
+    /* (Python may have added states and valuations, or selected another search) */
+    int found = self->store != NULL && sync_values(self) < 0 ? -1 :
+        explore_from(self, key, &view);
     release_graph(&view);
-    if (found < 0)
+    if (found < 0 || flush_values(self) < 0)
         return NULL;
     if (found == 0)
         Py_RETURN_NONE;

@@ -143,6 +143,10 @@ typedef struct {
     Py_hash_t *item_memo_hash;
     int32_t *big_slots;         /* -> value id (EMPTY: free), with the tuple's hash */
     uint64_t *big_hashes;
+    /* by value id, of a big tuple: the sum of its items' parts (``big_part``), from which
+     * its hash is made, so that a tuple with one item replaced is hashed in one step */
+    uint64_t *big_sums;
+    Py_ssize_t big_sums_capacity;
     uint64_t big_mask;
     Py_ssize_t big_count;
     /* segments and states (``states``: the selected search's, see ``selected`` below) */
@@ -212,7 +216,17 @@ typedef struct {
     int64_t *row_keys;
     Py_ssize_t row_length, row_capacity;
     long long rows_reused;
+    /* calls and returns the machine's local runs went on through (``run_on``) */
+    long long run_frame_steps;
+    /* what Python answered ``frame_step`` (``entered_context``), kept: per question (a
+     * vector of ``frame_questions``: FRAME_CALL, context, task, pc, callee, the caller's
+     * locals; or FRAME_LEAVE, context, task) the id of its answer in ``frame_answers``
+     * (entered context, pc, the caller's locals), NO_ANSWER where Python steps it */
+    VectorTable frame_questions, frame_answers;
+    Int32Vector answer_of;
 } PackedTable;
+
+#define NO_ANSWER (-1)
 
 typedef struct {
     PyObject_HEAD
@@ -487,10 +501,12 @@ static int32_t number_id(PackedTable *self, int tag, double d, PyObject *object)
 #define BIG_TUPLE 32             /* tuples at least this long: ``big_tuple_id`` */
 #define ITEM_MEMO 16384          /* items' hashes remembered by address */
 
-/* the hash of a big tuple from its items' hashes (equal tuples: equal items, equal
- * hashes), -1 with an error */
-static int big_tuple_hash(PackedTable *self, PyObject *tuple, uint64_t *out)
+/* The hash of ``item`` as an item of a big tuple: a tuple's remembered by address (held,
+ * so that no other object takes the address while it is remembered).  0 or -1. */
+static int big_item_hash(PackedTable *self, PyObject *item, Py_hash_t *out)
 {
+    if (!PyTuple_Check(item))
+        return (*out = PyObject_Hash(item)) == -1 ? -1 : 0;
     if (self->item_memo_object == NULL) {
         self->item_memo_object = PyMem_Calloc(ITEM_MEMO, sizeof(PyObject *));
         self->item_memo_hash = PyMem_Calloc(ITEM_MEMO, sizeof(Py_hash_t));
@@ -499,29 +515,46 @@ static int big_tuple_hash(PackedTable *self, PyObject *tuple, uint64_t *out)
             return -1;
         }
     }
-    Py_ssize_t length = PyTuple_GET_SIZE(tuple);
-    uint64_t hash = 0x9e3779b97f4a7c15ULL ^ (uint64_t)length;
-    for (Py_ssize_t i = 0; i < length; i++) {
-        PyObject *item = PyTuple_GET_ITEM(tuple, i);
-        Py_hash_t item_hash;
-        if (PyTuple_Check(item)) {
-            uint64_t at = mix64((uint64_t)(uintptr_t)item) & (ITEM_MEMO - 1);
-            if (self->item_memo_object[at] == item)
-                item_hash = self->item_memo_hash[at];
-            else {
-                item_hash = PyObject_Hash(item);
-                if (item_hash == -1)
-                    return -1;
-                Py_INCREF(item);
-                Py_XSETREF(self->item_memo_object[at], item);
-                self->item_memo_hash[at] = item_hash;
-            }
-        }
-        else if ((item_hash = PyObject_Hash(item)) == -1)
-            return -1;
-        hash = (hash ^ (uint64_t)item_hash) * 0x100000001b3ULL;
+    uint64_t at = mix64((uint64_t)(uintptr_t)item) & (ITEM_MEMO - 1);
+    if (self->item_memo_object[at] == item) {
+        *out = self->item_memo_hash[at];
+        return 0;
     }
-    *out = mix64(hash);
+    Py_hash_t hash = PyObject_Hash(item);
+    if (hash == -1)
+        return -1;
+    Py_INCREF(item);
+    Py_XSETREF(self->item_memo_object[at], item);
+    self->item_memo_hash[at] = hash;
+    *out = hash;
+    return 0;
+}
+
+/* item ``index``'s part (its hash ``hash``) in the sum a big tuple's hash is made of: a sum,
+ * so that replacing one item changes it by two parts */
+static inline uint64_t big_part(Py_ssize_t index, Py_hash_t hash)
+{
+    return mix64((uint64_t)hash + (uint64_t)index * 0x9e3779b97f4a7c15ULL);
+}
+
+/* the hash of a big tuple of ``length`` items whose parts sum to ``sum`` */
+static inline uint64_t big_key(uint64_t sum, Py_ssize_t length)
+{
+    return mix64(sum ^ (uint64_t)length);
+}
+
+/* the sum of a big tuple's parts (equal tuples: equal items, equal sums), -1 with an
+ * error */
+static int big_tuple_sum(PackedTable *self, PyObject *tuple, uint64_t *out)
+{
+    uint64_t sum = 0;
+    for (Py_ssize_t i = 0; i < PyTuple_GET_SIZE(tuple); i++) {
+        Py_hash_t item_hash;
+        if (big_item_hash(self, PyTuple_GET_ITEM(tuple, i), &item_hash) < 0)
+            return -1;
+        sum += big_part(i, item_hash);
+    }
+    *out = sum;
     return 0;
 }
 
@@ -551,19 +584,44 @@ static int big_grow(PackedTable *self)
     return 0;
 }
 
-/* the id of a tuple of BIG_TUPLE items or more (stored when new); -1 with an error */
-static int32_t big_tuple_id(PackedTable *self, PyObject *tuple)
+/* Whether ``stored`` equals ``base`` with item ``index`` replaced by ``item`` (``item``
+ * NULL: ``base`` itself), item by item as ``==`` compares tuples: 1, 0, -1 */
+static int big_equal(PyObject *stored, PyObject *base, Py_ssize_t index, PyObject *item)
 {
-    uint64_t hash;
-    if (big_tuple_hash(self, tuple, &hash) < 0 || (self->big_slots == NULL && big_grow(self) < 0))
+    Py_ssize_t length = PyTuple_GET_SIZE(base);
+    if (!PyTuple_Check(stored) || PyTuple_GET_SIZE(stored) != length)
+        return 0;
+    for (Py_ssize_t i = 0; i < length; i++) {
+        PyObject *mine = item != NULL && i == index ? item : PyTuple_GET_ITEM(base, i);
+        PyObject *theirs = PyTuple_GET_ITEM(stored, i);
+        if (mine == theirs)
+            continue;
+        int same = PyObject_RichCompareBool(mine, theirs, Py_EQ);
+        if (same <= 0)
+            return same;
+    }
+    return 1;
+}
+
+static PyObject *replaced_at(PyObject *value, const int32_t *path, int32_t depth,
+                             PyObject *item);
+
+/* The id of the tuple of BIG_TUPLE items or more that is ``base`` with item ``index``
+ * replaced by ``item`` (``item`` NULL: ``base`` itself), whose items' parts sum to
+ * ``sum``; stored when new (the tuple made then).  -1 with an error. */
+static int32_t big_tuple_find(PackedTable *self, PyObject *base, Py_ssize_t index,
+                              PyObject *item, uint64_t sum)
+{
+    if (self->big_slots == NULL && big_grow(self) < 0)
         return -1;
+    uint64_t hash = big_key(sum, PyTuple_GET_SIZE(base));
     uint64_t at = hash & self->big_mask;
     for (;;) {
         int32_t id = self->big_slots[at];
         if (id == EMPTY)
             break;
         if (self->big_hashes[at] == hash) {
-            int same = PyObject_RichCompareBool(tuple, self->value_object[id], Py_EQ);
+            int same = big_equal(self->value_object[id], base, index, item);
             if (same < 0)
                 return -1;
             if (same)
@@ -571,14 +629,47 @@ static int32_t big_tuple_id(PackedTable *self, PyObject *tuple)
         }
         at = (at + 1) & self->big_mask;
     }
+    int32_t path = (int32_t)index;
+    PyObject *tuple = item == NULL ? Py_NewRef(base) : replaced_at(base, &path, 1, item);
+    if (tuple == NULL)
+        return -1;
     int32_t id = add_value(self, T_OBJ, 0.0, tuple);
+    Py_DECREF(tuple);                           /* (the table holds it) */
     if (id < 0)
         return -1;
+    uint64_t *sums = reserve(self->big_sums, &self->big_sums_capacity, sizeof(uint64_t),
+                             id + 1);
+    if (sums == NULL)
+        return -1;
+    self->big_sums = sums;
+    self->big_sums[id] = sum;
     self->big_slots[at] = id;
     self->big_hashes[at] = hash;
     if ((uint64_t)++self->big_count * 2 > self->big_mask + 1 && big_grow(self) < 0)
         return -1;
     return id;
+}
+
+/* the id of a tuple of BIG_TUPLE items or more (stored when new); -1 with an error */
+static int32_t big_tuple_id(PackedTable *self, PyObject *tuple)
+{
+    uint64_t sum;
+    return big_tuple_sum(self, tuple, &sum) < 0 ? -1 : big_tuple_find(self, tuple, 0, NULL, sum);
+}
+
+/* The id of the big tuple ``array`` (id ``array_id``) with item ``index`` replaced by
+ * ``item``, its sum changed by that item's two parts: the cost of a write of one element
+ * of a 512-element array does not grow with the array, and no tuple is made where the
+ * table holds it already.  -1 with an error. */
+static int32_t big_replaced_id(PackedTable *self, int32_t array_id, PyObject *array,
+                               Py_ssize_t index, PyObject *item)
+{
+    Py_hash_t before, after;
+    if (big_item_hash(self, PyTuple_GET_ITEM(array, index), &before) < 0 ||
+            big_item_hash(self, item, &after) < 0)
+        return -1;
+    uint64_t sum = self->big_sums[array_id] - big_part(index, before) + big_part(index, after);
+    return big_tuple_find(self, array, index, item, sum);
 }
 
 /* the id of any Python value; -1 with an error */
@@ -963,6 +1054,24 @@ static int integer_operands(Value a, Value b, long long *x, long long *y)
 
 #define MAX_PATH 16              /* component offsets of one element write */
 
+/* Whether the cycle collector may leave ``object`` alone: an object it does not track (a
+ * number, a string, a tuple it has found holds no such object) */
+static inline int untracked(PyObject *object)
+{
+    return !PyObject_IS_GC(object) || !PyObject_GC_IsTracked(object);
+}
+
+/* A tuple the machine made out of untracked items, out of the collector's reach as the
+ * collector itself would put it at its next pass (``_PyTuple_MaybeUntrack``): the arrays
+ * of 512 records a step writes would otherwise each be walked by the next collections. */
+static inline void untrack_tuple(PyObject *tuple)
+{
+    for (Py_ssize_t i = 0; i < PyTuple_GET_SIZE(tuple); i++)
+        if (!untracked(PyTuple_GET_ITEM(tuple, i)))
+            return;
+    PyObject_GC_UnTrack(tuple);
+}
+
 /* ``value`` with its part at ``path`` (``depth`` offsets) replaced by ``item``, the tuples
  * along the path rebuilt (``machine.replace_at``): a new reference; NULL with an error
  * set, or NULL without one where a part on the path is not a tuple that long */
@@ -990,6 +1099,9 @@ static PyObject *replaced_at(PyObject *value, const int32_t *path, int32_t depth
             Py_INCREF(kept);
         PyTuple_SET_ITEM(changed, i, kept);
     }
+    /* (the other items are those of ``value``: untracked where it is) */
+    if (untracked(value) && untracked(inner))
+        PyObject_GC_UnTrack(changed);
     return changed;
 }
 
@@ -1313,24 +1425,32 @@ static int execute(Run *run, const int32_t *code, Py_ssize_t ip, uint64_t *bits)
             if (!integral(index.d) || index.d < 1.0 ||
                     index.d > (double)PyTuple_GET_SIZE(array))
                 FAIL(VM_ERROR);             /* ERR_OUTOFBND: Python raises */
-            int32_t path[MAX_PATH + 1];
-            path[0] = (int32_t)index.d - 1;
-            memcpy(path + 1, offsets, depth * sizeof(int32_t));
+            int32_t element = (int32_t)index.d - 1;
             int32_t value_id_ = store_id(table, value);
             if (value_id_ < 0)
                 return -1;
             PyObject *item = value_object(table, value_id_);
             if (item == NULL)
                 return -1;
-            PyObject *changed = replaced_at(array, path, depth + 1, item);
+            /* the element written: the value, or the element with its component replaced */
+            PyObject *written = replaced_at(PyTuple_GET_ITEM(array, element), offsets, depth,
+                                            item);
             Py_DECREF(item);
-            if (changed == NULL) {
+            if (written == NULL) {
                 if (PyErr_Occurred())
                     return -1;
                 FAIL(VM_UNSUPPORTED);       /* (not a record of that shape: Python's) */
             }
-            int32_t id = value_id(table, changed);
-            Py_DECREF(changed);
+            int32_t id;
+            if (PyTuple_GET_SIZE(array) >= BIG_TUPLE &&
+                    run->data[slot] < (uint32_t)table->big_sums_capacity)
+                id = big_replaced_id(table, (int32_t)run->data[slot], array, element, written);
+            else {
+                PyObject *changed = replaced_at(array, &element, 1, written);
+                id = changed == NULL ? -1 : value_id(table, changed);
+                Py_XDECREF(changed);
+            }
+            Py_DECREF(written);
             if (id < 0)
                 return -1;
             run->data_changed |= run->data[slot] != (uint32_t)id;
@@ -1354,6 +1474,7 @@ static int execute(Run *run, const int32_t *code, Py_ssize_t ip, uint64_t *bits)
                 }
                 PyTuple_SET_ITEM(tuple, i, item);
             }
+            untrack_tuple(tuple);
             int32_t id = value_id(table, tuple);
             Py_DECREF(tuple);
             if (id < 0)
@@ -1508,6 +1629,8 @@ typedef struct Scratch {     /* scratch space of the step machine */
     Int32Vector probe_changed;
     uint32_t *called;           /* the frame vector a call or a return makes */
     Py_ssize_t called_capacity;
+    uint32_t *question;         /* a question of ``entered_context``, then its answer */
+    Py_ssize_t question_capacity;
 } Scratch;
 
 static int scratch_init(Scratch *scratch, PackedTable *table)
@@ -1538,6 +1661,7 @@ static void scratch_free(Scratch *scratch)
     vector32_free(&scratch->probe_changed);
     PyMem_Free(scratch->probe_source);
     PyMem_Free(scratch->called);
+    PyMem_Free(scratch->question);
     PyMem_Free(scratch->probe.frames);
     PyMem_Free(scratch->probe.data);
     PyMem_Free(scratch->found.frames);
@@ -1804,6 +1928,77 @@ static const int32_t *task_info_at(PackedTable *table, int32_t frame_id, Py_ssiz
     return table->context_tasks + ((Py_ssize_t)*context * table->task_count + task) * TASK_INFO;
 }
 
+/* The answer (an id of ``frame_answers``: entered context, pc, the caller's locals) to a
+ * step that changes ``task``'s frames in ``context``: its call (``op`` FRAME_CALL, at
+ * ``pc``, of routine ``callee``, the caller's ``locals`` value ids at ``caller``) or its
+ * return (FRAME_LEAVE).  Python answers each question once (``called_context``,
+ * ``left_context``: a function of the context and the caller's locals); the answer is
+ * kept.  NO_ANSWER where Python steps it, -2 with an error. */
+static int32_t entered_context(PackedTable *table, Scratch *scratch, int op, uint32_t context,
+                               Py_ssize_t task, int32_t pc, int32_t callee,
+                               const uint32_t *caller, int32_t locals)
+{
+    Py_ssize_t length = op == FRAME_CALL ? 5 + locals : 3;
+    uint32_t *question = reserve(scratch->question, &scratch->question_capacity,
+                                 sizeof(uint32_t), length);
+    if (question == NULL)
+        return -2;
+    scratch->question = question;
+    question[0] = (uint32_t)op;
+    question[1] = context;
+    question[2] = (uint32_t)task;
+    if (op == FRAME_CALL) {
+        question[3] = (uint32_t)pc;
+        question[4] = (uint32_t)callee;
+        memcpy(question + 5, caller, locals * sizeof(uint32_t));
+    }
+    if (vt_index(&table->frame_questions) < 0 || vt_index(&table->frame_answers) < 0)
+        return -2;
+    int32_t asked = vt_intern(&table->frame_questions, question, length);
+    if (asked < 0)
+        return -2;
+    if (asked < table->answer_of.length)
+        return table->answer_of.items[asked];
+    PyObject *answer = op == FRAME_CALL ?
+        PyObject_CallMethod((PyObject *)table, "called_context", "nnnny#", (Py_ssize_t)context,
+                            task, (Py_ssize_t)pc, (Py_ssize_t)callee, (const char *)caller,
+                            (Py_ssize_t)(locals * sizeof(uint32_t))) :
+        PyObject_CallMethod((PyObject *)table, "left_context", "nn", (Py_ssize_t)context, task);
+    if (answer == NULL)
+        return -2;
+    int32_t answer_id = NO_ANSWER;
+    long entered = 0;
+    int new_pc = 0;
+    const char *kept = NULL;
+    Py_ssize_t kept_size = 0;
+    if (answer != Py_None) {
+        int parsed = op == FRAME_CALL ?
+            (entered = PyLong_AsLong(answer), !(entered == -1 && PyErr_Occurred())) :
+            PyArg_ParseTuple(answer, "liy#", &entered, &new_pc, &kept, &kept_size);
+        if (!parsed) {
+            Py_DECREF(answer);
+            return -2;
+        }
+        Py_ssize_t kept_count = kept_size / (Py_ssize_t)sizeof(uint32_t);
+        uint32_t *made = reserve(scratch->question, &scratch->question_capacity,
+                                 sizeof(uint32_t), 2 + kept_count);
+        if (made == NULL) {
+            Py_DECREF(answer);
+            return -2;
+        }
+        scratch->question = made;
+        made[0] = (uint32_t)entered;            /* (-1 and beyond: no context, checked) */
+        made[1] = (uint32_t)new_pc;
+        if (kept_count)
+            memcpy(made + 2, kept, kept_count * sizeof(uint32_t));
+        answer_id = vt_intern(&table->frame_answers, made, 2 + kept_count);
+    }
+    Py_DECREF(answer);
+    if (answer_id == -1 && PyErr_Occurred())
+        return -2;
+    return vector32_push(&table->answer_of, answer_id) < 0 ? -2 : answer_id;
+}
+
 /* The successor of a step that changes the task's frames (``run->frame_op``): CALL pushes
  * the callee's frame (``enter_routine``), LEAVE pops the task's frame and its caller goes
  * on after the call (``leave_routine``).  The frames below the top are the context's:
@@ -1817,62 +2012,40 @@ static int frame_step(PackedTable *table, Scratch *scratch, Run *run, const int3
                       int32_t data_id, Py_ssize_t data_length, Successors *found,
                       Int32Vector *changed)
 {
-    const int32_t *call = code + run->call_at;
-    PyObject *answer;
-    if (run->frame_op == FRAME_CALL)
-        answer = PyObject_CallMethod((PyObject *)table, "called_context", "nnnny#",
-                                     (Py_ssize_t)context, task, (Py_ssize_t)pc,
-                                     (Py_ssize_t)call[0], (const char *)(frame + where + 1),
-                                     (Py_ssize_t)(locals * sizeof(uint32_t)));
-    else
-        answer = PyObject_CallMethod((PyObject *)table, "left_context", "nn",
-                                     (Py_ssize_t)context, task);
-    if (answer == NULL)
-        return -1;
-    if (answer == Py_None) {
-        Py_DECREF(answer);
+    const int32_t *call = code + run->call_at;      /* (a call's only) */
+    int32_t answer_id = entered_context(table, scratch, run->frame_op, context, task, pc,
+                                        run->frame_op == FRAME_CALL ? call[0] : -1,
+                                        frame + where + 1, locals);
+    if (answer_id < 0)
+        return answer_id == NO_ANSWER ? VM_UNSUPPORTED : -1;
+    Py_ssize_t answer_length;
+    const uint32_t *answer = vt_items(&table->frame_answers, answer_id, &answer_length);
+    int64_t entered = answer[0];
+    int32_t new_pc = (int32_t)answer[1];
+    const uint32_t *kept = answer + 2;          /* the caller's locals (a return) */
+    Py_ssize_t kept_count = answer_length - 2;
+    if (entered < 0 || entered >= table->contexts)
         return VM_UNSUPPORTED;
-    }
-    long entered;
-    int32_t new_pc = 0;
-    const char *kept = NULL;            /* the caller's locals (a return) */
-    Py_ssize_t kept_size = 0;
-    int parsed = run->frame_op == FRAME_CALL ?
-        (entered = PyLong_AsLong(answer), !(entered == -1 && PyErr_Occurred())) :
-        PyArg_ParseTuple(answer, "liy#", &entered, &new_pc, &kept, &kept_size);
-    if (!parsed) {
-        Py_DECREF(answer);
-        return -1;
-    }
-    if (entered < 0 || entered >= table->contexts) {
-        Py_DECREF(answer);
-        return VM_UNSUPPORTED;
-    }
     /* (the context tables may have moved: Python added a context) */
     const int32_t *info = table->context_tasks + (entered * table->task_count + task) * TASK_INFO;
     int32_t top = info[0], count = info[2];
     if (top < 0 || top >= table->routine_count ||
             info[1] != where || new_pc < 0 || new_pc >= table->routines[top].length ||
             (table->projecting && table->routines[top].code == NULL) ||
-            (kept != NULL && kept_size != count * (Py_ssize_t)sizeof(uint32_t))) {
-        Py_DECREF(answer);
+            (run->frame_op == FRAME_LEAVE && kept_count != count))
         return VM_UNSUPPORTED;
-    }
     Py_ssize_t length = frame_length - locals + count, after = where + 1 + locals;
     uint32_t *made = reserve(scratch->called, &scratch->called_capacity, sizeof(uint32_t),
                              length + 1);
-    if (made == NULL) {
-        Py_DECREF(answer);
+    if (made == NULL)
         return -1;
-    }
     scratch->called = made;
     memcpy(made, frame, where * sizeof(uint32_t));
     made[0] = (uint32_t)entered;
     memcpy(made + where + 1 + count, frame + after, (frame_length - after) * sizeof(uint32_t));
     uint32_t *top_locals = made + where + 1;
-    if (kept != NULL)
-        memcpy(top_locals, kept, kept_size);
-    Py_DECREF(answer);
+    if (run->frame_op == FRAME_LEAVE)
+        memcpy(top_locals, kept, kept_count * sizeof(uint32_t));
     if (run->frame_op == FRAME_CALL) {
         int32_t initial = call[1], arguments = call[2 + initial];
         const int32_t *params = call + 3 + initial;
@@ -2090,16 +2263,18 @@ static int probe_step(PackedTable *table, Scratch *scratch, const int32_t *info,
 
 /* A machine step of ``task`` run on through its merged local instructions, as
  * ``reduction.local_runs`` runs it: while the next instruction is mergeable and has one
- * transition that keeps the context (running, ERRNO, the frames' depth and modes; each
- * step changes the state).  VM_DONE (the successor's segments updated), VM_UNSUPPORTED
- * (the machine does not take a step on the way, or the run goes through a call or a
- * return: Python decides), -1. */
+ * transition that keeps running, ERRNO and the modes of the task's frames, and changes
+ * the state.  The machine's steps keep the first three, and each one it takes changes the
+ * state; its own calls and returns (``frame_step``) push a normal frame or pop the top
+ * one and keep the modes of the frames below, so a run goes on through them as
+ * ``_went_on`` lets it.  VM_DONE (the successor's segments updated), VM_UNSUPPORTED (the
+ * machine does not take a step on the way: Python decides), -1. */
 static int run_on(PackedTable *table, Scratch *scratch, Py_ssize_t task, int32_t *frame_id,
                   int32_t *data_id)
 {
     for (;;) {
         /* (the context of the step's target: a call or a return changes it) */
-        uint32_t context, reached;
+        uint32_t context;
         const int32_t *info = task_info_at(table, *frame_id, task, &context);
         int64_t pc = task_pc(table, *frame_id, info[1]);
         if (info[0] < 0 || !(order_flags(table, task, info[0], pc) & ORDER_MERGEABLE))
@@ -2109,11 +2284,9 @@ static int run_on(PackedTable *table, Scratch *scratch, Py_ssize_t task, int32_t
             return outcome;
         if (scratch->probe.count != 1)
             return VM_DONE;
+        uint32_t reached;
         task_info_at(table, scratch->probe.frames[0], task, &reached);
-        if (reached != context)
-            /* a call or a return on the way: ``local_runs`` goes on through it where the
-             * frames kept keep their modes (``_went_on``); Python takes such a run */
-            return VM_UNSUPPORTED;
+        table->run_frame_steps += reached != context;
         *frame_id = scratch->probe.frames[0];
         *data_id = scratch->probe.data[0];
     }
@@ -2552,7 +2725,8 @@ static PyObject *PackedTable_new(PyTypeObject *type, PyObject *args, PyObject *k
     self->value_slots = new_slots(FIRST_CAPACITY);
     if (self->object_ids == NULL || self->states.slots == NULL || self->value_slots == NULL ||
             vt_init(&self->frames) < 0 || vt_init(&self->data) < 0 || vt_init(&self->spare) < 0 ||
-            vt_init(&self->signals) < 0) {
+            vt_init(&self->signals) < 0 || vt_init(&self->frame_questions) < 0 ||
+            vt_init(&self->frame_answers) < 0) {
         Py_DECREF(self);
         return PyErr_Occurred() ? NULL : PyErr_NoMemory();
     }
@@ -2639,6 +2813,7 @@ static void PackedTable_dealloc(PackedTable *self)
     PyMem_Free(self->item_memo_hash);
     PyMem_Free(self->big_slots);
     PyMem_Free(self->big_hashes);
+    PyMem_Free(self->big_sums);
     free_program(self);
     PyMem_Free(self->value_tag);
     PyMem_Free(self->value_number);
@@ -2648,6 +2823,9 @@ static void PackedTable_dealloc(PackedTable *self)
     vt_free(&self->data);
     vt_free(&self->spare);
     vt_free(&self->signals);
+    vt_free(&self->frame_questions);
+    vt_free(&self->frame_answers);
+    vector32_free(&self->answer_of);
     PyMem_Free(self->context_io);
     vector32_free(&self->newly_executed);
     PyMem_Free(self->states.keys);
@@ -3291,91 +3469,103 @@ static PyObject *PackedTable_step(PackedTable *self, PyObject *argument)
     return result;
 }
 
-/* ``successor_ids(id, valuation) -> (ids, bits) or None``: the machine's step of a stored
- * state with its successors interned: their ids in model order, and the valuation's bits
- * of each new one in id order (None when the valuation is not compiled, -1); None when
- * the machine leaves the state to Python (``check.store.ModelStore``'s fast path) */
+static PyTypeObject PackedTableType;
+
+int packed_check(PyObject *object)
+{
+    return PyObject_TypeCheck(object, &PackedTableType);
+}
+
+int packed_successor_ids(PyObject *object, Py_ssize_t id, Py_ssize_t valuation,
+                         Int32Vector *ids, Uint64Vector *bits, Int32Vector *valued)
+{
+    PackedTable *self = (PackedTable *)object;
+    ids->length = bits->length = valued->length = 0;
+    if (id < 0 || id >= self->states.count || valuation >= self->valuation_count) {
+        PyErr_Format(PyExc_IndexError, "no such state or valuation");
+        return -1;
+    }
+    if (ensure_index(self) < 0)
+        return -1;
+    if (self->scratch == NULL) {
+        self->scratch = PyMem_Calloc(1, sizeof(Scratch));
+        if (self->scratch == NULL) {
+            PyErr_NoMemory();
+            return -1;
+        }
+        if (scratch_init(self->scratch, self) < 0) {
+            PyMem_Free(self->scratch);
+            self->scratch = NULL;
+            return -1;
+        }
+    }
+    Scratch *scratch = self->scratch;
+    Successors *found = &scratch->found;
+    int outcome = machine_successors(self, id, scratch, found);
+    self->newly_executed.length = 0;
+    if (outcome < 0)
+        return -1;
+    if (outcome != VM_DONE) {
+        self->python_steps++;
+        return PACKED_UNSUPPORTED;
+    }
+    self->machine_steps++;
+    for (Py_ssize_t i = 0; i < found->count; i++) {
+        int is_new = 0;
+        Py_ssize_t successor = intern_key(self, found->frames[i], found->data[i], 1, &is_new);
+        if (successor < 0 || vector32_push(ids, successor) < 0)
+            return -1;
+        if (is_new) {
+            uint64_t value = 0;
+            int valued_here = valuation < 0 ? VM_UNSUPPORTED :
+                machine_valuation(self, valuation, successor, scratch, &value);
+            if (valued_here < 0 || vector64_push(bits, value) < 0 ||
+                    vector32_push(valued, valued_here == VM_DONE) < 0)
+                return -1;
+        }
+    }
+    return PACKED_STEPPED;
+}
+
+/* ``successor_ids(id, valuation) -> (ids, bits) or None``: ``packed_successor_ids`` for
+ * Python: the successors' ids in model order, and the valuation's bits of each new one in
+ * id order (None where the machine did not value it; all None when the valuation is not
+ * compiled, -1); None when the machine leaves the state to Python
+ * (``check.store.ModelStore``'s fast path) */
 static PyObject *PackedTable_successor_ids(PackedTable *self, PyObject *args)
 {
     Py_ssize_t id, valuation;
     if (!PyArg_ParseTuple(args, "nn", &id, &valuation))
         return NULL;
-    if (id < 0 || id >= self->states.count || valuation >= self->valuation_count)
-        return PyErr_Format(PyExc_IndexError, "no such state or valuation");
-    if (ensure_index(self) < 0)
-        return NULL;
-    if (self->scratch == NULL) {
-        self->scratch = PyMem_Calloc(1, sizeof(Scratch));
-        if (self->scratch == NULL)
-            return PyErr_NoMemory();
-        if (scratch_init(self->scratch, self) < 0) {
-            PyMem_Free(self->scratch);
-            self->scratch = NULL;
-            return NULL;
-        }
-    }
-    Scratch *scratch = self->scratch;
-    Successors *found = &scratch->found;
-    PyObject *ids = NULL, *bits = NULL, *result = NULL;
-    int outcome = machine_successors(self, id, scratch, found);
-    self->newly_executed.length = 0;
+    Int32Vector ids = {0}, valued = {0};
+    Uint64Vector bits = {0};
+    PyObject *id_items = NULL, *bit_items = NULL, *result = NULL;
+    int outcome = packed_successor_ids((PyObject *)self, id, valuation, &ids, &bits, &valued);
     if (outcome < 0)
         goto done;
-    if (outcome != VM_DONE) {
-        self->python_steps++;
+    if (outcome != PACKED_STEPPED) {
         result = Py_NewRef(Py_None);
         goto done;
     }
-    self->machine_steps++;
-    ids = PyList_New(found->count);
-    bits = valuation >= 0 ? PyList_New(0) : Py_NewRef(Py_None);
-    if (ids == NULL || bits == NULL)
+    id_items = int32_list(ids.items, ids.length);
+    bit_items = valuation >= 0 ? PyList_New(bits.length) : Py_NewRef(Py_None);
+    if (id_items == NULL || bit_items == NULL)
         goto done;
-    for (Py_ssize_t i = 0; i < found->count; i++) {
-        int is_new = 0;
-        Py_ssize_t successor = intern_key(self, found->frames[i], found->data[i], 1, &is_new);
-        if (successor < 0)
+    for (Py_ssize_t i = 0; valuation >= 0 && i < bits.length; i++) {
+        PyObject *item = valued.items[i] ? PyLong_FromUnsignedLongLong(bits.items[i]) :
+            Py_NewRef(Py_None);              /* (None: Python values this one) */
+        if (item == NULL)
             goto done;
-        PyObject *number = PyLong_FromSsize_t(successor);
-        if (number == NULL)
-            goto done;
-        PyList_SET_ITEM(ids, i, number);
-        if (is_new && valuation >= 0) {
-            uint64_t value = 0;
-            int valued = machine_valuation(self, valuation, successor, scratch, &value);
-            if (valued < 0)
-                goto done;
-            PyObject *item = valued == VM_DONE ? PyLong_FromUnsignedLongLong(value) :
-                Py_NewRef(Py_None);          /* (None: Python values this one) */
-            if (item == NULL || PyList_Append(bits, item) < 0) {
-                Py_XDECREF(item);
-                goto done;
-            }
-            Py_DECREF(item);
-        }
+        PyList_SET_ITEM(bit_items, i, item);
     }
-    result = PyTuple_Pack(2, ids, bits);
+    result = PyTuple_Pack(2, id_items, bit_items);
 done:
-    Py_XDECREF(ids);
-    Py_XDECREF(bits);
+    Py_XDECREF(id_items);
+    Py_XDECREF(bit_items);
+    vector32_free(&ids);
+    vector32_free(&valued);
+    vector64_free(&bits);
     return result;
-}
-
-/* a Python list of ints (a new reference) */
-static PyObject *id_list(const int32_t *ids, Py_ssize_t count)
-{
-    PyObject *list = PyList_New(count);
-    if (list == NULL)
-        return NULL;
-    for (Py_ssize_t i = 0; i < count; i++) {
-        PyObject *number = PyLong_FromLong(ids[i]);
-        if (number == NULL) {
-            Py_DECREF(list);
-            return NULL;
-        }
-        PyList_SET_ITEM(list, i, number);
-    }
-    return list;
 }
 
 /* ``pairs`` (a sequence of (frame id, data id), as ``python_successors`` gives them) into
@@ -3452,8 +3642,8 @@ static int watch_says(PackedTable *table, PyObject *watch, Py_ssize_t id, int by
             if (found->frames[i] != frame || found->data[i] != data)
                 return 0;
     }
-    PyObject *frames = id_list(found->frames, found->count);
-    PyObject *datas = frames == NULL ? NULL : id_list(found->data, found->count);
+    PyObject *frames = int32_list(found->frames, found->count);
+    PyObject *datas = frames == NULL ? NULL : int32_list(found->data, found->count);
     PyObject *answer = datas == NULL ? NULL :
         PyObject_CallFunction(watch, "nOO", id, frames, datas);
     Py_XDECREF(frames);
@@ -3626,10 +3816,13 @@ static PyObject *PackedTable_native_bytes(PackedTable *self, PyObject *unused)
         + self->value_capacity * (1 + sizeof(double) + sizeof(PyObject *))
         + (self->value_mask + 1) * sizeof(int32_t)
         + vt_bytes(&self->signals) + self->context_capacity * (2 * sizeof(int32_t) + 1)
+        + vt_bytes(&self->frame_questions) + vt_bytes(&self->frame_answers)
+        + self->answer_of.capacity * sizeof(int32_t)
         + self->context_tasks_capacity * self->task_count * TASK_INFO * sizeof(int32_t)
         + self->places.key_capacity * sizeof(int64_t)      /* (the reduction's numbers) */
         + (self->places.slots != NULL ? (self->places.mask + 1) * sizeof(int32_t) : 0)
         + (self->row_at_capacity + self->row_capacity) * sizeof(int64_t)
+        + self->big_sums_capacity * sizeof(uint64_t)
         + (self->big_slots != NULL ? (self->big_mask + 1) * (sizeof(int32_t) + sizeof(uint64_t))
            : 0);
     /* (the caches of a fixed size, ``id_cache_*`` and ``item_memo_*``, 304 KB in all, are
@@ -3639,7 +3832,7 @@ static PyObject *PackedTable_native_bytes(PackedTable *self, PyObject *unused)
 
 static PyObject *PackedTable_counts(PackedTable *self, PyObject *unused)
 {
-    return Py_BuildValue("{s:n,s:n,s:n,s:n,s:L,s:L,s:L,s:L,s:L,s:n,s:n}", "states",
+    return Py_BuildValue("{s:n,s:n,s:n,s:n,s:L,s:L,s:L,s:L,s:L,s:n,s:n,s:L}", "states",
                          self->states.count,
                          "frames", self->frames.count, "data", self->data.count,
                          "values", self->values, "machine_steps", self->machine_steps,
@@ -3647,7 +3840,8 @@ static PyObject *PackedTable_counts(PackedTable *self, PyObject *unused)
                          "task_machine_steps", self->task_machine_steps,
                          "task_python_steps", self->task_python_steps,
                          "rows_reused", self->rows_reused, "places", self->places.count,
-                         "row_keys", self->row_length);
+                         "row_keys", self->row_length,
+                         "run_frame_steps", self->run_frame_steps);
 }
 
 /* ``set_tasks(count)``: the program's tasks (2-64: each context then says where each
@@ -4166,8 +4360,8 @@ static int observe(PackedSearch *search, Py_ssize_t frontier, int by_machine)
                 return note_trigger(search, bits);
         }
     }
-    PyObject *frames = id_list(search->found.frames, search->found.count);
-    PyObject *datas = frames == NULL ? NULL : id_list(search->found.data, search->found.count);
+    PyObject *frames = int32_list(search->found.frames, search->found.count);
+    PyObject *datas = frames == NULL ? NULL : int32_list(search->found.data, search->found.count);
     PyObject *answer = datas == NULL ? NULL :
         PyObject_CallFunction(search->python_observe, "nOO", frontier, frames, datas);
     Py_XDECREF(frames);

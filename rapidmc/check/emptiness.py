@@ -246,7 +246,9 @@ class _NativeCycleSearch:
         self.initial_bad_path: Optional[list[int]] = None
         self.search = _native.CycleSearch(product.successor_keys, bytes(product.accepting),
                                           product.width, budget, self.graph,
-                                          bytes(product.universal))
+                                          bytes(product.universal),
+                                          None if self.graph is not None else
+                                          product.native_machine())
 
     @property
     def bad_path(self) -> Optional[list[int]]:

@@ -98,13 +98,22 @@ class Product:
 
     def successor_keys(self, key: int) -> list[int]:
         """Distinct product successors of ``key`` in deterministic order (the hot path)."""
+        state_id, q = divmod(key, self.width)
+        return self._keys(q, self.store.successor_ids(state_id))
+
+    def python_successor_keys(self, key: int) -> list[int]:
+        """``successor_keys`` with the model stepped in Python (``native_machine``)."""
+        state_id, q = divmod(key, self.width)
+        return self._keys(q, self.store.python_successor_ids(state_id))
+
+    def _keys(self, q: int, target_ids) -> list[int]:
+        """The product keys of automaton state ``q`` with the model states ``target_ids``."""
         width = self.width
-        state_id, q = divmod(key, width)
         if self.tables is not None:          # the guard table of ``q``: one index per target
             table, read = self.tables[q], self.read
             valuations = self.store.valuations
             keys = []
-            for target_id in self.store.successor_ids(state_id):
+            for target_id in target_ids:
                 base = target_id * width
                 for target in table[valuations[target_id] & read]:
                     keys.append(base + target)
@@ -112,7 +121,7 @@ class Product:
         known = self._moves[q]
         valuations = self.store.valuations
         keys = []
-        for target_id in self.store.successor_ids(state_id):
+        for target_id in target_ids:
             valuation = valuations[target_id]
             targets = known.get(valuation)
             if targets is None:
@@ -133,12 +142,30 @@ class Product:
         found = rows()
         if found is None:
             return None
+        return (found, *self._move_arrays(), self.read)
+
+    def native_machine(self) -> Optional[tuple]:
+        """What the compiled core's cycle search needs to compute ``successor_keys`` itself
+        over a packed table's step machine (``ModelStore``'s fast path, with guard
+        tables): (store, ``python_successor_keys``, the index of the machine's atoms, -1
+        where they are not compiled, move starts, moves, read); else None."""
+        store = self.store
+        if getattr(store, "_machine", None) is None or self.tables is None or \
+                not isinstance(store.valuations, array):
+            return None
+        starts, moves = self._move_arrays()
+        return store, self.python_successor_keys, store._machine_valuation, starts, moves, \
+            self.read
+
+    def _move_arrays(self) -> tuple[bytes, bytes]:
+        """The guard tables as (starts, moves): the moves of (q, v) are
+        moves[starts[q * (read + 1) + v] .. starts[q * (read + 1) + v + 1]]."""
         starts, moves = array("i", [0]), array("i")
         for table in self.tables:
             for targets in table:
                 moves.extend(targets)
                 starts.append(len(moves))
-        return found, starts.tobytes(), moves.tobytes(), self.read
+        return starts.tobytes(), moves.tobytes()
 
     def labelled_successor_keys(self, key: int) -> list[tuple[Hashable, int]]:
         """Every (model label, product successor), for rebuilding paths (slow path)."""

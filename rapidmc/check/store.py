@@ -82,11 +82,7 @@ class ModelStore:
         kept as handed over."""
         if valuation is None:
             valuation = self.valuation(state)
-        try:
-            self.valuations.append(valuation)
-        except OverflowError:
-            self.valuations = wider(self.valuations, valuation)
-            self.valuations.append(valuation)
+        self._append_valuation(valuation)
         if not self._keep_new:
             return
         fresh = self._fresh
@@ -109,6 +105,11 @@ class ModelStore:
             stepped = self._machine(state_id, self._machine_valuation)
             if stepped is not None:
                 return self._machine_stepped(state_id, *stepped)
+        return self.python_successor_ids(state_id)
+
+    def python_successor_ids(self, state_id: int) -> tuple[int, ...]:
+        """``successor_ids`` by the model's Python step (where the step machine leaves the
+        state to it)."""
         state = self._fresh.pop(state_id, None)
         if state is None:
             state = self.states[state_id]
@@ -155,14 +156,38 @@ class ModelStore:
         if bits is None:
             bits = [None] * len(new_ids)
         for new_id, value in zip(new_ids, bits):
-            if value is None:
-                value = self.valuation(self.states[new_id])
-            try:
-                self.valuations.append(value)
-            except OverflowError:
-                self.valuations = wider(self.valuations, value)
-                self.valuations.append(value)
+            self._append_valuation(self.valuation_of(new_id) if value is None else value)
         return self._expanded(state_id, distinct(ids))
+
+    # The compiled cycle search steps the machine itself (``Product.native_machine``):
+    # it hands over the valuations of the states the machine added, asks for the table
+    # with this store's states selected, and for the valuation of a state the machine's
+    # atoms gave up on.
+    def machine_table(self):
+        return self.states.machine_table()
+
+    def add_valuations(self, packed: bytes) -> None:
+        """The valuations of the next states, as unsigned 64-bit numbers."""
+        added = array("Q")
+        added.frombytes(packed)
+        if type(self.valuations) is array:
+            try:
+                self.valuations.extend(array(self.valuations.typecode, added))
+                return
+            except OverflowError:               # (one needs a wider array)
+                pass
+        for value in added:
+            self._append_valuation(value)
+
+    def valuation_of(self, state_id: int) -> int:
+        return self.valuation(self.states[state_id])
+
+    def _append_valuation(self, value: int) -> None:
+        try:
+            self.valuations.append(value)
+        except OverflowError:
+            self.valuations = wider(self.valuations, value)
+            self.valuations.append(value)
 
     def _expanded(self, state_id: int, result: tuple[int, ...]) -> tuple[int, ...]:
         """Book-keeping after a state's successors were found: the cache and its review."""
