@@ -569,7 +569,8 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
         if _probing(searches) and searches.facts.waits_for_other_tasks():
             searches.facts.statements.executed |= _shared_data_probe(model, bound)
     resting_on = stated_domains(model.assumed) \
-        + assumptions(model.program, model.config.robot_untracked)
+        + assumptions(model.program, model.config.robot_untracked,
+                      model.plan.slicing.move_shaping)
     results = [replace(r, assumes=for_verdict(resting_on, r.result, model.describer))
                for r in results]
     return CheckReport(results, _findings(model, results, searches.facts, searches.notes),

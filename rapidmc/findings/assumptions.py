@@ -35,9 +35,13 @@ loaded module says for sure:
 * **the robot's position left out of states**: where nothing but moves reads it
   (``model.robot_tracking``), moves leave the robot where it is; the verdicts are
   those of the tracked robot, but a counterexample shows the robot at its start
-  and positions read back as that (``--track-robot`` keeps it).
+  and positions read back as that (``--track-robot`` keeps it);
+* **data that only shapes moves' targets left out of states**: then (the robot not
+  tracked) data whose values reach nothing but where moves go is sliced, on the
+  assumption that its arithmetic stays within num's range
+  (``model.reduction.move_shaping``).
 
-``assumptions(program, robot_untracked)`` lists them once; ``touched(assumption list, result)``
+``assumptions(program, robot_untracked, move_shaping)`` lists them once; ``touched(assumption list, result)``
 keeps those a counterexample executes a statement of (the names each executed
 statement mentions, merged steps expanded), so that a VIOLATED verdict names
 only what its counterexample rests on and HOLDS names everything.
@@ -94,10 +98,12 @@ class Assumption:
         return self.key in names or not self.mentions.isdisjoint(names)
 
 
-def assumptions(program: Program, robot_untracked: bool = False) -> tuple[Assumption, ...]:
+def assumptions(program: Program, robot_untracked: bool = False,
+                move_shaping: tuple = ()) -> tuple[Assumption, ...]:
     """Every assumption the program's verdicts may rest on, in a stable order;
     ``robot_untracked``: the check leaves the robot's position out of its states
-    (``CheckConfig.robot_untracked``)."""
+    (``CheckConfig.robot_untracked``); ``move_shaping``: (name, span) of the data sliced
+    because it only shapes moves' targets (``Slicing.move_shaping``)."""
     stub_files = _stub_files(program)
     found = list(_stubs(program, stub_files))
     found += [_reading(warning) for warning in fixed_readings(program)]
@@ -125,6 +131,8 @@ def assumptions(program: Program, robot_untracked: bool = False) -> tuple[Assump
     found += list(_barriers_without_partners(program))
     if robot_untracked:
         found.append(UNTRACKED_ROBOT)
+    if move_shaping:
+        found.append(_move_shaping(move_shaping))
     found += _robot_start(program)
     return tuple(found)
 
@@ -227,6 +235,21 @@ UNTRACKED_ROBOT = Assumption(
     "the robot's position is not tracked: nothing but moves reads it, so moves leave the "
     "robot where it is (a position read back is its start; --track-robot tracks it)",
     frozenset(MOVE_ROUTINES) | frozenset(ROBOT_PARTS))
+
+
+def _move_shaping(data: tuple) -> Assumption:
+    """The data left out of states because only moves' targets read it."""
+    shown = ", ".join(f"{name} ({_where(span)})" for name, span in data[:3]) + \
+        (f" and {len(data) - 3} more" if len(data) > 3 else "")
+    one = len(data) == 1
+    return Assumption(
+        UNTRACKED, data[0][0],
+        f"{shown} only {'shapes' if one else 'shape'} where moves go: with the robot's position "
+        f"not tracked, {'it is' if one else 'they are'} left out of states, and "
+        f"{'its' if one else 'their'} arithmetic is taken to stay within num's range "
+        f"(ERR_NUM_LIMIT is not looked for there; --track-robot keeps "
+        f"{'it' if one else 'them'})",
+        frozenset(name.rsplit(".", 1)[-1].upper() for name, _ in data))
 
 
 # --- stubs ----------------------------------------------------------------------------

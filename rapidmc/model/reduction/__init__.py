@@ -77,7 +77,8 @@ def plan_reductions(program: Program, config, atoms: Iterable[str],
     """
     atoms = tuple(atoms)
     keys = atom_keys_of(atoms)
-    slicing = find_slicing(program, atoms) if reductions.slice_data else NO_SLICING
+    slicing = find_slicing(program, atoms, getattr(config, "robot_untracked", False)) \
+        if reductions.slice_data else NO_SLICING
     dead = DeadData(program, keys) if reductions.dead_data else None
     if dead is not None and dead.empty:
         dead = None

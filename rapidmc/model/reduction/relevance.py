@@ -60,6 +60,9 @@ class Slicing:
     # the spans of the assignments ``x := e`` to sliced data named directly whose ``e``
     # is total: skipped, they change only sliced values
     total_writes: frozenset = frozenset()
+    # the sliced data that only shape moves' targets (``move_shaping``): sliced on the
+    # assumption that their arithmetic stays within num's range, each (name, span)
+    move_shaping: tuple = ()
 
     @property
     def empty(self) -> bool:
@@ -74,14 +77,26 @@ def atom_keys_of(atom_texts: Iterable[str]) -> set[str]:
     return {token.upper() for text in atom_texts for token in _IDENTIFIER.findall(text)}
 
 
-def find_slicing(program: Program, atom_texts: Iterable[str] = ()) -> Slicing:
-    """The data no check of ``program`` against atoms ``atom_texts`` can observe."""
+def find_slicing(program: Program, atom_texts: Iterable[str] = (),
+                 moves_unobserved: bool = False) -> Slicing:
+    """The data no check of ``program`` against atoms ``atom_texts`` can observe;
+    ``moves_unobserved``: the check leaves the robot's position out (moves do not change
+    the state), so data that only shapes moves' targets is sliced too, on the assumption
+    ``move_shaping`` states."""
     analysis = _Analysis(program)
     if not analysis.run():
         return NO_SLICING
     atom_keys = atom_keys_of(atom_texts)
     analysis.observe(atom_keys)
     relevant = analysis.closure()
+    shaping = set()
+    if moves_unobserved:
+        from .move_shaping import MoveShaping   # (a refinement of this module's analysis)
+        moves = MoveShaping(program)
+        if moves.run():
+            moves.observe(atom_keys)
+            shaping = relevant - moves.closure()
+            relevant = relevant - shaping
     sliced_globals = tuple(
         data.slot for data in program.globals
         if ("G", data.slot) not in relevant and data.key not in atom_keys
@@ -97,7 +112,17 @@ def find_slicing(program: Program, atom_texts: Iterable[str] = ()) -> Slicing:
         {("L", routine, slot) for routine, slots in sliced_locals.items() for slot in slots}
     total_writes = frozenset(span for span, key in analysis.total_writes.items()
                              if key in sliced)
-    return Slicing(sliced_globals, sliced_locals, total_writes)
+    return Slicing(sliced_globals, sliced_locals, total_writes,
+                   tuple(_named(program, key) for key in sorted(shaping & sliced)))
+
+
+def _named(program: Program, key: Key) -> tuple:
+    """(name, declaration span) of sliced data: ``h``, or ``Place.x`` for routine data."""
+    if key[0] == "G":
+        data = program.globals[key[1]]
+        return data.name, data.span
+    routine = program.routines[key[1]]
+    return f"{routine.name}.{routine.local_names[key[2]]}", routine.span
 
 
 def is_value(rapid_type) -> bool:
@@ -149,6 +174,8 @@ class Resolver:
 class _Analysis:
     """Seeds (data that matter by themselves) and flows (target <- sources)."""
 
+    totality_type = Totality        # which expressions never fail
+
     def __init__(self, program: Program):
         self.program = program
         self.relevant: set[Key] = set()
@@ -164,7 +191,7 @@ class _Analysis:
                 return False
             self.routine = routine
             self.resolver = Resolver(routine)
-            self.totality = Totality(self.symbol)
+            self.totality = self.totality_type(self.symbol)
             decl: ast.Routine = routine.ast
             for data in decl.data:
                 for expr in (*data.dims, data.init):

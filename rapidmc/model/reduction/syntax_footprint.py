@@ -21,7 +21,15 @@ found by its span:
   value reads only such data;
 * ``TPWrite`` writes a line to the transition's output, which no other task
   reads and no atom names, and ``WaitTime`` is one step when checking
-  (``library.waits``): independent when their arguments read only such data.
+  (``library.waits``): independent when their arguments read only such data;
+* a predefined procedure that changes nothing rapidmc observes (``NO_EFFECT`` in the
+  registry: ``AccSet``, ``ErrWrite``, ``ClearPath`` ...), the socket instructions
+  (``library.sockets``: each reads and writes only the data passed to it, chooses
+  among outcomes the check's options fix, and writes the transition's output) and the
+  rawbytes instructions (``library.raw_data``, the data passed to them only) are
+  independent when every argument passed by reference is the task's own (as an
+  assignment's target) and every other reads only such data;
+  ``SocketGetStatus`` reads only the socket passed to it.
 
 "Reads only data no other task writes" (``SyntaxReads.allowed``): constants,
 routine data and parameters passed by value, FOR variables, global data no
@@ -72,6 +80,16 @@ _PLAIN_EXPRESSIONS = frozenset({ast.NumLiteral, ast.StringLiteral, ast.BoolLiter
 # predefined procedures whose only effect is on the transition's output, or none
 # when checking, besides reading their arguments
 _QUIET_PROCEDURES = frozenset({"TPWRITE", "WAITTIME"})
+# predefined procedures that read and write only their arguments (the data under those
+# passed by reference), choose among outcomes fixed by the check's options and write the
+# transition's output (``library.sockets``, ``library.raw_data``)
+_ARGUMENTS_ONLY = frozenset({"SOCKETCREATE", "SOCKETBIND", "SOCKETLISTEN", "SOCKETCLOSE",
+                             "SOCKETACCEPT", "SOCKETCONNECT", "SOCKETSEND", "SOCKETRECEIVE",
+                             "CLEARRAWBYTES", "COPYRAWBYTES", "PACKRAWBYTES",
+                             "UNPACKRAWBYTES"})
+# predefined functions that read only the data passed to them, by reference too
+# (``Present`` reads whether an optional parameter of the task's own frame is given)
+_READS_ITS_ARGUMENTS = frozenset({"SOCKETGETSTATUS", "PRESENT"})
 # statements and calls an instruction may be compiled from, found by span
 _STATEMENTS = (ast.Assignment, ast.ProcedureCall, ast.FunctionCall, ast.Return)
 
@@ -113,7 +131,8 @@ class SyntaxReads:
                     # a user function: hoisted before the instruction, which reads the
                     # result from the frame (its arguments are the call's to judge)
                     continue
-                if not _pure_function(node, lookup):
+                if not (_pure_function(node, lookup) or
+                        node.name.key in _READS_ITS_ARGUMENTS and lookup(node.name.key) is None):
                     return False
                 work.extend(argument for argument in node.args)
             elif kind is ast.Argument:
@@ -171,16 +190,56 @@ class StatementFootprints:
         if isinstance(node, ast.ProcedureCall):
             update = as_assignment(node, lookup)
             if update is None:
-                quiet = node.name.key in _QUIET_PROCEDURES and lookup(node.name.key) is None
-                return LOCAL if quiet and self._arguments_allowed(task, routine, node) \
-                    else SHARED
+                return self._predefined(task, routine, node) \
+                    if lookup(node.name.key) is None else SHARED
             node = update
         if not isinstance(node, ast.Assignment):
             return SHARED
-        if not (self.reads.allowed(task, routine, node.target) and
-                self.reads.allowed(task, routine, node.value)):
+        if not self.reads.allowed(task, routine, node.value):
             return SHARED
-        root = target_root(node.target)
+        return self._written(task, routine, node.target)
+
+    def _predefined(self, task: int, routine, call) -> Footprint:
+        """A call of a predefined procedure: TPWrite and WaitTime, a procedure with no
+        effect, a socket instruction (module docstring); any other is shared."""
+        key = call.name.key
+        if key in _QUIET_PROCEDURES:
+            return LOCAL if self._arguments_allowed(task, routine, call) else SHARED
+        entry = registry.lookup_procedure(key)
+        if entry is None or key not in _ARGUMENTS_ONLY and entry.modelled != registry.NO_EFFECT:
+            return SHARED
+        parameters = entry.signature.parameters
+        required = [parameter for parameter in parameters if not parameter.optional]
+        found, position = LOCAL, 0
+        for argument in call.args:
+            if argument.kind == ast.CONDITIONAL:
+                return SHARED
+            if argument.name is not None:
+                spec = next((p for p in parameters if p.key == argument.name.key), None)
+            else:
+                spec = required[position] if position < len(required) else None
+                position += 1
+            if argument.value is None and spec is not None and argument.name is not None:
+                continue                         # a switch
+            if spec is None:
+                return SHARED
+            if spec.by_reference:
+                footprint = self._written(task, routine, argument.value)
+            else:
+                footprint = LOCAL if self.reads.allowed(task, routine, argument.value) \
+                    else SHARED
+            if not footprint.independent:
+                return SHARED
+            found = VISIBLE if footprint.visible else found
+        return found
+
+    def _written(self, task: int, routine, target) -> Footprint:
+        """A write of the data under ``target`` (its indices read): independent when that
+        is the task's own (module docstring)."""
+        lookup = routine.scope.lookup
+        if not self.reads.allowed(task, routine, target):
+            return SHARED
+        root = target_root(target)
         symbol = lookup(root.name.key) if isinstance(root, ast.NameRef) else None
         if symbol is None:
             return SHARED
@@ -259,8 +318,8 @@ class ReferenceParameters:
     for: the roots of the arguments every call of the routine passes, each (None, global
     slot) or (calling routine's index, its own datum's slot); unknown (None) when some call
     passes anything else (a parameter passed on by reference, an optional one), names
-    its arguments or leaves one out, or a late-bound call (``%name%``) may reach the
-    routine.  Calls pass arguments only so (``Call``, ``LateCall``): an entry, a trap
+    its arguments or gives an optional one, or a late-bound call (``%name%``) may reach
+    the routine.  Optional parameters a call leaves out are absent.  Calls pass arguments only so (``Call``, ``LateCall``): an entry, a trap
     and a routine a move runs take none."""
 
     def __init__(self, program):
@@ -291,14 +350,19 @@ class ReferenceParameters:
                     nodes = statement_nodes(caller)
                 node = nodes.get(instruction.span)
                 args = getattr(node, "args", None)
-                plain = args is not None and len(args) == len(callee.parameters) and all(
+                # positional arguments bind the required parameters in order (optional
+                # ones left out are absent: ``referents`` gives nothing for them)
+                required = [parameter for parameter in callee.parameters
+                            if not parameter.optional]
+                plain = args is not None and len(args) == len(required) and all(
                     argument.kind == ast.REQUIRED and argument.name is None
                     for argument in args)
-                for position, parameter in enumerate(callee.parameters):
+                for parameter in callee.parameters:
                     if not parameter.by_reference:
                         continue
                     key = (callee.index, parameter.slot)
-                    root = _root(caller, args[position].value) if plain else None
+                    root = _root(caller, args[required.index(parameter)].value) \
+                        if plain and not parameter.optional else None
                     if root is None or passed.get(key, set()) is None:
                         passed[key] = None
                     else:

@@ -10,8 +10,8 @@ MODULE Cell
     count := count + 1;                  ! LOCAL
     Prepare;                             ! LOCAL
     WaitSyncTask ready, both;            ! SHARED
-    SocketCreate client;                 ! SHARED
-    SocketReceive client \Str:=reply;    ! SHARED
+    SocketCreate client;                 ! LOCAL
+    SocketReceive client \Str:=reply;    ! LOCAL
     count := StrLen(reply);              ! LOCAL
   ENDPROC                                ! SHARED
   PROC Prepare()
