@@ -317,3 +317,26 @@ def test_steps_left_out_count_each_output_by_where_it_went():
                   for index, output in enumerate(outputs, start=2))
     line = sliced_line(SlicedAway(steps, "the error"))
     assert "1 FlexPendant line written, 2 socket messages sent, 2 file lines written" in line
+
+
+def test_assumptions_differing_in_one_string_or_in_their_numbers_are_told_once():
+    from rapidmc.report.results import merged_assumptions
+    texts = ['CRobT reads the calling task\'s robot for \\TaskName:="T_ROB_L", which names no '
+             'loaded task (RMC702)',
+             'stub GripOpen is empty (Missing.mod:12)',
+             'CRobT reads the calling task\'s robot for \\TaskName:="T_ROB_R", which names no '
+             'loaded task (RMC702)',
+             'the signal AliasIO names at run time at Hand.sys:1092 is taken as configured, '
+             'a GI shown as <AliasIO at Hand.sys:1092>',
+             'the signal AliasIO names at run time at Hand.sys:1094 is taken as configured, '
+             'a GI shown as <AliasIO at Hand.sys:1094>',
+             'the signal AliasIO names at run time at Hand.sys:1096 is taken as configured, '
+             'a GO shown as <AliasIO at Hand.sys:1096>']
+    assert merged_assumptions(texts) == [
+        'CRobT reads the calling task\'s robot for \\TaskName:="T_ROB_L", "T_ROB_R", which '
+        'names no loaded task (RMC702)',
+        'stub GripOpen is empty (Missing.mod:12)',
+        'the signal AliasIO names at run time at Hand.sys:1092 (and 1094) is taken as '
+        'configured, a GI shown as <AliasIO at Hand.sys:1092>',
+        'the signal AliasIO names at run time at Hand.sys:1096 is taken as configured, '
+        'a GO shown as <AliasIO at Hand.sys:1096>']

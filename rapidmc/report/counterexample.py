@@ -589,6 +589,8 @@ def sliced_line(sliced: SlicedAway) -> str:
     names = list(dict.fromkeys(change.name for change in changes if change.new is not None))
     ended = list(dict.fromkeys(change.name.split(".")[0] for change in changes
                                if change.new is None and "." in change.name))
+    # a routine that returned in the stretch took its own data with it
+    names = [name for name in names if name.split(".")[0] not in ended]
     robots = [name for name in names if name.endswith(ROBOT_TCP)]
     routines = {frame.routine for step in steps for frame in step.stack}
     # the cell's data first, the routines' own (``HomeReturn.nActPos``) after them

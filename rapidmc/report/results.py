@@ -191,6 +191,30 @@ def merged_assumptions(texts: Sequence[str]) -> list[str]:
             continue
         strings = ", ".join(dict.fromkeys(QUOTED.search(text).group(0) for text in members))
         merged.append(key.replace('""', strings, 1))
+    return _merged_by_number(merged)
+
+
+NUMBER = re.compile(r"\d+")
+
+
+def _merged_by_number(texts: Sequence[str]) -> list[str]:
+    """The assumptions with those that differ only in their numbers (the line of each
+    AliasIO) told once, with the numbers that tell the others apart after the first's:
+    ``... at HandDriver.sys:1092 (and 1094, 1096) is taken ...``."""
+    groups: dict[str, list[str]] = {}
+    for text in texts:
+        groups.setdefault(NUMBER.sub("#", text), []).append(text)
+    merged = []
+    for members in groups.values():
+        if len(members) == 1:
+            merged.append(members[0])
+            continue
+        numbers = [NUMBER.findall(text) for text in members]
+        at = next(n for n in range(len(numbers[0]))
+                  if len({found[n] for found in numbers}) > 1)
+        others = ", ".join(dict.fromkeys(found[at] for found in numbers[1:]))
+        first = list(NUMBER.finditer(members[0]))[at]
+        merged.append(f"{members[0][:first.end()]} (and {others}){members[0][first.end():]}")
     return merged
 SUBJECT = re.compile(r"^(?:PERS |stub |the )?([A-Za-z][A-Za-z0-9_]*)")
 
