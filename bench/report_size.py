@@ -2,7 +2,7 @@
 
 Usage: python bench/report_size.py FOLDER [--max-states N] [--max-seconds S] [--jobs N]
                                    [--no-stubs] [--list] [--keep DIR] [--only LIST]
-                                   [-- CHECK-OPTIONS...]
+                                   [--rows ROWS.json] [-- CHECK-OPTIONS...]
 
 Every ``.mod``/``.modx``/``.sys`` file under FOLDER is checked as a program of its own
 (files with the same text once); one that stops at unknown names is checked again with
@@ -17,11 +17,17 @@ there, one file each; ``--only LIST`` checks only the files LIST names, relative
 one a line).  Options after ``--`` go to every check (e.g. ``--full-trace``).
 
 The figures of issue 19 were taken with ``--max-states 20000 --max-seconds 20``.
+
+``--rows ROWS.json`` measures instead the programs a task survey found VIOLATED
+(``survey_programs.py --json``): each row's own command (a backup and ``--task``, or its
+files), with ``--stubs`` where the row was checked with stubs.  Issue 28's figures
+(median under 3 KB, largest under 8 KB) were taken so, with ``--max-seconds 40``.
 """
 from __future__ import annotations
 
 import argparse
 import hashlib
+import json
 import os
 import statistics
 import subprocess
@@ -104,28 +110,45 @@ def main() -> int:
     parser.add_argument("--keep", type=Path, default=None)
     parser.add_argument("--only", type=Path, default=None,
                         help="a file of paths under FOLDER, one a line: check only these")
+    parser.add_argument("--rows", type=Path, default=None,
+                        help="a JSON file of survey_programs.py rows: check the rows whose "
+                             "verdicts include VIOLATED, each with its own command (and "
+                             "--stubs where the row used stubs), instead of every file")
     parser.add_argument("extra", nargs="*", help="options for every check (after --)")
     args = parser.parse_args()
     args.folder = args.folder.resolve()
     options = ["--max-states", args.max_states, "--max-seconds", args.max_seconds, *args.extra]
-    files = programs(args.folder)
-    if args.only is not None:
-        wanted = {line.strip() for line in args.only.read_text().splitlines() if line.strip()}
-        files = [path for path in files if str(path.relative_to(args.folder)) in wanted]
     timeout = 10 * float(args.max_seconds) + 60
+    if args.rows is not None:
+        rows = [row for row in json.loads(args.rows.read_text())
+                if row["outcome"] == "verdict" and "VIOLATED" in row["detail"]]
+        files = [row["name"] for row in rows]
 
-    def one(path: Path):
-        return path, *check(path, options, not args.no_stubs, timeout)
+        def one(row):
+            stubs = ["--stubs"] if row["stubbed"] else []
+            code, report = rapidmc("check", *row["command"], *stubs, "--quiet", *options,
+                                   timeout=timeout)
+            return row["name"], code, report, bool(stubs)
+    else:
+        files = programs(args.folder)
+        if args.only is not None:
+            wanted = {line.strip() for line in args.only.read_text().splitlines()
+                      if line.strip()}
+            files = [path for path in files if str(path.relative_to(args.folder)) in wanted]
+        rows = files
+
+        def one(path: Path):
+            return path.relative_to(args.folder), *check(path, options, not args.no_stubs,
+                                                         timeout)
 
     with ThreadPoolExecutor(args.jobs) as pool:
-        outcomes = list(pool.map(one, files))
+        outcomes = list(pool.map(one, rows))
     violated = [(path, report, stubbed) for path, code, report, stubbed in outcomes if code == 1]
     if args.keep is not None:
         args.keep.mkdir(parents=True, exist_ok=True)
     if args.list and violated:
         print("counterexample  report  longest line  program")
-    for path, report, stubbed in violated:
-        relative = path.relative_to(args.folder)
+    for relative, report, stubbed in violated:
         if args.list:
             shown = counterexample_text(report)
             print(f"{len(shown.encode()):>7,} B  {len(report.encode()):>7,} B  longest "
