@@ -82,7 +82,8 @@ def test_full_trace_shows_every_initial_value_and_step(monkeypatch):
     _, short, _ = run("array_loop", monkeypatch)
     _, full, _ = run("array_loop", monkeypatch, "--full-trace")
     assert "repeat steps" in short and "repeat steps" not in full
-    assert "--full-trace shows them" in short and "spare = [0,0," in full
+    assert "(--full-trace shows every step and value)" in short and "spare = [0,0," in full
+    assert "--full-trace" not in full
     assert full.count("    step ") == 27 and "...]" not in full
 
 

@@ -120,6 +120,7 @@ def counterexample_lines(trace: Trace, options: TextOptions = TextOptions()) -> 
     lines = headline_lines(trace, options)
     lines.extend(f"  {line}" for line in options.files.legend())
     lines.append(head)
+    head_at = len(lines) - 1
     items = _prefix_items(trace, needed_steps(trace, options.names, options.handler_starts,
                                               options.compound_exits), options)
     items = _calls_told_once(items, trace, options)
@@ -134,7 +135,14 @@ def counterexample_lines(trace: Trace, options: TextOptions = TextOptions()) -> 
             lines.extend(_item_lines(item, options, read))
         lines.extend(step_lines(trace.closing, options))
         lines.append(f"  -- loop closes: back to the state of step {trace.loop_start} --")
+    if not options.full and any(LEFT_OUT.search(line) for line in lines[head_at + 1:]):
+        lines[head_at] += " (--full-trace shows every step and value)"
     return lines
+
+
+# what a line says was left out of the text: a stretch of steps, or values counted
+LEFT_OUT = re.compile(r"^    -- steps |\(\d+ more (new )?values?\b|\d+ values, none read|"
+                      r"elements changed: .* and \d+ more$")
 
 
 def _prefix_items(trace: Trace, needed: frozenset, options: TextOptions) -> list:
@@ -201,6 +209,12 @@ def _calls_told_once(items: list, trace: Trace, options: TextOptions) -> list:
                 told[-1].steps[0].index != around[0]:
             steps = tuple(step for step in prefix if around[0] <= step.index <= around[1])
             routine = by_first[around[0]].stack[-1].routine if by_first[around[0]].stack else "?"
+            if told and isinstance(told[-1], TraceStep):
+                # the call's own step: the routine's data it makes end with the run told
+                call = told[-1]
+                told[-1] = replace(call, changes=tuple(
+                    change for change in call.changes if change.old is not None or
+                    not change.name.startswith(f"{routine}.")))
             told.append(RanThrough(routine, steps))
     return told
 
@@ -471,7 +485,7 @@ def changed_elements(change: Change) -> Optional[str]:
                        for suffix, was, now in differing[:ELEMENTS_SHOWN])
     more = len(differing) - ELEMENTS_SHOWN
     return (f"{change.name}: {len(differing)} of {len(new)} elements changed: {listed}"
-            + (f" and {more} more (--full-trace shows them)" if more > 0 else ""))
+            + (f" and {more} more" if more > 0 else ""))
 
 
 def initial_lines(step: TraceStep, read: frozenset) -> list[str]:
@@ -481,12 +495,12 @@ def initial_lines(step: TraceStep, read: frozenset) -> list[str]:
     rest = len(step.changes) - len(shown)
     if rest and not shown:
         return [f"    step {step.index}  initial state ({rest} {'value' if rest == 1 else 'values'}"
-                ", none read by the trace: --full-trace shows them)"]
+                ", none read by the trace)"]
     lines = [f"    step {step.index}  initial state"]
     lines.extend(f"        {change_text(change)}" for change in shown)
     if rest:
         lines.append(f"        ({rest} more {'value' if rest == 1 else 'values'} the trace "
-                     "does not read: --full-trace shows them)")
+                     "does not read)")
     return lines
 
 
@@ -610,7 +624,7 @@ def sliced_line(sliced: SlicedAway) -> str:
     what.extend(_outputs_written(steps))
     done = ", ".join(what) if what else "nothing changed"
     return f"    -- steps {steps[0].index}-{steps[-1].index}: {done}, not read by " \
-           f"{sliced.reader} (--full-trace shows them) --"
+           f"{sliced.reader} --"
 
 
 # Where a step's output line went: the library marks socket messages and file lines
