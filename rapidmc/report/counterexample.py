@@ -622,8 +622,9 @@ def sliced_line(sliced: SlicedAway) -> str:
     if robots:
         what.append("the robot moved" if len(robots) == 1 else "the robots moved")
     what.extend(_outputs_written(steps))
-    done = ", ".join(what) if what else "nothing changed"
-    return f"    -- steps {steps[0].index}-{steps[-1].index}: {done}, not read by " \
+    if not what:                 # (what nothing changed, nothing can read)
+        return f"    -- steps {steps[0].index}-{steps[-1].index}: nothing changed --"
+    return f"    -- steps {steps[0].index}-{steps[-1].index}: {', '.join(what)}, not read by " \
            f"{sliced.reader} --"
 
 
