@@ -235,12 +235,17 @@ def ran_through_line(ran: RanThrough) -> str:
     said = _outputs_written(steps)
     if said:
         what += ", " + ", ".join(said)
+    return f"    -- {what}{_left_behind(steps, 'it')} --"
+
+
+def _left_behind(steps: Sequence[TraceStep], them: str) -> str:
+    """``; after them: n = 5, ok = TRUE and 2 more``: what a run of steps left changed."""
     net = _grouped(net_changes(steps))
-    if net:
-        more = len(net) - NET_SHOWN
-        what += f"; after it: {', '.join(net[:NET_SHOWN])}" + \
-            (f" and {more} more" if more > 0 else "")
-    return f"    -- {what} --"
+    if not net:
+        return ""
+    more = len(net) - NET_SHOWN
+    return f"; after {them}: {', '.join(net[:NET_SHOWN])}" + \
+        (f" and {more} more" if more > 0 else "")
 
 
 def _joined(items: list, options: TextOptions, loop_start: Optional[int]) -> list:
@@ -557,12 +562,7 @@ def folded_line(folded: Folded) -> str:
     hidden = folded.hidden
     what = f"steps {hidden[0].index}-{hidden[-1].index} repeat steps {folded.first}-" \
            f"{folded.last} {folded.times} more {'time' if folded.times == 1 else 'times'}"
-    net = _grouped(net_changes(hidden))
-    if net:
-        more = len(net) - NET_SHOWN
-        what += f"; after them: {', '.join(net[:NET_SHOWN])}" + \
-            (f" and {more} more" if more > 0 else "")
-    return f"    -- {what} --"
+    return f"    -- {what}{_left_behind(hidden, 'them')} --"
 
 
 def _grouped(changes: list[Change]) -> list[str]:
