@@ -340,3 +340,14 @@ def test_assumptions_differing_in_one_string_or_in_their_numbers_are_told_once()
         'configured, a GI shown as <AliasIO at Hand.sys:1092>',
         'the signal AliasIO names at run time at Hand.sys:1096 is taken as configured, '
         'a GO shown as <AliasIO at Hand.sys:1096>']
+
+
+def test_a_stretch_left_out_names_the_routines_that_returned_in_it():
+    # a routine's data ends with it: its name, not its data (with several tasks the task's
+    # name comes first: T_ROB1.Hold.t is routine Hold's t)
+    ended = (TraceStep(4, TRANSITION, TransitionInfo("p.mod", 4, "ENDPROC"),
+                       (Change("T_ROB1.Hold.t", "1", None), Change("T_ROB1.Hold.n", "0", None))),
+             TraceStep(5, TRANSITION, TransitionInfo("p.mod", 5, "k := 2;"),
+                       (Change("T_ROB1.k", "1", "2"),)))
+    assert sliced_line(SlicedAway(ended, "the error")) == \
+        "    -- steps 4-5: T_ROB1.k assigned, Hold returned, not read by the error --"

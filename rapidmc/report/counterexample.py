@@ -601,10 +601,11 @@ def sliced_line(sliced: SlicedAway) -> str:
     steps = sliced.steps
     changes = [change for step in steps for change in step.changes]
     names = list(dict.fromkeys(change.name for change in changes if change.new is not None))
-    ended = list(dict.fromkeys(change.name.split(".")[0] for change in changes
+    # a routine's datum is ``Routine.name`` (``TASK.Routine.name`` with several tasks)
+    ended = list(dict.fromkeys(change.name.split(".")[-2] for change in changes
                                if change.new is None and "." in change.name))
     # a routine that returned in the stretch took its own data with it
-    names = [name for name in names if name.split(".")[0] not in ended]
+    names = [name for name in names if not set(name.split(".")[:-1]) & set(ended)]
     robots = [name for name in names if name.endswith(ROBOT_TCP)]
     routines = {frame.routine for step in steps for frame in step.stack}
     # the cell's data first, the routines' own (``HomeReturn.nActPos``) after them
