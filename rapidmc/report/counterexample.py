@@ -41,7 +41,7 @@ from ..check.trace import INITIAL, Change, Trace, TraceStep
 from ..semantics.robots import ROBOT_TCP
 from ..semantics.task_registers import names_errno
 from .headline import headline_lines
-from .trace_slice import _returned_calls, needed_steps, reads_of
+from .trace_slice import needed_steps, reads_of, returned_calls
 from .trace_text import (INDEX, SOURCE_WIDTH, STRING_WIDTH, WAS_WIDTH, WIDTH,
                          TextOptions, array_elements, data_names, file_names, shorten,
                          shown_location, shown_value)
@@ -178,12 +178,12 @@ def _calls_told_once(items: list, trace: Trace, options: TextOptions) -> list:
     ERRNO or the program's status, the run inside followed from the state at the call, so
     what it left behind says all of it.  The outermost such call, ``FEWEST_CALL_STEPS`` or
     more steps long, and only where no item reaches out of it; not with ``options.full``
-    or several tasks (``trace_slice._returned_calls``)."""
+    or several tasks (``trace_slice.returned_calls``)."""
     if options.full or not items:
         return items
     prefix = trace.prefix
     chosen: list[tuple[int, int]] = []          # (first, last) step indexes
-    for end, start in sorted(_returned_calls(prefix, options.handler_starts).items(),
+    for end, start in sorted(returned_calls(prefix, options.handler_starts).items(),
                              key=lambda pair: (pair[1], -pair[0])):
         inside = prefix[start:end + 1]
         first, last = inside[0].index, inside[-1].index

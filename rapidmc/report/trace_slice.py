@@ -195,7 +195,7 @@ def needed_steps(trace: Trace, names: Iterable[str] = (),
     # path that ends in an error: a cycle's and a property's reads stay plain names
     scoped = routine_data(steps) if not (trace.cycle or trace.bad_prefix) else frozenset()
     prefix = steps[:len(trace.prefix)]
-    left = _returned_calls(prefix, handler_starts)
+    left = returned_calls(prefix, handler_starts)
     for end, start in _left_compounds(prefix, compound_exits).items():
         left[end] = min(start, left.get(end, start))
     number = len(trace.prefix) - 1
@@ -263,7 +263,7 @@ def _place(step: TraceStep) -> Optional[tuple]:
         (transition.file, transition.line)
 
 
-def _returned_calls(steps: Sequence[TraceStep], handler_starts: frozenset) -> dict:
+def returned_calls(steps: Sequence[TraceStep], handler_starts: frozenset) -> dict:
     """Routine calls the run came back from, as {number of the last step inside: number of
     the first}: the step after the last one is back in the calling routine, at another
     statement than the call (not an ERROR handler's start, not the call's statement run
