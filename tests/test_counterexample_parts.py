@@ -290,12 +290,42 @@ def test_slice_tells_one_routines_data_from_anothers_of_the_same_name():
                          in_([("Main", 5), show], 6, "y := 1 / i;"))
     assert sorted(needed_steps(Trace(shown, (), None, "uncaught ERR_DIVZERO"))) == \
         [1, 4, 5, 6]
-    # with several tasks the names stay plain (every task's frames are in the stack)
+    # names a trace does not qualify by task stay plain (as a cycle's and a property's)
     tasks = tuple(TraceStep(s.index, s.kind, s.transition, s.changes,
                             tuple(CallFrame(f.routine, f.file, f.line, "T_ROB1") for f in s.stack))
                   for s in steps)
     assert sorted(needed_steps(Trace(tasks, (), None, "uncaught ERR_DIVZERO"))) == \
         [1, 2, 3, 4, 5, 6]
+
+
+def test_slice_tells_one_tasks_data_from_anothers_of_the_same_name():
+    # Two tasks each have an i: the error in T1 reads T1's own, so T2's writes of its i and
+    # T2's wait (it decides only T2's path) are left out; the shared PERS flag, written by
+    # T2 and read by T1, keeps T2's write
+    from rapidmc.check.trace import CallFrame, Trace
+    from rapidmc.report.trace_slice import needed_steps, running_tasks
+
+    def at(task, index, source, *changed):
+        files = {"T1": "a.mod", "T2": "b.mod"}
+        frames = tuple(CallFrame("main", files[name], index if name == task else 1, name)
+                       for name in ("T1", "T2"))
+        stops = (Change("program", None, "stopped: uncaught ERR_DIVZERO"),) \
+            if source.startswith("y :=") else ()
+        return TraceStep(index, TRANSITION, TransitionInfo(files[task], index, source),
+                         tuple(Change(name, "0", "1") for name in changed) + stops, frames)
+    steps = (TraceStep(1, INITIAL, None, ()),
+             at("T2", 2, "WaitTime 0.5;"),
+             at("T2", 3, "i := 5;", "T2.i"),
+             at("T1", 4, "i := 0;", "T1.i"),
+             at("T2", 5, "i := 7;", "T2.i"),
+             at("T1", 6, "y := 1 / i;"))
+    assert running_tasks(steps) == [None, "T2", "T2", "T1", "T2", "T1"]
+    assert sorted(needed_steps(Trace(steps, (), None, "uncaught ERR_DIVZERO"))) == [1, 4, 6]
+    shared = steps[:4] + (at("T2", 5, "flag := 7;", "flag"), at("T1", 6, "y := 1 / flag;"))
+    assert sorted(needed_steps(Trace(shared, (), None, "uncaught ERR_DIVZERO"))) == \
+        [1, 2, 5, 6]
+    # a cycle (or a property) reads plain names: every task's i counts
+    assert sorted(needed_steps(Trace(steps[:5], steps[5:], None))) == [1, 2, 3, 4, 5, 6]
 
 
 def test_a_long_assumption_is_cut_with_its_place_kept():

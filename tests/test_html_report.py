@@ -405,8 +405,9 @@ def test_with_several_tasks_the_stack_shows_the_running_task_first(browser, tmp_
     shown = page.shown()
     assert shown["file"] == "b.mod" and shown["lineText"] == in_b["source"]
     (running, other) = shown["stack"]
-    assert running == f"task 2 (b): main  b.mod:{in_b['location']['line']}"
-    assert other.startswith("main task: main  a.mod:")
+    # each frame names its task as the data do (TASK2.count): the added task b is TASK2
+    assert running == f"TASK2: main  b.mod:{in_b['location']['line']}"
+    assert other.startswith("TASK1: main  a.mod:")
 
 
 def test_with_several_tasks_the_table_says_fairness_was_assumed(browser, tmp_path):

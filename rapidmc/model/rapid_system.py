@@ -486,12 +486,14 @@ class RapidDescriber:
         return f"{routine.name}."
 
     def describe_stack(self, state: State) -> tuple[CallFrame, ...]:
-        """Every task's active routines, outermost first, each at its next statement."""
+        """Every task's active routines, outermost first, each at its next statement; on a
+        controller of several tasks each frame names its task as the data do (``T_ROB2``,
+        ``TASK2``: ``task_qualifier``)."""
         stacks = (state.frames,) + state.tasks
         named = len(stacks) > 1
         frames = []
         for number, stack in enumerate(stacks):
-            task = self.program.task_names[number] if named else ""
+            task = self._task_name(task_namespace(number)) if named else ""
             for frame in stack:
                 routine = self.program.routines[frame.routine]
                 span = _frame_span(routine, frame.pc)

@@ -41,7 +41,8 @@ from ..check.trace import INITIAL, Change, Trace, TraceStep
 from ..semantics.robots import ROBOT_TCP
 from ..semantics.task_registers import names_errno
 from .headline import headline_lines
-from .trace_slice import needed_steps, reads_of, returned_calls
+from .trace_slice import (needed_steps, own_frames, reads_of, returned_calls, running_tasks,
+                          scoped_forms, scoped_reads)
 from .trace_text import (INDEX, SOURCE_WIDTH, STRING_WIDTH, WAS_WIDTH, WIDTH,
                          TextOptions, array_elements, data_names, file_names, shorten,
                          shown_location, shown_value)
@@ -126,7 +127,7 @@ def counterexample_lines(trace: Trace, options: TextOptions = TextOptions()) -> 
     items = _calls_told_once(items, trace, options)
     hidden = {step.index for item in items if isinstance(item, SlicedAway) for step in item.steps}
     shown = [step for step in [*trace.prefix, *trace.cycle] if step.index not in hidden]
-    read = options.names | frozenset().union(*map(reads_of, shown))
+    read = options.names | scoped_reads(trace, shown)
     for item in _joined(items, options, trace.loop_start):
         lines.extend(_item_lines(item, options, read))
     if trace.cycle:
@@ -178,7 +179,8 @@ def _calls_told_once(items: list, trace: Trace, options: TextOptions) -> list:
     ERRNO or the program's status, the run inside followed from the state at the call, so
     what it left behind says all of it.  The outermost such call, ``FEWEST_CALL_STEPS`` or
     more steps long, and only where no item reaches out of it; not with ``options.full``
-    or several tasks (``trace_slice.returned_calls``)."""
+    (``trace_slice.returned_calls``: with several tasks, a call whose run no other task's
+    step interrupts)."""
     if options.full or not items:
         return items
     prefix = trace.prefix
@@ -200,6 +202,7 @@ def _calls_told_once(items: list, trace: Trace, options: TextOptions) -> list:
     kept = [(a, b) for a, b in chosen
             if all(b < lo or hi < a or (a <= lo and hi <= b) for lo, hi in spans)]
     told: list = []
+    tasks = dict(zip((step.index for step in prefix), running_tasks(prefix)))
     by_first = {step.index: step for step in prefix}
     for item, (lo, hi) in zip(items, spans):
         around = next(((a, b) for a, b in kept if a <= lo and hi <= b), None)
@@ -208,13 +211,15 @@ def _calls_told_once(items: list, trace: Trace, options: TextOptions) -> list:
         elif lo == around[0] or not told or not isinstance(told[-1], RanThrough) or \
                 told[-1].steps[0].index != around[0]:
             steps = tuple(step for step in prefix if around[0] <= step.index <= around[1])
-            routine = by_first[around[0]].stack[-1].routine if by_first[around[0]].stack else "?"
+            task = tasks[around[0]]
+            frames = own_frames(by_first[around[0]], task)
+            routine = frames[-1].routine if frames else "?"
             if told and isinstance(told[-1], TraceStep):
                 # the call's own step: the routine's data it makes end with the run told
-                call = told[-1]
+                call, made = told[-1], f"{frames[-1].task}.{routine}." if task else f"{routine}."
                 told[-1] = replace(call, changes=tuple(
                     change for change in call.changes if change.old is not None or
-                    not change.name.startswith(f"{routine}.")))
+                    not change.name.upper().startswith(made.upper())))
             told.append(RanThrough(routine, steps))
     return told
 
@@ -451,7 +456,8 @@ def _new_data_read(name: str, read: frozenset) -> bool:
     the call's line names the routine, not its data)."""
     names = data_names(name)
     own = names[1:] if len(names) > 1 else names
-    return name in ALWAYS_SHOWN or names_errno(name) or not read.isdisjoint(own)
+    return name in ALWAYS_SHOWN or names_errno(name) or not read.isdisjoint(own) or \
+        not read.isdisjoint(scoped_forms(name))
 
 
 def change_text(change: Change, full: bool = False) -> str:
@@ -496,7 +502,8 @@ def changed_elements(change: Change) -> Optional[str]:
 def initial_lines(step: TraceStep, read: frozenset) -> list[str]:
     """The initial state: the values of the data the trace reads, and a count of the rest."""
     shown = [change for change in step.changes
-             if change.name in ALWAYS_SHOWN or names_errno(change.name) or not read.isdisjoint(data_names(change.name))]
+             if change.name in ALWAYS_SHOWN or names_errno(change.name) or
+             not read.isdisjoint(data_names(change.name) + scoped_forms(change.name))]
     rest = len(step.changes) - len(shown)
     if rest and not shown:
         return [f"    step {step.index}  initial state ({rest} {'value' if rest == 1 else 'values'}"
@@ -613,7 +620,15 @@ def sliced_line(sliced: SlicedAway) -> str:
                    key=lambda name: name.split(".")[0] in routines)
     entries = _name_ranges(names)
     what = []
-    if entries:
+    tasks = list(dict.fromkeys(task for task in running_tasks(steps) if task))
+    if len(tasks) > 1:
+        # several tasks ran: which ones, and how many of their values changed
+        shown = {frame.task.upper(): frame.task for step in steps for frame in step.stack}
+        ran = [shown.get(task, task) for task in tasks]
+        what.append(", ".join(ran[:-1]) + f" and {ran[-1]} ran")
+        if names:
+            what.append(f"{len(names)} {'value' if len(names) == 1 else 'values'} assigned")
+    elif entries:
         more = len(entries) - SLICED_SHOWN
         what.append(", ".join(entries[:SLICED_SHOWN]) + (f" and {more} more" if more > 0
                                                         else "") + " assigned")

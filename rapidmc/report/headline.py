@@ -15,7 +15,8 @@ from ..check.trace import INITIAL, Trace, TraceStep
 from ..load.stubs.module_text import is_stub_module
 from ..semantics.task_registers import names_errno
 from ..model.fairness import TASK_CHOICE
-from .trace_slice import read_part, statements_of, whole_assignments, words_of
+from .trace_slice import (read_part, running_tasks, statements_of, task_names, whole_assignments,
+                          words_of)
 from .trace_text import (INDEX, SOURCE_WIDTH, STRING_WIDTH, WIDTH, TextOptions, data_names,
                          datum_of, shorten, shown_location, shown_value)
 
@@ -67,8 +68,11 @@ def read_data(steps: Sequence[TraceStep], stub_data: frozenset = frozenset()) ->
     words = list(dict.fromkeys(word.upper() for word in NOT_CALLED.findall(read_part(source))))
     written = source.replace(" ", "").upper()
     found = stub_results(steps)
+    running = running_tasks(steps)[-1]
+    others = task_names(steps) - {running} if running else frozenset()
     for word in words:
-        candidates = _latest_values(steps, word, words, stub_data)
+        candidates = [candidate for candidate in _latest_values(steps, word, words, stub_data)
+                      if not _of_task(candidate[0], others)]
         named = [c for c in candidates if INDEX.sub("", c[0]).replace(" ", "").upper() in written
                  and "." in c[0] and datum_of(c[0], words) == data_names(c[0])[0]]
         path = _component_path(read_part(source), word)
@@ -85,6 +89,13 @@ def read_data(steps: Sequence[TraceStep], stub_data: frozenset = frozenset()) ->
             pool = [c for c in candidates if "{" not in c[0]] if by_number else candidates
             found.append(_part_read(pool, path, word) or candidates[0])
     return found
+
+
+def _of_task(name: str, tasks: frozenset) -> bool:
+    """Whether a shown name is a datum of one of ``tasks`` (``T_ROB2.count``, upper case):
+    the failing line of another task cannot read it."""
+    head, dot, _ = name.removeprefix("signal ").partition(".")
+    return bool(dot) and head.upper() in tasks
 
 
 PART = r"\s*\.\s*[A-Za-z][A-Za-z0-9_]*|\{\s*\d+\s*\}"     # a component, or an element by number
