@@ -328,6 +328,25 @@ def test_slice_tells_one_tasks_data_from_anothers_of_the_same_name():
     assert sorted(needed_steps(Trace(steps[:5], steps[5:], None))) == [1, 2, 3, 4, 5, 6]
 
 
+def test_headline_reads_the_failing_tasks_own_routine_data():
+    # both tasks run Receive, whose msg_length each sets; T1's line fails: the headline
+    # shows T1's msg_length (0, set at step 3), not T2's later one
+    from rapidmc.check.trace import CallFrame
+    from rapidmc.report.headline import read_data
+
+    def at(task, index, source, *changes):
+        frames = tuple(CallFrame("Receive", "sock.sys", index if name == task else 1, name)
+                       for name in ("T1", "T2"))
+        return TraceStep(index, TRANSITION, TransitionInfo("sock.sys", index, source),
+                         tuple(Change(name, "4", new) for name, new in changes), frames)
+    steps = [TraceStep(1, INITIAL, None, ()),
+             at("T2", 2, "msg_length := 4;", ("T2.Receive.msg_length", "4")),
+             at("T1", 3, "msg_length := 0;", ("T1.Receive.msg_length", "0")),
+             at("T2", 4, "msg_length := 9;", ("T2.Receive.msg_length", "9")),
+             at("T1", 5, "y := 1 / msg_length;")]
+    assert read_data(steps) == [("T1.Receive.msg_length", "0", "set at step 3")]
+
+
 def test_a_long_assumption_is_cut_with_its_place_kept():
     from rapidmc.report.results import short_assumption
     text = "PERS Welds1 is written outside the loaded code; its reads take " + \

@@ -68,10 +68,12 @@ def read_data(steps: Sequence[TraceStep], stub_data: frozenset = frozenset()) ->
     words = list(dict.fromkeys(word.upper() for word in NOT_CALLED.findall(read_part(source))))
     written = source.replace(" ", "").upper()
     found = stub_results(steps)
+    tasks = task_names(steps)
     running = running_tasks(steps)[-1]
-    others = task_names(steps) - {running} if running else frozenset()
+    others = tasks - {running} if running else frozenset()
     for word in words:
-        candidates = [candidate for candidate in _latest_values(steps, word, words, stub_data)
+        candidates = [candidate for candidate in
+                      _latest_values(steps, word, words, stub_data, tasks)
                       if not _of_task(candidate[0], others)]
         named = [c for c in candidates if INDEX.sub("", c[0]).replace(" ", "").upper() in written
                  and "." in c[0] and datum_of(c[0], words) == data_names(c[0])[0]]
@@ -96,6 +98,12 @@ def _of_task(name: str, tasks: frozenset) -> bool:
     the failing line of another task cannot read it."""
     head, dot, _ = name.removeprefix("signal ").partition(".")
     return bool(dot) and head.upper() in tasks
+
+
+def _datum(name: str, words: Sequence[str], tasks: frozenset) -> str:
+    """``datum_of`` a shown name, its task's name left out (``T_ROB2.main.i``: I)."""
+    head, dot, rest = name.partition(".")
+    return datum_of(rest if dot and head.upper() in tasks else name, words)
 
 
 PART = r"\s*\.\s*[A-Za-z][A-Za-z0-9_]*|\{\s*\d+\s*\}"     # a component, or an element by number
@@ -174,7 +182,7 @@ def stub_results(steps: Sequence[TraceStep]) -> list[tuple]:
 
 
 def _latest_values(steps: Sequence[TraceStep], word: str, words: Sequence[str],
-                   stub_data: frozenset) -> list[tuple]:
+                   stub_data: frozenset, tasks: frozenset = frozenset()) -> list[tuple]:
     """The latest values of the datum named ``word`` (one of the line's ``words``) and of its
     parts before the last step, latest first, up to the datum's own: (name, value, origin)."""
     found: dict[str, tuple] = {}
@@ -183,7 +191,7 @@ def _latest_values(steps: Sequence[TraceStep], word: str, words: Sequence[str],
         transition = step.transition
         if rewritten is None and not found and step is not steps[-1] and \
                 word in whole_assignments(step) and \
-                not any(datum_of(change.name, words) == word for change in step.changes):
+                not any(_datum(change.name, words, tasks) == word for change in step.changes):
             rewritten = step.index
         if transition is not None:             # the failing step reads what it chose
             for name, value in transition.inputs.items():
@@ -195,7 +203,7 @@ def _latest_values(steps: Sequence[TraceStep], word: str, words: Sequence[str],
             continue                           # what the failing step itself wrote
         for change in reversed(step.changes):
             if change.new is None or change.name in found or \
-                    datum_of(change.name, words) != word:
+                    _datum(change.name, words, tasks) != word:
                 continue
             if step.kind == INITIAL:
                 origin = "stub value" if change.name in stub_data else "initial value"
