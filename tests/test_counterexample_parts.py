@@ -391,6 +391,19 @@ def test_assumptions_differing_in_one_string_or_in_their_numbers_are_told_once()
         'a GO shown as <AliasIO at Hand.sys:1096>']
 
 
+def test_the_same_assumption_twice_is_told_once_with_or_without_a_quoted_string():
+    # a backup of ten tasks, each loading the stubs module, gave the same texts several
+    # times, with no quoted string: the merge must neither fail nor repeat them
+    from rapidmc.report.results import merged_assumptions
+    texts = ["stub max returns a neutral value (Missing.mod:39)",
+             "stub max returns a neutral value (Missing.mod:39)",
+             'PERS stCommand is written outside ("Weld")', 'PERS stCommand is written outside ("Weld")',
+             "a lone quote \" in a text", "a lone quote \" in a text"]
+    assert merged_assumptions(texts) == [
+        "stub max returns a neutral value (Missing.mod:39)",
+        'PERS stCommand is written outside ("Weld")', "a lone quote \" in a text"]
+
+
 def test_a_stretch_left_out_names_the_routines_that_returned_in_it():
     # a routine's data ends with it: its name, not its data (with several tasks the task's
     # name comes first: T_ROB1.Hold.t is routine Hold's t)

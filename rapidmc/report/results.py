@@ -179,15 +179,15 @@ def merged_assumptions(texts: Sequence[str]) -> list[str]:
     """The assumptions with those that differ only in the one string they quote told in
     one (``CRobT reads the calling task's robot for \\TaskName:="T_ROB1", "T_ROB2", which
     names no loaded task``), at the place of the first."""
-    groups: dict[str, list[str]] = {}
-    for text in texts:
+    groups: dict[tuple, list[str]] = {}
+    for text in dict.fromkeys(texts):          # (the same text twice is told once)
         quoted = QUOTED.findall(text)
-        key = QUOTED.sub('""', text) if len(quoted) == 1 else text
+        key = (True, QUOTED.sub('""', text)) if len(quoted) == 1 else (False, text)
         groups.setdefault(key, []).append(text)
     merged = []
-    for key, members in groups.items():
-        if len(members) == 1:
-            merged.append(members[0])
+    for (one_string, key), members in groups.items():
+        if len(members) == 1 or not one_string:
+            merged.extend(members)
             continue
         strings = ", ".join(dict.fromkeys(QUOTED.search(text).group(0) for text in members))
         merged.append(key.replace('""', strings, 1))
