@@ -24,7 +24,8 @@ from ..semantics.library import registry
 from ..semantics.library.clocks import SAMPLED_READINGS_TEXT
 from ..semantics.library.configuration import STANDARD_TEXT
 from ..semantics.program import PROGRAM_NAMESPACE, Program
-from ..semantics.robots import controller_task_names, named_robot_readings, named_task
+from ..semantics.robots import (RUN_TIME_TASK, argument_task, controller_task_names,
+                                named_robot_readings)
 
 # Output instructions: a reading in their arguments only ends up as text.  Socket setup: a
 # reading in the address or port of SocketBind or SocketConnect (``GetSysInfo(\LanIp)``
@@ -58,18 +59,16 @@ def _unknown_task_robots(program: Program) -> list[Diagnostic]:
     first: dict[tuple, ast.FunctionCall] = {}
     calls: dict[tuple, int] = {}
     for _, call, argument in named_robot_readings(program.routines):
+        number = argument_task(names, argument)
+        if number is not None and number != RUN_TIME_TASK:
+            continue
         value = argument.value
-        if isinstance(value, ast.StringLiteral) and argument.name.key == "TASKNAME":
-            if named_task(names, value.value) is not None:
-                continue
-            what = f'\\TaskName:="{value.value}", which names no loaded task'
-        elif isinstance(value, ast.NameRef) and argument.name.key == "TASKREF":
-            text = value.name.text
-            if text.upper().endswith("ID") and named_task(names, text[:-2]) is not None:
-                continue
-            what = f"\\TaskRef:={text}, which names no loaded task"
-        else:
+        if number == RUN_TIME_TASK:
             what = f"the task \\{argument.name.text} names, if no loaded task has that name"
+        elif isinstance(value, ast.StringLiteral):
+            what = f'\\TaskName:="{value.value}", which names no loaded task'
+        else:
+            what = f"\\TaskRef:={value.name.text}, which names no loaded task"
         key = (call.name.key, what)
         first.setdefault(key, call)
         calls[key] = calls.get(key, 0) + 1

@@ -27,7 +27,7 @@ from .calls import ParameterView, bind
 from .errors import ERROR_NUMBERS, LONG_JMP_ALL_ERR
 from .expressions import ExpressionCompiler
 from .machine import ABSENT
-from .robots import motion_task_numbers, named_robot_readings
+from .robots import motion_task_numbers, reads_other_task_robot
 from .runtime import PredefinedCalls
 from .scope import (CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, SYSTEM_VARIABLES, Scope,
                     Symbol)
@@ -328,7 +328,7 @@ class Linker:
         linked.robot_per_task = len(linked.motion_tasks) > 1
         linked.registers_per_task = bool(task_entries)
         linked.reads_task_robots = linked.robot_per_task and \
-            any(True for _ in named_robot_readings(self.routines))
+            reads_other_task_robot(self.routines, self.task_names)
         if environment is not None and environment.modules:
             linked.environment_init = environment_init
             linked.environment_react = environment_react

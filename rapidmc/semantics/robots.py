@@ -106,6 +106,37 @@ def named_robot_readings(routines) -> Iterator[tuple]:
                         yield routine, node, argument
 
 
+RUN_TIME_TASK = -1      # a task argument whose name only the running program knows
+
+
+def argument_task(names: tuple, argument: ast.Argument) -> "int | None":
+    """The number of the task among ``names`` (as GetTaskName spells them) that a robot
+    reader's ``\\TaskName:="T_ROB2"`` or ``\\TaskRef:=T_ROB2Id`` names, None when it names
+    no loaded task, ``RUN_TIME_TASK`` for a name computed when the program runs (taskid
+    data have no value in the model: the name <task>Id says which task)."""
+    value = argument.value
+    if argument.name.key == "TASKREF" and isinstance(value, ast.NameRef):
+        text = value.name.text
+        return named_task(names, text[:-2]) if text.upper().endswith("ID") else None
+    if argument.name.key == "TASKNAME" and isinstance(value, ast.StringLiteral):
+        return named_task(names, value.value)
+    return RUN_TIME_TASK
+
+
+def reads_other_task_robot(routines, names: tuple) -> bool:
+    """Whether a robot reader may read another loaded task's robot (``argument_task``): a
+    name of the calling task, or of no loaded task, reads the calling task's robot
+    (``library.position``), which that task's own step sees."""
+    for routine, _, argument in named_robot_readings(routines):
+        namespace = routine.namespace
+        caller = namespace - FIRST_TASK_NAMESPACE + 1 if namespace >= FIRST_TASK_NAMESPACE \
+            else 0
+        number = argument_task(names, argument)
+        if number is not None and number != caller:
+            return True
+    return False
+
+
 def robot_tracked(m) -> bool:
     """Whether a step's moves put the robot where they take it: always when running; when
     checking, unless the check proved the robot's position unobserved
