@@ -226,13 +226,12 @@ def render(diagnostic: Diagnostic, file_name: Optional[Callable[[str], str]] = N
     """Render one diagnostic as text: location, message, code, source line, caret (unless
     not ``source``), notes; the file named by ``file_name`` when one is given (else as
     given)."""
-    head = f"{diagnostic.severity}: {diagnostic.message} [{diagnostic.code.code}]"
     span = diagnostic.span
     if span is None or span.line <= 0:
-        out = [f"rapidmc: {head}"]
+        out = head_lines("rapidmc", diagnostic)
     else:
         file = file_name(span.file) if file_name else span.file
-        out = [f"{file}:{span.line}:{span.column}: {head}"]
+        out = head_lines(f"{file}:{span.line}:{span.column}", diagnostic)
         line = SourceCache.line(span.file, span.line) if source else None
         if line is not None:
             width = 1
@@ -246,6 +245,34 @@ def render(diagnostic: Diagnostic, file_name: Optional[Callable[[str], str]] = N
     if diagnostic.places:
         out.append(f"  note: {places_text(diagnostic.places, file_name)}")
     return "\n".join(out)
+
+
+HEAD_WIDTH = 300       # a text report's longest line (``report.line_width.LONGEST_LINE``)
+HEAD_BREAKS = ";, "     # where a message too long for its head line is broken
+
+
+def head_lines(where: str, diagnostic: Diagnostic) -> list[str]:
+    """``where: severity: message [CODE]``, one line when it fits ``HEAD_WIDTH``; else the
+    message broken after a ``;``, ``,`` or space so that the head line still ends with its
+    code, and the rest on the lines after it, indented and marked ``...``: nothing lost,
+    and every head line keeps the shape tools parse."""
+    start, code = f"{where}: {diagnostic.severity}: ", f" [{diagnostic.code.code}]"
+    message = diagnostic.message
+    if len(start) + len(message) + len(code) <= HEAD_WIDTH:
+        return [start + message + code]
+    room = HEAD_WIDTH - len(start) - len(code) - len(" ...")
+    cut = max(message.rfind(char, room // 2, room) for char in HEAD_BREAKS) + 1 \
+        if room > 1 else 0
+    if cut <= 0:
+        cut = max(room, 1)
+    lines = [start + message[:cut].rstrip() + " ..." + code]
+    rest, width = message[cut:].lstrip(), HEAD_WIDTH - len("    ... ")
+    while rest:
+        piece = rest if len(rest) <= width else rest[:max(
+            rest.rfind(char, width // 2, width) for char in HEAD_BREAKS) + 1 or width]
+        lines.append("    ... " + piece.rstrip())
+        rest = rest[len(piece):].lstrip()
+    return lines
 
 
 SOURCE_SHOWN = 200     # a longer source line is shown around its caret, cut with "..."
