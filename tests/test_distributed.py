@@ -189,14 +189,15 @@ def test_partitioned_counterexample_is_shortest_and_crosses_partitions(cluster):
         assert (after.label, after.state) in grid.successors(before.state)
 
 
-def test_a_killed_worker_ends_the_search_without_a_verdict(cluster):
+@pytest.mark.parametrize("eager", [False, True])
+def test_a_killed_worker_ends_the_search_without_a_verdict(cluster, eager):
     def kill_one(actors, levels=[]):
         levels.append(1)
         if len(levels) == 5:                                  # mid-search
             cluster.kill(actors[1])
     grid = Grid(40)
     with pytest.raises(UserError) as raised:
-        _partitioned(cluster, grid, "never", on_level=kill_one)
+        _partitioned(cluster, grid, "never", on_level=kill_one, eager=eager)
     assert raised.value.exit_code == EXIT_WORKER_LOST == 5
     assert raised.value.diagnostics[0].code.code == "RMC752"
     # the next search starts afresh on new workers
@@ -250,6 +251,36 @@ def test_check_case_on_two_workers(cluster, name, monkeypatch):
     object.__setattr__(spread_case, "extra_args", case.extra_args + ("--workers", "2"))
     _, spread = report_of(spread_case, monkeypatch)
     _same_builtin_answers(alone, spread)
+
+
+@pytest.mark.parametrize("name", CASES[:6])
+def test_check_case_on_two_eager_workers(cluster, name, monkeypatch, tmp_path):
+    """``--eager``: the same verdicts and counts as one process but the depth; its
+    counterexamples replay (they may be longer than one process's)."""
+    case = load_case(CASES_DIR / name)
+    object.__setattr__(case, "extra_args", case.extra_args + ("--no-por",))
+    _, alone = report_of(case, monkeypatch)
+    spread_case = load_case(CASES_DIR / name)
+    object.__setattr__(spread_case, "extra_args",
+                       case.extra_args + ("--workers", "2", "--eager"))
+    _, spread = report_of(spread_case, monkeypatch)
+    _same_builtin_answers(alone, spread, eager=True)
+    violated = [p["name"] for p in spread["properties"]
+                if p["name"] in SAFETY and p["verdict"] == "VIOLATED"]
+    if violated:
+        monkeypatch.chdir(CASES_DIR / name)
+        trace = tmp_path / "trace.json"
+        trace.write_text(json.dumps(spread))
+        for check in violated:
+            code, out, err = run_cli(["replay", str(trace), "--property", check])
+            assert code == 0, out + err
+
+
+def test_eager_asks_for_workers():
+    program = str(CASES_DIR / "runtime_div_input" / "prog.mod")
+    for option in ([], ["--swarm", "2"]):
+        code, _, err = run_cli(["check", program, "--quiet", "--eager", *option])
+        assert code == 2 and "--eager" in err, err
 
 
 @pytest.mark.parametrize("study, program", [("sorter", "sorter_b.mod"),
@@ -313,20 +344,22 @@ def test_without_ray_the_options_name_the_extra(monkeypatch):
         assert code == 2 and "[RMC751]" in err and "pip install 'rapidmc[ray]'" in err, err
 
 
-def _same_builtin_answers(alone: dict, spread: dict) -> None:
+def _same_builtin_answers(alone: dict, spread: dict, eager: bool = False) -> None:
     """The same verdicts; after a complete search the same counts (the built-in checks:
     states, transitions, deadlocks, depth; LTL properties searched without fairness: product
-    states and transitions), and safety counterexamples as short."""
+    states and transitions), and safety counterexamples as short (``eager``: neither the
+    depth nor the counterexamples' length)."""
     first, second = _by_name(alone), _by_name(spread)
     assert _verdicts(alone) == _verdicts(spread)
     for name, one in first.items():
         other = second[name]
-        figures = ("product_states", "transitions", "max_depth", "deadlocks") \
-            if name in SAFETY else ("product_states", "transitions")
+        figures = ("product_states", "transitions", "deadlocks") + ("max_depth",) * \
+            (not eager) if name in SAFETY else ("product_states", "transitions")
         if one["verdict"] == "HOLDS" and one["stats"]["engine"] != "python-fair":
             for figure in figures:
                 assert one["stats"][figure] == other["stats"][figure], (name, figure)
-        if name in SAFETY and one["verdict"] == "VIOLATED" and not one["trace"]["cycle"]:
+        if name in SAFETY and one["verdict"] == "VIOLATED" and not one["trace"]["cycle"] \
+                and not eager:
             assert len(one["trace"]["prefix"]) == len(other["trace"]["prefix"]), name
         refair = f"the cycle the cluster found for {name} starves a task"
         if name not in SAFETY and other["verdict"] != "UNKNOWN" and \
