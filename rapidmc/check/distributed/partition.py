@@ -48,7 +48,8 @@ from .codec import codec_for, data_owners_fit, link, unlink  # noqa: F401  (sear
 
 CHUNK = 4096            # successors whose owners are computed together (``codec.send``)
 ROUND = 1 << 13         # states a worker expands in one round at most (module docstring)
-EAGER_SLICE = 1 << 10   # ... of which an eager round expands at once between two freezes
+EAGER_SLICE = 1 << 10   # ... of which an eager round expands at once (``_eager_round``)
+FREEZE_EVERY = 0.1      # seconds between an eager round's freezes of the survivors
 MEMORY_EVERY = 0.05     # seconds between two readings of the memory (``_note_memory``)
 NO_PARENT = -1
 
@@ -258,11 +259,14 @@ class Partition:
     def _eager_round(self, new: int) -> tuple:
         """``_step``'s round of an ``eager`` search: the states stored and not yet expanded,
         ``EAGER_SLICE`` at a time, each slice's own successors stored at once (so the next
-        slice expands them), until none is left or the round expanded ``ROUND`` states;
+        slice expands them), until none is left or the round expanded ``ROUND`` states
+        (what survives out of the cycle collector's reach every ``FREEZE_EVERY`` seconds:
+        a round of the interrupts model, stepped in Python, cost a third more without);
         for each other partition the list of the slices' batches.  The same figures as
         ``_step``'s, the level being every state stored."""
         table, index, last = self.table, self.index, self.expanded + ROUND
         sending: list = [[] for _ in range(self.count)]
+        frozen = time.monotonic()
         while True:
             self.level_end = min(len(table), last, self.expanded + EAGER_SLICE)
             *outgoing, figures = self.expand()
@@ -273,9 +277,11 @@ class Partition:
                 break
             self.own = outgoing[index]
             self.receive(())
-            freeze_survivors()       # (as one process's search does ten times a second)
             if self.expanded == len(table) or self.expanded >= last:
                 break
+            if time.monotonic() > frozen + FREEZE_EVERY:   # (as one process's search does)
+                freeze_survivors()
+                frozen = time.monotonic()
         self.level_end = len(table)
         sending[index] = b""
         return (*sending, (len(table), new, *figures, self.level_end - self.expanded))
