@@ -19,19 +19,20 @@ begins the next level with the states stored since the last one began; the leade
 (``rounds.Levels``, run by the first partition: ``lead``, ``rounds``) asks for it once every
 partition has expanded its whole level, so a state is stored at its depth.
 Rounds bound what a worker holds at once: the successors of ``ROUND`` states and their
-batches, not a whole level's.
-
-``eager`` searches (``--eager``) give up the levels to need fewer rounds: in a round a worker
-stores its own successors at once and goes on expanding them (``_eager_round``), up to
-``ROUND`` states, and sends only what other partitions own.  A step that changes no global
-data stays with its worker (owners by data segment), so a round follows such steps as far
-as they go: the whole-controller models need a third to a sixth of the rounds of their
-levels.  Every state is still stored once and expanded once (the same states, transitions
-and deadlocks), and the predicate asked of each before it is stepped; but a state may be
-stored deeper than its breadth-first depth, with a longer path to it: a counterexample
-replays, but may be longer than one process's, and the depth is not counted.  The worker's ``codec`` (``codec.py``) decides the owner of a
+batches, not a whole level's.  The worker's ``codec`` (``codec.py``) decides the owner of a
 state and how states travel: as the packed table's vectors where the model has one (owned
 by their data segment where ``codec.data_owners_fit``), else as node ids or pickled.
+
+``eager`` searches (``--eager``) give up the levels to need fewer rounds: in a round a
+worker stores its own successors at once and goes on expanding them (``_eager_round``), up
+to ``ROUND`` states, and sends only what other partitions own, so a path costs a round
+only where it passes to another partition: on 2 workers the whole-controller models
+(owners by the whole state: one successor in two stays) need a third to a sixth of the
+rounds of their levels, on 16 about four fifths (docs/distributed.md).  Every state is
+still stored once and expanded once (the same states, transitions and deadlocks), and the
+predicate asked of each before it is stepped; but a state may be stored deeper than its
+breadth-first depth, with a longer path to it: a counterexample replays, but may be longer
+than one process's, and the depth is not counted.
 """
 from __future__ import annotations
 
