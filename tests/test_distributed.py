@@ -2,10 +2,12 @@
 
 The partitioned search must answer exactly what the one-process search answers: the
 same verdicts, and after a complete search the same state, transition, deadlock and depth
-counts; its counterexamples are as short and replay.  LTL properties (OWCTY over the
-partitioned product) give the verdicts and product counts of the one-process search, on
-random toy graphs and on check cases, with lassos of real steps that the formula rejects.  A lost worker ends the check with
-RMC752 (exit 5), never a verdict; a swarm finds a planted deep error the exhaustive search
+counts; its counterexamples are as short and replay (``--eager``: the same verdicts and
+counts but the depth, counterexamples that replay but may be longer).  LTL properties
+(OWCTY over the partitioned product) give the verdicts and product counts of the
+one-process search, on random toy graphs and on check cases, with lassos of real steps
+that the formula rejects.  A lost worker ends the check with RMC752 (exit 5), never a
+verdict; a swarm finds a planted deep error the exhaustive search
 cannot reach in its bound, and never says HOLDS.
 
 One Ray cluster (2 CPUs) serves the whole module: Ray takes seconds to start.  Without Ray
@@ -283,14 +285,17 @@ def test_eager_asks_for_workers():
         assert code == 2 and "--eager" in err, err
 
 
+@pytest.mark.parametrize("eager", [False, True])
 @pytest.mark.parametrize("study, program", [("sorter", "sorter_b.mod"),
                                             ("door", "door_race.mod")])
-def test_case_study_on_two_workers(cluster, study, program, monkeypatch):
-    """The built-in checks and the study's LTL properties (specs/), against --no-por."""
+def test_case_study_on_two_workers(cluster, study, program, eager, monkeypatch):
+    """The built-in checks and the study's LTL properties (specs/), against --no-por
+    (``eager``: with --eager)."""
     monkeypatch.chdir(ROOT / "case_studies" / study)
     argv = ["check", program, "--env", "plant.mod", "--ltl", str(ROOT / "specs" / f"{study}.ltl"),
             "--format", "json", "--quiet"]
-    _same_builtin_answers(_json(argv + ["--no-por"]), _json(argv + ["--workers", "2"]))
+    _same_builtin_answers(_json(argv + ["--no-por"]),
+                          _json(argv + ["--workers", "2"] + ["--eager"] * eager), eager=eager)
 
 
 @pytest.mark.parametrize("name, check", [("runtime_div_input", "no_runtime_error"),
