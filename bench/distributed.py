@@ -1,6 +1,6 @@
 """One process against a local Ray cluster of 2 workers (``--workers 2``, issue 29).
 
-Usage: python bench/distributed.py [--issue] [--counters 6,7] [--modulo 4] [--only NAME]
+Usage: python bench/distributed.py [--issue] [--eager] [--counters 6,7] [--modulo 4] [--only NAME]
                                    [--workers 2] [--ltl] [--split] [--rounds [--payload B]]
 
 For each model, each in a fresh process: the run-time error search of a check (breadth-first,
@@ -20,6 +20,9 @@ nothing subtracted: a worker's counts the pages of Ray's object store it touched
 larger worker's against the one process's; each worker's share of the states.  Then the
 whole-controller family's totals (the issue's 1.7x target) and ``uptime`` before and after:
 the machine may be shared, where wall times mean little and CPU times are the figures.
+
+``--eager``: the workers search with ``--eager`` (rounds without breadth-first levels; the
+levels column is then the rounds).
 
 ``--issue``: only the issue's figures, the whole-controller family and counters N=10 (a few
 minutes on a quiet 2-core machine).
@@ -240,13 +243,14 @@ def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
     # the actors' processes start here, outside the timed search (as in one process's import)
     recipe = api.system_recipe(model)        # (each worker builds the system itself)
     partitioned_reachable(ray, workers, system, "failed", budget=SearchBudget(1),
-                          rebuild=recipe)
+                          rebuild=recipe, eager=EAGER)
     import os
     cpu_before = tree_cpu(os.getpid())
     started = time.perf_counter()
     driver_cpu = time.process_time()
     result, _, figures = partitioned_reachable(ray, workers, system, "failed",
-                                               budget=SearchBudget(None), rebuild=recipe)
+                                               budget=SearchBudget(None), rebuild=recipe,
+                                               eager=EAGER)
     seconds = time.perf_counter() - started
     driver_cpu = time.process_time() - driver_cpu
     every_cpu = cpu_by_kind(cpu_before, tree_cpu(os.getpid()), os.getpid(),
@@ -254,7 +258,8 @@ def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
     ray.shutdown()
     return {"verdict": result.verdict, "states": result.stats.product_states,
             "seconds": seconds, "start_seconds": start_seconds, "driver_cpu": driver_cpu,
-            "every_cpu": every_cpu, "levels": result.stats.max_depth + 1,
+            "every_cpu": every_cpu, "levels": figures[0]["rounds"] if EAGER else
+            result.stats.max_depth + 1,
             "sent": sum(f["sent"] for f in figures),
             "sent_bytes": sum(f["sent_bytes"] for f in figures),
             "worker_rss_kb": [f["max_rss_kb"] for f in figures],
@@ -364,9 +369,13 @@ def measure_rounds(payload: int, rounds: int = 300) -> None:
     ray.shutdown()
 
 
+EAGER = False            # (--eager: the workers' searches are eager)
+
+
 def fresh(name: str, mode: str, modulo: int, workers: int) -> dict:
     run = subprocess.run([sys.executable, __file__, "--measure", name, mode,
-                          "--modulo", str(modulo), "--workers", str(workers)],
+                          "--modulo", str(modulo), "--workers", str(workers)] +
+                         ["--eager"] * EAGER,
                          capture_output=True, text=True, check=True)
     return json.loads(run.stdout.strip().splitlines()[-1])
 
@@ -388,8 +397,12 @@ def main() -> None:
                              "actors sending them to each other")
     parser.add_argument("--payload", type=int, default=20000,
                         help="bytes of a batch for --rounds")
+    parser.add_argument("--eager", action="store_true",
+                        help="the workers search eagerly (rounds without levels)")
     parser.add_argument("--measure", nargs=2, default=None, help=argparse.SUPPRESS)
     args = parser.parse_args()
+    global EAGER
+    EAGER = args.eager
     if args.rounds:
         print(f"uptime at the start: {uptime()}", flush=True)
         measure_rounds(args.payload)

@@ -2,10 +2,12 @@
 
 The partitioned search must answer exactly what the one-process search answers: the
 same verdicts, and after a complete search the same state, transition, deadlock and depth
-counts; its counterexamples are as short and replay.  LTL properties (OWCTY over the
-partitioned product) give the verdicts and product counts of the one-process search, on
-random toy graphs and on check cases, with lassos of real steps that the formula rejects.  A lost worker ends the check with
-RMC752 (exit 5), never a verdict; a swarm finds a planted deep error the exhaustive search
+counts; its counterexamples are as short and replay (``--eager``: the same verdicts and
+counts but the depth, counterexamples that replay but may be longer).  LTL properties
+(OWCTY over the partitioned product) give the verdicts and product counts of the
+one-process search, on random toy graphs and on check cases, with lassos of real steps
+that the formula rejects.  A lost worker ends the check with RMC752 (exit 5), never a
+verdict; a swarm finds a planted deep error the exhaustive search
 cannot reach in its bound, and never says HOLDS.
 
 One Ray cluster (2 CPUs) serves the whole module: Ray takes seconds to start.  Without Ray
@@ -189,14 +191,15 @@ def test_partitioned_counterexample_is_shortest_and_crosses_partitions(cluster):
         assert (after.label, after.state) in grid.successors(before.state)
 
 
-def test_a_killed_worker_ends_the_search_without_a_verdict(cluster):
+@pytest.mark.parametrize("eager", [False, True])
+def test_a_killed_worker_ends_the_search_without_a_verdict(cluster, eager):
     def kill_one(actors, levels=[]):
         levels.append(1)
         if len(levels) == 5:                                  # mid-search
             cluster.kill(actors[1])
     grid = Grid(40)
     with pytest.raises(UserError) as raised:
-        _partitioned(cluster, grid, "never", on_level=kill_one)
+        _partitioned(cluster, grid, "never", on_level=kill_one, eager=eager)
     assert raised.value.exit_code == EXIT_WORKER_LOST == 5
     assert raised.value.diagnostics[0].code.code == "RMC752"
     # the next search starts afresh on new workers
@@ -252,14 +255,47 @@ def test_check_case_on_two_workers(cluster, name, monkeypatch):
     _same_builtin_answers(alone, spread)
 
 
+@pytest.mark.parametrize("name", CASES[:6])
+def test_check_case_on_two_eager_workers(cluster, name, monkeypatch, tmp_path):
+    """``--eager``: the same verdicts and counts as one process but the depth; its
+    counterexamples replay (they may be longer than one process's)."""
+    case = load_case(CASES_DIR / name)
+    object.__setattr__(case, "extra_args", case.extra_args + ("--no-por",))
+    _, alone = report_of(case, monkeypatch)
+    spread_case = load_case(CASES_DIR / name)
+    object.__setattr__(spread_case, "extra_args",
+                       case.extra_args + ("--workers", "2", "--eager"))
+    _, spread = report_of(spread_case, monkeypatch)
+    _same_builtin_answers(alone, spread, eager=True)
+    violated = [p["name"] for p in spread["properties"]
+                if p["name"] in SAFETY and p["verdict"] == "VIOLATED"]
+    if violated:
+        monkeypatch.chdir(CASES_DIR / name)
+        trace = tmp_path / "trace.json"
+        trace.write_text(json.dumps(spread))
+        for check in violated:
+            code, out, err = run_cli(["replay", str(trace), "--property", check])
+            assert code == 0, out + err
+
+
+def test_eager_asks_for_workers():
+    program = str(CASES_DIR / "runtime_div_input" / "prog.mod")
+    for option in ([], ["--swarm", "2"]):
+        code, _, err = run_cli(["check", program, "--quiet", "--eager", *option])
+        assert code == 2 and "--eager" in err, err
+
+
+@pytest.mark.parametrize("eager", [False, True])
 @pytest.mark.parametrize("study, program", [("sorter", "sorter_b.mod"),
                                             ("door", "door_race.mod")])
-def test_case_study_on_two_workers(cluster, study, program, monkeypatch):
-    """The built-in checks and the study's LTL properties (specs/), against --no-por."""
+def test_case_study_on_two_workers(cluster, study, program, eager, monkeypatch):
+    """The built-in checks and the study's LTL properties (specs/), against --no-por
+    (``eager``: with --eager)."""
     monkeypatch.chdir(ROOT / "case_studies" / study)
     argv = ["check", program, "--env", "plant.mod", "--ltl", str(ROOT / "specs" / f"{study}.ltl"),
             "--format", "json", "--quiet"]
-    _same_builtin_answers(_json(argv + ["--no-por"]), _json(argv + ["--workers", "2"]))
+    _same_builtin_answers(_json(argv + ["--no-por"]),
+                          _json(argv + ["--workers", "2"] + ["--eager"] * eager), eager=eager)
 
 
 @pytest.mark.parametrize("name, check", [("runtime_div_input", "no_runtime_error"),
@@ -313,20 +349,22 @@ def test_without_ray_the_options_name_the_extra(monkeypatch):
         assert code == 2 and "[RMC751]" in err and "pip install 'rapidmc[ray]'" in err, err
 
 
-def _same_builtin_answers(alone: dict, spread: dict) -> None:
+def _same_builtin_answers(alone: dict, spread: dict, eager: bool = False) -> None:
     """The same verdicts; after a complete search the same counts (the built-in checks:
     states, transitions, deadlocks, depth; LTL properties searched without fairness: product
-    states and transitions), and safety counterexamples as short."""
+    states and transitions), and safety counterexamples as short (``eager``: neither the
+    depth nor the counterexamples' length)."""
     first, second = _by_name(alone), _by_name(spread)
     assert _verdicts(alone) == _verdicts(spread)
     for name, one in first.items():
         other = second[name]
-        figures = ("product_states", "transitions", "max_depth", "deadlocks") \
-            if name in SAFETY else ("product_states", "transitions")
+        figures = ("product_states", "transitions", "deadlocks") + ("max_depth",) * \
+            (not eager) if name in SAFETY else ("product_states", "transitions")
         if one["verdict"] == "HOLDS" and one["stats"]["engine"] != "python-fair":
             for figure in figures:
                 assert one["stats"][figure] == other["stats"][figure], (name, figure)
-        if name in SAFETY and one["verdict"] == "VIOLATED" and not one["trace"]["cycle"]:
+        if name in SAFETY and one["verdict"] == "VIOLATED" and not one["trace"]["cycle"] \
+                and not eager:
             assert len(one["trace"]["prefix"]) == len(other["trace"]["prefix"]), name
         refair = f"the cycle the cluster found for {name} starves a task"
         if name not in SAFETY and other["verdict"] != "UNKNOWN" and \

@@ -381,16 +381,61 @@ def test_partitions_find_the_error_at_its_depth(engine):
         one = find_reachable(system, system.failed, max_states=None)
         parts, _, target = search_here(system, 2)
     assert one.verdict == VIOLATED and target is not None
+    path = _path_to(parts, target)
+    assert len(path) == len(one.prefix)
+    assert system.failed(path[0]) and path[-1] in system.initial_states()
+
+
+def _path_to(parts, target) -> list:
+    """The states from the target back to an initial state, by parent links."""
     partition, state_id = target
     path = []
     while True:
         state, parent = parts[partition].step_back(state_id)
         path.append(state)
         if parent < 0:
-            break
+            return path
         partition, state_id = unlink(parent)
-    assert len(path) == len(one.prefix)
-    assert system.failed(path[0]) and path[-1] in system.initial_states()
+
+
+@pytest.mark.parametrize("engine", ["native", "python"])
+@pytest.mark.parametrize("name", ["socket server", "two tasks", "interrupts"])
+def test_eager_partitions_count_what_one_process_counts(name, engine):
+    """Eager rounds (``--eager``: each partition follows its own successors within a
+    round) store and expand every state once: the same states, transitions and deadlocks
+    as one process, in fewer rounds than its levels."""
+    if engine == "native" and not native.available():
+        pytest.skip("the native core is not built here")
+    with native.engine_used(engine):
+        system = system_of(name)
+        one = find_reachable(system, system.failed, max_states=None)
+        parts, _, target = search_here(system, 2, eager=True)
+        rounds = parts[0].levels.rounds
+    assert one.verdict == HOLDS and target is None
+    assert sum(len(part.table) for part in parts) == one.stats.product_states
+    assert sum(part.transitions for part in parts) == one.stats.transitions
+    assert sum(part.deadlocks for part in parts) == one.stats.deadlocks
+    assert all(len(part.table) for part in parts)
+    assert rounds < one.stats.max_depth
+
+
+@pytest.mark.parametrize("engine", ["native", "python"])
+def test_eager_partitions_find_the_error_on_a_real_path(engine):
+    """An eager search finds the error too; its path, across partitions, is a path of the
+    model's steps from an initial state (it may be longer than one process's)."""
+    if engine == "native" and not native.available():
+        pytest.skip("the native core is not built here")
+    with native.engine_used(engine):
+        system = system_of("run-time error")
+        one = find_reachable(system, system.failed, max_states=None)
+        parts, _, target = search_here(system, 2, eager=True)
+        assert one.verdict == VIOLATED and target is not None
+        path = _path_to(parts, target)[::-1]
+        assert path[0] in system.initial_states() and system.failed(path[-1])
+        assert not any(system.failed(state) for state in path[:-1])
+        for before, after in zip(path, path[1:]):
+            assert after in [successor for _, successor in system.successors(before)]
+    assert len(path) >= len(one.prefix)
 
 
 # properties that hold, so that one process too searches the whole product

@@ -62,6 +62,7 @@ class Cluster:
     workers: Optional[int] = None     # --workers N: a local cluster of N CPUs
     address: Optional[str] = None     # --ray ADDRESS | auto: join that cluster
     swarm: int = 0                    # --swarm N: N randomized searches, not a partition
+    eager: bool = False               # --eager: rounds without breadth-first levels
 
     @property
     def option(self) -> str:

@@ -22,6 +22,17 @@ Rounds bound what a worker holds at once: the successors of ``ROUND`` states and
 batches, not a whole level's.  The worker's ``codec`` (``codec.py``) decides the owner of a
 state and how states travel: as the packed table's vectors where the model has one (owned
 by their data segment where ``codec.data_owners_fit``), else as node ids or pickled.
+
+``eager`` searches (``--eager``) give up the levels to need fewer rounds: in a round a
+worker stores its own successors at once and goes on expanding them (``_eager_round``), up
+to ``ROUND`` states, and sends only what other partitions own, so a path costs a round
+only where it passes to another partition: on 2 workers the whole-controller models
+(owners by the whole state: one successor in two stays) need a third to a sixth of the
+rounds of their levels, on 16 about four fifths (docs/distributed.md).  Every state is
+still stored once and expanded once (the same states, transitions and deadlocks), and the
+predicate asked of each before it is stepped; but a state may be stored deeper than its
+breadth-first depth, with a longer path to it: a counterexample replays, but may be longer
+than one process's, and the depth is not counted.
 """
 from __future__ import annotations
 
@@ -38,6 +49,8 @@ from .codec import codec_for, data_owners_fit, link, unlink  # noqa: F401  (sear
 
 CHUNK = 4096            # successors whose owners are computed together (``codec.send``)
 ROUND = 1 << 13         # states a worker expands in one round at most (module docstring)
+EAGER_SLICE = 1 << 10   # ... of which an eager round expands at once (``_eager_round``)
+FREEZE_EVERY = 0.1      # seconds between an eager round's freezes of the survivors
 MEMORY_EVERY = 0.05     # seconds between two readings of the memory (``_note_memory``)
 NO_PARENT = -1
 
@@ -136,11 +149,11 @@ class Partition:
 
     def start(self, index: int, count: int, source: "SystemSource", predicate: str,
               deadlock_is_target: bool, watch: Optional[str] = None,
-              by_data: bool = False) -> None:
+              by_data: bool = False, eager: bool = False) -> None:
         """Begin a search (an actor serves the searches of one check one after another);
         ``by_data``: a packed model's states are owned by their data segment
-        (``codec.data_owners_fit``)."""
-        self.index, self.count = index, count
+        (``codec.data_owners_fit``); ``eager``: rounds without levels (module docstring)."""
+        self.index, self.count, self.eager = index, count, eager
         system = source.build()
         self.system = system
         self.predicate = getattr(system, predicate)
@@ -174,8 +187,9 @@ class Partition:
     def receive(self, senders: Sequence[int], *batches) -> int:
         """Store the new states of the batches (``senders[i]`` sent ``batches[i]``, written
         by the codec: states and their parents' ids there; sender -1: the initial states,
-        sent to every partition, of which each keeps those it owns), and of the batch the
-        last round kept here, in partition order.  Returns the states stored."""
+        sent to every partition, of which each keeps those it owns; an eager round's list
+        of batches, one after another), and of the batch the last round kept here, in
+        partition order.  Returns the states stored."""
         table, parent = self.table, self.parent
         arrived = list(zip(senders, batches))
         if self.own is not None:
@@ -189,7 +203,8 @@ class Partition:
                         if table.intern(state, True)[1]:
                             parent.initial()
                 continue
-            parent.extend(sender, self.codec.store(sender, batch))
+            for one in batch if isinstance(batch, list) else (batch,):
+                parent.extend(sender, self.codec.store(sender, one))
         return len(table)
 
     def step(self, advance: bool, senders: Sequence[int], *batches) -> tuple:
@@ -235,10 +250,42 @@ class Partition:
         if advance:
             new = stored - self.level_end
             self.level_end = stored
+        if self.eager:
+            return self._eager_round(new)
         *outgoing, figures = self.expand()
         self.own = outgoing[self.index]
         outgoing[self.index] = b""
         return (*outgoing, (stored, new, *figures, self.level_end - self.expanded))
+
+    def _eager_round(self, new: int) -> tuple:
+        """``_step``'s round of an ``eager`` search: the states stored and not yet expanded,
+        ``EAGER_SLICE`` at a time, each slice's own successors stored at once (so the next
+        slice expands them), until none is left or the round expanded ``ROUND`` states
+        (what survives out of the cycle collector's reach every ``FREEZE_EVERY`` seconds:
+        a round of the interrupts model, stepped in Python, cost a third more without);
+        for each other partition the list of the slices' batches.  The same figures as
+        ``_step``'s, the level being every state stored."""
+        table, index, last = self.table, self.index, self.expanded + ROUND
+        sending: list = [[] for _ in range(self.count)]
+        frozen = time.monotonic()
+        while True:
+            self.level_end = min(len(table), last, self.expanded + EAGER_SLICE)
+            *outgoing, figures = self.expand()
+            for target, batch in enumerate(outgoing):
+                if target != index:
+                    sending[target].append(batch)
+            if figures[0] >= 0 or figures[3] >= 0:            # (the search ends here)
+                break
+            self.own = outgoing[index]
+            self.receive(())
+            if self.expanded == len(table) or self.expanded >= last:
+                break
+            if time.monotonic() > frozen + FREEZE_EVERY:   # (as one process's search does)
+                freeze_survivors()
+                frozen = time.monotonic()
+        self.level_end = len(table)
+        sending[index] = b""
+        return (*sending, (len(table), new, *figures, self.level_end - self.expanded))
 
     def _nothing(self) -> list:
         return [self.codec.encode(target, self.codec.outbox()) for target in range(self.count)]
@@ -395,7 +442,8 @@ class Partition:
                 "step_seconds": self.step_seconds, "sent_bytes": self.sent_bytes,
                 "start_rss_kb": self.start_rss_kb, "peak_private_kb": self.peak_private_kb,
                 "peak_shared_kb": self.peak_shared_kb,
-                "max_rss_kb": _peak_rss_kb(), "pid": os.getpid()}
+                "max_rss_kb": _peak_rss_kb(), "pid": os.getpid(),
+                "rounds": self.levels.rounds + 1 if getattr(self, "levels", None) else 0}
 
 
 def _peak_rss_kb() -> int:
@@ -403,7 +451,8 @@ def _peak_rss_kb() -> int:
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
 
 
-def search_here(system, count: int, predicate: str = "failed") -> tuple[list, int, tuple]:
+def search_here(system, count: int, predicate: str = "failed",
+                eager: bool = False) -> tuple[list, int, tuple]:
     """The partitioned search with ``count`` partitions driven in this process by the
     cluster's driver (``search._Rounds``), without Ray: for tests and bench/distributed.py.
     Returns (the partitions, levels, the first (partition, state id) the predicate marks
@@ -413,10 +462,10 @@ def search_here(system, count: int, predicate: str = "failed") -> tuple[list, in
     by_data = data_owners_fit(system, state_table(system, packed=True), count)
     parts = [Partition() for _ in range(count)]
     for index, part in enumerate(parts):
-        part.start(index, count, SystemSource(system), predicate, False, None, by_data)
+        part.start(index, count, SystemSource(system), predicate, False, None, by_data, eager)
     try:
         rounds = _Rounds(_HERE, [_Here(part) for part in parts], system, SearchBudget(None),
-                         None)
+                         None, eager)
         result, _, _ = rounds.run()
     finally:
         for part in parts:

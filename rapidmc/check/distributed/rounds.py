@@ -41,6 +41,7 @@ class Levels:
         self.max_states, self.per_level = max_states, per_level
         self.stored = [0] * self.count
         self.transitions = self.deadlocks = self.depth = 0
+        self.rounds = 0                 # rounds run (figures)
         self.watched = False
         self.advanced = True            # the round asked for began a level
         self.stepped: list = []         # per partition: its batches, then its figures
@@ -84,6 +85,7 @@ class Levels:
         count = self.count
         while True:
             if self.consumed:
+                self.rounds += 1
                 self.stepped = self._next_round()
                 self.consumed = False
             # the figures, and with them the batches other processes sent this one's

@@ -20,6 +20,10 @@ same states, transitions, deadlocks and depth as one process.  The state limit i
 after each round, the time limit after each slice of rounds (a round may store more than
 the limit before the search stops: UNKNOWN either way).
 
+An ``eager`` search (``--eager``, ``partition`` module docstring) needs fewer rounds: the
+same verdicts and the same states, transitions and deadlocks after a complete search, but a
+counterexample may be longer than one process's, and the depth is not counted (0).
+
 A worker that dies (killed, out of memory, crashed node) ends the search with the
 ``WORKER_LOST`` diagnostic and its exit code: never with a verdict.
 """
@@ -45,13 +49,14 @@ def partitioned_reachable(ray, partitions: int, system: TransitionSystem, predic
                           deadlock_is_target: bool = False, watch: Optional[str] = None,
                           budget: Optional[SearchBudget] = None,
                           on_level: Optional[Callable[[list], None]] = None,
-                          rebuild: Optional[Callable[[], TransitionSystem]] = None) -> tuple:
+                          rebuild: Optional[Callable[[], TransitionSystem]] = None,
+                          eager: bool = False) -> tuple:
     """(SearchResult, whether ``watch`` said True for some state, per-partition figures).
 
     ``predicate`` and ``watch`` name methods of ``system`` (the actors call them on their
     copy of it).  ``on_level(actors)`` is called before each level (tests kill one there).
     ``rebuild``: a picklable function that builds ``system`` in a worker's process (else
-    the system itself is pickled to the workers).
+    the system itself is pickled to the workers).  ``eager``: rounds without levels.
     """
     budget = budget if budget is not None else SearchBudget()
     by_data = data_owners_fit(system, state_table(system, packed=True), partitions)
@@ -60,9 +65,9 @@ def partitioned_reachable(ray, partitions: int, system: TransitionSystem, predic
     try:
         with worker_failures(ray):
             ray.get([call(actor, SAFETY, "start", index, partitions, shared, predicate,
-                          deadlock_is_target, watch, by_data)
+                          deadlock_is_target, watch, by_data, eager)
                      for index, actor in enumerate(actors)])
-            return _Rounds(ray, actors, system, budget, on_level).run()
+            return _Rounds(ray, actors, system, budget, on_level, eager).run()
     except BaseException:
         drop_actors(ray)         # (one may be dead; the next search starts afresh)
         raise
@@ -129,8 +134,9 @@ class _Rounds:
     it for a slice of rounds at a time, checks the time limit and reports progress between
     slices, and rebuilds the counterexample."""
 
-    def __init__(self, ray, actors, system, budget: SearchBudget, on_level):
-        self.ray, self.actors, self.system = ray, actors, system
+    def __init__(self, ray, actors, system, budget: SearchBudget, on_level,
+                 eager: bool = False):
+        self.ray, self.actors, self.system, self.eager = ray, actors, system, eager
         self.budget, self.on_level = budget, on_level
         self.count = len(actors)
         self.stored = [0] * self.count
@@ -196,7 +202,8 @@ class _Rounds:
         stored = sum(f["states"] for f in figures)
         memory = sum(f["bytes"] for f in figures)
         stats = SearchStats(product_states=stored, model_states=stored,
-                            transitions=self.transitions, max_depth=self.depth,
+                            transitions=self.transitions,
+                            max_depth=0 if self.eager else self.depth,
                             deadlocks=self.deadlocks,
                             bytes_per_state=memory / stored if stored else 0.0, engine=ENGINE)
         stats.seconds = self.budget.finish()
@@ -218,5 +225,6 @@ def reachable(ray, cluster, system: TransitionSystem, predicate: str, *,
         return swarm_reachable(ray, cluster.swarm, system, predicate, budget, storage,
                                rebuild), False
     result, watched, _ = partitioned_reachable(ray, cluster.partitions(ray), system, predicate,
-                                               watch=watch, budget=budget, rebuild=rebuild)
+                                               watch=watch, budget=budget, rebuild=rebuild,
+                                               eager=cluster.eager)
     return result, watched
