@@ -49,6 +49,11 @@ class Compiled:
     # ``store``, ``locals_`` and the signal reader's context ``cx``; None when not available
     source: Optional[str] = None
     names: Optional[dict] = None          # the values the source names (constants)
+    # a read of data written from outside that chooses afresh and stores nothing
+    # (``ExpressionCompiler._outside_read_as``): (the stored read, the choice's name, its
+    # domain), so that a comparison with a constant can choose among fewer values
+    # (``decisive_read``)
+    free_choice: Optional[tuple] = None
 
     @property
     def is_constant(self) -> bool:
@@ -159,6 +164,42 @@ def _component_positions(record_type, names: tuple) -> Optional[tuple]:
         positions.append(index)
         record_type = components[index].type
     return tuple(positions)
+
+
+def free_read(stored: Callable, name: str, domain: tuple, rapid_type) -> Compiled:
+    """A read of data written from outside that takes any value of ``domain``, chosen
+    afresh and stored nowhere; ``stored`` reads the stored value for its own errors (an
+    index out of range)."""
+    def chosen(m):
+        stored(m)
+        return m.choose(name, domain)
+    return Compiled(chosen, rapid_type, free_choice=(stored, name, domain))
+
+
+def decisive_read(compare: Callable, left: Compiled, right: Compiled) -> tuple:
+    """The operands of ``compare`` (a comparison), where one is a ``free_read`` and the other
+    a constant: the read chooses only the first value of its domain for each outcome of
+    the comparison.  Its value goes nowhere but into the comparison, so every value left
+    out gives the same outcome, and the step the same successor, as the one kept (the
+    labels differ: a counterexample names the value kept)."""
+    for read, other, flipped in ((left, right, False), (right, left, True)):
+        if read.free_choice is None or not other.is_constant:
+            continue
+        stored, name, domain = read.free_choice
+        value = other.constant
+        try:
+            outcomes = {}
+            for candidate in domain:
+                outcome = compare(value, candidate) if flipped else compare(candidate, value)
+                outcomes.setdefault(outcome, candidate)
+        except (RapidError, TypeError):
+            return left, right
+        kept = tuple(outcomes.values())          # (in the domain's order)
+        if len(kept) == len(domain):
+            return left, right
+        narrowed = free_read(stored, name, kept, read.type)
+        return (other, narrowed) if flipped else (narrowed, other)
+    return left, right
 
 
 def _varying_leaves(value_type, outside, path: tuple) -> list:
@@ -337,10 +378,7 @@ class ExpressionCompiler:
                 return taken
             return Compiled(kept, compiled.type)
 
-        def chosen(m):
-            stored(m)                    # the stored read's own errors (an index out of range)
-            return m.choose(name, domain)
-        return Compiled(chosen, compiled.type)
+        return free_read(stored, name, domain, compiled.type)
 
     def _outside_whole(self, expr, compiled: Compiled, outside, path: tuple, name: str,
                        value_type, elements: list) -> Compiled:
@@ -720,6 +758,7 @@ class ExpressionCompiler:
             if isinstance(left.type, ArrayType):
                 raise error(TYPE_MISMATCH, "arrays cannot be compared with = or <>", expr.span)
         compare = operator.eq if expr.op == "=" else operator.ne
+        left, right = decisive_read(compare, left, right)
         return self._fold(_binary(compare, left, right), BOOL, left, right,
                           template=COMPARISON_SOURCES[expr.op])
 
@@ -729,6 +768,7 @@ class ExpressionCompiler:
                 raise error(TYPE_MISMATCH, f"'{expr.op}' compares num or dnum values, not "
                             f"{type_name(side.type)}", expr.span)
         compare = {"<": operator.lt, "<=": operator.le, ">": operator.gt, ">=": operator.ge}[expr.op]
+        left, right = decisive_read(compare, left, right)
         return self._fold(_binary(compare, left, right), BOOL, left, right,
                           template=COMPARISON_SOURCES[expr.op])
 

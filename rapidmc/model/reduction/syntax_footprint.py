@@ -36,7 +36,8 @@ routine data and parameters passed by value, FOR variables, global data no
 other task writes and nobody outside the loaded code writes, through operators,
 indices, components, aggregates and predefined functions that are not
 "special" (those compute from their arguments alone: Abs, NumToStr, StrPart,
-Offs ...), and user functions, which run before the instruction (hoisted: it reads
+Offs ...) or are controller readings the check fixes (GetMotorTorque, MaxRobSpeed:
+``arguments.fixed``, the call compiled to its value), and user functions, which run before the instruction (hoisted: it reads
 their result from its frame, and the call is judged as above).  A signal or
 anything else is not.  Whether the
 instruction raises an error is not decided here: the reduction checks each
@@ -388,9 +389,11 @@ def _root(caller, argument) -> Optional[tuple]:
 
 def _pure_function(call, lookup) -> bool:
     """A predefined function that computes from its arguments alone (not "special", none
-    passed by reference)."""
+    passed by reference), or a controller reading the check fixes (``arguments.fixed``:
+    GetMotorTorque, MaxRobSpeed; the call compiles to its constant value)."""
     if lookup(call.name.key) is not None:
         return False                     # (data of that name: not a function)
     entry = registry.lookup_function(call.name.key)
-    return entry is not None and not entry.special and \
+    return entry is not None and \
+        (not entry.special or hasattr(entry.factory, "reading")) and \
         not any(parameter.by_reference for parameter in entry.signature.parameters)
