@@ -382,7 +382,7 @@ def _effects(instruction, node, resolve: "Resolver", tracked: set,
         else:
             used |= resolve.keys(target)          # a partial write keeps the rest
     elif (kind is Action or _goes_on(instruction, node)) and \
-            isinstance(node, ast.ProcedureCall):
+            isinstance(node, ast.ProcedureCall) and node.name.key not in DATA_BY_NAME:
         used = resolve.keys(node.args)            # predefined: data only through arguments
         written = _whole_write(node, resolve)
         if written is not None:
