@@ -9,7 +9,10 @@ routine data) is written, read and written again around:
 * a routine that reads a global only through another routine it calls;
 * divisions that may raise, in main and in a routine, with ERROR handlers that read
   data, repair the divisor and end in RETRY or TRYNEXT (or pass the error on);
-* a user function called inside an expression.
+* a user function called inside an expression;
+* with ``moves_and_trap``: moves whose targets read data (one indexes an array with
+  data that may be 0, so the move raises), and a TRAP on a free input that reads one
+  global and writes another (globals no trap names die around it).
 
 ``dead_data_properties(seed)`` writes properties over ``a``, ``b`` and ``failed``, which
 the statements set from the other data, so a value forgotten too early changes a
@@ -99,25 +102,51 @@ MAIN_HANDLERS = (
 )
 
 
-def dead_data_program(seed: int) -> str:
+# main-loop statements of ``moves_and_trap`` programs: moves read their targets' data
+MOVE_STATEMENTS = (
+    "MoveL Offs(home, w, 0, 0), v100, fine, tool0;",
+    "MoveJ spots{{x}}, v100, z10, tool0;",
+    "MoveL spots{{w + 1}}, v100, fine, tool0;",
+    "MoveAbsJ joints{{count + 1}}, v100, fine, tool0;",
+    "WaitTime 0.1;",
+)
+
+TRAP = """
+  TRAP on_input
+    IF x = 2 b := 1;
+    ok := FALSE;
+  ENDTRAP
+"""
+
+
+def dead_data_program(seed: int, moves_and_trap: bool = False) -> str:
     rng = random.Random(seed)
     count = rng.randint(4, 8)
     body = []
+    statements = MAIN_STATEMENTS + MOVE_STATEMENTS if moves_and_trap else MAIN_STATEMENTS
     for _ in range(count):
-        template = rng.choice(MAIN_STATEMENTS)
+        template = rng.choice(statements)
         body.append(template.format(c=rng.randint(0, 2), i=rng.choice(INPUTS)))
     # every program splits at least once and calls the routine with a handler or the one
     # that reads a global through another, so calls stand between writes and reads
     body.insert(rng.randrange(len(body) + 1), "split w, parts, count;")
     body.insert(rng.randrange(len(body) + 1), rng.choice(("outer;", "risky;")))
+    if moves_and_trap:
+        body.insert(rng.randrange(len(body) + 1), rng.choice(MOVE_STATEMENTS[1:]).format())
     loop = "\n".join("      " + line for statement in body for line in statement.splitlines())
     aliases = "\n".join(f'    AliasIO "{name.upper()}", {name};' for name in INPUTS)
+    if moves_and_trap:
+        aliases += "\n    CONNECT irq WITH on_input;\n    ISignalDI in1, 1, irq;"
     declarations = "\n".join(
         [f"  VAR signaldi {name};" for name in INPUTS] +
         ["  VAR num a := 0;", "  VAR num b := 0;", "  VAR bool failed := FALSE;",
          "  VAR num w := 0;", "  VAR num x := 0;", "  VAR num parts{3};", "  VAR num count := 0;",
-         "  VAR num divisor := 1;", '  VAR string reply := "";', "  VAR bool ok := FALSE;"])
-    routines = ROUTINES.format(risky_handler=rng.choice(HANDLERS))
+         "  VAR num divisor := 1;", '  VAR string reply := "";', "  VAR bool ok := FALSE;"] +
+        (["  VAR intnum irq;", "  VAR robtarget spots{3};", "  VAR jointtarget joints{3};",
+          "  CONST robtarget home := [[500,0,400],[1,0,0,0],[0,0,0,0],"
+          "[9E9,9E9,9E9,9E9,9E9,9E9]];"] if moves_and_trap else []))
+    routines = ROUTINES.format(risky_handler=rng.choice(HANDLERS)) + \
+        (TRAP if moves_and_trap else "")
     return f"""MODULE Dead{seed}
 {declarations}
 {routines}

@@ -73,9 +73,9 @@ def replays(path: Path, name: str) -> tuple[int, str]:
     return code, err.getvalue()
 
 
-def generated(tmp_path: Path, seed: int) -> list[str]:
+def generated(tmp_path: Path, seed: int, moves_and_trap: bool = False) -> list[str]:
     program, spec = tmp_path / "prog.mod", tmp_path / "props.ltl"
-    program.write_text(dead_data_program(seed))
+    program.write_text(dead_data_program(seed, moves_and_trap))
     spec.write_text("\n".join(dead_data_properties(seed)) + "\n")
     return [str(program), "--ltl", str(spec), "--max-states", "20000"]
 
@@ -94,18 +94,21 @@ def test_check_cases_project_as_the_program_steps(name, monkeypatch):
     assert not failures, f"{len(failures)} of {compared} states, first: {failures[0]}"
 
 
+@pytest.mark.parametrize("moves_and_trap", [False, True])
 @pytest.mark.parametrize("seed", SEEDS)
-def test_generated_programs_project_as_the_program_steps(tmp_path, seed):
-    compared, failures = commuting_failures(generated(tmp_path, seed))
+def test_generated_programs_project_as_the_program_steps(tmp_path, seed, moves_and_trap):
+    compared, failures = commuting_failures(generated(tmp_path, seed, moves_and_trap))
     assert compared > 0
     assert not failures, f"{len(failures)} of {compared} states, first: {failures[0]}"
 
 
 # --- verdicts and counterexamples -------------------------------------------------------
 
+@pytest.mark.parametrize("moves_and_trap", [False, True])
 @pytest.mark.parametrize("seed", SEEDS)
-def test_generated_programs_keep_their_verdicts_and_counterexamples_replay(tmp_path, seed):
-    argv = generated(tmp_path, seed)
+def test_generated_programs_keep_their_verdicts_and_counterexamples_replay(tmp_path, seed,
+                                                                           moves_and_trap):
+    argv = generated(tmp_path, seed, moves_and_trap)
     report = check_report(argv)
     reduced = verdicts(report)
     assert "UNKNOWN" not in reduced.values(), reduced
@@ -188,3 +191,64 @@ def test_a_call_keeps_what_its_routines_read_and_forgets_the_rest(tmp_path):
     late = dead_globals_by_line(CALLED.replace("    outer;", '    %"outer"%;'), tmp_path,
                                 {"FAILED"})
     assert late[CALL_LINE] == set()           # a routine called by a computed name may read any
+
+
+# a server loop of the pattern of a socket server with a TRAP (a reply built only to be
+# sent, a move between): the reply dies after it is sent, the trap's data never does
+TRAPPED = """MODULE Trapped
+  VAR signaldi go;
+  VAR intnum irq;
+  VAR num code := 0;
+  VAR num seen := 0;
+  VAR num top := 0;
+  VAR string reply := "";
+  VAR robtarget spots{2};
+  PROC main()
+    AliasIO "GO", go;
+    CONNECT irq WITH on_go;
+    ISignalDI go, 1, irq;
+    top := 1;
+    WHILE TRUE DO
+      code := clamp(DInput(go));
+      WaitTime 0.1;
+      MoveL spots{code + 1}, v100, fine, tool0;
+      reply := NumToStr(code, 0) + " " + NumToStr(seen, 0);
+      TPWrite reply;
+    ENDWHILE
+  ENDPROC
+  FUNC num clamp(num v)
+    IF v > top RETURN top;
+    RETURN v;
+  ENDFUNC
+  TRAP on_go
+    seen := seen + 1;
+    IF seen > 2 seen := 0;
+  ENDTRAP
+ENDMODULE
+"""
+
+
+def line_of(text: str, part: str) -> int:
+    return next(number for number, line in enumerate(text.splitlines(), start=1)
+                if part in line)
+
+
+def test_with_a_trap_globals_it_does_not_name_die_and_a_move_reads_only_its_target(tmp_path):
+    dead = dead_globals_by_line(TRAPPED, tmp_path, set())
+    move = line_of(TRAPPED, "MoveL")
+    assert "reply" in dead[move] and "code" not in dead[move]
+    # a user function reads what it names (top), a WaitTime nothing
+    assert "reply" in dead[line_of(TRAPPED, "clamp(DInput")]
+    assert "top" not in dead[line_of(TRAPPED, "clamp(DInput")]
+    assert "reply" in dead[line_of(TRAPPED, "WaitTime")]
+    assert "code" not in dead[line_of(TRAPPED, "WaitTime")]
+    assert all("seen" not in names for names in dead.values())
+    # the trap's data is live everywhere, and so is what a trap reads through a routine
+    called = TRAPPED.replace("    seen := seen + 1;", "    seen := seen + 1;\n    note;") \
+        .replace("  FUNC num clamp", "  PROC note()\n    TPWrite reply;\n  ENDPROC\n  FUNC num clamp")
+    assert all("reply" not in names for names in dead_globals_by_line(called, tmp_path,
+                                                                        set()).values())
+    synced = TRAPPED.replace("MoveL spots{code + 1}, v100, fine, tool0;",
+                             'MoveLSync spots{code + 1}, v100, fine, tool0, "Hook";') \
+        .replace("  TRAP on_go", "  PROC Hook()\n    TPWrite reply;\n  ENDPROC\n  TRAP on_go")
+    assert "reply" not in dead_globals_by_line(synced, tmp_path, set())[move]

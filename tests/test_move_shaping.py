@@ -35,6 +35,7 @@ HEAD = """MODULE Prog
   VAR num k := 1;
   VAR num n := 0;
   VAR num tab{3} := [1, 2, 3];
+  CONST num size := 330;
   CONST robtarget pPlace := [[400, 0, 20], [0, 0, 1, 0], [0, 0, 0, 0], [9E9, 9E9, 9E9, 9E9, 9E9, 9E9]];
   CONST robtarget ptab{3} := [pPlace, pPlace, pPlace];
   PROC main()
@@ -67,6 +68,10 @@ SHAPING = [
     "Place Offs(pPlace, 0, 0, h);",
     "Place pPlace;",
     "FOR i FROM 1 TO 2 DO h := h + 10; MoveL Offs(pPlace, 0, 0, h), v100, fine, tool0; ENDFOR",
+    "k := k + 1;",
+    "h := k * size;",
+    "MoveL Offs(pPlace, 0, 0, 2 * h), v100, fine, tool0;",
+    "z := h * 3;",
 ]
 # ... and statements after which the data matter, or that fail with them (each fails or
 # waits for some value the shaping statements reach)
@@ -149,6 +154,13 @@ def test_the_pattern_programs_slice_and_keep_both():
     ("h := h + 20; Shift h; MoveL Offs(pPlace, 0, 0, h), v100, fine, tool0;", set()),
     ('h := h + 20; TPWrite "h", \\Num:=h;', set()),
     ("h := h * 2; MoveL Offs(pPlace, 0, 0, h), v100, fine, tool0;", set()),
+    # a layer count times a constant (Zollman94's nActLayer*nBoxSizeZ)
+    ("k := k + 1; h := k * size; MoveL Offs(pPlace, 0, 0, h), v100, fine, tool0;", {"h", "k"}),
+    ("h := h + 20; MoveL Offs(pPlace, 0, 0, 3 * h), v100, fine, tool0;", {"h"}),
+    # ... but not a product fed back into its factor, nor one of two data
+    ("h := h * size; MoveL Offs(pPlace, 0, 0, h), v100, fine, tool0;", set()),
+    ("z := h * 3; h := z + 1; MoveL Offs(pPlace, 0, 0, h), v100, fine, tool0;", set()),
+    ("h := h + 20; MoveL Offs(pPlace, 0, 0, h * k), v100, fine, tool0;", set()),
 ])
 def test_which_data_only_shape_moves(statement, shaped):
     text = HEAD + f"      {statement}\n" + TAIL
@@ -186,3 +198,22 @@ def test_a_violation_away_from_the_moves_does_not_name_the_data(tmp_path):
     verdict, _, assumes = found["no_runtime_error"]
     assert verdict == "VIOLATED"
     assert not any(line.startswith("h (prog.mod:3)") for line in assumes)
+
+
+COUNTED = HEAD.replace("      k := 1;\n", "") + """      k := k + 1;
+      h := k * size;
+      MoveL Offs(pPlace, 0, 0, h), v100, fine, tool0;
+""" + TAIL
+
+
+def test_a_layer_count_times_a_constant_ends_only_when_left_out(tmp_path):
+    """Zollman94's palletiser: ``Incr nActLayer`` each layer, ``nActBoxZOff :=
+    nActLayer*nBoxSizeZ`` only reaches ``Offs`` targets; never reset, so the search ends
+    only with both left out, named under ``assumes:``."""
+    reduced = check(tmp_path, COUNTED)
+    plain = check(tmp_path, COUNTED, "--no-slice")
+    for name, (verdict, states, assumes) in reduced.items():
+        assert verdict == "HOLDS" and states < 100, name
+        assert any(line.startswith("h (prog.mod:3), k (prog.mod:5) only shape") for line in
+                   assumes), assumes
+        assert plain[name][0] == UNKNOWN, name

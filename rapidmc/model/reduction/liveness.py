@@ -18,12 +18,16 @@ analysis does not recognise, which also use everything.
   program counter is reset in the stored state: only that routine's
   frames can reach it (a reference passed to a call is a use).
 * Global data is analysed only where no one else can read it: no
-  environment model, no further tasks, no TRAP routines.  A user routine
-  call uses every global that routine, or one it calls, names anywhere
-  (every global when one of them calls by a computed name, reaches data
-  by name or ends the cycle; a user function called inside an expression
-  and any instruction that may call a routine itself, CallByVar or a
-  move's procedure, use every global).  Globals are reset by the program
+  environment model, no further tasks, and only globals no TRAP routine
+  (nor a routine it calls) names: a trap runs between any two instructions,
+  and an error it raises stops the program.  A user routine call, a user
+  function's call inside an expression included, uses every global that
+  routine, or one it calls, names anywhere (every global when one of them
+  calls by a computed name, reaches data by name or ends the cycle; any
+  instruction that may call a routine itself, CallByVar or MoveLSync's
+  procedure, uses every global).  A move, WaitTime and a barrier
+  (``GOES_ON``) read data only through their arguments and go on to the
+  next instruction, as a predefined procedure does.  Globals are reset by the program
   counter of main's frame, the bottom of the stack: while a routine main
   called runs, main stands at the call, where everything that routine and
   the rest of main may read is live.  In a final state (ended or failed)
@@ -40,6 +44,7 @@ from ...semantics.instructions import (Action, Branch, Call, ControlAction, EndR
                                       ExitProgram, ForInit, ForNext, Jump, Retry, Return,
                                       TestDispatch, TryNext)
 from ...semantics.program import PROGRAM_NAMESPACE, Program
+from ...semantics.library.motion import MOVE_ROUTINES
 from ...semantics.library.program_control import CALLS_BY_NAME, RESTARTS_CYCLE
 from ...semantics.scope import ROUTINE
 from .merging import JUMP_FIELDS, nodes_by_span
@@ -76,6 +81,7 @@ class DeadData:
         program = self.program
         global_candidates = _global_candidates(program, atom_keys, skip)
         reads = _global_reads(program) if global_candidates else {}
+        global_candidates = _untrapped(program, global_candidates, reads)
         for routine in program.routines:
             if routine.ast is None or getattr(routine, "scope", None) is None:
                 continue
@@ -106,11 +112,27 @@ class DeadData:
 
 def _global_candidates(program: Program, atom_keys: set[str], skip: set) -> list[int]:
     if program.environment_react is not None or program.environment_init is not None or \
-            program.task_entries or any(r.kind == "TRAP" for r in program.routines):
+            program.task_entries:
         return []
     return [data.slot for data in program.globals
             if data.namespace == PROGRAM_NAMESPACE and is_value(data.type)
             and data.key not in atom_keys and ("G", data.slot) not in skip]
+
+
+def _untrapped(program: Program, candidates: list[int], reads: dict) -> list[int]:
+    """The ``candidates`` no TRAP routine, nor a routine it calls, names: a trap runs
+    between any two instructions of main (or of a routine main called), and an error it
+    raises stops the program (``errors_flow``), so the rest of main's flow is the same
+    with traps.  None when a trap may read any global (``_global_reads``)."""
+    named: set = set()
+    for routine in program.routines:
+        if routine.kind != "TRAP":
+            continue
+        read = reads.get(routine.index)
+        if read is None:
+            return []
+        named |= read
+    return [slot for slot in candidates if ("G", slot) not in named]
 
 
 def _global_reads(program: Program) -> dict[int, Optional[frozenset]]:
@@ -185,13 +207,16 @@ def _live_in(routine, tracked: set, reads: dict) -> tuple[list[set], dict]:
     code = routine.code
     resolve = Resolver(routine)
     nodes = nodes_by_span(routine.ast)
+    for call in _calls(routine.ast):          # a user function's Call: its call expression
+        if isinstance(call, ast.FunctionCall):
+            nodes.setdefault(call.span, call)
     uses, defines, successors = [], [], []
     for pc, instruction in enumerate(code):
         used, defined = _effects(instruction, nodes.get(instruction.span), resolve, tracked,
                                  reads)
         uses.append(used)
         defines.append(defined)
-        successors.append(_successors(routine, pc, instruction))
+        successors.append(_successors(routine, pc, instruction, nodes.get(instruction.span)))
     totality = Totality(resolve.symbol)
     handler, undo = routine.handler_pc, routine.undo_pc
     body_end = min(pc for pc in (handler, undo, len(code)) if pc >= 0)
@@ -289,9 +314,9 @@ def _cannot_raise(instruction, node, totality: Totality) -> bool:
     return False
 
 
-def _successors(routine, pc: int, instruction) -> list[int]:
+def _successors(routine, pc: int, instruction, node=None) -> list[int]:
     size = len(routine.code)
-    if isinstance(instruction, ANYWHERE):
+    if isinstance(instruction, ANYWHERE) and not _goes_on(instruction, node):
         return list(range(size))
     targets = set()
     if not isinstance(instruction, NO_SUCCESSORS):
@@ -302,6 +327,20 @@ def _successors(routine, pc: int, instruction) -> list[int]:
         if isinstance(instruction, TestDispatch):
             targets.update(t for _, t in instruction.cases if 0 <= t < size)
     return sorted(targets)
+
+
+# predefined instructions the step machine runs as a ControlAction that still only go on
+# to the next instruction or wait where they are: every move but MoveJSync, MoveLSync
+# and MoveCSync (they call a procedure named at run time), WaitTime, and the barriers
+GOES_ON = frozenset(MOVE_ROUTINES - CALLS_BY_NAME) | \
+    frozenset({"WAITTIME", "WAITSYNCTASK", "SYNCMOVEON", "SYNCMOVEOFF"})
+
+
+def _goes_on(instruction, node) -> bool:
+    """A ControlAction of ``GOES_ON``: it reads data only through its arguments and goes
+    on, as a predefined Action does."""
+    return isinstance(instruction, ControlAction) and isinstance(node, ast.ProcedureCall) \
+        and isinstance(node.name, ast.Name) and node.name.key in GOES_ON
 
 
 # predefined procedures whose named argument receives a whole new value whenever the
@@ -342,7 +381,8 @@ def _effects(instruction, node, resolve: "Resolver", tracked: set,
                 defined = {key}
         else:
             used |= resolve.keys(target)          # a partial write keeps the rest
-    elif kind is Action and isinstance(node, ast.ProcedureCall):
+    elif (kind is Action or _goes_on(instruction, node)) and \
+            isinstance(node, ast.ProcedureCall) and node.name.key not in DATA_BY_NAME:
         used = resolve.keys(node.args)            # predefined: data only through arguments
         written = _whole_write(node, resolve)
         if written is not None:
@@ -357,7 +397,7 @@ def _effects(instruction, node, resolve: "Resolver", tracked: set,
         used = resolve.keys((node.start, node.stop, node.step))
     elif kind is Return and isinstance(node, ast.Return):
         used = resolve.keys(node.value)
-    elif kind is Call and isinstance(node, ast.ProcedureCall):
+    elif kind is Call and isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
         callee = resolve.symbol(node.name)
         read = reads.get(callee.slot) if callee is not None and callee.kind == ROUTINE else None
         used = resolve.keys(node.args) | \

@@ -221,15 +221,18 @@ class _Analysis:
 
     def closure(self) -> set[Key]:
         """The relevant data: the seeds and everything that flows into them."""
-        relevant = set(self.relevant)
-        work = list(relevant)
+        return self.sources(self.relevant)
+
+    def sources(self, keys) -> set[Key]:
+        """``keys`` and every key that flows into them."""
+        found = set(keys)
+        work = list(found)
         while work:
-            key = work.pop()
-            for source in self.flows.get(key, ()):
-                if source not in relevant:
-                    relevant.add(source)
+            for source in self.flows.get(work.pop(), ()):
+                if source not in found:
+                    found.add(source)
                     work.append(source)
-        return relevant
+        return found
 
     # -------------------------------------------------------------- names
     def symbol(self, name: ast.Name) -> Optional[Symbol]:
