@@ -174,7 +174,26 @@ def final_or_stopped(state: State) -> list[Transition]:
 
 
 def successors(program: Program, state: State, config: CheckConfig) -> list[Transition]:
-    """Every transition from ``state`` (check mode), in a deterministic order."""
+    """Every transition from ``state`` (check mode), in a deterministic order; the
+    inputs only interrupts watch back at rest after each (``CheckConfig.edge_inputs``)."""
+    if config.edge_inputs and state.status == RUNNING:
+        return [_edges_at_rest(transition, config.edge_inputs)
+                for transition in _successors(program, state, config)]
+    return _successors(program, state, config)
+
+
+def _edges_at_rest(transition: Transition, edges: dict) -> Transition:
+    """``transition`` whose target keeps every edge input at 0 (its step chose the value,
+    so an edge came or not; the next step may bring another: ``model.edge_inputs``)."""
+    after = transition[2]
+    io = after[2]
+    changed = [x for index in edges if io[index] for x in (index, 0.0)]
+    if not changed:
+        return transition
+    return transition._replace(state=after._replace(io=io.mset(*changed)))
+
+
+def _successors(program: Program, state: State, config: CheckConfig) -> list[Transition]:
     if state.status != RUNNING:
         return final_or_stopped(state)
     if is_plain(program, state, config):
