@@ -34,7 +34,7 @@ from .choosers import Chooser, CheckConfig, ScriptChooser  # noqa: F401 (the ste
 from .fused_step import fused_successors
 from .plain_step import (MERGED_STEP_LIMIT, is_plain, plain_successors,  # noqa: F401
                          run_instruction, run_merged)
-from .staged_step import (deactivated, idle_steps_dropped, in_trap, interrupt_task,
+from .staged_step import (deactivated, edges_at_rest, idle_steps_dropped, in_trap, interrupt_task,
                           is_staged, next_pending, signal_edges_pending, staged_successors)
 from .task_registers import give_back, initial_registers, take_task_view
 from .timing import apply_scheduled, enqueue
@@ -174,26 +174,7 @@ def final_or_stopped(state: State) -> list[Transition]:
 
 
 def successors(program: Program, state: State, config: CheckConfig) -> list[Transition]:
-    """Every transition from ``state`` (check mode), in a deterministic order; the
-    inputs only interrupts watch back at rest after each (``CheckConfig.edge_inputs``)."""
-    if config.edge_inputs and state.status == RUNNING:
-        return [_edges_at_rest(transition, config.edge_inputs)
-                for transition in _successors(program, state, config)]
-    return _successors(program, state, config)
-
-
-def _edges_at_rest(transition: Transition, edges: dict) -> Transition:
-    """``transition`` whose target keeps every edge input at 0 (its step chose the value,
-    so an edge came or not; the next step may bring another: ``model.edge_inputs``)."""
-    after = transition[2]
-    io = after[2]
-    changed = [x for index in edges if io[index] for x in (index, 0.0)]
-    if not changed:
-        return transition
-    return transition._replace(state=after._replace(io=io.mset(*changed)))
-
-
-def _successors(program: Program, state: State, config: CheckConfig) -> list[Transition]:
+    """Every transition from ``state`` (check mode), in a deterministic order."""
     if state.status != RUNNING:
         return final_or_stopped(state)
     if is_plain(program, state, config):
@@ -212,13 +193,14 @@ def general_successors(program: Program, state: State, config: CheckConfig) -> l
     if state.status != RUNNING:
         return final_or_stopped(state)
     if config.free_inputs and not _inputs_matter(program, state):
-        return _successors_inputs_after(program, state, config)
+        return edges_at_rest(_successors_inputs_after(program, state, config),
+                             config.edge_inputs)
     transitions = list(enumerate_choices(lambda chooser: step(program, state, chooser),
                                          lambda script: ScriptChooser(script, config),
                                          config.time_check))
     if state.tasks:
         transitions = idle_steps_dropped(state, transitions)
-    return transitions
+    return edges_at_rest(transitions, config.edge_inputs)
 
 
 def _inputs_matter(program: Program, state: State) -> bool:
