@@ -10,14 +10,16 @@ all watch the rising edge, ``1``, or all both edges, ``2``): each step still cho
 its value, so an edge may come at any step, but the state after the step keeps the
 input at 0, ready for the next edge.  (Falling edges, ``0``, keep the value stored.)
 
-What this adds to the controller's behaviours: two edges of the same kind in two
-steps one after the other (on a real input the signal must go back in between, one
-step at least).  Every behaviour of the exact model is kept (a step whose value
-differs from the resting one without an edge leads to a state the resting choice
-gives too).  So HOLDS stays sound; a VIOLATED verdict is printed only when its
-counterexample has no two such edges in a row (``realizable``), else the check is
-repeated with the inputs stored (``api``).  The verdicts name the inputs under
-``assumes:``.
+What this adds to the controller's runs: a rising edge in the step right after the one
+before (a real input must fall in between, one step at least).  Such an edge only
+matters when the step between removed the interrupt from the queue: it started its TRAP
+(the task, in that TRAP, takes no new one next step), or ISleep or IDelete dropped it
+(then no edge queues it).  Its only effect is the interrupt pending one step early, so
+every line, error and atom value of such a run is reached by a run of the controller one
+step later, and every run of the exact model is kept (a value 1 without an edge leads to
+the state 0 gives too).  The verdicts rest on no assumption; still, a VIOLATED verdict is
+printed only when its counterexample has no such input at 1 in two steps in a row
+(``realizable``), else the check runs again with the values stored (``api``, RMC733).
 """
 from __future__ import annotations
 
