@@ -42,7 +42,7 @@ from .check.budget import DEFAULT_MAX_STATES, time_check
 from .check.distributed import Cluster
 from .check.trace import Trace, build_trace
 from .check.walks import random_walks
-from .diagnostics import (AUTOMATON, DISTRIBUTED_SCOPE, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED,
+from .diagnostics import (AUTOMATON, DISTRIBUTED_SCOPE, EDGES_REPLAYED, ENVIRONMENT, EXIT_OK, EXIT_UNKNOWN, EXIT_VIOLATED,
                           TRACE_REPLAY, USAGE, Diagnostic, SourceCache,
                           error)
 from .diagnostics.quoting import one_line, quoted
@@ -64,6 +64,7 @@ from .ltl import read_hoa, to_buchi
 from .ltl.syntax import Not
 from .model import reduction
 from .model.fairness import TaskFairness, assumes_fairness, fair_or_plain_search
+from .model.edge_inputs import edge_inputs, realizable
 from .model.inputs import free_input_domains, observed_inputs
 from .model.robot_tracking import robot_untracked
 from .model.waiting import waits_forever
@@ -120,6 +121,9 @@ class CheckOptions:
     # keep the robot's position in every state even where nothing but moves reads it
     # (model.robot_tracking; False: moves leave the robot where it is then)
     track_robot: bool = False
+    # inputs that only interrupts watch keep their resting value in states, an edge may
+    # come at any step (model.edge_inputs; False: their values are stored, exact)
+    edge_inputs: bool = True
     # the property searches walk the state graph the run-time error search explored, when
     # that search was complete (False: each steps the program again; same answers)
     reuse_explored: bool = True
@@ -264,8 +268,11 @@ def _check_config(program: Program, atoms: AtomCompiler, options: CheckOptions,
     derived ``messages`` per reading site; and the default input domains assumed."""
     domains, assumed = free_input_domains(program, atoms, options.input_domains,
                                           options.exact_input_domains)
+    observed = observed_inputs(program, atoms)
     config = CheckConfig(program, options.tp_answers, options.fk_answers, domains,
-                         observed=observed_inputs(program, atoms))
+                         observed=observed)
+    if options.edge_inputs:
+        config.edge_inputs = edge_inputs(program, atoms, observed)
     config.time_check = time_check       # the running search's time limit, inside a step
     config.robot_untracked = not options.track_robot and robot_untracked(program, atoms)
     if options.socket_messages:
@@ -549,6 +556,8 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
         with cluster.session() if cluster is not None else contextlib.nullcontext() as ray:
             searches = _Searches(model, progress, ray)
             results = searches.builtin_checks() + [searches.property(*job) for job in model.jobs]
+        if not _edges_realizable(model, results):
+            return _with_edges_stored(model, progress)
         bound = _probe_bound(results)
         if _probing(searches) and any(d.probes for d in model.messages):
             searches.facts.statements.executed |= _probed_lines(model, bound)
@@ -575,6 +584,32 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
                for r in results]
     return CheckReport(results, _findings(model, results, searches.facts, searches.notes),
                        model.describer, searches.facts.executed(), searches.facts.inputs_tried())
+
+
+def _edges_realizable(model: Model, results: list) -> bool:
+    """Whether every counterexample of a model with edge inputs (``model.edge_inputs``) is a
+    run of the exact model (no input watched for its rising edge rises in two steps in a
+    row)."""
+    edges = model.config.edge_inputs
+    if not edges:
+        return True
+    names = {signal.name: signal.index for signal in model.program.signals}
+    return all(realizable(r.result, edges, names) for r in results
+               if r.result.verdict == VIOLATED)
+
+
+def _with_edges_stored(model: Model, progress: ProgressFactory) -> CheckReport:
+    """The check again with the values of the edge inputs stored (exact), and a note why:
+    a counterexample of the check with edges at any step needed two in a row."""
+    exact = prepare(model.program, model.properties, replace(model.options, edge_inputs=False))
+    report = check_model(exact, progress)
+    names = ", ".join(sorted(model.program.signals[index].name
+                             for index in model.config.edge_inputs))
+    report.warnings.insert(0, Diagnostic(
+        EDGES_REPLAYED, f"a counterexample needed an edge of {names} in two steps in a row, "
+                        "which a real input cannot give (it must go back in between): the "
+                        "check ran again with their values stored", None, severity="note"))
+    return report
 
 
 def _probing(searches: "_Searches") -> bool:

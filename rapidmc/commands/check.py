@@ -127,6 +127,10 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
                         help="keep the robot's position in every state (default: where nothing "
                              "but moves reads it, moves leave the robot where it is, and the "
                              "verdicts say so under assumes:)")
+    parser.add_argument("--exact-edges", action="store_true",
+                        help="store the value of every input an interrupt watches (default: an "
+                             "input that only interrupts watch may give an edge at any step, "
+                             "and the verdicts say so under assumes:)")
     parser.add_argument("--no-fairness", action="store_true",
                         help="with several tasks: also search runs in which a task that could "
                              "go on never runs again (default: weak fairness between tasks; "
@@ -183,6 +187,7 @@ def check_options(args: argparse.Namespace) -> api.CheckOptions:
         storage=storage_options.storage_from_arguments(args),
         fairness=not args.no_fairness,
         track_robot=args.track_robot,
+        edge_inputs=not args.exact_edges,
         cluster=cluster_options.cluster_from_arguments(args))
 
 

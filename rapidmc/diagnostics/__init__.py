@@ -126,6 +126,7 @@ FIXED_READING = _code("RMC702", "fixed-reading", "a controller reading the check
 TASKS_LOADED = _code("RMC730", "tasks-loaded", "which tasks of a controller backup are checked together (or left out, and why)")
 PERS_UNWRITTEN = _code("RMC731", "pers-unwritten", "a task checked alone reads PERS data it never writes: another task or a PC may write it")
 ORDER_REDUCTION = _code("RMC732", "order-reduction", "partial-order reduction is off for a property with X (next)")
+EDGES_REPLAYED = _code("RMC733", "edges-replayed", "a counterexample needed an input that only interrupts watch to rise in two steps in a row: the check ran again with its value stored")
 ENCRYPTED_SKIPPED = _code("RMC735", "encrypted-skipped", "an encrypted module beside readable ones (or a backup's task of encrypted modules only) is checked as the interface its uses show")
 NO_PROGRAM = _code("RMC736", "no-program", "a controller backup, or the task --task names, holds no program (system modules only): nothing to check, exit 0")
 

@@ -47,7 +47,7 @@ def observed_inputs(program: Program, atoms: AtomCompiler):
             continue
         for node in walk_routine(routine.ast):      # every task's and model's, handlers too
             if isinstance(node, ast.ProcedureCall) and node.name.key in INTERRUPT_ORDERS:
-                signal = _ordered_signal(program, routine, node)
+                signal = ordered_signal(program, routine, node)
                 if signal is not None:
                     observed.add(signal.index)
                     continue
@@ -73,7 +73,7 @@ def _bound_signals(routine, call: ast.ProcedureCall, bindings: Optional[dict]):
     return bindings.get(symbol.slot)
 
 
-def _ordered_signal(program: Program, routine, call: ast.ProcedureCall):
+def ordered_signal(program: Program, routine, call: ast.ProcedureCall):
     """The configured signal an interrupt order names directly, else None (signal data,
     a parameter, a routine's own data, the task's module data, which may hide a
     configured signal of that name: known only at run time, through AliasIO)."""

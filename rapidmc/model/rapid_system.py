@@ -264,9 +264,22 @@ class RapidSystem:
 
     def _same_but_inputs(self, state: State, targets: Sequence[State]) -> bool:
         """Whether every successor of the running ``state`` is ``state`` with other free
-        inputs (and, with merged steps, every single instruction's too)."""
+        inputs (and, with merged steps, every single instruction's too), and so is every
+        successor of those: every valuation is one step away, and from another one an
+        interrupt's edge may come (``ISignalDI di, 1``: with ``di`` stored at 1, it must
+        go back to 0 first)."""
         free = [index for index, _, _ in self.config.free_inputs]
         masked = _without_inputs(state, free)
+        if not self._stays(state, targets, free, masked):
+            return False
+        if not state[4][0]:
+            return True
+        return all(self._stays(after, self.successor_states(after), free, masked)
+                   for after in dict.fromkeys(targets) if after != state)
+
+    def _stays(self, state: State, targets: Sequence[State], free: list, masked) -> bool:
+        """Whether ``targets``, the successors of ``state``, are all ``masked`` with other
+        free inputs (and, with merged steps, every single instruction's too)."""
         if not all(_without_inputs(after, free) == masked for after in targets):
             return False
         if not self.config.merge_points and (self.order is None or self.order.runs is None):

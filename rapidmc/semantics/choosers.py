@@ -116,6 +116,10 @@ class CheckConfig:
                 lazy[signal.index] = (signal.name, domain)
         self.free_inputs = tuple(free)
         self.lazy_inputs = lazy
+        # stored inputs that only interrupts watch: index -> whether both edges are
+        # watched; every state after a step keeps them at 0 (``model.edge_inputs``);
+        # empty: the exact model
+        self.edge_inputs: dict = {}
         # called between two runs of one step with different choices: the search engine's
         # ``check.budget.time_check`` raises there once the running search's time is up,
         # so a step with thousands of successors cannot run far past the time limit

@@ -102,6 +102,22 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
         return None
     if tasks:
         result = idle_steps_dropped(state, result, owners)
+    return edges_at_rest(result, config.edge_inputs)
+
+
+def edges_at_rest(transitions: list, edges: dict) -> list:
+    """``transitions`` whose targets keep every edge input at 0 (``CheckConfig.edge_inputs``:
+    the step chose the value, so an edge came or not; the next step may bring another)."""
+    if not edges:
+        return transitions
+    result = []
+    for transition in transitions:
+        after = transition[2]
+        io = after[2]
+        changed = [x for index in edges if io[index] for x in (index, 0.0)]
+        if changed:
+            transition = transition._replace(state=after._replace(io=io.mset(*changed)))
+        result.append(transition)
     return result
 
 

@@ -34,7 +34,7 @@ from .choosers import Chooser, CheckConfig, ScriptChooser  # noqa: F401 (the ste
 from .fused_step import fused_successors
 from .plain_step import (MERGED_STEP_LIMIT, is_plain, plain_successors,  # noqa: F401
                          run_instruction, run_merged)
-from .staged_step import (deactivated, idle_steps_dropped, in_trap, interrupt_task,
+from .staged_step import (deactivated, edges_at_rest, idle_steps_dropped, in_trap, interrupt_task,
                           is_staged, next_pending, signal_edges_pending, staged_successors)
 from .task_registers import give_back, initial_registers, take_task_view
 from .timing import apply_scheduled, enqueue
@@ -193,13 +193,14 @@ def general_successors(program: Program, state: State, config: CheckConfig) -> l
     if state.status != RUNNING:
         return final_or_stopped(state)
     if config.free_inputs and not _inputs_matter(program, state):
-        return _successors_inputs_after(program, state, config)
+        return edges_at_rest(_successors_inputs_after(program, state, config),
+                             config.edge_inputs)
     transitions = list(enumerate_choices(lambda chooser: step(program, state, chooser),
                                          lambda script: ScriptChooser(script, config),
                                          config.time_check))
     if state.tasks:
         transitions = idle_steps_dropped(state, transitions)
-    return transitions
+    return edges_at_rest(transitions, config.edge_inputs)
 
 
 def _inputs_matter(program: Program, state: State) -> bool:

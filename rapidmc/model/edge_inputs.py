@@ -1,0 +1,125 @@
+"""Free digital inputs that only interrupts watch: their edges, not their values.
+
+An input watched by ``ISignalDI diReset, 1, intReset`` is stored in every state
+(``inputs.observed_inputs``), since a rising edge between two states raises the
+interrupt: with four such inputs every state has 16 copies.  When nothing but
+interrupt orders names the input (no ``DInput``, ``WaitDI``, ``TestDI``, no
+condition, no atom, no AliasIO, no string that could name it) its value can be seen
+only through the interrupts it raises.  Such an input is an *edge input* (its orders
+all watch the rising edge, ``1``, or all both edges, ``2``): each step still chooses
+its value, so an edge may come at any step, but the state after the step keeps the
+input at 0, ready for the next edge.  (Falling edges, ``0``, keep the value stored.)
+
+What this adds to the controller's runs: a rising edge in the step right after the one
+before (a real input must fall in between, one step at least).  Such an edge only
+matters when the step between removed the interrupt from the queue: it started its TRAP
+(the task, in that TRAP, takes no new one next step), or ISleep or IDelete dropped it
+(then no edge queues it).  Its only effect is the interrupt pending one step early, so
+every line, error and atom value of such a run is reached by a run of the controller one
+step later, and every run of the exact model is kept (a value 1 without an edge leads to
+the state 0 gives too).  The verdicts rest on no assumption; still, a VIOLATED verdict is
+printed only when its counterexample has no such input at 1 in two steps in a row
+(``realizable``), else the check runs again with the values stored (``api``, RMC733).
+"""
+from __future__ import annotations
+
+from typing import Optional
+
+from .. import ast
+from ..semantics.configured_signals import walk_routine
+from ..semantics.library.arguments import argument_expression
+from .inputs import ordered_signal
+
+_ORDERS = {"ISIGNALDI", "ISIGNALDO"}
+_BY_NAME = {"ALIASIO", "GETDATAVAL", "SETDATAVAL", "GETNEXTSYM", "SETALLDATAVAL"}
+_TRIGGER_NAMES = {"LOW": 0, "HIGH": 1, "EDGE": 2}
+
+
+def edge_inputs(program, atoms, observed: Optional[set]) -> dict:
+    """Signal index -> whether its orders watch both edges (else the rising one), for
+    each stored digital input that only interrupt orders name, all with the same literal
+    trigger, 1 or 2 (``{}``: none, or the program reaches signals in ways this cannot
+    bound: an environment model reading signals, a name built at run time)."""
+    if observed is None or program.environment_reads_io or atoms.observes_signal_data:
+        return {}
+    triggers: dict = {}             # signal index -> set of literal trigger values
+    read = set(atoms.observed)
+    names = {signal.key: signal.index for signal in program.signals}
+    for routine in program.routines:
+        if routine.ast is None:
+            continue
+        watched = set()             # ids of the NameRef nodes that are an order's signal
+        for node in walk_routine(routine.ast):
+            if isinstance(node, ast.LateBindingCall):
+                return {}
+            if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) and \
+                    node.name.key in _BY_NAME and not _literal_names(node):
+                return {}
+            if isinstance(node, ast.ProcedureCall) and node.name.key in _ORDERS:
+                signal = argument_expression(node, "Signal", 0)
+                if isinstance(signal, ast.NameRef) and signal.name.key in names and \
+                        ordered_signal(program, routine, node) is not None:
+                    watched.add(id(signal))
+                    trigger = _trigger(argument_expression(node, "TriggValue", 1))
+                    found = triggers.setdefault(names[signal.name.key], set())
+                    found.add(trigger)
+            elif isinstance(node, ast.NameRef) and node.name.key in names and \
+                    id(node) not in watched:
+                read.add(names[node.name.key])
+            elif isinstance(node, ast.StringLiteral) and node.value.upper() in names:
+                read.add(names[node.value.upper()])
+    edges = {}
+    for index, found in triggers.items():
+        signal = program.signals[index]
+        if index not in read and index in observed and signal.kind in ("DI", "DO") and \
+                found in ({1}, {2}):
+            edges[index] = found == {2}
+    return edges
+
+
+def _trigger(expression) -> Optional[int]:
+    """A literal trigger value (0, 1, 2, or low, high, edge), else None."""
+    if isinstance(expression, ast.NumLiteral) and expression.value in (0, 1, 2):
+        return int(expression.value)
+    if isinstance(expression, ast.NameRef):
+        return _TRIGGER_NAMES.get(expression.name.key)
+    return None
+
+
+def _literal_names(call) -> bool:
+    """Whether a call that reaches data or signals by name names them by literals only."""
+    for argument in call.args:
+        value = argument.value
+        if value is not None and not isinstance(
+                value, (ast.StringLiteral, ast.NameRef, ast.NumLiteral, ast.BoolLiteral)):
+            return False
+    return True
+
+
+def realizable(result, edges: dict, names: dict) -> bool:
+    """Whether the counterexample ``result`` (a ``SearchResult``, replayed on the unreduced
+    system: one instruction per step) of a model with these edge inputs is a run of the
+    exact model: no input watched for its rising edge is 1 in two steps in a row (round
+    the loop too).  Then the exact model runs it with the same values (a value 1 comes
+    after a 0, so each edge is one there too; nothing else reads the input).  An input
+    watched for both edges always is: its value flips at each edge.  ``names``: signal
+    name -> index."""
+    rising = {name for name, index in names.items() if index in edges and not edges[index]}
+    if not rising:
+        return True
+    steps = result.prefix + result.cycle
+    labels = [step.label for step in steps[1:]]
+    if result.cycle:
+        labels.append(result.closing_label)
+    marks = [_ones(label, rising) for label in labels]
+    if result.cycle:
+        loop = len(marks) - len(result.cycle)
+        marks.append(marks[loop])
+    return not any(a & b for a, b in zip(marks, marks[1:]))
+
+
+def _ones(label, rising: set) -> set:
+    """The inputs of ``rising`` a transition's label sets to 1."""
+    if not label:
+        return set()
+    return {name for name, value in label[0] if name in rising and value == 1}
