@@ -17,7 +17,9 @@ import pytest
 from rapidmc import api
 from rapidmc.check.result import SearchStats
 from rapidmc.load.message_domains import message_domains, well_formed
+from rapidmc.load.run_time_offsets import walked_starts
 from rapidmc.semantics.types import NUM, ArrayType
+from rapidmc.syntax import parse_text
 
 CHECK = Path(__file__).resolve().parent / "check"
 
@@ -821,3 +823,52 @@ def test_code_unreached_with_data_written_from_outside_names_it_when_its_domain_
 ENDMODULE
 """)
     assert coverage(api.check(api.load_program([str(path)])))[0] == wording
+
+
+def test_sub_messages_at_run_time_starts_get_long_messages_and_pairs_as_probes(monkeypatch):
+    """pac48's pattern (tests/check/socket_sub_messages): sub-messages read at an index
+    each one moves on by its length.  Each header's message also comes followed by bytes 0
+    for three sub-messages (the header alone stays: a real message too short); the probes
+    put a second header where the index stands after the first sub-message, and reach the
+    branch that needs both.  Without the probes that branch is reported, with the
+    messages tried."""
+    program = api.load_program([str(CHECK / "socket_sub_messages" / "prog.mod")])
+    [domain] = message_domains(program)
+    joint, force = "01 00 00 00", "02 00 00 00"
+    assert {joint, force, joint + " 00" * 20, force + " 00" * 20} <= set(domain.messages)
+    # joint (4-byte type, 8 bytes from 5) then force: its type at 13 (i = 5 + 8)
+    assert joint + " 00" * 8 + " 02" + " 00" * 11 in domain.probes
+    assert not set(domain.probes) & set(domain.messages)
+    assert "'01' and 23 bytes 00" in domain.note().message
+    assert coverage(api.check(program)) == []
+    monkeypatch.setattr(api, "PROBE_TOTAL", 0)
+    assert coverage(api.check(program)) == [
+        "never reached with the socket messages tried (SocketReceive at line 24)"]
+
+
+@pytest.mark.parametrize("write", ["FOR i FROM 1 TO 3 DO\n        ENDFOR",
+                                   "i := 2 * i;", "i := i - 4;", "Bump i;",
+                                   "UnpackRawBytes buffer, 1, i \\IntX:=DINT;"])
+def test_an_index_written_otherwise_leaves_the_start_unknown(write):
+    """Only a local index moved on by positive numbers gives run-time starts."""
+    text = f"""MODULE M
+    VAR rawbytes buffer;
+    VAR num field;
+    PROC Bump(VAR num n)
+        n := 0;
+    ENDPROC
+    PROC Read()
+        VAR num i := 1;
+        i := i + 4;
+        {write}
+        UnpackRawBytes buffer, i + 2, field \\IntX:=DINT;
+    ENDPROC
+ENDMODULE
+"""
+    routine = next(r for r in parse_text(text, "m.mod")[0].routines if r.name.key == "READ")
+    call = routine.body[-1]
+    assert walked_starts(call.args[1].value, routine, None) is None
+    plain = parse_text(text.replace(write, ""), "m.mod")[0]
+    routine = next(r for r in plain.routines if r.name.key == "READ")
+    assert walked_starts(routine.body[-1].args[1].value, routine, None) == (
+        frozenset({3}), frozenset({7}), frozenset({11}))
