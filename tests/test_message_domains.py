@@ -16,6 +16,7 @@ import pytest
 
 from rapidmc import api
 from rapidmc.check.result import SearchStats
+from rapidmc.load import message_domains as message_domains_module
 from rapidmc.load.message_domains import message_domains, well_formed
 from rapidmc.load.run_time_offsets import walked_starts
 from rapidmc.semantics.types import NUM, ArrayType
@@ -872,3 +873,19 @@ ENDMODULE
     routine = next(r for r in plain.routines if r.name.key == "READ")
     assert walked_starts(routine.body[-1].args[1].value, routine, None) == (
         frozenset({3}), frozenset({7}), frozenset({11}))
+
+
+def test_a_command_writing_what_anothers_condition_reads_is_probed_before_it(monkeypatch):
+    """open_abb's buffer (tests/check/socket_command_sequence): command 30 adds a point,
+    33 loops over the points added.  No one message reaches the loop's body; the pair of
+    the two commands' probes, offered together, does (31 clears what 30's IF reads)."""
+    program = api.load_program([str(CHECK / "socket_command_sequence" / "prog.mod")])
+    [domain] = message_domains(program)
+    pairs = [probe for probe in domain.probes if isinstance(probe, tuple)]
+    assert ("30 1 1 1 1 #", "33 1 #") in pairs and ("31 1 #", "30 1 1 1 1 #") in pairs
+    assert "'30 1 1 1 1 #' with '33 1 #'" not in domain.note().message   # (first 4 shown)
+    assert coverage(api.check(program)) == []
+    monkeypatch.setattr(message_domains_module, "MAX_SEQUENCES", 0)
+    assert coverage(api.check(api.load_program(
+        [str(CHECK / "socket_command_sequence" / "prog.mod")]))) == [
+        "never reached with the socket messages tried (SocketReceive at line 62)"]

@@ -71,6 +71,7 @@ MAX_FIELDS = 16               # the fields of a split message a use may name (pa
 MAX_PROBES = 128              # per receiving site: each is one small search for coverage
 MAX_VARIANTS = 16             # per command, the fields' values a probe tries together
 MAX_CUT = 32                  # probes for the values the domain's cap leaves out
+MAX_SEQUENCES = 16            # probes of two commands, the first writing what the second reads
 PROBE_STATES = 20000          # states a probe's search may visit (its lines count even so)
 ZEROS_SHOWN = 8               # bytes 0 a note shows one by one at a message's end
 
@@ -106,9 +107,12 @@ class MessageDomain:
                           f"{self.kind} {shown} ({self.reason}){probed}", self.site,
                           severity="note")
 
-    def _shown(self, text: str) -> str:
+    def _shown(self, text) -> str:
         """``text`` quoted; a message of bytes ending in more than ``ZEROS_SHOWN`` bytes 0
-        as its other bytes and their count (``'01 00 00 00' and 92 bytes 00``)."""
+        as its other bytes and their count (``'01 00 00 00' and 92 bytes 00``); a pair of
+        messages offered together as both (``'30 1 1 1 1 1 1 1 #' with '33 #'``)."""
+        if isinstance(text, tuple):
+            return " with ".join(map(self._shown, text))
         if not self.raw:
             return quoted(text)
         pairs = text.split(" ")
@@ -418,6 +422,11 @@ class Uses:
         # (target path, starts per level of the walk, encoding, network): fields unpacked
         # at a start computed at run time (``load.run_time_offsets``)
         self.sub_fields: set = set()
+        # per command's branch (a dispatch): the data it writes, and the data its
+        # conditions read (an IF, WHILE or TEST, a FOR's bounds): a command that writes
+        # what another's condition reads is tried before it (``_sequences``)
+        self.written: dict = {}
+        self.guards: dict = {}
         self.parsed_numbers: list = []           # (view of the text, number) parsed, compared
         self.lengths: set = set()                # numbers the message's length is compared with
         self.counted: list = []                  # (dispatch, number): a count of fields compared
@@ -663,6 +672,28 @@ class Uses:
         elif isinstance(node, ast.FunctionCall) and node.name.key == "STRTOVAL":
             self._parse(node, scope, parents)
             self._listed(node, routine)
+        self._kept_between(node, parents, scope)
+
+    def _kept_between(self, node, parents, scope) -> None:
+        """What a command's branch writes (an assignment's data) and what its conditions
+        read, the message's own data left out."""
+        if isinstance(node, ast.Assignment):
+            name, found = _base_name(node.target), self.written
+            names = {name} if name is not None else set()
+        elif isinstance(node, (ast.IfBranch, ast.CompactIf, ast.While)):
+            names, found = set(self.walked.names(node.condition)[0]), self.guards
+        elif isinstance(node, ast.For):
+            names, found = set(self.walked.names(node.start)[0]) \
+                | set(self.walked.names(node.stop)[0]), self.guards
+        elif isinstance(node, ast.Test):
+            names, found = set(self.walked.names(node.subject)[0]), self.guards
+        else:
+            return
+        names -= set(self.views)
+        if names:
+            dispatch = self._dispatch(parents + (node,), scope)
+            if dispatch is not None:
+                found.setdefault(dispatch, set()).update(names)
 
     def _comparison(self, node, scope, parents=()) -> None:
         if node.op in NUMBER_COMPARISONS:
@@ -934,12 +965,17 @@ class Uses:
         messages the domain's cap (``MAX_MESSAGES``) leaves out.  They are probes: tried
         one at a time, for coverage only, since the settings such branches store multiply
         the states of a search offered them all together."""
-        counts, forms = self._counts(), []
+        counts, forms, firsts = self._counts(), [], {}
         for view, text in self._parsed_texts():
             if view is None and counts:
                 numbers = counts.get((view, text), set())
                 other = next(n for n in range(len(numbers) + 1) if n not in numbers)
-                forms += self._counted(text, sorted(numbers) + [other], (view, text))
+                counted = self._counted(text, sorted(numbers) + [other], (view, text))
+                forms += counted
+                if numbers:              # its first count, then after one field more
+                    firsts[(view, text)] = [next((form for tier, form in counted
+                                                  if tier == wanted), None)
+                                            for wanted in (0, 2)]
         forms += self._counted("1", sorted(counts.get(None, ())), None)
         # and, first, the likeliest two messages of each value the domain's cap
         # (``MAX_MESSAGES``) leaves without one (the malformed code after twenty commands'
@@ -955,9 +991,26 @@ class Uses:
         # fields, zeros), as many as the cap leaves room for, in the commands' order
         tiers = {text: tier for tier, text in sorted(forms, reverse=True)
                  if text not in offered}
-        kept = sorted(tiers.items(),
-                      key=lambda item: (item[1], _natural(item[0])))[:MAX_PROBES - len(cut)]
-        return tuple(cut) + tuple(sorted((text for text, _ in kept), key=_natural))
+        sequences = self._sequences(firsts)
+        kept = sorted(tiers.items(), key=lambda item: (item[1], _natural(item[0])))[
+            :MAX_PROBES - len(cut) - len(sequences)]
+        return tuple(cut) + tuple(sorted((text for text, _ in kept), key=_natural)) \
+            + sequences
+
+    def _sequences(self, firsts: dict) -> tuple:
+        """Pairs of messages offered together at every receive (a probe's search then
+        tries them in either order): each command whose branch writes data (``BUFFER_POS
+        := BUFFER_POS + 1`` under ``CASE 30``) with each other command whose branch's
+        conditions read it (``FOR i FROM 1 TO BUFFER_POS`` under ``CASE 33``), each as its
+        probe (its code and first count of fields), both with one field more too; at most
+        ``MAX_SEQUENCES``."""
+        pairs = []
+        for first, written in sorted(self.written.items(), key=repr):
+            for second, read in sorted(self.guards.items(), key=repr):
+                if first != second and written & read:
+                    pairs += [pair for pair in zip(firsts.get(first, ()),
+                                                   firsts.get(second, ())) if all(pair)]
+        return tuple(dict.fromkeys(pairs))[:MAX_SEQUENCES]
 
     def _counts(self) -> dict:
         """The counts of fields compared, by the dispatch whose branch compares them
