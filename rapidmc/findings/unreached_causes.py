@@ -32,7 +32,8 @@ from typing import Iterable, Optional, Sequence
 
 from .. import ast
 from ..ast import Span, canonical
-from ..diagnostics import NEVER_REACHED, Diagnostic
+from ..diagnostics import NEVER_REACHED, Diagnostic, SourceCache
+from ..diagnostics.quoting import quoted
 from ..semantics.library.program_control import CALLS_BY_NAME
 from .dead_code import jumps_before
 
@@ -56,6 +57,7 @@ class Seat:
 class Cause:
     key: tuple
     text: str                 # what keeps the code out ("the code after the RETURN at line 12")
+    test: object = None       # the condition, when the code is an IF's THEN arm
 
 
 def group_by_cause(program, found: Sequence, wording: Sequence[str]) -> list[Diagnostic]:
@@ -69,6 +71,7 @@ def group_by_cause(program, found: Sequence, wording: Sequence[str]) -> list[Dia
     causes = [None if item.whole_routine else
               _cause(item.span, seats, jumps) or Cause(("stretch", index), "")
               for index, item in enumerate(found)]
+    _same_tests_share_a_cause(causes)
     _routines_share_callers_cause(routines, found, causes)
     groups: dict = {}
     order: list = []
@@ -130,7 +133,8 @@ def _cause(span: Span, seats: dict, jumps: dict) -> Optional[Cause]:
         return None
     if seat.previous is None and seat.owner is not None:
         return Cause(("arm", _where(seat.owner)), f"the code the {_compound_text(seat.owner)} at "
-                                                  f"line {seat.owner.span.line} never enters")
+                                                  f"line {seat.owner.span.line} never enters",
+                     _then_test(seat.owner, key))
     if seat.previous is None and seat.part == "error":
         return Cause(HANDLERS, "ERROR handlers no error enters")
     if seat.previous is None and seat.part == "undo":
@@ -139,6 +143,63 @@ def _cause(span: Span, seats: dict, jumps: dict) -> Optional[Cause]:
         return Cause(("after", _where(seat.previous)),
                      f"the code after line {seat.previous.span.line}, which never goes on")
     return None
+
+
+def _then_test(owner, key: tuple):
+    """The condition of ``owner`` when the line ``key`` opens its THEN arm (an IF's first
+    statement after THEN, or a compact IF's statement), else None."""
+    if isinstance(owner, ast.CompactIf):
+        return owner.condition
+    if isinstance(owner, ast.If) and owner.branches[0].body \
+            and (owner.branches[0].body[0].span.file,
+                 owner.branches[0].body[0].span.line) == key:
+        return owner.branches[0].condition
+    return None
+
+
+def _same_tests_share_a_cause(causes: list) -> None:
+    """IFs of the same condition (``IF end_index < start_index THEN``, copied after each
+    StrFind) whose THEN arm is all that is unreached of them share one cause: that the
+    test never holds at any of them (in place, on ``causes``).  Only tests written alike
+    at two places or more; an IF with other arms unreached keeps its own cause."""
+    arms: dict = {}
+    for cause in causes:
+        if cause is not None:
+            arms[cause.key] = arms.get(cause.key, 0) + 1
+    shapes: dict = {}
+    for index, cause in enumerate(causes):
+        if cause is not None and cause.test is not None and arms[cause.key] == 1:
+            shapes.setdefault(_shape(cause.test), []).append(index)
+    for shape, members in shapes.items():
+        if len(members) < 2:
+            continue
+        text = _source(causes[members[0]].test)
+        shared = Cause(("test", shape), f"the code IFs testing {text} never enter"
+                       if text else "the code IFs of the same test never enter")
+        for index in members:
+            causes[index] = shared
+
+
+def _shape(node):
+    """``node`` without its places: two conditions written alike have the same shape."""
+    if isinstance(node, ast.Name):
+        return node.key
+    if isinstance(node, tuple):
+        return tuple(_shape(inner) for inner in node)
+    if hasattr(node, "__dataclass_fields__"):
+        return (type(node).__name__,) + tuple(
+            _shape(getattr(node, name)) for name in node.__dataclass_fields__
+            if name != "span")
+    return node
+
+
+def _source(expr) -> str:
+    """The condition as written, quoted (one line), or "" when its text is not at hand."""
+    span = expr.span
+    line = SourceCache.line(span.file, span.line)
+    if line is None or span.end_line != span.line or span.end_column <= span.column:
+        return ""
+    return quoted(" ".join(line[span.column - 1:span.end_column - 1].split()))
 
 
 def _where(node) -> tuple:
