@@ -487,7 +487,8 @@ def test_a_mailbox_another_task_fills_is_reached_by_the_shared_data_probe(tmp_pa
                  "        ELSE"):
         number = next(n for n, line in enumerate(MAILBOX.splitlines(), 1) if code in line)
         assert (str(path), number) in report.executed, code
-    assert coverage(report) == ["never reached under any input"]
+    assert coverage(report) == ["never reached under any input: the code after the endless "
+                                "WHILE loop at line 7"]
 
 
 def test_without_the_shared_data_probe_the_mailbox_polls_are_the_clients(tmp_path):
@@ -502,7 +503,8 @@ def test_without_the_shared_data_probe_the_mailbox_polls_are_the_clients(tmp_pat
     program = api.load_program([str(path)])
     program.load_arguments = None
     report = api.check(program)
-    assert coverage(report) == ["never reached under any input"]
+    assert coverage(report) == ["never reached under any input: the code after the endless "
+                                "WHILE loop at line 7"]
     assert any("PERS command: no write of the loaded code ends the poll at mailbox.mod:9"
                in text for text in report.results[0].assumes), report.results[0].assumes
 
@@ -790,7 +792,8 @@ def test_code_after_a_return_is_unreached_under_any_input_beside_sampled_code(tm
     gives names the receive."""
     report = check_server(tmp_path, "            state := Parsed();", extra=AFTER_RETURN)
     tried = "never reached with the socket messages tried (SocketReceive at line 14)"
-    assert coverage(report) == [tried, "never reached under any input", tried]
+    assert coverage(report) == [
+        tried, "never reached under any input: the code after the RETURN at line 23", tried]
 
 
 @pytest.mark.parametrize("condition, wording", [

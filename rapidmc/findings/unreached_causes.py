@@ -27,7 +27,7 @@ tried) are grouped.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Iterable, Optional, Sequence
 
 from .. import ast
@@ -35,7 +35,7 @@ from ..ast import Span, canonical
 from ..diagnostics import NEVER_REACHED, Diagnostic, SourceCache
 from ..diagnostics.quoting import quoted
 from ..semantics.library.program_control import CALLS_BY_NAME
-from .dead_code import jumps_before
+from .dead_code import jumps_before, lines_behind_absent_options
 
 HANDLERS = ("handler",)       # the cause shared by every ERROR handler no error enters
 UNDO = ("undo",)              # ... and by every UNDO handler coverage does not follow
@@ -58,6 +58,8 @@ class Cause:
     key: tuple
     text: str                 # what keeps the code out ("the code after the RETURN at line 12")
     test: object = None       # the condition, when the code is an IF's THEN arm
+    alone: bool = False       # named even for one stretch: a fact of the code (a jump,
+                              # a Present branch no call opens), not of the inputs
 
 
 def group_by_cause(program, found: Sequence, wording: Sequence[str]) -> list[Diagnostic]:
@@ -68,8 +70,9 @@ def group_by_cause(program, found: Sequence, wording: Sequence[str]) -> list[Dia
     jumps: dict = {}
     for routine in routines:
         jumps.update(jumps_before(routine.ast))
+    absent = lines_behind_absent_options([r.ast for r in routines])
     causes = [None if item.whole_routine else
-              _cause(item.span, seats, jumps) or Cause(("stretch", index), "")
+              _cause(item.span, seats, jumps, absent) or Cause(("stretch", index), "")
               for index, item in enumerate(found)]
     _same_tests_share_a_cause(causes)
     _routines_share_callers_cause(routines, found, causes)
@@ -84,7 +87,11 @@ def group_by_cause(program, found: Sequence, wording: Sequence[str]) -> list[Dia
     warnings = []
     for key in order:
         members = groups[key]
-        if len(members) == 1:
+        cause = causes[members[0]]
+        if len(members) == 1 and cause is not None and cause.alone:
+            alone = found[members[0]].diagnostic(wording[members[0]])
+            warnings.append(replace(alone, message=f"{alone.message}: {cause.text}"))
+        elif len(members) == 1:
             warnings.append(found[members[0]].diagnostic(wording[members[0]]))
         else:
             warnings.append(_grouped([found[i] for i in members], wording[members[0]],
@@ -121,16 +128,22 @@ def _lines_of(routine: str, stretches: list) -> str:
     return f"line{'s' if multiple else ''} {', '.join(ranges)} of {routine}"
 
 
-def _cause(span: Span, seats: dict, jumps: dict) -> Optional[Cause]:
+def _cause(span: Span, seats: dict, jumps: dict, absent: frozenset = frozenset()
+           ) -> Optional[Cause]:
     """The cause of a stretch that starts at ``span`` (see the module docstring)."""
     key = (span.file, span.line)
     jump = jumps.get(key)
     if jump is not None:
         return Cause(("after", _where(jump)), f"the code after the {_jump_text(jump)} at line "
-                                              f"{jump.span.line}")
+                                              f"{jump.span.line}", alone=True)
     seat = seats.get(key)
     if seat is None:
         return None
+    option = _absent_option(seat.owner, key) if key in absent else None
+    if option is not None:
+        return Cause(("present", _where(seat.owner)), f"the code the IF at line "
+                     f"{seat.owner.span.line} never enters, as no call passes \\{option}",
+                     alone=True)
     if seat.previous is None and seat.owner is not None:
         return Cause(("arm", _where(seat.owner)), f"the code the {_compound_text(seat.owner)} at "
                                                   f"line {seat.owner.span.line} never enters",
@@ -142,6 +155,18 @@ def _cause(span: Span, seats: dict, jumps: dict) -> Optional[Cause]:
     if seat.previous is not None:
         return Cause(("after", _where(seat.previous)),
                      f"the code after line {seat.previous.span.line}, which never goes on")
+    return None
+
+
+def _absent_option(owner, key: tuple) -> Optional[str]:
+    """The optional parameter ``p`` as written when the line ``key`` opens the arm of an
+    ``IF Present(p)`` (or ELSEIF) branch of ``owner``, else None."""
+    for branch in getattr(owner, "branches", ()) if isinstance(owner, ast.If) else ():
+        if branch.body and (branch.body[0].span.file, branch.body[0].span.line) == key \
+                and isinstance(branch.condition, ast.FunctionCall) \
+                and branch.condition.name.key == "PRESENT" and branch.condition.args \
+                and isinstance(branch.condition.args[0].value, ast.NameRef):
+            return branch.condition.args[0].value.name.text
     return None
 
 
