@@ -422,11 +422,6 @@ class Uses:
         # (target path, starts per level of the walk, encoding, network): fields unpacked
         # at a start computed at run time (``load.run_time_offsets``)
         self.sub_fields: set = set()
-        # per command's branch (a dispatch): the data it writes, and the data its
-        # conditions read (an IF, WHILE or TEST, a FOR's bounds): a command that writes
-        # what another's condition reads is tried before it (``_sequences``)
-        self.written: dict = {}
-        self.guards: dict = {}
         self.parsed_numbers: list = []           # (view of the text, number) parsed, compared
         self.lengths: set = set()                # numbers the message's length is compared with
         self.counted: list = []                  # (dispatch, number): a count of fields compared
@@ -672,28 +667,34 @@ class Uses:
         elif isinstance(node, ast.FunctionCall) and node.name.key == "STRTOVAL":
             self._parse(node, scope, parents)
             self._listed(node, routine)
-        self._kept_between(node, parents, scope)
 
-    def _kept_between(self, node, parents, scope) -> None:
-        """What a command's branch writes (an assignment's data) and what its conditions
-        read, the message's own data left out."""
-        if isinstance(node, ast.Assignment):
-            name, found = _base_name(node.target), self.written
-            names = {name} if name is not None else set()
-        elif isinstance(node, (ast.IfBranch, ast.CompactIf, ast.While)):
-            names, found = set(self.walked.names(node.condition)[0]), self.guards
-        elif isinstance(node, ast.For):
-            names, found = set(self.walked.names(node.start)[0]) \
-                | set(self.walked.names(node.stop)[0]), self.guards
-        elif isinstance(node, ast.Test):
-            names, found = set(self.walked.names(node.subject)[0]), self.guards
-        else:
-            return
-        names -= set(self.views)
-        if names:
-            dispatch = self._dispatch(parents + (node,), scope)
-            if dispatch is not None:
-                found.setdefault(dispatch, set()).update(names)
+    def _kept_between(self) -> tuple:
+        """Per command's branch (a dispatch): the data it writes (an assignment's), and
+        the data its conditions read (an IF, compact IF, WHILE or TEST, a FOR's bounds),
+        the message's own data left out.  Walked only for a site with commands' probes."""
+        written: dict = {}
+        guards: dict = {}
+        for routine in self.routines:
+            if self.called is not None and routine.name not in self.called:
+                continue
+            for node, parents in self.walked.nodes(routine):
+                if isinstance(node, ast.Assignment):
+                    name, found = _base_name(node.target), written
+                    names = {name} if name is not None else set()
+                elif isinstance(node, (ast.IfBranch, ast.CompactIf, ast.While)):
+                    names, found = set(self.walked.names(node.condition)[0]), guards
+                elif isinstance(node, ast.For):
+                    names, found = set(self.walked.names(node.start)[0]) \
+                        | set(self.walked.names(node.stop)[0]), guards
+                elif isinstance(node, ast.Test):
+                    names, found = set(self.walked.names(node.subject)[0]), guards
+                else:
+                    continue
+                names -= set(self.views)
+                dispatch = self._dispatch(parents + (node,), routine.scope) if names else None
+                if dispatch is not None:
+                    found.setdefault(dispatch, set()).update(names)
+        return written, guards
 
     def _comparison(self, node, scope, parents=()) -> None:
         if node.op in NUMBER_COMPARISONS:
@@ -1004,9 +1005,12 @@ class Uses:
         conditions read it (``FOR i FROM 1 TO BUFFER_POS`` under ``CASE 33``), each as its
         probe (its code and first count of fields), both with one field more too; at most
         ``MAX_SEQUENCES``."""
+        if not firsts:
+            return ()
         pairs = []
-        for first, written in sorted(self.written.items(), key=repr):
-            for second, read in sorted(self.guards.items(), key=repr):
+        writes, guards = self._kept_between()
+        for first, written in sorted(writes.items(), key=repr):
+            for second, read in sorted(guards.items(), key=repr):
                 if first != second and written & read:
                     pairs += [pair for pair in zip(firsts.get(first, ()),
                                                    firsts.get(second, ())) if all(pair)]
