@@ -222,40 +222,27 @@ def test_routines_worded_apart_from_the_code_that_calls_them_are_one_warning(tmp
 # MARC-HT25's format check, copied after each StrFind: StrFind from start_index returns
 # start_index or more (StrLen + 1 when not found), so "end_index < start_index" never
 # holds.  The two copies are one cause; the IF on another test stays a warning of its own.
-SAME_TEST = """MODULE Parse
-  VAR socketdev server;
-  VAR socketdev client;
-  VAR string text := "";
-  VAR num first := 0;
-  VAR num second := 0;
-  VAR num bad := 0;
-  PROC main()
-    SocketCreate server;
-    SocketBind server, "0.0.0.0", 1025;
-    SocketListen server;
-    SocketAccept server, client \\Time:=WAIT_MAX;
-    WHILE TRUE DO
-      SocketReceive client \\Str:=text \\Time:=WAIT_MAX;
-      Fields;
+SAME_TEST = TEST_ARMS.split("      TEST command")[0].replace(
+    "  VAR num state := 0;\n", "  VAR num first := 0;\n  VAR num bad := 0;\n") + """      Fields;
     ENDWHILE
   ENDPROC
   PROC Fields()
     VAR num start_index := 1;
     VAR num end_index := 0;
-    end_index := StrFind(text, start_index, ",");
+    end_index := StrFind(command, start_index, ",");
     IF end_index < start_index THEN
       bad := 1;
     ENDIF
     first := end_index;
     start_index := end_index + 1;
-    end_index := StrFind(text, start_index, ",");
+    end_index := StrFind(command, start_index, ",");
     IF end_index  <  start_index THEN
       bad := 2;
     ENDIF
     IF end_index < 0 THEN
       bad := 3;
     ENDIF
-    second := end_index;
+    first := end_index;
   ENDPROC
 ENDMODULE
 """
@@ -265,10 +252,10 @@ def test_ifs_of_one_test_never_true_are_one_warning(tmp_path, monkeypatch):
     """The two IFs testing 'end_index < start_index' (written with other spaces) are one
     warning naming the test and both arms; the IF on another test keeps its own."""
     warnings = unreached(check(tmp_path, SAME_TEST))
-    tried = "with the socket messages tried (SocketReceive at line 14)"
+    tried = "with the socket messages tried (SocketReceive at line 13)"
     assert [(w.span.line, w.message, [p.line for p in w.places]) for w in warnings] == [
-        (23, f"never reached {tried}: the code IFs testing 'end_index < start_index' never "
-             "enter (lines 23, 29 of Fields)", [29]),
-        (32, f"never reached {tried}", [])]
+        (22, f"never reached {tried}: the code IFs testing 'end_index < start_index' never "
+             "enter (lines 22, 28 of Fields)", [28]),
+        (31, f"never reached {tried}", [])]
     monkeypatch.setattr(coverage_module, "group_by_cause", ungrouped)
     assert lines(unreached(check(tmp_path, SAME_TEST))) == lines(warnings)
