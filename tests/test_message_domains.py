@@ -244,7 +244,7 @@ OTHER_MESSAGES = ("", " ", "0", "1", "-1", "3", "99", "1.5", "a", "A", "B", "pnp
 
 TEXT_SERVERS = ["socket_test_cases", "socket_parsed_code", "socket_strtoval_array",
                 "socket_field_count", "defect_socket_receive_no_time", "socket_matched_words",
-                "socket_field_values"]
+                "socket_field_values", "socket_command_sequence"]
 
 
 def unreached_under_any_input(report: api.CheckReport) -> set:
