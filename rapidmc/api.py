@@ -308,7 +308,8 @@ def _probed_lines(model: Model, bound: int) -> set:
         for probe in domain.probes:
             if sum(spent) >= PROBE_TOTAL * bound:
                 return lines
-            messages = tuple(replace(d, messages=(probe,)) if d is domain else d
+            offered = probe if isinstance(probe, tuple) else (probe,)   # (a pair: both)
+            messages = tuple(replace(d, messages=offered) if d is domain else d
                              for d in model.messages)
             config, _ = _check_config(model.program, model.atoms, model.options, messages)
             lines |= _probe_search(model.program, model.atoms, config, bound, walks=False,

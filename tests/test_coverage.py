@@ -171,7 +171,9 @@ def _reached_by_a_probe(program, nevers) -> set[int]:
         left = [never for never in nevers if int(never.name.split("_")[1]) not in reached]
         if not left:
             break
-        options = api.CheckOptions(socket_messages=(probe,))
+        # (a pair of commands' messages is offered together)
+        options = api.CheckOptions(socket_messages=probe if isinstance(probe, tuple)
+                                   else (probe,))
         verdicts = api.check(program, left, options).verdicts
         reached |= {int(name.split("_")[1]) for name, verdict in verdicts.items()
                     if name.startswith("never_") and verdict == "VIOLATED"}

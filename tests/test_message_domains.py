@@ -16,8 +16,11 @@ import pytest
 
 from rapidmc import api
 from rapidmc.check.result import SearchStats
+from rapidmc.load import message_domains as message_domains_module
 from rapidmc.load.message_domains import message_domains, well_formed
+from rapidmc.load.run_time_offsets import walked_starts
 from rapidmc.semantics.types import NUM, ArrayType
+from rapidmc.syntax import parse_text
 
 CHECK = Path(__file__).resolve().parent / "check"
 
@@ -241,7 +244,7 @@ OTHER_MESSAGES = ("", " ", "0", "1", "-1", "3", "99", "1.5", "a", "A", "B", "pnp
 
 TEXT_SERVERS = ["socket_test_cases", "socket_parsed_code", "socket_strtoval_array",
                 "socket_field_count", "defect_socket_receive_no_time", "socket_matched_words",
-                "socket_field_values"]
+                "socket_field_values", "socket_command_sequence"]
 
 
 def unreached_under_any_input(report: api.CheckReport) -> set:
@@ -484,7 +487,8 @@ def test_a_mailbox_another_task_fills_is_reached_by_the_shared_data_probe(tmp_pa
                  "        ELSE"):
         number = next(n for n, line in enumerate(MAILBOX.splitlines(), 1) if code in line)
         assert (str(path), number) in report.executed, code
-    assert coverage(report) == ["never reached under any input"]
+    assert coverage(report) == ["never reached under any input: the code after the endless "
+                                "WHILE loop at line 7"]
 
 
 def test_without_the_shared_data_probe_the_mailbox_polls_are_the_clients(tmp_path):
@@ -499,7 +503,8 @@ def test_without_the_shared_data_probe_the_mailbox_polls_are_the_clients(tmp_pat
     program = api.load_program([str(path)])
     program.load_arguments = None
     report = api.check(program)
-    assert coverage(report) == ["never reached under any input"]
+    assert coverage(report) == ["never reached under any input: the code after the endless "
+                                "WHILE loop at line 7"]
     assert any("PERS command: no write of the loaded code ends the poll at mailbox.mod:9"
                in text for text in report.results[0].assumes), report.results[0].assumes
 
@@ -787,7 +792,8 @@ def test_code_after_a_return_is_unreached_under_any_input_beside_sampled_code(tm
     gives names the receive."""
     report = check_server(tmp_path, "            state := Parsed();", extra=AFTER_RETURN)
     tried = "never reached with the socket messages tried (SocketReceive at line 14)"
-    assert coverage(report) == [tried, "never reached under any input", tried]
+    assert coverage(report) == [
+        tried, "never reached under any input: the code after the RETURN at line 23", tried]
 
 
 @pytest.mark.parametrize("condition, wording", [
@@ -821,3 +827,68 @@ def test_code_unreached_with_data_written_from_outside_names_it_when_its_domain_
 ENDMODULE
 """)
     assert coverage(api.check(api.load_program([str(path)])))[0] == wording
+
+
+def test_sub_messages_at_run_time_starts_get_long_messages_and_pairs_as_probes(monkeypatch):
+    """pac48's pattern (tests/check/socket_sub_messages): sub-messages read at an index
+    each one moves on by its length.  Each header's message also comes followed by bytes 0
+    for three sub-messages (the header alone stays: a real message too short); the probes
+    put a second header where the index stands after the first sub-message, and reach the
+    branch that needs both.  Without the probes that branch is reported, with the
+    messages tried."""
+    program = api.load_program([str(CHECK / "socket_sub_messages" / "prog.mod")])
+    [domain] = message_domains(program)
+    joint, force = "01 00 00 00", "02 00 00 00"
+    assert {joint, force, joint + " 00" * 20, force + " 00" * 20} <= set(domain.messages)
+    # joint (4-byte type, 8 bytes from 5) then force: its type at 13 (i = 5 + 8)
+    assert joint + " 00" * 8 + " 02" + " 00" * 11 in domain.probes
+    assert not set(domain.probes) & set(domain.messages)
+    assert "'01' and 23 bytes 00" in domain.note().message
+    assert coverage(api.check(program)) == []
+    monkeypatch.setattr(api, "PROBE_TOTAL", 0)
+    assert coverage(api.check(program)) == [
+        "never reached with the socket messages tried (SocketReceive at line 24)"]
+
+
+@pytest.mark.parametrize("write", ["FOR i FROM 1 TO 3 DO\n        ENDFOR",
+                                   "i := 2 * i;", "i := i - 4;", "Bump i;",
+                                   "UnpackRawBytes buffer, 1, i \\IntX:=DINT;"])
+def test_an_index_written_otherwise_leaves_the_start_unknown(write):
+    """Only a local index moved on by positive numbers gives run-time starts."""
+    text = f"""MODULE M
+    VAR rawbytes buffer;
+    VAR num field;
+    PROC Bump(VAR num n)
+        n := 0;
+    ENDPROC
+    PROC Read()
+        VAR num i := 1;
+        i := i + 4;
+        {write}
+        UnpackRawBytes buffer, i + 2, field \\IntX:=DINT;
+    ENDPROC
+ENDMODULE
+"""
+    routine = next(r for r in parse_text(text, "m.mod")[0].routines if r.name.key == "READ")
+    call = routine.body[-1]
+    assert walked_starts(call.args[1].value, routine, None) is None
+    plain = parse_text(text.replace(write, ""), "m.mod")[0]
+    routine = next(r for r in plain.routines if r.name.key == "READ")
+    assert walked_starts(routine.body[-1].args[1].value, routine, None) == (
+        frozenset({3}), frozenset({7}), frozenset({11}))
+
+
+def test_a_command_writing_what_anothers_condition_reads_is_probed_before_it(monkeypatch):
+    """open_abb's buffer (tests/check/socket_command_sequence): command 30 adds a point,
+    33 loops over the points added.  No one message reaches the loop's body; the pair of
+    the two commands' probes, offered together, does (31 clears what 30's IF reads)."""
+    program = api.load_program([str(CHECK / "socket_command_sequence" / "prog.mod")])
+    [domain] = message_domains(program)
+    pairs = [probe for probe in domain.probes if isinstance(probe, tuple)]
+    assert ("30 1 1 1 1 #", "33 1 #") in pairs and ("31 1 #", "30 1 1 1 1 #") in pairs
+    assert "'30 1 1 1 1 #' with '33 1 #'" not in domain.note().message   # (first 4 shown)
+    assert coverage(api.check(program)) == []
+    monkeypatch.setattr(message_domains_module, "MAX_SEQUENCES", 0)
+    assert coverage(api.check(api.load_program(
+        [str(CHECK / "socket_command_sequence" / "prog.mod")]))) == [
+        "never reached with the socket messages tried (SocketReceive at line 62)"]

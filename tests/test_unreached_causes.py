@@ -218,3 +218,44 @@ def test_routines_worded_apart_from_the_code_that_calls_them_are_one_warning(tmp
         "never reached with the socket messages tried (SocketReceive at line 14): routines "
         "OnTick, OnTock, called only in the code after the endless WHILE loop at line 13")
     assert [(p.line, p.end_line) for p in warnings[39].places] == [(42, 44)]
+
+# MARC-HT25's format check, copied after each StrFind: StrFind from start_index returns
+# start_index or more (StrLen + 1 when not found), so "end_index < start_index" never
+# holds.  The two copies are one cause; the IF on another test stays a warning of its own.
+SAME_TEST = TEST_ARMS.split("      TEST command")[0].replace(
+    "  VAR num state := 0;\n", "  VAR num first := 0;\n  VAR num bad := 0;\n") + """      Fields;
+    ENDWHILE
+  ENDPROC
+  PROC Fields()
+    VAR num start_index := 1;
+    VAR num end_index := 0;
+    end_index := StrFind(command, start_index, ",");
+    IF end_index < start_index THEN
+      bad := 1;
+    ENDIF
+    first := end_index;
+    start_index := end_index + 1;
+    end_index := StrFind(command, start_index, ",");
+    IF end_index  <  start_index THEN
+      bad := 2;
+    ENDIF
+    IF end_index < 0 THEN
+      bad := 3;
+    ENDIF
+    first := end_index;
+  ENDPROC
+ENDMODULE
+"""
+
+
+def test_ifs_of_one_test_never_true_are_one_warning(tmp_path, monkeypatch):
+    """The two IFs testing 'end_index < start_index' (written with other spaces) are one
+    warning naming the test and both arms; the IF on another test keeps its own."""
+    warnings = unreached(check(tmp_path, SAME_TEST))
+    tried = "with the socket messages tried (SocketReceive at line 13)"
+    assert [(w.span.line, w.message, [p.line for p in w.places]) for w in warnings] == [
+        (22, f"never reached {tried}: the code IFs testing 'end_index < start_index' never "
+             "enter (lines 22, 28 of Fields)", [28]),
+        (31, f"never reached {tried}", [])]
+    monkeypatch.setattr(coverage_module, "group_by_cause", ungrouped)
+    assert lines(unreached(check(tmp_path, SAME_TEST))) == lines(warnings)

@@ -27,14 +27,15 @@ tried) are grouped.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Iterable, Optional, Sequence
 
 from .. import ast
 from ..ast import Span, canonical
-from ..diagnostics import NEVER_REACHED, Diagnostic
+from ..diagnostics import NEVER_REACHED, Diagnostic, SourceCache
+from ..diagnostics.quoting import quoted
 from ..semantics.library.program_control import CALLS_BY_NAME
-from .dead_code import jumps_before
+from .dead_code import jumps_before, lines_behind_absent_options
 
 HANDLERS = ("handler",)       # the cause shared by every ERROR handler no error enters
 UNDO = ("undo",)              # ... and by every UNDO handler coverage does not follow
@@ -56,6 +57,9 @@ class Seat:
 class Cause:
     key: tuple
     text: str                 # what keeps the code out ("the code after the RETURN at line 12")
+    test: object = None       # the condition, when the code is an IF's THEN arm
+    alone: bool = False       # named even for one stretch: a fact of the code (a jump,
+                              # a Present branch no call opens), not of the inputs
 
 
 def group_by_cause(program, found: Sequence, wording: Sequence[str]) -> list[Diagnostic]:
@@ -66,9 +70,11 @@ def group_by_cause(program, found: Sequence, wording: Sequence[str]) -> list[Dia
     jumps: dict = {}
     for routine in routines:
         jumps.update(jumps_before(routine.ast))
+    absent = lines_behind_absent_options([r.ast for r in routines])
     causes = [None if item.whole_routine else
-              _cause(item.span, seats, jumps) or Cause(("stretch", index), "")
+              _cause(item.span, seats, jumps, absent) or Cause(("stretch", index), "")
               for index, item in enumerate(found)]
+    _same_tests_share_a_cause(causes)
     _routines_share_callers_cause(routines, found, causes)
     groups: dict = {}
     order: list = []
@@ -81,7 +87,11 @@ def group_by_cause(program, found: Sequence, wording: Sequence[str]) -> list[Dia
     warnings = []
     for key in order:
         members = groups[key]
-        if len(members) == 1:
+        cause = causes[members[0]]
+        if len(members) == 1 and cause is not None and cause.alone:
+            alone = found[members[0]].diagnostic(wording[members[0]])
+            warnings.append(replace(alone, message=f"{alone.message}: {cause.text}"))
+        elif len(members) == 1:
             warnings.append(found[members[0]].diagnostic(wording[members[0]]))
         else:
             warnings.append(_grouped([found[i] for i in members], wording[members[0]],
@@ -118,19 +128,26 @@ def _lines_of(routine: str, stretches: list) -> str:
     return f"line{'s' if multiple else ''} {', '.join(ranges)} of {routine}"
 
 
-def _cause(span: Span, seats: dict, jumps: dict) -> Optional[Cause]:
+def _cause(span: Span, seats: dict, jumps: dict, absent: frozenset = frozenset()
+           ) -> Optional[Cause]:
     """The cause of a stretch that starts at ``span`` (see the module docstring)."""
     key = (span.file, span.line)
     jump = jumps.get(key)
     if jump is not None:
         return Cause(("after", _where(jump)), f"the code after the {_jump_text(jump)} at line "
-                                              f"{jump.span.line}")
+                                              f"{jump.span.line}", alone=True)
     seat = seats.get(key)
     if seat is None:
         return None
+    option = _absent_option(seat.owner, key) if key in absent else None
+    if option is not None:
+        return Cause(("present", _where(seat.owner)), f"the code the IF at line "
+                     f"{seat.owner.span.line} never enters, as no call passes \\{option}",
+                     alone=True)
     if seat.previous is None and seat.owner is not None:
         return Cause(("arm", _where(seat.owner)), f"the code the {_compound_text(seat.owner)} at "
-                                                  f"line {seat.owner.span.line} never enters")
+                                                  f"line {seat.owner.span.line} never enters",
+                     _then_test(seat.owner, key))
     if seat.previous is None and seat.part == "error":
         return Cause(HANDLERS, "ERROR handlers no error enters")
     if seat.previous is None and seat.part == "undo":
@@ -139,6 +156,75 @@ def _cause(span: Span, seats: dict, jumps: dict) -> Optional[Cause]:
         return Cause(("after", _where(seat.previous)),
                      f"the code after line {seat.previous.span.line}, which never goes on")
     return None
+
+
+def _absent_option(owner, key: tuple) -> Optional[str]:
+    """The optional parameter ``p`` as written when the line ``key`` opens the arm of an
+    ``IF Present(p)`` (or ELSEIF) branch of ``owner``, else None."""
+    for branch in getattr(owner, "branches", ()) if isinstance(owner, ast.If) else ():
+        if branch.body and (branch.body[0].span.file, branch.body[0].span.line) == key \
+                and isinstance(branch.condition, ast.FunctionCall) \
+                and branch.condition.name.key == "PRESENT" and branch.condition.args \
+                and isinstance(branch.condition.args[0].value, ast.NameRef):
+            return branch.condition.args[0].value.name.text
+    return None
+
+
+def _then_test(owner, key: tuple):
+    """The condition of ``owner`` when the line ``key`` opens its THEN arm (an IF's first
+    statement after THEN, or a compact IF's statement), else None."""
+    if isinstance(owner, ast.CompactIf):
+        return owner.condition
+    if isinstance(owner, ast.If) and owner.branches[0].body \
+            and (owner.branches[0].body[0].span.file,
+                 owner.branches[0].body[0].span.line) == key:
+        return owner.branches[0].condition
+    return None
+
+
+def _same_tests_share_a_cause(causes: list) -> None:
+    """IFs of the same condition (``IF end_index < start_index THEN``, copied after each
+    StrFind) whose THEN arm is all that is unreached of them share one cause: that the
+    test never holds at any of them (in place, on ``causes``).  Only tests written alike
+    at two places or more; an IF with other arms unreached keeps its own cause."""
+    arms: dict = {}
+    for cause in causes:
+        if cause is not None:
+            arms[cause.key] = arms.get(cause.key, 0) + 1
+    shapes: dict = {}
+    for index, cause in enumerate(causes):
+        if cause is not None and cause.test is not None and arms[cause.key] == 1:
+            shapes.setdefault(_shape(cause.test), []).append(index)
+    for shape, members in shapes.items():
+        if len(members) < 2:
+            continue
+        text = _source(causes[members[0]].test)
+        shared = Cause(("test", shape), f"the code IFs testing {text} never enter"
+                       if text else "the code IFs of the same test never enter")
+        for index in members:
+            causes[index] = shared
+
+
+def _shape(node):
+    """``node`` without its places: two conditions written alike have the same shape."""
+    if isinstance(node, ast.Name):
+        return node.key
+    if isinstance(node, tuple):
+        return tuple(_shape(inner) for inner in node)
+    if hasattr(node, "__dataclass_fields__"):
+        return (type(node).__name__,) + tuple(
+            _shape(getattr(node, name)) for name in node.__dataclass_fields__
+            if name != "span")
+    return node
+
+
+def _source(expr) -> str:
+    """The condition as written, quoted (one line), or "" when its text is not at hand."""
+    span = expr.span
+    line = SourceCache.line(span.file, span.line)
+    if line is None or span.end_line != span.line or span.end_column <= span.column:
+        return ""
+    return quoted(" ".join(line[span.column - 1:span.end_column - 1].split()))
 
 
 def _where(node) -> tuple:

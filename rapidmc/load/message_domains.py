@@ -49,6 +49,7 @@ from ..semantics.types import BOOL, RECORD, STRING, ArrayType, default_value
 from ..semantics.values import format_num
 from .call_graph import called_routines
 from .input_domains import analog_points, group_points, number_value
+from .run_time_offsets import SEQUENCE, walked_starts
 
 MAX_MESSAGES = 24             # per receiving site: the search branches over every one
 MAX_COMBINATIONS = 4096       # of all sites' values, before sites that only parse are narrowed
@@ -70,7 +71,9 @@ MAX_FIELDS = 16               # the fields of a split message a use may name (pa
 MAX_PROBES = 128              # per receiving site: each is one small search for coverage
 MAX_VARIANTS = 16             # per command, the fields' values a probe tries together
 MAX_CUT = 32                  # probes for the values the domain's cap leaves out
+MAX_SEQUENCES = 16            # probes of two commands, the first writing what the second reads
 PROBE_STATES = 20000          # states a probe's search may visit (its lines count even so)
+ZEROS_SHOWN = 8               # bytes 0 a note shows one by one at a message's end
 
 
 def site_key(span: ast.Span) -> tuple:
@@ -90,18 +93,36 @@ class MessageDomain:
     reason: str                   # what the data read is compared with or parsed as
     narrower: tuple = ()          # fewer messages, when the sites' domains multiply too far
     probes: tuple = ()            # messages tried one at a time, for coverage only
+    raw: bool = False             # messages of bytes, written as hex pairs
 
     def note(self) -> Diagnostic:
-        shown = ", ".join(quoted(value) if isinstance(value, str) else format_num(value)
+        shown = ", ".join(self._shown(value) if isinstance(value, str) else format_num(value)
                           for value in self.messages)
         probed = ""
         if self.probes:
             probed = (f"; for coverage also each of {len(self.probes)} messages alone: "
-                      + ", ".join(map(quoted, self.probes[:4]))
+                      + ", ".join(map(self._shown, self.probes[:4]))
                       + (", ..." if len(self.probes) > 4 else ""))
         return Diagnostic(DOMAIN_ASSUMED, f"{self.instruction} at line {self.site.line}: "
                           f"{self.kind} {shown} ({self.reason}){probed}", self.site,
                           severity="note")
+
+    def _shown(self, text) -> str:
+        """``text`` quoted; a message of bytes ending in more than ``ZEROS_SHOWN`` bytes 0
+        as its other bytes and their count (``'01 00 00 00' and 92 bytes 00``); a pair of
+        messages offered together as both (``'30 1 1 1 1 1 1 1 #' with '33 #'``)."""
+        if isinstance(text, tuple):
+            return " with ".join(map(self._shown, text))
+        if not self.raw:
+            return quoted(text)
+        pairs = text.split(" ")
+        kept = len(pairs)
+        while kept and pairs[kept - 1] == "00":
+            kept -= 1
+        zeros = len(pairs) - kept
+        if zeros <= ZEROS_SHOWN:
+            return quoted(text)
+        return (quoted(" ".join(pairs[:kept])) + " and " if kept else "") + f"{zeros} bytes 00"
 
 
 SOCKET, FILE, ANSWERS = "messages", "lines", "answers"
@@ -206,13 +227,18 @@ def _site_domain(program, routines, node, routine=None,
             if raw is not None \
             else uses.text_messages()
         prefix = _length_prefix(routine, raw, wanted) if raw is not None else None
+        probes = uses.raw_probes(min(int(wanted or 0), rawbytes.MAX_BYTES)) \
+            if raw is not None else ()
         if prefix is not None:
             messages, reason = _framed(uses.raw_messages()[0], *prefix), \
                 reason + f"; each after its length ({int(wanted)} bytes), and a length of 0"
+            probes = _framed(uses.raw_probes(), *prefix)[:-1] if probes else ()
+        probes = tuple(probe for probe in probes if probe not in messages)
         return MessageDomain(node.span, RECEIVES[node.name.key], SOCKET, messages,
                              uses.exact and raw is None, reason,
                              uses.well_formed_only() if raw is None else (),
-                             uses.probe_messages() if raw is None else ())
+                             uses.probe_messages() if raw is None else probes,
+                             raw=raw is not None)
     if isinstance(node, ast.ProcedureCall) and node.name.key in NUMBER_ANSWERS:
         positional = [a.value for a in node.args if a.kind == ast.REQUIRED and a.name is None]
         uses = _followed(program, routines, positional[0] if positional else None, shared)
@@ -393,6 +419,9 @@ class Uses:
         self.numbers: set = set()                # numbers the whole value is compared with
         self.extent = 0                          # bytes the unpacked fields span
         self.bounds: set = set()                 # bytes a RawBytesLen comparison asks for
+        # (target path, starts per level of the walk, encoding, network): fields unpacked
+        # at a start computed at run time (``load.run_time_offsets``)
+        self.sub_fields: set = set()
         self.parsed_numbers: list = []           # (view of the text, number) parsed, compared
         self.lengths: set = set()                # numbers the message's length is compared with
         self.counted: list = []                  # (dispatch, number): a count of fields compared
@@ -447,7 +476,7 @@ class Uses:
         elif isinstance(node, ast.FunctionCall) and node.name.key == "STRTOVAL":
             self._parsed_into(node)
         elif isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
-            self._arguments(node)
+            self._arguments(node, routine)
 
     def _copy_paths(self, source: Optional[tuple], target: Optional[tuple]) -> None:
         """The parts of ``source`` (``raw_message.header``) become those of ``target``."""
@@ -475,12 +504,12 @@ class Uses:
         views = self.views.setdefault(base, set())
         views.update(self.view_of(value) if isinstance(target, ast.NameRef) else {None})
 
-    def _arguments(self, call) -> None:
+    def _arguments(self, call, routine=None) -> None:
         """A user routine's parameter takes on what its argument carries; so does the
         target of ``UnpackRawBytes`` (a field) or ``StrToVal`` (parsed data)."""
         key = call.name.key
         if key == "UNPACKRAWBYTES":
-            self._unpacked(call)
+            self._unpacked(call, routine)
             return
         if key == "COPYRAWBYTES":
             self._copied(call)
@@ -524,7 +553,7 @@ class Uses:
             self.views.setdefault(target, set()).update(
                 ("parsed", view) for view in self.view_of(values[0]))
 
-    def _unpacked(self, call) -> None:
+    def _unpacked(self, call, routine=None) -> None:
         positional = [a.value for a in call.args if a.kind == ast.REQUIRED and a.name is None]
         if len(positional) < 3 or not self.carries(positional[0]):
             return
@@ -536,6 +565,13 @@ class Uses:
         if start is not None and offset is not None:
             start += offset                # a field of bytes copied from further in
         network = any(a.name is not None and a.name.key == "NETWORK" for a in call.args)
+        levels = walked_starts(positional[1], routine.ast, routine.scope) \
+            if start is None and routine is not None and offset is not None \
+            and encoding is not None else None
+        if levels is not None:             # a sub-message's field, at i + k
+            self.sub_fields.add((_path(positional[2]) or (target,),
+                             tuple(frozenset(v + offset for v in level) for level in levels),
+                             encoding, network))
         if start is not None and encoding is not None:
             self.extent = max(self.extent, int(start) - 1 + _size(encoding))
         view = ("field", int(start), encoding, network) \
@@ -631,6 +667,34 @@ class Uses:
         elif isinstance(node, ast.FunctionCall) and node.name.key == "STRTOVAL":
             self._parse(node, scope, parents)
             self._listed(node, routine)
+
+    def _kept_between(self) -> tuple:
+        """Per command's branch (a dispatch): the data it writes (an assignment's), and
+        the data its conditions read (an IF, compact IF, WHILE or TEST, a FOR's bounds),
+        the message's own data left out.  Walked only for a site with commands' probes."""
+        written: dict = {}
+        guards: dict = {}
+        for routine in self.routines:
+            if self.called is not None and routine.name not in self.called:
+                continue
+            for node, parents in self.walked.nodes(routine):
+                if isinstance(node, ast.Assignment):
+                    name, found = _base_name(node.target), written
+                    names = {name} if name is not None else set()
+                elif isinstance(node, (ast.IfBranch, ast.CompactIf, ast.While)):
+                    names, found = set(self.walked.names(node.condition)[0]), guards
+                elif isinstance(node, ast.For):
+                    names, found = set(self.walked.names(node.start)[0]) \
+                        | set(self.walked.names(node.stop)[0]), guards
+                elif isinstance(node, ast.Test):
+                    names, found = set(self.walked.names(node.subject)[0]), guards
+                else:
+                    continue
+                names -= set(self.views)
+                dispatch = self._dispatch(parents + (node,), routine.scope) if names else None
+                if dispatch is not None:
+                    found.setdefault(dispatch, set()).update(names)
+        return written, guards
 
     def _comparison(self, node, scope, parents=()) -> None:
         if node.op in NUMBER_COMPARISONS:
@@ -902,12 +966,17 @@ class Uses:
         messages the domain's cap (``MAX_MESSAGES``) leaves out.  They are probes: tried
         one at a time, for coverage only, since the settings such branches store multiply
         the states of a search offered them all together."""
-        counts, forms = self._counts(), []
+        counts, forms, firsts = self._counts(), [], {}
         for view, text in self._parsed_texts():
             if view is None and counts:
                 numbers = counts.get((view, text), set())
                 other = next(n for n in range(len(numbers) + 1) if n not in numbers)
-                forms += self._counted(text, sorted(numbers) + [other], (view, text))
+                counted = self._counted(text, sorted(numbers) + [other], (view, text))
+                forms += counted
+                if numbers:              # its first count, then after one field more
+                    firsts[(view, text)] = [next((form for tier, form in counted
+                                                  if tier == wanted), None)
+                                            for wanted in (0, 2)]
         forms += self._counted("1", sorted(counts.get(None, ())), None)
         # and, first, the likeliest two messages of each value the domain's cap
         # (``MAX_MESSAGES``) leaves without one (the malformed code after twenty commands'
@@ -923,9 +992,29 @@ class Uses:
         # fields, zeros), as many as the cap leaves room for, in the commands' order
         tiers = {text: tier for tier, text in sorted(forms, reverse=True)
                  if text not in offered}
-        kept = sorted(tiers.items(),
-                      key=lambda item: (item[1], _natural(item[0])))[:MAX_PROBES - len(cut)]
-        return tuple(cut) + tuple(sorted((text for text, _ in kept), key=_natural))
+        sequences = self._sequences(firsts)
+        kept = sorted(tiers.items(), key=lambda item: (item[1], _natural(item[0])))[
+            :MAX_PROBES - len(cut) - len(sequences)]
+        return tuple(cut) + tuple(sorted((text for text, _ in kept), key=_natural)) \
+            + sequences
+
+    def _sequences(self, firsts: dict) -> tuple:
+        """Pairs of messages offered together at every receive (a probe's search then
+        tries them in either order): each command whose branch writes data (``BUFFER_POS
+        := BUFFER_POS + 1`` under ``CASE 30``) with each other command whose branch's
+        conditions read it (``FOR i FROM 1 TO BUFFER_POS`` under ``CASE 33``), each as its
+        probe (its code and first count of fields), both with one field more too; at most
+        ``MAX_SEQUENCES``."""
+        if not firsts:
+            return ()
+        pairs = []
+        writes, guards = self._kept_between()
+        for first, written in sorted(writes.items(), key=repr):
+            for second, read in sorted(guards.items(), key=repr):
+                if first != second and written & read:
+                    pairs += [pair for pair in zip(firsts.get(first, ()),
+                                                   firsts.get(second, ())) if all(pair)]
+        return tuple(dict.fromkeys(pairs))[:MAX_SEQUENCES]
 
     def _counts(self) -> dict:
         """The counts of fields compared, by the dispatch whose branch compares them
@@ -1043,14 +1132,7 @@ class Uses:
         length = max([start - 1 + _size(encoding) for (start, encoding, _), _ in fields]
                      + [start - 1 + size for start, size, _ in texts]
                      + [self.extent, wanted, 1])
-        base = bytes(length)
-        for (start, encoding, network), numbers in fields:
-            # every field at the first number it is compared with (a header's expected
-            # type): the others' branches are then reached past that check
-            try:
-                base = rawbytes.pack(base, start, min(numbers), encoding, network)
-            except RapidError:
-                pass                       # (a number the field cannot hold: left 0)
+        base = self._base(length)
         if not fields and not texts:
             return (rawbytes.to_text(base),), "no field of the received bytes is compared " \
                 "with a number: one message of zeros"
@@ -1065,6 +1147,13 @@ class Uses:
         # for (a frame of the right type with too little data: 'RawBytesLen(data) < 52')
         messages += [rawbytes.to_text(base[:bound - 1]) for bound in sorted(self.bounds)
                      if 1 < bound <= len(base)]
+        # and each message of a field's class long enough for the sub-messages read at
+        # starts computed at run time (a message only as long as its first header makes
+        # the next field's UnpackRawBytes fail, and the sub-messages' branches go unrun)
+        walked = self._walked_extent()
+        padding = bytes(max(0, walked - length))
+        messages += [rawbytes.to_text(rawbytes.from_text(text) + padding)
+                     for text in list(messages) if padding]
         messages = list(dict.fromkeys(messages))[:MAX_MESSAGES - 1]
         unexpected = rawbytes.to_text(bytes([0xFF] * length))
         if unexpected not in messages:
@@ -1075,7 +1164,57 @@ class Uses:
         for start in dict.fromkeys(start for start, _, _ in texts):
             shown.append(f"characters from {start} compared with " + ", ".join(
                 quoted(text) for at, _, text in texts if at == start))
+        if padding:
+            shown.append(f"each also {walked} bytes long, for the fields read at starts "
+                         f"computed at run time over {SEQUENCE + 1} sub-messages")
         return tuple(messages), f"UnpackRawBytes fields: {', '.join(shown)}"
+
+    def _base(self, length: int) -> bytes:
+        """``length`` bytes 0 with every field compared at the first number it is compared
+        with (a header's expected type): the others' branches are then reached past that
+        check."""
+        base = bytes(length)
+        for (start, encoding, network), numbers in sorted(self.fields.items(),
+                                                          key=lambda item: item[0][0]):
+            try:
+                base = rawbytes.pack(base, start, min(numbers), encoding, network)
+            except RapidError:
+                pass                       # (a number the field cannot hold: left 0)
+        return base
+
+    def _walked_extent(self) -> int:
+        """The bytes the fields read at starts computed at run time span, over every level
+        of the walk (0: none such)."""
+        return min(rawbytes.MAX_BYTES, max(
+            [max(level) - 1 + _size(encoding)
+             for _, levels, encoding, _ in self.sub_fields for level in levels if level],
+            default=0))
+
+    def raw_probes(self, wanted: int = 0) -> tuple:
+        """Two sub-messages in a row: per header read again at a start computed at run time
+        (the loop's ``UnpackRawBytes raw_message.data, i, raw_message.header.msg_type``),
+        whose first copy is a field at a literal start compared with numbers, each pair of
+        those numbers, the first at the literal start and the second at each start the walk
+        reaches after one sub-message; the rest as ``raw_messages``' long messages.  Probes:
+        tried one at a time, for coverage only (at most ``MAX_PROBES``)."""
+        length = max(self._walked_extent(), wanted, 1)
+        base, probes = self._base(length), []
+        for path, levels, encoding, network in sorted(self.sub_fields, key=repr):
+            heads = self.paths.get(path, ()) if len(path) > 1 else self.views.get(path[0], ())
+            for view in sorted((v for v in heads if v is not None and v[0] == "field"
+                                and v[2:] == (encoding, network)), key=repr):
+                numbers = sorted(self.fields.get(view[1:], ()))
+                # the base's own header (the least number) last: the others open a branch
+                for first in numbers[1:] + numbers[:1]:
+                    for second in numbers:
+                        for start in sorted(levels[1] if len(levels) > 1 else ()):
+                            try:
+                                data = rawbytes.pack(base, view[1], first, encoding, network)
+                                data = rawbytes.pack(data, start, second, encoding, network)
+                            except RapidError:
+                                continue
+                            probes.append(rawbytes.to_text(data))
+        return tuple(dict.fromkeys(probes))[:MAX_PROBES]
 
     def _text_fields(self) -> list:
         """(start, size, text) per string compared with characters unpacked with
