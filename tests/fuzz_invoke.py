@@ -16,7 +16,6 @@ from pathlib import Path
 import pytest
 
 from cli_capture import run_cli
-from rapidmc.report.line_width import CONTINUED, LONGEST_LINE
 
 class ScratchFolder:
     """A temporary folder for the files a test module writes (``folder / name``).  The module
@@ -64,31 +63,16 @@ class Outcome:
             found.append(f"exit code {self.exit_code}")
         found.extend(f"traceback/internal error in stderr: {mark!r}"
                      for mark in TRACEBACK_MARKS if mark in self.stderr)
-        lines = unwrapped(self.stderr)
-        found.extend(f"malformed diagnostic line: {line!r}" for line in lines
+        found.extend(f"malformed diagnostic line: {line!r}" for line in self.stderr.split("\n")
                      if LOOKS_LIKE_DIAGNOSTIC.match(line) and not DIAGNOSTIC_HEAD.match(line))
-        if self.exit_code == 2 and not any(DIAGNOSTIC_HEAD.match(line) for line in lines):
+        if self.exit_code == 2 and not any(DIAGNOSTIC_HEAD.match(line)
+                                           for line in self.stderr.split("\n")):
             found.append("exit code 2 without a diagnostic")
         return found
 
     def describe(self) -> str:
         return (f"rapidmc {' '.join(self.argv)} -> exit {self.exit_code}\n"
                 f"problems: {self.problems()}\n--- stderr ---\n{self.stderr[-3000:]}")
-
-
-def unwrapped(text: str) -> list[str]:
-    """The lines of ``text`` with a diagnostic's head joined again where the text report
-    broke it at ``report.line_width.LONGEST_LINE`` (each further piece indented by
-    ``CONTINUED``): the head must still hold the whole ``file:line:col: warning: message
-    [RMCnnn]``."""
-    lines: list[str] = []
-    for line in text.split("\n"):
-        if lines and line.startswith(CONTINUED) and LOOKS_LIKE_DIAGNOSTIC.match(lines[-1]) \
-                and not DIAGNOSTIC_HEAD.match(lines[-1]) and len(lines[-1]) >= LONGEST_LINE // 2:
-            lines[-1] += line[len(CONTINUED):]
-        else:
-            lines.append(line)
-    return lines
 
 
 def invoke(argv: list[str], stdin_text: str = "") -> Outcome:
