@@ -19,8 +19,11 @@ two runs that differ only in where the robot is and in such data take the
 same statements with the same choices, fail at the same steps and give every
 atom the same values, so moves may leave the robot where it is
 (``semantics.robots.robot_tracked``) without changing any verdict.
-Arithmetic on those values cannot fail (num overflows to infinity, it does
-not raise), so no run-time error is lost with them.
+Arithmetic on those values cannot fail: the flow admits a ``+ - *`` only
+where its result stays within num's range for any num a reading can give
+(``input_flow._inert_result``: a sum with a term under 2**102 rounds to the
+largest num; a product's factors are bounded), so no ERR_NUM_LIMIT (which
+``values.to_num`` raises) is lost with them.
 
 The counterexamples of such a check show the robot at its start position and
 positions read back as that; ``findings.assumptions`` says so under
