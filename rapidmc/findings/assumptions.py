@@ -317,6 +317,24 @@ def _only_tasks(chosen) -> str:
             f"(no PC or HMI writes it)")
 
 
+def _also_writers(chosen) -> str:
+    """Who writes data the loaded code writes too: the tasks left out, with the values their
+    code assigns when that narrowed the domain, else ``also_written_by`` (``a PC or ...``)."""
+    if chosen.written_by_tasks is None:
+        return chosen.also_written_by
+    return (f"{chosen.written_by_tasks}, with the values their code assigns (no PC or HMI "
+            f"writes it)")
+
+
+def _declared_elsewhere(data) -> str:
+    """Where the value of data declared here without one comes from: the declaration of
+    another task of the backup (one persistent object on the controller)."""
+    if data.initial_from is None:
+        return ""
+    return (f"; declared here without a value, it starts with the value "
+            f"{data.initial_from} declares, as on the controller")
+
+
 def _waited(chosen) -> str:
     """That the components of data only the outside writes that a wait reads change only
     while a task waits for them (``OutsideData.waited_paths``, ``load.waited_data``)."""
@@ -331,8 +349,7 @@ def _value_origin(data, chosen) -> str:
     """Where the value of data written outside comes from when no loaded declaration
     gives one: another task's declaration, or a valid value in place of zeros."""
     if data.initial_from is not None:
-        return f"; declared here without a value, it starts with the value " \
-               f"{data.initial_from} declares, as on the controller"
+        return _declared_elsewhere(data)
     if chosen.unset:
         return f" and declared without a value: {UNSET_VALUE_TEXT}"
     return ""
@@ -352,8 +369,7 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
         written |= task_written
     for data in program.globals:
         chosen = outside.get(data.slot)
-        if data.initial_from is not None and (chosen is None or chosen.also_written_by) \
-                and data.slot in read:
+        if data.initial_from is not None and chosen is None and data.slot in read:
             yield Assumption(OTHER_WRITER, data.name,
                              f"PERS {data.name}, declared here without a value, starts with the "
                              f"value {data.initial_from} declares, as on the controller "
@@ -362,7 +378,8 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
             yield Assumption(OTHER_WRITER, data.name,
                              f"PERS {data.name}: no write of the loaded code ends the "
                              f"{chosen.awaited_at}, so {chosen.also_written_by} writes it "
-                             f"too (not the values the loaded code writes); in waits and loop "
+                             f"too (not the values the loaded code writes)"
+                             f"{_declared_elsewhere(data)}; in waits and loop "
                              f"conditions it reads the stored value or "
                              f"{chosen.describe()}{_whole_fixed(program, data)} "
                              f"({_where(data.span)})")
@@ -370,8 +387,8 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
         if chosen is not None and chosen.also_written_by is not None:
             yield Assumption(OTHER_WRITER, data.name,
                              f"PERS {data.name} is written by the loaded code and by "
-                             f"{chosen.also_written_by}{_only_tasks(chosen)}; its reads in WaitUntil and loop conditions "
-                             f"(and the functions they call) "
+                             f"{_also_writers(chosen)}{_declared_elsewhere(data)}; its reads "
+                             f"in WaitUntil and loop conditions (and the functions they call) "
                              f"take the stored value or {chosen.describe()}, other reads the "
                              f"stored value{_whole_fixed(program, data)} ({_where(data.span)})")
             continue
