@@ -13,6 +13,7 @@ from rapidmc.model.value_text import value_text
 from rapidmc.diagnostics import source_window
 from rapidmc.report.counterexample import Folded, SlicedAway, change_text, fold_repeats, sliced_line
 from rapidmc.report.line_width import wrapped
+from rapidmc.report.headline import indexed_data
 from rapidmc.report.trace_slice import read_part
 from rapidmc.report.trace_text import file_names, shorten, shown_location, shown_value
 from rapidmc.semantics.types import NON_VALUE_TYPES, NUM, POS, ROBTARGET, ArrayType
@@ -126,6 +127,18 @@ def test_read_part_of_an_assignment_is_its_value_and_target_indexes():
 
 def _step(index: int, line: int, *changes: Change) -> TraceStep:
     return TraceStep(index, TRANSITION, TransitionInfo("p.mod", line, f"line {line}"), changes)
+
+
+@pytest.mark.parametrize("source, indexed", [
+    ("nTemp := Welds1{i}.cpm / 6", {"WELDS1"}),
+    ("x := a{b{i}} + c{2}", {"A", "C"}),     # b's element is an index: its value tells
+    ("x := s{i, j}.v", {"S"}),
+    ("x := y + 1", set()),
+])
+def test_an_index_error_leaves_out_the_values_of_the_arrays_the_line_indexes(source, indexed):
+    """The headline of ERR_OUTOFBND shows the index, not the elements of the array it
+    indexes (the error gives its bounds)."""
+    assert indexed_data(read_part(source)) == indexed
 
 
 def test_a_stretch_run_three_times_folds_into_one_line():

@@ -49,10 +49,32 @@ def headline_lines(trace: Trace, options: TextOptions = TextOptions()) -> list[s
         if is_stub_module(first.transition.file) and first.stack:
             lines.append(f"    (in {first.stack[-1].routine}, a routine of the stubs module: "
                          "its body is a stand-in for the real one)")
+    bounds_only = indexed_data(read_part(raising[-1].transition.source)) \
+        if "ERR_OUTOFBND" in trace.ending and not options.full else frozenset()
     for name, value, origin in read_data(steps, options.stub_data):
+        if name.upper() in bounds_only:
+            continue
         shown = value if options.full else shown_value(value, WIDTH, STRING_WIDTH)
         lines.append(f"    {name} = {shown}  ({origin})")
     return lines
+
+
+INDEXING = re.compile(r"([A-Za-z][A-Za-z0-9_]*)\s*\{|\{|\}")
+
+
+def indexed_data(source: str) -> frozenset:
+    """The data a line indexes outside any other index, upper case (``WELDS1`` of
+    ``nTemp := Welds1{i}.cpm / 6``; of ``a{b{i}}`` only ``A``): of an index out of bounds the
+    error gives their bounds, and their elements' values tell nothing more."""
+    found, depth = set(), 0
+    for match in INDEXING.finditer(source):
+        if match.group(0) == "}":
+            depth = max(depth - 1, 0)
+            continue
+        if match.group(1) and depth == 0:
+            found.add(match.group(1).upper())
+        depth += 1
+    return frozenset(found)
 
 
 def read_data(steps: Sequence[TraceStep], stub_data: frozenset = frozenset()) -> list[tuple]:
