@@ -7,15 +7,16 @@ from __future__ import annotations
 
 import pytest
 
-from rapidmc.check.trace import INITIAL, TRANSITION, Change, Composite, TraceStep, \
+from rapidmc.check.trace import INITIAL, TRANSITION, Change, Composite, Trace, TraceStep, \
     TransitionInfo, changes_between
 from rapidmc.model.value_text import value_text
 from rapidmc.diagnostics import source_window
-from rapidmc.report.counterexample import Folded, SlicedAway, change_text, fold_repeats, sliced_line
+from rapidmc.report.counterexample import Folded, SlicedAway, change_text, fold_repeats, sliced_line, \
+    step_lines
 from rapidmc.report.line_width import wrapped
-from rapidmc.report.headline import indexed_data
+from rapidmc.report.headline import headline_lines, indexed_data
 from rapidmc.report.trace_slice import read_part
-from rapidmc.report.trace_text import file_names, shorten, shown_location, shown_value
+from rapidmc.report.trace_text import SOURCE_WIDTH, file_names, shorten, shown_location, shown_value
 from rapidmc.semantics.types import NON_VALUE_TYPES, NUM, POS, ROBTARGET, ArrayType
 
 pytestmark = pytest.mark.engine_independent      # no search: see tests/conftest.py
@@ -139,6 +140,34 @@ def test_an_index_error_leaves_out_the_values_of_the_arrays_the_line_indexes(sou
     """The headline of ERR_OUTOFBND shows the index, not the elements of the array it
     indexes (the error gives its bounds)."""
     assert indexed_data(read_part(source)) == indexed
+
+
+def test_a_calls_new_data_are_told_on_one_line_after_its_routine():
+    step = TraceStep(3, TRANSITION, TransitionInfo("p.mod", 7, "Pick 2;"),
+                     (Change("Pick.side", None, "2"), Change("Pick.no", None, "0"),
+                      Change("count", "1", "2"), Change("Place.at", None, "4")))
+    assert step_lines(step)[1:] == ["        Pick: side = 2, no = 0",
+                                    "        count = 2  (was 1)",
+                                    "        Place.at = 4"]
+
+
+def test_a_calls_many_new_data_take_lines_of_at_most_the_source_width():
+    changes = tuple(Change(f"Load.value{n}", None, "1" * 40) for n in range(6))
+    lines = step_lines(TraceStep(2, TRANSITION, TransitionInfo("p.mod", 3, "Load;"), changes))[1:]
+    assert len(lines) > 1 and all(len(line) <= 8 + SOURCE_WIDTH for line in lines)
+    assert all(line.strip().startswith("Load: value") for line in lines)
+    assert sum(line.count(" = ") for line in lines) == 6
+
+
+def test_the_headline_tells_one_routines_data_of_one_origin_together():
+    steps = [TraceStep(1, INITIAL, None, (Change("d", None, "0"),)),
+             TraceStep(2, TRANSITION, TransitionInfo("p.mod", 5, "Get;"),
+                       (Change("Get.n", None, "0"), Change("Get.m", None, "3"))),
+             TraceStep(3, TRANSITION, TransitionInfo("p.mod", 9, "d := m / n + d;"),
+                       (Change("ERRNO", None, "ERR_DIVZERO"),))]
+    trace = Trace(tuple(steps), (), None, ending="uncaught ERR_DIVZERO")
+    assert headline_lines(trace)[2:] == ["    Get: m = 3, n = 0  (set at step 2)",
+                                         "    d = 0  (initial value)"]
 
 
 def test_a_stretch_run_three_times_folds_into_one_line():

@@ -432,11 +432,44 @@ def step_lines(step: TraceStep, options: TextOptions = TextOptions(),
             kept = tuple(change for change in changes
                          if change.old is not None or _new_data_read(change.name, read))
             unread, changes = len(changes) - len(kept), kept
-    lines.extend(f"        {change_text(change, options.full)}" for change in changes)
+    if options.full or step.kind == INITIAL:
+        lines.extend(f"        {change_text(change, options.full)}" for change in changes)
+    else:
+        lines.extend(f"        {text}" for text in _new_data_together(changes))
     if unread:
         lines.append(f"        ({unread} more new {'value' if unread == 1 else 'values'} the "
                      "trace does not read)")
     return lines
+
+
+def _new_data_together(changes: Sequence[Change]) -> list[str]:
+    """The changes' texts, a call's new routine data told together after its routine's name
+    (``Pick: slot = 0, count = 3``, lines of at most ``SOURCE_WIDTH`` characters), where
+    the routine holds two or more; every other change on a line of its own."""
+    routines: dict = {}
+    for change in changes:
+        head, dot, _ = change.name.rpartition(".")
+        if change.old is None and dot and "{" not in change.name:
+            routines.setdefault(head, []).append(change)
+    texts, told = [], set()
+    for change in changes:
+        head = change.name.rpartition(".")[0]
+        together = routines.get(head, ())
+        if len(together) < 2 or change not in together:
+            texts.append(change_text(change))
+            continue
+        if head in told:
+            continue
+        told.add(head)
+        line = f"{head}:"
+        for member in together:
+            part = change_text(member)[len(head) + 1:]
+            if len(line) + len(part) + 2 > SOURCE_WIDTH and line != f"{head}:":
+                texts.append(line.rstrip(","))
+                line = f"{head}:"
+            line += f" {part},"
+        texts.append(line.rstrip(","))
+    return texts
 
 
 def _input_name(name: str, transition, options: TextOptions) -> str:

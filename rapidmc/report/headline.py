@@ -51,12 +51,37 @@ def headline_lines(trace: Trace, options: TextOptions = TextOptions()) -> list[s
                          "its body is a stand-in for the real one)")
     bounds_only = indexed_data(read_part(raising[-1].transition.source)) \
         if "ERR_OUTOFBND" in trace.ending and not options.full else frozenset()
-    for name, value, origin in read_data(steps, options.stub_data):
-        if name.upper() in bounds_only:
-            continue
-        shown = value if options.full else shown_value(value, WIDTH, STRING_WIDTH)
-        lines.append(f"    {name} = {shown}  ({origin})")
+    shown = [(name, value if options.full else shown_value(value, WIDTH, STRING_WIDTH), origin)
+             for name, value, origin in read_data(steps, options.stub_data)
+             if name.upper() not in bounds_only]
+    lines.extend(f"    {text}" for text in (_same_origin_together(shown) if not options.full
+                                            else (f"{n} = {v}  ({o})" for n, v, o in shown)))
     return lines
+
+
+def _same_origin_together(shown: Sequence[tuple]) -> list[str]:
+    """``name = value  (origin)`` each, the data of one routine that follow each other with
+    one origin told together (``Pick: slot = 0, count = 3  (set at step 4)``) on lines of at
+    most about ``SOURCE_WIDTH`` characters."""
+    texts, at = [], 0
+    while at < len(shown):
+        name, value, origin = shown[at]
+        head, dot, own = name.rpartition(".")
+        run, width = 1, len(head) + len(own) + len(str(value)) + len(origin) + 9
+        while dot and "{" not in name and at + run < len(shown):
+            other, other_value, other_origin = shown[at + run]
+            width += len(other.rpartition(".")[2]) + len(str(other_value)) + 5
+            if other_origin != origin or other.rpartition(".")[0] != head or "{" in other \
+                    or width > SOURCE_WIDTH:
+                break
+            run += 1
+        if run == 1:
+            texts.append(f"{name} = {value}  ({origin})")
+        else:
+            parts = ", ".join(f"{n.rpartition('.')[2]} = {v}" for n, v, _ in shown[at:at + run])
+            texts.append(f"{head}: {parts}  ({origin})")
+        at += run
+    return texts
 
 
 INDEXING = re.compile(r"([A-Za-z][A-Za-z0-9_]*)\s*\{|\{|\}")
