@@ -5,6 +5,8 @@ tests pin each rule on its own, with the cases the rule distinguishes.
 """
 from __future__ import annotations
 
+import re
+
 import pytest
 
 from rapidmc.check.trace import INITIAL, TRANSITION, Change, Composite, Trace, TraceStep, \
@@ -118,6 +120,17 @@ def test_a_long_source_line_is_shown_around_its_caret():
     shown, column = source_window(source, source.index('"part 50"'))
     assert len(shown) <= 206 and shown.startswith("...")
     assert shown[column:].startswith('"part 50"')
+
+
+@pytest.mark.parametrize("source, read", [
+    ('IF n{1} <> 0 AND s = "Weld" rec.cpm := w{n{1}}.cpm;', ["IF", "n", "1", "0", "AND", "s", "Weld",
+                                                          "w", "n", "1", "cpm"]),
+    ("IF ok c{i}.x := 1;", ["IF", "ok", "i", "1"]),
+    ("IF ok Foo \\Arg:=x;", ["IF", "ok", "Foo", "Arg", "x"]),     # a named argument: all
+    ("IF n > 0 THEN", ["IF", "n", "0", "THEN"]),
+])
+def test_read_part_of_a_one_line_if_leaves_out_the_data_it_assigns(source, read):
+    assert re.findall(r"[A-Za-z0-9]+", read_part(source)) == read
 
 
 def test_read_part_of_an_assignment_is_its_value_and_target_indexes():
@@ -418,19 +431,17 @@ def test_assumptions_differing_in_one_string_or_in_their_numbers_are_told_once()
              'CRobT reads the calling task\'s robot for \\TaskName:="T_ROB_R", which names no '
              'loaded task (RMC702)',
              'the signal AliasIO names at run time at Hand.sys:1092 is taken as configured, '
-             'a GI shown as <AliasIO at Hand.sys:1092>',
+             'shown as <AliasIO at file:line>',
              'the signal AliasIO names at run time at Hand.sys:1094 is taken as configured, '
-             'a GI shown as <AliasIO at Hand.sys:1094>',
+             'shown as <AliasIO at file:line>',
              'the signal AliasIO names at run time at Hand.sys:1096 is taken as configured, '
-             'a GO shown as <AliasIO at Hand.sys:1096>']
+             'shown as <AliasIO at file:line>']
     assert merged_assumptions(texts) == [
         'CRobT reads the calling task\'s robot for \\TaskName:="T_ROB_L", "T_ROB_R", which '
         'names no loaded task (RMC702)',
         'stub GripOpen is empty (Missing.mod:12)',
-        'the signal AliasIO names at run time at Hand.sys:1092 (and 1094) is taken as '
-        'configured, a GI shown as <AliasIO at Hand.sys:1092>',
-        'the signal AliasIO names at run time at Hand.sys:1096 is taken as configured, '
-        'a GO shown as <AliasIO at Hand.sys:1096>']
+        'the signal AliasIO names at run time at Hand.sys:1092 (and 1094, 1096) is taken as '
+        'configured, shown as <AliasIO at file:line>']
 
 
 def test_the_same_assumption_twice_is_told_once_with_or_without_a_quoted_string():

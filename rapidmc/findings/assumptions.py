@@ -119,9 +119,9 @@ def assumptions(program: Program, robot_untracked: bool = False,
               for signal in program.signals if signal.also_set_by]
     found += [Assumption(READING, signal.name,
                          f"no I/O configuration is loaded: the signal AliasIO names at run "
-                         f"time at {signal.named_at_run_time} is taken as configured, a "
-                         f"{signal.kind} shown as {signal.name} (give the controller's EIO.cfg, "
-                         f"--eio, to check the name)", frozenset({"ALIASIO"}))
+                         f"time at {signal.named_at_run_time} is taken as configured, shown "
+                         f"as <AliasIO at file:line> (give the controller's EIO.cfg, --eio, to "
+                         f"check the name)", frozenset({"ALIASIO"}))
               for signal in program.signals if signal.named_at_run_time]
     found += [Assumption(NO_INTERRUPT, call.name.text,
                          f"the interrupt {call.name.text} orders at "

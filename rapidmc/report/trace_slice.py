@@ -83,11 +83,25 @@ def words_of(text: str) -> list[str]:
 
 
 def read_part(source: str) -> str:
-    """What a line reads: of an assignment, the indexes of its target and its value."""
+    """What a line reads: of an assignment, the indexes of its target and its value; of a
+    one-line IF that assigns (``IF n <> 0 rec.cpm := 1;``), its condition too."""
     target, assigns, value = source.partition(":=")
-    if not assigns or not ASSIGNED.match(target):
+    if not assigns:
+        return source
+    condition = ""
+    if not ASSIGNED.match(target) and ONE_LINE_IF.match(target):
+        last = TARGET_AT_END.search(target)
+        if last is not None:
+            condition, target = target[:last.start()], last.group(0)
+    if not ASSIGNED.match(target):
         return source                  # no assignment (``SocketReceive s \Str:=text;``)
-    return " ".join(re.findall(r"\{([^}]*)\}", target)) + " " + value
+    return condition + " ".join(re.findall(r"\{([^}]*)\}", target)) + " " + value
+
+
+ONE_LINE_IF = re.compile(r"^\s*IF\b", re.IGNORECASE)
+# the assigned data at the end of a one-line IF's text before ``:=``
+TARGET_AT_END = re.compile(r"(?<![A-Za-z0-9_\\])[A-Za-z][A-Za-z0-9_]*"
+                           r"(?:\s*\{[^{}]*\}|\s*\.\s*[A-Za-z][A-Za-z0-9_]*)*\s*$")
 
 
 def reads_of(step: TraceStep, scoped: frozenset = frozenset(),
@@ -100,7 +114,8 @@ def reads_of(step: TraceStep, scoped: frozenset = frozenset(),
     words = set()
     for text in statements_of(step):
         named = words_of(text)
-        if named and named[0] not in CONTROL_WORDS and not LABEL.match(text):
+        if named and (named[0] not in CONTROL_WORDS or named[0] == "IF") and \
+                not LABEL.match(text):
             named = words_of(read_part(text))
         words.update(named)
     return frozenset(_in_scope(with_robot(words), step, scoped, task))
