@@ -457,6 +457,33 @@ def test_the_same_assumption_twice_is_told_once_with_or_without_a_quoted_string(
         'PERS stCommand is written outside ("Weld")', "a lone quote \" in a text"]
 
 
+def test_where_whole_assumptions_are_is_said_once():
+    from rapidmc.check.result import HOLDS, SearchResult
+    from rapidmc.report.results import PropertyResult, assumption_lines
+    long = [f"PERS {name} is written outside the loaded code; its reads take " +
+            "; ".join(f"{name}.c{i}: {'FALSE' if n % 2 else '0'}" for i in range(40)) +
+            f" (M.mod:{n})" for n, name in enumerate("abcdefgh")]
+    checked = PropertyResult("p", "G x", SearchResult(HOLDS),
+                             assumes=tuple(long))
+    lines = assumption_lines(checked)
+    assert sum("--format json" in line for line in lines) == 1
+    assert lines[-1].endswith("(--format json lists them all, each whole)")
+    two = PropertyResult("p", "G x", SearchResult(HOLDS),
+                         assumes=tuple(long[:2]))
+    lines = assumption_lines(two)
+    assert "(--format json lists it whole) (M.mod:0)" in lines[0] and \
+        "--format json" not in lines[1] and lines[1].endswith("... (M.mod:1)")
+
+
+def test_many_assumptions_differing_in_their_numbers_list_three_and_count_the_rest():
+    from rapidmc.report.results import merged_assumptions
+    texts = [f"the signal AliasIO names at run time at Hand.sys:{line} is taken as configured"
+             for line in range(1000, 1010)]
+    assert merged_assumptions(texts) == [
+        "the signal AliasIO names at run time at Hand.sys:1000 (and 1001, 1002, 1003 and 6 "
+        "more) is taken as configured"]
+
+
 def test_a_stretch_left_out_names_the_routines_that_returned_in_it():
     # a routine's data ends with it: its name, not its data (with several tasks the task's
     # name comes first: T_ROB1.Hold.t is routine Hold's t)

@@ -162,12 +162,18 @@ def assumption_lines(checked: PropertyResult, read: Optional[frozenset] = None) 
         assumes = used + [text for text in assumes if assumption_subject(text) not in read]
         about = len(used)
         limit = min(MAX_ASSUMPTIONS_SHOWN, max(about, MAX_ASSUMPTIONS_SHOWN_BESIDE_TRACE))
-    shown = [f"  assumes: {short_assumption(text)}" for text in assumes[:limit]]
     rest = len(assumes) - limit
+    first_cut = next((n for n, text in enumerate(assumes[:limit])
+                      if len(text) > ASSUMPTION_WIDTH), None)
+    # where the whole texts are is told once: on the count of the rest, else the first cut
+    shown = [f"  assumes: {short_assumption(text, pointer=n == first_cut and rest <= 0)}"
+             for n, text in enumerate(assumes[:limit])]
     if rest > 0:
         others = " on what this counterexample does not use" if about <= limit and \
             read is not None else ""
-        shown.append(f"  assumes: ... and {rest} more{others} (--format json lists them all)")
+        whole = ", each whole" if first_cut is not None else ""
+        shown.append(f"  assumes: ... and {rest} more{others} (--format json lists them all"
+                     f"{whole})")
     return shown
 
 
@@ -197,10 +203,15 @@ def merged_assumptions(texts: Sequence[str]) -> list[str]:
 NUMBER = re.compile(r"\d+")
 
 
+NUMBERS_LISTED = 3
+
+
 def _merged_by_number(texts: Sequence[str]) -> list[str]:
     """The assumptions with those that differ only in their numbers (the line of each
     AliasIO) told once, with the numbers that tell the others apart after the first's:
-    ``... at HandDriver.sys:1092 (and 1094, 1096) is taken ...``."""
+    ``... at HandDriver.sys:1092 (and 1094, 1096) is taken ...``, at most
+    ``NUMBERS_LISTED`` of them and a count of the rest (``(and 1094, 1096, 1098 and 20
+    more)``)."""
     groups: dict[str, list[str]] = {}
     for text in texts:
         groups.setdefault(NUMBER.sub("#", text), []).append(text)
@@ -212,9 +223,11 @@ def _merged_by_number(texts: Sequence[str]) -> list[str]:
         numbers = [NUMBER.findall(text) for text in members]
         at = next(n for n in range(len(numbers[0]))
                   if len({found[n] for found in numbers}) > 1)
-        others = ", ".join(dict.fromkeys(found[at] for found in numbers[1:]))
+        others = list(dict.fromkeys(found[at] for found in numbers[1:]))
+        listed = ", ".join(others[:NUMBERS_LISTED]) + (
+            f" and {len(others) - NUMBERS_LISTED} more" if len(others) > NUMBERS_LISTED else "")
         first = list(NUMBER.finditer(members[0]))[at]
-        merged.append(f"{members[0][:first.end()]} (and {others}){members[0][first.end():]}")
+        merged.append(f"{members[0][:first.end()]} (and {listed}){members[0][first.end():]}")
     return merged
 SUBJECT = re.compile(r"^(?:PERS |stub |the )?([A-Za-z][A-Za-z0-9_]*)")
 
@@ -242,10 +255,11 @@ def trace_words(trace: Trace, options: TextOptions) -> frozenset:
     return frozenset(words)
 
 
-def short_assumption(text: str) -> str:
+def short_assumption(text: str, pointer: bool = True) -> str:
     """An assumption over ``ASSUMPTION_WIDTH`` characters (the values of every component of
     a record written from outside) cut after a ``;`` with ``...``, its place kept:
-    ``PERS Welds1 ... take Welds1.cpm: 0; ... (Teaching.mod:25)``."""
+    ``PERS Welds1 ... take Welds1.cpm: 0; ... (Teaching.mod:25)``; ``pointer``: with
+    ``(--format json lists it whole)`` after the ``...``."""
     if len(text) <= ASSUMPTION_WIDTH:
         return text
     place = PLACE.search(text)
@@ -253,8 +267,9 @@ def short_assumption(text: str) -> str:
     cut = body.rfind("; ", 0, ASSUMPTION_WIDTH)
     if cut <= 0:
         cut = body.rfind(" ", 0, ASSUMPTION_WIDTH) - 1     # at a word's end
-    return (body[:cut + 1] if cut > 0 else body[:ASSUMPTION_WIDTH]) + " ... " \
-        "(--format json lists it whole)" + (place.group(0) if place else "")
+    return (body[:cut + 1] if cut > 0 else body[:ASSUMPTION_WIDTH]) + " ..." + \
+        (" (--format json lists it whole)" if pointer else "") + \
+        (place.group(0) if place else "")
 
 
 def text_options(checked: PropertyResult, describer: TraceDescriber,
