@@ -164,6 +164,18 @@ def test_a_calls_new_data_are_told_on_one_line_after_its_routine():
                                     "        Place.at = 4"]
 
 
+def test_the_sockets_a_stopping_program_closes_are_not_listed_at_its_last_step():
+    def stop(source):
+        return TraceStep(9, TRANSITION, TransitionInfo("p.mod", 9, source),
+                         (Change("client", "<socketdev: connected>", "<socketdev: closed>"),
+                          Change("ERRNO", "0", "ERR_SOCK_CLOSED"),
+                          Change("program", None, "stopped: uncaught ERR_SOCK_CLOSED")))
+    assert [line.split(" =")[0].strip() for line in step_lines(stop("RAISE;"))[1:]] == \
+        ["ERRNO", "program"]
+    # a SocketClose of its own says what it closed
+    assert "client" in step_lines(stop("SocketClose client;"))[1]
+
+
 def test_a_calls_many_new_data_take_lines_of_at_most_the_source_width():
     changes = tuple(Change(f"Load.value{n}", None, "1" * 40) for n in range(6))
     lines = step_lines(TraceStep(2, TRANSITION, TransitionInfo("p.mod", 3, "Load;"), changes))[1:]

@@ -42,7 +42,7 @@ from ..semantics.robots import ROBOT_TCP
 from ..semantics.task_registers import names_errno
 from .headline import headline_lines
 from .trace_slice import (needed_steps, own_frames, reads_of, returned_calls, running_tasks,
-                          scoped_forms, scoped_reads)
+                          scoped_forms, scoped_reads, stops_program, words_of)
 from .trace_text import (INDEX, SOURCE_WIDTH, STRING_WIDTH, WAS_WIDTH, WIDTH,
                          TextOptions, array_elements, data_names, file_names, shorten,
                          shown_location, shown_value)
@@ -428,6 +428,8 @@ def step_lines(step: TraceStep, options: TextOptions = TextOptions(),
     unread = 0
     if not options.full:
         changes = tuple(change for change in changes if change.new is not None)
+        if stops_program(step) and "SOCKETCLOSE" not in words_of(transition.source):
+            changes = tuple(change for change in changes if not CLOSED.match(change.new))
         if read is not None and step.kind != INITIAL:
             kept = tuple(change for change in changes
                          if change.old is not None or _new_data_read(change.name, read))
@@ -470,6 +472,10 @@ def _new_data_together(changes: Sequence[Change]) -> list[str]:
             line += f" {part},"
         texts.append(line.rstrip(","))
     return texts
+
+
+# a socket as the controller leaves it when the program stops (not listed at that step)
+CLOSED = re.compile(r"^<socketdev: closed")
 
 
 def _input_name(name: str, transition, options: TextOptions) -> str:

@@ -303,7 +303,7 @@ def needed_steps(trace: Trace, names: Iterable[str] = (),
         left[end] = min(start, left.get(end, start))
     # with several tasks, a path ending in an uncaught error: a statement that decides only
     # the path of a task no kept step runs in decided nothing the error depends on
-    active = {tasks[len(prefix) - 1]} if scoped and prefix and _stops_program(prefix[-1]) \
+    active = {tasks[len(prefix) - 1]} if scoped and prefix and stops_program(prefix[-1]) \
         and tasks[len(prefix) - 1] else None
     number = len(trace.prefix) - 1
     while number >= 0:
@@ -332,7 +332,7 @@ def needed_steps(trace: Trace, names: Iterable[str] = (),
     return frozenset(needed)
 
 
-def _stops_program(step: TraceStep) -> bool:
+def stops_program(step: TraceStep) -> bool:
     """Whether the step stops the program with an uncaught error."""
     return any(change.name == "program" and (change.new or "").startswith("stopped: ")
                for change in step.changes)
