@@ -148,6 +148,8 @@ def _step(index: int, line: int, *changes: Change) -> TraceStep:
     ("x := a{b{i}} + c{2}", {"A", "C"}),     # b's element is an index: its value tells
     ("x := s{i, j}.v", {"S"}),
     ("x := y + 1", set()),
+    # the datum whose element is the index stays
+    ('IF step{1} <> 0 AND s = "Weld" v := speeds{step{1}};', {"SPEEDS"}),
 ])
 def test_an_index_error_leaves_out_the_values_of_the_arrays_the_line_indexes(source, indexed):
     """The headline of ERR_OUTOFBND shows the index, not the elements of the array it
@@ -162,6 +164,18 @@ def test_a_calls_new_data_are_told_on_one_line_after_its_routine():
     assert step_lines(step)[1:] == ["        Pick: side = 2, no = 0",
                                     "        count = 2  (was 1)",
                                     "        Place.at = 4"]
+
+
+@pytest.mark.parametrize("source, output, shown", [
+    ('TPWrite "Ready";', "Ready\n", False),
+    ('TPReadFK n, "Load or unload?", "Load", "Unload", "", "", "";', "Load or unload?\n", False),
+    ('TPWrite "Say ""hi""";', 'Say "hi"\n', False),
+    ('TPWrite name + ": waiting";', "MS_Left: waiting\n", True),     # computed: told
+    ('TPWrite "count " \\Num:=n;', "count 3\n", True),
+])
+def test_an_output_is_listed_only_when_the_line_does_not_show_its_text(source, output, shown):
+    step = TraceStep(2, TRANSITION, TransitionInfo("p.mod", 2, source, {}, output), ())
+    assert any(line.strip().startswith("output:") for line in step_lines(step)) == shown
 
 
 def test_the_sockets_a_stopping_program_closes_are_not_listed_at_its_last_step():

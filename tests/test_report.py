@@ -70,7 +70,6 @@ P2: VIOLATED (9 states, <t> s)
     step 3  cell.mod:12  SetDO do1, 1;
         do1 = 1  (was 0)
     step 4  cell.mod:13  TPWrite "done";
-        output: "done"
     step 5  cell.mod:14  SetDO do1, 0;
         do1 = 0  (was 1)
     step 6  cell.mod:11  TPReadNum x, "How many?";
@@ -89,7 +88,6 @@ never-done: VIOLATED (6 states, <t> s)
     step 3  cell.mod:12  SetDO do1, 1;
         do1 = 1  (was 0)
     step 4  cell.mod:13  TPWrite "done";
-        output: "done"
 '''
 
 

@@ -421,7 +421,7 @@ def step_lines(step: TraceStep, options: TextOptions = TextOptions(),
         lines.extend(f"        input: {_input_name(name, transition, options)} = "
                      f"{shorten(value, None if options.full else WIDTH)}"
                      for name, value in transition.inputs.items())
-        if transition.output:
+        if transition.output and (options.full or not _told_by_source(transition)):
             output = json.dumps(transition.output, ensure_ascii=False)
             lines.append(f"        output: {shorten(output, width)}")
     changes = step.changes
@@ -474,6 +474,14 @@ def _new_data_together(changes: Sequence[Change]) -> list[str]:
     return texts
 
 
+def _told_by_source(transition) -> bool:
+    """Whether the step's output is the text of string literals its line shows
+    (``TPWrite "Ready";``, a TPReadFK's prompt): each line written is one literal."""
+    literals = {text.replace('""', '"') for text in STRING_LITERAL.findall(transition.source)}
+    return all(line in literals for line in transition.output.rstrip("\n").split("\n"))
+
+
+STRING_LITERAL = re.compile(r'"((?:[^"]|"")*)"')
 # a socket as the controller leaves it when the program stops (not listed at that step)
 CLOSED = re.compile(r"^<socketdev: closed")
 

@@ -53,7 +53,7 @@ def headline_lines(trace: Trace, options: TextOptions = TextOptions()) -> list[s
         if "ERR_OUTOFBND" in trace.ending and not options.full else frozenset()
     shown = [(name, value if options.full else shown_value(value, WIDTH, STRING_WIDTH), origin)
              for name, value, origin in read_data(steps, options.stub_data)
-             if name.upper() not in bounds_only]
+             if INDEX.sub("", name).upper() not in bounds_only]
     lines.extend(f"    {text}" for text in (_same_origin_together(shown) if not options.full
                                             else (f"{n} = {v}  ({o})" for n, v, o in shown)))
     return lines
@@ -84,22 +84,27 @@ def _same_origin_together(shown: Sequence[tuple]) -> list[str]:
     return texts
 
 
-INDEXING = re.compile(r"([A-Za-z][A-Za-z0-9_]*)\s*\{|\{|\}")
+INDEXING = re.compile(r"([A-Za-z][A-Za-z0-9_]*)(\s*\{)?|\{|\}")
 
 
 def indexed_data(source: str) -> frozenset:
-    """The data a line indexes outside any other index, upper case (``WELDS1`` of
-    ``nTemp := Welds1{i}.cpm / 6``; of ``a{b{i}}`` only ``A``): of an index out of bounds the
-    error gives their bounds, and their elements' values tell nothing more."""
-    found, depth = set(), 0
+    """The data a line indexes outside any other index and names inside none, upper case
+    (``WELDS1`` of ``nTemp := Welds1{i}.cpm / 6``; of ``a{b{i}}`` only ``A``; of ``IF n{1} > 0
+    x := a{n{1}}`` only ``A``): of an index out of bounds the error gives their bounds, and
+    their elements' values tell nothing more."""
+    found, inside, depth = set(), set(), 0
     for match in INDEXING.finditer(source):
         if match.group(0) == "}":
             depth = max(depth - 1, 0)
             continue
-        if match.group(1) and depth == 0:
-            found.add(match.group(1).upper())
-        depth += 1
-    return frozenset(found)
+        if match.group(1):
+            if depth:
+                inside.add(match.group(1).upper())
+            elif match.group(2):
+                found.add(match.group(1).upper())
+        if match.group(0).endswith("{"):
+            depth += 1
+    return frozenset(found - inside)
 
 
 def read_data(steps: Sequence[TraceStep], stub_data: frozenset = frozenset()) -> list[tuple]:
