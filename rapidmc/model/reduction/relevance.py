@@ -129,7 +129,7 @@ def _sent_counters(program: Program, atom_keys: set[str], relevant: set) -> tupl
     packed into): ``sent_counters``."""
     from .sent_counters import SentCounters   # (a refinement of this module's analysis)
     analysis = SentCounters(program)
-    if not analysis.run():
+    if not analysis.sent_bytes or not analysis.run():
         return set(), frozenset()
     analysis.observe(atom_keys)
     found = {key for key in analysis.counters()

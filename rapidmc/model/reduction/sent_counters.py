@@ -73,6 +73,8 @@ def _bodies(decl: ast.Routine) -> tuple:
 
 def sent_only_bytes(program) -> set[Key]:
     """The rawbytes data whose contents reach nothing but messages sent (module docstring)."""
+    if not _declares_bytes(program):
+        return set()
     candidates: set = set()
     named_elsewhere: set = set()
     for routine in program.routines:
@@ -96,6 +98,21 @@ def sent_only_bytes(program) -> set[Key]:
                 continue
             (candidates if id(node) in blind else named_elsewhere).add(key)
     return candidates - named_elsewhere
+
+
+def _declares_bytes(program) -> bool:
+    """Whether the program declares rawbytes data (else there is nothing to look for)."""
+    if any(getattr(data.type, "key", None) == "RAWBYTES" for data in program.globals):
+        return True
+    for routine in program.routines:
+        scope = getattr(routine, "scope", None)
+        if routine.ast is None or scope is None:
+            return True                    # (sent_only_bytes answers for it)
+        for data in routine.ast.data:
+            symbol = scope.names.get(data.name.key)
+            if symbol is not None and getattr(symbol.type, "key", None) == "RAWBYTES":
+                return True
+    return False
 
 
 def _bytes_key(program, symbol, routine: int) -> Optional[Key]:
