@@ -580,7 +580,7 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
             searches.facts.statements.executed |= _shared_data_probe(model, bound)
     resting_on = stated_domains(model.assumed) \
         + assumptions(model.program, model.config.robot_untracked,
-                      model.plan.slicing.move_shaping)
+                      model.plan.slicing.move_shaping, model.plan.slicing.sent_counters)
     results = [replace(r, assumes=for_verdict(resting_on, r.result, model.describer))
                for r in results]
     return CheckReport(results, _findings(model, results, searches.facts, searches.notes),

@@ -39,12 +39,16 @@ loaded module says for sure:
 * **data that only shapes moves' targets left out of states**: then (the robot not
   tracked) data whose values reach nothing but where moves go is sliced, on the
   assumption that its arithmetic stays within num's range
-  (``model.reduction.move_shaping``).
+  (``model.reduction.move_shaping``);
+* **counters that only fill bytes sent left out of states**: a num counted up by small
+  steps and read only by ``PackRawBytes ... \\IntX`` into bytes only sent is sliced; code
+  not loaded that writes it is taken to keep it within the packed size's range
+  (``model.reduction.sent_counters``).
 
-``assumptions(program, robot_untracked, move_shaping)`` lists them once; ``touched(assumption list, result)``
-keeps those a counterexample executes a statement of (the names each executed
-statement mentions, merged steps expanded), so that a VIOLATED verdict names
-only what its counterexample rests on and HOLDS names everything.
+``assumptions(program, robot_untracked, move_shaping, sent_counters)`` lists them once;
+``touched(assumption list, result)`` keeps those a counterexample executes a statement of
+(the names each executed statement mentions, merged steps expanded), so that a VIOLATED
+verdict names only what its counterexample rests on and HOLDS names everything.
 """
 from __future__ import annotations
 
@@ -99,11 +103,13 @@ class Assumption:
 
 
 def assumptions(program: Program, robot_untracked: bool = False,
-                move_shaping: tuple = ()) -> tuple[Assumption, ...]:
+                move_shaping: tuple = (), sent_counters: tuple = ()) -> tuple[Assumption, ...]:
     """Every assumption the program's verdicts may rest on, in a stable order;
     ``robot_untracked``: the check leaves the robot's position out of its states
     (``CheckConfig.robot_untracked``); ``move_shaping``: (name, span) of the data sliced
-    because it only shapes moves' targets (``Slicing.move_shaping``)."""
+    because it only shapes moves' targets (``Slicing.move_shaping``); ``sent_counters``:
+    (name, span) of the counters sliced because they only fill bytes sent
+    (``Slicing.sent_counters``)."""
     stub_files = _stub_files(program)
     found = list(_stubs(program, stub_files))
     found += [_reading(warning) for warning in fixed_readings(program)]
@@ -133,6 +139,7 @@ def assumptions(program: Program, robot_untracked: bool = False,
         found.append(UNTRACKED_ROBOT)
     if move_shaping:
         found.append(_move_shaping(move_shaping))
+    found += [_sent_counter(name, span) for name, span in sent_counters]
     found += _robot_start(program)
     return tuple(found)
 
@@ -250,6 +257,17 @@ def _move_shaping(data: tuple) -> Assumption:
         f"(ERR_NUM_LIMIT is not looked for there; --track-robot keeps "
         f"{'it' if one else 'them'})",
         frozenset(name.rsplit(".", 1)[-1].upper() for name, _ in data))
+
+
+def _sent_counter(name: str, span) -> Assumption:
+    """A counter left out of states because its value only fills bytes sent."""
+    return Assumption(
+        UNTRACKED, name,
+        f"{name} ({_where(span)}) only counts into bytes sent (PackRawBytes \\IntX, then "
+        f"SocketSend): it is left out of states; the loaded code keeps it an integer within "
+        f"0..2^30 (a num stops growing there), and code not loaded that writes it is taken "
+        f"to keep it within the packed size's range, where PackRawBytes cannot raise",
+        frozenset({name.rsplit(".", 1)[-1].upper()}))
 
 
 # --- stubs ----------------------------------------------------------------------------

@@ -84,7 +84,8 @@ def _new_table(system) -> Optional["PackedStateTable"]:
     tasks = len(system.program.task_names)
     projection = system.project if tasks > 1 else system.project_fused
     if _native is None or tasks > MAX_TASKS or \
-            projection is not None and not isinstance(projection, Projection):
+            projection is not None and (not isinstance(projection, Projection) or
+                                        projection.blanks):
         return None
     config = system.config
     if config.free_inputs or system.program.environment_react is not None:

@@ -66,6 +66,15 @@ class Projection:
             if any(per_pc_resets) or any(handler_resets.values()):
                 self.frame_resets[routine.index] = per_pc_resets
                 self.handler_frame_resets[routine.index] = handler_resets
+        # rawbytes data only sent that a sliced counter is packed into (``sent_counters``):
+        # their contents are reset to zeros, their length kept
+        self.blank_globals = tuple(sorted(key[1] for key in slicing.sent_bytes
+                                          if key[0] == "G"))
+        self.blank_locals: dict[int, tuple] = {}
+        for key in sorted(slicing.sent_bytes):
+            if key[0] == "L":
+                self.blank_locals[key[1]] = self.blank_locals.get(key[1], ()) + (key[2],)
+        self.blanks = bool(self.blank_globals or self.blank_locals)
 
     def keeps_fused_targets(self, sliced: set, written: set, main_stops: set) -> bool:
         """Whether the fused step's targets from projected states are projected already:
@@ -74,7 +83,7 @@ class Projection:
         (``written``: the global slots the step may write; ``main_stops``: the pcs of main
         where it may stop).  (A fused step never ends the program: the final resets do
         not apply.)"""
-        if self.frame_resets:
+        if self.frame_resets or self.blanks:
             return False
         at_stops = [resets for pc, resets in enumerate(self.main_resets) if pc in main_stops]
         reset = {slot for resets in (self.global_resets, *at_stops) for slot, _ in resets}
@@ -104,14 +113,42 @@ class Projection:
             equal[slot] = value
         new_frames, new_tasks = frames, tasks
         if self.frame_resets:
-            new_frames = self._stack(frames)
-            if tasks:
-                stacks = tuple(self._stack(stack) for stack in tasks)
-                if any(a is not b for a, b in zip(stacks, tasks)):
-                    new_tasks = stacks
+            new_frames, new_tasks = _stacks(self._stack, frames, tasks)
+        if self.blanks:
+            store, new_frames, new_tasks = self._blank(store, new_frames, new_tasks)
         if store is state[1] and new_frames is frames and new_tasks is tasks:
             return state
         return state._replace(store=store, frames=new_frames, tasks=new_tasks)
+
+    def _blank(self, store, frames: tuple, tasks: tuple) -> tuple:
+        """(store, frames, tasks) with the contents of the bytes only sent reset."""
+        changes = []
+        for slot in self.blank_globals:
+            blank = _blank_bytes(store[slot])
+            if blank is not None:
+                changes += (slot, blank)
+        if changes:
+            store = store.mset(*changes)
+        if self.blank_locals:
+            frames, tasks = _stacks(self._blank_stack, frames, tasks)
+        return store, frames, tasks
+
+    def _blank_stack(self, frames: tuple) -> tuple:
+        result, changed = [], False
+        for frame in frames:
+            slots = self.blank_locals.get(frame[0])
+            if slots:
+                values = frame[2]
+                blanks = [(slot, _blank_bytes(values[slot])) for slot in slots]
+                if any(blank is not None for _, blank in blanks):
+                    values = list(values)
+                    for slot, blank in blanks:
+                        if blank is not None:
+                            values[slot] = blank
+                    frame = _new_tuple(Frame, (frame[0], frame[1], tuple(values), *frame[3:]))
+                    changed = True
+            result.append(frame)
+        return tuple(result) if changed else frames
 
     def _reset_store(self, store, resets: tuple):
         """``store`` with each slot of ``resets`` at its initial value (the initial object
@@ -147,6 +184,24 @@ class Projection:
                     changed = True
             result.append(frame)
         return tuple(result) if changed else frames
+
+
+def _stacks(change, frames: tuple, tasks: tuple) -> tuple:
+    """(frames, tasks) with ``change`` applied to the main stack and each task's (the same
+    objects where nothing changed)."""
+    frames = change(frames)
+    if tasks:
+        stacks = tuple(change(stack) for stack in tasks)
+        if any(a is not b for a, b in zip(stacks, tasks)):
+            tasks = stacks
+    return frames, tasks
+
+
+def _blank_bytes(value) -> Optional[bytes]:
+    """Zeros as many as the bytes ``value`` holds, or None when it holds no other byte."""
+    if isinstance(value, bytes) and value.strip(b"\0"):
+        return bytes(len(value))
+    return None
 
 
 def _resets(slots: set, initial) -> tuple:

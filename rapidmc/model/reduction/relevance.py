@@ -63,6 +63,10 @@ class Slicing:
     # the sliced data that only shape moves' targets (``move_shaping``): sliced on the
     # assumption that their arithmetic stays within num's range, each (name, span)
     move_shaping: tuple = ()
+    # the sliced counters that only fill bytes sent (``sent_counters``), each (name, span),
+    # and the rawbytes data they are packed into, whose contents the projection resets
+    sent_counters: tuple = ()
+    sent_bytes: frozenset = frozenset()
 
     @property
     def empty(self) -> bool:
@@ -97,6 +101,8 @@ def find_slicing(program: Program, atom_texts: Iterable[str] = (),
             moves.observe(atom_keys)
             shaping = relevant - moves.closure()
             relevant = relevant - shaping
+    counters, sent_bytes = _sent_counters(program, atom_keys, relevant)
+    relevant = relevant - counters
     sliced_globals = tuple(
         data.slot for data in program.globals
         if ("G", data.slot) not in relevant and data.key not in atom_keys
@@ -113,7 +119,30 @@ def find_slicing(program: Program, atom_texts: Iterable[str] = (),
     total_writes = frozenset(span for span, key in analysis.total_writes.items()
                              if key in sliced)
     return Slicing(sliced_globals, sliced_locals, total_writes,
-                   tuple(_named(program, key) for key in sorted(shaping & sliced)))
+                   tuple(_named(program, key) for key in sorted(shaping & sliced)),
+                   tuple(_named(program, key) for key in sorted(counters & sliced)),
+                   sent_bytes)
+
+
+def _sent_counters(program: Program, atom_keys: set[str], relevant: set) -> tuple:
+    """(the ``relevant`` counters that only fill bytes sent, the rawbytes data they are
+    packed into): ``sent_counters``."""
+    from .sent_counters import SentCounters   # (a refinement of this module's analysis)
+    analysis = SentCounters(program)
+    if not analysis.sent_bytes or not analysis.run():
+        return set(), frozenset()
+    analysis.observe(atom_keys)
+    found = {key for key in analysis.counters()
+             if not any(_data_key(program, into) in atom_keys for into in analysis.packed[key])}
+    counters = (found - analysis.closure()) & relevant
+    return counters, frozenset(into for key in counters for into in analysis.packed[key])
+
+
+def _data_key(program: Program, key: Key) -> str:
+    """The upper-case name of the data ``key`` stands for (as atoms name it)."""
+    if key[0] == "G":
+        return program.globals[key[1]].key
+    return program.routines[key[1]].local_names[key[2]].upper()
 
 
 def _named(program: Program, key: Key) -> tuple:
