@@ -59,10 +59,27 @@ ENDMODULE
 """
 
 
-def check(tmp_path, text: str, engine: str, *formulas: str) -> str:
+# two tasks read the same instance; each notes whether it found it (1) or not (2)
+TASK = """MODULE Task{name}
+    PERS num a_found := 0;
+    PERS num b_found := 0;
+    VAR num value := 0;
+
+    PROC main()
+        ReadCfgData "MOC/ARM/rob_R_1", "upper_joint_bound", value;
+        {name}_found := 1;
+    ERROR
+        {name}_found := 2;
+        RETURN;
+    ENDPROC
+ENDMODULE
+"""
+
+
+def check(tmp_path, text: str, engine: str, *formulas: str, options=()) -> str:
     program = tmp_path / "prog.mod"
     program.write_text(text)
-    arguments = ["check", str(program), "--engine", engine, "--quiet"]
+    arguments = ["check", str(program), "--engine", engine, "--quiet", *options]
     for formula in formulas:
         arguments += ["--formula", formula]
     _, out, err = cli(arguments)
@@ -94,6 +111,20 @@ def test_retrying_a_missing_instance_still_exceeds_the_retries(tmp_path, engine)
     out = check(tmp_path, RETRIED, engine, 'may_read: G !"AtLine(6)"')
     assert "no_runtime_error: VIOLATED" in out and "ERR_EXCRTYMAX" in out, out
     assert "may_read: VIOLATED" in out, out
+
+
+@pytest.mark.parametrize("engine", ENGINES)
+@pytest.mark.parametrize("reduction", ((), ("--no-por",)))
+def test_every_task_reads_the_same_outcome(tmp_path, engine, reduction):
+    other = tmp_path / "b.mod"
+    other.write_text(TASK.format(name="b"))
+    out = check(tmp_path, TASK.format(name="a"), engine,
+                'agree: G !(("a_found = 1" & "b_found = 2") | ("a_found = 2" & "b_found = 1"))',
+                'both_fail: G !("a_found = 2" & "b_found = 2")',
+                'both_find: G !("a_found = 1" & "b_found = 1")',
+                options=("--add-task", str(other), *reduction))
+    assert "agree: HOLDS" in out, out
+    assert "both_fail: VIOLATED" in out and "both_find: VIOLATED" in out, out
 
 
 def test_the_memory_is_kept_in_one_order():
