@@ -68,6 +68,8 @@ class Linker:
         self.compiling_namespace = P.PROGRAM_NAMESPACE
         # (namespace, key) -> the data of that task's USER module (reg1 ...)
         self.user_module_data: dict[tuple[int, str], Symbol] = {}
+        # name -> slot of a controller's memory the library keeps in the state (``controller_data``)
+        self.controller_slots: dict[str, int] = {}
         self._predefined_types()
 
     # ------------------------------------------------------------ errors
@@ -214,6 +216,18 @@ class Linker:
         else:
             self.system.declare(key, symbol)
         return symbol
+
+    def controller_data(self, name: str, rapid_type, initial, span) -> int:
+        """The global slot of what the controller remembers for a predefined routine (no
+        RAPID name reaches it; given at the first call ``span`` compiles, shared by every
+        task): kept with the environment models' data, which no reduction slices."""
+        slot = self.controller_slots.get(name)
+        if slot is None:
+            slot = self.controller_slots[name] = len(self.globals)
+            self.globals.append(P.GlobalData(slot, name, name.upper(), rapid_type, "VAR",
+                                             "controller", P.ENVIRONMENT_NAMESPACE, True, span,
+                                             initial))
+        return slot
 
     def _user_module_data(self, entry, key: str) -> Symbol:
         """A variable of the USER module of the task being compiled (an environment model

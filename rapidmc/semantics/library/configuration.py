@@ -14,7 +14,9 @@ What rapidmc knows about an instance comes from two places:
   calibration-position program): found, with a value rapidmc does not know.
 
 Anything else is not known either way: when checking, the read is found (the
-data keeps its value) or raises ERR_CFG_NOTFND, a choice, as before.  A value
+data keeps its value) or raises ERR_CFG_NOTFND, a choice made at the run's first
+read of that instance and attribute and kept for the later ones
+(``configuration_outcomes``).  A value
 rapidmc does not know is never invented: the data keeps its value, and the
 RMC702 note beside the verdicts says that the check assumes it.
 """
@@ -56,7 +58,8 @@ STANDARD = {
 }
 STANDARD_TEXT = ("the controller's configuration (a backup's SYSPAR files when loaded, else "
                  "the instances of a standard six-axis single robot, found with values "
-                 "rapidmc does not know)")
+                 "rapidmc does not know; any other instance found or not, the same at every "
+                 "read of a run)")
 
 
 @dataclass

@@ -21,6 +21,7 @@ from ..types import BOOL, DNUM, NUM, STRING
 from .arguments import (NAME_ONLY, ROBOT_JOINTS, ROBOT_TCP, Arguments, argument_expression,
                         fixed, no_effect, not_modelled)
 from .configuration import FOUND, NOT_KNOWN, UNKNOWN_VALUE, Lookup, look_up
+from .configuration_outcomes import memory_slot, read_key, remember, remembered
 from .data import PREDEFINED_DATA
 from .environment_model import where
 from .motion import move_robot
@@ -330,18 +331,22 @@ def _read_cfg_data(calls, compiler, call, entry):
     """The instance and attribute as far as rapidmc knows them (``configuration``): found
     with a known value (written to CfgData), found with a value rapidmc does not know
     (CfgData keeps its value), not found (ERR_CFG_NOTFND), or not known either way: then,
-    when checking, a choice between found and ERR_CFG_NOTFND (``run``: found)."""
+    when checking, a choice between found and ERR_CFG_NOTFND made at the run's first read
+    of that instance and attribute and kept for the later ones (``configuration_outcomes``;
+    ``run``: found)."""
     arguments = Arguments(calls, compiler, call, entry)
     path, attribute, target = (arguments.value("InstancePath"), arguments.value("Attribute"),
                                arguments.fn("CfgData"))
     _, target_type, _ = compiler.reference(argument_expression(call, "CfgData", 2),
                                            "written by ReadCfgData")
     label = f"ReadCfgData outcome at {where(call.span)}"
+    memory = memory_slot(compiler.linker, call.span)
 
     def read(m):
-        found = look_up(m.program.options.get("configuration"), path(m), attribute(m))
+        path_text, attribute_text = path(m), attribute(m)
+        found = look_up(m.program.options.get("configuration"), path_text, attribute_text)
         if found.outcome == NOT_KNOWN and m.chooser.check_mode:
-            found = Lookup(m.choose(label, (FOUND, "ERR_CFG_NOTFND")))
+            found = Lookup(_chosen_once(m, memory, read_key(path_text, attribute_text), label))
         if found.outcome not in (FOUND, NOT_KNOWN):
             raise RapidError("ERR_CFG_NOTFND", "ReadCfgData: no such instance or attribute in "
                              "the configuration")
@@ -349,6 +354,18 @@ def _read_cfg_data(calls, compiler, call, entry):
         if value is not None:
             m.write_ref(target(m), value)
     return Action(call.span, read)
+
+
+def _chosen_once(m, memory: int, key: tuple, label: str) -> str:
+    """FOUND or ERR_CFG_NOTFND for a read rapidmc cannot look up: chosen at the run's
+    first read of ``key``, the same at every later one (``configuration_outcomes``)."""
+    outcomes = m.store[memory]
+    found = remembered(outcomes, key)
+    if found is None:
+        outcome = m.choose(label, (FOUND, "ERR_CFG_NOTFND"))
+        m.store = m.store.set(memory, remember(outcomes, key, outcome == FOUND))
+        return outcome
+    return FOUND if found else "ERR_CFG_NOTFND"
 
 
 def configured_value(text, rapid_type):
