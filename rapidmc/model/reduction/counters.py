@@ -55,7 +55,7 @@ from .numeric_updates import as_assignment
 
 Interval = Optional[tuple]       # (low, high), infinities allowed; None: no value (unreached)
 ANY = (-math.inf, math.inf)
-WIDEN_AFTER = 24                 # updates of one pc before its bounds jump to infinity
+WIDEN_AFTER = 24                 # updates of one pc before a moving bound is widened
 NARROWINGS = 24                  # steps of the decreasing iteration after the fixed point
 COMPARISONS = {"<", "<=", ">", ">=", "=", "<>"}
 MIRRORED = {"<": ">", "<=": ">=", ">": "<", ">=": "<=", "=": "=", "<>": "<>"}
