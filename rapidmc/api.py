@@ -578,6 +578,8 @@ def check_model(model: Model, progress: ProgressFactory = lambda: None) -> Check
             searches.facts.statements.executed |= _start_probe(model)
         if _probing(searches) and searches.facts.waits_for_other_tasks():
             searches.facts.statements.executed |= _shared_data_probe(model, bound)
+    executed = searches.facts.statements.executed
+    executed |= {line for guard, line in model.plan.slicing.undecided_lines if guard in executed}
     resting_on = stated_domains(model.assumed) \
         + assumptions(model.program, model.config.robot_untracked,
                       model.plan.slicing.move_shaping, model.plan.slicing.sent_counters)

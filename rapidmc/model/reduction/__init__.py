@@ -24,6 +24,7 @@ from typing import Iterable, Optional
 
 from ...diagnostics import ORDER_REDUCTION, Diagnostic
 from ...semantics.program import Program
+from .counters import NO_COUNTERS, find_counters
 from .merging import LOCATION_ATOMS, _has_next, merge_points, merging_allowed
 from .partial_order import PartialOrder, reaches_data_by_name
 from .liveness import DeadData
@@ -77,14 +78,16 @@ def plan_reductions(program: Program, config, atoms: Iterable[str],
     """
     atoms = tuple(atoms)
     keys = atom_keys_of(atoms)
-    slicing = find_slicing(program, atoms, getattr(config, "robot_untracked", False)) \
-        if reductions.slice_data else NO_SLICING
+    formulas = list(formulas)
+    counters = find_counters(program) if reductions.slice_data and \
+        stutter_blind(formulas, keys) else NO_COUNTERS
+    slicing = find_slicing(program, atoms, getattr(config, "robot_untracked", False),
+                           counters) if reductions.slice_data else NO_SLICING
     dead = DeadData(program, keys) if reductions.dead_data else None
     if dead is not None and dead.empty:
         dead = None
     projection = Projection(program, slicing, dead) if not slicing.empty or dead else None
     points: dict = {}
-    formulas = list(formulas)
     if reductions.merge_steps and None not in formulas and \
             merging_allowed(program, formulas, keys, bool(config.free_inputs)):
         points = merge_points(program, keys)
@@ -93,6 +96,14 @@ def plan_reductions(program: Program, config, atoms: Iterable[str],
         order, notes = _partial_order(program, config, formulas, keys,
                                       reductions.merge_steps, projection)
     return Plan(reductions, slicing, projection, points, order, notes)
+
+
+def stutter_blind(formulas: list, keys: set[str]) -> bool:
+    """Whether the properties' verdicts are the same on runs that differ by steps that
+    change only the program counter and sliced data: no X, no automaton given whole, no
+    atom naming a location."""
+    return None not in formulas and not keys & LOCATION_ATOMS and \
+        not any(_has_next(formula) for formula in formulas)
 
 
 def _partial_order(program: Program, config, formulas: list, keys: set[str],

@@ -23,9 +23,11 @@ analysis does not recognise, which also use everything.
   and an error it raises stops the program.  A user routine call, a user
   function's call inside an expression included, uses every global that
   routine, or one it calls, names anywhere (every global when one of them
-  calls by a computed name, reaches data by name or ends the cycle; any
-  instruction that may call a routine itself, CallByVar or MoveLSync's
-  procedure, uses every global).  A move, WaitTime and a barrier
+  calls by a computed name or reaches data by name; any instruction that
+  may call a routine itself, CallByVar or MoveLSync's procedure, uses every
+  global).  When a routine (a TRAP's included) may end the cycle, main
+  starts again at any step (ExitCycle keeps every value): what is live at
+  main's start is then live at each of its pcs.  A move, WaitTime and a barrier
   (``GOES_ON``) read data only through their arguments and go on to the
   next instruction, as a predefined procedure does.  Globals are reset by the program
   counter of main's frame, the bottom of the stack: while a routine main
@@ -42,7 +44,7 @@ from typing import Iterable, Iterator, Optional
 from ... import ast
 from ...semantics.instructions import (Action, Branch, Call, ControlAction, EndRoutine, EndUndo,
                                       ExitProgram, ForInit, ForNext, Jump, Retry, Return,
-                                      TestDispatch, TryNext)
+                                      TestDispatch, TryNext, Wait)
 from ...semantics.program import PROGRAM_NAMESPACE, Program
 from ...semantics.library.motion import MOVE_ROUTINES
 from ...semantics.library.program_control import CALLS_BY_NAME, RESTARTS_CYCLE
@@ -93,7 +95,8 @@ class DeadData:
                 tracked |= {("G", slot) for slot in global_candidates}
             if not tracked:
                 continue
-            live, in_handler = _live_in(routine, tracked, reads)
+            live, in_handler = _live_in(routine, tracked, reads,
+                                        routine.index == program.entry)
 
             def dead(candidates: list, kind: tuple, live_here: set) -> tuple:
                 return tuple(slot for slot in candidates if (*kind, slot) not in live_here)
@@ -104,6 +107,13 @@ class DeadData:
                 node: dead(local_candidates, local_kind, live_node)
                 for node, live_node in in_handler.items()}
             if routine.index == program.entry and global_candidates:
+                if _restarts(reads):
+                    # the cycle may start again at any step: what main's start reads is
+                    # live everywhere
+                    restart = {key for key in live[0] if key[0] == "G"}
+                    live = [live_pc | restart for live_pc in live]
+                    in_handler = {node: live_node | restart
+                                  for node, live_node in in_handler.items()}
                 self.globals = [dead(global_candidates, ("G",), live_pc) for live_pc in live]
                 self.handler_globals = {node: dead(global_candidates, ("G",), live_node)
                                         for node, live_node in in_handler.items()}
@@ -135,11 +145,17 @@ def _untrapped(program: Program, candidates: list[int], reads: dict) -> list[int
     return [slot for slot in candidates if ("G", slot) not in named]
 
 
+def _restarts(reads: dict) -> bool:
+    """Whether some routine may end the cycle (``RESTARTS``)."""
+    return any(read is not None and RESTARTS in read for read in reads.values())
+
+
 def _global_reads(program: Program) -> dict[int, Optional[frozenset]]:
     """routine index -> the global keys it or a routine it calls names anywhere (None: any
     global, as when it calls a routine by a computed name (``%name%``, CallByVar,
-    MoveLSync), reaches data by name, or ends the cycle (ExitCycle: the entry routine
-    starts again, reading what is live at its start))."""
+    MoveLSync) or reaches data by name).  A routine that may end the cycle (ExitCycle:
+    the entry routine starts again, reading what is live at its start) holds the key
+    ``RESTARTS``: the analysis then keeps what main's start reads live everywhere."""
     names: dict[int, set] = {}
     callees: dict[int, Optional[set]] = {}
     for routine in program.routines:
@@ -152,6 +168,9 @@ def _global_reads(program: Program) -> dict[int, Optional[frozenset]]:
             if isinstance(call, ast.LateBindingCall) or call.name.key in _UNKNOWN_READS:
                 called = None
                 break
+            if call.name.key in RESTARTS_CYCLE:
+                names[routine.index].add(RESTARTS)
+                continue
             symbol = resolve.symbol(call.name)
             if symbol is not None and symbol.kind == ROUTINE:
                 called.add(symbol.slot)
@@ -173,7 +192,22 @@ def _global_reads(program: Program) -> dict[int, Optional[frozenset]]:
 
 
 # calls after which a routine's call may read any global
-_UNKNOWN_READS = DATA_BY_NAME | CALLS_BY_NAME | RESTARTS_CYCLE
+_UNKNOWN_READS = DATA_BY_NAME | CALLS_BY_NAME
+# the key in a routine's reads that says it may end the cycle (``_global_reads``)
+RESTARTS = ("RESTARTS",)
+
+
+def _connects(node) -> Iterator:
+    """Every CONNECT statement inside ``node``."""
+    if isinstance(node, ast.Connect):
+        yield node
+    elif isinstance(node, (tuple, list)):
+        for item in node:
+            yield from _connects(item)
+    else:
+        for field in getattr(node, "__dataclass_fields__", ()):
+            if field != "span":
+                yield from _connects(getattr(node, field))
 
 
 def _calls(node) -> Iterator:
@@ -189,7 +223,8 @@ def _calls(node) -> Iterator:
             yield from _calls(getattr(node, field))
 
 
-def _live_in(routine, tracked: set, reads: dict) -> tuple[list[set], dict]:
+def _live_in(routine, tracked: set, reads: dict,
+             entry: bool = False) -> tuple[list[set], dict]:
     """(live(pc) ∩ tracked for every pc, live((pc, e)) for every pc of the ERROR handler
     and every statement start ``e`` an error may come from), by backward iteration to a
     fixed point.
@@ -210,13 +245,16 @@ def _live_in(routine, tracked: set, reads: dict) -> tuple[list[set], dict]:
     for call in _calls(routine.ast):          # a user function's Call: its call expression
         if isinstance(call, ast.FunctionCall):
             nodes.setdefault(call.span, call)
+    for connect in _connects(routine.ast):
+        nodes.setdefault(connect.span, connect)
     uses, defines, successors = [], [], []
     for pc, instruction in enumerate(code):
         used, defined = _effects(instruction, nodes.get(instruction.span), resolve, tracked,
                                  reads)
         uses.append(used)
         defines.append(defined)
-        successors.append(_successors(routine, pc, instruction, nodes.get(instruction.span)))
+        successors.append(_successors(routine, pc, instruction, nodes.get(instruction.span),
+                                      entry))
     totality = Totality(resolve.symbol)
     handler, undo = routine.handler_pc, routine.undo_pc
     body_end = min(pc for pc in (handler, undo, len(code)) if pc >= 0)
@@ -314,8 +352,13 @@ def _cannot_raise(instruction, node, totality: Totality) -> bool:
     return False
 
 
-def _successors(routine, pc: int, instruction, node=None) -> list[int]:
+def _successors(routine, pc: int, instruction, node=None, entry: bool = False) -> list[int]:
+    """The pcs that may run after ``pc`` in the same frame (an ExitCycle: the UNDO handler
+    it runs, then main's start when ``routine`` is the entry routine; only main's globals
+    live on past it, and main is the only routine whose globals are analysed)."""
     size = len(routine.code)
+    if _ends_cycle(instruction, node):
+        return [target for target in ((0 if entry else -1), routine.undo_pc) if target >= 0]
     if isinstance(instruction, ANYWHERE) and not _goes_on(instruction, node):
         return list(range(size))
     targets = set()
@@ -334,6 +377,19 @@ def _successors(routine, pc: int, instruction, node=None) -> list[int]:
 # and MoveCSync (they call a procedure named at run time), WaitTime, and the barriers
 GOES_ON = frozenset(MOVE_ROUTINES - CALLS_BY_NAME) | \
     frozenset({"WAITTIME", "WAITSYNCTASK", "SYNCMOVEON", "SYNCMOVEOFF"})
+
+
+def _plain_wait(instruction) -> bool:
+    """A WaitUntil, WaitDI or WaitDO whose condition calls no user function: it reads data
+    only through its arguments and waits where it is or goes on (one that calls user
+    functions goes back to their calls, ``WaitRerun``)."""
+    return type(instruction) is Wait and instruction.rerun is None
+
+
+def _ends_cycle(instruction, node) -> bool:
+    """An ExitCycle: it reads nothing and goes on at the start of the entry routine."""
+    return isinstance(instruction, ControlAction) and isinstance(node, ast.ProcedureCall) \
+        and isinstance(node.name, ast.Name) and node.name.key in RESTARTS_CYCLE
 
 
 def _goes_on(instruction, node) -> bool:
@@ -368,7 +424,8 @@ def _effects(instruction, node, resolve: "Resolver", tracked: set,
              reads: dict) -> tuple[set, set]:
     """(data used, data defined) among ``tracked``; unknown instructions use everything."""
     kind = type(instruction)
-    if kind in (Jump, ForNext, EndRoutine, EndUndo, ExitProgram, Retry, TryNext):
+    if kind in (Jump, ForNext, EndRoutine, EndUndo, ExitProgram, Retry, TryNext) or \
+            _ends_cycle(instruction, node):
         return set(), set()
     used: Optional[set] = EVERYTHING
     defined: set = set()
@@ -381,7 +438,7 @@ def _effects(instruction, node, resolve: "Resolver", tracked: set,
                 defined = {key}
         else:
             used |= resolve.keys(target)          # a partial write keeps the rest
-    elif (kind is Action or _goes_on(instruction, node)) and \
+    elif (kind is Action or _goes_on(instruction, node) or _plain_wait(instruction)) and \
             isinstance(node, ast.ProcedureCall) and node.name.key not in DATA_BY_NAME:
         used = resolve.keys(node.args)            # predefined: data only through arguments
         written = _whole_write(node, resolve)
@@ -391,6 +448,8 @@ def _effects(instruction, node, resolve: "Resolver", tracked: set,
             defined = {key}
     elif kind is Branch and isinstance(node, (ast.IfBranch, ast.While, ast.CompactIf)):
         used = resolve.keys(node.condition)
+    elif kind is Action and isinstance(node, ast.Connect):
+        used = resolve.keys(node.target)          # the interrupt number it binds
     elif kind is TestDispatch and isinstance(node, ast.Test):
         used = resolve.keys((node.subject, [case.values for case in node.cases]))
     elif kind is ForInit and isinstance(node, ast.For):

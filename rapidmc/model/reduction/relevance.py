@@ -39,6 +39,7 @@ from ... import ast
 from ...semantics.program import ENVIRONMENT_NAMESPACE, Program
 from ...semantics.scope import GLOBAL_DATA, LOCAL_DATA, Symbol
 from ...semantics.types import ArrayType, RapidType
+from .counters import NO_COUNTERS, Counters
 from .numeric_updates import as_assignment
 from .totality import Totality
 
@@ -67,6 +68,10 @@ class Slicing:
     # and the rawbytes data they are packed into, whose contents the projection resets
     sent_counters: tuple = ()
     sent_bytes: frozenset = frozenset()
+    # ((file, line) of a sliced counter's guard, (file, line) in its body): the reduced
+    # search decides the guard on the reset value, so it says nothing of the body's reach
+    # (``counters``); coverage counts the body reached where the guard ran
+    undecided_lines: frozenset = frozenset()
 
     @property
     def empty(self) -> bool:
@@ -82,12 +87,13 @@ def atom_keys_of(atom_texts: Iterable[str]) -> set[str]:
 
 
 def find_slicing(program: Program, atom_texts: Iterable[str] = (),
-                 moves_unobserved: bool = False) -> Slicing:
+                 moves_unobserved: bool = False, counters: Counters = NO_COUNTERS) -> Slicing:
     """The data no check of ``program`` against atoms ``atom_texts`` can observe;
     ``moves_unobserved``: the check leaves the robot's position out (moves do not change
     the state), so data that only shapes moves' targets is sliced too, on the assumption
-    ``move_shaping`` states."""
-    analysis = _Analysis(program)
+    ``move_shaping`` states; ``counters``: indices proven in bounds and the guards that
+    wrap them (``counters``), which pass their data on instead of being observed."""
+    analysis = _Analysis(program, counters)
     if not analysis.run():
         return NO_SLICING
     atom_keys = atom_keys_of(atom_texts)
@@ -101,8 +107,8 @@ def find_slicing(program: Program, atom_texts: Iterable[str] = (),
             moves.observe(atom_keys)
             shaping = relevant - moves.closure()
             relevant = relevant - shaping
-    counters, sent_bytes = _sent_counters(program, atom_keys, relevant)
-    relevant = relevant - counters
+    sent, sent_bytes = _sent_counters(program, atom_keys, relevant)
+    relevant = relevant - sent
     sliced_globals = tuple(
         data.slot for data in program.globals
         if ("G", data.slot) not in relevant and data.key not in atom_keys
@@ -118,10 +124,12 @@ def find_slicing(program: Program, atom_texts: Iterable[str] = (),
         {("L", routine, slot) for routine, slots in sliced_locals.items() for slot in slots}
     total_writes = frozenset(span for span, key in analysis.total_writes.items()
                              if key in sliced)
+    undecided = frozenset((guard, line) for slot, guard, line in counters.arm_lines
+                          if ("G", slot) in sliced)
     return Slicing(sliced_globals, sliced_locals, total_writes,
                    tuple(_named(program, key) for key in sorted(shaping & sliced)),
-                   tuple(_named(program, key) for key in sorted(counters & sliced)),
-                   sent_bytes)
+                   tuple(_named(program, key) for key in sorted(sent & sliced)),
+                   sent_bytes, undecided)
 
 
 def _sent_counters(program: Program, atom_keys: set[str], relevant: set) -> tuple:
@@ -205,8 +213,9 @@ class _Analysis:
 
     totality_type = Totality        # which expressions never fail
 
-    def __init__(self, program: Program):
+    def __init__(self, program: Program, counters: Counters = NO_COUNTERS):
         self.program = program
+        self.counters = counters
         self.relevant: set[Key] = set()
         self.flows: dict[Key, set[Key]] = {}
         self.total_writes: dict = {}     # span of ``x := e`` with ``e`` total -> x's key
@@ -285,6 +294,18 @@ class _Analysis:
         kind = type(statement).__name__
         if kind == "Assignment":
             self.assignment(statement)
+        elif kind == "If" and statement.span in self.counters.guards:
+            written = {self.key(inner.target.name) for inner in statement.branches[0].body
+                       if isinstance(inner, ast.Assignment)
+                       and isinstance(inner.target, ast.NameRef)}
+            for inner in statement.branches[0].body:       # Incr x: the counter too
+                update = as_assignment(inner, self.routine.scope.lookup)
+                if update is not None:
+                    written.add(self.key(update.target.name))
+            for key in written - {None}:
+                self.flows.setdefault(key, set()).update(self.keys_read(
+                    statement.branches[0].condition))
+            self.block(statement.branches[0].body)
         elif kind in ("If",):
             for branch in statement.branches:
                 self.seed(branch.condition)
@@ -325,12 +346,17 @@ class _Analysis:
     def assignment(self, statement: ast.Assignment) -> None:
         target = statement.target
         root = target
+        bounded = statement.span in self.counters.bounded_writes
+        passed: set = set()                # indices proven in bounds: they choose the element
         while isinstance(root, (ast.Index, ast.Component)):
             if isinstance(root, ast.Index):
                 for index in root.indices:
-                    self.seed(index)       # an index may be out of bounds
+                    if bounded:
+                        passed.update(self.keys_read(index))
+                    else:
+                        self.seed(index)   # an index may be out of bounds
             root = root.base
-        sources = set(self.keys_read(statement.value))
+        sources = set(self.keys_read(statement.value)) | passed
         symbol = self.symbol(root.name) if isinstance(root, ast.NameRef) else None
         target_key = self.key(root.name) if symbol is not None else None
         if self.routine.namespace == ENVIRONMENT_NAMESPACE or target_key is None or \
@@ -341,7 +367,8 @@ class _Analysis:
                 self.relevant.add(target_key)
             return
         if target is not root or not self.totality.assignable(statement.value, symbol.type):
-            self.relevant.update(sources)   # whether the assignment fails depends on them
+            # whether the assignment fails depends on them (not on an index in bounds)
+            self.relevant.update(sources - passed)
         else:
             self.total_writes[statement.span] = target_key
         if target_key is not None:
