@@ -25,6 +25,7 @@ from typing import Iterable, Optional
 from ...diagnostics import ORDER_REDUCTION, Diagnostic
 from ...semantics.program import Program
 from .merging import LOCATION_ATOMS, _has_next, merge_points, merging_allowed
+from .unread_outputs import OutputResets, unread_outputs
 from .partial_order import PartialOrder, reaches_data_by_name
 from .liveness import DeadData
 from .projection import Projection
@@ -83,6 +84,9 @@ def plan_reductions(program: Program, config, atoms: Iterable[str],
     if dead is not None and dead.empty:
         dead = None
     projection = Projection(program, slicing, dead) if not slicing.empty or dead else None
+    outputs = unread_outputs(program, keys) if reductions.slice_data else ()
+    if outputs:
+        projection = OutputResets(outputs, projection)
     points: dict = {}
     formulas = list(formulas)
     if reductions.merge_steps and None not in formulas and \
