@@ -26,6 +26,7 @@ from ...diagnostics import ORDER_REDUCTION, Diagnostic
 from ...semantics.program import Program
 from .counters import NO_COUNTERS, find_counters
 from .merging import LOCATION_ATOMS, _has_next, merge_points, merging_allowed
+from .unread_outputs import OutputResets, unread_outputs
 from .partial_order import PartialOrder, reaches_data_by_name
 from .liveness import DeadData
 from .projection import Projection
@@ -87,6 +88,9 @@ def plan_reductions(program: Program, config, atoms: Iterable[str],
     if dead is not None and dead.empty:
         dead = None
     projection = Projection(program, slicing, dead) if not slicing.empty or dead else None
+    outputs = unread_outputs(program, keys) if reductions.slice_data else ()
+    if outputs:
+        projection = OutputResets(outputs, projection)
     points: dict = {}
     if reductions.merge_steps and None not in formulas and \
             merging_allowed(program, formulas, keys, bool(config.free_inputs)):

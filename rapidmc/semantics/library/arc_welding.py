@@ -7,7 +7,7 @@ modelled.
 from __future__ import annotations
 
 from .arguments import NAME_ONLY, no_effect
-from .motion import move_robot
+from .motion import _move, _move_ext_j, move_robot
 from .registry import NO_EFFECT, NOT_MODELLED, ROBOT_STATE, compiled
 
 _WELD = "seamdata Seam, welddata Weld \\weavedata Weave"
@@ -52,8 +52,16 @@ compiled(*(f"{name}{robot}({_ON_OFF}, robtarget ToPoint {_FULL})"
 # Evidence: a public cladding program calls `RecoveryPosSet;` before its weld and
 # `RecoveryPosReset;` after it, without arguments; ABB's station templates (PartR2S2 ...)
 # name the pair for error handling. They switch the path recorder used by the weld error
-# recovery, which rapidmc does not model: no effect. The recovery menus, the process name
-# and ArcMoveExtJ are known from the name list only.
+# recovery, which rapidmc does not model: no effect. The recovery menus and the process name
+# are known from the name list only.
 compiled("RecoveryPosSet()", "RecoveryPosReset()", modelled=NO_EFFECT)(no_effect)
-compiled("RecoveryMenu(...)", "RecoveryMenuWR(...)", "SetWRProcName(...)", "ArcMoveExtJ(...)",
+compiled("RecoveryMenu(...)", "RecoveryMenuWR(...)", "SetWRProcName(...)",
          modelled=NOT_MODELLED)(NAME_ONLY)
+
+
+# ArcMoveExtJ moves only the external axes within a weld, as MoveExtJ does outside one.
+# Evidence: a public gantry welding backup (taeyangshim, issue 28) calls it between
+# SyncMoveOn and SyncMoveOff as `ArcMoveExtJ jTempGantry{1}\ID:=10,vWeld{1},fine;`; a check
+# that reached the call stopped with RMC305 (the gantry task HOLDS at 191,371 states now).
+_move("ArcMoveExtJ(jointtarget ToJointPos \\identno ID, speeddata Speed \\num T, "
+         "zonedata Zone \\stoppointdata Inpos)", modelled=ROBOT_STATE)(_move_ext_j)
