@@ -38,7 +38,7 @@ enum { TASK_RUNS = 1 };
 /* what the partial-order reduction says of a task's instruction (model/packed/table.py's
  * ``_order_flags``): independent and invisible (an ample candidate); its step always
  * changes the state; it joins the step of its task before it (a merged local run) */
-enum { ORDER_CANDIDATE = 1, ORDER_NEVER_WAITS = 2, ORDER_MERGEABLE = 4 };
+enum { ORDER_CANDIDATE = 1, ORDER_NEVER_WAITS = 2, ORDER_MERGEABLE = 4, ORDER_GROUPS = 8 };
 
 /* opcodes of the step machine (mirrored in rapidmc/model/packed/bytecode.py) */
 enum {
@@ -2480,6 +2480,38 @@ static int task_python_ample(PackedTable *table, Py_ssize_t id, Py_ssize_t task,
     return outcome < 0 ? -1 : VM_DONE;
 }
 
+/* The ample set of a group of tasks at state ``id`` (numbered ``here``), decided by Python
+ * (``python_group_ample``): VM_DONE (``found``), NO_AMPLE (none), -1. */
+static int group_python_ample(PackedTable *table, Py_ssize_t id, Py_ssize_t here,
+                              Successors *found)
+{
+    PyObject *answer = PyObject_CallMethod((PyObject *)table, "python_group_ample", "nn",
+                                           id, here);
+    if (answer == NULL)
+        return -1;
+    if (answer == Py_False) {
+        Py_DECREF(answer);
+        return NO_AMPLE;
+    }
+    int outcome = found_from_pairs(answer, found);
+    Py_DECREF(answer);
+    return outcome < 0 ? -1 : VM_DONE;
+}
+
+/* An ample set Python gave (``found``) is kept: counted, and the observer hears the lines
+ * its transitions ran (each one kept).  0 or -1. */
+static int python_ample_kept(PackedTable *table, Scratch *scratch, const Successors *found)
+{
+    table->task_python_steps++;
+    scratch->changed.length = 0;
+    for (Py_ssize_t i = 0; table->labels_wanted && i < found->count; i++)
+        if (vector32_push(&scratch->changed, 2) < 0)
+            return -1;
+    if (table->labels_wanted && tell_python_spans(table, &scratch->changed, found->count) < 0)
+        return -1;
+    return 0;
+}
+
 static int ample_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Successors *found)
 {
     Stored at;
@@ -2529,17 +2561,8 @@ static int ample_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Succe
                 return outcome;
             /* the machine does not take the task's step or run: Python decides for it */
             outcome = task_python_ample(table, id, task, here, found);
-            if (outcome == VM_DONE) {
-                table->task_python_steps++;
-                /* (the observer hears the lines they ran: each one kept) */
-                scratch->changed.length = 0;
-                for (Py_ssize_t i = 0; table->labels_wanted && i < found->count; i++)
-                    if (vector32_push(&scratch->changed, 2) < 0)
-                        return -1;
-                if (table->labels_wanted &&
-                        tell_python_spans(table, &scratch->changed, found->count) < 0)
-                    return -1;
-            }
+            if (outcome == VM_DONE && python_ample_kept(table, scratch, found) < 0)
+                return -1;
             if (outcome != NO_AMPLE)
                 return outcome;
             continue;
@@ -2556,7 +2579,21 @@ static int ample_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Succe
         scratch->pending.length = 0;
     }
     found->count = 0;
-    return NO_AMPLE;
+    /* no task alone: a group of the tasks whose next steps touch the same data
+     * (``task_groups``), where some running task's instruction may be in one */
+    int groups = 0;
+    for (Py_ssize_t task = 0; task < tasks && !groups && running > 2; task++) {
+        const int32_t *info = table->context_tasks + (context * tasks + task) * TASK_INFO;
+        groups = info[0] >= 0 && (order_flags(table, task, info[0],
+                                              task_pc(table, at.frame_id, info[1])) &
+                                  ORDER_GROUPS);
+    }
+    if (!groups)
+        return NO_AMPLE;
+    int outcome = group_python_ample(table, id, here, found);
+    if (outcome == VM_DONE && python_ample_kept(table, scratch, found) < 0)
+        return -1;
+    return outcome;
 }
 
 /* Where a choice was tried (``scratch->numbered``), the targets of the transitions kept

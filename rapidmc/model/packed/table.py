@@ -59,6 +59,7 @@ TASK_RUNS = 1                          # per task of a context: the machine may 
 ORDER_CANDIDATE = 1                    # per task and instruction (``_order_flags``)
 ORDER_NEVER_WAITS = 2
 ORDER_MERGEABLE = 4
+ORDER_GROUPS = 8                       # it may be in an ample set of several tasks
 MAX_TASKS = 64
 REMEMBERED_VECTORS = 256               # states whose vectors are remembered (reduced search)
 TASK_STEPS_KEPT = 1 << 13              # one task's Python steps kept (``_task_step``)
@@ -279,6 +280,8 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
                     (ORDER_CANDIDATE if order.is_ample_candidate(task, index, pc) else 0) |
                     (ORDER_NEVER_WAITS if order.never_waits(index, pc) else 0) |
                     (ORDER_MERGEABLE if runs is not None and runs.mergeable(task, index, pc)
+                     else 0) |
+                    (ORDER_GROUPS if self.tasks > 2 and order.groups.may_join(task, index, pc)
                      else 0)
                     for pc in range(len(routine.code))))
             flags.append(per_routine)
@@ -499,6 +502,29 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         have the whole state stepped by Python (the task cannot be stepped alone, or it
         has an idle step, which only the other tasks' steps tell to keep or drop)."""
         return self._task_step(state_id, task, here)
+
+    def python_group_ample(self, state_id: int, here: int):
+        """The ample set of a group of tasks at a state of several tasks, numbered
+        ``here``, where no task alone has one (``_packed.c``'s ``ample_step``): its
+        transitions' parts (frame id, data id), as ``PartialOrder.ample`` picks them
+        (``TaskGroups.choose``), or False."""
+        if self._stepping[0] != state_id:
+            self._stepping, self._python_spans = (state_id, None), []
+        state = self._stepping[1]
+        if state is None:
+            state = self[state_id]
+            self._stepping = (state_id, state)
+        stacks = (state[0],) + state[10]
+        running = [task for task, stack in enumerate(stacks) if stack]
+        chosen = self.system.order.groups.choose(
+            state, stacks, running, self.system.config, here,
+            lambda task, found: [(spans, after) for after, _, spans
+                                 in self._task_targets(state, task, found)])
+        if chosen is None:
+            return False
+        if self._labels_wanted():
+            self._python_spans = [spans for spans, _ in chosen]
+        return [self.intern_parts(*self._vectors(after)) for _, after in chosen]
 
     def _task_step(self, state_id: int, task: int, here: int):
         """``python_task_successors`` (``here`` -1) or ``python_task_ample``, kept by the

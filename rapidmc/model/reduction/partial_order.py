@@ -43,7 +43,11 @@ Checking*, ch. 10) is every transition of one task ``t`` when
   equal states, equal keys); a successor whose key has a number no greater than
   the state's counts as numbered before it (a collision only expands fully).
 
-Otherwise the state is expanded fully.  With merged steps on, each transition
+Where no task alone qualifies, the ample set may be the transitions of a group
+of tasks: those whose next instructions touch data the others' code names
+(``task_groups``: T_ROB1 and T_ROB2 at a handshake on a PERS flag, without a
+third task polling its own data).  Otherwise the state is expanded fully.
+With merged steps on, each transition
 then runs on through its task's next independent, invisible instructions
 (``local_runs``, SPIN's statement merging between processes).  The reduced graph keeps every verdict
 of the LTL properties without X (next) over these atoms, reachability of
@@ -67,7 +71,7 @@ from ... import ast
 from ...load.shared_data import data_uses
 from ...semantics.configured_signals import walk_routine
 from ...semantics.instructions import (Action, Branch, Call, ControlAction, EndRoutine,
-                                       ForInit, ForNext, Jump, Return)
+                                       ForInit, ForNext, Jump, Return, Wait)
 from ...semantics.library.tasks import SyncWait
 from ...semantics.program import ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE, Program
 from ...semantics.scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA
@@ -77,6 +81,7 @@ from ...semantics.step import successors as semantic_successors
 from ..state_keys import StateKeys
 from .local_runs import LocalRuns
 from .relevance import DATA_BY_NAME
+from .task_groups import TaskGroups
 from .syntax_footprint import (LOCAL, SHARED, VISIBLE, Footprint, ReferenceParameters,
                                StatementFootprints, SyntaxReads)
 
@@ -116,24 +121,23 @@ class PartialOrder:
         # per task: the slots it may write (no other task's code names them: a PERS that
         # every task declares, in a module each loads, is still one task's when only its
         # code reads or writes it), and those it may read (written by no other task)
-        self.own = [frozenset(slot for slot, by in accessors.items()
-                              if -1 not in by and not any(slot in used[other]
-                                                          for other in by if other != task))
-                    for task in range(tasks)]
-        self.stable = [frozenset(slot for slot, by in accessors.items()
-                                 if not any(written[other] and slot in written[other]
-                                            for other in by if other != task))
-                       for task in range(tasks)]
+        self._sharing = (accessors, written, used)
+        self.own, self.stable = self._sharing_sets(lambda task, by: by)
         self.entries = (program.entry,) + tuple(program.task_entries)
         # a barrier (WaitSyncTask, SyncMoveOn/Off) observes whether its partners have ended
         self.barriers = any(isinstance(instruction, SyncWait)
                             for routine in program.routines for instruction in routine.code)
         self._local: dict = {}          # (task, routine, pc) -> bool
         # data written outside the loaded code (PERS a PC writes): each read a choice
-        outside = getattr(program, "outside_data", None) or {}
-        reads = SyntaxReads(self.stable, outside, ReferenceParameters(program))
-        self.syntax = StatementFootprints(reads, self.own, visible_names, self._visible_local,
-                                          [data.key for data in program.globals])
+        self._outside = getattr(program, "outside_data", None) or {}
+        self._references = ReferenceParameters(program)
+        self.syntax = self._statements(self.own, self.stable)
+        # the footprints against one other task alone (``view``): that task -> (own,
+        # stable, statements); None: against no other task
+        self._views: dict = {}
+        self._undoing: Optional[set] = None     # the tasks with an UNDO handler
+        self.groups = TaskGroups(self)
+        self.project = project
         self.keys = StateKeys()
         # the cycle proviso's numbering of states (``StatePlaces``), made when first asked:
         # ``places_made`` gives it (a system sets it: its packed table's, in the compiled
@@ -163,6 +167,10 @@ class PartialOrder:
         places = self.places()
         here = places.number(state)
         chosen = self._choose(state, stacks, running, successors, config, here)
+        if chosen is None and len(running) > 2:
+            chosen = self.groups.choose(state, stacks, running, config, here,
+                                        lambda task, found: self._labelled(state, found,
+                                                                           config))
         if chosen is None:
             chosen = successors if self.runs is None else self.runs.extend(state, successors,
                                                                            config)
@@ -190,6 +198,14 @@ class PartialOrder:
                             for _, after in mine):
                 return mine
         return None
+
+    def _labelled(self, state: State, found: list, config) -> list:
+        """One task's transitions ``found`` (``task_transitions``) as the system gives
+        them: labelled, projected, run on through the task's local instructions."""
+        project = self.project
+        entries = [((label, span, output), after if project is None else project(after))
+                   for label, span, after, output, _ in found]
+        return entries if self.runs is None else self.runs.extend(state, entries, config)
 
     def _invisible_step(self, task: int, state: State, after: State, config,
                         here: int) -> bool:
@@ -236,9 +252,13 @@ class PartialOrder:
             found = self._local[key] = footprint.independent and not footprint.visible
         return found
 
-    def footprint(self, task: int, routine_index: int, pc: int) -> "Footprint":
+    def footprint(self, task: int, routine_index: int, pc: int,
+                  view: Optional[tuple] = None) -> "Footprint":
         """What the instruction at ``pc`` of ``routine`` touches, as far as the other tasks
-        and the atoms are concerned (see ``Footprint``)."""
+        and the atoms are concerned (see ``Footprint``); ``view``: (own, stable,
+        statements) judged against some of the other tasks only (``view``), else all."""
+        own, stable, syntax = view or (self.own, self.stable, self.syntax)
+        readable = stable[task]
         routine = self.program.routines[routine_index]
         instruction = routine.code[pc]
         kind = type(instruction)
@@ -249,25 +269,27 @@ class PartialOrder:
         if kind is ForNext:
             return self._local_write(routine, instruction.slot)
         if kind is ForInit:
-            if instruction.fusion is None or not self._reads_allowed(task, *instruction.fusion):
+            if instruction.fusion is None or \
+                    not self._reads_allowed(readable, *instruction.fusion):
                 return SHARED
             return self._local_write(routine, instruction.slot)
         if kind is Branch:
             if pc in (instruction.target_true, instruction.target_false):
                 return SHARED
-            if instruction.fusion is not None and self._reads_allowed(task, instruction.fusion):
+            if instruction.fusion is not None and \
+                    self._reads_allowed(readable, instruction.fusion):
                 return LOCAL
             # a condition the fused step does not take (an indexed array ...) or whose
             # compiled form reads through a reference: what it reads, from its syntax
-            return LOCAL if self.syntax.reads.allowed(task, routine,
+            return LOCAL if syntax.reads.allowed(task, routine,
                                                       instruction.expression) else SHARED
         if kind is Call:
             # entering a procedure without arguments pushes a frame of the task's own
             if not instruction.binders and instruction.routine.kind == "PROC":
                 return LOCAL
-            return self.syntax.call(task, routine, instruction)
+            return syntax.call(task, routine, instruction)
         if kind is Return and instruction.value_fn is not None:
-            return self.syntax.returned(task, routine, instruction)
+            return syntax.returned(task, routine, instruction)
         if kind is EndRoutine or kind is Return and instruction.value_fn is None:
             # leaving a procedure writes only the task's frames; the task's last one ends
             # the task, which a barrier waiting for it observes (``blocked_at_barrier``)
@@ -277,17 +299,71 @@ class PartialOrder:
             return SHARED if ends_task and self.barriers else LOCAL
         if kind is Action and instruction.fusion is not None:
             where, slot, value = instruction.fusion
-            if self._reads_allowed(task, value):
+            if self._reads_allowed(readable, value):
                 if where != "store":
                     return self._local_write(routine, slot)
-                if slot in self.own[task]:
+                if slot in own[task]:
                     return VISIBLE if self.program.globals[slot].key in self.visible \
                         else LOCAL
+        if kind is Wait and view is not None:
+            # (in a group only: its task may wait there, ``task_groups``)
+            return syntax.wait(task, routine, instruction)
+        if kind is ControlAction and view is not None and \
+                syntax.restarts_cycle(routine, instruction):
+            # (in a group only) ExitCycle: the task's frames, unless an UNDO handler runs
+            return SHARED if self._undoes(task) else LOCAL
         if kind is Action or kind is ControlAction:
             # an element or component, Incr, a call's output, a read through a reference
             # ... (``syntax_footprint``)
-            return self.syntax.statement(task, routine, instruction)
+            return syntax.statement(task, routine, instruction)
         return SHARED
+
+    def view(self, other: Optional[int]) -> tuple:
+        """(own, stable, statements) as if ``other`` were the only other task (None: as
+        if there were none), for ``footprint``: an instruction LOCAL there touches
+        nothing that task's code names or writes (``TaskGroups``)."""
+        found = self._views.get(other)
+        if found is None:
+            others = frozenset(() if other is None else (other,))
+            own, stable = self._sharing_sets(lambda task, by: others & by)
+            found = self._views[other] = (own, stable, self._statements(own, stable))
+        return found
+
+    def _undoes(self, task: int) -> bool:
+        """Whether a routine of the task has an UNDO handler (ExitCycle would run it)."""
+        if self._undoing is None:
+            self._undoing = {_task_of_namespace(routine.namespace)
+                             for routine in self.program.routines if routine.undo_pc >= 0}
+        return task in self._undoing
+
+    def task_of_routine(self, routine: int) -> Optional[int]:
+        """The task whose code declares the routine (None: the environment's)."""
+        return _task_of_namespace(self.program.routines[routine].namespace)
+
+    def _sharing_sets(self, others_of) -> tuple[list, list]:
+        """Per task, the global slots it may write and those it may read, given the tasks
+        ``others_of(task, by)`` of those naming a slot (``by``) that count."""
+        accessors, written, used = self._sharing
+        own, stable = [], []
+        for task in range(len(self.names)):
+            own.append(frozenset(slot for slot, by in accessors.items()
+                                 if -1 not in by and not any(
+                                     slot in used[other] for other in others_of(task, by)
+                                     if other != task)))
+            stable.append(frozenset(slot for slot, by in accessors.items()
+                                    if not any(written[other] and slot in written[other]
+                                               for other in others_of(task, by)
+                                               if other != task)))
+        return own, stable
+
+    def _statements(self, own: list, stable: list) -> StatementFootprints:
+        reads = SyntaxReads(stable, self._outside, self._references)
+        found = StatementFootprints(reads, own, self.visible, self._visible_local,
+                                    [data.key for data in self.program.globals])
+        first = getattr(self, "syntax", None)
+        if first is not None:        # (what the syntax says, found once for every view)
+            reads._loops, found._nodes = first.reads._loops, first._nodes
+        return found
 
     def never_waits(self, routine_index: int, pc: int) -> bool:
         """Whether a step of the instruction at ``pc`` always changes the state (moves the
@@ -308,14 +384,16 @@ class PartialOrder:
         atom names it or its routine."""
         return VISIBLE if self._visible_local(routine, slot) else LOCAL
 
-    def _reads_allowed(self, task: int, *compiled) -> bool:
-        """Whether the expressions read only data no other task writes, and no signal."""
+    @staticmethod
+    def _reads_allowed(readable: frozenset, *compiled) -> bool:
+        """Whether the expressions read only data of ``readable`` (the global slots no
+        other task writes), and no signal."""
         for expression in compiled:
             source = expression.source
             if source is None or "cx" in source:
                 return False
             for slot in _STORE_READ.findall(source):
-                if int(slot) not in self.stable[task]:
+                if int(slot) not in readable:
                     return False
         return True
 

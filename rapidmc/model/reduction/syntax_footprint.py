@@ -50,6 +50,7 @@ from typing import Callable, NamedTuple, Optional
 from ... import ast
 from ...semantics.instructions import Call, LateCall
 from ...semantics.library import registry
+from ...semantics.library.program_control import RESTARTS_CYCLE
 from ...semantics.scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE
 from .merging import _walk
 from .numeric_updates import as_assignment, target_root
@@ -289,6 +290,23 @@ class StatementFootprints:
         if routine.kind != "FUNC" or not isinstance(node, ast.Return) or node.value is None:
             return SHARED
         return LOCAL if self.reads.allowed(task, routine, node.value) else SHARED
+
+    def wait(self, task: int, routine, instruction) -> Footprint:
+        """A WaitUntil without a time limit: it reads its condition and moves on or stays
+        (a task there may wait; ``task_groups`` tells the two apart in each state)."""
+        node = self._node(routine, instruction.span)
+        if instruction.timeout is not None or instruction.flag_ref is not None or \
+                instruction.rerun is not None or not isinstance(node, ast.ProcedureCall) or \
+                node.name.key != "WAITUNTIL":
+            return SHARED
+        return LOCAL if self._arguments_allowed(task, routine, node) else SHARED
+
+    def restarts_cycle(self, routine, instruction) -> bool:
+        """Whether the instruction is ExitCycle: its task starts its entry routine again
+        (its frames only, and the UNDO handlers of the routines it leaves)."""
+        node = self._node(routine, instruction.span)
+        return isinstance(node, ast.ProcedureCall) and node.name.key in RESTARTS_CYCLE and \
+            routine.scope.lookup(node.name.key) is None
 
     def _arguments_allowed(self, task: int, routine, call) -> bool:
         return all(argument.kind != ast.CONDITIONAL and
