@@ -140,7 +140,7 @@ def _sent_counters(program: Program, atom_keys: set[str], relevant: set) -> tupl
     if not analysis.sent_bytes or not analysis.run():
         return set(), frozenset()
     analysis.observe(atom_keys)
-    found = {key for key in analysis.counters()
+    found = {key for key in analysis.sent_counters()
              if not any(_data_key(program, into) in atom_keys for into in analysis.packed[key])}
     counters = (found - analysis.closure()) & relevant
     return counters, frozenset(into for key in counters for into in analysis.packed[key])

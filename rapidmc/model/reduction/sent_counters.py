@@ -133,7 +133,7 @@ def _count_literal(expr, low: int, high: int) -> bool:
 
 class SentCounters(_Analysis):
     """``relevance``'s analysis with a pack of a counter into bytes only sent read as not
-    reading the counter; ``counters()`` then tells which such counters the rest of the
+    reading the counter; ``sent_counters()`` then tells which such counters the rest of the
     program leaves irrelevant (module docstring)."""
 
     def __init__(self, program):
@@ -209,7 +209,7 @@ class SentCounters(_Analysis):
             return None
         return size if size in WIDE_SIZES else None
 
-    def counters(self) -> set[Key]:
+    def sent_counters(self) -> set[Key]:
         """The packed counters that count as the module docstring says: the others are
         seeded (their packs read them after all)."""
         found = set()
