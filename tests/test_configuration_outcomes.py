@@ -8,10 +8,11 @@ from __future__ import annotations
 
 import pytest
 
+from rapidmc.check import native
 from rapidmc.semantics.library.configuration_outcomes import read_key, remember, remembered
 from tests.test_realworld import cli
 
-ENGINES = ("native", "python")
+ENGINES = native.ENGINES if native.available() else (native.PYTHON,)
 
 # the same instance read twice: the second read cannot fail once the first has found it
 TWICE = """MODULE Twice

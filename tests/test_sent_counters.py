@@ -26,10 +26,13 @@ from pathlib import Path
 import pytest
 
 from rapidmc import api
+from rapidmc.check import native
 from rapidmc.model.reduction.relevance import find_slicing
 
 from test_dead_data import (check_report, commuting_failures, verdicts,
                             verdicts_agree_and_replay)
+
+ENGINES = native.ENGINES if native.available() else (native.PYTHON,)
 
 SEEDS = range(30)
 
@@ -153,7 +156,7 @@ ENDLESS_LOCAL = ENDLESS.replace("    PERS num sent := 0;\n", "") \
     .replace("        SocketCreate sock;\n", "        Add sent, 2;\n        SocketCreate sock;\n")
 
 
-@pytest.mark.parametrize("engine", ["native", "python"])
+@pytest.mark.parametrize("engine", ENGINES)
 @pytest.mark.parametrize("text, named", [(ENDLESS, "sent (sender.mod:3)"),
                                          (ENDLESS_LOCAL, "main.sent (sender.mod:4)")])
 def test_an_endless_sender_holds_with_its_counter_left_out(tmp_path, engine, text, named):
