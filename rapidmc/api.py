@@ -268,13 +268,14 @@ def _check_config(program: Program, atoms: AtomCompiler, options: CheckOptions,
     derived ``messages`` per reading site; and the default input domains assumed."""
     domains, assumed = free_input_domains(program, atoms, options.input_domains,
                                           options.exact_input_domains)
-    observed = observed_inputs(program, atoms)
+    facts = _input_facts(program, atoms)
+    observed = None if facts.observed is None else set(facts.observed)
     config = CheckConfig(program, options.tp_answers, options.fk_answers, domains,
                          observed=observed)
     if options.edge_inputs:
-        config.edge_inputs = edge_inputs(program, atoms, observed)
+        config.edge_inputs = dict(facts.edges)
     config.time_check = time_check       # the running search's time limit, inside a step
-    config.robot_untracked = not options.track_robot and robot_untracked(program, atoms)
+    config.robot_untracked = not options.track_robot and facts.robot_untracked
     if options.socket_messages:
         config.socket_messages = tuple(options.socket_messages)
     for kind, name in DERIVED_DOMAINS.items():
@@ -284,6 +285,32 @@ def _check_config(program: Program, atoms: AtomCompiler, options: CheckOptions,
     if options.file_lines:
         config.file_lines = tuple(options.file_lines)
     return config, assumed
+
+
+@dataclass(frozen=True)
+class _InputFacts:
+    """What the code's walks tell about the inputs and the robot, for ``_check_config``."""
+    observed: Optional[frozenset]        # observed_inputs (None: every input)
+    edges: dict                          # edge_inputs
+    robot_untracked: bool                # robot_tracking.robot_untracked
+
+
+def _input_facts(program: Program, atoms: AtomCompiler) -> _InputFacts:
+    """``_InputFacts`` of ``program`` against the atoms ``atoms`` has compiled, computed once
+    per program, atoms and what those atoms read: a check's coverage probes build a config
+    for each probe message (over a hundred in a socket server), and these walks of the whole
+    program were a third of such a check's time."""
+    key = (frozenset(atoms.observed), atoms.observes_signal_data, atoms.observes_robot,
+           None if atoms.observed_data is None else frozenset(atoms.observed_data))
+    memo = atoms.input_facts if atoms.program is program else {}
+    facts = memo.get(key)
+    if facts is None:
+        observed = observed_inputs(program, atoms)
+        facts = _InputFacts(None if observed is None else frozenset(observed),
+                            edge_inputs(program, atoms, observed),
+                            robot_untracked(program, atoms))
+        memo[key] = facts
+    return facts
 
 
 def _probe_bound(results: list) -> int:

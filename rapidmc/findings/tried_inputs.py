@@ -174,10 +174,14 @@ def start_position_reads(program: Program) -> list:
     shape moves' targets (``InputFlow.position_reads_kept``): until a move puts the
     robot somewhere, they read the check's home position, where a real robot may be
     anywhere."""
-    routines = [routine for routine in program.routines
-                if routine.ast is not None and routine.namespace != ENVIRONMENT_NAMESPACE]
-    return InputFlow(routines, frozenset(), False,
-                     tuple(program.globals)).position_reads_kept()
+    reads = program.analyses.get("start position reads")
+    if reads is None:
+        routines = [routine for routine in program.routines
+                    if routine.ast is not None and routine.namespace != ENVIRONMENT_NAMESPACE]
+        reads = tuple(InputFlow(routines, frozenset(), False,
+                                tuple(program.globals)).position_reads_kept())
+        program.analyses["start position reads"] = reads
+    return list(reads)
 
 
 def unset_output_reads(program: Program) -> list:

@@ -215,6 +215,9 @@ class AtomCompiler:
         self.observed_data: Optional[set] = set()
         self.observes_robot = False           # an atom reads a robot's position (CRobT ...)
         self.expressions: list = []           # the atoms compiled, as expressions
+        # what the program's inputs are to a check against these atoms (api._input_facts),
+        # by what the atoms read: computed once for the many configs of coverage probes
+        self.input_facts: dict = {}
 
     def _note_signals(self, expr: ast.Expr) -> None:
         for symbol in self.symbols(expr):

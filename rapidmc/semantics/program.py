@@ -172,6 +172,10 @@ class Program:
     outside_data: dict = field(default_factory=dict)
     # slots of that data a wait reads whole at its stored value (too many combinations)
     whole_reads_fixed: frozenset = frozenset()
+    # results of analyses of the whole linked program that several findings ask for
+    # (name -> result): a big backup's walks are seconds each, and the code does not
+    # change once linked
+    analyses: dict = field(default_factory=dict, repr=False, compare=False)
 
     def signal(self, key: str) -> Optional[Signal]:
         return self.signal_index.get(key)
