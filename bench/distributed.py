@@ -268,6 +268,8 @@ def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
             "worker_bytes": [f["bytes"] for f in figures],
             "worker_cpu": [f["cpu_seconds"] for f in figures],
             "worker_step_cpu": [f["step_seconds"] for f in figures],
+            "worker_idle": [f["wall_seconds"] - f["step_wall"] for f in figures],
+            "worker_calls": [f["calls"] for f in figures],
             "worker_states": [f["states"] for f in figures]}
 
 
@@ -463,6 +465,10 @@ def print_safety(names, modulo: int, workers: int) -> None:
                            sorted(every.items(), key=lambda item: -item[1]) if seconds >= 0.005)
         print(f"{'':16} every process: {total:.2f} s of CPU, {total / single['cpu']:.2f}x one "
               f"process's ({others})", flush=True)
+        print(f"{'':16} idle (wall seconds outside the steps, from the start of the search): "
+              f"{_each(spread['worker_idle'], '.2f')} s of {spread['seconds']:.2f} s; "
+              f"{spread['levels']} rounds; calls served {_each(spread['worker_calls'], 'd')}",
+              flush=True)
         print(f"{'':16} worker memory: {_each([kb / 1024 for kb in spread['worker_start_rss_kb']], '.0f')}"
               f" MB at the start, peak {_each([kb / 1024 for kb in spread['worker_rss_kb']], '.0f')}"
               f" MB (anonymous and file pages, Ray's shared object store apart: "

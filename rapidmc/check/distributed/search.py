@@ -198,6 +198,7 @@ class _Rounds:
         return steps
 
     def _result(self, verdict: str, path=None) -> tuple:
+        self.ray.get(call(self.actors[0], SAFETY, "settle"))
         figures = self.ray.get([call(actor, SAFETY, "figures") for actor in self.actors])
         stored = sum(f["states"] for f in figures)
         memory = sum(f["bytes"] for f in figures)
