@@ -126,19 +126,17 @@ class Flow:
         return True
 
     def _collect(self, wait: float) -> None:
-        """Take the answers of the calls that have ended (the oldest of each worker's, in
-        order), waiting up to ``wait`` seconds for one if none has."""
-        heads = {target: calls[0] for target, calls in enumerate(self.calls) if calls}
-        if not heads:
+        """Take the answers of the calls that have ended (each worker's in the order of the
+        calls), waiting up to ``wait`` seconds for one if none has."""
+        count = self.count
+        if not any(self.calls):
             return
-        ended = set(self.ready([refs[self.count] for target, refs in heads.items()
-                                if target not in self.local], wait))
-        for target, refs in heads.items():
-            if self.outcome is not None:
-                return
-            if target in self.local or refs[self.count] in ended:
-                self.calls[target].popleft()
-                self._figures_of(target, refs, keep=True)
+        ended = set(self.ready([refs[count] for target, calls in enumerate(self.calls)
+                                if target not in self.local for refs in calls], wait))
+        for target, calls in enumerate(self.calls):
+            while calls and self.outcome is None and \
+                    (target in self.local or calls[0][count] in ended):
+                self._figures_of(target, calls.popleft(), keep=True)
 
     def _figures_of(self, target: int, refs, keep: bool) -> None:
         figures, mine = self.get([refs[self.count], refs[0]])
@@ -183,7 +181,7 @@ def ray_ready(refs: list, wait: float) -> list:
     if not refs:
         return []
     ended, _ = ray.wait(refs, num_returns=1, timeout=wait)
-    if ended:
+    if ended and len(refs) > 1:
         ended, _ = ray.wait(refs, num_returns=len(refs), timeout=0)
     return ended
 

@@ -32,7 +32,9 @@ rounds of their levels, on 16 about four fifths (docs/distributed.md).  Every st
 still stored once and expanded once (the same states, transitions and deadlocks), and the
 predicate asked of each before it is stepped; but a state may be stored deeper than its
 breadth-first depth, with a longer path to it: a counterexample replays, but may be longer
-than one process's, and the depth is not counted.
+than one process's, and the depth is not counted.  The leader drives an eager search's
+calls (``flow``) without lock-step rounds: each call steps for a bounded CPU time and
+answers with its batches, which the leader passes on at once (``flow.Flow``).
 """
 from __future__ import annotations
 
