@@ -183,6 +183,7 @@ class Partition:
         self.step_wall = 0.0                   # wall seconds in ``step`` (the rest: waits)
         self.wall_started = self.frozen_at = time.monotonic()
         self.calls = 0                         # calls of ``step`` or ``flow`` served
+        self.spans: list = []                  # ... each one's wall-clock start and end
         self.per_state = 0.0                   # CPU seconds an expanded state took, lately
         self.sent_bytes = 0                    # bytes of the batches to other partitions
         self.start_rss_kb = _peak_rss_kb()      # the process's peak before this search
@@ -237,11 +238,12 @@ class Partition:
         """``method(*args)``, its CPU and wall seconds counted; then the survivors frozen
         (``freeze``: after every call; else at most every ``FREEZE_EVERY`` seconds, as the
         leader's own slices of a ``flow`` are a few milliseconds each)."""
-        started, began = time.process_time(), time.monotonic()
+        started, began, at = time.process_time(), time.monotonic(), time.time()
         self.calls += 1
         try:
             return method(*args)
         finally:
+            self.spans.append((at, time.time()))
             if freeze or began > self.frozen_at + FREEZE_EVERY:
                 freeze_survivors()
                 self.frozen_at = time.monotonic()
@@ -494,7 +496,7 @@ class Partition:
                 "engine": engine_of(table),
                 "cpu_seconds": time.process_time() - self.cpu_started,
                 "step_seconds": self.step_seconds, "sent_bytes": self.sent_bytes,
-                "step_wall": self.step_wall, "calls": self.calls,
+                "step_wall": self.step_wall, "calls": self.calls, "spans": self.spans,
                 "wall_seconds": time.monotonic() - self.wall_started,
                 "start_rss_kb": self.start_rss_kb, "peak_private_kb": self.peak_private_kb,
                 "peak_shared_kb": self.peak_shared_kb,
