@@ -2,6 +2,7 @@
 
 Usage: python bench/distributed.py [--issue] [--eager] [--counters 6,7] [--modulo 4] [--only NAME]
                                    [--workers 2] [--ltl] [--split] [--rounds [--payload B]]
+                                   [--start-memory]
 
 For each model, each in a fresh process: the run-time error search of a check (breadth-first,
 the whole reachable state space, since these programs have no run-time error), once in one
@@ -32,6 +33,12 @@ property of each case study (specs/) and the counters' (``G`` of every counter b
 modulo), all of which hold, so the whole product is searched: in one process
 (``check_property``, partial-order reduction off as on a cluster) against OWCTY on the
 workers (``owcty``), with the one process's CPU seconds against the busier worker's.
+
+``--start-memory``: a worker's memory as it starts (a plain process and a Ray actor): RSS
+after numpy, the search's modules, the counters N=10 model and its table.
+
+Each worker's idle time (wall seconds outside its calls) and how long none, one or both
+workers were inside a call are printed under each model.
 
 ``--split``: without Ray, two partitions driven in one process (``partition.search_here``):
 their CPU seconds together against one process's, and the bytes they sent per state.
@@ -268,7 +275,31 @@ def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
             "worker_bytes": [f["bytes"] for f in figures],
             "worker_cpu": [f["cpu_seconds"] for f in figures],
             "worker_step_cpu": [f["step_seconds"] for f in figures],
+            "worker_idle": [f["wall_seconds"] - f["step_wall"] for f in figures],
+            "worker_calls": [f["calls"] for f in figures],
+            "stepping": stepping_together([f["spans"] for f in figures]),
             "worker_states": [f["states"] for f in figures]}
+
+
+def measure_start_memory() -> None:
+    """bench/worker_memory.py's stages in a fresh plain process and in a Ray actor."""
+    run = subprocess.run([sys.executable, str(HERE / "worker_memory.py")],
+                         capture_output=True, text=True, check=True)
+    print(run.stdout.strip(), flush=True)
+
+
+def stepping_together(spans: list) -> list:
+    """Wall seconds in which 0, 1, ... of the workers were inside a call (``spans``: each
+    worker's calls' wall-clock starts and ends), from the first call's start to the last
+    one's end: where the lock-step rounds made them step in turn, and the waits."""
+    edges = sorted((moment, change) for calls in spans for start, end in calls
+                   for moment, change in ((start, 1), (end, -1)))
+    seconds = [0.0] * (len(spans) + 1)
+    inside, before = 0, edges[0][0] if edges else 0.0
+    for moment, change in edges:
+        seconds[inside] += moment - before
+        inside, before = inside + change, moment
+    return seconds
 
 
 class _Relayed:
@@ -399,10 +430,15 @@ def main() -> None:
                         help="bytes of a batch for --rounds")
     parser.add_argument("--eager", action="store_true",
                         help="the workers search eagerly (rounds without levels)")
+    parser.add_argument("--start-memory", action="store_true",
+                        help="a worker's memory as it starts, stage by stage")
     parser.add_argument("--measure", nargs=2, default=None, help=argparse.SUPPRESS)
     args = parser.parse_args()
     global EAGER
     EAGER = args.eager
+    if args.start_memory:
+        measure_start_memory()
+        return
     if args.rounds:
         print(f"uptime at the start: {uptime()}", flush=True)
         measure_rounds(args.payload)
@@ -463,6 +499,11 @@ def print_safety(names, modulo: int, workers: int) -> None:
                            sorted(every.items(), key=lambda item: -item[1]) if seconds >= 0.005)
         print(f"{'':16} every process: {total:.2f} s of CPU, {total / single['cpu']:.2f}x one "
               f"process's ({others})", flush=True)
+        print(f"{'':16} idle (wall seconds outside the steps, from the start of the search): "
+              f"{_each(spread['worker_idle'], '.2f')} s of {spread['seconds']:.2f} s; "
+              f"{spread['levels']} rounds; calls served {_each(spread['worker_calls'], 'd')}; "
+              f"workers stepping (none/one/both...) {_each(spread['stepping'], '.2f')} s",
+              flush=True)
         print(f"{'':16} worker memory: {_each([kb / 1024 for kb in spread['worker_start_rss_kb']], '.0f')}"
               f" MB at the start, peak {_each([kb / 1024 for kb in spread['worker_rss_kb']], '.0f')}"
               f" MB (anonymous and file pages, Ray's shared object store apart: "

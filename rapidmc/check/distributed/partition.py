@@ -32,7 +32,9 @@ rounds of their levels, on 16 about four fifths (docs/distributed.md).  Every st
 still stored once and expanded once (the same states, transitions and deadlocks), and the
 predicate asked of each before it is stepped; but a state may be stored deeper than its
 breadth-first depth, with a longer path to it: a counterexample replays, but may be longer
-than one process's, and the depth is not counted.
+than one process's, and the depth is not counted.  The leader drives an eager search's
+calls (``flow``) without lock-step rounds: each call steps for a bounded CPU time and
+answers with its batches, which the leader passes on at once (``flow.Flow``).
 """
 from __future__ import annotations
 
@@ -178,6 +180,11 @@ class Partition:
         self._frozen.enter_context(frozen_while_searching())
         self.cpu_started = time.process_time()  # (figures: CPU seconds of this search)
         self.step_seconds = 0.0                # ... of which in ``step`` (the rest: Ray's)
+        self.step_wall = 0.0                   # wall seconds in ``step`` (the rest: waits)
+        self.wall_started = self.frozen_at = time.monotonic()
+        self.calls = 0                         # calls of ``step`` or ``flow`` served
+        self.spans: list = []                  # ... each one's wall-clock start and end
+        self.per_state = 0.0                   # CPU seconds an expanded state took, lately
         self.sent_bytes = 0                    # bytes of the batches to other partitions
         self.start_rss_kb = _peak_rss_kb()      # the process's peak before this search
         self.peak_private_kb = 0               # (``_note_memory``)
@@ -215,12 +222,33 @@ class Partition:
         transitions, deadlocks, the first deadlocked state when those are targets or -1,
         whether ``watch`` said True, the level's states still to expand here).  Nothing is
         sent once a target was found."""
-        started = time.process_time()
+        return self._timed(self._step, advance, senders, batches)
+
+    def flow(self, seconds: float, senders: Sequence[int], *batches) -> tuple:
+        """A call of an eager search driven without lock-step (``flow.Flow``): ``receive``,
+        then ``_eager_round`` for at most ``seconds`` of CPU.  Its figures are ``step``'s,
+        then how many batches it wrote for each partition (none where it sent nothing)."""
+        return self._timed(self._flow, seconds, senders, batches, freeze=False)
+
+    def _flow(self, seconds: float, senders: Sequence[int], batches) -> tuple:
+        self.receive(senders, *batches)
+        return self._eager_round(0, seconds)
+
+    def _timed(self, method, *args, freeze: bool = True) -> tuple:
+        """``method(*args)``, its CPU and wall seconds counted; then the survivors frozen
+        (``freeze``: after every call; else at most every ``FREEZE_EVERY`` seconds, as the
+        leader's own slices of a ``flow`` are a few milliseconds each)."""
+        started, began, at = time.process_time(), time.monotonic(), time.time()
+        self.calls += 1
         try:
-            return self._step(advance, senders, batches)
+            return method(*args)
         finally:
-            freeze_survivors()
+            self.spans.append((at, time.time()))
+            if freeze or began > self.frozen_at + FREEZE_EVERY:
+                freeze_survivors()
+                self.frozen_at = time.monotonic()
             self.step_seconds += time.process_time() - started
+            self.step_wall += time.monotonic() - began
             self._note_memory()
 
     def _note_memory(self, always: bool = False) -> None:
@@ -257,35 +285,47 @@ class Partition:
         outgoing[self.index] = b""
         return (*outgoing, (stored, new, *figures, self.level_end - self.expanded))
 
-    def _eager_round(self, new: int) -> tuple:
+    def _eager_round(self, new: int, seconds: Optional[float] = None) -> tuple:
         """``_step``'s round of an ``eager`` search: the states stored and not yet expanded,
         ``EAGER_SLICE`` at a time, each slice's own successors stored at once (so the next
-        slice expands them), until none is left or the round expanded ``ROUND`` states
-        (what survives out of the cycle collector's reach every ``FREEZE_EVERY`` seconds:
-        a round of the interrupts model, stepped in Python, cost a third more without);
-        for each other partition the list of the slices' batches.  The same figures as
-        ``_step``'s, the level being every state stored."""
+        slice expands them), until none is left or the round expanded ``ROUND`` states or
+        (``seconds``) spent that much CPU, its slices then sized to about that by the CPU a
+        state took lately (what survives out of the cycle collector's reach
+        every ``FREEZE_EVERY`` seconds: a round of the interrupts model, stepped in Python,
+        cost a third more without); for each other partition the list of the slices'
+        batches (of those that sent it states).  The same figures as ``_step``'s, the
+        level being every state stored, then the number of batches for each partition and
+        the CPU seconds a state took lately."""
         table, index, last = self.table, self.index, self.expanded + ROUND
         sending: list = [[] for _ in range(self.count)]
         frozen = time.monotonic()
+        began = time.thread_time()
         while True:
-            self.level_end = min(len(table), last, self.expanded + EAGER_SLICE)
+            size = EAGER_SLICE
+            if seconds is not None and self.per_state > 0:
+                size = max(16, min(EAGER_SLICE, int(seconds / self.per_state)))
+            first, sliced = self.expanded, time.thread_time()
+            self.level_end = min(len(table), last, self.expanded + size)
             *outgoing, figures = self.expand()
+            if self.expanded > first:
+                self.per_state = (time.thread_time() - sliced) / (self.expanded - first)
             for target, batch in enumerate(outgoing):
-                if target != index:
+                if target != index and batch is not None:
                     sending[target].append(batch)
             if figures[0] >= 0 or figures[3] >= 0:            # (the search ends here)
                 break
             self.own = outgoing[index]
             self.receive(())
-            if self.expanded == len(table) or self.expanded >= last:
+            if self.expanded == len(table) or self.expanded >= last or \
+                    (seconds is not None and time.thread_time() - began > seconds):
                 break
             if time.monotonic() > frozen + FREEZE_EVERY:   # (as one process's search does)
                 freeze_survivors()
                 frozen = time.monotonic()
         self.level_end = len(table)
         sending[index] = b""
-        return (*sending, (len(table), new, *figures, self.level_end - self.expanded))
+        return (*sending, (len(table), new, *figures, self.level_end - self.expanded,
+                           [len(batches) for batches in sending], self.per_state))
 
     def _nothing(self) -> list:
         return [self.codec.encode(target, self.codec.outbox()) for target in range(self.count)]
@@ -393,9 +433,12 @@ class Partition:
         self.transitions += transitions
         self.deadlocks += deadlocks
         self.sent += sum(sent) - sent[index]
-        outgoing = [codec.encode(target, outboxes[target]) for target in range(self.count)]
+        # (an eager search sends no batch without states: the codecs hand what a batch
+        # would have carried over with the next one)
+        outgoing = [None if self.eager and target != index and not sent[target] else
+                    codec.encode(target, outboxes[target]) for target in range(self.count)]
         self.sent_bytes += sum(len(batch) for target, batch in enumerate(outgoing)
-                               if target != index)
+                               if target != index and batch is not None)
         return [*outgoing,
                 (-1, self.transitions, self.deadlocks, deadlock_target, self.watched)]
 
@@ -405,15 +448,28 @@ class Partition:
     def lead(self, peers: Sequence, initial: bytes, max_states, per_level: bool) -> None:
         """Drive the search's rounds from here (``rounds`` module docstring): this is the
         first partition, ``peers`` the others (actors, or ``_Here`` in one process)."""
+        from .flow import Flow, local_ready, ray_ready
         from .rounds import Levels, local_values, ray_values
         here = {0} | {index for index, peer in enumerate(peers, 1) if isinstance(peer, _Here)}
-        get = local_values if len(here) == self.count else ray_values
-        self.levels = Levels([_Here(self), *peers], here, get, max_states, per_level)
+        alone = len(here) == self.count
+        get = local_values if alone else ray_values
+        parts = [_Here(self), *peers]
+        if self.eager:
+            self.levels = Flow(parts, here, get, local_ready if alone else ray_ready,
+                               max_states, per_level)
+        else:
+            self.levels = Levels(parts, here, get, max_states, per_level)
         self.levels.begin(initial)
 
     def rounds(self, seconds: float) -> dict:
         """The leader's rounds for about ``seconds`` (``rounds.Levels.run``)."""
         return self.levels.run(seconds)
+
+    def settle(self) -> None:
+        """The leader's calls still in flight ended (before the figures are read)."""
+        levels = getattr(self, "levels", None)
+        if levels is not None and hasattr(levels, "drain"):
+            levels.drain()
 
     def step_back(self, state_id: int) -> tuple[Hashable, int]:
         """The state with this id and the link to its parent (``NO_PARENT`` for an initial one)."""
@@ -440,6 +496,8 @@ class Partition:
                 "engine": engine_of(table),
                 "cpu_seconds": time.process_time() - self.cpu_started,
                 "step_seconds": self.step_seconds, "sent_bytes": self.sent_bytes,
+                "step_wall": self.step_wall, "calls": self.calls, "spans": self.spans,
+                "wall_seconds": time.monotonic() - self.wall_started,
                 "start_rss_kb": self.start_rss_kb, "peak_private_kb": self.peak_private_kb,
                 "peak_shared_kb": self.peak_shared_kb,
                 "max_rss_kb": _peak_rss_kb(), "pid": os.getpid(),

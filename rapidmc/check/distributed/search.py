@@ -9,7 +9,8 @@ current level, sorting their successors by owner (one batch per owner, handed fr
 actor through Ray's object store, never through this process; the batch for itself it
 keeps).  A level ends once every partition expanded its share; a level that stores nothing
 new ends a complete search.  The first partition's worker drives the rounds
-(``rounds.Levels``); this process asks it for a slice of rounds at a time.
+(``rounds.Levels``; an eager search's calls without lock-step, ``flow.Flow``); this
+process asks it for a slice of rounds at a time.
 
 A violation is found in the level of its depth, as in the one-process search, so the path is
 as short; it is rebuilt by following parent links from partition to partition, and its
@@ -198,6 +199,7 @@ class _Rounds:
         return steps
 
     def _result(self, verdict: str, path=None) -> tuple:
+        self.ray.get(call(self.actors[0], SAFETY, "settle"))
         figures = self.ray.get([call(actor, SAFETY, "figures") for actor in self.actors])
         stored = sum(f["states"] for f in figures)
         memory = sum(f["bytes"] for f in figures)
