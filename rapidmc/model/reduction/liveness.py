@@ -10,7 +10,9 @@ body instruction that may raise, what the handler reads is live, and so is
 what is live where its RETRY (the start of the raising statement) and
 TRYNEXT (the statement after it) go back to.  Jumps, a procedure's end,
 assignments ``x := e`` to a name and conditions that are total
-(``Totality``) never raise.  Inside a handler the raising statement is not
+(``Totality``) never raise.  Where the raising statement's error numbers are
+known (``raised_errors``), the handler's tests of ERRNO take only the branches
+those numbers take.  Inside a handler the raising statement is not
 known: RETRY and TRYNEXT may continue anywhere, as may instructions the
 analysis does not recognise, which also use everything.
 
@@ -50,6 +52,7 @@ from ...semantics.library.motion import MOVE_ROUTINES
 from ...semantics.library.program_control import CALLS_BY_NAME, RESTARTS_CYCLE
 from ...semantics.scope import ROUTINE
 from .merging import JUMP_FIELDS, nodes_by_span
+from .raised_errors import ErrnoTests, StatementErrors
 from .relevance import DATA_BY_NAME, Resolver, is_value, routine_data
 from .totality import Totality
 
@@ -96,7 +99,7 @@ class DeadData:
             if not tracked:
                 continue
             live, in_handler = _live_in(routine, tracked, reads,
-                                        routine.index == program.entry)
+                                        routine.index == program.entry, program)
 
             def dead(candidates: list, kind: tuple, live_here: set) -> tuple:
                 return tuple(slot for slot in candidates if (*kind, slot) not in live_here)
@@ -223,8 +226,8 @@ def _calls(node) -> Iterator:
             yield from _calls(getattr(node, field))
 
 
-def _live_in(routine, tracked: set, reads: dict,
-             entry: bool = False) -> tuple[list[set], dict]:
+def _live_in(routine, tracked: set, reads: dict, entry: bool = False,
+             program: Optional[Program] = None) -> tuple[list[set], dict]:
     """(live(pc) ∩ tracked for every pc, live((pc, e)) for every pc of the ERROR handler
     and every statement start ``e`` an error may come from), by backward iteration to a
     fixed point.
@@ -271,17 +274,37 @@ def _live_in(routine, tracked: set, reads: dict,
             start = getattr(code[pc], "start", None)
             known = isinstance(start, int) and 0 <= start < body_end
             graph.raises.append(leaving + [(handler, start) if known else handler])
+    errors = _errors_by_start(code, nodes, body_end, StatementErrors(totality))
+    tests = ErrnoTests(program, routine, nodes) if handler >= 0 and program is not None \
+        else None
     for start in sorted({target[1] for raised in graph.raises for target in raised
                          if isinstance(target, tuple)}):
-        _add_handler_copy(graph, code, in_handler, start, leaving)
+        _add_handler_copy(graph, code, in_handler, start, leaving, tests, errors.get(start))
     live = graph.fixed_point()
     return live[:len(code)], {node: live[index] for node, index in graph.copies.items()}
 
 
+def _errors_by_start(code, nodes: dict, body_end: int, known: StatementErrors) -> dict:
+    """Statement start -> the errors its instructions may raise (``raised_errors``; None:
+    any)."""
+    errors: dict = {}
+    for pc in range(body_end):
+        start = getattr(code[pc], "start", None)
+        if not isinstance(start, int):
+            continue
+        raised = known.errors(nodes.get(code[pc].span)) if type(code[pc]) is Action else None
+        before = errors.get(start, frozenset())
+        errors[start] = None if raised is None or before is None else before | raised
+    return errors
+
+
 def _add_handler_copy(graph: "_Graph", code, in_handler: range, start: int,
-                      leaving: list) -> None:
+                      leaving: list, tests: Optional[ErrnoTests] = None,
+                      errors: Optional[frozenset] = None) -> None:
     """The ERROR handler's instructions once more, for errors raised by the statement that
-    starts at ``start``: RETRY goes back to it, TRYNEXT to the statement after it."""
+    starts at ``start``: RETRY goes back to it, TRYNEXT to the statement after it.  A test
+    of ERRNO the statement's ``errors`` decide takes only the branches they may take
+    (``raised_errors.ErrnoTests``)."""
     after = getattr(code[start], "after", None)
     after = after if isinstance(after, int) and 0 <= after < len(code) else None
     for pc in in_handler:
@@ -293,8 +316,9 @@ def _add_handler_copy(graph: "_Graph", code, in_handler: range, start: int,
         elif isinstance(instruction, TryNext):
             targets = [after] if after is not None else list(range(len(code)))
         else:
+            taken = tests.targets(pc, errors) if tests is not None else None
             targets = [graph.copies.get((target, start), target)
-                       for target in graph.successors[pc]]
+                       for target in (graph.successors[pc] if taken is None else taken)]
         graph.uses.append(graph.uses[pc])
         graph.defines.append(graph.defines[pc])
         graph.successors.append(targets)

@@ -14,7 +14,18 @@ expressions and answers "not total" for everything else:
   2^104), so ERR_NUM_LIMIT cannot happen;
 * string ``+`` when the longest possible result fits 80 characters;
 * ``NumToStr(a, d)`` with ``a`` a total num and ``d`` a literal 0..6 (at
-  most 41 + d characters: 39 digits of the largest float32, sign, point).
+  most 41 + d characters: 39 digits of the largest float32, sign, point);
+* an element ``a{i}`` of array data with literal indices within its declared
+  bounds;
+* the robot's position, joints, tool or work object of the calling task
+  (``CRobT``, ``CJointT``, ``CPos``, ``CTool``, ``CWObj`` with no ``\\TaskName``
+  or ``\\TaskRef``; ``\\Tool`` and ``\\WObj`` name data): the model reads them
+  from the state and never raises (``semantics.library.position``).
+
+An aggregate ``[e1, ..., en]`` has no type of its own: it is *assignable* to a
+record of n components, or an array of n elements, when each ``ei`` is
+assignable to its part, a numeric literal within num's range included (9E9,
+an axis the robot lacks).
 """
 from __future__ import annotations
 
@@ -23,12 +34,18 @@ from typing import Callable, Optional
 from ... import ast
 from ...semantics.scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA
 from ...semantics.types import ArrayType, RapidType
-from ...semantics.values import NUM_MAX_DECIMALS, STRING_MAX
+from ...semantics.errors import RapidError
+from ...semantics.types import RECORD
+from ...semantics.values import NUM_MAX_DECIMALS, STRING_MAX, to_num
 
 SMALL_LITERAL = 2 ** 20
 LITERAL = "<literal>"             # a small numeric literal: takes the other operand's type
 NUMERIC = ("NUM", "DNUM", LITERAL)
 NUM_TO_STR_DIGITS = 41
+# the readings of the calling task's robot -> the type they return
+ROBOT_READINGS = {"CROBT": "ROBTARGET", "CJOINTT": "JOINTTARGET", "CPOS": "POS",
+                  "CTOOL": "TOOLDATA", "CWOBJ": "WOBJDATA"}
+ROBOT_READING_ARGUMENTS = frozenset({"TOOL", "WOBJ"})
 
 # what a total expression yields: (type key, longest string length)
 Info = tuple[str, int]
@@ -45,6 +62,12 @@ class Totality:
 
     def assignable(self, expr, target_type) -> bool:
         """``expr`` is total and storing it in ``target_type`` needs no conversion that may fail."""
+        if isinstance(expr, ast.Aggregate):
+            parts = _parts(target_type, len(expr.items))
+            return parts is not None and \
+                all(self.assignable(item, part) for item, part in zip(expr.items, parts))
+        if isinstance(expr, ast.NumLiteral) and _type_key(target_type) in ("NUM", "DNUM"):
+            return _in_num_range(expr.value)
         info = self.info(expr)
         if info is None:
             return False
@@ -84,6 +107,23 @@ class Totality:
             return None
         return (key, STRING_MAX if key == "STRING" else 0)
 
+    def _Index(self, expr: ast.Index) -> Optional[Info]:
+        if not isinstance(expr.base, ast.NameRef):
+            return None
+        symbol = self.lookup(expr.base.name)
+        if symbol is None or symbol.kind not in (GLOBAL_DATA, LOCAL_DATA, CONSTANT) or \
+                symbol.optional or not isinstance(symbol.type, ArrayType) or \
+                len(expr.indices) != symbol.type.rank:
+            return None
+        for index, size in zip(expr.indices, symbol.type.dims):
+            if not isinstance(index, ast.NumLiteral) or size is None or \
+                    index.value != int(index.value) or not 1 <= index.value <= size:
+                return None
+        key = _type_key(symbol.type.element)
+        if key is None:
+            return None
+        return (key, STRING_MAX if key == "STRING" else 0)
+
     # --------------------------------------------------------- operators
     def _Unary(self, expr: ast.Unary) -> Optional[Info]:
         operand = self.info(expr.operand)
@@ -116,6 +156,8 @@ class Totality:
         return None
 
     def _FunctionCall(self, expr: ast.FunctionCall) -> Optional[Info]:
+        if expr.name.key in ROBOT_READINGS:
+            return self._robot_reading(expr)
         if expr.name.key != "NUMTOSTR" or len(expr.args) != 2:
             return None
         value, decimals = expr.args
@@ -132,6 +174,42 @@ class Totality:
         if self.lookup(expr.name) is not None:
             return None                    # a user routine of that name
         return ("STRING", NUM_TO_STR_DIGITS + int(digits.value))
+
+
+    def _robot_reading(self, expr: ast.FunctionCall) -> Optional[Info]:
+        """The calling task's robot read (``ROBOT_READINGS``), its tool and work object
+        named by data (the model does not evaluate them), or None."""
+        if self.lookup(expr.name) is not None:
+            return None                    # a user routine of that name
+        for argument in expr.args:
+            if argument.kind != ast.OPTIONAL or argument.name is None or \
+                    argument.name.key not in ROBOT_READING_ARGUMENTS or \
+                    not isinstance(argument.value, ast.NameRef) or \
+                    self.lookup(argument.value.name) is not None and \
+                    self.info(argument.value) is None:
+                return None                # predefined data (wobj0) is not in the scope
+        return (ROBOT_READINGS[expr.name.key], 0)
+
+
+def _parts(target_type, count: int) -> Optional[list]:
+    """The types of the ``count`` parts an aggregate fills in ``target_type`` (a record's
+    components, a one-dimensional array's elements), or None when it has another shape."""
+    if isinstance(target_type, ArrayType):
+        if target_type.dims == (count,) and target_type.element.is_value:
+            return [target_type.element] * count
+        return None
+    if isinstance(target_type, RapidType) and target_type.kind == RECORD and \
+            len(target_type.components) == count:
+        return [component.type for component in target_type.components]
+    return None
+
+
+def _in_num_range(value: float) -> bool:
+    try:
+        to_num(value)
+    except RapidError:
+        return False
+    return True
 
 
 def _type_key(rapid_type) -> Optional[str]:
