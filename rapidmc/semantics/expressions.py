@@ -24,6 +24,7 @@ from . import values
 from .errors import RapidError, placeholder_reached
 from .instructions import called_from_wait
 from .machine import ABSENT, GLOBAL, read_at, replace_at
+from .wait_outcomes import WaitRead, by_outcome, note_writes
 from .scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SIGNAL, Symbol
 from .types import (ATOMIC, BOOL, DNUM, NUM, ORIENT, POS, RECORD, SEMI_VALUE, STRING, AnyType,
                     ArrayType, RapidType, is_numeric, same_type)
@@ -34,6 +35,9 @@ from .types import (ATOMIC, BOOL, DNUM, NUM, ORIENT, POS, RECORD, SEMI_VALUE, ST
 # tried only where it ends, so the successors stay few); beyond that the assumption says so
 WHOLE_ARRAY_CHOICES = 64
 WAIT_CHOICES = 4096
+# a WaitUntil's reads of outside data compared with constants choose one value per outcome
+# (``wait_outcomes``; off: every value, the reference the differential tests compare with)
+BY_OUTCOME = True
 
 NOT_CONSTANT = object()
 
@@ -54,6 +58,9 @@ class Compiled:
     # domain), so that a comparison with a constant can choose among fewer values
     # (``decisive_read``)
     free_choice: Optional[tuple] = None
+    # a wait's read of outside data that stores what it takes (``_outside_read_as``):
+    # what a comparison with a constant needs to choose per outcome (``wait_outcomes``)
+    wait_read: Optional[WaitRead] = None
 
     @property
     def is_constant(self) -> bool:
@@ -254,6 +261,9 @@ class ExpressionCompiler:
         # a read compiled while ``in_wait`` chose a value another writer wrote and stores it
         # (``_outside_read``; WaitUntil keeps it only where the wait ends: library.waits)
         self.wait_choices = False
+        # compiling a WaitUntil's condition: the list its reads by outcome note what they
+        # chose in (``wait_outcomes``), else None
+        self.wait_outcomes: Optional[list] = None
         # user FUNC call node (id) -> the slot of its hoisted result: an expression compiled
         # twice (a read and the reference it stores to) calls the function once
         self._hoisted: dict[int, int] = {}
@@ -356,6 +366,7 @@ class ExpressionCompiler:
             ref_fn = self.reference(expr, "read")[0]
             self.wait_choices = True
             ordered = stored_first(domain)
+            pending = self.wait_outcomes
 
             def either(m):
                 ref = ref_fn(m)
@@ -363,8 +374,10 @@ class ExpressionCompiler:
                 taken = m.choose(name, ordered(value))
                 if taken != value:
                     m.write_ref(ref, taken)
+                note_writes(pending, ref, ((),))
                 return taken
-            return Compiled(either, compiled.type)
+            return Compiled(either, compiled.type,
+                            wait_read=WaitRead(ref_fn, [((), name, domain, ordered, True)]))
 
         if outside.observed:
             # a property names it: the value taken is stored, for the atoms to read
@@ -424,7 +437,12 @@ class ExpressionCompiler:
                 for positions, leaf_name, domain, _ in choices:
                     value = replace_at(value, positions, m.choose(leaf_name, domain))
                 return value
-            return Compiled(chosen, compiled.type)
+            # (what it reads goes nowhere but into the value: a comparison with a constant
+            # chooses per outcome anywhere, ``_by_outcome``)
+            ref_fn = self.reference(expr, "read")[0]
+            leaves = [(positions, leaf_name, domain, lambda current, domain=domain: domain,
+                       False) for positions, leaf_name, domain, _ in choices]
+            return Compiled(chosen, compiled.type, wait_read=WaitRead(ref_fn, leaves))
         if not stores:                   # a property names it: the values taken are stored
             ref_fn = self.reference(expr, "read")[0]
 
@@ -444,6 +462,8 @@ class ExpressionCompiler:
         observed = outside.observed
         ordered_choices = [(positions, leaf_name, stored_first(domain) if keeps else domain,
                             keeps) for positions, leaf_name, domain, keeps in choices]
+        pending = self.wait_outcomes
+        written = tuple(positions for positions, _, _, keeps in choices if keeps or observed)
 
         def either(m):
             ref = ref_fn(m)
@@ -462,8 +482,12 @@ class ExpressionCompiler:
                     value = replace_at(value, positions, taken)
             if keep is not old:
                 m.write_ref(ref, keep)
+            note_writes(pending, ref, written)
             return value
-        return Compiled(either, compiled.type)
+        leaves = [(positions, leaf_name, domain,
+                   stored_first(domain) if keeps else (lambda current, domain=domain: domain),
+                   keeps or observed) for positions, leaf_name, domain, keeps in choices]
+        return Compiled(either, compiled.type, wait_read=WaitRead(ref_fn, leaves))
 
     def condition(self, expr: ast.Expr) -> Compiled:
         compiled = self.value(expr)
@@ -759,6 +783,7 @@ class ExpressionCompiler:
                 raise error(TYPE_MISMATCH, "arrays cannot be compared with = or <>", expr.span)
         compare = operator.eq if expr.op == "=" else operator.ne
         left, right = decisive_read(compare, left, right)
+        left, right = self._by_outcome(compare, left, right)
         return self._fold(_binary(compare, left, right), BOOL, left, right,
                           template=COMPARISON_SOURCES[expr.op])
 
@@ -769,8 +794,30 @@ class ExpressionCompiler:
                             f"{type_name(side.type)}", expr.span)
         compare = {"<": operator.lt, "<=": operator.le, ">": operator.gt, ">=": operator.ge}[expr.op]
         left, right = decisive_read(compare, left, right)
+        left, right = self._by_outcome(compare, left, right)
         return self._fold(_binary(compare, left, right), BOOL, left, right,
                           template=COMPARISON_SOURCES[expr.op])
+
+    def _by_outcome(self, compare: Callable, left: Compiled, right: Compiled) -> tuple:
+        """The operands of ``compare``, where one is a read of outside data that chooses
+        (a wait's, or a whole record's or array's that stores nothing) and the other a
+        constant: the read chooses one value per outcome of the comparison
+        (``wait_outcomes``); a read that keeps what it took, only in a WaitUntil's
+        condition."""
+        pending = self.wait_outcomes
+        if not BY_OUTCOME:
+            return left, right
+        for read, other, flipped in ((left, right, False), (right, left, True)):
+            if read.wait_read is None or not other.is_constant:
+                continue
+            if pending is None and any(leaf[4] for leaf in read.wait_read.leaves):
+                return left, right      # (it keeps what it took: only a WaitUntil settles it)
+            fn = by_outcome(read.wait_read, compare, other.constant, flipped, pending)
+            if fn is None:
+                return left, right
+            chosen = Compiled(fn, read.type)
+            return (other, chosen) if flipped else (chosen, other)
+        return left, right
 
     def _arithmetic(self, expr, left: Compiled, right: Compiled) -> Compiled:
         op = expr.op
@@ -842,7 +889,11 @@ class ExpressionCompiler:
                             "here (only predefined functions)", expr.span)
             slot = self._hoisted.get(id(expr))
             if slot is None:
-                slot = self._hoisted[id(expr)] = self.hoist(expr, routine)
+                pending, self.wait_outcomes = self.wait_outcomes, None   # (run before the wait)
+                try:
+                    slot = self._hoisted[id(expr)] = self.hoist(expr, routine)
+                finally:
+                    self.wait_outcomes = pending
             return Compiled(lambda m: m.frames[-1].locals[slot], routine.return_type)
         if symbol is not None:
             raise error(TYPE_MISMATCH, f"'{expr.name.text}' is data, not a function", expr.span)

@@ -5,6 +5,7 @@ from ... import ast
 from ..errors import RapidError
 from ..instructions import ControlAction, Instruction, Wait, WaitRerun
 from ..machine import ABSENT
+from ..wait_outcomes import settle
 from ..timing import advance_to, next_event
 from ..wait_reads import global_reads
 from .arguments import Arguments, argument_expression, no_effect
@@ -121,14 +122,17 @@ def _set_by_both(compiler, call):
 @compiled("WaitUntil(\\switch InPos, bool Cond \\num PollRate \\num MaxTime \\VAR bool TimeFlag "
           f"{_VISUALIZE})")
 def _wait_until(calls, compiler, call, entry):
+    pending = []                     # what its reads by outcome chose (wait_outcomes)
+
     def factory(arguments):
         condition = arguments.value("Cond")
-        return _kept_where_it_ends(condition) if compiler.wait_choices else condition
+        return _kept_where_it_ends(condition, pending) if compiler.wait_choices else condition
     def source(arguments):
         # (a condition that keeps what it read where it ends is Python's alone)
         return None if compiler.wait_choices else arguments.compiled("Cond")
     compiler.in_wait = True          # PERS another party writes too: the wait may end (issue 28)
     compiler.wait_choices = False
+    compiler.wait_outcomes = pending
     hoist, callees, results = compiler.hoist, [], {}
     if hoist is not None:
         def noted(function_call, callee):
@@ -141,6 +145,7 @@ def _wait_until(calls, compiler, call, entry):
         wait = _wait(calls, compiler, call, entry, factory, "WaitUntil condition", source)
     finally:
         compiler.in_wait = False
+        compiler.wait_outcomes = None
         compiler.hoist = hoist
     if callees:                      # called anew when what they read changes
         condition = argument_expression(call, "Cond", 0)
@@ -152,16 +157,22 @@ def _wait_until(calls, compiler, call, entry):
     return wait
 
 
-def _kept_where_it_ends(condition):
+def _kept_where_it_ends(condition, pending: list):
     """``condition``, whose reads of PERS another party writes too store the value they
     take (``ExpressionCompiler._outside_read``), keeping those values only where it holds:
     the code after the wait reads what the wait saw, while a try that keeps the task
     waiting leaves the data as it was.  Else a wait that no value ends would change the
-    state at every try and never be seen to wait forever."""
+    state at every try and never be seen to wait forever.  Reads that took one value per
+    outcome of a comparison (``wait_outcomes``, noted in ``pending``) choose among their
+    class's values only where it holds."""
     def seen(m):
         store = m.store
+        pending.clear()
         if condition(m):
+            settle(m, pending)
+            pending.clear()
             return True
+        pending.clear()
         m.store = store
         return False
     return seen
