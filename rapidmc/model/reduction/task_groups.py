@@ -85,22 +85,25 @@ class TaskGroups:
         return found
 
     def may_join(self, task: int, routine: int, pc: int) -> bool:
-        """Whether the instruction may be in a group that is more than its task: it
-        conflicts with some other task but not with every task."""
+        """Whether the instruction may be in a group other than the one-task ample sets
+        ``PartialOrder`` tries: it conflicts with some other task but not with every
+        task, or with none while it is judged independent in a group only (ExitCycle)."""
         found = self.conflicts(task, routine, pc)
-        return bool(found)
+        return found is not None and (bool(found) or
+                                      not self.order.is_ample_candidate(task, routine, pc))
 
     def candidates(self, stacks: tuple, running: list) -> tuple:
-        """The groups of more than one and fewer than all running tasks, in the order of
-        the task each is built from (each once)."""
+        """The groups of fewer than all running tasks, in the order of the task each is
+        built from (each once), but for the one-task ample sets already tried."""
         key = tuple((task, stacks[task][-1][0], stacks[task][-1][1]) for task in running)
         found = self._groups.get(key)
         if found is None:
             found = []
             for task in running:
                 group = self._closure(task, stacks, set(running))
-                if group is not None and 1 < len(group) < len(running) and \
-                        group not in found:
+                if group is not None and len(group) < len(running) and \
+                        group not in found and (len(group) > 1 or not self.order.
+                                                is_ample_candidate(task, *stacks[task][-1][:2])):
                     found.append(group)
             found = tuple(found)
             if len(self._groups) >= GROUPS_KEPT:
