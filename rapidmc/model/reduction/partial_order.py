@@ -17,7 +17,8 @@ Checking*, ch. 10) is every transition of one task ``t`` when
   every task that reads it) and writes only data no other task's
   code names (its own VAR data, TASK PERS, routine data, its own frames, shared
   PERS that the other tasks declare but never use; a task with GetDataVal or
-  SetDataVal names all it can), reads no signal and calls nothing.  No step of another task depends on it or changes
+  SetDataVal names all it can), reads no signal another task may set or robot
+  another task moves (``cell_uses``) and calls nothing.  No step of another task depends on it or changes
   whether it can run, so the other tasks' steps commute with it.  The last
   ENDPROC of a task ends it, which a barrier (WaitSyncTask, SyncMoveOn/Off)
   observes: with barriers in the program it is not independent;

@@ -35,14 +35,14 @@ found by its span:
 routine data and parameters passed by value, FOR variables, global data no
 other task writes (data only the outside writes, when a read chooses a value and
 stores none: ``outside_free``), signals no other task may write and robots no other
-task moves (``cell_uses``: ``DInput``, ``CRobT(\TaskName:=...)`` ...), through
+task moves (``cell_uses``: ``DInput``, ``CRobT(\\TaskName:=...)`` ...), through
 operators, indices, components, aggregates and predefined functions that are not
 "special" (those compute from their arguments alone: Abs, NumToStr, StrPart,
 Offs ...) or are controller readings the check fixes (GetMotorTorque, MaxRobSpeed:
 ``arguments.fixed``, the call compiled to its value), and user functions, which run
 before the instruction (hoisted: it reads their result from its frame, and the call
 is judged as above).  Signal data bound at run time reads any signal.  Anything else
-is not.  ``Set``, ``Reset``, ``SetDO`` ... (no ``\SDelay``) of a configured signal
+is not.  ``Set``, ``Reset``, ``SetDO`` ... (no ``\\SDelay``) of a configured signal
 no other task's code names write only that signal.  Whether the
 instruction raises an error is not decided here: the reduction checks each
 step it leaves alone (``PartialOrder._invisible_step``).

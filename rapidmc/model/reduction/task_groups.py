@@ -34,7 +34,13 @@ ch. 4), built from one task ``t``:
   every other task of ``G`` waits as before (``waits`` of ``no_deadlock``
   unchanged: the waiting still wait, the others can go on).  At least one task
   of ``G`` does not wait, and a group of every running task is the full
-  expansion and is not tried.
+  expansion and is not tried.  A group of one task is tried where its
+  instruction is independent in a group only (ExitCycle): the one-task ample
+  sets of ``PartialOrder`` already covered the others.
+
+Signals and robots count as data here (``cell_uses``): a signal read conflicts
+with the tasks whose code may set the signal, a robot reading with the task
+moving that robot.
 
 Groups are tried only where no one-task ample set exists, from each running
 task in order, and the first that passes is kept: both engines pick the same

@@ -22,7 +22,6 @@ MODULE ArmOne
     Reset doWatched;                     ! VISIBLE
     here := CRobT();                     ! LOCAL
     joints := CJointT(\TaskName:="T_GANTRY"); ! LOCAL
-    here := CRobT(\TaskName:="task 2 (b_arm)"); ! SHARED
     joints := CJointT(\TaskName:="task 3 (c_logger)"); ! LOCAL
   ENDPROC
 ENDMODULE
