@@ -18,15 +18,22 @@ import random
 PAIR_DATA = {1: "12", 2: "12", 3: "34", 4: "34"}
 
 
-def group_tasks(seed: int, chain: bool = False) -> list[str]:
+def group_tasks(seed: int, chain: bool = False, cell: bool = False) -> list[str]:
+    """``cell``: the tasks also touch signals and robots (``_cell_statement``)."""
     rng = random.Random(seed)
-    return [_task(rng, number, chain) for number in range(1, 5)]
+    return [_task(rng, number, chain, cell) for number in range(1, 5)]
 
 
-def _task(rng: random.Random, number: int, chain: bool) -> str:
+def _task(rng: random.Random, number: int, chain: bool, cell: bool = False) -> str:
     own, pair = f"own{number}", PAIR_DATA[number]
     links = [pair] + (["23"] if chain and number in (2, 3) else [])
-    body = [_statement(rng, own, links) for _ in range(rng.randint(2, 3))]
+    body = [_cell_statement(rng, number, own) if cell and rng.random() < 0.5
+            else _statement(rng, own, links) for _ in range(rng.randint(2, 4 if cell else 3))]
+    if cell and number % 2 == 1:
+        # tasks 1 and 3 move a robot each (one robot per motion task) and set the pair's
+        # output (an atom names do12)
+        body[:0] = [f"      MoveJ Offs(pHome, {own} * 10, 0, 0), v100, fine, tool0;",
+                    f"      SetDO do{pair}, {own} MOD 2;"]
     if rng.random() < 0.4:
         loop = ["    WHILE TRUE DO", *body, "    ENDWHILE"]
     else:
@@ -34,6 +41,9 @@ def _task(rng: random.Random, number: int, chain: bool) -> str:
     declarations = [f"  PERS num link{link} := 0;\n  PERS bool ready{link} := FALSE;"
                     for link in links]
     handler = ["  ERROR", "    TRYNEXT;"] if rng.random() < 0.5 else []
+    if cell:
+        declarations.append("  CONST robtarget pHome := [[500,0,500],[1,0,0,0],[0,0,0,0],"
+                            "[9E9,9E9,9E9,9E9,9E9,9E9]];")
     return "\n".join([f"MODULE Task{number}", *declarations,
                       f"  VAR num {own} := 0;", "  VAR num quotient := 0;",
                       "  PROC main()", *loop, *handler, "  ENDPROC", "ENDMODULE", ""])
@@ -60,9 +70,33 @@ def _statement(rng: random.Random, own: str, links: list) -> str:
     ])
 
 
-def group_properties(seed: int) -> list[str]:
+def _cell_statement(rng: random.Random, number: int, own: str) -> str:
+    """A statement on signals or robots: the odd task of a pair sets the pair's output
+    ``do12``/``do34``, the even one reads it (and may wait for it forever); each task
+    reads free inputs no task sets and sets an output only it names; the robots are read:
+    the task's own, one named by a name no task has (the caller's), or task 1's (a
+    reading of another task's robot)."""
+    pad, pair = "      ", PAIR_DATA[number]
+    shapes = [f"{pad}IF di{number} = 1 THEN\n{pad}  {own} := ({own} + 1) MOD 3;\n{pad}ENDIF",
+              f"{pad}IF DInput(diAll) = 1 {own} := 0;",
+              f"{pad}SetDO doMine{number}, {own} MOD 2;",
+              f"{pad}IF doMine{number} = 1 {own} := 2;",
+              f"{pad}IF CRobT().trans.x > 505 {own} := 1;",
+              f"{pad}IF CJointT(\\TaskName:=\"T_GANTRY\").robax.rax_1 > 1 {own} := 0;"]
+    if number % 2 == 1:
+        shapes += [f"{pad}SetDO do{pair}, {own} MOD 2;", f"{pad}Set do{pair};",
+                   f"{pad}Reset do{pair};", f"{pad}InvertDO do{pair};"]
+    else:
+        shapes += [f"{pad}IF do{pair} = 1 THEN\n{pad}  {own} := 1;\n{pad}ENDIF",
+                   f"{pad}WaitUntil do{pair} = 1;", f"{pad}IF DOutput(do{pair}) = 0 {own} := 0;",
+                   f"{pad}IF CRobT(\\TaskName:=\"task 3 (task3)\").trans.x > 505 {own} := 2;"]
+    return rng.choice(shapes)
+
+
+def group_properties(seed: int, cell: bool = False) -> list[str]:
     rng = random.Random(seed + 700)
-    atoms = ['"link12 = 0"', "ready12", '"own1 = 0"', '"own1 < 2"', '"own1 = link12"']
+    atoms = ['"link12 = 0"', "ready12", '"own1 = 0"', '"own1 < 2"', '"own1 = link12"'] + \
+        (['"do12 = 1"', '"own4 = 1"'] if cell else [])
     shapes = ["G {a}", "F {a}", "G F {a}", "F G {a}", "G ({a} -> F {b})", "{a} U {b}"]
     lines = []
     for number in range(3):

@@ -15,7 +15,7 @@ import pytest
 
 from rapidmc.api import load_program
 from rapidmc.check import native
-from rapidmc.model.reduction import task_groups
+from rapidmc.model.reduction import cell_uses, task_groups
 from rapidmc.model.reduction.partial_order import PartialOrder
 
 from task_group_programs import group_properties, group_tasks
@@ -24,14 +24,15 @@ from test_partial_order import check_json, never_reached, states, verdicts
 needs_native = pytest.mark.skipif(not native.available(), reason="the native core is not built")
 
 
-def write_group_tasks(folder: Path, seed: int) -> list[str]:
+def write_group_tasks(folder: Path, seed: int, cell: bool = False) -> list[str]:
     argv = []
-    for number, text in enumerate(group_tasks(seed, chain=seed % 2 == 1), start=1):
+    for number, text in enumerate(group_tasks(seed, chain=seed % 2 == 1, cell=cell),
+                                  start=1):
         path = folder / f"task{number}.mod"
         path.write_text(text)
         argv += [str(path)] if number == 1 else ["--add-task", str(path)]
     spec = folder / "props.ltl"
-    spec.write_text("\n".join(group_properties(seed)) + "\n")
+    spec.write_text("\n".join(group_properties(seed, cell)) + "\n")
     return argv + ["--ltl", str(spec), "--max-states", "40000"]
 
 
@@ -52,6 +53,95 @@ def test_generated_pairs_of_tasks_report_the_same_with_both_engines(seed, tmp_pa
     document = assert_same_reports(write_group_tasks(tmp_path, seed), monkeypatch,
                                    reuse=seed % 3 != 0)
     assert document["properties"]
+
+
+# the seeds of 0-19 whose unreduced search ends within the bound (1, 6, 9 and 11 reach it)
+CELL_SEEDS = [seed for seed in range(20) if seed not in (1, 6, 9, 11)]
+
+
+@pytest.mark.parametrize("seed", CELL_SEEDS)
+def test_generated_tasks_on_signals_and_robots_keep_their_verdicts(tmp_path, seed):
+    """Signals one task of a pair sets and the other reads (or waits for), free inputs
+    and outputs of one task only, readings of the task's own robot, of a task no task is
+    named (the caller's), and of another motion task's robot (``cell_uses``)."""
+    argv = write_group_tasks(tmp_path, seed, cell=True)
+    reduced, full = check_json(argv), check_json(argv + ["--no-por"])
+    assert "UNKNOWN" not in verdicts(full).values(), states(full)
+    assert verdicts(reduced) == verdicts(full)
+    assert never_reached(reduced) == never_reached(full)
+
+
+@needs_native
+@pytest.mark.parametrize("seed", [0, 3, 6, 11])
+def test_generated_tasks_on_signals_and_robots_report_the_same_with_both_engines(
+        seed, tmp_path, monkeypatch):
+    from test_native_engine import assert_same_reports
+    document = assert_same_reports(write_group_tasks(tmp_path, seed, cell=True),
+                                   monkeypatch, reuse=seed % 2 == 0)
+    assert document["properties"]
+
+
+CELL_READER = """MODULE Reader
+  VAR num seen := 0;
+  PROC main()
+    IF {reading} THEN
+      seen := 1;
+    ENDIF
+  ENDPROC
+ENDMODULE
+"""
+CELL_WRITER = """MODULE Writer
+  CONST robtarget pFar := [[510,0,500],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  PROC main()
+    {writing}
+  ENDPROC
+ENDMODULE
+"""
+CELL_MOVER = CELL_WRITER.replace("Writer", "Mover")
+
+
+def write_cell_tasks(folder: Path, reading: str, writing: str) -> list[str]:
+    """A reader of a signal or a robot, a task writing it, a task moving its own robot."""
+    texts = (CELL_READER.format(reading=reading), CELL_WRITER.format(writing=writing),
+             CELL_MOVER.format(writing="MoveJ pFar, v100, fine, tool0;"))
+    argv = []
+    for number, text in enumerate(texts, start=1):
+        path = folder / f"cell{number}.mod"
+        path.write_text(text)
+        argv += [str(path)] if number == 1 else ["--add-task", str(path)]
+    return argv + ["--formula", 'never_seen: G "seen = 0"']
+
+
+@pytest.mark.parametrize("reading, writing, conflicts", [
+    ("doLamp = 1", "Set doLamp;", {1}),                      # the task setting it
+    ("diFree = 1 AND doLamp = 0", "Set doOther;", set()),    # nobody sets them
+    ('CRobT(\\TaskName:="task 3 (cell3)").trans.x > 505', "Set doOther;", {2}),   # its mover
+    ('CRobT(\\TaskName:="T_GANTRY").trans.x > 505', "MoveJ pFar, v100, fine, tool0;", set()),
+])
+def test_a_reading_conflicts_with_the_tasks_that_change_what_it_reads(tmp_path, reading,
+                                                                     writing, conflicts):
+    argv = write_cell_tasks(tmp_path, reading, writing)
+    program = load_program([argv[0]], add_tasks=argv[2:6:2])
+    order = PartialOrder(program, set())
+    main = program.entry
+    assert order.groups.conflicts(0, main, 0) == frozenset(conflicts)
+
+
+@pytest.mark.parametrize("reading, writing, mutant", [
+    ("doLamp = 1", "Set doLamp;", "signal_readable"),
+    ('CRobT(\\TaskName:="task 2 (cell2)").trans.x > 505', "MoveJ pFar, v100, fine, tool0;",
+     "robot_readable"),
+])
+def test_a_reading_taken_as_independent_loses_a_violation(tmp_path, monkeypatch, reading,
+                                                          writing, mutant):
+    """The differential tests can fail: with a signal (a robot) read as if no task set
+    (moved) it, the reader's step alone is ample at the start, reads the first value and
+    ends, and ``seen = 1`` is never reached, which the writer's step first makes possible."""
+    argv = write_cell_tasks(tmp_path, reading, writing)
+    expected = {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS", "never_seen": "VIOLATED"}
+    assert verdicts(check_json(argv)) == verdicts(check_json(argv + ["--no-por"])) == expected
+    monkeypatch.setattr(cell_uses.CellView, mutant, lambda self, task, what: True)
+    assert verdicts(check_json(argv))["never_seen"] == "HOLDS"
 
 
 HANDSHAKE = """MODULE Task{n}

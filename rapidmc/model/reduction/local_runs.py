@@ -61,6 +61,10 @@ class LocalRuns:
         before it: an invisible merge point that touches only the task's own data."""
         key = (task, routine, pc)
         found = self._mergeable.get(key)
+        if found is None and self.program.reads_task_robots:
+            # (a task cannot be stepped alone there, ``task_transitions``: no run goes on,
+            # and the compiled core's runs keep to that)
+            found = self._mergeable[key] = False
         if found is None:
             kinds = self.points.get(routine)
             point = kinds is not None and pc < len(kinds) and kinds[pc] == INVISIBLE

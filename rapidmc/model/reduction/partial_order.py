@@ -17,7 +17,8 @@ Checking*, ch. 10) is every transition of one task ``t`` when
   every task that reads it) and writes only data no other task's
   code names (its own VAR data, TASK PERS, routine data, its own frames, shared
   PERS that the other tasks declare but never use; a task with GetDataVal or
-  SetDataVal names all it can), reads no signal and calls nothing.  No step of another task depends on it or changes
+  SetDataVal names all it can), reads no signal another task may set or robot
+  another task moves (``cell_uses``) and calls nothing.  No step of another task depends on it or changes
   whether it can run, so the other tasks' steps commute with it.  The last
   ENDPROC of a task ends it, which a barrier (WaitSyncTask, SyncMoveOn/Off)
   observes: with barriers in the program it is not independent;
@@ -80,6 +81,7 @@ from ...semantics.state import RUNNING, State
 from ...semantics.step import successors as semantic_successors
 from ..state_keys import StateKeys
 from .local_runs import LocalRuns
+from .cell_uses import CellUses, CellView
 from .relevance import DATA_BY_NAME
 from .task_groups import TaskGroups
 from .syntax_footprint import (LOCAL, SHARED, VISIBLE, Footprint, ReferenceParameters,
@@ -123,6 +125,8 @@ class PartialOrder:
         # code reads or writes it), and those it may read (written by no other task)
         self._sharing = (accessors, written, used)
         self.own, self.stable = self._sharing_sets(lambda task, by: by)
+        # the signals and robots each task's code touches (``cell_uses``)
+        self.cell = CellUses(program)
         self.entries = (program.entry,) + tuple(program.task_entries)
         # a barrier (WaitSyncTask, SyncMoveOn/Off) observes whether its partners have ended
         self.barriers = any(isinstance(instruction, SyncWait)
@@ -131,7 +135,7 @@ class PartialOrder:
         # data written outside the loaded code (PERS a PC writes): each read a choice
         self._outside = getattr(program, "outside_data", None) or {}
         self._references = ReferenceParameters(program)
-        self.syntax = self._statements(self.own, self.stable)
+        self.syntax = self._statements(self.own, self.stable, frozenset(range(tasks)))
         # the footprints against one other task alone (``view``): that task -> (own,
         # stable, statements); None: against no other task
         self._views: dict = {}
@@ -262,8 +266,8 @@ class PartialOrder:
         routine = self.program.routines[routine_index]
         instruction = routine.code[pc]
         kind = type(instruction)
-        if instruction.reads_io:
-            return SHARED                # a signal: another task or the cell may set it
+        # (a signal read is judged from the syntax: the tasks that may write the signal,
+        # ``cell_uses``; the fused forms below read none)
         if kind is Jump:
             return LOCAL if instruction.target != pc else SHARED
         if kind is ForNext:
@@ -326,7 +330,7 @@ class PartialOrder:
         if found is None:
             others = frozenset(() if other is None else (other,))
             own, stable = self._sharing_sets(lambda task, by: others & by)
-            found = self._views[other] = (own, stable, self._statements(own, stable))
+            found = self._views[other] = (own, stable, self._statements(own, stable, others))
         return found
 
     def _undoes(self, task: int) -> bool:
@@ -356,8 +360,11 @@ class PartialOrder:
                                                if other != task)))
         return own, stable
 
-    def _statements(self, own: list, stable: list) -> StatementFootprints:
-        reads = SyntaxReads(stable, self._outside, self._references)
+    def _statements(self, own: list, stable: list, others: frozenset) -> StatementFootprints:
+        """The footprints from the syntax, judged against the tasks ``others`` (each task
+        against those of them that are not itself)."""
+        cell = CellView(self.cell, [others - {task} for task in range(len(self.names))])
+        reads = SyntaxReads(stable, self._outside, self._references, cell)
         found = StatementFootprints(reads, own, self.visible, self._visible_local,
                                     [data.key for data in self.program.globals])
         first = getattr(self, "syntax", None)

@@ -33,13 +33,17 @@ found by its span:
 
 "Reads only data no other task writes" (``SyntaxReads.allowed``): constants,
 routine data and parameters passed by value, FOR variables, global data no
-other task writes and nobody outside the loaded code writes, through operators,
-indices, components, aggregates and predefined functions that are not
+other task writes (data only the outside writes, when a read chooses a value and
+stores none: ``outside_free``), signals no other task may write and robots no other
+task moves (``cell_uses``: ``DInput``, ``CRobT(\\TaskName:=...)`` ...), through
+operators, indices, components, aggregates and predefined functions that are not
 "special" (those compute from their arguments alone: Abs, NumToStr, StrPart,
 Offs ...) or are controller readings the check fixes (GetMotorTorque, MaxRobSpeed:
-``arguments.fixed``, the call compiled to its value), and user functions, which run before the instruction (hoisted: it reads
-their result from its frame, and the call is judged as above).  A signal or
-anything else is not.  Whether the
+``arguments.fixed``, the call compiled to its value), and user functions, which run
+before the instruction (hoisted: it reads their result from its frame, and the call
+is judged as above).  Signal data bound at run time reads any signal.  Anything else
+is not.  ``Set``, ``Reset``, ``SetDO`` ... (no ``\\SDelay``) of a configured signal
+no other task's code names write only that signal.  Whether the
 instruction raises an error is not decided here: the reduction checks each
 step it leaves alone (``PartialOrder._invisible_step``).
 """
@@ -50,8 +54,11 @@ from typing import Callable, NamedTuple, Optional
 from ... import ast
 from ...semantics.instructions import Call, LateCall
 from ...semantics.library import registry
+from ...semantics.library.arguments import argument_expression
 from ...semantics.library.program_control import RESTARTS_CYCLE
 from ...semantics.scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE
+from ...semantics.types import SEMI_VALUE
+from .cell_uses import physical_signal, signal_data
 from .merging import _walk
 from .numeric_updates import as_assignment, target_root
 
@@ -91,7 +98,14 @@ _ARGUMENTS_ONLY = frozenset({"SOCKETCREATE", "SOCKETBIND", "SOCKETLISTEN", "SOCK
                              "UNPACKRAWBYTES"})
 # predefined functions that read only the data passed to them, by reference too
 # (``Present`` reads whether an optional parameter of the task's own frame is given)
-_READS_ITS_ARGUMENTS = frozenset({"SOCKETGETSTATUS", "PRESENT"})
+# (the signal readers read the signal passed: ``SyntaxReads.allowed`` judges it)
+_READS_ITS_ARGUMENTS = frozenset({"SOCKETGETSTATUS", "PRESENT", "DINPUT", "DOUTPUT",
+                                  "AINPUT", "AOUTPUT", "GINPUT", "GOUTPUT", "GINPUTDNUM",
+                                  "GOUTPUTDNUM", "TESTDI"})
+# predefined procedures that set the signal passed (at once: no \SDelay) to a value
+# computed from their other arguments and, for InvertDO, its own value
+_SIGNAL_WRITERS = frozenset({"SET", "RESET", "SETDO", "SETGO", "SETAO", "INVERTDO",
+                             "SETDI", "SETAI", "SETGI"})
 # statements and calls an instruction may be compiled from, found by span
 _STATEMENTS = (ast.Assignment, ast.ProcedureCall, ast.FunctionCall, ast.Return)
 
@@ -101,10 +115,11 @@ class SyntaxReads:
     syntax (see the module docstring): ``stable[task]``, the global slots no other
     task writes; ``outside``, the global slots written outside the loaded code."""
 
-    def __init__(self, stable: list, outside, references: "ReferenceParameters"):
+    def __init__(self, stable: list, outside, references: "ReferenceParameters", cell):
         self.stable = stable
         self.outside = outside
         self.references = references
+        self.cell = cell                # CellView: the signals and robots others touch
         self._loops: dict = {}          # routine index -> names of its FOR variables
 
     def allowed(self, task: int, routine, expression) -> bool:
@@ -119,6 +134,18 @@ class SyntaxReads:
                 symbol = lookup(node.name.key)
                 if symbol is None and node.name.key in self.loop_variables(routine):
                     continue             # a FOR variable (its scope is the loop's)
+                index = physical_signal(self.references.program, routine, node.name)
+                if index is not None:
+                    if not self.cell.signal_readable(task, index):
+                        return False
+                    continue             # a signal no other task writes
+                if signal_data(symbol):
+                    # bound at run time (AliasIO, a signal parameter): any signal; a
+                    # global one's binding is data another task may write
+                    if not self.cell.signal_readable(task, None) or \
+                            symbol.kind == GLOBAL_DATA and not self.readable(task, symbol.slot):
+                        return False
+                    continue
                 if symbol is None or not (
                         symbol.kind == CONSTANT or
                         symbol.kind == LOCAL_DATA and not symbol.by_reference or
@@ -133,8 +160,11 @@ class SyntaxReads:
                     # a user function: hoisted before the instruction, which reads the
                     # result from the frame (its arguments are the call's to judge)
                     continue
-                if not (_pure_function(node, lookup) or
-                        node.name.key in _READS_ITS_ARGUMENTS and lookup(node.name.key) is None):
+                robot = self.cell.robot_readable(task, node) if symbol is None else None
+                if robot is False:
+                    return False         # another task's moves change what it reads
+                if not (robot or _pure_function(node, lookup) or
+                        node.name.key in _READS_ITS_ARGUMENTS and symbol is None):
                     return False
                 work.extend(argument for argument in node.args)
             elif kind is ast.Argument:
@@ -152,8 +182,10 @@ class SyntaxReads:
         return True
 
     def readable(self, task: int, slot: int) -> bool:
-        """Whether global data ``slot`` is written by no other task and not outside."""
-        return slot in self.stable[task] and slot not in self.outside
+        """Whether global data ``slot`` is written by no other task and, when written
+        outside the loaded code, its reads only choose (``outside_free``)."""
+        return slot in self.stable[task] and (slot not in self.outside or
+                                              outside_free(self.outside[slot]))
 
     def _referents_readable(self, task: int, routine, symbol) -> bool:
         """A parameter passed by reference: whether every datum a call passes is."""
@@ -184,6 +216,13 @@ class StatementFootprints:
         self.visible = visible
         self.visible_local = visible_local
         self._nodes: dict = {}          # routine index -> span -> statement or call
+        # an atom naming signal data (bound at run time) may read any signal
+        program = reads.references.program
+        self.signal_data_visible = any(
+            getattr(data.type, "kind", None) == SEMI_VALUE and data.key in visible
+            for data in program.globals) or any(
+            signal_data(routine.scope.lookup(key)) for routine in program.routines
+            if routine.scope is not None for key in visible)
 
     def statement(self, task: int, routine, instruction) -> Footprint:
         """An Action or ControlAction: an assignment, a numeric update, TPWrite, WaitTime."""
@@ -205,6 +244,8 @@ class StatementFootprints:
         """A call of a predefined procedure: TPWrite and WaitTime, a procedure with no
         effect, a socket instruction (module docstring); any other is shared."""
         key = call.name.key
+        if key in _SIGNAL_WRITERS:
+            return self._signal_written(task, routine, call)
         if key in _QUIET_PROCEDURES:
             return LOCAL if self._arguments_allowed(task, routine, call) else SHARED
         entry = registry.lookup_procedure(key)
@@ -234,6 +275,23 @@ class StatementFootprints:
                 return SHARED
             found = VISIBLE if footprint.visible else found
         return found
+
+    def _signal_written(self, task: int, routine, call) -> Footprint:
+        """Set, Reset, SetDO ... of a configured signal no other task names (``cell_uses``),
+        its value read from data no other task writes; visible when an atom names it."""
+        signal = argument_expression(call, "Signal", 0)
+        if not isinstance(signal, ast.NameRef) or any(
+                argument.kind == ast.CONDITIONAL or argument.name is not None and
+                argument.name.key == "SDELAY" for argument in call.args):
+            return SHARED
+        index = physical_signal(self.reads.references.program, routine, signal.name)
+        if index is None or not self.reads.cell.signal_own(task, index) or \
+                not all(argument.value is signal or argument.value is None or
+                        self.reads.allowed(task, routine, argument.value)
+                        for argument in call.args):
+            return SHARED
+        key = self.reads.references.program.signals[index].key
+        return VISIBLE if key in self.visible or self.signal_data_visible else LOCAL
 
     def _written(self, task: int, routine, target) -> Footprint:
         """A write of the data under ``target`` (its indices read): independent when that
@@ -403,6 +461,14 @@ def _root(caller, argument) -> Optional[tuple]:
     if symbol.kind == LOCAL_DATA and not symbol.by_reference and not symbol.optional:
         return caller.index, symbol.slot
     return None
+
+
+def outside_free(data) -> bool:
+    """Whether a read of data written outside the loaded code (``load.outside_data``)
+    only chooses a value and stores none: no loaded code writes it, no wait keeps what it
+    read, no atom names it.  Its stored value never changes, so such a read commutes with
+    every other task's step, as the read of a free input chosen where it is read does."""
+    return not data.written_by_waits and not data.observed
 
 
 def _pure_function(call, lookup) -> bool:

@@ -34,7 +34,13 @@ ch. 4), built from one task ``t``:
   every other task of ``G`` waits as before (``waits`` of ``no_deadlock``
   unchanged: the waiting still wait, the others can go on).  At least one task
   of ``G`` does not wait, and a group of every running task is the full
-  expansion and is not tried.
+  expansion and is not tried.  A group of one task is tried where its
+  instruction is independent in a group only (ExitCycle): the one-task ample
+  sets of ``PartialOrder`` already covered the others.
+
+Signals and robots count as data here (``cell_uses``): a signal read conflicts
+with the tasks whose code may set the signal, a robot reading with the task
+moving that robot.
 
 Groups are tried only where no one-task ample set exists, from each running
 task in order, and the first that passes is kept: both engines pick the same
@@ -85,22 +91,25 @@ class TaskGroups:
         return found
 
     def may_join(self, task: int, routine: int, pc: int) -> bool:
-        """Whether the instruction may be in a group that is more than its task: it
-        conflicts with some other task but not with every task."""
+        """Whether the instruction may be in a group other than the one-task ample sets
+        ``PartialOrder`` tries: it conflicts with some other task but not with every
+        task, or with none while it is judged independent in a group only (ExitCycle)."""
         found = self.conflicts(task, routine, pc)
-        return bool(found)
+        return found is not None and (bool(found) or
+                                      not self.order.is_ample_candidate(task, routine, pc))
 
     def candidates(self, stacks: tuple, running: list) -> tuple:
-        """The groups of more than one and fewer than all running tasks, in the order of
-        the task each is built from (each once)."""
+        """The groups of fewer than all running tasks, in the order of the task each is
+        built from (each once), but for the one-task ample sets already tried."""
         key = tuple((task, stacks[task][-1][0], stacks[task][-1][1]) for task in running)
         found = self._groups.get(key)
         if found is None:
             found = []
             for task in running:
                 group = self._closure(task, stacks, set(running))
-                if group is not None and 1 < len(group) < len(running) and \
-                        group not in found:
+                if group is not None and len(group) < len(running) and \
+                        group not in found and (len(group) > 1 or not self.order.
+                                                is_ample_candidate(task, *stacks[task][-1][:2])):
                     found.append(group)
             found = tuple(found)
             if len(self._groups) >= GROUPS_KEPT:

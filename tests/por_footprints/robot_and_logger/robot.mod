@@ -33,7 +33,7 @@ MODULE Robot
       WaitUntil handshake = 0;           ! SHARED
       TPWrite "cycle";                   ! LOCAL
       TPWrite "status ", \Num:=status;   ! SHARED
-      IF DInput(diReady) = 1 THEN        ! SHARED
+      IF DInput(diReady) = 1 THEN        ! LOCAL
         done := FALSE;                   ! LOCAL
       ENDIF
     ENDFOR
