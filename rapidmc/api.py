@@ -64,7 +64,7 @@ from .ltl import read_hoa, to_buchi
 from .ltl.syntax import Not
 from .model import reduction
 from .model.fairness import TaskFairness, assumes_fairness, fair_or_plain_search
-from .model.edge_inputs import edge_inputs, realizable
+from .model.edge_inputs import edge_inputs, realizable, served_edges
 from .model.inputs import free_input_domains, observed_inputs
 from .model.robot_tracking import robot_untracked
 from .model.waiting import waits_forever
@@ -273,6 +273,7 @@ def _check_config(program: Program, atoms: AtomCompiler, options: CheckOptions,
                          observed=observed)
     if options.edge_inputs:
         config.edge_inputs = edge_inputs(program, atoms, observed)
+        config.served_edges = served_edges(program, config.edge_inputs)
     config.time_check = time_check       # the running search's time limit, inside a step
     config.robot_untracked = not options.track_robot and robot_untracked(program, atoms)
     if options.socket_messages:
@@ -597,7 +598,8 @@ def _edges_realizable(model: Model, results: list) -> bool:
     if not edges:
         return True
     names = {signal.name: signal.index for signal in model.program.signals}
-    return all(realizable(r.result, edges, names) for r in results
+    return all(realizable(r.result, edges, names, model.program, model.config.served_edges)
+               for r in results
                if r.result.verdict == VIOLATED)
 
 
