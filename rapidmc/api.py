@@ -64,7 +64,7 @@ from .ltl import read_hoa, to_buchi
 from .ltl.syntax import Not
 from .model import reduction
 from .model.fairness import TaskFairness, assumes_fairness, fair_or_plain_search
-from .model.edge_inputs import edge_inputs, realizable
+from .model.edge_inputs import edge_inputs, realizable, served_edges
 from .model.inputs import free_input_domains, observed_inputs
 from .model.robot_tracking import robot_untracked
 from .model.waiting import waits_forever
@@ -274,6 +274,7 @@ def _check_config(program: Program, atoms: AtomCompiler, options: CheckOptions,
                          observed=observed)
     if options.edge_inputs:
         config.edge_inputs = dict(facts.edges)
+        config.served_edges = facts.served_edges
     config.time_check = time_check       # the running search's time limit, inside a step
     config.robot_untracked = not options.track_robot and facts.robot_untracked
     if options.socket_messages:
@@ -292,6 +293,7 @@ class _InputFacts:
     """What the code's walks tell about the inputs and the robot, for ``_check_config``."""
     observed: Optional[frozenset]        # observed_inputs (None: every input)
     edges: dict                          # edge_inputs
+    served_edges: tuple                  # edge_inputs.served_edges of those
     robot_untracked: bool                # robot_tracking.robot_untracked
 
 
@@ -306,9 +308,9 @@ def _input_facts(program: Program, atoms: AtomCompiler) -> _InputFacts:
     facts = memo.get(key)
     if facts is None:
         observed = observed_inputs(program, atoms)
-        facts = _InputFacts(None if observed is None else frozenset(observed),
-                            edge_inputs(program, atoms, observed),
-                            robot_untracked(program, atoms))
+        edges = edge_inputs(program, atoms, observed)
+        facts = _InputFacts(None if observed is None else frozenset(observed), edges,
+                            served_edges(program, edges), robot_untracked(program, atoms))
         memo[key] = facts
     return facts
 
@@ -624,7 +626,8 @@ def _edges_realizable(model: Model, results: list) -> bool:
     if not edges:
         return True
     names = {signal.name: signal.index for signal in model.program.signals}
-    return all(realizable(r.result, edges, names) for r in results
+    return all(realizable(r.result, edges, names, model.program, model.config.served_edges)
+               for r in results
                if r.result.verdict == VIOLATED)
 
 

@@ -27,6 +27,8 @@ from typing import Optional
 
 from .. import ast
 from ..semantics.configured_signals import walk_routine
+from ..semantics.edge_traps import routine_task
+from ..semantics.staged_step import in_trap
 from ..semantics.library.arguments import argument_expression
 from .inputs import ordered_signal
 
@@ -77,6 +79,24 @@ def edge_inputs(program, atoms, observed: Optional[set]) -> dict:
     return edges
 
 
+def served_edges(program, edges: dict) -> tuple:
+    """The edge inputs of ``edges`` whose interrupt orders are all in the routines of one
+    task: their edges start a TRAP in their own step or are dropped
+    (``semantics.edge_traps``).  An input several tasks watch keeps one edge for all."""
+    tasks: dict = {}                # signal index -> tasks whose routines order on it
+    names = {signal.key: signal.index for signal in program.signals}
+    for routine in program.routines:
+        if routine.ast is None:
+            continue
+        for node in walk_routine(routine.ast):
+            if isinstance(node, ast.ProcedureCall) and node.name.key in _ORDERS:
+                signal = argument_expression(node, "Signal", 0)
+                if isinstance(signal, ast.NameRef) and names.get(signal.name.key) in edges:
+                    tasks.setdefault(names[signal.name.key], set()).add(
+                        routine_task(routine.namespace))
+    return tuple(sorted(index for index, owners in tasks.items() if len(owners) == 1))
+
+
 def _trigger(expression) -> Optional[int]:
     """A literal trigger value (0, 1, 2, or low, high, edge), else None."""
     if isinstance(expression, ast.NumLiteral) and expression.value in (0, 1, 2):
@@ -96,26 +116,51 @@ def _literal_names(call) -> bool:
     return True
 
 
-def realizable(result, edges: dict, names: dict) -> bool:
+def realizable(result, edges: dict, names: dict, program=None, served: tuple = ()) -> bool:
     """Whether the counterexample ``result`` (a ``SearchResult``, replayed on the unreduced
     system: one instruction per step) of a model with these edge inputs is a run of the
     exact model: no input watched for its rising edge is 1 in two steps in a row (round
     the loop too).  Then the exact model runs it with the same values (a value 1 comes
     after a 0, so each edge is one there too; nothing else reads the input).  An input
     watched for both edges always is: its value flips at each edge.  ``names``: signal
-    name -> index."""
+    name -> index.
+
+    An input of ``served`` (``served_edges``, with ``program``) counts only in the steps
+    where its edge started a TRAP (elsewhere it was dropped: ``semantics.edge_traps``), and
+    such a step must start from a state with no interrupt pending: the exact model's edge
+    one step earlier is then the first in its queue."""
+    served_names = {name for name, index in names.items() if index in served}
     rising = {name for name, index in names.items() if index in edges and not edges[index]}
-    if not rising:
+    if not rising and not served_names:
         return True
     steps = result.prefix + result.cycle
+    states = [step.state for step in steps]
     labels = [step.label for step in steps[1:]]
     if result.cycle:
         labels.append(result.closing_label)
-    marks = [_ones(label, rising) for label in labels]
+        states.append(steps[len(result.prefix)].state)
+    marks = []
+    for position, label in enumerate(labels):
+        ones = _ones(label, rising | served_names)
+        if ones & served_names:
+            source, target = states[position], states[position + 1]
+            if not _trap_started(program, source, target):
+                ones -= served_names
+            elif source.interrupts.pending:
+                return False
+        marks.append(ones & rising)
     if result.cycle:
         loop = len(marks) - len(result.cycle)
         marks.append(marks[loop])
     return not any(a & b for a, b in zip(marks, marks[1:]))
+
+
+def _trap_started(program, source, target) -> bool:
+    """Whether a task is in a TRAP in ``target`` that was in none in ``source``."""
+    before = (source.frames,) + tuple(source.tasks)
+    after = (target.frames,) + tuple(target.tasks)
+    return any(in_trap(program, new) and not in_trap(program, old)
+               for old, new in zip(before, after))
 
 
 def _ones(label, rising: set) -> set:

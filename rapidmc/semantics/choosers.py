@@ -120,6 +120,9 @@ class CheckConfig:
         # watched; every state after a step keeps them at 0 (``model.edge_inputs``);
         # empty: the exact model
         self.edge_inputs: dict = {}
+        # those of them one task's interrupts watch: an edge starts its TRAP in its own
+        # step or is dropped (``edge_traps``)
+        self.served_edges: tuple = ()
         # called between two runs of one step with different choices: the search engine's
         # ``check.budget.time_check`` raises there once the running search's time is up,
         # so a step with thousands of successors cannot run far past the time limit

@@ -30,7 +30,7 @@ from typing import Optional
 from .choosers import CheckConfig
 from .fused_step import fused_successors
 from .plain_step import plain_successors
-from .program import FIRST_TASK_NAMESPACE
+from .edge_traps import calmed, edge_interrupt, own_edges, routine_task
 from .robots import task_robot, with_task_robot
 from .state import ENDED, FAILED, RUNNING, Frame, Interrupts, State, Transition
 from .task_registers import put_back, task_view
@@ -303,8 +303,7 @@ def _may_merge(transitions: list) -> bool:
 def interrupt_task(program, entry) -> int:
     """The task that serves interrupt ``entry``: the task whose TRAP it is (a task can
     connect only its own traps; the environment's count as the main task's)."""
-    namespace = program.routines[entry[1]].namespace
-    return namespace - FIRST_TASK_NAMESPACE + 1 if namespace >= FIRST_TASK_NAMESPACE else 0
+    return routine_task(program.routines[entry[1]].namespace)
 
 
 def next_pending(program, interrupts: Interrupts, task: int) -> Optional[int]:
@@ -335,46 +334,65 @@ def _fire(program, task: int, table: tuple, start: int, pending: tuple, label: t
 
 
 def _task_plan(program, frames: tuple, task: int, choices: list) -> list:
-    """Per combination of timers: (label, interrupts, None) when the instruction of the
-    task with stack ``frames`` runs, or (label, interrupts, (frames, INTNO, span)) when a
-    pending TRAP of that task starts instead."""
+    """Per combination of timers: (label, interrupts, None, chosen) when the instruction of
+    the task with stack ``frames`` runs, or (label, interrupts, (frames, INTNO, span),
+    chosen) when a pending TRAP of that task starts instead; ``chosen``: the interrupts
+    of the combination, before any TRAP started (an edge input's edge: ``edge_traps``)."""
     plan = []
     may_trap = None
     for label, interrupts in choices:
         pending = interrupts[1]
-        if pending and (interrupts[2][task] if program.registers_per_task else interrupts[2]):
+        if pending and _enabled(program, interrupts, task):
             if may_trap is None:
                 may_trap = not in_trap(program, frames)
             if may_trap:
                 number = next_pending(program, interrupts, task)
-                if number is None:
-                    plan.append((label, interrupts, None))
+                if number is not None:
+                    plan.append((label,) + _trap_start(program, interrupts, frames, number) +
+                                (interrupts,))
                     continue
-                interrupts = interrupts._replace(
-                    pending=tuple(n for n in pending if n != number))
-                entry = next((e for e in interrupts[0] if e[0] == number), None)
-                if entry is not None:
-                    trap = program.routines[entry[1]]
-                    source = entry[2]
-                    if source and source[-1] is True and source[0] != "pers":
-                        interrupts = interrupts._replace(
-                            table=deactivated(interrupts[0], number))
-                    entered = frames + (Frame(trap.index, 0, trap.initial_locals),)
-                    plan.append((label, interrupts, (entered, float(number), trap.span)))
-                    continue
-        plan.append((label, interrupts, None))
+        plan.append((label, interrupts, None, interrupts))
     return plan
+
+
+def _enabled(program, interrupts: Interrupts, task: int) -> bool:
+    """Whether ``task`` has interrupts enabled (IEnable/IDisable)."""
+    return interrupts[2][task] if program.registers_per_task else interrupts[2]
+
+
+def _trap_start(program, interrupts: Interrupts, frames: tuple, number: int) -> tuple:
+    """(interrupts, (frames, INTNO, span)) after interrupt ``number`` starts its TRAP on the
+    stack ``frames``; (interrupts, None) when it is no longer connected (dropped)."""
+    interrupts = interrupts._replace(pending=tuple(n for n in interrupts[1] if n != number))
+    entry = next((e for e in interrupts[0] if e[0] == number), None)
+    if entry is None:
+        return interrupts, None
+    trap = program.routines[entry[1]]
+    source = entry[2]
+    if source and source[-1] is True and source[0] != "pers":
+        interrupts = interrupts._replace(table=deactivated(interrupts[0], number))
+    entered = frames + (Frame(trap.index, 0, trap.initial_locals),)
+    return interrupts, (entered, float(number), trap.span)
 
 
 def _task_steps(state: State, task: int, label: tuple, io, plan: list, steps: ViewSteps,
                 shared: Optional[dict], result: list) -> None:
     """The steps of ``task`` from signal values ``io`` (inputs set, delayed changes
-    done), one per ``plan`` entry: a pending TRAP of the task starts on its stack or the
-    instruction runs; then the signal edges since ``state`` order their interrupts."""
+    done), one per ``plan`` entry: a pending TRAP of the task starts on its stack, or the
+    TRAP of an edge input's interrupt this step brings (``edge_traps``), or the
+    instruction runs; then the other signal edges since ``state`` order their
+    interrupts."""
     before = state[2]
     program = steps.program
     stack = state[0] if task == 0 else state[10][task - 1]
-    for timers_label, interrupts, trap in plan:
+    own = own_edges(steps.owner)
+    calm = calmed(before, io, own) if own else before
+    for timers_label, interrupts, trap, chosen in plan:
+        if calm is not before and _enabled(program, chosen, task) and \
+                not in_trap(program, stack):
+            number = edge_interrupt(program, chosen[0], own, before, io, task)
+            if number is not None:
+                interrupts, trap = _trap_start(program, chosen, stack, number)
         parts = _task_parts(program, state, task, interrupts)
         if trap is not None:
             entered, number, span = trap
@@ -382,12 +400,12 @@ def _task_steps(state: State, task: int, label: tuple, io, plan: list, steps: Vi
                               parts[4:])
             transition = _in_task(program, state, task, label + timers_label,
                                   _new_tuple(Transition, ((), span, view, "", False)))
-            result.append(transition._replace(state=_with_edges(transition[2], before)))
+            result.append(transition._replace(state=_with_edges(transition[2], calm)))
             continue
         view = _new_tuple(State, (stack, state[1], io) + parts)
         for transition in steps(view, task, shared):
             transition = _in_task(program, state, task, label + timers_label, transition)
-            after = _with_edges(transition[2], before)
+            after = _with_edges(transition[2], calm)
             if after is not transition[2]:
                 transition = transition._replace(state=after)
             result.append(transition)

@@ -36,6 +36,7 @@ from .plain_step import (MERGED_STEP_LIMIT, is_plain, plain_successors,  # noqa:
                          run_instruction, run_merged)
 from .staged_step import (deactivated, edges_at_rest, idle_steps_dropped, in_trap, interrupt_task,
                           is_staged, next_pending, signal_edges_pending, staged_successors)
+from .edge_traps import calmed, edge_interrupt, own_edges
 from .task_registers import give_back, initial_registers, take_task_view
 from .timing import apply_scheduled, enqueue
 
@@ -318,20 +319,31 @@ def _step_some_task(m: Machine, io_before):
 def _step_with_interrupts(m: Machine, io_before, task: int):
     if m.chooser.check_mode and m.interrupts.scheduled:
         apply_scheduled(m)                 # time is abstract: delayed changes happen now
+    edge = None
     if m.chooser.check_mode and m.interrupts.table:
         _timers_may_fire(m, task)
-    span = _execute(m, task)
+        own = own_edges(m.chooser.config)
+        if own:                            # their edges: served now or dropped (edge_traps)
+            calm = calmed(io_before, m.io, own)
+            if calm is not io_before:
+                edge = edge_interrupt(m.program, m.interrupts.table, own, io_before, m.io,
+                                      task)
+                io_before = calm
+    span = _execute(m, task, edge)
     if m.interrupts.table and m.io != io_before:
         signal_edges(m, io_before)
     return span
 
 
-def _execute(m: Machine, task: int):
-    """Start a pending TRAP of ``task``, or execute the instruction at the program counter."""
+def _execute(m: Machine, task: int, edge: Optional[int] = None):
+    """Start the TRAP of interrupt ``edge`` (an edge input's this step brings, ahead of
+    those pending: ``edge_traps``), else a pending TRAP of ``task``, or execute the
+    instruction at the program counter."""
     program = m.program
     interrupts = m.interrupts
-    if interrupts.pending and interrupts.enabled and not in_trap(program, m.frames):
-        number = next_pending(program, interrupts, task)
+    if (interrupts.pending or edge is not None) and interrupts.enabled and \
+            not in_trap(program, m.frames):
+        number = edge if edge is not None else next_pending(program, interrupts, task)
         if number is not None:
             m.interrupts = interrupts._replace(
                 pending=tuple(n for n in interrupts.pending if n != number))
