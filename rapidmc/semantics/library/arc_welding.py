@@ -63,5 +63,9 @@ compiled("RecoveryMenu(...)", "RecoveryMenuWR(...)", "SetWRProcName(...)",
 # Evidence: a public gantry welding backup (taeyangshim, issue 28) calls it between
 # SyncMoveOn and SyncMoveOff as `ArcMoveExtJ jTempGantry{1}\ID:=10,vWeld{1},fine;`; a check
 # that reached the call stopped with RMC305 (the gantry task HOLDS at 191,371 states now).
+# A public RobotWare add-in's welding task (Ebara, survey of issue 28) ends the first move
+# of a weld with the switch Start, `ArcMoveExtJ jointNext\ID:=index,speedWeld,fine\Start;`;
+# the switch (where the weld starts) does not change where the axes go.
 _move("ArcMoveExtJ(jointtarget ToJointPos \\identno ID, speeddata Speed \\num T, "
-         "zonedata Zone \\stoppointdata Inpos)", modelled=ROBOT_STATE)(_move_ext_j)
+         "zonedata Zone \\stoppointdata Inpos \\switch Start)",
+      modelled=ROBOT_STATE)(_move_ext_j)
