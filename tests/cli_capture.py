@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import contextlib
 import io
+import json
 import os
 import sys
 from pathlib import Path
@@ -42,3 +43,10 @@ def run_cli(argv, *, stdin: str | None = None, cwd: Path | str | None = None) ->
         if cwd is not None:
             os.chdir(saved_cwd)
     return Captured(code, out.getvalue(), err.getvalue())
+
+
+def verdicts_and_states(argv, *, cwd: Path | str | None = None) -> dict:
+    """Property -> (verdict, model states) of ``rapidmc check ARGV --format json --quiet``."""
+    document = json.loads(run_cli(["check", *argv, "--format", "json", "--quiet"], cwd=cwd).out)
+    return {p["name"]: (p["verdict"], p["stats"]["model_states"])
+            for p in document["properties"]}

@@ -27,7 +27,7 @@ from rapidmc.model.properties import AtomCompiler
 from rapidmc.semantics.link import build
 from rapidmc.syntax import parse_text
 
-from cli_capture import run_cli
+from cli_capture import run_cli, verdicts_and_states
 
 ENGINES = native.ENGINES if native.available() else (native.PYTHON,)
 
@@ -103,12 +103,8 @@ def check(tmp_path, text: str, *flags: str, second: bool = False) -> dict:
     if second:
         (tmp_path / "cell.mod").write_text(SECOND_TASK)
         extra = ["--add-task", "cell.mod"]
-    found = run_cli(["check", "prog.mod", *extra, "--format", "json", "--quiet",
-                     "--max-states", "6000", "--formula", 'few: G "hits < 4"', *flags],
-                    cwd=tmp_path)
-    document = json.loads(found.out)
-    return {p["name"]: (p["verdict"], p["stats"]["model_states"])
-            for p in document["properties"]}
+    return verdicts_and_states(["prog.mod", *extra, "--max-states", "6000",
+                                "--formula", 'few: G "hits < 4"', *flags], cwd=tmp_path)
 
 
 PROGRAMS = [edge_program(seed) for seed in range(30)]

@@ -12,7 +12,6 @@ and the state counts of one program.
 """
 from __future__ import annotations
 
-import json
 import random
 
 import pytest
@@ -27,7 +26,7 @@ from rapidmc.semantics.link import build
 from rapidmc.semantics.state import Interrupts
 from rapidmc.syntax import parse_text
 
-from cli_capture import run_cli
+from cli_capture import verdicts_and_states
 
 ENGINES = native.ENGINES if native.available() else (native.PYTHON,)
 
@@ -83,12 +82,9 @@ def trap_program(seed: int) -> str:
 def check(tmp_path, text: str, *flags: str, bound: int = 30000) -> dict:
     """Property -> (verdict, model states) of one in-process check."""
     (tmp_path / "prog.mod").write_text(text)
-    found = run_cli(["check", "prog.mod", "--format", "json", "--quiet",
-                     "--max-states", str(bound), "--formula", 'few: G "hits < 4"',
-                     "--formula", 'calm: G F "n = 0"', *flags], cwd=tmp_path)
-    document = json.loads(found.out)
-    return {p["name"]: (p["verdict"], p["stats"]["model_states"])
-            for p in document["properties"]}
+    return verdicts_and_states(["prog.mod", "--max-states", str(bound),
+                                "--formula", 'few: G "hits < 4"',
+                                "--formula", 'calm: G F "n = 0"', *flags], cwd=tmp_path)
 
 
 PROGRAMS = [trap_program(seed) for seed in range(12)]
