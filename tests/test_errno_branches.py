@@ -27,8 +27,8 @@ from rapidmc.model.reduction.raised_errors import ErrnoTests, StatementErrors
 from rapidmc.model.reduction.relevance import Resolver
 from rapidmc.model.reduction.totality import Totality
 
-from test_dead_data import dead_globals_by_line, line_of, verdicts_agree_and_replay
-from test_total_readings import assert_projects, written
+from test_dead_data import dead_globals_by_line, line_of
+from test_total_readings import generated_program_tests
 
 SEEDS = range(30)
 
@@ -120,14 +120,9 @@ ENDMODULE
 """
 
 
-@pytest.mark.parametrize("seed", SEEDS)
-def test_generated_programs_project_as_the_program_steps(tmp_path, seed):
-    assert_projects(written(tmp_path, program(seed), seed))
-
-
-@pytest.mark.parametrize("seed", SEEDS)
-def test_generated_programs_keep_their_verdicts_and_counterexamples_replay(tmp_path, seed):
-    verdicts_agree_and_replay(tmp_path, written(tmp_path, program(seed), seed), "--no-dead")
+(test_generated_programs_project_as_the_program_steps,
+ test_generated_programs_keep_their_verdicts_and_counterexamples_replay) = \
+    generated_program_tests(program, SEEDS)
 
 
 # --- the decisions, on the server's pattern ---------------------------------------------

@@ -112,14 +112,24 @@ def assert_projects(argv: list[str]) -> None:
     assert not failures, f"{len(failures)} of {compared} states, first: {failures[0]}"
 
 
-@pytest.mark.parametrize("seed", SEEDS)
-def test_generated_programs_project_as_the_program_steps(tmp_path, seed):
-    assert_projects(written(tmp_path, program(seed), seed))
+def generated_program_tests(program_of, seeds) -> tuple:
+    """The two tests of a family of generated programs (``program_of(seed)``): each
+    projects as the program steps, and each keeps its verdicts with ``--no-dead`` with
+    counterexamples that replay.  A test module binds them to ``test_`` names."""
+    @pytest.mark.parametrize("seed", seeds)
+    def projects_as_the_program_steps(tmp_path, seed):
+        assert_projects(written(tmp_path, program_of(seed), seed))
+
+    @pytest.mark.parametrize("seed", seeds)
+    def keeps_its_verdicts_and_counterexamples_replay(tmp_path, seed):
+        verdicts_agree_and_replay(tmp_path, written(tmp_path, program_of(seed), seed),
+                                  "--no-dead")
+    return projects_as_the_program_steps, keeps_its_verdicts_and_counterexamples_replay
 
 
-@pytest.mark.parametrize("seed", SEEDS)
-def test_generated_programs_keep_their_verdicts_and_counterexamples_replay(tmp_path, seed):
-    verdicts_agree_and_replay(tmp_path, written(tmp_path, program(seed), seed), "--no-dead")
+(test_generated_programs_project_as_the_program_steps,
+ test_generated_programs_keep_their_verdicts_and_counterexamples_replay) = \
+    generated_program_tests(program, SEEDS)
 
 
 # --- what is total, and what the dead data analysis then finds -------------------------
