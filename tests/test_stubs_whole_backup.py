@@ -135,3 +135,52 @@ def test_the_whole_backup_loads_with_stubs_and_reaches_verdicts(backup):
 def test_without_stubs_the_backup_does_not_load(backup):
     code, _, err = run_cli(["check", backup, "--quiet"])
     assert code == 2 and ("[RMC202]" in err or "[RMC201]" in err), err
+
+
+# As PickMaster's two tasks: one declares the PERS with a nested value, the other names
+# the components and passes the nested part to its own routine, whose parameter's record
+# (of the option too) its uses name component by component.
+VALUED = """MODULE Server
+  PERS jobinfo job := ["job 1", [TRUE, ["a.mod", "b.mod"]]];
+  PROC main()
+    TPWrite job.Name;
+  ENDPROC
+ENDMODULE
+"""
+
+NAMED = """MODULE Manager
+  PERS jobinfo job;
+  PROC main()
+    IF job.Robot.Load THEN
+      LoadAll job.Robot.Files;
+    ENDIF
+  ENDPROC
+  PROC LoadAll(fileinfo files)
+    IF files.File1 <> "" AND files.File2 <> "" THEN
+      TPWrite files.File1;
+    ENDIF
+  ENDPROC
+ENDMODULE
+"""
+
+
+@pytest.mark.parametrize("order", [(VALUED, NAMED), (NAMED, VALUED)],
+                         ids=["valued first", "named first"])
+def test_a_part_of_a_declared_value_takes_the_record_another_task_names_it_by(order):
+    first, second = (declarations(stubs.text) for stubs in stub_modules(
+        [(parse_text(text, f"m{number}.mod"), "Missing") for number, text in enumerate(order)]))
+    robot = first["jobinfo"][2].split()[0]   # invented: named after a place or a name
+    assert first["jobinfo"] == second["jobinfo"] == \
+        ["RECORD jobinfo", "string Name;", f"{robot} Robot;", "ENDRECORD"]
+    assert first[robot] == second[robot] == \
+        [f"RECORD {robot}", "bool Load;", "fileinfo Files;", "ENDRECORD"]
+    assert first["fileinfo"] == second["fileinfo"] == \
+        ["RECORD fileinfo", "string File1;", "string File2;", "ENDRECORD"]
+
+
+def test_the_two_tasks_with_a_shared_nested_pers_load(tmp_path):
+    backup = make_backup(tmp_path, {"TASK1": {"PROGMOD/Manager.mod": NAMED},
+                                    "TASK2": {"PROGMOD/Server.mod": VALUED}})
+    found = verdicts_and_states([backup, "--stubs"])
+    assert {name: verdict for name, (verdict, _) in found.items()} == \
+        {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS"}

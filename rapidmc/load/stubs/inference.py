@@ -433,6 +433,9 @@ class Inference:
                     self._routine(routine)
             for names in self.codes.values():
                 self._alternatives(names)
+        for record in list(self.missing.every.values()):
+            if record.kind == TYPE and record.left_out:     # a name's record typed since
+                self._arrange(record)
 
     def _code(self, subject, value) -> None:
         """Note that datum ``subject`` is given, or compared with, ``value`` when both are
