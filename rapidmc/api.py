@@ -52,8 +52,7 @@ from .findings.fixed_readings import fixed_readings
 from .findings.start_positions import named_targets
 from .findings.tried_inputs import (sampled_inputs, tests_axes, unset_digital_outputs,
                                     unwritten_pers_reads)
-from .load.backup import (link_options, load_tasks, resolve_program_files,
-                          with_encrypted_interface)
+from .load.backup import link_options, resolve_program_files, with_interfaces
 from .load.message_domains import (ANSWERS, FILE, PROBE_STATES, SOCKET, message_domains,
                                    site_key)
 from .load.outside_data import observed_names, outside_data as find_outside_data
@@ -162,7 +161,7 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
                                                   all_tasks=all_tasks, add_task=list(add_tasks),
                                                   entry=entry, stubs=stubs))
     environment = _parse_files(list(env)) if env else None
-    parsed = with_encrypted_interface(_parse_files(files.modules), files, None)
+    parsed, tasks = with_interfaces(_parse_files(files.modules), files)
     options = link_options(files)
     if other_task_writes:
         options["outside_writers"] = {**{key: ANOTHER_TASK for key in other_task_writes},
@@ -178,7 +177,7 @@ def load_program(files: Sequence[str], env: Sequence[str] = (), *, entry: str = 
         marks = instrument_flows(parsed)
         parsed, options["flow_marks"] = marks.program, marks
     program = build(parsed, entry=files.main_entry if entry == "main" else entry,
-                    environment=environment, tasks=load_tasks(files), options=options)
+                    environment=environment, tasks=tasks, options=options)
     program.load_notes = files.notes + pers_warnings(program, files)
     # what a worker of a distributed check loads to build the same system in its own process
     program.load_arguments = dict(

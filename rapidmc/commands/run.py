@@ -13,9 +13,8 @@ import sys
 
 from ..diagnostics import (BAD_INPUT_VALUE, EXIT_OK, EXIT_RUNTIME_ERROR, USAGE, UserError, error, render)
 from .console import fault_diagnostic, run_program
-from ..load.backup import (add_program_arguments, link_options, load_tasks,
-                           with_encrypted_interface,
-                           resolve_program_files)
+from ..load.backup import (add_program_arguments, link_options, resolve_program_files,
+                           with_interfaces)
 from ..semantics.link import build
 from ..semantics.state import FAILED
 from ..syntax import load_program
@@ -116,10 +115,9 @@ def read_input_script(path: str, program) -> tuple:
 def execute(args: argparse.Namespace) -> int:
     io_values = parse_io(args.io)
     files = resolve_program_files(args)
-    program = build(with_encrypted_interface(load_program(files.modules), files, None),
-                    entry=files.main_entry if args.entry == "main" else args.entry,
-                    options=dict(link_options(files), io_names=tuple(io_values)),
-                    tasks=load_tasks(files))
+    parsed, tasks = with_interfaces(load_program(files.modules), files)
+    program = build(parsed, entry=files.main_entry if args.entry == "main" else args.entry,
+                    options=dict(link_options(files), io_names=tuple(io_values)), tasks=tasks)
     check_io_values(program, io_values)
     changes = read_input_script(args.inputs, program) if args.inputs else ()
     result = run_program(program, io_values, sys.stdin, sys.stdout, args.max_steps,

@@ -24,8 +24,8 @@ from ..ast import Span
 from ..diagnostics import (EXIT_OK, FILE_NOT_FOUND, NO_PROGRAM, PROGRAM_FILE, TASKS_LOADED,
                            Diagnostic, SourceCache, UserError, error)
 from .config_file import instances
-from .encrypted import (interface_module, is_encrypted, missing_module, only_encrypted_note,
-                        skipped_note)
+from .encrypted import (declared_from_uses, interface_of, is_encrypted, missing_of,
+                        only_encrypted_note, skipped_note)
 from .other_writers import (declared_values, other_writers, task_output_writers,
                             written_constants)
 from .outside_outputs import controller_writers
@@ -405,28 +405,30 @@ def link_options(files: ProgramFiles) -> dict:
             "persistent_values": files.persistent_values or {}}
 
 
-def load_tasks(files: ProgramFiles) -> list:
-    """The further tasks, parsed, for ``semantics.link.build``."""
+def with_interfaces(parsed, files: ProgramFiles) -> tuple:
+    """``(main program, further tasks)`` for ``semantics.link.build``: ``parsed`` (the main
+    task's modules) and each further task, parsed, with the interface of the task's
+    encrypted modules taken from their uses (``load.encrypted``); with ``--stubs``, else
+    with what the task uses and none of its modules declares (``load.stubs``). The tasks'
+    missing names are inferred together: a type, constant, routine or PERS several tasks
+    miss is declared alike in each."""
+    from .. import ast
     from ..semantics.link import Task
     from ..syntax import load_program
-    return [Task(name, with_encrypted_interface(load_program(paths), files, name), entry)
-            for name, paths, entry in files.tasks]
-
-
-def with_encrypted_interface(parsed, files: ProgramFiles, task: Optional[str]):
-    """``parsed`` (the modules of ``task``, None: the main task) with the interface of the
-    task's encrypted modules taken from their uses (``load.encrypted``); with ``--stubs``,
-    else with what the task uses and none of its modules declares (``load.stubs``)."""
-    from .. import ast
-    sealed = (files.encrypted or {}).get(task)
+    programs = [parsed] + [load_program(paths) for _, paths, _ in files.tasks]
+    owners = [None] + [name for name, _, _ in files.tasks]
     signals = frozenset(signal.name.upper() for signal in files.signals)
-    if sealed:
-        added = interface_module(parsed.modules, sealed, signals)
-    elif files.stub_missing and parsed.modules:
-        added = missing_module(parsed.modules, signals)
-    else:
-        return parsed
-    return ast.Program(tuple(parsed.modules) + added)
+    wanted = {}
+    for number, (owner, program) in enumerate(zip(owners, programs)):
+        sealed = (files.encrypted or {}).get(owner)
+        if sealed:
+            wanted[number] = interface_of(program.modules, sealed)
+        elif files.stub_missing and program.modules:
+            wanted[number] = missing_of(program.modules)
+    for number, added in zip(wanted, declared_from_uses(list(wanted.values()), signals)):
+        programs[number] = ast.Program(tuple(programs[number].modules) + added)
+    return programs[0], [Task(name, program, entry) for (name, _, entry), program
+                         in zip(files.tasks, programs[1:])]
 
 
 def every_task(path: Path) -> list[tuple[str, list[str]]]:

@@ -8,7 +8,7 @@ name is encrypted):
 
 * the task's other modules are checked; what they use and no module declares
   is taken, as ``rapidmc stubs`` does, from its uses: a generated module
-  (``interface_module``) declares it with empty routines and neutral values.
+  (``interface_of``) declares it with empty routines and neutral values.
   Its header carries the stubs' marker, so every verdict names each of those
   declarations under ``assumes:`` (``findings.assumptions``), and a line
   naming the encrypted modules (``ENCRYPTED_MARKER``);
@@ -22,8 +22,9 @@ name is encrypted):
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
-from typing import Optional, Sequence
+from typing import Callable, Optional, Sequence
 
 from .. import ast
 from ..diagnostics import ENCRYPTED_SKIPPED, Diagnostic
@@ -62,42 +63,61 @@ def only_encrypted_note(path: str, task: str) -> Diagnostic:
                       ast.Span(path, 0, 0), severity="note")
 
 
-def interface_module(modules: Sequence[ast.Module], encrypted: Sequence[str],
-                     signals: frozenset) -> tuple[ast.Module, ...]:
-    """The modules declaring what ``modules`` use and nobody declares, taken as the
-    interface of the ``encrypted`` module files (empty when nothing is missing)."""
+@dataclass(frozen=True)
+class Generated:
+    """A module to declare from a task's uses: its name (or a free variant), the file it is
+    said to be (``path_for(name)``) and a header line before the stubs' own."""
+
+    modules: tuple
+    name: str
+    path_for: Callable[[str], str]
+    header: str = ""
+
+
+def interface_of(modules: Sequence[ast.Module], encrypted: Sequence[str]) -> Generated:
+    """The module declaring what ``modules`` use and nobody declares, taken as the
+    interface of the ``encrypted`` module files."""
     names = ", ".join(Path(p).name for p in encrypted)
-    return _declared_from_uses(
-        modules, "Encrypted_interface", signals,
+    return Generated(
+        tuple(modules), "Encrypted_interface",
         lambda name: str(Path(encrypted[0]).with_name(f"{Path(encrypted[0]).name} (interface)")),
         f"! {ENCRYPTED_MARKER} ({names}), taken from their uses\n")
 
 
-def missing_module(modules: Sequence[ast.Module], signals: frozenset) -> tuple[ast.Module, ...]:
+def missing_of(modules: Sequence[ast.Module]) -> Generated:
     """``check --stubs``: the module ``rapidmc stubs`` writes for ``modules`` (a task's),
-    beside their first file (empty when nothing is missing); its marker names each
-    declaration under ``assumes:``."""
-    return _declared_from_uses(
-        modules, "Missing", signals,
-        lambda name: str(Path(modules[0].span.file).with_name(f"{name}.mod (stubs)")))
+    beside their first file; its marker names each declaration under ``assumes:``."""
+    return Generated(tuple(modules), "Missing",
+                     lambda name: str(Path(modules[0].span.file).with_name(f"{name}.mod (stubs)")))
 
 
-def _declared_from_uses(modules, name: str, signals: frozenset, path_for,
-                        header: str = "") -> tuple[ast.Module, ...]:
-    """The module of stubs (``load.stubs``) named ``name`` (or a free variant) for what
-    ``modules`` use and nobody declares, at ``path_for(name)``; empty when nothing is."""
+def declared_from_uses(tasks: Sequence[Generated],
+                       signals: frozenset) -> list[tuple[ast.Module, ...]]:
+    """For each of ``tasks`` the module of stubs (``load.stubs``) for what its modules use
+    and nobody declares, parsed (empty when nothing is); a name several tasks miss is
+    inferred once from all their uses (``stubs.stub_modules``)."""
     from ..syntax import parse_text
-    from .stubs import stub_module
-    taken = {module.name.key for module in modules}
-    while name.upper() in taken:
-        name += "_"
-    stubs = stub_module(tuple(modules), name, signals)
-    if not stubs.declared:
-        return ()
-    path = path_for(name)
-    text = header + stubs.text
-    SourceCache.remember(path, text)
-    return parse_text(text, path)
+    from .stubs import stub_modules
+    if not tasks:
+        return []
+    names = []
+    for task in tasks:
+        taken = {module.name.key for module in task.modules}
+        name = task.name
+        while name.upper() in taken:
+            name += "_"
+        names.append(name)
+    found = []
+    for task, name, stubs in zip(tasks, names, stub_modules(
+            [(task.modules, name) for task, name in zip(tasks, names)], signals)):
+        if not stubs.declared:
+            found.append(())
+            continue
+        path = task.path_for(name)
+        text = task.header + stubs.text
+        SourceCache.remember(path, text)
+        found.append(parse_text(text, path))
+    return found
 
 
 def from_encrypted_interface(file: str) -> bool:

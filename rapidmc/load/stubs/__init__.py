@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 from ... import ast
 from .inference import Missing
-from .passes import missing_names
+from .passes import missing_names_of_tasks
 from .module_text import StubWriter
 from .names import Declarations
 
@@ -36,6 +36,18 @@ def stub_module(modules: tuple[ast.Module, ...], module_name: str,
                 signals: frozenset = frozenset()) -> Stubs:
     """The module declaring what ``modules`` use and do not declare (``signals``: the
     canonical names of the I/O configuration's signals, which are declared there)."""
-    writer = StubWriter(Declarations(modules, signals))
-    text = writer.module(module_name, missing_names(modules, signals))
-    return Stubs(text, tuple(writer.declared), tuple(writer.undeclared))
+    return stub_modules([(modules, module_name)], signals)[0]
+
+
+def stub_modules(tasks: list[tuple[tuple[ast.Module, ...], str]],
+                 signals: frozenset = frozenset()) -> list[Stubs]:
+    """For each task (its modules, the name of its module of stubs), the module declaring
+    what it uses and does not declare; a name several tasks miss is inferred once from all
+    their uses and declared alike in each (a whole backup's option modules)."""
+    found = missing_names_of_tasks([modules for modules, _ in tasks], signals)
+    stubs = []
+    for (modules, module_name), missing in zip(tasks, found):
+        writer = StubWriter(Declarations(modules, signals))
+        text = writer.module(module_name, missing)
+        stubs.append(Stubs(text, tuple(writer.declared), tuple(writer.undeclared)))
+    return stubs

@@ -14,13 +14,14 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
-from typing import Optional
+from typing import Optional, Sequence
 
 from ... import ast
 from ...semantics.library import registry
 from ...semantics.configured_signals import COMPARISONS
 from .names import BOOL, NUM, STRING, Declarations, TypeInfo
 from .records import SOME_RECORD, arrange
+from .task_views import TaskViews
 
 DATA, PROCEDURE, FUNCTION, TRAP, TYPE = "data", "procedure", "function", "trap", "type"
 ARITHMETIC = ("+", "-", "*", "/")
@@ -69,6 +70,8 @@ class Missing:
     alternative: Optional[tuple] = None                 # (number, count) among compared names
     exact_dims: bool = False                            # dims from an aggregate assigned whole
     written: list = field(default_factory=list)         # aggregates assigned to it whole
+    tasks: set = field(default_factory=set)             # the tasks whose uses name it (0 ...)
+    valued_by: str = ""                 # the module of another task whose PERS gives its value
 
     def learn(self, info: Optional[TypeInfo], evidence: str) -> bool:
         """Take ``info`` as the type if none is known yet; whether anything changed."""
@@ -81,12 +84,20 @@ class Missing:
 
 
 class Inference:
-    """One walk over the program; ``missing`` accumulates across walks."""
+    """One walk over the program; ``missing`` accumulates across walks.
 
-    def __init__(self, modules: tuple[ast.Module, ...], signals=frozenset()):
-        self.names = Declarations(modules, signals)
-        self.modules = modules
-        self.missing: dict[str, Missing] = {}
+    ``tasks``: the modules of each task (one for a program). The tasks of a whole backup are
+    walked in turn, each with its own declarations, and their uses of one missing name
+    teach the same ``Missing`` (``task_views``): a type, a constant or a routine several
+    tasks need is inferred once from all their uses."""
+
+    def __init__(self, tasks: Sequence[tuple[ast.Module, ...]], signals=frozenset()):
+        self.tasks = [(Declarations(modules, signals), modules) for modules in tasks]
+        self.missing = TaskViews(len(self.tasks))
+        # PERS data a task declares: key -> (type, sizes, module); another task's uses of
+        # the name are of that one object (tasks share a PERS by its name)
+        self.persistents = _persistents(tasks) if len(tasks) > 1 else {}
+        self.activate(0)
         self.changed = False
         self.counting = True
         self.local: dict[str, TypeInfo] = {}
@@ -111,11 +122,17 @@ class Inference:
 
     # ------------------------------------------------------------ bookkeeping
     def note(self, name: ast.Name, kind: str, use: str) -> Missing:
-        found = self.missing.get(name.key)
+        found = self.missing.get(name.key) or self.missing.of_any_task(name.key)
         if found is None:
             found = Missing(name, kind, name.span, use)
             self.missing[name.key] = found
             self.changed = True
+            if kind == DATA and name.key in self.persistents:
+                info, sizes, module, valued = self.persistents[name.key]
+                found.learn(info, f"declared so by {module} of another task, whose PERS it is")
+                found.dims, found.exact_dims = list(sizes), bool(sizes)
+                found.valued_by = module if valued else ""
+        found.tasks.add(self.missing.current)
         if self.counting:
             found.uses += 1
         if self.in_declaration and kind == DATA:
@@ -188,18 +205,57 @@ class Inference:
             self._arrange(record)
 
     def _arrange(self, record: Missing) -> None:
-        """The record's components from its names and shape (records.arrange)."""
+        """The record's components from its names and shape (records.arrange); a position
+        of a record the stubs shaped from a value alone that a name of another record type
+        took (``_shaped_alike``) takes that type everywhere."""
         components, left_out = arrange(record.named, record.shape, self._fits)
         if components != record.fields or left_out != record.left_out:
             record.fields, record.left_out = components, left_out
             self.changed = True
+        for slot, info in zip(record.shape or (), list(components.values())):
+            if slot is not None and info is not None and slot.key != info.key and \
+                    slot.key in self.invented and self._shaped_alike(info, slot):
+                self.replace_type(slot.key, info.name)
+                return
 
     def _fits(self, info: Optional[TypeInfo], slot: Optional[TypeInfo]) -> bool:
-        """Whether a component of type ``info`` can stand at a position of type ``slot``."""
+        """Whether a component of type ``info`` can stand at a position of type ``slot``:
+        the same type, or a record the stubs shaped from a value alone (named ``c1``,
+        ``c2`` ...) where the use names a record of the same structure (one task declares
+        ``[TRUE, ["a.mod", "b.mod"]]``, another passes that component as a
+        ``pm_moduleinfo`` whose ten strings its uses name); ``_arrange`` then gives the
+        position that type."""
         if info is SOME_RECORD:
             return slot is not None and self._is_record(slot)
         return info is None or slot is None or \
-            self.names.base(info).key == self.names.base(slot).key
+            self.names.base(info).key == self.names.base(slot).key or \
+            self._shaped_alike(info, slot)
+
+    def _shaped_alike(self, info: TypeInfo, slot: TypeInfo) -> bool:
+        record = self.missing.get(slot.key)
+        if record is None or slot.key not in self.invented or record.value is None or \
+                record.named or info.rank or slot.rank:
+            return False
+        shape = self.structure(slot)
+        return shape is not None and not isinstance(shape, str) and \
+            self.structure(info) == shape
+
+    def structure(self, info: TypeInfo, depth: int = 0):
+        """A type's shape: the atomic type's key, or the tuple of its components' shapes
+        (the positions' for a record the stubs shape from a value); None when a part is
+        unknown."""
+        base = self.names.base(info).key
+        if base in ATOMIC or depth > 8:
+            return base
+        record = self.missing.get(base)
+        if record is not None and record.kind == TYPE:
+            parts = record.shape if record.shape is not None else list(record.fields.values())
+        else:
+            parts = [TypeInfo(t) for _, t in self.names.components(info.name) or ()]
+        if not parts or None in parts:
+            return None
+        shapes = tuple(self.structure(part, depth + 1) for part in parts)
+        return None if None in shapes else shapes
 
     def _is_record(self, info: TypeInfo) -> bool:
         known = self.missing.get(info.key)
@@ -216,13 +272,13 @@ class Inference:
 
     def replace_type(self, key: str, type_name: str) -> None:
         """The stubs' type ``key`` gives way to ``type_name`` wherever a missing name uses it."""
-        self.missing.pop(key, None)
+        self.missing.every.pop(key, None)
         self.invented.discard(key)
 
         def replaced(info):
             return TypeInfo(type_name, info.rank) if info is not None and info.key == key \
                 else info
-        for owner in self.missing.values():
+        for owner in self.missing.every.values():
             owner.named = {name: replaced(info) for name, info in owner.named.items()}
             if owner.shape is not None:
                 owner.shape = [replaced(slot) for slot in owner.shape]
@@ -285,7 +341,8 @@ class Inference:
     def _fresh_type_name(self, text: str, span) -> ast.Name:
         """``text`` cut to RAPID's 32 characters, numbered if that is taken."""
         name, number = ast.Name.of(text[:32], span), 1
-        while self.names.is_type(name.key) or name.key in self.missing:
+        while any(names.is_type(name.key) for names, _ in self.tasks) or \
+                self.missing.taken(name.key):
             number += 1
             suffix = f"_{number}"
             name = ast.Name.of(text[:32 - len(suffix)] + suffix, span)
@@ -357,18 +414,28 @@ class Inference:
         return missing.type if missing is not None else None
 
     # -------------------------------------------------------------- the walk
+    def activate(self, number: int) -> None:
+        """Task ``number``'s declarations and modules are those the walk and passes see."""
+        self.names, self.modules = self.tasks[number]
+        self.missing.show(number, self.names)
+
     def walk(self) -> None:
-        self.codes = {}
-        for module in self.modules:
-            for definition in module.types:
-                self._record_components(definition)
-            for decl in module.data:
-                self.local = {}
-                self._declaration(decl)
-            for routine in module.routines:
-                self._routine(routine)
-        for names in self.codes.values():
-            self._alternatives(names)
+        for number in range(len(self.tasks)):
+            self.activate(number)
+            self.codes = {}
+            for module in self.modules:
+                for definition in module.types:
+                    self._record_components(definition)
+                for decl in module.data:
+                    self.local = {}
+                    self._declaration(decl)
+                for routine in module.routines:
+                    self._routine(routine)
+            for names in self.codes.values():
+                self._alternatives(names)
+        for record in list(self.missing.every.values()):
+            if record.kind == TYPE and record.left_out:     # a name's record typed since
+                self._arrange(record)
 
     def _code(self, subject, value) -> None:
         """Note that datum ``subject`` is given, or compared with, ``value`` when both are
@@ -875,6 +942,26 @@ def _target_shaped(aggregate: ast.Aggregate) -> Optional[TypeInfo]:
             return None
         shape.append(len(item.items))
     return TARGET_SHAPES.get(tuple(shape))
+
+
+def _persistents(tasks) -> dict:
+    """``key -> (type, sizes, module name, whether with a value)`` of the PERS data the
+    tasks' modules declare for every task (neither LOCAL nor TASK), the first declaration
+    of each name; sizes only when every dimension is a number."""
+    found = {}
+    for modules in tasks:
+        for module in modules:
+            for decl in module.data:
+                if decl.storage != "PERS" or decl.scope in (ast.LOCAL, ast.TASK) or \
+                        decl.name.key in found:
+                    continue
+                sizes = [int(dim.value) for dim in decl.dims
+                         if isinstance(dim, ast.NumLiteral)]
+                if len(sizes) != len(decl.dims):
+                    continue
+                found[decl.name.key] = (TypeInfo(decl.type.name.text), sizes, module.name.text,
+                                        decl.init is not None)
+    return found
 
 
 def _place_of(missing: Missing) -> tuple:

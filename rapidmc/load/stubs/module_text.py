@@ -193,6 +193,9 @@ class StubWriter:
             notes.append(f"{number} of the {count} names one value is compared with in turn")
         storage = "VAR" if item.storage == "VAR" else \
             "CONST" if item.storage == "CONST" and not item.assigned else "PERS"
+        if storage == "PERS" and item.valued_by:     # the one value of a PERS tasks share
+            notes = [f"its value: the declaration in {item.valued_by}, of another task"]
+            return [f"PERS {type_name} {item.name.text}{dims};" + _comment(notes)]
         return [f"{storage} {type_name} {item.name.text}{dims} := {value};" + _comment(notes)]
 
     def _large_array(self, item: Missing, type_name: str, sizes: list, dims: str,

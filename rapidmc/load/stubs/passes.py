@@ -17,13 +17,14 @@ Example::
 """
 from __future__ import annotations
 
-from typing import Optional
+from typing import Callable, Optional, Sequence
 
 from ... import ast
 from .inference import (ATOMIC, DATA, FUNCTION, PROCEDURE, TYPE, Inference, Missing,
                         Parameter)
 from .names import NUM, TypeInfo
 from .records import POSITIONAL_COMPONENT, arrange
+from .shared_types import needed_by
 
 # Walks to settle the types at most (each learns something, or the walking stops).
 MAX_PASSES = 6
@@ -32,21 +33,38 @@ MAX_PASSES = 6
 def missing_names(modules: tuple[ast.Module, ...], signals=frozenset()) -> list[Missing]:
     """Every undeclared name the modules use, in order of first use, types inferred
     (``signals``: names of configured I/O signals, which are not missing)."""
-    inference = Inference(modules, signals)
+    return missing_names_of_tasks([modules], signals)[0]
+
+
+def missing_names_of_tasks(tasks: Sequence[tuple[ast.Module, ...]],
+                           signals=frozenset()) -> list[list[Missing]]:
+    """For each task (its modules), what it must declare: the names it uses and does not
+    declare, each inferred once from the uses of every task that misses it (a whole
+    backup's tasks load the same option modules), and the types those need."""
+    inference = Inference(tasks, signals)
     _settle(inference, count_uses=True)
-    if _types_from_names(inference):        # the last resort; its types reach other names
+    for last_resort in (_types_from_names,      # the last resort; its types reach other names
+                        _types_from_written,    # aggregates assigned whole: types and sizes
+                        _types_of_tests,        # TEST on missing names only: num assumed
+                        _assumed_positions):    # positions of a value nothing types: num
+        if _in_each_task(inference, last_resort):
+            _settle(inference, count_uses=False)
+    _in_each_task(inference, _types_of_passed_values)
+    if _in_each_task(inference, _types_of_parameters):  # from aggregates, or num
         _settle(inference, count_uses=False)
-    if _types_from_written(inference):      # aggregates assigned whole: types and sizes
-        _settle(inference, count_uses=False)
-    if _types_of_tests(inference):          # TEST on missing names only: num assumed
-        _settle(inference, count_uses=False)
-    if _assumed_positions(inference):       # positions of a value nothing types: num assumed
-        _settle(inference, count_uses=False)
-    _types_of_passed_values(inference)
-    if _types_of_parameters(inference):     # what no argument types: from aggregates, or num
-        _settle(inference, count_uses=False)
-    return sorted(inference.missing.values(),
-                  key=lambda m: (m.first_use.file, m.first_use.line, m.first_use.column))
+    return [sorted(needed_by(inference, number),
+                   key=lambda m: (m.first_use.file, m.first_use.line, m.first_use.column))
+            for number in range(len(tasks))]
+
+
+def _in_each_task(inference: Inference, step: Callable[[Inference], Optional[bool]]) -> bool:
+    """``step`` run with each task's declarations and view in turn; whether one changed
+    anything."""
+    changed = False
+    for number in range(len(inference.tasks)):
+        inference.activate(number)
+        changed |= bool(step(inference))
+    return changed
 
 
 def _assumed_positions(inference: Inference) -> bool:
@@ -72,7 +90,7 @@ def _settle(inference: Inference, count_uses: bool) -> None:
         inference.changed = False
         inference.counting = count_uses and number == 0
         inference.walk()
-        if not _types_from_components(inference) and not inference.changed:
+        if not _in_each_task(inference, _types_from_components) and not inference.changed:
             break
 
 
@@ -206,9 +224,9 @@ def _known_for_invented(inference: Inference) -> bool:
             continue          # one name alone says too little; c1, c2 ... name positions
         candidates = inference.names.records_with(names)
         if record.shape is not None:
-            shape = _structure(inference, TypeInfo(record.name.text))
+            shape = inference.structure(TypeInfo(record.name.text))
             candidates = [c for c in candidates
-                          if shape is not None and _structure(inference, TypeInfo(c)) == shape]
+                          if shape is not None and inference.structure(TypeInfo(c)) == shape]
         if not candidates:
             continue
         inference.replace_type(key, candidates[0])
@@ -216,29 +234,12 @@ def _known_for_invented(inference: Inference) -> bool:
     return _drop_unused_invented(inference) or changed
 
 
-def _structure(inference: Inference, info: TypeInfo, depth: int = 0):
-    """A type's shape: the atomic type's key, or the tuple of its components' shapes (the
-    positions' for a record the stubs shape from a value); None when a part is unknown."""
-    base = inference.names.base(info).key
-    if base in ATOMIC or depth > 8:
-        return base
-    record = inference.missing.get(base)
-    if record is not None and record.kind == TYPE:
-        parts = record.shape if record.shape is not None else list(record.fields.values())
-    else:
-        parts = [TypeInfo(t) for _, t in inference.names.components(info.name) or ()]
-    if not parts or None in parts:
-        return None
-    shapes = tuple(_structure(inference, part, depth + 1) for part in parts)
-    return None if None in shapes else shapes
-
-
 def _drop_unused_invented(inference: Inference) -> bool:
     """Invented record types no component uses any more (they belonged to one replaced, or
     a use gave the component a known type); whether any was dropped."""
     dropped = False
     while True:
-        used = {info.key for owner in inference.missing.values()
+        used = {info.key for owner in inference.missing.every.values()
                 for info in (*owner.fields.values(), *owner.named.values(), *(owner.shape or ()),
                              owner.type, *(parameter.type for parameter in owner.parameters))
                 if info is not None}
@@ -247,7 +248,7 @@ def _drop_unused_invented(inference: Inference) -> bool:
             return dropped
         dropped = True
         for key in unused:
-            inference.missing.pop(key, None)
+            inference.missing.every.pop(key, None)
             inference.invented.discard(key)
 
 
