@@ -89,8 +89,9 @@ def test_a_long_array_written_whole_shows_only_its_changed_elements():
     assert text == "table: 2 of 60 elements changed: {3} = 0 (was 3), {30} = 0 (was 30)"
     # with most elements changed the value itself, shortened, and its length
     mostly = array(*["9"] * 60)
-    assert change_text(Change("table", old, mostly)).startswith("table = [9,9,")
-    assert "(60 elements, all 9)  (was [1,2,3," in change_text(Change("table", old, mostly))
+    # (every element one value: the first says it)
+    assert change_text(Change("table", old, mostly)).startswith(
+        "table = [9,...] (60 elements, all 9)  (was [1,2,3,")
     # more changed elements than are listed: a count (--full-trace shows them all)
     many = array(*[("0" if i % 10 == 0 else str(i)) for i in range(1, 61)])
     assert change_text(Change("table", old, many)).endswith(
@@ -328,7 +329,8 @@ def test_slice_ends_the_need_for_a_datum_at_its_whole_assignment_only_where_unam
 
 def test_slice_keeps_a_step_that_raised_an_error_and_one_that_chose_an_input():
     # the error handler at line 9 reads ERRNO; step 3 raised (ERRNO unchanged: the same
-    # error again), so it and the socket it reads stay shown
+    # error again), so it and the socket it reads stay shown; the answer TPReadNum gave n
+    # (n's value already: no change) is what the failing line divides by
     from rapidmc.check.trace import Trace
     from rapidmc.report.trace_slice import needed_steps
     steps = (TraceStep(1, INITIAL, None, ()),
@@ -339,11 +341,33 @@ def test_slice_keeps_a_step_that_raised_an_error_and_one_that_chose_an_input():
              TraceStep(11, TRANSITION, TransitionInfo("p.mod", 11, "TPReadNum n, \"n?\";",
                                                       {"TPReadNum": "0"}), ()),
              step(12, "k := 2;", "k"),
-             step(13, "y := 1 / 0;"))
+             step(13, "y := 1 / n;"))
     trace = Trace(steps, (), None, "uncaught ERR_DIVZERO")
     assert sorted(needed_steps(trace)) == [1, 9, 11, 13]
     assert sorted(needed_steps(trace, handler_starts=frozenset({("p.mod", 9)}))) == \
         [1, 2, 3, 9, 11, 13]
+
+
+def test_slice_counts_an_input_a_plain_statement_names_by_what_it_writes():
+    # ServerConnect ip_pers: the PERS read from outside goes into the call's parameters,
+    # which nothing kept reads: the step is left out.  An input the statement does not name
+    # (an interrupt's edge at that step) and one a branch reads stay kept.
+    from rapidmc.check.trace import Trace
+    from rapidmc.report.trace_slice import needed_steps
+
+    def chose(index: int, source: str, inputs: dict, *changed: str) -> TraceStep:
+        return TraceStep(index, TRANSITION, TransitionInfo("p.mod", index, source, inputs),
+                         tuple(Change(name, None, "1") for name in changed))
+    steps = (TraceStep(1, INITIAL, None, ()),
+             chose(2, "ServerConnect ip_pers, 5000;", {"ip_pers": '"10.0.0.2"'},
+                   "ServerConnect.ip"),
+             chose(3, "count := count + 1;", {"di_alarm": "1"}, "count"),
+             chose(4, "IF mode_pers = 2 THEN", {"mode_pers": "2"}),
+             step(5, "y := 1 / 0;"))
+    assert sorted(needed_steps(Trace(steps, (), None, "uncaught ERR_DIVZERO"))) == [1, 3, 4, 5]
+    # the parameter read later: the call and the input it chose count
+    read = steps[:4] + (step(5, "y := 1 / ip;"),)
+    assert 2 in needed_steps(Trace(read, (), None, "uncaught ERR_DIVZERO"))
 
 
 def test_slice_tells_one_routines_data_from_anothers_of_the_same_name():

@@ -3,7 +3,8 @@
 Each folder tests/counterexamples/<case>/ is one ``rapidmc check`` run from inside the
 folder: ``prog.mod`` and every other ``.mod`` file of the folder (a module written by
 ``rapidmc stubs``, say), the options of ``args`` (one line, shell quoting), and
-``expected``: the text report, stdout then stderr, with seconds written ``<t>``.
+``expected``: the text report, stdout then stderr, with seconds written ``<t>``; where
+the folder holds ``expected-full``, that is the report with ``--full-trace``.
 Regenerate an expectation only after reading the new text: these files are the spec of
 what a reader sees.
 
@@ -21,7 +22,11 @@ from pathlib import Path
 
 import pytest
 
+from rapidmc.api import check, load_program
 from rapidmc.cli import main
+from rapidmc.report.counterexample import chosen_inputs_only, counterexample_lines
+from rapidmc.report.results import text_options
+from rapidmc.report.trace_slice import needed_steps
 from cli_capture import run_cli
 
 CASES_DIR = Path(__file__).resolve().parent / "counterexamples"
@@ -50,6 +55,61 @@ def test_text_report_is_the_expected_one(case, monkeypatch):
     assert code == 1
     text = SECONDS.sub("<t> s)", out + err)
     assert text == (CASES_DIR / case / "expected").read_text()
+
+
+@pytest.mark.parametrize("case", [case for case in CASES
+                                  if (CASES_DIR / case / "expected-full").exists()])
+def test_full_text_report_is_the_expected_one(case, monkeypatch):
+    _, out, err = run(case, monkeypatch, "--full-trace")
+    text = SECONDS.sub("<t> s)", out + err)
+    assert text == (CASES_DIR / case / "expected-full").read_text()
+
+
+# the step numbers a line of the text names: a step (``step 7``, ``steps 26-27``), a stretch
+# told in one line (``-- steps 9-20 ...``), and of a fold the steps it repeats
+SHOWN_STEP = re.compile(r"^    steps? (\d+)(?:-(\d+))?  ")
+TOLD_STEPS = re.compile(r"^    -- steps (\d+)-(\d+)(?::| repeat)")
+FOLD_MODEL = re.compile(r"(?:repeat steps|as in steps) (\d+)-(\d+)")
+
+
+@pytest.mark.parametrize("case", [case for case in CASES
+                                  if not (CASES_DIR / case / "args").exists()])
+def test_folded_text_names_every_step_the_error_depends_on(case):
+    # each step of the dynamic slice is shown, or lies in a fold (repeats, rounds) whose
+    # shown model steps run its line, or in a call told by what it left behind; a line of
+    # steps left out holds none of them
+    folder = CASES_DIR / case
+    files = [str(folder / "prog.mod")] + sorted(str(p) for p in folder.glob("*.mod")
+                                               if p.name != "prog.mod")
+    report = check(load_program(files))
+    for checked in report.results:
+        if checked.result.verdict != "VIOLATED":
+            continue
+        trace = report.trace(checked.name)
+        options = text_options(checked, report.describer)
+        # (the text leaves out an input the step before chose with the same value)
+        needed = needed_steps(chosen_inputs_only(trace), options.names,
+                              options.handler_starts, options.compound_exits)
+        places = {step.index: (step.transition.file, step.transition.line)
+                  for step in [*trace.prefix, *trace.cycle] if step.transition is not None}
+        shown, ran, folds = set(), set(), []
+        for line in counterexample_lines(trace, options):
+            if SHOWN_STEP.match(line):
+                low, high = SHOWN_STEP.match(line).groups()
+                shown.update(range(int(low), int(high or low) + 1))
+            elif TOLD_STEPS.match(line):
+                span = range(int(TOLD_STEPS.match(line)[1]), int(TOLD_STEPS.match(line)[2]) + 1)
+                model = FOLD_MODEL.search(line)
+                if model:
+                    folds.append((span, {places.get(n) for n in
+                                         range(int(model[1]), int(model[2]) + 1)}))
+                elif " ran (no input chosen)" in line:
+                    ran.update(span)
+                else:
+                    assert needed.isdisjoint(span), (line, sorted(needed))
+        for index in needed - shown - ran:
+            assert any(index in span and places.get(index) in lines for span, lines in folds), \
+                (case, index, sorted(needed))
 
 
 @pytest.mark.parametrize("case", CASES)

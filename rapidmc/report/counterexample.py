@@ -11,6 +11,10 @@
 * a stretch of steps that repeats the lines just before it (a retry loop,
   a FOR loop filling an array) folded into one line with the values it
   leaves behind;
+* rounds of one sequence of lines that a RETRY or a GOTO closes (``rounds``)
+  told between the first round and the last in one line, with what changed
+  across them (``steps 19-51: 3 more rounds of lines 20-28 (ERROR handler
+  RETRY) as in steps 8-18; retries 1 -> 4``);
 * a run of steps the violation does not depend on (``trace_slice``: they
   write only data that no step kept, no error line and no atom reads) told
   in one line (``steps 2-18: waypoints{1..17} assigned, not read by the error``);
@@ -41,6 +45,7 @@ from ..check.trace import INITIAL, Change, Trace, TraceStep
 from ..semantics.robots import ROBOT_TCP
 from ..semantics.task_registers import names_errno
 from .headline import headline_lines
+from .rounds import Rounds, fold_rounds
 from .trace_slice import (needed_steps, own_frames, reads_of, returned_calls, running_tasks,
                           scoped_forms, scoped_reads, stops_program, words_of)
 from .trace_text import (INDEX, SOURCE_WIDTH, STRING_WIDTH, WAS_WIDTH, WIDTH,
@@ -160,7 +165,8 @@ def _prefix_items(trace: Trace, needed: frozenset, options: TextOptions) -> list
         if isinstance(item, TraceStep) and item.index not in needed:
             run.append(item)
             continue
-        if isinstance(item, Folded) and not any(step.index in needed for step in item.hidden):
+        if isinstance(item, (Folded, Rounds)) and \
+                not any(step.index in needed for step in item.hidden):
             run.extend(item.hidden)         # repeats of steps the violation does not need
             continue
         items.extend(run if len(run) < 2 else [SlicedAway(tuple(run), reader)])
@@ -228,7 +234,7 @@ def _index_span(item) -> tuple[int, int]:
     """The first and last step numbers an item of the prefix covers."""
     if isinstance(item, TraceStep):
         return item.index, item.index
-    steps = item.hidden if isinstance(item, Folded) else item.steps
+    steps = item.hidden if isinstance(item, (Folded, Rounds)) else item.steps
     return steps[0].index, steps[-1].index
 
 
@@ -376,13 +382,28 @@ def _steps(count: int) -> str:
 
 
 def _folded(steps: Sequence[TraceStep], options: TextOptions) -> list:
-    return list(steps) if options.full else fold_repeats(steps)
+    """The steps with each chain of rounds (``rounds``) folded, then the repeats of the
+    steps between them; every step with ``options.full``."""
+    if options.full:
+        return list(steps)
+    items: list = []
+    run: list[TraceStep] = []
+    for item in fold_rounds(steps):
+        if isinstance(item, Rounds):
+            items.extend(fold_repeats(run))
+            items.append(item)
+            run = []
+        else:
+            run.append(item)
+    return items + fold_repeats(run)
 
 
-def _item_lines(item: Union[TraceStep, Folded, SlicedAway, Joined, Tested, RanThrough], options: TextOptions,
-                read: frozenset) -> list[str]:
+def _item_lines(item: Union[TraceStep, Folded, Rounds, SlicedAway, Joined, Tested, RanThrough],
+                options: TextOptions, read: frozenset) -> list[str]:
     if isinstance(item, Folded):
         return [folded_line(item)]
+    if isinstance(item, Rounds):
+        return [rounds_line(item, read)]
     if isinstance(item, SlicedAway):
         return [sliced_line(item)]
     if isinstance(item, Joined):
@@ -619,15 +640,40 @@ def folded_line(folded: Folded) -> str:
     return f"    -- {what}{_left_behind(hidden, 'them')} --"
 
 
-def _grouped(changes: list[Change]) -> list[str]:
-    """``n = 5``, and for several elements of one array ``waypoints{2} to waypoints{12} (11
-    values)``: what a folded stretch leaves behind, one entry per datum."""
+def rounds_line(rounds: Rounds, read: frozenset = frozenset()) -> str:
+    """``-- steps 19-51: 3 more rounds of lines 20-28 (ERROR handler RETRY) as in steps 8-18;
+    retries 1 -> 4, resets 1 -> 4, 3 FlexPendant lines written --``: what changed across
+    the rounds, the data the shown steps ``read`` first."""
+    hidden = rounds.hidden
+    kind = "ERROR handler RETRY" if rounds.jump == "RETRY" else rounds.jump
+    lines = "line" if rounds.lines[0] == rounds.lines[1] else "lines"
+    span = str(rounds.lines[0]) if lines == "line" else f"{rounds.lines[0]}-{rounds.lines[1]}"
+    what = f"steps {hidden[0].index}-{hidden[-1].index}: {rounds.times} more " \
+           f"{'round' if rounds.times == 1 else 'rounds'} of {lines} {span} ({kind}) as in " \
+           f"steps {rounds.first}-{rounds.last}"
+    changed = [f"retries {rounds.retries[0]} -> {rounds.retries[1]}"] if rounds.retries else []
+    net = sorted(net_changes(hidden), key=lambda change: read.isdisjoint(
+        data_names(change.name) + scoped_forms(change.name)))
+    across = _grouped(net, arrow=True)
+    more = len(across) - NET_SHOWN
+    changed.extend(across[:NET_SHOWN] + ([f"{more} more values"] if more > 0 else []))
+    changed.extend(_outputs_written(hidden))
+    return f"    -- {what}{'; ' + ', '.join(changed) if changed else ''} --"
+
+
+def _grouped(changes: list[Change], arrow: bool = False) -> list[str]:
+    """``n = 5`` (``arrow``: ``n 1 -> 5``, from the value before), and for several elements
+    of one array ``waypoints{2} to waypoints{12} (11 values)``: what a folded stretch leaves
+    behind, one entry per datum."""
     groups: dict[str, list[Change]] = {}
     for change in changes:
         groups.setdefault(INDEX.sub("{}", change.name), []).append(change)
     entries = []
     for members in groups.values():
-        if len(members) == 1:
+        if len(members) == 1 and arrow and members[0].old is not None:
+            entries.append(f"{members[0].name} {shorten(members[0].old, FOLDED_WIDTH)} -> "
+                           f"{shorten(members[0].new, FOLDED_WIDTH)}")
+        elif len(members) == 1:
             entries.append(f"{members[0].name} = {shorten(members[0].new, FOLDED_WIDTH)}")
         else:
             entries.append(f"{members[0].name} to {members[-1].name} "

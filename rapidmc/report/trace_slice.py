@@ -17,7 +17,8 @@ property's ``names`` -- and keeps:
   the routine of each kept step (its arguments may be references);
 * every step that is not a plain statement: the initial state, a stuck state,
   a step with no source line, a step that changes ERRNO or the program's status,
-  chooses an input (not only which task runs), or raises an error (the next step starts an ERROR handler:
+  chooses an input its statement does not name (not only which task runs: an
+  interrupt's edge, a wait's timeout), or raises an error (the next step starts an ERROR handler:
   the caller names the handlers' first lines).
 
 A stretch the run left for the statement after it without a jump is left out whole
@@ -239,6 +240,7 @@ def writes_of(step: TraceStep, scoped: frozenset = frozenset(),
         target, assigns, _ = text.partition(":=")
         if assigns and ASSIGNED.match(target):
             found.add(IDENTIFIER.match(target.strip()).group().upper())
+    found |= _input_targets(step)
     found = _in_scope(found, step, scoped, task)
     for change in step.changes:
         parts = INDEX.sub("", change.name.removeprefix("signal ")).upper().split(".")
@@ -256,7 +258,8 @@ def is_control(step: TraceStep, raised: bool = False) -> bool:
     handler, so this one raised an error), or is not a plain statement at all."""
     if step.kind != TRANSITION or step.transition is None or not step.transition.location:
         return True
-    if raised or any(name != TASK_CHOICE for name in step.transition.inputs):
+    if raised or any(name != TASK_CHOICE and not _named_read(name, step)
+                     for name in step.transition.inputs):
         return True                 # an error raised, an input chosen (not the task to run)
     if any(change.name in ALWAYS_KEPT or names_errno(change.name)
            for change in step.changes):
@@ -266,6 +269,39 @@ def is_control(step: TraceStep, raised: bool = False) -> bool:
         if not words or words[0] in CONTROL_WORDS or LABEL.match(text) or text.startswith("%"):
             return True
     return False
+
+
+def _named_read(name: str, step: TraceStep) -> bool:
+    """Whether the input ``name`` is a read of what the step's statements name (``pers_ip``
+    passed to a call, ``SocketReceive at f.mod:9:5``'s message): a value the statement
+    reads, whose effect on the run is what the step writes (``writes_of`` counts every
+    datum the statement names) or the error it raises, so data dependence alone tells
+    whether it counts.  A plain statement's only: a branch or a wait is control with
+    whatever it reads."""
+    first = IDENTIFIER.match(name)
+    return first is not None and any(first.group().upper() in words_of(text)
+                                     for text in statements_of(step))
+
+
+CALLED = re.compile(r"[A-Za-z][A-Za-z0-9_]*(?=\s*\()")
+
+
+def _input_targets(step: TraceStep) -> set:
+    """The data a plain statement that chose an input it names may have written: every
+    datum it names, but the instruction or routine it runs and the functions it calls.
+    An input may leave a datum as it was (``TPReadNum n`` answered with n's value): the
+    value read later still comes from the input."""
+    transition = step.transition
+    if transition is None or not any(_named_read(name, step) for name in transition.inputs):
+        return set()
+    found = set()
+    for text in statements_of(step):
+        words = words_of(text)
+        if not words or words[0] in CONTROL_WORDS or LABEL.match(text):
+            continue
+        called = {word.upper() for word in CALLED.findall(STRING.sub('""', text))}
+        found.update(word for word in words[1:] if word not in called)
+    return found
 
 
 def needed_steps(trace: Trace, names: Iterable[str] = (),

@@ -167,7 +167,9 @@ def shorten(text: str, width: Optional[int]) -> str:
 
 def shown_value(text: str, width: Optional[int], string_width: Optional[int] = None) -> str:
     """``text`` shortened to ``width`` (a string value to ``string_width``, when given),
-    saying how long the whole is: an array's element count, a string's length.
+    saying how long the whole is: an array's element count, a string's length; an array
+    whose elements are all one value shows the first (``[0,...] (120 elements, all 0)``,
+    ``(512 elements, all equal)`` when that value is long).
 
     >>> shown_value('"The gripper reported a fault at station four"', 100, 24)
     '"The gripper reporte..." (44 characters)'
@@ -181,8 +183,11 @@ def shown_value(text: str, width: Optional[int], string_width: Optional[int] = N
     elements = array_elements(text)
     if not elements:
         return short
-    if len({value for _, value in elements}) == 1 and len(elements[0][1]) <= width // 4:
-        return f"{short} ({len(elements)} elements, all {elements[0][1]})"
+    if len({value for _, value in elements}) == 1 and len(elements[0][1]) + 6 < len(short):
+        # every element says the same: the first one is enough ("[0,...]")
+        first = shorten(text, len(elements[0][1]) + 6)
+        same = elements[0][1] if len(elements[0][1]) <= width // 4 else "equal"
+        return f"{first} ({len(elements)} elements, all {same})"
     return f"{short} ({len(elements)} elements)"
 
 
