@@ -2,7 +2,7 @@
 
 Usage: python bench/distributed.py [--issue] [--eager] [--counters 6,7] [--modulo 4] [--only NAME]
                                    [--workers 2] [--ltl] [--split] [--rounds [--payload B]]
-                                   [--start-memory]
+                                   [--start-memory] [--pair] [--owners data|state]
 
 For each model, each in a fresh process: the run-time error search of a check (breadth-first,
 the whole reachable state space, since these programs have no run-time error), once in one
@@ -23,7 +23,10 @@ whole-controller family's totals (the issue's 1.7x target) and ``uptime`` before
 the machine may be shared, where wall times mean little and CPU times are the figures.
 
 ``--eager``: the workers search with ``--eager`` (rounds without breadth-first levels; the
-levels column is then the rounds).
+levels column is then the rounds).  ``--owners data`` / ``--owners state``: the workers' states
+are owned by their data (a packed model's data segment, else the global data part: a step
+that writes no global data stays with its worker) or by the whole state, instead of as the
+search decides from the first states (``codec.data_owners_fit``).
 
 ``--issue``: only the issue's figures, the whole-controller family and counters N=10 (a few
 minutes on a quiet 2-core machine).
@@ -42,6 +45,13 @@ workers were inside a call are printed under each model.
 
 ``--split``: without Ray, two partitions driven in one process (``partition.search_here``):
 their CPU seconds together against one process's, and the bytes they sent per state.
+
+``--pair``: what two busy cores cost per unit of work on this machine, without Ray or
+partitions: each model's one-process search alone, then two of the same search at once (two
+processes), the CPU seconds of each.  Two workers spend at least the pair's CPU per state
+(each steps its share with the other core busy), so the wall speed-up of 2 workers on 2 cores
+is at most 2 x (alone / pair), whatever the distribution costs on top (run it on a quiet
+machine: on a loaded one, "alone" shares its core too).
 
 ``--rounds``: Ray's own cost of a round, without a model: two actors exchange a batch of
 ``--payload`` bytes per round, (a) relayed by the driver (it calls each actor with the
@@ -250,14 +260,14 @@ def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
     # the actors' processes start here, outside the timed search (as in one process's import)
     recipe = api.system_recipe(model)        # (each worker builds the system itself)
     partitioned_reachable(ray, workers, system, "failed", budget=SearchBudget(1),
-                          rebuild=recipe, eager=EAGER)
+                          rebuild=recipe, eager=EAGER, by_data=OWNERS)
     import os
     cpu_before = tree_cpu(os.getpid())
     started = time.perf_counter()
     driver_cpu = time.process_time()
     result, _, figures = partitioned_reachable(ray, workers, system, "failed",
                                                budget=SearchBudget(None), rebuild=recipe,
-                                               eager=EAGER)
+                                               eager=EAGER, by_data=OWNERS)
     seconds = time.perf_counter() - started
     driver_cpu = time.process_time() - driver_cpu
     every_cpu = cpu_by_kind(cpu_before, tree_cpu(os.getpid()), os.getpid(),
@@ -401,12 +411,14 @@ def measure_rounds(payload: int, rounds: int = 300) -> None:
 
 
 EAGER = False            # (--eager: the workers' searches are eager)
+OWNERS = None            # (--owners data | state: True | False; None: the search decides)
 
 
 def fresh(name: str, mode: str, modulo: int, workers: int) -> dict:
     run = subprocess.run([sys.executable, __file__, "--measure", name, mode,
                           "--modulo", str(modulo), "--workers", str(workers)] +
-                         ["--eager"] * EAGER,
+                         ["--eager"] * EAGER +
+                         ([] if OWNERS is None else ["--owners", "data" if OWNERS else "state"]),
                          capture_output=True, text=True, check=True)
     return json.loads(run.stdout.strip().splitlines()[-1])
 
@@ -432,10 +444,15 @@ def main() -> None:
                         help="the workers search eagerly (rounds without levels)")
     parser.add_argument("--start-memory", action="store_true",
                         help="a worker's memory as it starts, stage by stage")
+    parser.add_argument("--owners", choices=("data", "state"), default=None,
+                        help="the workers' states owned by their data or the whole state")
+    parser.add_argument("--pair", action="store_true",
+                        help="one search alone against two of it at once (the cores' cost)")
     parser.add_argument("--measure", nargs=2, default=None, help=argparse.SUPPRESS)
     args = parser.parse_args()
-    global EAGER
+    global EAGER, OWNERS
     EAGER = args.eager
+    OWNERS = None if args.owners is None else args.owners == "data"
     if args.start_memory:
         measure_start_memory()
         return
@@ -455,6 +472,9 @@ def main() -> None:
     names = [name for name in names if not args.only or args.only in name]
     if args.split:
         print_split(names, args.modulo)
+        return
+    if args.pair:
+        print_pair(names, args.modulo)
         return
     print(f"uptime at the start: {uptime()}", flush=True)
     if args.ltl:
@@ -554,6 +574,32 @@ def print_ltl(names, modulo: int, workers: int) -> None:
               f"{single['max_rss_kb'] / 1024:>8.0f} {rss:>12} {balance:>9} "
               f"{single['cpu']:>7.2f} {cpu:>11} "
               f"{single['cpu'] / max(spread['worker_cpu']):>5.2f}x", flush=True)
+
+
+def print_pair(names, modulo: int, repeat: int = 2) -> None:
+    """``--pair`` (module docstring): per model, ``repeat`` times: one search alone, then two
+    at once; CPU seconds of each, and the pair's mean against the alone's."""
+    print(f"uptime at the start: {uptime()}", flush=True)
+    print(f"{'model':16} {'alone CPU s':>11} {'pair CPU s':>11} {'pair x':>6}", flush=True)
+    totals = [0.0, 0.0]
+    for name in names:
+        for _ in range(repeat):
+            alone = fresh(name, "single", modulo, 1)["cpu"]
+            both = [subprocess.Popen([sys.executable, __file__, "--measure", name, "single",
+                                      "--modulo", str(modulo)], stdout=subprocess.PIPE,
+                                     text=True) for _ in range(2)]
+            pair = [json.loads(run.communicate()[0].strip().splitlines()[-1])["cpu"]
+                    for run in both]
+            mean = sum(pair) / 2
+            totals[0] += alone
+            totals[1] += mean
+            print(f"{name:16} {alone:>11.2f} {_each(pair, '.2f'):>11} {mean / alone:>5.2f}x",
+                  flush=True)
+    if totals[0]:
+        print(f"all: {totals[0]:.2f} s alone, {totals[1]:.2f} s each of a pair: "
+              f"{totals[1] / totals[0]:.2f}x; so 2 workers on 2 cores reach at most "
+              f"{2 * totals[0] / totals[1]:.2f}x in wall time")
+    print(f"uptime at the end: {uptime()}")
 
 
 def print_split(names, modulo: int) -> None:

@@ -423,6 +423,42 @@ def test_eager_partitions_count_what_one_process_counts(name, engine):
     assert rounds < one.stats.max_depth
 
 
+@pytest.mark.parametrize("eager", [False, True])
+@pytest.mark.parametrize("name", ["socket server", "two tasks", "interrupts"])
+def test_node_ids_owned_by_their_global_data_count_what_one_process_counts(name, eager):
+    """Owners by the global data part (``NodeCodec``'s ``by_data``): the same states,
+    transitions and deadlocks as one process, and each global data value is stored by one
+    partition only (its states all live there)."""
+    with native.engine_used("python"):          # (collapsed tables: node ids)
+        system = system_of(name)
+        one = find_reachable(system, system.failed, max_states=None)
+        parts, _, target = search_here(system, 2, eager=eager, by_data=True)
+        assert all(type(part.codec) is NodeCodec and part.codec.by_data for part in parts)
+        data = [{part.table[state_id][1] for state_id in range(len(part.table))}
+                for part in parts]
+    assert one.verdict == HOLDS and target is None
+    assert sum(len(part.table) for part in parts) == one.stats.product_states
+    assert sum(part.transitions for part in parts) == one.stats.transitions
+    assert sum(part.deadlocks for part in parts) == one.stats.deadlocks
+    assert all(data) and not data[0] & data[1]
+
+
+@pytest.mark.parametrize("eager", [False, True])
+def test_node_ids_owned_by_their_global_data_find_the_error_on_a_real_path(eager):
+    """Owned by their global data, the partitions find the error too, on a path of the
+    model's steps (as long as one process's where the search goes in levels)."""
+    with native.engine_used("python"):
+        system = system_of("run-time error")
+        one = find_reachable(system, system.failed, max_states=None)
+        parts, _, target = search_here(system, 2, eager=eager, by_data=True)
+        assert one.verdict == VIOLATED and target is not None
+        path = _path_to(parts, target)[::-1]
+        assert path[0] in system.initial_states() and system.failed(path[-1])
+        for before, after in zip(path, path[1:]):
+            assert after in [successor for _, successor in system.successors(before)]
+    assert len(path) == len(one.prefix) if not eager else len(path) >= len(one.prefix)
+
+
 @pytest.mark.parametrize("engine", ["native", "python"])
 def test_eager_partitions_find_the_error_on_a_real_path(engine):
     """An eager search finds the error too; its path, across partitions, is a path of the

@@ -164,8 +164,9 @@ class StateTable:
         flat.frombytes(rows)
         ids, news = array("q"), bytearray()
         intern = self.intern_parts
-        for start in range(0, len(flat), width):
-            state_id, new = intern(tuple(flat[start:start + width]))
+        numbers = iter(flat)
+        for parts in zip(*[numbers] * width):     # (the rows as tuples, ``width`` at a time)
+            state_id, new = intern(parts)
             ids.append(state_id)
             news.append(new)
         return ids.tobytes(), bytes(news)

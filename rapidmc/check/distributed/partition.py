@@ -153,8 +153,8 @@ class Partition:
               deadlock_is_target: bool, watch: Optional[str] = None,
               by_data: bool = False, eager: bool = False) -> None:
         """Begin a search (an actor serves the searches of one check one after another);
-        ``by_data``: a packed model's states are owned by their data segment
-        (``codec.data_owners_fit``); ``eager``: rounds without levels (module docstring)."""
+        ``by_data``: states are owned by their data segment (a packed model's,
+        ``codec.data_owners_fit``) or their global data part (``codec.NodeCodec``); ``eager``: rounds without levels (module docstring)."""
         self.index, self.count, self.eager = index, count, eager
         system = source.build()
         self.system = system
@@ -509,15 +509,16 @@ def _peak_rss_kb() -> int:
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
 
 
-def search_here(system, count: int, predicate: str = "failed",
-                eager: bool = False) -> tuple[list, int, tuple]:
+def search_here(system, count: int, predicate: str = "failed", eager: bool = False,
+                by_data: Optional[bool] = None) -> tuple[list, int, tuple]:
     """The partitioned search with ``count`` partitions driven in this process by the
-    cluster's driver (``search._Rounds``), without Ray: for tests and bench/distributed.py.
-    Returns (the partitions, levels, the first (partition, state id) the predicate marks
-    or None)."""
+    cluster's driver (``search._Rounds``), without Ray: for tests and bench/distributed.py
+    (``by_data`` as ``search.partitioned_reachable``'s).  Returns (the partitions, levels,
+    the first (partition, state id) the predicate marks or None)."""
     from .search import _Rounds
     from ..budget import SearchBudget
-    by_data = data_owners_fit(system, state_table(system, packed=True), count)
+    if by_data is None:
+        by_data = data_owners_fit(system, state_table(system, packed=True), count)
     parts = [Partition() for _ in range(count)]
     for index, part in enumerate(parts):
         part.start(index, count, SystemSource(system), predicate, False, None, by_data, eager)

@@ -51,16 +51,19 @@ def partitioned_reachable(ray, partitions: int, system: TransitionSystem, predic
                           budget: Optional[SearchBudget] = None,
                           on_level: Optional[Callable[[list], None]] = None,
                           rebuild: Optional[Callable[[], TransitionSystem]] = None,
-                          eager: bool = False) -> tuple:
+                          eager: bool = False, by_data: Optional[bool] = None) -> tuple:
     """(SearchResult, whether ``watch`` said True for some state, per-partition figures).
 
     ``predicate`` and ``watch`` name methods of ``system`` (the actors call them on their
     copy of it).  ``on_level(actors)`` is called before each level (tests kill one there).
     ``rebuild``: a picklable function that builds ``system`` in a worker's process (else
     the system itself is pickled to the workers).  ``eager``: rounds without levels.
+    ``by_data``: states owned by their global data (``codec``), or by the whole state;
+    None: as ``data_owners_fit`` decides from the first states.
     """
     budget = budget if budget is not None else SearchBudget()
-    by_data = data_owners_fit(system, state_table(system, packed=True), partitions)
+    if by_data is None:
+        by_data = data_owners_fit(system, state_table(system, packed=True), partitions)
     actors = actors_of(ray, partitions)
     shared = ray.put(SystemSource(system if rebuild is None else None, rebuild))
     try:
