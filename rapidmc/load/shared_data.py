@@ -54,8 +54,9 @@ def data_uses(program, namespace: int = PROGRAM_NAMESPACE,
               moves_read: bool = False) -> tuple[set, set]:
     """The global slots the routines of one task (its ``namespace``) name (read), and
     those they may write (assigned, or passed to a routine by reference), in their
-    bodies and their handlers; ``moves_read``: the PERS tool and work object a plain
-    move is passed (``motion.PLAIN_MOVES``) are read, not written, as the move does."""
+    bodies and their handlers; ``moves_read``: the PERS data (tool, work object, load) a
+    plain move (``motion.PLAIN_MOVES``) or a robot reading (``CRobT`` ...) is passed are
+    read, not written, as those routines do (``_PERS_READ_ONLY``)."""
     read, written = set(), set()
     for routine in program.routines:
         if routine.namespace != namespace or routine.ast is None:
@@ -71,14 +72,21 @@ def data_uses(program, namespace: int = PROGRAM_NAMESPACE,
                                if arg.value is not None)
             elif isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
                 modes = _parameter_modes(program, lookup, node)
-                if moves_read and node.name.key in PLAIN_MOVES and lookup(node.name.key) is None:
-                    continue
+                read_only = moves_read and node.name.key in _PERS_READ_ONLY and \
+                    lookup(node.name.key) is None
                 written.update(_slot(lookup, _root(arg.value))
                                for arg, mode in zip(node.args, modes)
-                               if arg.value is not None and mode_may_write(mode))
+                               if arg.value is not None and mode_may_write(mode) and
+                               not (read_only and mode == "PERS"))
     read.discard(None)
     written.discard(None)
     return read, written
+
+
+# predefined routines whose PERS parameters (a tool, a work object, a load) are only read:
+# the plain moves (the robot goes to the target with that tool) and the robot readings
+# (``library.position``, ``CalcRobT``, ``CalcJointT``: computed with that tool)
+_PERS_READ_ONLY = PLAIN_MOVES | {"CROBT", "CJOINTT", "CPOS", "CALCROBT", "CALCJOINTT"}
 
 
 def writes_data_by_name(routines) -> bool:
