@@ -32,10 +32,13 @@ from rapidmc import api
 from rapidmc.check.transition_system import as_sequence
 
 
-def growth(words: list[str], max_states: int, seconds: float) -> tuple[int, dict, bool]:
-    """(states explored, name -> set of values, complete) of the program ``words`` names."""
+def growth(words: list[str], max_states: int, seconds: float,
+           stubs: bool = False) -> tuple[int, dict, bool]:
+    """(states explored, name -> set of values, complete) of the program ``words`` names;
+    ``stubs``: each task's undeclared names declared from their uses (a whole backup's
+    tasks, which one stub module given beside the folder cannot serve)."""
     files, task = _split(words)
-    program = api.load_program(files, task=task)
+    program = api.load_program(files, task=task, stubs=stubs)
     model = api.prepare(program, [], api.CheckOptions())
     system, describer = model.system, model.describer
     values: dict[str, set] = defaultdict(set)
@@ -131,9 +134,11 @@ def main() -> int:
     if args.survey is None:
         words = args.words + (["--task", args.task] if args.task else [])
         with tempfile.TemporaryDirectory() as scratch:
-            if args.stubs:
+            whole = args.stubs and len(args.words) == 1 and Path(args.words[0]).is_dir()
+            if args.stubs and not whole:
                 words = with_stubs(words, scratch)
-            count, values, complete, views = growth(words, args.max_states, args.seconds)
+            count, values, complete, views = growth(words, args.max_states, args.seconds,
+                                                    stubs=whole)
         print(summary(count, values, complete, views, args.top))
         return 0
     wanted = set(args.outcomes.split(","))

@@ -144,6 +144,30 @@ def test_a_reading_taken_as_independent_loses_a_violation(tmp_path, monkeypatch,
     assert verdicts(check_json(argv))["never_seen"] == "HOLDS"
 
 
+def test_a_move_of_a_robot_another_task_reads_is_shared(tmp_path):
+    """A move writes its task's robot only: it conflicts with the tasks reading that robot
+    (``CRobT(\\TaskName:=...)``), and with no task where none does (``cell_uses.readers``)."""
+    argv = write_cell_tasks(tmp_path, 'CRobT(\\TaskName:="task 2 (cell2)").trans.x < 505',
+                            "MoveJ pFar, v100, fine, tool0;")
+    program = load_program([argv[0]], add_tasks=argv[2:6:2])
+    order = PartialOrder(program, set())
+    mover, still = (program.task_entries[number] for number in (0, 1))
+    assert order.groups.conflicts(1, mover, 0) == frozenset({0})    # read by the reader
+    assert order.is_ample_candidate(2, still, 0)                    # read by no task
+
+
+def test_a_move_taken_as_its_own_loses_a_violation(tmp_path, monkeypatch):
+    """The differential tests can fail: with the mover's robot taken as its own although
+    the reader reads it, the move alone is ample at the start, the reader sees the robot
+    moved, and ``seen = 1`` (read before the move) is never reached."""
+    argv = write_cell_tasks(tmp_path, 'CRobT(\\TaskName:="task 2 (cell2)").trans.x < 505',
+                            "MoveJ pFar, v100, fine, tool0;")
+    expected = {"no_runtime_error": "HOLDS", "no_deadlock": "HOLDS", "never_seen": "VIOLATED"}
+    assert verdicts(check_json(argv)) == verdicts(check_json(argv + ["--no-por"])) == expected
+    monkeypatch.setattr(cell_uses.CellView, "robot_own", lambda self, task: True)
+    assert verdicts(check_json(argv))["never_seen"] == "HOLDS"
+
+
 HANDSHAKE = """MODULE Task{n}
   PERS bool ready{pair} := FALSE;
   PERS num link{pair} := 0;
@@ -195,4 +219,35 @@ def test_groups_leave_out_states_one_task_ample_sets_keep(tmp_path, monkeypatch)
     alone = check_json(argv)
     assert verdicts(grouped) == verdicts(full) == verdicts(alone)
     assert states(grouped)["no_runtime_error"] < states(alone)["no_runtime_error"] < \
+        states(full)["no_runtime_error"]
+
+
+MOVER = """MODULE Mover{n}
+  CONST robtarget pHome := [[500,0,500],[1,0,0,0],[0,0,0,0],[9E9,9E9,9E9,9E9,9E9,9E9]];
+  PERS num served{n} := 0;
+  PROC main()
+    FOR i FROM 1 TO 3 DO
+      MoveJ Offs(pHome, i * 10, 0, 0), v100, fine, tool0;
+      MoveL Offs(pHome, i * 10, {n} * 10, 0), v100, fine, tool0;
+    ENDFOR
+    served{n} := 1;
+  ENDPROC
+ENDMODULE
+"""
+
+
+def test_moves_of_robots_no_other_task_reads_leave_out_states(tmp_path, monkeypatch):
+    """Three motion tasks, each moving its own robot (read by no other task): their moves
+    are not interleaved (a one-task ample set each), which ``robot_own`` allows."""
+    argv = []
+    for n in (1, 2, 3):
+        path = tmp_path / f"mover{n}.mod"
+        path.write_text(MOVER.format(n=n))
+        argv += [str(path)] if n == 1 else ["--add-task", str(path)]
+    argv += ["--formula", 'all_served: F "served1 = 1"']
+    own, full = check_json(argv), check_json(argv + ["--no-por"])
+    monkeypatch.setattr(cell_uses.CellView, "robot_own", lambda self, task: False)
+    shared = check_json(argv)
+    assert verdicts(own) == verdicts(full) == verdicts(shared)
+    assert states(own)["no_runtime_error"] < states(shared)["no_runtime_error"] <= \
         states(full)["no_runtime_error"]

@@ -17,6 +17,7 @@ from ..diagnostics.quoting import quoted
 from ..semantics.configured_signals import walk_routine
 from ..semantics.program import PROGRAM_NAMESPACE
 from ..semantics.library import lookup_function, lookup_procedure
+from ..semantics.library.motion import PLAIN_MOVES
 from ..semantics.library.registry import matched_parameters, mode_may_write
 from ..semantics.scope import GLOBAL_DATA, ROUTINE
 from ..semantics.values import format_value
@@ -49,10 +50,13 @@ def pers_warnings(program, files) -> tuple:
     return tuple(found)
 
 
-def data_uses(program, namespace: int = PROGRAM_NAMESPACE) -> tuple[set, set]:
+def data_uses(program, namespace: int = PROGRAM_NAMESPACE,
+              moves_read: bool = False) -> tuple[set, set]:
     """The global slots the routines of one task (its ``namespace``) name (read), and
     those they may write (assigned, or passed to a routine by reference), in their
-    bodies and their handlers."""
+    bodies and their handlers; ``moves_read``: the PERS data (tool, work object, load) a
+    plain move (``motion.PLAIN_MOVES``) or a robot reading (``CRobT`` ...) is passed are
+    read, not written, as those routines do (``_PERS_READ_ONLY``)."""
     read, written = set(), set()
     for routine in program.routines:
         if routine.namespace != namespace or routine.ast is None:
@@ -68,12 +72,21 @@ def data_uses(program, namespace: int = PROGRAM_NAMESPACE) -> tuple[set, set]:
                                if arg.value is not None)
             elif isinstance(node, (ast.ProcedureCall, ast.FunctionCall)):
                 modes = _parameter_modes(program, lookup, node)
+                read_only = moves_read and node.name.key in _PERS_READ_ONLY and \
+                    lookup(node.name.key) is None
                 written.update(_slot(lookup, _root(arg.value))
                                for arg, mode in zip(node.args, modes)
-                               if arg.value is not None and mode_may_write(mode))
+                               if arg.value is not None and mode_may_write(mode) and
+                               not (read_only and mode == "PERS"))
     read.discard(None)
     written.discard(None)
     return read, written
+
+
+# predefined routines whose PERS parameters (a tool, a work object, a load) are only read:
+# the plain moves (the robot goes to the target with that tool) and the robot readings
+# (``library.position``, ``CalcRobT``, ``CalcJointT``: computed with that tool)
+_PERS_READ_ONLY = PLAIN_MOVES | {"CROBT", "CJOINTT", "CPOS", "CALCROBT", "CALCJOINTT"}
 
 
 def writes_data_by_name(routines) -> bool:

@@ -24,7 +24,11 @@ state no data slot holds:
 * **robots** (``State.robot``).  A robot changes only by a predefined procedure
   modelled on the robot state (a move, ``SetSysData``) run by a task:
   ``moves[task]``.  With one robot per motion task (``Program.robot_per_task``)
-  a task's step changes its own robot only (``semantics.robots``).
+  a task's step changes its own robot only (``semantics.robots``), and another
+  task's robot is read only by a reading naming that task (``robot_read``):
+  ``readers[task]``, the robots the task's code may read so (``EVERY_TASK``:
+  a name known only at run time; a late-bound call names a procedure, never a
+  reading, and the routines it may reach are walked as any other).
 
 ``robot_read(program, task, call)`` says whose robot a reading
 (``CRobT``, ``CJointT``, ``CTool``, ``CWObj``, ``CPos``) reads, as
@@ -79,6 +83,8 @@ class CellUses:
         named: list = [set() for _ in range(tasks)]
         written: list = [set() for _ in range(tasks)]
         moves = [False] * tasks
+        readers: list = [set() for _ in range(tasks)]
+        self.names = controller_task_names(program)
         both = {signal.index for signal in program.signals if signal.also_set_by}
         for routine in program.routines:
             task = _task_of(routine.namespace)
@@ -95,6 +101,9 @@ class CellUses:
                 if isinstance(node, (ast.ProcedureCall, ast.FunctionCall,
                                      ast.LateBindingCall)):
                     moves[task] = moves[task] or _moves(routine, node)
+                    robot = self.robot_read(task, node)
+                    if robot is not None:
+                        readers[task].add(robot)
                     if written[task] is not None:
                         written[task] = _writes(program, routine, node, written[task])
         for task in range(tasks):
@@ -106,13 +115,13 @@ class CellUses:
         self.named = [None if found is None else frozenset(found) for found in named]
         self.written = [None if found is None else frozenset(found) for found in written]
         self.moves = tuple(moves)
-        self.names = controller_task_names(program)
+        self.readers = tuple(frozenset(found) for found in readers)
 
     def robot_read(self, task: int, call) -> Optional[int]:
         """The task whose robot a reading call of ``task`` reads (``EVERY_TASK``: a name
         known only when the program runs), as ``library.position`` decides; None when
         the call is no robot reading."""
-        if call.name.key not in ROBOT_READERS:
+        if isinstance(call, ast.LateBindingCall) or call.name.key not in ROBOT_READERS:
             return None
         for argument in call.args:
             if argument.name is not None and argument.name.key in TASK_ARGUMENTS and \
@@ -194,3 +203,11 @@ class CellView:
         if self.per_robot and robot != EVERY_TASK:
             return robot == task or robot not in others or not moves[robot]
         return not any(moves[other] for other in others)
+
+    def robot_own(self, task: int) -> bool:
+        """Whether the task's robot is its own against ``others[task]``: each motion task
+        has its own robot and none of them may read this one (``CellUses.readers``), so a
+        move of the task changes nothing they read or write."""
+        readers = self.uses.readers
+        return self.per_robot and not any(task in readers[other] or EVERY_TASK in readers[other]
+                                          for other in self.others[task])

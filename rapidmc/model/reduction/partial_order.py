@@ -103,7 +103,7 @@ class PartialOrder:
         self.visible = visible_names
         tasks = len(self.names)
         accessors = _accessors(program)
-        uses = [data_uses(program, _namespace(task)) for task in range(tasks)]
+        uses = [data_uses(program, _namespace(task), moves_read=True) for task in range(tasks)]
         written = [found[1] for found in uses]
         used = [found[0] | found[1] for found in uses]
         # a wait's read of data another party writes stores the value it took

@@ -29,7 +29,11 @@ found by its span:
   rawbytes instructions (``library.raw_data``, the data passed to them only) are
   independent when every argument passed by reference is the task's own (as an
   assignment's target) and every other reads only such data;
-  ``SocketGetStatus`` reads only the socket passed to it.
+  ``SocketGetStatus`` reads only the socket passed to it;
+* a move (``MoveJ``, ``MoveL``, ``MoveC``, ``MoveAbsJ``, ``MoveExtJ``, no ``\\Corr``) writes
+  only its task's robot: independent where each motion task has its own robot and no
+  other task's code reads this one (``cell_uses``: ``CRobT(\\TaskName:=...)``), when its
+  arguments read only such data.
 
 "Reads only data no other task writes" (``SyntaxReads.allowed``): constants,
 routine data and parameters passed by value, FOR variables, global data no
@@ -55,6 +59,7 @@ from ... import ast
 from ...semantics.instructions import Call, LateCall
 from ...semantics.library import registry
 from ...semantics.library.arguments import argument_expression
+from ...semantics.library.motion import PLAIN_MOVES
 from ...semantics.library.program_control import RESTARTS_CYCLE
 from ...semantics.scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE
 from ...semantics.types import SEMI_VALUE
@@ -248,6 +253,14 @@ class StatementFootprints:
             return self._signal_written(task, routine, call)
         if key in _QUIET_PROCEDURES:
             return LOCAL if self._arguments_allowed(task, routine, call) else SHARED
+        if key in PLAIN_MOVES:
+            # the task's own robot (``cell_uses``), its arguments read (the PERS tool and
+            # work object too: ``data_uses(moves_read=True)``); \ID is never evaluated and
+            # the barriers are SyncMoveOn/Off; path corrections (\Corr) left shared
+            return LOCAL if self.reads.cell.robot_own(task) and not any(
+                argument.name is not None and argument.name.key == "CORR"
+                for argument in call.args) and self._arguments_allowed(task, routine, call) \
+                else SHARED
         entry = registry.lookup_procedure(key)
         if entry is None or key not in _ARGUMENTS_ONLY and entry.modelled != registry.NO_EFFECT:
             return SHARED

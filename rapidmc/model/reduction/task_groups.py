@@ -40,7 +40,7 @@ ch. 4), built from one task ``t``:
 
 Signals and robots count as data here (``cell_uses``): a signal read conflicts
 with the tasks whose code may set the signal, a robot reading with the task
-moving that robot.
+moving that robot, a move with the tasks reading its robot.
 
 Groups are tried only where no one-task ample set exists, from each running
 task in order, and the first that passes is kept: both engines pick the same

@@ -20,6 +20,9 @@ from .signature_parts import MOVE_DO_TAIL, MOVE_TAIL
 # gets there (input_flow: a value that only reaches these tells no behaviour apart).
 MOVE_ROUTINES: set = set()
 UNEVALUATED_BY_MOVES = frozenset({"SPEED", "V", "T", "ZONE", "Z", "INPOS", "ID", "TLOAD"})
+# Moves that change their task's robot and nothing else: no \DO, no \ProcName, no trigger
+# (``move_robot``, ``_move_ext_j``); their PERS Tool, WObj and TLoad are only read.
+PLAIN_MOVES = frozenset({"MOVEJ", "MOVEL", "MOVEC", "MOVEABSJ", "MOVEEXTJ"})
 
 
 def _move(*texts: str, modelled: str = EXACT):
