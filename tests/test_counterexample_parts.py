@@ -92,6 +92,11 @@ def test_a_long_array_written_whole_shows_only_its_changed_elements():
     # (every element one value: the first says it)
     assert change_text(Change("table", old, mostly)).startswith(
         "table = [9,...] (60 elements, all 9)  (was [1,2,3,")
+    # a matrix of one value: its first element, nested
+    matrix = Composite("[" + ",".join(["[FALSE,FALSE,FALSE,FALSE]"] * 20) + "]",
+                       tuple((f"{{{row},{column}}}", "FALSE") for row in range(1, 21)
+                             for column in range(1, 5)))
+    assert shown_value(matrix, 100) == "[[FALSE,...]] (80 elements, all FALSE)"
     # more changed elements than are listed: a count (--full-trace shows them all)
     many = array(*[("0" if i % 10 == 0 else str(i)) for i in range(1, 61)])
     assert change_text(Change("table", old, many)).endswith(
