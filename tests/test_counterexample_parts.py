@@ -92,6 +92,11 @@ def test_a_long_array_written_whole_shows_only_its_changed_elements():
     # (every element one value: the first says it)
     assert change_text(Change("table", old, mostly)).startswith(
         "table = [9,...] (60 elements, all 9)  (was [1,2,3,")
+    # a matrix of one value: its first element, nested
+    matrix = Composite("[" + ",".join(["[FALSE,FALSE,FALSE,FALSE]"] * 20) + "]",
+                       tuple((f"{{{row},{column}}}", "FALSE") for row in range(1, 21)
+                             for column in range(1, 5)))
+    assert shown_value(matrix, 100) == "[[FALSE,...]] (80 elements, all FALSE)"
     # more changed elements than are listed: a count (--full-trace shows them all)
     many = array(*[("0" if i % 10 == 0 else str(i)) for i in range(1, 61)])
     assert change_text(Change("table", old, many)).endswith(
@@ -543,3 +548,34 @@ def test_a_stretch_left_out_names_the_routines_that_returned_in_it():
                        (Change("T_ROB1.k", "1", "2"),)))
     assert sliced_line(SlicedAway(ended, "the error")) == \
         "    -- steps 4-5: T_ROB1.k assigned, Hold returned, not read by the error --"
+
+
+def test_rounds_fold_between_the_first_round_and_the_last():
+    # a handler's round: the failing read (its outcome chosen in the first round only: it
+    # stays the same for the run), the reconnect, a flag only the first round changes,
+    # RETRY; five rounds: the first and the last stay steps, three fold
+    from rapidmc.report.rounds import Rounds, fold_rounds
+
+    def round_steps(first: int, number: int) -> list:
+        inputs = {"ReadCfgData outcome": "ERR_CFG_NOTFND"} if number == 1 else {}
+        return [TraceStep(first, TRANSITION, TransitionInfo("p.mod", 20, "ReadCfgData p, v;",
+                                                            inputs), ()),
+                TraceStep(first + 1, TRANSITION, TransitionInfo("p.mod", 30, "Reconnect;"), ()),
+                TraceStep(first + 2, TRANSITION, TransitionInfo("p.mod", 31, "flag := TRUE;"),
+                          (Change("flag", "FALSE", "TRUE"),) if number == 1 else ()),
+                TraceStep(first + 3, TRANSITION, TransitionInfo("p.mod", 32, "RETRY;"), ())]
+    steps = [TraceStep(1, INITIAL, None, ())]
+    for number in range(1, 6):
+        steps += round_steps(2 + 4 * (number - 1), number)
+    items = fold_rounds(steps)
+    folded = [item for item in items if isinstance(item, Rounds)]
+    assert len(folded) == 1 and (folded[0].first, folded[0].last, folded[0].times) == (2, 5, 3)
+    assert [step.index for step in folded[0].hidden] == list(range(6, 18))
+    assert [item.index for item in items if not isinstance(item, Rounds)] == \
+        [1, 2, 3, 4, 5, 18, 19, 20, 21]
+    assert folded[0].jump == "RETRY" and folded[0].retries == (1, 4)
+    # two rounds only, or rounds that run other lines: nothing folds
+    assert fold_rounds(steps[:9]) == steps[:9]
+    varied = steps[:10] + [step(11, "other;")] + steps[11:]     # the third round differs
+    assert not any(isinstance(item, Rounds) for item in fold_rounds(varied))
+

@@ -12,9 +12,11 @@ them out of step with the rounds.
 round is the steps after one run of a jump (a RETRY, or a statement with a GOTO, whose next
 step is on another line: the jump's target), up to and including the jump's next run, each
 round running the same statements (file, line, source text, routines on the call stack) with
-the same inputs chosen.  The first round and the last one stay steps, so the reader sees the
-round in full and the state the error starts from; the rounds between become one ``Rounds``
-item, which the text tells in one line with what changed across them.
+the same inputs chosen (but the first round, which may choose inputs the later rounds do
+not choose again: a reading that stays the same for the run).  The first round and the
+last one stay steps, so the reader sees the round in full and the state the error starts
+from; the rounds between become one ``Rounds`` item, which the text tells in one line with
+what changed across them.
 
 The fold is the text's only: JSON, HTML and ``rapidmc replay`` keep every step, and so does
 ``--full-trace``.
@@ -90,6 +92,12 @@ def _chain_at(steps: Sequence[TraceStep], keys: list, jump: int,
         while jump + 1 - (before + 1) * period >= floor and \
                 keys[jump + 1 - (before + 1) * period:jump + 1 - before * period] == block:
             before += 1
+        # the first round may choose inputs the later ones do not choose again (a reading
+        # that stays the same for the run): it is shown step by step
+        start = jump + 1 - (before + 1) * period
+        if start >= floor and [_without_inputs(key) for key in keys[start:start + period]] \
+                == [_without_inputs(key) for key in block]:
+            before += 1
         if before + after >= FEWEST_ROUNDS:
             return jump + 1 - before * period, period, before + after
     return None
@@ -138,6 +146,11 @@ def _jumps_back(steps: Sequence[TraceStep], at: int) -> bool:
     following = steps[at + 1].transition
     return following is not None and \
         (following.file, following.line) != (step.transition.file, step.transition.line)
+
+
+def _without_inputs(key: tuple) -> tuple:
+    kind, where, stack = key
+    return kind, where[:3] if where is not None else None, stack
 
 
 def _key(step: TraceStep) -> tuple:

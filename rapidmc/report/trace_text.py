@@ -183,9 +183,11 @@ def shown_value(text: str, width: Optional[int], string_width: Optional[int] = N
     elements = array_elements(text)
     if not elements:
         return short
-    if len({value for _, value in elements}) == 1 and len(elements[0][1]) + 6 < len(short):
-        # every element says the same: the first one is enough ("[0,...]")
-        first = shorten(text, len(elements[0][1]) + 6)
+    depth = len(text) - len(text.lstrip("["))     # a matrix's first element is nested
+    room = len(elements[0][1]) + 2 * depth + 4      # "[[" element ",...]]"
+    if len({value for _, value in elements}) == 1 and room < len(short):
+        # every element says the same: the first one is enough ("[0,...]", "[[0,...]]")
+        first = shorten(text, room)
         same = elements[0][1] if len(elements[0][1]) <= width // 4 else "equal"
         return f"{first} ({len(elements)} elements, all {same})"
     return f"{short} ({len(elements)} elements)"
