@@ -170,3 +170,18 @@ def test_the_tasks_serving_interrupts_are_those_whose_traps_they_are(tmp_path):
     assert serving(program, _interrupts((1, trap), pending=(1,))) == frozenset({0})
     assert serving(program, _interrupts(pending=(1,))) is None       # no longer connected
     assert serving(program, _interrupts((1, trap), scheduled=((0.0, 0, 1.0),))) is None
+
+
+needs_native = pytest.mark.skipif(not native.available(), reason="the native core is not built")
+
+
+@needs_native
+@pytest.mark.parametrize("seed", [0, 12])
+def test_generated_interrupt_tasks_report_the_same_with_both_engines(seed, tmp_path,
+                                                                      monkeypatch):
+    """States, counts and counterexamples alike: the compiled core hands the states with
+    interrupts to Python, whose ample sets and local runs both engines then keep."""
+    from test_native_engine import assert_same_reports
+    document = assert_same_reports(write_interrupt_tasks(tmp_path, seed), monkeypatch,
+                                   reuse=seed % 2 == 0)
+    assert document["properties"]
