@@ -25,8 +25,10 @@ import pytest
 
 from rapidmc.cli import build_parser
 from rapidmc.commands.check import prepare_model
+from rapidmc.model.reduction.interrupt_owners import serving_tasks
 from rapidmc.model.reduction.partial_order import PartialOrder
 from rapidmc.semantics.staged_step import task_transitions
+from rapidmc.semantics.step import successors as semantic_successors
 from rapidmc.semantics.state import RUNNING
 
 from reached_states import breadth_first
@@ -50,6 +52,12 @@ def independence_failures(argv: list[str], limit: int = REACHED_STATES) -> tuple
         if state[7] != RUNNING:
             return {}
         found = task_transitions(program, state, task, config)
+        if found is None and (state[4][0] or state[4][1]):
+            # (with interrupts: the task's transitions among every task's)
+            name = ("task", program.task_names[task])
+            alone = sum(1 for stack in (state[0],) + state[10] if stack) == 1
+            found = [t for t in semantic_successors(program, state, config)
+                     if alone or name in t[0]]
         # (a label names the task only while another one runs)
         return {} if found is None else {
             (tuple(c for c in t[0] if c[0] != "task"), t[1], t[3]): t[2] for t in found}
@@ -61,8 +69,11 @@ def independence_failures(argv: list[str], limit: int = REACHED_STATES) -> tuple
         if state[7] != RUNNING:
             continue
         stacks = (state[0],) + state[10]
+        # (a task serving an interrupt is never ample: its step may enter a TRAP)
+        serving = serving_tasks(program, state[4])
         for task, stack in enumerate(stacks):
-            if not stack or not order.footprint(task, stack[-1][0], stack[-1][1]).independent:
+            if not stack or serving is None or task in serving or \
+                    not order.footprint(task, stack[-1][0], stack[-1][1]).independent:
                 continue
             mine = steps(state, task)
             if not mine or any(after[5] != state[5] or after[6] != state[6] or

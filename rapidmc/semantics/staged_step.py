@@ -125,12 +125,15 @@ def task_transitions(program, state: State, task: int,
                      config: CheckConfig) -> Optional[list]:
     """The transitions of ``task`` alone from ``state``: those of ``staged_successors``
     whose label names the task, in the same order, without the idle steps dropped;
-    None where the state has interrupts, stored inputs or an environment reaction (or
-    the task has ended).  Partial-order reduction extends a step of one task with its
-    task-local instructions (``reduction.partial_order``) without stepping the others."""
+    None where the state has delayed signal changes, stored inputs, edge inputs or an
+    environment reaction (or the task has ended).  With interrupts, as there: the task's
+    timers may fire, a pending TRAP of its own starts instead of the instruction, and
+    signal edges queue their interrupts.  Partial-order reduction extends a step of one
+    task with its task-local instructions (``reduction.partial_order``) without stepping
+    the others."""
     interrupts = state[4]
     if program.environment_react is not None or config.free_inputs or \
-            program.reads_task_robots or interrupts[0] or interrupts[1] or interrupts[3]:
+            program.reads_task_robots or interrupts[3]:
         return None
     stacks = (state[0],) + state[10]
     if not stacks[task]:
@@ -138,6 +141,14 @@ def task_transitions(program, state: State, task: int,
     runnable = [i for i, stack in enumerate(stacks) if stack]
     steps = view_steps(program, config)
     label = steps.task_labels(runnable)[runnable.index(task)]
+    if interrupts[0] or interrupts[1]:
+        if config.edge_inputs or not is_staged(program, state, config):
+            return None
+        plan = _task_plan(program, stacks[task], task,
+                          steps.timer_choices(program, interrupts, task))
+        found: list = []
+        _task_steps(state, task, label, state[2], plan, steps, None, found)
+        return found
     view = _new_tuple(State, (stacks[task], state[1], state[2]) +
                       _task_parts(program, state, task, state[4]))
     return [_in_task(program, state, task, label, transition)

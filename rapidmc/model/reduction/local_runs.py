@@ -13,6 +13,8 @@ goes on with ``t``'s next instruction while that instruction
 * is independent of every other task (``PartialOrder.footprint`` LOCAL: it
   reads only data no other task writes, writes only data no other task can
   name, reads no signal);
+* is not that of a task serving an interrupt of the state (``interrupt_owners``: a
+  TRAP of its own may start instead);
 * has one transition from there, which leaves the program running, ERRNO
   and the modes of the task's frames as they were (``_went_on``), and changes
   the state.
@@ -37,6 +39,7 @@ from typing import Callable, Optional
 from ...semantics.staged_step import task_transitions
 from ...semantics.state import RUNNING, State
 from ...semantics.instructions import Call, EndRoutine, Return
+from .interrupt_owners import serving_tasks
 from .merging import INVISIBLE, loop_heads, merge_points
 
 FRAME_STEPS = (Call, Return, EndRoutine)
@@ -118,7 +121,8 @@ class LocalRuns:
             if not stack:
                 break
             frame = stack[-1]
-            if frame[3] != 0 or not self.mergeable(task, frame[0], frame[1]):
+            if frame[3] != 0 or not self.mergeable(task, frame[0], frame[1]) or \
+                    _serving(self.program, after[4], task):
                 break
             found = task_transitions(self.program, after, task, config)
             if found is None or len(found) != 1:
@@ -144,6 +148,13 @@ class LocalRuns:
         stacks = (state[0],) + state[10]
         running = [task for task, stack in enumerate(stacks) if stack]
         return running[0] if len(running) == 1 else None
+
+
+def _serving(program, interrupts, task: int) -> bool:
+    """Whether a TRAP of the task may start in its next step (``interrupt_owners``): the
+    instruction alone is then no ample set."""
+    serving = serving_tasks(program, interrupts)
+    return serving is None or task in serving
 
 
 def _went_on(stack: tuple, moved: tuple) -> bool:

@@ -58,8 +58,11 @@ turns it off for a property with X, an atom on locations (AtLine, InRoutine
 and data reached by name at run time in another task or by pattern
 (``\\TaskName``, SetAllDataVal, GetNextSym); GetDataVal and SetDataVal look the
 name up where the call is, so a task's SetDataVal counts as a write of every
-datum the task can name.  States with interrupts
-are expanded fully.  The fair search (``check.fair``) runs on the unreduced
+datum the task can name.  In a state with
+interrupts only a task that serves none of them may be ample (``interrupt_owners``:
+each task serves its own, in its own steps), and no group is tried; with a delayed
+signal change due or a pending interrupt no longer connected, the state is expanded
+fully.  The fair search (``check.fair``) runs on the unreduced
 system (``RapidSystem.full_interleaving``).  tests/test_partial_order.py holds
 the verdicts against the unreduced search.
 """
@@ -82,6 +85,7 @@ from ...semantics.step import successors as semantic_successors
 from ..state_keys import StateKeys
 from .local_runs import LocalRuns
 from .cell_uses import CellUses, CellView
+from .interrupt_owners import serving_tasks
 from .relevance import DATA_BY_NAME
 from .task_groups import TaskGroups
 from .syntax_footprint import (LOCAL, SHARED, VISIBLE, Footprint, ReferenceParameters,
@@ -160,18 +164,18 @@ class PartialOrder:
         """``successors`` (labelled, as ``RapidSystem.successors`` gives them) or the
         ample subset of one task's transitions (``config``: the system's, with which a
         task's steps are computed to tell whether it waits)."""
-        if state[7] != RUNNING or _has_interrupts(state[4]):
-            return successors if self.runs is None else self.runs.extend(state, successors,
-                                                                         config)
+        # the tasks whose next steps interrupts may change (None: every task's)
+        serving = serving_tasks(self.program, state[4]) if state[7] == RUNNING else None
         stacks = (state[0],) + state[10]
         running = [task for task, stack in enumerate(stacks) if stack]
-        if len(running) < 2:
+        if state[7] != RUNNING or serving is None or len(running) < 2:
             return successors if self.runs is None else self.runs.extend(state, successors,
                                                                          config)
         places = self.places()
         here = places.number(state)
-        chosen = self._choose(state, stacks, running, successors, config, here)
-        if chosen is None and len(running) > 2:
+        chosen = self._choose(state, stacks, [task for task in running if task not in serving],
+                              successors, config, here)
+        if chosen is None and len(running) > 2 and not serving:
             chosen = self.groups.choose(state, stacks, running, config, here,
                                         lambda task, found: self._labelled(state, found,
                                                                            config))
@@ -505,7 +509,3 @@ def _own_task_only(call) -> bool:
     return call.name.key in _OWN_TASK_BY_NAME and not any(
         argument.name is not None and argument.name.key in ("TASKREF", "TASKNAME")
         for argument in call.args)
-
-
-def _has_interrupts(interrupts) -> bool:
-    return bool(interrupts[0] or interrupts[1] or interrupts[3])

@@ -29,7 +29,10 @@ found by its span:
   rawbytes instructions (``library.raw_data``, the data passed to them only) are
   independent when every argument passed by reference is the task's own (as an
   assignment's target) and every other reads only such data;
-  ``SocketGetStatus`` reads only the socket passed to it;
+  ``SocketGetStatus`` reads only the socket passed to it.  The clock instructions
+  (``library.clocks``: ClkReset, ClkStart, ClkStop) write only the clock passed, and
+  ``ClkRead`` reads only that clock (and the state's clock, 0 when checking) and
+  chooses among readings the check fixes;
 * a move (``MoveJ``, ``MoveL``, ``MoveC``, ``MoveAbsJ``, ``MoveExtJ``, no ``\\Corr``) writes
   only its task's robot: independent where each motion task has its own robot and no
   other task's code reads this one (``cell_uses``: ``CRobT(\\TaskName:=...)``), when its
@@ -100,13 +103,13 @@ _QUIET_PROCEDURES = frozenset({"TPWRITE", "WAITTIME"})
 _ARGUMENTS_ONLY = frozenset({"SOCKETCREATE", "SOCKETBIND", "SOCKETLISTEN", "SOCKETCLOSE",
                              "SOCKETACCEPT", "SOCKETCONNECT", "SOCKETSEND", "SOCKETRECEIVE",
                              "CLEARRAWBYTES", "COPYRAWBYTES", "PACKRAWBYTES",
-                             "UNPACKRAWBYTES"})
+                             "UNPACKRAWBYTES", "CLKRESET", "CLKSTART", "CLKSTOP"})
 # predefined functions that read only the data passed to them, by reference too
 # (``Present`` reads whether an optional parameter of the task's own frame is given)
 # (the signal readers read the signal passed: ``SyntaxReads.allowed`` judges it)
-_READS_ITS_ARGUMENTS = frozenset({"SOCKETGETSTATUS", "PRESENT", "DINPUT", "DOUTPUT",
-                                  "AINPUT", "AOUTPUT", "GINPUT", "GOUTPUT", "GINPUTDNUM",
-                                  "GOUTPUTDNUM", "TESTDI"})
+_READS_ITS_ARGUMENTS = frozenset({"SOCKETGETSTATUS", "PRESENT", "CLKREAD", "DINPUT",
+                                  "DOUTPUT", "AINPUT", "AOUTPUT", "GINPUT", "GOUTPUT",
+                                  "GINPUTDNUM", "GOUTPUTDNUM", "TESTDI"})
 # predefined procedures that set the signal passed (at once: no \SDelay) to a value
 # computed from their other arguments and, for InvertDO, its own value
 _SIGNAL_WRITERS = frozenset({"SET", "RESET", "SETDO", "SETGO", "SETAO", "INVERTDO",
