@@ -173,7 +173,9 @@ ENDMODULE
     ("0", "", {"diB": False}),                      # a falling edge: stored
     ("1", "WaitDI diA, 1;", {"diB": False}),         # read by a wait
     ("1", "IF DInput(diA) = 1 n := 3;", {"diB": False}),
-    ("1", 'AliasIO "diA", diAlias;', {"diB": False}),  # a string naming it
+    ("1", 'AliasIO "diA", diAlias;', {"diA": False, "diB": False}),  # it only binds
+    ("1", 'AliasIO "diA", diAlias; IF DInput(diAlias) = 1 n := 3;', {"diB": False}),
+    ("1", 'TPWrite "diA";', {"diB": False}),          # a string naming it
     ("1", "ISignalDI diA, 2, iB;", {"diB": False}),  # watched for two kinds of edge
     ("1", "AliasIO diA, diAlias;", {"diB": False}),
     ("1", "AliasIO \"di\" + \"A\", diAlias;", {}),     # a name built at run time
@@ -235,3 +237,85 @@ def test_a_state_keeps_the_input_at_rest(tmp_path):
     assert {k: v[0] for k, v in by_edges.items()} == {k: v[0] for k, v in exact.items()}
     assert by_edges["no_runtime_error"][1] < exact["no_runtime_error"][1]
     assert edges_module.realizable(_result([]), {}, {})
+
+
+# PickMaster's supervision task: signal data bound by AliasIO from a string, orders on it.
+ALIASED = """MODULE Prog
+  VAR intnum iA;
+  VAR intnum iB;
+  VAR num n := 0;
+  VAR signaldi aliasA;
+  VAR signaldi aliasB;
+  PROC main()
+    VAR string name;
+    name := "diA";
+    AliasIO name, aliasA;
+    name := "diB";
+    AliasIO name, aliasB;
+    {MORE}
+    CONNECT iA WITH tA;
+    ISignalDI aliasA, 1, iA;
+    CONNECT iB WITH tB;
+    ISignalDI aliasB, 1, iB;
+    WHILE TRUE DO
+      WaitTime 0.1;
+      IF n = 2 n := 0;
+    ENDWHILE
+  ENDPROC
+  TRAP tA
+    n := (n + 1) MOD 3;
+  ENDTRAP
+  TRAP tB
+    n := 0;
+  ENDTRAP
+ENDMODULE
+"""
+
+ALIAS_EIO = """EIO:CFG_1.0:6:1::
+#
+EIO_SIGNAL:
+      -Name "diA" -SignalType "DI" -DeviceMap "0"
+      -Name "diB" -SignalType "DI" -DeviceMap "1"
+#
+"""
+
+
+def _aliased_edges(more: str) -> dict:
+    from rapidmc.load.backup import read_eio
+    import tempfile
+    with tempfile.TemporaryDirectory() as folder:
+        path = f"{folder}/EIO.cfg"
+        with open(path, "w") as stream:
+            stream.write(ALIAS_EIO)
+        signals = read_eio(path)
+    program = build(ast.Program(parse_text(ALIASED.replace("{MORE}", more), "prog.mod")),
+                    options={"configured_signals": signals})
+    atoms = AtomCompiler(program)
+    found = edge_inputs(program, atoms, observed_inputs(program, atoms))
+    return {program.signals[index].name: both for index, both in found.items()}
+
+
+@pytest.mark.parametrize("more, expected", [
+    ("", {"diA": False, "diB": False}),
+    ("WaitDI aliasA, 1;", {"diB": False}),            # the bound data read
+    ("TPWrite name;", {}),                            # the name used otherwise: a read
+    ("AliasIO name, aliasA;", {}),     # aliasA bound to diA or diB: its order reads both
+    ('TPWrite "diA";', {"diB": False}),               # another string naming it
+])
+def test_orders_on_signal_data_aliasio_binds_watch_edge_inputs(more, expected):
+    assert _aliased_edges(more) == expected
+
+
+@pytest.mark.parametrize("engine", ENGINES)
+@pytest.mark.parametrize("more", ["", "WaitDI aliasA, 1;"])
+def test_aliased_edge_inputs_keep_the_verdicts(tmp_path, engine, more):
+    (tmp_path / "EIO.cfg").write_text(ALIAS_EIO)
+    (tmp_path / "prog.mod").write_text(ALIASED.replace("{MORE}", more))
+    argv = ["prog.mod", "--eio", "EIO.cfg", "--engine", engine, "--max-states", "6000",
+            "--formula", 'small: G "n < 2"']
+    by_edges = verdicts_and_states(argv, cwd=tmp_path)
+    exact = verdicts_and_states(argv + ["--exact-edges"], cwd=tmp_path)
+    assert {k: v[0] for k, v in by_edges.items()} == {k: v[0] for k, v in exact.items()}
+    assert exact["small"][0] == "VIOLATED"            # two rising edges of diA in a row
+    if not more:
+        assert by_edges["no_runtime_error"][1] < exact["no_runtime_error"][1]

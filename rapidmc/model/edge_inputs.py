@@ -5,7 +5,9 @@ An input watched by ``ISignalDI diReset, 1, intReset`` is stored in every state
 interrupt: with four such inputs every state has 16 copies.  When nothing but
 interrupt orders names the input (no ``DInput``, ``WaitDI``, ``TestDI``, no
 condition, no atom, no AliasIO, no string that could name it) its value can be seen
-only through the interrupts it raises.  Such an input is an *edge input* (its orders
+only through the interrupts it raises.  An order may name signal data that AliasIO binds
+to the input, and a string may name the input only to bind such data, as long as the
+bindings are known and nothing else uses that data (``aliased_orders``).  Such an input is an *edge input* (its orders
 all watch the rising edge, ``1``, or all both edges, ``2``): each step still chooses
 its value, so an edge may come at any step, but the state after the step keeps the
 input at 0, ready for the next edge.  (Falling edges, ``0``, keep the value stored.)
@@ -30,6 +32,7 @@ from ..semantics.configured_signals import walk_routine
 from ..semantics.edge_traps import routine_task
 from ..semantics.staged_step import in_trap
 from ..semantics.library.arguments import argument_expression
+from .aliased_orders import AliasedOrders
 from .inputs import ordered_signal
 
 _ORDERS = {"ISIGNALDI", "ISIGNALDO"}
@@ -47,6 +50,7 @@ def edge_inputs(program, atoms, observed: Optional[set]) -> dict:
     triggers: dict = {}             # signal index -> set of literal trigger values
     read = set(atoms.observed)
     names = {signal.key: signal.index for signal in program.signals}
+    aliased = AliasedOrders(program)
     for routine in program.routines:
         if routine.ast is None:
             continue
@@ -59,16 +63,18 @@ def edge_inputs(program, atoms, observed: Optional[set]) -> dict:
                 return {}
             if isinstance(node, ast.ProcedureCall) and node.name.key in _ORDERS:
                 signal = argument_expression(node, "Signal", 0)
-                if isinstance(signal, ast.NameRef) and signal.name.key in names and \
-                        ordered_signal(program, routine, node) is not None:
+                index = _watched(program, routine, node, names, aliased)
+                if index is not None:
                     watched.add(id(signal))
                     trigger = _trigger(argument_expression(node, "TriggValue", 1))
-                    found = triggers.setdefault(names[signal.name.key], set())
-                    found.add(trigger)
+                    triggers.setdefault(index, set()).add(trigger)
             elif isinstance(node, ast.NameRef) and node.name.key in names and \
                     id(node) not in watched:
                 read.add(names[node.name.key])
-            elif isinstance(node, ast.StringLiteral) and node.value.upper() in names:
+            elif isinstance(node, ast.NameRef):
+                read |= aliased.reads(routine, node, watched)
+            elif isinstance(node, ast.StringLiteral) and node.value.upper() in names and \
+                    not aliased.binding_only(node):
                 read.add(names[node.value.upper()])
     edges = {}
     for index, found in triggers.items():
@@ -79,21 +85,35 @@ def edge_inputs(program, atoms, observed: Optional[set]) -> dict:
     return edges
 
 
+def _watched(program, routine, order: ast.ProcedureCall, names: dict,
+             aliased: AliasedOrders) -> Optional[int]:
+    """The signal an interrupt order watches: a configured one it names, or the one its
+    signal data is bound to (``aliased_orders``); None when not known."""
+    signal = argument_expression(order, "Signal", 0)
+    if isinstance(signal, ast.NameRef) and signal.name.key in names and \
+            ordered_signal(program, routine, order) is not None:
+        return names[signal.name.key]
+    return aliased.watched(routine, order)
+
+
 def served_edges(program, edges: dict) -> tuple:
     """The edge inputs of ``edges`` whose interrupt orders are all in the routines of one
     task: their edges start a TRAP in their own step or are dropped
     (``semantics.edge_traps``).  An input several tasks watch keeps one edge for all."""
     tasks: dict = {}                # signal index -> tasks whose routines order on it
     names = {signal.key: signal.index for signal in program.signals}
+    aliased = AliasedOrders(program)
     for routine in program.routines:
         if routine.ast is None:
             continue
         for node in walk_routine(routine.ast):
             if isinstance(node, ast.ProcedureCall) and node.name.key in _ORDERS:
                 signal = argument_expression(node, "Signal", 0)
-                if isinstance(signal, ast.NameRef) and names.get(signal.name.key) in edges:
-                    tasks.setdefault(names[signal.name.key], set()).add(
-                        routine_task(routine.namespace))
+                named = names.get(signal.name.key) if isinstance(signal, ast.NameRef) \
+                    else None
+                for index in (named, aliased.watched(routine, node)):
+                    if index in edges:
+                        tasks.setdefault(index, set()).add(routine_task(routine.namespace))
     return tuple(sorted(index for index, owners in tasks.items() if len(owners) == 1))
 
 
