@@ -326,6 +326,18 @@ def _whole_fixed(program: Program, data) -> str:
             f"(more than {WAIT_CHOICES} combinations of its elements' values)")
 
 
+def _index_reads(program: Program, data) -> str:
+    """That the reads of outside data whose value indexes an array take only that array's
+    indexes (``ExpressionCompiler._outside_index``), where some did."""
+    spans = getattr(program, "outside_indexes", {}).get(data.slot)
+    if not spans:
+        return ""
+    places = sorted({_where(span) for span in spans})
+    shown = ", ".join(places[:3]) + (f" and {len(places) - 3} more" if len(places) > 3 else "")
+    return (f"; where its value indexes an array, only that array's indexes (the writer "
+            f"writes an index there: {shown})")
+
+
 def _only_tasks(chosen) -> str:
     """That the tasks left out are taken to be the only writers, with the values their code
     writes, when that narrowed the domain (``OutsideData.written_by_tasks``)."""
@@ -422,8 +434,8 @@ def _unwritten_persistents(program: Program, stub_files: frozenset) -> Iterator[
             yield Assumption(OTHER_WRITER, data.name,
                              f"PERS {data.name} is written outside the loaded code"
                              f"{_only_tasks(chosen)}{_value_origin(data, chosen)}; its reads take "
-                             f"{chosen.describe()}{_whole_fixed(program, data)}{seen} "
-                             f"({_where(data.span)})")
+                             f"{chosen.describe()}{_whole_fixed(program, data)}{seen}"
+                             f"{_index_reads(program, data)} ({_where(data.span)})")
             if chosen.waited_paths:
                 yield Assumption(OTHER_WRITER, data.name, _waited(chosen))
         else:

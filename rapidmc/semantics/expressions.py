@@ -267,6 +267,9 @@ class ExpressionCompiler:
         # user FUNC call node (id) -> the slot of its hoisted result: an expression compiled
         # twice (a read and the reference it stores to) calls the function once
         self._hoisted: dict[int, int] = {}
+        # expression node (id) whose value indexes an array -> that dimension's length: a read
+        # of outside data there takes only that array's indexes (``_outside_index``)
+        self.index_lengths: dict[int, int] = {}
 
     def note_io_read(self) -> None:
         if self.io_reader is not None:
@@ -391,7 +394,24 @@ class ExpressionCompiler:
                 return taken
             return Compiled(kept, compiled.type)
 
+        length = self.index_lengths.get(id(expr))
+        if length is not None:
+            domain = self._outside_index(domain, length, outside.slot, expr.span)
         return free_read(stored, name, domain, compiled.type)
+
+    def _outside_index(self, domain: tuple, length: int, slot: int, span) -> tuple:
+        """The values of ``domain`` a read of outside data takes where its value indexes an
+        array of ``length`` elements (directly, or through a local that only indexes:
+        ``statements``): the whole numbers 1 .. ``length`` among them.  The party that
+        writes the data is taken to write an index there, as code that indexes with it
+        unguarded expects (a PC's step number); the assumption names each such read
+        (``Linker.outside_indexes``).  A domain with no such value is kept whole."""
+        valid = tuple(v for v in domain if isinstance(v, float) and v.is_integer() and
+                      1 <= v <= length)
+        if not valid or len(valid) == len(domain):
+            return domain
+        self.linker.outside_indexes.setdefault(slot, set()).add(span)
+        return valid
 
     def _outside_whole(self, expr, compiled: Compiled, outside, path: tuple, name: str,
                        value_type, elements: list) -> Compiled:
@@ -617,6 +637,10 @@ class ExpressionCompiler:
         if base_type is not None and len(expr.indices) > base_type.rank:
             raise error(TYPE_MISMATCH, f"too many indices: the array has {base_type.rank} "
                         f"dimension(s)", expr.span)
+        if isinstance(base_type, ArrayType):
+            for index, length in zip(expr.indices, base_type.dims):
+                if length is not None:
+                    self.index_lengths[id(index)] = length
         indices = [self.value(i, NUM) for i in expr.indices]
         result_type = None
         if base_type is not None:

@@ -62,6 +62,8 @@ class Linker:
         self.outside_data: dict = {}     # slot -> load.outside_data.OutsideData
         # slots of outside data a wait reads whole with too many combinations to choose
         self.whole_reads_fixed: set = set()
+        # slot of outside data -> the spans of its reads taken as an array's index only
+        self.outside_indexes: dict = {}
         self.failed_names: set[str] = set()     # declarations that failed: uses stay quiet
         self.booked_errors = 0                  # BookErrNo call sites numbered so far
         # the namespace whose code is being compiled: each task has its own USER module
@@ -349,6 +351,8 @@ class Linker:
         linked.scopes = self
         linked.outside_data = self.outside_data
         linked.whole_reads_fixed = frozenset(self.whole_reads_fixed)
+        linked.outside_indexes = {slot: frozenset(spans)
+                                  for slot, spans in self.outside_indexes.items()}
         linked.environment_reads_io = any(
             instruction.reads_io for routine in self.routines
             if routine.namespace == P.ENVIRONMENT_NAMESPACE for instruction in routine.code)

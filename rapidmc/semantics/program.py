@@ -172,6 +172,9 @@ class Program:
     outside_data: dict = field(default_factory=dict)
     # slots of that data a wait reads whole at its stored value (too many combinations)
     whole_reads_fixed: frozenset = frozenset()
+    # slots of that data -> the spans of its reads that take only an array's indexes
+    # (``ExpressionCompiler._outside_index``)
+    outside_indexes: dict = field(default_factory=dict)
     # results of analyses of the whole linked program that several findings ask for
     # (name -> result): a big backup's walks are seconds each, and the code does not
     # change once linked

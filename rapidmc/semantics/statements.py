@@ -58,6 +58,7 @@ class RoutineCompiler:
         self.gotos: list[tuple[Jump, ast.Goto]] = []
         self.section = "body"
         self.statement_start: Optional[Label] = None
+        self._index_lengths_of: dict = {}      # local's key -> ``_index_length``
         self.statement_after: Optional[Label] = None
         self.statement_reads_io = False
         self.statement_chooses = False
@@ -236,6 +237,37 @@ class RoutineCompiler:
         return slot
 
     # ------------------------------------------------------- simple statements
+    def _index_length(self, key: str) -> Optional[int]:
+        """The shortest length of the arrays the routine's local ``key`` indexes, when every
+        read of it in the routine is a whole index of an array named directly whose length
+        is known (``i := step{1}; x := table{i}``), else None: a read of outside data
+        assigned to it then takes only those indexes (``ExpressionCompiler.index_lengths``);
+        a local read any other way keeps the whole domain (a test of it could tell them
+        apart)."""
+        found = self._index_lengths_of.get(key, ())
+        if found != ():
+            return found
+        lengths: list = []
+        for node, above in ast.walk(self.routine.ast):
+            if not isinstance(node, ast.NameRef) or node.name.key != key:
+                continue
+            parent = above[-1] if above else None
+            if isinstance(parent, ast.Assignment) and parent.target is node:
+                continue
+            position = next((k for k, index in enumerate(parent.indices) if index is node),
+                            None) if isinstance(parent, ast.Index) else None
+            base = parent.base if position is not None else None
+            symbol = self.scope.lookup(base.name.key) if isinstance(base, ast.NameRef) \
+                else None
+            array = getattr(symbol, "type", None)
+            if not isinstance(array, ArrayType) or position >= len(array.dims) or \
+                    array.dims[position] is None:
+                lengths = []
+                break
+            lengths.append(array.dims[position])
+        self._index_lengths_of[key] = found = min(lengths) if lengths else None
+        return found
+
     def _Assignment(self, statement: ast.Assignment, follow: Label) -> None:
         compiler = self.expressions()
         target = statement.target
@@ -264,6 +296,11 @@ class RoutineCompiler:
         if isinstance(target_type, RapidType) and target_type.kind == SEMI_VALUE:
             raise error(TYPE_MISMATCH, f"a signal cannot be assigned with ':='; use "
                         f"SetDO/Set/Reset (or AliasIO to bind it)", statement.span)
+        if isinstance(target, ast.NameRef) and root.kind == LOCAL_DATA and \
+                not root.by_reference:
+            length = self._index_length(target.name.key)
+            if length is not None:       # a local that only indexes: an outside read's indexes
+                compiler.index_lengths[id(statement.value)] = length
         value = compiler.value(statement.value, target_type)
         value_fn = value.fn
         fusion = element = None
