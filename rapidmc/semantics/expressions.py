@@ -395,7 +395,7 @@ class ExpressionCompiler:
             return Compiled(kept, compiled.type)
 
         length = self.index_lengths.get(id(expr))
-        if length is not None:
+        if length is not None and outside.written_by_tasks is None:
             domain = self._outside_index(domain, length, outside.slot, expr.span)
         return free_read(stored, name, domain, compiled.type)
 
@@ -405,7 +405,9 @@ class ExpressionCompiler:
         ``statements``): the whole numbers 1 .. ``length`` among them.  The party that
         writes the data is taken to write an index there, as code that indexes with it
         unguarded expects (a PC's step number); the assumption names each such read
-        (``Linker.outside_indexes``).  A domain with no such value is kept whole."""
+        (``Linker.outside_indexes``).  A domain with no such value is kept whole, and so is
+        one of data whose writers are known tasks left out (``written_by_tasks``): the values
+        their code writes, 0 included, may reach the read (a guard read apart from it)."""
         valid = tuple(v for v in domain if isinstance(v, float) and v.is_integer() and
                       1 <= v <= length)
         if not valid or len(valid) == len(domain):
