@@ -22,6 +22,7 @@ from ..diagnostics import (ARGUMENT, NOT_A_REFERENCE, TYPE_MISMATCH, UNKNOWN_NAM
                            UNKNOWN_ROUTINE, error)
 from . import values
 from .errors import RapidError, placeholder_reached
+from .index_reads import reads_only_index
 from .instructions import called_from_wait
 from .machine import ABSENT, GLOBAL, read_at, replace_at
 from .wait_outcomes import WaitRead, by_outcome, note_writes
@@ -399,6 +400,25 @@ class ExpressionCompiler:
             domain = self._outside_index(domain, length, outside.slot, expr.span)
         return free_read(stored, name, domain, compiled.type)
 
+    def _reads_only_index(self, expr) -> bool:
+        """Whether ``expr`` reads data that the routine compiled reads only as whole array
+        indexes (``index_reads``; a routine that also tests it races with its writer)."""
+        root = expr
+        while isinstance(root, (ast.Component, ast.Index)):
+            root = root.base
+        routine_ast = getattr(self.routine, "ast", None)
+        if not isinstance(root, ast.NameRef) or routine_ast is None:
+            return False
+        symbol = self.scope.lookup(root.name.key)
+        if symbol is None or symbol.kind != GLOBAL_DATA or \
+                symbol.slot not in self.linker.outside_data:
+            return False
+        memo = self.linker.index_only_reads
+        key = (id(routine_ast), root.name.key)
+        if key not in memo:
+            memo[key] = reads_only_index(routine_ast, root.name.key)
+        return memo[key]
+
     def _outside_index(self, domain: tuple, length: int, slot: int, span) -> tuple:
         """The values of ``domain`` a read of outside data takes where its value indexes an
         array of ``length`` elements (directly, or through a local that only indexes:
@@ -641,7 +661,7 @@ class ExpressionCompiler:
                         f"dimension(s)", expr.span)
         if isinstance(base_type, ArrayType):
             for index, length in zip(expr.indices, base_type.dims):
-                if length is not None:
+                if length is not None and self._reads_only_index(index):
                     self.index_lengths[id(index)] = length
         indices = [self.value(i, NUM) for i in expr.indices]
         result_type = None

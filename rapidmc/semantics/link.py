@@ -64,6 +64,9 @@ class Linker:
         self.whole_reads_fixed: set = set()
         # slot of outside data -> the spans of its reads taken as an array's index only
         self.outside_indexes: dict = {}
+        # (id of a routine's syntax, name) -> whether the routine reads the name only as
+        # whole array indexes (``index_reads``), asked where outside data indexes
+        self.index_only_reads: dict = {}
         self.failed_names: set[str] = set()     # declarations that failed: uses stay quiet
         self.booked_errors = 0                  # BookErrNo call sites numbered so far
         # the namespace whose code is being compiled: each task has its own USER module

@@ -22,6 +22,7 @@ from .instructions import (Action, Branch, Call, CallPlan, ElementWrite, EndRout
                            ExitProgram, ForInit, ForNext, Instruction, Jump, LateCall,
                            LeavePlan, Raise, Retry, Return, TestDispatch, TryNext)
 from .errors import placeholder_reached
+from .index_reads import datum_reads, is_whole_index, reads_only_index
 from .machine import GLOBAL, with_locals
 from .scope import (CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SYSTEM_VARIABLES, Scope,
                     Symbol)
@@ -58,7 +59,6 @@ class RoutineCompiler:
         self.gotos: list[tuple[Jump, ast.Goto]] = []
         self.section = "body"
         self.statement_start: Optional[Label] = None
-        self._index_lengths_of: dict = {}      # local's key -> ``_index_length``
         self.statement_after: Optional[Label] = None
         self.statement_reads_io = False
         self.statement_chooses = False
@@ -237,36 +237,36 @@ class RoutineCompiler:
         return slot
 
     # ------------------------------------------------------- simple statements
-    def _index_length(self, key: str) -> Optional[int]:
+    def _index_length(self, key: str, value: ast.Expr) -> Optional[int]:
         """The shortest length of the arrays the routine's local ``key`` indexes, when every
         read of it in the routine is a whole index of an array named directly whose length
-        is known (``i := step{1}; x := table{i}``), else None: a read of outside data
-        assigned to it then takes only those indexes (``ExpressionCompiler.index_lengths``);
-        a local read any other way keeps the whole domain (a test of it could tell them
-        apart)."""
-        found = self._index_lengths_of.get(key, ())
-        if found != ():
-            return found
+        is known (``i := step{1}; x := table{i}``) and the data ``value`` reads is read for
+        nothing else there (``index_reads``), else None: a read of outside data assigned to
+        it then takes only those indexes (``ExpressionCompiler.index_lengths``)."""
+        routine_ast = self.routine.ast
+        datum = value
+        while isinstance(datum, (ast.Component, ast.Index)):
+            datum = datum.base
+        symbol = self.scope.lookup(datum.name.key) if isinstance(datum, ast.NameRef) else None
+        if symbol is None or symbol.kind != GLOBAL_DATA or \
+                symbol.slot not in self.linker.outside_data or \
+                not reads_only_index(routine_ast, datum.name.key):
+            return None
         lengths: list = []
-        for node, above in ast.walk(self.routine.ast):
-            if not isinstance(node, ast.NameRef) or node.name.key != key:
+        for read, parent in datum_reads(routine_ast, key):
+            if isinstance(parent, ast.Assignment) and parent.target is read:
                 continue
-            parent = above[-1] if above else None
-            if isinstance(parent, ast.Assignment) and parent.target is node:
-                continue
-            position = next((k for k, index in enumerate(parent.indices) if index is node),
-                            None) if isinstance(parent, ast.Index) else None
-            base = parent.base if position is not None else None
+            base = parent.base if is_whole_index(read, parent) else None
             symbol = self.scope.lookup(base.name.key) if isinstance(base, ast.NameRef) \
                 else None
             array = getattr(symbol, "type", None)
+            position = next((k for k, index in enumerate(parent.indices) if index is read),
+                            None) if base is not None else None
             if not isinstance(array, ArrayType) or position >= len(array.dims) or \
                     array.dims[position] is None:
-                lengths = []
-                break
+                return None
             lengths.append(array.dims[position])
-        self._index_lengths_of[key] = found = min(lengths) if lengths else None
-        return found
+        return min(lengths) if lengths else None
 
     def _Assignment(self, statement: ast.Assignment, follow: Label) -> None:
         compiler = self.expressions()
@@ -298,7 +298,7 @@ class RoutineCompiler:
                         f"SetDO/Set/Reset (or AliasIO to bind it)", statement.span)
         if isinstance(target, ast.NameRef) and root.kind == LOCAL_DATA and \
                 not root.by_reference:
-            length = self._index_length(target.name.key)
+            length = self._index_length(target.name.key, statement.value)
             if length is not None:       # a local that only indexes: an outside read's indexes
                 compiler.index_lengths[id(statement.value)] = length
         value = compiler.value(statement.value, target_type)
