@@ -400,7 +400,7 @@ class ExpressionCompiler:
             domain = self._outside_index(domain, length, outside.slot, expr.span)
         return free_read(stored, name, domain, compiled.type)
 
-    def _reads_only_index(self, expr) -> bool:
+    def outside_read_only_as_index(self, expr) -> bool:
         """Whether ``expr`` reads data that the routine compiled reads only as whole array
         indexes (``index_reads``; a routine that also tests it races with its writer)."""
         root = expr
@@ -661,7 +661,7 @@ class ExpressionCompiler:
                         f"dimension(s)", expr.span)
         if isinstance(base_type, ArrayType):
             for index, length in zip(expr.indices, base_type.dims):
-                if length is not None and self._reads_only_index(index):
+                if length is not None and self.outside_read_only_as_index(index):
                     self.index_lengths[id(index)] = length
         indices = [self.value(i, NUM) for i in expr.indices]
         result_type = None

@@ -22,7 +22,7 @@ from .instructions import (Action, Branch, Call, CallPlan, ElementWrite, EndRout
                            ExitProgram, ForInit, ForNext, Instruction, Jump, LateCall,
                            LeavePlan, Raise, Retry, Return, TestDispatch, TryNext)
 from .errors import placeholder_reached
-from .index_reads import datum_reads, is_whole_index, reads_only_index
+from .index_reads import datum_reads, is_whole_index
 from .machine import GLOBAL, with_locals
 from .scope import (CONSTANT, GLOBAL_DATA, LOCAL_DATA, ROUTINE, SYSTEM_VARIABLES, Scope,
                     Symbol)
@@ -243,17 +243,10 @@ class RoutineCompiler:
         is known (``i := step{1}; x := table{i}``) and the data ``value`` reads is read for
         nothing else there (``index_reads``), else None: a read of outside data assigned to
         it then takes only those indexes (``ExpressionCompiler.index_lengths``)."""
-        routine_ast = self.routine.ast
-        datum = value
-        while isinstance(datum, (ast.Component, ast.Index)):
-            datum = datum.base
-        symbol = self.scope.lookup(datum.name.key) if isinstance(datum, ast.NameRef) else None
-        if symbol is None or symbol.kind != GLOBAL_DATA or \
-                symbol.slot not in self.linker.outside_data or \
-                not reads_only_index(routine_ast, datum.name.key):
+        if not self.expressions().outside_read_only_as_index(value):
             return None
         lengths: list = []
-        for read, parent in datum_reads(routine_ast, key):
+        for read, parent in datum_reads(self.routine.ast, key):
             if isinstance(parent, ast.Assignment) and parent.target is read:
                 continue
             base = parent.base if is_whole_index(read, parent) else None
