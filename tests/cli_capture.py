@@ -50,3 +50,12 @@ def verdicts_and_states(argv, *, cwd: Path | str | None = None) -> dict:
     document = json.loads(run_cli(["check", *argv, "--format", "json", "--quiet"], cwd=cwd).out)
     return {p["name"]: (p["verdict"], p["stats"]["model_states"])
             for p in document["properties"]}
+
+
+def assert_reduction_keeps_verdicts(reduced: dict, exact: dict, names: set, text: str) -> None:
+    """The differential of a reduction: both searches report the properties ``names``, and
+    every verdict the exact search reaches (not UNKNOWN) is the reduced search's too."""
+    assert reduced.keys() == exact.keys() == names
+    for name, (verdict, _) in exact.items():
+        if verdict != "UNKNOWN":
+            assert reduced[name][0] == verdict, (name, text)
