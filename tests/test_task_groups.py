@@ -215,7 +215,7 @@ def test_an_instruction_conflicts_with_the_tasks_naming_its_data(tmp_path):
 def test_groups_leave_out_states_one_task_ample_sets_keep(tmp_path, monkeypatch):
     argv = write_handshakes(tmp_path)
     grouped, full = check_json(argv), check_json(argv + ["--no-por"])
-    monkeypatch.setattr(task_groups.TaskGroups, "candidates", lambda self, stacks, running: ())
+    monkeypatch.setattr(task_groups.TaskGroups, "candidates", lambda self, stacks, running, state: ())
     alone = check_json(argv)
     assert verdicts(grouped) == verdicts(full) == verdicts(alone)
     assert states(grouped)["no_runtime_error"] < states(alone)["no_runtime_error"] < \

@@ -47,7 +47,8 @@ Checking*, ch. 10) is every transition of one task ``t`` when
 Where no task alone qualifies, the ample set may be the transitions of a group
 of tasks: those whose next instructions touch data the others' code names
 (``task_groups``: T_ROB1 and T_ROB2 at a handshake on a PERS flag, without a
-third task polling its own data).  Otherwise the state is expanded fully.
+third task polling its own data; an IDelete that deletes nothing, ``empty_deletes``).
+Otherwise the state is expanded fully.
 With merged steps on, each transition
 then runs on through its task's next independent, invisible instructions
 (``local_runs``, SPIN's statement merging between processes).  The reduced graph keeps every verdict

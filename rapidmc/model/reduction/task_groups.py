@@ -19,7 +19,9 @@ ch. 4), built from one task ``t``:
   routine, data written outside the loaded code, an atom's data) stops the
   group.  Judged in a group only: a WaitUntil without a time limit reads its
   condition (its task may wait there, below), and ExitCycle writes only its
-  task's frames when no routine of the task has an UNDO handler.
+  task's frames when no routine of the task has an UNDO handler.  Judged per
+  state: an IDelete of an intnum holding 0 that no other task writes deletes
+  nothing (``empty_deletes``) and conflicts with no task there.
 * The tasks outside ``G`` then never touch what ``G``'s next instructions read
   or write, whatever they run next: every path of their steps from the state
   commutes with each of ``G``'s transitions and neither enables nor disables
@@ -35,8 +37,8 @@ ch. 4), built from one task ``t``:
   unchanged: the waiting still wait, the others can go on).  At least one task
   of ``G`` does not wait, and a group of every running task is the full
   expansion and is not tried.  A group of one task is tried where its
-  instruction is independent in a group only (ExitCycle): the one-task ample
-  sets of ``PartialOrder`` already covered the others.
+  instruction is independent in a group only (ExitCycle, an IDelete that deletes
+  nothing): the one-task ample sets of ``PartialOrder`` already covered the others.
 
 Signals and robots count as data here (``cell_uses``): a signal read conflicts
 with the tasks whose code may set the signal, a robot reading with the task
@@ -55,6 +57,7 @@ from typing import Callable, Optional
 from ...semantics.staged_step import task_transitions
 from ...semantics.instructions import Wait
 from ...semantics.state import State
+from .empty_deletes import EmptyDeletes
 
 GROUPS_KEPT = 1 << 14        # the groups per combination of the tasks' instructions kept
 
@@ -66,7 +69,8 @@ class TaskGroups:
         self.order = order                  # PartialOrder: footprints and the proviso
         self.tasks = len(order.names)
         self._conflicts: dict = {}          # (task, routine, pc) -> frozenset or None
-        self._groups: dict = {}             # the tasks' (task, routine, pc) -> groups
+        self._groups: dict = {}             # the tasks' (task, routine, pc, empty) -> groups
+        self.deletes = EmptyDeletes(order)  # IDelete of an intnum holding 0, per state
 
     def conflicts(self, task: int, routine: int, pc: int) -> Optional[frozenset]:
         """The other tasks whose code touches what the instruction at ``pc`` of ``routine``
@@ -95,18 +99,21 @@ class TaskGroups:
         ``PartialOrder`` tries: it conflicts with some other task but not with every
         task, or with none while it is judged independent in a group only (ExitCycle)."""
         found = self.conflicts(task, routine, pc)
-        return found is not None and (bool(found) or
-                                      not self.order.is_ample_candidate(task, routine, pc))
+        if found is None:
+            return self.deletes.reader(task, routine, pc) is not None
+        return bool(found) or not self.order.is_ample_candidate(task, routine, pc)
 
-    def candidates(self, stacks: tuple, running: list) -> tuple:
+    def candidates(self, stacks: tuple, running: list, state: State) -> tuple:
         """The groups of fewer than all running tasks, in the order of the task each is
         built from (each once), but for the one-task ample sets already tried."""
-        key = tuple((task, stacks[task][-1][0], stacks[task][-1][1]) for task in running)
+        empty = self._empty_deletes(stacks, running, state)
+        key = tuple((task, stacks[task][-1][0], stacks[task][-1][1], task in empty)
+                    for task in running)
         found = self._groups.get(key)
         if found is None:
             found = []
             for task in running:
-                group = self._closure(task, stacks, set(running))
+                group = self._closure(task, stacks, set(running), empty)
                 if group is not None and len(group) < len(running) and \
                         group not in found and (len(group) > 1 or not self.order.
                                                 is_ample_candidate(task, *stacks[task][-1][:2])):
@@ -117,12 +124,25 @@ class TaskGroups:
             self._groups[key] = found
         return found
 
-    def _closure(self, task: int, stacks: tuple, running: set) -> Optional[tuple]:
+    def _empty_deletes(self, stacks: tuple, running: list, state: State) -> frozenset:
+        """The running tasks at an IDelete that deletes nothing in ``state``
+        (``empty_deletes``): independent of every other task there."""
+        found = []
+        for task in running:
+            frame = stacks[task][-1]
+            reader = self.deletes.reader(task, frame[0], frame[1])
+            if reader is not None and reader(stacks[task], state):
+                found.append(task)
+        return frozenset(found)
+
+    def _closure(self, task: int, stacks: tuple, running: set,
+                 empty: frozenset) -> Optional[tuple]:
         group, work = {task}, [task]
         while work:
             member = work.pop()
             frame = stacks[member][-1]
-            found = self.conflicts(member, frame[0], frame[1])
+            found = frozenset() if member in empty else \
+                self.conflicts(member, frame[0], frame[1])
             if found is None:
                 return None
             for other in found & running:
@@ -137,7 +157,7 @@ class TaskGroups:
         docstring), None when there is none.  ``targets(task, found)``: the task's
         transitions ``found`` (``task_transitions``) as the caller keeps them, (item,
         target state) each."""
-        for group in self.candidates(stacks, running):
+        for group in self.candidates(stacks, running, state):
             chosen = self._group_transitions(state, group, config, here, targets)
             if chosen is not None:
                 return chosen
