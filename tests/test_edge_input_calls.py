@@ -59,6 +59,8 @@ def calls_program(seed: int, log: str = "idle") -> str:
                            "  PROC More(\\string other)\n  ENDPROC\n", {"diB": False}),
     ('n := StrLen(Name("diA"));', "  FUNC string Name(string s)\n    RETURN \"x\";\n"
                                "  ENDFUNC\n", {"diA": False, "diB": False}),
+    ('Log "diA";', "  PROC Log(string name)\n    VAR string v;\n    GetDataVal \"name\", v;\n"
+                   "  ENDPROC\n", {"diB": False}),    # a parameter reached by a name
     ('TPWrite "diA";', "", {"diB": False}),
 ])
 def test_which_inputs_stay_edge_inputs(main, routines, expected):

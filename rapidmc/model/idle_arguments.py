@@ -13,10 +13,13 @@ says so: ``stub PmErrorLog is empty``), so none of its parameters is named.
 """
 from __future__ import annotations
 
+from typing import Optional
+
 from .. import ast
 from ..semantics.configured_signals import walk_routine
 from ..semantics.library.registry import matched_parameters
 from ..semantics.scope import ROUTINE
+from .reduction.relevance import DATA_BY_NAME
 
 
 def idle_literals(program) -> set:
@@ -38,20 +41,28 @@ def idle_literals(program) -> set:
                 continue
             if symbol.slot not in named:
                 named[symbol.slot] = _named_keys(callee.ast)
+            keys = named[symbol.slot]
             for argument, parameter in matched_parameters(node.args, callee.parameters):
                 if isinstance(argument.value, ast.StringLiteral) and parameter is not None \
-                        and parameter.key not in named[symbol.slot]:
+                        and keys is not None and parameter.key not in keys:
                     found.add(id(argument.value))
     return found
 
 
-def _named_keys(tree: ast.Routine) -> frozenset:
-    """Every name a routine's code refers to: data read or written, and an optional
-    parameter passed on (``\\Sig?Sig``)."""
+def _named_keys(tree: ast.Routine) -> Optional[frozenset]:
+    """Every name a routine's code refers to: data read or written, an optional parameter
+    passed on (``\\Sig?Sig``), a string that may name data; None (all of them) when the
+    routine reaches data by a name (GetDataVal ...) or late-bound calls."""
     keys = set()
     for node in walk_routine(tree):
+        if isinstance(node, ast.LateBindingCall) or \
+                isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) and \
+                node.name.key in DATA_BY_NAME:
+            return None
         if isinstance(node, ast.NameRef):
             keys.add(node.name.key)
+        elif isinstance(node, ast.StringLiteral):
+            keys.add(node.value.upper())
         for argument in getattr(node, "args", None) or ():
             if argument.source is not None:
                 keys.add(argument.source.key)
