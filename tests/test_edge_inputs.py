@@ -107,6 +107,17 @@ def check(tmp_path, text: str, *flags: str, second: bool = False) -> dict:
                                 "--formula", 'few: G "hits < 4"', *flags], cwd=tmp_path)
 
 
+def same_verdicts(tmp_path, text: str, engine: str, second: bool) -> tuple:
+    """(edge model's, exact model's) property -> (verdict, states) of ``text``, after
+    asserting that each verdict the exact search reaches is the edge model's too."""
+    by_edges = check(tmp_path, text, "--engine", engine, second=second)
+    exact = check(tmp_path, text, "--engine", engine, "--exact-edges", second=second)
+    # (the edge model is no bigger: where the exact search ends, it ends too)
+    assert_reduction_keeps_verdicts(by_edges, exact, {"no_runtime_error", "no_deadlock", "few"},
+                                    text)
+    return by_edges, exact
+
+
 PROGRAMS = [edge_program(seed) for seed in range(30)]
 
 
@@ -115,11 +126,7 @@ PROGRAMS = [edge_program(seed) for seed in range(30)]
 def test_programs_of_the_pattern_keep_their_verdicts(tmp_path, number, engine):
     text = PROGRAMS[number]
     second = number % 5 == 4                 # every fifth with a second task on di1
-    by_edges = check(tmp_path, text, "--engine", engine, second=second)
-    exact = check(tmp_path, text, "--engine", engine, "--exact-edges", second=second)
-    # (the edge model is no bigger: where the exact search ends, it ends too)
-    assert_reduction_keeps_verdicts(by_edges, exact, {"no_runtime_error", "no_deadlock", "few"},
-                                    text)
+    by_edges, exact = same_verdicts(tmp_path, text, engine, second)
     verdict, states = exact["no_runtime_error"]
     if verdict == "HOLDS":                   # (the same search, both complete)
         assert by_edges["no_runtime_error"][1] <= states, text

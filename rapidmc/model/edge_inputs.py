@@ -33,6 +33,7 @@ from ..semantics.edge_traps import routine_task
 from ..semantics.staged_step import in_trap
 from ..semantics.library.arguments import argument_expression
 from .aliased_orders import AliasedOrders
+from .idle_arguments import idle_literals
 from .inputs import ordered_signal
 
 _ORDERS = {"ISIGNALDI", "ISIGNALDO"}
@@ -44,20 +45,22 @@ def edge_inputs(program, atoms, observed: Optional[set]) -> dict:
     """Signal index -> whether its orders watch both edges (else the rising one), for
     each stored digital input that only interrupt orders name, all with the same literal
     trigger, 1 or 2 (``{}``: none, or the program reaches signals in ways this cannot
-    bound: an environment model reading signals, a name built at run time)."""
+    bound: an environment model reading signals, a name built at run time).  A late-bound
+    call binds only loaded procedures (``statements._LateBindingCall``), walked here like
+    the rest; a string given to a parameter its routine never names is no read
+    (``idle_arguments``)."""
     if observed is None or program.environment_reads_io or atoms.observes_signal_data:
         return {}
     triggers: dict = {}             # signal index -> set of literal trigger values
     read = set(atoms.observed)
     names = {signal.key: signal.index for signal in program.signals}
     aliased = AliasedOrders(program)
+    idle = idle_literals(program)
     for routine in program.routines:
         if routine.ast is None:
             continue
         watched = set()             # ids of the NameRef nodes that are an order's signal
         for node in walk_routine(routine.ast):
-            if isinstance(node, ast.LateBindingCall):
-                return {}
             if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) and \
                     node.name.key in _BY_NAME and not _literal_names(node):
                 return {}
@@ -74,7 +77,7 @@ def edge_inputs(program, atoms, observed: Optional[set]) -> dict:
             elif isinstance(node, ast.NameRef):
                 read |= aliased.reads(routine, node, watched)
             elif isinstance(node, ast.StringLiteral) and node.value.upper() in names and \
-                    not aliased.binding_only(node):
+                    not aliased.binding_only(node) and id(node) not in idle:
                 read.add(names[node.value.upper()])
     edges = {}
     for index, found in triggers.items():
