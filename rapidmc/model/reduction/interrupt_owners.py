@@ -36,9 +36,9 @@ it pending, and the task serves again there); no other task's step reads or writ
 that entry, as long as no other task's code names the interrupt-number data of the
 task (``IDelete``, ``ISleep`` ... on a shared ``intnum``: the task is never quiet
 then).  Timers, persistent-data interrupts, input and analog-input edges and a
-pending interrupt keep the task serving.  A server task that orders an interrupt on
-an output the user sets from outside the program (a reset button wired to nothing
-the loaded code writes) is ample again wherever the interrupt has not come.
+pending interrupt keep the task serving.  (The joseballester socket server orders its
+reset interrupt on an output no loaded code sets to 1: it is ample again wherever the
+interrupt has not come, instead of never.)
 """
 from __future__ import annotations
 
