@@ -69,8 +69,9 @@ def independence_failures(argv: list[str], limit: int = REACHED_STATES) -> tuple
         if state[7] != RUNNING:
             continue
         stacks = (state[0],) + state[10]
-        # (a task serving an interrupt is never ample: its step may enter a TRAP)
-        serving = serving_tasks(program, state[4])
+        # (a task serving an interrupt is never ample: its step may enter a TRAP; one whose
+        # interrupts only its own steps can queue, none pending, serves none)
+        serving = serving_tasks(program, state[4], order.owners)
         for task, stack in enumerate(stacks):
             if not stack or serving is None or task in serving or \
                     not order.footprint(task, stack[-1][0], stack[-1][1]).independent:

@@ -114,9 +114,10 @@ PROPERTIES = ['few: G "hits < 2"', 'calm: G F "n2 = 0"', 'apart: G ("shared = 0"
               'flagged: F "flag"']
 
 
-def write_interrupt_tasks(folder: Path, seed: int) -> list[str]:
+def write_interrupt_tasks(folder: Path, seed: int, make=interrupt_tasks) -> list[str]:
+    """The argument list checking the two tasks ``make(seed)`` gives against PROPERTIES."""
     argv = []
-    for number, text in enumerate(interrupt_tasks(seed), start=1):
+    for number, text in enumerate(make(seed), start=1):
         path = folder / f"task{number}.mod"
         path.write_text(text)
         argv += [str(path)] if number == 1 else ["--add-task", str(path)]
@@ -131,7 +132,12 @@ SEEDS = range(16)
 @pytest.mark.parametrize("engine", ENGINES)
 @pytest.mark.parametrize("seed", SEEDS)
 def test_generated_interrupt_tasks_keep_their_verdicts(tmp_path, seed, engine):
-    argv = write_interrupt_tasks(tmp_path, seed) + ["--engine", engine]
+    assert_same_as_unreduced(write_interrupt_tasks(tmp_path, seed) + ["--engine", engine])
+
+
+def assert_same_as_unreduced(argv: list[str]) -> None:
+    """The check of ``argv`` gives the verdicts and the lines never reached of
+    ``--no-por``, which reaches a verdict for every property."""
     reduced, full = check_json(argv), check_json(argv + ["--no-por"])
     assert "UNKNOWN" not in verdicts(full).values(), states(full)
     assert verdicts(reduced) == verdicts(full)
@@ -149,7 +155,8 @@ def test_a_task_serving_an_interrupt_taken_as_ample_loses_a_trap(tmp_path, monke
     full = check_json(argv + ["--no-por"])
     assert never_reached(check_json(argv)) == never_reached(full)
     from rapidmc.model.reduction import partial_order
-    monkeypatch.setattr(partial_order, "serving_tasks", lambda program, interrupts: frozenset())
+    monkeypatch.setattr(partial_order, "serving_tasks",
+                        lambda program, interrupts, quiet=None: frozenset())
     lost = never_reached(check_json(argv)) - never_reached(full)
     assert {line for _, line in lost} == {16}           # TRAP onEvent
 

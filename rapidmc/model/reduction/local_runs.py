@@ -122,7 +122,7 @@ class LocalRuns:
                 break
             frame = stack[-1]
             if frame[3] != 0 or not self.mergeable(task, frame[0], frame[1]) or \
-                    _serving(self.program, after[4], task):
+                    _serving(self.program, after[4], task, self.order.owners):
                 break
             found = task_transitions(self.program, after, task, config)
             if found is None or len(found) != 1:
@@ -150,10 +150,10 @@ class LocalRuns:
         return running[0] if len(running) == 1 else None
 
 
-def _serving(program, interrupts, task: int) -> bool:
+def _serving(program, interrupts, task: int, owners=None) -> bool:
     """Whether a TRAP of the task may start in its next step (``interrupt_owners``): the
     instruction alone is then no ample set."""
-    serving = serving_tasks(program, interrupts)
+    serving = serving_tasks(program, interrupts, owners)
     return serving is None or task in serving
 
 

@@ -61,7 +61,8 @@ and data reached by name at run time in another task or by pattern
 name up where the call is, so a task's SetDataVal counts as a write of every
 datum the task can name.  In a state with
 interrupts only a task that serves none of them may be ample (``interrupt_owners``:
-each task serves its own, in its own steps), and no group is tried; with a delayed
+each task serves its own, in its own steps; an interrupt only its own task's steps can
+queue, not pending, serves nothing), and no group is tried; with a delayed
 signal change due or a pending interrupt no longer connected, the state is expanded
 fully.  The fair search (``check.fair``) runs on the unreduced
 system (``RapidSystem.full_interleaving``).  tests/test_partial_order.py holds
@@ -86,7 +87,7 @@ from ...semantics.step import successors as semantic_successors
 from ..state_keys import StateKeys
 from .local_runs import LocalRuns
 from .cell_uses import CellUses, CellView
-from .interrupt_owners import serving_tasks
+from .interrupt_owners import InterruptOwners, serving_tasks
 from .relevance import DATA_BY_NAME
 from .task_groups import TaskGroups
 from .syntax_footprint import (LOCAL, SHARED, VISIBLE, Footprint, ReferenceParameters,
@@ -132,6 +133,9 @@ class PartialOrder:
         self.own, self.stable = self._sharing_sets(lambda task, by: by)
         # the signals and robots each task's code touches (``cell_uses``)
         self.cell = CellUses(program)
+        # interrupts only their own task's steps can queue (``interrupt_owners``)
+        self.owners = InterruptOwners(program, self.cell.written, _intnum_sharing(program,
+                                                                                  accessors))
         self.entries = (program.entry,) + tuple(program.task_entries)
         # a barrier (WaitSyncTask, SyncMoveOn/Off) observes whether its partners have ended
         self.barriers = any(isinstance(instruction, SyncWait)
@@ -166,7 +170,8 @@ class PartialOrder:
         ample subset of one task's transitions (``config``: the system's, with which a
         task's steps are computed to tell whether it waits)."""
         # the tasks whose next steps interrupts may change (None: every task's)
-        serving = serving_tasks(self.program, state[4]) if state[7] == RUNNING else None
+        serving = serving_tasks(self.program, state[4], self.owners) \
+            if state[7] == RUNNING else None
         stacks = (state[0],) + state[10]
         running = [task for task, stack in enumerate(stacks) if stack]
         if state[7] != RUNNING or serving is None or len(running) < 2:
@@ -176,7 +181,7 @@ class PartialOrder:
         here = places.number(state)
         chosen = self._choose(state, stacks, [task for task in running if task not in serving],
                               successors, config, here)
-        if chosen is None and len(running) > 2 and not serving:
+        if chosen is None and len(running) > 2 and not state[4][0]:
             chosen = self.groups.choose(state, stacks, running, config, here,
                                         lambda task, found: self._labelled(state, found,
                                                                            config))
@@ -474,6 +479,18 @@ def _accessors(program: Program) -> dict[int, set[int]]:
     for symbol in linker.system.names.values():
         if symbol.kind == GLOBAL_DATA and symbol.slot in found:
             found[symbol.slot] |= every
+    return found
+
+
+def _intnum_sharing(program: Program, accessors: dict) -> set[int]:
+    """The tasks whose code may name interrupt-number data another task's code names too
+    (``interrupt_owners``: another task's IDelete or ISleep may then touch theirs)."""
+    found: set[int] = set()
+    for data in program.globals:
+        if getattr(data.type, "key", None) == "INTNUM":
+            by = accessors.get(data.slot, set())
+            if len(by) > 1 or -1 in by:
+                found |= by
     return found
 
 
