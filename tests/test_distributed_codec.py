@@ -393,13 +393,29 @@ def test_partitions_find_the_error_at_its_depth(engine):
     assert system.failed(path[0]) and path[-1] in system.initial_states()
 
 
+def test_the_error_path_is_rebuilt_from_links_read_back_from_their_files(monkeypatch):
+    """The parent links of a real search, written to their files every few links
+    (``Links.WRITE_EVERY``), give the path one process finds."""
+    monkeypatch.setattr(Links, "WRITE_EVERY", 3)
+    system = system_of("run-time error")
+    one = find_reachable(system, system.failed, max_states=None)
+    parts, _, target = search_here(system, 2)
+    assert all(part.parent.file_bytes() > 0 for part in parts)
+    path = _path_to(parts, target)
+    assert len(path) == len(one.prefix)
+    assert system.failed(path[0]) and path[-1] in system.initial_states()
+    assert all(after in system.successor_states(before)
+               for after, before in zip(path, path[1:]))
+
+
 def _path_to(parts, target) -> list:
     """The states from the target back to an initial state, by parent links."""
     partition, state_id = target
-    path = []
+    path, states = [], sum(len(part.table) for part in parts)
     while True:
         state, parent = parts[partition].step_back(state_id)
         path.append(state)
+        assert len(path) <= states, "the links go round in a cycle"
         if parent < 0:
             return path
         partition, state_id = unlink(parent)
