@@ -283,6 +283,7 @@ def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
             "worker_start_rss_kb": [f["start_rss_kb"] for f in figures],
             "worker_private_kb": [f["peak_private_kb"] for f in figures],
             "worker_bytes": [f["bytes"] for f in figures],
+            "worker_link_file": [f["link_file_bytes"] for f in figures],
             "worker_cpu": [f["cpu_seconds"] for f in figures],
             "worker_step_cpu": [f["step_seconds"] for f in figures],
             "worker_idle": [f["wall_seconds"] - f["step_wall"] for f in figures],
@@ -526,9 +527,10 @@ def print_safety(names, modulo: int, workers: int) -> None:
               flush=True)
         print(f"{'':16} worker memory: {_each([kb / 1024 for kb in spread['worker_start_rss_kb']], '.0f')}"
               f" MB at the start, peak {_each([kb / 1024 for kb in spread['worker_rss_kb']], '.0f')}"
-              f" MB (anonymous and file pages, Ray's shared object store apart: "
+              f" MB (anonymous and file pages read after calls, Ray's shared object store apart: "
               f"{_each([kb / 1024 for kb in spread['worker_private_kb']], '.0f')} MB); the table "
-              f"and parent links {_each([b / 2 ** 20 for b in spread['worker_bytes']], '.0f')} MB",
+              f"and the parent links in memory {_each([b / 2 ** 20 for b in spread['worker_bytes']], '.0f')}"
+              f" MB, the links' files {_each([b / 2 ** 20 for b in spread['worker_link_file']], '.0f')} MB",
               flush=True)
         if not name.startswith("counters"):
             family["every_cpu"] = family.get("every_cpu", 0.0) + total

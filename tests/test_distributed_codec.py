@@ -201,24 +201,27 @@ def test_node_ids_sent_to_another_table_are_stored_as_the_same_states(engine):
 
 
 @pytest.mark.parametrize("numpy_arrays", [True, False])
-def test_parent_links_take_4_bytes_until_they_need_more(numpy_arrays):
-    """A partition's parent links: 4 bytes a state while ``1 + id * partitions + sender``
-    fits in 32 bits, then 8, each link read back as ``link`` wrote it (initial: -1)."""
+def test_parent_links_are_read_back_from_their_file_as_written(numpy_arrays, monkeypatch):
+    """A partition's parent links go to a file every ``WRITE_EVERY`` links: each one is
+    read back as ``link`` wrote it (initial: -1), from the file or from those still in
+    memory, past 32 bits too; memory holds only those not written yet."""
     import numpy
+    monkeypatch.setattr(Links, "WRITE_EVERY", 4)
     links = Links(3)
     links.initial()
     wanted = [-1]
-    for sender, fields in ((2, [0, 5, 7]), (1, [(1 << 32) // 3 - 1]), (0, [1 << 33, 4])):
+    for sender, fields in ((2, [0, 5, 7]), (1, [(1 << 32) // 3 - 1]), (0, [1 << 33, 4]),
+                           (2, [9, 10])):
         new = [True] * len(fields)
         new[-1] = len(fields) == 1          # (the last one: not new, unless alone)
         stored = (None, numpy.array(new), numpy.array(fields, numpy.int64)) if numpy_arrays \
             else (None, new, fields)
         links.extend(sender, stored)
         wanted += [link(sender, field) for field, fresh in zip(fields, new) if fresh]
-        if sender == 1:
-            assert links.memory_bytes() == 4 * len(wanted)
-    assert [links[i] for i in range(len(links))] == wanted
-    assert links.memory_bytes() == 8 * len(wanted)
+        assert [links[i] for i in range(len(links))] == wanted
+    assert len(links) == len(wanted) == 6 and links.file_bytes() == 8 * 4
+    assert links.memory_bytes() == 8 * 2
+    links.close()
 
 
 @pytest.mark.parametrize("name", ["socket server", "two tasks", "run-time error"])
@@ -390,13 +393,29 @@ def test_partitions_find_the_error_at_its_depth(engine):
     assert system.failed(path[0]) and path[-1] in system.initial_states()
 
 
+def test_the_error_path_is_rebuilt_from_links_read_back_from_their_files(monkeypatch):
+    """The parent links of a real search, written to their files every few links
+    (``Links.WRITE_EVERY``), give the path one process finds."""
+    monkeypatch.setattr(Links, "WRITE_EVERY", 3)
+    system = system_of("run-time error")
+    one = find_reachable(system, system.failed, max_states=None)
+    parts, _, target = search_here(system, 2)
+    assert all(part.parent.file_bytes() > 0 for part in parts)
+    path = _path_to(parts, target)
+    assert len(path) == len(one.prefix)
+    assert system.failed(path[0]) and path[-1] in system.initial_states()
+    assert all(after in system.successor_states(before)
+               for after, before in zip(path, path[1:]))
+
+
 def _path_to(parts, target) -> list:
     """The states from the target back to an initial state, by parent links."""
     partition, state_id = target
-    path = []
+    path, states = [], sum(len(part.table) for part in parts)
     while True:
         state, parent = parts[partition].step_back(state_id)
         path.append(state)
+        assert len(path) <= states, "the links go round in a cycle"
         if parent < 0:
             return path
         partition, state_id = unlink(parent)

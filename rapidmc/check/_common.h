@@ -25,21 +25,27 @@ static inline uint64_t mix64(uint64_t x)
 /* ------------------------------------------------------------- growable arrays */
 
 /* ``items`` (``*capacity`` items of ``size`` bytes) with room for ``wanted`` items, moved
- * when they grow by half (from 256) until they fit: at most a third of the room is ever
- * spare, where doubling left up to half (the stored states' arrays are most of a search's
- * memory); NULL when out of memory. */
-static inline void *reserve(void *items, Py_ssize_t *capacity, size_t size, Py_ssize_t wanted)
+ * when they grow by 1/``part`` (from 256) until they fit; ``reserve``: by half, so at most
+ * a third of the room is ever spare, where doubling left up to half (the stored states'
+ * arrays are most of a search's memory); NULL when out of memory. */
+static inline void *reserve_by(void *items, Py_ssize_t *capacity, size_t size,
+                               Py_ssize_t wanted, Py_ssize_t part)
 {
     if (wanted <= *capacity)
         return items;
     Py_ssize_t grown = *capacity ? *capacity : 256;
     while (grown < wanted)
-        grown += grown / 2;
+        grown += grown / part > 0 ? grown / part : 1;
     void *moved = PyMem_Realloc(items, grown * size);
     if (moved == NULL)
         return PyErr_NoMemory();
     *capacity = grown;
     return moved;
+}
+
+static inline void *reserve(void *items, Py_ssize_t *capacity, size_t size, Py_ssize_t wanted)
+{
+    return reserve_by(items, capacity, size, wanted, 2);
 }
 
 /* ``capacity`` hash slots, every one EMPTY; NULL when out of memory */

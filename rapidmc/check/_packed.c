@@ -77,8 +77,18 @@ typedef struct {
     int32_t id;         /* the value's id, -1 while not interned (numbers computed here) */
 } Value;
 
+#define DECODED 4       /* a narrow table's vectors read out at once, at most (``vt_read``) */
+
+/* ``reserve`` for a compact table's arrays (``compact``): grown by an eighth, not a half,
+ * so at most a ninth of their room is spare (a large block's growth moves no bytes: the C
+ * library remaps its pages) */
+static void *reserve_gently(void *items, Py_ssize_t *capacity, size_t size, Py_ssize_t wanted)
+{
+    return reserve_by(items, capacity, size, wanted, 8);
+}
+
 typedef struct {        /* a table of vectors of value ids, each stored once */
-    uint32_t *arena;
+    uint32_t *arena;    /* (``width`` bytes an item: 1 and 2 as uint8_t, uint16_t) */
     Py_ssize_t arena_length, arena_capacity;
     int64_t *offsets;   /* vector i: arena[offsets[i] .. offsets[i + 1]) */
     Py_ssize_t count, offsets_capacity;
@@ -86,6 +96,14 @@ typedef struct {        /* a table of vectors of value ids, each stored once */
     Py_ssize_t hashes_capacity;
     int32_t *slots;
     uint64_t mask;
+    /* a compact table's data segments (``compact``) keep each item in the fewest bytes
+     * that hold every id stored so far (1, 2 or 4), widened when one does not fit; such a
+     * table's vectors are read out into ``decoded`` buffers, in turn (``vt_read``), each
+     * room for the longest vector */
+    int width;
+    uint32_t *decoded[DECODED];
+    Py_ssize_t longest;
+    int next_decoded;
 } VectorTable;
 
 typedef struct {        /* one routine's compiled steps */
@@ -109,10 +127,11 @@ typedef struct {        /* resets of global data: one list, or one per pc of mai
  * in: a search's stored states (the table's own, or a ``StateSet``'s: one per search of a
  * check, ``new_states``), or the numbering of the reduction's cycle proviso (``places``) */
 typedef struct {
-    int64_t *keys;              /* by id */
+    int64_t *keys;              /* by id (``narrow``: uint32_t each, ``index_key``) */
     Py_ssize_t count, key_capacity;
     int32_t *slots;             /* the hash index (NULL: released, made again when asked) */
     uint64_t mask;
+    int narrow;                 /* keys in 4 bytes while they fit (``compact``) */
 } StateIndex;
 
 typedef struct {        /* compiled atoms of one valuation */
@@ -155,6 +174,8 @@ typedef struct {
      * this round that ``data`` does not hold, numbered SPARE | index */
     VectorTable spare;
     int sparing;
+    /* a distributed worker's table (``compact``): narrow state keys and data segments */
+    int compact;
     StateIndex states;
     /* contexts (by context id): the routine of the top frame (-1: none), whether the
      * step machine may run there */
@@ -260,6 +281,7 @@ static inline int same_items(const uint32_t *a, const uint32_t *b, Py_ssize_t le
 
 static int vt_init(VectorTable *table)
 {
+    table->width = 4;
     table->slots = new_slots(FIRST_CAPACITY);
     table->offsets = PyMem_Malloc(256 * sizeof(int64_t));
     if (table->slots == NULL || table->offsets == NULL) {
@@ -275,6 +297,8 @@ static int vt_init(VectorTable *table)
 
 static void vt_free(VectorTable *table)
 {
+    for (int i = 0; i < DECODED; i++)
+        PyMem_Free(table->decoded[i]);
     PyMem_Free(table->arena);
     PyMem_Free(table->offsets);
     PyMem_Free(table->slots);
@@ -285,6 +309,111 @@ static inline const uint32_t *vt_items(const VectorTable *table, int32_t id, Py_
 {
     *length = (Py_ssize_t)(table->offsets[id + 1] - table->offsets[id]);
     return table->arena + table->offsets[id];
+}
+
+static inline uint32_t vt_item_at(const VectorTable *table, int64_t at)
+{
+    switch (table->width) {
+    case 1: return ((const uint8_t *)table->arena)[at];
+    case 2: return ((const uint16_t *)table->arena)[at];
+    default: return table->arena[at];
+    }
+}
+
+/* the items of vector ``id`` of any width, as uint32_t: a table of width 4 hands out its
+ * arena, a narrow one the next of its ``decoded`` buffers (valid until DECODED more
+ * vectors are read out of it) */
+static const uint32_t *vt_read(VectorTable *table, int32_t id, Py_ssize_t *length)
+{
+    if (table->width == 4)
+        return vt_items(table, id, length);
+    int64_t from = table->offsets[id];
+    *length = (Py_ssize_t)(table->offsets[id + 1] - from);
+    uint32_t *out = table->decoded[table->next_decoded];
+    table->next_decoded = (table->next_decoded + 1) % DECODED;
+    for (Py_ssize_t i = 0; i < *length; i++)
+        out[i] = vt_item_at(table, from + i);
+    return out;
+}
+
+static int vt_same(const VectorTable *table, int32_t id, const uint32_t *items,
+                   Py_ssize_t length)
+{
+    int64_t from = table->offsets[id];
+    if ((Py_ssize_t)(table->offsets[id + 1] - from) != length)
+        return 0;
+    if (table->width == 4)
+        return same_items(table->arena + from, items, length);
+    for (Py_ssize_t i = 0; i < length; i++)
+        if (vt_item_at(table, from + i) != items[i])
+            return 0;
+    return 1;
+}
+
+/* the fewest bytes (1, 2, 4) an item takes to hold every one of ``items`` */
+static int width_for(const uint32_t *items, Py_ssize_t length)
+{
+    uint32_t largest = 0;
+    for (Py_ssize_t i = 0; i < length; i++)
+        largest |= items[i];
+    return largest < (1u << 8) ? 1 : largest < (1u << 16) ? 2 : 4;
+}
+
+/* room in each ``decoded`` buffer for a vector of ``length`` items (a narrow table); -1 */
+static int vt_room(VectorTable *table, Py_ssize_t length)
+{
+    if (table->width == 4 || length <= table->longest)
+        return 0;
+    for (int i = 0; i < DECODED; i++) {
+        uint32_t *grown = PyMem_Realloc(table->decoded[i], length * sizeof(uint32_t));
+        if (grown == NULL) {
+            PyErr_NoMemory();
+            return -1;
+        }
+        table->decoded[i] = grown;
+    }
+    table->longest = length;
+    return 0;
+}
+
+/* the table's items in ``width`` bytes each from now on (every stored one must fit); -1 */
+static int vt_set_width(VectorTable *table, int width)
+{
+    if (width == table->width)
+        return 0;
+    Py_ssize_t capacity = table->arena_capacity;
+    void *arena = PyMem_Malloc((capacity ? capacity : 1) * width);
+    if (arena == NULL) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    for (Py_ssize_t at = 0; at < table->arena_length; at++) {
+        uint32_t item = vt_item_at(table, at);
+        if (width == 1)
+            ((uint8_t *)arena)[at] = (uint8_t)item;
+        else if (width == 2)
+            ((uint16_t *)arena)[at] = (uint16_t)item;
+        else
+            ((uint32_t *)arena)[at] = item;
+    }
+    PyMem_Free(table->arena);
+    table->arena = arena;
+    table->width = width;
+    Py_ssize_t longest = 0;
+    for (Py_ssize_t id = 0; id < table->count; id++)
+        if (table->offsets[id + 1] - table->offsets[id] > longest)
+            longest = (Py_ssize_t)(table->offsets[id + 1] - table->offsets[id]);
+    table->longest = 0;
+    return vt_room(table, longest > 0 ? longest : 1);
+}
+
+/* a compact table: the items in the fewest bytes that hold them all (``width``); -1 */
+static int vt_narrow(VectorTable *table)
+{
+    if (table->width < 4)
+        return 0;
+    int width = width_for(table->arena, table->arena_length);
+    return width < 4 ? vt_set_width(table, width) : 0;
 }
 
 static int vt_grow(VectorTable *table)
@@ -315,12 +444,8 @@ static int32_t vt_probe(const VectorTable *table, const uint32_t *items, Py_ssiz
         int32_t id = table->slots[at];
         if (id == EMPTY)
             break;
-        if (table->hashes[id] == hash) {
-            Py_ssize_t stored_length;
-            const uint32_t *stored = vt_items(table, id, &stored_length);
-            if (stored_length == length && same_items(stored, items, length))
-                return id;
-        }
+        if (table->hashes[id] == hash && vt_same(table, id, items, length))
+            return id;
         at = (at + 1) & table->mask;
     }
     *position = at;
@@ -339,22 +464,37 @@ static int32_t vt_intern(VectorTable *table, const uint32_t *items, Py_ssize_t l
         PyErr_SetString(PyExc_OverflowError, "more than 2**31 distinct state parts");
         return -1;
     }
-    uint32_t *arena = reserve(table->arena, &table->arena_capacity, sizeof(uint32_t),
-                              table->arena_length + length + 1);
+    if (table->width < 4) {
+        int width = width_for(items, length);
+        if ((width > table->width && vt_set_width(table, width) < 0) ||
+                vt_room(table, length) < 0)
+            return -1;
+    }
+    void *(*grow)(void *, Py_ssize_t *, size_t, Py_ssize_t) =
+        table->width < 4 ? reserve_gently : reserve;
+    uint32_t *arena = grow(table->arena, &table->arena_capacity, table->width,
+                           table->arena_length + length + 1);
     if (arena == NULL)
         return -1;
     table->arena = arena;
-    int64_t *offsets = reserve(table->offsets, &table->offsets_capacity, sizeof(int64_t),
-                               table->count + 2);
+    int64_t *offsets = grow(table->offsets, &table->offsets_capacity, sizeof(int64_t),
+                            table->count + 2);
     if (offsets == NULL)
         return -1;
     table->offsets = offsets;
-    uint32_t *hashes = reserve(table->hashes, &table->hashes_capacity, sizeof(uint32_t),
-                               table->count + 1);
+    uint32_t *hashes = grow(table->hashes, &table->hashes_capacity, sizeof(uint32_t),
+                            table->count + 1);
     if (hashes == NULL)
         return -1;
     table->hashes = hashes;
-    memcpy(table->arena + table->arena_length, items, length * sizeof(uint32_t));
+    if (table->width == 4)
+        memcpy(table->arena + table->arena_length, items, length * sizeof(uint32_t));
+    else if (table->width == 2)
+        for (Py_ssize_t i = 0; i < length; i++)
+            ((uint16_t *)table->arena)[table->arena_length + i] = (uint16_t)items[i];
+    else
+        for (Py_ssize_t i = 0; i < length; i++)
+            ((uint8_t *)table->arena)[table->arena_length + i] = (uint8_t)items[i];
     table->arena_length += length;
     int32_t id = (int32_t)table->count++;
     table->offsets[id + 1] = table->arena_length;
@@ -394,7 +534,8 @@ static int vt_index(VectorTable *table)
 
 static Py_ssize_t vt_bytes(const VectorTable *table)
 {
-    return table->arena_capacity * sizeof(uint32_t) + table->offsets_capacity * sizeof(int64_t)
+    return table->arena_capacity * table->width + table->offsets_capacity * sizeof(int64_t)
+        + (table->width < 4 ? DECODED * table->longest * (Py_ssize_t)sizeof(uint32_t) : 0)
         + table->hashes_capacity * sizeof(uint32_t) +
         (table->slots != NULL ? (table->mask + 1) * sizeof(int32_t) : 0);
 }
@@ -741,6 +882,76 @@ static PyObject *value_object(PackedTable *self, int32_t id)
 
 /* ======================================================================== states */
 
+/* A compact table's state keys (``compact``) are 4 bytes while the frame id is below
+ * 2**(32 - NARROW_DATA_BITS) and the data id below 2**NARROW_DATA_BITS: a distributed
+ * worker's table then costs 4 bytes a state less (and a third of its keys' spare room
+ * less).  A key that does not fit widens the whole array to 8 bytes a key, once. */
+#define NARROW_DATA_BITS 24
+#define NARROW_DATA_MASK ((1u << NARROW_DATA_BITS) - 1)
+
+static inline int64_t index_key(const StateIndex *index, Py_ssize_t id)
+{
+    if (!index->narrow)
+        return index->keys[id];
+    uint32_t narrow = ((const uint32_t *)index->keys)[id];
+    return ((int64_t)(narrow >> NARROW_DATA_BITS) << 32) | (narrow & NARROW_DATA_MASK);
+}
+
+static inline int narrow_fits(int64_t key)
+{
+    return (uint64_t)key >> 32 < (1u << (32 - NARROW_DATA_BITS)) &&
+        ((uint64_t)key & 0xffffffffu) <= NARROW_DATA_MASK;
+}
+
+/* the index's keys in 8 bytes each from now on; -1 when out of memory */
+static int index_widen(StateIndex *index)
+{
+    if (!index->narrow)
+        return 0;
+    Py_ssize_t capacity = index->count;
+    int64_t *keys = PyMem_Realloc(index->keys, (capacity ? capacity : 1) * sizeof(int64_t));
+    if (keys == NULL) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    index->keys = keys;
+    index->key_capacity = capacity;
+    for (Py_ssize_t id = index->count - 1; id >= 0; id--) {     /* (from the end: in place) */
+        uint32_t narrow = ((const uint32_t *)keys)[id];
+        keys[id] = ((int64_t)(narrow >> NARROW_DATA_BITS) << 32) | (narrow & NARROW_DATA_MASK);
+    }
+    index->narrow = 0;
+    return 0;
+}
+
+/* the index's keys in 4 bytes each from now on where they all fit (``compact``); -1 */
+static int index_narrow(StateIndex *index)
+{
+    if (index->narrow)
+        return 0;
+    for (Py_ssize_t id = 0; id < index->count; id++)
+        if (!narrow_fits(index->keys[id]))
+            return 0;
+    uint32_t *narrow = (uint32_t *)index->keys;
+    for (Py_ssize_t id = 0; id < index->count; id++) {     /* (from the start: in place) */
+        int64_t key = index->keys[id];
+        narrow[id] = (uint32_t)((uint64_t)key >> 32) << NARROW_DATA_BITS |
+            (uint32_t)(key & NARROW_DATA_MASK);
+    }
+    index->key_capacity *= 2;           /* (the same bytes hold twice the keys) */
+    index->narrow = 1;
+    return 0;
+}
+
+static inline void index_set_key(StateIndex *index, Py_ssize_t id, int64_t key)
+{
+    if (index->narrow)
+        ((uint32_t *)index->keys)[id] = (uint32_t)((uint64_t)key >> 32) << NARROW_DATA_BITS |
+            (uint32_t)(key & NARROW_DATA_MASK);
+    else
+        index->keys[id] = key;
+}
+
 static int index_grow(StateIndex *index)
 {
     uint64_t capacity = (index->mask + 1) * 2;
@@ -748,7 +959,7 @@ static int index_grow(StateIndex *index)
     if (slots == NULL)
         return -1;
     for (Py_ssize_t id = 0; id < index->count; id++) {
-        uint64_t position = mix64((uint64_t)index->keys[id]) & (capacity - 1);
+        uint64_t position = mix64((uint64_t)index_key(index, id)) & (capacity - 1);
         while (slots[position] != EMPTY)
             position = (position + 1) & (capacity - 1);
         slots[position] = (int32_t)id;
@@ -795,7 +1006,7 @@ static Py_ssize_t index_intern(StateIndex *index, int64_t key, int add, int *is_
         int32_t id = index->slots[position];
         if (id == EMPTY)
             break;
-        if (index->keys[id] == key) {
+        if (index_key(index, id) == key) {
             *is_new = 0;
             return id;
         }
@@ -804,13 +1015,16 @@ static Py_ssize_t index_intern(StateIndex *index, int64_t key, int add, int *is_
     *is_new = 1;
     if (!add)
         return -1;
-    int64_t *keys = reserve(index->keys, &index->key_capacity, sizeof(int64_t),
-                            index->count + 1);
+    if (index->narrow && !narrow_fits(key) && index_widen(index) < 0)
+        return -2;
+    int64_t *keys = index->narrow ?
+        reserve_gently(index->keys, &index->key_capacity, sizeof(uint32_t), index->count + 1) :
+        reserve(index->keys, &index->key_capacity, sizeof(int64_t), index->count + 1);
     if (keys == NULL)
         return -2;
     index->keys = keys;
     Py_ssize_t id = index->count++;
-    index->keys[id] = key;
+    index_set_key(index, id, key);
     index->slots[position] = (int32_t)id;
     if ((uint64_t)index->count * 4 > (index->mask + 1) * 3 && index_grow(index) < 0)
         return -2;
@@ -878,11 +1092,10 @@ static int32_t data_intern(PackedTable *table, const uint32_t *items, Py_ssize_t
     return id < 0 ? -1 : (SPARE | id);
 }
 
-static inline const uint32_t *data_items(const PackedTable *table, int32_t id,
-                                         Py_ssize_t *length)
+static inline const uint32_t *data_items(PackedTable *table, int32_t id, Py_ssize_t *length)
 {
-    return id & SPARE ? vt_items(&table->spare, id & ~SPARE, length) :
-        vt_items(&table->data, id, length);
+    return id & SPARE ? vt_read(&table->spare, id & ~SPARE, length) :
+        vt_read(&table->data, id, length);
 }
 
 /* the data id ``id`` as ``data`` numbers it (a spare segment moved there); -1 */
@@ -891,7 +1104,7 @@ static int32_t settled_data(PackedTable *table, int32_t id)
     if (!(id & SPARE))
         return id;
     Py_ssize_t length;
-    const uint32_t *items = vt_items(&table->spare, id & ~SPARE, &length);
+    const uint32_t *items = vt_read(&table->spare, id & ~SPARE, &length);
     return vt_intern(&table->data, items, length);
 }
 
@@ -1730,7 +1943,7 @@ typedef struct {            /* a stored state's segments, as the tables hold the
 
 static void stored_state(PackedTable *table, Py_ssize_t id, Stored *stored)
 {
-    int64_t key = table->states.keys[id];
+    int64_t key = index_key(&table->states, id);
     stored->frame_id = (int32_t)(key >> 32);
     stored->data_id = (int32_t)(key & 0xffffffff);
     stored->frame = vt_items(&table->frames, stored->frame_id, &stored->frame_length);
@@ -2247,7 +2460,7 @@ static int probe_step(PackedTable *table, Scratch *scratch, const int32_t *info,
 {
     Py_ssize_t frame_length, data_length;
     const uint32_t *frame = vt_items(&table->frames, frame_id, &frame_length);
-    const uint32_t *data = vt_items(&table->data, data_id, &data_length);
+    const uint32_t *data = data_items(table, data_id, &data_length);
     uint32_t *source = reserve(scratch->probe_source, &scratch->probe_capacity,
                                sizeof(uint32_t), frame_length + data_length + 1);
     if (source == NULL)
@@ -2404,7 +2617,7 @@ static int all_tasks_step(PackedTable *table, Py_ssize_t id, Scratch *scratch,
 static int invisible_step(PackedTable *table, Scratch *scratch, Py_ssize_t id,
                           Py_ssize_t here, Py_ssize_t task, int32_t frame_id, int32_t data_id)
 {
-    int64_t key = table->states.keys[id];
+    int64_t key = index_key(&table->states, id);
     if (frame_id == (int32_t)(key >> 32) && data_id == (int32_t)(key & 0xffffffff))
         return 0;
     Py_ssize_t place = place_of(table, frame_id, data_id, 0);
@@ -2661,7 +2874,7 @@ static Py_ssize_t row_place(PackedTable *table, Py_ssize_t id)
 {
     if (!table->reduced)
         return -1;
-    int64_t key = table->states.keys[id];
+    int64_t key = index_key(&table->states, id);
     return place_of(table, (int32_t)(key >> 32), (int32_t)(key & 0xffffffff), 0);
 }
 
@@ -2730,7 +2943,7 @@ static int tasks_step_anew(PackedTable *table, Py_ssize_t id, Scratch *scratch,
 static int machine_valuation(PackedTable *table, Py_ssize_t index, Py_ssize_t id,
                              Scratch *scratch, uint64_t *bits)
 {
-    int64_t key = table->states.keys[id];
+    int64_t key = index_key(&table->states, id);
     Py_ssize_t frame_length, data_length;
     const uint32_t *frame = vt_items(&table->frames, (int32_t)(key >> 32), &frame_length);
     const uint32_t *data = data_items(table, (int32_t)(key & 0xffffffff), &data_length);
@@ -3063,7 +3276,7 @@ static PyObject *PackedTable_vectors(PackedTable *self, PyObject *argument)
         PyErr_SetString(PyExc_IndexError, "no such state id");
         return NULL;
     }
-    int64_t key = self->states.keys[id];
+    int64_t key = index_key(&self->states, id);
     return parts_of(self, (int32_t)(key >> 32), (int32_t)(key & 0xffffffff));
 }
 
@@ -3075,7 +3288,7 @@ static PyObject *PackedTable_key(PackedTable *self, PyObject *argument)
         return NULL;
     if (id < 0 || id >= self->states.count)
         return PyErr_Format(PyExc_IndexError, "no such state id");
-    int64_t key = self->states.keys[id];
+    int64_t key = index_key(&self->states, id);
     int32_t frame = (int32_t)(key >> 32);
     return Py_BuildValue("(iiI)", frame, (int32_t)(key & 0xffffffff),
                          self->frames.arena[self->frames.offsets[frame]]);
@@ -3671,7 +3884,7 @@ static int keyset_add(KeySet *set, uint64_t key)
 static int watch_says(PackedTable *table, PyObject *watch, Py_ssize_t id, int by_machine,
                       const Successors *found)
 {
-    int64_t key = table->states.keys[id];
+    int64_t key = index_key(&table->states, id);
     int32_t frame = (int32_t)(key >> 32), data = (int32_t)(key & 0xffffffff);
     if (by_machine && !(table->context_runs[table->frames.arena[table->frames.offsets[frame]]] &
                         CONTEXT_ENDED_TASK)) {
@@ -3727,7 +3940,7 @@ static PyObject *PackedTable_expand_keys(PackedTable *self, PyObject *args)
         goto done;
     for (Py_ssize_t id = first; id < last; id++) {
         if (failed) {
-            int32_t frame = (int32_t)(self->states.keys[id] >> 32);
+            int32_t frame = (int32_t)(index_key(&self->states, id) >> 32);
             if (self->context_runs[self->frames.arena[self->frames.offsets[frame]]] &
                     CONTEXT_FAILED) {
                 failed_at = id;
@@ -3840,14 +4053,29 @@ static PyObject *PackedTable_clear_spare(PackedTable *self, PyObject *unused)
         Py_RETURN_NONE;
     vt_free(&self->spare);
     memset(&self->spare, 0, sizeof(VectorTable));
-    if (vt_init(&self->spare) < 0)
+    if (vt_init(&self->spare) < 0 || (self->compact && vt_set_width(&self->spare, 1) < 0))
+        return NULL;
+    Py_RETURN_NONE;
+}
+
+/* ``compact()``: from now on the table keeps its states' keys in 4 bytes and its data
+ * segments' items in 1 or 2 bytes while they fit (``index_key``, ``VectorTable.width``),
+ * the sets of later searches too: about a third less memory a state for a few more
+ * instructions a read (a distributed worker's table, check/distributed/partition.py) */
+static PyObject *PackedTable_compact(PackedTable *self, PyObject *unused)
+{
+    self->compact = 1;
+    if (index_narrow(&self->states) < 0 ||
+            (self->selected != NULL && index_narrow(&self->own) < 0) ||
+            vt_narrow(&self->data) < 0 || vt_narrow(&self->spare) < 0)
         return NULL;
     Py_RETURN_NONE;
 }
 
 static PyObject *PackedTable_native_bytes(PackedTable *self, PyObject *unused)
 {
-    Py_ssize_t bytes = self->states.key_capacity * sizeof(int64_t) +
+    Py_ssize_t bytes = self->states.key_capacity *
+        (self->states.narrow ? sizeof(uint32_t) : sizeof(int64_t)) +
         (self->states.slots != NULL ? (self->states.mask + 1) * sizeof(int32_t) : 0)
         + vt_bytes(&self->frames) + vt_bytes(&self->data) + vt_bytes(&self->spare)
         + self->value_capacity * (1 + sizeof(double) + sizeof(PyObject *))
@@ -3998,6 +4226,7 @@ static PyObject *PackedTable_new_states(PackedTable *self, PyObject *unused)
         Py_DECREF(set);
         return PyErr_NoMemory();
     }
+    set->index.narrow = self->compact;
     for (Py_ssize_t r = 0; r < self->routine_count; r++)
         if (self->routines[r].executed != NULL)
             memset(self->routines[r].executed, 0, self->routines[r].length + 1);
@@ -4091,6 +4320,8 @@ static PyMethodDef PackedTable_methods[] = {
      "native_bytes() -> int: bytes of the native arrays"},
     {"set_tasks", (PyCFunction)PackedTable_set_tasks, METH_O,
      "set_tasks(count): the program's tasks (several: contexts say where each one's frame is)"},
+    {"compact", (PyCFunction)PackedTable_compact, METH_NOARGS,
+     "compact(): narrow state keys and data segments from now on (a distributed worker's)"},
     {"counts", (PyCFunction)PackedTable_counts, METH_NOARGS,
      "counts() -> dict: states, segments, values and steps taken by each engine"},
     {NULL}
@@ -4375,7 +4606,7 @@ static int observe(PackedSearch *search, Py_ssize_t frontier, int by_machine)
     if (search->python_observe == Py_None)
         return 0;
     PackedTable *table = search->table;
-    int64_t key = table->states.keys[frontier];
+    int64_t key = index_key(&table->states, frontier);
     int32_t frame = (int32_t)(key >> 32), data = (int32_t)(key & 0xffffffff);
     /* (a task at a barrier waiting for one that has ended is stuck whatever the others
      * do: Python's stuck check says so) */

@@ -8,7 +8,7 @@ offers one, else the compiled one where built), each
 with the link to the state it was first reached from, which may live in another partition.
 
 A link is one number (``codec.link``): ``sender << ID_BITS | id`` (the sender partition and
-the parent's id there), -1 for an initial state; ``Links`` keeps them in 4 bytes a state.
+the parent's id there), -1 for an initial state; ``Links`` keeps them in a file.
 
 The search runs in breadth-first levels, each in one or more rounds.  A round is one call
 of ``step``: ``receive`` stores the states the other partitions sent in the round before
@@ -41,6 +41,7 @@ from __future__ import annotations
 import contextlib
 import os
 import pickle
+import sys
 import time
 from array import array
 from typing import Callable, Hashable, Optional, Sequence
@@ -71,17 +72,26 @@ def decode_batch(data: bytes):
 class Links:
     """Each stored state's link to its parent (the sender partition and the parent's id
     there, ``link``), by state id, as one number ``1 + parent id * partitions + sender``
-    (0: an initial state): 4 bytes a state while the numbers fit in 32 bits (a partition's
-    ids below 2**32 / partitions), widened to 8 past that.  (``link``'s own form, the
-    sender in the high bits, would need 8 bytes from the start: half a worker's memory
-    per state beside its table.)"""
+    (0: an initial state), kept in a file, not in memory.  A link is written once, when
+    its state is stored, and read back only to rebuild a counterexample (``step_back``,
+    a few reads a step), so a worker's memory holds just the last ``WRITE_EVERY`` links
+    not yet written; the file (8 bytes a link, in the worker's temporary directory,
+    ``tempfile``: removed when the search's links go) holds the rest.  In memory they
+    cost 4 bytes a state, a fifth of a worker's compact table (``_packed.c``'s
+    ``compact``): counters N=10 on 2 workers, 21 MB of each worker's peak (docs/distributed.md).
+    (``link``'s own form, the sender in the high bits, would not fit in fewer bytes.)"""
+
+    WRITE_EVERY = 1 << 16          # links gathered in memory before they go to the file
 
     def __init__(self, count: int):
         self.count = count
-        self.items = array("I")
+        self.items = array("Q")    # the links not written yet, from id ``written`` on
+        self.written = 0
+        self.file = None           # (made at the first write)
 
     def initial(self) -> None:
         self.items.append(0)
+        self._write()
 
     def extend(self, sender: int, stored: tuple) -> None:
         """The links of the states a codec's ``store`` found new (``stored``: their ids,
@@ -90,28 +100,49 @@ class Links:
         count, first = self.count, sender + 1
         if hasattr(fields, "dtype"):              # (numpy arrays: the codecs' own)
             numbers = fields[new].astype("uint64") * count + first
-            if len(numbers) and self.items.typecode == "I" and int(numbers.max()) >> 32:
-                self.items = array("Q", self.items)
-            self.items.frombytes(numbers.astype(
-                "uint32" if self.items.typecode == "I" else "uint64").tobytes())
+            self.items.frombytes(numbers.astype("uint64").tobytes())
+        else:
+            self.items.extend(field * count + first for field, fresh in zip(fields, new)
+                              if fresh)
+        self._write()
+
+    def _write(self, always: bool = False) -> None:
+        """The links gathered in memory appended to the file (``always``: however few)."""
+        if len(self.items) < self.WRITE_EVERY and not (always and self.items):
             return
-        numbers = [field * count + first for field, fresh in zip(fields, new) if fresh]
-        if numbers and self.items.typecode == "I" and max(numbers) >> 32:
-            self.items = array("Q", self.items)
-        self.items.extend(numbers)
+        if self.file is None:
+            import tempfile
+            self.file = tempfile.TemporaryFile(prefix="rapidmc-links-")
+        self.file.seek(0, os.SEEK_END)
+        self.file.write(self.items.tobytes())
+        self.file.flush()
+        self.written += len(self.items)
+        self.items = array("Q")
 
     def __getitem__(self, state_id: int) -> int:
-        number = self.items[state_id]
+        if state_id >= self.written:
+            number = self.items[state_id - self.written]
+        else:
+            number = int.from_bytes(os.pread(self.file.fileno(), 8, 8 * state_id),
+                                    sys.byteorder)
         if not number:
             return NO_PARENT
         parent, sender = divmod(number - 1, self.count)
         return link(sender, parent)
 
     def __len__(self) -> int:
-        return len(self.items)
+        return self.written + len(self.items)
 
     def memory_bytes(self) -> int:
         return len(self.items) * self.items.itemsize
+
+    def file_bytes(self) -> int:
+        return 8 * self.written
+
+    def close(self) -> None:
+        if self.file is not None:
+            self.file.close()
+            self.file = None
 
 
 class SystemSource:
@@ -164,9 +195,13 @@ class Partition:
         self.watch = getattr(system, watch) if watch is not None else None
         self.watched = False                   # whether it ever said True
         self.table = state_table(system, packed=True)
+        compact = getattr(self.table, "compact", None)
+        if compact is not None:               # (a packed table: ``_packed.c``'s ``compact``)
+            compact()
         self.codec = codec_for(self.table, index, count, by_data)
         self.parent = Links(count)
         self.expanded = 0                      # states before this id have been expanded
+        self.trimmed = 0                       # ... when the C heap was last trimmed
         self.level_end = 0                     # the current level: ids below this one
         self.own = None                        # the batch the last round kept for this one
         self.transitions = 0
@@ -247,6 +282,9 @@ class Partition:
             if freeze or began > self.frozen_at + FREEZE_EVERY:
                 freeze_survivors()
                 self.frozen_at = time.monotonic()
+            if self.expanded - self.trimmed >= ROUND:
+                self.trimmed = self.expanded
+                _heap_trimmed()
             self.step_seconds += time.process_time() - started
             self.step_wall += time.monotonic() - began
             self._note_memory()
@@ -484,6 +522,8 @@ class Partition:
     def clear(self) -> None:
         """Let the search's states go (the system stays, for the check's next search)."""
         self.finish()
+        if getattr(self, "parent", None) is not None:
+            self.parent.close()
         self.__dict__.clear()
         self.__init__()
 
@@ -493,6 +533,7 @@ class Partition:
         table = self.table
         return {"states": len(table), "transitions": self.transitions, "sent": self.sent,
                 "bytes": table.memory_bytes() + self.parent.memory_bytes(),
+                "link_file_bytes": self.parent.file_bytes(),
                 "engine": engine_of(table),
                 "cpu_seconds": time.process_time() - self.cpu_started,
                 "step_seconds": self.step_seconds, "sent_bytes": self.sent_bytes,
@@ -502,6 +543,34 @@ class Partition:
                 "peak_shared_kb": self.peak_shared_kb,
                 "max_rss_kb": _peak_rss_kb(), "pid": os.getpid(),
                 "rounds": self.levels.rounds + 1 if getattr(self, "levels", None) else 0}
+
+
+def _free_heap():
+    """The C library's ``malloc_trim(0)`` where it has one (glibc), else a call that does
+    nothing."""
+    import ctypes
+    import ctypes.util
+    try:
+        return ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6").malloc_trim
+    except (OSError, AttributeError):
+        return lambda _pad: 0
+
+
+_MALLOC_TRIM = None
+
+
+def _heap_trimmed() -> None:
+    """Hand the C heap's free pages back to the system, after calls that stepped a round's
+    worth of states (``Partition._timed``).  A worker's threads share one heap
+    (``search.WORKER_ENVIRONMENT``), where a round's batches, numpy's arrays and Ray's
+    buffers come and go beside the table's growing arrays; the pages they leave free stay
+    in the worker's RSS until trimmed: at counters N=10, 10-19 MB of each worker's peak
+    (docs/distributed.md).  About 0.5 ms a trim; narrow levels, whose rounds step a few
+    hundred states, trim once in dozens of rounds."""
+    global _MALLOC_TRIM
+    if _MALLOC_TRIM is None:
+        _MALLOC_TRIM = _free_heap()
+    _MALLOC_TRIM(0)
 
 
 def _peak_rss_kb() -> int:
