@@ -50,3 +50,11 @@ def verdicts_and_states(argv, *, cwd: Path | str | None = None) -> dict:
     document = json.loads(run_cli(["check", *argv, "--format", "json", "--quiet"], cwd=cwd).out)
     return {p["name"]: (p["verdict"], p["stats"]["model_states"])
             for p in document["properties"]}
+
+
+def differing_verdicts(found: dict, exact: dict) -> list:
+    """The properties (of two ``verdicts_and_states`` results) whose verdicts differ where
+    the ``exact`` search ended: a reduction's differential test expects none."""
+    assert found.keys() == exact.keys(), (found.keys(), exact.keys())
+    return [name for name, (verdict, _) in exact.items()
+            if verdict != "UNKNOWN" and found[name][0] != verdict]
