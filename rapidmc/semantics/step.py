@@ -192,7 +192,7 @@ def _driven_successors(program: Program, state: State, config: CheckConfig) -> l
         staged = staged_successors(program, state, config)
         if staged is not None:
             return staged
-    return _general_successors(program, state, config)
+    return general_driver_successors(program, state, config)
 
 
 def general_successors(program: Program, state: State, config: CheckConfig) -> list[Transition]:
@@ -200,7 +200,7 @@ def general_successors(program: Program, state: State, config: CheckConfig) -> l
     the reference ``plain_successors`` must agree with."""
     if state.status != RUNNING:
         return final_or_stopped(state)
-    return _at_rest(program, state, config, _general_successors)
+    return _at_rest(program, state, config, general_driver_successors)
 
 
 def _at_rest(program: Program, state: State, config: CheckConfig, driver) -> list:
@@ -213,7 +213,9 @@ def _at_rest(program: Program, state: State, config: CheckConfig, driver) -> lis
     return found
 
 
-def _general_successors(program: Program, state: State, config: CheckConfig) -> list:
+def general_driver_successors(program: Program, state: State, config: CheckConfig) -> list:
+    """``general_successors`` before stored inputs no interrupt watches are put at rest:
+    what the staged driver must give alike."""
     if config.free_inputs and not _inputs_matter(program, state):
         return edges_at_rest(_successors_inputs_after(program, state, config),
                              config.edge_inputs)
