@@ -64,6 +64,7 @@ from .ltl.syntax import Not
 from .model import reduction
 from .model.fairness import TaskFairness, assumes_fairness, fair_or_plain_search
 from .model.edge_inputs import edge_inputs, realizable, served_edges
+from .semantics.resting_inputs import resting_inputs
 from .model.inputs import free_input_domains, observed_inputs
 from .model.robot_tracking import robot_untracked
 from .model.waiting import waits_forever
@@ -274,6 +275,7 @@ def _check_config(program: Program, atoms: AtomCompiler, options: CheckOptions,
     if options.edge_inputs:
         config.edge_inputs = dict(facts.edges)
         config.served_edges = facts.served_edges
+        config.resting_inputs = resting_inputs(config, atoms)
     config.time_check = time_check       # the running search's time limit, inside a step
     config.robot_untracked = not options.track_robot and facts.robot_untracked
     if options.socket_messages:

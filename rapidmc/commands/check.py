@@ -130,7 +130,8 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--exact-edges", action="store_true",
                         help="store the value of every input an interrupt watches (default: an "
                              "input that only interrupts watch may give an edge at any step, "
-                             "and the verdicts say so under assumes:)")
+                             "and the verdicts say so under assumes:; an input no active "
+                             "interrupt watches is not stored)")
     parser.add_argument("--no-fairness", action="store_true",
                         help="with several tasks: also search runs in which a task that could "
                              "go on never runs again (default: weak fairness between tasks; "

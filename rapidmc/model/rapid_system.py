@@ -36,6 +36,7 @@ from ..semantics.step import (OPERATOR_CHOICE, CheckConfig, ScriptChooser, initi
 from ..semantics.fused_step import plain_successor_states, stop_pcs, written_globals
 from ..semantics.values import format_num, format_value
 from ..semantics.errors import errno_name, error_detail
+from ..semantics.resting_inputs import AT_REST
 from .reduction import NO_PLAN, Plan
 from .state_keys import StateKeys
 from .task_atoms import task_qualifier
@@ -46,6 +47,7 @@ from .reduction.partial_order import PartialOrder, StatePlaces
 
 
 _new_tuple = tuple.__new__
+RESTING_TEXT = "0 or 1 (no interrupt watches it: not stored)"
 
 
 class RapidSystem:
@@ -353,6 +355,7 @@ class RapidDescriber:
         lazy = config.lazy_inputs if config is not None else {}
         # inputs chosen when read are not stored: their values show in the step's inputs
         self.signals = [s for s in program.signals if s.index not in lazy]
+        self.resting = config.resting_inputs if config is not None else {}
         self.several_tasks = len(program.task_names) > 1
         self.globals = [(g.slot, self._qualified(g), g.type) for g in program.globals
                         if g.namespace == PROGRAM_NAMESPACE and _shown(g.type)]
@@ -468,7 +471,10 @@ class RapidDescriber:
                     if rapid_type is None else self._signal_text(value, rapid_type) or \
                     value_text(value, rapid_type)
         for signal in self.signals:
-            view[f"signal {signal.name}"] = format_num(state.io[signal.index])
+            value = state.io[signal.index]
+            # (a stored input no interrupt watches: ``semantics.resting_inputs``)
+            view[f"signal {signal.name}"] = RESTING_TEXT if value == AT_REST and \
+                signal.index in self.resting else format_num(value)
         if self.program.robot_per_task:        # each motion task's robot (semantics.robots)
             for number in self.program.motion_tasks:
                 name = self._task_name(task_namespace(number))

@@ -123,6 +123,9 @@ class CheckConfig:
         # those of them one task's interrupts watch: an edge starts its TRAP in its own
         # step or is dropped (``edge_traps``)
         self.served_edges: tuple = ()
+        # stored digital inputs put at rest where no active interrupt watches them: index ->
+        # name (``resting_inputs``); empty: every value stored, exact
+        self.resting_inputs: dict = {}
         # called between two runs of one step with different choices: the search engine's
         # ``check.budget.time_check`` raises there once the running search's time is up,
         # so a step with thousands of successors cannot run far past the time limit
@@ -170,6 +173,7 @@ class CheckConfig:
         probe uses it when the inputs' changes at every step make its search too broad."""
         held = copy.copy(self)
         held.free_inputs = ()
+        held.resting_inputs = {}
         held.input_valuations = ((),)
         held.input_assignments = ((),)
         held.input_labels = ((),)

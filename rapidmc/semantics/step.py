@@ -29,6 +29,7 @@ from .machine import Machine
 from .program import Program
 from .state import ENDED, FAILED, RUNNING, STOPPED, Frame, Interrupts, State, Transition
 from .lazy_inputs import InputView
+from .resting_inputs import at_rest
 from .robots import NoTaskRobot, initial_robots, task_robot, with_task_robot
 from .choosers import Chooser, CheckConfig, ScriptChooser  # noqa: F401 (the step's interface)
 from .fused_step import fused_successors
@@ -178,6 +179,12 @@ def successors(program: Program, state: State, config: CheckConfig) -> list[Tran
     """Every transition from ``state`` (check mode), in a deterministic order."""
     if state.status != RUNNING:
         return final_or_stopped(state)
+    return _at_rest(program, state, config, _driven_successors)
+
+
+def _driven_successors(program: Program, state: State, config: CheckConfig) -> list:
+    """``successors`` by the fastest driver that takes the state, before stored inputs
+    no interrupt watches are put at rest (``resting_inputs``)."""
     if is_plain(program, state, config):
         fused = fused_successors(program, state, config)
         return fused if fused is not None else plain_successors(program, state, config)
@@ -185,7 +192,7 @@ def successors(program: Program, state: State, config: CheckConfig) -> list[Tran
         staged = staged_successors(program, state, config)
         if staged is not None:
             return staged
-    return general_successors(program, state, config)
+    return general_driver_successors(program, state, config)
 
 
 def general_successors(program: Program, state: State, config: CheckConfig) -> list[Transition]:
@@ -193,6 +200,22 @@ def general_successors(program: Program, state: State, config: CheckConfig) -> l
     the reference ``plain_successors`` must agree with."""
     if state.status != RUNNING:
         return final_or_stopped(state)
+    return _at_rest(program, state, config, general_driver_successors)
+
+
+def _at_rest(program: Program, state: State, config: CheckConfig, driver) -> list:
+    """``driver``'s transitions of ``state`` with the stored inputs no active interrupt
+    watches put at rest (``resting_inputs``)."""
+    found = driver(program, state, config)
+    if config.resting_inputs:
+        found = at_rest(state, found, config.resting_inputs,
+                        lambda exact: driver(program, exact, config))
+    return found
+
+
+def general_driver_successors(program: Program, state: State, config: CheckConfig) -> list:
+    """``general_successors`` before stored inputs no interrupt watches are put at rest:
+    what the staged driver must give alike."""
     if config.free_inputs and not _inputs_matter(program, state):
         return edges_at_rest(_successors_inputs_after(program, state, config),
                              config.edge_inputs)
