@@ -91,7 +91,7 @@ def _new_table(system) -> Optional["PackedStateTable"]:
     config = system.config
     if config.free_inputs or system.program.environment_react is not None:
         return None
-    table = PackedStateTable(system)
+    table = (TaskStateTable if tasks > 1 else PackedStateTable)(system)
     return table if table.compiled_routines else None
 
 
@@ -191,9 +191,6 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         self.tasks = len(self.program.task_names)
         if self.tasks > 1:
             self.set_tasks(self.tasks)
-            self._vectors = self._task_vectors
-            self._state = self._task_state
-            self._new_context = self._new_task_context
         self._stepping: tuple = (-1, None)      # (id, state) of python_task_successors
         self._task_steps: dict = {}             # (frame, data, task, ample) -> _task_step's
         self._python_spans: list = []           # the lines its steps there ran
@@ -720,3 +717,14 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
             return self._last
         return self[state_id], [self._state(*self.parts(frame, part))
                                 for frame, part in zip(frames, data)]
+
+
+class TaskStateTable(PackedStateTable):
+    """The packed table of a program with several tasks: each task's top frame is in the
+    frame vector (``_task_vectors``).  A subclass rather than the table's own bound methods
+    in its attributes: those made each table a reference cycle, which only the collector's
+    rare full collections free (a coverage probe's table stayed, 100 MB each)."""
+    _vectors = PackedStateTable._task_vectors
+    _state = PackedStateTable._task_state
+    _new_context = PackedStateTable._new_task_context
+
