@@ -460,9 +460,13 @@ class RapidDescriber:
         stacks = (state.frames,) + state.tasks
         for frame in (frame for stack in stacks for frame in stack):
             routine = self.program.routines[frame.routine]
+            # a name several slots share means the FOR counter whose loop the frame is in
+            # (the raising statement's, in an ERROR handler), else the routine data
+            hidden = routine.hidden_slots(frame.error_pc if frame.mode and frame.error_pc >= 0
+                                           else frame.pc)
             for slot, (name, value) in enumerate(zip(routine.local_names, frame.locals)):
-                if name.startswith("<"):
-                    continue                       # FOR bounds, temporaries
+                if name.startswith("<") or slot in hidden:
+                    continue                       # FOR bounds, temporaries, shadowed names
                 if isinstance(value, tuple) and len(value) == 3 and isinstance(value[0], int) \
                         and isinstance(value[2], tuple):
                     continue                       # a reference parameter

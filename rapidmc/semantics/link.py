@@ -614,6 +614,7 @@ class Linker:
         scope = Scope(module_scope)
         routine.scope = scope
         routine.local_names = []
+        routine.loop_counters = []
         routine.initial = []
         routine.parameters = ()
         if decl.kind == "FUNC":

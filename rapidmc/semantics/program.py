@@ -98,6 +98,34 @@ class Routine:
     ast: Any = None
     initial: list = field(default_factory=list)       # initial value of each local slot
     initial_locals: tuple = ()                        # frozen copy of ``initial`` used by calls
+    loop_counters: list = field(default_factory=list)  # (slot, first pc, last pc) of each FOR
+
+    def hidden_slots(self, pc: int) -> frozenset:
+        """Local slots whose names other slots of this routine share, hidden at ``pc``.
+
+        A FOR counter is a slot of its own and may share its name with routine data or with
+        the counters of the routine's other FOR loops (``FOR i`` in three CASEs).  At ``pc``
+        the name means the innermost FOR whose code holds ``pc``, else the routine data of
+        that name, else the first FOR counter; the other slots of the name are hidden.
+        """
+        names: dict[str, list[int]] = {}
+        for slot, name in enumerate(self.local_names):
+            if not name.startswith("<"):
+                names.setdefault(name.upper(), []).append(slot)
+        counters = {slot: (first, last) for slot, first, last in self.loop_counters}
+        hidden = set()
+        for slots in names.values():
+            if len(slots) < 2:
+                continue
+            holding = [slot for slot in slots if slot in counters
+                       and counters[slot][0] <= pc <= counters[slot][1]]
+            declared = [slot for slot in slots if slot not in counters]
+            if holding:
+                shown = max(holding, key=lambda slot: counters[slot][0])
+            else:
+                shown = (declared or slots)[0]
+            hidden.update(slot for slot in slots if slot != shown)
+        return frozenset(hidden)
 
     def add_local(self, name: str, initial: Any) -> int:
         """A new frame slot (parameter, routine data, FOR variable or temporary)."""

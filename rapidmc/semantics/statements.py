@@ -534,6 +534,7 @@ class RoutineCompiler:
         stop = compiler.value(statement.stop, NUM)
         step = compiler.value(statement.step, NUM) if statement.step is not None else None
         slot = self.routine.new_temporary(3, statement.variable.text)
+        first_pc = len(self.code)
         init = self.emit(ForInit(statement.span, slot, start.fn, stop.fn,
                                  step.fn if step else None))
         bounds = (start, stop) if step is None else (start, stop, step)
@@ -556,6 +557,7 @@ class RoutineCompiler:
         self.emit(next_instruction, next_label=follow)
         next_instruction.body = body
         next_instruction.exit = follow
+        self.routine.loop_counters.append((slot, first_pc, len(self.code) - 1))
         self.end_block(follow)
 
     def _Test(self, statement: ast.Test, follow: Label) -> None:
