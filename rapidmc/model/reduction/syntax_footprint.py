@@ -25,8 +25,11 @@ found by its span:
 * a predefined procedure that changes nothing rapidmc observes (``NO_EFFECT`` in the
   registry: ``AccSet``, ``ErrWrite``, ``ClearPath`` ...), the socket instructions
   (``library.sockets``: each reads and writes only the data passed to it, chooses
-  among outcomes the check's options fix, and writes the transition's output) and the
-  rawbytes instructions (``library.raw_data``, the data passed to them only) are
+  among outcomes the check's options fix, and writes the transition's output), the
+  rawbytes instructions (``library.raw_data``, the data passed to them only) and the file
+  instructions (``library.files``: Open, Close, Write ... read and write only the
+  ``iodev`` passed and write the transition's output; files are the environment, and no
+  step of another task reads what they write) are
   independent when every argument passed by reference is the task's own (as an
   assignment's target) and every other reads only such data;
   ``SocketGetStatus`` reads only the socket passed to it.  The clock instructions
@@ -46,7 +49,8 @@ task moves (``cell_uses``: ``DInput``, ``CRobT(\\TaskName:=...)`` ...), through
 operators, indices, components, aggregates and predefined functions that are not
 "special" (those compute from their arguments alone: Abs, NumToStr, StrPart,
 Offs ...) or are controller readings the check fixes (GetMotorTorque, MaxRobSpeed:
-``arguments.fixed``, the call compiled to its value), and user functions, which run
+``arguments.fixed``, the call compiled to its value; the fixed date and time: CDate, CTime,
+GetTime), and user functions, which run
 before the instruction (hoisted: it reads their result from its frame, and the call
 is judged as above).  Signal data bound at run time reads any signal.  Anything else
 is not.  ``Set``, ``Reset``, ``SetDO`` ... (no ``\\SDelay``) of a configured signal
@@ -103,7 +107,11 @@ _QUIET_PROCEDURES = frozenset({"TPWRITE", "WAITTIME"})
 _ARGUMENTS_ONLY = frozenset({"SOCKETCREATE", "SOCKETBIND", "SOCKETLISTEN", "SOCKETCLOSE",
                              "SOCKETACCEPT", "SOCKETCONNECT", "SOCKETSEND", "SOCKETRECEIVE",
                              "CLEARRAWBYTES", "COPYRAWBYTES", "PACKRAWBYTES",
-                             "UNPACKRAWBYTES", "CLKRESET", "CLKSTART", "CLKSTOP"})
+                             "UNPACKRAWBYTES", "CLKRESET", "CLKSTART", "CLKSTOP",
+                             "OPEN", "CLOSE", "WRITE", "WRITEBIN", "WRITESTRBIN",
+                             "WRITERAWBYTES", "CLEARIOBUFF", "REWIND"})
+# predefined functions giving the controller's one fixed date and time (``library.system``)
+_FIXED_CLOCK = frozenset({"CDATE", "CTIME", "GETTIME"})
 # predefined functions that read only the data passed to them, by reference too
 # (``Present`` reads whether an optional parameter of the task's own frame is given)
 # (the signal readers read the signal passed: ``SyntaxReads.allowed`` judges it)
@@ -489,10 +497,13 @@ def outside_free(data) -> bool:
 
 def _pure_function(call, lookup) -> bool:
     """A predefined function that computes from its arguments alone (not "special", none
-    passed by reference), or a controller reading the check fixes (``arguments.fixed``:
-    GetMotorTorque, MaxRobSpeed; the call compiles to its constant value)."""
+    passed by reference), a controller reading the check fixes (``arguments.fixed``:
+    GetMotorTorque, MaxRobSpeed; the call compiles to its constant value), or the fixed
+    date and time (CDate, CTime, GetTime: ``library.system``)."""
     if lookup(call.name.key) is not None:
         return False                     # (data of that name: not a function)
+    if call.name.key in _FIXED_CLOCK:
+        return True                      # (a constant: the check's fixed date and time)
     entry = registry.lookup_function(call.name.key)
     return entry is not None and \
         (not entry.special or hasattr(entry.factory, "reading")) and \

@@ -5,8 +5,8 @@ MODULE Partner
   VAR num steps := 0;
   PROC main()
     steps := steps + 1;                  ! VISIBLE
-    Open "HOME:" \File:="log.txt", log \Write;  ! SHARED
-    Write log, "step";                   ! SHARED
+    Open "HOME:" \File:="log.txt", log \Write;  ! LOCAL
+    Write log, "step";                   ! LOCAL
     WaitSyncTask ready, both;            ! SHARED
     TPReadNum steps, "Steps?";           ! SHARED
   ENDPROC                                ! SHARED
