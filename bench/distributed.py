@@ -43,8 +43,9 @@ after numpy, the search's modules, the counters N=10 model and its table.
 Each worker's idle time (wall seconds outside its calls) and how long none, one or both
 workers were inside a call are printed under each model.
 
-``--split``: without Ray, two partitions driven in one process (``partition.search_here``):
-their CPU seconds together against one process's, and the bytes they sent per state.
+``--split``: without Ray, two partitions driven in one process (``partition.search_here``,
+eager with ``--eager``): their CPU seconds together against one process's, and the bytes
+they sent per state.
 
 ``--pair``: what two busy cores cost per unit of work on this machine, without Ray or
 partitions: each model's one-process search alone, then two of the same search at once (two
@@ -228,7 +229,7 @@ def measure_split(name: str, modulo: int) -> dict:
     cpu = {"single": time.process_time() - started}
     system = model_of(name, modulo).system      # (afresh: the model's caches are warm)
     started = time.process_time()
-    parts, _, _ = search_here(system, 2)
+    parts, _, _ = search_here(system, 2, eager=EAGER)
     cpu["split"] = time.process_time() - started
     states = sum(len(part.table) for part in parts)
     assert states == single.stats.product_states
@@ -286,6 +287,7 @@ def measure(name: str, mode: str, modulo: int, workers: int) -> dict:
             "worker_link_file": [f["link_file_bytes"] for f in figures],
             "worker_cpu": [f["cpu_seconds"] for f in figures],
             "worker_step_cpu": [f["step_seconds"] for f in figures],
+            "worker_step_thread": [f["step_thread"] for f in figures],
             "worker_idle": [f["wall_seconds"] - f["step_wall"] for f in figures],
             "worker_calls": [f["calls"] for f in figures],
             "stepping": stepping_together([f["spans"] for f in figures]),
@@ -523,8 +525,10 @@ def print_safety(names, modulo: int, workers: int) -> None:
         print(f"{'':16} idle (wall seconds outside the steps, from the start of the search): "
               f"{_each(spread['worker_idle'], '.2f')} s of {spread['seconds']:.2f} s; "
               f"{spread['levels']} rounds; calls served {_each(spread['worker_calls'], 'd')}; "
-              f"workers stepping (none/one/both...) {_each(spread['stepping'], '.2f')} s",
-              flush=True)
+              f"workers stepping (none/one/both...) {_each(spread['stepping'], '.2f')} s; "
+              f"CPU of the stepping thread in the calls "
+              f"{_each(spread['worker_step_thread'], '.2f')} s (the rest of a worker's: Ray's "
+              f"threads and Ray's calls)", flush=True)
         print(f"{'':16} worker memory: {_each([kb / 1024 for kb in spread['worker_start_rss_kb']], '.0f')}"
               f" MB at the start, peak {_each([kb / 1024 for kb in spread['worker_rss_kb']], '.0f')}"
               f" MB (anonymous and file pages read after calls, Ray's shared object store apart: "

@@ -523,3 +523,15 @@ def test_ltl_partitions_count_what_one_process_counts(name, engine):
     assert sum(len(part.edges) for part in parts) == one.stats.transitions
     assert all(len(part.keys) for part in parts)
     assert frozen and min(frozen) > 0 and gc.get_freeze_count() == 0
+
+
+def test_partition_reads_its_memory():
+    """A partition's figures carry its peak memory, read from /proc (Linux), and the CPU
+    its calls spent: the thread that stepped them at most the whole process's."""
+    if not Path("/proc/self/status").exists():
+        pytest.skip("no /proc here")
+    parts, _, _ = search_here(system_of("two tasks"), 2)
+    for part in parts:
+        figures = part.figures()
+        assert figures["peak_private_kb"] > 1024, figures
+        assert 0 < figures["step_thread"] <= figures["step_seconds"] + 0.01, figures

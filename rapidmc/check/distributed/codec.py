@@ -45,7 +45,7 @@ import hashlib
 import pickle
 import struct
 from array import array
-from itertools import chain
+from itertools import chain, compress
 from typing import Hashable, Sequence
 
 from pyrsistent import pvector
@@ -561,6 +561,9 @@ class NodeCodec:
         self.sent_nodes = [0] * count         # per owner: nodes handed over (ids below it)
         self.node_map: dict = {}              # per sender: its node id -> this table's (list)
         self.node_array: dict = {}            # ... the same as a numpy array
+        # whether the batch for itself stays in this process (``Partition``'s rounds keep
+        # it): then it is the keys themselves, not bytes (``encode``)
+        self.own_keys = False
 
     # ---------------------------------------------------------------- sending
     def successor_keys(self, state_id: int, state, successors) -> list[tuple]:
@@ -592,9 +595,15 @@ class NodeCodec:
         for target in range(self.count):
             mine = owners == target
             number = int(np.count_nonzero(mine))
-            if number == len(keys):
+            if not number:
+                continue
+            if target == self.index and self.own_keys:     # (the keys themselves)
+                outboxes[target].append(
+                    (keys, parents) if number == len(keys) else
+                    (list(compress(keys, mine.tolist())), parents[mine]))
+            elif number == len(keys):
                 outboxes[target].append((rows, parents))
-            elif number:
+            else:
                 outboxes[target].append((rows[mine], parents[mine]))
         return owners.tolist()
 
@@ -629,9 +638,15 @@ class NodeCodec:
                 prints.append(fingerprint(node))
         self.prints = np.concatenate((self.prints, np.array(prints[known:], np.uint64)))
 
-    def encode(self, target: int, outbox) -> bytes:
+    def encode(self, target: int, outbox):
         """A batch for ``target``: the nodes numbered since the last batch to it, then the
-        states' rows of node ids and their parents."""
+        states' rows of node ids and their parents.  The batch a worker keeps for itself,
+        where it never leaves the process (``own_keys``), is the keys as
+        ``successor_keys`` made them (tuples of this table's node ids) and their parents,
+        stored without a round trip through bytes (``store``)."""
+        if target == self.index and self.own_keys:
+            return (list(chain.from_iterable(keys for keys, _ in outbox)),
+                    b"".join(parents.tobytes() for _, parents in outbox))
         kinds, payloads = [], []
         if target != self.index:
             total = len(self.nodes)
@@ -665,6 +680,16 @@ class NodeCodec:
         """The batch's states stored (``intern_rows``): (their ids, whether each was new,
         their fields), arrays in the batch's order."""
         np = self.np
+        if sender == self.index and self.own_keys:        # (its own keys: ``encode``)
+            keys, parents = blob
+            intern = self.table.intern_parts
+            ids, news = array("q"), bytearray()
+            for key in keys:
+                state_id, new = intern(key)
+                ids.append(state_id)
+                news.append(new)
+            return (np.frombuffer(ids, np.int64), np.frombuffer(bytes(news), np.bool_),
+                    np.frombuffer(parents, np.int64))
         header_size, rows_size, width, count = _NODE_SIZES.unpack_from(blob)
         header, rows, parents = _pieces(blob, _NODE_SIZES.size,
                                         (header_size, rows_size, 8 * count))

@@ -44,10 +44,11 @@ import pickle
 import sys
 import time
 from array import array
+from itertools import islice
 from typing import Callable, Hashable, Optional, Sequence
 
 from ..collector import freeze_survivors, frozen_while_searching
-from ..native import engine_of, state_table
+from ..native import PYTHON, engine_of, state_table
 from .codec import codec_for, data_owners_fit, link, unlink  # noqa: F401  (search's links)
 
 CHUNK = 4096            # successors whose owners are computed together (``codec.send``)
@@ -199,6 +200,9 @@ class Partition:
         if compact is not None:               # (a packed table: ``_packed.c``'s ``compact``)
             compact()
         self.codec = codec_for(self.table, index, count, by_data)
+        # the batch for itself stays here: the Python engine's table stores it from its keys
+        # (``NodeCodec.encode``; the compiled tables take rows in one call)
+        self.codec.own_keys = engine_of(self.table) == PYTHON
         self.parent = Links(count)
         self.expanded = 0                      # states before this id have been expanded
         self.trimmed = 0                       # ... when the C heap was last trimmed
@@ -215,6 +219,8 @@ class Partition:
         self._frozen.enter_context(frozen_while_searching())
         self.cpu_started = time.process_time()  # (figures: CPU seconds of this search)
         self.step_seconds = 0.0                # ... of which in ``step`` (the rest: Ray's)
+        self.step_thread = 0.0                 # ... of that, the calling thread's own (the
+        #                                        rest: Ray's threads meanwhile)
         self.step_wall = 0.0                   # wall seconds in ``step`` (the rest: waits)
         self.wall_started = self.frozen_at = time.monotonic()
         self.calls = 0                         # calls of ``step`` or ``flow`` served
@@ -274,6 +280,7 @@ class Partition:
         (``freeze``: after every call; else at most every ``FREEZE_EVERY`` seconds, as the
         leader's own slices of a ``flow`` are a few milliseconds each)."""
         started, began, at = time.process_time(), time.monotonic(), time.time()
+        thread_started = time.thread_time()
         self.calls += 1
         try:
             return method(*args)
@@ -286,6 +293,7 @@ class Partition:
                 self.trimmed = self.expanded
                 _heap_trimmed()
             self.step_seconds += time.process_time() - started
+            self.step_thread += time.thread_time() - thread_started
             self.step_wall += time.monotonic() - began
             self._note_memory()
 
@@ -301,11 +309,11 @@ class Partition:
             return
         self.memory_noted = now
         try:
-            with open("/proc/self/status") as status:
-                fields = dict(line.split(":", 1) for line in status)
-            private = int(fields["RssAnon"].split()[0]) + int(fields["RssFile"].split()[0])
-            shared = int(fields["RssShmem"].split()[0])
-        except (OSError, KeyError, ValueError):
+            with open("/proc/self/status", "rb") as status:
+                text = status.read()
+            private = _status_kb(text, b"RssAnon:") + _status_kb(text, b"RssFile:")
+            shared = _status_kb(text, b"RssShmem:")
+        except (OSError, ValueError):
             return
         self.peak_private_kb = max(self.peak_private_kb, private)
         self.peak_shared_kb = max(self.peak_shared_kb, shared)
@@ -394,21 +402,23 @@ class Partition:
             return self._expand_keys(end, outboxes)
         send = codec.send
         # a successor reached again in this level is sent once (its first parent, as its
-        # owner would keep): storing a state costs its owner more than encoding it here
-        sending: set = set()
-        pending: list = []
-        pending_parents: list = []
+        # owner would keep): storing a state costs its owner more than encoding it here.
+        # ``firsts`` keeps each successor's first parent in the order they were reached;
+        # the successors from ``flushed`` on are not routed yet
+        firsts: dict = {}
+        flushed = 0
         sent = [0] * count
         transitions = deadlocks = 0
         deadlock_target = -1
         watched = self.watched
 
-        def flush():
-            owners = send(outboxes, pending, pending_parents)
+        def flush(flushed: int) -> int:
+            pending = list(islice(firsts.items(), flushed, None))
+            owners = send(outboxes, [key for key, _ in pending],
+                          [parent for _, parent in pending])
             for target in range(count):
                 sent[target] += owners.count(target)
-            pending.clear()
-            pending_parents.clear()
+            return len(firsts)
 
         for state_id in range(self.expanded, end):
             state = None if lazy else table[state_id]
@@ -429,15 +439,12 @@ class Partition:
                 if self.deadlock_is_target and deadlock_target < 0:
                     deadlock_target = state_id
             for key in keys:
-                if key in sending:
-                    continue
-                sending.add(key)
-                pending.append(key)
-                pending_parents.append(state_id)
-            if len(pending) >= CHUNK:
-                flush()
-        if pending:
-            flush()
+                if key not in firsts:
+                    firsts[key] = state_id
+            if len(firsts) - flushed >= CHUNK:
+                flushed = flush(flushed)
+        if len(firsts) > flushed:
+            flush(flushed)
         self.watched = watched
         return self._expanded(end, outboxes, sent, transitions, deadlocks, deadlock_target)
 
@@ -536,13 +543,20 @@ class Partition:
                 "link_file_bytes": self.parent.file_bytes(),
                 "engine": engine_of(table),
                 "cpu_seconds": time.process_time() - self.cpu_started,
-                "step_seconds": self.step_seconds, "sent_bytes": self.sent_bytes,
+                "step_seconds": self.step_seconds, "step_thread": self.step_thread,
+                "sent_bytes": self.sent_bytes,
                 "step_wall": self.step_wall, "calls": self.calls, "spans": self.spans,
                 "wall_seconds": time.monotonic() - self.wall_started,
                 "start_rss_kb": self.start_rss_kb, "peak_private_kb": self.peak_private_kb,
                 "peak_shared_kb": self.peak_shared_kb,
                 "max_rss_kb": _peak_rss_kb(), "pid": os.getpid(),
                 "rounds": self.levels.rounds + 1 if getattr(self, "levels", None) else 0}
+
+
+def _status_kb(text: bytes, field: bytes) -> int:
+    """A field of /proc/self/status in kB (ValueError where it is missing)."""
+    at = text.index(field) + len(field)
+    return int(text[at:text.index(b"\n", at)].split()[0])
 
 
 def _free_heap():
