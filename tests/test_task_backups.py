@@ -97,6 +97,22 @@ def test_a_barrier_with_a_task_name_no_task_has_is_an_error(tmp_path):
     assert "ERR_TASKNAME" in json.dumps(steps)
 
 
+def test_empty_entries_of_a_task_list_name_no_task(tmp_path):
+    """A task list padded with empty names (``[["T_ROB1"],[""],["T_ROB2"],[""]]``, as real
+    cells declare theirs) waits for the tasks it names and no other: the case's verdicts
+    stay, where an empty name taken as a task would be ERR_TASKNAME at the first barrier."""
+    case = CASES / "sync_both"
+    backup = shutil.copytree(case / "backup", tmp_path / "backup")
+    for module in backup.glob("RAPID/TASK*/PROGMOD/Rob*.mod"):
+        text = module.read_text().replace('pair{2} := [["T_ROB1"], ["T_ROB2"]]',
+                                          'pair{4} := [["T_ROB1"], [""], ["T_ROB2"], [""]]')
+        assert "pair{4}" in text
+        module.write_text(text)
+    _, found, err = run_check(case, backup)
+    expected = dict(line.split() for line in lines(case / "expected"))
+    assert {name: p["verdict"] for name, p in found.items()} == expected, err
+
+
 @pytest.mark.skipif(not native.available(), reason="the native core is not built")
 @pytest.mark.parametrize("name", ["alone_output_written", "system_output", "alone_polling_while",
                                   "alone_polling_goto", "alone_wait_then_read",

@@ -9,7 +9,7 @@ Checking*, ch. 10) is every transition of one task ``t`` when
 * C0 the task has a transition (every one of them changes the state);
 * C1 its next instruction is *independent* of every other task
   (``PartialOrder.footprint``, decided once per instruction from its code): an
-  assignment, condition, FOR step, jump (``fusion`` metadata: the instruction
+  assignment, condition, TEST, FOR step, jump (``fusion`` metadata: the instruction
   as Python over ``store`` and ``locals_``), a call of a procedure without
   arguments or the end of a procedure (ENDPROC, RETURN), that
   reads only data no other task writes (a wait that keeps the value it read of data
@@ -77,7 +77,7 @@ from ... import ast
 from ...load.shared_data import data_uses
 from ...semantics.configured_signals import walk_routine
 from ...semantics.instructions import (Action, Branch, Call, ControlAction, EndRoutine,
-                                       ForInit, ForNext, Jump, Return, Wait)
+                                       ForInit, ForNext, Jump, Return, TestDispatch, Wait)
 from ...semantics.library.tasks import SyncWait
 from ...semantics.program import ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE, Program
 from ...semantics.scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA
@@ -297,6 +297,13 @@ class PartialOrder:
             # compiled form reads through a reference: what it reads, from its syntax
             return LOCAL if syntax.reads.allowed(task, routine,
                                                       instruction.expression) else SHARED
+        if kind is TestDispatch:
+            # TEST compares its subject with the CASE values and goes on at one of its
+            # branches: as a condition, when they read only data no other task writes
+            fusion = instruction.fusion
+            return LOCAL if fusion is not None and self._reads_allowed(
+                readable, fusion[0], *(value for values in fusion[1] for value in values)) \
+                else SHARED
         if kind is Call:
             # entering a procedure without arguments pushes a frame of the task's own
             if not instruction.binders and instruction.routine.kind == "PROC":
@@ -392,7 +399,7 @@ class PartialOrder:
             return instruction.target != pc
         if kind is Branch:
             return pc not in (instruction.target_true, instruction.target_false)
-        if kind in (ForNext, ForInit, EndRoutine, Call, Return):
+        if kind in (ForNext, ForInit, EndRoutine, Call, Return, TestDispatch):
             return True
         return kind is Action and instruction.fusion is not None
 

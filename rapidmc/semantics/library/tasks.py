@@ -185,6 +185,11 @@ compiled("tsp_status GetTSPStatus(string TaskName)", modelled=FIXED)(
 # already wait at g + 1; no task can be further ahead or behind, since none
 # passes a generation before all have reached it), so three values suffice and
 # a barrier in an endless loop keeps the state space finite.
+#
+# A task list's empty entries ("") name no task: lists of a fixed size padded with
+# them (``[["T_ROB1"],["T_ROB2"],[""]]``) are what real cells pass, to WaitSyncTask and
+# SyncMoveOn alike, and the controller skips them (taken from that code: ABB's manuals
+# say nothing of it).
 
 ARRIVED = 10.0
 
@@ -272,6 +277,8 @@ def _barrier(calls, compiler, call, entry, what: str, error_name: str, listed: b
         found = []
         for item in items:
             name = (item[0] if isinstance(item, tuple) else item).strip().upper()
+            if not name:
+                continue                   # an empty entry names no task (above)
             number = by_name.get(name)
             if number is None:
                 if complete:
