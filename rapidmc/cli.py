@@ -9,6 +9,7 @@ dispatches and turns errors into diagnostics and exit codes:
 * 2 bad input or usage (syntax, static errors, malformed LTL, missing files)
 * 3 no violation found but the search was bounded (UNKNOWN)
 * 4 internal error in rapidmc (a bug: please report it)
+* 5 a distributed search gave no verdict: a worker was lost, or Ray did not start
 """
 from __future__ import annotations
 

@@ -457,6 +457,27 @@ def test_an_address_with_no_cluster_is_a_diagnostic(monkeypatch):
     assert raised.value.diagnostics[0].code.code == "RMC754"
 
 
+def test_a_local_cluster_that_does_not_start_is_a_diagnostic(monkeypatch):
+    """Ray's processes timing out at start-up (a loaded machine) end --workers with RMC755 and
+    exit 5, no verdict, never an internal error."""
+    require_tool(ray is not None, "RAPIDMC_REQUIRE_RAY", "Ray is not installed (the 'ray' extra)")
+    from rapidmc.check.distributed import Cluster
+
+    def time_out(**options):
+        raise Exception("The current node timed out during startup. This could happen "
+                        "because some of the Ray processes failed to startup.")
+    monkeypatch.setattr(ray, "is_initialized", lambda: False)
+    monkeypatch.setattr(ray, "init", time_out)
+    with pytest.raises(UserError) as raised:
+        with Cluster(workers=2).session():
+            pass
+    assert raised.value.exit_code == 5
+    found = raised.value.diagnostics[0]
+    assert found.code.code == "RMC755"
+    assert "--workers: the local Ray cluster did not start" in found.message
+    assert any("timed out during startup" in note for note in found.notes)
+
+
 def test_a_host_that_does_not_exist_is_a_diagnostic_not_a_hang():
     """``--ray notahost:1``: Ray would retry for minutes; the check ends at once with RMC754
     and exit 2 (the timeout is a hang's, far above the wait it allows)."""

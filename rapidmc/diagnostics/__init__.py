@@ -139,6 +139,8 @@ WORKER_LOST = _code("RMC752", "worker-lost",
                     "a worker of a distributed search died or ran out of memory: no verdict (exit 5)")
 RAY_UNREACHABLE = _code("RMC754", "ray-unreachable",
                         "--ray ADDRESS names no Ray cluster this process can join (exit 2)")
+RAY_START = _code("RMC755", "ray-start",
+                  "the local Ray cluster for --workers or --swarm did not start: no verdict (exit 5)")
 DISTRIBUTED_SCOPE = _code("RMC753", "distributed-scope",
                           "what a distributed check did not distribute or report: fair cycles, "
                           "waiting tasks and a swarm's LTL run in one process; no coverage or "

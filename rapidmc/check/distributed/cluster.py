@@ -28,7 +28,7 @@ import time
 from dataclasses import dataclass
 from typing import Optional
 
-from ...diagnostics import RAY_UNAVAILABLE, RAY_UNREACHABLE, error
+from ...diagnostics import EXIT_WORKER_LOST, RAY_START, RAY_UNAVAILABLE, RAY_UNREACHABLE, error
 
 EXTRA_HINT = "install it with: pip install 'rapidmc[ray]'"
 START_HINT = "start one with: ray start --head --port=6379"
@@ -90,13 +90,28 @@ class Cluster:
         else:
             cpus = self.workers if self.workers is not None else \
                 min(self.swarm, os.cpu_count() or 1)
-            ray.init(num_cpus=cpus, _system_config=LOCAL_SYSTEM_CONFIG, **options)
+            self._start(ray, cpus, options)
         try:
             yield ray
         finally:
             from .search import drop_actors     # (their handles die with this session)
             drop_actors(ray)
             ray.shutdown()
+
+    def _start(self, ray, cpus: int, options: dict) -> None:
+        """``ray.init`` of a local cluster, or RAY_START (exit 5, as a lost worker: the
+        search could not run, no verdict).  Ray's processes may fail to come up on a
+        loaded or small machine ("The current node timed out during startup")."""
+        try:
+            ray.init(num_cpus=cpus, _system_config=LOCAL_SYSTEM_CONFIG, **options)
+        except Exception as exc:     # whatever Ray raises here is its processes' failure
+            with contextlib.suppress(Exception):
+                ray.shutdown()
+            lines = str(exc).strip().splitlines()
+            raise error(RAY_START, f"{self.option}: the local Ray cluster did not start",
+                        None, (lines[0] if lines else type(exc).__name__)[:300],
+                        "no verdict: run again when the machine is less loaded, or "
+                        "without " + self.option, exit_code=EXIT_WORKER_LOST) from None
 
     def _join(self, ray, options: dict) -> None:
         """``ray.init`` at ``address``, or RAY_UNREACHABLE (``_answers``: at once where no
