@@ -36,7 +36,7 @@ class KeptSuccessors:
         self._split, self._join = split, join
         self._nodes: Optional[NodeTable] = None     # (the owner's, when first kept)
         self._kept: dict[bytes, bytes] = {}
-        self._width = 0                        # node ids per successor: label, parts
+        self._width = 0                        # parts per state
 
     def __reduce__(self):
         return KeptSuccessors, (self._split, self._join)     # (nothing kept travels)
@@ -52,23 +52,24 @@ class KeptSuccessors:
             return None
         ids = array("I")
         ids.frombytes(found)
-        nodes, join, width = self._nodes, self._join, self._width
-        value, values = nodes.value, nodes.values
-        return [(value(ids[start]), join(values(ids[start + 1:start + width])))
-                for start in range(0, len(ids), width)]
+        width = self._width
+        count = len(ids) // (width + 1)
+        values = self._nodes.values
+        labels, parts = values(ids[:count]), values(ids[count:])
+        join = self._join
+        return [(labels[index], join(parts[index * width:(index + 1) * width]))
+                for index in range(count)]
 
     def keep(self, state, successors: list, owner) -> None:
         """Keep ``successors`` of ``state``, their nodes in the table the searches over
-        ``owner`` (the system) share (not holding the owner: it holds this)."""
+        ``owner`` (the system) share (not holding the owner: it holds this).  Stored as
+        the labels' node ids, then each successor's parts' ids."""
         if self._nodes is None:
             self._nodes = shared_nodes(owner, _node_kind())
-        node, ids, split = self._nodes.node, self._nodes.ids, self._split
-        found = array("I")
-        for label, after in successors:
-            parts = ids(split(after))
-            found.append(node(label))
-            found.extend(parts)
-            self._width = len(parts) + 1
+            self._width = len(self._split(state))
+        ids, split = self._nodes.ids, self._split
+        found = array("I", ids([label for label, _ in successors]))
+        found.extend(ids([part for _, after in successors for part in split(after)]))
         self._kept.setdefault(self._key(state), found.tobytes())
 
     def _key(self, state) -> bytes:
