@@ -57,8 +57,8 @@ class RapidSystem:
 
     Successors of states that take the general step (environment models,
     tasks, interrupts, stored inputs) are remembered (up to ``shared_limit``
-    states) so that the searches for several properties of one program
-    compute them once.  Plain states (``semantics.plain_step``) are not: their
+    states; as node ids, ``kept_successors``) so that the searches for several
+    properties of one program compute them once.  Plain states (``semantics.plain_step``) are not: their
     successors cost less to compute again than to hash, keep and have the
     garbage collector scan (counters N=6, ``rapidmc check``: 3.3 s remembered,
     2.2 s not).  A reduction ``plan`` (``rapidmc.model.reduction``) resets
