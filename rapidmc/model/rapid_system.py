@@ -38,6 +38,7 @@ from ..semantics.values import format_num, format_value
 from ..semantics.errors import errno_name, error_detail
 from ..semantics.resting_inputs import AT_REST
 from .reduction import NO_PLAN, Plan
+from .kept_successors import KeptSuccessors
 from .state_keys import StateKeys
 from .task_atoms import task_qualifier
 from .value_text import DESCRIBED_TYPES, OPAQUE_KINDS, untyped_text, value_text
@@ -48,6 +49,7 @@ from .reduction.partial_order import PartialOrder, StatePlaces
 
 _new_tuple = tuple.__new__
 RESTING_TEXT = "0 or 1 (no interrupt watches it: not stored)"
+_last_split_store: tuple = (None, ())     # (a global data vector, it as a tuple)
 
 
 class RapidSystem:
@@ -55,8 +57,8 @@ class RapidSystem:
 
     Successors of states that take the general step (environment models,
     tasks, interrupts, stored inputs) are remembered (up to ``shared_limit``
-    states) so that the searches for several properties of one program
-    compute them once.  Plain states (``semantics.plain_step``) are not: their
+    states; as node ids, ``kept_successors``) so that the searches for several
+    properties of one program compute them once.  Plain states (``semantics.plain_step``) are not: their
     successors cost less to compute again than to hash, keep and have the
     garbage collector scan (counters N=6, ``rapidmc check``: 3.3 s remembered,
     2.2 s not).  A reduction ``plan`` (``rapidmc.model.reduction``) resets
@@ -85,7 +87,7 @@ class RapidSystem:
                 stop_pcs(program.routines[program.entry])):
             self.project_fused = None
         # successors kept for the next searches (one per property) over the same program
-        self._shared: dict[int, tuple] = {}   # state key -> (state, its successors)
+        self._shared = KeptSuccessors(self.split_state, self.join_state)
         self._keys = StateKeys()
         self.order = plan.order          # ample sets between tasks (reduction.partial_order)
         if getattr(self.order, "keys", None) is not None:
@@ -100,8 +102,15 @@ class RapidSystem:
         """The parts stored separately (``check.states``): the call stack, global data (as
         a tuple: smaller than a persistent vector), signals, robot, interrupts, and the rest
         (ERRNO ... further tasks).  Signals stay a vector: they rarely change, and a vector
-        handed on unchanged is found by identity."""
-        return (state[0], tuple(state[1]), state[2], state[3], state[4], state[5:])
+        handed on unchanged is found by identity.  The global data of the state split
+        last are given as the same tuple while its vector is handed on (a state's
+        successors, split by the table and the kept successors: found by identity)."""
+        global _last_split_store
+        store = state[1]
+        last = _last_split_store
+        if last[0] is not store:
+            last = _last_split_store = (store, tuple(store))
+        return (state[0], last[1], state[2], state[3], state[4], state[5:])
 
     @staticmethod
     def join_state(parts: tuple) -> State:
@@ -139,7 +148,7 @@ class RapidSystem:
         if self._full is None:
             self._full = copy.copy(self)
             self._full.order = self.order.every_order()
-            self._full._shared = {}
+            self._full._shared = KeptSuccessors(self.split_state, self.join_state)
             self._full._keys = StateKeys()
         return self._full
 
@@ -162,12 +171,12 @@ class RapidSystem:
         return states if project is None else list(dict.fromkeys(map(project, states)))
 
     def successors(self, state: State) -> list[tuple[Hashable, State]]:
-        shared = self._shared
-        if shared:                       # (hashing a whole state is not free: see state_keys)
-            key = self._keys.key(state)
-            cached = shared.get(key)
-            if cached is not None and cached[0] == state:
-                return cached[1]
+        # (plain states are never kept: see the class docstring)
+        kept = not is_plain(self.program, state, self.config)
+        if kept:
+            found = self._shared.get(state)
+            if found is not None:
+                return found
         transitions = successors(self.program, state, self.config)
         project = self.project
         if project is None:
@@ -178,8 +187,8 @@ class RapidSystem:
                       for label, span, after, output, _ in transitions]
         if self.order is not None:
             result = self.order.ample(state, result, self.config)
-        if len(shared) < self.shared_limit and not is_plain(self.program, state, self.config):
-            shared.setdefault(self._keys.key(state), (state, result))
+        if kept and len(self._shared) < self.shared_limit:
+            self._shared.keep(state, result, self)
         return result
 
     def successor_states(self, state: State) -> list[State]:
