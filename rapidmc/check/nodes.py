@@ -29,7 +29,7 @@ from __future__ import annotations
 import sys
 import weakref
 from operator import is_
-from typing import Callable, Hashable
+from typing import Callable, Hashable, Optional
 
 from pyrsistent import pvector
 
@@ -56,6 +56,15 @@ def shared_nodes(system, kind: type) -> "NodeTable":
     if table is None:
         table = tables[kind] = kind()
     return table
+
+
+def existing_nodes(system) -> Optional["NodeTable"]:
+    """A node table the searches over ``system`` already share (the first made), or None."""
+    try:
+        tables = _SHARED.get(system)
+    except TypeError:
+        return None
+    return next(iter(tables.values()), None) if tables else None
 
 
 class NodeTable:
