@@ -22,7 +22,8 @@ from rapidmc.check import native
 from rapidmc.model.reduction import empty_deletes
 from rapidmc.model.reduction.partial_order import PartialOrder
 
-from test_partial_order import check_json, states, verdicts
+from test_partial_order import (assert_rule_keeps_verdicts_and_pays, check_json, states,
+                                verdicts)
 
 needs_native = pytest.mark.skipif(not native.available(), reason="the native core is not built")
 
@@ -99,20 +100,13 @@ def write_handshake(folder: Path, step: int, ack: str) -> list[str]:
 
 @pytest.mark.parametrize("name, step, ack", VARIANTS)
 def test_start_up_handshakes_keep_their_verdicts(tmp_path, monkeypatch, name, step, ack):
-    argv = write_handshake(tmp_path, step, ack)
-    reduced, full = check_json(argv), check_json(argv + ["--no-por"])
     expected = {"served": ("HOLDS", "HOLDS", "VIOLATED"),
                 "counted twice": ("HOLDS", "VIOLATED", "VIOLATED"),
                 "wrong answer": ("VIOLATED", "HOLDS", "HOLDS")}[name]
-    found = verdicts(full)
-    assert (found["no_deadlock"], found["once"], found["staged"]) == expected
-    assert verdicts(reduced) == found
-    monkeypatch.setattr(empty_deletes.EmptyDeletes, "reader", lambda self, *where: None)
-    without = check_json(argv)
-    assert verdicts(without) == found
-    assert states(reduced)["no_runtime_error"] < states(without)["no_runtime_error"] < \
-        states(full)["no_runtime_error"]
-
+    assert_rule_keeps_verdicts_and_pays(
+        write_handshake(tmp_path, step, ack), expected,
+        lambda: monkeypatch.setattr(empty_deletes.EmptyDeletes, "reader",
+                                    lambda self, *where: None))
 
 @needs_native
 @pytest.mark.parametrize("name, step, ack", VARIANTS[::2])

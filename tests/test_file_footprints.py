@@ -24,7 +24,7 @@ from rapidmc.model.reduction.partial_order import PartialOrder
 from rapidmc.model.reduction.syntax_footprint import LOCAL, SHARED
 
 from test_empty_deletes import task_files
-from test_partial_order import check_json, states, verdicts
+from test_partial_order import assert_rule_keeps_verdicts_and_pays, check_json, verdicts
 
 needs_native = pytest.mark.skipif(not native.available(), reason="the native core is not built")
 
@@ -83,21 +83,12 @@ def files_shared(monkeypatch) -> None:
 
 @pytest.mark.parametrize("name, step, awaited", VARIANTS)
 def test_loggers_keep_their_verdicts(tmp_path, monkeypatch, name, step, awaited):
-    argv = write_loggers(tmp_path, step, awaited)
-    reduced, full = check_json(argv), check_json(argv + ["--no-por"])
     expected = {"logged": ("HOLDS", "HOLDS", "VIOLATED"),
                 "counted twice": ("HOLDS", "VIOLATED", "VIOLATED"),
                 "never staged": ("VIOLATED", "HOLDS", "VIOLATED")}[name]
-    found = verdicts(full)
-    assert (found["no_deadlock"], found["once"], found["staged"]) == expected
+    found = assert_rule_keeps_verdicts_and_pays(write_loggers(tmp_path, step, awaited),
+                                                expected, lambda: files_shared(monkeypatch))
     assert found["no_runtime_error"] == "HOLDS"
-    assert verdicts(reduced) == found
-    files_shared(monkeypatch)
-    without = check_json(argv)
-    assert verdicts(without) == found
-    assert states(reduced)["no_runtime_error"] < states(without)["no_runtime_error"] < \
-        states(full)["no_runtime_error"]
-
 
 @needs_native
 @pytest.mark.parametrize("name, step, awaited", VARIANTS[::2])

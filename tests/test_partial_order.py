@@ -41,6 +41,24 @@ def states(document: dict) -> dict[str, int]:
     return {p["name"]: p["stats"]["product_states"] for p in document["properties"]}
 
 
+def assert_rule_keeps_verdicts_and_pays(argv: list[str], expected: tuple[str, ...],
+                                        rule_off) -> dict[str, str]:
+    """One reduction rule's differential: the reduced search, ``--no-por`` and the search
+    with the rule switched off (``rule_off()``, a monkeypatch) give the same verdicts, the
+    unreduced ones of (no_deadlock, once, staged) are ``expected``, and the rule pays:
+    reduced < rule off < unreduced in the run-time-error search's states."""
+    reduced, full = check_json(argv), check_json(argv + ["--no-por"])
+    found = verdicts(full)
+    assert (found["no_deadlock"], found["once"], found["staged"]) == expected
+    assert verdicts(reduced) == found
+    rule_off()
+    without = check_json(argv)
+    assert verdicts(without) == found
+    assert states(reduced)["no_runtime_error"] < states(without)["no_runtime_error"] < \
+        states(full)["no_runtime_error"]
+    return found
+
+
 def write_tasks(folder: Path, seed: int, procedures: bool = False,
                 arrays: bool = False, local: bool = False, calls: bool = False) -> list[str]:
     argv = []
