@@ -1,7 +1,8 @@
 """Tasks held at a barrier stay out of a group (``reduction.barrier_holds``, issue 27).
 
 Three tasks meet at two barriers: the main task sets the task list (as a
-controller task does before its partners start), then fills a shared buffer between
+controller task does before its partners start; in one variant no code writes it),
+then fills a shared buffer between
 them, a reader waits at the second one and then reads the buffer, a logger counts
 on its own data.  While the reader waits for the main task, the main task's writes
 of the buffer are a group of their own.  Differential: the reduced search and
@@ -34,7 +35,7 @@ FILLER = """MODULE Filler
   PERS tasks all{{3}} := {tasks};
   PERS num buf{{3}} := [0, 0, 0];
   PROC main()
-    all := {tasks};
+    {set_list}
     WaitSyncTask ready, all;
     buf{{1}} := 1;
     buf{{2}} := 2;
@@ -81,6 +82,9 @@ SHRINK = 'all := [[""], ["task 2 (reader)"], ["task 3 (logger)"]];'
 VARIANTS = {
     # name: (main task's second barrier, reader's first and then, logger's shrink)
     "kept": (BARRIER, BARRIER, READ, ""),
+    # no loaded code writes the list: data written from outside, its names compared with
+    # nothing, so every read takes the stored value (``load.outside_data``)
+    "list_outside": (BARRIER, BARRIER, READ, ""),
     "race": (BARRIER, READ, BARRIER, ""),
     "left_out": ("", BARRIER, READ, ""),
     "list_emptied": (BARRIER, BARRIER, READ, SHRINK),
@@ -88,6 +92,7 @@ VARIANTS = {
 
 EXPECTED = {
     "kept": {"whole": "HOLDS", "read_ends": "HOLDS", "no_deadlock": "HOLDS"},
+    "list_outside": {"whole": "HOLDS", "read_ends": "HOLDS", "no_deadlock": "HOLDS"},
     # (the reader may read before the first write: seen stays 0)
     "race": {"whole": "VIOLATED", "read_ends": "VIOLATED", "no_deadlock": "HOLDS"},
     "left_out": {"whole": "HOLDS", "read_ends": "VIOLATED", "no_deadlock": "VIOLATED"},
@@ -97,7 +102,8 @@ EXPECTED = {
 
 def write_cell(folder: Path, variant: str) -> list[str]:
     second, first, then, shrink = VARIANTS[variant]
-    texts = {"filler": FILLER.format(tasks=TASKS, second=second),
+    set_list = "" if variant == "list_outside" else f"all := {TASKS};"
+    texts = {"filler": FILLER.format(tasks=TASKS, second=second, set_list=set_list),
              "reader": READER.format(tasks=TASKS, first=first, then=then),
              "logger": LOGGER.format(tasks=TASKS, shrink=shrink)}
     argv = []
@@ -127,7 +133,7 @@ def test_held_tasks_keep_the_verdicts(tmp_path, variant):
 
 
 @needs_native
-@pytest.mark.parametrize("variant", ["kept", "list_emptied"])
+@pytest.mark.parametrize("variant", ["kept", "list_outside", "list_emptied"])
 def test_held_tasks_report_the_same_with_both_engines(variant, tmp_path, monkeypatch):
     from test_native_engine import assert_same_reports
     document = assert_same_reports(write_cell(tmp_path, variant), monkeypatch,
@@ -135,8 +141,9 @@ def test_held_tasks_report_the_same_with_both_engines(variant, tmp_path, monkeyp
     assert document["properties"]
 
 
-def test_a_task_held_at_its_barrier_leaves_out_states(tmp_path, monkeypatch):
-    argv = write_cell(tmp_path, "kept")
+@pytest.mark.parametrize("variant", ["kept", "list_outside"])
+def test_a_task_held_at_its_barrier_leaves_out_states(tmp_path, monkeypatch, variant):
+    argv = write_cell(tmp_path, variant)
     held = check_json(argv)
     monkeypatch.setattr(barrier_holds.BarrierHolds, "waiting",
                         lambda self, state, stacks, running: ())

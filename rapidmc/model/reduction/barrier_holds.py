@@ -16,7 +16,10 @@ One more thing may let it pass: a change of its task list, which the barrier
 reads at each step.  The task list is then held too: every running task whose
 code may write the list's data is in the group or is itself held (a greatest
 fixpoint: a held task writes nothing).  A list that is not global data of the
-program, or that data written from outside the loaded code, holds no one.
+program holds no one, nor one written from outside the loaded code whose reads may
+take several values (``load.outside_data``); a list whose task names no code
+compares is read as stored, and only the loaded code's writes (``PartialOrder``'s
+written slots, a wait's stored reads included) change it.
 """
 from __future__ import annotations
 
@@ -33,7 +36,10 @@ class BarrierHolds:
         self._number = {name: number for number, name in enumerate(order.names)}
         self._writers: dict = {}                # list slot -> the tasks that may write it
         outside = getattr(order.program, "outside_data", None) or {}
-        self._outside = {data.slot for data in outside.values()}
+        # data written outside the loaded code whose reads may choose among values: a
+        # barrier's list of it may name other tasks at each step
+        self._outside = {data.slot for data in outside.values() if any(
+            domain is not None and len(domain) > 1 for domain in data.domains.values())}
 
     def waiting(self, state, stacks: tuple, running: list) -> tuple:
         """((task, the tasks it waits for, the tasks that may write its list), ...) for
