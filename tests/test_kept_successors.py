@@ -277,3 +277,22 @@ def test_a_reduced_packed_search_keeps_rows_and_the_model_keeps_nothing(tmp_path
     assert reference_keeps > 1000            # (the Python engine's searches: the model keeps)
     assert _counts(report) == _counts(reference)
     assert [p["verdict"] for p in report["properties"]] == ["HOLDS", "HOLDS"]
+
+
+def test_a_coverage_probe_keeps_no_successors(monkeypatch):
+    """A breadth-first coverage probe's model serves that one search: it keeps nothing for a
+    next one (the whole joseballester check's probes kept 0.9M states' successors)."""
+    from rapidmc import api
+    from rapidmc.check.reachability import find_reachable as reach
+    program = build(ast.Program(parse_text(TEXT, "prog.mod")))
+    keeps, systems = [], []
+    original_keep = kept_successors.KeptSuccessors.keep
+    monkeypatch.setattr(kept_successors.KeptSuccessors, "keep",
+                        lambda self, *args: keeps.append(1) or original_keep(self, *args))
+    monkeypatch.setattr(api, "find_reachable",
+                        lambda system, *args, **kwargs: systems.append(system) or
+                        reach(system, *args, **kwargs))
+    executed, _ = api._probe_search(program, api.AtomCompiler(program), CheckConfig(program),
+                                    300, walks=False)
+    assert executed and systems
+    assert keeps == [] and all(len(system._shared) == 0 for system in systems)
