@@ -35,6 +35,7 @@ typedef struct {
     PyObject *components0, *components1;   /* part -> id (dicts of the Python table) */
     PyObject *values0, *values1;     /* id -> part (lists of the Python table) */
     PyObject *tail_parts;            /* tail id -> tuple of the parts after the first two */
+    PyObject *tails;                 /* that tuple -> tail id (a dict of the Python table) */
     PyObject *last_tail;             /* the tail last looked up (a tuple) and its id */
     Py_ssize_t last_tail_id;
     /* heads: (first component id, tail id) -> head id */
@@ -74,6 +75,7 @@ static int Table_traverse(Table *self, visitproc visit, void *arg)
     Py_VISIT(self->values0);
     Py_VISIT(self->values1);
     Py_VISIT(self->tail_parts);
+    Py_VISIT(self->tails);
     Py_VISIT(self->last_tail);
     return 0;
 }
@@ -87,6 +89,7 @@ static int Table_clear(Table *self)
     Py_CLEAR(self->values0);
     Py_CLEAR(self->values1);
     Py_CLEAR(self->tail_parts);
+    Py_CLEAR(self->tails);
     Py_CLEAR(self->last_tail);
     return 0;
 }
@@ -134,12 +137,13 @@ static int table_bind(Table *self, Py_ssize_t width)
     self->values0 = attribute_item((PyObject *)self, "_values", 0);
     self->values1 = attribute_item((PyObject *)self, "_values", 1);
     self->tail_parts = attribute_item((PyObject *)self, "_tail_parts", -1);
+    self->tails = attribute_item((PyObject *)self, "_tails", -1);
     if (self->components0 == NULL || self->components1 == NULL || self->values0 == NULL ||
-        self->values1 == NULL || self->tail_parts == NULL)
+        self->values1 == NULL || self->tail_parts == NULL || self->tails == NULL)
         return -1;
     if (!PyDict_CheckExact(self->components0) || !PyDict_CheckExact(self->components1) ||
         !PyList_CheckExact(self->values0) || !PyList_CheckExact(self->values1) ||
-        !PyList_CheckExact(self->tail_parts)) {
+        !PyList_CheckExact(self->tail_parts) || !PyDict_CheckExact(self->tails)) {
         PyErr_SetString(PyExc_TypeError, "native table: components must be dicts and lists");
         return -1;
     }
@@ -167,7 +171,8 @@ static Py_ssize_t component_id(Table *self, int index, PyObject *part)
     return as_index(PyObject_CallMethod((PyObject *)self, "_add_component", "iO", index, part));
 }
 
-/* The tail id of parts[2:], the last one's when they equal the last tail's. */
+/* The tail id of parts[2:], the last one's when they equal the last tail's, else found in
+ * the Python table's ``_tails`` (its ``_tail_id`` stores a new one). */
 static Py_ssize_t tail_id(Table *self, PyObject *parts)
 {
     Py_ssize_t length = PyTuple_GET_SIZE(parts) - 2;
@@ -190,7 +195,9 @@ static Py_ssize_t tail_id(Table *self, PyObject *parts)
     PyObject *tail = PyTuple_GetSlice(parts, 2, length + 2);
     if (tail == NULL)
         return -1;
-    Py_ssize_t found = as_index(PyObject_CallMethod((PyObject *)self, "_tail_id", "(O)", tail));
+    PyObject *known = PyDict_GetItemWithError(self->tails, tail);
+    Py_ssize_t found = known != NULL ? PyLong_AsSsize_t(known) : PyErr_Occurred() ? -1 :
+        as_index(PyObject_CallMethod((PyObject *)self, "_tail_id", "(O)", tail));
     if (found < 0) {
         Py_DECREF(tail);
         return -1;

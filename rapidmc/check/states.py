@@ -55,7 +55,10 @@ class StateTable:
         self._whole_bytes = 0                  # the whole states' own bytes, counted as added
         self._components: list[dict] = []
         self._values: list[list] = []
-        self._tails: dict[tuple, int] = {}     # ids of the components after PRIMARY -> tail id
+        # the parts after PRIMARY (their node ids) -> tail id: one look-up, in C for the
+        # native table (``_native.c``'s ``tail_id``), where the successors of a state
+        # alternate between tails (stored inputs: each successor's own signals)
+        self._tails: dict[tuple, int] = {}
         self._tail_values: list[tuple] = []
         self._tail_parts: list[tuple] = []     # by tail id: the stored parts themselves
         self._last_tail: tuple | None = None  # the tail parts last looked up, their id,
@@ -194,21 +197,20 @@ class StateTable:
 
     def _tail_id(self, tail: tuple) -> int:
         """The id of the components after PRIMARY, together (remembered as the last tail,
-        with its heads)."""
-        ids = []
-        for index, part in enumerate(tail, PRIMARY):
-            part_id = self._components[index].get(part)
-            if part_id is None:
-                part_id = self._add_component(index, part)
-            ids.append(part_id)
-        key = tuple(ids)
-        tail_id = self._tails.get(key)
+        with its heads); its components are stored when it is new."""
+        tail_id = self._tails.get(tail)
         if tail_id is None:
-            tail_id = self._tails[key] = len(self._tail_values)
-            self._tail_values.append(key)
+            ids = []
+            for index, part in enumerate(tail, PRIMARY):
+                part_id = self._components[index].get(part)
+                if part_id is None:
+                    part_id = self._add_component(index, part)
+                ids.append(part_id)
+            tail = tuple(tail)
+            tail_id = self._tails[tail] = len(self._tail_values)
+            self._tail_values.append(tuple(ids))
             self._heads.append({})
-            self._tail_parts.append(tuple(self._values[index][part_id]
-                                          for index, part_id in enumerate(key, PRIMARY)))
+            self._tail_parts.append(tail)
         self._last_tail, self._last_tail_id = tail, tail_id
         self._last_heads = self._heads[tail_id]
         return tail_id

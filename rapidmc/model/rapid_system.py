@@ -170,9 +170,12 @@ class RapidSystem:
         project = self.project
         return states if project is None else list(dict.fromkeys(map(project, states)))
 
-    def successors(self, state: State) -> list[tuple[Hashable, State]]:
+    def successors(self, state: State, keep: bool = True) -> list[tuple[Hashable, State]]:
+        """The labelled successors of ``state``; ``keep`` False: none kept or looked up
+        for the next searches (a caller that keeps them itself: a packed table's rows,
+        ``packed.table.reduced_packing``)."""
         # (plain states are never kept: see the class docstring)
-        kept = not is_plain(self.program, state, self.config)
+        kept = keep and not is_plain(self.program, state, self.config)
         if kept:
             found = self._shared.get(state)
             if found is not None:
@@ -191,13 +194,13 @@ class RapidSystem:
             self._shared.keep(state, result, self)
         return result
 
-    def successor_states(self, state: State) -> list[State]:
-        """The states of ``successors(state)``, in order, without their labels: what the
-        search stores (built faster at plain states, ``plain_successor_states``, which
+    def successor_states(self, state: State, keep: bool = True) -> list[State]:
+        """The states of ``successors(state, keep)``, in order, without their labels: what
+        the search stores (built faster at plain states, ``plain_successor_states``, which
         skips the writes to sliced data the projection resets anyway)."""
         found = plain_successor_states(self.program, state, self.config)
         if found is None:
-            return [after for _, after in self.successors(state)]
+            return [after for _, after in self.successors(state, keep)]
         project = self.project_fused
         return found if project is None else [project(after) for after in found]
 

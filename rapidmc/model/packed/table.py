@@ -105,6 +105,7 @@ def reduced_packing(system) -> Optional["PackedPlaces"]:
         return None
     table.set_order(table.order_flags())
     table.runs = system.order.runs
+    table.rows_kept = True
     # (the proviso packs a successor to ask for its number, and the search then stores it)
     table.remembered = {}
     table._vectors = table._remembered_vectors
@@ -290,6 +291,12 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
 
     selected_states = None           # (``PackedSearch``: the search whose ids are meant)
     runs = None                      # reduced (``reduced_packing``): the tasks' local runs
+    # reduced: the breadth-first loop keeps the successors of Python's steps as a row of
+    # the parts this table gave them, by the state's number, for the check's later
+    # searches (``_packed.c``'s ``row_keep``), so the model keeps none of its own there
+    # (``RapidSystem.successors``' ``keep``: interning each successor's parts once more,
+    # in a node table whose objects are not this table's, cost more than the step)
+    rows_kept = False
 
     def select_search(self, states) -> None:
         """Ids name the states of ``states`` (a ``new_states()``) from now on; what was
@@ -648,7 +655,7 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         """The successors of a state the machine left to Python, as interned parts."""
         state = self[state_id]
         self._stepping, self._python_spans = (-1, None), []   # (what the machine began)
-        targets = self.system.successor_states(state)
+        targets = self.system.successor_states(state, not self.rows_kept)
         self._last_id, self._last = state_id, (state, targets)
         return [self.intern_parts(*self._vectors(target)) for target in targets]
 
@@ -657,7 +664,7 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         whether it wants more."""
         state = self[state_id]
         self._stepping, self._python_spans = (-1, None), []   # (what the machine began)
-        labelled = list(self.system.successors(state))
+        labelled = list(self.system.successors(state, not self.rows_kept))
         self.observer(state, labelled)
         targets = [target for _, target in labelled]
         self._last_id, self._last = state_id, (state, targets)
