@@ -124,6 +124,10 @@ class CheckOptions:
     # inputs that only interrupts watch keep their resting value in states, an edge may
     # come at any step (model.edge_inputs; False: their values are stored, exact)
     edge_inputs: bool = True
+    # a step leaves those inputs and the ones at rest unchosen where it reads no signal and
+    # no active interrupt watches them (semantics.unread_inputs; False: every step chooses
+    # every stored input's value)
+    inputs_where_read: bool = True
     # the property searches walk the state graph the run-time error search explored, when
     # that search was complete (False: each steps the program again; same answers)
     reuse_explored: bool = True
@@ -276,6 +280,7 @@ def _check_config(program: Program, atoms: AtomCompiler, options: CheckOptions,
         config.edge_inputs = dict(facts.edges)
         config.served_edges = facts.served_edges
         config.resting_inputs = resting_inputs(config, atoms)
+        config.inputs_where_read = options.inputs_where_read
     config.time_check = time_check       # the running search's time limit, inside a step
     config.robot_untracked = not options.track_robot and facts.robot_untracked
     if options.socket_messages:

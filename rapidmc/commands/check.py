@@ -132,6 +132,10 @@ def add_model_arguments(parser: argparse.ArgumentParser) -> None:
                              "input that only interrupts watch may give an edge at any step, "
                              "and the verdicts say so under assumes:; an input no active "
                              "interrupt watches is not stored)")
+    parser.add_argument("--inputs-every-step", action="store_true",
+                        help="every step chooses the value of every stored input (default: a "
+                             "step that reads no signal leaves the inputs no active interrupt "
+                             "watches unchosen, at rest)")
     parser.add_argument("--no-fairness", action="store_true",
                         help="with several tasks: also search runs in which a task that could "
                              "go on never runs again (default: weak fairness between tasks; "
@@ -189,6 +193,7 @@ def check_options(args: argparse.Namespace) -> api.CheckOptions:
         fairness=not args.no_fairness,
         track_robot=args.track_robot,
         edge_inputs=not args.exact_edges,
+        inputs_where_read=not args.inputs_every_step,
         cluster=cluster_options.cluster_from_arguments(args))
 
 

@@ -269,7 +269,6 @@ def _signal_type(param: ParameterView) -> Optional[RapidType]:
 def signal_designator(compiler: ExpressionCompiler, expr: ast.Expr,
                       signal_type: RapidType) -> Callable:
     """Compile a signal argument to ``fn(machine) -> physical signal index``."""
-    compiler.note_io_read()
     if isinstance(expr, ast.StringLiteral):
         raise error(TYPE_MISMATCH, "a signal is required here, not a string", expr.span)
     if isinstance(expr, ast.NameRef):
@@ -282,6 +281,7 @@ def signal_designator(compiler: ExpressionCompiler, expr: ast.Expr,
                 raise error(TYPE_MISMATCH, f"'{expr.name.text}' is a {kind} signal, a "
                             f"{signal_type.name} is required", expr.span)
             index = symbol.slot
+            compiler.note_io_read(index)
             compiler.linker.note_signal_named(index)
             return lambda m: index
         if not (isinstance(symbol.type, RapidType) and symbol.type.kind == SEMI_VALUE):
@@ -290,10 +290,13 @@ def signal_designator(compiler: ExpressionCompiler, expr: ast.Expr,
         if symbol.type.signal_kind != signal_type.signal_kind:
             raise error(TYPE_MISMATCH, f"'{expr.name.text}' is a {symbol.type.name}, a "
                         f"{signal_type.name} is required", expr.span)
+        compiler.note_io_read()            # (a parameter, signal data: any signal)
         if symbol.kind == LOCAL_DATA and symbol.by_reference:
             # a signal parameter of this routine: its caller bound the physical index
             slot = symbol.slot
             return lambda m: m.frames[-1].locals[slot]
+    else:
+        compiler.note_io_read()
     ref_fn, _, _ = compiler.reference(expr, "used as a signal")
 
     def bound_index(m):

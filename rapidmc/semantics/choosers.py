@@ -126,6 +126,11 @@ class CheckConfig:
         # stored digital inputs put at rest where no active interrupt watches them: index ->
         # name (``resting_inputs``); empty: every value stored, exact
         self.resting_inputs: dict = {}
+        # a step leaves those and the edge inputs unchosen where it reads no signal and no
+        # active interrupt watches them (``unread_inputs``); False: every step chooses every
+        # value
+        self.inputs_where_read = False
+        self.input_choices = None        # (program, unread_inputs.InputChoices)
         # called between two runs of one step with different choices: the search engine's
         # ``check.budget.time_check`` raises there once the running search's time is up,
         # so a step with thousands of successors cannot run far past the time limit
@@ -174,6 +179,7 @@ class CheckConfig:
         held = copy.copy(self)
         held.free_inputs = ()
         held.resting_inputs = {}
+        held.input_choices = None
         held.input_valuations = ((),)
         held.input_assignments = ((),)
         held.input_labels = ((),)

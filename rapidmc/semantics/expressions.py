@@ -272,9 +272,10 @@ class ExpressionCompiler:
         # of outside data there takes only that array's indexes (``_outside_index``)
         self.index_lengths: dict[int, int] = {}
 
-    def note_io_read(self) -> None:
+    def note_io_read(self, index: Optional[int] = None) -> None:
+        """The code reads signal ``index`` (None: one not known at compile time)."""
         if self.io_reader is not None:
-            self.io_reader()
+            self.io_reader(index)
 
     # ------------------------------------------------------------------ entry
     def value(self, expr: ast.Expr, expected: Optional[AnyType] = None) -> Compiled:
@@ -603,7 +604,7 @@ class ExpressionCompiler:
         slot = symbol.slot
         rapid_type = symbol.type
         if kind == SIGNAL:
-            self.note_io_read()
+            self.note_io_read(slot)
             self.linker.note_signal_named(slot)
             return Compiled(lambda m: m.io[slot], NUM, source=f"_read(cx, {slot})", names={})
         is_signal = isinstance(rapid_type, RapidType) and rapid_type.kind == SEMI_VALUE

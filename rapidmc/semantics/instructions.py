@@ -22,8 +22,8 @@ from . import values
 
 
 class Instruction:
-    __slots__ = ("span", "next", "start", "after", "text", "reads_io", "chooses", "fusion",
-                 "machine")
+    __slots__ = ("span", "next", "start", "after", "text", "reads_io", "signals_read",
+                 "chooses", "fusion", "machine")
 
     def __init__(self, span):
         self.span = span
@@ -31,6 +31,8 @@ class Instruction:
         self.start = -1
         self.after = -1
         self.reads_io = False       # may read a signal value (inputs matter to this step)
+        # the signals it may read where ``reads_io``, by their names (None: any signal)
+        self.signals_read: Optional[frozenset] = frozenset()
         # may choose a value of data written from outside the loaded code
         # (``load.outside_data``): a merged step stops before it once a choice was made
         self.chooses = False

@@ -34,6 +34,7 @@ from .edge_traps import calmed, edge_interrupt, own_edges, routine_task
 from .robots import task_robot, with_task_robot
 from .state import ENDED, FAILED, RUNNING, Frame, Interrupts, State, Transition
 from .task_registers import put_back, task_view
+from .unread_inputs import input_choices, rested, watches_any
 
 _new_tuple = tuple.__new__
 
@@ -81,28 +82,59 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
     owners = [] if len(runnable) > 1 and not steps.input_named_task else None
     views = {}                           # task -> _task_parts (without interrupts: plans)
     result = []
-    append = result.append
     time_check = config.time_check
-    for io, ready_io, input_label in zip(inputs, ready, config.input_labels):
+    choices = input_choices(program, config)
+    unchosen = {task: choices.unchosen(program, state, task) for task in runnable} \
+        if choices is not None else {}
+    standing: set = set()                # positions of transitions for several valuations
+    for number, (io, ready_io, input_label) in enumerate(
+            zip(inputs, ready, config.input_labels)):
         time_check()                     # (a valuation: one step per runnable task)
         for task, task_label in zip(runnable, task_labels):
-            label = input_label + task_label if input_label else task_label
-            if plans is not None:
-                _task_steps(state, task, label, ready_io, plans[task], steps, shared, result)
-            else:
-                parts = views.get(task)
-                if parts is None:
-                    parts = views[task] = _task_parts(program, state, task, state[4])
-                view = _new_tuple(State, (stacks[task], state[1], io) + parts)
-                for transition in steps(view, task, shared):
-                    append(_in_task(program, state, task, label, transition))
+            left = unchosen.get(task)
+            if left:                     # (valuation 0, every input first, always runs)
+                kept = choices.kept(left)
+                if not kept.runs[number]:
+                    continue
+                start = len(result)
+                _one_task(program, state, task, kept.labels[number] + task_label, io,
+                          ready_io, plans, views, steps, shared, result)
+                if number == 0 and watches_any(result[start:], left):
+                    del result[start:]       # it makes an interrupt on one active
+                    unchosen[task] = frozenset()
+                    left = None
+                else:
+                    result[start:] = rested(result[start:], kept.rest)
+                    standing.update(range(start, len(result)))
+            if not left:
+                label = input_label + task_label if input_label else task_label
+                _one_task(program, state, task, label, io, ready_io, plans, views, steps,
+                          shared, result)
             if owners is not None:
                 owners += [task_label[0][1]] * (len(result) - len(owners))
     if not tasks and config.merge_points and _may_merge(result):
         return None
     if tasks:
-        result = idle_steps_dropped(state, result, owners)
+        result = idle_steps_dropped(state, result, owners, standing)
     return edges_at_rest(result, config.edge_inputs)
+
+
+def _one_task(program, state: State, task: int, label: tuple, io, ready_io,
+              plans: Optional[dict], views: dict, steps: "ViewSteps", shared: Optional[dict],
+              result: list) -> None:
+    """The steps of ``task`` from ``state`` under one input valuation (``io``; ``ready_io``
+    with the delayed signal changes done), labelled ``label``, appended to ``result``."""
+    if plans is not None:
+        _task_steps(state, task, label, ready_io, plans[task], steps, shared, result)
+        return
+    parts = views.get(task)
+    if parts is None:
+        parts = views[task] = _task_parts(program, state, task, state[4])
+    stack = state[0] if task == 0 else state[10][task - 1]
+    view = _new_tuple(State, (stack, state[1], io) + parts)
+    append = result.append
+    for transition in steps(view, task, shared):
+        append(_in_task(program, state, task, label, transition))
 
 
 def edges_at_rest(transitions: list, edges: dict) -> list:
@@ -512,17 +544,19 @@ def deactivated(table: tuple, number: int) -> tuple:
 # ---------------------------------------------------------------------------
 
 def idle_steps_dropped(state: State, transitions: list,
-                       owners: Optional[list] = None) -> list:
+                       owners: Optional[list] = None, standing=()) -> list:
     """Tasks share the controller fairly: a task whose step changes nothing (it waits)
     does not take the turn from a task that can go on.  If no task can go on, every
     idle step stays (the program may be deadlocked).  ``owners``: each transition's
-    ``task_of``, when known."""
+    ``task_of``, when known.  ``standing``: the positions of transitions that stand
+    for every value of an input the step left unchosen (``unread_inputs``): they change
+    it in the model with every valuation, so they count as changes."""
     if owners is None:
         owners = [task_of(transition) for transition in transitions]
     moving = set()
     moved = []
-    for transition, owner in zip(transitions, owners):
-        change = transition[2] != state
+    for position, (transition, owner) in enumerate(zip(transitions, owners)):
+        change = transition[2] != state or position in standing
         moved.append(change)
         if change:
             moving.add(owner)

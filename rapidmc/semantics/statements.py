@@ -61,6 +61,7 @@ class RoutineCompiler:
         self.statement_start: Optional[Label] = None
         self.statement_after: Optional[Label] = None
         self.statement_reads_io = False
+        self.statement_signals: Optional[set] = set()    # (None: any signal)
         self.statement_chooses = False
         self.statement_code: list[Instruction] = []
 
@@ -194,27 +195,36 @@ class RoutineCompiler:
 
     def statement(self, statement, follow: Label) -> None:
         saved = (self.statement_start, self.statement_after, self.statement_reads_io,
-                 self.statement_chooses, self.statement_code)
+                 self.statement_chooses, self.statement_code, self.statement_signals)
         self.statement_start = self.here()
         self.statement_after = follow
         self.statement_reads_io = False
+        self.statement_signals = set()
         self.statement_chooses = False
         self.statement_code = []
         try:
             getattr(self, "_" + type(statement).__name__)(statement, follow)
             if self.statement_reads_io:
+                signals = self.statement_signals
+                signals = None if signals is None else frozenset(signals)
                 for instruction in self.statement_code:
                     instruction.reads_io = True
+                    instruction.signals_read = signals
             if self.statement_chooses:
                 for instruction in self.statement_code:
                     # (a jump evaluates nothing: the merged run goes on through it)
                     instruction.chooses = type(instruction) not in (Jump, ForNext)
         finally:
             (self.statement_start, self.statement_after, self.statement_reads_io,
-             self.statement_chooses, self.statement_code) = saved
+             self.statement_chooses, self.statement_code, self.statement_signals) = saved
 
-    def _note_io_read(self) -> None:
+    def _note_io_read(self, index: Optional[int] = None) -> None:
+        """The statement reads signal ``index`` (None: a signal not known here)."""
         self.statement_reads_io = True
+        if index is None:
+            self.statement_signals = None
+        elif self.statement_signals is not None:
+            self.statement_signals.add(index)
 
     def _note_choice(self) -> None:
         self.statement_chooses = True

@@ -30,6 +30,7 @@ from .program import Program
 from .state import ENDED, FAILED, RUNNING, STOPPED, Frame, Interrupts, State, Transition
 from .lazy_inputs import InputView
 from .resting_inputs import at_rest
+from .unread_inputs import unchosen_dropped
 from .robots import NoTaskRobot, initial_robots, task_robot, with_task_robot
 from .choosers import Chooser, CheckConfig, ScriptChooser  # noqa: F401 (the step's interface)
 from .fused_step import fused_successors
@@ -223,7 +224,8 @@ def general_driver_successors(program: Program, state: State, config: CheckConfi
                                          lambda script: ScriptChooser(script, config),
                                          config.time_check))
     if state.tasks:
-        transitions = idle_steps_dropped(state, transitions)
+        transitions, standing = unchosen_dropped(program, state, transitions, config)
+        transitions = idle_steps_dropped(state, transitions, standing=standing)
     return edges_at_rest(transitions, config.edge_inputs)
 
 
