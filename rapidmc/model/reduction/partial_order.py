@@ -211,10 +211,26 @@ class PartialOrder:
             mine = [entry for entry in successors if (TASK_CHOICE, name) in entry[0][0]]
             if self.runs is not None:
                 mine = self.runs.extend(state, mine, config)
-            if mine and all(self._invisible_step(task, state, after, config, here)
-                            for _, after in mine):
+            if mine and self._all_invisible(task, state, mine, config, here):
                 return mine
         return None
+
+    def _all_invisible(self, task: int, state: State, entries: list, config,
+                       here: int) -> bool:
+        """Whether every step of ``entries`` (one task's, from ``state``) may be ample
+        (``_invisible_step``), judged once per target: the valuations of edge inputs
+        that start no TRAP of the task lead to one state (``staged_step.edge_choices``)."""
+        judged: dict = {}               # key -> [(target, judgement)]
+        key = self.keys.key
+        for _, after in entries:
+            met = judged.setdefault(key(after), [])
+            found = next((verdict for target, verdict in met if target == after), None)
+            if found is None:
+                found = self._invisible_step(task, state, after, config, here)
+                met.append((after, found))
+            if not found:
+                return False
+        return True
 
     def _labelled(self, state: State, found: list, config) -> list:
         """One task's transitions ``found`` (``task_transitions``) as the system gives
