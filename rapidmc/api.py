@@ -63,7 +63,7 @@ from .ltl import read_hoa, to_buchi
 from .ltl.syntax import Not
 from .model import reduction
 from .model.fairness import TaskFairness, assumes_fairness, fair_or_plain_search
-from .model.edge_inputs import edge_inputs, realizable, served_edges
+from .model.edge_inputs import edge_inputs, realizable, served_edges, shared_edges
 from .semantics.resting_inputs import resting_inputs
 from .model.inputs import free_input_domains, observed_inputs
 from .model.robot_tracking import robot_untracked
@@ -279,6 +279,7 @@ def _check_config(program: Program, atoms: AtomCompiler, options: CheckOptions,
     if options.edge_inputs:
         config.edge_inputs = dict(facts.edges)
         config.served_edges = facts.served_edges
+        config.shared_edges = facts.shared_edges
         config.resting_inputs = resting_inputs(config, atoms)
         config.inputs_where_read = options.inputs_where_read
     config.time_check = time_check       # the running search's time limit, inside a step
@@ -300,6 +301,7 @@ class _InputFacts:
     observed: Optional[frozenset]        # observed_inputs (None: every input)
     edges: dict                          # edge_inputs
     served_edges: tuple                  # edge_inputs.served_edges of those
+    shared_edges: tuple                  # edge_inputs.shared_edges: served by several tasks
     robot_untracked: bool                # robot_tracking.robot_untracked
 
 
@@ -316,7 +318,8 @@ def _input_facts(program: Program, atoms: AtomCompiler) -> _InputFacts:
         observed = observed_inputs(program, atoms)
         edges = edge_inputs(program, atoms, observed)
         facts = _InputFacts(None if observed is None else frozenset(observed), edges,
-                            served_edges(program, edges), robot_untracked(program, atoms))
+                            served_edges(program, edges), shared_edges(program, edges),
+                            robot_untracked(program, atoms))
         memo[key] = facts
     return facts
 
@@ -641,7 +644,8 @@ def _edges_realizable(model: Model, results: list) -> bool:
     if not edges:
         return True
     names = {signal.name: signal.index for signal in model.program.signals}
-    return all(realizable(r.result, edges, names, model.program, model.config.served_edges)
+    return all(realizable(r.result, edges, names, model.program, model.config.served_edges,
+                          model.config.shared_edges)
                for r in results
                if r.result.verdict == VIOLATED)
 

@@ -156,7 +156,7 @@ def test_a_task_serving_an_interrupt_taken_as_ample_loses_a_trap(tmp_path, monke
     assert never_reached(check_json(argv)) == never_reached(full)
     from rapidmc.model.reduction import partial_order
     monkeypatch.setattr(partial_order, "serving_tasks",
-                        lambda program, interrupts, quiet=None: frozenset())
+                        lambda program, interrupts, quiet=None, edges=(): frozenset())
     lost = never_reached(check_json(argv)) - never_reached(full)
     assert {line for _, line in lost} == {16}           # TRAP onEvent
 

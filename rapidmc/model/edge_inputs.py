@@ -100,10 +100,26 @@ def _watched(program, routine, order: ast.ProcedureCall, names: dict,
 
 
 def served_edges(program, edges: dict) -> tuple:
-    """The edge inputs of ``edges`` whose interrupt orders are all in the routines of one
-    task: their edges start a TRAP in their own step or are dropped
-    (``semantics.edge_traps``).  An input several tasks watch keeps one edge for all."""
-    tasks: dict = {}                # signal index -> tasks whose routines order on it
+    """The edge inputs of ``edges`` whose interrupt orders are in the routines of a task:
+    their edges start a TRAP in a step of that task or are dropped
+    (``semantics.edge_traps``).  An input several tasks watch is served by each of them
+    apart (``shared_edges``)."""
+    return tuple(sorted(_edge_owners(program, edges)))
+
+
+def shared_edges(program, edges: dict) -> tuple:
+    """The served edge inputs that the interrupts of several tasks watch: each task's TRAP
+    start chooses its own edge, so a run may have one task see an edge the other never
+    does, which no real input gives (``realizable`` sends such a counterexample to the
+    exact model)."""
+    return tuple(sorted(index for index, owners in _edge_owners(program, edges).items()
+                        if len(owners) > 1))
+
+
+def _edge_owners(program, edges: dict) -> dict:
+    """Signal index -> the tasks whose routines order an interrupt on it, per edge input
+    of ``edges`` some order names."""
+    tasks: dict = {}
     names = {signal.key: signal.index for signal in program.signals}
     aliased = AliasedOrders(program)
     for routine in program.routines:
@@ -117,7 +133,7 @@ def served_edges(program, edges: dict) -> tuple:
                 for index in (named, aliased.watched(routine, node)):
                     if index in edges:
                         tasks.setdefault(index, set()).add(routine_task(routine.namespace))
-    return tuple(sorted(index for index, owners in tasks.items() if len(owners) == 1))
+    return tasks
 
 
 def _trigger(expression) -> Optional[int]:
@@ -139,7 +155,8 @@ def _literal_names(call) -> bool:
     return True
 
 
-def realizable(result, edges: dict, names: dict, program=None, served: tuple = ()) -> bool:
+def realizable(result, edges: dict, names: dict, program=None, served: tuple = (),
+               shared: tuple = ()) -> bool:
     """Whether the counterexample ``result`` (a ``SearchResult``, replayed on the unreduced
     system: one instruction per step) of a model with these edge inputs is a run of the
     exact model: no input watched for its rising edge is 1 in two steps in a row (round
@@ -151,8 +168,14 @@ def realizable(result, edges: dict, names: dict, program=None, served: tuple = (
     An input of ``served`` (``served_edges``, with ``program``) counts only in the steps
     where its edge started a TRAP (elsewhere it was dropped: ``semantics.edge_traps``), and
     such a step must start from a state with no interrupt pending: the exact model's edge
-    one step earlier is then the first in its queue."""
+    one step earlier is then the first in its queue.  An input of ``shared``
+    (``shared_edges``: several tasks' interrupts watch it) must start no TRAP at all: each
+    task chose its own edge, and the run may need one edge that one task saw and another,
+    watching it too, did not.
+
+    Conservative: False sends the check to the exact model (RMC733), which decides."""
     served_names = {name for name, index in names.items() if index in served}
+    shared_names = {name for name, index in names.items() if index in shared}
     rising = {name for name, index in names.items() if index in edges and not edges[index]}
     if not rising and not served_names:
         return True
@@ -169,7 +192,7 @@ def realizable(result, edges: dict, names: dict, program=None, served: tuple = (
             source, target = states[position], states[position + 1]
             if not _trap_started(program, source, target):
                 ones -= served_names
-            elif source.interrupts.pending:
+            elif source.interrupts.pending or ones & shared_names:
                 return False
         marks.append(ones & rising)
     if result.cycle:

@@ -120,9 +120,12 @@ class CheckConfig:
         # watched; every state after a step keeps them at 0 (``model.edge_inputs``);
         # empty: the exact model
         self.edge_inputs: dict = {}
-        # those of them one task's interrupts watch: an edge starts its TRAP in its own
-        # step or is dropped (``edge_traps``)
+        # those of them some task's interrupts watch: an edge starts a TRAP of the task
+        # whose step brings it or is dropped (``edge_traps``)
         self.served_edges: tuple = ()
+        # those of them several tasks' interrupts watch: each task's step chooses its own
+        # edge (``edge_inputs.shared_edges``)
+        self.shared_edges: tuple = ()
         # stored digital inputs put at rest where no active interrupt watches them: index ->
         # name (``resting_inputs``); empty: every value stored, exact
         self.resting_inputs: dict = {}

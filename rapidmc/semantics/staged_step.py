@@ -157,15 +157,17 @@ def task_transitions(program, state: State, task: int,
                      config: CheckConfig) -> Optional[list]:
     """The transitions of ``task`` alone from ``state``: those of ``staged_successors``
     whose label names the task, in the same order, without the idle steps dropped;
-    None where the state has delayed signal changes, stored inputs, edge inputs or an
-    environment reaction (or the task has ended).  With interrupts, as there: the task's
-    timers may fire, a pending TRAP of its own starts instead of the instruction, and
-    signal edges queue their interrupts.  Partial-order reduction extends a step of one
-    task with its task-local instructions (``reduction.partial_order``) without stepping
+    None where the state has delayed signal changes, stored inputs other than served
+    edge inputs, or an environment reaction (or the task has ended).  With interrupts,
+    as there: the task's timers may fire, a pending TRAP of its own starts instead of
+    the instruction, and signal edges queue their interrupts.  With served edge inputs
+    (``edge_traps``), of the valuations that lead to the same targets only the first
+    is taken (``edge_choices``).  Partial-order reduction extends a step of one task
+    with its task-local instructions (``reduction.partial_order``) without stepping
     the others."""
     interrupts = state[4]
-    if program.environment_react is not None or config.free_inputs or \
-            program.reads_task_robots or interrupts[3]:
+    if program.environment_react is not None or program.reads_task_robots or \
+            interrupts[3] or not edges_only(config):
         return None
     stacks = (state[0],) + state[10]
     if not stacks[task]:
@@ -173,18 +175,60 @@ def task_transitions(program, state: State, task: int,
     runnable = [i for i, stack in enumerate(stacks) if stack]
     steps = view_steps(program, config)
     label = steps.task_labels(runnable)[runnable.index(task)]
+    inputs = steps.input_values(state[2])
     if interrupts[0] or interrupts[1]:
-        if config.edge_inputs or not is_staged(program, state, config):
+        if not is_staged(program, state, config):
             return None
         plan = _task_plan(program, stacks[task], task,
                           steps.timer_choices(program, interrupts, task))
         found: list = []
-        _task_steps(state, task, label, state[2], plan, steps, None, found)
-        return found
-    view = _new_tuple(State, (stacks[task], state[1], state[2]) +
+        for io, input_label in edge_choices(program, state, task, plan, inputs, config):
+            _task_steps(state, task, input_label + label if input_label else label, io,
+                        plan, steps, None, found)
+        return edges_at_rest(found, config.edge_inputs)
+    # (no interrupt: an edge starts no TRAP and queues nothing; the first valuation)
+    view = _new_tuple(State, (stacks[task], state[1], inputs[0]) +
                       _task_parts(program, state, task, state[4]))
-    return [_in_task(program, state, task, label, transition)
-            for transition in steps(view, task, None)]
+    label = config.input_labels[0] + label if config.input_labels[0] else label
+    return edges_at_rest([_in_task(program, state, task, label, transition)
+                          for transition in steps(view, task, None)], config.edge_inputs)
+
+
+def edges_only(config: CheckConfig) -> bool:
+    """Whether every stored free input is a served edge input (``edge_traps``: an edge
+    starts a TRAP of the task whose step chose it, or is dropped), or there are none."""
+    if not config.free_inputs:
+        return True
+    own = own_edges(config)
+    return all(index in own for index, _, _ in config.free_inputs)
+
+
+def edge_choices(program, state: State, task: int, plan: list, inputs: list,
+                 config: CheckConfig) -> list:
+    """(signal values, input label) of the valuations of the stored free inputs, all
+    served edge inputs (``edges_only``), that a step of ``task`` from ``state`` needs: in
+    order, the first of those that start the same TRAP (or none) in each ``plan`` entry.
+    Nothing but an interrupt order names an edge input, and the step's end puts it at
+    0 again (``edges_at_rest``), so the valuations that start the same TRAPs give the
+    same targets: an edge of another task's interrupt is dropped in this task's step,
+    and so is every edge where the task cannot start a TRAP (``edge_traps``)."""
+    labels = config.input_labels
+    if len(inputs) == 1:
+        return [(inputs[0], labels[0])]
+    own = own_edges(config)
+    before = state[2]
+    stack = state[0] if task == 0 else state[10][task - 1]
+    open_plan = [] if in_trap(program, stack) else \
+        [chosen[0] for _, _, _, chosen in plan if _enabled(program, chosen, task)]
+    seen = set()
+    kept = []
+    for io, input_label in zip(inputs, labels):
+        key = tuple(edge_interrupt(program, table, own, before, io, task)
+                    for table in open_plan)
+        if key not in seen:
+            seen.add(key)
+            kept.append((io, input_label))
+    return kept
 
 
 class ViewSteps:

@@ -68,6 +68,15 @@ def _with(values: tuple, task: int, value) -> tuple:
     return values[:task] + (value,) + values[task + 1:]
 
 
+def others_unchanged(program, before, after, task: int) -> bool:
+    """Whether a register (ERRNO, INTNO) is the same before and after a step of ``task``
+    for every other task: with one register for all (a program of one task), whether it
+    is the same."""
+    if not program.registers_per_task:
+        return before == after
+    return before[:task] == after[:task] and before[task + 1:] == after[task + 1:]
+
+
 def take_task_view(m, task: int) -> tuple:
     """Give the machine ``m`` task ``task``'s view; returns what ``give_back`` needs."""
     before = (m.interrupts, m.errno, m.intno)

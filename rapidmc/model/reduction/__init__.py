@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 from typing import Iterable, Optional
 
 from ...diagnostics import ORDER_REDUCTION, Diagnostic
+from ...semantics.edge_traps import own_edges
 from ...semantics.program import Program
 from .counters import NO_COUNTERS, find_counters
 from .merging import LOCATION_ATOMS, _has_next, merge_points, merging_allowed
@@ -121,10 +122,20 @@ def _partial_order(program: Program, config, formulas: list, keys: set[str],
                                  "uses X (next), whose verdict depends on the interleaving "
                                  "of the tasks' steps", severity="note"),)
     if None in formulas or program.environment_react is not None or \
-            program.environment_init is not None or config.free_inputs or \
+            program.environment_init is not None or inputs_stored(config) or \
             keys & LOCATION_ATOMS or reaches_data_by_name(program):
         return None, ()
     return PartialOrder(program, keys, merge, projection), ()
+
+
+def inputs_stored(config) -> bool:
+    """Whether a free input keeps the value a step chose in the state after it, so that
+    every step would change the state.  A served edge input does not (``edge_traps``):
+    every state after a step keeps it at 0, and its edge starts a TRAP of the task whose
+    step chose it or is dropped, so a step of one task neither queues another's interrupt
+    nor leaves a value another task's step would see (``interrupt_owners``)."""
+    served = own_edges(config)
+    return any(index not in served for index, _, _ in config.free_inputs)
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

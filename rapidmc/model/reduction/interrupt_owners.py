@@ -39,6 +39,21 @@ then).  Timers, persistent-data interrupts, input and analog-input edges and a
 pending interrupt keep the task serving.  (The joseballester socket server orders its
 reset interrupt on an output no loaded code sets to 1: it is ample again wherever the
 interrupt has not come, instead of never.)
+
+**Interrupts on edge inputs.**  An interrupt ordered on a served edge input
+(``model.edge_inputs.served_edges``; ``semantics.edge_traps``) is never queued: its edge
+is chosen in a step of its own task, which starts the TRAP then (pushes a frame on its own
+stack, sets its own INTNO, deactivates its own entry when ``\\Single``), and in a step of
+any other task the edge is dropped.  So where every connected interrupt of a task is on
+such an input (or quiet) and none is pending, no other task's step reads or writes
+anything of its interrupts, and the task's steps, TRAP starts among them, are its own:
+the ample sets (``partial_order``, with ERRNO, INTNO and the enable flag per task,
+``Program.registers_per_task``) may take all of them, its instruction judged as usual and
+each TRAP start an invisible step of its task.  Local runs (``local_runs``) still stop
+before such a task's next step, which may be a TRAP start instead of the instruction.  A
+task whose intnum data another task's code names keeps the old rule.  (The PickMaster
+supervision server serves five interrupts on edge inputs and the project manager one:
+before, both served in every state once connected, and no task was ever ample.)
 """
 from __future__ import annotations
 
@@ -49,11 +64,13 @@ from ...semantics.edge_traps import routine_task
 OUTPUT_KINDS = frozenset({"DO"})     # (ISignalDI and ISignalDO order "signal" sources)
 
 
-def serving_tasks(program, interrupts, quiet=None) -> Optional[frozenset]:
+def serving_tasks(program, interrupts, quiet=None, edges: tuple = ()) -> Optional[frozenset]:
     """The tasks whose next step the interrupt state ``interrupts`` may change (their
     own TRAPs; none without interrupts), or None when it may change any task's (a
     delayed signal change due, a pending interrupt no longer connected); ``quiet``:
-    an ``InterruptOwners`` whose quiet interrupts make no task serve."""
+    an ``InterruptOwners`` whose quiet interrupts make no task serve, nor, with the
+    served edge inputs ``edges``, the interrupts on them (``InterruptOwners.on_own_edge``:
+    for the ample sets only, whose task's steps include those TRAP starts)."""
     table, pending, scheduled = interrupts[0], interrupts[1], interrupts[3]
     if not (table or pending or scheduled):
         return frozenset()
@@ -64,7 +81,9 @@ def serving_tasks(program, interrupts, quiet=None) -> Optional[frozenset]:
         return None
     routines = program.routines
     return frozenset(routine_task(routines[entry[1]].namespace) for entry in table
-                     if quiet is None or not quiet.is_quiet(entry, pending))
+                     if quiet is None or not (quiet.is_quiet(entry, pending) or
+                                              edges and quiet.on_own_edge(entry, pending,
+                                                                          edges)))
 
 
 class InterruptOwners:
@@ -107,6 +126,17 @@ class InterruptOwners:
         if found is None:
             found = self._quiet_signal[key] = self._own_output(task, source[1])
         return found
+
+    def on_own_edge(self, entry, pending: tuple, edges: tuple) -> bool:
+        """Whether interrupt ``entry`` is ordered on one of the served edge inputs
+        ``edges`` and is not pending (the module docstring, "Interrupts on edge inputs"):
+        its TRAP starts only in a step of its own task, which chooses the edge."""
+        if entry[0] in pending or not self.program.registers_per_task:
+            return False
+        source = entry[2]
+        if not source or source[0] != "signal" or source[1] not in edges:
+            return False
+        return routine_task(self.program.routines[entry[1]].namespace) not in self._shared
 
     def _own_output(self, task: int, index: int) -> bool:
         signal = self.program.signals[index]

@@ -55,7 +55,8 @@ then runs on through its task's next independent, invisible instructions
 of the LTL properties without X (next) over these atoms, reachability of
 FAILED and of states where the program waits forever; ``plan_reductions``
 turns it off for a property with X, an atom on locations (AtLine, InRoutine
-...), stored free inputs (every step would change them), environment models,
+...), stored free inputs (every step would change them; a served edge input is kept at
+0 after every step and stays on: ``reduction.inputs_stored``), environment models,
 and data reached by name at run time in another task or by pattern
 (``\\TaskName``, SetAllDataVal, GetNextSym); GetDataVal and SetDataVal look the
 name up where the call is, so a task's SetDataVal counts as a write of every
@@ -76,6 +77,7 @@ from typing import Optional
 from ... import ast
 from ...load.shared_data import data_uses
 from ...semantics.configured_signals import walk_routine
+from ...semantics.edge_traps import own_edges
 from ...semantics.instructions import (Action, Branch, Call, ControlAction, EndRoutine,
                                        ForInit, ForNext, Jump, Return, TestDispatch, Wait)
 from ...semantics.library.tasks import SyncWait
@@ -83,6 +85,7 @@ from ...semantics.program import ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE, Pr
 from ...semantics.scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA
 from ...semantics.staged_step import task_transitions
 from ...semantics.state import RUNNING, State
+from ...semantics.task_registers import others_unchanged
 from ...semantics.step import successors as semantic_successors
 from ..state_keys import StateKeys
 from .local_runs import LocalRuns
@@ -170,7 +173,7 @@ class PartialOrder:
         ample subset of one task's transitions (``config``: the system's, with which a
         task's steps are computed to tell whether it waits)."""
         # the tasks whose next steps interrupts may change (None: every task's)
-        serving = serving_tasks(self.program, state[4], self.owners) \
+        serving = serving_tasks(self.program, state[4], self.owners, own_edges(config)) \
             if state[7] == RUNNING else None
         stacks = (state[0],) + state[10]
         running = [task for task, stack in enumerate(stacks) if stack]
@@ -208,10 +211,26 @@ class PartialOrder:
             mine = [entry for entry in successors if (TASK_CHOICE, name) in entry[0][0]]
             if self.runs is not None:
                 mine = self.runs.extend(state, mine, config)
-            if mine and all(self._invisible_step(task, state, after, config, here)
-                            for _, after in mine):
+            if mine and self._all_invisible(task, state, mine, config, here):
                 return mine
         return None
+
+    def _all_invisible(self, task: int, state: State, entries: list, config,
+                       here: int) -> bool:
+        """Whether every step of ``entries`` (one task's, from ``state``) may be ample
+        (``_invisible_step``), judged once per target: the valuations of edge inputs
+        that start no TRAP of the task lead to one state (``staged_step.edge_choices``)."""
+        judged: dict = {}               # key -> [(target, judgement)]
+        key = self.keys.key
+        for _, after in entries:
+            met = judged.setdefault(key(after), [])
+            found = next((verdict for target, verdict in met if target == after), None)
+            if found is None:
+                found = self._invisible_step(task, state, after, config, here)
+                met.append((after, found))
+            if not found:
+                return False
+        return True
 
     def _labelled(self, state: State, found: list, config) -> list:
         """One task's transitions ``found`` (``task_transitions``) as the system gives
@@ -225,12 +244,14 @@ class PartialOrder:
                         here: int) -> bool:
         """Whether a step of ``task`` from ``state`` to ``after`` may be ample: it did what
         its instruction does without an error (ERRNO is every task's, and a handler or an
-        unwinding changes the task's frames), the task can go on in ``after`` (so
+        unwinding changes the task's frames) or started a TRAP of the task (its own INTNO
+        changes: ``interrupt_owners``, edge inputs), the task can go on in ``after`` (so
         ``waits(task)`` of ``no_deadlock``'s search stays false, as in ``state``, where
         its instruction was independent), and ``after`` was not numbered before the state,
         whose number is ``here`` (C3)."""
         if after[7] != RUNNING or after == state or after[5] != state[5] or \
-                after[6] != state[6] or 0 <= self.places().place(after) <= here:
+                not others_unchanged(self.program, state[6], after[6], task) or \
+                0 <= self.places().place(after) <= here:
             return False
         before = state[0] if task == 0 else state[10][task - 1]
         stack = after[0] if task == 0 else after[10][task - 1]
