@@ -57,7 +57,6 @@ from typing import Callable, Optional
 from ...semantics.staged_step import task_transitions
 from ...semantics.instructions import Wait
 from ...semantics.state import State
-from .barrier_holds import BarrierHolds, held
 from .empty_deletes import EmptyDeletes
 
 GROUPS_KEPT = 1 << 14        # the groups per combination of the tasks' instructions kept
@@ -72,7 +71,6 @@ class TaskGroups:
         self._conflicts: dict = {}          # (task, routine, pc) -> frozenset or None
         self._groups: dict = {}             # the tasks' (task, routine, pc, empty) -> groups
         self.deletes = EmptyDeletes(order)  # IDelete of an intnum holding 0, per state
-        self.holds = BarrierHolds(order)    # tasks at a barrier waiting for a group's task
 
     def conflicts(self, task: int, routine: int, pc: int) -> Optional[frozenset]:
         """The other tasks whose code touches what the instruction at ``pc`` of ``routine``
@@ -109,14 +107,13 @@ class TaskGroups:
         """The groups of fewer than all running tasks, in the order of the task each is
         built from (each once), but for the one-task ample sets already tried."""
         empty = self._empty_deletes(stacks, running, state)
-        waiting = self.holds.waiting(state, stacks, running)
-        key = (tuple((task, stacks[task][-1][0], stacks[task][-1][1], task in empty)
-                     for task in running), waiting)
+        key = tuple((task, stacks[task][-1][0], stacks[task][-1][1], task in empty)
+                    for task in running)
         found = self._groups.get(key)
         if found is None:
             found = []
             for task in running:
-                group = self._held_closure(task, stacks, set(running), empty, waiting)
+                group = self._closure(task, stacks, set(running), empty)
                 if group is not None and len(group) < len(running) and \
                         group not in found and (len(group) > 1 or not self.order.
                                                 is_ample_candidate(task, *stacks[task][-1][:2])):
@@ -138,25 +135,8 @@ class TaskGroups:
                 found.append(task)
         return frozenset(found)
 
-    def _held_closure(self, task: int, stacks: tuple, running: set, empty: frozenset,
-                      waiting: tuple) -> Optional[tuple]:
-        """The group built from ``task``, leaving out the tasks a barrier holds for it
-        (``barrier_holds``); a task left out that turns out not to be held joins, and the
-        group is built again."""
-        waits_for = {waiter: missing for waiter, missing, _ in waiting}
-        joining: set = set()
-        while True:
-            skipped: set = set()
-            group = self._closure(task, stacks, running, empty, waits_for, joining, skipped)
-            if group is None:
-                return None
-            unheld = skipped - held(waiting, set(group), running)
-            if not unheld:
-                return group
-            joining |= unheld
-
-    def _closure(self, task: int, stacks: tuple, running: set, empty: frozenset,
-                 waits_for: dict, joining: set, skipped: set) -> Optional[tuple]:
+    def _closure(self, task: int, stacks: tuple, running: set,
+                 empty: frozenset) -> Optional[tuple]:
         group, work = {task}, [task]
         while work:
             member = work.pop()
@@ -165,14 +145,10 @@ class TaskGroups:
                 self.conflicts(member, frame[0], frame[1])
             if found is None:
                 return None
-            for other in sorted(found & running):
-                if other in group:
-                    continue
-                if other not in joining and waits_for.get(other, frozenset()) & group:
-                    skipped.add(other)        # (held at its barrier by the group)
-                    continue
-                group.add(other)
-                work.append(other)
+            for other in found & running:
+                if other not in group:
+                    group.add(other)
+                    work.append(other)
         return tuple(sorted(group))
 
     def choose(self, state: State, stacks: tuple, running: list, config, here: int,
