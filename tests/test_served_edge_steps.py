@@ -127,6 +127,14 @@ def test_one_task_reaches_every_target_of_its_steps(tmp_path, monkeypatch, serve
             assert found is not None and every is not None
             assert {t.state for t in found} == {t.state for t in every}
             assert {t.label for t in found} <= {t.label for t in every}
+            # the labels the whole state's step gives the task's steps that change
+            # something (idle ones it may drop), inputs a step leaves unchosen
+            # (``unread_inputs``) named in neither
+            whole = staged_step.staged_successors(program, state, config) or []
+            mine = {t.label for t in whole
+                    if staged_step.task_of(t) in (None, program.task_names[task])}
+            if mine:
+                assert {t.label for t in found if t.state != state} <= mine
             fewer += len(found) < len(every)
     assert fewer
 

@@ -34,7 +34,7 @@ from .edge_traps import calmed, edge_interrupt, own_edges, routine_task
 from .robots import task_robot, with_task_robot
 from .state import ENDED, FAILED, RUNNING, Frame, Interrupts, State, Transition
 from .task_registers import put_back, task_view
-from .unread_inputs import input_choices, rested, watches_any
+from .unread_inputs import input_choices, rested, unchosen_dropped, watches_any
 
 _new_tuple = tuple.__new__
 
@@ -162,7 +162,8 @@ def task_transitions(program, state: State, task: int,
     as there: the task's timers may fire, a pending TRAP of its own starts instead of
     the instruction, and signal edges queue their interrupts.  With served edge inputs
     (``edge_traps``), of the valuations that lead to the same targets only the first
-    is taken (``edge_choices``).  Partial-order reduction extends a step of one task
+    is taken (``edge_choices``); inputs the step leaves unchosen (``unread_inputs``)
+    are left out of its labels as there.  Partial-order reduction extends a step of one task
     with its task-local instructions (``reduction.partial_order``) without stepping
     the others."""
     interrupts = state[4]
@@ -185,13 +186,16 @@ def task_transitions(program, state: State, task: int,
         for io, input_label in edge_choices(program, state, task, plan, inputs, config):
             _task_steps(state, task, input_label + label if input_label else label, io,
                         plan, steps, None, found)
-        return edges_at_rest(found, config.edge_inputs)
+        return edges_at_rest(unchosen_dropped(program, state, found, config)[0],
+                             config.edge_inputs)
     # (no interrupt: an edge starts no TRAP and queues nothing; the first valuation)
     view = _new_tuple(State, (stacks[task], state[1], inputs[0]) +
                       _task_parts(program, state, task, state[4]))
     label = config.input_labels[0] + label if config.input_labels[0] else label
-    return edges_at_rest([_in_task(program, state, task, label, transition)
-                          for transition in steps(view, task, None)], config.edge_inputs)
+    found = [_in_task(program, state, task, label, transition)
+             for transition in steps(view, task, None)]
+    return edges_at_rest(unchosen_dropped(program, state, found, config)[0],
+                         config.edge_inputs)
 
 
 def edges_only(config: CheckConfig) -> bool:
