@@ -83,15 +83,15 @@ class CountingSteps:
         self._inside = False
         successors, successor_states = system.successors, system.successor_states
 
-        def labelled(state):
+        def labelled(state, *keep):
             self.labelled += not self._inside
-            return successors(state)
+            return successors(state, *keep)
 
-        def unlabelled(state):
+        def unlabelled(state, *keep):
             self.unlabelled += 1
             self._inside = True
             try:
-                return successor_states(state)
+                return successor_states(state, *keep)
             finally:
                 self._inside = False
         system.successors, system.successor_states = labelled, unlabelled
