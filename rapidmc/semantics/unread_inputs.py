@@ -63,6 +63,7 @@ class InputChoices:
         self.reducible = frozenset(i for i in reducible if i in self.positions)
         self.valuations = config.input_valuations
         self.labels = config.input_labels
+        self.label_numbers = {label: number for number, label in enumerate(self.labels)}
         self.first = tuple(domain[0] for _, _, domain in free)
         self.kept_by_left: dict = {}
 
@@ -152,8 +153,8 @@ def unchosen_dropped(program, state, transitions: list, config) -> tuple:
         if not left:
             continue
         kept = choices.kept(left)
-        index_of = {label: number for number, label in enumerate(choices.labels)}
-        chosen = {position: index_of[transitions[position][0][:count]]
+        numbers = choices.label_numbers
+        chosen = {position: numbers[transitions[position][0][:count]]
                   for position in positions}
         first_runs = [transitions[p] for p in positions if chosen[p] == 0]
         if watches_any(first_runs, left):
