@@ -52,6 +52,29 @@ def verdicts_and_states(argv, *, cwd: Path | str | None = None) -> dict:
             for p in document["properties"]}
 
 
+def other_task_module(lines: list) -> str:
+    """A second task for generated two-task programs: PERS ``flag`` and ``n`` shared with
+    the first task, its own ``m``, and ``lines`` run in an endless loop."""
+    return ("MODULE Other\n  PERS bool flag := FALSE;\n  PERS num n := 0;\n"
+            "  VAR num m := 0;\n  PROC main()\n    WHILE TRUE DO\n" +
+            "".join(f"      {line}\n" for line in lines) +
+            "    ENDWHILE\n  ENDPROC\nENDMODULE\n")
+
+
+def two_task_verdicts(tmp_path: Path, program: tuple, formulas: list, *flags: str,
+                      bound: int | None = None) -> dict:
+    """``verdicts_and_states`` of a two-task ``program`` (the texts of ``prog.mod`` and of
+    the task ``--add-task other.mod``) against ``formulas``, at ``--max-states bound`` when
+    given."""
+    (tmp_path / "prog.mod").write_text(program[0])
+    (tmp_path / "other.mod").write_text(program[1])
+    options = [word for formula in formulas for word in ("--formula", formula)]
+    if bound is not None:
+        options += ["--max-states", str(bound)]
+    return verdicts_and_states(["prog.mod", "--add-task", "other.mod", *options, *flags],
+                               cwd=tmp_path)
+
+
 def differing_verdicts(found: dict, exact: dict) -> list:
     """The properties (of two ``verdicts_and_states`` results) whose verdicts differ where
     the ``exact`` search ended: a reduction's differential test expects none."""

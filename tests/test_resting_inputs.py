@@ -17,7 +17,8 @@ import pytest
 
 from rapidmc.check import native
 
-from cli_capture import assert_reduction_keeps_verdicts, verdicts_and_states
+from cli_capture import (assert_reduction_keeps_verdicts, other_task_module, two_task_verdicts,
+                         verdicts_and_states)
 
 ENGINES = native.ENGINES if native.available() else (native.PYTHON,)
 
@@ -76,21 +77,13 @@ def resting_program(seed: int) -> tuple[str, str]:
              "      ISleep int1; IWatch int1;\n    ELSE\n      ISleep int1;\n    ENDIF\n"
              "  ENDPROC\n" + traps + "ENDMODULE\n")
     lines = [rnd.choice(OTHER_LINES) for _ in range(rnd.randint(1, 3))]
-    other = ("MODULE Other\n  PERS bool flag := FALSE;\n  PERS num n := 0;\n"
-             "  VAR num m := 0;\n  PROC main()\n    WHILE TRUE DO\n" +
-             "".join(f"      {line}\n" for line in lines) +
-             "    ENDWHILE\n  ENDPROC\nENDMODULE\n")
-    return first, other
+    return first, other_task_module(lines)
 
 
 def check(tmp_path, program: tuple[str, str], *flags: str, bound: int = 20000) -> dict:
     """Property -> (verdict, model states) of one in-process check of both tasks."""
-    (tmp_path / "prog.mod").write_text(program[0])
-    (tmp_path / "other.mod").write_text(program[1])
-    return verdicts_and_states(["prog.mod", "--add-task", "other.mod",
-                                "--max-states", str(bound),
-                                "--formula", 'few: G "hits < 3"',
-                                "--formula", 'calm: G F "n = 0"', *flags], cwd=tmp_path)
+    return two_task_verdicts(tmp_path, program, ['few: G "hits < 3"', 'calm: G F "n = 0"'],
+                             *flags, bound=bound)
 
 
 PROGRAMS = [resting_program(seed) for seed in range(14)]

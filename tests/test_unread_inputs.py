@@ -20,7 +20,7 @@ from rapidmc.check import native
 from rapidmc.semantics import unread_inputs
 from rapidmc.semantics.resting_inputs import watched_inputs
 
-from cli_capture import assert_reduction_keeps_verdicts, verdicts_and_states
+from cli_capture import assert_reduction_keeps_verdicts, other_task_module, two_task_verdicts
 
 ENGINES = native.ENGINES if native.available() else (native.PYTHON,)
 
@@ -72,20 +72,12 @@ def two_tasks(seed: int) -> tuple[str, str]:
              "  TRAP tR\n    n := 1;\n  ENDTRAP\nENDMODULE\n")
     lines = [rnd.choice(OTHER_LINES) for _ in range(rnd.randint(0, 2))] + \
         ["IF diA = 0 m := 2;"]
-    other = ("MODULE Other\n  PERS bool flag := FALSE;\n  PERS num n := 0;\n"
-             "  VAR num m := 0;\n  PROC main()\n    WHILE TRUE DO\n" +
-             "".join(f"      {line}\n" for line in lines) +
-             "    ENDWHILE\n  ENDPROC\nENDMODULE\n")
-    return first, other
+    return first, other_task_module(lines)
 
 
 def check(tmp_path, program: tuple[str, str], *flags: str, bound: int = 4000) -> dict:
     """Property -> (verdict, model states) of one in-process check of both tasks."""
-    (tmp_path / "prog.mod").write_text(program[0])
-    (tmp_path / "other.mod").write_text(program[1])
-    formulas = [word for formula in FORMULAS for word in ("--formula", formula)]
-    return verdicts_and_states(["prog.mod", "--add-task", "other.mod",
-                                "--max-states", str(bound), *formulas, *flags], cwd=tmp_path)
+    return two_task_verdicts(tmp_path, program, FORMULAS, *flags, bound=bound)
 
 
 PROGRAMS = [two_tasks(seed) for seed in range(8)]
@@ -124,12 +116,8 @@ def test_a_step_that_reads_the_input_chooses_it(tmp_path, monkeypatch):
     """The differential can fail: ``diR``, which an interrupt order names and then puts to
     sleep, is read by ``IF diR = 1``.  A mutant that leaves it unchosen there too reads
     only its first value, 0, and ``G !bad`` holds."""
-    (tmp_path / "prog.mod").write_text(SUPERVISED[0])
-    (tmp_path / "other.mod").write_text(SUPERVISED[1])
-
     def good(*flags: str) -> str:
-        return verdicts_and_states(["prog.mod", "--add-task", "other.mod", "--formula",
-                                    "good: G !bad", *flags], cwd=tmp_path)["good"][0]
+        return two_task_verdicts(tmp_path, SUPERVISED, ["good: G !bad"], *flags)["good"][0]
 
     assert good() == good("--inputs-every-step") == "VIOLATED"
     monkeypatch.setattr(unread_inputs.InputChoices, "unchosen",
