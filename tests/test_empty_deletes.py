@@ -9,7 +9,9 @@ verdicts (HOLDS and VIOLATED, an LTL formula and ``no_deadlock``), fewer states
 than with the rule off, the same reports with both engines; and a mutant taking
 every IDelete of a task's own intnum as deleting nothing loses a violation (an
 intnum holding a number another task's CONNECT hands out deletes that task's
-interrupt).
+interrupt).  The same handshake, its commander clearing the command twice, holds the
+verdicts of ``unchanged_writes`` (a write of the value already stored); its mutant is in
+tests/test_unchanged_writes.py.
 """
 from __future__ import annotations
 
@@ -19,7 +21,7 @@ import pytest
 
 from rapidmc.api import load_program
 from rapidmc.check import native
-from rapidmc.model.reduction import empty_deletes
+from rapidmc.model.reduction import empty_deletes, unchanged_writes
 from rapidmc.model.reduction.partial_order import PartialOrder
 
 from test_partial_order import (assert_rule_keeps_verdicts_and_pays, check_json, states,
@@ -77,6 +79,10 @@ ENDMODULE
 # worker answering what the commander does not wait for (it waits forever)
 VARIANTS = [("served", 1, "Ack"), ("counted twice", 2, "Ack"), ("wrong answer", 1, "Acked")]
 FORMULAS = ['once: G "count3 <= 1"', 'staged: G "stage < 2"']
+# the unreduced verdicts of (no_deadlock, once, staged) per variant
+EXPECTED = {"served": ("HOLDS", "HOLDS", "VIOLATED"),
+            "counted twice": ("HOLDS", "VIOLATED", "VIOLATED"),
+            "wrong answer": ("VIOLATED", "HOLDS", "HOLDS")}
 
 
 def task_files(folder: Path, texts) -> list[str]:
@@ -89,31 +95,45 @@ def task_files(folder: Path, texts) -> list[str]:
     return argv
 
 
-def write_handshake(folder: Path, step: int, ack: str) -> list[str]:
-    argv = task_files(folder, [COMMANDER] + [
-        WORKER.format(n=n, step=step if n == 3 else 1, ack=ack if n == 3 else "Ack")
+def write_handshake(folder: Path, step: int, ack: str, commander: str = COMMANDER,
+                    worker: str = WORKER) -> list[str]:
+    """The commander and three workers, worker 3 counting ``step`` and answering ``ack``,
+    with ``FORMULAS``."""
+    argv = task_files(folder, [commander] + [
+        worker.format(n=n, step=step if n == 3 else 1, ack=ack if n == 3 else "Ack")
         for n in (1, 2, 3)])
     for formula in FORMULAS:
         argv += ["--formula", formula]
     return argv
 
 
+# the commander clearing its command twice: the first write, of the value stored, goes on
+# to the second, which goes on where every worker is Ready (``unchanged_writes``)
+CLEARING_TWICE = COMMANDER.replace('    stCommand := "";\n',
+                                   '    stCommand := "";\n    stCommand := "";\n', 1)
+# (the commander, the rule the handshake exercises)
+RULES = {"empty deletes": (COMMANDER, empty_deletes.EmptyDeletes),
+         "unchanged writes": (CLEARING_TWICE, unchanged_writes.UnchangedWrites)}
+
+
+@pytest.mark.parametrize("rule", RULES)
 @pytest.mark.parametrize("name, step, ack", VARIANTS)
-def test_start_up_handshakes_keep_their_verdicts(tmp_path, monkeypatch, name, step, ack):
-    expected = {"served": ("HOLDS", "HOLDS", "VIOLATED"),
-                "counted twice": ("HOLDS", "VIOLATED", "VIOLATED"),
-                "wrong answer": ("VIOLATED", "HOLDS", "HOLDS")}[name]
+def test_start_up_handshakes_keep_their_verdicts(tmp_path, monkeypatch, name, step, ack,
+                                                 rule):
+    commander, rule_class = RULES[rule]
     assert_rule_keeps_verdicts_and_pays(
-        write_handshake(tmp_path, step, ack), expected,
-        lambda: monkeypatch.setattr(empty_deletes.EmptyDeletes, "reader",
-                                    lambda self, *where: None))
+        write_handshake(tmp_path, step, ack, commander), EXPECTED[name],
+        lambda: monkeypatch.setattr(rule_class, "reader", lambda self, *where: None))
+
 
 @needs_native
+@pytest.mark.parametrize("rule", RULES)
 @pytest.mark.parametrize("name, step, ack", VARIANTS[::2])
 def test_start_up_handshakes_report_the_same_with_both_engines(tmp_path, monkeypatch, name,
-                                                               step, ack):
+                                                               step, ack, rule):
     from test_native_engine import assert_same_reports
-    document = assert_same_reports(write_handshake(tmp_path, step, ack), monkeypatch)
+    document = assert_same_reports(write_handshake(tmp_path, step, ack, RULES[rule][0]),
+                                   monkeypatch)
     assert document["properties"]
 
 
@@ -160,13 +180,19 @@ def test_an_idelete_of_a_number_taken_as_empty_loses_a_violation(tmp_path, monke
     argv = write_deleter(tmp_path)
     assert verdicts(check_json(argv))["no_runtime_error"] == "VIOLATED"
     assert verdicts(check_json(argv + ["--no-por"]))["no_runtime_error"] == "VIOLATED"
-    found = empty_deletes.EmptyDeletes._find
+    always_idle(monkeypatch, empty_deletes.EmptyDeletes)
+    assert verdicts(check_json(argv))["no_runtime_error"] == "HOLDS"
+
+
+def always_idle(monkeypatch, rule_class) -> None:
+    """The mutant of a per-state rule (``IdleSteps``): each instruction it judges is taken
+    as idle in every state."""
+    found = rule_class._find
 
     def eager(self, *where):
         reader = found(self, *where)
         return None if reader is None else (lambda stack, state: True)
-    monkeypatch.setattr(empty_deletes.EmptyDeletes, "_find", eager)
-    assert verdicts(check_json(argv))["no_runtime_error"] == "HOLDS"
+    monkeypatch.setattr(rule_class, "_find", eager)
 
 
 def test_only_an_idelete_of_data_no_other_task_writes_is_judged_per_state(tmp_path):
@@ -200,6 +226,9 @@ def test_an_idelete_of_data_another_task_writes_is_not(tmp_path):
     order = PartialOrder(program, set())
     assert order.groups.deletes.reader(0, program.entry, 0) is None
     assert not order.groups.may_join(0, program.entry, 0)
+    # nor a constant written to it (``unchanged_writes``): the IDelete writes it too
+    writer = program.task_entries[0]
+    assert order.groups.writes.reader(1, writer, 0) is None
 
 
 LOCAL_WORKER = """MODULE Worker{n}

@@ -76,8 +76,9 @@ def data_uses(program, namespace: int = PROGRAM_NAMESPACE,
                     lookup(node.name.key) is None
                 written.update(_slot(lookup, _root(arg.value))
                                for arg, mode in zip(node.args, modes)
-                               if arg.value is not None and mode_may_write(mode) and
-                               not (read_only and mode == "PERS"))
+                               if arg.value is not None and (
+                                   mode_may_write(mode) or _writes_in_argument(lookup, node))
+                               and not (read_only and mode == "PERS"))
     read.discard(None)
     written.discard(None)
     return read, written
@@ -87,6 +88,15 @@ def data_uses(program, namespace: int = PROGRAM_NAMESPACE,
 # the plain moves (the robot goes to the target with that tool) and the robot readings
 # (``library.position``, ``CalcRobT``, ``CalcJointT``: computed with that tool)
 _PERS_READ_ONLY = PLAIN_MOVES | {"CROBT", "CJOINTT", "CPOS", "CALCROBT", "CALCJOINTT"}
+
+
+# predefined procedures writing an argument of an IN parameter: IDelete writes 0 to its
+# intnum (``library.interrupts``)
+_IN_ARGUMENT_WRITTEN = frozenset({"IDELETE"})
+
+
+def _writes_in_argument(lookup, call) -> bool:
+    return call.name.key in _IN_ARGUMENT_WRITTEN and lookup(call.name.key) is None
 
 
 def writes_data_by_name(routines) -> bool:

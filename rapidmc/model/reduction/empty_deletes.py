@@ -27,22 +27,29 @@ from ...semantics.instructions import Action
 from ...semantics.scope import GLOBAL_DATA, LOCAL_DATA
 
 
-class EmptyDeletes:
-    """Per instruction of a task, how to read in a state whether it is an IDelete that
-    deletes nothing (see the module docstring)."""
+class IdleSteps:
+    """Per instruction of a task, how to read in a state whether its step touches nothing
+    another task reads or writes there (``_find``, once per instruction)."""
 
     def __init__(self, order):
         self.order = order              # PartialOrder: the syntax, which tasks write what
         self._readers: dict = {}        # (task, routine, pc) -> reader or None
 
     def reader(self, task: int, routine_index: int, pc: int) -> Optional[Callable]:
-        """``deletes_nothing(stack, state)`` for the instruction at ``pc`` of
-        ``routine_index`` when it is an IDelete of data only its task writes, else None;
-        ``stack`` is the task's (the instruction at its top)."""
+        """``idle(stack, state)`` for the instruction at ``pc`` of ``routine_index`` when
+        it may be idle, else None; ``stack`` is the task's (the instruction at its top)."""
         key = (task, routine_index, pc)
         if key not in self._readers:
             self._readers[key] = self._find(task, routine_index, pc)
         return self._readers[key]
+
+    def _find(self, task: int, routine_index: int, pc: int) -> Optional[Callable]:
+        raise NotImplementedError
+
+
+class EmptyDeletes(IdleSteps):
+    """Per instruction of a task, how to read in a state whether it is an IDelete of data
+    only its task writes that deletes nothing (see the module docstring)."""
 
     def _find(self, task: int, routine_index: int, pc: int) -> Optional[Callable]:
         order = self.order

@@ -21,7 +21,9 @@ ch. 4), built from one task ``t``:
   condition (its task may wait there, below), and ExitCycle writes only its
   task's frames when no routine of the task has an UNDO handler.  Judged per
   state: an IDelete of an intnum holding 0 that no other task writes deletes
-  nothing (``empty_deletes``) and conflicts with no task there.
+  nothing (``empty_deletes``), and a constant written where it is already stored
+  to data no other task writes changes nothing (``unchanged_writes``): each
+  conflicts with no task there.
 * The tasks outside ``G`` then never touch what ``G``'s next instructions read
   or write, whatever they run next: every path of their steps from the state
   commutes with each of ``G``'s transitions and neither enables nor disables
@@ -58,6 +60,7 @@ from ...semantics.staged_step import task_transitions
 from ...semantics.instructions import Wait
 from ...semantics.state import State
 from .empty_deletes import EmptyDeletes
+from .unchanged_writes import UnchangedWrites
 
 GROUPS_KEPT = 1 << 14        # the groups per combination of the tasks' instructions kept
 
@@ -71,6 +74,7 @@ class TaskGroups:
         self._conflicts: dict = {}          # (task, routine, pc) -> frozenset or None
         self._groups: dict = {}             # the tasks' (task, routine, pc, empty) -> groups
         self.deletes = EmptyDeletes(order)  # IDelete of an intnum holding 0, per state
+        self.writes = UnchangedWrites(order)  # a write of the value stored, per state
 
     def conflicts(self, task: int, routine: int, pc: int) -> Optional[frozenset]:
         """The other tasks whose code touches what the instruction at ``pc`` of ``routine``
@@ -100,13 +104,23 @@ class TaskGroups:
         task, or with none while it is judged independent in a group only (ExitCycle)."""
         found = self.conflicts(task, routine, pc)
         if found is None:
-            return self.deletes.reader(task, routine, pc) is not None
+            return self.idle_reader(task, routine, pc) is not None
         return bool(found) or not self.order.is_ample_candidate(task, routine, pc)
+
+    def idle_reader(self, task: int, routine: int, pc: int) -> Optional[Callable]:
+        """``idle(stack, state)``: whether the instruction's step touches nothing another
+        task reads or writes in that state (``empty_deletes``, ``unchanged_writes``);
+        None when it never does."""
+        for found in (self.deletes, self.writes):
+            reader = found.reader(task, routine, pc)
+            if reader is not None:
+                return reader
+        return None
 
     def candidates(self, stacks: tuple, running: list, state: State) -> tuple:
         """The groups of fewer than all running tasks, in the order of the task each is
         built from (each once), but for the one-task ample sets already tried."""
-        empty = self._empty_deletes(stacks, running, state)
+        empty = self._idle_tasks(stacks, running, state)
         key = tuple((task, stacks[task][-1][0], stacks[task][-1][1], task in empty)
                     for task in running)
         found = self._groups.get(key)
@@ -124,13 +138,13 @@ class TaskGroups:
             self._groups[key] = found
         return found
 
-    def _empty_deletes(self, stacks: tuple, running: list, state: State) -> frozenset:
-        """The running tasks at an IDelete that deletes nothing in ``state``
-        (``empty_deletes``): independent of every other task there."""
+    def _idle_tasks(self, stacks: tuple, running: list, state: State) -> frozenset:
+        """The running tasks at an IDelete that deletes nothing or a write that changes
+        nothing in ``state`` (``idle_reader``): independent of every other task there."""
         found = []
         for task in running:
             frame = stacks[task][-1]
-            reader = self.deletes.reader(task, frame[0], frame[1])
+            reader = self.idle_reader(task, frame[0], frame[1])
             if reader is not None and reader(stacks[task], state):
                 found.append(task)
         return frozenset(found)
