@@ -93,6 +93,7 @@ from .cell_uses import CellUses, CellView
 from .interrupt_owners import InterruptOwners, serving_tasks
 from .relevance import DATA_BY_NAME
 from .task_groups import TaskGroups
+from .typed_names import reached_by_name
 from .syntax_footprint import (LOCAL, SHARED, VISIBLE, Footprint, ReferenceParameters,
                                StatementFootprints, SyntaxReads)
 
@@ -123,12 +124,16 @@ class PartialOrder:
                 for task in range(tasks):
                     if data.slot in uses[task][0]:
                         written[task] = written[task] | {data.slot}
-        by_name = tasks_calling(program, "SETDATAVAL")
-        for task in by_name:
-            # SetDataVal looks the name up where the call is: any data its task can name
-            written[task] = written[task] | {slot for slot, by in accessors.items() if task in by}
-        for task in by_name | tasks_calling(program, "GETDATAVAL"):
-            used[task] = used[task] | {slot for slot, by in accessors.items() if task in by}
+        # SetDataVal and GetDataVal look the name up where the call is: any data its task
+        # can name of the Value's type (``typed_names``)
+        calls = list(_calls_by_name(program))
+        for task, slots in reached_by_name(program, calls, "SETDATAVAL", _task_of_namespace,
+                                           accessors).items():
+            written[task] = written[task] | slots
+            used[task] = used[task] | slots
+        for task, slots in reached_by_name(program, calls, "GETDATAVAL", _task_of_namespace,
+                                           accessors).items():
+            used[task] = used[task] | slots
         # per task: the slots it may write (no other task's code names them: a PERS that
         # every task declares, in a module each loads, is still one task's when only its
         # code reads or writes it), and those it may read (written by no other task)
@@ -528,15 +533,6 @@ def reaches_data_by_name(program: Program) -> bool:
     ``\\TaskName``), SetAllDataVal or GetNextSym.  Without a task argument, the name is
     looked up where the call is (``library.data_access``), so the data is its task's."""
     return any(not _own_task_only(node) for _, node in _calls_by_name(program))
-
-
-def tasks_calling(program: Program, name: str) -> set[int]:
-    """The tasks with a call of ``name`` (GETDATAVAL, SETDATAVAL: reaching data of their
-    own by its name, see ``reaches_data_by_name``)."""
-    tasks = {_task_of_namespace(routine.namespace) for routine, node in _calls_by_name(program)
-             if node.name.key == name}
-    tasks.discard(None)
-    return tasks
 
 
 def _calls_by_name(program: Program):
