@@ -22,6 +22,7 @@ import pytest
 from rapidmc.check import native
 from rapidmc.model.reduction import partial_order, typed_names
 
+from test_barrier_holds import assert_reduction_keeps, write_tasks
 from test_partial_order import check_json, states, verdicts
 
 needs_native = pytest.mark.skipif(not native.available(), reason="the native core is not built")
@@ -96,29 +97,13 @@ def write_cell(folder: Path, variant: str) -> list[str]:
     by_name, after = VARIANTS[variant]
     texts = {"robot": ROBOT.format(header=HEADER, by_name=by_name, after=after),
              "writer": WRITER.format(header=HEADER), "logger": LOGGER.format(header=HEADER)}
-    argv = []
-    for name, text in texts.items():
-        path = folder / f"{name}.mod"
-        path.write_text(text)
-        argv += [str(path)] if name == "robot" else ["--add-task", str(path)]
-    spec = folder / "props.ltl"
-    spec.write_text('levels: G ("seen = 0" || "seen = 2")\n'
-                    'reads_two: F "seen = 2"\n')
-    return argv + ["--ltl", str(spec), "--max-states", "40000"]
-
-
-def _compared(document: dict, expected: dict) -> dict:
-    found = verdicts(document)
-    return {name: found[name] for name in expected}
+    return write_tasks(folder, texts, 'levels: G ("seen = 0" || "seen = 2")\n'
+                                      'reads_two: F "seen = 2"\n')
 
 
 @pytest.mark.parametrize("variant", sorted(VARIANTS))
 def test_typed_reads_by_name_keep_the_verdicts(tmp_path, variant):
-    argv = write_cell(tmp_path, variant)
-    reduced, full = check_json(argv), check_json(argv + ["--no-por"])
-    assert "UNKNOWN" not in verdicts(full).values(), states(full)
-    assert verdicts(reduced) == verdicts(full)
-    assert _compared(full, EXPECTED[variant]) == EXPECTED[variant]
+    assert_reduction_keeps(write_cell(tmp_path, variant), EXPECTED[variant])
 
 
 @needs_native
