@@ -38,7 +38,8 @@ enum { TASK_RUNS = 1 };
 /* what the partial-order reduction says of a task's instruction (model/packed/table.py's
  * ``_order_flags``): independent and invisible (an ample candidate); its step always
  * changes the state; it joins the step of its task before it (a merged local run) */
-enum { ORDER_CANDIDATE = 1, ORDER_NEVER_WAITS = 2, ORDER_MERGEABLE = 4, ORDER_GROUPS = 8 };
+enum { ORDER_CANDIDATE = 1, ORDER_NEVER_WAITS = 2, ORDER_MERGEABLE = 4, ORDER_GROUPS = 8,
+       ORDER_HELD = 16 };
 
 /* opcodes of the step machine (mirrored in rapidmc/model/packed/bytecode.py) */
 enum {
@@ -2693,6 +2694,19 @@ static int task_python_ample(PackedTable *table, Py_ssize_t id, Py_ssize_t task,
     return outcome < 0 ? -1 : VM_DONE;
 }
 
+/* Whether ``task``'s instruction at state ``id``, not an ample candidate, is one there
+ * because the tasks it conflicts with are held at their barriers (``python_held``,
+ * ``barrier_holds``): 1, 0 or -1. */
+static int task_python_held(PackedTable *table, Py_ssize_t id, Py_ssize_t task)
+{
+    PyObject *answer = PyObject_CallMethod((PyObject *)table, "python_held", "nn", id, task);
+    if (answer == NULL)
+        return -1;
+    int held = PyObject_IsTrue(answer);
+    Py_DECREF(answer);
+    return held;
+}
+
 /* The ample set of a group of tasks at state ``id`` (numbered ``here``), decided by Python
  * (``python_group_ample``): VM_DONE (``found``), NO_AMPLE (none), -1. */
 static int group_python_ample(PackedTable *table, Py_ssize_t id, Py_ssize_t here,
@@ -2748,10 +2762,16 @@ static int ample_step(PackedTable *table, Py_ssize_t id, Scratch *scratch, Succe
         return -1;
     for (Py_ssize_t task = 0; task < tasks; task++) {
         const int32_t *info = table->context_tasks + (context * tasks + task) * TASK_INFO;
-        if (info[0] < 0 || !(order_flags(table, task, info[0],
-                                         task_pc(table, at.frame_id, info[1])) &
-                             ORDER_CANDIDATE))
-            continue;
+        int flags = info[0] < 0 ? 0 : order_flags(table, task, info[0],
+                                                 task_pc(table, at.frame_id, info[1]));
+        if (!(flags & ORDER_CANDIDATE)) {
+            /* a candidate where the tasks it conflicts with are held (``barrier_holds``) */
+            int held = flags & ORDER_HELD ? task_python_held(table, id, task) : 0;
+            if (held < 0)
+                return -1;
+            if (!held)
+                continue;
+        }
         found->count = scratch->changed.length = scratch->pending.length = 0;
         scratch->defer = 1;
         scratch->defer_task = (int32_t)task;

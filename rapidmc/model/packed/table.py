@@ -60,6 +60,7 @@ ORDER_CANDIDATE = 1                    # per task and instruction (``_order_flag
 ORDER_NEVER_WAITS = 2
 ORDER_MERGEABLE = 4
 ORDER_GROUPS = 8                       # it may be in an ample set of several tasks
+ORDER_HELD = 16                        # ample where the tasks it conflicts with are held
 MAX_TASKS = 64
 REMEMBERED_VECTORS = 256               # states whose vectors are remembered (reduced search)
 TASK_STEPS_KEPT = 1 << 13              # one task's Python steps kept (``_task_step``)
@@ -280,7 +281,8 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
                     (ORDER_MERGEABLE if runs is not None and runs.mergeable(task, index, pc)
                      else 0) |
                     (ORDER_GROUPS if self.tasks > 2 and order.groups.may_join(task, index, pc)
-                     else 0)
+                     else 0) |
+                    (ORDER_HELD if order.may_be_held(task, index, pc) else 0)
                     for pc in range(len(routine.code))))
             flags.append(per_routine)
         return flags
@@ -507,17 +509,18 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         has an idle step, which only the other tasks' steps tell to keep or drop)."""
         return self._task_step(state_id, task, here)
 
+    def python_held(self, state_id: int, task: int) -> bool:
+        """Whether ``task``'s instruction, not an ample candidate, is one at the state
+        (``_packed.c``'s ``ample_step``): the tasks it conflicts with are held at their
+        barriers (``PartialOrder.held_at``)."""
+        return self.system.order.held_at(self._stepped(state_id), task, self.system.config)
+
     def python_group_ample(self, state_id: int, here: int):
         """The ample set of a group of tasks at a state of several tasks, numbered
         ``here``, where no task alone has one (``_packed.c``'s ``ample_step``): its
         transitions' parts (frame id, data id), as ``PartialOrder.ample`` picks them
         (``TaskGroups.choose``), or False."""
-        if self._stepping[0] != state_id:
-            self._stepping, self._python_spans = (state_id, None), []
-        state = self._stepping[1]
-        if state is None:
-            state = self[state_id]
-            self._stepping = (state_id, state)
+        state = self._stepped(state_id)
         stacks = (state[0],) + state[10]
         running = [task for task, stack in enumerate(stacks) if stack]
         chosen = self.system.order.groups.choose(
@@ -529,6 +532,16 @@ class PackedStateTable(_native.PackedTable if _native is not None else object):
         if self._labels_wanted():
             self._python_spans = [spans for spans, _ in chosen]
         return [self.intern_parts(*self._vectors(after)) for _, after in chosen]
+
+    def _stepped(self, state_id: int) -> State:
+        """The state being stepped, kept while the machine asks about it."""
+        if self._stepping[0] != state_id:
+            self._stepping, self._python_spans = (state_id, None), []
+        state = self._stepping[1]
+        if state is None:
+            state = self[state_id]
+            self._stepping = (state_id, state)
+        return state
 
     def _task_step(self, state_id: int, task: int, here: int):
         """``python_task_successors`` (``here`` -1) or ``python_task_ample``, kept by the

@@ -93,6 +93,8 @@ from .cell_uses import CellUses, CellView
 from .interrupt_owners import InterruptOwners, serving_tasks
 from .relevance import DATA_BY_NAME
 from .task_groups import TaskGroups
+from .barrier_holds import BarrierHolds
+from .typed_names import reached_by_name
 from .syntax_footprint import (LOCAL, SHARED, VISIBLE, Footprint, ReferenceParameters,
                                StatementFootprints, SyntaxReads)
 
@@ -114,6 +116,8 @@ class PartialOrder:
         accessors = _accessors(program)
         uses = [data_uses(program, _namespace(task), moves_read=True) for task in range(tasks)]
         written = [found[1] for found in uses]
+        # the slots each task's code writes (no wait's read: ``barrier_holds``' task lists)
+        self.code_written = tuple(written)
         used = [found[0] | found[1] for found in uses]
         # a wait's read of data another party writes stores the value it took
         # (``OutsideData.written_by_waits``: a WaitUntil, a WHILE, a polled IF): a write by
@@ -123,12 +127,16 @@ class PartialOrder:
                 for task in range(tasks):
                     if data.slot in uses[task][0]:
                         written[task] = written[task] | {data.slot}
-        by_name = tasks_calling(program, "SETDATAVAL")
-        for task in by_name:
-            # SetDataVal looks the name up where the call is: any data its task can name
-            written[task] = written[task] | {slot for slot, by in accessors.items() if task in by}
-        for task in by_name | tasks_calling(program, "GETDATAVAL"):
-            used[task] = used[task] | {slot for slot, by in accessors.items() if task in by}
+        # SetDataVal and GetDataVal look the name up where the call is: any data its task
+        # can name of the Value's type (``typed_names``)
+        calls = list(_calls_by_name(program))
+        for task, slots in reached_by_name(program, calls, "SETDATAVAL", _task_of_namespace,
+                                           accessors).items():
+            written[task] = written[task] | slots
+            used[task] = used[task] | slots
+        for task, slots in reached_by_name(program, calls, "GETDATAVAL", _task_of_namespace,
+                                           accessors).items():
+            used[task] = used[task] | slots
         # per task: the slots it may write (no other task's code names them: a PERS that
         # every task declares, in a module each loads, is still one task's when only its
         # code reads or writes it), and those it may read (written by no other task)
@@ -153,6 +161,7 @@ class PartialOrder:
         self._views: dict = {}
         self._undoing: Optional[set] = None     # the tasks with an UNDO handler
         self.groups = TaskGroups(self)
+        self.holds = BarrierHolds(self)     # tasks at a barrier waiting for another one
         self.project = project
         self.keys = StateKeys()
         # the cycle proviso's numbering of states (``StatePlaces``), made when first asked:
@@ -205,7 +214,8 @@ class PartialOrder:
                 config, here: int) -> Optional[list]:
         for task in running:
             frame = stacks[task][-1]
-            if not self.is_ample_candidate(task, frame[0], frame[1]):
+            if not self.is_ample_candidate(task, frame[0], frame[1]) and \
+                    not self.held_candidate(state, stacks, running, task):
                 continue
             name = self.names[task]
             mine = [entry for entry in successors if (TASK_CHOICE, name) in entry[0][0]]
@@ -276,6 +286,38 @@ class PartialOrder:
         name = (TASK_CHOICE, self.names[task])
         return any(name in transition.label and transition.state != state
                    for transition in semantic_successors(self.program, state, config))
+
+    def held_at(self, state: State, task: int, config) -> bool:
+        """``held_candidate`` where ``ample`` tries one task's ample set: the program
+        runs and no interrupt may move the task."""
+        if state[7] != RUNNING:
+            return False
+        serving = serving_tasks(self.program, state[4], self.owners, own_edges(config))
+        stacks = (state[0],) + state[10]
+        if serving is None or task in serving:
+            return False
+        quiet = [other for other, stack in enumerate(stacks) if stack and other not in serving]
+        return self.held_candidate(state, stacks, quiet, task)
+
+    def held_candidate(self, state: State, stacks: tuple, running: list, task: int) -> bool:
+        """Whether the task's instruction, not an ample candidate, conflicts only with
+        running tasks its task holds at their barriers (``barrier_holds``), none of
+        which an interrupt may move (``running``: the tasks no interrupt may move)."""
+        routine, pc = stacks[task][-1][:2]
+        if not self.may_be_held(task, routine, pc):
+            return False
+        alive = {other for other, stack in enumerate(stacks) if stack}
+        return self.groups.conflicts(task, routine, pc) & alive <= \
+            self.holds.held_by(state, stacks, running, task)
+
+    def may_be_held(self, task: int, routine: int, pc: int) -> bool:
+        """Whether the instruction conflicts with some other tasks only (not a wait: a
+        task there may wait, which ``task_groups`` alone judges in a view)."""
+        instruction = self.program.routines[routine].code[pc]
+        if isinstance(instruction, (Wait, SyncWait)) or \
+                self.is_ample_candidate(task, routine, pc):
+            return False
+        return bool(self.groups.conflicts(task, routine, pc))
 
     def is_ample_candidate(self, task: int, routine: int, pc: int) -> bool:
         """Whether the instruction at ``pc`` of ``routine`` is independent of every step of
@@ -528,15 +570,6 @@ def reaches_data_by_name(program: Program) -> bool:
     ``\\TaskName``), SetAllDataVal or GetNextSym.  Without a task argument, the name is
     looked up where the call is (``library.data_access``), so the data is its task's."""
     return any(not _own_task_only(node) for _, node in _calls_by_name(program))
-
-
-def tasks_calling(program: Program, name: str) -> set[int]:
-    """The tasks with a call of ``name`` (GETDATAVAL, SETDATAVAL: reaching data of their
-    own by its name, see ``reaches_data_by_name``)."""
-    tasks = {_task_of_namespace(routine.namespace) for routine, node in _calls_by_name(program)
-             if node.name.key == name}
-    tasks.discard(None)
-    return tasks
 
 
 def _calls_by_name(program: Program):
