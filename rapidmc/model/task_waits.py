@@ -35,6 +35,7 @@ from ..semantics.state import RUNNING, State
 from ..semantics.step import successors as semantic_successors
 
 TASK_CHOICE = "task"
+WHOLE_PROGRAM = None     # ``own_change`` for the whole program: every interrupt is its own
 
 
 def running_tasks(state: State) -> list[int]:
@@ -63,12 +64,13 @@ class TaskWaits:
         self.names = tuple(program.task_names)
         self.free = tuple(index for index, _, _ in config.free_inputs)
 
-    def own_change(self, task: int, before: State, after: State) -> bool:
+    def own_change(self, task: Optional[int], before: State, after: State) -> bool:
         """Whether a step of ``task`` from ``before`` to ``after`` changes something
-        besides the stored free inputs and the interrupts queued for other tasks."""
+        besides the stored free inputs and the interrupts queued for other tasks
+        (``WHOLE_PROGRAM``: besides the stored free inputs; ``RapidSystem.stuck``)."""
         if after is before:
             return False
-        if after[4] is not before[4] and after[4][1] != before[4][1]:
+        if task is not WHOLE_PROGRAM and after[4] is not before[4] and after[4][1] != before[4][1]:
             pending = before[4][1]
             kept = tuple(number for number in after[4][1]
                          if number in pending or self._serves(task, after[4][0], number))
