@@ -10,10 +10,10 @@ to go on.
   ...`` in traces); when only one task is left running there is no choice,
   and the step is that task's.
 * A task cannot go on in a state when the program has stopped, the task has
-  ended, or each of its steps would change nothing (it waits) — decided as
-  the step semantics decides which task takes the turn
-  (``semantics.staged_step.idle_steps_dropped``): on the semantic successors of
-  the state, before any reduction's projection.
+  ended, or it waits: each of its steps would change nothing of its own, at most
+  the inputs the environment chose and the interrupts their edges queue for other
+  tasks (``task_waits``, the one definition) — on the semantic successors of the
+  state, before any reduction's projection.
 """
 from __future__ import annotations
 
@@ -24,8 +24,10 @@ from ..check.fair import check_fair_property
 from ..check.transition_system import STUTTER
 from ..semantics.state import RUNNING, State
 from ..semantics.step import successors as semantic_successors
+from .task_waits import TASK_CHOICE, TaskWaits, running_tasks, task_choosing
 
-TASK_CHOICE = "task"
+__all__ = ["TASK_CHOICE", "TaskFairness", "assumes_fairness", "fair_or_plain_search",
+           "running_tasks"]
 
 
 class TaskFairness:
@@ -36,32 +38,22 @@ class TaskFairness:
         self.config = system.config
         self.names = tuple(system.program.task_names)
         self.count = len(self.names)
+        self.task_waits = TaskWaits(system.program, system.config)
 
     def taken(self, state: State, label: Hashable) -> Optional[int]:
         """The index of the task that took the step ``label`` from ``state`` (None: none)."""
         if label is STUTTER or label is None:
             return None
-        return self._task_choosing(state, label[0])
-
-    def _task_choosing(self, state: State, choices: tuple) -> Optional[int]:
-        """The task a step with these choices runs (``choices``: a ``Transition.label``)."""
-        for name, value in choices:
-            if name == TASK_CHOICE:
-                return self.names.index(value)
-        if state.status != RUNNING:
-            return None
-        running = running_tasks(state)
-        return running[0] if len(running) == 1 else None
+        return task_choosing(self.names, state, label[0])
 
     def excused(self, state: State) -> frozenset:
-        """The tasks that cannot go on in ``state``."""
+        """The tasks that cannot go on in ``state``: ended, or waiting (``task_waits``)."""
         every = frozenset(range(self.count))
         if state.status != RUNNING:
             return every
-        moving = {self._task_choosing(state, transition.label)
-                  for transition in semantic_successors(self.program, state, self.config)
-                  if transition.state != state}
-        return every - moving
+        waiting = self.task_waits.waiting(
+            state, semantic_successors(self.program, state, self.config))
+        return every - (frozenset(running_tasks(state)) - waiting)
 
     def unfair_tasks(self, steps: list, closing_label: Hashable) -> list[str]:
         """The tasks a lasso's cycle starves: able to go on in each of its states, never
@@ -76,11 +68,6 @@ class TaskFairness:
         for state in states:
             met |= self.excused(state)
         return [name for index, name in enumerate(self.names) if index not in met]
-
-
-def running_tasks(state: State) -> list[int]:
-    """The indices of the tasks that have not ended (the main task is 0)."""
-    return [index for index, stack in enumerate((state.frames,) + state.tasks) if stack]
 
 
 def assumes_fairness(model) -> bool:

@@ -41,6 +41,7 @@ from .reduction import NO_PLAN, Plan
 from .kept_successors import KeptSuccessors
 from .state_keys import StateKeys
 from .task_atoms import task_qualifier
+from .task_waits import WHOLE_PROGRAM, TaskWaits
 from .value_text import DESCRIBED_TYPES, OPAQUE_KINDS, untyped_text, value_text
 from .reduction.expansion import expand_lasso
 from .reduction.merging import executed_spans
@@ -77,6 +78,7 @@ class RapidSystem:
             config.merge_points = plan.merge_points
             config.skipped_writes = skipped
         self.config = config
+        self._task_waits: Optional[TaskWaits] = None    # (made when first asked)
         self.plan = plan
         self.project = plan.projection
         # the projection of the fused step's targets (None where they are projected
@@ -281,20 +283,23 @@ class RapidSystem:
         inputs (and, with merged steps, every single instruction's too), and so is every
         successor of those: every valuation is one step away, and from another one an
         interrupt's edge may come (``ISignalDI di, 1``: with ``di`` stored at 1, it must
-        go back to 0 first)."""
-        free = [index for index, _, _ in self.config.free_inputs]
-        masked = _without_inputs(state, free)
-        if not self._stays(state, targets, free, masked):
+        go back to 0 first).  ``task_waits`` decides what the environment changes, for
+        the whole program: only the inputs (every interrupt queued is some task's)."""
+        waits = self._task_waits
+        if waits is None or waits.config is not self.config:
+            waits = self._task_waits = TaskWaits(self.program, self.config)
+        if not self._stays(state, state, targets, waits):
             return False
         if not state[4][0]:
             return True
-        return all(self._stays(after, self.successor_states(after), free, masked)
+        return all(self._stays(state, after, self.successor_states(after), waits)
                    for after in dict.fromkeys(targets) if after != state)
 
-    def _stays(self, state: State, targets: Sequence[State], free: list, masked) -> bool:
-        """Whether ``targets``, the successors of ``state``, are all ``masked`` with other
+    def _stays(self, origin: State, state: State, targets: Sequence[State],
+               waits: TaskWaits) -> bool:
+        """Whether ``targets``, the successors of ``state``, are all ``origin`` with other
         free inputs (and, with merged steps, every single instruction's too)."""
-        if not all(_without_inputs(after, free) == masked for after in targets):
+        if any(waits.own_change(WHOLE_PROGRAM, origin, after) for after in targets):
             return False
         if not self.config.merge_points and (self.order is None or self.order.runs is None):
             return True
@@ -302,8 +307,8 @@ class RapidSystem:
         # decide on single instructions, as the unmerged semantics does.  (A merged step
         # that changes something starts with a single step that does.)
         project = self.project or (lambda s: s)
-        return all(_without_inputs(project(t.state), free) == masked
-                   for t in successors(self.program, state, self.plain_config))
+        return not any(waits.own_change(WHOLE_PROGRAM, origin, project(t.state))
+                       for t in successors(self.program, state, self.plain_config))
 
 
 def barrier_waits(program: Program, state: State,
@@ -321,13 +326,6 @@ def barrier_waits(program: Program, state: State,
             if missing:
                 found.append((task, missing))
     return found
-
-
-def _without_inputs(state: State, free: list) -> State:
-    if not free:
-        return state
-    io = state.io.mset(*[x for index in free for x in (index, 0.0)])
-    return state._replace(io=io)
 
 
 def _shown(rapid_type) -> bool:

@@ -10,7 +10,9 @@ wait), so the check searches for it: a fair run satisfying
     F G waits(T1)  |  F G waits(T2)  |  ...
 
 where ``waits(T)`` holds in a state when task T is running and cannot go on
-(``TaskFairness.excused``: each of its steps would change nothing).  A task
+(``TaskFairness.excused``: each of its steps would change nothing of its own, at most
+the inputs the environment chose and the interrupts they queue for other tasks:
+``task_waits``, the same in every model of the inputs).  A task
 waiting for a free input can go on (some input value lets it), so it never
 waits forever in this sense: inputs are free to come.
 """

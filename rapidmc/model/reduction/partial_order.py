@@ -83,11 +83,10 @@ from ...semantics.instructions import (Action, Branch, Call, ControlAction, EndR
 from ...semantics.library.tasks import SyncWait
 from ...semantics.program import ENVIRONMENT_NAMESPACE, FIRST_TASK_NAMESPACE, Program
 from ...semantics.scope import CONSTANT, GLOBAL_DATA, LOCAL_DATA
-from ...semantics.staged_step import task_transitions
 from ...semantics.state import RUNNING, State
 from ...semantics.task_registers import others_unchanged
-from ...semantics.step import successors as semantic_successors
 from ..state_keys import StateKeys
+from ..task_waits import TASK_CHOICE, TaskWaits
 from .local_runs import LocalRuns
 from .cell_uses import CellUses, CellView
 from .interrupt_owners import InterruptOwners, serving_tasks
@@ -99,7 +98,6 @@ from .syntax_footprint import (LOCAL, SHARED, VISIBLE, Footprint, ReferenceParam
                                StatementFootprints, SyntaxReads)
 
 _STORE_READ = re.compile(r"\bstore\[(\d+)\]")
-TASK_CHOICE = "task"
 _OWN_TASK_BY_NAME = frozenset({"GETDATAVAL", "SETDATAVAL"})
 
 
@@ -112,6 +110,7 @@ class PartialOrder:
         self.program = program
         self.names = program.task_names
         self.visible = visible_names
+        self._task_waits: Optional[TaskWaits] = None     # (for the configuration asked)
         tasks = len(self.names)
         accessors = _accessors(program)
         uses = [data_uses(program, _namespace(task), moves_read=True) for task in range(tasks)]
@@ -278,14 +277,16 @@ class PartialOrder:
             self._goes_on(task, after, config)
 
     def _goes_on(self, task: int, state: State, config) -> bool:
-        """Whether some step of ``task`` from ``state`` changes it: the task does not wait
-        there (``fairness.TaskFairness.excused``, for one task)."""
-        found = task_transitions(self.program, state, task, config)
-        if found is not None:       # (the task's own steps: the others' are not needed)
-            return any(transition[2] != state for transition in found)
-        name = (TASK_CHOICE, self.names[task])
-        return any(name in transition.label and transition.state != state
-                   for transition in semantic_successors(self.program, state, config))
+        """Whether ``task`` can go on from ``state``: it does not wait there
+        (``task_waits``, the definition ``fairness.TaskFairness.excused`` uses)."""
+        return not self.task_waits(config).waits_now(task, state)
+
+    def task_waits(self, config) -> TaskWaits:
+        """The tasks' ``waits`` under ``config`` (made when first asked)."""
+        waits = self._task_waits
+        if waits is None or waits.config is not config:
+            waits = self._task_waits = TaskWaits(self.program, config)
+        return waits
 
     def held_at(self, state: State, task: int, config) -> bool:
         """``held_candidate`` where ``ample`` tries one task's ample set: the program

@@ -215,10 +215,8 @@ class TaskGroups:
         return chosen
 
     def _waits(self, task: int, state: State, config) -> bool:
-        """Whether ``task`` cannot go on at ``state``: each of its steps changes nothing."""
-        found = task_transitions(self.order.program, state, task, config)
-        return found is not None and all(transition[2] == state for transition in found)
-
+        """Whether ``task`` cannot go on at ``state`` (``task_waits``, the one definition)."""
+        return self.order.task_waits(config).waits_now(task, state)
 
 def _local(footprint) -> bool:
     return footprint.independent and not footprint.visible
