@@ -22,7 +22,7 @@ import pytest
 
 from cli_capture import run_cli
 from rapidmc.check import native
-from rapidmc.model import task_waits
+from rapidmc.model import fairness, task_waits
 
 ENGINES = native.ENGINES if native.available() else (native.PYTHON,)
 MODELS = {"edge": [], "exact": ["--exact-edges"], "every_step": ["--inputs-every-step"]}
@@ -83,8 +83,33 @@ def test_the_old_definition_misses_the_deadlock_in_the_exact_model(tmp_path, mon
     assert _verdicts(tmp_path, modules, MODELS["exact"])["no_deadlock"] == "HOLDS"
 
 
+def test_a_task_whose_idle_step_is_dropped_still_steps_in_the_fair_search(tmp_path,
+                                                                        monkeypatch):
+    """``input_never_comes``: the model drops A's step with ``diGo = 0`` (it changes
+    nothing while B can go on), so without ``TaskFairness.idling`` the fair search sees no
+    step of A but the one that sets ``done``, and ``F "done = 1"`` HOLDS in every model:
+    a run the environment allows (``diGo`` at 0 for ever) missed."""
+    expected, modules = CASES["input_never_comes"]
+    assert _verdicts(tmp_path, modules, MODELS["edge"]) == expected
+    monkeypatch.setattr(fairness.TaskFairness, "idling", lambda self, state, tasks: frozenset())
+    for options in MODELS.values():
+        assert _verdicts(tmp_path, modules, options)["live"] == "HOLDS"
+
+
+def test_the_loop_says_where_a_task_that_only_idles_waits(tmp_path):
+    """The counterexample of ``input_never_comes`` shows only B's steps: its report says
+    that A stands at its WaitDI, whose steps change nothing."""
+    _, modules = CASES["input_never_comes"]
+    for name, module in modules.items():
+        (tmp_path / name).write_text(module)
+    out = run_cli(["check", "a.mod", "--add-task", "b.mod", *LIVE], cwd=tmp_path).out
+    live = out[out.index("live: VIOLATED"):]
+    assert "in the loop, main task waits at a.mod:4 (WaitDI diGo, 1;): its steps there " \
+        "change nothing" in live
+
+
 def test_the_cases_file_reads():
     assert set(CASES) >= {"served_edge", "pers_after_edge", "waituntil_input", "waitdi",
-                          "waitdi_watched"}
+                          "waitdi_watched", "input_never_comes"}
     for verdicts, modules in CASES.values():
         assert set(verdicts) == {"no_deadlock", "live"} and len(modules) == 2

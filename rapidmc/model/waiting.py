@@ -10,7 +10,7 @@ wait), so the check searches for it: a fair run satisfying
     F G waits(T1)  |  F G waits(T2)  |  ...
 
 where ``waits(T)`` holds in a state when task T is running and cannot go on
-(``TaskFairness.excused``: each of its steps would change nothing of its own, at most
+(``TaskFairness.waiting``: each of its steps would change nothing of its own, at most
 the inputs the environment chose and the interrupts they queue for other tasks:
 ``task_waits``, the same in every model of the inputs).  A task
 waiting for a free input can go on (some input value lets it), so it never
@@ -64,9 +64,7 @@ def waiting_tasks(fairness: TaskFairness, state: State) -> set[int]:
     """The running tasks that cannot go on in ``state``."""
     if state.status != RUNNING:
         return set()
-    excused = fairness.excused(state)
-    return {task for task, stack in enumerate((state.frames,) + state.tasks)
-            if stack and task in excused}
+    return set(fairness.waiting(state))
 
 
 def _reason(system, fairness: TaskFairness, result: SearchResult) -> str:

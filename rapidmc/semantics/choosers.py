@@ -134,6 +134,10 @@ class CheckConfig:
         # value
         self.inputs_where_read = False
         self.input_choices = None        # (program, unread_inputs.InputChoices)
+        # the fair search's: a task's steps that change nothing stay even where another
+        # task can go on (``staged_step.idle_steps_dropped`` keeps them; ``with_idle_steps``)
+        self.idle_steps_kept = False
+        self._with_idle = None           # the copy ``with_idle_steps`` made
         # called between two runs of one step with different choices: the search engine's
         # ``check.budget.time_check`` raises there once the running search's time is up,
         # so a step with thousands of successors cannot run far past the time limit
@@ -187,7 +191,21 @@ class CheckConfig:
         held.input_assignments = ((),)
         held.input_labels = ((),)
         held._merge_table = held.fused = held._unmerged = held.view_steps = None
+        held._with_idle = None
         return held
+
+    def with_idle_steps(self) -> "CheckConfig":
+        """A copy whose successors keep every task's steps that change nothing (a task
+        waiting for an input value it may never get), made once: which tasks could take
+        such a step, for the fair search (``fairness.TaskFairness.excused``)."""
+        if self.idle_steps_kept:
+            return self
+        if self._with_idle is None:
+            kept = copy.copy(self)
+            kept.idle_steps_kept = True
+            kept._with_idle = None
+            self._with_idle = kept
+        return self._with_idle
 
     def unmerged(self) -> "CheckConfig":
         """This configuration without merge points (one instruction per step), made once
@@ -199,6 +217,7 @@ class CheckConfig:
             plain = copy.copy(self)
             plain.merge_points = {}
             plain._merge_table = plain.fused = plain._unmerged = plain.view_steps = None
+            plain._with_idle = None
             cached = self._unmerged = (self.merge_points, plain)
         return cached[1]
 

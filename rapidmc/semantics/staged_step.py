@@ -114,7 +114,7 @@ def staged_successors(program, state: State, config: CheckConfig) -> Optional[li
                 owners += [task_label[0][1]] * (len(result) - len(owners))
     if not tasks and config.merge_points and _may_merge(result):
         return None
-    if tasks:
+    if tasks and not config.idle_steps_kept:
         result = idle_steps_dropped(state, result, owners, standing)
     return edges_at_rest(result, config.edge_inputs)
 

@@ -225,7 +225,8 @@ def general_driver_successors(program: Program, state: State, config: CheckConfi
                                          config.time_check))
     if state.tasks:
         transitions, standing = unchosen_dropped(program, state, transitions, config)
-        transitions = idle_steps_dropped(state, transitions, standing=standing)
+        if not config.idle_steps_kept:
+            transitions = idle_steps_dropped(state, transitions, standing=standing)
     return edges_at_rest(transitions, config.edge_inputs)
 
 
