@@ -44,7 +44,7 @@ from ..semantics import rawbytes
 from ..semantics.errors import RapidError
 from ..semantics.literals import parse_literal
 from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
-from ..semantics.scope import CONSTANT
+from ..semantics.scope import CONSTANT, GLOBAL_DATA
 from ..semantics.types import BOOL, RECORD, STRING, ArrayType, default_value
 from ..semantics.values import format_num
 from .call_graph import called_routines
@@ -305,11 +305,46 @@ def _framed(messages: tuple, encoding: tuple, network: bool) -> tuple:
 
 
 def _followed(program, routines, target, shared: Optional[_Walked] = None) -> Optional["Uses"]:
+    """Where the data ``target`` names goes in ``routines`` (one task's code), and in the
+    code of each other task that reads shared PERS data it reaches (a socket task keeps
+    the command in a PERS string, the motion task compares it): the followed code grows
+    until no other task shares a datum the data reaches."""
     if not isinstance(target, ast.NameRef):
         return None
-    uses = Uses(program, routines, shared)
-    uses.follow({target.name.key: {IDENTITY}})
-    return uses
+    followed = list(routines)
+    while True:
+        uses = Uses(program, followed, shared)
+        uses.follow({target.name.key: {IDENTITY}})
+        sharing = _sharing_tasks(program, uses, followed)
+        if not sharing:
+            return uses
+        followed += sharing
+
+
+def _sharing_tasks(program, uses: "Uses", followed: list) -> list:
+    """The routines of the tasks, none of whose code ``followed`` holds, that name a PERS
+    datum (one store slot for every task declaring it) the data ``uses`` follows reaches."""
+    slots = _shared_slots(followed, uses.views)
+    if not slots:
+        return []
+    inside = {routine.namespace for routine in followed}
+    found = []
+    for task in task_routines(program):
+        if task[0].namespace not in inside and _shared_slots(task, uses.views) & slots:
+            found += task
+    return found
+
+
+def _shared_slots(routines: list, names) -> set:
+    """The store slots of the PERS data shared between tasks that ``names`` denote in
+    ``routines`` (a TASK PERS is each task's own)."""
+    slots = set()
+    for routine in routines:
+        for key in names:
+            symbol = routine.scope.lookup(key)
+            if symbol is not None and symbol.kind == GLOBAL_DATA and symbol.storage == "PERS":
+                slots.add(symbol.slot)
+    return slots
 
 
 def _number_points(numbers) -> tuple:
@@ -514,7 +549,7 @@ class Uses:
         if key == "COPYRAWBYTES":
             self._copied(call)
             return
-        symbol = _routine_named(self.routines, key)
+        symbol = _routine_named(self.routines, key, routine)
         if symbol is None or symbol.ast is None:
             return
         parameters = [p for p in symbol.ast.parameters if not p.optional]
@@ -907,7 +942,7 @@ class Uses:
         ranked = [list(_placed(view, text, separators, heads)) for view, text in wanted]
         # a list of as many numbers as a routine parses from parts it cuts ('[1,1,1]'),
         # and each word matched, alone and heading such a list ('MOVE,1,1')
-        ranked[1:1] = [[form] for form in self._words() + self._list_forms()]
+        ranked[1:1] = [[form] for form in self._words()] + self._list_forms()
         return ranked
 
     def _in_order(self) -> list:
@@ -920,9 +955,11 @@ class Uses:
         """Per number of parts a routine cuts and parses, a list of that many "1"s after the
         opening bracket the code seeks (and before its closing one, if sought), split at the
         separator it seeks most: ``[1,1,1]`` for ``StrFind(s, 1, "[")``, then three
-        ``StrFind(s, i, ",")``/``StrFind(s, i, "]")`` parts parsed; the longest list
-        first, then each shorter one, then the longest with its last part malformed
-        (``[1,1,?]``)."""
+        ``StrFind(s, i, ",")``/``StrFind(s, i, "]")`` parts parsed.  Per head, three groups
+        of forms (``_ranked_forms``' values): the longest list; the longest with its last
+        part malformed (``[1,1,?]``: the last parse's failure); and each shorter list, whose
+        missing part fails to parse (``[1,1]``), as one value's forms, so that a routine
+        parsing forty numbers does not push the commands the code compares out of the cap."""
         others = [text for text in _ordered(self.searched) if text not in BRACKETS.values()
                   and text not in BRACKETS and len(text) == 1]
         if not others:
@@ -935,15 +972,16 @@ class Uses:
         openers = [opener] if opener else \
             [word if word.endswith(others[0]) else word + others[0]
              for word in self._words()] or [""]
-        # and each shorter list, whose missing part fails to parse ('[1,1]'), and the
-        # longest with its last part malformed ('[1,1,?]'): the last parse's failure
         longest = max(self.lists.values(), default=0)
         if longest <= 1:
             return []
-        return [head + others[0].join(["1"] * count) + closer for head in openers
-                for count in range(longest, 1, -1)] + \
-            [head + others[0].join(["1"] * (longest - 1) + [UNEXPECTED]) + closer
-             for head in openers]
+        def listed(head: str, parts: list) -> str:
+            return head + others[0].join(parts) + closer
+        shorter = [listed(head, ["1"] * count) for head in openers
+                   for count in range(longest - 1, 1, -1)]
+        return [[listed(head, ["1"] * longest)] for head in openers] + \
+            [[listed(head, ["1"] * (longest - 1) + [UNEXPECTED])] for head in openers] + \
+            ([shorter] if shorter else [])
 
     def _words(self) -> list:
         """The texts of more than one character the code matches (StrMatch), in order."""
@@ -1448,9 +1486,14 @@ def task_routines(program: Program) -> list[list]:
     return [tasks[namespace] for namespace in sorted(tasks)]
 
 
-def _routine_named(routines: list, key: str):
-    """The routine ``key`` among one task's ``routines``."""
-    return next((routine for routine in routines if routine.key == key), None)
+def _routine_named(routines: list, key: str, caller=None):
+    """The routine ``key`` among ``routines`` (one task's, or several tasks' that share
+    data): the one of ``caller``'s task when that task has one."""
+    named = [routine for routine in routines if routine.key == key]
+    if caller is not None:
+        own = [routine for routine in named if routine.namespace == caller.namespace]
+        named = own or named
+    return named[0] if named else None
 
 
 def _literal_number(expr) -> Optional[float]:
