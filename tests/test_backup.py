@@ -170,3 +170,42 @@ def test_task_identities_name_the_backups_tasks_only(tmp_path, capsys):
     (backup / "RAPID" / "T_ROB1" / "PROGMOD" / "Main.mod").write_text(uses.format("T_ROB2Id"))
     assert main(["check", str(backup)]) == 2
     assert "unknown name 'T_ROB2Id'" in capsys.readouterr().err
+
+
+OLD_MAIN = """MODULE Added
+  PROC main()
+    TPWrite "added after the backup";
+  ENDPROC
+ENDMODULE
+"""
+
+
+@pytest.mark.parametrize("separator", ["/", "\\"])
+def test_a_module_backinfo_does_not_list_is_left_out_with_a_warning(tmp_path, capsys,
+                                                                    separator):
+    """backinfo.txt lists the modules the controller had loaded (a virtual controller
+    writes the folder with a backslash): a file put in the task's folder afterwards, here
+    a second ``main``, is not loaded, and a warning (RMC737) names it."""
+    backup = make_backup(tmp_path, {"TASK1": {"SYSMOD/user.sys": USER_SYS,
+                                              "PROGMOD/MainModule.mod": MAIN_MOD,
+                                              "PROGMOD/Added.mod": OLD_MAIN}})
+    (backup / "BACKINFO" / "backinfo.txt").write_text(
+        ">>TASK1: (T_ROB1,Main,)\n"
+        f"SYSMOD{separator}user.sys @ user.sys\n"
+        f"PROGMOD{separator}MainModule.mod @ mainmodule.mod\n\n>>EOF:\n")
+    assert main(["check", str(backup), "--quiet"]) == 0
+    err = capsys.readouterr().err
+    assert "module Added.mod is in the folder of task T_ROB1 but backinfo.txt does not " \
+           "list it" in err and "[RMC737]" in err
+
+
+def test_without_a_module_list_every_module_of_the_folder_is_loaded(tmp_path, capsys):
+    """A backinfo.txt that names the task but lists no module (or none of the folder's)
+    leaves every module loaded: here the second ``main`` is the error it is."""
+    backup = make_backup(tmp_path, {"TASK1": {"PROGMOD/MainModule.mod": MAIN_MOD,
+                                              "PROGMOD/Added.mod": OLD_MAIN}})
+    (backup / "BACKINFO" / "backinfo.txt").write_text(
+        ">>TASK1: (T_ROB1,Main,)\nPROGMOD/Other.mod @ other.mod\n\n>>EOF:\n")
+    assert main(["check", str(backup), "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert "RMC737" not in err and "declared twice" in err

@@ -128,6 +128,7 @@ PERS_UNWRITTEN = _code("RMC731", "pers-unwritten", "a task checked alone reads P
 ORDER_REDUCTION = _code("RMC732", "order-reduction", "partial-order reduction is off for a property with X (next)")
 EDGES_REPLAYED = _code("RMC733", "edges-replayed", "a counterexample needed an input that only interrupts watch to rise in two steps in a row: the check ran again with its value stored")
 ENCRYPTED_SKIPPED = _code("RMC735", "encrypted-skipped", "an encrypted module beside readable ones (or a backup's task of encrypted modules only) is checked as the interface its uses show")
+MODULE_UNLISTED = _code("RMC737", "module-unlisted", "a module file in a backup's task folder that backinfo.txt does not list among the task's modules: the task is checked without it")
 NO_PROGRAM = _code("RMC736", "no-program", "a controller backup, or the task --task names, holds no program (system modules only): nothing to check, exit 0")
 
 # --- the search engine (750-759) ---------------------------------------------------------

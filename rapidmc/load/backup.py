@@ -21,8 +21,8 @@ from pathlib import Path
 from typing import Optional
 
 from ..ast import Span
-from ..diagnostics import (EXIT_OK, FILE_NOT_FOUND, NO_PROGRAM, PROGRAM_FILE, TASKS_LOADED,
-                           Diagnostic, SourceCache, UserError, error)
+from ..diagnostics import (EXIT_OK, FILE_NOT_FOUND, MODULE_UNLISTED, NO_PROGRAM, PROGRAM_FILE,
+                           TASKS_LOADED, Diagnostic, SourceCache, UserError, error)
 from .config_file import instances
 from .encrypted import (declared_from_uses, interface_of, is_encrypted, missing_of,
                         only_encrypted_note, skipped_note)
@@ -88,12 +88,32 @@ def task_encrypted(task: BackupTask) -> list[str]:
 
 
 def _module_files(task: BackupTask) -> list[str]:
+    """The task's module files the controller had loaded: those its backinfo.txt section
+    lists (``task_unlisted`` are the others), else every one of its folders."""
+    every = _folder_modules(task)
+    listed = [path for key, path in every if task.listed is None or key in task.listed]
+    return listed or [path for _, path in every]
+
+
+def task_unlisted(task: BackupTask) -> list[str]:
+    """The module files in the task's folders that its backinfo.txt section does not list:
+    put there after the controller wrote the backup, so left out, as the controller that
+    restores it leaves them (none when no module of the folders is listed)."""
+    kept = set(_module_files(task))
+    return [path for _, path in _folder_modules(task) if path not in kept]
+
+
+def _folder_modules(task: BackupTask) -> list[tuple[str, str]]:
+    """(``FOLDER/NAME`` in upper case, path) of each module file in the task's SYSMOD, then
+    its PROGMOD folder."""
     modules = []
     for folder in ("SYSMOD", "PROGMOD"):
         directory = _child(task.folder, folder)
         if directory is not None:
-            modules.extend(sorted(str(f) for f in directory.iterdir()
-                                  if f.is_file() and f.suffix.lower() in MODULE_SUFFIXES))
+            modules.extend(sorted(((f"{folder}/{f.name.upper()}", str(f))
+                                   for f in directory.iterdir()
+                                   if f.is_file() and f.suffix.lower() in MODULE_SUFFIXES),
+                                  key=lambda found: found[1]))
     return modules
 
 
@@ -270,6 +290,7 @@ def resolve_program_files(args) -> ProgramFiles:
             notes.extend(skipped)
         becomes_main = main_task is None and not paths
         for number, t in enumerate(chosen):
+            notes.extend(_unlisted_note(path, t, f) for f in task_unlisted(t))
             sealed = task_encrypted(t)
             if sealed:
                 encrypted[None if becomes_main and number == 0 else t.name] = sealed
@@ -349,8 +370,8 @@ def _runnable_tasks(path: Path, tasks: list[BackupTask]) -> tuple[list[BackupTas
 def _holds_program(task: BackupTask) -> bool:
     """Whether ``task`` has a program: a readable program module, or its entry routine."""
     directory = _child(task.folder, "PROGMOD")
-    programs = [str(f) for f in directory.iterdir() if f.is_file() and
-                f.suffix.lower() in MODULE_SUFFIXES] if directory is not None else []
+    programs = [f for f in _module_files(task)
+                if directory is not None and Path(f).parent == directory]
     return any(not is_encrypted(f) for f in programs) or _has_entry(task)
 
 
@@ -371,6 +392,16 @@ def _task_without_program(path: Path, task: BackupTask) -> UserError:
         f"module and no module declares its entry routine {task.entry}; nothing runs, so there "
         "is nothing to check", _task_span(path, task), severity="note",
         notes=("--entry NAME checks one of its routines",))], EXIT_OK)
+
+
+def _unlisted_note(path: Path, task: BackupTask, module: str) -> Diagnostic:
+    """RMC737: a module file the backup's list of the task's modules does not name."""
+    return Diagnostic(MODULE_UNLISTED, f"module {Path(module).name} is in the folder of task "
+                      f"{task.name} but backinfo.txt does not list it among the modules the "
+                      "controller had loaded: the task is checked without it",
+                      _task_span(path, task), severity="warning",
+                      notes=("it was put there after the backup was written; to check it, give "
+                             "the task's module files themselves",))
 
 
 def _loaded_note(path: Path, tasks: list[BackupTask]) -> Diagnostic:

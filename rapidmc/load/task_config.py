@@ -43,6 +43,9 @@ class BackupTask:
     kind: str = ""             # NORMAL, STATIC, SEMISTATIC ("" when not configured)
     entry: str = "main"
     motion: bool = False
+    # the module files backinfo.txt lists for the task's folder ("PROGMOD/MAINMODULE.MOD",
+    # upper case): what the controller had loaded when it wrote the backup (None: no list)
+    listed: Optional[frozenset] = None
 
     def describe(self) -> str:
         details = [d for d in (self.kind, "motion task" if self.motion else "") if d]
@@ -52,13 +55,15 @@ class BackupTask:
 def read_tasks(backup: Path, folders: list[Path]) -> list[BackupTask]:
     """The task folders ``folders`` of ``backup`` with their configured names and settings."""
     names = _folder_names(backup)
+    listed = _listed_modules(backup)
     configured = _configured_tasks(backup)
     tasks = []
     for folder in folders:
         name = names.get(folder.name.upper(), folder.name)
         settings = configured.get(name.upper(), {})
         tasks.append(BackupTask(folder, name, settings.get("TYPE", "").upper(),
-                                settings.get("ENTRY") or "main", "MOTIONTASK" in settings))
+                                settings.get("ENTRY") or "main", "MOTIONTASK" in settings,
+                                listed.get(folder.name.upper())))
     return tasks
 
 
@@ -93,6 +98,28 @@ def _folder_names(backup: Path) -> dict[str, str]:
     text = path.read_bytes().decode("latin-1")
     return {folder.upper(): name for folder, name in _TASK_SECTION.findall(text)
             if folder.upper().startswith("TASK") and name}
+
+
+def _listed_modules(backup: Path) -> dict[str, frozenset]:
+    """TASKn folder (upper case) -> the module files its backinfo.txt section lists, each
+    ``FOLDER/NAME`` in upper case (``PROGMOD/MainModule.mod @ mainmodule.mod``; a virtual
+    controller writes ``PROGMOD\\MainModule.mod``); a section that lists none is left out."""
+    path = config_file(backup, "BACKINFO", "backinfo.txt")
+    if path is None or not path.is_file():
+        return {}
+    found: dict[str, set] = {}
+    section = None
+    for line in path.read_bytes().decode("latin-1").splitlines():
+        header = _TASK_SECTION.match(line)
+        if header is not None:
+            section = header.group(1).upper() if header.group(1).upper().startswith("TASK") \
+                else None
+        elif line.startswith(">>"):
+            section = None
+        elif section is not None and " @ " in line:
+            module = line.split(" @ ")[0].strip().replace("\\", "/").upper()
+            found.setdefault(section, set()).add(module)
+    return {folder: frozenset(modules) for folder, modules in found.items()}
 
 
 def _configured_tasks(backup: Path) -> dict[str, dict[str, str]]:
