@@ -180,19 +180,21 @@ ENDMODULE
 """
 
 
-@pytest.mark.parametrize("separator", ["/", "\\"])
+@pytest.mark.parametrize("separator, loaded_as", [("/", " mainmodule.mod"), ("\\", ""),
+                                                   ("/", "")])
 def test_a_module_backinfo_does_not_list_is_left_out_with_a_warning(tmp_path, capsys,
-                                                                    separator):
+                                                                    separator, loaded_as):
     """backinfo.txt lists the modules the controller had loaded (a virtual controller
-    writes the folder with a backslash): a file put in the task's folder afterwards, here
-    a second ``main``, is not loaded, and a warning (RMC737) names it."""
+    writes the folder with a backslash; some backups leave the name after "@" empty): a
+    file put in the task's folder afterwards, here a second ``main``, is not loaded, and a
+    warning (RMC737) names it."""
     backup = make_backup(tmp_path, {"TASK1": {"SYSMOD/user.sys": USER_SYS,
                                               "PROGMOD/MainModule.mod": MAIN_MOD,
                                               "PROGMOD/Added.mod": OLD_MAIN}})
     (backup / "BACKINFO" / "backinfo.txt").write_text(
         ">>TASK1: (T_ROB1,Main,)\n"
         f"SYSMOD{separator}user.sys @ user.sys\n"
-        f"PROGMOD{separator}MainModule.mod @ mainmodule.mod\n\n>>EOF:\n")
+        f"PROGMOD{separator}MainModule.mod @{loaded_as}\n\n>>EOF:\n")
     assert main(["check", str(backup), "--quiet"]) == 0
     err = capsys.readouterr().err
     assert "module Added.mod is in the folder of task T_ROB1 but backinfo.txt does not " \

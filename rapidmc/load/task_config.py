@@ -32,6 +32,9 @@ from typing import Optional
 from .config_file import instances
 
 _TASK_SECTION = re.compile(r"^>>(\w+):\s*\(\s*([^,)\s]*)", re.MULTILINE)
+# a module line of a task's section: its file, " @", and the name it is loaded under (may be
+# empty: "PROGMOD/MainModule.mod @")
+_MODULE_LINE = re.compile(r"^\s*(.+?)\s+@(?:\s|$)")
 
 
 @dataclass(frozen=True)
@@ -116,9 +119,8 @@ def _listed_modules(backup: Path) -> dict[str, frozenset]:
                 else None
         elif line.startswith(">>"):
             section = None
-        elif section is not None and " @ " in line:
-            module = line.split(" @ ")[0].strip().replace("\\", "/").upper()
-            found.setdefault(section, set()).add(module)
+        elif section is not None and (module := _MODULE_LINE.match(line)) is not None:
+            found.setdefault(section, set()).add(module.group(1).replace("\\", "/").upper())
     return {folder: frozenset(modules) for folder, modules in found.items()}
 
 
