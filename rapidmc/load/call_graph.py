@@ -39,3 +39,16 @@ def called_routines(program: Program) -> Optional[frozenset]:
             elif isinstance(node, ast.Connect):
                 pending.extend(by_name.get(node.trap.key, ()))
     return frozenset(program.routines[index].name for index in seen)
+
+
+class TaskRoutines:
+    """The routines with code of ``routines``, each task's apart: a call resolves to the
+    routine of that name in the caller's task (every task has its ``main``)."""
+
+    def __init__(self, routines):
+        self.routines = [routine for routine in routines if routine.ast is not None]
+        self._named = {(routine.namespace, routine.key): routine for routine in self.routines}
+
+    def called(self, caller, key: str):
+        """The routine a call of ``key`` in ``caller`` runs (None: none of the program's)."""
+        return self._named.get((caller.namespace, key))

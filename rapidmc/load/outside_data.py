@@ -76,6 +76,7 @@ from ..semantics.types import RECORD, ArrayType, RapidType, default_value
 from ..semantics.values import format_value, to_dnum
 from .awaited_from_outside import VALUE_KEYS, awaited_from_outside
 from .other_writers import Counting
+from .call_graph import TaskRoutines
 from .encrypted import from_encrypted_interface
 from .input_domains import analog_points, number_value
 from .shared_data import data_uses, writes_data_by_name
@@ -385,19 +386,19 @@ def _passed_whole(routines, chosen: dict) -> dict:
     string) passed whole to that parameter, directly or through parameters of other
     routines (``executeState pathChoice, stateChoice, ...``, then ``findState(stateChoice)``
     compares it with 1 and 2): each such comparison is one with the data."""
-    own = {r.key: r for r in routines if r.ast is not None}
+    own = TaskRoutines(routines)
     held: dict = {}
     changed = True
     while changed:
         changed = False
-        for routine in own.values():
+        for routine in own.routines:            # every task's (each has its own main)
             mine = {name: slots for (key, name), slots in held.items() if key == routine.key}
             for node, _ in ast.walk(routine.ast):
-                if not isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) \
-                        or node.name.key not in own:
+                callee = own.called(routine, node.name.key) \
+                    if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) else None
+                if callee is None:
                     continue
-                required = [p.name.key for p in own[node.name.key].ast.parameters
-                            if not p.optional]
+                required = [p.name.key for p in callee.ast.parameters if not p.optional]
                 positional = [a for a in node.args if a.name is None]
                 for position, arg in enumerate(positional[:len(required)]):
                     slots = _whole_slots(arg.value, routine.scope, chosen) \

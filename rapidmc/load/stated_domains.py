@@ -33,6 +33,7 @@ from typing import Optional
 from .. import ast
 from ..semantics.configured_signals import COMPARISONS
 from ..semantics.program import Program, Signal
+from .call_graph import TaskRoutines
 
 READERS = frozenset({"GINPUT", "AINPUT"})
 WAITS = frozenset({"WAITGI", "WAITAI"})
@@ -63,26 +64,27 @@ def carriers(program: Program, signal: Signal, aliases: frozenset) -> frozenset:
     the signal data ``aliases`` bound to it, and by name every datum assigned from (or
     parameter passed) an expression that mentions one of them, to a fixed point."""
     names = {signal.key} | set(aliases)
-    routines = {r.name.upper(): r for r in program.routines if r.ast is not None}
+    routines = TaskRoutines(program.routines)
     changed = True
     while changed:
         changed = False
-        for routine in routines.values():
+        for routine in routines.routines:         # every task's (each has its own main)
             for node, _ in ast.walk(routine.ast):
-                for target in _receivers(node, names, routines):
+                for target in _receivers(node, names, routines, routine):
                     if target not in names:
                         names.add(target)
                         changed = True
     return frozenset(names)
 
 
-def _receivers(node, names: set, routines: dict) -> list:
-    """The names ``node`` stores a value mentioning ``names`` into."""
+def _receivers(node, names: set, routines: TaskRoutines, caller) -> list:
+    """The names ``node`` (in ``caller``) stores a value mentioning ``names`` into."""
     if isinstance(node, ast.Assignment) and mentions(node.value, names):
         path = _path(node.target)
         return [path] if path is not None else []
-    if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) and node.name.key in routines:
-        routine = routines[node.name.key]
+    routine = routines.called(caller, node.name.key) \
+        if isinstance(node, (ast.ProcedureCall, ast.FunctionCall)) else None
+    if routine is not None:
         parameters = [p.name.key for p in routine.ast.parameters if not p.optional]
         passed = [arg for arg in node.args if arg.value is not None and mentions(arg.value, names)]
         found = []
