@@ -166,11 +166,12 @@ def _constant_assignments(programs: list, names: set) -> dict:
     """Upper-case name -> the (component path, value) pairs of its assignments, for the
     ``names`` every write of which (``written_names``) assigns a constant or a FOR loop's
     variable; a name written any other way, or assigned another value, is left out."""
-    routines = {routine.name.key: routine for program in programs for module in program.modules
-                for routine in module.routines}
+    every = [routine for program in programs for module in program.modules
+             for routine in module.routines]
+    routines = _by_name(every)
     pairs: dict = {}
     unknown: set = set()
-    for routine in routines.values():
+    for routine in every:        # (LOCAL routines of two modules may share a name)
         for node, parents in ast.walk(routine):
             if isinstance(node, ast.Assignment):
                 target = _target_path(node.target)
@@ -319,8 +320,7 @@ def _shared_persistents(program: ast.Program) -> set:
 def written_names(program: ast.Program) -> set:
     """The upper-case names a program's code may write: assignment targets and
     arguments a routine may write (by reference, or the routine is not declared)."""
-    routines = {routine.name.key: routine for module in program.modules
-                for routine in module.routines}
+    routines = _by_name(routine for module in program.modules for routine in module.routines)
     written = set()
     for module in program.modules:
         for routine in module.routines:
@@ -355,18 +355,32 @@ class _Named:
         self.mode = parameter.mode
 
 
+def _by_name(routines) -> dict:
+    """Upper-case name -> the routines so named (LOCAL routines of two modules may share
+    one)."""
+    found: dict = {}
+    for routine in routines:
+        found.setdefault(routine.name.key, []).append(routine)
+    return found
+
+
 def _may_write(call, argument, routines: dict) -> bool:
+    """Whether the call may write ``argument``: one of the user routines of its name may
+    (a LOCAL routine of another module may be the one called), else the predefined one."""
     if argument.value is None:
         return False
-    routine = routines.get(call.name.key)
-    if routine is not None:
-        parameters = [_Named(p) for p in routine.parameters]
-    else:
-        entry = lookup_procedure(call.name.key) if isinstance(call, ast.ProcedureCall) \
-            else lookup_function(call.name.key)
-        if entry is None:
-            return True                  # a routine of encrypted code or an option: unknown
-        parameters = entry.signature.parameters
+    named = routines.get(call.name.key)
+    if named:
+        return any(_writes(call, argument, [_Named(p) for p in routine.parameters])
+                   for routine in named)
+    entry = lookup_procedure(call.name.key) if isinstance(call, ast.ProcedureCall) \
+        else lookup_function(call.name.key)
+    if entry is None:
+        return True                      # a routine of encrypted code or an option: unknown
+    return _writes(call, argument, entry.signature.parameters)
+
+
+def _writes(call, argument, parameters) -> bool:
     for arg, parameter in matched_parameters(call.args, parameters):
         if arg is argument:
             return parameter is None or mode_may_write(parameter.mode)

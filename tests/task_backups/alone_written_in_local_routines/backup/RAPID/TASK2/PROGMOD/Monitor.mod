@@ -1,0 +1,14 @@
+MODULE Monitor
+    ! Written for the test (issue 27): below zero, a ratio that needs nCode <> -1.
+    PERS num nCode := 0;
+    VAR num nRatio := 0;
+
+    PROC main()
+        WHILE TRUE DO
+            IF nCode < 0 THEN
+                nRatio := 100 / (nCode + 1);
+            ENDIF
+            WaitTime 0.1;
+        ENDWHILE
+    ENDPROC
+ENDMODULE
