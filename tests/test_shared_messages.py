@@ -184,3 +184,45 @@ def test_a_long_list_parsed_leaves_room_for_the_commands(tmp_path):
     messages = domain_of(tmp_path, RECEIVER.format(storage="PERS"), robot)
     assert set(COMMANDS) <= set(messages), messages
     assert ",".join(["1"] * 30) in messages
+
+
+LOCAL_FIRST = """MODULE Other
+  PROC Idle()
+    Handle "x";
+  ENDPROC
+  LOCAL PROC Handle(string other)
+    IF other = "stop" THEN
+      TPWrite "stop";
+    ENDIF
+  ENDPROC
+ENDMODULE
+"""
+
+LOCAL_RECEIVER = """MODULE Recv
+  VAR socketdev sock;
+  VAR string msg := "";
+  PROC main()
+    SocketCreate sock;
+    SocketConnect sock, "10.0.0.2", 5000;
+    SocketReceive sock \\Str:=msg;
+    Handle msg;
+  ERROR
+    RETRY;
+  ENDPROC
+  LOCAL PROC Handle(string text)
+    IF text = "go" THEN
+      TPWrite "go";
+    ENDIF
+  ENDPROC
+ENDMODULE
+"""
+
+
+def test_a_call_reaches_the_local_routine_of_its_own_module(tmp_path):
+    """Two modules of one task each have a LOCAL ``Handle`` (the other module's first):
+    the receiver's call passes the message to its own module's."""
+    first, second = tmp_path / "other.mod", tmp_path / "recv.mod"
+    first.write_text(LOCAL_FIRST)
+    second.write_text(LOCAL_RECEIVER)
+    [domain] = message_domains(api.load_program([str(first), str(second)]))
+    assert "go" in domain.messages, domain.messages

@@ -11,6 +11,7 @@ from typing import Optional
 from .. import ast
 from ..semantics.library.program_control import CALLS_BY_NAME
 from ..semantics.program import Program
+from ..semantics.scope import ROUTINE
 
 
 def called_routines(program: Program) -> Optional[frozenset]:
@@ -42,13 +43,24 @@ def called_routines(program: Program) -> Optional[frozenset]:
 
 
 class TaskRoutines:
-    """The routines with code of ``routines``, each task's apart: a call resolves to the
-    routine of that name in the caller's task (every task has its ``main``)."""
+    """The routines with code of ``routines``, each task's apart: a call resolves as the
+    linker resolved it, to the routine of the caller's task (every task has its ``main``)
+    and, among LOCAL routines of one name, of the caller's module."""
 
     def __init__(self, routines):
         self.routines = [routine for routine in routines if routine.ast is not None]
+        self._numbered = {routine.index: routine for routine in self.routines}
         self._named = {(routine.namespace, routine.key): routine for routine in self.routines}
 
     def called(self, caller, key: str):
         """The routine a call of ``key`` in ``caller`` runs (None: none of the program's)."""
-        return self._named.get((caller.namespace, key))
+        return called_routine(caller, key, self._numbered) or \
+            self._named.get((caller.namespace, key))
+
+
+def called_routine(caller, key: str, numbered: dict):
+    """The routine of ``numbered`` (index -> routine) that the name ``key`` denotes in
+    ``caller``'s scope, else None."""
+    scope = getattr(caller, "scope", None)
+    symbol = scope.lookup(key) if scope is not None else None
+    return numbered.get(symbol.slot) if symbol is not None and symbol.kind == ROUTINE else None

@@ -47,7 +47,7 @@ from ..semantics.program import ENVIRONMENT_NAMESPACE, Program
 from ..semantics.scope import CONSTANT, GLOBAL_DATA
 from ..semantics.types import BOOL, RECORD, STRING, ArrayType, default_value
 from ..semantics.values import format_num
-from .call_graph import called_routines
+from .call_graph import called_routine, called_routines
 from .input_domains import analog_points, group_points, number_value
 from .run_time_offsets import SEQUENCE, walked_starts
 
@@ -1488,11 +1488,13 @@ def task_routines(program: Program) -> list[list]:
 
 def _routine_named(routines: list, key: str, caller=None):
     """The routine ``key`` among ``routines`` (one task's, or several tasks' that share
-    data): the one of ``caller``'s task when that task has one."""
+    data): the one ``caller`` calls by that name when it is given (its task's; of LOCAL
+    routines of one name, its module's)."""
     named = [routine for routine in routines if routine.key == key]
     if caller is not None:
+        called = called_routine(caller, key, {routine.index: routine for routine in named})
         own = [routine for routine in named if routine.namespace == caller.namespace]
-        named = own or named
+        named = [called] if called is not None else own or named
     return named[0] if named else None
 
 
