@@ -218,7 +218,7 @@ def outside_data(linker) -> dict:
         for path, leaf_type, initial in _leaves(data.type, start):
             if known is not None and writes.get(path, ((), (), False))[2] is False:
                 domains[path] = _written_domain(leaf_type, initial, compared.get((slot, path)),
-                                                writes.get(path, ((), (), False)))
+                                                writes.get(path, ((), (), False)), not path)
             else:
                 domains[path] = _domain(leaf_type, initial, compared.get((slot, path)))
         if domains:
@@ -643,14 +643,25 @@ def _written_leaves(rapid_type, pairs: tuple) -> dict:
     return leaves
 
 
-def _written_domain(leaf_type: RapidType, initial: set, compared, writes: tuple) -> tuple:
+ALL_WRITTEN = 16              # written constants a read may all take (more: one per class)
+
+
+def _written_domain(leaf_type: RapidType, initial: set, compared, writes: tuple,
+                    whole: bool = False) -> tuple:
     """The values a read of a component may take when the tasks left out write it only
-    with ``writes`` (constants, ``Counting``s): its initial values and one written value
-    for each set of values the code's comparisons cannot tell apart (each value a
-    constant compared with; the rest, split by the ordering comparisons), so no read
-    takes a value no task writes."""
+    with ``writes`` (constants, ``Counting``s): its initial values and, for a num or
+    string datum (``whole``: not a record's component, whose values chosen apart would
+    mix records no task writes), every constant written when they are at most
+    ``ALL_WRITTEN`` (each may be read, and arithmetic tells apart what no comparison
+    does: a divisor ``n + 1`` where a task writes -1); else one written value for each
+    set of values the code's comparisons cannot tell apart (each value a constant
+    compared with; the rest, split by the ordering comparisons), so no read takes a
+    value no task writes."""
     constants, counted = writes[0], writes[1]
     if leaf_type.key == "BOOL":
+        return tuple(sorted(set(initial) | set(constants)))
+    every = whole and len(constants) <= ALL_WRITTEN and leaf_type.key != "DNUM"
+    if compared is None and every and not counted and len(initial) <= 1:
         return tuple(sorted(set(initial) | set(constants)))
     if compared is None or leaf_type.key == "DNUM":
         return _domain(leaf_type, initial, compared)     # (as when the writes are unknown)
@@ -669,7 +680,8 @@ def _written_domain(leaf_type: RapidType, initial: set, compared, writes: tuple)
     chosen = {_region(v, points, ordered): v for v in reversed(candidates)}
     for value in initial:
         chosen[_region(value, points, ordered)] = value
-    return tuple(sorted(set(chosen.values()) | set(initial)))
+    kept = set(constants) if every else set()
+    return tuple(sorted(set(chosen.values()) | set(initial) | kept))
 
 
 def _region(value, points: set, ordered: bool) -> tuple:
