@@ -226,3 +226,20 @@ def test_a_call_reaches_the_local_routine_of_its_own_module(tmp_path):
     second.write_text(LOCAL_RECEIVER)
     [domain] = message_domains(api.load_program([str(first), str(second)]))
     assert "go" in domain.messages, domain.messages
+
+
+def test_a_long_list_is_shown_with_its_count(tmp_path):
+    """The note shows a run of equal fields as two of them, an ellipsis, the last and the
+    count, not thirty fields one by one."""
+    branches = '    IF cmd = "cmd0" x := 0;'
+    parses = "\n".join(f'    comma := StrFind(text, at, ",");\n'
+                       f'    ok := StrToVal(StrPart(text, at, comma - at), values{{{k}}});\n'
+                       f'    at := comma + 1;' for k in range(1, 31))
+    for number, text in enumerate([RECEIVER.format(storage="PERS"),
+                                   PARSING_ROBOT.format(branches=branches, parses=parses)]):
+        (tmp_path / f"task{number}.mod").write_text(text)
+    program = api.load_program([str(tmp_path / "task0.mod")],
+                               add_tasks=[str(tmp_path / "task1.mod")])
+    [domain] = message_domains(program)
+    note = domain.note().message
+    assert "'1,1,...,1' (30 x '1')" in note and "1,1,1" not in note, note

@@ -114,7 +114,7 @@ class MessageDomain:
         if isinstance(text, tuple):
             return " with ".join(map(self._shown, text))
         if not self.raw:
-            return quoted(text)
+            return _with_runs_counted(text)
         pairs = text.split(" ")
         kept = len(pairs)
         while kept and pairs[kept - 1] == "00":
@@ -124,6 +124,31 @@ class MessageDomain:
             return quoted(text)
         return (quoted(" ".join(pairs[:kept])) + " and " if kept else "") + f"{zeros} bytes 00"
 
+
+def _with_runs_counted(text: str) -> str:
+    """``text`` quoted, its longest run of more than ``RUN_SHOWN`` equal fields (a list of
+    forty numbers ``1``) shown as two of them, an ellipsis and the last, with the count:
+    ``'1,1,...,1,?' (39 x '1')``."""
+    best = None                            # (run length, separator, first field's place)
+    for separator in FIELD_SEPARATORS:
+        fields = text.split(separator)
+        start = 0
+        for end in range(1, len(fields) + 1):
+            if end == len(fields) or fields[end] != fields[start]:
+                if end - start > RUN_SHOWN and (best is None or end - start > best[0]):
+                    best = (end - start, separator, start)
+                start = end
+    if best is None:
+        return quoted(text)
+    run, separator, start = best
+    fields = text.split(separator)
+    field = fields[start]
+    shown = fields[:start] + [field, field, "...", field] + fields[start + run:]
+    return f"{quoted(separator.join(shown))} ({run} x {quoted(field)})"
+
+
+FIELD_SEPARATORS = (",", ";", "|", " ")
+RUN_SHOWN = 8                 # equal fields in a row a note shows one by one
 
 SOCKET, FILE, ANSWERS = "messages", "lines", "answers"
 TEXT_FILES = {"READSTR": "ReadStr"}
