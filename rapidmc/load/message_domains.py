@@ -444,6 +444,7 @@ class Uses:
 
     def __init__(self, program: Program, routines: list, shared: Optional[_Walked] = None):
         self.program, self.routines = program, routines
+        self.named = _routines_by_name(routines)    # looked up at every call the data reaches
         self.walked = shared if shared is not None else _Walked(program)
         self.views: dict[str, set] = {}          # name key -> how it was taken from the message
         self.functions: set[str] = set()         # FUNCs returning data from the message
@@ -549,7 +550,7 @@ class Uses:
         if key == "COPYRAWBYTES":
             self._copied(call)
             return
-        symbol = _routine_named(self.routines, key, routine)
+        symbol = _routine_named(self.named, key, routine)
         if symbol is None or symbol.ast is None:
             return
         parameters = [p for p in symbol.ast.parameters if not p.optional]
@@ -688,7 +689,7 @@ class Uses:
     def _observe(self, node, parents, routine) -> None:
         scope = routine.scope
         if isinstance(node, ast.NameRef) and node.name.key in self.views \
-                and not _plain_read(node, parents, self.routines, scope):
+                and not _plain_read(node, parents, self.named, scope):
             self.exact = False
         if isinstance(node, ast.Binary) and (self.carries(node.left) or self.carries(node.right)):
             self._comparison(node, scope, parents)
@@ -1486,10 +1487,19 @@ def task_routines(program: Program) -> list[list]:
     return [tasks[namespace] for namespace in sorted(tasks)]
 
 
-def _routine_named(routines: list, key: str, caller=None):
-    """The routine ``key`` among ``routines`` (one task's, or several tasks' that share
-    data): the one of ``caller``'s task when that task has one."""
-    named = [routine for routine in routines if routine.key == key]
+def _routines_by_name(routines: list) -> dict[str, list]:
+    """``routines`` (one task's, or several tasks' that share data) by upper-case name, each
+    name's in the order of ``routines``."""
+    named: dict[str, list] = {}
+    for routine in routines:
+        named.setdefault(routine.key, []).append(routine)
+    return named
+
+
+def _routine_named(named: dict[str, list], key: str, caller=None):
+    """The routine ``key`` among the routines ``named`` indexes (``_routines_by_name``):
+    the one of ``caller``'s task when that task has one."""
+    named = named.get(key, [])
     if caller is not None:
         own = [routine for routine in named if routine.namespace == caller.namespace]
         named = own or named
@@ -1508,7 +1518,7 @@ OUTPUTS = {"SOCKETSEND", "TPWRITE", "WRITE", "ERRWRITE", "ERRLOG"} | set(RECEIVE
     | set(NUMBER_ANSWERS)
 
 
-def _plain_read(ref: ast.NameRef, parents: tuple, routines: list, scope) -> bool:
+def _plain_read(ref: ast.NameRef, parents: tuple, named: dict[str, list], scope) -> bool:
     """Whether this use of received data can only tell apart what the tried values do:
     a comparison operand (its other side is judged where it is compared), a TEST subject,
     a copy, a write, an argument of a routine of the program (followed there) or of an
@@ -1523,5 +1533,5 @@ def _plain_read(ref: ast.NameRef, parents: tuple, routines: list, scope) -> bool
     if isinstance(parent, ast.Argument) and len(parents) >= 2:
         call = parents[-2]
         key = getattr(getattr(call, "name", None), "key", "")
-        return key in OUTPUTS or _routine_named(routines, key) is not None
+        return key in OUTPUTS or _routine_named(named, key) is not None
     return False
