@@ -755,7 +755,7 @@ class Uses:
                                   number_value(other, scope)))
         views = {self._in_branches(view, parents, scope) for view in self.view_of(carried)}
         if text is not None and op in EQUALITY:
-            self.compared.extend((view, text) for view in views)
+            self.compared.extend((view, text) for view in _in_view_order(views))
             self.exact = self.exact and views == {IDENTITY}
             return
         number = number_value(other, scope)
@@ -768,7 +768,7 @@ class Uses:
             self.numbers.add(number)
         if LENGTH in views:
             self.lengths.add(number)
-        for view in views:
+        for view in _in_view_order(views):
             if view is not None and view[0] == "field":
                 self.fields.setdefault(view[1:], set()).add(number)
             elif view is not None and view[0] == "parsed":
@@ -1485,6 +1485,12 @@ def task_routines(program: Program) -> list[list]:
         if routine.ast is not None and routine.namespace != ENVIRONMENT_NAMESPACE:
             tasks.setdefault(routine.namespace, []).append(routine)
     return [tasks[namespace] for namespace in sorted(tasks)]
+
+
+def _in_view_order(views: set) -> list:
+    """``views`` in an order fixed across runs: a set's order is not (strings hash with a
+    per-process seed, and ``None``, the unknown view, by its address)."""
+    return sorted(views, key=lambda view: (view is not None, repr(view)))
 
 
 def _routines_by_name(routines: list) -> dict[str, list]:
