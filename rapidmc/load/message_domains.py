@@ -469,6 +469,7 @@ class Uses:
 
     def __init__(self, program: Program, routines: list, shared: Optional[_Walked] = None):
         self.program, self.routines = program, routines
+        self.named = _routines_by_name(routines)    # looked up at every call the data reaches
         self.walked = shared if shared is not None else _Walked(program)
         self.views: dict[str, set] = {}          # name key -> how it was taken from the message
         self.functions: set[str] = set()         # FUNCs returning data from the message
@@ -574,7 +575,7 @@ class Uses:
         if key == "COPYRAWBYTES":
             self._copied(call)
             return
-        symbol = _routine_named(self.routines, key, routine)
+        symbol = _routine_named(self.named, key, routine)
         if symbol is None or symbol.ast is None:
             return
         parameters = [p for p in symbol.ast.parameters if not p.optional]
@@ -713,7 +714,7 @@ class Uses:
     def _observe(self, node, parents, routine) -> None:
         scope = routine.scope
         if isinstance(node, ast.NameRef) and node.name.key in self.views \
-                and not _plain_read(node, parents, self.routines, scope):
+                and not _plain_read(node, parents, self.named, scope):
             self.exact = False
         if isinstance(node, ast.Binary) and (self.carries(node.left) or self.carries(node.right)):
             self._comparison(node, scope, parents)
@@ -779,7 +780,7 @@ class Uses:
                                   number_value(other, scope)))
         views = {self._in_branches(view, parents, scope) for view in self.view_of(carried)}
         if text is not None and op in EQUALITY:
-            self.compared.extend((view, text) for view in views)
+            self.compared.extend((view, text) for view in _in_view_order(views))
             self.exact = self.exact and views == {IDENTITY}
             return
         number = number_value(other, scope)
@@ -792,7 +793,7 @@ class Uses:
             self.numbers.add(number)
         if LENGTH in views:
             self.lengths.add(number)
-        for view in views:
+        for view in _in_view_order(views):
             if view is not None and view[0] == "field":
                 self.fields.setdefault(view[1:], set()).add(number)
             elif view is not None and view[0] == "parsed":
@@ -1511,11 +1512,26 @@ def task_routines(program: Program) -> list[list]:
     return [tasks[namespace] for namespace in sorted(tasks)]
 
 
-def _routine_named(routines: list, key: str, caller=None):
-    """The routine ``key`` among ``routines`` (one task's, or several tasks' that share
-    data): the one ``caller`` calls by that name when it is given (its task's; of LOCAL
-    routines of one name, its module's)."""
-    named = [routine for routine in routines if routine.key == key]
+def _in_view_order(views: set) -> list:
+    """``views`` in an order fixed across runs: a set's order is not (strings hash with a
+    per-process seed, and ``None``, the unknown view, by its address)."""
+    return sorted(views, key=lambda view: (view is not None, repr(view)))
+
+
+def _routines_by_name(routines: list) -> dict[str, list]:
+    """``routines`` (one task's, or several tasks' that share data) by upper-case name, each
+    name's in the order of ``routines``."""
+    named: dict[str, list] = {}
+    for routine in routines:
+        named.setdefault(routine.key, []).append(routine)
+    return named
+
+
+def _routine_named(named: dict[str, list], key: str, caller=None):
+    """The routine ``key`` among the routines ``named`` indexes (``_routines_by_name``):
+    the one ``caller`` calls by that name when it is given (its task's; of LOCAL routines
+    of one name, its module's)."""
+    named = named.get(key, [])
     if caller is not None:
         called = called_routine(caller, key, {routine.index: routine for routine in named})
         own = [routine for routine in named if routine.namespace == caller.namespace]
@@ -1535,7 +1551,7 @@ OUTPUTS = {"SOCKETSEND", "TPWRITE", "WRITE", "ERRWRITE", "ERRLOG"} | set(RECEIVE
     | set(NUMBER_ANSWERS)
 
 
-def _plain_read(ref: ast.NameRef, parents: tuple, routines: list, scope) -> bool:
+def _plain_read(ref: ast.NameRef, parents: tuple, named: dict[str, list], scope) -> bool:
     """Whether this use of received data can only tell apart what the tried values do:
     a comparison operand (its other side is judged where it is compared), a TEST subject,
     a copy, a write, an argument of a routine of the program (followed there) or of an
@@ -1550,5 +1566,5 @@ def _plain_read(ref: ast.NameRef, parents: tuple, routines: list, scope) -> bool
     if isinstance(parent, ast.Argument) and len(parents) >= 2:
         call = parents[-2]
         key = getattr(getattr(call, "name", None), "key", "")
-        return key in OUTPUTS or _routine_named(routines, key) is not None
+        return key in OUTPUTS or _routine_named(named, key) is not None
     return False
