@@ -11,9 +11,12 @@ from __future__ import annotations
 import pytest
 
 from rapidmc import api
+from rapidmc.check import native
 from rapidmc.load.message_domains import message_domains
 
 from cli_capture import run_cli, two_task_verdicts
+
+ENGINES = native.ENGINES if native.available() else (native.PYTHON,)
 
 RECEIVER = """MODULE Recv
   VAR socketdev sock;
@@ -77,7 +80,7 @@ def test_a_task_pers_of_the_same_name_is_not_followed(tmp_path):
     assert "go" not in messages
 
 
-@pytest.mark.parametrize("engine", ["native", "python"])
+@pytest.mark.parametrize("engine", ENGINES)
 def test_the_other_tasks_branch_is_reached_and_its_property_refuted(tmp_path, engine):
     program = (RECEIVER.format(storage="PERS"), ROBOT.format(storage="PERS"))
     found = two_task_verdicts(tmp_path, program, ['never_one: G "x = 0"'],

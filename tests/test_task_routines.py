@@ -10,7 +10,10 @@ from __future__ import annotations
 
 import pytest
 
+from rapidmc.check import native
 from cli_capture import verdicts_and_states
+
+ENGINES = native.ENGINES if native.available() else (native.PYTHON,)
 
 OUTSIDE_MODE = """MODULE Cell
   PERS num mode := 0;
@@ -80,7 +83,7 @@ def verdicts(tmp_path, tasks: list, formula: str, *flags: str) -> dict:
                                 *flags], cwd=tmp_path)
 
 
-@pytest.mark.parametrize("engine", ["native", "python"])
+@pytest.mark.parametrize("engine", ENGINES)
 def test_data_written_from_outside_reaches_a_comparison_beside_another_task(tmp_path, engine):
     """``mode`` (no loaded code writes it) goes from the main task's ``main`` to ``Pick``,
     which compares it with 7: with an idle second task too, 7 is tried."""
@@ -89,7 +92,7 @@ def test_data_written_from_outside_reaches_a_comparison_beside_another_task(tmp_
     assert alone["P"][0] == beside["P"][0] == "VIOLATED"
 
 
-@pytest.mark.parametrize("engine", ["native", "python"])
+@pytest.mark.parametrize("engine", ENGINES)
 def test_an_analog_input_takes_values_around_another_tasks_comparisons(tmp_path, engine):
     """The reader task stores the input in PERS ``level``; the other task compares it with
     61 and 63: the values singled out fall between them, so ``x := 1`` is reached."""
