@@ -305,6 +305,13 @@ compiled("LoadId(paridnum ParIdType, loadidnum LoadIdType, PERS tooldata Tool "
              "\\VAR num Accuracy)",
          modelled=NOT_MODELLED)(not_modelled("identifies a load by moving the robot, which "
                                              "rapidmc does not model"))
+# The service routine an operator starts from the FlexPendant (Debug > Call routine) to
+# identify a tool's or payload's load; RobotWare installs it in every motion task. Evidence:
+# a public controller backup (RobotWare 6.13) calls `LoadIdentify;` without arguments from a
+# procedure of its own. It asks the operator which data to identify and calls LoadId.
+compiled("LoadIdentify()",
+         modelled=NOT_MODELLED)(not_modelled("asks the operator which load to identify and "
+                                             "moves the robot, which rapidmc does not model"))
 compiled("ProcerrRecovery(\\switch SyncOrgMoveInst | switch SyncLastMoveInst "
              "\\VAR signaldo ProcSignal)",
          modelled=NOT_MODELLED)(not_modelled("raises a process error in the running move, which "
