@@ -11,7 +11,8 @@ what a reader sees.
 Every case is also checked for what must hold of any report: no line over 300
 characters (``--full-trace`` too), no Python spelling of a value (``None``, ``b'...'``,
 ``(0.0, ...)``), the same counterexample in JSON with full values, and a JSON trace that
-replays.
+replays.  A case whose JSON trace does not replay because of a checker bug carries a file
+``replay-xfail`` saying what the bug is; its replay runs as ``xfail(strict=True)``.
 """
 from __future__ import annotations
 
@@ -120,7 +121,14 @@ def test_text_report_is_short_and_speaks_rapid(case, monkeypatch):
         assert not PYTHON_SPELLINGS.search(out + err), PYTHON_SPELLINGS.search(out + err)
 
 
-@pytest.mark.parametrize("case", CASES)
+def replay_marks(case: str) -> list:
+    """``xfail(strict=True)`` for a case whose ``replay-xfail`` names the bug, else none."""
+    reason = CASES_DIR / case / "replay-xfail"
+    return [pytest.mark.xfail(strict=True, reason=reason.read_text().strip())] \
+        if reason.exists() else []
+
+
+@pytest.mark.parametrize("case", [pytest.param(case, marks=replay_marks(case)) for case in CASES])
 def test_json_has_full_values_and_replays(case, monkeypatch, tmp_path, capsys):
     code, out, _ = run(case, monkeypatch, "--format", "json")
     document = json.loads(out)

@@ -70,6 +70,9 @@ class TraceDescriber(Protocol):
     Optional: ``describe_stack(state) -> tuple[CallFrame, ...]`` (outermost
     routine first); without it, steps carry an empty stack.  Optional:
     ``absent_values``, the value of a name while ``describe_state`` leaves it out.
+    Optional: ``describe_ending_transition(label)``, the last transition of a path that
+    ends in an error, at the statement that raised it (a transition that ran several
+    statements is otherwise shown at its first).
     """
 
     def describe_state(self, state: Hashable) -> Mapping[str, str]: ...
@@ -209,6 +212,11 @@ def build_trace(result: SearchResult, describer: TraceDescriber) -> Trace:
                               describer)
         closing = replace(closing, stack=tuple(describe_stack(cycle[-1].state)))
     split = len(prefix)
+    if not cycle and result.ending not in (None, BAD_PREFIX) and steps and \
+            steps[-1].kind == TRANSITION:
+        ending = getattr(describer, "describe_ending_transition", None)
+        if ending is not None:
+            steps[-1] = replace(steps[-1], transition=ending(prefix[-1].label))
     return Trace(tuple(steps[:split]), tuple(steps[split:]), closing,
                  None if cycle else result.ending)
 

@@ -552,11 +552,13 @@ class RapidDescriber:
             self._data_names = frozenset(g.name for g in self.program.globals)
         return DATA_CHOICE.match(name).group(0) in self._data_names
 
-    def describe_transition(self, label) -> TransitionInfo:
+    def describe_transition(self, label, at_last: bool = False) -> TransitionInfo:
+        """What a transition did; a merged step is shown at its first statement, or with
+        ``at_last`` at its last one (the statement that raised the error a path ends in)."""
         choices, span, output = label
         inputs = {name: _choice_text(value, self._data_choice(name)) for name, value in choices}
         spans = executed_spans(span)
-        span = spans[0]                      # a merged step is shown at its first statement
+        span = spans[-1] if at_last else spans[0]
         if span is None:
             source = "(the program has stopped: this state repeats forever)" if not choices \
                 else "(the program continues after the Stop)" if inputs.get(OPERATOR_CHOICE) \
@@ -567,6 +569,11 @@ class RapidDescriber:
         if statements == (source,):
             statements = ()
         return TransitionInfo(span.file, span.line, source, inputs, output, statements)
+
+    def describe_ending_transition(self, label) -> TransitionInfo:
+        """The last transition of a path that ends in an error, at the statement that raised
+        it: a merged step's last statement, not its first."""
+        return self.describe_transition(label, at_last=True)
 
 
 def _statement_text(span) -> str:
