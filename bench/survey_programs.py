@@ -104,6 +104,11 @@ OWN_ERRORS = {
         "TPWrite given three positional arguments",
     ("Sensor-Based Automatic Unloading and Arrangement System", "RMC204"):
         "two modules of TASK1 declare main (MainModule, ProgramSelector)",
+    ("Springa13+ABBController", "RMC204"): "MoveObject.mod declares VAR jointtarget Move5 twice",
+    ("growster+Robot-Piano", "RMC206"):
+        "SoundArray{14,2} is given an aggregate of 10 rows (PointModule.mod)",
+    ("liamjosephnolan+DiceRobot", "RMC206"):
+        "the FUNC reset_dice is called as a procedure (MainModule.mod:26)",
 }
 
 
