@@ -84,10 +84,12 @@ class StatementErrors:
 class ErrnoTests:
     """The feasible successors of a routine's handler tests of ERRNO (module docstring)."""
 
-    def __init__(self, program, routine, nodes: dict):
+    def __init__(self, program, routine, nodes: dict, booked: Optional[set] = None):
+        """``booked``: ``booked_errnums(program)``, when the caller has it already (it
+        walks every routine: computed once per program, not once per handler)."""
         self.routine = routine
         self.nodes = nodes
-        self.booked = _booked_errnums(program)
+        self.booked = booked_errnums(program) if booked is None else booked
         self.prunable = _stable_tests(program, routine, nodes)
 
     def targets(self, pc: int, errors: Optional[frozenset]) -> Optional[list]:
@@ -160,7 +162,7 @@ class ErrnoTests:
         return value == number
 
 
-def _booked_errnums(program) -> set:
+def booked_errnums(program) -> set:
     """Global slots of VAR data only BookErrNo writes (module docstring)."""
     candidates = {data.key: data for data in program.globals
                   if data.storage == "VAR" and getattr(data.type, "key", "") == "NUM"
