@@ -40,7 +40,8 @@ declares is checked again with the module ``rapidmc stubs`` writes for it.  Outc
   program's own (the controller would refuse it too);
 * ``no entry``: a backup task without its entry routine (RMC211); ``no program``: a task of
   system modules only (RMC736); ``encrypted``: every module of the program is encrypted;
-* ``internal``: exit 4.
+* ``internal``: exit 4, or a Python traceback on the command's stderr whatever its exit
+  code (the row's detail is the traceback's last lines).
 
 Each row also keeps the most model states a property's search of the program explored and
 the CPU seconds of its rapidmc commands (the children's own, whatever ``--jobs``), shown on
@@ -119,6 +120,7 @@ class Program:
     duplicates: int = 0
     states: int = 0            # the most model states a property's search explored
     cpu: float = 0.0           # CPU seconds of the program's rapidmc commands
+    trace: str = ""            # the end of a Python traceback a command printed
 
 
 def extract(mirrors: Path, corpus: Path) -> None:
@@ -263,7 +265,7 @@ def earlier_rows(path: Path, outcomes: set[str]) -> tuple[list[Program], list[Pr
             for row in json.loads(path.read_text())]
     again = [row for row in rows if row.outcome in outcomes]
     for row in again:
-        row.outcome, row.detail, row.codes, row.stubbed = "", "", [], False
+        row.outcome, row.detail, row.codes, row.stubbed, row.trace = "", "", [], False, ""
     for row in rows:                 # the reviewed list as it is now
         _own_error(row)
     chosen = {id(row) for row in again}
@@ -301,24 +303,45 @@ def _distinct(programs: list[Program], libraries: bool = True) -> tuple[list[Pro
 
 def rapidmc(words: list[str], cpu: int, program: Optional[Program] = None) -> tuple[int, dict]:
     """Exit code and JSON report of one rapidmc command under a CPU limit (-1: reached);
-    its CPU seconds are added to ``program.cpu``."""
+    its CPU seconds are added to ``program.cpu``, and a traceback it printed to
+    ``program.trace``."""
+    return run_child([sys.executable, "-m", "rapidmc", *words], cpu, program)
+
+
+TRACEBACK = "Traceback (most recent call last)"
+
+
+def run_child(argv: list[str], cpu: int, program: Optional[Program] = None) -> tuple[int, dict]:
+    """``rapidmc`` for any command line ``argv`` (its stderr kept in a file, never a pipe
+    that could fill while stdout is read)."""
     def limit() -> None:
         resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 1))
-    child = subprocess.Popen([sys.executable, "-m", "rapidmc", *words], stdout=subprocess.PIPE,
-                             stderr=subprocess.DEVNULL, text=True, errors="replace",
-                             preexec_fn=limit)
-    output = child.stdout.read()
-    child.stdout.close()
-    _, status, usage = os.wait4(child.pid, 0)        # the child's own CPU time, not the jobs'
+    with tempfile.TemporaryFile(mode="w+", errors="replace") as errors:
+        child = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=errors, text=True,
+                                 errors="replace", preexec_fn=limit)
+        output = child.stdout.read()
+        child.stdout.close()
+        _, status, usage = os.wait4(child.pid, 0)    # the child's own CPU time, not the jobs'
+        errors.seek(0)
+        printed = errors.read()
     child.returncode = os.waitstatus_to_exitcode(status)
     if program is not None:
         program.cpu += usage.ru_utime + usage.ru_stime
+        if TRACEBACK in printed and not program.trace:
+            program.trace = _last_lines(printed[printed.index(TRACEBACK):])
     if child.returncode < 0:
         return -1, {}
     try:
         return child.returncode, json.loads(output)
     except ValueError:
         return child.returncode, {}
+
+
+def _last_lines(text: str, count: int = 3) -> str:
+    """A traceback's exception, then the ``count`` - 1 lines above it, last first (what
+    was raised and where, in the row's first 90 characters)."""
+    lines = [line.strip() for line in text.splitlines() if line.strip()]
+    return " <- ".join(reversed(lines[-count:]))
 
 
 def survey(program: Program, options: list[str], cpu: int, stubs: bool) -> Program:
@@ -358,6 +381,9 @@ def _with(command: list[str], extra: str) -> list[str]:
 
 def _classify(program: Program, code: int, report: dict) -> None:
     errors = report.get("errors", [])
+    if program.trace:                   # rapidmc's own fault, whatever the exit code says
+        program.outcome, program.detail = "internal", program.trace
+        return
     program.codes = sorted({e.get("code", "?") for e in errors})
     program.states = max((p.get("stats", {}).get("model_states") or 0
                           for p in report.get("properties", ())), default=0)
