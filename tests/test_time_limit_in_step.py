@@ -20,6 +20,12 @@ ANSWERS = 3000          # TPReadNum's answers: one step with 3,000 successors
 LIMIT = 20              # seconds of the counting clock
 
 
+FAN_LOOP = ("        WHILE TRUE DO\n"
+            "            TPReadNum answer, \"How many parts?\";\n"
+            "            answer := 0;\n"
+            "        ENDWHILE\n")
+
+
 class CountingClock:
     """A clock that advances one second each time it is read."""
 
@@ -39,10 +45,7 @@ def program(tmp_path):
     module.write_text("MODULE Fan\n"
                       "    VAR num answer;\n"
                       "    PROC main()\n"
-                      "        WHILE TRUE DO\n"
-                      "            TPReadNum answer, \"How many parts?\";\n"
-                      "            answer := 0;\n"
-                      "        ENDWHILE\n"
+                      f"{FAN_LOOP}"
                       "    ENDPROC\n"
                       "ENDMODULE\n")
     return load_program([str(module)])
@@ -103,10 +106,7 @@ def climbing(tmp_path):
                       "            k := i;\n"
                       "            TPWrite \"at \"\\Num:=k;\n"
                       "        ENDFOR\n"
-                      "        WHILE TRUE DO\n"
-                      "            TPReadNum answer, \"How many parts?\";\n"
-                      "            answer := 0;\n"
-                      "        ENDWHILE\n"
+                      f"{FAN_LOOP}"
                       "    ENDPROC\n"
                       "ENDMODULE\n")
     return load_program([str(module)])
