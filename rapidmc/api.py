@@ -874,6 +874,8 @@ def _builtin(reach, system: RapidSystem, name: str, description: str, predicate:
     if result.verdict == VIOLATED:
         end_at_error(system, result)
         _replayed(system, result)
+    elif result.frontier is not None:        # UNKNOWN: how far the search came
+        result.deepest, result.frontier = system.task_places(result.frontier), None
     return PropertyResult(name, description, result)
 
 

@@ -119,7 +119,9 @@ def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], boo
     if target is not None:
         return SearchResult(VIOLATED, None, search.path_to(target), [], stats)
     if budget.reason is not None:
-        return SearchResult(UNKNOWN, budget.reason, stats=stats)
+        stored = len(search.states)
+        return SearchResult(UNKNOWN, budget.reason, stats=stats,
+                            frontier=search.states[stored - 1] if stored else None)
     if search.graph is not None:
         release = getattr(search.states, "release_index", None)
         if release is not None:      # (what only interning needs; made again if asked)
