@@ -34,7 +34,9 @@ command, as the surveys of docs/realworld-survey.md; one that stops at names no 
 declares is checked again with the module ``rapidmc stubs`` writes for it.  Outcomes:
 
 * ``verdict``: HOLDS or VIOLATED (exit 0 or 1), with the violated properties;
-* ``unknown``: UNKNOWN at the state bound (exit 3); ``cpu limit``: the limit was reached;
+* ``unknown``: UNKNOWN at the state bound (exit 3), the detail saying how far the first
+  search came (``deepest_state``: its depth and where each task stood); ``cpu limit``: the
+  limit was reached;
 * ``load error``: exit 2, with its diagnostic codes (after stubs, when they were tried);
 * ``own error``: a load error the survey's reviewed list (``OWN_ERRORS``) gives as the
   program's own (the controller would refuse it too);
@@ -121,6 +123,7 @@ class Program:
     states: int = 0            # the most model states a property's search explored
     cpu: float = 0.0           # CPU seconds of the program's rapidmc commands
     trace: str = ""            # the end of a Python traceback a command printed
+    deepest: str = ""          # UNKNOWN: where each task stood when the first search stopped
 
 
 def extract(mirrors: Path, corpus: Path) -> None:
@@ -265,7 +268,8 @@ def earlier_rows(path: Path, outcomes: set[str]) -> tuple[list[Program], list[Pr
             for row in json.loads(path.read_text())]
     again = [row for row in rows if row.outcome in outcomes]
     for row in again:
-        row.outcome, row.detail, row.codes, row.stubbed, row.trace = "", "", [], False, ""
+        row.outcome, row.detail, row.codes, row.stubbed, row.trace, row.deepest = \
+            "", "", [], False, "", ""
     for row in rows:                 # the reviewed list as it is now
         _own_error(row)
     chosen = {id(row) for row in again}
@@ -387,6 +391,8 @@ def _classify(program: Program, code: int, report: dict) -> None:
     program.codes = sorted({e.get("code", "?") for e in errors})
     program.states = max((p.get("stats", {}).get("model_states") or 0
                           for p in report.get("properties", ())), default=0)
+    program.deepest = next((deepest_text(p) for p in report.get("properties", ())
+                            if p.get("deepest_state")), "")
     notes = {w.get("code") for w in report.get("warnings", ())}
     if code == -1:
         program.outcome = "cpu limit"
@@ -398,7 +404,7 @@ def _classify(program: Program, code: int, report: dict) -> None:
         program.outcome = "verdict"
         program.detail = "VIOLATED " + ",".join(violated) if violated else "HOLDS"
     elif code == 3:
-        program.outcome = "unknown"
+        program.outcome, program.detail = "unknown", program.deepest
     elif code == 2:
         first = errors[0] if errors else {}
         program.outcome = "no entry" if "RMC211" in program.codes else "load error"
@@ -406,6 +412,15 @@ def _classify(program: Program, code: int, report: dict) -> None:
         _own_error(program)
     else:
         program.outcome = "internal"
+
+
+def deepest_text(entry: dict) -> str:
+    """``depth 158: T_ROB1 r_RRC_InitCell:87, T_RX r_RRC_InitVar:164`` of a property's
+    ``deepest_state`` (how far an UNKNOWN search came)."""
+    places = ", ".join(f"{place['task']} {place['routine'] or 'ended'}"
+                       + (f":{place['line']}" if place["routine"] else "")
+                       for place in entry["deepest_state"])
+    return f"depth {entry['stats']['max_depth']}: {places}"
 
 
 def _own_error(program: Program) -> None:

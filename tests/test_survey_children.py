@@ -51,3 +51,16 @@ def test_a_diagnostic_on_stderr_leaves_the_row_to_its_exit_code(survey):
     survey._classify(row, code, report)
     assert (row.outcome, row.trace) == ("load error", "")
     assert row.detail.startswith("RMC201")
+
+
+def test_an_unknown_row_says_how_far_its_search_came(survey):
+    row = _row(survey)
+    place = {"task": "T_ROB1", "routine": "r_RRC_InitCell", "file": "RRC_Control_Rob.sys",
+             "line": 87, "statement": "WaitSyncTask id_RRC_InitCtrl,tl_RRC_All;"}
+    ended = dict(place, task="T_LOG", routine="", line=0)
+    report = {"properties": [{"name": "no_runtime_error", "verdict": "UNKNOWN",
+                              "stats": {"model_states": 12077, "max_depth": 158},
+                              "deepest_state": [place, ended]}]}
+    survey._classify(row, 3, report)
+    assert (row.outcome, row.states) == ("unknown", 12077)
+    assert row.detail == "depth 158: T_ROB1 r_RRC_InitCell:87, T_LOG ended"
