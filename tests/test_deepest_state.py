@@ -9,6 +9,7 @@ names the depth reached and where each task stands in the last state stored (tex
 from __future__ import annotations
 
 import json
+import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
@@ -106,3 +107,19 @@ def test_a_complete_search_names_no_deepest_state(tmp_path):
     assert all(entry["deepest_state"] is None
                for entry in json.loads(captured.out)["properties"])
     assert "searched to depth" not in run_cli(["check", program, "--quiet"]).out
+
+
+def test_junit_and_sarif_say_how_far_the_search_came(tmp_path):
+    cell = backup(tmp_path / "cell")
+    junit = tmp_path / "checks.xml"
+    sarif = run_cli(["check", cell, "--max-states", "60", "--format", "sarif", "--quiet",
+                     "--junit", junit])
+    messages = [result["message"]["text"] for run in json.loads(sarif.out)["runs"]
+                for result in run["results"] if "UNKNOWN" in result["message"]["text"]]
+    assert messages and all("last state stored: T_ROB1 in main (Robot.mod:" in message
+                            for message in messages)
+    assert "; searched to depth " in messages[0]
+    skipped = [case.find("skipped") for case in ET.parse(junit).getroot().iter("testcase")]
+    texts = [element.text for element in skipped if element is not None]
+    assert texts and all("(searched to depth " in text and "T_LOG in main" in text
+                         for text in texts)

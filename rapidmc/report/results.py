@@ -146,10 +146,17 @@ def deepest_lines(result: SearchResult) -> list[str]:
     last state stored: T_ROB1 in r_RRC_InitVar (RRC_Control_Rob.sys:122), ...``
     (a search that stopped while every task is still in its start-up covers no
     production cycle)."""
+    text = deepest_text(result)
+    return [f"  {text}"] if text else []
+
+
+def deepest_text(result: SearchResult) -> str:
+    """``searched to depth 166; last state stored: T_ROB1 in ...`` ("" where the result
+    names no deepest state)."""
     if result.verdict != UNKNOWN or not result.deepest:
-        return []
-    return [f"  searched to depth {result.stats.max_depth:,}; last state stored: "
-            + ", ".join(place_text(place) for place in result.deepest)]
+        return ""
+    return f"searched to depth {result.stats.max_depth:,}; last state stored: " + \
+        ", ".join(place_text(place) for place in result.deepest)
 
 
 def place_text(place) -> str:
