@@ -98,6 +98,18 @@ def test_the_text_report_says_how_far_the_search_came(tmp_path):
     assert "T_LOG in main (Logger.mod:" in below
 
 
+@pytest.mark.parametrize("engine", ENGINES)
+def test_an_unknown_ltl_property_says_where_its_search_stood(tmp_path, engine):
+    cell = backup(tmp_path / "cell")
+    (tmp_path / "p.ltl").write_text('G F "count > 5"\n')
+    captured = run_cli(["check", cell, "--ltl", tmp_path / "p.ltl", "--max-states", "60",
+                        "--engine", engine, "--format", "json", "--quiet"])
+    entry = json.loads(captured.out)["properties"][-1]
+    assert (entry["name"], entry["verdict"]) == ('G F "count > 5"', "UNKNOWN")
+    assert [(place["task"], place["routine"]) for place in entry["deepest_state"]] == \
+        [("T_ROB1", "main"), ("T_LOG", "main")]
+
+
 def test_a_complete_search_names_no_deepest_state(tmp_path):
     program = tmp_path / "once.mod"
     program.write_text("MODULE Once\n    PROC main()\n        TPWrite \"hello\";\n"
