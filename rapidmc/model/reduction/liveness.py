@@ -52,7 +52,7 @@ from ...semantics.library.motion import MOVE_ROUTINES
 from ...semantics.library.program_control import CALLS_BY_NAME, RESTARTS_CYCLE
 from ...semantics.scope import ROUTINE
 from .merging import JUMP_FIELDS, nodes_by_span
-from .raised_errors import ErrnoTests, StatementErrors
+from .raised_errors import BookedErrnums, ErrnoTests, StatementErrors
 from .relevance import DATA_BY_NAME, Resolver, is_value, routine_data
 from .totality import Totality
 
@@ -87,6 +87,7 @@ class DeadData:
         global_candidates = _global_candidates(program, atom_keys, skip)
         reads = _global_reads(program) if global_candidates else {}
         global_candidates = _untrapped(program, global_candidates, reads)
+        booked = BookedErrnums(program)
         for routine in program.routines:
             if routine.ast is None or getattr(routine, "scope", None) is None:
                 continue
@@ -99,7 +100,7 @@ class DeadData:
             if not tracked:
                 continue
             live, in_handler = _live_in(routine, tracked, reads,
-                                        routine.index == program.entry, program)
+                                        routine.index == program.entry, program, booked)
 
             def dead(candidates: list, kind: tuple, live_here: set) -> tuple:
                 return tuple(slot for slot in candidates if (*kind, slot) not in live_here)
@@ -227,7 +228,8 @@ def _calls(node) -> Iterator:
 
 
 def _live_in(routine, tracked: set, reads: dict, entry: bool = False,
-             program: Optional[Program] = None) -> tuple[list[set], dict]:
+             program: Optional[Program] = None,
+             booked: Optional[BookedErrnums] = None) -> tuple[list[set], dict]:
     """(live(pc) ∩ tracked for every pc, live((pc, e)) for every pc of the ERROR handler
     and every statement start ``e`` an error may come from), by backward iteration to a
     fixed point.
@@ -275,7 +277,7 @@ def _live_in(routine, tracked: set, reads: dict, entry: bool = False,
             known = isinstance(start, int) and 0 <= start < body_end
             graph.raises.append(leaving + [(handler, start) if known else handler])
     errors = _errors_by_start(code, nodes, body_end, StatementErrors(totality))
-    tests = ErrnoTests(program, routine, nodes) if handler >= 0 and program is not None \
+    tests = ErrnoTests(program, routine, nodes, booked) if handler >= 0 and program is not None \
         else None
     for start in sorted({target[1] for raised in graph.raises for target in raised
                          if isinstance(target, tuple)}):

@@ -84,10 +84,10 @@ class StatementErrors:
 class ErrnoTests:
     """The feasible successors of a routine's handler tests of ERRNO (module docstring)."""
 
-    def __init__(self, program, routine, nodes: dict):
+    def __init__(self, program, routine, nodes: dict, booked: Optional["BookedErrnums"] = None):
         self.routine = routine
         self.nodes = nodes
-        self.booked = _booked_errnums(program)
+        self.booked = (booked or BookedErrnums(program)).slots()
         self.prunable = _stable_tests(program, routine, nodes)
 
     def targets(self, pc: int, errors: Optional[frozenset]) -> Optional[list]:
@@ -158,6 +158,20 @@ class ErrnoTests:
         if value == BOOKED:
             return False
         return value == number
+
+
+class BookedErrnums:
+    """``_booked_errnums`` of one program, walked once when first asked: an analysis of
+    every routine (``liveness``) asks it for each routine with an ERROR handler."""
+
+    def __init__(self, program):
+        self.program = program
+        self._slots: Optional[set] = None
+
+    def slots(self) -> set:
+        if self._slots is None:
+            self._slots = _booked_errnums(self.program)
+        return self._slots
 
 
 def _booked_errnums(program) -> set:
