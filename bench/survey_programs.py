@@ -34,13 +34,16 @@ command, as the surveys of docs/realworld-survey.md; one that stops at names no 
 declares is checked again with the module ``rapidmc stubs`` writes for it.  Outcomes:
 
 * ``verdict``: HOLDS or VIOLATED (exit 0 or 1), with the violated properties;
-* ``unknown``: UNKNOWN at the state bound (exit 3); ``cpu limit``: the limit was reached;
+* ``unknown``: UNKNOWN at the state bound (exit 3), the detail saying how far the first
+  search came (``deepest_state``: its depth and where each task stood); ``cpu limit``: the
+  limit was reached;
 * ``load error``: exit 2, with its diagnostic codes (after stubs, when they were tried);
 * ``own error``: a load error the survey's reviewed list (``OWN_ERRORS``) gives as the
   program's own (the controller would refuse it too);
 * ``no entry``: a backup task without its entry routine (RMC211); ``no program``: a task of
   system modules only (RMC736); ``encrypted``: every module of the program is encrypted;
-* ``internal``: exit 4.
+* ``internal``: exit 4, or a Python traceback on the command's stderr whatever its exit
+  code (the row's detail is the traceback's last lines).
 
 Each row also keeps the most model states a property's search of the program explored and
 the CPU seconds of its rapidmc commands (the children's own, whatever ``--jobs``), shown on
@@ -124,6 +127,8 @@ class Program:
     duplicates: int = 0
     states: int = 0            # the most model states a property's search explored
     cpu: float = 0.0           # CPU seconds of the program's rapidmc commands
+    trace: str = ""            # the end of a Python traceback a command printed
+    deepest: str = ""          # UNKNOWN: where each task stood when the first search stopped
 
 
 def extract(mirrors: Path, corpus: Path) -> None:
@@ -268,7 +273,8 @@ def earlier_rows(path: Path, outcomes: set[str]) -> tuple[list[Program], list[Pr
             for row in json.loads(path.read_text())]
     again = [row for row in rows if row.outcome in outcomes]
     for row in again:
-        row.outcome, row.detail, row.codes, row.stubbed = "", "", [], False
+        row.outcome, row.detail, row.codes, row.stubbed, row.trace, row.deepest = \
+            "", "", [], False, "", ""
     for row in rows:                 # the reviewed list as it is now
         _own_error(row)
     chosen = {id(row) for row in again}
@@ -306,24 +312,45 @@ def _distinct(programs: list[Program], libraries: bool = True) -> tuple[list[Pro
 
 def rapidmc(words: list[str], cpu: int, program: Optional[Program] = None) -> tuple[int, dict]:
     """Exit code and JSON report of one rapidmc command under a CPU limit (-1: reached);
-    its CPU seconds are added to ``program.cpu``."""
+    its CPU seconds are added to ``program.cpu``, and a traceback it printed to
+    ``program.trace``."""
+    return run_child([sys.executable, "-m", "rapidmc", *words], cpu, program)
+
+
+TRACEBACK = "Traceback (most recent call last)"
+
+
+def run_child(argv: list[str], cpu: int, program: Optional[Program] = None) -> tuple[int, dict]:
+    """``rapidmc`` for any command line ``argv`` (its stderr kept in a file, never a pipe
+    that could fill while stdout is read)."""
     def limit() -> None:
         resource.setrlimit(resource.RLIMIT_CPU, (cpu, cpu + 1))
-    child = subprocess.Popen([sys.executable, "-m", "rapidmc", *words], stdout=subprocess.PIPE,
-                             stderr=subprocess.DEVNULL, text=True, errors="replace",
-                             preexec_fn=limit)
-    output = child.stdout.read()
-    child.stdout.close()
-    _, status, usage = os.wait4(child.pid, 0)        # the child's own CPU time, not the jobs'
+    with tempfile.TemporaryFile(mode="w+", errors="replace") as errors:
+        child = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=errors, text=True,
+                                 errors="replace", preexec_fn=limit)
+        output = child.stdout.read()
+        child.stdout.close()
+        _, status, usage = os.wait4(child.pid, 0)    # the child's own CPU time, not the jobs'
+        errors.seek(0)
+        printed = errors.read()
     child.returncode = os.waitstatus_to_exitcode(status)
     if program is not None:
         program.cpu += usage.ru_utime + usage.ru_stime
+        if TRACEBACK in printed and not program.trace:
+            program.trace = _last_lines(printed[printed.index(TRACEBACK):])
     if child.returncode < 0:
         return -1, {}
     try:
         return child.returncode, json.loads(output)
     except ValueError:
         return child.returncode, {}
+
+
+def _last_lines(text: str, count: int = 3) -> str:
+    """A traceback's exception, then the ``count`` - 1 lines above it, last first (what
+    was raised and where, in the row's first 90 characters)."""
+    lines = [line.strip() for line in text.splitlines() if line.strip()]
+    return " <- ".join(reversed(lines[-count:]))
 
 
 def survey(program: Program, options: list[str], cpu: int, stubs: bool) -> Program:
@@ -363,9 +390,14 @@ def _with(command: list[str], extra: str) -> list[str]:
 
 def _classify(program: Program, code: int, report: dict) -> None:
     errors = report.get("errors", [])
+    if program.trace:                   # rapidmc's own fault, whatever the exit code says
+        program.outcome, program.detail = "internal", program.trace
+        return
     program.codes = sorted({e.get("code", "?") for e in errors})
     program.states = max((p.get("stats", {}).get("model_states") or 0
                           for p in report.get("properties", ())), default=0)
+    program.deepest = next((deepest_text(p) for p in report.get("properties", ())
+                            if p.get("deepest_state")), "")
     notes = {w.get("code") for w in report.get("warnings", ())}
     if code == -1:
         program.outcome = "cpu limit"
@@ -377,7 +409,7 @@ def _classify(program: Program, code: int, report: dict) -> None:
         program.outcome = "verdict"
         program.detail = "VIOLATED " + ",".join(violated) if violated else "HOLDS"
     elif code == 3:
-        program.outcome = "unknown"
+        program.outcome, program.detail = "unknown", program.deepest
     elif code == 2:
         first = errors[0] if errors else {}
         program.outcome = "no entry" if "RMC211" in program.codes else "load error"
@@ -385,6 +417,15 @@ def _classify(program: Program, code: int, report: dict) -> None:
         _own_error(program)
     else:
         program.outcome = "internal"
+
+
+def deepest_text(entry: dict) -> str:
+    """``depth 158: T_ROB1 r_RRC_InitCell:87, T_RX r_RRC_InitVar:164`` of a property's
+    ``deepest_state`` (how far an UNKNOWN search came)."""
+    places = ", ".join(f"{place['task']} {place['routine'] or 'ended'}"
+                       + (f":{place['line']}" if place["routine"] else "")
+                       for place in entry["deepest_state"])
+    return f"depth {entry['stats']['max_depth']}: {places}"
 
 
 def _own_error(program: Program) -> None:

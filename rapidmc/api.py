@@ -784,6 +784,7 @@ class _Searches:
         result = fair_or_plain_search(self.model.system, buchi, valuation, self.fairness,
                                       self.progress(), searches, first)
         _replayed(self.model.system, result)
+        _with_deepest(self.model.system, result)
         vacuous = self.facts.vacuous(prop.formula) if result.verdict == HOLDS else None
         return PropertyResult(prop.name, prop.text, result, vacuous,
                               self.fairness.names if self.fairness is not None else (),
@@ -874,7 +875,15 @@ def _builtin(reach, system: RapidSystem, name: str, description: str, predicate:
     if result.verdict == VIOLATED:
         end_at_error(system, result)
         _replayed(system, result)
+    _with_deepest(system, result)
     return PropertyResult(name, description, result)
+
+
+def _with_deepest(system: RapidSystem, result: SearchResult) -> None:
+    """An UNKNOWN search's last state stored told as where each task stands (how far it
+    came: ``SearchResult.deepest``), the state itself let go."""
+    if result.frontier is not None:
+        result.deepest, result.frontier = system.task_places(result.frontier), None
 
 
 _TASK_WAITS = "no task waits forever"

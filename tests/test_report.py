@@ -137,7 +137,7 @@ def test_json_follows_the_documented_schema():
     for entry in properties:
         assert list(entry) == ["name", "formula", "verdict", "reason", "stats", "trace",
                                "vacuous", "vacuous_inputs", "fair_tasks", "assumes",
-                               "pattern", "atoms"]
+                               "pattern", "atoms", "deepest_state"]
         assert entry["fair_tasks"] is None        # one task: no fairness assumed
         assert entry["atoms"] is None             # one task: atoms belong to no task
         assert list(entry["stats"]) == STATS_KEYS

@@ -12,11 +12,18 @@ from __future__ import annotations
 import pytest
 
 import rapidmc.check.budget as budget
+from rapidmc.check import native
 from rapidmc.api import CheckOptions, check, load_program
 from rapidmc.check.budget import SearchBudget, stopped_in_time, time_check
 
 ANSWERS = 3000          # TPReadNum's answers: one step with 3,000 successors
 LIMIT = 20              # seconds of the counting clock
+
+
+FAN_LOOP = ("        WHILE TRUE DO\n"
+            "            TPReadNum answer, \"How many parts?\";\n"
+            "            answer := 0;\n"
+            "        ENDWHILE\n")
 
 
 class CountingClock:
@@ -38,10 +45,7 @@ def program(tmp_path):
     module.write_text("MODULE Fan\n"
                       "    VAR num answer;\n"
                       "    PROC main()\n"
-                      "        WHILE TRUE DO\n"
-                      "            TPReadNum answer, \"How many parts?\";\n"
-                      "            answer := 0;\n"
-                      "        ENDWHILE\n"
+                      f"{FAN_LOOP}"
                       "    ENDPROC\n"
                       "ENDMODULE\n")
     return load_program([str(module)])
@@ -84,3 +88,40 @@ def test_time_check_outside_a_search_loop_never_stops_anything():
     time_check()                         # no search running: a description of a trace
     with stopped_in_time(SearchBudget(max_seconds=None)):
         time_check()                     # a search without a time limit
+
+
+ENGINES = native.ENGINES if native.available() else (native.PYTHON,)
+CLIMB = 40              # states before the step with thousands of successors
+
+
+@pytest.fixture
+def climbing(tmp_path):
+    module = tmp_path / "climb.mod"
+    # CLIMB states one after another (``k`` is printed, so kept), then the fan above
+    module.write_text("MODULE Climb\n"
+                      "    VAR num answer;\n"
+                      "    VAR num k;\n"
+                      "    PROC main()\n"
+                      f"        FOR i FROM 1 TO {CLIMB} DO\n"
+                      "            k := i;\n"
+                      "            TPWrite \"at \"\\Num:=k;\n"
+                      "        ENDFOR\n"
+                      f"{FAN_LOOP}"
+                      "    ENDPROC\n"
+                      "ENDMODULE\n")
+    return load_program([str(module)])
+
+
+@pytest.mark.parametrize("engine", ENGINES)
+def test_a_search_stopped_inside_a_step_reports_what_it_reached(climbing, monkeypatch,
+                                                                 engine):
+    """The compiled loop stopped by the time limit inside a Python step once returned no
+    counts: an UNKNOWN reported 0 transitions and depth 1 after thousands of states."""
+    clock = CountingClock()
+    monkeypatch.setattr(budget, "default_clock", clock)
+    with native.engine_used(engine):
+        result = checked(climbing, 4 * CLIMB)[0]
+    assert result.verdict == "UNKNOWN"
+    assert result.stats.model_states > CLIMB
+    assert result.stats.transitions >= CLIMB
+    assert result.stats.max_depth >= CLIMB

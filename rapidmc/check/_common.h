@@ -149,6 +149,22 @@ static inline int budget_stopped(PyObject *budget)
     return stopped;
 }
 
+/* A breadth-first loop that stops with an exception (an ``OutOfTime`` its Python step
+ * raised at the time limit) returns no counts: it leaves them on the budget as
+ * ``budget.stopped_counts = (transitions, deadlocks, depth of the last stored state)``
+ * for the search's statistics, keeping the exception it stops with. */
+static inline void keep_counts(PyObject *budget, long long transitions, long long deadlocks,
+                               long deepest)
+{
+    PyObject *type, *value, *traceback;
+    PyErr_Fetch(&type, &value, &traceback);
+    PyObject *counts = Py_BuildValue("(LLl)", transitions, deadlocks, deepest);
+    if (counts == NULL || PyObject_SetAttrString(budget, "stopped_counts", counts) < 0)
+        PyErr_Clear();              /* (the statistics stay short; the stop is what counts) */
+    Py_XDECREF(counts);
+    PyErr_Restore(type, value, traceback);
+}
+
 
 /* registers NodeTable and PartHashes (_nodes.c) in the module */
 int nodes_register(PyObject *module);

@@ -1405,8 +1405,10 @@ static PyObject *breadth_first(PyObject *module, PyObject *args)
         if (outcome == GO_ON)
             frontier++;
     }
-    if (outcome == FAILED)
+    if (outcome == FAILED) {
+        keep_counts(search.budget, search.transitions, search.deadlocks, search.deepest);
         return NULL;
+    }
     return Py_BuildValue("(nLLl)", outcome == FOUND ? target : -1, search.transitions,
                          search.deadlocks, search.deepest);
 }

@@ -4795,6 +4795,8 @@ done:
     scratch_free(&search.stuck);
     if (outcome == FAILED) {
         PyMem_Free(search.triggers);
+        if (search.budget != NULL)
+            keep_counts(search.budget, search.transitions, search.deadlocks, search.deepest);
         return NULL;
     }
     PyObject *triggers = PyList_New(search.trigger_count);

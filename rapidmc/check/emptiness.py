@@ -61,7 +61,8 @@ def search_accepting_cycle(product: Product, budget: SearchBudget) -> SearchResu
         if bad_path is not None:
             prefix = build_bad_prefix(product, bad_path, search.explored())
             return SearchResult(VIOLATED, None, prefix, stats=stats, ending=BAD_PREFIX)
-        return SearchResult(UNKNOWN, budget.reason, stats=stats)
+        return SearchResult(UNKNOWN, budget.reason, stats=stats,
+                            frontier=product.last_model_state())
     return SearchResult(HOLDS, stats=stats)
 
 

@@ -73,7 +73,8 @@ def search_fair_accepting_cycle(product: Product, fairness: Fairness,
         cycle[0].label = entry[-1][0]
         return SearchResult(VIOLATED, None, prefix, cycle, stats, walk[-1][0])
     if budget.reason is not None:
-        return SearchResult(UNKNOWN, budget.reason, stats=stats)
+        return SearchResult(UNKNOWN, budget.reason, stats=stats,
+                            frontier=product.last_model_state())
     return SearchResult(HOLDS, stats=stats)
 
 

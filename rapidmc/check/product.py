@@ -184,6 +184,12 @@ class Product:
                 return label
         raise AssertionError(f"no product transition {key} -> {next_key}")
 
+    def last_model_state(self):
+        """The model state stored last (None before any): where an UNKNOWN search stood
+        (``SearchResult.frontier``)."""
+        stored = len(self.store)
+        return self.store.states[stored - 1] if stored else None
+
     def lasso_step(self, key: int, label: Optional[Hashable]) -> LassoStep:
         state_id, q = divmod(key, self.width)
         return LassoStep(label, self.store.states[state_id], q)

@@ -30,9 +30,10 @@ the model again.
 from __future__ import annotations
 
 from array import array
+from contextlib import contextmanager
 from typing import Callable, Hashable, Optional, Protocol, Sequence
 
-from .budget import DEFAULT_MAX_STATES, SearchBudget, stopped_in_time
+from .budget import DEFAULT_MAX_STATES, OutOfTime, SearchBudget, stopped_in_time
 from .collector import frozen_while_searching
 from .transition_system import TransitionSystem, Valuation, as_sequence, transition_label
 from .progress import Progress
@@ -118,7 +119,9 @@ def find_reachable(system: TransitionSystem, predicate: Callable[[Hashable], boo
     if target is not None:
         return SearchResult(VIOLATED, None, search.path_to(target), [], stats)
     if budget.reason is not None:
-        return SearchResult(UNKNOWN, budget.reason, stats=stats)
+        stored = len(search.states)
+        return SearchResult(UNKNOWN, budget.reason, stats=stats,
+                            frontier=search.states[stored - 1] if stored else None)
     if search.graph is not None:
         release = getattr(search.states, "release_index", None)
         if release is not None:      # (what only interning needs; made again if asked)
@@ -276,11 +279,26 @@ class _BreadthFirst:
         (``_native.breadth_first``): the same states, ids, calls and counts; the depths of
         the states it stores are not kept (they grow level by level: only the last one's)."""
         observe = self.observe.states if self.observe is not None else None
-        target, self.transitions, self.deadlocks, self.deepest = _native.breadth_first(
-            self.states, frontier, self.system.successor_states, observe, self.predicate,
-            self.parent, self.depth, self.budget, record, self.deadlock_is_target,
-            self.transitions, self.deadlocks)
+        with self._counts_kept_when_stopped():
+            target, self.transitions, self.deadlocks, self.deepest = _native.breadth_first(
+                self.states, frontier, self.system.successor_states, observe, self.predicate,
+                self.parent, self.depth, self.budget, record, self.deadlock_is_target,
+                self.transitions, self.deadlocks)
         return target if target >= 0 else None
+
+    @contextmanager
+    def _counts_kept_when_stopped(self):
+        """A compiled loop stopped at the time limit inside a Python step (``OutOfTime``)
+        returns nothing: its counts so far are those it left on the budget
+        (``keep_counts``, _common.h), so an UNKNOWN reports the transitions and depth it
+        reached."""
+        try:
+            yield
+        except OutOfTime:
+            counts = getattr(self.budget, "stopped_counts", None)
+            if counts is not None:
+                self.transitions, self.deadlocks, self.deepest = counts
+            raise
 
     def _expand_packed(self, frontier: int, labels_wanted: bool) -> Optional[int]:
         """``_expand_all``'s loop over a packed table (``model.packed``) in the compiled core:
@@ -303,19 +321,29 @@ class _BreadthFirst:
         while level_end < len(self.depth) and self.depth[level_end] <= depth_now:
             level_end += 1
         sink = _GraphSink(self.parent, graph)
-        target, self.transitions, self.deadlocks, self.deepest, bits = \
-            _native.packed_breadth_first(
-                table, frontier, table.python_successors,
-                table.observe if observe is not None else None,
-                watch is not None and (seen is None or trigger_index >= 0), trigger_index,
-                _packed_predicate(self.predicate, self.system, table),
-                self.deadlock_is_target, graph is not None, self.budget, sink, indices,
-                self.transitions, self.deadlocks, depth_now, level_end,
-                len(graph.targets) if graph is not None else 0, labels_wanted)
+        with self._counts_kept_when_stopped(), self._table_released(table):
+            target, self.transitions, self.deadlocks, self.deepest, bits = \
+                _native.packed_breadth_first(
+                    table, frontier, table.python_successors,
+                    table.observe if observe is not None else None,
+                    watch is not None and (seen is None or trigger_index >= 0), trigger_index,
+                    _packed_predicate(self.predicate, self.system, table),
+                    self.deadlock_is_target, graph is not None, self.budget, sink, indices,
+                    self.transitions, self.deadlocks, depth_now, level_end,
+                    len(graph.targets) if graph is not None else 0, labels_wanted)
         if seen is not None:
             seen.update(bits)
-        table.predicate = table.observer = None
         return target if target >= 0 else None
+
+    @staticmethod
+    @contextmanager
+    def _table_released(table):
+        """The packed table forgets this search's predicate and observer when its loop
+        ends, however it ends."""
+        try:
+            yield
+        finally:
+            table.predicate = table.observer = None
 
     def path_to(self, state_id: int) -> list[LassoStep]:
         """The steps from an initial state to ``state_id`` with their labels."""

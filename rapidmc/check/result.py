@@ -14,7 +14,7 @@ the property).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Hashable, Optional
+from typing import Hashable, NamedTuple, Optional
 
 HOLDS = "HOLDS"
 VIOLATED = "VIOLATED"
@@ -68,6 +68,16 @@ class SearchStats:
         }
 
 
+class TaskPlace(NamedTuple):
+    """Where a task stands in a state: its routine and the statement it runs next."""
+
+    task: str
+    routine: str                      # "" for a task that has ended
+    file: str
+    line: int
+    statement: str                    # the source line, stripped
+
+
 @dataclass
 class SearchResult:
     """Verdict of one search; see the module docstring for the path shape."""
@@ -79,3 +89,7 @@ class SearchResult:
     stats: SearchStats = field(default_factory=SearchStats)
     closing_label: Optional[Hashable] = None
     ending: Optional[str] = None      # a path's last state, in words (safety violations)
+    # UNKNOWN of a breadth-first search: the last state it stored (one of the deepest), until
+    # the model says where its tasks stand in ``deepest``
+    frontier: Optional[Hashable] = None
+    deepest: tuple = ()               # (TaskPlace, ...) of ``frontier``, one per task

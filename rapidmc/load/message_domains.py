@@ -201,6 +201,9 @@ class _Walked:
         self._nodes: dict[int, tuple] = {}
         self._names: dict[int, tuple] = {}
         self._spreading: dict[int, tuple] = {}       # (routine.ast kept by ``_nodes``)
+        # (routine indexes, upper-case name) -> its ``Uses`` (``_followed``), which no
+        # reader changes
+        self.followed: dict[tuple, "Uses"] = {}
 
     def nodes(self, routine) -> tuple:
         """``ast.walk(routine.ast)`` as a tuple (the trees are immutable)."""
@@ -336,10 +339,22 @@ def _followed(program, routines, target, shared: Optional[_Walked] = None) -> Op
     until no other task shares a datum the data reaches."""
     if not isinstance(target, ast.NameRef):
         return None
+    if shared is None:
+        return _followed_from(program, routines, target.name.key, None)
+    key = (tuple(routine.index for routine in routines), target.name.key)
+    found = shared.followed.get(key)
+    if found is None:       # (a task receiving into one name at 32 sites follows it once)
+        found = shared.followed[key] = _followed_from(program, routines, target.name.key,
+                                                      shared)
+    return found
+
+
+def _followed_from(program, routines, name: str, shared: Optional[_Walked]) -> "Uses":
+    """``_followed`` of the data named ``name`` (upper case), followed afresh."""
     followed = list(routines)
     while True:
         uses = Uses(program, followed, shared)
-        uses.follow({target.name.key: {IDENTITY}})
+        uses.follow({name: {IDENTITY}})
         sharing = _sharing_tasks(program, uses, followed)
         if not sharing:
             return uses

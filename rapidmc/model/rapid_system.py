@@ -19,7 +19,7 @@ from .. import ast
 from ..check import TransitionInfo
 from ..check.native import native_search
 from ..check.trace import CallFrame
-from ..check.result import LassoStep, SearchResult
+from ..check.result import LassoStep, SearchResult, TaskPlace
 from ..diagnostics import TRACE_REPLAY, SourceCache, error
 from ..load.stubs.module_text import is_stub_module
 from ..semantics.program import (ENVIRONMENT_NAMESPACE,
@@ -251,6 +251,19 @@ class RapidSystem:
             if ended:
                 blocked.append((task, ended))
         return blocked
+
+    def task_places(self, state: State) -> tuple:
+        """Where each task stands in ``state`` (``TaskPlace``), in task order."""
+        places = []
+        for name, stack in zip(self.program.task_names, (state[0],) + state[10]):
+            if not stack:
+                places.append(TaskPlace(name, "", "", 0, ""))
+                continue
+            routine = self.program.routines[stack[-1].routine]
+            span = _frame_span(routine, stack[-1].pc)
+            places.append(TaskPlace(name, routine.name, span.file, span.line,
+                                    (SourceCache.line(span.file, span.line) or "").strip()))
+        return tuple(places)
 
     def describe_waits(self, state: State, only: Optional[set] = None) -> Optional[str]:
         """Which task waits where, and for which tasks, in a state where the program waits

@@ -25,7 +25,8 @@ from typing import Sequence
 
 from ..diagnostics import Diagnostic, render
 from .counterexample import counterexample_lines
-from .results import PropertyResult, described_formula, fairness_text, text_options, vacuity_text
+from .results import (PropertyResult, deepest_text, described_formula, fairness_text,
+                      text_options, vacuity_text)
 from ..check.result import UNKNOWN, VIOLATED
 from ..check.trace import TraceDescriber, build_trace
 
@@ -87,6 +88,8 @@ def _property_case(suite: ET.Element, checked: PropertyResult, describer: TraceD
     if result.verdict == UNKNOWN:
         skipped = ET.SubElement(case, "skipped")
         skipped.text = f"UNKNOWN: {result.reason}: no violation found, but the search was bounded"
+        if result.deepest:
+            skipped.text += f" ({deepest_text(result)})"
     elif result.verdict == VIOLATED:
         failure = ET.SubElement(case, "failure", message=described_formula(checked),
                                 type=VIOLATED)

@@ -20,6 +20,7 @@ JSON follows the schema in docs/json-output.md (``SCHEMA`` names its version).
 from __future__ import annotations
 
 import json
+import os
 import re
 from dataclasses import dataclass
 from typing import Optional, Sequence
@@ -71,6 +72,7 @@ def format_text(results: Sequence[PropertyResult], describer: TraceDescriber,
     lines: list[str] = []
     for checked in results:
         lines.append(verdict_line(checked))
+        lines.extend(deepest_lines(checked.result))
         trace = build_trace(checked.result, describer) \
             if checked.result.verdict == VIOLATED else None
         options = text_options(checked, describer, full)
@@ -137,6 +139,31 @@ def verdict_line(checked: PropertyResult) -> str:
     if checked.vacuous is not None:
         figures = f"{vacuity_text(checked.vacuous, checked.vacuous_inputs)}; {figures}"
     return f"{checked.name}: {result.verdict} ({figures})"
+
+
+def deepest_lines(result: SearchResult) -> list[str]:
+    """Under an UNKNOWN breadth-first search, how far it came: ``  searched to depth 166;
+    last state stored: T_ROB1 in r_RRC_InitVar (RRC_Control_Rob.sys:122), ...``
+    (a search that stopped while every task is still in its start-up covers no
+    production cycle)."""
+    text = deepest_text(result)
+    return [f"  {text}"] if text else []
+
+
+def deepest_text(result: SearchResult) -> str:
+    """``searched to depth 166; last state stored: T_ROB1 in ...`` ("" where the result
+    names no deepest state)."""
+    if result.verdict != UNKNOWN or not result.deepest:
+        return ""
+    return f"searched to depth {result.stats.max_depth:,}; last state stored: " + \
+        ", ".join(place_text(place) for place in result.deepest)
+
+
+def place_text(place) -> str:
+    """``T_ROB1 in r_RRC_InitVar (RRC_Control_Rob.sys:122)``, ``T_LOG ended``."""
+    if not place.routine:
+        return f"{place.task} ended"
+    return f"{place.task} in {place.routine} ({os.path.basename(place.file)}:{place.line})"
 
 
 MAX_ASSUMPTIONS_SHOWN = 6
@@ -357,7 +384,9 @@ def property_json(checked: PropertyResult, describer: TraceDescriber) -> dict:
             "assumes": list(checked.assumes),
             "pattern": checked.pattern,
             "atoms": [{"atom": atom, "tasks": list(tasks)} for atom, tasks in checked.atom_tasks]
-            if checked.atom_tasks else None}
+            if checked.atom_tasks else None,
+            "deepest_state": [place._asdict() for place in result.deepest]
+            if result.deepest else None}
 
 
 def warning_json(warning: Diagnostic) -> dict:

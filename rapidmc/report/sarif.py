@@ -21,7 +21,7 @@ from .counterexample import chosen_inputs_only
 from .headline import read_data
 from .trace_text import WIDTH, shorten
 from .ci_findings import violation_anchor
-from .results import PropertyResult, described_formula
+from .results import PropertyResult, deepest_text, described_formula
 from ..check.result import UNKNOWN, VIOLATED
 from ..check.trace import Trace, TraceDescriber, TraceStep, build_trace
 from . import indented_json
@@ -42,7 +42,8 @@ def format_sarif(results: Sequence[PropertyResult], describer: TraceDescriber,
             sarif_results.append({
                 "ruleId": checked.name, "ruleIndex": index, "level": "warning",
                 "message": {"text": f"{checked.name}: UNKNOWN ({result.reason}): no violation "
-                                    "found, but the search was bounded"}})
+                                    "found, but the search was bounded" +
+                                    (f"; {deepest_text(result)}" if result.deepest else "")}})
     _assumptions(results, rules, sarif_results)
     _diagnostic_results(warnings, rules, sarif_results)
     return _document(rules, sarif_results, exit_code)
