@@ -277,13 +277,10 @@ class RapidSystem:
         if only is None:
             only = {task for task, _ in self.blocked_at_barrier(state)} or set(range(len(names)))
         parts = []
-        for task, stack in enumerate(stacks):
-            if not stack or task not in only:
+        for task, place in enumerate(self.task_places(state)):
+            if not place.routine or task not in only:
                 continue
-            frame = stack[-1]
-            span = _frame_span(self.program.routines[frame.routine], frame.pc)
-            text = (SourceCache.line(span.file, span.line) or "").strip()
-            part = f"{names[task]} waits at {span.file}:{span.line} ({text})"
+            part = f"{place.task} waits at {place.file}:{place.line} ({place.statement})"
             if task in barriers:
                 part += " for " + ", ".join(
                     f"{name} (ended)" if not stacks[names.index(name)] else name
